@@ -1,0 +1,193 @@
+"""Crank positions: the assembly check over a full turn, the output's extreme (dead-centre)
+positions found exactly, and the N positions numbered from position 0 in the crank's sense."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import AssemblyError, SceneError
+from .kinematics import Kinematics, solve
+from .mechanism import FRAME, Mechanism
+from .structure import Structure, analyse
+
+GRID = 1440  # the assembly check and the extreme search sample every 0.25°
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output the positions are counted from: a slide (coordinate along its guide) or a link's angle."""
+    kind: str   # "slide" or "link"
+    name: str
+
+    def value(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].t
+        return np.unwrap(kin.bodies[self.name].theta)
+
+    def rate(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].v
+        return kin.bodies[self.name].omega
+
+    def accel(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].a
+        return kin.bodies[self.name].eps
+
+
+@dataclass
+class Study:
+    """A mechanism with its structure, output and position 0: what every command starts from."""
+    mech: Mechanism
+    structure: Structure
+    output: Output
+    phi0: float                     # crank angle of position 0, deg
+    extremes: tuple[float, ...]     # crank angles where the output stops, deg
+    t0: dict[str, float]            # slide coordinates at position 0
+
+    def positions(self, count: int | None = None) -> np.ndarray:
+        """Crank angles of positions 0 … N−1, in the order the crank passes them (deg, [0, 360))."""
+        n = count or self.mech.count
+        step = 360.0 / n * np.sign(self.mech.omega1)
+        return np.mod(self.phi0 + step * np.arange(n), 360.0)
+
+    def solve(self, phi_deg) -> Kinematics:
+        kin = solve(self.mech, self.structure, phi_deg)
+        for label, ok in kin.valid.items():
+            if not np.all(ok):
+                bad = np.asarray(kin.phi_deg)[~ok]
+                raise AssemblyError(f"group {label} cannot be assembled at crank angle {bad[0]:.2f}°",
+                                    self.mech.source)
+        return kin
+
+    def from_position0(self, phi_deg) -> np.ndarray:
+        """Crank turn since position 0 in the crank's sense (deg, [0, 360))."""
+        return np.mod((np.asarray(phi_deg) - self.phi0) * np.sign(self.mech.omega1), 360.0)
+
+
+def default_output(mech: Mechanism, structure: Structure) -> Output:
+    """The scene's ``output``, else the last group's slide on the frame, else its link pinned to the frame."""
+    if mech.output is not None:
+        if mech.output in mech.links:
+            return Output("link", mech.output)
+        for name, link in mech.links.items():
+            if link.slides_on is not None and next(iter(link.local)) == mech.output:
+                return Output("slide", mech.output)
+        raise SceneError(f"positions.output: {mech.output!r} is neither a link nor a sliding point",
+                         mech.source)
+    for dyad in reversed(structure.dyads):
+        for pair in (dyad.outer_b, dyad.outer_a):
+            if pair.kind == "P" and FRAME in pair.bodies:
+                return Output("slide", pair.point)
+        for pair, link in ((dyad.outer_b, dyad.b), (dyad.outer_a, dyad.a)):
+            if pair.kind == "R" and FRAME in pair.bodies:
+                return Output("link", link)
+    return Output("link", mech.crank.link)
+
+
+def study(mech: Mechanism) -> Study:
+    """Structure, assembly check over the full turn, extremes and position 0."""
+    structure = analyse(mech)
+    check_assembly(mech, structure)
+    output = default_output(mech, structure)
+    extremes = find_extremes(mech, structure, output)
+    phi0 = choose_start(mech, structure, output, extremes)
+    kin0 = solve(mech, structure, [phi0])
+    return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()})
+
+
+def check_assembly(mech: Mechanism, structure: Structure) -> None:
+    """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does."""
+    grid = np.arange(GRID) * 360.0 / GRID
+    kin = solve(mech, structure, grid)
+    for dyad in structure.dyads:
+        ok = kin.valid[dyad.label]
+        if np.all(ok):
+            continue
+        if not np.any(ok):
+            raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
+        ranges = _bad_ranges(mech, structure, dyad.label, grid, ok)
+        text = ", ".join(f"{a:.1f}°–{b:.1f}°" for a, b in ranges)
+        raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
+
+
+def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
+    """Failing intervals with their ends refined by bisection to 1e-6°."""
+    def good(phi: float) -> bool:
+        return bool(solve(mech, structure, [phi]).valid[label][0])
+
+    def edge(lo: float, hi: float) -> float:  # good(lo) != good(hi)
+        g_lo = good(lo)
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            if good(mid) == g_lo:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
+
+    step = grid[1] - grid[0]
+    n = len(grid)
+    start = int(np.argmax(ok))  # begin the scan at a good angle so every bad run is whole
+    ranges, k = [], 0
+    while k < n:
+        i = (start + k) % n
+        if not ok[i]:
+            j = k
+            while j < n and not ok[(start + j) % n]:
+                j += 1
+            a = edge(grid[(start + k - 1) % n], grid[(start + k - 1) % n] + step)
+            b = edge(grid[(start + j - 1) % n], grid[(start + j - 1) % n] + step)
+            ranges.append((a % 360.0, b % 360.0))
+            k = j
+        k += 1
+    return ranges
+
+
+def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tuple[float, ...]:
+    """Crank angles where the output's velocity changes sign, refined by bisection to ~1e-12°."""
+    grid = np.arange(GRID + 1) * 360.0 / GRID
+    rate = output.rate(solve(mech, structure, grid))
+    scale = np.max(np.abs(rate)) or 1.0
+    sign = np.sign(np.where(np.abs(rate) < 1e-12 * scale, 0.0, rate))
+    brackets = [(grid[k], grid[k + 1]) for k in range(GRID) if sign[k] * sign[k + 1] < 0]
+    brackets += [(grid[k] - 1e-9, grid[k] + 1e-9) for k in range(GRID) if sign[k] == 0]
+    if not brackets:
+        return ()
+    lo = np.array([b[0] for b in brackets])
+    hi = np.array([b[1] for b in brackets])
+    f_lo = output.rate(solve(mech, structure, lo))
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        f_mid = output.rate(solve(mech, structure, mid))
+        left = np.sign(f_mid) == np.sign(f_lo)
+        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+        hi = np.where(left, hi, mid)
+    roots = np.mod(0.5 * (lo + hi), 360.0)
+    return tuple(sorted({round(float(r), 10) % 360.0 for r in roots}))
+
+
+def choose_start(mech: Mechanism, structure: Structure, output: Output,
+                 extremes: tuple[float, ...]) -> float:
+    """Position 0: an angle from the scene, or the extreme named by ``start``."""
+    if not isinstance(mech.start, str):
+        return float(mech.start)
+    if len(extremes) < 2:
+        raise SceneError(f"positions.start = {mech.start!r}: the output {output.name} has no extreme "
+                         "positions (it turns fully); give the start as a crank angle", mech.source)
+    kin = solve(mech, structure, list(extremes))
+    values = output.value(kin)
+    hi = float(extremes[int(np.argmax(values))])
+    lo = float(extremes[int(np.argmin(values))])
+    if mech.start == "max":
+        return hi
+    if mech.start == "min":
+        return lo
+    # the working stroke is the slower one: the longer crank turn between the extremes
+    sense = np.sign(mech.omega1)
+    turn_from_hi = ((lo - hi) * sense) % 360.0
+    working_from_hi = turn_from_hi >= 180.0 - 1e-9
+    starts_working = hi if working_from_hi else lo
+    starts_idle = lo if working_from_hi else hi
+    return starts_working if mech.start == "working" else starts_idle

@@ -1,0 +1,35 @@
+"""Shared helpers: the examples, a scene builder and finite differences of exact positions."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from graphplan.positions import study
+from graphplan.scene import load, loads
+
+ROOT = Path(__file__).resolve().parent.parent
+EXAMPLES = ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"]
+
+
+def example(name: str):
+    return study(load(ROOT / "examples" / f"{name}.toml"))
+
+
+def scene_study(text: str):
+    return study(loads(text, "<test>"))
+
+
+def derivative(f, phi_deg: np.ndarray, omega: float, order: int = 1, h_deg: float = 0.05):
+    """d/dt (order 1) or d²/dt² (order 2) of f(φ) at constant ω, five-point stencils in φ."""
+    h = np.radians(h_deg)
+    f2, f1, f0, g1, g2 = (f(phi_deg + k * h_deg) for k in (-2, -1, 0, 1, 2))
+    if order == 1:
+        return (f2 - 8 * f1 + 8 * g1 - g2) / (12 * h) * omega
+    return (-f2 + 16 * f1 - 30 * f0 + 16 * g1 - g2) / (12 * h * h) * omega ** 2
+
+
+@pytest.fixture(params=EXAMPLES)
+def any_example(request):
+    return example(request.param)
