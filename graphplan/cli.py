@@ -5,6 +5,7 @@ import argparse
 import json
 import os
 import sys
+from importlib import import_module
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -81,12 +82,14 @@ def build_parser() -> argparse.ArgumentParser:
                    help="crank angles instead of positions (deg from +x, counter-clockwise)")
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
     p.set_defaults(handler=cmd_analyze)
-    for register in _EXTRA:
-        register(sub)
+    for module in COMMAND_MODULES:
+        import_module(module).register(sub)
     return parser
 
 
-_EXTRA: list[Callable[[Any], None]] = []
+# Each module registers its subcommand with ``register(subparsers)`` and imports heavy parts lazily.
+COMMAND_MODULES: tuple[str, ...] = (
+)
 
 
 def main(argv: Sequence[str] | None = None) -> int:

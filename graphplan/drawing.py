@@ -1,0 +1,133 @@
+"""The construction record: what a draftsman draws, in drawing millimetres (x right, y up).
+
+Every plan, diagram and sheet is a ``Record`` of primitives; renderers (SVG, DXF, PDF, terminal)
+only view it. Each primitive carries its kind, its role (absolute, relative, normal n, tangential τ,
+Coriolis k, construction, …), the step it belongs to (the vector equation it solves, written as on
+a sheet: "v_B = v_A + v_BA") and the layer it is drawn on.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+Point = tuple[float, float]
+
+# roles → line style: thick lines for links and result vectors, thin for construction (GOST 2.303)
+THICK = 0.7
+THIN = 0.25
+ROLES = {
+    "link": THICK, "absolute": THICK, "result": THICK, "frame": THICK,
+    "relative": 0.5, "normal": 0.5, "tangential": 0.5, "coriolis": 0.5,
+    "construction": THIN, "arc": THIN, "direction": THIN, "axis": THIN, "trajectory": THIN,
+    "projection": THIN, "chord": 0.35, "ray": THIN, "curve": 0.5, "grid": 0.18, "label": THIN,
+    "table": THIN, "hatch": THIN,
+}
+DASHED_ROLES = {"axis": "dashdot", "trajectory": "dashdot", "projection": "dashed"}
+LAYERS = ("frame", "mechanism", "construction", "vectors", "labels", "diagrams", "tables")
+
+
+@dataclass(frozen=True)
+class Primitive:
+    """One drawn thing. ``kind``: segment, vector (arrow at the end), polyline, polygon, circle,
+    arc (centre, radius, start and end angles in degrees, counter-clockwise), point, text."""
+    kind: str
+    points: tuple[Point, ...]
+    role: str = "construction"
+    layer: str = "construction"
+    step: str = ""
+    text: str = ""
+    size: float = 3.5            # text height, mm (GOST 2.304 series)
+    radius: float = 0.0
+    angles: tuple[float, float] = (0.0, 360.0)
+    anchor: str = "start"        # text: start, middle, end
+    width: float | None = None   # line width override, mm
+    filled: bool = False
+
+    @property
+    def line_width(self) -> float:
+        return self.width if self.width is not None else ROLES.get(self.role, THIN)
+
+    def moved(self, dx: float, dy: float, k: float = 1.0) -> Primitive:
+        """The primitive scaled by ``k`` about the origin, then shifted by (dx, dy)."""
+        pts = tuple((x * k + dx, y * k + dy) for x, y in self.points)
+        return replace(self, points=pts, radius=self.radius * k)
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        xs = [p[0] for p in self.points]
+        ys = [p[1] for p in self.points]
+        if self.kind in ("circle", "arc"):
+            (cx, cy), r = self.points[0], self.radius
+            return cx - r, cy - r, cx + r, cy + r
+        if self.kind == "text":
+            x, y = self.points[0]
+            w = text_width(self.text, self.size)
+            x0 = x - {"start": 0.0, "middle": w / 2, "end": w}[self.anchor]
+            return x0, y, x0 + w, y + self.size
+        return min(xs), min(ys), max(xs), max(ys)
+
+
+def text_width(text: str, size: float) -> float:
+    """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps."""
+    narrow = sum(1 for c in text if c in "il1.,:;|'!()[] ")
+    return size * (0.62 * (len(text) - narrow) + 0.3 * narrow)
+
+
+@dataclass
+class Record:
+    """A construction: its primitives in drawing mm, a title and the scale coefficients used."""
+    title: str = ""
+    items: list[Primitive] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+
+    def add(self, kind: str, points, **kw) -> Primitive:
+        prim = Primitive(kind, tuple((float(x), float(y)) for x, y in points), **kw)
+        self.items.append(prim)
+        return prim
+
+    # textbook-flavoured helpers ------------------------------------------------------------
+    def segment(self, a: Point, b: Point, **kw) -> Primitive:
+        return self.add("segment", [a, b], **kw)
+
+    def vector(self, a: Point, b: Point, **kw) -> Primitive:
+        """An arrow from a to b (the arrowhead at b)."""
+        return self.add("vector", [a, b], **kw)
+
+    def arc(self, centre: Point, radius: float, start: float, end: float, **kw) -> Primitive:
+        """A compass arc ("засічка"): angles in degrees, counter-clockwise from start to end."""
+        return self.add("arc", [centre], radius=radius, angles=(start, end), **kw)
+
+    def circle(self, centre: Point, radius: float, **kw) -> Primitive:
+        return self.add("circle", [centre], radius=radius, **kw)
+
+    def label(self, at: Point, text: str, size: float = 3.5, anchor: str = "start", **kw) -> Primitive:
+        kw.setdefault("role", "label")
+        kw.setdefault("layer", "labels")
+        return self.add("text", [at], text=text, size=size, anchor=anchor, **kw)
+
+    def point(self, at: Point, **kw) -> Primitive:
+        return self.add("point", [at], **kw)
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        if not self.items:
+            return 0.0, 0.0, 0.0, 0.0
+        b = [p.bounds() for p in self.items]
+        return min(x[0] for x in b), min(x[1] for x in b), max(x[2] for x in b), max(x[3] for x in b)
+
+    def moved(self, dx: float, dy: float, k: float = 1.0) -> Record:
+        return Record(self.title, [p.moved(dx, dy, k) for p in self.items], dict(self.scales))
+
+    def extend(self, other: Record) -> None:
+        self.items.extend(other.items)
+
+
+def arrowhead(a: Point, b: Point, length: float = 3.0, half_width: float = 0.6) -> tuple[Point, Point, Point]:
+    """The filled triangle of an arrow at b (GOST: about 2.5–4 mm long)."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = math.hypot(dx, dy)
+    if n == 0:
+        return b, b, b
+    ux, uy = dx / n, dy / n
+    length = min(length, 0.4 * n)
+    half_width = min(half_width, length / 4)
+    base = (b[0] - ux * length, b[1] - uy * length)
+    return b, (base[0] - uy * half_width, base[1] + ux * half_width), (base[0] + uy * half_width, base[1] - ux * half_width)
