@@ -12,6 +12,7 @@ unknowns and the same matrix for the acceleration unknowns; positions come in cl
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -23,45 +24,80 @@ Array = np.ndarray
 
 
 def cross(u: Array | complex, w: Array | complex) -> Array:
-    """z-component of u × w for complex vectors: Im(conj(u)·w)."""
-    return np.imag(np.conj(u) * w)
+    """z-component of u × w for complex vectors: Im(conj(u)·w) = u_x·w_y − u_y·w_x."""
+    return np.real(u) * np.imag(w) - np.imag(u) * np.real(w)
 
 
 def dot(u: Array | complex, w: Array | complex) -> Array:
-    return np.real(np.conj(u) * w)
+    return np.real(u) * np.real(w) + np.imag(u) * np.imag(w)
+
+
+class System2:
+    """x·u + y·w = rhs for real x, y (Cramer): x = (rhs × w)/(u × w), y = (u × rhs)/(u × w).
+
+    The velocity and the acceleration of a dyad share u, w (the same directions on both plans)."""
+
+    def __init__(self, u: Array | complex, w: Array | complex):
+        self.u, self.w = u, w
+        self.det = cross(u, w)
+
+    def __call__(self, rhs: Array | complex) -> tuple[Array, Array]:
+        return cross(rhs, self.w) / self.det, cross(self.u, rhs) / self.det
 
 
 def solve2(u: Array | complex, w: Array | complex, rhs: Array | complex) -> tuple[Array, Array]:
-    """Real x, y with x·u + y·w = rhs (Cramer): x = (rhs × w)/(u × w), y = (u × rhs)/(u × w)."""
-    det = cross(u, w)
-    return cross(rhs, w) / det, cross(u, rhs) / det
+    """Real x, y with x·u + y·w = rhs."""
+    return System2(u, w)(rhs)
 
 
 @dataclass
 class Body:
-    """Motion of a rigid body: origin O (position, velocity, acceleration) and θ, ω, ε."""
+    """Motion of a rigid body: origin O (position, velocity, acceleration), its turn e^{iθ}, ω, ε."""
     origin: Array
     vo: Array
     ao: Array
-    theta: Array
+    turn: Array
     omega: Array
     eps: Array
 
+    @property
+    def theta(self) -> Array:
+        """θ in (−π, π]."""
+        return np.angle(self.turn)
+
+    @cached_property
+    def _iw(self) -> Array:
+        return 1j * self.omega
+
+    @cached_property
+    def _k(self) -> Array:
+        """iε − ω²: r ↦ the acceleration of a point at r relative to the origin."""
+        return 1j * self.eps - self.omega * self.omega
+
     def at(self, p: complex) -> tuple[Array, Array, Array]:
         """Position, velocity, acceleration of the body's point at local ``p``."""
-        r = p * np.exp(1j * self.theta)
-        return self.origin + r, self.vo + 1j * self.omega * r, self.ao + (1j * self.eps - self.omega ** 2) * r
+        if p == 0:
+            return self.origin, self.vo, self.ao
+        r = p * self.turn
+        return self.origin + r, self.vo + self._iw * r, self.ao + self._k * r
 
     def coincident(self, x: Array) -> tuple[Array, Array]:
         """Velocity and acceleration of the body's point that is at ``x`` now (for slides)."""
         r = x - self.origin
-        return self.vo + 1j * self.omega * r, self.ao + (1j * self.eps - self.omega ** 2) * r
+        return self.vo + self._iw * r, self.ao + self._k * r
 
 
-def place(p: complex, x: Array, v: Array, a: Array, theta: Array, omega: Array, eps: Array) -> Body:
-    """The body whose local point ``p`` moves as (x, v, a) while the body turns as (θ, ω, ε)."""
-    r = p * np.exp(1j * theta)
-    return Body(x - r, v - 1j * omega * r, a - (1j * eps - omega ** 2) * r, theta, omega, eps)
+def place(p: complex, x: Array, v: Array, a: Array, turn: Array, omega: Array, eps: Array) -> Body:
+    """The body whose local point ``p`` moves as (x, v, a) while the body turns as (e^{iθ}, ω, ε)."""
+    if p == 0:
+        return Body(x, v, a, turn, omega, eps)
+    r = p * turn
+    return Body(x - r, v - 1j * omega * r, a - (1j * eps - omega ** 2) * r, turn, omega, eps)
+
+
+def unit(z: Array) -> Array:
+    """z/|z|."""
+    return z / np.abs(z)
 
 
 @dataclass
@@ -116,8 +152,9 @@ def solve(mech: Mechanism, structure: Structure, phi_deg: Array | list[float] | 
     pivot = mech.frame[crank.pivot]
     theta1 = np.radians(phi)
     bodies = {
-        FRAME: Body(zero + 0j, zero + 0j, zero + 0j, zero, zero, zero),
-        crank.link: Body(pivot + zero, zero + 0j, zero + 0j, theta1, zero + crank.omega, zero + crank.epsilon),
+        FRAME: Body(zero + 0j, zero + 0j, zero + 0j, zero + 1 + 0j, zero, zero),
+        crank.link: Body(pivot + zero, zero + 0j, zero + 0j, np.exp(1j * theta1), zero + crank.omega,
+                         zero + crank.epsilon),
     }
     kin = Kinematics(mech, structure, phi, bodies)
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -141,13 +178,14 @@ def _line(kin: Kinematics, guide_name: str, slider: str, point: str) -> tuple[st
     guide = kin.mech.guides[guide_name]
     through = guide.through + kin.mech.links[slider].local[point] * np.exp(1j * guide.angle)
     carrier = kin.bodies[guide.body]
-    turn = np.exp(1j * carrier.theta)
-    return guide.body, carrier.origin + through * turn, np.exp(1j * guide.angle) * turn, guide.angle
+    return guide.body, carrier.origin + through * carrier.turn, np.exp(1j * guide.angle) * carrier.turn, guide.angle
 
 
-def _local_angle(kin: Kinematics, link: str, frm: str, to: str) -> float:
+def _local_turn(kin: Kinematics, link: str, frm: str, to: str) -> complex:
+    """e^{−iα} for the local direction α from ``frm`` to ``to``: world direction × this = the link's turn."""
     local = kin.mech.links[link].local
-    return float(np.angle(local[to] - local[frm]))
+    d = local[to] - local[frm]
+    return complex(np.conj(d) / abs(d))
 
 
 def _distance(kin: Kinematics, link: str, p: str, q: str) -> float:
@@ -184,13 +222,14 @@ def _rrr(kin: Kinematics, d: Dyad, branch: int) -> None:
     ok = (h2 >= 0) & (dist > 0)
     xc = x1 + (along + 1j * branch * np.sqrt(h2)) * span / dist
     ra, rb = xc - x1, xc - x3
-    th_a = np.angle(ra) - _local_angle(kin, d.a, p1, c)
-    th_b = np.angle(rb) - _local_angle(kin, d.b, p3, c)
-    wa, wb = solve2(1j * ra, -1j * rb, v3 - v1)
-    ea, eb = solve2(1j * ra, -1j * rb, a3 - a1 + wa ** 2 * ra - wb ** 2 * rb)
+    th_a = ra / la * _local_turn(kin, d.a, p1, c)
+    th_b = rb / lb * _local_turn(kin, d.b, p3, c)
+    system = System2(1j * ra, -1j * rb)
+    wa, wb = system(v3 - v1)
+    ea, eb = system(a3 - a1 + wa * wa * ra - wb * wb * rb)
     kin.bodies[d.a] = place(kin.mech.links[d.a].local[p1], x1, v1, a1, th_a, wa, ea)
     kin.bodies[d.b] = place(kin.mech.links[d.b].local[p3], x3, v3, a3, th_b, wb, eb)
-    _record(kin, d, ok, cross(ra, rb) / (la * lb))
+    _record(kin, d, ok, -system.det / (la * lb))
 
 
 def _rrp(kin: Kinematics, d: Dyad, branch: int) -> None:
@@ -212,15 +251,16 @@ def _rrp(kin: Kinematics, d: Dyad, branch: int) -> None:
     ra = xc - x1
     body_k = kin.bodies[carrier]
     vk, ak = body_k.coincident(xc)
-    wa, tv = solve2(1j * ra, -g, vk - v1)
-    ea, ta = solve2(1j * ra, -g, ak + 2j * body_k.omega * tv * g - a1 + wa ** 2 * ra)
-    th_a = np.angle(ra) - _local_angle(kin, d.a, p1, c)
+    system = System2(1j * ra, -g)
+    wa, tv = system(vk - v1)
+    ea, ta = system(ak + 2j * body_k.omega * tv * g - a1 + wa * wa * ra)
+    th_a = ra / la * _local_turn(kin, d.a, p1, c)
     kin.bodies[d.a] = place(kin.mech.links[d.a].local[p1], x1, v1, a1, th_a, wa, ea)
     vc, ac = v1 + 1j * wa * ra, a1 + (1j * ea - wa ** 2) * ra
-    kin.bodies[d.b] = place(kin.mech.links[d.b].local[c], xc, vc, ac, body_k.theta + alpha,
+    kin.bodies[d.b] = place(kin.mech.links[d.b].local[c], xc, vc, ac, body_k.turn * np.exp(1j * alpha),
                             body_k.omega, body_k.eps)
     _slide(kin, c, d.b, carrier, t, tv, ta, g)
-    _record(kin, d, ok, cross(1j * ra, -g) / la)
+    _record(kin, d, ok, system.det / la)
 
 
 def _rpr(kin: Kinematics, d: Dyad, branch: int) -> None:
@@ -242,18 +282,17 @@ def _rpr(kin: Kinematics, d: Dyad, branch: int) -> None:
     rho_v = xs - xc
     rho = np.abs(rho_v)
     ok = rho > abs(e)
-    beta = np.arcsin(np.clip(e / rho, -1, 1))
-    if branch < 0:
-        beta = np.pi - beta
-    th_line = np.angle(rho_v) - beta
-    line = np.exp(1j * th_line)
-    t = rho * np.cos(beta) - along0
-    w, tv = solve2(1j * rho_v, line, vs - vc)
-    eps, ta = solve2(1j * rho_v, line, as_ - ac + w ** 2 * rho_v - 2j * w * tv * line)
-    kin.bodies[carrier] = place(links[carrier].local[pc], xc, vc, ac, th_line - guide.angle, w, eps)
-    kin.bodies[slider] = place(links[slider].local[ps], xs, vs, as_, th_line, w, eps)
+    sin_b = e / rho                                   # β: the slot's line turned from Ps − Pc
+    cos_b = branch * np.sqrt(1.0 - sin_b ** 2)
+    line = rho_v / rho * (cos_b - 1j * sin_b)         # e^{i(ψ − β)}
+    t = rho * cos_b - along0
+    system = System2(1j * rho_v, line)
+    w, tv = system(vs - vc)
+    eps, ta = system(as_ - ac + w * w * rho_v - 2j * w * tv * line)
+    kin.bodies[carrier] = place(links[carrier].local[pc], xc, vc, ac, line * np.exp(-1j * guide.angle), w, eps)
+    kin.bodies[slider] = place(links[slider].local[ps], xs, vs, as_, line, w, eps)
     _slide(kin, ps, slider, carrier, t, tv, ta, line)
-    _record(kin, d, ok, cross(1j * rho_v, line) / np.maximum(rho, 1e-300))
+    _record(kin, d, ok, system.det / np.maximum(rho, 1e-300))
 
 
 def _prp(kin: Kinematics, d: Dyad, branch: int) -> None:
@@ -262,18 +301,19 @@ def _prp(kin: Kinematics, d: Dyad, branch: int) -> None:
     c = d.inner.point
     k1, gx1, g1, al1 = _line(kin, d.outer_a.guide, d.a, c)
     k2, gx2, g2, al2 = _line(kin, d.outer_b.guide, d.b, c)
-    t1, t2 = solve2(g1, -g2, gx2 - gx1)
+    system = System2(g1, -g2)
+    t1, t2 = system(gx2 - gx1)
     xc = gx1 + t1 * g1
     b1, b2 = kin.bodies[k1], kin.bodies[k2]
     vk1, ak1 = b1.coincident(xc)
     vk2, ak2 = b2.coincident(xc)
-    tv1, tv2 = solve2(g1, -g2, vk2 - vk1)
-    ta1, ta2 = solve2(g1, -g2, ak2 - ak1 + 2j * (b2.omega * tv2 * g2 - b1.omega * tv1 * g1))
+    tv1, tv2 = system(vk2 - vk1)
+    ta1, ta2 = system(ak2 - ak1 + 2j * (b2.omega * tv2 * g2 - b1.omega * tv1 * g1))
     vc = vk1 + tv1 * g1
     acc = ak1 + ta1 * g1 + 2j * b1.omega * tv1 * g1
     links = kin.mech.links
-    kin.bodies[d.a] = place(links[d.a].local[c], xc, vc, acc, b1.theta + al1, b1.omega, b1.eps)
-    kin.bodies[d.b] = place(links[d.b].local[c], xc, vc, acc, b2.theta + al2, b2.omega, b2.eps)
+    kin.bodies[d.a] = place(links[d.a].local[c], xc, vc, acc, g1, b1.omega, b1.eps)
+    kin.bodies[d.b] = place(links[d.b].local[c], xc, vc, acc, g2, b2.omega, b2.eps)
     _slide(kin, c, d.a, k1, t1, tv1, ta1, g1)
     _slide(kin, c, d.b, k2, t2, tv2, ta2, g2)
     cond = cross(g1, g2)
@@ -293,21 +333,21 @@ def _rpp(kin: Kinematics, d: Dyad, branch: int) -> None:
     ref = next(iter(links[d.b].local))
     carrier, gx, g, alpha = _line(kin, d.outer_b.guide, d.b, ref)
     body_k = kin.bodies[carrier]
-    th_b = body_k.theta + alpha
+    turn = g                                  # the yoke's x-axis runs along K's guide
     slot = kin.mech.guides[d.inner.guide]
     q = slot.through + links[d.a].local[pa] * np.exp(1j * slot.angle)
-    turn = np.exp(1j * th_b)
     dd = np.exp(1j * slot.angle) * turn
-    t3, t2 = solve2(g, dd, xa - gx - q * turn)
+    system = System2(g, dd)
+    t3, t2 = system(xa - gx - q * turn)
     vk, ak = body_k.coincident(xa)
-    tv3, tv2 = solve2(g, dd, va - vk)
-    ta3, ta2 = solve2(g, dd, aa - ak - 2j * body_k.omega * (tv3 * g + tv2 * dd))
+    tv3, tv2 = system(va - vk)
+    ta3, ta2 = system(aa - ak - 2j * body_k.omega * (tv3 * g + tv2 * dd))
     xy = gx + t3 * g
     vky, aky = body_k.coincident(xy)
     vy = vky + tv3 * g
     ay = aky + ta3 * g + 2j * body_k.omega * tv3 * g
-    kin.bodies[d.b] = place(0j, xy, vy, ay, th_b, body_k.omega, body_k.eps)
-    kin.bodies[d.a] = place(links[d.a].local[pa], xa, va, aa, th_b + slot.angle, body_k.omega, body_k.eps)
+    kin.bodies[d.b] = place(0j, xy, vy, ay, turn, body_k.omega, body_k.eps)
+    kin.bodies[d.a] = place(links[d.a].local[pa], xa, va, aa, dd, body_k.omega, body_k.eps)
     _slide(kin, pa, d.a, d.b, t2, tv2, ta2, dd)
     _slide(kin, ref, d.b, carrier, t3, tv3, ta3, g)
     cond = cross(g, dd)
