@@ -28,6 +28,16 @@ def _weight(prim: Primitive) -> int:
 def to_dxf(record: Record, width: float, height: float) -> bytes:
     """The record as a DXF R2010 document in millimetres; text stays text (TEXT entities)."""
     import ezdxf
+    fixed = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True  # no dates or random GUIDs: equal bytes
+    try:
+        return _to_dxf(record, width, height)
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = fixed
+
+
+def _to_dxf(record: Record, width: float, height: float) -> bytes:
+    import ezdxf
     from ezdxf import units
     from ezdxf.enums import TextEntityAlignment
 
@@ -80,10 +90,5 @@ def to_dxf(record: Record, width: float, height: float) -> bytes:
                                 dxfattribs={"layer": prim.layer, "style": "GOST"})
             text.set_placement(prim.points[0], align=align[prim.anchor])
     stream = io.StringIO()
-    fixed = ezdxf.options.write_fixed_meta_data_for_testing
-    ezdxf.options.write_fixed_meta_data_for_testing = True  # no dates or random GUIDs: equal bytes
-    try:
-        doc.write(stream)
-    finally:
-        ezdxf.options.write_fixed_meta_data_for_testing = fixed
+    doc.write(stream)
     return stream.getvalue().encode("utf-8")
