@@ -6,6 +6,7 @@ units (= mm), ``fill="none"`` on strokes, no transforms, one Inkscape layer per 
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 from .drawing import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead
 
@@ -26,8 +27,9 @@ def page_for(record: Record, margin: float = 10.0) -> tuple[Record, float, float
     return record.moved(margin - x0, margin - y0), float(w), float(h)
 
 
-def render(record: Record, width: float, height: float, title: str = "") -> str:
-    """The record as an SVG document of ``width`` × ``height`` mm (y of the record points up)."""
+def render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False) -> str:
+    """The record as an SVG document of ``width`` × ``height`` mm (y of the record points up).
+    ``text_as_paths`` writes lettering as outlines, for importers that drop text."""
     import svgwrite
     from svgwrite.extensions import Inkscape
 
@@ -42,6 +44,9 @@ def render(record: Record, width: float, height: float, title: str = "") -> str:
     for prim in record.items:
         layer = layers.get(prim.layer) or layers.setdefault(prim.layer, ink.layer(label=prim.layer,
                                                                                  id=f"layer-{prim.layer}"))
+        if text_as_paths and prim.kind == "text":
+            layer.add(dwg.path(d=text_outline(prim, height), fill="black", stroke="none"))
+            continue
         for element in _elements(dwg, prim, height):
             layer.add(element)
     for name, layer in layers.items():
@@ -112,3 +117,36 @@ def to_png(svg_text: str, dpi: int = 96) -> bytes:
     """Rasterise an SVG (cairosvg) for looking at it."""
     import cairosvg
     return cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
+
+
+def font_file() -> str | None:
+    """osifont when installed (Debian fonts-osifont), else None (matplotlib's DejaVu Sans)."""
+    from matplotlib import font_manager
+    for path in font_manager.findSystemFonts():
+        if "osifont" in path.lower():
+            return path
+    return None
+
+
+@lru_cache(maxsize=1)
+def _font():
+    from matplotlib.font_manager import FontProperties
+    path = font_file()
+    return FontProperties(fname=path) if path else FontProperties(family="DejaVu Sans")
+
+
+def text_outline(prim: Primitive, height: float) -> str:
+    """The lettering of a text primitive as one SVG path (matplotlib TextPath), in sheet mm."""
+    from matplotlib.textpath import TextPath
+
+    tp = TextPath((0, 0), prim.text, size=prim.size, prop=_font())
+    ext = tp.get_extents()
+    shift = {"start": 0.0, "middle": -ext.width / 2 - ext.x0, "end": -ext.width - ext.x0}[prim.anchor]
+    x0, y0 = prim.points[0]
+    parts = []
+    for poly in tp.to_polygons(closed_only=True):
+        pts = [(x0 + x + shift, y0 + y) for x, y in poly]
+        if len(pts) < 3:
+            continue
+        parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")
+    return " ".join(parts) or "M0,0"
