@@ -201,9 +201,15 @@ def _slide(kin: Kinematics, key: str, slider: str, carrier: str, t: Array, v: Ar
     kin.slides[key] = Slide(slider, carrier, key.split(":")[0], t, v, a, g, 2j * omega * v * g)
 
 
+LOCKED = 1e-12  # |sin| of the angle between a group's direction lines below which it locks
+
+
 def _record(kin: Kinematics, dyad: Dyad, ok: Array, condition: Array) -> None:
-    kin.valid[dyad.label] = ok & np.isfinite(condition)
-    kin.condition[dyad.label] = np.abs(condition)
+    """Assembled where the position exists and the velocity system is not singular (a group whose
+    direction lines coincide locks: its velocities are unbounded)."""
+    cond = np.abs(condition)
+    kin.valid[dyad.label] = ok & np.isfinite(cond) & (cond > LOCKED)
+    kin.condition[dyad.label] = cond
 
 
 # -- the five dyad kinds -----------------------------------------------------------------------

@@ -2,7 +2,8 @@
 positions found exactly, and the N positions numbered from position 0 in the crank's sense."""
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -11,7 +12,9 @@ from .kinematics import Kinematics, solve
 from .mechanism import FRAME, Mechanism
 from .structure import Structure, analyse
 
-GRID = 1440  # the assembly check and the extreme search sample every 0.25°
+GRID = 1440      # the assembly check and the extreme search sample every 0.25°
+LOCK_SIN = 1e-9  # a group whose direction lines cross at less than this sine locks
+WARN_DEG = 10.0  # warn when a group's direction lines cross at less than this angle
 
 
 @dataclass(frozen=True)
@@ -45,6 +48,7 @@ class Study:
     phi0: float                     # crank angle of position 0, deg
     extremes: tuple[float, ...]     # crank angles where the output stops, deg
     t0: dict[str, float]            # slide coordinates at position 0
+    warnings: list[str] = field(default_factory=list)   # cycle-level warnings (near-locking groups)
 
     def positions(self, count: int | None = None) -> np.ndarray:
         """Crank angles of positions 0 … N−1, in the order the crank passes them (deg, [0, 360))."""
@@ -89,27 +93,84 @@ def default_output(mech: Mechanism, structure: Structure) -> Output:
 def study(mech: Mechanism) -> Study:
     """Structure, assembly check over the full turn, extremes and position 0."""
     structure = analyse(mech)
-    check_assembly(mech, structure)
+    warnings = check_assembly(mech, structure)
     output = default_output(mech, structure)
     extremes = find_extremes(mech, structure, output)
     phi0 = choose_start(mech, structure, output, extremes)
     kin0 = solve(mech, structure, [phi0])
-    return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()})
+    return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()},
+                 warnings)
 
 
-def check_assembly(mech: Mechanism, structure: Structure) -> None:
-    """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does."""
+def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
+    """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does,
+    or that locks (its direction lines coincide) at some angle; return warnings for groups whose
+    direction lines cross at less than ``WARN_DEG`` somewhere in the turn."""
     grid = np.arange(GRID) * 360.0 / GRID
     kin = solve(mech, structure, grid)
+    warnings = []
     for dyad in structure.dyads:
         ok = kin.valid[dyad.label]
         if np.all(ok):
+            phi, worst = _worst_condition(mech, structure, dyad.label, grid, kin.condition[dyad.label])
+            if worst < LOCK_SIN:
+                raise AssemblyError(f"{dyad.title} locks at crank angle {deg(phi, 2)}: its direction lines "
+                                    "coincide (transmission angle 0°), the crank cannot drive it through",
+                                    mech.source)
+            angle = math.degrees(math.asin(min(worst, 1.0)))
+            if angle < WARN_DEG:
+                warnings.append(f"{dyad.title}: its direction lines cross at only {angle:.2f}° "
+                                f"near crank angle {deg(phi, 2)} (close to locking; plans there are "
+                                "ill-conditioned)")
             continue
         if not np.any(ok):
             raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
         ranges = _bad_ranges(mech, structure, dyad.label, grid, ok)
-        text = ", ".join(f"{a:.1f}°–{b:.1f}°" for a, b in ranges)
+        if all((b - a) % 360.0 < 1e-3 or (a - b) % 360.0 < 1e-3 for a, b in ranges):
+            where = ", ".join(deg(a, 2) for a, _ in ranges)
+            raise AssemblyError(f"{dyad.title} locks at crank angle {where}: its links come into line, "
+                                "the crank cannot drive it through", mech.source)
+        text = ", ".join(f"{deg(a)}–{deg(b)}" for a, b in ranges)
         raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
+    return warnings
+
+
+def deg(angle: float, digits: int = 1) -> str:
+    """A crank angle as text in [0, 360): 359.99 rounds to 0.0°, never to 360.0°."""
+    return f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
+
+
+def _worst_condition(mech, structure, label, grid, cond) -> tuple[float, float]:
+    """The crank angle and value of the smallest |sin| between the group's direction lines,
+    refined by golden-section search around the grid's local minima."""
+    step = grid[1] - grid[0]
+    n = len(grid)
+    minima = [k for k in range(n) if cond[k] <= cond[k - 1] and cond[k] <= cond[(k + 1) % n]]
+    minima = sorted(minima, key=lambda k: cond[k])[:4]
+    best_phi, best = float(grid[int(np.argmin(cond))]), float(np.min(cond))
+
+    def f(phi: float) -> float:
+        kin = solve(mech, structure, [phi])
+        return float(kin.condition[label][0]) if kin.valid[label][0] else 0.0
+
+    g = (math.sqrt(5) - 1) / 2
+    for k in minima:
+        a, b = grid[k] - step, grid[k] + step
+        c, d = b - g * (b - a), a + g * (b - a)
+        fc, fd = f(c), f(d)
+        for _ in range(40):
+            if fc < fd:
+                b, d, fd = d, c, fc
+                c = b - g * (b - a)
+                fc = f(c)
+            else:
+                a, c, fc = c, d, fd
+                d = a + g * (b - a)
+                fd = f(d)
+        phi, value = (c, fc) if fc < fd else (d, fd)
+        if value < best:
+            best_phi, best = phi % 360.0, value
+    return best_phi, best
 
 
 def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:

@@ -38,6 +38,7 @@ def analyze_json(st: Study, phi_deg: np.ndarray, indices: list[int]) -> dict[str
         "position0_phi_deg": st.phi0,
         "extremes_phi_deg": list(st.extremes),
         "derived": mech.derived,
+        "warnings": list(st.warnings),
         "positions": positions,
     }
 
@@ -96,4 +97,6 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int]) -> str:
               "s from position 0, m; v, a along the guide; Coriolis |a_k|",
               ["s", "v", "a", "a_k"],
               [[sl.t[k] - st.t0[key], sl.v[k], sl.a[k], sl.coriolis_magnitude[k]] for k in range(n)])
+    if st.warnings:
+        lines += ["", "Warnings:"] + [f"  {w}" for w in st.warnings]
     return "\n".join(lines) + "\n"

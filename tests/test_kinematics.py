@@ -150,3 +150,22 @@ def test_slides_and_positions_follow_the_crank():
 def example_text(name: str) -> str:
     from conftest import ROOT
     return (ROOT / "examples" / f"{name}.toml").read_text(encoding="utf-8")
+
+
+def test_a_group_that_locks_is_refused_and_one_near_locking_is_warned():
+    """Four-bar O1A = 0.1, O1O2 = 0.3, AB = 0.35: with O2B = 0.15 the coupler and rocker come into
+    line at φ = 0 (|AO2| = 0.2 = AB − O2B): refused; with 0.151 they nearly do: a warning."""
+    import random_mechanisms as rm
+    from graphplan.errors import AssemblyError
+    text, _ = rm.rrr(0.1, 0.3, 0.35, 0.15, 6.28, 1)
+    with pytest.raises(AssemblyError, match=r"locks at crank angle 0\.00°"):
+        scene_study(text)
+    text, _ = rm.rrr(0.1, 0.3, 0.35, 0.151, 6.28, 1)
+    st = scene_study(text)
+    assert len(st.warnings) == 1 and "near crank angle 0.00°" in st.warnings[0]
+    # the true angle between coupler and rocker at φ = 0: law of cosines in triangle A–B–O2
+    cos_mu = (0.35 ** 2 + 0.151 ** 2 - 0.2 ** 2) / (2 * 0.35 * 0.151)
+    mu = math.degrees(math.acos(cos_mu))
+    assert f"{mu:.2f}°" in st.warnings[0]
+    for name in ("crank_slider", "four_bar", "shaper", "slotter"):
+        assert example(name).warnings == []
