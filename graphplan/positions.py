@@ -117,6 +117,8 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
                 raise AssemblyError(f"{dyad.title} locks at crank angle {deg(phi, 2)}: its direction lines "
                                     "coincide (transmission angle 0°), the crank cannot drive it through",
                                     mech.source)
+            if dyad.kind == "RPR":
+                warnings += _block_near_pivot(kin, dyad, grid)
             angle = math.degrees(math.asin(min(worst, 1.0)))
             if angle < WARN_DEG:
                 warnings.append(f"{dyad.title}: its direction lines cross at only {angle:.2f}° "
@@ -133,6 +135,21 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
         text = ", ".join(f"{deg(a)}–{deg(b)}" for a, b in ranges)
         raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
     return warnings
+
+
+def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[str]:
+    """A slotted link whose block passes close to the rocker's pivot turns violently there
+    (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value."""
+    slider = dyad.inner.slider
+    outer_s, outer_c = (dyad.outer_a, dyad.outer_b) if slider == dyad.a else (dyad.outer_b, dyad.outer_a)
+    rho = np.abs(kin.point(outer_s.point)[0] - kin.point(outer_c.point)[0])
+    k = int(np.argmin(rho))
+    if rho[k] >= 0.05 * np.max(rho):
+        return []
+    carrier = dyad.b if slider == dyad.a else dyad.a
+    w = float(np.max(np.abs(kin.bodies[carrier].omega)))
+    return [f"{dyad.title}: the block {outer_s.point} passes within {rho[k] * 1000:.3g} mm of the pivot "
+            f"{outer_c.point} near crank angle {deg(grid[k])}; the slotted link's ω reaches {w:.4g} rad/s"]
 
 
 def deg(angle: float, digits: int = 1) -> str:
