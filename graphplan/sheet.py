@@ -1,0 +1,202 @@
+"""`graphplan sheet`: the drawing sheet — frame and title block, the position plan, the velocity and
+acceleration plans, the s–v–a diagrams and the tables, laid out so nothing overlaps (REFERENCE §3).
+The output's suffix picks SVG, PDF, PNG or DXF; every format views the same construction record."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .drawing import Record, text_width
+from .errors import GraphplanError
+from .layout import Block, Placed, declutter, place
+from .positions import Study
+from .sheetform import Form, form, frame, table, title_block, title_block_box
+
+WORDS = {
+    "uk": {"positions": "План положень", "velocity": "План швидкостей", "acceleration": "План прискорень",
+           "position": "положення", "diagrams": "Кінематичні діаграми", "vel_table": "Таблиця 1. Швидкості, м/с; ω, рад/с",
+           "acc_table": "Таблиця 2. Прискорення, м/с²; ε, рад/с², положення", "graphical": "графічно",
+           "analytic": "аналітично", "error": "δ, %", "quantity": "величина", "structure": "Структурна формула",
+           "mobility": "Ступінь рухомості", "scales": "Масштабні коефіцієнти", "precision": "Точність креслення",
+           "forces": "Силовий аналіз", "max_error": "Найбільша похибка планів швидкостей",
+           "subtitle": "Кінематичний аналіз"},
+    "en": {"positions": "Position plan", "velocity": "Velocity plan", "acceleration": "Acceleration plan",
+           "position": "position", "diagrams": "Kinematic diagrams", "vel_table": "Table 1. Velocities, m/s; ω, rad/s",
+           "acc_table": "Table 2. Accelerations, m/s²; ε, rad/s², position", "graphical": "graphical",
+           "analytic": "analytic", "error": "δ, %", "quantity": "quantity", "structure": "Structural formula",
+           "mobility": "Mobility", "scales": "Scale coefficients", "precision": "Drafting precision",
+           "forces": "Force analysis", "max_error": "Largest error of the velocity plans",
+           "subtitle": "Kinematic analysis"},
+}
+FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
+
+
+@dataclass
+class Sheet:
+    """A laid-out sheet: its form, the whole construction record and where each block went."""
+    form: Form
+    record: Record
+    placed: list[Placed] = field(default_factory=list)
+    lang: str = "uk"
+
+    def svg(self, text_as_paths: bool = False) -> str:
+        from .svg import render
+        return render(self.record, self.form.width, self.form.height, self.record.title, text_as_paths)
+
+    def write(self, path: str | Path, text_as_paths: bool = False) -> Path:
+        """Write the sheet; the suffix picks the format. Whole files only."""
+        from .output import write_atomic
+        path = Path(path)
+        suffix = path.suffix.lower()
+        if suffix not in FORMATS_OUT:
+            raise GraphplanError(f"-o {path}: unknown format {suffix or '(none)'!r}; use "
+                                 + ", ".join(FORMATS_OUT))
+        if suffix == ".dxf":
+            from .dxf import to_dxf
+            return write_atomic(path, to_dxf(self.record, self.form.width, self.form.height))
+        svg = self.svg(text_as_paths)
+        if suffix == ".svg":
+            return write_atomic(path, svg)
+        import cairosvg
+        data = (cairosvg.svg2pdf if suffix == ".pdf" else cairosvg.svg2png)(
+            bytestring=svg.encode("utf-8"), **({} if suffix == ".pdf" else {"dpi": 96}))
+        return write_atomic(path, data)
+
+    def _repr_svg_(self) -> str:  # Jupyter
+        return self.svg()
+
+
+def captioned(rec: Record, caption: str, size: float = 3.5) -> Record:
+    """A block with its caption written above its top-left corner."""
+    out = Record(rec.title, list(rec.items), dict(rec.scales))
+    x0, _, x1, y1 = rec.bounds()
+    out.label((x0, y1 + 2.5), caption, size=size, layer="labels")
+    return out
+
+
+def fmt(v: float | None, digits: int = 4) -> str:
+    """Numbers for tables: 4 significant digits, a true minus, '—' for none."""
+    if v is None or (isinstance(v, float) and not math.isfinite(v)):
+        return "—"
+    text = f"{v:.{digits}g}"
+    if "e" in text:
+        text = f"{v:.2e}"
+    return text.replace("-", "−")
+
+
+def velocity_table(doc: dict, lang: str) -> Record:
+    """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3."""
+    w = WORDS[lang]
+    keys: list[str] = []
+    for pos in doc["positions"]:
+        for key in pos["velocity"]:
+            if key not in keys:
+                keys.append(key)
+    head = ["№", "φ, °"] + [_symbol(k) for k in keys] + ["δmax, %"]
+    rows = [head]
+    for pos in doc["positions"]:
+        errs = [abs(e["error_pct"]) for e in pos["velocity"].values() if e.get("error_pct") is not None]
+        rows.append([str(pos["index"]), f"{pos['phi_deg']:.1f}"]
+                    + [fmt(pos["velocity"].get(k, {}).get("value")) for k in keys]
+                    + [fmt(max(errs) if errs else None, 2)])
+    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k), 2.5) + 3) for k in keys] + [15.0]
+    return table(rows, widths, row_h=6.0, size=2.5, title=w["vel_table"])
+
+
+def acceleration_table(doc: dict, pos: dict, lang: str) -> Record:
+    """Table 2: one acceleration plan: drawn mm, graphical value, analytic value and δ, %."""
+    w = WORDS[lang]
+    rows = [[w["quantity"], "мм" if lang == "uk" else "mm", w["graphical"], w["analytic"], w["error"]]]
+    for key, e in list(pos.get("acceleration", {}).items()):
+        rows.append([_symbol(key), fmt(e.get("mm")), fmt(e.get("value")), fmt(e.get("analytic")),
+                     fmt(e.get("error_pct"), 2)])
+    return table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
+                 title=f"{w['acc_table']} {pos['index']}")
+
+
+def _symbol(key: str) -> str:
+    """'B' → 'v_B'-style headers kept short: omega_AB → ωAB, epsilon_AB → εAB, k_A → aᵏA."""
+    for prefix, sym in (("omega_", "ω"), ("epsilon_", "ε"), ("k_", "k ")):
+        if key.startswith(prefix):
+            return sym + key[len(prefix):]
+    return key
+
+
+def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
+    """The structural formula, the mobility and the scale coefficients as lines of text."""
+    w = WORDS[lang]
+    s = st.structure
+    lines = [f"{w['mobility']}: W = 3n − 2p5 − p4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
+             f"{w['structure']}: {s.formula}  ("
+             + ", ".join(f"{d.label} {d.kind}" for d in s.dyads) + ")",
+             f"{w['scales']}: " + "; ".join(scales)] + extra
+    rec = Record("notes")
+    for k, line in enumerate(lines):
+        rec.label((0.0, -7.0 * k), line, size=3.5, layer="labels")
+    return rec
+
+
+def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1) -> dict[str, str]:
+    meta = st.mech.meta
+    title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
+        meta.get("title", st.mech.title)
+    return {"designation": meta.get("designation", ""), "title": title,
+            "student": meta.get("sheet.student", ""), "teacher": meta.get("sheet.teacher", ""),
+            "organisation": meta.get("sheet.organisation", meta.get("sheet.group", "")),
+            "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),
+            "subtitle": WORDS[lang]["subtitle"]}
+
+
+def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
+    """Frame + title block + the blocks placed in the free field, labels decluttered."""
+    x0, y0, x1, y1 = f.frame_box
+    region = (x0 + 5.0, y0 + 5.0, x1 - 5.0, y1 - 5.0)
+    tb = title_block_box(f)
+    placed = place(blocks, region, obstacles=[(tb[0] - 5.0, tb[1], tb[2], tb[3] + 5.0)], gap=8.0)
+    rec = Record(title)
+    rec.extend(frame(f))
+    rec.extend(title_block(f, title_fields, lang))
+    for p in placed:
+        rec.extend(p.record)
+    return Sheet(f, declutter(rec), placed, lang)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("sheet", help="the drawing sheet (SVG, PDF, PNG or DXF by the suffix)",
+                       description="Lay out the drawing sheet: frame, title block, plans, diagrams and "
+                                   "tables. Without SCENE the built-in crank-slider is drawn.")
+    p.add_argument("scene", nargs="?", help="scene file (TOML); the built-in crank-slider when omitted")
+    p.add_argument("-o", "--output", required=True, metavar="FILE",
+                   help="output file: .svg, .pdf, .png or .dxf")
+    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
+    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
+    p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces"],
+                   help="which sheet: kinematics (default) or forces")
+    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
+    p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
+    p.add_argument("--text-as-paths", action="store_true", help="write lettering as outlines (SVG/PDF/PNG)")
+    p.set_defaults(handler=cmd_sheet)
+
+
+BUILDERS: dict[str, Callable[..., Sheet]] = {}
+
+
+def cmd_sheet(args: argparse.Namespace) -> int:
+    from .positions import study
+    from .scene import load
+    if Path(args.output).suffix.lower() not in FORMATS_OUT:
+        raise GraphplanError(f"-o {args.output}: unknown format; use " + ", ".join(FORMATS_OUT))
+    st = study(load(args.scene))
+    f = form(args.format)
+    build = BUILDERS.get(args.sheet)
+    if build is None:
+        raise GraphplanError(f"--sheet {args.sheet}: not available")
+    sheet = build(st, f, args)
+    path = sheet.write(args.output, args.text_as_paths)
+    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
+    return 0
