@@ -135,9 +135,17 @@ def stability(quick: bool) -> Iterator[Row]:
             yield row
 
 
+def external(quick: bool) -> Iterator[Row]:
+    """The same analysis by pylinkage and by `mechanism`, where installed, side by side (ratios)."""
+    from .bench_external import external_rows
+    for row in external_rows(n_positions=360, repeats=3 if quick else 5, examples_dir=examples_dir()):
+        yield {"section": "external", "x": row.get("n_positions"), **row}
+
+
 SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "speed": solver_speed,
     "stability": stability,
+    "external": external,
 }
 
 
@@ -249,9 +257,9 @@ def summary(rows: list[Row]) -> str:
     for r in rows:
         t = "" if r.get("time_s") is None else f"{r['time_s']:.3g}"
         e = "" if r.get("max_error_pct") is None else f"{r['max_error_pct']:.3g}"
-        setting = r["setting"] + ("" if r["section"] == "speed" else f" x={r['x']:g}")
-        lines.append(f"{r['section']:10} {r['method']:10} {setting[:58]:58} {t:>10} {e:>10}  "
-                     f"{r.get('status', '')}")
+        setting = r["setting"] + (f" x={r['x']:g}" if r["section"] == "stability" else "")
+        lines.append(f"{r['section']:10} {r['method'][:10]:10} {setting[:58]:58} {t:>10} {e:>10}  "
+                     f"{r.get('status') or r.get('note') or ''}")
     return "\n".join(lines)
 
 
