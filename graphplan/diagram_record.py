@@ -26,14 +26,15 @@ def rich(rec: Record, at: tuple[float, float], parts: list[tuple[str, bool]], si
          anchor: str = "start", step: str = "") -> None:
     """Text with subscripts: ``parts`` = [(text, is_subscript), …]; subscripts 0.7 high, 0.3 lower."""
     sizes = [size * 0.7 if sub else size for _, sub in parts]
-    total = sum(text_width(t, s) for (t, _), s in zip(parts, sizes))
+    width = lambda t, s, sub: 0.62 * s * len(t) + 0.4 if sub else text_width(t, s)  # noqa: E731
+    total = sum(width(t, s, sub) for (t, sub), s in zip(parts, sizes))
     x = at[0] - {"start": 0.0, "middle": total / 2, "end": total}[anchor]
     for (text, sub), s in zip(parts, sizes):
         body = text.lstrip(" ")
         x += text_width(text[:len(text) - len(body)], s)  # SVG drops leading spaces: move instead
         if body:
             rec.label((x, at[1] - (0.3 * size if sub else 0.0)), body, size=s, layer=LAYER, step=step)
-        x += text_width(body, s) + (0.4 if sub else 0.0)
+        x += width(body, s, sub)
 
 
 def _extent(*arrays) -> tuple[float, float]:

@@ -201,5 +201,5 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     lines.append("")
     lines.append(w["warn"] + ":" + ("" if d.warnings else " " + w["none"]))
     for item in d.warnings:
-        lines.append("  - " + item["message"])
+        lines.append("  - " + item["message_uk" if lang == "uk" else "message"])
     return "\n".join(lines) + "\n"

@@ -192,6 +192,9 @@ def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str
             links = ", ".join(n for n, l in mech.links.items() if l.slides_on is None)
             raise GraphplanError(f"--point {point}: not a sliding point ({', '.join(sorted(keys)) or 'none'}) "
                                  f"nor a link ({links})", mech.source)
+    if out.kind == "link" and out.name == mech.crank.link:
+        raise GraphplanError(f"--point {out.name}: the crank turns uniformly, its diagrams are a straight "
+                             "line and two constants; name a sliding point or another link", mech.source)
     if out.kind == "slide":
         return out, out.name, ("s", "v", "a"), out.name, "m"
     return out, out.name, ("φ", "ω", "ε"), str(mech.links[out.name].number), "rad"
@@ -397,59 +400,83 @@ def _near_extreme(d: Diagrams, k: int) -> float | None:
     return None
 
 
-def _where(d: Diagrams, k: int) -> str:
-    a = abs(d.truth["a_mid"][k]) / d.maxima["a"]
+def _where(d: Diagrams, k: int, lang: str) -> str:
+    """Interval k with its crank angles and why the chord misses there."""
     e = _near_extreme(d, k)
+    a = 100 * abs(d.truth["a_mid"][k]) / d.maxima["a"]
+    sym = d.symbols[2]
+    if lang == "uk":
+        place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
+        if e is not None:
+            return place + f", біля крайнього положення φ = {e:.1f}°)"
+        return place + f", крутий згин: |{sym}| = {a:.0f} % від максимуму)"
     place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
     if e is not None:
         return place + f", next to the extreme position at φ = {e:.1f}°)"
-    return place + f", a sharp bend: |{d.symbols[2]}| = {100 * a:.0f} % of its maximum)"
+    return place + f", a sharp bend: |{sym}| = {a:.0f} % of its maximum)"
 
 
 def diagnose(d: Diagrams) -> list[dict[str, Any]]:
-    """Warnings: the chord error of v and a (the exact drawing's, so the ruler does not hide it),
-    the positions past the lab's 5 %, the ruler's error amplified by each differentiation, and
-    diagrams too tall or too flat for their pole distances."""
+    """Warnings, each with its numbers and a ``message`` (English) and ``message_uk``: the chord
+    error of v and a (the exact drawing's, so the ruler does not hide it), the division ordinates
+    past the lab's 5 %, the ruler's error amplified by each differentiation, diagrams too tall or
+    too flat for their pole distances."""
     out: list[dict[str, Any]] = []
+    n = d.divisions
     for key, sym in (("v_mid", d.symbols[1]), ("a_mid", d.symbols[2])):
         err = d.errors_of_max(key, d.exact)
         bad = np.flatnonzero(np.abs(err) > LAB_LIMIT)
         if bad.size:
             worst = bad[np.argsort(-np.abs(err[bad]))][:3]
-            text = "; ".join(f"{err[k]:+.1f} % in interval {_where(d, k)}" for k in worst)
+            en = "; ".join(f"{err[k]:+.1f} % in interval {_where(d, k, 'en')}" for k in worst)
+            uk = "; ".join(f"{err[k]:+.1f} % в інтервалі {_where(d, k, 'uk')}" for k in worst)
             out.append({"kind": "chord_error", "diagram": sym, "intervals": [int(k) for k in bad],
                         "max_pct_of_max": float(np.max(np.abs(err))),
-                        "message": f"chord error of {sym} exceeds {LAB_LIMIT:g} % of |{sym}|max in "
-                                   f"{bad.size} of {d.divisions} intervals: {text}; take smaller intervals "
-                                   "there (--adaptive) or more divisions"})
+                        "message": f"chord error of {sym} exceeds {LAB_LIMIT:g} % of |{sym}|max in {bad.size} "
+                                   f"of {n} intervals: {en}; take smaller intervals there (--adaptive) or "
+                                   "more divisions",
+                        "message_uk": f"похибка хорд для {sym} перевищує {LAB_LIMIT:g} % від |{sym}|max у "
+                                      f"{bad.size} з {n} інтервалів: {uk}; там треба менші інтервали "
+                                      "(--adaptive) або більше поділок"})
     for key, sym in (("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
         pct = d.errors_pct(key)[:-1]
-        truth = d.truth[key][:-1]
-        judged = np.abs(truth) >= MEANINGFUL * d.maxima[key[0]]
+        judged = np.abs(d.truth[key][:-1]) >= MEANINGFUL * d.maxima[key[0]]
         bad = np.flatnonzero(judged & (np.abs(np.nan_to_num(pct)) > LAB_LIMIT))
         if bad.size:
             text = ", ".join(f"{k} ({pct[k]:+.1f} %)" for k in bad[:8]) + (" …" if bad.size > 8 else "")
             out.append({"kind": "lab_limit", "diagram": sym, "ordinates": [int(k) for k in bad],
+                        "error_pct": [float(pct[k]) for k in bad],
                         "message": f"{sym} read at the division ordinates misses the lab's {LAB_LIMIT:g} % at "
-                                   f"{text}"})
+                                   f"{text}",
+                        "message_uk": f"{sym}, прочитане на ординатах поділу, виходить за {LAB_LIMIT:g} % "
+                                      f"лабораторної роботи в {text}"})
     ruler = ruler_effect(d)
     if ruler is not None:
-        v1, v2 = d.symbols[1], d.symbols[2]
-        out.append({"kind": "ruler", "amplification_first": ruler["first"], "amplification_second": ruler["second"],
-                    "message": f"the ruler's {d.precision:g} mm reading error (RMS, % of the maximum): "
-                               f"{d.symbols[0]} {ruler['s_rms_pct']:.2f} %, {v1} {ruler['v_rms_pct']:.2f} %, "
-                               f"{v2} {ruler['a_rms_pct']:.2f} %; the first differentiation amplifies it "
-                               f"×{ruler['first']:.1f}, the second ×{ruler['second']:.1f}"})
+        s0, v1, v2 = d.symbols
+        errs = f"{s0} {ruler['s_rms_pct']:.2f} %, {v1} {ruler['v_rms_pct']:.2f} %, {v2} {ruler['a_rms_pct']:.2f} %"
+        out.append({"kind": "ruler", "amplification_first": ruler["first"],
+                    "amplification_second": ruler["second"],
+                    "message": f"the ruler's {d.precision:g} mm reading error (RMS, % of the maximum): {errs}; "
+                               f"the first differentiation amplifies it ×{ruler['first']:.1f}, the second "
+                               f"×{ruler['second']:.1f}",
+                    "message_uk": f"похибка відліку лінійкою {d.precision:g} мм (СКВ, % від максимуму): {errs}; "
+                                  f"перше диференціювання підсилює її ×{ruler['first']:.1f}, друге "
+                                  f"×{ruler['second']:.1f}"})
     for sym, rd, H, opt in ((d.symbols[1], d.drawn.v, d.H1, "--h1"), (d.symbols[2], d.drawn.a, d.H2, "--h2")):
         tall = float(np.ptp(np.append(rd, 0.0)))
         if tall > 200 or tall < 15:
             better = H * 60.0 / max(tall, 1e-9)
             out.append({"kind": "height", "diagram": sym, "height_mm": tall,
                         "message": f"the {sym} diagram is {tall:.0f} mm tall with H = {H:g} mm; "
-                                   f"{opt} {better:.0f} would make it about 60 mm"})
+                                   f"{opt} {better:.0f} would make it about 60 mm",
+                        "message_uk": f"діаграма {sym} має висоту {tall:.0f} мм при H = {H:g} мм; "
+                                      f"{opt} {better:.0f} дасть близько 60 мм"})
     if d.study.mech.crank.epsilon != 0:
-        out.append({"kind": "epsilon1", "message": "the diagrams take one crank period at constant ω1; "
-                                                   "the scene's ε1 ≠ 0 is in the analytic values only"})
+        out.append({"kind": "epsilon1",
+                    "message": "the diagrams take one crank period at constant ω1; the scene's ε1 ≠ 0 is in "
+                               "the analytic values only",
+                    "message_uk": "діаграми побудовано для сталої ω1; задане ε1 ≠ 0 враховане лише в "
+                                  "аналітичних значеннях"})
     return out
 
 
@@ -483,13 +510,14 @@ def cmd_diagrams(args) -> int:
 
 
 def register(sub) -> None:
+    from .cli import _scene_arg
     p = sub.add_parser(
         "diagrams", help="s–v–a diagrams by the method of chords, measured and compared",
         description="Kinematic diagrams of the output (displacement from position 0, velocity, "
                     "acceleration) by graphical differentiation with chords and pole distances H1, H2; "
                     "graphical integration back; every ordinate read with the drafting precision and "
                     "compared with the analytic solver.")
-    p.add_argument("scene", help="scene file (TOML, see docs/scenes.md)")
+    _scene_arg(p, optional=True)
     p.add_argument("--point", metavar="P", help="a sliding point or a link (default: the scene's output)")
     p.add_argument("--divisions", type=_divisions_arg, metavar="N",
                    help="equal intervals (default: the scene's positions count), or comma-separated crank "

@@ -201,6 +201,8 @@ def test_other_points_and_bad_input(shaper):
     assert rel.output.kind == "slide" and rel.unit == "m"
     with pytest.raises(GraphplanError, match="--point Q"):
         chord_diagrams(shaper, point="Q")
+    with pytest.raises(GraphplanError, match="crank turns uniformly"):
+        chord_diagrams(shaper, point="O1A")
     for kw in ({"divisions": 2}, {"H1": 0}, {"L": -5}, {"precision": -1}, {"divisions": [0, 90, 90, 180]},
                {"chosen": [12]}):
         with pytest.raises(GraphplanError):
