@@ -15,9 +15,9 @@ def _num(v) -> float | None:
     return v if math.isfinite(v) else None
 
 
-def _entry(d: Diagrams, key: str, k: int, mm: float, phi: float, t: float) -> dict[str, Any]:
-    return {"phi_deg": float(phi), "t": float(t), "mm": float(mm), "value": float(d.values()[key][k]),
-            "analytic": float(d.truth[key][k]), "error_pct": _num(d.errors_pct(key)[k])}
+def _entry(values: dict, pct: dict, truth: dict, key: str, k: int, mm: float) -> dict[str, Any]:
+    return {"mm": float(mm), "value": float(values[key][k]), "analytic": float(truth[key][k]),
+            "error_pct": _num(pct[key][k])}
 
 
 def diagrams_json(d: Diagrams) -> dict[str, Any]:
@@ -25,14 +25,17 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     from .diagrams import ruler_effect
     n = d.divisions
     r = d.drawn
-    s = [_entry(d, "s", k, r.s[k], d.phi[k], d.t[k]) for k in range(n + 1)]
-    v = [_entry(d, "v_mid", k, r.v[k], d.phi_mid[k], d.t_mid[k]) for k in range(n)]
-    a = [_entry(d, "a_mid", k, r.a[k], d.phi_mid[k], d.t_mid[k]) for k in range(n)]
+    values, truth = d.values(), d.truth
+    pct = {key: d.errors_pct(key) for key in ("s", "v_mid", "a_mid", "v_at", "a_at")}
+    cell = lambda key, k, mm: _entry(values, pct, truth, key, k, mm)  # noqa: E731
+    at = lambda phi, t: {"phi_deg": float(phi), "t": float(t)}  # noqa: E731
+    s = [at(d.phi[k], d.t[k]) | cell("s", k, r.s[k]) for k in range(n + 1)]
+    v = [at(d.phi_mid[k], d.t_mid[k]) | cell("v_mid", k, r.v[k]) for k in range(n)]
+    a = [at(d.phi_mid[k], d.t_mid[k]) | cell("a_mid", k, r.a[k]) for k in range(n)]
     positions = []
     for k in range(n):
-        positions.append({
-            "index": k, "position": d.position[k], "phi_deg": float(d.phi[k]), "t": float(d.t[k]),
-            "s": _cell(d, "s", k, r.s[k]), "v": _cell(d, "v_at", k, r.v_at[k]), "a": _cell(d, "a_at", k, r.a_at[k])})
+        positions.append({"index": k, "position": d.position[k]} | at(d.phi[k], d.t[k]) | {
+            "s": cell("s", k, r.s[k]), "v": cell("v_at", k, r.v_at[k]), "a": cell("a_at", k, r.a_at[k])})
     ex = d.exact
     integration = {
         "v_from_a": _integral(r.v_int, r.v_at, d.maxima["v"] / d.mu_v),
@@ -67,11 +70,6 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
         "warnings": [{k: (float(x) if isinstance(x, (np.floating,)) else x) for k, x in w.items()}
                      for w in d.warnings],
     }
-
-
-def _cell(d: Diagrams, key: str, k: int, mm: float) -> dict[str, Any]:
-    return {"mm": float(mm), "value": float(d.values()[key][k]), "analytic": float(d.truth[key][k]),
-            "error_pct": _num(d.errors_pct(key)[k])}
 
 
 def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]:

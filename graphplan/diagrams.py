@@ -201,16 +201,21 @@ def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str
 
 
 def exact_motion(st: Study, out: Output, turn_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Analytic s (from position 0), v, a of the output at the crank turns since position 0."""
-    phi = crank_angle(st, turn_deg)
-    kin = st.solve(np.concatenate(([st.phi0], phi)))
+    """Analytic s (from position 0), v, a of the output at the crank turns since position 0.
+    A link's angle is unwrapped along the crank's turn over a fine grid as well, so a turning link
+    keeps counting however coarse the divisions."""
+    turn_deg = np.asarray(turn_deg, dtype=float)
+    grid = np.arange(CYCLE + 1) * 360.0 / CYCLE if out.kind == "link" else np.empty(0)
+    turns = np.concatenate(([0.0], turn_deg, grid))
+    kin = st.solve(crank_angle(st, turns))
     value = out.value(kin)
-    if out.kind == "link":  # unwrap in the crank's order so a turning link keeps counting
-        order = np.argsort(np.concatenate(([-1.0], turn_deg)), kind="stable")
+    if out.kind == "link":
+        order = np.argsort(turns, kind="stable")
         unwrapped = np.empty_like(value)
         unwrapped[order] = np.unwrap(value[order])
         value = unwrapped
-    return value[1:] - value[0], out.rate(kin)[1:], out.accel(kin)[1:]
+    m = 1 + len(turn_deg)
+    return value[1:m] - value[0], out.rate(kin)[1:m], out.accel(kin)[1:m]
 
 
 def crank_angle(st: Study, turn_deg) -> np.ndarray:
