@@ -1,0 +1,132 @@
+"""Graphical differentiation and integration by chords, as on a drawing (seed 002, REFERENCE §1.5).
+
+Everything here works in drawing millimetres: abscissae x (mm along the time axis) and ordinates y
+(mm). The pole construction turns a chord's slope Δy/Δx into a height y' = H·Δy/Δx on the ordinate
+axis (the ray from the pole P, at the pole distance H left of the origin, drawn parallel to the chord);
+the scale of the derived diagram is μ_y' = μ_y / (μ_x·H). A periodic cubic spline stands for the
+French curve through the constructed points.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)  # standard scale coefficients × 10^k per mm
+
+
+def standard_scale(at_least: float) -> float:
+    """The smallest coefficient of the series 1, 2, 2.5, 4, 5 × 10^k that is ≥ ``at_least``."""
+    if not at_least > 0 or not math.isfinite(at_least):
+        raise ValueError(f"a scale must be positive, got {at_least}")
+    k = math.floor(math.log10(at_least))
+    for exp in (k - 1, k, k + 1):
+        for m in SERIES:
+            value = float(f"{m}e{exp}")
+            if value >= at_least * (1 - 1e-12):
+                return value
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def read(mm, precision: float):
+    """A ruler's reading of a length in mm: the nearest multiple of the drafting precision
+    (0 = exact). Rounded to 1e-10 mm so that 0.1-mm readings print as 27.3, not 27.300000000000004."""
+    y = np.asarray(mm, dtype=float)
+    if precision <= 0:
+        return y
+    return np.round(np.round(y / precision) * precision, 10) + 0.0  # + 0.0: no −0 readings
+
+
+def midpoints(x: np.ndarray) -> np.ndarray:
+    """Middles of the intervals between consecutive division ordinates."""
+    x = np.asarray(x, dtype=float)
+    return 0.5 * (x[:-1] + x[1:])
+
+
+def pole_heights(x: np.ndarray, y: np.ndarray, pole: float) -> np.ndarray:
+    """The heights cut on the ordinate axis by rays from the pole parallel to the chords:
+    y'_k = H·(y_{k+1} − y_k)/(x_{k+1} − x_k) — the derived ordinate at the middle of interval k."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    return pole * np.diff(y) / np.diff(x)
+
+
+def integrate_by_chords(x: np.ndarray, y_mid: np.ndarray, pole: float, y0: float) -> np.ndarray:
+    """The reverse construction (graphical integration): the height y'_k of interval k, carried to
+    the ordinate axis and joined to the pole, gives the direction of the integral curve's chord
+    over that interval: Y_{k+1} = Y_k + y'_k·(x_{k+1} − x_k)/H, starting from Y_0 = y0."""
+    steps = np.asarray(y_mid, dtype=float) * np.diff(np.asarray(x, dtype=float)) / pole
+    return y0 + np.concatenate(([0.0], np.cumsum(steps)))
+
+
+def periodic_spline(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
+    """The periodic cubic spline through (x_i, y_i), i = 0 … n−1, of the given period (n ≥ 3,
+    x increasing, x_{n−1} < x_0 + period). Second derivatives M from the cyclic system
+    h_{i−1}M_{i−1} + 2(h_{i−1} + h_i)M_i + h_iM_{i+1} = 6(d_i − d_{i−1}),  d_i = (y_{i+1} − y_i)/h_i."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    n = len(x)
+    if n < 3:
+        raise ValueError("a periodic spline needs at least 3 points")
+    xs = np.append(x, x[0] + period)
+    ys = np.append(y, y[0])
+    h = np.diff(xs)
+    d = np.diff(ys) / h
+    A = np.zeros((n, n))
+    idx = np.arange(n)
+    prev = (idx - 1) % n
+    A[idx, prev] += h[prev]
+    A[idx, idx] += 2 * (h[prev] + h)
+    A[idx, (idx + 1) % n] += h
+    M = np.linalg.solve(A, 6 * (d - d[prev]))
+    Ms = np.append(M, M[0])
+
+    def spline(q: np.ndarray) -> np.ndarray:
+        q = np.asarray(q, dtype=float)
+        u = x[0] + np.mod(q - x[0], period)
+        i = np.clip(np.searchsorted(xs, u, side="right") - 1, 0, n - 1)
+        hi = h[i]
+        a, b = xs[i + 1] - u, u - xs[i]
+        return (Ms[i] * a ** 3 + Ms[i + 1] * b ** 3) / (6 * hi) \
+            + (ys[i] / hi - Ms[i] * hi / 6) * a + (ys[i + 1] / hi - Ms[i + 1] * hi / 6) * b
+
+    return spline
+
+
+def divided_differences(x: np.ndarray, y: np.ndarray, order: int, period: float) -> np.ndarray:
+    """Periodic divided differences f[x_k, …, x_{k+order}] of samples of a periodic curve, one per k;
+    ``x`` holds one period (n points) and the abscissae continue as x_{k+n} = x_k + period."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    n = len(x)
+    k = np.arange(n)
+    xx = lambda j: x[(k + j) % n] + period * ((k + j) // n)  # noqa: E731
+    table = [y[(k + j) % n] for j in range(order + 1)]
+    for level in range(1, order + 1):
+        table = [(table[j + 1] - table[j]) / (xx(j + level) - xx(j)) for j in range(order + 1 - level)]
+    return table[0]
+
+
+def chord_error_estimate(x: np.ndarray, y: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """What a draftsman can see from the curve alone: per interval k, the error of the derived
+    ordinate at its middle, y'(mid) − Δy/Δx ≈ −h²/24·y''', and of the second derivative taken by
+    chords again, ≈ −h²/12·y'''' (both in units of y per x^1 and x^2). y''' from the third divided
+    difference over the four ordinates around the interval, y'''' from the change of y'''.
+    ``x``, ``y`` hold one period (n points, the curve periodic after removing its trend)."""
+    x = np.asarray(x, dtype=float)
+    n = len(x)
+    h = np.diff(np.append(x, x[0] + period))
+    d3 = 6 * divided_differences(np.roll(x, 1) - np.where(np.arange(n) == 0, period, 0.0),
+                                 np.roll(y, 1), 3, period)  # ordinates k−1 … k+2
+    mids = x + h / 2
+    d4 = (np.roll(d3, -1) - np.roll(d3, 1)) / (np.roll(mids, -1) - np.roll(mids, 1) + period * _wrap(n))
+    return h ** 2 / 24 * np.abs(d3), h ** 2 / 12 * np.abs(d4)
+
+
+def _wrap(n: int) -> np.ndarray:
+    """+1 period where the next-minus-previous middle crosses the period's end (first and last)."""
+    w = np.zeros(n)
+    w[0] = 1.0
+    w[-1] = 1.0
+    return w
