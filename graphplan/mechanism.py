@@ -76,6 +76,7 @@ class Mechanism:
     count: int = 12
     accel: tuple[str | int | float, ...] = ()
     force_phi: float | None = None  # crank angle of the force analysis, deg from position 0
+    working_stroke: str = "slow"    # which stroke of the output is the working one: slow, fast, to_max, to_min
     forces: tuple[Force, ...] = ()
     g: float = 9.81
     params: dict[str, float] = field(default_factory=dict)

@@ -23,7 +23,7 @@ _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilo
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
          "mass", "inertia", "com"}
-_POSITIONS = {"count", "start", "accel", "output", "force_phi_deg"}
+_POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
@@ -148,6 +148,7 @@ class _Reader:
             accel=self.read_accel(positions.get("accel", [])),
             force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
                        if "force_phi_deg" in positions else None),
+            working_stroke=self.read_working(positions.get("working_stroke", "slow")),
             forces=self.read_forces(data.get("force", [])),
             g=self.number(loads.get("g", 9.81), "loads.g"),
             params=dict(self.names), derived=derived,
@@ -342,6 +343,12 @@ class _Reader:
             raise self.fail("positions.start",
                             f'must be "max", "min", "working", "idle" or a crank angle, got {value!r}')
         return self.number(value, "positions.start") % 360.0
+
+    def read_working(self, value: Any) -> str:
+        if value not in ("slow", "fast", "to_max", "to_min"):
+            raise self.fail("positions.working_stroke",
+                            f'must be "slow", "fast", "to_max" or "to_min", got {value!r}')
+        return value
 
     def read_count(self, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int) or not 2 <= value <= 3600:
