@@ -55,7 +55,9 @@ def measure(mm: float, precision: float) -> float:
 
 
 def angle_deg(z: complex) -> float:
-    """The direction of a vector, degrees in [0, 360)."""
+    """The direction of a vector, degrees in [0, 360) (0 for the zero vector)."""
+    if abs(z) == 0:
+        return 0.0
     a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
     return 0.0 if a >= 360.0 else a + 0.0
 
@@ -348,7 +350,7 @@ class _Plans:
         """Σ M_about(known) + R·arm = 0 → R = −Σ/arm (the arm measured, signed)."""
         terms = self.d.moments(links, about) + (extra or [])
         total = sum(t.value for t in terms)
-        result = -total / arm_m if arm_m else 0.0
+        result = -total / arm_m + 0.0 if arm_m else 0.0
         return MomentEquation(about_name, links, terms, unknown, arm_m / self.d.mu_l, result)
 
     def group(self, gf) -> None:
@@ -522,7 +524,7 @@ class _Plans:
         found = {key: self.measured(key, 0j - poly.end, FRAME, crank, None, o)}
         poly.side(key, poly.end, 0j)
         terms = self.d.moments((crank,), o)
-        m_b = -sum(t.value for t in terms)
+        m_b = -float(sum(t.value for t in terms))
         eq = MomentEquation(mech.crank.pivot, (crank,), terms, "M_b", 0.0, m_b)
         transferred = [t for t in terms if t.name.startswith("R")]
         arm = transferred[0].arm_mm if len(transferred) == 1 else float("nan")
@@ -545,8 +547,8 @@ def mechanism_scale(st: Study, target_mm: float = MECHANISM_MM) -> float:
 def force_scale(ks: Kinetostatics, target_mm: float = POLYGON_MM) -> float:
     """μF (N/mm, standard series) so that the largest force of the analysis is ≤ ``target_mm``."""
     biggest = max([float(np.max(np.abs(ld.force))) for ld in ks.loads]
-                  + [float(np.max(np.abs(r.force))) for r in ks.reactions.values()] + [1e-9])
-    return standard_scale(biggest / target_mm)
+                  + [float(np.max(np.abs(r.force))) for r in ks.reactions.values()] + [0.0])
+    return standard_scale(biggest / target_mm) if biggest > 0 else 1.0
 
 
 def velocity_scale(ks: Kinetostatics, target_mm: float = PLAN_MM) -> float:

@@ -138,8 +138,11 @@ def forces_table(fp) -> str:
              f"ω1 = {mech.omega1:.5g} rad/s; drafting precision {fp.precision:g} mm; μl = {fp.mu_l:g} m/mm, "
              f"μF = {fp.mu_F:g} N/mm, μv = {fp.lever.mu_v:g} (m/s)/mm", "",
              "Loads: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ counter-clockwise), external forces"]
+    if not ks.loads:
+        lines.append("  none: the scene gives no masses and no forces, so every reaction is zero")
     w = [8, 6, 11, 9]
-    lines.append(_row(["load", "link", "value", "angle, °"], w))
+    if ks.loads:
+        lines.append(_row(["load", "link", "value", "angle, °"], w))
     for ld in ks.loads:
         f, c = complex(ld.force[0]), float(ld.couple[0])
         if ld.kind == "couple":

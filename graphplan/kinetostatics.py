@@ -227,9 +227,27 @@ def _motion_direction(st: Study, link: str, local: complex, phi: Array, v: Array
     return out
 
 
+def output_distance(st: Study, kin: Kinematics) -> Array:
+    """The output's distance from position 0: |s − s0| (m) for a slide, |θ − θ0| (deg) for a rocker."""
+    out = st.output
+    if out.kind == "slide":
+        return np.abs(kin.slides[out.name].t - st.t0[out.name])
+    theta0 = solve(st.mech, st.structure, [st.phi0]).bodies[out.name].theta[0]
+    turn = np.angle(np.exp(1j * (kin.bodies[out.name].theta - theta0)))
+    return np.abs(np.degrees(turn))
+
+
+def _profile(st: Study, kin: Kinematics, profile: tuple[tuple[float, float], ...]) -> Array:
+    """The profile's factor at the output's distance from position 0 (linear between the given
+    points, the end values beyond them)."""
+    xs, fs = zip(*profile)
+    return np.interp(output_distance(st, kin), xs, fs)
+
+
 def loads(st: Study, kin: Kinematics, working: Array) -> list[Load]:
     """G = m·g (down, −y), Φ = −m·a_S at S, M_Φ = −I_S·ε, and the scene's external forces
-    (on their stroke; "oppose" = against the point's velocity). A link with a mass but no centre
+    (on their stroke, scaled by their profile over the output's distance from position 0;
+    "oppose" = against the point's velocity). A link with a mass but no centre
     of mass point carries its loads at its first point."""
     mech = st.mech
     zero = np.zeros(kin.phi_deg.shape)
@@ -258,7 +276,8 @@ def loads(st: Study, kin: Kinematics, working: Array) -> list[Load]:
             unit = -_motion_direction(st, name, local, kin.phi_deg, v)
         else:
             unit = np.exp(1j * np.radians(float(f.direction))) + 0 * zero
-        force = np.where(active, f.magnitude * unit, 0j)
+        magnitude = f.magnitude * (_profile(st, kin, f.profile) if f.profile else 1.0)
+        force = np.where(active, magnitude * unit, 0j)
         out.append(Load(f"P_{f.point}", name, "external", f.point, x, force, zero, v, body.omega))
     return out
 

@@ -54,12 +54,15 @@ class Crank:
 class Force:
     """An external force on a point: a magnitude, the strokes it acts on, and its direction.
 
-    ``direction`` is "oppose" (against the point's velocity) or an angle in degrees.
+    ``direction`` is "oppose" (against the point's velocity) or an angle in degrees. ``profile``
+    (optional) scales the magnitude by a factor interpolated linearly over the output's distance
+    from position 0 (m for a slide, degrees for a rocker): pairs (distance, factor).
     """
     point: str
     magnitude: float
     stroke: str = "working"  # "working", "idle" or "both"
     direction: str | float = "oppose"
+    profile: tuple[tuple[float, float], ...] = ()
 
 
 @dataclass

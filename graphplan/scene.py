@@ -25,7 +25,7 @@ _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "
          "mass", "inertia", "com"}
 _POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
-_FORCE = {"point", "magnitude", "stroke", "direction"}
+_FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
 
 
@@ -382,8 +382,22 @@ class _Reader:
                 direction = self.number(direction, f"{key}.direction")
             out.append(Force(point=self.name(f["point"], f"{key}.point"),
                              magnitude=self.number(f["magnitude"], f"{key}.magnitude", positive=True),
-                             stroke=stroke, direction=direction))
+                             stroke=stroke, direction=direction,
+                             profile=self.read_profile(f.get("profile", []), f"{key}.profile")))
         return tuple(out)
+
+    def read_profile(self, raw: Any, key: str) -> tuple[tuple[float, float], ...]:
+        """[[distance, factor], …] with the distances increasing."""
+        if not isinstance(raw, list):
+            raise self.fail(key, "must be a list of [distance, factor] pairs")
+        pairs = []
+        for p in raw:
+            if not isinstance(p, list) or len(p) != 2:
+                raise self.fail(key, "must be a list of [distance, factor] pairs")
+            pairs.append((self.number(p[0], key), self.number(p[1], key)))
+        if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
+            raise self.fail(key, "the distances must increase")
+        return tuple(pairs)
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: str(data[k]) for k in ("title", "title_en", "designation") if k in data}

@@ -321,3 +321,25 @@ def test_forces_output_is_deterministic(capsys):
 def test_forces_bad_input_one_line(capsys, argv, words):
     code, out, err = run(capsys, "forces", str(ROOT / "examples" / "shaper.toml"), *argv)
     assert code == 2 and out == "" and err.count("\n") == 1 and words in err
+
+
+def test_force_profile_over_the_output_distance():
+    """A cutting force that grows linearly with the ram's distance from position 0."""
+    text = (ROOT / "examples" / "shaper.toml").read_text(encoding="utf-8")
+    text = text.replace('direction = "oppose"', 'direction = "oppose"\nprofile = [[0.0, 0.0], [0.5, 1.0]]')
+    st = scene_study(text)
+    ks = full_turn(st, 90)
+    p = next(ld for ld in ks.loads if ld.name == "P_C")
+    s = np.abs(ks.kin.point("C")[0].real - ks.kin.point("C")[0][0].real)
+    expected = np.where(ks.working, 5800.0 * np.minimum(s / 0.5, 1.0), 0.0)
+    assert np.allclose(np.abs(p.force), expected, atol=1e-6)
+    assert np.max(np.abs(ks.balancing - ks.power())) <= 1e-10 * np.max(np.abs(ks.balancing))
+
+
+def test_bad_profile_is_one_line(capsys, tmp_path):
+    text = (ROOT / "examples" / "shaper.toml").read_text(encoding="utf-8")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace('direction = "oppose"', 'direction = "oppose"\nprofile = [[0.2, 1], [0.1, 0]]'),
+                   encoding="utf-8")
+    code, out, err = run(capsys, "forces", str(bad))
+    assert code == 2 and "force[0].profile" in err and err.count("\n") == 1
