@@ -76,7 +76,7 @@ class Labeler:
                 boxes.append(p.bounds())
             elif p.kind in ("point", "circle", "arc"):
                 boxes.append(p.bounds() if p.kind != "point" else
-                             (p.points[0][0] - 0.8, p.points[0][1] - 0.8, p.points[0][0] + 0.8, p.points[0][1] + 0.8))
+                             (p.points[0][0] - 1.3, p.points[0][1] - 1.3, p.points[0][0] + 1.3, p.points[0][1] + 1.3))
         return lines, boxes
 
     def place(self, anchor: complex, text: str, size: float = 2.5, prefer: complex = 1j,

@@ -343,3 +343,20 @@ def test_bad_profile_is_one_line(capsys, tmp_path):
                    encoding="utf-8")
     code, out, err = run(capsys, "forces", str(bad))
     assert code == 2 and "force[0].profile" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_drawings_of_every_dyad_kind(kind):
+    """Each group's scheme, its force polygon and the lever are drawn and render."""
+    from graphplan import forcedraw, svg
+    make, point = KINDS[kind]
+    st = scene_study(loaded(make()[0], point, 30.0))
+    fp = construct(st, 40.0, precision=0.5)
+    recs = forcedraw.records(fp)
+    assert {f"group {g.label}" for g in fp.groups} <= set(recs) and "lever" in recs
+    for g in fp.groups:
+        drawn = {s.name for s in g.sides}
+        assert set(g.reactions) <= drawn                 # every reaction is a side of its polygon
+    page, w, h = svg.page_for(forcedraw.drawing(fp))
+    text = svg.render(page, w, h)
+    assert text.count("<line") > 20 and "R01" in text
