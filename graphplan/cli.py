@@ -91,6 +91,7 @@ def build_parser() -> argparse.ArgumentParser:
 COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.diagrams",
     "graphplan.bench",
+    "graphplan.forces",
 )
 
 

@@ -54,12 +54,15 @@ class Crank:
 class Force:
     """An external force on a point: a magnitude, the strokes it acts on, and its direction.
 
-    ``direction`` is "oppose" (against the point's velocity) or an angle in degrees.
+    ``direction`` is "oppose" (against the point's velocity) or an angle in degrees. ``profile``
+    (optional) scales the magnitude by a factor interpolated linearly over the output's distance
+    from position 0 (m for a slide, degrees for a rocker): pairs (distance, factor).
     """
     point: str
     magnitude: float
     stroke: str = "working"  # "working", "idle" or "both"
     direction: str | float = "oppose"
+    profile: tuple[tuple[float, float], ...] = ()
 
 
 @dataclass
@@ -76,6 +79,7 @@ class Mechanism:
     count: int = 12
     accel: tuple[str | int | float, ...] = ()
     force_phi: float | None = None  # crank angle of the force analysis, deg from position 0
+    working_stroke: str = "slow"    # which stroke of the output is the working one: slow, fast, to_max, to_min
     forces: tuple[Force, ...] = ()
     g: float = 9.81
     params: dict[str, float] = field(default_factory=dict)

@@ -23,9 +23,9 @@ _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilo
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
          "mass", "inertia", "com"}
-_POSITIONS = {"count", "start", "accel", "output", "force_phi_deg"}
+_POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
-_FORCE = {"point", "magnitude", "stroke", "direction"}
+_FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
 
 
@@ -148,6 +148,7 @@ class _Reader:
             accel=self.read_accel(positions.get("accel", [])),
             force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
                        if "force_phi_deg" in positions else None),
+            working_stroke=self.read_working(positions.get("working_stroke", "slow")),
             forces=self.read_forces(data.get("force", [])),
             g=self.number(loads.get("g", 9.81), "loads.g"),
             params=dict(self.names), derived=derived,
@@ -343,6 +344,12 @@ class _Reader:
                             f'must be "max", "min", "working", "idle" or a crank angle, got {value!r}')
         return self.number(value, "positions.start") % 360.0
 
+    def read_working(self, value: Any) -> str:
+        if value not in ("slow", "fast", "to_max", "to_min"):
+            raise self.fail("positions.working_stroke",
+                            f'must be "slow", "fast", "to_max" or "to_min", got {value!r}')
+        return value
+
     def read_count(self, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int) or not 2 <= value <= 3600:
             raise self.fail("positions.count", f"must be a whole number from 2 to 3600, got {value!r}")
@@ -375,8 +382,22 @@ class _Reader:
                 direction = self.number(direction, f"{key}.direction")
             out.append(Force(point=self.name(f["point"], f"{key}.point"),
                              magnitude=self.number(f["magnitude"], f"{key}.magnitude", positive=True),
-                             stroke=stroke, direction=direction))
+                             stroke=stroke, direction=direction,
+                             profile=self.read_profile(f.get("profile", []), f"{key}.profile")))
         return tuple(out)
+
+    def read_profile(self, raw: Any, key: str) -> tuple[tuple[float, float], ...]:
+        """[[distance, factor], …] with the distances increasing."""
+        if not isinstance(raw, list):
+            raise self.fail(key, "must be a list of [distance, factor] pairs")
+        pairs = []
+        for p in raw:
+            if not isinstance(p, list) or len(p) != 2:
+                raise self.fail(key, "must be a list of [distance, factor] pairs")
+            pairs.append((self.number(p[0], key), self.number(p[1], key)))
+        if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
+            raise self.fail(key, "the distances must increase")
+        return tuple(pairs)
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: str(data[k]) for k in ("title", "title_en", "designation") if k in data}
