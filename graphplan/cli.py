@@ -92,6 +92,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.diagrams",
     "graphplan.bench",
     "graphplan.forces",
+    "graphplan.sheet",
 )
 
 

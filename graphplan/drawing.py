@@ -66,6 +66,17 @@ class Primitive:
         return min(xs), min(ys), max(xs), max(ys)
 
 
+# characters osifont lacks, replaced on the drawing (records keep the real text)
+LETTERING = {"−": "-", "→": "->", "∑": "Σ", "√": "sqrt", "∆": "Δ", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t",
+             "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9"}
+_LETTERING = str.maketrans(LETTERING)
+
+
+def lettering(text: str) -> str:
+    """The text as drawn with the GOST font (osifont): missing characters replaced."""
+    return text.translate(_LETTERING)
+
+
 def text_width(text: str, size: float) -> float:
     """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps."""
     narrow = sum(1 for c in text if c in "il1.,:;|'!()[] ")

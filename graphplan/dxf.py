@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import io
 
-from .drawing import DASHED_ROLES, LAYERS, Primitive, Record, arrowhead
+from .drawing import DASHED_ROLES, LAYERS, Primitive, Record, arrowhead, lettering
 
 # GOST 2.303 patterns in mm: (total length, dash, −gap, dot, −gap …)
 LINETYPES = {
@@ -86,7 +86,7 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
         elif k == "point":
             msp.add_circle(prim.points[0], 1.0 if prim.role == "joint" else 0.6, dxfattribs=attribs)
         elif k == "text":
-            text = msp.add_text(prim.text, height=prim.size,
+            text = msp.add_text(lettering(prim.text), height=prim.size,
                                 dxfattribs={"layer": prim.layer, "style": "GOST"})
             text.set_placement(prim.points[0], align=align[prim.anchor])
     stream = io.StringIO()

@@ -10,6 +10,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
+
 from .drawing import Record, text_width
 from .errors import GraphplanError
 from .layout import Block, Placed, declutter, place
@@ -200,3 +202,49 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     path = sheet.write(args.output, args.text_as_paths)
     print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
     return 0
+
+
+# -- the force sheet (issue 8): groups with their force plans, the lever, the results, the turn --------
+
+FORCE_WORDS = {
+    "uk": {"group": "Група", "polygon": "План сил групи", "table": "Реакції групи", "lever": "Важіль Жуковського",
+           "results": "Зрівноважувальний момент", "moment": "Зрівноважувальний момент за оберт",
+           "hodograph": "Годограф реакції", "subtitle": "Силовий аналіз", "at": "φ ="},
+    "en": {"group": "Group", "polygon": "Force plan of group", "table": "Reactions of group",
+           "lever": "Zhukovsky lever", "results": "Balancing moment", "moment": "Balancing moment over a turn",
+           "hodograph": "Hodograph of reaction", "subtitle": "Force analysis", "at": "φ ="},
+}
+
+
+def _force_caption(name: str, lang: str) -> str:
+    w = FORCE_WORDS[lang]
+    kind, _, rest = name.partition(" ")
+    return {"group": f"{w['group']} {rest}", "polygon": f"{w['polygon']} {rest}",
+            "table": f"{w['table']} {rest}", "lever": w["lever"], "results": w["results"],
+            "moment": w["moment"], "hodograph": f"{w['hodograph']} {rest}"}.get(kind, name)
+
+
+def build_forces_sheet(st: Study, f: Form, args: argparse.Namespace) -> Sheet:
+    """Sheet 2: every group with its force plan and reactions table, the lever, the results and the
+    balancing moment and reaction hodographs over a turn."""
+    from . import forcecharts, forcedraw, forceplans, kinetostatics
+    lang = args.lang
+    phi = kinetostatics.at_scene_angle(st)
+    fp = forceplans.construct(st, phi, precision=args.precision)
+    drawn = forcedraw.records(fp)
+    turn = forcecharts.turn(st)
+    charts = forcecharts.records(turn)
+    order = [k for k in drawn if not k.startswith("table")] + [k for k in drawn if k.startswith("table")]
+    blocks = [Block(name, (lambda k, r=rec, n=name: captioned(r, _force_caption(n, lang))))
+              for name, rec in list((k, drawn[k]) for k in order) + list(charts.items())]
+    w = FORCE_WORDS[lang]
+    head = notes(st, [f"μl = {fp.mu_l:g} m/mm" if lang == "en" else f"μl = {fp.mu_l:g} м/мм",
+                      f"μF = {fp.mu_F:g} N/mm" if lang == "en" else f"μF = {fp.mu_F:g} Н/мм"],
+                 [f"{w['at']} {float(np.atleast_1d(phi)[0]):.2f}°"], lang)
+    blocks.insert(0, Block("notes", lambda k, r=head: r))
+    tf = fields(st, lang, f"μl = {fp.mu_l:g}", 2, 2)
+    tf["subtitle"] = w["subtitle"]
+    return compose(f, blocks, tf, lang, f"{st.mech.title} — {w['subtitle']}")
+
+
+BUILDERS["forces"] = build_forces_sheet

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from .drawing import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead
+from .drawing import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -95,7 +95,7 @@ def _elements(dwg, prim: Primitive, h: float):
         yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
     elif k == "text":
         anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-        yield dwg.text(prim.text, insert=_xy(prim.points[0], h), font_size=_f(prim.size),
+        yield dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
                        font_family=FONT, text_anchor=anchor, fill="black")
 
 
@@ -139,7 +139,7 @@ def text_outline(prim: Primitive, height: float) -> str:
     """The lettering of a text primitive as one SVG path (matplotlib TextPath), in sheet mm."""
     from matplotlib.textpath import TextPath
 
-    tp = TextPath((0, 0), prim.text, size=prim.size, prop=_font())
+    tp = TextPath((0, 0), lettering(prim.text), size=prim.size, prop=_font())
     ext = tp.get_extents()
     shift = {"start": 0.0, "middle": -ext.width / 2 - ext.x0, "end": -ext.width - ext.x0}[prim.anchor]
     x0, y0 = prim.points[0]
