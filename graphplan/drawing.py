@@ -79,6 +79,7 @@ def lettering(text: str) -> str:
 
 def text_width(text: str, size: float) -> float:
     """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps."""
+    text = lettering(text)
     narrow = sum(1 for c in text if c in "il1.,:;|'!()[] ")
     return size * (0.62 * (len(text) - narrow) + 0.3 * narrow)
 
