@@ -97,7 +97,7 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
             # alternate sides of the preferred direction: 0, +1, −1, +2, −2, …
             j = (k + 1) // 2 * (1 if k % 2 else -1)
             u = pref * complex(math.cos(2 * math.pi * j / STEPS), math.sin(2 * math.pi * j / STEPS))
-            for extra in (0.0, 1.5):
+            for extra in (0.0, 1.5, 4.0):
                 # the box lies wholly on the side u of the anchor, ``gap`` clear of it
                 m = max(abs(u.real), abs(u.imag))
                 g = req.gap + extra

@@ -181,7 +181,9 @@ class Entry:
 
 
 @dataclass
-class Warning_:
+class PlanWarning:
+    """An ill-conditioned construction, with the angle that makes it so (for a dead centre: how
+    far the crank is from the extreme position)."""
     plan: str        # "position", "velocity", "acceleration"
     group: str
     kind: str        # "lines", "arcs", "dead centre"
@@ -436,7 +438,7 @@ class Plan:
         self.record = Record()
         self.labels: list[LabelRequest] = []
         self.named: dict[str, complex] = {}
-        self.warnings: list[Warning_] = []
+        self.warnings: list[PlanWarning] = []
         self.found: list[tuple[str, str, complex]] = []   # (group, point, constructed plan point)
         self.ends = {"n": 0, "k": 0}
         self.segments: list[tuple[complex, complex]] = []
@@ -535,7 +537,7 @@ class Plan:
         angle = crossing_angle(e1.direction, e2.direction)
         if angle < SMALL_ANGLE_DEG:
             slip = 0.5 / math.sin(math.radians(max(angle, 1e-9)))
-            self.warnings.append(Warning_(
+            self.warnings.append(PlanWarning(
                 self.kind, group, "lines", angle,
                 f"{self.kind} plan, {group} ({step}): the direction lines cross at {angle:.1f}° "
                 f"(< {SMALL_ANGLE_DEG:g}°); a 0.5 mm slip moves {what} by {slip:.1f} mm"))
@@ -644,7 +646,7 @@ class VelocityPlan(Plan):
         groups = sorted({g for g, _ in stopped}, key=order.index)
         names = ", ".join(f"v_{n}" for _, n in stopped)
         verb = "vanishes" if len(stopped) == 1 else "vanish"
-        self.warnings.append(Warning_(
+        self.warnings.append(PlanWarning(
             "velocity", " ".join(groups), "dead centre", angle,
             f"dead centre of {' and '.join(groups)} at φ = {phi:.2f}°{near}: {names} {verb}; "
             "their percent errors are left out"))
@@ -1021,7 +1023,7 @@ class PositionPlans:
     layout: Layout
     velocity: VelocityPlan
     acceleration: AccelerationPlan | None
-    warnings: list[Warning_]
+    warnings: list[PlanWarning]
 
 
 @dataclass
@@ -1209,7 +1211,7 @@ def build_plans(st: Study, count: int | None = None, accel: Sequence[str | int |
             for d in st.structure.dyads:
                 acc.group(d)
             acc.finish()
-        warnings = [Warning_("position", g, "arcs", angle,
+        warnings = [PlanWarning("position", g, "arcs", angle,
                              f"position plan, {g}: {what} at {angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
                              "nearly tangent")
                     for g, what, angle in lay.angles if angle < SMALL_ANGLE_DEG]

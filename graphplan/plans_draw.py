@@ -43,8 +43,8 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
     width = None if thick else 0.3
     carriers = guide_carriers(sc)
     for name, link in mech.links.items():
-        joints = [j for j in link.joints]
-        if name in carriers and name != FRAME:
+        joints = list(link.joints)
+        if name in carriers:
             # a slotted link: its guide line over its joints and the blocks sliding in it
             for slider in carriers[name]:
                 g = mech.guides[mech.links[slider].slides_on]
@@ -53,12 +53,11 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 along = [((pts[p] - base) * u.conjugate()).real
                          for p in list(joints) + list(mech.links[slider].local)]
                 lo, hi = min(along) - 4.0, max(along) + 4.0
-                if joints and all(sc.fixed(j) or True for j in joints):
-                    rec.segment(_pt(base + lo * u), _pt(base + hi * u), role=role, width=width,
-                                layer="mechanism", step=step)
+                rec.segment(_pt(base + lo * u), _pt(base + hi * u), role=role, width=width,
+                            layer="mechanism", step=step)
         if link.slides_on is not None and len(joints) <= 1:
             if thick:
-                centre = pts[joints[0]] if joints else lay.poses[name].at(next(iter(link.local)) and 0j)
+                centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
                 u = lay.poses[name].direction(0.0)
                 w, h = BLOCK
                 corners = [centre + u * complex(sx * w / 2, sy * h / 2) for sx, sy in

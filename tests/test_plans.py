@@ -409,3 +409,26 @@ def test_plans_output_is_deterministic(capsys):
     a = run(capsys, "plans", str(ROOT / "examples" / "slotter.toml"), "--json")[1]
     b = run(capsys, "plans", str(ROOT / "examples" / "slotter.toml"), "--json")[1]
     assert a == b
+
+
+def test_accel_angles_and_indices():
+    st = example("crank_slider")
+    plans = build_plans(st, accel=["30", "#3", 45.0, 7])
+    assert plans.accel_keys == [1, 3, 7, 12]
+    extra = plans.at(12)
+    assert extra.index is None and extra.phi == pytest.approx(45.0)
+    assert plans.at(12).velocity.entries["B"].analytic == pytest.approx(
+        abs(st.solve([45.0]).point("B")[1][0]))
+
+
+def test_crank_with_angular_acceleration_is_exact():
+    """ε1 ≠ 0: a_A = a^n_AO + a^τ_AO, both laid off; still exact with precision 0."""
+    text = (ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8")
+    text = text.replace("omega = 293.07          # rad/s, counter-clockwise",
+                        "omega = 293.07\nepsilon = -20000")
+    st = scene_study(text)
+    assert st.mech.crank.epsilon == -20000
+    plans = build_plans(st, precision=0, accel=every_position(st))
+    check_exact(plans)
+    roles = {it.role for it in plans.acceleration_records[0].items}
+    assert "tangential" in roles and "normal" in roles
