@@ -158,7 +158,7 @@ class Layout:
     index: int | None
     phi: float
     poses: dict[str, Pose]
-    angles: list[tuple[str, str, float]] = field(default_factory=list)  # (group, what, angle deg)
+    angles: list[tuple[str, str, float, str]] = field(default_factory=list)  # (group, what, deg, kind)
     drawn: list[tuple] = field(default_factory=list)                    # construction marks
 
 
@@ -311,7 +311,8 @@ def position_rrr(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     C = circle_circle(X1, la, X3, lb, branch)
     lay.poses[d.a] = pose_from_two(sc, d.a, p1, X1, c, C, k)
     lay.poses[d.b] = pose_from_two(sc, d.b, p3, X3, c, C, k)
-    lay.angles.append((d.label, f"the arcs about {p1} and {p3} meeting at {c}", crossing_angle(C - X1, C - X3)))
+    lay.angles.append((d.label, f"the arcs about {p1} and {p3} meeting at {c}", crossing_angle(C - X1, C - X3),
+                       "arcs"))
     lay.drawn += [("arc", X1, la, C, d.label), ("arc", X3, lb, C, d.label)]
 
 
@@ -328,7 +329,7 @@ def position_rrp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     lay.poses[d.b] = Pose(C, sc.local(d.b, c), lay.poses[guide.body].theta + guide.angle, k)
     # the arc crosses the line at 90° − (angle between the radius and the line)
     lay.angles.append((d.label, f"the arc about {p1} meeting the guide at {c}",
-                       90.0 - crossing_angle(C - X1, g)))
+                       90.0 - crossing_angle(C - X1, g), "arcs"))
     lay.drawn += [("arc", X1, la, C, d.label), ("guide", G, g, C, d.label)]
 
 
@@ -362,7 +363,7 @@ def position_prp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     for link, pair in ((d.a, d.outer_a), (d.b, d.outer_b)):
         guide = sc.mech.guides[pair.guide]
         lay.poses[link] = Pose(C, sc.local(link, c), lay.poses[guide.body].theta + guide.angle, k)
-    lay.angles.append((d.label, f"the guides crossing at {c}", crossing_angle(g1, g2)))
+    lay.angles.append((d.label, f"the guides crossing at {c}", crossing_angle(g1, g2), "lines"))
     lay.drawn += [("guide", G1, g1, C, d.label), ("guide", G2, g2, C, d.label)]
 
 
@@ -381,7 +382,8 @@ def position_rpp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     Y = line_line(G, g, XA - q, dd)
     lay.poses[d.b] = Pose(Y, sc.local(d.b, ref), th_b, k)
     lay.poses[d.a] = Pose(XA, sc.local(d.a, pa), th_b + slot.angle, k)
-    lay.angles.append((d.label, f"the slot through {pa} crossing the yoke's guide", crossing_angle(g, dd)))
+    lay.angles.append((d.label, f"the slot through {pa} crossing the yoke's guide", crossing_angle(g, dd),
+                       "lines"))
     lay.drawn += [("guide", G, g, Y, d.label), ("guide", XA - q, dd, XA, d.label)]
 
 
@@ -524,6 +526,11 @@ class Plan:
     def solve(self, group: str, what: str, e1: Equation, e2: Equation, step: str) -> complex:
         """Lay off both equations' known components, draw their direction lines; the unknown plan
         point is where the lines cross. A warning when they cross at a small angle."""
+        angle = crossing_angle(e1.direction, e2.direction)
+        if angle < 1e-9:
+            raise GraphplanError(f"{self.kind} plan at φ = {self.lay.phi:.4g}°, {group}: the direction "
+                                 f"lines of {step} are parallel (a toggle position); the plan has no "
+                                 "intersection there", self.sc.mech.source)
         x = line_line(e1.end, e1.direction, e2.end, e2.direction)
         for eq in (e1, e2):
             at = eq.base
@@ -534,7 +541,6 @@ class Plan:
                 at = at + vec
             self.direction_line(eq.end, x, eq.direction, step)
             self.vector(eq.end, x, eq.unknown_role, step)
-        angle = crossing_angle(e1.direction, e2.direction)
         if angle < SMALL_ANGLE_DEG:
             slip = 0.5 / math.sin(math.radians(max(angle, 1e-9)))
             self.warnings.append(PlanWarning(
@@ -1211,10 +1217,10 @@ def build_plans(st: Study, count: int | None = None, accel: Sequence[str | int |
             for d in st.structure.dyads:
                 acc.group(d)
             acc.finish()
-        warnings = [PlanWarning("position", g, "arcs", angle,
-                             f"position plan, {g}: {what} at {angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
-                             "nearly tangent")
-                    for g, what, angle in lay.angles if angle < SMALL_ANGLE_DEG]
+        warnings = [PlanWarning("position", g, kind, angle,
+                                f"position plan, {g}: {what} at {angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
+                                + ("nearly tangent" if kind == "arcs" else "nearly parallel"))
+                    for g, what, angle, kind in lay.angles if angle < SMALL_ANGLE_DEG]
         warnings += vel.warnings + (acc.warnings if acc else [])
         results.append(PositionPlans(key, index, float(phi), lay, vel, acc, warnings))
     extremes = [construct_position(sc, float(e), ml, -1 - j) for j, e in enumerate(st.extremes)]

@@ -6,12 +6,11 @@ from __future__ import annotations
 import cmath
 import math
 
-import numpy as np
 
 from .drawing import Record
 from .labels import LabelRequest, place_labels
 from .mechanism import FRAME
-from .plans import Layout, Plans, Scheme, unit, where
+from .plans import Layout, Plans, Scheme, where
 
 ARC_HALF = 5.0       # mm of arc drawn each side of a construction point (a "засічка")
 BLOCK = (9.0, 5.0)   # slider block drawn on the thick positions, mm
