@@ -6,7 +6,6 @@ from __future__ import annotations
 import cmath
 import math
 
-
 from .drawing import Record
 from .labels import LabelRequest, place_labels
 from .mechanism import FRAME

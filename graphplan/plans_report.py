@@ -190,6 +190,7 @@ def svg_documents(plans: Plans, lang: str = "en") -> dict[str, str]:
     docs: dict[str, str] = {}
 
     def put(name: str, rec: Record, caption: str) -> None:
+        caption = caption[:1].upper() + caption[1:]
         page, w, h = page_for(captioned(rec, caption))
         docs[name] = render(page, w, h, caption)
 

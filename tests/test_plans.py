@@ -432,3 +432,15 @@ def test_crank_with_angular_acceleration_is_exact():
     check_exact(plans)
     roles = {it.role for it in plans.acceleration_records[0].items}
     assert "tangential" in roles and "normal" in roles
+
+
+def test_python_api_for_the_sheet():
+    plans = build_plans(example("shaper"), targets=Targets().scaled(0.6))
+    doc = plans.to_json()
+    assert json.loads(json.dumps(doc))["positions"][1]["acceleration"]["k_A3A2"]["mm"] > 0
+    text = plans.table("uk")
+    assert "Прискорення в положенні 1" in text and "μl =" in text
+    assert set(plans.velocity_records) == set(range(12)) and set(plans.acceleration_records) == {1}
+    for rec in [plans.position_record, *plans.velocity_records.values()]:
+        x0, y0, x1, y1 = rec.bounds()
+        assert x1 - x0 < 0.6 * 450 + 60 and y1 - y0 < 0.6 * 450 + 60
