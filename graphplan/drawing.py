@@ -55,9 +55,19 @@ class Primitive:
     def bounds(self) -> tuple[float, float, float, float]:
         xs = [p[0] for p in self.points]
         ys = [p[1] for p in self.points]
-        if self.kind in ("circle", "arc"):
+        if self.kind == "circle" or (self.kind == "arc" and (self.angles[1] - self.angles[0]) % 360.0 == 0):
             (cx, cy), r = self.points[0], self.radius
             return cx - r, cy - r, cx + r, cy + r
+        if self.kind == "arc":
+            # the ends and whichever of the four axis points (0°, 90°, 180°, 270°) the arc passes
+            (cx, cy), r = self.points[0], self.radius
+            a0 = self.angles[0]
+            sweep = (self.angles[1] - a0) % 360.0
+            angles = [a0, a0 + sweep] + [q for q in (0.0, 90.0, 180.0, 270.0, 360.0, 450.0, 540.0, 630.0)
+                                         if a0 % 360.0 <= q <= a0 % 360.0 + sweep]
+            xs = [cx + r * math.cos(math.radians(a)) for a in angles]
+            ys = [cy + r * math.sin(math.radians(a)) for a in angles]
+            return min(xs), min(ys), max(xs), max(ys)
         if self.kind == "text":
             x, y = self.points[0]
             w = text_width(self.text, self.size)

@@ -64,3 +64,28 @@ def rpp(r, alpha, beta, omega):
             f"guide = {{ through = [0, 0], angle_deg = {alpha} }}\npoints = {{ S3 = [0.02, 0.01] }}\n"
             "[positions]\nstart = 0\n")
     return text, abs(math.sin(math.radians(alpha))) > 1e-3
+
+
+def rrp_moving(r, d, l2, l3, l4, alpha, omega, branch):
+    """A four-bar whose rocker carries a guide (angle α to the rocker); a rod A–C from the crank pin
+    drives a slider C along that turning guide: II(4-5) RRP on a moving guide (Coriolis on 5)."""
+    text, ok = rrr(r, d, l2, l3, omega, 1)
+    text = text.replace("[branch]", f"guide = {{ through = [0, 0], angle_deg = {alpha} }}\n"
+                        f"[[link]]\nname = \"AC\"\njoints = [\"A\", \"C\"]\nlength = {l4}\n"
+                        "points = { S4 = [0.1, 0.02] }\n"
+                        "[[link]]\nname = \"5\"\njoints = [\"C\"]\nslides_on = \"O2B\"\n[branch]")
+    text = text.replace("[branch]\nB = 1\n", f"[branch]\nB = 1\nC = {branch}\n")
+    return text, ok and l4 > d + r
+
+
+def rpp_moving(r, d, l2, l3, alpha, beta, omega):
+    """A four-bar whose rocker carries a guide (angle β to the rocker) on which a yoke slides; the
+    block at the crank pin A slides in the yoke's slot (angle α to the yoke): II(4-5) RPP on a
+    moving guide (Coriolis in both sliding pairs)."""
+    text, ok = rrr(r, d, l2, l3, omega, 1)
+    text = text.replace("[branch]", f"guide = {{ through = [0, 0], angle_deg = {beta} }}\n"
+                        "[[link]]\nname = \"6\"\njoints = [\"A\"]\nslides_on = \"yoke\"\n"
+                        "[[link]]\nname = \"yoke\"\njoints = []\nref = \"Y\"\nslides_on = \"O2B\"\n"
+                        f"guide = {{ through = [0, 0], angle_deg = {alpha} }}\n"
+                        "points = { S7 = [0.02, 0.01] }\n[branch]")
+    return text, ok and abs(math.sin(math.radians(alpha))) > 1e-3
