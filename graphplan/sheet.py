@@ -16,6 +16,7 @@ from .drawing import Record, text_width
 from .errors import GraphplanError
 from .layout import Block, Placed, declutter, place
 from .positions import Study
+from .plans_report import captioned
 from .sheetform import Form, form, frame, table, title_block, title_block_box
 
 WORDS = {
@@ -24,14 +25,14 @@ WORDS = {
            "acc_table": "Таблиця 2. Прискорення, м/с²; ε, рад/с², положення", "graphical": "графічно",
            "analytic": "аналітично", "error": "δ, %", "quantity": "величина", "structure": "Структурна формула",
            "mobility": "Ступінь рухомості", "scales": "Масштабні коефіцієнти", "precision": "Точність креслення",
-           "forces": "Силовий аналіз", "max_error": "Найбільша похибка планів швидкостей",
+           "forces": "Силовий аналіз", "max_error": "Найбільша похибка планів швидкостей (вектори від 20 мм)",
            "subtitle": "Кінематичний аналіз"},
     "en": {"positions": "Position plan", "velocity": "Velocity plan", "acceleration": "Acceleration plan",
            "position": "position", "diagrams": "Kinematic diagrams", "vel_table": "Table 1. Velocities, m/s; ω, rad/s",
            "acc_table": "Table 2. Accelerations, m/s²; ε, rad/s², position", "graphical": "graphical",
            "analytic": "analytic", "error": "δ, %", "quantity": "quantity", "structure": "Structural formula",
            "mobility": "Mobility", "scales": "Scale coefficients", "precision": "Drafting precision",
-           "forces": "Force analysis", "max_error": "Largest error of the velocity plans",
+           "forces": "Force analysis", "max_error": "Largest error of the velocity plans (vectors from 20 mm)",
            "subtitle": "Kinematic analysis"},
 }
 FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
@@ -70,14 +71,6 @@ class Sheet:
 
     def _repr_svg_(self) -> str:  # Jupyter
         return self.svg()
-
-
-def captioned(rec: Record, caption: str, size: float = 3.5) -> Record:
-    """A block with its caption written above its top-left corner."""
-    out = Record(rec.title, list(rec.items), dict(rec.scales))
-    x0, _, x1, y1 = rec.bounds()
-    out.label((x0, y1 + 2.5), caption, size=size, layer="labels")
-    return out
 
 
 def fmt(v: float | None, digits: int = 4) -> str:
@@ -248,3 +241,97 @@ def build_forces_sheet(st: Study, f: Form, args: argparse.Namespace) -> Sheet:
 
 
 BUILDERS["forces"] = build_forces_sheet
+
+
+# -- the kinematics sheet (the main job) -------------------------------------------------------------
+
+FACTORS = (1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32)
+FILL = 0.85  # blocks covering more of the free field than this are not even tried
+
+
+def _accel_arg(values: list[str] | None):
+    return None if not values else [v if v.startswith("#") else float(v) for v in values]
+
+
+def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
+                      width: float = 780.0) -> tuple[list[Block], str]:
+    """The kinematics sheet's blocks at size factor k: notes, the position plan, the diagrams,
+    the acceleration plans, the tables and the velocity plans; and the sheet's length scale."""
+    from .diagrams import chord_diagrams
+    from .plans import build_plans
+    from .scales import Targets, format_scale
+    lang = args.lang
+    w = WORDS[lang]
+    plans = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
+                        targets=Targets().scaled(k))
+    doc = plans.to_json()
+    diag = chord_diagrams(st, divisions=args.positions or st.mech.count, L=240.0 * k,
+                          precision=args.precision, lang=lang, height=70.0 * k)
+    scales = [format_scale(n, plans.scales[n]) for n in ("mu_l", "mu_v", "mu_a")]
+    scales += [f"{sym} = {diag.record.scales[key]:.4g}" for key, sym in (("mu_t", "μt"),) if key in diag.record.scales]
+    errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
+            if e.get("error_pct") is not None and (e.get("mm") or 0) >= 20.0]
+    extra = [f"{w['precision']}: {args.precision:g} мм" if lang == "uk" else f"{w['precision']}: {args.precision:g} mm"]
+    if errs:
+        extra.append(f"{w['max_error']}: {max(errs):.2f} %")
+    blocks = [Block("notes", lambda _k, r=notes(st, scales, extra, lang): r)]
+    blocks.append(Block("position plan", lambda _k: captioned(
+        plans.position_record, f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}")))
+    blocks.append(Block("diagrams", lambda _k: diag.record_for(lang)))
+    cells = [captioned(plans.velocity_records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
+             for p in plans.positions]
+    blocks.append(Block("velocity plans", lambda _k: flow(cells, width)))
+    for p in plans.positions:
+        if p.acceleration is not None:
+            blocks.append(Block(f"acceleration plan {p.key}", lambda _k, p=p: captioned(
+                plans.acceleration_records[p.key],
+                f"{w['acceleration']}, {w['position']} {p.index if p.index is not None else ''} "
+                f"(φ = {p.phi % 360:.1f}°), {format_scale('mu_a', plans.mu_a)}")))
+    blocks.append(Block("velocity table", lambda _k: velocity_table(doc, lang)))
+    for pos in doc["positions"]:
+        if "acceleration" in pos:
+            blocks.append(Block(f"acceleration table {pos['index']}",
+                                lambda _k, pos=pos: acceleration_table(doc, pos, lang)))
+    return blocks, f"μl = {plans.mu_l:g}"
+
+
+def flow(records: list[Record], width: float, gap: float = 6.0) -> Record:
+    """Records left to right in order, wrapping into a new row at ``width`` mm (the velocity plans
+    0, 1, 2 … read like a text)."""
+    out = Record("flow")
+    x = top = 0.0
+    row_h = 0.0
+    for rec in records:
+        b = rec.bounds()
+        w, h = b[2] - b[0], b[3] - b[1]
+        if x > 0 and x + w > width:
+            x, top, row_h = 0.0, top - row_h - gap, 0.0
+        out.extend(rec.moved(x - b[0], top - b[3]))
+        x += w + gap
+        row_h = max(row_h, h)
+    return out
+
+
+def build_kinematics_sheet(st: Study, f: Form, args: argparse.Namespace) -> Sheet:
+    """Sheet 1: everything of the kinematic analysis; the plans' scales are coarsened (factor k)
+    until the whole set fits the sheet."""
+    last: GraphplanError | None = None
+    x0, y0, x1, y1 = f.frame_box
+    free = (x1 - x0) * (y1 - y0) - 185.0 * 55.0
+    for k in FACTORS:
+        blocks, scale = kinematics_blocks(st, args, k, width=x1 - x0 - 10.0)
+        area = 0.0
+        for block in blocks:
+            bx = block.build(1.0).bounds()
+            area += (bx[2] - bx[0] + 8.0) * (bx[3] - bx[1] + 8.0)
+        if area > FILL * free and k != FACTORS[-1]:
+            continue
+        try:
+            return compose(f, blocks, fields(st, args.lang, scale, 1, 2), args.lang, st.mech.title)
+        except GraphplanError as exc:
+            last = exc
+    raise GraphplanError(f"{st.mech.source}: the sheet {f.name} is too small ({last}); "
+                         "choose a larger --format or fewer positions")
+
+
+BUILDERS["kinematics"] = build_kinematics_sheet
