@@ -171,6 +171,9 @@ class Diagrams:
         rec, w, h = page_for(self.record_for(lang or self.lang))
         return render(rec, w, h, rec.title)
 
+    def _repr_svg_(self) -> str:  # Jupyter
+        return self.svg()
+
 
 # -- the study ---------------------------------------------------------------------------------------
 

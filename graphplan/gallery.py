@@ -16,6 +16,8 @@ SHEETS = [
     ("shaper", "kinematics", "uk", "shaper.svg"),
     ("shaper", "kinematics", "en", "shaper_en.svg"),
     ("slotter", "kinematics", "uk", "slotter.svg"),
+    ("shaper", "forces", "uk", "shaper_forces.svg"),
+    ("slotter", "forces", "uk", "slotter_forces.svg"),
 ]
 
 

@@ -21,6 +21,9 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
     try:
         with os.fdopen(fd, "wb") as handle:
             handle.write(payload)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)          # an ordinary file, not mkstemp's private one
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -1092,6 +1092,11 @@ class Plans:
             cache["position"] = position_record(self)
         return cache["position"]
 
+    def _repr_svg_(self) -> str:  # Jupyter: the position plan
+        from .svg import page_for, render
+        rec, w, h = page_for(self.position_record)
+        return render(rec, w, h, self.study.mech.title)
+
     def to_json(self) -> dict:
         from .plans_report import plans_json
         return plans_json(self)
