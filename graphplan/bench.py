@@ -128,11 +128,75 @@ def stability(quick: bool) -> Iterator[Row]:
             ang = lambda p: np.unwrap(st.solve(p).bodies[link].theta)  # noqa: E731
             fd = (ang(phi + h) - ang(phi - h)) / (2 * math.radians(h)) * st.mech.omega1
             err = float(np.max(np.abs(w - fd)) / np.max(np.abs(w)) * 100)
+            from .plans import build_plans
+            try:
+                doc = build_plans(st, precision=0.5).to_json()
+                perr = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
+                        if e.get("error_pct") is not None and (e.get("mm") or 0.0) >= 20.0]
+                row["plans_max_error_pct"] = max(perr) if perr else None
+                row["plans_warnings"] = sum(len(p["warnings"]) for p in doc["positions"])
+            except GraphplanError as exc:
+                row["plans_max_error_pct"], row["plans_message"] = None, exc.line()
             row.update(time_s=time.perf_counter() - t0, max_error_pct=err,
                        min_angle_deg=math.degrees(math.asin(min(cond, 1.0))),
                        max_omega=float(np.max(np.abs(w))),
                        status="warning" if st.warnings else "ok", message="; ".join(st.warnings))
             yield row
+
+
+def chords(quick: bool) -> Iterator[Row]:
+    """Accuracy against cost of the method of chords: the largest error of v and a (in % of the
+    cycle's maximum, at the chord midpoints) against the number of divisions, for several pole
+    distances and drafting precisions."""
+    from .diagrams import chord_diagrams
+    counts = [8, 12, 24, 48, 96] + ([] if quick else [180, 360])
+    poles = [20.0, 30.0, 50.0] if not quick else [20.0, 50.0]
+    for name in ("crank_slider", "shaper"):
+        st = example(name)
+        for precision in (0.0, 0.5):
+            for h in poles:
+                for n in counts:
+                    elapsed = best_time(lambda: chord_diagrams(st, divisions=n, H1=h, H2=h,
+                                                               precision=precision), 3)
+                    d = chord_diagrams(st, divisions=n, H1=h, H2=h, precision=precision)
+                    for key, label in (("v_mid", "v"), ("a_mid", "a")):
+                        err = float(np.nanmax(np.abs(d.errors_of_max(key))))
+                        yield {"section": "chords", "method": f"chords {label}", "x": n,
+                               "setting": f"{name} H1=H2={h:g} mm precision={precision:g} mm",
+                               "scene": name, "H_mm": h, "precision_mm": precision,
+                               "time_s": elapsed, "max_error_pct": err}
+
+
+def plans(quick: bool) -> Iterator[Row]:
+    """The plans' error against the drafting precision (velocities and accelerations of vectors
+    drawn at least 20 mm long; all positions, one acceleration plan)."""
+    from .plans import build_plans
+    names = ["crank_slider", "shaper"] if quick else ["crank_slider", "four_bar", "shaper", "slotter"]
+    for name in names:
+        st = example(name)
+        for precision in (0.0, 0.1, 0.25, 0.5, 1.0):
+            t0 = time.perf_counter()
+            doc = build_plans(st, precision=precision).to_json()
+            elapsed = time.perf_counter() - t0
+            for kind in ("velocity", "acceleration"):
+                errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p.get(kind, {}).values()
+                        if e.get("error_pct") is not None and (e.get("mm") or 0.0) >= 20.0]
+                yield {"section": "plans", "method": f"plans {kind}", "x": precision,
+                       "setting": f"{name} precision={precision:g} mm", "scene": name,
+                       "time_s": elapsed, "max_error_pct": max(errs) if errs else None,
+                       "mean_error_pct": float(np.mean(errs)) if errs else None}
+
+
+def sheet_time(quick: bool) -> Iterator[Row]:
+    """The time of one whole A1 sheet (in process; the command adds Python's start-up)."""
+    from .sheet import BUILDERS
+    from .sheetform import form
+    args = argparse.Namespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="kinematics")
+    for name in ("crank_slider", "shaper"):
+        st = example(name)
+        t = best_time(lambda st=st: BUILDERS["kinematics"](st, form("A1"), args).svg(), 1 if quick else 3)
+        yield {"section": "sheet", "method": "sheet", "x": 1, "setting": f"{name} A1 SVG",
+               "time_s": t, "max_error_pct": None}
 
 
 def external(quick: bool) -> Iterator[Row]:
@@ -144,7 +208,10 @@ def external(quick: bool) -> Iterator[Row]:
 
 SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "speed": solver_speed,
+    "chords": chords,
+    "plans": plans,
     "stability": stability,
+    "sheet": sheet_time,
     "external": external,
 }
 
@@ -225,6 +292,9 @@ def _chart_stability(rows: list[Row], plt):
         ax2 = ax.twinx()
         ax2.plot(xs, [r["max_omega"] for r in sel if r["min_angle_deg"] is not None], "s--", color="C1",
                  label="max |ω| of the link, rad/s")
+        pe = [(r["x"], r.get("plans_max_error_pct")) for r in sel if r.get("plans_max_error_pct") is not None]
+        if pe:
+            ax2.plot(*zip(*pe), "^:", color="C2", label="plans' max error at 0.5 mm, %")
         ax2.set_yscale("log")
         for r in sel:
             if r["status"] != "ok":
@@ -238,7 +308,55 @@ def _chart_stability(rows: list[Row], plt):
     return fig
 
 
-CHARTS: dict[str, Callable] = {"speed": _chart_speed, "stability": _chart_stability}
+def _chart_chords(rows: list[Row], plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
+    styles = {}
+    for r in rows:
+        key = (r["scene"], r["method"], r["H_mm"], r["precision_mm"])
+        styles.setdefault(key, []).append(r)
+    for (scene, method, h, p), sel in sorted(styles.items()):
+        ls = "-" if p == 0 else "--"
+        mk = "o" if method.endswith("v") else "s"
+        label = f"{scene} {method[-1]} H={h:g} p={p:g}"
+        line = ax1.loglog([r["x"] for r in sel], [r["max_error_pct"] for r in sel], ls, marker=mk, ms=3,
+                          label=label)[0]
+        if h == max(k[2] for k in styles):      # one pole distance on the time chart, to stay legible
+            ax2.loglog([r["time_s"] for r in sel], [r["max_error_pct"] for r in sel], ls, marker=mk, ms=3,
+                       color=line.get_color(), label=label)
+    for ax in (ax1, ax2):
+        ax.axhline(5.0, color="red", lw=0.8)
+        ax.text(ax.get_xlim()[0], 5.3, " lab's 5 %", color="red", fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_ylabel("max error, % of the cycle's maximum")
+    ax1.set_xlabel("divisions of the period")
+    ax2.set_xlabel("wall time of one construction, s")
+    ax1.set_title("Method of chords: error against divisions (solid: exact ruler, dashed: 0.5 mm)", fontsize=9)
+    ax2.set_title("… and against the wall time of one construction (largest H)", fontsize=9)
+    ax2.legend(fontsize=5)
+    ax1.legend(fontsize=5, ncol=2)
+    fig.tight_layout()
+    return fig
+
+
+def _chart_plans(rows: list[Row], plt):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for scene in sorted({r["scene"] for r in rows}):
+        for method, ls in (("plans velocity", "o-"), ("plans acceleration", "s--")):
+            sel = [r for r in rows if r["scene"] == scene and r["method"] == method and r["x"] > 0]
+            if sel:
+                ax.loglog([r["x"] for r in sel], [r["max_error_pct"] for r in sel], ls, label=f"{scene}, {method[6:]}")
+    ax.set_xlabel("drafting precision, mm (0: exact, error ~1e-12 %)")
+    ax.set_ylabel("max error of vectors ≥ 20 mm, %")
+    ax.axhline(5.0, color="red", lw=0.8)
+    ax.set_title("Plans: error against the drafting precision", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
+                               "stability": _chart_stability}
 
 
 def cmd_bench(args: argparse.Namespace) -> int:

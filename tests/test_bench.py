@@ -1,0 +1,96 @@
+"""`graphplan bench`: the rows and charts it writes, and every failure mode it sweeps toward —
+there the program warns (and is still right) or refuses in one line, never a silent wrong number."""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from conftest import example, scene_study
+from graphplan import bench
+from graphplan.errors import AssemblyError, GraphplanError
+
+
+@pytest.fixture(scope="module")
+def stability_rows():
+    return list(bench.stability(quick=True))
+
+
+def test_each_sweep_goes_ok_then_warned_then_refused(stability_rows):
+    for setting in bench.SWEEPS:
+        rows = [r for r in stability_rows if r["setting"] == setting]
+        statuses = [r["status"] for r in rows]
+        assert statuses[0] == "ok" and statuses[-1] == "refused", setting
+        assert "warning" in statuses, setting
+        order = {"ok": 0, "warning": 1, "refused": 2}
+        assert [order[s] for s in statuses] == sorted(order[s] for s in statuses), setting
+        refused = rows[-1]["message"]
+        assert "\n" not in refused and ("°" in refused) and ("II(2-3)" in refused)
+        for r in rows[:-1]:                        # where it answers, the answer is right
+            assert r["max_error_pct"] < 1e-3, (setting, r["x"])
+
+
+def test_plans_near_the_toggle_warn_and_stay_exact():
+    """Four-bar with the coupler and rocker nearly in line (O2B = 0.151 m): warnings, yet the
+    exact construction (precision 0) still agrees with the solver."""
+    from graphplan.plans import build_plans
+    st = scene_study(bench._scene_four_bar(0.151))
+    assert st.warnings
+    plans = build_plans(st, precision=0.0)
+    doc = plans.to_json()
+    assert any(p["warnings"] for p in doc["positions"])
+    errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
+            if e.get("error_pct") is not None]
+    assert max(errs) < 1e-6
+
+
+def test_slotted_link_near_its_pivot_is_warned_with_the_rate():
+    st = scene_study(bench._scene_slotted(1.01))
+    text = " ".join(st.warnings)
+    assert "passes within" in text and "rad/s" in text
+    w = np.max(np.abs(st.solve(np.linspace(0, 360, 3601)).bodies["PQ"].omega))
+    assert w > 50 * abs(st.mech.omega1)        # it really does turn violently there
+
+
+def test_chords_warn_at_the_quick_return():
+    from graphplan.diagrams import chord_diagrams
+    d = chord_diagrams(example("shaper"), divisions=12, precision=0.0)
+    assert d.warnings, "the shaper's quick return at 12 divisions exceeds 5 % and must be reported"
+    worst = float(np.nanmax(np.abs(d.errors_of_max("a_mid"))))
+    assert worst > 5.0
+
+
+def test_refusals_are_one_line_for_impossible_geometry():
+    with pytest.raises(AssemblyError) as info:
+        scene_study(bench._scene_crank_slider(0.9))     # the rod is shorter than the crank
+    assert "cannot be assembled for crank angles" in info.value.line()
+
+
+def test_run_writes_rows_and_charts(tmp_path, monkeypatch):
+    small = {"stability": bench.SECTIONS["stability"], "plans": bench.SECTIONS["plans"]}
+    monkeypatch.setattr(bench, "SECTIONS", small)
+    rows = bench.run(tmp_path, quick=True, show_progress=False)
+    doc = json.loads((tmp_path / "bench.json").read_text())
+    assert len(doc["rows"]) == len(rows) > 10
+    for r in doc["rows"]:
+        assert {"method", "setting", "time_s", "max_error_pct"} <= set(r)
+    for name in ("stability", "plans"):
+        assert (tmp_path / f"{name}.png").read_bytes()[:4] == b"\x89PNG"
+        assert (tmp_path / f"{name}.svg").read_text().startswith("<?xml")
+    exact = [r for r in doc["rows"] if r["section"] == "plans" and r["x"] == 0]
+    assert exact and all(r["max_error_pct"] < 1e-7 for r in exact)
+    ruler = [r for r in doc["rows"] if r["section"] == "plans" and r["x"] == 0.5]
+    assert all(0.01 < r["max_error_pct"] < 5 for r in ruler)
+
+
+@pytest.mark.slow
+def test_bench_quick_whole(tmp_path):
+    rows = bench.run(tmp_path, quick=True, show_progress=False)
+    assert {r["section"] for r in rows} >= {"speed", "chords", "plans", "stability", "sheet", "external"}
+
+
+def test_bench_refuses_outside_a_checkout(monkeypatch, tmp_path):
+    monkeypatch.setattr(bench, "examples_dir", lambda: tmp_path)
+    with pytest.raises(GraphplanError, match="examples/shaper.toml"):
+        bench.example("shaper")
