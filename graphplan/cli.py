@@ -89,6 +89,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 # Each module registers its subcommand with ``register(subparsers)`` and imports heavy parts lazily.
 COMMAND_MODULES: tuple[str, ...] = (
+    "graphplan.keycmd",
 )
 
 
