@@ -63,7 +63,8 @@ class Graded:
 
 def read_student(path: str | Path) -> list[Row]:
     """A long table with the columns position, quantity, value (and variant); ``,`` ``;`` or tab
-    separated; with ``;`` or tab a decimal comma is accepted. Other columns are ignored."""
+    separated; with ``;`` or tab a decimal comma is accepted. Other columns are ignored. A table
+    without a ``quantity`` column is read as a wide one (see ``_wide``)."""
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8-sig")
@@ -79,7 +80,9 @@ def read_student(path: str | Path) -> list[Row]:
     delimiter = ";" if ";" in header_line else "\t" if "\t" in header_line else ","
     records = list(csv.reader(io.StringIO("\n".join(line for _, line in lines)), delimiter=delimiter))
     header = [h.strip().lower() for h in records[0]]
-    for need in ("position", "quantity", "value"):
+    if "quantity" not in header:
+        return _wide(records, lines, header, delimiter, path)
+    for need in ("position", "value"):
         if need not in header:
             raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
                                  f"(missing {need!r})", str(path))
@@ -89,15 +92,35 @@ def read_student(path: str | Path) -> list[Row]:
         def cell(name: str) -> str:
             k = col.get(name)
             return cells[k].strip() if k is not None and k < len(cells) else ""
-        text_value = cell("value")
-        value = None
-        if text_value:
-            number = text_value.replace(",", ".") if delimiter != "," else text_value
-            try:
-                value = float(number)
-            except ValueError:
-                raise GraphplanError(f"line {line_no}: value {text_value!r} is not a number", str(path)) from None
+        value = _number(cell("value"), delimiter, line_no, path)
         rows.append(Row(line_no, cell("variant"), cell("position"), cell("quantity"), value))
+    return rows
+
+
+def _number(text: str, delimiter: str, line_no: int, path: Path) -> float | None:
+    if not text:
+        return None
+    number = text.replace(",", ".") if delimiter != "," else text
+    try:
+        return float(number)
+    except ValueError:
+        raise GraphplanError(f"line {line_no}: value {text!r} is not a number", str(path)) from None
+
+
+def _wide(records, lines, header, delimiter, path: Path) -> list[Row]:
+    """A wide table (as a lab's sheet prints it): a position column — named ``position``, else the
+    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped."""
+    pos = header.index("position") if "position" in header else 0
+    var = header.index("variant") if "variant" in header else None
+    names = [h.strip() for h in records[0]]
+    rows = []
+    for (line_no, _), cells in zip(lines[1:], records[1:]):
+        for k, name in enumerate(names):
+            if k in (pos, var) or k >= len(cells) or not cells[k].strip():
+                continue
+            value = _number(cells[k].strip(), delimiter, line_no, path)
+            rows.append(Row(line_no, cells[var].strip() if var is not None and var < len(cells) else "",
+                            cells[pos].strip(), name, value))
     return rows
 
 

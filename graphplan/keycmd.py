@@ -100,10 +100,11 @@ def write_key(folder: Path, key: dict[str, Any], pdf: bool = True) -> list[Path]
 
 
 def summary_columns(rows: list[dict[str, Any]]) -> list[str]:
-    """The union of the rows' keys, first seen first; the note last."""
+    """The union of the rows' keys, first seen first, without columns empty in every row; the note last."""
     cols: list[str] = []
     for r in rows:
         cols += [c for c in r if c not in cols and c != "note"]
+    cols = [c for c in cols if any(r.get(c) not in (None, "") for r in rows)]
     if any("note" in r for r in rows):
         cols.append("note")
     return cols
@@ -129,19 +130,22 @@ def _csv_value(v: Any) -> str:
     return str(v)
 
 
-def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]],
+def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
                  overrides: set[str] = frozenset()) -> str:
     """The summary as a fixed-width table for printing (the variants' data as given)."""
     from .keysheet import cell, display
     table_cols = [c for c in columns if c != "note"]
     cells = [[cell(r.get(c), c in overrides) for c in table_cols] for r in rows]
     head = [display(c) for c in table_cols]
-    widths = [max(len(x) for x in col) for col in zip(head, *cells)]
+    unit_row = [units.get(c, "") for c in table_cols]
+    widths = [max(len(x) for x in col) for col in zip(head, unit_row, *cells)]
     left = {i for i, c in enumerate(table_cols) if c in ("variant", "student", "status")}
     lines = [title, ""]
-    for r in [head] + cells:
+    for r in [head, unit_row] + cells:
         lines.append("  ".join(x.ljust(w) if i in left else x.rjust(w)
                                for i, (x, w) in enumerate(zip(r, widths))).rstrip())
+    from .keysheet import SUMMARY_NOTE
+    lines += ["", SUMMARY_NOTE]
     notes = [r for r in rows if r.get("note")]
     if notes:
         lines.append("")
@@ -168,7 +172,7 @@ def _init_job(table, options: KeyOptions) -> None:
 def _variant_job(index: int) -> dict[str, Any]:
     """Build, key and write one variant (in a worker process or inline). Returns its summary."""
     from . import variants as vt
-    from .keys import make_key, summary_row
+    from .keys import make_key, summary_row, summary_units
     from .positions import study
     from .scene import build
     table, opt = _JOB["table"], _JOB["options"]
@@ -183,12 +187,12 @@ def _variant_job(index: int) -> dict[str, Any]:
         note, prefix = exc.line(), v.where(table.path)
         if note.startswith(prefix):
             note = note[len(prefix):].lstrip(": ")
-        return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note},
+        return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note}, "units": {},
                 "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": note},
                 "message": f"graphplan: {v.where(table.path)}: skipped: {note}"}
     write_key(opt.out / v.id, key, pdf=opt.pdf)
     return {"entry": {"variant": v.id, "status": "ok", "key": f"{v.id}/key.json", "note": ""},
-            "row": summary_row(key), "message": None}
+            "row": summary_row(key), "units": summary_units(key), "message": None}
 
 
 def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[dict[str, Any]]:
@@ -248,14 +252,18 @@ def cmd_key(args: argparse.Namespace) -> int:
     title = (f"Answer keys: {table.path.name} — {len(entries)} variants, {written} written"
              + (f", {len(entries) - written} skipped" if written < len(entries) else ""))
     columns = summary_columns(rows)
+    units: dict[str, str] = {}
+    for r in results:
+        units.update({c: u for c, u in r["units"].items() if c in columns and c not in units})
     doc = {"format": SUMMARY_FORMAT, "table": table.path.name, "variants": entries,
-           "columns": columns, "rows": rows}
-    text = summary_text(title, columns, rows, overrides=_override_columns(table))
+           "columns": columns, "units": units, "rows": rows}
+    text = summary_text(title, columns, rows, units, overrides=_override_columns(table))
     if written:
         write_atomic(out / "summary.json", dumps(doc))
         write_atomic(out / "summary.csv", summary_csv(columns, rows))
         write_atomic(out / "summary.txt", text)
-        svg = render(summary_sheet(title, [c for c in columns if c != "note"], rows, _override_columns(table)),
+        svg = render(summary_sheet(title, [c for c in columns if c != "note"], rows, units,
+                                   _override_columns(table)),
                      *A4_LANDSCAPE, title=title)
         write_atomic(out / "summary.svg", svg)
         if not args.no_pdf:

@@ -23,6 +23,7 @@ from .variants import tolerance_for
 FORMAT = "graphplan-key/1"
 ZERO_FRACTION = 0.05   # |exact| below 5 % of the largest |value| over the turn counts as "near zero"
 SCAN = 720             # samples per turn for the scales (0.5°)
+CURVE_POINTS = 180     # the s, v, a curves drawn on the key sheet: every 2°
 FAMILIES = ("velocity", "acceleration", "diagram")
 
 
@@ -218,6 +219,11 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
                 "values": {n: dvals[n][k] for n in by_family["diagram"]}}
                for k, (x, p) in enumerate(zip(xs, dphi))]
 
+    turn = np.arange(CURVE_POINTS + 1) * 360.0 / CURVE_POINTS
+    ckin = st.solve(diagram_phi(st, turn / 360.0 * divisions, divisions))
+    curves = {"turn_deg": [float(t) for t in turn],
+              **{n: [round(v, 12) for v in _clean(qs[n](ckin), scales[n])] for n in by_family["diagram"]}}
+
     stroke, k_ratio = stroke_and_k(st)
     return {
         "format": FORMAT,
@@ -245,6 +251,7 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
                        for n, q in qs.items()},
         "positions": positions,
         "diagram": diagram,
+        "curves": curves,
         "scene": scene,
     }
 
@@ -289,6 +296,14 @@ def fmt(value: float | None, digits: int = 4) -> str:
 
 
 # -- the group's summary ------------------------------------------------------------------------
+
+def summary_units(key: dict[str, Any]) -> dict[str, str]:
+    """Units of the summary's computed columns."""
+    qs = key["quantities"]
+    units = {"phi0_deg": "°", "H": qs["s"]["unit"], "v_max": qs["v"]["unit"], "a_max": qs["a"]["unit"]}
+    units.update({n: q["unit"] for n, q in qs.items()})
+    return units
+
 
 def summary_row(key: dict[str, Any]) -> dict[str, Any]:
     """One line of the group's summary: the variant's inputs and its headline answers."""

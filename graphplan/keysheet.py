@@ -20,8 +20,16 @@ INSET = 5.0                      # text and tables start this far inside the fra
 SMALL, MEDIUM, LARGE = 2.5, 3.5, 5.0
 
 
+SUMMARY_NOTE = ("φ0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
+                "coefficient; |v|max, |a|max: the output's largest over the turn; the columns from pos. a on: "
+                "at the first acceleration-plan position.")
+NAMES = {"phi0_deg": "φ0", "pos_a": "pos. a", "K_calc": "K calc", "v_max": "|v|max", "a_max": "|a|max"}
+
+
 def display(name: str) -> str:
     """A quantity's name as printed: ω and ε for omega and eps, the rest as in the long table."""
+    if name in NAMES:
+        return NAMES[name]
     return re.sub(r"^omega_", "ω_", re.sub(r"^eps_", "ε_", name))
 
 
@@ -188,7 +196,9 @@ def key_sheet(key: dict[str, Any]) -> Record:
     sections.append((f"{next(numbers)}. Diagrams of {key['output']['name']} by chords, "
                      f"{key['divisions']} divisions",
                      "s and a at the divisions k, v at the chord midpoints k + 0.5", t3, False))
-    _place(rec, x0, y, room, sections)
+    y = _place(rec, x0, y, room, sections)
+    if "curves" in key and y - EDGE - 4.0 >= CHART_MIN:
+        _curves(rec, key, x0, y - 2.0, room, EDGE + 4.0)
     return rec
 
 
@@ -273,11 +283,68 @@ def _place(rec: Record, x0: float, y: float, room: float,
                     by = b_bottom - 3.0
             x += width(blocks, beside) + 2 * GAP
         y = bottom - SECTION
+    return y
+
+
+CHART_MIN = 50.0     # the s–v–a curves are drawn when this much height is left
+CHART_MAX = 34.0     # at most this tall per quantity
+
+
+def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: float, bottom: float) -> None:
+    """The exact s, v, a of the output over one turn from position 0, with the key's ordinates
+    marked (s and a at the divisions, v at the chord midpoints) and the divisions ruled."""
+    curves, quantities, n = key["curves"], key["quantities"], key["divisions"]
+    turn = curves["turn_deg"]
+    y = _heading(rec, x0, top, f"{_section_count(key) + 1}. The exact s, v, a of {key['output']['name']} "
+                               "over one turn from position 0")
+    label_w, tick_w = 12.0, 14.0
+    px, pw = x0 + label_w + tick_w, width - label_w - tick_w - 2.0
+    gap = 3.0
+    h = min(CHART_MAX, (y - bottom - 6.0 - 2 * gap) / 3)
+    marks = {"s": [2 * k for k in range(n + 1)], "v": [2 * k + 1 for k in range(n)],
+             "a": [2 * k for k in range(n + 1)]}
+    for row, name in enumerate(("s", "v", "a")):
+        values = curves[name]
+        lo, hi = min(min(values), 0.0), max(max(values), 0.0)
+        if hi - lo <= 0:
+            hi = lo + 1.0
+        y1 = y - row * (h + gap)
+        y0 = y1 - h
+
+        def X(t: float) -> float:
+            return px + t / 360.0 * pw
+
+        def Y(v: float) -> float:
+            return y0 + (v - lo) / (hi - lo) * h
+
+        rec.add("polygon", [(px, y0), (px + pw, y0), (px + pw, y1), (px, y1)], role="table", layer="diagrams")
+        for k in range(1, n):
+            rec.segment((X(k * 360.0 / n), y0), (X(k * 360.0 / n), y1), role="grid", layer="diagrams")
+        if lo < 0 < hi:
+            rec.segment((px, Y(0.0)), (px + pw, Y(0.0)), role="axis", layer="diagrams")
+        rec.add("polyline", [(X(t), Y(v)) for t, v in zip(turn, values)], role="curve", layer="diagrams")
+        for j in marks[name]:
+            point = key["diagram"][j]
+            t = point["abscissa"] * 360.0 / n
+            rec.point((X(t), Y(point["values"][name])), layer="diagrams")
+        rec.label((x0, (y0 + y1) / 2 - SMALL / 2), f"{name}, {quantities[name]['unit']}", size=SMALL)
+        rec.label((px - 1.0, y1 - SMALL), fmt(hi), size=SMALL, anchor="end")
+        rec.label((px - 1.0, y0), fmt(lo), size=SMALL, anchor="end")
+    y_axis = y - 3 * h - 2 * gap
+    for k in range(n + 1):
+        if n <= 24 or k % 2 == 0:
+            rec.label((X(k * 360.0 / n), y_axis - SMALL - 1.0), str(k), size=SMALL, anchor="middle")
+    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), "k: divisions; ordinates of the key marked",
+              size=SMALL, anchor="end")
+
+
+def _section_count(key: dict[str, Any]) -> int:
+    return 3 if key["accel"] else 2
 
 
 # -- the group's summary sheet ---------------------------------------------------------------------
 
-def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]],
+def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
                   overrides: set[str] = frozenset()) -> Record:
     """The group's summary on A4 landscape: one line per variant with its data and headline answers."""
     W, H = A4_LANDSCAPE
@@ -287,17 +354,17 @@ def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]],
     y = H - EDGE - 3.0
     y = _heading(rec, x0, y, title, LARGE) - 1.0
     notes = [r for r in rows if r.get("status") != "ok"]
-    header = [[display(c) for c in columns]]
+    header = [[display(c) for c in columns], [units.get(c, "") for c in columns]]
     cells = [[cell(r.get(c), c in overrides) for c in columns] for r in rows]
     size = SMALL
     while size > 1.8 and sum(max(text_width(t, size) for t in col) + 2.5
                              for col in zip(*(header + cells))) > room:
         size = round(size - 0.1, 2)
-    room_h = y - EDGE - 4.0 - (len(notes) + 1) * 4.0
-    row_h = max(3.0, min(5.0, room_h / (len(rows) + 1)))
+    room_h = y - EDGE - 4.0 - (len(notes) + 3) * 4.0
+    row_h = max(3.0, min(5.0, room_h / (len(rows) + 2)))
     align = ["start" if c in ("variant", "student", "status") else "end" for c in columns]
     y, _ = table(rec, x0, y, header, cells, size=size, row_h=row_h, align=align)
-    y -= 2.0
+    y = _paragraph(rec, x0, y - 1.0, SUMMARY_NOTE, SMALL, room)
     for r in notes:
         y = _paragraph(rec, x0, y, f"Variant {r['variant']}: {r.get('note', '')}", SMALL, room)
     return rec

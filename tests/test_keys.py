@@ -287,6 +287,10 @@ def test_seed_004_table_3_is_graded_and_its_wrong_rows_named(tmp_path):
     student.write_text("\n".join(long) + "\n", encoding="utf-8")
     rows = read_student(student)
     assert len(rows) == 13 * 6 and rows[1 * 6 + 1].value == 7.2 and rows[10 * 6 + 5].value == -16.0
+    wide = tmp_path / "seed004_wide.csv"                      # the sheet's own wide layout reads the same
+    wide.write_text(SEED_004_TABLE_3, encoding="utf-8")
+    assert [(r.position, r.quantity, r.value) for r in read_student(wide)] == \
+        [(r.position, r.quantity, r.value) for r in rows]
 
     st = study(load(CRANK))
     key = make_key(st, variant="s004", scene=tomllib.loads(CRANK.read_text()))
