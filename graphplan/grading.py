@@ -184,7 +184,7 @@ def normalise(name: str) -> str:
 def aliases(key: dict[str, Any]) -> dict[str, str]:
     """Accepted spellings → the key's quantity names (ambiguous spellings are dropped)."""
     names = list(key["quantities"])
-    numbers = _link_numbers(key)
+    numbers = key.get("links", {})
     table: dict[str, set[str]] = {}
     for name in names:
         spellings = {normalise(name)}
@@ -198,23 +198,11 @@ def aliases(key: dict[str, Any]) -> dict[str, str]:
     return out
 
 
-def _link_numbers(key: dict[str, Any]) -> dict[str, int]:
-    """Link name → number, from the resolved scene (the crank is 1, the rest in order)."""
-    scene = key.get("scene") or {}
-    out = {}
-    crank = scene.get("crank", {})
-    if crank:
-        out[str(crank.get("name", f"{crank.get('pivot', '')}{crank.get('pin', '')}"))] = 1
-    number = 1
-    for link in scene.get("link", []):
-        number = int(link.get("number", number + 1))
-        joints = link.get("joints", [])
-        default = "".join(str(j) for j in joints) if len(joints) >= 2 else str(number)
-        out[str(link.get("name", default))] = number
-    return out
-
-
 # -- grading -------------------------------------------------------------------------------------
+
+class NoScene(GraphplanError):
+    """A key without its resolved scene (written by hand): nothing can be computed beyond its values."""
+
 
 @dataclass
 class _Variant:
@@ -228,7 +216,7 @@ class _Variant:
         if self._study is None:
             scene = self.key.get("scene")
             if not scene:
-                raise GraphplanError("the key has no scene to search other crank angles", self.key.get("_path"))
+                raise NoScene("the key has no scene to search other crank angles", self.key.get("_path"))
             self._study = study(build(scene, f"{self.key.get('_path', 'key')}: scene"))
             self._quantities = quantities(self._study)
         return self._study
@@ -302,7 +290,10 @@ def _grade_row(var: _Variant, row: Row, signed: bool) -> Graded:
     tol = meta["tolerance_pct"]
     if row.value is None:
         return Graded(row, "fail", name, tolerance_pct=tol, note="no value")
-    exact, in_key = _exact(var, name, meta["family"], x)
+    try:
+        exact, in_key = _exact(var, name, meta["family"], x)
+    except NoScene:
+        return Graded(row, "unknown", name, tolerance_pct=tol, note="not in the key (and no scene to compute it)")
     if not in_key:
         note = "; ".join(filter(None, [note, "not in the key: computed"]))
     compare_signed = signed and meta["signed"]
@@ -323,7 +314,11 @@ def _grade_row(var: _Variant, row: Row, signed: bool) -> Graded:
 def _explain(var: _Variant, g: Graded, name: str, family: str, claimed: float, value: float,
              signed: bool) -> None:
     """Search the turn for the crank angles where the quantity takes the student's value."""
-    st = var.study()
+    try:
+        st = var.study()
+    except NoScene:
+        g.note = _join(g.note, "the key has no scene: other crank angles not searched")
+        return
     key = var.key
     q = var.quantity(name)
     target = value if signed else abs(value)

@@ -300,7 +300,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("variants", help="the variant table: CSV (or .toml), one row per variant")
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="folder for the keys")
     p.add_argument("--tolerance", type=float, metavar="PCT",
-                   help="the tolerance for every quantity, %% (default 5; a table's own settings win)")
+                   help="the tolerance, %%, of every quantity without a setting of its own (default: the "
+                        "table's, else 5)")
     p.add_argument("--tol", action="append", default=[], metavar="QUANTITY=PCT",
                    help="a quantity's tolerance, %%; shell-style patterns: --tol 'a_*=8' (repeatable)")
     p.add_argument("--divisions", type=int, metavar="N",

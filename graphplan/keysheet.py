@@ -210,7 +210,7 @@ class Block:
     align: list[str] | None = None
 
     def width(self, size: float = SMALL) -> float:
-        return sum(column_widths(self.header + self.rows, size)) 
+        return sum(column_widths(self.header + self.rows, size))
 
 
 def column_widths(cells: Sequence[Sequence[str]], size: float) -> list[float]:
@@ -218,6 +218,7 @@ def column_widths(cells: Sequence[Sequence[str]], size: float) -> list[float]:
 
 
 GAP = 6.0        # between blocks side by side
+ROW_MIN = 2.7    # mm: the smallest row height (with 1.8 mm lettering) before a sheet overflows
 SECTION = 4.0    # below a section
 
 
@@ -234,37 +235,80 @@ def _diagram_block(key: dict[str, Any]) -> Block:
     return Block(header, rows)
 
 
-def _place(rec: Record, x0: float, y: float, room: float,
-           sections: list[tuple[str, str, list[Block], bool]]) -> None:
-    """Lay the sections out down the sheet: a section's blocks side by side when ``beside`` (else
-    stacked); two consecutive sections side by side when both fit the width. Row heights shrink
-    (4.5 → 3.4 mm) so that everything fits above the frame."""
-    def width(blocks, beside):
-        ws = [b.width() for b in blocks]
-        return sum(ws) + GAP * (len(ws) - 1) if beside else max(ws)
+Section = tuple[str, str, list["Block"], bool]   # title, note, blocks, blocks side by side
 
-    def lines(blocks, beside):
-        ls = [len(b.header) + len(b.rows) for b in blocks]
-        return max(ls) if beside else sum(ls)
 
-    # pair sections into rows of the page
-    page_rows, k = [], 0
+def _pair(sections: list[Section], room: float, size: float) -> list[list[Section]]:
+    """Rows of the page: two consecutive sections side by side when both fit the width."""
+    rows, k = [], 0
     while k < len(sections):
         first = sections[k]
         if k + 1 < len(sections):
             second = sections[k + 1]
-            w = width(first[2], first[3]) + 2 * GAP + width(second[2], second[3])
+            w = _width(first, size) + 2 * GAP + _width(second, size)
             heads = max(text_width(first[0], MEDIUM), text_width(second[0], MEDIUM))
             if w <= room and heads <= room / 2:
-                page_rows.append([first, second])
+                rows.append([first, second])
                 k += 2
                 continue
-        page_rows.append([first])
+        rows.append([first])
         k += 1
-    need_lines = sum(max(lines(s[2], s[3]) for s in row) for row in page_rows)
+    return rows
+
+
+def _width(section: Section, size: float) -> float:
+    ws = [b.width(size) for b in section[2]]
+    return sum(ws) + GAP * (len(ws) - 1) if section[3] else max(ws)
+
+
+def _lines(section: Section) -> int:
+    ls = [len(b.header) + len(b.rows) for b in section[2]]
+    return max(ls) if section[3] else sum(ls)
+
+
+def _row_height(page_rows: list[list[Section]], height: float) -> float:
+    """The row height that makes the page rows fill ``height`` (not clamped)."""
+    need = sum(max(_lines(s) for s in row) for row in page_rows)
     fixed = sum(MEDIUM + 2.0 + (SMALL + 2.0 if any(s[1] for s in row) else 0) + SECTION
                 + max(0 if s[3] else 3.0 * (len(s[2]) - 1) for s in row) for row in page_rows)
-    row_h = max(3.4, min(4.5, (y - EDGE - 4.0 - fixed) / need_lines))
+    return (height - fixed) / need
+
+
+def _lettering(row_h: float) -> float:
+    return SMALL if row_h >= 3.4 else max(1.8, row_h - 0.9)
+
+
+def _fold(section: Section) -> Section:
+    """A one-block section's rows in two halves side by side."""
+    (block,) = section[2]
+    half = -(-len(block.rows) // 2)
+    return (section[0], section[1], [Block(block.header, block.rows[:half], block.align),
+                                     Block(block.header, block.rows[half:], block.align)], True)
+
+
+def _place(rec: Record, x0: float, y: float, room: float, sections: list[Section]) -> float:
+    """Lay the sections out down the sheet: a section's blocks side by side when it says so (else
+    stacked); two consecutive sections side by side when both fit the width. Row heights shrink
+    (4.5 → 3.4 mm, then with smaller lettering to 2.7 mm) so that everything fits above the frame;
+    when even that is too tall, the longest one-block tables are folded into two halves side by side.
+    Returns the y below the last section."""
+    height = y - EDGE - 4.0
+    sections = list(sections)
+    size = SMALL
+    page_rows = _pair(sections, room, size)
+    row_h = _row_height(page_rows, height)
+    while row_h < ROW_MIN:
+        size = _lettering(max(row_h, ROW_MIN))
+        foldable = [k for k, s in enumerate(sections) if len(s[2]) == 1 and len(s[2][0].rows) > 8
+                    and 2 * s[2][0].width(size) + GAP <= room]
+        if not foldable:
+            break
+        k = max(foldable, key=lambda k: _lines(sections[k]))
+        sections[k] = _fold(sections[k])
+        page_rows = _pair(sections, room, size)
+        row_h = _row_height(page_rows, height)
+    row_h = max(ROW_MIN, min(4.5, row_h))
+    size = _lettering(row_h)
     for row in page_rows:
         x, bottom = x0, y
         for title, note, blocks, beside in row:
@@ -275,13 +319,13 @@ def _place(rec: Record, x0: float, y: float, room: float,
                 yy -= SMALL + 2.0
             bx, by = x, yy
             for b in blocks:
-                b_bottom, w = table(rec, bx, by, b.header, b.rows, row_h=row_h, align=b.align)
+                b_bottom, w = table(rec, bx, by, b.header, b.rows, size=size, row_h=row_h, align=b.align)
                 bottom = min(bottom, b_bottom)
                 if beside:
                     bx += w + GAP
                 else:
                     by = b_bottom - 3.0
-            x += width(blocks, beside) + 2 * GAP
+            x += _width((title, note, blocks, beside), size) + 2 * GAP
         y = bottom - SECTION
     return y
 

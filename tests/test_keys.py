@@ -18,7 +18,7 @@ from graphplan.grading import Row, grade, load_keys, normalise, read_student
 from graphplan.keycmd import Progress
 from graphplan.keys import make_key, quantities
 from graphplan.positions import study
-from graphplan.scene import load
+from graphplan.scene import build, load
 from graphplan import variants as vt
 
 EXAMPLES = ROOT / "examples"
@@ -342,3 +342,45 @@ def test_quantities_cover_the_plans():
     names = set(quantities(study(load(EXAMPLES / "shaper.toml"))))
     assert {"v_A3", "v_A3A2", "ak_A3A2", "ar_A3A2", "an_BO", "at_BO", "v_CB", "an_CB", "at_CB",
             "omega_OB", "eps_BC", "s", "v", "a"} <= names
+
+
+@pytest.mark.parametrize("count", [8, 12, 24, 36])
+def test_key_sheet_stays_inside_the_frame(tmp_path, count):
+    from graphplan.keysheet import EDGE, LEFT, key_sheet
+    path = table(tmp_path, f"# base = @EX/shaper.toml\nvariant,count,accel\nv,{count},1 3\n")
+    t = vt.read(path)
+    key = make_key(study(vt.mechanism(t, t.variants[0])))
+    rec = key_sheet(key)
+    inner = [p for p in rec.items if p.layer != "frame"]
+    x0 = min(p.bounds()[0] for p in inner)
+    y0 = min(p.bounds()[1] for p in inner)
+    x1 = max(p.bounds()[2] for p in inner)
+    y1 = max(p.bounds()[3] for p in inner)
+    assert LEFT < x0 and x1 < 210 - EDGE and EDGE < y0 and y1 < 297 - EDGE
+
+
+from hypothesis import given, settings, strategies as hs   # noqa: E402
+
+
+@settings(max_examples=12, deadline=None)
+@given(r=hs.floats(0.02, 0.1), lam=hs.floats(0.15, 0.4), k=hs.integers(0, 10_000),
+       delta=hs.floats(-0.2, 0.2).filter(lambda d: abs(abs(d) - 0.05) > 1e-3))
+def test_grading_agrees_with_the_tolerance(r, lam, k, delta):
+    """Any answer of any crank-slider off by δ passes exactly when |δ| ≤ 5 % (away from zero)."""
+    tree = vt.apply(vt.read_tree(CRANK), {"r": r, "l": r / lam}, "<test>")
+    key = make_key(study(build(tree, "<test>")), variant="x", scene=tree)
+    rows = [(p["index"], n, v) for p in key["positions"] for n, v in p["values"].items()
+            if abs(v) >= 0.05 * key["quantities"][n]["scale"]]
+    index, name, value = rows[k % len(rows)]
+    (g,) = grade({"x": key}, [Row(1, "x", str(index), name, value * (1 + delta))])
+    assert (g.status == "pass") == (abs(delta) <= 0.05)
+    assert g.error_pct == pytest.approx(100 * delta, abs=1e-6)
+
+
+def test_a_key_without_its_scene_still_grades_its_own_values():
+    key = make_key(study(load(CRANK)), variant="x")          # no scene kept
+    rows = [Row(1, "x", "1", "v_B", 7.2), Row(2, "x", "1", "v_A", key["positions"][1]["values"]["v_A"]),
+            Row(3, "x", "3", "a_B", 1.0)]
+    g = grade({"x": key}, rows)
+    assert [x.status for x in g] == ["fail", "pass", "unknown"]
+    assert "not searched" in g[0].note and g[0].fits is None
