@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from .errors import SceneError
 from .kinematics import Kinematics
 from .mechanism import FRAME
 from .positions import Study
@@ -192,7 +193,6 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
     accel = sorted(set(mech.accel))
     for p in accel:
         if p >= count:
-            from .errors import SceneError
             raise SceneError(f"positions.accel: position {p} does not exist ({count} positions, 0–{count - 1})",
                              mech.source)
     divisions = divisions or count

@@ -384,3 +384,14 @@ def test_a_key_without_its_scene_still_grades_its_own_values():
     g = grade({"x": key}, rows)
     assert [x.status for x in g] == ["fail", "pass", "unknown"]
     assert "not searched" in g[0].note and g[0].fits is None
+
+
+def test_written_files_get_the_usual_mode(tmp_path):
+    import os
+    from graphplan.output import write_atomic
+    mask = os.umask(0o022)
+    try:
+        path = write_atomic(tmp_path / "f.txt", "x")
+    finally:
+        os.umask(mask)
+    assert path.stat().st_mode & 0o777 == 0o644
