@@ -230,9 +230,15 @@ def grade(keys: dict[str, dict[str, Any]], rows: list[Row], signed: bool = False
     """Grade every row (see the module's docstring); ``signed`` compares signs where a quantity has one."""
     variants = {vid: _Variant(key, aliases(key)) for vid, key in keys.items()}
     single = next(iter(variants.values())) if len(variants) == 1 else None
+    unpadded: dict[str, list[str]] = {}
+    for vid in variants:                       # "7" finds variant "07" when that is the only one
+        unpadded.setdefault(vid.lstrip("0") or "0", []).append(vid)
     out = []
     for row in rows:
         var = variants.get(row.variant) or (single if not row.variant else None)
+        if var is None and row.variant:
+            ids = unpadded.get(row.variant.lstrip("0") or "0", [])
+            var = variants[ids[0]] if len(ids) == 1 else None
         if var is None:
             known = ", ".join(sorted(variants)[:5]) + (" …" if len(variants) > 5 else "")
             out.append(Graded(row, "unknown", note=f"no key for variant {row.variant!r} (keys: {known})"))

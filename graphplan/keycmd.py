@@ -212,11 +212,12 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context(method),
                              initializer=_init_job, initargs=(table, options)) as pool:
-        progress.step("")
+        progress.step(f"variant {table.variants[0].id}")
         for k, result in enumerate(pool.map(_variant_job, range(n))):
             results.append(result)
             _report(result, progress)
-            progress.step(f"variant {table.variants[k].id}")
+            if k + 1 < n:
+                progress.step(f"variant {table.variants[k + 1].id}")
     return results
 
 

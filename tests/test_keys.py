@@ -236,7 +236,7 @@ def test_signed_mode_and_near_zero_rows(tmp_path, capsys):
     folder = _keys_for(tmp_path, capsys)
     keys = load_keys(folder)
     w2 = keys["01"]["positions"][1]["values"]["omega_AB"]
-    rows = [Row(1, "01", "1", "ω2", -w2), Row(2, "01", "0", "v_B", 0.0), Row(3, "01", "0", "v_B", 0.5),
+    rows = [Row(1, "1", "1", "ω2", -w2), Row(2, "01", "0", "v_B", 0.0), Row(3, "01", "0", "v_B", 0.5),
             Row(4, "01", "3", "eps_AB", 0.0), Row(5, "01", "1", "nonsense", 1.0), Row(6, "07", "1", "v_B", 1.0)]
     plain = grade(keys, rows)
     signed = grade(keys, rows, signed=True)
