@@ -8,12 +8,6 @@ from pathlib import Path
 from .errors import GraphplanError
 
 
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
 def write_atomic(path: str | Path, data: bytes | str) -> Path:
     """Write ``data`` to ``path`` so that no half-written file is ever left behind."""
     path = Path(path)
@@ -27,7 +21,9 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
     try:
         with os.fdopen(fd, "wb") as handle:
             handle.write(payload)
-        os.chmod(tmp, 0o666 & ~_umask())   # mkstemp makes 0600; a written file gets the usual mode
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)          # an ordinary file, not mkstemp's private one
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
