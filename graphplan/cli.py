@@ -89,11 +89,12 @@ def build_parser() -> argparse.ArgumentParser:
 
 # Each module registers its subcommand with ``register(subparsers)`` and imports heavy parts lazily.
 COMMAND_MODULES: tuple[str, ...] = (
+    "graphplan.sheet",
     "graphplan.plans_report",
     "graphplan.diagrams",
-    "graphplan.bench",
     "graphplan.forces",
-    "graphplan.sheet",
+    "graphplan.keycmd",
+    "graphplan.bench",
 )
 
 

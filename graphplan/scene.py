@@ -5,6 +5,7 @@ The format is documented in docs/scenes.md.
 from __future__ import annotations
 
 import cmath
+import copy
 import math
 import tomllib
 from importlib import resources
@@ -53,7 +54,12 @@ def loads(text: str, where: str = "<scene>") -> Mechanism:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"TOML syntax error: {exc}", where) from None
-    return _Reader(data, where).mechanism()
+    return build(data, where)
+
+
+def build(data: dict[str, Any], where: str = "<scene>") -> Mechanism:
+    """A mechanism from an already parsed scene tree (e.g. a base scene with a variant's overrides)."""
+    return _Reader(copy.deepcopy(data), where).mechanism()
 
 
 class _Reader:
@@ -181,7 +187,7 @@ class _Reader:
         theta = math.pi * (k - 1) / (k + 1)
         derived = {"theta_deg": math.degrees(theta), "crank": centre * math.sin(theta / 2),
                    "rocker": stroke / (2 * math.sin(theta / 2))}
-        for key, value in derived.items():
+        for key, value in {"K": k, "stroke": stroke, "centre_distance": centre, **derived}.items():
             self.names.setdefault(key, value)
         return derived
 
