@@ -57,13 +57,9 @@ class Progress:
 
 
 def pdf_bytes(svg_text: str) -> bytes:
-    """The SVG as PDF (cairosvg) with cairo's creation date fixed, so the bytes depend on the input only
-    (the date is replaced by one of the same length: the cross-reference offsets stay right)."""
-    import cairosvg
-    data = cairosvg.svg2pdf(bytestring=svg_text.encode("utf-8"))
-    return re.sub(rb"/CreationDate \(D:\d{14}[^)]*\)",
-                  lambda m: b"/CreationDate (D:20000101000000Z" + b" " * (len(m.group(0)) - 33) + b")",
-                  data)
+    """The key sheet as PDF with fixed metadata (see svg.to_pdf)."""
+    from .svg import to_pdf
+    return to_pdf(svg_text)
 
 
 def _parse_tol(items: list[str], tolerance: float | None) -> dict[str, float]:

@@ -64,10 +64,8 @@ class Sheet:
         svg = self.svg(text_as_paths)
         if suffix == ".svg":
             return write_atomic(path, svg)
-        import cairosvg
-        data = (cairosvg.svg2pdf if suffix == ".pdf" else cairosvg.svg2png)(
-            bytestring=svg.encode("utf-8"), **({} if suffix == ".pdf" else {"dpi": 96}))
-        return write_atomic(path, data)
+        from .svg import to_pdf, to_png
+        return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi=96))
 
     def _repr_svg_(self) -> str:  # Jupyter
         return self.svg()

@@ -113,6 +113,18 @@ def arc_path(centre, r: float, start: float, end: float, h: float) -> str:
     return f"M{x0},{y0} A{_f(r)},{_f(r)} 0 {large} 0 {x1},{y1}"
 
 
+def to_pdf(svg_text: str) -> bytes:
+    """The SVG as PDF (cairosvg) with cairo's creation date fixed, so the bytes depend on the input only
+    (the date is replaced by one of the same length: the cross-reference offsets stay right)."""
+    import re
+
+    import cairosvg
+    data = cairosvg.svg2pdf(bytestring=svg_text.encode("utf-8"))
+    return re.sub(rb"/CreationDate \(D:\d{14}[^)]*\)",
+                  lambda m: b"/CreationDate (D:20000101000000Z" + b" " * (len(m.group(0)) - 33) + b")",
+                  data)
+
+
 def to_png(svg_text: str, dpi: int = 96) -> bytes:
     """Rasterise an SVG (cairosvg) for looking at it."""
     import cairosvg

@@ -76,6 +76,7 @@ def test_formats_by_suffix(tmp_path):
     import ezdxf
     s = build("crank_slider")
     pdf = s.write(tmp_path / "s.pdf").read_bytes()
+    assert pdf == s.write(tmp_path / "again.pdf").read_bytes()      # no creation date in the bytes
     box_ = re.search(rb"/MediaBox \[ ?0 0 ([\d.]+) ([\d.]+) ?\]", pdf)
     assert box_ and float(box_.group(1)) == pytest.approx(841 / 25.4 * 72, abs=1) \
         and float(box_.group(2)) == pytest.approx(594 / 25.4 * 72, abs=1)
