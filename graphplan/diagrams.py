@@ -505,7 +505,11 @@ def cmd_diagrams(args) -> int:
     from .cli import _load, dumps
     from .output import write_atomic
     st = _load(args.scene)
-    d = chord_diagrams(st, point=args.point, divisions=args.divisions, L=args.L, H1=args.h1, H2=args.h2,
+    scene = st.mech.diagram          # the scene's [diagrams] table gives the defaults
+    pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
+    d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
+                       L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
+                       H2=pick(args.h2, "H2_mm", 30.0),
                        precision=args.precision, adaptive=args.adaptive, height=args.height,
                        tolerance=args.tolerance, chosen=args.at, lang=args.lang)
     if args.svg:
@@ -530,9 +534,9 @@ def register(sub) -> None:
     p.add_argument("--divisions", type=_divisions_arg, metavar="N",
                    help="equal intervals (default: the scene's positions count), or comma-separated crank "
                         "turns from position 0 in degrees for unequal ones")
-    p.add_argument("--h1", type=float, default=30.0, metavar="MM", help="pole distance of the v diagram (30)")
-    p.add_argument("--h2", type=float, default=30.0, metavar="MM", help="pole distance of the a diagram (30)")
-    p.add_argument("--L", type=float, default=240.0, metavar="MM", help="abscissa of one crank period (240)")
+    p.add_argument("--h1", type=float, metavar="MM", help="pole distance of the v diagram (the scene's, else 30)")
+    p.add_argument("--h2", type=float, metavar="MM", help="pole distance of the a diagram (the scene's, else 30)")
+    p.add_argument("--L", type=float, metavar="MM", help="abscissa of one crank period (the scene's, else 240)")
     p.add_argument("--precision", type=float, default=0.5, metavar="MM",
                    help="drafting precision of every reading (0.5; 0 = exact)")
     p.add_argument("--adaptive", action="store_true",

@@ -85,6 +85,7 @@ class Mechanism:
     params: dict[str, float] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)
     meta: dict[str, str] = field(default_factory=dict)
+    diagram: dict[str, object] = field(default_factory=dict)  # [diagrams]: L_mm, H1_mm, H2_mm, divisions, point
     source: str = "<scene>"
 
     @property

@@ -18,13 +18,14 @@ from .mechanism import FRAME, Crank, Force, Guide, Link, Mechanism
 
 BUILTIN = "crank_slider.toml"
 
-_TOP = {"title", "title_en", "designation", "sheet", "params", "synthesis", "frame", "crank",
+_TOP = {"diagrams", "title", "title_en", "designation", "sheet", "params", "synthesis", "frame", "crank",
         "link", "branch", "positions", "loads", "force"}
 _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
          "mass", "inertia", "com"}
 _POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
+_DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
@@ -158,7 +159,8 @@ class _Reader:
             forces=self.read_forces(data.get("force", [])),
             g=self.number(loads.get("g", 9.81), "loads.g"),
             params=dict(self.names), derived=derived,
-            meta=self.read_meta(data), source=self.where)
+            meta=self.read_meta(data), diagram=self.read_diagram(data.get("diagrams", {})),
+            source=self.where)
         self.check_names(mech)
         return mech
 
@@ -404,6 +406,22 @@ class _Reader:
         if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
             raise self.fail(key, "the distances must increase")
         return tuple(pairs)
+
+    def read_diagram(self, raw: Any) -> dict[str, object]:
+        """[diagrams]: the chord diagrams' abscissa L, pole distances H1, H2 (mm), divisions, point."""
+        raw = self.table(raw, "diagrams", _DIAGRAMS)
+        out: dict[str, object] = {}
+        for key in ("L_mm", "H1_mm", "H2_mm"):
+            if key in raw:
+                out[key] = self.number(raw[key], f"diagrams.{key}", positive=True)
+        if "divisions" in raw:
+            n = raw["divisions"]
+            if isinstance(n, bool) or not isinstance(n, int) or n < 2:
+                raise self.fail("diagrams.divisions", f"must be a whole number ≥ 2, got {n!r}")
+            out["divisions"] = n
+        if "point" in raw:
+            out["point"] = self.name(raw["point"], "diagrams.point")
+        return out
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: str(data[k]) for k in ("title", "title_en", "designation") if k in data}

@@ -263,8 +263,10 @@ def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
     plans = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
                         targets=Targets().scaled(k))
     doc = plans.to_json()
-    diag = chord_diagrams(st, divisions=args.positions or st.mech.count, L=240.0 * k,
-                          precision=args.precision, lang=lang, height=70.0 * k)
+    dg = st.mech.diagram
+    diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.count,
+                          L=float(dg.get("L_mm", 240.0)) * k, H1=float(dg.get("H1_mm", 30.0)),
+                          H2=float(dg.get("H2_mm", 30.0)), precision=args.precision, lang=lang, height=70.0 * k)
     scales = [format_scale(n, plans.scales[n]) for n in ("mu_l", "mu_v", "mu_a")]
     scales += [f"{sym} = {diag.record.scales[key]:.4g}" for key, sym in (("mu_t", "μt"),) if key in diag.record.scales]
     errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
