@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .output import read_text
 from .errors import GraphplanError, SceneError
 from .keys import FORMAT, Quantity, diagram_phi, quantities
 from .positions import Study, study
@@ -66,12 +67,7 @@ def read_student(path: str | Path) -> list[Row]:
     separated; with ``;`` or tab a decimal comma is accepted. Other columns are ignored. A table
     without a ``quantity`` column is read as a wide one (see ``_wide``)."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise GraphplanError("no such student table", str(path)) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise GraphplanError(f"cannot read the student table: {exc}", str(path)) from None
+    text = read_text(path, "student table")
     lines = [(n + 1, line) for n, line in enumerate(text.splitlines())
              if line.strip() and not line.lstrip().startswith("#")]
     if not lines:

@@ -8,6 +8,16 @@ from pathlib import Path
 from .errors import GraphplanError
 
 
+def read_text(path: str | Path, what: str) -> str:
+    """A text file's contents (UTF-8, a BOM dropped), or one clear line naming the file."""
+    try:
+        return Path(path).read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        raise GraphplanError(f"no such {what}", str(path)) from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise GraphplanError(f"cannot read the {what}: {exc}", str(path)) from None
+
+
 def write_atomic(path: str | Path, data: bytes | str) -> Path:
     """Write ``data`` to ``path`` so that no half-written file is ever left behind."""
     path = Path(path)

@@ -12,7 +12,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .errors import SceneError
+from .errors import GraphplanError, SceneError
+from .output import read_text
 from .expressions import evaluate
 from .mechanism import FRAME, Crank, Force, Guide, Link, Mechanism
 
@@ -39,14 +40,11 @@ def builtin_path() -> Path:
 def load(path: str | Path | None) -> Mechanism:
     """Read a scene file (the built-in crank-slider when ``path`` is None)."""
     path = builtin_path() if path is None else Path(path)
-    where = str(path)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SceneError("no such scene file", where) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SceneError(f"cannot read the scene: {exc}", where) from None
-    return loads(text, where)
+        text = read_text(path, "scene file")
+    except GraphplanError as exc:
+        raise SceneError(str(exc), exc.where) from None
+    return loads(text, str(path))
 
 
 def loads(text: str, where: str = "<scene>") -> Mechanism:

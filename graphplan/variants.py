@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .output import read_text
 from .errors import GraphplanError, SceneError
 from .mechanism import Mechanism
 from .scene import build
@@ -97,12 +98,7 @@ def parse_cell(text: str, decimal_comma: bool = False) -> Any:
 def read(path: str | Path) -> VariantTable:
     """Read a variant table (CSV, or TOML by the ``.toml`` suffix)."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise GraphplanError("no such variant table", str(path)) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise GraphplanError(f"cannot read the variant table: {exc}", str(path)) from None
+    text = read_text(path, "variant table")
     if path.suffix.lower() == ".toml":
         rows, directives = _toml_rows(text, path)
     else:
