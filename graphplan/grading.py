@@ -19,9 +19,9 @@ from typing import Any
 
 import numpy as np
 
-from .output import read_text
 from .errors import GraphplanError, SceneError
 from .keys import FORMAT, Quantity, diagram_phi, quantities
+from .output import read_text
 from .positions import Study, study
 from .scene import build
 

@@ -18,9 +18,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .output import read_text
 from .errors import GraphplanError, SceneError
 from .mechanism import Mechanism
+from .output import read_text
 from .scene import build
 
 DEFAULT_TOLERANCE = 5.0   # percent, the lab's criterion (REFERENCE §1.6)
