@@ -111,11 +111,16 @@ class Slide:
     v: Array
     a: Array
     direction: Array
-    coriolis: Array
+    omega: Array  # the guide's (carrier's) angular velocity
+
+    @cached_property
+    def coriolis(self) -> Array:
+        """a^k = 2iω·v_rel·g: v_rel turned 90° in the sense of ω, magnitude 2|ω·v_rel|."""
+        return 2j * self.omega * self.v * self.direction
 
     @property
     def coriolis_magnitude(self) -> Array:
-        return np.abs(self.coriolis)
+        return 2.0 * np.abs(self.omega * self.v)
 
 
 @dataclass
@@ -197,8 +202,7 @@ def _slide(kin: Kinematics, key: str, slider: str, carrier: str, t: Array, v: Ar
            g: Array) -> None:
     if key in kin.slides:
         key = f"{key}:{slider}"
-    omega = kin.bodies[carrier].omega
-    kin.slides[key] = Slide(slider, carrier, key.split(":")[0], t, v, a, g, 2j * omega * v * g)
+    kin.slides[key] = Slide(slider, carrier, key.split(":")[0], t, v, a, g, kin.bodies[carrier].omega)
 
 
 LOCKED = 1e-12  # |sin| of the angle between a group's direction lines below which it locks
