@@ -124,6 +124,6 @@ def test_objects_display_themselves_in_jupyter():
     from graphplan.diagrams import chord_diagrams
     from graphplan.plans import build_plans
     st = example("shaper")
-    for obj in (st, build_plans(st), chord_diagrams(st)):
+    for obj in (st.mech, st, build_plans(st), chord_diagrams(st)):
         svg = obj._repr_svg_()
         assert svg.startswith("<svg") and 'mm"' in svg
