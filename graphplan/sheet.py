@@ -7,7 +7,7 @@ import argparse
 import math
 import sys
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -244,7 +244,7 @@ BUILDERS["forces"] = build_forces_sheet
 # -- the kinematics sheet (the main job) -------------------------------------------------------------
 
 FACTORS = (1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32)
-FILL = 0.85  # blocks covering more of the free field than this are not even tried
+FILL = 1.6   # blocks covering more than this share of the free field (at their largest) are not tried
 
 
 def _accel_arg(values: list[str] | None):
@@ -267,31 +267,50 @@ def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
     diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.count,
                           L=float(dg.get("L_mm", 240.0)) * k, H1=float(dg.get("H1_mm", 30.0)),
                           H2=float(dg.get("H2_mm", 30.0)), precision=args.precision, lang=lang, height=70.0 * k)
-    scales = [format_scale(n, plans.scales[n]) for n in ("mu_l", "mu_v", "mu_a")]
-    scales += [f"{sym} = {diag.record.scales[key]:.4g}" for key, sym in (("mu_t", "μt"),) if key in diag.record.scales]
-    errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
-            if e.get("error_pct") is not None and (e.get("mm") or 0) >= 20.0]
-    extra = [f"{w['precision']}: {args.precision:g} мм" if lang == "uk" else f"{w['precision']}: {args.precision:g} mm"]
-    if errs:
-        extra.append(f"{w['max_error']}: {max(errs):.2f} %")
-    blocks = [Block("notes", lambda _k, r=notes(st, scales, extra, lang): r)]
-    blocks.append(Block("position plan", lambda _k: captioned(
-        plans.position_record, f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}")))
+    state = {"plans": plans}
+
+    def velocity_plans(kv: float) -> Record:
+        """The velocity plans, at a coarser μv (kv < 1) when they do not fit at the sheet's."""
+        vp = plans
+        if kv != 1.0:
+            t = Targets().scaled(k)
+            t = replace(t, velocity=(t.velocity[0] * kv, t.velocity[1] * kv), figure=t.figure * kv)
+            vp = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
+                             targets=t, mu_l=plans.mu_l, mu_a=plans.mu_a)
+        state["plans"] = vp
+        cells = [captioned(vp.velocity_records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
+                 for p in vp.positions]
+        return flow(cells, width)
+
+    def notes_block(_k: float) -> Record:
+        vp = state["plans"]
+        vdoc = vp.to_json()
+        scales = [format_scale("mu_l", plans.mu_l), format_scale("mu_v", vp.mu_v), format_scale("mu_a", plans.mu_a)]
+        if "mu_t" in diag.record.scales:
+            scales.append(f"μt = {diag.record.scales['mu_t']:.4g}")
+        errs = [abs(e["error_pct"]) for p in vdoc["positions"] for e in p["velocity"].values()
+                if e.get("error_pct") is not None and (e.get("mm") or 0) >= 20.0]
+        extra = [f"{w['precision']}: {args.precision:g} " + ("мм" if lang == "uk" else "mm")]
+        if errs:
+            extra.append(f"{w['max_error']}: {max(errs):.2f} %")
+        return notes(st, scales, extra, lang)
+
+    blocks = [Block("position plan", lambda _k: captioned(
+        plans.position_record, f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}"))]
     blocks.append(Block("diagrams", lambda _k: diag.record_for(lang)))
-    cells = [captioned(plans.velocity_records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
-             for p in plans.positions]
-    blocks.append(Block("velocity plans", lambda _k: flow(cells, width)))
+    blocks.append(Block("velocity plans", velocity_plans, factors=(1.0, 0.8, 0.64, 0.5)))
     for p in plans.positions:
         if p.acceleration is not None:
             blocks.append(Block(f"acceleration plan {p.key}", lambda _k, p=p: captioned(
                 plans.acceleration_records[p.key],
                 f"{w['acceleration']}, {w['position']} {p.index if p.index is not None else ''} "
                 f"(φ = {p.phi % 360:.1f}°), {format_scale('mu_a', plans.mu_a)}")))
-    blocks.append(Block("velocity table", lambda _k: velocity_table(doc, lang)))
+    blocks.append(Block("velocity table", lambda _k: velocity_table(state["plans"].to_json(), lang)))
     for pos in doc["positions"]:
         if "acceleration" in pos:
             blocks.append(Block(f"acceleration table {pos['index']}",
                                 lambda _k, pos=pos: acceleration_table(doc, pos, lang)))
+    blocks.append(Block("notes", notes_block))
     return blocks, f"μl = {plans.mu_l:g}"
 
 
