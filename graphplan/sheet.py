@@ -244,7 +244,7 @@ BUILDERS["forces"] = build_forces_sheet
 # -- the kinematics sheet (the main job) -------------------------------------------------------------
 
 FACTORS = (1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32)
-FILL = 1.6   # blocks covering more than this share of the free field (at their largest) are not tried
+FILL = 1.25  # blocks covering more than this share of the free field (at their largest) are not tried
 
 
 def _accel_arg(values: list[str] | None):
