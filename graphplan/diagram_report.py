@@ -161,14 +161,18 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         for r in rows:
             lines.append("  ".join(c.rjust(wd) for c, wd in zip(r, widths)))
 
+    def g(x: float, key: str) -> str:
+        """5 significant digits; round-off below 1e-9 of the cycle's maximum shows as 0."""
+        return f"{0.0 if abs(x) <= 1e-9 * d.maxima[key] else x + 0.0:.5g}"
+
     def row_at(k: int) -> list[str]:
         r = d.drawn
         pos = d.position[k]
         return [str(pos if pos is not None else f"({k})"), f"{d.phi[k]:.2f}", f"{r.s[k]:.1f}",
-                f"{vals['s'][k]:.5g}", f"{d.truth['s'][k]:.5g}",
-                f"{r.v_at[k]:.1f}", f"{vals['v_at'][k]:.5g}", f"{d.truth['v_at'][k]:.5g}",
+                g(vals['s'][k], "s"), g(d.truth['s'][k], "s"),
+                f"{r.v_at[k]:.1f}", g(vals['v_at'][k], "v"), g(d.truth['v_at'][k], "v"),
                 _pct(d.errors_pct('v_at')[k]),
-                f"{r.a_at[k]:.1f}", f"{vals['a_at'][k]:.5g}", f"{d.truth['a_at'][k]:.5g}",
+                f"{r.a_at[k]:.1f}", g(vals['a_at'][k], "a"), g(d.truth['a_at'][k], "a"),
                 _pct(d.errors_pct('a_at')[k])]
 
     mm = w["mm"]
@@ -181,9 +185,9 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     rows = []
     for k in range(d.divisions):
         r = d.drawn
-        rows.append([f"{k}–{k + 1}", f"{d.phi_mid[k]:.2f}", f"{r.v[k]:.1f}", f"{vals['v_mid'][k]:.5g}",
-                     f"{d.truth['v_mid'][k]:.5g}", _pct(d.errors_pct('v_mid')[k]),
-                     f"{r.a[k]:.1f}", f"{vals['a_mid'][k]:.5g}", f"{d.truth['a_mid'][k]:.5g}",
+        rows.append([f"{k}–{k + 1}", f"{d.phi_mid[k]:.2f}", f"{r.v[k]:.1f}", g(vals['v_mid'][k], "v"),
+                     g(d.truth['v_mid'][k], "v"), _pct(d.errors_pct('v_mid')[k]),
+                     f"{r.a[k]:.1f}", g(vals['a_mid'][k], "a"), g(d.truth['a_mid'][k], "a"),
                      _pct(d.errors_pct('a_mid')[k])])
     block(w["mid"], [w["int"], "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w["exact"], w["err"],
                      f"{a_}, {mm}", f"{a_}, {ua}", w["exact"], w["err"]], rows)
