@@ -99,6 +99,8 @@ COMMAND_MODULES: tuple[str, ...] = (
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    from .memory import keep_freed_memory
+    keep_freed_memory()
     try:
         args = build_parser().parse_args(argv)
         if not getattr(args, "handler", None):

@@ -10,6 +10,12 @@ from graphplan.positions import study
 from graphplan.scene import load, loads
 
 ROOT = Path(__file__).resolve().parent.parent
+
+
+def pytest_configure(config):
+    """Tests and benchmarks run with the allocator as the program sets it (graphplan.memory)."""
+    from graphplan.memory import keep_freed_memory
+    keep_freed_memory()
 EXAMPLES = ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"]
 
 

@@ -99,3 +99,9 @@ def test_complete_hand_form_agrees_with_the_solver():
     assert np.allclose(slide.v, sd, atol=1e-10)
     assert np.allclose(slide.a, sdd, atol=1e-8)
     assert np.allclose(slide.coriolis, cor, atol=1e-8)
+
+
+def test_allocator_tuning_applies_on_linux():
+    import sys
+    from graphplan.memory import keep_freed_memory
+    assert keep_freed_memory() == sys.platform.startswith("linux")
