@@ -4,7 +4,6 @@ The format is documented in docs/scenes.md.
 """
 from __future__ import annotations
 
-import cmath
 import copy
 import math
 import tomllib
@@ -451,7 +450,3 @@ class _Reader:
         if mech.crank.pin in mech.frame:
             raise self.fail("crank.pin", "the crank pin cannot be a frame point")
 
-
-def unit(angle: float) -> complex:
-    """e^{iα}."""
-    return cmath.exp(1j * angle)
