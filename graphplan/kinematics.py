@@ -95,10 +95,6 @@ def place(p: complex, x: Array, v: Array, a: Array, turn: Array, omega: Array, e
     return Body(x - r, v - 1j * omega * r, a - (1j * eps - omega ** 2) * r, turn, omega, eps)
 
 
-def unit(z: Array) -> Array:
-    """z/|z|."""
-    return z / np.abs(z)
-
 
 @dataclass
 class Slide:
