@@ -790,16 +790,24 @@ def velocity_rpr(plan: VelocityPlan, d: Dyad) -> None:
     plan.inherit(slider, carrier)
 
 
+def prp_guides(sc, lay, d: Dyad) -> list[tuple[str, str, str, complex]]:
+    """The two guides crossing at a PRP group's joint C: (link, carrier K, pair key "C2C0", direction)."""
+    c = d.inner.point
+    out = []
+    for link, pair in ((d.a, d.outer_a), (d.b, d.outer_b)):
+        K = sc.mech.guides[pair.guide].body
+        _, g = guide_line(sc, lay, pair.guide, link, c)
+        out.append((link, K, f"{c}{sc.number(link)}{c}{sc.number(K)}", g))
+    return out
+
+
 def velocity_prp(plan: VelocityPlan, d: Dyad) -> None:
     """v_C = v_C(K1) + v_rel (∥ guide 1) = v_C(K2) + v_rel (∥ guide 2): two guide lines cross at c."""
     sc, lay, ex = plan.sc, plan.lay, plan.exact
     c = d.inner.point
     XC = where(sc, lay, d.a, c)
-    sides = []
-    for link, pair in ((d.a, d.outer_a), (d.b, d.outer_b)):
-        K = sc.mech.guides[pair.guide].body
-        _, g = guide_line(sc, lay, pair.guide, link, c)
-        sides.append((link, K, f"{c}{sc.number(link)}{c}{sc.number(K)}", Equation(plan.images[K].at(XC), g, "relative")))
+    sides = [(link, K, key, Equation(plan.images[K].at(XC), g, "relative"))
+             for link, K, key, g in prp_guides(sc, lay, d)]
     terms = " = ".join((f"v_{sc.name_at(c, K)} + v_{key}" if K != FRAME else f"v_{key}")
                        for _, K, key, _ in sides)
     vc = plan.solve(d.label, sub(c), sides[0][3], sides[1][3], f"v_{c} = {terms}")
@@ -964,10 +972,7 @@ def acceleration_prp(plan: AccelerationPlan, d: Dyad) -> None:
     c = d.inner.point
     XC = where(sc, lay, d.a, c)
     sides = []
-    for link, pair in ((d.a, d.outer_a), (d.b, d.outer_b)):
-        K = sc.mech.guides[pair.guide].body
-        _, g = guide_line(sc, lay, pair.guide, link, c)
-        key = f"{c}{sc.number(link)}{c}{sc.number(K)}"
+    for link, K, key, g in prp_guides(sc, lay, d):
         rel_v = plan.vel.plan_point(link, c) - plan.vel.images[K].at(XC)
         sides.append((link, K, key, slide_equation(plan, K, XC, plan.images[K].at(XC), rel_v, g, key)))
     terms = " = ".join((f"a_{sc.name_at(c, K)}" + (f" + a^k_{key}" if sc.rotating[K] else "") + f" + a^r_{key}")
