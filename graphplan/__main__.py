@@ -1,6 +1,6 @@
 """`python -m graphplan` is the same program as the `graphplan` console script."""
 import sys
 
-from .cli import main
+from graphplan.cli.main import main
 
 sys.exit(main())

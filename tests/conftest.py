@@ -6,15 +6,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from graphplan.positions import study
-from graphplan.scene import load, loads
+from graphplan.exact.positions import study
+from graphplan.model.scene import load, loads
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
 def pytest_configure(config):
-    """Tests and benchmarks run with the allocator as the program sets it (graphplan.memory)."""
-    from graphplan.memory import keep_freed_memory
+    """Tests and benchmarks run with the allocator as the program sets it (graphplan.util.memory)."""
+    from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
 EXAMPLES = ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"]
 

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from conftest import example, scene_study
-from graphplan import bench
-from graphplan.errors import AssemblyError, GraphplanError
+from graphplan.bench import run as bench
+from graphplan.util.errors import AssemblyError, GraphplanError
 
 
 @pytest.fixture(scope="module")
@@ -34,7 +34,7 @@ def test_each_sweep_goes_ok_then_warned_then_refused(stability_rows):
 def test_plans_near_the_toggle_warn_and_stay_exact():
     """Four-bar with the coupler and rocker nearly in line (O2B = 0.151 m): warnings, yet the
     exact construction (precision 0) still agrees with the solver."""
-    from graphplan.plans import build_plans
+    from graphplan.graphic.plans import build_plans
     st = scene_study(bench._scene_four_bar(0.151))
     assert st.warnings
     plans = build_plans(st, precision=0.0)
@@ -54,7 +54,7 @@ def test_slotted_link_near_its_pivot_is_warned_with_the_rate():
 
 
 def test_chords_warn_at_the_quick_return():
-    from graphplan.diagrams import chord_diagrams
+    from graphplan.graphic.diagrams import chord_diagrams
     d = chord_diagrams(example("shaper"), divisions=12, precision=0.0)
     assert d.warnings, "the shaper's quick return at 12 divisions exceeds 5 % and must be reported"
     worst = float(np.nanmax(np.abs(d.errors_of_max("a_mid"))))

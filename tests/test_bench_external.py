@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from conftest import ROOT, example, scene_study
-from graphplan import bench_external as be
+from graphplan.bench import external as be
 
 CLOSED_FORM_PCT = 1e-9   # pylinkage: rounding only (observed ~3e-12 %)
 FSOLVE_PCT = 1e-6        # mechanism: fsolve's xtol 1.49e-8 on the angles (observed ~2e-8 %)

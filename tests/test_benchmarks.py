@@ -103,5 +103,5 @@ def test_complete_hand_form_agrees_with_the_solver():
 
 def test_allocator_tuning_applies_on_linux():
     import sys
-    from graphplan.memory import keep_freed_memory
+    from graphplan.util.memory import keep_freed_memory
     assert keep_freed_memory() == sys.platform.startswith("linux")

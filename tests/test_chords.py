@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st_
 
-from graphplan.chords import (SERIES, chord_error_estimate, integrate_by_chords, midpoints,
+from graphplan.graphic.chords import (SERIES, chord_error_estimate, integrate_by_chords, midpoints,
                               periodic_spline, pole_heights, read, standard_scale)
 
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES, ROOT, derivative, example
-from graphplan.cli import main
+from graphplan.cli.main import main
 
 
 def run(capsys, *argv):
@@ -64,7 +64,7 @@ def test_phi_option_and_table(capsys):
 
 
 def test_builtin_scene_is_the_example(capsys):
-    from graphplan.scene import builtin_path
+    from graphplan.model.scene import builtin_path
     assert builtin_path().read_bytes() == (ROOT / "examples" / "crank_slider.toml").read_bytes()
     code, out, _ = run(capsys, "analyze", "--json")
     assert code == 0 and json.loads(out)["scene"] == "Кривошипно-повзунний механізм"

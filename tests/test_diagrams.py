@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES, ROOT, derivative, example
-from graphplan.cli import main
-from graphplan.diagrams import chord_diagrams
-from graphplan.errors import GraphplanError
+from graphplan.cli.main import main
+from graphplan.graphic.diagrams import chord_diagrams
+from graphplan.util.errors import GraphplanError
 
 
 @pytest.fixture(scope="module")
@@ -258,7 +258,7 @@ def test_command_json_svg_and_errors(tmp_path, capsys):
     import svgelements
     page = svgelements.SVG.parse(str(svg))
     assert page.width > 240 and "mm" in svg.read_text()[:400]
-    from graphplan.svg import to_png
+    from graphplan.drawing.svg import to_png
     assert to_png(svg.read_text())[:4] == b"\x89PNG"
     assert main(["diagrams", scene, "--lang", "en"]) == 0
     assert "At the two chosen positions" in capsys.readouterr().out

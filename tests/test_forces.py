@@ -14,11 +14,11 @@ from hypothesis import strategies as st_
 
 import random_mechanisms as rm
 from conftest import ROOT, example, scene_study
-from graphplan.cli import main
-from graphplan.forceplans import construct, measure, standard_scale
-from graphplan.kinematics import cross, dot
-from graphplan.kinetostatics import analyse, at_scene_angle, full_turn
-from graphplan.mechanism import FRAME
+from graphplan.cli.main import main
+from graphplan.graphic.forceplans import construct, measure, standard_scale
+from graphplan.exact.kinematics import cross, dot
+from graphplan.exact.kinetostatics import analyse, at_scene_angle, full_turn
+from graphplan.model.mechanism import FRAME
 
 LOADED = ["shaper", "slotter"]
 FAST = settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -348,7 +348,8 @@ def test_bad_profile_is_one_line(capsys, tmp_path):
 @pytest.mark.parametrize("kind", sorted(KINDS))
 def test_drawings_of_every_dyad_kind(kind):
     """Each group's scheme, its force polygon and the lever are drawn and render."""
-    from graphplan import forcedraw, svg
+    from graphplan.drawing import forces as forcedraw
+    from graphplan.drawing import svg
     make, point = KINDS[kind]
     st = scene_study(loaded(make()[0], point, 30.0))
     fp = construct(st, 40.0, precision=0.5)

@@ -13,13 +13,13 @@ import pytest
 from scipy.optimize import brentq
 
 from conftest import ROOT
-from graphplan.cli import main
-from graphplan.grading import Row, grade, load_keys, normalise, read_student
-from graphplan.keycmd import Progress
-from graphplan.keys import make_key, quantities
-from graphplan.positions import study
-from graphplan.scene import build, load
-from graphplan import variants as vt
+from graphplan.cli.main import main
+from graphplan.teach.grading import Row, grade, load_keys, normalise, read_student
+from graphplan.cli.key import Progress
+from graphplan.teach.keys import make_key, quantities
+from graphplan.exact.positions import study
+from graphplan.model.scene import build, load
+from graphplan.model import variants as vt
 
 EXAMPLES = ROOT / "examples"
 CRANK = EXAMPLES / "crank_slider.toml"
@@ -346,7 +346,7 @@ def test_quantities_cover_the_plans():
 
 @pytest.mark.parametrize("count", [8, 12, 24, 36])
 def test_key_sheet_stays_inside_the_frame(tmp_path, count):
-    from graphplan.keysheet import EDGE, LEFT, key_sheet
+    from graphplan.sheets.key import EDGE, LEFT, key_sheet
     path = table(tmp_path, f"# base = @EX/shaper.toml\nvariant,count,accel\nv,{count},1 3\n")
     t = vt.read(path)
     key = make_key(study(vt.mechanism(t, t.variants[0])))
@@ -388,7 +388,7 @@ def test_a_key_without_its_scene_still_grades_its_own_values():
 
 def test_written_files_get_the_usual_mode(tmp_path):
     import os
-    from graphplan.output import write_atomic
+    from graphplan.util.files import write_atomic
     mask = os.umask(0o022)
     try:
         path = write_atomic(tmp_path / "f.txt", "x")

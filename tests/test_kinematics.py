@@ -156,7 +156,7 @@ def test_a_group_that_locks_is_refused_and_one_near_locking_is_warned():
     """Four-bar O1A = 0.1, O1O2 = 0.3, AB = 0.35: with O2B = 0.15 the coupler and rocker come into
     line at φ = 0 (|AO2| = 0.2 = AB − O2B): refused; with 0.151 they nearly do: a warning."""
     import random_mechanisms as rm
-    from graphplan.errors import AssemblyError
+    from graphplan.util.errors import AssemblyError
     text, _ = rm.rrr(0.1, 0.3, 0.35, 0.15, 6.28, 1)
     with pytest.raises(AssemblyError, match=r"locks at crank angle 0\.00°"):
         scene_study(text)

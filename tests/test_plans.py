@@ -15,9 +15,9 @@ from hypothesis import strategies as st_
 
 import random_mechanisms as rm
 from conftest import EXAMPLES, ROOT, example, scene_study
-from graphplan.cli import main
-from graphplan.plans import NEAR_ZERO, SMALL_ANGLE_DEG, build_plans, measure, where
-from graphplan.scales import SERIES, Targets, standard_scale
+from graphplan.cli.main import main
+from graphplan.graphic.plans import NEAR_ZERO, SMALL_ANGLE_DEG, build_plans, measure, where
+from graphplan.graphic.scales import SERIES, Targets, standard_scale
 
 FAST = settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
@@ -316,7 +316,7 @@ def test_records_have_their_own_origin():
 
 
 def test_labels_do_not_collide():
-    from graphplan.labels import _overlap
+    from graphplan.drawing.labels import _overlap
     for name in EXAMPLES:
         plans = build_plans(example(name))
         for rec in [plans.velocity_records[1], plans.acceleration_records[1], plans.position_record]:
@@ -392,7 +392,7 @@ def test_plans_svg_files(capsys, tmp_path):
     h = re.search(r' height="([\d.]+)mm"', text).group(1)
     assert f'viewBox="0 0 {w} {h}"' in text
     assert "transform" not in text
-    from graphplan.svg import to_png
+    from graphplan.drawing.svg import to_png
     assert to_png(text)[:4] == b"\x89PNG"
 
 

@@ -9,8 +9,8 @@ from hypothesis import strategies as st_
 
 import random_mechanisms as rm
 from conftest import derivative, scene_study
-from graphplan.cli import main
-from graphplan.errors import AssemblyError
+from graphplan.cli.main import main
+from graphplan.util.errors import AssemblyError
 
 ANGLES = np.linspace(0, 360, 25)[:-1] + 0.9
 FAST = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])

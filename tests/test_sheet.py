@@ -13,9 +13,9 @@ import pytest
 from shapely.geometry import box
 
 from conftest import EXAMPLES, ROOT, example
-from graphplan.layout import overlapping_texts
-from graphplan.sheet import BUILDERS
-from graphplan.sheetform import form, title_block_box
+from graphplan.drawing.layout import overlapping_texts
+from graphplan.sheets.sheet import BUILDERS
+from graphplan.sheets.form import form, title_block_box
 
 ARGS = dict(positions=None, accel=None, precision=0.5, sheet="kinematics")
 
@@ -121,8 +121,8 @@ def test_jupyter_displays_svg():
 
 
 def test_objects_display_themselves_in_jupyter():
-    from graphplan.diagrams import chord_diagrams
-    from graphplan.plans import build_plans
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.graphic.plans import build_plans
     st = example("shaper")
     for obj in (st.mech, st, build_plans(st), chord_diagrams(st)):
         svg = obj._repr_svg_()

@@ -6,10 +6,10 @@ import io
 
 import pytest
 
-from graphplan.drawing import Record
-from graphplan.layout import Block, declutter, overlapping_texts, place
-from graphplan.sheetform import form, frame, table, title_block, title_block_box
-from graphplan.svg import render
+from graphplan.graphic.record import Record
+from graphplan.drawing.layout import Block, declutter, overlapping_texts, place
+from graphplan.sheets.form import form, frame, table, title_block, title_block_box
+from graphplan.drawing.svg import render
 
 FIELDS = {"designation": "ТММ.КП.00.000", "title": "Важільний механізм поперечно-стругального верстата",
           "student": "Студент", "teacher": "Викладач", "organisation": "НУБіП України", "scale": "1:5"}
@@ -65,7 +65,7 @@ def test_title_block_geometry():
 
 def test_dxf_reads_back_in_mm_with_cyrillic(tmp_path):
     import ezdxf
-    from graphplan.dxf import to_dxf
+    from graphplan.drawing.dxf import to_dxf
     rec, f = a1_sheet()
     rec.segment((100, 100), (200, 100), role="axis", layer="mechanism")
     data = to_dxf(rec, f.width, f.height)
@@ -112,7 +112,7 @@ def test_layout_places_without_overlap_and_shrinks():
         assert box(25, 10, 831, 584).contains(boxes[i])
         assert boxes[i].intersection(box(651, 5, 836, 60)).area == 0
     big = [Block("huge", square(2000), factors=(1.0,))]
-    from graphplan.errors import GraphplanError
+    from graphplan.util.errors import GraphplanError
     with pytest.raises(GraphplanError, match="no room for the huge"):
         place(big, (25, 10, 831, 584))
 

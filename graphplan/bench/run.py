@@ -1,0 +1,390 @@
+"""`graphplan bench`: speed against accuracy, and stability where the methods fail.
+
+Every row has ``section``, ``method``, ``setting``, ``x`` (the swept quantity), ``time_s`` and
+``max_error_pct``; charts (matplotlib, PNG and SVG) are drawn from the rows alone.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import time
+from collections.abc import Callable, Iterator
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from graphplan.util.errors import GraphplanError
+from graphplan.exact.positions import Study, study
+from graphplan.model.scene import load, loads
+
+Row = dict[str, Any]
+
+
+def examples_dir() -> Path:
+    """The examples folder of a checkout (the built-in crank-slider when installed elsewhere)."""
+    here = Path(__file__).resolve().parents[2] / "examples"
+    return here if here.is_dir() else Path(str(resources.files("graphplan") / "data"))
+
+
+def example(name: str) -> Study:
+    path = examples_dir() / f"{name}.toml"
+    if not path.exists():
+        raise GraphplanError(f"bench needs examples/{name}.toml (run it from a checkout)")
+    return study(load(path))
+
+
+def best_time(fn: Callable[[], Any], repeats: int = 3) -> float:
+    """The best wall time of ``repeats`` calls (s)."""
+    best = math.inf
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+# -- the analytic solver's speed ------------------------------------------------------------------
+
+def crank_slider_exact(phi_deg: np.ndarray, r: float, l: float, w: float) -> np.ndarray:
+    """v_B = −rω·sinφ·(1 + r·cosφ/√(l² − r²·sin²φ)) (centred crank-slider)."""
+    p = np.radians(phi_deg)
+    return -r * w * np.sin(p) * (1 + r * np.cos(p) / np.sqrt(l ** 2 - r ** 2 * np.sin(p) ** 2))
+
+
+def solver_speed(quick: bool) -> Iterator[Row]:
+    """Positions per second of the analytic solver, 1 … 10^5 positions (10^4 with --quick)."""
+    top = 4 if quick else 5
+    cs = example("crank_slider")
+    shaper = example("shaper")
+    for n in [10 ** k for k in range(top + 1)]:
+        phi = np.linspace(0.0, 360.0, n, endpoint=False) + 0.123
+        for name, st in (("crank_slider", cs), ("shaper", shaper)):
+            t = best_time(lambda st=st: st.solve(phi), 3 if n < 10 ** 5 else 1)
+            error = None
+            if name == "crank_slider":
+                v = st.solve(phi).point("B")[1].real
+                exact = crank_slider_exact(phi, 0.064, 0.307, 293.07)
+                error = float(np.max(np.abs(v - exact)) / np.max(np.abs(exact)) * 100)
+            yield {"section": "speed", "method": "analytic", "setting": f"{name} N={n}", "x": n,
+                   "time_s": t, "positions_per_s": n / t, "max_error_pct": error}
+
+
+# -- stability: sweeps toward failure -----------------------------------------------------------
+
+def _scene_four_bar(l3: float) -> str:
+    return ("[frame.points]\nO1 = [0, 0]\nO2 = [0.3, 0]\n[crank]\npivot = \"O1\"\npin = \"A\"\n"
+            "length = 0.1\nrpm = 60\n[[link]]\nname = \"AB\"\njoints = [\"A\", \"B\"]\nlength = 0.35\n"
+            f"[[link]]\nname = \"O2B\"\njoints = [\"O2\", \"B\"]\nlength = {l3}\n[positions]\nstart = 0\n")
+
+
+def _scene_crank_slider(ratio: float) -> str:
+    return ("[frame.points]\nO = [0, 0]\n[frame.guides]\nx = { through = [0, 0], angle_deg = 0 }\n"
+            "[crank]\npivot = \"O\"\npin = \"A\"\nlength = 0.1\nrpm = 60\n[[link]]\nname = \"AB\"\n"
+            f"joints = [\"A\", \"B\"]\nlength = {0.1 * ratio}\n[[link]]\nname = \"B\"\njoints = [\"B\"]\n"
+            "slides_on = \"x\"\n[positions]\nstart = 0\n")
+
+
+def _scene_slotted(ratio: float) -> str:
+    """Crank 0.1 about O, the rocker pivoted at (0.1·ratio, 0): ratio → 1 brings the pivot onto the
+    crank circle, where the slot's direction jumps."""
+    return ("[frame.points]\nO = [0, 0]\nP = [" + f"{0.1 * ratio}" + ", 0]\n[crank]\npivot = \"O\"\n"
+            "pin = \"A\"\nlength = 0.1\nrpm = 60\n[[link]]\nname = \"2\"\njoints = [\"A\"]\n"
+            "slides_on = \"PQ\"\n[[link]]\nname = \"PQ\"\njoints = [\"P\"]\npoints = { Q = [0.2, 0] }\n"
+            "[positions]\nstart = 0\n")
+
+
+SWEEPS: dict[str, tuple[Callable[[float], str], str, list[float]]] = {
+    "four_bar toward its toggle (O2B → 0.15 m)": (_scene_four_bar, "O2B",
+                                                        [0.25, 0.2, 0.17, 0.16, 0.155, 0.152, 0.151, 0.1505, 0.15]),
+    "crank_slider l/r → 1": (_scene_crank_slider, "AB", [4.0, 2.0, 1.5, 1.2, 1.1, 1.05, 1.01, 1.001, 1.0]),
+    "slotted link, rocker pivot → crank circle (c/r → 1)": (
+        _scene_slotted, "PQ", [2.0, 1.5, 1.2, 1.1, 1.05, 1.01, 1.001, 1.0]),
+}
+
+
+def stability(quick: bool) -> Iterator[Row]:
+    """Sweep each mechanism toward its failure: the smallest angle between the groups' direction
+    lines, the analytic velocity's agreement with finite differences of positions, and what the
+    program says (ok, warning, refusal)."""
+    for title, (make, link, values) in SWEEPS.items():
+        for x in values:
+            row: Row = {"section": "stability", "method": "analytic", "setting": title, "x": x,
+                        "time_s": None, "max_error_pct": None, "min_angle_deg": None, "status": "ok"}
+            t0 = time.perf_counter()
+            try:
+                st = study(loads(make(x), f"<{title}>"))
+            except GraphplanError as exc:
+                row.update(status="refused", message=exc.line())
+                row["time_s"] = time.perf_counter() - t0
+                yield row
+                continue
+            phi = np.linspace(0.0, 360.0, 721)[:-1] + 0.05
+            kin = st.solve(phi)
+            cond = min(float(np.min(c)) for c in kin.condition.values())
+            w = kin.bodies[link].omega
+            h = 1e-4
+            ang = lambda p: np.unwrap(st.solve(p).bodies[link].theta)  # noqa: E731
+            fd = (ang(phi + h) - ang(phi - h)) / (2 * math.radians(h)) * st.mech.omega1
+            err = float(np.max(np.abs(w - fd)) / np.max(np.abs(w)) * 100)
+            from graphplan.graphic.plans import build_plans
+            try:
+                doc = build_plans(st, precision=0.5).to_json()
+                perr = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
+                        if e.get("error_pct") is not None and (e.get("mm") or 0.0) >= 20.0]
+                row["plans_max_error_pct"] = max(perr) if perr else None
+                row["plans_warnings"] = sum(len(p["warnings"]) for p in doc["positions"])
+            except GraphplanError as exc:
+                row["plans_max_error_pct"], row["plans_message"] = None, exc.line()
+            row.update(time_s=time.perf_counter() - t0, max_error_pct=err,
+                       min_angle_deg=math.degrees(math.asin(min(cond, 1.0))),
+                       max_omega=float(np.max(np.abs(w))),
+                       status="warning" if st.warnings else "ok", message="; ".join(st.warnings))
+            yield row
+
+
+def chords(quick: bool) -> Iterator[Row]:
+    """Accuracy against cost of the method of chords: the largest error of v and a (in % of the
+    cycle's maximum, at the chord midpoints) against the number of divisions, for several pole
+    distances and drafting precisions."""
+    from graphplan.graphic.diagrams import chord_diagrams
+    counts = [8, 12, 24, 48, 96] + ([] if quick else [180, 360])
+    poles = [20.0, 30.0, 50.0] if not quick else [20.0, 50.0]
+    for name in ("crank_slider", "shaper"):
+        st = example(name)
+        for precision in (0.0, 0.5):
+            for h in poles:
+                for n in counts:
+                    elapsed = best_time(lambda: chord_diagrams(st, divisions=n, H1=h, H2=h,
+                                                               precision=precision), 3)
+                    d = chord_diagrams(st, divisions=n, H1=h, H2=h, precision=precision)
+                    for key, label in (("v_mid", "v"), ("a_mid", "a")):
+                        err = float(np.nanmax(np.abs(d.errors_of_max(key))))
+                        yield {"section": "chords", "method": f"chords {label}", "x": n,
+                               "setting": f"{name} H1=H2={h:g} mm precision={precision:g} mm",
+                               "scene": name, "H_mm": h, "precision_mm": precision,
+                               "time_s": elapsed, "max_error_pct": err}
+
+
+def plans(quick: bool) -> Iterator[Row]:
+    """The plans' error against the drafting precision (velocities and accelerations of vectors
+    drawn at least 20 mm long; all positions, one acceleration plan)."""
+    from graphplan.graphic.plans import build_plans
+    names = ["crank_slider", "shaper"] if quick else ["crank_slider", "four_bar", "shaper", "slotter"]
+    for name in names:
+        st = example(name)
+        for precision in (0.0, 0.1, 0.25, 0.5, 1.0):
+            t0 = time.perf_counter()
+            doc = build_plans(st, precision=precision).to_json()
+            elapsed = time.perf_counter() - t0
+            for kind in ("velocity", "acceleration"):
+                errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p.get(kind, {}).values()
+                        if e.get("error_pct") is not None and (e.get("mm") or 0.0) >= 20.0]
+                yield {"section": "plans", "method": f"plans {kind}", "x": precision,
+                       "setting": f"{name} precision={precision:g} mm", "scene": name,
+                       "time_s": elapsed, "max_error_pct": max(errs) if errs else None,
+                       "mean_error_pct": float(np.mean(errs)) if errs else None}
+
+
+def sheet_time(quick: bool) -> Iterator[Row]:
+    """The time of one whole A1 sheet (in process; the command adds Python's start-up)."""
+    from graphplan.sheets.sheet import BUILDERS
+    from graphplan.sheets.form import form
+    args = argparse.Namespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="kinematics")
+    for name in ("crank_slider", "shaper"):
+        st = example(name)
+        t = best_time(lambda st=st: BUILDERS["kinematics"](st, form("A1"), args).svg(), 1 if quick else 3)
+        yield {"section": "sheet", "method": "sheet", "x": 1, "setting": f"{name} A1 SVG",
+               "time_s": t, "max_error_pct": None}
+
+
+def external(quick: bool) -> Iterator[Row]:
+    """The same analysis by pylinkage and by `mechanism`, where installed, side by side (ratios)."""
+    from graphplan.bench.external import external_rows
+    for row in external_rows(n_positions=360, repeats=3 if quick else 5, examples_dir=examples_dir()):
+        yield {"section": "external", "x": row.get("n_positions"), **row}
+
+
+SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
+    "speed": solver_speed,
+    "chords": chords,
+    "plans": plans,
+    "stability": stability,
+    "sheet": sheet_time,
+    "external": external,
+}
+
+
+def run(out: Path, quick: bool, show_progress: bool | None = None) -> list[Row]:
+    """Run every section, write ``out/bench.json`` and the charts; return the rows."""
+    from graphplan.cli.main import dumps
+    from graphplan.util.files import write_atomic
+    from graphplan.util.progress import progress
+
+    rows: list[Row] = []
+    for name in progress(list(SECTIONS), len(SECTIONS), "bench", show_progress):
+        rows.extend(SECTIONS[name](quick))
+    doc = {"quick": quick, "rows": rows}
+    write_atomic(out / "bench.json", dumps(_clean(doc)))
+    charts(rows, out)
+    return rows
+
+
+def _clean(value: Any) -> Any:
+    """JSON-safe: floats that are not finite become null."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_clean(v) for v in value]
+    return value
+
+
+def charts(rows: list[Row], out: Path) -> list[Path]:
+    """Draw each section's chart as PNG and SVG (deterministic files)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from graphplan.util.files import write_atomic
+    import io
+
+    plt.rcParams["svg.hashsalt"] = "graphplan"
+    written = []
+    for name, draw in CHARTS.items():
+        section = [r for r in rows if r["section"] == name]
+        if not section:
+            continue
+        fig = draw(section, plt)
+        for fmt in ("png", "svg"):
+            buf = io.BytesIO()
+            meta = {"Date": None} if fmt == "svg" else {"Software": None}
+            fig.savefig(buf, format=fmt, dpi=110, metadata=meta)
+            written.append(write_atomic(out / f"{name}.{fmt}", buf.getvalue()))
+        plt.close(fig)
+    return written
+
+
+def _chart_speed(rows: list[Row], plt):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for setting in sorted({r["setting"].split(" N=")[0] for r in rows}):
+        pts = [(r["x"], r["positions_per_s"]) for r in rows if r["setting"].startswith(setting + " ")]
+        ax.loglog(*zip(*pts), "o-", label=f"analytic solver, {setting}")
+    ax.set_xlabel("positions per call")
+    ax.set_ylabel("positions per second")
+    ax.set_title("Speed of the analytic solver (vectorised numpy)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    return fig
+
+
+def _chart_stability(rows: list[Row], plt):
+    settings = list(dict.fromkeys(r["setting"] for r in rows))
+    fig, axes = plt.subplots(1, len(settings), figsize=(5 * len(settings), 4.2))
+    for ax, setting in zip(np.atleast_1d(axes), settings):
+        sel = [r for r in rows if r["setting"] == setting]
+        xs = [r["x"] for r in sel if r["min_angle_deg"] is not None]
+        ax.plot(xs, [r["min_angle_deg"] for r in sel if r["min_angle_deg"] is not None], "o-",
+                label="smallest angle between direction lines, °")
+        ax.set_yscale("log")
+        ax2 = ax.twinx()
+        ax2.plot(xs, [r["max_omega"] for r in sel if r["min_angle_deg"] is not None], "s--", color="C1",
+                 label="max |ω| of the link, rad/s")
+        pe = [(r["x"], r.get("plans_max_error_pct")) for r in sel if r.get("plans_max_error_pct") is not None]
+        if pe:
+            ax2.plot(*zip(*pe), "^:", color="C2", label="plans' max error at 0.5 mm, %")
+        ax2.set_yscale("log")
+        for r in sel:
+            if r["status"] != "ok":
+                ax.axvline(r["x"], color="red" if r["status"] == "refused" else "orange", alpha=0.4)
+        ax.set_title(setting, fontsize=9)
+        ax.set_xlabel("swept parameter (red: refused, orange: warned)")
+        ax.invert_xaxis()
+        ax.legend(loc="lower left", fontsize=7)
+        ax2.legend(loc="upper right", fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+def _chart_chords(rows: list[Row], plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
+    styles = {}
+    for r in rows:
+        key = (r["scene"], r["method"], r["H_mm"], r["precision_mm"])
+        styles.setdefault(key, []).append(r)
+    for (scene, method, h, p), sel in sorted(styles.items()):
+        ls = "-" if p == 0 else "--"
+        mk = "o" if method.endswith("v") else "s"
+        label = f"{scene} {method[-1]} H={h:g} p={p:g}"
+        line = ax1.loglog([r["x"] for r in sel], [r["max_error_pct"] for r in sel], ls, marker=mk, ms=3,
+                          label=label)[0]
+        if h == max(k[2] for k in styles):      # one pole distance on the time chart, to stay legible
+            ax2.loglog([r["time_s"] for r in sel], [r["max_error_pct"] for r in sel], ls, marker=mk, ms=3,
+                       color=line.get_color(), label=label)
+    for ax in (ax1, ax2):
+        ax.axhline(5.0, color="red", lw=0.8)
+        ax.text(ax.get_xlim()[0], 5.3, " lab's 5 %", color="red", fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_ylabel("max error, % of the cycle's maximum")
+    ax1.set_xlabel("divisions of the period")
+    ax2.set_xlabel("wall time of one construction, s")
+    ax1.set_title("Method of chords: error against divisions (solid: exact ruler, dashed: 0.5 mm)", fontsize=9)
+    ax2.set_title("… and against the wall time of one construction (largest H)", fontsize=9)
+    ax2.legend(fontsize=5)
+    ax1.legend(fontsize=5, ncol=2)
+    fig.tight_layout()
+    return fig
+
+
+def _chart_plans(rows: list[Row], plt):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for scene in sorted({r["scene"] for r in rows}):
+        for method, ls in (("plans velocity", "o-"), ("plans acceleration", "s--")):
+            sel = [r for r in rows if r["scene"] == scene and r["method"] == method and r["x"] > 0]
+            if sel:
+                ax.loglog([r["x"] for r in sel], [r["max_error_pct"] for r in sel], ls, label=f"{scene}, {method[6:]}")
+    ax.set_xlabel("drafting precision, mm (0: exact, error ~1e-12 %)")
+    ax.set_ylabel("max error of vectors ≥ 20 mm, %")
+    ax.axhline(5.0, color="red", lw=0.8)
+    ax.set_title("Plans: error against the drafting precision", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
+                               "stability": _chart_stability}
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    import sys
+    out = Path(args.out)
+    t0 = time.perf_counter()
+    rows = run(out, args.quick)
+    sys.stdout.write(summary(rows) + f"\n{len(rows)} rows in {time.perf_counter() - t0:.1f} s → "
+                     f"{out / 'bench.json'}\n")
+    return 0
+
+
+def summary(rows: list[Row]) -> str:
+    """One line per row, for people."""
+    lines = [f"{'section':10} {'method':10} {'setting':58} {'time, s':>10} {'error, %':>10}  status"]
+    for r in rows:
+        t = "" if r.get("time_s") is None else f"{r['time_s']:.3g}"
+        e = "" if r.get("max_error_pct") is None else f"{r['max_error_pct']:.3g}"
+        setting = r["setting"] + (f" x={r['x']:g}" if r["section"] == "stability" else "")
+        lines.append(f"{r['section']:10} {r['method'][:10]:10} {setting[:58]:58} {t:>10} {e:>10}  "
+                     f"{r.get('status') or r.get('note') or ''}")
+    return "\n".join(lines)
+
+
+def register(sub) -> None:
+    p = sub.add_parser("bench", help="speed–accuracy–stability study: DIR/bench.json plus charts",
+                       description="Times and errors of the analytic solver, the graphical plans and the "
+                                   "chord diagrams; sweeps toward the mechanisms' failures.")
+    p.add_argument("-o", "--out", default="bench", metavar="DIR", help="output folder (default: bench)")
+    p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
+    p.set_defaults(handler=cmd_bench)

@@ -1,0 +1,322 @@
+"""`graphplan key VARIANTS -o DIR` and `graphplan check KEY STUDENT.csv`: teachers' keys and grading.
+
+Per variant DIR/<id>/ gets key.json (everything, with the resolved scene), key.csv (the long format a
+student fills in, with the exact values), key.svg and key.pdf (the A4 key sheet); the group gets
+DIR/summary.json, summary.csv, summary.txt and summary.svg/.pdf. Every file is written whole or not
+at all; the same input gives the same bytes.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, TextIO
+
+from graphplan.util.errors import GraphplanError
+from graphplan.util.files import write_atomic
+
+SUMMARY_FORMAT = "graphplan-keys/1"
+
+
+class Progress:
+    """A one-line progress bar on stderr: only on a terminal and not with --quiet."""
+
+    def __init__(self, total: int, enabled: bool, stream: TextIO | None = None, width: int = 24):
+        self.total, self.enabled, self.width = total, enabled, width
+        self.stream = stream or sys.stderr
+        self.done_count = 0
+        self.shown = False
+
+    def step(self, label: str) -> None:
+        if not self.enabled:
+            return
+        filled = self.width * self.done_count // max(self.total, 1)
+        bar = "#" * filled + "-" * (self.width - filled)
+        self.stream.write(f"\r[{bar}] {self.done_count}/{self.total} {label[:30]:<30}")
+        self.stream.flush()
+        self.shown = True
+
+    def advance(self) -> None:
+        self.done_count += 1
+
+    def message(self, text: str) -> None:
+        """A diagnostic line (always shown), printed above the bar."""
+        if self.shown:
+            self.stream.write("\r" + " " * (self.width + 45) + "\r")
+        self.stream.write(text + "\n")
+        self.stream.flush()
+
+    def close(self) -> None:
+        if self.enabled and self.shown:
+            self.step("done")
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def pdf_bytes(svg_text: str) -> bytes:
+    """The key sheet as PDF with fixed metadata (see svg.to_pdf)."""
+    from graphplan.drawing.svg import to_pdf
+    return to_pdf(svg_text)
+
+
+def _parse_tol(items: list[str], tolerance: float | None) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        try:
+            pct = float(value)
+        except ValueError:
+            pct = -1.0
+        if not sep or not name.strip() or not 0 < pct <= 100:
+            raise GraphplanError(f"--tol {item!r}: write QUANTITY=PERCENT, e.g. --tol 'a_*=8'")
+        out[name.strip()] = pct
+    if tolerance is not None:
+        if not 0 < tolerance <= 100:
+            raise GraphplanError(f"--tolerance must be a percentage in (0, 100], got {tolerance:g}")
+        out["*"] = tolerance
+    return out
+
+
+def write_key(folder: Path, key: dict[str, Any], pdf: bool = True) -> list[Path]:
+    """The variant's files: key.json, key.csv, key.svg and key.pdf."""
+    from graphplan.cli.main import dumps
+    from graphplan.teach.keys import key_csv
+    from graphplan.sheets.key import A4_PORTRAIT, key_sheet
+    from graphplan.drawing.svg import render
+    svg = render(key_sheet(key), *A4_PORTRAIT, title=f"Answer key, variant {key['variant']}")
+    files = [write_atomic(folder / "key.json", dumps(key)),
+             write_atomic(folder / "key.csv", key_csv(key)),
+             write_atomic(folder / "key.svg", svg)]
+    if pdf:
+        files.append(write_atomic(folder / "key.pdf", pdf_bytes(svg)))
+    return files
+
+
+def summary_columns(rows: list[dict[str, Any]]) -> list[str]:
+    """The union of the rows' keys, first seen first, without columns empty in every row; the note last."""
+    cols: list[str] = []
+    for r in rows:
+        cols += [c for c in r if c not in cols and c != "note"]
+    cols = [c for c in cols if any(r.get(c) not in (None, "") for r in rows)]
+    if any("note" in r for r in rows):
+        cols.append("note")
+    return cols
+
+
+def summary_csv(columns: list[str], rows: list[dict[str, Any]]) -> str:
+    import csv
+    import io
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(columns)
+    for r in rows:
+        writer.writerow([_csv_value(r.get(c)) for c in columns])
+    return buf.getvalue()
+
+
+def _csv_value(v: Any) -> str:
+    from graphplan.teach.keys import fmt
+    if v is None:
+        return ""
+    if isinstance(v, float):
+        return fmt(v, 10)
+    return str(v)
+
+
+def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
+                 overrides: set[str] = frozenset()) -> str:
+    """The summary as a fixed-width table for printing (the variants' data as given)."""
+    from graphplan.sheets.key import cell, display
+    table_cols = [c for c in columns if c != "note"]
+    cells = [[cell(r.get(c), c in overrides) for c in table_cols] for r in rows]
+    head = [display(c) for c in table_cols]
+    unit_row = [units.get(c, "") for c in table_cols]
+    widths = [max(len(x) for x in col) for col in zip(head, unit_row, *cells)]
+    left = {i for i, c in enumerate(table_cols) if c in ("variant", "student", "status")}
+    lines = [title, ""]
+    for r in [head, unit_row] + cells:
+        lines.append("  ".join(x.ljust(w) if i in left else x.rjust(w)
+                               for i, (x, w) in enumerate(zip(r, widths))).rstrip())
+    from graphplan.sheets.key import SUMMARY_NOTE
+    lines += ["", SUMMARY_NOTE]
+    notes = [r for r in rows if r.get("note")]
+    if notes:
+        lines.append("")
+        lines += [f"variant {r['variant']}: {r['note']}" for r in notes]
+    return "\n".join(lines) + "\n"
+
+
+@dataclass(frozen=True)
+class KeyOptions:
+    """What every variant's job needs besides its row."""
+    out: Path
+    tolerances: dict[str, float]
+    divisions: int | None
+    pdf: bool
+
+
+_JOB: dict[str, Any] = {}
+
+
+def _init_job(table, options: KeyOptions) -> None:
+    _JOB["table"], _JOB["options"] = table, options
+
+
+def _variant_job(index: int) -> dict[str, Any]:
+    """Build, key and write one variant (in a worker process or inline). Returns its summary."""
+    from graphplan.model import variants as vt
+    from graphplan.teach.keys import make_key, summary_row, summary_units
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import build
+    table, opt = _JOB["table"], _JOB["options"]
+    v = table.variants[index]
+    try:
+        tree = vt.scene_tree(table, v)
+        st = study(build(tree, v.where(table.path)))
+        key = make_key(st, variant=v.id, student=v.student, base=v.base.name, overrides=v.overrides,
+                       scene=tree, divisions=v.divisions or opt.divisions,
+                       tolerances=[v.tolerances, opt.tolerances, table.tolerances])
+    except GraphplanError as exc:
+        note, prefix = exc.line(), v.where(table.path)
+        if note.startswith(prefix):
+            note = note[len(prefix):].lstrip(": ")
+        return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note}, "units": {},
+                "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": note},
+                "message": f"graphplan: {v.where(table.path)}: skipped: {note}"}
+    write_key(opt.out / v.id, key, pdf=opt.pdf)
+    return {"entry": {"variant": v.id, "status": "ok", "key": f"{v.id}/key.json", "note": ""},
+            "row": summary_row(key), "units": summary_units(key), "message": None}
+
+
+def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[dict[str, Any]]:
+    """Every variant's job, in the table's order; ``jobs`` > 1 spreads them over processes
+    (the files do not depend on it: each variant's are its own)."""
+    n = len(table.variants)
+    results = []
+    if jobs <= 1 or n <= 1:
+        _init_job(table, options)
+        for k in range(n):
+            progress.step(f"variant {table.variants[k].id}")
+            results.append(_variant_job(k))
+            _report(results[-1], progress)
+        return results
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context(method),
+                             initializer=_init_job, initargs=(table, options)) as pool:
+        progress.step(f"variant {table.variants[0].id}")
+        for k, result in enumerate(pool.map(_variant_job, range(n))):
+            results.append(result)
+            _report(result, progress)
+            if k + 1 < n:
+                progress.step(f"variant {table.variants[k + 1].id}")
+    return results
+
+
+def _report(result: dict[str, Any], progress: Progress) -> None:
+    if result["message"]:
+        progress.message(result["message"])
+    progress.advance()
+
+
+def cmd_key(args: argparse.Namespace) -> int:
+    from graphplan.model import variants as vt
+    from graphplan.cli.main import dumps
+    from graphplan.sheets.key import A4_LANDSCAPE, summary_sheet
+    from graphplan.drawing.svg import render
+
+    table = vt.read(args.variants)
+    vt.check_columns(table)
+    cli_tol = _parse_tol(args.tol, args.tolerance)
+    if args.divisions is not None and not 2 <= args.divisions <= 720:
+        raise GraphplanError(f"--divisions must be from 2 to 720, got {args.divisions}")
+    if args.jobs is not None and args.jobs < 1:
+        raise GraphplanError(f"--jobs must be at least 1, got {args.jobs}")
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise GraphplanError("the output must be a folder", str(out))
+    jobs = args.jobs or min(os.cpu_count() or 1, 8, len(table.variants))
+    progress = Progress(len(table.variants), enabled=not args.quiet and sys.stderr.isatty())
+    results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf), jobs, progress)
+    progress.close()
+    entries = [r["entry"] for r in results]
+    rows = [r["row"] for r in results]
+    written = sum(e["status"] == "ok" for e in entries)
+    title = (f"Answer keys: {table.path.name} — {len(entries)} variants, {written} written"
+             + (f", {len(entries) - written} skipped" if written < len(entries) else ""))
+    columns = summary_columns(rows)
+    units: dict[str, str] = {}
+    for r in results:
+        units.update({c: u for c, u in r["units"].items() if c in columns and c not in units})
+    doc = {"format": SUMMARY_FORMAT, "table": table.path.name, "variants": entries,
+           "columns": columns, "units": units, "rows": rows}
+    text = summary_text(title, columns, rows, units, overrides=_override_columns(table))
+    if written:
+        write_atomic(out / "summary.json", dumps(doc))
+        write_atomic(out / "summary.csv", summary_csv(columns, rows))
+        write_atomic(out / "summary.txt", text)
+        svg = render(summary_sheet(title, [c for c in columns if c != "note"], rows, units,
+                                   _override_columns(table)),
+                     *A4_LANDSCAPE, title=title)
+        write_atomic(out / "summary.svg", svg)
+        if not args.no_pdf:
+            write_atomic(out / "summary.pdf", pdf_bytes(svg))
+    sys.stdout.write(dumps(doc) if args.json else text)
+    if not written:
+        raise GraphplanError("no variant could be built; nothing written", str(table.path))
+    return 0
+
+
+def _override_columns(table) -> set[str]:
+    return {c for v in table.variants for c in v.overrides}
+
+
+def cmd_check(args: argparse.Namespace) -> int:
+    from graphplan.cli.main import dumps
+    from graphplan.teach.grading import grade, load_keys, read_student, report_json, report_table
+    keys = load_keys(args.key)
+    rows = read_student(args.student)
+    graded = grade(keys, rows, signed=args.signed)
+    if args.json:
+        sys.stdout.write(dumps(report_json(graded, args.key, args.student, args.signed)))
+    else:
+        sys.stdout.write(report_table(graded, args.key, args.student))
+    return 0
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "key", help="teachers' answer keys for a group's variants (JSON, CSV, A4 key sheets, a summary)",
+        description="Exact answers for every variant of a table over a base scene (docs/keys.md): "
+                    "velocities at every position, accelerations at the acceleration-plan positions, "
+                    "the output's s, v, a at the diagram's divisions, with tolerances.")
+    p.add_argument("variants", help="the variant table: CSV (or .toml), one row per variant")
+    p.add_argument("-o", "--output", required=True, metavar="DIR", help="folder for the keys")
+    p.add_argument("--tolerance", type=float, metavar="PCT",
+                   help="the tolerance, %%, of every quantity without a setting of its own (default: the "
+                        "table's, else 5)")
+    p.add_argument("--tol", action="append", default=[], metavar="QUANTITY=PCT",
+                   help="a quantity's tolerance, %%; shell-style patterns: --tol 'a_*=8' (repeatable)")
+    p.add_argument("--divisions", type=int, metavar="N",
+                   help="the diagram's divisions (default: the table's, else the scene's positions)")
+    p.add_argument("--no-pdf", action="store_true", help="write the SVG key sheets only")
+    p.add_argument("--jobs", type=int, metavar="N",
+                   help="variants built in N processes at once (default: the processors, at most 8)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p.set_defaults(handler=cmd_key)
+
+    c = sub.add_parser(
+        "check", help="grade a student's long table (variant, position, quantity, value) against a key",
+        description="Per row the exact value, the percent error and pass/fail by the key's tolerance; "
+                    "a failing row is searched over the turn and, when it fits another position, "
+                    "that position is named. Then a summary.")
+    c.add_argument("key", help="a key folder written by 'graphplan key', a variant's folder or its key.json")
+    c.add_argument("student", help="the student's table: CSV with position, quantity, value (and variant)")
+    c.add_argument("--json", action="store_true", help="the graded rows and the summary as JSON")
+    c.add_argument("--signed", action="store_true",
+                   help="compare signs of signed quantities (ω, ε, s, v, a) instead of magnitudes")
+    c.set_defaults(handler=cmd_check)

@@ -1,0 +1,211 @@
+"""Over a full turn (seed 003, figs. 4–5): the balancing moment against the crank angle and the
+hodographs of the reactions in the revolute pairs — as matplotlib charts (PNG and SVG, byte-stable)
+and as construction records for the force sheet."""
+from __future__ import annotations
+
+import io
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from graphplan.graphic.record import Record
+from graphplan.graphic.forceplans import standard_scale
+from graphplan.exact.kinetostatics import Kinetostatics, full_turn
+from graphplan.util.files import write_atomic
+from graphplan.exact.positions import Study
+
+SAMPLES = 360
+
+
+@dataclass
+class Turn:
+    """The force analysis over one turn from position 0: ``turn_deg`` = crank turn since position 0."""
+    ks: Kinetostatics
+    turn_deg: np.ndarray
+    count: int                      # the scene's number of positions (marked on the charts)
+
+    @property
+    def revolute(self) -> list[str]:
+        """Keys of the reactions in revolute pairs, in the order the groups found them."""
+        return [k for g in self.ks.groups for k in g.reactions if self.ks.reactions[k].kind == "R"]
+
+    def position_index(self) -> list[tuple[int, int]]:
+        """(sample index, position number) of the scene's positions on the sample grid."""
+        step = SAMPLES // self.count if SAMPLES % self.count == 0 else None
+        if step is None:
+            return []
+        return [(k * step, k) for k in range(self.count)]
+
+
+def turn(st: Study, samples: int = SAMPLES) -> Turn:
+    """Kinetostatics at ``samples`` crank angles from position 0 (every 1° by default)."""
+    ks = full_turn(st, samples)
+    return Turn(ks, np.arange(samples) * 360.0 / samples, st.mech.count)
+
+
+def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Split a closed curve where the working stroke starts or ends (an external force switches
+    on or off, so the reactions jump): (indices, values) pieces, closed over the turn."""
+    work = t.ks.working
+    n = len(work)
+    cuts = [k for k in range(n) if work[k] != work[k - 1]]
+    if not cuts:
+        idx = np.r_[np.arange(n), 0]
+        return [(idx, values[idx])]
+    out = []
+    for a, b in zip(cuts, cuts[1:] + [cuts[0] + n]):
+        idx = np.arange(a, b) % n
+        out.append((idx, values[idx]))
+    return out
+
+
+# -- matplotlib ------------------------------------------------------------------------------
+
+def _figure_bytes(fig, fmt: str) -> bytes:
+    import matplotlib
+    matplotlib.rcParams["svg.hashsalt"] = "graphplan"
+    buf = io.BytesIO()
+    meta = {"Date": None} if fmt == "svg" else {"Software": None}
+    fig.savefig(buf, format=fmt, metadata=meta, dpi=150, bbox_inches="tight")
+    return buf.getvalue()
+
+
+def moment_figure(t: Turn, title: str = ""):
+    """M_b(φ): closed form (line) and power balance (dots), the working stroke shaded."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    fig = Figure(figsize=(7.0, 3.6))
+    ax = fig.add_subplot()
+    ks = t.ks
+    x = t.turn_deg
+    ax.plot(np.r_[x, 360.0], np.r_[ks.balancing, ks.balancing[0]], color="black", lw=1.2,
+            label="closed form (kinetostatics)")
+    every = max(1, len(x) // 36)
+    ax.plot(x[::every], ks.power()[::every], "o", ms=3, mfc="none", color="black",
+            label="power balance")
+    work = ks.working
+    for idx, _ in _pieces(t, work.astype(float)):
+        if work[idx[0]]:
+            ax.axvspan(x[idx[0]], x[idx[0]] + len(idx) * (x[1] - x[0]), color="0.9", lw=0)
+    ax.axhline(0.0, color="0.5", lw=0.6)
+    for k, pos in t.position_index():
+        ax.axvline(x[k], color="0.85", lw=0.5)
+    ax.set_xlim(0, 360)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.set_xlabel("crank turn from position 0, ° (working stroke shaded)")
+    ax.set_ylabel("balancing moment M_b, N·m")
+    ax.set_title(title or "Balancing moment on the crank")
+    ax.legend(loc="best", fontsize=8)
+    return fig
+
+
+def hodograph_figure(t: Turn, title: str = ""):
+    """The hodographs of the revolute-pair reactions: the tip of R over the turn, positions marked."""
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    keys = t.revolute
+    cols = min(3, len(keys)) or 1
+    rows = math.ceil(len(keys) / cols) or 1
+    fig = Figure(figsize=(3.4 * cols, 3.4 * rows))
+    for n, key in enumerate(keys):
+        ax = fig.add_subplot(rows, cols, n + 1)
+        f = t.ks.reactions[key].force
+        for idx, z in _pieces(t, f):
+            ax.plot(z.real, z.imag, color="black", lw=1.0)
+        for k, pos in t.position_index():
+            ax.plot(f[k].real, f[k].imag, "o", ms=2.5, color="black")
+            ax.annotate(str(pos), (f[k].real, f[k].imag), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+        ax.plot([0], [0], "+", color="black", ms=8)
+        ax.axhline(0, color="0.8", lw=0.5)
+        ax.axvline(0, color="0.8", lw=0.5)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_title(f"{key} (pair {t.ks.reactions[key].point})", fontsize=9)
+        ax.set_xlabel("R_x, N", fontsize=8)
+        ax.set_ylabel("R_y, N", fontsize=8)
+        ax.tick_params(labelsize=7)
+    fig.suptitle(title or "Hodographs of the reactions in the revolute pairs", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def write_charts(t: Turn, folder: str | Path, title: str = "") -> list[Path]:
+    """balancing_moment.{png,svg} and hodographs.{png,svg} in ``folder``."""
+    folder = Path(folder)
+    written = []
+    for stem, fig in (("balancing_moment", moment_figure(t, title)),
+                      ("hodographs", hodograph_figure(t, title))):
+        for fmt in ("png", "svg"):
+            written.append(write_atomic(folder / f"{stem}.{fmt}", _figure_bytes(fig, fmt)))
+    return written
+
+
+# -- records for the sheet ---------------------------------------------------------------------
+
+def _nice_step(span: float, parts: int = 6) -> float:
+    return standard_scale(span / parts) if span > 0 else 1.0
+
+
+def moment_record(t: Turn, width: float = 180.0, height: float = 70.0) -> Record:
+    """M_b(φ) as a drawing: abscissa = crank turn from position 0, ordinate at μM (N·m per mm)."""
+    rec = Record("balancing moment M_b(φ)")
+    step = "M_b(φ)"
+    m = t.ks.balancing
+    lo, hi = min(0.0, float(np.min(m))), max(0.0, float(np.max(m)))
+    mu_m = standard_scale((hi - lo) / height) if hi > lo else 1.0
+    mu_phi = 360.0 / width
+    y0 = 0.0
+    rec.scales.update({"mu_M": mu_m, "mu_phi": mu_phi})
+    rec.segment((0.0, y0), (width + 5.0, y0), role="axis", layer="diagrams", step=step)
+    rec.vector((0.0, lo / mu_m - 3.0), (0.0, hi / mu_m + 8.0), role="construction", layer="diagrams", step=step)
+    pts = [(float(x / mu_phi), float(v / mu_m)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[m, m[0]])]
+    rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
+    for k, pos in t.position_index():
+        x = float(t.turn_deg[k] / mu_phi)
+        rec.segment((x, y0 - 1.5), (x, y0 + 1.5), role="construction", layer="diagrams", step=step)
+        rec.label((x, y0 - 5.0), str(pos), size=2.5, anchor="middle", step=step)
+    rec.label((width + 6.0, y0 - 1.0), "φ", size=3.5, step=step)
+    rec.label((2.0, hi / mu_m + 5.0), "M_b, N·m", size=3.5, step=step)
+    tick = _nice_step(hi - lo, 4)
+    v = math.floor(lo / tick) * tick
+    while v <= hi + 1e-9:
+        y = v / mu_m
+        rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
+        rec.label((-2.5, y - 1.2), f"{v:g}", size=2.5, anchor="end", step=step)
+        v += tick
+    rec.label((0.0, lo / mu_m - 12.0), f"μM = {mu_m:g} N·m/mm, μφ = {mu_phi:g} °/mm", size=2.5, step=step)
+    return rec
+
+
+def hodograph_record(t: Turn, key: str, size: float = 70.0) -> Record:
+    """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered."""
+    f = t.ks.reactions[key].force
+    rec = Record(f"hodograph {key}")
+    step = f"hodograph {key}"
+    reach = float(np.max(np.abs(f))) or 1.0
+    mu_r = standard_scale(2 * reach / size)
+    rec.scales["mu_R"] = mu_r
+    half = reach / mu_r + 5.0
+    rec.segment((-half, 0.0), (half, 0.0), role="axis", layer="diagrams", step=step)
+    rec.segment((0.0, -half), (0.0, half), role="axis", layer="diagrams", step=step)
+    for idx, z in _pieces(t, f):
+        rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
+                layer="diagrams", step=step)
+    for k, pos in t.position_index():
+        w = f[k] / mu_r
+        rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+        rec.label((float(w.real) + 1.0, float(w.imag) + 1.0), str(pos), size=2.5, step=step)
+    rec.label((-half, -half - 6.0), f"{key}: μR = {mu_r:g} N/mm", size=2.5, step=step)
+    return rec
+
+
+def records(t: Turn) -> dict[str, Record]:
+    """"moment" and "hodograph <key>" for every revolute pair."""
+    out = {"moment": moment_record(t)}
+    for key in t.revolute:
+        out[f"hodograph {key}"] = hodograph_record(t, key)
+    return out

@@ -1,0 +1,170 @@
+"""The s, v, a diagrams as a construction record (drawing mm, y up), stacked on one time base as in
+seed 002's figure 2.7: axes, division ordinates, chords, poles P with H1 and H2, rays parallel to the
+chords, projection lines to the middles of the intervals, the French curves, labels and scales."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphplan.graphic.chords import periodic_spline
+from graphplan.report.diagrams import WORDS, fmt, units
+from graphplan.graphic.record import Record, text_width
+
+if TYPE_CHECKING:
+    from graphplan.graphic.diagrams import Diagrams
+
+LAYER = "diagrams"
+AXIS_W = 0.35          # coordinate axes: solid, between thin and thick
+GAP = 14.0             # mm between one diagram's lowest drawing and the next one's highest
+TOP = 9.0              # the ordinate axis reaches this far above a diagram's highest point
+NUM = 2.5              # lettering of the division numbers
+TEXT = 3.5             # lettering of the symbols and scales
+
+
+def rich(rec: Record, at: tuple[float, float], parts: list[tuple[str, bool]], size: float = TEXT,
+         anchor: str = "start", step: str = "") -> None:
+    """Text with subscripts: ``parts`` = [(text, is_subscript), …]; subscripts 0.7 high, 0.3 lower."""
+    sizes = [size * 0.7 if sub else size for _, sub in parts]
+    width = lambda t, s, sub: 0.62 * s * len(t) + 0.4 if sub else text_width(t, s)  # noqa: E731
+    total = sum(width(t, s, sub) for (t, sub), s in zip(parts, sizes))
+    x = at[0] - {"start": 0.0, "middle": total / 2, "end": total}[anchor]
+    for (text, sub), s in zip(parts, sizes):
+        body = text.lstrip(" ")
+        x += text_width(text[:len(text) - len(body)], s)  # SVG drops leading spaces: move instead
+        if body:
+            rec.label((x, at[1] - (0.3 * size if sub else 0.0)), body, size=s, layer=LAYER, step=step)
+        x += width(body, s, sub)
+
+
+def _extent(*arrays) -> tuple[float, float]:
+    values = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays] + [[0.0]])
+    return float(values.min()), float(values.max())
+
+
+def draw(d: Diagrams, lang: str = "uk") -> Record:
+    """The three diagrams of ``d`` stacked (s on top), sharing the abscissa 0 … L mm."""
+    w = WORDS[lang]
+    r = d.drawn
+    x, xm, L, n = d.x, d.x_mid, d.L, d.divisions
+    fine = np.linspace(0.0, L, int(round(4 * L)) + 1)
+    trend = r.s[-1] - r.s[0]
+    s_curve = periodic_spline(x[:-1], r.s[:-1] - trend * x[:-1] / L, L)(fine) + trend * fine / L
+    v_curve = periodic_spline(xm, r.v, L)(fine)
+    a_curve = periodic_spline(xm, r.a, L)(fine)
+    s_lo, s_hi = _extent(s_curve, r.s)
+    v_lo, v_hi = _extent(v_curve, r.v, r.v_ray, r.v_at)
+    a_lo, a_hi = _extent(a_curve, r.a, r.a_ray, r.a_at)
+
+    s_sym, v_sym, a_sym = d.symbols
+    what = f"{d.point}"
+    rec = Record(title=f"{w['title'].format(what=(w['point'] if d.output.kind == 'slide' else w['link']) + ' ' + what)}",
+                 scales={"mu_s": d.mu_s, "mu_t": d.mu_t, "mu_v": d.mu_v, "mu_a": d.mu_a,
+                         "H1_mm": d.H1, "H2_mm": d.H2, "L_mm": d.L})
+    y_s = 0.0
+    y_v = y_s + s_lo - 6.0 - GAP - TOP - v_hi          # 6 mm for the division numbers under s
+    y_a = y_v + v_lo - 8.0 - GAP - TOP - a_hi          # 8 mm for the H1 dimension under v
+    us, uv, ua = units(d, lang)
+    mm = w["mm"]
+    left = -max(d.H1, d.H2) - 14.0
+    letters = ("а)", "б)", "в)") if lang == "uk" else ("a)", "b)", "c)")
+
+    # -- s(t) ------------------------------------------------------------------------------------
+    _axes(rec, y_s, s_lo, s_hi, -3.0, L, s_sym, d.sub, "s(t)")
+    _ordinates(rec, x, y_s, s_lo, s_hi, "s(t)")
+    for k in range(n):
+        rec.segment((x[k], y_s + r.s[k]), (x[k + 1], y_s + r.s[k + 1]), role="chord", layer=LAYER,
+                    step=f"chord {k}–{k + 1} of {s_sym}(t)")
+    for k in range(n + 1):
+        rec.point((x[k], y_s + r.s[k]), role="construction", layer=LAYER, step=f"{s_sym} at ordinate {k}")
+    rec.add("polyline", list(zip(fine, y_s + s_curve)), role="curve", layer=LAYER, step=f"{s_sym}(t)")
+    _numbers(rec, d, y_s + s_lo - 4.5)
+    rec.label((left, y_s + s_hi), letters[0], size=TEXT, layer=LAYER)
+    _caption(rec, L, y_s + s_hi, [
+        [("μ", False), (s_sym, True), (f" = {fmt(d.mu_s, lang)} {us}/{mm}", False)],
+        [("μ", False), ("t", True), (f" = {fmt(d.mu_t, lang)} {w['s']}/{mm}", False)]])
+
+    # -- v(t): pole P at H1, rays ∥ the chords of s, heights carried to the middles ------------------
+    _pole_diagram(rec, d, y_v, v_lo, v_hi, d.H1, r.v_ray, r.v, xm, v_curve, fine, v_sym, "1",
+                  source=s_sym)
+    for k in range(n):  # the chords of the v curve between the division ordinates, for a
+        rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
+                    step=f"chord {k}–{k + 1} of {v_sym}(t)")
+    rec.label((left, y_v + v_hi), letters[1], size=TEXT, layer=LAYER)
+    _caption(rec, L, y_v + v_hi, [
+        [("μ", False), (v_sym, True), (f" = {fmt(d.mu_v, lang)} ({uv})/{mm}", False)],
+        [("H", False), ("1", True), (f" = {d.H1:g} {mm}", False)]])
+
+    # -- a(t): pole P at H2, rays ∥ the chords of v ------------------------------------------------
+    _pole_diagram(rec, d, y_a, a_lo, a_hi, d.H2, r.a_ray, r.a, xm, a_curve, fine, a_sym, "2",
+                  source=v_sym)
+    _numbers(rec, d, y_a + a_lo - 8.0 - 4.0)
+    rec.label((left, y_a + a_hi), letters[2], size=TEXT, layer=LAYER)
+    _caption(rec, L, y_a + a_hi, [
+        [("μ", False), (a_sym, True), (f" = {fmt(d.mu_a, lang)} ({ua})/{mm}", False)],
+        [("H", False), ("2", True), (f" = {d.H2:g} {mm}", False)]])
+    return rec
+
+
+def _axes(rec: Record, y0: float, lo: float, hi: float, x_from: float, L: float, sym: str, sub: str,
+          step: str) -> None:
+    """The ordinate axis (arrow up) at x = 0 and the time axis (arrow right), with their letters."""
+    rec.vector((0.0, y0 + lo - 3.0), (0.0, y0 + hi + TOP), role="construction", width=AXIS_W,
+               layer=LAYER, step=f"axes of {step}")
+    rec.vector((x_from, y0), (L + 10.0, y0), role="construction", width=AXIS_W, layer=LAYER,
+               step=f"axes of {step}")
+    rich(rec, (1.8, y0 + hi + TOP - 3.0), [(sym, False), (sub, True)], step=f"axes of {step}")
+    rec.label((L + 11.5, y0 - 1.2), "t", size=TEXT, layer=LAYER, step=f"axes of {step}")
+
+
+def _ordinates(rec: Record, x: np.ndarray, y0: float, lo: float, hi: float, step: str) -> None:
+    """Thin division ordinates across the diagram."""
+    for xk in x[1:]:
+        rec.segment((xk, y0 + lo), (xk, y0 + hi), role="grid", layer=LAYER, step=f"division ordinates of {step}")
+
+
+def _numbers(rec: Record, d: Diagrams, y: float) -> None:
+    """The position numbers under the division ordinates (0 … N; every 2nd, 4th … when crowded)."""
+    n0 = sum(p is not None for p in d.position[:-1])
+    marks = [(xk, d.position[k] if k < d.divisions else n0) for k, xk in enumerate(d.x)]
+    marks = [(xk, p) for xk, p in marks if p is not None]
+    gap = min(b[0] - a[0] for a, b in zip(marks, marks[1:]))
+    every = 1
+    while gap * every < 5.0:
+        every *= 2
+    for xk, p in marks:
+        if p % every == 0 or p == n0:
+            rec.label((xk, y), str(p), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
+
+
+def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: float, ray: np.ndarray,
+                  read_: np.ndarray, xm: np.ndarray, curve: np.ndarray, fine: np.ndarray, sym: str,
+                  index: str, source: str) -> None:
+    """One derived diagram: axes extended left to the pole P, the rays from P to the heights cut on
+    the ordinate axis, the projection lines to the middles of the intervals, the points, the curve."""
+    step = f"{sym} = d{source}/dt"
+    _axes(rec, y0, lo, hi, -H - 4.0, d.L, sym, d.sub, f"{sym}(t)")
+    _ordinates(rec, d.x, y0, lo, hi, f"{sym}(t)")
+    pole = (-H, y0)
+    rec.point(pole, role="joint", layer=LAYER, step=f"pole P, H{index} = {H:g} mm")
+    rec.label((-H - 1.8, y0 + 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step=f"pole P{index}")
+    for k, (h_ray, h_read, xk) in enumerate(zip(ray, read_, xm)):
+        rec.segment(pole, (0.0, y0 + h_ray), role="ray", layer=LAYER,
+                    step=f"ray P∥chord {k}–{k + 1} ({step})")
+        if abs(xk) > 0:
+            rec.segment((0.0, y0 + h_read), (xk, y0 + h_read), role="projection", layer=LAYER,
+                        step=f"{sym} carried to the middle of {k}–{k + 1}")
+        rec.point((xk, y0 + h_read), role="construction", layer=LAYER, step=f"{sym} at the middle of {k}–{k + 1}")
+    rec.add("polyline", list(zip(fine, y0 + curve)), role="curve", layer=LAYER, step=f"{sym}(t)")
+    # the pole distance as a dimension under the diagram
+    yd = y0 + lo - 4.0
+    rec.segment((-H, y0), (-H, yd - 1.5), role="construction", layer=LAYER, step=f"H{index}")
+    rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
+    rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
+    rich(rec, (-H / 2, yd - 4.5), [("H", False), (index, True)], anchor="middle", step=f"H{index}")
+
+
+def _caption(rec: Record, L: float, y: float, lines: list[list[tuple[str, bool]]]) -> None:
+    """Scale captions to the right of a diagram."""
+    for i, parts in enumerate(lines):
+        rich(rec, (L + 18.0, y - 1.0 - 5.5 * i), parts, step="scales")

@@ -1,0 +1,94 @@
+"""DXF renderer of construction records (ezdxf): millimetres, one layer per kind, GOST 2.303 line
+types defined in millimetres, line weights by role, a text style on osifont; Cyrillic kept."""
+from __future__ import annotations
+
+import io
+
+from graphplan.graphic.record import DASHED_ROLES, LAYERS, Primitive, Record, arrowhead, lettering
+
+# GOST 2.303 patterns in mm: (total length, dash, −gap, dot, −gap …)
+LINETYPES = {
+    "GOST_DASHDOT": ("Dash-dot thin (GOST 2.303) __ . __ .", [18.0, 12.0, -3.0, 0.0, -3.0]),
+    "GOST_DASHED": ("Dashed (GOST 2.303) __ __", [6.0, 4.0, -2.0]),
+}
+LAYER_STYLE = {  # layer → (ACI colour, lineweight in 1/100 mm)
+    "frame": (7, 70), "mechanism": (7, 70), "construction": (8, 25), "vectors": (5, 50),
+    "labels": (7, 25), "diagrams": (3, 35), "tables": (7, 25),
+}
+FONT_FILE = "osifont.ttf"
+
+
+def _weight(prim: Primitive) -> int:
+    """A valid DXF lineweight (1/100 mm) nearest to the primitive's width."""
+    valid = (0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100, 106, 120, 140)
+    target = prim.line_width * 100
+    return min(valid, key=lambda v: abs(v - target))
+
+
+def to_dxf(record: Record, width: float, height: float) -> bytes:
+    """The record as a DXF R2010 document in millimetres; text stays text (TEXT entities)."""
+    import ezdxf
+    fixed = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True  # no dates or random GUIDs: equal bytes
+    try:
+        return _to_dxf(record, width, height)
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = fixed
+
+
+def _to_dxf(record: Record, width: float, height: float) -> bytes:
+    import ezdxf
+    from ezdxf import units
+    from ezdxf.enums import TextEntityAlignment
+
+    doc = ezdxf.new("R2010", setup=True)
+    doc.units = units.MM
+    doc.header["$INSUNITS"] = units.MM
+    doc.header["$MEASUREMENT"] = 1
+    doc.header["$LIMMIN"] = (0, 0)
+    doc.header["$LIMMAX"] = (width, height)
+    for name, (desc, pattern) in LINETYPES.items():
+        doc.linetypes.add(name, pattern=pattern, description=desc)
+    if "GOST" not in doc.styles:
+        doc.styles.add("GOST", font=FONT_FILE)
+    for name in LAYERS:
+        colour, weight = LAYER_STYLE.get(name, (7, 25))
+        doc.layers.add(name, color=colour, lineweight=weight)
+    msp = doc.modelspace()
+    align = {"start": TextEntityAlignment.LEFT, "middle": TextEntityAlignment.CENTER,
+             "end": TextEntityAlignment.RIGHT}
+    for prim in record.items:
+        if prim.layer not in doc.layers:
+            doc.layers.add(prim.layer)
+        attribs = {"layer": prim.layer, "lineweight": _weight(prim)}
+        dash = DASHED_ROLES.get(prim.role)
+        if dash:
+            attribs["linetype"] = "GOST_DASHDOT" if dash == "dashdot" else "GOST_DASHED"
+        k = prim.kind
+        if k == "segment":
+            msp.add_line(prim.points[0], prim.points[1], dxfattribs=attribs)
+        elif k == "vector":
+            a, b = prim.points
+            tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
+            base = ((tip[1][0] + tip[2][0]) / 2, (tip[1][1] + tip[2][1]) / 2)
+            msp.add_line(a, base, dxfattribs=attribs)
+            msp.add_solid([tip[0], tip[1], tip[2]], dxfattribs={"layer": prim.layer})
+        elif k in ("polyline", "polygon"):
+            msp.add_lwpolyline(prim.points, close=(k == "polygon"), dxfattribs=attribs)
+        elif k == "circle":
+            msp.add_circle(prim.points[0], prim.radius, dxfattribs=attribs)
+        elif k == "arc":
+            start, end = prim.angles
+            if (end - start) % 360.0 == 0.0:
+                msp.add_circle(prim.points[0], prim.radius, dxfattribs=attribs)
+            else:
+                msp.add_arc(prim.points[0], prim.radius, start, end, dxfattribs=attribs)
+        elif k == "point":
+            msp.add_circle(prim.points[0], 1.0 if prim.role == "joint" else 0.6, dxfattribs=attribs)
+        elif k == "text":
+            text = msp.add_text(lettering(prim.text), height=prim.size,
+                                dxfattribs={"layer": prim.layer, "style": "GOST"})
+            text.set_placement(prim.points[0], align=align[prim.anchor])
+    stream = io.StringIO()
+    doc.write(stream)
+    return stream.getvalue().encode("utf-8")

@@ -1,0 +1,434 @@
+"""Drawings of the force analysis as construction records (mm, y up): each group's scheme with its
+forces and measured arms, its force polygon, the Zhukovsky lever and the results tables.
+
+Labels are placed by a small search (``Labeler``): around the thing they name, in the preferred
+direction first, the first spot that overlaps neither another label nor a drawn line.
+"""
+from __future__ import annotations
+
+import math
+
+from graphplan.graphic.record import Record, text_width
+from graphplan.graphic.forceplans import ForcePlans, GroupPlan
+from graphplan.exact.kinematics import dot
+from graphplan.model.mechanism import FRAME
+
+Box = tuple[float, float, float, float]
+
+
+def _pt(z: complex) -> tuple[float, float]:
+    return (float(z.real), float(z.imag))
+
+
+def _unit(z: complex) -> complex:
+    return z / abs(z) if abs(z) > 0 else 1 + 0j
+
+
+def _arrow_length(force: float, biggest: float) -> float:
+    """Arrows on a scheme or on the lever: 8–30 mm, growing with the force (not to scale)."""
+    return 8.0 + 22.0 * math.sqrt(max(force, 0.0) / biggest) if biggest > 0 else 8.0
+
+
+# -- labels ------------------------------------------------------------------------------------
+
+def _segment_hits_box(a: tuple[float, float], b: tuple[float, float], box: Box) -> bool:
+    """Liang–Barsky: does the segment ab cross the rectangle?"""
+    x0, y0, x1, y1 = box
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
+        if p == 0:
+            if q < 0:
+                return False
+        else:
+            t = q / p
+            if p < 0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+            if t0 > t1:
+                return False
+    return True
+
+
+def _overlap(p: Box, q: Box) -> bool:
+    return p[0] < q[2] and q[0] < p[2] and p[1] < q[3] and q[1] < p[3]
+
+
+class Labeler:
+    """Places labels of a record where they cross no line and no other label."""
+
+    RADII = (0.8, 2.0, 3.5, 5.5, 8.0, 11.0)
+    TURNS = (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8)
+
+    def __init__(self, rec: Record):
+        self.rec = rec
+
+    def _obstacles(self):
+        lines, boxes = [], []
+        for p in self.rec.items:
+            if p.kind in ("segment", "vector"):
+                lines.append((p.points[0], p.points[1]))
+            elif p.kind in ("polyline", "polygon"):
+                pts = list(p.points) + ([p.points[0]] if p.kind == "polygon" else [])
+                lines += list(zip(pts, pts[1:]))
+            elif p.kind == "text":
+                boxes.append(p.bounds())
+            elif p.kind in ("point", "circle", "arc"):
+                boxes.append(p.bounds() if p.kind != "point" else
+                             (p.points[0][0] - 1.3, p.points[0][1] - 1.3, p.points[0][0] + 1.3, p.points[0][1] + 1.3))
+        return lines, boxes
+
+    def place(self, anchor: complex, text: str, size: float = 2.5, prefer: complex = 1j,
+              step: str = "") -> None:
+        w, h = text_width(text, size), size
+        lines, boxes = self._obstacles()
+        best, best_cost = None, math.inf
+        base = math.atan2(prefer.imag, prefer.real) if prefer else math.pi / 2
+        for r in self.RADII:
+            for k in self.TURNS:
+                th = base + k * math.pi / 8
+                c, s = math.cos(th), math.sin(th)
+                reach = r + abs(c) * w / 2 + abs(s) * h / 2
+                cx, cy = anchor.real + reach * c, anchor.imag + reach * s
+                box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+                cost = 10 * sum(_overlap(box, b) for b in boxes)
+                cost += sum(_segment_hits_box(a, b, box) for a, b in lines)
+                cost += 0.05 * r
+                if cost < best_cost:
+                    best, best_cost = box, cost
+                if cost < 1:
+                    break
+            if best_cost < 1:
+                break
+        self.rec.label((best[0], best[1]), text, size=size, anchor="start", step=step)
+
+
+# -- a group's scheme --------------------------------------------------------------------------
+
+def _link_outline(fp: ForcePlans, link: str) -> list[complex]:
+    """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
+    mech, kin = fp.ks.mech, fp.ks.kin
+    lk = mech.links[link]
+    body = kin.bodies[link]
+    pos = {p: complex(body.at(lk.local[p])[0][0]) / fp.mu_l for p in lk.joints}
+    riders = [name for name, other in mech.links.items() if other.slides_on == link]
+    for r in riders:
+        pos[f"~{r}"] = complex(kin.bodies[r].at(mech.links[r].local[next(iter(mech.links[r].local))])[0][0]) / fp.mu_l
+    pts = list(pos.values())
+    if len(lk.joints) >= 3:
+        return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
+    if len(pts) < 2:
+        return pts
+    axis = _unit(pts[1] - pts[0])
+    proj = sorted(pts, key=lambda z: dot(z - pts[0], axis))
+    return [proj[0], proj[-1]]
+
+
+def _block(rec: Record, z: complex, g: complex, step: str) -> None:
+    """A slider drawn as a 8 × 5 mm rectangle along its guide."""
+    u, n = _unit(g) * 4.0, _unit(g) * 2.5j
+    rec.add("polygon", [_pt(z - u - n), _pt(z + u - n), _pt(z + u + n), _pt(z - u + n)],
+            role="link", layer="mechanism", step=step)
+
+
+def _support(rec: Record, z: complex, step: str) -> None:
+    """A frame pivot: a small triangle with a hatched base."""
+    a, b = z + (-3.0 - 5.0j), z + (3.0 - 5.0j)
+    rec.add("polyline", [_pt(a), _pt(z), _pt(b)], role="link", layer="frame", step=step, width=0.35)
+    rec.segment(_pt(a + (-1.5)), _pt(b + 1.5), role="frame", layer="frame", step=step, width=0.35)
+    for k in range(5):
+        x = a + (-1.0 + 2.0 * k)
+        rec.segment(_pt(x), _pt(x + (-1.5 - 1.5j)), role="hatch", layer="frame", step=step)
+
+
+def group_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+    """A group drawn at μl: its links, every force acting on it (loads, the reactions handed over by
+    the later groups, the reactions found here) and the arms of the moment equations."""
+    mech, kin = fp.ks.mech, fp.ks.kin
+    title = f"{gp.label} {gp.kind}" if gp.kind != "crank" else "I(0-1)"
+    rec = Record(title, scales={"mu_l": fp.mu_l})
+    step = f"{gp.label}: ΣM = 0, ΣF = 0"
+    names: list[tuple[complex, str]] = []
+    for link in gp.links:
+        outline = _link_outline(fp, link)
+        if len(outline) >= 2:
+            rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
+        lk = mech.links[link]
+        if lk.slides_on is not None:
+            guide = mech.guides[lk.slides_on]
+            origin = next(iter(lk.local))
+            z = complex(kin.bodies[link].at(lk.local[origin])[0][0]) / fp.mu_l
+            import numpy as np
+            g = complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))
+            _block(rec, z, g, step)
+            if guide.body == FRAME:
+                rec.segment(_pt(z - 25 * g), _pt(z + 25 * g), role="axis", layer="frame", step=step)
+        for p in lk.joints:
+            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / fp.mu_l
+            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+            if p in mech.frame:
+                _support(rec, z, step)
+            if all(n != p for _, n in names):
+                names.append((z, p))
+    forces = [f for f in gp.forces if f.force != 0]
+    outer = [m for m in gp.reactions.values()
+             if {fp.ks.reactions[m.key].frm, fp.ks.reactions[m.key].on} - set(gp.links)]
+    biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
+    labels: list[tuple[complex, str, complex]] = []
+    for f in forces:
+        z = f.at / fp.mu_l
+        u = _unit(f.force)
+        tip = z + _arrow_length(abs(f.force), biggest) * u
+        rec.vector(_pt(z), _pt(tip), role="absolute", layer="vectors", step=step, text=f.name)
+        labels.append((tip, f.name, u))
+    for f in gp.forces:
+        if f.couple and not f.force:
+            _couple(rec, f.at / fp.mu_l, f.couple, step)
+            labels.append((f.at / fp.mu_l + 7j, f.name, 1j))
+    for m in outer:
+        truth = fp.ks.reactions[m.key]
+        inward = truth.on in gp.links
+        z = complex(truth.line_point()[0] if inward else truth.at[0]) / fp.mu_l
+        v = m.vector if inward else -m.vector
+        if not v:
+            continue
+        u = _unit(v)
+        tip = z + _arrow_length(m.value, biggest) * u
+        rec.vector(_pt(z), _pt(tip), role="result", layer="vectors", step=step, text=m.key)
+        labels.append((tip, m.key, u))
+    arms = []
+    for eq in gp.equations:
+        about = _about(fp, eq.about, gp)
+        if about is None:
+            continue
+        for t in eq.terms:
+            if abs(t.arm_mm) < 1.0:
+                continue
+            arms.append((about, t))
+    for k, (about, t) in enumerate(arms, 1):
+        rec.segment(_pt(about), _pt(t.foot), role="construction", layer="construction", step=step,
+                    text=f"h{k} = {abs(t.arm_mm):g} mm")
+        f = next((g for g in forces if g.name == t.name), None)
+        if f is not None:
+            z = f.at / fp.mu_l
+            tip = z + _arrow_length(abs(f.force), biggest) * _unit(f.force)
+            if dot(t.foot - z, tip - z) < 0 or abs(t.foot - z) > abs(tip - z):
+                rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
+    lab = Labeler(rec)
+    for z, name in names:
+        lab.place(z, name, 3.5, -1 - 1j, step)
+    for k, (about, t) in enumerate(arms, 1):
+        mid = 0.5 * (about + t.foot)
+        lab.place(mid, f"h{k}", 2.5, 1j * _unit(t.foot - about), step)
+    for tip, name, u in labels:
+        lab.place(tip, name, 2.5, u, step)
+    return rec
+
+
+def _about(fp: ForcePlans, name: str, gp: GroupPlan) -> complex | None:
+    mech, kin = fp.ks.mech, fp.ks.kin
+    for link in gp.links:
+        lk = mech.links[link]
+        if name in lk.local:
+            return complex(kin.bodies[link].at(lk.local[name])[0][0]) / fp.mu_l
+    return complex(kin.point(name)[0][0]) / fp.mu_l if name in mech.point_names() else None
+
+
+def _couple(rec: Record, z: complex, couple: float, step: str, r: float = 5.0) -> None:
+    """A couple: an arc with an arrowhead in its sense."""
+    rec.arc(_pt(z), r, 30.0, 150.0, role="relative", layer="vectors", step=step)
+    end = math.radians(150.0 if couple > 0 else 30.0)
+    tip = z + r * complex(math.cos(end), math.sin(end))
+    tangent = 1j * (tip - z) / r * (1 if couple > 0 else -1)
+    rec.vector(_pt(tip - 2.5 * tangent), _pt(tip), role="relative", layer="vectors", step=step)
+
+
+# -- a force polygon ---------------------------------------------------------------------------
+
+def polygon_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+    """The group's force polygon at μF: known forces head to tail, the reactions closing it."""
+    rec = Record(f"force plan {gp.label}", scales={"mu_F": fp.mu_F})
+    step = f"{gp.label}: ΣF = 0"
+    for a, b in gp.lines:
+        rec.segment(_pt(a), _pt(b), role="direction", layer="construction", step=step)
+    role = {"known": "absolute", "reaction": "result", "component": "relative"}
+    sides = [s for s in gp.sides if s.mm > 1e-9]
+    for s in sides:
+        rec.vector(_pt(s.start), _pt(s.end), role=role[s.role], layer="vectors", step=step,
+                   text=f"{s.name} = {s.mm:.4g} mm")
+    rec.point((0.0, 0.0), layer="vectors", step=step)
+    lab = Labeler(rec)
+    for s in sorted(sides, key=lambda s: s.mm):
+        u = _unit(s.end - s.start)
+        lab.place(0.5 * (s.start + s.end), s.name, 2.5, 1j * u, step)
+    x0, y0, _, _ = rec.bounds()
+    rec.label((x0, y0 - 6.0), f"μF = {fp.mu_F:g} N/mm", size=3.5, step=step)
+    return rec
+
+
+# -- the lever ---------------------------------------------------------------------------------
+
+def lever_record(fp: ForcePlans) -> Record:
+    """The Zhukovsky lever: the velocity plan turned 90° counter-clockwise, each force at its point's
+    image, the arms from the pole, the balancing force P_b at the crank pin's image."""
+    lv = fp.lever
+    rec = Record("Zhukovsky lever", scales={"mu_v": lv.mu_v})
+    step = "ΣM_p = 0 (Zhukovsky lever)"
+    turned = {k: 1j * v for k, v in lv.images.items()}
+    for a, b in lv.links:
+        if abs(turned[a] - turned[b]) > 0.1:
+            rec.segment(_pt(turned[a]), _pt(turned[b]), role="relative", layer="vectors", step=step)
+    for name, z in turned.items():
+        if abs(z) > 0.1:
+            rec.segment((0.0, 0.0), _pt(z), role="construction", layer="construction", step=step)
+            rec.point(_pt(z), layer="vectors", step=step)
+    rec.point((0.0, 0.0), role="joint", layer="vectors", step=step)
+    biggest = max([t.force for t in lv.terms] + [abs(lv.balancing_force), 1e-9])
+    labels = []
+    for t in lv.terms:
+        if not t.vector:
+            continue
+        z = turned[t.image]
+        u = _unit(t.vector)
+        tip = z + _arrow_length(t.force, biggest) * u
+        rec.vector(_pt(z), _pt(tip), role="absolute", layer="vectors", step=step,
+                   text=f"{t.name}: h = {t.arm_mm:g} mm")
+        labels.append((tip, t.name, u))
+        if abs(t.arm_mm) >= 1.0:
+            foot = z - dot(z, u) * u
+            rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step)
+            if dot(foot - z, u) < 0 or abs(foot - z) > abs(tip - z):
+                rec.segment(_pt(z), _pt(foot), role="projection", layer="construction", step=step)
+    crank = fp.ks.mech.crank
+    a = turned.get(crank.pin, 0j)
+    if lv.balancing_force and abs(a) > 0:
+        u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
+        tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
+        rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
+        labels.append((tip, "P_b", u))
+    lab = Labeler(rec)
+    lab.place(0j, "p", 3.5, -1 + 1j, step)
+    placed = set()
+    for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
+        key = (round(z.real, 1), round(z.imag, 1))
+        if abs(z) > 0.1 and key not in placed:
+            placed.add(key)
+            lab.place(z, name.lower(), 3.5, _unit(z), step)
+    for tip, name, u in labels:
+        lab.place(tip, name, 2.5, u, step)
+    x0, y0, _, _ = rec.bounds()
+    rec.label((x0, y0 - 6.0), f"μv = {lv.mu_v:g} (m/s)/mm", size=3.5, step=step)
+    return rec
+
+
+# -- tables ------------------------------------------------------------------------------------
+
+def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str]],
+           widths: list[float], step: str, size: float = 2.5, row_h: float = 6.0) -> float:
+    """A ruled table with its top-left corner at (x, y); returns its bottom y."""
+    total = sum(widths)
+    n = len(rows) + 1
+    for k in range(n + 1):
+        yy = y - k * row_h
+        rec.segment((x, yy), (x + total, yy), role="table", layer="tables", step=step,
+                    width=0.5 if k in (0, 1, n) else None)
+    xx = x
+    for w in [0.0] + widths:
+        xx += w
+        rec.segment((xx, y), (xx, y - n * row_h), role="table", layer="tables", step=step)
+    for k, row in enumerate([head] + rows):
+        xx = x
+        for w, cell in zip(widths, row):
+            rec.label((xx + w / 2, y - (k + 1) * row_h + (row_h - size) / 2), cell, size=size,
+                      anchor="middle", step=step)
+            xx += w
+    return y - n * row_h
+
+
+def group_table_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+    """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm)."""
+    rec = Record(f"forces of {gp.label}")
+    step = f"table {gp.label}"
+    cells = []
+    for f in gp.forces:
+        if f.force:
+            cells.append((f.name, abs(f.force), abs(f.force) / fp.mu_F))
+        if f.couple:
+            cells.append((f.name, f.couple, None))
+    for eq in gp.equations:
+        if eq.unknown != "M_b":
+            cells.append((eq.unknown, abs(eq.result), abs(eq.result) / fp.mu_F))
+    for m in gp.reactions.values():
+        cells.append((m.key, m.value, m.mm))
+    head = ["force"] + [c[0] for c in cells]
+    rows = [["P, N (M, N·m)"] + [f"{c[1]:.4g}" for c in cells],
+            ["drawn, mm"] + [("—" if c[2] is None else f"{c[2]:.4g}") for c in cells]]
+    widths = [26.0] + [max(14.0, 2.5 * 0.62 * len(c[0]) + 4) for c in cells]
+    _table(rec, 0.0, 0.0, head, rows, widths, step)
+    return rec
+
+
+def results_record(fp: ForcePlans) -> Record:
+    """The balancing moment found four ways and each reaction against its closed form."""
+    rec = Record("results")
+    step = "results"
+    a = fp.analytic
+    rows = []
+    for name, value in (("closed form", a), ("force plans", fp.balancing),
+                        ("Zhukovsky lever", fp.lever.balancing), ("power balance", fp.power)):
+        err = "" if name == "closed form" or a == 0 else f"{100 * (value - a) / a:+.2f}"
+        rows.append([name, f"{value:.4g}", err])
+    bottom = _table(rec, 0.0, 0.0, ["M_b", "N·m", "δ, %"], rows, [34.0, 22.0, 18.0], step)
+    rows = [[m.key, f"{m.mm:.4g}", f"{m.value:.4g}", f"{m.angle_deg:.1f}", f"{m.analytic:.4g}",
+             "—" if m.error_pct is None else f"{m.error_pct:+.2f}"]
+            for m in fp.reactions().values()]
+    _table(rec, 0.0, bottom - 8.0, ["R", "mm", "N", "angle, °", "exact, N", "δ, %"], rows,
+           [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
+    return rec
+
+
+# -- layout ------------------------------------------------------------------------------------
+
+def arrange(records: list[Record], gap: float = 15.0, across: bool = True,
+            titles: bool = True) -> Record:
+    """Records side by side (or one under another, left-aligned), each titled above it."""
+    out = Record(" | ".join(r.title for r in records))
+    x = y = 0.0
+    for r in records:
+        x0, y0, x1, y1 = r.bounds()
+        top = 8.0 if titles else 0.0
+        if across:
+            moved = r.moved(x - x0, -y1 - top)
+            if titles:
+                out.label((x, -4.0), r.title, size=3.5, step=r.title)
+            x += (x1 - x0) + gap
+        else:
+            moved = r.moved(-x0, y - y1 - top)
+            if titles:
+                out.label((0.0, y - 4.0), r.title, size=3.5, step=r.title)
+            y -= (y1 - y0) + gap + top
+        out.extend(moved)
+        out.scales.update(r.scales)
+    return out
+
+
+def records(fp: ForcePlans) -> dict[str, Record]:
+    """Every drawing of the force analysis by name, for the force sheet:
+    "group II(4-5)", "polygon II(4-5)", "table II(4-5)", …, "group I(0-1)", …, "lever", "results"."""
+    out: dict[str, Record] = {}
+    for gp in fp.groups:
+        out[f"group {gp.label}"] = group_record(fp, gp)
+        out[f"polygon {gp.label}"] = polygon_record(fp, gp)
+        out[f"table {gp.label}"] = group_table_record(fp, gp)
+    out["lever"] = lever_record(fp)
+    out["results"] = results_record(fp)
+    return out
+
+
+def drawing(fp: ForcePlans) -> Record:
+    """All of it on one page: each group beside its force plan, one group under another, then the
+    lever beside the results."""
+    rows = [arrange([group_record(fp, gp), polygon_record(fp, gp)]) for gp in fp.groups]
+    rows.append(arrange([lever_record(fp), results_record(fp)]))
+    return arrange(rows, across=False, titles=False)

@@ -1,0 +1,225 @@
+"""The position plan as a record: the frame, every position (the ones with acceleration plans
+thick), the compass arcs of each construction, the trajectories of chosen points, the extreme
+positions (dashed) and the labels. Drawing millimetres, the crank's pivot at (0, 0)."""
+from __future__ import annotations
+
+import cmath
+import math
+
+from graphplan.graphic.record import Record
+from graphplan.drawing.labels import LabelRequest, place_labels
+from graphplan.model.mechanism import FRAME
+from graphplan.graphic.plans import Layout, Plans, Scheme, where
+
+ARC_HALF = 5.0       # mm of arc drawn each side of a construction point (a "засічка")
+BLOCK = (9.0, 5.0)   # slider block drawn on the thick positions, mm
+
+
+def _pt(z: complex) -> tuple[float, float]:
+    return (z.real, z.imag)
+
+
+def joints_at(sc: Scheme, lay: Layout) -> dict[str, complex]:
+    """Every named point at this position, drawn."""
+    return {name: where(sc, lay, sc.body_of(name), name) for name in sc.mech.point_names()}
+
+
+def guide_carriers(sc: Scheme) -> dict[str, list[str]]:
+    """Bodies carrying a guide someone slides on → the sliders on it."""
+    out: dict[str, list[str]] = {}
+    for name, link in sc.mech.links.items():
+        if link.slides_on is not None:
+            out.setdefault(sc.mech.guides[link.slides_on].body, []).append(name)
+    return out
+
+
+def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "link",
+               step: str = "") -> None:
+    """The links of one position: bars between joints, slotted links along their guides, blocks."""
+    mech = sc.mech
+    pts = joints_at(sc, lay)
+    width = None if thick else 0.3
+    carriers = guide_carriers(sc)
+    for name, link in mech.links.items():
+        joints = list(link.joints)
+        if name in carriers:
+            # a slotted link: its guide line over its joints and the blocks sliding in it
+            for slider in carriers[name]:
+                g = mech.guides[mech.links[slider].slides_on]
+                base = lay.poses[name].at(g.through)
+                u = lay.poses[name].direction(g.angle)
+                along = [((pts[p] - base) * u.conjugate()).real
+                         for p in list(joints) + list(mech.links[slider].local)]
+                lo, hi = min(along) - 4.0, max(along) + 4.0
+                rec.segment(_pt(base + lo * u), _pt(base + hi * u), role=role, width=width,
+                            layer="mechanism", step=step)
+        if link.slides_on is not None and len(joints) <= 1:
+            if thick:
+                centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
+                u = lay.poses[name].direction(0.0)
+                w, h = BLOCK
+                corners = [centre + u * complex(sx * w / 2, sy * h / 2) for sx, sy in
+                           ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
+            continue
+        for p, q in zip(joints, joints[1:]):
+            rec.segment(_pt(pts[p]), _pt(pts[q]), role=role, width=width, layer="mechanism", step=step)
+        if len(joints) > 2:
+            rec.segment(_pt(pts[joints[-1]]), _pt(pts[joints[0]]), role=role, width=width,
+                        layer="mechanism", step=step)
+    for name, link in mech.links.items():
+        for j in link.joints:
+            rec.point(_pt(pts[j]), role="joint" if thick else "dot", layer="mechanism")
+        if thick:
+            for p in link.local:
+                if p not in link.joints and p in pts and not sc.fixed(p) and p != next(iter(link.local)):
+                    rec.point(_pt(pts[p]), role="dot", layer="mechanism")
+
+
+def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout]) -> None:
+    """Fixed pivots with their supports, fixed guides with hatching over the slider's travel."""
+    mech = sc.mech
+    lay0 = layouts[0]
+    for name in mech.frame:
+        if not any(name in link.joints for link in mech.links.values()):
+            continue
+        X = where(sc, lay0, FRAME, name)
+        a, b = X + complex(-3.5, -5.0), X + complex(3.5, -5.0)
+        rec.segment(_pt(X), _pt(a), role="frame", width=0.35, layer="frame")
+        rec.segment(_pt(X), _pt(b), role="frame", width=0.35, layer="frame")
+        rec.segment(_pt(a + complex(-1.5, 0)), _pt(b + complex(1.5, 0)), role="frame", layer="frame")
+        for k in range(5):
+            s = a + complex(-1.5 + 2.5 * k, 0)
+            rec.segment(_pt(s), _pt(s + complex(-1.8, -1.8)), role="hatch", layer="frame")
+        rec.point(_pt(X), role="joint", layer="frame")
+    for gname, g in mech.guides.items():
+        if g.body != FRAME:
+            continue
+        sliders = [n for n, l in mech.links.items() if l.slides_on == gname]
+        if not sliders:
+            continue
+        base = where_frame(sc, lay0, g.through)
+        u = cmath.exp(1j * g.angle)
+        along = []
+        for lay in layouts:
+            for s in sliders:
+                for p in mech.links[s].local:
+                    along.append(((lay.poses[s].at(mech.links[s].local[p]) - base) * u.conjugate()).real)
+        lo, hi = min(along) - 12.0, max(along) + 12.0
+        rec.segment(_pt(base + lo * u), _pt(base + hi * u), role="frame", layer="frame", step=f"guide {gname}")
+        normal = -1j * u
+        t = lo
+        while t <= hi:
+            s = base + t * u + normal * 2.5
+            rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
+            t += 4.0
+
+
+def where_frame(sc: Scheme, lay: Layout, p: complex) -> complex:
+    return lay.poses[FRAME].at(p)
+
+
+def draw_construction(rec: Record, lay: Layout) -> None:
+    """The compass arcs that found each group's point (a short arc each side of it)."""
+    for mark in lay.drawn:
+        if mark[0] != "arc":
+            continue
+        _, centre, radius, at, group = mark
+        mid = math.degrees(cmath.phase(at - centre))
+        half = math.degrees(ARC_HALF / radius) if radius > 0 else 0.0
+        rec.arc(_pt(centre), radius, mid - half, mid + half, role="arc", layer="construction",
+                step=f"position {lay.index if lay.index is not None else lay.key}: {group} arcs")
+
+
+def catmull_rom(points: list[complex], closed: bool = True, per: int = 12) -> list[complex]:
+    """A centripetal Catmull–Rom curve through the points (the French curve of the drawing)."""
+    if len(points) < 3:
+        return points
+    pts = points + points[:3] if closed else [points[0]] + points + [points[-1]]
+    out: list[complex] = []
+    spans = len(points) if closed else len(points) - 1
+    for i in range(spans):
+        p0, p1, p2, p3 = pts[i], pts[i + 1], pts[i + 2], pts[i + 3]
+        if closed:
+            p0, p1, p2, p3 = points[i - 1], points[i], points[(i + 1) % len(points)], points[(i + 2) % len(points)]
+        t0 = 0.0
+        t1 = t0 + max(abs(p1 - p0), 1e-9) ** 0.5
+        t2 = t1 + max(abs(p2 - p1), 1e-9) ** 0.5
+        t3 = t2 + max(abs(p3 - p2), 1e-9) ** 0.5
+        for k in range(per):
+            t = t1 + (t2 - t1) * k / per
+            a1 = (t1 - t) / (t1 - t0) * p0 + (t - t0) / (t1 - t0) * p1
+            a2 = (t2 - t) / (t2 - t1) * p1 + (t - t1) / (t2 - t1) * p2
+            a3 = (t3 - t) / (t3 - t2) * p2 + (t - t2) / (t3 - t2) * p3
+            b1 = (t2 - t) / (t2 - t0) * a1 + (t - t0) / (t2 - t0) * a2
+            b2 = (t3 - t) / (t3 - t1) * a2 + (t - t1) / (t3 - t1) * a3
+            out.append((t2 - t) / (t2 - t1) * b1 + (t - t1) / (t2 - t1) * b2)
+    out.append(out[0] if closed else points[-1])
+    return out
+
+
+def output_point(plans: Plans) -> str:
+    """The point whose extreme positions are marked: the output slide's point, or the output
+    rocker's far joint."""
+    st = plans.study
+    if st.output.kind == "slide":
+        return st.output.name
+    link = st.mech.links[st.output.name]
+    moving = [j for j in link.joints if j not in st.mech.frame]
+    return moving[-1] if moving else link.joints[-1]
+
+
+def position_record(plans: Plans) -> Record:
+    """The position plan of all positions, with arcs, trajectories, extremes and labels."""
+    sc = plans.scheme
+    mech = sc.mech
+    rec = Record(title="position plan", scales={"mu_l": plans.mu_l})
+    regular = [p.layout for p in plans.positions if p.index is not None]
+    every = [p.layout for p in plans.positions]
+    thick_keys = set(plans.accel_keys) or {0}
+    draw_frame(rec, sc, every + plans.extremes)
+    crank = mech.crank
+    O = where(sc, regular[0], FRAME, crank.pivot)
+    r = crank.length / plans.mu_l
+    rec.circle(_pt(O), r, role="trajectory", layer="construction", step="the crank pin's circle")
+    for lay in every:
+        draw_construction(rec, lay)
+    for name in plans.trajectories:
+        path = [where(sc, lay, sc.body_of(name), name) for lay in regular]
+        if max(abs(p - path[0]) for p in path) > 1.0:
+            curve = catmull_rom(path)
+            rec.add("polyline", [_pt(c) for c in curve], role="trajectory", layer="construction",
+                    step=f"trajectory of {name}")
+    out = output_point(plans)
+    extremes = [lay for lay in plans.extremes
+                if all(abs((lay.phi - p.phi + 180.0) % 360.0 - 180.0) > 1e-6 for p in plans.positions)]
+    for lay in extremes:
+        draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position")
+    for lay in every:
+        if lay.key not in thick_keys:
+            draw_links(rec, sc, lay, thick=False, step=f"position {lay.key}")
+    for lay in every:
+        if lay.key in thick_keys:
+            draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
+    labels: list[LabelRequest] = []
+    # letters at the first thick position
+    lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
+    pts = joints_at(sc, lay)
+    centre = sum(pts.values(), 0j) / len(pts)
+    for name, X in pts.items():
+        labels.append(LabelRequest(X, name, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
+    # numbers of the positions at the crank pin, the output point and the groups' inner joints
+    inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
+    for p in plans.positions:
+        lay = p.layout
+        label = str(p.index) if p.index is not None else f"{p.phi:g}°"
+        A = where(sc, lay, crank.link, crank.pin)
+        labels.append(LabelRequest(A, label, toward=A - O, size=2.5, optional=False))
+        for name in dict.fromkeys([out] + inner):
+            X = where(sc, lay, sc.body_of(name), name)
+            labels.append(LabelRequest(X, label, toward=-1j, size=2.5, optional=True))
+    for j, lay in enumerate(extremes):
+        X = where(sc, lay, sc.body_of(out), out)
+        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
+        labels.append(LabelRequest(X, out + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+    return place_labels(rec, labels)

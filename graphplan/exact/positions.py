@@ -1,0 +1,275 @@
+"""Crank positions: the assembly check over a full turn, the output's extreme (dead-centre)
+positions found exactly, and the N positions numbered from position 0 in the crank's sense."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from graphplan.util.errors import AssemblyError, SceneError
+from graphplan.exact.kinematics import Kinematics, solve
+from graphplan.model.mechanism import FRAME, Mechanism
+from graphplan.model.structure import Structure, analyse
+
+GRID = 1440      # the assembly check and the extreme search sample every 0.25°
+LOCK_SIN = 1e-9  # a group whose direction lines cross at less than this sine locks
+WARN_DEG = 10.0  # warn when a group's direction lines cross at less than this angle
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output the positions are counted from: a slide (coordinate along its guide) or a link's angle."""
+    kind: str   # "slide" or "link"
+    name: str
+
+    def value(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].t
+        return np.unwrap(kin.bodies[self.name].theta)
+
+    def rate(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].v
+        return kin.bodies[self.name].omega
+
+    def accel(self, kin: Kinematics) -> np.ndarray:
+        if self.kind == "slide":
+            return kin.slides[self.name].a
+        return kin.bodies[self.name].eps
+
+
+@dataclass
+class Study:
+    """A mechanism with its structure, output and position 0: what every command starts from."""
+    mech: Mechanism
+    structure: Structure
+    output: Output
+    phi0: float                     # crank angle of position 0, deg
+    extremes: tuple[float, ...]     # crank angles where the output stops, deg
+    t0: dict[str, float]            # slide coordinates at position 0
+    warnings: list[str] = field(default_factory=list)   # cycle-level warnings (near-locking groups)
+
+    def positions(self, count: int | None = None) -> np.ndarray:
+        """Crank angles of positions 0 … N−1, in the order the crank passes them (deg, [0, 360))."""
+        n = count or self.mech.count
+        step = 360.0 / n * np.sign(self.mech.omega1)
+        return np.mod(self.phi0 + step * np.arange(n), 360.0)
+
+    def solve(self, phi_deg) -> Kinematics:
+        kin = solve(self.mech, self.structure, phi_deg)
+        for label, ok in kin.valid.items():
+            if not np.all(ok):
+                bad = np.asarray(kin.phi_deg)[~ok]
+                raise AssemblyError(f"group {label} cannot be assembled at crank angle {bad[0]:.2f}°",
+                                    self.mech.source)
+        return kin
+
+    def _repr_svg_(self) -> str:  # Jupyter: the scheme with its positions
+        from graphplan.graphic.plans import build_plans
+        return build_plans(self)._repr_svg_()
+
+    def from_position0(self, phi_deg) -> np.ndarray:
+        """Crank turn since position 0 in the crank's sense (deg, [0, 360))."""
+        return np.mod((np.asarray(phi_deg) - self.phi0) * np.sign(self.mech.omega1), 360.0)
+
+
+def default_output(mech: Mechanism, structure: Structure) -> Output:
+    """The scene's ``output``, else the last group's slide on the frame, else its link pinned to the frame."""
+    if mech.output is not None:
+        if mech.output in mech.links:
+            return Output("link", mech.output)
+        for name, link in mech.links.items():
+            if link.slides_on is not None and next(iter(link.local)) == mech.output:
+                return Output("slide", mech.output)
+        raise SceneError(f"positions.output: {mech.output!r} is neither a link nor a sliding point",
+                         mech.source)
+    for dyad in reversed(structure.dyads):
+        for pair in (dyad.outer_b, dyad.outer_a):
+            if pair.kind == "P" and FRAME in pair.bodies:
+                return Output("slide", pair.point)
+        for pair, link in ((dyad.outer_b, dyad.b), (dyad.outer_a, dyad.a)):
+            if pair.kind == "R" and FRAME in pair.bodies:
+                return Output("link", link)
+    return Output("link", mech.crank.link)
+
+
+def study(mech: Mechanism) -> Study:
+    """Structure, assembly check over the full turn, extremes and position 0."""
+    structure = analyse(mech)
+    warnings = check_assembly(mech, structure)
+    output = default_output(mech, structure)
+    extremes = find_extremes(mech, structure, output)
+    phi0 = choose_start(mech, structure, output, extremes)
+    kin0 = solve(mech, structure, [phi0])
+    return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()},
+                 warnings)
+
+
+def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
+    """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does,
+    or that locks (its direction lines coincide) at some angle; return warnings for groups whose
+    direction lines cross at less than ``WARN_DEG`` somewhere in the turn."""
+    grid = np.arange(GRID) * 360.0 / GRID
+    kin = solve(mech, structure, grid)
+    warnings = []
+    for dyad in structure.dyads:
+        ok = kin.valid[dyad.label]
+        if np.all(ok):
+            phi, worst = _worst_condition(mech, structure, dyad.label, grid, kin.condition[dyad.label])
+            if worst < LOCK_SIN:
+                raise AssemblyError(f"{dyad.title} locks at crank angle {deg(phi, 2)}: its direction lines "
+                                    "coincide (transmission angle 0°), the crank cannot drive it through",
+                                    mech.source)
+            if dyad.kind == "RPR":
+                warnings += _block_near_pivot(kin, dyad, grid)
+            angle = math.degrees(math.asin(min(worst, 1.0)))
+            if angle < WARN_DEG:
+                warnings.append(f"{dyad.title}: its direction lines cross at only {angle:.2f}° "
+                                f"near crank angle {deg(phi, 2)} (close to locking; plans there are "
+                                "ill-conditioned)")
+            continue
+        if not np.any(ok):
+            raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
+        ranges = _bad_ranges(mech, structure, dyad.label, grid, ok)
+        if all((b - a) % 360.0 < 1e-3 or (a - b) % 360.0 < 1e-3 for a, b in ranges):
+            where = ", ".join(deg(a, 2) for a, _ in ranges)
+            raise AssemblyError(f"{dyad.title} locks at crank angle {where}: its links come into line, "
+                                "the crank cannot drive it through", mech.source)
+        text = ", ".join(f"{deg(a)}–{deg(b)}" for a, b in ranges)
+        raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
+    return warnings
+
+
+def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[str]:
+    """A slotted link whose block passes close to the rocker's pivot turns violently there
+    (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value."""
+    slider = dyad.inner.slider
+    outer_s, outer_c = (dyad.outer_a, dyad.outer_b) if slider == dyad.a else (dyad.outer_b, dyad.outer_a)
+    rho = np.abs(kin.point(outer_s.point)[0] - kin.point(outer_c.point)[0])
+    k = int(np.argmin(rho))
+    if rho[k] >= 0.05 * np.max(rho):
+        return []
+    carrier = dyad.b if slider == dyad.a else dyad.a
+    w = float(np.max(np.abs(kin.bodies[carrier].omega)))
+    return [f"{dyad.title}: the block {outer_s.point} passes within {rho[k] * 1000:.3g} mm of the pivot "
+            f"{outer_c.point} near crank angle {deg(grid[k])}; the slotted link's ω reaches {w:.4g} rad/s"]
+
+
+def deg(angle: float, digits: int = 1) -> str:
+    """A crank angle as text in [0, 360): 359.99 rounds to 0.0°, never to 360.0°."""
+    return f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
+
+
+def _worst_condition(mech, structure, label, grid, cond) -> tuple[float, float]:
+    """The crank angle and value of the smallest |sin| between the group's direction lines,
+    refined by golden-section search around the grid's local minima."""
+    step = grid[1] - grid[0]
+    n = len(grid)
+    minima = [k for k in range(n) if cond[k] <= cond[k - 1] and cond[k] <= cond[(k + 1) % n]]
+    minima = sorted(minima, key=lambda k: cond[k])[:4]
+    best_phi, best = float(grid[int(np.argmin(cond))]), float(np.min(cond))
+
+    def f(phi: float) -> float:
+        kin = solve(mech, structure, [phi])
+        return float(kin.condition[label][0]) if kin.valid[label][0] else 0.0
+
+    g = (math.sqrt(5) - 1) / 2
+    for k in minima:
+        a, b = grid[k] - step, grid[k] + step
+        c, d = b - g * (b - a), a + g * (b - a)
+        fc, fd = f(c), f(d)
+        for _ in range(40):
+            if fc < fd:
+                b, d, fd = d, c, fc
+                c = b - g * (b - a)
+                fc = f(c)
+            else:
+                a, c, fc = c, d, fd
+                d = a + g * (b - a)
+                fd = f(d)
+        phi, value = (c, fc) if fc < fd else (d, fd)
+        if value < best:
+            best_phi, best = phi % 360.0, value
+    return best_phi, best
+
+
+def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
+    """Failing intervals with their ends refined by bisection to 1e-6°."""
+    def good(phi: float) -> bool:
+        return bool(solve(mech, structure, [phi]).valid[label][0])
+
+    def edge(lo: float, hi: float) -> float:  # good(lo) != good(hi)
+        g_lo = good(lo)
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            if good(mid) == g_lo:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
+
+    step = grid[1] - grid[0]
+    n = len(grid)
+    start = int(np.argmax(ok))  # begin the scan at a good angle so every bad run is whole
+    ranges, k = [], 0
+    while k < n:
+        i = (start + k) % n
+        if not ok[i]:
+            j = k
+            while j < n and not ok[(start + j) % n]:
+                j += 1
+            a = edge(grid[(start + k - 1) % n], grid[(start + k - 1) % n] + step)
+            b = edge(grid[(start + j - 1) % n], grid[(start + j - 1) % n] + step)
+            ranges.append((a % 360.0, b % 360.0))
+            k = j
+        k += 1
+    return ranges
+
+
+def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tuple[float, ...]:
+    """Crank angles where the output's velocity changes sign, refined by bisection to ~1e-12°."""
+    grid = np.arange(GRID + 1) * 360.0 / GRID
+    rate = output.rate(solve(mech, structure, grid))
+    scale = np.max(np.abs(rate)) or 1.0
+    sign = np.sign(np.where(np.abs(rate) < 1e-12 * scale, 0.0, rate))
+    brackets = [(grid[k], grid[k + 1]) for k in range(GRID) if sign[k] * sign[k + 1] < 0]
+    brackets += [(grid[k] - 1e-9, grid[k] + 1e-9) for k in range(GRID) if sign[k] == 0]
+    if not brackets:
+        return ()
+    lo = np.array([b[0] for b in brackets])
+    hi = np.array([b[1] for b in brackets])
+    f_lo = output.rate(solve(mech, structure, lo))
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        f_mid = output.rate(solve(mech, structure, mid))
+        left = np.sign(f_mid) == np.sign(f_lo)
+        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+        hi = np.where(left, hi, mid)
+    roots = np.mod(0.5 * (lo + hi), 360.0)
+    return tuple(sorted({round(float(r), 10) % 360.0 for r in roots}))
+
+
+def choose_start(mech: Mechanism, structure: Structure, output: Output,
+                 extremes: tuple[float, ...]) -> float:
+    """Position 0: an angle from the scene, or the extreme named by ``start``."""
+    if not isinstance(mech.start, str):
+        return float(mech.start)
+    if len(extremes) < 2:
+        raise SceneError(f"positions.start = {mech.start!r}: the output {output.name} has no extreme "
+                         "positions (it turns fully); give the start as a crank angle", mech.source)
+    kin = solve(mech, structure, list(extremes))
+    values = output.value(kin)
+    hi = float(extremes[int(np.argmax(values))])
+    lo = float(extremes[int(np.argmin(values))])
+    if mech.start == "max":
+        return hi
+    if mech.start == "min":
+        return lo
+    # the working stroke is the slower one: the longer crank turn between the extremes
+    sense = np.sign(mech.omega1)
+    turn_from_hi = ((lo - hi) * sense) % 360.0
+    working_from_hi = turn_from_hi >= 180.0 - 1e-9
+    starts_working = hi if working_from_hi else lo
+    starts_idle = lo if working_from_hi else hi
+    return starts_working if mech.start == "working" else starts_idle

@@ -1,0 +1,552 @@
+"""Kinematic diagrams s, v, a by the method of chords (seed 002, REFERENCE §1.5), measured like a
+student and compared with the analytic solver; `graphplan diagrams`.
+
+The displacement s(t) of the output from position 0 (an extreme position; the angle φ(t) for a
+rocking or turning output) is drawn over an abscissa of L mm for one crank period,
+μt = T/L = 2π/(ω1·L). The curve is replaced by chords between the division ordinates; rays from the
+pole P at H1 left of the origin, parallel to the chords, cut heights on the ordinate axis that are
+carried to the middles of the intervals: the velocity ordinates, μv = μs/(μt·H1). A smooth periodic
+curve through them (the French curve) is read at the division ordinates and differentiated again
+with H2: μa = μv/(μt·H2). Every ordinate is read with the drafting precision.
+
+Signs: the diagrams are drawn the way the lab draws them, s growing away from position 0 (for a
+crank-slider starting at the outer dead centre the curve rises toward the inner one). ``sign``
+(+1 or −1) relates the drawing to the output's guide: value = sign · mm · μ, signed along the guide
+(or counter-clockwise for an angle), as the analytic solver gives it.
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
+                     pole_heights, read, standard_scale)
+from graphplan.graphic.record import Record
+from graphplan.util.errors import GraphplanError
+from graphplan.exact.positions import Output, Study
+
+MAX_S_HEIGHT = 100.0    # mm: a taller s diagram gets a coarser μs (the seed: "reduce the ordinates")
+ANGLE_HEIGHT = 80.0     # mm: the height an angle diagram is fitted to
+CRANK_MM = 70.0         # μl: the crank drawn at most 70 mm (so 35–70 mm), as on the position plan
+NEAR_ZERO = 1e-6        # |analytic| below this share of the cycle's maximum: no percent error (null)
+LAB_LIMIT = 5.0         # %, what the lab accepts
+MEANINGFUL = 0.10       # percent errors are judged against 5 % where |analytic| ≥ 10 % of the maximum
+CYCLE = 720             # samples of the exact cycle for maxima and the drawing's sign
+MAX_DIVISIONS = 720
+REFINE_LEVELS = 3       # the adaptive mode splits an interval at most into 2³ parts
+
+
+@dataclass
+class Reading:
+    """One run of the construction at one drafting precision; all ordinates in drawing mm."""
+    s: np.ndarray        # s at the division ordinates (n + 1)
+    v_ray: np.ndarray    # the heights the rays cut (exact geometry of the drawn chords), n
+    v: np.ndarray        # … read with the ruler: v at the middles of the intervals, n
+    v_at: np.ndarray     # the French curve through them read at the division ordinates, n + 1
+    a_ray: np.ndarray    # heights of the rays parallel to the chords of the v curve, n
+    a: np.ndarray        # … read: a at the middles, n
+    a_at: np.ndarray     # the a curve read at the division ordinates, n + 1
+    v_int: np.ndarray    # integration a → v (chords), at the division ordinates, n + 1
+    s_int: np.ndarray    # … then v → s, at the division ordinates, n + 1
+    s_int_v: np.ndarray  # integration of the v ordinates straight back to s, n + 1
+
+
+def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
+              precision: float) -> Reading:
+    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm."""
+    xm = midpoints(x)
+    s = read(s_mm, precision)
+    v_ray = pole_heights(x, s, H1)
+    v = read(v_ray, precision)
+    v_curve = periodic_spline(xm, v, L)
+    v_at = read(v_curve(x), precision)
+    a_ray = pole_heights(x, v_at, H2)
+    a = read(a_ray, precision)
+    a_at = read(periodic_spline(xm, a, L)(x), precision)
+    # graphical integration, the reverse construction: a → v from v(0), then v → s from s(0)
+    v_int = integrate_by_chords(x, a, H2, v_at[0])
+    v_int_mid = read(periodic_spline(x[:-1], v_int[:-1], L)(xm), precision)
+    s_int = read(integrate_by_chords(x, v_int_mid, H1, s[0]), precision)
+    s_int_v = read(integrate_by_chords(x, v, H1, s[0]), precision)
+    return Reading(s, v_ray, v, v_at, a_ray, a, a_at, read(v_int, precision), s_int, s_int_v)
+
+
+@dataclass
+class Diagrams:
+    """The three diagrams of one output with their pole constructions, readings and errors."""
+    study: Study
+    output: Output
+    point: str
+    symbols: tuple[str, str, str]   # s, v, a (or φ, ω, ε)
+    sub: str                        # the subscript: the point's or the link's name
+    unit: str                       # "m" or "rad"
+    sign: int
+    L: float
+    H1: float
+    H2: float
+    precision: float
+    adaptive: bool
+    tolerance: float
+    mu_s: float
+    mu_t: float
+    mu_v: float
+    mu_a: float
+    turn: np.ndarray                # crank turn from position 0 at the division ordinates, deg (n + 1)
+    position: list[int | None]      # the mechanism's position number at each division ordinate
+    x: np.ndarray                   # division ordinates' abscissae, mm (n + 1: 0 … L)
+    phi: np.ndarray                 # crank angles there, deg
+    phi_mid: np.ndarray             # crank angles at the middles
+    drawn: Reading                  # at the drafting precision
+    exact: Reading                  # the same construction, precision 0
+    truth: dict[str, np.ndarray]    # analytic s (n + 1), v_mid, a_mid (n), v_at, a_at (n + 1), signed
+    maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
+    chosen: tuple[int, ...]         # the positions of the lab's table
+    estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
+    warnings: list[dict[str, Any]] = field(default_factory=list)
+    lang: str = "uk"
+
+    # -- geometry ------------------------------------------------------------------------------------
+    @property
+    def divisions(self) -> int:
+        return len(self.x) - 1
+
+    @property
+    def x_mid(self) -> np.ndarray:
+        return midpoints(self.x)
+
+    @property
+    def t(self) -> np.ndarray:
+        return self.x * self.mu_t
+
+    @property
+    def t_mid(self) -> np.ndarray:
+        return self.x_mid * self.mu_t
+
+    # -- values (SI, signed along the guide) ----------------------------------------------------
+    def values(self, reading: Reading | None = None) -> dict[str, np.ndarray]:
+        r = reading or self.drawn
+        k = self.sign
+        raw = {"s": r.s * self.mu_s, "v_mid": r.v * self.mu_v, "v_at": r.v_at * self.mu_v,
+               "a_mid": r.a * self.mu_a, "a_at": r.a_at * self.mu_a,
+               "s_int": r.s_int * self.mu_s, "v_int": r.v_int * self.mu_v}
+        return {key: k * value + 0.0 for key, value in raw.items()}  # + 0.0: no −0 in the output
+
+    def errors_pct(self, key: str, reading: Reading | None = None) -> np.ndarray:
+        """100·(graphical − analytic)/analytic; NaN where the analytic value is near zero."""
+        value = self.values(reading)[key]
+        truth = self.truth[key]
+        big = self.maxima[key[0]]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            pct = 100.0 * (value - truth) / truth
+        return np.where(np.abs(truth) > NEAR_ZERO * big, pct, np.nan)
+
+    def errors_of_max(self, key: str, reading: Reading | None = None) -> np.ndarray:
+        """The error in percent of the cycle's maximum |value| (what the bench charts)."""
+        return 100.0 * (self.values(reading)[key] - self.truth[key]) / self.maxima[key[0]]
+
+    # -- outputs ------------------------------------------------------------------------------------
+    @property
+    def record(self) -> Record:
+        from graphplan.drawing.diagrams import draw
+        return draw(self, self.lang)
+
+    def record_for(self, lang: str) -> Record:
+        from graphplan.drawing.diagrams import draw
+        return draw(self, lang)
+
+    def to_json(self) -> dict[str, Any]:
+        from graphplan.report.diagrams import diagrams_json
+        return diagrams_json(self)
+
+    def table(self, lang: str = "uk") -> str:
+        from graphplan.report.diagrams import diagrams_table
+        return diagrams_table(self, lang)
+
+    def svg(self, lang: str | None = None) -> str:
+        from graphplan.drawing.svg import page_for, render
+        rec, w, h = page_for(self.record_for(lang or self.lang))
+        return render(rec, w, h, rec.title)
+
+    def _repr_svg_(self) -> str:  # Jupyter
+        return self.svg()
+
+
+# -- the study ---------------------------------------------------------------------------------------
+
+def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str, str, str], str, str]:
+    """The output named by ``--point``: a sliding point (its coordinate along its guide) or a link
+    (its angle). Returns (output, name, symbols, subscript, unit)."""
+    mech = st.mech
+    if point is None:
+        out = st.output
+    elif point in mech.links and (mech.links[point].slides_on is None or point == mech.crank.link):
+        out = Output("link", point)
+    else:
+        keys = {key for key in st.solve([st.phi0]).slides}
+        if point in keys:
+            out = Output("slide", point)
+        elif point in mech.links and next(iter(mech.links[point].local)) in keys:
+            out = Output("slide", next(iter(mech.links[point].local)))
+        else:
+            links = ", ".join(n for n, l in mech.links.items() if l.slides_on is None)
+            raise GraphplanError(f"--point {point}: not a sliding point ({', '.join(sorted(keys)) or 'none'}) "
+                                 f"nor a link ({links})", mech.source)
+    if out.kind == "link" and out.name == mech.crank.link:
+        raise GraphplanError(f"--point {out.name}: the crank turns uniformly, its diagrams are a straight "
+                             "line and two constants; name a sliding point or another link", mech.source)
+    if out.kind == "slide":
+        return out, out.name, ("s", "v", "a"), out.name, "m"
+    return out, out.name, ("φ", "ω", "ε"), str(mech.links[out.name].number), "rad"
+
+
+def exact_motion(st: Study, out: Output, turn_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Analytic s (from position 0), v, a of the output at the crank turns since position 0.
+    A link's angle is unwrapped along the crank's turn over a fine grid as well, so a turning link
+    keeps counting however coarse the divisions."""
+    turn_deg = np.asarray(turn_deg, dtype=float)
+    grid = np.arange(CYCLE + 1) * 360.0 / CYCLE if out.kind == "link" else np.empty(0)
+    turns = np.concatenate(([0.0], turn_deg, grid))
+    kin = st.solve(crank_angle(st, turns))
+    value = out.value(kin)
+    if out.kind == "link":
+        order = np.argsort(turns, kind="stable")
+        unwrapped = np.empty_like(value)
+        unwrapped[order] = np.unwrap(value[order])
+        value = unwrapped
+    m = 1 + len(turn_deg)
+    return value[1:m] - value[0], out.rate(kin)[1:m], out.accel(kin)[1:m]
+
+
+def crank_angle(st: Study, turn_deg) -> np.ndarray:
+    """Crank angle φ (deg, [0, 360)) after turning ``turn_deg`` from position 0 in the crank's sense."""
+    return np.mod(st.phi0 + np.sign(st.mech.omega1) * np.asarray(turn_deg, dtype=float), 360.0)
+
+
+def division_turns(divisions: int | Sequence[float], where: str = "divisions") -> np.ndarray:
+    """Crank turns (deg) of the division ordinates from position 0, ending with 360."""
+    if isinstance(divisions, (int, np.integer)):
+        n = int(divisions)
+        if not 4 <= n <= MAX_DIVISIONS:
+            raise GraphplanError(f"{where} must be from 4 to {MAX_DIVISIONS}, got {n}")
+        return np.arange(n + 1) * 360.0 / n
+    turns = np.asarray([float(d) for d in divisions])
+    if turns.size == 0 or not np.all(np.isfinite(turns)):
+        raise GraphplanError(f"{where}: give a number or crank turns in degrees from position 0")
+    if np.any(turns < 0) or np.any(turns >= 360):
+        raise GraphplanError(f"{where}: crank turns must lie in [0, 360), got {turns.min():g}…{turns.max():g}")
+    if turns[0] != 0.0:
+        turns = np.concatenate(([0.0], turns))
+    if np.any(np.diff(turns) <= 0):
+        raise GraphplanError(f"{where}: crank turns must increase")
+    if not 4 <= len(turns) <= MAX_DIVISIONS:
+        raise GraphplanError(f"{where}: from 4 to {MAX_DIVISIONS} intervals, got {len(turns)}")
+    return np.append(turns, 360.0)
+
+
+def choose_mu_s(st: Study, unit: str, s_range: float, height: float | None) -> float:
+    """μs = μl by default (the crank 35–70 mm on the position plan, standard series); coarser when
+    the stroke would be taller than 100 mm; fitted to ``height`` mm when given. Angles: fitted to
+    80 mm (or ``height``)."""
+    span = max(s_range, 1e-12)
+    if height is not None:
+        return standard_scale(span / height)
+    if unit == "rad":
+        return standard_scale(span / ANGLE_HEIGHT)
+    mu = standard_scale(st.mech.crank.length / CRANK_MM)
+    return mu if span / mu <= MAX_S_HEIGHT else standard_scale(span / MAX_S_HEIGHT)
+
+
+def refine(st: Study, out: Output, turns: np.ndarray, sign: int, mu_s: float, L: float, H1: float,
+           H2: float, tolerance: float, precision: float) -> np.ndarray:
+    """The adaptive mode: split the intervals whose estimated chord error (of v or of a, in mm on
+    their diagrams) exceeds ``tolerance``, the way the seed asks for smaller intervals near extrema
+    and sharp bends — but only where halving pays: the chord error falls 4× while the ruler's
+    error, amplified by H/h (v) and H1·H2/h² (a), grows (see ``ruler_noise``). Neighbours are kept
+    within 2:1 so the spacing changes gradually."""
+    for _ in range(REFINE_LEVELS):
+        x = L * turns / 360.0
+        s = sign * exact_motion(st, out, turns)[0] / mu_s
+        e_v, e_a = chord_error_estimate(x[:-1], s[:-1] - (s[-1] - s[0]) * x[:-1] / L, L)
+        h = np.diff(x)
+        chord = e_v * H1 + e_a * H1 * H2
+        now = chord + ruler_noise(h, H1, H2, precision)
+        halved = chord / 4 + ruler_noise(h / 2, H1, H2, precision)
+        split = (np.maximum(e_v * H1, e_a * H1 * H2) > tolerance) & (halved < now)
+        if not split.any():
+            break
+        for _ in range(REFINE_LEVELS + 1):  # 2:1 balance with the neighbours after splitting
+            new_h = np.where(split, h / 2, h)
+            too_big = (new_h > 2.0001 * np.roll(new_h, 1)) | (new_h > 2.0001 * np.roll(new_h, -1))
+            if not (too_big & ~split).any():
+                break
+            split |= too_big
+        if len(turns) - 1 + int(split.sum()) > MAX_DIVISIONS:
+            break
+        mids = midpoints(turns)[split]
+        turns = np.sort(np.concatenate((turns, mids)))
+    return turns
+
+
+def ruler_noise(h: np.ndarray, H1: float, H2: float, precision: float) -> np.ndarray:
+    """Expected RMS error (mm) the ruler puts on a v and an a ordinate over intervals h: readings
+    off by up to ±p/2 (RMS σ = p/√12); a chord's slope differences two of them (√2·σ·H1/h), the
+    second differentiation three (√6·σ·H1·H2/h²)."""
+    sigma = precision / math.sqrt(12.0)
+    return math.sqrt(2.0) * sigma * H1 / h + math.sqrt(6.0) * sigma * H1 * H2 / h ** 2
+
+
+def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequence[float] | None = None,
+                   L: float = 240.0, H1: float = 30.0, H2: float = 30.0, precision: float = 0.5,
+                   adaptive: bool = False, height: float | None = None, *,
+                   tolerance: float = 0.5, chosen: Sequence[int] | None = None,
+                   lang: str = "uk") -> Diagrams:
+    """The s, v, a diagrams of the output (or ``point``: a sliding point or a link) by chords.
+
+    ``divisions``: a number of equal intervals (default: the scene's positions count) or the crank
+    turns from position 0 (deg) of non-uniform division ordinates. ``adaptive`` splits intervals where
+    the chord error estimate exceeds ``tolerance`` mm. ``height``: fit the s diagram to this many mm.
+    ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn)."""
+    _check_positive(L=L, H1=H1, H2=H2, tolerance=tolerance)
+    if height is not None:
+        _check_positive(height=height)
+    if not (precision >= 0 and math.isfinite(precision)) or precision > 10:
+        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {precision}")
+    if lang not in ("uk", "en"):
+        raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
+    mech = st.mech
+    out, name, symbols, sub, unit = resolve_output(st, point)
+    turns = division_turns(mech.count if divisions is None else divisions)
+
+    cycle_turn = np.arange(CYCLE + 1) * 360.0 / CYCLE
+    s_c, v_c, a_c = exact_motion(st, out, cycle_turn)
+    growth = s_c[-1] - s_c[0]
+    s_range = float(np.ptp(s_c))
+    rotating = abs(growth) > 1e-9 * max(s_range, 1e-300)
+    sign = int(np.sign(growth)) if rotating else (1 if np.mean(s_c) >= 0 else -1)
+    mu_s = choose_mu_s(st, unit, s_range, height)
+    mu_t = 2 * math.pi / (abs(mech.omega1) * L)     # μt = T/L = 2π/(ω1·L)
+    mu_v = mu_s / (mu_t * H1)
+    mu_a = mu_v / (mu_t * H2)
+
+    uniform = turns.copy()
+    if adaptive:
+        turns = refine(st, out, turns, sign, mu_s, L, H1, H2, tolerance, precision)
+    x = L * turns / 360.0
+    xm = midpoints(x)
+    s_t, v_at_t, a_at_t = exact_motion(st, out, turns)
+    _, v_mid_t, a_mid_t = exact_motion(st, out, midpoints(turns))
+    truth = {"s": s_t, "v_mid": v_mid_t, "v_at": v_at_t, "a_mid": a_mid_t, "a_at": a_at_t,
+             "s_int": s_t, "v_int": v_at_t}
+    maxima = {"s": float(np.max(np.abs(s_c))), "v": float(np.max(np.abs(v_c))),
+              "a": float(np.max(np.abs(a_c)))}
+    s_mm = sign * s_t / mu_s
+    drawn = construct(x, s_mm, L, H1, H2, precision)
+    exact = construct(x, s_mm, L, H1, H2, 0.0)
+
+    on_grid = {round(float(u), 9): k for k, u in enumerate(uniform[:-1])}
+    position = [on_grid.get(round(float(u), 9)) for u in turns[:-1]] + [0]
+    if chosen is None:
+        n0 = len(uniform) - 1
+        chosen = tuple(p for p in (1, n0 // 2 + 1) if p < n0)
+    else:
+        chosen = tuple(int(c) for c in chosen)
+        n0 = len(uniform) - 1
+        for c in chosen:
+            if not 0 <= c < n0:
+                raise GraphplanError(f"--at: positions are 0 … {n0 - 1}, got {c}")
+    e_v, e_a = chord_error_estimate(x[:-1], s_mm[:-1] - (s_mm[-1] - s_mm[0]) * x[:-1] / L, L)
+    d = Diagrams(st, out, name, symbols, sub, unit, sign, float(L), float(H1), float(H2), float(precision),
+                 bool(adaptive), float(tolerance), mu_s, mu_t, mu_v, mu_a, turns, position, x,
+                 crank_angle(st, turns), crank_angle(st, midpoints(turns)), drawn, exact, truth, maxima,
+                 chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang)
+    d.warnings = diagnose(d)
+    return d
+
+
+def _check_positive(**values: float) -> None:
+    for key, value in values.items():
+        if not (value > 0 and math.isfinite(value)):
+            raise GraphplanError(f"--{key.lower()} must be a positive number of mm, got {value}")
+
+
+# -- where the method fails ----------------------------------------------------------------------
+
+def rms(a: np.ndarray) -> float:
+    return float(np.sqrt(np.mean(np.square(a)))) if len(a) else 0.0
+
+
+def ruler_effect(d: Diagrams) -> dict[str, float] | None:
+    """The ruler's share of the error: drawing at the precision minus the exact drawing, RMS in
+    percent of each diagram's maximum, and the factor each differentiation multiplies it by."""
+    if d.precision == 0:
+        return None
+    mx = {key: d.maxima[key] / mu for key, mu in (("s", d.mu_s), ("v", d.mu_v), ("a", d.mu_a))}
+    dr, ex = d.drawn, d.exact
+    s = 100 * rms(dr.s - ex.s) / mx["s"]
+    v = 100 * rms(dr.v - ex.v) / mx["v"]
+    a = 100 * rms(dr.a - ex.a) / mx["a"]
+    return {"s_rms_pct": s, "v_rms_pct": v, "a_rms_pct": a,
+            "first": v / s if s > 0 else math.inf, "second": a / v if v > 0 else math.inf,
+            "v_max_pct": 100 * float(np.max(np.abs(dr.v - ex.v))) / mx["v"],
+            "a_max_pct": 100 * float(np.max(np.abs(dr.a - ex.a))) / mx["a"]}
+
+
+def _near_extreme(d: Diagrams, k: int) -> float | None:
+    """An extreme position (crank turn, deg) within one interval of interval k, if any."""
+    st = d.study
+    lo, hi = d.turn[k], d.turn[k + 1]
+    width = hi - lo
+    for e in st.extremes:
+        u = float(st.from_position0(e))
+        for cand in (u, u + 360.0, u - 360.0):
+            if lo - width <= cand <= hi + width:
+                return float(e)
+    return None
+
+
+def _where(d: Diagrams, k: int, lang: str) -> str:
+    """Interval k with its crank angles and why the chord misses there."""
+    e = _near_extreme(d, k)
+    a = 100 * abs(d.truth["a_mid"][k]) / d.maxima["a"]
+    sym = d.symbols[2]
+    if lang == "uk":
+        place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
+        if e is not None:
+            return place + f", біля крайнього положення φ = {e:.1f}°)"
+        return place + f", крутий згин: |{sym}| = {a:.0f} % від максимуму)"
+    place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
+    if e is not None:
+        return place + f", next to the extreme position at φ = {e:.1f}°)"
+    return place + f", a sharp bend: |{sym}| = {a:.0f} % of its maximum)"
+
+
+def diagnose(d: Diagrams) -> list[dict[str, Any]]:
+    """Warnings, each with its numbers and a ``message`` (English) and ``message_uk``: the chord
+    error of v and a (the exact drawing's, so the ruler does not hide it), the division ordinates
+    past the lab's 5 %, the ruler's error amplified by each differentiation, diagrams too tall or
+    too flat for their pole distances."""
+    out: list[dict[str, Any]] = []
+    n = d.divisions
+    for key, sym in (("v_mid", d.symbols[1]), ("a_mid", d.symbols[2])):
+        err = d.errors_of_max(key, d.exact)
+        bad = np.flatnonzero(np.abs(err) > LAB_LIMIT)
+        if bad.size:
+            worst = bad[np.argsort(-np.abs(err[bad]))][:3]
+            en = "; ".join(f"{err[k]:+.1f} % in interval {_where(d, k, 'en')}" for k in worst)
+            uk = "; ".join(f"{err[k]:+.1f} % в інтервалі {_where(d, k, 'uk')}" for k in worst)
+            out.append({"kind": "chord_error", "diagram": sym, "intervals": [int(k) for k in bad],
+                        "max_pct_of_max": float(np.max(np.abs(err))),
+                        "message": f"chord error of {sym} exceeds {LAB_LIMIT:g} % of |{sym}|max in {bad.size} "
+                                   f"of {n} intervals: {en}; take smaller intervals there (--adaptive) or "
+                                   "more divisions",
+                        "message_uk": f"похибка хорд для {sym} перевищує {LAB_LIMIT:g} % від |{sym}|max у "
+                                      f"{bad.size} з {n} інтервалів: {uk}; там треба менші інтервали "
+                                      "(--adaptive) або більше поділок"})
+    for key, sym in (("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
+        pct = d.errors_pct(key)[:-1]
+        judged = np.abs(d.truth[key][:-1]) >= MEANINGFUL * d.maxima[key[0]]
+        bad = np.flatnonzero(judged & (np.abs(np.nan_to_num(pct)) > LAB_LIMIT))
+        if bad.size:
+            text = ", ".join(f"{k} ({pct[k]:+.1f} %)" for k in bad[:8]) + (" …" if bad.size > 8 else "")
+            out.append({"kind": "lab_limit", "diagram": sym, "ordinates": [int(k) for k in bad],
+                        "error_pct": [float(pct[k]) for k in bad],
+                        "message": f"{sym} read at the division ordinates misses the lab's {LAB_LIMIT:g} % at "
+                                   f"{text}",
+                        "message_uk": f"{sym}, прочитане на ординатах поділу, виходить за {LAB_LIMIT:g} % "
+                                      f"лабораторної роботи в {text}"})
+    ruler = ruler_effect(d)
+    if ruler is not None:
+        s0, v1, v2 = d.symbols
+        errs = f"{s0} {ruler['s_rms_pct']:.2f} %, {v1} {ruler['v_rms_pct']:.2f} %, {v2} {ruler['a_rms_pct']:.2f} %"
+        out.append({"kind": "ruler", "amplification_first": ruler["first"],
+                    "amplification_second": ruler["second"],
+                    "message": f"the ruler's {d.precision:g} mm reading error (RMS, % of the maximum): {errs}; "
+                               f"the first differentiation amplifies it ×{ruler['first']:.1f}, the second "
+                               f"×{ruler['second']:.1f}",
+                    "message_uk": f"похибка відліку лінійкою {d.precision:g} мм (СКВ, % від максимуму): {errs}; "
+                                  f"перше диференціювання підсилює її ×{ruler['first']:.1f}, друге "
+                                  f"×{ruler['second']:.1f}"})
+    for sym, rd, H, opt in ((d.symbols[1], d.drawn.v, d.H1, "--h1"), (d.symbols[2], d.drawn.a, d.H2, "--h2")):
+        tall = float(np.ptp(np.append(rd, 0.0)))
+        if tall > 200 or tall < 15:
+            better = H * 60.0 / max(tall, 1e-9)
+            out.append({"kind": "height", "diagram": sym, "height_mm": tall,
+                        "message": f"the {sym} diagram is {tall:.0f} mm tall with H = {H:g} mm; "
+                                   f"{opt} {better:.0f} would make it about 60 mm",
+                        "message_uk": f"діаграма {sym} має висоту {tall:.0f} мм при H = {H:g} мм; "
+                                      f"{opt} {better:.0f} дасть близько 60 мм"})
+    if d.study.mech.crank.epsilon != 0:
+        out.append({"kind": "epsilon1",
+                    "message": "the diagrams take one crank period at constant ω1; the scene's ε1 ≠ 0 is in "
+                               "the analytic values only",
+                    "message_uk": "діаграми побудовано для сталої ω1; задане ε1 ≠ 0 враховане лише в "
+                                  "аналітичних значеннях"})
+    return out
+
+
+# -- the command -----------------------------------------------------------------------------------
+
+def _divisions_arg(text: str) -> int | list[float]:
+    try:
+        if "," in text:
+            return [float(v) for v in text.split(",") if v.strip()]
+        return int(text)
+    except ValueError:
+        raise GraphplanError(f"--divisions: a whole number or comma-separated crank turns, got {text!r}") from None
+
+
+def cmd_diagrams(args) -> int:
+    import sys
+
+    from graphplan.cli.main import _load, dumps
+    from graphplan.util.files import write_atomic
+    st = _load(args.scene)
+    scene = st.mech.diagram          # the scene's [diagrams] table gives the defaults
+    pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
+    d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
+                       L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
+                       H2=pick(args.h2, "H2_mm", 30.0),
+                       precision=args.precision, adaptive=args.adaptive, height=args.height,
+                       tolerance=args.tolerance, chosen=args.at, lang=args.lang)
+    if args.svg:
+        write_atomic(args.svg, d.svg())
+    if args.json:
+        sys.stdout.write(dumps(d.to_json()))
+    else:
+        sys.stdout.write(d.table(args.lang))
+    return 0
+
+
+def register(sub) -> None:
+    from graphplan.cli.main import _scene_arg
+    p = sub.add_parser(
+        "diagrams", help="s–v–a diagrams by the method of chords, measured and compared",
+        description="Kinematic diagrams of the output (displacement from position 0, velocity, "
+                    "acceleration) by graphical differentiation with chords and pole distances H1, H2; "
+                    "graphical integration back; every ordinate read with the drafting precision and "
+                    "compared with the analytic solver.")
+    _scene_arg(p, optional=True)
+    p.add_argument("--point", metavar="P", help="a sliding point or a link (default: the scene's output)")
+    p.add_argument("--divisions", type=_divisions_arg, metavar="N",
+                   help="equal intervals (default: the scene's positions count), or comma-separated crank "
+                        "turns from position 0 in degrees for unequal ones")
+    p.add_argument("--h1", type=float, metavar="MM", help="pole distance of the v diagram (the scene's, else 30)")
+    p.add_argument("--h2", type=float, metavar="MM", help="pole distance of the a diagram (the scene's, else 30)")
+    p.add_argument("--L", type=float, metavar="MM", help="abscissa of one crank period (the scene's, else 240)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every reading (0.5; 0 = exact)")
+    p.add_argument("--adaptive", action="store_true",
+                   help="split intervals where the chord error estimate is large (extrema, sharp bends)")
+    p.add_argument("--tolerance", type=float, default=0.5, metavar="MM",
+                   help="the adaptive mode's chord error estimate limit on the v and a diagrams (0.5)")
+    p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
+    p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
+    p.add_argument("--lang", choices=("uk", "en"), default="uk", help="captions and table language (uk)")
+    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
+    p.add_argument("--svg", metavar="FILE", help="write the three diagrams with their pole constructions")
+    p.set_defaults(handler=cmd_diagrams)
+

@@ -1,0 +1,639 @@
+"""The force plans and the Zhukovsky lever, drawn and measured like a student (seed 000 §2.6).
+
+Each group, from the last to the crank, is drawn at the length scale μl with every force at its
+point. The tangential components of the outer revolute reactions come from the moment equation of
+each link about the inner joint, Σ F·h = 0, with the arms h read off the drawing (mm, rounded to the
+drafting precision) — "R^τ·BC + P'·BC + Φ·h2 − G·h1 = 0". The force polygon is then laid off at μF
+(N/mm, the standard series): the known forces head to tail, each drawn to the nearest precision mm,
+and closed by lines of the unknown directions; where they cross the reactions are read off (mm,
+rounded) and multiplied by μF. A reaction found in one group enters the next one as a known force
+with its measured value. The crank's equilibrium gives the balancing moment M_b = R21·h·μl.
+
+The lever: the velocity plan is built from the measured plan vectors p_v x (mm at μv, rounded),
+turned 90° counter-clockwise; each force is carried to its point's image (a couple as a pair
+M/l at its link's joints); Σ F·h about the pole, with h read off the lever, balances the force P_b
+at the crank pin's image: P_b·pa = ΣF·h, M_b = P_b·l_OA.
+
+With precision 0 nothing is rounded and every result equals the closed form (kinetostatics.py).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from graphplan.graphic.record import Record
+from graphplan.exact.kinematics import cross, dot
+from graphplan.exact.kinetostatics import CRANK_LABEL, Kinetostatics, Load, analyse, number
+from graphplan.model.mechanism import FRAME
+from graphplan.exact.positions import Study
+
+SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
+DEFAULT_PRECISION = 0.5
+POLYGON_MM = 150.0     # the largest force of the analysis is drawn at most this long
+MECHANISM_MM = 250.0   # the mechanism's extent over the turn fits in this many mm
+PLAN_MM = 120.0        # the fastest point's velocity vector on the lever
+
+
+def standard_scale(value: float) -> float:
+    """The smallest scale coefficient of the standard series 1, 2, 2.5, 4, 5 × 10^k ≥ value."""
+    if not value > 0 or not math.isfinite(value):
+        return 1.0
+    k = math.floor(math.log10(value))
+    for p in (k, k + 1):
+        for s in SERIES:
+            c = s * 10.0 ** p
+            if c >= value * (1 - 1e-12):
+                return float(f"{c:.12g}")
+    return 10.0 ** (k + 1)
+
+
+def measure(mm: float, precision: float) -> float:
+    """A length read off the drawing: rounded to the drafting precision (0 = exact)."""
+    return float(mm) if precision <= 0 else float(precision * round(mm / precision))
+
+
+def angle_deg(z: complex) -> float:
+    """The direction of a vector, degrees in [0, 360) (0 for the zero vector)."""
+    if abs(z) == 0:
+        return 0.0
+    a = math.degrees(math.atan2(z.imag, z.real)) % 360.0
+    return 0.0 if a >= 360.0 else a + 0.0
+
+
+def error_pct(value: float, analytic: float, scale: float) -> float | None:
+    """100·(value − analytic)/analytic, or None when |analytic| < 1e-6·scale (a percent of
+    nearly nothing means nothing)."""
+    if abs(analytic) < 1e-6 * scale or abs(analytic) == 0:
+        return None
+    return 100.0 * (value - analytic) / analytic
+
+
+# -- what the plans are made of ------------------------------------------------------------------
+
+@dataclass
+class GForce:
+    """A force (or couple) known to act on a link of a group: a load or a transferred reaction."""
+    name: str
+    link: str
+    at: complex          # m
+    force: complex       # N, as the draftsman uses it (loads exact, reactions as measured)
+    couple: float = 0.0  # N·m
+    kind: str = "load"   # "load" or "reaction"
+
+
+@dataclass
+class Term:
+    """One term ±F·h of a moment equation; h in drawing mm (measured), value in N·m. A couple
+    enters as it is (``couple`` True, ``force`` = M)."""
+    name: str
+    force: float
+    arm_mm: float
+    value: float
+    foot: complex = 0j   # the foot of the arm on the force's line (drawing mm)
+    couple: bool = False
+
+
+@dataclass
+class MomentEquation:
+    """Σ M_P = 0 for a link (or the group) about point P, solved for one unknown component."""
+    about: str
+    links: tuple[str, ...]
+    terms: list[Term]
+    unknown: str
+    arm_mm: float        # the unknown's arm (the link's length, or the block's distance)
+    result: float        # the unknown component (N), signed along its reference direction
+
+
+@dataclass
+class Side:
+    """A side of a force polygon, in the polygon's mm."""
+    name: str
+    start: complex
+    end: complex
+    role: str            # "known", "reaction", "component"
+
+    @property
+    def mm(self) -> float:
+        return abs(self.end - self.start)
+
+
+@dataclass
+class Measured:
+    """A reaction read off its polygon: mm, value = mm·μF, its direction, and the truth."""
+    key: str
+    mm: float
+    value: float
+    angle_deg: float
+    analytic: float
+    analytic_angle_deg: float
+    error_pct: float | None
+    vector: complex      # the measured force on the higher-numbered link, N
+
+
+@dataclass
+class GroupPlan:
+    """One group's construction: its forces, moment equations, force polygon and reactions."""
+    label: str
+    kind: str
+    links: tuple[str, ...]
+    forces: list[GForce]
+    equations: list[MomentEquation]
+    sides: list[Side]
+    lines: list[tuple[complex, complex]]            # direction lines of the unknowns (mm)
+    reactions: dict[str, Measured]
+    points: dict[str, complex]                      # the group's points on the drawing (mm)
+    segments: list[tuple[str, str]]                 # the group's links as point pairs
+
+
+@dataclass
+class LeverTerm:
+    name: str
+    force: float         # N
+    arm_mm: float        # signed: + counter-clockwise about the pole
+    moment: float        # N·mm
+    image: str           # the point's image it acts at
+    vector: complex      # the force (N), for drawing
+
+
+@dataclass
+class Lever:
+    """The Zhukovsky lever: the velocity plan (mm, not yet turned) and the moments about the pole."""
+    mu_v: float
+    images: dict[str, complex]      # p_v x in mm (measured lengths, exact directions)
+    links: list[tuple[str, str]]    # image segments of the links (for drawing)
+    terms: list[LeverTerm]
+    pa_mm: float
+    total: float                    # Σ F·h, N·mm
+    balancing_force: float          # P_b (N), + when its moment on the crank is counter-clockwise
+    balancing: float                # M_b, N·m
+
+
+@dataclass
+class ForcePlans:
+    """The whole graphical force analysis at one crank angle."""
+    ks: Kinetostatics
+    phi_deg: float
+    precision: float
+    mu_l: float
+    mu_F: float
+    groups: list[GroupPlan]          # last group first, the crank last
+    balancing: float                 # M_b from the crank's equilibrium (plans), N·m
+    balancing_arm_mm: float
+    lever: Lever
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def analytic(self) -> float:
+        return float(self.ks.balancing[0])
+
+    @property
+    def power(self) -> float:
+        return float(self.ks.power()[0])
+
+    def reactions(self) -> dict[str, Measured]:
+        out: dict[str, Measured] = {}
+        for g in self.groups:
+            out.update(g.reactions)
+        return out
+
+
+# -- the construction ----------------------------------------------------------------------------
+
+class _Draftsman:
+    """Draws at μl and μF and reads lengths to the precision."""
+
+    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float):
+        self.ks, self.mech, self.kin = ks, ks.mech, ks.kin
+        self.p, self.mu_l, self.mu_F = precision, mu_l, mu_F
+        self.known: dict[str, list[GForce]] = {name: [] for name in self.mech.links}
+        for ld in ks.loads:
+            f, c = complex(ld.force[0]), float(ld.couple[0])
+            if f == 0 and c == 0:
+                continue
+            self.known[ld.link].append(GForce(ld.name, ld.link, complex(ld.at[0]), f, c))
+        self.scale = max([abs(g.force) for fs in self.known.values() for g in fs]
+                         + [float(np.max(np.abs(r.force))) for r in ks.reactions.values()] + [1.0])
+
+    # the drawing of the mechanism
+    def mm(self, x: complex) -> complex:
+        return x / self.mu_l
+
+    def at(self, point: str, link: str | None = None) -> complex:
+        """A point's position (m); on ``link`` when given (a slider's own point)."""
+        if link is not None and point in self.mech.links[link].local:
+            return complex(self.kin.bodies[link].at(self.mech.links[link].local[point])[0][0])
+        return complex(self.kin.point(point)[0][0])
+
+    def pair_at(self, pair) -> complex:
+        body = pair.slider if pair.kind == "P" else next(b for b in pair.bodies if b != FRAME)
+        return self.at(pair.point, body)
+
+    def guide(self, pair) -> complex:
+        g = self.mech.guides[pair.guide]
+        return complex(np.exp(1j * (self.kin.bodies[g.body].theta[0] + g.angle)))
+
+    # measuring
+    def length(self, a: complex, b: complex) -> float:
+        """A distance on the mechanism's drawing, measured (m)."""
+        return measure(abs(self.mm(b - a)), self.p) * self.mu_l
+
+    def term(self, f: GForce, about: complex) -> list[Term]:
+        """±F·h about a point with h read off the drawing; a couple enters as it is."""
+        out = []
+        if f.force != 0:
+            r = self.mm(f.at - about)
+            unit = f.force / abs(f.force)
+            arm = cross(r, unit)
+            h = math.copysign(measure(abs(arm), self.p), arm)
+            foot = r - dot(r, unit) * unit + self.mm(about)
+            out.append(Term(f.name, abs(f.force), h, abs(f.force) * h * self.mu_l, complex(foot)))
+        if f.couple:
+            out.append(Term(f.name, f.couple, 0.0, f.couple, couple=True))
+        return out
+
+    def moments(self, links: tuple[str, ...], about: complex) -> list[Term]:
+        return [t for link in links for f in self.known[link] for t in self.term(f, about)]
+
+    def drawn(self, force: complex) -> complex:
+        """A known force laid off at μF: its length rounded, its direction exact (mm)."""
+        if force == 0:
+            return 0j
+        return measure(abs(force) / self.mu_F, self.p) * force / abs(force)
+
+    def read(self, vec_mm: complex) -> tuple[float, complex]:
+        """An unknown read off the polygon: (mm, the force in N)."""
+        mm = measure(abs(vec_mm), self.p)
+        if abs(vec_mm) == 0:
+            return 0.0, 0j
+        return mm, mm * self.mu_F * vec_mm / abs(vec_mm)
+
+    def force_sum(self, link: str) -> complex:
+        return sum((f.force for f in self.known[link]), 0j)
+
+
+class _Polygon:
+    """A force polygon: known forces head to tail, then the unknowns closing it."""
+
+    def __init__(self, d: _Draftsman):
+        self.d = d
+        self.sides: list[Side] = []
+        self.lines: list[tuple[complex, complex]] = []
+        self.end = 0j
+
+    def lay(self, name: str, force: complex, role: str = "known") -> complex:
+        """Lay a known force from the current end; returns the vertex it starts at."""
+        start = self.end
+        vec = self.d.drawn(force)
+        if vec != 0:
+            self.sides.append(Side(name, start, start + vec, role))
+        self.end = start + vec
+        return start
+
+    def lay_all(self, forces: list[GForce]) -> None:
+        for f in forces:
+            if f.force != 0:
+                self.lay(f.name, f.force)
+
+    def close_two(self, u_end: complex, u_start: complex, start: complex = 0j) -> complex:
+        """Lines ∥ u_end through the current end and ∥ u_start through ``start``: their crossing."""
+        e = self.end
+        # e + s·u_end = start + t·u_start
+        s = cross(start - e, u_start) / cross(u_end, u_start)
+        k = complex(e + s * u_end)
+        for base, u in ((e, u_end), (start, u_start)):
+            reach = dot(k - base, u)
+            lo, hi = min(0.0, reach) - 8.0, max(0.0, reach) + 8.0
+            self.lines.append((complex(base + lo * u), complex(base + hi * u)))
+        return k
+
+    def side(self, name: str, a: complex, b: complex, role: str = "reaction") -> Side:
+        s = Side(name, a, b, role)
+        self.sides.append(s)
+        return s
+
+
+def _orient(mech, frm: str, on: str, force: complex) -> complex:
+    """The force as the key R<lo><hi> reads it: on the higher-numbered body."""
+    return -force if number(mech, frm) > number(mech, on) else force
+
+
+class _Plans:
+    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float):
+        self.d = _Draftsman(ks, precision, mu_l, mu_F)
+        self.ks, self.mech = ks, ks.mech
+        self.groups: list[GroupPlan] = []
+
+    def measured(self, key: str, vec_mm: complex, frm: str, on: str, pair, at: complex,
+                 couple_line: complex | None = None) -> Measured:
+        """Read a reaction (the force on ``on`` from ``frm``) and hand it to the links it loads."""
+        mm, force = self.d.read(vec_mm)
+        for body, f in ((frm, -force), (on, force)):
+            if body != FRAME and body not in self.current:
+                where = couple_line if couple_line is not None else at
+                self.d.known[body].append(GForce(key, body, where, f, 0.0, "reaction"))
+        truth = self.ks.reactions[key]
+        t = complex(truth.force[0])
+        v = _orient(self.mech, frm, on, force)
+        return Measured(key, mm, abs(v), angle_deg(v), abs(t), angle_deg(t),
+                        error_pct(abs(v), abs(t), self.d.scale), v)
+
+    def key_of(self, group: str, pair) -> str:
+        for k, r in self.ks.reactions.items():
+            if r.group == group and r.point == pair.point and {r.frm, r.on} == set(pair.bodies):
+                return k
+        raise KeyError(pair)
+
+    def equation(self, about_name: str, about: complex, links: tuple[str, ...], unknown: str,
+                 arm_m: float, extra: list[Term] | None = None) -> MomentEquation:
+        """Σ M_about(known) + R·arm = 0 → R = −Σ/arm (the arm measured, signed)."""
+        terms = self.d.moments(links, about) + (extra or [])
+        total = sum(t.value for t in terms)
+        result = -total / arm_m + 0.0 if arm_m else 0.0
+        return MomentEquation(about_name, links, terms, unknown, arm_m / self.d.mu_l, result)
+
+    def group(self, gf) -> None:
+        d = gf.dyad
+        self.current = (d.a, d.b)
+        kind = d.kind
+        poly = _Polygon(self.d)
+        eqs: list[MomentEquation] = []
+        found: dict[str, Measured] = {}
+        pts: dict[str, complex] = {}
+        segs: list[tuple[str, str]] = []
+        fa, fb = self.d.known[d.a], self.d.known[d.b]
+
+        def pair_key(pair):
+            return self.key_of(d.label, pair)
+
+        if kind in ("RRR", "RRP"):
+            p1, c = self.d.pair_at(d.outer_a), self.d.pair_at(d.inner)
+            la = self.d.length(p1, c)
+            ua = (c - p1) / abs(c - p1)
+            # moment of link a about C: M_a(C) − l·τ_a = 0 (τ along i·u_a)
+            ea = self.equation(d.inner.point, c, (d.a,), f"{pair_key(d.outer_a)}τ", -la)
+            eqs.append(ea)
+            ta = ea.result
+            poly.lay(f"{pair_key(d.outer_a)}τ", 1j * ta * ua, "component")
+            t_end = poly.end
+            poly.lay_all(fa)
+            vb = poly.end
+            poly.lay_all(fb)
+            if kind == "RRR":
+                p3 = self.d.pair_at(d.outer_b)
+                lb = self.d.length(p3, c)
+                ub = (c - p3) / abs(c - p3)
+                eb = self.equation(d.inner.point, c, (d.b,), f"{pair_key(d.outer_b)}τ", -lb)
+                eqs.append(eb)
+                u_start = poly.lay(f"{pair_key(d.outer_b)}τ", 1j * eb.result * ub, "component")
+                k = poly.close_two(ub, ua)
+                poly.side(f"{pair_key(d.outer_b)}n", poly.end, k, "component")
+                kb = pair_key(d.outer_b)
+                found[kb] = self.measured(kb, k - u_start, d.outer_b.other(d.b), d.b, d.outer_b, p3)
+                poly.side(kb, u_start, k)
+                pts[d.outer_b.point] = p3
+            else:
+                ng = 1j * self.d.guide(d.outer_b)
+                k = poly.close_two(ng, ua)
+                kb = pair_key(d.outer_b)
+                xb = self.d.pair_at(d.outer_b)
+                _, force_b = self.d.read(k - poly.end)
+                # the slider's moment about C places the guide's reaction along the guide
+                line = self.p_line(d.b, c, d.outer_b, xb, force_b)
+                found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb, line)
+                poly.side(kb, poly.end, k)
+                pts[d.outer_b.point + "'"] = xb
+            poly.side(f"{pair_key(d.outer_a)}n", k, 0j, "component")
+            ka, ki = pair_key(d.outer_a), pair_key(d.inner)
+            found[ka] = self.measured(ka, t_end - k, d.outer_a.other(d.a), d.a, d.outer_a, p1)
+            poly.side(ka, k, t_end)
+            found[ki] = self.measured(ki, vb - k, d.a, d.b, d.inner, c)
+            poly.side(ki, k, vb)
+            pts[d.outer_a.point], pts[d.inner.point] = p1, c
+            segs = [(d.outer_a.point, d.inner.point)] + ([(d.outer_b.point, d.inner.point)]
+                                                         if kind == "RRR" else [])
+        elif kind == "RPR":
+            slider = d.inner.slider
+            carrier = d.b if slider == d.a else d.a
+            outer_s = d.outer_a if slider == d.a else d.outer_b
+            outer_c = d.outer_b if slider == d.a else d.outer_a
+            ps, pc = self.d.pair_at(outer_s), self.d.pair_at(outer_c)
+            g = self.d.guide(d.inner)
+            n = 1j * g
+            ks_ = pair_key(outer_s)
+            # the block's forces along the guide are balanced by its pin: r_along = −ΣF_s·g
+            r_along = -sum(dot(self.d.drawn(f.force), g) for f in self.d.known[slider]) * self.d.mu_F
+            rho = self.d.mm(ps - pc)
+            along_arm = math.copysign(measure(abs(dot(rho, g)), self.p), dot(rho, g)) * self.d.mu_l
+            off_arm = math.copysign(measure(abs(cross(rho, g)), self.p), cross(rho, g)) * self.d.mu_l
+            extra = [Term(f"{ks_}^∥", r_along, off_arm / self.d.mu_l, r_along * off_arm)] if r_along else []
+            e = self.equation(outer_c.point, pc, (slider, carrier), f"{ks_}^⊥", along_arm, extra)
+            eqs.append(e)
+            r_s = r_along * g + e.result * n
+            start = poly.lay(ks_, r_s, "known")
+            poly.lay_all(self.d.known[slider])
+            vc = poly.end
+            poly.lay_all(self.d.known[carrier])
+            found[ks_] = self.measured(ks_, self.d.drawn(r_s), outer_s.other(slider), slider, outer_s, ps)
+            kc, ki = pair_key(outer_c), pair_key(d.inner)
+            found[kc] = self.measured(kc, start - poly.end, outer_c.other(carrier), carrier, outer_c, pc)
+            poly.side(kc, poly.end, start)
+            found[ki] = self.measured(ki, start - vc, carrier, slider, d.inner, ps)
+            poly.side(ki, vc, start, "component")
+            pts[outer_s.point], pts[outer_c.point] = ps, pc
+            # the rocker's drawn extent: its pivot, the block and any joint it carries
+            far = [p for p in self.mech.links[carrier].joints if p != outer_c.point]
+            for p in far:
+                pts[p] = self.d.at(p, carrier)
+                segs.append((outer_c.point, p))
+            segs.append((outer_c.point, outer_s.point))
+        elif kind == "PRP":
+            c = self.d.pair_at(d.inner)
+            na_, nb_ = 1j * self.d.guide(d.outer_a), 1j * self.d.guide(d.outer_b)
+            poly.lay_all(fa)
+            vb = poly.end
+            poly.lay_all(fb)
+            k = poly.close_two(nb_, na_)
+            kb, ka, ki = pair_key(d.outer_b), pair_key(d.outer_a), pair_key(d.inner)
+            xa, xb = self.d.pair_at(d.outer_a), self.d.pair_at(d.outer_b)
+            _, force_b = self.d.read(k - poly.end)
+            _, force_a = self.d.read(0j - k)
+            found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb,
+                                      self.p_line(d.b, c, d.outer_b, xb, force_b))
+            poly.side(kb, poly.end, k)
+            found[ka] = self.measured(ka, 0j - k, d.outer_a.other(d.a), d.a, d.outer_a, xa,
+                                      self.p_line(d.a, c, d.outer_a, xa, force_a))
+            poly.side(ka, k, 0j)
+            found[ki] = self.measured(ki, vb - k, d.a, d.b, d.inner, c)
+            poly.side(ki, k, vb)
+            pts[d.inner.point] = c
+        elif kind == "RPP":
+            pa = self.d.pair_at(d.outer_a)
+            n_in = 1j * self.d.guide(d.inner)
+            ng = 1j * self.d.guide(d.outer_b)
+            poly.lay_all(fb)
+            k = poly.close_two(ng, n_in)
+            kb, ki, ka = pair_key(d.outer_b), pair_key(d.inner), pair_key(d.outer_a)
+            x_in, xb = self.d.pair_at(d.inner), self.d.pair_at(d.outer_b)
+            _, r_in = self.d.read(k - 0j)                       # on the block from the yoke
+            in_line = self.p_line(d.a, pa, d.inner, x_in, r_in)
+            _, r_b = self.d.read(k - poly.end)
+            back = -abs(r_in) * cross(self.d.mm(in_line - xb), r_in / abs(r_in)) * self.d.mu_l if r_in else 0.0
+            found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb,
+                                      self.p_line(d.b, xb, d.outer_b, xb, r_b, back))
+            poly.side(kb, poly.end, k)
+            found[ki] = self.measured(ki, k - 0j, d.b, d.a, d.inner, x_in)
+            poly.side(ki, 0j, k)
+            poly.end = k
+            poly.lay_all(fa)
+            found[ka] = self.measured(ka, 0j - poly.end, d.outer_a.other(d.a), d.a, d.outer_a, pa)
+            poly.side(ka, poly.end, 0j)
+            pts[d.outer_a.point] = pa
+        forces = self.d.known[d.a] + self.d.known[d.b]
+        self.groups.append(GroupPlan(d.label, kind, (d.a, d.b), forces, eqs, poly.sides, poly.lines,
+                                     found, {k: self.d.mm(v) for k, v in pts.items()}, segs))
+
+    @property
+    def p(self) -> float:
+        return self.d.p
+
+    def p_line(self, link: str, about: complex, pair, x_ref: complex, force: complex,
+               extra: float = 0.0) -> complex:
+        """Where a sliding pair's reaction acts on ``link``: the link's moment equation about a
+        point (arms measured) gives its couple M about the pair's reference point; the line of
+        action is shifted along the guide by M/(g × R)."""
+        if force == 0:
+            return x_ref
+        total = sum(t.value for t in self.d.moments((link,), about)) + extra
+        unit = force / abs(force)
+        arm = cross(self.d.mm(x_ref - about), unit)
+        total += abs(force) * math.copysign(measure(abs(arm), self.p), arm) * self.d.mu_l
+        g = self.d.guide(pair)
+        return x_ref + (-total / cross(g, force)) * g
+
+    def crank(self) -> tuple[float, float]:
+        """R01 closes the crank's polygon; M_b = −ΣM_O with the arms measured."""
+        mech = self.mech
+        crank = mech.crank.link
+        self.current = (crank,)
+        o, a = self.d.at(mech.crank.pivot), self.d.at(mech.crank.pin)
+        poly = _Polygon(self.d)
+        poly.lay_all(self.d.known[crank])
+        key = next(k for k, r in self.ks.reactions.items() if r.group == CRANK_LABEL)
+        found = {key: self.measured(key, 0j - poly.end, FRAME, crank, None, o)}
+        poly.side(key, poly.end, 0j)
+        terms = self.d.moments((crank,), o)
+        m_b = -float(sum(t.value for t in terms))
+        eq = MomentEquation(mech.crank.pivot, (crank,), terms, "M_b", 0.0, m_b)
+        transferred = [t for t in terms if t.name.startswith("R")]
+        arm = transferred[0].arm_mm if len(transferred) == 1 else float("nan")
+        self.groups.append(GroupPlan(CRANK_LABEL, "crank", (crank,), list(self.d.known[crank]), [eq],
+                                     poly.sides, poly.lines, found,
+                                     {mech.crank.pivot: self.d.mm(o), mech.crank.pin: self.d.mm(a)},
+                                     [(mech.crank.pivot, mech.crank.pin)]))
+        return m_b, arm
+
+
+def mechanism_scale(st: Study, target_mm: float = MECHANISM_MM) -> float:
+    """μl (m/mm, standard series) so that the mechanism's extent over a turn fits ``target_mm``."""
+    kin = st.solve(np.arange(0.0, 360.0, 5.0))
+    xs = [kin.point(p)[0] for p in st.mech.point_names()]
+    allx = np.concatenate(xs)
+    extent = max(np.ptp(allx.real), np.ptp(allx.imag), st.mech.crank.length)
+    return standard_scale(extent / target_mm)
+
+
+def force_scale(ks: Kinetostatics, target_mm: float = POLYGON_MM) -> float:
+    """μF (N/mm, standard series) so that the largest force of the analysis is ≤ ``target_mm``."""
+    biggest = max([float(np.max(np.abs(ld.force))) for ld in ks.loads]
+                  + [float(np.max(np.abs(r.force))) for r in ks.reactions.values()] + [0.0])
+    return standard_scale(biggest / target_mm) if biggest > 0 else 1.0
+
+
+def velocity_scale(ks: Kinetostatics, target_mm: float = PLAN_MM) -> float:
+    """μv ((m/s)/mm, standard series) so that the fastest point's vector is ≤ ``target_mm``."""
+    fastest = max(float(np.max(np.abs(ks.kin.point(p)[1]))) for p in ks.mech.point_names())
+    return standard_scale(max(fastest, 1e-12) / target_mm)
+
+
+def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None) -> Lever:
+    """The Zhukovsky lever at the (single) angle of ``ks``."""
+    mech, kin = ks.mech, ks.kin
+    mu_v = mu_v or velocity_scale(ks)
+    images: dict[str, complex] = {}
+
+    def image(link: str, point: str) -> complex:
+        """p_v x: the measured length of the plan vector, its exact direction (mm)."""
+        if point not in images:
+            v = complex(kin.bodies[link].at(mech.links[link].local[point])[1][0])
+            images[point] = measure(abs(v) / mu_v, precision) * v / abs(v) if v else 0j
+        return images[point]
+
+    terms: list[LeverTerm] = []
+
+    def add(name: str, link: str, point: str, force: complex) -> None:
+        if force == 0:
+            return
+        turned = 1j * image(link, point)
+        unit = force / abs(force)
+        arm = cross(turned, unit)
+        h = math.copysign(measure(abs(arm), precision), arm)
+        terms.append(LeverTerm(name, abs(force), h, abs(force) * h, point, force))
+
+    for ld in ks.loads:
+        f, c = complex(ld.force[0]), float(ld.couple[0])
+        if f != 0:
+            add(ld.name, ld.link, ld.point, f)
+        if c != 0 and not _couple_pair(ld, c, ks, add):
+            # a link with a single point (a block on a turning guide): the couple's moment on the
+            # lever is −M·ω/μv, the moment of its force pair at the images of any two of its points
+            omega = float(ld.omega[0])
+            terms.append(LeverTerm(ld.name, abs(c), 0.0, -c * omega / mu_v, ld.point or "", 0j))
+    crank = mech.crank
+    pa = measure(abs(image(crank.link, crank.pin)), precision)
+    for link_name in mech.links:
+        image(link_name, next(iter(mech.links[link_name].local)))
+    total = sum(t.moment for t in terms)
+    p_b = total / pa if pa else float("nan")
+    m_b = math.copysign(1.0, mech.omega1) * p_b * crank.length
+    segs = []
+    for name, link in mech.links.items():
+        pts = [p for p in link.local if p in images]
+        segs += [(pts[i], pts[i + 1]) for i in range(len(pts) - 1)]
+    return Lever(mu_v, images, segs, terms, pa, total, p_b, m_b)
+
+
+def _couple_pair(ld: Load, c: float, ks: Kinetostatics, add) -> bool:
+    """A couple M on a link as two forces M/l ⊥ XY at two of its points X, Y (seed 000: P' = M/l)."""
+    link = ks.mech.links[ld.link]
+    names = list(link.joints) + [p for p in link.local if p not in link.joints]
+    body = ks.kin.bodies[ld.link]
+    pos = {p: complex(body.at(link.local[p])[0][0]) for p in names}
+    pair = next(((x, y) for i, x in enumerate(names) for y in names[i + 1:]
+                 if abs(pos[y] - pos[x]) > 1e-9), None)
+    if pair is None:
+        return False
+    x, y = pair
+    length = abs(pos[y] - pos[x])
+    f = c / length * 1j * (pos[y] - pos[x]) / length       # cross(Y − X, f) = M
+    add(f"{ld.name}'", ld.link, y, f)
+    add(f"{ld.name}''", ld.link, x, -f)
+    return True
+
+
+def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
+              mu_l: float | None = None, mu_F: float | None = None,
+              mu_v: float | None = None) -> ForcePlans:
+    """The force plans of every group, the crank's balancing moment and the lever at one angle."""
+    phi = float(phi_deg) % 360.0
+    ks = analyse(st, [phi])
+    mu_l = mu_l or mechanism_scale(st)
+    mu_F = mu_F or force_scale(ks)
+    plans = _Plans(ks, precision, mu_l, mu_F)
+    for gf in ks.groups:
+        if gf.dyad is not None:
+            plans.group(gf)
+    m_b, arm = plans.crank()
+    return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v))
+

@@ -1,0 +1,121 @@
+"""The one mechanism model: frame, crank, links, pairs and loads, in SI units.
+
+Local coordinates of a link's points are complex numbers u + i·w (along, across)
+in the link's own frame. A link's angle is the direction of its local x-axis:
+from its first joint toward its second one, or along the guide it slides on.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+FRAME = "0"
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight guide (a slide's line) carried by a body, in that body's frame."""
+    name: str
+    body: str
+    through: complex
+    angle: float  # rad, in the body's frame
+
+
+@dataclass(frozen=True)
+class Link:
+    """A rigid moving link: revolute joints, local geometry and, maybe, a sliding pair."""
+    name: str
+    number: int
+    joints: tuple[str, ...]
+    local: dict[str, complex]
+    slides_on: str | None = None  # name of the guide this link slides along
+    length: float | None = None   # the link's length (for q·l masses and I = k·m·l²)
+    mass: float | None = None
+    inertia: float | None = None
+    com: str | None = None        # name of the centre-of-mass point
+
+    @property
+    def label(self) -> str:
+        return self.name
+
+
+@dataclass(frozen=True)
+class Crank:
+    """The input link 1 turning about a frame point: ω1 signed (+ counter-clockwise)."""
+    link: str
+    pivot: str
+    pin: str
+    length: float
+    omega: float
+    epsilon: float = 0.0
+
+
+@dataclass(frozen=True)
+class Force:
+    """An external force on a point: a magnitude, the strokes it acts on, and its direction.
+
+    ``direction`` is "oppose" (against the point's velocity) or an angle in degrees. ``profile``
+    (optional) scales the magnitude by a factor interpolated linearly over the output's distance
+    from position 0 (m for a slide, degrees for a rocker): pairs (distance, factor).
+    """
+    point: str
+    magnitude: float
+    stroke: str = "working"  # "working", "idle" or "both"
+    direction: str | float = "oppose"
+    profile: tuple[tuple[float, float], ...] = ()
+
+
+@dataclass
+class Mechanism:
+    """A planar lever mechanism as its kinematic scheme shows it."""
+    title: str
+    frame: dict[str, complex]
+    guides: dict[str, Guide]
+    links: dict[str, Link]          # the crank first, then the scene's order
+    crank: Crank
+    branches: dict[str, int] = field(default_factory=dict)
+    output: str | None = None
+    start: str | float = "max"
+    count: int = 12
+    accel: tuple[str | int | float, ...] = ()
+    force_phi: float | None = None  # crank angle of the force analysis, deg from position 0
+    working_stroke: str = "slow"    # which stroke of the output is the working one: slow, fast, to_max, to_min
+    forces: tuple[Force, ...] = ()
+    g: float = 9.81
+    params: dict[str, float] = field(default_factory=dict)
+    derived: dict[str, float] = field(default_factory=dict)
+    meta: dict[str, str] = field(default_factory=dict)
+    diagram: dict[str, object] = field(default_factory=dict)  # [diagrams]: L_mm, H1_mm, H2_mm, divisions, point
+    source: str = "<scene>"
+
+    @property
+    def omega1(self) -> float:
+        return self.crank.omega
+
+    @property
+    def period(self) -> float:
+        """T = 2π/|ω1| (s)."""
+        return 2 * math.pi / abs(self.crank.omega)
+
+    def link_by_number(self, number: int) -> Link:
+        for link in self.links.values():
+            if link.number == number:
+                return link
+        raise KeyError(number)
+
+    def bodies_of(self, point: str) -> list[str]:
+        """Names of the bodies (the frame "0" included) that carry a point."""
+        found = [FRAME] if point in self.frame else []
+        found += [name for name, link in self.links.items() if point in link.local]
+        return found
+
+    def _repr_svg_(self) -> str:  # Jupyter: the scheme with its positions
+        from graphplan.exact.positions import study
+        return study(self)._repr_svg_()
+
+    def point_names(self) -> list[str]:
+        """Every named point: frame points, joints and extra points, first seen first."""
+        names = list(self.frame)
+        for link in self.links.values():
+            names += [p for p in link.local if p not in names]
+        return names

@@ -1,0 +1,452 @@
+"""Scene files (TOML) → the mechanism model. Every key is checked; errors name the key.
+
+The format is documented in docs/scenes.md.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import tomllib
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.util.files import read_text
+from graphplan.model.expressions import evaluate
+from graphplan.model.mechanism import FRAME, Crank, Force, Guide, Link, Mechanism
+
+BUILTIN = "crank_slider.toml"
+
+_TOP = {"diagrams", "title", "title_en", "designation", "sheet", "params", "synthesis", "frame", "crank",
+        "link", "branch", "positions", "loads", "force"}
+_CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
+          "shape", "guide", "mass", "inertia", "com"}
+_LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
+         "mass", "inertia", "com"}
+_POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
+_DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point"}
+_LOADS = {"g", "mass_per_length", "inertia_factor"}
+_FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
+_SYNTH = {"type", "K", "stroke", "centre_distance"}
+
+
+def builtin_path() -> Path:
+    """The built-in crank-slider scene shipped with the package."""
+    return Path(str(resources.files("graphplan") / "data" / BUILTIN))
+
+
+def load(path: str | Path | None) -> Mechanism:
+    """Read a scene file (the built-in crank-slider when ``path`` is None)."""
+    path = builtin_path() if path is None else Path(path)
+    try:
+        text = read_text(path, "scene file")
+    except GraphplanError as exc:
+        raise SceneError(str(exc), exc.where) from None
+    return loads(text, str(path))
+
+
+def loads(text: str, where: str = "<scene>") -> Mechanism:
+    """Parse scene text; ``where`` names the file in error messages."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"TOML syntax error: {exc}", where) from None
+    return build(data, where)
+
+
+def build(data: dict[str, Any], where: str = "<scene>") -> Mechanism:
+    """A mechanism from an already parsed scene tree (e.g. a base scene with a variant's overrides)."""
+    return _Reader(copy.deepcopy(data), where).mechanism()
+
+
+class _Reader:
+    """Turns the TOML tree into a Mechanism, checking each key on the way."""
+
+    def __init__(self, data: dict[str, Any], where: str):
+        self.data = data
+        self.where = where
+        self.names: dict[str, float] = {}
+
+    # -- small checked readers ------------------------------------------------------------
+    def fail(self, key: str, message: str) -> SceneError:
+        return SceneError(f"{key}: {message}", self.where)
+
+    def table(self, value: Any, key: str, allowed: set[str]) -> dict[str, Any]:
+        if not isinstance(value, dict):
+            raise self.fail(key, "must be a table")
+        unknown = sorted(set(value) - allowed)
+        if unknown:
+            raise self.fail(f"{key}.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(allowed))})")
+        return value
+
+    def number(self, value: Any, key: str, positive: bool = False, nonzero: bool = False) -> float:
+        if isinstance(value, bool):
+            raise self.fail(key, "must be a number")
+        if isinstance(value, (int, float)):
+            result = float(value)
+        elif isinstance(value, str):
+            result = evaluate(value, self.names, f"{self.where}: {key}")
+        else:
+            raise self.fail(key, "must be a number or an expression")
+        if not math.isfinite(result):
+            raise self.fail(key, "must be finite")
+        if positive and result <= 0:
+            raise self.fail(key, f"must be positive, got {result:g}")
+        if nonzero and result == 0:
+            raise self.fail(key, "must not be zero")
+        return result
+
+    def xy(self, value: Any, key: str) -> complex:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(key, "must be a pair [x, y]")
+        return complex(self.number(value[0], key), self.number(value[1], key))
+
+    def name(self, value: Any, key: str) -> str:
+        if not isinstance(value, (str, int)) or isinstance(value, bool) or str(value).strip() == "":
+            raise self.fail(key, "must be a name")
+        return str(value).strip()
+
+    # -- sections ---------------------------------------------------------------------------
+    def mechanism(self) -> Mechanism:
+        data = self.table(self.data, "scene", _TOP)
+        derived = self.read_synthesis(data.get("synthesis"))
+        self.read_params(data)
+        frame, guides = self.read_frame(data.get("frame"))
+        if "crank" not in data:
+            raise self.fail("crank", "missing: a scene needs its input crank")
+        crank, crank_link, crank_guide = self.read_crank(data["crank"], frame)
+        links = {crank_link.name: crank_link}
+        if crank_guide:
+            guides[crank_guide.name] = crank_guide
+        raw_links = data.get("link", [])
+        if not isinstance(raw_links, list):
+            raise self.fail("link", "must be an array of tables [[link]]")
+        numbers = {1}
+        for k, raw in enumerate(raw_links):
+            link, guide = self.read_link(raw, f"link[{k}]", len(links) + 1, frame)
+            if link.name in links or link.name in guides and guide is None:
+                raise self.fail(f"link[{k}].name", f"the name {link.name!r} is used twice")
+            if link.number in numbers:
+                raise self.fail(f"link[{k}].number", f"link number {link.number} is used twice")
+            numbers.add(link.number)
+            links[link.name] = link
+            if guide:
+                if guide.name in guides:
+                    raise self.fail(f"link[{k}].guide", f"the guide name {guide.name!r} is used twice")
+                guides[guide.name] = guide
+        for name, link in links.items():
+            if link.slides_on is not None and link.slides_on not in guides:
+                known = ", ".join(sorted(guides)) or "none"
+                raise self.fail(f"link {name}.slides_on",
+                                f"no guide named {link.slides_on!r} (guides: {known})")
+        positions = self.table(data.get("positions", {}), "positions", _POSITIONS)
+        loads = self.table(data.get("loads", {}), "loads", _LOADS)
+        links = self.apply_loads(links, loads)
+        mech = Mechanism(
+            title=str(data.get("title", "mechanism")), frame=frame, guides=guides, links=links,
+            crank=crank, branches=self.read_branches(data.get("branch", {})),
+            output=self.name(positions["output"], "positions.output") if "output" in positions else None,
+            start=self.read_start(positions.get("start", "max")),
+            count=self.read_count(positions.get("count", 12)),
+            accel=self.read_accel(positions.get("accel", [])),
+            force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
+                       if "force_phi_deg" in positions else None),
+            working_stroke=self.read_working(positions.get("working_stroke", "slow")),
+            forces=self.read_forces(data.get("force", [])),
+            g=self.number(loads.get("g", 9.81), "loads.g"),
+            params=dict(self.names), derived=derived,
+            meta=self.read_meta(data), diagram=self.read_diagram(data.get("diagrams", {})),
+            source=self.where)
+        self.check_names(mech)
+        return mech
+
+    def read_params(self, data: dict[str, Any]) -> None:
+        params = data.get("params", {})
+        if not isinstance(params, dict):
+            raise self.fail("params", "must be a table")
+        for key, value in params.items():
+            self.names[key] = self.number(value, f"params.{key}")
+
+    def read_synthesis(self, raw: Any) -> dict[str, float]:
+        """Quick-return synthesis (seed 000): θ = 180°(K−1)/(K+1), r = ℓ·sin(θ/2), l = H/(2 sin(θ/2))."""
+        if raw is None:
+            return {}
+        raw = self.table(raw, "synthesis", _SYNTH)
+        if raw.get("type") != "quick_return":
+            raise self.fail("synthesis.type", 'only "quick_return" is known')
+        for key in ("K", "stroke", "centre_distance"):
+            if key not in raw:
+                raise self.fail(f"synthesis.{key}", "missing")
+        k = self.number(raw["K"], "synthesis.K", positive=True)
+        if k <= 1:
+            raise self.fail("synthesis.K", f"the time-ratio coefficient must exceed 1, got {k:g}")
+        stroke = self.number(raw["stroke"], "synthesis.stroke", positive=True)
+        centre = self.number(raw["centre_distance"], "synthesis.centre_distance", positive=True)
+        theta = math.pi * (k - 1) / (k + 1)
+        derived = {"theta_deg": math.degrees(theta), "crank": centre * math.sin(theta / 2),
+                   "rocker": stroke / (2 * math.sin(theta / 2))}
+        for key, value in {"K": k, "stroke": stroke, "centre_distance": centre, **derived}.items():
+            self.names.setdefault(key, value)
+        return derived
+
+    def read_frame(self, raw: Any) -> tuple[dict[str, complex], dict[str, Guide]]:
+        if raw is None:
+            raise self.fail("frame", "missing: a scene needs [frame.points]")
+        raw = self.table(raw, "frame", {"points", "guides"})
+        points_raw = raw.get("points", {})
+        if not isinstance(points_raw, dict) or not points_raw:
+            raise self.fail("frame.points", "must name at least one fixed point")
+        frame = {self.name(k, "frame.points"): self.xy(v, f"frame.points.{k}")
+                 for k, v in points_raw.items()}
+        guides = {}
+        for name, g in self.table(raw.get("guides", {}), "frame.guides",
+                                  set(raw.get("guides", {}))).items():
+            guides[name] = self.read_guide(g, f"frame.guides.{name}", name, FRAME)
+        return frame, guides
+
+    def read_guide(self, raw: Any, key: str, name: str, body: str) -> Guide:
+        raw = self.table(raw, key, {"through", "angle_deg"})
+        through = self.xy(raw.get("through", [0, 0]), f"{key}.through")
+        angle = math.radians(self.number(raw.get("angle_deg", 0), f"{key}.angle_deg"))
+        return Guide(name=name, body=body, through=through, angle=angle)
+
+    def read_points(self, raw: Any, key: str, length: float | None,
+                    local: dict[str, complex]) -> None:
+        """Extra points: a fraction along the link's axis, or [along, across] in metres."""
+        if raw is None:
+            return
+        for name, value in self.table(raw, key, set(raw) if isinstance(raw, dict) else set()).items():
+            if name in local:
+                raise self.fail(f"{key}.{name}", "the point is already defined on this link")
+            if isinstance(value, list):
+                local[name] = self.xy(value, f"{key}.{name}")
+            else:
+                fraction = self.number(value, f"{key}.{name}")
+                if length is None:
+                    raise self.fail(f"{key}.{name}", "a fraction needs the link's length; "
+                                    "give [along, across] in metres")
+                local[name] = complex(fraction * length, 0.0)
+
+    def read_crank(self, raw: Any, frame: dict[str, complex]) -> tuple[Crank, Link, Guide | None]:
+        raw = self.table(raw, "crank", _CRANK)
+        for key in ("pivot", "pin", "length"):
+            if key not in raw:
+                raise self.fail(f"crank.{key}", "missing")
+        pivot = self.name(raw["pivot"], "crank.pivot")
+        pin = self.name(raw["pin"], "crank.pin")
+        if pivot not in frame:
+            raise self.fail("crank.pivot", f"{pivot!r} is not a frame point ({', '.join(frame)})")
+        length = self.number(raw["length"], "crank.length", positive=True)
+        if ("omega" in raw) == ("rpm" in raw):
+            raise self.fail("crank", "give the speed as exactly one of omega (rad/s) or rpm")
+        speed = (self.number(raw["omega"], "crank.omega", positive=True) if "omega" in raw
+                 else self.number(raw["rpm"], "crank.rpm", positive=True) * math.pi / 30)
+        direction = raw.get("direction", "ccw")
+        if direction not in ("ccw", "cw"):
+            raise self.fail("crank.direction", f'must be "ccw" or "cw", got {direction!r}')
+        omega = speed if direction == "ccw" else -speed
+        name = self.name(raw.get("name", pivot + pin), "crank.name")
+        local = {pivot: 0j, pin: complex(length, 0)}
+        self.read_points(raw.get("shape"), "crank.shape", length, local)
+        self.read_points(raw.get("points"), "crank.points", length, local)
+        guide = self.read_guide(raw["guide"], "crank.guide", name, name) if "guide" in raw else None
+        link = Link(name=name, number=1, joints=(pivot, pin), local=local, length=length,
+                    mass=self.opt_positive(raw, "mass", "crank"),
+                    inertia=self.opt_positive(raw, "inertia", "crank"),
+                    com=self.com(raw, "crank", local, 1))
+        crank = Crank(link=name, pivot=pivot, pin=pin, length=length, omega=omega,
+                      epsilon=self.number(raw.get("epsilon", 0.0), "crank.epsilon"))
+        return crank, link, guide
+
+    def read_link(self, raw: Any, key: str, number: int,
+                  frame: dict[str, complex]) -> tuple[Link, Guide | None]:
+        raw = self.table(raw, key, _LINK)
+        if "joints" not in raw:
+            raise self.fail(f"{key}.joints", "missing")
+        joints_raw = raw["joints"]
+        if not isinstance(joints_raw, list):
+            raise self.fail(f"{key}.joints", "must be a list of point names")
+        joints = tuple(self.name(j, f"{key}.joints") for j in joints_raw)
+        if len(set(joints)) != len(joints):
+            raise self.fail(f"{key}.joints", "a joint is listed twice")
+        number = int(self.number(raw.get("number", number), f"{key}.number", positive=True))
+        default_name = "".join(joints) if len(joints) >= 2 else str(number)
+        name = self.name(raw.get("name", default_name), f"{key}.name")
+        key = f"link {name}"
+        slides_on = self.name(raw["slides_on"], f"{key}.slides_on") if "slides_on" in raw else None
+        length = self.number(raw["length"], f"{key}.length", positive=True) if "length" in raw else None
+        origin = joints[0] if joints else None
+        if origin is None:
+            if slides_on is None:
+                raise self.fail(f"{key}.joints", "a link needs at least one joint")
+            if "ref" not in raw:
+                raise self.fail(f"{key}.ref", "a sliding link without joints needs a reference point")
+            origin = self.name(raw["ref"], f"{key}.ref")
+        local = {origin: 0j}
+        if slides_on is None and len(joints) >= 2:
+            if length is None:
+                raise self.fail(f"{key}.length", f"missing: the distance {joints[0]}{joints[1]}")
+            local[joints[1]] = complex(length, 0)
+        shape = raw.get("shape", {})
+        self.read_points(shape, f"{key}.shape", length, local)
+        for j in joints:
+            if j not in local:
+                raise self.fail(f"{key}.shape.{j}", f"missing: where the joint {j} lies on the link")
+        self.read_points(raw.get("points"), f"{key}.points", length, local)
+        guide = self.read_guide(raw["guide"], f"{key}.guide", name, name) if "guide" in raw else None
+        if guide is None:
+            guide = Guide(name=name, body=name, through=0j, angle=0.0)  # the link's own axis
+        if length is None and len(joints) >= 2:
+            length = abs(local[joints[1]] - local[joints[0]])
+        link = Link(name=name, number=number, joints=joints, local=local, slides_on=slides_on,
+                    length=length, mass=self.opt_positive(raw, "mass", key),
+                    inertia=self.opt_positive(raw, "inertia", key), com=self.com(raw, key, local, number))
+        return link, guide
+
+    def opt_positive(self, raw: dict[str, Any], key: str, where: str) -> float | None:
+        return self.number(raw[key], f"{where}.{key}", positive=True) if key in raw else None
+
+    def com(self, raw: dict[str, Any], where: str, local: dict[str, complex], number: int) -> str | None:
+        if "com" in raw:
+            com = self.name(raw["com"], f"{where}.com")
+            if com not in local:
+                raise self.fail(f"{where}.com", f"{com!r} is not a point of this link")
+            return com
+        guess = f"S{number}"
+        return guess if guess in local else None
+
+    def apply_loads(self, links: dict[str, Link], loads: dict[str, Any]) -> dict[str, Link]:
+        """Masses q·l and inertias k·m·l² where the scene gives q and k instead of the values."""
+        q = self.number(loads["mass_per_length"], "loads.mass_per_length", positive=True) \
+            if "mass_per_length" in loads else None
+        k = self.number(loads["inertia_factor"], "loads.inertia_factor", positive=True) \
+            if "inertia_factor" in loads else None
+        result = {}
+        for name, link in links.items():
+            mass, inertia = link.mass, link.inertia
+            if mass is None and q is not None and link.slides_on is None and link.length:
+                mass = q * link.length
+            if inertia is None and k is not None and mass is not None and link.slides_on is None:
+                inertia = k * mass * link.length ** 2
+            result[name] = Link(**{**link.__dict__, "mass": mass, "inertia": inertia})
+        return result
+
+    def read_branches(self, raw: Any) -> dict[str, int]:
+        raw = self.table(raw, "branch", set(raw) if isinstance(raw, dict) else set())
+        out = {}
+        for key, value in raw.items():
+            if value not in (1, -1) or isinstance(value, bool):
+                raise self.fail(f"branch.{key}", f"must be +1 or -1, got {value!r}")
+            out[key] = int(value)
+        return out
+
+    def read_start(self, value: Any) -> str | float:
+        if value in ("max", "min", "working", "idle"):
+            return value
+        if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
+            raise self.fail("positions.start",
+                            f'must be "max", "min", "working", "idle" or a crank angle, got {value!r}')
+        return self.number(value, "positions.start") % 360.0
+
+    def read_working(self, value: Any) -> str:
+        if value not in ("slow", "fast", "to_max", "to_min"):
+            raise self.fail("positions.working_stroke",
+                            f'must be "slow", "fast", "to_max" or "to_min", got {value!r}')
+        return value
+
+    def read_count(self, value: Any) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or not 2 <= value <= 3600:
+            raise self.fail("positions.count", f"must be a whole number from 2 to 3600, got {value!r}")
+        return value
+
+    def read_accel(self, value: Any) -> tuple[int, ...]:
+        values = value if isinstance(value, list) else [value]
+        out = []
+        for v in values:
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0:
+                raise self.fail("positions.accel", f"position numbers must be whole numbers ≥ 0, got {v!r}")
+            out.append(v)
+        return tuple(out)
+
+    def read_forces(self, raw: Any) -> tuple[Force, ...]:
+        if not isinstance(raw, list):
+            raise self.fail("force", "must be an array of tables [[force]]")
+        out = []
+        for k, f in enumerate(raw):
+            key = f"force[{k}]"
+            f = self.table(f, key, _FORCE)
+            for need in ("point", "magnitude"):
+                if need not in f:
+                    raise self.fail(f"{key}.{need}", "missing")
+            stroke = f.get("stroke", "working")
+            if stroke not in ("working", "idle", "both"):
+                raise self.fail(f"{key}.stroke", f'must be "working", "idle" or "both", got {stroke!r}')
+            direction = f.get("direction", "oppose")
+            if direction != "oppose":
+                direction = self.number(direction, f"{key}.direction")
+            out.append(Force(point=self.name(f["point"], f"{key}.point"),
+                             magnitude=self.number(f["magnitude"], f"{key}.magnitude", positive=True),
+                             stroke=stroke, direction=direction,
+                             profile=self.read_profile(f.get("profile", []), f"{key}.profile")))
+        return tuple(out)
+
+    def read_profile(self, raw: Any, key: str) -> tuple[tuple[float, float], ...]:
+        """[[distance, factor], …] with the distances increasing."""
+        if not isinstance(raw, list):
+            raise self.fail(key, "must be a list of [distance, factor] pairs")
+        pairs = []
+        for p in raw:
+            if not isinstance(p, list) or len(p) != 2:
+                raise self.fail(key, "must be a list of [distance, factor] pairs")
+            pairs.append((self.number(p[0], key), self.number(p[1], key)))
+        if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
+            raise self.fail(key, "the distances must increase")
+        return tuple(pairs)
+
+    def read_diagram(self, raw: Any) -> dict[str, object]:
+        """[diagrams]: the chord diagrams' abscissa L, pole distances H1, H2 (mm), divisions, point."""
+        raw = self.table(raw, "diagrams", _DIAGRAMS)
+        out: dict[str, object] = {}
+        for key in ("L_mm", "H1_mm", "H2_mm"):
+            if key in raw:
+                out[key] = self.number(raw[key], f"diagrams.{key}", positive=True)
+        if "divisions" in raw:
+            n = raw["divisions"]
+            if isinstance(n, bool) or not isinstance(n, int) or n < 2:
+                raise self.fail("diagrams.divisions", f"must be a whole number ≥ 2, got {n!r}")
+            out["divisions"] = n
+        if "point" in raw:
+            out["point"] = self.name(raw["point"], "diagrams.point")
+        return out
+
+    def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
+        meta = {k: str(data[k]) for k in ("title", "title_en", "designation") if k in data}
+        sheet = data.get("sheet", {})
+        if not isinstance(sheet, dict):
+            raise self.fail("sheet", "must be a table")
+        meta.update({f"sheet.{k}": str(v) for k, v in sheet.items()})
+        return meta
+
+    def check_names(self, mech: Mechanism) -> None:
+        """Every referenced point must exist somewhere; joints must be shared or fixed."""
+        owners: dict[str, list[str]] = {}
+        for link in mech.links.values():
+            for j in link.joints:
+                owners.setdefault(j, []).append(link.name)
+        for j, bodies in owners.items():
+            if len(bodies) == 1 and j not in mech.frame:
+                raise self.fail(f"link {bodies[0]}.joints",
+                                f"joint {j!r} joins nothing: no other link or frame point has it")
+        known = set(mech.point_names())
+        for key in mech.branches:
+            if key not in known:
+                raise self.fail(f"branch.{key}", "no such point")
+        if mech.output is not None and mech.output not in known and mech.output not in mech.links:
+            raise self.fail("positions.output", f"{mech.output!r} is neither a point nor a link")
+        for f in mech.forces:
+            if f.point not in known:
+                raise self.fail("force.point", f"no point named {f.point!r}")
+        if mech.crank.pin in mech.frame:
+            raise self.fail("crank.pin", "the crank pin cannot be a frame point")
+

@@ -1,0 +1,102 @@
+"""`graphplan analyze`: the exact kinematics as the contract's JSON and as readable tables."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphplan.exact.kinematics import Kinematics
+from graphplan.model.mechanism import FRAME
+from graphplan.exact.positions import Study
+
+
+def analyze_json(st: Study, phi_deg: np.ndarray, indices: list[int]) -> dict[str, Any]:
+    """The contract's ``analyze --json`` document (SI units)."""
+    mech = st.mech
+    kin = st.solve(phi_deg)
+    names = mech.point_names()
+    positions = []
+    for k, (index, phi) in enumerate(zip(indices, phi_deg)):
+        points = {}
+        for name in names:
+            x, v, a = (float_c(q[k]) for q in kin.point(name))
+            points[name] = {"x": x.real, "y": x.imag, "vx": v.real, "vy": v.imag, "ax": a.real, "ay": a.imag}
+        links = {name: {"angle_deg": math.degrees(float(kin.bodies[name].theta[k])) % 360.0,
+                        "omega": float(kin.bodies[name].omega[k]),
+                        "epsilon": float(kin.bodies[name].eps[k])} for name in mech.links}
+        slides = {key: {"s": float(s.t[k]) - st.t0[key], "v": float(s.v[k]), "a": float(s.a[k]),
+                        "coriolis": float(s.coriolis_magnitude[k])} for key, s in kin.slides.items()}
+        positions.append({"index": index, "phi_deg": float(phi) % 360.0, "points": points,
+                          "links": links, "slides": slides})
+    return {
+        "scene": mech.title,
+        "omega1": mech.omega1,
+        "epsilon1": mech.crank.epsilon,
+        "structure": structure_json(st),
+        "output": {"kind": st.output.kind, "name": st.output.name},
+        "position0_phi_deg": st.phi0,
+        "extremes_phi_deg": list(st.extremes),
+        "derived": mech.derived,
+        "warnings": list(st.warnings),
+        "positions": positions,
+    }
+
+
+def structure_json(st: Study) -> dict[str, Any]:
+    s = st.structure
+    return {"mobility": s.mobility, "n": s.n, "p5": s.p5, "p4": s.p4, "formula": s.formula,
+            "groups": [{"label": d.label, "kind": d.kind, "links": [d.a, d.b]} for d in s.dyads]}
+
+
+def float_c(z: complex) -> complex:
+    return complex(float(np.real(z)), float(np.imag(z)))
+
+
+def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int]) -> str:
+    """Readable tables: velocities and accelerations of the points, ω and ε, the slides."""
+    mech = st.mech
+    kin = st.solve(phi_deg)
+    s = st.structure
+    lines = [mech.title,
+             f"ω1 = {mech.omega1:.4g} rad/s ({abs(mech.omega1) * 30 / math.pi:.4g} rpm, "
+             f"{'counter-clockwise' if mech.omega1 > 0 else 'clockwise'}), ε1 = {mech.crank.epsilon:g} rad/s²",
+             f"W = 3n − 2p5 − p4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility};  {s.formula}"]
+    for d in s.dyads:
+        lines.append(f"  {d.label}: {d.kind}, links {d.a} and {d.b}")
+    for key, value in mech.derived.items():
+        lines.append(f"  derived {key} = {value:.5g}")
+    ex = ", ".join(f"{e:.3f}°" for e in st.extremes) or "none (the output turns fully)"
+    lines.append(f"output {st.output.name}; extreme positions at φ = {ex}; position 0 at φ = {st.phi0:.3f}°")
+    moving = [p for p in mech.point_names() if p not in mech.frame]
+    head = ["No", "φ, °"]
+
+    def table(title: str, columns: list[str], rows: list[list[float]]) -> None:
+        lines.append("")
+        lines.append(title)
+        widths = [max(len(c), 9) for c in columns]
+        lines.append("  ".join(c.rjust(w) for c, w in zip(head + columns, [3, 7] + widths)))
+        tiny = 1e-10 * max((abs(v) for r in rows for v in r), default=0.0)  # round-off → 0
+        for index, phi, row in zip(indices, phi_deg, rows):
+            row = [0.0 if abs(v) <= tiny else v for v in row]
+            cells = [f"{index:>3}", f"{phi:7.2f}"] + [f"{v:{w}.4g}" for v, w in zip(row, widths)]
+            lines.append("  ".join(cells))
+
+    vel = [np.abs(kin.point(p)[1]) for p in moving]
+    acc = [np.abs(kin.point(p)[2]) for p in moving]
+    n = len(phi_deg)
+    table("Velocities of points |v|, m/s", [f"v_{p}" for p in moving], [[q[k] for q in vel] for k in range(n)])
+    table("Accelerations of points |a|, m/s²", [f"a_{p}" for p in moving], [[q[k] for q in acc] for k in range(n)])
+    links = [name for name in mech.links if name != mech.crank.link]
+    table("Angular velocities ω (+ counter-clockwise), rad/s", [f"ω_{n_}" for n_ in links],
+          [[kin.bodies[n_].omega[k] for n_ in links] for k in range(n)])
+    table("Angular accelerations ε, rad/s²", [f"ε_{n_}" for n_ in links],
+          [[kin.bodies[n_].eps[k] for n_ in links] for k in range(n)])
+    for key, sl in kin.slides.items():
+        table(f"Slide {key} ({sl.slider} on {sl.carrier if sl.carrier != FRAME else 'the frame'}): "
+              "s from position 0, m; v, a along the guide; Coriolis |a_k|",
+              ["s", "v", "a", "a_k"],
+              [[sl.t[k] - st.t0[key], sl.v[k], sl.a[k], sl.coriolis_magnitude[k]] for k in range(n)])
+    if st.warnings:
+        lines += ["", "Warnings:"] + [f"  {w}" for w in st.warnings]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,203 @@
+"""The drawing sheet's form: formats, the frame and the title block (REFERENCE §3, GOST 2.104
+form 1 and form 2a), and tables — all as construction records in sheet millimetres (y up)."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from graphplan.graphic.record import THICK, THIN, Record, text_width
+
+FORMATS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4": (210.0, 297.0)}
+LEFT, MARGIN = 20.0, 5.0           # the frame: 20 mm from the left edge, 5 mm from the others
+BLOCK_W, BLOCK_H, BLOCK_2A_H = 185.0, 55.0, 15.0
+
+CAPTIONS = {
+    "uk": {"rev": "Змн.", "sheet": "Арк.", "doc": "№ докум.", "sign": "Підпис", "date": "Дата",
+           "drawn": "Розроб.", "checked": "Перевір.", "tech": "Т.контр.", "norm": "Н.контр.",
+           "approved": "Затв.", "letter": "Літ.", "mass": "Маса", "scale": "Масштаб",
+           "sheet_no": "Аркуш", "sheets": "Аркушів"},
+    "en": {"rev": "Rev.", "sheet": "Sh.", "doc": "Doc. No.", "sign": "Sign.", "date": "Date",
+           "drawn": "Drawn", "checked": "Checked", "tech": "T.ctrl", "norm": "N.ctrl",
+           "approved": "Approved", "letter": "Lit.", "mass": "Mass", "scale": "Scale",
+           "sheet_no": "Sheet", "sheets": "Sheets"},
+}
+
+
+@dataclass(frozen=True)
+class Form:
+    """A sheet's geometry: paper size and the frame's inner box."""
+    name: str
+    width: float
+    height: float
+
+    @property
+    def frame_box(self) -> tuple[float, float, float, float]:
+        return LEFT, MARGIN, self.width - MARGIN, self.height - MARGIN
+
+
+def form(name: str) -> Form:
+    from graphplan.util.errors import GraphplanError
+    key = name.upper()
+    if key not in FORMATS:
+        raise GraphplanError(f"--format: unknown sheet format {name!r} (A1, A2, A3, A4)")
+    w, h = FORMATS[key]
+    return Form(key, w, h)
+
+
+def frame(f: Form) -> Record:
+    """The frame: a solid thick rectangle 20 mm from the left edge, 5 mm from the others."""
+    rec = Record("frame")
+    x0, y0, x1, y1 = f.frame_box
+    rec.add("polygon", [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], role="frame", layer="frame")
+    return rec
+
+
+def _line(rec: Record, a, b, thick: bool) -> None:
+    rec.segment(a, b, role="frame" if thick else "table", layer="frame", width=THICK if thick else THIN)
+
+
+def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor: str = "middle") -> None:
+    if text:
+        rec.label((x, y), text, size=size, anchor=anchor, layer="frame")
+
+
+def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5)) -> float:
+    """The largest GOST letter height (2.5 … 7 mm) at which ``text`` fits ``width`` mm."""
+    for s in sizes:
+        if text_width(text, s) <= width:
+            return s
+    return sizes[-1]
+
+
+def wrap(text: str, width: float, size: float) -> list[str]:
+    """Break ``text`` into lines no wider than ``width`` mm at letter height ``size``."""
+    lines: list[str] = []
+    for word in text.split():
+        if lines and text_width(lines[-1] + " " + word, size) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return lines or [""]
+
+
+def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
+    """Title block form 1 (185×55 mm) in the frame's bottom-right corner, filled from ``fields``:
+    designation, title, student, teacher, organisation, scale, sheet, sheets, letter, mass."""
+    cap = CAPTIONS[lang]
+    rec = Record("title block")
+    _, fy0, fx1, _ = f.frame_box
+    x0, y0 = fx1 - BLOCK_W, fy0
+    X = lambda dx: x0 + dx  # noqa: E731
+    Y = lambda dy: y0 + dy  # noqa: E731  (dy from the block's bottom)
+    # outline and the main structure
+    rec.add("polygon", [(X(0), Y(0)), (X(185), Y(0)), (X(185), Y(55)), (X(0), Y(55))],
+            role="frame", layer="frame")
+    _line(rec, (X(65), Y(0)), (X(65), Y(55)), True)
+    # left part: 11 rows of 5 mm (row 1 at the top); rows 1–4 thin, the header row 5 between thick lines
+    for row in range(1, 11):
+        y = Y(55 - 5 * row)
+        _line(rec, (X(0), y), (X(65), y), row in (4, 5))
+    cols = [0, 7, 17, 40, 55, 65]
+    for c in cols[1:-1]:
+        x = X(c)
+        if c == 7:  # above the header only: the first two columns merge to 17 mm below it
+            _line(rec, (x, Y(30)), (x, Y(55)), True)
+        else:
+            _line(rec, (x, Y(0)), (x, Y(55)), True)
+    heads = [cap["rev"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
+    for (a, b), head in zip(zip(cols, cols[1:]), heads):
+        _text(rec, X((a + b) / 2), Y(31), head, size=_fit(head, b - a - 1, (2.5, 2.0)))
+    roles = [cap["drawn"], cap["checked"], cap["tech"], "", cap["norm"], cap["approved"]]
+    names = [fields.get("student", ""), fields.get("teacher", ""), "", "", "", ""]
+    for k, (role, name) in enumerate(zip(roles, names)):
+        y = Y(30 - 5 * (k + 1) + 1.2)
+        _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0)), anchor="start")
+        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0)), anchor="start")
+    # right part: designation 120×15, name 70×25 over 70×15, the 50 mm column
+    _line(rec, (X(65), Y(40)), (X(185), Y(40)), True)
+    _line(rec, (X(135), Y(0)), (X(135), Y(40)), True)
+    _line(rec, (X(65), Y(15)), (X(185), Y(15)), True)
+    _line(rec, (X(135), Y(35)), (X(185), Y(35)), True)
+    _line(rec, (X(135), Y(20)), (X(185), Y(20)), True)
+    for dx in (140, 145):  # three 5 mm letter cells
+        _line(rec, (X(dx), Y(20)), (X(dx), Y(35)), False)
+    for dx in (150, 167):  # Літ. | Маса | Масштаб
+        _line(rec, (X(dx), Y(20)), (X(dx), Y(40)), True)
+    _line(rec, (X(155), Y(15)), (X(155), Y(20)), True)   # Аркуш 20 | Аркушів 30
+    _text(rec, X(142.5), Y(36.2), cap["letter"])
+    _text(rec, X(158.5), Y(36.2), cap["mass"])
+    _text(rec, X(176), Y(36.2), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)))
+    _text(rec, X(137), Y(16.2), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start")
+    _text(rec, X(157), Y(16.2), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start")
+    _text(rec, X(142.5), Y(26), fields.get("letter", "Н" if lang == "uk" else "S"), size=3.5)
+    _text(rec, X(158.5), Y(26), fields.get("mass", ""), size=3.5)
+    scale = fields.get("scale", "")
+    _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5)))
+    designation = fields.get("designation", "")
+    _text(rec, X(125), Y(45.5), designation, size=_fit(designation, 116, (7.0, 5.0, 3.5)))
+    _block_text(rec, fields.get("title", ""), X(66), Y(15), 68, 25, (5.0, 3.5, 2.5))
+    _block_text(rec, fields.get("organisation", ""), X(136), Y(0), 48, 15, (3.5, 2.5))
+    _block_text(rec, fields.get("subtitle", ""), X(66), Y(0), 68, 15, (3.5, 2.5))
+    return rec
+
+
+def _block_text(rec: Record, text: str, x: float, y: float, w: float, h: float, sizes) -> None:
+    """Centred, wrapped text in a w×h field whose bottom-left is (x, y)."""
+    if not text:
+        return
+    for size in sizes:
+        lines = wrap(text, w, size)
+        if len(lines) * size * 1.5 <= h and all(text_width(s, size) <= w for s in lines):
+            break
+    step = size * 1.5
+    top = y + h / 2 + step * len(lines) / 2
+    for k, line in enumerate(lines):
+        _text(rec, x + w / 2, top - step * (k + 1) + (step - size) / 2, line, size=size)
+
+
+def title_block_box(f: Form) -> tuple[float, float, float, float]:
+    _, fy0, fx1, _ = f.frame_box
+    return fx1 - BLOCK_W, fy0, fx1, fy0 + BLOCK_H
+
+
+def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
+          title: str = "") -> Record:
+    """A ruled table; its top-left corner at (0, 0), growing downward (y < 0). The first row is the
+    header (thick line under it); numbers are right-aligned, text centred."""
+    rec = Record(title)
+    x_edges = [0.0]
+    for w in widths:
+        x_edges.append(x_edges[-1] + w)
+    top = 0.0
+    if title:
+        rec.label((0.0, 1.5), title, size=3.5, layer="tables")
+    n = len(rows)
+    for k in range(n + 1):
+        y = top - k * row_h
+        rec.segment((0.0, y), (x_edges[-1], y), role="table", layer="tables",
+                    width=THICK if k in (0, 1, n) else THIN)
+    for k, x in enumerate(x_edges):
+        rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
+                    width=THICK if k in (0, len(x_edges) - 1) else THIN)
+    for r, row in enumerate(rows):
+        y = top - (r + 1) * row_h + (row_h - size) / 2
+        for c, cell in enumerate(row):
+            if not cell:
+                continue
+            s = size
+            while text_width(cell, s) > widths[c] - 1.0 and s > 1.8:
+                s -= 0.5
+            numeric = r > 0 and _is_number(cell)
+            if numeric:
+                rec.label((x_edges[c + 1] - 1.0, y), cell, size=s, anchor="end", layer="tables")
+            else:
+                rec.label(((x_edges[c] + x_edges[c + 1]) / 2, y), cell, size=s, anchor="middle",
+                          layer="tables")
+    return rec
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text.replace("−", "-").replace(",", "."))
+        return True
+    except ValueError:
+        return False

@@ -1,0 +1,423 @@
+"""The key sheet (A4 portrait) and the group's summary sheet (A4 landscape) as construction records.
+
+Both are tables drawn like a sheet: the frame 20 mm from the left edge and 5 mm from the others,
+GOST type-B lettering 2.5 / 3.5 / 5 mm, thick outlines and thin rules (REFERENCE §3).
+"""
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from graphplan.graphic.record import Record, text_width
+from graphplan.teach.keys import fmt
+
+A4_PORTRAIT = (210.0, 297.0)
+A4_LANDSCAPE = (297.0, 210.0)
+LEFT, EDGE = 20.0, 5.0           # the frame's distance from the left edge / the other edges
+INSET = 5.0                      # text and tables start this far inside the frame
+SMALL, MEDIUM, LARGE = 2.5, 3.5, 5.0
+
+
+SUMMARY_NOTE = ("φ0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
+                "coefficient; |v|max, |a|max: the output's largest over the turn; the columns from pos. a on: "
+                "at the first acceleration-plan position.")
+NAMES = {"phi0_deg": "φ0", "pos_a": "pos. a", "K_calc": "K calc", "v_max": "|v|max", "a_max": "|a|max"}
+
+
+def display(name: str) -> str:
+    """A quantity's name as printed: ω and ε for omega and eps, the rest as in the long table."""
+    if name in NAMES:
+        return NAMES[name]
+    return re.sub(r"^omega_", "ω_", re.sub(r"^eps_", "ε_", name))
+
+
+def frame(rec: Record, width: float, height: float) -> None:
+    rec.add("polygon", [(LEFT, EDGE), (width - EDGE, EDGE), (width - EDGE, height - EDGE), (LEFT, height - EDGE)],
+            role="frame", layer="frame")
+
+
+def table(rec: Record, x: float, top: float, header: Sequence[Sequence[str]], rows: Sequence[Sequence[str]],
+          *, size: float = SMALL, row_h: float = 4.5, align: Sequence[str] | None = None,
+          widths: Sequence[float] | None = None) -> tuple[float, float]:
+    """Draw a ruled table with its top-left corner at (x, top); ``header`` is a list of header rows.
+    Returns (the table's bottom y, its width)."""
+    ncol = len(header[0])
+    cells = [list(r) for r in header] + [list(r) for r in rows]
+    if widths is None:
+        widths = column_widths(cells, size)
+    align = list(align or ["end"] * ncol)
+    total = sum(widths)
+    n_head, n_rows = len(header), len(rows)
+    height = (n_head + n_rows) * row_h
+    bottom = top - height
+    rec.add("polygon", [(x, bottom), (x + total, bottom), (x + total, top), (x, top)],
+            role="table", layer="tables", width=0.5)
+    for k in range(1, n_head + n_rows):
+        y = top - k * row_h
+        rec.segment((x, y), (x + total, y), role="table", layer="tables", width=0.5 if k == n_head else 0.18)
+    cx = x
+    for w in widths[:-1]:
+        cx += w
+        rec.segment((cx, bottom), (cx, top), role="table", layer="tables", width=0.25)
+    for r, row in enumerate(cells):
+        base = top - (r + 0.5) * row_h - 0.36 * size
+        cx = x
+        for i, (text, w) in enumerate(zip(row, widths)):
+            if text:
+                anchor = "middle" if r < n_head else align[i]
+                tx = {"start": cx + 1.2, "middle": cx + w / 2, "end": cx + w - 1.2}[anchor]
+                rec.label((tx, base), text, size=size, anchor=anchor, layer="tables")
+            cx += w
+    return bottom, total
+
+
+def _heading(rec: Record, x: float, y: float, text: str, size: float = MEDIUM) -> float:
+    rec.label((x, y - size), text, size=size)
+    return y - size - 2.0
+
+
+def _wrap(text: str, size: float, width: float) -> list[str]:
+    words, lines, line = text.split(" "), [], ""
+    for w in words:
+        trial = f"{line} {w}".strip()
+        if line and text_width(trial, size) > width:
+            lines.append(line)
+            line = w
+        else:
+            line = trial
+    return lines + ([line] if line else [])
+
+
+def _paragraph(rec: Record, x: float, y: float, text: str, size: float, width: float) -> float:
+    for line in _wrap(text, size, width):
+        rec.label((x, y - size), line, size=size)
+        y -= size * 1.45
+    return y - 0.5
+
+
+def _value_text(key: dict[str, Any], value: Any) -> str:
+    return cell(value, as_given=True)
+
+
+# -- the key sheet -------------------------------------------------------------------------------
+
+def _columns_split(columns: list[str], cells: dict[str, list[str]], fixed: list[tuple[str, str, list[str]]],
+                   size: float, room: float) -> list[list[str]]:
+    """Split value columns into groups so each table (with the fixed columns repeated) fits ``room``."""
+    def width(col_texts: list[str]) -> float:
+        return max(text_width(t, size) for t in col_texts) + 2.5
+    base = sum(width([h, u] + c) for h, u, c in fixed)
+    groups, group, used = [], [], base
+    for col in columns:
+        w = width(cells[col])
+        if group and used + w > room:
+            groups.append(group)
+            group, used = [], base
+        group.append(col)
+        used += w
+    return groups + ([group] if group else [])
+
+
+def key_sheet(key: dict[str, Any]) -> Record:
+    """The compact key sheet of one variant on A4 portrait: header, velocities at every position,
+    accelerations at the acceleration-plan positions, the output's diagram values."""
+    W, H = A4_PORTRAIT
+    rec = Record(f"Answer key, variant {key['variant']}")
+    frame(rec, W, H)
+    x0, room = LEFT + INSET, W - EDGE - LEFT - 2 * INSET
+    y = H - EDGE - 3.0
+    rec.label((W - EDGE - INSET, y - SMALL), f"graphplan key · {key['base']}", size=SMALL, anchor="end")
+    y = _heading(rec, x0, y, f"Answer key — variant {key['variant']}", LARGE) - 0.5
+    title = key.get("title_en") or key.get("title", "")
+    if key.get("title") and key.get("title_en"):
+        title = f"{key['title_en']} ({key['title']})"
+    y = _paragraph(rec, x0, y, title, MEDIUM, room)
+    if key.get("student"):
+        y = _paragraph(rec, x0, y, f"Student: {key['student']}", MEDIUM, room)
+    quantities = key["quantities"]
+    if key["overrides"]:
+        data = ", ".join(f"{k} = {_value_text(key, v)}" for k, v in key["overrides"].items())
+        y = _paragraph(rec, x0, y, f"Variant data: {data}", SMALL, room)
+    w1 = key["omega1"]
+    out = key["output"]["name"]
+    parts = [f"ω1 = {fmt(abs(w1))} rad/s ({fmt(abs(w1) * 30 / 3.141592653589793)} rpm, "
+             f"{'counter-clockwise' if w1 > 0 else 'clockwise'})",
+             f"T = {fmt(key['period'])} s", key["formula"].replace("→", "->"),
+             f"output {out}, position 0 at φ = {key['position0_phi_deg']:.2f}°"]
+    if key["stroke"] is not None:
+        unit = quantities["s"]["unit"]
+        parts.append(f"H = {fmt(key['stroke'])} {unit}, K = {key['K']:.3f}")
+    y = _paragraph(rec, x0, y, "; ".join(parts) + ".", SMALL, room)
+    tols = sorted({q["tolerance_pct"] for q in quantities.values()})
+    default = max(tols, key=lambda t: sum(q["tolerance_pct"] == t for q in quantities.values()))
+    special = [f"{display(n)} ±{q['tolerance_pct']:g} %" for n, q in quantities.items()
+               if q["tolerance_pct"] != default]
+    tol_text = (f"Tolerance ±{default:g} %" + (f" ({', '.join(special)})" if special else "")
+                + f"; where |exact| is below {key['zero_fraction'] * 100:g} % of the quantity's largest "
+                "value over the turn, within ±tolerance of that value. Velocities and accelerations of "
+                "points are magnitudes; ω, ε + counter-clockwise; an, at, ak, ar: normal, tangential, "
+                "Coriolis, relative; s, v, a: the output along its guide from position 0.")
+    y = _paragraph(rec, x0, y, tol_text, SMALL, room) - 1.5
+
+    velocity = [n for n, q in quantities.items() if q["family"] == "velocity"]
+    acceleration = [n for n, q in quantities.items() if q["family"] == "acceleration"]
+    positions = key["positions"]
+    accel = key["accel"]
+
+    # table 1: velocities, split into column groups when too wide
+    vel_groups = _columns_split(velocity, {n: [fmt(p["values"][n]) for p in positions] + [display(n),
+                                quantities[n]["unit"]] for n in velocity},
+                                [("No", "", [str(p["index"]) for p in positions]),
+                                 ("φ", "°", [f"{p['phi_deg']:.1f}" for p in positions])], SMALL, room)
+    t1 = [Block([["No", "φ"] + [display(n) for n in group], ["", "°"] + [quantities[n]["unit"] for n in group]],
+                [[str(p["index"]), f"{p['phi_deg']:.1f}"] + [fmt(p["values"][n]) for n in group]
+                 for p in positions]) for group in vel_groups]
+    # table 2: accelerations, in two blocks side by side when long
+    t2: list[Block] = []
+    if accel:
+        split = 2 if len(acceleration) > 9 else 1
+        chunk = -(-len(acceleration) // split)
+        for part in range(split):
+            names = acceleration[part * chunk:(part + 1) * chunk]
+            t2.append(Block([["quantity", "unit"] + [f"position {p}" for p in accel]],
+                            [[display(n), quantities[n]["unit"]] + [fmt(positions[p]["values"][n]) for p in accel]
+                             for n in names], ["start", "start"] + ["end"] * len(accel)))
+    # table 3: the output's diagram
+    t3 = [_diagram_block(key)]
+
+    numbers = iter(range(1, 4))
+    sections = [(f"{next(numbers)}. Velocities at positions 0–{len(positions) - 1}", "", t1, False)]
+    if accel:
+        where = ", ".join(f"{p} (φ = {positions[p]['phi_deg']:.1f}°)" for p in accel)
+        sections.append((f"{next(numbers)}. Accelerations at position{'s' if len(accel) > 1 else ''} {where}",
+                         "", t2, True))
+    sections.append((f"{next(numbers)}. Diagrams of {key['output']['name']} by chords, "
+                     f"{key['divisions']} divisions",
+                     "s and a at the divisions k, v at the chord midpoints k + 0.5", t3, False))
+    y = _place(rec, x0, y, room, sections)
+    if "curves" in key and y - EDGE - 4.0 >= CHART_MIN:
+        _curves(rec, key, x0, y - 2.0, room, EDGE + 4.0)
+    return rec
+
+
+@dataclass
+class Block:
+    """A table to place: header rows, body rows and the body's alignment."""
+    header: list[list[str]]
+    rows: list[list[str]]
+    align: list[str] | None = None
+
+    def width(self, size: float = SMALL) -> float:
+        return sum(column_widths(self.header + self.rows, size))
+
+
+def column_widths(cells: Sequence[Sequence[str]], size: float) -> list[float]:
+    return [max(text_width(r[i], size) for r in cells if i < len(r)) + 2.5 for i in range(len(cells[0]))]
+
+
+GAP = 6.0        # between blocks side by side
+ROW_MIN = 2.7    # mm: the smallest row height (with 1.8 mm lettering) before a sheet overflows
+SECTION = 4.0    # below a section
+
+
+def _diagram_block(key: dict[str, Any]) -> Block:
+    quantities, diagram = key["quantities"], key["diagram"]
+    header = [["k", "φ", "t", "s", "v (k + 0.5)", "a"],
+              ["", "°", "s", quantities["s"]["unit"], quantities["v"]["unit"], quantities["a"]["unit"]]]
+    rows = []
+    for k in range(key["divisions"] + 1):
+        point = diagram[2 * k]
+        mid = diagram[2 * k + 1]["values"]["v"] if 2 * k + 1 < len(diagram) else None
+        rows.append([str(k), f"{point['phi_deg']:.1f}", fmt(point["t"]), fmt(point["values"]["s"]),
+                     fmt(mid) if mid is not None else "", fmt(point["values"]["a"])])
+    return Block(header, rows)
+
+
+Section = tuple[str, str, list["Block"], bool]   # title, note, blocks, blocks side by side
+
+
+def _pair(sections: list[Section], room: float, size: float) -> list[list[Section]]:
+    """Rows of the page: two consecutive sections side by side when both fit the width."""
+    rows, k = [], 0
+    while k < len(sections):
+        first = sections[k]
+        if k + 1 < len(sections):
+            second = sections[k + 1]
+            w = _width(first, size) + 2 * GAP + _width(second, size)
+            heads = max(text_width(first[0], MEDIUM), text_width(second[0], MEDIUM))
+            if w <= room and heads <= room / 2:
+                rows.append([first, second])
+                k += 2
+                continue
+        rows.append([first])
+        k += 1
+    return rows
+
+
+def _width(section: Section, size: float) -> float:
+    ws = [b.width(size) for b in section[2]]
+    return sum(ws) + GAP * (len(ws) - 1) if section[3] else max(ws)
+
+
+def _lines(section: Section) -> int:
+    ls = [len(b.header) + len(b.rows) for b in section[2]]
+    return max(ls) if section[3] else sum(ls)
+
+
+def _row_height(page_rows: list[list[Section]], height: float) -> float:
+    """The row height that makes the page rows fill ``height`` (not clamped)."""
+    need = sum(max(_lines(s) for s in row) for row in page_rows)
+    fixed = sum(MEDIUM + 2.0 + (SMALL + 2.0 if any(s[1] for s in row) else 0) + SECTION
+                + max(0 if s[3] else 3.0 * (len(s[2]) - 1) for s in row) for row in page_rows)
+    return (height - fixed) / need
+
+
+def _lettering(row_h: float) -> float:
+    return SMALL if row_h >= 3.4 else max(1.8, row_h - 0.9)
+
+
+def _fold(section: Section) -> Section:
+    """A one-block section's rows in two halves side by side."""
+    (block,) = section[2]
+    half = -(-len(block.rows) // 2)
+    return (section[0], section[1], [Block(block.header, block.rows[:half], block.align),
+                                     Block(block.header, block.rows[half:], block.align)], True)
+
+
+def _place(rec: Record, x0: float, y: float, room: float, sections: list[Section]) -> float:
+    """Lay the sections out down the sheet: a section's blocks side by side when it says so (else
+    stacked); two consecutive sections side by side when both fit the width. Row heights shrink
+    (4.5 → 3.4 mm, then with smaller lettering to 2.7 mm) so that everything fits above the frame;
+    when even that is too tall, the longest one-block tables are folded into two halves side by side.
+    Returns the y below the last section."""
+    height = y - EDGE - 4.0
+    sections = list(sections)
+    size = SMALL
+    page_rows = _pair(sections, room, size)
+    row_h = _row_height(page_rows, height)
+    while row_h < ROW_MIN:
+        size = _lettering(max(row_h, ROW_MIN))
+        foldable = [k for k, s in enumerate(sections) if len(s[2]) == 1 and len(s[2][0].rows) > 8
+                    and 2 * s[2][0].width(size) + GAP <= room]
+        if not foldable:
+            break
+        k = max(foldable, key=lambda k: _lines(sections[k]))
+        sections[k] = _fold(sections[k])
+        page_rows = _pair(sections, room, size)
+        row_h = _row_height(page_rows, height)
+    row_h = max(ROW_MIN, min(4.5, row_h))
+    size = _lettering(row_h)
+    for row in page_rows:
+        x, bottom = x0, y
+        for title, note, blocks, beside in row:
+            yy = _heading(rec, x, y, title)
+            if any(s[1] for s in row):
+                if note:
+                    rec.label((x, yy - SMALL), note, size=SMALL)
+                yy -= SMALL + 2.0
+            bx, by = x, yy
+            for b in blocks:
+                b_bottom, w = table(rec, bx, by, b.header, b.rows, size=size, row_h=row_h, align=b.align)
+                bottom = min(bottom, b_bottom)
+                if beside:
+                    bx += w + GAP
+                else:
+                    by = b_bottom - 3.0
+            x += _width((title, note, blocks, beside), size) + 2 * GAP
+        y = bottom - SECTION
+    return y
+
+
+CHART_MIN = 50.0     # the s–v–a curves are drawn when this much height is left
+CHART_MAX = 34.0     # at most this tall per quantity
+
+
+def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: float, bottom: float) -> None:
+    """The exact s, v, a of the output over one turn from position 0, with the key's ordinates
+    marked (s and a at the divisions, v at the chord midpoints) and the divisions ruled."""
+    curves, quantities, n = key["curves"], key["quantities"], key["divisions"]
+    turn = curves["turn_deg"]
+    y = _heading(rec, x0, top, f"{_section_count(key) + 1}. The exact s, v, a of {key['output']['name']} "
+                               "over one turn from position 0")
+    label_w, tick_w = 12.0, 14.0
+    px, pw = x0 + label_w + tick_w, width - label_w - tick_w - 2.0
+    gap = 3.0
+    h = min(CHART_MAX, (y - bottom - 6.0 - 2 * gap) / 3)
+    marks = {"s": [2 * k for k in range(n + 1)], "v": [2 * k + 1 for k in range(n)],
+             "a": [2 * k for k in range(n + 1)]}
+    for row, name in enumerate(("s", "v", "a")):
+        values = curves[name]
+        lo, hi = min(min(values), 0.0), max(max(values), 0.0)
+        if hi - lo <= 0:
+            hi = lo + 1.0
+        y1 = y - row * (h + gap)
+        y0 = y1 - h
+
+        def X(t: float) -> float:
+            return px + t / 360.0 * pw
+
+        def Y(v: float) -> float:
+            return y0 + (v - lo) / (hi - lo) * h
+
+        rec.add("polygon", [(px, y0), (px + pw, y0), (px + pw, y1), (px, y1)], role="table", layer="diagrams")
+        for k in range(1, n):
+            rec.segment((X(k * 360.0 / n), y0), (X(k * 360.0 / n), y1), role="grid", layer="diagrams")
+        if lo < 0 < hi:
+            rec.segment((px, Y(0.0)), (px + pw, Y(0.0)), role="axis", layer="diagrams")
+        rec.add("polyline", [(X(t), Y(v)) for t, v in zip(turn, values)], role="curve", layer="diagrams")
+        for j in marks[name]:
+            point = key["diagram"][j]
+            t = point["abscissa"] * 360.0 / n
+            rec.point((X(t), Y(point["values"][name])), layer="diagrams")
+        rec.label((x0, (y0 + y1) / 2 - SMALL / 2), f"{name}, {quantities[name]['unit']}", size=SMALL)
+        rec.label((px - 1.0, y1 - SMALL), fmt(hi), size=SMALL, anchor="end")
+        rec.label((px - 1.0, y0), fmt(lo), size=SMALL, anchor="end")
+    y_axis = y - 3 * h - 2 * gap
+    for k in range(n + 1):
+        if n <= 24 or k % 2 == 0:
+            rec.label((X(k * 360.0 / n), y_axis - SMALL - 1.0), str(k), size=SMALL, anchor="middle")
+    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), "k: divisions; ordinates of the key marked",
+              size=SMALL, anchor="end")
+
+
+def _section_count(key: dict[str, Any]) -> int:
+    return 3 if key["accel"] else 2
+
+
+# -- the group's summary sheet ---------------------------------------------------------------------
+
+def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
+                  overrides: set[str] = frozenset()) -> Record:
+    """The group's summary on A4 landscape: one line per variant with its data and headline answers."""
+    W, H = A4_LANDSCAPE
+    rec = Record(title)
+    frame(rec, W, H)
+    x0, room = LEFT + INSET, W - EDGE - LEFT - 2 * INSET
+    y = H - EDGE - 3.0
+    y = _heading(rec, x0, y, title, LARGE) - 1.0
+    notes = [r for r in rows if r.get("status") != "ok"]
+    header = [[display(c) for c in columns], [units.get(c, "") for c in columns]]
+    cells = [[cell(r.get(c), c in overrides) for c in columns] for r in rows]
+    size = SMALL
+    while size > 1.8 and sum(max(text_width(t, size) for t in col) + 2.5
+                             for col in zip(*(header + cells))) > room:
+        size = round(size - 0.1, 2)
+    room_h = y - EDGE - 4.0 - (len(notes) + 3) * 4.0
+    row_h = max(3.0, min(5.0, room_h / (len(rows) + 2)))
+    align = ["start" if c in ("variant", "student", "status") else "end" for c in columns]
+    y, _ = table(rec, x0, y, header, cells, size=size, row_h=row_h, align=align)
+    y = _paragraph(rec, x0, y - 1.0, SUMMARY_NOTE, SMALL, room)
+    for r in notes:
+        y = _paragraph(rec, x0, y, f"Variant {r['variant']}: {r.get('note', '')}", SMALL, room)
+    return rec
+
+
+def cell(value: Any, as_given: bool = False) -> str:
+    """A summary cell: answers to 4 significant digits, a variant's data as given (``as_given``)."""
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return f"{value:g}" if as_given else fmt(value, 4)
+    return str(value)

@@ -1,0 +1,468 @@
+"""Grading a student's long table (variant, position, quantity, value) against a key.
+
+Each row gets the exact value, the percent error δ = (value − exact)/|exact|·100 % and pass/fail by
+the key's tolerance. A failing row is searched over the crank's turn: the crank angles where the
+quantity takes the student's value, the one nearest a listed position preferred; when that is
+another position, the row is said to belong there (seed 004: v_B = 7.2 m/s written for position 1,
+30°, fits 152°, position 5).
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import re
+import unicodedata
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.teach.keys import FORMAT, Quantity, diagram_phi, quantities
+from graphplan.util.files import read_text
+from graphplan.exact.positions import Study, study
+from graphplan.model.scene import build
+
+SEARCH_GRID = 1440      # 0.25° samples, then bisection to ~1e-9°
+ABS_FLOOR = 1e-12       # SI: a floor for quantities that are zero over the whole turn
+
+
+@dataclass
+class Row:
+    """One line of the student's table."""
+    line: int
+    variant: str
+    position: str
+    quantity: str
+    value: float | None
+
+
+@dataclass
+class Graded:
+    """A graded row: the exact value, the error and the verdict, and where the value fits."""
+    row: Row
+    status: str                      # "pass", "fail" or "unknown"
+    quantity: str = ""               # the key's name for the quantity
+    exact: float | None = None
+    error: float | None = None       # value − exact (in the compared sense)
+    error_pct: float | None = None
+    tolerance_pct: float | None = None
+    note: str = ""
+    fits: dict[str, Any] | None = None
+
+    def json(self) -> dict[str, Any]:
+        return {"line": self.row.line, "variant": self.row.variant, "position": self.row.position,
+                "quantity": self.row.quantity, "key_quantity": self.quantity, "value": self.row.value,
+                "exact": self.exact, "error": self.error, "error_pct": self.error_pct,
+                "tolerance_pct": self.tolerance_pct, "pass": self.status == "pass",
+                "status": self.status, "note": self.note, "fits": self.fits}
+
+
+# -- reading -------------------------------------------------------------------------------------
+
+def read_student(path: str | Path) -> list[Row]:
+    """A long table with the columns position, quantity, value (and variant); ``,`` ``;`` or tab
+    separated; with ``;`` or tab a decimal comma is accepted. Other columns are ignored. A table
+    without a ``quantity`` column is read as a wide one (see ``_wide``)."""
+    path = Path(path)
+    text = read_text(path, "student table")
+    lines = [(n + 1, line) for n, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise GraphplanError("the student table is empty", str(path))
+    header_line = lines[0][1]
+    delimiter = ";" if ";" in header_line else "\t" if "\t" in header_line else ","
+    records = list(csv.reader(io.StringIO("\n".join(line for _, line in lines)), delimiter=delimiter))
+    header = [h.strip().lower() for h in records[0]]
+    if "quantity" not in header:
+        return _wide(records, lines, header, delimiter, path)
+    for need in ("position", "value"):
+        if need not in header:
+            raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
+                                 f"(missing {need!r})", str(path))
+    col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
+    rows = []
+    for (line_no, _), cells in zip(lines[1:], records[1:]):
+        def cell(name: str) -> str:
+            k = col.get(name)
+            return cells[k].strip() if k is not None and k < len(cells) else ""
+        value = _number(cell("value"), delimiter, line_no, path)
+        rows.append(Row(line_no, cell("variant"), cell("position"), cell("quantity"), value))
+    return rows
+
+
+def _number(text: str, delimiter: str, line_no: int, path: Path) -> float | None:
+    if not text:
+        return None
+    number = text.replace(",", ".") if delimiter != "," else text
+    try:
+        return float(number)
+    except ValueError:
+        raise GraphplanError(f"line {line_no}: value {text!r} is not a number", str(path)) from None
+
+
+def _wide(records, lines, header, delimiter, path: Path) -> list[Row]:
+    """A wide table (as a lab's sheet prints it): a position column — named ``position``, else the
+    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped."""
+    pos = header.index("position") if "position" in header else 0
+    var = header.index("variant") if "variant" in header else None
+    names = [h.strip() for h in records[0]]
+    rows = []
+    for (line_no, _), cells in zip(lines[1:], records[1:]):
+        for k, name in enumerate(names):
+            if k in (pos, var) or k >= len(cells) or not cells[k].strip():
+                continue
+            value = _number(cells[k].strip(), delimiter, line_no, path)
+            rows.append(Row(line_no, cells[var].strip() if var is not None and var < len(cells) else "",
+                            cells[pos].strip(), name, value))
+    return rows
+
+
+def load_keys(path: str | Path) -> dict[str, dict[str, Any]]:
+    """Keys by variant: a key folder written by ``graphplan key`` (its summary.json), a variant's
+    folder, or one variant's key.json."""
+    path = Path(path)
+    if path.is_dir():
+        summary = path / "summary.json"
+        if summary.exists():
+            doc = _json(summary)
+            out = {}
+            for entry in doc.get("variants", []):
+                if entry.get("status") == "ok":
+                    out[entry["variant"]] = _key(path / entry["key"])
+            if not out:
+                raise GraphplanError("the key folder holds no written variants", str(summary))
+            return out
+        single = path / "key.json"
+        if single.exists():
+            key = _key(single)
+            return {key["variant"]: key}
+        raise GraphplanError("not a key folder (no summary.json or key.json)", str(path))
+    key = _key(path)
+    return {key["variant"]: key}
+
+
+def _json(path: Path) -> dict[str, Any]:
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise GraphplanError("no such key file", str(path)) from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise GraphplanError(f"cannot read the key: {exc}", str(path)) from None
+
+
+def _key(path: Path) -> dict[str, Any]:
+    doc = _json(path)
+    if doc.get("format") != FORMAT:
+        raise GraphplanError(f"not a graphplan key (format {doc.get('format')!r}, expected {FORMAT!r})", str(path))
+    doc["_path"] = str(path)
+    return doc
+
+
+# -- names ---------------------------------------------------------------------------------------
+
+_GREEK = {"ω": "omega", "Ω": "omega", "ε": "eps", "τ": "t", "ϵ": "eps"}
+
+
+def normalise(name: str) -> str:
+    """A quantity's name without case, underscores, carets, spaces or Greek letters:
+    ``ω_AB``, ``omega_AB``, ``wAB`` → ``omegaab``; ``a^τ_BA`` → ``atba``; ``vS2`` → ``vs2``."""
+    text = unicodedata.normalize("NFKC", name.strip())
+    text = "".join(_GREEK.get(c, c) for c in text)
+    text = re.sub(r"[\s_^(),.·{}]", "", text).lower()
+    text = re.sub(r"^epsilon", "eps", text)
+    text = re.sub(r"^w(?=\w)", "omega", text)
+    return text
+
+
+def aliases(key: dict[str, Any]) -> dict[str, str]:
+    """Accepted spellings → the key's quantity names (ambiguous spellings are dropped)."""
+    names = list(key["quantities"])
+    numbers = key.get("links", {})
+    table: dict[str, set[str]] = {}
+    for name in names:
+        spellings = {normalise(name)}
+        m = re.match(r"^(omega|eps)_(.+)$", name)
+        if m and m.group(2) in numbers:
+            spellings.add(normalise(f"{m.group(1)}{numbers[m.group(2)]}"))
+        for s in spellings:
+            table.setdefault(s, set()).add(name)
+    out = {s: next(iter(v)) for s, v in table.items() if len(v) == 1}
+    out.update({n: n for n in names})
+    return out
+
+
+# -- grading -------------------------------------------------------------------------------------
+
+class NoScene(GraphplanError):
+    """A key without its resolved scene (written by hand): nothing can be computed beyond its values."""
+
+
+@dataclass
+class _Variant:
+    """A key with its rebuilt mechanism (for quantities not in the key and for the search)."""
+    key: dict[str, Any]
+    names: dict[str, str]
+    _study: Study | None = None
+    _quantities: dict[str, Quantity] = field(default_factory=dict)
+
+    def study(self) -> Study:
+        if self._study is None:
+            scene = self.key.get("scene")
+            if not scene:
+                raise NoScene("the key has no scene to search other crank angles", self.key.get("_path"))
+            self._study = study(build(scene, f"{self.key.get('_path', 'key')}: scene"))
+            self._quantities = quantities(self._study)
+        return self._study
+
+    def quantity(self, name: str) -> Quantity:
+        self.study()
+        return self._quantities[name]
+
+
+def grade(keys: dict[str, dict[str, Any]], rows: list[Row], signed: bool = False) -> list[Graded]:
+    """Grade every row (see the module's docstring); ``signed`` compares signs where a quantity has one."""
+    variants = {vid: _Variant(key, aliases(key)) for vid, key in keys.items()}
+    single = next(iter(variants.values())) if len(variants) == 1 else None
+    unpadded: dict[str, list[str]] = {}
+    for vid in variants:                       # "7" finds variant "07" when that is the only one
+        unpadded.setdefault(vid.lstrip("0") or "0", []).append(vid)
+    out = []
+    for row in rows:
+        var = variants.get(row.variant) or (single if not row.variant else None)
+        if var is None and row.variant:
+            ids = unpadded.get(row.variant.lstrip("0") or "0", [])
+            var = variants[ids[0]] if len(ids) == 1 else None
+        if var is None:
+            known = ", ".join(sorted(variants)[:5]) + (" …" if len(variants) > 5 else "")
+            out.append(Graded(row, "unknown", note=f"no key for variant {row.variant!r} (keys: {known})"))
+            continue
+        out.append(_grade_row(var, row, signed))
+    return out
+
+
+def _position(key: dict[str, Any], family: str, text: str) -> tuple[float | None, str]:
+    """The row's position as an index (positions) or an abscissa in divisions (diagram), and a note."""
+    try:
+        x = float(text.replace(",", ".").lstrip("#"))
+    except ValueError:
+        return None, f"position {text!r} is not a number"
+    if family == "diagram":
+        n = key["divisions"]
+        if 0 <= x <= n and (2 * x).is_integer():
+            return x, ""
+        return None, f"the diagram's abscissae are 0, 0.5, … {n}"
+    count = key["count"]
+    if not x.is_integer() or not 0 <= x <= count:
+        return None, f"positions are 0 … {count - 1}"
+    if x == count:
+        return 0.0, f"position {count} is position 0"
+    return x, ""
+
+
+def _exact(var: _Variant, name: str, family: str, x: float) -> tuple[float, bool]:
+    """The exact value at a position/abscissa: the key's, else computed (False = not in the key)."""
+    key = var.key
+    if family == "diagram":
+        k = int(round(2 * x))
+        if k < len(key["diagram"]) and name in key["diagram"][k]["values"]:
+            return key["diagram"][k]["values"][name], True
+        st = var.study()
+        phi = diagram_phi(st, [x], key["divisions"])
+    else:
+        values = key["positions"][int(x)]["values"]
+        if name in values:
+            return values[name], True
+        phi = [key["positions"][int(x)]["phi_deg"]]
+        st = var.study()
+    return float(var.quantity(name)(st.solve(phi))[0]), False
+
+
+def _grade_row(var: _Variant, row: Row, signed: bool) -> Graded:
+    key = var.key
+    name = var.names.get(row.quantity) or var.names.get(normalise(row.quantity))
+    if name is None:
+        return Graded(row, "unknown", note=f"unknown quantity {row.quantity!r}")
+    meta = key["quantities"][name]
+    x, note = _position(key, meta["family"], row.position)
+    if x is None:
+        return Graded(row, "unknown", name, note=note)
+    tol = meta["tolerance_pct"]
+    if row.value is None:
+        return Graded(row, "fail", name, tolerance_pct=tol, note="no value")
+    try:
+        exact, in_key = _exact(var, name, meta["family"], x)
+    except NoScene:
+        return Graded(row, "unknown", name, tolerance_pct=tol, note="not in the key (and no scene to compute it)")
+    if not in_key:
+        note = "; ".join(filter(None, [note, "not in the key: computed"]))
+    compare_signed = signed and meta["signed"]
+    got, want = (row.value, exact) if compare_signed else (abs(row.value), abs(exact))
+    floor = max(key["zero_fraction"] * meta["scale"], ABS_FLOOR)
+    error = got - want
+    allowed = tol / 100.0 * max(abs(want), floor)
+    passed = abs(error) <= allowed * (1 + 1e-9)
+    error_pct = 100.0 * error / abs(want) if abs(want) >= floor else None
+    if error_pct is None:
+        note = "; ".join(filter(None, [note, f"near zero: within ±{tol:g} % of {floor:.4g}"]))
+    graded = Graded(row, "pass" if passed else "fail", name, exact, error, error_pct, tol, note)
+    if not passed:
+        _explain(var, graded, name, meta["family"], x, row.value, compare_signed)
+    return graded
+
+
+def _explain(var: _Variant, g: Graded, name: str, family: str, claimed: float, value: float,
+             signed: bool) -> None:
+    """Search the turn for the crank angles where the quantity takes the student's value."""
+    try:
+        st = var.study()
+    except NoScene:
+        g.note = _join(g.note, "the key has no scene: other crank angles not searched")
+        return
+    key = var.key
+    q = var.quantity(name)
+    target = value if signed else abs(value)
+    grid = np.arange(SEARCH_GRID + 1) * 360.0 / SEARCH_GRID
+
+    def f(phi: np.ndarray) -> np.ndarray:
+        y = q(st.solve(phi))
+        return (y if signed else np.abs(y)) - target
+
+    y = f(grid)
+    lo_v, hi_v = float(np.min(y + target)), float(np.max(y + target))
+    if hi_v - lo_v <= 1e-9 * max(abs(hi_v), abs(lo_v), ABS_FLOOR):
+        g.note = _join(g.note, f"{name} is {_num(hi_v)} at every crank angle")
+        return
+    roots = _roots(f, grid, y)
+    if len(roots) == 0:
+        g.note = _join(g.note, f"no crank angle gives {name} = {_num(target)} "
+                               f"(over the turn {_num(lo_v)} … {_num(hi_v)})")
+        return
+    turns = st.from_position0(roots)
+    if family == "diagram":
+        step = 360.0 / key["divisions"] / 2
+        listed = np.arange(2 * key["divisions"]) * step
+        label = lambda j: f"{j / 2:g}"                                  # noqa: E731
+        claimed_turn = claimed * 2 * step
+    else:
+        step = 360.0 / key["count"]
+        listed = np.arange(key["count"]) * step
+        label = lambda j: str(j)                                        # noqa: E731
+        claimed_turn = claimed * step
+
+    def circ(a, b):
+        d = np.mod(np.asarray(a) - b, 360.0)
+        return np.minimum(d, 360.0 - d)
+
+    nearest = [int(np.argmin(circ(listed, t))) for t in turns]
+    dist = np.array([float(circ(listed[j], t)) for j, t in zip(nearest, turns)])
+    best_d = float(np.min(dist))
+    candidates = [k for k in range(len(turns)) if dist[k] <= best_d + 1e-6]
+    k = min(candidates, key=lambda c: (float(circ(turns[c], claimed_turn)), float(turns[c])))
+    j = nearest[k]
+    there_x = j / 2 if family == "diagram" else float(j)
+    there, _ = _exact(var, name, family, there_x)
+    there_cmp = there if signed else abs(there)
+    fits = {"phi_deg": float(roots[k]), "turn_deg": float(turns[k]), "position": label(j),
+            "position_turn_deg": float(listed[j]), "exact_there": there,
+            "error_pct_there": (100.0 * (target - there_cmp) / abs(there_cmp)) if there_cmp else None,
+            "angles_deg": [float(t) for t in sorted(turns)]}
+    same = float(circ(listed[j], claimed_turn)) < 1e-9
+    fits["other_position"] = not same
+    g.fits = fits
+    if same:
+        g.note = _join(g.note, f"the nearest crank angle with this value is {turns[k]:.1f}° "
+                               f"from position 0: an inaccurate value for this position")
+    else:
+        kind = "division" if family == "diagram" else "position"
+        g.note = _join(g.note, f"fits {kind} {label(j)} ({turns[k]:.1f}° from position 0; exact there "
+                               f"{_num(there_cmp)}), not {kind} {g.row.position}")
+
+
+def _roots(f, grid: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Crank angles where f changes sign (or touches zero), refined by bisection."""
+    s = np.sign(y)
+    idx = np.nonzero(s[:-1] * s[1:] < 0)[0]
+    exact = grid[:-1][s[:-1] == 0]
+    lo, hi = grid[idx].copy(), grid[idx + 1].copy()
+    if len(idx):
+        f_lo = y[idx].copy()
+        for _ in range(45):
+            mid = 0.5 * (lo + hi)
+            f_mid = f(mid)
+            left = np.sign(f_mid) == np.sign(f_lo)
+            lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+            hi = np.where(left, hi, mid)
+    roots = np.concatenate([0.5 * (lo + hi), exact]) % 360.0
+    return np.unique(np.round(roots, 9))
+
+
+def _pct(value: float) -> str:
+    text = f"{value:+.1f}"
+    return "0.0" if text in ("+0.0", "-0.0") else text
+
+
+def _join(a: str, b: str) -> str:
+    return f"{a}; {b}" if a else b
+
+
+def _num(v: float) -> str:
+    from graphplan.teach.keys import fmt
+    return fmt(v, 4)
+
+
+# -- the report --------------------------------------------------------------------------------
+
+def summary(graded: list[Graded]) -> dict[str, Any]:
+    """Counts over all rows and per variant; the pass rate is over the graded rows."""
+    def counts(items: list[Graded]) -> dict[str, Any]:
+        passed = sum(g.status == "pass" for g in items)
+        failed = sum(g.status == "fail" for g in items)
+        unknown = sum(g.status == "unknown" for g in items)
+        other = sum(1 for g in items if g.fits and g.fits["other_position"])
+        return {"rows": len(items), "passed": passed, "failed": failed, "unknown": unknown,
+                "pass_pct": round(100.0 * passed / (passed + failed), 2) if passed + failed else None,
+                "other_position": other}
+    by_variant: dict[str, list[Graded]] = {}
+    for g in graded:
+        by_variant.setdefault(g.row.variant, []).append(g)
+    return {**counts(graded), "variants": {v: counts(items) for v, items in sorted(by_variant.items())}}
+
+
+def report_json(graded: list[Graded], key_path: str, student_path: str, signed: bool) -> dict[str, Any]:
+    return {"key": key_path, "student": student_path, "signed": signed,
+            "rows": [g.json() for g in graded], "summary": summary(graded)}
+
+
+def report_table(graded: list[Graded], key_path: str, student_path: str) -> str:
+    """The graded rows as a table for people, then the summary."""
+    from graphplan.teach.keys import fmt
+    head = ["line", "variant", "pos", "quantity", "value", "exact", "error %", "tol %", "result", "note"]
+    cells = []
+    for g in graded:
+        cells.append([str(g.row.line), g.row.variant, g.row.position, g.row.quantity,
+                      "" if g.row.value is None else f"{g.row.value:g}",
+                      fmt(g.exact) if g.exact is not None else "",
+                      _pct(g.error_pct) if g.error_pct is not None else ("—" if g.exact is not None else ""),
+                      f"{g.tolerance_pct:g}" if g.tolerance_pct is not None else "",
+                      {"pass": "pass", "fail": "FAIL", "unknown": "?"}[g.status], g.note])
+    widths = [max(len(r[i]) for r in cells + [head]) for i in range(len(head) - 1)]
+    right = {0, 2, 4, 5, 6, 7}
+    lines = [f"{student_path} graded against {key_path}"]
+    for r in [head] + cells:
+        parts = [(c.rjust(w) if i in right else c.ljust(w)) for i, (c, w) in enumerate(zip(r, widths))]
+        lines.append("  ".join(parts + [r[-1]]).rstrip())
+    s = summary(graded)
+    rate = f"{s['pass_pct']:g} %" if s["pass_pct"] is not None else "—"
+    lines.append("")
+    lines.append(f"{s['rows']} rows: {s['passed']} passed, {s['failed']} failed, {s['unknown']} not graded; "
+                 f"pass rate {rate}; {s['other_position']} rows fit another position")
+    if len(s["variants"]) > 1:
+        for v, c in s["variants"].items():
+            rate = f"{c['pass_pct']:g} %" if c["pass_pct"] is not None else "—"
+            lines.append(f"  variant {v or '(none)'}: {c['passed']}/{c['passed'] + c['failed']} passed ({rate})"
+                         + (f", {c['unknown']} not graded" if c["unknown"] else "")
+                         + (f", {c['other_position']} fit another position" if c["other_position"] else ""))
+    return "\n".join(lines) + "\n"
