@@ -5,12 +5,12 @@ Every row has ``section``, ``method``, ``setting``, ``x`` (the swept quantity), 
 """
 from __future__ import annotations
 
-import argparse
 import math
 import time
 from collections.abc import Callable, Iterator
 from importlib import resources
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -191,7 +191,7 @@ def sheet_time(quick: bool) -> Iterator[Row]:
     """The time of one whole A1 sheet (in process; the command adds Python's start-up)."""
     from graphplan.sheets.sheet import BUILDERS
     from graphplan.sheets.form import form
-    args = argparse.Namespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="kinematics")
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="kinematics")
     for name in ("crank_slider", "shaper"):
         st = example(name)
         t = best_time(lambda st=st: BUILDERS["kinematics"](st, form("A1"), args).svg(), 1 if quick else 3)
@@ -218,15 +218,14 @@ SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
 
 def run(out: Path, quick: bool, show_progress: bool | None = None) -> list[Row]:
     """Run every section, write ``out/bench.json`` and the charts; return the rows."""
-    from graphplan.cli.main import dumps
-    from graphplan.util.files import write_atomic
+    from graphplan.util.files import json_text, write_atomic
     from graphplan.util.progress import progress
 
     rows: list[Row] = []
     for name in progress(list(SECTIONS), len(SECTIONS), "bench", show_progress):
         rows.extend(SECTIONS[name](quick))
     doc = {"quick": quick, "rows": rows}
-    write_atomic(out / "bench.json", dumps(_clean(doc)))
+    write_atomic(out / "bench.json", json_text(_clean(doc)))
     charts(rows, out)
     return rows
 
@@ -359,16 +358,6 @@ CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "
                                "stability": _chart_stability}
 
 
-def cmd_bench(args: argparse.Namespace) -> int:
-    import sys
-    out = Path(args.out)
-    t0 = time.perf_counter()
-    rows = run(out, args.quick)
-    sys.stdout.write(summary(rows) + f"\n{len(rows)} rows in {time.perf_counter() - t0:.1f} s → "
-                     f"{out / 'bench.json'}\n")
-    return 0
-
-
 def summary(rows: list[Row]) -> str:
     """One line per row, for people."""
     lines = [f"{'section':10} {'method':10} {'setting':58} {'time, s':>10} {'error, %':>10}  status"]
@@ -379,12 +368,3 @@ def summary(rows: list[Row]) -> str:
         lines.append(f"{r['section']:10} {r['method'][:10]:10} {setting[:58]:58} {t:>10} {e:>10}  "
                      f"{r.get('status') or r.get('note') or ''}")
     return "\n".join(lines)
-
-
-def register(sub) -> None:
-    p = sub.add_parser("bench", help="speed–accuracy–stability study: DIR/bench.json plus charts",
-                       description="Times and errors of the analytic solver, the graphical plans and the "
-                                   "chord diagrams; sweeps toward the mechanisms' failures.")
-    p.add_argument("-o", "--out", default="bench", metavar="DIR", help="output folder (default: bench)")
-    p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
-    p.set_defaults(handler=cmd_bench)

@@ -1,11 +1,18 @@
 """Writing files whole or not at all: a temporary file in the same folder, then a rename."""
 from __future__ import annotations
 
+import json
 import os
 import tempfile
 from pathlib import Path
+from typing import Any
 
 from graphplan.util.errors import GraphplanError
+
+
+def json_text(doc: Any) -> str:
+    """Deterministic JSON for stdout and files: keys in the order given, no NaN, one indent."""
+    return json.dumps(doc, ensure_ascii=False, indent=1, allow_nan=False) + "\n"
 
 
 def read_text(path: str | Path, what: str) -> str:

@@ -1,0 +1,66 @@
+"""`graphplan diagrams`: s–v–a diagrams by graphical differentiation, measured and compared."""
+from __future__ import annotations
+
+import argparse
+import sys
+
+from graphplan.cli.common import load_study, scene_arg
+from graphplan.util.errors import GraphplanError
+from graphplan.util.files import json_text, write_atomic
+
+def _divisions_arg(text: str) -> int | list[float]:
+    try:
+        if "," in text:
+            return [float(v) for v in text.split(",") if v.strip()]
+        return int(text)
+    except ValueError:
+        raise GraphplanError(f"--divisions: a whole number or comma-separated crank turns, got {text!r}") from None
+
+
+def cmd_diagrams(args) -> int:
+    from graphplan.graphic.diagrams import chord_diagrams
+    st = load_study(args.scene)
+    scene = st.mech.diagram          # the scene's [diagrams] table gives the defaults
+    pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
+    d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
+                       L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
+                       H2=pick(args.h2, "H2_mm", 30.0),
+                       precision=args.precision, adaptive=args.adaptive, height=args.height,
+                       tolerance=args.tolerance, chosen=args.at, lang=args.lang)
+    if args.svg:
+        write_atomic(args.svg, d.svg())
+    if args.json:
+        sys.stdout.write(json_text(d.to_json()))
+    else:
+        sys.stdout.write(d.table(args.lang))
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "diagrams", help="s–v–a diagrams by the method of chords, measured and compared",
+        description="Kinematic diagrams of the output (displacement from position 0, velocity, "
+                    "acceleration) by graphical differentiation with chords and pole distances H1, H2; "
+                    "graphical integration back; every ordinate read with the drafting precision and "
+                    "compared with the analytic solver.")
+    scene_arg(p, optional=True)
+    p.add_argument("--point", metavar="P", help="a sliding point or a link (default: the scene's output)")
+    p.add_argument("--divisions", type=_divisions_arg, metavar="N",
+                   help="equal intervals (default: the scene's positions count), or comma-separated crank "
+                        "turns from position 0 in degrees for unequal ones")
+    p.add_argument("--h1", type=float, metavar="MM", help="pole distance of the v diagram (the scene's, else 30)")
+    p.add_argument("--h2", type=float, metavar="MM", help="pole distance of the a diagram (the scene's, else 30)")
+    p.add_argument("--L", type=float, metavar="MM", help="abscissa of one crank period (the scene's, else 240)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every reading (0.5; 0 = exact)")
+    p.add_argument("--adaptive", action="store_true",
+                   help="split intervals where the chord error estimate is large (extrema, sharp bends)")
+    p.add_argument("--tolerance", type=float, default=0.5, metavar="MM",
+                   help="the adaptive mode's chord error estimate limit on the v and a diagrams (0.5)")
+    p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
+    p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
+    p.add_argument("--lang", choices=("uk", "en"), default="uk", help="captions and table language (uk)")
+    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
+    p.add_argument("--svg", metavar="FILE", help="write the three diagrams with their pole constructions")
+    p.set_defaults(handler=cmd_diagrams)
+

@@ -1,0 +1,53 @@
+"""`graphplan plans`: the position, velocity and acceleration plans, measured and compared."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from graphplan.cli.common import load_study
+from graphplan.util.errors import GraphplanError
+from graphplan.util.files import json_text, write_atomic
+
+def cmd_plans(args: argparse.Namespace) -> int:
+    from graphplan.graphic.plans import build_plans
+    from graphplan.report.plans import plans_json, plans_table, svg_documents
+    st = load_study(args.scene)
+    if args.positions is not None and not 2 <= args.positions <= 3600:
+        raise GraphplanError(f"--positions must be from 2 to 3600, got {args.positions}")
+    plans = build_plans(st, count=args.positions, accel=args.accel, precision=args.precision,
+                        mu_l=args.mu_l, mu_v=args.mu_v, mu_a=args.mu_a)
+    if args.svg:
+        folder = Path(args.svg)
+        if folder.exists() and not folder.is_dir():
+            raise GraphplanError("--svg needs a folder, this is a file", str(folder))
+        for name, text in svg_documents(plans, args.lang).items():
+            write_atomic(folder / name, text)
+    if args.json:
+        sys.stdout.write(json_text(plans_json(plans)))
+    else:
+        sys.stdout.write(plans_table(plans, args.lang))
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "plans", help="the graphical plans (positions, velocities, accelerations), measured and compared",
+        description="Position plan, velocity plans of every position and acceleration plans, "
+                    "constructed graphically in drawing millimetres, read with a ruler of the given "
+                    "precision and compared with the exact solution.")
+    p.add_argument("scene", nargs="?", help="scene file (TOML, see docs/scenes.md); the built-in "
+                   "crank-slider when omitted")
+    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
+    p.add_argument("--accel", nargs="+", metavar="AT",
+                   help="acceleration plans at these crank angles (deg) or position indices like #3 "
+                        "(default: the scene's, else position 1)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every reading, mm (default 0.5; 0 = exact)")
+    p.add_argument("--mu-l", type=float, metavar="M_PER_MM", help="fix the length scale μl, m/mm")
+    p.add_argument("--mu-v", type=float, metavar="V_PER_MM", help="fix the velocity scale μv, (m/s)/mm")
+    p.add_argument("--mu-a", type=float, metavar="A_PER_MM", help="fix the acceleration scale μa, (m/s²)/mm")
+    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
+    p.add_argument("--svg", metavar="DIR", help="write each plan as an SVG in true millimetres into DIR")
+    p.add_argument("--lang", choices=("en", "uk"), default="en", help="language of tables and captions")
+    p.set_defaults(handler=cmd_plans)
