@@ -38,7 +38,8 @@ def test_plans_near_the_toggle_warn_and_stay_exact():
     st = scene_study(bench._scene_four_bar(0.151))
     assert st.warnings
     plans = build_plans(st, precision=0.0)
-    doc = plans.to_json()
+    from graphplan.report.plans import plans_json
+    doc = plans_json(plans)
     assert any(p["warnings"] for p in doc["positions"])
     errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
             if e.get("error_pct") is not None]

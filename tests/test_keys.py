@@ -346,7 +346,7 @@ def test_quantities_cover_the_plans():
 
 @pytest.mark.parametrize("count", [8, 12, 24, 36])
 def test_key_sheet_stays_inside_the_frame(tmp_path, count):
-    from graphplan.sheets.key import EDGE, LEFT, key_sheet
+    from graphplan.teach.keysheet import EDGE, LEFT, key_sheet
     path = table(tmp_path, f"# base = @EX/shaper.toml\nvariant,count,accel\nv,{count},1 3\n")
     t = vt.read(path)
     key = make_key(study(vt.mechanism(t, t.variants[0])))

@@ -16,6 +16,8 @@ from hypothesis import strategies as st_
 import random_mechanisms as rm
 from conftest import EXAMPLES, ROOT, example, scene_study
 from graphplan.cli.main import main
+from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
+from graphplan.report.plans import plans_json, plans_table
 from graphplan.graphic.plans import NEAR_ZERO, SMALL_ANGLE_DEG, build_plans, measure, where
 from graphplan.graphic.scales import SERIES, Targets, standard_scale
 
@@ -300,18 +302,18 @@ def test_targets_make_figures_smaller():
 
 def test_records_have_their_own_origin():
     plans = build_plans(example("slotter"))
-    for rec in list(plans.velocity_records.values()) + list(plans.acceleration_records.values()):
+    for rec in list(velocity_records(plans).values()) + list(acceleration_records(plans).values()):
         poles = [it for it in rec.items if it.role == "pole"]
         assert len(poles) == 1 and poles[0].points[0] == (0.0, 0.0)
         assert any(it.kind == "vector" for it in rec.items)
         assert any(it.kind == "text" for it in rec.items)
-    pos = plans.position_record
+    pos = position_record(plans)
     joints = [it.points[0] for it in pos.items if it.kind == "point"]
     assert (0.0, 0.0) in joints                                   # the crank's pivot
-    assert set(plans.acceleration_records) == {1}
-    roles = {it.role for it in plans.acceleration_records[1].items}
+    assert set(acceleration_records(plans)) == {1}
+    roles = {it.role for it in acceleration_records(plans)[1].items}
     assert {"absolute", "normal", "tangential", "coriolis", "relative", "direction"} <= roles
-    steps = {it.step for it in plans.acceleration_records[1].items}
+    steps = {it.step for it in acceleration_records(plans)[1].items}
     assert any("a^k_A3A2" in s for s in steps)
 
 
@@ -319,7 +321,7 @@ def test_labels_do_not_collide():
     from graphplan.drawing.labels import _overlap
     for name in EXAMPLES:
         plans = build_plans(example(name))
-        for rec in [plans.velocity_records[1], plans.acceleration_records[1], plans.position_record]:
+        for rec in [velocity_records(plans)[1], acceleration_records(plans)[1], position_record(plans)]:
             boxes = [it.bounds() for it in rec.items if it.kind == "text"]
             for i, a in enumerate(boxes):
                 for b in boxes[i + 1:]:
@@ -430,17 +432,17 @@ def test_crank_with_angular_acceleration_is_exact():
     assert st.mech.crank.epsilon == -20000
     plans = build_plans(st, precision=0, accel=every_position(st))
     check_exact(plans)
-    roles = {it.role for it in plans.acceleration_records[0].items}
+    roles = {it.role for it in acceleration_records(plans)[0].items}
     assert "tangential" in roles and "normal" in roles
 
 
 def test_python_api_for_the_sheet():
     plans = build_plans(example("shaper"), targets=Targets().scaled(0.6))
-    doc = plans.to_json()
+    doc = plans_json(plans)
     assert json.loads(json.dumps(doc))["positions"][1]["acceleration"]["k_A3A2"]["mm"] > 0
-    text = plans.table("uk")
+    text = plans_table(plans, "uk")
     assert "Прискорення в положенні 1" in text and "μl =" in text
-    assert set(plans.velocity_records) == set(range(12)) and set(plans.acceleration_records) == {1}
-    for rec in [plans.position_record, *plans.velocity_records.values()]:
+    assert set(velocity_records(plans)) == set(range(12)) and set(acceleration_records(plans)) == {1}
+    for rec in [position_record(plans), *velocity_records(plans).values()]:
         x0, y0, x1, y1 = rec.bounds()
         assert x1 - x0 < 0.6 * 450 + 60 and y1 - y0 < 0.6 * 450 + 60

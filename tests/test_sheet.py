@@ -113,17 +113,3 @@ def test_cli_sheet_builtin_and_errors(tmp_path):
     small = subprocess.run([sys.executable, "-m", "graphplan", "sheet", "examples/shaper.toml", "--format",
                             "A9", "-o", str(tmp_path / "y.svg")], capture_output=True, text=True, cwd=ROOT)
     assert small.returncode == 2 and "A9" in small.stderr and not (tmp_path / "y.svg").exists()
-
-
-def test_jupyter_displays_svg():
-    s = build("four_bar")
-    assert s._repr_svg_().startswith("<svg")
-
-
-def test_objects_display_themselves_in_jupyter():
-    from graphplan.graphic.diagrams import chord_diagrams
-    from graphplan.graphic.plans import build_plans
-    st = example("shaper")
-    for obj in (st.mech, st, build_plans(st), chord_diagrams(st)):
-        svg = obj._repr_svg_()
-        assert svg.startswith("<svg") and 'mm"' in svg

@@ -129,8 +129,9 @@ def stability(quick: bool) -> Iterator[Row]:
             fd = (ang(phi + h) - ang(phi - h)) / (2 * math.radians(h)) * st.mech.omega1
             err = float(np.max(np.abs(w - fd)) / np.max(np.abs(w)) * 100)
             from graphplan.graphic.plans import build_plans
+            from graphplan.report.plans import plans_json
             try:
-                doc = build_plans(st, precision=0.5).to_json()
+                doc = plans_json(build_plans(st, precision=0.5))
                 perr = [abs(e["error_pct"]) for p in doc["positions"] for e in p["velocity"].values()
                         if e.get("error_pct") is not None and (e.get("mm") or 0.0) >= 20.0]
                 row["plans_max_error_pct"] = max(perr) if perr else None
@@ -171,12 +172,13 @@ def plans(quick: bool) -> Iterator[Row]:
     """The plans' error against the drafting precision (velocities and accelerations of vectors
     drawn at least 20 mm long; all positions, one acceleration plan)."""
     from graphplan.graphic.plans import build_plans
+    from graphplan.report.plans import plans_json
     names = ["crank_slider", "shaper"] if quick else ["crank_slider", "four_bar", "shaper", "slotter"]
     for name in names:
         st = example(name)
         for precision in (0.0, 0.1, 0.25, 0.5, 1.0):
             t0 = time.perf_counter()
-            doc = build_plans(st, precision=precision).to_json()
+            doc = plans_json(build_plans(st, precision=precision))
             elapsed = time.perf_counter() - t0
             for kind in ("velocity", "acceleration"):
                 errs = [abs(e["error_pct"]) for p in doc["positions"] for e in p.get(kind, {}).values()

@@ -18,7 +18,9 @@ def _divisions_arg(text: str) -> int | list[float]:
 
 
 def cmd_diagrams(args) -> int:
+    from graphplan.drawing.diagrams import diagrams_svg
     from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.report.diagrams import diagrams_json, diagrams_table
     st = load_study(args.scene)
     scene = st.mech.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
@@ -28,11 +30,11 @@ def cmd_diagrams(args) -> int:
                        precision=args.precision, adaptive=args.adaptive, height=args.height,
                        tolerance=args.tolerance, chosen=args.at, lang=args.lang)
     if args.svg:
-        write_atomic(args.svg, d.svg())
+        write_atomic(args.svg, diagrams_svg(d))
     if args.json:
-        sys.stdout.write(json_text(d.to_json()))
+        sys.stdout.write(json_text(diagrams_json(d)))
     else:
-        sys.stdout.write(d.table(args.lang))
+        sys.stdout.write(diagrams_table(d, args.lang))
     return 0
 
 

@@ -83,7 +83,7 @@ def write_key(folder: Path, key: dict[str, Any], pdf: bool = True) -> list[Path]
     """The variant's files: key.json, key.csv, key.svg and key.pdf."""
     from graphplan.cli.main import dumps
     from graphplan.teach.keys import key_csv
-    from graphplan.sheets.key import A4_PORTRAIT, key_sheet
+    from graphplan.teach.keysheet import A4_PORTRAIT, key_sheet
     from graphplan.drawing.svg import render
     svg = render(key_sheet(key), *A4_PORTRAIT, title=f"Answer key, variant {key['variant']}")
     files = [write_atomic(folder / "key.json", dumps(key)),
@@ -128,7 +128,7 @@ def _csv_value(v: Any) -> str:
 def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
                  overrides: set[str] = frozenset()) -> str:
     """The summary as a fixed-width table for printing (the variants' data as given)."""
-    from graphplan.sheets.key import cell, display
+    from graphplan.teach.keysheet import cell, display
     table_cols = [c for c in columns if c != "note"]
     cells = [[cell(r.get(c), c in overrides) for c in table_cols] for r in rows]
     head = [display(c) for c in table_cols]
@@ -139,7 +139,7 @@ def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], uni
     for r in [head, unit_row] + cells:
         lines.append("  ".join(x.ljust(w) if i in left else x.rjust(w)
                                for i, (x, w) in enumerate(zip(r, widths))).rstrip())
-    from graphplan.sheets.key import SUMMARY_NOTE
+    from graphplan.teach.keysheet import SUMMARY_NOTE
     lines += ["", SUMMARY_NOTE]
     notes = [r for r in rows if r.get("note")]
     if notes:
@@ -225,7 +225,7 @@ def _report(result: dict[str, Any], progress: Progress) -> None:
 def cmd_key(args: argparse.Namespace) -> int:
     from graphplan.model import variants as vt
     from graphplan.cli.main import dumps
-    from graphplan.sheets.key import A4_LANDSCAPE, summary_sheet
+    from graphplan.teach.keysheet import A4_LANDSCAPE, summary_sheet
     from graphplan.drawing.svg import render
 
     table = vt.read(args.variants)

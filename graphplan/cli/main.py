@@ -29,7 +29,7 @@ def build_parser() -> argparse.ArgumentParser:
 # Each module registers its subcommand with ``register(subparsers)`` and imports heavy parts lazily.
 COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.analyze",
-    "graphplan.sheets.sheet",
+    "graphplan.cli.sheet",
     "graphplan.cli.plans",
     "graphplan.cli.diagrams",
     "graphplan.cli.forces",

@@ -3,12 +3,12 @@ seed 002's figure 2.7: axes, division ordinates, chords, poles P with H1 and H2,
 chords, projection lines to the middles of the intervals, the French curves, labels and scales."""
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from graphplan.graphic.chords import periodic_spline
-from graphplan.report.diagrams import WORDS, fmt, units
 from graphplan.graphic.record import Record, text_width
 
 if TYPE_CHECKING:
@@ -20,6 +20,65 @@ GAP = 14.0             # mm between one diagram's lowest drawing and the next on
 TOP = 9.0              # the ordinate axis reaches this far above a diagram's highest point
 NUM = 2.5              # lettering of the division numbers
 TEXT = 3.5             # lettering of the symbols and scales
+
+
+WORDS = {
+    "uk": {"title": "Кінематичні діаграми {what} методом хорд", "point": "точки", "link": "ланки",
+           "scales": "Масштаби", "at": "На ординатах поділу (крива, прочитана на ординатах)",
+           "mid": "Ординати методу хорд (посередині інтервалів)", "chosen": "У двох заданих положеннях",
+           "no": "№", "int": "інт.", "graph": "графічно", "exact": "точно", "err": "δ, %",
+           "integ": "Графічне інтегрування (зворотна побудова)", "warn": "Попередження",
+           "v_from_a": "v з a", "s_from_a": "s з a через v", "s_from_v": "s з ординат v",
+           "dev": "найбільше відхилення {mm:.2f} мм ({pct:.2f} % від максимуму), незамикання {cl:+.2f} мм",
+           "m": "м", "s": "с", "mm": "мм", "rad": "рад", "none": "немає",
+           "period": "T = 2π/ω1 = {T:.4g} с на L = {L:g} мм"},
+    "en": {"title": "Kinematic diagrams of {what} by the method of chords", "point": "point", "link": "link",
+           "scales": "Scales", "at": "At the division ordinates (the curves read there)",
+           "mid": "The chords' ordinates (at the middles of the intervals)", "chosen": "At the two chosen positions",
+           "no": "No", "int": "int.", "graph": "graph.", "exact": "exact", "err": "δ, %",
+           "integ": "Graphical integration (the reverse construction)", "warn": "Warnings",
+           "v_from_a": "v from a", "s_from_a": "s from a through v", "s_from_v": "s from the v ordinates",
+           "dev": "largest deviation {mm:.2f} mm ({pct:.2f} % of the maximum), closure {cl:+.2f} mm",
+           "m": "m", "s": "s", "mm": "mm", "rad": "rad", "none": "none",
+           "period": "T = 2π/ω1 = {T:.4g} s over L = {L:g} mm"},
+}
+
+
+def units(d: Diagrams, lang: str) -> tuple[str, str, str]:
+    w = WORDS[lang]
+    base = w["m"] if d.unit == "m" else w["rad"]
+    return base, f"{base}/{w['s']}", f"{base}/{w['s']}²"
+
+
+def scale_lines(d: Diagrams, lang: str) -> list[str]:
+    w = WORDS[lang]
+    us, uv, ua = units(d, lang)
+    s, v, a = d.symbols
+    return [f"μ{s} = {fmt(d.mu_s, lang)} {us}/{w['mm']}",
+            f"μt = T/L = 2π/(ω1·L) = {fmt(d.mu_t, lang)} {w['s']}/{w['mm']}",
+            f"μ{v} = μ{s}/(μt·H1) = {fmt(d.mu_v, lang)} ({uv})/{w['mm']},  H1 = {d.H1:g} {w['mm']}",
+            f"μ{a} = μ{v}/(μt·H2) = {fmt(d.mu_a, lang)} ({ua})/{w['mm']},  H2 = {d.H2:g} {w['mm']}"]
+
+
+SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def fmt(v: float, lang: str = "en", digits: int = 4) -> str:
+    """A scale or value as a draftsman writes it: 4 significant digits, ·10ⁿ for very small or
+    large numbers, the decimal comma in Ukrainian."""
+    if v == 0 or not math.isfinite(v):
+        text = f"{v:g}"
+    else:
+        e = math.floor(math.log10(abs(v)))
+        if -4 <= e < 6:
+            text = f"{v:.{max(digits - 1 - e, 0)}f}"
+            if "." in text:
+                text = text.rstrip("0").rstrip(".")
+        else:
+            m = f"{v / 10 ** e:.{digits - 1}f}".rstrip("0").rstrip(".")
+            text = f"{m}·10{str(e).translate(SUPER)}"
+    return text.replace(".", ",") if lang == "uk" else text
+
 
 
 def rich(rec: Record, at: tuple[float, float], parts: list[tuple[str, bool]], size: float = TEXT,
@@ -168,3 +227,10 @@ def _caption(rec: Record, L: float, y: float, lines: list[list[tuple[str, bool]]
     """Scale captions to the right of a diagram."""
     for i, parts in enumerate(lines):
         rich(rec, (L + 18.0, y - 1.0 - 5.5 * i), parts, step="scales")
+
+
+def diagrams_svg(d: Diagrams, lang: str | None = None) -> str:
+    """The three diagrams with their pole constructions as one SVG page in true millimetres."""
+    from graphplan.drawing.svg import page_for, render
+    rec, w, h = page_for(draw(d, lang or d.lang))
+    return render(rec, w, h, rec.title)

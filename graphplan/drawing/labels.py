@@ -7,25 +7,12 @@ labels (position numbers) are dropped when no free place is left.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
-from graphplan.graphic.record import Primitive, Record, text_width
+from graphplan.graphic.record import LABEL_GAP as GAP, LabelRequest, Primitive, Record, text_width
 
-GAP = 0.8          # mm between an anchor and its label's box
 STEPS = 16         # candidate directions around an anchor
-
-
-@dataclass
-class LabelRequest:
-    at: complex            # the anchor (a plan point, a joint), drawing mm
-    text: str
-    toward: complex = 1j   # preferred side (any non-zero complex)
-    size: float = 3.5
-    optional: bool = False
-    step: str = ""
-    gap: float = GAP
 
 
 def _segments(items: list[Primitive]) -> np.ndarray:

@@ -9,7 +9,7 @@ import math
 from graphplan.graphic.record import Record
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.model.mechanism import FRAME
-from graphplan.graphic.plans import Layout, Plans, Scheme, where
+from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 
 ARC_HALF = 5.0       # mm of arc drawn each side of a construction point (a "засічка")
 BLOCK = (9.0, 5.0)   # slider block drawn on the thick positions, mm
@@ -223,3 +223,33 @@ def position_record(plans: Plans) -> Record:
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
         labels.append(LabelRequest(X, out + "'" * (j + 1), toward=1j, size=2.5, optional=True))
     return place_labels(rec, labels)
+
+
+def labelled(plan: Plan) -> Record:
+    """A velocity or acceleration plan's record with its labels placed (the pole at (0, 0))."""
+    rec = Record(plan.record.title, list(plan.record.items), dict(plan.record.scales))
+    return place_labels(rec, plan.labels)
+
+
+def plan_records(plans: Plans, kind: str) -> dict[int, Record]:
+    """The velocity (``kind="velocity"``, pole p_v at (0, 0)) or acceleration plans (pole π),
+    labelled, keyed by position."""
+    out = {}
+    for p in plans.positions:
+        plan = p.velocity if kind == "velocity" else p.acceleration
+        if plan is not None:
+            rec = labelled(plan)
+            rec.title = f"{kind} plan, position {p.index if p.index is not None else f'φ = {p.phi:g}°'}"
+            rec.scales = {"mu_v" if kind == "velocity" else "mu_a": plan.mu}
+            out[p.key] = rec
+    return out
+
+
+def velocity_records(plans: Plans) -> dict[int, Record]:
+    """The velocity plan of every position, keyed by position, the pole p_v at (0, 0)."""
+    return plan_records(plans, "velocity")
+
+
+def acceleration_records(plans: Plans) -> dict[int, Record]:
+    """The acceleration plans, keyed by position, the pole π at (0, 0)."""
+    return plan_records(plans, "acceleration")

@@ -65,10 +65,6 @@ class Study:
                                     self.mech.source)
         return kin
 
-    def _repr_svg_(self) -> str:  # Jupyter: the scheme with its positions
-        from graphplan.graphic.plans import build_plans
-        return build_plans(self)._repr_svg_()
-
     def from_position0(self, phi_deg) -> np.ndarray:
         """Crank turn since position 0 in the crank's sense (deg, [0, 360))."""
         return np.mod((np.asarray(phi_deg) - self.phi0) * np.sign(self.mech.omega1), 360.0)

@@ -148,32 +148,6 @@ class Diagrams:
         """The error in percent of the cycle's maximum |value| (what the bench charts)."""
         return 100.0 * (self.values(reading)[key] - self.truth[key]) / self.maxima[key[0]]
 
-    # -- outputs ------------------------------------------------------------------------------------
-    @property
-    def record(self) -> Record:
-        from graphplan.drawing.diagrams import draw
-        return draw(self, self.lang)
-
-    def record_for(self, lang: str) -> Record:
-        from graphplan.drawing.diagrams import draw
-        return draw(self, lang)
-
-    def to_json(self) -> dict[str, Any]:
-        from graphplan.report.diagrams import diagrams_json
-        return diagrams_json(self)
-
-    def table(self, lang: str = "uk") -> str:
-        from graphplan.report.diagrams import diagrams_table
-        return diagrams_table(self, lang)
-
-    def svg(self, lang: str | None = None) -> str:
-        from graphplan.drawing.svg import page_for, render
-        rec, w, h = page_for(self.record_for(lang or self.lang))
-        return render(rec, w, h, rec.title)
-
-    def _repr_svg_(self) -> str:  # Jupyter
-        return self.svg()
-
 
 # -- the study ---------------------------------------------------------------------------------------
 

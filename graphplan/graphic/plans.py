@@ -28,10 +28,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import LabelRequest, Record
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.kinematics import Kinematics
-from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study
 from graphplan.graphic.scales import Targets, standard_scale
@@ -606,11 +605,6 @@ class Plan:
             if e.basis > floor and e.analytic > 0:
                 e.error_pct = 100.0 * (e.value - e.analytic) / e.analytic
 
-    def labelled_record(self) -> Record:
-        """The plan's record with its labels placed (the pole at (0, 0))."""
-        rec = Record(self.record.title, list(self.record.items), dict(self.record.scales))
-        return place_labels(rec, self.labels)
-
 
 class VelocityPlan(Plan):
     kind = "velocity"
@@ -1063,52 +1057,6 @@ class Plans:
     @property
     def accel_keys(self) -> list[int]:
         return [p.key for p in self.positions if p.acceleration is not None]
-
-    def _records(self, kind: str) -> dict[int, Record]:
-        cache = self.__dict__.setdefault("_cache", {})
-        if kind not in cache:
-            out = {}
-            for p in self.positions:
-                plan = p.velocity if kind == "velocity" else p.acceleration
-                if plan is not None:
-                    rec = plan.labelled_record()
-                    rec.title = f"{kind} plan, position {p.index if p.index is not None else f'φ = {p.phi:g}°'}"
-                    rec.scales = {"mu_v" if kind == "velocity" else "mu_a": plan.mu}
-                    out[p.key] = rec
-            cache[kind] = out
-        return cache[kind]
-
-    @property
-    def velocity_records(self) -> dict[int, Record]:
-        """The velocity plan of every position, keyed by position, the pole p_v at (0, 0)."""
-        return self._records("velocity")
-
-    @property
-    def acceleration_records(self) -> dict[int, Record]:
-        """The acceleration plans, keyed by position, the pole π at (0, 0)."""
-        return self._records("acceleration")
-
-    @property
-    def position_record(self) -> Record:
-        """All positions on one drawing, the crank's pivot at (0, 0)."""
-        cache = self.__dict__.setdefault("_cache", {})
-        if "position" not in cache:
-            from graphplan.drawing.plans import position_record
-            cache["position"] = position_record(self)
-        return cache["position"]
-
-    def _repr_svg_(self) -> str:  # Jupyter: the position plan
-        from graphplan.drawing.svg import page_for, render
-        rec, w, h = page_for(self.position_record)
-        return render(rec, w, h, self.study.mech.title)
-
-    def to_json(self) -> dict:
-        from graphplan.report.plans import plans_json
-        return plans_json(self)
-
-    def table(self, lang: str = "en") -> str:
-        from graphplan.report.plans import plans_table
-        return plans_table(self, lang)
 
 
 def resolve_accel(st: Study, phis: np.ndarray, accel: Sequence[str | int | float] | None

@@ -142,6 +142,22 @@ class Record:
         self.items.extend(other.items)
 
 
+LABEL_GAP = 0.8    # mm between an anchor and its label's box
+
+
+@dataclass
+class LabelRequest:
+    """A label the construction asks for; the drawing room places it clear of the lines."""
+    at: complex            # the anchor (a plan point, a joint), drawing mm
+    text: str
+    toward: complex = 1j   # preferred side (any non-zero complex)
+    size: float = 3.5
+    optional: bool = False
+    step: str = ""
+    gap: float = LABEL_GAP
+
+
+
 def arrowhead(a: Point, b: Point, length: float = 3.0, half_width: float = 0.6) -> tuple[Point, Point, Point]:
     """The filled triangle of an arrow at b (GOST: about 2.5–4 mm long)."""
     dx, dy = b[0] - a[0], b[1] - a[1]

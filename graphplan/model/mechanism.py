@@ -109,10 +109,6 @@ class Mechanism:
         found += [name for name, link in self.links.items() if point in link.local]
         return found
 
-    def _repr_svg_(self) -> str:  # Jupyter: the scheme with its positions
-        from graphplan.exact.positions import study
-        return study(self)._repr_svg_()
-
     def point_names(self) -> list[str]:
         """Every named point: frame points, joints and extra points, first seen first."""
         names = list(self.frame)

@@ -193,15 +193,17 @@ def svg_documents(plans: Plans, lang: str = "en") -> dict[str, str]:
         page, w, h = page_for(captioned(rec, caption))
         docs[name] = render(page, w, h, caption)
 
-    put("positions.svg", plans.position_record,
+    from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
+    vel, acc = velocity_records(plans), acceleration_records(plans)
+    put("positions.svg", position_record(plans),
         f"{t['position plan']}: {format_scale('mu_l', plans.mu_l)}")
     for p in plans.positions:
         tag = f"{p.index:02d}" if p.index is not None else f"phi{p.phi % 360:g}"
         where_ = f"{t['position']} {p.index}" if p.index is not None else ""
-        put(f"velocity_{tag}.svg", plans.velocity_records[p.key],
+        put(f"velocity_{tag}.svg", vel[p.key],
             f"{t['velocity plan']}, {where_} (φ = {p.phi % 360:.1f}°): {format_scale('mu_v', plans.mu_v)}")
         if p.acceleration is not None:
-            put(f"acceleration_{tag}.svg", plans.acceleration_records[p.key],
+            put(f"acceleration_{tag}.svg", acc[p.key],
                 f"{t['acceleration plan']}, {where_} (φ = {p.phi % 360:.1f}°): "
                 f"{format_scale('mu_a', plans.mu_a)}")
     return docs

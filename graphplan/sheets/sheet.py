@@ -3,12 +3,12 @@ acceleration plans, the s–v–a diagrams and the tables, laid out so nothing o
 The output's suffix picks SVG, PDF, PNG or DXF; every format views the same construction record."""
 from __future__ import annotations
 
-import argparse
 import math
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -36,6 +36,10 @@ WORDS = {
            "subtitle": "Kinematic analysis"},
 }
 FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
+
+# What a sheet is asked for: positions, accel (degrees or "#3"), precision (mm), lang, sheet (kind);
+# the command line's namespace or any object with those attributes.
+Options = Any
 
 
 @dataclass
@@ -66,9 +70,6 @@ class Sheet:
             return write_atomic(path, svg)
         from graphplan.drawing.svg import to_pdf, to_png
         return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi=96))
-
-    def _repr_svg_(self) -> str:  # Jupyter
-        return self.svg()
 
 
 def fmt(v: float | None, digits: int = 4) -> str:
@@ -158,41 +159,7 @@ def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: st
     return Sheet(f, declutter(rec), placed, lang)
 
 
-def register(sub) -> None:
-    p = sub.add_parser("sheet", help="the drawing sheet (SVG, PDF, PNG or DXF by the suffix)",
-                       description="Lay out the drawing sheet: frame, title block, plans, diagrams and "
-                                   "tables. Without SCENE the built-in crank-slider is drawn.")
-    p.add_argument("scene", nargs="?", help="scene file (TOML); the built-in crank-slider when omitted")
-    p.add_argument("-o", "--output", required=True, metavar="FILE",
-                   help="output file: .svg, .pdf, .png or .dxf")
-    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
-    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
-    p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces"],
-                   help="which sheet: kinematics (default) or forces")
-    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
-    p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
-    p.add_argument("--text-as-paths", action="store_true", help="write lettering as outlines (SVG/PDF/PNG)")
-    p.set_defaults(handler=cmd_sheet)
-
-
 BUILDERS: dict[str, Callable[..., Sheet]] = {}
-
-
-def cmd_sheet(args: argparse.Namespace) -> int:
-    from graphplan.exact.positions import study
-    from graphplan.model.scene import load
-    if Path(args.output).suffix.lower() not in FORMATS_OUT:
-        raise GraphplanError(f"-o {args.output}: unknown format; use " + ", ".join(FORMATS_OUT))
-    st = study(load(args.scene))
-    f = form(args.format)
-    build = BUILDERS.get(args.sheet)
-    if build is None:
-        raise GraphplanError(f"--sheet {args.sheet}: not available")
-    sheet = build(st, f, args)
-    path = sheet.write(args.output, args.text_as_paths)
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
-    return 0
 
 
 # -- the force sheet (issue 8): groups with their force plans, the lever, the results, the turn --------
@@ -215,7 +182,7 @@ def _force_caption(name: str, lang: str) -> str:
             "moment": w["moment"], "hodograph": f"{w['hodograph']} {rest}"}.get(kind, name)
 
 
-def build_forces_sheet(st: Study, f: Form, args: argparse.Namespace) -> Sheet:
+def build_forces_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 2: every group with its force plan and reactions table, the lever, the results and the
     balancing moment and reaction hodographs over a turn."""
     from graphplan.drawing import charts as forcecharts
@@ -254,18 +221,21 @@ def _accel_arg(values: list[str] | None):
     return None if not values else [v if v.startswith("#") else float(v) for v in values]
 
 
-def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
+def kinematics_blocks(st: Study, args: Options, k: float,
                       width: float = 780.0) -> tuple[list[Block], str]:
     """The kinematics sheet's blocks at size factor k: notes, the position plan, the diagrams,
     the acceleration plans, the tables and the velocity plans; and the sheet's length scale."""
     from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.drawing.diagrams import draw as draw_diagrams
+    from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
     from graphplan.graphic.plans import build_plans
+    from graphplan.report.plans import plans_json
     from graphplan.graphic.scales import Targets, format_scale
     lang = args.lang
     w = WORDS[lang]
     plans = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
                         targets=Targets().scaled(k))
-    doc = plans.to_json()
+    doc = plans_json(plans)
     dg = st.mech.diagram
     diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.count,
                           L=float(dg.get("L_mm", 240.0)) * k, H1=float(dg.get("H1_mm", 30.0)),
@@ -281,16 +251,16 @@ def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
             vp = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
                              targets=t, mu_l=plans.mu_l, mu_a=plans.mu_a)
         state["plans"] = vp
-        cells = [captioned(vp.velocity_records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
+        records = velocity_records(vp)
+        cells = [captioned(records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
                  for p in vp.positions]
         return flow(cells, width)
 
     def notes_block(_k: float) -> Record:
         vp = state["plans"]
-        vdoc = vp.to_json()
+        vdoc = plans_json(vp)
         scales = [format_scale("mu_l", plans.mu_l), format_scale("mu_v", vp.mu_v), format_scale("mu_a", plans.mu_a)]
-        if "mu_t" in diag.record.scales:
-            scales.append(f"μt = {diag.record.scales['mu_t']:.4g}")
+        scales.append(f"μt = {diag.mu_t:.4g}")
         errs = [abs(e["error_pct"]) for p in vdoc["positions"] for e in p["velocity"].values()
                 if e.get("error_pct") is not None and (e.get("mm") or 0) >= 20.0]
         extra = [f"{w['precision']}: {args.precision:g} " + ("мм" if lang == "uk" else "mm")]
@@ -299,16 +269,16 @@ def kinematics_blocks(st: Study, args: argparse.Namespace, k: float,
         return notes(st, scales, extra, lang)
 
     blocks = [Block("position plan", lambda _k: captioned(
-        plans.position_record, f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}"))]
-    blocks.append(Block("diagrams", lambda _k: diag.record_for(lang)))
+        position_record(plans), f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}"))]
+    blocks.append(Block("diagrams", lambda _k: draw_diagrams(diag, lang)))
     blocks.append(Block("velocity plans", velocity_plans, factors=(1.0, 0.8, 0.64, 0.5)))
     for p in plans.positions:
         if p.acceleration is not None:
             blocks.append(Block(f"acceleration plan {p.key}", lambda _k, p=p: captioned(
-                plans.acceleration_records[p.key],
+                acceleration_records(plans)[p.key],
                 f"{w['acceleration']}, {w['position']} {p.index if p.index is not None else ''} "
                 f"(φ = {p.phi % 360:.1f}°), {format_scale('mu_a', plans.mu_a)}")))
-    blocks.append(Block("velocity table", lambda _k: velocity_table(state["plans"].to_json(), lang)))
+    blocks.append(Block("velocity table", lambda _k: velocity_table(plans_json(state["plans"]), lang)))
     for pos in doc["positions"]:
         if "acceleration" in pos:
             blocks.append(Block(f"acceleration table {pos['index']}",
@@ -334,7 +304,7 @@ def flow(records: list[Record], width: float, gap: float = 6.0) -> Record:
     return out
 
 
-def build_kinematics_sheet(st: Study, f: Form, args: argparse.Namespace) -> Sheet:
+def build_kinematics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis; the plans' scales are coarsened (factor k)
     until the whole set fits the sheet. The blocks' area at k = 1 (it grows about as k²) picks the
     first factor worth trying."""
