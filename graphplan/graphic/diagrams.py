@@ -25,7 +25,6 @@ import numpy as np
 
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
-from graphplan.graphic.record import Record
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.positions import Output, Study
 

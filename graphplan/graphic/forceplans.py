@@ -23,7 +23,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphplan.graphic.record import Record
 from graphplan.exact.kinematics import cross, dot
 from graphplan.exact.kinetostatics import CRANK_LABEL, Kinetostatics, Load, analyse, number
 from graphplan.model.mechanism import FRAME

@@ -4,7 +4,6 @@ The output's suffix picks SVG, PDF, PNG or DXF; every format views the same cons
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
