@@ -8,34 +8,12 @@ French curve through the constructed points.
 """
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
 
-SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)  # standard scale coefficients × 10^k per mm
-
-
-def standard_scale(at_least: float) -> float:
-    """The smallest coefficient of the series 1, 2, 2.5, 4, 5 × 10^k that is ≥ ``at_least``."""
-    if not at_least > 0 or not math.isfinite(at_least):
-        raise ValueError(f"a scale must be positive, got {at_least}")
-    k = math.floor(math.log10(at_least))
-    for exp in (k - 1, k, k + 1):
-        for m in SERIES:
-            value = float(f"{m}e{exp}")
-            if value >= at_least * (1 - 1e-12):
-                return value
-    raise AssertionError("unreachable")  # pragma: no cover
-
-
-def read(mm, precision: float):
-    """A ruler's reading of a length in mm: the nearest multiple of the drafting precision
-    (0 = exact). Rounded to 1e-10 mm so that 0.1-mm readings print as 27.3, not 27.300000000000004."""
-    y = np.asarray(mm, dtype=float)
-    if precision <= 0:
-        return y
-    return np.round(np.round(y / precision) * precision, 10) + 0.0  # + 0.0: no −0 readings
+from graphplan.graphic.draftsman import measure_all as read  # noqa: F401  (the one ruler)
+from graphplan.graphic.scales import SERIES, at_least as standard_scale  # noqa: F401  (the one series)
 
 
 def midpoints(x: np.ndarray) -> np.ndarray:

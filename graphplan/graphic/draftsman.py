@@ -12,10 +12,26 @@ from graphplan.util.errors import GraphplanError
 # -- measuring with a ruler ---------------------------------------------------------------------
 
 def measure(length_mm: float, precision: float) -> float:
-    """A length read with a ruler: rounded to the nearest multiple of ``precision`` (0 = exact)."""
+    """A length read with a ruler: rounded to the nearest multiple of ``precision`` (0 = exact).
+
+    The one ruler of every construction (plans, force plans, diagrams). A reading exactly half a
+    division between two marks goes to the even mark, as numpy and Python round: constructions
+    whose lengths are multiples of earlier readings meet such ties often (a chord's height with
+    H/Δx = 1.5 turns 0.5 mm into 0.75 mm), and always rounding them up biases every integrated
+    diagram (the shaper's s from a, 12 divisions: 7.0 % of the maximum against 1.0 %)."""
     if precision <= 0:
         return float(length_mm)
-    return math.floor(length_mm / precision + 0.5) * precision
+    return float(precision * round(length_mm / precision))
+
+
+def measure_all(mm, precision: float):
+    """The same ruler over an array of lengths (diagram ordinates), ties to the even mark;
+    readings rounded to 1e-10 mm so 0.1-mm readings print as 27.3, not 27.300000000000004."""
+    import numpy as np
+    y = np.asarray(mm, dtype=float)
+    if precision <= 0:
+        return y
+    return np.round(np.round(y / precision) * precision, 10) + 0.0  # + 0.0: no −0 readings
 
 
 lay_off = measure   # laying a computed length off with the same ruler rounds it the same way

@@ -23,34 +23,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from graphplan.graphic.draftsman import measure  # noqa: F401  (the one ruler)
+from graphplan.graphic.scales import SERIES, at_least as standard_scale  # noqa: F401  (the one series)
 from graphplan.exact.kinematics import cross, dot
 from graphplan.exact.kinetostatics import CRANK_LABEL, Kinetostatics, Load, analyse, number
 from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
 
-SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 DEFAULT_PRECISION = 0.5
 POLYGON_MM = 150.0     # the largest force of the analysis is drawn at most this long
 MECHANISM_MM = 250.0   # the mechanism's extent over the turn fits in this many mm
 PLAN_MM = 120.0        # the fastest point's velocity vector on the lever
-
-
-def standard_scale(value: float) -> float:
-    """The smallest scale coefficient of the standard series 1, 2, 2.5, 4, 5 × 10^k ≥ value."""
-    if not value > 0 or not math.isfinite(value):
-        return 1.0
-    k = math.floor(math.log10(value))
-    for p in (k, k + 1):
-        for s in SERIES:
-            c = s * 10.0 ** p
-            if c >= value * (1 - 1e-12):
-                return float(f"{c:.12g}")
-    return 10.0 ** (k + 1)
-
-
-def measure(mm: float, precision: float) -> float:
-    """A length read off the drawing: rounded to the drafting precision (0 = exact)."""
-    return float(mm) if precision <= 0 else float(precision * round(mm / precision))
 
 
 def angle_deg(z: complex) -> float:

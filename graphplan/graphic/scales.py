@@ -48,6 +48,13 @@ def series_around(value: float) -> list[float]:
     return [series_value(m, k) for k in range(k0 - 4, k0 + 5) for m in SERIES]
 
 
+def at_least(value: float) -> float:
+    """The smallest coefficient of the standard series 1, 2, 2.5, 4, 5 × 10^k that is ≥ ``value``."""
+    if not (value > 0 and math.isfinite(value)):
+        raise GraphplanError(f"cannot choose a scale for a segment of size {value!r}")
+    return next(m for m in series_around(value) if m >= value * (1 - 1e-12))
+
+
 def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | None = None,
                    largest: float | None = None, limit_mm: float | None = None) -> float:
     """The scale coefficient μ of the standard series for a segment of real size ``value``.
@@ -69,8 +76,7 @@ def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | 
     need = value / hi
     if largest is not None and limit_mm is not None and largest > 0 and limit_mm > 0:
         need = max(need, largest / limit_mm)
-    mu = next(m for m in series_around(need) if m >= need * (1 - 1e-12))
-    return mu
+    return at_least(need)
 
 
 def format_scale(name: str, mu: float) -> str:
