@@ -246,6 +246,19 @@ def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tupl
     return tuple(sorted({round(float(r), 10) % 360.0 for r in roots}))
 
 
+def dead_centre(mech: Mechanism, output: Output, kin: Kinematics, extremes: tuple[float, ...],
+                which: str) -> float:
+    """The textbook's dead centres of a slider: the inner one has the slider nearest the crank's
+    pivot, the outer one farthest from it."""
+    if output.kind != "slide":
+        raise SceneError(f"positions.start = {which!r}: inner and outer dead centres belong to a slider; "
+                         f"the output {output.name} is a link's angle (use \"max\"/\"min\")", mech.source)
+    point = next(iter(mech.links[output.name].local))
+    reach = np.abs(kin.point(point)[0] - mech.frame[mech.crank.pivot])
+    pick = np.argmin(reach) if which == "inner" else np.argmax(reach)
+    return float(extremes[int(pick)])
+
+
 def choose_start(mech: Mechanism, structure: Structure, output: Output,
                  extremes: tuple[float, ...]) -> float:
     """Position 0: an angle from the scene, or the extreme named by ``start``."""
@@ -262,6 +275,8 @@ def choose_start(mech: Mechanism, structure: Structure, output: Output,
         return hi
     if mech.start == "min":
         return lo
+    if mech.start in ("inner", "outer"):
+        return dead_centre(mech, output, kin, extremes, mech.start)
     # the working stroke is the slower one: the longer crank turn between the extremes
     sense = np.sign(mech.omega1)
     turn_from_hi = ((lo - hi) * sense) % 360.0

@@ -8,6 +8,7 @@ import copy
 import math
 import tomllib
 from importlib import resources
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -142,7 +143,7 @@ class _Reader:
                                 f"no guide named {link.slides_on!r} (guides: {known})")
         positions = self.table(data.get("positions", {}), "positions", _POSITIONS)
         loads = self.table(data.get("loads", {}), "loads", _LOADS)
-        links = self.apply_loads(links, loads)
+        links = self.apply_loads(self.shape_joints(links, frame), loads)
         mech = Mechanism(
             title=str(data.get("title", "mechanism")), frame=frame, guides=guides, links=links,
             crank=crank, branches=self.read_branches(data.get("branch", {})),
@@ -342,11 +343,11 @@ class _Reader:
         return out
 
     def read_start(self, value: Any) -> str | float:
-        if value in ("max", "min", "working", "idle"):
+        if value in ("max", "min", "working", "idle", "inner", "outer"):
             return value
         if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
             raise self.fail("positions.start",
-                            f'must be "max", "min", "working", "idle" or a crank angle, got {value!r}')
+                            f'must be "max", "min", "working", "idle", "inner", "outer" or a crank angle, got {value!r}')
         return self.number(value, "positions.start") % 360.0
 
     def read_working(self, value: Any) -> str:
@@ -428,13 +429,36 @@ class _Reader:
         meta.update({f"sheet.{k}": str(v) for k, v in sheet.items()})
         return meta
 
+    @staticmethod
+    def shape_joints(links: dict[str, Link], frame: dict[str, complex]) -> dict[str, Link]:
+        """A point placed in a link's ``shape`` (a triangular link's third vertex) that another link
+        lists as a joint is a joint of this link too: the textbook draws it once, on the shape."""
+        owners: dict[str, list[str]] = {}
+        for link in links.values():
+            for j in link.joints:
+                owners.setdefault(j, []).append(link.name)
+        out = dict(links)
+        for j, bodies in owners.items():
+            if len(bodies) != 1 or j in frame:
+                continue
+            carriers = [n for n, link in links.items() if n != bodies[0] and j in link.local
+                        and j not in link.joints and link.slides_on is None]
+            if len(carriers) == 1:
+                link = out[carriers[0]]
+                out[carriers[0]] = replace(link, joints=link.joints + (j,))
+        return out
+
     def check_names(self, mech: Mechanism) -> None:
-        """Every referenced point must exist somewhere; joints must be shared or fixed."""
+        """Every referenced point must exist somewhere; joints must be shared or fixed. The crank's
+        pin may join nothing when the crank carries the guide of a slider (a slotted crank)."""
         owners: dict[str, list[str]] = {}
         for link in mech.links.values():
             for j in link.joints:
                 owners.setdefault(j, []).append(link.name)
+        carries = {mech.guides[link.slides_on].body for link in mech.links.values() if link.slides_on}
         for j, bodies in owners.items():
+            if j == mech.crank.pin and bodies == [mech.crank.link] and mech.crank.link in carries:
+                continue
             if len(bodies) == 1 and j not in mech.frame:
                 raise self.fail(f"link {bodies[0]}.joints",
                                 f"joint {j!r} joins nothing: no other link or frame point has it")
