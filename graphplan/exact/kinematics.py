@@ -273,10 +273,7 @@ def _rpr(kin: Kinematics, d: Dyad, branch: int) -> None:
     """Slotted link: the carrier turns about Pc so its guide passes through the slider's point Ps;
     (Ps − Pc)·e^{−iθ_line} = s' + i·e, branch +1 = s' > 0 (Ps ahead of the pivot's foot).
     v: iω·(Ps − Pc) + ṫ·d = v_Ps − v_Pc;  a: iε·(Ps − Pc) + ẗ·d = a_Ps − a_Pc + ω²·(Ps − Pc) − 2iω·ṫ·d."""
-    slider = d.inner.slider
-    carrier = d.b if slider == d.a else d.a
-    outer_s = d.outer_a if slider == d.a else d.outer_b
-    outer_c = d.outer_b if slider == d.a else d.outer_a
+    slider, carrier, outer_s, outer_c = d.block_parts
     ps, pc = outer_s.point, outer_c.point
     xs, vs, as_ = _known(kin, outer_s.other(slider), ps)
     xc, vc, ac = _known(kin, outer_c.other(carrier), pc)

@@ -369,10 +369,7 @@ def _rrp(s: _Solver, d: Dyad) -> list[str]:
 def _rpr(s: _Solver, d: Dyad) -> list[str]:
     """Slotted link: the block's pin force along the guide is −F_s·d; across it, from the group's
     moment about the rocker's pivot; then the block's normal force and the pivot's reaction."""
-    slider = d.inner.slider
-    carrier = d.b if slider == d.a else d.a
-    outer_s = d.outer_a if slider == d.a else d.outer_b
-    outer_c = d.outer_b if slider == d.a else d.outer_a
+    slider, carrier, outer_s, outer_c = d.block_parts
     ps, pc, x_in = s.at(outer_s), s.at(outer_c), s.at(d.inner)
     g = s.guide(d.inner)
     n = 1j * g

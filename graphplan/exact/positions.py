@@ -140,13 +140,11 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
 def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[str]:
     """A slotted link whose block passes close to the rocker's pivot turns violently there
     (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value."""
-    slider = dyad.inner.slider
-    outer_s, outer_c = (dyad.outer_a, dyad.outer_b) if slider == dyad.a else (dyad.outer_b, dyad.outer_a)
+    slider, carrier, outer_s, outer_c = dyad.block_parts
     rho = np.abs(kin.point(outer_s.point)[0] - kin.point(outer_c.point)[0])
     k = int(np.argmin(rho))
     if rho[k] >= 0.05 * np.max(rho):
         return []
-    carrier = dyad.b if slider == dyad.a else dyad.a
     w = float(np.max(np.abs(kin.bodies[carrier].omega)))
     return [f"{dyad.title}: the block {outer_s.point} passes within {rho[k] * 1000:.3g} mm of the pivot "
             f"{outer_c.point} near crank angle {deg(grid[k])}; the slotted link's ω reaches {w:.4g} rad/s"]

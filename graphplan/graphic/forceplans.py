@@ -373,10 +373,7 @@ class _Plans:
             segs = [(d.outer_a.point, d.inner.point)] + ([(d.outer_b.point, d.inner.point)]
                                                          if kind == "RRR" else [])
         elif kind == "RPR":
-            slider = d.inner.slider
-            carrier = d.b if slider == d.a else d.a
-            outer_s = d.outer_a if slider == d.a else d.outer_b
-            outer_c = d.outer_b if slider == d.a else d.outer_a
+            slider, carrier, outer_s, outer_c = d.block_parts
             ps, pc = self.d.pair_at(outer_s), self.d.pair_at(outer_c)
             g = self.d.guide(d.inner)
             n = 1j * g

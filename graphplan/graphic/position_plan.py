@@ -190,10 +190,7 @@ def position_rrp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
 def position_rpr(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     """The rocker's line drawn through its pivot Pc and the block's point Ps (or tangent to the
     circle of the slot's offset about Pc)."""
-    slider = d.inner.slider
-    carrier = d.b if slider == d.a else d.a
-    outer_s = d.outer_a if slider == d.a else d.outer_b
-    outer_c = d.outer_b if slider == d.a else d.outer_a
+    slider, carrier, outer_s, outer_c = d.block_parts
     ps, pc = outer_s.point, outer_c.point
     k = lay.poses[FRAME].k
     Xs = where(sc, lay, outer_s.other(slider), ps)

@@ -116,11 +116,7 @@ def velocity_rrp(plan: VelocityPlan, d: Dyad) -> None:
 
 def rpr_parts(d: Dyad):
     """The slotted link's parts: (block, rocker, the block's outer pair, the rocker's outer pair)."""
-    slider = d.inner.slider
-    carrier = d.b if slider == d.a else d.a
-    outer_s = d.outer_a if slider == d.a else d.outer_b
-    outer_c = d.outer_b if slider == d.a else d.outer_a
-    return slider, carrier, outer_s, outer_c
+    return d.block_parts
 
 
 def velocity_rpr(plan: VelocityPlan, d: Dyad) -> None:

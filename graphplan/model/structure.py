@@ -47,6 +47,15 @@ class Dyad:
         return self.inner.point
 
     @property
+    def block_parts(self) -> tuple[str, str, Pair, Pair]:
+        """A slotted-link (RPR) group's parts: the block, the rocker carrying its guide, the
+        block's outer pair and the rocker's outer pair."""
+        slider = self.inner.slider
+        if slider == self.a:
+            return self.a, self.b, self.outer_a, self.outer_b
+        return self.b, self.a, self.outer_b, self.outer_a
+
+    @property
     def label(self) -> str:
         return f"II({self.numbers[0]}-{self.numbers[1]})"
 
