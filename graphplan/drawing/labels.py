@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from graphplan.graphic.record import LABEL_GAP as GAP, LabelRequest, Primitive, Record, text_width
+from graphplan.graphic.record import LabelRequest, Primitive, Record, text_width
 
 STEPS = 16         # candidate directions around an anchor
 

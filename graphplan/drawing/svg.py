@@ -80,10 +80,7 @@ def _elements(dwg, prim: Primitive, h: float):
         yield dwg.polygon([_xy(p, h) for p in tip], fill="black", stroke="none")
     elif k in ("polyline", "polygon"):
         pts = [_xy(p, h) for p in prim.points]
-        style = _stroke(prim)
-        if prim.filled:
-            style["fill"] = "black"
-        yield (dwg.polygon if k == "polygon" else dwg.polyline)(pts, **style)
+        yield (dwg.polygon if k == "polygon" else dwg.polyline)(pts, **_stroke(prim))
     elif k == "circle":
         yield dwg.circle(_xy(prim.points[0], h), _f(prim.radius), **_stroke(prim))
     elif k == "arc":

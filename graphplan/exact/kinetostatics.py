@@ -126,14 +126,6 @@ class Kinetostatics:
     def mech(self) -> Mechanism:
         return self.st.mech
 
-    def actions(self, link: str) -> list[Action]:
-        """Everything acting on a link: its loads and the reactions of its pairs."""
-        out = [Action(ld.name, ld.at, ld.force, ld.couple) for ld in self.loads if ld.link == link]
-        out += [r.on_body(link) for r in self.reactions.values() if link in (r.on, r.frm)]
-        out.append(Action("M_b", self.kin.point(self.mech.crank.pivot)[0], 0j * self.balancing,
-                          self.balancing if link == self.mech.crank.link else 0 * self.balancing))
-        return out
-
     def power(self) -> Array:
         """Power balance: M_b = −(Σ F·v + Σ M·ω)/ω1."""
         total = sum((ld.power for ld in self.loads), np.zeros_like(self.phi_deg))

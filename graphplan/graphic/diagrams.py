@@ -309,7 +309,6 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     if adaptive:
         turns = refine(st, out, turns, sign, mu_s, L, H1, H2, tolerance, precision)
     x = L * turns / 360.0
-    xm = midpoints(x)
     s_t, v_at_t, a_at_t = exact_motion(st, out, turns)
     _, v_mid_t, a_mid_t = exact_motion(st, out, midpoints(turns))
     truth = {"s": s_t, "v_mid": v_mid_t, "v_at": v_at_t, "a_mid": a_mid_t, "a_at": a_at_t,

@@ -228,8 +228,6 @@ class _Draftsman:
             return 0.0, 0j
         return mm, mm * self.mu_F * vec_mm / abs(vec_mm)
 
-    def force_sum(self, link: str) -> complex:
-        return sum((f.force for f in self.known[link]), 0j)
 
 
 class _Polygon:

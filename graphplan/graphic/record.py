@@ -41,7 +41,6 @@ class Primitive:
     angles: tuple[float, float] = (0.0, 360.0)
     anchor: str = "start"        # text: start, middle, end
     width: float | None = None   # line width override, mm
-    filled: bool = False
 
     @property
     def line_width(self) -> float:

@@ -34,9 +34,6 @@ class Link:
     inertia: float | None = None
     com: str | None = None        # name of the centre-of-mass point
 
-    @property
-    def label(self) -> str:
-        return self.name
 
 
 @dataclass(frozen=True)
@@ -96,12 +93,6 @@ class Mechanism:
     def period(self) -> float:
         """T = 2π/|ω1| (s)."""
         return 2 * math.pi / abs(self.crank.omega)
-
-    def link_by_number(self, number: int) -> Link:
-        for link in self.links.values():
-            if link.number == number:
-                return link
-        raise KeyError(number)
 
     def bodies_of(self, point: str) -> list[str]:
         """Names of the bodies (the frame "0" included) that carry a point."""

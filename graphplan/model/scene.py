@@ -81,7 +81,7 @@ class _Reader:
             raise self.fail(f"{key}.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(allowed))})")
         return value
 
-    def number(self, value: Any, key: str, positive: bool = False, nonzero: bool = False) -> float:
+    def number(self, value: Any, key: str, positive: bool = False) -> float:
         if isinstance(value, bool):
             raise self.fail(key, "must be a number")
         if isinstance(value, (int, float)):
@@ -94,8 +94,6 @@ class _Reader:
             raise self.fail(key, "must be finite")
         if positive and result <= 0:
             raise self.fail(key, f"must be positive, got {result:g}")
-        if nonzero and result == 0:
-            raise self.fail(key, "must not be zero")
         return result
 
     def xy(self, value: Any, key: str) -> complex:

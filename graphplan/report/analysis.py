@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.exact.kinematics import Kinematics
+
 from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
 

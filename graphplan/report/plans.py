@@ -2,8 +2,6 @@
 plans themselves as SVG files in true millimetres."""
 from __future__ import annotations
 
-import sys
-from pathlib import Path
 from typing import Any
 
 from graphplan.graphic.record import Record
