@@ -15,7 +15,7 @@ from scipy.optimize import brentq
 from conftest import ROOT
 from graphplan.cli.main import main
 from graphplan.teach.grading import Row, grade, load_keys, normalise, read_student
-from graphplan.cli.key import Progress
+from graphplan.util.progress import Progress
 from graphplan.teach.keys import make_key, quantities
 from graphplan.exact.positions import study
 from graphplan.model.scene import build, load

@@ -318,14 +318,11 @@ def test_records_have_their_own_origin():
 
 
 def test_labels_do_not_collide():
-    from graphplan.drawing.labels import _overlap
+    from graphplan.drawing.layout import overlapping_texts
     for name in EXAMPLES:
         plans = build_plans(example(name))
         for rec in [velocity_records(plans)[1], acceleration_records(plans)[1], position_record(plans)]:
-            boxes = [it.bounds() for it in rec.items if it.kind == "text"]
-            for i, a in enumerate(boxes):
-                for b in boxes[i + 1:]:
-                    assert _overlap(a, b) == 0, (name, rec.title)
+            assert overlapping_texts(rec) == [], (name, rec.title)
 
 
 # -- the command ------------------------------------------------------------------------------------

@@ -88,7 +88,7 @@ def test_formats_by_suffix(tmp_path):
     doc = ezdxf.readfile(dxf)
     assert not doc.audit().has_errors and doc.units == ezdxf.units.MM
     texts = [e.dxf.text for e in doc.modelspace().query("TEXT")]
-    assert "План положень, μl = 0.002 m/mm" in texts or any("План положень" in t for t in texts)
+    assert any(t.startswith("План положень") for t in texts)
     assert {"frame", "mechanism", "vectors", "labels", "diagrams", "tables"} <= {l.dxf.name for l in doc.layers}
     outlined = s.svg(text_as_paths=True)
     assert "<text" not in outlined and outlined.count("<path") > 100

@@ -14,45 +14,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TextIO
 
+from graphplan.util.progress import Progress
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import write_atomic
 
 SUMMARY_FORMAT = "graphplan-keys/1"
-
-
-class Progress:
-    """A one-line progress bar on stderr: only on a terminal and not with --quiet."""
-
-    def __init__(self, total: int, enabled: bool, stream: TextIO | None = None, width: int = 24):
-        self.total, self.enabled, self.width = total, enabled, width
-        self.stream = stream or sys.stderr
-        self.done_count = 0
-        self.shown = False
-
-    def step(self, label: str) -> None:
-        if not self.enabled:
-            return
-        filled = self.width * self.done_count // max(self.total, 1)
-        bar = "#" * filled + "-" * (self.width - filled)
-        self.stream.write(f"\r[{bar}] {self.done_count}/{self.total} {label[:30]:<30}")
-        self.stream.flush()
-        self.shown = True
-
-    def advance(self) -> None:
-        self.done_count += 1
-
-    def message(self, text: str) -> None:
-        """A diagnostic line (always shown), printed above the bar."""
-        if self.shown:
-            self.stream.write("\r" + " " * (self.width + 45) + "\r")
-        self.stream.write(text + "\n")
-        self.stream.flush()
-
-    def close(self) -> None:
-        if self.enabled and self.shown:
-            self.step("done")
-            self.stream.write("\n")
-            self.stream.flush()
 
 
 def pdf_bytes(svg_text: str) -> bytes:

@@ -1,32 +1,57 @@
-"""A small progress bar on stderr for long batches (keys, bench); silent when stderr is not a terminal."""
+"""One progress bar on stderr for long batches (keys, bench): ``[#####-----] k/total label``, drawn
+only on a terminal (or when asked), with diagnostics printed above it."""
 from __future__ import annotations
 
 import sys
-import time
 from collections.abc import Iterable, Iterator
-from typing import TypeVar
+from typing import TextIO, TypeVar
 
 T = TypeVar("T")
 
 
+class Progress:
+    """A one-line bar: ``step(label)`` redraws it, ``advance()`` counts one item done, ``message``
+    prints a diagnostic line (always) above the bar, ``close()`` ends the line."""
+
+    def __init__(self, total: int, enabled: bool | None = None, stream: TextIO | None = None,
+                 width: int = 24):
+        self.stream = stream or sys.stderr
+        self.enabled = self.stream.isatty() if enabled is None else enabled
+        self.total, self.width = total, width
+        self.done_count = 0
+        self.shown = False
+
+    def step(self, label: str) -> None:
+        if not self.enabled:
+            return
+        filled = self.width * self.done_count // max(self.total, 1)
+        bar = "#" * filled + "-" * (self.width - filled)
+        self.stream.write(f"\r[{bar}] {self.done_count}/{self.total} {label[:30]:<30}")
+        self.stream.flush()
+        self.shown = True
+
+    def advance(self) -> None:
+        self.done_count += 1
+
+    def message(self, text: str) -> None:
+        """A diagnostic line (always shown), printed above the bar."""
+        if self.shown:
+            self.stream.write("\r" + " " * (self.width + 45) + "\r")
+        self.stream.write(text + "\n")
+        self.stream.flush()
+
+    def close(self) -> None:
+        if self.enabled and self.shown:
+            self.step("done")
+            self.stream.write("\n")
+            self.stream.flush()
+
+
 def progress(items: Iterable[T], total: int, label: str, enabled: bool | None = None) -> Iterator[T]:
-    """Yield the items while drawing ``label [#####.....] k/total`` on stderr."""
-    stream = sys.stderr
-    show = stream.isatty() if enabled is None else enabled
-    start = time.perf_counter()
+    """Yield the items while the bar counts them (``label`` and the item's number)."""
+    bar = Progress(total, enabled)
     for k, item in enumerate(items):
-        if show:
-            _draw(stream, label, k, total, start)
+        bar.step(f"{label} {k + 1}")
         yield item
-    if show:
-        _draw(stream, label, total, total, start)
-        stream.write("\n")
-        stream.flush()
-
-
-def _draw(stream, label: str, k: int, total: int, start: float) -> None:
-    width = 30
-    done = int(width * k / max(total, 1))
-    elapsed = time.perf_counter() - start
-    stream.write(f"\r{label} [{'#' * done}{'.' * (width - done)}] {k}/{total} {elapsed:5.1f} s")
-    stream.flush()
+        bar.advance()
+    bar.close()
