@@ -301,7 +301,7 @@ def diagrams(scene=None, point: str | None = None, divisions: int | None = None,
     ``L``, ``H1``, ``H2`` (mm) default to the scene's ``[diagrams]`` table."""
     from graphplan.graphic.diagrams import chord_diagrams
     st = _study_of(scene)
-    given = st.mech.diagram
+    given = st.mech.task.diagram
     for key, name in (("L", "L_mm"), ("H1", "H1_mm"), ("H2", "H2_mm")):
         if key not in options and name in given:
             options[key] = given[name]

@@ -25,7 +25,7 @@ FAST = settings(max_examples=15, deadline=None, suppress_health_check=[HealthChe
 
 
 def every_position(st, count=None):
-    n = count or st.mech.count
+    n = count or st.mech.task.count
     return [f"#{k}" for k in range(n)]
 
 

@@ -22,7 +22,7 @@ def cmd_diagrams(args) -> int:
     from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.report.diagrams import diagrams_json, diagrams_table
     st = load_study(args.scene)
-    scene = st.mech.diagram          # the scene's [diagrams] table gives the defaults
+    scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
     d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
                        L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),

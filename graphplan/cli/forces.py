@@ -48,7 +48,7 @@ def cmd_forces(args: argparse.Namespace) -> int:
         write_svg(fp, args.svg)
     if args.charts:
         from graphplan.drawing.charts import turn, write_charts
-        write_charts(turn(st), args.charts, st.mech.meta.get("title_en", st.mech.title))
+        write_charts(turn(st), args.charts, st.mech.task.meta.get("title_en", st.mech.title))
     sys.stdout.write(dumps(forces_json(fp)) if args.json else forces_table(fp))
     return 0
 

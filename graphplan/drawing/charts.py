@@ -42,7 +42,7 @@ class Turn:
 def turn(st: Study, samples: int = SAMPLES) -> Turn:
     """Kinetostatics at ``samples`` crank angles from position 0 (every 1° by default)."""
     ks = full_turn(st, samples)
-    return Turn(ks, np.arange(samples) * 360.0 / samples, st.mech.count)
+    return Turn(ks, np.arange(samples) * 360.0 / samples, st.mech.task.count)
 
 
 def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:

@@ -438,8 +438,8 @@ def analyse(st: Study, phi_deg: Array | list[float] | float) -> Kinetostatics:
 def at_scene_angle(st: Study) -> float:
     """The crank angle of the force analysis (deg from +x): the scene's positions.force_phi_deg
     (degrees of crank turn from position 0), else position 1."""
-    if st.mech.force_phi is not None:
-        return float((st.phi0 + np.sign(st.mech.omega1) * st.mech.force_phi) % 360.0)
+    if st.mech.task.force_phi is not None:
+        return float((st.phi0 + np.sign(st.mech.omega1) * st.mech.task.force_phi) % 360.0)
     return float(st.positions()[1])
 
 

@@ -52,7 +52,7 @@ class Study:
 
     def positions(self, count: int | None = None) -> np.ndarray:
         """Crank angles of positions 0 … N−1, in the order the crank passes them (deg, [0, 360))."""
-        n = count or self.mech.count
+        n = count or self.mech.task.count
         step = 360.0 / n * np.sign(self.mech.omega1)
         return np.mod(self.phi0 + step * np.arange(n), 360.0)
 

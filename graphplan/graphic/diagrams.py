@@ -292,7 +292,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
         raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
     mech = st.mech
     out, name, symbols, sub, unit = resolve_output(st, point)
-    turns = division_turns(mech.count if divisions is None else divisions)
+    turns = division_turns(mech.task.count if divisions is None else divisions)
 
     cycle_turn = np.arange(CYCLE + 1) * 360.0 / CYCLE
     s_c, v_c, a_c = exact_motion(st, out, cycle_turn)

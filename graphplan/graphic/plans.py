@@ -89,7 +89,7 @@ def resolve_accel(st: Study, phis: np.ndarray, accel: Sequence[str | int | float
                   ) -> tuple[list[int], list[float]]:
     """Positions with acceleration plans: indices (an int, or "#3") and crank angles (a float, or
     "200" degrees; an angle on a position is that position). Default: the scene's, else position 1."""
-    specs = list(accel) if accel else (list(st.mech.accel) or [1])
+    specs = list(accel) if accel else (list(st.mech.task.accel) or [1])
     n = len(phis)
     indices: list[int] = []
     extra: list[float] = []
@@ -169,7 +169,7 @@ def build_plans(st: Study, count: int | None = None, accel: Sequence[str | int |
     a ruler of ``precision`` mm (0 = exact)."""
     if not (isinstance(precision, (int, float)) and math.isfinite(precision) and 0 <= precision <= 10):
         raise GraphplanError(f"--precision must be from 0 to 10 mm, got {precision!r}")
-    n = count or st.mech.count
+    n = count or st.mech.task.count
     if not 2 <= n <= 3600:
         raise GraphplanError(f"--positions must be from 2 to 3600, got {n}")
     targets = targets or Targets()

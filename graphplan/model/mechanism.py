@@ -62,6 +62,17 @@ class Force:
     profile: tuple[tuple[float, float], ...] = ()
 
 
+@dataclass(frozen=True)
+class Task:
+    """What the exercise asks of the mechanism — not its physics: how many positions, where the
+    acceleration plans and the force analysis are, the diagrams' settings and the title block."""
+    count: int = 12                                   # positions 0 … N−1
+    accel: tuple[str | int | float, ...] = ()          # acceleration plans: indices, "#3", angles
+    force_phi: float | None = None                    # the force analysis, deg of turn from position 0
+    diagram: dict[str, object] = field(default_factory=dict)  # [diagrams]: L_mm, H1_mm, H2_mm, divisions, point
+    meta: dict[str, str] = field(default_factory=dict)        # title_en, designation, sheet.* fields
+
+
 @dataclass
 class Mechanism:
     """A planar lever mechanism as its kinematic scheme shows it."""
@@ -73,16 +84,12 @@ class Mechanism:
     branches: dict[str, int] = field(default_factory=dict)
     output: str | None = None
     start: str | float = "max"
-    count: int = 12
-    accel: tuple[str | int | float, ...] = ()
-    force_phi: float | None = None  # crank angle of the force analysis, deg from position 0
     working_stroke: str = "slow"    # which stroke of the output is the working one: slow, fast, to_max, to_min
     forces: tuple[Force, ...] = ()
     g: float = 9.81
     params: dict[str, float] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)
-    meta: dict[str, str] = field(default_factory=dict)
-    diagram: dict[str, object] = field(default_factory=dict)  # [diagrams]: L_mm, H1_mm, H2_mm, divisions, point
+    task: Task = field(default_factory=lambda: Task())
     source: str = "<scene>"
 
     @property

@@ -15,7 +15,7 @@ from typing import Any
 from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.util.files import read_text
 from graphplan.model.expressions import evaluate
-from graphplan.model.mechanism import FRAME, Crank, Force, Guide, Link, Mechanism
+from graphplan.model.mechanism import FRAME, Crank, Force, Guide, Link, Mechanism, Task
 
 BUILTIN = "crank_slider.toml"
 
@@ -147,15 +147,15 @@ class _Reader:
             crank=crank, branches=self.read_branches(data.get("branch", {})),
             output=self.name(positions["output"], "positions.output") if "output" in positions else None,
             start=self.read_start(positions.get("start", "max")),
-            count=self.read_count(positions.get("count", 12)),
-            accel=self.read_accel(positions.get("accel", [])),
-            force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
-                       if "force_phi_deg" in positions else None),
             working_stroke=self.read_working(positions.get("working_stroke", "slow")),
             forces=self.read_forces(data.get("force", [])),
             g=self.number(loads.get("g", 9.81), "loads.g"),
             params=dict(self.names), derived=derived,
-            meta=self.read_meta(data), diagram=self.read_diagram(data.get("diagrams", {})),
+            task=Task(count=self.read_count(positions.get("count", 12)),
+                      accel=self.read_accel(positions.get("accel", [])),
+                      force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
+                                 if "force_phi_deg" in positions else None),
+                      diagram=self.read_diagram(data.get("diagrams", {})), meta=self.read_meta(data)),
             source=self.where)
         self.check_names(mech)
         return mech

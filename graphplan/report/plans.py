@@ -120,7 +120,7 @@ def plans_table(plans: Plans, lang: str = "en") -> str:
     accelerations at the plan positions, ω and ε, and the warnings."""
     t = TEXT.get(lang, TEXT["en"])
     st = plans.study
-    title = st.mech.meta.get("title_en", st.mech.title) if lang == "en" else st.mech.title
+    title = st.mech.task.meta.get("title_en", st.mech.title) if lang == "en" else st.mech.title
     lines = [f"{title} — {t['title']}",
              f"{t['structure']}: {st.structure.formula};  {t['ruler']} {plans.precision:g} mm",
              "; ".join(format_scale(k, v) for k, v in plans.scales.items()), ""]

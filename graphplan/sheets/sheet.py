@@ -134,7 +134,7 @@ def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
 
 
 def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1) -> dict[str, str]:
-    meta = st.mech.meta
+    meta = st.mech.task.meta
     title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
         meta.get("title", st.mech.title)
     return {"designation": meta.get("designation", ""), "title": title,
@@ -235,8 +235,8 @@ def kinematics_blocks(st: Study, args: Options, k: float,
     plans = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
                         targets=Targets().scaled(k))
     doc = plans_json(plans)
-    dg = st.mech.diagram
-    diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.count,
+    dg = st.mech.task.diagram
+    diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.task.count,
                           L=float(dg.get("L_mm", 240.0)) * k, H1=float(dg.get("H1_mm", 30.0)),
                           H2=float(dg.get("H2_mm", 30.0)), precision=args.precision, lang=lang, height=70.0 * k)
     state = {"plans": plans}

@@ -189,8 +189,8 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
     the mechanism and search other crank angles."""
     mech = st.mech
     qs = quantities(st)
-    count = mech.count
-    accel = sorted(set(mech.accel))
+    count = mech.task.count
+    accel = sorted(set(mech.task.accel))
     for p in accel:
         if p >= count:
             raise SceneError(f"positions.accel: position {p} does not exist ({count} positions, 0–{count - 1})",
@@ -231,8 +231,8 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
         "student": student,
         "base": base,
         "overrides": dict(overrides or {}),
-        "title": mech.meta.get("title", mech.title),
-        "title_en": mech.meta.get("title_en", ""),
+        "title": mech.task.meta.get("title", mech.title),
+        "title_en": mech.task.meta.get("title_en", ""),
         "omega1": mech.omega1,
         "epsilon1": mech.crank.epsilon,
         "period": period,
