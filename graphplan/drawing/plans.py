@@ -10,6 +10,7 @@ from graphplan.graphic.record import Record
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
+from graphplan.graphic.position_plan import Arc
 
 ARC_HALF = 5.0       # mm of arc drawn each side of a construction point (a "засічка")
 BLOCK = (9.0, 5.0)   # slider block drawn on the thick positions, mm
@@ -122,13 +123,12 @@ def where_frame(sc: Scheme, lay: Layout, p: complex) -> complex:
 def draw_construction(rec: Record, lay: Layout) -> None:
     """The compass arcs that found each group's point (a short arc each side of it)."""
     for mark in lay.drawn:
-        if mark[0] != "arc":
+        if not isinstance(mark, Arc):
             continue
-        _, centre, radius, at, group = mark
-        mid = math.degrees(cmath.phase(at - centre))
-        half = math.degrees(ARC_HALF / radius) if radius > 0 else 0.0
-        rec.arc(_pt(centre), radius, mid - half, mid + half, role="arc", layer="construction",
-                step=f"position {lay.index if lay.index is not None else lay.key}: {group} arcs")
+        mid = math.degrees(cmath.phase(mark.at - mark.centre))
+        half = math.degrees(ARC_HALF / mark.radius) if mark.radius > 0 else 0.0
+        rec.arc(_pt(mark.centre), mark.radius, mid - half, mid + half, role="arc", layer="construction",
+                step=f"position {lay.index if lay.index is not None else lay.key}: {mark.group} arcs")
 
 
 def catmull_rom(points: list[complex], closed: bool = True, per: int = 12) -> list[complex]:

@@ -201,10 +201,10 @@ def build_plans(st: Study, count: int | None = None, accel: Sequence[str | int |
             for d in st.structure.dyads:
                 acc.group(d)
             acc.finish()
-        warnings = [PlanWarning("position", g, kind, angle,
-                                f"position plan, {g}: {what} at {angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
-                                + ("nearly tangent" if kind == "arcs" else "nearly parallel"))
-                    for g, what, angle, kind in lay.angles if angle < SMALL_ANGLE_DEG]
+        warnings = [PlanWarning("position", c.group, c.kind, c.angle,
+                                f"position plan, {c.group}: {c.what} at {c.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
+                                + ("nearly tangent" if c.kind == "arcs" else "nearly parallel"))
+                    for c in lay.angles if c.angle < SMALL_ANGLE_DEG]
         warnings += vel.warnings + (acc.warnings if acc else [])
         results.append(PositionPlans(key, index, float(phi), lay, vel, acc, warnings))
     extremes = [construct_position(sc, float(e), ml, -1 - j) for j, e in enumerate(st.extremes)]

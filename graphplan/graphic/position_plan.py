@@ -49,6 +49,36 @@ class Image:
         return Image(X0, p0, (p1 - p0) / (X1 - X0))
 
 
+@dataclass(frozen=True)
+class Arc:
+    """A compass arc (засічка): about ``centre`` with ``radius`` (mm), crossing at ``at``."""
+    centre: complex
+    radius: float
+    at: complex
+    group: str
+
+
+@dataclass(frozen=True)
+class Line:
+    """A guide (``kind`` "guide") or the rocker's line ("rocker") drawn through ``through`` along
+    ``direction``, meeting the point found at ``at``; ``offset`` of the rocker's slot (mm)."""
+    kind: str
+    through: complex
+    direction: complex
+    at: complex
+    group: str
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
+class Crossing:
+    """The angle at which a construction's two arcs or lines meet (small = ill-conditioned)."""
+    group: str
+    what: str
+    angle: float   # degrees
+    kind: str      # "arcs" or "lines"
+
+
 @dataclass
 class Layout:
     """One position of the mechanism on the position plan."""
@@ -56,8 +86,8 @@ class Layout:
     index: int | None
     phi: float
     poses: dict[str, Pose]
-    angles: list[tuple[str, str, float, str]] = field(default_factory=list)  # (group, what, deg, kind)
-    drawn: list[tuple] = field(default_factory=list)                    # construction marks
+    angles: list[Crossing] = field(default_factory=list)    # how well each construction is conditioned
+    drawn: list[Arc | Line] = field(default_factory=list)    # the construction's marks
 
 
 # -- the mechanism as the draftsman sees it ------------------------------------------------------
@@ -165,9 +195,9 @@ def position_rrr(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     C = circle_circle(X1, la, X3, lb, branch)
     lay.poses[d.a] = pose_from_two(sc, d.a, p1, X1, c, C, k)
     lay.poses[d.b] = pose_from_two(sc, d.b, p3, X3, c, C, k)
-    lay.angles.append((d.label, f"the arcs about {p1} and {p3} meeting at {c}", crossing_angle(C - X1, C - X3),
+    lay.angles.append(Crossing(d.label, f"the arcs about {p1} and {p3} meeting at {c}", crossing_angle(C - X1, C - X3),
                        "arcs"))
-    lay.drawn += [("arc", X1, la, C, d.label), ("arc", X3, lb, C, d.label)]
+    lay.drawn += [Arc(X1, la, C, d.label), Arc(X3, lb, C, d.label)]
 
 
 def position_rrp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
@@ -182,9 +212,9 @@ def position_rrp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     guide = sc.mech.guides[d.outer_b.guide]
     lay.poses[d.b] = Pose(C, sc.local(d.b, c), lay.poses[guide.body].theta + guide.angle, k)
     # the arc crosses the line at 90° − (angle between the radius and the line)
-    lay.angles.append((d.label, f"the arc about {p1} meeting the guide at {c}",
+    lay.angles.append(Crossing(d.label, f"the arc about {p1} meeting the guide at {c}",
                        90.0 - crossing_angle(C - X1, g), "arcs"))
-    lay.drawn += [("arc", X1, la, C, d.label), ("guide", G, g, C, d.label)]
+    lay.drawn += [Arc(X1, la, C, d.label), Line("guide", G, g, C, d.label)]
 
 
 def position_rpr(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
@@ -201,7 +231,7 @@ def position_rpr(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     th_line = line_through_pivot(Xs, Xc, offset, branch)
     lay.poses[carrier] = Pose(Xc, sc.local(carrier, pc), th_line - guide.angle, k)
     lay.poses[slider] = Pose(Xs, sc.local(slider, ps), th_line, k)
-    lay.drawn += [("rocker", Xc, cmath.exp(1j * th_line), Xs, d.label, offset)]
+    lay.drawn += [Line("rocker", Xc, cmath.exp(1j * th_line), Xs, d.label, offset)]
 
 
 def position_prp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
@@ -214,8 +244,8 @@ def position_prp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     for link, pair in ((d.a, d.outer_a), (d.b, d.outer_b)):
         guide = sc.mech.guides[pair.guide]
         lay.poses[link] = Pose(C, sc.local(link, c), lay.poses[guide.body].theta + guide.angle, k)
-    lay.angles.append((d.label, f"the guides crossing at {c}", crossing_angle(g1, g2), "lines"))
-    lay.drawn += [("guide", G1, g1, C, d.label), ("guide", G2, g2, C, d.label)]
+    lay.angles.append(Crossing(d.label, f"the guides crossing at {c}", crossing_angle(g1, g2), "lines"))
+    lay.drawn += [Line("guide", G1, g1, C, d.label), Line("guide", G2, g2, C, d.label)]
 
 
 def position_rpp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
@@ -233,9 +263,9 @@ def position_rpp(sc: Scheme, lay: Layout, d: Dyad, branch: int) -> None:
     Y = line_line(G, g, XA - q, dd)
     lay.poses[d.b] = Pose(Y, sc.local(d.b, ref), th_b, k)
     lay.poses[d.a] = Pose(XA, sc.local(d.a, pa), th_b + slot.angle, k)
-    lay.angles.append((d.label, f"the slot through {pa} crossing the yoke's guide", crossing_angle(g, dd),
+    lay.angles.append(Crossing(d.label, f"the slot through {pa} crossing the yoke's guide", crossing_angle(g, dd),
                        "lines"))
-    lay.drawn += [("guide", G, g, Y, d.label), ("guide", XA - q, dd, XA, d.label)]
+    lay.drawn += [Line("guide", G, g, Y, d.label), Line("guide", XA - q, dd, XA, d.label)]
 
 
 POSITION_STEPS = {"RRR": position_rrr, "RRP": position_rrp, "RPR": position_rpr,
