@@ -38,9 +38,11 @@ def integrate_by_chords(x: np.ndarray, y_mid: np.ndarray, pole: float, y0: float
     return y0 + np.concatenate(([0.0], np.cumsum(steps)))
 
 
-def periodic_spline(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
+def spline_moments(x: np.ndarray, y: np.ndarray, period: float
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The periodic cubic spline through (x_i, y_i), i = 0 … n−1, of the given period (n ≥ 3,
-    x increasing, x_{n−1} < x_0 + period). Second derivatives M from the cyclic system
+    x increasing, x_{n−1} < x_0 + period): its knots and ordinates closed by one period (n + 1),
+    the knot spacings h (n) and the second derivatives M (n + 1) from the cyclic system
     h_{i−1}M_{i−1} + 2(h_{i−1} + h_i)M_i + h_iM_{i+1} = 6(d_i − d_{i−1}),  d_i = (y_{i+1} − y_i)/h_i."""
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
@@ -58,18 +60,42 @@ def periodic_spline(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np
     A[idx, idx] += 2 * (h[prev] + h)
     A[idx, (idx + 1) % n] += h
     M = np.linalg.solve(A, 6 * (d - d[prev]))
-    Ms = np.append(M, M[0])
+    return xs, ys, h, np.append(M, M[0])
+
+
+def _piece(xs: np.ndarray, period: float, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The query abscissae brought into the first period and the index of the piece holding each."""
+    u = xs[0] + np.mod(np.asarray(q, dtype=float) - xs[0], period)
+    return u, np.clip(np.searchsorted(xs, u, side="right") - 1, 0, len(xs) - 2)
+
+
+def periodic_spline(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
+    """The periodic cubic spline through (x_i, y_i) (see ``spline_moments``): the French curve."""
+    xs, ys, h, Ms = spline_moments(x, y, period)
 
     def spline(q: np.ndarray) -> np.ndarray:
-        q = np.asarray(q, dtype=float)
-        u = x[0] + np.mod(q - x[0], period)
-        i = np.clip(np.searchsorted(xs, u, side="right") - 1, 0, n - 1)
+        u, i = _piece(xs, period, q)
         hi = h[i]
         a, b = xs[i + 1] - u, u - xs[i]
         return (Ms[i] * a ** 3 + Ms[i + 1] * b ** 3) / (6 * hi) \
             + (ys[i] / hi - Ms[i] * hi / 6) * a + (ys[i + 1] / hi - Ms[i + 1] * hi / 6) * b
 
     return spline
+
+
+def periodic_spline_slope(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
+    """The slope S'(q) of the same periodic spline: on the piece [x_i, x_{i+1}], with a = x_{i+1} − q,
+    b = q − x_i, S' = (M_{i+1}·b² − M_i·a²)/(2h_i) + (y_{i+1} − y_i)/h_i − (M_{i+1} − M_i)·h_i/6."""
+    xs, ys, h, Ms = spline_moments(x, y, period)
+
+    def slope(q: np.ndarray) -> np.ndarray:
+        u, i = _piece(xs, period, q)
+        hi = h[i]
+        a, b = xs[i + 1] - u, u - xs[i]
+        return (Ms[i + 1] * b ** 2 - Ms[i] * a ** 2) / (2 * hi) + (ys[i + 1] - ys[i]) / hi \
+            - (Ms[i + 1] - Ms[i]) * hi / 6
+
+    return slope
 
 
 def divided_differences(x: np.ndarray, y: np.ndarray, order: int, period: float) -> np.ndarray:

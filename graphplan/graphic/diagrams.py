@@ -25,6 +25,9 @@ import numpy as np
 
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
+from graphplan.graphic.correction import area_correction
+from graphplan.graphic.tangents import (ANGLE_ERROR_DEG, MAX_ANGLE_ERROR_DEG, SEED, TangentReading,
+                                        construct_tangents)
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.positions import Output, Study
 
@@ -37,6 +40,7 @@ MEANINGFUL = 0.10       # percent errors are judged against 5 % where |analytic|
 CYCLE = 720             # samples of the exact cycle for maxima and the drawing's sign
 MAX_DIVISIONS = 720
 REFINE_LEVELS = 3       # the adaptive mode splits an interval at most into 2³ parts
+METHODS = ("chords", "tangents")
 
 
 @dataclass
@@ -55,16 +59,21 @@ class Reading:
 
 
 def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
-              precision: float) -> Reading:
-    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm."""
+              precision: float, correct: bool = False) -> Reading:
+    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm. ``correct``: the
+    lab's area correction of each French curve (graphic.correction), v and a then read on it."""
     xm = midpoints(x)
     s = read(s_mm, precision)
     v_ray = pole_heights(x, s, H1)
     v = read(v_ray, precision)
+    if correct:
+        v = read(area_correction(x, v, L, precision).points, precision)
     v_curve = periodic_spline(xm, v, L)
     v_at = read(v_curve(x), precision)
     a_ray = pole_heights(x, v_at, H2)
     a = read(a_ray, precision)
+    if correct:
+        a = read(area_correction(x, a, L, precision).points, precision)
     a_at = read(periodic_spline(xm, a, L)(x), precision)
     # graphical integration, the reverse construction: a → v from v(0), then v → s from s(0)
     v_int = integrate_by_chords(x, a, H2, v_at[0])
@@ -76,7 +85,11 @@ def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
 
 @dataclass
 class Diagrams:
-    """The three diagrams of one output with their pole constructions, readings and errors."""
+    """The three diagrams of one output with their pole constructions, readings and errors.
+
+    ``method`` is "chords" or "tangents". The method's own ordinates of v and a (the keys
+    ``v_mid``/``a_mid``, ``x_mid``, ``phi_mid``, ``t_mid``) lie where it yields them: the middles of
+    the intervals for chords, the division ordinates 0 … n−1 for tangents."""
     study: Study
     output: Output
     point: str
@@ -99,14 +112,17 @@ class Diagrams:
     x: np.ndarray                   # division ordinates' abscissae, mm (n + 1: 0 … L)
     phi: np.ndarray                 # crank angles there, deg
     phi_mid: np.ndarray             # crank angles at the middles
-    drawn: Reading                  # at the drafting precision
-    exact: Reading                  # the same construction, precision 0
+    drawn: Reading | TangentReading  # at the drafting precision (and the tangents' angular error)
+    exact: Reading | TangentReading  # the same construction, precision 0 (and exact tangents)
     truth: dict[str, np.ndarray]    # analytic s (n + 1), v_mid, a_mid (n), v_at, a_at (n + 1), signed
     maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
     chosen: tuple[int, ...]         # the positions of the lab's table
     estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
     warnings: list[dict[str, Any]] = field(default_factory=list)
     lang: str = "uk"
+    method: str = "chords"
+    angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
+    correct: bool = False           # chords: the lab's area correction applied
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -115,7 +131,8 @@ class Diagrams:
 
     @property
     def x_mid(self) -> np.ndarray:
-        return midpoints(self.x)
+        """Abscissae of the method's own v and a ordinates (middles, or division ordinates)."""
+        return self.x[:-1] if self.method == "tangents" else midpoints(self.x)
 
     @property
     def t(self) -> np.ndarray:
@@ -276,14 +293,23 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                    L: float = 240.0, H1: float = 30.0, H2: float = 30.0, precision: float = 0.5,
                    adaptive: bool = False, height: float | None = None, *,
                    tolerance: float = 0.5, chosen: Sequence[int] | None = None,
-                   lang: str = "uk") -> Diagrams:
+                   lang: str = "uk", method: str = "chords", angle_error_deg: float = ANGLE_ERROR_DEG,
+                   correct: bool = False, seed: int = SEED) -> Diagrams:
     """The s, v, a diagrams of the output (or ``point``: a sliding point or a link) by chords.
 
     ``divisions``: a number of equal intervals (default: the scene's positions count) or the crank
     turns from position 0 (deg) of non-uniform division ordinates. ``adaptive`` splits intervals where
     the chord error estimate exceeds ``tolerance`` mm. ``height``: fit the s diagram to this many mm.
-    ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn)."""
+    ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn).
+    ``method``: "chords" (``correct``: the lab's area correction) or "tangents" (each tangent off by
+    up to ``angle_error_deg``, deterministic from ``seed``; see graphic.tangents)."""
     _check_positive(L=L, H1=H1, H2=H2, tolerance=tolerance)
+    if method not in METHODS:
+        raise GraphplanError(f"--method must be chords or tangents, got {method!r}")
+    if not (0 <= angle_error_deg <= MAX_ANGLE_ERROR_DEG):
+        raise GraphplanError(f"--angle-error must be from 0 to {MAX_ANGLE_ERROR_DEG:g} degrees, got {angle_error_deg}")
+    if correct and method != "chords":
+        raise GraphplanError("--correct is the chords' area correction; the method of tangents has none")
     if height is not None:
         _check_positive(height=height)
     if not (precision >= 0 and math.isfinite(precision)) or precision > 10:
@@ -310,14 +336,19 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
         turns = refine(st, out, turns, sign, mu_s, L, H1, H2, tolerance, precision)
     x = L * turns / 360.0
     s_t, v_at_t, a_at_t = exact_motion(st, out, turns)
-    _, v_mid_t, a_mid_t = exact_motion(st, out, midpoints(turns))
+    own = turns[:-1] if method == "tangents" else midpoints(turns)   # where the method yields v, a
+    _, v_mid_t, a_mid_t = exact_motion(st, out, own)
     truth = {"s": s_t, "v_mid": v_mid_t, "v_at": v_at_t, "a_mid": a_mid_t, "a_at": a_at_t,
              "s_int": s_t, "v_int": v_at_t}
     maxima = {"s": float(np.max(np.abs(s_c))), "v": float(np.max(np.abs(v_c))),
               "a": float(np.max(np.abs(a_c)))}
     s_mm = sign * s_t / mu_s
-    drawn = construct(x, s_mm, L, H1, H2, precision)
-    exact = construct(x, s_mm, L, H1, H2, 0.0)
+    if method == "tangents":
+        drawn = construct_tangents(x, s_mm, L, H1, H2, precision, angle_error_deg, seed)
+        exact = construct_tangents(x, s_mm, L, H1, H2, 0.0, 0.0, seed)
+    else:
+        drawn = construct(x, s_mm, L, H1, H2, precision, correct)
+        exact = construct(x, s_mm, L, H1, H2, 0.0, correct)
 
     on_grid = {round(float(u), 9): k for k, u in enumerate(uniform[:-1])}
     position = [on_grid.get(round(float(u), 9)) for u in turns[:-1]] + [0]
@@ -333,8 +364,9 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     e_v, e_a = chord_error_estimate(x[:-1], s_mm[:-1] - (s_mm[-1] - s_mm[0]) * x[:-1] / L, L)
     d = Diagrams(st, out, name, symbols, sub, unit, sign, float(L), float(H1), float(H2), float(precision),
                  bool(adaptive), float(tolerance), mu_s, mu_t, mu_v, mu_a, turns, position, x,
-                 crank_angle(st, turns), crank_angle(st, midpoints(turns)), drawn, exact, truth, maxima,
-                 chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang)
+                 crank_angle(st, turns), crank_angle(st, own), drawn, exact, truth, maxima,
+                 chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
+                 angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct))
     d.warnings = diagnose(d)
     return d
 
