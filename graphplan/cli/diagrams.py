@@ -20,6 +20,7 @@ def _divisions_arg(text: str) -> int | list[float]:
 def cmd_diagrams(args) -> int:
     from graphplan.drawing.diagrams import diagrams_svg
     from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.graphic.tangents import ANGLE_ERROR_DEG
     from graphplan.report.diagrams import diagrams_json, diagrams_table
     st = load_study(args.scene)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
@@ -28,7 +29,9 @@ def cmd_diagrams(args) -> int:
                        L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
                        H2=pick(args.h2, "H2_mm", 30.0),
                        precision=args.precision, adaptive=args.adaptive, height=args.height,
-                       tolerance=args.tolerance, chosen=args.at, lang=args.lang)
+                       tolerance=args.tolerance, chosen=args.at, lang=args.lang,
+                       method=pick(args.method, "method", "chords"), angle_error_deg=ANGLE_ERROR_DEG if args.angle_error is None else args.angle_error,
+                       correct=args.correct)
     if args.svg:
         write_atomic(args.svg, diagrams_svg(d))
     if args.json:
@@ -59,6 +62,13 @@ def register(sub) -> None:
                    help="split intervals where the chord error estimate is large (extrema, sharp bends)")
     p.add_argument("--tolerance", type=float, default=0.5, metavar="MM",
                    help="the adaptive mode's chord error estimate limit on the v and a diagrams (0.5)")
+    p.add_argument("--method", choices=("chords", "tangents"),
+                   help="graphical differentiation: chords (the scene's, else chords) or tangents by the mirror")
+    p.add_argument("--angle-error", type=float, metavar="DEG",
+                   help="tangents: each tangent's direction off by up to ± this many degrees (default: the "
+                        "mirror's bound, docs/diagrams.md; 0 = exact tangents; deterministic)")
+    p.add_argument("--correct", action="store_true",
+                   help="chords: the lab's area correction of the v and a curves (off: the plain method)")
     p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
     p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
     p.add_argument("--lang", choices=("uk", "en"), default="uk", help="captions and table language (uk)")

@@ -23,18 +23,20 @@ TEXT = 3.5             # lettering of the symbols and scales
 
 
 WORDS = {
-    "uk": {"title": "Кінематичні діаграми {what} методом хорд", "point": "точки", "link": "ланки",
+    "uk": {"title": "Кінематичні діаграми {what} {how}", "point": "точки", "link": "ланки",
            "scales": "Масштаби", "at": "На ординатах поділу (крива, прочитана на ординатах)",
-           "mid": "Ординати методу хорд (посередині інтервалів)", "chosen": "У двох заданих положеннях",
+           "mid": "Ординати методу хорд (посередині інтервалів)",
+           "mid_t": "Ординати методу дотичних (на ординатах поділу)", "chosen": "У двох заданих положеннях",
            "no": "№", "int": "інт.", "graph": "графічно", "exact": "точно", "err": "δ, %",
            "integ": "Графічне інтегрування (зворотна побудова)", "warn": "Попередження",
            "v_from_a": "v з a", "s_from_a": "s з a через v", "s_from_v": "s з ординат v",
            "dev": "найбільше відхилення {mm:.2f} мм ({pct:.2f} % від максимуму), незамикання {cl:+.2f} мм",
            "m": "м", "s": "с", "mm": "мм", "rad": "рад", "none": "немає",
            "period": "T = 2π/ω1 = {T:.4g} с на L = {L:g} мм"},
-    "en": {"title": "Kinematic diagrams of {what} by the method of chords", "point": "point", "link": "link",
+    "en": {"title": "Kinematic diagrams of {what} {how}", "point": "point", "link": "link",
            "scales": "Scales", "at": "At the division ordinates (the curves read there)",
-           "mid": "The chords' ordinates (at the middles of the intervals)", "chosen": "At the two chosen positions",
+           "mid": "The chords' ordinates (at the middles of the intervals)",
+           "mid_t": "The tangents' ordinates (at the division ordinates)", "chosen": "At the two chosen positions",
            "no": "No", "int": "int.", "graph": "graph.", "exact": "exact", "err": "δ, %",
            "integ": "Graphical integration (the reverse construction)", "warn": "Warnings",
            "v_from_a": "v from a", "s_from_a": "s from a through v", "s_from_v": "s from the v ordinates",
@@ -42,6 +44,18 @@ WORDS = {
            "m": "m", "s": "s", "mm": "mm", "rad": "rad", "none": "none",
            "period": "T = 2π/ω1 = {T:.4g} s over L = {L:g} mm"},
 }
+
+
+HOW = {"uk": {"chords": "методом хорд", "corrected": "методом хорд з корекцією площ",
+              "tangents": "методом дотичних (дзеркало, ±{e:g}°)"},
+       "en": {"chords": "by the method of chords", "corrected": "by the method of chords with the area correction",
+              "tangents": "by the method of tangents (mirror, ±{e:g}°)"}}
+
+
+def method_words(d: Diagrams, lang: str) -> str:
+    """Which graphical differentiation drew the diagrams, as the title and the sheet's notes say it."""
+    key = "corrected" if d.correct else d.method
+    return HOW[lang][key].format(e=d.angle_error_deg)
 
 
 def units(d: Diagrams, lang: str) -> tuple[str, str, str]:
@@ -117,7 +131,8 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 
     s_sym, v_sym, a_sym = d.symbols
     what = f"{d.point}"
-    rec = Record(title=f"{w['title'].format(what=(w['point'] if d.output.kind == 'slide' else w['link']) + ' ' + what)}",
+    rec = Record(title=w['title'].format(what=(w['point'] if d.output.kind == 'slide' else w['link']) + ' ' + what,
+                                         how=method_words(d, lang)),
                  scales={"mu_s": d.mu_s, "mu_t": d.mu_t, "mu_v": d.mu_v, "mu_a": d.mu_a,
                          "H1_mm": d.H1, "H2_mm": d.H2, "L_mm": d.L})
     y_s = 0.0
@@ -131,9 +146,13 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     # -- s(t) ------------------------------------------------------------------------------------
     _axes(rec, y_s, s_lo, s_hi, -3.0, L, s_sym, d.sub, "s(t)")
     _ordinates(rec, x, y_s, s_lo, s_hi, "s(t)")
-    for k in range(n):
-        rec.segment((x[k], y_s + r.s[k]), (x[k + 1], y_s + r.s[k + 1]), role="chord", layer=LAYER,
-                    step=f"chord {k}–{k + 1} of {s_sym}(t)")
+    tangents = d.method == "tangents"
+    if tangents:
+        _tangents(rec, x[:-1], y_s + r.s[:-1], r.alpha_s, s_sym)
+    else:
+        for k in range(n):
+            rec.segment((x[k], y_s + r.s[k]), (x[k + 1], y_s + r.s[k + 1]), role="chord", layer=LAYER,
+                        step=f"chord {k}–{k + 1} of {s_sym}(t)")
     for k in range(n + 1):
         rec.point((x[k], y_s + r.s[k]), role="construction", layer=LAYER, step=f"{s_sym} at ordinate {k}")
     rec.add("polyline", list(zip(fine, y_s + s_curve)), role="curve", layer=LAYER, step=f"{s_sym}(t)")
@@ -146,9 +165,12 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     # -- v(t): pole P at H1, rays ∥ the chords of s, heights carried to the middles ------------------
     _pole_diagram(rec, d, y_v, v_lo, v_hi, d.H1, r.v_ray, r.v, xm, v_curve, fine, v_sym, "1",
                   source=s_sym)
-    for k in range(n):  # the chords of the v curve between the division ordinates, for a
-        rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
-                    step=f"chord {k}–{k + 1} of {v_sym}(t)")
+    if tangents:        # the tangents to the v curve at the division points, for a
+        _tangents(rec, x[:-1], y_v + r.v, r.alpha_v, v_sym)
+    else:
+        for k in range(n):  # the chords of the v curve between the division ordinates, for a
+            rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
+                        step=f"chord {k}–{k + 1} of {v_sym}(t)")
     rec.label((left, y_v + v_hi), letters[1], size=TEXT, layer=LAYER)
     _caption(rec, L, y_v + v_hi, [
         [("μ", False), (v_sym, True), (f" = {fmt(d.mu_v, lang)} ({uv})/{mm}", False)],
@@ -207,13 +229,19 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
     pole = (-H, y0)
     rec.point(pole, role="joint", layer=LAYER, step=f"pole P, H{index} = {H:g} mm")
     rec.label((-H - 1.8, y0 + 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step=f"pole P{index}")
+    tangents = d.method == "tangents"
     for k, (h_ray, h_read, xk) in enumerate(zip(ray, read_, xm)):
         rec.segment(pole, (0.0, y0 + h_ray), role="ray", layer=LAYER,
-                    step=f"ray P∥chord {k}–{k + 1} ({step})")
+                    step=f"ray P∥tangent at {k} ({step})" if tangents else f"ray P∥chord {k}–{k + 1} ({step})")
+        at = f"ordinate {k}" if tangents else f"the middle of {k}–{k + 1}"
+        level = h_ray if d.correct else h_read    # corrected: the point moved off its horizontal
         if abs(xk) > 0:
-            rec.segment((0.0, y0 + h_read), (xk, y0 + h_read), role="projection", layer=LAYER,
-                        step=f"{sym} carried to the middle of {k}–{k + 1}")
-        rec.point((xk, y0 + h_read), role="construction", layer=LAYER, step=f"{sym} at the middle of {k}–{k + 1}")
+            rec.segment((0.0, y0 + level), (xk, y0 + level), role="projection", layer=LAYER,
+                        step=f"{sym} carried to {at}")
+        if d.correct:      # the interval's horizontal, against which the areas are balanced
+            rec.segment((d.x[k], y0 + h_ray), (d.x[k + 1], y0 + h_ray), role="projection", layer=LAYER,
+                        step=f"horizontal of {k}–{k + 1} ({sym})")
+        rec.point((xk, y0 + h_read), role="construction", layer=LAYER, step=f"{sym} at {at}")
     rec.add("polyline", list(zip(fine, y0 + curve)), role="curve", layer=LAYER, step=f"{sym}(t)")
     # the pole distance as a dimension under the diagram
     yd = y0 + lo - 4.0
@@ -221,6 +249,15 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
     rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
     rich(rec, (-H / 2, yd - 4.5), [("H", False), (index, True)], anchor="middle", step=f"H{index}")
+
+
+def _tangents(rec: Record, x: np.ndarray, y: np.ndarray, alpha: np.ndarray, sym: str,
+              half: float = 8.0) -> None:
+    """The tangents drawn at the division points (directions as drawn, with the eye's error)."""
+    for k, (xk, yk, a) in enumerate(zip(x, y, alpha)):
+        dx, dy = half * math.cos(a), half * math.sin(a)
+        rec.segment((xk - dx, yk - dy), (xk + dx, yk + dy), role="chord", layer=LAYER,
+                    step=f"tangent at {k} of {sym}(t)")
 
 
 def _caption(rec: Record, L: float, y: float, lines: list[list[tuple[str, bool]]]) -> None:

@@ -25,6 +25,7 @@ import numpy as np
 
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
+from graphplan.graphic import qualitative
 from graphplan.graphic.correction import area_correction
 from graphplan.graphic.tangents import (ANGLE_ERROR_DEG, MAX_ANGLE_ERROR_DEG, SEED, TangentReading,
                                         construct_tangents)
@@ -386,7 +387,7 @@ def rms(a: np.ndarray) -> float:
 def ruler_effect(d: Diagrams) -> dict[str, float] | None:
     """The ruler's share of the error: drawing at the precision minus the exact drawing, RMS in
     percent of each diagram's maximum, and the factor each differentiation multiplies it by."""
-    if d.precision == 0:
+    if d.precision == 0 and d.angle_error_deg == 0:
         return None
     mx = {key: d.maxima[key] / mu for key, mu in (("s", d.mu_s), ("v", d.mu_v), ("a", d.mu_a))}
     dr, ex = d.drawn, d.exact
@@ -428,6 +429,20 @@ def _where(d: Diagrams, k: int, lang: str) -> str:
     return place + f", a sharp bend: |{sym}| = {a:.0f} % of its maximum)"
 
 
+def _tangent_error(d: Diagrams, sym: str, err: np.ndarray, bad: np.ndarray) -> dict[str, Any]:
+    """The exact tangents' own error past the lab's 5 %: tangents to the French curve through the
+    s (or v) ordinates are not the tangents of the motion's curve."""
+    worst = bad[np.argsort(-np.abs(err[bad]))][:3]
+    en = "; ".join(f"{err[k]:+.1f} % at ordinate {k} (φ = {d.phi[k]:.1f}°)" for k in worst)
+    uk = "; ".join(f"{err[k]:+.1f} % на ординаті {k} (φ = {d.phi[k]:.1f}°)" for k in worst)
+    return {"kind": "tangent_error", "diagram": sym, "ordinates": [int(k) for k in bad],
+            "max_pct_of_max": float(np.max(np.abs(err))),
+            "message": f"exact tangents to the drawn curve miss {sym} by more than {LAB_LIMIT:g} % of |{sym}|max "
+                       f"at {bad.size} of {d.divisions} ordinates: {en}; take more divisions",
+            "message_uk": f"точні дотичні до накресленої кривої дають {sym} з похибкою понад {LAB_LIMIT:g} % від "
+                          f"|{sym}|max на {bad.size} з {d.divisions} ординат: {uk}; візьміть більше поділок"}
+
+
 def diagnose(d: Diagrams) -> list[dict[str, Any]]:
     """Warnings, each with its numbers and a ``message`` (English) and ``message_uk``: the chord
     error of v and a (the exact drawing's, so the ruler does not hide it), the division ordinates
@@ -438,7 +453,9 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
     for key, sym in (("v_mid", d.symbols[1]), ("a_mid", d.symbols[2])):
         err = d.errors_of_max(key, d.exact)
         bad = np.flatnonzero(np.abs(err) > LAB_LIMIT)
-        if bad.size:
+        if bad.size and d.method == "tangents":
+            out.append(_tangent_error(d, sym, err, bad))
+        elif bad.size:
             worst = bad[np.argsort(-np.abs(err[bad]))][:3]
             en = "; ".join(f"{err[k]:+.1f} % in interval {_where(d, k, 'en')}" for k in worst)
             uk = "; ".join(f"{err[k]:+.1f} % в інтервалі {_where(d, k, 'uk')}" for k in worst)
@@ -466,12 +483,16 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
     if ruler is not None:
         s0, v1, v2 = d.symbols
         errs = f"{s0} {ruler['s_rms_pct']:.2f} %, {v1} {ruler['v_rms_pct']:.2f} %, {v2} {ruler['a_rms_pct']:.2f} %"
+        en, uk = f"the ruler's {d.precision:g} mm", f"похибка відліку лінійкою {d.precision:g} мм"
+        if d.angle_error_deg:
+            en += f" and the tangents' ±{d.angle_error_deg:g}°"
+            uk += f" і дотичних ±{d.angle_error_deg:g}°"
         out.append({"kind": "ruler", "amplification_first": ruler["first"],
                     "amplification_second": ruler["second"],
-                    "message": f"the ruler's {d.precision:g} mm reading error (RMS, % of the maximum): {errs}; "
+                    "message": f"{en} reading error (RMS, % of the maximum): {errs}; "
                                f"the first differentiation amplifies it ×{ruler['first']:.1f}, the second "
                                f"×{ruler['second']:.1f}",
-                    "message_uk": f"похибка відліку лінійкою {d.precision:g} мм (СКВ, % від максимуму): {errs}; "
+                    "message_uk": f"{uk} (СКВ, % від максимуму): {errs}; "
                                   f"перше диференціювання підсилює її ×{ruler['first']:.1f}, друге "
                                   f"×{ruler['second']:.1f}"})
     for sym, rd, H, opt in ((d.symbols[1], d.drawn.v, d.H1, "--h1"), (d.symbols[2], d.drawn.a, d.H2, "--h2")):
@@ -483,6 +504,7 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
                                    f"{opt} {better:.0f} would make it about 60 mm",
                         "message_uk": f"діаграма {sym} має висоту {tall:.0f} мм при H = {H:g} мм; "
                                       f"{opt} {better:.0f} дасть близько 60 мм"})
+    out.extend(qualitative.check(d))
     if d.study.mech.crank.epsilon != 0:
         out.append({"kind": "epsilon1",
                     "message": "the diagrams take one crank period at constant ω1; the scene's ε1 ≠ 0 is in "

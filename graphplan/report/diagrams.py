@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from graphplan.drawing.diagrams import WORDS, fmt, scale_lines, units  # noqa: F401
+from graphplan.drawing.diagrams import WORDS, fmt, method_words, scale_lines, units  # noqa: F401
 
 if TYPE_CHECKING:
     from graphplan.graphic.diagrams import Diagrams
@@ -47,6 +47,9 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     return {
         "scene": d.study.mech.title,
         "point": d.point,
+        "method": d.method,
+        "angle_error_deg": d.angle_error_deg,
+        "correct": d.correct,
         "output": {"kind": d.output.kind, "name": d.output.name, "unit": d.unit},
         "sign": d.sign,
         "divisions": n,
@@ -67,11 +70,22 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
             "a_max_pct_of_max": float(np.max(np.abs(d.errors_of_max("a_mid", ex)))),
             "v_estimate_mm": [float(e) for e in d.estimate["v_mm"]],
             "a_estimate_mm": [float(e) for e in d.estimate["a_mm"]]},
-        "ruler": ruler_effect(d),
+        "ruler": None if (ruler := ruler_effect(d)) is None else {k: _num(x) for k, x in ruler.items()},
         "integration": integration,
         "warnings": [{k: (float(x) if isinstance(x, (np.floating,)) else x) for k, x in w.items()}
                      for w in d.warnings],
     }
+
+
+def sheet_notes(d: Diagrams, lang: str) -> list[str]:
+    """The lines a sheet's notes give the diagrams: which method drew them, and what they get
+    qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
+    w = WORDS[lang]
+    what = f"{w['point'] if d.output.kind == 'slide' else w['link']} {d.point}"
+    lines = [(w["title"].format(what=what, how=method_words(d, lang))
+              + f", {d.divisions} " + ("поділок" if lang == "uk" else "divisions"))]
+    lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
+    return lines
 
 
 def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]:
@@ -92,7 +106,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     s_, v_, a_ = d.symbols
     us, uv, ua = units(d, lang)
     what = f"{w['point'] if d.output.kind == 'slide' else w['link']} {d.point}"
-    lines = [d.study.mech.title, w["title"].format(what=what),
+    lines = [d.study.mech.title, w["title"].format(what=what, how=method_words(d, lang)),
              w["period"].format(T=d.study.mech.period, L=d.L), f"{w['scales']}:"]
     lines += ["  " + t for t in scale_lines(d, lang)]
     vals = d.values()
@@ -127,13 +141,14 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     if chosen:
         block(w["chosen"], head, [row_at(k) for k in chosen])
     rows = []
+    tangents = d.method == "tangents"
     for k in range(d.divisions):
         r = d.drawn
-        rows.append([f"{k}–{k + 1}", f"{d.phi_mid[k]:.2f}", f"{r.v[k]:.1f}", g(vals['v_mid'][k], "v"),
+        rows.append([str(k) if tangents else f"{k}–{k + 1}", f"{d.phi_mid[k]:.2f}", f"{r.v[k]:.1f}", g(vals['v_mid'][k], "v"),
                      g(d.truth['v_mid'][k], "v"), _pct(d.errors_pct('v_mid')[k]),
                      f"{r.a[k]:.1f}", g(vals['a_mid'][k], "a"), g(d.truth['a_mid'][k], "a"),
                      _pct(d.errors_pct('a_mid')[k])])
-    block(w["mid"], [w["int"], "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w["exact"], w["err"],
+    block(w["mid_t" if tangents else "mid"], [w["no"] if tangents else w["int"], "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w["exact"], w["err"],
                      f"{a_}, {mm}", f"{a_}, {ua}", w["exact"], w["err"]], rows)
     lines.append("")
     lines.append(w["integ"] + ":")

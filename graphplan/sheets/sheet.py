@@ -228,6 +228,7 @@ def kinematics_blocks(st: Study, args: Options, k: float,
     from graphplan.drawing.diagrams import draw as draw_diagrams
     from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
     from graphplan.graphic.plans import build_plans
+    from graphplan.report.diagrams import sheet_notes
     from graphplan.report.plans import plans_json
     from graphplan.graphic.scales import Targets, format_scale
     lang = args.lang
@@ -238,7 +239,8 @@ def kinematics_blocks(st: Study, args: Options, k: float,
     dg = st.mech.task.diagram
     diag = chord_diagrams(st, point=dg.get("point"), divisions=args.positions or dg.get("divisions") or st.mech.task.count,
                           L=float(dg.get("L_mm", 240.0)) * k, H1=float(dg.get("H1_mm", 30.0)),
-                          H2=float(dg.get("H2_mm", 30.0)), precision=args.precision, lang=lang, height=70.0 * k)
+                          H2=float(dg.get("H2_mm", 30.0)), precision=args.precision, lang=lang, height=70.0 * k,
+                          method=dg.get("method", "chords"))
     state = {"plans": plans}
 
     def velocity_plans(kv: float) -> Record:
@@ -265,7 +267,7 @@ def kinematics_blocks(st: Study, args: Options, k: float,
         extra = [f"{w['precision']}: {args.precision:g} " + ("мм" if lang == "uk" else "mm")]
         if errs:
             extra.append(f"{w['max_error']}: {max(errs):.2f} %")
-        return notes(st, scales, extra, lang)
+        return notes(st, scales, extra + sheet_notes(diag, lang), lang)
 
     blocks = [Block("position plan", lambda _k: captioned(
         position_record(plans), f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}"))]

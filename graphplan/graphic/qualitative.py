@@ -1,0 +1,190 @@
+"""Qualitative checks of a derived diagram: does it have the extrema and zero crossings of the exact
+curve, no more and no fewer? (Seed 002's rules: where the differentiated curve has an extremum the
+derivative crosses zero; a wrong diagram shows bumps the motion does not have.)
+
+Both curves are compared as drawn, in the diagram's millimetres over one period: the French curve
+through the method's ordinates, and the exact curve on the same scale. A feature counts only if the
+eye can see it on the drawing: extrema whose swing to a neighbouring extremum is below ``visible``
+mm are merged away in pairs (the smallest swing first: the persistence of a peak), and a zero
+crossing counts only when the curve goes from beyond +visible to beyond −visible (or back). A
+diagram's feature matches an exact one of the same kind within ``window`` degrees of crank turn
+(one division interval); what is left over is spurious (the diagram's) or missed (the exact curve's).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from graphplan.graphic.diagrams import Diagrams
+
+VISIBLE_MM = 0.5      # the least swing or excursion a feature needs to be seen (the ruler's division)
+SHOWN = 6             # features named in a message (the JSON lists all)
+
+
+@dataclass(frozen=True)
+class Feature:
+    """An extremum ("max"/"min") or a zero crossing ("up"/"down") at a crank turn from position 0."""
+    kind: str
+    turn: float
+
+
+def extrema(turn: np.ndarray, y: np.ndarray, visible: float) -> list[Feature]:
+    """Visible extrema of a periodic curve sampled at ``turn`` (deg, one period, no closing sample)."""
+    dy = np.diff(np.append(y, y[0]))
+    sign = np.sign(dy)
+    nz = np.flatnonzero(sign)
+    if nz.size == 0:
+        return []
+    # a change of the slope's sign between consecutive non-flat steps: an extremum at the sample after
+    cand = []
+    for j, k in zip(nz, np.roll(nz, -1)):
+        if sign[j] != sign[k]:
+            at = (j + 1) % len(y)
+            cand.append(("max" if sign[j] > 0 else "min", at))
+    cand.sort(key=lambda c: c[1])
+    while len(cand) > 2:
+        swings = [abs(y[cand[i][1]] - y[cand[(i + 1) % len(cand)][1]]) for i in range(len(cand))]
+        i = int(np.argmin(swings))
+        if swings[i] >= visible:
+            break
+        j = (i + 1) % len(cand)
+        cand = [c for m, c in enumerate(cand) if m not in (i, j)]
+    if len(cand) == 2 and abs(y[cand[0][1]] - y[cand[1][1]]) < visible:
+        cand = []
+    return [Feature(kind, float(turn[at])) for kind, at in cand]
+
+
+def zero_crossings(turn: np.ndarray, y: np.ndarray, visible: float, period: float = 360.0) -> list[Feature]:
+    """Visible zero crossings of a periodic curve: the sign flips only past ±``visible``; each is
+    placed where the curve last crossed zero on the way (linear interpolation between samples)."""
+    n = len(y)
+    definite = np.flatnonzero(np.abs(y) >= visible)
+    if definite.size == 0:
+        return []
+    start = int(definite[0])
+    out: list[Feature] = []
+    last_sign = np.sign(y[start])
+    last_zero = None
+    for step in range(1, n + 1):
+        k = (start + step) % n
+        prev = (k - 1) % n
+        if y[prev] != 0 and np.sign(y[prev]) != np.sign(y[k]) or y[k] == 0:
+            frac = y[prev] / (y[prev] - y[k]) if y[prev] != y[k] else 0.0
+            t0 = turn[prev] + frac * ((turn[k] - turn[prev]) % period)
+            last_zero = float(t0 % period)
+        if abs(y[k]) >= visible and np.sign(y[k]) != last_sign:
+            out.append(Feature("up" if y[k] > 0 else "down", last_zero if last_zero is not None else float(turn[k])))
+            last_sign = np.sign(y[k])
+    return sorted(out, key=lambda f: f.turn)
+
+
+def match(got: list[Feature], want: list[Feature], window: float,
+          period: float = 360.0) -> tuple[list[Feature], list[Feature]]:
+    """(spurious, missed): the diagram's features with no exact one of the same kind within
+    ``window`` degrees, and the exact features the diagram lacks (nearest pairs first)."""
+    dist = lambda a, b: abs((a.turn - b.turn + period / 2) % period - period / 2)  # noqa: E731
+    pairs = sorted((dist(g, w), i, j) for i, g in enumerate(got) for j, w in enumerate(want)
+                   if g.kind == w.kind and dist(g, w) <= window)
+    used_g: set[int] = set()
+    used_w: set[int] = set()
+    for _, i, j in pairs:
+        if i not in used_g and j not in used_w:
+            used_g.add(i)
+            used_w.add(j)
+    return ([g for i, g in enumerate(got) if i not in used_g],
+            [w for j, w in enumerate(want) if j not in used_w])
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """What one derived diagram gets wrong qualitatively (features at crank turns from position 0)."""
+    spurious_extrema: list[Feature]
+    missed_extrema: list[Feature]
+    spurious_zeros: list[Feature]
+    missed_zeros: list[Feature]
+
+    @property
+    def wrong(self) -> bool:
+        return bool(self.spurious_extrema or self.missed_extrema or self.spurious_zeros or self.missed_zeros)
+
+
+def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: float,
+            visible: float = VISIBLE_MM) -> Verdict:
+    """The drawn curve against the exact one, both in mm sampled at the same turns (one period)."""
+    se, me = match(extrema(turn, drawn, visible), extrema(turn, exact, visible), window)
+    sz, mz = match(zero_crossings(turn, drawn, visible), zero_crossings(turn, exact, visible), window)
+    return Verdict(se, me, sz, mz)
+
+
+KIND_WORDS = {"en": {"max": "max", "min": "min", "up": "rising", "down": "falling"},
+              "uk": {"max": "макс.", "min": "мін.", "up": "зростає", "down": "спадає"}}
+
+
+def check(d: Diagrams, samples: int = 720) -> list[dict[str, Any]]:
+    """Warnings (kind "qualitative") for the v and a diagrams of ``d`` whose French curves have
+    extrema or zero crossings the exact curves lack, or miss some they have; positions as crank
+    angles φ (deg). None when both diagrams are qualitatively right."""
+    from graphplan.graphic.chords import periodic_spline
+    from graphplan.graphic.diagrams import crank_angle, exact_motion
+    turn = np.arange(samples) * 360.0 / samples
+    x = d.L * turn / 360.0
+    _, v, a = exact_motion(d.study, d.output, turn)
+    window = float(np.max(np.diff(d.turn)))
+    visible = max(VISIBLE_MM, d.precision)
+    out: list[dict[str, Any]] = []
+    for sym, points, exact, mu in ((d.symbols[1], d.drawn.v, v, d.mu_v), (d.symbols[2], d.drawn.a, a, d.mu_a)):
+        drawn = periodic_spline(d.x_mid, points, d.L)(x)
+        verdict = compare(turn, drawn, d.sign * exact / mu, window, visible)
+        if not verdict.wrong:
+            continue
+        entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method}
+        parts = {"en": [], "uk": []}
+        for key, items, en, uk in (
+                ("spurious_extrema", verdict.spurious_extrema, "extrema the exact curve lacks",
+                 "екстремуми, яких немає в точній кривій"),
+                ("missed_extrema", verdict.missed_extrema, "misses the exact curve's extrema",
+                 "пропущено екстремуми точної кривої"),
+                ("spurious_zeros", verdict.spurious_zeros, "zero crossings the exact curve lacks",
+                 "переходи через нуль, яких немає в точній кривій"),
+                ("missed_zeros", verdict.missed_zeros, "misses the exact curve's zero crossings",
+                 "пропущено переходи точної кривої через нуль")):
+            if not items:
+                continue
+            phis = crank_angle(d.study, [f.turn for f in items])
+            entry[key] = [{"type": f.kind, "phi_deg": round(float(p), 1), "turn_deg": round(f.turn, 1)}
+                          for f, p in zip(items, phis)]
+            for lang, words in (("en", en), ("uk", uk)):
+                where = ", ".join(f"φ = {p:.1f}° ({KIND_WORDS[lang][f.kind]})"
+                                  for f, p in list(zip(items, phis))[:SHOWN])
+                if len(items) > SHOWN:
+                    where += f" … ({len(items)} {'in all' if lang == 'en' else 'усього'})"
+                parts[lang].append(f"{words}: {where}")
+        how = {"chords": ("by chords", "методом хорд"), "tangents": ("by tangents", "методом дотичних")}[d.method]
+        entry["note"], entry["note_uk"] = _short(entry, sym)
+        entry["message"] = (f"the {sym} diagram ({how[0]}, {d.divisions} divisions) is qualitatively wrong — "
+                            + "; ".join(parts["en"]) + "; take more divisions, a larger L or H, or a finer ruler")
+        entry["message_uk"] = (f"діаграма {sym} ({how[1]}, {d.divisions} поділок) якісно хибна — "
+                               + "; ".join(parts["uk"]) + "; візьміть більше поділок, більші L чи H або точнішу лінійку")
+        out.append(entry)
+    return out
+
+
+def _short(entry: dict[str, Any], sym: str) -> tuple[str, str]:
+    """One short line per diagram for the sheet's notes: where it has features it should not."""
+    def where(key: str, comma: bool) -> str:
+        items = entry[key]
+        text = ", ".join(f"{e['phi_deg']:g}°".replace(".", "," if comma else ".") for e in items[:3])
+        return text + (" ..." if len(items) > 3 else "")
+    en, uk = [], []
+    for key, e_word, u_word in (("spurious_extrema", "spurious extrema", "хибні екстремуми"),
+                                ("missed_extrema", "missed extrema", "пропущені екстремуми"),
+                                ("spurious_zeros", "spurious zeros", "хибні нулі"),
+                                ("missed_zeros", "missed zeros", "пропущені нулі")):
+        if entry.get(key):
+            en.append(f"{e_word} φ = {where(key, False)}")
+            uk.append(f"{u_word} φ = {where(key, True)}")
+    return (f"Diagram {sym} is qualitatively wrong: " + "; ".join(en),
+            f"Діаграма {sym} якісно хибна: " + "; ".join(uk))
