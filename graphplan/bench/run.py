@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.bench import differentiation
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.positions import Study, study
 from graphplan.model.scene import load, loads
@@ -211,6 +212,7 @@ def external(quick: bool) -> Iterator[Row]:
 SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "speed": solver_speed,
     "chords": chords,
+    "differentiation": differentiation.rows,
     "plans": plans,
     "stability": stability,
     "sheet": sheet_time,
@@ -357,7 +359,7 @@ def _chart_plans(rows: list[Row], plt):
 
 
 CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
-                               "stability": _chart_stability}
+                               "stability": _chart_stability, "differentiation": differentiation.chart}
 
 
 def summary(rows: list[Row]) -> str:
