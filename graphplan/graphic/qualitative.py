@@ -135,12 +135,16 @@ def check(d: Diagrams, samples: int = 720) -> list[dict[str, Any]]:
     window = float(np.max(np.diff(d.turn)))
     visible = max(VISIBLE_MM, d.precision)
     out: list[dict[str, Any]] = []
-    for sym, points, exact, mu in ((d.symbols[1], d.drawn.v, v, d.mu_v), (d.symbols[2], d.drawn.a, a, d.mu_a)):
-        drawn = periodic_spline(d.x_mid, points, d.L)(x)
-        verdict = compare(turn, drawn, d.sign * exact / mu, window, visible)
+    for sym, key, exact, mu in ((d.symbols[1], "v", v, d.mu_v), (d.symbols[2], "a", a, d.mu_a)):
+        truth = d.sign * exact / mu
+        drawn = periodic_spline(d.x_mid, getattr(d.drawn, key), d.L)(x)
+        verdict = compare(turn, drawn, truth, window, visible)
         if not verdict.wrong:
             continue
-        entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method}
+        # the cause: the method's own error if the exact drawing is wrong too, else the drafting's
+        own = compare(turn, periodic_spline(d.x_mid, getattr(d.exact, key), d.L)(x), truth, window, visible).wrong
+        entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method,
+                                 "cause": "method" if own else "drafting"}
         parts = {"en": [], "uk": []}
         for key, items, en, uk in (
                 ("spurious_extrema", verdict.spurious_extrema, "extrema the exact curve lacks",
@@ -165,9 +169,14 @@ def check(d: Diagrams, samples: int = 720) -> list[dict[str, Any]]:
         how = {"chords": ("by chords", "методом хорд"), "tangents": ("by tangents", "методом дотичних")}[d.method]
         entry["note"], entry["note_uk"] = _short(entry, sym)
         entry["message"] = (f"the {sym} diagram ({how[0]}, {d.divisions} divisions) is qualitatively wrong — "
-                            + "; ".join(parts["en"]) + "; take more divisions, a larger L or H, or a finer ruler")
+                            + "; ".join(parts["en"]) + ("; take more divisions (smaller intervals there)" if own else
+                                                        "; the exact drawing is right: the drafting error does it — "
+                                                        "take a larger L or H or a finer ruler, not more divisions"))
         entry["message_uk"] = (f"діаграма {sym} ({how[1]}, {d.divisions} поділок) якісно хибна — "
-                               + "; ".join(parts["uk"]) + "; візьміть більше поділок, більші L чи H або точнішу лінійку")
+                               + "; ".join(parts["uk"]) + ("; візьміть більше поділок (менші інтервали там)" if own else
+                                                           "; точна побудова правильна: це похибка креслення — "
+                                                           "візьміть більші L чи H або точнішу лінійку, а не більше "
+                                                           "поділок"))
         out.append(entry)
     return out
 
