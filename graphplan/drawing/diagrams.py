@@ -252,7 +252,7 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
 
 
 def _tangents(rec: Record, x: np.ndarray, y: np.ndarray, alpha: np.ndarray, sym: str,
-              half: float = 8.0) -> None:
+              half: float = 10.0) -> None:
     """The tangents drawn at the division points (directions as drawn, with the eye's error)."""
     for k, (xk, yk, a) in enumerate(zip(x, y, alpha)):
         dx, dy = half * math.cos(a), half * math.sin(a)
