@@ -297,12 +297,13 @@ def plans(scene=None, positions: int | None = None, accel: Sequence[str | int | 
 
 def diagrams(scene=None, point: str | None = None, divisions: int | None = None, precision: float = 0.5,
              lang: str = "uk", **options: Any) -> Diagrams:
-    """The s–v–a diagrams of ``point`` (default: the scene's output) by the method of chords;
-    ``L``, ``H1``, ``H2`` (mm) default to the scene's ``[diagrams]`` table."""
+    """The s–v–a diagrams of ``point`` (default: the scene's output) by the method of chords (or
+    ``method="tangents"``, ``angle_error_deg=``; ``correct=True`` for the lab's area correction);
+    ``L``, ``H1``, ``H2`` (mm) and ``method`` default to the scene's ``[diagrams]`` table."""
     from graphplan.graphic.diagrams import chord_diagrams
     st = _study_of(scene)
     given = st.mech.task.diagram
-    for key, name in (("L", "L_mm"), ("H1", "H1_mm"), ("H2", "H2_mm")):
+    for key, name in (("L", "L_mm"), ("H1", "H1_mm"), ("H2", "H2_mm"), ("method", "method")):
         if key not in options and name in given:
             options[key] = given[name]
     return Diagrams(chord_diagrams(st, point=point, divisions=divisions, precision=precision, lang=lang,

@@ -264,3 +264,18 @@ def test_docs_table_comes_from_the_bench_rows():
     table = markdown_table(list(rows(quick=False)))
     assert table in (ROOT / "docs" / "diagrams.md").read_text(encoding="utf-8"), \
         "docs/diagrams.md is out of date: python -m graphplan.bench.differentiation"
+
+
+def test_the_scene_can_ask_for_tangents(tmp_path, capsys):
+    text = (ROOT / "examples" / "lab_crank_slider.toml").read_text(encoding="utf-8")
+    assert "[diagrams]" in text
+    scene = tmp_path / "lab.toml"
+    scene.write_text(text.replace("[diagrams]", "[diagrams]\nmethod = \"tangents\""), encoding="utf-8")
+    assert main(["diagrams", str(scene), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["method"] == "tangents"
+    assert main(["diagrams", str(scene), "--json", "--method", "chords"]) == 0
+    assert json.loads(capsys.readouterr().out)["method"] == "chords"
+    scene.write_text(text.replace("[diagrams]", "[diagrams]\nmethod = \"secants\""), encoding="utf-8")
+    assert main(["diagrams", str(scene)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "diagrams.method" in err

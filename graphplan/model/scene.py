@@ -26,7 +26,7 @@ _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilo
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
          "mass", "inertia", "com"}
 _POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_stroke"}
-_DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point"}
+_DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point", "method"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
@@ -404,7 +404,7 @@ class _Reader:
         return tuple(pairs)
 
     def read_diagram(self, raw: Any) -> dict[str, object]:
-        """[diagrams]: the chord diagrams' abscissa L, pole distances H1, H2 (mm), divisions, point."""
+        """[diagrams]: the diagrams' abscissa L, pole distances H1, H2 (mm), divisions, point, method."""
         raw = self.table(raw, "diagrams", _DIAGRAMS)
         out: dict[str, object] = {}
         for key in ("L_mm", "H1_mm", "H2_mm"):
@@ -417,6 +417,10 @@ class _Reader:
             out["divisions"] = n
         if "point" in raw:
             out["point"] = self.name(raw["point"], "diagrams.point")
+        if "method" in raw:
+            if raw["method"] not in ("chords", "tangents"):
+                raise self.fail("diagrams.method", f"must be \"chords\" or \"tangents\", got {raw['method']!r}")
+            out["method"] = raw["method"]
         return out
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
