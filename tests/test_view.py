@@ -197,9 +197,9 @@ def cell(d, q: str, col: str) -> str:
     return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text
 
 
-def analyze_shown(phis: list[float]) -> dict[float, dict[str, str]]:
+def analyze_shown(phis: list[float], scene: Path = SHAPER) -> dict[float, dict[str, str]]:
     """The values `graphplan analyze --phi` prints, as text, per angle: column name → cell."""
-    r = graphplan("analyze", str(SHAPER), "--phi", *map(str, phis))
+    r = graphplan("analyze", str(scene), "--phi", *map(str, phis))
     assert r.returncode == 0, r.stderr
     out: dict[float, dict[str, str]] = {phi: {} for phi in phis}
     header: list[str] = []
@@ -303,3 +303,37 @@ def test_play_moves_the_mechanism_and_the_cursor(driver, pages, shots):
     assert driver.find_element("id", "diagram-cursor").get_attribute("x1") != x0
     shots(driver, "played", "diagrams-section")
     check_clean(driver, pages["uk"].resolve().as_uri())
+
+
+# -- the gallery's explorers -----------------------------------------------------------------------------
+
+def test_gallery_explorers_are_current():
+    from graphplan.cli.gallery import EXPLORERS, explorer
+    for scene in EXPLORERS:
+        path = ROOT / "drawings" / f"{scene}.html"
+        assert path.exists(), f"drawings/{scene}.html is missing: run python -m graphplan.cli.gallery"
+        assert path.stat().st_size < 400_000
+        assert path.read_text(encoding="utf-8") == explorer(scene), \
+            f"drawings/{scene}.html is out of date: run python -m graphplan.cli.gallery"
+
+
+@pytest.mark.parametrize("scene", ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"])
+def test_gallery_explorer_runs(driver, scene, shots):
+    """Every example's page works: angles around the turn, every plan replayed to its end, the
+    exact column equal to `analyze` for the output point, no error, no request."""
+    path = ROOT / "drawings" / f"{scene}.html"
+    open_page(driver, path)
+    out = page_data(path)["scheme"]["output"]["point"]
+    shown = analyze_shown([10.0, 200.0], ROOT / "examples" / f"{scene}.toml")
+    for phi in (10.0, 200.0):
+        set_slider(driver, phi)
+        assert cell(driver, f"v_{out}", "exact") == shown[phi][f"v_{out}"]
+    options = driver.find_elements("css selector", "#replay-plan option")
+    assert len(options) >= 2
+    for option in options[-2:]:
+        option.click()
+        driver.find_element("id", "step-last").click()
+        last = driver.find_elements("css selector", "#step-list li")[-1]
+        assert "current" in last.get_attribute("class")
+    shots(driver, f"gallery_{scene}", "replay-section")
+    check_clean(driver, path.resolve().as_uri())
