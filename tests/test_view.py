@@ -75,9 +75,11 @@ def test_bad_output_name_is_one_line(tmp_path):
     r = graphplan("view", str(SHAPER), "-o", str(tmp_path / "page.txt"))
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and ".html" in r.stderr
     assert not (tmp_path / "page.txt").exists()
-    r = graphplan("view", str(tmp_path / "missing.toml"), "-o", str(tmp_path / "v.html"))
-    assert r.returncode == 2 and "Traceback" not in r.stderr
-    assert not (tmp_path / "v.html").exists()
+    for bad in (["view", str(tmp_path / "missing.toml")], ["view", str(SHAPER), "--step", "0"],
+                ["view", str(SHAPER), "--precision", "-1"]):
+        r = graphplan(*bad, "-o", str(tmp_path / "v.html"))
+        assert r.returncode == 2 and r.stderr.count("\n") == 1 and "Traceback" not in r.stderr, r.stderr
+        assert not (tmp_path / "v.html").exists()
 
 
 def test_data_is_the_exact_solution_and_the_plans(pages):
@@ -337,3 +339,15 @@ def test_gallery_explorer_runs(driver, scene, shots):
         assert "current" in last.get_attribute("class")
     shots(driver, f"gallery_{scene}", "replay-section")
     check_clean(driver, path.resolve().as_uri())
+
+
+def test_notebook_frame_holds_the_same_page():
+    """explorer_iframe (for a notebook's _repr_html_) carries explorer_html's page, escaped."""
+    import html as html_
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import load
+    from graphplan.report.explorer import explorer_html, explorer_iframe
+    st = study(load(SHAPER))
+    frame = explorer_iframe(st, lang="en", step=5.0)
+    page = re.fullmatch(r'<iframe srcdoc="(.*)" style=.*></iframe>', frame, re.S).group(1)
+    assert html_.unescape(page) == explorer_html(st, lang="en", step=5.0)

@@ -273,8 +273,10 @@ class Captions:
         if self.plan.kind == "velocity":
             return (f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, in the sense of ω1" if self.en() else
                     f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, у бік ω1")
-        return (f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, toward {cr.pivot}" if self.en() else
-                f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, до {cr.pivot}")
+        tangential = f" + ε1·l_{arm} ⊥ {arm}" if cr.epsilon else ""
+        return (f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, toward {cr.pivot}{tangential}"
+                if self.en() else
+                f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, до {cr.pivot}{tangential}")
 
     def relation(self, term: str, guided: bool) -> str:
         """⊥ XY for a rotation about another point, ∥ the guide for a slide."""
@@ -345,9 +347,7 @@ def replay(plans: Plans, plan, rec: Record, lang: str) -> list[dict[str, Any]]:
             k += 1
             continue
         if p.step and "=" in p.step and not p.step.startswith("similarity"):
-            group = [j for j in range(k, len(items)) if items[j].step == p.step and j not in done]
-            # the group's primitives are consecutive
-            j_end = k
+            j_end = k       # a group's primitives are consecutive in the record
             while j_end < len(items) and items[j_end].step == p.step:
                 j_end += 1
             steps += equation_steps(cap, items, list(range(k, j_end)), p.step)
@@ -562,3 +562,12 @@ def explorer_html(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
                 .replace("{{style}}", _asset("explorer.css"))
                 .replace("{{data}}", payload)
                 .replace("{{script}}", _asset("explorer.js")))
+
+
+def explorer_iframe(st: Study, height: int = 1400, **options) -> str:
+    """The explorer for a notebook's ``_repr_html_``: the page in an ``<iframe srcdoc>``, because
+    JupyterLab does not run scripts written straight into an output cell. ``options`` as
+    ``explorer_html``."""
+    page = html.escape(explorer_html(st, **options), quote=True)
+    return (f'<iframe srcdoc="{page}" style="width:100%;height:{int(height)}px;border:0;background:#fff" '
+            'sandbox="allow-scripts"></iframe>')
