@@ -9,6 +9,7 @@ $GRAPHPLAN_SHOTS when set (to look at them)."""
 from __future__ import annotations
 
 import json
+import math
 import os
 import re
 import shutil
@@ -258,6 +259,10 @@ def test_lab_position_shows_the_plan_reading(driver, pages, shots):
     assert float(got.get_attribute("data-value")) == pytest.approx(v["value"], rel=1e-6)
     assert f"({v['mm']:.1f} mm)" in got.text
     assert cell(driver, "v_C", "error") == f"{v['error_pct']:.2f}"
+    rel = driver.find_element("css selector", '[data-q="vrel_A"] td.graphical')      # the block in the slot
+    exact = float(driver.find_element("css selector", '[data-q="vrel_A"] td.exact').get_attribute("data-value"))
+    assert float(rel.get_attribute("data-value")) == pytest.approx(
+        math.copysign(pos["velocity"]["A3A2"]["value"], exact), rel=1e-6)
     k = pos["acceleration"]["k_A3A2"]
     assert cell(driver, "k_A", "error") == f"{k['error_pct']:.2f}"
     # the graphical plans are drawn over the exact ones

@@ -105,7 +105,8 @@ def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
     links = {name: {"theta": column(np.degrees(kin.bodies[name].theta), 7),
                     "omega": column(kin.bodies[name].omega, floor=fw),
                     "epsilon": column(kin.bodies[name].eps, floor=fe)} for name in mech.links}
-    slides = {key: {"s": column(s.t - st.t0[key], floor=fx), "v": column(s.v, floor=fv),
+    slides = {key: {"point": s.point, "fixed": s.carrier == FRAME,
+                    "s": column(s.t - st.t0[key], floor=fx), "v": column(s.v, floor=fv),
                     "a": column(s.a, floor=fa), "k": column(s.coriolis_magnitude, floor=fa)}
               for key, s in kin.slides.items()}
     crossing = {label: [round(math.degrees(math.asin(min(1.0, abs(float(c))))), 1) for c in cond]
@@ -164,7 +165,7 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
                      "entry": f"omega_{n}"})
     for key, s in sorted(grid["slides"].items()):
         rows.append({"q": f"vrel_{key}", "plan": "velocity", "source": "slide_v", "name": key, "unit": "m/s",
-                     "entry": None})
+                     "entry": s["point"] if s["fixed"] else None, "point": s["point"]})
     for p in pts:
         rows.append({"q": f"a_{p}", "plan": "acceleration", "source": "point", "name": p, "unit": "m/s²", "entry": p})
     for n in rot:
@@ -173,41 +174,45 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
     for key, s in sorted(grid["slides"].items()):
         if max(s["k"]) > 0:
             rows.append({"q": f"k_{key}", "plan": "acceleration", "source": "slide_k", "name": key,
-                         "unit": "m/s²", "entry": None})
+                         "unit": "m/s²", "entry": None, "point": s["point"]})
     return rows
 
 
 def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, list]]:
     """What the plans of each lab position read, per row: [mm or null, value, error % or null];
-    ω and ε signed (+ counter-clockwise) as the exact column shows them."""
+    ω and ε signed (+ counter-clockwise) as the exact column shows them; a slide's relative
+    velocity negative where the drawn vector points against the exact one (the page gives it the
+    exact value's sign along the guide)."""
     out: dict[str, dict[str, list]] = {}
     for p in plans.positions:
         got: dict[str, list] = {}
         for plan in (p.velocity, p.acceleration):
             if plan is None:
                 continue
-            coriolis = {k[2:]: e for k, e in plan.entries.items() if k.startswith("k_")}
             for row in rows:
                 if row["plan"] != plan.kind:
                     continue
                 e = plan.entries.get(row["entry"]) if row["entry"] else None
-                if row["source"] == "slide_k":
-                    e = next((c for k, c in coriolis.items() if _slide_of(plans, k) == row["name"]), None)
+                if e is None and row["source"] in ("slide_v", "slide_k"):
+                    e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
                 if e is None:
                     continue
                 value = e.vector.real if row["source"] in ("omega", "epsilon") else e.value
+                if row["source"] == "slide_v" and (e.vector * e.exact.conjugate()).real < 0:
+                    value = -value      # drawn against the exact sense: the page shows the opposite sign
                 got[row["q"]] = [None if e.mm is None else mm(e.mm), sig(value, 6),
                                  None if e.error_pct is None else round(e.error_pct, 3)]
         out[str(p.key)] = got
     return out
 
 
-def _slide_of(plans: Plans, key: str) -> str | None:
-    """The sliding pair a Coriolis entry "A3A2" belongs to: the slider whose point is A."""
-    mech = plans.study.mech
-    for name, link in mech.links.items():
-        if link.slides_on is not None and key.startswith(next(iter(link.local))):
-            return next(iter(link.local))
+def relative_entry(entries: dict, point: str, prefix: str = ""):
+    """The plan's entry of a sliding pair's relative motion at ``point``: "A3A2" (v_A3A2), or with
+    ``prefix="k_"`` its Coriolis component "k_A3A2"."""
+    for key, e in entries.items():
+        rest = key.removeprefix(prefix) if key.startswith(prefix) else None
+        if rest and not rest.startswith("k_") and rest.startswith(point) and same_point(rest):
+            return e
     return None
 
 

@@ -285,8 +285,9 @@
       td[1].textContent = fmtG(x, 4);
       td[1].setAttribute("data-value", String(x));
       if (r) {
-        td[0].textContent = fmtG(r[1], 4) + (r[0] !== null ? " (" + r[0].toFixed(1) + (D.lang === "uk" ? " мм)" : " mm)") : "");
-        td[0].setAttribute("data-value", String(r[1]));
+        const g = row.source === "slide_v" && x < 0 ? -r[1] : r[1];   // signed along the guide, as exact
+        td[0].textContent = fmtG(g, 4) + (r[0] !== null ? " (" + r[0].toFixed(1) + (D.lang === "uk" ? " мм)" : " mm)") : "");
+        td[0].setAttribute("data-value", String(g));
         td[2].textContent = r[2] === null ? "—" : r[2].toFixed(2);
         td[2].className = "error" + (r[2] !== null && Math.abs(r[2]) > 5 ? " bad" : "");
       } else {
