@@ -134,6 +134,35 @@ def test_replay_steps_in_textbook_order(pages):
     assert any("Коріоліса" in s["caption"] for s in uk["steps"])
 
 
+@pytest.mark.parametrize("kind", ["RRR", "RRP", "RPR", "PRP", "RPP", "RRP moving", "RPP moving"])
+def test_replay_of_every_group_kind(kind):
+    """Random mechanisms of every group kind: each plan's replay draws every primitive once, words
+    every step of a group (none falls back to the bare equation), names the point each direction
+    line goes through, and relates each line to the link (⊥) or the guide (∥) as the term says."""
+    from hypothesis import HealthCheck, given, settings
+    from test_plans import assemblable, mechanisms
+    from graphplan.report.explorer import explorer_data
+
+    @settings(max_examples=4, deadline=None, suppress_health_check=list(HealthCheck))
+    @given(scene=mechanisms()[kind])
+    def run(scene):
+        st = assemblable(*scene, kind)
+        for rec in explorer_data(st, step=10.0, lang="en")["records"]:
+            drawn = sorted(j for s in rec["steps"] for j in s["items"])
+            assert drawn == [j for j, it in enumerate(rec["items"]) if it[0] != "text" and it[2] != "pole"]
+            for s in rec["steps"]:
+                assert s["caption"] != s["eq"]
+                line = re.match(r"line (⊥ (\S+)|∥ the guide) through (\S+) \(the direction of (\S+)\)", s["caption"])
+                if s["caption"].startswith("line"):
+                    assert line and line.group(3) != "…", s["caption"]
+                    sup, sub = re.match(r"[av](?:\^(\S))?_(\S+)", line.group(4)).groups()
+                    # a relative slide (a^r, or two bodies' points at one place: A3A2) runs along the guide
+                    along = sup == "r" or re.fullmatch(r"([A-Z]+)[\d_]+\1[\d_]*", sub) or s["eq"].endswith("∥ the guide") \
+                        and line.group(4) == s["eq"].split(" =")[0]
+                    assert (line.group(2) is None) == bool(along), s["caption"]
+    run()
+
+
 # -- in the browser ------------------------------------------------------------------------------------
 
 def _browser_missing() -> str | None:
@@ -243,6 +272,16 @@ def test_slider_values_equal_analyze(driver, pages, shots):
         assert cell(driver, "v_C", "exact") == shown[phi]["v_C"]
         assert cell(driver, "omega_OB", "exact") == shown[phi]["ω_OB"]
         assert cell(driver, "a_C", "exact") == shown[phi]["a_C"]
+        # and every other quantity both show, to the digit
+        names = {"ω_": "omega_", "ε_": "epsilon_"}
+        compared = 0
+        for column, text in shown[phi].items():
+            q = names.get(column[:2], column[:2]) + column[2:]
+            found = driver.find_elements("css selector", f'[data-q="{q}"] td.exact')
+            if found:
+                assert found[0].text == text, (phi, column)
+                compared += 1
+        assert compared >= 14
         assert cell(driver, "v_C", "graphical") == ""      # no plan was drawn at this angle
         shots(driver, f"slider_{phi:g}")
     check_clean(driver, pages["uk"].resolve().as_uri())

@@ -283,6 +283,13 @@ class Captions:
                 if self.en() else
                 f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, до {cr.pivot}{tangential}")
 
+    def base(self, term: str) -> str:
+        """The plan point a vector equation starts from: v_B → b, v_O2 (a fixed point) → the pole."""
+        _, _, point = parse_term(term)
+        if point in self.mech.frame or not point:
+            return self.pole
+        return point.lower()
+
     def relation(self, term: str, guided: bool) -> str:
         """⊥ XY for a rotation about another point, ∥ the guide for a slide."""
         _, sup, sub = parse_term(term)
@@ -415,19 +422,20 @@ def equation_steps(cap: Captions, items: list[Primitive], idx: list[int], step: 
     for n, terms in enumerate(eqs):
         chain, unknown = terms[1:-1], terms[-1]
         guided = terms[0] == ""
+        through = cap.pole if guided else cap.base(terms[0])   # where the unknown's line starts
         for term in chain:
             _, sup, _ = parse_term(term)
             role = {"n": "normal", "k": "coriolis"}.get(sup)
             j = take(lambda p: p.kind == "vector" and p.role == role)
             if j is not None:
                 end = cap.at(_z(items[j].points[1]))
+                through = end or through
                 out.append({"items": [j], "caption": cap.chain(term, role, end), "eq": lang_step})
         line = take(lambda p: p.kind == "segment" and p.role == "direction")
         vec = take(lambda p: p.kind == "vector" and p.role in ("relative", "tangential"))
         if line is not None:
-            through = cap.at(_z(items[vec].points[0])) if vec is not None else ""
-            if not through and guided:
-                through = cap.pole
+            if vec is not None:
+                through = cap.at(_z(items[vec].points[0])) or through
             out.append({"items": [line], "caption": cap.line(unknown, through or "…", guided), "eq": lang_step})
         if vec is not None:
             found = cap.at(_z(items[vec].points[1]))
