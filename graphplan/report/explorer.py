@@ -218,7 +218,7 @@ def relative_entry(entries: dict, point: str, prefix: str = ""):
 
 # -- the construction records and their captions ---------------------------------------------------
 
-GUIDE = {"en": "the guide", "uk": "напрямної"}
+GUIDE = {"en": "the guide", "uk": "напрямній"}
 
 
 def split_pair(text: str, names: list[str]) -> tuple[str, str] | None:

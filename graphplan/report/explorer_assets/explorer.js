@@ -250,7 +250,7 @@
   }
 
   // -- the values' table --------------------------------------------------------------------------------
-  const SYM = { point_v: "v_", point_a: "a_", omega: "ω_", epsilon: "ε_", slide_v: "v_rel ", slide_k: "a^k " };
+  const SYM = { omega: "ω_", epsilon: "ε_", slide_v: D.lang === "uk" ? "v_відн " : "v_rel ", slide_k: "a^k " };
   function label(row) {
     if (row.source === "point") return (row.plan === "velocity" ? "v_" : "a_") + row.name;
     return SYM[row.source] + row.name;
