@@ -201,7 +201,7 @@ def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, li
                 if row["source"] == "slide_v" and (e.vector * e.exact.conjugate()).real < 0:
                     value = -value      # drawn against the exact sense: the page shows the opposite sign
                 got[row["q"]] = [None if e.mm is None else mm(e.mm), sig(value, 6),
-                                 None if e.error_pct is None else round(e.error_pct, 3)]
+                                 None if e.error_pct is None else sig(e.error_pct, 7)]
         out[str(p.key)] = got
     return out
 
