@@ -32,6 +32,20 @@ def build(scene: str, kind: str, lang: str) -> str:
     return BUILDERS[kind](st, form("A1"), args).svg()
 
 
+# the interactive explorer of each example (graphplan view), on a 2° grid to keep each page small
+EXPLORERS = ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"]
+EXPLORER_STEP = 2.0
+
+
+def explorer(scene: str, lang: str = "uk") -> str:
+    """One example's offline explorer page (HTML text)."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import load
+    from graphplan.report.explorer import explorer_html
+    st = study(load(ROOT / "examples" / f"{scene}.toml"))
+    return explorer_html(st, precision=0.5, step=EXPLORER_STEP, lang=lang)
+
+
 def available() -> list[tuple[str, str, str, str]]:
     from graphplan.sheets.sheet import BUILDERS
     return [s for s in SHEETS if s[1] in BUILDERS]
@@ -44,6 +58,9 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     for scene, kind, lang, name in available():
         path = write_atomic(Path(args.out) / name, build(scene, kind, lang))
+        print(path, file=sys.stderr)
+    for scene in EXPLORERS:
+        path = write_atomic(Path(args.out) / f"{scene}.html", explorer(scene))
         print(path, file=sys.stderr)
     return 0
 

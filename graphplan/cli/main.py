@@ -35,6 +35,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.forces",
     "graphplan.cli.key",
     "graphplan.cli.bench",
+    "graphplan.cli.view",
 )
 
 

@@ -1,0 +1,586 @@
+"""The interactive explorer: one offline HTML page with the mechanism moving, its plans at every
+angle, each construction replayed step by step, and the s–v–a diagrams.
+
+Python computes everything the page shows and writes it into the page as one JSON object; the
+page's small hand-written script only draws it (inline SVG) — there is no second solver in it:
+
+* the exact solution on a fine grid of crank angles (every ``step`` degrees plus the lab's
+  positions): points' positions, velocities and accelerations, links' ω and ε, the slides, and the
+  crossing angle of each group's direction lines (where it is small the plans are ill-conditioned);
+* the graphical plans at the lab's positions (graphic.plans.build_plans): every velocity plan and
+  the acceleration plans the scene asks for, as their construction records, each primitive with a
+  caption of the draftsman's step ("v_A ⊥ O1A", "line ⊥ CB through b", "c at the intersection",
+  the Coriolis component …) in Ukrainian and English, and the values read off them;
+* the s–v–a diagrams by chords (graphic.diagrams.chord_diagrams) beside the exact curves;
+* the warnings: extreme (dead-centre) positions, plan warnings, small crossing angles.
+
+No network request of any kind: script, style and data are inline; the only URIs are the SVG and
+XHTML namespaces. The bytes depend only on the scene and the options (deterministic).
+"""
+from __future__ import annotations
+
+import html
+import json
+import math
+import re
+from importlib import resources
+from typing import Any
+
+import numpy as np
+
+from graphplan.exact.positions import Study
+from graphplan.graphic.plan import SMALL_ANGLE_DEG
+from graphplan.graphic.plans import Plans, build_plans
+from graphplan.graphic.record import Primitive, Record
+from graphplan.model.mechanism import FRAME
+from graphplan.util.errors import GraphplanError
+
+DIGITS = 9          # significant digits kept of every exact value (the page shows 4)
+MM = 3              # decimals of drawing millimetres
+
+# -- numbers -------------------------------------------------------------------------------------
+
+
+def sig(x: float, digits: int = DIGITS) -> float:
+    """``x`` rounded to ``digits`` significant digits (0 for round-off below 1e-12)."""
+    x = float(x)
+    if not math.isfinite(x):
+        raise GraphplanError(f"the explorer got a non-finite value {x!r}")
+    return 0.0 if abs(x) < 1e-12 else float(f"{x:.{digits}g}")
+
+
+def column(values, digits: int = DIGITS, floor: float = 0.0) -> list[float]:
+    """The values rounded; those below ``floor`` (round-off of a vanishing quantity) become 0."""
+    return [0.0 if abs(v) <= floor else sig(v, digits) for v in np.asarray(values, dtype=float)]
+
+
+ROUND_OFF = 1e-10   # of the largest value of its kind, as `graphplan analyze` zeroes round-off
+
+
+def mm(x: float) -> float:
+    v = round(float(x), MM)
+    return 0.0 if v == 0 else v
+
+
+# -- the crank-angle grid --------------------------------------------------------------------------
+
+
+def angle_grid(step: float, lab: list[float]) -> np.ndarray:
+    """Crank angles φ (deg, [0, 360)): every ``step`` degrees and the lab's positions, ascending."""
+    if not (math.isfinite(step) and 0.05 <= step <= 30.0):
+        raise GraphplanError(f"--step must be from 0.05 to 30 degrees, got {step!r}")
+    n = int(round(360.0 / step))
+    fine = np.arange(n) * (360.0 / n)
+    every = np.concatenate([fine, np.mod(np.asarray(lab, dtype=float), 360.0)])
+    every = np.sort(every)
+    keep = np.concatenate([[True], np.diff(every) > 1e-9])
+    return every[keep]
+
+
+def coincident_motion(kin, body: str, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """v and a of ``body``'s point that is at ``x`` now: v_O + ω×r, a_O + ε×r − ω²r (r = x − O)."""
+    return kin.bodies[body].coincident(x)
+
+
+def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
+    """The exact solution on the grid: points (m, m/s, m/s²), links, slides, crossing angles."""
+    mech = st.mech
+    kin = st.solve(phi)
+    motion: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+    for name in mech.point_names():
+        if name not in mech.frame:
+            motion[name] = kin.point(name)
+    for (point, body), name in sorted(plans.scheme.coincident.items(), key=lambda kv: kv[1]):
+        if body != FRAME and name not in motion:
+            x = kin.point(point)[0]
+            motion[name] = (x, *coincident_motion(kin, body, x))
+    fx, fv, fa = (ROUND_OFF * max(float(np.max(np.abs(m[k]))) for m in motion.values()) for k in range(3))
+    points = {name: {"x": column(x.real, floor=fx), "y": column(x.imag, floor=fx),
+                     "vx": column(v.real, floor=fv), "vy": column(v.imag, floor=fv),
+                     "ax": column(a.real, floor=fa), "ay": column(a.imag, floor=fa)}
+              for name, (x, v, a) in motion.items()}
+    bodies = [kin.bodies[name] for name in mech.links]
+    fw = ROUND_OFF * max(float(np.max(np.abs(b.omega))) for b in bodies)
+    fe = ROUND_OFF * max(float(np.max(np.abs(b.eps))) for b in bodies)
+    links = {name: {"theta": column(np.degrees(kin.bodies[name].theta), 7),
+                    "omega": column(kin.bodies[name].omega, floor=fw),
+                    "epsilon": column(kin.bodies[name].eps, floor=fe)} for name in mech.links}
+    slides = {key: {"point": s.point, "fixed": s.carrier == FRAME,
+                    "s": column(s.t - st.t0[key], floor=fx), "v": column(s.v, floor=fv),
+                    "a": column(s.a, floor=fa), "k": column(s.coriolis_magnitude, floor=fa)}
+              for key, s in kin.slides.items()}
+    crossing = {label: [round(math.degrees(math.asin(min(1.0, abs(float(c))))), 1) for c in cond]
+                for label, cond in kin.condition.items()}
+    return {"phi": [round(float(p), 6) for p in phi], "points": points, "links": links,
+            "slides": slides, "crossing": crossing}
+
+
+# -- the mechanism's scheme for the drawing --------------------------------------------------------
+
+
+def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
+    """What the page needs to draw the mechanism: frame points, links (bars, blocks, slotted
+    links), guides on the frame, the trajectories worth drawing."""
+    mech = st.mech
+    carriers: dict[str, list[str]] = {}
+    for name, link in mech.links.items():
+        if link.slides_on is not None:
+            carriers.setdefault(mech.guides[link.slides_on].body, []).append(next(iter(link.local)))
+    links = []
+    for name, link in mech.links.items():
+        links.append({"name": name, "number": link.number, "joints": list(link.joints),
+                      "block": next(iter(link.local)) if link.slides_on is not None and len(link.joints) <= 1 else None,
+                      "slot": carriers.get(name, []) if name != FRAME else []})
+    guides = [{"point": next(iter(mech.links[s].local)),
+               "angle": math.degrees(g.angle),
+               "through": [mm(g.through.real / plans.mu_l), mm(g.through.imag / plans.mu_l)]}
+              for s, link in mech.links.items() if link.slides_on is not None
+              for g in [mech.guides[link.slides_on]] if g.body == FRAME]
+    pivots = sorted({j for link in mech.links.values() for j in link.joints if j in mech.frame})
+    frame = {name: [mm(z.real / plans.mu_l), mm(z.imag / plans.mu_l)] for name, z in mech.frame.items()}
+    out = st.output
+    output_point = out.name if out.kind == "slide" else next(
+        (j for j in reversed(mech.links[out.name].joints) if j not in mech.frame), out.name)
+    paths = list(dict.fromkeys([mech.crank.pin, output_point] + list(plans.trajectories)))
+    return {"frame": frame, "pivots": pivots, "links": links, "guides": guides,
+            "crank": {"link": mech.crank.link, "pivot": mech.crank.pivot, "pin": mech.crank.pin},
+            "trajectories": paths, "output": {"kind": out.kind, "name": out.name, "point": output_point}}
+
+
+# -- the values' table -----------------------------------------------------------------------------
+
+
+def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, Any]]:
+    """The rows of the values' table: |v| and |a| of every moving point, ω and ε of the turning
+    links, the slides' relative velocity and the Coriolis acceleration. ``q`` names the row."""
+    mech = st.mech
+    rows: list[dict[str, Any]] = []
+    pts = [p for p in grid["points"]]
+    rot = [n for n in mech.links if n != mech.crank.link and plans.scheme.rotating.get(n)
+           and len(mech.links[n].joints) >= 2]
+    for p in pts:
+        rows.append({"q": f"v_{p}", "plan": "velocity", "source": "point", "name": p, "unit": "m/s", "entry": p})
+    for n in rot:
+        rows.append({"q": f"omega_{n}", "plan": "velocity", "source": "omega", "name": n, "unit": "rad/s",
+                     "entry": f"omega_{n}"})
+    for key, s in sorted(grid["slides"].items()):
+        rows.append({"q": f"vrel_{key}", "plan": "velocity", "source": "slide_v", "name": key, "unit": "m/s",
+                     "entry": s["point"] if s["fixed"] else None, "point": s["point"]})
+    for p in pts:
+        rows.append({"q": f"a_{p}", "plan": "acceleration", "source": "point", "name": p, "unit": "m/s²", "entry": p})
+    for n in rot:
+        rows.append({"q": f"epsilon_{n}", "plan": "acceleration", "source": "epsilon", "name": n,
+                     "unit": "rad/s²", "entry": f"epsilon_{n}"})
+    for key, s in sorted(grid["slides"].items()):
+        if max(s["k"]) > 0:
+            rows.append({"q": f"k_{key}", "plan": "acceleration", "source": "slide_k", "name": key,
+                         "unit": "m/s²", "entry": None, "point": s["point"]})
+    return rows
+
+
+def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, list]]:
+    """What the plans of each lab position read, per row: [mm or null, value, error % or null];
+    ω and ε signed (+ counter-clockwise) as the exact column shows them; a slide's relative
+    velocity negative where the drawn vector points against the exact one (the page gives it the
+    exact value's sign along the guide)."""
+    out: dict[str, dict[str, list]] = {}
+    for p in plans.positions:
+        got: dict[str, list] = {}
+        for plan in (p.velocity, p.acceleration):
+            if plan is None:
+                continue
+            for row in rows:
+                if row["plan"] != plan.kind:
+                    continue
+                e = plan.entries.get(row["entry"]) if row["entry"] else None
+                if e is None and row["source"] in ("slide_v", "slide_k"):
+                    e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
+                if e is None:
+                    continue
+                value = e.vector.real if row["source"] in ("omega", "epsilon") else e.value
+                if row["source"] == "slide_v" and (e.vector * e.exact.conjugate()).real < 0:
+                    value = -value      # drawn against the exact sense: the page shows the opposite sign
+                got[row["q"]] = [None if e.mm is None else mm(e.mm), sig(value, 6),
+                                 None if e.error_pct is None else sig(e.error_pct, 7)]
+        out[str(p.key)] = got
+    return out
+
+
+def relative_entry(entries: dict, point: str, prefix: str = ""):
+    """The plan's entry of a sliding pair's relative motion at ``point``: "A3A2" (v_A3A2), or with
+    ``prefix="k_"`` its Coriolis component "k_A3A2"."""
+    for key, e in entries.items():
+        rest = key.removeprefix(prefix) if key.startswith(prefix) else None
+        if rest and not rest.startswith("k_") and rest.startswith(point) and same_point(rest):
+            return e
+    return None
+
+
+# -- the construction records and their captions ---------------------------------------------------
+
+GUIDE = {"en": "the guide", "uk": "напрямній"}
+
+
+def split_pair(text: str, names: list[str]) -> tuple[str, str] | None:
+    """"A3O" → ("A3", "O"): a subscript of two point names."""
+    for k in range(1, len(text)):
+        if text[:k] in names and text[k:] in names:
+            return text[:k], text[k:]
+    return None
+
+
+def same_point(sub: str) -> bool:
+    """"A3A2": two bodies' points at one place (a sliding pair) — the relative motion is along the guide."""
+    return re.fullmatch(r"([A-Za-z]+)[\d_]+\1[\d_]*", sub) is not None
+
+
+def parse_term(term: str) -> tuple[str, str, str]:
+    """"a^τ_A3O" → ("a", "τ", "A3O"); "v_CB" → ("v", "", "CB")."""
+    m = re.match(r"^([av])(?:\^(\S))?_(\S+)$", term.strip())
+    return (m.group(1), m.group(2) or "", m.group(3)) if m else ("", "", term.strip())
+
+
+def equations(step: str) -> tuple[str, list[list[str]]]:
+    """The step's vector equations: "v_C = v_B + v_CB, v_C ∥ the guide" → ("v_C",
+    [["v_B", "v_CB"], ["", "v_C"]]) — each a known base and the components laid off from it."""
+    body, _, tail = step.partition(", ")
+    parts = [s.strip() for s in body.split("=")]
+    lhs, rhs = parts[0], [[t.strip() for t in p.split(" + ")] for p in parts[1:]]
+    if tail.strip().startswith(lhs) and "∥" in tail:
+        rhs.append(["", lhs])
+    return lhs, rhs
+
+
+class Captions:
+    """Names plan points and words each primitive of a velocity or acceleration plan."""
+
+    def __init__(self, plans: Plans, plan, lang: str):
+        self.plan, self.lang = plan, lang
+        mech = plans.study.mech
+        self.names = mech.point_names() + list(plans.scheme.coincident.values())
+        self.mech = mech
+        self.pole = "p_v" if plan.kind == "velocity" else "π"
+        self.named = dict(plan.named)
+
+    def at(self, z: complex) -> str:
+        if abs(z) < 1e-6:
+            return self.pole
+        best = min(self.named.items(), key=lambda kv: abs(kv[1] - z), default=None)
+        return best[0] if best and abs(best[1] - z) < 1e-6 else ""
+
+    def en(self) -> bool:
+        return self.lang == "en"
+
+    def crank(self) -> str:
+        cr = self.mech.crank
+        arm = f"{cr.pivot}{cr.pin}"
+        a = self.at(complex(*_end(self.plan, cr.pin)))
+        if self.plan.kind == "velocity":
+            return (f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, in the sense of ω1" if self.en() else
+                    f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, у бік ω1")
+        tangential = f" + ε1·l_{arm} ⊥ {arm}" if cr.epsilon else ""
+        return (f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, toward {cr.pivot}{tangential}"
+                if self.en() else
+                f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, до {cr.pivot}{tangential}")
+
+    def base(self, term: str) -> str:
+        """The plan point a vector equation starts from: v_B → b, v_O2 (a fixed point) → the pole."""
+        _, _, point = parse_term(term)
+        if point in self.mech.frame or not point:
+            return self.pole
+        return point.lower()
+
+    def relation(self, term: str, guided: bool) -> str:
+        """⊥ XY for a rotation about another point, ∥ the guide for a slide."""
+        _, sup, sub = parse_term(term)
+        if guided or sup == "r" or same_point(sub):
+            return f"∥ {GUIDE[self.lang]}"
+        return f"⊥ {sub}"
+
+    def chain(self, term: str, role: str, end: str) -> str:
+        _, sup, sub = parse_term(term)
+        pair = split_pair(sub, self.names) or (sub, "")
+        if role == "coriolis":
+            return (f"Coriolis {term} = 2·ω·v_{sub}: v_{sub} turned 90° in the sense of ω → {end}" if self.en() else
+                    f"прискорення Коріоліса {term} = 2·ω·v_{sub}: v_{sub}, повернута на 90° у бік ω → {end}")
+        if role == "normal":
+            return (f"{term} = v²_{sub}/l_{sub} ∥ {sub}, toward {pair[1]} → {end}" if self.en() else
+                    f"{term} = v²_{sub}/l_{sub} ∥ {sub}, до {pair[1]} → {end}")
+        return f"{term} → {end}"
+
+    def line(self, term: str, through: str, guided: bool) -> str:
+        rel = self.relation(term, guided)
+        return (f"line {rel} through {through} (the direction of {term})" if self.en() else
+                f"лінія {rel} через {through} (напрям {term})")
+
+    def unknown(self, term: str, first: bool, found: str) -> str:
+        if first:
+            return f"{term} up to the intersection" if self.en() else f"{term} до перетину"
+        return f"{found} at the intersection: {term}" if self.en() else f"{found} у точці перетину: {term}"
+
+    def absolute(self, point: str, end: str, similarity: bool) -> str:
+        sym = "v" if self.plan.kind == "velocity" else "a"
+        if similarity:
+            return (f"{end} by similarity; {self.pole}{end} = {sym}_{point}" if self.en() else
+                    f"{end} за подібністю; {self.pole}{end} = {sym}_{point}")
+        return f"{self.pole}{end} = {sym}_{point}"
+
+    def figure(self, link: str) -> str:
+        return (f"link {link} on the plan: its similar figure" if self.en() else
+                f"ланка {link} на плані: подібна фігура")
+
+
+def _end(plan, point: str) -> tuple[float, float]:
+    z = plan.entries[point].vector / plan.mu
+    return z.real, z.imag
+
+
+def _z(p: tuple[float, float]) -> complex:
+    return complex(p[0], p[1])
+
+
+def replay(plans: Plans, plan, rec: Record, lang: str) -> list[dict[str, Any]]:
+    """The construction in the draftsman's order: a list of steps, each with the indices of the
+    record's primitives it draws and its caption. The crank's vector comes first."""
+    cap = Captions(plans, plan, lang)
+    items = rec.items
+    mech = plans.study.mech
+    steps: list[dict[str, Any]] = []
+    pin_end = complex(*_end(plan, mech.crank.pin))
+    crank_items = [i for i, p in enumerate(items) if p.kind == "vector" and p.role == "absolute"
+                   and abs(_z(p.points[1]) - pin_end) < 1e-6]
+    pre = [i for i, p in enumerate(items) if p.step.startswith(f"a_{mech.crank.pin} =") and p.kind != "text"]
+    steps.append({"items": pre + crank_items, "caption": cap.crank(), "eq": ""})
+    done = set(pre + crank_items)
+    k = 0
+    while k < len(items):
+        p = items[k]
+        if k in done or p.kind == "text" or p.role == "pole":
+            k += 1
+            continue
+        if p.step and "=" in p.step and not p.step.startswith("similarity"):
+            j_end = k       # a group's primitives are consecutive in the record
+            while j_end < len(items) and items[j_end].step == p.step:
+                j_end += 1
+            steps += equation_steps(cap, items, list(range(k, j_end)), p.step)
+            k = j_end
+            continue
+        if p.kind == "vector" and p.role == "absolute":
+            end = _z(p.points[1])
+            point = _point_named(plan, end)
+            found = any(items[j].kind == "vector" and abs(_z(items[j].points[1]) - end) < 1e-6
+                        for s in steps for j in s["items"])
+            similar = p.step == "similarity" and not found
+            steps.append({"items": [k], "caption": cap.absolute(point, cap.at(end), similar),
+                          "eq": "", "similar": similar})
+        elif p.step.startswith("similarity: link "):
+            steps.append({"items": [k], "caption": cap.figure(p.step.removeprefix("similarity: link ")), "eq": ""})
+        else:
+            steps.append({"items": [k], "caption": p.step or p.role, "eq": ""})
+        k += 1
+    return known_first(steps, items)
+
+
+def known_first(steps: list[dict[str, Any]], items: list[Primitive]) -> list[dict[str, Any]]:
+    """A point found by similarity that a later group starts from (b for a_C = a_B + …) is drawn
+    before that group, as a draftsman must: the record keeps all similarity vectors to the end."""
+    out = list(steps)
+    for st in [s for s in steps if s.pop("similar", False)]:
+        end = _z(items[st["items"][0]].points[1])
+        k = out.index(st)
+        m = next((m for m in range(1, k) for j in out[m]["items"]
+                  if items[j].kind == "vector" and abs(_z(items[j].points[0]) - end) < 1e-6), None)
+        if m is None:
+            continue
+        while m > 1 and out[m]["eq"] and out[m - 1]["eq"] == out[m]["eq"]:
+            m -= 1
+        out.remove(st)
+        out.insert(m, st)
+    return out
+
+
+def _point_named(plan, end: complex) -> str:
+    for key, e in plan.entries.items():
+        if e.kind == "point" and abs(e.vector / plan.mu - end) < 1e-6:
+            return key
+    return ""
+
+
+def equation_steps(cap: Captions, items: list[Primitive], idx: list[int], step: str) -> list[dict[str, Any]]:
+    """One group's vector equations, primitive by primitive: the known components laid off (normal,
+    Coriolis), the direction line of each unknown, the unknowns up to their intersection."""
+    lang_step = step.replace("the guide", GUIDE[cap.lang])
+    lhs, eqs = equations(step)
+    out: list[dict[str, Any]] = []
+    q = list(idx)
+
+    def take(pred) -> int | None:
+        if q and pred(items[q[0]]):
+            return q.pop(0)
+        return None
+
+    for n, terms in enumerate(eqs):
+        chain, unknown = terms[1:-1], terms[-1]
+        guided = terms[0] == ""
+        through = cap.pole if guided else cap.base(terms[0])   # where the unknown's line starts
+        for term in chain:
+            _, sup, _ = parse_term(term)
+            role = {"n": "normal", "k": "coriolis"}.get(sup)
+            j = take(lambda p: p.kind == "vector" and p.role == role)
+            if j is not None:
+                end = cap.at(_z(items[j].points[1]))
+                through = end or through
+                out.append({"items": [j], "caption": cap.chain(term, role, end), "eq": lang_step})
+        line = take(lambda p: p.kind == "segment" and p.role == "direction")
+        vec = take(lambda p: p.kind == "vector" and p.role in ("relative", "tangential"))
+        if line is not None:
+            if vec is not None:
+                through = cap.at(_z(items[vec].points[0])) or through
+            out.append({"items": [line], "caption": cap.line(unknown, through or "…", guided), "eq": lang_step})
+        if vec is not None:
+            found = cap.at(_z(items[vec].points[1]))
+            out.append({"items": [vec], "caption": cap.unknown(unknown, n == 0, found), "eq": lang_step})
+    for j in q:     # anything the parse did not place keeps the equation as its caption
+        out.append({"items": [j], "caption": lang_step, "eq": lang_step})
+    return out
+
+
+def record_data(rec: Record) -> dict[str, Any]:
+    """A record's primitives as compact lists: [kind, flat points, role, radius, a0, a1, text]."""
+    prims = []
+    for p in rec.items:
+        flat = [mm(c) for xy in p.points for c in xy]
+        prims.append([p.kind, flat, p.role, mm(p.radius), round(p.angles[0], 2), round(p.angles[1], 2), p.text])
+    return {"items": prims}
+
+
+def label_steps(plan, rec: Record, steps: list[dict[str, Any]]) -> dict[int, int]:
+    """Each label shows from the first step that draws its plan point (the pole's from the start)."""
+    anchors = {req.text: req.at for req in plan.labels}
+    out = {}
+    for i, p in enumerate(rec.items):
+        if p.kind != "text":
+            continue
+        at = anchors.get(p.text)
+        out[i] = 0
+        if at is None or abs(at) < 1e-6:
+            continue
+        out[i] = next((s for s, st in enumerate(steps) for j in st["items"]
+                       if any(abs(_z(xy) - at) < 1e-6 for xy in rec.items[j].points)), 0)
+    return out
+
+
+def plan_records(plans: Plans, lang: str) -> list[dict[str, Any]]:
+    """Every plan of the lab's positions with its replay."""
+    from graphplan.drawing.plans import labelled
+    out = []
+    for p in plans.positions:
+        for plan in (p.velocity, p.acceleration):
+            if plan is None:
+                continue
+            rec = labelled(plan)
+            steps = replay(plans, plan, rec, lang)
+            labels = label_steps(plan, rec, steps)
+            data = record_data(rec)
+            data |= {"kind": plan.kind, "key": p.key, "index": p.index, "phi": round(p.phi, 6),
+                     "mu": plan.mu, "steps": steps, "labels": {str(k): v for k, v in sorted(labels.items())}}
+            out.append(data)
+    return out
+
+
+# -- warnings, diagrams ---------------------------------------------------------------------------
+
+def warning_text(w, lang: str) -> str:
+    if lang == "en":
+        return w.text
+    plan = {"position": "план положень", "velocity": "план швидкостей", "acceleration": "план прискорень"}
+    where = plan.get(w.plan, w.plan)
+    if w.kind == "dead centre":
+        return f"{where}: мертве положення групи {w.group}, швидкості зникають, відсоток не рахується"
+    if w.kind == "arcs":
+        return f"{where}, {w.group}: засічки перетинаються під кутом {w.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°)"
+    return f"{where}, {w.group}: лінії напрямків перетинаються під кутом {w.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°)"
+
+
+def warnings_data(st: Study, plans: Plans, lang: str) -> dict[str, Any]:
+    return {"extremes": [round(e, 6) for e in st.extremes],
+            "plans": {str(p.key): [warning_text(w, lang) for w in p.warnings] for p in plans.positions if p.warnings},
+            "study": list(st.warnings), "small": SMALL_ANGLE_DEG}
+
+
+def diagrams_data(st: Study, precision: float, lang: str, phi: np.ndarray) -> dict[str, Any] | None:
+    """The s–v–a diagrams by chords (the scene's settings) and the exact curves on the grid."""
+    from graphplan.graphic.diagrams import chord_diagrams, exact_motion
+    from graphplan.report.diagrams import diagrams_json
+    task = st.mech.task.diagram
+    d = chord_diagrams(st, point=task.get("point"), divisions=task.get("divisions"),
+                       L=task.get("L_mm", 240.0), H1=task.get("H1_mm", 30.0), H2=task.get("H2_mm", 30.0),
+                       precision=precision, lang=lang)
+    doc = diagrams_json(d)
+    turn = st.from_position0(phi)
+    s, v, a = exact_motion(st, d.output, turn)
+    pick = lambda rows: [[round(r["phi_deg"], 6), sig(r["value"], 6), sig(r["analytic"], 6)] for r in rows]  # noqa: E731
+    return {"symbols": list(d.symbols), "sub": d.sub, "unit": d.unit, "point": d.point,
+            "L": d.L, "H1": d.H1, "H2": d.H2, "divisions": d.divisions,
+            "mu": {"s": d.mu_s, "t": d.mu_t, "v": d.mu_v, "a": d.mu_a},
+            "exact": {"s": column(s, 7), "v": column(v, 7), "a": column(a, 7)},
+            "chords": {"s": pick(doc["s"]), "v": pick(doc["v"]), "a": pick(doc["a"])}}
+
+
+# -- the page -------------------------------------------------------------------------------------
+
+def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: str = "uk",
+                  plans: Plans | None = None) -> dict[str, Any]:
+    """Everything the page shows, computed here (SI units; drawing mm where said)."""
+    if lang not in ("uk", "en"):
+        raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
+    plans = plans or build_plans(st, precision=precision)
+    phi = angle_grid(step, [p.phi for p in plans.positions])
+    grid = grid_data(st, plans, phi)
+    rows = table_rows(st, plans, grid)
+    mech = st.mech
+    meta = mech.task.meta
+    title = meta.get("title_en", mech.title) if lang == "en" and meta.get("title_en") else mech.title
+    return {
+        "title": title, "lang": lang, "precision": plans.precision, "step": step,
+        "omega1": mech.omega1,
+        "structure": st.structure.formula,
+        "scales": {"mu_l": plans.mu_l, "mu_v": plans.mu_v, "mu_a": plans.mu_a},
+        "phi0": round(st.phi0, 6),
+        "positions": [{"key": p.key, "index": p.index, "phi": round(p.phi, 6),
+                       "accel": p.acceleration is not None} for p in plans.positions],
+        "scheme": scheme_data(st, plans),
+        "grid": grid,
+        "rows": rows,
+        "readings": readings(plans, rows),
+        "records": plan_records(plans, lang),
+        "diagrams": diagrams_data(st, plans.precision, lang, phi),
+        "warnings": warnings_data(st, plans, lang),
+    }
+
+
+def _asset(name: str) -> str:
+    return resources.files("graphplan.report").joinpath("explorer_assets", name).read_text(encoding="utf-8")
+
+
+def explorer_html(st: Study, precision: float = 0.5, step: float = 1.0, lang: str = "uk",
+                  plans: Plans | None = None) -> str:
+    """The explorer as one self-contained HTML page (inline style, script and data)."""
+    data = explorer_data(st, precision, step, lang, plans)
+    payload = json.dumps(data, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
+    payload = payload.replace("</", "<\\/")     # a "</script>" inside a caption cannot end the script
+    page = _asset("explorer.html")
+    return (page.replace("{{lang}}", lang)
+                .replace("{{title}}", html.escape(data["title"]))
+                .replace("{{style}}", _asset("explorer.css"))
+                .replace("{{data}}", payload)
+                .replace("{{script}}", _asset("explorer.js")))
+
+
+def explorer_iframe(st: Study, height: int = 1400, **options) -> str:
+    """The explorer for a notebook's ``_repr_html_``: the page in an ``<iframe srcdoc>``, because
+    JupyterLab does not run scripts written straight into an output cell. ``options`` as
+    ``explorer_html``."""
+    page = html.escape(explorer_html(st, **options), quote=True)
+    return (f'<iframe srcdoc="{page}" style="width:100%;height:{int(height)}px;border:0;background:#fff" '
+            'sandbox="allow-scripts"></iframe>')
