@@ -26,6 +26,7 @@ from graphplan.exact.positions import Study, study
 from graphplan.model.scene import build
 
 SEARCH_GRID = 1440      # 0.25° samples, then bisection to ~1e-9°
+MAX_KEY_BYTES = 64 * 1024 * 1024   # a key of 3600 positions is a few MB
 ABS_FLOOR = 1e-12       # SI: a floor for quantities that are zero over the whole turn
 
 
@@ -145,12 +146,14 @@ def load_keys(path: str | Path) -> dict[str, dict[str, Any]]:
 
 
 def _json(path: Path) -> dict[str, Any]:
+    text = read_text(path, "key file", MAX_KEY_BYTES)
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise GraphplanError("no such key file", str(path)) from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise GraphplanError(f"cannot read the key: {exc}", str(path)) from None
+        doc = json.loads(text)
+    except (json.JSONDecodeError, RecursionError) as exc:
+        raise GraphplanError(f"cannot read the key: {str(exc)[:80]}", str(path)) from None
+    if not isinstance(doc, dict):
+        raise GraphplanError("not a graphplan key (not a JSON object)", str(path))
+    return doc
 
 
 def _key(path: Path) -> dict[str, Any]:
