@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 from typing import Any
 
 from graphplan.util.errors import GraphplanError
@@ -12,7 +13,44 @@ class Parser(argparse.ArgumentParser):
     """argparse that reports a usage error as one line (exit 2)."""
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        raise GraphplanError(f"{self.prog}: {message} (see --help)")
+        command = self.prog.partition(" ")[2]       # "graphplan analyze" → "analyze"; main adds "graphplan: "
+        raise GraphplanError(f"{command}: {message} (see --help)" if command else f"{message} (see --help)")
+
+
+# Every numeric option's meaningful range, checked once before any command runs (main.check_options):
+# dest → (low, high, unit, low excluded). A value outside is one line naming the option.
+OPTION_BOUNDS: dict[str, tuple[float, float, str, bool]] = {
+    "phi": (-1e6, 1e6, "deg", False),
+    "precision": (0.0, 10.0, "mm", False),
+    "mu_l": (1e-8, 10.0, "m/mm", False),
+    "mu_v": (1e-8, 1e8, "(m/s)/mm", False),
+    "mu_a": (1e-6, 1e14, "(m/s²)/mm", False),
+    "h1": (1.0, 1000.0, "mm", False),
+    "h2": (1.0, 1000.0, "mm", False),
+    "L": (10.0, 2000.0, "mm", False),
+    "height": (1.0, 2000.0, "mm", False),
+    "tolerance": (0.0, 100.0, "", True),
+    "positions": (2, 100000, "", False),
+    "at": (0, 3600, "", False),
+    "jobs": (1, 64, "", False),
+    "delta": (0.0, 1.0, "", True),
+}
+
+
+def check_options(args: argparse.Namespace) -> None:
+    """Every numeric option within its range (OPTION_BOUNDS), before any work: one line naming it."""
+    for dest, (lo, hi, unit, lo_open) in OPTION_BOUNDS.items():
+        given = getattr(args, dest, None)
+        values = given if isinstance(given, list) else [given]
+        for v in values:
+            if not isinstance(v, (int, float)) or isinstance(v, bool):
+                continue
+            low_ok = v > lo if lo_open else v >= lo
+            if not (math.isfinite(v) and low_ok and v <= hi):
+                option = "--" + dest.replace("_", "-")
+                unit_text = f" {unit}" if unit else ""
+                raise GraphplanError(f"{option} must be from {lo:g}{' (exclusive)' if lo_open else ''} "
+                                     f"to {hi:g}{unit_text}, got {v:g}")
 
 
 def dumps(doc: Any) -> str:

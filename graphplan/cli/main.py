@@ -4,11 +4,13 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import warnings
+from contextlib import contextmanager
 from importlib import import_module
 from collections.abc import Callable, Sequence
 
 from graphplan import __version__
-from graphplan.cli.common import Parser, _load, _scene_arg, dumps  # noqa: F401  (older imports)
+from graphplan.cli.common import Parser, _load, _scene_arg, check_options, dumps  # noqa: F401
 from graphplan.util.errors import GraphplanError
 
 Handler = Callable[[argparse.Namespace], int]
@@ -39,6 +41,18 @@ COMMAND_MODULES: tuple[str, ...] = (
 )
 
 
+@contextmanager
+def np_quiet():
+    """numpy's floating-point warnings off for one command: a non-finite intermediate is turned into
+    the named error where the solver runs (exact.kinematics, exact.kinetostatics, graphic.*), never
+    printed as a RuntimeWarning with a source line. Restored afterwards (main() is called in-process
+    by the tests and by notebooks)."""
+    import numpy as np
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        yield
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
@@ -47,7 +61,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not getattr(args, "handler", None):
             build_parser().print_help()
             return 2
-        return args.handler(args)
+        check_options(args)
+        with np_quiet():
+            return args.handler(args)
     except GraphplanError as exc:
         print(f"graphplan: {exc.line()}", file=sys.stderr)
         return 2

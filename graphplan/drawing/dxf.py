@@ -89,6 +89,18 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
             text = msp.add_text(lettering(prim.text), height=prim.size,
                                 dxfattribs={"layer": prim.layer, "style": "GOST"})
             text.set_placement(prim.points[0], align=align[prim.anchor])
+    _classes_in_order(doc)
     stream = io.StringIO()
     doc.write(stream)
     return stream.getvalue().encode("utf-8")
+
+
+def _classes_in_order(doc) -> None:
+    """The CLASSES section in a fixed order. ezdxf adds a class per entity type in use from a set at
+    write time, so its order followed PYTHONHASHSEED; adding them here first — the version's
+    required ones, then the types in use sorted — makes the bytes the same in every run."""
+    from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
+    for name in REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004):
+        doc.classes.add_class(name)
+    for name in sorted(doc.entitydb.dxf_types_in_use()):
+        doc.classes.add_class(name)

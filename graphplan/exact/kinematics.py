@@ -158,10 +158,24 @@ def solve(mech: Mechanism, structure: Structure, phi_deg: Array | list[float] | 
                          zero + crank.epsilon),
     }
     kin = Kinematics(mech, structure, phi, bodies)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(all="ignore"):
         for dyad in structure.dyads:
             _SOLVERS[dyad.kind](kin, dyad, mech.branches.get(dyad.key, 1))
+            _finite(kin, dyad)
     return kin
+
+
+def _finite(kin: Kinematics, dyad: Dyad) -> None:
+    """Where a group's solution is not finite (a near-singular 2×2, an overflow) it is not assembled:
+    Study.solve names the group and the crank angle instead of passing NaN on."""
+    ok = kin.valid.get(dyad.label, np.ones(kin.phi_deg.shape, dtype=bool))
+    for name in (dyad.a, dyad.b):
+        body = kin.bodies.get(name)
+        if body is None:
+            continue
+        for arr in (body.origin, body.vo, body.ao, body.turn, body.omega, body.eps):
+            ok = ok & np.isfinite(arr)
+    kin.valid[dyad.label] = ok
 
 
 # -- helpers shared by the dyad solvers ------------------------------------------------------------

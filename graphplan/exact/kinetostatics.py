@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.exact.kinematics import Kinematics, cross, dot, solve, solve2
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study
@@ -419,20 +419,33 @@ def analyse(st: Study, phi_deg: Array | list[float] | float) -> Kinetostatics:
     load_list = loads(st, kin, working)
     s = _Solver(st, kin, load_list)
     groups: list[GroupForces] = []
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(all="ignore"):
         for d in reversed(st.structure.dyads):
             keys = _GROUPS[d.kind](s, d)
             s.transfer(keys, (d.a, d.b))
             groups.append(GroupForces(d.label, d.kind, (d.a, d.b), tuple(keys), d))
-    mech = st.mech
-    crank = mech.crank.link
-    pivot = kin.point(mech.crank.pivot)[0]
-    pair = Pair("R", (crank, FRAME), mech.crank.pivot)
-    key = s.found(pair, crank, -s.force(crank), None, CRANK_LABEL)
-    groups.append(GroupForces(CRANK_LABEL, "crank", (crank,), (key,)))
-    m_b = -s.moment(crank, pivot)
+            _finite(st, phi, d.label, [s.reactions[k].force for k in keys])
+        mech = st.mech
+        crank = mech.crank.link
+        pivot = kin.point(mech.crank.pivot)[0]
+        pair = Pair("R", (crank, FRAME), mech.crank.pivot)
+        key = s.found(pair, crank, -s.force(crank), None, CRANK_LABEL)
+        groups.append(GroupForces(CRANK_LABEL, "crank", (crank,), (key,)))
+        m_b = -s.moment(crank, pivot)
+    _finite(st, phi, CRANK_LABEL, [s.reactions[key].force, m_b])
     return Kinetostatics(st, kin, phi, working, load_list, s.reactions, groups, m_b,
                          m_b / mech.crank.length)
+
+
+def _finite(st: Study, phi: Array, group: str, arrays: list[Array]) -> None:
+    """A group's reactions must be finite (an overflow of huge loads, a near-singular group): the
+    named error with the group and the first crank angle, never NaN passed on to a table or JSON."""
+    ok = np.ones(phi.shape, dtype=bool)
+    for arr in arrays:
+        ok &= np.isfinite(np.broadcast_to(arr, phi.shape))
+    if not np.all(ok):
+        raise SceneError(f"group {group}: the force analysis is not finite at crank angle "
+                         f"{float(phi[~ok][0]):.2f}° (loads or geometry out of range)", st.mech.source)
 
 
 def at_scene_angle(st: Study) -> float:

@@ -9,6 +9,7 @@ import math
 import numpy as np
 
 from graphplan.model.mechanism import FRAME
+from graphplan.util.errors import GraphplanError
 from graphplan.model.structure import Dyad
 from graphplan.graphic.draftsman import measure
 from graphplan.graphic.position_plan import Image, Layout, Scheme, guide_line, sub, where
@@ -143,6 +144,10 @@ def velocity_rpr(plan: VelocityPlan, d: Dyad) -> None:
         plan.entry(f"{a3}{pc}", "relative", v3 - vpc, rel)
     # ω = v_A3Pc / l_PcA with the distance Pc A measured off the position plan
     plan.rocker_length[carrier] = measure(abs(Xs - Xc), plan.precision) / lay.poses[FRAME].k
+    if plan.rocker_length[carrier] == 0:
+        raise GraphplanError(f"{plan.kind} plan at φ = {lay.phi:.4g}°, {d.label}: the block is at the "
+                             f"rocker's pivot {pc} (their distance reads 0 mm on the position plan), "
+                             "ω of the rocker cannot be read there", sc.mech.source)
     plan.turn_rate(carrier, Xc, Xs, v3 - vpc, plan.rocker_length[carrier], rel)
     plan.inherit(slider, carrier)
 

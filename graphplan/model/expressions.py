@@ -18,16 +18,26 @@ _CONSTS = {"pi": math.pi}
 
 def evaluate(text: str, names: dict[str, float], where: str) -> float:
     """Evaluate an arithmetic expression over numbers, known names and a few functions."""
+    from graphplan.model.bounds import MAX_EXPRESSION, MAX_EXPRESSION_DEPTH, short
+    shown = repr(short(text))
+    if len(text) > MAX_EXPRESSION:
+        raise SceneError(f"the expression {shown} is longer than {MAX_EXPRESSION} characters", where)
     try:
-        tree = ast.parse(text.strip(), mode="eval")
-    except SyntaxError:
-        raise SceneError(f"cannot read the expression {text!r}", where) from None
+        source = text.strip()
+        tree = ast.parse(source, mode="eval")
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        raise SceneError(f"cannot read the expression {shown}", where) from None
+    if _depth(tree) > MAX_EXPRESSION_DEPTH:
+        raise SceneError(f"the expression {shown} is nested more than {MAX_EXPRESSION_DEPTH} deep", where)
+    text = short(text)
 
     def walk(node: ast.AST) -> float:
         if isinstance(node, ast.Expression):
             return walk(node.body)
         if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) \
                 and not isinstance(node.value, bool):
+            if "_" in (ast.get_source_segment(source, node) or ""):   # 7_2 is not 72 to a person
+                raise SceneError(f"{text!r}: write numbers without '_'", where)
             return float(node.value)
         if isinstance(node, ast.Name):
             if node.id in names:
@@ -36,7 +46,10 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
                 return _CONSTS[node.id]
             raise SceneError(f"unknown name {node.id!r} in {text!r}", where)
         if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
-            return _BINARY[type(node.op)](walk(node.left), walk(node.right))
+            result = _BINARY[type(node.op)](walk(node.left), walk(node.right))
+            if isinstance(result, complex):            # (-8) ** 0.5
+                raise ValueError("the result is not a real number")
+            return float(result)
         if isinstance(node, ast.UnaryOp) and type(node.op) in _UNARY:
             return _UNARY[type(node.op)](walk(node.operand))
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
@@ -47,7 +60,17 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
     try:
         value = walk(tree)
     except (ValueError, ZeroDivisionError, OverflowError, TypeError) as exc:
-        raise SceneError(f"cannot evaluate {text!r}: {exc}", where) from None
+        raise SceneError(f"cannot evaluate {text!r}: {short(str(exc), 60)}", where) from None
     if not math.isfinite(value):
         raise SceneError(f"{text!r} is not a finite number", where)
     return value
+
+
+def _depth(tree: ast.AST) -> int:
+    """The deepest chain of nodes in an expression's tree (walked without recursion)."""
+    deepest, stack = 0, [(tree, 1)]
+    while stack:
+        node, depth = stack.pop()
+        deepest = max(deepest, depth)
+        stack.extend((child, depth + 1) for child in ast.iter_child_nodes(node))
+    return deepest

@@ -14,6 +14,7 @@ from typing import Any
 
 from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.util.files import read_text
+from graphplan.model import bounds as B
 from graphplan.model.expressions import evaluate
 from graphplan.model.mechanism import FRAME, Crank, Force, Guide, Link, Mechanism, Task
 
@@ -41,7 +42,7 @@ def load(path: str | Path | None) -> Mechanism:
     """Read a scene file (the built-in crank-slider when ``path`` is None)."""
     path = builtin_path() if path is None else Path(path)
     try:
-        text = read_text(path, "scene file")
+        text = read_text(path, "scene file", B.MAX_SCENE_BYTES)
     except GraphplanError as exc:
         raise SceneError(str(exc), exc.where) from None
     return loads(text, str(path))
@@ -49,15 +50,12 @@ def load(path: str | Path | None) -> Mechanism:
 
 def loads(text: str, where: str = "<scene>") -> Mechanism:
     """Parse scene text; ``where`` names the file in error messages."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"TOML syntax error: {exc}", where) from None
-    return build(data, where)
+    return build(B.parse_toml(text, where), where)
 
 
 def build(data: dict[str, Any], where: str = "<scene>") -> Mechanism:
     """A mechanism from an already parsed scene tree (e.g. a base scene with a variant's overrides)."""
+    B.check_tree(data, where)
     return _Reader(copy.deepcopy(data), where).mechanism()
 
 
@@ -81,11 +79,13 @@ class _Reader:
             raise self.fail(f"{key}.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(allowed))})")
         return value
 
-    def number(self, value: Any, key: str, positive: bool = False) -> float:
+    def number(self, value: Any, key: str, positive: bool = False,
+               bounds: B.Range | None = None) -> float:
+        """A number or an expression; finite, positive if asked, within ``bounds`` if given."""
         if isinstance(value, bool):
             raise self.fail(key, "must be a number")
         if isinstance(value, (int, float)):
-            result = float(value)
+            result = B.to_float(value, key, self.where)
         elif isinstance(value, str):
             result = evaluate(value, self.names, f"{self.where}: {key}")
         else:
@@ -94,17 +94,24 @@ class _Reader:
             raise self.fail(key, "must be finite")
         if positive and result <= 0:
             raise self.fail(key, f"must be positive, got {result:g}")
-        return result
+        return B.check(result, bounds, key, self.where) if bounds else result
 
     def xy(self, value: Any, key: str) -> complex:
         if not isinstance(value, list) or len(value) != 2:
             raise self.fail(key, "must be a pair [x, y]")
-        return complex(self.number(value[0], key), self.number(value[1], key))
+        return complex(self.number(value[0], key, bounds=B.COORDINATE),
+                       self.number(value[1], key, bounds=B.COORDINATE))
 
     def name(self, value: Any, key: str) -> str:
         if not isinstance(value, (str, int)) or isinstance(value, bool) or str(value).strip() == "":
             raise self.fail(key, "must be a name")
-        return str(value).strip()
+        if isinstance(value, int) and abs(value) > B.MAX_INT:
+            raise self.fail(key, "must be a name")
+        name = str(value).strip()
+        problem = B.name_problem(name)
+        if problem:
+            raise self.fail(key, f"{problem}, got {B.short(repr(name))}")
+        return name
 
     # -- sections ---------------------------------------------------------------------------
     def mechanism(self) -> Mechanism:
@@ -143,17 +150,18 @@ class _Reader:
         loads = self.table(data.get("loads", {}), "loads", _LOADS)
         links = self.apply_loads(self.shape_joints(links, frame), loads)
         mech = Mechanism(
-            title=str(data.get("title", "mechanism")), frame=frame, guides=guides, links=links,
+            title=B.clean_text(data.get("title", "mechanism")) or "mechanism", frame=frame, guides=guides, links=links,
             crank=crank, branches=self.read_branches(data.get("branch", {})),
             output=self.name(positions["output"], "positions.output") if "output" in positions else None,
             start=self.read_start(positions.get("start", "max")),
             working_stroke=self.read_working(positions.get("working_stroke", "slow")),
             forces=self.read_forces(data.get("force", [])),
-            g=self.number(loads.get("g", 9.81), "loads.g"),
+            g=self.number(loads.get("g", 9.81), "loads.g", bounds=B.GRAVITY),
             params=dict(self.names), derived=derived,
             task=Task(count=self.read_count(positions.get("count", 12)),
                       accel=self.read_accel(positions.get("accel", [])),
-                      force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg")
+                      force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg",
+                                             bounds=B.ANGLE)
                                  if "force_phi_deg" in positions else None),
                       diagram=self.read_diagram(data.get("diagrams", {})), meta=self.read_meta(data)),
             source=self.where)
@@ -165,7 +173,9 @@ class _Reader:
         if not isinstance(params, dict):
             raise self.fail("params", "must be a table")
         for key, value in params.items():
-            self.names[key] = self.number(value, f"params.{key}")
+            if not key.isidentifier():
+                raise self.fail(f"params.{B.short(key)}", "a parameter's name is a word such as r or l_AB")
+            self.names[key] = self.number(value, f"params.{key}", bounds=B.PARAMETER)
 
     def read_synthesis(self, raw: Any) -> dict[str, float]:
         """Quick-return synthesis (seed 000): θ = 180°(K−1)/(K+1), r = ℓ·sin(θ/2), l = H/(2 sin(θ/2))."""
@@ -177,11 +187,12 @@ class _Reader:
         for key in ("K", "stroke", "centre_distance"):
             if key not in raw:
                 raise self.fail(f"synthesis.{key}", "missing")
-        k = self.number(raw["K"], "synthesis.K", positive=True)
+        k = self.number(raw["K"], "synthesis.K", positive=True, bounds=B.TIME_RATIO)
         if k <= 1:
             raise self.fail("synthesis.K", f"the time-ratio coefficient must exceed 1, got {k:g}")
-        stroke = self.number(raw["stroke"], "synthesis.stroke", positive=True)
-        centre = self.number(raw["centre_distance"], "synthesis.centre_distance", positive=True)
+        stroke = self.number(raw["stroke"], "synthesis.stroke", positive=True, bounds=B.LENGTH)
+        centre = self.number(raw["centre_distance"], "synthesis.centre_distance", positive=True,
+                             bounds=B.LENGTH)
         theta = math.pi * (k - 1) / (k + 1)
         derived = {"theta_deg": math.degrees(theta), "crank": centre * math.sin(theta / 2),
                    "rocker": stroke / (2 * math.sin(theta / 2))}
@@ -201,13 +212,14 @@ class _Reader:
         guides = {}
         for name, g in self.table(raw.get("guides", {}), "frame.guides",
                                   set(raw.get("guides", {}))).items():
+            name = self.name(name, "frame.guides")
             guides[name] = self.read_guide(g, f"frame.guides.{name}", name, FRAME)
         return frame, guides
 
     def read_guide(self, raw: Any, key: str, name: str, body: str) -> Guide:
         raw = self.table(raw, key, {"through", "angle_deg"})
         through = self.xy(raw.get("through", [0, 0]), f"{key}.through")
-        angle = math.radians(self.number(raw.get("angle_deg", 0), f"{key}.angle_deg"))
+        angle = math.radians(self.number(raw.get("angle_deg", 0), f"{key}.angle_deg", bounds=B.ANGLE))
         return Guide(name=name, body=body, through=through, angle=angle)
 
     def read_points(self, raw: Any, key: str, length: float | None,
@@ -216,6 +228,7 @@ class _Reader:
         if raw is None:
             return
         for name, value in self.table(raw, key, set(raw) if isinstance(raw, dict) else set()).items():
+            name = self.name(name, key)
             if name in local:
                 raise self.fail(f"{key}.{name}", "the point is already defined on this link")
             if isinstance(value, list):
@@ -225,6 +238,7 @@ class _Reader:
                 if length is None:
                     raise self.fail(f"{key}.{name}", "a fraction needs the link's length; "
                                     "give [along, across] in metres")
+                B.check(fraction * length, B.COORDINATE, f"{key}.{name} (fraction × length)", self.where)
                 local[name] = complex(fraction * length, 0.0)
 
     def read_crank(self, raw: Any, frame: dict[str, complex]) -> tuple[Crank, Link, Guide | None]:
@@ -236,11 +250,11 @@ class _Reader:
         pin = self.name(raw["pin"], "crank.pin")
         if pivot not in frame:
             raise self.fail("crank.pivot", f"{pivot!r} is not a frame point ({', '.join(frame)})")
-        length = self.number(raw["length"], "crank.length", positive=True)
+        length = self.number(raw["length"], "crank.length", positive=True, bounds=B.LENGTH)
         if ("omega" in raw) == ("rpm" in raw):
             raise self.fail("crank", "give the speed as exactly one of omega (rad/s) or rpm")
-        speed = (self.number(raw["omega"], "crank.omega", positive=True) if "omega" in raw
-                 else self.number(raw["rpm"], "crank.rpm", positive=True) * math.pi / 30)
+        speed = (self.number(raw["omega"], "crank.omega", positive=True, bounds=B.OMEGA) if "omega" in raw
+                 else self.number(raw["rpm"], "crank.rpm", positive=True, bounds=B.RPM) * math.pi / 30)
         direction = raw.get("direction", "ccw")
         if direction not in ("ccw", "cw"):
             raise self.fail("crank.direction", f'must be "ccw" or "cw", got {direction!r}')
@@ -251,11 +265,11 @@ class _Reader:
         self.read_points(raw.get("points"), "crank.points", length, local)
         guide = self.read_guide(raw["guide"], "crank.guide", name, name) if "guide" in raw else None
         link = Link(name=name, number=1, joints=(pivot, pin), local=local, length=length,
-                    mass=self.opt_positive(raw, "mass", "crank"),
-                    inertia=self.opt_positive(raw, "inertia", "crank"),
+                    mass=self.opt_bounded(raw, "mass", "crank", B.MASS),
+                    inertia=self.opt_bounded(raw, "inertia", "crank", B.INERTIA),
                     com=self.com(raw, "crank", local, 1))
         crank = Crank(link=name, pivot=pivot, pin=pin, length=length, omega=omega,
-                      epsilon=self.number(raw.get("epsilon", 0.0), "crank.epsilon"))
+                      epsilon=self.number(raw.get("epsilon", 0.0), "crank.epsilon", bounds=B.EPSILON))
         return crank, link, guide
 
     def read_link(self, raw: Any, key: str, number: int,
@@ -269,12 +283,15 @@ class _Reader:
         joints = tuple(self.name(j, f"{key}.joints") for j in joints_raw)
         if len(set(joints)) != len(joints):
             raise self.fail(f"{key}.joints", "a joint is listed twice")
-        number = int(self.number(raw.get("number", number), f"{key}.number", positive=True))
+        number = B.check_count(raw.get("number", number), (1, 999), f"{key}.number", self.where)
         default_name = "".join(joints) if len(joints) >= 2 else str(number)
         name = self.name(raw.get("name", default_name), f"{key}.name")
+        if name == FRAME:
+            raise self.fail(f"{key}.name", f"{FRAME!r} is the frame's name; call the link otherwise")
         key = f"link {name}"
         slides_on = self.name(raw["slides_on"], f"{key}.slides_on") if "slides_on" in raw else None
-        length = self.number(raw["length"], f"{key}.length", positive=True) if "length" in raw else None
+        length = (self.number(raw["length"], f"{key}.length", positive=True, bounds=B.LENGTH)
+                  if "length" in raw else None)
         origin = joints[0] if joints else None
         if origin is None:
             if slides_on is None:
@@ -298,13 +315,15 @@ class _Reader:
             guide = Guide(name=name, body=name, through=0j, angle=0.0)  # the link's own axis
         if length is None and len(joints) >= 2:
             length = abs(local[joints[1]] - local[joints[0]])
+            B.check(length, B.LENGTH, f"{key}.shape ({joints[0]}{joints[1]})", self.where)
         link = Link(name=name, number=number, joints=joints, local=local, slides_on=slides_on,
-                    length=length, mass=self.opt_positive(raw, "mass", key),
-                    inertia=self.opt_positive(raw, "inertia", key), com=self.com(raw, key, local, number))
+                    length=length, mass=self.opt_bounded(raw, "mass", key, B.MASS),
+                    inertia=self.opt_bounded(raw, "inertia", key, B.INERTIA),
+                    com=self.com(raw, key, local, number))
         return link, guide
 
-    def opt_positive(self, raw: dict[str, Any], key: str, where: str) -> float | None:
-        return self.number(raw[key], f"{where}.{key}", positive=True) if key in raw else None
+    def opt_bounded(self, raw: dict[str, Any], key: str, where: str, bounds: B.Range) -> float | None:
+        return self.number(raw[key], f"{where}.{key}", bounds=bounds) if key in raw else None
 
     def com(self, raw: dict[str, Any], where: str, local: dict[str, complex], number: int) -> str | None:
         if "com" in raw:
@@ -317,9 +336,9 @@ class _Reader:
 
     def apply_loads(self, links: dict[str, Link], loads: dict[str, Any]) -> dict[str, Link]:
         """Masses q·l and inertias k·m·l² where the scene gives q and k instead of the values."""
-        q = self.number(loads["mass_per_length"], "loads.mass_per_length", positive=True) \
+        q = self.number(loads["mass_per_length"], "loads.mass_per_length", bounds=B.MASS_PER_LENGTH) \
             if "mass_per_length" in loads else None
-        k = self.number(loads["inertia_factor"], "loads.inertia_factor", positive=True) \
+        k = self.number(loads["inertia_factor"], "loads.inertia_factor", bounds=B.INERTIA_FACTOR) \
             if "inertia_factor" in loads else None
         result = {}
         for name, link in links.items():
@@ -346,7 +365,7 @@ class _Reader:
         if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
             raise self.fail("positions.start",
                             f'must be "max", "min", "working", "idle", "inner", "outer" or a crank angle, got {value!r}')
-        return self.number(value, "positions.start") % 360.0
+        return self.number(value, "positions.start", bounds=B.ANGLE) % 360.0
 
     def read_working(self, value: Any) -> str:
         if value not in ("slow", "fast", "to_max", "to_min"):
@@ -355,17 +374,13 @@ class _Reader:
         return value
 
     def read_count(self, value: Any) -> int:
-        if isinstance(value, bool) or not isinstance(value, int) or not 2 <= value <= 3600:
-            raise self.fail("positions.count", f"must be a whole number from 2 to 3600, got {value!r}")
-        return value
+        return B.check_count(value, B.COUNT, "positions.count", self.where)
 
     def read_accel(self, value: Any) -> tuple[int, ...]:
         values = value if isinstance(value, list) else [value]
         out = []
         for v in values:
-            if isinstance(v, bool) or not isinstance(v, int) or v < 0:
-                raise self.fail("positions.accel", f"position numbers must be whole numbers ≥ 0, got {v!r}")
-            out.append(v)
+            out.append(B.check_count(v, (0, B.COUNT[1] - 1), "positions.accel", self.where))
         return tuple(out)
 
     def read_forces(self, raw: Any) -> tuple[Force, ...]:
@@ -383,9 +398,9 @@ class _Reader:
                 raise self.fail(f"{key}.stroke", f'must be "working", "idle" or "both", got {stroke!r}')
             direction = f.get("direction", "oppose")
             if direction != "oppose":
-                direction = self.number(direction, f"{key}.direction")
+                direction = self.number(direction, f"{key}.direction", bounds=B.ANGLE)
             out.append(Force(point=self.name(f["point"], f"{key}.point"),
-                             magnitude=self.number(f["magnitude"], f"{key}.magnitude", positive=True),
+                             magnitude=self.number(f["magnitude"], f"{key}.magnitude", bounds=B.FORCE),
                              stroke=stroke, direction=direction,
                              profile=self.read_profile(f.get("profile", []), f"{key}.profile")))
         return tuple(out)
@@ -398,7 +413,8 @@ class _Reader:
         for p in raw:
             if not isinstance(p, list) or len(p) != 2:
                 raise self.fail(key, "must be a list of [distance, factor] pairs")
-            pairs.append((self.number(p[0], key), self.number(p[1], key)))
+            pairs.append((self.number(p[0], key, bounds=B.PROFILE_DISTANCE),
+                          self.number(p[1], key, bounds=B.PROFILE_FACTOR)))
         if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
             raise self.fail(key, "the distances must increase")
         return tuple(pairs)
@@ -407,14 +423,11 @@ class _Reader:
         """[diagrams]: the diagrams' abscissa L, pole distances H1, H2 (mm), divisions, point, method."""
         raw = self.table(raw, "diagrams", _DIAGRAMS)
         out: dict[str, object] = {}
-        for key in ("L_mm", "H1_mm", "H2_mm"):
+        for key, bounds in (("L_mm", B.ABSCISSA_MM), ("H1_mm", B.POLE_MM), ("H2_mm", B.POLE_MM)):
             if key in raw:
-                out[key] = self.number(raw[key], f"diagrams.{key}", positive=True)
+                out[key] = self.number(raw[key], f"diagrams.{key}", bounds=bounds)
         if "divisions" in raw:
-            n = raw["divisions"]
-            if isinstance(n, bool) or not isinstance(n, int) or n < 2:
-                raise self.fail("diagrams.divisions", f"must be a whole number ≥ 2, got {n!r}")
-            out["divisions"] = n
+            out["divisions"] = B.check_count(raw["divisions"], B.DIVISIONS, "diagrams.divisions", self.where)
         if "point" in raw:
             out["point"] = self.name(raw["point"], "diagrams.point")
         if "method" in raw:
@@ -424,12 +437,27 @@ class _Reader:
         return out
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
-        meta = {k: str(data[k]) for k in ("title", "title_en", "designation") if k in data}
+        meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}
         sheet = data.get("sheet", {})
         if not isinstance(sheet, dict):
             raise self.fail("sheet", "must be a table")
-        meta.update({f"sheet.{k}": str(v) for k, v in sheet.items()})
+        meta.update({f"sheet.{B.clean_text(k)}": B.clean_text(v) for k, v in sheet.items()})
         return meta
+
+    def check_unique(self, mech: Mechanism) -> None:
+        """A point that is not a joint (a centre of mass, an extra point, a reference) belongs to one
+        body only: a frame point S1 and the crank's S1 would make S1 the fixed point in every table."""
+        for name, link in mech.links.items():
+            for p in link.local:
+                if p in link.joints:
+                    continue
+                if p in mech.frame:
+                    raise self.fail(f"link {name}.points.{p}", f"{p!r} is also a frame point; "
+                                    "names are unique across the frame's and the links' points")
+                others = [n for n, other in mech.links.items() if n != name and p in other.local]
+                if others:
+                    raise self.fail(f"link {name}.points.{p}", f"{p!r} is also a point of link "
+                                    f"{others[0]}; give each point its own name")
 
     @staticmethod
     def shape_joints(links: dict[str, Link], frame: dict[str, complex]) -> dict[str, Link]:
@@ -464,6 +492,7 @@ class _Reader:
             if len(bodies) == 1 and j not in mech.frame:
                 raise self.fail(f"link {bodies[0]}.joints",
                                 f"joint {j!r} joins nothing: no other link or frame point has it")
+        self.check_unique(mech)
         known = set(mech.point_names())
         for key in mech.branches:
             if key not in known:

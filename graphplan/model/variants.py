@@ -21,11 +21,13 @@ from typing import Any
 from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.model.mechanism import Mechanism
 from graphplan.util.files import read_text
+from graphplan.model.bounds import clean_text
 from graphplan.model.scene import build
 
 DEFAULT_TOLERANCE = 5.0   # percent, the lab's criterion (REFERENCE §1.6)
 
 # columns that are not scene overrides
+MAX_VARIANTS = 2000     # a course's groups; each variant takes about a second
 RESERVED = {"variant", "base", "student", "divisions", "tolerance"}
 # shorthand columns → their table in the scene tree
 SHORTHAND = {"rpm": "crank", "omega": "crank", "direction": "crank", "epsilon": "crank",
@@ -89,9 +91,11 @@ def parse_cell(text: str, decimal_comma: bool = False) -> Any:
             raise ValueError(f"{text!r}: a decimal comma needs a ';' separated table")
         text = text.replace(",", ".")
         return int(text) if re.fullmatch(r"[+-]?\d+", text) else float(text)
+    if "_" in text and re.fullmatch(r"[+-]?[\d_]+([.,][\d_]*)?([eE][+-]?[\d_]+)?", text):
+        raise ValueError(f"{text!r}: write numbers without '_' (7_2 is not 72)")
     try:
         return tomllib.loads(f"v = {text}")["v"]
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError, ValueError):
         return text
 
 
@@ -117,7 +121,10 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
         if stripped.startswith("#"):
             m = _DIRECTIVE.match(stripped)
             if m:
-                directives[m.group(1)] = parse_cell(m.group(2), decimal_comma=True)
+                try:
+                    directives[m.group(1)] = parse_cell(m.group(2), decimal_comma=True)
+                except ValueError as exc:
+                    raise GraphplanError(f"line {n + 1}: {exc}", str(path)) from None
             continue
         header_at = n
         break
@@ -230,6 +237,9 @@ def _table(path: Path, rows: list[tuple[int, dict[str, Any]]], directives: dict[
     default_div = _divisions(directives["divisions"], "", path) if "divisions" in directives else None
     if not rows:
         raise GraphplanError("the table has no variants", str(path))
+    if len(rows) > MAX_VARIANTS:
+        raise GraphplanError(f"{len(rows)} variants; a table holds at most {MAX_VARIANTS} "
+                             "(split the group's table)", str(path))
     variants, seen = [], set()
     for line_no, row in rows:
         row = dict(row)
@@ -239,6 +249,9 @@ def _table(path: Path, rows: list[tuple[int, dict[str, Any]]], directives: dict[
             raise GraphplanError(f"{where}the variant has no id", str(path))
         if not _ID.match(vid):
             raise GraphplanError(f"{where}variant id {vid!r}: use letters, digits, '.', '_' or '-'", str(path))
+        if vid.lower().startswith("summary.") or vid.strip(".") == "":
+            raise GraphplanError(f"{where}variant id {vid!r} is the name of a summary file; "
+                                 "call the variant otherwise", str(path))
         if vid in seen:
             raise GraphplanError(f"{where}variant {vid!r} appears twice", str(path))
         seen.add(vid)
@@ -251,7 +264,7 @@ def _table(path: Path, rows: list[tuple[int, dict[str, Any]]], directives: dict[
             base = path.parent / base
         tolerances = _split_tolerances(row, where, path)
         divisions = _divisions(row.pop("divisions"), where, path) if "divisions" in row else default_div
-        student = str(row.pop("student", ""))
+        student = clean_text(row.pop("student", ""))
         variants.append(Variant(vid, base, row, student, divisions, tolerances, line_no))
     return VariantTable(path, variants, file_tol)
 
@@ -260,16 +273,12 @@ def _table(path: Path, rows: list[tuple[int, dict[str, Any]]], directives: dict[
 
 def read_tree(path: Path) -> dict[str, Any]:
     """A scene file's TOML tree (errors name the file)."""
+    from graphplan.model.bounds import MAX_SCENE_BYTES, parse_toml
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SceneError("no such base scene", str(path)) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SceneError(f"cannot read the base scene: {exc}", str(path)) from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"TOML syntax error: {exc}", str(path)) from None
+        text = read_text(path, "base scene", MAX_SCENE_BYTES)
+    except GraphplanError as exc:
+        raise SceneError(str(exc), exc.where) from None
+    return parse_toml(text, str(path))
 
 
 def target(tree: dict[str, Any], column: str) -> tuple[str, ...] | None:

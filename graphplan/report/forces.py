@@ -9,13 +9,14 @@ NULL_BELOW = 1e-6   # error_pct is null where |analytic| < 1e-6 × the largest f
 
 
 def _clean(doc: Any) -> Any:
-    """−0.0 → 0.0 everywhere (byte-stable, readable JSON)."""
+    """−0.0 → 0.0 everywhere (byte-stable, readable JSON); a value the construction cannot read
+    (the lever's P_b when the crank pin's image pa reads 0 mm at the plan's μv) is null."""
     if isinstance(doc, dict):
         return {k: _clean(v) for k, v in doc.items()}
     if isinstance(doc, list):
         return [_clean(v) for v in doc]
     if isinstance(doc, float):
-        return doc + 0.0
+        return doc + 0.0 if math.isfinite(doc) else None
     return doc
 
 

@@ -309,6 +309,7 @@ def build_kinematics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis; the plans' scales are coarsened (factor k)
     until the whole set fits the sheet. The blocks' area at k = 1 (it grows about as k²) picks the
     first factor worth trying."""
+    check_positions(st, f, args)
     last: GraphplanError | None = None
     x0, y0, x1, y1 = f.frame_box
     free = (x1 - x0) * (y1 - y0) - 185.0 * 55.0
@@ -323,8 +324,21 @@ def build_kinematics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             return compose(f, blocks, fields(st, args.lang, scale, 1, 2), args.lang, st.mech.title)
         except GraphplanError as exc:
             last = exc
-    raise GraphplanError(f"{st.mech.source}: the sheet {f.name} is too small ({last}); "
-                         "choose a larger --format or fewer positions")
+    raise GraphplanError(f"the sheet {f.name} is too small: {last}", st.mech.source)
+
+
+A1_POSITIONS = 40     # measured: A1 holds 36 velocity plans of the examples, never 48
+
+
+def check_positions(st: Study, f: Form, args: Options) -> None:
+    """A sheet holds a bounded number of velocity plans (about 40 on A1, in proportion to the paper's
+    area): more is refused before the plans are built, not after a minute of packing."""
+    count = args.positions or st.mech.task.count
+    most = max(4, int(A1_POSITIONS * f.width * f.height / (841.0 * 594.0)))
+    if count > most:
+        raise GraphplanError(f"--positions {count}: the sheet {f.name} holds at most {most} "
+                             "positions' plans; choose a larger --format or fewer positions",
+                             st.mech.source)
 
 
 BUILDERS["kinematics"] = build_kinematics_sheet

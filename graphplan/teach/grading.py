@@ -8,8 +8,6 @@ another position, the row is said to belong there (seed 004: v_B = 7.2 m/s writt
 """
 from __future__ import annotations
 
-import csv
-import io
 import json
 import re
 import unicodedata
@@ -26,6 +24,7 @@ from graphplan.exact.positions import Study, study
 from graphplan.model.scene import build
 
 SEARCH_GRID = 1440      # 0.25° samples, then bisection to ~1e-9°
+MAX_KEY_BYTES = 64 * 1024 * 1024   # a key of 3600 positions is a few MB
 ABS_FLOOR = 1e-12       # SI: a floor for quantities that are zero over the whole turn
 
 
@@ -64,27 +63,22 @@ class Graded:
 
 def read_student(path: str | Path) -> list[Row]:
     """A long table with the columns position, quantity, value (and variant); ``,`` ``;`` or tab
-    separated; with ``;`` or tab a decimal comma is accepted. Other columns are ignored. A table
-    without a ``quantity`` column is read as a wide one (see ``_wide``)."""
+    separated; the encodings, decimal commas, minus signs and thousands spaces a person's
+    spreadsheet writes (teach.tables). Other columns are ignored. A table without a ``quantity``
+    column is read as a wide one (see ``_wide``)."""
+    from graphplan.teach.tables import read_rows
     path = Path(path)
-    text = read_text(path, "student table")
-    lines = [(n + 1, line) for n, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
-    if not lines:
-        raise GraphplanError("the student table is empty", str(path))
-    header_line = lines[0][1]
-    delimiter = ";" if ";" in header_line else "\t" if "\t" in header_line else ","
-    records = list(csv.reader(io.StringIO("\n".join(line for _, line in lines)), delimiter=delimiter))
-    header = [h.strip().lower() for h in records[0]]
+    records, delimiter = read_rows(path)
+    header = [h.strip().lower() for h in records[0][1]]
     if "quantity" not in header:
-        return _wide(records, lines, header, delimiter, path)
+        return _wide(records, header, delimiter, path)
     for need in ("position", "value"):
         if need not in header:
             raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
                                  f"(missing {need!r})", str(path))
     col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
     rows = []
-    for (line_no, _), cells in zip(lines[1:], records[1:]):
+    for line_no, cells in records[1:]:
         def cell(name: str) -> str:
             k = col.get(name)
             return cells[k].strip() if k is not None and k < len(cells) else ""
@@ -94,23 +88,23 @@ def read_student(path: str | Path) -> list[Row]:
 
 
 def _number(text: str, delimiter: str, line_no: int, path: Path) -> float | None:
+    from graphplan.teach.tables import number
     if not text:
         return None
-    number = text.replace(",", ".") if delimiter != "," else text
     try:
-        return float(number)
-    except ValueError:
-        raise GraphplanError(f"line {line_no}: value {text!r} is not a number", str(path)) from None
+        return number(text, delimiter)
+    except ValueError as exc:
+        raise GraphplanError(f"line {line_no}: value {text[:30]!r}: {exc}", str(path)) from None
 
 
-def _wide(records, lines, header, delimiter, path: Path) -> list[Row]:
+def _wide(records, header, delimiter, path: Path) -> list[Row]:
     """A wide table (as a lab's sheet prints it): a position column — named ``position``, else the
     first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped."""
     pos = header.index("position") if "position" in header else 0
     var = header.index("variant") if "variant" in header else None
-    names = [h.strip() for h in records[0]]
+    names = [h.strip() for h in records[0][1]]
     rows = []
-    for (line_no, _), cells in zip(lines[1:], records[1:]):
+    for line_no, cells in records[1:]:
         for k, name in enumerate(names):
             if k in (pos, var) or k >= len(cells) or not cells[k].strip():
                 continue
@@ -145,12 +139,14 @@ def load_keys(path: str | Path) -> dict[str, dict[str, Any]]:
 
 
 def _json(path: Path) -> dict[str, Any]:
+    text = read_text(path, "key file", MAX_KEY_BYTES)
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise GraphplanError("no such key file", str(path)) from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise GraphplanError(f"cannot read the key: {exc}", str(path)) from None
+        doc = json.loads(text)
+    except (json.JSONDecodeError, RecursionError) as exc:
+        raise GraphplanError(f"cannot read the key: {str(exc)[:80]}", str(path)) from None
+    if not isinstance(doc, dict):
+        raise GraphplanError("not a graphplan key (not a JSON object)", str(path))
+    return doc
 
 
 def _key(path: Path) -> dict[str, Any]:

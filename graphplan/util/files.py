@@ -15,14 +15,39 @@ def json_text(doc: Any) -> str:
     return json.dumps(doc, ensure_ascii=False, indent=1, allow_nan=False) + "\n"
 
 
-def read_text(path: str | Path, what: str) -> str:
-    """A text file's contents (UTF-8, a BOM dropped), or one clear line naming the file."""
+MAX_INPUT_BYTES = 4 * 1024 * 1024     # a scene, a variant table or a student's table is far smaller
+
+
+def read_bytes(path: str | Path, what: str, limit: int = MAX_INPUT_BYTES) -> bytes:
+    """A regular file's bytes, at most ``limit`` of them, or one clear line naming the file.
+
+    Only regular files are read: a folder, a device (``/dev/zero`` never ends) or a pipe is refused
+    before anything is read, and a file that grows past the bound while read is refused too."""
+    path = Path(path)
     try:
-        return Path(path).read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise GraphplanError(f"no such {what}", str(path)) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise GraphplanError(f"cannot read the {what}: {exc}", str(path)) from None
+        if not path.exists():
+            raise GraphplanError(f"no such {what}", str(path))
+        if path.is_dir():
+            raise GraphplanError(f"the {what} is a folder, not a file", str(path))
+        if not path.is_file():
+            raise GraphplanError(f"the {what} is not a regular file", str(path))
+        with open(path, "rb") as handle:
+            data = handle.read(limit + 1)
+    except OSError as exc:
+        raise GraphplanError(f"cannot read the {what}: {exc.strerror or exc}", str(path)) from None
+    if len(data) > limit:
+        raise GraphplanError(f"the {what} is larger than {limit // (1024 * 1024)} MB", str(path))
+    return data
+
+
+def read_text(path: str | Path, what: str, limit: int = MAX_INPUT_BYTES) -> str:
+    """A text file's contents (UTF-8, a BOM dropped), or one clear line naming the file."""
+    data = read_bytes(path, what, limit)
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise GraphplanError(f"cannot read the {what}: not UTF-8 text (byte {exc.start})",
+                             str(path)) from None
 
 
 def write_atomic(path: str | Path, data: bytes | str) -> Path:
@@ -32,6 +57,8 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
     folder = path.parent if str(path.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
+        if path.is_dir():
+            raise GraphplanError("is a folder; name a file to write", str(path))
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=folder)
     except OSError as exc:
         raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None
@@ -42,6 +69,10 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)          # an ordinary file, not mkstemp's private one
         os.replace(tmp, path)
+    except OSError as exc:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)

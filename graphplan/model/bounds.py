@@ -1,0 +1,143 @@
+"""What a scene may ask for: the physical and practical bounds of every number, name and text.
+
+A scene describes a lever mechanism a student draws and a machine runs: links from 10 µm to 1 km,
+crank speeds a machine reaches, masses and forces a machine carries. Anything outside is a typo
+(``1e16`` for ``1.6``) or a fuzzer, and refusing it where the scene is read — one line naming the
+key and the allowed range — keeps every later computation finite. The same module bounds the
+reading itself: the file's size, the TOML's nesting, an expression's length and depth, integers'
+size, and the text that ends up in a drawing (no control characters: an SVG must stay XML).
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+import unicodedata
+from dataclasses import dataclass
+from typing import Any
+
+from graphplan.util.errors import SceneError
+
+MAX_SCENE_BYTES = 1024 * 1024        # the largest example is 3 kB
+MAX_TOML_DEPTH = 12                  # tables in tables in arrays … (a scene needs 4)
+MAX_INT = 10 ** 15                   # integers beyond this are typos, and float() of 400 digits overflows
+MAX_EXPRESSION = 200                 # characters of one expression such as "0.7 * rocker"
+MAX_EXPRESSION_DEPTH = 24            # nested operations and calls in one expression
+MAX_NAME = 40                        # characters of a point's, link's or guide's name
+MAX_TEXT = 200                       # characters of a title or a title-block field
+
+
+@dataclass(frozen=True)
+class Range:
+    """A closed (or, at ``lo``, open) interval of a physical quantity, with its unit for the message."""
+    lo: float
+    hi: float
+    unit: str
+    lo_open: bool = False
+
+    def holds(self, value: float) -> bool:
+        above = value > self.lo if self.lo_open else value >= self.lo
+        return math.isfinite(value) and above and value <= self.hi
+
+    def text(self) -> str:
+        unit = f" {self.unit}" if self.unit else ""
+        if self.lo == -self.hi:
+            return f"|value| ≤ {self.hi:g}{unit}"
+        return f"from {self.lo:g}{' (exclusive)' if self.lo_open else ''} to {self.hi:g}{unit}"
+
+
+LENGTH = Range(1e-5, 1e3, "m")                 # a link, a stroke, a centre distance
+COORDINATE = Range(-1e3, 1e3, "m")             # a frame point, a guide's point, a link's local point
+OMEGA = Range(1e-3, 1e5, "rad/s")              # 0.01 … 955 000 rpm
+RPM = Range(0.01, 1e6, "rpm")
+EPSILON = Range(-1e8, 1e8, "rad/s²")
+MASS = Range(0.0, 1e6, "kg")
+INERTIA = Range(0.0, 1e6, "kg·m²")
+MASS_PER_LENGTH = Range(0.0, 1e6, "kg/m", lo_open=True)
+INERTIA_FACTOR = Range(0.0, 10.0, "", lo_open=True)   # I = k·m·l², a rod's k = 1/12
+FORCE = Range(0.0, 1e9, "N", lo_open=True)
+GRAVITY = Range(0.0, 1e3, "m/s²")
+ANGLE = Range(-1e6, 1e6, "deg")
+TIME_RATIO = Range(1.0, 100.0, "", lo_open=True)      # K of the quick-return synthesis
+PARAMETER = Range(-1e12, 1e12, "")
+PROFILE_DISTANCE = Range(-1e6, 1e6, "")
+PROFILE_FACTOR = Range(-1e3, 1e3, "")
+ABSCISSA_MM = Range(10.0, 2000.0, "mm")              # the diagrams' L
+POLE_MM = Range(1.0, 1000.0, "mm")                   # H1, H2
+COUNT = (2, 3600)                                    # positions of a turn
+DIVISIONS = (2, 720)                                 # the diagrams' intervals
+
+
+def check(value: float, bounds: Range, key: str, where: str) -> float:
+    """``value`` when it lies within ``bounds``; else the one-line refusal naming the key and range."""
+    if not bounds.holds(value):
+        raise SceneError(f"{key}: must be {bounds.text()}, got {value:g}", where)
+    return value
+
+
+def check_count(value: Any, bounds: tuple[int, int], key: str, where: str) -> int:
+    """A whole number within ``bounds`` (booleans are not numbers)."""
+    lo, hi = bounds
+    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
+        raise SceneError(f"{key}: must be a whole number from {lo} to {hi}, got {short(repr(value))}",
+                         where)
+    return value
+
+
+def to_float(value: int | float, key: str, where: str) -> float:
+    """A TOML number as a float; integers beyond ±10¹⁵ are refused (they are typos, and 400 digits
+    overflow a float)."""
+    if isinstance(value, int) and abs(value) > MAX_INT:
+        raise SceneError(f"{key}: the integer is too large (|value| ≤ {MAX_INT:.0e})", where)
+    return float(value)
+
+
+def short(text: str, limit: int = 40) -> str:
+    """A text cut for an error message (a message stays one short line)."""
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def clean_text(value: Any) -> str:
+    """A title or title-block field as drawable text: control and format characters become spaces
+    (a U+0007 in an SVG makes it ill-formed XML), runs of spaces one, at most MAX_TEXT characters."""
+    text = "".join(" " if unicodedata.category(c) in ("Cc", "Cf", "Cs", "Co", "Cn") else c
+                   for c in str(value))
+    return " ".join(text.split())[:MAX_TEXT]
+
+
+def name_problem(name: str) -> str | None:
+    """Why a point's, link's or guide's name cannot be used, or None when it can."""
+    if len(name) > MAX_NAME:
+        return f"a name has at most {MAX_NAME} characters"
+    if any(unicodedata.category(c).startswith(("C", "Z")) for c in name):
+        return "a name has no spaces or control characters"
+    return None
+
+
+def parse_toml(text: str, where: str) -> dict[str, Any]:
+    """The TOML tree of a scene, bounded: size, nesting depth, integers' size."""
+    if len(text.encode("utf-8", "surrogatepass")) > MAX_SCENE_BYTES:
+        raise SceneError(f"the scene is larger than {MAX_SCENE_BYTES // 1024} kB", where)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"TOML syntax error: {short(str(exc), 120)}", where) from None
+    except RecursionError:
+        raise SceneError(f"TOML nested too deeply (at most {MAX_TOML_DEPTH} levels)", where) from None
+    except ValueError as exc:          # e.g. an integer of more than 4300 digits
+        raise SceneError(f"TOML value cannot be read: {short(str(exc), 80)}", where) from None
+    check_tree(data, where)
+    return data
+
+
+def check_tree(data: Any, where: str) -> None:
+    """Nesting at most MAX_TOML_DEPTH levels (checked without recursion)."""
+    stack = [(data, 0)]
+    while stack:
+        node, depth = stack.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise SceneError(f"TOML nested too deeply (at most {MAX_TOML_DEPTH} levels)", where)
+        if isinstance(node, dict):
+            stack.extend((v, depth + 1) for v in node.values())
+        elif isinstance(node, list):
+            stack.extend((v, depth + 1) for v in node)

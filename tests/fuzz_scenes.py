@@ -1,0 +1,208 @@
+"""What the fuzz suite shares: running a command in-process, the contract's properties of a run,
+scene trees written back as TOML, and hypothesis strategies of valid, near-singular and broken scenes.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import math
+import tomllib
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+import random_mechanisms as rm
+from graphplan.cli.main import main
+
+ROOT = Path(__file__).resolve().parent.parent
+BASE = tomllib.loads((ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8"))
+
+
+# -- one run ----------------------------------------------------------------------------------
+
+def run(argv: list[str]) -> tuple[int, str, str]:
+    """``graphplan argv`` in this process: exit code, stdout, stderr (warnings included)."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(argv)
+        except SystemExit as exc:          # argparse's --help/--version
+            code = exc.code if isinstance(exc.code, int) else 2
+    return code, out.getvalue(), err.getvalue()
+
+
+def _no_constant(name: str):
+    raise AssertionError(f"{name} in the JSON")
+
+
+def check_run(argv: list[str], code: int, out: str, err: str) -> dict | None:
+    """The contract of every run: exit 0 or 2; on 2 exactly one line on stderr, never an internal
+    error; no warning on stderr; JSON without NaN/Infinity. Returns the JSON document if any."""
+    assert code in (0, 2), f"exit {code} for {argv}: {err!r}"
+    assert "internal error" not in err, f"{argv}: {err!r}"
+    assert "Warning" not in err, f"{argv}: {err!r}"
+    if code == 2:
+        lines = err.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("graphplan: "), f"{argv}: {err!r}"
+        assert not lines[0].startswith("graphplan: graphplan"), err
+        return None
+    if "--json" in argv:
+        return json.loads(out, parse_constant=_no_constant)
+    return None
+
+
+# -- scene trees as TOML -----------------------------------------------------------------------
+
+def _value(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{json.dumps(str(k))} = {_value(x)}" for k, x in v.items()) + "}"
+    return json.dumps(str(v))
+
+
+def to_toml(tree: dict) -> str:
+    """A scene tree as TOML text: top-level values, then tables, then arrays of tables."""
+    lines = []
+    tables = []
+    for k, v in tree.items():
+        if isinstance(v, dict):
+            tables.append((k, v, False))
+        elif isinstance(v, list) and v and all(isinstance(x, dict) for x in v):
+            tables.append((k, v, True))
+        else:
+            lines.append(f"{json.dumps(str(k))} = {_value(v)}")
+    for k, v, many in tables:
+        for entry in (v if many else [v]):
+            lines.append(f"[[{json.dumps(str(k))}]]" if many else f"[{json.dumps(str(k))}]")
+            lines += [f"{json.dumps(str(kk))} = {_value(vv)}" for kk, vv in entry.items()]
+    return "\n".join(lines) + "\n"
+
+
+# -- strategies ----------------------------------------------------------------------------------
+
+def _f(lo: float, hi: float):
+    return st.floats(lo, hi, allow_nan=False, allow_infinity=False)
+
+
+omega = st.one_of(_f(0.5, 400.0), _f(-400.0, -0.5))
+branch = st.sampled_from([1, -1])
+
+VALID = st.one_of(
+    st.builds(rm.rrr, _f(0.02, 0.1), _f(0.15, 0.4), _f(0.1, 0.5), _f(0.1, 0.5), omega, branch),
+    st.builds(rm.rrp, _f(0.02, 0.1), _f(0.05, 0.6), _f(-0.1, 0.1), _f(-180, 180), omega, branch),
+    st.builds(rm.rpr, _f(0.02, 0.1), _f(0.05, 0.4), _f(-0.03, 0.03), omega, branch),
+    st.builds(rm.prp, _f(0.02, 0.08), _f(0.2, 0.35), _f(0.2, 0.4), _f(0.2, 0.4), _f(-170, 170),
+              _f(-170, 170), omega),
+    st.builds(rm.rpp, _f(0.02, 0.1), _f(-170, 170), _f(-170, 170), omega),
+    st.builds(rm.rrp_moving, _f(0.02, 0.08), _f(0.2, 0.35), _f(0.2, 0.4), _f(0.2, 0.4), _f(0.3, 0.8),
+              _f(-170, 170), omega, branch),
+    st.builds(rm.rpp_moving, _f(0.02, 0.08), _f(0.2, 0.35), _f(0.2, 0.4), _f(0.2, 0.4), _f(-170, 170),
+              _f(-170, 170), omega),
+)
+"""Random mechanisms of every dyad kind and chain: (scene text, assemblable over the turn?)."""
+
+_eps = _f(1e-9, 1e-4)
+NEAR_SINGULAR = st.one_of(
+    # a four-bar at the edge of assembly: l2 + l3 = d + r (+ a hair)
+    st.builds(lambda r, d, l2, e, w: rm.rrr(r, d, l2, d + r - l2 + e, w, 1),
+              _f(0.02, 0.1), _f(0.15, 0.4), _f(0.2, 0.3), _eps, omega),
+    # a crank-slider whose rod is a hair longer than crank + offset
+    st.builds(lambda r, off, e, w: rm.rrp(r, r + abs(off) + e, off, 0.0, w, 1),
+              _f(0.02, 0.1), _f(-0.05, 0.05), _eps, omega),
+    # a slotted link whose pivot is a hair off the crank circle
+    st.builds(lambda r, e, w: rm.rpr(r, r + e, 0.0, w, 1), _f(0.02, 0.1), _eps, omega),
+    # a Scotch yoke whose slot is nearly parallel to its guide
+    st.builds(lambda r, a, w: rm.rpp(r, a, 0.0, w), _f(0.02, 0.1), _f(-0.2, 0.2), omega),
+    # tiny and huge but physical mechanisms
+    st.builds(rm.rrp, _f(1e-5, 1e-4), _f(5e-4, 1e-3), st.just(0.0), st.just(0.0), _f(1e-3, 1e5), branch),
+    st.builds(rm.rrp, _f(10.0, 100.0), _f(300.0, 999.0), st.just(0.0), st.just(0.0), _f(1e-3, 1e4), branch),
+)
+
+_junk_scalar = st.one_of(
+    st.none(), st.booleans(), st.integers(), st.integers(min_value=10 ** 20, max_value=10 ** 400),
+    st.floats(), st.text(max_size=30), st.sampled_from([
+        "1/0", "sqrt(-1)", "10**400", "(-8)**0.5", "r * " * 60 + "1", "-" * 3000 + "1", "7_2",
+        "__import__('os')", "l**2**2**2**2", "nan", "inf", "1e400", "0", "-1", "1e-30", "1e30",
+        "\x07title", "S1", "0", "A", "B", "x", "", " "]))
+_junk = st.recursive(_junk_scalar, lambda inner: st.one_of(
+    st.lists(inner, max_size=3), st.dictionaries(st.text(max_size=8), inner, max_size=3)), max_leaves=6)
+
+
+def _paths(tree, prefix=()):
+    """Every (path, value) of a tree, tables and lists included."""
+    yield prefix, tree
+    if isinstance(tree, dict):
+        for k, v in tree.items():
+            yield from _paths(v, prefix + (k,))
+    elif isinstance(tree, list):
+        for i, v in enumerate(tree):
+            yield from _paths(v, prefix + (i,))
+
+
+def _set(tree, path, value, delete=False):
+    node = tree
+    for p in path[:-1]:
+        node = node[p]
+    if delete:
+        del node[path[-1]]
+    else:
+        node[path[-1]] = value
+
+
+@st.composite
+def mutated(draw, base=None) -> str:
+    """The example crank-slider (or another tree) with one to three leaves replaced by junk,
+    deleted or joined by unknown keys, as TOML text."""
+    import copy
+    tree = copy.deepcopy(base if base is not None else BASE)
+    for _ in range(draw(st.integers(1, 3))):
+        paths = [p for p, _ in _paths(tree) if p]
+        if not paths:
+            break
+        path = draw(st.sampled_from(paths))
+        action = draw(st.sampled_from(["replace", "replace", "replace", "delete", "add"]))
+        try:
+            if action == "replace":
+                _set(tree, path, draw(_junk))
+            elif action == "delete":
+                _set(tree, path, None, delete=True)
+            else:
+                parent = tree
+                for p in path[:-1]:
+                    parent = parent[p]
+                if isinstance(parent, dict):
+                    parent[draw(st.text(min_size=1, max_size=8))] = draw(_junk)
+        except (KeyError, IndexError, TypeError):
+            pass
+    return to_toml(_drop_none(tree))
+
+
+def _drop_none(tree):
+    if isinstance(tree, dict):
+        return {k: _drop_none(v) for k, v in tree.items() if v is not None}
+    if isinstance(tree, list):
+        return [_drop_none(v) for v in tree if v is not None]
+    return tree
+
+
+MALFORMED = st.one_of(
+    st.binary(max_size=300).map(lambda b: b.decode("latin-1")),
+    st.text(max_size=300),
+    st.sampled_from(["[frame\n", "x = " + "[" * 5000, "a = {" * 3000, "title = \"unclosed\n",
+                     "x = 1\nx = 2\n", "[[link]]\n[link]\n", "\ufeff[crank]\n", "k = 9" + "9" * 5000]),
+)
+"""Text that is not a scene: binary garbage, random text, broken TOML."""

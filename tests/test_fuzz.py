@@ -1,0 +1,136 @@
+"""The fuzz suite: random valid mechanisms of every dyad kind, near-singular ones and broken scenes
+through every command, in-process. Every run ends in exit 0 or 2, one line on stderr for 2, never
+an internal error or a warning, JSON without NaN; a solved mechanism keeps its links' lengths and
+its sliders on their guides.
+
+The quick profile (a few hundred runs) is in the default suite; ``-m slow`` runs 10 000 scenes per
+command (docs/benchmarks.md records the last run).
+"""
+from __future__ import annotations
+
+import cmath
+import math
+import os
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from fuzz_scenes import MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
+from graphplan.model.mechanism import FRAME
+from graphplan.model.scene import loads
+
+QUICK = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_QUICK", "40")), deadline=None, derandomize=True,
+             suppress_health_check=list(HealthCheck))
+SLOW = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_SLOW", "10000")), deadline=None,
+            suppress_health_check=list(HealthCheck))
+
+# (command, extra options) every scene goes through; {out} is a file in a fresh folder
+COMMANDS = [
+    ("analyze", ["--json"]),
+    ("plans", ["--json"]),
+    ("diagrams", ["--json"]),
+    ("forces", ["--json"]),
+]
+
+
+def _scene(tmp_path_factory, text: str | bytes) -> str:
+    folder = tmp_path_factory.mktemp("fuzz")
+    path = folder / "scene.toml"
+    path.write_bytes(text if isinstance(text, bytes) else text.encode("utf-8", "surrogatepass"))
+    return str(path)
+
+
+def constraints_hold(text: str, doc: dict) -> None:
+    """Every link with two joints keeps its length; every slider on a frame guide stays on it
+    (to 1e-9 of the mechanism's size)."""
+    mech = loads(text, "<fuzz>")
+    size = max([mech.crank.length] + [lk.length or 0.0 for lk in mech.links.values()])
+    for pos in doc["positions"]:
+        pts = {n: complex(p["x"], p["y"]) for n, p in pos["points"].items()}
+        for link in mech.links.values():
+            if link.slides_on is None and len(link.joints) >= 2 and all(j in pts for j in link.joints[:2]):
+                a, b = link.joints[:2]
+                want = abs(link.local[b] - link.local[a])
+                assert abs(abs(pts[b] - pts[a]) - want) <= 1e-9 * size, (link.name, pos["phi_deg"])
+            if link.slides_on is not None:
+                guide = mech.guides[link.slides_on]
+                if guide.body != FRAME:
+                    continue
+                p = pts[next(iter(link.local))]
+                off = ((p - guide.through) * cmath.exp(-1j * guide.angle)).imag
+                assert abs(off) <= 1e-9 * max(size, abs(guide.through)), (link.name, pos["phi_deg"])
+
+
+def _through_commands(tmp_path_factory, text, commands=COMMANDS, valid: bool = False) -> list[int]:
+    path = _scene(tmp_path_factory, text)
+    codes = []
+    for command, extra in commands:
+        argv = [command, path, *extra]
+        code, out, err = run(argv)
+        doc = check_run(argv, code, out, err)
+        if valid and command == "analyze" and doc is not None:
+            constraints_hold(text, doc)
+        codes.append(code)
+    return codes
+
+
+# -- the quick profile --------------------------------------------------------------------------
+
+@settings(**QUICK)
+@given(VALID)
+def test_valid_mechanisms(tmp_path_factory, scene):
+    text, assemblable = scene
+    codes = _through_commands(tmp_path_factory, text, valid=True)
+    if assemblable:
+        assert codes[0] == 0        # analyze solves every mechanism that assembles over the turn
+
+
+@settings(**QUICK)
+@given(NEAR_SINGULAR)
+def test_near_singular_mechanisms(tmp_path_factory, scene):
+    _through_commands(tmp_path_factory, scene[0], valid=True)
+
+
+@settings(**QUICK)
+@given(mutated())
+def test_mutated_scenes(tmp_path_factory, text):
+    _through_commands(tmp_path_factory, text)
+
+
+@settings(**QUICK)
+@given(MALFORMED)
+def test_malformed_files(tmp_path_factory, text):
+    codes = _through_commands(tmp_path_factory, text, commands=COMMANDS[:1])
+    assert codes == [2]
+
+
+OPTIONS = st.lists(st.sampled_from([
+    "--phi", "--positions", "--precision", "--mu-v", "--mu-l", "--mu-a", "--accel", "--h1", "--h2", "--L",
+    "--divisions", "--height", "--tolerance", "--at", "--lang", "--adaptive"]), min_size=1, max_size=3)
+VALUES = st.one_of(st.sampled_from(["nan", "inf", "-inf", "0", "-1", "1e-9", "1e9", "1e300", "#3", "#-1",
+                                    "2", "360", "1e-300", "0,nan", "x", "5,10,400", "uk"]),
+                   st.floats().map(repr), st.integers(-10 ** 6, 10 ** 6).map(str))
+
+
+@settings(**QUICK)
+@given(st.sampled_from(["analyze", "plans", "diagrams", "forces"]), OPTIONS, st.data())
+def test_extreme_options(tmp_path_factory, command, options, data):
+    argv = [command]
+    for opt in options:
+        argv.append(opt)
+        if opt != "--adaptive":
+            argv.append(data.draw(VALUES))
+    argv.append("--json")
+    code, out, err = run(argv)
+    check_run(argv, code, out, err)
+
+
+@pytest.mark.slow
+@settings(**SLOW)
+@given(st.one_of(VALID, NEAR_SINGULAR, mutated().map(lambda t: (t, None)),
+                 MALFORMED.map(lambda t: (t, None))))
+def test_fuzz_slow(tmp_path_factory, scene):
+    """The release profile: 10 000 scenes through analyze, plans, diagrams and forces."""
+    text, assemblable = scene
+    _through_commands(tmp_path_factory, text, valid=assemblable is not None)
