@@ -199,7 +199,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     return rec
 
 
-def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 60.0) -> Record:
+def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 80.0) -> Record:
     """ω(φ) of the steady states (classical with the exact flywheel, and the motor's) over one
     turn, with a scale of ω on the ordinate axis (ticks in rad/s)."""
     w = WORDS[lang]

@@ -185,7 +185,7 @@ def cycle(st: Study, step_deg: float = STEP_DEG) -> Cycle:
     samples = Reduced(np.concatenate(all_turns), np.concatenate([p.phi_deg for p in parts]),
                       np.concatenate([p.inertia for p in parts]), np.concatenate([p.d_inertia for p in parts]),
                       np.concatenate([p.moment for p in parts]), np.concatenate([p.working for p in parts]))
-    if not start > 0:
+    if not start > 1e-9 * 2 * math.pi * max(float(np.max(np.abs(samples.moment))), 1e-300):
         raise GraphplanError(f"dynamics: the resistance does no work over a cycle (A_c = {start:.3g} J); "
                              "give a [[force]] that resists the output's motion", st.mech.source)
     return Cycle(b, pieces, start, samples)

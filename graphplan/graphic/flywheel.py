@@ -30,9 +30,9 @@ import numpy as np
 from graphplan.exact.dynamics import Dynamics, reduce
 from graphplan.graphic.chords import integrate_by_chords, midpoints, periodic_spline, read, standard_scale
 
-M_HEIGHT = 60.0       # mm: the largest |M*_c| drawn about this high
+M_HEIGHT = 80.0       # mm: the largest |M*_c| drawn about this high
 A_HEIGHT = 100.0      # mm: the pole distance H is picked so A_c(2π) is drawn about this high
-I_WIDTH = 70.0        # mm: the largest I*_m drawn about this long
+I_WIDTH = 110.0       # mm: the largest I*_m drawn about this long
 CURVE = 40            # samples of the French curve per interval
 
 
