@@ -148,7 +148,7 @@ def test_motor_line_and_the_seeds_swapped_speeds():
                                     "omega_sync": 298.3, "omega_rated": 314}, "dynamics.motor")
     assert m.omega_sync == pytest.approx(314.159, abs=1e-3)
     assert m.omega_rated == pytest.approx(298.451, abs=1e-3)
-    assert len(warnings) == 1 and "swapped" in warnings[0]
+    assert len(warnings) == 1 and "swapped" in warnings[0][0] and "переставлені" in warnings[0][1]
     a, b = m.line
     assert a * m.omega_rated + b == pytest.approx(m.moment_rated)
     assert a * m.omega_sync + b == pytest.approx(0.0, abs=1e-9)
@@ -229,3 +229,24 @@ def test_a_scene_without_resistance_is_refused():
     text = NO_MASSES.replace('length = 0.3\n', 'length = 0.3\nmass = 2\n').split("[[force]]")[0]
     with pytest.raises(Exception, match="no work"):
         dyn.analyse(scene_study(text))
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
+    from types import SimpleNamespace
+
+    from graphplan.drawing.layout import overlapping_texts
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
+    sheet = BUILDERS["dynamics"](example("slotter"), form("A1"), args)
+    names = {p.name for p in sheet.placed}
+    assert names == {"moments", "wittenbauer", "energy", "inertia", "speed", "positions table",
+                     "flywheel table", "motor table", "notes"}
+    x0, y0, x1, y1 = sheet.form.frame_box
+    for p in sheet.placed:
+        assert x0 <= p.box[0] and p.box[2] <= x1 and y0 <= p.box[1] and p.box[3] <= y1
+    assert overlapping_texts(sheet.record) == []
+    texts = " ".join(p.text for p in sheet.record.items if p.kind == "text")
+    assert ("Віттенбауера" if lang == "uk" else "Wittenbauer") in texts
+    assert "|kl|" in texts

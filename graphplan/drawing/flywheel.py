@@ -179,7 +179,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
             rec.label((float(f.I[j]) + 1.0, float(f.dT[j]) + 0.8), str(j), size=NUM, layer=LAYER, step=f"point {j}")
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
-        x_end = max(tx + 12.0, x_hi * 0.8)
+        x_end = tx + 15.0
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
@@ -199,7 +199,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     return rec
 
 
-def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 80.0) -> Record:
+def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 100.0) -> Record:
     """ω(φ) of the steady states (classical with the exact flywheel, and the motor's) over one
     turn, with a scale of ω on the ordinate axis (ticks in rad/s)."""
     w = WORDS[lang]
@@ -247,8 +247,8 @@ def _nice(raw: float) -> float:
     return 10 ** (e + 1)
 
 
-def records(f: Flywheel, lang: str = "uk") -> dict[str, Record]:
+def records(f: Flywheel, lang: str = "uk", speed_height: float = 100.0) -> dict[str, Record]:
     """Every drawing of the construction by name."""
     return {"moments": moments_record(f, lang), "energy": energy_record(f, lang),
             "inertia": inertia_record(f, lang), "wittenbauer": wittenbauer_record(f, lang),
-            "speed": speed_record(f, lang)}
+            "speed": speed_record(f, lang, height=speed_height)}

@@ -319,7 +319,7 @@ class Drive:
     reducer_reduced: float          # kg·m²
     chosen: bool                    # True: chosen by the rule, False: the scene's
     power_needed_kW: float          # P = max M*_c·ω1 / η, the rule's power
-    warnings: list[str] = field(default_factory=list)
+    warnings: list[tuple[str, str]] = field(default_factory=list)   # (English, Ukrainian)
 
     def moment(self, omega):
         """M*_d at the crank's speed ω."""
@@ -424,7 +424,7 @@ class Dynamics:
     motion: Motion                 # classical steady state with J
     motor_flywheel: float          # I_fl with the motor, kg·m²
     motor_motion: Motion
-    warnings: list[str] = field(default_factory=list)
+    warnings: list[tuple[str, str]] = field(default_factory=list)   # (English, Ukrainian)
 
     @property
     def constant(self) -> float:
@@ -451,11 +451,16 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     mm = motor_motion(c, dr, fm)
     carries(dr, mm)
     warnings = list(dr.warnings)
-    if total < dr.rotor_reduced + dr.reducer_reduced:
-        warnings.append(f"the rotor and the reducer ({dr.rotor_reduced + dr.reducer_reduced:.4g} kg·m²) "
-                        f"exceed the inertia δ = {delta:g} needs ({total:.4g} kg·m²): no flywheel is needed")
+    const = dr.rotor_reduced + dr.reducer_reduced
+    if total < const:
+        warnings.append((f"the rotor and the reducer ({const:.4g} kg·m²) exceed the inertia δ = {delta:g} needs "
+                         f"({total:.4g} kg·m²): no flywheel is needed",
+                         f"ротор і редуктор ({const:.4g} кг·м²) більші за момент інерції, потрібний для "
+                         f"δ = {delta:g} ({total:.4g} кг·м²): маховик не потрібен"))
     mean_moment = float(np.mean(mm.driving[:-1])) / (dr.ratio * dr.efficiency)
     if mean_moment > dr.motor.moment_rated:
-        warnings.append(f"the motor {dr.motor.name} works above its rated moment on average "
-                        f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} N·m): it will overheat")
+        warnings.append((f"the motor {dr.motor.name} works above its rated moment on average "
+                         f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} N·m): it will overheat",
+                         f"двигун {dr.motor.name} у середньому працює з моментом, більшим за номінальний "
+                         f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} Н·м): він перегріватиметься"))
     return Dynamics(st, c, delta, wm, dr, total, motion, fm, mm, warnings)

@@ -30,9 +30,9 @@ import numpy as np
 from graphplan.exact.dynamics import Dynamics, reduce
 from graphplan.graphic.chords import integrate_by_chords, midpoints, periodic_spline, read, standard_scale
 
-M_HEIGHT = 80.0       # mm: the largest |M*_c| drawn about this high
-A_HEIGHT = 100.0      # mm: the pole distance H is picked so A_c(2π) is drawn about this high
-I_WIDTH = 110.0       # mm: the largest I*_m drawn about this long
+M_HEIGHT = 100.0      # mm: the largest |M*_c| drawn about this high
+A_HEIGHT = 120.0      # mm: the pole distance H is picked so A_c(2π) is drawn about this high
+I_WIDTH = 140.0       # mm: the largest I*_m drawn about this long
 CURVE = 40            # samples of the French curve per interval
 
 
@@ -134,8 +134,9 @@ def tangents(X: np.ndarray, Y: np.ndarray, s_max: float, s_min: float) -> dict[s
 
 
 def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
-              H: float | None = None, slopes: str = "course") -> Flywheel:
-    """The draftsman's flywheel construction (module docstring), every length read with the ruler."""
+              H: float | None = None, slopes: str = "course", size: float = 1.0) -> Flywheel:
+    """The draftsman's flywheel construction (module docstring), every length read with the ruler;
+    ``size`` scales the drawn heights the scales aim at (a sheet with room to spare draws larger)."""
     from graphplan.util.errors import GraphplanError
     st = dyn.study
     settings = st.mech.task.flywheel
@@ -149,12 +150,12 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     turn = np.linspace(0.0, 2 * math.pi, n + 1)
     at = reduce(st, turn)
     mid = reduce(st, midpoints(turn))
-    mu_M = standard_scale(float(np.max(np.abs(at.moment))) / M_HEIGHT)
+    mu_M = standard_scale(float(np.max(np.abs(at.moment))) / (M_HEIGHT * size))
     mu_phi = 2 * math.pi / L
     if H is None:
-        H = float(settings.get("H_mm") or 5.0 * max(2, math.ceil(dyn.cycle.work / (mu_M * mu_phi * A_HEIGHT) / 5.0)))
+        H = float(settings.get("H_mm") or 5.0 * max(2, math.ceil(dyn.cycle.work / (mu_M * mu_phi * A_HEIGHT * size) / 5.0)))
     mu_A = mu_M * mu_phi * H
-    mu_I = standard_scale(float(np.max(at.inertia)) / I_WIDTH)
+    mu_I = standard_scale(float(np.max(at.inertia)) / (I_WIDTH * size))
     M = read(at.moment / mu_M, precision)
     M_mid = read(mid.moment / mu_M, precision)
     A_drawn = integrate_by_chords(x, M_mid, H, 0.0)

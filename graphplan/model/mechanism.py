@@ -88,7 +88,7 @@ class Drive:
     efficiency: float = 1.0
     reducer_inertia: float = 0.0
     rotor_inertia: float | None = None
-    warnings: tuple[str, ...] = ()
+    warnings: tuple[tuple[str, str], ...] = ()     # (English, Ukrainian)
 
 
 @dataclass

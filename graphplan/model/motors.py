@@ -106,11 +106,11 @@ def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
                          f"{line[-1].power_kW:g} kW)", where)
 
 
-def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, list[str]]:
+def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, list[tuple[str, str]]]:
     """A motor given by its data in a scene: name, power_kW, rpm_sync, rpm_rated, max_ratio,
     start_ratio, inertia and, as papers print them, omega_sync/omega_rated (rad/s). The angular
     speeds are always computed from the rpm; printed ones that disagree (seed 003 lists
-    ω_c = 298.3 and ω_n = 314 s⁻¹, swapped against 3000/2850 rpm) give a warning."""
+    ω_c = 298.3 and ω_n = 314 s⁻¹, swapped against 3000/2850 rpm) give a warning (English, Ukrainian)."""
     allowed = {"name", "power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia",
                "omega_sync", "omega_rated"}
     unknown = sorted(set(raw) - allowed)
@@ -140,7 +140,9 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
         swapped = (len(printed) == 2 and abs(printed["omega_sync"] - computed["omega_rated"]) < 5e-3 * computed["omega_rated"] + 0.5
                    and abs(printed["omega_rated"] - computed["omega_sync"]) < 5e-3 * computed["omega_sync"] + 0.5)
         given = ", ".join(f"{k} = {printed[k]:g}" for k in sorted(printed))
-        warnings.append(f"{key}: the given {given} rad/s {'are swapped' if swapped else 'disagree'} "
-                        f"against {motor.rpm_sync:g}/{motor.rpm_rated:g} rpm; computed from the speeds: "
-                        f"ω_c = {motor.omega_sync:.2f}, ω_n = {motor.omega_rated:.2f} rad/s")
+        computed_text = f"ω_c = {motor.omega_sync:.2f}, ω_n = {motor.omega_rated:.2f}"
+        warnings.append((f"{key}: the given {given} rad/s {'are swapped' if swapped else 'disagree'} against "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} rpm; computed from the speeds: {computed_text} rad/s",
+                         f"{key}: задані {given} рад/с {'переставлені відносно' if swapped else 'не відповідають'} "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} об/хв; обчислено за швидкостями: {computed_text} рад/с"))
     return motor, warnings

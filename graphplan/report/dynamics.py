@@ -86,7 +86,7 @@ def dynamics_json(f) -> dict[str, Any]:
                   "flywheel": dyn.motor_flywheel,
                   "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
                   "motion": _motion(dyn.motor_motion, every)},
-        "warnings": list(dyn.warnings),
+        "warnings": [en for en, _ in dyn.warnings],
     })
 
 
@@ -96,13 +96,17 @@ WORDS = {
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
            "approx": "наближено (ΔTmax − ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
-           "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби"},
+           "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
+           "u": {"Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
+                 "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant M_d*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
-           "given": "given by the scene", "warn": "Warnings", "scales": "Scales"},
+           "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
+           "u": {"Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
+                 "s": "s", "steady": "steady state", "peak": "peak moment"}},
 }
 
 
@@ -112,9 +116,11 @@ def dynamics_table(f, lang: str = "uk") -> str:
     w = WORDS[lang]
     out = [w["title"].format(scene=doc["scene"]), ""]
     s = doc["scales"]
-    out.append(f"{w['scales']}: μM = {s['mu_M']:g} N·m/mm, μφ = {s['mu_phi']:.5g} rad/mm, H = {doc['H_mm']:g} mm, "
-               f"μA = μT = {s['mu_A']:.5g} J/mm, μI = {s['mu_I']:g} kg·m²/mm; A_c = {doc['work_resistance']:.5g} J, "
-               f"M_d* = {doc['moment_driving']:.5g} N·m")
+    u = w["u"]
+    out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
+               f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; A_c = {doc['work_resistance']:.5g} {u['J']}, "
+               f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
     out += ["", w["pos"]]
     head = f"{'№':>3} {'φ, °':>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {'ΔT gr.':>9} {'ΔT':>9}"
     out.append(head)
@@ -125,21 +131,22 @@ def dynamics_table(f, lang: str = "uk") -> str:
     fw = doc["flywheel"]
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:48} {fw['exact']:10.4f}",
-            f"  {w['graph']:48} {fw['graphical']:10.4f}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} mm, "
+            f"  {w['graph']:48} {fw['graphical']:10.4f}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
             f"  {w['approx']:48} {fw['approximate']:10.4f}  {_pct(fw['approximate_error_pct'])}",
             f"  {w['merk']:48} {fw['merkalov']:10.4f}  {_pct(fw['merkalov_error_pct'])}",
             f"  {w['motor_fl']:48} {fw['motor']:10.4f}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     m = doc["motor"]
-    out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} kW, "
-            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} rpm, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} rad/s, "
-            f"M_n = {m['moment_rated']:.3f} N·m, M_max = {m['moment_max']:.3f} N·m, M = {m['A']:.4g}·ω + {m['B']:.5g}",
-            f"  P = max M*c·ω1/η = {m['power_needed_kW']:.3f} kW; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
-            f"I_rotor·i² = {m['rotor_reduced']:.4g} kg·m²; steady state: ωm = {m['motion']['omega_mean']:.4f} rad/s, "
-            f"δ = {m['motion']['delta']:.5f}, peak moment {m['moment_peak']:.3f} N·m"]
-    if doc["warnings"]:
-        out += ["", w["warn"] + ":"] + [f"  {x}" for x in doc["warnings"]]
+    out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
+            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
+            f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
+            f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
+            f"  P = max M*c·ω1/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
+            f"I_rotor·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
+            f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    if f.dyn.warnings:
+        out += ["", w["warn"] + ":"] + [f"  {uk if lang == 'uk' else en}" for en, uk in f.dyn.warnings]
     return "\n".join(out) + "\n"
 
 

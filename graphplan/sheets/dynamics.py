@@ -16,7 +16,9 @@ from graphplan.sheets.form import Form, table
 from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
 from graphplan.util.errors import GraphplanError
 
-LENGTHS = (330.0, 290.0, 250.0, 210.0, 170.0)   # the diagrams' abscissa L, mm: the largest that fits
+# the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
+SIZES = ((330.0, 1.5), (330.0, 1.3), (330.0, 1.15), (330.0, 1.0), (290.0, 1.0), (250.0, 1.0), (210.0, 0.8),
+         (170.0, 0.7))
 
 WORDS = {
     "uk": {"subtitle": "Динамічний аналіз", "moments": "Діаграми зведених моментів Mс*(φ), Mд* і робіт Aс(φ), Aд(φ) "
@@ -24,7 +26,7 @@ WORDS = {
            "inertia": "Діаграма зведеного моменту інерції механізму I*м(φ)",
            "wittenbauer": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) усталеного руху",
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
-           "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "Iм", "err": "δ, %",
+           "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "Iм", "err": "похибка, %",
            "exact": "точно: рівняння руху (сталий Mд*)", "graph": "графічно: діаграма Віттенбауера",
            "approx": "наближено: (ΔTmax−ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено: метод Мерцалова",
            "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d:g}, ωm = {w} рад/с",
@@ -35,7 +37,7 @@ WORDS = {
            "inertia": "Reduced moment of inertia of the mechanism I*_m(φ)",
            "wittenbauer": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) in the steady state",
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
-           "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
+           "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
            "exact": "exact: equation of motion (constant M_d*)", "graph": "graphical: Wittenbauer diagram",
            "approx": "approximate: (ΔTmax−ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate: Merkalov's method",
            "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d:g}, ωm = {w} rad/s",
@@ -110,21 +112,21 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              f"Iм = J − Iрот·i² − Iред = {f.flywheel:.4g} {'кг·м²' if uk else 'kg·m²'}",
              w["achieved"].format(d=doc["motion"]["delta"], c=doc["motion"]["closure"])]
     from graphplan.sheets.form import wrap
-    for x in doc["warnings"]:
-        lines += wrap(f"{w['warn']}: {x}", 250.0, 3.5)
+    for en, uk_text in f.dyn.warnings:
+        lines += wrap(f"{w['warn']}: {uk_text if uk else en}", 250.0, 3.5)
     rec = Record("notes")
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
 
 
-def dynamics_blocks(st: Study, args: Options, L: float, dyn=None) -> tuple[list[Block], Flywheel]:
+def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 1.0) -> tuple[list[Block], Flywheel]:
     lang = args.lang
     w = WORDS[lang]
     dyn = dyn or analyse(st, getattr(args, "delta", None))
-    f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L)
+    f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
     doc = dynamics_json(f)
-    drawn = records(f, lang)
+    drawn = records(f, lang, speed_height=100.0 * size)
     blocks = [Block(name, lambda _k, r=drawn[name], c=w[name]: captioned(r, c))
               for name in ("moments", "wittenbauer", "energy", "inertia", "speed")]
     blocks.append(Block("positions table", lambda _k: positions_table(doc, lang)))
@@ -138,8 +140,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the largest abscissa L that lets every block fit the sheet."""
     last: GraphplanError | None = None
     dyn = analyse(st, getattr(args, "delta", None))
-    for L in LENGTHS:
-        blocks, fw = dynamics_blocks(st, args, L, dyn)
+    for L, size in SIZES:
+        blocks, fw = dynamics_blocks(st, args, L, dyn, size)
         tf = fields(st, args.lang, f"μφ = {fw.mu_phi:.4g}", 3, 3)
         tf["subtitle"] = WORDS[args.lang]["subtitle"]
         try:
