@@ -126,32 +126,28 @@ def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:
     rec.label((mid, y - 4.5), text, size=TEXT, anchor="middle", layer=LAYER, step=text)
 
 
+def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.ndarray,
+                  sym: list[tuple[str, bool]], name: str) -> Record:
+    """A diagram over φ of ordinates read at the divisions, joined by the French curve."""
+    rec = Record(title, scales=scales)
+    lo, hi = _extent(values)
+    _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
+    _ordinates(rec, f, lo, hi, lo - 5.0)
+    for xk, yk in zip(f.x, values):
+        rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
+    fine, curve = _smooth(f, values)
+    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
+    return rec
+
+
 def energy_record(f: Flywheel, lang: str = "uk") -> Record:
     """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
-    w = WORDS[lang]
-    rec = Record(w["energy"], scales={"mu_T": f.mu_A})
-    lo, hi = _extent(f.dT)
-    _axes(rec, lo, hi, -3.0, f.L, [("ΔT", False)], step="ΔT")
-    _ordinates(rec, f, lo, hi, lo - 5.0)
-    for xk, yk in zip(f.x, f.dT):
-        rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
-    fine, curve = _smooth(f, f.dT)
-    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="ΔT(φ)")
-    return rec
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, [("ΔT", False)], "ΔT")
 
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
     """I*_m(φ) at μ_I."""
-    w = WORDS[lang]
-    rec = Record(w["inertia"], scales={"mu_I": f.mu_I})
-    lo, hi = _extent(f.I)
-    _axes(rec, lo, hi, -3.0, f.L, [("I*", False), ("m", True)], step="I*")
-    _ordinates(rec, f, lo, hi, lo - 5.0)
-    for xk, yk in zip(f.x, f.I):
-        rec.point((xk, yk), role="construction", layer=LAYER, step="I* read")
-    fine, curve = _smooth(f, f.I)
-    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="I*_m(φ)")
-    return rec
+    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, [("I*", False), ("m", True)], "I*_m")
 
 
 def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
