@@ -9,6 +9,7 @@ from (docs/api.md)::
     p = graphplan.plans(s, precision=0.5)           # position, velocity and acceleration plans
     p.velocity(1); p.acceleration()                 # each displays itself in Jupyter
     graphplan.diagrams(s); graphplan.forces(s)      # s–v–a diagrams; force plans and the lever
+    graphplan.dynamics(s)                           # the flywheel: Wittenbauer against exact
     graphplan.sheet(s, format="A1").save("shaper.pdf")
 
 Every result has ``to_json()``, ``table()`` and an SVG/HTML display. Nothing heavy is imported
@@ -19,9 +20,9 @@ from __future__ import annotations
 from typing import Any
 
 __version__ = "0.1.0"
-__all__ = ["load", "study", "plans", "diagrams", "forces", "sheet", "__version__"]
+__all__ = ["load", "study", "plans", "diagrams", "forces", "dynamics", "sheet", "__version__"]
 
-_LAZY = {name: "graphplan.api" for name in ("load", "study", "plans", "diagrams", "forces", "sheet")}
+_LAZY = {name: "graphplan.api" for name in ("load", "study", "plans", "diagrams", "forces", "dynamics", "sheet")}
 
 
 def __getattr__(name: str) -> Any:

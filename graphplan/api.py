@@ -242,6 +242,23 @@ class Forces(View):
         return self.plans.svg()
 
 
+class Dynamics(View):
+    """The machine's dynamics reduced to the crank: the flywheel by the Wittenbauer construction
+    against the exact one from the equation of motion, and the motor."""
+
+    def to_json(self) -> dict[str, Any]:
+        from graphplan.report.dynamics import dynamics_json
+        return dynamics_json(self.value)
+
+    def table(self) -> str:
+        from graphplan.report.dynamics import dynamics_table
+        return dynamics_table(self.value, self.lang)
+
+    def svg(self) -> str:
+        from graphplan.drawing.flywheel import wittenbauer_record
+        return _page(wittenbauer_record(self.value, self.lang))
+
+
 class Sheet(View):
     """A drawing sheet (frame, title block, blocks); ``save(path)`` writes .svg, .pdf, .png or .dxf."""
 
@@ -319,10 +336,19 @@ def forces(scene=None, phi: float | None = None, precision: float = 0.5, lang: s
     return Forces(construct(st, angle, precision), lang)
 
 
+def dynamics(scene=None, delta: float | None = None, divisions: int | None = None, precision: float = 0.5,
+             lang: str = "uk") -> Dynamics:
+    """The exact dynamics (δ: the scene's [dynamics] delta, else 0.04) and the flywheel's graphical
+    construction over ``divisions`` of the turn read with a ruler of ``precision`` mm."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import construct
+    return Dynamics(construct(analyse(_study_of(scene), delta), divisions, precision), lang)
+
+
 def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = "uk",
           precision: float = 0.5, positions: int | None = None,
           accel: Sequence[str | int | float] | None = None) -> Sheet:
-    """A drawing sheet: ``kind`` "kinematics" or "forces", on ``format`` A1…A3, in ``lang``."""
+    """A drawing sheet: ``kind`` "kinematics", "forces" or "dynamics", on ``format`` A1…A3, in ``lang``."""
     from types import SimpleNamespace
 
     from graphplan.sheets.form import form

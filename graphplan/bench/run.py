@@ -209,6 +209,12 @@ def external(quick: bool) -> Iterator[Row]:
         yield {"section": "external", "x": row.get("n_positions"), **row}
 
 
+def flywheel(quick: bool) -> Iterator[Row]:
+    """The graphical flywheel against the exact one (bench/dynamics.py)."""
+    from graphplan.bench.dynamics import flywheel as rows
+    return rows(quick, example)
+
+
 SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "speed": solver_speed,
     "chords": chords,
@@ -217,6 +223,7 @@ SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "stability": stability,
     "sheet": sheet_time,
     "external": external,
+    "flywheel": flywheel,
 }
 
 
@@ -358,8 +365,14 @@ def _chart_plans(rows: list[Row], plt):
     return fig
 
 
+def _chart_flywheel(rows: list[Row], plt):
+    from graphplan.bench.dynamics import chart
+    return chart(rows, plt)
+
+
 CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
-                               "stability": _chart_stability, "differentiation": differentiation.chart}
+                               "stability": _chart_stability, "differentiation": differentiation.chart,
+                               "flywheel": _chart_flywheel}
 
 
 def summary(rows: list[Row]) -> str:

@@ -18,6 +18,8 @@ SHEETS = [
     ("slotter", "kinematics", "uk", "slotter.svg"),
     ("shaper", "forces", "uk", "shaper_forces.svg"),
     ("slotter", "forces", "uk", "slotter_forces.svg"),
+    ("shaper", "dynamics", "uk", "shaper_dynamics.svg"),
+    ("slotter", "dynamics", "uk", "slotter_dynamics.svg"),
 ]
 
 

@@ -35,6 +35,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.plans",
     "graphplan.cli.diagrams",
     "graphplan.cli.forces",
+    "graphplan.cli.dynamics",
     "graphplan.cli.key",
     "graphplan.cli.bench",
     "graphplan.cli.view",

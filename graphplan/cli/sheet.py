@@ -17,8 +17,8 @@ def register(sub) -> None:
                    help="output file: .svg, .pdf, .png or .dxf")
     p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
     p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
-    p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces"],
-                   help="which sheet: kinematics (default) or forces")
+    p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces", "dynamics"],
+                   help="which sheet: kinematics (default), forces or dynamics")
     p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
     p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
     p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")

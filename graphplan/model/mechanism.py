@@ -9,6 +9,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from graphplan.model.motors import Motor
+
 FRAME = "0"
 
 
@@ -71,6 +73,22 @@ class Task:
     force_phi: float | None = None                    # the force analysis, deg of turn from position 0
     diagram: dict[str, object] = field(default_factory=dict)  # [diagrams]: L_mm, H1_mm, H2_mm, divisions, point
     meta: dict[str, str] = field(default_factory=dict)        # title_en, designation, sheet.* fields
+    flywheel: dict[str, float] = field(default_factory=dict)  # [dynamics]: delta, L_mm, H_mm, divisions
+
+
+@dataclass(frozen=True)
+class Drive:
+    """What turns the crank (scene's [dynamics], seed 003): a motor (given, or chosen from the
+    catalogue's ``rpm_sync`` line), a reducer of ratio i = ω_motor/ω_crank (None: rated motor speed
+    over the crank's) and efficiency η, the reducer's moment of inertia reduced to the crank, and a
+    rotor inertia overriding the motor's. ``warnings``: what the scene's motor data said wrong."""
+    motor: Motor | None = None
+    rpm_sync: float = 3000.0
+    ratio: float | None = None
+    efficiency: float = 1.0
+    reducer_inertia: float = 0.0
+    rotor_inertia: float | None = None
+    warnings: tuple[tuple[str, str], ...] = ()     # (English, Ukrainian)
 
 
 @dataclass
@@ -90,6 +108,7 @@ class Mechanism:
     params: dict[str, float] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)
     task: Task = field(default_factory=lambda: Task())
+    drive: Drive = field(default_factory=lambda: Drive())
     source: str = "<scene>"
 
     @property

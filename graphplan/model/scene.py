@@ -16,12 +16,12 @@ from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.util.files import read_text
 from graphplan.model import bounds as B
 from graphplan.model.expressions import evaluate
-from graphplan.model.mechanism import FRAME, Crank, Force, Guide, Link, Mechanism, Task
+from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, Mechanism, Task
 
 BUILTIN = "crank_slider.toml"
 
 _TOP = {"diagrams", "title", "title_en", "designation", "sheet", "params", "synthesis", "frame", "crank",
-        "link", "branch", "positions", "loads", "force"}
+        "link", "branch", "positions", "loads", "force", "dynamics"}
 _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
@@ -31,6 +31,8 @@ _DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point", "method"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
+_DYNAMICS = {"delta", "motor", "synchronous_rpm", "ratio", "efficiency", "reducer_inertia", "rotor_inertia",
+             "L_mm", "H_mm", "divisions"}
 
 
 def builtin_path() -> Path:
@@ -163,7 +165,9 @@ class _Reader:
                       force_phi=(self.number(positions["force_phi_deg"], "positions.force_phi_deg",
                                              bounds=B.ANGLE)
                                  if "force_phi_deg" in positions else None),
-                      diagram=self.read_diagram(data.get("diagrams", {})), meta=self.read_meta(data)),
+                      diagram=self.read_diagram(data.get("diagrams", {})), meta=self.read_meta(data),
+                      flywheel=self.read_flywheel(data.get("dynamics", {}))),
+            drive=self.read_drive(data.get("dynamics", {})),
             source=self.where)
         self.check_names(mech)
         return mech
@@ -435,6 +439,49 @@ class _Reader:
                 raise self.fail("diagrams.method", f"must be \"chords\" or \"tangents\", got {raw['method']!r}")
             out["method"] = raw["method"]
         return out
+
+    def read_flywheel(self, raw: Any) -> dict[str, float]:
+        """[dynamics]: the coefficient of unevenness δ and the flywheel construction's abscissa L,
+        pole distance H (mm) and divisions."""
+        raw = self.table(raw, "dynamics", _DYNAMICS)
+        out: dict[str, float] = {}
+        for key in ("delta", "L_mm", "H_mm"):
+            if key in raw:
+                out[key] = self.number(raw[key], f"dynamics.{key}", positive=True)
+        if "delta" in out and not 0 < out["delta"] < 0.5:
+            raise self.fail("dynamics.delta", f"the coefficient of unevenness must lie in (0, 0.5), got {out['delta']:g}")
+        if "divisions" in raw:
+            n = raw["divisions"]
+            if isinstance(n, bool) or not isinstance(n, int) or not 4 <= n <= 3600:
+                raise self.fail("dynamics.divisions", f"must be a whole number from 4 to 3600, got {n!r}")
+            out["divisions"] = n
+        return out
+
+    def read_drive(self, raw: Any) -> Drive:
+        """[dynamics]: the motor (a catalogue name or a table of its data), the catalogue line for
+        the choice, the reducer's ratio i, efficiency η and reduced inertia, a rotor inertia."""
+        from graphplan.model import motors
+        raw = self.table(raw, "dynamics", _DYNAMICS)
+        motor, warnings = None, []
+        if "motor" in raw:
+            value = raw["motor"]
+            if isinstance(value, str):
+                motor = motors.find(value, self.where)
+            elif isinstance(value, dict):
+                motor, warnings = motors.from_data(value, "dynamics.motor", self.where)
+            else:
+                raise self.fail("dynamics.motor", "must be a catalogue name or a table of the motor's data")
+        rpm = self.number(raw.get("synchronous_rpm", 3000), "dynamics.synchronous_rpm", positive=True)
+        eta = self.number(raw.get("efficiency", 1.0), "dynamics.efficiency", positive=True)
+        if eta > 1:
+            raise self.fail("dynamics.efficiency", f"must lie in (0, 1], got {eta:g}")
+        ratio = self.number(raw["ratio"], "dynamics.ratio", positive=True) if "ratio" in raw else None
+        rotor = self.number(raw["rotor_inertia"], "dynamics.rotor_inertia") if "rotor_inertia" in raw else None
+        reducer = self.number(raw.get("reducer_inertia", 0.0), "dynamics.reducer_inertia")
+        for key, v in (("rotor_inertia", rotor), ("reducer_inertia", reducer)):
+            if v is not None and v < 0:
+                raise self.fail(f"dynamics.{key}", f"must be ≥ 0, got {v:g}")
+        return Drive(motor, rpm, ratio, eta, reducer, rotor, tuple(warnings))
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}

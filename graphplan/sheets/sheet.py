@@ -342,3 +342,12 @@ def check_positions(st: Study, f: Form, args: Options) -> None:
 
 
 BUILDERS["kinematics"] = build_kinematics_sheet
+
+
+def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
+    """Sheet 3 (sheets/dynamics.py): the flywheel by the Wittenbauer construction and the motor."""
+    from graphplan.sheets.dynamics import build_dynamics_sheet as build
+    return build(st, f, args)
+
+
+BUILDERS["dynamics"] = build_dynamics_sheet

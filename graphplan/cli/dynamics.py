@@ -1,0 +1,68 @@
+"""`graphplan dynamics`: the machine's dynamics reduced to the crank — the reduced inertia and
+moments, the flywheel by the graphical (Wittenbauer) construction and the approximate methods
+against the exact one from the equation of motion, and the motor — as the contract's JSON or as
+tables; the drawings on request."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from graphplan.util.errors import GraphplanError
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "dynamics", help="reduced inertia and moments, equation of motion with the motor, flywheel",
+        description="Dynamics of the machine reduced to the crank (seed 003): I*(φ), M*(φ), the "
+                    "steady state of the equation of motion with a constant driving moment and with "
+                    "the motor, and the flywheel for a coefficient of unevenness δ by the graphical "
+                    "energy–mass (Wittenbauer) construction, measured to the drafting precision, "
+                    "against the exact one.")
+    p.add_argument("scene", help="scene file (TOML, see docs/scenes.md and docs/dynamics.md)")
+    p.add_argument("--delta", type=float, metavar="D",
+                   help="coefficient of unevenness δ in (0, 0.5); default: the scene's [dynamics] delta, else 0.04")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
+    p.add_argument("--divisions", type=int, metavar="N",
+                   help="divisions of the turn on the diagrams (default: the scene's [dynamics] divisions, "
+                        "else its number of positions)")
+    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
+    p.add_argument("--svg", metavar="DIR", help="write the diagrams to DIR (moments, energy, inertia, "
+                                                "wittenbauer, speed .svg)")
+    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="tables and drawings: Ukrainian or English")
+    p.set_defaults(handler=cmd_dynamics)
+
+
+def cmd_dynamics(args: argparse.Namespace) -> int:
+    from graphplan.cli.common import dumps, load_study
+    from graphplan.exact.dynamics import analyse, check_delta
+    from graphplan.graphic.flywheel import construct
+    from graphplan.report.dynamics import dynamics_json, dynamics_table
+    if not math.isfinite(args.precision) or args.precision < 0:
+        raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {args.precision:g}")
+    if args.delta is not None:
+        check_delta(args.delta)
+    if args.divisions is not None and not 4 <= args.divisions <= 3600:
+        raise GraphplanError(f"--divisions must be a whole number from 4 to 3600, got {args.divisions}")
+    st = load_study(args.scene)
+    try:
+        dyn = analyse(st, args.delta)
+    except GraphplanError as exc:
+        raise GraphplanError(str(exc), exc.where or args.scene) from None
+    f = construct(dyn, args.divisions, args.precision)
+    if args.svg:
+        write_svg(f, args.svg, args.lang)
+    sys.stdout.write(dumps(dynamics_json(f)) if args.json else dynamics_table(f, args.lang))
+    return 0
+
+
+def write_svg(f, folder: str, lang: str) -> None:
+    from pathlib import Path
+
+    from graphplan.drawing import svg
+    from graphplan.drawing.flywheel import records
+    from graphplan.util.files import write_atomic
+    for name, rec in records(f, lang).items():
+        page, w, h = svg.page_for(rec)
+        write_atomic(Path(folder) / f"{name}.svg", svg.render(page, w, h, rec.title))

@@ -1,0 +1,250 @@
+"""The flywheel construction as records (drawing mm, y up): the moments' diagram with the pole
+construction of the integration, the work diagrams A_c and A_d, the ΔT diagram, the I*_m diagram,
+the energy–mass (Wittenbauer) diagram with its two tangents and the intercept kl, and the speed
+ω(φ) of the steady states — each a record for the sheet (graphic.flywheel measured them)."""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphplan.drawing.diagrams import fmt, rich
+from graphplan.graphic.chords import periodic_spline
+from graphplan.graphic.record import Record
+
+if TYPE_CHECKING:
+    from graphplan.graphic.flywheel import Flywheel
+
+LAYER = "diagrams"
+AXIS_W = 0.35
+TEXT = 3.5
+NUM = 2.5
+
+WORDS = {
+    "uk": {"moments": "Зведені моменти сил опору і рушійних сил", "work": "Роботи сил опору і рушійних сил",
+           "energy": "Зміна кінетичної енергії ΔT = Aд − Aс", "inertia": "Зведений момент інерції механізму",
+           "witt": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) за оберт",
+           "classical": "сталий Mд*, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
+           "mm": "мм", "Nm": "Н·м", "J": "Дж", "kgm2": "кг·м²", "rad": "рад", "s": "с",
+           "kl": "|kl| = {kl:g} мм", "axis": "вісь ΔT"},
+    "en": {"moments": "Reduced moments of the resistance and driving forces", "work": "Work of the resistance and driving forces",
+           "energy": "Change of kinetic energy ΔT = A_d − A_c", "inertia": "Reduced moment of inertia of the mechanism",
+           "witt": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) over a turn",
+           "classical": "constant M_d*, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
+           "mm": "mm", "Nm": "N·m", "J": "J", "kgm2": "kg·m²", "rad": "rad", "s": "s",
+           "kl": "|kl| = {kl:g} mm", "axis": "ΔT axis"},
+}
+
+
+def _extent(*arrays) -> tuple[float, float]:
+    v = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays] + [[0.0]])
+    return float(v.min()), float(v.max())
+
+
+def _axes(rec: Record, lo: float, hi: float, x_from: float, L: float, sym: list[tuple[str, bool]],
+          xsym: str = "φ", step: str = "") -> None:
+    rec.vector((0.0, lo - 3.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
+    rec.vector((x_from, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
+    rich(rec, (1.8, hi + 5.0), sym, step=f"axes {step}")
+    rec.label((L + 11.5, -1.2), xsym, size=TEXT, layer=LAYER, step=f"axes {step}")
+
+
+def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float | None) -> None:
+    n = f.divisions
+    every = 1
+    while f.L / n * every < 5.0:
+        every *= 2
+    for k, xk in enumerate(f.x):
+        if k:
+            rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
+        if numbers_at is not None and (k % every == 0 or k == n):
+            rec.label((xk, numbers_at), str(k), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
+
+
+def _smooth(f: Flywheel, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The French curve through a periodic diagram's division ordinates."""
+    fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
+    trend = y[-1] - y[0]
+    return fine, periodic_spline(f.x[:-1], y[:-1] - trend * f.x[:-1] / f.L, f.L)(fine) + trend * fine / f.L
+
+
+def moments_record(f: Flywheel, lang: str = "uk") -> Record:
+    """a) M*_c(φ) with the constant M*_d, the pole P at H and the rays to the middles' heights;
+    b) below it, A_c by chords and the straight A_d on the same abscissa."""
+    w = WORDS[lang]
+    rec = Record(w["moments"], scales={"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "H_mm": f.H})
+    lo, hi = _extent(f.M, f.M_mid, [f.Md], f.dyn.cycle.samples.moment / f.mu_M)
+    _axes(rec, lo, hi, -f.H - 4.0, f.L, [("M", False), ("c", True), (", M", False), ("d", True)], step="M")
+    _ordinates(rec, f, lo, hi, lo - 5.0)
+    fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
+    curve = f.dyn.cycle.moment(fine * f.mu_phi) / f.mu_M     # the diagram plotted from the computed M*_c
+    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="M*_c(φ)")
+    for xk, yk in zip(f.x, f.M):
+        rec.point((xk, yk), role="construction", layer=LAYER, step="M*_c at the divisions")
+    xm = 0.5 * (f.x[:-1] + f.x[1:])
+    pole = (-f.H, 0.0)
+    rec.point(pole, role="joint", layer=LAYER, step="pole P")
+    rec.label((-f.H - 1.8, 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step="pole P")
+    for k, (xk, yk) in enumerate(zip(xm, f.M_mid)):
+        rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+        rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
+        rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+    rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
+    rich(rec, (f.L + 1.5, f.Md + 1.0), [("M", False), ("d", True)], step="M*_d")
+    rich(rec, (f.L + 1.5, float(f.M[-1]) - 4.0), [("M", False), ("c", True)], step="M*_c")
+    _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
+    # b) the work diagrams, below
+    a_lo, a_hi = _extent(f.A_drawn)
+    y0 = lo - 22.0 - a_hi - 8.0
+    rec.extend(_work(f, w).moved(0.0, y0))
+    return rec
+
+
+def _work(f: Flywheel, w: dict) -> Record:
+    rec = Record("work")
+    lo, hi = _extent(f.A_drawn)
+    _axes(rec, lo, hi, -3.0, f.L, [("A", False), ("c", True), (", A", False), ("d", True)], step="A")
+    _ordinates(rec, f, lo, hi, lo - 5.0)
+    for k in range(f.divisions):
+        rec.segment((f.x[k], f.A_drawn[k]), (f.x[k + 1], f.A_drawn[k + 1]), role="chord", layer=LAYER,
+                    step=f"chord {k}–{k + 1} ∥ ray P–{k + 1}")
+        rec.point((f.x[k + 1], f.A_drawn[k + 1]), role="construction", layer=LAYER, step=f"A_c at {k + 1}")
+    fine, curve = _smooth(f, f.A_drawn)
+    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
+    rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
+    rich(rec, (f.L + 1.5, float(f.A_drawn[-1]) + 1.0), [("A", False), ("d", True), (" = A", False), ("c", True)],
+         step="A_d")
+    return rec
+
+
+def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:
+    rec.segment((x0, 0.0), (x0, y - 1.5), role="construction", layer=LAYER, step=text)
+    mid = 0.5 * (x0 + x1)
+    rec.vector((mid, y), (x0, y), role="construction", layer=LAYER, step=text)
+    rec.vector((mid, y), (x1, y), role="construction", layer=LAYER, step=text)
+    rec.label((mid, y - 4.5), text, size=TEXT, anchor="middle", layer=LAYER, step=text)
+
+
+def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.ndarray,
+                  sym: list[tuple[str, bool]], name: str) -> Record:
+    """A diagram over φ of ordinates read at the divisions, joined by the French curve."""
+    rec = Record(title, scales=scales)
+    lo, hi = _extent(values)
+    _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
+    _ordinates(rec, f, lo, hi, lo - 5.0)
+    for xk, yk in zip(f.x, values):
+        rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
+    fine, curve = _smooth(f, values)
+    rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
+    return rec
+
+
+def energy_record(f: Flywheel, lang: str = "uk") -> Record:
+    """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, [("ΔT", False)], "ΔT")
+
+
+def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
+    """I*_m(φ) at μ_I."""
+    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, [("I*", False), ("m", True)], "I*_m")
+
+
+def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
+    """ΔT over I*_m: the points of the divisions numbered, the French curve, the tangents at
+    ψ_max and ψ_min cutting the ΔT axis at k and l, and |kl|."""
+    w = WORDS[lang]
+    rec = Record(w["witt"], scales={"mu_I": f.mu_I, "mu_T": f.mu_A})
+    X, Y = f.curve()
+    tg = f.tangent
+    k, l = tg["k"], tg["l"]
+    x_hi = float(max(np.max(X), np.max(f.I))) + 8.0
+    lo, hi = _extent(Y, f.dT, [k, l])
+    rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
+    rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
+    rich(rec, (1.8, hi + 7.0), [("ΔT", False)], step="axes")
+    rich(rec, (x_hi + 7.5, -1.2), [("I*", False), ("m", True)], step="axes")
+    rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
+    n = f.divisions
+    every = 1
+    while n / every > 24:
+        every *= 2
+    for j in range(n):
+        rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
+        if j % every == 0:
+            rec.label((float(f.I[j]) + 1.0, float(f.dT[j]) + 0.8), str(j), size=NUM, layer=LAYER, step=f"point {j}")
+    for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
+                               ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
+        x_end = tx + 15.0
+        rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
+        rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
+        psi = math.degrees(math.atan(s))
+        rich(rec, (x_end + 1.5, b + s * x_end - 1.0), [("ψ", False), (name, True), (f" = {psi:.2f}°", False)],
+             step=f"ψ_{name}")
+    rec.point((0.0, k), role="joint", layer=LAYER, step="k")
+    rec.point((0.0, l), role="joint", layer=LAYER, step="l")
+    rec.label((-1.8, k - 1.2), "k", size=TEXT, anchor="end", layer=LAYER, step="k")
+    rec.label((-1.8, l - 1.2), "l", size=TEXT, anchor="end", layer=LAYER, step="l")
+    xd = -9.0
+    rec.vector((xd, 0.5 * (k + l)), (xd, k), role="construction", layer=LAYER, step="kl")
+    rec.vector((xd, 0.5 * (k + l)), (xd, l), role="construction", layer=LAYER, step="kl")
+    rec.segment((xd - 1.5, k), (0.0, k), role="construction", layer=LAYER, step="kl")
+    rec.segment((xd - 1.5, l), (0.0, l), role="construction", layer=LAYER, step="kl")
+    rec.label((xd - 1.5, 0.5 * (k + l) - 1.2), w["kl"].format(kl=f.kl), size=TEXT, anchor="end", layer=LAYER,
+              step="kl read")
+    return rec
+
+
+def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 100.0) -> Record:
+    """ω(φ) of the steady states (classical with the exact flywheel, and the motor's) over one
+    turn, with a scale of ω on the ordinate axis (ticks in rad/s)."""
+    w = WORDS[lang]
+    dyn = f.dyn
+    L = width or f.L
+    rec = Record(w["speed"])
+    curves = [(dyn.motion, "curve", w["classical"]),
+              (dyn.motor_motion, "projection", w["motor"].format(name=dyn.drive.motor.name,
+                                                              fl=fmt(dyn.motor_flywheel, lang)))]
+    lo = min(float(np.min(m.omega)) for m, _, _ in curves)
+    hi = max(float(np.max(m.omega)) for m, _, _ in curves)
+    pad = 0.08 * (hi - lo)
+    lo, hi = lo - pad, hi + pad
+    y = lambda v: (np.asarray(v) - lo) / (hi - lo) * height  # noqa: E731
+    rec.vector((0.0, 0.0), (0.0, height + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
+    rec.vector((0.0, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
+    rich(rec, (1.8, height + 5.0), [("ω, ", False), (w["rad"] + "/" + w["s"], False)], step="axes ω")
+    rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
+    step = _nice((hi - lo) / 5)
+    v = math.ceil(lo / step) * step
+    while v <= hi:
+        yy = float(y(v))
+        rec.segment((0.0, yy), (L, yy), role="grid", layer=LAYER, step="ω grid")
+        rec.label((-1.5, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+        v += step
+    for deg in range(0, 361, 30):
+        xx = L * deg / 360.0
+        rec.segment((xx, 0.0), (xx, -1.5), role="construction", layer=LAYER, step="φ ticks")
+        rec.label((xx, -5.0), f"{deg}°", size=NUM, anchor="middle", layer=LAYER, step="φ ticks")
+    for k, (m, role, text) in enumerate(curves):
+        xs = m.turn / (2 * math.pi) * L
+        rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
+                width=0.5 if k == 0 else 0.35)
+        yl = -10.0 - 5.0 * k
+        rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
+        rec.label((12.0, yl), f"{text}: δ = {m.delta:.4f}, ωm = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
+    return rec
+
+
+def _nice(raw: float) -> float:
+    e = math.floor(math.log10(raw))
+    for m in (1, 2, 2.5, 5, 10):
+        if m * 10 ** e >= raw:
+            return m * 10 ** e
+    return 10 ** (e + 1)
+
+
+def records(f: Flywheel, lang: str = "uk", speed_height: float = 100.0) -> dict[str, Record]:
+    """Every drawing of the construction by name."""
+    return {"moments": moments_record(f, lang), "energy": energy_record(f, lang),
+            "inertia": inertia_record(f, lang), "wittenbauer": wittenbauer_record(f, lang),
+            "speed": speed_record(f, lang, height=speed_height)}

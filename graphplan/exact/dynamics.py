@@ -1,0 +1,466 @@
+"""Dynamics of the machine reduced to the crank (seed 003, REFERENCE §1.8–1.9): the reduced moment
+of inertia and its derivative, the reduced moment of the resistance forces, the equation of motion
+with a constant driving moment or a real induction motor, its periodic steady state and the
+flywheel that gives a requested coefficient of unevenness δ.
+
+* Reduced moment of inertia (the kinetic-energy definition, seed 003 eq. 3), φ the crank's turn:
+      I*_m(φ) = Σ m_i·(v_Si/ω1)² + I_Si·(ω_i/ω1)²,
+      dI*_m/dφ = 2·Σ [m_i·v_Si·a_Si + I_Si·ω_i·ε_i] / (ω1²·|ω1|)
+  with the velocities and accelerations of the crank turning uniformly (ε1 = 0).
+* Reduced moment of the resistance forces: M*_c(φ) = −(P_G + P_F)/|ω1| — gravity and the scene's
+  external forces (their stroke and profile) from kinetostatics.loads, positive where they resist.
+* Equation of motion (seed 003 eq. 2), in the energy form used here:
+      I*(φ)·dω/dt + ½·dI*/dφ·ω² = M*_d − M*_c   ⇔   dT/dφ = M*_d(ω) − M*_c(φ),  T = ½·I*(φ)·ω²,
+  I* = I*_m + I_rotor·i² + I*_reducer + I_fl. The classical course's driving moment is constant,
+  M*_d = A_c/2π (A_d = A_c over a cycle); a motor's is M*_d = i·η·(A·i·ω + B) on its working branch.
+* δ = (ω_max − ω_min)/ω_m with ω_m = (ω_max + ω_min)/2.
+
+The cycle is tabulated once (exact values, cubic splines between the output's extreme positions,
+where the loads may switch), then integrated with scipy's solve_ivp (DOP853, rtol 1e-11); the
+motor's steady state is found by shooting (brentq on ω(2π) − ω(0)) and each flywheel by brentq on
+the simulated δ.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from graphplan.exact.kinematics import Kinematics, dot, solve
+from graphplan.exact.kinetostatics import loads, working_stroke
+from graphplan.exact.positions import Study
+from graphplan.model.motors import Motor, choose
+from graphplan.util.errors import GraphplanError
+
+Array = np.ndarray
+STEP_DEG = 0.25        # the cycle's table: at most this far between exact samples
+RTOL = 1e-11           # solve_ivp's tolerances
+PERIODIC = 1e-11       # the shooting's tolerance on ω(2π) − ω(0), relative
+FINE = 7200            # samples per turn for ω_max, ω_min (refined by a parabola)
+DELTA_RANGE = (0.0, 0.5)
+
+
+# -- the reduced quantities at given crank turns -----------------------------------------------
+
+@dataclass
+class Reduced:
+    """The mechanism reduced to the crank at crank turns ``turn`` (rad from position 0, in the
+    crank's sense): I*_m, dI*_m/dφ (kg·m², kg·m²/rad) and M*_c (N·m, + resisting)."""
+    turn: Array
+    phi_deg: Array
+    inertia: Array
+    d_inertia: Array
+    moment: Array
+    working: Array
+
+
+def uniform(st: Study) -> Study:
+    """The same study with the crank turning uniformly (ε1 = 0): the reduction's kinematics."""
+    mech = st.mech
+    if mech.crank.epsilon == 0.0:
+        return st
+    return replace(st, mech=replace(mech, crank=replace(mech.crank, epsilon=0.0)))
+
+
+def crank_angle(st: Study, turn_rad) -> Array:
+    """Crank angle φ (deg, [0, 360)) after turning ``turn_rad`` from position 0 in the crank's sense."""
+    return np.mod(st.phi0 + np.sign(st.mech.omega1) * np.degrees(np.asarray(turn_rad, dtype=float)), 360.0)
+
+
+def masses(st: Study) -> list[tuple[str, complex, float, float]]:
+    """(link, local point of its centre of mass, m, I_S) of every link with a mass or an inertia."""
+    out = []
+    for name, link in st.mech.links.items():
+        m, i_s = link.mass or 0.0, link.inertia or 0.0
+        if m or i_s:
+            com = link.com or next(iter(link.local))
+            out.append((name, link.local[com], m, i_s))
+    if not out:
+        raise GraphplanError("dynamics: the scene gives no masses or moments of inertia of its links "
+                             "(mass, inertia in [crank] and [[link]], or [loads] mass_per_length): "
+                             "there is no reduced moment of inertia", st.mech.source)
+    return out
+
+
+def inertia_terms(st: Study, kin: Kinematics) -> tuple[Array, Array]:
+    """I*_m = Σ m(v_S/ω1)² + I_S(ω/ω1)²  and  dI*_m/dφ = 2Σ[m v_S·a_S + I_S ω ε]/(ω1²|ω1|)."""
+    w1 = st.mech.omega1
+    inertia = np.zeros(kin.phi_deg.shape)
+    rate = np.zeros(kin.phi_deg.shape)
+    for name, local, m, i_s in masses(st):
+        body = kin.bodies[name]
+        _, v, a = body.at(local)
+        inertia = inertia + m * np.abs(v) ** 2 / w1 ** 2 + i_s * (body.omega / w1) ** 2
+        rate = rate + 2.0 * (m * dot(v, a) + i_s * body.omega * body.eps)
+    return inertia, rate / (w1 ** 2 * abs(w1))
+
+
+def resistance(st: Study, kin: Kinematics, working: Array) -> Array:
+    """M*_c = −(P_G + P_F)/|ω1|: the power of gravity and of the external forces (kinetostatics'
+    loads, their strokes and profiles) reduced to the crank; positive where it resists."""
+    power = sum((ld.power for ld in loads(st, kin, working) if ld.kind in ("gravity", "external")),
+                np.zeros(kin.phi_deg.shape))
+    return -power / abs(st.mech.omega1)
+
+
+def reduce(st: Study, turn_rad, working: Array | None = None) -> Reduced:
+    """I*_m, dI*_m/dφ and M*_c at the crank turns (rad from position 0). ``working`` overrides the
+    stroke (at a boundary between strokes each side takes its own)."""
+    su = uniform(st)
+    turn = np.atleast_1d(np.asarray(turn_rad, dtype=float))
+    phi = crank_angle(st, turn)
+    kin = su.solve(phi)
+    work = working_stroke(su, phi) if working is None else np.broadcast_to(working, phi.shape)
+    inertia, rate = inertia_terms(su, kin)
+    return Reduced(turn, phi, inertia, rate, resistance(su, kin, work), np.asarray(work, dtype=bool))
+
+
+# -- the cycle as smooth pieces ----------------------------------------------------------------
+
+@dataclass
+class Cycle:
+    """One turn tabulated exactly between ``breaks`` (rad: 0, the output's extreme positions, 2π)
+    and interpolated by cubic splines inside each piece: I*_m(φ), M*_c(φ) and the resistance work
+    A_c(φ) = ∫₀^φ M*_c dφ (the splines' antiderivatives)."""
+    breaks: Array
+    pieces: list[tuple]            # per piece: (spline I, spline M, spline ∫M, A_c at its start)
+    work: float                    # A_c over the turn, J
+    samples: Reduced               # the exact samples the splines pass through
+
+    def _piece(self, turn: Array) -> Array:
+        return np.clip(np.searchsorted(self.breaks, turn, side="right") - 1, 0, len(self.pieces) - 1)
+
+    def _eval(self, turn, which: int) -> Array:
+        turn = np.asarray(turn, dtype=float)
+        flat = np.atleast_1d(turn).ravel()
+        out = np.empty(flat.shape)
+        idx = self._piece(flat)
+        for k in np.unique(idx):
+            sel = idx == k
+            piece = self.pieces[k]
+            out[sel] = piece[which](flat[sel]) + (piece[3] if which == 2 else 0.0)
+        return out.reshape(np.shape(turn)) if np.ndim(turn) else float(out[0])
+
+    def inertia(self, turn):
+        return self._eval(turn, 0)
+
+    def moment(self, turn):
+        return self._eval(turn, 1)
+
+    def resistance_work(self, turn):
+        """A_c(φ) = ∫₀^φ M*_c dφ, J."""
+        return self._eval(turn, 2)
+
+    @property
+    def driving(self) -> float:
+        """The classical constant driving moment M*_d = A_c/2π (A_d = A_c over a cycle)."""
+        return self.work / (2 * math.pi)
+
+
+def breaks(st: Study) -> Array:
+    """0, the output's extreme positions (where a load may switch or turn) and 2π, as crank turns."""
+    turns = np.radians(st.from_position0(np.asarray(st.extremes, dtype=float)))
+    inner = sorted({float(t) for t in turns if 1e-9 < t < 2 * math.pi - 1e-9})
+    return np.array([0.0] + inner + [2 * math.pi])
+
+
+def cycle(st: Study, step_deg: float = STEP_DEG) -> Cycle:
+    """Tabulate the turn exactly and join the samples by cubic splines piece by piece."""
+    from scipy.interpolate import CubicSpline
+    b = breaks(st)
+    pieces, all_turns, parts, start = [], [], [], 0.0
+    for lo, hi in zip(b[:-1], b[1:]):
+        n = max(16, int(math.ceil(math.degrees(hi - lo) / step_deg)))
+        t = np.linspace(lo, hi, n + 1)
+        probe = reduce(st, [0.5 * (lo + hi)])            # the stroke of this piece, at its middle
+        r = reduce(st, t, working=probe.working[0])
+        si, sm = CubicSpline(t, r.inertia), CubicSpline(t, r.moment)
+        sa = sm.antiderivative()
+        offset = start - float(sa(lo))
+        pieces.append((si, sm, lambda x, sa=sa, off=offset: sa(x) + off, 0.0))
+        start = float(sa(hi)) + offset
+        all_turns.append(t)
+        parts.append(r)
+    samples = Reduced(np.concatenate(all_turns), np.concatenate([p.phi_deg for p in parts]),
+                      np.concatenate([p.inertia for p in parts]), np.concatenate([p.d_inertia for p in parts]),
+                      np.concatenate([p.moment for p in parts]), np.concatenate([p.working for p in parts]))
+    if not start > 1e-9 * 2 * math.pi * max(float(np.max(np.abs(samples.moment))), 1e-300):
+        raise GraphplanError(f"dynamics: the resistance does no work over a cycle (A_c = {start:.3g} J); "
+                             "give a [[force]] that resists the output's motion", st.mech.source)
+    return Cycle(b, pieces, start, samples)
+
+
+# -- the steady state ------------------------------------------------------------------------------
+
+@dataclass
+class Motion:
+    """A periodic steady state: ω(φ) over one turn and what it achieves."""
+    turn: Array           # rad, FINE + 1 samples 0 … 2π
+    omega: Array          # rad/s
+    omega_max: float
+    omega_min: float
+    closure: float        # |ω(2π) − ω(0)|/ω_m
+    inertia_constant: float   # the constant part of I* (rotor, reducer, flywheel), kg·m²
+    driving: Array | None = None   # M*_d(φ) of a motor along the motion, N·m
+
+    @property
+    def mean(self) -> float:
+        return 0.5 * (self.omega_max + self.omega_min)
+
+    @property
+    def delta(self) -> float:
+        return (self.omega_max - self.omega_min) / self.mean
+
+
+def extremes(turn: Array, values: Array) -> tuple[float, float]:
+    """The largest and the smallest value of a sampled smooth periodic curve, each refined by
+    the parabola through its sample and the two neighbours."""
+    def refine(k: int) -> float:
+        n = len(values) - 1                           # the last sample repeats the first
+        y0, y1, y2 = values[(k - 1) % n], values[k], values[(k + 1) % n]
+        den = y0 - 2 * y1 + y2
+        if den == 0:
+            return float(y1)
+        s = 0.5 * (y0 - y2) / den
+        return float(y1 - 0.25 * (y0 - y2) * s)
+    return refine(int(np.argmax(values[:-1]))), refine(int(np.argmin(values[:-1])))
+
+
+def _integrate(c: Cycle, rhs, y0: float, dense: bool = True):
+    """dT/dφ = rhs(φ, T) piece by piece (the loads may bend at the breaks): the end value and the
+    dense solutions."""
+    from scipy.integrate import solve_ivp
+    sols = []
+    y = y0
+    for lo, hi in zip(c.breaks[:-1], c.breaks[1:]):
+        sol = solve_ivp(rhs, (lo, hi), [y], method="DOP853", rtol=RTOL, atol=RTOL * max(abs(y), 1.0),
+                        dense_output=dense)
+        if sol.status != 0:
+            return None, sols
+        y = float(sol.y[0, -1])
+        sols.append(sol)
+    return y, sols
+
+
+def _sample(c: Cycle, sols) -> tuple[Array, Array]:
+    """The dense solutions at FINE + 1 turns 0 … 2π."""
+    turn = np.linspace(0.0, 2 * math.pi, FINE + 1)
+    values = np.empty_like(turn)
+    idx = np.clip(np.searchsorted(c.breaks, turn, side="right") - 1, 0, len(sols) - 1)
+    for k, sol in enumerate(sols):
+        sel = idx == k
+        values[sel] = sol.sol(turn[sel])[0]
+    return turn, values
+
+
+def energy_change(c: Cycle) -> tuple[Array, Array]:
+    """ΔT(φ) = A_d − A_c = M*_d·φ − ∫M*_c dφ with the constant driving moment, integrated by
+    solve_ivp (dT/dφ = M*_d − M*_c(φ)): FINE + 1 samples over the turn."""
+    md = c.driving
+    end, sols = _integrate(c, lambda t, y: [md - c.moment(t)], 0.0)
+    return _sample(c, sols)
+
+
+def classical(c: Cycle, inertia_constant: float, omega_mean: float) -> Motion:
+    """The steady state with the constant driving moment at the mean speed ω_m: every start is
+    periodic (A_d = A_c), the kinetic energy at position 0 is chosen so (ω_max + ω_min)/2 = ω_m;
+    ω² = 2(T0 + ΔT)/(I*_m + I_const)."""
+    from scipy.optimize import brentq
+    turn, dt = energy_change(c)
+    total = c.inertia(turn) + inertia_constant
+
+    def omegas(t0: float) -> Array:
+        return np.sqrt(np.maximum(2 * (t0 + dt) / total, 0.0))
+
+    def gap(t0: float) -> float:
+        hi, lo = extremes(turn, omegas(t0))
+        return 0.5 * (hi + lo) - omega_mean
+    low = -float(np.min(dt)) + 1e-12
+    high = low + float(np.max(total)) * omega_mean ** 2 * 4 + float(np.ptp(dt))
+    t0 = brentq(gap, low, high, xtol=1e-14, rtol=1e-15, maxiter=200)
+    w = omegas(t0)
+    hi, lo = extremes(turn, w)
+    return Motion(turn, w, hi, lo, abs(w[-1] - w[0]) / omega_mean, inertia_constant)
+
+
+def flywheel_classical(c: Cycle, delta: float, omega_mean: float) -> float:
+    """The constant reduced inertia J (rotor, reducer and flywheel together) whose steady state
+    with the constant driving moment has exactly the coefficient of unevenness δ at ω_m: brentq
+    on the simulated δ(J), which falls as J grows."""
+    from scipy.optimize import brentq
+    check_delta(delta)
+    turn, dt = energy_change(c)
+    span = float(np.ptp(dt))
+    guess = span / (omega_mean ** 2 * delta)
+    f = lambda j: classical(c, j, omega_mean).delta - delta  # noqa: E731
+    lo, hi = guess * 0.25, guess * 4.0
+    while f(lo) < 0:
+        lo *= 0.25
+    while f(hi) > 0:
+        hi *= 4.0
+    return brentq(f, lo, hi, xtol=1e-13 * guess, rtol=1e-14, maxiter=200)
+
+
+def check_delta(delta: float) -> None:
+    if not (isinstance(delta, (int, float)) and DELTA_RANGE[0] < delta < DELTA_RANGE[1]):
+        raise GraphplanError(f"--delta: the coefficient of unevenness must lie in (0, 0.5), got {delta!r}")
+
+
+# -- the motor -----------------------------------------------------------------------------------
+
+@dataclass
+class Drive:
+    """A motor reduced to the crank through a reducer: M*_d(ω) = i·η·(A·i·ω + B)."""
+    motor: Motor
+    ratio: float                    # i = ω_motor/ω_crank
+    efficiency: float
+    rotor_reduced: float            # I_rotor·i², kg·m²
+    reducer_reduced: float          # kg·m²
+    chosen: bool                    # True: chosen by the rule, False: the scene's
+    power_needed_kW: float          # P = max M*_c·ω1 / η, the rule's power
+    warnings: list[tuple[str, str]] = field(default_factory=list)   # (English, Ukrainian)
+
+    def moment(self, omega):
+        """M*_d at the crank's speed ω."""
+        return self.ratio * self.efficiency * self.motor.moment(self.ratio * np.asarray(omega))
+
+    @property
+    def moment_max(self) -> float:
+        return self.ratio * self.efficiency * self.motor.moment_max
+
+    @property
+    def omega_breakdown(self) -> float:
+        """The crank speed where the motor leaves its working branch."""
+        return self.motor.omega_breakdown / self.ratio
+
+    @property
+    def omega_sync(self) -> float:
+        return self.motor.omega_sync / self.ratio
+
+
+def drive(st: Study, c: Cycle) -> Drive:
+    """The scene's motor, or the catalogue's by seed 003's rule: P1 = max M*_c·ω1 on the crank,
+    P1/η on the motor's shaft, the next size up of the line; the reducer's ratio i from the
+    motor's rated speed and the crank's (unless the scene gives it)."""
+    d = st.mech.drive
+    w1 = abs(st.mech.omega1)
+    needed = float(np.max(c.samples.moment)) * w1 / d.efficiency / 1000.0
+    motor = d.motor or choose(needed, d.rpm_sync, st.mech.source)
+    ratio = d.ratio or motor.omega_rated / w1
+    rotor = motor.inertia if d.rotor_inertia is None else d.rotor_inertia
+    return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia, d.motor is None, needed,
+                 list(d.warnings))
+
+
+def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:
+    """The periodic steady state with the motor: shooting on ω(0) (brentq on ω(2π) − ω(0), to
+    1e-11 relative) of dT/dφ = M*_d(ω) − M*_c(φ), ω = √(2T/I*)."""
+    from scipy.optimize import brentq
+    const = dr.rotor_reduced + dr.reducer_reduced + flywheel
+
+    def rhs(t, y):
+        w = math.sqrt(max(2 * y[0] / (c.inertia(t) + const), 0.0))
+        return [float(dr.moment(w)) - c.moment(t)]
+
+    i0 = c.inertia(0.0) + const
+
+    def ret(w0: float) -> float:
+        end, _ = _integrate(c, rhs, 0.5 * i0 * w0 ** 2, dense=False)
+        if end is None or end <= 0:
+            return -w0
+        return math.sqrt(2 * end / i0) - w0
+    hi = dr.omega_sync
+    lo = max(dr.omega_breakdown, 1e-3 * hi)
+    if ret(lo) <= 0:
+        raise GraphplanError(f"dynamics: the motor {dr.motor.name} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
+                             "cannot drive the cycle: even at the end of its working branch the crank "
+                             "slows down over a turn; choose a larger motor", None)
+    while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
+        hi *= 1.05
+    w0 = brentq(ret, lo, hi, xtol=PERIODIC * hi, rtol=1e-15, maxiter=200)
+    end, sols = _integrate(c, rhs, 0.5 * i0 * w0 ** 2)
+    turn, energy = _sample(c, sols)
+    w = np.sqrt(2 * energy / (c.inertia(turn) + const))
+    hi_w, lo_w = extremes(turn, w)
+    return Motion(turn, w, hi_w, lo_w, abs(w[-1] - w[0]) / (0.5 * (hi_w + lo_w)), const, dr.moment(w))
+
+
+def flywheel_motor(c: Cycle, dr: Drive, delta: float, guess: float) -> float:
+    """The flywheel (beyond rotor and reducer) that gives δ with the motor; 0 when the motor's
+    own slope and the rotor already keep δ below the request."""
+    from scipy.optimize import brentq
+    f = lambda j: motor_motion(c, dr, j).delta - delta  # noqa: E731
+    if f(0.0) <= 0:
+        return 0.0
+    hi = max(guess, 1e-6)
+    while f(hi) > 0:
+        hi *= 2.0
+    return brentq(f, 0.0, hi, xtol=1e-10 * hi, rtol=1e-12, maxiter=200)
+
+
+def carries(dr: Drive, m: Motion) -> None:
+    """The motor carries the cycle: its moment stays below M_max and its speed on the working
+    branch (above ω_k) all the turn; otherwise one line, exit 2."""
+    peak = float(np.max(dr.moment(m.omega)))
+    if peak > dr.moment_max or m.omega_min < dr.omega_breakdown:
+        raise GraphplanError(f"dynamics: the motor {dr.motor.name} cannot drive the cycle: its moment "
+                             f"reaches {peak / (dr.ratio * dr.efficiency):.3g} N·m on its shaft, above "
+                             f"M_max = {dr.motor.moment_max:.3g} N·m (off the working branch); choose a "
+                             "larger motor")
+
+
+# -- the whole exact part ----------------------------------------------------------------------------
+
+@dataclass
+class Dynamics:
+    """Everything exact: the cycle, the flywheel for δ (classical), its motion, and the motor's."""
+    study: Study
+    cycle: Cycle
+    delta: float
+    omega_mean: float
+    drive: Drive
+    flywheel_total: float          # J = I_rotor·i² + I_reducer + I_fl, classical, kg·m²
+    motion: Motion                 # classical steady state with J
+    motor_flywheel: float          # I_fl with the motor, kg·m²
+    motor_motion: Motion
+    warnings: list[tuple[str, str]] = field(default_factory=list)   # (English, Ukrainian)
+
+    @property
+    def constant(self) -> float:
+        """The constant reduced inertia without a flywheel: rotor and reducer."""
+        return self.drive.rotor_reduced + self.drive.reducer_reduced
+
+    @property
+    def flywheel(self) -> float:
+        """The flywheel's own moment of inertia (classical): J − rotor − reducer."""
+        return self.flywheel_total - self.constant
+
+
+def analyse(st: Study, delta: float | None = None) -> Dynamics:
+    """The exact dynamics of the scene: δ from the argument, else the scene's [dynamics] delta,
+    else 0.04."""
+    delta = float(st.mech.task.flywheel.get("delta", 0.04)) if delta is None else delta
+    check_delta(delta)
+    c = cycle(st)
+    wm = abs(st.mech.omega1)
+    dr = drive(st, c)
+    total = flywheel_classical(c, delta, wm)
+    motion = classical(c, total, wm)
+    fm = flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
+    mm = motor_motion(c, dr, fm)
+    carries(dr, mm)
+    warnings = list(dr.warnings)
+    const = dr.rotor_reduced + dr.reducer_reduced
+    if total < const:
+        warnings.append((f"the rotor and the reducer ({const:.4g} kg·m²) exceed the inertia δ = {delta:g} needs "
+                         f"({total:.4g} kg·m²): no flywheel is needed",
+                         f"ротор і редуктор ({const:.4g} кг·м²) більші за момент інерції, потрібний для "
+                         f"δ = {delta:g} ({total:.4g} кг·м²): маховик не потрібен"))
+    mean_moment = float(np.mean(mm.driving[:-1])) / (dr.ratio * dr.efficiency)
+    if mean_moment > dr.motor.moment_rated:
+        warnings.append((f"the motor {dr.motor.name} works above its rated moment on average "
+                         f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} N·m): it will overheat",
+                         f"двигун {dr.motor.name} у середньому працює з моментом, більшим за номінальний "
+                         f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} Н·м): він перегріватиметься"))
+    return Dynamics(st, c, delta, wm, dr, total, motion, fm, mm, warnings)

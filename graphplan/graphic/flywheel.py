@@ -1,0 +1,170 @@
+"""The flywheel by the course's graphical method (the third sheet, REFERENCE §1.9), measured with
+a ruler and compared with the exact flywheel of exact.dynamics.
+
+The draftsman's sequence, in drawing millimetres over an abscissa of L mm for one turn
+(μ_φ = 2π/L rad/mm), N divisions from position 0:
+1. the diagram of the reduced moment of resistance M*_c(φ), μ_M from the standard series;
+2. its graphical integration by chords (chords.integrate_by_chords): the ordinate at the middle
+   of each interval, carried to the ordinate axis and joined to the pole at the pole distance H,
+   gives the direction of the work curve's chord; A_c(φ) with μ_A = μ_M·μ_φ·H;
+3. the driving work A_d: the straight line from the origin to A_c(2π) (a constant M*_d, whose
+   ordinate on the moment diagram is the ray's height H·A_c(L)/L);
+4. the change of kinetic energy ΔT = A_d − A_c, read between the two lines (μ_T = μ_A);
+5. the diagram of I*_m(φ) (μ_I);
+6. the energy–mass (Wittenbauer) curve ΔT(I*_m) — φ eliminated, the points (I_k, ΔT_k) joined
+   by the French curve — and its two tangents at tg ψ_max,min = μ_I·ω_m²·(1 ± δ)/(2·μ_T), which cut
+   the ΔT axis at k and l: the constant reduced inertia J = μ_T·|kl|/(ω_m²·δ) and the flywheel
+   I_fl = J − I_rotor·i² − I_reducer;
+7. the approximate method: J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean, and Merkalov's, which takes
+   the mechanism's own kinetic energy ½·ω_m²·I*_m out of ΔT first.
+The course's slopes drop the δ²/4 of ω²_max,min = ω_m²(1 ± δ/2)²; ``slopes="exact"`` keeps it
+(then the construction converges to the exact flywheel as the divisions grow at precision 0).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphplan.exact.dynamics import Dynamics, reduce
+from graphplan.graphic.chords import integrate_by_chords, midpoints, periodic_spline, read, standard_scale
+
+M_HEIGHT = 100.0      # mm: the largest |M*_c| drawn about this high
+A_HEIGHT = 120.0      # mm: the pole distance H is picked so A_c(2π) is drawn about this high
+I_WIDTH = 140.0       # mm: the largest I*_m drawn about this long
+CURVE = 40            # samples of the French curve per interval
+
+
+@dataclass
+class Flywheel:
+    """The construction and its readings (mm) with the scales; values in SI."""
+    dyn: Dynamics
+    divisions: int
+    L: float
+    H: float
+    precision: float
+    slopes: str                 # "course" (1 ± δ) or "exact" ((1 ± δ/2)²)
+    mu_M: float                 # N·m/mm
+    mu_phi: float               # rad/mm
+    mu_A: float                 # J/mm (= μ_T)
+    mu_I: float                 # kg·m²/mm
+    x: np.ndarray               # division ordinates, mm (N + 1)
+    turn: np.ndarray            # crank turns there, rad
+    moment_exact: np.ndarray    # M*_c at the divisions, N·m (N + 1)
+    inertia_exact: np.ndarray   # I*_m at the divisions (N + 1)
+    d_inertia_exact: np.ndarray
+    M: np.ndarray               # M*_c read at the divisions, mm (N + 1)
+    M_mid: np.ndarray           # … at the middles of the intervals (the integration's heights), mm (N)
+    A_drawn: np.ndarray         # the work curve's vertices by chords (geometry), mm (N + 1)
+    A: np.ndarray               # … read, mm
+    Md: float                   # the driving moment's ordinate on the M diagram, mm
+    dT: np.ndarray              # ΔT read between A_d and A_c, mm (N + 1)
+    I: np.ndarray               # I*_m read, mm (N + 1)
+    tangent: dict[str, float]   # slopes tg ψ (mm/mm), the intercepts k, l (mm), the touching points
+    kl: float                   # |kl| read, mm
+
+    # -- results ----------------------------------------------------------------------------------
+    @property
+    def omega_mean(self) -> float:
+        return self.dyn.omega_mean
+
+    @property
+    def total(self) -> float:
+        """J = μ_T·|kl|/(ω_m²·δ): rotor, reducer and flywheel together, kg·m²."""
+        return self.mu_A * self.kl / (self.omega_mean ** 2 * self.dyn.delta)
+
+    @property
+    def flywheel(self) -> float:
+        return self.total - self.dyn.constant
+
+    @property
+    def approximate_total(self) -> float:
+        """J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean from the readings."""
+        span = (float(np.max(self.dT)) - float(np.min(self.dT))) * self.mu_A
+        mean = float(np.mean(self.I[:-1])) * self.mu_I
+        return span / (self.omega_mean ** 2 * self.dyn.delta) - mean
+
+    @property
+    def approximate(self) -> float:
+        return self.approximate_total - self.dyn.constant
+
+    @property
+    def merkalov_total(self) -> float:
+        """Merkalov's method: the flywheel's own energy change ΔT − ½·ω_m²·I*_m (the mechanism's
+        kinetic energy at ω_m taken out): J ≈ (its max − its min)/(ω_m²·δ), from the readings."""
+        wm2 = self.omega_mean ** 2
+        own = self.dT * self.mu_A - 0.5 * wm2 * self.I * self.mu_I
+        return (float(np.max(own)) - float(np.min(own))) / (wm2 * self.dyn.delta)
+
+    @property
+    def merkalov(self) -> float:
+        return self.merkalov_total - self.dyn.constant
+
+    @property
+    def driving(self) -> float:
+        """M*_d read off the moment diagram, N·m."""
+        return self.Md * self.mu_M
+
+    def error_pct(self, value: float) -> float:
+        exact = self.dyn.flywheel
+        return 100.0 * (value - exact) / exact if exact > 0 else math.nan
+
+    def curve(self) -> tuple[np.ndarray, np.ndarray]:
+        """The Wittenbauer curve as the French curve through (I_k, ΔT_k): X, Y in mm."""
+        return _curve(self.x, self.I, self.dT, self.L)
+
+
+def _curve(x: np.ndarray, i_mm: np.ndarray, dt_mm: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray]:
+    n = len(x) - 1
+    fine = np.linspace(0.0, L, CURVE * n + 1)
+    return periodic_spline(x[:-1], i_mm[:-1], L)(fine), periodic_spline(x[:-1], dt_mm[:-1], L)(fine)
+
+
+def tangents(X: np.ndarray, Y: np.ndarray, s_max: float, s_min: float) -> dict[str, float]:
+    """The two tangents to the curve (X, Y): the line of slope s_max with the whole curve below it
+    and the line of slope s_min with the whole curve above it; where each cuts the ΔT axis (X = 0)
+    and where it touches the curve."""
+    up = Y - s_max * X
+    down = Y - s_min * X
+    ku, kd = int(np.argmax(up)), int(np.argmin(down))
+    return {"s_max": s_max, "s_min": s_min, "k": float(up[ku]), "l": float(down[kd]),
+            "touch_max_x": float(X[ku]), "touch_max_y": float(Y[ku]),
+            "touch_min_x": float(X[kd]), "touch_min_y": float(Y[kd])}
+
+
+def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
+              H: float | None = None, slopes: str = "course", size: float = 1.0) -> Flywheel:
+    """The draftsman's flywheel construction (module docstring), every length read with the ruler;
+    ``size`` scales the drawn heights the scales aim at (a sheet with room to spare draws larger)."""
+    from graphplan.util.errors import GraphplanError
+    st = dyn.study
+    settings = st.mech.task.flywheel
+    n = int(divisions or settings.get("divisions") or st.mech.task.count)
+    if n < 4:
+        raise GraphplanError(f"--divisions must be at least 4, got {n}")
+    if not (math.isfinite(precision) and precision >= 0):
+        raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {precision:g}")
+    L = float(L or settings.get("L_mm", 240.0))
+    x = np.linspace(0.0, L, n + 1)
+    turn = np.linspace(0.0, 2 * math.pi, n + 1)
+    at = reduce(st, turn)
+    mid = reduce(st, midpoints(turn))
+    mu_M = standard_scale(float(np.max(np.abs(at.moment))) / (M_HEIGHT * size))
+    mu_phi = 2 * math.pi / L
+    if H is None:
+        H = float(settings.get("H_mm") or 5.0 * max(2, math.ceil(dyn.cycle.work / (mu_M * mu_phi * A_HEIGHT * size) / 5.0)))
+    mu_A = mu_M * mu_phi * H
+    mu_I = standard_scale(float(np.max(at.inertia)) / (I_WIDTH * size))
+    M = read(at.moment / mu_M, precision)
+    M_mid = read(mid.moment / mu_M, precision)
+    A_drawn = integrate_by_chords(x, M_mid, H, 0.0)
+    A = read(A_drawn, precision)
+    dT = read(A_drawn[-1] * x / L - A_drawn, precision)
+    I = read(at.inertia / mu_I, precision)
+    wm, d = dyn.omega_mean, dyn.delta
+    hi, lo = ((1 + d), (1 - d)) if slopes == "course" else ((1 + d / 2) ** 2, (1 - d / 2) ** 2)
+    tg = tangents(*_curve(x, I, dT, L), mu_I * wm ** 2 * hi / (2 * mu_A), mu_I * wm ** 2 * lo / (2 * mu_A))
+    kl = float(read(tg["k"] - tg["l"], precision))
+    return Flywheel(dyn, n, L, H, precision, slopes, mu_M, mu_phi, mu_A, mu_I, x, turn, at.moment, at.inertia,
+                    at.d_inertia, M, M_mid, A_drawn, A, float(read(A_drawn[-1] * H / L, precision)), dT, I, tg, kl)

@@ -1,0 +1,148 @@
+"""Induction motors (seed 003): the catalogue shipped as package data (graphplan/data/motors.toml)
+and the working branch of a motor's mechanical characteristic as a straight line.
+
+The stable part of the characteristic between the rated point (ω_n, M_n) and the synchronous
+speed (ω_c, 0) is taken as the line  M = A·ω + B,  A = M_n/(ω_n − ω_c),  B = −A·ω_c  (A < 0),
+with M_n = P_n/ω_n. The line reaches the breakdown moment M_max = λ·M_n at ω_k = ω_c + λ·M_n/A;
+below ω_k the motor has left its working branch.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+import unicodedata
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+from graphplan.util.errors import GraphplanError
+
+CATALOGUE = "motors.toml"
+
+
+@dataclass(frozen=True)
+class Motor:
+    """An induction motor's data sheet: rated power (kW), synchronous and rated speed (rpm),
+    M_max/M_n, M_start/M_n and the rotor's moment of inertia (kg·m²)."""
+    name: str
+    power_kW: float
+    rpm_sync: float
+    rpm_rated: float
+    max_ratio: float = 2.2
+    start_ratio: float = 2.0
+    inertia: float = 0.0
+
+    @property
+    def omega_sync(self) -> float:
+        """ω_c = π·n_c/30, rad/s."""
+        return math.pi * self.rpm_sync / 30.0
+
+    @property
+    def omega_rated(self) -> float:
+        """ω_n = π·n_n/30, rad/s."""
+        return math.pi * self.rpm_rated / 30.0
+
+    @property
+    def moment_rated(self) -> float:
+        """M_n = P_n/ω_n, N·m."""
+        return self.power_kW * 1000.0 / self.omega_rated
+
+    @property
+    def moment_max(self) -> float:
+        """M_max = λ·M_n, N·m."""
+        return self.max_ratio * self.moment_rated
+
+    @property
+    def line(self) -> tuple[float, float]:
+        """(A, B) of the working branch M = A·ω + B: A = M_n/(ω_n − ω_c), B = −A·ω_c."""
+        a = self.moment_rated / (self.omega_rated - self.omega_sync)
+        return a, -a * self.omega_sync
+
+    @property
+    def omega_breakdown(self) -> float:
+        """ω_k where the line reaches M_max: ω_c + M_max/A (the end of the working branch)."""
+        return self.omega_sync + self.moment_max / self.line[0]
+
+    def moment(self, omega):
+        """M = A·ω + B at the motor's speed ω (rad/s)."""
+        a, b = self.line
+        return a * omega + b
+
+
+def _key(name: str) -> str:
+    """Catalogue names compared without case and with Latin and Cyrillic look-alikes merged
+    (4АМ80А2 = 4AM80A2)."""
+    text = unicodedata.normalize("NFC", name).upper().replace(" ", "")
+    return text.translate(str.maketrans("АВМСЕНКОРТХ", "ABMCEHKOPTX"))
+
+
+@lru_cache(maxsize=1)
+def catalogue() -> tuple[Motor, ...]:
+    """The shipped catalogue, in file order (by line, then power)."""
+    text = (resources.files("graphplan") / "data" / CATALOGUE).read_text(encoding="utf-8")
+    return tuple(Motor(**m) for m in tomllib.loads(text)["motor"])
+
+
+def find(name: str, where: str | None = None) -> Motor:
+    """The catalogue's motor of that name."""
+    for m in catalogue():
+        if _key(m.name) == _key(name):
+            return m
+    raise GraphplanError(f"dynamics.motor: no motor {name!r} in the catalogue "
+                         f"({catalogue()[0].name} … {catalogue()[-1].name})", where)
+
+
+def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
+    """Seed 003's rule: the next size up — the smallest motor of the line with P_n ≥ the power."""
+    line = sorted((m for m in catalogue() if m.rpm_sync == rpm_sync), key=lambda m: m.power_kW)
+    if not line:
+        raise GraphplanError(f"dynamics.synchronous_rpm: the catalogue has no {rpm_sync:g} rpm line "
+                             "(3000, 1500)", where)
+    for m in line:
+        if m.power_kW >= power_kW * (1 - 1e-12):
+            return m
+    raise GraphplanError(f"dynamics.motor: the cycle needs {power_kW:.3g} kW, more than the largest "
+                         f"{rpm_sync:g} rpm motor of the catalogue ({line[-1].name}, "
+                         f"{line[-1].power_kW:g} kW)", where)
+
+
+def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, list[tuple[str, str]]]:
+    """A motor given by its data in a scene: name, power_kW, rpm_sync, rpm_rated, max_ratio,
+    start_ratio, inertia and, as papers print them, omega_sync/omega_rated (rad/s). The angular
+    speeds are always computed from the rpm; printed ones that disagree (seed 003 lists
+    ω_c = 298.3 and ω_n = 314 s⁻¹, swapped against 3000/2850 rpm) give a warning (English, Ukrainian)."""
+    allowed = {"name", "power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia",
+               "omega_sync", "omega_rated"}
+    unknown = sorted(set(raw) - allowed)
+    if unknown:
+        raise GraphplanError(f"{key}.{unknown[0]}: unknown key (allowed: {', '.join(sorted(allowed))})", where)
+    base = find(str(raw["name"]), where) if "name" in raw and not ({"power_kW", "rpm_rated"} & set(raw)) else None
+    values = dict(base.__dict__) if base else {"name": str(raw.get("name", "motor"))}
+    for field in ("power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia"):
+        if field in raw:
+            v = raw[field]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0 \
+                    or (v == 0 and field != "inertia"):
+                raise GraphplanError(f"{key}.{field}: must be a positive number, got {v!r}", where)
+            values[field] = float(v)
+    for need in ("power_kW", "rpm_sync", "rpm_rated"):
+        if need not in values:
+            raise GraphplanError(f"{key}.{need}: missing (or name a catalogue motor)", where)
+    motor = Motor(**values)
+    if motor.rpm_rated >= motor.rpm_sync:
+        raise GraphplanError(f"{key}: the rated speed {motor.rpm_rated:g} rpm must be below the "
+                             f"synchronous {motor.rpm_sync:g} rpm", where)
+    warnings = []
+    printed = {k: float(raw[k]) for k in ("omega_sync", "omega_rated") if k in raw}
+    computed = {"omega_sync": motor.omega_sync, "omega_rated": motor.omega_rated}
+    off = [k for k, v in printed.items() if abs(v - computed[k]) > 5e-3 * computed[k]]
+    if off:
+        swapped = (len(printed) == 2 and abs(printed["omega_sync"] - computed["omega_rated"]) < 5e-3 * computed["omega_rated"] + 0.5
+                   and abs(printed["omega_rated"] - computed["omega_sync"]) < 5e-3 * computed["omega_sync"] + 0.5)
+        given = ", ".join(f"{k} = {printed[k]:g}" for k in sorted(printed))
+        computed_text = f"ω_c = {motor.omega_sync:.2f}, ω_n = {motor.omega_rated:.2f}"
+        warnings.append((f"{key}: the given {given} rad/s {'are swapped' if swapped else 'disagree'} against "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} rpm; computed from the speeds: {computed_text} rad/s",
+                         f"{key}: задані {given} рад/с {'переставлені відносно' if swapped else 'не відповідають'} "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} об/хв; обчислено за швидкостями: {computed_text} рад/с"))
+    return motor, warnings

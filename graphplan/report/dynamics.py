@@ -1,0 +1,154 @@
+"""`graphplan dynamics`: the contract's JSON and the readable tables of the machine's dynamics —
+the reduced inertia and moments per position, the flywheel by each method against the exact one,
+the steady states and the motor."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphplan.exact.dynamics import crank_angle
+
+
+def _clean(doc: Any) -> Any:
+    """−0.0 → 0.0 and non-finite → null everywhere (byte-stable JSON)."""
+    if isinstance(doc, dict):
+        return {k: _clean(v) for k, v in doc.items()}
+    if isinstance(doc, (list, tuple)):
+        return [_clean(v) for v in doc]
+    if isinstance(doc, (float, np.floating)):
+        v = float(doc)
+        return v + 0.0 if math.isfinite(v) else None
+    if isinstance(doc, np.integer):
+        return int(doc)
+    return doc
+
+
+def _motion(m, every: int) -> dict[str, Any]:
+    idx = np.arange(0, len(m.turn), every)
+    return {"phi_deg": [float(v) for v in np.degrees(m.turn[idx]).round(9)],
+            "omega": [float(v) for v in m.omega[idx]],
+            "delta": m.delta, "omega_mean": m.mean, "omega_max": m.omega_max, "omega_min": m.omega_min,
+            "closure": m.closure}
+
+
+def dynamics_json(f) -> dict[str, Any]:
+    """The contract's ``dynamics --json`` document (SI units; angles in degrees)."""
+    dyn = f.dyn
+    st = dyn.study
+    c = dyn.cycle
+    dr = dyn.drive
+    md = c.driving
+    positions = []
+    exact_dt = md * f.turn - c.resistance_work(f.turn)
+    motor_md = dr.moment(np.interp(f.turn, dyn.motor_motion.turn, dyn.motor_motion.omega))
+    for k in range(f.divisions):
+        positions.append({
+            "index": k, "phi_deg": float(crank_angle(st, f.turn[k])), "turn_deg": 360.0 * k / f.divisions,
+            "inertia": float(f.inertia_exact[k]), "d_inertia": float(f.d_inertia_exact[k]),
+            "moment_resistance": float(f.moment_exact[k]), "moment_driving": md,
+            "moment_motor": float(motor_md[k]),
+            "work_resistance": float(c.resistance_work(f.turn[k])),
+            "graphical": {"inertia": float(f.I[k] * f.mu_I), "moment_resistance": float(f.M[k] * f.mu_M),
+                          "work_resistance": float(f.A[k] * f.mu_A), "energy": float(f.dT[k] * f.mu_A)},
+            "energy": float(exact_dt[k])})
+    exact = dyn.flywheel
+    pct = lambda v: 100.0 * (v - exact) / exact if exact > 0 else None  # noqa: E731
+    tg = f.tangent
+    every = (len(dyn.motion.turn) - 1) // 360
+    m = dr.motor
+    a, b = m.line
+    return _clean({
+        "scene": st.mech.title,
+        "delta": dyn.delta,
+        "omega_mean": dyn.omega_mean,
+        "start_phi_deg": st.phi0,
+        "divisions": f.divisions, "precision_mm": f.precision, "L_mm": f.L, "H_mm": f.H,
+        "scales": {"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "mu_T": f.mu_A, "mu_I": f.mu_I},
+        "work_resistance": c.work, "moment_driving": md, "moment_driving_graphical": f.driving,
+        "positions": positions,
+        "flywheel": {
+            "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
+            "approximate": f.approximate, "approximate_error_pct": pct(f.approximate),
+            "merkalov": f.merkalov, "merkalov_error_pct": pct(f.merkalov),
+            "total_exact": dyn.flywheel_total, "total_graphical": f.total,
+            "rotor_reduced": dr.rotor_reduced, "reducer_reduced": dr.reducer_reduced,
+            "kl_mm": f.kl, "k_mm": tg["k"], "l_mm": tg["l"], "slopes": f.slopes,
+            "psi_max_deg": math.degrees(math.atan(tg["s_max"])), "psi_min_deg": math.degrees(math.atan(tg["s_min"])),
+            "motor": dyn.motor_flywheel},
+        "motion": _motion(dyn.motion, every),
+        "motor": {"name": m.name, "power_kW": m.power_kW, "rpm_sync": m.rpm_sync, "rpm_rated": m.rpm_rated,
+                  "omega_sync": m.omega_sync, "omega_rated": m.omega_rated, "moment_rated": m.moment_rated,
+                  "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
+                  "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
+                  "ratio": dr.ratio, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
+                  "flywheel": dyn.motor_flywheel,
+                  "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
+                  "motion": _motion(dyn.motor_motion, every)},
+        "warnings": [en for en, _ in dyn.warnings],
+    })
+
+
+WORDS = {
+    "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; ΔT графічно і точно)",
+           "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
+           "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
+           "approx": "наближено (ΔTmax − ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
+           "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
+           "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
+           "u": {"Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
+                 "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
+    "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
+           "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
+           "err": "error, %", "exact": "exact (equation of motion, constant M_d*)", "graph": "graphical (Wittenbauer)",
+           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
+           "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
+           "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
+           "u": {"Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
+                 "s": "s", "steady": "steady state", "peak": "peak moment"}},
+}
+
+
+def dynamics_table(f, lang: str = "uk") -> str:
+    """The readable tables."""
+    doc = dynamics_json(f)
+    w = WORDS[lang]
+    out = [w["title"].format(scene=doc["scene"]), ""]
+    s = doc["scales"]
+    u = w["u"]
+    out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
+               f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; A_c = {doc['work_resistance']:.5g} {u['J']}, "
+               f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
+    out += ["", w["pos"]]
+    head = f"{'№':>3} {'φ, °':>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {'ΔT gr.':>9} {'ΔT':>9}"
+    out.append(head)
+    for p in doc["positions"]:
+        out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
+                   f"{p['moment_resistance']:9.3f} {p['moment_driving']:8.3f} {p['work_resistance']:9.3f} "
+                   f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
+    fw = doc["flywheel"]
+    out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
+            f"  {w['exact']:48} {fw['exact']:10.4f}",
+            f"  {w['graph']:48} {fw['graphical']:10.4f}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
+            f"  {w['approx']:48} {fw['approximate']:10.4f}  {_pct(fw['approximate_error_pct'])}",
+            f"  {w['merk']:48} {fw['merkalov']:10.4f}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {w['motor_fl']:48} {fw['motor']:10.4f}",
+            f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
+    m = doc["motor"]
+    out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
+            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
+            f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
+            f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
+            f"  P = max M*c·ω1/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
+            f"I_rotor·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
+            f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    if f.dyn.warnings:
+        out += ["", w["warn"] + ":"] + [f"  {uk if lang == 'uk' else en}" for en, uk in f.dyn.warnings]
+    return "\n".join(out) + "\n"
+
+
+def _pct(v: float | None) -> str:
+    return "—" if v is None else f"{v:+.3f} %"

@@ -1,0 +1,152 @@
+"""The third sheet, «Динамічний аналіз» (dynamic analysis): the reduced moments with their graphical
+integration into the work diagrams, ΔT, I*_m, the energy–mass (Wittenbauer) diagram with the
+flywheel read off |kl|, the steady-state speed ω(φ), the tables of the reduced quantities per
+position, the flywheel by each method with its error and the motor."""
+from __future__ import annotations
+
+from graphplan.drawing.flywheel import records
+from graphplan.drawing.layout import Block
+from graphplan.exact.dynamics import analyse
+from graphplan.exact.positions import Study
+from graphplan.graphic.flywheel import Flywheel, construct
+from graphplan.graphic.record import Record
+from graphplan.report.dynamics import dynamics_json
+from graphplan.report.plans import captioned
+from graphplan.sheets.form import Form, table
+from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
+from graphplan.util.errors import GraphplanError
+
+# the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
+SIZES = ((330.0, 1.5), (330.0, 1.3), (330.0, 1.15), (330.0, 1.0), (290.0, 1.0), (250.0, 1.0), (210.0, 0.8),
+         (170.0, 0.7))
+
+WORDS = {
+    "uk": {"subtitle": "Динамічний аналіз", "moments": "Діаграми зведених моментів Mс*(φ), Mд* і робіт Aс(φ), Aд(φ) "
+           "(графічне інтегрування методом хорд)", "energy": "Діаграма зміни кінетичної енергії ΔT(φ) = Aд − Aс",
+           "inertia": "Діаграма зведеного моменту інерції механізму I*м(φ)",
+           "wittenbauer": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) усталеного руху",
+           "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
+           "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "Iм", "err": "похибка, %",
+           "exact": "точно: рівняння руху (сталий Mд*)", "graph": "графічно: діаграма Віттенбауера",
+           "approx": "наближено: (ΔTmax−ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено: метод Мерцалова",
+           "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d:g}, ωm = {w} рад/с",
+           "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
+           "achieved": "Досягнуто: δ = {d:.6f}, |ω(2π) − ω(0)|/ωm = {c:.1e}"},
+    "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M_c*(φ), M_d* and the work A_c(φ), A_d(φ) "
+           "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
+           "inertia": "Reduced moment of inertia of the mechanism I*_m(φ)",
+           "wittenbauer": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) in the steady state",
+           "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
+           "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
+           "exact": "exact: equation of motion (constant M_d*)", "graph": "graphical: Wittenbauer diagram",
+           "approx": "approximate: (ΔTmax−ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate: Merkalov's method",
+           "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d:g}, ωm = {w} rad/s",
+           "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
+           "achieved": "Achieved: δ = {d:.6f}, |ω(2π) − ω(0)|/ωm = {c:.1e}"},
+}
+
+
+def positions_table(doc: dict, lang: str) -> Record:
+    """I*_m, dI*/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position."""
+    w = WORDS[lang]
+    uk = lang == "uk"
+    head = [w["n"], "φ, °", "I*м, кг·м²" if uk else "I*_m, kg·m²", "dI*/dφ", "Mс*, Н·м" if uk else "M_c*, N·m",
+            "Mд*, Н·м" if uk else "M_d*, N·m", "Aс, Дж" if uk else "A_c, J", "ΔT гр., Дж" if uk else "ΔT gr., J",
+            "ΔT, Дж" if uk else "ΔT, J"]
+    rows = [head]
+    for p in doc["positions"]:
+        g = p["graphical"]
+        rows.append([str(p["index"]), f"{p['phi_deg']:.1f}", fmt(p["inertia"]), fmt(p["d_inertia"]),
+                     fmt(p["moment_resistance"]), fmt(p["moment_driving"]), fmt(g["work_resistance"]),
+                     fmt(g["energy"]), fmt(p["energy"])])
+    return table(rows, [9.0, 13.0, 22.0, 17.0, 20.0, 20.0, 18.0, 20.0, 18.0], row_h=6.0, size=2.5,
+                 title=w["positions"])
+
+
+def flywheel_table(doc: dict, lang: str) -> Record:
+    w = WORDS[lang]
+    fw = doc["flywheel"]
+    rows = [[w["method"], w["value"], w["err"]],
+            [w["exact"], fmt(fw["exact"]), "0"],
+            [w["graph"], fmt(fw["graphical"]), fmt(fw["error_pct"], 3)],
+            [w["approx"], fmt(fw["approximate"]), fmt(fw["approximate_error_pct"], 3)],
+            [w["merk"], fmt(fw["merkalov"]), fmt(fw["merkalov_error_pct"], 3)],
+            [w["motor_fl"], fmt(fw["motor"]), ""]]
+    return table(rows, [78.0, 22.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
+
+
+def motor_table(doc: dict, lang: str) -> Record:
+    w = WORDS[lang]
+    m = doc["motor"]
+    uk = lang == "uk"
+    rows = [["", ""],
+            [m["name"], w["chosen"] if m["chosen"] else w["scene"]],
+            ["Pн, кВт" if uk else "P_n, kW", fmt(m["power_kW"])],
+            ["nc / nн, об/хв" if uk else "n_c / n_n, rpm", f"{m['rpm_sync']:g} / {m['rpm_rated']:g}"],
+            ["ωc / ωн, рад/с" if uk else "ω_c / ω_n, rad/s", f"{m['omega_sync']:.2f} / {m['omega_rated']:.2f}"],
+            ["Mн / Mmax, Н·м" if uk else "M_n / M_max, N·m", f"{m['moment_rated']:.3f} / {m['moment_max']:.3f}"],
+            ["M = Aω + B", f"{fmt(m['A'])}·ω + {fmt(m['B'])}"],
+            ["P = Mс*max·ω1/η, кВт" if uk else "P = M_c*max·ω1/η, kW", fmt(m["power_needed_kW"])],
+            ["i, η", f"{m['ratio']:.4g}, {m['efficiency']:g}"],
+            ["Iрот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"])],
+            ["ωm, δ" , f"{m['motion']['omega_mean']:.4f}, {m['motion']['delta']:.4f}"],
+            ["Mmax циклу, Н·м" if uk else "peak M on the cycle, N·m", fmt(m["moment_peak"])]]
+    return table(rows[1:], [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
+
+
+def notes(f: Flywheel, doc: dict, lang: str) -> Record:
+    w = WORDS[lang]
+    uk = lang == "uk"
+    mm = "мм" if uk else "mm"
+    s = doc["scales"]
+    fw = doc["flywheel"]
+    lines = [w["given"].format(d=doc["delta"], w=fmt(doc["omega_mean"])),
+             f"{w['scales']}: μM = {s['mu_M']:g} {'Н·м' if uk else 'N·m'}/{mm}, μφ = 2π/L = {s['mu_phi']:.5g} "
+             f"{'рад' if uk else 'rad'}/{mm}, H = {f.H:g} {mm}",
+             f"μA = μT = μM·μφ·H = {s['mu_A']:.5g} {'Дж' if uk else 'J'}/{mm}, μI = {s['mu_I']:g} "
+             f"{'кг·м²' if uk else 'kg·m²'}/{mm}",
+             f"Aс = {doc['work_resistance']:.5g} {'Дж' if uk else 'J'}, Mд* = Aс/2π = {doc['moment_driving']:.5g}; "
+             f"{'графічно' if uk else 'graphical'} {f.driving:.5g} {'Н·м' if uk else 'N·m'}",
+             f"tg ψ = μI·ωm²(1 ± δ)/(2μT): ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
+             f"J = μT·|kl|/(ωm²δ) = {f.mu_A:.5g}·{f.kl:g}/({doc['omega_mean']:.4g}²·{doc['delta']:g}) = {f.total:.4g}; "
+             f"Iм = J − Iрот·i² − Iред = {f.flywheel:.4g} {'кг·м²' if uk else 'kg·m²'}",
+             w["achieved"].format(d=doc["motion"]["delta"], c=doc["motion"]["closure"])]
+    from graphplan.sheets.form import wrap
+    for en, uk_text in f.dyn.warnings:
+        lines += wrap(f"{w['warn']}: {uk_text if uk else en}", 250.0, 3.5)
+    rec = Record("notes")
+    for k, line in enumerate(lines):
+        rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
+    return rec
+
+
+def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 1.0) -> tuple[list[Block], Flywheel]:
+    lang = args.lang
+    w = WORDS[lang]
+    dyn = dyn or analyse(st, getattr(args, "delta", None))
+    f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
+    doc = dynamics_json(f)
+    drawn = records(f, lang, speed_height=100.0 * size)
+    blocks = [Block(name, lambda _k, r=drawn[name], c=w[name]: captioned(r, c))
+              for name in ("moments", "wittenbauer", "energy", "inertia", "speed")]
+    blocks.append(Block("positions table", lambda _k: positions_table(doc, lang)))
+    blocks.append(Block("flywheel table", lambda _k: flywheel_table(doc, lang)))
+    blocks.append(Block("motor table", lambda _k: motor_table(doc, lang)))
+    blocks.append(Block("notes", lambda _k: notes(f, doc, lang)))
+    return blocks, f
+
+
+def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
+    """Sheet 3: the largest abscissa L that lets every block fit the sheet."""
+    last: GraphplanError | None = None
+    dyn = analyse(st, getattr(args, "delta", None))
+    for L, size in SIZES:
+        blocks, fw = dynamics_blocks(st, args, L, dyn, size)
+        tf = fields(st, args.lang, f"μφ = {fw.mu_phi:.4g}", 3, 3)
+        tf["subtitle"] = WORDS[args.lang]["subtitle"]
+        try:
+            return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")
+        except GraphplanError as exc:
+            last = exc
+    raise GraphplanError(f"{st.mech.source}: the sheet {f.name} is too small ({last}); choose a larger --format")
+
