@@ -187,7 +187,8 @@ def markdown_table(rows_: list[Row]) -> str:
                         wins[n] += [bv, ba]
         out.append("")
     out.append("The method to prefer as the lab draws (ruler 0.5 mm, tangents ±1°): wins out of eight "
-               "(v and a of both scenes, at the methods' own ordinates and at the division ordinates):")
+               "(v and a of both scenes, at the methods' own ordinates and at the division ordinates; a tie "
+               "goes to the simpler method, listed first):")
     out.append("")
     for n in counts:
         count = {m: wins[n].count(m) for m in METHODS}

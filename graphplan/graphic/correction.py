@@ -10,8 +10,10 @@ triangles above and below the horizontals of the intervals 01, 12, 23 … are ab
 Emulated on the drawn curve: the draftsman compares the two areas in each interval — their
 difference is (m_k − y'_k)·h_k, with m_k the curve's mean over the interval — moves the curve's
 point there by the difference over the width, y_k ← y_k − (m_k − y'_k), draws the curve again and
-repeats until every interval balances within what the eye sees (the ruler's half division; 1e-9 mm
-with an exact ruler). It is the horizontal that stays (it is the exact mean); the curve moves: moving
+repeats while some interval is off by at least one division of the ruler (1e-9 mm with an exact
+ruler): the move is laid off with the ruler, and a move under one division is not made. (Stopping at
+half a division instead was measured worse: it chases the ruler's own reading noise, crank_slider a
+at 12 divisions 6.27 % of the maximum against 2.71 % for plain chords; at one division 2.71 %.) It is the horizontal that stays (it is the exact mean); the curve moves: moving
 the horizontal instead until the areas balance would only give it the drawn curve's mean back.
 The corrected curve's value at the middle approximates y'(middle) to O(h⁴) instead of the chord's
 h²/24·y‴.
@@ -56,11 +58,11 @@ def interval_means(knots: np.ndarray, values: np.ndarray, edges: np.ndarray, per
 def area_correction(x: np.ndarray, heights: np.ndarray, period: float, precision: float) -> Correction:
     """Move the French curve through the chords' heights (at the middles of the intervals between the
     division ordinates ``x``, n + 1 of them) until each interval's two curvilinear triangles are
-    about equal: the curve's mean over the interval equals the interval's height within the ruler's
-    half division (1e-9 mm when exact)."""
+    about equal: the curve's mean over the interval equals the interval's height within one division
+    of the ruler (1e-9 mm when exact)."""
     xm = midpoints(x)
     target = np.asarray(heights, dtype=float)
-    tol = precision / 2 if precision > 0 else EXACT_TOLERANCE
+    tol = precision if precision > 0 else EXACT_TOLERANCE
     points = target.copy()
     gap = interval_means(xm, points, x, period) - target
     before = float(np.max(np.abs(gap)))
