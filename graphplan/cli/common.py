@@ -33,7 +33,6 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str, bool]] = {
     "positions": (2, 100000, "", False),
     "at": (0, 3600, "", False),
     "jobs": (1, 64, "", False),
-    "delta": (0.0, 1.0, "", True),
 }
 
 
