@@ -397,7 +397,7 @@ def test_plans_svg_files(capsys, tmp_path):
 
 @pytest.mark.parametrize("argv, part", [
     (["--accel", "#12"], "#12"), (["--accel", "abc"], "--accel"), (["--precision", "-1"], "--precision"),
-    (["--positions", "1"], "--positions"), (["--mu-v", "0"], "scale")])
+    (["--positions", "1"], "--positions"), (["--mu-v", "0"], "--mu-v")])
 def test_plans_bad_options(capsys, argv, part):
     code, out, err = run(capsys, "plans", str(ROOT / "examples" / "crank_slider.toml"), *argv)
     assert code == 2 and out == ""
