@@ -80,6 +80,17 @@ def test_resistance_work_is_force_times_stroke(name):
     assert c.resistance_work(2 * math.pi) == pytest.approx(c.work, rel=1e-12)
 
 
+def test_resistance_work_with_a_force_profile():
+    """Seed 003's F_p(s): a trapezoidal profile over the ram's travel from position 0 does
+    F·∫f(s)ds = 1500 N × (0.01 + 0.12 + 0.01) m; the cycle breaks at the profile's bends."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import loads
+    text = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8").replace(
+        'direction = "oppose"', 'direction = "oppose"\nprofile = [[0, 0], [0.02, 1], [0.14, 1], [0.16, 0]]')
+    c = dyn.cycle(study(loads(text, "<profile>")))
+    assert c.work == pytest.approx(1500.0 * 0.14, rel=1e-9)
+
+
 def test_resistance_moment_reduces_the_force_by_its_velocity():
     """M*_c on the slotter's working stroke: F·|v_D|/ω1 plus gravity's m·g·v_y/ω1 — by hand."""
     st = example("slotter")

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from graphplan.exact.kinematics import Kinematics, dot, solve
-from graphplan.exact.kinetostatics import loads, working_stroke
+from graphplan.exact.kinetostatics import loads, output_distance, working_stroke
 from graphplan.exact.positions import Study
 from graphplan.model.motors import Motor, choose
 from graphplan.util.errors import GraphplanError
@@ -159,9 +159,22 @@ class Cycle:
 
 
 def breaks(st: Study) -> Array:
-    """0, the output's extreme positions (where a load may switch or turn) and 2π, as crank turns."""
-    turns = np.radians(st.from_position0(np.asarray(st.extremes, dtype=float)))
-    inner = sorted({float(t) for t in turns if 1e-9 < t < 2 * math.pi - 1e-9})
+    """0, the output's extreme positions (where a load may switch or turn), the turns where a
+    force's profile bends (the output passes one of its distances) and 2π, as crank turns."""
+    turns = list(np.radians(st.from_position0(np.asarray(st.extremes, dtype=float))))
+    marks = sorted({x for f in st.mech.forces for x, _ in f.profile})
+    if marks:
+        from scipy.optimize import brentq
+        su = uniform(st)
+        dist = lambda t: output_distance(su, su.solve(crank_angle(st, t)))  # noqa: E731
+        grid = np.linspace(0.0, 2 * math.pi, 1441)
+        values = dist(grid)
+        for x in marks:
+            g = values - x
+            for k in np.nonzero(g[:-1] * g[1:] < 0)[0]:
+                turns.append(brentq(lambda t: float(dist(np.array([t]))[0]) - x, grid[k], grid[k + 1],
+                                    xtol=1e-14, rtol=1e-15))
+    inner = sorted({round(float(t), 12) for t in turns if 1e-9 < t < 2 * math.pi - 1e-9})
     return np.array([0.0] + inner + [2 * math.pi])
 
 
