@@ -23,7 +23,9 @@ the simulated δ.
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
@@ -124,7 +126,7 @@ class Cycle:
     and interpolated by cubic splines inside each piece: I*_m(φ), M*_c(φ) and the resistance work
     A_c(φ) = ∫₀^φ M*_c dφ (the splines' antiderivatives)."""
     breaks: Array
-    pieces: list[tuple]            # per piece: (spline I, spline M, spline ∫M, A_c at its start)
+    pieces: list[tuple]            # per piece: (spline I*_m, spline M*_c, A_c(φ) = its antiderivative + offset)
     work: float                    # A_c over the turn, J
     samples: Reduced               # the exact samples the splines pass through
 
@@ -132,6 +134,9 @@ class Cycle:
         return np.clip(np.searchsorted(self.breaks, turn, side="right") - 1, 0, len(self.pieces) - 1)
 
     def _eval(self, turn, which: int) -> Array:
+        if isinstance(turn, float):                 # the integrator's scalar calls: no array work
+            k = min(max(bisect_right(self.breaks_list, turn) - 1, 0), len(self.pieces) - 1)
+            return float(self.pieces[k][which](turn))
         turn = np.asarray(turn, dtype=float)
         flat = np.atleast_1d(turn).ravel()
         out = np.empty(flat.shape)
@@ -139,8 +144,12 @@ class Cycle:
         for k in np.unique(idx):
             sel = idx == k
             piece = self.pieces[k]
-            out[sel] = piece[which](flat[sel]) + (piece[3] if which == 2 else 0.0)
+            out[sel] = piece[which](flat[sel])
         return out.reshape(np.shape(turn)) if np.ndim(turn) else float(out[0])
+
+    @cached_property
+    def breaks_list(self) -> list[float]:
+        return [float(b) for b in self.breaks]
 
     def inertia(self, turn):
         return self._eval(turn, 0)
@@ -191,7 +200,7 @@ def cycle(st: Study, step_deg: float = STEP_DEG) -> Cycle:
         si, sm = CubicSpline(t, r.inertia), CubicSpline(t, r.moment)
         sa = sm.antiderivative()
         offset = start - float(sa(lo))
-        pieces.append((si, sm, lambda x, sa=sa, off=offset: sa(x) + off, 0.0))
+        pieces.append((si, sm, lambda x, sa=sa, off=offset: sa(x) + off))
         start = float(sa(hi)) + offset
         all_turns.append(t)
         parts.append(r)
