@@ -261,3 +261,16 @@ def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
     texts = " ".join(p.text for p in sheet.record.items if p.kind == "text")
     assert ("Віттенбауера" if lang == "uk" else "Wittenbauer") in texts
     assert "|kl|" in texts
+
+
+def test_reducer_shafts_reduce_by_their_kinetic_energy():
+    """Seed 003 eq. 4: I*_red = I1·i² + I2·(i/i1)² + I3 — with the slotter's i = 2850/120."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import loads
+    text = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8").replace(
+        "efficiency = 0.92", "efficiency = 0.92\nreducer_shafts = [0.0004, 0.002, 0.05]\nfirst_stage_ratio = 4.75")
+    st = study(loads(text, "<reducer>"))
+    dr = dyn.drive(st, dyn.cycle(st))
+    i = 2850 / 120
+    assert dr.ratio == pytest.approx(i)
+    assert dr.reducer_reduced == pytest.approx(0.0004 * i ** 2 + 0.002 * (i / 4.75) ** 2 + 0.05, rel=1e-12)

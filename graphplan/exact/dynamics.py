@@ -371,8 +371,15 @@ def drive(st: Study, c: Cycle) -> Drive:
     motor = d.motor or choose(needed, d.rpm_sync, st.mech.source)
     ratio = d.ratio or motor.omega_rated / w1
     rotor = motor.inertia if d.rotor_inertia is None else d.rotor_inertia
-    return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia, d.motor is None, needed,
-                 list(d.warnings))
+    return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia + reducer_shafts(d, ratio),
+                 d.motor is None, needed, list(d.warnings))
+
+
+def reducer_shafts(d, ratio: float) -> float:
+    """Seed 003 eq. 4, a reducer with one intermediate shaft reduced to the crank by its kinetic
+    energy: I*_red = I_1p·(ω_motor/ω1)² + I_2p·(ω_2p/ω1)² + I_3p, ω_motor/ω1 = i, ω_2p/ω1 = i/i1."""
+    i1, i2, i3 = d.shafts
+    return i1 * ratio ** 2 + (i2 * (ratio / d.first_stage) ** 2 if i2 else 0.0) + i3
 
 
 def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:
