@@ -80,6 +80,17 @@ def test_resistance_work_is_force_times_stroke(name):
     assert c.resistance_work(2 * math.pi) == pytest.approx(c.work, rel=1e-12)
 
 
+def test_resistance_work_with_a_force_profile():
+    """Seed 003's F_p(s): a trapezoidal profile over the ram's travel from position 0 does
+    F·∫f(s)ds = 1500 N × (0.01 + 0.12 + 0.01) m; the cycle breaks at the profile's bends."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import loads
+    text = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8").replace(
+        'direction = "oppose"', 'direction = "oppose"\nprofile = [[0, 0], [0.02, 1], [0.14, 1], [0.16, 0]]')
+    c = dyn.cycle(study(loads(text, "<profile>")))
+    assert c.work == pytest.approx(1500.0 * 0.14, rel=1e-9)
+
+
 def test_resistance_moment_reduces_the_force_by_its_velocity():
     """M*_c on the slotter's working stroke: F·|v_D|/ω1 plus gravity's m·g·v_y/ω1 — by hand."""
     st = example("slotter")
@@ -133,8 +144,8 @@ def test_motor_motion_satisfies_the_equation_of_motion(solved, name):
 @pytest.mark.parametrize("name", SCENES)
 def test_graphical_flywheel_converges_at_precision_zero(solved, name):
     d = solved[name]
-    errs = [abs(construct(d, n, 0.0, slopes="exact").error_pct(construct(d, n, 0.0, slopes="exact").flywheel))
-            for n in (24, 96, 384)]
+    runs = [construct(d, n, 0.0, slopes="exact") for n in (24, 96, 384)]
+    errs = [abs(f.error_pct(f.flywheel)) for f in runs]
     assert errs[2] < errs[0]
     assert errs[2] < 0.01
     course = construct(d, 384, 0.0)
@@ -250,3 +261,16 @@ def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
     texts = " ".join(p.text for p in sheet.record.items if p.kind == "text")
     assert ("Віттенбауера" if lang == "uk" else "Wittenbauer") in texts
     assert "|kl|" in texts
+
+
+def test_reducer_shafts_reduce_by_their_kinetic_energy():
+    """Seed 003 eq. 4: I*_red = I1·i² + I2·(i/i1)² + I3 — with the slotter's i = 2850/120."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import loads
+    text = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8").replace(
+        "efficiency = 0.92", "efficiency = 0.92\nreducer_shafts = [0.0004, 0.002, 0.05]\nfirst_stage_ratio = 4.75")
+    st = study(loads(text, "<reducer>"))
+    dr = dyn.drive(st, dyn.cycle(st))
+    i = 2850 / 120
+    assert dr.ratio == pytest.approx(i)
+    assert dr.reducer_reduced == pytest.approx(0.0004 * i ** 2 + 0.002 * (i / 4.75) ** 2 + 0.05, rel=1e-12)

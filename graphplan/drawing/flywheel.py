@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from graphplan.drawing.diagrams import fmt, rich
+from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
 from graphplan.graphic.record import Record
 
@@ -27,13 +27,15 @@ WORDS = {
            "witt": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) за оберт",
            "classical": "сталий Mд*, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
            "mm": "мм", "Nm": "Н·м", "J": "Дж", "kgm2": "кг·м²", "rad": "рад", "s": "с",
-           "kl": "|kl| = {kl:g} мм", "axis": "вісь ΔT"},
+           "kl": "|kl| = {kl:g} мм", "axis": "вісь ΔT", "Mc": "Mс*", "Md": "Mд*", "Ac": "Aс", "Ad": "Aд",
+           "Im": "I*м"},
     "en": {"moments": "Reduced moments of the resistance and driving forces", "work": "Work of the resistance and driving forces",
            "energy": "Change of kinetic energy ΔT = A_d − A_c", "inertia": "Reduced moment of inertia of the mechanism",
            "witt": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) over a turn",
            "classical": "constant M_d*, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
            "mm": "mm", "Nm": "N·m", "J": "J", "kgm2": "kg·m²", "rad": "rad", "s": "s",
-           "kl": "|kl| = {kl:g} mm", "axis": "ΔT axis"},
+           "kl": "|kl| = {kl:g} mm", "axis": "ΔT axis", "Mc": "M*c", "Md": "M*d", "Ac": "Ac", "Ad": "Ad",
+           "Im": "I*m"},
 }
 
 
@@ -42,11 +44,16 @@ def _extent(*arrays) -> tuple[float, float]:
     return float(v.min()), float(v.max())
 
 
-def _axes(rec: Record, lo: float, hi: float, x_from: float, L: float, sym: list[tuple[str, bool]],
+def _text(rec: Record, at: tuple[float, float], text: str, step: str = "", anchor: str = "start") -> None:
+    """A symbol or a caption in the diagrams' lettering (indices written in line: Mс*, I*м)."""
+    rec.label(at, text, size=TEXT, anchor=anchor, layer=LAYER, step=step)
+
+
+def _axes(rec: Record, lo: float, hi: float, x_from: float, L: float, sym: str,
           xsym: str = "φ", step: str = "") -> None:
     rec.vector((0.0, lo - 3.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
     rec.vector((x_from, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
-    rich(rec, (1.8, hi + 5.0), sym, step=f"axes {step}")
+    _text(rec, (1.8, hi + 5.0), sym, step=f"axes {step}")
     rec.label((L + 11.5, -1.2), xsym, size=TEXT, layer=LAYER, step=f"axes {step}")
 
 
@@ -75,7 +82,7 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     w = WORDS[lang]
     rec = Record(w["moments"], scales={"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "H_mm": f.H})
     lo, hi = _extent(f.M, f.M_mid, [f.Md], f.dyn.cycle.samples.moment / f.mu_M)
-    _axes(rec, lo, hi, -f.H - 4.0, f.L, [("M", False), ("c", True), (", M", False), ("d", True)], step="M")
+    _axes(rec, lo, hi, -f.H - 4.0, f.L, f"{w['Mc']}, {w['Md']}", step="M")
     _ordinates(rec, f, lo, hi, lo - 5.0)
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
     curve = f.dyn.cycle.moment(fine * f.mu_phi) / f.mu_M     # the diagram plotted from the computed M*_c
@@ -91,8 +98,8 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
-    rich(rec, (f.L + 1.5, f.Md + 1.0), [("M", False), ("d", True)], step="M*_d")
-    rich(rec, (f.L + 1.5, float(f.M[-1]) - 4.0), [("M", False), ("c", True)], step="M*_c")
+    _text(rec, (f.L + 1.5, f.Md + 1.0), w["Md"], step="M*_d")
+    _text(rec, (f.L + 1.5, float(f.M[-1]) - 5.0), w["Mc"], step="M*_c")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     # b) the work diagrams, below
     a_lo, a_hi = _extent(f.A_drawn)
@@ -104,7 +111,7 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
 def _work(f: Flywheel, w: dict) -> Record:
     rec = Record("work")
     lo, hi = _extent(f.A_drawn)
-    _axes(rec, lo, hi, -3.0, f.L, [("A", False), ("c", True), (", A", False), ("d", True)], step="A")
+    _axes(rec, lo, hi, -3.0, f.L, f"{w['Ac']}, {w['Ad']}", step="A")
     _ordinates(rec, f, lo, hi, lo - 5.0)
     for k in range(f.divisions):
         rec.segment((f.x[k], f.A_drawn[k]), (f.x[k + 1], f.A_drawn[k + 1]), role="chord", layer=LAYER,
@@ -113,8 +120,7 @@ def _work(f: Flywheel, w: dict) -> Record:
     fine, curve = _smooth(f, f.A_drawn)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
     rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
-    rich(rec, (f.L + 1.5, float(f.A_drawn[-1]) + 1.0), [("A", False), ("d", True), (" = A", False), ("c", True)],
-         step="A_d")
+    _text(rec, (f.L + 1.5, float(f.A_drawn[-1]) + 1.0), f"{w['Ad']} = {w['Ac']}", step="A_d")
     return rec
 
 
@@ -127,7 +133,7 @@ def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:
 
 
 def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.ndarray,
-                  sym: list[tuple[str, bool]], name: str) -> Record:
+                  sym: str, name: str) -> Record:
     """A diagram over φ of ordinates read at the divisions, joined by the French curve."""
     rec = Record(title, scales=scales)
     lo, hi = _extent(values)
@@ -142,12 +148,12 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
 
 def energy_record(f: Flywheel, lang: str = "uk") -> Record:
     """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
-    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, [("ΔT", False)], "ΔT")
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, "ΔT", "ΔT")
 
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
     """I*_m(φ) at μ_I."""
-    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, [("I*", False), ("m", True)], "I*_m")
+    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m")
 
 
 def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
@@ -162,8 +168,8 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     lo, hi = _extent(Y, f.dT, [k, l])
     rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
-    rich(rec, (1.8, hi + 7.0), [("ΔT", False)], step="axes")
-    rich(rec, (x_hi + 7.5, -1.2), [("I*", False), ("m", True)], step="axes")
+    _text(rec, (1.8, hi + 7.0), "ΔT", step="axes")
+    _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
     rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     every = 1
@@ -179,8 +185,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        rich(rec, (x_end + 1.5, b + s * x_end - 1.0), [("ψ", False), (name, True), (f" = {psi:.2f}°", False)],
-             step=f"ψ_{name}")
+        _text(rec, (x_end + 1.5, b + s * x_end - 1.0), f"ψ{name} = {psi:.2f}°", step=f"ψ_{name}")
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
     rec.label((-1.8, k - 1.2), "k", size=TEXT, anchor="end", layer=LAYER, step="k")
@@ -212,7 +217,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     y = lambda v: (np.asarray(v) - lo) / (hi - lo) * height  # noqa: E731
     rec.vector((0.0, 0.0), (0.0, height + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
     rec.vector((0.0, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
-    rich(rec, (1.8, height + 5.0), [("ω, ", False), (w["rad"] + "/" + w["s"], False)], step="axes ω")
+    _text(rec, (1.8, height + 5.0), f"ω, {w['rad']}/{w['s']}", step="axes ω")
     rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
     step = _nice((hi - lo) / 5)
     v = math.ceil(lo / step) * step

@@ -23,12 +23,14 @@ the simulated δ.
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
 from graphplan.exact.kinematics import Kinematics, dot, solve
-from graphplan.exact.kinetostatics import loads, working_stroke
+from graphplan.exact.kinetostatics import loads, output_distance, working_stroke
 from graphplan.exact.positions import Study
 from graphplan.model.motors import Motor, choose
 from graphplan.util.errors import GraphplanError
@@ -124,7 +126,7 @@ class Cycle:
     and interpolated by cubic splines inside each piece: I*_m(φ), M*_c(φ) and the resistance work
     A_c(φ) = ∫₀^φ M*_c dφ (the splines' antiderivatives)."""
     breaks: Array
-    pieces: list[tuple]            # per piece: (spline I, spline M, spline ∫M, A_c at its start)
+    pieces: list[tuple]            # per piece: (spline I*_m, spline M*_c, A_c(φ) = its antiderivative + offset)
     work: float                    # A_c over the turn, J
     samples: Reduced               # the exact samples the splines pass through
 
@@ -132,6 +134,9 @@ class Cycle:
         return np.clip(np.searchsorted(self.breaks, turn, side="right") - 1, 0, len(self.pieces) - 1)
 
     def _eval(self, turn, which: int) -> Array:
+        if isinstance(turn, float):                 # the integrator's scalar calls: no array work
+            k = min(max(bisect_right(self.breaks_list, turn) - 1, 0), len(self.pieces) - 1)
+            return float(self.pieces[k][which](turn))
         turn = np.asarray(turn, dtype=float)
         flat = np.atleast_1d(turn).ravel()
         out = np.empty(flat.shape)
@@ -139,8 +144,12 @@ class Cycle:
         for k in np.unique(idx):
             sel = idx == k
             piece = self.pieces[k]
-            out[sel] = piece[which](flat[sel]) + (piece[3] if which == 2 else 0.0)
+            out[sel] = piece[which](flat[sel])
         return out.reshape(np.shape(turn)) if np.ndim(turn) else float(out[0])
+
+    @cached_property
+    def breaks_list(self) -> list[float]:
+        return [float(b) for b in self.breaks]
 
     def inertia(self, turn):
         return self._eval(turn, 0)
@@ -159,9 +168,22 @@ class Cycle:
 
 
 def breaks(st: Study) -> Array:
-    """0, the output's extreme positions (where a load may switch or turn) and 2π, as crank turns."""
-    turns = np.radians(st.from_position0(np.asarray(st.extremes, dtype=float)))
-    inner = sorted({float(t) for t in turns if 1e-9 < t < 2 * math.pi - 1e-9})
+    """0, the output's extreme positions (where a load may switch or turn), the turns where a
+    force's profile bends (the output passes one of its distances) and 2π, as crank turns."""
+    turns = list(np.radians(st.from_position0(np.asarray(st.extremes, dtype=float))))
+    marks = sorted({x for f in st.mech.forces for x, _ in f.profile})
+    if marks:
+        from scipy.optimize import brentq
+        su = uniform(st)
+        dist = lambda t: output_distance(su, su.solve(crank_angle(st, t)))  # noqa: E731
+        grid = np.linspace(0.0, 2 * math.pi, 1441)
+        values = dist(grid)
+        for x in marks:
+            g = values - x
+            for k in np.nonzero(g[:-1] * g[1:] < 0)[0]:
+                turns.append(brentq(lambda t: float(dist(np.array([t]))[0]) - x, grid[k], grid[k + 1],
+                                    xtol=1e-14, rtol=1e-15))
+    inner = sorted({round(float(t), 12) for t in turns if 1e-9 < t < 2 * math.pi - 1e-9})
     return np.array([0.0] + inner + [2 * math.pi])
 
 
@@ -178,7 +200,7 @@ def cycle(st: Study, step_deg: float = STEP_DEG) -> Cycle:
         si, sm = CubicSpline(t, r.inertia), CubicSpline(t, r.moment)
         sa = sm.antiderivative()
         offset = start - float(sa(lo))
-        pieces.append((si, sm, lambda x, sa=sa, off=offset: sa(x) + off, 0.0))
+        pieces.append((si, sm, lambda x, sa=sa, off=offset: sa(x) + off))
         start = float(sa(hi)) + offset
         all_turns.append(t)
         parts.append(r)
@@ -349,8 +371,15 @@ def drive(st: Study, c: Cycle) -> Drive:
     motor = d.motor or choose(needed, d.rpm_sync, st.mech.source)
     ratio = d.ratio or motor.omega_rated / w1
     rotor = motor.inertia if d.rotor_inertia is None else d.rotor_inertia
-    return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia, d.motor is None, needed,
-                 list(d.warnings))
+    return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia + reducer_shafts(d, ratio),
+                 d.motor is None, needed, list(d.warnings))
+
+
+def reducer_shafts(d, ratio: float) -> float:
+    """Seed 003 eq. 4, a reducer with one intermediate shaft reduced to the crank by its kinetic
+    energy: I*_red = I_1p·(ω_motor/ω1)² + I_2p·(ω_2p/ω1)² + I_3p, ω_motor/ω1 = i, ω_2p/ω1 = i/i1."""
+    i1, i2, i3 = d.shafts
+    return i1 * ratio ** 2 + (i2 * (ratio / d.first_stage) ** 2 if i2 else 0.0) + i3
 
 
 def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:

@@ -80,8 +80,9 @@ class Task:
 class Drive:
     """What turns the crank (scene's [dynamics], seed 003): a motor (given, or chosen from the
     catalogue's ``rpm_sync`` line), a reducer of ratio i = ω_motor/ω_crank (None: rated motor speed
-    over the crank's) and efficiency η, the reducer's moment of inertia reduced to the crank, and a
-    rotor inertia overriding the motor's. ``warnings``: what the scene's motor data said wrong."""
+    over the crank's) and efficiency η, the reducer's moment of inertia reduced to the crank and/or
+    its three shafts with the first stage's ratio (seed 003 eq. 4), and a rotor inertia overriding
+    the motor's. ``warnings``: what the scene's motor data said wrong."""
     motor: Motor | None = None
     rpm_sync: float = 3000.0
     ratio: float | None = None
@@ -89,6 +90,8 @@ class Drive:
     reducer_inertia: float = 0.0
     rotor_inertia: float | None = None
     warnings: tuple[tuple[str, str], ...] = ()     # (English, Ukrainian)
+    shafts: tuple[float, float, float] = (0.0, 0.0, 0.0)   # reducer's input, intermediate, output shafts, kg·m²
+    first_stage: float | None = None               # i1: motor shaft / intermediate shaft
 
 
 @dataclass

@@ -32,7 +32,7 @@ _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
 _DYNAMICS = {"delta", "motor", "synchronous_rpm", "ratio", "efficiency", "reducer_inertia", "rotor_inertia",
-             "L_mm", "H_mm", "divisions"}
+             "reducer_shafts", "first_stage_ratio", "L_mm", "H_mm", "divisions"}
 
 
 def builtin_path() -> Path:
@@ -481,7 +481,18 @@ class _Reader:
         for key, v in (("rotor_inertia", rotor), ("reducer_inertia", reducer)):
             if v is not None and v < 0:
                 raise self.fail(f"dynamics.{key}", f"must be ≥ 0, got {v:g}")
-        return Drive(motor, rpm, ratio, eta, reducer, rotor, tuple(warnings))
+        shafts = raw.get("reducer_shafts", [0.0, 0.0, 0.0])
+        if not isinstance(shafts, list) or len(shafts) != 3:
+            raise self.fail("dynamics.reducer_shafts", "must be [input, intermediate, output] moments of inertia, kg·m²")
+        shafts = tuple(self.number(v, "dynamics.reducer_shafts") for v in shafts)
+        if any(v < 0 for v in shafts):
+            raise self.fail("dynamics.reducer_shafts", "the moments of inertia must be ≥ 0")
+        first = (self.number(raw["first_stage_ratio"], "dynamics.first_stage_ratio", positive=True)
+                 if "first_stage_ratio" in raw else None)
+        if shafts[1] > 0 and first is None:
+            raise self.fail("dynamics.first_stage_ratio", "missing: the intermediate shaft's speed needs the "
+                            "first stage's ratio i1 = ω_motor/ω_intermediate")
+        return Drive(motor, rpm, ratio, eta, reducer, rotor, tuple(warnings), shafts, first)
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}

@@ -122,7 +122,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
                f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; A_c = {doc['work_resistance']:.5g} {u['J']}, "
                f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
     out += ["", w["pos"]]
-    head = f"{'№':>3} {'φ, °':>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {'ΔT gr.':>9} {'ΔT':>9}"
+    gr = "ΔT гр." if lang == "uk" else "ΔT gr."
+    head = f"{'№':>3} {'φ, °':>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {gr:>9} {'ΔT':>9}"
     out.append(head)
     for p in doc["positions"]:
         out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
