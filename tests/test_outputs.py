@@ -104,7 +104,8 @@ def test_svg_keeps_real_text_and_embeds_the_glyphs_it_uses(a1):
 
 def test_sheet_without_system_fonts_matches_the_gallery(tmp_path):
     """The committed gallery sheet rasterised here and in a process whose fontconfig knows no font
-    at all: the same pixels. The same bare process with plain cairosvg letters boxes instead."""
+    at all: the same pixels (and the bare process's PDF embeds osifont). The same bare process with
+    plain cairosvg letters boxes instead: the test sees a missing font."""
     from graphplan.drawing.raster import to_png
     gallery = ROOT / "drawings" / "shaper.svg"
     conf = tmp_path / "fonts.conf"
@@ -112,10 +113,13 @@ def test_sheet_without_system_fonts_matches_the_gallery(tmp_path):
     env = {"FONTCONFIG_FILE": str(conf)}
     here = grey(to_png(gallery.read_text(encoding="utf-8"), dpi=60))
     out = tmp_path / "bare.png"
-    done = run(f"from graphplan.drawing.raster import to_png\n"
-               f"open({str(out)!r}, 'wb').write(to_png(open({str(gallery)!r}, encoding='utf-8').read(), dpi=60))",
-               env=env)
+    pdf = tmp_path / "bare.pdf"
+    done = run(f"from graphplan.drawing.raster import to_pdf, to_png\n"
+               f"svg = open({str(gallery)!r}, encoding='utf-8').read()\n"
+               f"open({str(out)!r}, 'wb').write(to_png(svg, dpi=60))\n"
+               f"open({str(pdf)!r}, 'wb').write(to_pdf(svg))", env=env)
     assert done.returncode == 0, done.stderr
+    assert b"+osifont" in pdf.read_bytes() and b"/FontFile2" in pdf.read_bytes()
     there = grey(out.read_bytes())
     assert there.shape == here.shape
     assert np.abs(there - here).mean() < 0.05 and (there != here).mean() < 0.001

@@ -2,6 +2,8 @@
 
 Root ``width="Wmm" height="Hmm" viewBox="0 0 W H"``, unitless coordinates, stroke widths in user
 units (= mm), ``fill="none"`` on strokes, no transforms, one Inkscape layer per kind, deterministic.
+Lettering stays text (searchable) in osifont, whose glyphs the document carries (drawing.fonts), or,
+with ``text_as_paths``, outlines cut from the same font.
 """
 from __future__ import annotations
 
