@@ -276,3 +276,24 @@ def test_librecad_prints_the_sheet_on_its_own_format(tmp_path, a1):
     assert columns and rows
     assert min(columns) == pytest.approx(20, abs=1) and max(columns) == pytest.approx(836, abs=1)
     assert min(rows) == pytest.approx(5, abs=1) and max(rows) == pytest.approx(589, abs=1)
+
+
+def test_without_fontconfig_the_lettering_goes_in_as_outlines(tmp_path, a1, monkeypatch):
+    """Where cairo cannot be told about the packaged font, PDF and PNG letter with its outlines
+    rather than with whatever font the machine has: no font in the PDF, the captions still drawn."""
+    from graphplan.drawing import fonts
+    monkeypatch.setattr(fonts, "register", lambda: False)
+    data = a1.write(tmp_path / "outlined.pdf").read_bytes()
+    assert b"/FontFile" not in data and b"/Font" not in data
+    outlined = grey(a1.write(tmp_path / "outlined.png", dpi=40).read_bytes())
+    monkeypatch.undo()
+    text = grey(a1.write(tmp_path / "text.png", dpi=40).read_bytes())
+    from graphplan.drawing.raster import to_png
+    from graphplan.drawing.svg import render
+    from graphplan.graphic.record import Record
+    bare = Record(a1.record.title, [p for p in a1.record.items if p.kind != "text"])
+    lines = grey(to_png(render(bare, a1.form.width, a1.form.height), dpi=40))
+
+    def ink(image):
+        return float((255 - image).sum() - (255 - lines).sum())   # the lettering's ink alone
+    assert ink(text) > 0 and ink(outlined) / ink(text) == pytest.approx(1, abs=0.05)
