@@ -44,5 +44,6 @@ def cmd_sheet(args: argparse.Namespace) -> int:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
     sheet = build(st, f, args)
     path = sheet.write(args.output, args.text_as_paths, args.dpi)
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
+    dpi = f", {args.dpi:g} dpi" if path.suffix.lower() == ".png" else ""
+    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm{dpi}, {len(sheet.placed)} blocks)", file=sys.stderr)
     return 0
