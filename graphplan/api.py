@@ -275,8 +275,8 @@ class Sheet(View):
     def svg(self) -> str:
         return self.value.svg()
 
-    def save(self, path: str | Path, text_as_paths: bool = False) -> Path:
-        return self.value.write(path, text_as_paths)
+    def save(self, path: str | Path, text_as_paths: bool = False, dpi: float = 300) -> Path:
+        return self.value.write(path, text_as_paths, dpi)
 
 
 # -- the calls ------------------------------------------------------------------------------------

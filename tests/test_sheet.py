@@ -80,7 +80,7 @@ def test_formats_by_suffix(tmp_path):
     box_ = re.search(rb"/MediaBox \[ ?0 0 ([\d.]+) ([\d.]+) ?\]", pdf)
     assert box_ and float(box_.group(1)) == pytest.approx(841 / 25.4 * 72, abs=1) \
         and float(box_.group(2)) == pytest.approx(594 / 25.4 * 72, abs=1)
-    png = s.write(tmp_path / "s.png").read_bytes()
+    png = s.write(tmp_path / "s.png", dpi=96).read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
     from PIL import Image
     assert Image.open(io.BytesIO(png)).size == (round(841 / 25.4 * 96), round(594 / 25.4 * 96))

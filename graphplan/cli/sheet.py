@@ -23,6 +23,7 @@ def register(sub) -> None:
     p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
     p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
     p.add_argument("--text-as-paths", action="store_true", help="write lettering as outlines (SVG/PDF/PNG)")
+    p.add_argument("--dpi", type=float, default=300, help="PNG resolution in dots per inch (default 300, to print)")
     p.set_defaults(handler=cmd_sheet)
 
 
@@ -33,12 +34,16 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     from graphplan.sheets.sheet import BUILDERS, FORMATS_OUT
     if Path(args.output).suffix.lower() not in FORMATS_OUT:
         raise GraphplanError(f"-o {args.output}: unknown format; use " + ", ".join(FORMATS_OUT))
+    if Path(args.output).suffix.lower() in (".pdf", ".png"):
+        from graphplan.drawing.raster import require_cairo
+        require_cairo()                  # before the work: one line when the cairo library is missing
     st = study(load(args.scene))
     f = form(args.format)
     build = BUILDERS.get(args.sheet)
     if build is None:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
     sheet = build(st, f, args)
-    path = sheet.write(args.output, args.text_as_paths)
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
+    path = sheet.write(args.output, args.text_as_paths, args.dpi)
+    dpi = f", {args.dpi:g} dpi" if path.suffix.lower() == ".png" else ""
+    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm{dpi}, {len(sheet.placed)} blocks)", file=sys.stderr)
     return 0

@@ -1,5 +1,11 @@
 """DXF renderer of construction records (ezdxf): millimetres, one layer per kind, GOST 2.303 line
-types defined in millimetres, line weights by role, a text style on osifont; Cyrillic kept."""
+types defined in millimetres, line weights by role, one text style (GOST) on osifont; Cyrillic kept.
+
+Ready for CAD programs (docs/cad.md): model-space limits and extents and the paper-space limits are
+the sheet's format ($LIMMAX = $PLIMMAX = $EXTMAX = 841, 594 for A1), so a program that prints by the
+limits (LibreCAD) prints the sheet on its own format; a paper-space layout named after the format
+(page setup in mm, 1:1, no margins) shows the model through one viewport at 1:1; the text styles
+are Standard (required) and GOST, nothing else; the bytes do not depend on PYTHONHASHSEED."""
 from __future__ import annotations
 
 import io
@@ -15,7 +21,10 @@ LAYER_STYLE = {  # layer → (ACI colour, lineweight in 1/100 mm)
     "frame": (7, 70), "mechanism": (7, 70), "construction": (8, 25), "vectors": (5, 50),
     "labels": (7, 25), "diagrams": (3, 35), "tables": (7, 25),
 }
-FONT_FILE = "osifont.ttf"
+FONT_FILE = "osifont.ttf"   # the packaged font (drawing.fonts); CAD programs find it by this name
+STYLE = "GOST"
+ISO_A = {(841.0, 1189.0): "A0", (594.0, 841.0): "A1", (420.0, 594.0): "A2", (297.0, 420.0): "A3",
+         (210.0, 297.0): "A4"}    # (short side, long side) → format
 
 
 def _weight(prim: Primitive) -> int:
@@ -41,16 +50,14 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
     from ezdxf import units
     from ezdxf.enums import TextEntityAlignment
 
-    doc = ezdxf.new("R2010", setup=True)
+    doc = ezdxf.new("R2010", setup=False)   # no stock styles, line types or dimension styles
     doc.units = units.MM
     doc.header["$INSUNITS"] = units.MM
     doc.header["$MEASUREMENT"] = 1
-    doc.header["$LIMMIN"] = (0, 0)
-    doc.header["$LIMMAX"] = (width, height)
     for name, (desc, pattern) in LINETYPES.items():
         doc.linetypes.add(name, pattern=pattern, description=desc)
-    if "GOST" not in doc.styles:
-        doc.styles.add("GOST", font=FONT_FILE)
+    doc.styles.get("Standard").dxf.font = FONT_FILE
+    doc.styles.add(STYLE, font=FONT_FILE)
     for name in LAYERS:
         colour, weight = LAYER_STYLE.get(name, (7, 25))
         doc.layers.add(name, color=colour, lineweight=weight)
@@ -87,20 +94,45 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
             msp.add_circle(prim.points[0], 1.0 if prim.role == "joint" else 0.6, dxfattribs=attribs)
         elif k == "text":
             text = msp.add_text(lettering(prim.text), height=prim.size,
-                                dxfattribs={"layer": prim.layer, "style": "GOST"})
+                                dxfattribs={"layer": prim.layer, "style": STYLE})
             text.set_placement(prim.points[0], align=align[prim.anchor])
-    _classes_in_order(doc)
+    _sheet_size(doc, width, height)
+    _stable_classes(doc)
     stream = io.StringIO()
     doc.write(stream)
     return stream.getvalue().encode("utf-8")
 
 
-def _classes_in_order(doc) -> None:
-    """The CLASSES section in a fixed order. ezdxf adds a class per entity type in use from a set at
-    write time, so its order followed PYTHONHASHSEED; adding them here first — the version's
-    required ones, then the types in use sorted — makes the bytes the same in every run."""
-    from ezdxf.sections.classes import REQ_R2004, REQUIRED_CLASSES
-    for name in REQUIRED_CLASSES.get(doc.dxfversion, REQ_R2004):
-        doc.classes.add_class(name)
-    for name in sorted(doc.entitydb.dxf_types_in_use()):
-        doc.classes.add_class(name)
+def paper_name(width: float, height: float) -> str:
+    """The format's name (A1 …) for an ISO A size in either orientation, else "Sheet"."""
+    return ISO_A.get((min(width, height), max(width, height)), "Sheet")
+
+
+def _sheet_size(doc, width: float, height: float) -> None:
+    """Limits and extents of model and paper space at the sheet (ezdxf writes the header's $LIMMAX,
+    $PLIMMAX, $EXTMAX … from the layouts), the opening view on the whole sheet, and a paper-space
+    layout of the sheet's format printing the model at 1:1 (AutoCAD's media name for DWG to PDF)."""
+    msp = doc.modelspace()
+    msp.reset_limits((0, 0), (width, height))
+    msp.reset_extents((0, 0, 0), (width, height, 0))
+    doc.header["$EXTMIN"] = (0, 0, 0)        # ezdxf copies the layout's extents only when not (0, 0, 0)
+    doc.header["$EXTMAX"] = (width, height, 0)
+    doc.set_modelspace_vport(height=height, center=(width / 2, height / 2))
+    name = paper_name(width, height)
+    doc.layouts.rename("Layout1", name)
+    psp = doc.paperspace(name)
+    psp.page_setup(size=(width, height), margins=(0, 0, 0, 0), units="mm", scale=(1, 1),
+                   name=f"ISO_full_bleed_{name}" if name != "Sheet" else "graphplan")
+    psp.reset_limits((0, 0), (width, height))
+    psp.reset_extents((0, 0, 0), (width, height, 0))
+    psp.add_viewport(center=(width / 2, height / 2), size=(width, height),
+                     view_center_point=(width / 2, height / 2), view_height=height)
+    doc.header["$PSVPSCALE"] = 1.0
+
+
+def _stable_classes(doc) -> None:
+    """The CLASSES section in a fixed order: ezdxf adds the classes of the entity types in use in
+    the order of a set of names, which changes with PYTHONHASHSEED."""
+    from collections import OrderedDict
+    doc.classes.add_required_classes(doc.dxfversion)
+    doc.classes.classes = OrderedDict(sorted(doc.classes.classes.items()))

@@ -2,6 +2,8 @@
 
 Root ``width="Wmm" height="Hmm" viewBox="0 0 W H"``, unitless coordinates, stroke widths in user
 units (= mm), ``fill="none"`` on strokes, no transforms, one Inkscape layer per kind, deterministic.
+Lettering stays text (searchable) in osifont, whose glyphs the document carries (drawing.fonts), or,
+with ``text_as_paths``, outlines cut from the same font.
 """
 from __future__ import annotations
 
@@ -27,9 +29,11 @@ def page_for(record: Record, margin: float = 10.0) -> tuple[Record, float, float
     return record.moved(margin - x0, margin - y0), float(w), float(h)
 
 
-def render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False) -> str:
+def render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False,
+           embed_font: bool = True) -> str:
     """The record as an SVG document of ``width`` × ``height`` mm (y of the record points up).
-    ``text_as_paths`` writes lettering as outlines, for importers that drop text."""
+    ``text_as_paths`` writes lettering as outlines, for importers that drop text; otherwise text stays
+    text (searchable, selectable) and ``embed_font`` carries the glyphs it uses (fonts.face_css)."""
     import svgwrite
     from svgwrite.extensions import Inkscape
 
@@ -52,7 +56,18 @@ def render(record: Record, width: float, height: float, title: str = "", text_as
     for name, layer in layers.items():
         if layer.elements:
             dwg.add(layer)
+    chars = _lettered(dwg)
+    if embed_font and chars:
+        from graphplan.drawing.fonts import face_css
+        dwg.defs.add(dwg.style(face_css(chars)))
     return dwg.tostring()
+
+
+def _lettered(element) -> str:
+    """Every character the document letters (text and its spans)."""
+    own = getattr(element, "text", None)
+    inner = "".join(_lettered(e) for e in getattr(element, "elements", ()))
+    return (own if isinstance(own, str) else "") + inner
 
 
 def _xy(p, height: float) -> tuple[str, str]:
@@ -111,37 +126,23 @@ def arc_path(centre, r: float, start: float, end: float, h: float) -> str:
 
 
 def to_pdf(svg_text: str) -> bytes:
-    """The SVG as PDF (cairosvg) with cairo's creation date fixed, so the bytes depend on the input only
-    (the date is replaced by one of the same length: the cross-reference offsets stay right)."""
-    import re
-
-    import cairosvg
-    data = cairosvg.svg2pdf(bytestring=svg_text.encode("utf-8"))
-    return re.sub(rb"/CreationDate \(D:\d{14}[^)]*\)",
-                  lambda m: b"/CreationDate (D:20000101000000Z" + b" " * (len(m.group(0)) - 33) + b")",
-                  data)
+    """The SVG as PDF (raster.to_pdf: the packaged font embedded)."""
+    from graphplan.drawing.raster import to_pdf as pdf
+    return pdf(svg_text)
 
 
-def to_png(svg_text: str, dpi: int = 96) -> bytes:
-    """Rasterise an SVG (cairosvg) for looking at it."""
-    import cairosvg
-    return cairosvg.svg2png(bytestring=svg_text.encode("utf-8"), dpi=dpi)
-
-
-def font_file() -> str | None:
-    """osifont when installed (Debian fonts-osifont), else None (matplotlib's DejaVu Sans)."""
-    from matplotlib import font_manager
-    for path in font_manager.findSystemFonts():
-        if "osifont" in path.lower():
-            return path
-    return None
+def to_png(svg_text: str, dpi: int = 300) -> bytes:
+    """The SVG as PNG (raster.to_png: opaque white, ``dpi`` recorded)."""
+    from graphplan.drawing.raster import to_png as png
+    return png(svg_text, dpi)
 
 
 @lru_cache(maxsize=1)
 def _font():
     from matplotlib.font_manager import FontProperties
-    path = font_file()
-    return FontProperties(fname=path) if path else FontProperties(family="DejaVu Sans")
+
+    from graphplan.drawing.fonts import font_path
+    return FontProperties(fname=str(font_path()))
 
 
 def text_outline(prim: Primitive, height: float) -> str:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 
 Point = tuple[float, float]
 
@@ -86,11 +87,24 @@ def lettering(text: str) -> str:
     return text.translate(_LETTERING)
 
 
+@lru_cache(maxsize=1)
+def _advances() -> tuple[dict[str, float], float]:
+    """The advance widths, in ems, of the lettering font that comes with the package (osifont,
+    graphplan/data/fonts), and the width of its missing-glyph box."""
+    from importlib import resources
+
+    from fontTools.ttLib import TTFont
+    font = TTFont(str(resources.files("graphplan") / "data" / "fonts" / "osifont.ttf"), lazy=True)
+    em, widths = font["head"].unitsPerEm, font["hmtx"]
+    return ({chr(code): widths[name][0] / em for code, name in font.getBestCmap().items()},
+            widths[".notdef"][0] / em)
+
+
 def text_width(text: str, size: float) -> float:
-    """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps."""
-    text = lettering(text)
-    narrow = sum(1 for c in text if c in "il1.,:;|'!()[] ")
-    return size * (0.62 * (len(text) - narrow) + 0.3 * narrow)
+    """Width of the lettering as drawn: the sum of the font's advance widths × the height (cairo sets
+    text by advances, without kerning), a missing character as the font's box."""
+    advance, box = _advances()
+    return size * sum(advance.get(c, box) for c in lettering(text))
 
 
 @dataclass

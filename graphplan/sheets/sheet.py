@@ -53,8 +53,8 @@ class Sheet:
         from graphplan.drawing.svg import render
         return render(self.record, self.form.width, self.form.height, self.record.title, text_as_paths)
 
-    def write(self, path: str | Path, text_as_paths: bool = False) -> Path:
-        """Write the sheet; the suffix picks the format. Whole files only."""
+    def write(self, path: str | Path, text_as_paths: bool = False, dpi: float = 300) -> Path:
+        """Write the sheet; the suffix picks the format (PNG at ``dpi``). Whole files only."""
         from graphplan.util.files import write_atomic
         path = Path(path)
         suffix = path.suffix.lower()
@@ -64,11 +64,12 @@ class Sheet:
         if suffix == ".dxf":
             from graphplan.drawing.dxf import to_dxf
             return write_atomic(path, to_dxf(self.record, self.form.width, self.form.height))
-        svg = self.svg(text_as_paths)
         if suffix == ".svg":
-            return write_atomic(path, svg)
-        from graphplan.drawing.svg import to_pdf, to_png
-        return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi=96))
+            return write_atomic(path, self.svg(text_as_paths))
+        from graphplan.drawing.fonts import register
+        from graphplan.drawing.raster import to_pdf, to_png
+        svg = self.svg(text_as_paths or not register())   # no fontconfig: letter with outlines
+        return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi))
 
 
 def fmt(v: float | None, digits: int = 4) -> str:
