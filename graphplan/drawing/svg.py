@@ -6,9 +6,12 @@ units (= mm), ``fill="none"`` on strokes, no transforms, one Inkscape layer per 
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 
-from graphplan.graphic.record import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering, plain_width,
+                                      run_offsets, text_width)
+from graphplan.util.markup import is_plain
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -91,9 +94,52 @@ def _elements(dwg, prim: Primitive, h: float):
                  "stroke_width": _f(0.35)}
         yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
     elif k == "text":
-        anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-        yield dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
-                       font_family=FONT, text_anchor=anchor, fill="black")
+        yield _text(dwg, prim, h)
+
+
+ARROW_FONT = "'DejaVu Sans', sans-serif"   # osifont has no →: the arrow alone in a font that has it
+
+
+def _text(dwg, prim: Primitive, h: float):
+    """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
+    size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
+    font that has it."""
+    anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
+    if is_plain(prim.text) and "→" not in prim.text:
+        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
+                        font_family=FONT, text_anchor=anchor, fill="black")
+    # anchored at its start, by the estimated width: cairosvg (PDF, PNG) misplaces the <tspan>s of
+    # a centred or right-aligned text
+    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
+        text_width(prim.text, prim.size)
+    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(prim.size), font_family=FONT,
+                  fill="black")
+    shift = 0.0      # the current baseline shift, mm up
+    x = 0.0          # where the pen is, by the estimate text_width also uses
+    for run, x0, size, up in run_offsets(prim.text, prim.size):
+        pieces = [p for p in re.split("(→)", run.text) if p]
+        for i, piece in enumerate(pieces):
+            kw = {}
+            if i == 0 and (up != shift or x0 != x):
+                if up != shift:
+                    kw["dy"] = [_f(shift - up)]
+                if x0 != x:
+                    kw["dx"] = [_f(x0 - x)]
+            if run.level:
+                kw["font_size"] = _f(size)
+            if piece == "→":
+                kw["font_family"] = ARROW_FONT
+            span = dwg.tspan(piece if piece == "→" else _svg_lettering(piece), **kw)
+            el.add(span)
+        shift = up
+        x = x0 + plain_width(run.text, size)
+    return el
+
+
+def _svg_lettering(text: str) -> str:
+    """lettering() keeping the spaces SVG would collapse at a tspan's edges as no-break spaces."""
+    out = lettering(text)
+    return out.replace(" ", "\u00a0") if out.startswith(" ") or out.endswith(" ") else out
 
 
 def arc_path(centre, r: float, start: float, end: float, h: float) -> str:
@@ -148,14 +194,25 @@ def text_outline(prim: Primitive, height: float) -> str:
     """The lettering of a text primitive as one SVG path (matplotlib TextPath), in sheet mm."""
     from matplotlib.textpath import TextPath
 
-    tp = TextPath((0, 0), lettering(prim.text), size=prim.size, prop=_font())
-    ext = tp.get_extents()
-    shift = {"start": 0.0, "middle": -ext.width / 2 - ext.x0, "end": -ext.width - ext.x0}[prim.anchor]
+    pieces = []   # (TextPath, x offset, baseline shift) per run of the markup, by the glyphs' advances
+    pen = start = 0.0
+    for run, _x, size, up in run_offsets(prim.text, prim.size):
+        tp = TextPath((0, 0), lettering(run.text), size=size, prop=_font())
+        x_run = start if run.stacked else pen
+        start = x_run
+        pieces.append((tp, x_run, up))
+        ext = tp.get_extents()
+        pen = max(pen, x_run + (ext.x0 + ext.width if len(tp.vertices) else 0.0) + 0.25 * size * run.text.endswith(" "))
+    boxes = [(tp.get_extents(), dx) for tp, dx, _ in pieces]
+    left = min((e.x0 + dx for e, dx in boxes), default=0.0)
+    right = max((e.x0 + e.width + dx for e, dx in boxes), default=0.0)
+    shift = {"start": 0.0, "middle": -(left + right) / 2, "end": -right}[prim.anchor]
     x0, y0 = prim.points[0]
     parts = []
-    for poly in tp.to_polygons(closed_only=True):
-        pts = [(x0 + x + shift, y0 + y) for x, y in poly]
-        if len(pts) < 3:
-            continue
-        parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")
+    for tp, dx, up in pieces:
+        for poly in tp.to_polygons(closed_only=True):
+            pts = [(x0 + x + dx + shift, y0 + y + up) for x, y in poly]
+            if len(pts) < 3:
+                continue
+            parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")
     return " ".join(parts) or "M0,0"

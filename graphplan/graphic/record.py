@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
+from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, Run, is_plain, runs
+
 Point = tuple[float, float]
 
 # roles → line style: thick lines for links and result vectors, thin for construction (GOST 2.303)
@@ -86,11 +88,38 @@ def lettering(text: str) -> str:
     return text.translate(_LETTERING)
 
 
-def text_width(text: str, size: float) -> float:
-    """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps."""
+def plain_width(text: str, size: float) -> float:
+    """Width of ``text`` taken literally (no markup)."""
     text = lettering(text)
     narrow = sum(1 for c in text if c in "il1.,:;|'!()[] ")
     return size * (0.62 * (len(text) - narrow) + 0.3 * narrow)
+
+
+def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]:
+    """Each run of the markup (util.markup) with its x offset from the text's start, its letter
+    height and its baseline shift (mm, + up): sub- and superscripts 0.7 high, stacked ones over
+    each other."""
+    out = []
+    x = 0.0
+    start = 0.0
+    for r in runs(text):
+        s = size * SMALL if r.level else size
+        if r.stacked:
+            x0 = start
+        else:
+            x0 = start = x
+        shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
+        out.append((r, x0, s, shift))
+        x = max(x, x0 + plain_width(r.text, s))
+    return out
+
+
+def text_width(text: str, size: float) -> float:
+    """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps;
+    sub- and superscripts of the markup (util.markup) at their smaller size, stacked ones once."""
+    if is_plain(text):
+        return plain_width(text, size)
+    return max((x0 + plain_width(r.text, s) for r, x0, s, _ in run_offsets(text, size)), default=0.0)
 
 
 @dataclass
