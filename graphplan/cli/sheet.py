@@ -5,6 +5,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from graphplan.cli.common import lang_arg, lang_of
 from graphplan.util.errors import GraphplanError
 
 
@@ -16,7 +17,7 @@ def register(sub) -> None:
     p.add_argument("-o", "--output", required=True, metavar="FILE",
                    help="output file: .svg, .pdf, .png or .dxf")
     p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
-    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
+    lang_arg(p)
     p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces"],
                    help="which sheet: kinematics (default) or forces")
     p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
@@ -34,6 +35,7 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     if Path(args.output).suffix.lower() not in FORMATS_OUT:
         raise GraphplanError(f"-o {args.output}: unknown format; use " + ", ".join(FORMATS_OUT))
     st = study(load(args.scene))
+    args.lang = lang_of(args, st)
     f = form(args.format)
     build = BUILDERS.get(args.sheet)
     if build is None:

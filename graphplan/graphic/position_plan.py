@@ -93,9 +93,11 @@ class Layout:
 # -- the mechanism as the draftsman sees it ------------------------------------------------------
 
 def sub(name: str) -> str:
-    """Plan notation: the mechanism point's lowercase letter (S2 → s2, A3 → a3). Plain ASCII: the
-    drawing font (osifont) has no subscript digits."""
-    return name.lower()
+    """Plan notation: the mechanism point's lowercase letter, its number as a subscript (util.markup:
+    S2 → s_2, A3 → a_3, B → b)."""
+    low = name.lower()
+    head = low.rstrip("0123456789")
+    return f"{head}_{low[len(head):]}" if head and head != low else low
 
 
 class Scheme:

@@ -8,6 +8,7 @@ with decimal points). Text may carry the typesetting markup of ``util.markup`` (
 from __future__ import annotations
 
 import math
+import re
 
 from graphplan.util.errors import GraphplanError
 
@@ -65,6 +66,25 @@ def pair_kind(kind: str, lang: str) -> str:
     if lang != "uk":
         return kind
     return "".join(PAIR_LETTERS.get(c, c) for c in kind)
+
+
+# -- the lab's symbols -------------------------------------------------------------------------------
+_FORCE = re.compile(r"^(MΦ|Φ|G|R|P_|M_)([0-9]+(?:-[0-9]+)?|[A-Za-z][A-Za-z0-9]*)(τ|n|\^⊥|\^∥)?('*)$")
+
+
+def force_symbol(name: str, lang: str) -> str:
+    """A force's name as the lab writes it (markup): G2 → G_2, Φ2 → Φ_2, MΦ3 → M^Φ_3, R12 → R_12,
+    R34τ → R^τ_34, R34n → R^n_34, R34^⊥ → R^⊥_34, P_b and M_b → P_зр, M_зр in Ukrainian."""
+    if name in ("M_b", "P_b"):
+        return word(name, lang)
+    m = _FORCE.match(name)
+    if not m:
+        return name
+    letter, index, mark, primes = m.groups()
+    letter = {"MΦ": "M", "P_": "P", "M_": "M"}.get(letter, letter)
+    top = "Φ" if m.group(1) == "MΦ" else (mark or "").lstrip("^")
+    low = "{" + index + "}"
+    return (f"{letter}^{{{top}}}_{low}" if top else f"{letter}_{low}") + primes
 
 
 # -- numbers ----------------------------------------------------------------------------------------
@@ -151,6 +171,11 @@ WORDS: dict[str, tuple[str, str]] = {
     "balancing moment": ("Зрівноважувальний момент", "Balancing moment"),
     "balancing moment turn": ("Зрівноважувальний момент за оберт", "Balancing moment over a turn"),
     "hodograph": ("Годограф реакції", "Hodograph of reaction"),
+    "hodographs": ("Годографи реакцій в обертальних парах", "Hodographs of the reactions in the revolute pairs"),
+    "pair": ("пара", "pair"),
+    "chart turn": ("поворот кривошипа від положення 0, ° (робочий хід затінено)",
+                   "crank turn from position 0, ° (working stroke shaded)"),
+    "balancing moment crank": ("Зрівноважувальний момент на кривошипі", "Balancing moment on the crank"),
     "force": ("сила", "force"),
     "force value": ("P, {N} (M, {N·m})", "P, {N} (M, {N·m})"),
     "drawn mm": ("на кресленні, {mm}", "drawn, {mm}"),
@@ -219,7 +244,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "and": ("і", "and"),
     "vanishes": ("дорівнює нулю", "vanishes"),
     "vanish": ("дорівнюють нулю", "vanish"),
-    "near extreme": (" (біля крайнього положення φ = {phi}°)", " (near the extreme position at φ = {phi}°)"),
+    "near extreme": (", {angle}° від крайнього положення φ = {phi}°", ", {angle}° from the extreme position φ = {phi}°"),
     "velocity plan lower": ("план швидкостей", "velocity plan"),
     "acceleration plan lower": ("план прискорень", "acceleration plan"),
     "position plan lower": ("план положень", "position plan"),
@@ -281,7 +306,7 @@ WORDS: dict[str, tuple[str, str]] = {
 }
 
 
-def word(key: str, lang: str, **fields: object) -> str:
+def word(key: str, lang: str, /, **fields: object) -> str:
     """The catalogue's text for ``key`` in ``lang``; {m/s}-style fields are units in that language,
     other {fields} are filled from ``fields``."""
     uk, en = WORDS[key]
