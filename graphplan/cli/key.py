@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TextIO
 
+from graphplan.cli.common import lang_arg, lang_of
 from graphplan.util.progress import Progress
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import write_atomic
@@ -249,7 +250,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         sys.stdout.write(dumps(report_json(graded, args.key, args.student, args.signed)))
     else:
-        sys.stdout.write(report_table(graded, args.key, args.student))
+        sys.stdout.write(report_table(graded, args.key, args.student, lang_of(args)))
     return 0
 
 
@@ -283,6 +284,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     c.add_argument("key", help="a key folder written by 'graphplan key', a variant's folder or its key.json")
     c.add_argument("student", help="the student's table: CSV with position, quantity, value (and variant)")
     c.add_argument("--json", action="store_true", help="the graded rows and the summary as JSON")
+    lang_arg(c)
     c.add_argument("--signed", action="store_true",
                    help="compare signs of signed quantities (ω, ε, s, v, a) instead of magnitudes")
     c.set_defaults(handler=cmd_check)

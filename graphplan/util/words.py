@@ -303,6 +303,43 @@ WORDS: dict[str, tuple[str, str]] = {
     "keys skipped": (", пропущено {k}", ", {k} skipped"),
     "variant note": ("варіант {v}: {note}", "variant {v}: {note}"),
     "rows in": ("{n} рядків за {t} с → {path}", "{n} rows in {t} s → {path}"),
+    # grading notes and the report
+    "grade no key": ("немає ключа для варіанта {variant} (ключі: {known})", "no key for variant {variant} (keys: {known})"),
+    "grade not a number": ("положення {text} не є числом", "position {text} is not a number"),
+    "grade abscissae": ("абсциси діаграми: 0, {half}, … {n}", "the diagram's abscissae are 0, {half}, … {n}"),
+    "grade positions": ("положення: 0 … {last}", "positions are 0 … {last}"),
+    "grade position is 0": ("положення {count} — це положення 0", "position {count} is position 0"),
+    "grade unknown quantity": ("невідома величина {q}", "unknown quantity {q}"),
+    "grade no value": ("немає значення", "no value"),
+    "grade no scene": ("немає в ключі (і немає сцени, щоб обчислити)", "not in the key (and no scene to compute it)"),
+    "grade computed": ("немає в ключі: обчислено", "not in the key: computed"),
+    "grade near zero": ("майже нуль: у межах ±{tol} % від {floor}", "near zero: within ±{tol} % of {floor}"),
+    "grade key no scene": ("у ключі немає сцени: інші кути кривошипа не перевірено",
+                           "the key has no scene: other crank angles not searched"),
+    "grade constant": ("{name} дорівнює {v} при кожному куті кривошипа", "{name} is {v} at every crank angle"),
+    "grade no angle": ("жоден кут кривошипа не дає {name} = {v} (за оберт {lo} … {hi})",
+                       "no crank angle gives {name} = {v} (over the turn {lo} … {hi})"),
+    "grade inaccurate": ("найближчий кут кривошипа з цим значенням — {turn}° від положення 0: "
+                         "неточне значення для цього положення",
+                         "the nearest crank angle with this value is {turn}° from position 0: "
+                         "an inaccurate value for this position"),
+    "grade fits position": ("відповідає положенню {at} ({turn}° від положення 0; точно там {there}), "
+                            "а не положенню {claimed}",
+                            "fits position {at} ({turn}° from position 0; exact there {there}), not position {claimed}"),
+    "grade fits division": ("відповідає поділці {at} ({turn}° від положення 0; точно там {there}), "
+                            "а не поділці {claimed}",
+                            "fits division {at} ({turn}° from position 0; exact there {there}), not division {claimed}"),
+    "graded against": ("{student}: перевірено за ключем {key}", "{student} graded against {key}"),
+    "grade head": ("рядок|варіант|пол.|величина|значення|точно|похибка %|допуск %|результат|примітка",
+                   "line|variant|pos|quantity|value|exact|error %|tol %|result|note"),
+    "pass": ("зарах.", "pass"), "fail": ("НЕ ЗАРАХ.", "FAIL"),
+    "grade summary": ("{rows} рядків: зараховано {passed}, не зараховано {failed}, не оцінено {unknown}; "
+                      "частка зарахованих {rate}; {other} рядків відповідають іншому положенню",
+                      "{rows} rows: {passed} passed, {failed} failed, {unknown} not graded; "
+                      "pass rate {rate}; {other} rows fit another position"),
+    "grade variant": ("  варіант {v}: зараховано {passed}/{total} ({rate})", "  variant {v}: {passed}/{total} passed ({rate})"),
+    "grade variant unknown": (", не оцінено {n}", ", {n} not graded"),
+    "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
 }
 
 
@@ -315,6 +352,27 @@ def word(key: str, lang: str, /, **fields: object) -> str:
         return text
     units = {k: unit(k, lang) for k in UNITS}
     return text.format_map(_Fields({**units, **{k: str(v) for k, v in fields.items()}}))
+
+
+class Fixed(float):
+    """A value ``said`` writes with a fixed count of decimals (an angle: 12.5°)."""
+
+    def __new__(cls, value: float, decimals: int = 1):
+        obj = super().__new__(cls, value)
+        obj.decimals = decimals
+        return obj
+
+
+def said(key: str, /, **fields: object) -> dict[str, str]:
+    """The catalogue's text in every language at once (for a message stored before anyone knows who
+    reads it): floats through ``num`` (``Fixed`` through ``fixed``), in each language's writing."""
+    def cell(v: object, lang: str) -> str:
+        if isinstance(v, Fixed):
+            return fixed(v, lang, v.decimals)
+        if isinstance(v, float):
+            return num(v, lang)
+        return str(v)
+    return {lang: word(key, lang, **{k: cell(v, lang) for k, v in fields.items()}) for lang in LANGS}
 
 
 class _Fields(dict):
