@@ -303,6 +303,35 @@ WORDS: dict[str, tuple[str, str]] = {
     "keys skipped": (", пропущено {k}", ", {k} skipped"),
     "variant note": ("варіант {v}: {note}", "variant {v}: {note}"),
     "rows in": ("{n} рядків за {t} с → {path}", "{n} rows in {t} s → {path}"),
+    # answer keys
+    "key title": ("Ключ відповідей, варіант {variant}", "Answer key, variant {variant}"),
+    "key heading": ("Ключ відповідей — варіант {variant}", "Answer key — variant {variant}"),
+    "student cap": ("Студент", "Student"),
+    "variant data": ("Дані варіанта", "Variant data"),
+    "unit": ("одиниця", "unit"),
+    "key output": ("вихідна ланка {name}, положення 0 при φ = {phi}°", "output {name}, position 0 at φ = {phi}°"),
+    "key tolerance": ("Допуск ±{tol} %{special}; де |точне| менше за {zero} % від найбільшого значення величини "
+                      "за оберт — у межах ±допуску від цього значення. Швидкості та прискорення точок — модулі; "
+                      "ω, ε + проти годинникової стрілки; an, at, ak, ar: нормальне, дотичне, коріолісове, "
+                      "відносне; s, v, a: вихідна ланка вздовж напрямної від положення 0.",
+                      "Tolerance ±{tol} %{special}; where |exact| is below {zero} % of the quantity's largest "
+                      "value over the turn, within ±tolerance of that value. Velocities and accelerations of "
+                      "points are magnitudes; ω, ε + counter-clockwise; an, at, ak, ar: normal, tangential, "
+                      "Coriolis, relative; s, v, a: the output along its guide from position 0."),
+    "key velocities": ("{n}. Швидкості в положеннях 0–{last}", "{n}. Velocities at positions 0–{last}"),
+    "key acceleration": ("{n}. Прискорення в положенні {where}", "{n}. Accelerations at position {where}"),
+    "key accelerations": ("{n}. Прискорення в положеннях {where}", "{n}. Accelerations at positions {where}"),
+    "key diagrams": ("{n}. Діаграми {name} методом хорд, поділок: {k}", "{n}. Diagrams of {name} by chords, {k} divisions"),
+    "key diagrams note": ("s і a на поділках k, v посередині хорд k + {half}",
+                          "s and a at the divisions k, v at the chord midpoints k + {half}"),
+    "key curves": ("{n}. Точні s, v, a ланки {name} за один оберт від положення 0",
+                   "{n}. The exact s, v, a of {name} over one turn from position 0"),
+    "summary note": ("φ_0: кут кривошипа в положенні 0; H, K calc: хід (розмах) вихідної ланки та коефіцієнт "
+                     "зміни середньої швидкості; |v|_max, |a|_max: найбільші за оберт; стовпці від «пол. a»: "
+                     "у першому положенні плану прискорень.",
+                     "φ_0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
+                     "coefficient; |v|_max, |a|_max: the output's largest over the turn; the columns from pos. a on: "
+                     "at the first acceleration-plan position."),
     # grading notes and the report
     "grade no key": ("немає ключа для варіанта {variant} (ключі: {known})", "no key for variant {variant} (keys: {known})"),
     "grade not a number": ("положення {text} не є числом", "position {text} is not a number"),
