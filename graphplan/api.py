@@ -101,7 +101,7 @@ class Study(View):
 
         from graphplan.report.analysis import analyze_table
         phi = np.asarray(self._angles())
-        return analyze_table(self.value, phi, list(range(len(phi))))
+        return analyze_table(self.value, phi, list(range(len(phi))), self.lang)
 
     def svg(self) -> str:
         return plans(self, precision=0.0).svg()
@@ -214,7 +214,7 @@ class ForcePart(View):
 
     def svg(self) -> str:
         from graphplan.drawing.forces import drawing, lever_record
-        return _page(lever_record(self.value) if self.part == "lever" else drawing(self.value))
+        return _page(lever_record(self.value, self.lang) if self.part == "lever" else drawing(self.value, self.lang))
 
 
 class Forces(View):
@@ -236,7 +236,7 @@ class Forces(View):
 
     def table(self) -> str:
         from graphplan.report.forces import forces_table
-        return forces_table(self.value)
+        return forces_table(self.value, self.lang)
 
     def svg(self) -> str:
         return self.plans.svg()

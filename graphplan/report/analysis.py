@@ -55,6 +55,9 @@ def float_c(z: complex) -> complex:
     return complex(float(np.real(z)), float(np.imag(z)))
 
 
+DERIVED = {"theta_deg": "θ, °"}   # derived parameters written as the lab writes them
+
+
 def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str = "uk") -> str:
     """Readable tables: velocities and accelerations of the points, ω and ε, the slides; in ``lang``."""
     mech = st.mech
@@ -70,7 +73,7 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str 
     for d in s.dyads:
         lines.append(w("dyad line", label=d.label, kind=pair_kind(d.kind, lang), a=d.a, b=d.b))
     for key, value in mech.derived.items():
-        lines.append(w("derived", key=key, value=num(value, lang, 5)))
+        lines.append(w("derived", key=DERIVED.get(key, key), value=num(value, lang, 5)))
     ex = ", ".join(f"{fixed(e, lang, 3)}°" for e in st.extremes) or w("turns fully")
     lines.append(w("output line", name=st.output.name, ex=ex, phi0=fixed(st.phi0, lang, 3)))
     moving = [p for p in mech.point_names() if p not in mech.frame]

@@ -119,8 +119,8 @@ def _paragraph(rec: Record, x: float, y: float, text: str, size: float, width: f
     return y - 0.5
 
 
-def _value_text(key: dict[str, Any], value: Any) -> str:
-    return cell(value, as_given=True)
+def _value_text(key: dict[str, Any], value: Any, lang: str = "en") -> str:
+    return cell(value, as_given=True, lang=lang)
 
 
 # -- the key sheet -------------------------------------------------------------------------------
@@ -165,7 +165,7 @@ def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
         y = _paragraph(rec, x0, y, f"{w('student cap')}: {escape(key['student'])}", MEDIUM, room)
     quantities = key["quantities"]
     if key["overrides"]:
-        data = ", ".join(f"{escape(k)} = {_value_text(key, v)}" for k, v in key["overrides"].items())
+        data = ", ".join(f"{escape(k)} = {_value_text(key, v, lang)}" for k, v in key["overrides"].items())
         y = _paragraph(rec, x0, y, f"{w('variant data')}: {data}", SMALL, room)
     w1 = key["omega1"]
     out = key["output"]["name"]
@@ -402,7 +402,7 @@ def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: floa
     for k in range(n + 1):
         if n <= 24 or k % 2 == 0:
             rec.label((X(k * 360.0 / n), y_axis - SMALL - 1.0), str(k), size=SMALL, anchor="middle")
-    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), "k: divisions; ordinates of the key marked",
+    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), word("key axis note", lang),
               size=SMALL, anchor="end")
 
 

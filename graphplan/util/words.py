@@ -345,7 +345,8 @@ WORDS: dict[str, tuple[str, str]] = {
                           "s and a at the divisions k, v at the chord midpoints k + {half}"),
     "key curves": ("{n}. Точні s, v, a ланки {name} за один оберт від положення 0",
                    "{n}. The exact s, v, a of {name} over one turn from position 0"),
-    "summary note": ("φ_0: кут кривошипа в положенні 0; H, K calc: хід (розмах) вихідної ланки та коефіцієнт "
+    "key axis note": ("k: поділки; ординати ключа позначено", "k: divisions; ordinates of the key marked"),
+    "summary note": ("φ_0: кут кривошипа в положенні 0; H, K розр.: хід (розмах) вихідної ланки та коефіцієнт "
                      "зміни середньої швидкості; |v|_max, |a|_max: найбільші за оберт; стовпці від «пол. a»: "
                      "у першому положенні плану прискорень.",
                      "φ_0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
