@@ -12,6 +12,7 @@ from graphplan.graphic.record import Record, text_width
 from graphplan.graphic.forceplans import ForcePlans, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
+from graphplan.util.markup import indexed
 from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
 
 Box = tuple[float, float, float, float]
@@ -218,7 +219,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                 rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
     lab = Labeler(rec)
     for z, name in names:
-        lab.place(z, name, 3.5, -1 - 1j, step)
+        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     for k, (about, t) in enumerate(arms, 1):
         mid = 0.5 * (about + t.foot)
         lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
@@ -315,7 +316,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         key = (round(z.real, 1), round(z.imag, 1))
         if abs(z) > 0.1 and key not in placed:
             placed.add(key)
-            lab.place(z, name.lower(), 3.5, _unit(z), step)
+            lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), 2.5, u, step)
     x0, y0, _, _ = rec.bounds()

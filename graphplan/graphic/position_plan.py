@@ -8,6 +8,7 @@ import math
 from dataclasses import dataclass, field
 
 
+from graphplan.util.markup import indexed
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study
 from graphplan.model.structure import Dyad
@@ -95,9 +96,7 @@ class Layout:
 def sub(name: str) -> str:
     """Plan notation: the mechanism point's lowercase letter, its number as a subscript (util.markup:
     S2 → s_2, A3 → a_3, B → b)."""
-    low = name.lower()
-    head = low.rstrip("0123456789")
-    return f"{head}_{low[len(head):]}" if head and head != low else low
+    return indexed(name.lower())
 
 
 class Scheme:

@@ -14,7 +14,7 @@ import numpy as np
 from graphplan.graphic.record import Record, text_width
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
-from graphplan.util.words import fixed, num, pair_kind, unit, word
+from graphplan.util.words import fixed, force_symbol, num, pair_kind, unit, word
 from graphplan.drawing.layout import Block, Placed, declutter, place
 from graphplan.exact.positions import Study
 from graphplan.report.plans import captioned
@@ -153,7 +153,8 @@ def _force_caption(name: str, lang: str) -> str:
     w = lambda key: word(key, lang)  # noqa: E731
     return {"group": f"{w('group')} {rest}", "polygon": f"{w('force plan of group')} {rest}",
             "table": f"{w('reactions of group')} {rest}", "lever": w("lever"), "results": w("balancing moment"),
-            "moment": w("balancing moment turn"), "hodograph": f"{w('hodograph')} {rest}"}.get(kind, name)
+            "moment": w("balancing moment turn"),
+            "hodograph": f"{w('hodograph')} {force_symbol(rest, lang)}"}.get(kind, name)
 
 
 def build_forces_sheet(st: Study, f: Form, args: Options) -> Sheet:

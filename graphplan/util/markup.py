@@ -82,6 +82,12 @@ def runs(text: str) -> list[Run]:
     return out
 
 
+def indexed(name: str) -> str:
+    """A point's name with its number as a subscript: S4 → S_4, O1 → O_1, s3 → s_3, B → B."""
+    head = name.rstrip("0123456789")
+    return f"{escape(head)}_{name[len(head):]}" if head and head != name else escape(name)
+
+
 def is_plain(text: str) -> bool:
     """No markup at all (the renderers' fast path)."""
     return not any(c in text for c in _SPECIAL)
