@@ -11,7 +11,7 @@ from functools import lru_cache
 
 from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering, plain_width,
                                       run_offsets, text_width)
-from graphplan.util.markup import is_plain
+from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -108,32 +108,72 @@ def _text(dwg, prim: Primitive, h: float):
     if is_plain(prim.text) and "→" not in prim.text:
         return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
                         font_family=FONT, text_anchor=anchor, fill="black")
-    # anchored at its start, by the estimated width: cairosvg (PDF, PNG) misplaces the <tspan>s of
-    # a centred or right-aligned text
-    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
-        text_width(prim.text, prim.size)
+    # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
+    # of a centred or right-aligned text
+    pieces, total = _set(prim.text, prim.size)
+    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
     el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(prim.size), font_family=FONT,
                   fill="black")
-    shift = 0.0      # the current baseline shift, mm up
-    x = 0.0          # where the pen is, by the estimate text_width also uses
-    for run, x0, size, up in run_offsets(prim.text, prim.size):
-        pieces = [p for p in re.split("(→)", run.text) if p]
-        for i, piece in enumerate(pieces):
-            kw = {}
-            if i == 0 and (up != shift or x0 != x):
-                if up != shift:
-                    kw["dy"] = [_f(shift - up)]
-                if x0 != x:
-                    kw["dx"] = [_f(x0 - x)]
-            if run.level:
-                kw["font_size"] = _f(size)
-            if piece == "→":
-                kw["font_family"] = ARROW_FONT
-            span = dwg.tspan(piece if piece == "→" else _svg_lettering(piece), **kw)
-            el.add(span)
-        shift = up
-        x = x0 + plain_width(run.text, size)
+    shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
+    for piece, small, x0, up, advance in pieces:
+        kw = {}
+        if up != shift:
+            kw["dy"] = [_f(shift - up)]
+        if abs(x0 - pen) > 1e-6:
+            kw["dx"] = [_f(x0 - pen)]
+        if small:
+            kw["font_size"] = _f(prim.size * SMALL)
+        if piece == "→":
+            kw["font_family"] = ARROW_FONT
+        el.add(dwg.tspan(piece if piece == "→" else _svg_lettering(piece), **kw))
+        shift, pen = up, x0 + advance
     return el
+
+
+@lru_cache(maxsize=4096)
+def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, float]], float]:
+    """The markup typeset: (piece, small, x, baseline shift, advance) per piece, x from the text's
+    start by the drawing font's advances (stacked scripts start together), and the whole width."""
+    out = []
+    pen = start = 0.0
+    for run in runs(text):
+        s = size * SMALL if run.level else size
+        x = start if run.stacked else pen
+        start = x
+        up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
+        for piece in (p for p in re.split("(→)", run.text) if p):
+            adv = _advance(piece, round(s, 6))
+            out.append((piece, bool(run.level), x, up, adv))
+            x += adv
+        pen = max(pen, x)
+    return out, pen
+
+
+@lru_cache(maxsize=8192)
+def _advance(piece: str, size: float) -> float:
+    """How far the pen moves over ``piece`` at letter height ``size`` (mm) in the font that draws
+    it (osifont, DejaVu Sans for the arrow): the glyphs' ink to their right edge plus any trailing
+    spaces; the estimate of graphic.record where matplotlib is absent."""
+    try:
+        from matplotlib.font_manager import FontProperties
+        from matplotlib.textpath import TextPath
+    except ImportError:
+        return plain_width(piece, size)
+    prop = FontProperties(family="DejaVu Sans") if piece == "→" else _font()
+    body = lettering(piece).rstrip(" ")
+    trailing = len(lettering(piece)) - len(body)
+    if body.strip():
+        ext = TextPath((0, 0), body + "|", size=size, prop=prop).get_extents()
+        bar = TextPath((0, 0), "|", size=size, prop=prop).get_extents()
+        width = ext.x0 + ext.width - (bar.x0 + bar.width)      # the advance, up to the next glyph
+    else:
+        width = 0.0
+        trailing = len(lettering(piece))
+    if trailing:
+        one = TextPath((0, 0), "| |", size=size, prop=prop).get_extents().width - \
+            TextPath((0, 0), "||", size=size, prop=prop).get_extents().width
+        width += trailing * one
+    return float(width)
 
 
 def _svg_lettering(text: str) -> str:
