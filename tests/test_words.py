@@ -254,6 +254,13 @@ def test_ukrainian_output_of_every_command(capsys, tmp_path, scene, command):
                 and not set(CYRILLIC.findall(ln)) <= scene_names(path)]
 
 
+def test_sheet_reports_in_its_language(capsys, tmp_path):
+    path = ROOT / "examples" / "four_bar.toml"
+    code, out, err = run(capsys, "sheet", path, "-o", tmp_path / "s.svg", "--format", "A2")
+    assert code == 0 and "мм" in err and "блоків" in err
+    assert_ukrainian(err.replace(str(tmp_path), ""), scene_names(path), "sheet")
+
+
 def test_ukrainian_key_and_check(capsys, tmp_path):
     table = ROOT / "examples" / "crank_slider_variants.csv"
     names = set(LATIN_WORD.findall(table.read_text(encoding="utf-8"))) | {"csv", "variants"}   # its columns

@@ -42,5 +42,7 @@ def cmd_sheet(args: argparse.Namespace) -> int:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
     sheet = build(st, f, args)
     path = sheet.write(args.output, args.text_as_paths)
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
+    from graphplan.util.words import unit, word
+    print(word("sheet written", args.lang, path=path, form=f.name, size=f"{f.width:g}×{f.height:g} {unit('mm', args.lang)}",
+               n=len(sheet.placed)), file=sys.stderr)
     return 0

@@ -162,6 +162,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "precision": ("Точність креслення", "Drafting precision"),
     "max error": ("Найбільша похибка планів швидкостей (вектори від 20 мм)",
                   "Largest error of the velocity plans (vectors from 20 mm)"),
+    "sheet written": ("{path} ({form} {size}, блоків: {n})", "{path} ({form} {size}, {n} blocks)"),
     "kinematics subtitle": ("Кінематичний аналіз", "Kinematic analysis"),
     "forces subtitle": ("Силовий аналіз", "Force analysis"),
     "group": ("Група", "Group"),
