@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 
+import re
+
 import numpy as np
 import pytest
 
@@ -50,6 +52,9 @@ def test_slotted_link_near_its_pivot_is_warned_with_the_rate():
     st = scene_study(bench._scene_slotted(1.01))
     text = " ".join(st.warnings)
     assert "passes within" in text and "rad/s" in text
+    uk = " ".join(st.says("uk"))
+    assert "проходить на відстані" in uk and "рад/с" in uk and "група II(2-3) ВПВ" in uk
+    assert not re.search(r"[A-Za-z]{3,}|\d\.\d", uk)
     w = np.max(np.abs(st.solve(np.linspace(0, 360, 3601)).bodies["PQ"].omega))
     assert w > 50 * abs(st.mech.omega1)        # it really does turn violently there
 

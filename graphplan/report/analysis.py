@@ -105,5 +105,5 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str 
               ["s", "v", "a", "a_k"],
               [[sl.t[k] - st.t0[key], sl.v[k], sl.a[k], sl.coriolis_magnitude[k]] for k in range(count)])
     if st.warnings:
-        lines += ["", w("warnings") + ":"] + [f"  {wn}" for wn in st.warnings]
+        lines += ["", w("warnings") + ":"] + [f"  {wn}" for wn in st.says(lang)]
     return "\n".join(lines) + "\n"

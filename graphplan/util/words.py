@@ -249,7 +249,16 @@ WORDS: dict[str, tuple[str, str]] = {
     "velocity plan lower": ("план швидкостей", "velocity plan"),
     "acceleration plan lower": ("план прискорень", "acceleration plan"),
     "position plan lower": ("план положень", "position plan"),
-    # analyze (terminal)
+    # analyze (terminal), the study's warnings
+    "dyad title": ("група {label} {kind} (ланки {a}, {b})", "dyad {label} {kind} (links {a}, {b})"),
+    "warn near locking": ("{dyad}: напрямні лінії перетинаються лише під кутом {angle}° біля кута кривошипа "
+                          "{phi}° (майже заклинювання; плани там погано обумовлені)",
+                          "{dyad}: its direction lines cross at only {angle}° near crank angle {phi}° "
+                          "(close to locking; plans there are ill-conditioned)"),
+    "warn block near pivot": ("{dyad}: повзун {block} проходить на відстані {mm} мм від опори {pivot} біля "
+                              "кута кривошипа {phi}°; ω куліси сягає {w} рад/с",
+                              "{dyad}: the block {block} passes within {mm} mm of the pivot {pivot} near "
+                              "crank angle {phi}°; the slotted link's ω reaches {w} rad/s"),
     "ccw": ("проти годинникової стрілки", "counter-clockwise"),
     "cw": ("за годинниковою стрілкою", "clockwise"),
     "dyad line": ("  {label}: {kind}, ланки {a} і {b}", "  {label}: {kind}, links {a} and {b}"),
@@ -417,6 +426,8 @@ def said(key: str, /, **fields: object) -> dict[str, str]:
     """The catalogue's text in every language at once (for a message stored before anyone knows who
     reads it): floats through ``num`` (``Fixed`` through ``fixed``), in each language's writing."""
     def cell(v: object, lang: str) -> str:
+        if callable(v):                       # a name that depends on the language
+            return str(v(lang))
         if isinstance(v, Fixed):
             return fixed(v, lang, v.decimals)
         if isinstance(v, float):
