@@ -14,7 +14,7 @@ import numpy as np
 from graphplan.graphic.record import Record, text_width
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
-from graphplan.util.words import fixed, force_symbol, num, pair_kind, unit, word
+from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
 from graphplan.drawing.layout import Block, Placed, declutter, place
 from graphplan.exact.positions import Study
 from graphplan.report.plans import captioned
@@ -76,7 +76,7 @@ def velocity_table(doc: dict, lang: str) -> Record:
         errs = [abs(e["error_pct"]) for e in pos["velocity"].values() if e.get("error_pct") is not None]
         rows.append([str(pos["index"]), fixed(pos['phi_deg'], lang, 1)]
                     + [fmt(pos["velocity"].get(k, {}).get("value"), lang) for k in keys]
-                    + [fmt(max(errs) if errs else None, lang, 2)])
+                    + [fixed(max(errs) if errs else None, lang, 2)])
     widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
     return table(rows, widths, row_h=6.0, size=2.5, title=word("velocity table", lang))
 
@@ -87,7 +87,7 @@ def acceleration_table(doc: dict, pos: dict, lang: str) -> Record:
              word("error pct", lang)]]
     for key, e in list(pos.get("acceleration", {}).items()):
         rows.append([_symbol(key, "a"), fmt(e.get("mm"), lang), fmt(e.get("value"), lang),
-                     fmt(e.get("analytic"), lang), fmt(e.get("error_pct"), lang, 2)])
+                     fmt(e.get("analytic"), lang), pct(e.get("error_pct"), lang).replace("-", "−")])
     return table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
                  title=f"{word('acceleration table', lang)} {pos['index']}")
 
