@@ -97,7 +97,9 @@ def _elements(dwg, prim: Primitive, h: float):
         yield _text(dwg, prim, h)
 
 
-ARROW_FONT = "'DejaVu Sans', sans-serif"   # osifont has no →: the arrow alone in a font that has it
+ARROW_FONT = "'DejaVu Sans', sans-serif"   # osifont has no → ⊥ ∥ ′ ″ …: those alone in a font that has them
+MISSING = "→⊥∥′″…"
+_MISSING = re.compile(f"([{MISSING}])")
 
 
 def _text(dwg, prim: Primitive, h: float):
@@ -105,7 +107,7 @@ def _text(dwg, prim: Primitive, h: float):
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
     anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-    if is_plain(prim.text) and "→" not in prim.text:
+    if is_plain(prim.text) and not _MISSING.search(prim.text):
         return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
                         font_family=FONT, text_anchor=anchor, fill="black")
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
@@ -123,9 +125,9 @@ def _text(dwg, prim: Primitive, h: float):
             kw["dx"] = [_f(x0 - pen)]
         if small:
             kw["font_size"] = _f(prim.size * SMALL)
-        if piece == "→":
+        if piece in MISSING:
             kw["font_family"] = ARROW_FONT
-        el.add(dwg.tspan(piece if piece == "→" else _svg_lettering(piece), **kw))
+        el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
         shift, pen = up, x0 + advance
     return el
 
@@ -141,7 +143,7 @@ def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, fl
         x = start if run.stacked else pen
         start = x
         up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
-        for piece in (p for p in re.split("(→)", run.text) if p):
+        for piece in (p for p in _MISSING.split(run.text) if p):
             adv = _advance(piece, round(s, 6))
             out.append((piece, bool(run.level), x, up, adv))
             x += adv
@@ -159,7 +161,7 @@ def _advance(piece: str, size: float) -> float:
         from matplotlib.textpath import TextPath
     except ImportError:
         return plain_width(piece, size)
-    prop = FontProperties(family="DejaVu Sans") if piece == "→" else _font()
+    prop = FontProperties(family="DejaVu Sans") if piece in MISSING else _font()
     body = lettering(piece).rstrip(" ")
     trailing = len(lettering(piece)) - len(body)
     if body.strip():
