@@ -3,14 +3,13 @@ seed 002's figure 2.7: axes, division ordinates, chords, poles P with H1 and H2,
 chords, projection lines to the middles of the intervals, the French curves, labels and scales."""
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from graphplan.graphic.chords import periodic_spline
-from graphplan.graphic.record import Record, text_width
-from graphplan.util.words import fixed, num, unit, word
+from graphplan.graphic.record import Record
+from graphplan.util.words import num, unit, word
 
 if TYPE_CHECKING:
     from graphplan.graphic.diagrams import Diagrams
@@ -41,21 +40,6 @@ def scale_lines(d: Diagrams, lang: str) -> list[str]:
 def fmt(v: float, lang: str = "en", digits: int = 4) -> str:
     """A scale or value as a draftsman writes it (util.words.num)."""
     return num(v, lang, digits)
-
-
-def rich(rec: Record, at: tuple[float, float], parts: list[tuple[str, bool]], size: float = TEXT,
-         anchor: str = "start", step: str = "") -> None:
-    """Text with subscripts: ``parts`` = [(text, is_subscript), …]; subscripts 0.7 high, 0.3 lower."""
-    sizes = [size * 0.7 if sub else size for _, sub in parts]
-    width = lambda t, s, sub: 0.62 * s * len(t) + 0.4 if sub else text_width(t, s)  # noqa: E731
-    total = sum(width(t, s, sub) for (t, sub), s in zip(parts, sizes))
-    x = at[0] - {"start": 0.0, "middle": total / 2, "end": total}[anchor]
-    for (text, sub), s in zip(parts, sizes):
-        body = text.lstrip(" ")
-        x += text_width(text[:len(text) - len(body)], s)  # SVG drops leading spaces: move instead
-        if body:
-            rec.label((x, at[1] - (0.3 * size if sub else 0.0)), body, size=s, layer=LAYER, step=step)
-        x += width(body, s, sub)
 
 
 def _extent(*arrays) -> tuple[float, float]:
@@ -101,9 +85,8 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     rec.add("polyline", list(zip(fine, y_s + s_curve)), role="curve", layer=LAYER, step=f"{s_sym}(t)")
     _numbers(rec, d, y_s + s_lo - 4.5)
     rec.label((left, y_s + s_hi), letters[0], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_s + s_hi, [
-        [("μ", False), (s_sym, True), (f" = {fmt(d.mu_s, lang)} {us}/{mm}", False)],
-        [("μ", False), ("t", True), (f" = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}", False)]])
+    _caption(rec, L, y_s + s_hi, [f"μ_{s_sym} = {fmt(d.mu_s, lang)} {us}/{mm}",
+                                  f"μ_t = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}"])
 
     # -- v(t): pole P at H1, rays ∥ the chords of s, heights carried to the middles ------------------
     _pole_diagram(rec, d, y_v, v_lo, v_hi, d.H1, r.v_ray, r.v, xm, v_curve, fine, v_sym, "1",
@@ -112,18 +95,14 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
         rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
                     step=f"chord {k}–{k + 1} of {v_sym}(t)")
     rec.label((left, y_v + v_hi), letters[1], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_v + v_hi, [
-        [("μ", False), (v_sym, True), (f" = {fmt(d.mu_v, lang)} ({uv})/{mm}", False)],
-        [("H", False), ("1", True), (f" = {fmt(d.H1, lang)} {mm}", False)]])
+    _caption(rec, L, y_v + v_hi, [f"μ_{v_sym} = {fmt(d.mu_v, lang)} ({uv})/{mm}", f"H_1 = {fmt(d.H1, lang)} {mm}"])
 
     # -- a(t): pole P at H2, rays ∥ the chords of v ------------------------------------------------
     _pole_diagram(rec, d, y_a, a_lo, a_hi, d.H2, r.a_ray, r.a, xm, a_curve, fine, a_sym, "2",
                   source=v_sym)
     _numbers(rec, d, y_a + a_lo - 8.0 - 4.0)
     rec.label((left, y_a + a_hi), letters[2], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_a + a_hi, [
-        [("μ", False), (a_sym, True), (f" = {fmt(d.mu_a, lang)} ({ua})/{mm}", False)],
-        [("H", False), ("2", True), (f" = {fmt(d.H2, lang)} {mm}", False)]])
+    _caption(rec, L, y_a + a_hi, [f"μ_{a_sym} = {fmt(d.mu_a, lang)} ({ua})/{mm}", f"H_2 = {fmt(d.H2, lang)} {mm}"])
     return rec
 
 
@@ -134,7 +113,8 @@ def _axes(rec: Record, y0: float, lo: float, hi: float, x_from: float, L: float,
                layer=LAYER, step=f"axes of {step}")
     rec.vector((x_from, y0), (L + 10.0, y0), role="construction", width=AXIS_W, layer=LAYER,
                step=f"axes of {step}")
-    rich(rec, (1.8, y0 + hi + TOP - 3.0), [(sym, False), (sub, True)], step=f"axes of {step}")
+    rec.label((1.8, y0 + hi + TOP - 3.0), f"{sym}_{{{sub}}}" if sub else sym, size=TEXT, layer=LAYER,
+              step=f"axes of {step}")
     rec.label((L + 11.5, y0 - 1.2), "t", size=TEXT, layer=LAYER, step=f"axes of {step}")
 
 
@@ -182,13 +162,13 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
     rec.segment((-H, y0), (-H, yd - 1.5), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
-    rich(rec, (-H / 2, yd - 4.5), [("H", False), (index, True)], anchor="middle", step=f"H{index}")
+    rec.label((-H / 2, yd - 4.5), f"H_{index}", size=TEXT, anchor="middle", layer=LAYER, step=f"H{index}")
 
 
-def _caption(rec: Record, L: float, y: float, lines: list[list[tuple[str, bool]]]) -> None:
+def _caption(rec: Record, L: float, y: float, lines: list[str]) -> None:
     """Scale captions to the right of a diagram."""
-    for i, parts in enumerate(lines):
-        rich(rec, (L + 18.0, y - 1.0 - 5.5 * i), parts, step="scales")
+    for i, line in enumerate(lines):
+        rec.label((L + 18.0, y - 1.0 - 5.5 * i), line, size=TEXT, layer=LAYER, step="scales")
 
 
 def diagrams_svg(d: Diagrams, lang: str | None = None) -> str:

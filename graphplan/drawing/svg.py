@@ -10,7 +10,7 @@ import re
 from functools import lru_cache
 
 from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering, plain_width,
-                                      run_offsets, text_width)
+                                      run_offsets)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"

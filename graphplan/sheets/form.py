@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from graphplan.graphic.record import THICK, THIN, Record, text_width
-from graphplan.util.words import word
+from graphplan.util.words import word as _word
 
 FORMATS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4": (210.0, 297.0)}
 LEFT, MARGIN = 20.0, 5.0           # the frame: 20 mm from the left edge, 5 mm from the others
@@ -71,7 +71,7 @@ def wrap(text: str, width: float, size: float) -> list[str]:
 def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     """Title block form 1 (185×55 mm) in the frame's bottom-right corner, filled from ``fields``:
     designation, title, student, teacher, organisation, scale, sheet, sheets, letter, mass."""
-    cap = {k: word("tb " + k.replace("_", " "), lang) for k in (
+    cap = {k: _word("tb " + k.replace("_", " "), lang) for k in (
         "rev", "sheet", "doc", "sign", "date", "drawn", "checked", "tech", "norm", "approved", "letter", "mass",
         "scale", "sheet_no", "sheets")}
     rec = Record("title block")
@@ -119,7 +119,7 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     _text(rec, X(176), Y(36.2), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)))
     _text(rec, X(137), Y(16.2), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start")
     _text(rec, X(157), Y(16.2), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start")
-    _text(rec, X(142.5), Y(26), fields.get("letter", word("tb study letter", lang)), size=3.5)
+    _text(rec, X(142.5), Y(26), fields.get("letter", _word("tb study letter", lang)), size=3.5)
     _text(rec, X(158.5), Y(26), fields.get("mass", ""), size=3.5)
     scale = fields.get("scale", "")
     _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5)))

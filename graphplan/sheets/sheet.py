@@ -3,7 +3,6 @@ acceleration plans, the s–v–a diagrams and the tables, laid out so nothing o
 The output's suffix picks SVG, PDF, PNG or DXF; every format views the same construction record."""
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path

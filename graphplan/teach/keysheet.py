@@ -361,7 +361,7 @@ def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: floa
             lang: str = "uk") -> None:
     """The exact s, v, a of the output over one turn from position 0, with the key's ordinates
     marked (s and a at the divisions, v at the chord midpoints) and the divisions ruled."""
-    curves, quantities, n = key["curves"], key["quantities"], key["divisions"]
+    curves, n = key["curves"], key["divisions"]
     turn = curves["turn_deg"]
     f_ = lambda v: _fmt(v, lang)  # noqa: E731
     y = _heading(rec, x0, top, word("key curves", lang, n=_section_count(key) + 1, name=key['output']['name']))
