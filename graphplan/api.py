@@ -101,7 +101,7 @@ class Study(View):
 
         from graphplan.report.analysis import analyze_table
         phi = np.asarray(self._angles())
-        return analyze_table(self.value, phi, list(range(len(phi))))
+        return analyze_table(self.value, phi, list(range(len(phi))), self.lang)
 
     def svg(self) -> str:
         return plans(self, precision=0.0).svg()
@@ -128,17 +128,20 @@ class Plan(View):
     def table(self) -> str:
         doc = self.to_json()
         entries = doc["velocity" if self.kind == "velocity" else "acceleration"]
-        lines = [f"{self.kind} plan at φ = {doc['phi_deg']:.2f}°"]
+        from graphplan.util.words import fixed, num, pct, unit, word
+        lang = self.lang
+        lines = [f"{word(self.kind + ' plan', lang)}, φ = {fixed(doc['phi_deg'], lang, 2)}°"]
         for key, e in entries.items():
-            err = "—" if e.get("error_pct") is None else f"{e['error_pct']:+.2f} %"
-            mm = f"{e['mm']:8.1f} mm" if "mm" in e else " " * 11
-            lines.append(f"  {key:<14}{mm}  {e['value']:12.5g}  {e['analytic']:12.5g}  {err}")
+            err = "—" if e.get("error_pct") is None else f"{pct(e['error_pct'], lang)} %"
+            mm = f"{fixed(e['mm'], lang, 1):>8} {unit('mm', lang)}" if "mm" in e else " " * 11
+            lines.append(f"  {key:<14}{mm}  {num(e['value'], lang, 5):>12}  {num(e['analytic'], lang, 5):>12}  {err}")
         return "\n".join(lines) + "\n"
 
     def svg(self) -> str:
         from graphplan.drawing.plans import labelled
         rec = labelled(self.plan)
-        rec.title = f"{self.kind} plan, φ = {self.value.phi:.1f}°"
+        from graphplan.util.words import fixed, word
+        rec.title = f"{word(self.kind + ' plan', self.lang)}, φ = {fixed(self.value.phi, self.lang, 1)}°"
         return _page(rec)
 
 
@@ -214,7 +217,7 @@ class ForcePart(View):
 
     def svg(self) -> str:
         from graphplan.drawing.forces import drawing, lever_record
-        return _page(lever_record(self.value) if self.part == "lever" else drawing(self.value))
+        return _page(lever_record(self.value, self.lang) if self.part == "lever" else drawing(self.value, self.lang))
 
 
 class Forces(View):
@@ -236,7 +239,7 @@ class Forces(View):
 
     def table(self) -> str:
         from graphplan.report.forces import forces_table
-        return forces_table(self.value)
+        return forces_table(self.value, self.lang)
 
     def svg(self) -> str:
         return self.plans.svg()

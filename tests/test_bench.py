@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 
+import re
+
 import numpy as np
 import pytest
 
@@ -50,6 +52,9 @@ def test_slotted_link_near_its_pivot_is_warned_with_the_rate():
     st = scene_study(bench._scene_slotted(1.01))
     text = " ".join(st.warnings)
     assert "passes within" in text and "rad/s" in text
+    uk = " ".join(st.says("uk"))
+    assert "проходить на відстані" in uk and "рад/с" in uk and "група II(2-3) ВПВ" in uk
+    assert not re.search(r"[A-Za-z]{3,}|\d\.\d", uk)
     w = np.max(np.abs(st.solve(np.linspace(0, 360, 3601)).bodies["PQ"].omega))
     assert w > 50 * abs(st.mech.omega1)        # it really does turn violently there
 
@@ -85,10 +90,29 @@ def test_run_writes_rows_and_charts(tmp_path, monkeypatch):
     assert all(0.01 < r["max_error_pct"] < 5 for r in ruler)
 
 
+# names in a bench row: scenes, libraries and their calls, the sheet's format
+BENCH_NAMES = {"crank", "slider", "four", "bar", "shaper", "slotter", "SVG", "graphplan", "pylinkage", "mechanism",
+               "Linkage", "Linkag", "Mechanism", "Mechan", "Study", "solve", "solv", "step", "fast", "iterate", "fsolve"}
+
+
+def test_summary_speaks_the_language(stability_rows):
+    import re
+    uk = bench.summary(stability_rows, "uk")
+    assert "стійкість" in uk and "відмова" in uk and "гаразд" in uk
+    assert not set(re.findall(r"[A-Za-z]{3,}", uk)) - BENCH_NAMES
+    assert not re.search(r"\d\.\d", uk)
+    en = bench.summary(stability_rows, "en")
+    assert "stability" in en and "refused" in en and not re.search(r"[А-Яа-яіїє]", en)
+
+
 @pytest.mark.slow
 def test_bench_quick_whole(tmp_path):
+    import re
     rows = bench.run(tmp_path, quick=True, show_progress=False)
     assert {r["section"] for r in rows} >= {"speed", "chords", "plans", "stability", "sheet", "external"}
+    uk = bench.summary(rows, "uk")
+    ours = "\n".join(ln for ln in uk.splitlines() if "failed:" not in ln and "not compared:" not in ln)
+    assert not set(re.findall(r"[A-Za-z]{3,}", ours)) - BENCH_NAMES    # a library's own error stays as it said it
 
 
 def test_bench_refuses_outside_a_checkout(monkeypatch, tmp_path):

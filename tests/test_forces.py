@@ -294,17 +294,19 @@ def test_forces_exact_and_phi_option(capsys):
 def test_forces_table_and_files(capsys, tmp_path):
     path = str(ROOT / "examples" / "slotter.toml")
     code, out, err = run(capsys, "forces", path, "--svg", str(tmp_path / "svg"),
-                         "--charts", str(tmp_path / "charts"))
+                         "--charts", str(tmp_path / "charts"), "--lang", "en")
     assert code == 0 and err == ""
     assert "Group II(4-5) RRP" in out and "Zhukovsky lever" in out and "power balance" in out
-    assert "drawn, mm" in out and "R03" in out
+    assert "drawn, mm" in out and "R₀₃" in out
+    code, uk, err = run(capsys, "forces", path)
+    assert "Група II(4-5) ВВП" in uk and "Важіль Жуковського" in uk and "M_зр" in uk
     import svgelements
     for name in ("forces.svg", "lever.svg"):
         doc = svgelements.SVG.parse(str(tmp_path / "svg" / name))
         assert len(list(doc.elements())) > 50
     first = {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in (tmp_path / "charts").iterdir()}
     assert set(first) == {"balancing_moment.png", "balancing_moment.svg", "hodographs.png", "hodographs.svg"}
-    run(capsys, "forces", path, "--charts", str(tmp_path / "charts"))
+    run(capsys, "forces", path, "--charts", str(tmp_path / "charts"), "--lang", "en")
     again = {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in (tmp_path / "charts").iterdir()}
     assert again == first
 
@@ -360,4 +362,4 @@ def test_drawings_of_every_dyad_kind(kind):
         assert set(g.reactions) <= drawn                 # every reaction is a side of its polygon
     page, w, h = svg.page_for(forcedraw.drawing(fp))
     text = svg.render(page, w, h)
-    assert text.count("<line") > 20 and "R01" in text
+    assert text.count("<line") > 20 and ">R</tspan><tspan" in text and ">01</tspan>" in text   # R₀₁

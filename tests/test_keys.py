@@ -156,7 +156,7 @@ def test_key_writes_every_file_skips_the_impossible_one_and_is_byte_identical(ca
     assert code == 0
     lines = err.strip().splitlines()
     assert len(lines) == 1 and "variant 03" in lines[0] and "skipped" in lines[0] and "II(2-3)" in lines[0]
-    assert "03" in out and "skipped" in out
+    assert "03" in out and "пропущено" in out
     for v in ("01", "02"):
         for f in ("key.json", "key.csv", "key.svg", "key.pdf"):
             assert (tmp_path / "k1" / v / f).stat().st_size > 0
@@ -180,7 +180,7 @@ def test_key_sheet_is_a4_in_mm(tmp_path, capsys):
     run(capsys, "key", table(tmp_path, SMALL), "-o", tmp_path / "k", "--no-pdf", "--quiet")
     svg = (tmp_path / "k" / "01" / "key.svg").read_text()
     assert 'width="210mm"' in svg and 'height="297mm"' in svg and 'viewBox="0 0 210 297"' in svg
-    assert "v_BA" in svg and "ε_AB" in svg and "11.09" in svg      # v_B at position 1, n = 2800 rpm
+    assert ">v</tspan>" in svg and ">BA</tspan>" in svg and ">ε</tspan>" in svg and "11,09" in svg  # v_B at 1
     assert not (tmp_path / "k" / "01" / "key.pdf").exists()
     landscape = (tmp_path / "k" / "summary.svg").read_text()
     assert 'width="297mm"' in landscape and "Bob" in landscape
@@ -333,9 +333,11 @@ def test_check_table_output(tmp_path, capsys):
     folder = _keys_for(tmp_path, capsys)
     student = tmp_path / "s.csv"
     student.write_text("variant,position,quantity,value\n01,1,v_B,7.2\n01,1,vA,18.76\n01,1,ω_AB,-53.2\n")
-    code, out, err = run(capsys, "check", folder / "01", student)
+    code, out, err = run(capsys, "check", folder / "01", student, "--lang", "en")
     assert code == 0 and err == ""
     assert "FAIL" in out and "fits position 5" in out and "3 rows: 2 passed, 1 failed" in out
+    code, out, err = run(capsys, "check", folder / "01", student)
+    assert "НЕ ЗАРАХ." in out and "відповідає положенню 5" in out and "3 рядків: зараховано 2" in out
 
 
 def test_quantities_cover_the_plans():

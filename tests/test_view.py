@@ -229,15 +229,16 @@ def cell(d, q: str, col: str) -> str:
     return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text
 
 
-def analyze_shown(phis: list[float], scene: Path = SHAPER) -> dict[float, dict[str, str]]:
-    """The values `graphplan analyze --phi` prints, as text, per angle: column name → cell."""
-    r = graphplan("analyze", str(scene), "--phi", *map(str, phis))
+def analyze_shown(phis: list[float], scene: Path = SHAPER, lang: str = "uk") -> dict[float, dict[str, str]]:
+    """The values `graphplan analyze --phi` prints, as text, per angle: column name → cell (in the
+    page's language: the decimal comma in Ukrainian)."""
+    r = graphplan("analyze", str(scene), "--phi", *map(str, phis), "--lang", lang)
     assert r.returncode == 0, r.stderr
     out: dict[float, dict[str, str]] = {phi: {} for phi in phis}
     header: list[str] = []
     for line in r.stdout.splitlines():
         cells = line.split()
-        if cells[:2] == ["No", "φ,"]:
+        if cells[:2] in (["No", "φ,"], ["№", "φ,"]):
             header = cells[3:]
         elif header and len(cells) == len(header) + 2 and cells[0].isdigit():
             out[phis[int(cells[0])]].update(zip(header, cells[2:]))

@@ -6,6 +6,7 @@ Every row has ``section``, ``method``, ``setting``, ``x`` (the swept quantity), 
 from __future__ import annotations
 
 import math
+import re
 import time
 from collections.abc import Callable, Iterator
 from importlib import resources
@@ -375,13 +376,37 @@ CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "
                                "flywheel": _chart_flywheel}
 
 
-def summary(rows: list[Row]) -> str:
-    """One line per row, for people."""
-    lines = [f"{'section':10} {'method':10} {'setting':58} {'time, s':>10} {'error, %':>10}  status"]
+SWEEP_WORDS = {"four_bar toward": "bench sweep four_bar", "crank_slider l/r": "bench sweep crank_slider",
+               "slotted link": "bench sweep slotted"}
+
+
+def _setting(r: Row, lang: str) -> str:
+    """A row's setting in ``lang``: the sweeps' titles from the catalogue, scenes by their file
+    names, "precision" and "mm" in the language, numbers with the language's decimal sign."""
+    from graphplan.util.words import num, unit, word
+    text = r["setting"]
+    for head, key in SWEEP_WORDS.items():
+        if text.startswith(head):
+            text = word(key, lang)
+    if lang != "en":
+        text = text.replace("precision=", word("bench precision", lang) + "=").replace(" mm", " " + unit("mm", lang))
+        text = re.sub(r"(?<=\d)\.(?=\d)", ",", text)
+        text = re.sub(r"\b(positions|velocities|accelerations)\b", lambda m: word(f"bench {m.group(1)}", lang), text)
+    if r["section"] == "stability":
+        text += f" x={num(r['x'], lang)}"
+    return text
+
+
+def summary(rows: list[Row], lang: str = "uk") -> str:
+    """One line per row, for people, in ``lang``."""
+    from graphplan.util.words import WORDS, num, word
+    say = lambda k_: word(f"bench {k_}", lang) if f"bench {k_}" in WORDS else k_  # noqa: E731
+    head = word("bench head", lang).split("|")
+    lines = [f"{head[0]:10} {head[1]:14} {head[2]:58} {head[3]:>10} {head[4]:>10}  {head[5]}"]
     for r in rows:
-        t = "" if r.get("time_s") is None else f"{r['time_s']:.3g}"
-        e = "" if r.get("max_error_pct") is None else f"{r['max_error_pct']:.3g}"
-        setting = r["setting"] + (f" x={r['x']:g}" if r["section"] == "stability" else "")
-        lines.append(f"{r['section']:10} {r['method'][:10]:10} {setting[:58]:58} {t:>10} {e:>10}  "
-                     f"{r.get('status') or r.get('note') or ''}")
+        t = "" if r.get("time_s") is None else num(r["time_s"], lang, 3)
+        e = "" if r.get("max_error_pct") is None else num(r["max_error_pct"], lang, 3)
+        status = r.get("status") or r.get("note") or ""
+        lines.append(f"{say(r['section']):10} {say(r['method'])[:14]:14} {_setting(r, lang)[:58]:58} {t:>10} "
+                     f"{e:>10}  {say(status)}")
     return "\n".join(lines)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphplan.cli.common import load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text
 
@@ -31,7 +31,7 @@ def cmd_analyze(args: argparse.Namespace) -> int:
     if args.json:
         sys.stdout.write(json_text(analyze_json(st, phi, indices)))
     else:
-        sys.stdout.write(analyze_table(st, phi, indices))
+        sys.stdout.write(analyze_table(st, phi, indices, lang_of(args, st)))
     return 0
 
 
@@ -43,4 +43,5 @@ def register(sub) -> None:
     p.add_argument("--phi", type=float, nargs="+", metavar="DEG",
                    help="crank angles instead of positions (deg from +x, counter-clockwise)")
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
+    lang_arg(p)
     p.set_defaults(handler=cmd_analyze)

@@ -6,14 +6,18 @@ import sys
 import time
 from pathlib import Path
 
+from graphplan.cli.common import lang_arg, lang_of
+
 
 def cmd_bench(args: argparse.Namespace) -> int:
     from graphplan.bench.run import run, summary
     out = Path(args.out)
     t0 = time.perf_counter()
     rows = run(out, args.quick)
-    sys.stdout.write(summary(rows) + f"\n{len(rows)} rows in {time.perf_counter() - t0:.1f} s → "
-                     f"{out / 'bench.json'}\n")
+    from graphplan.util.words import fixed, word
+    lang = lang_of(args)
+    sys.stdout.write(summary(rows, lang) + "\n" + word("rows in", lang, n=len(rows), t=fixed(time.perf_counter() - t0, lang),
+                                                       path=out / "bench.json") + "\n")
     return 0
 
 
@@ -23,4 +27,5 @@ def register(sub) -> None:
                                    "chord diagrams; sweeps toward the mechanisms' failures.")
     p.add_argument("-o", "--out", default="bench", metavar="DIR", help="output folder (default: bench)")
     p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
+    lang_arg(p)
     p.set_defaults(handler=cmd_bench)

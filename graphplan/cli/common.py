@@ -66,6 +66,21 @@ def scene_arg(p: argparse.ArgumentParser, optional: bool = False) -> None:
         p.add_argument("scene", help=help_)
 
 
+def lang_arg(p: argparse.ArgumentParser) -> None:
+    """--lang uk|en: one option and one default for every command (the scene's ``lang``, else
+    Ukrainian)."""
+    p.add_argument("--lang", choices=("uk", "en"), default=None,
+                   help="language of tables, captions and messages: uk or en (default: the scene's "
+                        "lang, else uk)")
+
+
+def lang_of(args: argparse.Namespace, st=None) -> str:
+    """The language a command speaks: --lang, else the scene's ``lang``, else Ukrainian."""
+    from graphplan.util.words import pick
+    scene = st.mech.task.meta.get("lang") if st is not None else None
+    return pick(getattr(args, "lang", None), scene)
+
+
 def load_study(path: str | None):
     """The scene read and studied (structure, position 0, extremes): what every command starts from."""
     from graphplan.exact.positions import study

@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphplan.cli.common import load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text, write_atomic
 
@@ -23,13 +23,14 @@ def cmd_diagrams(args) -> int:
     from graphplan.graphic.tangents import ANGLE_ERROR_DEG
     from graphplan.report.diagrams import diagrams_json, diagrams_table
     st = load_study(args.scene)
+    lang = lang_of(args, st)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
     d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
                        L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
                        H2=pick(args.h2, "H2_mm", 30.0),
                        precision=args.precision, adaptive=args.adaptive, height=args.height,
-                       tolerance=args.tolerance, chosen=args.at, lang=args.lang,
+                       tolerance=args.tolerance, chosen=args.at, lang=lang,
                        method=pick(args.method, "method", "chords"), angle_error_deg=ANGLE_ERROR_DEG if args.angle_error is None else args.angle_error,
                        correct=args.correct)
     if args.svg:
@@ -37,7 +38,7 @@ def cmd_diagrams(args) -> int:
     if args.json:
         sys.stdout.write(json_text(diagrams_json(d)))
     else:
-        sys.stdout.write(diagrams_table(d, args.lang))
+        sys.stdout.write(diagrams_table(d, lang))
     return 0
 
 
@@ -71,7 +72,7 @@ def register(sub) -> None:
                    help="chords: the lab's area correction of the v and a curves (off: the plain method)")
     p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
     p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
-    p.add_argument("--lang", choices=("uk", "en"), default="uk", help="captions and table language (uk)")
+    lang_arg(p)
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
     p.add_argument("--svg", metavar="FILE", help="write the three diagrams with their pole constructions")
     p.set_defaults(handler=cmd_diagrams)

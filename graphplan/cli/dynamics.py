@@ -8,6 +8,7 @@ import argparse
 import math
 import sys
 
+from graphplan.cli.common import lang_arg
 from graphplan.util.errors import GraphplanError
 
 
@@ -30,12 +31,12 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write the diagrams to DIR (moments, energy, inertia, "
                                                 "wittenbauer, speed .svg)")
-    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="tables and drawings: Ukrainian or English")
+    lang_arg(p)
     p.set_defaults(handler=cmd_dynamics)
 
 
 def cmd_dynamics(args: argparse.Namespace) -> int:
-    from graphplan.cli.common import dumps, load_study
+    from graphplan.cli.common import dumps, lang_arg, lang_of, load_study
     from graphplan.exact.dynamics import analyse, check_delta
     from graphplan.graphic.flywheel import construct
     from graphplan.report.dynamics import dynamics_json, dynamics_table
@@ -51,6 +52,7 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
     f = construct(dyn, args.divisions, args.precision)
+    args.lang = lang_of(args, st)
     if args.svg:
         write_svg(f, args.svg, args.lang)
     sys.stdout.write(dumps(dynamics_json(f)) if args.json else dynamics_table(f, args.lang))

@@ -7,6 +7,7 @@ import argparse
 import math
 import sys
 
+from graphplan.cli.common import lang_arg, lang_of
 from graphplan.util.errors import GraphplanError
 
 def register(sub) -> None:
@@ -24,6 +25,7 @@ def register(sub) -> None:
                    help="drafting precision of every drawn and measured length, mm (0 = exact; "
                         "default 0.5)")
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
+    lang_arg(p)
     p.add_argument("--svg", metavar="DIR", help="write DIR/forces.svg (groups, force plans, lever)")
     p.add_argument("--charts", metavar="DIR",
                    help="write the balancing moment over a turn and the reactions' hodographs to "
@@ -42,23 +44,25 @@ def cmd_forces(args: argparse.Namespace) -> int:
     if args.phi is not None and not math.isfinite(args.phi):
         raise GraphplanError(f"--phi must be a finite angle in degrees, got {args.phi}")
     st = _load(args.scene)
+    lang = lang_of(args, st)
     phi = at_scene_angle(st) if args.phi is None else args.phi % 360.0
     fp = construct(st, phi, args.precision)
     if args.svg:
-        write_svg(fp, args.svg)
+        write_svg(fp, args.svg, lang)
     if args.charts:
         from graphplan.drawing.charts import turn, write_charts
-        write_charts(turn(st), args.charts, st.mech.task.meta.get("title_en", st.mech.title))
-    sys.stdout.write(dumps(forces_json(fp)) if args.json else forces_table(fp))
+        write_charts(turn(st), args.charts, st.mech.title if lang == "uk" else
+                     st.mech.task.meta.get("title_en", st.mech.title), lang)
+    sys.stdout.write(dumps(forces_json(fp)) if args.json else forces_table(fp, lang))
     return 0
 
 
-def write_svg(fp, folder: str) -> None:
+def write_svg(fp, folder: str, lang: str = "uk") -> None:
     from pathlib import Path
 
     from graphplan.drawing import svg
     from graphplan.drawing.forces import drawing, lever_record
     from graphplan.util.files import write_atomic
-    for name, rec in (("forces.svg", drawing(fp)), ("lever.svg", lever_record(fp))):
+    for name, rec in (("forces.svg", drawing(fp, lang)), ("lever.svg", lever_record(fp, lang))):
         page, w, h = svg.page_for(rec)
         write_atomic(Path(folder) / name, svg.render(page, w, h, rec.title))

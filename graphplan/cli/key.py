@@ -14,6 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TextIO
 
+from graphplan.cli.common import lang_arg, lang_of
+from graphplan.util.markup import escape, plain
 from graphplan.util.progress import Progress
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import write_atomic
@@ -45,13 +47,14 @@ def _parse_tol(items: list[str], tolerance: float | None) -> dict[str, float]:
     return out
 
 
-def write_key(folder: Path, key: dict[str, Any], pdf: bool = True) -> list[Path]:
+def write_key(folder: Path, key: dict[str, Any], pdf: bool = True, lang: str = "uk") -> list[Path]:
     """The variant's files: key.json, key.csv, key.svg and key.pdf."""
     from graphplan.cli.main import dumps
     from graphplan.teach.keys import key_csv
     from graphplan.teach.keysheet import A4_PORTRAIT, key_sheet
     from graphplan.drawing.svg import render
-    svg = render(key_sheet(key), *A4_PORTRAIT, title=f"Answer key, variant {key['variant']}")
+    sheet = key_sheet(key, lang)
+    svg = render(sheet, *A4_PORTRAIT, title=plain(sheet.title))
     files = [write_atomic(folder / "key.json", dumps(key)),
              write_atomic(folder / "key.csv", key_csv(key)),
              write_atomic(folder / "key.svg", svg)]
@@ -92,25 +95,27 @@ def _csv_value(v: Any) -> str:
 
 
 def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
-                 overrides: set[str] = frozenset()) -> str:
-    """The summary as a fixed-width table for printing (the variants' data as given)."""
-    from graphplan.teach.keysheet import cell, display
+                 overrides: set[str] = frozenset(), lang: str = "uk") -> str:
+    """The summary as a fixed-width table for printing (the variants' data as given), in ``lang``."""
+    from graphplan.teach.keysheet import cell, display, unit_text
+    from graphplan.util.markup import plain
     table_cols = [c for c in columns if c != "note"]
-    cells = [[cell(r.get(c), c in overrides) for c in table_cols] for r in rows]
-    head = [display(c) for c in table_cols]
-    unit_row = [units.get(c, "") for c in table_cols]
+    cells = [[cell(r.get(c), c in overrides, lang) for c in table_cols] for r in rows]
+    head = [plain(display(c, lang)) for c in table_cols]
+    unit_row = [unit_text(units.get(c, ""), lang) for c in table_cols]
     widths = [max(len(x) for x in col) for col in zip(head, unit_row, *cells)]
     left = {i for i, c in enumerate(table_cols) if c in ("variant", "student", "status")}
     lines = [title, ""]
     for r in [head, unit_row] + cells:
         lines.append("  ".join(x.ljust(w) if i in left else x.rjust(w)
                                for i, (x, w) in enumerate(zip(r, widths))).rstrip())
-    from graphplan.teach.keysheet import SUMMARY_NOTE
-    lines += ["", SUMMARY_NOTE]
+    from graphplan.teach.keysheet import summary_note
+    from graphplan.util.words import word
+    lines += ["", plain(summary_note(lang))]
     notes = [r for r in rows if r.get("note")]
     if notes:
         lines.append("")
-        lines += [f"variant {r['variant']}: {r['note']}" for r in notes]
+        lines += [word("variant note", lang, v=r["variant"], note=r["note"]) for r in notes]
     return "\n".join(lines) + "\n"
 
 
@@ -121,6 +126,7 @@ class KeyOptions:
     tolerances: dict[str, float]
     divisions: int | None
     pdf: bool
+    lang: str = "uk"
 
 
 _JOB: dict[str, Any] = {}
@@ -151,7 +157,7 @@ def _variant_job(index: int) -> dict[str, Any]:
         return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note}, "units": {},
                 "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": note},
                 "message": f"graphplan: {v.where(table.path)}: skipped: {note}"}
-    write_key(opt.out / v.id, key, pdf=opt.pdf)
+    write_key(opt.out / v.id, key, pdf=opt.pdf, lang=opt.lang)
     return {"entry": {"variant": v.id, "status": "ok", "key": f"{v.id}/key.json", "note": ""},
             "row": summary_row(key), "units": summary_units(key), "message": None}
 
@@ -206,26 +212,28 @@ def cmd_key(args: argparse.Namespace) -> int:
         raise GraphplanError("the output must be a folder", str(out))
     jobs = args.jobs or min(os.cpu_count() or 1, 8, len(table.variants))
     progress = Progress(len(table.variants), enabled=not args.quiet and sys.stderr.isatty())
-    results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf), jobs, progress)
+    lang = lang_of(args)
+    results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf, lang), jobs, progress)
     progress.close()
     entries = [r["entry"] for r in results]
     rows = [r["row"] for r in results]
     written = sum(e["status"] == "ok" for e in entries)
-    title = (f"Answer keys: {table.path.name} — {len(entries)} variants, {written} written"
-             + (f", {len(entries) - written} skipped" if written < len(entries) else ""))
+    from graphplan.util.words import word
+    title = (word("keys title", lang, table=table.path.name, n=len(entries), written=written)
+             + (word("keys skipped", lang, k=len(entries) - written) if written < len(entries) else ""))
     columns = summary_columns(rows)
     units: dict[str, str] = {}
     for r in results:
         units.update({c: u for c, u in r["units"].items() if c in columns and c not in units})
     doc = {"format": SUMMARY_FORMAT, "table": table.path.name, "variants": entries,
            "columns": columns, "units": units, "rows": rows}
-    text = summary_text(title, columns, rows, units, overrides=_override_columns(table))
+    text = summary_text(title, columns, rows, units, overrides=_override_columns(table), lang=lang)
     if written:
         write_atomic(out / "summary.json", dumps(doc))
         write_atomic(out / "summary.csv", summary_csv(columns, rows))
         write_atomic(out / "summary.txt", text)
-        svg = render(summary_sheet(title, [c for c in columns if c != "note"], rows, units,
-                                   _override_columns(table)),
+        svg = render(summary_sheet(escape(title), [c for c in columns if c != "note"], rows, units,
+                                   _override_columns(table), lang),
                      *A4_LANDSCAPE, title=title)
         write_atomic(out / "summary.svg", svg)
         if not args.no_pdf:
@@ -249,7 +257,7 @@ def cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         sys.stdout.write(dumps(report_json(graded, args.key, args.student, args.signed)))
     else:
-        sys.stdout.write(report_table(graded, args.key, args.student))
+        sys.stdout.write(report_table(graded, args.key, args.student, lang_of(args)))
     return 0
 
 
@@ -273,6 +281,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="variants built in N processes at once (default: the processors, at most 8)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    lang_arg(p)
     p.set_defaults(handler=cmd_key)
 
     c = sub.add_parser(
@@ -283,6 +292,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     c.add_argument("key", help="a key folder written by 'graphplan key', a variant's folder or its key.json")
     c.add_argument("student", help="the student's table: CSV with position, quantity, value (and variant)")
     c.add_argument("--json", action="store_true", help="the graded rows and the summary as JSON")
+    lang_arg(c)
     c.add_argument("--signed", action="store_true",
                    help="compare signs of signed quantities (ω, ε, s, v, a) instead of magnitudes")
     c.set_defaults(handler=cmd_check)

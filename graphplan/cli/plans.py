@@ -5,7 +5,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from graphplan.cli.common import load_study
+from graphplan.cli.common import lang_arg, lang_of, load_study
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text, write_atomic
 
@@ -13,6 +13,7 @@ def cmd_plans(args: argparse.Namespace) -> int:
     from graphplan.graphic.plans import build_plans
     from graphplan.report.plans import plans_json, plans_table, svg_documents
     st = load_study(args.scene)
+    lang = lang_of(args, st)
     if args.positions is not None and not 2 <= args.positions <= 3600:
         raise GraphplanError(f"--positions must be from 2 to 3600, got {args.positions}")
     plans = build_plans(st, count=args.positions, accel=args.accel, precision=args.precision,
@@ -21,12 +22,12 @@ def cmd_plans(args: argparse.Namespace) -> int:
         folder = Path(args.svg)
         if folder.exists() and not folder.is_dir():
             raise GraphplanError("--svg needs a folder, this is a file", str(folder))
-        for name, text in svg_documents(plans, args.lang).items():
+        for name, text in svg_documents(plans, lang).items():
             write_atomic(folder / name, text)
     if args.json:
         sys.stdout.write(json_text(plans_json(plans)))
     else:
-        sys.stdout.write(plans_table(plans, args.lang))
+        sys.stdout.write(plans_table(plans, lang))
     return 0
 
 
@@ -49,5 +50,5 @@ def register(sub) -> None:
     p.add_argument("--mu-a", type=float, metavar="A_PER_MM", help="fix the acceleration scale μa, (m/s²)/mm")
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write each plan as an SVG in true millimetres into DIR")
-    p.add_argument("--lang", choices=("en", "uk"), default="en", help="language of tables and captions")
+    lang_arg(p)
     p.set_defaults(handler=cmd_plans)

@@ -5,6 +5,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from graphplan.cli.common import lang_arg, lang_of
 from graphplan.util.errors import GraphplanError
 
 
@@ -16,7 +17,7 @@ def register(sub) -> None:
     p.add_argument("-o", "--output", required=True, metavar="FILE",
                    help="output file: .svg, .pdf, .png or .dxf")
     p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
-    p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
+    lang_arg(p)
     p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces", "dynamics"],
                    help="which sheet: kinematics (default), forces or dynamics")
     p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
@@ -38,12 +39,15 @@ def cmd_sheet(args: argparse.Namespace) -> int:
         from graphplan.drawing.raster import require_cairo
         require_cairo()                  # before the work: one line when the cairo library is missing
     st = study(load(args.scene))
+    args.lang = lang_of(args, st)
     f = form(args.format)
     build = BUILDERS.get(args.sheet)
     if build is None:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
     sheet = build(st, f, args)
     path = sheet.write(args.output, args.text_as_paths, args.dpi)
+    from graphplan.util.words import unit, word
     dpi = f", {args.dpi:g} dpi" if path.suffix.lower() == ".png" else ""
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm{dpi}, {len(sheet.placed)} blocks)", file=sys.stderr)
+    print(word("sheet written", args.lang, path=path, form=f.name,
+               size=f"{f.width:g}×{f.height:g} {unit('mm', args.lang)}{dpi}", n=len(sheet.placed)), file=sys.stderr)
     return 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from graphplan.cli.common import load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import write_atomic
 
@@ -17,7 +17,7 @@ def cmd_view(args: argparse.Namespace) -> int:
     if out.exists() and out.is_dir():
         raise GraphplanError("-o needs a file name, this is a folder", str(out))
     st = load_study(args.scene)
-    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=args.lang))
+    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang_of(args, st)))
     return 0
 
 
@@ -31,7 +31,7 @@ def register(sub) -> None:
                     "Open it in any browser; it makes no network request.")
     scene_arg(p, optional=True)
     p.add_argument("-o", "--output", required=True, metavar="FILE.html", help="the page to write")
-    p.add_argument("--lang", choices=("uk", "en"), default="uk", help="language of the page (default uk)")
+    lang_arg(p)
     p.add_argument("--precision", type=float, default=0.5, metavar="MM",
                    help="drafting precision of the plans' readings, mm (default 0.5; 0 = exact)")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",

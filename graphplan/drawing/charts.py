@@ -10,6 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
+from graphplan.util.markup import plain
+from graphplan.util.words import force_symbol, num, unit, word
 from graphplan.graphic.record import Record
 from graphplan.graphic.forceplans import standard_scale
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
@@ -72,7 +74,7 @@ def _figure_bytes(fig, fmt: str) -> bytes:
     return buf.getvalue()
 
 
-def moment_figure(t: Turn, title: str = ""):
+def moment_figure(t: Turn, title: str = "", lang: str = "uk"):
     """M_b(φ): closed form (line) and power balance (dots), the working stroke shaded."""
     import matplotlib
     matplotlib.use("Agg")
@@ -82,10 +84,10 @@ def moment_figure(t: Turn, title: str = ""):
     ks = t.ks
     x = t.turn_deg
     ax.plot(np.r_[x, 360.0], np.r_[ks.balancing, ks.balancing[0]], color="black", lw=1.2,
-            label="closed form (kinetostatics)")
+            label=word("closed form", lang))
     every = max(1, len(x) // 36)
     ax.plot(x[::every], ks.power()[::every], "o", ms=3, mfc="none", color="black",
-            label="power balance")
+            label=word("by power", lang))
     work = ks.working
     for idx, _ in _pieces(t, work.astype(float)):
         if work[idx[0]]:
@@ -95,14 +97,14 @@ def moment_figure(t: Turn, title: str = ""):
         ax.axvline(x[k], color="0.85", lw=0.5)
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
-    ax.set_xlabel("crank turn from position 0, ° (working stroke shaded)")
-    ax.set_ylabel("balancing moment M_b, N·m")
-    ax.set_title(title or "Balancing moment on the crank")
+    ax.set_xlabel(word("chart turn", lang))
+    ax.set_ylabel(f"{word('balancing moment', lang)} {plain(word('M_b', lang))}, {unit('N·m', lang)}")
+    ax.set_title(title or word("balancing moment crank", lang))
     ax.legend(loc="best", fontsize=8)
     return fig
 
 
-def hodograph_figure(t: Turn, title: str = ""):
+def hodograph_figure(t: Turn, title: str = "", lang: str = "uk"):
     """The hodographs of the revolute-pair reactions: the tip of R over the turn, positions marked."""
     import matplotlib
     matplotlib.use("Agg")
@@ -124,21 +126,21 @@ def hodograph_figure(t: Turn, title: str = ""):
         ax.axhline(0, color="0.8", lw=0.5)
         ax.axvline(0, color="0.8", lw=0.5)
         ax.set_aspect("equal", adjustable="datalim")
-        ax.set_title(f"{key} (pair {t.ks.reactions[key].point})", fontsize=9)
-        ax.set_xlabel("R_x, N", fontsize=8)
-        ax.set_ylabel("R_y, N", fontsize=8)
+        ax.set_title(f"{key} ({word('pair', lang)} {t.ks.reactions[key].point})", fontsize=9)
+        ax.set_xlabel(f"R_x, {unit('N', lang)}", fontsize=8)
+        ax.set_ylabel(f"R_y, {unit('N', lang)}", fontsize=8)
         ax.tick_params(labelsize=7)
-    fig.suptitle(title or "Hodographs of the reactions in the revolute pairs", fontsize=10)
+    fig.suptitle(title or word("hodographs", lang), fontsize=10)
     fig.tight_layout()
     return fig
 
 
-def write_charts(t: Turn, folder: str | Path, title: str = "") -> list[Path]:
+def write_charts(t: Turn, folder: str | Path, title: str = "", lang: str = "uk") -> list[Path]:
     """balancing_moment.{png,svg} and hodographs.{png,svg} in ``folder``."""
     folder = Path(folder)
     written = []
-    for stem, fig in (("balancing_moment", moment_figure(t, title)),
-                      ("hodographs", hodograph_figure(t, title))):
+    for stem, fig in (("balancing_moment", moment_figure(t, title, lang)),
+                      ("hodographs", hodograph_figure(t, title, lang))):
         for fmt in ("png", "svg"):
             written.append(write_atomic(folder / f"{stem}.{fmt}", _figure_bytes(fig, fmt)))
     return written
@@ -150,7 +152,7 @@ def _nice_step(span: float, parts: int = 6) -> float:
     return standard_scale(span / parts) if span > 0 else 1.0
 
 
-def moment_record(t: Turn, width: float = 180.0, height: float = 70.0) -> Record:
+def moment_record(t: Turn, width: float = 180.0, height: float = 70.0, lang: str = "uk") -> Record:
     """M_b(φ) as a drawing: abscissa = crank turn from position 0, ordinate at μM (N·m per mm)."""
     rec = Record("balancing moment M_b(φ)")
     step = "M_b(φ)"
@@ -169,19 +171,20 @@ def moment_record(t: Turn, width: float = 180.0, height: float = 70.0) -> Record
         rec.segment((x, y0 - 1.5), (x, y0 + 1.5), role="construction", layer="diagrams", step=step)
         rec.label((x, y0 - 5.0), str(pos), size=2.5, anchor="middle", step=step)
     rec.label((width + 6.0, y0 - 1.0), "φ", size=3.5, step=step)
-    rec.label((2.0, hi / mu_m + 5.0), "M_b, N·m", size=3.5, step=step)
+    rec.label((2.0, hi / mu_m + 5.0), f"{word('M_b', lang)}, {unit('N·m', lang)}", size=3.5, step=step)
     tick = _nice_step(hi - lo, 4)
     v = math.floor(lo / tick) * tick
     while v <= hi + 1e-9:
         y = v / mu_m
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
-        rec.label((-2.5, y - 1.2), f"{v:g}", size=2.5, anchor="end", step=step)
+        rec.label((-2.5, y - 1.2), num(v, lang), size=2.5, anchor="end", step=step)
         v += tick
-    rec.label((0.0, lo / mu_m - 12.0), f"μM = {mu_m:g} N·m/mm, μφ = {mu_phi:g} °/mm", size=2.5, step=step)
+    rec.label((0.0, lo / mu_m - 12.0), f"μ_M = {num(mu_m, lang)} {unit('N·m/mm', lang)}, "
+              f"μ_φ = {num(mu_phi, lang)} {unit('deg/mm', lang)}", size=2.5, step=step)
     return rec
 
 
-def hodograph_record(t: Turn, key: str, size: float = 70.0) -> Record:
+def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered."""
     f = t.ks.reactions[key].force
     rec = Record(f"hodograph {key}")
@@ -199,13 +202,14 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0) -> Record:
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
         rec.label((float(w.real) + 1.0, float(w.imag) + 1.0), str(pos), size=2.5, step=step)
-    rec.label((-half, -half - 6.0), f"{key}: μR = {mu_r:g} N/mm", size=2.5, step=step)
+    rec.label((-half, -half - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
+              size=2.5, step=step)
     return rec
 
 
-def records(t: Turn) -> dict[str, Record]:
+def records(t: Turn, lang: str = "uk") -> dict[str, Record]:
     """"moment" and "hodograph <key>" for every revolute pair."""
-    out = {"moment": moment_record(t)}
+    out = {"moment": moment_record(t, lang=lang)}
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key)
+        out[f"hodograph {key}"] = hodograph_record(t, key, lang=lang)
     return out

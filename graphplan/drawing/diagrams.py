@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.graphic.chords import periodic_spline
-from graphplan.graphic.record import Record, text_width
+from graphplan.graphic.record import Record
+from graphplan.util.words import num, unit, word
 
 if TYPE_CHECKING:
     from graphplan.graphic.diagrams import Diagrams
@@ -22,92 +23,30 @@ NUM = 2.5              # lettering of the division numbers
 TEXT = 3.5             # lettering of the symbols and scales
 
 
-WORDS = {
-    "uk": {"title": "Кінематичні діаграми {what} {how}", "point": "точки", "link": "ланки",
-           "scales": "Масштаби", "at": "На ординатах поділу (крива, прочитана на ординатах)",
-           "mid": "Ординати методу хорд (посередині інтервалів)",
-           "mid_t": "Ординати методу дотичних (на ординатах поділу)", "chosen": "У двох заданих положеннях",
-           "no": "№", "int": "інт.", "graph": "графічно", "exact": "точно", "err": "δ, %",
-           "integ": "Графічне інтегрування (зворотна побудова)", "warn": "Попередження",
-           "v_from_a": "v з a", "s_from_a": "s з a через v", "s_from_v": "s з ординат v",
-           "dev": "найбільше відхилення {mm:.2f} мм ({pct:.2f} % від максимуму), незамикання {cl:+.2f} мм",
-           "m": "м", "s": "с", "mm": "мм", "rad": "рад", "none": "немає",
-           "period": "T = 2π/ω1 = {T:.4g} с на L = {L:g} мм"},
-    "en": {"title": "Kinematic diagrams of {what} {how}", "point": "point", "link": "link",
-           "scales": "Scales", "at": "At the division ordinates (the curves read there)",
-           "mid": "The chords' ordinates (at the middles of the intervals)",
-           "mid_t": "The tangents' ordinates (at the division ordinates)", "chosen": "At the two chosen positions",
-           "no": "No", "int": "int.", "graph": "graph.", "exact": "exact", "err": "δ, %",
-           "integ": "Graphical integration (the reverse construction)", "warn": "Warnings",
-           "v_from_a": "v from a", "s_from_a": "s from a through v", "s_from_v": "s from the v ordinates",
-           "dev": "largest deviation {mm:.2f} mm ({pct:.2f} % of the maximum), closure {cl:+.2f} mm",
-           "m": "m", "s": "s", "mm": "mm", "rad": "rad", "none": "none",
-           "period": "T = 2π/ω1 = {T:.4g} s over L = {L:g} mm"},
-}
-
-
-HOW = {"uk": {"chords": "методом хорд", "corrected": "методом хорд з корекцією площ",
-              "tangents": "методом дотичних (дзеркало, ±{e:g}°)"},
-       "en": {"chords": "by the method of chords", "corrected": "by the method of chords with the area correction",
-              "tangents": "by the method of tangents (mirror, ±{e:g}°)"}}
-
-
 def method_words(d: Diagrams, lang: str) -> str:
     """Which graphical differentiation drew the diagrams, as the title and the sheet's notes say it."""
     key = "corrected" if d.correct else d.method
-    return HOW[lang][key].format(e=d.angle_error_deg)
+    return word(f"method {key}", lang, e=num(d.angle_error_deg, lang))
 
 
 def units(d: Diagrams, lang: str) -> tuple[str, str, str]:
-    w = WORDS[lang]
-    base = w["m"] if d.unit == "m" else w["rad"]
-    return base, f"{base}/{w['s']}", f"{base}/{w['s']}²"
+    base = "m" if d.unit == "m" else "rad"
+    return unit(base, lang), unit(f"{base}/s", lang), unit(f"{base}/s²", lang)
 
 
 def scale_lines(d: Diagrams, lang: str) -> list[str]:
-    w = WORDS[lang]
     us, uv, ua = units(d, lang)
     s, v, a = d.symbols
-    return [f"μ{s} = {fmt(d.mu_s, lang)} {us}/{w['mm']}",
-            f"μt = T/L = 2π/(ω1·L) = {fmt(d.mu_t, lang)} {w['s']}/{w['mm']}",
-            f"μ{v} = μ{s}/(μt·H1) = {fmt(d.mu_v, lang)} ({uv})/{w['mm']},  H1 = {d.H1:g} {w['mm']}",
-            f"μ{a} = μ{v}/(μt·H2) = {fmt(d.mu_a, lang)} ({ua})/{w['mm']},  H2 = {d.H2:g} {w['mm']}"]
-
-
-SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+    mm = unit("mm", lang)
+    return [f"μ_{s} = {fmt(d.mu_s, lang)} {us}/{mm}",
+            f"μ_t = T/L = 2π/(ω_1·L) = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}",
+            f"μ_{v} = μ_{s}/(μ_t·H_1) = {fmt(d.mu_v, lang)} ({uv})/{mm},  H_1 = {fmt(d.H1, lang)} {mm}",
+            f"μ_{a} = μ_{v}/(μ_t·H_2) = {fmt(d.mu_a, lang)} ({ua})/{mm},  H_2 = {fmt(d.H2, lang)} {mm}"]
 
 
 def fmt(v: float, lang: str = "en", digits: int = 4) -> str:
-    """A scale or value as a draftsman writes it: 4 significant digits, ·10ⁿ for very small or
-    large numbers, the decimal comma in Ukrainian."""
-    if v == 0 or not math.isfinite(v):
-        text = f"{v:g}"
-    else:
-        e = math.floor(math.log10(abs(v)))
-        if -4 <= e < 6:
-            text = f"{v:.{max(digits - 1 - e, 0)}f}"
-            if "." in text:
-                text = text.rstrip("0").rstrip(".")
-        else:
-            m = f"{v / 10 ** e:.{digits - 1}f}".rstrip("0").rstrip(".")
-            text = f"{m}·10{str(e).translate(SUPER)}"
-    return text.replace(".", ",") if lang == "uk" else text
-
-
-
-def rich(rec: Record, at: tuple[float, float], parts: list[tuple[str, bool]], size: float = TEXT,
-         anchor: str = "start", step: str = "") -> None:
-    """Text with subscripts: ``parts`` = [(text, is_subscript), …]; subscripts 0.7 high, 0.3 lower."""
-    sizes = [size * 0.7 if sub else size for _, sub in parts]
-    width = lambda t, s, sub: 0.62 * s * len(t) + 0.4 if sub else text_width(t, s)  # noqa: E731
-    total = sum(width(t, s, sub) for (t, sub), s in zip(parts, sizes))
-    x = at[0] - {"start": 0.0, "middle": total / 2, "end": total}[anchor]
-    for (text, sub), s in zip(parts, sizes):
-        body = text.lstrip(" ")
-        x += text_width(text[:len(text) - len(body)], s)  # SVG drops leading spaces: move instead
-        if body:
-            rec.label((x, at[1] - (0.3 * size if sub else 0.0)), body, size=s, layer=LAYER, step=step)
-        x += width(body, s, sub)
+    """A scale or value as a draftsman writes it (util.words.num)."""
+    return num(v, lang, digits)
 
 
 def _extent(*arrays) -> tuple[float, float]:
@@ -117,7 +56,6 @@ def _extent(*arrays) -> tuple[float, float]:
 
 def draw(d: Diagrams, lang: str = "uk") -> Record:
     """The three diagrams of ``d`` stacked (s on top), sharing the abscissa 0 … L mm."""
-    w = WORDS[lang]
     r = d.drawn
     x, xm, L, n = d.x, d.x_mid, d.L, d.divisions
     fine = np.linspace(0.0, L, int(round(4 * L)) + 1)
@@ -131,17 +69,17 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 
     s_sym, v_sym, a_sym = d.symbols
     what = f"{d.point}"
-    rec = Record(title=w['title'].format(what=(w['point'] if d.output.kind == 'slide' else w['link']) + ' ' + what,
-                                         how=method_words(d, lang)),
+    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + " " + what
+    rec = Record(title=word("diagrams title", lang, what=what, how=method_words(d, lang)),
                  scales={"mu_s": d.mu_s, "mu_t": d.mu_t, "mu_v": d.mu_v, "mu_a": d.mu_a,
                          "H1_mm": d.H1, "H2_mm": d.H2, "L_mm": d.L})
     y_s = 0.0
     y_v = y_s + s_lo - 6.0 - GAP - TOP - v_hi          # 6 mm for the division numbers under s
     y_a = y_v + v_lo - 8.0 - GAP - TOP - a_hi          # 8 mm for the H1 dimension under v
     us, uv, ua = units(d, lang)
-    mm = w["mm"]
+    mm = unit("mm", lang)
     left = -max(d.H1, d.H2) - 14.0
-    letters = ("а)", "б)", "в)") if lang == "uk" else ("a)", "b)", "c)")
+    letters = word("letters", lang).split()
 
     # -- s(t) ------------------------------------------------------------------------------------
     _axes(rec, y_s, s_lo, s_hi, -3.0, L, s_sym, d.sub, "s(t)")
@@ -158,9 +96,8 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     rec.add("polyline", list(zip(fine, y_s + s_curve)), role="curve", layer=LAYER, step=f"{s_sym}(t)")
     _numbers(rec, d, y_s + s_lo - 4.5)
     rec.label((left, y_s + s_hi), letters[0], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_s + s_hi, [
-        [("μ", False), (s_sym, True), (f" = {fmt(d.mu_s, lang)} {us}/{mm}", False)],
-        [("μ", False), ("t", True), (f" = {fmt(d.mu_t, lang)} {w['s']}/{mm}", False)]])
+    _caption(rec, L, y_s + s_hi, [f"μ_{s_sym} = {fmt(d.mu_s, lang)} {us}/{mm}",
+                                  f"μ_t = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}"])
 
     # -- v(t): pole P at H1, rays ∥ the chords of s, heights carried to the middles ------------------
     _pole_diagram(rec, d, y_v, v_lo, v_hi, d.H1, r.v_ray, r.v, xm, v_curve, fine, v_sym, "1",
@@ -172,18 +109,14 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
             rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
                         step=f"chord {k}–{k + 1} of {v_sym}(t)")
     rec.label((left, y_v + v_hi), letters[1], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_v + v_hi, [
-        [("μ", False), (v_sym, True), (f" = {fmt(d.mu_v, lang)} ({uv})/{mm}", False)],
-        [("H", False), ("1", True), (f" = {d.H1:g} {mm}", False)]])
+    _caption(rec, L, y_v + v_hi, [f"μ_{v_sym} = {fmt(d.mu_v, lang)} ({uv})/{mm}", f"H_1 = {fmt(d.H1, lang)} {mm}"])
 
     # -- a(t): pole P at H2, rays ∥ the chords of v ------------------------------------------------
     _pole_diagram(rec, d, y_a, a_lo, a_hi, d.H2, r.a_ray, r.a, xm, a_curve, fine, a_sym, "2",
                   source=v_sym)
     _numbers(rec, d, y_a + a_lo - 8.0 - 4.0)
     rec.label((left, y_a + a_hi), letters[2], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_a + a_hi, [
-        [("μ", False), (a_sym, True), (f" = {fmt(d.mu_a, lang)} ({ua})/{mm}", False)],
-        [("H", False), ("2", True), (f" = {d.H2:g} {mm}", False)]])
+    _caption(rec, L, y_a + a_hi, [f"μ_{a_sym} = {fmt(d.mu_a, lang)} ({ua})/{mm}", f"H_2 = {fmt(d.H2, lang)} {mm}"])
     return rec
 
 
@@ -194,7 +127,8 @@ def _axes(rec: Record, y0: float, lo: float, hi: float, x_from: float, L: float,
                layer=LAYER, step=f"axes of {step}")
     rec.vector((x_from, y0), (L + 10.0, y0), role="construction", width=AXIS_W, layer=LAYER,
                step=f"axes of {step}")
-    rich(rec, (1.8, y0 + hi + TOP - 3.0), [(sym, False), (sub, True)], step=f"axes of {step}")
+    rec.label((1.8, y0 + hi + TOP - 3.0), f"{sym}_{{{sub}}}" if sub else sym, size=TEXT, layer=LAYER,
+              step=f"axes of {step}")
     rec.label((L + 11.5, y0 - 1.2), "t", size=TEXT, layer=LAYER, step=f"axes of {step}")
 
 
@@ -248,7 +182,7 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
     rec.segment((-H, y0), (-H, yd - 1.5), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
-    rich(rec, (-H / 2, yd - 4.5), [("H", False), (index, True)], anchor="middle", step=f"H{index}")
+    rec.label((-H / 2, yd - 4.5), f"H_{index}", size=TEXT, anchor="middle", layer=LAYER, step=f"H{index}")
 
 
 def _tangents(rec: Record, x: np.ndarray, y: np.ndarray, alpha: np.ndarray, sym: str,
@@ -260,10 +194,10 @@ def _tangents(rec: Record, x: np.ndarray, y: np.ndarray, alpha: np.ndarray, sym:
                     step=f"tangent at {k} of {sym}(t)")
 
 
-def _caption(rec: Record, L: float, y: float, lines: list[list[tuple[str, bool]]]) -> None:
+def _caption(rec: Record, L: float, y: float, lines: list[str]) -> None:
     """Scale captions to the right of a diagram."""
-    for i, parts in enumerate(lines):
-        rich(rec, (L + 18.0, y - 1.0 - 5.5 * i), parts, step="scales")
+    for i, line in enumerate(lines):
+        rec.label((L + 18.0, y - 1.0 - 5.5 * i), line, size=TEXT, layer=LAYER, step="scales")
 
 
 def diagrams_svg(d: Diagrams, lang: str | None = None) -> str:

@@ -12,6 +12,7 @@ import numpy as np
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
 from graphplan.graphic.record import Record
+from graphplan.util.words import fixed, num
 
 if TYPE_CHECKING:
     from graphplan.graphic.flywheel import Flywheel
@@ -27,14 +28,14 @@ WORDS = {
            "witt": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) за оберт",
            "classical": "сталий Mд*, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
            "mm": "мм", "Nm": "Н·м", "J": "Дж", "kgm2": "кг·м²", "rad": "рад", "s": "с",
-           "kl": "|kl| = {kl:g} мм", "axis": "вісь ΔT", "Mc": "Mс*", "Md": "Mд*", "Ac": "Aс", "Ad": "Aд",
+           "kl": "|kl| = {kl} мм", "axis": "вісь ΔT", "Mc": "Mс*", "Md": "Mд*", "Ac": "Aс", "Ad": "Aд",
            "Im": "I*м"},
     "en": {"moments": "Reduced moments of the resistance and driving forces", "work": "Work of the resistance and driving forces",
            "energy": "Change of kinetic energy ΔT = A_d − A_c", "inertia": "Reduced moment of inertia of the mechanism",
            "witt": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) over a turn",
            "classical": "constant M_d*, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
            "mm": "mm", "Nm": "N·m", "J": "J", "kgm2": "kg·m²", "rad": "rad", "s": "s",
-           "kl": "|kl| = {kl:g} mm", "axis": "ΔT axis", "Mc": "M*c", "Md": "M*d", "Ac": "Ac", "Ad": "Ad",
+           "kl": "|kl| = {kl} mm", "axis": "ΔT axis", "Mc": "M*c", "Md": "M*d", "Ac": "Ac", "Ad": "Ad",
            "Im": "I*m"},
 }
 
@@ -185,7 +186,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        _text(rec, (x_end + 1.5, b + s * x_end - 1.0), f"ψ{name} = {psi:.2f}°", step=f"ψ_{name}")
+        _text(rec, (x_end + 1.5, b + s * x_end - 1.0), f"ψ{name} = {fixed(psi, lang, 2)}°", step=f"ψ_{name}")
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
     rec.label((-1.8, k - 1.2), "k", size=TEXT, anchor="end", layer=LAYER, step="k")
@@ -195,7 +196,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     rec.vector((xd, 0.5 * (k + l)), (xd, l), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, k), (0.0, k), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, l), (0.0, l), role="construction", layer=LAYER, step="kl")
-    rec.label((xd - 1.5, 0.5 * (k + l) - 1.2), w["kl"].format(kl=f.kl), size=TEXT, anchor="end", layer=LAYER,
+    rec.label((xd - 1.5, 0.5 * (k + l) - 1.2), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
     return rec
 
@@ -236,7 +237,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - 5.0 * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {m.delta:.4f}, ωm = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
+        rec.label((12.0, yl), f"{text}: δ = {fixed(m.delta, lang, 4)}, ωm = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
     return rec
 
 

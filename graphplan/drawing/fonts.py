@@ -15,15 +15,25 @@ from pathlib import Path
 
 FAMILY = "osifont"
 FONT_FILE = "osifont.ttf"
+SYMBOLS_FAMILY = "graphplan symbols"      # → ⊥ ∥ ′ ″ …, which osifont lacks: a subset of DejaVu Sans,
+SYMBOLS_FILE = "graphplan-symbols.ttf"    # renamed as its licence asks (graphplan-symbols-LICENSE.txt)
 
 
-def font_path() -> Path:
-    """The packaged TTF (graphplan/data/fonts/osifont.ttf)."""
-    return Path(str(resources.files("graphplan") / "data" / "fonts" / FONT_FILE))
+def font_path(name: str = FONT_FILE) -> Path:
+    """A packaged TTF (graphplan/data/fonts/): osifont, or the symbols' font."""
+    return Path(str(resources.files("graphplan") / "data" / "fonts" / name))
+
+
+def symbols_path() -> Path:
+    """The packaged symbols' font (→ ⊥ ∥ ′ ″ …)."""
+    return font_path(SYMBOLS_FILE)
+
+
+SYMBOLS = "→⊥∥′″…"      # what the symbols' font draws
 
 
 @lru_cache(maxsize=64)
-def _woff_subset(chars: str) -> bytes:
+def _woff_subset(chars: str, name: str = FONT_FILE) -> bytes:
     """The font cut down to ``chars`` (glyph outlines and hinting unaltered), as WOFF; the same
     characters give the same bytes (no timestamps)."""
     from fontTools import subset
@@ -33,7 +43,7 @@ def _woff_subset(chars: str) -> bytes:
     options.layout_features = ["kern"]
     options.name_IDs = [0, 1, 2, 13, 14]          # copyright, family, style, licence, its address
     options.drop_tables += ["FFTM"]
-    font = TTFont(str(font_path()), recalcTimestamp=False)
+    font = TTFont(str(font_path(name)), recalcTimestamp=False)
     cutter = subset.Subsetter(options)
     cutter.populate(text=chars)
     cutter.subset(font)
@@ -47,9 +57,16 @@ def face_css(chars: str) -> str:
     """A CSS ``@font-face`` rule carrying the glyphs of ``chars`` as a data URI, so a browser letters
     the SVG with osifont even where it is not installed (about 10 KB for a whole sheet)."""
     chars = "".join(sorted(set(chars) - set("\n\t")))
-    data = base64.b64encode(_woff_subset(chars)).decode("ascii")
-    return (f"@font-face{{font-family:'{FAMILY}';font-style:normal;font-weight:normal;"
-            f"src:url(data:font/woff;base64,{data}) format('woff')}}")
+    faces = [(FAMILY, FONT_FILE, chars)]
+    symbols = "".join(c for c in chars if c in SYMBOLS)
+    if symbols:
+        faces.append((SYMBOLS_FAMILY, SYMBOLS_FILE, symbols))
+    css = []
+    for family, name, text in faces:
+        data = base64.b64encode(_woff_subset(text, name)).decode("ascii")
+        css.append(f"@font-face{{font-family:'{family}';font-style:normal;font-weight:normal;"
+                   f"src:url(data:font/woff;base64,{data}) format('woff')}}")
+    return "".join(css)
 
 
 @lru_cache(maxsize=1)
@@ -69,4 +86,4 @@ def register() -> bool:
         return False
     fc.FcConfigAppFontAddFile.argtypes = [ctypes.c_void_p, ctypes.c_char_p]
     fc.FcConfigAppFontAddFile.restype = ctypes.c_int
-    return bool(fc.FcConfigAppFontAddFile(None, str(font_path()).encode()))
+    return all([bool(fc.FcConfigAppFontAddFile(None, str(p).encode())) for p in (font_path(), symbols_path())])

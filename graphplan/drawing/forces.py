@@ -12,6 +12,8 @@ from graphplan.graphic.record import Record, text_width
 from graphplan.graphic.forceplans import ForcePlans, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
+from graphplan.util.markup import indexed
+from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
 
 Box = tuple[float, float, float, float]
 
@@ -142,11 +144,11 @@ def _support(rec: Record, z: complex, step: str) -> None:
         rec.segment(_pt(x), _pt(x + (-1.5 - 1.5j)), role="hatch", layer="frame", step=step)
 
 
-def group_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """A group drawn at μl: its links, every force acting on it (loads, the reactions handed over by
     the later groups, the reactions found here) and the arms of the moment equations."""
     mech, kin = fp.ks.mech, fp.ks.kin
-    title = f"{gp.label} {gp.kind}" if gp.kind != "crank" else "I(0-1)"
+    title = f"{gp.label} {pair_kind(gp.kind, lang)}" if gp.kind != "crank" else "I(0-1)"
     rec = Record(title, scales={"mu_l": fp.mu_l})
     step = f"{gp.label}: ΣM = 0, ΣF = 0"
     names: list[tuple[complex, str]] = []
@@ -217,12 +219,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan) -> Record:
                 rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
     lab = Labeler(rec)
     for z, name in names:
-        lab.place(z, name, 3.5, -1 - 1j, step)
+        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     for k, (about, t) in enumerate(arms, 1):
         mid = 0.5 * (about + t.foot)
-        lab.place(mid, f"h{k}", 2.5, 1j * _unit(t.foot - about), step)
+        lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
-        lab.place(tip, name, 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
     return rec
 
 
@@ -246,9 +248,9 @@ def _couple(rec: Record, z: complex, couple: float, step: str, r: float = 5.0) -
 
 # -- a force polygon ---------------------------------------------------------------------------
 
-def polygon_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """The group's force polygon at μF: known forces head to tail, the reactions closing it."""
-    rec = Record(f"force plan {gp.label}", scales={"mu_F": fp.mu_F})
+    rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": fp.mu_F})
     step = f"{gp.label}: ΣF = 0"
     for a, b in gp.lines:
         rec.segment(_pt(a), _pt(b), role="direction", layer="construction", step=step)
@@ -261,19 +263,19 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan) -> Record:
     lab = Labeler(rec)
     for s in sorted(sides, key=lambda s: s.mm):
         u = _unit(s.end - s.start)
-        lab.place(0.5 * (s.start + s.end), s.name, 2.5, 1j * u, step)
+        lab.place(0.5 * (s.start + s.end), force_symbol(s.name, lang), 2.5, 1j * u, step)
     x0, y0, _, _ = rec.bounds()
-    rec.label((x0, y0 - 6.0), f"μF = {fp.mu_F:g} N/mm", size=3.5, step=step)
+    rec.label((x0, y0 - 6.0), f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}", size=3.5, step=step)
     return rec
 
 
 # -- the lever ---------------------------------------------------------------------------------
 
-def lever_record(fp: ForcePlans) -> Record:
+def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     """The Zhukovsky lever: the velocity plan turned 90° counter-clockwise, each force at its point's
     image, the arms from the pole, the balancing force P_b at the crank pin's image."""
     lv = fp.lever
-    rec = Record("Zhukovsky lever", scales={"mu_v": lv.mu_v})
+    rec = Record(word("lever", lang), scales={"mu_v": lv.mu_v})
     step = "ΣM_p = 0 (Zhukovsky lever)"
     turned = {k: 1j * v for k, v in lv.images.items()}
     for a, b in lv.links:
@@ -308,17 +310,17 @@ def lever_record(fp: ForcePlans) -> Record:
         rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
         labels.append((tip, "P_b", u))
     lab = Labeler(rec)
-    lab.place(0j, "p", 3.5, -1 + 1j, step)
+    lab.place(0j, "p_v", 3.5, -1 + 1j, step)
     placed = set()
     for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
         key = (round(z.real, 1), round(z.imag, 1))
         if abs(z) > 0.1 and key not in placed:
             placed.add(key)
-            lab.place(z, name.lower(), 3.5, _unit(z), step)
+            lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
-        lab.place(tip, name, 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
     x0, y0, _, _ = rec.bounds()
-    rec.label((x0, y0 - 6.0), f"μv = {lv.mu_v:g} (m/s)/mm", size=3.5, step=step)
+    rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
 
 
@@ -346,9 +348,9 @@ def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str
     return y - n * row_h
 
 
-def group_table_record(fp: ForcePlans, gp: GroupPlan) -> Record:
+def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm)."""
-    rec = Record(f"forces of {gp.label}")
+    rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
     cells = []
     for f in gp.forces:
@@ -361,29 +363,30 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan) -> Record:
             cells.append((eq.unknown, abs(eq.result), abs(eq.result) / fp.mu_F))
     for m in gp.reactions.values():
         cells.append((m.key, m.value, m.mm))
-    head = ["force"] + [c[0] for c in cells]
-    rows = [["P, N (M, N·m)"] + [f"{c[1]:.4g}" for c in cells],
-            ["drawn, mm"] + [("—" if c[2] is None else f"{c[2]:.4g}") for c in cells]]
-    widths = [26.0] + [max(14.0, 2.5 * 0.62 * len(c[0]) + 4) for c in cells]
+    head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
+    rows = [[word("force value", lang)] + [num(c[1], lang) for c in cells],
+            [word("drawn mm", lang)] + [num(c[2], lang) for c in cells]]
+    widths = [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]]
     _table(rec, 0.0, 0.0, head, rows, widths, step)
     return rec
 
 
-def results_record(fp: ForcePlans) -> Record:
+def results_record(fp: ForcePlans, lang: str = "uk") -> Record:
     """The balancing moment found four ways and each reaction against its closed form."""
-    rec = Record("results")
+    rec = Record(word("balancing moment", lang))
     step = "results"
     a = fp.analytic
     rows = []
-    for name, value in (("closed form", a), ("force plans", fp.balancing),
-                        ("Zhukovsky lever", fp.lever.balancing), ("power balance", fp.power)):
-        err = "" if name == "closed form" or a == 0 else f"{100 * (value - a) / a:+.2f}"
-        rows.append([name, f"{value:.4g}", err])
-    bottom = _table(rec, 0.0, 0.0, ["M_b", "N·m", "δ, %"], rows, [34.0, 22.0, 18.0], step)
-    rows = [[m.key, f"{m.mm:.4g}", f"{m.value:.4g}", f"{m.angle_deg:.1f}", f"{m.analytic:.4g}",
-             "—" if m.error_pct is None else f"{m.error_pct:+.2f}"]
+    for name, value in (("closed form short", a), ("by force plans", fp.balancing),
+                        ("by lever", fp.lever.balancing), ("by power", fp.power)):
+        err = "" if name == "closed form short" or a == 0 else pct(100 * (value - a) / a, lang)
+        rows.append([word(name, lang), num(value, lang), err])
+    bottom = _table(rec, 0.0, 0.0, [word("M_b", lang), unit("N·m", lang), "δ, %"], rows, [34.0, 22.0, 18.0], step)
+    rows = [[force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
+             num(m.analytic, lang), pct(m.error_pct, lang)]
             for m in fp.reactions().values()]
-    _table(rec, 0.0, bottom - 8.0, ["R", "mm", "N", "angle, °", "exact, N", "δ, %"], rows,
+    _table(rec, 0.0, bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
+                                    word("exact N", lang), "δ, %"], rows,
            [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
     return rec
 
@@ -413,22 +416,22 @@ def arrange(records: list[Record], gap: float = 15.0, across: bool = True,
     return out
 
 
-def records(fp: ForcePlans) -> dict[str, Record]:
+def records(fp: ForcePlans, lang: str = "uk") -> dict[str, Record]:
     """Every drawing of the force analysis by name, for the force sheet:
     "group II(4-5)", "polygon II(4-5)", "table II(4-5)", …, "group I(0-1)", …, "lever", "results"."""
     out: dict[str, Record] = {}
     for gp in fp.groups:
-        out[f"group {gp.label}"] = group_record(fp, gp)
-        out[f"polygon {gp.label}"] = polygon_record(fp, gp)
-        out[f"table {gp.label}"] = group_table_record(fp, gp)
-    out["lever"] = lever_record(fp)
-    out["results"] = results_record(fp)
+        out[f"group {gp.label}"] = group_record(fp, gp, lang)
+        out[f"polygon {gp.label}"] = polygon_record(fp, gp, lang)
+        out[f"table {gp.label}"] = group_table_record(fp, gp, lang)
+    out["lever"] = lever_record(fp, lang)
+    out["results"] = results_record(fp, lang)
     return out
 
 
-def drawing(fp: ForcePlans) -> Record:
+def drawing(fp: ForcePlans, lang: str = "uk") -> Record:
     """All of it on one page: each group beside its force plan, one group under another, then the
     lever beside the results."""
-    rows = [arrange([group_record(fp, gp), polygon_record(fp, gp)]) for gp in fp.groups]
-    rows.append(arrange([lever_record(fp), results_record(fp)]))
+    rows = [arrange([group_record(fp, gp, lang), polygon_record(fp, gp, lang)]) for gp in fp.groups]
+    rows.append(arrange([lever_record(fp, lang), results_record(fp, lang)]))
     return arrange(rows, across=False, titles=False)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import cmath
 import math
 
+from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.model.mechanism import FRAME
@@ -207,7 +208,7 @@ def position_record(plans: Plans) -> Record:
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
-        labels.append(LabelRequest(X, name, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
+        labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
     # numbers of the positions at the crank pin, the output point and the groups' inner joints
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
     for p in plans.positions:
@@ -221,7 +222,7 @@ def position_record(plans: Plans) -> Record:
     for j, lay in enumerate(extremes):
         X = where(sc, lay, sc.body_of(out), out)
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
-        labels.append(LabelRequest(X, out + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+        labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
     return place_labels(rec, labels)
 
 

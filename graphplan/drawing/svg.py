@@ -8,9 +8,12 @@ with ``text_as_paths``, outlines cut from the same font.
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 
-from graphplan.graphic.record import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering, plain_width,
+                                      run_offsets)
+from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -106,9 +109,94 @@ def _elements(dwg, prim: Primitive, h: float):
                  "stroke_width": _f(0.35)}
         yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
     elif k == "text":
-        anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-        yield dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
-                       font_family=FONT, text_anchor=anchor, fill="black")
+        yield _text(dwg, prim, h)
+
+
+ARROW_FONT = "'graphplan symbols', 'DejaVu Sans', sans-serif"   # osifont has no → ⊥ ∥ ′ ″ …: those in the
+MISSING = "→⊥∥′″…"                                              # package's symbols' font (drawing.fonts)
+_MISSING = re.compile(f"([{MISSING}])")
+
+
+def _text(dwg, prim: Primitive, h: float):
+    """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
+    size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
+    font that has it."""
+    anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
+    if is_plain(prim.text) and not _MISSING.search(prim.text):
+        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
+                        font_family=FONT, text_anchor=anchor, fill="black")
+    # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
+    # of a centred or right-aligned text
+    pieces, total = _set(prim.text, prim.size)
+    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
+    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(prim.size), font_family=FONT,
+                  fill="black")
+    shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
+    for piece, small, x0, up, advance in pieces:
+        kw = {}
+        if up != shift:
+            kw["dy"] = [_f(shift - up)]
+        if abs(x0 - pen) > 1e-6:
+            kw["dx"] = [_f(x0 - pen)]
+        if small:
+            kw["font_size"] = _f(prim.size * SMALL)
+        if piece in MISSING:
+            kw["font_family"] = ARROW_FONT
+        el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
+        shift, pen = up, x0 + advance
+    return el
+
+
+@lru_cache(maxsize=4096)
+def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, float]], float]:
+    """The markup typeset: (piece, small, x, baseline shift, advance) per piece, x from the text's
+    start by the drawing font's advances (stacked scripts start together), and the whole width."""
+    out = []
+    pen = start = 0.0
+    for run in runs(text):
+        s = size * SMALL if run.level else size
+        x = start if run.stacked else pen
+        start = x
+        up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
+        for piece in (p for p in _MISSING.split(run.text) if p):
+            adv = _advance(piece, round(s, 6))
+            out.append((piece, bool(run.level), x, up, adv))
+            x += adv
+        pen = max(pen, x)
+    return out, pen
+
+
+@lru_cache(maxsize=8192)
+def _advance(piece: str, size: float) -> float:
+    """How far the pen moves over ``piece`` at letter height ``size`` (mm) in the font that draws
+    it (osifont, DejaVu Sans for the arrow): the glyphs' ink to their right edge plus any trailing
+    spaces; the estimate of graphic.record where matplotlib is absent."""
+    try:
+        from matplotlib.font_manager import FontProperties
+        from matplotlib.textpath import TextPath
+    except ImportError:
+        return plain_width(piece, size)
+    prop = _font(symbols=piece in MISSING)
+    body = lettering(piece).rstrip(" ")
+    trailing = len(lettering(piece)) - len(body)
+    if body.strip():
+        ext = TextPath((0, 0), body + "|", size=size, prop=prop).get_extents()
+        bar = TextPath((0, 0), "|", size=size, prop=prop).get_extents()
+        width = ext.x0 + ext.width - (bar.x0 + bar.width)      # the advance, up to the next glyph
+    else:
+        width = 0.0
+        trailing = len(lettering(piece))
+    if trailing:
+        one = TextPath((0, 0), "| |", size=size, prop=prop).get_extents().width - \
+            TextPath((0, 0), "||", size=size, prop=prop).get_extents().width
+        width += trailing * one
+    return float(width)
+
+
+def _svg_lettering(text: str) -> str:
+    """lettering() keeping the spaces SVG would collapse at a tspan's edges as no-break spaces."""
+    out = lettering(text)
+    return out.replace(" ", "\u00a0") if out.startswith(" ") or out.endswith(" ") else out
 
 
 def arc_path(centre, r: float, start: float, end: float, h: float) -> str:
@@ -138,25 +226,38 @@ def to_png(svg_text: str, dpi: int = 300) -> bytes:
 
 
 @lru_cache(maxsize=1)
-def _font():
+def _font(symbols: bool = False):
     from matplotlib.font_manager import FontProperties
 
-    from graphplan.drawing.fonts import font_path
-    return FontProperties(fname=str(font_path()))
+    from graphplan.drawing.fonts import font_path, symbols_path
+    return FontProperties(fname=str(symbols_path() if symbols else font_path()))
 
 
 def text_outline(prim: Primitive, height: float) -> str:
     """The lettering of a text primitive as one SVG path (matplotlib TextPath), in sheet mm."""
     from matplotlib.textpath import TextPath
 
-    tp = TextPath((0, 0), lettering(prim.text), size=prim.size, prop=_font())
-    ext = tp.get_extents()
-    shift = {"start": 0.0, "middle": -ext.width / 2 - ext.x0, "end": -ext.width - ext.x0}[prim.anchor]
+    pieces = []   # (TextPath, x offset, baseline shift) per run of the markup, by the glyphs' advances
+    pen = start = 0.0
+    for run, _x, size, up in run_offsets(prim.text, prim.size):
+        x_run = start if run.stacked else pen
+        start = x = x_run
+        for piece in (p for p in _MISSING.split(run.text) if p):     # → ⊥ ∥ … from the symbols' font
+            tp = TextPath((0, 0), lettering(piece), size=size, prop=_font(symbols=piece in MISSING))
+            pieces.append((tp, x, up))
+            ext = tp.get_extents()
+            x += (ext.x0 + ext.width if len(tp.vertices) else 0.0) + 0.25 * size * piece.endswith(" ")
+        pen = max(pen, x)
+    boxes = [(tp.get_extents(), dx) for tp, dx, _ in pieces]
+    left = min((e.x0 + dx for e, dx in boxes), default=0.0)
+    right = max((e.x0 + e.width + dx for e, dx in boxes), default=0.0)
+    shift = {"start": 0.0, "middle": -(left + right) / 2, "end": -right}[prim.anchor]
     x0, y0 = prim.points[0]
     parts = []
-    for poly in tp.to_polygons(closed_only=True):
-        pts = [(x0 + x + shift, y0 + y) for x, y in poly]
-        if len(pts) < 3:
-            continue
-        parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")
+    for tp, dx, up in pieces:
+        for poly in tp.to_polygons(closed_only=True):
+            pts = [(x0 + x + dx + shift, y0 + y + up) for x, y in poly]
+            if len(pts) < 3:
+                continue
+            parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")
     return " ".join(parts) or "M0,0"

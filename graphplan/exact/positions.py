@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from graphplan.util.words import Fixed, pair_kind, said, word
 from graphplan.util.errors import AssemblyError, SceneError
 from graphplan.exact.kinematics import Kinematics, solve
 from graphplan.model.mechanism import FRAME, Mechanism
@@ -49,6 +50,11 @@ class Study:
     extremes: tuple[float, ...]     # crank angles where the output stops, deg
     t0: dict[str, float]            # slide coordinates at position 0
     warnings: list[str] = field(default_factory=list)   # cycle-level warnings (near-locking groups)
+    warnings_uk: list[str] = field(default_factory=list)  # the same in Ukrainian
+
+    def says(self, lang: str) -> list[str]:
+        """The warnings in ``lang`` (util.words)."""
+        return self.warnings_uk if lang == "uk" else self.warnings
 
     def positions(self, count: int | None = None) -> np.ndarray:
         """Crank angles of positions 0 … N−1, in the order the crank passes them (deg, [0, 360))."""
@@ -93,19 +99,19 @@ def default_output(mech: Mechanism, structure: Structure) -> Output:
 def study(mech: Mechanism) -> Study:
     """Structure, assembly check over the full turn, extremes and position 0."""
     structure = analyse(mech)
-    warnings = check_assembly(mech, structure)
+    said_ = check_assembly(mech, structure)
     output = default_output(mech, structure)
     extremes = find_extremes(mech, structure, output)
     phi0 = choose_start(mech, structure, output, extremes)
     kin0 = solve(mech, structure, [phi0])
     return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()},
-                 warnings)
+                 [s["en"] for s in said_], [s["uk"] for s in said_])
 
 
-def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
+def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]]:
     """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does,
     or that locks (its direction lines coincide) at some angle; return warnings for groups whose
-    direction lines cross at less than ``WARN_DEG`` somewhere in the turn."""
+    direction lines cross at less than ``WARN_DEG`` somewhere in the turn (each in every language)."""
     grid = np.arange(GRID) * 360.0 / GRID
     kin = solve(mech, structure, grid)
     warnings = []
@@ -121,9 +127,8 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
                 warnings += _block_near_pivot(kin, dyad, grid)
             angle = math.degrees(math.asin(min(worst, 1.0)))
             if angle < WARN_DEG:
-                warnings.append(f"{dyad.title}: its direction lines cross at only {angle:.2f}° "
-                                f"near crank angle {deg(phi, 2)} (close to locking; plans there are "
-                                "ill-conditioned)")
+                warnings.append(said("warn near locking", dyad=_named(dyad), angle=Fixed(angle, 2),
+                                     phi=Fixed(float(round(phi % 360.0, 2) % 360.0), 2)))
             continue
         if not np.any(ok):
             raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
@@ -137,7 +142,7 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[str]:
     return warnings
 
 
-def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[str]:
+def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[dict[str, str]]:
     """A slotted link whose block passes close to the rocker's pivot turns violently there
     (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value."""
     slider, carrier, outer_s, outer_c = dyad.block_parts
@@ -146,8 +151,14 @@ def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[str]:
     if rho[k] >= 0.05 * np.max(rho):
         return []
     w = float(np.max(np.abs(kin.bodies[carrier].omega)))
-    return [f"{dyad.title}: the block {outer_s.point} passes within {rho[k] * 1000:.3g} mm of the pivot "
-            f"{outer_c.point} near crank angle {deg(grid[k])}; the slotted link's ω reaches {w:.4g} rad/s"]
+    return [said("warn block near pivot", dyad=_named(dyad), block=outer_s.point, mm=float(rho[k] * 1000),
+                 pivot=outer_c.point, phi=Fixed(float(round(grid[k] % 360.0, 1) % 360.0), 1), w=w)]
+
+
+def _named(dyad):
+    """The dyad as a message names it, in the language asked for."""
+    return lambda lang: word("dyad title", lang, label=dyad.label, kind=pair_kind(dyad.kind, lang), a=dyad.a,
+                             b=dyad.b)
 
 
 def deg(angle: float, digits: int = 1) -> str:

@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.util.words import fixed, num
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
 from graphplan.graphic import qualitative
@@ -419,9 +420,9 @@ def _where(d: Diagrams, k: int, lang: str) -> str:
     a = 100 * abs(d.truth["a_mid"][k]) / d.maxima["a"]
     sym = d.symbols[2]
     if lang == "uk":
-        place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
+        place = f"{k}–{k + 1} (φ = {fixed(d.phi[k], lang, 1)}…{fixed(d.phi[k + 1], lang, 1)}°"
         if e is not None:
-            return place + f", біля крайнього положення φ = {e:.1f}°)"
+            return place + f", біля крайнього положення φ = {fixed(e, lang, 1)}°)"
         return place + f", крутий згин: |{sym}| = {a:.0f} % від максимуму)"
     place = f"{k}–{k + 1} (φ = {d.phi[k]:.1f}…{d.phi[k + 1]:.1f}°"
     if e is not None:
@@ -458,13 +459,13 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
         elif bad.size:
             worst = bad[np.argsort(-np.abs(err[bad]))][:3]
             en = "; ".join(f"{err[k]:+.1f} % in interval {_where(d, k, 'en')}" for k in worst)
-            uk = "; ".join(f"{err[k]:+.1f} % в інтервалі {_where(d, k, 'uk')}" for k in worst)
+            uk = "; ".join(f"{fixed(err[k], 'uk', 1, plus=True)} % в інтервалі {_where(d, k, 'uk')}" for k in worst)
             out.append({"kind": "chord_error", "diagram": sym, "intervals": [int(k) for k in bad],
                         "max_pct_of_max": float(np.max(np.abs(err))),
                         "message": f"chord error of {sym} exceeds {LAB_LIMIT:g} % of |{sym}|max in {bad.size} "
                                    f"of {n} intervals: {en}; take smaller intervals there (--adaptive) or "
                                    "more divisions",
-                        "message_uk": f"похибка хорд для {sym} перевищує {LAB_LIMIT:g} % від |{sym}|max у "
+                        "message_uk": f"похибка хорд для {sym} перевищує {num(LAB_LIMIT, 'uk')} % від |{sym}|_max у "
                                       f"{bad.size} з {n} інтервалів: {uk}; там треба менші інтервали "
                                       "(--adaptive) або більше поділок"})
     for key, sym in (("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
@@ -477,8 +478,10 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
                         "error_pct": [float(pct[k]) for k in bad],
                         "message": f"{sym} read at the division ordinates misses the lab's {LAB_LIMIT:g} % at "
                                    f"{text}",
-                        "message_uk": f"{sym}, прочитане на ординатах поділу, виходить за {LAB_LIMIT:g} % "
-                                      f"лабораторної роботи в {text}"})
+                        "message_uk": f"{sym}, прочитане на ординатах поділу, виходить за {num(LAB_LIMIT, 'uk')} % "
+                                      f"лабораторної роботи в " + ", ".join(
+                                          f"{k} ({fixed(pct[k], 'uk', 1, plus=True)} %)" for k in bad[:8])
+                                      + (" …" if bad.size > 8 else "")})
     ruler = ruler_effect(d)
     if ruler is not None:
         s0, v1, v2 = d.symbols
@@ -492,9 +495,9 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
                     "message": f"{en} reading error (RMS, % of the maximum): {errs}; "
                                f"the first differentiation amplifies it ×{ruler['first']:.1f}, the second "
                                f"×{ruler['second']:.1f}",
-                    "message_uk": f"{uk} (СКВ, % від максимуму): {errs}; "
-                                  f"перше диференціювання підсилює її ×{ruler['first']:.1f}, друге "
-                                  f"×{ruler['second']:.1f}"})
+                    "message_uk": f"похибка відліку лінійкою {num(d.precision, 'uk')} мм (СКВ, % від максимуму): "
+                                  f"{errs.replace('.', ',')}; перше диференціювання підсилює її "
+                                  f"×{fixed(ruler['first'], 'uk', 1)}, друге ×{fixed(ruler['second'], 'uk', 1)}"})
     for sym, rd, H, opt in ((d.symbols[1], d.drawn.v, d.H1, "--h1"), (d.symbols[2], d.drawn.a, d.H2, "--h2")):
         tall = float(np.ptp(np.append(rd, 0.0)))
         if tall > 200 or tall < 15:
@@ -502,7 +505,7 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
             out.append({"kind": "height", "diagram": sym, "height_mm": tall,
                         "message": f"the {sym} diagram is {tall:.0f} mm tall with H = {H:g} mm; "
                                    f"{opt} {better:.0f} would make it about 60 mm",
-                        "message_uk": f"діаграма {sym} має висоту {tall:.0f} мм при H = {H:g} мм; "
+                        "message_uk": f"діаграма {sym} має висоту {tall:.0f} мм при H = {num(H, 'uk')} мм; "
                                       f"{opt} {better:.0f} дасть близько 60 мм"})
     out.extend(qualitative.check(d))
     if d.study.mech.crank.epsilon != 0:

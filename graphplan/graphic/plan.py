@@ -6,6 +6,7 @@ import math
 from dataclasses import dataclass, field
 
 
+from graphplan.util.words import LANGS, fixed, num, word
 from graphplan.graphic.record import LabelRequest, Record
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.kinematics import Kinematics
@@ -46,7 +47,12 @@ class PlanWarning:
     group: str
     kind: str        # "lines", "arcs", "dead centre"
     angle: float
-    text: str
+    text: str        # English (the JSON's)
+    text_uk: str = ""
+
+    def say(self, lang: str) -> str:
+        """The warning in ``lang`` (util.words)."""
+        return self.text_uk if lang == "uk" and self.text_uk else self.text
 
 
 @dataclass
@@ -216,10 +222,10 @@ class Plan:
             self.vector(eq.end, x, eq.unknown_role, step)
         if angle < SMALL_ANGLE_DEG:
             slip = 0.5 / math.sin(math.radians(max(angle, 1e-9)))
-            self.warnings.append(PlanWarning(
-                self.kind, group, "lines", angle,
-                f"{self.kind} plan, {group} ({step}): the direction lines cross at {angle:.1f}° "
-                f"(< {SMALL_ANGLE_DEG:g}°); a 0.5 mm slip moves {what} by {slip:.1f} mm"))
+            said = {lang: word("warn lines", lang, plan=word(f"{self.kind} plan lower", lang), group=group,
+                               step=step, angle=fixed(angle, lang, 1), limit=num(SMALL_ANGLE_DEG, lang),
+                               what=what, slip=fixed(slip, lang, 1)) for lang in LANGS}
+            self.warnings.append(PlanWarning(self.kind, group, "lines", angle, said["en"], said["uk"]))
         return x
 
     # images -------------------------------------------------------------------------------------------

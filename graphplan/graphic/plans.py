@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphplan.util.words import fixed, num, word
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.kinematics import Kinematics
 from graphplan.model.mechanism import Mechanism
@@ -202,8 +203,10 @@ def build_plans(st: Study, count: int | None = None, accel: Sequence[str | int |
                 acc.group(d)
             acc.finish()
         warnings = [PlanWarning("position", c.group, c.kind, c.angle,
-                                f"position plan, {c.group}: {c.what} at {c.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°), "
-                                + ("nearly tangent" if c.kind == "arcs" else "nearly parallel"))
+                                *(word("warn position", lang, group=c.group, what=c.what, angle=fixed(c.angle, lang, 1),
+                                       limit=num(SMALL_ANGLE_DEG, lang),
+                                       how=word("nearly tangent" if c.kind == "arcs" else "nearly parallel", lang))
+                                  for lang in ("en", "uk")))
                     for c in lay.angles if c.angle < SMALL_ANGLE_DEG]
         warnings += vel.warnings + (acc.warnings if acc else [])
         results.append(PositionPlans(key, index, float(phi), lay, vel, acc, warnings))

@@ -8,6 +8,7 @@ import math
 from dataclasses import dataclass, field
 
 
+from graphplan.util.markup import indexed
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study
 from graphplan.model.structure import Dyad
@@ -93,9 +94,9 @@ class Layout:
 # -- the mechanism as the draftsman sees it ------------------------------------------------------
 
 def sub(name: str) -> str:
-    """Plan notation: the mechanism point's lowercase letter (S2 → s2, A3 → a3). Plain ASCII: the
-    drawing font (osifont) has no subscript digits."""
-    return name.lower()
+    """Plan notation: the mechanism point's lowercase letter, its number as a subscript (util.markup:
+    S2 → s_2, A3 → a_3, B → b)."""
+    return indexed(name.lower())
 
 
 class Scheme:

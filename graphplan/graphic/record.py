@@ -11,6 +11,8 @@ import math
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
+from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, Run, is_plain, runs
+
 Point = tuple[float, float]
 
 # roles → line style: thick lines for links and result vectors, thin for construction (GOST 2.303)
@@ -94,17 +96,47 @@ def _advances() -> tuple[dict[str, float], float]:
     from importlib import resources
 
     from fontTools.ttLib import TTFont
-    font = TTFont(str(resources.files("graphplan") / "data" / "fonts" / "osifont.ttf"), lazy=True)
-    em, widths = font["head"].unitsPerEm, font["hmtx"]
-    return ({chr(code): widths[name][0] / em for code, name in font.getBestCmap().items()},
-            widths[".notdef"][0] / em)
+    folder = resources.files("graphplan") / "data" / "fonts"
+    advance: dict[str, float] = {}
+    for name in ("graphplan-symbols.ttf", "osifont.ttf"):      # osifont's own glyphs win
+        font = TTFont(str(folder / name), lazy=True)
+        em, widths = font["head"].unitsPerEm, font["hmtx"]
+        advance.update({chr(code): widths[g][0] / em for code, g in font.getBestCmap().items()})
+    return advance, widths[".notdef"][0] / em
+
+
+def plain_width(text: str, size: float) -> float:
+    """Width of ``text`` taken literally (no markup): the sum of the packaged font's advance widths ×
+    the height (cairo sets text by advances, without kerning), a missing character as the font's box."""
+    advance, box = _advances()
+    return size * sum(advance.get(c, box) for c in lettering(text))
+
+
+def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]:
+    """Each run of the markup (util.markup) with its x offset from the text's start, its letter
+    height and its baseline shift (mm, + up): sub- and superscripts 0.7 high, stacked ones over
+    each other."""
+    out = []
+    x = 0.0
+    start = 0.0
+    for r in runs(text):
+        s = size * SMALL if r.level else size
+        if r.stacked:
+            x0 = start
+        else:
+            x0 = start = x
+        shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
+        out.append((r, x0, s, shift))
+        x = max(x, x0 + plain_width(r.text, s))
+    return out
 
 
 def text_width(text: str, size: float) -> float:
-    """Width of the lettering as drawn: the sum of the font's advance widths × the height (cairo sets
-    text by advances, without kerning), a missing character as the font's box."""
-    advance, box = _advances()
-    return size * sum(advance.get(c, box) for c in lettering(text))
+    """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps;
+    sub- and superscripts of the markup (util.markup) at their smaller size, stacked ones once."""
+    if is_plain(text):
+        return plain_width(text, size)
+    return max((x0 + plain_width(r.text, s) for r, x0, s, _ in run_offsets(text, size)), default=0.0)
 
 
 @dataclass

@@ -14,7 +14,8 @@ from graphplan.util.errors import GraphplanError
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 
 UNITS = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "mu_F": "N/mm"}
-SYMBOLS = {"mu_l": "μl", "mu_v": "μv", "mu_a": "μa", "mu_F": "μF"}
+SYMBOLS = {"mu_l": "μ_l", "mu_v": "μ_v", "mu_a": "μ_a", "mu_F": "μ_F", "mu_t": "μ_t", "mu_s": "μ_s",
+           "mu_M": "μ_M"}   # markup (util.markup): μ with a subscript
 
 
 @dataclass(frozen=True)
@@ -79,6 +80,9 @@ def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | 
     return at_least(need)
 
 
-def format_scale(name: str, mu: float) -> str:
-    """"μv = 0.2 (m/s)/mm" — the coefficient with its symbol and unit."""
-    return f"{SYMBOLS.get(name, name)} = {mu:g} {UNITS.get(name, '')}".rstrip()
+def format_scale(name: str, mu: float, lang: str = "en") -> str:
+    """"μ_v = 0.2 (m/s)/mm" (Ukrainian: "μ_v = 0,2 (м/с)/мм") — the coefficient with its symbol
+    (markup) and unit in the language."""
+    from graphplan.util.words import num, unit
+    u = UNITS.get(name)
+    return f"{SYMBOLS.get(name, name)} = {num(mu, lang)} {unit(u, lang) if u else ''}".rstrip()

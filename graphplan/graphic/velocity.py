@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from graphplan.util.words import LANGS, fixed, word
 from graphplan.model.mechanism import FRAME
 from graphplan.util.errors import GraphplanError
 from graphplan.model.structure import Dyad
@@ -18,7 +19,7 @@ from graphplan.graphic.plan import Equation, Exact, Plan, PlanWarning, VANISH
 
 class VelocityPlan(Plan):
     kind = "velocity"
-    pole = "pv"
+    pole = "p_v"
     rate_kind = "omega"
     index = 1
 
@@ -51,15 +52,18 @@ class VelocityPlan(Plan):
             gaps = [abs((phi - e + 180.0) % 360.0 - 180.0) for e in st.extremes]
             j = int(np.argmin(gaps))
             angle = gaps[j]
-            near = f", {angle:.2f}° from the extreme position φ = {st.extremes[j]:.2f}°"
         order = [d.label for d in st.structure.dyads]
         groups = sorted({g for g, _ in stopped}, key=order.index)
         names = ", ".join(f"v_{n}" for _, n in stopped)
-        verb = "vanishes" if len(stopped) == 1 else "vanish"
-        self.warnings.append(PlanWarning(
-            "velocity", " ".join(groups), "dead centre", angle,
-            f"dead centre of {' and '.join(groups)} at φ = {phi:.2f}°{near}: {names} {verb}; "
-            "their percent errors are left out"))
+        said = {}
+        for lang in LANGS:
+            near = "" if not st.extremes else word("near extreme", lang, phi=fixed(st.extremes[j], lang, 2),
+                                                   angle=fixed(angle, lang, 2))
+            said[lang] = word("warn dead centre", lang, groups=f" {word('and', lang)} ".join(groups),
+                              phi=fixed(phi, lang, 2), near=near, names=names,
+                              verb=word("vanishes" if len(stopped) == 1 else "vanish", lang))
+        self.warnings.append(PlanWarning("velocity", " ".join(groups), "dead centre", angle,
+                                         said["en"], said["uk"]))
 
     def finish(self) -> None:
         super().finish()

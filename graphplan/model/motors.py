@@ -139,10 +139,15 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
     if off:
         swapped = (len(printed) == 2 and abs(printed["omega_sync"] - computed["omega_rated"]) < 5e-3 * computed["omega_rated"] + 0.5
                    and abs(printed["omega_rated"] - computed["omega_sync"]) < 5e-3 * computed["omega_sync"] + 0.5)
-        given = ", ".join(f"{k} = {printed[k]:g}" for k in sorted(printed))
-        computed_text = f"ω_c = {motor.omega_sync:.2f}, ω_n = {motor.omega_rated:.2f}"
-        warnings.append((f"{key}: the given {given} rad/s {'are swapped' if swapped else 'disagree'} against "
-                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} rpm; computed from the speeds: {computed_text} rad/s",
-                         f"{key}: задані {given} рад/с {'переставлені відносно' if swapped else 'не відповідають'} "
-                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} об/хв; обчислено за швидкостями: {computed_text} рад/с"))
+        symbol = {"omega_sync": "ω_c", "omega_rated": "ω_n"}
+        def listed(comma: bool) -> str:
+            text = ", ".join(f"{symbol[k]} = {printed[k]:g}" for k in sorted(printed))
+            return text.replace(".", ",").replace(", ω", "; ω") if comma else text
+        def computed_text(comma: bool) -> str:
+            text = f"ω_c = {motor.omega_sync:.2f}, ω_n = {motor.omega_rated:.2f}"
+            return text.replace(".", ",").replace(", ω", "; ω") if comma else text
+        warnings.append((f"{key}: the given {listed(False)} rad/s {'are swapped' if swapped else 'disagree'} against "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} rpm; computed from the speeds: {computed_text(False)} rad/s",
+                         f"двигун: задані {listed(True)} рад/с {'переставлені відносно' if swapped else 'не відповідають'} "
+                         f"{motor.rpm_sync:g}/{motor.rpm_rated:g} об/хв; обчислено за швидкостями: {computed_text(True)} рад/с"))
     return motor, warnings

@@ -20,7 +20,7 @@ from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, M
 
 BUILTIN = "crank_slider.toml"
 
-_TOP = {"diagrams", "title", "title_en", "designation", "sheet", "params", "synthesis", "frame", "crank",
+_TOP = {"diagrams", "title", "title_en", "designation", "lang", "sheet", "params", "synthesis", "frame", "crank",
         "link", "branch", "positions", "loads", "force", "dynamics"}
 _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
           "shape", "guide", "mass", "inertia", "com"}
@@ -496,6 +496,10 @@ class _Reader:
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}
+        if "lang" in data:
+            if data["lang"] not in ("uk", "en"):
+                raise self.fail("lang", f"must be \"uk\" or \"en\", got {data['lang']!r}")
+            meta["lang"] = data["lang"]
         sheet = data.get("sheet", {})
         if not isinstance(sheet, dict):
             raise self.fail("sheet", "must be a table")

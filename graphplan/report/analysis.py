@@ -9,6 +9,8 @@ import numpy as np
 
 from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
+from graphplan.util.markup import plain
+from graphplan.util.words import fixed, num, pair_kind, unit, word
 
 
 def analyze_json(st: Study, phi_deg: np.ndarray, indices: list[int]) -> dict[str, Any]:
@@ -53,50 +55,55 @@ def float_c(z: complex) -> complex:
     return complex(float(np.real(z)), float(np.imag(z)))
 
 
-def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int]) -> str:
-    """Readable tables: velocities and accelerations of the points, ω and ε, the slides."""
+DERIVED = {"theta_deg": "θ, °"}   # derived parameters written as the lab writes them
+
+
+def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str = "uk") -> str:
+    """Readable tables: velocities and accelerations of the points, ω and ε, the slides; in ``lang``."""
     mech = st.mech
     kin = st.solve(phi_deg)
     s = st.structure
-    lines = [mech.title,
-             f"ω1 = {mech.omega1:.4g} rad/s ({abs(mech.omega1) * 30 / math.pi:.4g} rpm, "
-             f"{'counter-clockwise' if mech.omega1 > 0 else 'clockwise'}), ε1 = {mech.crank.epsilon:g} rad/s²",
-             f"W = 3n − 2p5 − p4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility};  {s.formula}"]
+    w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
+    n = lambda v: num(v, lang)  # noqa: E731
+    title = mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title)
+    lines = [title,
+             f"ω₁ = {n(mech.omega1)} {unit('rad/s', lang)} ({n(abs(mech.omega1) * 30 / math.pi)} {unit('rpm', lang)}, "
+             f"{w('ccw') if mech.omega1 > 0 else w('cw')}), ε₁ = {n(mech.crank.epsilon)} {unit('rad/s²', lang)}",
+             f"W = 3n − 2p₅ − p₄ = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility};  {s.formula}"]
     for d in s.dyads:
-        lines.append(f"  {d.label}: {d.kind}, links {d.a} and {d.b}")
+        lines.append(w("dyad line", label=d.label, kind=pair_kind(d.kind, lang), a=d.a, b=d.b))
     for key, value in mech.derived.items():
-        lines.append(f"  derived {key} = {value:.5g}")
-    ex = ", ".join(f"{e:.3f}°" for e in st.extremes) or "none (the output turns fully)"
-    lines.append(f"output {st.output.name}; extreme positions at φ = {ex}; position 0 at φ = {st.phi0:.3f}°")
+        lines.append(w("derived", key=DERIVED.get(key, key), value=num(value, lang, 5)))
+    ex = ", ".join(f"{fixed(e, lang, 3)}°" for e in st.extremes) or w("turns fully")
+    lines.append(w("output line", name=st.output.name, ex=ex, phi0=fixed(st.phi0, lang, 3)))
     moving = [p for p in mech.point_names() if p not in mech.frame]
-    head = ["No", "φ, °"]
+    head = [w("no"), "φ, °"]
 
     def table(title: str, columns: list[str], rows: list[list[float]]) -> None:
         lines.append("")
         lines.append(title)
         widths = [max(len(c), 9) for c in columns]
-        lines.append("  ".join(c.rjust(w) for c, w in zip(head + columns, [3, 7] + widths)))
+        lines.append("  ".join(c.rjust(wd) for c, wd in zip(head + columns, [3, 7] + widths)))
         tiny = 1e-10 * max((abs(v) for r in rows for v in r), default=0.0)  # round-off → 0
         for index, phi, row in zip(indices, phi_deg, rows):
             row = [0.0 if abs(v) <= tiny else v for v in row]
-            cells = [f"{index:>3}", f"{phi:7.2f}"] + [f"{v:{w}.4g}" for v, w in zip(row, widths)]
+            cells = [f"{index:>3}", f"{fixed(phi, lang, 2):>7}"] + [f"{n(v):>{wd}}" for v, wd in zip(row, widths)]
             lines.append("  ".join(cells))
 
     vel = [np.abs(kin.point(p)[1]) for p in moving]
     acc = [np.abs(kin.point(p)[2]) for p in moving]
-    n = len(phi_deg)
-    table("Velocities of points |v|, m/s", [f"v_{p}" for p in moving], [[q[k] for q in vel] for k in range(n)])
-    table("Accelerations of points |a|, m/s²", [f"a_{p}" for p in moving], [[q[k] for q in acc] for k in range(n)])
+    count = len(phi_deg)
+    table(w("point velocities"), [f"v_{p}" for p in moving], [[q[k] for q in vel] for k in range(count)])
+    table(w("point accelerations"), [f"a_{p}" for p in moving], [[q[k] for q in acc] for k in range(count)])
     links = [name for name in mech.links if name != mech.crank.link]
-    table("Angular velocities ω (+ counter-clockwise), rad/s", [f"ω_{n_}" for n_ in links],
-          [[kin.bodies[n_].omega[k] for n_ in links] for k in range(n)])
-    table("Angular accelerations ε, rad/s²", [f"ε_{n_}" for n_ in links],
-          [[kin.bodies[n_].eps[k] for n_ in links] for k in range(n)])
+    table(w("angular velocities"), [f"ω_{n_}" for n_ in links],
+          [[kin.bodies[n_].omega[k] for n_ in links] for k in range(count)])
+    table(w("angular accelerations"), [f"ε_{n_}" for n_ in links],
+          [[kin.bodies[n_].eps[k] for n_ in links] for k in range(count)])
     for key, sl in kin.slides.items():
-        table(f"Slide {key} ({sl.slider} on {sl.carrier if sl.carrier != FRAME else 'the frame'}): "
-              "s from position 0, m; v, a along the guide; Coriolis |a_k|",
+        table(w("slide table", key=key, slider=sl.slider, carrier=sl.carrier if sl.carrier != FRAME else w("the frame")),
               ["s", "v", "a", "a_k"],
-              [[sl.t[k] - st.t0[key], sl.v[k], sl.a[k], sl.coriolis_magnitude[k]] for k in range(n)])
+              [[sl.t[k] - st.t0[key], sl.v[k], sl.a[k], sl.coriolis_magnitude[k]] for k in range(count)])
     if st.warnings:
-        lines += ["", "Warnings:"] + [f"  {w}" for w in st.warnings]
+        lines += ["", w("warnings") + ":"] + [f"  {wn}" for wn in st.says(lang)]
     return "\n".join(lines) + "\n"

@@ -6,7 +6,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from graphplan.drawing.diagrams import WORDS, fmt, method_words, scale_lines, units  # noqa: F401
+from graphplan.drawing.diagrams import fmt, method_words, scale_lines, units  # noqa: F401
+from graphplan.util.markup import plain
+from graphplan.util.words import fixed, num, pct, unit, word
 
 if TYPE_CHECKING:
     from graphplan.graphic.diagrams import Diagrams
@@ -80,10 +82,9 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
 def sheet_notes(d: Diagrams, lang: str) -> list[str]:
     """The lines a sheet's notes give the diagrams: which method drew them, and what they get
     qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
-    w = WORDS[lang]
-    what = f"{w['point'] if d.output.kind == 'slide' else w['link']} {d.point}"
-    lines = [(w["title"].format(what=what, how=method_words(d, lang))
-              + f", {d.divisions} " + ("поділок" if lang == "uk" else "divisions"))]
+    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {d.point}"
+    lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
+             + ", " + word("divisions count", lang, n=d.divisions)]
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
     return lines
 
@@ -97,18 +98,20 @@ def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]
 
 # -- tables ----------------------------------------------------------------------------------------
 
-def _pct(p) -> str:
-    return "—" if p is None or not math.isfinite(p) else f"{p:+.2f}"
+def _pct(p, lang: str = "en") -> str:
+    return pct(p, lang)
 
 
 def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
-    w = WORDS[lang]
+    w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
     s_, v_, a_ = d.symbols
     us, uv, ua = units(d, lang)
-    what = f"{w['point'] if d.output.kind == 'slide' else w['link']} {d.point}"
-    lines = [d.study.mech.title, w["title"].format(what=what, how=method_words(d, lang)),
-             w["period"].format(T=d.study.mech.period, L=d.L), f"{w['scales']}:"]
-    lines += ["  " + t for t in scale_lines(d, lang)]
+    what = f"{w('sliding output' if d.output.kind == 'slide' else 'rotating output')} {d.point}"
+    mech = d.study.mech
+    lines = [mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title),
+             w("diagrams title", what=what, how=method_words(d, lang)),
+             w("period", T=num(mech.period, lang), L=num(d.L, lang)), f"{w('scales')}:"]
+    lines += ["  " + plain(t) for t in scale_lines(d, lang)]
     vals = d.values()
 
     def block(title: str, head: list[str], rows: list[list[str]]) -> None:
@@ -121,46 +124,48 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
 
     def g(x: float, key: str) -> str:
         """5 significant digits; round-off below 1e-9 of the cycle's maximum shows as 0."""
-        return f"{0.0 if abs(x) <= 1e-9 * d.maxima[key] else x + 0.0:.5g}"
+        return num(0.0 if abs(x) <= 1e-9 * d.maxima[key] else x + 0.0, lang, 5)
 
     def row_at(k: int) -> list[str]:
         r = d.drawn
         pos = d.position[k]
-        return [str(pos if pos is not None else f"({k})"), f"{d.phi[k]:.2f}", f"{r.s[k]:.1f}",
+        f1 = lambda v: fixed(v, lang, 1)  # noqa: E731
+        return [str(pos if pos is not None else f"({k})"), fixed(d.phi[k], lang, 2), f1(r.s[k]),
                 g(vals['s'][k], "s"), g(d.truth['s'][k], "s"),
-                f"{r.v_at[k]:.1f}", g(vals['v_at'][k], "v"), g(d.truth['v_at'][k], "v"),
-                _pct(d.errors_pct('v_at')[k]),
-                f"{r.a_at[k]:.1f}", g(vals['a_at'][k], "a"), g(d.truth['a_at'][k], "a"),
-                _pct(d.errors_pct('a_at')[k])]
+                f1(r.v_at[k]), g(vals['v_at'][k], "v"), g(d.truth['v_at'][k], "v"),
+                _pct(d.errors_pct('v_at')[k], lang),
+                f1(r.a_at[k]), g(vals['a_at'][k], "a"), g(d.truth['a_at'][k], "a"),
+                _pct(d.errors_pct('a_at')[k], lang)]
 
-    mm = w["mm"]
-    head = [w["no"], "φ, °", f"{s_}, {mm}", f"{s_}, {us}", w["exact"], f"{v_}, {mm}", f"{v_}, {uv}", w["exact"],
-            w["err"], f"{a_}, {mm}", f"{a_}, {ua}", w["exact"], w["err"]]
-    block(w["at"], head, [row_at(k) for k in range(d.divisions)])
+    mm = unit("mm", lang)
+    head = [w("no"), "φ, °", f"{s_}, {mm}", f"{s_}, {us}", w("exact"), f"{v_}, {mm}", f"{v_}, {uv}", w("exact"),
+            w("error pct"), f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")]
+    block(w("at ordinates"), head, [row_at(k) for k in range(d.divisions)])
     chosen = [k for k in range(d.divisions) if d.position[k] in d.chosen]
     if chosen:
-        block(w["chosen"], head, [row_at(k) for k in chosen])
+        block(w("chosen"), head, [row_at(k) for k in chosen])
     rows = []
     tangents = d.method == "tangents"
     for k in range(d.divisions):
         r = d.drawn
-        rows.append([str(k) if tangents else f"{k}–{k + 1}", f"{d.phi_mid[k]:.2f}", f"{r.v[k]:.1f}", g(vals['v_mid'][k], "v"),
-                     g(d.truth['v_mid'][k], "v"), _pct(d.errors_pct('v_mid')[k]),
-                     f"{r.a[k]:.1f}", g(vals['a_mid'][k], "a"), g(d.truth['a_mid'][k], "a"),
-                     _pct(d.errors_pct('a_mid')[k])])
-    block(w["mid_t" if tangents else "mid"], [w["no"] if tangents else w["int"], "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w["exact"], w["err"],
-                     f"{a_}, {mm}", f"{a_}, {ua}", w["exact"], w["err"]], rows)
+        rows.append([str(k) if tangents else f"{k}–{k + 1}", fixed(d.phi_mid[k], lang, 2), fixed(r.v[k], lang, 1), g(vals['v_mid'][k], "v"),
+                     g(d.truth['v_mid'][k], "v"), _pct(d.errors_pct('v_mid')[k], lang),
+                     fixed(r.a[k], lang, 1), g(vals['a_mid'][k], "a"), g(d.truth['a_mid'][k], "a"),
+                     _pct(d.errors_pct('a_mid')[k], lang)])
+    block(w("tangent ordinates" if tangents else "chord ordinates"), [w("no") if tangents else w("interval"), "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w("exact"), w("error pct"),
+                                 f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")], rows)
     lines.append("")
-    lines.append(w["integ"] + ":")
+    lines.append(w("integration") + ":")
     r = d.drawn
     for key, got, ref, mx in (("v_from_a", r.v_int, r.v_at, d.maxima["v"] / d.mu_v),
                               ("s_from_a", r.s_int, r.s, d.maxima["s"] / d.mu_s),
                               ("s_from_v", r.s_int_v, r.s, d.maxima["s"] / d.mu_s)):
         dev = got - ref
-        lines.append(f"  {w[key]}: " + w["dev"].format(mm=float(np.max(np.abs(dev))),
-                                                        pct=float(100 * np.max(np.abs(dev)) / mx), cl=float(dev[-1])))
+        lines.append(f"  {w(key.replace('_', ' '))}: " + w("deviation", mm=fixed(float(np.max(np.abs(dev))), lang, 2),
+                                                             pct=fixed(float(100 * np.max(np.abs(dev)) / mx), lang, 2),
+                                                             cl=fixed(float(dev[-1]), lang, 2, plus=True)))
     lines.append("")
-    lines.append(w["warn"] + ":" + ("" if d.warnings else " " + w["none"]))
+    lines.append(w("warnings") + ":" + ("" if d.warnings else " " + w("none")))
     for item in d.warnings:
         lines.append("  - " + item["message_uk" if lang == "uk" else "message"])
     return "\n".join(lines) + "\n"

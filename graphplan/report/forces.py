@@ -5,6 +5,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from graphplan.util.markup import plain
+from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
+
 NULL_BELOW = 1e-6   # error_pct is null where |analytic| < 1e-6 × the largest force (moment) around
 
 
@@ -70,72 +73,76 @@ def _row(cells: list[str], widths: list[int]) -> str:
     return "  ".join(c.rjust(w) for c, w in zip(cells, widths)).rstrip()
 
 
-def forces_table(fp) -> str:
+def forces_table(fp, lang: str = "uk") -> str:
     """Readable tables: the loads, each group's forces and reactions (seed 000, tables 2.4–2.5),
-    the moment equations, the lever and the balancing moment four ways."""
+    the moment equations, the lever and the balancing moment four ways; in ``lang``."""
     ks, mech = fp.ks, fp.ks.mech
     st = ks.st
-    lines = [mech.title,
-             f"force analysis at φ = {fp.phi_deg:.3f}° ({float(st.from_position0(fp.phi_deg)):.3f}° of crank "
-             f"turn from position 0, {'working' if ks.working[0] else 'idle'} stroke)",
-             f"ω1 = {mech.omega1:.5g} rad/s; drafting precision {fp.precision:g} mm; μl = {fp.mu_l:g} m/mm, "
-             f"μF = {fp.mu_F:g} N/mm, μv = {fp.lever.mu_v:g} (m/s)/mm", "",
-             "Loads: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ counter-clockwise), external forces"]
+    w = lambda k_, **kw: word(k_, lang, **kw)  # noqa: E731
+    n = lambda v, digits=4: num(v, lang, digits)  # noqa: E731
+    sym = lambda name: plain(force_symbol(name, lang))  # noqa: E731
+    lines = [mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title),
+             w("forces at", phi=fixed(fp.phi_deg, lang, 3), turn=fixed(float(st.from_position0(fp.phi_deg)), lang, 3),
+               stroke=w("working stroke" if ks.working[0] else "idle stroke")),
+             plain(w("forces scales", w=n(mech.omega1, 5), p=n(fp.precision), ml=n(fp.mu_l), mf=n(fp.mu_F),
+                     mv=n(fp.lever.mu_v))), "",
+             plain(w("loads"))]
     if not ks.loads:
-        lines.append("  none: the scene gives no masses and no forces, so every reaction is zero")
-    w = [8, 6, 11, 9]
+        lines.append("  " + w("no loads"))
+    wd = [8, 6, 11, 9]
     if ks.loads:
-        lines.append(_row(["load", "link", "value", "angle, °"], w))
+        lines.append(_row([w("load"), w("link"), w("value"), w("angle deg")], wd))
     for ld in ks.loads:
         f, c = complex(ld.force[0]), float(ld.couple[0])
         if ld.kind == "couple":
-            lines.append(_row([ld.name, ld.link, f"{c + 0.0:.4g} N·m", ""], w))
+            lines.append(_row([sym(ld.name), ld.link, f"{n(c + 0.0)} {unit('N·m', lang)}", ""], wd))
         else:
-            lines.append(_row([ld.name, ld.link, f"{abs(f):.4g} N",
-                               f"{math.degrees(math.atan2(f.imag, f.real)) % 360:.1f}" if f else ""], w))
+            lines.append(_row([sym(ld.name), ld.link, f"{n(abs(f))} {unit('N', lang)}",
+                               fixed(math.degrees(math.atan2(f.imag, f.real)) % 360, lang, 1) if f else ""], wd))
     for gp in fp.groups:
-        lines += ["", f"Group {gp.label} {gp.kind if gp.kind != 'crank' else '(the crank)'}, "
-                      f"links {', '.join(gp.links)}"]
+        kind = pair_kind(gp.kind, lang) if gp.kind != "crank" else w("crank group")
+        lines += ["", w("group line", label=gp.label, kind=kind, links=", ".join(gp.links))]
         for eq in gp.equations:
-            terms = " ".join(f"{'+' if t.value >= 0 else '−'} {t.name}" +
-                             ("" if t.couple else f"·{abs(t.arm_mm):g}") for t in eq.terms)
+            terms = " ".join(f"{'+' if t.value >= 0 else '−'} {sym(t.name)}" +
+                             ("" if t.couple else f"·{n(abs(t.arm_mm))}") for t in eq.terms)
             if eq.unknown == "M_b":
-                lines.append(f"  ΣM_{eq.about} = 0: M_b {terms} = 0 (forces × arms in mm × μl) "
-                             f"→ M_b = {eq.result:.5g} N·m")
+                lines.append(plain(w("moment eq balancing", about=eq.about, terms=terms, r=n(eq.result, 5))))
             else:
                 sign = "" if eq.arm_mm >= 0 else "−"
-                lines.append(f"  ΣM_{eq.about} = 0: {sign}{eq.unknown}·{abs(eq.arm_mm):.4g} {terms} = 0 "
-                             f"→ {eq.unknown} = {eq.result:.5g} N")
+                lines.append(f"  ΣM_{eq.about} = 0: {sign}{sym(eq.unknown)}·{n(abs(eq.arm_mm))} {terms} = 0 "
+                             f"→ {sym(eq.unknown)} = {n(eq.result, 5)} {unit('N', lang)}")
         cells = []
         for f in gp.forces:
             if f.force:
-                cells.append((f.name, f"{abs(f.force):.5g}", f"{abs(f.force) / fp.mu_F:.4g}"))
+                cells.append((sym(f.name), n(abs(f.force), 5), n(abs(f.force) / fp.mu_F)))
             if f.couple:
-                cells.append((f.name, f"{f.couple:.5g} N·m", "—"))
-        lines.append("  forces on the group (table as in seed 000):")
-        lines.append("  " + _row(["force", "P, N", "drawn, mm"], [10, 12, 10]))
-        lines += ["  " + _row(list(c), [10, 12, 10]) for c in cells]
-        lines.append("  reactions from the force plan:")
-        rw = [8, 9, 10, 9, 11, 9, 9]
-        lines.append("  " + _row(["R", "mm", "value, N", "angle, °", "exact, N", "exact, °", "δ, %"], rw))
+                cells.append((sym(f.name), f"{n(f.couple, 5)} {unit('N·m', lang)}", "—"))
+        lines.append(w("forces on group"))
+        lines.append("  " + _row([w("force"), f"P, {unit('N', lang)}", w("drawn mm")], [10, 12, 14]))
+        lines += ["  " + _row(list(c), [10, 12, 14]) for c in cells]
+        lines.append(w("reactions from plan"))
+        rw = [8, 9, 12, 9, 11, 9, 9]
+        lines.append("  " + _row(["R", unit("mm", lang), f"{w('value')}, {unit('N', lang)}", w("angle deg"),
+                                  w("exact N"), w("exact deg"), "δ, %"], rw))
         for m in gp.reactions.values():
-            lines.append("  " + _row([m.key, f"{m.mm:.4g}", f"{m.value:.5g}", f"{m.angle_deg:.1f}",
-                                      f"{m.analytic:.5g}", f"{m.analytic_angle_deg:.1f}",
-                                      "—" if m.error_pct is None else f"{m.error_pct:+.2f}"], rw))
+            lines.append("  " + _row([sym(m.key), n(m.mm), n(m.value, 5), fixed(m.angle_deg, lang, 1),
+                                      n(m.analytic, 5), fixed(m.analytic_angle_deg, lang, 1),
+                                      pct(m.error_pct, lang)], rw))
     lv = fp.lever
-    lines += ["", f"Zhukovsky lever (velocity plan turned 90°, μv = {lv.mu_v:g} (m/s)/mm, pa = {lv.pa_mm:g} mm):"]
+    lines += ["", plain(w("lever head", mv=n(lv.mu_v), pa=n(lv.pa_mm)))]
     lw = [10, 6, 10, 8, 12]
-    lines.append("  " + _row(["force", "image", "F, N", "h, mm", "F·h, N·mm"], lw))
+    lines.append("  " + _row([w("force"), w("image"), f"F, {unit('N', lang)}", f"h, {unit('mm', lang)}",
+                              f"F·h, {unit('N·mm', lang)}"], lw))
     for t in lv.terms:
-        lines.append("  " + _row([t.name, t.image.lower(), f"{t.force:.5g}", f"{t.arm_mm + 0.0:g}",
-                                  f"{t.moment + 0.0:.6g}"], lw))
-    lines.append(f"  ΣF·h = {lv.total:.6g} N·mm (h + counter-clockwise about the pole)")
-    lines.append(f"  P_b = ΣF·h / pa = {lv.balancing_force:.5g} N;  M_b = P_b·l_OA = {lv.balancing:.5g} N·m")
+        lines.append("  " + _row([sym(t.name), t.image.lower(), n(t.force, 5), n(t.arm_mm + 0.0),
+                                  n(t.moment + 0.0, 6)], lw))
+    lines.append(w("lever sum", s=n(lv.total, 6)))
+    lines.append(plain(w("lever result", p=n(lv.balancing_force, 5), m=n(lv.balancing, 5))))
     a = fp.analytic
-    lines += ["", "Balancing moment on the crank M_b (N·m, + counter-clockwise):"]
-    for name, value in (("closed form (kinetostatics)", a), ("force plans", fp.balancing),
-                        ("Zhukovsky lever", lv.balancing), ("power balance", fp.power)):
+    lines += ["", plain(w("balancing head"))]
+    for name, value in (("closed form", a), ("by force plans", fp.balancing),
+                        ("by lever", lv.balancing), ("by power", fp.power)):
         err = _pct(value, a, abs(a) or 1.0)
-        tail = "" if name.startswith("closed") or err is None else f"   δ = {err:+.3f} %"
-        lines.append(f"  {name:<28} {value:12.6g}{tail}")
+        tail = "" if name == "closed form" or err is None else f"   δ = {fixed(err, lang, 3, plus=True)} %"
+        lines.append(f"  {w(name):<28} {n(value, 6):>12}{tail}")
     return "\n".join(lines) + "\n"

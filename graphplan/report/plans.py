@@ -7,33 +7,11 @@ from typing import Any
 from graphplan.graphic.record import Record
 from graphplan.graphic.plans import NEAR_ZERO, SMALL_ANGLE_DEG, VANISH, Entry, Plan, Plans, PositionPlans
 from graphplan.graphic.scales import UNITS, format_scale
+from graphplan.util.markup import plain
+from graphplan.util.words import fixed, num, pct, unit, word
 
 KIND_ORDER = {"point": 0, "relative": 1, "normal": 2, "tangential": 3, "coriolis": 4,
               "omega": 5, "epsilon": 6}
-
-TEXT = {
-    "en": {
-        "title": "graphical plans", "ruler": "ruler", "exact": "exact",
-        "structure": "structure", "velocities": "Velocities read off the velocity plans, m/s "
-        "(ω, rad/s, + counter-clockwise)", "errors": "Errors against the exact solution, % "
-        "(— where the exact value is ~0)", "accel": "Accelerations at position",
-        "quantity": "quantity", "plan": "plan", "error": "error, %", "warnings": "Warnings",
-        "none": "none", "position": "position", "velocity plan": "velocity plan",
-        "acceleration plan": "acceleration plan", "position plan": "position plan",
-        "rates": "ε, rad/s², + counter-clockwise",
-    },
-    "uk": {
-        "title": "графічні плани", "ruler": "лінійка", "exact": "точно",
-        "structure": "будова", "velocities": "Швидкості, виміряні на планах швидкостей, м/с "
-        "(ω, рад/с, + проти годинникової стрілки)", "errors": "Похибки відносно точного розв'язку, % "
-        "(— де точне значення ≈ 0)", "accel": "Прискорення в положенні",
-        "quantity": "величина", "plan": "план", "error": "похибка, %", "warnings": "Попередження",
-        "none": "немає", "position": "положення", "velocity plan": "план швидкостей",
-        "acceleration plan": "план прискорень", "position plan": "план положень",
-        "rates": "ε, рад/с², + проти годинникової стрілки",
-    },
-}
-
 
 def ordered(plan: Plan) -> list[Entry]:
     """The mechanism's points in the scene's order, then the coincident points (A3), relative
@@ -111,62 +89,56 @@ def signed(e: Entry) -> float:
     return e.vector.real if e.kind in ("omega", "epsilon") else e.value
 
 
-def _num(v: float) -> str:
-    return f"{v:.4g}" if v != 0 else "0"
-
-
-def plans_table(plans: Plans, lang: str = "en") -> str:
+def plans_table(plans: Plans, lang: str = "uk") -> str:
     """The seeds' tables: velocities of all points at all positions (and their errors), the
-    accelerations at the plan positions, ω and ε, and the warnings."""
-    t = TEXT.get(lang, TEXT["en"])
+    accelerations at the plan positions, ω and ε, and the warnings; in ``lang``."""
+    w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
+    n = lambda v: num(v, lang)  # noqa: E731
     st = plans.study
     title = st.mech.task.meta.get("title_en", st.mech.title) if lang == "en" else st.mech.title
-    lines = [f"{title} — {t['title']}",
-             f"{t['structure']}: {st.structure.formula};  {t['ruler']} {plans.precision:g} mm",
-             "; ".join(format_scale(k, v) for k, v in plans.scales.items()), ""]
+    lines = [f"{title} — {w('plans title')}",
+             f"{w('structure')}: {st.structure.formula};  {w('ruler')} {n(plans.precision)} {unit('mm', lang)}",
+             "; ".join(plain(format_scale(k, v, lang)) for k, v in plans.scales.items()), ""]
     keys = [e.key for e in ordered(plans.positions[0].velocity)]
-    heads = [symbol(plans.positions[0].velocity.entries[k], "velocity") for k in keys]
+    heads = [plain(symbol(plans.positions[0].velocity.entries[k], "velocity")) for k in keys]
     widths = [max(8, len(h)) for h in heads]
 
     def row(cells: list[str]) -> str:
-        return "  ".join(c.rjust(w) for c, w in zip(cells, [4, 7] + widths))
+        return "  ".join(c.rjust(wd) for c, wd in zip(cells, [4, 7] + widths))
 
     def label(p: PositionPlans) -> str:
         return str(p.index) if p.index is not None else "*"
 
-    lines += [t["velocities"], row(["No", "φ, °"] + heads)]
+    lines += [w("velocities read"), row([w("no"), "φ, °"] + heads)]
     for p in plans.positions:
-        lines.append(row([label(p), f"{p.phi % 360:.2f}"] +
-                         [_num(signed(p.velocity.entries[k])) for k in keys]))
-    lines += ["", t["errors"], row(["No", "φ, °"] + heads)]
+        lines.append(row([label(p), fixed(p.phi % 360, lang, 2)] +
+                         [n(signed(p.velocity.entries[k])) for k in keys]))
+    lines += ["", w("errors exact"), row([w("no"), "φ, °"] + heads)]
     for p in plans.positions:
-        cells = []
-        for k in keys:
-            err = p.velocity.entries[k].error_pct
-            cells.append("—" if err is None else f"{err:+.2f}")
-        lines.append(row([label(p), f"{p.phi % 360:.2f}"] + cells))
+        cells = [pct(p.velocity.entries[k].error_pct, lang) for k in keys]
+        lines.append(row([label(p), fixed(p.phi % 360, lang, 2)] + cells))
     for p in plans.positions:
         acc = p.acceleration
         if acc is None:
             continue
         where_ = f"{p.index}" if p.index is not None else "*"
-        lines += ["", f"{t['accel']} {where_} (φ = {p.phi % 360:.2f}°), {format_scale('mu_a', plans.mu_a)}; "
-                      f"{t['rates']}",
-                  f"{t['quantity']:>12}  {'mm':>7}  {t['plan']:>10}  {t['exact']:>10}  {t['error']:>9}"]
+        lines += ["", f"{w('accelerations at')} {where_} (φ = {fixed(p.phi % 360, lang, 2)}°), "
+                      f"{plain(format_scale('mu_a', plans.mu_a, lang))}; {w('rates')}",
+                  f"{w('quantity'):>12}  {unit('mm', lang):>7}  {w('plan'):>10}  {w('exact'):>10}  "
+                  f"{w('error'):>9}"]
         for e in ordered(acc):
-            mm = "" if e.mm is None else f"{e.mm:.1f}"
+            mm = "" if e.mm is None else fixed(e.mm, lang, 1)
             exact = e.exact.real if e.kind in ("omega", "epsilon") else e.analytic
-            err = "—" if e.error_pct is None else f"{e.error_pct:+.2f}"
-            lines.append(f"{symbol(e, 'acceleration'):>12}  {mm:>7}  {_num(signed(e)):>10}  "
-                         f"{_num(exact):>10}  {err:>9}")
-    lines += ["", t["warnings"] + ":"]
+            lines.append(f"{plain(symbol(e, 'acceleration')):>12}  {mm:>7}  {n(signed(e)):>10}  "
+                         f"{n(exact):>10}  {pct(e.error_pct, lang):>9}")
+    lines += ["", w("warnings") + ":"]
     warned = False
     for p in plans.positions:
-        for w in p.warnings:
-            lines.append(f"  {t['position']} {label(p)}: {w.text}")
+        for wn in p.warnings:
+            lines.append(f"  {w('position')} {label(p)}: {plain(wn.say(lang))}")
             warned = True
     if not warned:
-        lines.append("  " + t["none"])
+        lines.append("  " + w("none"))
     return "\n".join(lines) + "\n"
 
 
@@ -180,28 +152,29 @@ def captioned(rec: Record, caption: str) -> Record:
     return out
 
 
-def svg_documents(plans: Plans, lang: str = "en") -> dict[str, str]:
+def svg_documents(plans: Plans, lang: str = "uk") -> dict[str, str]:
     """Each plan as its own SVG in true millimetres: file name → SVG text."""
     from graphplan.drawing.svg import page_for, render
-    t = TEXT.get(lang, TEXT["en"])
+    w = lambda key: word(key, lang)  # noqa: E731
     docs: dict[str, str] = {}
 
     def put(name: str, rec: Record, caption: str) -> None:
         caption = caption[:1].upper() + caption[1:]
-        page, w, h = page_for(captioned(rec, caption))
-        docs[name] = render(page, w, h, caption)
+        page, wd, h = page_for(captioned(rec, caption))
+        docs[name] = render(page, wd, h, plain(caption))
 
     from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
     vel, acc = velocity_records(plans), acceleration_records(plans)
     put("positions.svg", position_record(plans),
-        f"{t['position plan']}: {format_scale('mu_l', plans.mu_l)}")
+        f"{w('position plan')}: {format_scale('mu_l', plans.mu_l, lang)}")
     for p in plans.positions:
         tag = f"{p.index:02d}" if p.index is not None else f"phi{p.phi % 360:g}"
-        where_ = f"{t['position']} {p.index}" if p.index is not None else ""
+        where_ = f"{w('position')} {p.index}" if p.index is not None else ""
+        phi = fixed(p.phi % 360, lang, 1)
         put(f"velocity_{tag}.svg", vel[p.key],
-            f"{t['velocity plan']}, {where_} (φ = {p.phi % 360:.1f}°): {format_scale('mu_v', plans.mu_v)}")
+            f"{w('velocity plan')}, {where_} (φ = {phi}°): {format_scale('mu_v', plans.mu_v, lang)}")
         if p.acceleration is not None:
             put(f"acceleration_{tag}.svg", acc[p.key],
-                f"{t['acceleration plan']}, {where_} (φ = {p.phi % 360:.1f}°): "
-                f"{format_scale('mu_a', plans.mu_a)}")
+                f"{w('acceleration plan')}, {where_} (φ = {phi}°): "
+                f"{format_scale('mu_a', plans.mu_a, lang)}")
     return docs

@@ -15,6 +15,7 @@ from graphplan.report.plans import captioned
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
 from graphplan.util.errors import GraphplanError
+from graphplan.util.words import fixed, num
 
 # the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
 SIZES = ((330.0, 1.5), (330.0, 1.3), (330.0, 1.15), (330.0, 1.0), (290.0, 1.0), (250.0, 1.0), (210.0, 0.8),
@@ -28,10 +29,10 @@ WORDS = {
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "Iм", "err": "похибка, %",
            "exact": "точно: рівняння руху (сталий Mд*)", "graph": "графічно: діаграма Віттенбауера",
-           "approx": "наближено: (ΔTmax−ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено: метод Мерцалова",
-           "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d:g}, ωm = {w} рад/с",
+           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ωm²δ) − I*сер", "merk": "наближено: метод Мерцалова",
+           "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ωm = {w} рад/с",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
-           "achieved": "Досягнуто: δ = {d:.6f}, |ω(2π) − ω(0)|/ωm = {c:.1e}"},
+           "achieved": "Досягнуто: δ = {d}, |ω(2π) − ω(0)|/ωm = {c}"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M_c*(φ), M_d* and the work A_c(φ), A_d(φ) "
            "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
            "inertia": "Reduced moment of inertia of the mechanism I*_m(φ)",
@@ -39,10 +40,10 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
            "exact": "exact: equation of motion (constant M_d*)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔTmax−ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate: Merkalov's method",
-           "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d:g}, ωm = {w} rad/s",
+           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ωm²δ) − I*mean", "merk": "approximate: Merkalov's method",
+           "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ωm = {w} rad/s",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
-           "achieved": "Achieved: δ = {d:.6f}, |ω(2π) − ω(0)|/ωm = {c:.1e}"},
+           "achieved": "Achieved: δ = {d}, |ω(2π) − ω(0)|/ωm = {c}"},
 }
 
 
@@ -56,9 +57,9 @@ def positions_table(doc: dict, lang: str) -> Record:
     rows = [head]
     for p in doc["positions"]:
         g = p["graphical"]
-        rows.append([str(p["index"]), f"{p['phi_deg']:.1f}", fmt(p["inertia"]), fmt(p["d_inertia"]),
-                     fmt(p["moment_resistance"]), fmt(p["moment_driving"]), fmt(g["work_resistance"]),
-                     fmt(g["energy"]), fmt(p["energy"])])
+        rows.append([str(p["index"]), f"{fixed(p['phi_deg'], lang, 1)}", fmt(p["inertia"], lang), fmt(p["d_inertia"], lang),
+                     fmt(p["moment_resistance"], lang), fmt(p["moment_driving"], lang), fmt(g["work_resistance"], lang),
+                     fmt(g["energy"], lang), fmt(p["energy"], lang)])
     return table(rows, [9.0, 13.0, 22.0, 17.0, 20.0, 20.0, 18.0, 20.0, 18.0], row_h=6.0, size=2.5,
                  title=w["positions"])
 
@@ -67,11 +68,11 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     fw = doc["flywheel"]
     rows = [[w["method"], w["value"], w["err"]],
-            [w["exact"], fmt(fw["exact"]), "0"],
-            [w["graph"], fmt(fw["graphical"]), fmt(fw["error_pct"], 3)],
-            [w["approx"], fmt(fw["approximate"]), fmt(fw["approximate_error_pct"], 3)],
-            [w["merk"], fmt(fw["merkalov"]), fmt(fw["merkalov_error_pct"], 3)],
-            [w["motor_fl"], fmt(fw["motor"]), ""]]
+            [w["exact"], fmt(fw["exact"], lang), "0"],
+            [w["graph"], fmt(fw["graphical"], lang), fmt(fw["error_pct"], lang, 3)],
+            [w["approx"], fmt(fw["approximate"], lang), fmt(fw["approximate_error_pct"], lang, 3)],
+            [w["merk"], fmt(fw["merkalov"], lang), fmt(fw["merkalov_error_pct"], lang, 3)],
+            [w["motor_fl"], fmt(fw["motor"], lang), ""]]
     return table(rows, [78.0, 22.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
 
 
@@ -81,16 +82,16 @@ def motor_table(doc: dict, lang: str) -> Record:
     uk = lang == "uk"
     rows = [["", ""],
             [m["name"], w["chosen"] if m["chosen"] else w["scene"]],
-            ["Pн, кВт" if uk else "P_n, kW", fmt(m["power_kW"])],
-            ["nc / nн, об/хв" if uk else "n_c / n_n, rpm", f"{m['rpm_sync']:g} / {m['rpm_rated']:g}"],
-            ["ωc / ωн, рад/с" if uk else "ω_c / ω_n, rad/s", f"{m['omega_sync']:.2f} / {m['omega_rated']:.2f}"],
-            ["Mн / Mmax, Н·м" if uk else "M_n / M_max, N·m", f"{m['moment_rated']:.3f} / {m['moment_max']:.3f}"],
-            ["M = Aω + B", f"{fmt(m['A'])}·ω + {fmt(m['B'])}"],
-            ["P = Mс*max·ω1/η, кВт" if uk else "P = M_c*max·ω1/η, kW", fmt(m["power_needed_kW"])],
-            ["i, η", f"{m['ratio']:.4g}, {m['efficiency']:g}"],
-            ["Iрот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"])],
-            ["ωm, δ" , f"{m['motion']['omega_mean']:.4f}, {m['motion']['delta']:.4f}"],
-            ["Mmax циклу, Н·м" if uk else "peak M on the cycle, N·m", fmt(m["moment_peak"])]]
+            ["Pн, кВт" if uk else "P_n, kW", fmt(m["power_kW"], lang)],
+            ["nc / nн, об/хв" if uk else "n_c / n_n, rpm", f"{num(m['rpm_sync'], lang)} / {num(m['rpm_rated'], lang)}"],
+            ["ωc / ωн, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fixed(m['omega_sync'], lang, 2)} / {fixed(m['omega_rated'], lang, 2)}"],
+            ["M_н / M_{max}, Н·м" if uk else "M_n / M_max, N·m", f"{fixed(m['moment_rated'], lang, 3)} / {fixed(m['moment_max'], lang, 3)}"],
+            ["M = Aω + B", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
+            ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
+            ["i, η", f"{num(m['ratio'], lang, 4)}, {num(m['efficiency'], lang)}"],
+            ["Iрот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
+            ["ω_m, δ" , f"{fixed(m['motion']['omega_mean'], lang, 4)}, {fixed(m['motion']['delta'], lang, 4)}"],
+            ["M_{max} циклу, Н·м" if uk else "peak M on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows[1:], [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
 
 
@@ -100,17 +101,17 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     mm = "мм" if uk else "mm"
     s = doc["scales"]
     fw = doc["flywheel"]
-    lines = [w["given"].format(d=doc["delta"], w=fmt(doc["omega_mean"])),
-             f"{w['scales']}: μM = {s['mu_M']:g} {'Н·м' if uk else 'N·m'}/{mm}, μφ = 2π/L = {s['mu_phi']:.5g} "
-             f"{'рад' if uk else 'rad'}/{mm}, H = {f.H:g} {mm}",
-             f"μA = μT = μM·μφ·H = {s['mu_A']:.5g} {'Дж' if uk else 'J'}/{mm}, μI = {s['mu_I']:g} "
+    lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang)),
+             f"{w['scales']}: μM = {num(s['mu_M'], lang)} {'Н·м' if uk else 'N·m'}/{mm}, μφ = 2π/L = {num(s['mu_phi'], lang, 5)} "
+             f"{'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
+             f"μA = μT = μM·μφ·H = {num(s['mu_A'], lang, 5)} {'Дж' if uk else 'J'}/{mm}, μI = {num(s['mu_I'], lang)} "
              f"{'кг·м²' if uk else 'kg·m²'}/{mm}",
-             f"Aс = {doc['work_resistance']:.5g} {'Дж' if uk else 'J'}, Mд* = Aс/2π = {doc['moment_driving']:.5g}; "
-             f"{'графічно' if uk else 'graphical'} {f.driving:.5g} {'Н·м' if uk else 'N·m'}",
-             f"tg ψ = μI·ωm²(1 ± δ)/(2μT): ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-             f"J = μT·|kl|/(ωm²δ) = {f.mu_A:.5g}·{f.kl:g}/({doc['omega_mean']:.4g}²·{doc['delta']:g}) = {f.total:.4g}; "
-             f"Iм = J − Iрот·i² − Iред = {f.flywheel:.4g} {'кг·м²' if uk else 'kg·m²'}",
-             w["achieved"].format(d=doc["motion"]["delta"], c=doc["motion"]["closure"])]
+             f"Aс = {num(doc['work_resistance'], lang, 5)} {'Дж' if uk else 'J'}, Mд* = Aс/2π = {num(doc['moment_driving'], lang, 5)}; "
+             f"{'графічно' if uk else 'graphical'} {num(f.driving, lang, 5)} {'Н·м' if uk else 'N·m'}",
+             f"tg ψ = μI·ωm²(1 ± δ)/(2μT): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, 3)}°",
+             f"J = μT·|kl|/(ωm²δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·{num(doc['delta'], lang)}) = {num(f.total, lang, 4)}; "
+             f"Iм = J − Iрот·i² − Iред = {num(f.flywheel, lang, 4)} {'кг·м²' if uk else 'kg·m²'}",
+             w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=num(doc["motion"]["closure"], lang, 2))]
     from graphplan.sheets.form import wrap
     for en, uk_text in f.dyn.warnings:
         lines += wrap(f"{w['warn']}: {uk_text if uk else en}", 250.0, 3.5)
@@ -142,7 +143,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     dyn = analyse(st, getattr(args, "delta", None))
     for L, size in SIZES:
         blocks, fw = dynamics_blocks(st, args, L, dyn, size)
-        tf = fields(st, args.lang, f"μφ = {fw.mu_phi:.4g}", 3, 3)
+        tf = fields(st, args.lang, f"μφ = {num(fw.mu_phi, args.lang, 4)}", 3, 3)
         tf["subtitle"] = WORDS[args.lang]["subtitle"]
         try:
             return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")

@@ -5,22 +5,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from graphplan.graphic.record import THICK, THIN, Record, text_width
+from graphplan.util.words import word as _word
 
 FORMATS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4": (210.0, 297.0)}
 LEFT, MARGIN = 20.0, 5.0           # the frame: 20 mm from the left edge, 5 mm from the others
 BLOCK_W, BLOCK_H, BLOCK_2A_H = 185.0, 55.0, 15.0
-
-CAPTIONS = {
-    "uk": {"rev": "Змн.", "sheet": "Арк.", "doc": "№ докум.", "sign": "Підпис", "date": "Дата",
-           "drawn": "Розроб.", "checked": "Перевір.", "tech": "Т.контр.", "norm": "Н.контр.",
-           "approved": "Затв.", "letter": "Літ.", "mass": "Маса", "scale": "Масштаб",
-           "sheet_no": "Аркуш", "sheets": "Аркушів"},
-    "en": {"rev": "Rev.", "sheet": "Sh.", "doc": "Doc. No.", "sign": "Sign.", "date": "Date",
-           "drawn": "Drawn", "checked": "Checked", "tech": "T.ctrl", "norm": "N.ctrl",
-           "approved": "Approved", "letter": "Lit.", "mass": "Mass", "scale": "Scale",
-           "sheet_no": "Sheet", "sheets": "Sheets"},
-}
-
 
 @dataclass(frozen=True)
 class Form:
@@ -82,7 +71,9 @@ def wrap(text: str, width: float, size: float) -> list[str]:
 def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     """Title block form 1 (185×55 mm) in the frame's bottom-right corner, filled from ``fields``:
     designation, title, student, teacher, organisation, scale, sheet, sheets, letter, mass."""
-    cap = CAPTIONS[lang]
+    cap = {k: _word("tb " + k.replace("_", " "), lang) for k in (
+        "rev", "sheet", "doc", "sign", "date", "drawn", "checked", "tech", "norm", "approved", "letter", "mass",
+        "scale", "sheet_no", "sheets")}
     rec = Record("title block")
     _, fy0, fx1, _ = f.frame_box
     x0, y0 = fx1 - BLOCK_W, fy0
@@ -128,7 +119,7 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     _text(rec, X(176), Y(36.2), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)))
     _text(rec, X(137), Y(16.2), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start")
     _text(rec, X(157), Y(16.2), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start")
-    _text(rec, X(142.5), Y(26), fields.get("letter", "Н" if lang == "uk" else "S"), size=3.5)
+    _text(rec, X(142.5), Y(26), fields.get("letter", _word("tb study letter", lang)), size=3.5)
     _text(rec, X(158.5), Y(26), fields.get("mass", ""), size=3.5)
     scale = fields.get("scale", "")
     _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5)))

@@ -3,7 +3,6 @@ acceleration plans, the s–v–a diagrams and the tables, laid out so nothing o
 The output's suffix picks SVG, PDF, PNG or DXF; every format views the same construction record."""
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -13,27 +12,13 @@ import numpy as np
 
 from graphplan.graphic.record import Record, text_width
 from graphplan.util.errors import GraphplanError
+from graphplan.util.markup import escape
+from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
 from graphplan.drawing.layout import Block, Placed, declutter, place
 from graphplan.exact.positions import Study
 from graphplan.report.plans import captioned
 from graphplan.sheets.form import Form, form, frame, table, title_block, title_block_box
 
-WORDS = {
-    "uk": {"positions": "План положень", "velocity": "План швидкостей", "acceleration": "План прискорень",
-           "position": "положення", "diagrams": "Кінематичні діаграми", "vel_table": "Таблиця 1. Швидкості, м/с; ω, рад/с",
-           "acc_table": "Таблиця 2. Прискорення, м/с²; ε, рад/с², положення", "graphical": "графічно",
-           "analytic": "аналітично", "error": "δ, %", "quantity": "величина", "structure": "Структурна формула",
-           "mobility": "Ступінь рухомості", "scales": "Масштабні коефіцієнти", "precision": "Точність креслення",
-           "forces": "Силовий аналіз", "max_error": "Найбільша похибка планів швидкостей (вектори від 20 мм)",
-           "subtitle": "Кінематичний аналіз"},
-    "en": {"positions": "Position plan", "velocity": "Velocity plan", "acceleration": "Acceleration plan",
-           "position": "position", "diagrams": "Kinematic diagrams", "vel_table": "Table 1. Velocities, m/s; ω, rad/s",
-           "acc_table": "Table 2. Accelerations, m/s²; ε, rad/s², position", "graphical": "graphical",
-           "analytic": "analytic", "error": "δ, %", "quantity": "quantity", "structure": "Structural formula",
-           "mobility": "Mobility", "scales": "Scale coefficients", "precision": "Drafting precision",
-           "forces": "Force analysis", "max_error": "Largest error of the velocity plans (vectors from 20 mm)",
-           "subtitle": "Kinematic analysis"},
-}
 FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
 
 # What a sheet is asked for: positions, accel (degrees or "#3"), precision (mm), lang, sheet (kind);
@@ -72,62 +57,61 @@ class Sheet:
         return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi))
 
 
-def fmt(v: float | None, digits: int = 4) -> str:
-    """Numbers for tables: 4 significant digits, a true minus, '—' for none."""
-    if v is None or (isinstance(v, float) and not math.isfinite(v)):
-        return "—"
-    text = f"{v:.{digits}g}"
-    if "e" in text:
-        text = f"{v:.2e}"
-    return text.replace("-", "−")
+def fmt(v: float | None, lang: str, digits: int = 4) -> str:
+    """Numbers for tables (util.words.num): 4 significant digits, the language's decimal sign, a
+    true minus, '—' for none."""
+    return num(v, lang, digits).replace("-", "−")
 
 
 def velocity_table(doc: dict, lang: str) -> Record:
     """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3."""
-    w = WORDS[lang]
     keys: list[str] = []
     for pos in doc["positions"]:
         for key in pos["velocity"]:
             if key not in keys:
                 keys.append(key)
-    head = ["№", "φ, °"] + [_symbol(k) for k in keys] + ["δmax, %"]
+    head = ["№", "φ, °"] + [_symbol(k, "v") for k in keys] + ["δ_max, %"]
     rows = [head]
     for pos in doc["positions"]:
         errs = [abs(e["error_pct"]) for e in pos["velocity"].values() if e.get("error_pct") is not None]
-        rows.append([str(pos["index"]), f"{pos['phi_deg']:.1f}"]
-                    + [fmt(pos["velocity"].get(k, {}).get("value")) for k in keys]
-                    + [fmt(max(errs) if errs else None, 2)])
-    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k), 2.5) + 3) for k in keys] + [15.0]
-    return table(rows, widths, row_h=6.0, size=2.5, title=w["vel_table"])
+        rows.append([str(pos["index"]), fixed(pos['phi_deg'], lang, 1)]
+                    + [fmt(pos["velocity"].get(k, {}).get("value"), lang) for k in keys]
+                    + [fixed(max(errs) if errs else None, lang, 2)])
+    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
+    return table(rows, widths, row_h=6.0, size=2.5, title=word("velocity table", lang))
 
 
 def acceleration_table(doc: dict, pos: dict, lang: str) -> Record:
     """Table 2: one acceleration plan: drawn mm, graphical value, analytic value and δ, %."""
-    w = WORDS[lang]
-    rows = [[w["quantity"], "мм" if lang == "uk" else "mm", w["graphical"], w["analytic"], w["error"]]]
+    rows = [[word("quantity", lang), unit("mm", lang), word("graphical", lang), word("analytic", lang),
+             word("error pct", lang)]]
     for key, e in list(pos.get("acceleration", {}).items()):
-        rows.append([_symbol(key), fmt(e.get("mm")), fmt(e.get("value")), fmt(e.get("analytic")),
-                     fmt(e.get("error_pct"), 2)])
+        rows.append([_symbol(key, "a"), fmt(e.get("mm"), lang), fmt(e.get("value"), lang),
+                     fmt(e.get("analytic"), lang), pct(e.get("error_pct"), lang).replace("-", "−")])
     return table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
-                 title=f"{w['acc_table']} {pos['index']}")
+                 title=f"{word('acceleration table', lang)} {pos['index']}")
 
 
-def _symbol(key: str) -> str:
-    """'B' → 'v_B'-style headers kept short: omega_AB → ωAB, epsilon_AB → εAB, k_A → aᵏA."""
-    for prefix, sym in (("omega_", "ω"), ("epsilon_", "ε"), ("k_", "k ")):
+def _symbol(key: str, letter: str) -> str:
+    """A JSON key as the lab writes the quantity (markup): B → v_B, BA → v_BA, omega_AB → ω_AB,
+    n_BA → a^n_BA, t_BA → a^τ_BA, k_A3A2 → a^k_A3A2, r_A3A2 → a^r_A3A2."""
+    for prefix, sym in (("omega_", "ω"), ("epsilon_", "ε")):
         if key.startswith(prefix):
-            return sym + key[len(prefix):]
-    return key
+            return f"{sym}_{{{key[len(prefix):]}}}"
+    head, _, rest = key.partition("_")
+    marks = {"n": "n", "t": "τ", "k": "k", "r": "r"}
+    if rest and head in marks:
+        return f"{letter}^{marks[head]}_{{{rest}}}"
+    return f"{letter}_{{{key}}}"
 
 
 def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
     """The structural formula, the mobility and the scale coefficients as lines of text."""
-    w = WORDS[lang]
     s = st.structure
-    lines = [f"{w['mobility']}: W = 3n − 2p5 − p4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
-             f"{w['structure']}: {s.formula}  ("
-             + ", ".join(f"{d.label} {d.kind}" for d in s.dyads) + ")",
-             f"{w['scales']}: " + "; ".join(scales)] + extra
+    lines = [f"{word('mobility', lang)}: W = 3n − 2p_5 − p_4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
+             f"{word('structure formula', lang)}: {s.formula}  ("
+             + ", ".join(f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads) + ")",
+             f"{word('scales', lang)}: " + "; ".join(scales)] + extra
     rec = Record("notes")
     for k, line in enumerate(lines):
         rec.label((0.0, -7.0 * k), line, size=3.5, layer="labels")
@@ -138,11 +122,11 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1)
     meta = st.mech.task.meta
     title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
         meta.get("title", st.mech.title)
-    return {"designation": meta.get("designation", ""), "title": title,
-            "student": meta.get("sheet.student", ""), "teacher": meta.get("sheet.teacher", ""),
-            "organisation": meta.get("sheet.organisation", meta.get("sheet.group", "")),
+    return {"designation": escape(meta.get("designation", "")), "title": escape(title),
+            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "organisation": escape(meta.get("sheet.organisation", meta.get("sheet.group", ""))),
             "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),
-            "subtitle": WORDS[lang]["subtitle"]}
+            "subtitle": word("kinematics subtitle", lang)}
 
 
 def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
@@ -164,22 +148,13 @@ BUILDERS: dict[str, Callable[..., Sheet]] = {}
 
 # -- the force sheet (issue 8): groups with their force plans, the lever, the results, the turn --------
 
-FORCE_WORDS = {
-    "uk": {"group": "Група", "polygon": "План сил групи", "table": "Реакції групи", "lever": "Важіль Жуковського",
-           "results": "Зрівноважувальний момент", "moment": "Зрівноважувальний момент за оберт",
-           "hodograph": "Годограф реакції", "subtitle": "Силовий аналіз", "at": "φ ="},
-    "en": {"group": "Group", "polygon": "Force plan of group", "table": "Reactions of group",
-           "lever": "Zhukovsky lever", "results": "Balancing moment", "moment": "Balancing moment over a turn",
-           "hodograph": "Hodograph of reaction", "subtitle": "Force analysis", "at": "φ ="},
-}
-
-
 def _force_caption(name: str, lang: str) -> str:
-    w = FORCE_WORDS[lang]
     kind, _, rest = name.partition(" ")
-    return {"group": f"{w['group']} {rest}", "polygon": f"{w['polygon']} {rest}",
-            "table": f"{w['table']} {rest}", "lever": w["lever"], "results": w["results"],
-            "moment": w["moment"], "hodograph": f"{w['hodograph']} {rest}"}.get(kind, name)
+    w = lambda key: word(key, lang)  # noqa: E731
+    return {"group": f"{w('group')} {rest}", "polygon": f"{w('force plan of group')} {rest}",
+            "table": f"{w('reactions of group')} {rest}", "lever": w("lever"), "results": w("balancing moment"),
+            "moment": w("balancing moment turn"),
+            "hodograph": f"{w('hodograph')} {force_symbol(rest, lang)}"}.get(kind, name)
 
 
 def build_forces_sheet(st: Study, f: Form, args: Options) -> Sheet:
@@ -189,23 +164,22 @@ def build_forces_sheet(st: Study, f: Form, args: Options) -> Sheet:
     from graphplan.drawing import forces as forcedraw
     from graphplan.graphic import forceplans
     from graphplan.exact import kinetostatics
+    from graphplan.graphic.scales import format_scale
     lang = args.lang
     phi = kinetostatics.at_scene_angle(st)
     fp = forceplans.construct(st, phi, precision=args.precision)
-    drawn = forcedraw.records(fp)
+    drawn = forcedraw.records(fp, lang)
     turn = forcecharts.turn(st)
-    charts = forcecharts.records(turn)
+    charts = forcecharts.records(turn, lang)
     order = [k for k in drawn if not k.startswith("table")] + [k for k in drawn if k.startswith("table")]
     blocks = [Block(name, (lambda k, r=rec, n=name: captioned(r, _force_caption(n, lang))))
               for name, rec in list((k, drawn[k]) for k in order) + list(charts.items())]
-    w = FORCE_WORDS[lang]
-    head = notes(st, [f"μl = {fp.mu_l:g} m/mm" if lang == "en" else f"μl = {fp.mu_l:g} м/мм",
-                      f"μF = {fp.mu_F:g} N/mm" if lang == "en" else f"μF = {fp.mu_F:g} Н/мм"],
-                 [f"{w['at']} {float(np.atleast_1d(phi)[0]):.2f}°"], lang)
+    head = notes(st, [format_scale("mu_l", fp.mu_l, lang), format_scale("mu_F", fp.mu_F, lang)],
+                 [f"φ = {fixed(float(np.atleast_1d(phi)[0]), lang, 2)}°"], lang)
     blocks.insert(0, Block("notes", lambda k, r=head: r))
-    tf = fields(st, lang, f"μl = {fp.mu_l:g}", 2, 2)
-    tf["subtitle"] = w["subtitle"]
-    return compose(f, blocks, tf, lang, f"{st.mech.title} — {w['subtitle']}")
+    tf = fields(st, lang, f"μ_l = {num(fp.mu_l, lang)}", 2, 2)
+    tf["subtitle"] = word("forces subtitle", lang)
+    return compose(f, blocks, tf, lang, f"{st.mech.title} — {tf['subtitle']}")
 
 
 BUILDERS["forces"] = build_forces_sheet
@@ -233,7 +207,7 @@ def kinematics_blocks(st: Study, args: Options, k: float,
     from graphplan.report.plans import plans_json
     from graphplan.graphic.scales import Targets, format_scale
     lang = args.lang
-    w = WORDS[lang]
+    w = lambda key: word(key, lang)  # noqa: E731
     plans = build_plans(st, count=args.positions, accel=_accel_arg(args.accel), precision=args.precision,
                         targets=Targets().scaled(k))
     doc = plans_json(plans)
@@ -254,39 +228,39 @@ def kinematics_blocks(st: Study, args: Options, k: float,
                              targets=t, mu_l=plans.mu_l, mu_a=plans.mu_a)
         state["plans"] = vp
         records = velocity_records(vp)
-        cells = [captioned(records[p.key], f"{w['velocity']} {p.index if p.index is not None else ''}")
+        cells = [captioned(records[p.key], f"{w('velocity plan')} {p.index if p.index is not None else ''}")
                  for p in vp.positions]
         return flow(cells, width)
 
     def notes_block(_k: float) -> Record:
         vp = state["plans"]
         vdoc = plans_json(vp)
-        scales = [format_scale("mu_l", plans.mu_l), format_scale("mu_v", vp.mu_v), format_scale("mu_a", plans.mu_a)]
-        scales.append(f"μt = {diag.mu_t:.4g}")
+        scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", vp.mu_v), ("mu_a", plans.mu_a))]
+        scales.append(f"μ_t = {num(diag.mu_t, lang)} {unit('s/mm', lang)}")
         errs = [abs(e["error_pct"]) for p in vdoc["positions"] for e in p["velocity"].values()
                 if e.get("error_pct") is not None and (e.get("mm") or 0) >= 20.0]
-        extra = [f"{w['precision']}: {args.precision:g} " + ("мм" if lang == "uk" else "mm")]
+        extra = [f"{w('precision')}: {num(args.precision, lang)} {unit('mm', lang)}"]
         if errs:
-            extra.append(f"{w['max_error']}: {max(errs):.2f} %")
+            extra.append(f"{w('max error')}: {fixed(max(errs), lang, 2)} %")
         return notes(st, scales, extra + sheet_notes(diag, lang), lang)
 
     blocks = [Block("position plan", lambda _k: captioned(
-        position_record(plans), f"{w['positions']}, {format_scale('mu_l', plans.mu_l)}"))]
+        position_record(plans), f"{w('position plan')}, {format_scale('mu_l', plans.mu_l, lang)}"))]
     blocks.append(Block("diagrams", lambda _k: draw_diagrams(diag, lang)))
     blocks.append(Block("velocity plans", velocity_plans, factors=(1.0, 0.8, 0.64, 0.5)))
     for p in plans.positions:
         if p.acceleration is not None:
             blocks.append(Block(f"acceleration plan {p.key}", lambda _k, p=p: captioned(
                 acceleration_records(plans)[p.key],
-                f"{w['acceleration']}, {w['position']} {p.index if p.index is not None else ''} "
-                f"(φ = {p.phi % 360:.1f}°), {format_scale('mu_a', plans.mu_a)}")))
+                f"{w('acceleration plan')}, {w('position')} {p.index if p.index is not None else ''} "
+                f"(φ = {fixed(p.phi % 360, lang, 1)}°), {format_scale('mu_a', plans.mu_a, lang)}")))
     blocks.append(Block("velocity table", lambda _k: velocity_table(plans_json(state["plans"]), lang)))
     for pos in doc["positions"]:
         if "acceleration" in pos:
             blocks.append(Block(f"acceleration table {pos['index']}",
                                 lambda _k, pos=pos: acceleration_table(doc, pos, lang)))
     blocks.append(Block("notes", notes_block))
-    return blocks, f"μl = {plans.mu_l:g}"
+    return blocks, f"μ_l = {num(plans.mu_l, lang)}"
 
 
 def flow(records: list[Record], width: float, gap: float = 6.0) -> Record:

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.util.words import Fixed, fixed, num, said, word
 from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.teach.keys import FORMAT, Quantity, diagram_phi, quantities
 from graphplan.util.files import read_text
@@ -48,8 +49,17 @@ class Graded:
     error: float | None = None       # value − exact (in the compared sense)
     error_pct: float | None = None
     tolerance_pct: float | None = None
-    note: str = ""
+    note: str = ""                   # English (the JSON's)
     fits: dict[str, Any] | None = None
+    note_uk: str = ""
+
+    def add(self, said: dict[str, str]) -> None:
+        """Append a note given in every language (util.words.said)."""
+        self.note = _join(self.note, said["en"])
+        self.note_uk = _join(self.note_uk, said["uk"])
+
+    def says(self, lang: str) -> str:
+        return self.note_uk if lang == "uk" else self.note
 
     def json(self) -> dict[str, Any]:
         return {"line": self.row.line, "variant": self.row.variant, "position": self.row.position,
@@ -233,29 +243,36 @@ def grade(keys: dict[str, dict[str, Any]], rows: list[Row], signed: bool = False
             var = variants[ids[0]] if len(ids) == 1 else None
         if var is None:
             known = ", ".join(sorted(variants)[:5]) + (" …" if len(variants) > 5 else "")
-            out.append(Graded(row, "unknown", note=f"no key for variant {row.variant!r} (keys: {known})"))
+            out.append(_noted(Graded(row, "unknown"), said("grade no key", variant=repr(row.variant), known=known)))
             continue
         out.append(_grade_row(var, row, signed))
     return out
 
 
-def _position(key: dict[str, Any], family: str, text: str) -> tuple[float | None, str]:
+def _noted(g: Graded, *notes: dict[str, str]) -> Graded:
+    for n in notes:
+        if n:
+            g.add(n)
+    return g
+
+
+def _position(key: dict[str, Any], family: str, text: str) -> tuple[float | None, dict[str, str]]:
     """The row's position as an index (positions) or an abscissa in divisions (diagram), and a note."""
     try:
         x = float(text.replace(",", ".").lstrip("#"))
     except ValueError:
-        return None, f"position {text!r} is not a number"
+        return None, said("grade not a number", text=repr(text))
     if family == "diagram":
         n = key["divisions"]
         if 0 <= x <= n and (2 * x).is_integer():
-            return x, ""
-        return None, f"the diagram's abscissae are 0, 0.5, … {n}"
+            return x, {}
+        return None, said("grade abscissae", n=n, half=0.5)
     count = key["count"]
     if not x.is_integer() or not 0 <= x <= count:
-        return None, f"positions are 0 … {count - 1}"
+        return None, said("grade positions", last=count - 1)
     if x == count:
-        return 0.0, f"position {count} is position 0"
-    return x, ""
+        return 0.0, said("grade position is 0", count=count)
+    return x, {}
 
 
 def _exact(var: _Variant, name: str, family: str, x: float) -> tuple[float, bool]:
@@ -280,20 +297,19 @@ def _grade_row(var: _Variant, row: Row, signed: bool) -> Graded:
     key = var.key
     name = var.names.get(row.quantity) or var.names.get(normalise(row.quantity))
     if name is None:
-        return Graded(row, "unknown", note=f"unknown quantity {row.quantity!r}")
+        return _noted(Graded(row, "unknown"), said("grade unknown quantity", q=repr(row.quantity)))
     meta = key["quantities"][name]
     x, note = _position(key, meta["family"], row.position)
     if x is None:
-        return Graded(row, "unknown", name, note=note)
+        return _noted(Graded(row, "unknown", name), note)
     tol = meta["tolerance_pct"]
     if row.value is None:
-        return Graded(row, "fail", name, tolerance_pct=tol, note="no value")
+        return _noted(Graded(row, "fail", name, tolerance_pct=tol), said("grade no value"))
     try:
         exact, in_key = _exact(var, name, meta["family"], x)
     except NoScene:
-        return Graded(row, "unknown", name, tolerance_pct=tol, note="not in the key (and no scene to compute it)")
-    if not in_key:
-        note = "; ".join(filter(None, [note, "not in the key: computed"]))
+        return _noted(Graded(row, "unknown", name, tolerance_pct=tol), said("grade no scene"))
+    notes = [note] + ([said("grade computed")] if not in_key else [])
     compare_signed = signed and meta["signed"]
     got, want = (row.value, exact) if compare_signed else (abs(row.value), abs(exact))
     floor = max(key["zero_fraction"] * meta["scale"], ABS_FLOOR)
@@ -302,8 +318,8 @@ def _grade_row(var: _Variant, row: Row, signed: bool) -> Graded:
     passed = abs(error) <= allowed * (1 + 1e-9)
     error_pct = 100.0 * error / abs(want) if abs(want) >= floor else None
     if error_pct is None:
-        note = "; ".join(filter(None, [note, f"near zero: within ±{tol:g} % of {floor:.4g}"]))
-    graded = Graded(row, "pass" if passed else "fail", name, exact, error, error_pct, tol, note)
+        notes.append(said("grade near zero", tol=float(tol), floor=float(floor)))
+    graded = _noted(Graded(row, "pass" if passed else "fail", name, exact, error, error_pct, tol), *notes)
     if not passed:
         _explain(var, graded, name, meta["family"], x, row.value, compare_signed)
     return graded
@@ -315,7 +331,7 @@ def _explain(var: _Variant, g: Graded, name: str, family: str, claimed: float, v
     try:
         st = var.study()
     except NoScene:
-        g.note = _join(g.note, "the key has no scene: other crank angles not searched")
+        g.add(said("grade key no scene"))
         return
     key = var.key
     q = var.quantity(name)
@@ -329,12 +345,11 @@ def _explain(var: _Variant, g: Graded, name: str, family: str, claimed: float, v
     y = f(grid)
     lo_v, hi_v = float(np.min(y + target)), float(np.max(y + target))
     if hi_v - lo_v <= 1e-9 * max(abs(hi_v), abs(lo_v), ABS_FLOOR):
-        g.note = _join(g.note, f"{name} is {_num(hi_v)} at every crank angle")
+        g.add(said("grade constant", name=name, v=float(hi_v)))
         return
     roots = _roots(f, grid, y)
     if len(roots) == 0:
-        g.note = _join(g.note, f"no crank angle gives {name} = {_num(target)} "
-                               f"(over the turn {_num(lo_v)} … {_num(hi_v)})")
+        g.add(said("grade no angle", name=name, v=float(target), lo=float(lo_v), hi=float(hi_v)))
         return
     turns = st.from_position0(roots)
     if family == "diagram":
@@ -369,12 +384,10 @@ def _explain(var: _Variant, g: Graded, name: str, family: str, claimed: float, v
     fits["other_position"] = not same
     g.fits = fits
     if same:
-        g.note = _join(g.note, f"the nearest crank angle with this value is {turns[k]:.1f}° "
-                               f"from position 0: an inaccurate value for this position")
+        g.add(said("grade inaccurate", turn=Fixed(float(turns[k]), 1)))
     else:
-        kind = "division" if family == "diagram" else "position"
-        g.note = _join(g.note, f"fits {kind} {label(j)} ({turns[k]:.1f}° from position 0; exact there "
-                               f"{_num(there_cmp)}), not {kind} {g.row.position}")
+        g.add(said("grade fits division" if family == "diagram" else "grade fits position", at=label(j),
+                   turn=Fixed(float(turns[k]), 1), there=float(there_cmp), claimed=g.row.position))
 
 
 def _roots(f, grid: np.ndarray, y: np.ndarray) -> np.ndarray:
@@ -395,18 +408,8 @@ def _roots(f, grid: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.unique(np.round(roots, 9))
 
 
-def _pct(value: float) -> str:
-    text = f"{value:+.1f}"
-    return "0.0" if text in ("+0.0", "-0.0") else text
-
-
 def _join(a: str, b: str) -> str:
     return f"{a}; {b}" if a else b
-
-
-def _num(v: float) -> str:
-    from graphplan.teach.keys import fmt
-    return fmt(v, 4)
 
 
 # -- the report --------------------------------------------------------------------------------
@@ -432,33 +435,35 @@ def report_json(graded: list[Graded], key_path: str, student_path: str, signed: 
             "rows": [g.json() for g in graded], "summary": summary(graded)}
 
 
-def report_table(graded: list[Graded], key_path: str, student_path: str) -> str:
-    """The graded rows as a table for people, then the summary."""
-    from graphplan.teach.keys import fmt
-    head = ["line", "variant", "pos", "quantity", "value", "exact", "error %", "tol %", "result", "note"]
+def report_table(graded: list[Graded], key_path: str, student_path: str, lang: str = "uk") -> str:
+    """The graded rows as a table for people, then the summary; in ``lang``."""
+    head = word("grade head", lang).split("|")
     cells = []
     for g in graded:
         cells.append([str(g.row.line), g.row.variant, g.row.position, g.row.quantity,
-                      "" if g.row.value is None else f"{g.row.value:g}",
-                      fmt(g.exact) if g.exact is not None else "",
-                      _pct(g.error_pct) if g.error_pct is not None else ("—" if g.exact is not None else ""),
-                      f"{g.tolerance_pct:g}" if g.tolerance_pct is not None else "",
-                      {"pass": "pass", "fail": "FAIL", "unknown": "?"}[g.status], g.note])
+                      "" if g.row.value is None else num(g.row.value, lang, 6),
+                      num(g.exact, lang) if g.exact is not None else "",
+                      fixed(g.error_pct, lang, 1, plus=True) if g.error_pct is not None else
+                      ("—" if g.exact is not None else ""),
+                      num(g.tolerance_pct, lang) if g.tolerance_pct is not None else "",
+                      {"pass": word("pass", lang), "fail": word("fail", lang), "unknown": "?"}[g.status],
+                      g.says(lang)])
     widths = [max(len(r[i]) for r in cells + [head]) for i in range(len(head) - 1)]
     right = {0, 2, 4, 5, 6, 7}
-    lines = [f"{student_path} graded against {key_path}"]
+    lines = [word("graded against", lang, student=student_path, key=key_path)]
     for r in [head] + cells:
         parts = [(c.rjust(w) if i in right else c.ljust(w)) for i, (c, w) in enumerate(zip(r, widths))]
         lines.append("  ".join(parts + [r[-1]]).rstrip())
     s = summary(graded)
-    rate = f"{s['pass_pct']:g} %" if s["pass_pct"] is not None else "—"
+    rate = f"{num(s['pass_pct'], lang)} %" if s["pass_pct"] is not None else "—"
     lines.append("")
-    lines.append(f"{s['rows']} rows: {s['passed']} passed, {s['failed']} failed, {s['unknown']} not graded; "
-                 f"pass rate {rate}; {s['other_position']} rows fit another position")
+    lines.append(word("grade summary", lang, rows=s["rows"], passed=s["passed"], failed=s["failed"],
+                      unknown=s["unknown"], rate=rate, other=s["other_position"]))
     if len(s["variants"]) > 1:
         for v, c in s["variants"].items():
-            rate = f"{c['pass_pct']:g} %" if c["pass_pct"] is not None else "—"
-            lines.append(f"  variant {v or '(none)'}: {c['passed']}/{c['passed'] + c['failed']} passed ({rate})"
-                         + (f", {c['unknown']} not graded" if c["unknown"] else "")
-                         + (f", {c['other_position']} fit another position" if c["other_position"] else ""))
+            rate = f"{num(c['pass_pct'], lang)} %" if c["pass_pct"] is not None else "—"
+            lines.append(word("grade variant", lang, v=v or "—", passed=c["passed"], total=c["passed"] + c["failed"],
+                              rate=rate)
+                         + (word("grade variant unknown", lang, n=c["unknown"]) if c["unknown"] else "")
+                         + (word("grade variant other", lang, n=c["other_position"]) if c["other_position"] else ""))
     return "\n".join(lines) + "\n"

@@ -10,6 +10,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from graphplan.util.markup import escape
+from graphplan.util.words import UNITS, fixed, num, unit, word
 from graphplan.graphic.record import Record, text_width
 from graphplan.teach.keys import fmt
 
@@ -20,16 +22,36 @@ INSET = 5.0                      # text and tables start this far inside the fra
 SMALL, MEDIUM, LARGE = 2.5, 3.5, 5.0
 
 
-SUMMARY_NOTE = ("φ0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
-                "coefficient; |v|max, |a|max: the output's largest over the turn; the columns from pos. a on: "
-                "at the first acceleration-plan position.")
-NAMES = {"phi0_deg": "φ0", "pos_a": "pos. a", "K_calc": "K calc", "v_max": "|v|max", "a_max": "|a|max"}
+NAMES = {"phi0_deg": ("φ_0", "φ_0"), "pos_a": ("пол. a", "pos. a"), "K_calc": ("K розр.", "K calc"),
+         "v_max": ("|v|_max", "|v|_max"), "a_max": ("|a|_max", "|a|_max"), "variant": ("варіант", "variant"),
+         "student": ("студент", "student"), "status": ("стан", "status")}
 
 
-def display(name: str) -> str:
+def summary_note(lang: str) -> str:
+    """What the summary's computed columns mean."""
+    return word("summary note", lang)
+
+
+def _fmt(value: float | None, lang: str) -> str:
+    """keys.fmt with the language's decimal sign."""
+    text = fmt(value)
+    return text.replace(".", ",") if lang == "uk" else text
+
+
+def _unit(name: str, lang: str, key: dict[str, Any]) -> str:
+    """The unit of the key's quantity ``name`` in ``lang`` (the key itself stores SI symbols)."""
+    return unit_text(key["quantities"][name]["unit"], lang)
+
+
+def unit_text(symbol: str, lang: str) -> str:
+    """An SI unit symbol as written in ``lang`` ("m/s" → "м/с"); unknown ones as they are."""
+    return unit(symbol, lang) if symbol in UNITS else symbol
+
+
+def display(name: str, lang: str = "en") -> str:
     """A quantity's name as printed: ω and ε for omega and eps, the rest as in the long table."""
     if name in NAMES:
-        return NAMES[name]
+        return NAMES[name][0 if lang == "uk" else 1]
     return re.sub(r"^omega_", "ω_", re.sub(r"^eps_", "ε_", name))
 
 
@@ -97,8 +119,8 @@ def _paragraph(rec: Record, x: float, y: float, text: str, size: float, width: f
     return y - 0.5
 
 
-def _value_text(key: dict[str, Any], value: Any) -> str:
-    return cell(value, as_given=True)
+def _value_text(key: dict[str, Any], value: Any, lang: str = "en") -> str:
+    return cell(value, as_given=True, lang=lang)
 
 
 # -- the key sheet -------------------------------------------------------------------------------
@@ -120,45 +142,46 @@ def _columns_split(columns: list[str], cells: dict[str, list[str]], fixed: list[
     return groups + ([group] if group else [])
 
 
-def key_sheet(key: dict[str, Any]) -> Record:
+def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
     """The compact key sheet of one variant on A4 portrait: header, velocities at every position,
-    accelerations at the acceleration-plan positions, the output's diagram values."""
+    accelerations at the acceleration-plan positions, the output's diagram values; in ``lang``."""
     W, H = A4_PORTRAIT
-    rec = Record(f"Answer key, variant {key['variant']}")
+    f_ = lambda v: _fmt(v, lang)  # noqa: E731
+    w = lambda k_, **kw: word(k_, lang, **kw)  # noqa: E731
+    u = lambda name: _unit(name, lang, key)  # noqa: E731
+    rec = Record(w("key title", variant=escape(key["variant"])))
     frame(rec, W, H)
     x0, room = LEFT + INSET, W - EDGE - LEFT - 2 * INSET
     y = H - EDGE - 3.0
-    rec.label((W - EDGE - INSET, y - SMALL), f"graphplan key · {key['base']}", size=SMALL, anchor="end")
-    y = _heading(rec, x0, y, f"Answer key — variant {key['variant']}", LARGE) - 0.5
+    rec.label((W - EDGE - INSET, y - SMALL), f"graphplan · {escape(key['base'])}", size=SMALL, anchor="end")
+    y = _heading(rec, x0, y, w("key heading", variant=escape(key["variant"])), LARGE) - 0.5
     title = key.get("title_en") or key.get("title", "")
-    if key.get("title") and key.get("title_en"):
+    if lang == "uk":
+        title = key.get("title") or title
+    elif key.get("title") and key.get("title_en"):
         title = f"{key['title_en']} ({key['title']})"
-    y = _paragraph(rec, x0, y, title, MEDIUM, room)
+    y = _paragraph(rec, x0, y, escape(title), MEDIUM, room)
     if key.get("student"):
-        y = _paragraph(rec, x0, y, f"Student: {key['student']}", MEDIUM, room)
+        y = _paragraph(rec, x0, y, f"{w('student cap')}: {escape(key['student'])}", MEDIUM, room)
     quantities = key["quantities"]
     if key["overrides"]:
-        data = ", ".join(f"{k} = {_value_text(key, v)}" for k, v in key["overrides"].items())
-        y = _paragraph(rec, x0, y, f"Variant data: {data}", SMALL, room)
+        data = ", ".join(f"{escape(k)} = {_value_text(key, v, lang)}" for k, v in key["overrides"].items())
+        y = _paragraph(rec, x0, y, f"{w('variant data')}: {data}", SMALL, room)
     w1 = key["omega1"]
     out = key["output"]["name"]
-    parts = [f"ω1 = {fmt(abs(w1))} rad/s ({fmt(abs(w1) * 30 / 3.141592653589793)} rpm, "
-             f"{'counter-clockwise' if w1 > 0 else 'clockwise'})",
-             f"T = {fmt(key['period'])} s", key["formula"].replace("→", "->"),
-             f"output {out}, position 0 at φ = {key['position0_phi_deg']:.2f}°"]
+    parts = [f"ω_1 = {f_(abs(w1))} {unit('rad/s', lang)} ({f_(abs(w1) * 30 / 3.141592653589793)} {unit('rpm', lang)}, "
+             f"{w('ccw') if w1 > 0 else w('cw')})",
+             f"T = {f_(key['period'])} {unit('s', lang)}", key["formula"],
+             w("key output", name=out, phi=fixed(key['position0_phi_deg'], lang, 2))]
     if key["stroke"] is not None:
-        unit = quantities["s"]["unit"]
-        parts.append(f"H = {fmt(key['stroke'])} {unit}, K = {key['K']:.3f}")
+        parts.append(f"H = {f_(key['stroke'])} {u('s')}, K = {fixed(key['K'], lang, 3)}")
     y = _paragraph(rec, x0, y, "; ".join(parts) + ".", SMALL, room)
     tols = sorted({q["tolerance_pct"] for q in quantities.values()})
     default = max(tols, key=lambda t: sum(q["tolerance_pct"] == t for q in quantities.values()))
-    special = [f"{display(n)} ±{q['tolerance_pct']:g} %" for n, q in quantities.items()
+    special = [f"{display(n)} ±{num(q['tolerance_pct'], lang)} %" for n, q in quantities.items()
                if q["tolerance_pct"] != default]
-    tol_text = (f"Tolerance ±{default:g} %" + (f" ({', '.join(special)})" if special else "")
-                + f"; where |exact| is below {key['zero_fraction'] * 100:g} % of the quantity's largest "
-                "value over the turn, within ±tolerance of that value. Velocities and accelerations of "
-                "points are magnitudes; ω, ε + counter-clockwise; an, at, ak, ar: normal, tangential, "
-                "Coriolis, relative; s, v, a: the output along its guide from position 0.")
+    tol_text = w("key tolerance", tol=num(default, lang), special=f" ({', '.join(special)})" if special else "",
+                 zero=num(key['zero_fraction'] * 100, lang))
     y = _paragraph(rec, x0, y, tol_text, SMALL, room) - 1.5
 
     velocity = [n for n, q in quantities.items() if q["family"] == "velocity"]
@@ -167,12 +190,12 @@ def key_sheet(key: dict[str, Any]) -> Record:
     accel = key["accel"]
 
     # table 1: velocities, split into column groups when too wide
-    vel_groups = _columns_split(velocity, {n: [fmt(p["values"][n]) for p in positions] + [display(n),
+    vel_groups = _columns_split(velocity, {n: [f_(p["values"][n]) for p in positions] + [display(n),
                                 quantities[n]["unit"]] for n in velocity},
-                                [("No", "", [str(p["index"]) for p in positions]),
-                                 ("φ", "°", [f"{p['phi_deg']:.1f}" for p in positions])], SMALL, room)
-    t1 = [Block([["No", "φ"] + [display(n) for n in group], ["", "°"] + [quantities[n]["unit"] for n in group]],
-                [[str(p["index"]), f"{p['phi_deg']:.1f}"] + [fmt(p["values"][n]) for n in group]
+                                [(w("no"), "", [str(p["index"]) for p in positions]),
+                                 ("φ", "°", [fixed(p['phi_deg'], lang, 1) for p in positions])], SMALL, room)
+    t1 = [Block([[w("no"), "φ"] + [display(n) for n in group], ["", "°"] + [u(n) for n in group]],
+                [[str(p["index"]), fixed(p['phi_deg'], lang, 1)] + [f_(p["values"][n]) for n in group]
                  for p in positions]) for group in vel_groups]
     # table 2: accelerations, in two blocks side by side when long
     t2: list[Block] = []
@@ -181,24 +204,23 @@ def key_sheet(key: dict[str, Any]) -> Record:
         chunk = -(-len(acceleration) // split)
         for part in range(split):
             names = acceleration[part * chunk:(part + 1) * chunk]
-            t2.append(Block([["quantity", "unit"] + [f"position {p}" for p in accel]],
-                            [[display(n), quantities[n]["unit"]] + [fmt(positions[p]["values"][n]) for p in accel]
+            t2.append(Block([[w("quantity"), w("unit")] + [f"{w('position')} {p}" for p in accel]],
+                            [[display(n), u(n)] + [f_(positions[p]["values"][n]) for p in accel]
                              for n in names], ["start", "start"] + ["end"] * len(accel)))
     # table 3: the output's diagram
-    t3 = [_diagram_block(key)]
+    t3 = [_diagram_block(key, lang)]
 
     numbers = iter(range(1, 4))
-    sections = [(f"{next(numbers)}. Velocities at positions 0–{len(positions) - 1}", "", t1, False)]
+    sections = [(w("key velocities", n=next(numbers), last=len(positions) - 1), "", t1, False)]
     if accel:
-        where = ", ".join(f"{p} (φ = {positions[p]['phi_deg']:.1f}°)" for p in accel)
-        sections.append((f"{next(numbers)}. Accelerations at position{'s' if len(accel) > 1 else ''} {where}",
-                         "", t2, True))
-    sections.append((f"{next(numbers)}. Diagrams of {key['output']['name']} by chords, "
-                     f"{key['divisions']} divisions",
-                     "s and a at the divisions k, v at the chord midpoints k + 0.5", t3, False))
+        where = ", ".join(f"{p} (φ = {fixed(positions[p]['phi_deg'], lang, 1)}°)" for p in accel)
+        sections.append((w("key accelerations" if len(accel) > 1 else "key acceleration", n=next(numbers),
+                           where=where), "", t2, True))
+    sections.append((w("key diagrams", n=next(numbers), name=key['output']['name'], k=key['divisions']),
+                     w("key diagrams note", half=fixed(0.5, lang, 1)), t3, False))
     y = _place(rec, x0, y, room, sections)
     if "curves" in key and y - EDGE - 4.0 >= CHART_MIN:
-        _curves(rec, key, x0, y - 2.0, room, EDGE + 4.0)
+        _curves(rec, key, x0, y - 2.0, room, EDGE + 4.0, lang)
     return rec
 
 
@@ -222,16 +244,17 @@ ROW_MIN = 2.7    # mm: the smallest row height (with 1.8 mm lettering) before a 
 SECTION = 4.0    # below a section
 
 
-def _diagram_block(key: dict[str, Any]) -> Block:
-    quantities, diagram = key["quantities"], key["diagram"]
-    header = [["k", "φ", "t", "s", "v (k + 0.5)", "a"],
-              ["", "°", "s", quantities["s"]["unit"], quantities["v"]["unit"], quantities["a"]["unit"]]]
+def _diagram_block(key: dict[str, Any], lang: str = "uk") -> Block:
+    diagram = key["diagram"]
+    f_ = lambda v: _fmt(v, lang)  # noqa: E731
+    header = [["k", "φ", "t", "s", f"v (k + {fixed(0.5, lang, 1)})", "a"],
+              ["", "°", unit("s", lang), _unit("s", lang, key), _unit("v", lang, key), _unit("a", lang, key)]]
     rows = []
     for k in range(key["divisions"] + 1):
         point = diagram[2 * k]
         mid = diagram[2 * k + 1]["values"]["v"] if 2 * k + 1 < len(diagram) else None
-        rows.append([str(k), f"{point['phi_deg']:.1f}", fmt(point["t"]), fmt(point["values"]["s"]),
-                     fmt(mid) if mid is not None else "", fmt(point["values"]["a"])])
+        rows.append([str(k), fixed(point['phi_deg'], lang, 1), f_(point["t"]), f_(point["values"]["s"]),
+                     f_(mid) if mid is not None else "", f_(point["values"]["a"])])
     return Block(header, rows)
 
 
@@ -334,13 +357,14 @@ CHART_MIN = 50.0     # the s–v–a curves are drawn when this much height is l
 CHART_MAX = 34.0     # at most this tall per quantity
 
 
-def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: float, bottom: float) -> None:
+def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: float, bottom: float,
+            lang: str = "uk") -> None:
     """The exact s, v, a of the output over one turn from position 0, with the key's ordinates
     marked (s and a at the divisions, v at the chord midpoints) and the divisions ruled."""
-    curves, quantities, n = key["curves"], key["quantities"], key["divisions"]
+    curves, n = key["curves"], key["divisions"]
     turn = curves["turn_deg"]
-    y = _heading(rec, x0, top, f"{_section_count(key) + 1}. The exact s, v, a of {key['output']['name']} "
-                               "over one turn from position 0")
+    f_ = lambda v: _fmt(v, lang)  # noqa: E731
+    y = _heading(rec, x0, top, word("key curves", lang, n=_section_count(key) + 1, name=key['output']['name']))
     label_w, tick_w = 12.0, 14.0
     px, pw = x0 + label_w + tick_w, width - label_w - tick_w - 2.0
     gap = 3.0
@@ -371,14 +395,14 @@ def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: floa
             point = key["diagram"][j]
             t = point["abscissa"] * 360.0 / n
             rec.point((X(t), Y(point["values"][name])), layer="diagrams")
-        rec.label((x0, (y0 + y1) / 2 - SMALL / 2), f"{name}, {quantities[name]['unit']}", size=SMALL)
-        rec.label((px - 1.0, y1 - SMALL), fmt(hi), size=SMALL, anchor="end")
-        rec.label((px - 1.0, y0), fmt(lo), size=SMALL, anchor="end")
+        rec.label((x0, (y0 + y1) / 2 - SMALL / 2), f"{name}, {_unit(name, lang, key)}", size=SMALL)
+        rec.label((px - 1.0, y1 - SMALL), f_(hi), size=SMALL, anchor="end")
+        rec.label((px - 1.0, y0), f_(lo), size=SMALL, anchor="end")
     y_axis = y - 3 * h - 2 * gap
     for k in range(n + 1):
         if n <= 24 or k % 2 == 0:
             rec.label((X(k * 360.0 / n), y_axis - SMALL - 1.0), str(k), size=SMALL, anchor="middle")
-    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), "k: divisions; ordinates of the key marked",
+    rec.label((px + pw, y_axis - 2 * SMALL - 2.5), word("key axis note", lang),
               size=SMALL, anchor="end")
 
 
@@ -389,7 +413,7 @@ def _section_count(key: dict[str, Any]) -> int:
 # -- the group's summary sheet ---------------------------------------------------------------------
 
 def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
-                  overrides: set[str] = frozenset()) -> Record:
+                  overrides: set[str] = frozenset(), lang: str = "uk") -> Record:
     """The group's summary on A4 landscape: one line per variant with its data and headline answers."""
     W, H = A4_LANDSCAPE
     rec = Record(title)
@@ -398,8 +422,8 @@ def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], un
     y = H - EDGE - 3.0
     y = _heading(rec, x0, y, title, LARGE) - 1.0
     notes = [r for r in rows if r.get("status") != "ok"]
-    header = [[display(c) for c in columns], [units.get(c, "") for c in columns]]
-    cells = [[cell(r.get(c), c in overrides) for c in columns] for r in rows]
+    header = [[display(c, lang) for c in columns], [unit_text(units.get(c, ""), lang) for c in columns]]
+    cells = [[cell(r.get(c), c in overrides, lang) for c in columns] for r in rows]
     size = SMALL
     while size > 1.8 and sum(max(text_width(t, size) for t in col) + 2.5
                              for col in zip(*(header + cells))) > room:
@@ -408,16 +432,21 @@ def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], un
     row_h = max(3.0, min(5.0, room_h / (len(rows) + 2)))
     align = ["start" if c in ("variant", "student", "status") else "end" for c in columns]
     y, _ = table(rec, x0, y, header, cells, size=size, row_h=row_h, align=align)
-    y = _paragraph(rec, x0, y - 1.0, SUMMARY_NOTE, SMALL, room)
+    y = _paragraph(rec, x0, y - 1.0, summary_note(lang), SMALL, room)
     for r in notes:
-        y = _paragraph(rec, x0, y, f"Variant {r['variant']}: {r.get('note', '')}", SMALL, room)
+        y = _paragraph(rec, x0, y, word("variant note", lang, v=escape(str(r['variant'])),
+                                        note=escape(r.get('note', ''))), SMALL, room)
     return rec
 
 
-def cell(value: Any, as_given: bool = False) -> str:
-    """A summary cell: answers to 4 significant digits, a variant's data as given (``as_given``)."""
+def cell(value: Any, as_given: bool = False, lang: str = "en") -> str:
+    """A summary cell: answers to 4 significant digits, a variant's data as given (``as_given``),
+    in the language's decimal sign; the status word in ``lang``."""
     if value is None:
         return ""
     if isinstance(value, float):
-        return f"{value:g}" if as_given else fmt(value, 4)
+        text = f"{value:g}" if as_given else fmt(value, 4)
+        return text.replace(".", ",") if lang == "uk" else text
+    if value in ("ok", "skipped"):
+        return word(value, lang)
     return str(value)

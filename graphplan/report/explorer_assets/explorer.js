@@ -48,6 +48,10 @@
   const $ = (id) => document.getElementById(id);
 
   // -- numbers: Python's "{:.4g}" so the page shows what `graphplan analyze` prints ------------------
+  // -- numbers as the page's language writes them: the decimal comma in Ukrainian ---------------------
+  const dec = (s) => (D.lang === "uk" ? s.replace(/\./g, ",") : s);
+  const fx = (x, n) => dec(x.toFixed(n));
+
   function fmtG(x, p) {
     if (x === null || x === undefined || !isFinite(x)) return "—";
     if (x === 0) return "0";
@@ -55,10 +59,10 @@
     const exp = parseInt(e.split("e")[1], 10);
     const strip = (s) => (s.indexOf(".") >= 0 ? s.replace(/0+$/, "").replace(/\.$/, "") : s);
     if (exp < -4 || exp >= p) {
-      return strip(e.split("e")[0]) + "e" + (exp < 0 ? "-" : "+") + String(Math.abs(exp)).padStart(2, "0");
+      return dec(strip(e.split("e")[0])) + "e" + (exp < 0 ? "-" : "+") + String(Math.abs(exp)).padStart(2, "0");
     }
     const s = strip(x.toFixed(Math.max(0, p - 1 - exp)));
-    return s === "-0" ? "0" : s;
+    return s === "-0" ? "0" : dec(s);
   }
   const fmtMu = (v) => fmtG(v, 4);
 
@@ -286,9 +290,9 @@
       td[1].setAttribute("data-value", String(x));
       if (r) {
         const g = row.source === "slide_v" && x < 0 ? -r[1] : r[1];   // signed along the guide, as exact
-        td[0].textContent = fmtG(g, 4) + (r[0] !== null ? " (" + r[0].toFixed(1) + (D.lang === "uk" ? " мм)" : " mm)") : "");
+        td[0].textContent = fmtG(g, 4) + (r[0] !== null ? " (" + fx(r[0], 1) + (D.lang === "uk" ? " мм)" : " mm)") : "");
         td[0].setAttribute("data-value", String(g));
-        td[2].textContent = r[2] === null ? "—" : r[2].toFixed(2);
+        td[2].textContent = r[2] === null ? "—" : fx(r[2], 2);
         td[2].className = "error" + (r[2] !== null && Math.abs(r[2]) > 5 ? " bad" : "");
       } else {
         td[0].textContent = "";
@@ -304,8 +308,8 @@
     ul.innerHTML = "";
     const add = (kind, s) => { const li = document.createElement("li"); li.setAttribute("data-kind", kind); li.textContent = s; ul.appendChild(li); };
     const half = D.step / 2 + 1e-6;
-    D.warnings.extremes.forEach((e) => { if (Math.abs(((G.phi[i] - e + 540) % 360) - 180) <= half) add("extreme", W.extreme + e.toFixed(2) + "°"); });
-    Object.keys(G.crossing).forEach((g) => { const a = G.crossing[g][i]; if (a < D.warnings.small) add("crossing", g + W.crossing + a.toFixed(1) + W.small); });
+    D.warnings.extremes.forEach((e) => { if (Math.abs(((G.phi[i] - e + 540) % 360) - 180) <= half) add("extreme", W.extreme + fx(e, 2) + "°"); });
+    Object.keys(G.crossing).forEach((g) => { const a = G.crossing[g][i]; if (a < D.warnings.small) add("crossing", g + W.crossing + fx(a, 1) + W.small); });
     const lab = labKey[i];
     if (lab && D.warnings.plans[String(lab.key)]) D.warnings.plans[String(lab.key)].forEach((s) => add("plan", s));
     if (!ul.firstChild) add("none", W.none);
@@ -313,11 +317,11 @@
   (function allWarnings() {
     const ul = $("warnings-all");
     const add = (s) => { const li = document.createElement("li"); li.textContent = s; ul.appendChild(li); };
-    D.warnings.extremes.forEach((e) => add(W.extreme + e.toFixed(2) + "°"));
+    D.warnings.extremes.forEach((e) => add(W.extreme + fx(e, 2) + "°"));
     Object.keys(G.crossing).forEach((g) => {
       let lo = 90, where = 0;
       G.crossing[g].forEach((a, i) => { if (a < lo) { lo = a; where = G.phi[i]; } });
-      if (lo < D.warnings.small) add(g + W.crossing + lo.toFixed(1) + W.small + ", φ = " + where.toFixed(1) + "°");
+      if (lo < D.warnings.small) add(g + W.crossing + fx(lo, 1) + W.small + ", φ = " + fx(where, 1) + "°");
     });
     Object.keys(D.warnings.plans).forEach((k) => D.warnings.plans[k].forEach((s) => add(W.lab + k + ": " + s)));
     D.warnings.study.forEach(add);
@@ -405,7 +409,7 @@
     slider.value = String(G.phi[i]);
     slider.setAttribute("data-index", String(i));
     const lab = labKey[i];
-    $("phi-value").textContent = W.phi + " = " + G.phi[i].toFixed(2) + "°" + (lab && lab.index !== null ? " — " + W.lab + lab.index : "");
+    $("phi-value").textContent = W.phi + " = " + fx(G.phi[i], 2) + "°" + (lab && lab.index !== null ? " — " + W.lab + lab.index : "");
     $("phi-value").setAttribute("data-phi", String(G.phi[i]));
     document.querySelectorAll("#lab-positions button").forEach((b) => { b.className = lab && b.getAttribute("data-key") === String(lab.key) ? "current" : ""; });
     drawMechanism(i);
@@ -429,14 +433,14 @@
     const b = document.createElement("button");
     b.type = "button";
     b.setAttribute("data-key", String(p.key));
-    b.textContent = p.index !== null ? String(p.index) : p.phi.toFixed(1) + "°";
-    b.title = W.lab + (p.index !== null ? p.index : "") + ", φ = " + p.phi.toFixed(2) + "°";
+    b.textContent = p.index !== null ? String(p.index) : fx(p.phi, 1) + "°";
+    b.title = W.lab + (p.index !== null ? p.index : "") + ", φ = " + fx(p.phi, 2) + "°";
     b.addEventListener("click", () => show(nearest(p.phi)));
     $("lab-positions").appendChild(b);
   });
 
   // -- the words ---------------------------------------------------------------------------------------
-  $("facts").textContent = W.structure + D.structure + "; " + W.omega + fmtG(D.omega1, 5) + W.facts2 + "; φ0 = " + D.phi0.toFixed(2) + "°";
+  $("facts").textContent = W.structure + D.structure + "; " + W.omega + fmtG(D.omega1, 5) + W.facts2 + "; φ0 = " + fx(D.phi0, 2) + "°";
   $("play").textContent = W.play;
   $("cap-mech").textContent = W.mech + fmtMu(muL) + (D.lang === "uk" ? " м/мм" : " m/mm");
   $("cap-vplan").textContent = W.vplan + fmtMu(muV) + (D.lang === "uk" ? " (м/с)/мм" : " (m/s)/mm");

@@ -1,0 +1,119 @@
+"""The small typesetting markup of the lab's notation: sub- and superscripts in drawn text.
+
+``a^τ_BA`` is a with τ above and BA below (stacked, as the lab writes it); ``p_v``, ``μ_l``,
+``M_зр``, ``R^n_34``, ``W = 3n − 2p_5 − p_4``. After ``_`` (subscript) or ``^`` (superscript)
+comes either a ``{group}`` or a run of letters and digits; ``\\_``, ``\\^``, ``\\{``, ``\\}`` and
+``\\\\`` are the characters themselves (``escape`` makes any name from a scene literal). A
+superscript directly followed by a subscript (or the other way round) is stacked over it.
+
+Renderers read ``runs``; the terminal reads ``plain``. Plain data and tiny functions.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+SMALL = 0.7        # the size of a sub- or superscript relative to its text
+SUB_SHIFT = 0.3    # how far a subscript's baseline drops, in the text's height
+SUP_SHIFT = 0.45   # how far a superscript's baseline rises, in the text's height
+_SPECIAL = "_^{}\\"
+
+
+@dataclass(frozen=True)
+class Run:
+    """A piece of text on one level: 0 the line, −1 a subscript, +1 a superscript. ``stacked``: it
+    starts where the previous run (the other script of the same base) started."""
+    text: str
+    level: int = 0
+    stacked: bool = False
+
+
+def escape(text: str) -> str:
+    """``text`` with the markup characters made literal (names, titles and files from a scene)."""
+    return "".join("\\" + c if c in _SPECIAL else c for c in text)
+
+
+def _word_char(c: str) -> bool:
+    return c.isalnum() or c in "'′"
+
+
+def runs(text: str) -> list[Run]:
+    """The text split into runs of one level (see the module's docstring)."""
+    out: list[Run] = []
+    base: list[str] = []
+    i, n = 0, len(text)
+
+    def flush() -> None:
+        if base:
+            out.append(Run("".join(base)))
+            base.clear()
+
+    while i < n:
+        c = text[i]
+        if c == "\\" and i + 1 < n and text[i + 1] in _SPECIAL:
+            base.append(text[i + 1])
+            i += 2
+            continue
+        if c in "_^" and i + 1 < n:
+            if text[i + 1] == "{":
+                end = text.find("}", i + 2)
+                if end < 0:
+                    base.append(c)
+                    i += 1
+                    continue
+                body, i = text[i + 2:end], end + 1
+            elif _word_char(text[i + 1]):
+                j = i + 1
+                while j < n and _word_char(text[j]):
+                    j += 1
+                body, i = text[i + 1:j], j
+            else:
+                base.append(c)
+                i += 1
+                continue
+            flush()
+            level = -1 if c == "_" else 1
+            prev = out[-1] if out else None
+            stacked = prev is not None and prev.level == -level and not prev.stacked
+            out.append(Run(body, level, stacked))
+            continue
+        base.append(c)
+        i += 1
+    flush()
+    return out
+
+
+def indexed(name: str) -> str:
+    """A point's name with its number as a subscript: S4 → S_4, O1 → O_1, s3 → s_3, B → B."""
+    head = name.rstrip("0123456789")
+    return f"{escape(head)}_{name[len(head):]}" if head and head != name else escape(name)
+
+
+def is_plain(text: str) -> bool:
+    """No markup at all (the renderers' fast path)."""
+    return not any(c in text for c in _SPECIAL)
+
+
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_SUP = str.maketrans("0123456789nk-", "⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵏ⁻")
+
+
+def plain(text: str) -> str:
+    """The text for a terminal: digits and n, k as Unicode sub-/superscripts (p₅, aⁿ), the rest
+    written with _ and ^ (a^τ_BA, M_зр); braces and escapes gone."""
+    if is_plain(text):
+        return text
+    parts = []
+    for r in runs(text):
+        if r.level == 0:
+            parts.append(r.text)
+        elif r.level < 0:
+            parts.append(r.text.translate(_SUB) if r.text.isdigit() else "_" + r.text)
+        else:
+            ok = all(c in "0123456789nk-" for c in r.text)
+            parts.append(r.text.translate(_SUP) if ok else "^" + r.text)
+    return "".join(parts)
+
+
+def flat(text: str) -> str:
+    """The characters that are drawn, in order (for widths and searching)."""
+    return "".join(r.text for r in runs(text)) if not is_plain(text) else text

@@ -1,0 +1,446 @@
+"""The one catalogue of words a person reads (sheets, tables, terminal, warnings, keys and grading),
+Ukrainian and English, with the lab's terms; the units in both languages; and the one number
+formatter (the decimal comma in Ukrainian, the same significant figures everywhere).
+
+Plain data and tiny functions: every room may import it. JSON never goes through here (it stays SI
+with decimal points). Text may carry the typesetting markup of ``util.markup`` ("a^τ_BA", "M_зр").
+"""
+from __future__ import annotations
+
+import math
+import re
+
+from graphplan.util.errors import GraphplanError
+
+LANGS = ("uk", "en")
+DEFAULT_LANG = "uk"
+
+
+def check_lang(lang: str | None) -> str:
+    """``lang`` if it is one of LANGS (None → the default, Ukrainian)."""
+    if lang is None:
+        return DEFAULT_LANG
+    if lang not in LANGS:
+        raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
+    return lang
+
+
+def pick(lang: str | None, *candidates: str | None) -> str:
+    """The first language given: the command line's, then the scene's ``lang``, then Ukrainian."""
+    for c in (lang, *candidates):
+        if c:
+            return check_lang(c)
+    return DEFAULT_LANG
+
+
+# -- units ------------------------------------------------------------------------------------------
+# key → (Ukrainian, English); scale units are "real value per drawn millimetre"
+UNITS: dict[str, tuple[str, str]] = {
+    "m": ("м", "m"), "mm": ("мм", "mm"), "s": ("с", "s"), "rad": ("рад", "rad"), "deg": ("°", "°"),
+    "N": ("Н", "N"), "N·m": ("Н·м", "N·m"), "N·mm": ("Н·мм", "N·mm"), "kg": ("кг", "kg"),
+    "kg·m²": ("кг·м²", "kg·m²"), "J": ("Дж", "J"), "W": ("Вт", "W"), "kW": ("кВт", "kW"),
+    "m/s": ("м/с", "m/s"), "m/s²": ("м/с²", "m/s²"), "rad/s": ("рад/с", "rad/s"),
+    "rad/s²": ("рад/с²", "rad/s²"), "rpm": ("об/хв", "rpm"), "1/s": ("с⁻¹", "s⁻¹"),
+    "m/mm": ("м/мм", "m/mm"), "s/mm": ("с/мм", "s/mm"), "rad/mm": ("рад/мм", "rad/mm"),
+    "deg/mm": ("°/мм", "°/mm"),
+    "(m/s)/mm": ("(м/с)/мм", "(m/s)/mm"), "(m/s²)/mm": ("(м/с²)/мм", "(m/s²)/mm"),
+    "(rad/s)/mm": ("(рад/с)/мм", "(rad/s)/mm"), "(rad/s²)/mm": ("(рад/с²)/мм", "(rad/s²)/mm"),
+    "N/mm": ("Н/мм", "N/mm"), "N·m/mm": ("Н·м/мм", "N·m/mm"), "J/mm": ("Дж/мм", "J/mm"),
+    "kg·m²/mm": ("кг·м²/мм", "kg·m²/mm"), "%": ("%", "%"),
+}
+
+
+def unit(key: str, lang: str) -> str:
+    """A unit in the sheet's language: unit("(m/s)/mm", "uk") → "(м/с)/мм"."""
+    uk, en = UNITS[key]
+    return uk if lang == "uk" else en
+
+
+# -- pair kinds -------------------------------------------------------------------------------------
+# R (обертальна, В) and P (поступальна, П): RPR is the lab's ВПВ, the slotted link ("куліса")
+PAIR_LETTERS = {"R": "В", "P": "П"}
+
+
+def pair_kind(kind: str, lang: str) -> str:
+    """A dyad's kind by its pairs: "RPR" → "ВПВ" in Ukrainian, unchanged in English."""
+    if lang != "uk":
+        return kind
+    return "".join(PAIR_LETTERS.get(c, c) for c in kind)
+
+
+# -- the lab's symbols -------------------------------------------------------------------------------
+_FORCE = re.compile(r"^(MΦ|Φ|G|R|P_|M_)([0-9]+(?:-[0-9]+)?|[A-Za-z][A-Za-z0-9]*)(τ|n|\^⊥|\^∥)?('*)$")
+
+
+def force_symbol(name: str, lang: str) -> str:
+    """A force's name as the lab writes it (markup): G2 → G_2, Φ2 → Φ_2, MΦ3 → M^Φ_3, R12 → R_12,
+    R34τ → R^τ_34, R34n → R^n_34, R34^⊥ → R^⊥_34, P_b and M_b → P_зр, M_зр in Ukrainian."""
+    if name in ("M_b", "P_b"):
+        return word(name, lang)
+    m = _FORCE.match(name)
+    if not m:
+        return name
+    letter, index, mark, primes = m.groups()
+    letter = {"MΦ": "M", "P_": "P", "M_": "M"}.get(letter, letter)
+    top = "Φ" if m.group(1) == "MΦ" else (mark or "").lstrip("^")
+    low = "{" + index + "}"
+    return (f"{letter}^{{{top}}}_{low}" if top else f"{letter}_{low}") + primes
+
+
+# -- numbers ----------------------------------------------------------------------------------------
+SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+DIGITS = 4     # significant figures of every value a person reads (tables, sheets, terminal)
+
+
+def _comma(text: str, lang: str) -> str:
+    return text.replace(".", ",") if lang == "uk" else text
+
+
+def num(v: float | None, lang: str = "en", digits: int = DIGITS) -> str:
+    """A value as the lab writes it: ``digits`` significant figures, no trailing zeros, ·10ⁿ for
+    very small or large numbers, the decimal comma in Ukrainian; "—" for none or not finite."""
+    if v is None:
+        return "—"
+    v = float(v)
+    if not math.isfinite(v):
+        return "—"
+    if v == 0:
+        return "0"
+    e = math.floor(math.log10(abs(v)))
+    rounded = float(f"{v:.{digits - 1}e}")        # the exponent after rounding (9.9996 → 10)
+    e = math.floor(math.log10(abs(rounded))) if rounded else e
+    if -4 <= e < 6:
+        text = f"{rounded:.{max(digits - 1 - e, 0)}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+    else:
+        m = f"{rounded / 10 ** e:.{digits - 1}f}".rstrip("0").rstrip(".")
+        text = f"{m}·10{str(e).translate(SUPER)}"
+    return _comma("0" if text in ("-0", "") else text, lang)
+
+
+def fixed(v: float | None, lang: str = "en", decimals: int = 1, plus: bool = False) -> str:
+    """A value with a fixed count of decimals (angles, drawn millimetres, percents); ``plus``
+    writes the sign of positive values too; "—" for none."""
+    if v is None or not math.isfinite(float(v)):
+        return "—"
+    text = f"{float(v) + 0.0:{'+' if plus else ''}.{decimals}f}"
+    if text.lstrip("+-").strip("0.") == "":
+        text = text.replace("-", "+" if plus else "")
+    return _comma(text, lang)
+
+
+def pct(v: float | None, lang: str = "en", decimals: int = 2) -> str:
+    """A signed percent error: "+1,08" (no % sign: the column says it); "—" for none."""
+    return fixed(v, lang, decimals, plus=True)
+
+
+def scale_text(symbol: str, mu: float, unit_key: str, lang: str) -> str:
+    """"μ_v = 0,2 (м/с)/мм" — a scale coefficient with its (markup) symbol and unit."""
+    return f"{symbol} = {num(mu, lang)} {unit(unit_key, lang)}"
+
+
+# -- the catalogue ----------------------------------------------------------------------------------
+# key → (Ukrainian, English). Keys name the idea; a value may hold {fields} for str.format.
+WORDS: dict[str, tuple[str, str]] = {
+    # sheets: captions and tables
+    "position plan": ("План положень", "Position plan"),
+    "velocity plan": ("План швидкостей", "Velocity plan"),
+    "acceleration plan": ("План прискорень", "Acceleration plan"),
+    "position": ("положення", "position"),
+    "positions": ("положення", "positions"),
+    "diagrams": ("Кінематичні діаграми", "Kinematic diagrams"),
+    "velocity table": ("Таблиця 1. Швидкості, {m/s}; ω, {rad/s}", "Table 1. Velocities, {m/s}; ω, {rad/s}"),
+    "acceleration table": ("Таблиця 2. Прискорення, {m/s²}; ε, {rad/s²}, положення",
+                           "Table 2. Accelerations, {m/s²}; ε, {rad/s²}, position"),
+    "graphical": ("графічно", "graphical"),
+    "analytic": ("аналітично", "analytic"),
+    "quantity": ("величина", "quantity"),
+    "structure formula": ("Структурна формула", "Structural formula"),
+    "mobility": ("Ступінь рухомості", "Mobility"),
+    "scales": ("Масштабні коефіцієнти", "Scale coefficients"),
+    "precision": ("Точність креслення", "Drafting precision"),
+    "max error": ("Найбільша похибка планів швидкостей (вектори від 20 мм)",
+                  "Largest error of the velocity plans (vectors from 20 mm)"),
+    "sheet written": ("{path} ({form} {size}, блоків: {n})", "{path} ({form} {size}, {n} blocks)"),
+    "kinematics subtitle": ("Кінематичний аналіз", "Kinematic analysis"),
+    "forces subtitle": ("Силовий аналіз", "Force analysis"),
+    "group": ("Група", "Group"),
+    "force plan of group": ("План сил групи", "Force plan of group"),
+    "reactions of group": ("Реакції групи", "Reactions of group"),
+    "lever": ("Важіль Жуковського", "Zhukovsky lever"),
+    "balancing moment": ("Зрівноважувальний момент", "Balancing moment"),
+    "balancing moment turn": ("Зрівноважувальний момент за оберт", "Balancing moment over a turn"),
+    "hodograph": ("Годограф реакції", "Hodograph of reaction"),
+    "hodographs": ("Годографи реакцій в обертальних парах", "Hodographs of the reactions in the revolute pairs"),
+    "pair": ("пара", "pair"),
+    "chart turn": ("поворот кривошипа від положення 0, ° (робочий хід затінено)",
+                   "crank turn from position 0, ° (working stroke shaded)"),
+    "balancing moment crank": ("Зрівноважувальний момент на кривошипі", "Balancing moment on the crank"),
+    "force": ("сила", "force"),
+    "force value": ("P, {N} (M, {N·m})", "P, {N} (M, {N·m})"),
+    "drawn mm": ("на кресленні, {mm}", "drawn, {mm}"),
+    "angle deg": ("кут, °", "angle, °"),
+    "exact N": ("точно, {N}", "exact, {N}"),
+    "exact deg": ("точно, °", "exact, °"),
+    "closed form": ("аналітично (кінетостатика)", "closed form (kinetostatics)"),
+    "closed form short": ("аналітично", "closed form"),
+    "by force plans": ("за планами сил", "force plans"),
+    "by lever": ("важіль Жуковського", "Zhukovsky lever"),
+    "by power": ("баланс потужностей", "power balance"),
+    "crank group": ("(кривошип)", "(the crank)"),
+    "rotating output": ("ланки", "link"),
+    "sliding output": ("точки", "point"),
+    # title block (GOST 2.104)
+    "tb rev": ("Змн.", "Rev."), "tb sheet": ("Арк.", "Sh."), "tb doc": ("№ докум.", "Doc. No."),
+    "tb sign": ("Підпис", "Sign."), "tb date": ("Дата", "Date"), "tb drawn": ("Розроб.", "Drawn"),
+    "tb checked": ("Перевір.", "Checked"), "tb tech": ("Т.контр.", "T.ctrl"),
+    "tb norm": ("Н.контр.", "N.ctrl"), "tb approved": ("Затв.", "Approved"), "tb letter": ("Літ.", "Lit."),
+    "tb mass": ("Маса", "Mass"), "tb scale": ("Масштаб", "Scale"), "tb sheet no": ("Аркуш", "Sheet"),
+    "tb sheets": ("Аркушів", "Sheets"), "tb study letter": ("Н", "S"),
+    # diagrams
+    "diagrams title": ("Кінематичні діаграми {what} {how}", "Kinematic diagrams of {what} {how}"),
+    "method chords": ("методом хорд", "by the method of chords"),
+    "method corrected": ("методом хорд з корекцією площ", "by the method of chords with the area correction"),
+    "method tangents": ("методом дотичних (дзеркало, ±{e}°)", "by the method of tangents (mirror, ±{e}°)"),
+    "divisions count": ("{n} поділок", "{n} divisions"),
+    "tangent ordinates": ("Ординати методу дотичних (на ординатах поділу)",
+                          "The tangents' ordinates (at the division ordinates)"),
+    "at ordinates": ("На ординатах поділу (крива, прочитана на ординатах)",
+                     "At the division ordinates (the curves read there)"),
+    "chord ordinates": ("Ординати методу хорд (посередині інтервалів)",
+                        "The chords' ordinates (at the middles of the intervals)"),
+    "chosen": ("У двох заданих положеннях", "At the two chosen positions"),
+    "no": ("№", "No"), "interval": ("інт.", "int."), "graph short": ("графічно", "graph."),
+    "exact": ("точно", "exact"), "error pct": ("δ, %", "δ, %"),
+    "integration": ("Графічне інтегрування (зворотна побудова)",
+                    "Graphical integration (the reverse construction)"),
+    "warnings": ("Попередження", "Warnings"), "none": ("немає", "none"),
+    "v from a": ("v з a", "v from a"), "s from a": ("s з a через v", "s from a through v"),
+    "s from v": ("s з ординат v", "s from the v ordinates"),
+    "deviation": ("найбільше відхилення {mm} мм ({pct} % від максимуму), незамикання {cl} мм",
+                  "largest deviation {mm} mm ({pct} % of the maximum), closure {cl} mm"),
+    "period": ("T = 2π/ω_1 = {T} с на L = {L} мм", "T = 2π/ω_1 = {T} s over L = {L} mm"),
+    "letters": ("а) б) в)", "a) b) c)"),
+    # plans (terminal)
+    "plans title": ("графічні плани", "graphical plans"),
+    "ruler": ("лінійка", "ruler"),
+    "structure": ("будова", "structure"),
+    "velocities read": ("Швидкості, виміряні на планах швидкостей, {m/s} (ω, {rad/s}, + проти годинникової стрілки)",
+                        "Velocities read off the velocity plans, {m/s} (ω, {rad/s}, + counter-clockwise)"),
+    "errors exact": ("Похибки відносно точного розв'язку, % (— де точне значення ≈ 0)",
+                     "Errors against the exact solution, % (— where the exact value is ~0)"),
+    "accelerations at": ("Прискорення в положенні", "Accelerations at position"),
+    "plan": ("план", "plan"),
+    "error": ("похибка, %", "error, %"),
+    "rates": ("ε, {rad/s²}, + проти годинникової стрілки", "ε, {rad/s²}, + counter-clockwise"),
+    # plan warnings
+    "warn lines": ("{plan}, {group} ({step}): напрямні лінії перетинаються під кутом {angle}° "
+                   "(< {limit}°); зсув на 0,5 мм переміщує {what} на {slip} мм",
+                   "{plan}, {group} ({step}): the direction lines cross at {angle}° "
+                   "(< {limit}°); a 0.5 mm slip moves {what} by {slip} mm"),
+    "warn position": ("план положень, {group}: {what} під кутом {angle}° (< {limit}°), {how}",
+                      "position plan, {group}: {what} at {angle}° (< {limit}°), {how}"),
+    "nearly tangent": ("майже дотичні", "nearly tangent"),
+    "nearly parallel": ("майже паралельні", "nearly parallel"),
+    "warn dead centre": ("мертве положення {groups} при φ = {phi}°{near}: {names} {verb}; "
+                         "їхні похибки у відсотках не наводяться",
+                         "dead centre of {groups} at φ = {phi}°{near}: {names} {verb}; "
+                         "their percent errors are left out"),
+    "and": ("і", "and"),
+    "vanishes": ("дорівнює нулю", "vanishes"),
+    "vanish": ("дорівнюють нулю", "vanish"),
+    "near extreme": (", {angle}° від крайнього положення φ = {phi}°", ", {angle}° from the extreme position φ = {phi}°"),
+    "velocity plan lower": ("план швидкостей", "velocity plan"),
+    "acceleration plan lower": ("план прискорень", "acceleration plan"),
+    "position plan lower": ("план положень", "position plan"),
+    # analyze (terminal), the study's warnings
+    "dyad title": ("група {label} {kind} (ланки {a}, {b})", "dyad {label} {kind} (links {a}, {b})"),
+    "warn near locking": ("{dyad}: напрямні лінії перетинаються лише під кутом {angle}° біля кута кривошипа "
+                          "{phi}° (майже заклинювання; плани там погано обумовлені)",
+                          "{dyad}: its direction lines cross at only {angle}° near crank angle {phi}° "
+                          "(close to locking; plans there are ill-conditioned)"),
+    "warn block near pivot": ("{dyad}: повзун {block} проходить на відстані {mm} мм від опори {pivot} біля "
+                              "кута кривошипа {phi}°; ω куліси сягає {w} рад/с",
+                              "{dyad}: the block {block} passes within {mm} mm of the pivot {pivot} near "
+                              "crank angle {phi}°; the slotted link's ω reaches {w} rad/s"),
+    "ccw": ("проти годинникової стрілки", "counter-clockwise"),
+    "cw": ("за годинниковою стрілкою", "clockwise"),
+    "dyad line": ("  {label}: {kind}, ланки {a} і {b}", "  {label}: {kind}, links {a} and {b}"),
+    "derived": ("  обчислено {key} = {value}", "  derived {key} = {value}"),
+    "turns fully": ("немає (ланка повертається повністю)", "none (the output turns fully)"),
+    "output line": ("вихідна ланка {name}; крайні положення при φ = {ex}; положення 0 при φ = {phi0}°",
+                    "output {name}; extreme positions at φ = {ex}; position 0 at φ = {phi0}°"),
+    "point velocities": ("Швидкості точок |v|, {m/s}", "Velocities of points |v|, {m/s}"),
+    "point accelerations": ("Прискорення точок |a|, {m/s²}", "Accelerations of points |a|, {m/s²}"),
+    "angular velocities": ("Кутові швидкості ω (+ проти годинникової стрілки), {rad/s}",
+                           "Angular velocities ω (+ counter-clockwise), {rad/s}"),
+    "angular accelerations": ("Кутові прискорення ε, {rad/s²}", "Angular accelerations ε, {rad/s²}"),
+    "slide table": ("Повзун {key} ({slider} на {carrier}): s від положення 0, {m}; v, a вздовж напрямної; "
+                    "коріолісове |a^k|",
+                    "Slide {key} ({slider} on {carrier}): s from position 0, {m}; v, a along the guide; "
+                    "Coriolis |a^k|"),
+    "the frame": ("стояку", "the frame"),
+    # forces (terminal)
+    "forces at": ("силовий аналіз при φ = {phi}° ({turn}° повороту кривошипа від положення 0, {stroke})",
+                  "force analysis at φ = {phi}° ({turn}° of crank turn from position 0, {stroke})"),
+    "working stroke": ("робочий хід", "working stroke"),
+    "idle stroke": ("холостий хід", "idle stroke"),
+    "forces scales": ("ω_1 = {w} {rad/s}; точність креслення {p} {mm}; μ_l = {ml} {m/mm}, "
+                      "μ_F = {mf} {N/mm}, μ_v = {mv} {(m/s)/mm}",
+                      "ω_1 = {w} {rad/s}; drafting precision {p} {mm}; μ_l = {ml} {m/mm}, "
+                      "μ_F = {mf} {N/mm}, μ_v = {mv} {(m/s)/mm}"),
+    "loads": ("Навантаження: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ проти годинникової стрілки), зовнішні сили",
+              "Loads: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ counter-clockwise), external forces"),
+    "no loads": ("немає: у сцені немає ні мас, ні сил, тож усі реакції нульові",
+                 "none: the scene gives no masses and no forces, so every reaction is zero"),
+    "load": ("навантаження", "load"), "link": ("ланка", "link"), "value": ("значення", "value"),
+    "group line": ("Група {label} {kind}, ланки {links}", "Group {label} {kind}, links {links}"),
+    "moment eq balancing": ("  ΣM_{about} = 0: M_зр {terms} = 0 (сили × плечі в мм × μ_l) → M_зр = {r} {N·m}",
+                            "  ΣM_{about} = 0: M_b {terms} = 0 (forces × arms in mm × μ_l) → M_b = {r} {N·m}"),
+    "forces on group": ("  сили, що діють на групу:", "  forces on the group:"),
+    "reactions from plan": ("  реакції з плану сил:", "  reactions from the force plan:"),
+    "lever head": ("Важіль Жуковського (план швидкостей, повернутий на 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):",
+                   "Zhukovsky lever (velocity plan turned 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):"),
+    "image": ("образ", "image"),
+    "lever sum": ("  ΣF·h = {s} {N·mm} (h + проти годинникової стрілки відносно полюса)",
+                  "  ΣF·h = {s} {N·mm} (h + counter-clockwise about the pole)"),
+    "lever result": ("  P_зр = ΣF·h / pa = {p} {N};  M_зр = P_зр·l_OA = {m} {N·m}",
+                     "  P_b = ΣF·h / pa = {p} {N};  M_b = P_b·l_OA = {m} {N·m}"),
+    "balancing head": ("Зрівноважувальний момент на кривошипі M_зр ({N·m}, + проти годинникової стрілки):",
+                       "Balancing moment on the crank M_b ({N·m}, + counter-clockwise):"),
+    "M_b": ("M_зр", "M_b"), "P_b": ("P_зр", "P_b"),
+    # keys, grading, bench
+    "variant": ("варіант", "variant"), "student": ("студент", "student"), "status": ("стан", "status"),
+    "ok": ("готово", "ok"), "skipped": ("пропущено", "skipped"),
+    "keys title": ("Ключі відповідей: {table} — варіантів {n}, записано {written}",
+                   "Answer keys: {table} — {n} variants, {written} written"),
+    "keys skipped": (", пропущено {k}", ", {k} skipped"),
+    "variant note": ("варіант {v}: {note}", "variant {v}: {note}"),
+    "rows in": ("{n} рядків за {t} с → {path}", "{n} rows in {t} s → {path}"),
+    "bench head": ("розділ|метод|умови|час, с|похибка, %|стан", "section|method|setting|time, s|error, %|status"),
+    "bench speed": ("швидкодія", "speed"), "bench stability": ("стійкість", "stability"),
+    "bench chords": ("хорди", "chords"), "bench plans": ("плани", "plans"), "bench sheet": ("аркуш", "sheet"),
+    "bench analytic": ("аналітично", "analytic"), "bench plans velocity": ("план швидк.", "plans velocity"),
+    "bench plans acceleration": ("план приск.", "plans acceleration"), "bench chords v": ("хорди v", "chords v"),
+    "bench chords a": ("хорди a", "chords a"),
+    "bench ok": ("гаразд", "ok"), "bench warning": ("попередження", "warning"), "bench refused": ("відмова", "refused"),
+    "bench precision": ("точність", "precision"),
+    "bench external": ("зовнішні", "external"), "bench not installed": ("не встановлено", "not installed"),
+    "bench closed-form dyads, vectorised over the angles (the reference)": (
+        "групи в замкненій формі, векторизовано за кутами (еталон)",
+        "closed-form dyads, vectorised over the angles (the reference)"),
+    "bench positions": ("положення", "positions"), "bench velocities": ("швидкості", "velocities"),
+    "bench accelerations": ("прискорення", "accelerations"),
+    "bench sweep four_bar": ("чотириланковик до мертвого положення (O2B → 0,15 м)",
+                             "four_bar toward its toggle (O2B → 0.15 m)"),
+    "bench sweep crank_slider": ("кривошипно-повзунний l/r → 1", "crank_slider l/r → 1"),
+    "bench sweep slotted": ("куліса, опора куліси → коло кривошипа (c/r → 1)",
+                            "slotted link, rocker pivot → crank circle (c/r → 1)"),
+    # answer keys
+    "key title": ("Ключ відповідей, варіант {variant}", "Answer key, variant {variant}"),
+    "key heading": ("Ключ відповідей — варіант {variant}", "Answer key — variant {variant}"),
+    "student cap": ("Студент", "Student"),
+    "variant data": ("Дані варіанта", "Variant data"),
+    "unit": ("одиниця", "unit"),
+    "key output": ("вихідна ланка {name}, положення 0 при φ = {phi}°", "output {name}, position 0 at φ = {phi}°"),
+    "key tolerance": ("Допуск ±{tol} %{special}; де |точне| менше за {zero} % від найбільшого значення величини "
+                      "за оберт — у межах ±допуску від цього значення. Швидкості та прискорення точок — модулі; "
+                      "ω, ε + проти годинникової стрілки; an, at, ak, ar: нормальне, дотичне, коріолісове, "
+                      "відносне; s, v, a: вихідна ланка вздовж напрямної від положення 0.",
+                      "Tolerance ±{tol} %{special}; where |exact| is below {zero} % of the quantity's largest "
+                      "value over the turn, within ±tolerance of that value. Velocities and accelerations of "
+                      "points are magnitudes; ω, ε + counter-clockwise; an, at, ak, ar: normal, tangential, "
+                      "Coriolis, relative; s, v, a: the output along its guide from position 0."),
+    "key velocities": ("{n}. Швидкості в положеннях 0–{last}", "{n}. Velocities at positions 0–{last}"),
+    "key acceleration": ("{n}. Прискорення в положенні {where}", "{n}. Accelerations at position {where}"),
+    "key accelerations": ("{n}. Прискорення в положеннях {where}", "{n}. Accelerations at positions {where}"),
+    "key diagrams": ("{n}. Діаграми {name} методом хорд, поділок: {k}", "{n}. Diagrams of {name} by chords, {k} divisions"),
+    "key diagrams note": ("s і a на поділках k, v посередині хорд k + {half}",
+                          "s and a at the divisions k, v at the chord midpoints k + {half}"),
+    "key curves": ("{n}. Точні s, v, a ланки {name} за один оберт від положення 0",
+                   "{n}. The exact s, v, a of {name} over one turn from position 0"),
+    "key axis note": ("k: поділки; ординати ключа позначено", "k: divisions; ordinates of the key marked"),
+    "summary note": ("φ_0: кут кривошипа в положенні 0; H, K розр.: хід (розмах) вихідної ланки та коефіцієнт "
+                     "зміни середньої швидкості; |v|_max, |a|_max: найбільші за оберт; стовпці від «пол. a»: "
+                     "у першому положенні плану прискорень.",
+                     "φ_0: the crank angle of position 0; H, K calc: the output's stroke (swing) and time-ratio "
+                     "coefficient; |v|_max, |a|_max: the output's largest over the turn; the columns from pos. a on: "
+                     "at the first acceleration-plan position."),
+    # grading notes and the report
+    "grade no key": ("немає ключа для варіанта {variant} (ключі: {known})", "no key for variant {variant} (keys: {known})"),
+    "grade not a number": ("положення {text} не є числом", "position {text} is not a number"),
+    "grade abscissae": ("абсциси діаграми: 0, {half}, … {n}", "the diagram's abscissae are 0, {half}, … {n}"),
+    "grade positions": ("положення: 0 … {last}", "positions are 0 … {last}"),
+    "grade position is 0": ("положення {count} — це положення 0", "position {count} is position 0"),
+    "grade unknown quantity": ("невідома величина {q}", "unknown quantity {q}"),
+    "grade no value": ("немає значення", "no value"),
+    "grade no scene": ("немає в ключі (і немає сцени, щоб обчислити)", "not in the key (and no scene to compute it)"),
+    "grade computed": ("немає в ключі: обчислено", "not in the key: computed"),
+    "grade near zero": ("майже нуль: у межах ±{tol} % від {floor}", "near zero: within ±{tol} % of {floor}"),
+    "grade key no scene": ("у ключі немає сцени: інші кути кривошипа не перевірено",
+                           "the key has no scene: other crank angles not searched"),
+    "grade constant": ("{name} дорівнює {v} при кожному куті кривошипа", "{name} is {v} at every crank angle"),
+    "grade no angle": ("жоден кут кривошипа не дає {name} = {v} (за оберт {lo} … {hi})",
+                       "no crank angle gives {name} = {v} (over the turn {lo} … {hi})"),
+    "grade inaccurate": ("найближчий кут кривошипа з цим значенням — {turn}° від положення 0: "
+                         "неточне значення для цього положення",
+                         "the nearest crank angle with this value is {turn}° from position 0: "
+                         "an inaccurate value for this position"),
+    "grade fits position": ("відповідає положенню {at} ({turn}° від положення 0; точно там {there}), "
+                            "а не положенню {claimed}",
+                            "fits position {at} ({turn}° from position 0; exact there {there}), not position {claimed}"),
+    "grade fits division": ("відповідає поділці {at} ({turn}° від положення 0; точно там {there}), "
+                            "а не поділці {claimed}",
+                            "fits division {at} ({turn}° from position 0; exact there {there}), not division {claimed}"),
+    "graded against": ("{student}: перевірено за ключем {key}", "{student} graded against {key}"),
+    "grade head": ("рядок|варіант|пол.|величина|значення|точно|похибка %|допуск %|результат|примітка",
+                   "line|variant|pos|quantity|value|exact|error %|tol %|result|note"),
+    "pass": ("зарах.", "pass"), "fail": ("НЕ ЗАРАХ.", "FAIL"),
+    "grade summary": ("{rows} рядків: зараховано {passed}, не зараховано {failed}, не оцінено {unknown}; "
+                      "частка зарахованих {rate}; {other} рядків відповідають іншому положенню",
+                      "{rows} rows: {passed} passed, {failed} failed, {unknown} not graded; "
+                      "pass rate {rate}; {other} rows fit another position"),
+    "grade variant": ("  варіант {v}: зараховано {passed}/{total} ({rate})", "  variant {v}: {passed}/{total} passed ({rate})"),
+    "grade variant unknown": (", не оцінено {n}", ", {n} not graded"),
+    "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
+}
+
+
+def word(key: str, lang: str, /, **fields: object) -> str:
+    """The catalogue's text for ``key`` in ``lang``; {m/s}-style fields are units in that language,
+    other {fields} are filled from ``fields``."""
+    uk, en = WORDS[key]
+    text = uk if lang == "uk" else en
+    if "{" not in text:
+        return text
+    units = {k: unit(k, lang) for k in UNITS}
+    return text.format_map(_Fields({**units, **{k: str(v) for k, v in fields.items()}}))
+
+
+class Fixed(float):
+    """A value ``said`` writes with a fixed count of decimals (an angle: 12.5°)."""
+
+    def __new__(cls, value: float, decimals: int = 1):
+        obj = super().__new__(cls, value)
+        obj.decimals = decimals
+        return obj
+
+
+def said(key: str, /, **fields: object) -> dict[str, str]:
+    """The catalogue's text in every language at once (for a message stored before anyone knows who
+    reads it): floats through ``num`` (``Fixed`` through ``fixed``), in each language's writing."""
+    def cell(v: object, lang: str) -> str:
+        if callable(v):                       # a name that depends on the language
+            return str(v(lang))
+        if isinstance(v, Fixed):
+            return fixed(v, lang, v.decimals)
+        if isinstance(v, float):
+            return num(v, lang)
+        return str(v)
+    return {lang: word(key, lang, **{k: cell(v, lang) for k, v in fields.items()}) for lang in LANGS}
+
+
+class _Fields(dict):
+    def __missing__(self, key: str) -> str:
+        raise KeyError(f"words: no value for {{{key}}}")
