@@ -1,15 +1,27 @@
-"""drawings/ is current: every gallery sheet redrawn from examples/ equals the committed file."""
+"""drawings/ is current: every gallery sheet redrawn from examples/ equals the committed file.
+
+The comparison leaves out only the embedded font subset (the base64 data of the SVG's @font-face
+rules): its bytes are fontTools' to write and change with its version, not with the drawing; the
+subset's characters still have to match, since they follow from the sheet's text."""
 from __future__ import annotations
+
+import re
 
 import pytest
 
 from conftest import ROOT
 from graphplan.cli.gallery import available, build
 
+FONT_DATA = re.compile(r"url\(data:font/woff;base64,[A-Za-z0-9+/=]+\)")
+
+
+def drawing(svg: str) -> str:
+    return FONT_DATA.sub("url(data:font/woff;base64,…)", svg)
+
 
 @pytest.mark.parametrize("scene,kind,lang,name", available())
 def test_gallery_sheet_is_current(scene, kind, lang, name):
     path = ROOT / "drawings" / name
     assert path.exists(), f"drawings/{name} is missing: run python -m graphplan.cli.gallery"
-    assert path.read_text(encoding="utf-8") == build(scene, kind, lang), \
+    assert drawing(path.read_text(encoding="utf-8")) == drawing(build(scene, kind, lang)), \
         f"drawings/{name} is out of date: run python -m graphplan.cli.gallery"
