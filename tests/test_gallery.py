@@ -2,7 +2,6 @@
 
 The comparison leaves out only the embedded font subset (the base64 data of the SVG's @font-face
 rules): its bytes are fontTools' to write and change with its version, not with the drawing; the
-subset's characters still have to match, since they follow from the sheet's text."""
 from __future__ import annotations
 
 import re
