@@ -1,7 +1,8 @@
 """drawings/ is current: every gallery sheet redrawn from examples/ equals the committed file.
 
 The comparison leaves out only the embedded font subset (the base64 data of the SVG's @font-face
-rules): its bytes are fontTools' to write and change with its version, not with the drawing; the
+rules): its bytes are fontTools' to write and change with its version, not with the drawing (the
+glyphs it carries follow from the text, which is compared)."""
 from __future__ import annotations
 
 import re
