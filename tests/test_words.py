@@ -299,3 +299,15 @@ def test_every_command_takes_lang():
         options = {o for a in p._actions for o in a.option_strings}
         assert "--lang" in options, f"{name} has no --lang"
         assert p.get_default("lang") is None                # one default for all: the scene's, else uk
+
+
+@pytest.mark.parametrize("scene", ["shaper", "slotter"])
+def test_ukrainian_output_of_dynamics(capsys, scene):
+    """The dynamics' tables in Ukrainian (decimal comma, Ukrainian units), and Ukrainian by default."""
+    path = ROOT / "examples" / f"{scene}.toml"
+    code, out, err = run(capsys, "dynamics", path, "--lang", "uk")
+    assert code == 0, err
+    assert_ukrainian(out, scene_names(path), f"dynamics {scene}")
+    assert not re.search(r"\d\.\d", out), "a decimal point in the Ukrainian tables"
+    code, default, _ = run(capsys, "dynamics", path)
+    assert default == out

@@ -3,6 +3,8 @@ the reduced inertia and moments per position, the flywheel by each method agains
 the steady states and the motor."""
 from __future__ import annotations
 
+import re
+
 import math
 from typing import Any
 
@@ -94,10 +96,10 @@ WORDS = {
     "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; ΔT графічно і точно)",
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
-           "approx": "наближено (ΔTmax − ΔTmin)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
+           "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
-           "u": {"Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
+           "u": {"rotor": "I_рот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
                  "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
@@ -105,7 +107,7 @@ WORDS = {
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
            "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
-           "u": {"Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
+           "u": {"rotor": "I_rotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
                  "s": "s", "steady": "steady state", "peak": "peak moment"}},
 }
 
@@ -144,11 +146,13 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
             f"  P = max M*c·ω1/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
-            f"I_rotor·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
+            f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
             f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
     if f.dyn.warnings:
         out += ["", w["warn"] + ":"] + [f"  {uk if lang == 'uk' else en}" for en, uk in f.dyn.warnings]
-    return "\n".join(out) + "\n"
+    text = "\n".join(out) + "\n"
+    # the decimal comma of the Ukrainian tables (the rows above format with Python's point)
+    return re.sub(r"(?<=\d)\.(?=\d)", ",", text) if lang == "uk" else text
 
 
 def _pct(v: float | None) -> str:
