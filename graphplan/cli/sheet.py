@@ -15,7 +15,8 @@ def register(sub) -> None:
     p.add_argument("scene", nargs="?", help="scene file (TOML); the built-in crank-slider when omitted")
     p.add_argument("-o", "--output", required=True, metavar="FILE",
                    help="output file: .svg, .pdf, .png or .dxf")
-    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
+    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3; what does not fit "
+                   "goes to further sheets of the set (FILE-2, FILE-3 …)")
     p.add_argument("--lang", default="uk", choices=["uk", "en"], help="labels: Ukrainian (default) or English")
     p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces"],
                    help="which sheet: kinematics (default) or forces")
@@ -38,7 +39,11 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     build = BUILDERS.get(args.sheet)
     if build is None:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
-    sheet = build(st, f, args)
+    from graphplan.sheets.compose import SheetOptions, page_path
+    sheet = build(st, f, SheetOptions(positions=args.positions, accel=args.accel, precision=args.precision,
+                                      lang=args.lang, sheet=args.sheet))
     path = sheet.write(args.output, args.text_as_paths)
-    print(f"{path} ({f.name} {f.width:g}×{f.height:g} mm, {len(sheet.placed)} blocks)", file=sys.stderr)
+    for n, page in enumerate(sheet.pages, 1):
+        print(f"{page_path(path, n)} ({f.name} {f.width:g}×{f.height:g} mm, sheet {n} of {len(sheet.pages)}, "
+              f"{len(page.placed)} blocks)", file=sys.stderr)
     return 0

@@ -14,6 +14,7 @@ from graphplan.graphic.record import Record
 from graphplan.graphic.forceplans import standard_scale
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
+from graphplan.util.numbers import number, plain
 from graphplan.exact.positions import Study
 
 SAMPLES = 360
@@ -175,9 +176,9 @@ def moment_record(t: Turn, width: float = 180.0, height: float = 70.0) -> Record
     while v <= hi + 1e-9:
         y = v / mu_m
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
-        rec.label((-2.5, y - 1.2), f"{v:g}", size=2.5, anchor="end", step=step)
+        rec.label((-2.5, y - 1.2), plain(round(v, 9)), size=2.5, anchor="end", step=step)
         v += tick
-    rec.label((0.0, lo / mu_m - 12.0), f"μM = {mu_m:g} N·m/mm, μφ = {mu_phi:g} °/mm", size=2.5, step=step)
+    rec.label((0.0, lo / mu_m - 12.0), f"μM = {plain(mu_m)} N·m/mm, μφ = {number(mu_phi, 4)} °/mm", size=2.5, step=step)
     return rec
 
 
@@ -199,13 +200,62 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0) -> Record:
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
         rec.label((float(w.real) + 1.0, float(w.imag) + 1.0), str(pos), size=2.5, step=step)
-    rec.label((-half, -half - 6.0), f"{key}: μR = {mu_r:g} N/mm", size=2.5, step=step)
+    rec.label((-half, -half - 6.0), f"{key}: μR = {plain(mu_r)} N/mm", size=2.5, step=step)
     return rec
 
 
-def records(t: Turn) -> dict[str, Record]:
-    """"moment" and "hodograph <key>" for every revolute pair."""
-    out = {"moment": moment_record(t)}
+def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0) -> Record | None:
+    """Seed 000's diagram of the resistance force: |P| of each external force against the output's
+    distance from position 0 over the turn (the working stroke loaded, the idle one not), the
+    positions numbered; None when the scene has no external force."""
+    from graphplan.exact.kinetostatics import output_distance
+    ext = [ld for ld in t.ks.loads if ld.kind == "external"]
+    if not ext:
+        return None
+    st = t.ks.st
+    dist = output_distance(st, t.ks.kin)
+    unit = "m" if st.output.kind == "slide" else "°"
+    force = np.abs(sum(ld.force for ld in ext))
+    reach = float(np.max(dist)) or 1.0
+    mu_s = standard_scale(reach / width)
+    top = float(np.max(force)) or 1.0
+    mu_p = standard_scale(top / height)
+    name = ", ".join(ld.name for ld in ext)
+    rec = Record(f"resistance {name}")
+    rec.scales.update({"mu_s": mu_s, "mu_P": mu_p})
+    step = f"{name}(s)"
+    x_end, y_end = reach / mu_s, top / mu_p
+    rec.segment((0.0, 0.0), (x_end + 8.0, 0.0), role="axis", layer="diagrams", step=step)
+    rec.vector((0.0, -2.0), (0.0, y_end + 8.0), role="construction", layer="diagrams", step=step)
+    for idx, piece in _pieces(t, force):
+        pts = [(float(dist[k] / mu_s), float(v / mu_p)) for k, v in zip(idx, piece)]
+        rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
+        if float(np.max(piece)) > 0:   # the loaded stroke hatched down to the axis
+            for x, y in pts[::max(1, len(pts) // 24)]:
+                rec.segment((x, 0.0), (x, y), role="hatch", layer="diagrams", step=step)
+    seen: list[float] = []
+    for k, pos in t.position_index():
+        x = float(dist[k] / mu_s)
+        rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
+        below = sum(1 for s in seen if abs(s - x) < 3.0)
+        seen.append(x)
+        rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
+    rec.label((x_end + 9.0, -1.0), f"s, {unit}", size=3.5, step=step)
+    rec.label((2.0, y_end + 5.0), f"{name}, N", size=3.5, step=step)
+    rec.label((-2.5, y_end - 1.2), number(top, 4), size=2.5, anchor="end", step=step)
+    rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
+    low = -5.0 - 3.5 * max([0] + [sum(1 for s in seen if abs(s - x) < 3.0) for x in seen])
+    rec.label((0.0, low - 8.0), f"μs = {plain(mu_s)} {unit}/mm, μP = {plain(mu_p)} N/mm", size=2.5, step=step)
+    return rec
+
+
+def records(t: Turn, k: float = 1.0) -> dict[str, Record]:
+    """"moment", "resistance" (when the scene has an external force) and "hodograph <key>" for every
+    revolute pair, at size factor k."""
+    out = {"moment": moment_record(t, 180.0 * k, 70.0 * k)}
+    res = resistance_record(t, 160.0 * k, 60.0 * k)
+    if res is not None:
+        out["resistance"] = res
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key)
+        out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * k)
     return out

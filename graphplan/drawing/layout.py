@@ -35,10 +35,22 @@ class Placed:
 def place(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0) -> list[Placed]:
     """Bottom-left-fill placement: each block goes to the highest, then leftmost free spot (candidate
     corners next to the blocks already placed); if it fits nowhere, the next smaller factor is tried."""
+    placed, rest = place_some(blocks, region, obstacles, gap)
+    if rest:
+        raise GraphplanError(f"the sheet has no room for the {rest[0].name}; choose a larger --format "
+                             "or fewer positions")
+    return placed
+
+
+def place_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (),
+               gap: float = 6.0) -> tuple[list[Placed], list[Block]]:
+    """As ``place``, but the blocks that fit nowhere are handed back (in order) instead of refused:
+    (placed, the rest) — the rest go to the next sheet of a set."""
     field = box(*region)
     for ob in obstacles:
         field = field.difference(box(*ob))
     placed: list[Placed] = []
+    rest: list[Block] = []
     taken: list[Box] = [tuple(ob) for ob in obstacles]
     for block in blocks:
         for factor in block.factors:
@@ -53,9 +65,8 @@ def place(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (), g
                 taken.append((x, top - h, x + w, top))
                 break
         else:
-            raise GraphplanError(f"the sheet has no room for the {block.name}; choose a larger --format "
-                                 "or fewer positions")
-    return placed
+            rest.append(block)
+    return placed, rest
 
 
 def _spot(w: float, h: float, region: Box, taken: list[Box], field: Polygon, gap: float):
@@ -151,3 +162,44 @@ def overlapping_texts(record: Record) -> list[tuple[str, str]]:
     return pairs
 
 
+
+
+def spread(placed: list[Placed], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0,
+           rounds: int = 6) -> list[Placed]:
+    """The free field shared out: each block moved to the middle of the free span beside it, across
+    then up and down, a few rounds — the draftsman spreading the drawings evenly over the sheet
+    instead of leaving a bare strip at one side. No block comes closer than ``gap`` to another, to
+    an obstacle or to the region's edge."""
+    boxes = [list(p.box) for p in placed]
+    fixed = [tuple(ob) for ob in obstacles]
+    rx0, ry0, rx1, ry1 = region
+
+    def span(i: int, axis: int) -> tuple[float, float]:
+        b = boxes[i]
+        lo, hi = (rx0, rx1) if axis == 0 else (ry0, ry1)
+        other = 1 - axis
+        for j, o in enumerate([tuple(x) for x in boxes] + fixed):
+            if j == i:
+                continue
+            if o[other] >= b[other + 2] + gap - 1e-9 or b[other] >= o[other + 2] + gap - 1e-9:
+                continue                       # no overlap across: not in the way
+            if o[axis + 2] <= b[axis] + 1e-9:
+                lo = max(lo, o[axis + 2] + gap)
+            elif o[axis] >= b[axis + 2] - 1e-9:
+                hi = min(hi, o[axis] - gap)
+        return lo, hi
+
+    for _ in range(rounds):
+        for axis in (0, 1):
+            for i in range(len(boxes)):
+                lo, hi = span(i, axis)
+                size = boxes[i][axis + 2] - boxes[i][axis]
+                if hi - lo < size - 1e-9:
+                    continue
+                start = (lo + hi - size) / 2
+                boxes[i][axis], boxes[i][axis + 2] = start, start + size
+    out = []
+    for p, b in zip(placed, boxes):
+        dx, dy = b[0] - p.box[0], b[1] - p.box[1]
+        out.append(Placed(p.name, p.record.moved(dx, dy), tuple(b), p.factor))
+    return out

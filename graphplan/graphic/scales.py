@@ -81,4 +81,5 @@ def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | 
 
 def format_scale(name: str, mu: float) -> str:
     """"μv = 0.2 (m/s)/mm" — the coefficient with its symbol and unit."""
-    return f"{SYMBOLS.get(name, name)} = {mu:g} {UNITS.get(name, '')}".rstrip()
+    from graphplan.util.numbers import plain
+    return f"{SYMBOLS.get(name, name)} = {plain(mu)} {UNITS.get(name, '')}".rstrip()

@@ -1,0 +1,221 @@
+"""The force sheet (sheet 2 of the coursework, seed 000): the acceleration plan of the force position
+with its table, the table of masses, moments of inertia and inertia loads, every group with its
+force plan and its forces' table, the Zhukovsky lever, the results, the balancing moment over a turn,
+the diagram of the resistance force over the stroke and the reactions' hodographs.
+
+The force plans' μF is chosen once per scene and format (``force_scales``): the largest force drawn
+as long as the sheet allows; ``forces --format`` prints the same numbers."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphplan.drawing.layout import Block
+from graphplan.exact.positions import Study
+from graphplan.graphic.record import Record
+from graphplan.report.plans import captioned
+from graphplan.sheets.compose import Sheet, SheetOptions, beside, compose, drawing_scale, fits_one, options_of, \
+    paginate
+from graphplan.sheets.form import Form, form, table
+from graphplan.sheets.kinematics import FACTORS, acceleration_table, fields, notes
+from graphplan.util.errors import GraphplanError
+from graphplan.util.numbers import number
+
+FORCE_WORDS = {
+    "uk": {"group": "Група", "polygon": "План сил групи", "table": "Сили групи", "lever": "Важіль Жуковського",
+           "results": "Зрівноважувальний момент", "moment": "Зрівноважувальний момент за оберт",
+           "hodograph": "Годограф реакції", "subtitle": "Силовий аналіз", "at": "φ =",
+           "acceleration": "План прискорень", "position": "положення силового розрахунку",
+           "inertia": "Таблиця 5. Маси, моменти інерції, сили та моменти сил інерції",
+           "link": "ланка", "resistance": "Діаграма сили корисного опору за хід",
+           "small": "Сили, коротші за 2 % найбільшої на своєму плані, не в масштабі: "},
+    "en": {"group": "Group", "polygon": "Force plan of group", "table": "Forces of group",
+           "lever": "Zhukovsky lever", "results": "Balancing moment", "moment": "Balancing moment over a turn",
+           "hodograph": "Hodograph of reaction", "subtitle": "Force analysis", "at": "φ =",
+           "acceleration": "Acceleration plan", "position": "position of the force analysis",
+           "inertia": "Table 5. Masses, moments of inertia, inertia forces and moments",
+           "link": "link", "resistance": "Resistance force over the stroke",
+           "small": "Forces under 2 % of their plan's largest, not to scale: "},
+}
+POLYGON_MM = 150.0     # the largest force of the position drawn this long at size factor 1
+NO_LOADS = ("{src}: a force sheet needs loads — add [loads] (g, mass_per_length, inertia_factor) or a "
+            "link's mass/inertia, and a [[force]] (point, magnitude, stroke)")
+
+
+def _caption(name: str, lang: str) -> str:
+    w = FORCE_WORDS[lang]
+    kind, _, rest = name.partition(" ")
+    return {"group": f"{w['group']} {rest}", "polygon": f"{w['polygon']} {rest}",
+            "table": f"{w['table']} {rest}", "lever": w["lever"], "results": w["results"],
+            "moment": w["moment"], "hodograph": f"{w['hodograph']} {rest}",
+            "resistance": w["resistance"]}.get(kind, name)
+
+
+def has_loads(st: Study) -> bool:
+    """Whether the scene loads any link: a mass, a moment of inertia or an external force."""
+    mech = st.mech
+    return bool(mech.forces) or any((l.mass or 0) > 0 or (l.inertia or 0) > 0 for l in mech.links.values())
+
+
+def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
+    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε
+    (read off the acceleration plan where it has them), G = m·g, Φ = m·a_S and M_Φ = I_S·ε."""
+    w = FORCE_WORDS[lang]
+    mech = st.mech
+    kin = ks.kin
+    rows = [[w["link"], "m, кг" if lang == "uk" else "m, kg", "I_S, кг·м²" if lang == "uk" else "I_S, kg·m²",
+             "a_S, м/с²" if lang == "uk" else "a_S, m/s²", "ε, рад/с²" if lang == "uk" else "ε, rad/s²",
+             "G, Н" if lang == "uk" else "G, N", "Φ, Н" if lang == "uk" else "Φ, N",
+             "M_Φ, Н·м" if lang == "uk" else "M_Φ, N·m"]]
+    acc = (acc_doc or {}).get("acceleration", {})
+    for name, link in mech.links.items():
+        m, inertia = link.mass or 0.0, link.inertia or 0.0
+        if not m and not inertia:
+            continue
+        com = link.com or next(iter(link.local))
+        body = kin.bodies[name]
+        a_s = float(abs(body.at(link.local[com])[2][0]))
+        eps = float(abs(body.eps[0]))
+        graph_a = acc.get(com, {}).get("value")
+        graph_e = acc.get(f"epsilon_{name}", {}).get("value")
+        a_used = graph_a if graph_a is not None else a_s
+        e_used = abs(graph_e) if graph_e is not None else eps
+        rows.append([f"{link.number} ({com})", number(m, 4), number(inertia, 4), number(a_used, 4),
+                     number(e_used, 4), number(m * mech.g, 4), number(m * a_used, 4),
+                     number(inertia * e_used, 4)])
+    return table(rows, [20.0, 14.0, 20.0, 18.0, 18.0, 16.0, 18.0, 18.0], row_h=6.0, size=2.5,
+                 title=w["inertia"])
+
+
+def small_forces(fp) -> list[str]:
+    """Forces drawn shorter than 10 mm on their group's force plan and under 2 % of its largest."""
+    out = []
+    for gp in fp.groups:
+        sides = [s for s in gp.sides if s.mm > 1e-9]
+        if not sides:
+            continue
+        big = max(s.mm for s in sides)
+        out += [s.name for s in sides if s.mm < 10.0 and s.mm < 0.02 * big]
+    return sorted(set(out))
+
+
+FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts")
+
+
+@dataclass
+class ForceDrawn:
+    k: dict[str, float]
+    fp: object
+    blocks: list[Block]
+
+
+class ForceDrafter:
+    """Draws the force sheet's blocks at given size factors, remembering what it drew."""
+
+    def __init__(self, st: Study, opts: SheetOptions):
+        from graphplan.drawing import charts as forcecharts
+        from graphplan.exact import kinetostatics
+        self.st, self.opts = st, opts
+        self.phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
+        self.ks = kinetostatics.analyse(st, [self.phi])
+        self.turn = forcecharts.turn(st)
+        self.memo: dict = {}
+
+    def drawn(self, k: dict[str, float]) -> ForceDrawn:
+        key = tuple(k[f] for f in FORCE_FAMILIES)
+        if key not in self.memo:
+            self.memo[key] = force_blocks(self, k)
+        return self.memo[key]
+
+
+def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
+    """The force sheet's blocks at size factors k: "forces" sets μF, "groups" μl of the groups'
+    drawings, "acceleration" μa of the force position's plan, "charts" the charts' size."""
+    from graphplan.drawing import charts as forcecharts
+    from graphplan.drawing import forces as forcedraw
+    from graphplan.drawing.plans import acceleration_records
+    from graphplan.graphic import forceplans
+    from graphplan.graphic.plans import build_plans
+    from graphplan.graphic.scales import Targets, format_scale
+    from graphplan.report.plans import plans_json
+    st, opts, phi, ks = dr.st, dr.opts, dr.phi, dr.ks
+    lang, p = opts.lang, opts.precision
+    w = FORCE_WORDS[lang]
+    mu_l = forceplans.mechanism_scale(st, forceplans.MECHANISM_MM * k["groups"])
+    mu_F = forceplans.force_scale(ks, POLYGON_MM * k["forces"])
+    fp = forceplans.construct(st, phi, precision=p, mu_l=mu_l, mu_F=mu_F)
+    plans = build_plans(st, count=opts.positions, accel=[phi], precision=p,
+                        targets=Targets().scaled(k["acceleration"]))
+    q = next(x for x in plans.positions if x.acceleration is not None)
+    acc_doc = next(d for d in plans_json(plans)["positions"] if "acceleration" in d)
+    blocks: list[Block] = []
+    small = small_forces(fp)
+    lines = [f"{w['at']} {phi:.2f}°"] + ([w["small"] + ", ".join(small)] if small else [])
+    head = notes(st, [format_scale("mu_l", fp.mu_l), format_scale("mu_F", fp.mu_F),
+                      format_scale("mu_a", plans.mu_a)], lines, lang)
+    blocks.append(Block("notes", lambda _k, r=head: r))
+    label = q.index if q.index is not None else f"φ = {q.phi % 360:.1f}°"
+    caption = f"{w['acceleration']}, {w['position']} {label}, {format_scale('mu_a', plans.mu_a)}"
+    arec = captioned(acceleration_records(plans)[q.key], caption)
+    n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
+    atab = acceleration_table(acc_doc, n, lang, p)
+    blocks.append(Block("acceleration plan", lambda _k: beside([arec, atab])))
+    blocks.append(Block("inertia table", lambda _k: inertia_table(st, ks, acc_doc, lang)))
+    drawn = forcedraw.records(fp)
+    for gp in fp.groups:
+        parts = [captioned(drawn[f"{kind} {gp.label}"], _caption(f"{kind} {gp.label}", lang))
+                 for kind in ("group", "polygon", "table")]
+        blocks.append(Block(f"group {gp.label}", lambda _k, parts=parts: beside(parts[:2], below=parts[2])))
+    lever = [captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")]
+    blocks.append(Block("lever", lambda _k: beside(lever)))
+    for name, rec in forcecharts.records(dr.turn, k["charts"]).items():
+        blocks.append(Block(name, lambda _k, r=rec, n=name: captioned(r, _caption(n, lang))))
+    return ForceDrawn(dict(k), fp, blocks)
+
+
+def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
+    """The largest common size factor at which the force sheet fits one sheet, then each family
+    grown while it fits; else the largest at which every block fits a sheet, for a set."""
+    if not has_loads(st):
+        raise GraphplanError(NO_LOADS.format(src=st.mech.source))
+    dr = ForceDrafter(st, opts)
+    same = lambda k: {fam: k for fam in FORCE_FAMILIES}  # noqa: E731
+    for k in FACTORS:
+        if k < 0.5:
+            break
+        d = dr.drawn(same(k))
+        if fits_one(f, d.blocks):
+            for fam in FORCE_FAMILIES:
+                for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
+                    trial = dr.drawn({**d.k, fam: bigger})
+                    if not fits_one(f, trial.blocks):
+                        break
+                    d = trial
+            return d
+    for k in FACTORS:
+        if k > 1.0:
+            continue
+        d = dr.drawn(same(k))
+        try:
+            paginate(f, d.blocks)
+        except GraphplanError:
+            continue
+        return d
+    return dr.drawn(same(FACTORS[-1]))
+
+
+def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
+    """μl and μF of the force sheet of ``format`` — for ``forces --format``."""
+    d = choose_forces(st, form(format), SheetOptions(precision=precision, sheet="forces"))
+    return {"mu_l": d.fp.mu_l, "mu_F": d.fp.mu_F}
+
+
+def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
+    """Sheet 2: the force analysis at the scene's force position (a set when it does not fit)."""
+    opts = options_of(options)
+    d = choose_forces(st, f, opts)
+    w = FORCE_WORDS[opts.lang]
+    tf = fields(st, opts.lang, drawing_scale(d.fp.mu_l), subtitle=w["subtitle"])
+    return compose(f, d.blocks, tf, opts.lang, f"{st.mech.title} — {w['subtitle']}")
+
