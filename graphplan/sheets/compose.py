@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from graphplan.drawing.layout import Block, Placed, declutter, place_some, spread
+from graphplan.drawing.layout import Block, Placed, declutter, footprint, nest_some, spread_nested
 from graphplan.graphic.record import Record
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
@@ -119,37 +119,70 @@ def _cached(blocks: list[Block]) -> list[Block]:
             if k not in memo:
                 memo[k] = b.build(k)
             return memo[k]
-        out.append(Block(b.name, build, b.factors))
+        out.append(Block(b.name, build, b.factors, b.solid))
     return out
 
 
 def paginate(f: Form, blocks: list[Block]) -> list[list[Placed]]:
-    """The blocks placed sheet after sheet: each sheet takes every block that still fits it (in the
-    first packing order that fits them all, else as given); the rest go on. A block that does not
-    fit even an empty sheet is refused."""
+    """The blocks placed sheet after sheet: first-fit finds how many sheets the set needs (a sheet
+    fewer is tried), then the blocks (largest first) are shared out, each to the emptiest sheet that
+    still takes it, so the last sheet is not left with one drawing; the sheet with the earliest block comes first. A block
+    that does not fit even an empty sheet is refused."""
     region, keep_out = field_region(f)
-    pages: list[list[Placed]] = []
     rest = _cached(blocks)
+    greedy: list[list[Placed]] = []
     while rest:
         for how in ORDERS:
-            placed, left = place_some(_ordered(rest, how), region, obstacles=[keep_out], gap=GAP)
+            placed, left = nest_some(_ordered(rest, how), region, obstacles=[keep_out], gap=GAP)
             if not left:
                 break
         else:
-            placed, left = place_some(rest, region, obstacles=[keep_out], gap=GAP)
+            placed, left = nest_some(rest, region, obstacles=[keep_out], gap=GAP)
         if not placed:
             raise GraphplanError(f"the {rest[0].name} is larger than a whole {f.name} sheet; "
                                  "choose a larger --format")
-        pages.append(placed)
+        greedy.append(placed)
         rest = left
-    return pages
+    if len(greedy) == 1:
+        return greedy
+    return (_balanced(blocks, len(greedy) - 1, region, keep_out)
+            or _balanced(blocks, len(greedy), region, keep_out) or greedy)
+
+
+def _area(b: Block) -> float:
+    x0, y0, x1, y1 = b.build(b.factors[0]).bounds()
+    return (x1 - x0) * (y1 - y0)
+
+
+def _balanced(blocks: list[Block], count: int, region, keep_out) -> list[list[Placed]] | None:
+    """``count`` sheets with the blocks shared out largest first, each to the emptiest sheet that
+    takes it; None when some block fits none."""
+    cached = _cached(blocks)
+    order = {b.name: k for k, b in enumerate(cached)}
+    sheets: list[list[Block]] = [[] for _ in range(count)]
+    load = [0.0] * count
+
+    def cover(b: Block) -> float:       # the paper a block really takes: its footprint
+        return float(footprint(b.build(b.factors[0]), GAP / 2, b.solid).mask.sum())
+    for b in sorted(cached, key=lambda b: -_area(b)):
+        for n in sorted(range(count), key=lambda n: load[n]):
+            trial = sorted(sheets[n] + [b], key=lambda x: -_area(x))
+            if not nest_some(trial, region, obstacles=[keep_out], gap=GAP)[1]:
+                sheets[n].append(b)
+                load[n] += cover(b)
+                break
+        else:
+            return None
+    sheets.sort(key=lambda s: min(order[b.name] for b in s) if s else len(order))
+    return [nest_some(sorted(s, key=lambda x: -_area(x)), region, obstacles=[keep_out], gap=GAP)[0]
+            for s in sheets if s]
 
 
 def fits_one(f: Form, blocks: list[Block]) -> bool:
     """Whether every block fits one sheet of form ``f`` in one of the packing orders."""
     region, keep_out = field_region(f)
     blocks = _cached(blocks)
-    return any(not place_some(_ordered(blocks, how), region, obstacles=[keep_out], gap=GAP)[1]
+    return any(not nest_some(_ordered(blocks, how), region, obstacles=[keep_out], gap=GAP)[1]
                for how in ORDERS)
 
 
@@ -174,7 +207,7 @@ def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: st
     """Frame + title block + the blocks placed in the free field, labels decluttered; what does not
     fit goes to further sheets of the set (title block "sheet N of M")."""
     region, keep_out = field_region(f)
-    pages = [spread(placed, region, [keep_out], GAP) for placed in paginate(f, blocks)]
+    pages = [spread_nested(placed, region, [keep_out], GAP) for placed in paginate(f, blocks)]
     sheets = []
     for n, placed in enumerate(pages, 1):
         tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))

@@ -160,17 +160,21 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     arec = captioned(acceleration_records(plans)[q.key], caption)
     n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
     atab = acceleration_table(acc_doc, n, lang, p)
-    blocks.append(Block("acceleration plan", lambda _k: beside([arec, atab])))
-    blocks.append(Block("inertia table", lambda _k: inertia_table(st, ks, acc_doc, lang)))
+    both = beside([arec, atab])
+    blocks.append(Block("acceleration plan", lambda _k: both, solid=True))
+    itab = inertia_table(st, ks, acc_doc, lang)
+    blocks.append(Block("inertia table", lambda _k: itab))
     drawn = forcedraw.records(fp)
     for gp in fp.groups:
         parts = [captioned(drawn[f"{kind} {gp.label}"], _caption(f"{kind} {gp.label}", lang))
                  for kind in ("group", "polygon", "table")]
-        blocks.append(Block(f"group {gp.label}", lambda _k, parts=parts: beside(parts[:2], below=parts[2])))
-    lever = [captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")]
-    blocks.append(Block("lever", lambda _k: beside(lever)))
+        group = beside([parts[0], beside([parts[1]], below=parts[2])])
+        blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r, solid=True))
+    lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
+    blocks.append(Block("lever", lambda _k: lever, solid=True))
     for name, rec in forcecharts.records(dr.turn, k["charts"]).items():
-        blocks.append(Block(name, lambda _k, r=rec, n=name: captioned(r, _caption(n, lang))))
+        chart = captioned(rec, _caption(name, lang))
+        blocks.append(Block(name, lambda _k, r=chart: r))
     return ForceDrawn(dict(k), fp, blocks)
 
 

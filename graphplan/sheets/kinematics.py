@@ -238,12 +238,12 @@ class Drawn:
 def diagram_options(st: Study, k: float, positions: int | None) -> dict:
     """The diagrams' L, height and pole distances at size factor k: L and the s diagram's height
     from the scene's [diagrams] table scaled by k; H1, H2 the scene's unless its v or a diagram
-    would be drawn lower than a third of the s diagram — then chosen (whole mm, 10–80) so that
-    its peak is about ``SHARE`` of the s diagram's height:
+    would be drawn lower than a third of the s diagram or taller than it — then chosen (whole mm,
+    5–80) so that its peak is about ``SHARE`` of the s diagram's height:
     v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv, μt = T/L (REFERENCE §1.5)."""
     from graphplan.graphic.diagrams import chord_diagrams
     dg = st.mech.task.diagram
-    out = {"point": dg.get("point"), "divisions": positions or dg.get("divisions") or st.mech.task.count,
+    out: dict = {"point": dg.get("point"), "divisions": positions or dg.get("divisions") or st.mech.task.count,
            "L": float(dg.get("L_mm", 240.0)) * k, "H1": float(dg.get("H1_mm", 30.0)),
            "H2": float(dg.get("H2_mm", 30.0)), "height": 70.0 * k}
     probe = chord_diagrams(st, precision=0.0, **out)
@@ -251,9 +251,9 @@ def diagram_options(st: Study, k: float, positions: int | None) -> dict:
 
     def pole(given: float, peak: float, mu_before: float) -> float:
         drawn = peak * probe.mu_t * given / mu_before
-        if peak <= 0 or drawn >= s_mm / 3:
+        if peak <= 0 or s_mm / 3 <= drawn <= 1.2 * s_mm:
             return given
-        return float(min(80.0, max(10.0, round(SHARE * s_mm * mu_before / (peak * probe.mu_t)))))
+        return float(min(80.0, max(5.0, round(SHARE * s_mm * mu_before / (peak * probe.mu_t)))))
     out["H1"] = pole(out["H1"], probe.maxima["v"], probe.mu_s)
     mu_v = probe.mu_s / (probe.mu_t * out["H1"])
     out["H2"] = pole(out["H2"], probe.maxima["a"], mu_v)
@@ -322,13 +322,15 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
     blocks = [Block("position plan", lambda _k: prec), Block("dimensions table", lambda _k: dims)]
     drec = draw_diagrams(diag, lang)
     lab = lab_table(diag, lang) if st.mech.task.count <= 8 else None
-    blocks.append(Block("diagrams", lambda _k: drec if lab is None else beside([drec], below=lab)))
+    dblock = drec if lab is None else beside([drec], below=lab)
+    blocks.append(Block("diagrams", lambda _k: dblock))
     vrec = velocity_records(plans)
     cells = [captioned(vrec[q.key], f"{w['velocity']} {q.index if q.index is not None else ''}")
              for q in plans.positions]
     for q, cell in zip(plans.positions, cells):
         blocks.append(Block(f"velocity plan {q.key}", lambda _k, c=cell: c))
-    blocks.append(Block("velocity table", lambda _k: velocity_table(doc, lang, p)))
+    vtab = velocity_table(doc, lang, p)
+    blocks.append(Block("velocity table", lambda _k: vtab))
     arec = acceleration_records(plans)
     n = 0
     for q, pos in zip(plans.positions, doc["positions"]):
@@ -337,8 +339,8 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
         n += 1
         caption = (f"{w['acceleration']}, {w['position']} {q.index if q.index is not None else ''} "
                    f"(φ = {q.phi % 360:.1f}°), {format_scale('mu_a', plans.mu_a)}")
-        parts = [captioned(arec[q.key], caption), acceleration_table(pos, n, lang, p)]
-        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, parts=parts: beside(parts)))
+        both = beside([captioned(arec[q.key], caption), acceleration_table(pos, n, lang, p)])
+        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r, solid=True))
 
     def notes_block(_k: float) -> Record:
         scales = [format_scale("mu_l", plans.mu_l), format_scale("mu_v", plans.mu_v),
@@ -353,7 +355,8 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
         extra.append(w["dash"])
         return notes(st, scales, extra, lang)
 
-    blocks.append(Block("notes", notes_block))
+    nrec = notes_block(1.0)
+    blocks.append(Block("notes", lambda _k: nrec))
     return Drawn(dict(k), plans, diag, blocks)
 
 
@@ -392,6 +395,7 @@ def legible(d: Drawn) -> bool:
     return v_a / pl.mu_v >= LEGIBLE_MM - 1e-9 and (not pl.accel_keys or a_a / pl.mu_a >= LEGIBLE_MM - 1e-9)
 
 
+SET_LARGEST = 1.25   # a set's drawings grow no larger than this: more sheets, not giant plans
 ONE_SHEET = ("A1",)  # the coursework's format: one sheet, the plans smaller if they must be
 
 
@@ -430,7 +434,7 @@ def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
         return dr.drawn(_same(FACTORS[-1])), False
     d = readable[-1] if readable else layable[0]     # the smallest legible: the fewest sheets
     pages = len(paginate(f, d.blocks))
-    return grow(dr, d, lambda t: _pages(f, t) <= pages), False
+    return grow(dr, d, lambda t: _pages(f, t) <= pages, SET_LARGEST), False
 
 
 def _pages(f: Form, d: Drawn) -> int:
@@ -440,11 +444,11 @@ def _pages(f: Form, d: Drawn) -> int:
         return 10 ** 6
 
 
-def grow(dr: Drafter, d: Drawn, fits) -> Drawn:
-    """Each family in turn drawn at the next larger factors while ``fits`` holds."""
+def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0]) -> Drawn:
+    """Each family in turn drawn at the next larger factors (up to ``largest``) while ``fits`` holds."""
     best = d
     for fam in FAMILIES:
-        top = dr.widest_diagrams() if fam == "diagrams" else FACTORS[0]
+        top = min(largest, dr.widest_diagrams()) if fam == "diagrams" else largest
         for k in sorted(x for x in FACTORS if best.k[fam] < x <= top):
             trial = dr.drawn({**best.k, fam: k})
             if not fits(trial):
