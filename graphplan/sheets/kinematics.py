@@ -29,7 +29,10 @@ WORDS = {
            "forces": "Силовий аналіз", "max_error": "Найбільша похибка в таблицях",
            "max_error_20": "векторів від 20 мм", "subtitle": "Кінематичний аналіз",
            "dims": "Таблиця 3. Розміри ланок", "link": "ланка", "real": "l, м", "drawn": "l, мм (μl)",
-           "lab": "Таблиця 4. s, v, a у заданих положеннях", "no": "№", "dash": "— : коротше за поділку лінійки"},
+           "lab": "Таблиця 4. s, v, a у заданих положеннях", "no": "№", "dash": "— : коротше за поділку лінійки",
+           "signs": "Знаки s, v, a (таблиці, analyze, ключі): + у напрямку напрямної {guide}",
+           "flipped": "; діаграми s, v, a побудовано дзеркально (вгору −s)",
+           "signs_link": "Знаки φ, ω, ε ланки {link} (таблиці, analyze, ключі): + проти годинникової стрілки"},
     "en": {"positions": "Position plan", "velocity": "Velocity plan", "acceleration": "Acceleration plan",
            "position": "position", "diagrams": "Kinematic diagrams", "vel_table": "Table 1. Velocities, m/s; ω, rad/s",
            "acc_table": "Table 2.{n}. Accelerations, m/s²; ε, rad/s², position {i}", "graphical": "graphical",
@@ -38,7 +41,10 @@ WORDS = {
            "forces": "Force analysis", "max_error": "Largest error in the tables",
            "max_error_20": "vectors from 20 mm", "subtitle": "Kinematic analysis",
            "dims": "Table 3. Dimensions of the links", "link": "link", "real": "l, m", "drawn": "l, mm (μl)",
-           "lab": "Table 4. s, v, a at the given positions", "no": "No.", "dash": "— : shorter than a ruler division"},
+           "lab": "Table 4. s, v, a at the given positions", "no": "No.", "dash": "— : shorter than a ruler division",
+           "signs": "Signs of s, v, a (tables, analyze, keys): + along the guide {guide}",
+           "flipped": "; the s, v, a diagrams are drawn mirrored (up = −s)",
+           "signs_link": "Signs of φ, ω, ε of link {link} (tables, analyze, keys): + counter-clockwise"},
 }
 
 FACTORS = (2.0, 1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32)
@@ -46,9 +52,8 @@ SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least 
 
 
 def _accel_arg(values) -> list | None:
-    if not values:
-        return None
-    return [v if isinstance(v, (int, float)) or str(v).startswith("#") else float(v) for v in values]
+    """The acceleration plans asked for, as build_plans reads them ("#3", "200", 200.0)."""
+    return list(values) if values else None
 
 
 def _symbol(key: str) -> str:
@@ -353,11 +358,27 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
             extra.append(f"{w['max_error']}: {max(every):.2f} %"
                          + (f" ({w['max_error_20']}: {max(long_):.2f} %)" if long_ else ""))
         extra.append(w["dash"])
+        extra.append(sign_note(st, diag, lang))
         return notes(st, scales, extra, lang)
 
     nrec = notes_block(1.0)
     blocks.append(Block("notes", lambda _k: nrec))
     return Drawn(dict(k), plans, diag, blocks)
+
+
+def sign_note(st: Study, diag, lang: str) -> str:
+    """One sign convention, said on the sheet: s, v, a are signed along the output's guide (a
+    rocker: counter-clockwise) everywhere; the diagrams are drawn so the stroke from position 0
+    rises, which for some outputs mirrors them."""
+    w = WORDS[lang]
+    out = st.output
+    if out.kind == "slide":
+        import math
+        guide = st.mech.guides[st.mech.links[out.name].slides_on]
+        said = w["signs"].format(guide=f"{st.mech.links[out.name].slides_on} ({math.degrees(guide.angle) % 360:g}°)")
+    else:
+        said = w["signs_link"].format(link=out.name)
+    return said + (w["flipped"] if diag.sign < 0 else "")
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
