@@ -29,14 +29,14 @@ FORCE_WORDS = {
            "acceleration": "План прискорень", "position": "положення силового розрахунку",
            "inertia": "Таблиця 5. Маси, моменти інерції, сили та моменти сил інерції",
            "link": "ланка", "resistance": "Діаграма сили корисного опору за хід",
-           "small": "Сили, коротші за 2 % найбільшої на своєму плані, не в масштабі: "},
+           "small": "Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): "},
     "en": {"group": "Group", "polygon": "Force plan of group", "table": "Forces of group",
            "lever": "Zhukovsky lever", "results": "Balancing moment", "moment": "Balancing moment over a turn",
            "hodograph": "Hodograph of reaction", "subtitle": "Force analysis", "at": "φ =",
            "acceleration": "Acceleration plan", "position": "position of the force analysis",
            "inertia": "Table 5. Masses, moments of inertia, inertia forces and moments",
            "link": "link", "resistance": "Resistance force over the stroke",
-           "small": "Forces under 2 % of their plan's largest, not to scale: "},
+           "small": "Forces drawn under 10 mm (length, share of their plan's largest): "},
 }
 POLYGON_MM = 150.0     # the largest force of the position drawn this long at size factor 1
 NO_LOADS = ("{src}: a force sheet needs loads — add [loads] (g, mass_per_length, inertia_factor) or a "
@@ -88,16 +88,21 @@ def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
                  title=w["inertia"])
 
 
+SHORT_FORCE_MM = 10.0
+
+
 def small_forces(fp) -> list[str]:
-    """Forces drawn shorter than 10 mm on their group's force plan and under 2 % of its largest."""
+    """Forces drawn shorter than 10 mm on their group's force plan, each with its drawn length and
+    its share of the plan's largest ("R34τ 4 мм, 2.4 %"): the sheet says which are short."""
     out = []
     for gp in fp.groups:
         sides = [s for s in gp.sides if s.mm > 1e-9]
         if not sides:
             continue
         big = max(s.mm for s in sides)
-        out += [s.name for s in sides if s.mm < 10.0 and s.mm < 0.02 * big]
-    return sorted(set(out))
+        out += [f"{s.name} {number(s.mm, 2)} mm, {100 * s.mm / big:.1f} %"
+                for s in sides if s.mm < SHORT_FORCE_MM]
+    return list(dict.fromkeys(out))
 
 
 FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts")
@@ -151,7 +156,9 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     acc_doc = next(d for d in plans_json(plans)["positions"] if "acceleration" in d)
     blocks: list[Block] = []
     small = small_forces(fp)
-    lines = [f"{w['at']} {phi:.2f}°"] + ([w["small"] + ", ".join(small)] if small else [])
+    mm = " мм" if lang == "uk" else " mm"
+    lines = [f"{w['at']} {phi:.2f}°"] + ([w["small"] + "; ".join(t.replace(" mm", mm) for t in small)]
+                                         if small else [])
     head = notes(st, [format_scale("mu_l", fp.mu_l), format_scale("mu_F", fp.mu_F),
                       format_scale("mu_a", plans.mu_a)], lines, lang)
     blocks.append(Block("notes", lambda _k, r=head: r))
@@ -174,7 +181,7 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     blocks.append(Block("lever", lambda _k: lever, solid=True))
     for name, rec in forcecharts.records(dr.turn, k["charts"]).items():
         chart = captioned(rec, _caption(name, lang))
-        blocks.append(Block(name, lambda _k, r=chart: r))
+        blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
     return ForceDrawn(dict(k), fp, blocks)
 
 

@@ -328,7 +328,7 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
     drec = draw_diagrams(diag, lang)
     lab = lab_table(diag, lang) if st.mech.task.count <= 8 else None
     dblock = drec if lab is None else beside([drec], below=lab)
-    blocks.append(Block("diagrams", lambda _k: dblock))
+    blocks.append(Block("diagrams", lambda _k: dblock, solid=True))
     vrec = velocity_records(plans)
     cells = [captioned(vrec[q.key], f"{w['velocity']} {q.index if q.index is not None else ''}")
              for q in plans.positions]
