@@ -1,4 +1,5 @@
-"""drawings/ is current: every gallery sheet redrawn from examples/ equals the committed file.
+"""drawings/ is current: every gallery sheet (every sheet of a set) redrawn from examples/ equals
+the committed file.
 
 The comparison leaves out only the embedded font subset (the base64 data of the SVG's @font-face
 rules): its bytes are fontTools' to write and change with its version, not with the drawing (the
@@ -10,7 +11,7 @@ import re
 import pytest
 
 from conftest import ROOT
-from graphplan.cli.gallery import available, build
+from graphplan.cli.gallery import available, build_set, file_names
 
 FONT_DATA = re.compile(r"url\(data:font/woff;base64,[A-Za-z0-9+/=]+\)")
 
@@ -19,9 +20,13 @@ def drawing(svg: str) -> str:
     return FONT_DATA.sub("url(data:font/woff;base64,…)", svg)
 
 
-@pytest.mark.parametrize("scene,kind,lang,name", available())
-def test_gallery_sheet_is_current(scene, kind, lang, name):
-    path = ROOT / "drawings" / name
-    assert path.exists(), f"drawings/{name} is missing: run python -m graphplan.cli.gallery"
-    assert drawing(path.read_text(encoding="utf-8")) == drawing(build(scene, kind, lang)), \
-        f"drawings/{name} is out of date: run python -m graphplan.cli.gallery"
+@pytest.mark.parametrize("scene,kind,lang,name,fmt", available())
+def test_gallery_sheet_is_current(scene, kind, lang, name, fmt):
+    pages = build_set(scene, kind, lang, fmt)
+    for file, text in zip(file_names(name, len(pages)), pages):
+        path = ROOT / "drawings" / file
+        assert path.exists(), f"drawings/{file} is missing: run python -m graphplan.cli.gallery"
+        assert drawing(path.read_text(encoding="utf-8")) == drawing(text), \
+            f"drawings/{file} is out of date: run python -m graphplan.cli.gallery"
+    stem = name[:-len(".svg")]
+    assert not (ROOT / "drawings" / f"{stem}-{len(pages) + 1}.svg").exists(), "a stale sheet of the set"

@@ -334,7 +334,10 @@ def run(capsys, *argv):
 
 
 def test_plans_json_contract(capsys):
-    code, out, err = run(capsys, "plans", str(ROOT / "examples" / "crank_slider.toml"), "--json")
+    # --format none: the plans' own scales (the default draws at the A1 sheet's, see
+    # tests/test_sheets_composition.py::test_terminal_plans_print_what_the_sheet_draws)
+    code, out, err = run(capsys, "plans", str(ROOT / "examples" / "crank_slider.toml"), "--json",
+                         "--format", "none")
     assert code == 0 and err == ""
     doc = json.loads(out)
     assert doc["scene"] and doc["mu_l"] == 0.001
@@ -369,7 +372,7 @@ def test_plans_json_precision_zero_shaper(capsys):
 
 
 def test_plans_table(capsys):
-    code, out, _ = run(capsys, "plans", str(ROOT / "examples" / "crank_slider.toml"), "--lang", "en")
+    code, out, _ = run(capsys, "plans", str(ROOT / "examples" / "crank_slider.toml"), "--format", "none", "--lang", "en")
     assert code == 0
     assert "μ_v = 0.2 (m/s)/mm" in out and "μ_a = 50 (m/s²)/mm" in out
     rows = [line.split() for line in out.splitlines() if re.match(r"\s+1\s+30\.00\s", line)]

@@ -25,7 +25,7 @@ omega = 293.07
 joints = ["A", "B"]
 length = 0.307
 [[link]]
-name = "B"
+name = "slider"
 joints = ["B"]
 slides_on = "x"
 [branch]

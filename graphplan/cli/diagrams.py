@@ -17,6 +17,11 @@ def _divisions_arg(text: str) -> int | list[float]:
         raise GraphplanError(f"--divisions: a whole number or comma-separated crank turns, got {text!r}") from None
 
 
+def _format_arg(text: str) -> str | None:
+    from graphplan.cli.plans import _format_arg as sheet_format
+    return sheet_format(text)
+
+
 def cmd_diagrams(args) -> int:
     from graphplan.drawing.diagrams import diagrams_svg
     from graphplan.graphic.diagrams import chord_diagrams
@@ -26,6 +31,13 @@ def cmd_diagrams(args) -> int:
     lang = lang_of(args, st)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
+    if args.format:                      # the sheet's L, height and pole distances unless given
+        from graphplan.sheets.kinematics import sheet_scales
+        drawn = sheet_scales(st, args.format, None, None, args.precision)
+        sheet = {"L_mm": drawn["L"], "H1_mm": drawn["H1"], "H2_mm": drawn["H2"]}
+        pick = lambda given, key, default: given if given is not None else sheet.get(key, scene.get(key, default))  # noqa: E731
+        if args.height is None and args.divisions is None and args.L is None:
+            args.height = drawn["height"]
     d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
                        L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
                        H2=pick(args.h2, "H2_mm", 30.0),
@@ -73,6 +85,9 @@ def register(sub) -> None:
     p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
     p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
     lang_arg(p)
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
+                   help="L, the s height and H1, H2 as the kinematics sheet of this format draws them: A1 "
+                        "(default), A2, A3, A4; none = the scene's [diagrams] table")
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
     p.add_argument("--svg", metavar="FILE", help="write the three diagrams with their pole constructions")
     p.set_defaults(handler=cmd_diagrams)

@@ -24,6 +24,9 @@ def register(sub) -> None:
     p.add_argument("--precision", type=float, default=0.5, metavar="MM",
                    help="drafting precision of every drawn and measured length, mm (0 = exact; "
                         "default 0.5)")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
+                   help="μl and μF as the force sheet of this format draws them (at the scene's force "
+                        "position): A1 (default), A2, A3, A4; none = the force plans' own scales")
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
     lang_arg(p)
     p.add_argument("--svg", metavar="DIR", help="write DIR/forces.svg (groups, force plans, lever)")
@@ -31,6 +34,11 @@ def register(sub) -> None:
                    help="write the balancing moment over a turn and the reactions' hodographs to "
                         "DIR (balancing_moment.png/.svg, hodographs.png/.svg)")
     p.set_defaults(handler=cmd_forces)
+
+
+def _format_arg(text: str) -> str | None:
+    from graphplan.cli.plans import _format_arg as sheet_format
+    return sheet_format(text)
 
 
 def cmd_forces(args: argparse.Namespace) -> int:
@@ -46,7 +54,12 @@ def cmd_forces(args: argparse.Namespace) -> int:
     st = _load(args.scene)
     lang = lang_of(args, st)
     phi = at_scene_angle(st) if args.phi is None else args.phi % 360.0
-    fp = construct(st, phi, args.precision)
+    scales = {}
+    if args.format and args.phi is None:       # the force sheet's μl and μF at its force position
+        from graphplan.sheets.forces import force_scales, has_loads
+        if has_loads(st):
+            scales = force_scales(st, args.format, args.precision)
+    fp = construct(st, phi, args.precision, **scales)
     if args.svg:
         write_svg(fp, args.svg, lang)
     if args.charts:

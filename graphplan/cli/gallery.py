@@ -8,30 +8,34 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 
-# (scene, sheet kind, language, file name)
+# (scene, sheet kind, language, file name, format); a set's further sheets are name-2.svg, name-3.svg …
 SHEETS = [
-    ("crank_slider", "kinematics", "uk", "crank_slider.svg"),
-    ("lab_crank_slider", "kinematics", "uk", "lab_crank_slider.svg"),
-    ("four_bar", "kinematics", "uk", "four_bar.svg"),
-    ("shaper", "kinematics", "uk", "shaper.svg"),
-    ("shaper", "kinematics", "en", "shaper_en.svg"),
-    ("slotter", "kinematics", "uk", "slotter.svg"),
-    ("shaper", "forces", "uk", "shaper_forces.svg"),
-    ("slotter", "forces", "uk", "slotter_forces.svg"),
-    ("shaper", "dynamics", "uk", "shaper_dynamics.svg"),
-    ("slotter", "dynamics", "uk", "slotter_dynamics.svg"),
+    ("crank_slider", "kinematics", "uk", "crank_slider.svg", "A1"),
+    ("lab_crank_slider", "kinematics", "uk", "lab_crank_slider.svg", "A1"),
+    ("lab_crank_slider", "kinematics", "uk", "lab_crank_slider_a3.svg", "A3"),
+    ("four_bar", "kinematics", "uk", "four_bar.svg", "A1"),
+    ("shaper", "kinematics", "uk", "shaper.svg", "A1"),
+    ("shaper", "kinematics", "en", "shaper_en.svg", "A1"),
+    ("shaper", "kinematics", "uk", "shaper_a2.svg", "A2"),
+    ("slotter", "kinematics", "uk", "slotter.svg", "A1"),
+    ("shaper", "forces", "uk", "shaper_forces.svg", "A1"),
+    ("shaper", "forces", "uk", "shaper_forces_a2.svg", "A2"),
+    ("slotter", "forces", "uk", "slotter_forces.svg", "A1"),
+    ("shaper", "dynamics", "uk", "shaper_dynamics.svg", "A1"),
+    ("slotter", "dynamics", "uk", "slotter_dynamics.svg", "A1"),
 ]
 
 
-def build(scene: str, kind: str, lang: str) -> str:
-    """One gallery sheet as SVG text (A1, default precision)."""
+def build_set(scene: str, kind: str, lang: str, fmt: str = "A1") -> list[str]:
+    """One gallery sheet set as SVG texts, sheet 1 first (default precision)."""
     from graphplan.exact.positions import study
     from graphplan.model.scene import load
+    from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.sheet import BUILDERS
     from graphplan.sheets.form import form
-    args = argparse.Namespace(positions=None, accel=None, precision=0.5, lang=lang, sheet=kind)
     st = study(load(ROOT / "examples" / f"{scene}.toml"))
-    return BUILDERS[kind](st, form("A1"), args).svg()
+    sheet = BUILDERS[kind](st, form(fmt), SheetOptions(lang=lang, sheet=kind))
+    return [page.svg() for page in sheet.pages]
 
 
 # the interactive explorer of each example (graphplan view), on a 2° grid to keep each page small
@@ -44,11 +48,23 @@ def explorer(scene: str, lang: str = "uk") -> str:
     from graphplan.exact.positions import study
     from graphplan.model.scene import load
     from graphplan.report.explorer import explorer_html
+    from graphplan.cli.view import sheet_plans
     st = study(load(ROOT / "examples" / f"{scene}.toml"))
-    return explorer_html(st, precision=0.5, step=EXPLORER_STEP, lang=lang)
+    return explorer_html(st, precision=0.5, step=EXPLORER_STEP, lang=lang, plans=sheet_plans(st, "A1", 0.5))
 
 
-def available() -> list[tuple[str, str, str, str]]:
+def build(scene: str, kind: str, lang: str, fmt: str = "A1") -> str:
+    """The first sheet of a gallery set as SVG text."""
+    return build_set(scene, kind, lang, fmt)[0]
+
+
+def file_names(name: str, count: int) -> list[str]:
+    """name.svg, name-2.svg, … for a set of ``count`` sheets."""
+    stem = name[:-len(".svg")]
+    return [name] + [f"{stem}-{n}.svg" for n in range(2, count + 1)]
+
+
+def available() -> list[tuple[str, str, str, str, str]]:
     from graphplan.sheets.sheet import BUILDERS
     return [s for s in SHEETS if s[1] in BUILDERS]
 
@@ -58,12 +74,14 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m graphplan.cli.gallery", description=__doc__)
     parser.add_argument("-o", "--out", default=str(ROOT / "drawings"), help="folder (default: drawings/)")
     args = parser.parse_args(argv)
-    for scene, kind, lang, name in available():
-        path = write_atomic(Path(args.out) / name, build(scene, kind, lang))
-        print(path, file=sys.stderr)
+    for scene, kind, lang, name, fmt in available():
+        pages = build_set(scene, kind, lang, fmt)
+        for stale in Path(args.out).glob(f"{name[:-len('.svg')]}-*.svg"):     # a set that got shorter
+            stale.unlink()
+        for file, text in zip(file_names(name, len(pages)), pages):
+            print(write_atomic(Path(args.out) / file, text), file=sys.stderr)
     for scene in EXPLORERS:
-        path = write_atomic(Path(args.out) / f"{scene}.html", explorer(scene))
-        print(path, file=sys.stderr)
+        print(write_atomic(Path(args.out) / f"{scene}.html", explorer(scene)), file=sys.stderr)
     return 0
 
 

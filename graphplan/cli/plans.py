@@ -9,6 +9,15 @@ from graphplan.cli.common import lang_arg, lang_of, load_study
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text, write_atomic
 
+def _format_arg(text: str) -> str | None:
+    """A sheet format (A1 … A4) or "none"."""
+    if text.lower() == "none":
+        return None
+    if text.upper() not in ("A1", "A2", "A3", "A4"):
+        raise GraphplanError(f"--format: unknown sheet format {text!r} (A1, A2, A3, A4 or none)")
+    return text.upper()
+
+
 def cmd_plans(args: argparse.Namespace) -> int:
     from graphplan.graphic.plans import build_plans
     from graphplan.report.plans import plans_json, plans_table, svg_documents
@@ -16,8 +25,12 @@ def cmd_plans(args: argparse.Namespace) -> int:
     lang = lang_of(args, st)
     if args.positions is not None and not 2 <= args.positions <= 3600:
         raise GraphplanError(f"--positions must be from 2 to 3600, got {args.positions}")
-    plans = build_plans(st, count=args.positions, accel=args.accel, precision=args.precision,
-                        mu_l=args.mu_l, mu_v=args.mu_v, mu_a=args.mu_a)
+    mu = {"mu_l": args.mu_l, "mu_v": args.mu_v, "mu_a": args.mu_a}
+    if args.format and None in mu.values():      # the sheet's scales, unless the user gives them
+        from graphplan.sheets.kinematics import sheet_scales
+        drawn = sheet_scales(st, args.format, args.positions, args.accel, args.precision)
+        mu = {k: v if v is not None else drawn[k] for k, v in mu.items()}
+    plans = build_plans(st, count=args.positions, accel=args.accel, precision=args.precision, **mu)
     if args.svg:
         folder = Path(args.svg)
         if folder.exists() and not folder.is_dir():
@@ -48,6 +61,9 @@ def register(sub) -> None:
     p.add_argument("--mu-l", type=float, metavar="M_PER_MM", help="fix the length scale μl, m/mm")
     p.add_argument("--mu-v", type=float, metavar="V_PER_MM", help="fix the velocity scale μv, (m/s)/mm")
     p.add_argument("--mu-a", type=float, metavar="A_PER_MM", help="fix the acceleration scale μa, (m/s²)/mm")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
+                   help="draw at the scales the kinematics sheet of this format uses: A1 (default), A2, "
+                        "A3, A4; none = the plans' own scales")
     p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write each plan as an SVG in true millimetres into DIR")
     lang_arg(p)

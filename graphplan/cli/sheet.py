@@ -16,7 +16,8 @@ def register(sub) -> None:
     p.add_argument("scene", nargs="?", help="scene file (TOML); the built-in crank-slider when omitted")
     p.add_argument("-o", "--output", required=True, metavar="FILE",
                    help="output file: .svg, .pdf, .png or .dxf")
-    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3")
+    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3; what does not fit "
+                   "goes to further sheets of the set (FILE-2, FILE-3 …)")
     lang_arg(p)
     p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces", "dynamics"],
                    help="which sheet: kinematics (default), forces or dynamics")
@@ -44,10 +45,14 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     build = BUILDERS.get(args.sheet)
     if build is None:
         raise GraphplanError(f"--sheet {args.sheet}: not available")
-    sheet = build(st, f, args)
-    path = sheet.write(args.output, args.text_as_paths, args.dpi)
+    from graphplan.sheets.compose import SheetOptions, page_path
     from graphplan.util.words import unit, word
+    sheet = build(st, f, SheetOptions(positions=args.positions, accel=args.accel, precision=args.precision,
+                                      lang=args.lang, sheet=args.sheet))
+    path = sheet.write(args.output, args.text_as_paths, args.dpi)
     dpi = f", {args.dpi:g} dpi" if path.suffix.lower() == ".png" else ""
-    print(word("sheet written", args.lang, path=path, form=f.name,
-               size=f"{f.width:g}×{f.height:g} {unit('mm', args.lang)}{dpi}", n=len(sheet.placed)), file=sys.stderr)
+    size = f"{f.width:g}×{f.height:g} {unit('mm', args.lang)}{dpi}"
+    for n, page in enumerate(sheet.pages, 1):
+        print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size, k=n,
+                   m=len(sheet.pages), n=len(page.placed)), file=sys.stderr)
     return 0

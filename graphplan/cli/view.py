@@ -17,8 +17,21 @@ def cmd_view(args: argparse.Namespace) -> int:
     if out.exists() and out.is_dir():
         raise GraphplanError("-o needs a file name, this is a folder", str(out))
     st = load_study(args.scene)
-    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang_of(args, st)))
+    plans = sheet_plans(st, args.format, args.precision)
+    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang_of(args, st),
+                                    plans=plans))
     return 0
+
+
+def sheet_plans(st, format: str | None, precision: float):
+    """The plans at the scales the kinematics sheet of ``format`` draws with (the page's graphical
+    readings equal `plans --json` and the sheet's), or at the plans' own scales for None."""
+    from graphplan.graphic.plans import build_plans
+    if not format:
+        return None
+    from graphplan.sheets.kinematics import sheet_scales
+    drawn = sheet_scales(st, format, precision=precision)
+    return build_plans(st, precision=precision, mu_l=drawn["mu_l"], mu_v=drawn["mu_v"], mu_a=drawn["mu_a"])
 
 
 def register(sub) -> None:
@@ -34,6 +47,10 @@ def register(sub) -> None:
     lang_arg(p)
     p.add_argument("--precision", type=float, default=0.5, metavar="MM",
                    help="drafting precision of the plans' readings, mm (default 0.5; 0 = exact)")
+    from graphplan.cli.plans import _format_arg
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
+                   help="the plans at the scales the kinematics sheet of this format uses: A1 (default), A2, "
+                        "A3, A4; none = the plans' own scales")
     p.add_argument("--step", type=float, default=1.0, metavar="DEG",
                    help="the crank-angle grid of the exact solution, degrees (default 1)")
     p.set_defaults(handler=cmd_view)

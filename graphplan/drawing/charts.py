@@ -207,9 +207,58 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
     return rec
 
 
-def records(t: Turn, lang: str = "uk") -> dict[str, Record]:
-    """"moment" and "hodograph <key>" for every revolute pair."""
-    out = {"moment": moment_record(t, lang=lang)}
+def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
+    """Seed 000's diagram of the resistance force: |P| of each external force against the output's
+    distance from position 0 over the turn (the working stroke loaded, the idle one not), the
+    positions numbered; None when the scene has no external force."""
+    from graphplan.exact.kinetostatics import output_distance
+    ext = [ld for ld in t.ks.loads if ld.kind == "external"]
+    if not ext:
+        return None
+    st = t.ks.st
+    dist = output_distance(st, t.ks.kin)
+    dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
+    force = np.abs(sum(ld.force for ld in ext))
+    reach = float(np.max(dist)) or 1.0
+    mu_s = standard_scale(reach / width)
+    top = float(np.max(force)) or 1.0
+    mu_p = standard_scale(top / height)
+    name = ", ".join(ld.name for ld in ext)
+    rec = Record(f"resistance {name}")
+    rec.scales.update({"mu_s": mu_s, "mu_P": mu_p})
+    step = f"{name}(s)"
+    x_end, y_end = reach / mu_s, top / mu_p
+    rec.segment((0.0, 0.0), (x_end + 8.0, 0.0), role="axis", layer="diagrams", step=step)
+    rec.vector((0.0, -2.0), (0.0, y_end + 8.0), role="construction", layer="diagrams", step=step)
+    for idx, piece in _pieces(t, force):
+        pts = [(float(dist[k] / mu_s), float(v / mu_p)) for k, v in zip(idx, piece)]
+        rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
+        if float(np.max(piece)) > 0:   # the loaded stroke hatched down to the axis
+            for x, y in pts[::max(1, len(pts) // 24)]:
+                rec.segment((x, 0.0), (x, y), role="hatch", layer="diagrams", step=step)
+    seen: list[float] = []
+    for k, pos in t.position_index():
+        x = float(dist[k] / mu_s)
+        rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
+        below = sum(1 for s in seen if abs(s - x) < 3.0)
+        seen.append(x)
+        rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
+    rec.label((x_end + 9.0, -1.0), f"s, {dist_unit}", size=3.5, step=step)
+    rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {unit('N', lang)}", size=3.5, step=step)
+    rec.label((-2.5, y_end - 1.2), num(top, lang), size=2.5, anchor="end", step=step)
+    rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
+    low = -5.0 - 3.5 * max([0] + [sum(1 for s in seen if abs(s - x) < 3.0) for x in seen])
+    rec.label((0.0, low - 8.0), f"μ_s = {num(mu_s, lang)} {dist_unit}/{unit('mm', lang)}, μ_P = {num(mu_p, lang)} {unit('N/mm', lang)}", size=2.5, step=step)
+    return rec
+
+
+def records(t: Turn, k: float = 1.0, lang: str = "uk") -> dict[str, Record]:
+    """"moment", "resistance" (when the scene has an external force) and "hodograph <key>" for every
+    revolute pair, at size factor k, in ``lang``."""
+    out = {"moment": moment_record(t, 180.0 * k, 70.0 * k, lang=lang)}
+    res = resistance_record(t, 160.0 * k, 60.0 * k, lang=lang)
+    if res is not None:
+        out["resistance"] = res
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key, lang=lang)
+        out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * k, lang=lang)
     return out

@@ -22,6 +22,7 @@ class Block:
     name: str
     build: Callable[[float], Record]
     factors: Sequence[float] = (1.0,)
+    solid: bool = False      # nested by its whole box (a drawing with its table): nothing in between
 
 
 @dataclass
@@ -30,15 +31,28 @@ class Placed:
     record: Record
     box: Box
     factor: float
+    solid: bool = False
 
 
 def place(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0) -> list[Placed]:
     """Bottom-left-fill placement: each block goes to the highest, then leftmost free spot (candidate
     corners next to the blocks already placed); if it fits nowhere, the next smaller factor is tried."""
+    placed, rest = place_some(blocks, region, obstacles, gap)
+    if rest:
+        raise GraphplanError(f"the sheet has no room for the {rest[0].name}; choose a larger --format "
+                             "or fewer positions")
+    return placed
+
+
+def place_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (),
+               gap: float = 6.0) -> tuple[list[Placed], list[Block]]:
+    """As ``place``, but the blocks that fit nowhere are handed back (in order) instead of refused:
+    (placed, the rest) — the rest go to the next sheet of a set."""
     field = box(*region)
     for ob in obstacles:
         field = field.difference(box(*ob))
     placed: list[Placed] = []
+    rest: list[Block] = []
     taken: list[Box] = [tuple(ob) for ob in obstacles]
     for block in blocks:
         for factor in block.factors:
@@ -53,9 +67,8 @@ def place(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (), g
                 taken.append((x, top - h, x + w, top))
                 break
         else:
-            raise GraphplanError(f"the sheet has no room for the {block.name}; choose a larger --format "
-                                 "or fewer positions")
-    return placed
+            rest.append(block)
+    return placed, rest
 
 
 def _spot(w: float, h: float, region: Box, taken: list[Box], field: Polygon, gap: float):
@@ -151,3 +164,239 @@ def overlapping_texts(record: Record) -> list[tuple[str, str]]:
     return pairs
 
 
+
+
+def spread(placed: list[Placed], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0,
+           rounds: int = 6) -> list[Placed]:
+    """The free field shared out: each block moved to the middle of the free span beside it, across
+    then up and down, a few rounds — the draftsman spreading the drawings evenly over the sheet
+    instead of leaving a bare strip at one side. No block comes closer than ``gap`` to another, to
+    an obstacle or to the region's edge."""
+    boxes = [list(p.box) for p in placed]
+    fixed = [tuple(ob) for ob in obstacles]
+    rx0, ry0, rx1, ry1 = region
+
+    def span(i: int, axis: int) -> tuple[float, float]:
+        b = boxes[i]
+        lo, hi = (rx0, rx1) if axis == 0 else (ry0, ry1)
+        other = 1 - axis
+        for j, o in enumerate([tuple(x) for x in boxes] + fixed):
+            if j == i:
+                continue
+            if o[other] >= b[other + 2] + gap - 1e-9 or b[other] >= o[other + 2] + gap - 1e-9:
+                continue                       # no overlap across: not in the way
+            if o[axis + 2] <= b[axis] + 1e-9:
+                lo = max(lo, o[axis + 2] + gap)
+            elif o[axis] >= b[axis + 2] - 1e-9:
+                hi = min(hi, o[axis] - gap)
+        return lo, hi
+
+    for _ in range(rounds):
+        for axis in (0, 1):
+            for i in range(len(boxes)):
+                lo, hi = span(i, axis)
+                size = boxes[i][axis + 2] - boxes[i][axis]
+                if hi - lo < size - 1e-9:
+                    continue
+                start = (lo + hi - size) / 2
+                boxes[i][axis], boxes[i][axis + 2] = start, start + size
+    out = []
+    for p, b in zip(placed, boxes):
+        dx, dy = b[0] - p.box[0], b[1] - p.box[1]
+        out.append(Placed(p.name, p.record.moved(dx, dy), tuple(b), p.factor))
+    return out
+
+
+# -- nesting by footprints ----------------------------------------------------------------------
+# A drawing's bounding box is mostly paper (a position plan's fan, a diagram's corner): blocks are
+# nested by their footprints instead — the ink on a GRID-mm raster, grown by half the gap and with
+# its enclosed holes filled — so a velocity plan may sit in the bare corner beside a position plan
+# but never inside a figure or nearer than ``gap`` to another block's ink.
+
+GRID = 2.5   # mm per raster cell
+
+
+def _marks(prim: Primitive, step: float) -> list[tuple[float, float]]:
+    """Points along a primitive's ink, ``step`` mm apart (text: its whole box)."""
+    import math
+    if prim.kind == "text":
+        x0, y0, x1, y1 = prim.bounds()
+        nx, ny = max(1, int((x1 - x0) / step) + 1), max(1, int((y1 - y0) / step) + 1)
+        return [(x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny) for i in range(nx + 1) for j in range(ny + 1)]
+    if prim.kind in ("circle", "arc"):
+        (cx, cy), r = prim.points[0], prim.radius
+        a0, a1 = prim.angles if prim.kind == "arc" else (0.0, 360.0)
+        sweep = (a1 - a0) % 360.0 or 360.0
+        n = max(2, int(math.radians(sweep) * r / step) + 1)
+        return [(cx + r * math.cos(math.radians(a0 + sweep * k / n)),
+                 cy + r * math.sin(math.radians(a0 + sweep * k / n))) for k in range(n + 1)]
+    pts = list(prim.points)
+    if prim.kind == "polygon":
+        pts = pts + pts[:1]
+    out = list(pts)
+    for (xa, ya), (xb, yb) in zip(pts, pts[1:]):
+        n = int(math.hypot(xb - xa, yb - ya) / step) + 1
+        out += [(xa + (xb - xa) * k / n, ya + (yb - ya) * k / n) for k in range(1, n)]
+    return out
+
+
+@dataclass
+class Footprint:
+    """A record's footprint: ``mask[row, col]`` covers the cell whose lower-left corner is
+    (x0 + col·GRID, y0 + row·GRID) in the record's coordinates (rows grow upward)."""
+    mask: "object"
+    x0: float
+    y0: float
+
+
+_FOOTPRINTS: dict[tuple[int, float, bool], tuple[Record, Footprint]] = {}
+
+
+def footprint(rec: Record, pad: float, solid: bool = False) -> Footprint:
+    """The record's ink on the raster, grown by ``pad`` mm, its enclosed holes filled — or its
+    whole box when ``solid`` (remembered per record: a layout tries the same drawings many times)."""
+    key = (id(rec), pad, solid)
+    hit = _FOOTPRINTS.get(key)
+    if hit is not None and hit[0] is rec:
+        return hit[1]
+    if len(_FOOTPRINTS) > 4096:
+        _FOOTPRINTS.clear()
+    fp = _footprint(rec, pad)
+    if solid:
+        fp = Footprint(fp.mask | True, fp.x0, fp.y0)
+    _FOOTPRINTS[key] = (rec, fp)
+    return fp
+
+
+def _footprint(rec: Record, pad: float) -> Footprint:
+    import numpy as np
+    from scipy import ndimage
+    bx0, by0, bx1, by1 = rec.bounds()
+    margin = int(np.ceil(pad / GRID)) + 1
+    x0, y0 = bx0 - margin * GRID, by0 - margin * GRID
+    w = int(np.ceil((bx1 - bx0) / GRID)) + 2 * margin + 1
+    h = int(np.ceil((by1 - by0) / GRID)) + 2 * margin + 1
+    mask = np.zeros((h, w), dtype=bool)
+    pts = np.array([p for prim in rec.items for p in _marks(prim, GRID / 2)], dtype=float).reshape(-1, 2)
+    if len(pts):
+        cols = np.clip(((pts[:, 0] - x0) / GRID).astype(int), 0, w - 1)
+        rows = np.clip(((pts[:, 1] - y0) / GRID).astype(int), 0, h - 1)
+        mask[rows, cols] = True
+    r = int(round(pad / GRID))
+    if r > 0:
+        yy, xx = np.mgrid[-r:r + 1, -r:r + 1]
+        mask = ndimage.binary_dilation(mask, structure=(xx ** 2 + yy ** 2) <= r * r)
+    return Footprint(ndimage.binary_fill_holes(mask), x0, y0)
+
+
+def _field(region: Box, obstacles: Sequence[Box]):
+    """The region's raster with the obstacles' cells taken."""
+    import numpy as np
+    rx0, ry0, rx1, ry1 = region
+    W, H = int((rx1 - rx0) / GRID), int((ry1 - ry0) / GRID)
+    taken = np.zeros((H, W), dtype=bool)
+    for ob in obstacles:
+        c0, c1 = int(np.floor((ob[0] - rx0) / GRID)), int(np.ceil((ob[2] - rx0) / GRID))
+        r0, r1 = int(np.floor((ob[1] - ry0) / GRID)), int(np.ceil((ob[3] - ry0) / GRID))
+        taken[max(r0, 0):max(min(r1, H), 0), max(c0, 0):max(min(c1, W), 0)] = True
+    return taken
+
+
+def spread_nested(placed: list[Placed], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0,
+                  rounds: int = 3) -> list[Placed]:
+    """The nested blocks spread over the field: each moved (by whole raster cells) to the middle of
+    the free run through its place, up and down, then across, a few rounds — the bare band a
+    top-first packing leaves shared out between the drawings."""
+    import numpy as np
+    rx0, ry0, _, _ = region
+    taken = _field(region, obstacles)
+    H, W = taken.shape
+    prints = [footprint(p.record, gap / 2, p.solid) for p in placed]
+    at = []                                    # (row, col) of each footprint's lower-left cell
+    for p, fp in zip(placed, prints):
+        col = int(round((fp.x0 - rx0) / GRID))
+        row = int(round((fp.y0 - ry0) / GRID))
+        at.append([row, col])
+    def stamp(i: int, on: bool) -> None:
+        h, w = prints[i].mask.shape
+        r, c = at[i]
+        r0, c0 = max(r, 0), max(c, 0)
+        sub = prints[i].mask[r0 - r:min(h, H - r), c0 - c:min(w, W - c)]
+        if on:
+            taken[r0:r0 + sub.shape[0], c0:c0 + sub.shape[1]] |= sub
+        else:
+            taken[r0:r0 + sub.shape[0], c0:c0 + sub.shape[1]] &= ~sub
+    for i in range(len(placed)):
+        stamp(i, True)
+    for _ in range(rounds):
+        for axis in (0, 1):
+            for i in range(len(placed)):
+                h, w = prints[i].mask.shape
+                if h > H or w > W:
+                    continue
+                stamp(i, False)
+                free = _overlaps(taken, prints[i].mask) < 0.5
+                r, c = at[i]
+                if 0 <= r < free.shape[0] and 0 <= c < free.shape[1] and free[r, c]:
+                    line = free[:, c] if axis == 0 else free[r, :]
+                    here = r if axis == 0 else c
+                    lo = here
+                    while lo - 1 >= 0 and line[lo - 1]:
+                        lo -= 1
+                    hi = here
+                    while hi + 1 < len(line) and line[hi + 1]:
+                        hi += 1
+                    at[i][axis] = (lo + hi) // 2
+                stamp(i, True)
+    out = []
+    for p, fp, (r, c) in zip(placed, prints, at):
+        dx, dy = rx0 + c * GRID - fp.x0, ry0 + r * GRID - fp.y0
+        moved = p.record.moved(dx, dy)
+        out.append(Placed(p.name, moved, moved.bounds(), p.factor, p.solid))
+    return out
+
+
+def _overlaps(taken, mask):
+    """For every offset (row, col) with the mask inside ``taken``: how many of its cells are taken
+    (a correlation by FFT)."""
+    import numpy as np
+    H, W = taken.shape
+    h, w = mask.shape
+    shape = (-(-(H + h) // 32) * 32, -(-(W + w) // 32) * 32)
+    spec = np.fft.rfft2(taken.astype(float), shape) * np.conj(np.fft.rfft2(mask.astype(float), shape))
+    full = np.fft.irfft2(spec, shape)
+    return full[:H - h + 1, :W - w + 1]
+
+
+def nest_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (),
+              gap: float = 6.0) -> tuple[list[Placed], list[Block]]:
+    """Each block at the highest, then leftmost place where its footprint (grown by gap/2) meets
+    no other's and stays in the region clear of the obstacles; the blocks that fit nowhere are
+    handed back in order: (placed, the rest)."""
+    import numpy as np
+    rx0, ry0, rx1, ry1 = region
+    taken = _field(region, obstacles)
+    H, W = taken.shape
+    placed: list[Placed] = []
+    rest: list[Block] = []
+    for block in blocks:
+        for factor in block.factors:
+            rec = block.build(factor)
+            fp = footprint(rec, gap / 2, block.solid)
+            h, w = fp.mask.shape
+            if h > H or w > W:
+                continue
+            hits = _overlaps(taken, fp.mask)
+            free = np.argwhere(hits < 0.5)        # (row, col) of the footprint's lower-left cell
+            if len(free) == 0:
+                continue
+            row = free[:, 0].max()
+            col = free[free[:, 0] == row][:, 1].min()
+            taken[row:row + h, col:col + w] |= fp.mask
+            dx, dy = rx0 + col * GRID - fp.x0, ry0 + row * GRID - fp.y0
+            moved = rec.moved(dx, dy)
+            placed.append(Placed(block.name, moved, moved.bounds(), factor, block.solid))
+            break
+        else:
+            rest.append(block)
+    return placed, rest

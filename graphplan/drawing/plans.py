@@ -191,6 +191,14 @@ def position_record(plans: Plans) -> Record:
             curve = catmull_rom(path)
             rec.add("polyline", [_pt(c) for c in curve], role="trajectory", layer="construction",
                     step=f"trajectory of {name}")
+    traced = set(plans.trajectories)
+    for name in sheet_points(plans):
+        if name in traced:
+            continue
+        path = [where(sc, lay, sc.body_of(name), name) for lay in regular]
+        if max(abs(p - path[0]) for p in path) > 1.0 and not _on_circle_or_line(path):
+            rec.add("polyline", [_pt(c) for c in catmull_rom(path)], role="trajectory",
+                    layer="construction", step=f"trajectory of {name}")
     out = output_point(plans)
     extremes = [lay for lay in plans.extremes
                 if all(abs((lay.phi - p.phi + 180.0) % 360.0 - 180.0) > 1e-6 for p in plans.positions)]
@@ -206,6 +214,8 @@ def position_record(plans: Plans) -> Record:
     # letters at the first thick position
     lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
     pts = joints_at(sc, lay)
+    labels += link_numbers(sc, lay, pts)
+    labels += omega_arrow(rec, O, r, mech.omega1)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
@@ -224,6 +234,58 @@ def position_record(plans: Plans) -> Record:
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
         labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
     return place_labels(rec, labels)
+
+
+def sheet_points(plans: Plans) -> list[str]:
+    """The moving points the sheet's plans and diagrams use: every joint off the frame and the
+    centres of mass — their trajectories are traced on the position plan."""
+    mech = plans.scheme.mech
+    names = []
+    for link in mech.links.values():
+        for p in list(link.joints) + ([link.com] if link.com else []):
+            if p and p not in mech.frame and p not in names and p != mech.crank.pin:
+                names.append(p)
+    return names
+
+
+def _on_circle_or_line(path: list[complex]) -> bool:
+    """A path already drawn another way: a straight guide (a slider's travel)."""
+    a, b = path[0], max(path, key=lambda z: abs(z - path[0]))
+    if abs(b - a) < 1e-9:
+        return True
+    u = (b - a) / abs(b - a)
+    return all(abs(((z - a) * u.conjugate()).imag) < 0.3 for z in path)
+
+
+def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex]) -> list[LabelRequest]:
+    """Each link's number beside the middle of its bar (the frame's pivots are 0)."""
+    mech = sc.mech
+    out = []
+    for name, link in mech.links.items():
+        joints = [pts[j] for j in link.joints if j in pts]
+        if len(joints) >= 2:
+            mid = 0.5 * (joints[0] + joints[1])
+            d = joints[1] - joints[0]
+            normal = 1j * d / abs(d) if abs(d) > 1e-9 else 1j
+        else:
+            mid = pts[next(iter(link.local))]
+            normal = 1j
+        out.append(LabelRequest(mid, str(link.number), toward=normal, size=5.0, optional=True))
+    return out
+
+
+def omega_arrow(rec: Record, O: complex, r: float, omega: float) -> list[LabelRequest]:
+    """The crank's sense of rotation: an arc around the pivot with an arrowhead, labelled ω1."""
+    rr = max(6.0, 0.25 * r)
+    start, end = (200.0, 290.0) if omega > 0 else (290.0, 200.0)
+    rec.arc(_pt(O), rr, min(start, end), max(start, end), role="relative", layer="mechanism",
+            step="the crank's rotation ω1")
+    tip = O + rr * cmath.exp(1j * math.radians(end))
+    tangent = 1j * (tip - O) / rr * (1 if omega > 0 else -1)
+    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="mechanism",
+               step="the crank's rotation ω1")
+    mid = O + rr * cmath.exp(1j * math.radians(245.0))
+    return [LabelRequest(mid, "ω1", toward=mid - O, size=3.5, optional=False)]
 
 
 def labelled(plan: Plan) -> Record:

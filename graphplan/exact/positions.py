@@ -262,8 +262,7 @@ def dead_centre(mech: Mechanism, output: Output, kin: Kinematics, extremes: tupl
     if output.kind != "slide":
         raise SceneError(f"positions.start = {which!r}: inner and outer dead centres belong to a slider; "
                          f"the output {output.name} is a link's angle (use \"max\"/\"min\")", mech.source)
-    point = next(iter(mech.links[output.name].local))
-    reach = np.abs(kin.point(point)[0] - mech.frame[mech.crank.pivot])
+    reach = np.abs(kin.point(output.name)[0] - mech.frame[mech.crank.pivot])   # the slider's point
     pick = np.argmin(reach) if which == "inner" else np.argmax(reach)
     return float(extremes[int(pick)])
 

@@ -14,7 +14,6 @@ from graphplan.report.dynamics import dynamics_json
 from graphplan.report.plans import captioned
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
-from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num
 
 # the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
@@ -138,16 +137,14 @@ def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
-    """Sheet 3: the largest abscissa L that lets every block fit the sheet."""
-    last: GraphplanError | None = None
+    """Sheet 3: the largest abscissa L at which every block fits one sheet; where none does (a small
+    format), the smallest, carried over to further sheets of the set."""
+    from graphplan.sheets.compose import fits_one
     dyn = analyse(st, getattr(args, "delta", None))
     for L, size in SIZES:
         blocks, fw = dynamics_blocks(st, args, L, dyn, size)
-        tf = fields(st, args.lang, f"μφ = {num(fw.mu_phi, args.lang, 4)}", 3, 3)
-        tf["subtitle"] = WORDS[args.lang]["subtitle"]
-        try:
-            return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")
-        except GraphplanError as exc:
-            last = exc
-    raise GraphplanError(f"{st.mech.source}: the sheet {f.name} is too small ({last}); choose a larger --format")
-
+        if fits_one(f, blocks):
+            break
+    tf = fields(st, args.lang, f"μ_φ = {num(fw.mu_phi, args.lang, 4)}", 3, 3)
+    tf["subtitle"] = WORDS[args.lang]["subtitle"]
+    return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")

@@ -1,0 +1,214 @@
+"""The force sheet (sheet 2 of the coursework, seed 000): the acceleration plan of the force position
+with its table, the table of masses, moments of inertia and inertia loads, every group with its
+force plan and its forces' table, the Zhukovsky lever, the results, the balancing moment over a turn,
+the diagram of the resistance force over the stroke and the reactions' hodographs.
+
+The force plans' μF is chosen once per scene and format (``force_scales``): the largest force drawn
+as long as the sheet allows; ``forces --format`` prints the same numbers."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphplan.drawing.layout import Block
+from graphplan.exact.positions import Study
+from graphplan.graphic.record import Record
+from graphplan.report.plans import captioned
+from graphplan.sheets.compose import Sheet, SheetOptions, beside, compose, drawing_scale, fits_one, options_of, \
+    paginate
+from graphplan.sheets.form import Form, form, table
+from graphplan.sheets.kinematics import FACTORS, acceleration_table, fields, notes
+from graphplan.util.errors import GraphplanError
+from graphplan.util.words import fixed, force_symbol, num, unit, word
+
+POLYGON_MM = 150.0     # the largest force of the position drawn this long at size factor 1
+NO_LOADS = ("{src}: a force sheet needs loads — add [loads] (g, mass_per_length, inertia_factor) or a "
+            "link's mass/inertia, and a [[force]] (point, magnitude, stroke)")
+
+
+def _caption(name: str, lang: str) -> str:
+    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+    kind, _, rest = name.partition(" ")
+    return {"group": f"{w('group')} {rest}", "polygon": f"{w('polygon')} {rest}",
+            "table": f"{w('table')} {rest}", "lever": w('lever'), "results": w('results'),
+            "moment": w('moment'), "hodograph": f"{w('hodograph')} {force_symbol(rest, lang)}",
+            "resistance": w('resistance')}.get(kind, name)
+
+
+def has_loads(st: Study) -> bool:
+    """Whether the scene loads any link: a mass, a moment of inertia or an external force."""
+    mech = st.mech
+    return bool(mech.forces) or any((l.mass or 0) > 0 or (l.inertia or 0) > 0 for l in mech.links.values())
+
+
+def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
+    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε
+    (read off the acceleration plan where it has them), G = m·g, Φ = m·a_S and M_Φ = I_S·ε."""
+    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+    mech = st.mech
+    kin = ks.kin
+    rows = [[w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}",
+             "a_S, м/с²" if lang == "uk" else "a_S, m/s²", "ε, рад/с²" if lang == "uk" else "ε, rad/s²",
+             "G, Н" if lang == "uk" else "G, N", "Φ, Н" if lang == "uk" else "Φ, N",
+             "M_Φ, Н·м" if lang == "uk" else "M_Φ, N·m"]]
+    acc = (acc_doc or {}).get("acceleration", {})
+    for name, link in mech.links.items():
+        m, inertia = link.mass or 0.0, link.inertia or 0.0
+        if not m and not inertia:
+            continue
+        com = link.com or next(iter(link.local))
+        body = kin.bodies[name]
+        a_s = float(abs(body.at(link.local[com])[2][0]))
+        eps = float(abs(body.eps[0]))
+        graph_a = acc.get(com, {}).get("value")
+        graph_e = acc.get(f"epsilon_{name}", {}).get("value")
+        a_used = graph_a if graph_a is not None else a_s
+        e_used = abs(graph_e) if graph_e is not None else eps
+        rows.append([f"{link.number} ({com})", num(m, lang, 4), num(inertia, lang, 4), num(a_used, lang, 4),
+                     num(e_used, lang, 4), num(m * mech.g, lang, 4), num(m * a_used, lang, 4),
+                     num(inertia * e_used, lang, 4)])
+    return table(rows, [20.0, 14.0, 20.0, 18.0, 18.0, 16.0, 18.0, 18.0], row_h=6.0, size=2.5,
+                 title=w('inertia'))
+
+
+SHORT_FORCE_MM = 10.0
+
+
+def small_forces(fp, lang: str = "uk") -> list[str]:
+    """Forces drawn shorter than 10 mm on their group's force plan, each with its drawn length and
+    its share of the plan's largest ("R34τ 4 мм, 2.4 %"): the sheet says which are short."""
+    out = []
+    for gp in fp.groups:
+        sides = [s for s in gp.sides if s.mm > 1e-9]
+        if not sides:
+            continue
+        big = max(s.mm for s in sides)
+        out += [f"{force_symbol(s.name, lang)} {num(s.mm, lang, 2)} {unit('mm', lang)}, {fixed(100 * s.mm / big, lang, 1)} %"
+                for s in sides if s.mm < SHORT_FORCE_MM]
+    return list(dict.fromkeys(out))
+
+
+FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts")
+
+
+@dataclass
+class ForceDrawn:
+    k: dict[str, float]
+    fp: object
+    blocks: list[Block]
+
+
+class ForceDrafter:
+    """Draws the force sheet's blocks at given size factors, remembering what it drew."""
+
+    def __init__(self, st: Study, opts: SheetOptions):
+        from graphplan.drawing import charts as forcecharts
+        from graphplan.exact import kinetostatics
+        self.st, self.opts = st, opts
+        self.phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
+        self.ks = kinetostatics.analyse(st, [self.phi])
+        self.turn = forcecharts.turn(st)
+        self.memo: dict = {}
+
+    def drawn(self, k: dict[str, float]) -> ForceDrawn:
+        key = tuple(k[f] for f in FORCE_FAMILIES)
+        if key not in self.memo:
+            self.memo[key] = force_blocks(self, k)
+        return self.memo[key]
+
+
+def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
+    """The force sheet's blocks at size factors k: "forces" sets μF, "groups" μl of the groups'
+    drawings, "acceleration" μa of the force position's plan, "charts" the charts' size."""
+    from graphplan.drawing import charts as forcecharts
+    from graphplan.drawing import forces as forcedraw
+    from graphplan.drawing.plans import acceleration_records
+    from graphplan.graphic import forceplans
+    from graphplan.graphic.plans import build_plans
+    from graphplan.graphic.scales import Targets, format_scale
+    from graphplan.report.plans import plans_json
+    st, opts, phi, ks = dr.st, dr.opts, dr.phi, dr.ks
+    lang, p = opts.lang, opts.precision
+    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+    mu_l = forceplans.mechanism_scale(st, forceplans.MECHANISM_MM * k["groups"])
+    mu_F = forceplans.force_scale(ks, POLYGON_MM * k["forces"])
+    fp = forceplans.construct(st, phi, precision=p, mu_l=mu_l, mu_F=mu_F)
+    plans = build_plans(st, count=opts.positions, accel=[phi], precision=p,
+                        targets=Targets().scaled(k["acceleration"]))
+    q = next(x for x in plans.positions if x.acceleration is not None)
+    acc_doc = next(d for d in plans_json(plans)["positions"] if "acceleration" in d)
+    blocks: list[Block] = []
+    small = small_forces(fp, lang)
+    lines = [f"{w('at')} {fixed(phi, lang, 2)}°"] + ([w('small') + "; ".join(small)] if small else [])
+    head = notes(st, [format_scale(m, v, lang) for m, v in (("mu_l", fp.mu_l), ("mu_F", fp.mu_F),
+                                                              ("mu_a", plans.mu_a))], lines, lang)
+    blocks.append(Block("notes", lambda _k, r=head: r))
+    label = q.index if q.index is not None else f"φ = {fixed(q.phi % 360, lang, 1)}°"
+    caption = f"{w('acceleration')}, {w('position')} {label}, {format_scale('mu_a', plans.mu_a, lang)}"
+    arec = captioned(acceleration_records(plans)[q.key], caption)
+    n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
+    atab = acceleration_table(acc_doc, n, lang, p)
+    both = beside([arec, atab])
+    blocks.append(Block("acceleration plan", lambda _k: both, solid=True))
+    itab = inertia_table(st, ks, acc_doc, lang)
+    blocks.append(Block("inertia table", lambda _k: itab))
+    drawn = forcedraw.records(fp, lang)
+    for gp in fp.groups:
+        parts = [captioned(drawn[f"{kind} {gp.label}"], _caption(f"{kind} {gp.label}", lang))
+                 for kind in ("group", "polygon", "table")]
+        group = beside([parts[0], beside([parts[1]], below=parts[2])])
+        blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r, solid=True))
+    lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
+    blocks.append(Block("lever", lambda _k: lever, solid=True))
+    for name, rec in forcecharts.records(dr.turn, k["charts"], lang).items():
+        chart = captioned(rec, _caption(name, lang))
+        blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
+    return ForceDrawn(dict(k), fp, blocks)
+
+
+def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
+    """The largest common size factor at which the force sheet fits one sheet, then each family
+    grown while it fits; else the largest at which every block fits a sheet, for a set."""
+    if not has_loads(st):
+        raise GraphplanError(NO_LOADS.format(src=st.mech.source))
+    dr = ForceDrafter(st, opts)
+    same = lambda k: {fam: k for fam in FORCE_FAMILIES}  # noqa: E731
+    for k in FACTORS:
+        if k < 0.5:
+            break
+        d = dr.drawn(same(k))
+        if fits_one(f, d.blocks):
+            for fam in FORCE_FAMILIES:
+                for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
+                    trial = dr.drawn({**d.k, fam: bigger})
+                    if not fits_one(f, trial.blocks):
+                        break
+                    d = trial
+            return d
+    for k in FACTORS:
+        if k > 1.0:
+            continue
+        d = dr.drawn(same(k))
+        try:
+            paginate(f, d.blocks)
+        except GraphplanError:
+            continue
+        return d
+    return dr.drawn(same(FACTORS[-1]))
+
+
+def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
+    """μl and μF of the force sheet of ``format`` — for ``forces --format``."""
+    d = choose_forces(st, form(format), SheetOptions(precision=precision, sheet="forces"))
+    return {"mu_l": d.fp.mu_l, "mu_F": d.fp.mu_F}
+
+
+def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
+    """Sheet 2: the force analysis at the scene's force position (a set when it does not fit)."""
+    opts = options_of(options)
+    d = choose_forces(st, f, opts)
+    w = lambda key: word(f"fs {key}", opts.lang)  # noqa: E731
+    tf = fields(st, opts.lang, drawing_scale(d.fp.mu_l, opts.lang), subtitle=w('subtitle'))
+    return compose(f, d.blocks, tf, opts.lang, f"{st.mech.title} — {w('subtitle')}")
+
