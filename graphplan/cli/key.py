@@ -126,8 +126,24 @@ class KeyOptions:
 _JOB: dict[str, Any] = {}
 
 
-def _init_job(table, options: KeyOptions) -> None:
+def _init_job(table, options: KeyOptions, parent: int | None = None) -> None:
     _JOB["table"], _JOB["options"] = table, options
+    if parent is not None:
+        _die_with(parent)
+
+
+def _die_with(parent: int) -> None:
+    """A worker ends when the command ends, even by SIGKILL: Linux's PR_SET_PDEATHSIG sends the
+    worker SIGKILL when its parent dies (a pool's workers otherwise wait for work forever)."""
+    import signal
+    try:
+        import ctypes
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)          # PR_SET_PDEATHSIG = 1
+    except (OSError, AttributeError):                         # not Linux: the pool's own cleanup
+        pass
+    if os.getppid() != parent:                                # the parent died before prctl
+        os._exit(1)
 
 
 def _variant_job(index: int) -> dict[str, Any]:
@@ -169,16 +185,23 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
             _report(results[-1], progress)
         return results
     import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context(method),
-                             initializer=_init_job, initargs=(table, options)) as pool:
-        progress.step(f"variant {table.variants[0].id}")
-        for k, result in enumerate(pool.map(_variant_job, range(n))):
-            results.append(result)
-            _report(result, progress)
-            if k + 1 < n:
-                progress.step(f"variant {table.variants[k + 1].id}")
+    # a Pool is terminated when the block ends, by an error or a signal too (SIGTERM becomes
+    # SystemExit in cmd_key): no worker outlives the command
+    previous = _terminate_cleanly()
+    try:
+        with multiprocessing.get_context(method).Pool(jobs, initializer=_init_job,
+                                                      initargs=(table, options, os.getpid())) as pool:
+            progress.step(f"variant {table.variants[0].id}")
+            for k, result in enumerate(pool.imap(_variant_job, range(n))):
+                results.append(result)
+                _report(result, progress)
+                if k + 1 < n:
+                    progress.step(f"variant {table.variants[k + 1].id}")
+    finally:
+        if previous is not None:
+            import signal
+            signal.signal(signal.SIGTERM, previous)
     return results
 
 
@@ -234,6 +257,17 @@ def cmd_key(args: argparse.Namespace) -> int:
     if not written:
         raise GraphplanError("no variant could be built; nothing written", str(table.path))
     return 0
+
+
+def _terminate_cleanly():
+    """While the pool works, SIGTERM ends `key` like an error (SystemExit): the pool is terminated,
+    files written so far are whole (util.files.write_atomic), the summary is not written. Returns
+    the handler to restore (None off the main thread, where signals cannot be handled)."""
+    import signal
+    import threading
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit(128 + signum))
 
 
 def _override_columns(table) -> set[str]:
