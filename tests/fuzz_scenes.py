@@ -206,3 +206,83 @@ MALFORMED = st.one_of(
                      "x = 1\nx = 2\n", "[[link]]\n[link]\n", "\ufeff[crank]\n", "k = 9" + "9" * 5000]),
 )
 """Text that is not a scene: binary garbage, random text, broken TOML."""
+
+
+# -- the release count (docs/benchmarks.md): python tests/fuzz_scenes.py N ------------------------
+
+COMMANDS = ("analyze", "plans", "diagrams", "forces")
+
+
+def census(count: int, seed: int = 0) -> dict:
+    """``count`` scenes (valid, near-singular, mutated, malformed in turn) through every command:
+    how the runs ended. A failing run is listed (first 20) instead of stopping the count."""
+    import os
+    import random
+    import tempfile
+    import time
+    from hypothesis import HealthCheck, given, settings
+
+    tally = {"scenes": 0, "runs": 0, "exit0": 0, "exit2": 0, "internal": 0, "multiline": 0,
+             "warnings": 0, "nan_json": 0, "constraint": 0, "other_exit": 0}
+    failures: list[str] = []
+    folder = tempfile.mkdtemp(prefix="graphplan-fuzz-")
+    path = os.path.join(folder, "scene.toml")
+    kinds = st.one_of(VALID.map(lambda s: ("valid", s[0])), NEAR_SINGULAR.map(lambda s: ("near", s[0])),
+                      mutated().map(lambda t: ("mutated", t)), MALFORMED.map(lambda t: ("malformed", t)))
+    start = time.perf_counter()
+
+    @settings(max_examples=count, deadline=None, database=None, derandomize=False,
+              suppress_health_check=list(HealthCheck))
+    @given(kinds)
+    def one(item):
+        kind, text = item
+        tally["scenes"] += 1
+        with open(path, "wb") as fh:
+            fh.write(text.encode("utf-8", "surrogatepass"))
+        for command in COMMANDS:
+            argv = [command, path, "--json"]
+            code, out, err = run(argv)
+            tally["runs"] += 1
+            problem = None
+            if "internal error" in err:
+                tally["internal"] += 1
+                problem = "internal"
+            elif code not in (0, 2):
+                tally["other_exit"] += 1
+                problem = f"exit {code}"
+            elif "Warning" in err:
+                tally["warnings"] += 1
+                problem = "warning"
+            elif code == 2 and len(err.splitlines()) != 1:
+                tally["multiline"] += 1
+                problem = "multiline"
+            else:
+                tally[f"exit{code}"] += 1
+                if code == 0:
+                    try:
+                        doc = json.loads(out, parse_constant=_no_constant)
+                    except AssertionError:
+                        tally["nan_json"] += 1
+                        problem = "NaN in JSON"
+                    else:
+                        if command == "analyze" and kind in ("valid", "near"):
+                            from test_fuzz import constraints_hold
+                            try:
+                                constraints_hold(text, doc)
+                            except AssertionError as exc:
+                                tally["constraint"] += 1
+                                problem = f"constraint {exc}"
+            if problem and len(failures) < 20:
+                failures.append(f"{problem}: {command} [{kind}] {err.strip()[:200]} :: {text[:300]!r}")
+
+    random.seed(seed)
+    one()
+    tally["seconds"] = round(time.perf_counter() - start, 1)
+    return {"tally": tally, "failures": failures}
+
+
+if __name__ == "__main__":
+    import sys
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    result = census(int(sys.argv[1]) if len(sys.argv) > 1 else 1000)
+    print(json.dumps(result, ensure_ascii=False, indent=1))

@@ -378,7 +378,10 @@ def test_killed_key_leaves_no_worker_and_no_partial_file(tmp_path, sig):
     deadline = time.time() + 10
     while time.time() < deadline and any(_alive(w) for w in workers):
         time.sleep(0.1)
-    assert not [w for w in workers if _alive(w)], "a pool worker outlived the command"
+    orphans = [w for w in workers if _alive(w)]
+    for w in orphans:                   # do not leave them behind even when the test fails
+        os.kill(w, signal.SIGKILL)
+    assert not orphans, "a pool worker outlived the command"
     assert not (out / "summary.json").exists()
     for f in out.rglob("*"):
         if f.is_file() and not f.name.endswith(".part"):

@@ -206,8 +206,6 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
 
 
 def _report(result: dict[str, Any], progress: Progress) -> None:
-    if result["message"]:
-        progress.message(result["message"])
     progress.advance()
 
 
@@ -232,6 +230,13 @@ def cmd_key(args: argparse.Namespace) -> int:
     results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf), jobs, progress)
     progress.close()
     entries = [r["entry"] for r in results]
+    skipped = [r["message"] for r in results if r["message"]]
+    if skipped and not any(e["status"] == "ok" for e in entries):
+        more = f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""
+        raise GraphplanError(f"no variant could be built, nothing written: "
+                             f"{skipped[0].removeprefix('graphplan: ')}{more}")
+    for line in skipped:                  # written keys and skipped variants: a line for each skip
+        print(line, file=sys.stderr)
     rows = [r["row"] for r in results]
     written = sum(e["status"] == "ok" for e in entries)
     title = (f"Answer keys: {table.path.name} — {len(entries)} variants, {written} written"
@@ -254,8 +259,6 @@ def cmd_key(args: argparse.Namespace) -> int:
         if not args.no_pdf:
             write_atomic(out / "summary.pdf", pdf_bytes(svg))
     sys.stdout.write(dumps(doc) if args.json else text)
-    if not written:
-        raise GraphplanError("no variant could be built; nothing written", str(table.path))
     return 0
 
 
