@@ -59,6 +59,11 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
         folder.mkdir(parents=True, exist_ok=True)
         if path.is_dir():
             raise GraphplanError("is a folder; name a file to write", str(path))
+        for parent in (folder, *folder.parents):
+            if parent.exists():
+                if not parent.is_dir():
+                    raise GraphplanError(f"cannot write: {parent} is not a folder", str(path))
+                break
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=folder)
     except OSError as exc:
         raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None
