@@ -17,6 +17,7 @@ from graphplan.cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent
 BASE = tomllib.loads((ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8"))
+EXAMPLE_TREES = [tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted((ROOT / "examples").glob("*.toml"))]
 
 
 # -- one run ----------------------------------------------------------------------------------
@@ -132,6 +133,19 @@ NEAR_SINGULAR = st.one_of(
     st.builds(rm.rrp, _f(10.0, 100.0), _f(300.0, 999.0), st.just(0.0), st.just(0.0), _f(1e-3, 1e4), branch),
 )
 
+def _loaded(scene, omega, g, q, k):
+    """A valid mechanism at the edges of the physical bounds: ω, g, q·l masses, k·m·l² inertias."""
+    import re
+    text, ok = scene
+    text = re.sub(r"omega = [^\n]+", f"omega = {omega!r}", text, count=1)
+    return text + f"[loads]\ng = {g!r}\nmass_per_length = {q!r}\ninertia_factor = {k!r}\n", ok
+
+
+LOADED = st.builds(_loaded, VALID, st.sampled_from([1e-3, 0.1, 300.0, 1e4, 1e5]),
+                   st.sampled_from([0.0, 9.81, 1e3]), st.sampled_from([1e-9, 1.0, 1e6]),
+                   st.sampled_from([1e-9, 1 / 12, 10.0]))
+"""Valid mechanisms loaded at the bounds of bounds.py (forces must stay finite or be refused)."""
+
 _junk_scalar = st.one_of(
     st.none(), st.booleans(), st.integers(), st.integers(min_value=10 ** 20, max_value=10 ** 400),
     st.floats(), st.text(max_size=30), st.sampled_from([
@@ -165,10 +179,10 @@ def _set(tree, path, value, delete=False):
 
 @st.composite
 def mutated(draw, base=None) -> str:
-    """The example crank-slider (or another tree) with one to three leaves replaced by junk,
-    deleted or joined by unknown keys, as TOML text."""
+    """An example scene (or ``base``) with one to three leaves replaced by junk, deleted or joined
+    by unknown keys, as TOML text."""
     import copy
-    tree = copy.deepcopy(base if base is not None else BASE)
+    tree = copy.deepcopy(base if base is not None else draw(st.sampled_from(EXAMPLE_TREES)))
     for _ in range(draw(st.integers(1, 3))):
         paths = [p for p, _ in _paths(tree) if p]
         if not paths:
@@ -228,6 +242,7 @@ def census(count: int, seed: int = 0) -> dict:
     folder = tempfile.mkdtemp(prefix="graphplan-fuzz-")
     path = os.path.join(folder, "scene.toml")
     kinds = st.one_of(VALID.map(lambda s: ("valid", s[0])), NEAR_SINGULAR.map(lambda s: ("near", s[0])),
+                      LOADED.map(lambda s: ("loaded", s[0])),
                       mutated().map(lambda t: ("mutated", t)), MALFORMED.map(lambda t: ("malformed", t)))
     start = time.perf_counter()
 
@@ -265,7 +280,7 @@ def census(count: int, seed: int = 0) -> dict:
                         tally["nan_json"] += 1
                         problem = "NaN in JSON"
                     else:
-                        if command == "analyze" and kind in ("valid", "near"):
+                        if command == "analyze" and kind in ("valid", "near", "loaded"):
                             from test_fuzz import constraints_hold
                             try:
                                 constraints_hold(text, doc)

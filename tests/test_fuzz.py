@@ -16,7 +16,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from fuzz_scenes import MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
+from fuzz_scenes import LOADED, MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
 from graphplan.model.mechanism import FRAME
 from graphplan.model.scene import loads
 
@@ -89,6 +89,12 @@ def test_valid_mechanisms(tmp_path_factory, scene):
 @settings(**QUICK)
 @given(NEAR_SINGULAR)
 def test_near_singular_mechanisms(tmp_path_factory, scene):
+    _through_commands(tmp_path_factory, scene[0], valid=True)
+
+
+@settings(**QUICK)
+@given(LOADED)
+def test_loaded_mechanisms_at_the_bounds(tmp_path_factory, scene):
     _through_commands(tmp_path_factory, scene[0], valid=True)
 
 
@@ -193,7 +199,7 @@ def test_random_variant_tables(tmp_path_factory, cells):
 
 @pytest.mark.slow
 @settings(**SLOW)
-@given(st.one_of(VALID, NEAR_SINGULAR, mutated().map(lambda t: (t, None)),
+@given(st.one_of(VALID, NEAR_SINGULAR, LOADED, mutated().map(lambda t: (t, None)),
                  MALFORMED.map(lambda t: (t, None))))
 def test_fuzz_slow(tmp_path_factory, scene):
     """The release profile: 10 000 scenes through analyze, plans, diagrams and forces."""

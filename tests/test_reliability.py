@@ -247,11 +247,18 @@ def test_student_tables_in_every_encoding_and_separator(tmp_path, key_folder, en
     ("variant,position,quantity,value\n01,1,v_B,\"7.2\n01,2,v_B,3\n", ["line 2", "quote"]),
     ("variant;position;quantity;value\n01;1;v_B;7.2,5\n", ["line 2", "both"]),
     ("variant;position;quantity;value\n01;1;v_B;12 34\n", ["line 2", "groups of three"]),
+    ("variant,position,quantity,value\n01,1,v_B,1e400\n", ["line 2", "1e+12"]),
 ])
 def test_student_tables_never_misread(tmp_path, key_folder, text, words):
     path = tmp_path / "student.csv"
     path.write_text(text, encoding="utf-8")
     refused(["check", key_folder, path], *words)
+
+
+def test_a_short_row_of_a_wide_table_is_graded_unknown(tmp_path, key_folder):
+    path = tmp_path / "student.csv"
+    path.write_text("01,position\n01\n", encoding="utf-8")
+    answered(["check", key_folder, path, "--json"])
 
 
 def test_quoted_decimal_comma_in_a_comma_table_is_read(tmp_path, key_folder):
