@@ -23,14 +23,20 @@ EXAMPLE_TREES = [tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted((R
 # -- one run ----------------------------------------------------------------------------------
 
 def run(argv: list[str]) -> tuple[int, str, str]:
-    """``graphplan argv`` in this process: exit code, stdout, stderr (warnings included)."""
+    """``graphplan argv`` in this process: exit code, stdout, stderr. Every warning raised during the
+    run is appended to stderr as the program would print it (each one, not only the first per line
+    of code, and also under pytest, which otherwise records warnings away from stderr)."""
+    import warnings
     out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), \
+            warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         try:
             code = main(argv)
         except SystemExit as exc:          # argparse's --help/--version
             code = exc.code if isinstance(exc.code, int) else 2
-    return code, out.getvalue(), err.getvalue()
+    shown = "".join(warnings.formatwarning(w.message, w.category, w.filename, w.lineno) for w in caught)
+    return code, out.getvalue(), err.getvalue() + shown
 
 
 def _no_constant(name: str):
