@@ -54,7 +54,7 @@ def check_options(args: argparse.Namespace) -> None:
                 continue
             low_ok = v > lo if lo_open else v >= lo
             if not (math.isfinite(v) and low_ok and v <= hi):
-                option = "--" + dest.replace("_", "-")
+                option = "--" + dest.replace("_", "-") + (" (a scale)" if dest.startswith("mu_") else "")
                 unit_text = f" {unit}" if unit else ""
                 raise GraphplanError(f"{option} must be from {lo:g}{' (exclusive)' if lo_open else ''} "
                                      f"to {hi:g}{unit_text}, got {v:g}")
