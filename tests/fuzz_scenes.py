@@ -233,9 +233,10 @@ MALFORMED = st.one_of(
 COMMANDS = ("analyze", "plans", "diagrams", "forces")
 
 
-def census(count: int, seed: int = 0) -> dict:
+def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
     """``count`` scenes (valid, near-singular, mutated, malformed in turn) through every command:
-    how the runs ended. A failing run is listed (first 20) instead of stopping the count."""
+    how the runs ended. A failing run is listed (first 20) instead of stopping the count; with
+    ``progress`` the tally so far is written to that file every 250 scenes."""
     import os
     import random
     import tempfile
@@ -295,6 +296,9 @@ def census(count: int, seed: int = 0) -> dict:
                                 problem = f"constraint {exc}"
             if problem and len(failures) < 20:
                 failures.append(f"{problem}: {command} [{kind}] {err.strip()[:200]} :: {text[:300]!r}")
+        if progress and tally["scenes"] % 250 == 0:
+            tally["seconds"] = round(time.perf_counter() - start, 1)
+            Path(progress).write_text(json.dumps({"tally": tally, "failures": failures}, indent=1))
 
     random.seed(seed)
     one()
@@ -305,5 +309,6 @@ def census(count: int, seed: int = 0) -> dict:
 if __name__ == "__main__":
     import sys
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    result = census(int(sys.argv[1]) if len(sys.argv) > 1 else 1000)
+    result = census(int(sys.argv[1]) if len(sys.argv) > 1 else 1000,
+                    progress=sys.argv[2] if len(sys.argv) > 2 else None)
     print(json.dumps(result, ensure_ascii=False, indent=1))

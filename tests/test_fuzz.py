@@ -9,7 +9,6 @@ command (docs/benchmarks.md records the last run).
 from __future__ import annotations
 
 import cmath
-import math
 import os
 
 import pytest

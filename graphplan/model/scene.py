@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import copy
 import math
-import tomllib
 from importlib import resources
 from dataclasses import replace
 from pathlib import Path
