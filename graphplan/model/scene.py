@@ -92,7 +92,8 @@ class _Reader:
         if not math.isfinite(result):
             raise self.fail(key, "must be finite")
         if positive and result <= 0:
-            raise self.fail(key, f"must be positive, got {result:g}")
+            within = f" ({bounds.text()})" if bounds else ""
+            raise self.fail(key, f"must be positive{within}, got {result:g}")
         return B.check(result, bounds, key, self.where) if bounds else result
 
     def xy(self, value: Any, key: str) -> complex:
