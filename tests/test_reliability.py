@@ -57,6 +57,8 @@ def test_forces_lever_with_an_unreadable_crank_image(tmp_path):
     bm = doc["balancing_moment"]
     assert bm["lever"] is None or bm["lever"] == pytest.approx(bm["analytic"], abs=1e-6)
     assert bm["plans"] == pytest.approx(bm["analytic"], abs=1e-9) and doc["balancing_force"]["pa_mm"] >= 0
+    out, _ = answered(["forces", scene(tmp_path, text)])          # the table for people says why
+    assert "nan" not in out and ("pa reads 0 mm" in out) == (bm["lever"] is None)
 
 
 @pytest.mark.parametrize("kind", ["prp", "rpp", "rpr"])

@@ -130,12 +130,16 @@ def forces_table(fp) -> str:
         lines.append("  " + _row([t.name, t.image.lower(), f"{t.force:.5g}", f"{t.arm_mm + 0.0:g}",
                                   f"{t.moment + 0.0:.6g}"], lw))
     lines.append(f"  ΣF·h = {lv.total:.6g} N·mm (h + counter-clockwise about the pole)")
-    lines.append(f"  P_b = ΣF·h / pa = {lv.balancing_force:.5g} N;  M_b = P_b·l_OA = {lv.balancing:.5g} N·m")
+    if math.isfinite(lv.balancing):
+        lines.append(f"  P_b = ΣF·h / pa = {lv.balancing_force:.5g} N;  M_b = P_b·l_OA = {lv.balancing:.5g} N·m")
+    else:
+        lines.append("  pa reads 0 mm at this μv: the lever gives no P_b (choose a finer --precision)")
     a = fp.analytic
     lines += ["", "Balancing moment on the crank M_b (N·m, + counter-clockwise):"]
     for name, value in (("closed form (kinetostatics)", a), ("force plans", fp.balancing),
                         ("Zhukovsky lever", lv.balancing), ("power balance", fp.power)):
         err = _pct(value, a, abs(a) or 1.0)
         tail = "" if name.startswith("closed") or err is None else f"   δ = {err:+.3f} %"
-        lines.append(f"  {name:<28} {value:12.6g}{tail}")
+        shown = f"{value:12.6g}" if math.isfinite(value) else f"{'—':>12}"
+        lines.append(f"  {name:<28} {shown}{tail}")
     return "\n".join(lines) + "\n"
