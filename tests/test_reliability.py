@@ -168,6 +168,22 @@ def test_a_denormal_offset_gives_no_warning(tmp_path):
         check_run([command, "--json"], code, out, err)
 
 
+def test_a_yoke_slot_almost_along_its_guide_is_refused(tmp_path):
+    """Found by the slow fuzz: a Scotch yoke whose slot is 6e-8° off its guide runs 6·10⁷ m, far past
+    any drawing (and past float precision: the slider left its guide by more than 1e-9). Refused
+    with the group and the angle."""
+    text, _ = rm.rpp(0.0625, 5.960464477539063e-08, 1.0, 1.0)
+    for command in ("analyze", "plans", "diagrams", "forces"):
+        refused([command, scene(tmp_path, text), "--json"], "II(2-3) RPP", "beyond 10 km", "crank angle")
+
+
+def test_frame_guides_that_are_not_a_table(tmp_path):
+    """Found by the census: `[frame] guides = [[1]]` was an internal TypeError."""
+    text = BASE.replace('[frame.guides]\nx = { through = [0, "e"], angle_deg = 0 }', "").replace(
+        "[frame.points]", "[frame]\nguides = [[1]]\n[frame.points]")
+    refused(["analyze", scene(tmp_path, text)], "frame.guides", "must be a table")
+
+
 # -- key and check --------------------------------------------------------------------------------
 
 VARIANTS = "# base = {base}\nvariant,r,l\n01,0.064,0.307\n02,0.05,0.2\n"

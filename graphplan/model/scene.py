@@ -210,8 +210,9 @@ class _Reader:
         frame = {self.name(k, "frame.points"): self.xy(v, f"frame.points.{k}")
                  for k, v in points_raw.items()}
         guides = {}
-        for name, g in self.table(raw.get("guides", {}), "frame.guides",
-                                  set(raw.get("guides", {}))).items():
+        guides_raw = raw.get("guides", {})
+        for name, g in self.table(guides_raw, "frame.guides",
+                                  set(guides_raw) if isinstance(guides_raw, dict) else set()).items():
             name = self.name(name, "frame.guides")
             guides[name] = self.read_guide(g, f"frame.guides.{name}", name, FRAME)
         return frame, guides
