@@ -17,19 +17,26 @@ from graphplan.cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent
 BASE = tomllib.loads((ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8"))
+EXAMPLE_TREES = [tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted((ROOT / "examples").glob("*.toml"))]
 
 
 # -- one run ----------------------------------------------------------------------------------
 
 def run(argv: list[str]) -> tuple[int, str, str]:
-    """``graphplan argv`` in this process: exit code, stdout, stderr (warnings included)."""
+    """``graphplan argv`` in this process: exit code, stdout, stderr. Every warning raised during the
+    run is appended to stderr as the program would print it (each one, not only the first per line
+    of code, and also under pytest, which otherwise records warnings away from stderr)."""
+    import warnings
     out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), \
+            warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         try:
             code = main(argv)
         except SystemExit as exc:          # argparse's --help/--version
             code = exc.code if isinstance(exc.code, int) else 2
-    return code, out.getvalue(), err.getvalue()
+    shown = "".join(warnings.formatwarning(w.message, w.category, w.filename, w.lineno) for w in caught)
+    return code, out.getvalue(), err.getvalue() + shown
 
 
 def _no_constant(name: str):
@@ -132,6 +139,19 @@ NEAR_SINGULAR = st.one_of(
     st.builds(rm.rrp, _f(10.0, 100.0), _f(300.0, 999.0), st.just(0.0), st.just(0.0), _f(1e-3, 1e4), branch),
 )
 
+def _loaded(scene, omega, g, q, k):
+    """A valid mechanism at the edges of the physical bounds: ω, g, q·l masses, k·m·l² inertias."""
+    import re
+    text, ok = scene
+    text = re.sub(r"omega = [^\n]+", f"omega = {omega!r}", text, count=1)
+    return text + f"[loads]\ng = {g!r}\nmass_per_length = {q!r}\ninertia_factor = {k!r}\n", ok
+
+
+LOADED = st.builds(_loaded, VALID, st.sampled_from([1e-3, 0.1, 300.0, 1e4, 1e5]),
+                   st.sampled_from([0.0, 9.81, 1e3]), st.sampled_from([1e-9, 1.0, 1e6]),
+                   st.sampled_from([1e-9, 1 / 12, 10.0]))
+"""Valid mechanisms loaded at the bounds of bounds.py (forces must stay finite or be refused)."""
+
 _junk_scalar = st.one_of(
     st.none(), st.booleans(), st.integers(), st.integers(min_value=10 ** 20, max_value=10 ** 400),
     st.floats(), st.text(max_size=30), st.sampled_from([
@@ -165,10 +185,10 @@ def _set(tree, path, value, delete=False):
 
 @st.composite
 def mutated(draw, base=None) -> str:
-    """The example crank-slider (or another tree) with one to three leaves replaced by junk,
-    deleted or joined by unknown keys, as TOML text."""
+    """An example scene (or ``base``) with one to three leaves replaced by junk, deleted or joined
+    by unknown keys, as TOML text."""
     import copy
-    tree = copy.deepcopy(base if base is not None else BASE)
+    tree = copy.deepcopy(base if base is not None else draw(st.sampled_from(EXAMPLE_TREES)))
     for _ in range(draw(st.integers(1, 3))):
         paths = [p for p, _ in _paths(tree) if p]
         if not paths:
@@ -206,3 +226,89 @@ MALFORMED = st.one_of(
                      "x = 1\nx = 2\n", "[[link]]\n[link]\n", "\ufeff[crank]\n", "k = 9" + "9" * 5000]),
 )
 """Text that is not a scene: binary garbage, random text, broken TOML."""
+
+
+# -- the release count (docs/benchmarks.md): python tests/fuzz_scenes.py N ------------------------
+
+COMMANDS = ("analyze", "plans", "diagrams", "forces")
+
+
+def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
+    """``count`` scenes (valid, near-singular, mutated, malformed in turn) through every command:
+    how the runs ended. A failing run is listed (first 20) instead of stopping the count; with
+    ``progress`` the tally so far is written to that file every 250 scenes."""
+    import os
+    import random
+    import tempfile
+    import time
+    from hypothesis import HealthCheck, given, settings
+
+    tally = {"scenes": 0, "runs": 0, "exit0": 0, "exit2": 0, "internal": 0, "multiline": 0,
+             "warnings": 0, "nan_json": 0, "constraint": 0, "other_exit": 0}
+    failures: list[str] = []
+    folder = tempfile.mkdtemp(prefix="graphplan-fuzz-")
+    path = os.path.join(folder, "scene.toml")
+    kinds = st.one_of(VALID.map(lambda s: ("valid", s[0])), NEAR_SINGULAR.map(lambda s: ("near", s[0])),
+                      LOADED.map(lambda s: ("loaded", s[0])),
+                      mutated().map(lambda t: ("mutated", t)), MALFORMED.map(lambda t: ("malformed", t)))
+    start = time.perf_counter()
+
+    @settings(max_examples=count, deadline=None, database=None, derandomize=False,
+              suppress_health_check=list(HealthCheck))
+    @given(kinds)
+    def one(item):
+        kind, text = item
+        tally["scenes"] += 1
+        with open(path, "wb") as fh:
+            fh.write(text.encode("utf-8", "surrogatepass"))
+        for command in COMMANDS:
+            argv = [command, path, "--json"]
+            code, out, err = run(argv)
+            tally["runs"] += 1
+            problem = None
+            if "internal error" in err:
+                tally["internal"] += 1
+                problem = "internal"
+            elif code not in (0, 2):
+                tally["other_exit"] += 1
+                problem = f"exit {code}"
+            elif "Warning" in err:
+                tally["warnings"] += 1
+                problem = "warning"
+            elif code == 2 and len(err.splitlines()) != 1:
+                tally["multiline"] += 1
+                problem = "multiline"
+            else:
+                tally[f"exit{code}"] += 1
+                if code == 0:
+                    try:
+                        doc = json.loads(out, parse_constant=_no_constant)
+                    except AssertionError:
+                        tally["nan_json"] += 1
+                        problem = "NaN in JSON"
+                    else:
+                        if command == "analyze" and kind in ("valid", "near", "loaded"):
+                            from test_fuzz import constraints_hold
+                            try:
+                                constraints_hold(text, doc)
+                            except AssertionError as exc:
+                                tally["constraint"] += 1
+                                problem = f"constraint {exc}"
+            if problem and len(failures) < 20:
+                failures.append(f"{problem}: {command} [{kind}] {err.strip()[:200]} :: {text[:300]!r}")
+        if progress and tally["scenes"] % 250 == 0:
+            tally["seconds"] = round(time.perf_counter() - start, 1)
+            Path(progress).write_text(json.dumps({"tally": tally, "failures": failures}, indent=1))
+
+    random.seed(seed)
+    one()
+    tally["seconds"] = round(time.perf_counter() - start, 1)
+    return {"tally": tally, "failures": failures}
+
+
+if __name__ == "__main__":
+    import sys
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    result = census(int(sys.argv[1]) if len(sys.argv) > 1 else 1000,
+                    progress=sys.argv[2] if len(sys.argv) > 2 else None)
+    print(json.dumps(result, ensure_ascii=False, indent=1))

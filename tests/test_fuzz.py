@@ -9,28 +9,29 @@ command (docs/benchmarks.md records the last run).
 from __future__ import annotations
 
 import cmath
-import math
 import os
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from fuzz_scenes import MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
+from fuzz_scenes import LOADED, MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
 from graphplan.model.mechanism import FRAME
 from graphplan.model.scene import loads
 
-QUICK = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_QUICK", "40")), deadline=None, derandomize=True,
+QUICK = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_QUICK", "30")), deadline=None, derandomize=True,
              suppress_health_check=list(HealthCheck))
 SLOW = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_SLOW", "10000")), deadline=None,
             suppress_health_check=list(HealthCheck))
 
-# (command, extra options) every scene goes through; {out} is a file in a fresh folder
+# (command, extra options) every scene goes through; {out} is a file in a fresh folder. The solvers
+# are fuzzed at their own scales (--format none): laying out a sheet to choose the scales costs about a
+# second a run, and the sheets are fuzzed on their own (test_sheets_of_random_mechanisms).
 COMMANDS = [
     ("analyze", ["--json"]),
-    ("plans", ["--json"]),
-    ("diagrams", ["--json"]),
-    ("forces", ["--json"]),
+    ("plans", ["--json", "--format", "none"]),
+    ("diagrams", ["--json", "--format", "none"]),
+    ("forces", ["--json", "--format", "none"]),
 ]
 
 
@@ -93,6 +94,12 @@ def test_near_singular_mechanisms(tmp_path_factory, scene):
 
 
 @settings(**QUICK)
+@given(LOADED)
+def test_loaded_mechanisms_at_the_bounds(tmp_path_factory, scene):
+    _through_commands(tmp_path_factory, scene[0], valid=True)
+
+
+@settings(**QUICK)
 @given(mutated())
 def test_mutated_scenes(tmp_path_factory, text):
     _through_commands(tmp_path_factory, text)
@@ -126,9 +133,74 @@ def test_extreme_options(tmp_path_factory, command, options, data):
     check_run(argv, code, out, err)
 
 
+SHEET = dict(QUICK, max_examples=max(2, QUICK["max_examples"] // 8))
+
+
+@settings(**SHEET)
+@given(st.one_of(VALID, NEAR_SINGULAR), st.sampled_from(["svg", "dxf"]), st.sampled_from(["kinematics", "forces"]))
+def test_sheets_of_random_mechanisms(tmp_path_factory, scene, suffix, kind):
+    path = _scene(tmp_path_factory, scene[0])
+    out = f"{path[:-5]}.{suffix}"
+    argv = ["sheet", path, "-o", out, "--sheet", kind, "--positions", "8"]
+    code, _, err = run(argv)
+    check_run(argv, code, _, err)
+    assert (code == 0) == os.path.exists(out)
+
+
+@pytest.fixture(scope="module")
+def key_folder(tmp_path_factory):
+    from fuzz_scenes import ROOT
+    folder = tmp_path_factory.mktemp("key")
+    table = folder / "variants.csv"
+    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n"
+                     "02,0.05,0.2\n", encoding="utf-8")
+    code, _, err = run(["key", str(table), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 0, err
+    return folder / "keys"
+
+
+CELL = st.one_of(st.sampled_from(["01", "02", "7", "v_B", "omega_AB", "a_B", "#3", "1", "13", "-1",
+                                  "7,2", "\"7,2\"", "−52,7", "5 346,1", "7_2", "nan", "inf", "1e400", "\"",
+                                  "", "position", "quantity", "value", "variant"]),
+                 st.text(max_size=8), st.floats().map(repr))
+ROW = st.lists(CELL, min_size=1, max_size=6)
+
+
+@settings(**QUICK)
+@given(st.sampled_from([",", ";", "\t"]), st.lists(ROW, min_size=1, max_size=6),
+       st.sampled_from(["utf-8", "utf-8-sig", "utf-16", "cp1251"]), st.booleans())
+def test_random_student_tables(tmp_path_factory, key_folder, sep, rows, encoding, header):
+    """`check` on random student tables: exit 0 or 2, one line, never an internal error."""
+    lines = (["variant,position,quantity,value".replace(",", sep)] if header else []) + [sep.join(r) for r in rows]
+    path = tmp_path_factory.mktemp("student") / "student.csv"
+    path.write_bytes("\n".join(lines).encode(encoding, "replace"))
+    for extra in ([], ["--json"], ["--signed", "--json"]):
+        argv = ["check", str(key_folder), str(path), *extra]
+        code, out, err = run(argv)
+        check_run(argv, code, out, err)
+
+
+@settings(**dict(QUICK, max_examples=max(2, QUICK["max_examples"] // 8)))
+@given(st.lists(st.tuples(st.sampled_from(["r", "l", "e", "rpm", "omega", "accel", "count", "K", "crank.length",
+                                           "link.AB.length", "frame.points.O", "student", "divisions"]),
+                          CELL), min_size=1, max_size=3))
+def test_random_variant_tables(tmp_path_factory, cells):
+    """`key` on random variant tables over the example: exit 0 or 2, one line, never an internal error."""
+    from fuzz_scenes import ROOT
+    folder = tmp_path_factory.mktemp("variants")
+    names = list(dict.fromkeys(c for c, _ in cells))
+    values = dict(cells)
+    text = (f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,{','.join(names)}\n"
+            f"01,{','.join(values[n].replace(',', '.') for n in names)}\n")
+    (folder / "v.csv").write_text(text, encoding="utf-8")
+    argv = ["key", str(folder / "v.csv"), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"]
+    code, out, err = run(argv)
+    check_run(argv, code, out, err)
+
+
 @pytest.mark.slow
 @settings(**SLOW)
-@given(st.one_of(VALID, NEAR_SINGULAR, mutated().map(lambda t: (t, None)),
+@given(st.one_of(VALID, NEAR_SINGULAR, LOADED, mutated().map(lambda t: (t, None)),
                  MALFORMED.map(lambda t: (t, None))))
 def test_fuzz_slow(tmp_path_factory, scene):
     """The release profile: 10 000 scenes through analyze, plans, diagrams and forces."""

@@ -16,8 +16,8 @@ def _angles(st, args) -> tuple[list[float], list[int]]:
         phis = [float(p) % 360.0 for p in args.phi]
         return phis, list(range(len(phis)))
     count = args.positions or st.mech.task.count
-    if not 2 <= count <= 100000:
-        raise GraphplanError(f"--positions must be from 2 to 100000, got {count}")
+    if not 2 <= count <= 36000:
+        raise GraphplanError(f"--positions must be from 2 to 36000, got {count}")
     return [float(v) for v in np.asarray(st.positions(count))], list(range(count))
 
 

@@ -30,14 +30,21 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str, bool]] = {
     "L": (10.0, 2000.0, "mm", False),
     "height": (1.0, 2000.0, "mm", False),
     "tolerance": (0.0, 100.0, "", True),
-    "positions": (2, 100000, "", False),
+    "positions": (2, 36000, "", False),      # 0.01° steps; analyze's JSON of 36 000 positions is ~50 MB
     "at": (0, 3600, "", False),
     "jobs": (1, 64, "", False),
 }
 
 
+MAX_VALUES = 3600        # values of one list option (--phi, --accel, --at): a turn in 0.1° steps
+
+
 def check_options(args: argparse.Namespace) -> None:
     """Every numeric option within its range (OPTION_BOUNDS), before any work: one line naming it."""
+    for dest in ("phi", "accel", "at", "tol"):
+        given = getattr(args, dest, None)
+        if isinstance(given, list) and len(given) > MAX_VALUES:
+            raise GraphplanError(f"--{dest}: at most {MAX_VALUES} values, got {len(given)}")
     for dest, (lo, hi, unit, lo_open) in OPTION_BOUNDS.items():
         given = getattr(args, dest, None)
         values = given if isinstance(given, list) else [given]
@@ -46,7 +53,7 @@ def check_options(args: argparse.Namespace) -> None:
                 continue
             low_ok = v > lo if lo_open else v >= lo
             if not (math.isfinite(v) and low_ok and v <= hi):
-                option = "--" + dest.replace("_", "-")
+                option = "--" + dest.replace("_", "-") + (" (a scale)" if dest.startswith("mu_") else "")
                 unit_text = f" {unit}" if unit else ""
                 raise GraphplanError(f"{option} must be from {lo:g}{' (exclusive)' if lo_open else ''} "
                                      f"to {hi:g}{unit_text}, got {v:g}")

@@ -132,8 +132,24 @@ class KeyOptions:
 _JOB: dict[str, Any] = {}
 
 
-def _init_job(table, options: KeyOptions) -> None:
+def _init_job(table, options: KeyOptions, parent: int | None = None) -> None:
     _JOB["table"], _JOB["options"] = table, options
+    if parent is not None:
+        _die_with(parent)
+
+
+def _die_with(parent: int) -> None:
+    """A worker ends when the command ends, even by SIGKILL: Linux's PR_SET_PDEATHSIG sends the
+    worker SIGKILL when its parent dies (a pool's workers otherwise wait for work forever)."""
+    import signal
+    try:
+        import ctypes
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)          # PR_SET_PDEATHSIG = 1
+    except (OSError, AttributeError):                         # not Linux: the pool's own cleanup
+        pass
+    if os.getppid() != parent:                                # the parent died before prctl
+        os._exit(1)
 
 
 def _variant_job(index: int) -> dict[str, Any]:
@@ -175,22 +191,27 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
             _report(results[-1], progress)
         return results
     import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context(method),
-                             initializer=_init_job, initargs=(table, options)) as pool:
-        progress.step(f"variant {table.variants[0].id}")
-        for k, result in enumerate(pool.map(_variant_job, range(n))):
-            results.append(result)
-            _report(result, progress)
-            if k + 1 < n:
-                progress.step(f"variant {table.variants[k + 1].id}")
+    # a Pool is terminated when the block ends, by an error or a signal too (SIGTERM becomes
+    # SystemExit in cmd_key): no worker outlives the command
+    previous = _terminate_cleanly()
+    try:
+        with multiprocessing.get_context(method).Pool(jobs, initializer=_init_job,
+                                                      initargs=(table, options, os.getpid())) as pool:
+            progress.step(f"variant {table.variants[0].id}")
+            for k, result in enumerate(pool.imap(_variant_job, range(n))):
+                results.append(result)
+                _report(result, progress)
+                if k + 1 < n:
+                    progress.step(f"variant {table.variants[k + 1].id}")
+    finally:
+        if previous is not None:
+            import signal
+            signal.signal(signal.SIGTERM, previous)
     return results
 
 
 def _report(result: dict[str, Any], progress: Progress) -> None:
-    if result["message"]:
-        progress.message(result["message"])
     progress.advance()
 
 
@@ -216,6 +237,13 @@ def cmd_key(args: argparse.Namespace) -> int:
     results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf, lang), jobs, progress)
     progress.close()
     entries = [r["entry"] for r in results]
+    skipped = [r["message"] for r in results if r["message"]]
+    if skipped and not any(e["status"] == "ok" for e in entries):
+        more = f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""
+        raise GraphplanError(f"no variant could be built, nothing written: "
+                             f"{skipped[0].removeprefix('graphplan: ')}{more}")
+    for line in skipped:                  # written keys and skipped variants: a line for each skip
+        print(line, file=sys.stderr)
     rows = [r["row"] for r in results]
     written = sum(e["status"] == "ok" for e in entries)
     from graphplan.util.words import word
@@ -239,9 +267,18 @@ def cmd_key(args: argparse.Namespace) -> int:
         if not args.no_pdf:
             write_atomic(out / "summary.pdf", pdf_bytes(svg))
     sys.stdout.write(dumps(doc) if args.json else text)
-    if not written:
-        raise GraphplanError("no variant could be built; nothing written", str(table.path))
     return 0
+
+
+def _terminate_cleanly():
+    """While the pool works, SIGTERM ends `key` like an error (SystemExit): the pool is terminated,
+    files written so far are whole (util.files.write_atomic), the summary is not written. Returns
+    the handler to restore (None off the main thread, where signals cannot be handled)."""
+    import signal
+    import threading
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit(128 + signum))
 
 
 def _override_columns(table) -> set[str]:

@@ -4,8 +4,6 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-import warnings
-from contextlib import contextmanager
 from importlib import import_module
 from collections.abc import Callable, Sequence
 
@@ -42,18 +40,6 @@ COMMAND_MODULES: tuple[str, ...] = (
 )
 
 
-@contextmanager
-def np_quiet():
-    """numpy's floating-point warnings off for one command: a non-finite intermediate is turned into
-    the named error where the solver runs (exact.kinematics, exact.kinetostatics, graphic.*), never
-    printed as a RuntimeWarning with a source line. Restored afterwards (main() is called in-process
-    by the tests and by notebooks)."""
-    import numpy as np
-    with np.errstate(all="ignore"), warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)
-        yield
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
@@ -63,8 +49,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             build_parser().print_help()
             return 2
         check_options(args)
-        with np_quiet():
-            return args.handler(args)
+        return args.handler(args)
     except GraphplanError as exc:
         print(f"graphplan: {exc.line()}", file=sys.stderr)
         return 2
@@ -76,6 +61,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # an internal error is still one line unless debugging
         if os.environ.get("GRAPHPLAN_DEBUG"):
             raise
-        print(f"graphplan: internal error: {type(exc).__name__}: {exc} "
+        text = " ".join(str(exc).split())[:300]           # one line, whatever the exception holds
+        print(f"graphplan: internal error: {type(exc).__name__}: {text} "
               "(set GRAPHPLAN_DEBUG=1 for the traceback)", file=sys.stderr)
         return 1

@@ -52,7 +52,7 @@ def _crossings(segs: np.ndarray, box: tuple[float, float, float, float]) -> int:
     for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
         zero = np.abs(p) < 1e-12
         ok &= ~(zero & (q < 0))
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(all="ignore"):
             r = np.where(zero, 0.0, q / np.where(zero, 1.0, p))
         t0 = np.where(~zero & (p < 0), np.maximum(t0, r), t0)
         t1 = np.where(~zero & (p > 0), np.minimum(t1, r), t1)

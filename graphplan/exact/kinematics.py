@@ -165,9 +165,13 @@ def solve(mech: Mechanism, structure: Structure, phi_deg: Array | list[float] | 
     return kin
 
 
+REACH = 1e4   # m: a body whose origin runs farther (10× the scene's coordinate bound) is nearly locked
+
+
 def _finite(kin: Kinematics, dyad: Dyad) -> None:
-    """Where a group's solution is not finite (a near-singular 2×2, an overflow) it is not assembled:
-    Study.solve names the group and the crank angle instead of passing NaN on."""
+    """Where a group's solution is not finite (a near-singular 2×2, an overflow) or throws a body
+    beyond REACH (a Scotch yoke whose slot is 1e-9 rad off its guide runs 6·10⁷ m) it is not
+    assembled: Study.solve names the group and the crank angle instead of passing it on."""
     ok = kin.valid.get(dyad.label, np.ones(kin.phi_deg.shape, dtype=bool))
     for name in (dyad.a, dyad.b):
         body = kin.bodies.get(name)
@@ -175,6 +179,7 @@ def _finite(kin: Kinematics, dyad: Dyad) -> None:
             continue
         for arr in (body.origin, body.vo, body.ao, body.turn, body.omega, body.eps):
             ok = ok & np.isfinite(arr)
+        ok = ok & (np.abs(body.origin) <= REACH)
     kin.valid[dyad.label] = ok
 
 

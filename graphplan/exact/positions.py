@@ -9,7 +9,7 @@ import numpy as np
 
 from graphplan.util.words import Fixed, pair_kind, said, word
 from graphplan.util.errors import AssemblyError, SceneError
-from graphplan.exact.kinematics import Kinematics, solve
+from graphplan.exact.kinematics import REACH, Kinematics, solve
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.model.structure import Structure, analyse
 
@@ -130,6 +130,11 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]
                 warnings.append(said("warn near locking", dyad=_named(dyad), angle=Fixed(angle, 2),
                                      phi=Fixed(float(round(phi % 360.0, 2) % 360.0), 2)))
             continue
+        far = _beyond_reach(kin, dyad)
+        if np.any(far):
+            raise AssemblyError(f"{dyad.title} throws its links beyond {REACH / 1000:g} km at crank angle "
+                                f"{deg(float(grid[far][0]), 2)}: it is nearly locked (a slot almost along "
+                                "its guide?)", mech.source)
         if not np.any(ok):
             raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
         ranges = _bad_ranges(mech, structure, dyad.label, grid, ok)
@@ -140,6 +145,17 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]
         text = ", ".join(f"{deg(a)}–{deg(b)}" for a, b in ranges)
         raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
     return warnings
+
+
+def _beyond_reach(kin: Kinematics, dyad) -> np.ndarray:
+    """Crank angles where a group's body runs finitely beyond REACH (see kinematics._finite)."""
+    far = np.zeros(kin.phi_deg.shape, dtype=bool)
+    for name in (dyad.a, dyad.b):
+        body = kin.bodies.get(name)
+        if body is not None:
+            with np.errstate(all="ignore"):
+                far |= np.isfinite(body.origin) & (np.abs(body.origin) > REACH)
+    return far
 
 
 def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[dict[str, str]]:

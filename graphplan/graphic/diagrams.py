@@ -158,7 +158,7 @@ class Diagrams:
         value = self.values(reading)[key]
         truth = self.truth[key]
         big = self.maxima[key[0]]
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(all="ignore"):          # near-zero truths (even denormal) are masked below
             pct = 100.0 * (value - truth) / truth
         return np.where(np.abs(truth) > NEAR_ZERO * big, pct, np.nan)
 

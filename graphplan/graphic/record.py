@@ -99,10 +99,11 @@ def _advances() -> tuple[dict[str, float], float]:
     folder = resources.files("graphplan") / "data" / "fonts"
     advance: dict[str, float] = {}
     for name in ("graphplan-symbols.ttf", "osifont.ttf"):      # osifont's own glyphs win
-        font = TTFont(str(folder / name), lazy=True)
-        em, widths = font["head"].unitsPerEm, font["hmtx"]
-        advance.update({chr(code): widths[g][0] / em for code, g in font.getBestCmap().items()})
-    return advance, widths[".notdef"][0] / em
+        with TTFont(str(folder / name)) as font:              # read whole, the file closed at once
+            em, widths = font["head"].unitsPerEm, font["hmtx"]
+            advance.update({chr(code): widths[g][0] / em for code, g in font.getBestCmap().items()})
+            box = widths[".notdef"][0] / em
+    return advance, box
 
 
 def plain_width(text: str, size: float) -> float:

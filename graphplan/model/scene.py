@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import copy
 import math
-import tomllib
 from importlib import resources
 from dataclasses import replace
 from pathlib import Path
@@ -95,7 +94,8 @@ class _Reader:
         if not math.isfinite(result):
             raise self.fail(key, "must be finite")
         if positive and result <= 0:
-            raise self.fail(key, f"must be positive, got {result:g}")
+            within = f" ({bounds.text()})" if bounds else ""
+            raise self.fail(key, f"must be positive{within}, got {result:g}")
         return B.check(result, bounds, key, self.where) if bounds else result
 
     def xy(self, value: Any, key: str) -> complex:
@@ -214,8 +214,9 @@ class _Reader:
         frame = {self.name(k, "frame.points"): self.xy(v, f"frame.points.{k}")
                  for k, v in points_raw.items()}
         guides = {}
-        for name, g in self.table(raw.get("guides", {}), "frame.guides",
-                                  set(raw.get("guides", {}))).items():
+        guides_raw = raw.get("guides", {})
+        for name, g in self.table(guides_raw, "frame.guides",
+                                  set(guides_raw) if isinstance(guides_raw, dict) else set()).items():
             name = self.name(name, "frame.guides")
             guides[name] = self.read_guide(g, f"frame.guides.{name}", name, FRAME)
         return frame, guides

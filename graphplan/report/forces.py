@@ -137,12 +137,16 @@ def forces_table(fp, lang: str = "uk") -> str:
         lines.append("  " + _row([sym(t.name), t.image.lower(), n(t.force, 5), n(t.arm_mm + 0.0),
                                   n(t.moment + 0.0, 6)], lw))
     lines.append(w("lever sum", s=n(lv.total, 6)))
-    lines.append(plain(w("lever result", p=n(lv.balancing_force, 5), m=n(lv.balancing, 5))))
+    if math.isfinite(lv.balancing):
+        lines.append(plain(w("lever result", p=n(lv.balancing_force, 5), m=n(lv.balancing, 5))))
+    else:
+        lines.append(plain(w("lever unreadable")))
     a = fp.analytic
     lines += ["", plain(w("balancing head"))]
     for name, value in (("closed form", a), ("by force plans", fp.balancing),
                         ("by lever", lv.balancing), ("by power", fp.power)):
         err = _pct(value, a, abs(a) or 1.0)
         tail = "" if name == "closed form" or err is None else f"   δ = {fixed(err, lang, 3, plus=True)} %"
-        lines.append(f"  {w(name):<28} {n(value, 6):>12}{tail}")
+        shown = n(value, 6) if math.isfinite(value) else "—"
+        lines.append(f"  {w(name):<28} {shown:>12}{tail}")
     return "\n".join(lines) + "\n"

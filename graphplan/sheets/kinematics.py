@@ -471,10 +471,23 @@ def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, ac
             "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"]}
 
 
+A1_POSITIONS = 40     # measured: A1 holds 36 velocity plans of the examples, never 48
+
+
+def check_positions(st: Study, options) -> None:
+    """A sheet set holds a bounded number of velocity plans (about 40, what an A1 sheet holds; a
+    smaller format spreads them over more sheets): more is refused before any plan is built."""
+    count = options_of(options).positions or st.mech.task.count
+    if count > A1_POSITIONS:
+        raise GraphplanError(f"--positions {count}: a kinematics sheet holds at most {A1_POSITIONS} "
+                             "positions' plans; choose fewer positions", st.mech.source)
+
+
 def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis at the scales ``choose`` picks; a set of
     sheets when it does not fit one."""
     opts = options_of(options)
+    check_positions(st, opts)
     d, _ = choose(st, f, opts)
     return compose(f, d.blocks, fields(st, opts.lang, drawing_scale(d.plans.mu_l, opts.lang)), opts.lang, st.mech.title)
 

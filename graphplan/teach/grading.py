@@ -120,7 +120,7 @@ def _wide(records, header, delimiter, path: Path) -> list[Row]:
                 continue
             value = _number(cells[k].strip(), delimiter, line_no, path)
             rows.append(Row(line_no, cells[var].strip() if var is not None and var < len(cells) else "",
-                            cells[pos].strip(), name, value))
+                            cells[pos].strip() if pos < len(cells) else "", name, value))
     return rows
 
 

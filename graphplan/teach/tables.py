@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import codecs
 import csv
-import io
 import re
 from pathlib import Path
 
@@ -20,6 +19,7 @@ from graphplan.util.errors import GraphplanError
 from graphplan.util.files import read_bytes
 
 MAX_TABLE_BYTES = 8 * 1024 * 1024     # ~300 000 rows
+MAX_VALUE = 1e12                      # no answer of a lab is larger (SI units)
 MAX_ROWS = 100_000                    # a group's tables are a few thousand rows
 
 # spaces a person (or Excel) puts between thousands: space, no-break, narrow no-break, thin
@@ -111,4 +111,7 @@ def number(text: str, delimiter: str) -> float:
         s = s.replace(",", ".")
     if not _PLAIN.match(s):
         raise ValueError("not a number")
-    return float(s)
+    value = float(s)
+    if not abs(value) <= MAX_VALUE:
+        raise ValueError(f"|value| ≤ {MAX_VALUE:g}")
+    return value

@@ -21,15 +21,16 @@ MAX_INPUT_BYTES = 4 * 1024 * 1024     # a scene, a variant table or a student's 
 def read_bytes(path: str | Path, what: str, limit: int = MAX_INPUT_BYTES) -> bytes:
     """A regular file's bytes, at most ``limit`` of them, or one clear line naming the file.
 
-    Only regular files are read: a folder, a device (``/dev/zero`` never ends) or a pipe is refused
-    before anything is read, and a file that grows past the bound while read is refused too."""
+    Only regular files and pipes are read: a folder or a device (``/dev/zero`` never ends) is
+    refused before anything is read, and whatever holds more than ``limit`` bytes is refused after
+    reading ``limit`` + 1 of them (an endless pipe too)."""
     path = Path(path)
     try:
         if not path.exists():
             raise GraphplanError(f"no such {what}", str(path))
         if path.is_dir():
             raise GraphplanError(f"the {what} is a folder, not a file", str(path))
-        if not path.is_file():
+        if not (path.is_file() or path.is_fifo()):          # a pipe (/dev/stdin, <(…)) ends
             raise GraphplanError(f"the {what} is not a regular file", str(path))
         with open(path, "rb") as handle:
             data = handle.read(limit + 1)
@@ -59,6 +60,11 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
         folder.mkdir(parents=True, exist_ok=True)
         if path.is_dir():
             raise GraphplanError("is a folder; name a file to write", str(path))
+        for parent in (folder, *folder.parents):
+            if parent.exists():
+                if not parent.is_dir():
+                    raise GraphplanError(f"cannot write: {parent} is not a folder", str(path))
+                break
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=folder)
     except OSError as exc:
         raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None

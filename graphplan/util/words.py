@@ -208,6 +208,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin signs": ('Знаки s, v, a (таблиці, точний аналіз, ключі): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, analyze, keys): + along the guide {guide}'),
     "kin flipped": ('; діаграми s, v, a побудовано дзеркально (вгору −s)', '; the s, v, a diagrams are drawn mirrored (up = −s)'),
     "kin signs_link": ('Знаки φ, ω, ε ланки {link} (таблиці, точний аналіз, ключі): + проти годинникової стрілки', 'Signs of φ, ω, ε of link {link} (tables, analyze, keys): + counter-clockwise'),
+    "lever unreadable": ("  pa читається як 0 мм при цьому μ_v: важіль не дає P_зр (візьміть точнішу --precision)",
+                         "  pa reads 0 mm at this μv: the lever gives no P_b (choose a finer --precision)"),
     "sheet page written": ("{path} ({form} {size}, аркуш {k} з {m}, блоків: {n})",
                            "{path} ({form} {size}, sheet {k} of {m}, {n} blocks)"),
     "sheet written": ("{path} ({form} {size}, блоків: {n})", "{path} ({form} {size}, {n} blocks)"),
