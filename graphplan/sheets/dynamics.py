@@ -94,6 +94,15 @@ def motor_table(doc: dict, lang: str) -> Record:
     return table(rows[1:], [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
 
 
+CLOSURE_FLOOR = 1e-9
+
+
+def closure(c: float, lang: str) -> str:
+    """|ω(2π) − ω(0)|/ωm as the sheet says it: a residual below 10⁻⁹ is the integrator's rounding and
+    differs from machine to machine, so the sheet says "< 10⁻⁹" (deterministic files)."""
+    return "< 10⁻⁹" if abs(c) < CLOSURE_FLOOR else num(c, lang, 2)
+
+
 def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     uk = lang == "uk"
@@ -110,7 +119,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              f"tg ψ = μI·ωm²(1 ± δ)/(2μT): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, 3)}°",
              f"J = μT·|kl|/(ωm²δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·{num(doc['delta'], lang)}) = {num(f.total, lang, 4)}; "
              f"Iм = J − Iрот·i² − Iред = {num(f.flywheel, lang, 4)} {'кг·м²' if uk else 'kg·m²'}",
-             w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=num(doc["motion"]["closure"], lang, 2))]
+             w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=closure(doc["motion"]["closure"], lang))]
     from graphplan.sheets.form import wrap
     for en, uk_text in f.dyn.warnings:
         lines += wrap(f"{w['warn']}: {uk_text if uk else en}", 250.0, 3.5)
