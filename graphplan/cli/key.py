@@ -135,6 +135,11 @@ _JOB: dict[str, Any] = {}
 def _init_job(table, options: KeyOptions, parent: int | None = None) -> None:
     _JOB["table"], _JOB["options"] = table, options
     if parent is not None:
+        import signal
+        # a worker ends at once on the pool's SIGTERM: the command's SystemExit handler, inherited by
+        # the fork, once left an idle worker blocked on the task queue's lock while the pool waited
+        # for it forever (files are written whole or as a stray .part, never half)
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
         _die_with(parent)
 
 
