@@ -1,4 +1,4 @@
-"""Benchmarks (pytest-benchmark; run them with `python -m pytest tests/test_benchmarks.py
+"""Benchmarks (pytest-benchmark; run them with `python -m pytest tests/test_benchmarks.py -n 0
 --benchmark-enable`). By default they run once as plain tests: the hand-written closed form of
 the shaper is also an independent check of the general solver."""
 from __future__ import annotations
