@@ -58,10 +58,10 @@ def gallery_files() -> list[str]:
     return out
 
 
-# The goal is at most 25 % bare cells; the gallery measures 23–59 % (the force sheets' hodographs and
-# group schemes and the sets' later sheets are the sparsest). A sheet above the goal is reported as
-# an expected failure with its number; above 65 % it fails.
-GOAL, LIMIT = 0.25, 0.65
+# The goal is at most 25 % bare cells; the gallery measures 16–47 % (7 of 16 sheets meet it; the
+# A2 force set and the lab sheets, whose plans are few and thin, are the sparsest). A sheet above the
+# goal is reported as an expected failure with its number; above 50 % it fails.
+GOAL, LIMIT = 0.25, 0.50
 
 
 @pytest.mark.parametrize("name", gallery_files())
@@ -300,3 +300,43 @@ def test_title_block_scale_is_the_drawings():
 def test_no_e_notation_on_gallery_sheets(name):
     texts = re.findall(r">([^<]*)</text>", (ROOT / "drawings" / name).read_text(encoding="utf-8"))
     assert texts and not [t for t in texts if E_NOTATION.search(t)]
+
+
+def test_cover_layout_spreads_small_drawings_over_bare_cells():
+    """Nine 20 mm squares on a bare 200×200 mm field: packed top-left they ink at most 24 of the 64
+    cells; put where each reaches the most bare cells they ink 4 cells each
+    (a square straddling a cell corner), 36 in all, and never overlap."""
+    from graphplan.drawing.layout import Block, Cells, bare_cells, cover_some, nest_some
+    from graphplan.graphic.record import Record
+
+    def square(_k):
+        r = Record("square")
+        r.add("polygon", [(0, 0), (20, 0), (20, 20), (0, 20)], role="link", layer="plans")
+        return r
+    blocks = [Block(f"sq{i}", square) for i in range(9)]
+    region = (0.0, 0.0, 200.0, 200.0)
+    cells = Cells(region, 25.0)
+    packed, _ = nest_some(blocks, region, gap=6.0)
+    covered, left = cover_some(blocks, region, cells, gap=6.0)
+    assert not left
+    assert bare_cells(packed, region, cells) >= 1 - 24 / 64
+    assert bare_cells(covered, region, cells) == pytest.approx(1 - 36 / 64)
+    for i, a in enumerate(covered):
+        for b in covered[i + 1:]:
+            assert box(*a.box).distance(box(*b.box)) >= 6.0 - 1e-9
+
+
+def test_layout_estimate_matches_the_rendered_count():
+    """The layout's own count of bare cells (on its 2.5 mm raster) is within 4 points of the count
+    on the rendered page, and the cover layout beats the spread packing it replaces."""
+    from graphplan.drawing.layout import bare_cells, spread_nested
+    from graphplan.sheets.compose import GAP, field_region, judging_cells, paginate
+    from graphplan.sheets.kinematics import choose
+    f = form("A1")
+    d, one = choose(example("crank_slider"), f, SheetOptions())
+    sheet = _build("crank_slider", "kinematics", "A1")
+    region, keep_out = field_region(f)
+    estimate = bare_cells(sheet.placed, region, judging_cells(f))
+    assert abs(estimate - empty_cells(sheet.svg())) < 0.04
+    packed = spread_nested(paginate(f, d.blocks)[0], region, [keep_out], GAP)
+    assert estimate < bare_cells(packed, region, judging_cells(f)) - 0.05

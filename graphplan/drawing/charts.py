@@ -169,11 +169,14 @@ def moment_record(t: Turn, width: float = 180.0, height: float = 70.0, lang: str
     for k, pos in t.position_index():
         x = float(t.turn_deg[k] / mu_phi)
         rec.segment((x, y0 - 1.5), (x, y0 + 1.5), role="construction", layer="diagrams", step=step)
+        y = float(m[k] / mu_m)
+        if abs(y) > 1.5:      # the position's ordinate, as the points are plotted from the table
+            rec.segment((x, y0), (x, y), role="grid", layer="diagrams", step=step)
         rec.label((x, y0 - 5.0), str(pos), size=2.5, anchor="middle", step=step)
     rec.label((width + 6.0, y0 - 1.0), "φ", size=3.5, step=step)
     rec.label((2.0, hi / mu_m + 5.0), f"{word('M_b', lang)}, {unit('N·m', lang)}", size=3.5, step=step)
     tick = _nice_step(hi - lo, 4)
-    v = math.floor(lo / tick) * tick
+    v = math.ceil(lo / tick - 1e-9) * tick        # the ticks within the drawn axis only
     while v <= hi + 1e-9:
         y = v / mu_m
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
@@ -185,16 +188,22 @@ def moment_record(t: Turn, width: float = 180.0, height: float = 70.0, lang: str
 
 
 def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") -> Record:
-    """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered."""
+    """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
+    axes through the origin reach just past the curve: μR is the standard scale at which the curve
+    and the origin together span ``size`` mm (a reaction that keeps its direction draws its loop
+    large in one quadrant instead of small in the middle of a bare cross)."""
     f = t.ks.reactions[key].force
     rec = Record(f"hodograph {key}")
     step = f"hodograph {key}"
-    reach = float(np.max(np.abs(f))) or 1.0
-    mu_r = standard_scale(2 * reach / size)
+    xlo, xhi = min(0.0, float(np.min(f.real))), max(0.0, float(np.max(f.real)))
+    ylo, yhi = min(0.0, float(np.min(f.imag))), max(0.0, float(np.max(f.imag)))
+    span = max(xhi - xlo, yhi - ylo) or 1.0
+    mu_r = standard_scale(span / size)
     rec.scales["mu_R"] = mu_r
-    half = reach / mu_r + 5.0
-    rec.segment((-half, 0.0), (half, 0.0), role="axis", layer="diagrams", step=step)
-    rec.segment((0.0, -half), (0.0, half), role="axis", layer="diagrams", step=step)
+    pad = 5.0
+    x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
+    rec.segment((x0, 0.0), (x1, 0.0), role="axis", layer="diagrams", step=step)
+    rec.segment((0.0, y0), (0.0, y1), role="axis", layer="diagrams", step=step)
     for idx, z in _pieces(t, f):
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
@@ -202,7 +211,7 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
         rec.label((float(w.real) + 1.0, float(w.imag) + 1.0), str(pos), size=2.5, step=step)
-    rec.label((-half, -half - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
+    rec.label((x0, y0 - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
     return rec
 

@@ -268,11 +268,23 @@ def footprint(rec: Record, pad: float, solid: bool = False) -> Footprint:
     return fp
 
 
-def _footprint(rec: Record, pad: float) -> Footprint:
+def ink(rec: Record, pad: float) -> Footprint:
+    """The record's bare ink on the same raster as ``footprint(rec, pad)`` (not grown, holes kept):
+    what a reader's eye — and a count of inked cells — sees of the block."""
+    key = (id(rec), pad, "ink")
+    hit = _FOOTPRINTS.get(key)
+    if hit is not None and hit[0] is rec:
+        return hit[1]
+    fp = _footprint(rec, 0.0, margin_for=pad, fill=False)
+    _FOOTPRINTS[key] = (rec, fp)
+    return fp
+
+
+def _footprint(rec: Record, pad: float, margin_for: float | None = None, fill: bool = True) -> Footprint:
     import numpy as np
     from scipy import ndimage
     bx0, by0, bx1, by1 = rec.bounds()
-    margin = int(np.ceil(pad / GRID)) + 1
+    margin = int(np.ceil((pad if margin_for is None else margin_for) / GRID)) + 1
     x0, y0 = bx0 - margin * GRID, by0 - margin * GRID
     w = int(np.ceil((bx1 - bx0) / GRID)) + 2 * margin + 1
     h = int(np.ceil((by1 - by0) / GRID)) + 2 * margin + 1
@@ -286,7 +298,7 @@ def _footprint(rec: Record, pad: float) -> Footprint:
     if r > 0:
         yy, xx = np.mgrid[-r:r + 1, -r:r + 1]
         mask = ndimage.binary_dilation(mask, structure=(xx ** 2 + yy ** 2) <= r * r)
-    return Footprint(ndimage.binary_fill_holes(mask), x0, y0)
+    return Footprint(ndimage.binary_fill_holes(mask) if fill else mask, x0, y0)
 
 
 def _field(region: Box, obstacles: Sequence[Box]):
@@ -400,3 +412,148 @@ def nest_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (
         else:
             rest.append(block)
     return placed, rest
+
+
+# -- using the field: the 25 mm cells a sheet is judged by ---------------------------------------------
+# A sheet is judged by how many of its 25 mm cells hold some ink. ``cover_some`` nests like
+# ``nest_some`` but puts each block where its ink reaches the most cells still bare (ties: highest,
+# then leftmost), so the smaller drawings go to the bare parts of the sheet instead of piling up
+# beside the first ones.
+
+@dataclass
+class Cells:
+    """The judging grid: the whole cells of ``size`` mm inside ``within`` (mm, y up), counted from its
+    top-left corner as a reader's ruler would; cells whose middle lies in a ``skip`` box (the title
+    block) are not counted."""
+    within: Box
+    size: float = 25.0
+    skip: Sequence[Box] = ()
+
+
+def _cell_grid(region: Box, cells: Cells):
+    """(counted, origin, step): a boolean grid of cells, rows upward, True where a cell counts; the
+    raster row/col (relative to the region's corner) of its first cell's lower-left corner; the
+    cell's size in raster cells."""
+    import numpy as np
+    rx0, ry0, _, _ = region
+    step = int(round(cells.size / GRID))
+    wx0, wy0, wx1, wy1 = cells.within
+    nc, nr = int((wx1 - wx0) // cells.size), int((wy1 - wy0) // cells.size)
+    bottom = wy1 - nr * cells.size                       # the lowest whole row's lower edge
+    origin = (int(round((bottom - ry0) / GRID)), int(round((wx0 - rx0) / GRID)))
+    counted = np.ones((nr, nc), dtype=bool)
+    for i in range(nr):
+        for j in range(nc):
+            mx, my = wx0 + (j + 0.5) * cells.size, bottom + (i + 0.5) * cells.size
+            x0, y0 = mx - cells.size / 2, my - cells.size / 2
+            if any(x0 + cells.size > b[0] and y0 < b[3] and x0 < b[2] and y0 + cells.size > b[1]
+                   for b in cells.skip):
+                counted[i, j] = False
+    return counted, origin, step
+
+
+def _coarse(mask, pr: int, pc: int, step: int):
+    """Which cells a fine mask touches when its first row/col lies ``pr``/``pc`` raster cells into a cell."""
+    import numpy as np
+    h, w = mask.shape
+    H, W = -(-(h + pr) // step) * step, -(-(w + pc) // step) * step
+    big = np.zeros((H, W), dtype=bool)
+    big[pr:pr + h, pc:pc + w] = mask
+    return big.reshape(H // step, step, W // step, step).any(axis=(1, 3))
+
+
+PHASE = 2   # the cover search tries every 2nd raster offset within a cell (5 mm steps)
+
+
+def _cover_scores(bare, mask, origin, step: int, shape):
+    """For every raster offset (row, col) of a block's lower-left cell within ``shape``: how many
+    still-bare cells its ink would reach."""
+    import numpy as np
+    from scipy.signal import correlate2d
+    r0, c0 = origin
+    Hf, Wf = shape
+    out = np.full((Hf, Wf), -0.5)      # offsets off the tried phases: only where no tried one is free
+    for pr in range(0, step, PHASE):
+        rows = np.arange(Hf)
+        rows = rows[(rows - r0) % step == pr]
+        if not len(rows):
+            continue
+        for pc in range(0, step, PHASE):
+            cols = np.arange(Wf)
+            cols = cols[(cols - c0) % step == pc]
+            if not len(cols):
+                continue
+            m = _coarse(mask, pr, pc, step).astype(float)
+            pad_r, pad_c = m.shape
+            padded = np.zeros((bare.shape[0] + 2 * pad_r, bare.shape[1] + 2 * pad_c))
+            padded[pad_r:pad_r + bare.shape[0], pad_c:pad_c + bare.shape[1]] = bare
+            full = correlate2d(padded, m, mode="valid")
+            R = (rows - r0) // step + pad_r
+            C = (cols - c0) // step + pad_c
+            okr = (R >= 0) & (R < full.shape[0])
+            okc = (C >= 0) & (C < full.shape[1])
+            out[np.ix_(rows[okr], cols[okc])] = full[np.ix_(R[okr], C[okc])]
+    return out
+
+
+def _mark(bare, mask, row: int, col: int, origin, step: int) -> None:
+    """The cells a block's ink reaches, placed at raster (row, col), are no longer bare."""
+    r0, c0 = origin
+    pr, pc = (row - r0) % step, (col - c0) % step
+    m = _coarse(mask, pr, pc, step)
+    R, C = (row - r0) // step, (col - c0) // step
+    for i, j in zip(*m.nonzero()):
+        if 0 <= R + i < bare.shape[0] and 0 <= C + j < bare.shape[1]:
+            bare[R + i, C + j] = False
+
+
+def cover_some(blocks: Sequence[Block], region: Box, cells: Cells, obstacles: Sequence[Box] = (),
+               gap: float = 6.0, slack: float = 0.0) -> tuple[list[Placed], list[Block]]:
+    """As ``nest_some`` (each block at its first factor that fits), but each block goes where its ink
+    reaches the most cells still bare (less ``slack`` cells: the packing kept tighter); of those
+    places the highest, then leftmost."""
+    import numpy as np
+    rx0, ry0, _, _ = region
+    taken = _field(region, obstacles)
+    H, W = taken.shape
+    bare, origin, step = _cell_grid(region, cells)
+    placed: list[Placed] = []
+    rest: list[Block] = []
+    for block in blocks:
+        for factor in block.factors:
+            rec = block.build(factor)
+            fp = footprint(rec, gap / 2, block.solid)
+            h, w = fp.mask.shape
+            if h > H or w > W:
+                continue
+            free = _overlaps(taken, fp.mask) < 0.5
+            if not free.any():
+                continue
+            seen = ink(rec, gap / 2).mask
+            score = np.where(free, _cover_scores(bare, seen, origin, step, free.shape), -np.inf)
+            best = score.max()
+            rows, cols = np.nonzero(free & (score >= best - slack - 1e-9))
+            top = rows.max()
+            row, col = top, cols[rows == top].min()
+            taken[row:row + h, col:col + w] |= fp.mask
+            _mark(bare, seen, row, col, origin, step)
+            dx, dy = rx0 + col * GRID - fp.x0, ry0 + row * GRID - fp.y0
+            moved = rec.moved(dx, dy)
+            placed.append(Placed(block.name, moved, moved.bounds(), factor, block.solid))
+            break
+        else:
+            rest.append(block)
+    return placed, rest
+
+
+def bare_cells(placed: Sequence[Placed], region: Box, cells: Cells, gap: float = 6.0) -> float:
+    """The share of the counted cells that no placed block's ink reaches (an estimate on the raster
+    of what the sheet's test counts on the rendered page)."""
+    bare, origin, step = _cell_grid(region, cells)
+    counted = int(bare.sum())
+    rx0, ry0, _, _ = region
+    for p in placed:
+        fp = ink(p.record, gap / 2)
+        row, col = int(round((fp.y0 - ry0) / GRID)), int(round((fp.x0 - rx0) / GRID))
+        _mark(bare, fp.mask, row, col, origin, step)
+    return float(bare.sum()) / max(counted, 1)

@@ -10,7 +10,8 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from graphplan.drawing.layout import Block, Placed, declutter, footprint, nest_some, spread_nested
+from graphplan.drawing.layout import (Block, Cells, Placed, bare_cells, cover_some, declutter, footprint, nest_some,
+                                      spread_nested)
 from graphplan.graphic.record import Record
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
@@ -204,11 +205,89 @@ def beside(records: list[Record], gap: float = 10.0, below: Record | None = None
     return out
 
 
+def remembered(choose):
+    """A scale choice remembered per scene (its whole content, not its file's name), format and
+    options: ``plans``, ``diagrams``, the sheet and the explorer of one scene ask for the same
+    layout, and each layout costs seconds. A few are kept."""
+    import functools
+    memo: dict[tuple, object] = {}
+
+    @functools.wraps(choose)
+    def wrapper(st, f: Form, opts: SheetOptions):
+        key = (repr(st.mech), f.name, repr(opts))
+        if key not in memo:
+            if len(memo) >= 8:
+                memo.pop(next(iter(memo)))
+            memo[key] = choose(st, f, opts)
+        return memo[key]
+    return wrapper
+
+
+def judging_cells(f: Form) -> Cells:
+    """The 25 mm cells a sheet is judged by: whole cells inside the frame (1 mm off its line), the
+    title block's left out."""
+    x0, y0, x1, y1 = f.frame_box
+    return Cells((x0 + 1.0, y0 + 1.0, x1 - 1.0, y1 - 1.0), 25.0, [title_block_box(f)])
+
+
+RETRIES = 6
+
+
+def fill(f: Form, blocks: list[Block], placed: list[Placed]) -> list[Placed]:
+    """One sheet's blocks laid out to use the field: the blocks (largest first) each put where its
+    ink reaches the most bare 25 mm cells (what finds no room tried first next time); when that
+    never places them all, the packing ``placed`` spread over the sheet. (Measured on the gallery:
+    the cover layout leaves 25–26 % of the cells bare where the spread packing leaves 34–39 %, and
+    spreading the cover layout afterwards only loses cells.)"""
+    region, keep_out = field_region(f)
+    cells = judging_cells(f)
+    names = {p.name for p in placed}
+    mine = sorted((b for b in _cached(blocks) if b.name in names), key=lambda b: -_area(b))
+    for attempt in range(RETRIES):
+        covered, left = cover_some(mine, region, cells, obstacles=[keep_out], gap=GAP, slack=attempt // 2)
+        if not left:
+            return covered
+        mine = left + [b for b in mine if b not in left]     # what found no room goes first
+    return spread_nested(placed, region, [keep_out], GAP)
+
+
+_LAID: dict[tuple, tuple[list[Block], list[list[Placed]]]] = {}
+
+
+def laid_out(f: Form, blocks: list[Block]) -> list[list[Placed]]:
+    """The sheets of the set, each filled (``fill``); remembered for the same blocks, since the scale
+    choice lays out the drawing it then composes."""
+    key = (f.name, tuple(id(b) for b in blocks))
+    hit = _LAID.get(key)
+    if hit is not None and all(a is b for a, b in zip(hit[0], blocks)):
+        return hit[1]
+    if len(_LAID) > 64:
+        _LAID.clear()
+    pages = [fill(f, blocks, placed) for placed in paginate(f, blocks)]
+    _LAID[key] = (list(blocks), pages)
+    return pages
+
+
+def bare_share(f: Form, blocks: list[Block]) -> float:
+    """The estimated share of bare 25 mm cells over the set's sheets as ``compose`` lays them out."""
+    region, _ = field_region(f)
+    cells = judging_cells(f)
+    pages = laid_out(f, blocks)
+    return sum(bare_cells(p, region, cells, GAP) for p in pages) / len(pages)
+
+
+def sampled(path: list, most: int = 6) -> list:
+    """At most ``most`` drawings of a growth path, evenly, its first and last among them: the
+    candidates whose layouts are compared (each costs a whole layout, ~0.6 s)."""
+    if len(path) <= most:
+        return list(path)
+    return [path[k] for k in sorted({round(k * (len(path) - 1) / (most - 1)) for k in range(most)})]
+
+
 def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
     """Frame + title block + the blocks placed in the free field, labels decluttered; what does not
     fit goes to further sheets of the set (title block "sheet N of M")."""
-    region, keep_out = field_region(f)
-    pages = [spread_nested(placed, region, [keep_out], GAP) for placed in paginate(f, blocks)]
+    pages = laid_out(f, blocks)
     sheets = []
     for n, placed in enumerate(pages, 1):
         tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))

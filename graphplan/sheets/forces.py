@@ -15,10 +15,10 @@ from graphplan.drawing.layout import Block
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.report.plans import captioned
-from graphplan.sheets.compose import Sheet, SheetOptions, beside, compose, drawing_scale, fits_one, options_of, \
-    paginate
+from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
+                                      fits_one, options_of, paginate, remembered, sampled)
 from graphplan.sheets.form import Form, form, table
-from graphplan.sheets.kinematics import FACTORS, acceleration_table, fields, notes
+from graphplan.sheets.kinematics import FACTORS, ONE_SHEET, acceleration_table, fields, notes
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, force_symbol, num, unit, word
 
@@ -150,7 +150,7 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
     atab = acceleration_table(acc_doc, n, lang, p)
     both = beside([arec, atab])
-    blocks.append(Block("acceleration plan", lambda _k: both, solid=True))
+    blocks.append(Block("acceleration plan", lambda _k: both))
     itab = inertia_table(st, ks, acc_doc, lang)
     blocks.append(Block("inertia table", lambda _k: itab))
     drawn = forcedraw.records(fp, lang)
@@ -158,34 +158,44 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
         parts = [captioned(drawn[f"{kind} {gp.label}"], _caption(f"{kind} {gp.label}", lang))
                  for kind in ("group", "polygon", "table")]
         group = beside([parts[0], beside([parts[1]], below=parts[2])])
-        blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r, solid=True))
+        blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r))
     lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
-    blocks.append(Block("lever", lambda _k: lever, solid=True))
+    blocks.append(Block("lever", lambda _k: lever))
     for name, rec in forcecharts.records(dr.turn, k["charts"], lang).items():
         chart = captioned(rec, _caption(name, lang))
         blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
     return ForceDrawn(dict(k), fp, blocks)
 
 
+SET_SMALLEST = 1.0   # below A1 the plans are not drawn smaller than this to keep one sheet: a set instead
+
+
+@remembered
 def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
     """The largest common size factor at which the force sheet fits one sheet, then each family
-    grown while it fits; else the largest at which every block fits a sheet, for a set."""
+    grown while it fits — of the drawings on that way, the one that leaves the fewest 25 mm cells
+    bare (a larger force plan is mostly bare paper inside its polygon). Below A1 not smaller than
+    ``SET_SMALLEST``; when nothing fits one sheet, the largest factor (≤ 1) at which every block
+    fits a sheet, for a set."""
     if not has_loads(st):
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
     dr = ForceDrafter(st, opts)
     same = lambda k: {fam: k for fam in FORCE_FAMILIES}  # noqa: E731
+    smallest = 0.5 if f.name in ONE_SHEET else SET_SMALLEST
     for k in FACTORS:
-        if k < 0.5:
+        if k < smallest:
             break
         d = dr.drawn(same(k))
         if fits_one(f, d.blocks):
+            path = [d]
             for fam in FORCE_FAMILIES:
                 for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
                     trial = dr.drawn({**d.k, fam: bigger})
                     if not fits_one(f, trial.blocks):
                         break
                     d = trial
-            return d
+                    path.append(d)
+            return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
     for k in FACTORS:
         if k > 1.0:
             continue

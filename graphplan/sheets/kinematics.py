@@ -15,8 +15,9 @@ from graphplan.drawing.layout import Block
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
 from graphplan.report.plans import captioned
-from graphplan.sheets.compose import (Sheet, SheetOptions, beside, compose, drawing_scale, fits_one, number,
-                                      options_of, paginate, percent, reading)
+from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
+                                      fits_one, number, options_of, paginate, percent, reading, remembered,
+                                      sampled)
 from graphplan.sheets.form import Form, form, table
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
@@ -403,6 +404,7 @@ SET_LARGEST = 1.25   # a set's drawings grow no larger than this: more sheets, n
 ONE_SHEET = ("A1",)  # the coursework's format: one sheet, the plans smaller if they must be
 
 
+@remembered
 def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
     """The scales, once per scene and format: the largest common size factor at which the plans
     stay legible (``legible``) and the whole fits one sheet of ``f`` — on A1 (the coursework's one
@@ -424,7 +426,9 @@ def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
         if not legible(d) and f.name not in ONE_SHEET:
             break
         if one(d):
-            return grow(dr, d, one), True
+            path = [d]
+            grow(dr, d, one, path=path)
+            return min(sampled(path), key=lambda t: bare_share(f, t.blocks)), True
     layable = []
     for k in FACTORS:
         d = dr.drawn(_same(k))
@@ -448,8 +452,9 @@ def _pages(f: Form, d: Drawn) -> int:
         return 10 ** 6
 
 
-def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0]) -> Drawn:
-    """Each family in turn drawn at the next larger factors (up to ``largest``) while ``fits`` holds."""
+def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0], path: list | None = None) -> Drawn:
+    """Each family in turn drawn at the next larger factors (up to ``largest``) while ``fits`` holds
+    (each drawing on the way appended to ``path``)."""
     best = d
     for fam in FAMILIES:
         top = min(largest, dr.widest_diagrams()) if fam == "diagrams" else largest
@@ -458,6 +463,8 @@ def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0]) -> Drawn:
             if not fits(trial):
                 break
             best = trial
+            if path is not None:
+                path.append(best)
     return best
 
 
