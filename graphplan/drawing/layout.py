@@ -375,9 +375,17 @@ def _overlaps(taken, mask):
     H, W = taken.shape
     h, w = mask.shape
     shape = (-(-(H + h) // 32) * 32, -(-(W + w) // 32) * 32)
-    spec = np.fft.rfft2(taken.astype(float), shape) * np.conj(np.fft.rfft2(mask.astype(float), shape))
-    full = np.fft.irfft2(spec, shape)
+    key = (id(mask), shape)
+    hit = _SPECTRA.get(key)
+    if hit is None or hit[0] is not mask:          # a footprint is tried at many places: its spectrum once
+        if len(_SPECTRA) > 512:
+            _SPECTRA.clear()
+        hit = _SPECTRA[key] = (mask, np.conj(np.fft.rfft2(mask.astype(float), shape)))
+    full = np.fft.irfft2(np.fft.rfft2(taken.astype(float), shape) * hit[1], shape)
     return full[:H - h + 1, :W - w + 1]
+
+
+_SPECTRA: dict = {}
 
 
 def nest_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (),
