@@ -389,14 +389,18 @@ _SPECTRA: dict = {}
 
 
 def nest_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (),
-              gap: float = 6.0) -> tuple[list[Placed], list[Block]]:
+              gap: float = 6.0, cells: "Cells | None" = None,
+              slack: float = 0.0) -> tuple[list[Placed], list[Block]]:
     """Each block at the highest, then leftmost place where its footprint (grown by gap/2) meets
     no other's and stays in the region clear of the obstacles; the blocks that fit nowhere are
-    handed back in order: (placed, the rest)."""
+    handed back in order: (placed, the rest). With ``cells`` (the judging grid), among the free
+    places only those where the block's ink reaches the most cells still bare (less ``slack``
+    cells) are taken — see ``cover_some``."""
     import numpy as np
     rx0, ry0, rx1, ry1 = region
     taken = _field(region, obstacles)
     H, W = taken.shape
+    grid = _cell_grid(region, cells) if cells is not None else None
     placed: list[Placed] = []
     rest: list[Block] = []
     for block in blocks:
@@ -406,13 +410,20 @@ def nest_some(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (
             h, w = fp.mask.shape
             if h > H or w > W:
                 continue
-            hits = _overlaps(taken, fp.mask)
-            free = np.argwhere(hits < 0.5)        # (row, col) of the footprint's lower-left cell
-            if len(free) == 0:
+            free = _overlaps(taken, fp.mask) < 0.5      # at (row, col) of the footprint's lower-left cell
+            if not free.any():
                 continue
-            row = free[:, 0].max()
-            col = free[free[:, 0] == row][:, 1].min()
+            if grid is not None:
+                bare, origin, step = grid
+                seen = ink(rec, gap / 2).mask
+                score = np.where(free, _cover_scores(bare, seen, origin, step, free.shape), -np.inf)
+                free &= score >= score.max() - slack - 1e-9
+            rows, cols = np.nonzero(free)
+            row = rows.max()
+            col = cols[rows == row].min()
             taken[row:row + h, col:col + w] |= fp.mask
+            if grid is not None:
+                _mark(bare, seen, row, col, origin, step)
             dx, dy = rx0 + col * GRID - fp.x0, ry0 + row * GRID - fp.y0
             moved = rec.moved(dx, dy)
             placed.append(Placed(block.name, moved, moved.bounds(), factor, block.solid))
@@ -520,38 +531,7 @@ def cover_some(blocks: Sequence[Block], region: Box, cells: Cells, obstacles: Se
     """As ``nest_some`` (each block at its first factor that fits), but each block goes where its ink
     reaches the most cells still bare (less ``slack`` cells: the packing kept tighter); of those
     places the highest, then leftmost."""
-    import numpy as np
-    rx0, ry0, _, _ = region
-    taken = _field(region, obstacles)
-    H, W = taken.shape
-    bare, origin, step = _cell_grid(region, cells)
-    placed: list[Placed] = []
-    rest: list[Block] = []
-    for block in blocks:
-        for factor in block.factors:
-            rec = block.build(factor)
-            fp = footprint(rec, gap / 2, block.solid)
-            h, w = fp.mask.shape
-            if h > H or w > W:
-                continue
-            free = _overlaps(taken, fp.mask) < 0.5
-            if not free.any():
-                continue
-            seen = ink(rec, gap / 2).mask
-            score = np.where(free, _cover_scores(bare, seen, origin, step, free.shape), -np.inf)
-            best = score.max()
-            rows, cols = np.nonzero(free & (score >= best - slack - 1e-9))
-            top = rows.max()
-            row, col = top, cols[rows == top].min()
-            taken[row:row + h, col:col + w] |= fp.mask
-            _mark(bare, seen, row, col, origin, step)
-            dx, dy = rx0 + col * GRID - fp.x0, ry0 + row * GRID - fp.y0
-            moved = rec.moved(dx, dy)
-            placed.append(Placed(block.name, moved, moved.bounds(), factor, block.solid))
-            break
-        else:
-            rest.append(block)
-    return placed, rest
+    return nest_some(blocks, region, obstacles, gap, cells=cells, slack=slack)
 
 
 def bare_cells(placed: Sequence[Placed], region: Box, cells: Cells, gap: float = 6.0) -> float:
