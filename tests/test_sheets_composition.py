@@ -58,10 +58,11 @@ def gallery_files() -> list[str]:
     return out
 
 
-# The goal is at most 25 % bare cells; the gallery measures 16–47 % (7 of 16 sheets meet it; the
-# A2 force set and the lab sheets, whose plans are few and thin, are the sparsest). A sheet above the
-# goal is reported as an expected failure with its number; above 50 % it fails.
-GOAL, LIMIT = 0.25, 0.50
+# The goal is at most 25 % bare cells; the gallery measures 16–40 % (7 of 16 sheets meet it; the
+# A2 force set's second sheet and the force and lab sheets, whose drawings are few and thin, are the
+# sparsest). A sheet above the goal is reported as an expected failure with its number; above 45 % it
+# fails.
+GOAL, LIMIT = 0.25, 0.45
 
 
 @pytest.mark.parametrize("name", gallery_files())

@@ -201,10 +201,21 @@ def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
             continue
         d = dr.drawn(same(k))
         try:
-            paginate(f, d.blocks)
+            pages = len(paginate(f, d.blocks))
         except GraphplanError:
             continue
-        return d
+        path = [d]
+        for fam in FORCE_FAMILIES:          # a set's drawings grown while the set needs no more sheets
+            for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
+                trial = dr.drawn({**d.k, fam: bigger})
+                try:
+                    if len(paginate(f, trial.blocks)) > pages:
+                        break
+                except GraphplanError:
+                    break
+                d = trial
+                path.append(d)
+        return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
     return dr.drawn(same(FACTORS[-1]))
 
 
