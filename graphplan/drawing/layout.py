@@ -545,3 +545,65 @@ def bare_cells(placed: Sequence[Placed], region: Box, cells: Cells, gap: float =
         row, col = int(round((fp.y0 - ry0) / GRID)), int(round((fp.x0 - rx0) / GRID))
         _mark(bare, fp.mask, row, col, origin, step)
     return float(bare.sum()) / max(counted, 1)
+
+
+def _reach(mask, row: int, col: int, origin, step: int, shape) -> list[tuple[int, int]]:
+    """The cells (i, j) of the judging grid a block's ink reaches when placed at raster (row, col)."""
+    r0, c0 = origin
+    m = _coarse(mask, (row - r0) % step, (col - c0) % step, step)
+    R, C = (row - r0) // step, (col - c0) // step
+    return [(R + i, C + j) for i, j in zip(*m.nonzero())
+            if 0 <= R + i < shape[0] and 0 <= C + j < shape[1]]
+
+
+def improve(placed: list[Placed], region: Box, cells: Cells, obstacles: Sequence[Box] = (),
+            gap: float = 6.0, rounds: int = 2) -> list[Placed]:
+    """The layout bettered block by block: each drawing lifted off and put back where its ink
+    reaches the most cells the others leave bare, if that is more than where it was (a local
+    search on the count the sheet is judged by; it never inks fewer cells)."""
+    import numpy as np
+    rx0, ry0, _, _ = region
+    taken = _field(region, obstacles)
+    H, W = taken.shape
+    counted, origin, step = _cell_grid(region, cells)
+    hits = np.zeros(counted.shape, dtype=int)          # how many blocks ink each cell
+    prints = [footprint(p.record, gap / 2, p.solid) for p in placed]
+    inks = [ink(p.record, gap / 2) for p in placed]
+    at = [[int(round((fp.y0 - ry0) / GRID)), int(round((fp.x0 - rx0) / GRID))] for fp in prints]
+
+    def stamp(i: int, sign: int) -> None:
+        r, c = at[i]
+        h, w = prints[i].mask.shape
+        if r < 0 or c < 0 or r + h > H or c + w > W:
+            raise ValueError("outside")
+        if sign > 0:
+            taken[r:r + h, c:c + w] |= prints[i].mask
+        else:
+            taken[r:r + h, c:c + w] &= ~prints[i].mask
+        for cell in _reach(inks[i].mask, r, c, origin, step, counted.shape):
+            hits[cell] += sign
+    try:
+        for i in range(len(placed)):
+            stamp(i, +1)
+    except ValueError:                                  # a block off the raster: leave the layout
+        return placed
+    for _ in range(rounds):
+        moved_any = False
+        for i in range(len(placed)):
+            stamp(i, -1)
+            bare = counted & (hits == 0)
+            here = sum(bare[cell] for cell in _reach(inks[i].mask, *at[i], origin, step, counted.shape))
+            free = _overlaps(taken, prints[i].mask) < 0.5
+            score = np.where(free, _cover_scores(bare, inks[i].mask, origin, step, free.shape), -np.inf)
+            if score.max() > here + 0.5:
+                rows, cols = np.nonzero(free & (score >= score.max() - 1e-9))
+                at[i] = [int(rows.max()), int(cols[rows == rows.max()].min())]
+                moved_any = True
+            stamp(i, +1)
+        if not moved_any:
+            break
+    out = []
+    for p, fp, (r, c) in zip(placed, prints, at):
+        moved = p.record.moved(rx0 + c * GRID - fp.x0, ry0 + r * GRID - fp.y0)
+        out.append(Placed(p.name, moved, moved.bounds(), p.factor, p.solid))
+    return out

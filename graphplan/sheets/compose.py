@@ -10,8 +10,8 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from graphplan.drawing.layout import (Block, Cells, Placed, bare_cells, cover_some, declutter, footprint, nest_some,
-                                      spread_nested)
+from graphplan.drawing.layout import (Block, Cells, Placed, bare_cells, cover_some, declutter, footprint, improve,
+                                      nest_some, spread_nested)
 from graphplan.graphic.record import Record
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
@@ -287,7 +287,8 @@ def bare_share(f: Form, blocks: list[Block]) -> float:
     """The estimated share of bare 25 mm cells over the set's sheets as ``compose`` lays them out."""
     region, _ = field_region(f)
     cells = judging_cells(f)
-    pages = laid_out(f, blocks)
+    region, keep_out = field_region(f)
+    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in laid_out(f, blocks)]
     return sum(bare_cells(p, region, cells, GAP) for p in pages) / len(pages)
 
 
@@ -302,7 +303,8 @@ def sampled(path: list, most: int = 4) -> list:
 def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
     """Frame + title block + the blocks placed in the free field, labels decluttered; what does not
     fit goes to further sheets of the set (title block "sheet N of M")."""
-    pages = laid_out(f, blocks)
+    region, keep_out = field_region(f)
+    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in laid_out(f, blocks)]
     sheets = []
     for n, placed in enumerate(pages, 1):
         tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))

@@ -31,7 +31,7 @@ WORDS = {
            "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ωm²δ) − I*сер", "merk": "наближено: метод Мерцалова",
            "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ωm = {w} рад/с",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
-           "achieved": "Досягнуто: δ = {d}, |ω(2π) − ω(0)|/ωm = {c}"},
+           "achieved": "Досягнуто: δ = {d}, |ω(2π) − ω(0)|/ωm {c}"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M_c*(φ), M_d* and the work A_c(φ), A_d(φ) "
            "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
            "inertia": "Reduced moment of inertia of the mechanism I*_m(φ)",
@@ -42,7 +42,7 @@ WORDS = {
            "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ωm²δ) − I*mean", "merk": "approximate: Merkalov's method",
            "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ωm = {w} rad/s",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
-           "achieved": "Achieved: δ = {d}, |ω(2π) − ω(0)|/ωm = {c}"},
+           "achieved": "Achieved: δ = {d}, |ω(2π) − ω(0)|/ωm {c}"},
 }
 
 
@@ -100,7 +100,7 @@ CLOSURE_FLOOR = 1e-9
 def closure(c: float, lang: str) -> str:
     """|ω(2π) − ω(0)|/ωm as the sheet says it: a residual below 10⁻⁹ is the integrator's rounding and
     differs from machine to machine, so the sheet says "< 10⁻⁹" (deterministic files)."""
-    return "< 10⁻⁹" if abs(c) < CLOSURE_FLOOR else num(c, lang, 2)
+    return "< 10⁻⁹" if abs(c) < CLOSURE_FLOOR else f"= {num(c, lang, 2)}"
 
 
 def notes(f: Flywheel, doc: dict, lang: str) -> Record:
