@@ -58,7 +58,7 @@ def gallery_files() -> list[str]:
     return out
 
 
-# The goal is at most 25 % bare cells; the gallery measures 15–40 % (8 of 16 sheets meet it; the
+# The goal is at most 25 % bare cells; the gallery measures 15–43 % (9 of 16 sheets meet it; the
 # A2 force set's second sheet and the force and lab sheets, whose drawings are few and thin, are the
 # sparsest). A sheet above the goal is reported as an expected failure with its number; above 45 % it
 # fails.

@@ -214,6 +214,7 @@ def spread(placed: list[Placed], region: Box, obstacles: Sequence[Box] = (), gap
 # but never inside a figure or nearer than ``gap`` to another block's ink.
 
 GRID = 2.5   # mm per raster cell
+CAPS = 0.72  # the lettering font's capital height, in letter heights (osifont, GOST type B)
 
 
 def _marks(prim: Primitive, step: float) -> list[tuple[float, float]]:
@@ -221,6 +222,7 @@ def _marks(prim: Primitive, step: float) -> list[tuple[float, float]]:
     import math
     if prim.kind == "text":
         x0, y0, x1, y1 = prim.bounds()
+        y1 = y0 + CAPS * (y1 - y0)            # the letters' ink: from the baseline to the capitals' top
         nx, ny = max(1, int((x1 - x0) / step) + 1), max(1, int((y1 - y0) / step) + 1)
         return [(x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny) for i in range(nx + 1) for j in range(ny + 1)]
     if prim.kind in ("circle", "arc"):
