@@ -519,13 +519,8 @@ def _cover_scores(bare, mask, origin, step: int, shape):
 
 def _mark(bare, mask, row: int, col: int, origin, step: int) -> None:
     """The cells a block's ink reaches, placed at raster (row, col), are no longer bare."""
-    r0, c0 = origin
-    pr, pc = (row - r0) % step, (col - c0) % step
-    m = _coarse(mask, pr, pc, step)
-    R, C = (row - r0) // step, (col - c0) // step
-    for i, j in zip(*m.nonzero()):
-        if 0 <= R + i < bare.shape[0] and 0 <= C + j < bare.shape[1]:
-            bare[R + i, C + j] = False
+    for cell in _reach(mask, row, col, origin, step, bare.shape):
+        bare[cell] = False
 
 
 def cover_some(blocks: Sequence[Block], region: Box, cells: Cells, obstacles: Sequence[Box] = (),

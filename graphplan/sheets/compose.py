@@ -251,7 +251,7 @@ def covered(f: Form, blocks: list[Block]) -> list[Placed] | None:
 def fill(f: Form, blocks: list[Block], placed: list[Placed]) -> list[Placed]:
     """One sheet's blocks laid out to use the field (``covered``); when that never places them all,
     the packing ``placed`` spread over the sheet. (Measured on the gallery: the cover layout leaves
-    16–35 % of the cells bare where the spread packing left 20–53 %; spreading the cover layout
+    15–43 % of the cells bare where the spread packing left 20–53 %; spreading the cover layout
     afterwards only loses cells.)"""
     region, keep_out = field_region(f)
     names = {p.name for p in placed}
@@ -263,22 +263,24 @@ _LAID: dict[tuple, tuple[list[Block], list[list[Placed]]]] = {}
 
 
 def laid_out(f: Form, blocks: list[Block]) -> list[list[Placed]]:
-    """The sheets of the set, each filled (``fill``); remembered for the same blocks, since the scale
-    choice lays out the drawing it then composes."""
+    """The sheets of the set as ``compose`` draws them: one sheet when the cover layout holds
+    everything, else the packing's sheets each filled (``fill``); then each bettered (``improve``).
+    Remembered for the same blocks, since the scale choice lays out the drawing it then composes."""
     key = (f.name, tuple(id(b) for b in blocks))
     hit = _LAID.get(key)
     if hit is not None and all(a is b for a, b in zip(hit[0], blocks)):
         return hit[1]
     if len(_LAID) > 64:
         _LAID.clear()
-    whole = covered(f, blocks)               # one sheet, when the cover layout holds everything
+    region, keep_out = field_region(f)
+    whole = covered(f, blocks)
     if whole is not None:
         pages = [whole]
     else:
         packed = paginate(f, blocks)
-        region, keep_out = field_region(f)
         pages = ([spread_nested(packed[0], region, [keep_out], GAP)] if len(packed) == 1
                  else [fill(f, blocks, placed) for placed in packed])
+    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in pages]
     _LAID[key] = (list(blocks), pages)
     return pages
 
@@ -286,10 +288,8 @@ def laid_out(f: Form, blocks: list[Block]) -> list[list[Placed]]:
 def bare_share(f: Form, blocks: list[Block]) -> float:
     """The estimated share of bare 25 mm cells over the set's sheets as ``compose`` lays them out."""
     region, _ = field_region(f)
-    cells = judging_cells(f)
-    region, keep_out = field_region(f)
-    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in laid_out(f, blocks)]
-    return sum(bare_cells(p, region, cells, GAP) for p in pages) / len(pages)
+    pages = laid_out(f, blocks)
+    return sum(bare_cells(p, region, judging_cells(f), GAP) for p in pages) / len(pages)
 
 
 def sampled(path: list, most: int = 4) -> list:
@@ -303,8 +303,7 @@ def sampled(path: list, most: int = 4) -> list:
 def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
     """Frame + title block + the blocks placed in the free field, labels decluttered; what does not
     fit goes to further sheets of the set (title block "sheet N of M")."""
-    region, keep_out = field_region(f)
-    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in laid_out(f, blocks)]
+    pages = laid_out(f, blocks)
     sheets = []
     for n, placed in enumerate(pages, 1):
         tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))

@@ -167,6 +167,28 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     return ForceDrawn(dict(k), fp, blocks)
 
 
+def growth(dr: ForceDrafter, d: ForceDrawn, fits) -> list[ForceDrawn]:
+    """Each family in turn drawn at the next larger factors while ``fits`` holds: every drawing on
+    the way, ``d`` first."""
+    path = [d]
+    for fam in FORCE_FAMILIES:
+        for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
+            trial = dr.drawn({**d.k, fam: bigger})
+            if not fits(trial):
+                break
+            d = trial
+            path.append(d)
+    return path
+
+
+def sheet_count(f: Form, d: ForceDrawn) -> int | None:
+    """How many sheets of ``f`` the packing needs for ``d``; None when a block fits no sheet."""
+    try:
+        return len(paginate(f, d.blocks))
+    except GraphplanError:
+        return None
+
+
 SET_SMALLEST = 1.0   # below A1 the plans are not drawn smaller than this to keep one sheet: a set instead
 
 
@@ -187,34 +209,17 @@ def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
             break
         d = dr.drawn(same(k))
         if fits_one(f, d.blocks):
-            path = [d]
-            for fam in FORCE_FAMILIES:
-                for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
-                    trial = dr.drawn({**d.k, fam: bigger})
-                    if not fits_one(f, trial.blocks):
-                        break
-                    d = trial
-                    path.append(d)
+            path = growth(dr, d, lambda t: fits_one(f, t.blocks))
             return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
     for k in FACTORS:
         if k > 1.0:
             continue
         d = dr.drawn(same(k))
-        try:
-            pages = len(paginate(f, d.blocks))
-        except GraphplanError:
+        pages = sheet_count(f, d)
+        if pages is None:
             continue
-        path = [d]
-        for fam in FORCE_FAMILIES:          # a set's drawings grown while the set needs no more sheets
-            for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
-                trial = dr.drawn({**d.k, fam: bigger})
-                try:
-                    if len(paginate(f, trial.blocks)) > pages:
-                        break
-                except GraphplanError:
-                    break
-                d = trial
-                path.append(d)
+        # a set's drawings grown while the set needs no more sheets
+        path = growth(dr, d, lambda t: (sheet_count(f, t) or pages + 1) <= pages)
         return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
     return dr.drawn(same(FACTORS[-1]))
 
