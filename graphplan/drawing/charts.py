@@ -152,38 +152,71 @@ def _nice_step(span: float, parts: int = 6) -> float:
     return standard_scale(span / parts) if span > 0 else 1.0
 
 
-def moment_record(t: Turn, width: float = 180.0, height: float = 70.0, lang: str = "uk") -> Record:
-    """M_b(φ) as a drawing: abscissa = crank turn from position 0, ordinate at μM (N·m per mm)."""
-    rec = Record("balancing moment M_b(φ)")
-    step = "M_b(φ)"
-    m = t.ks.balancing
-    lo, hi = min(0.0, float(np.min(m))), max(0.0, float(np.max(m)))
-    mu_m = standard_scale((hi - lo) / height) if hi > lo else 1.0
+def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, mm_unit: str,
+               width: float, height: float, lang: str) -> tuple[Record, float]:
+    """A quantity over the turn as the course draws it: abscissa = crank turn from position 0 at
+    μφ = 360°/``width``, ordinate at the standard scale μ that fits ``height``; each position's
+    ordinate drawn, as the points are plotted from the table; ticks within the drawn axis.
+    Returns the record and μ."""
+    rec = Record(title)
+    step = title
+    lo, hi = min(0.0, float(np.min(values))), max(0.0, float(np.max(values)))
+    mu = standard_scale((hi - lo) / height) if hi > lo else 1.0
     mu_phi = 360.0 / width
-    y0 = 0.0
-    rec.scales.update({"mu_M": mu_m, "mu_phi": mu_phi})
-    rec.segment((0.0, y0), (width + 5.0, y0), role="axis", layer="diagrams", step=step)
-    rec.vector((0.0, lo / mu_m - 3.0), (0.0, hi / mu_m + 8.0), role="construction", layer="diagrams", step=step)
-    pts = [(float(x / mu_phi), float(v / mu_m)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[m, m[0]])]
+    rec.scales["mu_phi"] = mu_phi
+    rec.segment((0.0, 0.0), (width + 5.0, 0.0), role="axis", layer="diagrams", step=step)
+    rec.vector((0.0, lo / mu - 3.0), (0.0, hi / mu + 8.0), role="construction", layer="diagrams", step=step)
+    pts = [(float(x / mu_phi), float(v / mu)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[values, values[0]])]
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
     for k, pos in t.position_index():
         x = float(t.turn_deg[k] / mu_phi)
-        rec.segment((x, y0 - 1.5), (x, y0 + 1.5), role="construction", layer="diagrams", step=step)
-        y = float(m[k] / mu_m)
+        rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
+        y = float(values[k] / mu)
         if abs(y) > 1.5:      # the position's ordinate, as the points are plotted from the table
-            rec.segment((x, y0), (x, y), role="grid", layer="diagrams", step=step)
-        rec.label((x, y0 - 5.0), str(pos), size=2.5, anchor="middle", step=step)
-    rec.label((width + 6.0, y0 - 1.0), "φ", size=3.5, step=step)
-    rec.label((2.0, hi / mu_m + 5.0), f"{word('M_b', lang)}, {unit('N·m', lang)}", size=3.5, step=step)
+            rec.segment((x, 0.0), (x, y), role="grid", layer="diagrams", step=step)
+        rec.label((x, -5.0), str(pos), size=2.5, anchor="middle", step=step)
+    rec.label((width + 6.0, -1.0), "φ", size=3.5, step=step)
+    rec.label((2.0, hi / mu + 5.0), axis, size=3.5, step=step)
     tick = _nice_step(hi - lo, 4)
     v = math.ceil(lo / tick - 1e-9) * tick        # the ticks within the drawn axis only
     while v <= hi + 1e-9:
-        y = v / mu_m
+        y = v / mu
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
         rec.label((-2.5, y - 1.2), num(v, lang), size=2.5, anchor="end", step=step)
         v += tick
-    rec.label((0.0, lo / mu_m - 12.0), f"μ_M = {num(mu_m, lang)} {unit('N·m/mm', lang)}, "
+    rec.label((0.0, lo / mu - 12.0), f"{per_mm} = {num(mu, lang)} {mm_unit}, "
               f"μ_φ = {num(mu_phi, lang)} {unit('deg/mm', lang)}", size=2.5, step=step)
+    return rec, mu
+
+
+def moment_record(t: Turn, width: float = 180.0, height: float = 70.0, lang: str = "uk") -> Record:
+    """M_b(φ) as a drawing: abscissa = crank turn from position 0, ordinate at μM (N·m per mm)."""
+    rec, mu = _over_turn(t, t.ks.balancing, "balancing moment M_b(φ)", f"{word('M_b', lang)}, {unit('N·m', lang)}",
+                         "μ_M", unit('N·m/mm', lang), width, height, lang)
+    rec.scales["mu_M"] = mu
+    return rec
+
+
+def slider_reactions(t: Turn) -> list[str]:
+    """The sliding pairs with the frame (the ram on its guide): their reaction keeps its line, so it
+    is drawn as a chart over the turn (seed 003, fig. 5a), not as a hodograph."""
+    return [k for k, r in t.ks.reactions.items() if r.kind == "P" and r.frm == "0"]
+
+
+def normal_component(t: Turn, key: str) -> np.ndarray:
+    """A sliding pair's reaction as a signed number: its component on the guide's normal n (the
+    guide turned by +90°: up for a horizontal guide), R·n."""
+    r = t.ks.reactions[key]
+    n = np.asarray(r.guide) * 1j
+    return np.real(r.force * np.conj(n)) / np.abs(n)
+
+
+def reaction_record(t: Turn, key: str, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record:
+    """Seed 003's fig. 5a: the frame's reaction on the slider over the turn (N, on the guide's normal)."""
+    rec, mu = _over_turn(t, normal_component(t, key), f"reaction {key}",
+                         f"{force_symbol(key, lang)}, {unit('N', lang)}", "μ_R", unit('N/mm', lang),
+                         width, height, lang)
+    rec.scales["mu_R"] = mu
     return rec
 
 
@@ -262,12 +295,15 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
 
 
 def records(t: Turn, k: float = 1.0, lang: str = "uk") -> dict[str, Record]:
-    """"moment", "resistance" (when the scene has an external force) and "hodograph <key>" for every
-    revolute pair, at size factor k, in ``lang``."""
+    """"moment", "resistance" (when the scene has an external force), "reaction <key>" for every
+    sliding pair with the frame and "hodograph <key>" for every revolute pair, at size factor k, in
+    ``lang``."""
     out = {"moment": moment_record(t, 180.0 * k, 70.0 * k, lang=lang)}
     res = resistance_record(t, 160.0 * k, 60.0 * k, lang=lang)
     if res is not None:
         out["resistance"] = res
+    for key in slider_reactions(t):
+        out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0 * k, lang=lang)
     for key in t.revolute:
         out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * k, lang=lang)
     return out

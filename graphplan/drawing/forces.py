@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from graphplan.graphic.record import Record, text_width
-from graphplan.graphic.forceplans import ForcePlans, GroupPlan
+from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
 from graphplan.util.markup import indexed
@@ -148,7 +148,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """A group drawn at μl: its links, every force acting on it (loads, the reactions handed over by
     the later groups, the reactions found here) and the arms of the moment equations."""
     mech, kin = fp.ks.mech, fp.ks.kin
-    title = f"{gp.label} {pair_kind(gp.kind, lang)}" if gp.kind != "crank" else "I(0-1)"
+    title = f"{gp.label} {pair_kind(gp.kind, lang)}" if gp.kind not in ("crank", "mechanism") else gp.label
     rec = Record(title, scales={"mu_l": fp.mu_l})
     step = f"{gp.label}: ΣM = 0, ΣF = 0"
     names: list[tuple[complex, str]] = []
@@ -225,6 +225,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+    return rec
+
+
+def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
+    """The whole mechanism at the force position, at μl, with every load the groups carry (weights,
+    inertia forces and couples, the resistance) and the balancing moment on the crank: the scheme
+    the groups are taken apart from ("схема механізму з прикладеними силами")."""
+    loads = [f for gp in fp.groups for f in gp.forces if f.kind == "load"]
+    crank = fp.groups[-1].links[0]
+    pivot = next(r.at for r in fp.ks.reactions.values() if r.on == crank and r.frm == FRAME)
+    loads.append(GForce("M_b", crank, complex(pivot[0]), 0j, couple=fp.balancing))
+    links = tuple(link for gp in reversed(fp.groups) for link in gp.links)
+    whole = GroupPlan("0", "mechanism", links, loads, [], [], [], {}, {}, [])
+    rec = group_record(fp, whole, lang)
+    rec.title = "mechanism with its loads"
     return rec
 
 
@@ -425,6 +440,7 @@ def records(fp: ForcePlans, lang: str = "uk") -> dict[str, Record]:
         out[f"polygon {gp.label}"] = polygon_record(fp, gp, lang)
         out[f"table {gp.label}"] = group_table_record(fp, gp, lang)
     out["lever"] = lever_record(fp, lang)
+    out["mechanism"] = mechanism_record(fp, lang)
     out["results"] = results_record(fp, lang)
     return out
 

@@ -33,7 +33,8 @@ def _caption(name: str, lang: str) -> str:
     return {"group": f"{w('group')} {rest}", "polygon": f"{w('polygon')} {rest}",
             "table": f"{w('table')} {rest}", "lever": w('lever'), "results": w('results'),
             "moment": w('moment'), "hodograph": f"{w('hodograph')} {force_symbol(rest, lang)}",
-            "resistance": w('resistance')}.get(kind, name)
+            "resistance": w('resistance'),
+            "reaction": f"{w('reaction')} {force_symbol(rest, lang)}"}.get(kind, name)
 
 
 def has_loads(st: Study) -> bool:
@@ -159,6 +160,8 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
                  for kind in ("group", "polygon", "table")]
         group = beside([parts[0], beside([parts[1]], below=parts[2])])
         blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r))
+    scheme = captioned(drawn["mechanism"], f"{w('mechanism')}, {w('at')} {fixed(phi, lang, 2)}°")
+    blocks.append(Block("mechanism", lambda _k: scheme))
     lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
     blocks.append(Block("lever", lambda _k: lever))
     for name, rec in forcecharts.records(dr.turn, k["charts"], lang).items():

@@ -176,6 +176,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs position": ('положення силового розрахунку', 'position of the force analysis'),
     "fs inertia": ('Таблиця 5. Маси, моменти інерції, сили та моменти сил інерції', 'Table 5. Masses, moments of inertia, inertia forces and moments'),
     "fs link": ('ланка', 'link'),
+    "fs mechanism": ('Схема механізму з прикладеними силами', 'The mechanism with the applied forces'),
+    "fs reaction": ('Реакція стояка на повзун', 'Reaction of the frame on the slider'),
     "fs resistance": ('Діаграма сили корисного опору за хід', 'Resistance force over the stroke'),
     "fs small": ('Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): ', "Forces drawn under 10 mm (length, share of their plan's largest): "),
     # the kinematics sheet (sheets/kinematics.py)
