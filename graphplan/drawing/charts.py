@@ -294,16 +294,18 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     return rec
 
 
-def records(t: Turn, k: float = 1.0, lang: str = "uk") -> dict[str, Record]:
+def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | None = None) -> dict[str, Record]:
     """"moment", "resistance" (when the scene has an external force), "reaction <key>" for every
-    sliding pair with the frame and "hodograph <key>" for every revolute pair, at size factor k, in
-    ``lang``."""
-    out = {"moment": moment_record(t, 180.0 * k, 70.0 * k, lang=lang)}
-    res = resistance_record(t, 160.0 * k, 60.0 * k, lang=lang)
+    sliding pair with the frame and "hodograph <key>" for every revolute pair, in ``lang``: the charts
+    k times their length at their one height (a taller chart is mostly bare paper above its curve),
+    the hodographs ``k_hodographs`` (k when not given) times their size."""
+    kh = k if k_hodographs is None else k_hodographs
+    out = {"moment": moment_record(t, 180.0 * k, 70.0, lang=lang)}
+    res = resistance_record(t, 160.0 * k, 60.0, lang=lang)
     if res is not None:
         out["resistance"] = res
     for key in slider_reactions(t):
-        out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0 * k, lang=lang)
+        out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * k, lang=lang)
+        out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * kh, lang=lang)
     return out

@@ -89,10 +89,19 @@ def page_path(path: Path, n: int) -> Path:
 
 
 def field_region(f: Form) -> tuple[tuple[float, float, float, float], tuple[float, float, float, float]]:
-    """The free field inside the frame and the title block's keep-out box."""
+    """The free field inside the frame and the title block's keep-out box. The field's lower-left
+    corner is moved (by under one raster cell) onto the raster of the 25 mm judging cells, so that
+    no raster cell of the layout straddles a judging cell's edge: the count the layout makes is the
+    count the sheet is judged by."""
+    from graphplan.drawing.layout import GRID
     x0, y0, x1, y1 = f.frame_box
     tb = title_block_box(f)
-    return ((x0 + INSET, y0 + INSET, x1 - INSET, y1 - INSET),
+    cells = judging_cells(f)
+    wx0, _, _, wy1 = cells.within
+    bottom = wy1 - ((wy1 - cells.within[1]) // cells.size) * cells.size     # the lowest whole row's edge
+    rx0 = wx0 + math.ceil((x0 + INSET - wx0) / GRID - 1e-9) * GRID
+    ry0 = bottom + math.ceil((y0 + INSET - bottom) / GRID - 1e-9) * GRID
+    return ((rx0, ry0, x1 - INSET, y1 - INSET),
             (tb[0] - INSET, tb[1], tb[2], tb[3] + INSET))
 
 
@@ -279,10 +288,60 @@ def laid_out(f: Form, blocks: list[Block]) -> list[list[Placed]]:
     else:
         packed = paginate(f, blocks)
         pages = ([spread_nested(packed[0], region, [keep_out], GAP)] if len(packed) == 1
-                 else [fill(f, blocks, placed) for placed in packed])
+                 else shared_out(f, blocks, [fill(f, blocks, placed) for placed in packed]))
     pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in pages]
     _LAID[key] = (list(blocks), pages)
     return pages
+
+
+MOVES, TRIED = 2, 6
+
+
+def _page(f: Form, blocks: list[Block]) -> list[Placed] | None:
+    """One sheet of these blocks as ``fill`` lays it out (the cover layout, else a packing spread
+    over the sheet); None when they do not fit one sheet."""
+    out = covered(f, blocks)
+    if out is not None:
+        return out
+    region, keep_out = field_region(f)
+    for how in ORDERS:
+        placed, left = nest_some(_ordered(_cached(blocks), how), region, obstacles=[keep_out], gap=GAP)
+        if not left:
+            return spread_nested(placed, region, [keep_out], GAP)
+    return None
+
+
+def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[list[Placed]]:
+    """A set's drawings shared out so that no sheet stays sparse: a drawing of the fullest sheet
+    (the smaller ones tried first) moves to the sparsest when both still hold theirs and the
+    sparser of the two leaves fewer cells bare — a few moves at most (each costs two layouts)."""
+    region, _ = field_region(f)
+    cells = judging_cells(f)
+    by_name = {b.name: b for b in blocks}
+    share = lambda placed: bare_cells(placed, region, cells, GAP)  # noqa: E731
+    pages = list(pages)
+    for _ in range(MOVES):
+        shares = [share(p) for p in pages]
+        full, sparse = shares.index(min(shares)), shares.index(max(shares))
+        if full == sparse:
+            break
+        worst = shares[sparse]
+        best = None
+        names = sorted((p.name for p in pages[full]), key=lambda n: _area(by_name[n]))
+        for name in names[:TRIED]:
+            rest = [by_name[p.name] for p in pages[full] if p.name != name]
+            more = [by_name[p.name] for p in pages[sparse]] + [by_name[name]]
+            a, b = _page(f, rest), _page(f, more)
+            if a is None or b is None:
+                continue
+            score = max(share(a), share(b))
+            if score < worst - 1e-9 and (best is None or score < best[0]):
+                best = (score, a, b)
+        if best is None:
+            break
+        pages[full], pages[sparse] = best[1], best[2]
+    order = {b.name: k for k, b in enumerate(blocks)}
+    return sorted(pages, key=lambda p: min(order[x.name] for x in p))
 
 
 def bare_share(f: Form, blocks: list[Block]) -> float:

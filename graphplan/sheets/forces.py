@@ -90,7 +90,7 @@ def small_forces(fp, lang: str = "uk") -> list[str]:
     return list(dict.fromkeys(out))
 
 
-FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts")
+FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts", "hodographs")
 
 
 @dataclass
@@ -121,7 +121,7 @@ class ForceDrafter:
 
 def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     """The force sheet's blocks at size factors k: "forces" sets μF, "groups" μl of the groups'
-    drawings, "acceleration" μa of the force position's plan, "charts" the charts' size."""
+    drawings, "acceleration" μa of the force position's plan, "charts" the charts' size, "hodographs" the hodographs'."""
     from graphplan.drawing import charts as forcecharts
     from graphplan.drawing import forces as forcedraw
     from graphplan.drawing.plans import acceleration_records
@@ -164,7 +164,7 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     blocks.append(Block("mechanism", lambda _k: scheme))
     lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
     blocks.append(Block("lever", lambda _k: lever))
-    for name, rec in forcecharts.records(dr.turn, k["charts"], lang).items():
+    for name, rec in forcecharts.records(dr.turn, k["charts"], lang, k["hodographs"]).items():
         chart = captioned(rec, _caption(name, lang))
         blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
     return ForceDrawn(dict(k), fp, blocks)

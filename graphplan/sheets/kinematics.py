@@ -327,7 +327,7 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
         caption = (f"{w('acceleration')}, {w('position')} {q.index if q.index is not None else ''} "
                    f"(φ = {fixed(q.phi % 360, lang, 1)}°), {format_scale('mu_a', plans.mu_a, lang)}")
         both = beside([captioned(arec[q.key], caption), acceleration_table(pos, n, lang, p)])
-        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r, solid=True))
+        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r))
 
     def notes_block(_k: float) -> Record:
         scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", plans.mu_v),
