@@ -83,7 +83,10 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 
     # -- s(t) ------------------------------------------------------------------------------------
     _axes(rec, y_s, s_lo, s_hi, -3.0, L, s_sym, d.sub, "s(t)")
-    _ordinates(rec, x, y_s, s_lo, s_hi, "s(t)")
+    # one time base (seed 002: "в точках поділу креслимо вздовж осі ординат тонкі лінії"): each division's
+    # thin ordinate runs down through the three diagrams, broken only for the numbers under s
+    _ordinates(rec, x, y_s + s_lo - 1.0, 0.0, s_hi - s_lo + 1.0, "s(t)")
+    _ordinates(rec, x, y_a + a_lo, 0.0, (y_s + s_lo - 6.0) - (y_a + a_lo), "v(t), a(t)")
     tangents = d.method == "tangents"
     if tangents:
         _tangents(rec, x[:-1], y_s + r.s[:-1], r.alpha_s, s_sym)
@@ -133,7 +136,7 @@ def _axes(rec: Record, y0: float, lo: float, hi: float, x_from: float, L: float,
 
 
 def _ordinates(rec: Record, x: np.ndarray, y0: float, lo: float, hi: float, step: str) -> None:
-    """Thin division ordinates across the diagram."""
+    """Thin division ordinates from y0 + lo to y0 + hi."""
     for xk in x[1:]:
         rec.segment((xk, y0 + lo), (xk, y0 + hi), role="grid", layer=LAYER, step=f"division ordinates of {step}")
 
@@ -159,7 +162,6 @@ def _pole_diagram(rec: Record, d: Diagrams, y0: float, lo: float, hi: float, H: 
     the ordinate axis, the projection lines to the middles of the intervals, the points, the curve."""
     step = f"{sym} = d{source}/dt"
     _axes(rec, y0, lo, hi, -H - 4.0, d.L, sym, d.sub, f"{sym}(t)")
-    _ordinates(rec, d.x, y0, lo, hi, f"{sym}(t)")
     pole = (-H, y0)
     rec.point(pole, role="joint", layer=LAYER, step=f"pole P, H{index} = {H:g} mm")
     rec.label((-H - 1.8, y0 + 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step=f"pole P{index}")
