@@ -83,8 +83,8 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 
     # -- s(t) ------------------------------------------------------------------------------------
     _axes(rec, y_s, s_lo, s_hi, -3.0, L, s_sym, d.sub, "s(t)")
-    # one time base (seed 002: "в точках поділу креслимо вздовж осі ординат тонкі лінії"): each division's
-    # thin ordinate runs down through the three diagrams, broken only for the numbers under s
+    # one time base (seed 002: "в точках поділу креслимо вздовж осі ординат тонкі лінії"): each
+    # division's thin ordinate runs down through the three diagrams, broken for the numbers under s
     _ordinates(rec, x, y_s + s_lo - 1.0, 0.0, s_hi - s_lo + 1.0, "s(t)")
     _ordinates(rec, x, y_a + a_lo, 0.0, (y_s + s_lo - 6.0) - (y_a + a_lo), "v(t), a(t)")
     tangents = d.method == "tangents"

@@ -22,7 +22,7 @@ class Block:
     name: str
     build: Callable[[float], Record]
     factors: Sequence[float] = (1.0,)
-    solid: bool = False      # nested by its whole box (a drawing with its table): nothing in between
+    solid: bool | str = False  # nested by its whole box (True), each figure's hull (HULL) or its ink
 
 
 @dataclass
@@ -31,7 +31,7 @@ class Placed:
     record: Record
     box: Box
     factor: float
-    solid: bool = False
+    solid: bool | str = False
 
 
 def place(blocks: Sequence[Block], region: Box, obstacles: Sequence[Box] = (), gap: float = 6.0) -> list[Placed]:
@@ -214,17 +214,20 @@ def spread(placed: list[Placed], region: Box, obstacles: Sequence[Box] = (), gap
 # but never inside a figure or nearer than ``gap`` to another block's ink.
 
 GRID = 2.5   # mm per raster cell
-CAPS = 0.72  # the lettering font's capital height, in letter heights (osifont, GOST type B)
 
 
 def _marks(prim: Primitive, step: float) -> list[tuple[float, float]]:
     """Points along a primitive's ink, ``step`` mm apart (text: its whole box)."""
     import math
-    if prim.kind == "text":
-        x0, y0, x1, y1 = prim.bounds()
-        y1 = y0 + CAPS * (y1 - y0)            # the letters' ink: from the baseline to the capitals' top
-        nx, ny = max(1, int((x1 - x0) / step) + 1), max(1, int((y1 - y0) / step) + 1)
-        return [(x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny) for i in range(nx + 1) for j in range(ny + 1)]
+    if prim.kind == "text":                   # each letter's own ink (its glyph's box), not the line's box
+        from graphplan.graphic.record import ink_boxes
+        x0, y0, _, _ = prim.bounds()
+        out = []
+        for a, b, c, d in ink_boxes(prim.text, prim.size):
+            nx, ny = max(1, int((c - a) / step) + 1), max(1, int((d - b) / step) + 1)
+            out += [(x0 + a + (c - a) * i / nx, y0 + b + (d - b) * j / ny)
+                    for i in range(nx + 1) for j in range(ny + 1)]
+        return out
     if prim.kind in ("circle", "arc"):
         (cx, cy), r = prim.points[0], prim.radius
         a0, a1 = prim.angles if prim.kind == "arc" else (0.0, 360.0)
@@ -251,12 +254,17 @@ class Footprint:
     y0: float
 
 
-_FOOTPRINTS: dict[tuple[int, float, bool], tuple[Record, Footprint]] = {}
+_FOOTPRINTS: dict[tuple, tuple[Record, Footprint]] = {}
 
 
-def footprint(rec: Record, pad: float, solid: bool = False) -> Footprint:
+HULL = "hull"     # a block's ``solid``: each figure's convex hull kept clear (a vector plan's fan)
+
+
+def footprint(rec: Record, pad: float, solid: bool | str = False) -> Footprint:
     """The record's ink on the raster, grown by ``pad`` mm, its enclosed holes filled — or its
-    whole box when ``solid`` (remembered per record: a layout tries the same drawings many times)."""
+    whole box when ``solid`` is True, or each connected figure's convex hull when it is ``HULL``
+    (nothing is nested among a plan's rays, while the notch beside its table stays free);
+    remembered per record: a layout tries the same drawings many times."""
     key = (id(rec), pad, solid)
     hit = _FOOTPRINTS.get(key)
     if hit is not None and hit[0] is rec:
@@ -264,10 +272,29 @@ def footprint(rec: Record, pad: float, solid: bool = False) -> Footprint:
     if len(_FOOTPRINTS) > 4096:
         _FOOTPRINTS.clear()
     fp = _footprint(rec, pad)
-    if solid:
+    if solid == HULL:
+        fp = Footprint(_hulls(fp.mask), fp.x0, fp.y0)
+    elif solid:
         fp = Footprint(fp.mask | True, fp.x0, fp.y0)
     _FOOTPRINTS[key] = (rec, fp)
     return fp
+
+
+def _hulls(mask):
+    """The mask with each connected figure replaced by its filled convex hull."""
+    import numpy as np
+    import shapely
+    from scipy import ndimage
+    labels, n = ndimage.label(mask, structure=np.ones((3, 3)))
+    out = mask.copy()
+    rows, cols = np.mgrid[0:mask.shape[0], 0:mask.shape[1]]
+    for k in range(1, n + 1):
+        r, c = np.nonzero(labels == k)
+        corners = np.concatenate([np.c_[c + dx, r + dy] for dx in (0, 1) for dy in (0, 1)])
+        hull = shapely.MultiPoint(corners).convex_hull
+        r0, r1, c0, c1 = r.min(), r.max() + 1, c.min(), c.max() + 1
+        out[r0:r1, c0:c1] |= shapely.contains_xy(hull, cols[r0:r1, c0:c1] + 0.5, rows[r0:r1, c0:c1] + 0.5)
+    return out
 
 
 def ink(rec: Record, pad: float) -> Footprint:

@@ -106,6 +106,43 @@ def _advances() -> tuple[dict[str, float], float]:
     return advance, box
 
 
+@lru_cache(maxsize=1)
+def _glyph_boxes() -> dict[str, tuple[float, float, float, float] | None]:
+    """Each character's ink box in ems, (x_min, y_min, x_max, y_max) from the baseline at its origin,
+    as the packaged fonts draw it (None: a blank, such as the space)."""
+    from importlib import resources
+
+    from fontTools.ttLib import TTFont
+    folder = resources.files("graphplan") / "data" / "fonts"
+    out: dict[str, tuple[float, float, float, float] | None] = {}
+    for name in ("graphplan-symbols.ttf", "osifont.ttf"):      # osifont's own glyphs win
+        with TTFont(str(folder / name)) as font:
+            em, glyf = font["head"].unitsPerEm, font["glyf"]
+            for code, g in font.getBestCmap().items():
+                gl = glyf[g]
+                out[chr(code)] = (None if not getattr(gl, "numberOfContours", 0) else
+                                  (gl.xMin / em, gl.yMin / em, gl.xMax / em, gl.yMax / em))
+    return out
+
+
+def ink_boxes(text: str, size: float) -> list[tuple[float, float, float, float]]:
+    """The ink of each drawn character (mm, from the text's start on its baseline): the font's glyph
+    boxes at their advances, sub- and superscripts at their size and shift — where the letters
+    really put ink (a lowercase line reaches only half the height of its capitals)."""
+    advance, missing = _advances()
+    boxes = _glyph_boxes()
+    runs_ = [(text, 0.0, size, 0.0)] if is_plain(text) else [(r.text, x0, s, shift)
+                                                             for r, x0, s, shift in run_offsets(text, size)]
+    out = []
+    for t, x, s, shift in runs_:
+        for c in lettering(t):
+            b = boxes.get(c, (0.0, 0.0, missing, 0.72))
+            if b is not None:
+                out.append((x + b[0] * s, shift + b[1] * s, x + b[2] * s, shift + b[3] * s))
+            x += advance.get(c, missing) * s
+    return out
+
+
 def plain_width(text: str, size: float) -> float:
     """Width of ``text`` taken literally (no markup): the sum of the packaged font's advance widths ×
     the height (cairo sets text by advances, without kerning), a missing character as the font's box."""

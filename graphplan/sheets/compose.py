@@ -18,7 +18,7 @@ from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num
 
 FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
-GAP = 8.0          # mm between blocks
+GAP = 6.0          # mm between blocks
 INSET = 5.0        # mm between the frame and the blocks
 
 
@@ -140,6 +140,16 @@ def paginate(f: Form, blocks: list[Block]) -> list[list[Placed]]:
     still takes it, so the last sheet is not left with one drawing; the sheet with the earliest block comes first. A block
     that does not fit even an empty sheet is refused."""
     region, keep_out = field_region(f)
+    greedy = _first_fit(f, blocks)
+    if len(greedy) == 1:
+        return greedy
+    return (_balanced(blocks, len(greedy) - 1, region, keep_out)
+            or _balanced(blocks, len(greedy), region, keep_out) or greedy)
+
+
+def _first_fit(f: Form, blocks: list[Block]) -> list[list[Placed]]:
+    """Sheet after sheet filled with what still fits (in the best of the packing orders)."""
+    region, keep_out = field_region(f)
     rest = _cached(blocks)
     greedy: list[list[Placed]] = []
     while rest:
@@ -154,10 +164,20 @@ def paginate(f: Form, blocks: list[Block]) -> list[list[Placed]]:
                                  "choose a larger --format")
         greedy.append(placed)
         rest = left
-    if len(greedy) == 1:
-        return greedy
-    return (_balanced(blocks, len(greedy) - 1, region, keep_out)
-            or _balanced(blocks, len(greedy), region, keep_out) or greedy)
+    return greedy
+
+
+def fits_sheets(f: Form, blocks: list[Block], n: int) -> bool:
+    """Whether the blocks fit ``n`` sheets of ``f`` (as ``paginate`` shares them out), checked without
+    sharing them out when first-fit already needs no more."""
+    try:
+        greedy = _first_fit(f, blocks)
+    except GraphplanError:
+        return False
+    if len(greedy) <= n:
+        return True
+    region, keep_out = field_region(f)
+    return len(greedy) == n + 1 and _balanced(blocks, n, region, keep_out) is not None
 
 
 def _area(b: Block) -> float:
@@ -239,7 +259,7 @@ def judging_cells(f: Form) -> Cells:
     return Cells((x0 + 1.0, y0 + 1.0, x1 - 1.0, y1 - 1.0), 25.0, [title_block_box(f)])
 
 
-RETRIES = 6
+SLACKS = (0, 0, 1, 2)    # the cells of slack each try of the cover layout allows
 
 
 def covered(f: Form, blocks: list[Block]) -> list[Placed] | None:
@@ -249,8 +269,8 @@ def covered(f: Form, blocks: list[Block]) -> list[Placed] | None:
     region, keep_out = field_region(f)
     cells = judging_cells(f)
     mine = sorted(_cached(blocks), key=lambda b: -_area(b))
-    for attempt in range(RETRIES):
-        out, left = cover_some(mine, region, cells, obstacles=[keep_out], gap=GAP, slack=attempt // 2)
+    for slack in SLACKS:
+        out, left = cover_some(mine, region, cells, obstacles=[keep_out], gap=GAP, slack=slack)
         if not left:
             return out
         mine = left + [b for b in mine if b not in left]     # what found no room goes first
@@ -329,9 +349,8 @@ def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[
         best = None
         names = sorted((p.name for p in pages[full]), key=lambda n: _area(by_name[n]))
         for name in names[:TRIED]:
-            rest = [by_name[p.name] for p in pages[full] if p.name != name]
-            more = [by_name[p.name] for p in pages[sparse]] + [by_name[name]]
-            a, b = _page(f, rest), _page(f, more)
+            a = [p for p in pages[full] if p.name != name]       # the rest keep their places
+            b = _page(f, [by_name[p.name] for p in pages[sparse]] + [by_name[name]])
             if a is None or b is None:
                 continue
             score = max(share(a), share(b))
@@ -345,10 +364,10 @@ def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[
 
 
 def bare_share(f: Form, blocks: list[Block]) -> float:
-    """The estimated share of bare 25 mm cells over the set's sheets as ``compose`` lays them out."""
+    """The estimated share of bare 25 mm cells of the set's sparsest sheet as ``compose`` lays them
+    out (each sheet of a set is judged on its own)."""
     region, _ = field_region(f)
-    pages = laid_out(f, blocks)
-    return sum(bare_cells(p, region, judging_cells(f), GAP) for p in pages) / len(pages)
+    return max(bare_cells(p, region, judging_cells(f), GAP) for p in laid_out(f, blocks))
 
 
 def sampled(path: list, most: int = 4) -> list:

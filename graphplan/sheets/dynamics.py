@@ -12,7 +12,7 @@ from graphplan.graphic.flywheel import Flywheel, construct
 from graphplan.graphic.record import Record
 from graphplan.report.dynamics import dynamics_json
 from graphplan.report.plans import captioned
-from graphplan.sheets.form import Form, table
+from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
 from graphplan.util.words import fixed, num
 
@@ -129,7 +129,8 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     return rec
 
 
-def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 1.0) -> tuple[list[Block], Flywheel]:
+def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 1.0,
+                    tables: float = 1.0) -> tuple[list[Block], Flywheel]:
     lang = args.lang
     w = WORDS[lang]
     dyn = dyn or analyse(st, getattr(args, "delta", None))
@@ -138,22 +139,27 @@ def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 
     drawn = records(f, lang, speed_height=100.0 * size)
     blocks = [Block(name, lambda _k, r=drawn[name], c=w[name]: captioned(r, c))
               for name in ("moments", "wittenbauer", "energy", "inertia", "speed")]
-    blocks.append(Block("positions table", lambda _k: positions_table(doc, lang)))
-    blocks.append(Block("flywheel table", lambda _k: flywheel_table(doc, lang)))
-    blocks.append(Block("motor table", lambda _k: motor_table(doc, lang)))
+    blocks.append(Block("positions table", lambda _k: enlarged(positions_table(doc, lang), tables)))
+    blocks.append(Block("flywheel table", lambda _k: enlarged(flywheel_table(doc, lang), tables)))
+    blocks.append(Block("motor table", lambda _k: enlarged(motor_table(doc, lang), tables)))
     blocks.append(Block("notes", lambda _k: notes(f, doc, lang)))
     return blocks, f
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
-    """Sheet 3: the largest abscissa L at which every block fits one sheet; where none does (a small
-    format), the smallest, carried over to further sheets of the set."""
+    """Sheet 3: the largest abscissa L at which every block fits one sheet (the tables lettered 3.5 mm,
+    else 2.5 mm); where none does (a small format), the smallest, carried over to further sheets
+    of the set."""
     from graphplan.sheets.compose import fits_one
     dyn = analyse(st, getattr(args, "delta", None))
-    for L, size in SIZES:
-        blocks, fw = dynamics_blocks(st, args, L, dyn, size)
-        if fits_one(f, blocks):
-            break
+    for tables in (TABLES, 1.0):         # the tables lettered 3.5 mm unless that costs a further sheet
+        for L, size in SIZES:
+            blocks, fw = dynamics_blocks(st, args, L, dyn, size, tables)
+            if fits_one(f, blocks):
+                break
+        else:
+            continue
+        break
     tf = fields(st, args.lang, f"μ_φ = {num(fw.mu_phi, args.lang, 4)}", 3, 3)
     tf["subtitle"] = WORDS[args.lang]["subtitle"]
     return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")

@@ -11,13 +11,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphplan.drawing.layout import Block
+from graphplan.drawing.layout import HULL, Block
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.report.plans import captioned
 from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
-                                      fits_one, options_of, paginate, remembered, sampled)
-from graphplan.sheets.form import Form, form, table
+                                      fits_one, fits_sheets, options_of, paginate, remembered, sampled)
+from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import FACTORS, ONE_SHEET, acceleration_table, fields, notes
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, force_symbol, num, unit, word
@@ -103,10 +103,10 @@ class ForceDrawn:
 class ForceDrafter:
     """Draws the force sheet's blocks at given size factors, remembering what it drew."""
 
-    def __init__(self, st: Study, opts: SheetOptions):
+    def __init__(self, st: Study, opts: SheetOptions, tables: float = 1.0):
         from graphplan.drawing import charts as forcecharts
         from graphplan.exact import kinetostatics
-        self.st, self.opts = st, opts
+        self.st, self.opts, self.tables = st, opts, tables
         self.phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
         self.ks = kinetostatics.analyse(st, [self.phi])
         self.turn = forcecharts.turn(st)
@@ -149,21 +149,23 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
     caption = f"{w('acceleration')}, {w('position')} {label}, {format_scale('mu_a', plans.mu_a, lang)}"
     arec = captioned(acceleration_records(plans)[q.key], caption)
     n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
-    atab = acceleration_table(acc_doc, n, lang, p)
+    atab = enlarged(acceleration_table(acc_doc, n, lang, p), dr.tables)
     both = beside([arec, atab])
-    blocks.append(Block("acceleration plan", lambda _k: both))
-    itab = inertia_table(st, ks, acc_doc, lang)
+    blocks.append(Block("acceleration plan", lambda _k: both, solid=HULL))
+    itab = enlarged(inertia_table(st, ks, acc_doc, lang), dr.tables)
     blocks.append(Block("inertia table", lambda _k: itab))
     drawn = forcedraw.records(fp, lang)
     for gp in fp.groups:
-        parts = [captioned(drawn[f"{kind} {gp.label}"], _caption(f"{kind} {gp.label}", lang))
-                 for kind in ("group", "polygon", "table")]
+        parts = [captioned(drawn[f"group {gp.label}"], _caption(f"group {gp.label}", lang)),
+                 captioned(drawn[f"polygon {gp.label}"], _caption(f"polygon {gp.label}", lang)),
+                 captioned(enlarged(drawn[f"table {gp.label}"], dr.tables), _caption(f"table {gp.label}", lang))]
         group = beside([parts[0], beside([parts[1]], below=parts[2])])
         blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r))
     scheme = captioned(drawn["mechanism"], f"{w('mechanism')}, {w('at')} {fixed(phi, lang, 2)}°")
     blocks.append(Block("mechanism", lambda _k: scheme))
-    lever = beside([captioned(drawn[name], _caption(name, lang)) for name in ("lever", "results")])
-    blocks.append(Block("lever", lambda _k: lever))
+    lever = beside([captioned(drawn["lever"], _caption("lever", lang)),
+                    captioned(enlarged(drawn["results"], dr.tables), _caption("results", lang))])
+    blocks.append(Block("lever", lambda _k: lever, solid=HULL))
     for name, rec in forcecharts.records(dr.turn, k["charts"], lang, k["hodographs"]).items():
         chart = captioned(rec, _caption(name, lang))
         blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
@@ -172,7 +174,8 @@ def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
 
 def growth(dr: ForceDrafter, d: ForceDrawn, fits) -> list[ForceDrawn]:
     """Each family in turn drawn at the next larger factors while ``fits`` holds: every drawing on
-    the way, ``d`` first."""
+    the way, ``d`` first; a factor that draws the same (the standard scales step coarser than the
+    factors) is passed over without a second entry."""
     path = [d]
     for fam in FORCE_FAMILIES:
         for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
@@ -180,8 +183,14 @@ def growth(dr: ForceDrafter, d: ForceDrawn, fits) -> list[ForceDrawn]:
             if not fits(trial):
                 break
             d = trial
-            path.append(d)
+            if _looks(d) != _looks(path[-1]):
+                path.append(d)
     return path
+
+
+def _looks(d: ForceDrawn) -> tuple:
+    """What a drawing looks like, for telling two apart: its blocks' sizes."""
+    return tuple(tuple(round(v, 3) for v in b.build(1.0).bounds()) for b in d.blocks)
 
 
 def sheet_count(f: Form, d: ForceDrawn) -> int | None:
@@ -192,39 +201,63 @@ def sheet_count(f: Form, d: ForceDrawn) -> int | None:
         return None
 
 
+SAMPLED = 6         # the drawings of each growth path whose layouts are compared
+STARTS = 1          # the growth starts from the largest common factors that fit, this many of them
 SET_SMALLEST = 1.0   # below A1 the plans are not drawn smaller than this to keep one sheet: a set instead
 
 
 @remembered
 def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
-    """The largest common size factor at which the force sheet fits one sheet, then each family
-    grown while it fits — of the drawings on that way, the one that leaves the fewest 25 mm cells
-    bare (a larger force plan is mostly bare paper inside its polygon). Below A1 not smaller than
-    ``SET_SMALLEST``; when nothing fits one sheet, the largest factor (≤ 1) at which every block
-    fits a sheet, for a set."""
+    """The largest common size factors at which the force sheet fits one sheet (``STARTS`` of them),
+    from each every family grown while it fits — of the drawings on those ways, the one that leaves
+    the fewest 25 mm cells bare (a larger force plan is mostly bare paper inside its polygon). Below
+    A1 not smaller than ``SET_SMALLEST``; when nothing fits one sheet, the largest factor (≤ 1) at
+    which every block fits a sheet, for a set, grown while the set needs no more sheets. The tables
+    are lettered 3.5 mm (``TABLES``) unless that costs a further sheet."""
     if not has_loads(st):
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
-    dr = ForceDrafter(st, opts)
+    big, small = ForceDrafter(st, opts, TABLES), ForceDrafter(st, opts, 1.0)
+    for dr in (big, small):
+        one = _one_sheet(dr, f)
+        if one is not None:
+            return one
+    starts = [(dr, _set_start(dr, f)) for dr in (big, small)]
+    starts = [(dr, s) for dr, s in starts if s is not None]
+    if not starts:
+        return big.drawn({fam: FACTORS[-1] for fam in FORCE_FAMILIES})
+    dr, (d, pages) = min(starts, key=lambda x: x[1][1])       # the fewer sheets; equal: the larger tables
+    # a set's drawings grown while the set needs no more sheets
+    path = growth(dr, d, lambda t: fits_sheets(f, t.blocks, pages))
+    return min(sampled(path, SAMPLED), key=lambda t: bare_share(f, t.blocks))
+
+
+def _one_sheet(dr: ForceDrafter, f: Form) -> ForceDrawn | None:
+    """The fullest one-sheet drawing (see ``choose_forces``); None when none fits one sheet."""
     same = lambda k: {fam: k for fam in FORCE_FAMILIES}  # noqa: E731
     smallest = 0.5 if f.name in ONE_SHEET else SET_SMALLEST
+    starts = []
     for k in FACTORS:
-        if k < smallest:
+        if k < smallest or len(starts) == STARTS:
             break
         d = dr.drawn(same(k))
         if fits_one(f, d.blocks):
-            path = growth(dr, d, lambda t: fits_one(f, t.blocks))
-            return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
+            starts.append(d)
+    if not starts:
+        return None
+    tried = [t for d in starts for t in sampled(growth(dr, d, lambda t: fits_one(f, t.blocks)), SAMPLED)]
+    return min(tried, key=lambda t: bare_share(f, t.blocks))
+
+
+def _set_start(dr: ForceDrafter, f: Form) -> tuple[ForceDrawn, int] | None:
+    """The largest common factor (≤ 1) at which every block fits a sheet, and the sheets it needs."""
     for k in FACTORS:
         if k > 1.0:
             continue
-        d = dr.drawn(same(k))
+        d = dr.drawn({fam: k for fam in FORCE_FAMILIES})
         pages = sheet_count(f, d)
-        if pages is None:
-            continue
-        # a set's drawings grown while the set needs no more sheets
-        path = growth(dr, d, lambda t: (sheet_count(f, t) or pages + 1) <= pages)
-        return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
-    return dr.drawn(same(FACTORS[-1]))
+        if pages is not None:
+            return d, pages
+    return None
 
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:

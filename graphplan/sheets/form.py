@@ -150,6 +150,27 @@ def title_block_box(f: Form) -> tuple[float, float, float, float]:
     return fx1 - BLOCK_W, fy0, fx1, fy0 + BLOCK_H
 
 
+LETTERING = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0)   # GOST 2.304 letter heights, mm
+TABLES = 1.4      # the sheets' tables: ruled at 2.5 mm lettering, drawn 1.4 × (3.5 mm letters, 8.4 mm rows)
+
+
+def enlarged(rec: Record, k: float = TABLES) -> Record:
+    """A table (or any record) drawn ``k`` times larger about its origin, its lettering at the
+    nearest letter height of the GOST series (a cell's letters shrunk to fit stay in proportion)."""
+    from dataclasses import replace
+
+    if k == 1.0:
+        return rec
+
+    def grown(p):
+        q = p.moved(0.0, 0.0, k)
+        if p.kind != "text":
+            return q
+        size = min(LETTERING, key=lambda h: abs(h - p.size * k)) if p.size in LETTERING else p.size * k
+        return replace(q, size=size)
+    return Record(rec.title, [grown(p) for p in rec.items], dict(rec.scales))
+
+
 def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
           title: str = "") -> Record:
     """A ruled table; its top-left corner at (0, 0), growing downward (y < 0). The first row is the

@@ -11,14 +11,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.drawing.layout import Block
+from graphplan.drawing.layout import HULL, Block
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
 from graphplan.report.plans import captioned
 from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
-                                      fits_one, number, options_of, paginate, percent, reading, remembered,
+                                      fits_one, fits_sheets, number, options_of, paginate, percent, reading, remembered,
                                       sampled)
-from graphplan.sheets.form import Form, form, table
+from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num, pair_kind, unit, word
@@ -249,8 +249,8 @@ def diagram_options(st: Study, k: float, positions: int | None) -> dict:
 class Drafter:
     """Draws the kinematics sheet's blocks at given size factors, remembering what it drew."""
 
-    def __init__(self, st: Study, opts: SheetOptions, width: float):
-        self.st, self.opts, self.width = st, opts, width
+    def __init__(self, st: Study, opts: SheetOptions, width: float, tables: float = 1.0):
+        self.st, self.opts, self.width, self.tables = st, opts, width, tables
         self.memo: dict = {}
 
     def _once(self, key, make):
@@ -305,10 +305,11 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
     diag = dr.diagrams(k["diagrams"])
     doc = plans_json(plans)
     prec = captioned(position_record(plans), f"{w('positions')}, {format_scale('mu_l', plans.mu_l, lang)}")
-    dims = dimensions_table(st, plans.mu_l, lang)
+    dims = enlarged(dimensions_table(st, plans.mu_l, lang), dr.tables)
     blocks = [Block("position plan", lambda _k: prec), Block("dimensions table", lambda _k: dims)]
     drec = draw_diagrams(diag, lang)
     lab = lab_table(diag, lang) if st.mech.task.count <= 8 else None
+    lab = enlarged(lab, dr.tables) if lab is not None else None
     dblock = drec if lab is None else beside([drec], below=lab)
     blocks.append(Block("diagrams", lambda _k: dblock, solid=True))
     vrec = velocity_records(plans)
@@ -316,7 +317,7 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
              for q in plans.positions]
     for q, cell in zip(plans.positions, cells):
         blocks.append(Block(f"velocity plan {q.key}", lambda _k, c=cell: c))
-    vtab = velocity_table(doc, lang, p)
+    vtab = enlarged(velocity_table(doc, lang, p), dr.tables)
     blocks.append(Block("velocity table", lambda _k: vtab))
     arec = acceleration_records(plans)
     n = 0
@@ -326,8 +327,8 @@ def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
         n += 1
         caption = (f"{w('acceleration')}, {w('position')} {q.index if q.index is not None else ''} "
                    f"(φ = {fixed(q.phi % 360, lang, 1)}°), {format_scale('mu_a', plans.mu_a, lang)}")
-        both = beside([captioned(arec[q.key], caption), acceleration_table(pos, n, lang, p)])
-        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r))
+        both = beside([captioned(arec[q.key], caption), enlarged(acceleration_table(pos, n, lang, p), dr.tables)])
+        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r, solid=HULL))
 
     def notes_block(_k: float) -> Record:
         scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", plans.mu_v),
@@ -411,10 +412,25 @@ def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
     sheet) the largest at which it fits at all; then each family grown in turn (position plan,
     acceleration plans, velocity plans, diagrams) while it still fits — the field filled. When no
     such drawing fits one sheet: the smallest legible factor whose blocks each fit a sheet, for a
-    set of sheets, grown while the set needs no more sheets. Returns the drawing and whether it
-    is one sheet."""
+    set of sheets, grown while the set needs no more sheets. The tables are lettered 3.5 mm
+    (``TABLES``) unless that costs the set a further sheet. Returns the drawing and whether it is
+    one sheet."""
     x0, y0, x1, y1 = f.frame_box
-    dr = Drafter(st, opts, x1 - x0 - 10.0)
+    big, small = (Drafter(st, opts, x1 - x0 - 10.0, t) for t in (TABLES, 1.0))
+    for dr in (big, small):
+        one = _one_sheet(dr, f)
+        if one is not None:
+            return one, True
+    starts = [(dr, s) for dr, s in ((dr, _set_start(dr, f)) for dr in (big, small)) if s is not None]
+    if not starts:
+        return big.drawn(_same(FACTORS[-1])), False
+    dr, (d, pages) = min(starts, key=lambda x: x[1][1])       # the fewer sheets; equal: the larger tables
+    return grow(dr, d, lambda t: fits_sheets(f, t.blocks, pages), SET_LARGEST), False
+
+
+def _one_sheet(dr: Drafter, f: Form) -> Drawn | None:
+    """The fullest one-sheet drawing (see ``choose``); None when no legible one fits one sheet."""
+    x0, y0, x1, y1 = f.frame_box
     free = (x1 - x0) * (y1 - y0) - 190.0 * 60.0
     base = dr.drawn(_same(1.0))
     area = sum((b[2] - b[0] + 8.0) * (b[3] - b[1] + 8.0) for b in (blk.build(1.0).bounds() for blk in base.blocks))
@@ -428,7 +444,13 @@ def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
         if one(d):
             path = [d]
             grow(dr, d, one, path=path)
-            return min(sampled(path), key=lambda t: bare_share(f, t.blocks)), True
+            return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
+    return None
+
+
+def _set_start(dr: Drafter, f: Form) -> tuple[Drawn, int] | None:
+    """The smallest legible factor whose blocks each fit a sheet (the fewest sheets; the smallest
+    that fits when none is legible), and the sheets it needs."""
     layable = []
     for k in FACTORS:
         d = dr.drawn(_same(k))
@@ -439,17 +461,9 @@ def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
         layable.append(d)
     readable = [d for d in layable if legible(d)]
     if not layable:
-        return dr.drawn(_same(FACTORS[-1])), False
-    d = readable[-1] if readable else layable[0]     # the smallest legible: the fewest sheets
-    pages = len(paginate(f, d.blocks))
-    return grow(dr, d, lambda t: _pages(f, t) <= pages, SET_LARGEST), False
-
-
-def _pages(f: Form, d: Drawn) -> int:
-    try:
-        return len(paginate(f, d.blocks))
-    except GraphplanError:
-        return 10 ** 6
+        return None
+    d = readable[-1] if readable else layable[0]
+    return d, len(paginate(f, d.blocks))
 
 
 def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0], path: list | None = None) -> Drawn:
