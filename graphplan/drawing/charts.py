@@ -175,11 +175,10 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
         if abs(y) > 1.5:      # the position's ordinate, as the points are plotted from the table
             rec.segment((x, 0.0), (x, y), role="grid", layer="diagrams", step=step)
         # the position's thin line across the chart's field, as the s, v, a diagrams draw theirs
-        below = y if y < -1.5 else -7.5          # clear of the position's number under the axis
-        for a, b in ((lo / mu, below), (max(0.0, y), hi / mu)):
+        for a, b in ((lo / mu, min(0.0, y)), (max(0.0, y), hi / mu)):
             if b - a > 1.0:
                 rec.segment((x, a), (x, b), role="grid", layer="diagrams", step=f"positions of {step}")
-        rec.label((x, -5.0), str(pos), size=2.5, anchor="middle", step=step)
+        rec.label((x + 1.0, -5.0), str(pos), size=2.5, step=step)     # beside its line, not struck through
     rec.label((width + 6.0, -1.0), "φ", size=3.5, step=step)
     rec.label((2.0, hi / mu + 5.0), axis, size=3.5, step=step)
     tick = _nice_step(hi - lo, 4)
