@@ -10,8 +10,8 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from graphplan.drawing.layout import (Block, Cells, Placed, bare_cells, cover_some, declutter, footprint, improve,
-                                      nest_some, spread_nested)
+from graphplan.drawing.layout import (GRID, Block, Cells, Placed, bare_cells, cover_some, declutter, footprint,
+                                      improve, nest_some, spread_nested)
 from graphplan.graphic.record import Record
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
@@ -93,7 +93,6 @@ def field_region(f: Form) -> tuple[tuple[float, float, float, float], tuple[floa
     corner is moved (by under one raster cell) onto the raster of the 25 mm judging cells, so that
     no raster cell of the layout straddles a judging cell's edge: the count the layout makes is the
     count the sheet is judged by."""
-    from graphplan.drawing.layout import GRID
     x0, y0, x1, y1 = f.frame_box
     tb = title_block_box(f)
     cells = judging_cells(f)
@@ -211,10 +210,18 @@ def _balanced(blocks: list[Block], count: int, region, keep_out) -> list[list[Pl
 
 def fits_one(f: Form, blocks: list[Block]) -> bool:
     """Whether every block fits one sheet of form ``f`` in one of the packing orders."""
+    return _packed(f, blocks) is not None
+
+
+def _packed(f: Form, blocks: list[Block]) -> list[Placed] | None:
+    """The blocks packed on one sheet in the first of the packing orders that holds them all."""
     region, keep_out = field_region(f)
     blocks = _cached(blocks)
-    return any(not nest_some(_ordered(blocks, how), region, obstacles=[keep_out], gap=GAP)[1]
-               for how in ORDERS)
+    for how in ORDERS:
+        placed, left = nest_some(_ordered(blocks, how), region, obstacles=[keep_out], gap=GAP)
+        if not left:
+            return placed
+    return None
 
 
 def beside(records: list[Record], gap: float = 10.0, below: Record | None = None) -> Record:
@@ -323,18 +330,18 @@ def _page(f: Form, blocks: list[Block]) -> list[Placed] | None:
     out = covered(f, blocks)
     if out is not None:
         return out
+    placed = _packed(f, blocks)
+    if placed is None:
+        return None
     region, keep_out = field_region(f)
-    for how in ORDERS:
-        placed, left = nest_some(_ordered(_cached(blocks), how), region, obstacles=[keep_out], gap=GAP)
-        if not left:
-            return spread_nested(placed, region, [keep_out], GAP)
-    return None
+    return spread_nested(placed, region, [keep_out], GAP)
 
 
 def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[list[Placed]]:
     """A set's drawings shared out so that no sheet stays sparse: a drawing of the fullest sheet
     (the smaller ones tried first) moves to the sparsest when both still hold theirs and the
-    sparser of the two leaves fewer cells bare — a few moves at most (each costs two layouts)."""
+    sparser of the two leaves fewer cells bare (the rest of the fuller sheet keep their places) — a
+    few moves at most, each trying a few drawings (each try lays out the sparser sheet again)."""
     region, _ = field_region(f)
     cells = judging_cells(f)
     by_name = {b.name: b for b in blocks}
@@ -351,7 +358,7 @@ def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[
         for name in names[:TRIED]:
             a = [p for p in pages[full] if p.name != name]       # the rest keep their places
             b = _page(f, [by_name[p.name] for p in pages[sparse]] + [by_name[name]])
-            if a is None or b is None:
+            if b is None:
                 continue
             score = max(share(a), share(b))
             if score < worst - 1e-9 and (best is None or score < best[0]):

@@ -201,16 +201,15 @@ def sheet_count(f: Form, d: ForceDrawn) -> int | None:
         return None
 
 
-SAMPLED = 6         # the drawings of each growth path whose layouts are compared
-STARTS = 1          # the growth starts from the largest common factors that fit, this many of them
+SAMPLED = 6         # the drawings of the growth path whose layouts are compared
 SET_SMALLEST = 1.0   # below A1 the plans are not drawn smaller than this to keep one sheet: a set instead
 
 
 @remembered
 def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
-    """The largest common size factors at which the force sheet fits one sheet (``STARTS`` of them),
-    from each every family grown while it fits — of the drawings on those ways, the one that leaves
-    the fewest 25 mm cells bare (a larger force plan is mostly bare paper inside its polygon). Below
+    """The largest common size factor at which the force sheet fits one sheet, then every family
+    grown while it fits — of the drawings on that way, the one that leaves the fewest 25 mm cells
+    bare (a larger force plan is mostly bare paper inside its polygon). Below
     A1 not smaller than ``SET_SMALLEST``; when nothing fits one sheet, the largest factor (≤ 1) at
     which every block fits a sheet, for a set, grown while the set needs no more sheets. The tables
     are lettered 3.5 mm (``TABLES``) unless that costs a further sheet."""
@@ -233,19 +232,15 @@ def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
 
 def _one_sheet(dr: ForceDrafter, f: Form) -> ForceDrawn | None:
     """The fullest one-sheet drawing (see ``choose_forces``); None when none fits one sheet."""
-    same = lambda k: {fam: k for fam in FORCE_FAMILIES}  # noqa: E731
     smallest = 0.5 if f.name in ONE_SHEET else SET_SMALLEST
-    starts = []
     for k in FACTORS:
-        if k < smallest or len(starts) == STARTS:
-            break
-        d = dr.drawn(same(k))
+        if k < smallest:
+            return None
+        d = dr.drawn({fam: k for fam in FORCE_FAMILIES})
         if fits_one(f, d.blocks):
-            starts.append(d)
-    if not starts:
-        return None
-    tried = [t for d in starts for t in sampled(growth(dr, d, lambda t: fits_one(f, t.blocks)), SAMPLED)]
-    return min(tried, key=lambda t: bare_share(f, t.blocks))
+            path = growth(dr, d, lambda t: fits_one(f, t.blocks))
+            return min(sampled(path, SAMPLED), key=lambda t: bare_share(f, t.blocks))
+    return None
 
 
 def _set_start(dr: ForceDrafter, f: Form) -> tuple[ForceDrawn, int] | None:
