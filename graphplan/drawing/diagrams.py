@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.graphic.chords import periodic_spline
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import Record, line_pitch
 from graphplan.util.words import num, unit, word
 
 if TYPE_CHECKING:
@@ -126,7 +126,7 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 def _axes(rec: Record, y0: float, lo: float, hi: float, x_from: float, L: float, sym: str, sub: str,
           step: str) -> None:
     """The ordinate axis (arrow up) at x = 0 and the time axis (arrow right), with their letters."""
-    rec.vector((0.0, y0 + lo - 3.0), (0.0, y0 + hi + TOP), role="construction", width=AXIS_W,
+    rec.vector((0.0, y0 + lo - 1.0), (0.0, y0 + hi + TOP), role="construction", width=AXIS_W,
                layer=LAYER, step=f"axes of {step}")
     rec.vector((x_from, y0), (L + 10.0, y0), role="construction", width=AXIS_W, layer=LAYER,
                step=f"axes of {step}")
@@ -199,7 +199,7 @@ def _tangents(rec: Record, x: np.ndarray, y: np.ndarray, alpha: np.ndarray, sym:
 def _caption(rec: Record, L: float, y: float, lines: list[str]) -> None:
     """Scale captions to the right of a diagram."""
     for i, line in enumerate(lines):
-        rec.label((L + 18.0, y - 1.0 - 5.5 * i), line, size=TEXT, layer=LAYER, step="scales")
+        rec.label((L + 18.0, y - 1.0 - line_pitch(TEXT) * i), line, size=TEXT, layer=LAYER, step="scales")
 
 
 def diagrams_svg(d: Diagrams, lang: str | None = None) -> str:

@@ -11,8 +11,8 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, lettering, plain_width,
-                                      run_offsets)
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, lettering,
+                                      plain_width, run_offsets)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
@@ -123,13 +123,13 @@ def _text(dwg, prim: Primitive, h: float):
     font that has it."""
     anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
     if is_plain(prim.text) and not _MISSING.search(prim.text):
-        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(prim.size),
+        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
                         font_family=FONT, text_anchor=anchor, fill="black")
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
     pieces, total = _set(prim.text, prim.size)
     x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
-    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(prim.size), font_family=FONT,
+    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(em(prim.size)), font_family=FONT,
                   fill="black")
     shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
     for piece, small, x0, up, advance in pieces:
@@ -139,7 +139,7 @@ def _text(dwg, prim: Primitive, h: float):
         if abs(x0 - pen) > 1e-6:
             kw["dx"] = [_f(x0 - pen)]
         if small:
-            kw["font_size"] = _f(prim.size * SMALL)
+            kw["font_size"] = _f(em(prim.size) * SMALL)
         if piece in MISSING:
             kw["font_family"] = ARROW_FONT
         el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
@@ -166,31 +166,10 @@ def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, fl
     return out, pen
 
 
-@lru_cache(maxsize=8192)
 def _advance(piece: str, size: float) -> float:
-    """How far the pen moves over ``piece`` at letter height ``size`` (mm) in the font that draws
-    it (osifont, DejaVu Sans for the arrow): the glyphs' ink to their right edge plus any trailing
-    spaces; the estimate of graphic.record where matplotlib is absent."""
-    try:
-        from matplotlib.font_manager import FontProperties
-        from matplotlib.textpath import TextPath
-    except ImportError:
-        return plain_width(piece, size)
-    prop = _font(symbols=piece in MISSING)
-    body = lettering(piece).rstrip(" ")
-    trailing = len(lettering(piece)) - len(body)
-    if body.strip():
-        ext = TextPath((0, 0), body + "|", size=size, prop=prop).get_extents()
-        bar = TextPath((0, 0), "|", size=size, prop=prop).get_extents()
-        width = ext.x0 + ext.width - (bar.x0 + bar.width)      # the advance, up to the next glyph
-    else:
-        width = 0.0
-        trailing = len(lettering(piece))
-    if trailing:
-        one = TextPath((0, 0), "| |", size=size, prop=prop).get_extents().width - \
-            TextPath((0, 0), "||", size=size, prop=prop).get_extents().width
-        width += trailing * one
-    return float(width)
+    """How far the pen moves over ``piece`` at letter height ``size`` (mm): the advances of the font
+    that draws it, as cairo and browsers set text (graphic.record.plain_width)."""
+    return plain_width(piece, size)
 
 
 def _svg_lettering(text: str) -> str:
@@ -243,7 +222,7 @@ def text_outline(prim: Primitive, height: float) -> str:
         x_run = start if run.stacked else pen
         start = x = x_run
         for piece in (p for p in _MISSING.split(run.text) if p):     # → ⊥ ∥ … from the symbols' font
-            tp = TextPath((0, 0), lettering(piece), size=size, prop=_font(symbols=piece in MISSING))
+            tp = TextPath((0, 0), lettering(piece), size=em(size), prop=_font(symbols=piece in MISSING))
             pieces.append((tp, x, up))
             ext = tp.get_extents()
             x += (ext.x0 + ext.width if len(tp.vertices) else 0.0) + 0.25 * size * piece.endswith(" ")

@@ -39,7 +39,7 @@ class Primitive:
     layer: str = "construction"
     step: str = ""
     text: str = ""
-    size: float = 3.5            # text height, mm (GOST 2.304 series)
+    size: float = 3.5            # text height h, mm: the capitals' height (GOST 2.304 series)
     radius: float = 0.0
     angles: tuple[float, float] = (0.0, 360.0)
     anchor: str = "start"        # text: start, middle, end
@@ -74,8 +74,17 @@ class Primitive:
             x, y = self.points[0]
             w = text_width(self.text, self.size)
             x0 = x - {"start": 0.0, "middle": w / 2, "end": w}[self.anchor]
-            return x0, y, x0 + w, y + self.size
+            _, lo, _, hi = self.ink()
+            return x0, min(y, lo), x0 + w, max(y + self.size, hi)
         return min(xs), min(ys), max(xs), max(ys)
+
+    def ink(self) -> tuple[float, float, float, float]:
+        """Where a text's letters put ink (the union of their glyph boxes, ``ink_boxes``), in drawing
+        mm: lower than the baseline for descenders and subscripts, narrower than the advance box.
+        Other primitives: their bounds."""
+        if self.kind != "text":
+            return self.bounds()
+        return _ink(self.text, self.size, self.anchor, self.points[0])
 
 
 # characters osifont lacks, replaced on the drawing (records keep the real text)
@@ -136,18 +145,49 @@ def ink_boxes(text: str, size: float) -> list[tuple[float, float, float, float]]
     out = []
     for t, x, s, shift in runs_:
         for c in lettering(t):
+            e = em(s)
             b = boxes.get(c, (0.0, 0.0, missing, 0.72))
             if b is not None:
-                out.append((x + b[0] * s, shift + b[1] * s, x + b[2] * s, shift + b[3] * s))
-            x += advance.get(c, missing) * s
+                out.append((x + b[0] * e, shift + b[1] * e, x + b[2] * e, shift + b[3] * e))
+            x += advance.get(c, missing) * e
     return out
+
+
+@lru_cache(maxsize=8192)
+def _ink(text: str, size: float, anchor: str, at: Point) -> tuple[float, float, float, float]:
+    x, y = at
+    w = text_width(text, size)
+    x0 = x - {"start": 0.0, "middle": w / 2, "end": w}[anchor]
+    boxes = ink_boxes(text, size)
+    if not boxes:
+        return x0, y, x0, y
+    return (x0 + min(b[0] for b in boxes), y + min(b[1] for b in boxes),
+            x0 + max(b[2] for b in boxes), y + max(b[3] for b in boxes))
+
+
+def cap_height() -> float:
+    """The lettering font's capitals' height in ems (osifont's H: 0.737)."""
+    return _glyph_boxes()["H"][3]
+
+
+def em(size: float) -> float:
+    """The font size (em, mm) that letters capitals ``size`` mm high: GOST 2.304's letter height h
+    is the capitals' height, not the em."""
+    return size / cap_height()
+
+
+def line_pitch(size: float) -> float:
+    """Baseline to baseline of lines of ``size`` mm lettering set one under another: the capitals,
+    a subscript's depth and 2 mm of paper between one line's ink and the next (closer lines read as
+    one block of ink, GOST 2.304 asks for at least the letter height between lines' bases anyway)."""
+    return 1.6 * size + 2.0
 
 
 def plain_width(text: str, size: float) -> float:
     """Width of ``text`` taken literally (no markup): the sum of the packaged font's advance widths ×
-    the height (cairo sets text by advances, without kerning), a missing character as the font's box."""
+    the em (cairo sets text by advances, without kerning), a missing character as the font's box."""
     advance, box = _advances()
-    return size * sum(advance.get(c, box) for c in lettering(text))
+    return em(size) * sum(advance.get(c, box) for c in lettering(text))
 
 
 def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]:

@@ -1,25 +1,28 @@
-"""Composing a sheet set: the frame and the title block of each sheet, the blocks placed in the free
-field in order, and whatever does not fit carried to the next sheet of the same set (``x.svg``,
-``x-2.svg`` …, each titled "sheet N of M") — a drawing never fails for want of room.
+"""A sheet set: the frame and the title block of each sheet, the drawings where the sheet's composition
+put them (drawing/layout.py: zones by construction), the further sheets of a set (``x.svg``,
+``x-2.svg`` …, each titled "sheet N of M"), written as SVG, PDF, PNG or DXF.
+
+The scales of a sheet's families of drawings are chosen by arithmetic (``choose_levels``): the largest
+common size at which the composition fits, then each family grown in turn while it still fits —
+sums of the drawings' sizes at candidate scales, never a trial layout.
 
 Also the sheets' numbers as the lab writes them (``number``: significant figures, no e-notation,
 "—" for what the ruler cannot read) and the drawing's scale for the title block (``drawing_scale``)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from graphplan.drawing.layout import (GRID, Block, Cells, Placed, bare_cells, cover_some, declutter, footprint,
-                                      improve, nest_some, spread_nested)
-from graphplan.graphic.record import Record
+from graphplan.drawing.layout import GAP, Placed
+from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num
 
 FORMATS_OUT = (".svg", ".pdf", ".png", ".dxf")
-GAP = 6.0          # mm between blocks
-INSET = 5.0        # mm between the frame and the blocks
+INSET = 5.0        # mm between the frame and the drawings
 
 
 @dataclass
@@ -41,7 +44,7 @@ def options_of(obj) -> SheetOptions:
 
 @dataclass
 class Sheet:
-    """A laid-out sheet: its form, the whole construction record and where each block went;
+    """A composed sheet: its form, the whole construction record and where each drawing went;
     ``more`` holds the further sheets of the same set (sheet 2, 3 … of M)."""
     form: Form
     record: Record
@@ -88,307 +91,20 @@ def page_path(path: Path, n: int) -> Path:
     return path if n == 1 else path.with_name(f"{path.stem}-{n}{path.suffix}")
 
 
-def field_region(f: Form) -> tuple[tuple[float, float, float, float], tuple[float, float, float, float]]:
-    """The free field inside the frame and the title block's keep-out box. The field's lower-left
-    corner is moved (by under one raster cell) onto the raster of the 25 mm judging cells, so that
-    no raster cell of the layout straddles a judging cell's edge: the count the layout makes is the
-    count the sheet is judged by."""
+def field_of(f: Form) -> tuple[float, float, float, float]:
+    """The field the drawings may use: the frame's inside, ``INSET`` mm clear of its line."""
     x0, y0, x1, y1 = f.frame_box
+    return x0 + INSET, y0 + INSET, x1 - INSET, y1 - INSET
+
+
+def keep_out(f: Form) -> tuple[float, float, float, float]:
+    """The title block with the clearance around it that no drawing enters."""
     tb = title_block_box(f)
-    cells = judging_cells(f)
-    wx0, _, _, wy1 = cells.within
-    bottom = wy1 - ((wy1 - cells.within[1]) // cells.size) * cells.size     # the lowest whole row's edge
-    rx0 = wx0 + math.ceil((x0 + INSET - wx0) / GRID - 1e-9) * GRID
-    ry0 = bottom + math.ceil((y0 + INSET - bottom) / GRID - 1e-9) * GRID
-    return ((rx0, ry0, x1 - INSET, y1 - INSET),
-            (tb[0] - INSET, tb[1], tb[2], tb[3] + INSET))
+    return tb[0] - GAP, tb[1], tb[2], tb[3] + GAP
 
 
-ORDERS = ("given", "area", "height", "width")
-
-
-def _ordered(blocks: list[Block], how: str) -> list[Block]:
-    """The blocks in one of the packing orders: as given, or largest (area, height, width) first —
-    bottom-left fill packs big pieces first best."""
-    if how == "given":
-        return list(blocks)
-    size = {}
-    for b in blocks:
-        x0, y0, x1, y1 = b.build(b.factors[0]).bounds()
-        size[b.name] = {"area": (x1 - x0) * (y1 - y0), "height": y1 - y0, "width": x1 - x0}[how]
-    return sorted(blocks, key=lambda b: -size[b.name])
-
-
-def _cached(blocks: list[Block]) -> list[Block]:
-    """The same blocks, each drawn once per factor."""
-    out = []
-    for b in blocks:
-        memo: dict[float, Record] = {}
-
-        def build(k: float, b=b, memo=memo) -> Record:
-            if k not in memo:
-                memo[k] = b.build(k)
-            return memo[k]
-        out.append(Block(b.name, build, b.factors, b.solid))
-    return out
-
-
-def paginate(f: Form, blocks: list[Block]) -> list[list[Placed]]:
-    """The blocks placed sheet after sheet: first-fit finds how many sheets the set needs (a sheet
-    fewer is tried), then the blocks (largest first) are shared out, each to the emptiest sheet that
-    still takes it, so the last sheet is not left with one drawing; the sheet with the earliest block comes first. A block
-    that does not fit even an empty sheet is refused."""
-    region, keep_out = field_region(f)
-    greedy = _first_fit(f, blocks)
-    if len(greedy) == 1:
-        return greedy
-    return (_balanced(blocks, len(greedy) - 1, region, keep_out)
-            or _balanced(blocks, len(greedy), region, keep_out) or greedy)
-
-
-def _first_fit(f: Form, blocks: list[Block]) -> list[list[Placed]]:
-    """Sheet after sheet filled with what still fits (in the best of the packing orders)."""
-    region, keep_out = field_region(f)
-    rest = _cached(blocks)
-    greedy: list[list[Placed]] = []
-    while rest:
-        for how in ORDERS:
-            placed, left = nest_some(_ordered(rest, how), region, obstacles=[keep_out], gap=GAP)
-            if not left:
-                break
-        else:
-            placed, left = nest_some(rest, region, obstacles=[keep_out], gap=GAP)
-        if not placed:
-            raise GraphplanError(f"the {rest[0].name} is larger than a whole {f.name} sheet; "
-                                 "choose a larger --format")
-        greedy.append(placed)
-        rest = left
-    return greedy
-
-
-def fits_sheets(f: Form, blocks: list[Block], n: int) -> bool:
-    """Whether the blocks fit ``n`` sheets of ``f`` (as ``paginate`` shares them out), checked without
-    sharing them out when first-fit already needs no more."""
-    try:
-        greedy = _first_fit(f, blocks)
-    except GraphplanError:
-        return False
-    if len(greedy) <= n:
-        return True
-    region, keep_out = field_region(f)
-    return len(greedy) == n + 1 and _balanced(blocks, n, region, keep_out) is not None
-
-
-def _area(b: Block) -> float:
-    x0, y0, x1, y1 = b.build(b.factors[0]).bounds()
-    return (x1 - x0) * (y1 - y0)
-
-
-def _balanced(blocks: list[Block], count: int, region, keep_out) -> list[list[Placed]] | None:
-    """``count`` sheets with the blocks shared out largest first, each to the emptiest sheet that
-    takes it; None when some block fits none."""
-    cached = _cached(blocks)
-    order = {b.name: k for k, b in enumerate(cached)}
-    sheets: list[list[Block]] = [[] for _ in range(count)]
-    load = [0.0] * count
-
-    def cover(b: Block) -> float:       # the paper a block really takes: its footprint
-        return float(footprint(b.build(b.factors[0]), GAP / 2, b.solid).mask.sum())
-    for b in sorted(cached, key=lambda b: -_area(b)):
-        for n in sorted(range(count), key=lambda n: load[n]):
-            trial = sorted(sheets[n] + [b], key=lambda x: -_area(x))
-            if not nest_some(trial, region, obstacles=[keep_out], gap=GAP)[1]:
-                sheets[n].append(b)
-                load[n] += cover(b)
-                break
-        else:
-            return None
-    sheets.sort(key=lambda s: min(order[b.name] for b in s) if s else len(order))
-    return [nest_some(sorted(s, key=lambda x: -_area(x)), region, obstacles=[keep_out], gap=GAP)[0]
-            for s in sheets if s]
-
-
-def fits_one(f: Form, blocks: list[Block]) -> bool:
-    """Whether every block fits one sheet of form ``f`` in one of the packing orders."""
-    return _packed(f, blocks) is not None
-
-
-def _packed(f: Form, blocks: list[Block]) -> list[Placed] | None:
-    """The blocks packed on one sheet in the first of the packing orders that holds them all."""
-    region, keep_out = field_region(f)
-    blocks = _cached(blocks)
-    for how in ORDERS:
-        placed, left = nest_some(_ordered(blocks, how), region, obstacles=[keep_out], gap=GAP)
-        if not left:
-            return placed
-    return None
-
-
-def beside(records: list[Record], gap: float = 10.0, below: Record | None = None) -> Record:
-    """Records side by side, tops aligned, and ``below`` under them, left-aligned: a drawing with its
-    table next to it."""
-    out = Record(" | ".join(r.title for r in records))
-    x = 0.0
-    bottom = 0.0
-    for r in records:
-        x0, y0, x1, y1 = r.bounds()
-        out.extend(r.moved(x - x0, -y1))
-        x += x1 - x0 + gap
-        bottom = min(bottom, -(y1 - y0))
-    if below is not None:
-        x0, y0, x1, y1 = below.bounds()
-        out.extend(below.moved(-x0, bottom - gap - y1))
-    return out
-
-
-def remembered(choose):
-    """A scale choice remembered per scene (its whole content, not its file's name), format and
-    options: ``plans``, ``diagrams``, the sheet and the explorer of one scene ask for the same
-    layout, and each layout costs seconds. A few are kept."""
-    import functools
-    memo: dict[tuple, object] = {}
-
-    @functools.wraps(choose)
-    def wrapper(st, f: Form, opts: SheetOptions):
-        key = (repr(st.mech), f.name, repr(opts))
-        if key not in memo:
-            if len(memo) >= 8:
-                memo.pop(next(iter(memo)))
-            memo[key] = choose(st, f, opts)
-        return memo[key]
-    return wrapper
-
-
-def judging_cells(f: Form) -> Cells:
-    """The 25 mm cells a sheet is judged by: whole cells inside the frame (1 mm off its line), the
-    title block's left out."""
-    x0, y0, x1, y1 = f.frame_box
-    return Cells((x0 + 1.0, y0 + 1.0, x1 - 1.0, y1 - 1.0), 25.0, [title_block_box(f)])
-
-
-SLACKS = (0, 0, 1, 2)    # the cells of slack each try of the cover layout allows
-
-
-def covered(f: Form, blocks: list[Block]) -> list[Placed] | None:
-    """The blocks (largest first) each put where its ink reaches the most bare 25 mm cells; what
-    finds no room is tried first next time, then with a little slack for a tighter packing. None
-    when no try places them all."""
-    region, keep_out = field_region(f)
-    cells = judging_cells(f)
-    mine = sorted(_cached(blocks), key=lambda b: -_area(b))
-    for slack in SLACKS:
-        out, left = cover_some(mine, region, cells, obstacles=[keep_out], gap=GAP, slack=slack)
-        if not left:
-            return out
-        mine = left + [b for b in mine if b not in left]     # what found no room goes first
-    return None
-
-
-def fill(f: Form, blocks: list[Block], placed: list[Placed]) -> list[Placed]:
-    """One sheet's blocks laid out to use the field (``covered``); when that never places them all,
-    the packing ``placed`` spread over the sheet. (Measured on the gallery: the cover layout leaves
-    15–43 % of the cells bare where the spread packing left 20–53 %; spreading the cover layout
-    afterwards only loses cells.)"""
-    region, keep_out = field_region(f)
-    names = {p.name for p in placed}
-    out = covered(f, [b for b in blocks if b.name in names])
-    return out if out is not None else spread_nested(placed, region, [keep_out], GAP)
-
-
-_LAID: dict[tuple, tuple[list[Block], list[list[Placed]]]] = {}
-
-
-def laid_out(f: Form, blocks: list[Block]) -> list[list[Placed]]:
-    """The sheets of the set as ``compose`` draws them: one sheet when the cover layout holds
-    everything, else the packing's sheets each filled (``fill``); then each bettered (``improve``).
-    Remembered for the same blocks, since the scale choice lays out the drawing it then composes."""
-    key = (f.name, tuple(id(b) for b in blocks))
-    hit = _LAID.get(key)
-    if hit is not None and all(a is b for a, b in zip(hit[0], blocks)):
-        return hit[1]
-    if len(_LAID) > 64:
-        _LAID.clear()
-    region, keep_out = field_region(f)
-    whole = covered(f, blocks)
-    if whole is not None:
-        pages = [whole]
-    else:
-        packed = paginate(f, blocks)
-        pages = ([spread_nested(packed[0], region, [keep_out], GAP)] if len(packed) == 1
-                 else shared_out(f, blocks, [fill(f, blocks, placed) for placed in packed]))
-    pages = [improve(placed, region, judging_cells(f), [keep_out], GAP) for placed in pages]
-    _LAID[key] = (list(blocks), pages)
-    return pages
-
-
-MOVES, TRIED = 2, 6
-
-
-def _page(f: Form, blocks: list[Block]) -> list[Placed] | None:
-    """One sheet of these blocks as ``fill`` lays it out (the cover layout, else a packing spread
-    over the sheet); None when they do not fit one sheet."""
-    out = covered(f, blocks)
-    if out is not None:
-        return out
-    placed = _packed(f, blocks)
-    if placed is None:
-        return None
-    region, keep_out = field_region(f)
-    return spread_nested(placed, region, [keep_out], GAP)
-
-
-def shared_out(f: Form, blocks: list[Block], pages: list[list[Placed]]) -> list[list[Placed]]:
-    """A set's drawings shared out so that no sheet stays sparse: a drawing of the fullest sheet
-    (the smaller ones tried first) moves to the sparsest when both still hold theirs and the
-    sparser of the two leaves fewer cells bare (the rest of the fuller sheet keep their places) — a
-    few moves at most, each trying a few drawings (each try lays out the sparser sheet again)."""
-    region, _ = field_region(f)
-    cells = judging_cells(f)
-    by_name = {b.name: b for b in blocks}
-    share = lambda placed: bare_cells(placed, region, cells, GAP)  # noqa: E731
-    pages = list(pages)
-    for _ in range(MOVES):
-        shares = [share(p) for p in pages]
-        full, sparse = shares.index(min(shares)), shares.index(max(shares))
-        if full == sparse:
-            break
-        worst = shares[sparse]
-        best = None
-        names = sorted((p.name for p in pages[full]), key=lambda n: _area(by_name[n]))
-        for name in names[:TRIED]:
-            a = [p for p in pages[full] if p.name != name]       # the rest keep their places
-            b = _page(f, [by_name[p.name] for p in pages[sparse]] + [by_name[name]])
-            if b is None:
-                continue
-            score = max(share(a), share(b))
-            if score < worst - 1e-9 and (best is None or score < best[0]):
-                best = (score, a, b)
-        if best is None:
-            break
-        pages[full], pages[sparse] = best[1], best[2]
-    order = {b.name: k for k, b in enumerate(blocks)}
-    return sorted(pages, key=lambda p: min(order[x.name] for x in p))
-
-
-def bare_share(f: Form, blocks: list[Block]) -> float:
-    """The estimated share of bare 25 mm cells of the set's sparsest sheet as ``compose`` lays them
-    out (each sheet of a set is judged on its own)."""
-    region, _ = field_region(f)
-    return max(bare_cells(p, region, judging_cells(f), GAP) for p in laid_out(f, blocks))
-
-
-def sampled(path: list, most: int = 4) -> list:
-    """At most ``most`` drawings of a growth path, evenly, its first and last among them: the
-    candidates whose layouts are compared (each costs a whole layout, ~0.6 s)."""
-    if len(path) <= most:
-        return list(path)
-    return [path[k] for k in sorted({round(k * (len(path) - 1) / (most - 1)) for k in range(most)})]
-
-
-def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
-    """Frame + title block + the blocks placed in the free field, labels decluttered; what does not
-    fit goes to further sheets of the set (title block "sheet N of M")."""
-    pages = laid_out(f, blocks)
+def compose(f: Form, pages: list[list[Placed]], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
+    """Each page's frame, title block ("sheet N of M") and placed drawings: the set's sheets."""
     sheets = []
     for n, placed in enumerate(pages, 1):
         tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))
@@ -397,10 +113,149 @@ def compose(f: Form, blocks: list[Block], title_fields: dict[str, str], lang: st
         rec.extend(title_block(f, tf, lang))
         for p in placed:
             rec.extend(p.record)
-        sheets.append(Sheet(f, declutter(rec), placed, lang))
+        sheets.append(Sheet(f, rec, placed, lang))
     first = sheets[0]
     first.more = sheets[1:]
     return first
+
+
+# -- captions and notes ------------------------------------------------------------------------------
+
+CAPTION = 5.0        # a drawing's name, mm (GOST 2.304)
+CAPTION_2 = 3.5      # its second line (the position's angle, the scale)
+CAPTION_GAP = 4.0    # mm between a drawing and its caption
+
+
+def captioned(rec: Record, title: str, second: str = "") -> Record:
+    """The drawing with its caption centred under it (its name 5 mm, a second line 3.5 mm): the
+    caption belongs to the drawing's box."""
+    out = Record(rec.title, list(rec.items), dict(rec.scales))
+    x0, y0, x1, _ = rec.bounds() if rec.items else (0.0, 0.0, 0.0, 0.0)
+    mid = (x0 + x1) / 2
+    y = y0 - CAPTION_GAP - CAPTION
+    out.label((mid, y), title, size=CAPTION, anchor="middle", layer="labels", step="caption")
+    if second:
+        out.label((mid, y - line_pitch(CAPTION_2) - 1.0), second, size=CAPTION_2, anchor="middle", layer="labels",
+                  step="caption")
+    return out
+
+
+def caption_size(title: str, second: str = "") -> tuple[float, float]:
+    """The width and height a caption adds under a drawing."""
+    w = max(text_width(title, CAPTION), text_width(second, CAPTION_2) if second else 0.0)
+    h = CAPTION_GAP + CAPTION + 1.5 + ((line_pitch(CAPTION_2) + 1.0) if second else 0.0)
+    return w, h
+
+
+def _tokens(text: str) -> list[str]:
+    """Words of a line of markup text: split at spaces outside {groups}."""
+    out, depth, cur = [], 0, ""
+    for c in text:
+        if c == "{":
+            depth += 1
+        elif c == "}":
+            depth = max(0, depth - 1)
+        if c == " " and depth == 0:
+            out.append(cur)
+            cur = ""
+        else:
+            cur += c
+    out.append(cur)
+    return [t for t in out if t]
+
+
+def wrap_markup(text: str, width: float, size: float) -> list[str]:
+    """The line broken at spaces (never inside a {group} of the markup) into lines no wider than
+    ``width`` mm at letter height ``size``; a single word wider than that stays whole."""
+    lines: list[str] = []
+    for word in _tokens(text):
+        if lines and text_width(lines[-1] + " " + word, size) <= width:
+            lines[-1] += " " + word
+        else:
+            lines.append(word)
+    return lines or [""]
+
+
+NOTE = 3.5           # the notes' lettering, mm
+NOTE_STEP = line_pitch(NOTE)   # mm from one line's baseline to the next
+
+
+def note_block(lines: Sequence[str], width: float, title: str = "notes") -> Record:
+    """Lines of notes wrapped to ``width`` mm, one under another (a continued line indented)."""
+    rec = Record(title)
+    y = 0.0
+    for line in lines:
+        for k, part in enumerate(wrap_markup(line, width - 5.0, NOTE)):
+            rec.label((5.0 if k else 0.0, y), part, size=NOTE, layer="labels", step="notes")
+            y -= NOTE_STEP
+    return rec
+
+
+def lines_of(rec: Record) -> list[str]:
+    """The text lines of a notes record, top to bottom."""
+    return [p.text for p in sorted((p for p in rec.items if p.kind == "text"), key=lambda p: -p.points[0][1])]
+
+
+# -- scales by arithmetic -------------------------------------------------------------------------
+
+FACTORS = (2.0, 1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32, 0.25, 0.2)
+
+
+def finer(mu: float) -> float:
+    """The next finer coefficient of the standard series (a larger drawing)."""
+    from graphplan.graphic.scales import series_around
+    return max(m for m in series_around(mu) if m < mu * (1 - 1e-9))
+
+
+def coarser(mu: float) -> float:
+    """The next coarser coefficient of the standard series (a smaller drawing)."""
+    from graphplan.graphic.scales import series_around
+    return min(m for m in series_around(mu) if m > mu * (1 + 1e-9))
+
+
+def choose_levels(start: Callable[[float], dict[str, float]], fits: Callable[[dict[str, float]], bool],
+                  order: Sequence[str], largest: Callable[[str, float], bool] | None = None
+                  ) -> dict[str, float] | None:
+    """The scales by arithmetic: the largest common size factor k (``start(k)`` gives each family's
+    standard μ for it) at which ``fits`` holds; then the families in ``order``, in turn, each made one
+    standard step finer while it still fits (and ``largest(name, μ)`` allows) — round after round,
+    so they grow together. None when even the smallest factor does not fit."""
+    mu = None
+    for k in FACTORS:
+        trial = start(k)
+        if fits(trial):
+            mu = trial
+            break
+    if mu is None:
+        return None
+    growing = list(order)
+    while growing:
+        for name in list(growing):
+            bigger = finer(mu[name])
+            trial = {**mu, name: bigger}
+            if (largest is not None and not largest(name, bigger)) or not fits(trial):
+                growing.remove(name)
+            else:
+                mu = trial
+    return mu
+
+
+def remembered(choose):
+    """A composition remembered per scene (its whole content, not its file's name), format and
+    options: ``plans``, ``diagrams``, the sheet and the explorer of one scene ask for the same
+    scales. A few are kept."""
+    import functools
+    memo: dict[tuple, object] = {}
+
+    @functools.wraps(choose)
+    def wrapper(st, f: Form, opts: SheetOptions, *args):
+        key = (repr(st.mech), f.name, repr(opts), args)
+        if key not in memo:
+            if len(memo) >= 8:
+                memo.pop(next(iter(memo)))
+            memo[key] = choose(st, f, opts, *args)
+        return memo[key]
+    return wrapper
 
 
 # -- numbers as the lab writes them -------------------------------------------------------------

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.graphic.record import THICK, THIN, Record, text_width
+from graphplan.graphic.record import THICK, THIN, Record, line_pitch, text_width
 from graphplan.util.words import word as _word
 
 FORMATS = {"A1": (841.0, 594.0), "A2": (594.0, 420.0), "A3": (420.0, 297.0), "A4": (210.0, 297.0)}
@@ -44,9 +44,12 @@ def _line(rec: Record, a, b, thick: bool) -> None:
     rec.segment(a, b, role="frame" if thick else "table", layer="frame", width=THICK if thick else THIN)
 
 
-def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor: str = "middle") -> None:
+def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor: str = "middle",
+          row: bool = False) -> None:
+    """A text at baseline y — or, ``row``, centred in the 5 mm row whose bottom is y (its capitals
+    and descenders clear of both rules)."""
     if text:
-        rec.label((x, y), text, size=size, anchor=anchor, layer="frame")
+        rec.label((x, y + 2.5 - 0.35 * size if row else y), text, size=size, anchor=anchor, layer="frame")
 
 
 def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5)) -> float:
@@ -96,13 +99,13 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
             _line(rec, (x, Y(0)), (x, Y(55)), True)
     heads = [cap["rev"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
     for (a, b), head in zip(zip(cols, cols[1:]), heads):
-        _text(rec, X((a + b) / 2), Y(31), head, size=_fit(head, b - a - 1, (2.5, 2.0)))
+        _text(rec, X((a + b) / 2), Y(30), head, size=_fit(head, b - a - 1, (2.5, 2.0)), row=True)
     roles = [cap["drawn"], cap["checked"], cap["tech"], "", cap["norm"], cap["approved"]]
     names = [fields.get("student", ""), fields.get("teacher", ""), "", "", "", ""]
     for k, (role, name) in enumerate(zip(roles, names)):
-        y = Y(30 - 5 * (k + 1) + 1.2)
-        _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0)), anchor="start")
-        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0)), anchor="start")
+        y = Y(30 - 5 * (k + 1))
+        _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0)), anchor="start", row=True)
+        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0)), anchor="start", row=True)
     # right part: designation 120×15, name 70×25 over 70×15, the 50 mm column
     _line(rec, (X(65), Y(40)), (X(185), Y(40)), True)
     _line(rec, (X(135), Y(0)), (X(135), Y(40)), True)
@@ -114,11 +117,11 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     for dx in (150, 167):  # Літ. | Маса | Масштаб
         _line(rec, (X(dx), Y(20)), (X(dx), Y(40)), True)
     _line(rec, (X(155), Y(15)), (X(155), Y(20)), True)   # Аркуш 20 | Аркушів 30
-    _text(rec, X(142.5), Y(36.2), cap["letter"])
-    _text(rec, X(158.5), Y(36.2), cap["mass"])
-    _text(rec, X(176), Y(36.2), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)))
-    _text(rec, X(137), Y(16.2), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start")
-    _text(rec, X(157), Y(16.2), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start")
+    _text(rec, X(142.5), Y(35), cap["letter"], row=True)
+    _text(rec, X(158.5), Y(35), cap["mass"], row=True)
+    _text(rec, X(176), Y(35), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)), row=True)
+    _text(rec, X(137), Y(15), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start", row=True)
+    _text(rec, X(157), Y(15), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start", row=True)
     _text(rec, X(142.5), Y(26), fields.get("letter", _word("tb study letter", lang)), size=3.5)
     _text(rec, X(158.5), Y(26), fields.get("mass", ""), size=3.5)
     scale = fields.get("scale", "")
@@ -137,9 +140,9 @@ def _block_text(rec: Record, text: str, x: float, y: float, w: float, h: float, 
         return
     for size in sizes:
         lines = wrap(text, w, size)
-        if len(lines) * size * 1.5 <= h and all(text_width(s, size) <= w for s in lines):
+        if len(lines) * line_pitch(size) <= h and all(text_width(s, size) <= w for s in lines):
             break
-    step = size * 1.5
+    step = line_pitch(size)
     top = y + h / 2 + step * len(lines) / 2
     for k, line in enumerate(lines):
         _text(rec, x + w / 2, top - step * (k + 1) + (step - size) / 2, line, size=size)
@@ -150,66 +153,4 @@ def title_block_box(f: Form) -> tuple[float, float, float, float]:
     return fx1 - BLOCK_W, fy0, fx1, fy0 + BLOCK_H
 
 
-LETTERING = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0)   # GOST 2.304 letter heights, mm
-TABLES = 1.4      # the sheets' tables: ruled at 2.5 mm lettering, drawn 1.4 × (3.5 mm letters, 8.4 mm rows)
-
-
-def enlarged(rec: Record, k: float = TABLES) -> Record:
-    """A table (or any record) drawn ``k`` times larger about its origin, its lettering at the
-    nearest letter height of the GOST series (a cell's letters shrunk to fit stay in proportion)."""
-    from dataclasses import replace
-
-    if k == 1.0:
-        return rec
-
-    def grown(p):
-        q = p.moved(0.0, 0.0, k)
-        if p.kind != "text":
-            return q
-        size = min(LETTERING, key=lambda h: abs(h - p.size * k)) if p.size in LETTERING else p.size * k
-        return replace(q, size=size)
-    return Record(rec.title, [grown(p) for p in rec.items], dict(rec.scales))
-
-
-def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
-          title: str = "") -> Record:
-    """A ruled table; its top-left corner at (0, 0), growing downward (y < 0). The first row is the
-    header (thick line under it); numbers are right-aligned, text centred."""
-    rec = Record(title)
-    x_edges = [0.0]
-    for w in widths:
-        x_edges.append(x_edges[-1] + w)
-    top = 0.0
-    if title:
-        rec.label((0.0, 1.5), title, size=3.5, layer="tables")
-    n = len(rows)
-    for k in range(n + 1):
-        y = top - k * row_h
-        rec.segment((0.0, y), (x_edges[-1], y), role="table", layer="tables",
-                    width=THICK if k in (0, 1, n) else THIN)
-    for k, x in enumerate(x_edges):
-        rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
-                    width=THICK if k in (0, len(x_edges) - 1) else THIN)
-    for r, row in enumerate(rows):
-        y = top - (r + 1) * row_h + (row_h - size) / 2
-        for c, cell in enumerate(row):
-            if not cell:
-                continue
-            s = size
-            while text_width(cell, s) > widths[c] - 1.0 and s > 1.8:
-                s -= 0.5
-            numeric = r > 0 and _is_number(cell)
-            if numeric:
-                rec.label((x_edges[c + 1] - 1.0, y), cell, size=s, anchor="end", layer="tables")
-            else:
-                rec.label(((x_edges[c] + x_edges[c + 1]) / 2, y), cell, size=s, anchor="middle",
-                          layer="tables")
-    return rec
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text.replace("−", "-").replace(",", "."))
-        return True
-    except ValueError:
-        return False
+from graphplan.drawing.tables import LETTERING, TABLES, enlarged, table  # noqa: E402,F401  (one ruled-table builder)

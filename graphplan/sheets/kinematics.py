@@ -3,27 +3,31 @@ the position plan, the velocity plan of every position, the acceleration plans a
 diagrams, the tables (velocities; one numbered table per acceleration plan; the links' dimensions;
 the lab's s, v, a at the chosen positions) and the notes.
 
-The scales are chosen once per scene and format (``choose``): the largest size factor of the
-standard targets at which the whole fits one sheet with legible plans, each family of drawings then
-grown to fill the field; when it does not fit, the smallest legible one for a set of sheets. The terminal
-commands ask ``sheet_scales`` for the same numbers."""
+Composed by construction (docs/composition.md): the tables in a column by the title block, the notes
+above it; in the rest of the field the position plan and the diagrams, the velocity plans in a grid of
+equal cells in position order, the acceleration plans together. The scales are chosen once per scene
+and format by arithmetic on the drawings' natural sizes (``plan``): the largest standard scales at
+which the composition fits; the terminal's ``plans``/``diagrams``, the API and the explorer ask
+``sheet_scales`` for the same numbers. Where one sheet cannot hold the plans legibly (a small
+format), the drawings flow over a set of sheets in reading order."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
-from graphplan.drawing.layout import HULL, Block
+from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arrange, cells, centred, column_size, extent,
+                                      flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
-from graphplan.report.plans import captioned
-from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
-                                      fits_one, fits_sheets, number, options_of, paginate, percent, reading, remembered,
-                                      sampled)
+from graphplan.graphic.scales import at_least
+from graphplan.sheets.compose import (FACTORS, Sheet, SheetOptions, caption_size, captioned, choose_levels, compose,
+                                      drawing_scale, field_of, finer, lines_of, note_block, number, options_of,
+                                      percent, reading, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num, pair_kind, unit, word
 
-FACTORS = (2.0, 1.6, 1.4, 1.25, 1.12, 1.0, 0.8, 0.64, 0.5, 0.4, 0.32)
 SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
 
 
@@ -187,168 +191,6 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
             "subtitle": subtitle or word("kin subtitle", lang)}
 
 
-def flow(records: list[Record], width: float, gap: float = 6.0) -> Record:
-    """Records left to right in order, wrapping into a new row at ``width`` mm (the velocity plans
-    0, 1, 2 … read like a text)."""
-    out = Record("flow")
-    x = top = 0.0
-    row_h = 0.0
-    for rec in records:
-        b = rec.bounds()
-        w, h = b[2] - b[0], b[3] - b[1]
-        if x > 0 and x + w > width:
-            x, top, row_h = 0.0, top - row_h - gap, 0.0
-        out.extend(rec.moved(x - b[0], top - b[3]))
-        x += w + gap
-        row_h = max(row_h, h)
-    return out
-
-
-# -- the blocks at a size factor -----------------------------------------------------------------
-
-FAMILIES = ("position", "acceleration", "velocity", "diagrams")   # the order they are grown in
-DIVISION_MM = 25.0   # the diagrams grow no wider than this many mm per division
-SHARE = 0.6          # the v and a diagrams' peaks drawn at about this share of the s diagram's height
-
-
-@dataclass
-class Drawn:
-    """Everything the kinematics sheet draws at the size factors ``k`` (one per family of blocks:
-    the position plan, the velocity plans, the acceleration plans, the diagrams)."""
-    k: dict[str, float]
-    plans: object
-    diag: object
-    blocks: list[Block]
-
-
-def diagram_options(st: Study, k: float, positions: int | None) -> dict:
-    """The diagrams' L, height and pole distances at size factor k: L and the s diagram's height
-    from the scene's [diagrams] table scaled by k; H1, H2 the scene's unless its v or a diagram
-    would be drawn lower than a third of the s diagram or taller than it — then chosen (whole mm,
-    5–80) so that its peak is about ``SHARE`` of the s diagram's height:
-    v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv, μt = T/L (REFERENCE §1.5)."""
-    from graphplan.graphic.diagrams import chord_diagrams
-    dg = st.mech.task.diagram
-    out: dict = {"point": dg.get("point"), "divisions": positions or dg.get("divisions") or st.mech.task.count,
-           "L": float(dg.get("L_mm", 240.0)) * k, "H1": float(dg.get("H1_mm", 30.0)),
-           "H2": float(dg.get("H2_mm", 30.0)), "height": 70.0 * k}
-    probe = chord_diagrams(st, precision=0.0, **out)
-    s_mm = probe.maxima["s"] / probe.mu_s
-
-    def pole(given: float, peak: float, mu_before: float) -> float:
-        drawn = peak * probe.mu_t * given / mu_before
-        if peak <= 0 or s_mm / 3 <= drawn <= 1.2 * s_mm:
-            return given
-        return float(min(80.0, max(5.0, round(SHARE * s_mm * mu_before / (peak * probe.mu_t)))))
-    out["H1"] = pole(out["H1"], probe.maxima["v"], probe.mu_s)
-    mu_v = probe.mu_s / (probe.mu_t * out["H1"])
-    out["H2"] = pole(out["H2"], probe.maxima["a"], mu_v)
-    return out
-
-
-class Drafter:
-    """Draws the kinematics sheet's blocks at given size factors, remembering what it drew."""
-
-    def __init__(self, st: Study, opts: SheetOptions, width: float, tables: float = 1.0):
-        self.st, self.opts, self.width, self.tables = st, opts, width, tables
-        self.memo: dict = {}
-
-    def _once(self, key, make):
-        if key not in self.memo:
-            self.memo[key] = make()
-        return self.memo[key]
-
-    def plans(self, kp: float, kv: float, ka: float):
-        from graphplan.graphic.plans import build_plans
-        from graphplan.graphic.scales import Targets
-        st, o = self.st, self.opts
-
-        def at(k: float):
-            return self._once(("plans", k), lambda: build_plans(
-                st, count=o.positions, accel=_accel_arg(o.accel), precision=o.precision,
-                targets=Targets().scaled(k)))
-        mu = (at(kp).mu_l, at(kv).mu_v, at(ka).mu_a)
-        return self._once(("fixed",) + mu, lambda: build_plans(
-            st, count=o.positions, accel=_accel_arg(o.accel), precision=o.precision,
-            mu_l=mu[0], mu_v=mu[1], mu_a=mu[2]))
-
-    def diagrams(self, kd: float):
-        from graphplan.graphic.diagrams import chord_diagrams
-        o = self.opts
-        return self._once(("diag", kd), lambda: chord_diagrams(
-            self.st, precision=o.precision, lang=o.lang, **diagram_options(self.st, kd, o.positions)))
-
-    def widest_diagrams(self) -> float:
-        """The diagrams' largest factor: no division wider than ``DIVISION_MM``."""
-        o = diagram_options(self.st, 1.0, self.opts.positions)
-        n = o["divisions"] if isinstance(o["divisions"], int) else len(o["divisions"])
-        return DIVISION_MM * n / o["L"]
-
-    def drawn(self, k: dict[str, float]) -> Drawn:
-        key = ("drawn",) + tuple(k[f] for f in FAMILIES)
-        return self._once(key, lambda: drawn_at(self, k))
-
-
-def drawn_at(dr: Drafter, k: dict[str, float]) -> Drawn:
-    """The kinematics sheet's blocks at size factors k: the position plan with the links'
-    dimensions, the diagrams (with the lab's table), each velocity plan, the velocity table, each
-    acceleration plan beside its numbered table, and the notes."""
-    from graphplan.drawing.diagrams import draw as draw_diagrams
-    from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
-    from graphplan.graphic.scales import format_scale
-    from graphplan.report.diagrams import sheet_notes
-    from graphplan.report.plans import plans_json
-    st, opts = dr.st, dr.opts
-    lang, p = opts.lang, opts.precision
-    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
-    plans = dr.plans(k["position"], k["velocity"], k["acceleration"])
-    diag = dr.diagrams(k["diagrams"])
-    doc = plans_json(plans)
-    prec = captioned(position_record(plans), f"{w('positions')}, {format_scale('mu_l', plans.mu_l, lang)}")
-    dims = enlarged(dimensions_table(st, plans.mu_l, lang), dr.tables)
-    blocks = [Block("position plan", lambda _k: prec), Block("dimensions table", lambda _k: dims)]
-    drec = draw_diagrams(diag, lang)
-    lab = lab_table(diag, lang) if st.mech.task.count <= 8 else None
-    lab = enlarged(lab, dr.tables) if lab is not None else None
-    dblock = drec if lab is None else beside([drec], below=lab)
-    blocks.append(Block("diagrams", lambda _k: dblock, solid=True))
-    vrec = velocity_records(plans)
-    cells = [captioned(vrec[q.key], f"{w('velocity')} {q.index if q.index is not None else ''}")
-             for q in plans.positions]
-    for q, cell in zip(plans.positions, cells):
-        blocks.append(Block(f"velocity plan {q.key}", lambda _k, c=cell: c))
-    vtab = enlarged(velocity_table(doc, lang, p), dr.tables)
-    blocks.append(Block("velocity table", lambda _k: vtab))
-    arec = acceleration_records(plans)
-    n = 0
-    for q, pos in zip(plans.positions, doc["positions"]):
-        if q.acceleration is None:
-            continue
-        n += 1
-        caption = (f"{w('acceleration')}, {w('position')} {q.index if q.index is not None else ''} "
-                   f"(φ = {fixed(q.phi % 360, lang, 1)}°), {format_scale('mu_a', plans.mu_a, lang)}")
-        both = beside([captioned(arec[q.key], caption), enlarged(acceleration_table(pos, n, lang, p), dr.tables)])
-        blocks.append(Block(f"acceleration plan {q.key}", lambda _k, r=both: r, solid=HULL))
-
-    def notes_block(_k: float) -> Record:
-        scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", plans.mu_v),
-                                                         ("mu_a", plans.mu_a))]
-        scales.append(f"μ_t = {num(diag.mu_t, lang)} {unit('s/mm', lang)}")
-        extra = [f"{w('precision')}: {num(p, lang)} {unit('mm', lang)}"]
-        every = table_errors(doc, p, 0.0)
-        long_ = table_errors(doc, p, SHORT_MM)
-        if every:
-            extra.append(f"{w('max_error')}: {fixed(max(every), lang, 2)} %"
-                         + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
-        extra.append(w('dash'))
-        extra.append(sign_note(st, diag, lang))
-        return notes(st, scales, extra + sheet_notes(diag, lang), lang)
-
-    nrec = notes_block(1.0)
-    blocks.append(Block("notes", lambda _k: nrec))
-    return Drawn(dict(k), plans, diag, blocks)
-
-
 def sign_note(st: Study, diag, lang: str) -> str:
     """One sign convention, said on the sheet: s, v, a are signed along the output's guide (a
     rocker: counter-clockwise) everywhere; the diagrams are drawn so the stroke from position 0
@@ -383,116 +225,462 @@ def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
     return out
 
 
-# -- the scale choice, once per scene and format -----------------------------------------------------
+# -- the composition: zones by construction, scales by arithmetic (docs/composition.md) -------------
 
-def _same(k: float) -> dict[str, float]:
-    return {f: k for f in FAMILIES}
+FAMILIES = ("position", "velocity", "acceleration")
+LEGIBLE_MM = 60.0      # the crank's vectors p_v a and π a drawn at least this long where the sheet allows
+ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
+SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
+DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
+S_HEIGHT = 80.0        # mm: the s diagram drawn at most this high (μs from the standard series)
+POLES = (15.0, 50.0)   # the lab manual's pole distances H1, H2, mm
+SHARE = 0.6            # an unset pole distance draws the v or a peak about this share of the s diagram's
+TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
 
 
-LEGIBLE_MM = 60.0    # the crank's vectors p_v a and π a drawn at least this long where the sheet allows
+def diagram_options(st: Study, k: float = 1.0, positions: int | None = None) -> dict:
+    """The diagrams' L, s height and pole distances: the scene's L (× k where a small sheet needs it),
+    the s diagram at most ``S_HEIGHT`` × k high; H1, H2 the scene's where it gives them, else chosen
+    (whole mm, within the lab's 15–50 mm) so the v or a peak is about ``SHARE`` of the s diagram:
+    v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv, μt = T/L (REFERENCE §1.5). No language enters."""
+    from graphplan.graphic.diagrams import chord_diagrams
+    dg = st.mech.task.diagram
+    out: dict = {"point": dg.get("point"), "divisions": positions or dg.get("divisions") or st.mech.task.count,
+                 "L": float(dg.get("L_mm", 240.0)) * k, "H1": float(dg.get("H1_mm", 30.0)),
+                 "H2": float(dg.get("H2_mm", 30.0)), "height": S_HEIGHT * k}
+    if "H1_mm" in dg and "H2_mm" in dg:
+        return out
+    probe = chord_diagrams(st, precision=0.0, **out)
+    s_mm = float(max(abs(probe.exact.s.max() - probe.exact.s.min()), 1e-9))
+
+    def pole(peak: float, mu_before: float) -> float:
+        if peak <= 0:
+            return POLES[0]
+        return float(min(POLES[1], max(POLES[0], round(SHARE * s_mm * mu_before / (peak * probe.mu_t)))))
+    if "H1_mm" not in dg:
+        out["H1"] = pole(probe.maxima["v"], probe.mu_s)
+    if "H2_mm" not in dg:
+        out["H2"] = pole(probe.maxima["a"], probe.mu_s / (probe.mu_t * out["H1"]))
+    return out
 
 
-def legible(d: Drawn) -> bool:
-    """Whether the plans draw the crank pin's velocity and acceleration at least ``LEGIBLE_MM`` long."""
-    pl = d.plans
-    mech = pl.study.mech
+def _geometry(rec: Record) -> tuple[float, float]:
+    """The size of a drawing's lines (its lettering left out), mm."""
+    b = Record(items=[p for p in rec.items if p.kind != "text"]).bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+def _size(rec: Record) -> tuple[float, float]:
+    b = rec.bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+@dataclass
+class Natural:
+    """The drawings' natural sizes, measured once at trial scales — what the arithmetic needs.
+    Per family: the trial μ, each drawing's lines (w, h) at it and what its lettering adds (w, h),
+    its captions' largest (w, h), and the real size of its principal segment (the crank r, v_A,
+    a_A). The diagrams' size per size factor; the tables' sizes per lettering factor (in order); the
+    notes' lines — each the larger of the two languages, so no scale depends on the language."""
+    mu0: dict[str, float]
+    sizes: dict[str, list[tuple[float, float, float, float]]]
+    caption: dict[str, tuple[float, float]]
+    principal: dict[str, float]
+    diagrams: dict[float, tuple[float, float]]
+    tables: dict[float, list[tuple[str, float, float]]]
+    notes: list[list[str]]
+
+    @property
+    def count(self) -> dict[str, int]:
+        return {fam: len(v) for fam, v in self.sizes.items()}
+
+    def leaf(self, family: str, mu: float, name: str = "") -> Leaf:
+        """The family's cell at μ: its largest drawing with lettering and caption."""
+        k = self.mu0[family] / mu
+        cw, ch = self.caption[family]
+        sizes = self.sizes[family] or [(0.0, 0.0, 0.0, 0.0)]
+        w = max(gw * k + lw for gw, _, lw, _ in sizes)
+        h = max(gh * k + lh for _, gh, _, lh in sizes)
+        return Leaf(name or family, max(w, cw), h + ch)
+
+    def allow(self, family: str, mu: float, w: float, h: float) -> None:
+        """Drawn at μ, the family's largest drawing came out w × h: what its lettering adds is
+        corrected so that the arithmetic assumes no less."""
+        want = self.leaf(family, mu)
+        cw, ch = self.caption[family]
+        dw, dh = max(max(w, cw) - want.w, 0.0), max(h + ch - want.h, 0.0)
+        self.sizes[family] = [(gw, gh, lw + dw, lh + dh) for gw, gh, lw, lh in self.sizes[family]]
+
+    def drawn(self, family: str, mu: float) -> float:
+        """The principal segment drawn at μ, mm."""
+        return self.principal[family] / mu
+
+    def notes_height(self, width: float) -> float:
+        from graphplan.sheets.compose import NOTE_STEP, wrap_markup
+        return max(sum(len(wrap_markup(line, width - 5.0, 3.5)) for line in lines)
+                   for lines in self.notes) * NOTE_STEP + NOTE_STEP     # a line to spare: the final numbers
+
+
+def _captions(st: Study, plans, lang: str, mu: dict[str, float]) -> dict[str, list[tuple[str, str]]]:
+    """Each drawing's caption (name, second line) in ``lang``."""
+    from graphplan.graphic.scales import format_scale
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    out: dict[str, list[tuple[str, str]]] = {"position": [(w('positions'), format_scale('mu_l', mu["position"], lang))]}
+    out["velocity"] = [(f"{w('velocity')} {q.index if q.index is not None else ''}".rstrip(), "")
+                       for q in plans.positions]
+    out["acceleration"] = [
+        (f"{w('acceleration')}, {w('position')} {q.index}" if q.index is not None else w('acceleration'),
+         f"{format_scale('mu_a', mu['acceleration'], lang)},  φ = {fixed(q.phi % 360, lang, 1)}°")
+        for q in plans.positions if q.acceleration is not None]
+    return out
+
+
+def _tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> list[tuple[str, Record]]:
+    """The sheet's tables in reading order: 1 velocities, 2.n accelerations, 3 dimensions, 4 the
+    lab's s, v, a (a lab of at most 8 positions)."""
+    from graphplan.report.plans import plans_json
+    doc = plans_json(plans)
+    out = [("velocity table", velocity_table(doc, lang, p))]
+    n = 0
+    for q, pos in zip(plans.positions, doc["positions"]):
+        if q.acceleration is not None:
+            n += 1
+            out.append((f"acceleration table {n}", acceleration_table(pos, n, lang, p)))
+    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang)))
+    if st.mech.task.count <= 8:
+        lab = lab_table(diag, lang)
+        if lab is not None:
+            out.append(("lab table", lab))
+    return [(name, enlarged(rec, factor)) for name, rec in out]
+
+
+def _notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
+    """The notes' lines: mobility, structure, scales, precision, the largest errors, the signs."""
+    from graphplan.graphic.scales import format_scale
+    from graphplan.report.diagrams import sheet_notes
+    from graphplan.report.plans import plans_json
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    doc = plans_json(plans)
+    scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", plans.mu_v), ("mu_a", plans.mu_a))]
+    scales.append(f"μ_t = {num(diag.mu_t, lang)} {unit('s/mm', lang)}")
+    extra = [f"{w('precision')}: {num(p, lang)} {unit('mm', lang)}"]
+    every = table_errors(doc, p, 0.0)
+    long_ = table_errors(doc, p, SHORT_MM)
+    if every:
+        extra.append(f"{w('max_error')}: {fixed(max(every), lang, 2)} %"
+                     + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
+    extra.append(w('dash'))
+    extra.append(sign_note(st, diag, lang))
+    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang), lang))
+
+
+@dataclass
+class Drafter:
+    """Draws what the kinematics sheet holds, remembering it: the plans at given scales, the
+    diagrams at a size factor."""
+    st: Study
+    opts: SheetOptions
+
+    def __post_init__(self) -> None:
+        self.memo: dict = {}
+
+    def _once(self, key, make):
+        if key not in self.memo:
+            self.memo[key] = make()
+        return self.memo[key]
+
+    def plans(self, mu: dict[str, float] | None = None):
+        from graphplan.graphic.plans import build_plans
+        o = self.opts
+        kw = {} if mu is None else {"mu_l": mu["position"], "mu_v": mu["velocity"], "mu_a": mu["acceleration"]}
+        key = ("plans",) + tuple(sorted(kw.items()))
+        return self._once(key, lambda: build_plans(self.st, count=o.positions, accel=_accel_arg(o.accel),
+                                                   precision=o.precision, **kw))
+
+    def diagrams(self, k: float, lang: str = "uk"):
+        from graphplan.graphic.diagrams import chord_diagrams
+        o = self.opts
+        return self._once(("diag", k, lang), lambda: chord_diagrams(
+            self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions)))
+
+    def records(self, mu: dict[str, float]) -> dict[str, list[Record]]:
+        """The plans at the scales ``mu``, drawn and lettered (no captions): family → records."""
+        from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
+        key = ("records",) + tuple(sorted(mu.items()))
+
+        def make():
+            pl = self.plans(mu)
+            return {"position": [position_record(pl)], "velocity": list(velocity_records(pl).values()),
+                    "acceleration": list(acceleration_records(pl).values())}
+        return self._once(key, make)
+
+    def diagram_record(self, k: float, lang: str) -> Record:
+        from graphplan.drawing.diagrams import draw
+        return self._once(("drec", k, lang), lambda: captioned(draw(self.diagrams(k, lang), lang),
+                                                                word("kin diagrams", lang)))
+
+
+def measure(dr: Drafter) -> Natural:
+    """The natural sizes (``Natural``): the plans drawn once at their own scales, the diagrams, the
+    tables and the notes in both languages."""
+    from graphplan.util.words import LANGS
+    st = dr.st
+    pl = dr.plans()
+    mech = st.mech
+    mu0 = {"position": pl.mu_l, "velocity": pl.mu_v, "acceleration": pl.mu_a}
+    recs = dr.records(mu0)
+    sizes, caption = {}, {}
+    for fam, rs in recs.items():
+        sizes[fam] = []
+        for r in rs:
+            (gw, gh), (fw, fh) = _geometry(r), _size(r)
+            sizes[fam].append((gw, gh, fw - gw + 1.0, fh - gh + 1.0))
+        caps = [c for lang in LANGS for c in _captions(st, pl, lang, mu0)[fam]]
+        cs = [caption_size(*c) for c in caps] or [(0.0, 0.0)]
+        caption[fam] = (max(c[0] for c in cs), max(c[1] for c in cs))
     v_a = abs(mech.omega1) * mech.crank.length
     a_a = mech.crank.length * (mech.omega1 ** 4 + mech.crank.epsilon ** 2) ** 0.5
-    return v_a / pl.mu_v >= LEGIBLE_MM - 1e-9 and (not pl.accel_keys or a_a / pl.mu_a >= LEGIBLE_MM - 1e-9)
+    principal = {"position": mech.crank.length, "velocity": v_a, "acceleration": a_a}
+    diag = dr.diagrams(1.0)
+    tables = {}
+    for factor in (TABLES, 1.0):
+        per = [[(name, *_size(rec)) for name, rec in _tables(st, pl, diag, lang, dr.opts.precision, factor)]
+               for lang in LANGS]
+        tables[factor] = [(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*per)]
+    notes_ = [_notes_lines(st, pl, dr.diagrams(1.0, lang), lang, dr.opts.precision) for lang in LANGS]
+    return Natural(mu0, sizes, caption, principal, {}, tables, notes_)
 
 
-SET_LARGEST = 1.25   # a set's drawings grow no larger than this: more sheets, not giant plans
-ONE_SHEET = ("A1",)  # the coursework's format: one sheet, the plans smaller if they must be
+def diagrams_size(dr: Drafter, nat: Natural, k: float) -> tuple[float, float]:
+    """The diagrams' block at size factor k (the larger of the two languages)."""
+    from graphplan.util.words import LANGS
+    if k not in nat.diagrams:
+        sizes = [_size(dr.diagram_record(k, lang)) for lang in LANGS]
+        nat.diagrams[k] = (max(s[0] for s in sizes), max(s[1] for s in sizes))
+    return nat.diagrams[k]
+
+
+def _tree(shape: str, P, D, V: list, A: list, vcols: int, acols: int, C):
+    """The sheet's composition (C: the tables' column with the notes over the title block, in the
+    bottom-right corner): "bands" — position plan and diagrams across the top, under them the
+    velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
+    height, the rest in those two bands; "accel" — the acceleration plans beside the position plan
+    and the diagrams, the velocity plans beside the column; "sides" — the position plan over the
+    velocity plans, beside them the diagrams over the acceleration plans over the column."""
+    vg = [Grid(V, vcols)] if V else []
+    ag = [Grid(A, acols)] if A else []
+    if shape == "bands":
+        return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
+    if shape == "column":
+        return Row([Stack([Row([P, D]), Row(vg + ag)]), C], flush=True)
+    if shape == "accel":
+        return Stack([Row([P, D] + ag), Row(vg + [C], flush=True)], flush=True)
+    return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
+
+
+SHAPES = ("bands", "column", "accel", "sides")
+
+
+@dataclass
+class Plan:
+    """The kinematics sheet as composed by arithmetic: the scales (μ per family), the diagrams'
+    size factor, the tables' lettering factor, the composition's shape, grid columns and table
+    columns, and the number of sheets (a set: more than 1)."""
+    mu: dict[str, float]
+    diagrams: float
+    tables: float
+    shape: str = "bands"
+    vcols: int = 1
+    acols: int = 1
+    parts: int = 1
+    sheets: int = 1
+
+
+TITLE = 185.0     # the title block's width: the column is at least this wide
+
+
+def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height) -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables in ``parts`` columns with the notes under them and the title block's room at the
+    foot, as one leaf for the composition; its table groups and its width."""
+    from graphplan.sheets.compose import keep_out
+    groups = split(tables, parts)
+    cw, ch = column_size(groups)
+    width = max(cw, TITLE)
+    foot = keep_out(f)[3] - field_of(f)[1]
+    return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
+
+
+def _grids(n: int) -> list[int]:
+    """Column counts of a grid of n cells that give different row counts."""
+    out, seen = [], set()
+    for c in range(n, 0, -1):
+        r = -(-n // c)
+        if r not in seen:
+            seen.add(r)
+            out.append(c)
+    return out or [1]
+
+
+def _one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
+    """The best one-sheet composition: for each lettering of the tables, each shape and each order
+    of growth, the scales by ``choose_levels``; the one whose plans are drawn largest (the product
+    of the principal segments), 3.5 mm tables where they cost no drawing a step."""
+    x0, y0, x1, y1 = field_of(f)
+    W, H = x1 - x0, y1 - y0
+    has_a = nat.count["acceleration"] > 0
+    D = Leaf("diagrams", *diagrams_size(dr, nat, 1.0))
+    nv, na = nat.count["velocity"], nat.count["acceleration"]
+    best = None
+    for factor in (TABLES, 1.0):
+        tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+        cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
+
+        def arranged(mu, shape):
+            P = nat.leaf("position", mu["position"])
+            V = [nat.leaf("velocity", mu["velocity"])] * nv
+            A = [nat.leaf("acceleration", mu["acceleration"])] * na
+            found = None
+            for vc in _grids(nv):
+                for ac in _grids(na):
+                    for parts, C in enumerate(cols, 1):
+                        tw, th = extent(_tree(shape, P, D, V, A, vc, ac, C))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, vc, ac, parts)
+            return found
+
+        def start(k):
+            return {fam: at_least(nat.principal[fam] / (TARGETS[fam] * k)) for fam in FAMILIES}
+
+        for shape in SHAPES:
+            for order in (("position", "acceleration", "velocity"), ("velocity", "acceleration", "position")):
+                mu = choose_levels(start, lambda m, s=shape: arranged(m, s) is not None, order)
+                if mu is None:
+                    continue
+                rel = [nat.drawn(fam, mu[fam]) / TARGETS[fam] for fam in FAMILIES if fam != "acceleration" or has_a]
+                score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
+                         -SHAPES.index(shape))
+                _, vc, ac, parts = arranged(mu, shape)
+                cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1))
+                if best is None or cand[0] > best[0]:
+                    best = cand
+    return best[1] if best else None
+
+
+def legible(nat: Natural, mu: dict[str, float]) -> bool:
+    """Whether the plans draw the crank pin's velocity and acceleration at least ``LEGIBLE_MM`` long."""
+    return nat.drawn("velocity", mu["velocity"]) >= LEGIBLE_MM - 1e-9 and (
+        nat.count["acceleration"] == 0 or nat.drawn("acceleration", mu["acceleration"]) >= LEGIBLE_MM - 1e-9)
+
+
+def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float) -> list[list[Leaf]]:
+    """A set's drawings and tables as rows in reading order (they wrap where too wide)."""
+    rows: list[list[Leaf]] = [[nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize)]]
+    rows.append(cells([nat.leaf("velocity", mu["velocity"], f"v{i}") for i in range(nat.count["velocity"])]))
+    if nat.count["acceleration"]:
+        rows.append(cells([nat.leaf("acceleration", mu["acceleration"], f"a{i}")
+                           for i in range(nat.count["acceleration"])]))
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+    rows.append(tabs + [Leaf("notes", width, nat.notes_height(width))])
+    return rows
+
+
+def _set(dr: Drafter, nat: Natural, f: Form) -> Plan:
+    """A set of sheets: the plans at least legible, every drawing as large as fits a sheet, the
+    drawings and tables flowing over the sheets in reading order; each family then grown while the
+    set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
+    from graphplan.sheets.compose import keep_out
+    region = field_of(f)
+    width = region[2] - region[0]
+    keep = keep_out(f)
+    k = next((k for k in DIAGRAM_SIZES if diagrams_size(dr, nat, k)[0] <= width
+              and diagrams_size(dr, nat, k)[1] <= region[3] - region[1]), DIAGRAM_SIZES[-1])
+    dsize = diagrams_size(dr, nat, k)
+    best = None
+    for factor in (TABLES, 1.0):
+        def pages(mu):
+            out = flow(_set_rows(nat, mu, dsize, factor, 185.0), region, keep)
+            return None if out is None else len(out)
+
+        def start(s):
+            mu = {fam: at_least(nat.principal[fam] / (TARGETS[fam] * s)) for fam in FAMILIES}
+            for fam in ("velocity", "acceleration"):        # legible: p_v a, π a at least LEGIBLE_MM
+                while nat.drawn(fam, mu[fam]) < LEGIBLE_MM - 1e-9:
+                    mu[fam] = finer(mu[fam])
+            return mu
+        mu = None
+        for s in FACTORS:
+            trial = start(s)
+            if pages(trial) is not None:
+                mu = trial
+                break
+        if mu is None:
+            continue
+        count = pages(mu)
+        for fam in ("velocity", "acceleration", "position"):
+            while True:
+                bigger = finer(mu[fam])
+                if nat.drawn(fam, bigger) > SET_LARGEST * TARGETS[fam] or pages({**mu, fam: bigger}) != count:
+                    break
+                mu = {**mu, fam: bigger}
+        if best is None or count < best[0]:
+            best = (count, Plan(mu, k, factor, "set", 1, 1, 1, count))
+    if best is None:
+        raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
+                             "choose a larger --format")
+    return best[1]
+
+
+def _checked(dr: Drafter, nat: Natural, p: Plan) -> bool:
+    """Whether the drawings at the plan's scales are no larger than the arithmetic assumed; where one
+    is, ``nat`` is corrected (the next choice allows for it)."""
+    ok = True
+    for fam, recs in dr.records(p.mu).items():
+        if not recs:
+            continue
+        want = nat.leaf(fam, p.mu[fam])
+        w = max(_size(r)[0] for r in recs)
+        h = max(_size(r)[1] for r in recs)
+        cw, ch = nat.caption[fam]
+        if max(w, cw) > want.w + 1e-6 or h + ch > want.h + 1e-6:
+            nat.allow(fam, p.mu[fam], w, h)
+            ok = False
+    return ok
 
 
 @remembered
-def choose(st: Study, f: Form, opts: SheetOptions) -> tuple[Drawn, bool]:
-    """The scales, once per scene and format: the largest common size factor at which the plans
-    stay legible (``legible``) and the whole fits one sheet of ``f`` — on A1 (the coursework's one
-    sheet) the largest at which it fits at all; then each family grown in turn (position plan,
-    acceleration plans, velocity plans, diagrams) while it still fits — the field filled. When no
-    such drawing fits one sheet: the smallest legible factor whose blocks each fit a sheet, for a
-    set of sheets, grown while the set needs no more sheets. The tables are lettered 3.5 mm
-    (``TABLES``) unless that costs the set a further sheet. Returns the drawing and whether it is
-    one sheet."""
-    x0, y0, x1, y1 = f.frame_box
-    big, small = (Drafter(st, opts, x1 - x0 - 10.0, t) for t in (TABLES, 1.0))
-    for dr in (big, small):
-        one = _one_sheet(dr, f)
-        if one is not None:
-            return one, True
-    starts = [(dr, s) for dr, s in ((dr, _set_start(dr, f)) for dr in (big, small)) if s is not None]
-    if not starts:
-        return big.drawn(_same(FACTORS[-1])), False
-    dr, (d, pages) = min(starts, key=lambda x: x[1][1])       # the fewer sheets; equal: the larger tables
-    return grow(dr, d, lambda t: fits_sheets(f, t.blocks, pages), SET_LARGEST), False
-
-
-def _one_sheet(dr: Drafter, f: Form) -> Drawn | None:
-    """The fullest one-sheet drawing (see ``choose``); None when no legible one fits one sheet."""
-    x0, y0, x1, y1 = f.frame_box
-    free = (x1 - x0) * (y1 - y0) - 190.0 * 60.0
-    base = dr.drawn(_same(1.0))
-    area = sum((b[2] - b[0] + 8.0) * (b[3] - b[1] + 8.0) for b in (blk.build(1.0).bounds() for blk in base.blocks))
-    one = lambda d: fits_one(f, d.blocks)  # noqa: E731
-    for k in FACTORS:
-        if area * k * k > 1.1 * free:
-            continue
-        d = dr.drawn(_same(k))
-        if not legible(d) and f.name not in ONE_SHEET:
+def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter]:
+    """The kinematics sheet's composition, once per scene, format and options (the language does
+    not enter): one sheet where one holds the plans legibly (on A1 always), else a set. The plans
+    are then drawn at the chosen scales and, where one came out larger than assumed, the choice is
+    made again allowing for it (the sheet, the terminal and the explorer all get this result)."""
+    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"))
+    nat = measure(dr)
+    for _ in range(4):
+        one = _one_sheet(dr, nat, f)
+        p = one if one is not None and (f.name in ONE_SHEET or legible(nat, one.mu)) else _set(dr, nat, f)
+        if _checked(dr, nat, p):
             break
-        if one(d):
-            path = [d]
-            grow(dr, d, one, path=path)
-            return min(sampled(path), key=lambda t: bare_share(f, t.blocks))
-    return None
+    return p, nat, dr
 
 
-def _set_start(dr: Drafter, f: Form) -> tuple[Drawn, int] | None:
-    """The smallest legible factor whose blocks each fit a sheet (the fewest sheets; the smallest
-    that fits when none is legible), and the sheets it needs."""
-    layable = []
-    for k in FACTORS:
-        d = dr.drawn(_same(k))
-        try:
-            paginate(f, d.blocks)
-        except GraphplanError:
-            continue
-        layable.append(d)
-    readable = [d for d in layable if legible(d)]
-    if not layable:
-        return None
-    d = readable[-1] if readable else layable[0]
-    return d, len(paginate(f, d.blocks))
-
-
-def grow(dr: Drafter, d: Drawn, fits, largest: float = FACTORS[0], path: list | None = None) -> Drawn:
-    """Each family in turn drawn at the next larger factors (up to ``largest``) while ``fits`` holds
-    (each drawing on the way appended to ``path``)."""
-    best = d
-    for fam in FAMILIES:
-        top = min(largest, dr.widest_diagrams()) if fam == "diagrams" else largest
-        for k in sorted(x for x in FACTORS if best.k[fam] < x <= top):
-            trial = dr.drawn({**best.k, fam: k})
-            if not fits(trial):
-                break
-            best = trial
-            if path is not None:
-                path.append(best)
-    return best
+def _options(opts: SheetOptions) -> SheetOptions:
+    return SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics")
 
 
 def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, accel=None,
                  precision: float = 0.5) -> dict[str, float]:
-    """The scales the kinematics sheet of ``format`` draws with: μl, μv, μa of the plans and the
-    diagrams' L and height — for the terminal's ``plans``/``diagrams`` to print what the sheet draws."""
-    d, _ = choose(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
-    opts = diagram_options(st, d.k["diagrams"], positions)
-    return {"mu_l": d.plans.mu_l, "mu_v": d.plans.mu_v, "mu_a": d.plans.mu_a,
+    """The scales the kinematics sheet of ``format`` draws with — μl, μv, μa of the plans and the
+    diagrams' L, height, H1, H2 — for the terminal's ``plans``/``diagrams``, the API and the explorer
+    to print what the sheet draws. Arithmetic on the drawings' sizes: no sheet is built."""
+    p, _, _ = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
+    opts = diagram_options(st, p.diagrams, positions)
+    return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
             "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"]}
 
 
-A1_POSITIONS = 40     # measured: A1 holds 36 velocity plans of the examples, never 48
+A1_POSITIONS = 40     # an A1 sheet holds about 40 velocity plans at a legible scale
 
 
 def check_positions(st: Study, options) -> None:
@@ -504,17 +692,63 @@ def check_positions(st: Study, options) -> None:
                              "positions' plans; choose fewer positions", st.mech.source)
 
 
+def drawings(st: Study, p: Plan, dr: Drafter, lang: str) -> dict:
+    """Everything the sheet draws at the plan's scales, in ``lang``: the position plan, the
+    diagrams, each velocity plan and acceleration plan with its caption, the tables in order."""
+    plans = dr.plans(p.mu)
+    caps = _captions(st, plans, lang, p.mu)
+    recs = dr.records(p.mu)
+    diag = dr.diagrams(p.diagrams, lang)
+    return {
+        "plans": plans, "diag": diag,
+        "position": captioned(recs["position"][0], *caps["position"][0]),
+        "diagrams": dr.diagram_record(p.diagrams, lang),
+        "velocity": [captioned(r, *c) for r, c in zip(recs["velocity"], caps["velocity"])],
+        "acceleration": [captioned(r, *c) for r, c in zip(recs["acceleration"], caps["acceleration"])],
+        "tables": _tables(st, plans, diag, lang, dr.opts.precision, p.tables),
+        "notes": _notes_lines(st, plans, diag, lang, dr.opts.precision),
+    }
+
+
 def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
-    """Sheet 1: everything of the kinematic analysis at the scales ``choose`` picks; a set of
-    sheets when it does not fit one."""
+    """Sheet 1: everything of the kinematic analysis at the scales ``plan`` chose, in the zones of the
+    composition (one sheet), or flowing over a set of sheets."""
+    from graphplan.sheets.compose import keep_out
     opts = options_of(options)
     check_positions(st, opts)
-    d, _ = choose(st, f, opts)
-    return compose(f, d.blocks, fields(st, opts.lang, drawing_scale(d.plans.mu_l, opts.lang)), opts.lang, st.mech.title)
-
-
-def kinematics_blocks(st: Study, options, k: float, width: float = 780.0) -> tuple[list[Block], str]:
-    """The blocks at size factor k and the title block's scale (kept for callers of the old API)."""
-    d = Drafter(st, options_of(options), width).drawn(_same(k))
-    return d.blocks, drawing_scale(d.plans.mu_l, options_of(options).lang)
-
+    p, nat, dr = plan(st, f, _options(opts))
+    d = drawings(st, p, dr, opts.lang)
+    region = field_of(f)
+    P = Leaf("position plan", record=d["position"])
+    D = Leaf("diagrams", record=d["diagrams"])
+    V = cells([Leaf(f"velocity plan {q.key}", record=r) for q, r in zip(d["plans"].positions, d["velocity"])])
+    A = cells([Leaf(f"acceleration plan {i + 1}", record=r) for i, r in enumerate(d["acceleration"])])
+    tables = [Leaf(name, record=rec) for name, rec in d["tables"]]
+    pages: list[list[Placed]]
+    if p.sheets == 1:
+        C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
+                                       - note_block(d["notes"], w).bounds()[1])
+        tree = _tree(p.shape, P, D, V, A, p.vcols, p.acols, C)
+        items, col_box = [], None
+        for leaf, b in arrange(tree, region):
+            if leaf is C:
+                col_box = b
+            elif leaf.record is not None:
+                items.append(Placed(leaf.name, centred(leaf.record, b), b))
+        notes_rec = note_block(d["notes"], width)
+        nb = notes_rec.bounds()
+        foot = keep_out(f)[3]
+        notes_box = (col_box[2] - width, foot, col_box[2], foot + nb[3] - nb[1])
+        items.append(Placed("notes", top_left(notes_rec, notes_box), notes_box))
+        items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+        pages = [items]
+    else:
+        notes_rec = note_block(d["notes"], 185.0)
+        rows = [[P, D], V] + ([A] if A else []) + [tables + [Leaf("notes", record=notes_rec)]]
+        laid = flow(rows, region, keep_out(f))
+        if laid is None:
+            raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
+        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
+                 for page in laid]
+    return compose(f, pages, fields(st, opts.lang, drawing_scale(p.mu["position"], opts.lang)), opts.lang,
+                   st.mech.title)

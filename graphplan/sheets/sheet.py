@@ -1,8 +1,8 @@
-"""`graphplan sheet`: the drawing sheets — frame and title block, the position plan, the velocity and
-acceleration plans, the s–v–a diagrams and the tables (sheets/kinematics.py), the force analysis
-(sheets/forces.py), the dynamics and the flywheel (sheets/dynamics.py), laid out so nothing overlaps
-and carried over to further sheets of a set when they do not fit (sheets/compose.py; REFERENCE §3).
-The output's suffix picks SVG, PDF, PNG or DXF; every format views the same construction record.
+"""`graphplan sheet`: the drawing sheets — the kinematic analysis (sheets/kinematics.py), the force
+analysis (sheets/forces.py), the dynamics and the flywheel (sheets/dynamics.py) — each composed by
+construction in zones (sheets/compose.py, drawing/layout.py; docs/composition.md) and carried over to
+further sheets of a set when a small format cannot hold them. The output's suffix picks SVG, PDF,
+PNG or DXF; every format views the same construction record.
 
 ``BUILDERS[kind](study, form, options)`` → ``Sheet``; options: positions, accel (degrees or "#3"),
 precision (mm), lang — a ``SheetOptions`` or any object with those attributes."""
@@ -10,27 +10,27 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from graphplan.sheets.compose import (FORMATS_OUT, Sheet, SheetOptions, compose, drawing_scale,  # noqa: F401
-                                      page_path)
-from graphplan.sheets.forces import build_forces_sheet, force_scales  # noqa: F401
-from graphplan.sheets.kinematics import (FACTORS, acceleration_table, build_kinematics_sheet,  # noqa: F401
-                                         fields, flow, kinematics_blocks, notes, sheet_scales,
-                                         velocity_table)
-from graphplan.util.words import num
+from graphplan.sheets.compose import FORMATS_OUT, Sheet, SheetOptions, drawing_scale, page_path  # noqa: F401
 
 Options = SheetOptions
 
 
-def fmt(v: float | None, lang: str, digits: int = 4) -> str:
-    """Numbers for tables (util.words.num): 4 significant digits, the language's decimal sign, a
-    true minus, '—' for none."""
-    return num(v, lang, digits).replace("-", "−")
+def build_kinematics_sheet(st, f, options) -> Sheet:
+    """Sheet 1 (sheets/kinematics.py): plans, diagrams, tables."""
+    from graphplan.sheets.kinematics import build_kinematics_sheet as build
+    return build(st, f, options)
 
 
-def build_dynamics_sheet(st, f, args) -> Sheet:
+def build_forces_sheet(st, f, options) -> Sheet:
+    """Sheet 2 (sheets/forces.py): the force analysis at the scene's force position."""
+    from graphplan.sheets.forces import build_forces_sheet as build
+    return build(st, f, options)
+
+
+def build_dynamics_sheet(st, f, options) -> Sheet:
     """Sheet 3 (sheets/dynamics.py): the flywheel by the Wittenbauer construction and the motor."""
     from graphplan.sheets.dynamics import build_dynamics_sheet as build
-    return build(st, f, args)
+    return build(st, f, options)
 
 
 BUILDERS: dict[str, Callable[..., Sheet]] = {

@@ -1,0 +1,71 @@
+"""Ruled tables as construction records — the one table builder of every sheet, key sheet and
+drawing (GOST 2.104-style: a thick outline and header line, thin rules, numbers right-aligned)."""
+from __future__ import annotations
+
+from graphplan.graphic.record import THICK, THIN, Record, text_width
+
+LETTERING = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0)   # GOST 2.304 letter heights, mm
+TABLES = 1.4      # the sheets' tables: ruled at 2.5 mm lettering, drawn 1.4 × (3.5 mm letters, 8.4 mm rows)
+
+
+def enlarged(rec: Record, k: float = TABLES) -> Record:
+    """A table (or any record) drawn ``k`` times larger about its origin, its lettering at the
+    nearest letter height of the GOST series (a cell's letters shrunk to fit stay in proportion)."""
+    from dataclasses import replace
+
+    if k == 1.0:
+        return rec
+
+    def grown(p):
+        q = p.moved(0.0, 0.0, k)
+        if p.kind != "text":
+            return q
+        size = min(LETTERING, key=lambda h: abs(h - p.size * k)) if p.size in LETTERING else p.size * k
+        return replace(q, size=size)
+    return Record(rec.title, [grown(p) for p in rec.items], dict(rec.scales))
+
+
+PAD = 1.0        # mm between a cell's text and its rules
+
+
+def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
+          title: str = "") -> Record:
+    """A ruled table; its top-left corner at (0, 0), growing downward (y < 0), its title above it.
+    The first row is the header (a thick line under it); numbers are right-aligned, text centred.
+    A column is widened to its widest cell: the lettering keeps its height (never under 2.5 mm)."""
+    rec = Record(title)
+    widths = [max(w, max((text_width(row[c], size) for row in rows if c < len(row) and row[c]),
+                         default=0.0) + 2 * PAD + 0.5) for c, w in enumerate(widths)]
+    x_edges = [0.0]
+    for w in widths:
+        x_edges.append(x_edges[-1] + w)
+    top = 0.0
+    if title:
+        rec.label((0.0, 2.2), title, size=3.5, layer="tables")
+    n = len(rows)
+    for k in range(n + 1):
+        y = top - k * row_h
+        rec.segment((0.0, y), (x_edges[-1], y), role="table", layer="tables",
+                    width=THICK if k in (0, 1, n) else THIN)
+    for k, x in enumerate(x_edges):
+        rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
+                    width=THICK if k in (0, len(x_edges) - 1) else THIN)
+    for r, row in enumerate(rows):
+        y = top - (r + 1) * row_h + (row_h - size) / 2 + 0.15 * size
+        for c, cell in enumerate(row):
+            if not cell:
+                continue
+            if r > 0 and _is_number(cell):
+                rec.label((x_edges[c + 1] - PAD - 0.3, y), cell, size=size, anchor="end", layer="tables")
+            else:
+                rec.label(((x_edges[c] + x_edges[c + 1]) / 2, y), cell, size=size, anchor="middle",
+                          layer="tables")
+    return rec
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text.replace("−", "-").replace(",", "."))
+        return True
+    except ValueError:
+        return False
