@@ -307,12 +307,18 @@ def study(scene=None, lang: str = "uk") -> Study:
 
 
 def plans(scene=None, positions: int | None = None, accel: Sequence[str | int | float] | None = None,
-          precision: float = 0.5, lang: str = "uk", **scales: float) -> Plans:
+          precision: float = 0.5, lang: str = "uk", format: str | None = "A1", **scales: float) -> Plans:
     """The position plan, every velocity plan and the acceleration plans (``accel``: indices, "#3",
-    or crank angles), read with a ruler of ``precision`` mm; ``mu_l``, ``mu_v``, ``mu_a`` fix scales."""
+    or crank angles), read with a ruler of ``precision`` mm, at the scales the kinematics sheet of
+    ``format`` draws with (as ``graphplan plans`` prints them; None: the plans' own scales);
+    ``mu_l``, ``mu_v``, ``mu_a`` fix scales."""
     from graphplan.graphic.plans import build_plans
-    return Plans(build_plans(_study_of(scene), count=positions, accel=accel, precision=precision,
-                             **scales), lang)
+    st = _study_of(scene)
+    if format and any(scales.get(k) is None for k in ("mu_l", "mu_v", "mu_a")):
+        from graphplan.sheets.kinematics import sheet_scales
+        drawn = sheet_scales(st, format, positions, accel, precision)
+        scales = {k: scales.get(k) if scales.get(k) is not None else drawn[k] for k in ("mu_l", "mu_v", "mu_a")}
+    return Plans(build_plans(st, count=positions, accel=accel, precision=precision, **scales), lang)
 
 
 def diagrams(scene=None, point: str | None = None, divisions: int | None = None, precision: float = 0.5,
@@ -326,6 +332,10 @@ def diagrams(scene=None, point: str | None = None, divisions: int | None = None,
     for key, name in (("L", "L_mm"), ("H1", "H1_mm"), ("H2", "H2_mm"), ("method", "method")):
         if key not in options and name in given:
             options[key] = given[name]
+    if divisions is None and not {"L", "H1", "H2", "height"} & set(options):
+        from graphplan.sheets.kinematics import sheet_scales     # as the A1 sheet draws them
+        drawn = sheet_scales(st, "A1", precision=precision)
+        options.update({k: drawn[k] for k in ("L", "H1", "H2", "height")})
     return Diagrams(chord_diagrams(st, point=point, divisions=divisions, precision=precision, lang=lang,
                                    **options), lang)
 
@@ -336,7 +346,12 @@ def forces(scene=None, phi: float | None = None, precision: float = 0.5, lang: s
     from graphplan.graphic.forceplans import construct
     st = _study_of(scene)
     angle = at_scene_angle(st) if phi is None else float(phi) % 360.0
-    return Forces(construct(st, angle, precision), lang)
+    scales = {}
+    if phi is None:                   # the force position: the scales the A1 force sheet draws with
+        from graphplan.sheets.forces import force_scales, has_loads
+        if has_loads(st):
+            scales = force_scales(st, "A1", precision)
+    return Forces(construct(st, angle, precision, **scales), lang)
 
 
 def dynamics(scene=None, delta: float | None = None, divisions: int | None = None, precision: float = 0.5,
@@ -345,7 +360,10 @@ def dynamics(scene=None, delta: float | None = None, divisions: int | None = Non
     construction over ``divisions`` of the turn read with a ruler of ``precision`` mm."""
     from graphplan.exact.dynamics import analyse
     from graphplan.graphic.flywheel import construct
-    return Dynamics(construct(analyse(_study_of(scene), delta), divisions, precision), lang)
+    from graphplan.sheets.dynamics import dynamics_scales
+    st = _study_of(scene)
+    dyn = analyse(st, delta)
+    return Dynamics(construct(dyn, divisions, precision, **dynamics_scales(st, dyn, "A1", divisions, precision)), lang)
 
 
 def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = "uk",

@@ -246,7 +246,7 @@ def test_a_scene_without_resistance_is_refused():
 def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
     from types import SimpleNamespace
 
-    from graphplan.drawing.layout import overlapping_texts
+    from graphplan.sheets.compose import defects
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import BUILDERS
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
@@ -257,7 +257,7 @@ def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
     x0, y0, x1, y1 = sheet.form.frame_box
     for p in sheet.placed:
         assert x0 <= p.box[0] and p.box[2] <= x1 and y0 <= p.box[1] and p.box[3] <= y1
-    assert overlapping_texts(sheet.record) == []
+    assert defects(sheet) == []
     texts = " ".join(p.text for p in sheet.record.items if p.kind == "text")
     assert ("Віттенбауера" if lang == "uk" else "Wittenbauer") in texts
     assert "|kl|" in texts

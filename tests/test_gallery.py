@@ -30,3 +30,13 @@ def test_gallery_sheet_is_current(scene, kind, lang, name, fmt):
             f"drawings/{file} is out of date: run python -m graphplan.cli.gallery"
     stem = name[:-len(".svg")]
     assert not (ROOT / "drawings" / f"{stem}-{len(pages) + 1}.svg").exists(), "a stale sheet of the set"
+
+
+def test_font_metrics_are_the_fonts():
+    """graphplan/data/fonts/metrics.json (read instead of parsing the fonts) is what the packaged
+    fonts say: every advance, ink box and foot."""
+    import json
+
+    from graphplan.graphic.record import METRICS, metrics_from_fonts
+    stored = json.loads((ROOT / "graphplan" / "data" / "fonts" / METRICS).read_text(encoding="utf-8"))
+    assert stored == json.loads(json.dumps(metrics_from_fonts()))

@@ -318,11 +318,12 @@ def test_records_have_their_own_origin():
 
 
 def test_labels_do_not_collide():
-    from graphplan.drawing.layout import overlapping_texts
+    """No label of a plan touches a line or another label (drawing.labels.collisions)."""
+    from graphplan.drawing.labels import collisions
     for name in EXAMPLES:
         plans = build_plans(example(name))
         for rec in [velocity_records(plans)[1], acceleration_records(plans)[1], position_record(plans)]:
-            assert overlapping_texts(rec) == [], (name, rec.title)
+            assert collisions(rec) == [], (name, rec.title)
 
 
 # -- the command ------------------------------------------------------------------------------------

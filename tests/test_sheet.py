@@ -13,7 +13,7 @@ import pytest
 from shapely.geometry import box
 
 from conftest import EXAMPLES, ROOT, example
-from graphplan.drawing.layout import overlapping_texts
+from graphplan.sheets.compose import defects
 from graphplan.sheets.sheet import BUILDERS
 from graphplan.sheets.form import form, title_block_box
 
@@ -42,25 +42,13 @@ def test_sheet_is_a1_in_mm_with_layers(sheet):
 
 
 def test_blocks_and_labels_do_not_overlap(sheet):
-    """Blocks are nested by their ink (tests/test_sheets_composition.py checks they keep apart);
-    here: every block in the frame, clear of the title block, and no two labels overlap."""
-    f = sheet.form
-    frame_in = box(*f.frame_box)
-    tb = box(*title_block_box(f))
-    boxes = [box(*p.box) for p in sheet.placed]
-    for i, b in enumerate(boxes):
-        assert frame_in.contains(b), sheet.placed[i].name
-        if sheet.placed[i].solid is not True:      # nested by its ink or its figures' hulls
-            continue
-        assert b.intersection(tb).area == 0, sheet.placed[i].name
-        for j in range(len(boxes)):     # a drawing with its table is one solid piece: nothing inside
-            if j != i:
-                assert b.intersection(boxes[j]).area == 0 or not boxes[j].within(b), \
-                    (sheet.placed[i].name, sheet.placed[j].name)
-    assert overlapping_texts(sheet.record) == []
-    for p in sheet.record.items:   # every stroke and label inside the frame
-        x0, y0, x1, y1 = p.bounds()
-        assert 19.9 <= x0 and x1 <= 836.1 and 4.9 <= y0 and y1 <= 589.1, (p.kind, p.text)
+    """Every drawing in its own box, no two boxes meeting, no lettering on a line or on lettering,
+    everything inside the frame and clear of the title block (sheets.compose.defects)."""
+    assert defects(sheet) == []
+    frame_in = box(*sheet.form.frame_box)
+    tb = box(*title_block_box(sheet.form))
+    for p in sheet.placed:
+        assert frame_in.contains(box(*p.box)) and box(*p.box).intersection(tb).area == 0, p.name
 
 
 def test_sheet_content_and_language():
@@ -102,7 +90,7 @@ def test_formats_by_suffix(tmp_path):
 
 def test_force_sheet_renders():
     s = build("shaper", kind="forces")
-    assert overlapping_texts(s.record) == []
+    assert defects(s) == []
     texts = " ".join(p.text for p in s.record.items if p.kind == "text")
     assert "Важіль Жуковського" in texts and "План сил групи II(4-5)" in texts
 

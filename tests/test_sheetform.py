@@ -7,7 +7,8 @@ import io
 import pytest
 
 from graphplan.graphic.record import Record
-from graphplan.drawing.layout import Block, declutter, overlapping_texts, place
+from graphplan.drawing.labels import collisions
+from graphplan.drawing.layout import Grid, Leaf, Row, Stack, arrange, extent, flow
 from graphplan.sheets.form import form, frame, table, title_block, title_block_box
 from graphplan.drawing.svg import render
 
@@ -60,7 +61,7 @@ def test_title_block_geometry():
         if p.kind == "text":
             b = p.bounds()
             assert x0 <= b[0] and b[2] <= x1 and y0 <= b[1] and b[3] <= y1, p.text
-    assert overlapping_texts(tb) == []
+    assert collisions(tb) == []
 
 
 def test_dxf_reads_back_in_mm_with_cyrillic(tmp_path):
@@ -86,40 +87,57 @@ def test_dxf_reads_back_in_mm_with_cyrillic(tmp_path):
 
 
 def test_table_cells_fit_and_do_not_overlap():
+    """A column is widened to its widest cell: the lettering keeps its height and stays in its cell,
+    clear of the rules."""
     rows = [["No", "φ, °", "v_B, м/с"]] + [[str(k), f"{30 * k:.1f}", f"{k * 1.234:.3f}"] for k in range(12)]
+    rows[5][2] = "a very long cell of text"
     t = table(rows, [10, 16, 22], title="Таблиця 1")
-    assert overlapping_texts(t) == []
+    assert collisions(t) == []
+    right = max(p.points[0][0] for p in t.items if p.kind == "segment")
+    assert right > 48.0
     for p in t.items:
-        if p.kind == "text" and p.text != "Таблиця 1":
+        if p.kind == "text":
+            assert p.size == 2.5 or p.text == "Таблиця 1"
             b = p.bounds()
-            assert 0 <= b[0] and b[2] <= 48.0 + 1e-9
+            assert 0 <= b[0] and b[2] <= right + 1e-9
 
 
-def test_layout_places_without_overlap_and_shrinks():
-    def square(size):
-        def build(k):
-            r = Record()
-            r.add("polygon", [(0, 0), (size * k, 0), (size * k, size * k), (0, size * k)])
-            return r
-        return build
-    blocks = [Block(f"b{k}", square(150), factors=(1.0, 0.5)) for k in range(6)]
-    placed = place(blocks, (25, 10, 831, 584), obstacles=[(651, 5, 836, 60)])
-    from shapely.geometry import box
-    boxes = [box(*p.box) for p in placed]
-    for i in range(len(boxes)):
-        for j in range(i + 1, len(boxes)):
-            assert boxes[i].intersection(boxes[j]).area == 0
-        assert box(25, 10, 831, 584).contains(boxes[i])
-        assert boxes[i].intersection(box(651, 5, 836, 60)).area == 0
-    big = [Block("huge", square(2000), factors=(1.0,))]
-    from graphplan.util.errors import GraphplanError
-    with pytest.raises(GraphplanError, match="no room for the huge"):
-        place(big, (25, 10, 831, 584))
+def _square(name: str, w: float, h: float) -> Leaf:
+    r = Record(name)
+    r.add("polygon", [(0, 0), (w, 0), (w, h), (0, h)])
+    return Leaf(name, record=r)
 
 
-def test_declutter_separates_colliding_labels():
-    r = Record()
-    for k in range(5):
-        r.label((10.0, 10.0), f"b{k}", size=3.5)
-    assert overlapping_texts(r) != []
-    assert overlapping_texts(declutter(r)) == []
+def test_a_composition_gives_each_drawing_its_own_box():
+    """Rows, stacks and grids: each leaf's box is at least its size, inside the parent's box, no two
+    boxes meet, the spare room shared out; a grid's cells are equal and read row by row."""
+    cells = [_square(f"c{k}", 20 + 3 * k, 15) for k in range(7)]
+    tree = Stack([Row([_square("a", 100, 60), _square("b", 50, 80)]), Grid(cells, 3)])
+    w, h = extent(tree)
+    assert (w, h) == pytest.approx((max(156, 3 * 38 + 12), 80 + 6 + 3 * 15 + 12))
+    laid = list(arrange(tree, (0.0, 0.0, 300.0, 250.0)))
+    boxes = {leaf.name: b for leaf, b in laid}
+    for name, (x0, y0, x1, y1) in boxes.items():
+        assert 0 <= x0 and x1 <= 300 and 0 <= y0 and y1 <= 250, name
+    names = list(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            p, q = boxes[a], boxes[b]
+            assert not (p[0] < q[2] and q[0] < p[2] and p[1] < q[3] and q[1] < p[3]), (a, b)
+    grid = [boxes[f"c{k}"] for k in range(7)]
+    assert len({round(b[2] - b[0], 9) for b in grid}) == 1 and len({round(b[3] - b[1], 9) for b in grid}) == 1
+    assert grid[0][0] < grid[1][0] < grid[2][0] and grid[3][3] < grid[0][1] and grid[3][0] == grid[0][0]
+
+
+def test_a_set_flows_in_reading_order_and_keeps_clear_of_the_title_block():
+    """Rows wrap and carry over to a further sheet; nothing enters the title block's corner."""
+    region, keep = (0.0, 0.0, 400.0, 270.0), (200.0, 0.0, 400.0, 60.0)
+    rows = [[_square(f"p{k}", 120, 100) for k in range(7)]]
+    pages = flow(rows, region, keep)
+    assert len(pages) == 2
+    order = [leaf.name for page in pages for leaf, _ in page]
+    assert order == [f"p{k}" for k in range(7)]
+    for page in pages:
+        for _leaf, (x0, y0, x1, y1) in page:
+            assert not (x1 > keep[0] and y0 < keep[3])
+    assert flow([[_square("huge", 500, 100)]], region, keep) is None

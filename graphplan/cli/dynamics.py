@@ -28,6 +28,9 @@ def register(sub) -> None:
     p.add_argument("--divisions", type=int, metavar="N",
                    help="divisions of the turn on the diagrams (default: the scene's [dynamics] divisions, "
                         "else its number of positions)")
+    p.add_argument("--format", default="A1", metavar="A1",
+                   help="report the construction (L, scales, H) the dynamics sheet of this format draws: "
+                        "A1 (default), A2, A3")
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write the diagrams to DIR (moments, energy, inertia, "
                                                 "wittenbauer, speed .svg)")
@@ -51,7 +54,9 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
         dyn = analyse(st, args.delta)
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
-    f = construct(dyn, args.divisions, args.precision)
+    from graphplan.sheets.dynamics import dynamics_scales     # the construction the sheet draws
+    f = construct(dyn, args.divisions, args.precision,
+                  **dynamics_scales(st, dyn, args.format or "A1", args.divisions, args.precision))
     args.lang = lang_of(args, st)
     if args.svg:
         write_svg(f, args.svg, args.lang)

@@ -69,11 +69,22 @@ def available() -> list[tuple[str, str, str, str, str]]:
     return [s for s in SHEETS if s[1] in BUILDERS]
 
 
+def write_metrics() -> Path:
+    """graphplan/data/fonts/metrics.json from the packaged fonts (graphic.record.metrics_from_fonts)."""
+    import json
+
+    from graphplan.graphic.record import METRICS, metrics_from_fonts
+    from graphplan.util.files import write_atomic
+    text = json.dumps(metrics_from_fonts(), ensure_ascii=False, sort_keys=True, separators=(",", ":"))
+    return write_atomic(ROOT / "graphplan" / "data" / "fonts" / METRICS, text)
+
+
 def main(argv: list[str] | None = None) -> int:
     from graphplan.util.files import write_atomic
     parser = argparse.ArgumentParser(prog="python -m graphplan.cli.gallery", description=__doc__)
     parser.add_argument("-o", "--out", default=str(ROOT / "drawings"), help="folder (default: drawings/)")
     args = parser.parse_args(argv)
+    print(write_metrics(), file=sys.stderr)
     for scene, kind, lang, name, fmt in available():
         pages = build_set(scene, kind, lang, fmt)
         for stale in Path(args.out).glob(f"{name[:-len('.svg')]}-*.svg"):     # a set that got shorter

@@ -12,7 +12,8 @@ import numpy as np
 
 from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
-from graphplan.graphic.record import Record
+from graphplan.drawing.labels import place_labels
+from graphplan.graphic.record import LabelRequest, Record
 from graphplan.graphic.forceplans import standard_scale
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
@@ -168,6 +169,7 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
     rec.vector((0.0, lo / mu - 3.0), (0.0, hi / mu + 8.0), role="construction", layer="diagrams", step=step)
     pts = [(float(x / mu_phi), float(v / mu)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[values, values[0]])]
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
+    numbers = []
     for k, pos in t.position_index():
         x = float(t.turn_deg[k] / mu_phi)
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
@@ -178,7 +180,7 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
         for a, b in ((lo / mu, min(0.0, y)), (max(0.0, y), hi / mu)):
             if b - a > 1.0:
                 rec.segment((x, a), (x, b), role="grid", layer="diagrams", step=f"positions of {step}")
-        rec.label((x + 1.0, -5.0), str(pos), size=2.5, step=step)     # beside its line, not struck through
+        numbers.append(LabelRequest(complex(x, 0.0), str(pos), -1 + -2j if y > 0 else -1 + 2j, 2.5, step=step))
     rec.label((width + 6.0, -1.0), "φ", size=3.5, step=step)
     rec.label((2.0, hi / mu + 5.0), axis, size=3.5, step=step)
     tick = _nice_step(hi - lo, 4)
@@ -188,7 +190,8 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
         rec.label((-2.5, y - 1.2), num(v, lang), size=2.5, anchor="end", step=step)
         v += tick
-    rec.label((0.0, lo / mu - 12.0), f"{per_mm} = {num(mu, lang)} {mm_unit}, "
+    place_labels(rec, numbers)                  # each number beside its line, clear of the curve
+    rec.label((0.0, rec.bounds()[1] - 6.0), f"{per_mm} = {num(mu, lang)} {mm_unit}, "
               f"μ_φ = {num(mu_phi, lang)} {unit('deg/mm', lang)}", size=2.5, step=step)
     return rec, mu
 
@@ -244,11 +247,14 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
     for idx, z in _pieces(t, f):
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
+    numbers = []
     for k, pos in t.position_index():
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
-        rec.label((float(w.real) + 1.0, float(w.imag) + 1.0), str(pos), size=2.5, step=step)
-    rec.label((x0, y0 - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
+        numbers.append(LabelRequest(complex(float(w.real), float(w.imag)), str(pos), w if abs(w) > 1e-9 else 1j,
+                                    2.5, step=step))
+    place_labels(rec, numbers)                  # each position's number by its point, clear of the curve
+    rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
     return rec
 

@@ -11,7 +11,8 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
-from graphplan.graphic.record import Record
+from graphplan.drawing.labels import place_labels
+from graphplan.graphic.record import LabelRequest, Record, line_pitch
 from graphplan.util.words import fixed, num
 
 if TYPE_CHECKING:
@@ -52,7 +53,7 @@ def _text(rec: Record, at: tuple[float, float], text: str, step: str = "", ancho
 
 def _axes(rec: Record, lo: float, hi: float, x_from: float, L: float, sym: str,
           xsym: str = "φ", step: str = "") -> None:
-    rec.vector((0.0, lo - 3.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
+    rec.vector((0.0, lo - 1.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
     rec.vector((x_from, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step=f"axes {step}")
     _text(rec, (1.8, hi + 5.0), sym, step=f"axes {step}")
     rec.label((L + 11.5, -1.2), xsym, size=TEXT, layer=LAYER, step=f"axes {step}")
@@ -169,8 +170,8 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     lo, hi = _extent(Y, f.dT, [k, l])
     rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
-    _text(rec, (1.8, hi + 7.0), "ΔT", step="axes")
     _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
+    labels = [LabelRequest(complex(0.0, hi + 10.0), "ΔT", 1 + 0j, TEXT, step="axes")]
     rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     every = 1
@@ -179,18 +180,19 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     for j in range(n):
         rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
         if j % every == 0:
-            rec.label((float(f.I[j]) + 1.0, float(f.dT[j]) + 0.8), str(j), size=NUM, layer=LAYER, step=f"point {j}")
+            labels.append(LabelRequest(complex(float(f.I[j]), float(f.dT[j])), str(j), 1 + 1j, NUM, step=f"point {j}"))
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
         x_end = tx + 15.0
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        _text(rec, (x_end + 1.5, b + s * x_end - 1.0), f"ψ{name} = {fixed(psi, lang, 2)}°", step=f"ψ_{name}")
+        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ{name} = {fixed(psi, lang, 2)}°", 1 + 0j, TEXT,
+                                   step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
-    rec.label((-1.8, k - 1.2), "k", size=TEXT, anchor="end", layer=LAYER, step="k")
-    rec.label((-1.8, l - 1.2), "l", size=TEXT, anchor="end", layer=LAYER, step="l")
+    labels += [LabelRequest(complex(0.0, k), "k", 1 - 1j, TEXT, step="k"),
+               LabelRequest(complex(0.0, l), "l", 1 + 1j, TEXT, step="l")]
     xd = -9.0
     rec.vector((xd, 0.5 * (k + l)), (xd, k), role="construction", layer=LAYER, step="kl")
     rec.vector((xd, 0.5 * (k + l)), (xd, l), role="construction", layer=LAYER, step="kl")
@@ -198,7 +200,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     rec.segment((xd - 1.5, l), (0.0, l), role="construction", layer=LAYER, step="kl")
     rec.label((xd - 1.5, 0.5 * (k + l) - 1.2), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
-    return rec
+    return place_labels(rec, labels, layer=LAYER)
 
 
 def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 100.0) -> Record:
@@ -235,7 +237,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         xs = m.turn / (2 * math.pi) * L
         rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
                 width=0.5 if k == 0 else 0.35)
-        yl = -10.0 - 5.0 * k
+        yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
         rec.label((12.0, yl), f"{text}: δ = {fixed(m.delta, lang, 4)}, ωm = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
     return rec

@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import math
 
-from graphplan.graphic.record import Record, text_width
+from graphplan.drawing.labels import place_labels
+from graphplan.drawing.tables import table
+from graphplan.graphic.record import LabelRequest, Record, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
@@ -33,77 +35,23 @@ def _arrow_length(force: float, biggest: float) -> float:
 
 # -- labels ------------------------------------------------------------------------------------
 
-def _segment_hits_box(a: tuple[float, float], b: tuple[float, float], box: Box) -> bool:
-    """Liang–Barsky: does the segment ab cross the rectangle?"""
-    x0, y0, x1, y1 = box
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a[0] - x0), (dx, x1 - a[0]), (-dy, a[1] - y0), (dy, y1 - a[1])):
-        if p == 0:
-            if q < 0:
-                return False
-        else:
-            t = q / p
-            if p < 0:
-                t0 = max(t0, t)
-            else:
-                t1 = min(t1, t)
-            if t0 > t1:
-                return False
-    return True
-
-
-def _overlap(p: Box, q: Box) -> bool:
-    return p[0] < q[2] and q[0] < p[2] and p[1] < q[3] and q[1] < p[3]
-
-
 class Labeler:
-    """Places labels of a record where they cross no line and no other label."""
-
-    RADII = (0.8, 2.0, 3.5, 5.5, 8.0, 11.0)
-    TURNS = (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8)
+    """Letters a record by the one label placer (drawing.labels): the labels asked for (``place``),
+    then set all at once (``done``), each clear of the lines and of the labels set before it,
+    beside its point or on a short leader."""
 
     def __init__(self, rec: Record):
         self.rec = rec
-
-    def _obstacles(self):
-        lines, boxes = [], []
-        for p in self.rec.items:
-            if p.kind in ("segment", "vector"):
-                lines.append((p.points[0], p.points[1]))
-            elif p.kind in ("polyline", "polygon"):
-                pts = list(p.points) + ([p.points[0]] if p.kind == "polygon" else [])
-                lines += list(zip(pts, pts[1:]))
-            elif p.kind == "text":
-                boxes.append(p.bounds())
-            elif p.kind in ("point", "circle", "arc"):
-                boxes.append(p.bounds() if p.kind != "point" else
-                             (p.points[0][0] - 1.3, p.points[0][1] - 1.3, p.points[0][0] + 1.3, p.points[0][1] + 1.3))
-        return lines, boxes
+        self.asked: list[LabelRequest] = []
 
     def place(self, anchor: complex, text: str, size: float = 2.5, prefer: complex = 1j,
               step: str = "") -> None:
-        w, h = text_width(text, size), size
-        lines, boxes = self._obstacles()
-        best, best_cost = None, math.inf
-        base = math.atan2(prefer.imag, prefer.real) if prefer else math.pi / 2
-        for r in self.RADII:
-            for k in self.TURNS:
-                th = base + k * math.pi / 8
-                c, s = math.cos(th), math.sin(th)
-                reach = r + abs(c) * w / 2 + abs(s) * h / 2
-                cx, cy = anchor.real + reach * c, anchor.imag + reach * s
-                box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
-                cost = 10 * sum(_overlap(box, b) for b in boxes)
-                cost += sum(_segment_hits_box(a, b, box) for a, b in lines)
-                cost += 0.05 * r
-                if cost < best_cost:
-                    best, best_cost = box, cost
-                if cost < 1:
-                    break
-            if best_cost < 1:
-                break
-        self.rec.label((best[0], best[1]), text, size=size, anchor="start", step=step)
+        self.asked.append(LabelRequest(anchor, text, prefer, size, step=step))
+
+    def done(self) -> Record:
+        place_labels(self.rec, self.asked, layer="labels")
+        self.asked = []
+        return self.rec
 
 
 # -- a group's scheme --------------------------------------------------------------------------
@@ -225,7 +173,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), 2.5, u, step)
-    return rec
+    return lab.done()
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -279,6 +227,7 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     for s in sorted(sides, key=lambda s: s.mm):
         u = _unit(s.end - s.start)
         lab.place(0.5 * (s.start + s.end), force_symbol(s.name, lang), 2.5, 1j * u, step)
+    lab.done()
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}", size=3.5, step=step)
     return rec
@@ -334,6 +283,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+    lab.done()
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
@@ -343,24 +293,11 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
 
 def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str]],
            widths: list[float], step: str, size: float = 2.5, row_h: float = 6.0) -> float:
-    """A ruled table with its top-left corner at (x, y); returns its bottom y."""
-    total = sum(widths)
-    n = len(rows) + 1
-    for k in range(n + 1):
-        yy = y - k * row_h
-        rec.segment((x, yy), (x + total, yy), role="table", layer="tables", step=step,
-                    width=0.5 if k in (0, 1, n) else None)
-    xx = x
-    for w in [0.0] + widths:
-        xx += w
-        rec.segment((xx, y), (xx, y - n * row_h), role="table", layer="tables", step=step)
-    for k, row in enumerate([head] + rows):
-        xx = x
-        for w, cell in zip(widths, row):
-            rec.label((xx + w / 2, y - (k + 1) * row_h + (row_h - size) / 2), cell, size=size,
-                      anchor="middle", step=step)
-            xx += w
-    return y - n * row_h
+    """A ruled table (drawing.tables) with its top-left corner at (x, y) added to ``rec``; returns
+    its bottom y."""
+    t = table([head] + rows, widths, row_h=row_h, size=size).moved(x, y)
+    rec.extend(t)
+    return t.bounds()[1]
 
 
 def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:

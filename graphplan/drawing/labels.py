@@ -13,6 +13,7 @@ every other label of the record (the tests run it on whole sheets).
 from __future__ import annotations
 
 import math
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +48,16 @@ class Obstacles:
         self.hi_x = np.maximum(s[:, 0], s[:, 2]) + h
         self.lo_y = np.minimum(s[:, 1], s[:, 3]) - h
         self.hi_y = np.maximum(s[:, 1], s[:, 3]) + h
+
+    def near(self, at: complex, reach: float) -> Obstacles:
+        """Only what lies within ``reach`` mm of the point (a label's candidates look no farther)."""
+        x, y = at.real, at.imag
+        keep = (self.hi_x > x - reach) & (self.lo_x < x + reach) & (self.hi_y > y - reach) & (self.lo_y < y + reach)
+
+        def close(b: Box) -> bool:
+            return b[2] > x - reach and b[0] < x + reach and b[3] > y - reach and b[1] < y + reach
+        return Obstacles(self.segs[keep], self.half[keep], [b for b in self.boxes if close(b)],
+                         [b for b in self.solid if close(b)])
 
     def add_segment(self, a, b, half: float) -> None:
         self.segs = np.vstack([self.segs, [[a[0], a[1], b[0], b[1]]]])
@@ -143,52 +154,108 @@ def _meets(a: Box, b: Box, apart: float = 0.0) -> bool:
     return a[0] < b[2] + apart and b[0] < a[2] + apart and a[1] < b[3] + apart and b[1] < a[3] + apart
 
 
-def _conflicts(ob: Obstacles, box: Box, clear: float = CLEAR) -> int:
-    """How many lines and labels the box would touch (a closed figure's inside counts too)."""
-    n = len(_hits(ob, box, clear))
-    n += sum(_meets(box, b, APART) for b in ob.boxes)
-    n += sum(_meets(box, s) for s in ob.solid)
-    return n
-
-
 def _segment_meets_box(a: complex, b: complex, box: Box) -> bool:
     return _clips(a.real, a.imag, b.real, b.imag, *box)
 
 
-def _box_at(at: complex, u: complex, w: float, ink: Box, gap: float) -> tuple[Box, complex]:
-    """The ink box of a label whose ink lies wholly on the side ``u`` of ``at``, ``gap`` clear of it,
-    and the text's anchor (its start on the baseline) for that place."""
-    iw, ih = ink[2] - ink[0], ink[3] - ink[1]
-    m = max(abs(u.real), abs(u.imag))
-    centre = at + complex(u.real / m * (iw / 2 + gap), u.imag / m * (ih / 2 + gap))
-    box = (centre.real - iw / 2, centre.imag - ih / 2, centre.real + iw / 2, centre.imag + ih / 2)
-    start = complex(box[0] - ink[0], box[1] - ink[1])
-    return box, start
-
-
-def _directions(toward: complex, n: int = DIRECTIONS) -> list[complex]:
-    """``n`` unit directions around a point: the preferred one, then alternately either side of it."""
-    pref = toward / abs(toward) if abs(toward) > 1e-12 else 1j
-    out = []
-    for k in range(n):
-        j = (k + 1) // 2 * (1 if k % 2 else -1)
-        out.append(pref * complex(math.cos(2 * math.pi * j / n), math.sin(2 * math.pi * j / n)))
+def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR) -> np.ndarray:
+    """For each candidate box (m, 4): how many lines (within ``clear`` + half their width), labels
+    (within ``APART``) and closed figures it would touch — all candidates at once."""
+    m = len(boxes)
+    out = np.zeros(m, dtype=int)
+    bx0, by0, bx1, by1 = (boxes[:, i:i + 1] for i in range(4))
+    if len(ob.segs):
+        near = ((ob.hi_x[None, :] > bx0 - clear) & (ob.lo_x[None, :] < bx1 + clear)
+                & (ob.hi_y[None, :] > by0 - clear) & (ob.lo_y[None, :] < by1 + clear))
+        ci, si = np.nonzero(near)
+        if len(ci):
+            g = ob.half[si] + clear
+            sx, sy, ex, ey = ob.segs[si].T
+            x0, y0 = boxes[ci, 0] - g, boxes[ci, 1] - g
+            x1, y1 = boxes[ci, 2] + g, boxes[ci, 3] + g
+            dx, dy = ex - sx, ey - sy
+            t0 = np.zeros(len(ci))
+            t1 = np.ones(len(ci))
+            ok = np.ones(len(ci), dtype=bool)
+            with np.errstate(all="ignore"):
+                for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
+                    zero = np.abs(p) < 1e-12
+                    ok &= ~(zero & (q < 0))
+                    r = np.where(zero, 0.0, q / np.where(zero, 1.0, p))
+                    t0 = np.where(~zero & (p < 0), np.maximum(t0, r), t0)
+                    t1 = np.where(~zero & (p > 0), np.minimum(t1, r), t1)
+            np.add.at(out, ci[ok & (t0 <= t1)], 1)
+    for group, apart in ((ob.boxes, APART), (ob.solid, 0.0)):
+        if group:
+            q = np.asarray(group, dtype=float)
+            hit = ((bx0 < q[None, :, 2] + apart) & (q[None, :, 0] < bx1 + apart)
+                   & (by0 < q[None, :, 3] + apart) & (q[None, :, 1] < by1 + apart))
+            out += hit.sum(axis=1)
     return out
+
+
+_TURNS: dict[int, np.ndarray] = {}
+
+
+def _turns(n: int) -> np.ndarray:
+    """exp(i·2πj/n) for j = 0, +1, −1, +2, −2, …: the preferred direction first, then either side."""
+    if n not in _TURNS:
+        j = np.array([(k + 1) // 2 * (1 if k % 2 else -1) for k in range(n)], dtype=float)
+        _TURNS[n] = np.exp(2j * np.pi * j / n)
+    return _TURNS[n]
+
+
+def _candidates(req: LabelRequest, ink: Box, gaps, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The candidate ink boxes (in preference order: nearer first, the preferred side first) and
+    the text's anchor (its start on the baseline, as a complex number) for each: the box lies
+    wholly on the side u of the point, ``gap`` clear of it."""
+    pref = req.toward / abs(req.toward) if abs(req.toward) > 1e-12 else 1j
+    u = pref * _turns(n)
+    m = np.maximum(np.abs(u.real), np.abs(u.imag))
+    iw, ih = ink[2] - ink[0], ink[3] - ink[1]
+    g = np.repeat(np.asarray(gaps, dtype=float), n)
+    uu = np.tile(u, len(gaps))
+    mm = np.tile(m, len(gaps))
+    cx = req.at.real + uu.real / mm * (iw / 2 + g)
+    cy = req.at.imag + uu.imag / mm * (ih / 2 + g)
+    boxes = np.stack([cx - iw / 2, cy - ih / 2, cx + iw / 2, cy + ih / 2], axis=1)
+    starts = (boxes[:, 0] - ink[0]) + 1j * (boxes[:, 1] - ink[1])
+    return boxes, starts
+
+
+_SKETCH = [False]
+
+
+@contextmanager
+def sketched():
+    """Inside it, drawings are sketched: their labels are asked for but not placed — what a
+    composition measures of a drawing's lines before the lettering (placing it is most of a
+    drawing's cost; the finished drawing is measured again)."""
+    _SKETCH.append(True)
+    try:
+        yield
+    finally:
+        _SKETCH.pop()
 
 
 def place_labels(record: Record, requests: list[LabelRequest], layer: str = "labels") -> Record:
     """Add the labels to ``record`` where they overprint nothing (see the module's docstring);
     returns the record."""
+    if _SKETCH[-1]:
+        return record
     ob = obstacles(record.items)
     for req in requests:
         probe = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size)
         ink = probe.ink()
-        spot = _near(ob, req, ink) or _far(ob, req, ink)
-        leader = None
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink)
         if spot is None:
-            if req.optional:
-                continue
-            spot = _least(ob, req, ink)
+            local = ob.near(req.at, FAR[-1] + size)
+            spot = _far(local, req, ink)
+            if spot is None:
+                if req.optional:
+                    continue
+                spot = _least(local, req, ink)
         box, start, leader = spot
         if leader is not None:
             a, b = leader
@@ -200,27 +267,24 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
 
 
 def _near(ob: Obstacles, req: LabelRequest, ink: Box):
-    w = ink[2] - ink[0]
-    for gap in (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap):
-        for u in _directions(req.toward):
-            box, start = _box_at(req.at, u, w, ink, gap)
-            if _conflicts(ob, box) == 0:
-                return box, start, None
+    gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+    boxes, starts = _candidates(req, ink, gaps, DIRECTIONS)
+    free = np.nonzero(_counts(ob, boxes) == 0)[0]
+    if len(free):
+        k = int(free[0])
+        return tuple(boxes[k]), complex(starts[k]), None
     return None
 
 
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     """A free spot farther out, joined to the point by a leader that crosses no label."""
-    w = ink[2] - ink[0]
-    for gap in FAR:
-        for u in _directions(req.toward, 2 * DIRECTIONS):
-            box, start = _box_at(req.at, u, w, ink, gap)
-            if _conflicts(ob, box) != 0:
-                continue
-            a, b = _leader(req.at, box)
-            if any(_segment_meets_box(a, b, (q[0] - 0.4, q[1] - 0.4, q[2] + 0.4, q[3] + 0.4)) for q in ob.boxes):
-                continue
-            return box, start, (a, b)
+    boxes, starts = _candidates(req, ink, FAR, 2 * DIRECTIONS)
+    for k in np.nonzero(_counts(ob, boxes) == 0)[0]:
+        box = tuple(boxes[k])
+        a, b = _leader(req.at, box)
+        if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+            continue
+        return box, complex(starts[k]), (a, b)
     return None
 
 
@@ -235,17 +299,11 @@ def _leader(at: complex, box: Box) -> tuple[complex, complex]:
 
 def _least(ob: Obstacles, req: LabelRequest, ink: Box):
     """The spot that touches the fewest lines and labels (nothing free anywhere)."""
-    w = ink[2] - ink[0]
-    best = None
-    for gap in NEAR + FAR:
-        for u in _directions(req.toward):
-            box, start = _box_at(req.at, u, w, ink, gap)
-            score = _conflicts(ob, box) + 0.01 * gap
-            if best is None or score < best[0]:
-                leader = _leader(req.at, box) if gap >= FAR[0] else None
-                best = (score, box, start, leader)
-    assert best is not None
-    return best[1], best[2], best[3]
+    boxes, starts = _candidates(req, ink, NEAR + FAR, DIRECTIONS)
+    gaps = np.repeat(np.asarray(NEAR + FAR), DIRECTIONS)
+    k = int(np.argmin(_counts(ob, boxes) + 0.01 * gaps))
+    box = tuple(boxes[k])
+    return box, complex(starts[k]), (_leader(req.at, box) if gaps[k] >= FAR[0] else None)
 
 
 def collisions(record: Record, clear: float = CHECK) -> list[str]:

@@ -75,6 +75,13 @@ class Grid:
     def rows(self) -> int:
         return -(-len(self.children) // max(self.cols, 1))
 
+    def cell(self) -> tuple[float, float]:
+        """The cell's size: the largest child's width and height."""
+        if not hasattr(self, "_cell"):
+            sizes = [extent(c) for c in self.children] or [(0.0, 0.0)]
+            self._cell = (max(w for w, _ in sizes), max(h for _, h in sizes))
+        return self._cell
+
 
 Node = Leaf | Row | Stack | Grid
 
@@ -83,15 +90,17 @@ def extent(node: Node) -> tuple[float, float]:
     """The least (width, height) the node needs, gaps included."""
     if isinstance(node, Leaf):
         return node.w, node.h
+    if isinstance(node, Grid):
+        if not node.children:
+            return 0.0, 0.0
+        cw, ch = node.cell()
+        return cw * node.cols + node.gap * (node.cols - 1), ch * node.rows + node.gap * (node.rows - 1)
     sizes = [extent(c) for c in node.children]
     if not sizes:
         return 0.0, 0.0
     if isinstance(node, Row):
         return sum(w for w, _ in sizes) + node.gap * (len(sizes) - 1), max(h for _, h in sizes)
-    if isinstance(node, Stack):
-        return max(w for w, _ in sizes), sum(h for _, h in sizes) + node.gap * (len(sizes) - 1)
-    cw, ch = max(w for w, _ in sizes), max(h for _, h in sizes)
-    return cw * node.cols + node.gap * (node.cols - 1), ch * node.rows + node.gap * (node.rows - 1)
+    return max(w for w, _ in sizes), sum(h for _, h in sizes) + node.gap * (len(sizes) - 1)
 
 
 def fits(node: Node, w: float, h: float) -> bool:
@@ -256,10 +265,11 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
     while they fit across (the rest wrap to the next row), rows one under another, a new sheet when
     the next row does not fit below. Near the foot a row keeps clear of ``keep`` (the title block).
-    The spare room of each row is shared out across it. None when one item is larger than a sheet."""
+    The spare room of each row is shared out across it, a sheet's spare height between its rows
+    (where no row then meets the title block). None when one item is larger than a sheet."""
     rx0, ry0, rx1, ry1 = region
-    pages: list[list[tuple[Leaf, Box]]] = []
-    page: list[tuple[Leaf, Box]] = []
+    pages: list[list[tuple[float, float, list[Node]]]] = []      # per sheet: (top, height, items) of each row
+    page: list[tuple[float, float, list[Node]]] = []
     y = ry1
 
     def room(top: float, h: float) -> float:
@@ -267,29 +277,42 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             return keep[0] - rx0
         return rx1 - rx0
 
+    def width(items: list[Node]) -> float:
+        return sum(extent(t)[0] for t in items) + gap * (len(items) - 1)
+
     for row in rows:
         queue = list(row)
         while queue:
             taken: list[Node] = []
-            width = height = 0.0
+            height = 0.0
             for item in queue:
                 w, h = extent(item)
-                add = w + (gap if taken else 0.0)
-                if taken and width + add > room(y, max(height, h)) + 1e-9:
+                if taken and width(taken + [item]) > room(y, max(height, h)) + 1e-9:
                     break
                 taken.append(item)
-                width, height = width + add, max(height, h)
-            if width > room(y, height) + 1e-9 or y - height < ry0 - 1e-9:
+                height = max(height, h)
+            if width(taken) > room(y, height) + 1e-9 or y - height < ry0 - 1e-9:
                 if not page:                   # alone on an empty sheet and still too large
                     return None
                 pages.append(page)
                 page, y = [], ry1
                 continue
-            spans = _shares([extent(t)[0] for t in taken], room(y, height), gap)
-            for item, (at, w) in zip(taken, spans):
-                page.extend(arrange(item, (rx0 + at, y - height, rx0 + at + w, y)))
+            page.append((y, height, taken))
             y -= height + gap
             queue = queue[len(taken):]
     if page:
         pages.append(page)
-    return pages
+    out = []
+    for rows_ in pages:
+        spare = (rows_[-1][0] - rows_[-1][1]) - ry0
+        extra = spare / len(rows_) if rows_ else 0.0
+        shifted = [(top - extra * (k + 0.5), h, items) for k, (top, h, items) in enumerate(rows_)]
+        if any(width(items) > room(top, h) + 1e-9 for top, h, items in shifted):
+            shifted = rows_                    # spreading would push a row into the title block
+        placed_ = []
+        for top, h, items in shifted:
+            spans = _shares([extent(t)[0] for t in items], room(top, h), gap)
+            for item, (at, w) in zip(items, spans):
+                placed_.extend(arrange(item, (rx0 + at, top - h, rx0 + at + w, top)))
+        out.append(placed_)
+    return out

@@ -170,8 +170,9 @@ def output_point(plans: Plans) -> str:
     return moving[-1] if moving else link.joints[-1]
 
 
-def position_record(plans: Plans) -> Record:
-    """The position plan of all positions, with arcs, trajectories, extremes and labels."""
+def position_record(plans: Plans, lettered: bool = True) -> Record:
+    """The position plan of all positions, with arcs, trajectories, extremes and labels (only the
+    lines when not ``lettered``: what a layout measures before the lettering is placed)."""
     sc = plans.scheme
     mech = sc.mech
     rec = Record(title="position plan", scales={"mu_l": plans.mu_l})
@@ -233,7 +234,7 @@ def position_record(plans: Plans) -> Record:
         X = where(sc, lay, sc.body_of(out), out)
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
         labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
-    return place_labels(rec, labels)
+    return place_labels(rec, labels) if lettered else rec
 
 
 def sheet_points(plans: Plans) -> list[str]:

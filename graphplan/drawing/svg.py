@@ -11,7 +11,7 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, lettering,
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering,
                                       plain_width, run_offsets)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
@@ -122,7 +122,7 @@ def _text(dwg, prim: Primitive, h: float):
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
     anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-    if is_plain(prim.text) and not _MISSING.search(prim.text):
+    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
         return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
                         font_family=FONT, text_anchor=anchor, fill="black")
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
@@ -158,10 +158,13 @@ def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, fl
         x = start if run.stacked else pen
         start = x
         up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
-        for piece in (p for p in _MISSING.split(run.text) if p):
-            adv = _advance(piece, round(s, 6))
-            out.append((piece, bool(run.level), x, up, adv))
-            x += adv
+        for part in (p for p in _MISSING.split(run.text) if p):
+            pieces = [(part, 0.0)] if part in MISSING else kerned(part, round(s, 6))   # a comma set apart
+            for piece, extra in pieces:
+                x += extra
+                adv = _advance(piece, round(s, 6))
+                out.append((piece, bool(run.level), x, up, adv))
+                x += adv
         pen = max(pen, x)
     return out, pen
 

@@ -98,43 +98,94 @@ def lettering(text: str) -> str:
     return text.translate(_LETTERING)
 
 
-@lru_cache(maxsize=1)
-def _advances() -> tuple[dict[str, float], float]:
-    """The advance widths, in ems, of the lettering font that comes with the package (osifont,
-    graphplan/data/fonts), and the width of its missing-glyph box."""
+FONTS = ("graphplan-symbols.ttf", "osifont.ttf")     # osifont's own glyphs win over the symbols'
+FOOT = 0.1        # ems: a glyph's "foot", its ink this low, is what a comma after it sits beside
+METRICS = "metrics.json"      # what the lettering needs of the fonts, read once from them (metrics_from_fonts)
+
+
+def metrics_from_fonts() -> dict:
+    """The packaged fonts' metrics in ems: each character's advance and ink box (x_min, y_min,
+    x_max, y_max from the baseline at its origin; None for a blank such as the space), and the
+    missing-glyph box's width — osifont's own glyphs over the symbols' font (graphplan/data/fonts).
+    Stored in ``metrics.json`` beside the fonts, so that lettering is measured without parsing the
+    fonts (tests/test_sheet.py checks the file against the fonts)."""
     from importlib import resources
 
     from fontTools.ttLib import TTFont
     folder = resources.files("graphplan") / "data" / "fonts"
     advance: dict[str, float] = {}
-    for name in ("graphplan-symbols.ttf", "osifont.ttf"):      # osifont's own glyphs win
+    boxes: dict[str, list[float] | None] = {}
+    feet: dict[str, float | None] = {}
+    missing = 0.5
+    for name in FONTS:
         with TTFont(str(folder / name)) as font:              # read whole, the file closed at once
-            em, widths = font["head"].unitsPerEm, font["hmtx"]
-            advance.update({chr(code): widths[g][0] / em for code, g in font.getBestCmap().items()})
-            box = widths[".notdef"][0] / em
-    return advance, box
+            em, widths, glyf = font["head"].unitsPerEm, font["hmtx"], font["glyf"]
+            for code, g in sorted(font.getBestCmap().items()):
+                advance[chr(code)] = round(widths[g][0] / em, 9)
+                gl = glyf[g]
+                if not getattr(gl, "numberOfContours", 0):
+                    boxes[chr(code)], feet[chr(code)] = None, None
+                    continue
+                boxes[chr(code)] = [round(v / em, 9) for v in (gl.xMin, gl.yMin, gl.xMax, gl.yMax)]
+                coords, _, _ = gl.getCoordinates(glyf)
+                low = [x for x, y in coords if y <= FOOT * em]
+                feet[chr(code)] = round(max(low) / em, 9) if low else None
+            missing = round(widths[".notdef"][0] / em, 9)
+    return {"advance": advance, "boxes": boxes, "feet": feet, "missing": missing}
+
+
+@lru_cache(maxsize=1)
+def _metrics() -> dict:
+    import json
+    from importlib import resources
+    path = resources.files("graphplan") / "data" / "fonts" / METRICS
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except OSError:               # a checkout without the derived file: read the fonts themselves
+        return metrics_from_fonts()
+
+
+@lru_cache(maxsize=1)
+def _advances() -> tuple[dict[str, float], float]:
+    """The advance widths, in ems, of the lettering font that comes with the package (osifont,
+    graphplan/data/fonts), and the width of its missing-glyph box."""
+    m = _metrics()
+    return m["advance"], m["missing"]
+
+
+LOW = ",."          # punctuation on the baseline
+JOINS = 1.2         # mm: a comma this close to the letter's foot reads as one word with it
+APART = 1.1         # mm: a comma that cannot join its letter stands this far clear of its ink
+
+
+@lru_cache(maxsize=65536)
+def kern(prev: str, c: str, size: float) -> float:
+    """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
+    near the baseline on its right (°, Г, Т, P, 7 …) stands apart from it, beside its box rather
+    than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
+    the degree sign reads as a stray mark. Nothing otherwise (the font sets text by its advances)."""
+    if c not in LOW or not prev.strip():
+        return 0.0
+    m = _metrics()
+    box, foot, cb = m["boxes"].get(prev), m["feet"].get(prev), m["boxes"].get(c)
+    if box is None or cb is None:
+        return 0.0
+    e = em(size)
+    adv = m["advance"].get(prev, m["missing"])
+    if foot is not None and (adv - foot + cb[0]) * e <= JOINS:
+        return 0.0
+    return max(0.0, APART - (adv - box[2] + cb[0]) * e)
 
 
 @lru_cache(maxsize=1)
 def _glyph_boxes() -> dict[str, tuple[float, float, float, float] | None]:
     """Each character's ink box in ems, (x_min, y_min, x_max, y_max) from the baseline at its origin,
     as the packaged fonts draw it (None: a blank, such as the space)."""
-    from importlib import resources
-
-    from fontTools.ttLib import TTFont
-    folder = resources.files("graphplan") / "data" / "fonts"
-    out: dict[str, tuple[float, float, float, float] | None] = {}
-    for name in ("graphplan-symbols.ttf", "osifont.ttf"):      # osifont's own glyphs win
-        with TTFont(str(folder / name)) as font:
-            em, glyf = font["head"].unitsPerEm, font["glyf"]
-            for code, g in font.getBestCmap().items():
-                gl = glyf[g]
-                out[chr(code)] = (None if not getattr(gl, "numberOfContours", 0) else
-                                  (gl.xMin / em, gl.yMin / em, gl.xMax / em, gl.yMax / em))
-    return out
+    return {c: (tuple(b) if b is not None else None) for c, b in _metrics()["boxes"].items()}
 
 
-def ink_boxes(text: str, size: float) -> list[tuple[float, float, float, float]]:
+@lru_cache(maxsize=16384)
+def ink_boxes(text: str, size: float) -> tuple[tuple[float, float, float, float], ...]:
     """The ink of each drawn character (mm, from the text's start on its baseline): the font's glyph
     boxes at their advances, sub- and superscripts at their size and shift — where the letters
     really put ink (a lowercase line reaches only half the height of its capitals)."""
@@ -144,27 +195,36 @@ def ink_boxes(text: str, size: float) -> list[tuple[float, float, float, float]]
                                                              for r, x0, s, shift in run_offsets(text, size)]
     out = []
     for t, x, s, shift in runs_:
+        prev = ""
         for c in lettering(t):
             e = em(s)
+            x += kern(prev, c, s)
             b = boxes.get(c, (0.0, 0.0, missing, 0.72))
             if b is not None:
                 out.append((x + b[0] * e, shift + b[1] * e, x + b[2] * e, shift + b[3] * e))
             x += advance.get(c, missing) * e
-    return out
+            prev = c
+    return tuple(out)
 
 
-@lru_cache(maxsize=8192)
 def _ink(text: str, size: float, anchor: str, at: Point) -> tuple[float, float, float, float]:
     x, y = at
     w = text_width(text, size)
     x0 = x - {"start": 0.0, "middle": w / 2, "end": w}[anchor]
+    b = _ink_extent(text, size)
+    return (x0, y, x0, y) if b is None else (x0 + b[0], y + b[1], x0 + b[2], y + b[3])
+
+
+@lru_cache(maxsize=16384)
+def _ink_extent(text: str, size: float) -> tuple[float, float, float, float] | None:
+    """The union of a text's letters' ink boxes from its start on the baseline (None: no ink)."""
     boxes = ink_boxes(text, size)
     if not boxes:
-        return x0, y, x0, y
-    return (x0 + min(b[0] for b in boxes), y + min(b[1] for b in boxes),
-            x0 + max(b[2] for b in boxes), y + max(b[3] for b in boxes))
+        return None
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes), max(b[3] for b in boxes))
 
 
+@lru_cache(maxsize=1)
 def cap_height() -> float:
     """The lettering font's capitals' height in ems (osifont's H: 0.737)."""
     return _glyph_boxes()["H"][3]
@@ -183,11 +243,28 @@ def line_pitch(size: float) -> float:
     return 1.6 * size + 2.0
 
 
+@lru_cache(maxsize=32768)
 def plain_width(text: str, size: float) -> float:
     """Width of ``text`` taken literally (no markup): the sum of the packaged font's advance widths ×
     the em (cairo sets text by advances, without kerning), a missing character as the font's box."""
     advance, box = _advances()
-    return em(size) * sum(advance.get(c, box) for c in lettering(text))
+    drawn = lettering(text)
+    return em(size) * sum(advance.get(c, box) for c in drawn) + sum(
+        kern(a, b, size) for a, b in zip(drawn, drawn[1:]) if b in LOW)
+
+
+def kerned(text: str, size: float) -> list[tuple[str, float]]:
+    """The drawn text (``lettering``) cut where ``kern`` adds space: (piece, extra space before it)."""
+    drawn = lettering(text)
+    out: list[tuple[str, float]] = []
+    start, extra = 0, 0.0
+    for i in range(1, len(drawn)):
+        k = kern(drawn[i - 1], drawn[i], size) if drawn[i] in LOW else 0.0
+        if k > 0:
+            out.append((drawn[start:i], extra))
+            start, extra = i, k
+    out.append((drawn[start:], extra))
+    return out
 
 
 def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]:
@@ -209,6 +286,7 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
     return out
 
 
+@lru_cache(maxsize=32768)
 def text_width(text: str, size: float) -> float:
     """Width of GOST type-B lettering: about 0.6 of the height per character, plus the gaps;
     sub- and superscripts of the markup (util.markup) at their smaller size, stacked ones once."""

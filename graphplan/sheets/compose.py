@@ -10,6 +10,7 @@ Also the sheets' numbers as the lab writes them (``number``: significant figures
 "—" for what the ruler cannot read) and the drawing's scale for the title block (``drawing_scale``)."""
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -119,6 +120,50 @@ def compose(f: Form, pages: list[list[Placed]], title_fields: dict[str, str], la
     return first
 
 
+def defects(sheet: Sheet) -> list[str]:
+    """What a teacher would send back, read off the set's own records: lettering that touches a
+    line or other lettering (drawing.labels.collisions), two drawings whose boxes meet or a drawing
+    outside its box, anything outside the frame or inside the title block (but the block's own),
+    the velocity plans out of position order (row by row, sheet after sheet). Empty when none."""
+    import re
+
+    from graphplan.drawing.labels import collisions
+    out: list[str] = []
+    order: list[int] = []
+    for n, page in enumerate(sheet.pages, 1):
+        f = page.form
+        out += [f"sheet {n}: {c}" for c in collisions(page.record)]
+        fx0, fy0, fx1, fy1 = f.frame_box
+        tb = title_block_box(f)
+        for p in page.record.items:
+            if p.layer == "frame":
+                continue
+            x0, y0, x1, y1 = p.bounds()
+            if x0 < fx0 - 1e-6 or y0 < fy0 - 1e-6 or x1 > fx1 + 1e-6 or y1 > fy1 + 1e-6:
+                out.append(f"sheet {n}: {p.kind} {p.text!r} outside the frame")
+            elif x1 > tb[0] + 1e-6 and y0 < tb[3] - 1e-6:
+                out.append(f"sheet {n}: {p.kind} {p.text!r} in the title block")
+        items = page.placed
+        for i, a in enumerate(items):
+            r = a.record.bounds() if a.record.items else a.box
+            if r[0] < a.box[0] - 1e-6 or r[1] < a.box[1] - 1e-6 or r[2] > a.box[2] + 1e-6 or r[3] > a.box[3] + 1e-6:
+                out.append(f"sheet {n}: the {a.name} leaves its box")
+            for b in items[i + 1:]:
+                p_, q = a.box, b.box
+                if p_[0] < q[2] and q[0] < p_[2] and p_[1] < q[3] and q[1] < p_[3]:
+                    out.append(f"sheet {n}: the {a.name} and the {b.name} meet")
+        plans = [(p.box, int(m.group(1))) for p in items if (m := re.fullmatch(r"velocity plan (\d+)", p.name))]
+        rows: dict[float, list] = {}
+        for b, k in plans:
+            top = next((t for t in rows if abs(t - b[3]) < 0.5), b[3])
+            rows.setdefault(top, []).append((b[0], k))
+        for top in sorted(rows, reverse=True):
+            order += [k for _, k in sorted(rows[top])]
+    if order != sorted(order):
+        out.append(f"velocity plans read {order}")
+    return out
+
+
 # -- captions and notes ------------------------------------------------------------------------------
 
 CAPTION = 5.0        # a drawing's name, mm (GOST 2.304)
@@ -126,24 +171,24 @@ CAPTION_2 = 3.5      # its second line (the position's angle, the scale)
 CAPTION_GAP = 4.0    # mm between a drawing and its caption
 
 
-def captioned(rec: Record, title: str, second: str = "") -> Record:
-    """The drawing with its caption centred under it (its name 5 mm, a second line 3.5 mm): the
-    caption belongs to the drawing's box."""
+def captioned(rec: Record, title: str, second: str = "", size: float = CAPTION) -> Record:
+    """The drawing with its caption centred under it (its name 5 mm — 3.5 mm under a small
+    drawing —, a second line 3.5 mm): the caption belongs to the drawing's box."""
     out = Record(rec.title, list(rec.items), dict(rec.scales))
     x0, y0, x1, _ = rec.bounds() if rec.items else (0.0, 0.0, 0.0, 0.0)
     mid = (x0 + x1) / 2
-    y = y0 - CAPTION_GAP - CAPTION
-    out.label((mid, y), title, size=CAPTION, anchor="middle", layer="labels", step="caption")
+    y = y0 - CAPTION_GAP - size
+    out.label((mid, y), title, size=size, anchor="middle", layer="labels", step="caption")
     if second:
         out.label((mid, y - line_pitch(CAPTION_2) - 1.0), second, size=CAPTION_2, anchor="middle", layer="labels",
                   step="caption")
     return out
 
 
-def caption_size(title: str, second: str = "") -> tuple[float, float]:
+def caption_size(title: str, second: str = "", size: float = CAPTION) -> tuple[float, float]:
     """The width and height a caption adds under a drawing."""
-    w = max(text_width(title, CAPTION), text_width(second, CAPTION_2) if second else 0.0)
-    h = CAPTION_GAP + CAPTION + 1.5 + ((line_pitch(CAPTION_2) + 1.0) if second else 0.0)
+    w = max(text_width(title, size), text_width(second, CAPTION_2) if second else 0.0)
+    h = CAPTION_GAP + size + 1.5 + ((line_pitch(CAPTION_2) + 1.0) if second else 0.0)
     return w, h
 
 
@@ -164,16 +209,21 @@ def _tokens(text: str) -> list[str]:
     return [t for t in out if t]
 
 
-def wrap_markup(text: str, width: float, size: float) -> list[str]:
-    """The line broken at spaces (never inside a {group} of the markup) into lines no wider than
-    ``width`` mm at letter height ``size``; a single word wider than that stays whole."""
+@functools.lru_cache(maxsize=4096)
+def _wrapped(text: str, width: float, size: float) -> tuple[str, ...]:
     lines: list[str] = []
     for word in _tokens(text):
         if lines and text_width(lines[-1] + " " + word, size) <= width:
             lines[-1] += " " + word
         else:
             lines.append(word)
-    return lines or [""]
+    return tuple(lines or [""])
+
+
+def wrap_markup(text: str, width: float, size: float) -> list[str]:
+    """The line broken at spaces (never inside a {group} of the markup) into lines no wider than
+    ``width`` mm at letter height ``size``; a single word wider than that stays whole."""
+    return list(_wrapped(text, round(width, 6), size))
 
 
 NOTE = 3.5           # the notes' lettering, mm
@@ -189,6 +239,13 @@ def note_block(lines: Sequence[str], width: float, title: str = "notes") -> Reco
             rec.label((5.0 if k else 0.0, y), part, size=NOTE, layer="labels", step="notes")
             y -= NOTE_STEP
     return rec
+
+
+def notes_height(notes: Sequence[Sequence[str]], width: float) -> float:
+    """The height of the tallest of these notes (one list of lines per language) wrapped to
+    ``width`` mm, with a line to spare for the final numbers."""
+    return max(sum(len(wrap_markup(line, width - 5.0, NOTE)) for line in lines) for lines in notes) * NOTE_STEP \
+        + NOTE_STEP
 
 
 def lines_of(rec: Record) -> list[str]:
@@ -213,27 +270,130 @@ def coarser(mu: float) -> float:
     return min(m for m in series_around(mu) if m > mu * (1 + 1e-9))
 
 
-def choose_levels(start: Callable[[float], dict[str, float]], fits: Callable[[dict[str, float]], bool],
+@dataclass
+class Family:
+    """Drawings that share one scale (the velocity plans, the force plans, the charts), measured once
+    at a trial scale ``mu0``: each drawing's lines (w, h) there and what its lettering adds (w, h),
+    its caption's (w, h). At a scale μ a drawing's lines are μ0/μ times as large (across and/or up),
+    its lettering and caption the same. ``principal``: the real size of the segment the family's
+    ``target`` (mm at size factor 1) speaks of — the crank r, v_A, a_A, the largest force. A family
+    whose drawings have no standard scale (a chart's length) takes μ = 1/k for the size factors k."""
+    mu0: float
+    sizes: list[tuple[float, float, float, float]]
+    caption: tuple[float, float] = (0.0, 0.0)
+    principal: float = 1.0
+    target: float = 100.0
+    across: bool = True
+    up: bool = True
+    factors: bool = False
+
+    def start(self, k: float) -> float:
+        """The family's μ at the common size factor k."""
+        from graphplan.graphic.scales import at_least
+        return 1.0 / k if self.factors else at_least(self.principal / (self.target * k))
+
+    def finer(self, mu: float) -> float | None:
+        """The next larger drawing's μ (None: no larger size factor)."""
+        if not self.factors:
+            return finer(mu)
+        bigger = [k for k in FACTORS if k > 1.0 / mu * (1 + 1e-9)]
+        return 1.0 / min(bigger) if bigger else None
+
+    def size(self, mu: float, i: int | None = None) -> tuple[float, float]:
+        """Drawing i at μ (the largest of each dimension when i is None), with lettering and caption."""
+        k = self.mu0 / mu
+        kw, kh = (k if self.across else 1.0), (k if self.up else 1.0)
+        sizes = self.sizes if i is None else [self.sizes[i]]
+        sizes = sizes or [(0.0, 0.0, 0.0, 0.0)]
+        w = max(gw * kw + lw for gw, _, lw, _ in sizes)
+        h = max(gh * kh + lh for _, gh, _, lh in sizes)
+        return max(w, self.caption[0]), h + self.caption[1]
+
+    def leaf(self, mu: float, name: str = "", i: int | None = None):
+        from graphplan.drawing.layout import Leaf
+        return Leaf(name, *self.size(mu, i))
+
+    def allow(self, mu: float, w: float, h: float, i: int) -> bool:
+        """Drawn at μ, drawing i came out w × h (without its caption): where that is more than
+        assumed, what its lettering adds is corrected (the next choice allows for it). Whether the
+        assumption held."""
+        k = self.mu0 / mu
+        kw, kh = (k if self.across else 1.0), (k if self.up else 1.0)
+        gw, gh, lw, lh = self.sizes[i]
+        need_w, need_h = w - gw * kw, h - gh * kh
+        if need_w <= lw + 1e-6 and need_h <= lh + 1e-6:
+            return True
+        self.sizes[i] = (gw, gh, max(lw, need_w), max(lh, need_h))
+        return False
+
+    def drawn(self, mu: float) -> float:
+        """The principal segment drawn at μ, mm (a chart: its size factor × target)."""
+        return self.target / mu if self.factors else self.principal / mu
+
+    def rel(self, mu: float) -> float:
+        """How large the family is drawn against its target (1 = the target)."""
+        return self.drawn(mu) / self.target
+
+
+def measured(records: Sequence[Record], mu0: float, captions: Sequence[tuple[str, str]] = (),
+             caption: float = CAPTION, lettering: float | None = None, **kw) -> Family:
+    """A family measured from its drawings at ``mu0``: each one's lines and lettering (or, for
+    drawings measured before their lettering is placed, ``lettering`` mm assumed), the widest and
+    tallest of its captions (both languages' when given; ``caption`` its letter height)."""
+    sizes = []
+    for r in records:
+        lines = Record(items=[p for p in r.items if p.kind != "text"]).bounds()
+        full = r.bounds()
+        gw, gh = lines[2] - lines[0], lines[3] - lines[1]
+        if lettering is not None:
+            sizes.append((gw, gh, lettering, lettering))
+        else:
+            sizes.append((gw, gh, full[2] - full[0] - gw + 1.0, full[3] - full[1] - gh + 1.0))
+    cs = [caption_size(*c, size=caption) for c in captions] or [(0.0, 0.0)]
+    return Family(mu0, sizes, (max(c[0] for c in cs), max(c[1] for c in cs)), **kw)
+
+
+def measured_twice(first: Sequence[Record], second: Sequence[Record], mu0: float, mu1: float,
+                   captions: Sequence[tuple[str, str]] = (), caption: float = CAPTION, lettering: float = 0.0,
+                   **kw) -> Family:
+    """A family measured from its drawings at two scales μ0 and μ1: each drawing's size taken as
+    a/μ + c across and up (a part drawn to scale, a part that is not — arrows of a fixed length),
+    the two unknowns from the two drawings; ``lettering`` mm more for labels not yet placed."""
+    sizes = []
+    ratio = mu0 / mu1
+    for r0, r1 in zip(first, second):
+        b0, b1 = r0.bounds(), r1.bounds()
+        dims = []
+        for s0, s1 in ((b0[2] - b0[0], b1[2] - b1[0]), (b0[3] - b0[1], b1[3] - b1[1])):
+            g = max((s0 - s1) / (1.0 - ratio), 0.0) if abs(1.0 - ratio) > 1e-9 else s0
+            dims.append((g, max(s0 - g, s1 - g * ratio, 0.0) + 1.0 + lettering))
+        (gw, lw), (gh, lh) = dims
+        sizes.append((gw, gh, lw, lh))
+    cs = [caption_size(*c, size=caption) for c in captions] or [(0.0, 0.0)]
+    return Family(mu0, sizes, (max(c[0] for c in cs), max(c[1] for c in cs)), **kw)
+
+
+def choose_levels(families: dict[str, Family], fits: Callable[[dict[str, float]], bool],
                   order: Sequence[str], largest: Callable[[str, float], bool] | None = None
                   ) -> dict[str, float] | None:
-    """The scales by arithmetic: the largest common size factor k (``start(k)`` gives each family's
-    standard μ for it) at which ``fits`` holds; then the families in ``order``, in turn, each made one
-    standard step finer while it still fits (and ``largest(name, μ)`` allows) — round after round,
-    so they grow together. None when even the smallest factor does not fit."""
+    """The scales by arithmetic: the largest common size factor k (each family's ``start(k)``) at
+    which ``fits`` holds; then the families in ``order``, in turn, each made one step larger while it
+    still fits (and ``largest(name, μ)`` allows) — round after round, so they grow together. None
+    when even the smallest factor does not fit."""
     mu = None
     for k in FACTORS:
-        trial = start(k)
+        trial = {name: fam.start(k) for name, fam in families.items()}
         if fits(trial):
             mu = trial
             break
     if mu is None:
         return None
-    growing = list(order)
+    growing = [name for name in order if name in families]
     while growing:
         for name in list(growing):
-            bigger = finer(mu[name])
+            bigger = families[name].finer(mu[name])
             trial = {**mu, name: bigger}
-            if (largest is not None and not largest(name, bigger)) or not fits(trial):
+            if bigger is None or (largest is not None and not largest(name, bigger)) or not fits(trial):
                 growing.remove(name)
             else:
                 mu = trial

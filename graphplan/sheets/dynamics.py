@@ -5,16 +5,26 @@ position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
 from graphplan.drawing.flywheel import records
-from graphplan.drawing.layout import Block
+from graphplan.drawing.layout import GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, set_columns, split, top_left
 from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.flywheel import Flywheel, construct
 from graphplan.graphic.record import Record
 from graphplan.report.dynamics import dynamics_json
-from graphplan.report.plans import captioned
-from graphplan.sheets.form import TABLES, Form, enlarged, table
-from graphplan.sheets.sheet import Options, Sheet, compose, fields, fmt
-from graphplan.util.words import fixed, num
+from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
+                                      note_block, notes_height)
+from graphplan.sheets.form import TABLES, Form, enlarged, form, table
+from graphplan.sheets.kinematics import TITLE, fields
+from graphplan.util.words import LANGS, fixed, num
+
+
+def fmt(v: float | None, lang: str, digits: int = 4) -> str:
+    """Numbers for tables (util.words.num): 4 significant digits, the language's decimal sign, a
+    true minus, '—' for none."""
+    return num(v, lang, digits).replace("-", "−")
+
+
+Options = SheetOptions
 
 # the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
 SIZES = ((330.0, 1.5), (330.0, 1.3), (330.0, 1.15), (330.0, 1.0), (290.0, 1.0), (250.0, 1.0), (210.0, 0.8),
@@ -129,37 +139,126 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     return rec
 
 
-def dynamics_blocks(st: Study, args: Options, L: float, dyn=None, size: float = 1.0,
-                    tables: float = 1.0) -> tuple[list[Block], Flywheel]:
-    lang = args.lang
-    w = WORDS[lang]
-    dyn = dyn or analyse(st, getattr(args, "delta", None))
+DRAWINGS = ("moments", "energy", "inertia", "wittenbauer", "speed")
+
+
+def _tables(doc: dict, lang: str, factor: float) -> list[tuple[str, Record]]:
+    return [(name, enlarged(make(doc, lang), factor)) for name, make in
+            (("positions table", positions_table), ("flywheel table", flywheel_table), ("motor table", motor_table))]
+
+
+def _drawn(dyn, args, L: float, size: float, lang: str) -> tuple[Flywheel, dict[str, Record]]:
     f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
-    doc = dynamics_json(f)
     drawn = records(f, lang, speed_height=100.0 * size)
-    blocks = [Block(name, lambda _k, r=drawn[name], c=w[name]: captioned(r, c))
-              for name in ("moments", "wittenbauer", "energy", "inertia", "speed")]
-    blocks.append(Block("positions table", lambda _k: enlarged(positions_table(doc, lang), tables)))
-    blocks.append(Block("flywheel table", lambda _k: enlarged(flywheel_table(doc, lang), tables)))
-    blocks.append(Block("motor table", lambda _k: enlarged(motor_table(doc, lang), tables)))
-    blocks.append(Block("notes", lambda _k: notes(f, doc, lang)))
-    return blocks, f
+    return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
+
+
+SHAPES = ("bands", "column")
+
+
+def _tree(shape: str, d: dict[str, Leaf], C: Leaf):
+    """The dynamics sheet's composition: the moments and the work on one φ axis; ΔT(φ) over I*(φ)
+    beside the energy–mass diagram; ω(φ); the tables' column with the notes over the title block.
+    "bands": those bands one under another, the column beside ω(φ); "column": the column the
+    sheet's full height."""
+    middle = Row([Stack([d["energy"], d["inertia"]]), d["wittenbauer"]])
+    if shape == "bands":
+        return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
+    return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
+
+
+def _column(f: Form, tables: list[Leaf], parts: int, height) -> tuple[Leaf, list[list[Leaf]], float]:
+    groups = split(tables, parts)
+    cw, ch = column_size(groups)
+    width = max(cw, TITLE)
+    foot = keep_out(f)[3] - field_of(f)[1]
+    return Leaf("column", width, ch + GAP + height(width) + GAP + foot), groups, width
+
+
+def _sizes(st: Study):
+    """The (L, size) pairs tried, largest first: the scene's L where it gives one."""
+    given = st.mech.task.flywheel.get("L_mm")
+    if given:
+        return tuple(dict.fromkeys((float(given), k) for _, k in SIZES))
+    return SIZES
+
+
+def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int]:
+    """The flywheel construction the dynamics sheet of ``f`` draws: the largest abscissa L and
+    heights' size at which its composition fits one sheet (the tables lettered 3.5 mm where that
+    costs nothing, both languages measured) — (L, size, tables' factor, shape, table columns). The
+    terminal's ``dynamics`` reports the same construction. Each candidate is drawn (a few ms); no
+    layout is searched."""
+    x0, y0, x1, y1 = field_of(f)
+    W, H = x1 - x0, y1 - y0
+    last = None
+    for L, size in _sizes(st):
+        for factor in (TABLES, 1.0):
+            leaves, tabs, notes_ = {}, [], []
+            for lang in LANGS:
+                fw, drawn = _drawn(dyn, args, L, size, lang)
+                for name, rec in drawn.items():
+                    w, h = _wh(rec)
+                    old = leaves.get(name)
+                    leaves[name] = Leaf(name, max(w, old.w if old else 0.0), max(h, old.h if old else 0.0))
+                doc = dynamics_json(fw)
+                tabs.append([(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)])
+                notes_.append(lines_of(notes(fw, doc, lang)))
+            tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
+            last = (L, size, factor, "column", 3)
+            for shape in SHAPES:
+                for parts in (1, 2, 3):
+                    C = _column(f, tables, parts, lambda w: notes_height(notes_, w))[0]
+                    tw, th = extent(_tree(shape, leaves, C))
+                    if tw <= W + 1e-9 and th <= H + 1e-9:
+                        return L, size, factor, shape, parts
+    return last
+
+
+def _wh(rec: Record) -> tuple[float, float]:
+    b = rec.bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+def dynamics_scales(st: Study, dyn, format: str = "A1", divisions: int | None = None,
+                    precision: float = 0.5) -> dict[str, float]:
+    """L and size of the flywheel construction the dynamics sheet of ``format`` draws — for
+    ``graphplan dynamics`` to report the construction the sheet draws."""
+    L, size, *_ = construction(st, dyn, form(format), SheetOptions(precision=precision, sheet="dynamics")
+                               if divisions is None else _Args(divisions, precision))
+    return {"L": L, "size": size}
+
+
+class _Args:
+    def __init__(self, divisions, precision):
+        self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
-    """Sheet 3: the largest abscissa L at which every block fits one sheet (the tables lettered 3.5 mm,
-    else 2.5 mm); where none does (a small format), the smallest, carried over to further sheets
-    of the set."""
-    from graphplan.sheets.compose import fits_one
+    """Sheet 3: the flywheel construction at the largest L and size whose composition fits one
+    sheet (``construction``), in zones: the moments and the work, ΔT and I* beside the energy–mass
+    diagram, ω(φ), the tables' column with the notes over the title block."""
     dyn = analyse(st, getattr(args, "delta", None))
-    for tables in (TABLES, 1.0):         # the tables lettered 3.5 mm unless that costs a further sheet
-        for L, size in SIZES:
-            blocks, fw = dynamics_blocks(st, args, L, dyn, size, tables)
-            if fits_one(f, blocks):
-                break
-        else:
-            continue
-        break
-    tf = fields(st, args.lang, f"μ_φ = {num(fw.mu_phi, args.lang, 4)}", 3, 3)
-    tf["subtitle"] = WORDS[args.lang]["subtitle"]
-    return compose(f, blocks, tf, args.lang, f"{st.mech.title} — {tf['subtitle']}")
+    L, size, factor, shape, parts = construction(st, dyn, f, args)
+    lang = args.lang
+    fw, drawn = _drawn(dyn, args, L, size, lang)
+    doc = dynamics_json(fw)
+    leaves = {name: Leaf(name, record=rec) for name, rec in drawn.items()}
+    tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
+    note_lines = lines_of(notes(fw, doc, lang))
+    C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])
+    region = field_of(f)
+    items, col_box = [], None
+    for leaf, b in arrange(_tree(shape, leaves, C), region):
+        if leaf is C:
+            col_box = b
+        elif leaf.record is not None:
+            items.append(Placed(leaf.name, centred(leaf.record, b), b))
+    nrec = note_block(note_lines, width)
+    foot = keep_out(f)[3]
+    nb = (col_box[2] - width, foot, col_box[2], foot + _wh(nrec)[1])
+    items.append(Placed("notes", top_left(nrec, nb), nb))
+    items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+    tf = fields(st, lang, "", 3, 3)       # diagrams: no drawing scale (the scales are in the notes)
+    tf["subtitle"] = WORDS[lang]["subtitle"]
+    return compose(f, [items], tf, lang, f"{st.mech.title} — {tf['subtitle']}")

@@ -1,24 +1,29 @@
-"""The force sheet (sheet 2 of the coursework, seed 000): the acceleration plan of the force position
-with its table, the table of masses, moments of inertia and inertia loads, every group with its
-force plan and its forces' table, the Zhukovsky lever, the results, the balancing moment over a turn,
-the diagram of the resistance force over the stroke and the reactions' hodographs.
+"""The force sheet (sheet 2 of the coursework, seed 000): the mechanism in the force position with
+every load on it, each group with its force plan beside it (a row per group, in the order they are
+solved), the acceleration plan of the force position, the Zhukovsky lever, the charts over the turn
+(the balancing moment, the frame's reaction on the slider, the resistance over the stroke, the
+reactions' hodographs); the tables (accelerations, masses and inertia loads, each group's forces,
+the results) in a column by the title block, the notes above it.
 
-The force plans' μF is chosen once per scene and format (``force_scales``): the largest force drawn
-as long as the sheet allows; ``forces --format`` prints the same numbers."""
+Composed by construction like every sheet (docs/composition.md); the scales — μl of the scheme and of
+the groups, μF, μa, μv of the lever, the charts' and hodographs' sizes — chosen once per scene and
+format by arithmetic (``plan``); ``forces --format`` prints the same numbers (``force_scales``)."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from graphplan.drawing.layout import HULL, Block
+from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent,
+                                      flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
-from graphplan.report.plans import captioned
-from graphplan.sheets.compose import (Sheet, SheetOptions, bare_share, beside, compose, drawing_scale,
-                                      fits_one, fits_sheets, options_of, paginate, remembered, sampled)
+from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser, compose,
+                                      drawing_scale, field_of, keep_out, measured_twice, note_block, notes_height,
+                                      options_of, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
-from graphplan.sheets.kinematics import FACTORS, ONE_SHEET, acceleration_table, fields, notes
+from graphplan.sheets.kinematics import ONE_SHEET, TITLE, acceleration_table, fields, notes
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, force_symbol, num, unit, word
 
@@ -90,182 +95,386 @@ def small_forces(fp, lang: str = "uk") -> list[str]:
     return list(dict.fromkeys(out))
 
 
-FORCE_FAMILIES = ("forces", "groups", "acceleration", "charts", "hodographs")
+FAMILIES = ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs")
+TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration": 120.0, "lever": 100.0,
+           "charts": 1.0, "hodographs": 1.0}
+SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
+LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
 @dataclass
-class ForceDrawn:
-    k: dict[str, float]
-    fp: object
-    blocks: list[Block]
-
-
 class ForceDrafter:
-    """Draws the force sheet's blocks at given size factors, remembering what it drew."""
+    """Draws what the force sheet holds at given scales, remembering it."""
+    st: Study
+    opts: SheetOptions
 
-    def __init__(self, st: Study, opts: SheetOptions, tables: float = 1.0):
+    def __post_init__(self) -> None:
         from graphplan.drawing import charts as forcecharts
         from graphplan.exact import kinetostatics
-        self.st, self.opts, self.tables = st, opts, tables
-        self.phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
-        self.ks = kinetostatics.analyse(st, [self.phi])
-        self.turn = forcecharts.turn(st)
+        self.phi = float(np.atleast_1d(kinetostatics.at_scene_angle(self.st))[0])
+        self.ks = kinetostatics.analyse(self.st, [self.phi])
+        self.turn = forcecharts.turn(self.st)
         self.memo: dict = {}
 
-    def drawn(self, k: dict[str, float]) -> ForceDrawn:
-        key = tuple(k[f] for f in FORCE_FAMILIES)
+    def _once(self, key, make):
         if key not in self.memo:
-            self.memo[key] = force_blocks(self, k)
+            self.memo[key] = make()
         return self.memo[key]
 
+    def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None):
+        from graphplan.graphic import forceplans
+        return self._once(("fp", mu_l, mu_F, mu_v), lambda: forceplans.construct(
+            self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v))
 
-def force_blocks(dr: ForceDrafter, k: dict[str, float]) -> ForceDrawn:
-    """The force sheet's blocks at size factors k: "forces" sets μF, "groups" μl of the groups'
-    drawings, "acceleration" μa of the force position's plan, "charts" the charts' size, "hodographs" the hodographs'."""
-    from graphplan.drawing import charts as forcecharts
-    from graphplan.drawing import forces as forcedraw
-    from graphplan.drawing.plans import acceleration_records
-    from graphplan.graphic import forceplans
-    from graphplan.graphic.plans import build_plans
-    from graphplan.graphic.scales import Targets, format_scale
-    from graphplan.report.plans import plans_json
-    st, opts, phi, ks = dr.st, dr.opts, dr.phi, dr.ks
-    lang, p = opts.lang, opts.precision
+    def plans(self, mu_a: float | None = None):
+        from graphplan.graphic.plans import build_plans
+        return self._once(("plans", mu_a), lambda: build_plans(
+            self.st, count=self.opts.positions, accel=[self.phi], precision=self.opts.precision, mu_a=mu_a))
+
+    def drawings(self, mu: dict[str, float], lang: str = "uk", lettered: bool = True) -> dict[str, list[Record]]:
+        """The drawings at the scales ``mu`` (no captions): family → records in order; sketched
+        (labels not placed, drawing.labels.sketched) when not ``lettered``."""
+        def make():
+            if not lettered:
+                from graphplan.drawing.labels import sketched
+                with sketched():
+                    return draw()
+            return draw()
+
+        def draw():
+            from graphplan.drawing import charts as forcecharts
+            from graphplan.drawing import forces as forcedraw
+            from graphplan.drawing.plans import acceleration_records
+            fp = self.fp(mu["groups"], mu["forces"], mu["lever"])
+            scheme = self.fp(mu["scheme"], mu["forces"], mu["lever"])
+            plans = self.plans(mu["acceleration"])
+            q = next(x for x in plans.positions if x.acceleration is not None)
+            charts = forcecharts.records(self.turn, 1.0 / mu["charts"], lang, 1.0 / mu["hodographs"])
+            names = self.names()
+            return {"scheme": [forcedraw.mechanism_record(scheme, lang)],
+                    "groups": [forcedraw.group_record(fp, gp, lang) for gp in fp.groups],
+                    "forces": [forcedraw.polygon_record(fp, gp, lang) for gp in fp.groups],
+                    "acceleration": [acceleration_records(plans)[q.key]],
+                    "lever": [forcedraw.lever_record(fp, lang)],
+                    "charts": [charts[n] for n in names["charts"]],
+                    "hodographs": [charts[n] for n in names["hodographs"]]}
+        return self._once(("drawings", lang, lettered) + tuple(sorted(mu.items())), make)
+
+    def names(self) -> dict[str, list[str]]:
+        """The drawings' names per family, in order (for captions and boxes), as
+        ``drawing.charts.records`` names the charts."""
+        from graphplan.drawing import charts as forcecharts
+
+        def make():
+            fp = self.fp()
+            ext = any(ld.kind == "external" for ld in self.turn.ks.loads)
+            charts = (["moment"] + (["resistance"] if ext else [])
+                      + [f"reaction {k}" for k in forcecharts.slider_reactions(self.turn)])
+            return {"scheme": ["mechanism"], "groups": [f"group {gp.label}" for gp in fp.groups],
+                    "forces": [f"polygon {gp.label}" for gp in fp.groups], "acceleration": ["acceleration plan"],
+                    "lever": ["lever"], "charts": charts,
+                    "hodographs": [f"hodograph {k}" for k in self.turn.revolute]}
+        return self._once(("names",), make)
+
+
+def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, list[tuple[str, str]]]:
+    """Each drawing's caption (name, second line) in ``lang``."""
+    from graphplan.graphic.scales import format_scale
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
-    mu_l = forceplans.mechanism_scale(st, forceplans.MECHANISM_MM * k["groups"])
-    mu_F = forceplans.force_scale(ks, POLYGON_MM * k["forces"])
-    fp = forceplans.construct(st, phi, precision=p, mu_l=mu_l, mu_F=mu_F)
-    plans = build_plans(st, count=opts.positions, accel=[phi], precision=p,
-                        targets=Targets().scaled(k["acceleration"]))
-    q = next(x for x in plans.positions if x.acceleration is not None)
+    names = dr.names()
+    at = f"{w('at')} {fixed(dr.phi, lang, 2)}°"
+    out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
+           "groups": [(_caption(n, lang), format_scale('mu_l', mu['groups'], lang)) for n in names["groups"]],
+           "forces": [(_caption(n, lang), "") for n in names["forces"]],     # μF under the plan itself
+           "acceleration": [(f"{w('acceleration')}, {w('position')}",
+                             f"{format_scale('mu_a', mu['acceleration'], lang)},  {at}")],
+           "lever": [(_caption("lever", lang), "")],                           # μv under the lever itself
+           "charts": [(_caption(n, lang), "") for n in names["charts"]],
+           "hodographs": [(_caption(n, lang), "") for n in names["hodographs"]]}
+    return out
+
+
+def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
+    """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
+    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"])
+    return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
+
+
+def _tables_at(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[tuple[str, Record]]:
+    """The sheet's tables in reading order: the force position's accelerations, the masses and
+    inertia loads, each group's forces, the balancing moment and the reactions."""
+    from graphplan.drawing import forces as forcedraw
+    from graphplan.report.plans import plans_json
+    st, p = dr.st, dr.opts.precision
+    plans = dr.plans(mu["acceleration"])
     acc_doc = next(d for d in plans_json(plans)["positions"] if "acceleration" in d)
-    blocks: list[Block] = []
-    small = small_forces(fp, lang)
-    lines = [f"{w('at')} {fixed(phi, lang, 2)}°"] + ([w('small') + "; ".join(small)] if small else [])
-    head = notes(st, [format_scale(m, v, lang) for m, v in (("mu_l", fp.mu_l), ("mu_F", fp.mu_F),
-                                                              ("mu_a", plans.mu_a))], lines, lang)
-    blocks.append(Block("notes", lambda _k, r=head: r))
-    label = q.index if q.index is not None else f"φ = {fixed(q.phi % 360, lang, 1)}°"
-    caption = f"{w('acceleration')}, {w('position')} {label}, {format_scale('mu_a', plans.mu_a, lang)}"
-    arec = captioned(acceleration_records(plans)[q.key], caption)
     n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
-    atab = enlarged(acceleration_table(acc_doc, n, lang, p), dr.tables)
-    both = beside([arec, atab])
-    blocks.append(Block("acceleration plan", lambda _k: both, solid=HULL))
-    itab = enlarged(inertia_table(st, ks, acc_doc, lang), dr.tables)
-    blocks.append(Block("inertia table", lambda _k: itab))
-    drawn = forcedraw.records(fp, lang)
+    fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+    out = [("acceleration table", acceleration_table(acc_doc, n, lang, p)),
+           ("inertia table", inertia_table(st, dr.ks, acc_doc, lang))]
     for gp in fp.groups:
-        parts = [captioned(drawn[f"group {gp.label}"], _caption(f"group {gp.label}", lang)),
-                 captioned(drawn[f"polygon {gp.label}"], _caption(f"polygon {gp.label}", lang)),
-                 captioned(enlarged(drawn[f"table {gp.label}"], dr.tables), _caption(f"table {gp.label}", lang))]
-        group = beside([parts[0], beside([parts[1]], below=parts[2])])
-        blocks.append(Block(f"group {gp.label}", lambda _k, r=group: r))
-    scheme = captioned(drawn["mechanism"], f"{w('mechanism')}, {w('at')} {fixed(phi, lang, 2)}°")
-    blocks.append(Block("mechanism", lambda _k: scheme))
-    lever = beside([captioned(drawn["lever"], _caption("lever", lang)),
-                    captioned(enlarged(drawn["results"], dr.tables), _caption("results", lang))])
-    blocks.append(Block("lever", lambda _k: lever, solid=HULL))
-    for name, rec in forcecharts.records(dr.turn, k["charts"], lang, k["hodographs"]).items():
-        chart = captioned(rec, _caption(name, lang))
-        blocks.append(Block(name, lambda _k, r=chart: r, solid=True))   # a chart keeps its axes' field
-    return ForceDrawn(dict(k), fp, blocks)
+        rec = forcedraw.group_table_record(fp, gp, lang)
+        out.append((f"table {gp.label}", _titled(rec, _caption(f"table {gp.label}", lang))))
+    out.append(("results", _titled(forcedraw.results_record(fp, lang), _caption("results", lang))))
+    return out
 
 
-def growth(dr: ForceDrafter, d: ForceDrawn, fits) -> list[ForceDrawn]:
-    """Each family in turn drawn at the next larger factors while ``fits`` holds: every drawing on
-    the way, ``d`` first; a factor that draws the same (the standard scales step coarser than the
-    factors) is passed over without a second entry."""
-    path = [d]
-    for fam in FORCE_FAMILIES:
-        for bigger in sorted(x for x in FACTORS if x > d.k[fam]):
-            trial = dr.drawn({**d.k, fam: bigger})
-            if not fits(trial):
+def _titled(rec: Record, title: str) -> Record:
+    """A table record with its title above it, as the sheet's other tables carry theirs."""
+    out = Record(rec.title, list(rec.items), dict(rec.scales))
+    x0, _, _, y1 = rec.bounds()
+    out.label((x0, y1 + 2.2), title, size=3.5, layer="tables")
+    return out
+
+
+def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]:
+    from graphplan.graphic.scales import format_scale
+    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+    fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+    small = small_forces(fp, lang)
+    lines = [f"{w('at')} {fixed(dr.phi, lang, 2)}°"] + ([w('small') + "; ".join(small)] if small else [])
+    scales = [format_scale("mu_l", mu["scheme"], lang)]
+    if mu["groups"] != mu["scheme"]:
+        scales.append(format_scale("mu_l", mu["groups"], lang) + f" ({w('group').lower()})")
+    scales += [format_scale(m, mu[k], lang) for m, k in (("mu_F", "forces"), ("mu_a", "acceleration"),
+                                                          ("mu_v", "lever"))]
+    from graphplan.sheets.compose import lines_of
+    return lines_of(notes(dr.st, scales, lines, lang))
+
+
+@dataclass
+class Natural:
+    """The force sheet's drawings measured once (both languages): the families, the tables per
+    lettering factor, the notes' lines."""
+    families: dict[str, Family]
+    tables: dict[float, list[tuple[str, float, float]]]
+    notes: list[list[str]]
+
+
+def measure(dr: ForceDrafter) -> Natural:
+    from graphplan.util.words import LANGS
+    fp = dr.fp()
+    plans = dr.plans()
+    mu0 = {"scheme": fp.mu_l, "groups": fp.mu_l, "forces": fp.mu_F, "acceleration": plans.mu_a,
+           "lever": fp.lever.mu_v, "charts": 1.0, "hodographs": 1.0}
+    mu1 = {fam: (2.0 if fam in ("charts", "hodographs") else coarser(coarser(mu))) for fam, mu in mu0.items()}
+    recs, recs1 = dr.drawings(mu0, lettered=False), dr.drawings(mu1, lettered=False)
+    biggest = max([float(np.max(np.abs(ld.force))) for ld in dr.ks.loads]
+                  + [float(np.max(np.abs(r.force))) for r in dr.ks.reactions.values()] + [1e-9])
+    extent = TARGETS["scheme"] * fp.mu_l        # the mechanism's extent the default μl was chosen by
+    mech = dr.st.mech
+    a_a = mech.crank.length * (mech.omega1 ** 4 + mech.crank.epsilon ** 2) ** 0.5
+    v_a = abs(mech.omega1) * mech.crank.length
+    principal = {"scheme": extent, "groups": extent, "forces": biggest, "acceleration": a_a, "lever": v_a,
+                 "charts": 1.0, "hodographs": 1.0}
+    caps = {lang: _captions(dr, mu0, lang) for lang in LANGS}
+    families = {}
+    for fam, rs in recs.items():
+        families[fam] = measured_twice(rs, recs1[fam], mu0[fam], mu1[fam],
+                                       [caps[lang][fam][i] for lang in LANGS for i in range(len(rs))],
+                                       principal=principal[fam], target=TARGETS[fam],
+                                       factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
+                                       lettering=LETTERING)
+    tables = {}
+    for factor in (TABLES, 1.0):
+        per = [[(name, *_wh(rec)) for name, rec in _tables(dr, mu0, lang, factor)] for lang in LANGS]
+        tables[factor] = [(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*per)]
+    return Natural(families, tables, [_notes_lines(dr, mu0, lang) for lang in LANGS])
+
+
+def _wh(rec: Record) -> tuple[float, float]:
+    b = rec.bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+def _column(f: Form, tables: list[Leaf], parts: int, height) -> tuple[Leaf, list[list[Leaf]], float]:
+    groups = split(tables, parts)
+    cw, ch = column_size(groups)
+    width = max(cw, TITLE)
+    foot = keep_out(f)[3] - field_of(f)[1]
+    return Leaf("column", width, ch + GAP + height(width) + GAP + foot), groups, width
+
+
+SHAPES = ("column", "bands")
+
+
+def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf):
+    """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
+    its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
+    the sheet's full height at the right; "bands" — the column under the groups' band."""
+    S = leaves["scheme"][0]
+    groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    A, L = leaves["acceleration"][0], leaves["lever"][0]
+    charts = leaves["charts"]
+    H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+    if shape == "column":
+        body = Stack([Row([S, groups]), Row([A, L] + charts[:1]), Row(charts[1:] + H)])
+        return Row([body, C], flush=True)
+    return Stack([Row([S, groups, A]), Row([L] + charts[:2]), Row(charts[2:] + H + [C], flush=True)], flush=True)
+
+
+@dataclass
+class Plan:
+    mu: dict[str, float]
+    tables: float
+    shape: str = "column"
+    hcols: int = 1
+    parts: int = 1
+    sheets: int = 1
+
+
+def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
+    return {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
+
+
+def _one_sheet(nat: Natural, f: Form) -> Plan | None:
+    x0, y0, x1, y1 = field_of(f)
+    W, H = x1 - x0, y1 - y0
+    nh = len(nat.families["hodographs"].sizes)
+    best = None
+    for factor in (TABLES, 1.0):
+        tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+        cols = [_column(f, tabs, parts, lambda w: notes_height(nat.notes, w))[0] for parts in (1, 2, 3)]
+
+        def arranged(mu, shape):
+            leaves = _leaves(nat, mu)
+            found = None
+            for hc in range(1, max(nh, 1) + 1):
+                for parts, C in enumerate(cols, 1):
+                    tw, th = extent(_tree(shape, leaves, hc, C))
+                    if tw <= W + 1e-9 and th <= H + 1e-9:
+                        fill = min(W / tw, H / th)
+                        if found is None or fill > found[0] + 1e-9:
+                            found = (fill, hc, parts)
+            return found
+
+        for shape in SHAPES:
+            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None,
+                               ("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"))
+            if mu is None:
+                continue
+            rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
+            score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
+                     -SHAPES.index(shape))
+            _, hc, parts = arranged(mu, shape)
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1))
+            if best is None or cand[0] > best[0]:
+                best = cand
+    return best[1] if best else None
+
+
+SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
+
+
+def _set(nat: Natural, f: Form) -> Plan:
+    """A set: every family at least at its target size (or as large as a sheet holds), flowing over
+    the sheets in reading order; then grown while the set needs no more sheets."""
+    region = field_of(f)
+    keep = keep_out(f)
+    best = None
+    for factor in (TABLES, 1.0):
+        def pages(mu):
+            leaves = _leaves(nat, mu)
+            rows = [leaves["scheme"]] + [[g, p] for g, p in zip(leaves["groups"], leaves["forces"])]
+            rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
+            rows.append([Leaf(n, w, h) for n, w, h in nat.tables[factor]]
+                        + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
+            out = flow(rows, region, keep)
+            return None if out is None else len(out)
+        mu = None
+        for k in (1.0, 0.8, 0.64, 0.5, 0.4, 0.32):
+            trial = {name: fam.start(k) for name, fam in nat.families.items()}
+            if pages(trial) is not None:
+                mu = trial
                 break
-            d = trial
-            if _looks(d) != _looks(path[-1]):
-                path.append(d)
-    return path
+        if mu is None:
+            continue
+        count = pages(mu)
+        grown = choose_levels(nat.families, lambda m: pages(m) == count, FAMILIES,
+                              lambda name, m: nat.families[name].rel(m) <= 1.25 + 1e-9)
+        mu = grown if grown is not None and pages(grown) == count else mu
+        if best is None or count < best[0]:
+            best = (count, Plan(mu, factor, "set", 1, 1, count))
+    if best is None:
+        raise GraphplanError(f"the force drawings do not fit a {f.name} sheet; choose a larger --format")
+    return best[1]
 
 
-def _looks(d: ForceDrawn) -> tuple:
-    """What a drawing looks like, for telling two apart: its blocks' sizes."""
-    return tuple(tuple(round(v, 3) for v in b.build(1.0).bounds()) for b in d.blocks)
-
-
-def sheet_count(f: Form, d: ForceDrawn) -> int | None:
-    """How many sheets of ``f`` the packing needs for ``d``; None when a block fits no sheet."""
-    try:
-        return len(paginate(f, d.blocks))
-    except GraphplanError:
-        return None
-
-
-SAMPLED = 6         # the drawings of the growth path whose layouts are compared
-SET_SMALLEST = 1.0   # below A1 the plans are not drawn smaller than this to keep one sheet: a set instead
+def _checked(dr: ForceDrafter, nat: Natural, p: Plan) -> bool:
+    ok = True
+    for fam, recs in dr.drawings(p.mu).items():
+        family = nat.families[fam]
+        for i, r in enumerate(recs):
+            ok &= family.allow(p.mu[fam], *_wh(r), i)
+    return ok
 
 
 @remembered
-def choose_forces(st: Study, f: Form, opts: SheetOptions) -> ForceDrawn:
-    """The largest common size factor at which the force sheet fits one sheet, then every family
-    grown while it fits — of the drawings on that way, the one that leaves the fewest 25 mm cells
-    bare (a larger force plan is mostly bare paper inside its polygon). Below
-    A1 not smaller than ``SET_SMALLEST``; when nothing fits one sheet, the largest factor (≤ 1) at
-    which every block fits a sheet, for a set, grown while the set needs no more sheets. The tables
-    are lettered 3.5 mm (``TABLES``) unless that costs a further sheet."""
+def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDrafter]:
+    """The force sheet's composition, once per scene, format and options (not the language): one
+    sheet where one holds every drawing at least at its target size (on A1 always), else a set."""
     if not has_loads(st):
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
-    big, small = ForceDrafter(st, opts, TABLES), ForceDrafter(st, opts, 1.0)
-    for dr in (big, small):
-        one = _one_sheet(dr, f)
-        if one is not None:
-            return one
-    starts = [(dr, _set_start(dr, f)) for dr in (big, small)]
-    starts = [(dr, s) for dr, s in starts if s is not None]
-    if not starts:
-        return big.drawn({fam: FACTORS[-1] for fam in FORCE_FAMILIES})
-    dr, (d, pages) = min(starts, key=lambda x: x[1][1])       # the fewer sheets; equal: the larger tables
-    # a set's drawings grown while the set needs no more sheets
-    path = growth(dr, d, lambda t: fits_sheets(f, t.blocks, pages))
-    return min(sampled(path, SAMPLED), key=lambda t: bare_share(f, t.blocks))
-
-
-def _one_sheet(dr: ForceDrafter, f: Form) -> ForceDrawn | None:
-    """The fullest one-sheet drawing (see ``choose_forces``); None when none fits one sheet."""
-    smallest = 0.5 if f.name in ONE_SHEET else SET_SMALLEST
-    for k in FACTORS:
-        if k < smallest:
-            return None
-        d = dr.drawn({fam: k for fam in FORCE_FAMILIES})
-        if fits_one(f, d.blocks):
-            path = growth(dr, d, lambda t: fits_one(f, t.blocks))
-            return min(sampled(path, SAMPLED), key=lambda t: bare_share(f, t.blocks))
-    return None
-
-
-def _set_start(dr: ForceDrafter, f: Form) -> tuple[ForceDrawn, int] | None:
-    """The largest common factor (≤ 1) at which every block fits a sheet, and the sheets it needs."""
-    for k in FACTORS:
-        if k > 1.0:
-            continue
-        d = dr.drawn({fam: k for fam in FORCE_FAMILIES})
-        pages = sheet_count(f, d)
-        if pages is not None:
-            return d, pages
-    return None
+    dr = ForceDrafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
+    nat = measure(dr)
+    for _ in range(4):
+        one = _one_sheet(nat, f)
+        fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
+                                       for n in ("scheme", "groups", "forces"))
+        p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
+        if _checked(dr, nat, p):
+            break
+    return p, nat, dr
 
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
-    """μl and μF of the force sheet of ``format`` — for ``forces --format``."""
-    d = choose_forces(st, form(format), SheetOptions(precision=precision, sheet="forces"))
-    return {"mu_l": d.fp.mu_l, "mu_F": d.fp.mu_F}
+    """μl (of the groups) and μF of the force sheet of ``format`` — for ``forces --format``; no sheet
+    is built."""
+    p, _, _ = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
+    return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"]}
 
 
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
-    """Sheet 2: the force analysis at the scene's force position (a set when it does not fit)."""
+    """Sheet 2: the force analysis at the scene's force position, composed in zones (a set of sheets
+    where a small format cannot hold it)."""
     opts = options_of(options)
-    d = choose_forces(st, f, opts)
-    w = lambda key: word(f"fs {key}", opts.lang)  # noqa: E731
-    tf = fields(st, opts.lang, drawing_scale(d.fp.mu_l, opts.lang), subtitle=w('subtitle'))
-    return compose(f, d.blocks, tf, opts.lang, f"{st.mech.title} — {w('subtitle')}")
-
+    p, nat, dr = plan(st, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
+    lang = opts.lang
+    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+    recs = dr.drawings(p.mu, lang)
+    caps = _captions(dr, p.mu, lang)
+    names = dr.names()
+    leaves = {fam: [Leaf(names[fam][i], record=captioned(r, *caps[fam][i], size=SMALL_CAPTION.get(fam, 5.0)))
+                    for i, r in enumerate(rs)] for fam, rs in recs.items()}
+    for fam in ("hodographs",):
+        if leaves[fam]:
+            cw, ch = max(x.w for x in leaves[fam]), max(x.h for x in leaves[fam])
+            leaves[fam] = [Leaf(x.name, cw, ch, x.record) for x in leaves[fam]]
+    tables = [Leaf(name, record=rec) for name, rec in _tables(dr, p.mu, lang, p.tables)]
+    note_lines = _notes_lines(dr, p.mu, lang)
+    region = field_of(f)
+    if p.sheets == 1:
+        C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1])
+        items, col_box = [], None
+        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C), region):
+            if leaf is C:
+                col_box = b
+            elif leaf.record is not None:
+                items.append(Placed(leaf.name, centred(leaf.record, b), b))
+        nrec = note_block(note_lines, width)
+        foot = keep_out(f)[3]
+        nb = (col_box[2] - width, foot, col_box[2], foot + _wh(nrec)[1])
+        items.append(Placed("notes", top_left(nrec, nb), nb))
+        items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+        pages = [items]
+    else:
+        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
+        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
+        rows.append(tables + [Leaf("notes", record=note_block(note_lines, TITLE))])
+        laid = flow(rows, region, keep_out(f))
+        if laid is None:
+            raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
+        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
+                 for page in laid]
+    tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
+    return compose(f, pages, tf, lang, f"{st.mech.title} — {w('subtitle')}")

@@ -20,9 +20,9 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
 from graphplan.graphic.scales import at_least
-from graphplan.sheets.compose import (FACTORS, Sheet, SheetOptions, caption_size, captioned, choose_levels, compose,
-                                      drawing_scale, field_of, finer, lines_of, note_block, number, options_of,
-                                      percent, reading, remembered)
+from graphplan.sheets.compose import (FACTORS, Family, Sheet, SheetOptions, captioned, choose_levels, coarser,
+                                      compose, drawing_scale, field_of, finer, lines_of, measured, note_block, notes_height,
+                                      number, options_of, percent, reading, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
@@ -228,7 +228,7 @@ def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
 # -- the composition: zones by construction, scales by arithmetic (docs/composition.md) -------------
 
 FAMILIES = ("position", "velocity", "acceleration")
-LEGIBLE_MM = 60.0      # the crank's vectors p_v a and π a drawn at least this long where the sheet allows
+LEGIBLE_MM = 40.0      # a set's plans: the crank pin's vectors p_v a and π a drawn at least this long
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
 SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
@@ -277,48 +277,29 @@ def _size(rec: Record) -> tuple[float, float]:
 
 @dataclass
 class Natural:
-    """The drawings' natural sizes, measured once at trial scales — what the arithmetic needs.
-    Per family: the trial μ, each drawing's lines (w, h) at it and what its lettering adds (w, h),
-    its captions' largest (w, h), and the real size of its principal segment (the crank r, v_A,
-    a_A). The diagrams' size per size factor; the tables' sizes per lettering factor (in order); the
-    notes' lines — each the larger of the two languages, so no scale depends on the language."""
-    mu0: dict[str, float]
-    sizes: dict[str, list[tuple[float, float, float, float]]]
-    caption: dict[str, tuple[float, float]]
-    principal: dict[str, float]
+    """The drawings' natural sizes, measured once at trial scales — what the arithmetic needs: the
+    plans' families (position, velocity, acceleration; sheets.compose.Family), the diagrams' size
+    per size factor, the tables' sizes per lettering factor (in order) and the notes' lines — each
+    the larger of the two languages, so no scale depends on the language."""
+    families: dict[str, Family]
     diagrams: dict[float, tuple[float, float]]
     tables: dict[float, list[tuple[str, float, float]]]
     notes: list[list[str]]
 
     @property
     def count(self) -> dict[str, int]:
-        return {fam: len(v) for fam, v in self.sizes.items()}
+        return {name: len(fam.sizes) for name, fam in self.families.items()}
 
     def leaf(self, family: str, mu: float, name: str = "") -> Leaf:
         """The family's cell at μ: its largest drawing with lettering and caption."""
-        k = self.mu0[family] / mu
-        cw, ch = self.caption[family]
-        sizes = self.sizes[family] or [(0.0, 0.0, 0.0, 0.0)]
-        w = max(gw * k + lw for gw, _, lw, _ in sizes)
-        h = max(gh * k + lh for _, gh, _, lh in sizes)
-        return Leaf(name or family, max(w, cw), h + ch)
-
-    def allow(self, family: str, mu: float, w: float, h: float) -> None:
-        """Drawn at μ, the family's largest drawing came out w × h: what its lettering adds is
-        corrected so that the arithmetic assumes no less."""
-        want = self.leaf(family, mu)
-        cw, ch = self.caption[family]
-        dw, dh = max(max(w, cw) - want.w, 0.0), max(h + ch - want.h, 0.0)
-        self.sizes[family] = [(gw, gh, lw + dw, lh + dh) for gw, gh, lw, lh in self.sizes[family]]
+        return self.families[family].leaf(mu, name or family)
 
     def drawn(self, family: str, mu: float) -> float:
         """The principal segment drawn at μ, mm."""
-        return self.principal[family] / mu
+        return self.families[family].drawn(mu)
 
     def notes_height(self, width: float) -> float:
-        from graphplan.sheets.compose import NOTE_STEP, wrap_markup
-        return max(sum(len(wrap_markup(line, width - 5.0, 3.5)) for line in lines)
-                   for lines in self.notes) * NOTE_STEP + NOTE_STEP     # a line to spare: the final numbers
+        return notes_height(self.notes, width)
 
 
 def _captions(st: Study, plans, lang: str, mu: dict[str, float]) -> dict[str, list[tuple[str, str]]]:
@@ -403,6 +384,14 @@ class Drafter:
         return self._once(("diag", k, lang), lambda: chord_diagrams(
             self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions)))
 
+    def lines(self, mu: dict[str, float]) -> dict[str, list[Record]]:
+        """The plans at the scales ``mu``, their lines only (no lettering): family → records."""
+        from graphplan.drawing.plans import position_record
+        pl = self.plans(mu)
+        return {"position": [position_record(pl, lettered=False)],
+                "velocity": [q.velocity.record for q in pl.positions if q.velocity is not None],
+                "acceleration": [q.acceleration.record for q in pl.positions if q.acceleration is not None]}
+
     def records(self, mu: dict[str, float]) -> dict[str, list[Record]]:
         """The plans at the scales ``mu``, drawn and lettered (no captions): family → records."""
         from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
@@ -428,19 +417,13 @@ def measure(dr: Drafter) -> Natural:
     pl = dr.plans()
     mech = st.mech
     mu0 = {"position": pl.mu_l, "velocity": pl.mu_v, "acceleration": pl.mu_a}
-    recs = dr.records(mu0)
-    sizes, caption = {}, {}
-    for fam, rs in recs.items():
-        sizes[fam] = []
-        for r in rs:
-            (gw, gh), (fw, fh) = _geometry(r), _size(r)
-            sizes[fam].append((gw, gh, fw - gw + 1.0, fh - gh + 1.0))
-        caps = [c for lang in LANGS for c in _captions(st, pl, lang, mu0)[fam]]
-        cs = [caption_size(*c) for c in caps] or [(0.0, 0.0)]
-        caption[fam] = (max(c[0] for c in cs), max(c[1] for c in cs))
+    recs = dr.lines(mu0)          # the lettering is allowed for (LETTERING) and checked once drawn
     v_a = abs(mech.omega1) * mech.crank.length
     a_a = mech.crank.length * (mech.omega1 ** 4 + mech.crank.epsilon ** 2) ** 0.5
     principal = {"position": mech.crank.length, "velocity": v_a, "acceleration": a_a}
+    families = {fam: measured(rs, mu0[fam], [c for lang in LANGS for c in _captions(st, pl, lang, mu0)[fam]],
+                              principal=principal[fam], target=TARGETS[fam], lettering=LETTERING)
+                for fam, rs in recs.items()}
     diag = dr.diagrams(1.0)
     tables = {}
     for factor in (TABLES, 1.0):
@@ -448,7 +431,7 @@ def measure(dr: Drafter) -> Natural:
                for lang in LANGS]
         tables[factor] = [(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*per)]
     notes_ = [_notes_lines(st, pl, dr.diagrams(1.0, lang), lang, dr.opts.precision) for lang in LANGS]
-    return Natural(mu0, sizes, caption, principal, {}, tables, notes_)
+    return Natural(families, {}, tables, notes_)
 
 
 def diagrams_size(dr: Drafter, nat: Natural, k: float) -> tuple[float, float]:
@@ -460,15 +443,15 @@ def diagrams_size(dr: Drafter, nat: Natural, k: float) -> tuple[float, float]:
     return nat.diagrams[k]
 
 
-def _tree(shape: str, P, D, V: list, A: list, vcols: int, acols: int, C):
+def _tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
     """The sheet's composition (C: the tables' column with the notes over the title block, in the
     bottom-right corner): "bands" — position plan and diagrams across the top, under them the
     velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
     height, the rest in those two bands; "accel" — the acceleration plans beside the position plan
     and the diagrams, the velocity plans beside the column; "sides" — the position plan over the
     velocity plans, beside them the diagrams over the acceleration plans over the column."""
-    vg = [Grid(V, vcols)] if V else []
-    ag = [Grid(A, acols)] if A else []
+    vg = [vgrid] if vgrid is not None else []
+    ag = [agrid] if agrid is not None else []
     if shape == "bands":
         return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
     if shape == "column":
@@ -479,6 +462,7 @@ def _tree(shape: str, P, D, V: list, A: list, vcols: int, acols: int, C):
 
 
 SHAPES = ("bands", "column", "accel", "sides")
+LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
 
 @dataclass
@@ -535,36 +519,37 @@ def _one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
 
-        def arranged(mu, shape):
+        def arranged(mu, shape, best_fill=False):
             P = nat.leaf("position", mu["position"])
             V = [nat.leaf("velocity", mu["velocity"])] * nv
             A = [nat.leaf("acceleration", mu["acceleration"])] * na
+            vgrids = {vc: Grid(V, vc) for vc in _grids(nv)} if V else {1: None}
+            agrids = {ac: Grid(A, ac) for ac in _grids(na)} if A else {1: None}
             found = None
-            for vc in _grids(nv):
-                for ac in _grids(na):
+            for vc, vg in vgrids.items():
+                for ac, ag in agrids.items():
                     for parts, C in enumerate(cols, 1):
-                        tw, th = extent(_tree(shape, P, D, V, A, vc, ac, C))
+                        tw, th = extent(_tree(shape, P, D, vg, ag, C))
                         if tw <= W + 1e-9 and th <= H + 1e-9:
+                            if not best_fill:
+                                return (0.0, vc, ac, parts)
                             fill = min(W / tw, H / th)
                             if found is None or fill > found[0] + 1e-9:
                                 found = (fill, vc, ac, parts)
             return found
 
-        def start(k):
-            return {fam: at_least(nat.principal[fam] / (TARGETS[fam] * k)) for fam in FAMILIES}
-
         for shape in SHAPES:
-            for order in (("position", "acceleration", "velocity"), ("velocity", "acceleration", "position")):
-                mu = choose_levels(start, lambda m, s=shape: arranged(m, s) is not None, order)
-                if mu is None:
-                    continue
-                rel = [nat.drawn(fam, mu[fam]) / TARGETS[fam] for fam in FAMILIES if fam != "acceleration" or has_a]
-                score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
-                         -SHAPES.index(shape))
-                _, vc, ac, parts = arranged(mu, shape)
-                cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1))
-                if best is None or cand[0] > best[0]:
-                    best = cand
+            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None,
+                               ("velocity", "position", "acceleration"))
+            if mu is None:
+                continue
+            rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
+            score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
+                     -SHAPES.index(shape))
+            _, vc, ac, parts = arranged(mu, shape, best_fill=True)
+            cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1))
+            if best is None or cand[0] > best[0]:
+                best = cand
     return best[1] if best else None
 
 
@@ -575,57 +560,82 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
 
 
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float) -> list[list[Leaf]]:
-    """A set's drawings and tables as rows in reading order (they wrap where too wide)."""
+    """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
+    the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
+    plans likewise, the tables and the notes (rows wrap where too wide)."""
     rows: list[list[Leaf]] = [[nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize)]]
-    rows.append(cells([nat.leaf("velocity", mu["velocity"], f"v{i}") for i in range(nat.count["velocity"])]))
-    if nat.count["acceleration"]:
-        rows.append(cells([nat.leaf("acceleration", mu["acceleration"], f"a{i}")
-                           for i in range(nat.count["acceleration"])]))
-    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-    rows.append(tabs + [Leaf("notes", width, nat.notes_height(width))])
+    for fam in ("velocity", "acceleration"):
+        cell = nat.leaf(fam, mu[fam])
+        k = max(1, int((width + GAP) // (cell.w + GAP)))
+        n = nat.count[fam]
+        rows += _grid_rows([Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(n)], k)
+    rows.append([Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+                + [Leaf("notes", TITLE, nat.notes_height(TITLE))])
     return rows
 
 
+def _grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
+    """Equal cells k to a row, the last row filled up with empty cells so the columns line up."""
+    rows = [cells_[j:j + k] for j in range(0, len(cells_), k)]
+    if rows and len(rows) > 1 and len(rows[-1]) < k:
+        c = rows[-1][0]
+        rows[-1] = rows[-1] + [Leaf("", c.w, c.h) for _ in range(k - len(rows[-1]))]
+    return rows
+
+
+def _legible(fam: Family) -> float:
+    """The coarsest standard μ at which the family's principal segment is drawn ``LEGIBLE_MM`` long."""
+    mu = fam.start(1.0)
+    while fam.drawn(mu) < LEGIBLE_MM - 1e-9:
+        mu = finer(mu)
+    while fam.drawn(coarser(mu)) >= LEGIBLE_MM - 1e-9:
+        mu = coarser(mu)
+    return mu
+
+
 def _set(dr: Drafter, nat: Natural, f: Form) -> Plan:
-    """A set of sheets: the plans at least legible, every drawing as large as fits a sheet, the
-    drawings and tables flowing over the sheets in reading order; each family then grown while the
+    """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
+    as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
+    flowing over the sheets in reading order — the fewest sheets; then each family grown while the
     set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
     from graphplan.sheets.compose import keep_out
     region = field_of(f)
-    width = region[2] - region[0]
+    width, height = region[2] - region[0], region[3] - region[1]
     keep = keep_out(f)
-    k = next((k for k in DIAGRAM_SIZES if diagrams_size(dr, nat, k)[0] <= width
-              and diagrams_size(dr, nat, k)[1] <= region[3] - region[1]), DIAGRAM_SIZES[-1])
-    dsize = diagrams_size(dr, nat, k)
-    best = None
-    for factor in (TABLES, 1.0):
-        def pages(mu):
-            out = flow(_set_rows(nat, mu, dsize, factor, 185.0), region, keep)
-            return None if out is None else len(out)
 
-        def start(s):
-            mu = {fam: at_least(nat.principal[fam] / (TARGETS[fam] * s)) for fam in FAMILIES}
-            for fam in ("velocity", "acceleration"):        # legible: p_v a, π a at least LEGIBLE_MM
-                while nat.drawn(fam, mu[fam]) < LEGIBLE_MM - 1e-9:
-                    mu[fam] = finer(mu[fam])
-            return mu
-        mu = None
-        for s in FACTORS:
-            trial = start(s)
-            if pages(trial) is not None:
-                mu = trial
-                break
-        if mu is None:
-            continue
-        count = pages(mu)
-        for fam in ("velocity", "acceleration", "position"):
-            while True:
-                bigger = finer(mu[fam])
-                if nat.drawn(fam, bigger) > SET_LARGEST * TARGETS[fam] or pages({**mu, fam: bigger}) != count:
-                    break
-                mu = {**mu, fam: bigger}
-        if best is None or count < best[0]:
-            best = (count, Plan(mu, k, factor, "set", 1, 1, 1, count))
+    def alone(size) -> bool:              # fits an empty sheet beside or over the title block
+        w, h = size
+        return (w <= width and h <= keep[1] + height - keep[3]) or (w <= keep[0] - region[0] and h <= height)
+    fams = nat.families
+    floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
+    for fam in floor:                       # … unless a plan that large fits no sheet
+        while not alone(fams[fam].size(floor[fam])):
+            floor[fam] = coarser(floor[fam])
+    top = fams["position"].start(2.0)
+    while not alone(fams["position"].size(top)):
+        top = coarser(top)
+    best = None
+    for k in [k for k in DIAGRAM_SIZES if alone(diagrams_size(dr, nat, k))] or DIAGRAM_SIZES[-1:]:
+        dsize = diagrams_size(dr, nat, k)
+        for factor in (TABLES, 1.0):
+            def pages(mu):
+                out = flow(_set_rows(nat, mu, dsize, factor, width), region, keep)
+                return None if out is None else len(out)
+            for mu_l in (top, coarser(top), coarser(coarser(top))):
+                mu = {"position": mu_l, **floor}
+                count = pages(mu)
+                if count is None:
+                    continue
+                for fam in ("velocity", "acceleration", "position"):
+                    while True:
+                        bigger = finer(mu[fam])
+                        if fams[fam].rel(bigger) > SET_LARGEST or pages({**mu, fam: bigger}) != count:
+                            break
+                        mu = {**mu, fam: bigger}
+                rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + math.log(k)
+                key = (count, -(factor == TABLES), -rel)
+                if best is None or key < best[0]:
+                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count))
     if best is None:
         raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
                              "choose a larger --format")
@@ -637,15 +647,9 @@ def _checked(dr: Drafter, nat: Natural, p: Plan) -> bool:
     is, ``nat`` is corrected (the next choice allows for it)."""
     ok = True
     for fam, recs in dr.records(p.mu).items():
-        if not recs:
-            continue
-        want = nat.leaf(fam, p.mu[fam])
-        w = max(_size(r)[0] for r in recs)
-        h = max(_size(r)[1] for r in recs)
-        cw, ch = nat.caption[fam]
-        if max(w, cw) > want.w + 1e-6 or h + ch > want.h + 1e-6:
-            nat.allow(fam, p.mu[fam], w, h)
-            ok = False
+        family = nat.families[fam]
+        for i, r in enumerate(recs):
+            ok &= family.allow(p.mu[fam], *_size(r), i)
     return ok
 
 
@@ -728,7 +732,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
                                        - note_block(d["notes"], w).bounds()[1])
-        tree = _tree(p.shape, P, D, V, A, p.vcols, p.acols, C)
+        tree = _tree(p.shape, P, D, Grid(V, p.vcols) if V else None, Grid(A, p.acols) if A else None, C)
         items, col_box = [], None
         for leaf, b in arrange(tree, region):
             if leaf is C:
@@ -743,8 +747,13 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        notes_rec = note_block(d["notes"], 185.0)
-        rows = [[P, D], V] + ([A] if A else []) + [tables + [Leaf("notes", record=notes_rec)]]
+        notes_rec = note_block(d["notes"], TITLE)
+        rows: list[list[Leaf]] = [[P, D]]
+        width = region[2] - region[0]
+        for cells_ in (V, A):
+            if cells_:
+                rows += _grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP))))
+        rows.append(tables + [Leaf("notes", record=notes_rec)])
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")

@@ -230,7 +230,7 @@ WORDS: dict[str, tuple[str, str]] = {
                    "crank turn from position 0, ° (working stroke shaded)"),
     "balancing moment crank": ("Зрівноважувальний момент на кривошипі", "Balancing moment on the crank"),
     "force": ("сила", "force"),
-    "force value": ("P, {N} (M, {N·m})", "P, {N} (M, {N·m})"),
+    "force value": ("значення, {N} ({N·m})", "value, {N} ({N·m})"),
     "drawn mm": ("на кресленні, {mm}", "drawn, {mm}"),
     "angle deg": ("кут, °", "angle, °"),
     "exact N": ("точно, {N}", "exact, {N}"),
