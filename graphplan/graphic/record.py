@@ -127,11 +127,46 @@ def metrics_from_fonts() -> dict:
                     boxes[chr(code)], feet[chr(code)] = None, None
                     continue
                 boxes[chr(code)] = [round(v / em, 9) for v in (gl.xMin, gl.yMin, gl.xMax, gl.yMax)]
-                coords, _, _ = gl.getCoordinates(glyf)
-                low = [x for x, y in coords if y <= FOOT * em]
+                low = [x for x, y in _outline(gl, glyf) if y <= FOOT * em]
                 feet[chr(code)] = round(max(low) / em, 9) if low else None
             missing = round(widths[".notdef"][0] / em, 9)
     return {"advance": advance, "boxes": boxes, "feet": feet, "missing": missing}
+
+
+def _outline(gl, glyf, steps: int = 8) -> list[tuple[float, float]]:
+    """Points along a TrueType glyph's outline: its quadratic curves sampled, not their control
+    points (a round letter's ink near the baseline lies well inside its control polygon)."""
+    coords, ends, flags = gl.getCoordinates(glyf)
+    out: list[tuple[float, float]] = []
+    start = 0
+    for end in ends:
+        pts = [(float(x), float(y), bool(f & 1)) for (x, y), f in zip(coords[start:end + 1], flags[start:end + 1])]
+        start = end + 1
+        if not pts:
+            continue
+        # the implied on-curve points between two off-curve ones
+        full = []
+        for i, p in enumerate(pts):
+            q = pts[i - 1]
+            if not p[2] and not q[2]:
+                full.append(((p[0] + q[0]) / 2, (p[1] + q[1]) / 2, True))
+            full.append(p)
+        first = next((i for i, p in enumerate(full) if p[2]), 0)
+        ring = full[first:] + full[:first] + [full[first]]
+        i = 0
+        while i < len(ring) - 1:
+            a = ring[i]
+            if ring[i + 1][2]:
+                out += [(a[0], a[1]), (ring[i + 1][0], ring[i + 1][1])]
+                i += 1
+                continue
+            c, b = ring[i + 1], ring[min(i + 2, len(ring) - 1)]
+            for k in range(steps + 1):
+                t = k / steps
+                out.append(((1 - t) ** 2 * a[0] + 2 * t * (1 - t) * c[0] + t * t * b[0],
+                            (1 - t) ** 2 * a[1] + 2 * t * (1 - t) * c[1] + t * t * b[1]))
+            i += 2
+    return out
 
 
 @lru_cache(maxsize=1)
@@ -155,7 +190,8 @@ def _advances() -> tuple[dict[str, float], float]:
 
 LOW = ",."          # punctuation on the baseline
 JOINS = 1.2         # mm: a comma this close to the letter's foot reads as one word with it
-APART = 1.1         # mm: a comma that cannot join its letter stands this far clear of its ink
+APART = 1.0         # mm: a comma that cannot join its letter stands this far clear of its ink …
+ENOUGH = 0.9        # … unless it already stands this far
 
 
 @lru_cache(maxsize=65536)
@@ -174,7 +210,8 @@ def kern(prev: str, c: str, size: float) -> float:
     adv = m["advance"].get(prev, m["missing"])
     if foot is not None and (adv - foot + cb[0]) * e <= JOINS:
         return 0.0
-    return max(0.0, APART - (adv - box[2] + cb[0]) * e)
+    gap = (adv - box[2] + cb[0]) * e
+    return 0.0 if gap >= ENOUGH else APART - gap
 
 
 @lru_cache(maxsize=1)

@@ -53,9 +53,12 @@ def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor:
 
 
 def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5)) -> float:
-    """The largest GOST letter height (2.5 … 7 mm) at which ``text`` fits ``width`` mm."""
+    """The largest GOST letter height (2.5 … 7 mm) at which ``text``'s ink fits ``width`` mm (the
+    cell less a half millimetre each side) clear of the rules."""
+    from graphplan.graphic.record import Primitive
     for s in sizes:
-        if text_width(text, s) <= width:
+        b = Primitive("text", ((0.0, 0.0),), text=text, size=s).ink()
+        if b[2] - b[0] <= width - 0.3:
             return s
     return sizes[-1]
 

@@ -244,7 +244,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "rotating output": ("ланки", "link"),
     "sliding output": ("точки", "point"),
     # title block (GOST 2.104)
-    "tb rev": ("Змн.", "Rev."), "tb sheet": ("Арк.", "Sh."), "tb doc": ("№ докум.", "Doc. No."),
+    "tb rev": ("Зм.", "Ch."), "tb sheet": ("Арк.", "Sh."), "tb doc": ("№ докум.", "Doc. No."),
     "tb sign": ("Підпис", "Sign."), "tb date": ("Дата", "Date"), "tb drawn": ("Розроб.", "Drawn"),
     "tb checked": ("Перевір.", "Checked"), "tb tech": ("Т.контр.", "T.ctrl"),
     "tb norm": ("Н.контр.", "N.ctrl"), "tb approved": ("Затв.", "Approved"), "tb letter": ("Літ.", "Lit."),
