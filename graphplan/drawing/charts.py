@@ -252,8 +252,9 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
         numbers.append(LabelRequest(complex(float(w.real), float(w.imag)), str(pos), w if abs(w) > 1e-9 else 1j,
-                                    2.5, step=step))
-    place_labels(rec, numbers)                  # each position's number by its point, clear of the curve
+                                    2.5, optional=pos != 0, step=step))
+    place_labels(rec, numbers)      # each position's number by its point, clear of the curve (on a small
+                                    # loop those without room are left out; position 0 always stands)
     rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
     return rec

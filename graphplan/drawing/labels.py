@@ -255,7 +255,7 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
             if spot is None:
                 if req.optional:
                     continue
-                spot = _least(local, req, ink)
+                spot = _outside(ob, record, req, ink) or _least(local, req, ink)
         box, start, leader = spot
         if leader is not None:
             a, b = leader
@@ -295,6 +295,29 @@ def _leader(at: complex, box: Box) -> tuple[complex, complex]:
     n = abs(d) or 1.0
     u = d / n
     return at + 1.2 * u, near - (CLEAR + 0.3) * u
+
+
+def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
+    """A label that finds no room near its point: beyond the drawing's edge, on a leader from the
+    point that crosses no label, the side the point is nearest first."""
+    x0, y0, x1, y1 = record.bounds()
+    iw, ih = ink[2] - ink[0], ink[3] - ink[1]
+    at = req.at
+    spots = []
+    for out in (3.0, 9.0, 16.0):                 # past each edge, level with the point first
+        for shift in (0.0, 6.0, -6.0, 12.0, -12.0, 20.0, -20.0, 30.0, -30.0, 42.0, -42.0):
+            spots += [complex(x1 + out + iw / 2, at.imag + shift), complex(x0 - out - iw / 2, at.imag + shift),
+                      complex(at.real + shift, y1 + out + ih / 2), complex(at.real + shift, y0 - out - ih / 2)]
+    spots.sort(key=lambda c: abs(c - at))
+    for c in spots:
+        box = (c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2)
+        if _counts(ob, np.asarray([box])).item():
+            continue
+        a, b = _leader(at, box)
+        if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+            continue
+        return box, complex(box[0] - ink[0], box[1] - ink[1]), (a, b)
+    return None
 
 
 def _least(ob: Obstacles, req: LabelRequest, ink: Box):

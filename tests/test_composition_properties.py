@@ -1,0 +1,152 @@
+"""The composition on mechanisms nobody has drawn: sheets of random coursework mechanisms of every kind
+of the examples (crank-slider, four-bar, the shaping and the slotting machines' slotted links; random
+lengths, offsets, speeds, masses and resistances) carry no defect a teacher would send back, read off
+the sheets' own records (sheets.compose.defects: no lettering on a line or on lettering, no drawing
+in another's box, the velocity plans in position order, everything in the frame and out of the title
+block) and counted on the rendered sheet as a reader's eye sees it (tests/inkcheck.py)."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from conftest import ROOT
+from coursework_scenes import crank_slider, four_bar, shaper, slotter
+from graphplan.exact.positions import study
+from graphplan.model.scene import loads
+from graphplan.sheets.compose import SheetOptions, defects
+from graphplan.sheets.form import form
+from graphplan.sheets.sheet import BUILDERS
+from graphplan.util.errors import GraphplanError
+
+RPM = st.floats(30.0, 1500.0)
+KG_PER_M = st.floats(10.0, 200.0)
+FORCE = st.floats(200.0, 8000.0)
+KG = st.floats(1.0, 60.0)
+
+
+@st.composite
+def crank_sliders(draw):
+    return crank_slider(draw(st.floats(0.03, 0.2)), draw(st.floats(2.8, 6.0)), draw(st.floats(-0.4, 0.4)),
+                        draw(RPM), draw(KG_PER_M), draw(FORCE), draw(KG))
+
+
+@st.composite
+def four_bars(draw):
+    """A Grashof crank-rocker with 5 % to spare on both assembly conditions."""
+    r = draw(st.floats(0.02, 0.15))
+    d = r * draw(st.floats(2.2, 5.0))
+    rocker = d * draw(st.floats(0.5, 1.2))
+    m = 0.05 * d
+    lo, hi = max(d + r - rocker, rocker - (d - r)) + m, rocker + (d - r) - m
+    assume(hi > lo)
+    coupler = lo + (hi - lo) * draw(st.floats(0.0, 1.0))
+    return four_bar(r, d, coupler, rocker, draw(RPM), draw(KG_PER_M))
+
+
+@st.composite
+def shapers(draw):
+    return shaper(draw(st.floats(1.3, 2.0)), draw(st.floats(0.2, 0.6)), draw(st.floats(0.3, 0.7)),
+                  draw(st.floats(0.75, 0.9)), draw(st.floats(0.4, 0.9)), draw(st.floats(30.0, 300.0)),
+                  draw(KG_PER_M), draw(FORCE), draw(KG))
+
+
+@st.composite
+def slotters(draw):
+    r = draw(st.floats(0.06, 0.2))
+    return slotter(r, draw(st.floats(0.2, 0.5)), r * draw(st.floats(0.4, 0.9)), r * draw(st.floats(2.0, 4.0)),
+                   draw(st.floats(-0.2, 0.2)), draw(st.floats(30.0, 300.0)), draw(KG_PER_M), draw(FORCE), draw(KG))
+
+
+KINDS = {"crank_slider": crank_sliders(), "four_bar": four_bars(), "shaper": shapers(), "slotter": slotters()}
+
+
+def _sheet(text: str, kind: str, fmt: str = "A1"):
+    """The sheet of a generated scene, or a rejected example where the program refuses the scene
+    (a mechanism that locks over the turn is refused with one line, as it should be)."""
+    try:
+        return BUILDERS[kind](study(loads(text, "<generated>")), form(fmt), SheetOptions(sheet=kind))
+    except GraphplanError:
+        assume(False)
+
+
+QUICK = settings(max_examples=3, deadline=None, derandomize=True, database=None,
+                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+LONG = settings(max_examples=40, deadline=None, database=None,
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+
+
+@pytest.mark.parametrize("mechanism", list(KINDS))
+@pytest.mark.parametrize("kind", ["kinematics", "forces"])
+def test_sheets_of_new_mechanisms_have_no_defects(mechanism, kind):
+    @QUICK
+    @given(KINDS[mechanism])
+    def check(text):
+        sheet = _sheet(text, kind)
+        assert defects(sheet) == [], text
+    check()
+
+
+@pytest.mark.parametrize("mechanism", ["crank_slider", "shaper"])
+def test_sets_of_new_mechanisms_have_no_defects(mechanism):
+    @QUICK
+    @given(KINDS[mechanism])
+    def check(text):
+        sheet = _sheet(text, "kinematics", "A3")
+        assert defects(sheet) == [], text
+    check()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("mechanism", list(KINDS))
+@pytest.mark.parametrize("kind,fmt", [("kinematics", "A1"), ("forces", "A1"), ("kinematics", "A2"),
+                                      ("dynamics", "A1")])
+def test_many_new_mechanisms(mechanism, kind, fmt):
+    @LONG
+    @given(KINDS[mechanism])
+    def check(text):
+        assert defects(_sheet(text, kind, fmt)) == [], text
+    check()
+
+
+def _rendered(texts: dict[str, tuple[str, str]]) -> dict[str, list]:
+    """Each scene's sheet drawn and rendered in a fresh process (the packaged fonts registered before
+    cairo draws anything); its overprinted words (tests/inkcheck.py)."""
+    code = ("import json, sys\n"
+            f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
+            "from graphplan.drawing.fonts import register\n"
+            "register()\n"
+            "from inkcheck import overprinted\n"
+            "from graphplan.exact.positions import study\n"
+            "from graphplan.model.scene import loads\n"
+            "from graphplan.sheets.compose import SheetOptions\n"
+            "from graphplan.sheets.form import form\n"
+            "from graphplan.sheets.sheet import BUILDERS\n"
+            "out = {}\n"
+            "for name, (text, kind) in json.loads(sys.stdin.read()).items():\n"
+            "    sheet = BUILDERS[kind](study(loads(text, name)), form('A1'), SheetOptions(sheet=kind))\n"
+            "    out[name] = [overprinted(page.svg()) for page in sheet.pages]\n"
+            "print(json.dumps(out))\n")
+    done = subprocess.run([sys.executable, "-c", code], input=json.dumps(texts), capture_output=True, text=True,
+                          cwd=ROOT, check=True)
+    return json.loads(done.stdout)
+
+
+FRESH = {   # one new mechanism of each kind, as a teacher tried them (a 150 mm crank, a 40 mm one …)
+    "crank_slider": (crank_slider(0.15, 4.0, 0.0, 300.0, 60.0, 2000.0, 20.0), ("kinematics", "forces")),
+    "four_bar": (four_bar(0.04, 0.15, 0.15, 0.08, 90.0, 40.0), ("kinematics", "forces")),
+    "shaper": (shaper(1.5, 0.35, 0.4, 0.8, 0.4, 120.0, 100.0, 3000.0, 30.0), ("kinematics", "forces")),
+    "slotter": (slotter(0.1, 0.4, 0.07, 0.3, 0.1, 90.0, 50.0, 1000.0, 25.0), ("kinematics", "forces")),
+}
+
+
+@pytest.mark.parametrize("mechanism", list(FRESH))
+def test_new_mechanisms_print_no_word_over_another(mechanism):
+    """Counted on the rendered sheets (kinematics and forces) of a new mechanism of each kind."""
+    text, kinds = FRESH[mechanism]
+    found = _rendered({f"{mechanism} {k}": (text, k) for k in kinds})
+    assert all(hits == [] for pages in found.values() for hits in pages), found
