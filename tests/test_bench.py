@@ -116,6 +116,7 @@ def test_bench_quick_whole(tmp_path):
 
 
 def test_bench_refuses_outside_a_checkout(monkeypatch, tmp_path):
-    monkeypatch.setattr(bench, "examples_dir", lambda: tmp_path)
+    from graphplan.bench import examples
+    monkeypatch.setattr(examples, "examples_dir", lambda: tmp_path)
     with pytest.raises(GraphplanError, match="examples/shaper.toml"):
         bench.example("shaper")

@@ -63,7 +63,7 @@ def _measure(st, n: int, method: str, precision: float, angle: float, seeds: int
 
 def rows(quick: bool) -> Iterator[Row]:
     """Every row of the three sweeps (fewer divisions and seeds with ``quick``)."""
-    from graphplan.bench.run import example
+    from graphplan.bench.examples import example
     divisions = (8, 12, 24, 48) if quick else DIVISIONS
     seeds = 2 if quick else SEEDS
     for name in SCENES:

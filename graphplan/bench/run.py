@@ -9,7 +9,6 @@ import math
 import re
 import time
 from collections.abc import Callable, Iterator
-from importlib import resources
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
@@ -17,24 +16,12 @@ from typing import Any
 import numpy as np
 
 from graphplan.bench import differentiation
+from graphplan.bench.examples import example, examples_dir  # noqa: F401  (the sections' scenes)
 from graphplan.util.errors import GraphplanError
-from graphplan.exact.positions import Study, study
-from graphplan.model.scene import load, loads
+from graphplan.exact.positions import study
+from graphplan.model.scene import loads
 
 Row = dict[str, Any]
-
-
-def examples_dir() -> Path:
-    """The examples folder of a checkout (the built-in crank-slider when installed elsewhere)."""
-    here = Path(__file__).resolve().parents[2] / "examples"
-    return here if here.is_dir() else Path(str(resources.files("graphplan") / "data"))
-
-
-def example(name: str) -> Study:
-    path = examples_dir() / f"{name}.toml"
-    if not path.exists():
-        raise GraphplanError(f"bench needs examples/{name}.toml (run it from a checkout)")
-    return study(load(path))
 
 
 def best_time(fn: Callable[[], Any], repeats: int = 3) -> float:

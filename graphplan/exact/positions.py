@@ -308,3 +308,31 @@ def choose_start(mech: Mechanism, structure: Structure, output: Output,
     starts_working = hi if working_from_hi else lo
     starts_idle = lo if working_from_hi else hi
     return starts_working if mech.start == "working" else starts_idle
+
+
+# -- the output's motion over the turn ------------------------------------------------------------
+
+UNWRAP = 720      # a turning link's angle is unwrapped along this fine a grid of the turn
+
+
+def exact_motion(st: Study, out: Output, turn_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Analytic s (from position 0), v, a of the output at the crank turns since position 0.
+    A link's angle is unwrapped along the crank's turn over a fine grid as well, so a turning link
+    keeps counting however coarse the divisions."""
+    turn_deg = np.asarray(turn_deg, dtype=float)
+    grid = np.arange(UNWRAP + 1) * 360.0 / UNWRAP if out.kind == "link" else np.empty(0)
+    turns = np.concatenate(([0.0], turn_deg, grid))
+    kin = st.solve(crank_angle(st, turns))
+    value = out.value(kin)
+    if out.kind == "link":
+        order = np.argsort(turns, kind="stable")
+        unwrapped = np.empty_like(value)
+        unwrapped[order] = np.unwrap(value[order])
+        value = unwrapped
+    m = 1 + len(turn_deg)
+    return value[1:m] - value[0], out.rate(kin)[1:m], out.accel(kin)[1:m]
+
+
+def crank_angle(st: Study, turn_deg) -> np.ndarray:
+    """Crank angle φ (deg, [0, 360)) after turning ``turn_deg`` from position 0 in the crank's sense."""
+    return np.mod(st.phi0 + np.sign(st.mech.omega1) * np.asarray(turn_deg, dtype=float), 360.0)

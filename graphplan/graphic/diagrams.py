@@ -31,7 +31,7 @@ from graphplan.graphic.correction import area_correction
 from graphplan.graphic.tangents import (ANGLE_ERROR_DEG, MAX_ANGLE_ERROR_DEG, SEED, TangentReading,
                                         construct_tangents)
 from graphplan.util.errors import GraphplanError
-from graphplan.exact.positions import Output, Study
+from graphplan.exact.positions import Output, Study, crank_angle, exact_motion  # noqa: F401  (re-exported)
 
 MAX_S_HEIGHT = 100.0    # mm: a taller s diagram gets a coarser μs (the seed: "reduce the ordinates")
 ANGLE_HEIGHT = 80.0     # mm: the height an angle diagram is fitted to
@@ -193,29 +193,6 @@ def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str
     if out.kind == "slide":
         return out, out.name, ("s", "v", "a"), out.name, "m"
     return out, out.name, ("φ", "ω", "ε"), str(mech.links[out.name].number), "rad"
-
-
-def exact_motion(st: Study, out: Output, turn_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Analytic s (from position 0), v, a of the output at the crank turns since position 0.
-    A link's angle is unwrapped along the crank's turn over a fine grid as well, so a turning link
-    keeps counting however coarse the divisions."""
-    turn_deg = np.asarray(turn_deg, dtype=float)
-    grid = np.arange(CYCLE + 1) * 360.0 / CYCLE if out.kind == "link" else np.empty(0)
-    turns = np.concatenate(([0.0], turn_deg, grid))
-    kin = st.solve(crank_angle(st, turns))
-    value = out.value(kin)
-    if out.kind == "link":
-        order = np.argsort(turns, kind="stable")
-        unwrapped = np.empty_like(value)
-        unwrapped[order] = np.unwrap(value[order])
-        value = unwrapped
-    m = 1 + len(turn_deg)
-    return value[1:m] - value[0], out.rate(kin)[1:m], out.accel(kin)[1:m]
-
-
-def crank_angle(st: Study, turn_deg) -> np.ndarray:
-    """Crank angle φ (deg, [0, 360)) after turning ``turn_deg`` from position 0 in the crank's sense."""
-    return np.mod(st.phi0 + np.sign(st.mech.omega1) * np.asarray(turn_deg, dtype=float), 360.0)
 
 
 def division_turns(divisions: int | Sequence[float], where: str = "divisions") -> np.ndarray:

@@ -13,12 +13,10 @@ diagram's feature matches an exact one of the same kind within ``window`` degree
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from graphplan.graphic.diagrams import Diagrams
 
 VISIBLE_MM = 0.5      # the least swing or excursion a feature needs to be seen (the ruler's division)
 SHOWN = 6             # features named in a message (the JSON lists all)
@@ -123,12 +121,12 @@ KIND_WORDS = {"en": {"max": "max", "min": "min", "up": "rising", "down": "fallin
               "uk": {"max": "макс.", "min": "мін.", "up": "зростає", "down": "спадає"}}
 
 
-def check(d: Diagrams, samples: int = 720) -> list[dict[str, Any]]:
-    """Warnings (kind "qualitative") for the v and a diagrams of ``d`` whose French curves have
+def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
+    """Warnings (kind "qualitative") for the v and a diagrams of ``d`` (graphic.diagrams.Diagrams) whose French curves have
     extrema or zero crossings the exact curves lack, or miss some they have; positions as crank
     angles φ (deg). None when both diagrams are qualitatively right."""
     from graphplan.graphic.chords import periodic_spline
-    from graphplan.graphic.diagrams import crank_angle, exact_motion
+    from graphplan.exact.positions import crank_angle, exact_motion
     turn = np.arange(samples) * 360.0 / samples
     x = d.L * turn / 360.0
     _, v, a = exact_motion(d.study, d.output, turn)

@@ -19,8 +19,7 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
                                       flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
-from graphplan.graphic.scales import at_least
-from graphplan.sheets.compose import (FACTORS, Family, Sheet, SheetOptions, captioned, choose_levels, coarser,
+from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser,
                                       compose, drawing_scale, field_of, finer, lines_of, measured, note_block, notes_height,
                                       number, options_of, percent, reading, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
