@@ -102,15 +102,24 @@ def test_sets_of_new_mechanisms_have_no_defects(mechanism):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("mechanism", list(KINDS))
-@pytest.mark.parametrize("kind,fmt", [("kinematics", "A1"), ("forces", "A1"), ("kinematics", "A2"),
-                                      ("dynamics", "A1")])
+@pytest.mark.parametrize("mechanism,kind,fmt", [(m, k, f) for m in KINDS for k, f in
+                                                (("kinematics", "A1"), ("forces", "A1"), ("kinematics", "A2"),
+                                                 ("dynamics", "A1")) if not (m == "four_bar" and k == "dynamics")])
 def test_many_new_mechanisms(mechanism, kind, fmt):
     @LONG
     @given(KINDS[mechanism])
     def check(text):
         assert defects(_sheet(text, kind, fmt)) == [], text
     check()
+
+
+def test_a_dynamics_sheet_that_cannot_hold_its_diagrams_becomes_a_set():
+    """A fast crank-slider with a small resistance: the energy–mass diagram's tangents cut the ΔT
+    axis far apart; the diagrams are drawn smaller, else carried over to a second sheet — never
+    past the frame."""
+    text = crank_slider(0.1875, 3.0, 0.0, 448.0, 10.0, 200.0, 1.0)
+    sheet = _sheet(text, "dynamics")
+    assert defects(sheet) == []
 
 
 def _rendered(texts: dict[str, tuple[str, str]]) -> dict[str, list]:

@@ -40,3 +40,12 @@ def test_font_metrics_are_the_fonts():
     from graphplan.graphic.record import METRICS, metrics_from_fonts
     stored = json.loads((ROOT / "graphplan" / "data" / "fonts" / METRICS).read_text(encoding="utf-8"))
     assert stored == json.loads(json.dumps(metrics_from_fonts()))
+
+
+def test_the_composition_picture_is_current():
+    """docs/composition/zones.svg (the shaper's sheet with each drawing's box) is redrawn from the
+    example."""
+    from graphplan.cli.gallery import zones_svg
+    path = ROOT / "docs" / "composition" / "zones.svg"
+    assert drawing(path.read_text(encoding="utf-8")) == drawing(zones_svg()), \
+        "docs/composition/zones.svg is out of date: run python -m graphplan.cli.gallery"

@@ -203,6 +203,12 @@ def flywheel(quick: bool) -> Iterator[Row]:
     return rows(quick, example)
 
 
+def processes(quick: bool) -> Iterator[Row]:
+    """Whole commands as fresh processes against the bare import (bench/processes.py)."""
+    from graphplan.bench.processes import rows as measured
+    return measured(quick)
+
+
 SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "speed": solver_speed,
     "chords": chords,
@@ -213,16 +219,25 @@ SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "external": external,
     "flywheel": flywheel,
 }
+ON_REQUEST: dict[str, Callable[[bool], Iterator[Row]]] = {     # not in a plain run: asked for by name
+    "processes": processes,
+}
 
 
-def run(out: Path, quick: bool, show_progress: bool | None = None) -> list[Row]:
-    """Run every section, write ``out/bench.json`` and the charts; return the rows."""
+def run(out: Path, quick: bool, show_progress: bool | None = None, sections: list[str] | None = None) -> list[Row]:
+    """Run every section (or the ``sections`` named), write ``out/bench.json`` and the charts;
+    return the rows."""
     from graphplan.util.files import json_text, write_atomic
     from graphplan.util.progress import progress
 
+    known = {**SECTIONS, **ON_REQUEST}
+    names = list(SECTIONS) if not sections else sections
+    for name in names:
+        if name not in known:
+            raise GraphplanError(f"--section {name!r}: one of {', '.join(known)}")
     rows: list[Row] = []
-    for name in progress(list(SECTIONS), len(SECTIONS), "bench", show_progress):
-        rows.extend(SECTIONS[name](quick))
+    for name in progress(names, len(names), "bench", show_progress):
+        rows.extend(known[name](quick))
     doc = {"quick": quick, "rows": rows}
     write_atomic(out / "bench.json", json_text(_clean(doc)))
     charts(rows, out)

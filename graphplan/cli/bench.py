@@ -13,7 +13,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from graphplan.bench.run import run, summary
     out = Path(args.out)
     t0 = time.perf_counter()
-    rows = run(out, args.quick)
+    rows = run(out, args.quick, sections=args.section)
     from graphplan.util.words import fixed, word
     lang = lang_of(args)
     sys.stdout.write(summary(rows, lang) + "\n" + word("rows in", lang, n=len(rows), t=fixed(time.perf_counter() - t0, lang),
@@ -27,5 +27,9 @@ def register(sub) -> None:
                                    "chord diagrams; sweeps toward the mechanisms' failures.")
     p.add_argument("-o", "--out", default="bench", metavar="DIR", help="output folder (default: bench)")
     p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
+    p.add_argument("--section", action="append", metavar="NAME",
+                   help="run only this section (repeatable): speed, chords, differentiation, plans, stability, "
+                        "sheet, external, flywheel, or processes (whole commands against the bare import of "
+                        "numpy, shapely and svgwrite; only when asked for)")
     lang_arg(p)
     p.set_defaults(handler=cmd_bench)

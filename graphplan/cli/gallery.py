@@ -69,6 +69,33 @@ def available() -> list[tuple[str, str, str, str, str]]:
     return [s for s in SHEETS if s[1] in BUILDERS]
 
 
+ZONES = ("shaper", "kinematics", "uk", "A1")     # the sheet docs/composition.md shows with its zones
+
+
+def zones_svg() -> str:
+    """docs/composition/zones.svg: the shaper's A1 kinematics sheet with the box each drawing owns
+    tinted and named — the composition a teacher reads (docs/composition.md)."""
+    from graphplan.drawing.svg import render
+    from graphplan.exact.positions import study
+    from graphplan.graphic.record import Record
+    from graphplan.model.scene import load
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    scene, kind, lang, fmt = ZONES
+    sheet = BUILDERS[kind](study(load(ROOT / "examples" / f"{scene}.toml")), form(fmt), SheetOptions(lang=lang, sheet=kind))
+    rec = Record(sheet.record.title, list(sheet.record.items))
+    for p in sheet.placed:
+        x0, y0, x1, y1 = p.box
+        rec.add("polygon", [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], role="projection", layer="zones", width=0.5)
+        rec.label((x0 + 1.0, y1 + 1.0), p.name, size=2.5, layer="zones")
+    import re
+    svg = render(rec, sheet.form.width, sheet.form.height, "zones", embed_font=True)
+    head, sep, rest = svg.partition('inkscape:label="zones"')        # the zones in blue, over the black sheet
+    layer, end, tail = rest.partition("</g>")
+    return head + sep + re.sub(r'(stroke|fill)="black"', r'\1="#1f5fbf"', layer) + end + tail
+
+
 def write_metrics() -> Path:
     """graphplan/data/fonts/metrics.json from the packaged fonts (graphic.record.metrics_from_fonts)."""
     import json
@@ -93,6 +120,7 @@ def main(argv: list[str] | None = None) -> int:
             print(write_atomic(Path(args.out) / file, text), file=sys.stderr)
     for scene in EXPLORERS:
         print(write_atomic(Path(args.out) / f"{scene}.html", explorer(scene)), file=sys.stderr)
+    print(write_atomic(ROOT / "docs" / "composition" / "zones.svg", zones_svg()), file=sys.stderr)
     return 0
 
 

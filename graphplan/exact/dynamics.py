@@ -135,6 +135,8 @@ class Cycle:
 
     def _eval(self, turn, which: int) -> Array:
         if isinstance(turn, float):                 # the integrator's scalar calls: no array work
+            if which < 2:
+                return self.scalar(turn, which)
             k = min(max(bisect_right(self.breaks_list, turn) - 1, 0), len(self.pieces) - 1)
             return float(self.pieces[k][which](turn))
         turn = np.asarray(turn, dtype=float)
@@ -150,6 +152,27 @@ class Cycle:
     @cached_property
     def breaks_list(self) -> list[float]:
         return [float(b) for b in self.breaks]
+
+    @cached_property
+    def _cubics(self) -> list[tuple[list[float], list[list[tuple[float, float, float, float]]]]]:
+        """Per piece: the splines' knots and, for I*_m and M*_c, each interval's cubic coefficients
+        (highest power first) — what a scalar evaluation needs, as plain floats."""
+        out = []
+        for si, sm, _ in self.pieces:
+            knots = [float(x) for x in si.x]
+            out.append((knots, [[tuple(float(v) for v in sp.c[:, j]) for j in range(sp.c.shape[1])]
+                                for sp in (si, sm)]))
+        return out
+
+    def scalar(self, turn: float, which: int) -> float:
+        """I*_m (``which`` 0) or M*_c (1) at one turn: the spline's cubic by Horner's rule (the
+        integrator calls this some thousand times a turn)."""
+        k = min(max(bisect_right(self.breaks_list, turn) - 1, 0), len(self.pieces) - 1)
+        knots, coefs = self._cubics[k]
+        j = min(max(bisect_right(knots, turn) - 1, 0), len(knots) - 2)
+        a, b, c, d = coefs[which][j]
+        x = turn - knots[j]
+        return ((a * x + b) * x + c) * x + d
 
     def inertia(self, turn):
         return self._eval(turn, 0)
@@ -249,20 +272,22 @@ def extremes(turn: Array, values: Array) -> tuple[float, float]:
     return refine(int(np.argmax(values[:-1]))), refine(int(np.argmin(values[:-1])))
 
 
-def _integrate(c: Cycle, rhs, y0: float, dense: bool = True):
+def _integrate(c: Cycle, rhs, y0, dense: bool = True):
     """dT/dφ = rhs(φ, T) piece by piece (the loads may bend at the breaks): the end value and the
-    dense solutions."""
+    dense solutions. ``y0`` a number (the end a number) or a list (the end a list: the state with
+    its sensitivities)."""
     from scipy.integrate import solve_ivp
     sols = []
-    y = y0
-    for lo, hi in zip(c.breaks[:-1], c.breaks[1:]):
-        sol = solve_ivp(rhs, (lo, hi), [y], method="DOP853", rtol=RTOL, atol=RTOL * max(abs(y), 1.0),
+    scalar = not isinstance(y0, (list, tuple))
+    y = [float(y0)] if scalar else [float(v) for v in y0]
+    for lo, hi in zip(c.breaks_list[:-1], c.breaks_list[1:]):
+        sol = solve_ivp(rhs, (lo, hi), y, method="DOP853", rtol=RTOL, atol=RTOL * max(abs(y[0]), 1.0),
                         dense_output=dense)
         if sol.status != 0:
             return None, sols
-        y = float(sol.y[0, -1])
+        y = [float(v) for v in sol.y[:, -1]]
         sols.append(sol)
-    return y, sols
+    return (y[0] if scalar else y), sols
 
 
 def _sample(c: Cycle, sols) -> tuple[Array, Array]:
@@ -277,11 +302,10 @@ def _sample(c: Cycle, sols) -> tuple[Array, Array]:
 
 
 def energy_change(c: Cycle) -> tuple[Array, Array]:
-    """ΔT(φ) = A_d − A_c = M*_d·φ − ∫M*_c dφ with the constant driving moment, integrated by
-    solve_ivp (dT/dφ = M*_d − M*_c(φ)): FINE + 1 samples over the turn."""
-    md = c.driving
-    end, sols = _integrate(c, lambda t, y: [md - c.moment(t)], 0.0)
-    return _sample(c, sols)
+    """ΔT(φ) = A_d − A_c = M*_d·φ − ∫M*_c dφ with the constant driving moment: the splines'
+    antiderivative, FINE + 1 samples over the turn."""
+    turn = np.linspace(0.0, 2 * math.pi, FINE + 1)
+    return turn, c.driving * turn - c.resistance_work(turn)
 
 
 def classical(c: Cycle, inertia_constant: float, omega_mean: float) -> Motion:
@@ -347,6 +371,18 @@ class Drive:
         """M*_d at the crank's speed ω."""
         return self.ratio * self.efficiency * self.motor.moment(self.ratio * np.asarray(omega))
 
+    def moment_scalar(self, omega: float) -> float:
+        """M*_d at one crank speed, in plain floats (the integrator's calls)."""
+        a, b = self._line
+        return a * omega + b
+
+    @cached_property
+    def _line(self) -> tuple[float, float]:
+        """M*_d = a·ω + b on the crank: the motor's line through the reducer."""
+        a, b = self.motor.line
+        k = self.ratio * self.efficiency
+        return k * a * self.ratio, k * b
+
     @property
     def moment_max(self) -> float:
         return self.ratio * self.efficiency * self.motor.moment_max
@@ -382,15 +418,47 @@ def reducer_shafts(d, ratio: float) -> float:
     return i1 * ratio ** 2 + (i2 * (ratio / d.first_stage) ** 2 if i2 else 0.0) + i3
 
 
-def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:
-    """The periodic steady state with the motor: shooting on ω(0) (brentq on ω(2π) − ω(0), to
-    1e-11 relative) of dT/dφ = M*_d(ω) − M*_c(φ), ω = √(2T/I*)."""
+def _periodic_start(c: Cycle, dr: Drive, const: float, guess: float | None) -> float | None:
+    """ω(0) of the motor's periodic steady state by Newton's method on T(2π) − T(0) = 0, the
+    derivative ∂T(2π)/∂T(0) integrated alongside (dS/dφ = a·S/(I*·ω), M*_d = a·ω + b): a few
+    integrations. None when it does not settle (then the bracketing search decides)."""
+    a = dr.ratio * dr.efficiency * dr.motor.line[0] * dr.ratio        # dM*_d/dω on the crank
+    i0 = c.inertia(0.0) + const
+
+    def rhs(t, y):
+        inertia = c.scalar(t, 0) + const
+        w = math.sqrt(max(2 * y[0] / inertia, 1e-300))
+        return [dr.moment_scalar(w) - c.scalar(t, 1), a * y[1] / (inertia * w)]
+    w0 = guess if guess and guess > 0 else dr.omega_sync * 0.98
+    for _ in range(12):
+        t0 = 0.5 * i0 * w0 * w0
+        end, _ = _integrate(c, rhs, [t0, 1.0], dense=False)
+        if end is None or end[0] <= 0 or not all(math.isfinite(v) for v in end):
+            return None
+        gap = end[0] - t0
+        slope = end[1] - 1.0
+        if slope == 0:
+            return None
+        t_new = t0 - gap / slope
+        if t_new <= 0:
+            return None
+        w_new = math.sqrt(2 * t_new / i0)
+        if abs(w_new - w0) <= PERIODIC * 0.1 * w0:
+            return w_new
+        w0 = w_new
+    return None
+
+
+def motor_motion(c: Cycle, dr: Drive, flywheel: float, guess: float | None = None) -> Motion:
+    """The periodic steady state with the motor: ω(0) such that ω(2π) = ω(0) to 1e-11 relative —
+    by Newton's method from ``guess`` (or the motor's working speed), else by bracketing (brentq on
+    ω(2π) − ω(0)) — of dT/dφ = M*_d(ω) − M*_c(φ), ω = √(2T/I*)."""
     from scipy.optimize import brentq
     const = dr.rotor_reduced + dr.reducer_reduced + flywheel
 
     def rhs(t, y):
-        w = math.sqrt(max(2 * y[0] / (c.inertia(t) + const), 0.0))
-        return [float(dr.moment(w)) - c.moment(t)]
+        w = math.sqrt(max(2 * y[0] / (c.scalar(t, 0) + const), 0.0))
+        return [dr.moment_scalar(w) - c.scalar(t, 1)]
 
     i0 = c.inertia(0.0) + const
 
@@ -401,13 +469,15 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:
         return math.sqrt(2 * end / i0) - w0
     hi = dr.omega_sync
     lo = max(dr.omega_breakdown, 1e-3 * hi)
-    if ret(lo) <= 0:
-        raise GraphplanError(f"dynamics: the motor {dr.motor.name} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
-                             "cannot drive the cycle: even at the end of its working branch the crank "
-                             "slows down over a turn; choose a larger motor", None)
-    while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
-        hi *= 1.05
-    w0 = brentq(ret, lo, hi, xtol=PERIODIC * hi, rtol=1e-15, maxiter=200)
+    w0 = _periodic_start(c, dr, const, guess)
+    if w0 is None or not lo < w0:
+        if ret(lo) <= 0:
+            raise GraphplanError(f"dynamics: the motor {dr.motor.name} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
+                                 "cannot drive the cycle: even at the end of its working branch the crank "
+                                 "slows down over a turn; choose a larger motor", None)
+        while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
+            hi *= 1.05
+        w0 = brentq(ret, lo, hi, xtol=PERIODIC * hi, rtol=1e-15, maxiter=200)
     end, sols = _integrate(c, rhs, 0.5 * i0 * w0 ** 2)
     turn, energy = _sample(c, sols)
     w = np.sqrt(2 * energy / (c.inertia(turn) + const))
@@ -417,15 +487,32 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float) -> Motion:
 
 def flywheel_motor(c: Cycle, dr: Drive, delta: float, guess: float) -> float:
     """The flywheel (beyond rotor and reducer) that gives δ with the motor; 0 when the motor's
-    own slope and the rotor already keep δ below the request."""
+    own slope and the rotor already keep δ below the request. Brent's method on the simulated δ(J),
+    which falls as J grows, in a bracket found by steps out from the classical flywheel (each
+    steady state started from the last one's ω(0))."""
     from scipy.optimize import brentq
-    f = lambda j: motor_motion(c, dr, j).delta - delta  # noqa: E731
+    last: dict[str, float | None] = {"w0": None}
+
+    def f(j: float) -> float:
+        m = motor_motion(c, dr, j, last["w0"])
+        last["w0"] = float(m.omega[0])
+        return m.delta - delta
     if f(0.0) <= 0:
         return 0.0
-    hi = max(guess, 1e-6)
-    while f(hi) > 0:
-        hi *= 2.0
-    return brentq(f, 0.0, hi, xtol=1e-10 * hi, rtol=1e-12, maxiter=200)
+    g = max(guess, 1e-6)
+    fg = f(g)
+    step = 0.05 * g
+    if fg > 0:                                   # the root is above the guess
+        a, b = g, g + step
+        while f(b) > 0:
+            a, step = b, step * 2.0
+            b = a + step
+    else:                                        # … or below it
+        a, b = max(g - step, 0.0), g
+        while a > 0 and f(a) < 0:
+            b, step = a, step * 2.0
+            a = max(a - step, 0.0)
+    return brentq(f, a, b, xtol=1e-10 * g, rtol=1e-12, maxiter=200)
 
 
 def carries(dr: Drive, m: Motion) -> None:

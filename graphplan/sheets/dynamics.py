@@ -5,7 +5,8 @@ position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
 from graphplan.drawing.flywheel import records
-from graphplan.drawing.layout import GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, set_columns, split, top_left
+from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
+                                      set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.flywheel import Flywheel, construct
@@ -15,6 +16,7 @@ from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, f
                                       note_block, notes_height)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
+from graphplan.util.errors import GraphplanError
 from graphplan.util.words import LANGS, fixed, num
 
 
@@ -28,7 +30,7 @@ Options = SheetOptions
 
 # the diagrams' abscissa L (mm) and the size of their heights: the largest pair that fits
 SIZES = ((330.0, 1.5), (330.0, 1.3), (330.0, 1.15), (330.0, 1.0), (290.0, 1.0), (250.0, 1.0), (210.0, 0.8),
-         (170.0, 0.7))
+         (170.0, 0.7), (170.0, 0.55), (150.0, 0.45), (130.0, 0.35), (120.0, 0.3))
 
 WORDS = {
     "uk": {"subtitle": "Динамічний аналіз", "moments": "Діаграми зведених моментів Mс*(φ), Mд* і робіт Aс(φ), Aд(φ) "
@@ -153,17 +155,19 @@ def _drawn(dyn, args, L: float, size: float, lang: str) -> tuple[Flywheel, dict[
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
 
-SHAPES = ("bands", "column")
+SHAPES = ("bands", "column", "speed")
 
 
 def _tree(shape: str, d: dict[str, Leaf], C: Leaf):
     """The dynamics sheet's composition: the moments and the work on one φ axis; ΔT(φ) over I*(φ)
     beside the energy–mass diagram; ω(φ); the tables' column with the notes over the title block.
     "bands": those bands one under another, the column beside ω(φ); "column": the column the
-    sheet's full height."""
+    sheet's full height; "speed": ω(φ) over the column, beside the moments and the middle band."""
     middle = Row([Stack([d["energy"], d["inertia"]]), d["wittenbauer"]])
     if shape == "bands":
         return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
+    if shape == "speed":
+        return Row([Stack([d["moments"], middle]), Stack([d["speed"], C], flush=True)], flush=True)
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
 
@@ -186,33 +190,50 @@ def _sizes(st: Study):
 def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int]:
     """The flywheel construction the dynamics sheet of ``f`` draws: the largest abscissa L and
     heights' size at which its composition fits one sheet (the tables lettered 3.5 mm where that
-    costs nothing, both languages measured) — (L, size, tables' factor, shape, table columns). The
-    terminal's ``dynamics`` reports the same construction. Each candidate is drawn (a few ms); no
-    layout is searched."""
+    costs nothing; both languages measured) — (L, size, tables' factor, shape, table columns); a
+    set of sheets at the smallest when none does. The terminal's ``dynamics`` reports the same
+    construction. The sizes are tried by halving the list (a larger size never fits where a smaller
+    does not); each try draws the diagrams (a few ms), no layout is searched."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
-    last = None
-    for L, size in _sizes(st):
+    sizes = _sizes(st)
+
+    def measured(L: float, size: float, factor: float):
+        leaves, tabs, notes_ = {}, [], []
+        for lang in LANGS:
+            fw, drawn = _drawn(dyn, args, L, size, lang)
+            for name, rec in drawn.items():
+                w, h = _wh(rec)
+                old = leaves.get(name)
+                leaves[name] = Leaf(name, max(w, old.w if old else 0.0), max(h, old.h if old else 0.0))
+            doc = dynamics_json(fw)
+            tabs.append([(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)])
+            notes_.append(lines_of(notes(fw, doc, lang)))
+        return leaves, [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)], notes_
+
+    def fit(k: int):
+        L, size = sizes[k]
         for factor in (TABLES, 1.0):
-            leaves, tabs, notes_ = {}, [], []
-            for lang in LANGS:
-                fw, drawn = _drawn(dyn, args, L, size, lang)
-                for name, rec in drawn.items():
-                    w, h = _wh(rec)
-                    old = leaves.get(name)
-                    leaves[name] = Leaf(name, max(w, old.w if old else 0.0), max(h, old.h if old else 0.0))
-                doc = dynamics_json(fw)
-                tabs.append([(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)])
-                notes_.append(lines_of(notes(fw, doc, lang)))
-            tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
-            last = (L, size, factor, "column", 3)
+            leaves, tables, notes_ = measured(L, size, factor)
             for shape in SHAPES:
                 for parts in (1, 2, 3):
                     C = _column(f, tables, parts, lambda w: notes_height(notes_, w))[0]
                     tw, th = extent(_tree(shape, leaves, C))
                     if tw <= W + 1e-9 and th <= H + 1e-9:
                         return L, size, factor, shape, parts
-    return last
+        return None
+    lo, hi, found = 0, len(sizes) - 1, None
+    while lo <= hi:                      # the first (largest) size that fits
+        k = (lo + hi) // 2
+        got = fit(k)
+        if got is not None:
+            found, hi = got, k - 1
+        else:
+            lo = k + 1
+    if found is not None:
+        return found
+    L, size = sizes[-1]
+    return L, size, 1.0, "set", 1         # nothing fits one sheet: a set of sheets
 
 
 def _wh(rec: Record) -> tuple[float, float]:
@@ -246,19 +267,29 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     leaves = {name: Leaf(name, record=rec) for name, rec in drawn.items()}
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
     note_lines = lines_of(notes(fw, doc, lang))
-    C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])
     region = field_of(f)
-    items, col_box = [], None
-    for leaf, b in arrange(_tree(shape, leaves, C), region):
-        if leaf is C:
-            col_box = b
-        elif leaf.record is not None:
-            items.append(Placed(leaf.name, centred(leaf.record, b), b))
-    nrec = note_block(note_lines, width)
-    foot = keep_out(f)[3]
-    nb = (col_box[2] - width, foot, col_box[2], foot + _wh(nrec)[1])
-    items.append(Placed("notes", top_left(nrec, nb), nb))
-    items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+    if shape == "set":
+        rows = [[leaves["moments"]], [leaves["energy"], leaves["inertia"]], [leaves["wittenbauer"], leaves["speed"]],
+                tables + [Leaf("notes", record=note_block(note_lines, TITLE))]]
+        laid = flow(rows, region, keep_out(f))
+        if laid is None:
+            raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
+        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
+                 for page in laid]
+    else:
+        C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])
+        items, col_box = [], None
+        for leaf, b in arrange(_tree(shape, leaves, C), region):
+            if leaf is C:
+                col_box = b
+            elif leaf.record is not None:
+                items.append(Placed(leaf.name, centred(leaf.record, b), b))
+        nrec = note_block(note_lines, width)
+        foot = keep_out(f)[3]
+        nb = (col_box[2] - width, foot, col_box[2], foot + _wh(nrec)[1])
+        items.append(Placed("notes", top_left(nrec, nb), nb))
+        items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+        pages = [items]
     tf = fields(st, lang, "", 3, 3)       # diagrams: no drawing scale (the scales are in the notes)
     tf["subtitle"] = WORDS[lang]["subtitle"]
-    return compose(f, [items], tf, lang, f"{st.mech.title} — {tf['subtitle']}")
+    return compose(f, pages, tf, lang, f"{st.mech.title} — {tf['subtitle']}")
