@@ -87,3 +87,27 @@ def test_the_rooms_keep_their_layers():
     out = subprocess.run([exe, "--no-cache"], capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0, out.stdout[-3000:]
     assert "BROKEN" not in out.stdout.upper().replace("0 BROKEN", "")
+
+
+@pytest.mark.parametrize("name", ["shaper", "four_bar"])
+def test_api_terminal_and_sheet_use_one_set_of_scales(name, capsys):
+    """graphplan.plans(), `graphplan plans --json` and the A1 sheet: the same μl, μv, μa (one
+    function gives them: sheets.kinematics.sheet_scales); the language changes none of them."""
+    import json
+
+    from graphplan.cli.main import main
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.kinematics import plan
+    path = str(ROOT / "examples" / f"{name}.toml")
+    api = graphplan.plans(path)
+    assert main(["plans", path, "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert main(["plans", path, "--json", "--lang", "en"]) == 0
+    en = json.loads(capsys.readouterr().out)
+    st = graphplan.study(path).value
+    sheet = plan(st, form("A1"), SheetOptions())[0].mu
+    mu_a = next(p["mu_a"] for p in doc["positions"] if "mu_a" in p)
+    assert (api.mu_l, api.mu_v, api.mu_a) == (doc["mu_l"], doc["positions"][0]["mu_v"], mu_a) \
+        == (sheet["position"], sheet["velocity"], sheet["acceleration"])
+    assert en["mu_l"] == doc["mu_l"] and en["positions"][0]["mu_v"] == doc["positions"][0]["mu_v"]

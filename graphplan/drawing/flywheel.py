@@ -100,8 +100,9 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
-    _text(rec, (f.L + 1.5, f.Md + 1.0), w["Md"], step="M*_d")
-    _text(rec, (f.L + 1.5, float(f.M[-1]) - 5.0), w["Mc"], step="M*_c")
+    place_labels(rec, [LabelRequest(complex(f.L, f.Md), w["Md"], 1 + 0.3j, TEXT, step="M*_d"),
+                       LabelRequest(complex(f.L, float(f.M[-1])), w["Mc"], 1 - 0.3j, TEXT, step="M*_c")],
+                 layer=LAYER)
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     # b) the work diagrams, below
     a_lo, a_hi = _extent(f.A_drawn)
@@ -122,8 +123,8 @@ def _work(f: Flywheel, w: dict) -> Record:
     fine, curve = _smooth(f, f.A_drawn)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
     rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
-    _text(rec, (f.L + 1.5, float(f.A_drawn[-1]) + 1.0), f"{w['Ad']} = {w['Ac']}", step="A_d")
-    return rec
+    return place_labels(rec, [LabelRequest(complex(f.L, float(f.A_drawn[-1])), f"{w['Ad']} = {w['Ac']}", 1 + 0.3j,
+                                           TEXT, step="A_d")], layer=LAYER)
 
 
 def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:

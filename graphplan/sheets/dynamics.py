@@ -198,18 +198,22 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     W, H = x1 - x0, y1 - y0
     sizes = _sizes(st)
 
+    drawn_at: dict = {}
+
     def measured(L: float, size: float, factor: float):
-        leaves, tabs, notes_ = {}, [], []
-        for lang in LANGS:
-            fw, drawn = _drawn(dyn, args, L, size, lang)
-            for name, rec in drawn.items():
-                w, h = _wh(rec)
-                old = leaves.get(name)
-                leaves[name] = Leaf(name, max(w, old.w if old else 0.0), max(h, old.h if old else 0.0))
-            doc = dynamics_json(fw)
-            tabs.append([(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)])
-            notes_.append(lines_of(notes(fw, doc, lang)))
-        return leaves, [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)], notes_
+        if (L, size) not in drawn_at:             # the drawings and the tables' content once per size
+            per = []
+            for lang in LANGS:
+                fw, drawn = _drawn(dyn, args, L, size, lang)
+                doc = dynamics_json(fw)
+                per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang))))
+            drawn_at[(L, size)] = per
+        per = drawn_at[(L, size)]
+        leaves = {name: Leaf(name, max(p[1][name][0] for p in per), max(p[1][name][1] for p in per))
+                  for name in per[0][1]}
+        tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)] for lang, _, doc, _ in per]
+        tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
+        return leaves, tables, [p[3] for p in per]
 
     def fit(k: int):
         L, size = sizes[k]
