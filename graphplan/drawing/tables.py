@@ -29,10 +29,12 @@ PAD = 1.0        # mm between a cell's text and its rules
 
 
 def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
-          title: str = "") -> Record:
+          title: str = "", header: int = 1, align: list[str] | None = None) -> Record:
     """A ruled table; its top-left corner at (0, 0), growing downward (y < 0), its title above it.
-    The first row is the header (a thick line under it); numbers are right-aligned, text centred.
-    A column is widened to its widest cell: the lettering keeps its height (never under 2.5 mm)."""
+    The first ``header`` rows are the header (centred, a thick line under them); in the body numbers
+    are right-aligned and text centred, or each column as ``align`` says ("start", "middle",
+    "end"). A column is widened to its widest cell: the lettering keeps its height (never under
+    2.5 mm) and stays in its cell, clear of the rules."""
     rec = Record(title)
     widths = [max(w, max((text_width(row[c], size) for row in rows if c < len(row) and row[c]),
                          default=0.0) + 2 * PAD + 0.5) for c, w in enumerate(widths)]
@@ -46,7 +48,7 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
     for k in range(n + 1):
         y = top - k * row_h
         rec.segment((0.0, y), (x_edges[-1], y), role="table", layer="tables",
-                    width=THICK if k in (0, 1, n) else THIN)
+                    width=THICK if k in (0, header, n) else THIN)
     for k, x in enumerate(x_edges):
         rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
                     width=THICK if k in (0, len(x_edges) - 1) else THIN)
@@ -55,11 +57,10 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         for c, cell in enumerate(row):
             if not cell:
                 continue
-            if r > 0 and _is_number(cell):
-                rec.label((x_edges[c + 1] - PAD - 0.3, y), cell, size=size, anchor="end", layer="tables")
-            else:
-                rec.label(((x_edges[c] + x_edges[c + 1]) / 2, y), cell, size=size, anchor="middle",
-                          layer="tables")
+            how = "middle" if r < header else (align[c] if align else ("end" if _is_number(cell) else "middle"))
+            x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
+                 "end": x_edges[c + 1] - PAD - 0.3}[how]
+            rec.label((x, y), cell, size=size, anchor=how, layer="tables")
     return rec
 
 

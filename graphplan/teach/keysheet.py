@@ -12,7 +12,7 @@ from typing import Any
 
 from graphplan.util.markup import escape
 from graphplan.util.words import UNITS, fixed, num, unit, word
-from graphplan.graphic.record import Record, text_width
+from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.teach.keys import fmt
 
 A4_PORTRAIT = (210.0, 297.0)
@@ -63,36 +63,17 @@ def frame(rec: Record, width: float, height: float) -> None:
 def table(rec: Record, x: float, top: float, header: Sequence[Sequence[str]], rows: Sequence[Sequence[str]],
           *, size: float = SMALL, row_h: float = 4.5, align: Sequence[str] | None = None,
           widths: Sequence[float] | None = None) -> tuple[float, float]:
-    """Draw a ruled table with its top-left corner at (x, top); ``header`` is a list of header rows.
-    Returns (the table's bottom y, its width)."""
-    ncol = len(header[0])
+    """A ruled table (drawing.tables, the one table builder) with its top-left corner at (x, top);
+    ``header`` is a list of header rows. Returns (the table's bottom y, its width)."""
+    from graphplan.drawing.tables import table as ruled
     cells = [list(r) for r in header] + [list(r) for r in rows]
     if widths is None:
         widths = column_widths(cells, size)
-    align = list(align or ["end"] * ncol)
-    total = sum(widths)
-    n_head, n_rows = len(header), len(rows)
-    height = (n_head + n_rows) * row_h
-    bottom = top - height
-    rec.add("polygon", [(x, bottom), (x + total, bottom), (x + total, top), (x, top)],
-            role="table", layer="tables", width=0.5)
-    for k in range(1, n_head + n_rows):
-        y = top - k * row_h
-        rec.segment((x, y), (x + total, y), role="table", layer="tables", width=0.5 if k == n_head else 0.18)
-    cx = x
-    for w in widths[:-1]:
-        cx += w
-        rec.segment((cx, bottom), (cx, top), role="table", layer="tables", width=0.25)
-    for r, row in enumerate(cells):
-        base = top - (r + 0.5) * row_h - 0.36 * size
-        cx = x
-        for i, (text, w) in enumerate(zip(row, widths)):
-            if text:
-                anchor = "middle" if r < n_head else align[i]
-                tx = {"start": cx + 1.2, "middle": cx + w / 2, "end": cx + w - 1.2}[anchor]
-                rec.label((tx, base), text, size=size, anchor=anchor, layer="tables")
-            cx += w
-    return bottom, total
+    t = ruled(cells, list(widths), row_h=row_h, size=size, header=len(header),
+              align=list(align) if align else ["end"] * len(header[0])).moved(x, top)
+    rec.extend(t)
+    x0, y0, x1, _ = Record(items=[p for p in t.items if p.kind != "text"]).bounds()
+    return y0, x1 - x0
 
 
 def _heading(rec: Record, x: float, y: float, text: str, size: float = MEDIUM) -> float:
@@ -115,7 +96,7 @@ def _wrap(text: str, size: float, width: float) -> list[str]:
 def _paragraph(rec: Record, x: float, y: float, text: str, size: float, width: float) -> float:
     for line in _wrap(text, size, width):
         rec.label((x, y - size), line, size=size)
-        y -= size * 1.45
+        y -= line_pitch(size)
     return y - 0.5
 
 
