@@ -49,18 +49,24 @@ def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor:
         rec.label((x, y), text, size=size, anchor=anchor, layer="frame")
 
 
+SLACK = 1.3     # a field's text measured this much wider than osifont sets it: it stays inside its
+                # cell where a viewer letters it with the fallback font (DejaVu Sans: 18–27 % wider)
+
+
 def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5)) -> float:
-    """The largest GOST letter height (2.5 … 7 mm) at which ``text`` fits ``width`` mm."""
+    """The largest GOST letter height (2.5 … 7 mm) at which ``text`` fits ``width`` mm (with ``SLACK``)."""
     for s in sizes:
-        if text_width(text, s) <= width:
+        if SLACK * text_width(text, s) <= width:
             return s
     return sizes[-1]
 
 
 def wrap(text: str, width: float, size: float) -> list[str]:
-    """Break ``text`` into lines no wider than ``width`` mm at letter height ``size``."""
+    """Break ``text`` into lines no wider than ``width`` mm at letter height ``size`` (at spaces
+    outside the markup's groups: ``M^*_{с max}`` is never broken)."""
+    from graphplan.util.markup import split
     lines: list[str] = []
-    for word in text.split():
+    for word in split(text):
         if lines and text_width(lines[-1] + " " + word, size) <= width:
             lines[-1] += " " + word
         else:
@@ -132,14 +138,16 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
 
 
 def _block_text(rec: Record, text: str, x: float, y: float, w: float, h: float, sizes) -> None:
-    """Centred, wrapped text in a w×h field whose bottom-left is (x, y)."""
+    """Centred, wrapped text in a w×h field whose bottom-left is (x, y): the largest of ``sizes``
+    (GOST heights) at which its lines, ``SLACK`` wider than osifont sets them, fit the field; at the
+    smallest, lines wrapped to the width and the line step tightened so none leaves the field."""
     if not text:
         return
     for size in sizes:
-        lines = wrap(text, w, size)
-        if len(lines) * size * 1.5 <= h and all(text_width(s, size) <= w for s in lines):
+        lines = wrap(text, w / SLACK, size)
+        if len(lines) * size * 1.5 <= h and all(SLACK * text_width(s, size) <= w for s in lines):
             break
-    step = size * 1.5
+    step = min(size * 1.5, h / len(lines))
     top = y + h / 2 + step * len(lines) / 2
     for k, line in enumerate(lines):
         _text(rec, x + w / 2, top - step * (k + 1) + (step - size) / 2, line, size=size)
