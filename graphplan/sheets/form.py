@@ -216,8 +216,9 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
 
 
 def _is_number(text: str) -> bool:
+    """A number as the tables write it: a true minus, a decimal comma, maybe marked * (over 5 %)."""
     try:
-        float(text.replace("−", "-").replace(",", "."))
+        float(text.removesuffix("*").replace("−", "-").replace(",", "."))
         return True
     except ValueError:
         return False

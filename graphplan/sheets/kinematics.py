@@ -95,7 +95,7 @@ def why(e: dict, sym: str, pos: dict, plan: str, lang: str) -> str:
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     mm = _length(e)
     if mm is not None and mm < SHORT_MM:
-        return w('why_short', sym=sym, mm=num(mm, lang, 3))
+        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=num(mm, lang, 3))
     angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
     if angles:
         return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))

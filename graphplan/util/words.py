@@ -480,6 +480,7 @@ WORDS: dict[str, tuple[str, str]] = {
                              "Table 2.{n}. Accelerations, m/s²; ε, rad/s² (+ counter-clockwise), position {i}"),
     "kin turn_at": ("φ = {turn}° від положення 0", "φ = {turn}° from position 0"),
     "kin why_short": ("{sym}: короткий вектор ({mm} мм)", "{sym}: a short vector ({mm} mm)"),
+    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм)", "{sym}: read from a short vector ({mm} mm)"),
     "kin why_angle": ("{sym}: напрямні лінії перетинаються під малим кутом ({angle}°)",
                       "{sym}: the direction lines cross at a small angle ({angle}°)"),
     "kin why_ruler": ("{sym}: точність лінійки", "{sym}: the ruler's precision"),
