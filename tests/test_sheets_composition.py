@@ -213,7 +213,7 @@ def _right_column(rec) -> list[float]:
     out = []
     for y, cells in sorted(rows.items(), reverse=True)[1:]:
         last = max(cells, key=lambda p: p.points[0][0])
-        text = last.text.replace("−", "-").replace(",", ".")
+        text = last.text.rstrip("*").replace("−", "-").replace(",", ".")     # * marks an error over 5 %
         if re.fullmatch(r"-?\d+(\.\d+)?", text):
             out.append(abs(float(text)))
     return out

@@ -188,7 +188,7 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
     while v <= hi + 1e-9:
         y = v / mu
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
-        rec.label((-2.5, y - 1.2), num(v, lang), size=2.5, anchor="end", step=step)
+        rec.label((-2.5, y - 1.2), num(v, lang).replace("-", "−"), size=2.5, anchor="end", step=step)
         v += tick
     place_labels(rec, numbers)                  # each number beside its line, clear of the curve
     rec.label((0.0, rec.bounds()[1] - 6.0), f"{per_mm} = {num(mu, lang)} {mm_unit}, "
@@ -260,19 +260,37 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
     return rec
 
 
+def path_travelled(t: Turn) -> np.ndarray:
+    """The output's path from position 0 over the cycle at the turn's samples and back at position 0
+    (n + 1 values): the stroke out, then the stroke back — each position once, in the order the
+    crank passes it (m for a slide, degrees for a link)."""
+    st = t.ks.st
+    out = st.output
+    vals = np.asarray(out.value(t.ks.kin), dtype=float)
+    if out.kind != "slide":
+        vals = np.degrees(vals)
+    last = vals[0] - vals[-1]
+    if out.kind != "slide":
+        last = (last + 180.0) % 360.0 - 180.0
+    steps = np.abs(np.r_[np.diff(vals), last])
+    return np.r_[0.0, np.cumsum(steps)]
+
+
 def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
-    """Seed 000's diagram of the resistance force: |P| of each external force against the output's
-    distance from position 0 over the turn (the working stroke loaded, the idle one not), the
-    positions numbered; None when the scene has no external force."""
-    from graphplan.exact.kinetostatics import output_distance
+    """Seed 000's diagram of the resistance force: |P| of the external forces along the output's path
+    over the cycle from position 0 (the stroke out, then back), so the working stroke carries the
+    force and the idle stroke lies on the axis — each position numbered once, under its own stroke
+    (the scene's ``positions.working_stroke``); None when the scene has no external force."""
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
     if not ext:
         return None
     st = t.ks.st
-    dist = output_distance(st, t.ks.kin)
+    path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
     force = np.abs(sum(ld.force for ld in ext))
-    reach = float(np.max(dist)) or 1.0
+    work = np.asarray(t.ks.working, dtype=bool)
+    n = len(force)
+    reach = float(path[-1]) or 1.0
     mu_s = standard_scale(reach / width)
     top = float(np.max(force)) or 1.0
     mu_p = standard_scale(top / height)
@@ -281,27 +299,43 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     rec.scales.update({"mu_s": mu_s, "mu_P": mu_p})
     step = f"{name}(s)"
     x_end, y_end = reach / mu_s, top / mu_p
+    X = lambda k: float(path[k] / mu_s)  # noqa: E731
     rec.segment((0.0, 0.0), (x_end + 8.0, 0.0), role="axis", layer="diagrams", step=step)
     rec.vector((0.0, -2.0), (0.0, y_end + 8.0), role="construction", layer="diagrams", step=step)
-    for idx, piece in _pieces(t, force):
-        pts = [(float(dist[k] / mu_s), float(v / mu_p)) for k, v in zip(idx, piece)]
-        rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
-        if float(np.max(piece)) > 0:   # the loaded stroke hatched down to the axis
-            for x, y in pts[::max(1, len(pts) // 24)]:
-                rec.segment((x, 0.0), (x, y), role="hatch", layer="diagrams", step=step)
+    pts = [(X(0), float(force[0] / mu_p))]
+    for k in range(1, n + 1):
+        y = float(force[min(k, n - 1)] / mu_p) if k < n else float(force[n - 1] / mu_p)
+        if k < n and work[k] != work[k - 1]:          # the force switches on or off at the extreme
+            pts.append((X(k), float(force[k - 1] / mu_p)))
+        pts.append((X(k), y))
+    rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
+    every = max(1, n // 48)
+    for k in range(0, n, every):                      # the loaded stroke hatched down to the axis
+        if work[k] and force[k] > 0:
+            rec.segment((X(k), 0.0), (X(k), float(force[k] / mu_p)), role="hatch", layer="diagrams", step=step)
+    # each stroke named under the axis, across its span
+    cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]
+    low = -5.0
     seen: list[float] = []
     for k, pos in t.position_index():
-        x = float(dist[k] / mu_s)
+        x = X(k)
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
-        below = sum(1 for s in seen if abs(s - x) < 3.0)
+        below = sum(1 for s_ in seen if abs(s_ - x) < 3.0)
         seen.append(x)
         rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
+        low = min(low, -5.0 - 3.5 * below)
+    for a, b in zip(cuts, cuts[1:]):
+        xa, xb = X(a), X(b)
+        rec.segment((xa, low - 4.0), (xb, low - 4.0), role="construction", layer="diagrams", step=step)
+        rec.label((0.5 * (xa + xb), low - 8.5), word("fs working" if work[a] else "fs idle", lang), size=2.5,
+                  anchor="middle", step=step)
     rec.label((x_end + 9.0, -1.0), f"s, {dist_unit}", size=3.5, step=step)
     rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {unit('N', lang)}", size=3.5, step=step)
     rec.label((-2.5, y_end - 1.2), num(top, lang), size=2.5, anchor="end", step=step)
     rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
-    low = -5.0 - 3.5 * max([0] + [sum(1 for s in seen if abs(s - x) < 3.0) for x in seen])
-    rec.label((0.0, low - 8.0), f"μ_s = {num(mu_s, lang)} {dist_unit}/{unit('mm', lang)}, μ_P = {num(mu_p, lang)} {unit('N/mm', lang)}", size=2.5, step=step)
+    what = f"s_{{{st.output.name}}}" if st.output.kind == "slide" else f"φ_{{{st.mech.links[st.output.name].number}}}"
+    rec.label((0.0, low - 15.0), word("fs path", lang, s=what, u=dist_unit) + f"; μ_s = {num(mu_s, lang)} "
+              f"{dist_unit}/{unit('mm', lang)}, μ_P = {num(mu_p, lang)} {unit('N/mm', lang)}", size=2.5, step=step)
     return rec
 
 

@@ -25,19 +25,19 @@ NUM = 2.5
 
 WORDS = {
     "uk": {"moments": "Зведені моменти сил опору і рушійних сил", "work": "Роботи сил опору і рушійних сил",
-           "energy": "Зміна кінетичної енергії ΔT = Aд − Aс", "inertia": "Зведений момент інерції механізму",
+           "energy": "Зміна кінетичної енергії ΔT = A_д − A_с", "inertia": "Зведений момент інерції механізму",
            "witt": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість корби ω(φ) за оберт",
-           "classical": "сталий Mд*, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
+           "classical": "сталий M^*_д, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
            "mm": "мм", "Nm": "Н·м", "J": "Дж", "kgm2": "кг·м²", "rad": "рад", "s": "с",
-           "kl": "|kl| = {kl} мм", "axis": "вісь ΔT", "Mc": "Mс*", "Md": "Mд*", "Ac": "Aс", "Ad": "Aд",
-           "Im": "I*м"},
+           "kl": "|kl| = {kl} мм", "axis": "вісь ΔT", "Mc": "M^*_с", "Md": "M^*_д", "Ac": "A_с", "Ad": "A_д",
+           "Im": "I^*_м"},
     "en": {"moments": "Reduced moments of the resistance and driving forces", "work": "Work of the resistance and driving forces",
            "energy": "Change of kinetic energy ΔT = A_d − A_c", "inertia": "Reduced moment of inertia of the mechanism",
            "witt": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) over a turn",
-           "classical": "constant M_d*, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
+           "classical": "constant M^*_d, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
            "mm": "mm", "Nm": "N·m", "J": "J", "kgm2": "kg·m²", "rad": "rad", "s": "s",
-           "kl": "|kl| = {kl} mm", "axis": "ΔT axis", "Mc": "M*c", "Md": "M*d", "Ac": "Ac", "Ad": "Ad",
-           "Im": "I*m"},
+           "kl": "|kl| = {kl} mm", "axis": "ΔT axis", "Mc": "M^*_c", "Md": "M^*_d", "Ac": "A_c", "Ad": "A_d",
+           "Im": "I^*_m"},
 }
 
 
@@ -47,7 +47,7 @@ def _extent(*arrays) -> tuple[float, float]:
 
 
 def _text(rec: Record, at: tuple[float, float], text: str, step: str = "", anchor: str = "start") -> None:
-    """A symbol or a caption in the diagrams' lettering (indices written in line: Mс*, I*м)."""
+    """A symbol or a caption in the diagrams' lettering (markup: M^*_с, I^*_м)."""
     rec.label(at, text, size=TEXT, anchor=anchor, layer=LAYER, step=step)
 
 
@@ -188,7 +188,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ{name} = {fixed(psi, lang, 2)}°", 1 + 0j, TEXT,
+        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ_{{{name}}} = {fixed(psi, lang, 2)}°", 1 + 0j, TEXT,
                                    step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
@@ -240,7 +240,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {fixed(m.delta, lang, 4)}, ωm = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
+        rec.label((12.0, yl), f"{text}: δ = {fixed(m.delta, lang, 4)}, ω_m = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
     return rec
 
 

@@ -6,11 +6,12 @@ direction first, the first spot that overlaps neither another label nor a drawn 
 """
 from __future__ import annotations
 
+import cmath
 import math
 
 from graphplan.drawing.labels import place_labels
 from graphplan.drawing.tables import table
-from graphplan.graphic.record import LabelRequest, Record, text_width
+from graphplan.graphic.record import LabelRequest, Record, line_pitch, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
@@ -92,9 +93,10 @@ def _support(rec: Record, z: complex, step: str) -> None:
         rec.segment(_pt(x), _pt(x + (-1.5 - 1.5j)), role="hatch", layer="frame", step=step)
 
 
-def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
+def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: complex | None = None) -> Record:
     """A group drawn at μl: its links, every force acting on it (loads, the reactions handed over by
-    the later groups, the reactions found here) and the arms of the moment equations."""
+    the later groups, the reactions found here) and the arms of the moment equations; with
+    ``omega_at`` (mm) the crank's sense of rotation there, drawn before any label is set."""
     mech, kin = fp.ks.mech, fp.ks.kin
     title = f"{gp.label} {pair_kind(gp.kind, lang)}" if gp.kind not in ("crank", "mechanism") else gp.label
     rec = Record(title, scales={"mu_l": fp.mu_l})
@@ -166,6 +168,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
             if dot(t.foot - z, tip - z) < 0 or abs(t.foot - z) > abs(tip - z):
                 rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
     lab = Labeler(rec)
+    if omega_at is not None:
+        ck = mech.crank
+        pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / fp.mu_l
+        _omega(rec, lab, omega_at, mech.omega1, cmath.phase(omega_at - pin))
     for z, name in names:
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     for k, (about, t) in enumerate(arms, 1):
@@ -186,9 +192,25 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
     loads.append(GForce("M_b", crank, complex(pivot[0]), 0j, couple=fp.balancing))
     links = tuple(link for gp in reversed(fp.groups) for link in gp.links)
     whole = GroupPlan("0", "mechanism", links, loads, [], [], [], {}, {}, [])
-    rec = group_record(fp, whole, lang)
+    rec = group_record(fp, whole, lang, omega_at=complex(pivot[0]) / fp.mu_l)
     rec.title = "mechanism with its loads"
     return rec
+
+
+def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: float = 9.0) -> None:
+    """The crank's sense of rotation at its pivot: a 90° arc with an arrowhead, labelled ω₁ (as on
+    the position plan), on the side of the pivot away from the crank (``away``, rad) so that it
+    crosses neither the crank nor the balancing moment's arc (r = 5 mm)."""
+    step = "the crank's rotation ω1"
+    c = math.degrees(away)
+    start, end = (c - 45.0, c + 45.0) if omega > 0 else (c + 45.0, c - 45.0)
+    rec.arc(_pt(z), r, min(start, end) % 360.0, min(start, end) % 360.0 + 90.0, role="relative",
+            layer="mechanism", step=step)
+    tip = z + r * complex(math.cos(math.radians(end)), math.sin(math.radians(end)))
+    tangent = 1j * (tip - z) / r * (1 if omega > 0 else -1)
+    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="mechanism", step=step)
+    mid = z + r * complex(math.cos(away), math.sin(away))
+    lab.place(mid, "ω_1", 3.5, mid - z, step)
 
 
 def _about(fp: ForcePlans, name: str, gp: GroupPlan) -> complex | None:
@@ -316,30 +338,86 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     for m in gp.reactions.values():
         cells.append((m.key, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
-    rows = [[word("force value", lang)] + [num(c[1], lang) for c in cells],
+    rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in cells],
             [word("drawn mm", lang)] + [num(c[2], lang) for c in cells]]
     widths = [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]]
     _table(rec, 0.0, 0.0, head, rows, widths, step)
     return rec
 
 
+LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a result past it is marked
+SHORT_MM = 20.0    # a vector shorter than this reads with a large relative error (±½ division)
+
+
+def _pct(v: float | None, lang: str) -> str:
+    """δ, % signed, with a true minus; "—" for none."""
+    return pct(v, lang).replace("-", "−")
+
+
+def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
+    """Why a reaction read off its force plan misses the lab's 5 %: drawn short, or the closing
+    lines of its polygon crossing at a small angle, else the ruler."""
+    from graphplan.graphic.draftsman import crossing_angle
+    from graphplan.graphic.plan import SMALL_ANGLE_DEG
+    sym = force_symbol(key, lang)
+    gp = next(g for g in fp.groups if key in g.reactions)
+    m = gp.reactions[key]
+    if m.mm < SHORT_MM:
+        return word("fs why short", lang, sym=sym, mm=num(m.mm, lang))
+    if len(gp.lines) >= 2:
+        (a1, b1), (a2, b2) = gp.lines[-2:]
+        angle = crossing_angle(b1 - a1, b2 - a2)
+        if angle < SMALL_ANGLE_DEG:
+            return word("fs why angle", lang, sym=sym, angle=fixed(angle, lang, 1))
+    return word("kin why_ruler", lang, sym=sym)
+
+
 def results_record(fp: ForcePlans, lang: str = "uk") -> Record:
-    """The balancing moment found four ways and each reaction against its closed form."""
+    """The balancing moment found four ways and each reaction against its closed form; a result
+    past the lab's 5 % is marked (*) and the lines under the tables say why (a short vector, a small
+    angle between the polygon's closing lines, a short pa on the lever, the arms' ruler)."""
     rec = Record(word("balancing moment", lang))
     step = "results"
     a = fp.analytic
-    rows = []
+    rows, why = [], []
     for name, value in (("closed form short", a), ("by force plans", fp.balancing),
                         ("by lever", fp.lever.balancing), ("by power", fp.power)):
-        err = "" if name == "closed form short" or a == 0 else pct(100 * (value - a) / a, lang)
-        rows.append([word(name, lang), num(value, lang), err])
+        e = None if name == "closed form short" or a == 0 else 100 * (value - a) / a
+        err = "" if e is None else _pct(e, lang)
+        if e is not None and abs(e) > LAB_LIMIT and name != "by power":
+            err += "*"
+            sym = f"{word('M_b', lang)} ({word(name, lang)})"
+            if name == "by lever" and fp.lever.pa_mm < SHORT_MM:
+                why.append(word("fs why pa", lang, sym=sym, mm=num(fp.lever.pa_mm, lang)))
+            else:
+                why.append(word("fs why arms", lang, sym=sym, p=num(fp.precision, lang)))
+        rows.append([word(name, lang), num(value, lang).replace("-", "−"), err])
     bottom = _table(rec, 0.0, 0.0, [word("M_b", lang), unit("N·m", lang), "δ, %"], rows, [34.0, 22.0, 18.0], step)
-    rows = [[force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
-             num(m.analytic, lang), pct(m.error_pct, lang)]
-            for m in fp.reactions().values()]
-    _table(rec, 0.0, bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
-                                    word("exact N", lang), "δ, %"], rows,
-           [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
+    rows = []
+    for m in fp.reactions().values():
+        err = _pct(m.error_pct, lang)
+        if m.error_pct is not None and abs(m.error_pct) > LAB_LIMIT:
+            err += "*"
+            why.append(reaction_why(fp, m.key, lang))
+        rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
+                     num(m.analytic, lang), err])
+    bottom = _table(rec, 0.0, bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
+                                             word("exact N", lang), "δ, %"], rows,
+                    [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
+    if why:
+        from graphplan.util.markup import split
+        y = bottom - 4.5
+        for text in [word("kin mark_head", lang)] + why:
+            line = ""
+            for piece in split(text):        # wrapped to the tables' width
+                if line and text_width(line + " " + piece, 2.5) > 94.0:
+                    rec.label((0.0, y), line, size=2.5, step=step)
+                    y -= line_pitch(2.5)
+                    line = piece
+                else:
+                    line = f"{line} {piece}".strip()
+            rec.label((0.0, y), line, size=2.5, step=step)
+            y -= line_pitch(2.5)
     return rec
 
 

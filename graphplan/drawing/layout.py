@@ -199,10 +199,16 @@ def best_grid(children: list, w: float, h: float, gap: float = GAP) -> Grid | No
     return best[1] if best else None
 
 
-def split(items: Sequence[Leaf], parts: int, gap: float = GAP) -> list[list[Leaf]]:
+def split(items: Sequence[Leaf], parts: int, gap: float = GAP, counts: Sequence[int] = ()) -> list[list[Leaf]]:
     """The items in ``parts`` consecutive groups (their order kept) whose tallest stack of items is
-    as short as it can be: tables set in that many columns."""
+    as short as it can be: tables set in that many columns — or, given ``counts``, that many items
+    in each group (the grouping a plan found, kept when the items are redrawn)."""
     n = len(items)
+    if counts and sum(counts) == n:
+        ends = [0]
+        for c in counts:
+            ends.append(ends[-1] + c)
+        return [list(items[a:b]) for a, b in zip(ends[:-1], ends[1:])]
     parts = max(1, min(parts, n))
     best = None
 

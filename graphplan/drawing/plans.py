@@ -276,7 +276,7 @@ def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex]) -> list[Label
 
 
 def omega_arrow(rec: Record, O: complex, r: float, omega: float) -> list[LabelRequest]:
-    """The crank's sense of rotation: an arc around the pivot with an arrowhead, labelled ω1."""
+    """The crank's sense of rotation: an arc around the pivot with an arrowhead, labelled ω₁ (ω_1)."""
     rr = max(6.0, 0.25 * r)
     start, end = (200.0, 290.0) if omega > 0 else (290.0, 200.0)
     rec.arc(_pt(O), rr, min(start, end), max(start, end), role="relative", layer="mechanism",
@@ -286,7 +286,7 @@ def omega_arrow(rec: Record, O: complex, r: float, omega: float) -> list[LabelRe
     rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="mechanism",
                step="the crank's rotation ω1")
     mid = O + rr * cmath.exp(1j * math.radians(245.0))
-    return [LabelRequest(mid, "ω1", toward=mid - O, size=3.5, optional=False)]
+    return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False)]
 
 
 def labelled(plan: Plan) -> Record:

@@ -12,7 +12,7 @@ import re
 from functools import lru_cache
 
 from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering,
-                                      plain_width, run_offsets)
+                                      plain_width, run_offsets, sub_kern)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
@@ -153,10 +153,15 @@ def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, fl
     start by the drawing font's advances (stacked scripts start together), and the whole width."""
     out = []
     pen = start = 0.0
+    base = ("", size)        # the last letter set on the baseline, and its size
     for run in runs(text):
         s = size * SMALL if run.level else size
         x = start if run.stacked else pen
+        if run.level == -1 and not run.stacked and base[0] and run.text:
+            x += sub_kern(base[0], base[1], run.text[0], s)      # an index beside a P, Г, Т
         start = x
+        if run.level == 0 and run.text:
+            base = (run.text[-1], s)
         up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
         for part in (p for p in _MISSING.split(run.text) if p):
             pieces = [(part, 0.0)] if part in MISSING else kerned(part, round(s, 6))   # a comma set apart
@@ -221,8 +226,13 @@ def text_outline(prim: Primitive, height: float) -> str:
 
     pieces = []   # (TextPath, x offset, baseline shift) per run of the markup, by the glyphs' advances
     pen = start = 0.0
+    base = ("", prim.size)
     for run, _x, size, up in run_offsets(prim.text, prim.size):
         x_run = start if run.stacked else pen
+        if run.level == -1 and not run.stacked and base[0] and run.text:
+            x_run += sub_kern(base[0], base[1], run.text[0], size)
+        if run.level == 0 and run.text:
+            base = (run.text[-1], size)
         start = x = x_run
         for piece in (p for p in _MISSING.split(run.text) if p):     # → ⊥ ∥ … from the symbols' font
             tp = TextPath((0, 0), lettering(piece), size=em(size), prop=_font(symbols=piece in MISSING))

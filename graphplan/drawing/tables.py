@@ -2,7 +2,7 @@
 drawing (GOST 2.104-style: a thick outline and header line, thin rules, numbers right-aligned)."""
 from __future__ import annotations
 
-from graphplan.graphic.record import THICK, THIN, Record, text_width
+from graphplan.graphic.record import THICK, THIN, Record, line_pitch, text_width
 
 LETTERING = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0)   # GOST 2.304 letter heights, mm
 TABLES = 1.4      # the sheets' tables: ruled at 2.5 mm lettering, drawn 1.4 × (3.5 mm letters, 8.4 mm rows)
@@ -26,6 +26,20 @@ def enlarged(rec: Record, k: float = TABLES) -> Record:
 
 
 PAD = 1.0        # mm between a cell's text and its rules
+TITLE_MM = 100.0  # a table's title wraps to the table's width, or to this where the table is narrower
+
+
+def title_lines(title: str, width: float, size: float = 3.5) -> list[str]:
+    """A table's title wrapped at its spaces (never inside a {group} of the markup) to ``width`` mm."""
+    from graphplan.util.markup import split
+    lines, line = [], ""
+    for word in split(title):
+        if line and text_width(f"{line} {word}", size) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = f"{line} {word}".strip()
+    return lines + [line] if line else lines
 
 
 def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
@@ -43,7 +57,9 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         x_edges.append(x_edges[-1] + w)
     top = 0.0
     if title:
-        rec.label((0.0, 2.2), title, size=3.5, layer="tables")
+        lines = title_lines(title, max(x_edges[-1], TITLE_MM))
+        for k, line in enumerate(lines):
+            rec.label((0.0, 2.2 + line_pitch(3.5) * (len(lines) - 1 - k)), line, size=3.5, layer="tables")
     n = len(rows)
     for k in range(n + 1):
         y = top - k * row_h
@@ -65,8 +81,9 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
 
 
 def _is_number(text: str) -> bool:
+    """A number as the tables write it: a true minus, a decimal comma, maybe marked * (over 5 %)."""
     try:
-        float(text.replace("−", "-").replace(",", "."))
+        float(text.removesuffix("*").replace("−", "-").replace(",", "."))
         return True
     except ValueError:
         return False

@@ -34,6 +34,7 @@ from graphplan.exact.kinetostatics import loads, output_distance, working_stroke
 from graphplan.exact.positions import Study
 from graphplan.model.motors import Motor, choose
 from graphplan.util.errors import GraphplanError
+from graphplan.util.words import num
 
 Array = np.ndarray
 STEP_DEG = 0.25        # the cycle's table: at most this far between exact samples
@@ -536,7 +537,7 @@ class Dynamics:
     delta: float
     omega_mean: float
     drive: Drive
-    flywheel_total: float          # J = I_rotor·i² + I_reducer + I_fl, classical, kg·m²
+    flywheel_total: float          # J that gives δ (classical), kg·m²: I_rotor·i² + I_reducer + I_fl when ≥ them
     motion: Motion                 # classical steady state with J
     motor_flywheel: float          # I_fl with the motor, kg·m²
     motor_motion: Motion
@@ -549,8 +550,20 @@ class Dynamics:
 
     @property
     def flywheel(self) -> float:
-        """The flywheel's own moment of inertia (classical): J − rotor − reducer."""
-        return self.flywheel_total - self.constant
+        """The flywheel's own moment of inertia (classical): J − rotor − reducer, or 0 when the
+        rotor and the reducer alone keep δ below the request (``needs_flywheel`` is False) — a
+        moment of inertia is never negative."""
+        return max(self.flywheel_total - self.constant, 0.0)
+
+    @property
+    def needs_flywheel(self) -> bool:
+        """Whether δ asks for more inertia than the rotor and the reducer give."""
+        return self.flywheel_total > self.constant
+
+    @property
+    def underpowered(self) -> bool:
+        """The scene's motor is weaker than the power rule asks (P_n < max M*_c·ω1/η)."""
+        return self.drive.motor.power_kW < self.drive.power_needed_kW
 
 
 def analyse(st: Study, delta: float | None = None) -> Dynamics:
@@ -562,21 +575,28 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     wm = abs(st.mech.omega1)
     dr = drive(st, c)
     total = flywheel_classical(c, delta, wm)
-    motion = classical(c, total, wm)
+    # the steady state with the exact flywheel: I_fl = 0 where rotor and reducer already exceed J
+    motion = classical(c, max(total, dr.rotor_reduced + dr.reducer_reduced), wm)
     fm = flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
     mm = motor_motion(c, dr, fm)
     carries(dr, mm)
     warnings = list(dr.warnings)
     const = dr.rotor_reduced + dr.reducer_reduced
-    if total < const:
+    if total <= const:
         warnings.append((f"the rotor and the reducer ({const:.4g} kg·m²) exceed the inertia δ = {delta:g} needs "
-                         f"({total:.4g} kg·m²): no flywheel is needed",
-                         f"ротор і редуктор ({const:.4g} кг·м²) більші за момент інерції, потрібний для "
-                         f"δ = {delta:g} ({total:.4g} кг·м²): маховик не потрібен"))
+                         f"({total:.4g} kg·m²): no flywheel is needed, I_fl = 0",
+                         f"ротор і редуктор ({num(const, 'uk')} кг·м²) більші за момент інерції, потрібний для "
+                         f"δ = {num(delta, 'uk')} ({num(total, 'uk')} кг·м²): маховик не потрібен, I_мах = 0"))
+    if dr.motor.power_kW < dr.power_needed_kW:
+        warnings.append((f"the motor {dr.motor.name} ({dr.motor.power_kW:g} kW) is below the power rule "
+                         f"P = max M*_c·ω1/η = {dr.power_needed_kW:.4g} kW",
+                         f"двигун {dr.motor.name} ({num(dr.motor.power_kW, 'uk')} кВт) слабший, ніж вимагає "
+                         f"правило потужності P = M^*_{{с max}}·ω_1/η = {num(dr.power_needed_kW, 'uk')} кВт"))
     mean_moment = float(np.mean(mm.driving[:-1])) / (dr.ratio * dr.efficiency)
     if mean_moment > dr.motor.moment_rated:
         warnings.append((f"the motor {dr.motor.name} works above its rated moment on average "
                          f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} N·m): it will overheat",
                          f"двигун {dr.motor.name} у середньому працює з моментом, більшим за номінальний "
-                         f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} Н·м): він перегріватиметься"))
+                         f"({num(mean_moment, 'uk', 3)} > {num(dr.motor.moment_rated, 'uk', 3)} Н·м): "
+                         "він перегріватиметься"))
     return Dynamics(st, c, delta, wm, dr, total, motion, fm, mm, warnings)

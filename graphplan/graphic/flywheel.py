@@ -76,7 +76,9 @@ class Flywheel:
 
     @property
     def flywheel(self) -> float:
-        return self.total - self.dyn.constant
+        """I_fl = J − I_rotor·i² − I_reducer, or 0 where the construction's J is no larger than
+        rotor and reducer together (no flywheel is needed: never a negative moment of inertia)."""
+        return max(self.total - self.dyn.constant, 0.0)
 
     @property
     def approximate_total(self) -> float:
@@ -87,7 +89,7 @@ class Flywheel:
 
     @property
     def approximate(self) -> float:
-        return self.approximate_total - self.dyn.constant
+        return max(self.approximate_total - self.dyn.constant, 0.0)
 
     @property
     def merkalov_total(self) -> float:
@@ -99,7 +101,7 @@ class Flywheel:
 
     @property
     def merkalov(self) -> float:
-        return self.merkalov_total - self.dyn.constant
+        return max(self.merkalov_total - self.dyn.constant, 0.0)
 
     @property
     def driving(self) -> float:

@@ -214,6 +214,24 @@ def kern(prev: str, c: str, size: float) -> float:
     return 0.0 if gap >= ENOUGH else APART - gap
 
 
+TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl at half height or more
+
+
+def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
+    """The shift (mm, negative: to the left) of a subscript ``c`` (letters ``sub`` high) after the
+    letter ``prev``: after a letter open below on its right (P, Г, Т, F, 7) the index tucks in under
+    its bowl or bar, its ink starting 0.15 of the letter height inside the letter's box, as a
+    typesetter kerns it — set at the full advance it hangs apart, belonging to neither word."""
+    if prev not in TUCKED:
+        return 0.0
+    m = _metrics()
+    box, cb = m["boxes"].get(prev), m["boxes"].get(c)
+    if box is None or cb is None:
+        return 0.0
+    adv = m["advance"].get(prev, m["missing"])
+    return min(0.0, (box[2] * em(size) - 0.15 * size) - (adv * em(size) + cb[0] * em(sub)))
+
+
 @lru_cache(maxsize=1)
 def _glyph_boxes() -> dict[str, tuple[float, float, float, float] | None]:
     """Each character's ink box in ems, (x_min, y_min, x_max, y_max) from the baseline at its origin,
@@ -311,13 +329,18 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
     out = []
     x = 0.0
     start = 0.0
+    prev: tuple[str, float] = ("", size)
     for r in runs(text):
         s = size * SMALL if r.level else size
         if r.stacked:
             x0 = start
         else:
+            if r.level == -1 and prev[0] and r.text:
+                x += sub_kern(prev[0][-1], prev[1], r.text[0], s)     # an index beside a P, Г, Т
             x0 = start = x
         shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
+        if r.level == 0:
+            prev = (r.text, s)
         out.append((r, x0, s, shift))
         x = max(x, x0 + plain_width(r.text, s))
     return out

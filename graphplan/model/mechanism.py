@@ -16,11 +16,18 @@ FRAME = "0"
 
 @dataclass(frozen=True)
 class Guide:
-    """A straight guide (a slide's line) carried by a body, in that body's frame."""
+    """A straight guide (a slide's line) carried by a body, in that body's frame. ``titles``: how a
+    sheet in each language names it ((lang, text) pairs from the scene's ``title_uk``/``title_en``);
+    without one, its name."""
     name: str
     body: str
     through: complex
     angle: float  # rad, in the body's frame
+    titles: tuple[tuple[str, str], ...] = ()
+
+    def title(self, lang: str) -> str:
+        """The guide's name on a sheet in ``lang``."""
+        return dict(self.titles).get(lang, self.name)
 
 
 @dataclass(frozen=True)

@@ -222,10 +222,12 @@ class _Reader:
         return frame, guides
 
     def read_guide(self, raw: Any, key: str, name: str, body: str) -> Guide:
-        raw = self.table(raw, key, {"through", "angle_deg"})
+        raw = self.table(raw, key, {"through", "angle_deg", "title_uk", "title_en"})
         through = self.xy(raw.get("through", [0, 0]), f"{key}.through")
         angle = math.radians(self.number(raw.get("angle_deg", 0), f"{key}.angle_deg", bounds=B.ANGLE))
-        return Guide(name=name, body=body, through=through, angle=angle)
+        titles = tuple((lang, B.clean_text(raw[f"title_{lang}"])) for lang in ("uk", "en")
+                       if B.clean_text(raw.get(f"title_{lang}", "")))
+        return Guide(name=name, body=body, through=through, angle=angle, titles=titles)
 
     def read_points(self, raw: Any, key: str, length: float | None,
                     local: dict[str, complex]) -> None:

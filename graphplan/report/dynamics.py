@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from graphplan.exact.dynamics import crank_angle
+from graphplan.util.markup import plain
 
 
 def _clean(doc: Any) -> Any:
@@ -71,6 +72,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "work_resistance": c.work, "moment_driving": md, "moment_driving_graphical": f.driving,
         "positions": positions,
         "flywheel": {
+            "needed": dyn.needs_flywheel,
             "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
             "approximate": f.approximate, "approximate_error_pct": pct(f.approximate),
             "merkalov": f.merkalov, "merkalov_error_pct": pct(f.merkalov),
@@ -84,6 +86,7 @@ def dynamics_json(f) -> dict[str, Any]:
                   "omega_sync": m.omega_sync, "omega_rated": m.omega_rated, "moment_rated": m.moment_rated,
                   "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
                   "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
+                  "underpowered": dyn.underpowered,
                   "ratio": dr.ratio, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
                   "flywheel": dyn.motor_flywheel,
                   "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
@@ -97,6 +100,8 @@ WORDS = {
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
            "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
+           "turn": "φ — кут кривошипа від осі x; пов. — поворот від положення 0 у бік обертання кривошипа; "
+                   "dI*/dφ — похідна за цим поворотом",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
            "u": {"rotor": "I_рот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
@@ -105,6 +110,8 @@ WORDS = {
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant M_d*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
+           "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
+                   "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
            "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
            "u": {"rotor": "I_rotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
@@ -125,10 +132,13 @@ def dynamics_table(f, lang: str = "uk") -> str:
                f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
     out += ["", w["pos"]]
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
-    head = f"{'№':>3} {'φ, °':>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {gr:>9} {'ΔT':>9}"
+    turn = "пов., °" if lang == "uk" else "turn, °"
+    out.append(w["turn"])
+    head = (f"{'№':>3} {'φ, °':>7} {turn:>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {gr:>9} "
+            f"{'ΔT':>9}")
     out.append(head)
     for p in doc["positions"]:
-        out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
+        out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['turn_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
                    f"{p['moment_resistance']:9.3f} {p['moment_driving']:8.3f} {p['work_resistance']:9.3f} "
                    f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
     fw = doc["flywheel"]
@@ -145,11 +155,11 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
             f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
-            f"  P = max M*c·ω1/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
+            f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
             f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
             f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
     if f.dyn.warnings:
-        out += ["", w["warn"] + ":"] + [f"  {uk if lang == 'uk' else en}" for en, uk in f.dyn.warnings]
+        out += ["", w["warn"] + ":"] + [f"  {plain(uk) if lang == 'uk' else plain(en)}" for en, uk in f.dyn.warnings]
     text = "\n".join(out) + "\n"
     # the decimal comma of the Ukrainian tables (the rows above format with Python's point)
     return re.sub(r"(?<=\d)\.(?=\d)", ",", text) if lang == "uk" else text

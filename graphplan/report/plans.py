@@ -25,7 +25,10 @@ def ordered(plan: Plan) -> list[Entry]:
     return sorted(plan.entries.values(), key=key)
 
 
-def entry_json(e: Entry) -> dict[str, Any]:
+def entry_json(e: Entry, mu: float | None = None) -> dict[str, Any]:
+    """One entry: mm, value, analytic, error_pct; ω and ε add their sense and ``from_mm``, the
+    drawn length of the plan vector they are read from (v_BA for ω_AB, a^τ_BA for ε_AB) — the
+    length a short-vector rule judges them by."""
     out: dict[str, Any] = {}
     if e.mm is not None:
         out["mm"] = e.mm
@@ -34,16 +37,24 @@ def entry_json(e: Entry) -> dict[str, Any]:
     out["error_pct"] = e.error_pct
     if e.kind in ("omega", "epsilon"):
         out["sense"] = e.sense
+        if mu:
+            out["from_mm"] = e.basis / mu
     return out
 
 
 def position_json(plans: Plans, p: PositionPlans) -> dict[str, Any]:
-    doc: dict[str, Any] = {"index": p.index, "phi_deg": p.phi % 360.0, "mu_v": plans.mu_v,
-                           "velocity": {e.key: entry_json(e) for e in ordered(p.velocity)}}
+    """One position: its plans' entries, the crank's turn from position 0 (``turn_deg``, in the
+    crank's sense: the scene's convention), the warnings' texts and their angles by plan."""
+    st = plans.study
+    doc: dict[str, Any] = {"index": p.index, "phi_deg": p.phi % 360.0,
+                           "turn_deg": round(float(st.from_position0(p.phi % 360.0)), 9) % 360.0, "mu_v": plans.mu_v,
+                           "velocity": {e.key: entry_json(e, plans.mu_v) for e in ordered(p.velocity)}}
     if p.acceleration is not None:
         doc["mu_a"] = plans.mu_a
-        doc["acceleration"] = {e.key: entry_json(e) for e in ordered(p.acceleration)}
+        doc["acceleration"] = {e.key: entry_json(e, plans.mu_a) for e in ordered(p.acceleration)}
     doc["warnings"] = [w.text for w in p.warnings]
+    doc["warning_angles"] = [{"plan": w.plan, "group": w.group, "kind": w.kind, "angle_deg": w.angle}
+                             for w in p.warnings]
     return doc
 
 

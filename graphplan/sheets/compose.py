@@ -248,6 +248,18 @@ def notes_height(notes: Sequence[Sequence[str]], width: float) -> float:
         + NOTE_STEP
 
 
+def grown(measured: list[tuple[str, float, float]], drawn: Sequence[Sequence[tuple[str, float, float]]]) -> bool:
+    """Whether any table as ``drawn`` (per language: name, width, height) is larger than
+    ``measured``; ``measured`` takes the larger sizes (the next composition allows for them)."""
+    out = False
+    for per in drawn:
+        for k, (name, w, h) in enumerate(per):
+            if w > measured[k][1] + 1e-6 or h > measured[k][2] + 1e-6:
+                measured[k] = (name, max(w, measured[k][1]), max(h, measured[k][2]))
+                out = True
+    return out
+
+
 def lines_of(rec: Record) -> list[str]:
     """The text lines of a notes record, top to bottom."""
     return [p.text for p in sorted((p for p in rec.items if p.kind == "text"), key=lambda p: -p.points[0][1])]

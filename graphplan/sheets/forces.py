@@ -20,11 +20,12 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser, compose,
-                                      drawing_scale, field_of, keep_out, measured_twice, note_block, notes_height,
+                                      drawing_scale, field_of, grown, keep_out, measured_twice, note_block, notes_height,
                                       options_of, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import ONE_SHEET, TITLE, acceleration_table, fields, notes
 from graphplan.util.errors import GraphplanError
+from graphplan.sheets.compose import number
 from graphplan.util.words import fixed, force_symbol, num, unit, word
 
 POLYGON_MM = 150.0     # the largest force of the position drawn this long at size factor 1
@@ -49,16 +50,18 @@ def has_loads(st: Study) -> bool:
 
 
 def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
-    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε
-    (read off the acceleration plan where it has them), G = m·g, Φ = m·a_S and M_Φ = I_S·ε."""
+    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε, G = m·g,
+    Φ = m·a_S and M_Φ = −I_S·ε — one computation and one sign convention with the force plans, the
+    groups' tables, the lever and ``forces``: the inertia loads of the exact kinetostatics (``ks``;
+    ε and M_Φ + counter-clockwise); the plan's own a_S beside the exact ones is Table 2's business.
+    ``acc_doc`` is not read (kept for the callers)."""
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     mech = st.mech
     kin = ks.kin
-    rows = [[w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}",
-             "a_S, м/с²" if lang == "uk" else "a_S, m/s²", "ε, рад/с²" if lang == "uk" else "ε, rad/s²",
-             "G, Н" if lang == "uk" else "G, N", "Φ, Н" if lang == "uk" else "Φ, N",
-             "M_Φ, Н·м" if lang == "uk" else "M_Φ, N·m"]]
-    acc = (acc_doc or {}).get("acceleration", {})
+    rows = [[w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}", f"a_S, {unit('m/s²', lang)}",
+             f"ε, {unit('rad/s²', lang)}", f"G, {unit('N', lang)}", f"Φ, {unit('N', lang)}",
+             f"M_Φ, {unit('N·m', lang)}"]]
+    loads = {(ld.link, ld.kind): ld for ld in ks.loads}
     for name, link in mech.links.items():
         m, inertia = link.mass or 0.0, link.inertia or 0.0
         if not m and not inertia:
@@ -66,32 +69,43 @@ def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
         com = link.com or next(iter(link.local))
         body = kin.bodies[name]
         a_s = float(abs(body.at(link.local[com])[2][0]))
-        eps = float(abs(body.eps[0]))
-        graph_a = acc.get(com, {}).get("value")
-        graph_e = acc.get(f"epsilon_{name}", {}).get("value")
-        a_used = graph_a if graph_a is not None else a_s
-        e_used = abs(graph_e) if graph_e is not None else eps
-        rows.append([f"{link.number} ({com})", num(m, lang, 4), num(inertia, lang, 4), num(a_used, lang, 4),
-                     num(e_used, lang, 4), num(m * mech.g, lang, 4), num(m * a_used, lang, 4),
-                     num(inertia * e_used, lang, 4)])
-    return table(rows, [20.0, 14.0, 20.0, 18.0, 18.0, 16.0, 18.0, 18.0], row_h=6.0, size=2.5,
-                 title=w('inertia'))
+        eps = float(body.eps[0])
+        force = loads.get((name, "inertia"))
+        couple = loads.get((name, "couple"))
+        rows.append([f"{link.number} ({com})", number(m, 4, lang), number(inertia, 4, lang), number(a_s, 4, lang),
+                     number(eps, 4, lang), number(m * mech.g, 4, lang),
+                     number(float(abs(force.force[0])) if force else 0.0, 4, lang),
+                     number(float(couple.couple[0]) if couple else 0.0, 4, lang)])
+    rec = table(rows, [20.0, 14.0, 20.0, 18.0, 18.0, 16.0, 18.0, 18.0], row_h=6.0, size=2.5,
+                title=w('inertia'))
+    from graphplan.sheets.kinematics import footnoted
+    return footnoted(rec, [w('inertia note')])
+
+
+def force_position(st: Study, phi: float, lang: str) -> str:
+    """The force position as the scene assigns it: the crank's turn from position 0
+    (``positions.force_phi_deg``, in the crank's sense) with the crank angle from the x axis —
+    "φ = 200° від положення 0 (кут кривошипа 45,71°)"."""
+    turn = round(float(st.from_position0(phi)), 9) % 360.0
+    return word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
 
 
 SHORT_FORCE_MM = 10.0
 
 
 def small_forces(fp, lang: str = "uk") -> list[str]:
-    """Forces drawn shorter than 10 mm on their group's force plan, each with its drawn length and
-    its share of the plan's largest ("R34τ 4 мм, 2.4 %"): the sheet says which are short."""
+    """Forces drawn shorter than 10 mm on their group's force plan, each with its length as the
+    ruler reads it (the reactions' table's mm) and its share of the plan's largest ("R34τ 4 мм,
+    2.4 %"): the sheet says which are short."""
+    from graphplan.graphic.draftsman import measure
     out = []
     for gp in fp.groups:
         sides = [s for s in gp.sides if s.mm > 1e-9]
         if not sides:
             continue
         big = max(s.mm for s in sides)
-        out += [f"{force_symbol(s.name, lang)} {num(s.mm, lang, 2)} {unit('mm', lang)}, {fixed(100 * s.mm / big, lang, 1)} %"
-                for s in sides if s.mm < SHORT_FORCE_MM]
+        out += [f"{force_symbol(s.name, lang)} {num(measure(s.mm, fp.precision), lang, 2)} {unit('mm', lang)}, "
+                f"{fixed(100 * s.mm / big, lang, 1)} %" for s in sides if s.mm < SHORT_FORCE_MM]
     return list(dict.fromkeys(out))
 
 
@@ -182,7 +196,7 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
     from graphplan.graphic.scales import format_scale
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     names = dr.names()
-    at = f"{w('at')} {fixed(dr.phi, lang, 2)}°"
+    at = force_position(dr.st, dr.phi, lang)
     out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
            "groups": [(_caption(n, lang), format_scale('mu_l', mu['groups'], lang)) for n in names["groups"]],
            "forces": [(_caption(n, lang), "") for n in names["forces"]],     # μF under the plan itself
@@ -232,7 +246,7 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
     small = small_forces(fp, lang)
-    lines = [f"{w('at')} {fixed(dr.phi, lang, 2)}°"] + ([w('small') + "; ".join(small)] if small else [])
+    lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     if mu["groups"] != mu["scheme"]:
         scales.append(format_scale("mu_l", mu["groups"], lang) + f" ({w('group').lower()})")
@@ -287,8 +301,11 @@ def _wh(rec: Record) -> tuple[float, float]:
     return b[2] - b[0], b[3] - b[1]
 
 
-def _column(f: Form, tables: list[Leaf], parts: int, height) -> tuple[Leaf, list[list[Leaf]], float]:
-    groups = split(tables, parts)
+def _column(f: Form, tables: list[Leaf], parts: int, height, counts: tuple[int, ...] = ()
+            ) -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables' column: ``parts`` columns of tables (as ``split`` finds them, or ``counts`` tables
+    each as the plan found them), the notes under them, the title block's height kept free."""
+    groups = split(tables, parts, counts=counts)
     cw, ch = column_size(groups)
     width = max(cw, TITLE)
     foot = keep_out(f)[3] - field_of(f)[1]
@@ -321,6 +338,7 @@ class Plan:
     hcols: int = 1
     parts: int = 1
     sheets: int = 1
+    counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -357,7 +375,8 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
             score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
                      -SHAPES.index(shape))
             _, hc, parts = arranged(mu, shape)
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1))
+            counts = tuple(len(g) for g in split(tabs, parts))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts))
             if best is None or cand[0] > best[0]:
                 best = cand
     return best[1] if best else None
@@ -401,7 +420,15 @@ def _set(nat: Natural, f: Form) -> Plan:
 
 
 def _checked(dr: ForceDrafter, nat: Natural, p: Plan) -> bool:
-    ok = True
+    """Whether the drawings and tables at the plan's scales are no larger than measured; where one
+    is, its size is taken into ``nat`` for the next trial."""
+    from graphplan.util.words import LANGS
+    ok = not grown(nat.tables[p.tables], [[(n, *_wh(r)) for n, r in _tables(dr, p.mu, lang, p.tables)]
+                                          for lang in LANGS])
+    drawn = [_notes_lines(dr, p.mu, lang) for lang in LANGS]
+    if notes_height(drawn, TITLE) > notes_height(nat.notes, TITLE) + 1e-6:
+        nat.notes += drawn
+        ok = False
     for fam, recs in dr.drawings(p.mu).items():
         family = nat.families[fam]
         for i, r in enumerate(recs):
@@ -454,7 +481,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     note_lines = _notes_lines(dr, p.mu, lang)
     region = field_of(f)
     if p.sheets == 1:
-        C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1])
+        C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
         for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C), region):
             if leaf is C:

@@ -52,21 +52,27 @@ def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor:
         rec.label((x, y + 2.5 - 0.35 * size if row else y), text, size=size, anchor=anchor, layer="frame")
 
 
-def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5)) -> float:
-    """The largest GOST letter height (2.5 … 7 mm) at which ``text``'s ink fits ``width`` mm (the
-    cell less a half millimetre each side) clear of the rules."""
+SLACK = 1.3     # a field's text measured this much wider than osifont sets it: it stays inside its
+                # cell where a viewer letters it with the fallback font (DejaVu Sans: 18–27 % wider)
+
+
+def _fit(text: str, width: float, sizes=(7.0, 5.0, 3.5, 2.5), slack: float = SLACK) -> float:
+    """The largest GOST letter height (2.5 … 7 mm) at which ``text``'s ink, ``slack`` times wider
+    (the title block's short words of the form: 1), fits ``width`` mm (the cell less a half millimetre each side) clear of the rules."""
     from graphplan.graphic.record import Primitive
     for s in sizes:
         b = Primitive("text", ((0.0, 0.0),), text=text, size=s).ink()
-        if b[2] - b[0] <= width - 0.3:
+        if slack * (b[2] - b[0]) <= width - 0.3:
             return s
     return sizes[-1]
 
 
 def wrap(text: str, width: float, size: float) -> list[str]:
-    """Break ``text`` into lines no wider than ``width`` mm at letter height ``size``."""
+    """Break ``text`` into lines no wider than ``width`` mm at letter height ``size`` (at spaces
+    outside the markup's groups: ``M^*_{с max}`` is never broken)."""
+    from graphplan.util.markup import split
     lines: list[str] = []
-    for word in text.split():
+    for word in split(text):
         if lines and text_width(lines[-1] + " " + word, size) <= width:
             lines[-1] += " " + word
         else:
@@ -102,13 +108,13 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
             _line(rec, (x, Y(0)), (x, Y(55)), True)
     heads = [cap["rev"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
     for (a, b), head in zip(zip(cols, cols[1:]), heads):
-        _text(rec, X((a + b) / 2), Y(30), head, size=_fit(head, b - a - 1, (2.5, 2.0)), row=True)
+        _text(rec, X((a + b) / 2), Y(30), head, size=_fit(head, b - a - 1, (2.5, 2.0), 1.0), row=True)
     roles = [cap["drawn"], cap["checked"], cap["tech"], "", cap["norm"], cap["approved"]]
     names = [fields.get("student", ""), fields.get("teacher", ""), "", "", "", ""]
     for k, (role, name) in enumerate(zip(roles, names)):
         y = Y(30 - 5 * (k + 1))
-        _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0)), anchor="start", row=True)
-        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0)), anchor="start", row=True)
+        _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0), 1.0), anchor="start", row=True)
+        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0), 1.0), anchor="start", row=True)
     # right part: designation 120×15, name 70×25 over 70×15, the 50 mm column
     _line(rec, (X(65), Y(40)), (X(185), Y(40)), True)
     _line(rec, (X(135), Y(0)), (X(135), Y(40)), True)
@@ -122,13 +128,13 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     _line(rec, (X(155), Y(15)), (X(155), Y(20)), True)   # Аркуш 20 | Аркушів 30
     _text(rec, X(142.5), Y(35), cap["letter"], row=True)
     _text(rec, X(158.5), Y(35), cap["mass"], row=True)
-    _text(rec, X(176), Y(35), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0)), row=True)
+    _text(rec, X(176), Y(35), cap["scale"], size=_fit(cap["scale"], 17, (2.5, 2.0), 1.0), row=True)
     _text(rec, X(137), Y(15), f"{cap['sheet_no']} {fields.get('sheet', '1')}", anchor="start", row=True)
     _text(rec, X(157), Y(15), f"{cap['sheets']} {fields.get('sheets', '1')}", anchor="start", row=True)
     _text(rec, X(142.5), Y(26), fields.get("letter", _word("tb study letter", lang)), size=3.5)
     _text(rec, X(158.5), Y(26), fields.get("mass", ""), size=3.5)
     scale = fields.get("scale", "")
-    _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5)))
+    _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5), 1.0))
     designation = fields.get("designation", "")
     _text(rec, X(125), Y(45.5), designation, size=_fit(designation, 116, (7.0, 5.0, 3.5)))
     _block_text(rec, fields.get("title", ""), X(66), Y(15), 68, 25, (5.0, 3.5, 2.5))
@@ -138,12 +144,14 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
 
 
 def _block_text(rec: Record, text: str, x: float, y: float, w: float, h: float, sizes) -> None:
-    """Centred, wrapped text in a w×h field whose bottom-left is (x, y)."""
+    """Centred, wrapped text in a w×h field whose bottom-left is (x, y): the largest of ``sizes``
+    (GOST heights) at which its lines, ``SLACK`` wider than osifont sets them, fit the field; at the
+    smallest, lines wrapped to the width and the line step tightened so none leaves the field."""
     if not text:
         return
     for size in sizes:
-        lines = wrap(text, w, size)
-        if len(lines) * line_pitch(size) <= h and all(text_width(s, size) <= w for s in lines):
+        lines = wrap(text, w / SLACK, size)
+        if len(lines) * line_pitch(size) <= h and all(SLACK * text_width(s, size) <= w for s in lines):
             break
     step = line_pitch(size)
     top = y + h / 2 + step * len(lines) / 2

@@ -20,12 +20,12 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
 from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser,
-                                      compose, drawing_scale, field_of, finer, lines_of, measured, note_block, notes_height,
+                                      compose, drawing_scale, field_of, finer, grown, lines_of, measured, note_block, notes_height,
                                       number, options_of, percent, reading, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
-from graphplan.util.words import fixed, num, pair_kind, unit, word
+from graphplan.util.words import column, fixed, num, pair_kind, unit, word
 
 SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
 
@@ -71,46 +71,125 @@ def velocity_columns(doc: dict, precision: float) -> list[str]:
 
 
 def _cell(e: dict | None, precision: float, lang: str = "en") -> str:
+    """A table's graphical value: the plan's reading (a vector read as 0 mm — a dead centre's
+    velocity — is the number 0, as the terminal prints it); ω and ε signed by their sense
+    (+ counter-clockwise, the tables' headers say so); "—" only where there is no entry."""
     if not e:
         return "—"
-    return reading(e.get("value"), e.get("mm"), precision, lang=lang)
+    value = e.get("value")
+    if value is not None and e.get("sense") == "cw":
+        value = -value
+    return number(value, lang=lang)
+
+
+LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a cell past it is marked
+MARK = "*"
+
+
+def _length(e: dict) -> float | None:
+    """The drawn length an entry is read from: its own mm, or for ω, ε the relative vector's."""
+    return e.get("mm") if e.get("mm") is not None else e.get("from_mm")
+
+
+def why(e: dict, sym: str, pos: dict, plan: str, lang: str) -> str:
+    """Why an entry misses the lab's 5 %: a vector drawn shorter than ``SHORT_MM`` (its ±½ division
+    is a large share of it), direction lines crossing at a small angle on its plan (the plan's
+    warnings), else the ruler's precision."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    mm = _length(e)
+    if mm is not None and mm < SHORT_MM:
+        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=num(mm, lang, 3))
+    angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
+    if angles:
+        return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))
+    return w('why_ruler', sym=sym)
+
+
+def footnoted(rec: Record, notes: list[str], size: float = 2.5) -> Record:
+    """A table with its footnotes under it (wrapped to the table's width): what its marks mean."""
+    if not notes:
+        return rec
+    from graphplan.sheets.form import wrap
+    from graphplan.graphic.record import line_pitch
+    x0, y0, x1, _ = rec.bounds()
+    y = y0 - 2.0 - size                        # the first line's capitals 2 mm under the table's rule
+    for note in notes:
+        for line in wrap(note, max(x1 - x0, 80.0), size):
+            rec.label((x0, y), line, size=size, layer="tables")
+            y -= line_pitch(size)
+    return rec
 
 
 def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
     """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3, with
-    the row's largest error."""
+    the row's largest error; ω signed (+ counter-clockwise); a row's error past the lab's 5 % is
+    marked and its footnote says which vector and why."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     keys = velocity_columns(doc, precision)
-    head = ["№", "φ, °"] + [_symbol(k, "v") for k in keys] + ["δ_max, %"]
+    head = ["№", "φ, °"] + [_symbol(k, "v") for k in keys] + ["δ_{max}, %"]
     rows = [head]
+    notes = []
     for pos in doc["positions"]:
+        err = row_error(pos, keys)
+        cell = percent(err, lang=lang)
+        if err is not None and err > LAB_LIMIT:
+            cell += MARK
+            key = worst(pos, keys)
+            notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v"), pos,
+                                                                "velocity", lang)))
         rows.append([str(pos["index"]), fixed(pos['phi_deg'], lang, 1)]
-                    + [_cell(pos["velocity"].get(k), precision, lang) for k in keys]
-                    + [percent(row_error(pos, keys), lang=lang)])
+                    + [_cell(pos["velocity"].get(k), precision, lang) for k in keys] + [cell])
     widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
-    return table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table'))
+    rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
+    return footnoted(rec, [w('mark_head')] + notes if notes else [])
+
+
+def worst(pos: dict, keys: list[str] | None = None, kind: str = "velocity") -> str:
+    """The key of a position's largest |δ| (velocities, or ``kind``)."""
+    errs = {k: abs(e["error_pct"]) for k, e in pos[kind].items() if (keys is None or k in keys) and judged(e)}
+    return max(errs, key=errs.get)
 
 
 def row_error(pos: dict, keys: list[str] | None = None, shortest: float = 0.0) -> float | None:
-    """The largest |δ| of a position's velocities (of vectors at least ``shortest`` mm long)."""
+    """The largest |δ| of a position's velocities (of vectors at least ``shortest`` mm long; ω by
+    the relative velocity it is read from)."""
     errs = [abs(e["error_pct"]) for k, e in pos["velocity"].items()
-            if (keys is None or k in keys) and e.get("error_pct") is not None
-            and (e.get("mm") is None or e["mm"] >= shortest)]
+            if (keys is None or k in keys) and judged(e) and (_length(e) is None or _length(e) >= shortest)]
     return max(errs) if errs else None
 
 
+def judged(e: dict) -> bool:
+    """Whether an entry's δ means anything: it has one, and the ruler read the vector (a vector
+    read as 0 mm, shorter than half a division, has no percent error — "—")."""
+    return e.get("error_pct") is not None and e.get("value") != 0
+
+
 def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> Record:
-    """Table 2.n: one acceleration plan: drawn mm, graphical value, analytic value and δ, %."""
+    """Table 2.n: one acceleration plan: drawn mm, graphical value, analytic value and δ, %; ε
+    signed (+ counter-clockwise); a vector read as 0 mm is 0; an analytic value below its column's
+    resolution is 0; an error past the lab's 5 % is marked, its footnote says why. The force
+    position (no index) is named by the crank's turn from position 0, as the scene gives it."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     rows = [[w('quantity'), unit("mm", lang), w('graphical'), w('analytic'), w('error')]]
-    for key, e in pos.get("acceleration", {}).items():
-        short = e.get("mm") is not None and precision > 0 and abs(e["mm"]) < precision
-        rows.append([_symbol(key, "a"), "—" if e.get("mm") is None or short else number(e["mm"], 4, lang=lang),
-                     reading(e.get("value"), e.get("mm"), precision, lang=lang), number(e.get("analytic"), lang=lang),
-                     "—" if short else percent(e.get("error_pct"), lang=lang)])
-    return table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
-                 title=w('acc_table', n=n, i=pos["index"] if pos["index"] is not None
-                                             else f"φ = {fixed(pos['phi_deg'], lang, 1)}°"))
+    items = list(pos.get("acceleration", {}).items())
+    exact = column([(-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None
+                    else None for _, e in items], lang)
+    notes = []
+    for (key, e), analytic in zip(items, exact):
+        cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
+        if judged(e) and abs(e["error_pct"]) > LAB_LIMIT:
+            cell += MARK
+            notes.append(w('mark_cell', why=why(e, _symbol(key, "a"), pos, "acceleration", lang)))
+        rows.append([_symbol(key, "a"), "—" if e.get("mm") is None else number(e["mm"], 4, lang=lang),
+                     _cell(e, precision, lang), analytic, cell])
+    if pos["index"] is not None:
+        where = pos["index"]
+    else:
+        where = w('turn_at', turn=num(pos.get("turn_deg", pos["phi_deg"]), lang, 4),
+                  phi=fixed(pos['phi_deg'], lang, 1))
+    rec = table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
+                title=w('acc_table_signed', n=n, i=where))
+    return footnoted(rec, [w('mark_head')] + notes if notes else [])
 
 
 def link_lengths(st: Study) -> list[tuple[str, float]]:
@@ -143,7 +222,12 @@ def dimensions_table(st: Study, mu_l: float, lang: str) -> Record:
 
 
 def lab_table(diag, lang: str) -> Record | None:
-    """Seed 002's table: s, v, a of the output at the lab's given positions — drawn, graphical, exact."""
+    """Seed 002's table: s, v, a of the output at the lab's given positions — the diagrams'
+    ordinates (mm), the graphical and the exact values' errors — one sign convention (the values'
+    along the guide, the ordinates too: a mirrored diagram's ordinate is written with the value's
+    sign) and the units in the header; an error past the lab's 5 % is marked, its footnote says why
+    (the chords' own error of coarse divisions, a short ordinate, or the ruler)."""
+    import numpy as np
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     chosen = [k for k in range(len(diag.position)) if diag.position[k] in diag.chosen]
     if not chosen:
@@ -151,16 +235,41 @@ def lab_table(diag, lang: str) -> Record | None:
     vals = diag.values()
     s_, v_, a_ = diag.symbols
     mm = unit("mm", lang)
-    rows = [[w('no'), "φ, °", f"{s_}, {mm}", s_, f"{v_}, {mm}", v_, f"{v_} {w('error')}",
-             f"{a_}, {mm}", a_, f"{a_} {w('error')}"]]
+    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
+    us, uv, ua = (unit(u, lang) for u in units)
+    rows = [[w('no'), "φ, °", f"{s_}, {mm}", f"{s_}, {us}", f"{v_}, {mm}", f"{v_}, {uv}", f"δ_{v_}, %",
+             f"{a_}, {mm}", f"{a_}, {ua}", f"δ_{a_}, %"]]
     ev, ea = diag.errors_pct("v_at"), diag.errors_pct("a_at")
+    own = {"v_at": diag.errors_pct("v_at", diag.exact), "a_at": diag.errors_pct("a_at", diag.exact)}
+    r, k_ = diag.drawn, diag.sign
+    notes = []
+
+    def pct(key: str, errs, k: int, ordinate: float, sym: str) -> str:
+        e = None if not np.isfinite(errs[k]) else float(errs[k])
+        cell = percent(e, lang=lang)
+        if e is not None and abs(e) > LAB_LIMIT:
+            o = float(own[key][k])
+            if np.isfinite(o) and abs(o) > LAB_LIMIT:
+                reason = w('why_chords', sym=sym, e=fixed(o, lang, 1).replace("-", "−"), n=diag.divisions)
+            elif abs(ordinate) < SHORT_MM:
+                reason = w('why_ordinate', sym=sym, mm=num(abs(ordinate), lang, 3))
+            else:
+                reason = w('why_ruler', sym=sym)
+            notes.append(w('mark_row', n=diag.position[k], why=reason))
+            cell += MARK
+        return cell
+
     for k in chosen:
-        r = diag.drawn
-        rows.append([str(diag.position[k]), fixed(diag.phi[k], lang, 1), number(r.s[k], 3, lang=lang), number(vals["s"][k], lang=lang),
-                     number(r.v_at[k], 3, lang=lang), number(vals["v_at"][k], lang=lang), percent(ev[k], lang=lang),
-                     number(r.a_at[k], 3, lang=lang), number(vals["a_at"][k], lang=lang), percent(ea[k], lang=lang)])
-    return table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 16.0, 14.0], row_h=6.0, size=2.5,
-                 title=w('lab'))
+        rows.append([str(diag.position[k]), fixed(diag.phi[k], lang, 1),
+                     number(k_ * r.s[k], 3, lang=lang), number(vals["s"][k], lang=lang),
+                     number(k_ * r.v_at[k], 3, lang=lang), number(vals["v_at"][k], lang=lang),
+                     pct("v_at", ev, k, r.v_at[k], v_),
+                     number(k_ * r.a_at[k], 3, lang=lang), number(vals["a_at"][k], lang=lang),
+                     pct("a_at", ea, k, r.a_at[k], a_)])
+    rec = table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 18.0, 14.0], row_h=6.0, size=2.5,
+                title=w('lab'))
+    said = ([w('mark_head')] + notes if notes else []) + ([w('lab_mirrored')] if k_ < 0 else [])
+    return footnoted(rec, said)
 
 
 def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
@@ -179,13 +288,17 @@ def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
 
 def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
            subtitle: str | None = None) -> dict[str, str]:
-    """The title block's fields from the scene's title and [sheet] table."""
+    """The title block's fields from the scene's title and [sheet] table: the organisation's field
+    carries the organisation and the student's group ("НУБіП України, гр. МБ-21")."""
     meta = st.mech.task.meta
     title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
         meta.get("title", st.mech.title)
+    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
+    if group:
+        org = ", ".join(x for x in (org, word("kin group", lang, g=group)) if x)
     return {"designation": escape(meta.get("designation", "")), "title": escape(title),
             "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
-            "organisation": escape(meta.get("sheet.organisation", meta.get("sheet.group", ""))),
+            "organisation": escape(org),
             "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),
             "subtitle": subtitle or word("kin subtitle", lang)}
 
@@ -201,15 +314,15 @@ def sign_note(st: Study, diag, lang: str) -> str:
         slider = next(link for link in st.mech.links.values()
                       if link.slides_on is not None and next(iter(link.local)) == out.name)
         guide = st.mech.guides[slider.slides_on]
-        said = w('signs', guide=f"{escape(slider.slides_on)} ({num(math.degrees(guide.angle) % 360, lang)}°)")
+        said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
     else:
         said = w('signs_link', link=escape(out.name))
     return said + (w('flipped') if diag.sign < 0 else "")
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
-    """Every |δ| the tables print (velocities; accelerations read longer than the ruler's division),
-    of vectors at least ``shortest`` mm long."""
+    """Every |δ| the tables 1 and 2 print (velocities; accelerations the ruler read), of vectors at
+    least ``shortest`` mm long — ω and ε by the relative vector they are read from."""
     out = []
     keys = velocity_columns(doc, precision)
     for pos in doc["positions"]:
@@ -217,8 +330,8 @@ def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
         if e is not None:
             out.append(e)
         for a in pos.get("acceleration", {}).values():
-            mm = a.get("mm")
-            if a.get("error_pct") is None or (mm is not None and (mm < precision or mm < shortest)):
+            mm = _length(a)
+            if not judged(a) or (mm is not None and (mm < precision or mm < shortest)):
                 continue
             out.append(abs(a["error_pct"]))
     return out
@@ -477,16 +590,19 @@ class Plan:
     acols: int = 1
     parts: int = 1
     sheets: int = 1
+    counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
 
 
-def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height) -> tuple[Leaf, list[list[Leaf]], float]:
-    """The tables in ``parts`` columns with the notes under them and the title block's room at the
-    foot, as one leaf for the composition; its table groups and its width."""
+def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
+                ) -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables in ``parts`` columns (``counts`` tables each, where the plan found them) with the
+    notes under them and the title block's room at the foot, as one leaf for the composition; its
+    table groups and its width."""
     from graphplan.sheets.compose import keep_out
-    groups = split(tables, parts)
+    groups = split(tables, parts, counts=counts)
     cw, ch = column_size(groups)
     width = max(cw, TITLE)
     foot = keep_out(f)[3] - field_of(f)[1]
@@ -546,7 +662,8 @@ def _one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
             score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
                      -SHAPES.index(shape))
             _, vc, ac, parts = arranged(mu, shape, best_fill=True)
-            cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1))
+            counts = tuple(len(g) for g in split(tabs, parts))
+            cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1, counts))
             if best is None or cand[0] > best[0]:
                 best = cand
     return best[1] if best else None
@@ -643,8 +760,17 @@ def _set(dr: Drafter, nat: Natural, f: Form) -> Plan:
 
 def _checked(dr: Drafter, nat: Natural, p: Plan) -> bool:
     """Whether the drawings at the plan's scales are no larger than the arithmetic assumed; where one
-    is, ``nat`` is corrected (the next choice allows for it)."""
-    ok = True
+    is, ``nat`` is corrected (the next choice allows for it). So are the tables and the notes
+    (their millimetres and scales are the plan's)."""
+    from graphplan.util.words import LANGS
+    plans = dr.plans(p.mu)
+    prec = dr.opts.precision
+    ok = not grown(nat.tables[p.tables], [[(n, *_size(r)) for n, r in _tables(
+        dr.st, plans, dr.diagrams(p.diagrams, lang), lang, prec, p.tables)] for lang in LANGS])
+    drawn = [_notes_lines(dr.st, plans, dr.diagrams(p.diagrams, lang), lang, prec) for lang in LANGS]
+    if notes_height(drawn, TITLE) > notes_height(nat.notes, TITLE) + 1e-6:
+        nat.notes += drawn
+        ok = False
     for fam, recs in dr.records(p.mu).items():
         family = nat.families[fam]
         for i, r in enumerate(recs):
@@ -730,7 +856,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     pages: list[list[Placed]]
     if p.sheets == 1:
         C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
-                                       - note_block(d["notes"], w).bounds()[1])
+                                       - note_block(d["notes"], w).bounds()[1], p.counts)
         tree = _tree(p.shape, P, D, Grid(V, p.vcols) if V else None, Grid(A, p.acols) if A else None, C)
         items, col_box = [], None
         for leaf, b in arrange(tree, region):

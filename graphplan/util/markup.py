@@ -2,7 +2,8 @@
 
 ``a^τ_BA`` is a with τ above and BA below (stacked, as the lab writes it); ``p_v``, ``μ_l``,
 ``M_зр``, ``R^n_34``, ``W = 3n − 2p_5 − p_4``. After ``_`` (subscript) or ``^`` (superscript)
-comes either a ``{group}`` or a run of letters and digits; ``\\_``, ``\\^``, ``\\{``, ``\\}`` and
+comes either a ``{group}``, a run of letters and digits or a single ``*`` (``M^*_с``, the reduced
+quantity's star); ``\\_``, ``\\^``, ``\\{``, ``\\}`` and
 ``\\\\`` are the characters themselves (``escape`` makes any name from a scene literal). A
 superscript directly followed by a subscript (or the other way round) is stacked over it.
 
@@ -61,6 +62,8 @@ def runs(text: str) -> list[Run]:
                     i += 1
                     continue
                 body, i = text[i + 2:end], end + 1
+            elif text[i + 1] == "*":            # M^*_с: the reduced quantity's star
+                body, i = "*", i + 2
             elif _word_char(text[i + 1]):
                 j = i + 1
                 while j < n and _word_char(text[j]):
@@ -94,12 +97,13 @@ def is_plain(text: str) -> bool:
 
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-_SUP = str.maketrans("0123456789nk-", "⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵏ⁻")
+_SUP = str.maketrans("0123456789nk-*", "⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵏ⁻*")
 
 
 def plain(text: str) -> str:
-    """The text for a terminal: digits and n, k as Unicode sub-/superscripts (p₅, aⁿ), the rest
-    written with _ and ^ (a^τ_BA, M_зр); braces and escapes gone."""
+    """The text for a terminal: digits and n, k as Unicode sub-/superscripts (p₅, aⁿ), a
+    superscript star in line (M*_с), the rest written with _ and ^ (a^τ_BA, M_зр); braces and
+    escapes gone."""
     if is_plain(text):
         return text
     parts = []
@@ -109,7 +113,7 @@ def plain(text: str) -> str:
         elif r.level < 0:
             parts.append(r.text.translate(_SUB) if r.text.isdigit() else "_" + r.text)
         else:
-            ok = all(c in "0123456789nk-" for c in r.text)
+            ok = all(c in "0123456789nk-*" for c in r.text)
             parts.append(r.text.translate(_SUP) if ok else "^" + r.text)
     return "".join(parts)
 
@@ -117,3 +121,24 @@ def plain(text: str) -> str:
 def flat(text: str) -> str:
     """The characters that are drawn, in order (for widths and searching)."""
     return "".join(r.text for r in runs(text)) if not is_plain(text) else text
+
+
+def split(text: str) -> list[str]:
+    """The text's words: split at spaces outside ``{groups}`` (``M^*_{с max}`` stays one word) and
+    not at a no-break space, for wrapping a line of markup without breaking a group."""
+    out, cur, depth = [], [], 0
+    for i, c in enumerate(text):
+        escaped = i > 0 and text[i - 1] == "\\"
+        if c == "{" and not escaped:
+            depth += 1
+        elif c == "}" and not escaped and depth:
+            depth -= 1
+        if c.isspace() and c != "\u00a0" and depth == 0:      # a no-break space keeps "гр. МБ-21" whole
+            if cur:
+                out.append("".join(cur))
+                cur = []
+            continue
+        cur.append(c)
+    if cur:
+        out.append("".join(cur))
+    return out

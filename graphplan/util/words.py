@@ -119,6 +119,22 @@ def num(v: float | None, lang: str = "en", digits: int = DIGITS) -> str:
     return _comma("0" if text in ("-0", "") else text, lang)
 
 
+def resolution(values, digits: int = DIGITS) -> float:
+    """A column's resolution: one unit of the (``digits`` + 1)-th significant figure of its largest
+    |value| (a column led by 37,19 resolves 0,001). Below it a value is rounding noise of the
+    computation (4,8·10⁻¹² beside 37,19), not a number a reader can use: the column prints 0."""
+    big = max((abs(float(v)) for v in values if v is not None and math.isfinite(float(v))), default=0.0)
+    return 10.0 ** (math.floor(math.log10(big)) - digits) if big > 0 else 0.0
+
+
+def column(values, lang: str = "en", digits: int = DIGITS) -> list[str]:
+    """A table's column of values (``num``, a true minus), each below the column's ``resolution``
+    written 0."""
+    res = resolution(values, digits)
+    return [num(0.0 if v is not None and math.isfinite(float(v)) and abs(float(v)) < res else v,
+                lang, digits).replace("-", "−") for v in values]
+
+
 def fixed(v: float | None, lang: str = "en", decimals: int = 1, plus: bool = False) -> str:
     """A value with a fixed count of decimals (angles, drawn millimetres, percents); ``plus``
     writes the sign of positive values too; "—" for none."""
@@ -171,7 +187,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs moment": ('Зрівноважувальний момент за оберт', 'Balancing moment over a turn'),
     "fs hodograph": ('Годограф реакції', 'Hodograph of reaction'),
     "fs subtitle": ('Силовий аналіз', 'Force analysis'),
-    "fs at": ('φ =', 'φ ='),
+    "fs at": ('кут кривошипа φ =', 'crank angle φ ='),
     "fs acceleration": ('План прискорень', 'Acceleration plan'),
     "fs position": ('положення силового розрахунку', 'position of the force analysis'),
     "fs inertia": ('Таблиця 5. Маси, моменти інерції, сили та моменти сил інерції', 'Table 5. Masses, moments of inertia, inertia forces and moments'),
@@ -197,7 +213,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin scales": ('Масштабні коефіцієнти', 'Scale coefficients'),
     "kin precision": ('Точність креслення', 'Drafting precision'),
     "kin forces": ('Силовий аналіз', 'Force analysis'),
-    "kin max_error": ('Найбільша похибка в таблицях', 'Largest error in the tables'),
+    "kin max_error": ('Найбільша похибка в таблицях 1, 2', 'Largest error in tables 1, 2'),
     "kin max_error_20": ('векторів від 20 мм', 'vectors from 20 mm'),
     "kin subtitle": ('Кінематичний аналіз', 'Kinematic analysis'),
     "kin dims": ('Таблиця 3. Розміри ланок', 'Table 3. Dimensions of the links'),
@@ -206,7 +222,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця 4. s, v, a у заданих положеннях', 'Table 4. s, v, a at the given positions'),
     "kin no": ('№', 'No.'),
-    "kin dash": ('— : коротше за поділку лінійки', '— : shorter than a ruler division'),
+    "kin dash": ('— : немає (мм для ε; δ там, де вектор коротший за півподілки лінійки або точне значення ≈ 0)',
+                 '— : none (mm of ε; δ where a vector is under half a ruler division or the exact value is ≈ 0)'),
     "kin signs": ('Знаки s, v, a (таблиці, точний аналіз, ключі): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, analyze, keys): + along the guide {guide}'),
     "kin flipped": ('; діаграми s, v, a побудовано дзеркально (вгору −s)', '; the s, v, a diagrams are drawn mirrored (up = −s)'),
     "kin signs_link": ('Знаки φ, ω, ε ланки {link} (таблиці, точний аналіз, ключі): + проти годинникової стрілки', 'Signs of φ, ω, ε of link {link} (tables, analyze, keys): + counter-clockwise'),
@@ -456,6 +473,40 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade variant": ("  варіант {v}: зараховано {passed}/{total} ({rate})", "  variant {v}: {passed}/{total} passed ({rate})"),
     "grade variant unknown": (", не оцінено {n}", ", {n} not graded"),
     "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
+    # issue 24 (one set of numbers, the lab's notation, every check said on the sheet)
+    "kin vel_table_signed": ("Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)",
+                             "Table 1. Velocities, m/s; ω, rad/s (+ counter-clockwise)"),
+    "kin acc_table_signed": ("Таблиця 2.{n}. Прискорення, м/с²; ε, рад/с² (+ проти год. стрілки), положення {i}",
+                             "Table 2.{n}. Accelerations, m/s²; ε, rad/s² (+ counter-clockwise), position {i}"),
+    "kin turn_at": ("φ = {turn}° від положення 0", "φ = {turn}° from position 0"),
+    "kin why_short": ("{sym}: короткий вектор ({mm} мм)", "{sym}: a short vector ({mm} mm)"),
+    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм)", "{sym}: read from a short vector ({mm} mm)"),
+    "kin why_angle": ("{sym}: напрямні лінії перетинаються під малим кутом ({angle}°)",
+                      "{sym}: the direction lines cross at a small angle ({angle}°)"),
+    "kin why_ruler": ("{sym}: точність лінійки", "{sym}: the ruler's precision"),
+    "kin why_chords": ("{sym}: крупні поділки — хорди самі дають {e} % ({n} поділок)",
+                       "{sym}: coarse divisions — the chords alone miss by {e} % ({n} divisions)"),
+    "kin why_ordinate": ("{sym}: коротка ордината ({mm} мм)", "{sym}: a short ordinate ({mm} mm)"),
+    "kin mark_head": ("* — похибка понад 5 % (межа лабораторної роботи):", "* — an error over 5 % (the lab's limit):"),
+    "kin mark_row": ("положення {n}: {why}", "position {n}: {why}"),
+    "kin mark_cell": ("{why}", "{why}"),
+    "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
+                         "The ordinates, mm, carry the value's sign along the guide (the diagrams are drawn mirrored)"),
+    "kin group": ("гр.\u00a0{g}", "group\u00a0{g}"),
+    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S і M_Φ = −I_S·ε діють у планах сил "
+                        "і на важелі; ε, M_Φ: + проти год. стрілки",
+                        "a_S, ε from the exact analysis; the same Φ = m·a_S and M_Φ = −I_S·ε act on the force "
+                        "plans and the lever; ε, M_Φ: + counter-clockwise"),
+    "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}°)",
+                    "φ = {turn}° from position 0 (crank angle {phi}°)"),
+    "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
+    "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
+                     "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
+    "fs why pa": ("{sym}: короткий відрізок pa на важелі ({mm} мм)", "{sym}: a short pa on the lever ({mm} mm)"),
+    "fs why arms": ("{sym}: плечі, прочитані лінійкою до {p} мм", "{sym}: arms read with a {p} mm ruler"),
+    "fs idle": ("холостий хід", "idle stroke"),
+    "fs working": ("робочий хід", "working stroke"),
+    "fs path": ("шлях {s} від положення 0, {u}", "path of {s} from position 0, {u}"),
 }
 
 
