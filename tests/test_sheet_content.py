@@ -412,3 +412,87 @@ def test_latin_word_rule():
     assert latin_words("n_с / n_н, об/хв", names) == [] and latin_words("n, rpm", names) == ["rpm"]
     assert TINY.search(num(4.817e-12, "uk")) and TINY.search(num(1e-9, "uk"))
     assert not TINY.search(num(2.5e-8, "uk")) and not TINY.search("< 10⁻⁸")
+
+
+# -- one set of scales: what the sheet prints is what the terminal reports ----------------------------------
+
+MU = re.compile(r"μ_\{?([A-Za-zφ])\}? = (?:2π/L = )?(\d+(?:[,.]\d+)?)(?![\d,.]*\s*[π·/])")
+
+
+def printed_scales(sheet) -> dict[str, set[float]]:
+    """Every "μ_x = value" the sheet letters, by symbol."""
+    out: dict[str, set[float]] = {}
+    for t in texts(sheet):
+        for sym, value in MU.findall(t):
+            out.setdefault(sym, set()).add(float(value.replace(",", ".")))
+    return out
+
+
+def _close(a: float, b: float) -> bool:
+    return abs(a - b) <= 5e-4 * max(abs(a), abs(b))       # the sheet prints 4 significant digits
+
+
+def _same(printed: dict[str, set[float]], reported: dict[str, set[float]]) -> None:
+    assert set(printed) == set(reported), (printed, reported)
+    for sym in printed:
+        assert all(any(_close(a, b) for b in reported[sym]) for a in printed[sym]), (sym, printed, reported)
+        assert all(any(_close(a, b) for a in printed[sym]) for b in reported[sym]), (sym, printed, reported)
+
+
+def _json(capsys, *argv) -> dict:
+    import json
+
+    from graphplan.cli.main import main
+    assert main(list(argv) + ["--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_every_scale_on_the_kinematics_sheet_is_the_terminals(lang, capsys):
+    """μl, μv, μa of the plans and μs, μv, μa, μt of the diagrams printed on the A1 sheet are the ones
+    `plans --json` and `diagrams --json` give, in either language (shaper_en's diagrams were drawn at
+    μv 0,325 beside the terminal's 0,2912)."""
+    path = str(ROOT / "examples" / "shaper.toml")
+    sheet = build("shaper", lang=lang)
+    plans = _json(capsys, "plans", path, "--lang", lang)
+    diagrams = _json(capsys, "diagrams", path, "--lang", lang)
+    reported: dict[str, set[float]] = {"l": {plans["mu_l"]}, "v": {diagrams["mu_v"]}, "a": {diagrams["mu_a"]},
+                                       "s": {diagrams["mu_s"]}, "t": {diagrams["mu_t"]}}
+    for pos in plans["positions"]:
+        reported["v"].add(pos["mu_v"])
+        if "mu_a" in pos:
+            reported["a"].add(pos["mu_a"])
+    _same(printed_scales(sheet), reported)
+
+
+def test_every_scale_on_the_force_sheet_is_the_terminals(shaper_forces, capsys):
+    """Each drawing's μ on the force sheet (scheme, groups, force plans, acceleration plan, lever,
+    charts, hodographs) is the one `forces --json` lists for the sheet of that format."""
+    doc = _json(capsys, "forces", str(ROOT / "examples" / "shaper.toml"), "--format", "A1")
+    reported: dict[str, set[float]] = {}
+    for scales in doc["sheet"]["drawings"].values():
+        for key, value in scales.items():
+            sym = {"mu_phi": "φ"}.get(key, key.removeprefix("mu_"))
+            reported.setdefault(sym, set()).add(value)
+    assert doc["mu_l"] in reported["l"] and doc["mu_F"] in reported["F"] and doc["mu_v"] in reported["v"]
+    _same(printed_scales(shaper_forces), reported)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_dynamics_sheet_reports_the_terminals_construction(lang, capsys):
+    """μM, μφ, μI, H, |kl| and ψ on the dynamics sheet are those of `dynamics --json` (they were
+    μM 10 vs 20, H 115 vs 50 mm, |kl| 259,5 vs 217 mm)."""
+    doc = _json(capsys, "dynamics", str(ROOT / "examples" / "shaper.toml"), "--lang", lang)
+    sheet = build("shaper", "dynamics", lang=lang)
+    sc, fw = doc["scales"], doc["flywheel"]
+    printed = printed_scales(sheet)
+    assert printed == {k: v for k, v in printed.items() if k in ("M", "φ", "I", "A", "T")}
+    for sym, key in (("M", "mu_M"), ("I", "mu_I"), ("φ", "mu_phi")):
+        assert printed[sym] and all(_close(v, sc[key]) for v in printed[sym]), (sym, printed, sc)
+    lines = " ".join(texts(sheet))
+    kl = re.search(r"\|kl\| = (\d+(?:[,.]\d+)?)", lines)
+    assert kl and _close(float(kl.group(1).replace(",", ".")), fw["kl_mm"])
+    psi = re.search(r"ψ_\{max\} = (\d+(?:[,.]\d+)?)°", lines)
+    assert psi and abs(float(psi.group(1).replace(",", ".")) - fw["psi_max_deg"]) < 0.01
+    h = re.search(r"H = (\d+(?:[,.]\d+)?) (?:мм|mm)", lines)
+    assert h and _close(float(h.group(1).replace(",", ".")), doc["H_mm"])

@@ -54,11 +54,13 @@ def cmd_forces(args: argparse.Namespace) -> int:
     st = _load(args.scene)
     lang = lang_of(args, st)
     phi = at_scene_angle(st) if args.phi is None else args.phi % 360.0
-    scales = {}
+    scales, sheet = {}, None
     if args.format and args.phi is None:       # the force sheet's μl and μF at its force position
-        from graphplan.sheets.forces import force_scales, has_loads
+        from graphplan.sheets.forces import drawing_scales, force_scales, has_loads
         if has_loads(st):
             scales = force_scales(st, args.format, args.precision)
+            if args.json:
+                sheet = {"format": args.format, "drawings": drawing_scales(st, args.format, args.precision)}
     fp = construct(st, phi, args.precision, **scales)
     if args.svg:
         write_svg(fp, args.svg, lang)
@@ -66,7 +68,13 @@ def cmd_forces(args: argparse.Namespace) -> int:
         from graphplan.drawing.charts import turn, write_charts
         write_charts(turn(st), args.charts, st.mech.title if lang == "uk" else
                      st.mech.task.meta.get("title_en", st.mech.title), lang)
-    sys.stdout.write(dumps(forces_json(fp)) if args.json else forces_table(fp, lang))
+    if args.json:
+        doc = forces_json(fp)
+        if sheet is not None:
+            doc["sheet"] = sheet
+        sys.stdout.write(dumps(doc))
+    else:
+        sys.stdout.write(forces_table(fp, lang))
     return 0
 
 

@@ -454,6 +454,16 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     return p, nat, dr
 
 
+def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
+    """Every drawing of the force sheet of ``format`` with the scales it is drawn at (the scheme's
+    and the groups' μl, μF, μa, μv, the charts' and hodographs' μ) — for ``forces --json``: the
+    terminal reports the construction the sheet draws."""
+    p, _, dr = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
+    names = dr.names()
+    return {names[fam][i]: dict(r.scales) for fam, recs in dr.drawings(p.mu, lettered=False).items()
+            for i, r in enumerate(recs)}
+
+
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
     """μl (of the groups) and μF of the force sheet of ``format`` — for ``forces --format``; no sheet
     is built."""
