@@ -496,3 +496,21 @@ def test_the_dynamics_sheet_reports_the_terminals_construction(lang, capsys):
     assert psi and abs(float(psi.group(1).replace(",", ".")) - fw["psi_max_deg"]) < 0.01
     h = re.search(r"H = (\d+(?:[,.]\d+)?) (?:мм|mm)", lines)
     assert h and _close(float(h.group(1).replace(",", ".")), doc["H_mm"])
+
+
+@pytest.mark.parametrize("name", ["lab_crank_slider", "crank_slider", "shaper", "slotter", "four_bar"])
+def test_the_diagrams_keep_the_scenes_L_and_poles_in_the_labs_range(name):
+    """The lab sheet drew H1 = 62 mm and L = 336 mm where the manual works with 15–50 mm and the scene
+    says L = 240 mm: the A1 sheet keeps the scene's L, H1, H2 and chooses unset poles within 15–50 mm."""
+    from graphplan.sheets.kinematics import diagram_options, plan
+    st = example(name)
+    p = plan(st, form("A1"), SheetOptions(sheet="kinematics"))[0]
+    got = diagram_options(st, p.diagrams)
+    given = st.mech.task.diagram
+    assert p.diagrams == 1.0
+    assert got["L"] == float(given.get("L_mm", 240.0))
+    for key in ("H1", "H2"):
+        if f"{key}_mm" in given:
+            assert got[key] == float(given[f"{key}_mm"])
+        else:
+            assert 15.0 <= got[key] <= 50.0
