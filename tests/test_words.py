@@ -32,8 +32,8 @@ FIELDS = re.compile(r"\{[^{}]*\}")
 
 def latin_words(text: str, allowed: set[str]) -> list[str]:
     """Latin words of 3+ letters in ``text`` that are neither symbols nor names nor --options nor
-    file paths."""
-    text = re.sub(r"--[a-z-]+|(?<!\S)(?:/[\w.-]+)+", " ", text)
+    file paths nor a file name's extension (.html)."""
+    text = re.sub(r"--[a-z-]+|(?<!\S)(?:/[\w.-]+)+|(?<![\w.])\.[a-z]{2,5}\b", " ", text)   # .html: an extension
     return [w for w in LATIN_WORD.findall(text) if w not in SYMBOLS and w not in allowed]
 
 

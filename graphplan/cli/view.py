@@ -10,16 +10,26 @@ from graphplan.util.files import write_atomic
 
 
 def cmd_view(args: argparse.Namespace) -> int:
+    """The page written atomically; the command's own refusals in the language asked for (--lang, else
+    the scene's)."""
+    import math
+
     from graphplan.report.explorer import explorer_html
+    from graphplan.util.words import pick, word
     out = Path(args.output)
+    lang = pick(getattr(args, "lang", None), None)
     if out.suffix.lower() not in (".html", ".htm"):
-        raise GraphplanError(f"-o {out}: the explorer is an HTML file, give a name ending in .html")
+        raise GraphplanError(word("view html", lang, name=out))
     if out.exists() and out.is_dir():
-        raise GraphplanError("-o needs a file name, this is a folder", str(out))
+        raise GraphplanError(word("view folder", lang, name=out))
     st = load_study(args.scene)
+    lang = lang_of(args, st)
+    if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
+        raise GraphplanError(word("view step", lang, step=f"{args.step:g}"))
+    if not (math.isfinite(args.precision) and 0 <= args.precision <= 10):
+        raise GraphplanError(word("view precision", lang, p=f"{args.precision:g}"))
     plans = sheet_plans(st, args.format, args.precision)
-    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang_of(args, st),
-                                    plans=plans))
+    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang, plans=plans))
     return 0
 
 

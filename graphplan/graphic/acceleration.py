@@ -33,8 +33,8 @@ class AccelerationPlan(Plan):
         t = self.laid(cr.epsilon * cr.length, 1j * math.copysign(1.0, cr.epsilon) * (A - O)) if cr.epsilon else 0j
         step = f"a_{cr.pin} = a^n_{cr.pin}{cr.pivot} + a^τ_{cr.pin}{cr.pivot}"
         if cr.epsilon:
-            self.vector(0j, n, "normal", step)
-            self.vector(n, n + t, "tangential", step)
+            self.crank_items = [i for i in (self.vector(0j, n, "normal", step),
+                                            self.vector(n, n + t, "tangential", step)) if i is not None]
             self.name_point(self.end_label("n"), n)
         self.images[cr.link] = Image.through(O, 0j, A, n + t)
         self.rates[cr.link], self.basis[cr.link] = cr.epsilon, abs(cr.epsilon) * cr.length
@@ -63,7 +63,8 @@ def normal_and_tangent(plan: AccelerationPlan, link: str, p: str, X: complex, ap
     """a_C = a_P + a^n_CP (v_CP²/l, ∥ CP toward P) + a^τ_CP (⊥ CP): the known part of one equation."""
     n = plan.normal(plan.vel.plan_point(link, c) - plan.vel.plan_point(link, p), length, X - XC)
     step_keys.append((link, p, X, n, length))
-    return Equation(ap, 1j * (XC - X), "tangential", [(n, "normal", plan.end_label("n"), f"n_{c}{p}")])
+    return Equation(ap, 1j * (XC - X), "tangential", [(n, "normal", plan.end_label("n"), f"n_{c}{p}")],
+                    name=plan.known(p), term=f"a^τ_{c}{p}", rule=("perp", f"{c}{p}"))
 
 
 def rotation_entries(plan: AccelerationPlan, link: str, p: str, X: complex, ap: complex, c: str,
@@ -97,13 +98,16 @@ def acceleration_rrr(plan: AccelerationPlan, d: Dyad) -> None:
 
 
 def slide_equation(plan: AccelerationPlan, K: str, X: complex, base: complex, rel_v_mm: complex,
-                   direction: complex, key: str) -> Equation:
-    """a_C = a_C(K) + a^k (2·ω_K·v_rel, v_rel turned 90° in the sense of ω_K) + a^r (∥ the guide)."""
+                   direction: complex, key: str, name: str = "", term: str = "",
+                   rule: tuple[str, str] = ("", "")) -> Equation:
+    """a_C = a_C(K) + a^k (2·ω_K·v_rel, v_rel turned 90° in the sense of ω_K) + a^r (∥ the guide).
+    ``name``, ``term`` and ``rule`` word it (Equation); the term defaults to a^r_key."""
     chain = []
     if plan.sc.rotating[K]:
         k = plan.coriolis(K, rel_v_mm)
         chain.append((k, "coriolis", plan.end_label("k"), f"k_{key}"))
-    return Equation(base, direction, "relative", chain)
+    return Equation(base, direction, "relative", chain, name=name, term=term or f"a^r_{key}",
+                    rule=rule if rule[0] else ("link", K))
 
 
 def slide_entries(plan: AccelerationPlan, key: str, eq: Equation, found: complex, K: str,
@@ -130,7 +134,10 @@ def acceleration_rrp(plan: AccelerationPlan, d: Dyad) -> None:
     parts: list = []
     e1 = normal_and_tangent(plan, d.a, p1, X1, a1, c, XC, abs(sc.local(d.a, c) - sc.local(d.a, p1)), parts)
     rel_v = plan.vel.plan_point(d.b, c) - plan.vel.images[K].at(XC)
-    e2 = slide_equation(plan, K, XC, plan.images[K].at(XC), rel_v, g, key)
+    if K == FRAME:
+        e2 = slide_equation(plan, K, XC, plan.images[K].at(XC), rel_v, g, key, term=f"a_{c}", rule=("guide", c))
+    else:
+        e2 = slide_equation(plan, K, XC, plan.images[K].at(XC), rel_v, g, key, name=sub(sc.name_at(c, K)))
     if K == FRAME:
         step = f"a_{c} = a_{p1} + a^n_{c}{p1} + a^τ_{c}{p1}, a_{c} ∥ the guide"
     else:
@@ -159,10 +166,11 @@ def acceleration_rpr(plan: AccelerationPlan, d: Dyad) -> None:
     key = f"{a3}{a2}"
     vel = plan.vel
     rel_v = vel.images[carrier].at(Xs) - vel.plan_point(Ks, ps)        # v_A3A2 on the velocity plan
-    e1 = slide_equation(plan, carrier, Xs, a_s, rel_v, g, key)
+    e1 = slide_equation(plan, carrier, Xs, a_s, rel_v, g, key, name=plan.known(ps))
     length = vel.rocker_length[carrier]
     n = plan.normal(vel.images[carrier].at(Xs) - vel.plan_point(Kc, pc), length, Xc - Xs)
-    e2 = Equation(a_c, 1j * (Xs - Xc), "tangential", [(n, "normal", plan.end_label("n"), f"n_{a3}{pc}")])
+    e2 = Equation(a_c, 1j * (Xs - Xc), "tangential", [(n, "normal", plan.end_label("n"), f"n_{a3}{pc}")],
+                  name=plan.known(pc), term=f"a^τ_{a3}{pc}", rule=("perp", f"{pc}{ps}"))
     step = f"a_{a3} = a_{a2} + a^k_{key} + a^r_{key} = a_{pc} + a^n_{a3}{pc} + a^τ_{a3}{pc}"
     x3 = plan.solve(d.label, sub(a3), e1, e2, step)
     plan.images[carrier] = Image.through(Xc, a_c, Xs, x3)
@@ -182,7 +190,9 @@ def acceleration_prp(plan: AccelerationPlan, d: Dyad) -> None:
     sides = []
     for link, K, key, g in prp_guides(sc, lay, d):
         rel_v = plan.vel.plan_point(link, c) - plan.vel.images[K].at(XC)
-        sides.append((link, K, key, slide_equation(plan, K, XC, plan.images[K].at(XC), rel_v, g, key)))
+        sides.append((link, K, key, slide_equation(
+            plan, K, XC, plan.images[K].at(XC), rel_v, g, key, name="" if K == FRAME else sub(sc.name_at(c, K)),
+            rule=("guide", c) if K == FRAME else ("link", K))))
     terms = " = ".join((f"a_{sc.name_at(c, K)}" + (f" + a^k_{key}" if sc.rotating[K] else "") + f" + a^r_{key}")
                        if K != FRAME else f"a^r_{key}" for _, K, key, _ in sides)
     ac = plan.solve(d.label, sub(c), sides[0][3], sides[1][3], f"a_{c} = {terms}")
@@ -204,8 +214,11 @@ def acceleration_rpp(plan: AccelerationPlan, d: Dyad) -> None:
     slot_key, guide_key = f"{ab}{pa}{sc.number(d.a)}", f"{ab}{pa}{sc.number(K)}"
     vel = plan.vel
     vb = vel.images[d.b].at(XA)
-    e1 = slide_equation(plan, K, XA, plan.images[K].at(XA), vb - vel.images[K].at(XA), g, guide_key)
-    e2 = slide_equation(plan, d.a, XA, plan.plan_point(Ka, pa), vb - vel.plan_point(Ka, pa), slot, slot_key)
+    e1 = slide_equation(plan, K, XA, plan.images[K].at(XA), vb - vel.images[K].at(XA), g, guide_key,
+                        name="" if K == FRAME else sub(sc.name_at(pa, K)),
+                        rule=("guide", ab) if K == FRAME else ("link", K))
+    e2 = slide_equation(plan, d.a, XA, plan.plan_point(Ka, pa), vb - vel.plan_point(Ka, pa), slot, slot_key,
+                        name=plan.known(pa), rule=("link", d.a))
     first = (f"a_{sc.name_at(pa, K)}" + (f" + a^k_{guide_key}" if sc.rotating[K] else "") + f" + a^r_{guide_key}"
              if K != FRAME else f"a^r_{guide_key}")
     second = f"a_{pa}" + (f" + a^k_{slot_key}" if sc.rotating[d.a] else "") + f" + a^r_{slot_key}"

@@ -59,15 +59,45 @@ class PlanWarning:
 class Equation:
     """One vector equation drawn on a plan: from the known plan point ``base`` the known components
     ``chain`` (vector mm, role, end label, entry key) are laid off; the unknown component lies on
-    the line through the chain's end along ``direction``."""
+    the line through the chain's end along ``direction``.
+
+    For the words of a replay (nothing here changes the drawing): ``name`` is the base's plan name
+    (util.markup, "" for the pole), ``term`` the unknown component ("a^τ_CB"), ``rule`` how its
+    line runs: ("perp", "CB") perpendicular to CB, ("link", "OB") along the link OB (a slotted
+    link), ("guide", "C") along the fixed guide of the slider C."""
     base: complex
     direction: complex
     unknown_role: str
     chain: list[tuple[complex, str, str, str]] = field(default_factory=list)
+    name: str = ""
+    term: str = ""
+    rule: tuple[str, str] = ("", "")
 
     @property
     def end(self) -> complex:
         return self.base + sum((v for v, *_ in self.chain), 0j)
+
+
+@dataclass
+class Side:
+    """One equation as it was drawn, for a replay in the textbook's order: the record's indices of
+    its known components (None where one was too short to draw), of its direction line and of its
+    unknown component up to the intersection (None when too short)."""
+    equation: Equation
+    chain: list[int | None]
+    line: int
+    unknown: int | None
+
+
+@dataclass
+class Solved:
+    """One group's two equations solved on the plan: the point found (its plan name, util.markup)
+    where the direction lines cross, and what each equation drew."""
+    group: str
+    step: str
+    found: str
+    at: complex
+    sides: tuple[Side, Side]
 
 
 # -- 2, 3. velocity and acceleration plans --------------------------------------------------------
@@ -123,6 +153,11 @@ class Plan:
         self.found: list[tuple[str, str, complex]] = []   # (group, point, constructed plan point)
         self.ends = {"n": 0, "k": 0}
         self.segments: list[tuple[complex, complex]] = []
+        # what a replay needs, in the order drawn (the record's indices; nothing read from them):
+        self.solved: list[Solved] = []                      # each group's construction
+        self.crank_items: list[int] = []                    # a_A's components when ε1 ≠ 0
+        self.absolute_items: dict[str, int | None] = {}     # point → its vector from the pole
+        self.figure_items: dict[str, list[int]] = {}        # link → its similar figure's lines
 
     # the ruler -------------------------------------------------------------------------------------
     def read(self, vec_mm: complex) -> tuple[float, float]:
@@ -163,10 +198,13 @@ class Plan:
         self.rate(link, signed, exact, abs(exact_rel))
 
     # drawing -----------------------------------------------------------------------------------------
-    def vector(self, a: complex, b: complex, role: str, step: str) -> None:
+    def vector(self, a: complex, b: complex, role: str, step: str) -> int | None:
+        """An arrow from a to b unless shorter than 0.3 mm; its index in the record (or None)."""
         if abs(b - a) > 0.3:
             self.record.vector((a.real, a.imag), (b.real, b.imag), role=role, layer="vectors", step=step)
             self.segments.append((a, b))
+            return len(self.record.items) - 1
+        return None
 
     def drawn(self, a: complex, b: complex) -> bool:
         """Is the segment ab (either way) already drawn as a vector?"""
@@ -185,6 +223,11 @@ class Plan:
                 if abs(b - a) > 0.3 and not self.drawn(a, b):
                     self.record.segment((a.real, a.imag), (b.real, b.imag), role="construction",
                                         layer="construction", step=f"similarity: link {name}")
+                    self.figure_items.setdefault(name, []).append(len(self.record.items) - 1)
+
+    def known(self, point: str) -> str:
+        """A known point's plan name for a replay's words: "" (the pole) for a fixed point."""
+        return "" if self.sc.fixed(point) else sub(point)
 
     def name_point(self, label: str, at: complex) -> None:
         self.named.setdefault(label, at)
@@ -193,14 +236,16 @@ class Plan:
         self.ends[letter] += 1
         return sub(f"{letter}{self.ends[letter]}")
 
-    def direction_line(self, through: complex, found: complex, direction: complex, step: str) -> None:
-        """A thin line along ``direction`` through the known end, reaching past the intersection."""
+    def direction_line(self, through: complex, found: complex, direction: complex, step: str) -> int:
+        """A thin line along ``direction`` through the known end, reaching past the intersection;
+        its index in the record."""
         u = unit(direction)
         t = dot(u, found - through)
         lo, hi = min(0.0, t) - 6.0, max(0.0, t) + 6.0
         a, b = through + lo * u, through + hi * u
         self.record.segment((a.real, a.imag), (b.real, b.imag), role="direction", layer="construction",
                             step=step)
+        return len(self.record.items) - 1
 
     def solve(self, group: str, what: str, e1: Equation, e2: Equation, step: str) -> complex:
         """Lay off both equations' known components, draw their direction lines; the unknown plan
@@ -211,15 +256,18 @@ class Plan:
                                  f"lines of {step} are parallel (a toggle position); the plan has no "
                                  "intersection there", self.sc.mech.source)
         x = line_line(e1.end, e1.direction, e2.end, e2.direction)
+        sides = []
         for eq in (e1, e2):
             at = eq.base
+            chain = []
             for vec, role, label, _key in eq.chain:
-                self.vector(at, at + vec, role, step)
+                chain.append(self.vector(at, at + vec, role, step))
                 if label and abs(vec) > 0.3:
                     self.name_point(label, at + vec)
                 at = at + vec
-            self.direction_line(eq.end, x, eq.direction, step)
-            self.vector(eq.end, x, eq.unknown_role, step)
+            line = self.direction_line(eq.end, x, eq.direction, step)
+            sides.append(Side(eq, chain, line, self.vector(eq.end, x, eq.unknown_role, step)))
+        self.solved.append(Solved(group, step, what, x, (sides[0], sides[1])))
         if angle < SMALL_ANGLE_DEG:
             slip = 0.5 / math.sin(math.radians(max(angle, 1e-9)))
             said = {lang: word("warn lines", lang, plan=word(f"{self.kind} plan lower", lang), group=group,
@@ -252,7 +300,8 @@ class Plan:
         for e in self.entries.values():
             p = e.vector / self.mu
             if e.kind == "point" and all(abs(p - q) > 1e-6 for q in drawn):
-                self.vector(0j, p, "absolute", "similarity" if e.key in sc.mech.point_names() else "")
+                self.absolute_items[e.key] = self.vector(
+                    0j, p, "absolute", "similarity" if e.key in sc.mech.point_names() else "")
                 drawn.append(p)
         self.link_figures()
         self.record.point((0.0, 0.0), role="pole", layer="vectors")

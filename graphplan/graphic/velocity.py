@@ -80,8 +80,11 @@ def velocity_rrr(plan: VelocityPlan, d: Dyad) -> None:
     X1, X3, XC = where(sc, lay, K1, p1), where(sc, lay, K3, p3), where(sc, lay, d.a, c)
     v1, v3 = plan.plan_point(K1, p1), plan.plan_point(K3, p3)
     step = f"v_{c} = v_{p1} + v_{c}{p1} = v_{p3} + v_{c}{p3}"
-    vc = plan.solve(d.label, sub(c), Equation(v1, 1j * (XC - X1), "relative"),
-                    Equation(v3, 1j * (XC - X3), "relative"), step)
+    vc = plan.solve(d.label, sub(c),
+                    Equation(v1, 1j * (XC - X1), "relative", name=plan.known(p1), term=f"v_{c}{p1}",
+                             rule=("perp", f"{c}{p1}")),
+                    Equation(v3, 1j * (XC - X3), "relative", name=plan.known(p3), term=f"v_{c}{p3}",
+                             rule=("perp", f"{c}{p3}")), step)
     plan.found.append((d.label, c, vc))
     plan.images[d.a] = Image.through(X1, v1, XC, vc)
     plan.images[d.b] = Image.through(X3, v3, XC, vc)
@@ -103,10 +106,13 @@ def velocity_rrp(plan: VelocityPlan, d: Dyad) -> None:
     rel_key = f"{c}{sc.number(d.b)}{c}{sc.number(K)}"
     if K == FRAME:
         step = f"v_{c} = v_{p1} + v_{c}{p1}, v_{c} ∥ the guide"
+        along = Equation(vk, g, "relative", name="", term=f"v_{c}", rule=("guide", c))
     else:
         step = f"v_{c} = v_{p1} + v_{c}{p1} = v_{sc.name_at(c, K)} + v_{rel_key}"
-    vc = plan.solve(d.label, sub(c), Equation(v1, 1j * (XC - X1), "relative"),
-                    Equation(vk, g, "relative"), step)
+        along = Equation(vk, g, "relative", name=sub(sc.name_at(c, K)), term=f"v_{rel_key}", rule=("link", K))
+    vc = plan.solve(d.label, sub(c),
+                    Equation(v1, 1j * (XC - X1), "relative", name=plan.known(p1), term=f"v_{c}{p1}",
+                             rule=("perp", f"{c}{p1}")), along, step)
     plan.found.append((d.label, c, vc))
     plan.images[d.a] = Image.through(X1, v1, XC, vc)
     plan.images[d.b] = Image(XC, vc, plan.images[K].F)
@@ -135,8 +141,10 @@ def velocity_rpr(plan: VelocityPlan, d: Dyad) -> None:
     vs, vpc = plan.plan_point(Ks, ps), plan.plan_point(Kc, pc)
     a3, a2 = sc.name_at(ps, carrier), f"{ps}{sc.number(slider)}"
     step = f"v_{a3} = v_{a2} + v_{a3}{a2} = v_{pc} + v_{a3}{pc}"
-    v3 = plan.solve(d.label, sub(a3), Equation(vs, g, "relative"),
-                    Equation(vpc, 1j * (Xs - Xc), "relative"), step)
+    v3 = plan.solve(d.label, sub(a3),
+                    Equation(vs, g, "relative", name=plan.known(ps), term=f"v_{a3}{a2}", rule=("link", carrier)),
+                    Equation(vpc, 1j * (Xs - Xc), "relative", name=plan.known(pc), term=f"v_{a3}{pc}",
+                             rule=("perp", f"{pc}{ps}")), step)
     plan.found.append((d.label, a3, v3))
     plan.images[carrier] = Image.through(Xc, vpc, Xs, v3)
     plan.images[slider] = Image(Xs, vs, plan.images[carrier].F)
@@ -172,7 +180,9 @@ def velocity_prp(plan: VelocityPlan, d: Dyad) -> None:
     sc, lay, ex = plan.sc, plan.lay, plan.exact
     c = d.inner.point
     XC = where(sc, lay, d.a, c)
-    sides = [(link, K, key, Equation(plan.images[K].at(XC), g, "relative"))
+    sides = [(link, K, key, Equation(plan.images[K].at(XC), g, "relative",
+                                     name="" if K == FRAME else sub(sc.name_at(c, K)), term=f"v_{key}",
+                                     rule=("guide", c) if K == FRAME else ("link", K)))
              for link, K, key, g in prp_guides(sc, lay, d)]
     terms = " = ".join((f"v_{sc.name_at(c, K)} + v_{key}" if K != FRAME else f"v_{key}")
                        for _, K, key, _ in sides)
@@ -197,7 +207,11 @@ def velocity_rpp(plan: VelocityPlan, d: Dyad) -> None:
     slot_key, guide_key = f"{ab}{pa}{sc.number(d.a)}", f"{ab}{pa}{sc.number(K)}"
     first = f"v_{sc.name_at(pa, K)} + v_{guide_key}" if K != FRAME else f"v_{guide_key}"
     step = f"v_{ab} = {first} = v_{pa} + v_{slot_key}"
-    vb = plan.solve(d.label, sub(ab), Equation(vk, g, "relative"), Equation(va, slot, "relative"), step)
+    vb = plan.solve(d.label, sub(ab),
+                    Equation(vk, g, "relative", name="" if K == FRAME else sub(sc.name_at(pa, K)),
+                             term=f"v_{guide_key}", rule=("guide", ab) if K == FRAME else ("link", K)),
+                    Equation(va, slot, "relative", name=plan.known(pa), term=f"v_{slot_key}",
+                             rule=("link", d.a)), step)
     plan.found.append((d.label, ab, vb))
     plan.images[d.b] = Image(XA, vb, plan.images[K].F)
     plan.images[d.a] = Image(XA, va, plan.images[K].F)

@@ -33,6 +33,8 @@ from graphplan.graphic.plan import SMALL_ANGLE_DEG
 from graphplan.graphic.plans import Plans, build_plans
 from graphplan.model.mechanism import FRAME
 from graphplan.util.errors import GraphplanError
+from graphplan.util.markup import indexed
+from graphplan.util.words import LANGS
 
 DIGITS = 9          # significant digits kept of every exact value (the page shows 4)
 
@@ -59,15 +61,18 @@ ROUND_OFF = 1e-10   # of the largest value of its kind, as `graphplan analyze` z
 # -- the crank-angle grid --------------------------------------------------------------------------
 
 
-def angle_grid(step: float, lab: list[float]) -> np.ndarray:
-    """Crank angles φ (deg, [0, 360)): every ``step`` degrees and the lab's positions, ascending."""
+def angle_grid(step: float, lab: list[float], phi0: float = 0.0, sense: float = 1.0) -> np.ndarray:
+    """Crank angles φ (deg, [0, 360)) every ``step`` degrees of the crank's turn from position 0
+    (φ0, turning in its own ``sense``: the slider's and the diagrams' convention), with the lab's
+    positions, ascending in φ."""
     if not (math.isfinite(step) and 0.05 <= step <= 30.0):
         raise GraphplanError(f"--step must be from 0.05 to 30 degrees, got {step!r}")
     n = int(round(360.0 / step))
-    fine = np.arange(n) * (360.0 / n)
+    fine = np.mod(phi0 + math.copysign(1.0, sense) * np.arange(n) * (360.0 / n), 360.0)
     every = np.concatenate([fine, np.mod(np.asarray(lab, dtype=float), 360.0)])
+    every = np.round(np.sort(every), 9) % 360.0
     every = np.sort(every)
-    keep = np.concatenate([[True], np.diff(every) > 1e-9])
+    keep = np.concatenate([[True], np.diff(every) > 1e-6])
     return every[keep]
 
 
@@ -210,34 +215,49 @@ def relative_entry(entries: dict, point: str, prefix: str = ""):
     return None
 
 
+def check_data(plans: Plans) -> dict[str, list[list[Any]]]:
+    """The self-check of each lab position: every segment a student reads off the plans (the
+    points' vectors, the relative and tangential components; not the normal and Coriolis ones,
+    which are laid off from computed values), as [plan, entry, symbol (util.markup), μ, exact
+    magnitude, graphplan's mm, graphplan's error %]. The page computes value = mm × μ and
+    δ = 100·(value − exact)/exact from the student's mm with these very numbers (full precision),
+    as `graphplan plans` does from its own reading."""
+    from graphplan.report.plans import ordered, symbol
+    out: dict[str, list[list[Any]]] = {}
+    for p in plans.positions:
+        rows: list[list[Any]] = []
+        for plan in (p.velocity, p.acceleration):
+            if plan is None:
+                continue
+            for e in ordered(plan):
+                if e.mm is None or e.kind in ("normal", "coriolis"):
+                    continue
+                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu, float(e.analytic), float(e.mm),
+                             None if e.error_pct is None else float(e.error_pct)])
+        out[str(p.key)] = rows
+    return out
+
+
 # -- warnings, diagrams ---------------------------------------------------------------------------
 
-def warning_text(w, lang: str) -> str:
-    if lang == "en":
-        return w.text
-    plan = {"position": "план положень", "velocity": "план швидкостей", "acceleration": "план прискорень"}
-    where = plan.get(w.plan, w.plan)
-    if w.kind == "dead centre":
-        return f"{where}: мертве положення групи {w.group}, швидкості зникають, відсоток не рахується"
-    if w.kind == "arcs":
-        return f"{where}, {w.group}: засічки перетинаються під кутом {w.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°)"
-    return f"{where}, {w.group}: лінії напрямків перетинаються під кутом {w.angle:.1f}° (< {SMALL_ANGLE_DEG:g}°)"
-
-
-def warnings_data(st: Study, plans: Plans, lang: str) -> dict[str, Any]:
+def warnings_data(st: Study, plans: Plans) -> dict[str, Any]:
+    """The warnings in both languages: extreme positions (angles), each lab position's plan
+    warnings, the cycle's (near-locking groups)."""
     return {"extremes": [round(e, 6) for e in st.extremes],
-            "plans": {str(p.key): [warning_text(w, lang) for w in p.warnings] for p in plans.positions if p.warnings},
-            "study": list(st.warnings), "small": SMALL_ANGLE_DEG}
+            "plans": {str(p.key): {lang: [w.say(lang) for w in p.warnings] for lang in LANGS}
+                      for p in plans.positions if p.warnings},
+            "study": {lang: list(st.says(lang)) for lang in LANGS},
+            "small": SMALL_ANGLE_DEG}
 
 
-def diagrams_data(st: Study, precision: float, lang: str, phi: np.ndarray) -> dict[str, Any] | None:
+def diagrams_data(st: Study, precision: float, phi: np.ndarray) -> dict[str, Any] | None:
     """The s–v–a diagrams by chords (the scene's settings) and the exact curves on the grid."""
     from graphplan.graphic.diagrams import chord_diagrams, exact_motion
     from graphplan.report.diagrams import diagrams_json
     task = st.mech.task.diagram
     d = chord_diagrams(st, point=task.get("point"), divisions=task.get("divisions"),
                        L=task.get("L_mm", 240.0), H1=task.get("H1_mm", 30.0), H2=task.get("H2_mm", 30.0),
-                       precision=precision, lang=lang)
+                       precision=precision)
     doc = diagrams_json(d)
     turn = st.from_position0(phi)
     s, v, a = exact_motion(st, d.output, turn)
@@ -253,31 +273,35 @@ def diagrams_data(st: Study, precision: float, lang: str, phi: np.ndarray) -> di
 
 def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: str = "uk",
                   plans: Plans | None = None) -> dict[str, Any]:
-    """Everything the page shows, computed here (SI units; drawing mm where said)."""
-    if lang not in ("uk", "en"):
+    """Everything the page shows, computed here (SI units; drawing mm where said), the words in
+    both languages (``lang`` is the one the page opens in)."""
+    if lang not in LANGS:
         raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
     plans = plans or build_plans(st, precision=precision)
-    phi = angle_grid(step, [p.phi for p in plans.positions])
+    phi = angle_grid(step, [p.phi for p in plans.positions], st.phi0, st.mech.omega1)
     grid = grid_data(st, plans, phi)
     rows = table_rows(st, plans, grid)
     mech = st.mech
     meta = mech.task.meta
-    title = meta.get("title_en", mech.title) if lang == "en" and meta.get("title_en") else mech.title
+    scheme = scheme_data(st, plans)
+    scheme["labels"] = {name: indexed(name) for name in list(grid["points"]) + list(scheme["frame"])}
     return {
-        "title": title, "lang": lang, "precision": plans.precision, "step": step,
+        "title": {"uk": mech.title, "en": meta.get("title_en") or mech.title}, "lang": lang,
+        "precision": plans.precision, "step": step,
         "omega1": mech.omega1,
         "structure": st.structure.formula,
         "scales": {"mu_l": plans.mu_l, "mu_v": plans.mu_v, "mu_a": plans.mu_a},
         "phi0": round(st.phi0, 6),
         "positions": [{"key": p.key, "index": p.index, "phi": round(p.phi, 6),
                        "accel": p.acceleration is not None} for p in plans.positions],
-        "scheme": scheme_data(st, plans),
+        "scheme": scheme,
         "grid": grid,
         "rows": rows,
         "readings": readings(plans, rows),
-        "records": plan_records(plans, lang),
-        "diagrams": diagrams_data(st, plans.precision, lang, phi),
-        "warnings": warnings_data(st, plans, lang),
+        "check": check_data(plans),
+        "records": plan_records(plans),
+        "diagrams": diagrams_data(st, plans.precision, phi),
+        "warnings": warnings_data(st, plans),
     }
 
 
@@ -293,7 +317,7 @@ def explorer_html(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
     payload = payload.replace("</", "<\\/")     # a "</script>" inside a caption cannot end the script
     page = _asset("explorer.html")
     return (page.replace("{{lang}}", lang)
-                .replace("{{title}}", html.escape(data["title"]))
+                .replace("{{title}}", html.escape(data["title"][lang]))
                 .replace("{{style}}", _asset("explorer.css"))
                 .replace("{{data}}", payload)
                 .replace("{{script}}", _asset("explorer.js")))

@@ -1,16 +1,34 @@
-"""The explorer's step-by-step replay: each plan's construction record cut into the draftsman's steps
-in order (known vectors first, then each group's equation: the direction lines, their intersection,
-the points by similarity), with captions in the page's language."""
+"""The explorer's step-by-step replay of a velocity or acceleration plan, in the textbook's order.
+
+The plan's construction (graphic.plan: each group's ``Solved`` with its two equations, the points'
+vectors from the pole, the links' similar figures) is cut into the steps a student draws:
+
+1. the crank's vector (p_v a = v_A, or π a = a_A);
+2. for each Assur group, first any known point it starts from that is not found yet (by
+   similarity: b on the rocker before the rod's group uses it), then the known components laid
+   off (normal a^n, Coriolis a^k), then BOTH direction lines through their points, then the
+   intersection marked and lettered, then the found vectors with their arrows;
+3. the remaining points by similarity (centres of mass), the links' similar figures.
+
+A plan point is lettered from the step that finds it, never before. Each step's caption says the
+rule in words ("through b, perpendicular to CB") in Ukrainian and English, in the typesetting
+markup of util.markup (the page sets sub- and superscripts). Nothing is drawn here: a step names
+the record's primitives it shows.
+"""
 from __future__ import annotations
 
 import re
 from typing import Any
 
-
+from graphplan.graphic.plan import Plan, Solved
 from graphplan.graphic.plans import Plans
-from graphplan.graphic.record import Primitive, Record
+from graphplan.graphic.position_plan import sub, where
+from graphplan.graphic.record import Record
+from graphplan.util.markup import indexed
+from graphplan.util.words import LANGS, fixed, num, unit
 
 MM = 3              # decimals of drawing millimetres
+COINCIDE = 0.3      # mm: plan points this close are one place (nothing shorter is drawn)
 
 
 def mm(x: float) -> float:
@@ -18,9 +36,152 @@ def mm(x: float) -> float:
     v = round(float(x), MM)
     return 0.0 if v == 0 else v
 
-# -- the construction records and their captions ---------------------------------------------------
 
-GUIDE = {"en": "the guide", "uk": "напрямній"}
+def same_point(sub_: str) -> bool:
+    """"A3A2": two bodies' points at one place (a sliding pair) — the relative motion is along the guide."""
+    return re.fullmatch(r"([A-Za-z]+)[\d_]+\1[\d_]*", sub_) is not None
+
+
+def braced(name: str) -> str:
+    """A plan name ready to be followed by another: "n_1" → "n_{1}", "p_v" → "p_{v}" (util.markup
+    would read "p_vb" as p with the subscript vb)."""
+    return re.sub(r"_([^{}\s]+)$", r"_{\1}", name)
+
+
+def seg(a: str, b: str) -> str:
+    """The plan segment from a to b as the lab writes it: "p_{v}b", "n_{1}c"."""
+    return braced(a) + b
+
+
+# -- the words, Ukrainian and English (markup of util.markup) ----------------------------------------
+
+SAY: dict[str, tuple[str, str]] = {
+    "crank v": ("{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} мм перпендикулярно до {arm_l}, у бік ω_1",
+                "{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} mm perpendicular to {arm_l}, in the sense of ω_1"),
+    "crank a": ("{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} мм паралельно до {back}, до {pivot}",
+                "{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} mm parallel to {back}, toward {pivot}"),
+    "crank a eps": ("{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, паралельно до {back}, до {pivot}; {t} = a^τ_{pin} = "
+                    "ε_1·l_{{{arm}}}, перпендикулярно до {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} мм",
+                    "{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, parallel to {back}, toward {pivot}; {t} = a^τ_{pin} = "
+                    "ε_1·l_{{{arm}}}, perpendicular to {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} mm"),
+    "normal": ("Від {base} відкладаємо {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
+               "{mm} мм паралельно до {link}, до {toward}",
+               "From {base} lay off {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
+               "{mm} mm parallel to {link}, toward {toward}"),
+    "coriolis": ("Від {base} відкладаємо {seg} = a^k_{{{sub}}} = 2·ω_{{{carrier}}}·v_{{{sub}}} = {value} {unit}: "
+                 "{mm} мм уздовж v_{{{sub}}}, повернутої на 90° у бік ω_{{{carrier}}} (прискорення Коріоліса)",
+                 "From {base} lay off {seg} = a^k_{{{sub}}} = 2·ω_{{{carrier}}}·v_{{{sub}}} = {value} {unit}: "
+                 "{mm} mm along v_{{{sub}}} turned 90° in the sense of ω_{{{carrier}}} (the Coriolis acceleration)"),
+    "zero normal": ("a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} ≈ 0: відкладати нічого, {end} збігається з {base}",
+                    "a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} ≈ 0: nothing to lay off, {end} coincides with {base}"),
+    "zero coriolis": ("a^k_{{{sub}}} = 2·ω_{{{carrier}}}·v_{{{sub}}} ≈ 0: відкладати нічого, {end} збігається з {base}",
+                      "a^k_{{{sub}}} = 2·ω_{{{carrier}}}·v_{{{sub}}} ≈ 0: nothing to lay off, {end} coincides with {base}"),
+    "line": ("Через {through} проводимо пряму {rule} — напрям {term}",
+             "Through {through} draw a line {rule}: the direction of {term}"),
+    "perp": ("перпендикулярно до {what}", "perpendicular to {what}"),
+    "link": ("паралельно до ланки {what}", "parallel to the link {what}"),
+    "guide": ("паралельно до напрямної точки {what}", "parallel to the guide of {what}"),
+    "meet": ("Прямі перетинаються в точці {found}: точку {found} знайдено",
+             "The two lines cross at {found}: the point {found} is found"),
+    "meet pole": ("Прямі перетинаються в полюсі {pole}: точка {found} збігається з {pole}, {sym}_{{{X}}} = 0 "
+                  "(мертве положення)",
+                  "The two lines cross at the pole {pole}: {found} coincides with {pole}, {sym}_{{{X}}} = 0 "
+                  "(a dead centre)"),
+    "found": ("Знайдені вектори: {list}", "The found vectors: {list}"),
+    "reading": ("{seg} = {term}: {mm} мм → {value} {unit}", "{seg} = {term}: {mm} mm → {value} {unit}"),
+    "zero reading": ("{term} = 0", "{term} = 0"),
+    "on line": ("{x} за подібністю: на прямій {pq}, {px} : {pq} = {PX} : {PQ}",
+                "{x} by similarity: on the line {pq}, {px} : {pq} = {PX} : {PQ}"),
+    "triangle": ("{x} за подібністю: трикутник {pqx} подібний до {PQX}",
+                 "{x} by similarity: the triangle {pqx} is similar to {PQX}"),
+    "similar": ("{x} за подібністю", "{x} by similarity"),
+    "together": ("{x} за подібністю: {p} і {q} збігаються, тож і {x} там само",
+                 "{x} by similarity: {p} and {q} coincide, so {x} is there too"),
+    "pole point": ("{x}: точка нерухомої ланки, збігається з полюсом {pole}",
+                   "{x}: a point of the frame, at the pole {pole}"),
+    "absolute": ("{seg} = {sym}_{{{X}}}: {mm} мм → {value} {unit}", "{seg} = {sym}_{{{X}}}: {mm} mm → {value} {unit}"),
+    "at pole": ("{x} збігається з {pole}: {sym}_{{{X}}} = 0", "{x} coincides with {pole}: {sym}_{{{X}}} = 0"),
+    "figure": ("Подібна фігура ланки {link} на плані: {fig}", "The similar figure of the link {link} on the plan: {fig}"),
+    "rest": ("{eq}", "{eq}"),
+    "guide word": ("напрямній", "the guide"),
+}
+
+
+def say(key: str, **fields: object) -> dict[str, str]:
+    """The caption in both languages; a field may be a dict {lang: text} (already worded)."""
+    out = {}
+    for lang in LANGS:
+        text = SAY[key][0 if lang == "uk" else 1]
+        out[lang] = text.format(**{k: (v[lang] if isinstance(v, dict) else v) for k, v in fields.items()})
+    return out
+
+
+def both(f) -> dict[str, str]:
+    """A field worded per language: ``f(lang)`` for each."""
+    return {lang: f(lang) for lang in LANGS}
+
+
+def join(parts: list[dict[str, str]], sep: str = "; ") -> dict[str, str]:
+    return {lang: sep.join(p[lang] for p in parts) for lang in LANGS}
+
+
+# -- reading a plan's names ---------------------------------------------------------------------------
+
+class Names:
+    """The plan's points: mechanism name ↔ plan name (util.markup), where each lies on the plan."""
+
+    def __init__(self, plans: Plans, plan: Plan):
+        self.plan, self.sc = plan, plans.scheme
+        self.mech = plans.study.mech
+        self.pole = "p_v" if plan.kind == "velocity" else "π"
+        self.sym = "v" if plan.kind == "velocity" else "a"
+        self.unit = "m/s" if plan.kind == "velocity" else "m/s²"
+        self.of_plan: dict[str, str] = {}           # plan name → mechanism name (points with entries)
+        for key, e in plan.entries.items():
+            if e.kind == "point":
+                self.of_plan[sub(key)] = key
+        self.at = dict(plan.named)
+        self.body: dict[str, str] = {}               # a coincident point → its body; A3 → the rocker
+        self.base: dict[str, str] = {}               # A3 → A
+        for (point, body), name in self.sc.coincident.items():
+            self.body[name], self.base[name] = body, point
+
+    def place(self, plan_name: str) -> complex:
+        return 0j if plan_name == "" else self.at.get(plan_name, 0j)
+
+    def word(self, plan_name: str) -> str:
+        """A plan name for the words ("" → the pole)."""
+        return plan_name or self.pole
+
+    def mech_label(self, point: str) -> str:
+        """A mechanism point as the lab letters it: A3 (the rocker's point at A) → A, O1 → O_1."""
+        return indexed(self.base.get(point, point))
+
+    def position(self, point: str) -> complex:
+        """Where the mechanism's point is on the position plan (drawing mm) at this position."""
+        if point in self.base:
+            point = self.base[point]
+        return where(self.sc, self.plan.lay, self.sc.body_of(point), point)
+
+    def pair(self, text: str) -> str:
+        """Two points' names run together ("BO2", "A3O") as the lab letters them: B O_2, A O."""
+        names = self.mech.point_names() + list(self.sc.coincident.values())
+        if text in names:
+            return self.mech_label(text)
+        two = split_pair(text, names)
+        return braced(self.mech_label(two[0])) + self.mech_label(two[1]) if two else text
+
+    def body_of(self, point: str) -> str:
+        return self.body.get(point) or self.sc.body_of(point)
+
+
+def entry_key(term: str) -> str:
+    """The plan entry a term is read into: a^τ_CB → t_CB, a^r_X → r_X, v_CB → CB, a_C → C."""
+    m = re.match(r"^[av](?:\^(\S))?_\{?([^{}\s]+)\}?$", term)
+    if not m:
+        return ""
+    mark, rest = m.groups()
+    return {"τ": "t_", "r": "r_", "n": "n_", "k": "k_"}.get(mark or "", "") + rest
 
 
 def split_pair(text: str, names: list[str]) -> tuple[str, str] | None:
@@ -31,260 +192,252 @@ def split_pair(text: str, names: list[str]) -> tuple[str, str] | None:
     return None
 
 
-def same_point(sub: str) -> bool:
-    """"A3A2": two bodies' points at one place (a sliding pair) — the relative motion is along the guide."""
-    return re.fullmatch(r"([A-Za-z]+)[\d_]+\1[\d_]*", sub) is not None
-
-
-def parse_term(term: str) -> tuple[str, str, str]:
-    """"a^τ_A3O" → ("a", "τ", "A3O"); "v_CB" → ("v", "", "CB")."""
-    m = re.match(r"^([av])(?:\^(\S))?_(\S+)$", term.strip())
-    return (m.group(1), m.group(2) or "", m.group(3)) if m else ("", "", term.strip())
-
-
-def equations(step: str) -> tuple[str, list[list[str]]]:
-    """The step's vector equations: "v_C = v_B + v_CB, v_C ∥ the guide" → ("v_C",
-    [["v_B", "v_CB"], ["", "v_C"]]) — each a known base and the components laid off from it."""
-    body, _, tail = step.partition(", ")
-    parts = [s.strip() for s in body.split("=")]
-    lhs, rhs = parts[0], [[t.strip() for t in p.split(" + ")] for p in parts[1:]]
-    if tail.strip().startswith(lhs) and "∥" in tail:
-        rhs.append(["", lhs])
-    return lhs, rhs
-
-
-class Captions:
-    """Names plan points and words each primitive of a velocity or acceleration plan."""
-
-    def __init__(self, plans: Plans, plan, lang: str):
-        self.plan, self.lang = plan, lang
-        mech = plans.study.mech
-        self.names = mech.point_names() + list(plans.scheme.coincident.values())
-        self.mech = mech
-        self.pole = "p_v" if plan.kind == "velocity" else "π"
-        self.named = dict(plan.named)
-
-    def at(self, z: complex) -> str:
-        if abs(z) < 1e-6:
-            return self.pole
-        best = min(self.named.items(), key=lambda kv: abs(kv[1] - z), default=None)
-        return best[0] if best and abs(best[1] - z) < 1e-6 else ""
-
-    def en(self) -> bool:
-        return self.lang == "en"
-
-    def crank(self) -> str:
-        cr = self.mech.crank
-        arm = f"{cr.pivot}{cr.pin}"
-        a = self.at(complex(*_end(self.plan, cr.pin)))
-        if self.plan.kind == "velocity":
-            return (f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, in the sense of ω1" if self.en() else
-                    f"{self.pole}{a} = v_{cr.pin} = ω1·l_{arm} ⊥ {arm}, у бік ω1")
-        tangential = f" + ε1·l_{arm} ⊥ {arm}" if cr.epsilon else ""
-        return (f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, toward {cr.pivot}{tangential}"
-                if self.en() else
-                f"{self.pole}{a} = a_{cr.pin} = ω1²·l_{arm} ∥ {cr.pin}{cr.pivot}, до {cr.pivot}{tangential}")
-
-    def base(self, term: str) -> str:
-        """The plan point a vector equation starts from: v_B → b, v_O2 (a fixed point) → the pole."""
-        _, _, point = parse_term(term)
-        if point in self.mech.frame or not point:
-            return self.pole
-        return point.lower()
-
-    def relation(self, term: str, guided: bool) -> str:
-        """⊥ XY for a rotation about another point, ∥ the guide for a slide."""
-        _, sup, sub = parse_term(term)
-        if guided or sup == "r" or same_point(sub):
-            return f"∥ {GUIDE[self.lang]}"
-        return f"⊥ {sub}"
-
-    def chain(self, term: str, role: str, end: str) -> str:
-        _, sup, sub = parse_term(term)
-        pair = split_pair(sub, self.names) or (sub, "")
-        if role == "coriolis":
-            return (f"Coriolis {term} = 2·ω·v_{sub}: v_{sub} turned 90° in the sense of ω → {end}" if self.en() else
-                    f"прискорення Коріоліса {term} = 2·ω·v_{sub}: v_{sub}, повернута на 90° у бік ω → {end}")
-        if role == "normal":
-            return (f"{term} = v²_{sub}/l_{sub} ∥ {sub}, toward {pair[1]} → {end}" if self.en() else
-                    f"{term} = v²_{sub}/l_{sub} ∥ {sub}, до {pair[1]} → {end}")
-        return f"{term} → {end}"
-
-    def line(self, term: str, through: str, guided: bool) -> str:
-        rel = self.relation(term, guided)
-        return (f"line {rel} through {through} (the direction of {term})" if self.en() else
-                f"лінія {rel} через {through} (напрям {term})")
-
-    def unknown(self, term: str, first: bool, found: str) -> str:
-        if first:
-            return f"{term} up to the intersection" if self.en() else f"{term} до перетину"
-        return f"{found} at the intersection: {term}" if self.en() else f"{found} у точці перетину: {term}"
-
-    def absolute(self, point: str, end: str, similarity: bool) -> str:
-        sym = "v" if self.plan.kind == "velocity" else "a"
-        if similarity:
-            return (f"{end} by similarity; {self.pole}{end} = {sym}_{point}" if self.en() else
-                    f"{end} за подібністю; {self.pole}{end} = {sym}_{point}")
-        return f"{self.pole}{end} = {sym}_{point}"
-
-    def figure(self, link: str) -> str:
-        return (f"link {link} on the plan: its similar figure" if self.en() else
-                f"ланка {link} на плані: подібна фігура")
-
-
-def _end(plan, point: str) -> tuple[float, float]:
-    z = plan.entries[point].vector / plan.mu
-    return z.real, z.imag
-
-
-def _z(p: tuple[float, float]) -> complex:
-    return complex(p[0], p[1])
-
-
-def replay(plans: Plans, plan, rec: Record, lang: str) -> list[dict[str, Any]]:
-    """The construction in the draftsman's order: a list of steps, each with the indices of the
-    record's primitives it draws and its caption. The crank's vector comes first."""
-    cap = Captions(plans, plan, lang)
-    items = rec.items
-    mech = plans.study.mech
-    steps: list[dict[str, Any]] = []
-    pin_end = complex(*_end(plan, mech.crank.pin))
-    crank_items = [i for i, p in enumerate(items) if p.kind == "vector" and p.role == "absolute"
-                   and abs(_z(p.points[1]) - pin_end) < 1e-6]
-    pre = [i for i, p in enumerate(items) if p.step.startswith(f"a_{mech.crank.pin} =") and p.kind != "text"]
-    steps.append({"items": pre + crank_items, "caption": cap.crank(), "eq": ""})
-    done = set(pre + crank_items)
-    k = 0
-    while k < len(items):
-        p = items[k]
-        if k in done or p.kind == "text" or p.role == "pole":
-            k += 1
-            continue
-        if p.step and "=" in p.step and not p.step.startswith("similarity"):
-            j_end = k       # a group's primitives are consecutive in the record
-            while j_end < len(items) and items[j_end].step == p.step:
-                j_end += 1
-            steps += equation_steps(cap, items, list(range(k, j_end)), p.step)
-            k = j_end
-            continue
-        if p.kind == "vector" and p.role == "absolute":
-            end = _z(p.points[1])
-            point = _point_named(plan, end)
-            found = any(items[j].kind == "vector" and abs(_z(items[j].points[1]) - end) < 1e-6
-                        for s in steps for j in s["items"])
-            similar = p.step == "similarity" and not found
-            steps.append({"items": [k], "caption": cap.absolute(point, cap.at(end), similar),
-                          "eq": "", "similar": similar})
-        elif p.step.startswith("similarity: link "):
-            steps.append({"items": [k], "caption": cap.figure(p.step.removeprefix("similarity: link ")), "eq": ""})
-        else:
-            steps.append({"items": [k], "caption": p.step or p.role, "eq": ""})
-        k += 1
-    return known_first(steps, items)
-
-
-def known_first(steps: list[dict[str, Any]], items: list[Primitive]) -> list[dict[str, Any]]:
-    """A point found by similarity that a later group starts from (b for a_C = a_B + …) is drawn
-    before that group, as a draftsman must: the record keeps all similarity vectors to the end."""
-    out = list(steps)
-    for st in [s for s in steps if s.pop("similar", False)]:
-        end = _z(items[st["items"][0]].points[1])
-        k = out.index(st)
-        m = next((m for m in range(1, k) for j in out[m]["items"]
-                  if items[j].kind == "vector" and abs(_z(items[j].points[0]) - end) < 1e-6), None)
-        if m is None:
-            continue
-        while m > 1 and out[m]["eq"] and out[m - 1]["eq"] == out[m]["eq"]:
-            m -= 1
-        out.remove(st)
-        out.insert(m, st)
-    return out
-
-
-def _point_named(plan, end: complex) -> str:
-    for key, e in plan.entries.items():
-        if e.kind == "point" and abs(e.vector / plan.mu - end) < 1e-6:
-            return key
-    return ""
-
-
-def equation_steps(cap: Captions, items: list[Primitive], idx: list[int], step: str) -> list[dict[str, Any]]:
-    """One group's vector equations, primitive by primitive: the known components laid off (normal,
-    Coriolis), the direction line of each unknown, the unknowns up to their intersection."""
-    lang_step = step.replace("the guide", GUIDE[cap.lang])
-    lhs, eqs = equations(step)
-    out: list[dict[str, Any]] = []
-    q = list(idx)
-
-    def take(pred) -> int | None:
-        if q and pred(items[q[0]]):
-            return q.pop(0)
+def numbers(plan: Plan, key: str, lang: str) -> tuple[str, str] | None:
+    """(mm, value) of an entry, as the page's language writes them."""
+    e = plan.entries.get(key)
+    if e is None or e.mm is None:
         return None
-
-    for n, terms in enumerate(eqs):
-        chain, unknown = terms[1:-1], terms[-1]
-        guided = terms[0] == ""
-        through = cap.pole if guided else cap.base(terms[0])   # where the unknown's line starts
-        for term in chain:
-            _, sup, _ = parse_term(term)
-            role = {"n": "normal", "k": "coriolis"}.get(sup)
-            j = take(lambda p: p.kind == "vector" and p.role == role)
-            if j is not None:
-                end = cap.at(_z(items[j].points[1]))
-                through = end or through
-                out.append({"items": [j], "caption": cap.chain(term, role, end), "eq": lang_step})
-        line = take(lambda p: p.kind == "segment" and p.role == "direction")
-        vec = take(lambda p: p.kind == "vector" and p.role in ("relative", "tangential"))
-        if line is not None:
-            if vec is not None:
-                through = cap.at(_z(items[vec].points[0])) or through
-            out.append({"items": [line], "caption": cap.line(unknown, through or "…", guided), "eq": lang_step})
-        if vec is not None:
-            found = cap.at(_z(items[vec].points[1]))
-            out.append({"items": [vec], "caption": cap.unknown(unknown, n == 0, found), "eq": lang_step})
-    for j in q:     # anything the parse did not place keeps the equation as its caption
-        out.append({"items": [j], "caption": lang_step, "eq": lang_step})
-    return out
+    return fixed(e.mm, lang, 1), num(e.value, lang)
 
 
-def record_data(rec: Record) -> dict[str, Any]:
-    """A record's primitives as compact lists: [kind, flat points, role, radius, a0, a1, text]."""
+# -- the replay ---------------------------------------------------------------------------------------
+
+class Replay:
+    """Builds the steps of one plan (see the module's docstring)."""
+
+    def __init__(self, plans: Plans, plan: Plan):
+        self.plans, self.plan = plans, plan
+        self.n = Names(plans, plan)
+        self.steps: list[dict[str, Any]] = []
+        self.lettered: dict[str, int] = {}       # plan name → the step that letters it
+        self.used: set[int] = set()
+
+    # bookkeeping ---------------------------------------------------------------------------------
+    def add(self, items: list[int | None], caption: dict[str, str], eq: dict[str, str] | None = None,
+            letters: tuple[str, ...] = (), **extra: Any) -> None:
+        k = len(self.steps)
+        drawn = [i for i in items if i is not None and i not in self.used]
+        self.used.update(drawn)
+        self.steps.append({"items": drawn, "caption": caption, "eq": eq or {"uk": "", "en": ""}, **extra})
+        for name in letters:
+            self.lettered.setdefault(name, k)
+
+    def known(self, plan_name: str) -> bool:
+        return plan_name == "" or plan_name in self.lettered
+
+    def eq(self, step: str) -> dict[str, str]:
+        return {lang: step.replace("the guide", SAY["guide word"][0 if lang == "uk" else 1]) for lang in LANGS}
+
+    def value(self, key: str) -> dict[str, dict[str, str]] | None:
+        got = {lang: numbers(self.plan, key, lang) for lang in LANGS}
+        if got["en"] is None:
+            return None
+        return {"mm": {lang: got[lang][0] for lang in LANGS}, "value": {lang: got[lang][1] for lang in LANGS}}
+
+    # the steps -----------------------------------------------------------------------------------
+    def crank(self) -> None:
+        n, plan, cr = self.n, self.plan, self.n.mech.crank
+        a = sub(cr.pin)
+        v = self.value(cr.pin) or {"mm": {"uk": "—", "en": "—"}, "value": {"uk": "—", "en": "—"}}
+        units = both(lambda lang: unit(n.unit, lang))
+        arm = f"{cr.pivot}{cr.pin}"
+        common = dict(seg=seg(n.pole, a), pin=cr.pin, arm=arm, unit=units, **v,
+                      back=braced(n.mech_label(cr.pin)) + n.mech_label(cr.pivot), pivot=n.mech_label(cr.pivot),
+                      arm_l=braced(n.mech_label(cr.pivot)) + n.mech_label(cr.pin))
+        items = list(plan.crank_items) + [plan.absolute_items.get(cr.pin)]
+        if plan.kind == "velocity":
+            self.add(items, say("crank v", **common), letters=(a,))
+        elif plan.crank_items:
+            end = "n_1"         # the first end of a normal component: the crank's (AccelerationPlan.crank)
+            self.add(items, say("crank a eps", n=seg(n.pole, end), t=seg(end, a), **common), letters=(end, a))
+        else:
+            self.add(items, say("crank a", **common), letters=(a,))
+
+    def similar(self, point: str) -> None:
+        """A point of a link found by similarity from two of the link's points already found."""
+        n, plan = self.n, self.plan
+        x = sub(point)
+        if self.n.sc.fixed(point):
+            self.add([], say("pole point", x=x, pole=n.pole), letters=(x,))
+            return
+        body = n.body_of(point)
+        link = n.mech.links.get(body)
+        candidates = []
+        if link is not None:
+            for q in list(link.joints) + [p for p in link.local if p not in link.joints]:
+                if q == point:
+                    continue
+                if n.sc.fixed(q):
+                    candidates.append((q, ""))
+                elif sub(q) in self.lettered:
+                    candidates.append((q, sub(q)))
+        for (name, (point_, b)) in [(nm, pb) for pb, nm in n.sc.coincident.items()]:
+            if b == body and name != point and sub(name) in self.lettered:
+                candidates.append((name, sub(name)))
+        X = n.position(point)
+        chosen = None
+        for i, (P, p) in enumerate(candidates):
+            for Q, q in candidates[i + 1:]:
+                if abs(n.position(P) - n.position(Q)) > 1e-6:
+                    chosen = (P, p, Q, q)
+                    break
+            if chosen:
+                break
+        at = n.place(x)
+        if chosen is None and len(candidates) >= 2:
+            (P, p), (Q, q) = candidates[:2]
+            rule = say("together", x=x, p=n.word(p), q=n.word(q))
+        elif chosen is None:
+            rule = say("similar", x=x)
+        else:
+            P, p, Q, q = chosen
+            XP, XQ = n.position(P), n.position(Q)
+            cross = ((XQ - XP).conjugate() * (X - XP)).imag
+            pw, qw = n.word(p), n.word(q)
+            PL, QL, XL = (n.mech_label(P), n.mech_label(Q), n.mech_label(point))
+            if abs(cross) <= 1e-6 * max(abs(XQ - XP) * abs(X - XP), 1e-12):
+                rule = say("on line", x=x, pq=seg(pw, qw), px=seg(pw, x), PX=seg(PL, XL), PQ=seg(PL, QL))
+            else:
+                rule = say("triangle", x=x, pqx=seg(seg(pw, qw), x), PQX=seg(seg(PL, QL), XL))
+        if abs(at) <= COINCIDE:
+            tail = say("at pole", x=x, pole=n.pole, sym=n.sym, X=point)
+        else:
+            v = self.value(point)
+            tail = say("absolute", seg=seg(n.pole, x), sym=n.sym, X=point,
+                       unit=both(lambda lang: unit(n.unit, lang)), **(v or {"mm": "—", "value": "—"}))
+        self.add([plan.absolute_items.get(point)], join([rule, tail]), letters=(x,))
+
+    def ensure(self, plan_name: str) -> None:
+        """A known point an equation starts from, found by similarity first if it is not yet."""
+        if self.known(plan_name):
+            return
+        point = self.n.of_plan.get(plan_name)
+        if point is None:
+            # the point of a moving guide under the slider (no entry of its own): lettered here
+            self.add([], {lang: plan_name for lang in LANGS}, letters=(plan_name,))
+            return
+        self.similar(point)
+
+    def group(self, g: Solved) -> None:
+        n, plan = self.n, self.plan
+        eq = self.eq(g.step)
+        for side in g.sides:
+            self.ensure(side.equation.name)
+        throughs = []
+        for side in g.sides:
+            e = side.equation
+            at = e.name
+            for (vec, role, label, key), item in zip(e.chain, side.chain):
+                sub_ = key.partition("_")[2]
+                carrier = e.rule[1] if e.rule[0] == "link" else ""
+                fields = dict(base=n.word(at), sub=sub_, carrier=carrier, end=label)
+                if item is None:
+                    self.add([], say("zero " + role, **fields), eq)
+                    continue
+                pair = split_pair(sub_, n.mech.point_names() + list(n.sc.coincident.values())) or (sub_, "")
+                v = self.value(key) or {"mm": "—", "value": "—"}
+                self.add([item], say(role, seg=seg(n.word(at), label), link=n.pair(sub_),
+                                     toward=n.mech_label(pair[1]) if pair[1] else "",
+                                     unit=both(lambda lang: unit("m/s²", lang)), **fields, **v), eq, letters=(label,))
+                at = label
+            throughs.append(at)
+        for side, through in zip(g.sides, throughs):
+            e = side.equation
+            rule = say(e.rule[0], what=n.pair(e.rule[1])) if e.rule[0] else {"uk": "", "en": ""}
+            self.add([side.line], say("line", through=n.word(through), rule=rule, term=e.term), eq, line=True)
+        found = g.found
+        point = n.of_plan.get(found, "")
+        if abs(g.at) <= COINCIDE:
+            caption = say("meet pole", found=found, pole=n.pole, sym=n.sym, X=point or found)
+        else:
+            caption = say("meet", found=found)
+        self.add([], caption, eq, letters=(found,), meet=[found, mm(g.at.real), mm(g.at.imag)])
+        parts, items = [], []
+        absolute = f"{n.sym}_{point}"
+        said_absolute = False
+        units = both(lambda lang: unit(n.unit, lang))
+        for side, through in zip(g.sides, throughs):
+            e = side.equation
+            if side.unknown is None:
+                parts.append(say("zero reading", term=e.term))
+                continue
+            items.append(side.unknown)
+            term, key = e.term, entry_key(e.term)
+            if through == "" and point:
+                # the unknown runs from the pole: it is the found point's own vector
+                term = e.term if e.term == absolute else f"{e.term} = {absolute}"
+                key, said_absolute = point, True
+            v = self.value(key)
+            if v is None:
+                parts.append({lang: f"{seg(n.word(through), found)} = {term}" for lang in LANGS})
+            else:
+                parts.append(say("reading", seg=seg(n.word(through), found), term=term, unit=units, **v))
+        if point:
+            v = self.value(point)
+            items.append(plan.absolute_items.get(point))
+            if v is not None and abs(g.at) > COINCIDE and not said_absolute:
+                parts.append(say("absolute", seg=seg(n.pole, found), sym=n.sym, X=point, unit=units, **v))
+        if items or parts:
+            self.add(items, say("found", list=join(parts)), eq)
+
+    def figures(self) -> None:
+        n = self.n
+        for link, items in self.plan.figure_items.items():
+            joints = [j for j in n.mech.links[link].joints]
+            fig = "".join(braced(n.pole if n.sc.fixed(j) else sub(j)) for j in joints)
+            self.add(items, say("figure", link=link, fig=fig))
+
+    def build(self) -> list[dict[str, Any]]:
+        plan = self.plan
+        self.crank()
+        for g in plan.solved:
+            self.group(g)
+        from graphplan.report.plans import ordered
+        for e in ordered(plan):
+            if e.kind == "point" and not self.known(sub(e.key)):
+                self.similar(e.key)
+        self.figures()
+        rest = [i for i, p in enumerate(plan.record.items)
+                if i not in self.used and p.kind != "text" and p.role != "pole"]
+        for i in rest:      # nothing should be left; if it is, it is still drawn, worded by its equation
+            self.add([i], self.eq(plan.record.items[i].step or plan.record.items[i].role))
+        return self.steps
+
+    def points(self) -> list[list[Any]]:
+        """Every lettered plan point: [name, x, y, the step that letters it] — the pole from the start."""
+        out = [[self.n.pole, 0.0, 0.0, 0]]
+        last = len(self.steps) - 1
+        for name, z in self.plan.named.items():
+            out.append([name, mm(z.real), mm(z.imag), self.lettered.get(name, last)])
+        return out
+
+
+def record_data(rec: Record) -> list[list[Any]]:
+    """A record's drawn primitives as compact lists: [kind, flat points, role] (circles and arcs
+    add radius, start and end angles); the labels are the page's to place."""
     prims = []
     for p in rec.items:
+        if p.kind == "text":
+            continue
         flat = [mm(c) for xy in p.points for c in xy]
-        prims.append([p.kind, flat, p.role, mm(p.radius), round(p.angles[0], 2), round(p.angles[1], 2), p.text])
-    return {"items": prims}
+        item: list[Any] = [p.kind, flat, p.role]
+        if p.kind in ("circle", "arc"):
+            item += [mm(p.radius), round(p.angles[0], 2), round(p.angles[1], 2)]
+        prims.append(item)
+    return prims
 
 
-def label_steps(plan, rec: Record, steps: list[dict[str, Any]]) -> dict[int, int]:
-    """Each label shows from the first step that draws its plan point (the pole's from the start)."""
-    anchors = {req.text: req.at for req in plan.labels}
-    out = {}
-    for i, p in enumerate(rec.items):
-        if p.kind != "text":
-            continue
-        at = anchors.get(p.text)
-        out[i] = 0
-        if at is None or abs(at) < 1e-6:
-            continue
-        out[i] = next((s for s, st in enumerate(steps) for j in st["items"]
-                       if any(abs(_z(xy) - at) < 1e-6 for xy in rec.items[j].points)), 0)
-    return out
-
-
-def plan_records(plans: Plans, lang: str) -> list[dict[str, Any]]:
-    """Every plan of the lab's positions with its replay."""
-    from graphplan.drawing.plans import labelled
+def plan_records(plans: Plans) -> list[dict[str, Any]]:
+    """Every plan of the lab's positions with its replay (record indices skip no primitive: the
+    labels are not in the record, the page letters the points)."""
     out = []
     for p in plans.positions:
         for plan in (p.velocity, p.acceleration):
             if plan is None:
                 continue
-            rec = labelled(plan)
-            steps = replay(plans, plan, rec, lang)
-            labels = label_steps(plan, rec, steps)
-            data = record_data(rec)
-            data |= {"kind": plan.kind, "key": p.key, "index": p.index, "phi": round(p.phi, 6),
-                     "mu": plan.mu, "steps": steps, "labels": {str(k): v for k, v in sorted(labels.items())}}
-            out.append(data)
+            r = Replay(plans, plan)
+            steps = r.build()
+            out.append({"kind": plan.kind, "key": p.key, "index": p.index, "phi": round(p.phi, 6),
+                        "mu": plan.mu, "items": record_data(plan.record), "steps": steps,
+                        "points": r.points()})
     return out

@@ -507,6 +507,14 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs idle": ("холостий хід", "idle stroke"),
     "fs working": ("робочий хід", "working stroke"),
     "fs path": ("шлях {s} від положення 0, {u}", "path of {s} from position 0, {u}"),
+    # issue 25: the explorer's command (`graphplan view`) in the scene's language
+    "view html": ("-o {name}: сторінка дослідника — файл .html, дайте ім'я з цим розширенням",
+                  "-o {name}: the explorer is an HTML file, give a name ending in .html"),
+    "view folder": ("-o {name}: потрібне ім'я файлу, а це тека", "-o {name}: a file name is needed, this is a folder"),
+    "view step": ("--step: крок сітки кутів має бути від 0,05 до 30°, задано {step}",
+                  "--step: the angle grid's step must be from 0.05 to 30 degrees, got {step}"),
+    "view precision": ("--precision: точність креслення має бути від 0 до 10 мм, задано {p}",
+                       "--precision: the drafting precision must be from 0 to 10 mm, got {p}"),
 }
 
 

@@ -3,55 +3,154 @@
 (function () {
   const D = JSON.parse(document.getElementById("explorer-data").textContent);
   const NS = "http://www.w3.org/2000/svg";
+  const $ = (id) => document.getElementById(id);
   const WORDS = {
     en: {
-      play: "▶ play", pause: "⏸ pause", phi: "φ", mech: "Mechanism at scale, μl = ",
-      vplan: "Velocity plan, μv = ", aplan: "Acceleration plan, μa = ",
-      values: "Values at the current angle", q: "quantity", graphical: "graphical", exact: "exact",
-      error: "error, %", note: "graphical: read off the plan of a lab position with a ruler of ",
-      noteb: " mm (length on the plan, mm → value); exact: the analytic solution; error = 100·(graphical − exact)/exact.",
-      warnings: "Warnings here", all: "Over the cycle", replay: "The construction, step by step",
-      back: "◀ back", next: "forward ▶", step: "step", of: "of", position: "position",
-      velocity: "velocity plan", acceleration: "acceleration plan",
-      diagrams: "s–v–a diagrams by chords (dots: graphical; grey: exact; red: the current angle)",
-      extreme: "extreme (dead-centre) position of the output: φ = ",
-      crossing: ": the direction lines cross at ", small: "° (ill-conditioned plan)",
-      none: "none", turn: "crank turn from position 0, °", lab: "lab position ",
-      structure: "structure ", omega: "ω1 = ", facts2: " rad/s",
-      plansnote: "grey: the exact plan of this angle (vectors from the pole at the plan's scale); black: the graphical plan of a lab position",
-      footer: "graphplan explorer: one offline file, no network access; the values are computed by graphplan's exact solver and its graphical constructions.",
-      diagnote: "graphical differentiation by chords: ", pole: "pole distances H1 = ", mmw: " mm",
+      play: "▶ play", pause: "⏸ pause", playName: "play or pause the turn (Space)", speed: "speed",
+      prev: "one grid step back (←)", next: "one grid step forward (→)", slider: "crank turn from position 0",
+      turn: "turn from position 0", phi: "crank angle φ", lab: "position", labs: "lab positions",
+      mech: "Mechanism, μ_l = ", vplan: "Velocity plan, μ_v = ", aplan: "Acceleration plan, μ_a = ",
+      perAngle: "plans at a scale of their own for each angle (on paper one scale serves the turn)",
+      zoom: "Wheel or pinch to zoom a drawing, drag to move it, double-click to fit it again.",
+      values: "Values at the current angle", q: "quantity", graphical: "graphical", exact: "exact", error: "error, %",
+      note: "graphical: read off the plan of a lab position with a ruler of {p} mm (length on the plan, mm → value); "
+        + "exact: the analytic solution; error = 100·(graphical − exact)/exact. Grey: the exact plan of this angle; "
+        + "black: the graphical plan of a lab position.",
+      warnings: "Warnings here", all: "Over the cycle", none: "none",
+      extreme: "extreme (dead-centre) position of the output: φ = {a}°",
+      crossing: "{g}: the direction lines cross at {a}° (ill-conditioned plan)",
+      replay: "The construction, step by step", back: "◀ back", forward: "forward ▶", first: "first step (Home)",
+      last: "last step (End)", backName: "one step back (←)", forwardName: "one step forward (→)",
+      step: "step {k} of {n}", plan: "plan to replay", returnTo: "↩ back to φ = {a}°",
+      velocity: "velocity plan", acceleration: "acceleration plan", at: "position {k}",
+      legend: "Symbols", check: "Check your own plan",
+      checkNote: "Type the lengths you measured on your own plan of this position, mm: the page multiplies them by "
+        + "the scale and compares the value with the exact one, as the lab's table does (δ = 100·(value − exact)/exact).",
+      checkAt: "position", reveal: "show graphplan's own reading", yourMm: "your length, mm", value: "value",
+      theirs: "graphplan: mm, δ %", mu: "μ",
+      diagrams: "s–v–a diagrams by chords (dots: graphical; grey: exact; red: the current angle; click or drag to seek)",
+      diagnote: "graphical differentiation by chords: {n} × {d}°, L = {L} mm; pole distances H_1 = {H1} mm, H_2 = {H2} mm; "
+        + "μ_s = {ms}, μ_t = {mt}, μ_v = {mv}, μ_a = {ma}",
+      turnAxis: "crank turn from position 0, °",
+      structure: "structure ", facts: "; ω_1 = {w} rad/s; φ_0 = {p}°",
+      footer: "graphplan explorer: one offline file, no network access; the values are computed by graphplan's exact "
+        + "solver and its graphical constructions.",
+      langs: "language",
+      symbols: [["p_v, π", "the poles of the velocity and acceleration plans"], ["μ_l, μ_v, μ_a", "the scales: m, m/s, m/s² per mm"],
+        ["a^n_{BA}", "normal acceleration of B about A, v^2_{BA}/l_{BA}, toward A"],
+        ["a^τ_{BA}", "tangential acceleration of B about A, ⊥ BA"], ["a^k", "Coriolis acceleration 2·ω·v_r"],
+        ["a^r, v^r", "relative acceleration and velocity along a guide"], ["n_1, k_1", "the ends of laid-off normal and Coriolis components"],
+        ["ω, ε", "angular velocity and acceleration, + counter-clockwise"]],
     },
     uk: {
-      play: "▶ пуск", pause: "⏸ пауза", phi: "φ", mech: "Механізм у масштабі, μl = ",
-      vplan: "План швидкостей, μv = ", aplan: "План прискорень, μa = ",
-      values: "Значення при поточному куті", q: "величина", graphical: "графічно", exact: "точно",
-      error: "похибка, %", note: "графічно: зміряно на плані лабораторного положення лінійкою з точністю ",
-      noteb: " мм (відрізок на плані, мм → значення); точно: аналітичний розв'язок; похибка = 100·(графічно − точно)/точно.",
-      warnings: "Попередження тут", all: "За цикл", replay: "Побудова крок за кроком",
-      back: "◀ назад", next: "вперед ▶", step: "крок", of: "з", position: "положення",
-      velocity: "план швидкостей", acceleration: "план прискорень",
-      diagrams: "Діаграми s–v–a методом хорд (точки: графічно; сіре: точно; червоне: поточний кут)",
-      extreme: "крайнє (мертве) положення вихідної ланки: φ = ",
-      crossing: ": лінії напрямків перетинаються під кутом ", small: "° (план погано обумовлений)",
-      none: "немає", turn: "поворот кривошипа від положення 0, °", lab: "положення ",
-      structure: "структура ", omega: "ω1 = ", facts2: " рад/с",
-      plansnote: "сіре: точний план цього кута (вектори з полюса в масштабі плану); чорне: графічний план лабораторного положення",
-      footer: "graphplan explorer: один офлайн-файл, без мережі; значення обчислені точним розв'язувачем graphplan і його графічними побудовами.",
-      diagnote: "графічне диференціювання методом хорд: ", pole: "полюсні відстані H1 = ", mmw: " мм",
+      play: "▶ пуск", pause: "⏸ пауза", playName: "пуск або пауза обертання (пробіл)", speed: "швидкість",
+      prev: "на крок сітки назад (←)", next: "на крок сітки вперед (→)", slider: "поворот кривошипа від положення 0",
+      turn: "поворот від положення 0", phi: "кут кривошипа φ", lab: "положення", labs: "лабораторні положення",
+      mech: "Механізм, μ_l = ", vplan: "План швидкостей, μ_v = ", aplan: "План прискорень, μ_a = ",
+      perAngle: "плани у власному масштабі для кожного кута (на папері — один масштаб на оберт)",
+      zoom: "Коліщатко або жест — масштаб креслення, перетягування — зсув, подвійне клацання — повернути.",
+      values: "Значення при поточному куті", q: "величина", graphical: "графічно", exact: "точно", error: "похибка, %",
+      note: "графічно: зміряно на плані лабораторного положення лінійкою з точністю {p} мм (відрізок на плані, мм → "
+        + "значення); точно: аналітичний розв'язок; похибка = 100·(графічно − точно)/точно. Сіре — точний план цього "
+        + "кута; чорне — графічний план лабораторного положення.",
+      warnings: "Попередження тут", all: "За цикл", none: "немає",
+      extreme: "крайнє (мертве) положення вихідної ланки: φ = {a}°",
+      crossing: "{g}: лінії напрямків перетинаються під кутом {a}° (план погано обумовлений)",
+      replay: "Побудова крок за кроком", back: "◀ назад", forward: "вперед ▶", first: "перший крок (Home)",
+      last: "останній крок (End)", backName: "на крок назад (←)", forwardName: "на крок вперед (→)",
+      step: "крок {k} з {n}", plan: "план для показу", returnTo: "↩ назад до φ = {a}°",
+      velocity: "план швидкостей", acceleration: "план прискорень", at: "положення {k}",
+      legend: "Позначення", check: "Перевірте свій план",
+      checkNote: "Введіть довжини, зміряні на власному плані цього положення, мм: сторінка помножить їх на масштаб і "
+        + "порівняє значення з точним, як у лабораторній таблиці (δ = 100·(значення − точно)/точно).",
+      checkAt: "положення", reveal: "показати відліки graphplan", yourMm: "ваш відрізок, мм", value: "значення",
+      theirs: "graphplan: мм, δ %", mu: "μ",
+      diagrams: "Діаграми s–v–a методом хорд (точки: графічно; сіре: точно; червоне: поточний кут; клацніть або "
+        + "тягніть, щоб перейти)",
+      diagnote: "графічне диференціювання методом хорд: {n} × {d}°, L = {L} мм; полюсні відстані H_1 = {H1} мм, "
+        + "H_2 = {H2} мм; μ_s = {ms}, μ_t = {mt}, μ_v = {mv}, μ_a = {ma}",
+      turnAxis: "поворот кривошипа від положення 0, °",
+      structure: "структура ", facts: "; ω_1 = {w} рад/с; φ_0 = {p}°",
+      footer: "graphplan explorer: один офлайн-файл, без мережі; значення обчислені точним розв'язувачем graphplan і "
+        + "його графічними побудовами.",
+      langs: "мова",
+      symbols: [["p_v, π", "полюси плану швидкостей і плану прискорень"], ["μ_l, μ_v, μ_a", "масштаби: м, м/с, м/с² в 1 мм"],
+        ["a^n_{BA}", "нормальне прискорення B відносно A, v^2_{BA}/l_{BA}, до A"],
+        ["a^τ_{BA}", "тангенціальне прискорення B відносно A, ⊥ BA"], ["a^k", "прискорення Коріоліса 2·ω·v_r"],
+        ["a^r, v^r", "відносні прискорення і швидкість уздовж напрямної"], ["n_1, k_1", "кінці відкладених нормальних і коріолісових складових"],
+        ["ω, ε", "кутові швидкість і прискорення, + проти годинникової стрілки"]],
     },
   };
-  const W = WORDS[D.lang] || WORDS.en;
-  const UNITS = D.lang === "uk" ? { "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²", "m": "м", "rad": "рад" } : {};
-  const unit = (u) => UNITS[u] || u;
-  const G = D.grid, S = D.scheme, N = G.phi.length;
-  const $ = (id) => document.getElementById(id);
+  const UNITS = { uk: { "m/s": "м/с", "m/s²": "м/с²", "rad/s": "рад/с", "rad/s²": "рад/с²", "m": "м", "rad": "рад", "mm": "мм",
+    "m/mm": "м/мм", "(m/s)/mm": "(м/с)/мм", "(m/s²)/mm": "(м/с²)/мм", "s/mm": "с/мм" }, en: {} };
+  let lang = D.lang === "en" ? "en" : "uk";
+  const W = () => WORDS[lang];
+  const unit = (u) => UNITS[lang][u] || u;
+  const fill = (s, f) => s.replace(/\{(\w+)\}/g, (m, k) => (k in f ? f[k] : m));
+  const tr = (v) => (v && typeof v === "object" ? (v[lang] !== undefined ? v[lang] : v.en) : v);
 
-  // -- numbers: Python's "{:.4g}" so the page shows what `graphplan analyze` prints ------------------
-  // -- numbers as the page's language writes them: the decimal comma in Ukrainian ---------------------
-  const dec = (s) => (D.lang === "uk" ? s.replace(/\./g, ",") : s);
-  const fx = (x, n) => dec(x.toFixed(n));
+  // -- the lab's markup (graphplan.util.markup): a^τ_{CB}, p_v, M^*_с ---------------------------------
+  const wordChar = (c) => /[\p{L}\p{N}'′]/u.test(c);
+  function runs(text) {
+    const out = [], base = [];
+    let i = 0;
+    const n = text.length;
+    const flush = () => { if (base.length) { out.push({ text: base.join(""), level: 0, stacked: false }); base.length = 0; } };
+    while (i < n) {
+      const c = text[i];
+      if (c === "\\" && i + 1 < n && "_^{}\\".indexOf(text[i + 1]) >= 0) { base.push(text[i + 1]); i += 2; continue; }
+      if ((c === "_" || c === "^") && i + 1 < n) {
+        let body;
+        if (text[i + 1] === "{") {
+          const end = text.indexOf("}", i + 2);
+          if (end < 0) { base.push(c); i += 1; continue; }
+          body = text.slice(i + 2, end); i = end + 1;
+        } else if (text[i + 1] === "*") { body = "*"; i += 2; } else if (wordChar(text[i + 1])) {
+          let j = i + 1;
+          while (j < n && wordChar(text[j])) j++;
+          body = text.slice(i + 1, j); i = j;
+        } else { base.push(c); i += 1; continue; }
+        flush();
+        const level = c === "_" ? -1 : 1, prev = out[out.length - 1];
+        out.push({ text: body, level: level, stacked: !!prev && prev.level === -level && !prev.stacked });
+        continue;
+      }
+      base.push(c); i += 1;
+    }
+    flush();
+    return out;
+  }
+  function setMarkup(node, text) {          // HTML: <sub>, <sup>
+    node.textContent = "";
+    runs(String(text)).forEach((r) => {
+      if (!r.level) { node.appendChild(document.createTextNode(r.text)); return; }
+      const e = document.createElement(r.level < 0 ? "sub" : "sup");
+      e.textContent = r.text;
+      node.appendChild(e);
+    });
+    return node;
+  }
+  function svgMarkup(t, text, size) {       // SVG: tspans with shifted baselines, stacked scripts moved back
+    let shift = 0, prev = null;
+    runs(String(text)).forEach((r) => {
+      const ts = document.createElementNS(NS, "tspan");
+      const want = r.level < 0 ? 0.3 * size : r.level > 0 ? -0.45 * size : 0;
+      if (want !== shift) ts.setAttribute("dy", r3(want - shift));
+      shift = want;
+      if (r.level) ts.setAttribute("font-size", r3(0.7 * size));
+      if (r.stacked && prev) {
+        const w = prev.getComputedTextLength ? prev.getComputedTextLength() : 0;
+        if (w > 0) ts.setAttribute("dx", r3(-w));
+      }
+      ts.textContent = r.text;
+      t.appendChild(ts);
+      prev = ts;
+    });
+  }
 
+  // -- numbers as the page's language writes them: Python's "{:.4g}", the decimal comma in Ukrainian --
+  const dec = (s) => (lang === "uk" ? s.replace(/\./g, ",") : s);
+  const fx = (x, n) => dec(x.toFixed(n)).replace(/^-/, "−");
   function fmtG(x, p) {
     if (x === null || x === undefined || !isFinite(x)) return "—";
     if (x === 0) return "0";
@@ -64,9 +163,8 @@
     const s = strip(x.toFixed(Math.max(0, p - 1 - exp)));
     return s === "-0" ? "0" : dec(s);
   }
-  const fmtMu = (v) => fmtG(v, 4);
 
-  // -- svg helpers (drawing mm, y up → screen y down) -----------------------------------------------
+  // -- svg helpers (drawing mm, y up → screen y down) -------------------------------------------------
   function el(tag, attrs, parent) {
     const n = document.createElementNS(NS, tag);
     for (const k in attrs) n.setAttribute(k, attrs[k]);
@@ -78,38 +176,134 @@
   function poly(g, pts, cls, closed) {
     return el(closed ? "polygon" : "polyline", { points: pts.map((p) => r3(p[0]) + "," + r3(-p[1])).join(" "), class: cls }, g);
   }
-  function arrow(g, a, b, cls) {
+  function arrow(g, a, b, cls, px) {          // px: drawing units per screen pixel (the head is 11 px long)
     const dx = b[0] - a[0], dy = b[1] - a[1], n = Math.hypot(dx, dy);
     const grp = el("g", { class: cls }, g);
     if (n < 0.3) return grp;
     line(grp, a, b, "");
-    const L = Math.min(3, 0.4 * n), H = Math.min(0.6, L / 4), ux = dx / n, uy = dy / n;
+    const L = Math.min(11 * px, 0.45 * n), H = L / 3.4, ux = dx / n, uy = dy / n;
     const base = [b[0] - ux * L, b[1] - uy * L];
     poly(grp, [b, [base[0] - uy * H, base[1] + ux * H], [base[0] + uy * H, base[1] - ux * H]], "", true);
     return grp;
   }
-  function text(g, at, s, cls, anchor) {
-    const t = el("text", { x: r3(at[0]), y: r3(-at[1]), class: cls, "text-anchor": anchor || "start" }, g);
-    t.textContent = s;
-    return t;
-  }
-  function fit(svg, box, margin) {
-    const [x0, y0, x1, y1] = box;
-    const w = x1 - x0 + 2 * margin, h = y1 - y0 + 2 * margin;
-    svg.setAttribute("viewBox", [r3(x0 - margin), r3(-y1 - margin), r3(w), r3(h)].join(" "));
-    svg.setAttribute("font-size", r3(Math.max(w, h) / 55));   // lettering of about 8 px whatever the scale
-  }
-  function grow(box, p) { box[0] = Math.min(box[0], p[0]); box[1] = Math.min(box[1], p[1]); box[2] = Math.max(box[2], p[0]); box[3] = Math.max(box[3], p[1]); }
   function clear(svg) { while (svg.firstChild) svg.removeChild(svg.firstChild); }
+  function grow(box, p) { box[0] = Math.min(box[0], p[0]); box[1] = Math.min(box[1], p[1]); box[2] = Math.max(box[2], p[0]); box[3] = Math.max(box[3], p[1]); }
 
-  // -- the grid ---------------------------------------------------------------------------------------
+  // -- drawings that zoom and pan, lettered at a constant size on the screen ------------------------------
+  const LETTER = 13;     // px: the drawings' lettering
+  function Zoomable(svg, redraw) {
+    const z = { svg: svg, base: [0, 0, 1, 1], k: 1, cx: 0.5, cy: 0.5, redraw: redraw };
+    z.view = function () {
+      const [x0, y0, x1, y1] = z.base, w = (x1 - x0) / z.k, h = (y1 - y0) / z.k;
+      const cx = x0 + z.cx * (x1 - x0), cy = y0 + z.cy * (y1 - y0);
+      return [cx - w / 2, cy - h / 2, w, h];
+    };
+    z.px = function () {                     // drawing units per screen pixel
+      const v = z.view(), cw = svg.clientWidth || 400, ch = svg.clientHeight || 300;
+      return Math.max(v[2] / cw, v[3] / ch);
+    };
+    z.apply = function () {
+      const v = z.view();
+      svg.setAttribute("viewBox", [r3(v[0]), r3(-v[1] - v[3]), r3(v[2]), r3(v[3])].join(" "));
+      svg.setAttribute("font-size", r3(LETTER * z.px()));
+    };
+    z.fit = function (box, marginPx) {       // the base view: box plus a margin of marginPx screen pixels
+      const cw = svg.clientWidth || 400, ch = svg.clientHeight || 300;
+      const w = Math.max(box[2] - box[0], 1e-6), h = Math.max(box[3] - box[1], 1e-6);
+      const s = Math.max(w / Math.max(cw - 2 * marginPx, 40), h / Math.max(ch - 2 * marginPx, 40));
+      const mx = (cw * s - w) / 2, my = (ch * s - h) / 2;
+      z.base = [box[0] - mx, box[1] - my, box[2] + mx, box[3] + my];
+      z.apply();
+    };
+    const toDrawing = (ev) => {
+      const r = svg.getBoundingClientRect(), v = z.view(), s = z.px();
+      const fx0 = (r.width - v[2] / s) / 2, fy0 = (r.height - v[3] / s) / 2;
+      return [(ev.clientX - r.left - fx0) * s + v[0], v[1] + v[3] - (ev.clientY - r.top - fy0) * s];
+    };
+    const setCentre = (p, q) => {              // drawing point p to stay under the screen point q
+      const [x0, y0, x1, y1] = z.base;
+      z.cx = z.cx + (p[0] - q[0]) / (x1 - x0);
+      z.cy = z.cy + (p[1] - q[1]) / (y1 - y0);
+    };
+    svg.addEventListener("wheel", (ev) => {
+      ev.preventDefault();
+      const before = toDrawing(ev);
+      z.k = Math.min(40, Math.max(0.5, z.k * Math.exp(-ev.deltaY * 0.0015)));
+      z.apply();
+      setCentre(before, toDrawing(ev));
+      z.apply();
+      z.redraw();
+    }, { passive: false });
+    let drag = null;
+    svg.addEventListener("pointerdown", (ev) => { drag = { at: toDrawing(ev), id: ev.pointerId }; svg.setPointerCapture(ev.pointerId); });
+    svg.addEventListener("pointermove", (ev) => {
+      if (!drag || drag.id !== ev.pointerId) return;
+      setCentre(drag.at, toDrawing(ev));
+      z.apply();
+    });
+    const end = () => { if (drag) { drag = null; z.redraw(); } };
+    svg.addEventListener("pointerup", end);
+    svg.addEventListener("pointercancel", end);
+    svg.addEventListener("dblclick", () => { z.k = 1; z.cx = 0.5; z.cy = 0.5; z.apply(); z.redraw(); });
+    return z;
+  }
+
+  // -- labels placed off the lines and off each other ----------------------------------------------------
+  function clipHits(a, b, box) {             // does the segment ab meet the box? (Liang–Barsky)
+    let t0 = 0, t1 = 1;
+    const dx = b[0] - a[0], dy = b[1] - a[1];
+    const p = [-dx, dx, -dy, dy], q = [a[0] - box[0], box[2] - a[0], a[1] - box[1], box[3] - a[1]];
+    for (let i = 0; i < 4; i++) {
+      if (p[i] === 0) { if (q[i] < 0) return false; continue; }
+      const t = q[i] / p[i];
+      if (p[i] < 0) { if (t > t1) return false; if (t > t0) t0 = t; } else { if (t < t0) return false; if (t < t1) t1 = t; }
+    }
+    return true;
+  }
+  const OFFSETS = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1]];
+  function placeLabels(g, labels, segs, px, boxes) {
+    // labels: {at:[x,y], text, cls, prefer:[dx,dy]}; segs: [[a,b]] in drawing units; boxes: taken boxes
+    const size = LETTER * px, taken = boxes || [];
+    labels.forEach((lb) => {
+      const t = el("text", { x: 0, y: 0, class: "lbl " + (lb.cls || "") }, g);
+      svgMarkup(t, lb.text, size);
+      let bb;
+      try { bb = t.getBBox(); } catch (e) { bb = { x: 0, y: -size, width: size * 0.65 * lb.text.length, height: size * 1.3 }; }
+      const w = bb.width + 2 * px, h = bb.height + 2 * px, asc = -bb.y;
+      const gap = 3 * px;
+      const order = lb.prefer ? OFFSETS.slice().sort((u, v) => (v[0] * lb.prefer[0] + v[1] * lb.prefer[1]) - (u[0] * lb.prefer[0] + u[1] * lb.prefer[1])) : OFFSETS;
+      let best = null;
+      order.forEach((o, rank) => {
+        for (const far of [1, 2.2]) {
+          const cx = lb.at[0] + o[0] * (w / 2 + gap) * far, cy = lb.at[1] + o[1] * (h / 2 + gap) * far;
+          const box = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
+          let cost = rank + (far > 1 ? 12 : 0);
+          taken.forEach((b) => { if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) cost += 1000; });
+          segs.forEach((s) => { if (clipHits(s[0], s[1], box)) cost += 100; });
+          if (!best || cost < best.cost) best = { cost: cost, box: box };
+        }
+      });
+      const b = best.box;
+      t.setAttribute("x", r3(b[0] + px - bb.x));
+      t.setAttribute("y", r3(-(b[3] - px) + asc));
+      taken.push(b);
+    });
+    return taken;
+  }
+
+  // -- the grid, in the turn from position 0 -----------------------------------------------------------------
+  const G = D.grid, S = D.scheme, N = G.phi.length;
   const muL = D.scales.mu_l, muV = D.scales.mu_v, muA = D.scales.mu_a;
-  function at(name, i) {   // drawing mm of a named point at grid index i
+  const turnOf = (phi) => { const t = ((((phi - D.phi0) * (D.omega1 >= 0 ? 1 : -1)) % 360) + 360) % 360; return t > 360 - 1e-7 ? 0 : t; };
+  const order = G.phi.map((_, i) => i).sort((a, b) => turnOf(G.phi[a]) - turnOf(G.phi[b]));
+  const rank = new Array(N);
+  order.forEach((i, k) => { rank[i] = k; });
+  function at(name, i) {
     if (S.frame[name]) return S.frame[name];
     const p = G.points[name];
     return [p.x[i] / muL, p.y[i] / muL];
   }
-  const labKey = {};       // grid index → lab position
+  const labKey = {};
   D.positions.forEach((p) => {
     let best = 0;
     for (let i = 0; i < N; i++) if (Math.abs(G.phi[i] - p.phi) < Math.abs(G.phi[best] - p.phi)) best = i;
@@ -123,60 +317,75 @@
     }
     return best;
   }
-  const turnOf = (phi) => ((((phi - D.phi0) * Math.sign(D.omega1)) % 360) + 360) % 360;
+  function nearestTurn(turn) {
+    let best = 0, gap = 1e9;
+    for (let i = 0; i < N; i++) {
+      const d = Math.abs(((turnOf(G.phi[i]) - turn + 540) % 360) - 180);
+      if (d < gap - 1e-12) { gap = d; best = i; }
+    }
+    return best;
+  }
+  const label = (name) => (S.labels && S.labels[name]) || name;
+  const lower = (name) => { const m = label(name); return m.charAt(0).toLowerCase() + m.slice(1); };
 
-  // -- the mechanism -----------------------------------------------------------------------------------
-  const mech = $("mech");
+  // -- the mechanism ---------------------------------------------------------------------------------------
+  const mechSvg = $("mech");
+  let index = nearest(D.phi0);
+  const mechZ = Zoomable(mechSvg, () => drawMechanism(index));
   const mechBox = [1e9, 1e9, -1e9, -1e9];
   Object.values(S.frame).forEach((p) => grow(mechBox, p));
-  Object.keys(G.points).forEach((n) => { for (let i = 0; i < N; i++) grow(mechBox, at(n, i)); });
-  fit(mech, mechBox, 14);
-  const mechStatic = el("g", {}, mech), mechMoving = el("g", {}, mech);
-  (function drawStatic() {
-    S.guides.forEach((g) => {
-      const u = [Math.cos(g.angle * Math.PI / 180), Math.sin(g.angle * Math.PI / 180)];
+  Object.keys(G.points).forEach((n) => { for (let i = 0; i < N; i += 1) grow(mechBox, at(n, i)); });
+  mechSvg.style.aspectRatio = String(r3(Math.min(2.2, Math.max(0.75, (mechBox[2] - mechBox[0] + 30) / (mechBox[3] - mechBox[1] + 30)))));
+  function drawMechanism(i) {
+    clear(mechSvg);
+    const px = mechZ.px(), segs = [];
+    const g = el("g", {}, mechSvg);
+    const seg = (a, b, cls) => { line(g, a, b, cls); segs.push([a, b]); };
+    S.guides.forEach((gd) => {
+      const u = [Math.cos(gd.angle * Math.PI / 180), Math.sin(gd.angle * Math.PI / 180)];
       let lo = 1e9, hi = -1e9;
-      for (let i = 0; i < N; i++) {
-        const p = at(g.point, i), t = (p[0] - g.through[0]) * u[0] + (p[1] - g.through[1]) * u[1];
+      for (let k = 0; k < N; k++) {
+        const p = at(gd.point, k), t = (p[0] - gd.through[0]) * u[0] + (p[1] - gd.through[1]) * u[1];
         lo = Math.min(lo, t); hi = Math.max(hi, t);
       }
-      line(mechStatic, [g.through[0] + (lo - 12) * u[0], g.through[1] + (lo - 12) * u[1]],
-        [g.through[0] + (hi + 12) * u[0], g.through[1] + (hi + 12) * u[1]], "guide");
+      seg([gd.through[0] + (lo - 12) * u[0], gd.through[1] + (lo - 12) * u[1]],
+        [gd.through[0] + (hi + 12) * u[0], gd.through[1] + (hi + 12) * u[1]], "guide");
     });
-    S.trajectories.forEach((n) => {
-      const order = G.phi.map((_, i) => i).sort((a, b) => turnOf(G.phi[a]) - turnOf(G.phi[b]));
-      poly(mechStatic, order.map((i) => at(n, i)), "traj", true);
-    });
+    S.trajectories.forEach((n) => poly(g, order.map((k) => at(n, k)), "traj", true));
+    const labels = [];
+    const O = S.frame[S.crank.pivot];
     D.positions.forEach((p) => {
-      const i = nearest(p.phi), A = at(S.crank.pin, i), O = S.frame[S.crank.pivot];
-      const d = Math.hypot(A[0] - O[0], A[1] - O[1]) || 1;
-      el("circle", { cx: r3(A[0]), cy: r3(-A[1]), r: 0.6, class: "labpos" }, mechStatic);
-      if (p.index !== null) text(mechStatic, [A[0] + (A[0] - O[0]) / d * 5 - 1.2, A[1] + (A[1] - O[1]) / d * 5 - 1.2], String(p.index), "lbl scale");
+      const A = at(S.crank.pin, nearest(p.phi));
+      el("circle", { cx: r3(A[0]), cy: r3(-A[1]), r: r3(3 * px), class: "labpos" }, g);
+      if (p.index !== null) labels.push({ at: A, text: String(p.index), cls: "exact", prefer: [A[0] - O[0], A[1] - O[1]] });
     });
     S.pivots.forEach((n) => {
       const p = S.frame[n];
-      poly(mechStatic, [p, [p[0] - 3, p[1] - 5], [p[0] + 3, p[1] - 5]], "ground", true);
-      line(mechStatic, [p[0] - 5, p[1] - 5], [p[0] + 5, p[1] - 5], "ground");
-      for (let k = -4; k <= 4; k += 2) line(mechStatic, [p[0] + k, p[1] - 5], [p[0] + k - 1.5, p[1] - 6.5], "ground");
+      poly(g, [p, [p[0] - 3, p[1] - 5], [p[0] + 3, p[1] - 5]], "ground", true);
+      line(g, [p[0] - 5, p[1] - 5], [p[0] + 5, p[1] - 5], "ground");
+      for (let k = -4; k <= 4; k += 2) line(g, [p[0] + k, p[1] - 5], [p[0] + k - 1.5, p[1] - 6.5], "ground");
     });
-  })();
-  function drawMechanism(i) {
-    clear(mechMoving);
     S.links.forEach((L) => {
       const pts = L.joints.map((j) => at(j, i));
       if (L.slot.length && pts.length >= 2) {
-        const a = pts[0], b = pts[pts.length - 1], n = Math.hypot(b[0] - a[0], b[1] - a[1]);
+        const a = pts[0], b = pts[pts.length - 1], n = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
         const u = [(b[0] - a[0]) / n, (b[1] - a[1]) / n];
         let lo = 0, hi = n;
         L.slot.forEach((s) => { const p = at(s, i), t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]; lo = Math.min(lo, t - 6); hi = Math.max(hi, t + 6); });
-        line(mechMoving, [a[0] + lo * u[0], a[1] + lo * u[1]], [a[0] + hi * u[0], a[1] + hi * u[1]], "link");
+        seg([a[0] + lo * u[0], a[1] + lo * u[1]], [a[0] + hi * u[0], a[1] + hi * u[1]], "link");
       }
-      if (pts.length >= 2) poly(mechMoving, pts, "link", pts.length > 2);
+      if (pts.length >= 2) {
+        poly(g, pts, "link", pts.length > 2);
+        for (let k = 0; k + 1 < pts.length; k++) segs.push([pts[k], pts[k + 1]]);
+        if (pts.length > 2) segs.push([pts[pts.length - 1], pts[0]]);
+      }
       if (L.block) {
         const c = at(L.block, i), th = G.links[L.name].theta[i] * Math.PI / 180;
         const u = [Math.cos(th), Math.sin(th)], v = [-u[1], u[0]];
         const corner = (sx, sy) => [c[0] + u[0] * sx * 4.5 + v[0] * sy * 2.5, c[1] + u[1] * sx * 4.5 + v[1] * sy * 2.5];
-        poly(mechMoving, [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)], "block", true);
+        const cs = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)];
+        poly(g, cs, "block", true);
+        for (let k = 0; k < 4; k++) segs.push([cs[k], cs[(k + 1) % 4]]);
       }
     });
     const seen = {};
@@ -184,80 +393,94 @@
       if (seen[j]) return;
       seen[j] = 1;
       const p = at(j, i);
-      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: 0.9, class: "joint" }, mechMoving);
-      text(mechMoving, [p[0] + 1.6, p[1] + 1.6], j, "lbl");
+      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(Math.max(0.9, 3.5 * px)), class: "joint" }, g);
+      labels.unshift({ at: p, text: label(j) });
     }));
     Object.keys(G.points).forEach((n) => {
       if (seen[n] || !/^S/.test(n)) return;
       const p = at(n, i);
-      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: 0.5, class: "labpos" }, mechMoving);
-      text(mechMoving, [p[0] + 1.2, p[1] - 3.5], n, "lbl");
+      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(2.5 * px), class: "labpos" }, g);
+      labels.push({ at: p, text: label(n) });
     });
+    placeLabels(el("g", {}, mechSvg), labels, segs, px);
   }
 
-  // -- the plans of the current angle ---------------------------------------------------------------
+  // -- the plans of the current angle -----------------------------------------------------------------------
   const recByKey = { velocity: {}, acceleration: {} };
   D.records.forEach((r) => { recByKey[r.kind][r.key] = r; });
   function planVector(kind, name, i) {
     const p = G.points[name], mu = kind === "velocity" ? muV : muA;
     return kind === "velocity" ? [p.vx[i] / mu, p.vy[i] / mu] : [p.ax[i] / mu, p.ay[i] / mu];
   }
-  function imageOf(kind, name, i) { return S.frame[name] ? [0, 0] : planVector(kind, name, i); }
-  function recordBox(r, box) {
-    r.items.forEach((it) => { for (let k = 0; k < it[1].length; k += 2) grow(box, [it[1][k], it[1][k + 1]]); });
-  }
-  function drawRecord(g, r, upto, current) {   // upto: the last step shown (all when undefined)
-    const stepOf = {};
-    if (upto !== undefined) r.steps.forEach((s, k) => s.items.forEach((j) => { stepOf[j] = k; }));
-    r.items.forEach((it, j) => {
-      const [kind, f, role, radius] = it;
-      let s = upto === undefined ? -1 : stepOf[j];
-      if (kind === "text") s = upto === undefined ? -1 : r.labels[String(j)];
-      if (upto !== undefined && role !== "pole" && (s === undefined || s > upto)) return;
-      const hl = upto !== undefined && s === current && kind !== "text" ? " hl" : "";
-      const pts = [];
-      for (let k = 0; k < f.length; k += 2) pts.push([f[k], f[k + 1]]);
-      if (kind === "vector") arrow(g, pts[0], pts[1], "g-vec" + hl);
-      else if (kind === "segment") line(g, pts[0], pts[1], (role === "direction" || role === "construction" ? "g-line" : "g-vec") + hl);
-      else if (kind === "point") el("circle", { cx: r3(pts[0][0]), cy: r3(-pts[0][1]), r: 0.6, class: "g-vec" }, g);
-      else if (kind === "circle") el("circle", { cx: r3(pts[0][0]), cy: r3(-pts[0][1]), r: radius, class: "g-line" + hl }, g);
-      else if (kind === "polyline" || kind === "polygon") poly(g, pts, "g-line" + hl, kind === "polygon");
-      else if (kind === "text") text(g, [pts[0][0], pts[0][1]], it[6], "lbl g-text");
-    });
-  }
-  function planBox(kind) {
+  const imageOf = (kind, name, i) => (S.frame[name] ? [0, 0] : planVector(kind, name, i));
+  const pts = (f) => { const out = []; for (let k = 0; k < f.length; k += 2) out.push([f[k], f[k + 1]]); return out; };
+  function recordBox(r, box) { r.items.forEach((it) => pts(it[1]).forEach((p) => grow(box, p))); }
+  const planSvg = { velocity: $("vplan"), acceleration: $("aplan") };
+  const planZ = {};
+  const turnBox = {};
+  ["velocity", "acceleration"].forEach((kind) => {
+    planZ[kind] = Zoomable(planSvg[kind], () => drawPlan(kind, index));
     const box = [0, 0, 0, 0];
     Object.keys(G.points).forEach((n) => { for (let i = 0; i < N; i++) grow(box, planVector(kind, n, i)); });
     Object.values(recByKey[kind]).forEach((r) => recordBox(r, box));
+    turnBox[kind] = box;
+  });
+  function angleBox(kind, i) {
+    const box = [0, 0, 0, 0];
+    Object.keys(G.points).forEach((n) => grow(box, planVector(kind, n, i)));
+    const lab = labKey[i];
+    if (lab && recByKey[kind][lab.key]) recordBox(recByKey[kind][lab.key], box);
     return box;
   }
-  const planSvg = { velocity: $("vplan"), acceleration: $("aplan") };
-  ["velocity", "acceleration"].forEach((k) => fit(planSvg[k], planBox(k), 10));
+  function drawItems(g, r, upto, current, px, segs) {     // a record's primitives up to a step
+    const stepOf = {};
+    r.steps.forEach((s, k) => s.items.forEach((j) => { stepOf[j] = k; }));
+    r.items.forEach((it, j) => {
+      const [kind, f, role, radius] = it;
+      const s = stepOf[j];
+      if (upto !== undefined && role !== "pole" && (s === undefined || s > upto)) return;
+      const hl = upto !== undefined && s === current ? " hl" : "";
+      const p = pts(f);
+      if (kind === "vector") { arrow(g, p[0], p[1], "g-vec" + hl, px); segs.push([p[0], p[1]]); }
+      else if (kind === "segment") { line(g, p[0], p[1], (role === "direction" || role === "construction" ? "g-line" : "g-vec") + hl); segs.push([p[0], p[1]]); }
+      else if (kind === "point") el("circle", { cx: r3(p[0][0]), cy: r3(-p[0][1]), r: r3(2.5 * px), class: "g-vec" }, g);
+      else if (kind === "circle") el("circle", { cx: r3(p[0][0]), cy: r3(-p[0][1]), r: radius, class: "g-line" + hl }, g);
+      else if (kind === "polyline" || kind === "polygon") {
+        poly(g, p, "g-line" + hl, kind === "polygon");
+        for (let k = 0; k + 1 < p.length; k++) segs.push([p[k], p[k + 1]]);
+      }
+    });
+  }
   function drawPlan(kind, i) {
-    const svg = planSvg[kind];
+    const svg = planSvg[kind], z = planZ[kind];
+    if ($("per-angle").checked) { z.k = 1; z.cx = 0.5; z.cy = 0.5; z.fit(angleBox(kind, i), 28); }
     clear(svg);
-    const g = el("g", {}, svg);
+    const px = z.px(), g = el("g", {}, svg), segs = [];
     S.links.forEach((L) => {
       if (L.name === S.crank.link || L.joints.length < 2) return;
-      poly(g, L.joints.map((j) => imageOf(kind, j, i)), "figure", L.joints.length > 2);
+      const fig = L.joints.map((j) => imageOf(kind, j, i));
+      poly(g, fig, "figure", L.joints.length > 2);
     });
-    Object.keys(G.points).forEach((n) => {
-      const p = planVector(kind, n, i);
-      arrow(g, [0, 0], p, "exact");
-    });
-    const lab = labKey[i];
-    if (!(lab && recByKey[kind][lab.key])) {    // a lab position's plan brings its own labels
-      Object.keys(G.points).forEach((n) => { const p = planVector(kind, n, i); text(g, [p[0] + 1, p[1] + 1], n.toLowerCase(), "lbl exact"); });
-      text(g, [-4, -5], kind === "velocity" ? "p_v" : "π", "lbl");
+    Object.keys(G.points).forEach((n) => { const p = planVector(kind, n, i); arrow(g, [0, 0], p, "exact", px); segs.push([[0, 0], p]); });
+    const lab = labKey[i], rec = lab && recByKey[kind][lab.key];
+    const labels = [];
+    if (rec) {
+      drawItems(el("g", {}, svg), rec, undefined, undefined, px, segs);
+      rec.points.forEach((q) => labels.push({ at: [q[1], q[2]], text: q[0] }));
+    } else {
+      labels.push({ at: [0, 0], text: kind === "velocity" ? "p_v" : "π" });
+      Object.keys(G.points).forEach((n) => labels.push({ at: planVector(kind, n, i), text: lower(n), cls: "exact" }));
     }
-    if (lab && recByKey[kind][lab.key]) drawRecord(el("g", {}, svg), recByKey[kind][lab.key]);
+    placeLabels(el("g", {}, svg), labels, segs, px);
   }
 
-  // -- the values' table --------------------------------------------------------------------------------
-  const SYM = { omega: "ω_", epsilon: "ε_", slide_v: D.lang === "uk" ? "v_відн " : "v_rel ", slide_k: "a^k " };
-  function label(row) {
-    if (row.source === "point") return (row.plan === "velocity" ? "v_" : "a_") + row.name;
-    return SYM[row.source] + row.name;
+  // -- the values' table --------------------------------------------------------------------------------------
+  function rowSymbol(row) {
+    if (row.source === "point") return (row.plan === "velocity" ? "v_{" : "a_{") + row.name + "}";
+    if (row.source === "omega") return "ω_{" + row.name + "}";
+    if (row.source === "epsilon") return "ε_{" + row.name + "}";
+    if (row.source === "slide_v") return "v^r_{" + row.name + "}";
+    return "a^k_{" + row.name + "}";
   }
   function exactValue(row, i) {
     if (row.source === "point") {
@@ -270,190 +493,452 @@
     return G.slides[row.name].k[i];
   }
   const tbody = $("values").querySelector("tbody");
-  $("values").querySelector("thead").innerHTML = "<tr><th>" + W.q + "</th><th>" + W.graphical + "</th><th>" + W.exact + "</th><th>" + W.error + "</th></tr>";
   const cells = D.rows.map((row) => {
-    const tr = document.createElement("tr");
-    tr.setAttribute("data-q", row.q);
-    tr.setAttribute("data-plan", row.plan);
+    const trow = document.createElement("tr");
+    trow.setAttribute("data-q", row.q);
+    trow.setAttribute("data-plan", row.plan);
     const th = document.createElement("th");
-    th.textContent = label(row) + ", " + unit(row.unit);
-    tr.appendChild(th);
-    const td = ["graphical", "exact", "error"].map((c) => { const t = document.createElement("td"); t.className = c; tr.appendChild(t); return t; });
-    tbody.appendChild(tr);
-    return [row, tr, td];
+    trow.appendChild(th);
+    const td = ["graphical", "exact", "error"].map((c) => { const t = document.createElement("td"); t.className = c; trow.appendChild(t); return t; });
+    tbody.appendChild(trow);
+    return [row, th, td];
   });
   function updateTable(i) {
     const lab = labKey[i], got = lab ? D.readings[String(lab.key)] || {} : {};
-    cells.forEach(([row, tr, td]) => {
+    cells.forEach(([row, th, td]) => {
+      setMarkup(th, rowSymbol(row) + ", " + unit(row.unit));
       const x = exactValue(row, i), r = got[row.q];
       td[1].textContent = fmtG(x, 4);
       td[1].setAttribute("data-value", String(x));
       if (r) {
-        const g = row.source === "slide_v" && x < 0 ? -r[1] : r[1];   // signed along the guide, as exact
-        td[0].textContent = fmtG(g, 4) + (r[0] !== null ? " (" + fx(r[0], 1) + (D.lang === "uk" ? " мм)" : " mm)") : "");
-        td[0].setAttribute("data-value", String(g));
+        const gv = row.source === "slide_v" && x < 0 ? -r[1] : r[1];
+        td[0].textContent = fmtG(gv, 4) + (r[0] !== null ? " (" + fx(r[0], 1) + " " + unit("mm") + ")" : "");
+        td[0].setAttribute("data-value", String(gv));
         td[2].textContent = r[2] === null ? "—" : fx(r[2], 2);
         td[2].className = "error" + (r[2] !== null && Math.abs(r[2]) > 5 ? " bad" : "");
       } else {
         td[0].textContent = "";
         td[0].removeAttribute("data-value");
         td[2].textContent = "";
+        td[2].className = "error";
       }
     });
   }
 
-  // -- warnings ----------------------------------------------------------------------------------------
+  // -- warnings -------------------------------------------------------------------------------------------------
   function updateWarnings(i) {
     const ul = $("warnings");
-    ul.innerHTML = "";
-    const add = (kind, s) => { const li = document.createElement("li"); li.setAttribute("data-kind", kind); li.textContent = s; ul.appendChild(li); };
+    ul.textContent = "";
+    const add = (kind, s) => { const li = document.createElement("li"); li.setAttribute("data-kind", kind); setMarkup(li, s); ul.appendChild(li); };
     const half = D.step / 2 + 1e-6;
-    D.warnings.extremes.forEach((e) => { if (Math.abs(((G.phi[i] - e + 540) % 360) - 180) <= half) add("extreme", W.extreme + fx(e, 2) + "°"); });
-    Object.keys(G.crossing).forEach((g) => { const a = G.crossing[g][i]; if (a < D.warnings.small) add("crossing", g + W.crossing + fx(a, 1) + W.small); });
+    D.warnings.extremes.forEach((e) => { if (Math.abs(((G.phi[i] - e + 540) % 360) - 180) <= half) add("extreme", fill(W().extreme, { a: fx(e, 2) })); });
+    Object.keys(G.crossing).forEach((g) => { const a = G.crossing[g][i]; if (a < D.warnings.small) add("crossing", fill(W().crossing, { g: g, a: fx(a, 1) })); });
     const lab = labKey[i];
-    if (lab && D.warnings.plans[String(lab.key)]) D.warnings.plans[String(lab.key)].forEach((s) => add("plan", s));
-    if (!ul.firstChild) add("none", W.none);
+    if (lab && D.warnings.plans[String(lab.key)]) tr(D.warnings.plans[String(lab.key)]).forEach((s) => add("plan", s));
+    if (!ul.firstChild) add("none", W().none);
   }
-  (function allWarnings() {
+  function allWarnings() {
     const ul = $("warnings-all");
-    const add = (s) => { const li = document.createElement("li"); li.textContent = s; ul.appendChild(li); };
-    D.warnings.extremes.forEach((e) => add(W.extreme + fx(e, 2) + "°"));
+    ul.textContent = "";
+    const add = (s) => { const li = document.createElement("li"); setMarkup(li, s); ul.appendChild(li); };
+    D.warnings.extremes.forEach((e) => add(fill(W().extreme, { a: fx(e, 2) })));
     Object.keys(G.crossing).forEach((g) => {
       let lo = 90, where = 0;
       G.crossing[g].forEach((a, i) => { if (a < lo) { lo = a; where = G.phi[i]; } });
-      if (lo < D.warnings.small) add(g + W.crossing + fx(lo, 1) + W.small + ", φ = " + fx(where, 1) + "°");
+      if (lo < D.warnings.small) add(fill(W().crossing, { g: g, a: fx(lo, 1) }) + ", φ = " + fx(where, 1) + "°");
     });
-    Object.keys(D.warnings.plans).forEach((k) => D.warnings.plans[k].forEach((s) => add(W.lab + k + ": " + s)));
-    D.warnings.study.forEach(add);
-  })();
+    Object.keys(D.warnings.plans).forEach((k) => tr(D.warnings.plans[k]).forEach((s) => add(W().lab + " " + k + ": " + s)));
+    tr(D.warnings.study).forEach(add);
+  }
 
-  // -- the s–v–a diagrams ---------------------------------------------------------------------------------
+  // -- the s–v–a diagrams: click or drag to seek -------------------------------------------------------------
   const dg = D.diagrams, dsvg = $("diagrams");
-  const CH = 48, GAP = 14, WIDTH = 240;
+  const CH = 48, GAP = 16, WIDTH = 240;
   let cursor = null;
-  (function drawDiagrams() {
-    if (!dg) return;
-    dsvg.setAttribute("viewBox", [-28, -6, WIDTH + 40, 3 * (CH + GAP) + 10].join(" "));
-    const order = G.phi.map((_, i) => i).sort((a, b) => turnOf(G.phi[a]) - turnOf(G.phi[b]));
+  function drawDiagrams() {
+    clear(dsvg);
+    cursor = null;
+    if (!dg) { $("diagrams-section").hidden = true; return; }
+    dsvg.setAttribute("viewBox", [-34, -6, WIDTH + 44, 3 * (CH + GAP) + 12].join(" "));
+    dsvg.setAttribute("font-size", "4.6");
     ["s", "v", "a"].forEach((key, row) => {
       const y0 = row * (CH + GAP);
       const ex = dg.exact[key], ch = dg.chords[key];
       let lo = Math.min(0, ...ex, ...ch.map((c) => c[1])), hi = Math.max(0, ...ex, ...ch.map((c) => c[1]));
       if (hi - lo < 1e-12) hi = lo + 1;
       const X = (turn) => (turn / 360) * WIDTH, Y = (v) => y0 + CH - ((v - lo) / (hi - lo)) * CH;
-      const g = document.createElementNS(NS, "g");
-      dsvg.appendChild(g);
+      const g = el("g", {}, dsvg);
       const ln = (x1, y1, x2, y2, cls) => el("line", { x1: r3(x1), y1: r3(y1), x2: r3(x2), y2: r3(y2), class: cls }, g);
       ln(0, y0, 0, y0 + CH, "axis");
       ln(0, Y(0), WIDTH, Y(0), "axis");
       for (let t = 30; t <= 360; t += 30) ln(X(t), y0, X(t), y0 + CH, "grid");
       el("polyline", { points: order.map((i) => r3(X(turnOf(G.phi[i]))) + "," + r3(Y(ex[i]))).join(" "), class: "curve" }, g);
-      ch.forEach((c) => el("circle", { cx: r3(X(turnOf(c[0]))), cy: r3(Y(c[1])), r: 0.8, class: "chord" }, g));
-      const sym = dg.symbols[row] + "_" + dg.sub;
+      ch.forEach((c) => el("circle", { cx: r3(X(turnOf(c[0]))), cy: r3(Y(c[1])), r: 1, class: "chord" }, g));
       const u = { s: dg.unit, v: dg.unit + "/s", a: dg.unit + "/s²" }[key];
-      const t1 = el("text", { x: -26, y: y0 + 4, class: "scale" }, g); t1.textContent = sym + ", " + unit(u);
-      const t2 = el("text", { x: -26, y: y0 + 9, class: "scale" }, g); t2.textContent = fmtG(hi, 3);
-      const t3 = el("text", { x: -26, y: y0 + CH, class: "scale" }, g); t3.textContent = fmtG(lo, 3);
+      const t1 = el("text", { x: -32, y: y0 + 5, class: "dtext" }, g); svgMarkup(t1, dg.symbols[row] + "_{" + dg.sub + "}, " + unit(u), 4.6);
+      const t2 = el("text", { x: -32, y: y0 + 12, class: "dtext" }, g); t2.textContent = fmtG(hi, 3);
+      const t3 = el("text", { x: -32, y: y0 + CH, class: "dtext" }, g); t3.textContent = fmtG(lo, 3);
     });
-    const t = el("text", { x: WIDTH / 2, y: 3 * (CH + GAP) + 2, class: "scale", "text-anchor": "middle" }, dsvg);
-    t.textContent = W.turn;
+    for (let t = 0; t <= 360; t += 60) {
+      const tx = el("text", { x: r3((t / 360) * WIDTH), y: 3 * (CH + GAP) - GAP + 7, class: "dtext", "text-anchor": "middle" }, dsvg);
+      tx.textContent = String(t);
+    }
+    const t = el("text", { x: WIDTH / 2, y: 3 * (CH + GAP) + 5, class: "dtext", "text-anchor": "middle" }, dsvg);
+    t.textContent = W().turnAxis;
     cursor = el("line", { x1: 0, y1: -2, x2: 0, y2: 3 * (CH + GAP) - GAP + 2, class: "cursor", id: "diagram-cursor" }, dsvg);
-    $("diagrams-note").textContent = W.diagnote + dg.divisions + " × " + fmtG(360 / dg.divisions, 4) + "°, L = " + dg.L + W.mmw +
-      "; " + W.pole + dg.H1 + W.mmw + ", H2 = " + dg.H2 + W.mmw + "; μs = " + fmtMu(dg.mu.s) + ", μt = " + fmtMu(dg.mu.t) +
-      ", μv = " + fmtMu(dg.mu.v) + ", μa = " + fmtMu(dg.mu.a);
-  })();
+    setMarkup($("diagrams-note"), fill(W().diagnote, { n: dg.divisions, d: fmtG(360 / dg.divisions, 4), L: fmtG(dg.L, 4), H1: fmtG(dg.H1, 4),
+      H2: fmtG(dg.H2, 4), ms: fmtG(dg.mu.s, 4), mt: fmtG(dg.mu.t, 4), mv: fmtG(dg.mu.v, 4), ma: fmtG(dg.mu.a, 4) }));
+    moveCursor();
+  }
+  function moveCursor() {
+    if (!cursor) return;
+    const x = r3((turnOf(G.phi[index]) / 360) * WIDTH);
+    cursor.setAttribute("x1", x);
+    cursor.setAttribute("x2", x);
+  }
+  let seeking = false;
+  function seek(ev) {
+    const p = dsvg.createSVGPoint();
+    p.x = ev.clientX; p.y = ev.clientY;
+    const q = p.matrixTransform(dsvg.getScreenCTM().inverse());
+    show(nearestTurn(Math.min(359.999, Math.max(0, (q.x / WIDTH) * 360))));
+  }
+  dsvg.addEventListener("pointerdown", (ev) => { seeking = true; dsvg.setPointerCapture(ev.pointerId); seek(ev); });
+  dsvg.addEventListener("pointermove", (ev) => { if (seeking) seek(ev); });
+  dsvg.addEventListener("pointerup", () => { seeking = false; });
 
-  // -- the replay -----------------------------------------------------------------------------------------
+  // -- the replay --------------------------------------------------------------------------------------------------
   const sel = $("replay-plan"), rsvg = $("replay");
-  let current = null, stepNo = 0;
-  D.records.forEach((r, k) => {
-    const o = document.createElement("option");
-    o.value = String(k);
-    o.textContent = W[r.kind] + ", " + (r.index !== null ? W.position + " " + r.index : "φ = " + r.phi + "°");
-    sel.appendChild(o);
-  });
-  const firstAccel = D.records.findIndex((r) => r.kind === "acceleration");
-  function choose(k) {
+  let current = null, stepNo = 0, returnTo = null;
+  const replayZ = Zoomable(rsvg, () => showStep());
+  function planName(r) {
+    return W()[r.kind] + ", " + (r.index !== null ? fill(W().at, { k: r.index }) : "φ = " + fx(r.phi, 1) + "°");
+  }
+  function choose(k, moveMechanism) {
     current = D.records[k];
     sel.value = String(k);
     stepNo = 0;
     const box = [0, 0, 0, 0];
     recordBox(current, box);
-    fit(rsvg, box, 8);
+    replayZ.k = 1; replayZ.cx = 0.5; replayZ.cy = 0.5;
+    replayZ.fit(box, 30);
     const ol = $("step-list");
-    ol.innerHTML = "";
-    current.steps.forEach((s, n) => { const li = document.createElement("li"); li.setAttribute("data-step", String(n)); li.textContent = s.caption; ol.appendChild(li); });
+    ol.textContent = "";
+    current.steps.forEach((s, n) => {
+      const li = document.createElement("li");
+      li.setAttribute("data-step", String(n));
+      const b = document.createElement("button");
+      b.type = "button";
+      setMarkup(b, tr(s.caption));
+      b.addEventListener("click", () => { stepNo = n; showStep(); });
+      li.appendChild(b);
+      ol.appendChild(li);
+    });
+    if (moveMechanism) {
+      const target = nearest(current.phi);
+      if (target !== index) { returnTo = index; show(target, true); }
+    }
+    updateReturn();
     showStep();
   }
-  function showStep() {
-    clear(rsvg);
-    drawRecord(el("g", {}, rsvg), current, stepNo, stepNo);
-    const s = current.steps[stepNo];
-    $("step-caption").textContent = s.caption;
-    $("step-eq").textContent = s.eq;
-    $("step-count").textContent = W.step + " " + (stepNo + 1) + " " + W.of + " " + current.steps.length;
-    $("step-count").setAttribute("data-step", String(stepNo));
-    document.querySelectorAll("#step-list li").forEach((li, n) => { li.className = n < stepNo ? "done" : n === stepNo ? "current" : "todo"; });
+  function updateReturn() {
+    const b = $("replay-return");
+    b.hidden = returnTo === null;
+    if (returnTo !== null) b.textContent = fill(W().returnTo, { a: fx(G.phi[returnTo], 1) });
   }
-  sel.addEventListener("change", () => choose(parseInt(sel.value, 10)));
-  $("step-next").addEventListener("click", () => { if (stepNo < current.steps.length - 1) { stepNo++; showStep(); } });
-  $("step-back").addEventListener("click", () => { if (stepNo > 0) { stepNo--; showStep(); } });
+  function showStep() {
+    if (!current) return;
+    clear(rsvg);
+    const px = replayZ.px(), segs = [];
+    drawItems(el("g", {}, rsvg), current, stepNo, stepNo, px, segs);
+    const s = current.steps[stepNo];
+    if (s.meet) el("circle", { cx: r3(s.meet[1]), cy: r3(-s.meet[2]), r: r3(7 * px), class: "meet" }, rsvg);
+    const labels = [];
+    current.points.forEach((q) => { if (q[3] <= stepNo) labels.push({ at: [q[1], q[2]], text: q[0], cls: q[3] === stepNo ? "new" : "" }); });
+    const lg = el("g", { id: "replay-labels" }, rsvg);
+    placeLabels(lg, labels, segs, px);
+    setMarkup($("step-caption"), tr(s.caption));
+    setMarkup($("step-eq"), tr(s.eq));
+    const c = $("step-count");
+    c.textContent = fill(W().step, { k: stepNo + 1, n: current.steps.length });
+    c.setAttribute("data-step", String(stepNo));
+    document.querySelectorAll("#step-list li").forEach((li, n) => {
+      li.className = n < stepNo ? "done" : n === stepNo ? "current" : "todo";
+      const b = li.firstChild;
+      if (n === stepNo) b.setAttribute("aria-current", "step"); else b.removeAttribute("aria-current");
+    });
+  }
+  function stepBy(d) { if (!current) return; stepNo = Math.max(0, Math.min(current.steps.length - 1, stepNo + d)); showStep(); }
+  sel.addEventListener("change", () => choose(parseInt(sel.value, 10), true));
+  $("step-next").addEventListener("click", () => stepBy(1));
+  $("step-back").addEventListener("click", () => stepBy(-1));
   $("step-first").addEventListener("click", () => { stepNo = 0; showStep(); });
   $("step-last").addEventListener("click", () => { stepNo = current.steps.length - 1; showStep(); });
+  $("replay-return").addEventListener("click", () => { if (returnTo !== null) { const k = returnTo; returnTo = null; show(k, true); updateReturn(); } });
 
-  // -- the angle ----------------------------------------------------------------------------------------
+  // -- the self-check: the student's own lengths against the exact values ---------------------------------------
+  const checkSel = $("check-position");
+  const checkKeys = Object.keys(D.check || {}).filter((k) => D.check[k].length);
+  function checkRow(row, input, out) {
+    const [, , , mu, exact] = row;
+    const mm = parseFloat(String(input.value).replace(",", "."));
+    if (!isFinite(mm) || input.value === "") { out[0].textContent = ""; out[1].textContent = ""; out[1].removeAttribute("data-value"); return; }
+    const v = mm * mu;
+    out[0].textContent = fmtG(v, 4);
+    if (exact > 0) {
+      const e = 100 * (v - exact) / exact;
+      out[1].textContent = fx(e, 2);
+      out[1].setAttribute("data-value", String(e));
+      out[1].className = Math.abs(e) > 5 ? "bad" : "";
+    } else { out[1].textContent = "—"; }
+  }
+  function drawCheck() {
+    const key = checkSel.value, rows = D.check[key] || [];
+    const head = $("check").querySelector("thead"), body = $("check").querySelector("tbody");
+    head.textContent = "";
+    body.textContent = "";
+    const hr = document.createElement("tr");
+    [W().q, W().mu, W().yourMm, W().value, W().exact, W().error, W().theirs].forEach((h, k) => {
+      const th = document.createElement("th");
+      setMarkup(th, h);
+      if (k === 6) th.className = "reveal";
+      hr.appendChild(th);
+    });
+    head.appendChild(hr);
+    rows.forEach((row) => {
+      const [plan, entry, symbol, mu, exact, mm, err] = row;
+      const trow = document.createElement("tr");
+      trow.setAttribute("data-entry", plan + ":" + entry);
+      const th = document.createElement("th");
+      setMarkup(th, symbol + ", " + unit(plan === "velocity" ? "m/s" : "m/s²"));
+      trow.appendChild(th);
+      const tdMu = document.createElement("td"); tdMu.textContent = fmtG(mu, 4); trow.appendChild(tdMu);
+      const tdIn = document.createElement("td");
+      const input = document.createElement("input");
+      input.type = "text"; input.inputMode = "decimal"; input.setAttribute("aria-label", symbol.replace(/[_^{}]/g, "") + ", " + unit("mm"));
+      tdIn.appendChild(input); trow.appendChild(tdIn);
+      const out = [document.createElement("td"), document.createElement("td")];
+      out[0].className = "value"; out[1].className = "";
+      const tdEx = document.createElement("td"); tdEx.textContent = fmtG(exact, 4);
+      trow.appendChild(out[0]); trow.appendChild(tdEx); trow.appendChild(out[1]);
+      out[1].classList.add("error");
+      const tdTheirs = document.createElement("td");
+      tdTheirs.className = "reveal";
+      tdTheirs.textContent = fx(mm, 1) + "; " + (err === null ? "—" : fx(err, 2));
+      trow.appendChild(tdTheirs);
+      input.addEventListener("input", () => { checkRow(row, input, out); out[1].classList.add("error"); });
+      body.appendChild(trow);
+    });
+  }
+  checkSel.addEventListener("change", drawCheck);
+  $("check-reveal").addEventListener("change", () => $("check").classList.toggle("revealed", $("check-reveal").checked));
+
+  // -- the angle: the slider in the turn from position 0 ------------------------------------------------------------
   const slider = $("phi");
-  let index = nearest(D.phi0), timer = null;
-  function show(i) {
+  slider.min = "0";
+  slider.max = String(r3(turnOf(G.phi[order[N - 1]])));
+  slider.step = "any";
+  let timer = null;
+  function show(i, keepReturn) {
     index = i;
-    slider.value = String(G.phi[i]);
+    if (!keepReturn && returnTo !== null) { returnTo = null; updateReturn(); }
+    const turn = turnOf(G.phi[i]);
+    slider.value = String(turn);
     slider.setAttribute("data-index", String(i));
+    slider.setAttribute("aria-valuetext", fx(turn, 1) + "°, φ = " + fx(G.phi[i], 1) + "°");
     const lab = labKey[i];
-    $("phi-value").textContent = W.phi + " = " + fx(G.phi[i], 2) + "°" + (lab && lab.index !== null ? " — " + W.lab + lab.index : "");
+    $("turn-value").textContent = W().turn + ": " + fx(turn, 1) + "°";
+    $("turn-value").setAttribute("data-turn", String(turn));
+    $("phi-value").textContent = "φ = " + fx(G.phi[i], 2) + "°";
     $("phi-value").setAttribute("data-phi", String(G.phi[i]));
-    document.querySelectorAll("#lab-positions button").forEach((b) => { b.className = lab && b.getAttribute("data-key") === String(lab.key) ? "current" : ""; });
+    $("lab-now").textContent = lab && lab.index !== null ? W().lab + " " + lab.index : "";
+    document.querySelectorAll("#lab-positions button").forEach((b) => {
+      const on = !!lab && b.getAttribute("data-key") === String(lab.key);
+      b.className = on ? "current" : "";
+      b.setAttribute("aria-pressed", on ? "true" : "false");
+    });
     drawMechanism(i);
     drawPlan("velocity", i);
     drawPlan("acceleration", i);
     updateTable(i);
     updateWarnings(i);
-    if (cursor) { const x = r3((turnOf(G.phi[i]) / 360) * WIDTH); cursor.setAttribute("x1", x); cursor.setAttribute("x2", x); }
+    moveCursor();
   }
-  slider.addEventListener("input", () => show(nearest(parseFloat(slider.value))));
-  slider.addEventListener("change", () => show(nearest(parseFloat(slider.value))));
-  const dir = D.omega1 >= 0 ? 1 : -1;
-  $("next").addEventListener("click", () => show((index + dir + N) % N));
-  $("prev").addEventListener("click", () => show((index - dir + N) % N));
-  $("play").addEventListener("click", () => {
-    if (timer) { clearInterval(timer); timer = null; $("play").textContent = W.play; return; }
-    $("play").textContent = W.pause;
-    timer = setInterval(() => show((index + dir + N) % N), 40);
+  const stepAngle = (d) => show(order[(rank[index] + d + N) % N]);
+  const labs = D.positions.filter((p) => p.index !== null).sort((a, b) => turnOf(a.phi) - turnOf(b.phi));
+  const home = () => show(nearest((labs[0] || D.positions[0]).phi));
+  const end = () => show(nearest((labs[labs.length - 1] || D.positions[D.positions.length - 1]).phi));
+  slider.addEventListener("input", () => show(nearestTurn(parseFloat(slider.value))));
+  slider.addEventListener("keydown", (ev) => {
+    const keys = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1 };
+    if (ev.key in keys) { ev.preventDefault(); stepAngle(keys[ev.key]); }
+    else if (ev.key === "Home") { ev.preventDefault(); home(); }
+    else if (ev.key === "End") { ev.preventDefault(); end(); }
+    else if (ev.key === "PageUp" || ev.key === "PageDown") { ev.preventDefault(); stepAngle((ev.key === "PageUp" ? 1 : -1) * Math.max(1, Math.round(10 / D.step))); }
   });
+  $("next").addEventListener("click", () => stepAngle(1));
+  $("prev").addEventListener("click", () => stepAngle(-1));
+  function play() {
+    if (timer) { clearInterval(timer); timer = null; }
+    else {
+      const speed = parseFloat($("speed").value) || 1;       // 1×: 25 grid steps a second
+      const per = speed >= 1 ? Math.round(speed) : 1;
+      timer = setInterval(() => stepAngle(per), speed >= 1 ? 40 : 40 / speed);
+    }
+    playWords();
+  }
+  function playWords() { $("play").textContent = timer ? W().pause : W().play; $("play").setAttribute("aria-pressed", timer ? "true" : "false"); }
+  $("play").addEventListener("click", play);
+  $("speed").addEventListener("change", () => { if (timer) { play(); play(); } });
   D.positions.forEach((p) => {
     const b = document.createElement("button");
     b.type = "button";
     b.setAttribute("data-key", String(p.key));
     b.textContent = p.index !== null ? String(p.index) : fx(p.phi, 1) + "°";
-    b.title = W.lab + (p.index !== null ? p.index : "") + ", φ = " + fx(p.phi, 2) + "°";
-    b.addEventListener("click", () => show(nearest(p.phi)));
+    b.addEventListener("click", () => {
+      show(nearest(p.phi));
+      if (current) {           // the replay follows: the same kind of plan at this position
+        const k = D.records.findIndex((r) => r.key === p.key && r.kind === current.kind);
+        const any = k >= 0 ? k : D.records.findIndex((r) => r.key === p.key);
+        if (any >= 0) choose(any, false);
+      }
+      if (checkKeys.indexOf(String(p.key)) >= 0) { checkSel.value = String(p.key); drawCheck(); }
+    });
     $("lab-positions").appendChild(b);
   });
+  $("per-angle").addEventListener("change", () => {
+    ["velocity", "acceleration"].forEach((k) => { planZ[k].k = 1; planZ[k].cx = 0.5; planZ[k].cy = 0.5; planZ[k].fit(turnBox[k], 28); });
+    show(index, true);
+  });
+  document.addEventListener("keydown", (ev) => {
+    const t = ev.target, tag = t && t.tagName;
+    if (ev.altKey || ev.ctrlKey || ev.metaKey) return;
+    if (tag === "INPUT" && t.type !== "range" && t.type !== "checkbox") return;
+    if (tag === "SELECT" || tag === "TEXTAREA") return;
+    const inReplay = t && t.closest && t.closest("#replay-section");
+    if (ev.key === " " || ev.key === "Spacebar") {
+      if (tag === "BUTTON") return;           // a focused button is pressed by Space itself
+      ev.preventDefault(); play(); return;
+    }
+    if (t === slider) return;                 // the slider's own keys (above)
+    if (inReplay) {
+      if (ev.key === "ArrowRight") { ev.preventDefault(); stepBy(1); }
+      else if (ev.key === "ArrowLeft") { ev.preventDefault(); stepBy(-1); }
+      else if (ev.key === "Home") { ev.preventDefault(); stepNo = 0; showStep(); }
+      else if (ev.key === "End") { ev.preventDefault(); stepNo = current.steps.length - 1; showStep(); }
+      return;
+    }
+    if (ev.key === "ArrowRight") { ev.preventDefault(); stepAngle(1); }
+    else if (ev.key === "ArrowLeft") { ev.preventDefault(); stepAngle(-1); }
+    else if (ev.key === "Home") { ev.preventDefault(); home(); }
+    else if (ev.key === "End") { ev.preventDefault(); end(); }
+  });
 
-  // -- the words ---------------------------------------------------------------------------------------
-  $("facts").textContent = W.structure + D.structure + "; " + W.omega + fmtG(D.omega1, 5) + W.facts2 + "; φ0 = " + fx(D.phi0, 2) + "°";
-  $("play").textContent = W.play;
-  $("cap-mech").textContent = W.mech + fmtMu(muL) + (D.lang === "uk" ? " м/мм" : " m/mm");
-  $("cap-vplan").textContent = W.vplan + fmtMu(muV) + (D.lang === "uk" ? " (м/с)/мм" : " (m/s)/mm");
-  $("cap-aplan").textContent = W.aplan + fmtMu(muA) + (D.lang === "uk" ? " (м/с²)/мм" : " (m/s²)/mm");
-  $("cap-values").textContent = W.values;
-  $("values-note").textContent = W.note + D.precision + W.noteb + " " + W.plansnote + ".";
-  $("cap-warnings").textContent = W.warnings;
-  $("cap-replay").textContent = W.replay;
-  $("cap-diagrams").textContent = W.diagrams;
-  $("step-back").textContent = W.back;
-  $("step-next").textContent = W.next;
-  $("footer").textContent = W.footer;
-  choose(firstAccel >= 0 ? firstAccel : 0);
-  show(index);
-  window.graphplanExplorer = { show: show, nearest: nearest, phi: G.phi };
+  // -- the words of the page, in either language ------------------------------------------------------------------
+  function words() {
+    const w = W();
+    document.documentElement.lang = lang;
+    document.title = tr(D.title) + " — graphplan";
+    $("title").textContent = tr(D.title);
+    setMarkup($("facts"), w.structure + D.structure + fill(w.facts, { w: fmtG(D.omega1, 5), p: fx(D.phi0, 2) }));
+    document.querySelectorAll("#langs button").forEach((b) => b.setAttribute("aria-pressed", b.getAttribute("data-lang") === lang ? "true" : "false"));
+    $("langs").setAttribute("aria-label", w.langs);
+    playWords();
+    $("play").setAttribute("aria-label", w.playName);
+    $("speed-label").textContent = w.speed;
+    const sp = $("speed"), was = sp.value || "1";
+    sp.textContent = "";
+    ["0.25", "0.5", "1", "2", "4"].forEach((v) => { const o = document.createElement("option"); o.value = v; o.textContent = dec(v) + "×"; sp.appendChild(o); });
+    sp.value = was;
+    $("prev").setAttribute("aria-label", w.prev);
+    $("next").setAttribute("aria-label", w.next);
+    slider.setAttribute("aria-label", w.slider);
+    $("lab-positions").setAttribute("aria-label", w.labs);
+    document.querySelectorAll("#lab-positions button").forEach((b) => {
+      const p = D.positions.find((q) => String(q.key) === b.getAttribute("data-key"));
+      b.setAttribute("aria-label", (p.index !== null ? w.lab + " " + p.index + ", " : "") + "φ = " + fx(p.phi, 2) + "°");
+      b.title = b.getAttribute("aria-label");
+    });
+    $("per-angle-label").textContent = w.perAngle;
+    setMarkup($("cap-mech"), w.mech + fmtG(muL, 4) + " " + unit("m/mm"));
+    setMarkup($("cap-vplan"), w.vplan + fmtG(muV, 4) + " " + unit("(m/s)/mm"));
+    setMarkup($("cap-aplan"), w.aplan + fmtG(muA, 4) + " " + unit("(m/s²)/mm"));
+    ["mech", "vplan", "aplan"].forEach((id) => $(id).setAttribute("aria-label", $("cap-" + id).textContent));
+    $("zoom-note").textContent = w.zoom;
+    $("cap-values").textContent = w.values;
+    $("values").querySelector("thead").innerHTML = "";
+    const hr = document.createElement("tr");
+    [w.q, w.graphical, w.exact, w.error].forEach((h) => { const th = document.createElement("th"); th.textContent = h; hr.appendChild(th); });
+    $("values").querySelector("thead").appendChild(hr);
+    $("values-note").textContent = fill(w.note, { p: dec(String(D.precision)) });
+    $("cap-warnings").textContent = w.warnings;
+    $("cap-all").textContent = w.all;
+    allWarnings();
+    $("cap-replay").textContent = w.replay;
+    sel.setAttribute("aria-label", w.plan);
+    const chosen = sel.value;
+    sel.textContent = "";
+    D.records.forEach((r, k) => { const o = document.createElement("option"); o.value = String(k); o.textContent = planName(r); sel.appendChild(o); });
+    if (chosen) sel.value = chosen;
+    $("step-back").textContent = w.back;
+    $("step-next").textContent = w.forward;
+    $("step-back").setAttribute("aria-label", w.backName);
+    $("step-next").setAttribute("aria-label", w.forwardName);
+    $("step-first").setAttribute("aria-label", w.first);
+    $("step-last").setAttribute("aria-label", w.last);
+    $("replay").setAttribute("aria-label", w.replay);
+    $("cap-legend").textContent = w.legend;
+    const dl = $("legend");
+    dl.textContent = "";
+    w.symbols.forEach(([s, d]) => { const dt = document.createElement("dt"); setMarkup(dt, s); const dd = document.createElement("dd"); setMarkup(dd, d); dl.appendChild(dt); dl.appendChild(dd); });
+    $("cap-check").textContent = w.check;
+    $("check-note").textContent = w.checkNote;
+    $("check-position-label").textContent = w.checkAt;
+    $("check-reveal-label").textContent = w.reveal;
+    const ck = checkSel.value;
+    checkSel.textContent = "";
+    checkKeys.forEach((k) => {
+      const p = D.positions.find((q) => String(q.key) === k);
+      const o = document.createElement("option");
+      o.value = k;
+      o.textContent = p && p.index !== null ? String(p.index) : "φ = " + fx(p ? p.phi : 0, 1) + "°";
+      checkSel.appendChild(o);
+    });
+    if (ck) checkSel.value = ck;
+    $("check-section").hidden = !checkKeys.length;
+    $("cap-diagrams").textContent = w.diagrams;
+    $("diagrams").setAttribute("aria-label", w.diagrams);
+    $("footer").textContent = w.footer;
+  }
+  function setLanguage(l) {
+    lang = l;
+    const keep = [current ? D.records.indexOf(current) : -1, stepNo];
+    words();
+    drawDiagrams();
+    drawCheck();
+    if (keep[0] >= 0) { const r = returnTo; choose(keep[0], false); returnTo = r; updateReturn(); stepNo = keep[1]; showStep(); }
+    show(index, true);
+  }
+  document.querySelectorAll("#langs button").forEach((b) => b.addEventListener("click", () => setLanguage(b.getAttribute("data-lang"))));
+
+  // -- start: every drawing fitted to its panel, refitted when the window changes -------------------------------------
+  function fitAll() {
+    mechZ.fit(mechBox, 30);
+    ["velocity", "acceleration"].forEach((k) => planZ[k].fit($("per-angle").checked ? angleBox(k, index) : turnBox[k], 28));
+    if (current) { const box = [0, 0, 0, 0]; recordBox(current, box); replayZ.fit(box, 30); }
+  }
+  words();
+  drawDiagrams();
+  drawCheck();
+  fitAll();
+  const firstAccel = D.records.findIndex((r) => r.kind === "acceleration");
+  choose(firstAccel >= 0 ? firstAccel : 0, false);
+  show(index, true);
+  let resizeTimer = null;
+  window.addEventListener("resize", () => {
+    clearTimeout(resizeTimer);
+    resizeTimer = setTimeout(() => { fitAll(); show(index, true); showStep(); }, 60);
+  });
+  window.graphplanExplorer = { show: show, nearest: nearest, turnOf: turnOf, phi: G.phi, records: D.records,
+    choose: (k) => choose(k, true), step: () => stepNo, setLanguage: setLanguage };
 })();
