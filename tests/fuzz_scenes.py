@@ -20,6 +20,26 @@ BASE = tomllib.loads((ROOT / "examples" / "crank_slider.toml").read_text(encodin
 EXAMPLE_TREES = [tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted((ROOT / "examples").glob("*.toml"))]
 
 
+def _full_tree() -> dict:
+    """The shaper with every optional section a scene may have filled in — a motor given by its data
+    (with the printed ω's), the reducer, the diagrams' settings, the output named, a [sheet] — so that
+    mutating its leaves swaps the type of every section's every field (issue 26: the motor's fields)."""
+    tree = tomllib.loads((ROOT / "examples" / "shaper.toml").read_text(encoding="utf-8"))
+    tree["dynamics"].update({"motor": {"name": "m", "power_kW": 30.0, "rpm_sync": 1500, "rpm_rated": 1460,
+                                       "max_ratio": 2.2, "start_ratio": 2.0, "inertia": 0.01,
+                                       "omega_sync": 157.08, "omega_rated": 152.89},
+                             "ratio": 7.5, "rotor_inertia": 0.01, "reducer_inertia": 0.002,
+                             "first_stage_ratio": 3.0, "reducer_shafts": [0.0004, 0.002, 0.05]})
+    tree.pop("synchronous_rpm", None)
+    tree["dynamics"].pop("synchronous_rpm", None)
+    tree["diagrams"] = {"L_mm": 240, "H1_mm": 25, "H2_mm": 25, "divisions": 12, "point": "C"}
+    tree["positions"]["output"] = "C"
+    return tree
+
+
+FULL_TREE = _full_tree()
+
+
 # -- one run ----------------------------------------------------------------------------------
 
 def run(argv: list[str]) -> tuple[int, str, str]:
@@ -230,7 +250,8 @@ MALFORMED = st.one_of(
 
 # -- the release count (docs/benchmarks.md): python tests/fuzz_scenes.py N ------------------------
 
-COMMANDS = ("analyze", "plans", "diagrams", "forces")
+COMMANDS = ("analyze", "plans", "diagrams", "forces", "dynamics")
+SOMETIMES = ("sheet", "view")       # about a second a run: every tenth scene
 
 
 def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
@@ -244,13 +265,15 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
     from hypothesis import HealthCheck, given, settings
 
     tally = {"scenes": 0, "runs": 0, "exit0": 0, "exit2": 0, "internal": 0, "multiline": 0,
-             "warnings": 0, "nan_json": 0, "constraint": 0, "other_exit": 0}
+             "warnings": 0, "nan_json": 0, "constraint": 0, "other_exit": 0, "over_30s": 0,
+             "slowest_s": 0.0, "by_command": {}}
     failures: list[str] = []
     folder = tempfile.mkdtemp(prefix="graphplan-fuzz-")
     path = os.path.join(folder, "scene.toml")
     kinds = st.one_of(VALID.map(lambda s: ("valid", s[0])), NEAR_SINGULAR.map(lambda s: ("near", s[0])),
                       LOADED.map(lambda s: ("loaded", s[0])),
-                      mutated().map(lambda t: ("mutated", t)), MALFORMED.map(lambda t: ("malformed", t)))
+                      mutated().map(lambda t: ("mutated", t)), mutated(FULL_TREE).map(lambda t: ("types", t)),
+                      MALFORMED.map(lambda t: ("malformed", t)))
     start = time.perf_counter()
 
     @settings(max_examples=count, deadline=None, database=None, derandomize=False,
@@ -261,11 +284,21 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
         tally["scenes"] += 1
         with open(path, "wb") as fh:
             fh.write(text.encode("utf-8", "surrogatepass"))
-        for command in COMMANDS:
-            argv = [command, path, "--json"]
+        commands = COMMANDS + (SOMETIMES if tally["scenes"] % 10 == 0 else ())
+        for command in commands:
+            argv = [command, path, "--json"] if command not in SOMETIMES else \
+                [command, path, "-o", os.path.join(folder, "out." + ("svg" if command == "sheet" else "html"))] \
+                + (["--step", "5"] if command == "view" else [])
+            t0 = time.perf_counter()
             code, out, err = run(argv)
+            took = time.perf_counter() - t0
             tally["runs"] += 1
+            tally["by_command"][command] = tally["by_command"].get(command, 0) + 1
+            tally["slowest_s"] = round(max(tally["slowest_s"], took), 2)
             problem = None
+            if took > 30:
+                tally["over_30s"] += 1
+                problem = f"{took:.0f} s"
             if "internal error" in err:
                 tally["internal"] += 1
                 problem = "internal"
@@ -280,7 +313,7 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
                 problem = "multiline"
             else:
                 tally[f"exit{code}"] += 1
-                if code == 0:
+                if code == 0 and command not in SOMETIMES:
                     try:
                         doc = json.loads(out, parse_constant=_no_constant)
                     except AssertionError:

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from fuzz_scenes import LOADED, MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
+from fuzz_scenes import FULL_TREE, LOADED, MALFORMED, NEAR_SINGULAR, VALID, check_run, mutated, run
 from graphplan.model.mechanism import FRAME
 from graphplan.model.scene import loads
 
@@ -105,6 +105,16 @@ def test_mutated_scenes(tmp_path_factory, text):
     _through_commands(tmp_path_factory, text)
 
 
+@settings(**dict(QUICK, max_examples=max(2, QUICK["max_examples"] // 3)))
+@given(mutated(FULL_TREE))
+def test_every_sections_fields_of_the_wrong_type(tmp_path_factory, text):
+    """The shaper with every optional section filled in (a motor by its data, the reducer, the
+    diagrams, the output), one to three of its fields swapped for junk of another type: analyze and
+    dynamics end in an answer or one line (a motor's ω given as text used to end every command in
+    ValueError)."""
+    _through_commands(tmp_path_factory, text, commands=[("analyze", ["--json"]), ("dynamics", ["--json"])])
+
+
 @settings(**QUICK)
 @given(MALFORMED)
 def test_malformed_files(tmp_path_factory, text):
@@ -142,6 +152,17 @@ def test_sheets_of_random_mechanisms(tmp_path_factory, scene, suffix, kind):
     path = _scene(tmp_path_factory, scene[0])
     out = f"{path[:-5]}.{suffix}"
     argv = ["sheet", path, "-o", out, "--sheet", kind, "--positions", "8"]
+    code, _, err = run(argv)
+    check_run(argv, code, _, err)
+    assert (code == 0) == os.path.exists(out)
+
+
+@settings(**SHEET)
+@given(st.one_of(VALID, NEAR_SINGULAR))
+def test_the_explorer_of_random_mechanisms(tmp_path_factory, scene):
+    path = _scene(tmp_path_factory, scene[0])
+    out = f"{path[:-5]}.html"
+    argv = ["view", path, "-o", out, "--step", "5"]
     code, _, err = run(argv)
     check_run(argv, code, _, err)
     assert (code == 0) == os.path.exists(out)

@@ -278,6 +278,7 @@ def test_librecad_prints_the_sheet_on_its_own_format(tmp_path, a1):
     assert min(rows) == pytest.approx(5, abs=1) and max(rows) == pytest.approx(589, abs=1)
 
 
+@pytest.mark.slow             # 18 s: the sheet drawn twice; test_sheet_without_system_fonts_matches_the_gallery stays quick
 def test_without_fontconfig_the_lettering_goes_in_as_outlines(tmp_path, a1, monkeypatch):
     """Where cairo cannot be told about the packaged font, PDF and PNG letter with its outlines
     rather than with whatever font the machine has: no font in the PDF, the captions still drawn."""

@@ -31,7 +31,10 @@ def cmd_diagrams(args) -> int:
     lang = lang_of(args, st)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731
-    if args.format:                      # the sheet's L, height and pole distances unless given
+    from graphplan.sheets.kinematics import A1_POSITIONS
+    # the sheet's L, height and pole distances unless given; a scene of more positions than a sheet
+    # holds has no kinematics sheet, and its diagrams are drawn at their own scales
+    if args.format and st.mech.task.count <= A1_POSITIONS:
         from graphplan.sheets.kinematics import sheet_scales
         drawn = sheet_scales(st, args.format, None, None, args.precision)
         sheet = {"L_mm": drawn["L"], "H1_mm": drawn["H1"], "H2_mm": drawn["H2"]}

@@ -38,6 +38,7 @@ from graphplan.util.words import num
 
 Array = np.ndarray
 STEP_DEG = 0.25        # the cycle's table: at most this far between exact samples
+STIFF = 30.0           # relaxation per radian a/(I*·ω) beyond which the motor ODE is integrated as stiff
 RTOL = 1e-11           # solve_ivp's tolerances
 PERIODIC = 1e-11       # the shooting's tolerance on ω(2π) − ω(0), relative
 FINE = 7200            # samples per turn for ω_max, ω_min (refined by a parabola)
@@ -273,16 +274,18 @@ def extremes(turn: Array, values: Array) -> tuple[float, float]:
     return refine(int(np.argmax(values[:-1]))), refine(int(np.argmin(values[:-1])))
 
 
-def _integrate(c: Cycle, rhs, y0, dense: bool = True):
+def _integrate(c: Cycle, rhs, y0, dense: bool = True, stiff: bool = False):
     """dT/dφ = rhs(φ, T) piece by piece (the loads may bend at the breaks): the end value and the
     dense solutions. ``y0`` a number (the end a number) or a list (the end a list: the state with
-    its sensitivities)."""
+    its sensitivities). ``stiff``: a motor whose characteristic is steep against the machine's
+    inertia (dω/dφ relaxes faster than STIFF per radian) is integrated by LSODA, which switches to
+    an implicit method where it must — the explicit DOP853 would take millions of steps."""
     from scipy.integrate import solve_ivp
     sols = []
     scalar = not isinstance(y0, (list, tuple))
     y = [float(y0)] if scalar else [float(v) for v in y0]
     for lo, hi in zip(c.breaks_list[:-1], c.breaks_list[1:]):
-        sol = solve_ivp(rhs, (lo, hi), y, method="DOP853", rtol=RTOL, atol=RTOL * max(abs(y[0]), 1.0),
+        sol = solve_ivp(rhs, (lo, hi), y, method="LSODA" if stiff else "DOP853", rtol=RTOL, atol=RTOL * max(abs(y[0]), 1.0),
                         dense_output=dense)
         if sol.status != 0:
             return None, sols
@@ -419,6 +422,14 @@ def reducer_shafts(d, ratio: float) -> float:
     return i1 * ratio ** 2 + (i2 * (ratio / d.first_stage) ** 2 if i2 else 0.0) + i3
 
 
+def _stiff(c: Cycle, dr: Drive, const: float) -> bool:
+    """Whether the motor ODE is stiff: the relaxation of ω per radian, a/(I*·ω), with the
+    characteristic's slope a on the crank, the smallest reduced inertia and the synchronous speed."""
+    a = dr.ratio * dr.efficiency * abs(dr.motor.line[0]) * dr.ratio
+    smallest = float(np.min(c.inertia(np.linspace(0.0, 2 * math.pi, 361)))) + const
+    return a / (smallest * dr.omega_sync) > STIFF
+
+
 def _periodic_start(c: Cycle, dr: Drive, const: float, guess: float | None) -> float | None:
     """ω(0) of the motor's periodic steady state by Newton's method on T(2π) − T(0) = 0, the
     derivative ∂T(2π)/∂T(0) integrated alongside (dS/dφ = a·S/(I*·ω), M*_d = a·ω + b): a few
@@ -431,9 +442,10 @@ def _periodic_start(c: Cycle, dr: Drive, const: float, guess: float | None) -> f
         w = math.sqrt(max(2 * y[0] / inertia, 1e-300))
         return [dr.moment_scalar(w) - c.scalar(t, 1), a * y[1] / (inertia * w)]
     w0 = guess if guess and guess > 0 else dr.omega_sync * 0.98
+    stiff = _stiff(c, dr, const)
     for _ in range(12):
         t0 = 0.5 * i0 * w0 * w0
-        end, _ = _integrate(c, rhs, [t0, 1.0], dense=False)
+        end, _ = _integrate(c, rhs, [t0, 1.0], dense=False, stiff=stiff)
         if end is None or end[0] <= 0 or not all(math.isfinite(v) for v in end):
             return None
         gap = end[0] - t0
@@ -462,9 +474,10 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float, guess: float | None = Non
         return [dr.moment_scalar(w) - c.scalar(t, 1)]
 
     i0 = c.inertia(0.0) + const
+    stiff = _stiff(c, dr, const)
 
     def ret(w0: float) -> float:
-        end, _ = _integrate(c, rhs, 0.5 * i0 * w0 ** 2, dense=False)
+        end, _ = _integrate(c, rhs, 0.5 * i0 * w0 ** 2, dense=False, stiff=stiff)
         if end is None or end <= 0:
             return -w0
         return math.sqrt(2 * end / i0) - w0
@@ -479,7 +492,7 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float, guess: float | None = Non
         while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
             hi *= 1.05
         w0 = brentq(ret, lo, hi, xtol=PERIODIC * hi, rtol=1e-15, maxiter=200)
-    end, sols = _integrate(c, rhs, 0.5 * i0 * w0 ** 2)
+    end, sols = _integrate(c, rhs, 0.5 * i0 * w0 ** 2, stiff=stiff)
     turn, energy = _sample(c, sols)
     w = np.sqrt(2 * energy / (c.inertia(turn) + const))
     hi_w, lo_w = extremes(turn, w)

@@ -76,14 +76,26 @@ class Study:
         return np.mod((np.asarray(phi_deg) - self.phi0) * np.sign(self.mech.omega1), 360.0)
 
 
+def turns(mech: Mechanism, link: str) -> bool:
+    """Whether a link can turn: not a block that slides along a guide of the frame (it translates)."""
+    body = mech.links[link]
+    return not (body.slides_on is not None and len(body.joints) <= 1
+                and mech.guides[body.slides_on].body == FRAME)
+
+
 def default_output(mech: Mechanism, structure: Structure) -> Output:
     """The scene's ``output``, else the last group's slide on the frame, else its link pinned to the frame."""
     if mech.output is not None:
-        if mech.output in mech.links:
-            return Output("link", mech.output)
+        # a sliding point first: a crank-slider's slider is often named after its point (link "B"
+        # carrying the point B), and ``output = "B"`` means the point that slides
         for name, link in mech.links.items():
             if link.slides_on is not None and next(iter(link.local)) == mech.output:
                 return Output("slide", mech.output)
+        if mech.output in mech.links:
+            if not turns(mech, mech.output):
+                raise SceneError(f"positions.output: the link {mech.output!r} slides along a frame guide and "
+                                 "never turns; name its sliding point, or a link that turns", mech.source)
+            return Output("link", mech.output)
         raise SceneError(f"positions.output: {mech.output!r} is neither a link nor a sliding point",
                          mech.source)
     for dyad in reversed(structure.dyads):
@@ -124,7 +136,7 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]
                                     "coincide (transmission angle 0°), the crank cannot drive it through",
                                     mech.source)
             if dyad.kind == "RPR":
-                warnings += _block_near_pivot(kin, dyad, grid)
+                warnings += _block_near_pivot(mech, structure, kin, dyad, grid)
             angle = math.degrees(math.asin(min(worst, 1.0)))
             if angle < WARN_DEG:
                 warnings.append(said("warn near locking", dyad=_named(dyad), angle=Fixed(angle, 2),
@@ -158,14 +170,35 @@ def _beyond_reach(kin: Kinematics, dyad) -> np.ndarray:
     return far
 
 
-def _block_near_pivot(kin: Kinematics, dyad, grid) -> list[dict[str, str]]:
+def _block_near_pivot(mech: Mechanism, structure: Structure, kin: Kinematics, dyad, grid) -> list[dict[str, str]]:
     """A slotted link whose block passes close to the rocker's pivot turns violently there
-    (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value."""
+    (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value. When the block passes through
+    the pivot (ρ below 0.1 % of its largest value, found by refining the grid's closest angle twice,
+    each time on 2001 angles about it) the slotted link's direction is undefined there and its ω
+    unbounded: the mechanism locks, and the scene is refused naming the angle."""
     slider, carrier, outer_s, outer_c = dyad.block_parts
-    rho = np.abs(kin.point(outer_s.point)[0] - kin.point(outer_c.point)[0])
+
+    def rho_of(k_kin):
+        return np.abs(k_kin.point(outer_s.point)[0] - k_kin.point(outer_c.point)[0])
+
+    rho = rho_of(kin)
     k = int(np.argmin(rho))
-    if rho[k] >= 0.05 * np.max(rho):
+    largest = float(np.max(rho))
+    if rho[k] >= 0.05 * largest:
         return []
+    phi, near, step = float(grid[k]), float(rho[k]), 360.0 / len(grid)
+    for _ in range(2):
+        fine = phi + np.linspace(-step, step, 2001)
+        fine_rho = rho_of(solve(mech, structure, fine))
+        j = int(np.nanargmin(fine_rho))
+        if fine_rho[j] < near:
+            phi, near = float(fine[j]), float(fine_rho[j])
+        step /= 1000.0
+    if near < 1e-3 * largest:
+        raise AssemblyError(f"{dyad.title}: the block {outer_s.point} passes through the pivot {outer_c.point} "
+                            f"at crank angle {deg(phi % 360.0, 2)} (within {near * 1000:.2g} mm): the slotted "
+                            "link's direction is undefined there and its ω unbounded, the crank cannot drive it "
+                            "through", mech.source)
     w = float(np.max(np.abs(kin.bodies[carrier].omega)))
     return [said("warn block near pivot", dyad=_named(dyad), block=outer_s.point, mm=float(rho[k] * 1000),
                  pivot=outer_c.point, phi=Fixed(float(round(grid[k] % 360.0, 1) % 360.0), 1), w=w)]

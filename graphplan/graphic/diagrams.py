@@ -195,12 +195,14 @@ def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str
     return out, out.name, ("φ", "ω", "ε"), str(mech.links[out.name].number), "rad"
 
 
-def division_turns(divisions: int | Sequence[float], where: str = "divisions") -> np.ndarray:
-    """Crank turns (deg) of the division ordinates from position 0, ending with 360."""
+def division_turns(divisions: int | Sequence[float], where: str = "divisions",
+                   where_file: str | None = None) -> np.ndarray:
+    """Crank turns (deg) of the division ordinates from position 0, ending with 360; a refusal
+    names ``where`` (the key) and ``where_file`` (the scene)."""
     if isinstance(divisions, (int, np.integer)):
         n = int(divisions)
         if not 4 <= n <= MAX_DIVISIONS:
-            raise GraphplanError(f"{where} must be from 4 to {MAX_DIVISIONS}, got {n}")
+            raise GraphplanError(f"{where} must be from 4 to {MAX_DIVISIONS}, got {n}", where_file)
         return np.arange(n + 1) * 360.0 / n
     turns = np.asarray([float(d) for d in divisions])
     if turns.size == 0 or not np.all(np.isfinite(turns)):
@@ -297,7 +299,9 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
         raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
     mech = st.mech
     out, name, symbols, sub, unit = resolve_output(st, point)
-    turns = division_turns(mech.task.count if divisions is None else divisions)
+    turns = division_turns(mech.task.count if divisions is None else divisions,
+                           "positions.count (the diagrams' divisions when [diagrams] divisions is not given)"
+                           if divisions is None else "divisions", mech.source)
 
     cycle_turn = np.arange(CYCLE + 1) * 360.0 / CYCLE
     s_c, v_c, a_c = exact_motion(st, out, cycle_turn)
@@ -362,6 +366,23 @@ def rms(a: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.square(a)))) if len(a) else 0.0
 
 
+def _amplified(ruler: dict, lang: str) -> str:
+    """How each differentiation multiplies the reading error; a stage drawn exactly (no error to
+    amplify: the tangents' directions alone err) is said so instead of an infinite factor."""
+    parts = []
+    for k, (en, uk) in enumerate((("the first differentiation", "перше диференціювання"),
+                                   ("the second", "друге"))):
+        f = ruler["first" if k == 0 else "second"]
+        if f is None:
+            parts.append(f"{en} starts from an exact curve (its error is the tangents' own)" if lang == "en"
+                         else f"{uk} починається з точної кривої (похибка — від напрямів дотичних)")
+        else:
+            parts.append(f"{en} amplifies it ×{f:.1f}" if lang == "en" and k == 0 else
+                         f"{en} ×{f:.1f}" if lang == "en" else
+                         f"{uk} підсилює її ×{fixed(f, 'uk', 1)}" if k == 0 else f"{uk} ×{fixed(f, 'uk', 1)}")
+    return ", ".join(parts)
+
+
 def ruler_effect(d: Diagrams) -> dict[str, float] | None:
     """The ruler's share of the error: drawing at the precision minus the exact drawing, RMS in
     percent of each diagram's maximum, and the factor each differentiation multiplies it by."""
@@ -373,7 +394,9 @@ def ruler_effect(d: Diagrams) -> dict[str, float] | None:
     v = 100 * rms(dr.v - ex.v) / mx["v"]
     a = 100 * rms(dr.a - ex.a) / mx["a"]
     return {"s_rms_pct": s, "v_rms_pct": v, "a_rms_pct": a,
-            "first": v / s if s > 0 else math.inf, "second": a / v if v > 0 else math.inf,
+            # no amplification to speak of where the stage before is exact (precision 0 with the
+            # tangents' angular error: s is drawn exactly, v's error is the tangents' own)
+            "first": v / s if s > 0 else None, "second": a / v if v > 0 else None,
             "v_max_pct": 100 * float(np.max(np.abs(dr.v - ex.v))) / mx["v"],
             "a_max_pct": 100 * float(np.max(np.abs(dr.a - ex.a))) / mx["a"]}
 
@@ -469,12 +492,9 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
             uk += f" і дотичних ±{d.angle_error_deg:g}°"
         out.append({"kind": "ruler", "amplification_first": ruler["first"],
                     "amplification_second": ruler["second"],
-                    "message": f"{en} reading error (RMS, % of the maximum): {errs}; "
-                               f"the first differentiation amplifies it ×{ruler['first']:.1f}, the second "
-                               f"×{ruler['second']:.1f}",
+                    "message": f"{en} reading error (RMS, % of the maximum): {errs}; " + _amplified(ruler, "en"),
                     "message_uk": f"похибка відліку лінійкою {num(d.precision, 'uk')} мм (СКВ, % від максимуму): "
-                                  f"{errs.replace('.', ',')}; перше диференціювання підсилює її "
-                                  f"×{fixed(ruler['first'], 'uk', 1)}, друге ×{fixed(ruler['second'], 'uk', 1)}"})
+                                  f"{errs.replace('.', ',')}; " + _amplified(ruler, "uk")})
     for sym, rd, H, opt in ((d.symbols[1], d.drawn.v, d.H1, "--h1"), (d.symbols[2], d.drawn.a, d.H2, "--h2")):
         tall = float(np.ptp(np.append(rd, 0.0)))
         if tall > 200 or tall < 15:

@@ -33,13 +33,17 @@ class Range:
     hi: float
     unit: str
     lo_open: bool = False
+    floor: float = 0.0      # a physical floor: 0 < value < floor is refused (5e-324 kg is no mass)
 
     def holds(self, value: float) -> bool:
         above = value > self.lo if self.lo_open else value >= self.lo
-        return math.isfinite(value) and above and value <= self.hi
+        return math.isfinite(value) and above and value <= self.hi and not 0.0 < abs(value) < self.floor
 
     def text(self) -> str:
         unit = f" {self.unit}" if self.unit else ""
+        if self.floor:
+            zero = "0 or " if not self.lo_open else ""
+            return f"{zero}from {self.floor:g} to {self.hi:g}{unit}"
         if self.lo == -self.hi:
             return f"|value| ≤ {self.hi:g}{unit}"
         return f"from {self.lo:g}{' (exclusive)' if self.lo_open else ''} to {self.hi:g}{unit}"
@@ -50,11 +54,11 @@ COORDINATE = Range(-1e3, 1e3, "m")             # a frame point, a guide's point,
 OMEGA = Range(1e-3, 1e5, "rad/s")              # 0.01 … 955 000 rpm
 RPM = Range(0.01, 1e6, "rpm")
 EPSILON = Range(-1e8, 1e8, "rad/s²")
-MASS = Range(0.0, 1e6, "kg")
-INERTIA = Range(0.0, 1e6, "kg·m²")
-MASS_PER_LENGTH = Range(0.0, 1e6, "kg/m", lo_open=True)
+MASS = Range(0.0, 1e6, "kg", floor=1e-6)                   # 0 (massless) or from 1 mg
+INERTIA = Range(0.0, 1e6, "kg·m²", floor=1e-12)
+MASS_PER_LENGTH = Range(0.0, 1e6, "kg/m", lo_open=True, floor=1e-6)
 INERTIA_FACTOR = Range(0.0, 10.0, "", lo_open=True)   # I = k·m·l², a rod's k = 1/12
-FORCE = Range(0.0, 1e9, "N", lo_open=True)
+FORCE = Range(0.0, 1e9, "N", lo_open=True, floor=1e-6)
 GRAVITY = Range(0.0, 1e3, "m/s²")
 ANGLE = Range(-1e6, 1e6, "deg")
 TIME_RATIO = Range(1.0, 100.0, "", lo_open=True)      # K of the quick-return synthesis

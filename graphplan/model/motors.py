@@ -106,6 +106,13 @@ def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
                          f"{line[-1].power_kW:g} kW)", where)
 
 
+# what a motor's data may hold (lowest, highest, unit): the catalogue's motors reach 315 kW and 3000 rpm;
+# a value beyond these is a typo, and 1e308 kW would overflow the dynamics' integration
+_RANGES = {"power_kW": (0.0, 1e5, "kW"), "rpm_sync": (0.0, 1e5, "rpm"), "rpm_rated": (0.0, 1e5, "rpm"),
+           "max_ratio": (1.0, 20.0, ""), "start_ratio": (0.0, 20.0, ""), "inertia": (0.0, 1e3, "kg·m²"),
+           "omega_sync": (0.0, 1e4, "rad/s"), "omega_rated": (0.0, 1e4, "rad/s")}
+
+
 def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, list[tuple[str, str]]]:
     """A motor given by its data in a scene: name, power_kW, rpm_sync, rpm_rated, max_ratio,
     start_ratio, inertia and, as papers print them, omega_sync/omega_rated (rad/s). The angular
@@ -118,13 +125,17 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
         raise GraphplanError(f"{key}.{unknown[0]}: unknown key (allowed: {', '.join(sorted(allowed))})", where)
     base = find(str(raw["name"]), where) if "name" in raw and not ({"power_kW", "rpm_rated"} & set(raw)) else None
     values = dict(base.__dict__) if base else {"name": str(raw.get("name", "motor"))}
-    for field in ("power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia"):
+    for field in ("power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia",
+                  "omega_sync", "omega_rated"):
         if field in raw:
-            v = raw[field]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0 \
-                    or (v == 0 and field != "inertia"):
-                raise GraphplanError(f"{key}.{field}: must be a positive number, got {v!r}", where)
-            values[field] = float(v)
+            v, (lo, hi, unit) = raw[field], _RANGES[field]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) \
+                    or not (lo <= v <= hi) or (v == 0 and field != "inertia"):
+                shown = repr(v) if isinstance(v, (int, float, str)) else type(v).__name__
+                raise GraphplanError(f"{key}.{field}: must be a {'positive ' if field != 'inertia' else ''}"
+                                     f"number up to {hi:g} {unit}, got {shown[:40]}", where)
+            if not field.startswith("omega"):
+                values[field] = float(v)
     for need in ("power_kW", "rpm_sync", "rpm_rated"):
         if need not in values:
             raise GraphplanError(f"{key}.{need}: missing (or name a catalogue motor)", where)

@@ -267,6 +267,8 @@ class _Reader:
             raise self.fail("crank.direction", f'must be "ccw" or "cw", got {direction!r}')
         omega = speed if direction == "ccw" else -speed
         name = self.name(raw.get("name", pivot + pin), "crank.name")
+        if name == FRAME:
+            raise self.fail("crank.name", f"{FRAME!r} is the frame's name; call the crank otherwise")
         local = {pivot: 0j, pin: complex(length, 0)}
         self.read_points(raw.get("shape"), "crank.shape", length, local)
         self.read_points(raw.get("points"), "crank.points", length, local)

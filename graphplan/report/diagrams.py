@@ -15,6 +15,9 @@ if TYPE_CHECKING:
 
 
 def _num(v) -> float | None:
+    """A finite number, or None (JSON null) for a value that is not one (no amplification, no error)."""
+    if v is None:
+        return None
     v = float(v)
     return v if math.isfinite(v) else None
 

@@ -802,7 +802,9 @@ def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, ac
                  precision: float = 0.5) -> dict[str, float]:
     """The scales the kinematics sheet of ``format`` draws with — μl, μv, μa of the plans and the
     diagrams' L, height, H1, H2 — for the terminal's ``plans``/``diagrams``, the API and the explorer
-    to print what the sheet draws. Arithmetic on the drawings' sizes: no sheet is built."""
+    to print what the sheet draws. Arithmetic on the drawings' sizes: no sheet is built. More
+    positions than a sheet holds are refused first (the layout of 3600 plans would take minutes)."""
+    check_positions(st, SheetOptions(positions=positions, accel=accel, precision=precision))
     p, _, _ = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
     opts = diagram_options(st, p.diagrams, positions)
     return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
@@ -815,10 +817,13 @@ A1_POSITIONS = 40     # an A1 sheet holds about 40 velocity plans at a legible s
 def check_positions(st: Study, options) -> None:
     """A sheet set holds a bounded number of velocity plans (about 40, what an A1 sheet holds; a
     smaller format spreads them over more sheets): more is refused before any plan is built."""
-    count = options_of(options).positions or st.mech.task.count
+    given = options_of(options).positions
+    count = given or st.mech.task.count
     if count > A1_POSITIONS:
-        raise GraphplanError(f"--positions {count}: a kinematics sheet holds at most {A1_POSITIONS} "
-                             "positions' plans; choose fewer positions", st.mech.source)
+        key = f"--positions {count}" if given else f"positions.count = {count}"
+        raise GraphplanError(f"{key}: a kinematics sheet holds at most {A1_POSITIONS} positions' plans "
+                             "(one velocity plan a position); choose fewer positions, or --format none "
+                             "for the plans at their own scales", st.mech.source)
 
 
 def drawings(st: Study, p: Plan, dr: Drafter, lang: str) -> dict:
