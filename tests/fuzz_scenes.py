@@ -268,6 +268,7 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
              "warnings": 0, "nan_json": 0, "constraint": 0, "other_exit": 0, "over_30s": 0,
              "slowest_s": 0.0, "by_command": {}}
     failures: list[str] = []
+    seen: dict[str, int] = {}
     folder = tempfile.mkdtemp(prefix="graphplan-fuzz-")
     path = os.path.join(folder, "scene.toml")
     kinds = st.one_of(VALID.map(lambda s: ("valid", s[0])), NEAR_SINGULAR.map(lambda s: ("near", s[0])),
@@ -327,16 +328,19 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
                             except AssertionError as exc:
                                 tally["constraint"] += 1
                                 problem = f"constraint {exc}"
-            if problem and len(failures) < 20:
-                failures.append(f"{problem}: {command} [{kind}] {err.strip()[:200]} :: {text[:300]!r}")
+            if problem:                    # up to 3 scenes of each kind of failure, whole
+                said = f"{problem}: {command} {err.strip()[:100]}"
+                seen[said] = seen.get(said, 0) + 1
+                if seen[said] <= 3 and len(failures) < 60:
+                    failures.append(f"{said} [{kind}] :: {text[:4000]!r}")
         if progress and tally["scenes"] % 250 == 0:
             tally["seconds"] = round(time.perf_counter() - start, 1)
-            Path(progress).write_text(json.dumps({"tally": tally, "failures": failures}, indent=1))
+            Path(progress).write_text(json.dumps({"tally": tally, "kinds": seen, "failures": failures}, indent=1))
 
     random.seed(seed)
     one()
     tally["seconds"] = round(time.perf_counter() - start, 1)
-    return {"tally": tally, "failures": failures}
+    return {"tally": tally, "kinds": seen, "failures": failures}
 
 
 if __name__ == "__main__":

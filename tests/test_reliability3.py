@@ -189,3 +189,113 @@ def test_3600_positions_plans_at_their_own_scales_and_diagrams_of_12_divisions(t
 
 def test_too_many_divisions_name_the_file_and_the_key(tmp_path):
     ends(["diagrams", lab_3600(tmp_path, divisions=False)], 2, "positions.count", "from 4 to 720")
+
+
+def test_a_yoke_whose_slot_is_a_hair_off_its_guide_is_refused_at_a_sheets_scales(tmp_path):
+    """The Scotch yoke's slot 0.0625° off its guide (the fuzz census): no standard scale draws its
+    velocity plans on a sheet — the search for one used to run off to an infinite μ (OverflowError);
+    now one line, and the terminal's own scales still answer."""
+    import random_mechanisms as rm
+    text, _ = rm.rpp(0.0625, 0.0625, 0.0, 1.0)
+    path = scene(tmp_path, text)
+    ends(["plans", path], 2, "cannot be drawn on a A1 sheet at any scale")
+    ends(["plans", path, "--format", "none", "--json"], 0)
+    ends(["diagrams", path, "--json"], 0)          # the diagrams need no plan: drawn at their own scales
+
+
+# -- students' tables ------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def keys(tmp_path_factory) -> Path:
+    folder = tmp_path_factory.mktemp("keys")
+    table = folder / "variants.csv"
+    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n"
+                     "02,0.05,0.2\n", encoding="utf-8")
+    code, _, err = run(["key", str(table), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 0, err
+    return folder / "keys"
+
+
+def exact_vb(keys: Path, position: int = 1) -> float:
+    doc = json.loads((keys / "01" / "key.json").read_text(encoding="utf-8"))
+    return doc["positions"][position]["values"]["v_B"]
+
+
+def student(tmp_path: Path, text: str, name: str = "student.csv") -> Path:
+    path = tmp_path / name
+    path.write_bytes(text.encode("utf-8"))
+    return path
+
+
+@pytest.mark.parametrize("text, words", [
+    # a spare column: "11,09" unquoted lands 09 in the note column (was read as 11 and passed)
+    ("variant,position,quantity,value,note\n01,1,v_B,11,09\n", ["line 2", "'11' and then '09'", "decimal comma"]),
+    # the key.csv layout a student fills in: "7,2" spills into the unit column (was 7, "fits position 5")
+    ("variant,position,quantity,value,unit,tolerance_pct,phi_deg\n01,1,v_B,7,2\n", ["line 2", "'7' and then '2'"]),
+    # a wide table's value spilling into an unnamed column
+    ("position,v_B,\n1,11,08\n", ["line 2", "'11' and then '08'"]),
+    # a thousands dot or a decimal point?
+    ("variant;position;quantity;value\n01;1;a_B;5.351\n", ["line 2", "5.351", "thousands"]),
+    # an underflow, refused like an overflow
+    ("variant,position,quantity,value\n01,1,v_B,1e-400\n", ["line 2", "1e-400", "underflows"]),
+])
+def test_student_tables_that_cannot_be_read_for_sure_are_refused(tmp_path, keys, text, words):
+    path = student(tmp_path, text)
+    code, out, err = run(["check", str(keys), str(path)])
+    check_run(["check"], code, out, err)
+    assert code == 2, out
+    for w in words:
+        assert w in err, (w, err)
+
+
+def test_a_decimal_comma_in_a_semicolon_table_and_a_spare_empty_note_are_read(tmp_path, keys):
+    vb = exact_vb(keys)
+    text = f"variant;position;quantity;value;note\n01;1;v_B;{vb:.2f}".replace(".", ",") + ";\n"
+    code, out, err = run(["check", str(keys), str(student(tmp_path, text)), "--json"])
+    assert code == 0, err
+    row = json.loads(out)["rows"][0]
+    assert row["pass"] and row["value"] == pytest.approx(round(vb, 2))
+
+
+def test_line_numbers_are_the_files_lines_whatever_the_unicode_breaks(tmp_path, keys):
+    """U+2028 and a form feed are no line ends for a CSV file: the rows keep their real line numbers
+    (they used to be numbered past the file's end)."""
+    vb = exact_vb(keys)
+    text = f"variant,position,quantity,value\n01,1,v_B,{vb:.3f}\u2028\n01,1,v_B,{vb:.3f}\f\n01,1,v_B,oops\n"
+    code, _, err = run(["check", str(keys), str(student(tmp_path, text))])
+    assert code == 2 and "line 4:" in err, err
+    assert text.count("\n") == 4
+
+
+def big_table(n: int, seed: int = 3) -> str:
+    import random
+    rnd = random.Random(seed)
+    names = ["v_B", "a_B", "v_S2", "omega_AB", "a_S2", "epsilon_AB"]
+    rows = [f"0{1 + k % 2},{k % 12},{names[k % 6]},{rnd.uniform(1, 100):.3f}" for k in range(n)]
+    return "variant,position,quantity,value\n" + "\n".join(rows) + "\n"
+
+
+def test_batched_search_finds_the_angles_one_search_finds(tmp_path, keys):
+    """The failed rows' searches run batched per variant and quantity: each row's fit (position,
+    crank angles) is what a search of that row alone finds."""
+    from graphplan.teach.grading import grade, load_keys, read_student
+    path = student(tmp_path, big_table(300))
+    loaded = load_keys(keys)
+    rows = read_student(path)
+    together = grade(loaded, rows)
+    for k in range(0, 300, 37):
+        alone = grade(load_keys(keys), [rows[k]])[0]
+        assert alone.status == together[k].status and alone.note == together[k].note
+        if alone.fits:
+            assert alone.fits["angles_deg"] == pytest.approx(together[k].fits["angles_deg"], abs=1e-7)
+
+
+@pytest.mark.slow
+def test_a_faculty_table_of_100000_rows_is_graded_in_seconds(tmp_path, keys):
+    path = student(tmp_path, big_table(100_000))
+    t = time.perf_counter()
+    code, out, err = run(["check", str(keys), str(path), "--json"])
+    took = time.perf_counter() - t
+    assert code == 0, err
+    assert len(json.loads(out)["rows"]) == 100_000
+    assert took < 30, took

@@ -34,9 +34,14 @@ def cmd_diagrams(args) -> int:
     from graphplan.sheets.kinematics import A1_POSITIONS
     # the sheet's L, height and pole distances unless given; a scene of more positions than a sheet
     # holds has no kinematics sheet, and its diagrams are drawn at their own scales
+    drawn = None
     if args.format and st.mech.task.count <= A1_POSITIONS:
-        from graphplan.sheets.kinematics import sheet_scales
-        drawn = sheet_scales(st, args.format, None, None, args.precision)
+        from graphplan.sheets.kinematics import PlansUndrawable, sheet_scales
+        try:
+            drawn = sheet_scales(st, args.format, None, None, args.precision)
+        except PlansUndrawable:           # no sheet draws its plans: the diagrams at their own scales
+            drawn = None
+    if drawn is not None:
         sheet = {"L_mm": drawn["L"], "H1_mm": drawn["H1"], "H2_mm": drawn["H2"]}
         pick = lambda given, key, default: given if given is not None else sheet.get(key, scene.get(key, default))  # noqa: E731
         if args.height is None and args.divisions is None and args.L is None:

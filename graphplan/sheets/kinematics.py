@@ -724,12 +724,19 @@ def _set(dr: Drafter, nat: Natural, f: Form) -> Plan:
         return (w <= width and h <= keep[1] + height - keep[3]) or (w <= keep[0] - region[0] and h <= height)
     fams = nat.families
     floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
+    def fitted(fam: str, mu: float) -> float:
+        """The finest μ from ``mu`` on at which the family fits an empty sheet; a family no μ fits
+        (a size that does not shrink: lettering alone, or no finite size) is refused in one line."""
+        for _ in range(90):                     # 30 decades of the standard series
+            if alone(fams[fam].size(mu)):
+                return mu
+            mu = coarser(mu)
+        raise PlansUndrawable(f"the {fam} plans cannot be drawn on a {f.name} sheet at any scale (a plan of "
+                             "directions nearly parallel?); the terminal's commands take --format none",
+                             dr.st.mech.source if hasattr(dr, "st") else None)
     for fam in floor:                       # … unless a plan that large fits no sheet
-        while not alone(fams[fam].size(floor[fam])):
-            floor[fam] = coarser(floor[fam])
-    top = fams["position"].start(2.0)
-    while not alone(fams["position"].size(top)):
-        top = coarser(top)
+        floor[fam] = fitted(fam, floor[fam])
+    top = fitted("position", fams["position"].start(2.0))
     best = None
     for k in [k for k in DIAGRAM_SIZES if alone(diagrams_size(dr, nat, k))] or DIAGRAM_SIZES[-1:]:
         dsize = diagrams_size(dr, nat, k)
@@ -809,6 +816,10 @@ def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, ac
     opts = diagram_options(st, p.diagrams, positions)
     return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
             "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"]}
+
+
+class PlansUndrawable(GraphplanError):
+    """No standard scale draws a family of plans on the sheet (a size that does not shrink)."""
 
 
 A1_POSITIONS = 40     # an A1 sheet holds about 40 velocity plans at a legible scale

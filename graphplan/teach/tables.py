@@ -28,6 +28,10 @@ _MINUSES = "\u2212\u2012\u2013\ufe63\uff0d"       # minus sign, figure dash, en 
 _PLAIN = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$")
 _GROUPED = re.compile(r"^[+-]?\d{1,3}([ ]\d{3})+([.,]\d*)?$")
 _THOUSANDS_COMMA = re.compile(r"^[+-]?\d{1,3}(,\d{3})+$")
+_THOUSANDS_DOT = re.compile(r"^[+-]?[1-9]\d{0,2}(\.\d{3})+$")      # 5.351: a decimal point or thousands?
+_INTEGER = re.compile(r"^[+-]?\d+$")
+_DIGITS = re.compile(r"^\d+$")
+_LINES = re.compile(r"\r\n|\r|\n")
 
 
 def decode(data: bytes, where: str) -> str:
@@ -63,7 +67,9 @@ def read_rows(path: str | Path, what: str = "student table") -> tuple[list[tuple
     text = decode(data, where)
     if "\x00" in text:
         raise GraphplanError(f"the {what} is not text (it holds zero bytes)", where)
-    numbered = [(n + 1, line) for n, line in enumerate(text.splitlines())
+    # lines end as a file's lines do (\n, \r\n, \r): str.splitlines would also break at U+2028, a
+    # form feed or U+0085 and number the lines past the file's end; those stay in their cells
+    numbered = [(n + 1, line) for n, line in enumerate(_LINES.split(text))
                 if line.strip() and not line.lstrip().startswith("#")]
     if not numbered:
         raise GraphplanError(f"the {what} is empty", where)
@@ -109,9 +115,20 @@ def number(text: str, delimiter: str) -> float:
         if s.count(",") > 1:
             raise ValueError("more than one decimal comma")
         s = s.replace(",", ".")
+    elif delimiter == ";" and _THOUSANDS_DOT.match(s):
+        raise ValueError("is the dot a decimal point or between thousands? in a ';' table write 5,351 or 5351")
     if not _PLAIN.match(s):
         raise ValueError("not a number")
     value = float(s)
     if not abs(value) <= MAX_VALUE:
         raise ValueError(f"|value| ≤ {MAX_VALUE:g}")
+    if value == 0.0 and re.search(r"[1-9]", s.split("e")[0].split("E")[0]):
+        raise ValueError("too small: it underflows to 0")
     return value
+
+
+def split_comma(cells: list[str], k: int, delimiter: str) -> bool:
+    """Whether the value in cell ``k`` looks like a decimal comma split across cells: a comma-separated
+    table, an integer there and a cell of digits only right after it ("11,09" → "11" | "09")."""
+    return (delimiter == "," and k + 1 < len(cells) and bool(_INTEGER.match(cells[k].strip()))
+            and bool(_DIGITS.match(cells[k + 1].strip())))
