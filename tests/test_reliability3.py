@@ -299,3 +299,32 @@ def test_a_faculty_table_of_100000_rows_is_graded_in_seconds(tmp_path, keys):
     assert code == 0, err
     assert len(json.loads(out)["rows"]) == 100_000
     assert took < 30, took
+
+
+# -- keys written whole ----------------------------------------------------------------------------------
+
+def test_a_key_set_appears_under_its_name_only_when_whole(tmp_path):
+    """The run writes into a hidden folder beside the target and renames it when done: a new target
+    appears whole (summary included) and nothing else is left; a second run into the same folder
+    replaces the variants and the summary and keeps the teacher's own files; a run that builds no
+    variant leaves no folder at all. (A killed run: tests/test_reliability.py.)"""
+    table = tmp_path / "v.csv"
+    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n",
+                     encoding="utf-8")
+    out = tmp_path / "keys"
+    code, _, err = run(["key", str(table), "-o", str(out), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 0, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["keys", "v.csv"]
+    assert (out / "summary.json").exists() and (out / "01" / "key.json").exists()
+    (out / "students.csv").write_text("mine\n", encoding="utf-8")
+    (out / "01" / "stale.txt").write_text("old\n", encoding="utf-8")
+    code, _, err = run(["key", str(table), "-o", str(out), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 0, err
+    assert (out / "students.csv").read_text(encoding="utf-8") == "mine\n"
+    assert not (out / "01" / "stale.txt").exists()          # the variant's folder is the new one
+    bad = tmp_path / "bad.csv"
+    bad.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.5,0.1\n",
+                   encoding="utf-8")
+    code, _, err = run(["key", str(bad), "-o", str(tmp_path / "none"), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 2 and "nothing written" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.csv", "keys", "v.csv"]

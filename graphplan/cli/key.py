@@ -223,8 +223,6 @@ def _report(result: dict[str, Any], progress: Progress) -> None:
 def cmd_key(args: argparse.Namespace) -> int:
     from graphplan.model import variants as vt
     from graphplan.cli.main import dumps
-    from graphplan.teach.keysheet import A4_LANDSCAPE, summary_sheet
-    from graphplan.drawing.svg import render
 
     table = vt.read(args.variants)
     vt.check_columns(table)
@@ -239,8 +237,54 @@ def cmd_key(args: argparse.Namespace) -> int:
     jobs = args.jobs or min(os.cpu_count() or 1, 8, len(table.variants))
     progress = Progress(len(table.variants), enabled=not args.quiet and sys.stderr.isatty())
     lang = lang_of(args)
-    results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf, lang), jobs, progress)
-    progress.close()
+    final, out = out, staging(out)
+    try:
+        results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf, lang), jobs, progress)
+        progress.close()
+        text, doc = _summary(args, table, results, out, lang)
+    except BaseException:
+        import shutil
+        if not isinstance(sys.exc_info()[1], (KeyboardInterrupt, SystemExit)):
+            shutil.rmtree(out, ignore_errors=True)      # an error: nothing written, nothing left
+        raise                                           # a kill leaves the hidden staging folder only
+    publish(out, final)
+    sys.stdout.write(dumps(doc) if args.json else text)
+    return 0
+
+
+def staging(out: Path) -> Path:
+    """The hidden folder beside the target where a run writes (``.keys.part`` for ``keys``): a key set
+    appears under its name only when whole — a run killed midway leaves this folder, never a
+    half-made set under the target's name; the next run starts it afresh."""
+    import shutil
+    tmp = out.parent / f".{out.name}.part"
+    shutil.rmtree(tmp, ignore_errors=True)
+    tmp.mkdir(parents=True)
+    return tmp
+
+
+def publish(tmp: Path, out: Path) -> None:
+    """The finished set under the target's name: renamed there when the target is new; into an
+    existing folder each variant's folder and the summary files replace theirs (other files stay),
+    the summary last."""
+    import shutil
+    if not out.exists():
+        os.replace(tmp, out)
+        return
+    items = sorted(tmp.iterdir(), key=lambda p: (p.name.startswith("summary"), p.name))
+    for item in items:
+        target = out / item.name
+        if target.is_dir() and not target.is_symlink():
+            shutil.rmtree(target)
+        os.replace(item, target)
+    tmp.rmdir()
+
+
+def _summary(args, table, results, out: Path, lang: str) -> tuple[str, dict]:
+    """The summary files of a finished run (in ``out``), and the text and document printed."""
+    from graphplan.cli.main import dumps
+    from graphplan.teach.keysheet import A4_LANDSCAPE, summary_sheet
+    from graphplan.drawing.svg import render
     entries = [r["entry"] for r in results]
     skipped = [r["message"] for r in results if r["message"]]
     if skipped and not any(e["status"] == "ok" for e in entries):
@@ -271,8 +315,7 @@ def cmd_key(args: argparse.Namespace) -> int:
         write_atomic(out / "summary.svg", svg)
         if not args.no_pdf:
             write_atomic(out / "summary.pdf", pdf_bytes(svg))
-    sys.stdout.write(dumps(doc) if args.json else text)
-    return 0
+    return text, doc
 
 
 def _terminate_cleanly():

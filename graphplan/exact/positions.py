@@ -224,27 +224,33 @@ def _worst_condition(mech, structure, label, grid, cond) -> tuple[float, float]:
     minima = sorted(minima, key=lambda k: cond[k])[:4]
     best_phi, best = float(grid[int(np.argmin(cond))]), float(np.min(cond))
 
-    def f(phi: float) -> float:
-        kin = solve(mech, structure, [phi])
-        return float(kin.condition[label][0]) if kin.valid[label][0] else 0.0
+    def f(phi: np.ndarray) -> np.ndarray:           # every search at once: one solve a step
+        kin = solve(mech, structure, phi)
+        return np.where(kin.valid[label], kin.condition[label], 0.0)
 
+    if not minima:
+        return best_phi, best
     g = (math.sqrt(5) - 1) / 2
-    for k in minima:
-        a, b = grid[k] - step, grid[k] + step
-        c, d = b - g * (b - a), a + g * (b - a)
-        fc, fd = f(c), f(d)
-        for _ in range(40):
-            if fc < fd:
-                b, d, fd = d, c, fc
-                c = b - g * (b - a)
-                fc = f(c)
-            else:
-                a, c, fc = c, d, fd
-                d = a + g * (b - a)
-                fd = f(d)
-        phi, value = (c, fc) if fc < fd else (d, fd)
-        if value < best:
-            best_phi, best = phi % 360.0, value
+    a = np.array([grid[k] - step for k in minima])
+    b = np.array([grid[k] + step for k in minima])
+    c, d = b - g * (b - a), a + g * (b - a)
+    fc, fd = f(c), f(d)
+    for _ in range(40):          # golden-section search on each bracket, elementwise as one would
+        left = fc < fd
+        b = np.where(left, d, b)
+        a = np.where(left, a, c)
+        c_new = np.where(left, b - g * (b - a), d)
+        d_new = np.where(left, c, a + g * (b - a))
+        kept = np.where(left, fc, fd)                   # the old value that stays: fc → fd, or fd → fc
+        c, d = c_new, d_new
+        moved = f(np.where(left, c, d))                  # the one new point of each bracket
+        fc = np.where(left, moved, kept)
+        fd = np.where(left, kept, moved)
+    phi = np.where(fc < fd, c, d)
+    value = np.where(fc < fd, fc, fd)
+    k = int(np.argmin(value))
+    if value[k] < best:
+        best_phi, best = float(phi[k]) % 360.0, float(value[k])
     return best_phi, best
 
 
