@@ -173,7 +173,7 @@ def _beyond_reach(kin: Kinematics, dyad) -> np.ndarray:
 def _block_near_pivot(mech: Mechanism, structure: Structure, kin: Kinematics, dyad, grid) -> list[dict[str, str]]:
     """A slotted link whose block passes close to the rocker's pivot turns violently there
     (ω = v_⊥/ρ): warn when ρ falls below 5 % of its largest value. When the block passes through
-    the pivot (ρ below 0.1 % of its largest value, found by refining the grid's closest angle twice,
+    the pivot (ρ below 0.01 % of its largest value, found by refining the grid's closest angle twice,
     each time on 2001 angles about it) the slotted link's direction is undefined there and its ω
     unbounded: the mechanism locks, and the scene is refused naming the angle."""
     slider, carrier, outer_s, outer_c = dyad.block_parts
@@ -194,7 +194,7 @@ def _block_near_pivot(mech: Mechanism, structure: Structure, kin: Kinematics, dy
         if fine_rho[j] < near:
             phi, near = float(fine[j]), float(fine_rho[j])
         step /= 1000.0
-    if near < 1e-3 * largest:
+    if near < 1e-4 * largest:
         raise AssemblyError(f"{dyad.title}: the block {outer_s.point} passes through the pivot {outer_c.point} "
                             f"at crank angle {deg(phi % 360.0, 2)} (within {near * 1000:.2g} mm): the slotted "
                             "link's direction is undefined there and its ω unbounded, the crank cannot drive it "
