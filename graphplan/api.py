@@ -262,6 +262,36 @@ class Dynamics(View):
         return _page(wittenbauer_record(self.value, self.lang))
 
 
+class Cam(View):
+    """A cam mechanism synthesised graphically beside its exact solution: ``value`` is the pair
+    (exact solution, graphical construction); shown as the profile by inversion."""
+
+    def to_json(self) -> dict[str, Any]:
+        from graphplan.report.cam import cam_json
+        sol, g = self.value
+        return cam_json(sol, g, sol.cam.source or "")
+
+    def table(self) -> str:
+        from graphplan.report.cam import cam_table
+        sol, _ = self.value
+        return cam_table(self.to_json(), self.lang, sol.cam.title_in(self.lang))
+
+    def svg(self) -> str:
+        from graphplan.drawing.cam import profile_drawing
+        sol, g = self.value
+        return _page(profile_drawing(sol, g, self.lang))
+
+
+def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str = "uk") -> Cam:
+    """A cam scene (a path to a file with a [cam] table) solved exactly and constructed graphically
+    with ``divisions`` intervals a phase, read with a ruler of ``precision`` mm (docs/cams.md)."""
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.model.cam import load as load_cam
+    sol = solve(load_cam(scene))
+    return Cam((sol, construct(sol, divisions, precision)), lang)
+
+
 class Sheet(View):
     """A drawing sheet (frame, title block, blocks); ``save(path)`` writes .svg, .pdf, .png or .dxf."""
 

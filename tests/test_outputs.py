@@ -177,6 +177,7 @@ def test_png_sheet_is_print_ready(tmp_path):
     assert (small == 255).mean() > 0.8
 
 
+@pytest.mark.slow              # a second PNG of the A1 sheet (6 s); test_png_sheet_is_print_ready draws the first
 def test_png_dpi_option(tmp_path):
     out = tmp_path / "a2.png"
     done = run(f"import sys; from graphplan.cli.main import main\n"

@@ -251,6 +251,7 @@ def test_tangents_drawing_and_command(tmp_path, capsys, crank_slider):
 
 # -- the bench ---------------------------------------------------------------------------------------
 
+@pytest.mark.slow              # the bench's differentiation section run (8 s); the docs table test reads the same rows
 def test_bench_json_holds_all_three_methods(tmp_path, monkeypatch):
     from graphplan.bench import run
     monkeypatch.setattr(run, "SECTIONS", {"differentiation": run.SECTIONS["differentiation"]})

@@ -632,7 +632,8 @@ def test_gallery_explorers_are_current():
             f"drawings/{scene}.html is out of date: run python -m graphplan.cli.gallery"
 
 
-@pytest.mark.parametrize("scene", ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"])
+@pytest.mark.parametrize("scene", ["crank_slider"] + [pytest.param(s, marks=pytest.mark.slow) for s in
+                                   ("lab_crank_slider", "four_bar", "shaper", "slotter")])   # the walk covers them
 def test_gallery_explorer_runs(driver, scene, shots):
     """Every example's page works: angles around the turn, every plan replayed to its end, the
     exact column equal to `analyze` for the output point, no error, no request."""

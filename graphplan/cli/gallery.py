@@ -53,6 +53,26 @@ def explorer(scene: str, lang: str = "uk") -> str:
     return explorer_html(st, precision=0.5, step=EXPLORER_STEP, lang=lang, plans=sheet_plans(st, "A1", 0.5))
 
 
+# the cam examples' constructions (graphplan cam --svg): drawings/<scene>_<part>.svg
+CAMS = ["cam_translating", "cam_rocking"]
+
+
+def cam_drawings(scene: str, lang: str = "uk") -> dict[str, str]:
+    """One cam example's constructions as SVG texts by file name (the diagrams, the phase diagram,
+    the profile), at the default precision."""
+    from graphplan.drawing import svg
+    from graphplan.drawing.cam import records
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.model.cam import load
+    sol = solve(load(ROOT / "examples" / f"{scene}.toml"))
+    out = {}
+    for part, rec in records(sol, construct(sol), lang).items():
+        page, w, h = svg.page_for(rec)
+        out[f"{scene}_{part}.svg"] = svg.render(page, w, h, rec.title)
+    return out
+
+
 def build(scene: str, kind: str, lang: str, fmt: str = "A1") -> str:
     """The first sheet of a gallery set as SVG text."""
     return build_set(scene, kind, lang, fmt)[0]
@@ -117,6 +137,9 @@ def main(argv: list[str] | None = None) -> int:
         for stale in Path(args.out).glob(f"{name[:-len('.svg')]}-*.svg"):     # a set that got shorter
             stale.unlink()
         for file, text in zip(file_names(name, len(pages)), pages):
+            print(write_atomic(Path(args.out) / file, text), file=sys.stderr)
+    for scene in CAMS:
+        for file, text in cam_drawings(scene).items():
             print(write_atomic(Path(args.out) / file, text), file=sys.stderr)
     for scene in EXPLORERS:
         print(write_atomic(Path(args.out) / f"{scene}.html", explorer(scene)), file=sys.stderr)

@@ -37,6 +37,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.key",
     "graphplan.cli.bench",
     "graphplan.cli.view",
+    "graphplan.cli.cam",
 )
 
 

@@ -1,0 +1,68 @@
+"""`graphplan cam`: a cam mechanism synthesised by the graphical method — the law's diagrams
+integrated by chords, the phase diagram's smallest base radius, the profile by inversion — measured
+with the ruler and compared with the exact solution (docs/cams.md); tables, the contract's JSON, and
+the constructions as SVG on request."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from graphplan.cli.common import lang_arg
+from graphplan.util.errors import GraphplanError
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "cam", help="cam synthesis by graphical methods, compared with the exact solution",
+        description="A cam mechanism (a [cam] scene, docs/cams.md): the follower's law, its analogue "
+                    "acceleration integrated twice by chords, the smallest base radius from the phase "
+                    "diagram and the allowed pressure angles, the profile by inversion — every value "
+                    "measured with the ruler beside the exact one with the percent error.")
+    p.add_argument("scene", help="a cam scene file (TOML with a [cam] table; examples/cam_translating.toml)")
+    p.add_argument("--divisions", type=int, metavar="N",
+                   help="intervals of the rise and of the return (default: the scene's, else 8)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
+    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
+    p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (diagrams, phase, profile .svg)")
+    lang_arg(p)
+    p.set_defaults(handler=cmd_cam)
+
+
+def cmd_cam(args: argparse.Namespace) -> int:
+    from graphplan.cli.common import dumps
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.model.cam import load
+    from graphplan.report.cam import cam_json, cam_table
+    from graphplan.util.words import pick
+    if not math.isfinite(args.precision) or not 0 <= args.precision <= 10:
+        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+    if args.divisions is not None and not 2 <= args.divisions <= 360:
+        raise GraphplanError(f"--divisions must be a whole number from 2 to 360, got {args.divisions}")
+    cam = load(args.scene)
+    try:
+        sol = solve(cam)
+        g = construct(sol, args.divisions, args.precision)
+    except GraphplanError as exc:
+        raise GraphplanError(str(exc), exc.where or args.scene) from None
+    lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
+    if args.svg:
+        write_svg(sol, g, args.svg, lang)
+    doc = cam_json(sol, g, args.scene)
+    sys.stdout.write(dumps(doc) if args.json else cam_table(doc, lang, cam.title_in(lang)))
+    return 0
+
+
+def write_svg(sol, g, folder: str, lang: str) -> None:
+    from pathlib import Path
+
+    from graphplan.drawing import svg
+    from graphplan.drawing.cam import records
+    from graphplan.util.files import write_atomic
+    if Path(folder).exists() and not Path(folder).is_dir():
+        raise GraphplanError("--svg needs a folder, this is a file", folder)
+    for name, rec in records(sol, g, lang).items():
+        page, w, h = svg.page_for(rec)
+        write_atomic(Path(folder) / f"{name}.svg", svg.render(page, w, h, rec.title))

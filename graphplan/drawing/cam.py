@@ -1,0 +1,131 @@
+"""The cam's construction drawn (records in drawing mm, y up): the three diagrams of the law with
+their chords and poles, the phase diagram with the lines at the allowed pressure angle, and the
+profile by inversion with the base circle, the follower's turned positions, the centre and working
+profiles. Each record carries its scales."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphplan.exact.cam import Solution, motion, profile
+from graphplan.graphic.cam import CamConstruction
+from graphplan.graphic.record import Record
+
+LAYER = "cam"
+TEXT = 3.5
+
+
+def _axes(rec: Record, y0: float, width: float, top: float, bottom: float, letter: str, k: int) -> None:
+    rec.segment((0.0, y0), (width + 6.0, y0), role="axis", layer=LAYER, step=f"axis {k}")
+    rec.segment((0.0, y0 + bottom - 3.0), (0.0, y0 + top + 3.0), role="axis", layer=LAYER)
+    rec.label((2.0, y0 + top + 4.0), letter, size=TEXT, layer=LAYER)
+
+
+def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
+    """d²s/dφ², ds/dφ and s over the turn (L mm), one above another; the drawn ordinates at the
+    divisions, the chords of each integration, the poles H1, H2 on the left."""
+    cam = sol.cam
+    rec = Record("cam diagrams")
+    L = 2 * math.pi / g.mu_phi
+    fine = np.linspace(0.0, 360.0, 721)
+    s, v, a = motion(cam, fine)
+    xf = np.radians(fine) / g.mu_phi
+    x = np.radians(g.phi) / g.mu_phi
+    bands = []
+    y = 0.0
+    for key, curve, drawn, letter in (("s", s / g.mu_s, g.s_mm, "s"), ("v", v / g.mu_v, g.v_mm, "ds/dφ"),
+                                      ("a", a / g.mu_a, g.a_mm, "d^2s/dφ^2")):
+        lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
+        y0 = y - lo
+        bands.append((key, y0))
+        _axes(rec, y0, L, hi, lo, letter, len(bands))
+        rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
+        for k in range(len(x)):
+            rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER)
+        for ph in (0, 1):
+            sel = np.flatnonzero(g.phase == ph)
+            for j in range(len(sel) - 1):
+                p, q = sel[j], sel[j + 1]
+                rec.segment((x[p], y0 + drawn[p]), (x[q], y0 + drawn[q]), role="chord", layer=LAYER)
+        y = y0 + hi + 14.0
+    for name, H, (_, y0) in (("H_1", g.H1, bands[1]), ("H_2", g.H2, bands[0])):
+        rec.point((-H, y0), role="pole", layer=LAYER)
+        rec.segment((-H, y0), (0.0, y0), role="construction", layer=LAYER)
+        rec.label((-H, y0 + 2.0), name, size=TEXT, layer=LAYER)
+    rec.label((L + 2.0, bands[0][1] - 5.0), "φ", size=TEXT, layer=LAYER)
+    rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
+    return rec
+
+
+def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
+    """s against ds/dφ at the scale of s (translating: in m; rocking: the arc l·ψ), the drawn points,
+    the lines at [ϑ] through the extreme ones and the cam's centre O below."""
+    cam = sol.cam
+    rec = Record("phase diagram")
+    k = cam.arm if cam.rocking else 1.0                # a rocking follower's angles as arcs of the arm
+    mu = g.mu_l
+    fine = np.linspace(0.0, 360.0, 721)
+    s, v, _ = motion(cam, fine)
+    sig = cam.sense
+    px, py = sig * v * k / mu, s * k / mu
+    rec.add("polyline", list(zip(px, py)), role="curve", layer=LAYER, step="phase curve exact")
+    gx, gy = sig * g.v * k / mu, g.s * k / mu
+    for X, Y in zip(gx, gy):
+        rec.point((X, Y), role="construction", layer=LAYER)
+    if cam.rocking:
+        centre = complex(0.0, -sol.geometry.R0 / mu)
+    else:
+        centre = complex(sol.geometry.e, -math.sqrt(max(sol.geometry.R0 ** 2 - sol.geometry.e ** 2, 0.0))) / mu
+    for ph in (0, 1):
+        # the boundary of the allowed region: through the drawn point seen from O at the largest angle,
+        # at [ϑ] to the follower's axis, down past O
+        sel = g.phase == ph
+        X, Y = gx[sel], gy[sel]
+        seen = np.abs(np.arctan2(X - centre.real, Y - centre.imag))
+        j = int(np.argmax(seen))
+        tan_a = math.tan(math.radians(cam.allowed[ph]))
+        side = 1.0 if X[j] - centre.real >= 0 else -1.0
+        y_end = centre.imag - 10.0
+        rec.segment((X[j], Y[j]), (X[j] - side * tan_a * (Y[j] - y_end), y_end), role="direction", layer=LAYER)
+    rec.segment((0.0, centre.imag - 5), (0.0, float(np.max(gy)) + 5), role="axis", layer=LAYER)
+    rec.point((centre.real, centre.imag), role="pole", layer=LAYER)
+    rec.segment((centre.real, centre.imag), (0.0, 0.0), role="construction", layer=LAYER)
+    rec.label((centre.real + 2, centre.imag - 4), "O", size=TEXT, layer=LAYER)
+    rec.label((2.0, float(np.max(gy)) + 3), "s", size=TEXT, layer=LAYER)
+    rec.label((float(np.max(np.abs(gx))) + 2, 2.0), "ds/dφ", size=TEXT, layer=LAYER)
+    rec.scales.update(mu_l=mu)
+    return rec
+
+
+def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
+    """The profile by inversion at μ_l: the base circle, the follower's axis at each division turned
+    against ω, the drawn s laid off, the centre profile through those points, the roller circles and
+    the working profile."""
+    cam = sol.cam
+    rec = Record("cam profile")
+    mu = g.mu_l
+    rec.circle((0.0, 0.0), sol.geometry.R0 / mu, role="construction", layer=LAYER)
+    fine = np.linspace(0.0, 360.0, 1441)
+    p = sol.at(fine)
+    P, W = p["P"] / mu, p["working"] / mu
+    rec.add("polyline", list(zip(P.real, P.imag)), role="curve", layer=LAYER, step="centre profile")
+    if cam.roller > 0:
+        rec.add("polyline", list(zip(W.real, W.imag)), role="link", layer=LAYER, step="working profile")
+    pts = profile(cam, sol.geometry, g.phi, g.s, g.v, np.zeros_like(g.phi))["P"] / mu
+    for k, q in enumerate(pts):
+        rec.segment((0.0, 0.0), (q.real, q.imag), role="construction", layer=LAYER)
+        rec.point((q.real, q.imag), role="construction", layer=LAYER)
+        if cam.roller > 0 and k % 2 == 0:
+            rec.circle((q.real, q.imag), cam.roller / mu, role="construction", layer=LAYER)
+    rec.point((0.0, 0.0), role="pole", layer=LAYER)
+    rec.label((2.0, -5.0), "O", size=TEXT, layer=LAYER)
+    r0 = sol.geometry.R0 / mu
+    rec.label((r0 * 0.7, -r0 * 0.7 - 4), "R_0", size=TEXT, layer=LAYER)
+    rec.scales.update(mu_l=mu)
+    return rec
+
+
+def records(sol: Solution, g: CamConstruction, lang: str) -> dict[str, Record]:
+    return {"diagrams": diagrams(sol, g, lang), "phase": phase_diagram(sol, g, lang),
+            "profile": profile_drawing(sol, g, lang)}

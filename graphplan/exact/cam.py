@@ -1,0 +1,311 @@
+"""The cam mechanism solved exactly: the follower's law, the pressure angle, the smallest base radius
+the allowed pressure angles permit, the centre and working profiles and their curvature
+(REFERENCE §11; docs/cams.md).
+
+Conventions. φ is the cam's turn from the start of the rise, in degrees. s(φ) is the follower's
+displacement from its nearest position: metres (translating) or radians (rocking, the arm's swing);
+its analogues ds/dφ and d²s/dφ² are per radian of φ. In the fixed frame the cam's centre O is the
+origin; a translating follower's axis is vertical at x = σ·e (σ = +1 when the cam turns counter-
+clockwise), its roller centre at C = (σe, s0 + s) with s0 = √(R0² − e²); a rocking follower's arm of
+length l turns about A = (a, 0) and its roller centre is C = A + l·e^{i(π − ψ0 − s)}, |C| = R0 at s = 0.
+The centre (theoretical) profile is the path of C in the cam's own frame (the inversion: the frame
+turned back by the cam's turn), P(φ) = C(φ)·e^{−iσφ}; the working profile is its inner offset by the
+roller radius (the envelope of the roller circles). The pressure angle ϑ is the angle between the
+profile's normal at the contact (the force's line, friction neglected) and the velocity of the roller
+centre: sin ϑ = Re(t̄·u)/|t|, t = dP/dφ·e^{iσφ} = C′ − iσC, u the unit direction of ∂C/∂s — for a
+translating follower tg ϑ = (ds/dφ − σe)/(s0 + s).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphplan.model.cam import Cam
+from graphplan.util.errors import GraphplanError
+
+Array = np.ndarray
+
+
+# -- the laws: f(u), f′(u), f″(u) on u ∈ [0, 1], f(0) = 0, f(1) = 1 -------------------------------------
+
+def _trapezoid_knots() -> tuple[Array, Array, Array, Array, float]:
+    """The trapezoidal acceleration: a(u) ramps 0 → A over the first eighth, holds A to 3/8, falls to −A
+    by 5/8, holds to 7/8 and ramps back to 0; A such that f(1) = 1. Integrated exactly piece by piece
+    (a piecewise-linear a gives cubic pieces): the knots and, at each, a, f′ and f for A = 1."""
+    u = np.array([0, 1, 3, 5, 7, 8]) / 8.0
+    a = np.array([0.0, 1.0, 1.0, -1.0, -1.0, 0.0])
+    v = np.zeros(6)
+    f = np.zeros(6)
+    for k in range(5):
+        h = u[k + 1] - u[k]
+        j = (a[k + 1] - a[k]) / h
+        v[k + 1] = v[k] + a[k] * h + j * h * h / 2
+        f[k + 1] = f[k] + v[k] * h + a[k] * h * h / 2 + j * h ** 3 / 6
+    return u, a, v, f, 1.0 / f[-1]
+
+
+_TRAP = _trapezoid_knots()
+
+
+def law(name: str, u: Array) -> tuple[Array, Array, Array]:
+    """The normalised law f(u) and its derivatives f′, f″ (u = φ/Φ of the phase):
+    parabolic f = 2u² (u ≤ ½), 1 − 2(1 − u)²; cosine f = (1 − cos πu)/2; cycloidal f = u − sin(2πu)/2π;
+    linear f = u; trapezoidal: the acceleration above."""
+    u = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
+    if name == "parabolic":
+        first = u <= 0.5
+        f = np.where(first, 2 * u * u, 1 - 2 * (1 - u) ** 2)
+        return f, np.where(first, 4 * u, 4 * (1 - u)), np.where(first, 4.0, -4.0)
+    if name == "cosine":
+        return (1 - np.cos(np.pi * u)) / 2, np.pi / 2 * np.sin(np.pi * u), np.pi ** 2 / 2 * np.cos(np.pi * u)
+    if name == "cycloidal":
+        w = 2 * np.pi * u
+        return u - np.sin(w) / (2 * np.pi), 1 - np.cos(w), 2 * np.pi * np.sin(w)
+    if name == "linear":
+        return u.copy(), np.ones_like(u), np.zeros_like(u)
+    if name == "trapezoidal":
+        knots, a, v, f, A = _TRAP
+        k = np.clip(np.searchsorted(knots, u, side="right") - 1, 0, 4)
+        t = u - knots[k]
+        j = (a[k + 1] - a[k]) / (knots[k + 1] - knots[k])
+        return (A * (f[k] + v[k] * t + a[k] * t * t / 2 + j * t ** 3 / 6), A * (v[k] + a[k] * t + j * t * t / 2),
+                A * (a[k] + j * t))
+    raise GraphplanError(f"unknown law {name!r}")
+
+
+def motion(cam: Cam, phi_deg: Array) -> tuple[Array, Array, Array]:
+    """s, ds/dφ, d²s/dφ² (per radian) at the cam turns ``phi_deg`` from the start of the rise: the rise's
+    law, the far dwell at h, the return's law mirrored, the near dwell at 0."""
+    phi = np.mod(np.asarray(phi_deg, dtype=float), 360.0)
+    rise, far, ret, _ = cam.phases
+    h = cam.stroke
+    s, v, a = np.zeros_like(phi), np.zeros_like(phi), np.zeros_like(phi)
+    R, T = math.radians(rise), math.radians(ret)
+    up = phi <= rise
+    f, f1, f2 = law(cam.laws[0], phi[up] / rise)
+    s[up], v[up], a[up] = h * f, h * f1 / R, h * f2 / R ** 2
+    dwell = (phi > rise) & (phi < rise + far)
+    s[dwell] = h
+    down = (phi >= rise + far) & (phi <= rise + far + ret)
+    f, f1, f2 = law(cam.laws[1], (phi[down] - rise - far) / ret)
+    s[down], v[down], a[down] = h * (1 - f), -h * f1 / T, -h * f2 / T ** 2
+    return s, v, a
+
+
+def phase_of(cam: Cam, phi_deg: Array) -> Array:
+    """0 on the rise, 1 on the return, −1 on the dwells (φ from the start of the rise)."""
+    phi = np.mod(np.asarray(phi_deg, dtype=float), 360.0)
+    rise, far, ret, _ = cam.phases
+    return np.where(phi <= rise, 0, np.where((phi >= rise + far) & (phi <= rise + far + ret), 1, -1))
+
+
+# -- the geometry ---------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Geometry:
+    """Where the follower stands: the base radius R0, the offset e (translating) or the arm's angle ψ0
+    to the line of centres at the nearest position (rocking)."""
+    R0: float
+    e: float = 0.0
+    psi0: float = 0.0
+
+
+def geometry(cam: Cam, R0: float, e: float | None = None) -> Geometry:
+    e = cam.offset if e is None else e
+    if cam.rocking:
+        a, l = cam.centre_distance, cam.arm
+        c = (a * a + l * l - R0 * R0) / (2 * a * l)
+        if not -1 < c < 1:
+            raise GraphplanError(f"the arm {l:g} m at {a:g} m from the cam's centre cannot reach the base "
+                                 f"circle R0 = {R0:g} m", cam.source)
+        return Geometry(R0, 0.0, math.acos(c))
+    e = e or 0.0
+    if abs(e) >= R0:
+        raise GraphplanError(f"the offset |e| = {abs(e):g} m must be smaller than the base radius {R0:g} m",
+                             cam.source)
+    return Geometry(R0, e)
+
+
+def centre_path(cam: Cam, g: Geometry, s: Array, v: Array, a: Array) -> tuple[Array, Array, Array, Array]:
+    """The roller centre C in the fixed frame and its derivatives by φ (C′, C″), and the unit direction
+    u of ∂C/∂s (the follower's velocity as s grows) — complex numbers, m."""
+    sig = 1 if cam.sense > 0 else -1
+    if cam.rocking:
+        l = cam.arm
+        w = np.exp(1j * (np.pi - g.psi0 - s))
+        C = cam.centre_distance + l * w
+        C1 = -1j * l * v * w
+        C2 = l * (-v * v - 1j * a) * w
+        u = -1j * w
+        return C, C1, C2, u
+    s0 = math.sqrt(g.R0 ** 2 - g.e ** 2)
+    C = sig * g.e + 1j * (s0 + s)
+    return C, 1j * v, 1j * a, np.full(np.shape(s), 1j, dtype=complex)
+
+
+def profile(cam: Cam, g: Geometry, phi_deg: Array, s=None, v=None, a=None) -> dict[str, Array]:
+    """The centre profile P(φ) in the cam's frame (complex, m), its radius, the pressure angle (deg,
+    signed: + where it opposes the follower's rise), the radius of curvature ρ (m, + where the profile
+    is convex) and the working profile (the centre profile's inner offset by the roller)."""
+    phi = np.asarray(phi_deg, dtype=float)
+    if s is None:
+        s, v, a = motion(cam, phi)
+    sig = 1 if cam.sense > 0 else -1
+    C, C1, C2, u = centre_path(cam, g, s, v, a)
+    turn = np.exp(-1j * sig * np.radians(phi))
+    P = C * turn
+    t = C1 - 1j * sig * C                                 # dP/dφ turned back to the fixed frame
+    t2 = C2 - 2j * sig * C1 - C                           # d²P/dφ² likewise
+    speed = np.abs(t)
+    theta = np.degrees(np.arcsin(np.clip(np.real(np.conj(t) * u) / speed, -1.0, 1.0)))
+    cross = np.imag(np.conj(t) * t2)                      # t × t″: + where P turns left
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rho = -sig * speed ** 3 / cross                   # P runs against the cam's turn: + where convex
+    normal = 1j * (t / speed) * sig * turn                # the outward normal in the cam's frame
+    working = P - cam.roller * normal
+    return {"P": P, "radius": np.abs(P), "theta": theta, "rho": rho, "working": working}
+
+
+# -- the smallest base radius ------------------------------------------------------------------------------
+
+def _grid(cam: Cam, n: int = 7200) -> Array:
+    rise, far, ret, _ = cam.phases
+    a = np.linspace(0.0, rise, n // 2 + 1)
+    b = np.linspace(rise + far, rise + far + ret, n // 2 + 1)
+    return np.concatenate([a, b])
+
+
+def _refined_worst(cam: Cam, R0: float, e: float | None) -> float:
+    """|ϑ|max/[ϑ] with each phase's largest |ϑ| refined about the grid's largest (bounded search)."""
+    from scipy.optimize import minimize_scalar
+    grid = _grid(cam)
+    g = geometry(cam, R0, e)
+    worst = 0.0
+    for k in (0, 1):
+        sel = grid[phase_of(cam, grid) == k]
+        th = np.abs(profile(cam, g, sel)["theta"])
+        j = int(np.argmax(th))
+        lo, hi = sel[max(j - 1, 0)], sel[min(j + 1, len(sel) - 1)]
+        best = float(th[j])
+        if hi > lo:
+            r = minimize_scalar(lambda x: -abs(float(profile(cam, g, np.array([x]))["theta"][0])),
+                                bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
+            best = max(best, -float(r.fun))
+        worst = max(worst, best / cam.allowed[k])
+    return worst
+
+
+def min_base_radius(cam: Cam, e: float | None = None) -> float:
+    """The smallest R0 at which no pressure angle exceeds its allowed value (brentq on the refined
+    largest |ϑ|/[ϑ] − 1, which falls as R0 grows)."""
+    from scipy.optimize import brentq
+    e = cam.offset if e is None else e
+    if cam.rocking:
+        lo = abs(cam.centre_distance - cam.arm) * (1 + 1e-9) + 1e-9
+        hi = (cam.centre_distance + cam.arm) * (1 - 1e-9)
+    else:
+        lo = abs(e or 0.0) * (1 + 1e-9) + 1e-9 + cam.stroke * 1e-6
+        hi = max(lo * 2, cam.stroke * 2)
+        while _refined_worst(cam, hi, e) > 1:
+            hi *= 2
+            if hi > 1e4:
+                raise GraphplanError("no base radius keeps the pressure angles within the allowed ones",
+                                     cam.source)
+    f = lambda R0: _refined_worst(cam, R0, e) - 1.0          # noqa: E731
+    if cam.rocking:
+        # the arm's angle changes with R0 and |ϑ| is not monotone in it: the allowed radii are a band;
+        # the first allowed one on a scan of the reach, then bracketed
+        scan = np.linspace(lo, hi, 241)
+        coarse = _grid(cam, 720)
+        quick = [max(float(np.max(np.abs(profile(cam, geometry(cam, R, e), coarse)["theta"][phase_of(cam, coarse) == k])))
+                     / cam.allowed[k] for k in (0, 1)) for R in scan]
+        ok = [k for k, q in enumerate(quick) if q <= 1 - 1e-3 and f(scan[k]) <= 0]
+        if not ok:
+            raise GraphplanError("the rocking follower's arm cannot keep the pressure angles within the "
+                                 "allowed ones at any base radius; change the arm or the centre distance",
+                                 cam.source)
+        if ok[0] == 0:
+            return lo
+        lo, hi = scan[ok[0] - 1], scan[ok[0]]
+    elif f(lo) <= 0:
+        return lo
+    return brentq(f, lo, hi, xtol=1e-15, rtol=1e-15, maxiter=200)
+
+
+def best_offset(cam: Cam) -> tuple[float, float]:
+    """The offset e that allows the smallest base radius, and that radius (translating follower): the
+    cam centre at the corner of the phase diagram's allowed region nearest the follower's origin."""
+    from scipy.optimize import minimize_scalar
+    h = cam.stroke
+    r = minimize_scalar(lambda e: min_base_radius(cam, e), bounds=(-2 * h, 2 * h), method="bounded",
+                        options={"xatol": 1e-9 * h})
+    return float(r.x), float(r.fun)
+
+
+@dataclass
+class Solution:
+    """The cam solved: the geometry chosen, the smallest base radius, the profile's tabulation and its
+    curvature, and what the sheet and the terminal must say."""
+    cam: Cam
+    geometry: Geometry
+    R0_min: float
+    warnings: list[tuple[str, str]]
+
+    def at(self, phi_deg: Array) -> dict[str, Array]:
+        s, v, a = motion(self.cam, phi_deg)
+        out = profile(self.cam, self.geometry, phi_deg, s, v, a)
+        out.update(s=s, v=v, a=a)
+        return out
+
+    def curvature_min(self) -> float:
+        """The smallest radius of curvature of the centre profile where it is convex, m."""
+        phi = np.linspace(0.0, 360.0, 14401)
+        rho = self.at(phi)["rho"]
+        convex = rho[np.isfinite(rho) & (rho > 0)]
+        return float(np.min(convex)) if convex.size else math.inf
+
+
+def solve(cam: Cam) -> Solution:
+    """The exact solution: the offset (given or the best), the smallest base radius, the base radius
+    taken (the scene's, else the smallest rounded up to a whole millimetre), and the warnings: the linear
+    law's rigid shocks, an undercut working profile, a base radius below the smallest."""
+    e = cam.offset
+    if e is None:
+        e, r_min = best_offset(cam)
+        e = round(e, 4)                      # a draftsman's offset: a tenth of a millimetre
+        r_min = min_base_radius(cam, e)
+    else:
+        r_min = min_base_radius(cam, e)
+    R0 = cam.base_radius if cam.base_radius is not None else math.ceil(r_min * 1000 - 1e-9) / 1000
+    if cam.rocking:
+        R0 = min(max(R0, abs(cam.centre_distance - cam.arm) * 1.0001), (cam.centre_distance + cam.arm) * 0.9999)
+    elif abs(e) >= R0:
+        R0 = math.ceil(abs(e) * 1000 + 1) / 1000
+    if cam.roller >= R0:
+        raise GraphplanError(f"cam.roller_radius: the roller ({cam.roller:g} m) must be smaller than the base "
+                             f"circle ({R0:g} m)", cam.source)
+    sol = Solution(cam, geometry(cam, R0, e), r_min, [])
+    for k, name in enumerate(("rise", "return")):
+        if cam.laws[k] == "linear":
+            sol.warnings.append((f"the linear law of the {name}: rigid shocks at its ends (the acceleration is "
+                                 "infinite there); its ds/dφ is drawn directly, not integrated",
+                                 f"лінійний закон {'підйому' if k == 0 else 'опускання'}: жорсткі удари на "
+                                 "кінцях фази (прискорення там нескінченне); ds/dφ будується прямо, без "
+                                 "інтегрування"))
+    if R0 < r_min * (1 - 1e-9):
+        sol.warnings.append((f"the base radius {R0 * 1000:.1f} mm is below the smallest allowed "
+                             f"{r_min * 1000:.2f} mm: the pressure angle exceeds the allowed one",
+                             f"радіус основної шайби {R0 * 1000:.1f} мм менший за найменший допустимий "
+                             f"{r_min * 1000:.2f} мм: кут тиску перевищує допустимий"))
+    if cam.roller > 0:
+        rho = sol.curvature_min()
+        if rho <= cam.roller:
+            sol.warnings.append((f"undercut: the centre profile's smallest convex radius of curvature "
+                                 f"{rho * 1000:.2f} mm is not larger than the roller's {cam.roller * 1000:g} mm; "
+                                 "take a smaller roller or a larger base circle",
+                                 f"підрізання: найменший радіус кривини опуклої ділянки центрового профілю "
+                                 f"{rho * 1000:.2f} мм не більший за радіус ролика {cam.roller * 1000:g} мм; "
+                                 "візьміть менший ролик або більшу основну шайбу"))
+    return sol

@@ -1,0 +1,192 @@
+"""The cam synthesised as the coursework draws it (REFERENCE §11; docs/cams.md), in drawing millimetres,
+every length read with the ruler of the drafting precision:
+
+1. the analogue-acceleration diagram d²s/dφ² over the rise and the return, divided into ``n`` equal
+   intervals each (abscissa: φ at μ_φ = 2π/L rad/mm);
+2. its graphical integration by chords with the pole distance H1 — each interval's middle ordinate
+   carried to the ordinate axis and joined to the pole gives its chord's slope — to ds/dφ, then with
+   H2 to s (μ_v = μ_a·μ_φ·H1, μ_s = μ_v·μ_φ·H2; a phase of the linear law has no finite acceleration:
+   its ds/dφ, a constant, is drawn directly and integrated once);
+3. the phase diagram: ds/dφ laid off along the follower's normal at the scale of s; the lines at the
+   allowed pressure angle through its extreme points bound the region of the cam's centre; the
+   smallest base radius R0 is measured off it (computed here as the smallest R0 at which no drawn point
+   exceeds the allowed angle — what the tangent lines give);
+4. the profile by inversion: at each division the follower turned about the cam's centre against ω,
+   the drawn s laid off from the base circle: the centre profile's points, and its radii measured.
+
+Every graphical value stands beside the exact one with the lab's percent error.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from graphplan.exact.cam import Solution, geometry, motion, profile
+from graphplan.graphic.chords import integrate_by_chords
+from graphplan.graphic.scales import series_around
+
+HEIGHT_MM = 40.0       # the tallest ordinate of the analogue-acceleration diagram
+STROKE_MM = 80.0       # the stroke (swing) drawn on the s diagram, about
+L_MM = 240.0           # the abscissa of a whole turn
+
+
+def read(mm: np.ndarray, precision: float) -> np.ndarray:
+    """A length read with a ruler of ``precision`` mm (0: exact)."""
+    mm = np.asarray(mm, dtype=float)
+    return mm if precision <= 0 else np.round(mm / precision) * precision
+
+
+def nice(mu: float) -> float:
+    """The standard scale at or above ``mu`` (1, 2, 2.5, 4, 5 × 10^k)."""
+    return min(m for m in series_around(mu) if m >= mu * (1 - 1e-12))
+
+
+@dataclass
+class CamConstruction:
+    """The drawn construction: the division turns, the drawn ordinates (mm) and what they read."""
+    phi: np.ndarray                 # division turns, degrees (rise and return, their ends included)
+    phase: np.ndarray               # 0 rise, 1 return
+    mu_phi: float                   # rad/mm
+    mu_a: float                     # (m or rad)/rad² per mm
+    mu_v: float
+    mu_s: float
+    H1: float
+    H2: float
+    precision: float
+    a_mm: np.ndarray                # the analogue acceleration, drawn at the divisions
+    v_mm: np.ndarray                # ds/dφ by the first integration
+    s_mm: np.ndarray                # s by the second
+    R0_min: float                   # measured off the phase diagram, m (rad for none)
+    R0: float                       # the base radius drawn (the exact solution's)
+    radius_mm: np.ndarray           # the centre profile's radius at each division, measured
+    theta: np.ndarray               # the pressure angle measured at each division, degrees
+    mu_l: float                     # m/mm of the profile
+    warnings: list[tuple[str, str]] = field(default_factory=list)
+
+    @property
+    def s(self) -> np.ndarray:
+        return self.s_mm * self.mu_s
+
+    @property
+    def v(self) -> np.ndarray:
+        return self.v_mm * self.mu_v
+
+    @property
+    def a(self) -> np.ndarray:
+        return self.a_mm * self.mu_a
+
+
+def divisions(sol: Solution, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The division turns of the rise and of the return (n intervals each), and their phases."""
+    rise, far, ret, _ = sol.cam.phases
+    up = np.linspace(0.0, rise, n + 1)
+    down = rise + far + np.linspace(0.0, ret, n + 1)
+    return np.concatenate([up, down]), np.concatenate([np.zeros(n + 1, int), np.ones(n + 1, int)])
+
+
+def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float, precision: float,
+                     mid: np.ndarray | None = None) -> np.ndarray:
+    """One phase integrated by chords: the middle ordinates (given, else the chord's middle of the
+    drawn curve) read with the ruler, the integral's ordinates read too."""
+    if mid is None:
+        mid = 0.5 * (y_mm[:-1] + y_mm[1:])
+    return read(integrate_by_chords(x_mm, read(mid, precision), pole, y0), precision)
+
+
+def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
+              H2: float | None = None, L: float = L_MM) -> CamConstruction:
+    """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
+    read with a ruler of ``precision`` mm."""
+    cam = sol.cam
+    n = n or cam.divisions
+    phi, phase = divisions(sol, n)
+    mu_phi = 2 * math.pi / L
+    fine = np.linspace(0.0, 360.0, 7201)
+    _, _, a_fine = motion(cam, fine)
+    peak = float(np.max(np.abs(a_fine))) or 1.0
+    mu_a = nice(peak / HEIGHT_MM)
+    if H1 is None or H2 is None:
+        # the stroke drawn about STROKE_MM high at a standard μ_s; H1 a whole millimetre near the
+        # geometric mean, H2 then follows from μ_s = μ_a·μ_φ²·H1·H2 (what the student computes)
+        mu_s_target = nice(cam.stroke / STROKE_MM)
+        H = math.sqrt(mu_s_target / (mu_a * mu_phi ** 2))
+        H1 = H1 or float(max(5.0, round(H)))
+        H2 = H2 or mu_s_target / (mu_a * mu_phi ** 2 * H1)
+    mu_v = mu_a * mu_phi * H1
+    mu_s = mu_v * mu_phi * H2
+    s_ex, v_ex, a_ex = motion(cam, phi)
+    x_mm = np.radians(phi) / mu_phi
+    a_mm = read(a_ex / mu_a, precision)
+    v_mm = np.zeros_like(phi)
+    s_mm = np.zeros_like(phi)
+    for k in (0, 1):
+        sel = phase == k
+        x = x_mm[sel]
+        start = 0.0 if k == 0 else cam.stroke / mu_s
+        if cam.laws[k] == "linear":                       # drawn directly: a constant ds/dφ
+            v_mm[sel] = read(v_ex[sel] / mu_v, precision)
+        else:
+            # the middle ordinate of each interval read off the drawn curve of the analogue acceleration
+            mid_phi = 0.5 * (phi[sel][:-1] + phi[sel][1:])
+            _, _, a_mid = motion(cam, mid_phi)
+            v_mm[sel] = _integrate_phase(x, a_mm[sel], H1, 0.0, precision, mid=a_mid / mu_a)
+        s_mm[sel] = _integrate_phase(x, v_mm[sel], H2, start, precision)
+    s_g, v_g = s_mm * mu_s, v_mm * mu_v
+    # the phase diagram: the smallest base radius at which no drawn point exceeds the allowed angle
+    R0_min = _phase_diagram_radius(sol, phi, phase, s_g, v_g)
+    mu_l = nice(max(sol.geometry.R0 + (cam.stroke if not cam.rocking else 0.0), cam.arm + cam.centre_distance)
+                / 80.0)
+    R0_min = float(read(R0_min / mu_l, precision)) * mu_l
+    prof = profile(cam, sol.geometry, phi, s_g, v_g, np.zeros_like(phi))
+    radius_mm = read(prof["radius"] / mu_l, precision)
+    theta = np.round(prof["theta"] * 2) / 2 if precision > 0 else prof["theta"]   # a protractor's ½°
+    out = CamConstruction(phi, phase, mu_phi, mu_a, mu_v, mu_s, H1, H2, precision, a_mm, v_mm, s_mm, R0_min,
+                          sol.geometry.R0, radius_mm, theta, mu_l)
+    closure = abs(s_g[phase == 0][-1] - cam.stroke) / cam.stroke
+    if closure > 0.05:
+        out.warnings.append((f"the rise's graphical s ends {closure * 100:.1f} % off the stroke: take more "
+                             "divisions or a finer scale", f"графічне s наприкінці підйому відрізняється від ходу "
+                             f"на {closure * 100:.1f} %: візьміть більше поділок або дрібніший масштаб"))
+    return out
+
+
+def _phase_diagram_radius(sol: Solution, phi, phase, s_g, v_g) -> float:
+    """The smallest R0 at which every drawn point (s, ds/dφ) keeps |ϑ| ≤ [ϑ] of its phase."""
+    from scipy.optimize import brentq
+    cam = sol.cam
+
+    def worst(R0: float) -> float:
+        try:
+            g = geometry(cam, R0, sol.geometry.e)
+        except Exception:
+            return math.inf
+        th = np.abs(profile(cam, g, phi, s_g, v_g, np.zeros_like(phi))["theta"])
+        return max(float(np.max(th[phase == k])) / cam.allowed[k] for k in (0, 1)) - 1.0
+    if cam.rocking:
+        lo = abs(cam.centre_distance - cam.arm) * (1 + 1e-9) + 1e-9
+        hi = (cam.centre_distance + cam.arm) * (1 - 1e-9)
+        scan = np.linspace(lo, hi, 241)
+        ok = [k for k, R in enumerate(scan) if worst(R) <= 0]
+        if not ok:
+            return math.nan
+        if ok[0] == 0:
+            return float(lo)
+        return float(brentq(worst, scan[ok[0] - 1], scan[ok[0]], xtol=1e-12))
+    lo = abs(sol.geometry.e) * (1 + 1e-9) + 1e-9
+    hi = max(2 * sol.R0_min, lo * 2)
+    while worst(hi) > 0:
+        hi *= 2
+    if worst(lo) <= 0:
+        return float(lo)
+    return float(brentq(worst, lo, hi, xtol=1e-12))
+
+
+def errors_pct(graphical: np.ndarray, exact: np.ndarray, scale: float) -> list[float | None]:
+    """The lab's percent error, None where the exact value is below 1 % of the quantity's largest."""
+    out = []
+    for g, e in zip(np.asarray(graphical, float), np.asarray(exact, float)):
+        pct = 100.0 * (g - e) / abs(e) if abs(e) >= 0.01 * scale else None
+        out.append(None if pct is None else (0.0 if abs(pct) < 1e-9 else float(pct)))   # round-off is 0
+    return out

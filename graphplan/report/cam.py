@@ -1,0 +1,144 @@
+"""The cam's results for people and programs: the contract's ``cam --json`` and the terminal's tables
+(both languages, the lab's notation: s, ds/dφ, d²s/dφ², R0, e, ϑ, [ϑ], μ_s, μ_φ)."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphplan.exact.cam import Solution
+from graphplan.graphic.cam import CamConstruction, errors_pct
+from graphplan.util.words import num
+
+
+def _f(x) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
+    """The contract's document (lengths in m, angles in degrees; a rocking follower's s in degrees of
+    the arm's swing, its ds/dφ and d²s/dφ² per radian of the cam's turn)."""
+    cam = sol.cam
+    ex = sol.at(g.phi)
+    for key in ("s", "v", "a", "theta"):          # round-off below 1e-12 of the largest value is 0
+        big = float(np.max(np.abs(ex[key]))) or 1.0
+        ex[key] = np.where(np.abs(ex[key]) < 1e-12 * big, 0.0, ex[key])
+    unit = math.degrees(1.0) if cam.rocking else 1.0        # a rocking follower's angles in degrees
+    s_scale = cam.stroke
+    v_scale = float(np.max(np.abs(sol.at(np.linspace(0, 360, 3601))["v"])))
+    es = errors_pct(g.s, ex["s"], s_scale)
+    ev = errors_pct(g.v, ex["v"], v_scale)
+    et = errors_pct(g.theta, ex["theta"], max(cam.allowed))
+    positions = []
+    for k, phi in enumerate(g.phi):
+        P = ex["P"][k]
+        positions.append({
+            "phi_deg": float(phi), "phase": "rise" if g.phase[k] == 0 else "return",
+            "exact": {"s" + ("_deg" if cam.rocking else "_m"): float(ex["s"][k] * unit),
+                      "ds_dphi" + ("_deg" if cam.rocking else "_m"): float(ex["v"][k] * unit),
+                      "d2s_dphi2" + ("_deg" if cam.rocking else "_m"): float(ex["a"][k] * unit),
+                      "pressure_angle_deg": float(ex["theta"][k]), "radius_m": float(ex["radius"][k]),
+                      "profile_m": [float(P.real), float(P.imag)]},
+            "graphical": {"s" + ("_deg" if cam.rocking else "_m"): float(g.s[k] * unit),
+                          "ds_dphi" + ("_deg" if cam.rocking else "_m"): float(g.v[k] * unit),
+                          "d2s_dphi2" + ("_deg" if cam.rocking else "_m"): float(g.a[k] * unit),
+                          "pressure_angle_deg": float(g.theta[k]),
+                          "radius_m": float(g.radius_mm[k] * g.mu_l),
+                          "s_mm": float(g.s_mm[k]), "ds_dphi_mm": float(g.v_mm[k]), "d2s_dphi2_mm": float(g.a_mm[k]),
+                          "radius_mm": float(g.radius_mm[k])},
+            "error_pct": {"s": es[k], "ds_dphi": ev[k], "pressure_angle": et[k]}})
+    doc: dict[str, Any] = {
+        "scene": scene, "follower": cam.follower, "roller_radius_m": cam.roller, "omega_rad_s": cam.omega,
+        "sense": "ccw" if cam.sense > 0 else "cw",
+        "phases_deg": dict(zip(("rise", "dwell_far", "return", "dwell_near"), cam.phases)),
+        "laws": {"rise": cam.laws[0], "return": cam.laws[1]},
+        "pressure_angle_allowed_deg": {"rise": cam.allowed[0], "return": cam.allowed[1]},
+        "base_radius_min_m": sol.R0_min, "base_radius_m": sol.geometry.R0,
+        "divisions": int(len(g.phi) // 2 - 1), "precision_mm": g.precision,
+        "scales": {"mu_phi_rad_mm": g.mu_phi, "mu_a_mm": g.mu_a, "mu_v_mm": g.mu_v, "mu_s_mm": g.mu_s,
+                   "mu_l_m_mm": g.mu_l, "H1_mm": g.H1, "H2_mm": g.H2},
+        "positions": positions,
+        "base_radius_graphical_m": _f(g.R0_min),
+        "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
+        "pressure_angle_max_deg": {"rise": float(np.max(np.abs(ex["theta"][g.phase == 0]))),
+                                   "return": float(np.max(np.abs(ex["theta"][g.phase == 1])))},
+        "curvature_min_m": _f(sol.curvature_min()),
+        "warnings": [en for en, _ in sol.warnings + g.warnings],
+        "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
+    if cam.rocking:
+        doc.update(swing_deg=math.degrees(cam.stroke), arm_m=cam.arm, centre_distance_m=cam.centre_distance,
+                   arm_angle_deg=math.degrees(sol.geometry.psi0))
+    else:
+        doc.update(stroke_m=cam.stroke, offset_m=sol.geometry.e)
+    return doc
+
+
+WORDS = {
+    "uk": {"title": "Синтез кулачкового механізму", "translating": "поступальний штовхач",
+           "rocking": "коромисловий штовхач", "law": "закони: підйом — {r}, опускання — {t}",
+           "laws": {"parabolic": "параболічний", "cosine": "косинусний", "cycloidal": "синусний (циклоїдальний)",
+                    "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
+           "phases": "фази: φ_п = {a}°, φ_дв = {b}°, φ_с = {c}°, φ_бл = {d}°",
+           "radius": "R0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R0 = {r} мм",
+           "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ0 = {p}°",
+           "angles": "найбільший кут тиску: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
+           "curv": "найменший радіус кривини центрового профілю ρ_min = {c} мм, ролик r = {r} мм",
+           "scales": "масштаби: μ_φ = {p} рад/мм, μ_a = {a}, μ_v = {v}, μ_s = {s} (м або рад)/мм; H1 = {h1} мм, H2 = {h2} мм",
+           "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
+                    "R, мм", "R граф., мм"],
+           "warn": "Попередження"},
+    "en": {"title": "Cam synthesis", "translating": "translating follower", "rocking": "rocking follower",
+           "law": "laws: rise {r}, return {t}",
+           "laws": {"parabolic": "parabolic", "cosine": "cosine", "cycloidal": "cycloidal (sine)",
+                    "linear": "linear", "trapezoidal": "trapezoidal"},
+           "phases": "phases: φ_rise = {a}°, φ_far = {b}°, φ_return = {c}°, φ_near = {d}°",
+           "radius": "smallest R0 = {m} mm (graphically {g} mm, error {e} %); R0 taken = {r} mm",
+           "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ0 = {p}°",
+           "angles": "largest pressure angle: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
+           "curv": "smallest radius of curvature of the centre profile ρ_min = {c} mm, roller r = {r} mm",
+           "scales": "scales: μ_φ = {p} rad/mm, μ_a = {a}, μ_v = {v}, μ_s = {s} (m or rad)/mm; H1 = {h1} mm, H2 = {h2} mm",
+           "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
+                    "R, mm", "R gr., mm"],
+           "warn": "Warnings"},
+}
+
+
+def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
+    """The terminal's report: the data, the base radius exact and measured, the per-division table."""
+    w = WORDS[lang]
+    n = lambda x, d=4: num(x, lang, d) if x is not None else "—"                # noqa: E731
+    rocking = doc["follower"] == "rocking"
+    lines = [f"{title} — {w['title']}", w[doc["follower"]] + "; " + w["law"].format(
+        r=w["laws"][doc["laws"]["rise"]], t=w["laws"][doc["laws"]["return"]]),
+        w["phases"].format(a=n(doc["phases_deg"]["rise"]), b=n(doc["phases_deg"]["dwell_far"]),
+                           c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
+    lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
+                                 p=n(doc["arm_angle_deg"])) if rocking else w["offset"].format(e=n(doc["offset_m"] * 1000)))
+    g = doc["base_radius_graphical_m"]
+    lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
+                                    e=n(doc["base_radius_error_pct"], 3), r=n(doc["base_radius_m"] * 1000)))
+    lines.append(w["angles"].format(r=n(doc["pressure_angle_max_deg"]["rise"]), t=n(doc["pressure_angle_max_deg"]["return"]),
+                                    ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
+                                    at=n(doc["pressure_angle_allowed_deg"]["return"])))
+    c = doc["curvature_min_m"]
+    lines.append(w["curv"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000)))
+    sc = doc["scales"]
+    lines.append(w["scales"].format(p=n(sc["mu_phi_rad_mm"]), a=n(sc["mu_a_mm"]), v=n(sc["mu_v_mm"]), s=n(sc["mu_s_mm"]),
+                                    h1=n(sc["H1_mm"]), h2=n(sc["H2_mm"])))
+    lines.append("")
+    key = "_deg" if rocking else "_m"
+    rows = [w["head"]]
+    for p in doc["positions"]:
+        e, gr, err = p["exact"], p["graphical"], p["error_pct"]
+        rows.append([n(p["phi_deg"]), n(e["s" + key]), n(gr["s" + key]), n(err["s"], 3), n(e["ds_dphi" + key]),
+                     n(gr["ds_dphi" + key]), n(err["ds_dphi"], 3), n(e["pressure_angle_deg"]),
+                     n(gr["pressure_angle_deg"]), n(e["radius_m"] * 1000), n(gr["radius_mm"] * sc["mu_l_m_mm"] * 1000)])
+    widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
+    for r in rows:
+        lines.append("  ".join(x.rjust(wd) for x, wd in zip(r, widths)).replace("-", "−"))
+    warnings = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
+    if warnings:
+        lines += ["", w["warn"] + ":"] + [f"  - {x}" for x in warnings]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,230 @@
+"""The cam mechanism (issue 27): the laws against their closed forms written here, the smallest base
+radius against the allowed pressure angle, the profile's geometry, the graphical construction's
+convergence, the command's JSON and its refusals."""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from conftest import ROOT
+from fuzz_scenes import check_run, run
+from graphplan.exact import cam as X
+from graphplan.graphic.cam import construct
+from graphplan.model.cam import load
+
+TRANSLATING = ROOT / "examples" / "cam_translating.toml"
+ROCKING = ROOT / "examples" / "cam_rocking.toml"
+U = np.linspace(0.0, 1.0, 1001)
+
+
+# -- the laws -------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name, f, f1, f2", [
+    ("parabolic", lambda u: np.where(u <= 0.5, 2 * u ** 2, 1 - 2 * (1 - u) ** 2),
+     lambda u: np.where(u <= 0.5, 4 * u, 4 - 4 * u), lambda u: np.where(u <= 0.5, 4.0, -4.0)),
+    ("cosine", lambda u: 0.5 - 0.5 * np.cos(math.pi * u), lambda u: 0.5 * math.pi * np.sin(math.pi * u),
+     lambda u: 0.5 * math.pi ** 2 * np.cos(math.pi * u)),
+    ("cycloidal", lambda u: u - np.sin(2 * math.pi * u) / (2 * math.pi), lambda u: 1 - np.cos(2 * math.pi * u),
+     lambda u: 2 * math.pi * np.sin(2 * math.pi * u)),
+    ("linear", lambda u: u, lambda u: np.ones_like(u), lambda u: np.zeros_like(u)),
+])
+def test_each_law_is_its_closed_form(name, f, f1, f2):
+    got = X.law(name, U)
+    for g, want in zip(got, (f(U), f1(U), f2(U))):
+        assert np.max(np.abs(g - want)) < 1e-12
+
+
+def test_the_trapezoidal_law_integrates_its_acceleration():
+    """The trapezoidal law's f″ is the trapezoid (ramps over the first and last eighths and the middle
+    quarter); f′ and f are its integrals from 0 (checked by quadrature to 1e-12), f(1) = 1, f′(1) = 0,
+    and the peak A = 16/3: the velocity it gives peaks at 3A/8 in the middle and encloses 3A/16."""
+    from scipy.integrate import quad
+    f, f1, f2 = X.law("trapezoidal", U)
+    assert f[-1] == pytest.approx(1.0, abs=1e-12) and abs(f1[-1]) < 1e-12
+    assert np.max(f2) == pytest.approx(16 / 3, abs=1e-12)
+    acc = lambda u: float(X.law("trapezoidal", np.array([u]))[2][0])           # noqa: E731
+    vel = lambda u: float(X.law("trapezoidal", np.array([u]))[1][0])           # noqa: E731
+    for u in (0.1, 0.3, 0.5, 0.77, 0.95):
+        pts = [p for p in (0.125, 0.375, 0.625, 0.875) if p < u]
+        assert vel(u) == pytest.approx(quad(acc, 0, u, points=pts, epsabs=1e-14)[0], abs=1e-12)
+        assert float(X.law("trapezoidal", np.array([u]))[0][0]) == pytest.approx(
+            quad(vel, 0, u, points=pts, epsabs=1e-14)[0], abs=1e-12)
+
+
+def test_the_motion_over_the_turn_follows_the_phases():
+    cam = load(TRANSLATING)
+    rise, far, ret, _ = cam.phases
+    h = cam.stroke
+    phi = np.array([0.0, rise / 2, rise, rise + far / 2, rise + far + ret / 2, 359.0])
+    s, v, a = X.motion(cam, phi)
+    R = math.radians(rise)
+    assert s[1] == pytest.approx(h / 2, abs=1e-15) and v[1] == pytest.approx(h * math.pi / 2 / R, rel=1e-12)
+    assert s[2] == pytest.approx(h) and s[3] == h and s[5] == 0 and v[3] == 0 and a[5] == 0
+    # the return is parabolic: at its middle s = h/2 and |ds/dφ| = 2h/Φ_return
+    assert s[4] == pytest.approx(h / 2, abs=1e-15) and v[4] == pytest.approx(-2 * h / math.radians(ret), rel=1e-12)
+
+
+# -- the exact geometry ----------------------------------------------------------------------------------
+
+def largest_angles(cam, sol_geometry):
+    phi = np.concatenate([np.linspace(0, cam.phases[0], 20001),
+                          cam.phases[0] + cam.phases[1] + np.linspace(0, cam.phases[2], 20001)])
+    th = np.abs(X.profile(cam, sol_geometry, phi)["theta"])
+    ph = X.phase_of(cam, phi)
+    return [float(np.max(th[ph == k])) for k in (0, 1)]
+
+
+@pytest.mark.parametrize("path", [TRANSLATING, ROCKING])
+def test_the_smallest_base_radius_makes_the_largest_pressure_angle_the_allowed_one(path):
+    cam = load(path)
+    r = X.min_base_radius(cam)
+    worst = X._refined_worst(cam, r, cam.offset)
+    assert worst == pytest.approx(1.0, abs=1e-9 / 90)               # 1e-9° of a [ϑ] ≤ 90°
+    ratios = [a / b for a, b in zip(largest_angles(cam, X.geometry(cam, r)), cam.allowed)]
+    assert max(ratios) == pytest.approx(1.0, abs=1e-6)              # a fine grid agrees
+    assert X._refined_worst(cam, r * 0.999, cam.offset) > 1         # a smaller R0 is not allowed
+
+
+def test_the_translating_followers_profile_and_pressure_angle_in_closed_form():
+    """Centre profile points at √((s0+s)² + e²) from the cam's centre, the pressure angle
+    tg ϑ = (ds/dφ − σe)/(s0 + s), the profile turned against ω: P(φ)·e^{iσφ} is the roller centre."""
+    cam = load(TRANSLATING)
+    sol = X.solve(cam)
+    g = sol.geometry
+    phi = np.linspace(0, 360, 3601)
+    s, v, _ = X.motion(cam, phi)
+    p = sol.at(phi)
+    s0 = math.sqrt(g.R0 ** 2 - g.e ** 2)
+    assert np.max(np.abs(p["radius"] - np.sqrt((s0 + s) ** 2 + g.e ** 2))) < 1e-15
+    assert np.max(np.abs(np.tan(np.radians(p["theta"])) - (v - cam.sense * g.e) / (s0 + s))) < 1e-12
+    C = p["P"] * np.exp(1j * cam.sense * np.radians(phi))
+    assert np.max(np.abs(C.real - cam.sense * g.e)) < 1e-15
+
+
+def test_the_rocking_followers_roller_stays_on_its_arm():
+    """In the cam's frame the pivot turns back by φ; the roller centre stays at the arm's length from it,
+    the arm at ψ0 + s to the line of centres."""
+    cam = load(ROCKING)
+    sol = X.solve(cam)
+    phi = np.linspace(0, 360, 3601)
+    s, _, _ = X.motion(cam, phi)
+    P = sol.at(phi)["P"]
+    A = cam.centre_distance * np.exp(-1j * cam.sense * np.radians(phi))
+    assert np.max(np.abs(np.abs(P - A) - cam.arm)) < 1e-15
+    angle = np.angle((P - A) / (-A))
+    assert np.max(np.abs(np.abs(angle) - (sol.geometry.psi0 + s))) < 1e-12
+
+
+def test_curvature_of_a_circle_and_the_undercut_warning():
+    """A dwell is an arc of the base circle: ρ = R0 there; a roller larger than the smallest convex
+    radius of curvature is said to undercut the working profile."""
+    cam = load(TRANSLATING)
+    sol = X.solve(cam)
+    rise, far, _, _ = cam.phases
+    rho = sol.at(np.array([rise + far / 2, 355.0]))["rho"]
+    assert rho[1] == pytest.approx(sol.geometry.R0, rel=1e-12)
+    from dataclasses import replace
+    rho = sol.curvature_min()
+    assert rho < sol.geometry.R0                      # the flank is flatter than the base circle
+    roller = 0.5 * (rho + sol.geometry.R0)            # larger than ρ_min, smaller than the base circle
+    under = X.solve(replace(cam, roller=roller, base_radius=sol.geometry.R0))
+    assert any("undercut" in en for en, _ in under.warnings)
+    assert not any("undercut" in en for en, _ in sol.warnings)
+
+
+# -- the graphical construction ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("path", [TRANSLATING, ROCKING])
+def test_the_construction_converges_to_the_exact_solution(path):
+    """Exact readings (precision 0): the errors of s, ds/dφ and R0 fall with the divisions and at 128
+    are below 0.05 %; at the lab's 0.5 mm they stay finite and are reported."""
+    cam = load(path)
+    sol = X.solve(cam)
+    errs = []
+    for n in (8, 32, 128):
+        g = construct(sol, n, 0.0)
+        s, v, _ = X.motion(cam, g.phi)
+        errs.append((float(np.max(np.abs(g.s - s))) / cam.stroke,
+                     float(np.max(np.abs(g.v - v))) / float(np.max(np.abs(v))),
+                     abs(g.R0_min - sol.R0_min) / sol.R0_min))
+    for k in range(2):
+        assert errs[0][k] > errs[1][k] > errs[2][k]
+    assert max(errs[2]) < 5e-4
+    g = construct(sol, 8, 0.5)
+    assert 0 < abs(g.R0_min - sol.R0_min) / sol.R0_min < 0.05
+
+
+# -- the command ---------------------------------------------------------------------------------------------
+
+def test_cam_json_holds_the_contracts_fields():
+    code, out, err = run(["cam", str(TRANSLATING), "--json"])
+    doc = check_run(["cam", "--json"], code, out, err)
+    for key in ("scene", "follower", "roller_radius_m", "omega_rad_s", "stroke_m", "phases_deg", "laws",
+                "pressure_angle_allowed_deg", "base_radius_min_m", "base_radius_m", "offset_m", "positions",
+                "base_radius_graphical_m", "base_radius_error_pct", "curvature_min_m", "warnings"):
+        assert key in doc, key
+    p = doc["positions"][3]
+    for key in ("s_m", "ds_dphi_m", "d2s_dphi2_m", "pressure_angle_deg", "radius_m", "profile_m"):
+        assert key in p["exact"], key
+    assert set(p["error_pct"]) == {"s", "ds_dphi", "pressure_angle"}
+    assert doc["base_radius_m"] >= doc["base_radius_min_m"]
+    assert doc["positions"][0]["exact"]["radius_m"] == pytest.approx(doc["base_radius_m"])
+    code, out, err = run(["cam", str(ROCKING), "--json"])
+    doc = check_run(["cam", "--json"], code, out, err)
+    assert {"swing_deg", "arm_m", "centre_distance_m"} <= set(doc)
+
+
+def test_cam_tables_and_drawings(tmp_path):
+    code, out, err = run(["cam", str(TRANSLATING), "--svg", str(tmp_path)])
+    assert code == 0, err
+    assert "R0" in out and "ds/dφ" in out
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["diagrams.svg", "phase.svg", "profile.svg"]
+    code, out, _ = run(["cam", str(ROCKING), "--lang", "en"])
+    assert code == 0 and "rocking follower" in out
+
+
+BASE = TRANSLATING.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("dwell_near = 90", "dwell_near = 80", ["cam.phases_deg", "sum to 360"]),
+    ("stroke = 0.04 ", "stroke = -0.01 ", ["cam.stroke"]),
+    ("stroke = 0.04 ", "stroke = \"x\" ", ["cam.stroke", "must be a number"]),
+    ('rise = "cosine"', 'rise = "sinusoid"', ["cam.laws.rise", "unknown law"]),
+    ("roller_radius = 0.01 ", "roller_radius = 0.01\nbase_radius = 0.009 ", ["cam.roller_radius", "smaller than the base"]),
+    ("pressure_angle_deg = { rise = 30, return = 30 }", "pressure_angle_deg = { rise = 95, return = 30 }",
+     ["cam.pressure_angle_deg.rise"]),
+    ("omega = 10 ", "omega = [1] ", ["cam.omega"]),
+    ('follower = "translating"', 'follower = "flat"', ["cam.follower"]),
+])
+def test_bad_cam_scenes_are_one_line_naming_the_key(tmp_path, old, new, words):
+    assert old in BASE
+    path = tmp_path / "cam.toml"
+    path.write_text(BASE.replace(old, new), encoding="utf-8")
+    code, out, err = run(["cam", str(path)])
+    check_run(["cam"], code, out, err)
+    assert code == 2
+    for w in words + [str(path)]:
+        assert w in err, (w, err)
+
+
+def test_the_api_shows_the_cam():
+    import graphplan
+    c = graphplan.cam(TRANSLATING, lang="en")
+    assert c.to_json()["base_radius_min_m"] == pytest.approx(X.min_base_radius(load(TRANSLATING)), rel=1e-12)
+    assert "Cam synthesis" in c.table() and "<svg" in c._repr_html_()
+
+
+@pytest.mark.parametrize("scene", ["cam_translating", "cam_rocking"])
+def test_gallery_cam_drawings_are_current(scene):
+    from graphplan.cli.gallery import cam_drawings
+    from test_gallery import drawing
+    for name, text in cam_drawings(scene).items():
+        path = ROOT / "drawings" / name
+        assert path.exists(), f"drawings/{name} is missing: run python -m graphplan.cli.gallery"
+        assert drawing(path.read_text(encoding="utf-8")) == drawing(text), \
+            f"drawings/{name} is out of date: run python -m graphplan.cli.gallery"
