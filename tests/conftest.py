@@ -20,6 +20,10 @@ EXAMPLES = ["crank_slider", "lab_crank_slider", "four_bar", "shaper", "slotter"]
 
 
 def example(name: str):
+    """An example studied — a cam example (cam_*) read as its cam, what the cam sheet takes."""
+    if name.startswith("cam_"):
+        from graphplan.model.cam import load as load_cam
+        return load_cam(ROOT / "examples" / f"{name}.toml")
     return study(load(ROOT / "examples" / f"{name}.toml"))
 
 

@@ -23,6 +23,8 @@ SHEETS = [
     ("slotter", "forces", "uk", "slotter_forces.svg", "A1"),
     ("shaper", "dynamics", "uk", "shaper_dynamics.svg", "A1"),
     ("slotter", "dynamics", "uk", "slotter_dynamics.svg", "A1"),
+    ("cam_translating", "cam", "uk", "cam_translating.svg", "A1"),
+    ("cam_rocking", "cam", "en", "cam_rocking_en.svg", "A1"),
 ]
 
 
@@ -33,7 +35,11 @@ def build_set(scene: str, kind: str, lang: str, fmt: str = "A1") -> list[str]:
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.sheet import BUILDERS
     from graphplan.sheets.form import form
-    st = study(load(ROOT / "examples" / f"{scene}.toml"))
+    if kind == "cam":                       # a cam scene: the sheet takes the cam itself
+        from graphplan.model.cam import load as load_cam
+        st = load_cam(ROOT / "examples" / f"{scene}.toml")
+    else:
+        st = study(load(ROOT / "examples" / f"{scene}.toml"))
     sheet = BUILDERS[kind](st, form(fmt), SheetOptions(lang=lang, sheet=kind))
     return [page.svg() for page in sheet.pages]
 

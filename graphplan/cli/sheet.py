@@ -19,8 +19,9 @@ def register(sub) -> None:
     p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3; what does not fit "
                    "goes to further sheets of the set (FILE-2, FILE-3 …)")
     lang_arg(p)
-    p.add_argument("--sheet", default="kinematics", choices=["kinematics", "forces", "dynamics"],
-                   help="which sheet: kinematics (default), forces or dynamics")
+    p.add_argument("--sheet", default=None, choices=["kinematics", "forces", "dynamics", "cam"],
+                   help="which sheet: kinematics (the default of a lever mechanism), forces, dynamics, or "
+                        "cam (the default of a [cam] scene, docs/cams.md)")
     p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
     p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
     p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
@@ -39,8 +40,19 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     if Path(args.output).suffix.lower() in (".pdf", ".png"):
         from graphplan.drawing.raster import require_cairo
         require_cairo()                  # before the work: one line when the cairo library is missing
-    st = study(load(args.scene))
-    args.lang = lang_of(args, st)
+    cam = _cam_scene(args.scene)
+    if cam is not None or args.sheet == "cam":
+        if cam is None:
+            raise GraphplanError("--sheet cam: the scene has no [cam] table (docs/cams.md)", args.scene)
+        if args.sheet not in (None, "cam"):
+            raise GraphplanError(f"--sheet {args.sheet}: a cam scene has the cam sheet only", args.scene)
+        from graphplan.util.words import pick
+        args.sheet, st = "cam", cam
+        args.lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
+    else:
+        args.sheet = args.sheet or "kinematics"
+        st = study(load(args.scene))
+        args.lang = lang_of(args, st)
     f = form(args.format)
     build = BUILDERS.get(args.sheet)
     if build is None:
@@ -56,3 +68,18 @@ def cmd_sheet(args: argparse.Namespace) -> int:
         print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size, k=n,
                    m=len(sheet.pages), n=len(page.placed)), file=sys.stderr)
     return 0
+
+
+def _cam_scene(path: str | None):
+    """The cam of a [cam] scene, or None for a lever mechanism's scene (read as every scene is)."""
+    if path is None:
+        return None
+    from graphplan.model import bounds as B
+    from graphplan.model.cam import build, is_cam
+    from graphplan.util.files import read_bytes
+    try:
+        data = B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), str(path))
+    except (UnicodeDecodeError, GraphplanError):
+        return None                      # the lever scene's reader says what is wrong
+    return build(data, str(path)) if is_cam(data) else None
+

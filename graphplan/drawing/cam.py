@@ -16,6 +16,28 @@ LAYER = "cam"
 TEXT = 3.5
 
 
+def _clear_label(rec: Record, at: complex, text: str) -> None:
+    """A point's letter where the lines leave most room: of eight places around the point, the one
+    whose letter box lies farthest from every line drawn so far."""
+    segs = []
+    for p in rec.items:
+        if p.kind in ("segment", "vector", "polyline") and len(p.points) >= 2:
+            segs += [(complex(*a), complex(*b)) for a, b in zip(p.points[:-1], p.points[1:])]
+
+    def dist(q: complex, a: complex, b: complex) -> float:
+        d = b - a
+        t = 0.0 if abs(d) == 0 else max(0.0, min(1.0, ((q - a) * d.conjugate()).real / abs(d) ** 2))
+        return abs(q - (a + t * d))
+    best, where = -1.0, at
+    for k in range(8):
+        c = at + 5.0 * complex(math.cos(k * math.pi / 4), math.sin(k * math.pi / 4))
+        box = [c + complex(dx, dy) for dx in (-1.5, 0.0, 1.5) for dy in (-2.0, 0.0, 2.0)]
+        room = min((dist(q, a, b) for q in box for a, b in segs), default=99.0)
+        if room > best:
+            best, where = room, c
+    rec.label((where.real - 1.2, where.imag - 1.7), text, size=TEXT, layer=LAYER)
+
+
 def _axes(rec: Record, y0: float, width: float, top: float, bottom: float, letter: str, k: int) -> None:
     rec.segment((0.0, y0), (width + 6.0, y0), role="axis", layer=LAYER, step=f"axis {k}")
     rec.segment((0.0, y0 + bottom - 3.0), (0.0, y0 + top + 3.0), role="axis", layer=LAYER)
@@ -64,7 +86,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     cam = sol.cam
     rec = Record("phase diagram")
     k = cam.arm if cam.rocking else 1.0                # a rocking follower's angles as arcs of the arm
-    mu = g.mu_l
+    mu = g.mu_s * k                                    # s and ds/dφ at the scale of the s diagram
     fine = np.linspace(0.0, 360.0, 721)
     s, v, _ = motion(cam, fine)
     sig = cam.sense
@@ -91,10 +113,10 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     rec.segment((0.0, centre.imag - 5), (0.0, float(np.max(gy)) + 5), role="axis", layer=LAYER)
     rec.point((centre.real, centre.imag), role="pole", layer=LAYER)
     rec.segment((centre.real, centre.imag), (0.0, 0.0), role="construction", layer=LAYER)
-    rec.label((centre.real + 2, centre.imag - 4), "O", size=TEXT, layer=LAYER)
+    _clear_label(rec, centre, "O")
     rec.label((2.0, float(np.max(gy)) + 3), "s", size=TEXT, layer=LAYER)
     rec.label((float(np.max(np.abs(gx))) + 2, 2.0), "ds/dφ", size=TEXT, layer=LAYER)
-    rec.scales.update(mu_l=mu)
+    rec.scales.update(mu_phase=mu)
     return rec
 
 
@@ -119,9 +141,17 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         if cam.roller > 0 and k % 2 == 0:
             rec.circle((q.real, q.imag), cam.roller / mu, role="construction", layer=LAYER)
     rec.point((0.0, 0.0), role="pole", layer=LAYER)
-    rec.label((2.0, -5.0), "O", size=TEXT, layer=LAYER)
     r0 = sol.geometry.R0 / mu
-    rec.label((r0 * 0.7, -r0 * 0.7 - 4), "R_0", size=TEXT, layer=LAYER)
+    rays = np.sort(np.mod(np.angle(pts), 2 * math.pi))
+    gaps = np.diff(np.append(rays, rays[0] + 2 * math.pi))
+    k = int(np.argmax(gaps))
+    mid = rays[k] + gaps[k] / 2                           # the widest sector without a ray
+    side = mid - gaps[k] / 4                              # R0 drawn there, O's letter on the bisector
+    rec.segment((0.0, 0.0), (r0 * math.cos(side), r0 * math.sin(side)), role="construction", layer=LAYER)
+    along = complex(math.cos(side), math.sin(side))
+    for text, c in (("O", 7.0 * complex(math.cos(mid), math.sin(mid))),
+                    ("R_0", 0.6 * r0 * along + 4.0 * along * 1j)):      # beside the radius, toward O's side
+        rec.label((c.real - 1.2 * len(text.replace("_", "")), c.imag - 1.7), text, size=TEXT, layer=LAYER)
     rec.scales.update(mu_l=mu)
     return rec
 

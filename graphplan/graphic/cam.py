@@ -29,6 +29,7 @@ from graphplan.graphic.scales import series_around
 
 HEIGHT_MM = 40.0       # the tallest ordinate of the analogue-acceleration diagram
 STROKE_MM = 80.0       # the stroke (swing) drawn on the s diagram, about
+PROFILE_MM = 100.0     # the centre profile's largest radius, drawn, about
 L_MM = 240.0           # the abscissa of a whole turn
 
 
@@ -136,8 +137,9 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     s_g, v_g = s_mm * mu_s, v_mm * mu_v
     # the phase diagram: the smallest base radius at which no drawn point exceeds the allowed angle
     R0_min = _phase_diagram_radius(sol, phi, phase, s_g, v_g)
-    mu_l = nice(max(sol.geometry.R0 + (cam.stroke if not cam.rocking else 0.0), cam.arm + cam.centre_distance)
-                / 80.0)
+    # the profile about 200 mm across: its largest radius 100 mm at a standard μ_l
+    largest = float(np.max(np.abs(profile(cam, sol.geometry, np.linspace(0.0, 360.0, 721))["P"])))
+    mu_l = nice(largest / PROFILE_MM)
     R0_min = float(read(R0_min / mu_l, precision)) * mu_l
     prof = profile(cam, sol.geometry, phi, s_g, v_g, np.zeros_like(phi))
     radius_mm = read(prof["radius"] / mu_l, precision)

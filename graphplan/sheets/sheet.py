@@ -33,8 +33,16 @@ def build_dynamics_sheet(st, f, options) -> Sheet:
     return build(st, f, options)
 
 
+def build_cam_sheet(cam, f, options) -> Sheet:
+    """Sheet 4 (sheets/cam.py): the cam synthesised — its first argument the cam (model.cam.Cam),
+    not a lever mechanism's study."""
+    from graphplan.sheets.cam import build_cam_sheet as build
+    return build(cam, f, options)
+
+
 BUILDERS: dict[str, Callable[..., Sheet]] = {
     "kinematics": build_kinematics_sheet,
     "forces": build_forces_sheet,
     "dynamics": build_dynamics_sheet,
+    "cam": build_cam_sheet,
 }
