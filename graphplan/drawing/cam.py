@@ -135,8 +135,17 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     if cam.roller > 0:
         rec.add("polyline", list(zip(W.real, W.imag)), role="link", layer=LAYER, step="working profile")
     pts = profile(cam, sol.geometry, g.phi, g.s, g.v, np.zeros_like(g.phi))["P"] / mu
+    back = np.exp(-1j * cam.sense * np.radians(g.phi))     # the follower turned against ω
+    if cam.rocking:        # the pivot's circle; each arm from its turned pivot to the roller's centre
+        rec.circle((0.0, 0.0), cam.centre_distance / mu, role="trajectory", layer=LAYER)
+        feet = cam.centre_distance / mu * back
+    else:                  # the offset's circle; each axis from its foot on it to the point laid off
+        e = sol.geometry.e / mu
+        if abs(e) > 0.5:
+            rec.circle((0.0, 0.0), abs(e), role="trajectory", layer=LAYER)
+        feet = cam.sense * e * back
     for k, q in enumerate(pts):
-        rec.segment((0.0, 0.0), (q.real, q.imag), role="construction", layer=LAYER)
+        rec.segment((feet[k].real, feet[k].imag), (q.real, q.imag), role="construction", layer=LAYER)
         rec.point((q.real, q.imag), role="construction", layer=LAYER)
         if cam.roller > 0 and k % 2 == 0:
             rec.circle((q.real, q.imag), cam.roller / mu, role="construction", layer=LAYER)
@@ -149,7 +158,8 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     side = mid - gaps[k] / 4                              # R0 drawn there, O's letter on the bisector
     rec.segment((0.0, 0.0), (r0 * math.cos(side), r0 * math.sin(side)), role="construction", layer=LAYER)
     along = complex(math.cos(side), math.sin(side))
-    for text, c in (("O", 7.0 * complex(math.cos(mid), math.sin(mid))),
+    near = 7.0 if cam.rocking else max(7.0, abs(sol.geometry.e / mu) + 5.0)   # outside the offset's circle
+    for text, c in (("O", near * complex(math.cos(mid), math.sin(mid))),
                     ("R_0", 0.6 * r0 * along + 4.0 * along * 1j)):      # beside the radius, toward O's side
         rec.label((c.real - 1.2 * len(text.replace("_", "")), c.imag - 1.7), text, size=TEXT, layer=LAYER)
     rec.scales.update(mu_l=mu)
