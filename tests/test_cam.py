@@ -228,3 +228,24 @@ def test_gallery_cam_drawings_are_current(scene):
         assert path.exists(), f"drawings/{name} is missing: run python -m graphplan.cli.gallery"
         assert drawing(path.read_text(encoding="utf-8")) == drawing(text), \
             f"drawings/{name} is out of date: run python -m graphplan.cli.gallery"
+
+
+def test_the_bench_section_charts_convergence_and_the_failures(tmp_path, monkeypatch):
+    """`graphplan bench --section cam` (quick): with the exact ruler the profile's error falls as the
+    divisions grow (the translating example's R0 is exact at every even count: the parabolic return's
+    binding point is a division, and chords integrate its piecewise-constant acceleration exactly); the
+    failure rows warn of the linear law's rigid shocks and of the undercut, and a [ϑ] near 90° ends in a
+    one-line refusal (the base circle collapses inside the roller)."""
+    from graphplan.bench import run as bench
+    monkeypatch.setattr(bench, "SECTIONS", {"cam": bench.SECTIONS["cam"]})
+    rows = bench.run(tmp_path, quick=True, show_progress=False)
+    assert (tmp_path / "cam.png").read_bytes()[:4] == b"\x89PNG"
+    exact = [r for r in rows if r["method"] == "graphical" and r["precision_mm"] == 0]
+    for scene in ("cam_translating", "cam_rocking"):
+        errs = [r["profile_error_pct"] for r in exact if r["scene"] == scene]
+        assert errs[-1] < errs[0] / 10 and errs[-1] < 0.1
+    assert all(abs(r["R0_error_pct"]) < 1e-9 for r in exact if r["scene"] == "cam_translating")
+    failures = {r["setting"]: r for r in rows if r["method"] == "failure"}
+    assert any("rigid shocks" in w for w in failures["linear law (rigid shocks)"]["warnings"])
+    assert any("undercut" in w for w in failures["roller 55.6 mm (undercut)"]["warnings"])
+    assert failures["[ϑ] = 85° (near 90°)"]["status"] == "refused"

@@ -203,6 +203,12 @@ def flywheel(quick: bool) -> Iterator[Row]:
     return rows(quick, example)
 
 
+def cam(quick: bool) -> Iterator[Row]:
+    """The graphical cam synthesis against the exact one (bench/cam.py)."""
+    from graphplan.bench.cam import rows as measured
+    return measured(quick, examples_dir())
+
+
 def processes(quick: bool) -> Iterator[Row]:
     """Whole commands as fresh processes against the bare import (bench/processes.py)."""
     from graphplan.bench.processes import rows as measured
@@ -218,6 +224,7 @@ SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "sheet": sheet_time,
     "external": external,
     "flywheel": flywheel,
+    "cam": cam,
 }
 ON_REQUEST: dict[str, Callable[[bool], Iterator[Row]]] = {     # not in a plain run: asked for by name
     "processes": processes,
@@ -368,6 +375,11 @@ def _chart_plans(rows: list[Row], plt):
     return fig
 
 
+def _chart_cam(rows: list[Row], plt):
+    from graphplan.bench.cam import chart
+    return chart(rows, plt)
+
+
 def _chart_flywheel(rows: list[Row], plt):
     from graphplan.bench.dynamics import chart
     return chart(rows, plt)
@@ -375,7 +387,7 @@ def _chart_flywheel(rows: list[Row], plt):
 
 CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
                                "stability": _chart_stability, "differentiation": differentiation.chart,
-                               "flywheel": _chart_flywheel}
+                               "flywheel": _chart_flywheel, "cam": _chart_cam}
 
 
 SWEEP_WORDS = {"four_bar toward": "bench sweep four_bar", "crank_slider l/r": "bench sweep crank_slider",
