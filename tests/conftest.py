@@ -43,3 +43,18 @@ def derivative(f, phi_deg: np.ndarray, omega: float, order: int = 1, h_deg: floa
 @pytest.fixture(params=EXAMPLES)
 def any_example(request):
     return example(request.param)
+
+
+@pytest.fixture(scope="module")
+def crank_slider_keys(tmp_path_factory):
+    """Keys of two crank-slider variants (examples/crank_slider.toml with r, l changed), for the tests
+    that grade students' tables."""
+    from fuzz_scenes import run
+    folder = tmp_path_factory.mktemp("keys")
+    table = folder / "variants.csv"
+    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n"
+                     "02,0.05,0.2\n", encoding="utf-8")
+    code, _, err = run(["key", str(table), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"])
+    assert code == 0, err
+    return folder / "keys"
+

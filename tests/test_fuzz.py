@@ -169,15 +169,8 @@ def test_the_explorer_of_random_mechanisms(tmp_path_factory, scene):
 
 
 @pytest.fixture(scope="module")
-def key_folder(tmp_path_factory):
-    from fuzz_scenes import ROOT
-    folder = tmp_path_factory.mktemp("key")
-    table = folder / "variants.csv"
-    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n"
-                     "02,0.05,0.2\n", encoding="utf-8")
-    code, _, err = run(["key", str(table), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"])
-    assert code == 0, err
-    return folder / "keys"
+def key_folder(crank_slider_keys):
+    return crank_slider_keys
 
 
 CELL = st.one_of(st.sampled_from(["01", "02", "7", "v_B", "omega_AB", "a_B", "#3", "1", "13", "-1",

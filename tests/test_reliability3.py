@@ -206,14 +206,8 @@ def test_a_yoke_whose_slot_is_a_hair_off_its_guide_is_refused_at_a_sheets_scales
 # -- students' tables ------------------------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def keys(tmp_path_factory) -> Path:
-    folder = tmp_path_factory.mktemp("keys")
-    table = folder / "variants.csv"
-    table.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.064,0.307\n"
-                     "02,0.05,0.2\n", encoding="utf-8")
-    code, _, err = run(["key", str(table), "-o", str(folder / "keys"), "--quiet", "--no-pdf", "--jobs", "1"])
-    assert code == 0, err
-    return folder / "keys"
+def keys(crank_slider_keys) -> Path:
+    return crank_slider_keys
 
 
 def exact_vb(keys: Path, position: int = 1) -> float:
