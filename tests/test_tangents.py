@@ -265,6 +265,7 @@ def test_bench_json_holds_all_three_methods(tmp_path, monkeypatch):
     assert (tmp_path / "differentiation.png").exists()
 
 
+@pytest.mark.slow              # the differentiation bench in full (8 s): docs/diagrams.md's table stays its rows
 def test_docs_table_comes_from_the_bench_rows():
     from graphplan.bench.differentiation import markdown_table, rows
     table = markdown_table(list(rows(quick=False)))
