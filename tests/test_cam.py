@@ -249,3 +249,28 @@ def test_the_bench_section_charts_convergence_and_the_failures(tmp_path, monkeyp
     assert any("rigid shocks" in w for w in failures["linear law (rigid shocks)"]["warnings"])
     assert any("undercut" in w for w in failures["roller 55.6 mm (undercut)"]["warnings"])
     assert failures["[ϑ] = 85° (near 90°)"]["status"] == "refused"
+
+
+def test_keys_for_cam_variants_are_graded_by_check(tmp_path):
+    """`graphplan key` on a table of cam variants (dotted [cam] columns over the translating example):
+    each variant's smallest base radius is the exact one for its data; its key.csv, filled in as a
+    student would, passes `check`; a wrong value fails."""
+    table = tmp_path / "cams.csv"
+    table.write_text(f"# base = {TRANSLATING}\nvariant,cam.stroke,cam.offset,cam.roller_radius\n"
+                     "01,0.04,0.005,0.01\n02,0.05,0.0,0.012\n", encoding="utf-8")
+    out = tmp_path / "keys"
+    code, stdout, err = run(["key", str(table), "-o", str(out), "--quiet", "--no-pdf", "--jobs", "1", "--json"])
+    assert code == 0, err
+    rows = {r["variant"]: r for r in json.loads(stdout)["rows"]}
+    from dataclasses import replace
+    cam = load(TRANSLATING)
+    assert rows["02"]["R0_min"] == pytest.approx(
+        X.min_base_radius(replace(cam, stroke=0.05, offset=0.0, roller=0.012)), rel=1e-12)
+    code, report, err = run(["check", str(out), str(out / "01" / "key.csv"), "--json"])
+    assert code == 0, err
+    doc = json.loads(report)
+    assert doc["rows"] and all(r["pass"] for r in doc["rows"])
+    wrong = tmp_path / "student.csv"
+    wrong.write_text("variant,position,quantity,value\n01,4,s,0.03\n", encoding="utf-8")
+    code, report, err = run(["check", str(out), str(wrong), "--json"])
+    assert code == 0 and json.loads(report)["rows"][0]["status"] == "fail"

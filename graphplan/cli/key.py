@@ -53,6 +53,8 @@ def write_key(folder: Path, key: dict[str, Any], pdf: bool = True, lang: str = "
     from graphplan.teach.keys import key_csv
     from graphplan.teach.keysheet import A4_PORTRAIT, key_sheet
     from graphplan.drawing.svg import render
+    if key.get("kind") == "cam":
+        from graphplan.teach.camkeys import key_sheet
     sheet = key_sheet(key, lang)
     svg = render(sheet, *A4_PORTRAIT, title=plain(sheet.title))
     files = [write_atomic(folder / "key.json", dumps(key)),
@@ -111,7 +113,8 @@ def summary_text(title: str, columns: list[str], rows: list[dict[str, Any]], uni
                                for i, (x, w) in enumerate(zip(r, widths))).rstrip())
     from graphplan.teach.keysheet import summary_note
     from graphplan.util.words import word
-    lines += ["", plain(summary_note(lang))]
+    if "phi0_deg" in columns:            # the lever mechanisms' columns explained (not a cam's)
+        lines += ["", plain(summary_note(lang))]
     notes = [r for r in rows if r.get("note")]
     if notes:
         lines.append("")
@@ -165,12 +168,23 @@ def _variant_job(index: int) -> dict[str, Any]:
     from graphplan.model.scene import build
     table, opt = _JOB["table"], _JOB["options"]
     v = table.variants[index]
+    from graphplan.model.cam import is_cam
     try:
         tree = vt.scene_tree(table, v)
-        st = study(build(tree, v.where(table.path)))
-        key = make_key(st, variant=v.id, student=v.student, base=v.base.name, overrides=v.overrides,
-                       scene=tree, divisions=v.divisions or opt.divisions,
-                       tolerances=[v.tolerances, opt.tolerances, table.tolerances])
+        if is_cam(tree):                  # a cam variant: its own key (teach/camkeys.py)
+            from graphplan.exact.cam import solve
+            from graphplan.model.cam import build as build_cam
+            from graphplan.teach import camkeys
+            key = camkeys.make_cam_key(solve(build_cam(tree, v.where(table.path))), variant=v.id,
+                                       student=v.student, base=v.base.name, overrides=v.overrides, scene=tree,
+                                       divisions=v.divisions or opt.divisions,
+                                       tolerances=[v.tolerances, opt.tolerances, table.tolerances])
+            summary_row, summary_units = camkeys.summary_row, camkeys.summary_units
+        else:
+            st = study(build(tree, v.where(table.path)))
+            key = make_key(st, variant=v.id, student=v.student, base=v.base.name, overrides=v.overrides,
+                           scene=tree, divisions=v.divisions or opt.divisions,
+                           tolerances=[v.tolerances, opt.tolerances, table.tolerances])
     except GraphplanError as exc:
         note, prefix = exc.line(), v.where(table.path)
         if note.startswith(prefix):

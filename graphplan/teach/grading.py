@@ -231,6 +231,8 @@ class _Variant:
 
     def study(self) -> Study:
         if self._study is None:
+            if self.key.get("kind") == "cam":
+                raise NoScene("a cam key: its values stand at the divisions only", self.key.get("_path"))
             scene = self.key.get("scene")
             if not scene:
                 raise NoScene("the key has no scene to search other crank angles", self.key.get("_path"))

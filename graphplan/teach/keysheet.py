@@ -24,7 +24,10 @@ SMALL, MEDIUM, LARGE = 2.5, 3.5, 5.0
 
 NAMES = {"phi0_deg": ("φ_0", "φ_0"), "pos_a": ("пол. a", "pos. a"), "K_calc": ("K розр.", "K calc"),
          "v_max": ("|v|_max", "|v|_max"), "a_max": ("|a|_max", "|a|_max"), "variant": ("варіант", "variant"),
-         "student": ("студент", "student"), "status": ("стан", "status")}
+         "student": ("студент", "student"), "status": ("стан", "status"),
+         # a cam's summary (teach/camkeys.py)
+         "R0_min": ("R_0 min", "R_0 min"), "R0": ("R_0", "R_0"), "theta_rise": ("ϑ підйому", "ϑ rise"),
+         "theta_return": ("ϑ опускання", "ϑ return"), "rho_min": ("ρ min", "ρ min")}
 
 
 def summary_note(lang: str) -> str:
@@ -413,7 +416,8 @@ def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], un
     row_h = max(3.0, min(5.0, room_h / (len(rows) + 2)))
     align = ["start" if c in ("variant", "student", "status") else "end" for c in columns]
     y, _ = table(rec, x0, y, header, cells, size=size, row_h=row_h, align=align)
-    y = _paragraph(rec, x0, y - 1.0, summary_note(lang), SMALL, room)
+    if "phi0_deg" in columns:            # the lever mechanisms' columns explained (not a cam's)
+        y = _paragraph(rec, x0, y - 1.0, summary_note(lang), SMALL, room)
     for r in notes:
         y = _paragraph(rec, x0, y, word("variant note", lang, v=escape(str(r['variant'])),
                                         note=escape(r.get('note', ''))), SMALL, room)
