@@ -19,7 +19,7 @@ from fuzz_scenes import FULL_TREE, LOADED, MALFORMED, NEAR_SINGULAR, VALID, chec
 from graphplan.model.mechanism import FRAME
 from graphplan.model.scene import loads
 
-QUICK = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_QUICK", "20")), deadline=None, derandomize=True,
+QUICK = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_QUICK", "15")), deadline=None, derandomize=True,
              suppress_health_check=list(HealthCheck))
 SLOW = dict(max_examples=int(os.environ.get("GRAPHPLAN_FUZZ_SLOW", "10000")), deadline=None,
             suppress_health_check=list(HealthCheck))

@@ -49,11 +49,15 @@ def ink_overprints(names: list[str]) -> dict[str, list]:
     return json.loads(done.stdout)
 
 
-def gallery_chunks(size: int = 5) -> list[list[str]]:
+def gallery_chunks(size: int = 5) -> list:
     """The gallery's sheets in groups, each group rendered in one fresh process (a process a sheet
-    spent more time starting than counting)."""
+    spent more time starting than counting): the A1 sheets in the default run, the smaller formats'
+    sets (A2, A3: the same drawings carried over more sheets) in the slow one."""
     names = gallery_files()
-    return [names[k:k + size] for k in range(0, len(names), size)]
+    sets = [n for n in names if re.search(r"_a[23]", n)]
+    first = [n for n in names if n not in sets]
+    return ([names_ for names_ in (first[k:k + size] for k in range(0, len(first), size))]
+            + [pytest.param(sets[k:k + size], marks=pytest.mark.slow) for k in range(0, len(sets), size)])
 
 
 @pytest.mark.parametrize("names", gallery_chunks(), ids=lambda names: names[0])
