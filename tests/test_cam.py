@@ -274,3 +274,12 @@ def test_keys_for_cam_variants_are_graded_by_check(tmp_path):
     wrong.write_text("variant,position,quantity,value\n01,4,s,0.03\n", encoding="utf-8")
     code, report, err = run(["check", str(out), str(wrong), "--json"])
     assert code == 0 and json.loads(report)["rows"][0]["status"] == "fail"
+
+
+def test_each_kind_of_scene_to_its_commands():
+    """A lever command on a cam scene and `cam` on a lever scene each say so in one line."""
+    for argv, words in ((["analyze", str(TRANSLATING)], ["a cam scene", "graphplan cam"]),
+                        (["cam", str(ROOT / "examples" / "shaper.toml")], ["no [cam] table"])):
+        code, out, err = run(argv)
+        check_run(argv, code, out, err)
+        assert code == 2 and all(w in err for w in words), err

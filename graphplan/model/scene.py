@@ -117,6 +117,9 @@ class _Reader:
 
     # -- sections ---------------------------------------------------------------------------
     def mechanism(self) -> Mechanism:
+        if isinstance(self.data, dict) and "cam" in self.data:
+            raise self.fail("cam", "a cam scene: graphplan cam and graphplan sheet draw it (docs/cams.md); "
+                                   "this command takes a lever mechanism")
         data = self.table(self.data, "scene", _TOP)
         derived = self.read_synthesis(data.get("synthesis"))
         self.read_params(data)
