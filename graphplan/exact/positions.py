@@ -126,11 +126,13 @@ def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]
     direction lines cross at less than ``WARN_DEG`` somewhere in the turn (each in every language)."""
     grid = np.arange(GRID) * 360.0 / GRID
     kin = solve(mech, structure, grid)
+    worst_of = _worst_conditions(mech, structure, grid, kin,
+                                 [d.label for d in structure.dyads if np.all(kin.valid[d.label])])
     warnings = []
     for dyad in structure.dyads:
         ok = kin.valid[dyad.label]
         if np.all(ok):
-            phi, worst = _worst_condition(mech, structure, dyad.label, grid, kin.condition[dyad.label])
+            phi, worst = worst_of[dyad.label]
             if worst < LOCK_SIN:
                 raise AssemblyError(f"{dyad.title} locks at crank angle {deg(phi, 2)}: its direction lines "
                                     "coincide (transmission angle 0°), the crank cannot drive it through",
@@ -215,27 +217,40 @@ def deg(angle: float, digits: int = 1) -> str:
     return f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
 
 
-def _worst_condition(mech, structure, label, grid, cond) -> tuple[float, float]:
-    """The crank angle and value of the smallest |sin| between the group's direction lines,
-    refined by golden-section search around the grid's local minima."""
+def _worst_conditions(mech, structure, grid, kin: Kinematics, labels: list[str]) -> dict[str, tuple[float, float]]:
+    """For each group in ``labels``: the crank angle and value of the smallest |sin| between its
+    direction lines, refined by golden-section search around the grid's four lowest local minima.
+    Every bracket of every group is searched at once, elementwise as one would by hand: one solve of
+    the mechanism a step (40 steps shrink a bracket of two grid steps 0.618⁴⁰ ≈ 4·10⁻⁹ times)."""
     step = grid[1] - grid[0]
-    n = len(grid)
-    minima = [k for k in range(n) if cond[k] <= cond[k - 1] and cond[k] <= cond[(k + 1) % n]]
-    minima = sorted(minima, key=lambda k: cond[k])[:4]
-    best_phi, best = float(grid[int(np.argmin(cond))]), float(np.min(cond))
+    out: dict[str, tuple[float, float]] = {}
+    owner, centres = [], []
+    for label in labels:
+        cond = kin.condition[label]
+        out[label] = float(grid[int(np.argmin(cond))]), float(np.min(cond))
+        lower = (cond <= np.roll(cond, 1)) & (cond <= np.roll(cond, -1))
+        minima = np.flatnonzero(lower)
+        minima = minima[np.argsort(cond[minima], kind="stable")][:4]
+        owner += [label] * len(minima)
+        centres += [float(grid[k]) for k in minima]
+    if not centres:
+        return out
+    owner_ = np.array(owner)
 
-    def f(phi: np.ndarray) -> np.ndarray:           # every search at once: one solve a step
-        kin = solve(mech, structure, phi)
-        return np.where(kin.valid[label], kin.condition[label], 0.0)
+    def f(phi: np.ndarray, who: np.ndarray = owner_) -> np.ndarray:   # every search at once: one solve a step
+        kin_ = solve(mech, structure, phi)
+        value = np.zeros(phi.shape)
+        for label in dict.fromkeys(owner):
+            mine = who == label
+            value[mine] = np.where(kin_.valid[label], kin_.condition[label], 0.0)[mine]
+        return value
 
-    if not minima:
-        return best_phi, best
     g = (math.sqrt(5) - 1) / 2
-    a = np.array([grid[k] - step for k in minima])
-    b = np.array([grid[k] + step for k in minima])
+    a = np.array(centres) - step
+    b = np.array(centres) + step
     c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = f(c), f(d)
-    for _ in range(40):          # golden-section search on each bracket, elementwise as one would
+    fc, fd = np.split(f(np.concatenate([c, d]), np.concatenate([owner_, owner_])), 2)
+    for _ in range(40):          # golden-section search on each bracket
         left = fc < fd
         b = np.where(left, d, b)
         a = np.where(left, a, c)
@@ -248,10 +263,14 @@ def _worst_condition(mech, structure, label, grid, cond) -> tuple[float, float]:
         fd = np.where(left, kept, moved)
     phi = np.where(fc < fd, c, d)
     value = np.where(fc < fd, fc, fd)
-    k = int(np.argmin(value))
-    if value[k] < best:
-        best_phi, best = float(phi[k]) % 360.0, float(value[k])
-    return best_phi, best
+    for label in out:
+        mine = np.flatnonzero(owner_ == label)
+        if not len(mine):
+            continue
+        k = mine[int(np.argmin(value[mine]))]
+        if value[k] < out[label][1]:
+            out[label] = float(phi[k]) % 360.0, float(value[k])
+    return out
 
 
 def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
@@ -288,7 +307,9 @@ def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
 
 
 def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tuple[float, ...]:
-    """Crank angles where the output's velocity changes sign, refined by bisection to ~1e-12°."""
+    """Crank angles where the output's velocity changes sign, refined to the last digit (~1e-12°)
+    by Newton's method kept inside each sign-change bracket of the 0.25° grid (a bisection step
+    wherever Newton's would leave it): every bracket at once, one solve of the mechanism a step."""
     grid = np.arange(GRID + 1) * 360.0 / GRID
     rate = output.rate(solve(mech, structure, grid))
     scale = np.max(np.abs(rate)) or 1.0
@@ -299,15 +320,39 @@ def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tupl
         return ()
     lo = np.array([b[0] for b in brackets])
     hi = np.array([b[1] for b in brackets])
-    f_lo = output.rate(solve(mech, structure, lo))
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        f_mid = output.rate(solve(mech, structure, mid))
-        left = np.sign(f_mid) == np.sign(f_lo)
-        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-        hi = np.where(left, hi, mid)
-    roots = np.mod(0.5 * (lo + hi), 360.0)
-    return tuple(sorted({round(float(r), 10) % 360.0 for r in roots}))
+    roots = _rate_roots(mech, structure, output, lo, hi)
+    return tuple(sorted({round(float(r), 10) % 360.0 for r in np.mod(roots, 360.0)}))
+
+
+def _rate_roots(mech: Mechanism, structure: Structure, output: Output, lo: np.ndarray, hi: np.ndarray,
+                steps: int = 60) -> np.ndarray:
+    """The zero of the output's rate v(φ) in each bracket [lo, hi] (a sign change): Newton's step
+    φ − v/(dv/dφ), with dv/dφ = (a − v·ε₁/ω₁)/ω₁ per radian (a = dv/dt = dv/dφ·ω₁ + ∂v/∂ω₁·ε₁ and
+    v ∝ ω₁), taken where it lands strictly inside the bracket, else the bracket's midpoint; the
+    bracket shrinks to the side that keeps the sign change. Stops when every step or bracket is
+    below 1e-12° (a Newton step that small leaves an error at the float's last digit; the angles are
+    kept to 1e-10°), or after ``steps`` solves."""
+    w1, e1 = mech.crank.omega, mech.crank.epsilon
+    kin = solve(mech, structure, np.concatenate([lo, hi]))
+    f_lo = np.split(output.rate(kin), 2)[0]
+    x = 0.5 * (lo + hi)
+    done = np.zeros(x.shape, dtype=bool)
+    for _ in range(steps):
+        kin = solve(mech, structure, x)
+        v, a = output.rate(kin), output.accel(kin)
+        same = np.sign(v) == np.sign(f_lo)
+        lo, f_lo = np.where(same, x, lo), np.where(same, v, f_lo)
+        hi = np.where(same, hi, x)
+        with np.errstate(all="ignore"):
+            slope = (a - v * e1 / w1) / w1 * (math.pi / 180.0)    # dv/dφ per degree
+            newton = np.where(v == 0, x, x - v / slope)
+        inside = np.isfinite(newton) & (newton >= lo) & (newton <= hi)
+        done |= (hi - lo < 1e-12) | (np.isfinite(newton) & (np.abs(newton - x) < 1e-12))
+        x = np.where(done, np.where(np.isfinite(newton) & (np.abs(newton - x) < 1e-12), newton, x),
+                     np.where(inside, newton, 0.5 * (lo + hi)))
+        if np.all(done):
+            break
+    return x
 
 
 def dead_centre(mech: Mechanism, output: Output, kin: Kinematics, extremes: tuple[float, ...],
