@@ -23,10 +23,11 @@ from graphplan.util.files import write_atomic
 SUMMARY_FORMAT = "graphplan-keys/1"
 
 
-def pdf_bytes(svg_text: str) -> bytes:
-    """The key sheet as PDF with fixed metadata (see svg.to_pdf)."""
-    from graphplan.drawing.svg import to_pdf
-    return to_pdf(svg_text)
+def pdf_bytes(pages, size: tuple[float, float], title: str) -> bytes:
+    """Key or summary sheets (construction records) as one PDF, drawn straight on a cairo surface
+    (drawing.pdf: the font embedded, fixed metadata)."""
+    from graphplan.drawing.pdf import render_pdf
+    return render_pdf(pages, *size, title=title)
 
 
 def _parse_tol(items: list[str], tolerance: float | None) -> dict[str, float]:
@@ -61,7 +62,7 @@ def write_key(folder: Path, key: dict[str, Any], pdf: bool = True, lang: str = "
              write_atomic(folder / "key.csv", key_csv(key)),
              write_atomic(folder / "key.svg", svg)]
     if pdf:
-        files.append(write_atomic(folder / "key.pdf", pdf_bytes(svg)))
+        files.append(write_atomic(folder / "key.pdf", pdf_bytes([sheet], A4_PORTRAIT, plain(sheet.title))))
     return files
 
 
@@ -211,6 +212,8 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
         return results
     import multiprocessing
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    if method == "fork" and not os.environ.get("NOPRE"):
+        _preload(options.pdf)
     # a Pool is terminated when the block ends, by an error or a signal too (SIGTERM becomes
     # SystemExit in cmd_key): no worker outlives the command
     previous = _terminate_cleanly()
@@ -218,7 +221,7 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
         with multiprocessing.get_context(method).Pool(jobs, initializer=_init_job,
                                                       initargs=(table, options, os.getpid())) as pool:
             progress.step(f"variant {table.variants[0].id}")
-            for k, result in enumerate(pool.imap(_variant_job, range(n))):
+            for k, result in enumerate(pool.imap(_variant_job, range(n), chunksize=1 if n < 64 or os.environ.get('NOPRE') else 4)):
                 results.append(result)
                 _report(result, progress)
                 if k + 1 < n:
@@ -228,6 +231,19 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
             import signal
             signal.signal(signal.SIGTERM, previous)
     return results
+
+
+def _preload(pdf: bool) -> None:
+    """Import what every variant's job uses once, before the workers fork (they share it instead of
+    each importing numpy, the solver, the sheet and cairo again; the summary needs them here too)."""
+    import graphplan.exact.positions  # noqa: F401
+    import graphplan.model.scene  # noqa: F401
+    import graphplan.teach.keys  # noqa: F401
+    import graphplan.teach.keysheet  # noqa: F401
+    import graphplan.drawing.svg  # noqa: F401
+    if pdf:
+        from graphplan.drawing.pdf import preload
+        preload()
 
 
 def _report(result: dict[str, Any], progress: Progress) -> None:
@@ -286,6 +302,9 @@ def publish(tmp: Path, out: Path) -> None:
         os.replace(tmp, out)
         return
     items = sorted(tmp.iterdir(), key=lambda p: (p.name.startswith("summary"), p.name))
+    for old in out.glob("summary-*.svg"):            # a longer summary's pages from an earlier run
+        if old.stem.removeprefix("summary-").isdigit() and not (tmp / old.name).exists():
+            old.unlink()
     for item in items:
         target = out / item.name
         if target.is_dir() and not target.is_symlink():
@@ -297,7 +316,7 @@ def publish(tmp: Path, out: Path) -> None:
 def _summary(args, table, results, out: Path, lang: str) -> tuple[str, dict]:
     """The summary files of a finished run (in ``out``), and the text and document printed."""
     from graphplan.cli.main import dumps
-    from graphplan.teach.keysheet import A4_LANDSCAPE, summary_sheet
+    from graphplan.teach.keysheet import A4_LANDSCAPE, summary_pages
     from graphplan.drawing.svg import render
     entries = [r["entry"] for r in results]
     skipped = [r["message"] for r in results if r["message"]]
@@ -323,12 +342,13 @@ def _summary(args, table, results, out: Path, lang: str) -> tuple[str, dict]:
         write_atomic(out / "summary.json", dumps(doc))
         write_atomic(out / "summary.csv", summary_csv(columns, rows))
         write_atomic(out / "summary.txt", text)
-        svg = render(summary_sheet(escape(title), [c for c in columns if c != "note"], rows, units,
-                                   _override_columns(table), lang),
-                     *A4_LANDSCAPE, title=title)
-        write_atomic(out / "summary.svg", svg)
-        if not args.no_pdf:
-            write_atomic(out / "summary.pdf", pdf_bytes(svg))
+        pages = summary_pages(escape(title), [c for c in columns if c != "note"], rows, units,
+                              _override_columns(table), lang)
+        for n, page in enumerate(pages, 1):          # summary.svg, summary-2.svg … (as a sheet set)
+            write_atomic(out / ("summary.svg" if n == 1 else f"summary-{n}.svg"),
+                         render(page, *A4_LANDSCAPE, title=plain(page.title)))
+        if not args.no_pdf:                          # every page in one PDF, to print
+            write_atomic(out / "summary.pdf", pdf_bytes(pages, A4_LANDSCAPE, title))
     return text, doc
 
 

@@ -32,84 +32,120 @@ def page_for(record: Record, margin: float = 10.0) -> tuple[Record, float, float
     return record.moved(margin - x0, margin - y0), float(w), float(h)
 
 
+NAMESPACES = ('xmlns="http://www.w3.org/2000/svg" xmlns:ev="http://www.w3.org/2001/xml-events" '
+              'xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" '
+              'xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd" '
+              'xmlns:xlink="http://www.w3.org/1999/xlink"')
+
+
 def render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False,
            embed_font: bool = True) -> str:
     """The record as an SVG document of ``width`` × ``height`` mm (y of the record points up).
     ``text_as_paths`` writes lettering as outlines, for importers that drop text; otherwise text stays
-    text (searchable, selectable) and ``embed_font`` carries the glyphs it uses (fonts.face_css)."""
-    import svgwrite
-    from svgwrite.extensions import Inkscape
+    text (searchable, selectable) and ``embed_font`` carries the glyphs it uses (fonts.face_css).
 
-    dwg = svgwrite.Drawing(size=(f"{_f(width)}mm", f"{_f(height)}mm"), profile="full", debug=False)
-    dwg["viewBox"] = f"0 0 {_f(width)} {_f(height)}"
-    ink = Inkscape(dwg)
-    if title:
-        dwg.set_desc(title=title)
-    layers = {}
-    for name in LAYERS:
-        layers[name] = ink.layer(label=name, id=f"layer-{name}")
+    The document is the one svgwrite writes for these elements (its "full" profile with the
+    Inkscape extension's layers: attributes in sorted order, ElementTree's escaping), put together
+    here as text: a key sheet's 500 elements through svgwrite's objects and ElementTree took 25 ms,
+    this about a tenth of that (tests/test_outputs.py compares the two documents byte for byte)."""
+    layers: dict[str, list[str]] = {name: [] for name in LAYERS}
+    chars: list[str] = []
     for prim in record.items:
-        layer = layers.get(prim.layer) or layers.setdefault(prim.layer, ink.layer(label=prim.layer,
-                                                                                 id=f"layer-{prim.layer}"))
+        out = layers.setdefault(prim.layer, [])
         if text_as_paths and prim.kind == "text":
-            layer.add(dwg.path(d=text_outline(prim, height), fill="black", stroke="none"))
+            out.append(_tag("path", {"d": text_outline(prim, height), "fill": "black", "stroke": "none"}))
             continue
-        for element in _elements(dwg, prim, height):
-            layer.add(element)
-    for name, layer in layers.items():
-        if layer.elements:
-            dwg.add(layer)
-    chars = _lettered(dwg)
-    if embed_font and chars:
+        out.extend(_elements(prim, height, chars))
+    w, h = _f(width), _f(height)
+    parts = [f'<svg baseProfile="full" height="{h}mm" version="1.1" viewBox="0 0 {w} {h}" width="{w}mm" '
+             f'{NAMESPACES}>']
+    if title:
+        parts.append(f"<title>{_text_escape(title)}</title>")
+    lettered = "".join(chars)
+    if embed_font and lettered:
         from graphplan.drawing.fonts import face_css
-        dwg.defs.add(dwg.style(face_css(chars)))
-    return dwg.tostring()
+        parts.append(f'<defs><style type="text/css"><![CDATA[{face_css(lettered)}]]></style></defs>')
+    else:
+        parts.append("<defs />")
+    for name, elements in layers.items():
+        if elements:
+            parts.append(f'<g id="layer-{_attr_escape(name)}" inkscape:groupmode="layer" '
+                         f'inkscape:label="{_attr_escape(name)}">')
+            parts.extend(elements)
+            parts.append("</g>")
+    parts.append("</svg>")
+    return "".join(parts)
 
 
-def _lettered(element) -> str:
-    """Every character the document letters (text and its spans)."""
-    own = getattr(element, "text", None)
-    inner = "".join(_lettered(e) for e in getattr(element, "elements", ()))
-    return (own if isinstance(own, str) else "") + inner
+def _text_escape(text: str) -> str:
+    """Character data as ElementTree escapes it."""
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+_ESCAPED = re.compile('[&<>"\r\n\t]')
+
+
+def _attr_escape(text: str) -> str:
+    """An attribute value as ElementTree escapes it (Python 3.11)."""
+    if not _ESCAPED.search(text):
+        return text
+    return (text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
+            .replace("\r", "&#13;").replace("\n", "&#10;").replace("\t", "&#09;"))
+
+
+def _tag(name: str, attrs: dict[str, str], inner: str | None = None) -> str:
+    """One element: its attributes sorted by name (as svgwrite writes them), empty ones closed."""
+    head = "".join(f' {k}="{_attr_escape(v)}"' for k, v in sorted(attrs.items()))
+    return f"<{name}{head}>{inner}</{name}>" if inner else f"<{name}{head} />"
 
 
 def _xy(p, height: float) -> tuple[str, str]:
     return _f(p[0]), _f(height - p[1])
 
 
-def _stroke(prim: Primitive) -> dict:
-    style = {"stroke": "black", "stroke_width": _f(prim.line_width), "fill": "none",
-             "stroke_linecap": "round", "stroke_linejoin": "round"}
-    dash = DASHED_ROLES.get(prim.role)
-    if dash:
-        style["stroke_dasharray"] = DASHES[dash]
-    return style
+@lru_cache(maxsize=64)
+def _stroke(width: float, role: str) -> str:
+    """A stroke's attributes after ``fill="none"`` (and a polygon's points), in sorted order:
+    black, round caps and joins, the width and the role's dashes."""
+    dash = DASHED_ROLES.get(role)
+    dashes = f' stroke-dasharray="{DASHES[dash]}"' if dash else ""
+    return (f' stroke="black"{dashes} stroke-linecap="round" stroke-linejoin="round" '
+            f'stroke-width="{_f(width)}"')
 
 
-def _elements(dwg, prim: Primitive, h: float):
+def _points(points, h: float) -> str:
+    return " ".join(",".join(_xy(p, h)) for p in points)
+
+
+def _elements(prim: Primitive, h: float, chars: list[str]) -> list[str]:
+    """The SVG elements of one primitive (``chars`` collects the lettering's characters); each
+    element's attributes in sorted order, as svgwrite writes them."""
     k = prim.kind
+    if k == "text":
+        return [_text(prim, h, chars)]
+    stroke = _stroke(prim.line_width, prim.role)
     if k == "segment":
         (x1, y1), (x2, y2) = (_xy(p, h) for p in prim.points)
-        yield dwg.line((x1, y1), (x2, y2), **_stroke(prim))
-    elif k == "vector":
+        return [f'<line fill="none"{stroke} x1="{x1}" x2="{x2}" y1="{y1}" y2="{y2}" />']
+    if k == "vector":
         a, b = prim.points
         tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
-        yield dwg.line(_xy(a, h), _xy(tip[0], h), **_stroke(prim))
-        yield dwg.polygon([_xy(p, h) for p in tip], fill="black", stroke="none")
-    elif k in ("polyline", "polygon"):
-        pts = [_xy(p, h) for p in prim.points]
-        yield (dwg.polygon if k == "polygon" else dwg.polyline)(pts, **_stroke(prim))
-    elif k == "circle":
-        yield dwg.circle(_xy(prim.points[0], h), _f(prim.radius), **_stroke(prim))
-    elif k == "arc":
-        yield dwg.path(d=arc_path(prim.points[0], prim.radius, *prim.angles, h), **_stroke(prim))
-    elif k == "point":
-        r = 0.6 if prim.role != "joint" else 1.0
-        style = {"fill": "white" if prim.role == "joint" else "black", "stroke": "black",
-                 "stroke_width": _f(0.35)}
-        yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
-    elif k == "text":
-        yield _text(dwg, prim, h)
+        (x1, y1), (x2, y2) = _xy(a, h), _xy(tip[0], h)
+        return [f'<line fill="none"{stroke} x1="{x1}" x2="{x2}" y1="{y1}" y2="{y2}" />',
+                f'<polygon fill="black" points="{_points(tip, h)}" stroke="none" />']
+    if k in ("polyline", "polygon"):
+        return [f'<{k} fill="none" points="{_points(prim.points, h)}"{stroke} />']
+    if k == "circle":
+        cx, cy = _xy(prim.points[0], h)
+        return [f'<circle cx="{cx}" cy="{cy}" fill="none" r="{_f(prim.radius)}"{stroke} />']
+    if k == "arc":
+        return [f'<path d="{arc_path(prim.points[0], prim.radius, *prim.angles, h)}" fill="none"{stroke} />']
+    if k == "point":
+        cx, cy = _xy(prim.points[0], h)
+        joint = prim.role == "joint"
+        return [f'<circle cx="{cx}" cy="{cy}" fill="{"white" if joint else "black"}" '
+                f'r="{"1" if joint else "0.6"}" stroke="black" stroke-width="0.35" />']
+    return []
 
 
 ARROW_FONT = "'graphplan symbols', 'DejaVu Sans', sans-serif"   # osifont has no → ⊥ ∥ ′ ″ …: those in the
@@ -117,38 +153,62 @@ MISSING = "→⊥∥′″…"                                              # pa
 _MISSING = re.compile(f"([{MISSING}])")
 
 
-def _text(dwg, prim: Primitive, h: float):
+@lru_cache(maxsize=65536)
+def _plain_set(text: str, size: float) -> str | None:
+    """The lettering of a text set in one piece (no markup, no character from the symbols' font, no
+    comma set apart), else None."""
+    if is_plain(text) and not _MISSING.search(text) and len(kerned(text, size)) == 1:
+        return lettering(text)
+    return None
+
+
+@lru_cache(maxsize=256)
+def _em_text(size: float) -> str:
+    return _f(em(size))
+
+
+_FONT_ATTR = _attr_escape(FONT)
+
+
+def _text(prim: Primitive, h: float, chars: list[str]) -> str:
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
-    anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
-        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
-                        font_family=FONT, text_anchor=anchor, fill="black")
+    drawn = _plain_set(prim.text, prim.size)
+    if drawn is not None:         # the attributes in svgwrite's (sorted) order
+        chars.append(drawn)
+        x, y = _xy(prim.points[0], h)
+        inner = _text_escape(drawn)
+        head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
+                f'text-anchor="{prim.anchor}" x="{x}" y="{y}"')
+        return f"{head}>{inner}</text>" if inner else f"{head} />"
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
-    pieces, total = _set(prim.text, prim.size)
+    pieces, total = typeset(prim.text, prim.size)
     x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
-    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(em(prim.size)), font_family=FONT,
-                  fill="black")
+    x, y = _xy((x_start, prim.points[0][1]), h)
+    spans = []
     shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
     for piece, small, x0, up, advance in pieces:
         kw = {}
         if up != shift:
-            kw["dy"] = [_f(shift - up)]
+            kw["dy"] = _f(shift - up)
         if abs(x0 - pen) > 1e-6:
-            kw["dx"] = [_f(x0 - pen)]
+            kw["dx"] = _f(x0 - pen)
         if small:
-            kw["font_size"] = _f(em(prim.size) * SMALL)
+            kw["font-size"] = _f(em(prim.size) * SMALL)
         if piece in MISSING:
-            kw["font_family"] = ARROW_FONT
-        el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
+            kw["font-family"] = ARROW_FONT
+        drawn = piece if piece in MISSING else _svg_lettering(piece)
+        chars.append(drawn)
+        spans.append(_tag("tspan", kw, _text_escape(drawn)))
         shift, pen = up, x0 + advance
-    return el
+    return _tag("text", {"x": x, "y": y, "font-size": _f(em(prim.size)), "font-family": FONT, "fill": "black"},
+                "".join(spans))
 
 
 @lru_cache(maxsize=4096)
-def _set(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, float]], float]:
+def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float, float]], float]:
     """The markup typeset: (piece, small, x, baseline shift, advance) per piece, x from the text's
     start by the drawing font's advances (stacked scripts start together), and the whole width."""
     out = []

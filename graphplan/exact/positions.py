@@ -111,21 +111,24 @@ def default_output(mech: Mechanism, structure: Structure) -> Output:
 def study(mech: Mechanism) -> Study:
     """Structure, assembly check over the full turn, extremes and position 0."""
     structure = analyse(mech)
-    said_ = check_assembly(mech, structure)
+    grid = solve(mech, structure, np.arange(GRID) * 360.0 / GRID)     # every 0.25°, for both searches
+    said_ = check_assembly(mech, structure, grid)
     output = default_output(mech, structure)
-    extremes = find_extremes(mech, structure, output)
+    extremes = find_extremes(mech, structure, output, grid)
     phi0 = choose_start(mech, structure, output, extremes)
     kin0 = solve(mech, structure, [phi0])
     return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()},
                  [s["en"] for s in said_], [s["uk"] for s in said_])
 
 
-def check_assembly(mech: Mechanism, structure: Structure) -> list[dict[str, str]]:
+def check_assembly(mech: Mechanism, structure: Structure, kin: Kinematics | None = None) -> list[dict[str, str]]:
     """Raise AssemblyError naming the first dyad that fails and the crank-angle ranges where it does,
     or that locks (its direction lines coincide) at some angle; return warnings for groups whose
-    direction lines cross at less than ``WARN_DEG`` somewhere in the turn (each in every language)."""
+    direction lines cross at less than ``WARN_DEG`` somewhere in the turn (each in every language).
+    ``kin``: the mechanism solved at the GRID angles, if already at hand."""
     grid = np.arange(GRID) * 360.0 / GRID
-    kin = solve(mech, structure, grid)
+    if kin is None:
+        kin = solve(mech, structure, grid)
     worst_of = _worst_conditions(mech, structure, grid, kin,
                                  [d.label for d in structure.dyads if np.all(kin.valid[d.label])])
     warnings = []
@@ -217,11 +220,16 @@ def deg(angle: float, digits: int = 1) -> str:
     return f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
 
 
+ZOOM = 20        # the worst transmission angle: each round samples a bracket at 2·ZOOM + 1 angles …
+ROUNDS = 7       # … and narrows it ZOOM times about the least: 0.25°/20⁷ ≈ 2·10⁻¹⁰° in the end
+
+
 def _worst_conditions(mech, structure, grid, kin: Kinematics, labels: list[str]) -> dict[str, tuple[float, float]]:
     """For each group in ``labels``: the crank angle and value of the smallest |sin| between its
-    direction lines, refined by golden-section search around the grid's four lowest local minima.
-    Every bracket of every group is searched at once, elementwise as one would by hand: one solve of
-    the mechanism a step (40 steps shrink a bracket of two grid steps 0.618⁴⁰ ≈ 4·10⁻⁹ times)."""
+    direction lines, refined about the grid's four lowest local minima by zooming in: each round
+    samples every bracket at 2·ZOOM + 1 angles across it and narrows it ZOOM times about the least
+    (a golden-section search's 40 steps narrow it 0.618⁴⁰ ≈ 4·10⁻⁹ times; ROUNDS zooms narrow it
+    20⁷ ≈ 10⁹ times). Every bracket of every group at once: one solve of the mechanism a round."""
     step = grid[1] - grid[0]
     out: dict[str, tuple[float, float]] = {}
     owner, centres = [], []
@@ -236,33 +244,21 @@ def _worst_conditions(mech, structure, grid, kin: Kinematics, labels: list[str])
     if not centres:
         return out
     owner_ = np.array(owner)
-
-    def f(phi: np.ndarray, who: np.ndarray = owner_) -> np.ndarray:   # every search at once: one solve a step
-        kin_ = solve(mech, structure, phi)
-        value = np.zeros(phi.shape)
+    phi, value = np.array(centres), np.full(len(centres), np.inf)
+    across = np.linspace(-1.0, 1.0, 2 * ZOOM + 1)
+    half = step
+    for _ in range(ROUNDS):
+        samples = phi[:, None] + half * across[None, :]
+        sampled = solve(mech, structure, samples.ravel())
+        values = np.zeros(samples.shape)
         for label in dict.fromkeys(owner):
-            mine = who == label
-            value[mine] = np.where(kin_.valid[label], kin_.condition[label], 0.0)[mine]
-        return value
-
-    g = (math.sqrt(5) - 1) / 2
-    a = np.array(centres) - step
-    b = np.array(centres) + step
-    c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = np.split(f(np.concatenate([c, d]), np.concatenate([owner_, owner_])), 2)
-    for _ in range(40):          # golden-section search on each bracket
-        left = fc < fd
-        b = np.where(left, d, b)
-        a = np.where(left, a, c)
-        c_new = np.where(left, b - g * (b - a), d)
-        d_new = np.where(left, c, a + g * (b - a))
-        kept = np.where(left, fc, fd)                   # the old value that stays: fc → fd, or fd → fc
-        c, d = c_new, d_new
-        moved = f(np.where(left, c, d))                  # the one new point of each bracket
-        fc = np.where(left, moved, kept)
-        fd = np.where(left, kept, moved)
-    phi = np.where(fc < fd, c, d)
-    value = np.where(fc < fd, fc, fd)
+            mine = owner_ == label
+            cond = np.where(sampled.valid[label], sampled.condition[label], 0.0).reshape(samples.shape)
+            values[mine] = cond[mine]
+        least = np.argmin(values, axis=1)
+        rows = np.arange(len(phi))
+        phi, value = samples[rows, least], values[rows, least]
+        half /= ZOOM
     for label in out:
         mine = np.flatnonzero(owner_ == label)
         if not len(mine):
@@ -306,12 +302,17 @@ def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
     return ranges
 
 
-def find_extremes(mech: Mechanism, structure: Structure, output: Output) -> tuple[float, ...]:
+def find_extremes(mech: Mechanism, structure: Structure, output: Output,
+                  kin: Kinematics | None = None) -> tuple[float, ...]:
     """Crank angles where the output's velocity changes sign, refined to the last digit (~1e-12°)
     by Newton's method kept inside each sign-change bracket of the 0.25° grid (a bisection step
-    wherever Newton's would leave it): every bracket at once, one solve of the mechanism a step."""
+    wherever Newton's would leave it): every bracket at once, one solve of the mechanism a step.
+    ``kin``: the mechanism solved at the GRID angles, if already at hand (360° is 0° again)."""
     grid = np.arange(GRID + 1) * 360.0 / GRID
-    rate = output.rate(solve(mech, structure, grid))
+    if kin is None:
+        kin = solve(mech, structure, grid[:-1])
+    rate = output.rate(kin)
+    rate = np.append(rate, rate[0])
     scale = np.max(np.abs(rate)) or 1.0
     sign = np.sign(np.where(np.abs(rate) < 1e-12 * scale, 0.0, rate))
     brackets = [(grid[k], grid[k + 1]) for k in range(GRID) if sign[k] * sign[k + 1] < 0]

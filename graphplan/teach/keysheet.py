@@ -396,32 +396,64 @@ def _section_count(key: dict[str, Any]) -> int:
 
 # -- the group's summary sheet ---------------------------------------------------------------------
 
-def summary_sheet(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
-                  overrides: set[str] = frozenset(), lang: str = "uk") -> Record:
-    """The group's summary on A4 landscape: one line per variant with its data and headline answers."""
+SUMMARY_ROW_MIN = 3.0    # mm: the smallest row of a one-page summary
+SUMMARY_ROW = 4.0        # mm: the rows of a summary that runs over several pages
+
+
+def summary_pages(title: str, columns: list[str], rows: list[dict[str, Any]], units: dict[str, str],
+                  overrides: set[str] = frozenset(), lang: str = "uk") -> list[Record]:
+    """The group's summary on A4 landscape pages: one line per variant with its data and headline
+    answers, then what the columns mean and a note for each skipped variant. A group whose rows fit
+    one page at 3 mm or more a row (about 45 variants) gets one page; a larger one (a faculty's
+    hundreds of variants) runs over pages of 4 mm rows, the column heads repeated on each, the pages
+    numbered in their titles ("аркуш 2 з 23") and the notes after the last row."""
     W, H = A4_LANDSCAPE
-    rec = Record(title)
-    frame(rec, W, H)
     x0, room = LEFT + INSET, W - EDGE - LEFT - 2 * INSET
-    y = H - EDGE - 3.0
-    y = _heading(rec, x0, y, title, LARGE) - 1.0
-    notes = [r for r in rows if r.get("status") != "ok"]
     header = [[display(c, lang) for c in columns], [unit_text(units.get(c, ""), lang) for c in columns]]
     cells = [[cell(r.get(c), c in overrides, lang) for c in columns] for r in rows]
     size = SMALL
     while size > 1.8 and sum(max(text_width(t, size) for t in col) + 2.5
                              for col in zip(*(header + cells))) > room:
         size = round(size - 0.1, 2)
-    room_h = y - EDGE - 4.0 - (len(notes) + 3) * 4.0
-    row_h = max(3.0, min(5.0, room_h / (len(rows) + 2)))
+    widths = column_widths(header + cells, size)        # the same columns on every page
     align = ["start" if c in ("variant", "student", "status") else "end" for c in columns]
-    y, _ = table(rec, x0, y, header, cells, size=size, row_h=row_h, align=align)
-    if "phi0_deg" in columns:            # the lever mechanisms' columns explained (not a cam's)
-        y = _paragraph(rec, x0, y - 1.0, summary_note(lang), SMALL, room)
-    for r in notes:
-        y = _paragraph(rec, x0, y, word("variant note", lang, v=escape(str(r['variant'])),
-                                        note=escape(r.get('note', ''))), SMALL, room)
-    return rec
+    notes = ([summary_note(lang)] if "phi0_deg" in columns else []) + [     # not a cam's columns
+        word("variant note", lang, v=escape(str(r['variant'])), note=escape(r.get('note', '')))
+        for r in rows if r.get("status") != "ok"]
+    lines = [line for note in notes for line in _wrap(note, SMALL, room)]
+    top = H - EDGE - 3.0 - LARGE - 2.0 - 1.0            # below the title
+    bottom = EDGE + 4.0
+    pitch = line_pitch(SMALL)
+    notes_h = len(lines) * pitch + (1.5 if lines else 0.0)
+    one_page = (len(rows) + 2) * SUMMARY_ROW_MIN <= top - bottom - notes_h
+    if one_page:
+        row_h = max(SUMMARY_ROW_MIN, min(5.0, (top - bottom - notes_h - 3 * 4.0) / (len(rows) + 2)))
+        chunks = [cells]
+    else:
+        row_h = SUMMARY_ROW
+        per = max(1, int((top - bottom) / row_h) - 2)
+        chunks = [cells[k:k + per] for k in range(0, len(cells), per)]
+    pages: list[tuple[Record, float]] = []
+    for chunk in chunks:
+        rec = Record(title)
+        frame(rec, W, H)
+        y, _ = table(rec, x0, top, header, chunk, size=size, row_h=row_h, align=align, widths=widths)
+        pages.append((rec, y - 1.5))
+    rec, y = pages[-1]
+    for line in lines:                   # the notes under the last rows, on pages of their own if need be
+        if y - pitch < bottom:
+            rec = Record(title)
+            frame(rec, W, H)
+            y = top
+            pages.append((rec, y))
+        rec.label((x0, y - SMALL), line, size=SMALL)
+        y -= pitch
+        pages[-1] = (rec, y)
+    count = len(pages)
+    for k, (rec, _) in enumerate(pages, 1):
+        heading = title if count == 1 else f"{title} ({word('page of', lang, k=k, n=count)})"
+        _heading(rec, x0, H - EDGE - 3.0, heading, LARGE)
+    return [rec for rec, _ in pages]
 
 
 def cell(value: Any, as_given: bool = False, lang: str = "en") -> str:

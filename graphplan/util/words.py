@@ -385,6 +385,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "keys title": ("Ключі відповідей: {table} — варіантів {n}, записано {written}",
                    "Answer keys: {table} — {n} variants, {written} written"),
     "keys skipped": (", пропущено {k}", ", {k} skipped"),
+    "page of": ("аркуш {k} з {n}", "page {k} of {n}"),
     "variant note": ("варіант {v}: {note}", "variant {v}: {note}"),
     "rows in": ("{n} рядків за {t} с → {path}", "{n} rows in {t} s → {path}"),
     "bench head": ("розділ|метод|умови|час, с|похибка, %|стан", "section|method|setting|time, s|error, %|status"),

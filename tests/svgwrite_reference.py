@@ -1,0 +1,124 @@
+"""The SVG renderer as it was written with svgwrite's objects (svgwrite.Drawing, its Inkscape
+extension, ElementTree's serializer): the oracle drawing.svg.render's text must equal byte for byte."""
+from __future__ import annotations
+
+import re
+
+from graphplan.drawing.svg import (ARROW_FONT, DASHES, FONT, MISSING, _f, _svg_lettering, arc_path, text_outline,
+                                   typeset as _set)
+from graphplan.graphic.record import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering
+from graphplan.util.markup import SMALL, is_plain
+
+_MISSING = re.compile(f"([{MISSING}])")
+
+
+def reference_render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False,
+           embed_font: bool = True) -> str:
+    """The record as an SVG document of ``width`` × ``height`` mm (y of the record points up).
+    ``text_as_paths`` writes lettering as outlines, for importers that drop text; otherwise text stays
+    text (searchable, selectable) and ``embed_font`` carries the glyphs it uses (fonts.face_css)."""
+    import svgwrite
+    from svgwrite.extensions import Inkscape
+
+    dwg = svgwrite.Drawing(size=(f"{_f(width)}mm", f"{_f(height)}mm"), profile="full", debug=False)
+    dwg["viewBox"] = f"0 0 {_f(width)} {_f(height)}"
+    ink = Inkscape(dwg)
+    if title:
+        dwg.set_desc(title=title)
+    layers = {}
+    for name in LAYERS:
+        layers[name] = ink.layer(label=name, id=f"layer-{name}")
+    for prim in record.items:
+        layer = layers.get(prim.layer) or layers.setdefault(prim.layer, ink.layer(label=prim.layer,
+                                                                                 id=f"layer-{prim.layer}"))
+        if text_as_paths and prim.kind == "text":
+            layer.add(dwg.path(d=text_outline(prim, height), fill="black", stroke="none"))
+            continue
+        for element in _elements(dwg, prim, height):
+            layer.add(element)
+    for name, layer in layers.items():
+        if layer.elements:
+            dwg.add(layer)
+    chars = _lettered(dwg)
+    if embed_font and chars:
+        from graphplan.drawing.fonts import face_css
+        dwg.defs.add(dwg.style(face_css(chars)))
+    return dwg.tostring()
+
+
+def _lettered(element) -> str:
+    """Every character the document letters (text and its spans)."""
+    own = getattr(element, "text", None)
+    inner = "".join(_lettered(e) for e in getattr(element, "elements", ()))
+    return (own if isinstance(own, str) else "") + inner
+
+
+def _xy(p, height: float) -> tuple[str, str]:
+    return _f(p[0]), _f(height - p[1])
+
+
+def _stroke(prim: Primitive) -> dict:
+    style = {"stroke": "black", "stroke_width": _f(prim.line_width), "fill": "none",
+             "stroke_linecap": "round", "stroke_linejoin": "round"}
+    dash = DASHED_ROLES.get(prim.role)
+    if dash:
+        style["stroke_dasharray"] = DASHES[dash]
+    return style
+
+
+def _elements(dwg, prim: Primitive, h: float):
+    k = prim.kind
+    if k == "segment":
+        (x1, y1), (x2, y2) = (_xy(p, h) for p in prim.points)
+        yield dwg.line((x1, y1), (x2, y2), **_stroke(prim))
+    elif k == "vector":
+        a, b = prim.points
+        tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
+        yield dwg.line(_xy(a, h), _xy(tip[0], h), **_stroke(prim))
+        yield dwg.polygon([_xy(p, h) for p in tip], fill="black", stroke="none")
+    elif k in ("polyline", "polygon"):
+        pts = [_xy(p, h) for p in prim.points]
+        yield (dwg.polygon if k == "polygon" else dwg.polyline)(pts, **_stroke(prim))
+    elif k == "circle":
+        yield dwg.circle(_xy(prim.points[0], h), _f(prim.radius), **_stroke(prim))
+    elif k == "arc":
+        yield dwg.path(d=arc_path(prim.points[0], prim.radius, *prim.angles, h), **_stroke(prim))
+    elif k == "point":
+        r = 0.6 if prim.role != "joint" else 1.0
+        style = {"fill": "white" if prim.role == "joint" else "black", "stroke": "black",
+                 "stroke_width": _f(0.35)}
+        yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
+    elif k == "text":
+        yield _text(dwg, prim, h)
+
+
+
+
+def _text(dwg, prim: Primitive, h: float):
+    """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
+    size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
+    font that has it."""
+    anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
+    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
+        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
+                        font_family=FONT, text_anchor=anchor, fill="black")
+    # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
+    # of a centred or right-aligned text
+    pieces, total = _set(prim.text, prim.size)
+    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
+    el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(em(prim.size)), font_family=FONT,
+                  fill="black")
+    shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
+    for piece, small, x0, up, advance in pieces:
+        kw = {}
+        if up != shift:
+            kw["dy"] = [_f(shift - up)]
+        if abs(x0 - pen) > 1e-6:
+            kw["dx"] = [_f(x0 - pen)]
+        if small:
+            kw["font_size"] = _f(em(prim.size) * SMALL)
+        if piece in MISSING:
+            kw["font_family"] = ARROW_FONT
+        el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
+        shift, pen = up, x0 + advance
+    return el
