@@ -64,7 +64,9 @@ def every_kind() -> Record:
 @pytest.mark.parametrize("paths", [False, True])
 def test_svg_text_is_byte_for_byte_what_svgwrite_writes(keyset, paths):
     key = json.loads((keyset / "01" / "key.json").read_text(encoding="utf-8"))
-    records = [(every_kind(), 150.0, 110.0), (key_sheet(key, "uk"), *A4_PORTRAIT), (key_sheet(key, "en"), *A4_PORTRAIT)]
+    records = [(every_kind(), 150.0, 110.0)]
+    if not paths:           # (outlines are cut by matplotlib: a key sheet's 350 texts take 10 s)
+        records += [(key_sheet(key, "uk"), *A4_PORTRAIT), (key_sheet(key, "en"), *A4_PORTRAIT)]
     for rec, w, h in records:
         for title, embed in ((rec.title, True), ("", False)):
             ours = render(rec, w, h, title=title, text_as_paths=paths, embed_font=embed)
@@ -105,7 +107,8 @@ def test_pdf_draws_what_cairosvg_draws_of_the_svg(tmp_path, keyset):
     (the lettering of right-aligned text sits up to 0.2 mm apart: cairosvg measures it its own way)."""
     from graphplan.drawing.raster import to_pdf
     key = json.loads((keyset / "02" / "key.json").read_text(encoding="utf-8"))
-    for name, (rec, w, h) in {"kind": (every_kind(), 150.0, 110.0), "key": (key_sheet(key, "uk"), *A4_PORTRAIT)}.items():
+    drawings = {"kind": (every_kind(), 150.0, 110.0), "key": (key_sheet(key, "uk"), *A4_PORTRAIT)}
+    for name, (rec, w, h) in drawings.items():
         direct, via = tmp_path / f"{name}-direct.pdf", tmp_path / f"{name}-svg.pdf"
         direct.write_bytes(_pdf(rec, w, h))
         via.write_bytes(to_pdf(render(rec, w, h)))

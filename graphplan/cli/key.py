@@ -212,7 +212,7 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
         return results
     import multiprocessing
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    if method == "fork" and not os.environ.get("NOPRE"):
+    if method == "fork":
         _preload(options.pdf)
     # a Pool is terminated when the block ends, by an error or a signal too (SIGTERM becomes
     # SystemExit in cmd_key): no worker outlives the command
@@ -221,7 +221,7 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
         with multiprocessing.get_context(method).Pool(jobs, initializer=_init_job,
                                                       initargs=(table, options, os.getpid())) as pool:
             progress.step(f"variant {table.variants[0].id}")
-            for k, result in enumerate(pool.imap(_variant_job, range(n), chunksize=1 if n < 64 or os.environ.get('NOPRE') else 4)):
+            for k, result in enumerate(pool.imap(_variant_job, range(n), chunksize=1 if n < 64 else 4)):
                 results.append(result)
                 _report(result, progress)
                 if k + 1 < n:

@@ -86,7 +86,7 @@ class _Pen:
         self.ctx, self.h, self.cairo, self.outlines = ctx, height, cairo, outlines
         self.font: tuple[str, float] | None = None
         self.line: tuple[float, str | None] | None = None     # the width and dashes set last
-        ctx.set_source_rgb(0, 0, 0)                            # black throughout (a joint's white fill restores it)
+        ctx.set_source_rgb(0, 0, 0)        # black throughout (a joint's white fill restores it)
 
     def xy(self, p) -> tuple[float, float]:
         return p[0], self.h - p[1]
