@@ -42,13 +42,15 @@ def preload() -> None:
     register()
 
 
-def render_pdf(pages: Sequence[Record], width: float, height: float, title: str = "") -> bytes:
-    """The records as a PDF of ``width`` × ``height`` mm pages, one record a page."""
+def render_pdf(pages: Sequence[Record], width: float, height: float, title: str = "",
+               text_as_paths: bool = False) -> bytes:
+    """The records as a PDF of ``width`` × ``height`` mm pages, one record a page; ``text_as_paths``
+    letters with the font's outlines instead of text."""
     from graphplan.drawing.raster import require_cairo
     from graphplan.drawing.fonts import register
     require_cairo()
     import cairocffi as cairo
-    outlines = not register()
+    outlines = not register() or text_as_paths
     out = io.BytesIO()
     surface = cairo.PDFSurface(out, width * MM, height * MM)
     if title:

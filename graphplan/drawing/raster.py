@@ -1,4 +1,6 @@
-"""PDF and PNG from the SVG renderer's text (cairosvg on the cairo library), ready to print.
+"""PNG (and, for SVG text from elsewhere, PDF) from the SVG renderer's text (cairosvg on the cairo
+library), ready to print. Sheets and key sheets are written to PDF by drawing.pdf, straight from
+their records; ``to_pdf`` stays for an SVG document only.
 
 - Lettering: the packaged osifont, found by cairo through fontconfig (fonts.register), with the
   font options fixed (no hinting, grey antialiasing) so the glyphs do not follow the machine's

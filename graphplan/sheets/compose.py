@@ -81,10 +81,15 @@ class Sheet:
             return write_atomic(path, to_dxf(self.record, self.form.width, self.form.height))
         if suffix == ".svg":
             return write_atomic(path, self.svg(text_as_paths))
+        if suffix == ".pdf":             # drawn straight from the record (drawing.pdf)
+            from graphplan.drawing.pdf import render_pdf
+            from graphplan.util.markup import plain
+            return write_atomic(path, render_pdf([self.record], self.form.width, self.form.height,
+                                                 plain(self.record.title), text_as_paths))
         from graphplan.drawing.fonts import register
-        from graphplan.drawing.raster import to_pdf, to_png
+        from graphplan.drawing.raster import to_png
         svg = self.svg(text_as_paths or not register())   # no fontconfig: letter with outlines
-        return write_atomic(path, to_pdf(svg) if suffix == ".pdf" else to_png(svg, dpi))
+        return write_atomic(path, to_png(svg, dpi))
 
 
 def page_path(path: Path, n: int) -> Path:
