@@ -260,12 +260,6 @@ def arc_path(centre, r: float, start: float, end: float, h: float) -> str:
     return f"M{x0},{y0} A{_f(r)},{_f(r)} 0 {large} 0 {x1},{y1}"
 
 
-def to_pdf(svg_text: str) -> bytes:
-    """The SVG as PDF (raster.to_pdf: the packaged font embedded)."""
-    from graphplan.drawing.raster import to_pdf as pdf
-    return pdf(svg_text)
-
-
 def to_png(svg_text: str, dpi: int = 300) -> bytes:
     """The SVG as PNG (raster.to_png: opaque white, ``dpi`` recorded)."""
     from graphplan.drawing.raster import to_png as png
