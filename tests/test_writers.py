@@ -282,3 +282,23 @@ def test_key_writes_every_summary_page_and_one_pdf(tmp_path):
     assert main(["key", str(tmp_path / "v.csv"), "-o", str(out), "--quiet", "--jobs", "1"]) == 0
     assert (out / "summary.svg").exists() and not (out / "summary-2.svg").exists()
     assert (out / "x050" / "key.json").exists()          # the teacher's other files stay
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_key_sheet_letters_inside_the_frame_and_clear_of_each_other(keyset, lang):
+    """Every word of the key sheets inside the frame (the acceleration heading beside the velocity
+    table once ran through the frame's right edge on the crank-slider's variant 01), and no two
+    lettered boxes of different sections overlapping: a long heading beside a table wraps."""
+    for v in ("01", "02", "03", "04", "05", "06"):
+        rec = key_sheet(json.loads((keyset / v / "key.json").read_text(encoding="utf-8")), lang)
+        texts = [p for p in rec.items if p.kind == "text"]
+        for p in texts:
+            x0, y0, x1, y1 = p.ink()
+            assert LEFT < x0 and x1 < A4_PORTRAIT[0] - EDGE and EDGE < y0 and y1 < A4_PORTRAIT[1] - EDGE, p.text
+        heads = [p for p in texts if p.size == 3.5 and re.match(r"\d\. ", p.text)]
+        for p in heads:                      # a heading's ink clear of every other text's
+            a = p.ink()
+            for q in texts:
+                if q is not p:
+                    b = q.ink()
+                    assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (p.text, q.text)

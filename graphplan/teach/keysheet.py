@@ -84,8 +84,24 @@ def _heading(rec: Record, x: float, y: float, text: str, size: float = MEDIUM) -
     return y - size - 2.0
 
 
-def _wrap(text: str, size: float, width: float) -> list[str]:
-    words, lines, line = text.split(" "), [], ""
+def _words(text: str) -> list[str]:
+    """The text's words as a line may break between them: a parenthesis kept whole ("(φ = 30,0°)"),
+    a number kept with the word before it ("position 10", "положеннях 0–11")."""
+    out: list[str] = []
+    depth = 0
+    for w in text.split(" "):
+        if out and (depth > 0 or (w[:1].isdigit() and not out[-1].endswith((",", ";", ":", ".")))):
+            out[-1] += " " + w
+        else:
+            out.append(w)
+        depth = max(0, depth + w.count("(") - w.count(")"))
+    return out
+
+
+def _wrap(text: str, size: float, width: float, heading: bool = False) -> list[str]:
+    """The text in lines no wider than ``width``, broken at spaces (a heading not inside a
+    parenthesis nor before a number: ``_words``)."""
+    words, lines, line = (_words(text) if heading else text.split(" ")), [], ""
     for w in words:
         trial = f"{line} {w}".strip()
         if line and text_width(trial, size) > width:
@@ -226,6 +242,9 @@ def column_widths(cells: Sequence[Sequence[str]], size: float) -> list[float]:
 GAP = 6.0        # between blocks side by side
 ROW_MIN = 2.7    # mm: the smallest row height (with 1.8 mm lettering) before a sheet overflows
 SECTION = 4.0    # below a section
+HEAD_GAP = 2.0   # mm: a heading's baseline to its tables (or note)
+NOTE_GAP = 0.5   # mm: more between a heading and its note (the heading's д, у, φ hang below it)
+NOTE_UP = 2.5    # mm: a note's baseline over its tables (a comma's tail clear of the head row)
 
 
 def _diagram_block(key: dict[str, Any], lang: str = "uk") -> Block:
@@ -246,21 +265,40 @@ Section = tuple[str, str, list["Block"], bool]   # title, note, blocks, blocks s
 
 
 def _pair(sections: list[Section], room: float, size: float) -> list[list[Section]]:
-    """Rows of the page: two consecutive sections side by side when both fit the width."""
+    """Rows of the page: two consecutive sections side by side when both fit the width — their
+    tables, their notes, and their headings in at most two lines each (the second section starts
+    2·GAP after the first's tables; its heading must end inside the frame)."""
     rows, k = [], 0
     while k < len(sections):
         first = sections[k]
         if k + 1 < len(sections):
             second = sections[k + 1]
-            w = _width(first, size) + 2 * GAP + _width(second, size)
-            heads = max(text_width(first[0], MEDIUM), text_width(second[0], MEDIUM))
-            if w <= room and heads <= room / 2:
+            x2 = _width(first, size) + 2 * GAP
+            widths = (x2 - GAP, room - x2)
+            if (_width(second, size) <= widths[1]
+                    and all(len(_wrap(s[0], MEDIUM, w, heading=True)) <= 2 and text_width(s[1], SMALL) <= w
+                            for s, w in zip((first, second), widths))):
                 rows.append([first, second])
                 k += 2
                 continue
         rows.append([first])
         k += 1
     return rows
+
+
+def _head_widths(row: list[Section], room: float, size: float) -> list[float]:
+    """How wide each section's heading may run: to the next section, or to the frame."""
+    if len(row) == 1:
+        return [room]
+    x2 = _width(row[0], size) + 2 * GAP
+    return [x2 - GAP, room - x2]
+
+
+def _head_height(row: list[Section], room: float, size: float) -> float:
+    """The height of a page row's headings (the tallest, each wrapped to its width) and notes."""
+    lines = max(len(_wrap(s[0], MEDIUM, w, heading=True)) for s, w in zip(row, _head_widths(row, room, size)))
+    return (MEDIUM + HEAD_GAP + (lines - 1) * (line_pitch(MEDIUM) + 0.5)
+            + (SMALL + NOTE_GAP + NOTE_UP if any(s[1] for s in row) else 0.0))
 
 
 def _width(section: Section, size: float) -> float:
@@ -273,10 +311,10 @@ def _lines(section: Section) -> int:
     return max(ls) if section[3] else sum(ls)
 
 
-def _row_height(page_rows: list[list[Section]], height: float) -> float:
+def _row_height(page_rows: list[list[Section]], height: float, room: float, size: float) -> float:
     """The row height that makes the page rows fill ``height`` (not clamped)."""
     need = sum(max(_lines(s) for s in row) for row in page_rows)
-    fixed = sum(MEDIUM + 2.0 + (SMALL + 2.0 if any(s[1] for s in row) else 0) + SECTION
+    fixed = sum(_head_height(row, room, size) + SECTION
                 + max(0 if s[3] else 3.0 * (len(s[2]) - 1) for s in row) for row in page_rows)
     return (height - fixed) / need
 
@@ -303,7 +341,7 @@ def _place(rec: Record, x0: float, y: float, room: float, sections: list[Section
     sections = list(sections)
     size = SMALL
     page_rows = _pair(sections, room, size)
-    row_h = _row_height(page_rows, height)
+    row_h = _row_height(page_rows, height, room, size)
     while row_h < ROW_MIN:
         size = _lettering(max(row_h, ROW_MIN))
         foldable = [k for k, s in enumerate(sections) if len(s[2]) == 1 and len(s[2][0].rows) > 8
@@ -313,18 +351,20 @@ def _place(rec: Record, x0: float, y: float, room: float, sections: list[Section
         k = max(foldable, key=lambda k: _lines(sections[k]))
         sections[k] = _fold(sections[k])
         page_rows = _pair(sections, room, size)
-        row_h = _row_height(page_rows, height)
+        row_h = _row_height(page_rows, height, room, size)
     row_h = max(ROW_MIN, min(4.5, row_h))
     size = _lettering(row_h)
     for row in page_rows:
         x, bottom = x0, y
-        for title, note, blocks, beside in row:
-            yy = _heading(rec, x, y, title)
-            if any(s[1] for s in row):
-                if note:
-                    rec.label((x, yy - SMALL), note, size=SMALL)
-                yy -= SMALL + 2.0
-            bx, by = x, yy
+        top = y - _head_height(row, room, size)          # the row's tables start level
+        for (title, note, blocks, beside), width in zip(row, _head_widths(row, room, size)):
+            yy = y
+            for line in _wrap(title, MEDIUM, width, heading=True):
+                yy = _heading(rec, x, yy, line)
+                yy -= line_pitch(MEDIUM) + 0.5 - MEDIUM - 2.0    # the next line a line pitch lower
+            if note:
+                rec.label((x, top + NOTE_UP), note, size=SMALL)
+            bx, by = x, top
             for b in blocks:
                 b_bottom, w = table(rec, bx, by, b.header, b.rows, size=size, row_h=row_h, align=b.align)
                 bottom = min(bottom, b_bottom)
