@@ -245,6 +245,7 @@ SECTION = 4.0    # below a section
 HEAD_GAP = 2.0   # mm: a heading's baseline to its tables (or note)
 NOTE_GAP = 0.5   # mm: more between a heading and its note (the heading's д, у, φ hang below it)
 NOTE_UP = 2.5    # mm: a note's baseline over its tables (a comma's tail clear of the head row)
+HEAD_PITCH = line_pitch(MEDIUM) + 0.5    # mm: baseline to baseline of a heading wrapped in two lines
 
 
 def _diagram_block(key: dict[str, Any], lang: str = "uk") -> Block:
@@ -297,7 +298,7 @@ def _head_widths(row: list[Section], room: float, size: float) -> list[float]:
 def _head_height(row: list[Section], room: float, size: float) -> float:
     """The height of a page row's headings (the tallest, each wrapped to its width) and notes."""
     lines = max(len(_wrap(s[0], MEDIUM, w, heading=True)) for s, w in zip(row, _head_widths(row, room, size)))
-    return (MEDIUM + HEAD_GAP + (lines - 1) * (line_pitch(MEDIUM) + 0.5)
+    return (MEDIUM + HEAD_GAP + (lines - 1) * HEAD_PITCH
             + (SMALL + NOTE_GAP + NOTE_UP if any(s[1] for s in row) else 0.0))
 
 
@@ -358,10 +359,8 @@ def _place(rec: Record, x0: float, y: float, room: float, sections: list[Section
         x, bottom = x0, y
         top = y - _head_height(row, room, size)          # the row's tables start level
         for (title, note, blocks, beside), width in zip(row, _head_widths(row, room, size)):
-            yy = y
-            for line in _wrap(title, MEDIUM, width, heading=True):
-                yy = _heading(rec, x, yy, line)
-                yy -= line_pitch(MEDIUM) + 0.5 - MEDIUM - 2.0    # the next line a line pitch lower
+            for k, line in enumerate(_wrap(title, MEDIUM, width, heading=True)):
+                _heading(rec, x, y - k * HEAD_PITCH, line)
             if note:
                 rec.label((x, top + NOTE_UP), note, size=SMALL)
             bx, by = x, top
