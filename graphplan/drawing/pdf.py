@@ -20,11 +20,10 @@ from __future__ import annotations
 
 import io
 import math
-import re
 from collections.abc import Sequence
 
 from graphplan.graphic.record import DASHED_ROLES, Primitive, Record, arrowhead, em, lettering
-from graphplan.drawing.svg import ARROW_FONT, DASHES, FONT, MISSING, typeset
+from graphplan.drawing.svg import ARROW_FONT, DASHES, FONT, MISSING, placed
 from graphplan.util.markup import SMALL
 
 MM = 72.0 / 25.4                      # points per millimetre
@@ -46,7 +45,7 @@ def render_pdf(pages: Sequence[Record], width: float, height: float, title: str 
                text_as_paths: bool = False) -> bytes:
     """The records as a PDF of ``width`` × ``height`` mm pages, one record a page; ``text_as_paths``
     letters with the font's outlines instead of text."""
-    from graphplan.drawing.raster import require_cairo
+    from graphplan.drawing.raster import fixed_date, require_cairo
     from graphplan.drawing.fonts import register
     require_cairo()
     import cairocffi as cairo
@@ -71,14 +70,7 @@ def render_pdf(pages: Sequence[Record], width: float, height: float, title: str 
         for prim in record.items:
             pen.draw(prim)
     surface.finish()
-    return _fixed_date(out.getvalue())
-
-
-def _fixed_date(data: bytes) -> bytes:
-    """The creation date cairo writes replaced by one of the same length, 2000-01-01 (the cross-
-    reference offsets stay right; cairo 1.16's own metadata date leaves out the "D:" PDF asks for)."""
-    return re.sub(rb"/CreationDate \(D:\d{14}[^)]*\)",
-                  lambda m: b"/CreationDate (D:20000101000000Z" + b" " * (len(m.group(0)) - 33) + b")", data)
+    return fixed_date(out.getvalue())    # (cairo 1.16's own metadata date leaves out PDF's "D:")
 
 
 class _Pen:
@@ -173,8 +165,7 @@ class _Pen:
         if self.outlines:
             self.outline(prim)
             return
-        pieces, total = typeset(prim.text, prim.size)
-        x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
+        pieces, x_start = placed(prim)
         size = em(prim.size)
         for piece, small, x0, up, _advance in pieces:
             missing = piece in MISSING

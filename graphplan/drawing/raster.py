@@ -131,10 +131,14 @@ def _prepare(svg_text: str) -> bytes:
 
 
 def to_pdf(svg_text: str) -> bytes:
-    """The SVG as PDF with the lettering font embedded and cairo's creation date fixed (replaced by
-    one of the same length, so the cross-reference offsets stay right)."""
+    """The SVG as PDF with the lettering font embedded and cairo's creation date fixed (fixed_date)."""
     pdf, _ = _surfaces()
-    data = pdf.convert(bytestring=_prepare(svg_text))
+    return fixed_date(pdf.convert(bytestring=_prepare(svg_text)))
+
+
+def fixed_date(data: bytes) -> bytes:
+    """A PDF with cairo's creation date replaced by one of the same length, 2000-01-01, so the bytes
+    depend on the input only (the cross-reference offsets stay right)."""
     return re.sub(rb"/CreationDate \(D:\d{14}[^)]*\)",
                   lambda m: b"/CreationDate (D:20000101000000Z" + b" " * (len(m.group(0)) - 33) + b")",
                   data)

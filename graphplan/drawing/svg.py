@@ -184,8 +184,7 @@ def _text(prim: Primitive, h: float, chars: list[str]) -> str:
         return f"{head}>{inner}</text>" if inner else f"{head} />"
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
-    pieces, total = typeset(prim.text, prim.size)
-    x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
+    pieces, x_start = placed(prim)
     x, y = _xy((x_start, prim.points[0][1]), h)
     spans = []
     shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
@@ -205,6 +204,13 @@ def _text(prim: Primitive, h: float, chars: list[str]) -> str:
         shift, pen = up, x0 + advance
     return _tag("text", {"x": x, "y": y, "font-size": _f(em(prim.size)), "font-family": FONT, "fill": "black"},
                 "".join(spans))
+
+
+def placed(prim: Primitive) -> tuple[list[tuple[str, bool, float, float, float]], float]:
+    """A text primitive typeset (``typeset``) and the x its first piece starts at: the anchor moved
+    back by the whole advance for centred and right-aligned text."""
+    pieces, total = typeset(prim.text, prim.size)
+    return pieces, prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
 
 
 @lru_cache(maxsize=4096)
