@@ -200,7 +200,6 @@ def _refined_worst(cam: Cam, R0: float, e: float | None) -> float:
 def min_base_radius(cam: Cam, e: float | None = None) -> float:
     """The smallest R0 at which no pressure angle exceeds its allowed value (brentq on the refined
     largest |ϑ|/[ϑ] − 1, which falls as R0 grows)."""
-    from scipy.optimize import brentq
     e = cam.offset if e is None else e
     if cam.rocking:
         lo = abs(cam.centre_distance - cam.arm) * (1 + 1e-9) + 1e-9
@@ -216,22 +215,40 @@ def min_base_radius(cam: Cam, e: float | None = None) -> float:
     f = lambda R0: _refined_worst(cam, R0, e) - 1.0          # noqa: E731
     if cam.rocking:
         # the arm's angle changes with R0 and |ϑ| is not monotone in it: the allowed radii are a band;
-        # the first allowed one on a scan of the reach, then bracketed
+        # the first allowed one on a scan of the reach, then bracketed. The coarse grid's largest |ϑ|
+        # never exceeds the refined one, so a scan point whose coarse ratio is over 1 is not allowed;
+        # the others are decided by f itself — the bracket's ends then differ in sign by construction.
         scan = np.linspace(lo, hi, 241)
         coarse = _grid(cam, 720)
-        quick = [max(float(np.max(np.abs(profile(cam, geometry(cam, R, e), coarse)["theta"][phase_of(cam, coarse) == k])))
-                     / cam.allowed[k] for k in (0, 1)) for R in scan]
-        ok = [k for k, q in enumerate(quick) if q <= 1 - 1e-3 and f(scan[k]) <= 0]
-        if not ok:
+        phases = phase_of(cam, coarse)
+
+        def quick(R: float) -> float:
+            th = np.abs(profile(cam, geometry(cam, R, e), coarse)["theta"])
+            return max(float(np.max(th[phases == k])) / cam.allowed[k] for k in (0, 1))
+        first = next((k for k, R in enumerate(scan) if quick(R) <= 1.0 and f(R) <= 0), None)
+        if first is None:
             raise GraphplanError("the rocking follower's arm cannot keep the pressure angles within the "
                                  "allowed ones at any base radius; change the arm or the centre distance",
                                  cam.source)
-        if ok[0] == 0:
-            return lo
-        lo, hi = scan[ok[0] - 1], scan[ok[0]]
+        if first == 0:
+            return float(lo)
+        lo, hi = scan[first - 1], scan[first]
     elif f(lo) <= 0:
-        return lo
-    return brentq(f, lo, hi, xtol=1e-15, rtol=1e-15, maxiter=200)
+        return float(lo)
+    return bracketed_root(f, lo, hi)
+
+
+def bracketed_root(f, lo: float, hi: float) -> float:
+    """The root of ``f`` between ``lo`` (f > 0) and ``hi`` (f ≤ 0) by brentq; where f(hi) is exactly
+    0 that end is the answer (brentq needs opposite signs)."""
+    from scipy.optimize import brentq
+    f_hi = f(hi)
+    if f_hi == 0:
+        return float(hi)
+    if not f(lo) > 0 or not f_hi < 0:
+        raise GraphplanError("the smallest base radius could not be bracketed (the allowed pressure "
+                             f"angles are reached neither at {lo * 1000:.3f} mm nor at {hi * 1000:.3f} mm)")
+    return float(brentq(f, lo, hi, xtol=1e-15, rtol=1e-15, maxiter=200))
 
 
 def best_offset(cam: Cam) -> tuple[float, float]:
