@@ -89,10 +89,13 @@ def test_the_smallest_base_radius_makes_the_largest_pressure_angle_the_allowed_o
     assert X._refined_worst(cam, r * 0.999, cam.offset) > 1         # a smaller R0 is not allowed
 
 
-def test_the_translating_followers_profile_and_pressure_angle_in_closed_form():
+@pytest.mark.parametrize("sense", [1, -1])
+def test_the_translating_followers_profile_and_pressure_angle_in_closed_form(sense):
     """Centre profile points at √((s0+s)² + e²) from the cam's centre, the pressure angle
-    tg ϑ = (ds/dφ − σe)/(s0 + s), the profile turned against ω: P(φ)·e^{iσφ} is the roller centre."""
-    cam = load(TRANSLATING)
+    tg ϑ = (ds/dφ − e)/(s0 + s) for either sense, the profile turned against ω: P(φ)·e^{iσφ} is the
+    roller centre."""
+    from dataclasses import replace
+    cam = replace(load(TRANSLATING), sense=sense)
     sol = X.solve(cam)
     g = sol.geometry
     phi = np.linspace(0, 360, 3601)
@@ -100,7 +103,7 @@ def test_the_translating_followers_profile_and_pressure_angle_in_closed_form():
     p = sol.at(phi)
     s0 = math.sqrt(g.R0 ** 2 - g.e ** 2)
     assert np.max(np.abs(p["radius"] - np.sqrt((s0 + s) ** 2 + g.e ** 2))) < 1e-15
-    assert np.max(np.abs(np.tan(np.radians(p["theta"])) - (v - cam.sense * g.e) / (s0 + s))) < 1e-12
+    assert np.max(np.abs(np.tan(np.radians(p["theta"])) - (v - g.e) / (s0 + s))) < 1e-12
     C = p["P"] * np.exp(1j * cam.sense * np.radians(phi))
     assert np.max(np.abs(C.real - cam.sense * g.e)) < 1e-15
 

@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from graphplan.exact.cam import Solution, motion, profile
+from graphplan.exact.cam import Solution, centre_path, motion, profile
 from graphplan.graphic.cam import CamConstruction
 from graphplan.graphic.record import Record
 
@@ -80,42 +80,77 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+def phase_points(sol: Solution, g: CamConstruction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The phase diagram's construction in the fixed frame (complex, m; the cam's centre O at 0): at
+    each division the roller's centre C from the drawn s, the direction u of its motion as s grows, and
+    the point K = C + iσ·dC/dφ — the velocity analogue (ds/dφ, rocking l·dψ/dφ) laid off from C along
+    u turned by 90° in the sense of ω. The line OK is the profile's normal (dP/dφ·e^{iσφ} = C′ − iσC =
+    −iσ·(C + iσC′)), so the angle between OK and u is the pressure angle ϑ (exact.cam.profile)."""
+    cam = sol.cam
+    C, C1, _, u = centre_path(cam, sol.geometry, g.s, g.v, np.zeros_like(g.s))
+    return C, u, C + 1j * cam.sense * C1
+
+
 def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
-    """s against ds/dφ at the scale of s (translating: in m; rocking: the arc l·ψ), the drawn points,
-    the lines at [ϑ] through the extreme ones and the cam's centre O below."""
+    """The phase diagram as the textbook draws it, in the fixed frame at the scale of s (rocking: the
+    arm's arcs l·ψ at μ_s·l): the follower's axis (rocking: the arc of the roller's centre and the arm's
+    lines toward its pivot), the drawn ds/dφ laid off from each position of the roller's centre turned
+    by 90° in the sense of ω, the lines at [ϑ] to the follower's motion through the points seen at the
+    largest angle, bounding the region of the cam's centre, and the centre O chosen in it, joined to
+    those points: the angles drawn at O's lines are the pressure angles."""
     cam = sol.cam
     rec = Record("phase diagram")
-    k = cam.arm if cam.rocking else 1.0                # a rocking follower's angles as arcs of the arm
-    mu = g.mu_s * k                                    # s and ds/dφ at the scale of the s diagram
-    fine = np.linspace(0.0, 360.0, 721)
-    s, v, _ = motion(cam, fine)
+    mu = g.mu_s * (cam.arm if cam.rocking else 1.0)
+    C, u, K = phase_points(sol, g)
+    C, K = C / mu, K / mu
     sig = cam.sense
-    px, py = sig * v * k / mu, s * k / mu
-    rec.add("polyline", list(zip(px, py)), role="curve", layer=LAYER, step="phase curve exact")
-    gx, gy = sig * g.v * k / mu, g.s * k / mu
-    for X, Y in zip(gx, gy):
-        rec.point((X, Y), role="construction", layer=LAYER)
-    if cam.rocking:
-        centre = complex(0.0, -sol.geometry.R0 / mu)
-    else:
-        centre = complex(sol.geometry.e, -math.sqrt(max(sol.geometry.R0 ** 2 - sol.geometry.e ** 2, 0.0))) / mu
+    # the exact curve of K over the active phases, thin
+    fine = np.concatenate([np.linspace(0.0, cam.phases[0], 241),
+                           cam.phases[0] + cam.phases[1] + np.linspace(0.0, cam.phases[2], 241)])
+    s, v, a = motion(cam, fine)
+    Cf, C1f, _, _ = centre_path(cam, sol.geometry, s, v, a)
+    Kf = (Cf + 1j * sig * C1f) / mu
+    half = len(fine) // 2
+    for part in (Kf[:half], Kf[half:]):
+        rec.add("polyline", list(zip(part.real, part.imag)), role="curve", layer=LAYER, step="phase curve exact")
+    if cam.rocking:        # the arc of the roller's centre about the arm's pivot
+        A = cam.centre_distance / mu
+        ang = np.angle(C - A)
+        t = np.linspace(float(np.min(ang)) - 0.05, float(np.max(ang)) + 0.05, 61)
+        arc = A + cam.arm / mu * np.exp(1j * t)
+        rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="roller path")
+        for k in range(len(C)):     # the arm's line through C (toward the pivot) and K
+            w = (C[k] - A) / abs(C[k] - A)
+            ends = sorted([0.0, float(((K[k] - C[k]) * w.conjugate()).real)])
+            p0, p1 = C[k] + (ends[0] - 4.0) * w, C[k] + (ends[1] + 4.0) * w
+            rec.segment((p0.real, p0.imag), (p1.real, p1.imag), role="construction", layer=LAYER, step=f"arm {k}")
+    else:                  # the follower's axis
+        x = float(C[0].real)
+        top = float(max(np.max(C.imag), np.max(K.imag))) + 6.0
+        rec.segment((x, -4.0), (x, top), role="axis", layer=LAYER, step="follower axis")
+        rec.label((x + 1.5, top - 3.0), "s", size=TEXT, layer=LAYER)
+    for k in range(len(C)):
+        if abs(K[k] - C[k]) > 1e-9:
+            rec.segment((C[k].real, C[k].imag), (K[k].real, K[k].imag), role="construction", layer=LAYER,
+                        step=f"ds/dφ {k}")
+        rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
+    O = 0j
     for ph in (0, 1):
-        # the boundary of the allowed region: through the drawn point seen from O at the largest angle,
-        # at [ϑ] to the follower's axis, down past O
-        sel = g.phase == ph
-        X, Y = gx[sel], gy[sel]
-        seen = np.abs(np.arctan2(X - centre.real, Y - centre.imag))
-        j = int(np.argmax(seen))
-        tan_a = math.tan(math.radians(cam.allowed[ph]))
-        side = 1.0 if X[j] - centre.real >= 0 else -1.0
-        y_end = centre.imag - 10.0
-        rec.segment((X[j], Y[j]), (X[j] - side * tan_a * (Y[j] - y_end), y_end), role="direction", layer=LAYER)
-    rec.segment((0.0, centre.imag - 5), (0.0, float(np.max(gy)) + 5), role="axis", layer=LAYER)
-    rec.point((centre.real, centre.imag), role="pole", layer=LAYER)
-    rec.segment((centre.real, centre.imag), (0.0, 0.0), role="construction", layer=LAYER)
-    _clear_label(rec, centre, "O")
-    rec.label((2.0, float(np.max(gy)) + 3), "s", size=TEXT, layer=LAYER)
-    rec.label((float(np.max(np.abs(gx))) + 2, 2.0), "ds/dφ", size=TEXT, layer=LAYER)
+        # the boundary of the allowed region: through the drawn point seen from O at the largest angle
+        # to the follower's motion, at [ϑ] to it, down past O; O joined to that point
+        idx = np.flatnonzero(g.phase == ph)
+        seen = [abs(float(np.angle((O - K[k]) / -u[k]))) for k in idx]
+        k = int(idx[int(np.argmax(seen))])
+        beta = float(np.angle((O - K[k]) / -u[k]))
+        turn = math.radians(cam.allowed[ph]) * (1.0 if beta >= 0 else -1.0)
+        d = -u[k] * complex(math.cos(turn), math.sin(turn))
+        length = abs(O - K[k]) * 1.15 + 8.0
+        end = K[k] + d * length
+        rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
+                    step=f"[ϑ] line {ph}")
+        rec.segment((K[k].real, K[k].imag), (O.real, O.imag), role="construction", layer=LAYER, step=f"OK {ph}")
+    rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
+    _clear_label(rec, O, "O")
     rec.scales.update(mu_phase=mu)
     return rec
 

@@ -13,7 +13,7 @@ turned back by the cam's turn), P(φ) = C(φ)·e^{−iσφ}; the working profile
 roller radius (the envelope of the roller circles). The pressure angle ϑ is the angle between the
 profile's normal at the contact (the force's line, friction neglected) and the velocity of the roller
 centre: sin ϑ = Re(t̄·u)/|t|, t = dP/dφ·e^{iσφ} = C′ − iσC, u the unit direction of ∂C/∂s — for a
-translating follower tg ϑ = (ds/dφ − σe)/(s0 + s).
+translating follower tg ϑ = (ds/dφ − e)/(s0 + s) for either sense (σ enters through C and t alike).
 """
 from __future__ import annotations
 
@@ -177,12 +177,12 @@ def _grid(cam: Cam, n: int = 7200) -> Array:
     return np.concatenate([a, b])
 
 
-def _refined_worst(cam: Cam, R0: float, e: float | None) -> float:
-    """|ϑ|max/[ϑ] with each phase's largest |ϑ| refined about the grid's largest (bounded search)."""
+def phase_maxima(cam: Cam, g: Geometry) -> tuple[float, float]:
+    """Each active phase's largest |ϑ| (deg) over the continuous phase: the 0.05° grid's largest,
+    refined by a bounded search between its neighbours (the divisions' values may lie below it)."""
     from scipy.optimize import minimize_scalar
     grid = _grid(cam)
-    g = geometry(cam, R0, e)
-    worst = 0.0
+    out = []
     for k in (0, 1):
         sel = grid[phase_of(cam, grid) == k]
         th = np.abs(profile(cam, g, sel)["theta"])
@@ -193,8 +193,14 @@ def _refined_worst(cam: Cam, R0: float, e: float | None) -> float:
             r = minimize_scalar(lambda x: -abs(float(profile(cam, g, np.array([x]))["theta"][0])),
                                 bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
             best = max(best, -float(r.fun))
-        worst = max(worst, best / cam.allowed[k])
-    return worst
+        out.append(best)
+    return out[0], out[1]
+
+
+def _refined_worst(cam: Cam, R0: float, e: float | None) -> float:
+    """|ϑ|max/[ϑ] with each phase's largest |ϑ| refined about the grid's largest (bounded search)."""
+    rise, ret = phase_maxima(cam, geometry(cam, R0, e))
+    return max(rise / cam.allowed[0], ret / cam.allowed[1])
 
 
 def min_base_radius(cam: Cam, e: float | None = None) -> float:
@@ -277,11 +283,45 @@ class Solution:
         return out
 
     def curvature_min(self) -> float:
-        """The smallest radius of curvature of the centre profile where it is convex, m."""
+        """The smallest radius of curvature of the centre profile where it is convex, m: a 0.025° grid's
+        smallest refined by a bounded search, and at every point where d²s/dφ² (or ds/dφ) jumps — the
+        phases' ends, the parabolic law's middle, the trapezoidal law's knots — both one-sided limits
+        (the grid sees one side of a jump only)."""
+        from scipy.optimize import minimize_scalar
         phi = np.linspace(0.0, 360.0, 14401)
         rho = self.at(phi)["rho"]
-        convex = rho[np.isfinite(rho) & (rho > 0)]
-        return float(np.min(convex)) if convex.size else math.inf
+        ok = np.isfinite(rho) & (rho > 0)
+        best = float(np.min(rho[ok])) if ok.any() else math.inf
+        if ok.any():
+            j = int(np.argmin(np.where(ok, rho, np.inf)))
+            lo, hi = phi[max(j - 1, 0)], phi[min(j + 1, len(phi) - 1)]
+
+            def r(x: float) -> float:
+                v = float(self.at(np.array([x]))["rho"][0])
+                return v if math.isfinite(v) and v > 0 else math.inf
+            best = min(best, float(minimize_scalar(r, bounds=(lo, hi), method="bounded",
+                                                   options={"xatol": 1e-10}).fun))
+        knots = jump_points(self.cam)
+        s, _, _ = motion(self.cam, knots)
+        for side in (-1.0, 1.0):
+            _, v, a = motion(self.cam, knots + side * 1e-9)
+            rho = profile(self.cam, self.geometry, knots, s, v, a)["rho"]
+            ok = np.isfinite(rho) & (rho > 0)
+            if ok.any():
+                best = min(best, float(np.min(rho[ok])))
+        return best
+
+
+_LAW_KNOTS = {"parabolic": (0.5,), "trapezoidal": (0.125, 0.375, 0.625, 0.875)}
+
+
+def jump_points(cam: Cam) -> Array:
+    """The cam turns (deg) where d²s/dφ² or ds/dφ may jump: the phases' ends and the laws' knots."""
+    rise, far, ret, _ = cam.phases
+    pts = [0.0, rise, rise + far, rise + far + ret]
+    pts += [rise * u for u in _LAW_KNOTS.get(cam.laws[0], ())]
+    pts += [rise + far + ret * u for u in _LAW_KNOTS.get(cam.laws[1], ())]
+    return np.array(sorted(set(pts)))
 
 
 def solve(cam: Cam) -> Solution:

@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.exact.cam import Solution
+from graphplan.exact.cam import Solution, phase_maxima
 from graphplan.graphic.cam import CamConstruction, errors_pct
 from graphplan.util.words import num
 
@@ -62,8 +62,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "positions": positions,
         "base_radius_graphical_m": _f(g.R0_min),
         "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
-        "pressure_angle_max_deg": {"rise": float(np.max(np.abs(ex["theta"][g.phase == 0]))),
-                                   "return": float(np.max(np.abs(ex["theta"][g.phase == 1])))},
+        "pressure_angle_max_deg": dict(zip(("rise", "return"), phase_maxima(cam, sol.geometry))),
         "curvature_min_m": _f(sol.curvature_min()),
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
