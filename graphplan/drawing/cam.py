@@ -1,81 +1,87 @@
 """The cam's construction drawn (records in drawing mm, y up): the three diagrams of the law with
-their chords and poles, the phase diagram with the lines at the allowed pressure angle, and the
-profile by inversion with the base circle, the follower's turned positions, the centre and working
-profiles. Each record carries its scales."""
+their chords, poles and division numbers; the phase diagram with the lines at the allowed pressure
+angle; and the profile by inversion with the base circle, the follower in its start position (its
+guide and the offset line), ω's arrow, the follower's turned positions numbered, the phase angles as
+arcs, the centre and working profiles. Each record carries its scales; every letter is placed by the
+one label placer (drawing.labels), clear of the lines."""
 from __future__ import annotations
 
+import cmath
 import math
 
 import numpy as np
 
+from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, motion, profile
 from graphplan.graphic.cam import CamConstruction
 from graphplan.graphic.record import Record
 
 LAYER = "cam"
 TEXT = 3.5
+NUMBER = 2.5          # the division numbers
+PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_r", "φ_fd", "φ_ret", "φ_nd")}
 
 
-def _clear_label(rec: Record, at: complex, text: str) -> None:
-    """A point's letter where the lines leave most room: of eight places around the point, the one
-    whose letter box lies farthest from every line drawn so far."""
-    segs = []
-    for p in rec.items:
-        if p.kind in ("segment", "vector", "polyline") and len(p.points) >= 2:
-            segs += [(complex(*a), complex(*b)) for a, b in zip(p.points[:-1], p.points[1:])]
-
-    def dist(q: complex, a: complex, b: complex) -> float:
-        d = b - a
-        t = 0.0 if abs(d) == 0 else max(0.0, min(1.0, ((q - a) * d.conjugate()).real / abs(d) ** 2))
-        return abs(q - (a + t * d))
-    best, where = -1.0, at
-    for k in range(8):
-        c = at + 5.0 * complex(math.cos(k * math.pi / 4), math.sin(k * math.pi / 4))
-        box = [c + complex(dx, dy) for dx in (-1.5, 0.0, 1.5) for dy in (-2.0, 0.0, 2.0)]
-        room = min((dist(q, a, b) for q in box for a, b in segs), default=99.0)
-        if room > best:
-            best, where = room, c
-    rec.label((where.real - 1.2, where.imag - 1.7), text, size=TEXT, layer=LAYER)
+def _pt(z: complex) -> tuple[float, float]:
+    return (float(z.real), float(z.imag))
 
 
-def _axes(rec: Record, y0: float, width: float, top: float, bottom: float, letter: str, k: int) -> None:
-    rec.segment((0.0, y0), (width + 6.0, y0), role="axis", layer=LAYER, step=f"axis {k}")
-    rec.segment((0.0, y0 + bottom - 3.0), (0.0, y0 + top + 3.0), role="axis", layer=LAYER)
-    rec.label((2.0, y0 + top + 4.0), letter, size=TEXT, layer=LAYER)
+def numbered(n_points: int, spacing: float, size: float = NUMBER) -> list[int]:
+    """The division numbers that are lettered where the divisions lie ``spacing`` mm apart: every
+    one, or every second, fifth … so that two numbers' widths fit between neighbours (the first
+    and the last always)."""
+    width = 0.7 * size * len(str(n_points - 1)) + 1.0
+    every = next(k for k in (1, 2, 4, 5, 10, 20, 50, 100) if k * spacing >= width or k == 100)
+    keep = [k for k in range(n_points) if k % every == 0]
+    if keep[-1] != n_points - 1:
+        keep.append(n_points - 1)
+    return keep
 
 
 def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
-    """d²s/dφ², ds/dφ and s over the turn (L mm), one above another; the drawn ordinates at the
-    divisions, the chords of each integration, the poles H1, H2 on the left."""
+    """d²s/dφ², ds/dφ and s over the turn (L mm), one above another on one φ axis; the drawn ordinates
+    at the divisions, the chords of each integration, the poles H1, H2 on the left, the divisions
+    numbered under the s diagram as in the table and on the profile."""
     cam = sol.cam
     rec = Record("cam diagrams")
     L = 2 * math.pi / g.mu_phi
-    fine = np.linspace(0.0, 360.0, 721)
+    fine = np.append(np.linspace(0.0, 359.5, 720), 360.0 - 1e-9)    # the turn, its end in the near dwell
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
     bands = []
+    labels: list[LabelRequest] = []
     y = 0.0
     for key, curve, drawn, letter in (("s", s / g.mu_s, g.s_mm, "s"), ("v", v / g.mu_v, g.v_mm, "ds/dφ"),
-                                      ("a", a / g.mu_a, g.a_mm, "d^2s/dφ^2")):
+                                      ("a", a / g.mu_a, g.a_mm, "d^{2}s/dφ^{2}")):
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
         y0 = y - lo
         bands.append((key, y0))
-        _axes(rec, y0, L, hi, lo, letter, len(bands))
+        rec.segment((0.0, y0), (L + 6.0, y0), role="axis", layer=LAYER, step=f"axis {key}")
+        rec.vector((0.0, y0 + lo - 3.0), (0.0, y0 + hi + 6.0), role="axis", layer=LAYER, step=f"ordinate {key}")
+        labels.append(LabelRequest(complex(0.0, y0 + hi + 6.0), letter, toward=1 + 0.3j, size=TEXT))
+        labels.append(LabelRequest(complex(L + 6.0, y0), "φ", toward=1 - 1j, size=TEXT))
         rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
         for k in range(len(x)):
             rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER)
         for ph in (0, 1):
             sel = np.flatnonzero(g.phase == ph)
+            if key == "a":        # integrated by its intervals' middle ordinates: no chords of its own
+                continue
             for j in range(len(sel) - 1):
                 p, q = sel[j], sel[j + 1]
                 rec.segment((x[p], y0 + drawn[p]), (x[q], y0 + drawn[q]), role="chord", layer=LAYER)
-        y = y0 + hi + 14.0
+        y = y0 + hi + 16.0
     for name, H, (_, y0) in (("H_1", g.H1, bands[1]), ("H_2", g.H2, bands[0])):
         rec.point((-H, y0), role="pole", layer=LAYER)
         rec.segment((-H, y0), (0.0, y0), role="construction", layer=LAYER)
-        rec.label((-H, y0 + 2.0), name, size=TEXT, layer=LAYER)
-    rec.label((L + 2.0, bands[0][1] - 5.0), "φ", size=TEXT, layer=LAYER)
+        labels.append(LabelRequest(complex(-H, y0), name, toward=-0.3 + 1j, size=TEXT))
+    y_s = bands[0][1]
+    spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
+    for k in numbered(len(x), spacing):
+        rec.label((x[k], y_s - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
+                  step=f"division {k}")
+    place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
 
@@ -100,6 +106,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     those points: the angles drawn at O's lines are the pressure angles."""
     cam = sol.cam
     rec = Record("phase diagram")
+    labels: list[LabelRequest] = []
     mu = g.mu_s * (cam.arm if cam.rocking else 1.0)
     C, u, K = phase_points(sol, g)
     C, K = C / mu, K / mu
@@ -128,7 +135,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         x = float(C[0].real)
         top = float(max(np.max(C.imag), np.max(K.imag))) + 6.0
         rec.segment((x, -4.0), (x, top), role="axis", layer=LAYER, step="follower axis")
-        rec.label((x + 1.5, top - 3.0), "s", size=TEXT, layer=LAYER)
+        labels.append(LabelRequest(complex(x, top), "s", toward=1 + 0.2j, size=TEXT))
     for k in range(len(C)):
         if abs(K[k] - C[k]) > 1e-9:
             rec.segment((C[k].real, C[k].imag), (K[k].real, K[k].imag), role="construction", layer=LAYER,
@@ -150,19 +157,33 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                     step=f"[ϑ] line {ph}")
         rec.segment((K[k].real, K[k].imag), (O.real, O.imag), role="construction", layer=LAYER, step=f"OK {ph}")
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
-    _clear_label(rec, O, "O")
+    rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
+    labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
+    if not cam.rocking and abs(C[0].real) > 0.5:
+        rec.segment(_pt(O), (C[0].real, 0.0), role="construction", layer=LAYER, step="offset e")
+        labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
+    labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT))
+    j = int(np.argmax(np.abs(K - C)))
+    labels.append(LabelRequest(0.5 * (K[j] + C[j]), "ds/dφ", toward=1j, size=TEXT))
+    for k in range(len(K)):
+        labels.append(LabelRequest(K[k], str(k), toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
+    place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
 
 
 def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
-    """The profile by inversion at μ_l: the base circle, the follower's axis at each division turned
-    against ω, the drawn s laid off, the centre profile through those points, the roller circles and
-    the working profile."""
+    """The profile by inversion at μ_l: the base circle and R_0, the follower's axis at each division
+    turned against ω (numbered 0…N as in the table), the drawn s laid off, the centre profile through
+    those points, the roller circles and the working profile; the follower in its start position with
+    its guide (rocking: its arm on the fixed pivot), the offset line e, ω's arrow and the phase angles
+    as arcs with their names."""
     cam = sol.cam
     rec = Record("cam profile")
     mu = g.mu_l
-    rec.circle((0.0, 0.0), sol.geometry.R0 / mu, role="construction", layer=LAYER)
+    labels: list[LabelRequest] = []
+    r0 = sol.geometry.R0 / mu
+    rec.circle((0.0, 0.0), r0, role="construction", layer=LAYER, step="base circle")
     fine = np.linspace(0.0, 360.0, 1441)
     p = sol.at(fine)
     P, W = p["P"] / mu, p["working"] / mu
@@ -171,34 +192,138 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         rec.add("polyline", list(zip(W.real, W.imag)), role="link", layer=LAYER, step="working profile")
     pts = profile(cam, sol.geometry, g.phi, g.s, g.v, np.zeros_like(g.phi))["P"] / mu
     back = np.exp(-1j * cam.sense * np.radians(g.phi))     # the follower turned against ω
+    outer = float(np.max(np.abs(P))) + cam.roller / mu
     if cam.rocking:        # the pivot's circle; each arm from its turned pivot to the roller's centre
-        rec.circle((0.0, 0.0), cam.centre_distance / mu, role="trajectory", layer=LAYER)
-        feet = cam.centre_distance / mu * back
+        a_mm = cam.centre_distance / mu
+        feet = a_mm * back
+        rec.circle((0.0, 0.0), a_mm, role="trajectory", layer=LAYER, step="pivot circle")
+        rays = [feet[k] + 0.0 * pts[k] for k in range(len(pts))]
     else:                  # the offset's circle; each axis from its foot on it to the point laid off
         e = sol.geometry.e / mu
         if abs(e) > 0.5:
-            rec.circle((0.0, 0.0), abs(e), role="trajectory", layer=LAYER)
+            rec.circle((0.0, 0.0), abs(e), role="trajectory", layer=LAYER, step="offset circle")
         feet = cam.sense * e * back
+        rays = []
+        for k in range(len(pts)):
+            d = 1j * back[k]
+            t = math.sqrt(max((outer + 6.0) ** 2 - abs(feet[k]) ** 2, 0.0))
+            rays.append(feet[k] + t * d)
     for k, q in enumerate(pts):
-        rec.segment((feet[k].real, feet[k].imag), (q.real, q.imag), role="construction", layer=LAYER)
-        rec.point((q.real, q.imag), role="construction", layer=LAYER)
+        rec.segment(_pt(feet[k]), _pt(rays[k] if not cam.rocking else q), role="construction", layer=LAYER,
+                    step=f"ray {k}")
+        rec.point(_pt(q), role="construction", layer=LAYER, step=f"profile point {k}")
         if cam.roller > 0 and k % 2 == 0:
-            rec.circle((q.real, q.imag), cam.roller / mu, role="construction", layer=LAYER)
-    rec.point((0.0, 0.0), role="pole", layer=LAYER)
-    r0 = sol.geometry.R0 / mu
-    rays = np.sort(np.mod(np.angle(pts), 2 * math.pi))
-    gaps = np.diff(np.append(rays, rays[0] + 2 * math.pi))
+            rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
+    rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
+    _follower(rec, sol, g, pts[0], labels)
+    _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
+    # R_0 drawn in the widest sector free of rays, O and ω in the sector opposite the follower
+    angles = np.sort(np.mod(np.angle(np.concatenate([pts, [pts[0] * 3]])), 2 * math.pi))
+    gaps = np.diff(np.append(angles, angles[0] + 2 * math.pi))
     k = int(np.argmax(gaps))
-    mid = rays[k] + gaps[k] / 2                           # the widest sector without a ray
-    side = mid - gaps[k] / 4                              # R0 drawn there, O's letter on the bisector
-    rec.segment((0.0, 0.0), (r0 * math.cos(side), r0 * math.sin(side)), role="construction", layer=LAYER)
-    along = complex(math.cos(side), math.sin(side))
-    near = 7.0 if cam.rocking else max(7.0, abs(sol.geometry.e / mu) + 5.0)   # outside the offset's circle
-    for text, c in (("O", near * complex(math.cos(mid), math.sin(mid))),
-                    ("R_0", 0.6 * r0 * along + 4.0 * along * 1j)):      # beside the radius, toward O's side
-        rec.label((c.real - 1.2 * len(text.replace("_", "")), c.imag - 1.7), text, size=TEXT, layer=LAYER)
+    side = angles[k] + gaps[k] / 3
+    along = cmath.exp(1j * side)
+    rec.segment((0.0, 0.0), _pt(r0 * along), role="construction", layer=LAYER, step="R0")
+    labels.append(LabelRequest(0.55 * r0 * along, "R_0", toward=along * 1j, size=TEXT))
+    _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
+    labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT))
+    for k in numbered(len(pts), 2 * math.pi * outer / max(len(pts), 1)):
+        tip = rays[k] if not cam.rocking else feet[k]
+        labels.append(LabelRequest(tip, str(k), toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
+                                   optional=True))
+    place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_l=mu)
     return rec
+
+
+def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
+    """ω's arrow: an arc about O inside the base circle, in the sector free of rays (``room`` rad wide
+    about ``toward``), its head in the cam's sense."""
+    rr = 0.6 * r0
+    mid = math.degrees(cmath.phase(toward))
+    half = min(25.0, math.degrees(room) / 4)
+    a0, a1 = mid - half, mid + half
+    rec.arc((0.0, 0.0), rr, a0, a1, role="relative", layer=LAYER, step="ω")
+    end = math.radians(a1 if sense > 0 else a0)
+    tip = rr * cmath.exp(1j * end)
+    tangent = 1j * cmath.exp(1j * end) * (1 if sense > 0 else -1)
+    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer=LAYER, step="ω")
+    labels.append(LabelRequest(rr * cmath.exp(1j * math.radians(mid)), "ω", toward=-toward, size=TEXT))
+
+
+def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest]) -> None:
+    """The follower in its start position (φ = 0, the nearest position): a translating one's rod on its
+    axis through the roller's centre (or the knife-edge's point), its guide hatched, the offset e
+    from O to the axis; a rocking one's arm from its fixed pivot, the pivot's support."""
+    cam = sol.cam
+    mu = g.mu_l
+    r = cam.roller / mu
+    if cam.roller > 0:
+        rec.circle(_pt(C0), r, role="link", layer=LAYER, step="roller")
+        rec.point(_pt(C0), role="joint", layer=LAYER)
+    if cam.rocking:
+        A = complex(cam.centre_distance / mu, 0.0)
+        d = (C0 - A) / abs(C0 - A)
+        rec.segment(_pt(A), _pt(C0 - r * d if r else C0), role="link", layer=LAYER, step="arm")
+        for z in (A + complex(-3.5, -5.0), A + complex(3.5, -5.0)):
+            rec.segment(_pt(A), _pt(z), role="frame", width=0.35, layer=LAYER)
+        rec.segment(_pt(A + complex(-5.0, -5.0)), _pt(A + complex(5.0, -5.0)), role="frame", layer=LAYER)
+        for k in range(5):
+            z = A + complex(-5.0 + 2.5 * k, -5.0)
+            rec.segment(_pt(z), _pt(z + complex(-1.8, -1.8)), role="hatch", layer=LAYER)
+        rec.point(_pt(A), role="joint", layer=LAYER, step="pivot")
+        labels.append(LabelRequest(A, "O_1", toward=1 + 1j, size=TEXT))
+        return
+    up = 1j
+    h = cam.stroke / mu
+    base = C0 + (r if r else 0.0) * up
+    if not r:          # the knife-edge: a point
+        rec.segment(_pt(C0), _pt(C0 + complex(-1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
+        rec.segment(_pt(C0), _pt(C0 + complex(1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
+        base = C0 + 3.0j
+    top = base + (h + 25.0) * up
+    rec.segment(_pt(base), _pt(top), role="link", layer=LAYER, step="rod")
+    guide = base + (h + 8.0) * up
+    for side in (-1.0, 1.0):   # the guide: two short walls either side of the rod, hatched outward
+        x = side * 3.0
+        rec.segment(_pt(guide + x), _pt(guide + x + 12.0j), role="frame", width=0.35, layer=LAYER, step="guide")
+        for t in (1.0, 4.5, 8.0, 11.5):
+            z = guide + x + 1j * t
+            rec.segment(_pt(z), _pt(z + side * 1.8 + 1.8j), role="hatch", layer=LAYER)
+    x_axis = C0.real
+    if abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
+        rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
+        labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
+    rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
+
+
+def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, outer: float, lang: str,
+                labels: list[LabelRequest]) -> None:
+    """The phase angles as arcs about O outside the profile, between the follower's positions at the
+    phases' starts (the rays turned against ω), each with its name at its middle."""
+    cam = sol.cam
+    rise, far, ret, near = cam.phases
+    starts = [0.0, rise, rise + far, rise + far + ret]
+    sizes = [rise, far, ret, near]
+    R = outer + 10.0
+    if cam.rocking:
+        ref = cmath.phase(feet[0])
+    else:
+        ref = cmath.phase(rays[0])
+    sig = cam.sense
+    for name, start, size in zip(PHASE_NAMES[lang], starts, sizes):
+        if size < 1.0:
+            continue
+        a0 = ref - sig * math.radians(start)
+        a1 = ref - sig * math.radians(start + size)
+        lo, hi = sorted((a0, a1))
+        rec.arc((0.0, 0.0), R, math.degrees(lo), math.degrees(hi), role="construction", layer=LAYER,
+                step=f"phase {name}")
+        for t in (a0, a1):
+            z = cmath.exp(1j * t)
+            rec.segment(_pt((R - 3.0) * z), _pt((R + 3.0) * z), role="construction", layer=LAYER)
+        m = cmath.exp(1j * (lo + hi) / 2)
+        labels.append(LabelRequest(R * m, name, toward=m, size=TEXT))
 
 
 def records(sol: Solution, g: CamConstruction, lang: str) -> dict[str, Record]:

@@ -65,6 +65,7 @@ class CamConstruction:
     theta: np.ndarray               # the pressure angle measured at each division, degrees
     mu_l: float                     # m/mm of the profile
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    closing: tuple[float, float] = (0.0, 0.0)   # the integral's closing error of the rise and the return, mm
 
     @property
     def s(self) -> np.ndarray:
@@ -97,21 +98,25 @@ def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float,
 
 
 def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
-              H2: float | None = None, L: float = L_MM) -> CamConstruction:
+              H2: float | None = None, L: float | None = None, size: float = 1.0,
+              profile_size: float = 1.0) -> CamConstruction:
     """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
-    read with a ruler of ``precision`` mm."""
+    read with a ruler of ``precision`` mm. ``size`` enlarges the diagrams (L, the tallest ordinate and
+    the stroke drawn) and ``profile_size`` the profile, each scale then the standard one at or above
+    what that asks (the sheet takes the largest that fit their zones, sheets.cam.cam_sizes)."""
     cam = sol.cam
     n = n or cam.divisions
     phi, phase = divisions(sol, n)
+    L = L or L_MM * size
     mu_phi = 2 * math.pi / L
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0
-    mu_a = nice(peak / HEIGHT_MM)
+    mu_a = nice(peak / (HEIGHT_MM * size))
     if H1 is None or H2 is None:
         # the stroke drawn about STROKE_MM high at a standard μ_s; H1 a whole millimetre near the
         # geometric mean, H2 then follows from μ_s = μ_a·μ_φ²·H1·H2 (what the student computes)
-        mu_s_target = nice(cam.stroke / STROKE_MM)
+        mu_s_target = nice(cam.stroke / (STROKE_MM * size))
         H = math.sqrt(mu_s_target / (mu_a * mu_phi ** 2))
         H1 = H1 or float(max(5.0, round(H)))
         H2 = H2 or mu_s_target / (mu_a * mu_phi ** 2 * H1)
@@ -134,23 +139,25 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
             _, _, a_mid = motion(cam, mid_phi)
             v_mm[sel] = _integrate_phase(x, a_mm[sel], H1, 0.0, precision, mid=a_mid / mu_a)
         s_mm[sel] = _integrate_phase(x, v_mm[sel], H2, start, precision)
+    s_mm, closing = close_phases(s_mm, phase, cam.stroke / mu_s, precision)
     s_g, v_g = s_mm * mu_s, v_mm * mu_v
     # the phase diagram: the smallest base radius at which no drawn point exceeds the allowed angle
     R0_min = _phase_diagram_radius(sol, phi, phase, s_g, v_g)
     # the profile about 200 mm across: its largest radius 100 mm at a standard μ_l
     largest = float(np.max(np.abs(profile(cam, sol.geometry, np.linspace(0.0, 360.0, 721))["P"])))
-    mu_l = nice(largest / PROFILE_MM)
+    mu_l = nice(largest / (PROFILE_MM * profile_size))
     R0_min = float(read(R0_min / mu_l, precision)) * mu_l
     prof = profile(cam, sol.geometry, phi, s_g, v_g, np.zeros_like(phi))
     radius_mm = read(prof["radius"] / mu_l, precision)
     theta = np.round(prof["theta"] * 2) / 2 if precision > 0 else prof["theta"]   # a protractor's ½°
     out = CamConstruction(phi, phase, mu_phi, mu_a, mu_v, mu_s, H1, H2, precision, a_mm, v_mm, s_mm, R0_min,
-                          sol.geometry.R0, radius_mm, theta, mu_l)
-    closure = abs(s_g[phase == 0][-1] - cam.stroke) / cam.stroke
+                          sol.geometry.R0, radius_mm, theta, mu_l, closing=closing)
+    closure = abs(closing[0]) * mu_s / cam.stroke
     if closure > 0.05:
-        out.warnings.append((f"the rise's graphical s ends {closure * 100:.1f} % off the stroke: take more "
-                             "divisions or a finer scale", f"графічне s наприкінці підйому відрізняється від ходу "
-                             f"на {closure * 100:.1f} %: візьміть більше поділок або дрібніший масштаб"))
+        out.warnings.append((f"the rise's graphical s ended {closure * 100:.1f} % off the stroke before its closing: "
+                             "take more divisions or a larger scale", f"графічне s наприкінці підйому до замикання "
+                             f"відрізнялося від ходу на {closure * 100:.1f} %: візьміть більше поділок або більший "
+                             "масштаб"))
     return out
 
 
@@ -183,6 +190,23 @@ def _phase_diagram_radius(sol: Solution, phi, phase, s_g, v_g) -> float:
     if worst(lo) <= 0:
         return float(lo)
     return float(brentq(worst, lo, hi, xtol=1e-12))
+
+
+def close_phases(s_mm: np.ndarray, phase: np.ndarray, stroke_mm: float, precision: float
+                 ) -> tuple[np.ndarray, tuple[float, float]]:
+    """The s diagram closed as a traverse is: the integral's end ordinate of the rise should be the
+    stroke (of the return, zero); its closing error Δ is laid off back over the phase's divisions in
+    proportion to the turn, y_k ← y_k − Δ·k/n (each move read with the ruler), so the rise ends at the
+    stroke and the return at zero. Returns the closed ordinates and Δ of the rise and the return (mm)."""
+    out = np.array(s_mm, dtype=float)
+    errors = []
+    for k, target in ((0, stroke_mm), (1, 0.0)):
+        idx = np.flatnonzero(phase == k)
+        delta = float(out[idx[-1]] - target)
+        frac = np.arange(len(idx)) / (len(idx) - 1)
+        out[idx] = out[idx] - read(delta * frac, precision)
+        errors.append(delta)
+    return out, (errors[0], errors[1])
 
 
 def errors_pct(graphical: np.ndarray, exact: np.ndarray, scale: float) -> list[float | None]:
