@@ -288,8 +288,11 @@ def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str =
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     from graphplan.model.cam import load as load_cam
+    from graphplan.sheets.cam import cam_sizes
+    from graphplan.sheets.form import form
     sol = solve(load_cam(scene))
-    return Cam((sol, construct(sol, divisions, precision)), lang)
+    size, prof, height = cam_sizes(sol, form("A1"), divisions, precision)    # the A1 cam sheet's scales
+    return Cam((sol, construct(sol, divisions, precision, size=size, profile_size=prof, height=height)), lang)
 
 
 class Sheet(View):

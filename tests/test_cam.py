@@ -184,7 +184,7 @@ def test_cam_json_holds_the_contracts_fields():
 def test_cam_tables_and_drawings(tmp_path):
     code, out, err = run(["cam", str(TRANSLATING), "--svg", str(tmp_path)])
     assert code == 0, err
-    assert "R0" in out and "ds/dφ" in out
+    assert "R₀" in out and "ds/dφ" in out
     assert sorted(p.name for p in tmp_path.iterdir()) == ["diagrams.svg", "phase.svg", "profile.svg"]
     code, out, _ = run(["cam", str(ROCKING), "--lang", "en"])
     assert code == 0 and "rocking follower" in out

@@ -34,8 +34,8 @@ def rows(quick: bool, examples: Path) -> Iterator[Row]:
                 t0 = time.perf_counter()
                 g = construct(sol, n, precision)
                 elapsed = time.perf_counter() - t0
-                s, _, _ = motion(cam, g.phi)
-                radius = sol.at(g.phi)["radius"]
+                s, _, _ = motion(cam, g.phi, g.phase)
+                radius = sol.at(g.phi, g.phase)["radius"]
                 yield {"section": "cam", "method": "graphical", "scene": name, "x": n, "precision_mm": precision,
                        "setting": f"{name} precision={precision:g} mm", "time_s": elapsed,
                        "R0_error_pct": 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,

@@ -26,6 +26,9 @@ def register(sub) -> None:
                    help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (diagrams, phase, profile .svg)")
+    p.add_argument("--format", default="A1", metavar="A1|A2|A3",
+                   help="the sheet whose scales the construction takes (default A1: the numbers are the cam "
+                        "sheet's)")
     lang_arg(p)
     p.set_defaults(handler=cmd_cam)
 
@@ -41,10 +44,14 @@ def cmd_cam(args: argparse.Namespace) -> int:
         raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
     if args.divisions is not None and not 2 <= args.divisions <= 360:
         raise GraphplanError(f"--divisions must be a whole number from 2 to 360, got {args.divisions}")
+    from graphplan.sheets.cam import cam_sizes
+    from graphplan.sheets.form import form
     cam = load(args.scene)
+    f = form(args.format)
     try:
         sol = solve(cam)
-        g = construct(sol, args.divisions, args.precision)
+        size, prof, height = cam_sizes(sol, f, args.divisions, args.precision)
+        g = construct(sol, args.divisions, args.precision, size=size, profile_size=prof, height=height)
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
     lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))

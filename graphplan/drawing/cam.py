@@ -19,7 +19,28 @@ from graphplan.graphic.record import Record
 LAYER = "cam"
 TEXT = 3.5
 NUMBER = 2.5          # the division numbers
-PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_r", "φ_fd", "φ_ret", "φ_nd")}
+PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
+
+
+def scale_units(rocking: bool, lang: str) -> dict[str, str]:
+    """The unit of each scale (the value per drawn millimetre): s in m (rocking: rad), its analogues
+    per radian of the cam's turn."""
+    uk = lang == "uk"
+    m, rad, mm = ("м", "рад", "мм") if uk else ("m", "rad", "mm")
+    top = rad if rocking else m
+    per = {"mu_s": f"{top}/{mm}", "mu_phi": f"{rad}/{mm}", "mu_l": f"{m}/{mm}"}
+    if rocking:
+        per.update(mu_v=f"1/{mm}", mu_a=f"1/({rad}·{mm})")
+    else:
+        per.update(mu_v=f"{m}/({rad}·{mm})", mu_a=f"{m}/({rad}^{{2}}·{mm})")
+    return per
+
+
+def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
+    """“μ_s = 0,0005 м/мм” in the lab's notation (markup)."""
+    from graphplan.util.words import num
+    sym = {"mu_s": "μ_s", "mu_v": "μ_v", "mu_a": "μ_a", "mu_phi": "μ_φ", "mu_l": "μ_l"}[key]
+    return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
 
 
 def _pt(z: complex) -> tuple[float, float]:
@@ -58,9 +79,13 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         y0 = y - lo
         bands.append((key, y0))
         rec.segment((0.0, y0), (L + 6.0, y0), role="axis", layer=LAYER, step=f"axis {key}")
-        rec.vector((0.0, y0 + lo - 3.0), (0.0, y0 + hi + 6.0), role="axis", layer=LAYER, step=f"ordinate {key}")
+        rec.vector((0.0, y0 + lo - 3.0 if lo < 0 else y0), (0.0, y0 + hi + 6.0), role="axis", layer=LAYER,
+                   step=f"ordinate {key}")
         labels.append(LabelRequest(complex(0.0, y0 + hi + 6.0), letter, toward=1 + 0.3j, size=TEXT))
         labels.append(LabelRequest(complex(L + 6.0, y0), "φ", toward=1 - 1j, size=TEXT))
+        mu = {"s": g.mu_s, "v": g.mu_v, "a": g.mu_a}[key]
+        labels.append(LabelRequest(complex(L, y0 + hi + 4.0), scale_text(f"mu_{key}", mu, cam.rocking, lang),
+                                   toward=-0.2 + 1j, size=TEXT))
         rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
         for k in range(len(x)):
             rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER)

@@ -18,7 +18,7 @@ translating follower tg ϑ = (ds/dφ − e)/(s0 + s) for either sense (σ enters
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -75,20 +75,30 @@ def law(name: str, u: Array) -> tuple[Array, Array, Array]:
     raise GraphplanError(f"unknown law {name!r}")
 
 
-def motion(cam: Cam, phi_deg: Array) -> tuple[Array, Array, Array]:
+def motion(cam: Cam, phi_deg: Array, phase: Array | None = None) -> tuple[Array, Array, Array]:
     """s, ds/dφ, d²s/dφ² (per radian) at the cam turns ``phi_deg`` from the start of the rise: the rise's
-    law, the far dwell at h, the return's law mirrored, the near dwell at 0."""
-    phi = np.mod(np.asarray(phi_deg, dtype=float), 360.0)
+    law, the far dwell at h, the return's law mirrored, the near dwell at 0. ``phase`` (0 rise, 1
+    return, per turn) says which phase a turn on the boundary of two belongs to — the rise's end is the
+    return's start when there is no far dwell —; without it the later phase takes a shared turn."""
+    raw = np.asarray(phi_deg, dtype=float)
+    phi = np.mod(raw, 360.0)
     rise, far, ret, _ = cam.phases
     h = cam.stroke
     s, v, a = np.zeros_like(phi), np.zeros_like(phi), np.zeros_like(phi)
     R, T = math.radians(rise), math.radians(ret)
+    if phase is not None:
+        phase = np.asarray(phase)
+        phi = np.where(phase == 1, raw, phi)            # the return's end stays at its own turn
     up = phi <= rise
+    if phase is not None:
+        up = up & (phase != 1)
     f, f1, f2 = law(cam.laws[0], phi[up] / rise)
     s[up], v[up], a[up] = h * f, h * f1 / R, h * f2 / R ** 2
     dwell = (phi > rise) & (phi < rise + far)
     s[dwell] = h
     down = (phi >= rise + far) & (phi <= rise + far + ret)
+    if phase is not None:
+        down = down & (phase != 0)
     f, f1, f2 = law(cam.laws[1], (phi[down] - rise - far) / ret)
     s[down], v[down], a[down] = h * (1 - f), -h * f1 / T, -h * f2 / T ** 2
     return s, v, a
@@ -275,9 +285,16 @@ class Solution:
     geometry: Geometry
     R0_min: float
     warnings: list[tuple[str, str]]
+    cache: dict = field(default_factory=dict, repr=False, compare=False)
 
-    def at(self, phi_deg: Array) -> dict[str, Array]:
-        s, v, a = motion(self.cam, phi_deg)
+    def pressure_maxima(self) -> tuple[float, float]:
+        """Each active phase's largest |ϑ| over the continuous phase (phase_maxima), once."""
+        if "maxima" not in self.cache:
+            self.cache["maxima"] = phase_maxima(self.cam, self.geometry)
+        return self.cache["maxima"]
+
+    def at(self, phi_deg: Array, phase: Array | None = None) -> dict[str, Array]:
+        s, v, a = motion(self.cam, phi_deg, phase)
         out = profile(self.cam, self.geometry, phi_deg, s, v, a)
         out.update(s=s, v=v, a=a)
         return out
@@ -287,6 +304,11 @@ class Solution:
         smallest refined by a bounded search, and at every point where d²s/dφ² (or ds/dφ) jumps — the
         phases' ends, the parabolic law's middle, the trapezoidal law's knots — both one-sided limits
         (the grid sees one side of a jump only)."""
+        if "rho" not in self.cache:
+            self.cache["rho"] = self._curvature_min()
+        return self.cache["rho"]
+
+    def _curvature_min(self) -> float:
         from scipy.optimize import minimize_scalar
         phi = np.linspace(0.0, 360.0, 14401)
         rho = self.at(phi)["rho"]

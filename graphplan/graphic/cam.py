@@ -99,30 +99,33 @@ def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float,
 
 def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
               H2: float | None = None, L: float | None = None, size: float = 1.0,
-              profile_size: float = 1.0) -> CamConstruction:
+              profile_size: float = 1.0, height: float | None = None, measure: bool = True) -> CamConstruction:
     """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
     read with a ruler of ``precision`` mm. ``size`` enlarges the diagrams (L, the tallest ordinate and
     the stroke drawn) and ``profile_size`` the profile, each scale then the standard one at or above
-    what that asks (the sheet takes the largest that fit their zones, sheets.cam.cam_sizes)."""
+    what that asks (the sheet takes the largest that fit their zones, sheets.cam.cam_sizes); ``height``
+    (default ``size``) enlarges the ordinates alone. ``measure=False`` leaves R0 unmeasured (NaN):
+    a trial of the drawings' sizes."""
     cam = sol.cam
     n = n or cam.divisions
     phi, phase = divisions(sol, n)
     L = L or L_MM * size
+    height = size if height is None else height
     mu_phi = 2 * math.pi / L
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0
-    mu_a = nice(peak / (HEIGHT_MM * size))
+    mu_a = nice(peak / (HEIGHT_MM * height))
     if H1 is None or H2 is None:
         # the stroke drawn about STROKE_MM high at a standard μ_s; H1 a whole millimetre near the
         # geometric mean, H2 then follows from μ_s = μ_a·μ_φ²·H1·H2 (what the student computes)
-        mu_s_target = nice(cam.stroke / (STROKE_MM * size))
+        mu_s_target = nice(cam.stroke / (STROKE_MM * height))
         H = math.sqrt(mu_s_target / (mu_a * mu_phi ** 2))
         H1 = H1 or float(max(5.0, round(H)))
         H2 = H2 or mu_s_target / (mu_a * mu_phi ** 2 * H1)
     mu_v = mu_a * mu_phi * H1
     mu_s = mu_v * mu_phi * H2
-    s_ex, v_ex, a_ex = motion(cam, phi)
+    s_ex, v_ex, a_ex = motion(cam, phi, phase)
     x_mm = np.radians(phi) / mu_phi
     a_mm = read(a_ex / mu_a, precision)
     v_mm = np.zeros_like(phi)
@@ -142,7 +145,7 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     s_mm, closing = close_phases(s_mm, phase, cam.stroke / mu_s, precision)
     s_g, v_g = s_mm * mu_s, v_mm * mu_v
     # the phase diagram: the smallest base radius at which no drawn point exceeds the allowed angle
-    R0_min = _phase_diagram_radius(sol, phi, phase, s_g, v_g)
+    R0_min = _phase_diagram_radius(sol, phi, phase, s_g, v_g) if measure else math.nan
     # the profile about 200 mm across: its largest radius 100 mm at a standard μ_l
     largest = float(np.max(np.abs(profile(cam, sol.geometry, np.linspace(0.0, 360.0, 721))["P"])))
     mu_l = nice(largest / (PROFILE_MM * profile_size))
@@ -200,7 +203,7 @@ def close_phases(s_mm: np.ndarray, phase: np.ndarray, stroke_mm: float, precisio
     stroke and the return at zero. Returns the closed ordinates and Δ of the rise and the return (mm)."""
     out = np.array(s_mm, dtype=float)
     errors = []
-    for k, target in ((0, stroke_mm), (1, 0.0)):
+    for k, target in ((0, float(read(stroke_mm, precision))), (1, 0.0)):
         idx = np.flatnonzero(phase == k)
         delta = float(out[idx[-1]] - target)
         frac = np.arange(len(idx)) / (len(idx) - 1)

@@ -7,8 +7,10 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.exact.cam import Solution, phase_maxima
+from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import CamConstruction, errors_pct
+from graphplan.drawing.cam import scale_text
+from graphplan.util.markup import plain
 from graphplan.util.words import num
 
 
@@ -21,7 +23,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
     """The contract's document (lengths in m, angles in degrees; a rocking follower's s in degrees of
     the arm's swing, its ds/dφ and d²s/dφ² per radian of the cam's turn)."""
     cam = sol.cam
-    ex = sol.at(g.phi)
+    ex = sol.at(g.phi, g.phase)
     for key in ("s", "v", "a", "theta"):          # round-off below 1e-12 of the largest value is 0
         big = float(np.max(np.abs(ex[key]))) or 1.0
         ex[key] = np.where(np.abs(ex[key]) < 1e-12 * big, 0.0, ex[key])
@@ -62,8 +64,9 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "positions": positions,
         "base_radius_graphical_m": _f(g.R0_min),
         "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
-        "pressure_angle_max_deg": dict(zip(("rise", "return"), phase_maxima(cam, sol.geometry))),
+        "pressure_angle_max_deg": dict(zip(("rise", "return"), sol.pressure_maxima())),
         "curvature_min_m": _f(sol.curvature_min()),
+        "closing_mm": {"rise": float(g.closing[0]), "return": float(g.closing[1])},
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
@@ -79,12 +82,14 @@ WORDS = {
            "rocking": "коромисловий штовхач", "law": "закони: підйом — {r}, опускання — {t}",
            "laws": {"parabolic": "параболічний", "cosine": "косинусний", "cycloidal": "синусний (циклоїдальний)",
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
-           "phases": "фази: φ_п = {a}°, φ_дв = {b}°, φ_с = {c}°, φ_бл = {d}°",
-           "radius": "R0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R0 = {r} мм",
-           "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ0 = {p}°",
-           "angles": "найбільший кут тиску: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
-           "curv": "найменший радіус кривини центрового профілю ρ_min = {c} мм, ролик r = {r} мм",
-           "scales": "масштаби: μ_φ = {p} рад/мм, μ_a = {a}, μ_v = {v}, μ_s = {s} (м або рад)/мм; H1 = {h1} мм, H2 = {h2} мм",
+           "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
+           "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
+           "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
+           "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
+           "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
+           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} мм, H_2 = {h2} мм",
+           "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
+                      "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
            "warn": "Попередження"},
@@ -92,24 +97,27 @@ WORDS = {
            "law": "laws: rise {r}, return {t}",
            "laws": {"parabolic": "parabolic", "cosine": "cosine", "cycloidal": "cycloidal (sine)",
                     "linear": "linear", "trapezoidal": "trapezoidal"},
-           "phases": "phases: φ_rise = {a}°, φ_far = {b}°, φ_return = {c}°, φ_near = {d}°",
-           "radius": "smallest R0 = {m} mm (graphically {g} mm, error {e} %); R0 taken = {r} mm",
-           "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ0 = {p}°",
-           "angles": "largest pressure angle: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
-           "curv": "smallest radius of curvature of the centre profile ρ_min = {c} mm, roller r = {r} mm",
-           "scales": "scales: μ_φ = {p} rad/mm, μ_a = {a}, μ_v = {v}, μ_s = {s} (m or rad)/mm; H1 = {h1} mm, H2 = {h2} mm",
+           "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
+           "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
+           "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
+           "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
+           "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
+           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} mm, H_2 = {h2} mm",
+           "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
+                      "back over the divisions in proportion to the turn: y_k − Δ·k/n",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
            "warn": "Warnings"},
 }
 
 
-def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
-    """The terminal's report: the data, the base radius exact and measured, the per-division table."""
+def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
+    """The data, the base radius exact and measured, the largest pressure angles, ρ_min, the scales
+    and the closing of s, in the lab's notation (markup: the sheet's notes typeset it)."""
     w = WORDS[lang]
     n = lambda x, d=4: num(x, lang, d) if x is not None else "—"                # noqa: E731
     rocking = doc["follower"] == "rocking"
-    lines = [f"{title} — {w['title']}", w[doc["follower"]] + "; " + w["law"].format(
+    lines = [w[doc["follower"]] + "; " + w["law"].format(
         r=w["laws"][doc["laws"]["rise"]], t=w["laws"][doc["laws"]["return"]]),
         w["phases"].format(a=n(doc["phases_deg"]["rise"]), b=n(doc["phases_deg"]["dwell_far"]),
                            c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
@@ -117,15 +125,32 @@ def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
                                  p=n(doc["arm_angle_deg"])) if rocking else w["offset"].format(e=n(doc["offset_m"] * 1000)))
     g = doc["base_radius_graphical_m"]
     lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
-                                    e=n(doc["base_radius_error_pct"], 3), r=n(doc["base_radius_m"] * 1000)))
+                                    e=n(doc["base_radius_error_pct"], 3).replace("-", "−"),
+                                    r=n(doc["base_radius_m"] * 1000)))
     lines.append(w["angles"].format(r=n(doc["pressure_angle_max_deg"]["rise"]), t=n(doc["pressure_angle_max_deg"]["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     c = doc["curvature_min_m"]
     lines.append(w["curv"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000)))
     sc = doc["scales"]
-    lines.append(w["scales"].format(p=n(sc["mu_phi_rad_mm"]), a=n(sc["mu_a_mm"]), v=n(sc["mu_v_mm"]), s=n(sc["mu_s_mm"]),
+    mu = {k: scale_text(k, sc[f"{k}_mm" if k != "mu_phi" else "mu_phi_rad_mm"] if k != "mu_l" else sc["mu_l_m_mm"],
+                        rocking, lang) for k in ("mu_phi", "mu_a", "mu_v", "mu_s", "mu_l")}
+    lines.append(w["scales"].format(p=mu["mu_phi"], a=mu["mu_a"], v=mu["mu_v"], s=mu["mu_s"], l=mu["mu_l"],
                                     h1=n(sc["H1_mm"]), h2=n(sc["H2_mm"])))
+    close = doc.get("closing_mm")
+    if close:
+        lines.append(w["closing"].format(r=n(close["rise"], 3).replace("-", "−"),
+                                         t=n(close["return"], 3).replace("-", "−")))
+    return lines
+
+
+def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
+    """The terminal's report: the data, the base radius exact and measured, the per-division table."""
+    w = WORDS[lang]
+    n = lambda x, d=4: num(x, lang, d) if x is not None else "—"                # noqa: E731
+    rocking = doc["follower"] == "rocking"
+    sc = doc["scales"]
+    lines = [f"{title} — {w['title']}"] + [plain(x) for x in cam_lines(doc, lang)]
     lines.append("")
     key = "_deg" if rocking else "_m"
     rows = [w["head"]]

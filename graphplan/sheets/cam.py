@@ -5,7 +5,7 @@ other sheets: the drawings in a row in reading order, the table and the notes be
 a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
-from graphplan.drawing.cam import records
+from graphplan.drawing.cam import records, scale_text
 from graphplan.drawing.layout import Leaf, Placed, centred, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import construct
@@ -13,7 +13,8 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
 from graphplan.report.cam import cam_json
-from graphplan.sheets.compose import Sheet, SheetOptions, captioned, compose, field_of, keep_out, note_block
+from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
+                                      note_block)
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
@@ -21,11 +22,11 @@ from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num
 
 WORDS = {
-    "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми d^2s/dφ^2, ds/dφ, s (графічне "
+    "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми d^{2}s/dφ^{2}, ds/dφ, s (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма s(ds/dφ) і найменший радіус R_0",
            "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№", "group": "гр."},
-    "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams d^2s/dφ^2, ds/dφ, s (graphical integration by "
+    "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams d^{2}s/dφ^{2}, ds/dφ, s (graphical integration by "
            "chords)", "phase": "Phase diagram s(ds/dφ) and the smallest base radius R_0",
            "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
            "pressure angle at the divisions", "n": "No", "group": "gr."},
@@ -75,37 +76,118 @@ def positions_table(doc: dict, lang: str) -> Record:
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     """The data, the base radius exact and measured, the largest pressure angles, the curvature, the
-    scales and the warnings, as the terminal says them (report.cam)."""
-    from graphplan.report.cam import cam_table
-    text = cam_table(doc, lang, cam.title_in(lang))
-    lines = text.split("\n\n")[0].splitlines()[1:]
+    scales, the closing of s and the warnings, as the terminal says them (report.cam), typeset."""
+    from graphplan.report.cam import cam_lines
+    lines = cam_lines(doc, lang)
     w = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
-    lines += [("Попередження: " if lang == "uk" else "Warning: ") + x for x in w]
+    lines += [("Попередження: " if lang == "uk" else "Warning: ") + escape(x) for x in w]
     marked = any(v is not None and abs(v) > LAB_LIMIT for p in doc["positions"] for v in p["error_pct"].values())
     if marked:
         lines.append("* — " + ("похибка понад 5 %: коротка ордината (кілька мм) або мало поділок"
                                if lang == "uk" else "an error past 5 %: a short ordinate (a few mm) or few "
                                "divisions"))
-    return [escape(x) for x in lines]
+    return lines
 
 
-def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
-    """The cam sheet: the three constructions captioned, the table and the notes, flowed over the
-    sheet (and further sheets of the set when the format is small) in reading order."""
-    lang = args.lang
-    sol = solve(cam)
-    g = construct(sol, None, args.precision)
-    doc = cam_json(sol, g, cam.source or "")
-    drawn = records(sol, g, lang)
+SIZES = (1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0, 2.2, 2.4, 2.6, 2.8, 3.0, 3.3, 3.6, 4.0)
+
+
+def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
+    """Each drawing's caption and its second line, the drawing's scales."""
     w = WORDS[lang]
-    leaves = [Leaf(name, record=captioned(drawn[name], w[name])) for name in ("diagrams", "phase", "profile")]
+    mm = "мм" if lang == "uk" else "mm"
+    num_ = lambda x: num(x, lang, 4)                                             # noqa: E731
+    first = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_1 = {num_(g.H1)} {mm}, H_2 = {num_(g.H2)} {mm}"
+    if cam.rocking:
+        phase = (f"{scale_text('mu_s', g.mu_s, True, lang)}; " + ("дуги l·ψ: " if lang == "uk" else "arcs l·ψ: ")
+                 + f"{num_(g.mu_s * cam.arm)} {'м/мм' if lang == 'uk' else 'm/mm'}")
+    else:
+        phase = scale_text("mu_s", g.mu_s, False, lang)
+    profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
+    return {"diagrams": (w["diagrams"], first), "phase": (w["phase"], phase), "profile": (w["profile"], profile)}
+
+
+def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
+    doc = cam_json(sol, g, cam.source or "")
+    drawn = drawn or records(sol, g, lang)
+    caps = _captions(g, cam, lang)
+    leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
     tab = Leaf("table", record=positions_table(doc, lang))
     width = max(TITLE, tab.record.bounds()[2] - tab.record.bounds()[0])
     nts = Leaf("notes", record=note_block(notes(doc, lang, cam), width))
+    return leaves, tab, nts, doc
+
+
+def _one_sheet(laid) -> bool:
+    """The drawings on one sheet and in one row (the reading order of LAYOUT.md's cam sheet)."""
+    if laid is None or len(laid) != 1:
+        return False
+    tops = {round(b[3], 6) for leaf, b in laid[0] if leaf.name in ("diagrams", "phase", "profile")}
+    return len(tops) == 1
+
+
+def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple[float, float, float]:
+    """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``): the
+    largest common size whose drawings (at the standard scales that size asks) fit the sheet in one
+    row above the table and the notes — in both languages —, then the diagrams' ordinates grown while
+    they fit, then the profile, the main drawing. (1, 1, 1) when nothing fits one sheet (then a set
+    of sheets)."""
+    region, keep = field_of(f), keep_out(f)
+
+    from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
+    memo: dict = {}
+
+    def part(name, draw, key, g):
+        if (name, key) not in memo:               # each drawing depends on its own scales only
+            memo[(name, key)] = draw(sol, g, "en")   # the longer phase names; captions per language
+        return memo[(name, key)]
+
+    def fits(size: float, prof: float, height: float) -> bool:
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False)
+        drawn = {"diagrams": part("diagrams", diagrams, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g),
+                 "phase": part("phase", phase_diagram, (g.mu_s,), g),
+                 "profile": part("profile", profile_drawing, (g.mu_l,), g)}
+        for lang in ("uk", "en"):
+            leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang, drawn)
+            if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+                return False
+        return True
+    k = _largest(lambda x: fits(x, x, x), list(SIZES))
+    if k is None:
+        return 1.0, 1.0, 1.0
+    rest = [x for x in SIZES if x > k]
+    kh = (_largest(lambda x: fits(k, k, x), rest) if rest else None) or k
+    kp = (_largest(lambda x: fits(k, x, kh), rest) if rest else None) or k
+    return k, kp, kh
+
+
+def _largest(ok, sizes: list[float]) -> float | None:
+    """The largest size for which ``ok`` holds, by bisection (fitting falls off as the size grows)."""
+    lo, hi, best = 0, len(sizes) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        if ok(sizes[mid]):
+            best, lo = sizes[mid], mid + 1
+        else:
+            hi = mid - 1
+    return best
+
+
+def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
+    """The cam sheet: the three constructions captioned with their scales, the table and the notes,
+    flowed over the sheet (and further sheets of the set when the format is small) in reading order,
+    each drawing at the largest standard scale that fits its zone (cam_sizes)."""
+    lang = args.lang
+    sol = solve(cam)
+    size, prof, height = cam_sizes(sol, f, None, args.precision)
+    g = construct(sol, None, args.precision, size=size, profile_size=prof, height=height)
+    leaves, tab, nts, _ = _leaves(sol, g, cam, lang)
     region = field_of(f)
     laid = flow([leaves, [tab, nts]], region, keep_out(f))
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet; choose a larger --format")
     pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
              for page in laid]
-    return compose(f, pages, _fields(cam, lang), lang, f"{cam.title_in(lang)} — {w['subtitle']}")
+    fields = _fields(cam, lang)
+    fields["scale"] = drawing_scale(g.mu_l, lang)
+    return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")

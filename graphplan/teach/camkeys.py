@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.exact.cam import Solution, phase_maxima
+from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import divisions as division_turns
 from graphplan.graphic.record import Record
 from graphplan.model.variants import tolerance_for
@@ -33,7 +33,7 @@ def make_cam_key(sol: Solution, *, variant: str = "", student: str = "", base: s
     cam = sol.cam
     n = divisions or cam.divisions
     phi, phase = division_turns(sol, n)
-    at = sol.at(phi)
+    at = sol.at(phi, phase)
     deg = math.degrees(1.0) if cam.rocking else 1.0
     values = {"s": at["s"] * deg, "ds_dphi": at["v"] * deg, "theta": at["theta"], "R": at["radius"]}
     fine = sol.at(np.linspace(0.0, 360.0, 3601))
@@ -50,7 +50,7 @@ def make_cam_key(sol: Solution, *, variant: str = "", student: str = "", base: s
         "laws": list(cam.laws), "pressure_angle_allowed_deg": list(cam.allowed),
         "base_radius_min_m": sol.R0_min, "base_radius_m": sol.geometry.R0,
         "offset_m": sol.geometry.e, "arm_angle_deg": math.degrees(sol.geometry.psi0),
-        "pressure_angle_max_deg": list(phase_maxima(sol.cam, sol.geometry)),
+        "pressure_angle_max_deg": list(sol.pressure_maxima()),
         "curvature_min_m": _finite(sol.curvature_min()),
         "warnings": [en for en, _ in sol.warnings], "warnings_uk": [uk for _, uk in sol.warnings],
         "count": len(positions), "accel": [], "divisions": n, "zero_fraction": ZERO_FRACTION,
