@@ -72,7 +72,7 @@ def _ends_well(tmp_path, case) -> None:
             or doc["base_radius_m"] < r
 
 
-@settings(max_examples=3, deadline=None, derandomize=True,
+@settings(max_examples=2, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(case=cams)
 def test_any_cam_ends_with_an_answer_or_one_line(tmp_path, case):

@@ -6,7 +6,7 @@ a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
 from graphplan.drawing.cam import records, scale_text
-from graphplan.drawing.layout import Leaf, Placed, centred, flow
+from graphplan.drawing.layout import Leaf, Placed, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import construct
 from graphplan.graphic.diagrams import LAB_LIMIT
@@ -108,10 +108,11 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
 
 
 def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
+    """The captioned drawings (none when ``drawn`` is {}), the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
-    drawn = drawn or records(sol, g, lang)
+    drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
-    leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
+    leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in drawn]
     tab = Leaf("table", record=positions_table(doc, lang))
     width = max(TITLE, tab.record.bounds()[2] - tab.record.bounds()[0])
     nts = Leaf("notes", record=note_block(notes(doc, lang, cam), width))
@@ -136,20 +137,25 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
 
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     memo: dict = {}
+    fixed_: dict = {}                      # the table's and the notes' sizes: the same at every size
 
-    def part(name, draw, key, g):
-        if (name, key) not in memo:               # each drawing depends on its own scales only
-            memo[(name, key)] = draw(sol, g, "en")   # the longer phase names; captions per language
-        return memo[(name, key)]
+    def leaf(name, draw, key, g, lang):
+        if (name, key, lang) not in memo:  # each drawing depends on its own scales only
+            if (name, key) not in memo:
+                memo[(name, key)] = draw(sol, g, "en")   # the longer phase names
+            memo[(name, key, lang)] = Leaf(name, record=captioned(memo[(name, key)], *_captions(g, sol.cam, lang)[name]))
+        return memo[(name, key, lang)]
 
     def fits(size: float, prof: float, height: float) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False)
-        drawn = {"diagrams": part("diagrams", diagrams, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g),
-                 "phase": part("phase", phase_diagram, (g.mu_s,), g),
-                 "profile": part("profile", profile_drawing, (g.mu_l,), g)}
         for lang in ("uk", "en"):
-            leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang, drawn)
-            if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+            if lang not in fixed_:
+                _, tab, nts, _ = _leaves(sol, g, sol.cam, lang, {})
+                fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
+            leaves = [leaf("diagrams", diagrams, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g, lang),
+                      leaf("phase", phase_diagram, (g.mu_s,), g, lang),
+                      leaf("profile", profile_drawing, (g.mu_l,), g, lang)]
+            if not _one_sheet(flow([leaves, fixed_[lang]], region, keep)):
                 return False
         return True
     k = _largest(lambda x: fits(x, x, x), list(SIZES))

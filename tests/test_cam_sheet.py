@@ -1,0 +1,52 @@
+"""The cam sheet as a teacher reads it (issue 32, item 1): no raw markup in any lettering, nothing
+overprinted (on the rendered sheet), the drawings filling the field above the table — for the
+translating example and a generated rocking cam turning counter-clockwise."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from conftest import ROOT
+from graphplan.model.cam import build, load
+from graphplan.sheets.cam import build_cam_sheet
+from graphplan.sheets.compose import SheetOptions, defects, field_of
+from graphplan.sheets.form import form
+
+ROCKING_CCW = {"title": "Кулачок", "title_en": "A cam", "cam": {
+    "follower": "rocking", "swing_deg": 25, "arm": 0.09, "centre_distance": 0.11, "roller_radius": 0.007,
+    "phases_deg": {"rise": 120, "dwell_far": 30, "return": 90, "dwell_near": 120},
+    "laws": {"rise": "parabolic", "return": "cycloidal"}, "rpm": 100}}
+
+
+def lettering(svg: str) -> list[str]:
+    """Every text element's characters as drawn (its tspans joined; entities decoded)."""
+    import html
+    out = []
+    for m in re.finditer(r"<text\b[^>]*>(.*?)</text>", svg, flags=re.S):
+        out.append(html.unescape(re.sub(r"<[^>]+>", "", m.group(1))))
+    return out
+
+
+@pytest.mark.parametrize("cam, lang", [
+    pytest.param(lambda: load(ROOT / "examples" / "cam_translating.toml"), "uk", id="translating-uk"),
+    pytest.param(lambda: build(ROCKING_CCW, "<rocking ccw>"), "en", id="rocking-ccw-en", marks=pytest.mark.slow)])
+def test_the_cam_sheet_reads_as_lettered(cam, lang):
+    from inkcheck import overprinted
+    sheet = build_cam_sheet(cam(), form("A1"), SheetOptions(lang=lang, sheet="cam"))
+    svg = sheet.svg()
+    words = lettering(svg)
+    assert len(words) > 200
+    raw = [w for w in words if any(c in w for c in "_^{}")]
+    assert not raw, raw[:5]
+    for must in ("ω", "O", "R", "φ", "d", "μ"):
+        assert any(must in w for w in words), must
+    assert not defects(sheet)
+    assert overprinted(svg) == []
+    # the drawings fill the field: their boxes span its width and more than half its height
+    x0, y0, x1, y1 = field_of(sheet.form)
+    boxes = [p.record.bounds() for p in sheet.placed if p.name in ("diagrams", "phase", "profile")]
+    assert len(boxes) == 3
+    width = sum(b[2] - b[0] for b in boxes)
+    height = max(b[3] - b[1] for b in boxes)
+    assert width > 0.85 * (x1 - x0) and height > 0.5 * (y1 - y0), (width, height)
