@@ -271,8 +271,8 @@ def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, lab
     rec.arc((0.0, 0.0), rr, a0, a1, role="relative", layer=LAYER, step="ω")
     end = math.radians(a1 if sense > 0 else a0)
     tip = rr * cmath.exp(1j * end)
-    tangent = 1j * cmath.exp(1j * end) * (1 if sense > 0 else -1)
-    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer=LAYER, step="ω")
+    tail = rr * cmath.exp(1j * (end - (1 if sense > 0 else -1) * 8.0 / rr))    # a chord 8 mm back on the arc
+    rec.vector(_pt(tail), _pt(tip), role="relative", layer=LAYER, step="ω")
     labels.append(LabelRequest(rr * cmath.exp(1j * math.radians(mid)), "ω", toward=-toward, size=TEXT))
 
 
