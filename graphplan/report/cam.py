@@ -87,6 +87,7 @@ WORDS = {
            "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
+           "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} мм, H_2 = {h2} мм",
            "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
@@ -102,6 +103,7 @@ WORDS = {
            "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
+           "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} mm, H_2 = {h2} mm",
            "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
@@ -131,7 +133,8 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     c = doc["curvature_min_m"]
-    lines.append(w["curv"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000)))
+    lines.append(w["curv" if doc["roller_radius_m"] > 0 else "knife"].format(
+        c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000)))
     sc = doc["scales"]
     mu = {k: scale_text(k, sc[f"{k}_mm" if k != "mu_phi" else "mu_phi_rad_mm"] if k != "mu_l" else sc["mu_l_m_mm"],
                         rocking, lang) for k in ("mu_phi", "mu_a", "mu_v", "mu_s", "mu_l")}
