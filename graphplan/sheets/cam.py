@@ -179,6 +179,26 @@ def _largest(ok, sizes: list[float]) -> float | None:
     return best
 
 
+def _lined_up(page: list[Placed]) -> list[Placed]:
+    """The phase diagram moved up or down so that its s axis starts level with the s diagram's (both
+    at μ_s: a point of s reads across from one to the other), where it stays inside its box."""
+    by = {p.name: p for p in page}
+    if "diagrams" not in by or "phase" not in by:
+        return page
+    axis = [q for q in by["diagrams"].record.items if q.step == "axis s"]
+    start = [q for q in by["phase"].record.items if q.step == "R0"]
+    if not axis or not start:
+        return page
+    dy = axis[0].points[0][1] - start[0].points[1][1]
+    phase = by["phase"]
+    moved = phase.record.moved(0.0, dy)
+    x0, y0, x1, y1 = moved.bounds()
+    b = phase.box
+    if y0 < b[1] - 1e-9 or y1 > b[3] + 1e-9:
+        return page
+    return [Placed(p.name, moved, p.box) if p.name == "phase" else p for p in page]
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -194,6 +214,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet; choose a larger --format")
     pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
              for page in laid]
+    if not cam.rocking:
+        pages = [_lined_up(page) for page in pages]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")
