@@ -222,7 +222,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         a_mm = cam.centre_distance / mu
         feet = a_mm * back
         rec.circle((0.0, 0.0), a_mm, role="trajectory", layer=LAYER, step="pivot circle")
-        rays = [feet[k] + 0.0 * pts[k] for k in range(len(pts))]
+        rays = list(feet)
     else:                  # the offset's circle; each axis from its foot on it to the point laid off
         e = sol.geometry.e / mu
         if abs(e) > 0.5:

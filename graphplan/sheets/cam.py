@@ -99,8 +99,8 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     num_ = lambda x: num(x, lang, 4)                                             # noqa: E731
     first = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_1 = {num_(g.H1)} {mm}, H_2 = {num_(g.H2)} {mm}"
     if cam.rocking:
-        phase = (f"{scale_text('mu_s', g.mu_s, True, lang)}; " + ("дуги l·ψ: " if lang == "uk" else "arcs l·ψ: ")
-                 + f"{num_(g.mu_s * cam.arm)} {'м/мм' if lang == 'uk' else 'm/mm'}")
+        phase = (f"{scale_text('mu_s', g.mu_s, True, lang)}; μ_s·l = {num_(g.mu_s * cam.arm)} "
+                 + ("м/мм (дуги l·ψ)" if lang == "uk" else "m/mm (the arcs l·ψ)"))
     else:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
@@ -158,9 +158,15 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
             if not _one_sheet(flow([leaves, fixed_[lang]], region, keep)):
                 return False
         return True
-    k = _largest(lambda x: fits(x, x, x), list(SIZES))
-    if k is None:
+    g0 = construct(sol, n, precision, measure=False)
+    for lang in ("uk", "en"):              # the table and the notes alone higher than the field: a set
+        _, tab, nts, _ = _leaves(sol, g0, sol.cam, lang, {})
+        fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
+        if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
+            return 1.0, 1.0, 1.0
+    if not fits(1.0, 1.0, 1.0):
         return 1.0, 1.0, 1.0
+    k = _largest(lambda x: fits(x, x, x), list(SIZES)) or 1.0
     rest = [x for x in SIZES if x > k]
     kh = (_largest(lambda x: fits(k, k, x), rest) if rest else None) or k
     kp = (_largest(lambda x: fits(k, x, kh), rest) if rest else None) or k
