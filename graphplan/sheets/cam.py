@@ -6,7 +6,7 @@ a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
 from graphplan.drawing.cam import records, scale_text
-from graphplan.drawing.layout import Leaf, Placed, centred, extent, flow
+from graphplan.drawing.layout import GAP, Leaf, Placed, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import construct
 from graphplan.graphic.diagrams import LAB_LIMIT
@@ -44,8 +44,8 @@ def _fields(cam: Cam, lang: str) -> dict[str, str]:
             "subtitle": WORDS[lang]["subtitle"]}
 
 
-def _pct(v) -> str:
-    return "—" if v is None else num(v, "uk", 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
+def _pct(v, lang: str) -> str:
+    return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
 
 
 def positions_table(doc: dict, lang: str) -> Record:
@@ -65,8 +65,8 @@ def positions_table(doc: dict, lang: str) -> Record:
         def v(x, d=4):
             return num(x, lang, d).replace("-", "−")
         rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), v(g["s" + key] * k),
-                     _pct(err["s"]).replace(".", "," if lang == "uk" else "."), v(e["ds_dphi" + key] * k),
-                     v(g["ds_dphi" + key] * k), _pct(err["ds_dphi"]).replace(".", "," if lang == "uk" else "."),
+                     _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
+                     v(g["ds_dphi" + key] * k), _pct(err["ds_dphi"], lang),
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
@@ -89,6 +89,7 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     return lines
 
 
+FIELD_W = 816.0          # an A1 field's width (841 − 20 − 5 mm); smaller formats wrap the notes the same
 SIZES = (1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0, 2.2, 2.4, 2.6, 2.8, 3.0, 3.3, 3.6, 4.0)
 
 
@@ -114,7 +115,9 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None) -> tuple[lis
     caps = _captions(g, cam, lang)
     leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in drawn]
     tab = Leaf("table", record=positions_table(doc, lang))
-    width = max(TITLE, tab.record.bounds()[2] - tab.record.bounds()[0])
+    table_w = tab.record.bounds()[2] - tab.record.bounds()[0]
+    # the notes between the table and the title block, their lines not longer than about 300 mm
+    width = max(TITLE, min(300.0, FIELD_W - table_w - TITLE - 4 * GAP))
     nts = Leaf("notes", record=note_block(notes(doc, lang, cam), width))
     return leaves, tab, nts, doc
 
