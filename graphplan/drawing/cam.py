@@ -180,6 +180,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         end = K[k] + d * length
         rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
+        labels.append(LabelRequest(end - d * 4.0, "[ϑ]", toward=d * 1j * (1 if turn > 0 else -1), size=TEXT,
+                                   optional=True))
         rec.segment((K[k].real, K[k].imag), (O.real, O.imag), role="construction", layer=LAYER, step=f"OK {ph}")
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
