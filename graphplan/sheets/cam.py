@@ -173,6 +173,13 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     rest = [x for x in SIZES if x > k]
     kh = (_largest(lambda x: fits(k, k, x), rest) if rest else None) or k
     kp = (_largest(lambda x: fits(k, x, kh), rest) if rest else None) or k
+    # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
+    # sheet's language) are measured once more, and the smallest size taken if they do not fit
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False)
+    for lang in ("uk", "en"):
+        leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
+        if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+            return 1.0, 1.0, 1.0
     return k, kp, kh
 
 
