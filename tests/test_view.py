@@ -291,7 +291,8 @@ def set_slider(d, phi: float) -> None:
 
 
 def cell(d, q: str, col: str) -> str:
-    return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text
+    """A cell's text with the page's minus sign (U+2212) written as the terminal writes it."""
+    return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text.replace("−", "-")
 
 
 def analyze_shown(phis: list[float], scene: Path = SHAPER, lang: str = "uk") -> dict[float, dict[str, str]]:
@@ -353,7 +354,7 @@ def test_slider_values_equal_analyze(driver, pages, shots):
             q = names.get(column[:2], column[:2]) + column[2:]
             found = driver.find_elements("css selector", f'[data-q="{q}"] td.exact')
             if found:
-                assert found[0].text == text, (phi, column)
+                assert found[0].text.replace("−", "-") == text, (phi, column)
                 compared += 1
         assert compared >= 14
         assert cell(driver, "v_C", "graphical") == ""      # no plan was drawn at this angle
@@ -371,13 +372,13 @@ def test_lab_position_shows_the_plan_reading(driver, pages, shots):
     got = driver.find_element("css selector", '[data-q="v_C"] td.graphical')
     assert float(got.get_attribute("data-value")) == pytest.approx(v["value"], rel=1e-6)
     assert f"({v['mm']:.1f} mm)" in got.text
-    assert cell(driver, "v_C", "error") == f"{v['error_pct']:.2f}".replace("-", "−")
+    assert cell(driver, "v_C", "error") == f"{v['error_pct']:.2f}"
     rel = driver.find_element("css selector", '[data-q="vrel_A"] td.graphical')      # the block in the slot
     exact = float(driver.find_element("css selector", '[data-q="vrel_A"] td.exact').get_attribute("data-value"))
     assert float(rel.get_attribute("data-value")) == pytest.approx(
         math.copysign(pos["velocity"]["A3A2"]["value"], exact), rel=1e-6)
     k = pos["acceleration"]["k_A3A2"]
-    assert cell(driver, "k_A", "error") == f"{k['error_pct']:.2f}".replace("-", "−")
+    assert cell(driver, "k_A", "error") == f"{k['error_pct']:.2f}"
     # the graphical plans are drawn over the exact ones
     assert driver.execute_script("return document.querySelectorAll('#vplan .g-vec').length") > 5
     assert driver.execute_script("return document.querySelectorAll('#aplan .g-vec').length") > 5
@@ -593,7 +594,8 @@ def test_choosing_a_plan_moves_the_mechanism(driver, pages):
     box = driver.execute_script("const r = document.getElementById('diagrams').getBoundingClientRect();"
                                 "const m = document.getElementById('diagrams').getScreenCTM();"
                                 "return [r.width, r.height, m.a, m.e - r.left];")
-    x = box[3] + box[2] * 120.0      # 180° of the turn: x = 120 in the diagrams' units (240 for 360°)
+    x0, w = (float(svg.get_attribute(a)) for a in ("data-x0", "data-width"))     # the axis of the turn, 0…360°
+    x = box[3] + box[2] * (x0 + w / 2)      # 180° of the turn
     ActionChains(driver).move_to_element_with_offset(svg, x - box[0] / 2, 0).click().perform()
     assert float(driver.find_element("id", "turn-value").get_attribute("data-turn")) == pytest.approx(180.0, abs=1.01)
     check_clean(driver, pages["en"].resolve().as_uri())

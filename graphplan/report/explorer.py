@@ -229,10 +229,12 @@ def check_data(plans: Plans) -> dict[str, list[list[Any]]]:
         for plan in (p.velocity, p.acceleration):
             if plan is None:
                 continue
+            floor = ROUND_OFF * max([abs(float(e.analytic)) for e in plan.entries.values()] + [0.0])
             for e in ordered(plan):
                 if e.mm is None or e.kind in ("normal", "coriolis"):
                     continue
-                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu, float(e.analytic), float(e.mm),
+                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu,
+                             0.0 if abs(float(e.analytic)) <= floor else float(e.analytic), float(e.mm),
                              None if e.error_pct is None else float(e.error_pct)])
         out[str(p.key)] = rows
     return out

@@ -56,14 +56,14 @@ def seg(a: str, b: str) -> str:
 # -- the words, Ukrainian and English (markup of util.markup) ----------------------------------------
 
 SAY: dict[str, tuple[str, str]] = {
-    "crank v": ("{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} мм перпендикулярно до {arm_l}, у бік ω_1",
-                "{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} mm perpendicular to {arm_l}, in the sense of ω_1"),
-    "crank a": ("{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} мм паралельно до {back}, до {pivot}",
-                "{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} mm parallel to {back}, toward {pivot}"),
+    "crank v": ("{seg} = v_{pin}{also} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} мм перпендикулярно до {arm_l}, у бік ω_1",
+                "{seg} = v_{pin}{also} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} mm perpendicular to {arm_l}, in the sense of ω_1"),
+    "crank a": ("{seg} = a_{pin}{also} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} мм паралельно до {back}, до {pivot}",
+                "{seg} = a_{pin}{also} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} mm parallel to {back}, toward {pivot}"),
     "crank a eps": ("{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, паралельно до {back}, до {pivot}; {t} = a^τ_{pin} = "
-                    "ε_1·l_{{{arm}}}, перпендикулярно до {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} мм",
+                    "ε_1·l_{{{arm}}}, перпендикулярно до {arm_l}; {seg} = a_{pin}{also} = {value} {unit}: {mm} мм",
                     "{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, parallel to {back}, toward {pivot}; {t} = a^τ_{pin} = "
-                    "ε_1·l_{{{arm}}}, perpendicular to {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} mm"),
+                    "ε_1·l_{{{arm}}}, perpendicular to {arm_l}; {seg} = a_{pin}{also} = {value} {unit}: {mm} mm"),
     "normal": ("Від {base} відкладаємо {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
                "{mm} мм паралельно до {link}, до {toward}",
                "From {base} lay off {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
@@ -157,6 +157,10 @@ class Names:
         """A mechanism point as the lab letters it: A3 (the rocker's point at A) → A, O1 → O_1."""
         return indexed(self.base.get(point, point))
 
+    def own_label(self, point: str) -> str:
+        """A point with its own number kept: the rocker's point at A is A_3 (OB : OA_3)."""
+        return indexed(point) if point in self.base else self.mech_label(point)
+
     def position(self, point: str) -> complex:
         """Where the mechanism's point is on the position plan (drawing mm) at this position."""
         if point in self.base:
@@ -241,7 +245,11 @@ class Replay:
         v = self.value(cr.pin) or {"mm": {"uk": "—", "en": "—"}, "value": {"uk": "—", "en": "—"}}
         units = both(lambda lang: unit(n.unit, lang))
         arm = f"{cr.pivot}{cr.pin}"
-        common = dict(seg=seg(n.pole, a), pin=cr.pin, arm=arm, unit=units, **v,
+        said = {m.group(1) for g in plan.solved
+                for m in re.finditer(rf"\b{n.sym}_{re.escape(cr.pin)}(\d+)(?![\dA-Za-z])", g.step)}
+        others = set(n.sc.coincident.values())      # A3: the rocker's point at A moves otherwise
+        also = "".join(f" = {n.sym}_{{{cr.pin}{d}}}" for d in sorted(said) if f"{cr.pin}{d}" not in others)
+        common = dict(seg=seg(n.pole, a), pin=cr.pin, also=also, arm=arm, unit=units, **v,
                       back=braced(n.mech_label(cr.pin)) + n.mech_label(cr.pivot), pivot=n.mech_label(cr.pivot),
                       arm_l=braced(n.mech_label(cr.pivot)) + n.mech_label(cr.pin))
         items = list(plan.crank_items) + [plan.absolute_items.get(cr.pin)]
@@ -294,7 +302,7 @@ class Replay:
             XP, XQ = n.position(P), n.position(Q)
             cross = ((XQ - XP).conjugate() * (X - XP)).imag
             pw, qw = n.word(p), n.word(q)
-            PL, QL, XL = (n.mech_label(P), n.mech_label(Q), n.mech_label(point))
+            PL, QL, XL = (n.own_label(P), n.own_label(Q), n.own_label(point))
             if abs(cross) <= 1e-6 * max(abs(XQ - XP) * abs(X - XP), 1e-12):
                 rule = say("on line", x=x, pq=seg(pw, qw), px=seg(pw, x), PX=seg(PL, XL), PQ=seg(PL, QL))
             else:
