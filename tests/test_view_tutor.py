@@ -110,6 +110,7 @@ def test_the_page_reads_well_at_every_width(driver, shaper, size):  # noqa: F811
         assert not dull, dull[:10]
         every = " ".join(t["text"] for t in texts)
         assert not re.search(r"\d[eE][+-]?\d", every), re.findall(r"\S*\d[eE][+-]?\d\S*", every)[:5]
+        assert not re.search(r"·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]", every), re.findall(r"\S*·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]\S*", every)[:5]
         assert not re.search(r"(^|[\s(=:;,])-\d", every), re.findall(r"\S*-\d\S*", every)[:5]
         assert driver.execute_script(BROKEN_WORDS) == []
         if size == (1366, 768):
@@ -230,7 +231,212 @@ def test_the_shapers_words_name_the_points_as_the_equation_does():
     from graphplan.report.explorer import explorer_data
     data = explorer_data(study(load(SHAPER)), step=10.0, lang="en")
     for rec in data["records"]:
-        first = rec["steps"][0]["caption"]["en"]
+        first = rec["steps"][1]["caption"]["en"]
         assert first.startswith(("p_{v}a = v_A = v_{A2} =", "πa = a_A = a_{A2} =")), first
         b = next(s["caption"]["en"] for s in rec["steps"] if s["caption"]["en"].startswith("b by similarity"))
         assert "OB : OA_3" in b, b
+
+
+# -- the replay as a lesson: step 0, the marked equation, the mechanism beside it, ω and ε ------------
+
+TUTOR_WALK = r"""
+const out = [];
+const sel = document.getElementById('replay-plan'), rm = document.getElementById('rmech');
+const json = (name) => { const v = rm.getAttribute(name); return v === null ? null : JSON.parse(v); };
+for (let k = 0; k < sel.options.length; k++) {
+  sel.value = String(k);
+  sel.dispatchEvent(new Event('change', {bubbles: true}));
+  document.getElementById('step-first').click();
+  const n = document.querySelectorAll('#step-list li').length, steps = [];
+  for (let s = 0; s < n; s++) {
+    const terms = Array.from(document.querySelectorAll('#step-eq .term')).map((t) =>
+      [t.querySelector('.vec').textContent, parseInt(t.getAttribute('data-marks'), 10), t.querySelector('.dir').textContent.trim(),
+       getComputedStyle(t.querySelector('.vec')).borderBottomStyle, getComputedStyle(t.querySelector('.vec')).borderTopStyle]);
+    const lines = Array.from(document.querySelectorAll('#replay .g-line.hl')).map((l) =>
+      [parseFloat(l.getAttribute('x2')) - parseFloat(l.getAttribute('x1')), -(parseFloat(l.getAttribute('y2')) - parseFloat(l.getAttribute('y1')))]);
+    steps.push({caption: document.getElementById('step-caption').textContent, terms: terms, link: rm.getAttribute('data-link'),
+      xy: json('data-link-xy'), line: json('data-line'), carry: json('data-carry'), sense: json('data-sense'), planLines: lines,
+      pole: !!document.getElementById('replay-pole')});
+    document.getElementById('step-next').click();
+  }
+  out.push(steps);
+}
+return out;
+"""
+
+
+def series_at_least(value: float) -> float:
+    """The smallest 1, 2, 2.5, 4, 5 × 10^k not below value (the draftsman's standard scales)."""
+    k = math.floor(math.log10(value)) - 1
+    while True:
+        for m in (1, 2, 2.5, 4, 5):
+            if m * 10 ** k >= value * (1 - 1e-12):
+                return m * 10 ** k
+        k += 1
+
+
+def cross(a, b) -> float:
+    return a[0] * b[1] - a[1] * b[0]
+
+
+def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
+    """Every plan of the scene's page walked in the browser, checked against `plans --json` and the
+    kinematics sheet's scales (`graphplan.sheets.kinematics.sheet_scales`); the count of plans."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import load
+    from graphplan.sheets.kinematics import sheet_scales
+    page = tmp / (scene.stem + ".html")
+    r = graphplan("view", str(scene), "-o", str(page), "--lang", "en", "--step", "5")
+    assert r.returncode == 0, r.stderr
+    planned = json.loads(graphplan("plans", str(scene), "--json").stdout)
+    sheet = sheet_scales(study(load(scene)), "A1")
+    data = page_data(page)
+    open_page(d, page)
+    walked = d.execute_script(TUTOR_WALK)
+    assert len(walked) == len(data["records"])
+    st = study(load(scene))
+    for rec, steps in zip(data["records"], walked):
+        pos = next(p for p in planned["positions"] if p["index"] == rec["index"]) if rec["index"] is not None else None
+        plan_json = pos[rec["kind"]] if pos else None
+        mu_name = "mu_v" if rec["kind"] == "velocity" else "mu_a"
+        # step 0: the pole and the scale — the sheet's μ, reached from the trial length by the series
+        zero, scale = steps[0], rec["steps"][0]["scale"]
+        assert zero["pole"] and zero["caption"].startswith("Step 0: the pole and the scale")
+        assert scale["mu"] == sheet[mu_name] == rec["mu"]
+        if pos and mu_name in pos:
+            assert pos[mu_name] == scale["mu"]
+        pin = st.mech.crank
+        exact = abs(st.mech.omega1) * pin.length if rec["kind"] == "velocity" else pin.length * math.hypot(
+            st.mech.omega1 ** 2, pin.epsilon)
+        assert scale["value"] == pytest.approx(exact, rel=1e-9)
+        assert series_at_least(exact / scale["trial"]) == pytest.approx(scale["mu"], rel=1e-12)
+        assert scale["drawn"] == pytest.approx(exact / scale["mu"], abs=1e-6)
+        shown = zero["caption"].replace("−", "-")
+        assert f"μ{mu_name[-1]} = {scale['mu']:g} " in shown and f"= {scale['drawn']:.1f} mm" in shown, shown
+        for k, (step, s) in enumerate(zip(rec["steps"], steps)):
+            # the equation, every term barred and marked: two known only in direction, with their notes
+            if step.get("equation"):
+                terms = s["terms"]
+                assert len(terms) == len([t for t in step["equation"]["tokens"] if "t" in t]) >= 3
+                assert all(top == "solid" for *_, top in terms)
+                assert all(m >= 1 for _, m, *_ in terms[1:]) and terms[0][1] in (0, 1)
+                once = [t for t in terms if t[1] == 1]
+                assert len(once) == 2, terms
+                assert all(t[2][:1] in "⊥∥" and t[3] == "solid" for t in once), once
+                assert all(t[3] == "double" for t in terms if t[1] == 2)
+            # the highlighted link is the one the direction line names, the line drawn through the point
+            m = re.match(r"Through \S+ draw a line (perpendicular to (\S+)|parallel to the link (\S+)|parallel to the guide of (\S+)):",
+                         s["caption"])
+            if m:
+                line = s["line"]
+                assert line and s["planLines"], (scene.stem, k, s["caption"])
+                plan_line = s["planLines"][0]
+                assert abs(cross(line, plan_line)) <= 1e-3 * math.hypot(*plan_line), (scene.stem, k)   # the same direction
+                if m.group(2) or m.group(3):
+                    assert s["xy"], (scene.stem, k, s["caption"])
+                    a, b = s["xy"]
+                    u = (b[0] - a[0], b[1] - a[1])
+                    named = m.group(2) or m.group(3)
+                    ends = s["link"].split()
+                    if m.group(2):
+                        assert flat_pair(named) == {flat_point(e) for e in ends}, (named, ends)
+                        assert abs(line[0] * u[0] + line[1] * u[1]) <= 1e-3 * math.hypot(*u)
+                    else:                # along the guide the link carries (at its own angle to the link)
+                        assert ends[0] in st.mech.links[named].joints, (named, ends)
+            # ω and ε at the end: the plan's reading with its sign, the carried vector turning that way
+            if step.get("rate"):
+                rate = step["rate"]
+                got = plan_json[f"{rate['kind']}_{rate['link']}"] if plan_json else None
+                if got is not None:
+                    assert abs(rate["value"]) == pytest.approx(got["value"], rel=1e-9)
+                    assert rate["sense"] == got["sense"]
+                if rate["value"]:
+                    a, b = s["xy"]
+                    assert s["sense"] == (1 if rate["value"] > 0 else -1)
+                    assert math.copysign(1, cross((b[0] - a[0], b[1] - a[1]), s["carry"])) == s["sense"]
+                    word = "counter-clockwise" if rate["value"] > 0 else "clockwise"
+                    assert f" {word}, so " in s["caption"]
+        assert any(st_.get("rate") for st_ in rec["steps"]) == any(
+            k.startswith(("omega_", "epsilon_")) and k.split("_", 1)[1] in st.mech.links
+            and len(st.mech.links[k.split("_", 1)[1]].joints) >= 2 for k in (plan_json or {}))
+    check_clean(d, page.resolve().as_uri())
+    return len(walked)
+
+
+def flat_point(name: str) -> str:
+    """A3 → A: the point on the mechanism where a coincident point is."""
+    return re.sub(r"\d+$", "", name) if re.match(r"^[A-Z]\d+$", name) and not name.startswith(("O", "S")) else name
+
+
+def flat_pair(text: str) -> set[str]:
+    """"BO_2" / "O_{1}A" → {"B", "O2"} / {"O1", "A"}."""
+    names = re.findall(r"[A-Z][a-z]?(?:_\{?\d+\}?|\d*)", text)
+    return {flat_point(re.sub(r"[_{}]", "", n)) for n in names}
+
+
+def generated(kind: str, folder: Path) -> Path:
+    import random_mechanisms as R
+    made = {"RRR": lambda: R.rrr(0.1, 0.4, 0.35, 0.3, 10, 1), "RRP": lambda: R.rrp(0.1, 0.35, 0.03, 20, 12, 1),
+            "RPR": lambda: R.rpr(0.1, 0.3, 0.02, 10, 1), "PRP": lambda: R.prp(0.1, 0.4, 0.35, 0.3, 30, 10, 10),
+            "RPP": lambda: R.rpp(0.1, 60, 0, 10), "RRP moving": lambda: R.rrp_moving(0.1, 0.4, 0.35, 0.3, 0.6, 30, 10, 1),
+            "RPP moving": lambda: R.rpp_moving(0.1, 0.4, 0.35, 0.3, 70, 20, 10)}
+    text, ok = made[kind]()
+    assert ok
+    path = folder / f"generated_{kind.replace(' ', '_')}.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+SLOW = pytest.mark.slow
+
+
+@pytest.mark.parametrize("scene", ["four_bar"] + [pytest.param(s, marks=SLOW) for s in
+                                   ("shaper", "crank_slider", "lab_crank_slider", "slotter")])
+def test_every_plan_of_the_examples_is_a_lesson(driver, scene, tmp_path):  # noqa: F811
+    """Every plan of the example, walked: step 0 states the pole and the sheet's scale (the trial length
+    rounds to it by the standard series; the drawn length is v_A/μ); each group's equation marks every
+    term (two known only in direction, each with its ⊥/∥ note); the mechanism's highlighted link is the
+    one the direction line names and its direction line runs as the plan's; ω and ε at the end equal
+    `plans --json` with their senses, the vector carried to the mechanism turning the link that way."""
+    assert walk_the_lessons(driver, ROOT / "examples" / f"{scene}.toml", tmp_path) >= 2
+
+
+@pytest.mark.parametrize("kind", ["RPR"] + [pytest.param(k, marks=SLOW) for k in
+                                  ("RRR", "RRP", "PRP", "RPP", "RRP moving", "RPP moving")])
+def test_every_plan_of_generated_mechanisms_is_a_lesson(driver, kind, tmp_path):  # noqa: F811
+    """The same walk on generated mechanisms of every group kind (tests/random_mechanisms.py)."""
+    assert walk_the_lessons(driver, generated(kind, tmp_path), tmp_path) >= 2
+
+
+@pytest.mark.parametrize("scene", ["shaper", "four_bar", "slotter"])
+def test_similarity_is_explained_with_its_numbers(scene):
+    """Each point found by similarity from two known points says why the figure is similar (⊥ sides on
+    the velocity plan, one angle on the acceleration plan), how it is turned, and the ratio with its
+    numbers: the plan's segment over the link's (drawing mm), and the new segment it gives — which is
+    where the construction put the point (its distance on the plan, to the 0.1 mm of the words)."""
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import load
+    from graphplan.report.explorer import explorer_data
+    data = explorer_data(study(load(ROOT / "examples" / f"{scene}.toml")), step=10.0, lang="en")
+    checked = 0
+    for rec in data["records"]:
+        at = {re.sub(r"[_{}]", "", name): complex(x, y) for name, x, y, _ in rec["points"]}
+        at["p_v".replace("_", "")] = at["π"] = 0j
+        for step in rec["steps"]:
+            c = step["caption"]["en"]
+            if " by similarity" not in c or "the ratio" not in c:
+                continue
+            assert ("perpendicular to those of" in c and "turned 90°" in c) if rec["kind"] == "velocity" else "turned by" in c
+            m = re.search(r"the ratio (\S+)/(\S+) = ([\d.]+)/([\d.]+) = ([\d.]+); (\S+) = \S+·\S+ = (?:[\d.]+·[\d.]+ = )?([\d.]+) mm", c)
+            assert m, c
+            pq, _, pq_mm, PQ_mm, k, px, px_mm = m.groups()
+            assert float(k) == pytest.approx(float(pq_mm) / float(PQ_mm), abs=0.006 * float(k) + 1e-3)
+            ends = [n for n in at if pq.replace("_", "").replace("{", "").replace("}", "").startswith(n)]
+            p = max(ends, key=len)
+            q = pq.replace("_", "").replace("{", "").replace("}", "")[len(p):]
+            assert abs(at[q] - at[p]) == pytest.approx(float(pq_mm), abs=0.051)
+            flat_px = px.replace("_", "").replace("{", "").replace("}", "")
+            x = flat_px[len(p):]
+            assert abs(at[x] - at[p]) == pytest.approx(float(px_mm), abs=0.06 + 0.006 * float(px_mm)), c
+            checked += 1
+    assert checked >= 3

@@ -29,7 +29,8 @@ def cmd_view(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.precision) and 0 <= args.precision <= 10):
         raise GraphplanError(word("view precision", lang, p=f"{args.precision:g}"))
     plans = sheet_plans(st, args.format, args.precision)
-    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang, plans=plans))
+    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang, plans=plans,
+                                          sheet=args.format if plans is not None else None))
     return 0
 
 

@@ -24,6 +24,8 @@
       replay: "The construction, step by step", back: "◀ back", forward: "forward ▶", first: "first step (Home)",
       last: "last step (End)", backName: "one step back (←)", forwardName: "one step forward (→)",
       step: "step {k} of {n}", plan: "plan to replay", returnTo: "↩ back to φ = {a}°",
+      rmech: "The mechanism at the plan's position, φ = {a}°: the link of the step in red, its direction line dashed",
+      eqKey: "  (═ known in size and direction; ─ in direction only)",
       velocity: "velocity plan", acceleration: "acceleration plan", at: "position {k}",
       legend: "Symbols", check: "Check your own plan",
       checkNote: "Type the lengths you measured on your own plan of this position, mm: the page multiplies them by "
@@ -63,6 +65,8 @@
       replay: "Побудова крок за кроком", back: "◀ назад", forward: "вперед ▶", first: "перший крок (Home)",
       last: "останній крок (End)", backName: "на крок назад (←)", forwardName: "на крок вперед (→)",
       step: "крок {k} з {n}", plan: "план для показу", returnTo: "↩ назад до φ = {a}°",
+      rmech: "Механізм у положенні плану, φ = {a}°: ланка кроку червона, її лінія напрямку штрихова",
+      eqKey: "  (═ відомий за величиною і напрямом; ─ лише за напрямом)",
       velocity: "план швидкостей", acceleration: "план прискорень", at: "положення {k}",
       legend: "Позначення", check: "Перевірте свій план",
       checkNote: "Введіть довжини, зміряні на власному плані цього положення, мм: сторінка помножить їх на масштаб і "
@@ -364,10 +368,13 @@
   Object.values(S.frame).forEach((p) => grow(mechBox, p));
   Object.keys(G.points).forEach((n) => { for (let i = 0; i < N; i += 1) grow(mechBox, at(n, i)); });
   mechSvg.style.aspectRatio = String(r3(Math.min(2.2, Math.max(0.75, (mechBox[2] - mechBox[0] + 30) / (mechBox[3] - mechBox[1] + 30)))));
-  function drawMechanism(i) {
-    clear(mechSvg);
-    const px = mechZ.px(), segs = [], boxes = [];     // boxes: the joints and the ground hatches, kept clear of letters
-    const g = el("g", {}, mechSvg);
+  function drawMechanism(i) { drawMechanismIn(mechSvg, mechZ, i, null); }
+  function drawMechanismIn(svgEl, zoom, i, mark) {
+    // mark (the replay's step): the link of the step highlighted, its direction line through the point,
+    // the plan's segment carried to the point and the sense it turns the link
+    clear(svgEl);
+    const px = zoom.px(), segs = [], boxes = [];     // boxes: the joints and the ground hatches, kept clear of letters
+    const g = el("g", {}, svgEl);
     const seg = (a, b, cls) => { line(g, a, b, cls); segs.push([a, b]); };
     S.guides.forEach((gd) => {
       const u = [Math.cos(gd.angle * Math.PI / 180), Math.sin(gd.angle * Math.PI / 180)];
@@ -433,8 +440,54 @@
       el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(2.5 * px), class: "labpos" }, g);
       labels.push({ at: p, text: label(n) });
     });
-    placeLabels(el("g", { id: "mech-labels" }, mechSvg), labels, segs, px, boxes.slice());
-    mechSvg.setAttribute("data-kept", JSON.stringify(boxes.map((b) => b.map(r3))));
+    if (mark) markMechanism(svgEl, g, i, mark, px, segs);
+    placeLabels(el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl), labels, segs, px, boxes.slice());
+    svgEl.setAttribute("data-kept", JSON.stringify(boxes.map((b) => b.map(r3))));
+  }
+  function guideAngle(point) {
+    const gd = S.guides.find((x) => x.point === point);
+    return gd ? gd.angle * Math.PI / 180 : null;
+  }
+  function markMechanism(svgEl, g, i, mark, px, segs) {
+    svgEl.removeAttribute("data-link");
+    svgEl.removeAttribute("data-line");
+    if (mark.link && mark.link.length === 2 && mark.link[0] !== mark.link[1]) {
+      const a = at(mark.link[0], i), b = at(mark.link[1], i);
+      line(g, a, b, "mark-link");
+      svgEl.setAttribute("data-link", mark.link.join(" "));
+      svgEl.setAttribute("data-link-xy", JSON.stringify([a, b].map((p) => p.map(r3))));
+    }
+    const P = mark.point && (S.frame[mark.point] || G.points[mark.point]) ? at(mark.point, i) : null;
+    if (P) el("circle", { cx: r3(P[0]), cy: r3(-P[1]), r: r3(7 * px), class: "meet" }, g);
+    let u = null;
+    if (P && mark.dir) u = mark.dir;
+    else if (P && mark.line && mark.link) {
+      const a = at(mark.link[0], i), b = at(mark.link[1], i), d = [b[0] - a[0], b[1] - a[1]];
+      u = mark.line === "perp" ? [-d[1], d[0]] : d;
+    } else if (P && mark.line === "guide") {
+      const th = guideAngle(mark.guide);
+      if (th !== null) u = [Math.cos(th), Math.sin(th)];
+    }
+    if (u) {                                // the direction line, through the point, as it is named
+      const n = Math.hypot(u[0], u[1]) || 1, L = 160 * px;
+      const e = [u[0] / n * L, u[1] / n * L];
+      line(g, [P[0] - e[0], P[1] - e[1]], [P[0] + e[0], P[1] + e[1]], "mark-line");
+      svgEl.setAttribute("data-line", JSON.stringify([u[0] / n, u[1] / n].map((v) => Math.round(v * 1e6) / 1e6)));
+    }
+    if (P && mark.carry) {                  // the plan's segment carried to the point: the sense of ω or ε
+      const n = Math.hypot(mark.carry[0], mark.carry[1]) || 1, L = 55 * px;
+      const tip = [P[0] + mark.carry[0] / n * L, P[1] + mark.carry[1] / n * L];
+      arrow(g, P, tip, "carry", px);
+      svgEl.setAttribute("data-carry", JSON.stringify([mark.carry[0] / n, mark.carry[1] / n].map((v) => Math.round(v * 1e6) / 1e6)));
+      const O = at(mark.link[0], i), R = 22 * px, a0 = Math.atan2(P[1] - O[1], P[0] - O[0]), sense = mark.sense || 0;
+      if (sense) {                           // an arc about the link's other end in that sense, with its head
+        const pts = [];
+        for (let k = 0; k <= 12; k++) { const t = a0 - sense * 0.9 + sense * 1.8 * k / 12; pts.push([O[0] + R * Math.cos(t), O[1] + R * Math.sin(t)]); }
+        poly(g, pts, "carry", false);
+        arrow(g, pts[10], pts[12], "carry", px * 0.8);
+        svgEl.setAttribute("data-sense", String(sense));
+      }
+    } else svgEl.removeAttribute("data-carry");
   }
 
   // -- the plans of the current angle -----------------------------------------------------------------------
@@ -686,6 +739,7 @@
   const sel = $("replay-plan"), rsvg = $("replay");
   let current = null, stepNo = 0, returnTo = null;
   const replayZ = Zoomable(rsvg, () => showStep());
+  const rmechSvg = $("rmech"), rmechZ = Zoomable(rmechSvg, () => showStep());
   function planName(r) {
     return W()[r.kind] + ", " + (r.index !== null ? fill(W().at, { k: r.index }) : "φ = " + fx(r.phi, 1) + "°");
   }
@@ -697,6 +751,10 @@
     recordBox(current, box);
     replayZ.k = 1; replayZ.cx = 0.5; replayZ.cy = 0.5;
     replayZ.fit(box, 30);
+    rmechZ.k = 1; rmechZ.cx = 0.5; rmechZ.cy = 0.5;
+    rmechZ.fit(mechBox, 20);
+    setMarkup($("cap-rmech"), fill(W().rmech, { a: fx(current.phi, 2) }));
+    rmechSvg.setAttribute("aria-label", $("cap-rmech").textContent + "; " + W().zoomKeys);
     const ol = $("step-list");
     ol.textContent = "";
     current.steps.forEach((s, n) => {
@@ -704,7 +762,7 @@
       li.setAttribute("data-step", String(n));
       const no = document.createElement("span");
       no.className = "no";
-      no.textContent = (n + 1) + ".";
+      no.textContent = n + ".";                 // step 0: the pole and the scale
       no.setAttribute("aria-hidden", "true");
       li.appendChild(no);
       const b = document.createElement("button");
@@ -721,6 +779,31 @@
     updateReturn();
     showStep();
   }
+  function showEquation(node, eq) {           // the vector equation, each term barred and underlined as known
+    node.textContent = "";
+    const box = document.createElement("span");
+    box.className = "equation";
+    eq.tokens.forEach((t) => {
+      if (t.op) { const o = document.createElement("span"); o.className = "op"; o.textContent = t.op; box.appendChild(o); return; }
+      const term = document.createElement("span");
+      term.className = "term m" + t.m;
+      term.setAttribute("data-marks", String(t.m));
+      const v = document.createElement("span");
+      v.className = "vec";
+      setMarkup(v, t.t);
+      const note = document.createElement("span");
+      note.className = "dir";
+      setMarkup(note, tr(t.note) || "\u00a0");
+      term.appendChild(v);
+      term.appendChild(note);
+      box.appendChild(term);
+    });
+    node.appendChild(box);
+    const key = document.createElement("span");
+    key.className = "eq-key";
+    setMarkup(key, W().eqKey);
+    node.appendChild(key);
+  }
   function updateReturn() {
     const b = $("replay-return");
     b.hidden = returnTo === null;
@@ -733,14 +816,20 @@
     drawItems(el("g", {}, rsvg), current, stepNo, stepNo, px, segs);
     const s = current.steps[stepNo];
     if (s.meet) el("circle", { cx: r3(s.meet[1]), cy: r3(-s.meet[2]), r: r3(7 * px), class: "meet" }, rsvg);
+    if (s.scale) el("circle", { cx: 0, cy: 0, r: r3(7 * px), class: "meet", id: "replay-pole" }, rsvg);     // step 0: the pole
+    if (s.rate) arrow(rsvg, s.rate.from, s.rate.to, "g-vec hl rate", px);           // the segment ω (ε) is read from
+    if (s.equation && !s.items.length && !s.meet) {                                  // the equation's known points
+      current.points.forEach((q) => { if (q[3] < stepNo) el("circle", { cx: r3(q[1]), cy: r3(-q[2]), r: r3(5 * px), class: "meet known" }, rsvg); });
+    }
+    drawMechanismIn(rmechSvg, rmechZ, nearest(current.phi), s.mech || null);
     const labels = [];
     current.points.forEach((q) => { if (q[3] <= stepNo) labels.push({ at: [q[1], q[2]], text: q[0], cls: q[3] === stepNo ? "new" : "" }); });
     const lg = el("g", { id: "replay-labels" }, rsvg);
     placeLabels(lg, labels, segs, px);
     setMarkup($("step-caption"), tr(s.caption));
-    setMarkup($("step-eq"), tr(s.eq));
+    if (s.equation) showEquation($("step-eq"), s.equation); else setMarkup($("step-eq"), tr(s.eq));
     const c = $("step-count");
-    c.textContent = fill(W().step, { k: stepNo + 1, n: current.steps.length });
+    c.textContent = fill(W().step, { k: stepNo, n: current.steps.length - 1 });
     c.setAttribute("data-step", String(stepNo));
     document.querySelectorAll("#step-list li").forEach((li, n) => {
       li.className = n < stepNo ? "done" : n === stepNo ? "current" : "todo";
@@ -1010,7 +1099,7 @@
   function fitAll() {
     mechZ.fit(mechBox, 30);
     ["velocity", "acceleration"].forEach((k) => planZ[k].fit($("per-angle").checked ? angleBox(k, index) : turnBox[k], 28));
-    if (current) { const box = [0, 0, 0, 0]; recordBox(current, box); replayZ.fit(box, 30); }
+    if (current) { const box = [0, 0, 0, 0]; recordBox(current, box); replayZ.fit(box, 30); rmechZ.fit(mechBox, 20); }
   }
   words();
   drawDiagrams();
