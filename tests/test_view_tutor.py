@@ -440,3 +440,61 @@ def test_similarity_is_explained_with_its_numbers(scene):
             assert abs(at[x] - at[p]) == pytest.approx(float(px_mm), abs=0.06 + 0.006 * float(px_mm)), c
             checked += 1
     assert checked >= 3
+
+
+# -- the cam in the explorer ------------------------------------------------------------------------------
+
+GENERATED_CAM = """title = "Generated cam"
+[cam]
+follower = "translating"
+stroke = 0.03
+roller_radius = 0
+phases_deg = { rise = 150, dwell_far = 20, return = 110, dwell_near = 80 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 28, return = 35 }
+omega = 12
+direction = "cw"
+divisions = 6
+"""
+
+
+@pytest.mark.parametrize("scene", ["cam_translating", "cam_rocking", "generated"])
+def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
+    """`graphplan view` on a cam scene (the two examples, and a generated knife-edge cam with the best
+    offset): a page with 0 console errors; at every division of the construction the pressure angle the
+    page shows equals `graphplan cam --json`'s exact one (and the construction's beside it), the angle
+    drawn at the contact between the normal and the follower's velocity is that angle, the cursor of the
+    diagrams and the point on the phase diagram move with the turn; the profile by inversion is replayed
+    to its end, one point of the centre profile a division."""
+    if scene == "generated":
+        path = tmp_path / "generated_cam.toml"
+        path.write_text(GENERATED_CAM, encoding="utf-8")
+    else:
+        path = ROOT / "examples" / f"{scene}.toml"
+    page = tmp_path / f"{scene}.html"
+    r = graphplan("view", str(path), "-o", str(page), "--lang", "en")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(graphplan("cam", str(path), "--json").stdout)
+    open_page(driver, page)
+    buttons = driver.find_elements("css selector", "#divisions button")
+    assert len(buttons) == len(doc["positions"])
+    x = []
+    for k, (button, pos) in enumerate(zip(buttons, doc["positions"])):
+        button.click()
+        shown = driver.find_element("id", "theta-value")
+        exact = pos["exact"]["pressure_angle_deg"]
+        assert float(shown.get_attribute("data-value")) == pytest.approx(exact, abs=1e-6)
+        assert shown.text.replace("−", "-") == f"ϑ = {exact:.2f}°"
+        assert f"ϑ = {pos['graphical']['pressure_angle_deg']:.1f}° (division {k})" in driver.find_element("id", "theta-graphical").text.replace("−", "-")
+        drawn = float(driver.find_element("id", "mech").get_attribute("data-angle"))
+        assert drawn == pytest.approx(abs(exact), abs=0.05 if scene != "generated" else 1.0)     # a knife edge: its normal from the drawn profile
+        cell = driver.find_element("css selector", f'#values tr[data-division="{k}"] td[data-value]')
+        assert float(cell.get_attribute("data-value")) == pytest.approx(exact, abs=1e-9)
+        x.append((driver.find_element("id", "diagram-cursor").get_attribute("x1"),
+                  driver.find_element("id", "phase-point").get_attribute("cx")))
+    assert len(set(x)) >= len(doc["positions"]) - 2       # the dwells' ends coincide on the phase diagram only
+    driver.find_element("id", "step-last").click()
+    steps = driver.find_elements("css selector", "#step-list li")
+    assert len(steps) == len(doc["positions"]) + 3 and "current" in steps[-1].get_attribute("class")
+    assert driver.find_element("id", "step-caption").text
+    check_clean(driver, page.resolve().as_uri())
