@@ -680,14 +680,25 @@ def element_shot(d, element: str, path: Path) -> None:
     path.write_bytes(base64.b64decode(png["data"]))
 
 
+def keep_picture(shot: Path, name: str) -> None:
+    """A test's picture kept for the docs when $GRAPHPLAN_SHOTS is set (64 colours keep it small)."""
+    if os.environ.get("GRAPHPLAN_SHOTS"):
+        folder = Path(os.environ["GRAPHPLAN_SHOTS"])
+        folder.mkdir(parents=True, exist_ok=True)
+        from PIL import Image              # matplotlib's
+        Image.open(shot).convert("RGB").quantize(64).save(folder / f"{name}.png", optimize=True)
+
+
 def test_replay_pictures_for_the_docs(driver, tmp_path):
-    """The four-bar's acceleration plan of position 2 replayed in the browser at 1100×800, the replay
-    panel photographed at the steps docs/view.md shows (GRAPHPLAN_SHOTS=docs/view keeps them): the
-    known vector, the first and the second direction line, the intersection, the found vectors. At each
-    of those steps the caption says the rule and the point c is lettered only from the intersection on."""
+    """The four-bar's acceleration plan replayed from a blank sheet in the browser at 1366×900, the replay
+    section photographed at the steps docs/view.md's walk-through shows (GRAPHPLAN_SHOTS=docs/view keeps
+    them): step 0 the pole and the scale, the group's marked equation, the known vector, the first and the
+    second direction line (the mechanism beside with the link and its line), the intersection, the found
+    vectors, a point by similarity, ε at the end. At each the caption says the rule and the point b is
+    lettered only from the intersection on."""
     path = tmp_path / "four_bar.html"
     assert graphplan("view", str(ROOT / "examples" / "four_bar.toml"), "-o", str(path), "--lang", "en").returncode == 0
-    driver.set_window_size(1100, 800)
+    driver.set_window_size(1366, 900)
     open_page(driver, path)
     records = page_data(path)["records"]
     k = next(i for i, r in enumerate(records) if r["kind"] == "acceleration")
@@ -698,7 +709,11 @@ def test_replay_pictures_for_the_docs(driver, tmp_path):
     found_at = {n: s for n, _, _, s in records[k]["points"]}
     meet = next(i for i, s in enumerate(steps) if s.get("meet"))
     lines = [i for i, s in enumerate(steps) if s.get("line") and i < meet][-2:]
-    wanted = {0: "known", lines[0]: "line_1", lines[1]: "line_2", meet: "meet", meet + 1: "found"}
+    equation = next(i for i, s in enumerate(steps) if s.get("equation"))
+    similar = next(i for i, s in enumerate(steps) if " by similarity" in s["caption"]["en"])
+    rate = next(i for i, s in enumerate(steps) if s.get("rate"))
+    wanted = {0: "scale", 1: "known", equation: "equation", lines[0]: "line_1", lines[1]: "line_2", meet: "meet",
+              meet + 1: "found", similar: "similar", rate: "epsilon"}
     seen = {}
     for i in range(len(steps)):
         if i in wanted:
@@ -710,11 +725,15 @@ def test_replay_pictures_for_the_docs(driver, tmp_path):
             shot = tmp_path / f"replay_{i:02d}_{wanted[i]}.png"
             element_shot(driver, "replay-section", shot)
             assert shot.stat().st_size > 5_000
-            if os.environ.get("GRAPHPLAN_SHOTS"):
-                folder = Path(os.environ["GRAPHPLAN_SHOTS"])
-                folder.mkdir(parents=True, exist_ok=True)
-                from PIL import Image              # matplotlib's; 64 colours keep a docs picture small
-                Image.open(shot).convert("RGB").quantize(64).save(folder / f"replay_{wanted[i]}.png", optimize=True)
+            keep_picture(shot, f"replay_{wanted[i]}")
         driver.find_element("id", "step-next").click()
+    assert seen["scale"].startswith("Step 0: the pole and the scale")
+    assert "Underlined twice" in seen["equation"]
     assert "perpendicular" in seen["line_1"] and "perpendicular" in seen["line_2"]
     assert "cross" in seen["meet"] and "found" in seen["found"].lower()
+    assert "the ratio" in seen["similar"] and "Carried to the point" in seen["epsilon"]
+    driver.set_window_size(1366, 768)
+    driver.execute_script("window.scrollTo(0, 0)")
+    shot = tmp_path / "window.png"
+    driver.save_screenshot(str(shot))
+    keep_picture(shot, "window_1366")

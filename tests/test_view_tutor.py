@@ -30,6 +30,14 @@ def shaper(tmp_path_factory) -> Path:
     return path
 
 
+@pytest.fixture(scope="module")
+def cam_page(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("tutor") / "cam.html"
+    r = graphplan("view", str(ROOT / "examples" / "cam_translating.toml"), "-o", str(path), "--lang", "uk")
+    assert r.returncode == 0, r.stderr
+    return path
+
+
 def viewport(d, width: int, height: int) -> None:
     d.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
                       {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": width < 600})
@@ -89,6 +97,17 @@ def rect(d, element_id: str) -> dict:
 
 @pytest.mark.parametrize("size", SIZES)
 def test_the_page_reads_well_at_every_width(driver, shaper, size):  # noqa: F811
+    reads_well(driver, shaper, size, ("mech", "vplan", "aplan", "replay", "rmech", "diagrams"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("size", SIZES)
+def test_the_cam_page_reads_well_at_every_width(driver, cam_page, size):  # noqa: F811
+    """The cam's page (in Ukrainian) by the same measures."""
+    reads_well(driver, cam_page, size, ("mech", "phase", "diagrams", "replay"))
+
+
+def reads_well(driver, page: Path, size: tuple[int, int], drawings: tuple[str, ...]) -> None:  # noqa: F811
     """At 390×844, 1366×768, 1920×1080: no sideways scroll; every letter of the drawings and the
     diagrams 11–16 px (subscripts included); every text at a contrast ≥ 4.5:1 on what it stands on;
     no number in e-notation and no hyphen for a minus anywhere; no word or number broken across two
@@ -96,14 +115,15 @@ def test_the_page_reads_well_at_every_width(driver, shaper, size):  # noqa: F811
     phone ◀ and ▶ stand on one row with the slider."""
     viewport(driver, *size)
     try:
-        open_page(driver, shaper)
-        driver.find_element("css selector", '#lab-positions button[data-key="1"]').click()   # readings shown
-        driver.execute_script("document.getElementById('check-reveal').click()")
+        open_page(driver, page)
+        if "vplan" in drawings:
+            driver.find_element("css selector", '#lab-positions button[data-key="1"]').click()   # readings shown
+            driver.execute_script("document.getElementById('check-reveal').click()")
         widths = driver.execute_script("return [document.documentElement.scrollWidth, document.documentElement.clientWidth]")
         assert widths[0] <= widths[1], widths
         texts = driver.execute_script(TEXTS)
         drawn = [t for t in texts if t["svg"]]
-        assert {t["where"] for t in drawn} >= {"mech", "vplan", "aplan", "replay", "diagrams"}, {t["where"] for t in drawn}
+        assert {t["where"] for t in drawn} >= set(drawings), {t["where"] for t in drawn}
         small = [(t["where"], t["text"], round(t["px"], 1)) for t in drawn if not 11 - 0.05 <= t["px"] <= 16 + 0.05]
         assert not small, small[:10]
         dull = [(t["where"], t["text"], round(t["contrast"], 2)) for t in texts if t["contrast"] < 4.5]
@@ -114,13 +134,16 @@ def test_the_page_reads_well_at_every_width(driver, shaper, size):  # noqa: F811
         assert not re.search(r"(^|[\s(=:;,])-\d", every), re.findall(r"\S*-\d\S*", every)[:5]
         assert driver.execute_script(BROKEN_WORDS) == []
         if size == (1366, 768):
-            for element in ("phi", "mech", "vplan", "aplan"):
+            for element in ("phi",) + drawings[:3]:
                 r = rect(driver, element)
                 assert r["top"] >= 0 and r["bottom"] <= size[1] + 0.5, (element, r)
         if size[0] < 600:
             prev, nxt, slider = rect(driver, "prev"), rect(driver, "next"), rect(driver, "phi")
             assert abs(prev["top"] - nxt["top"]) < 1 and prev["right"] <= slider["left"] < slider["right"] <= nxt["left"]
-        check_clean(driver, shaper.resolve().as_uri())
+        for element in drawings:          # every drawing reachable by Tab, with a name
+            assert driver.execute_script("const e = document.getElementById(arguments[0]);"
+                                         "return e.tabIndex === 0 && !!e.getAttribute('aria-label')", element), element
+        check_clean(driver, page.resolve().as_uri())
     finally:
         driver.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
 
@@ -284,12 +307,10 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
     kinematics sheet's scales (`graphplan.sheets.kinematics.sheet_scales`); the count of plans."""
     from graphplan.exact.positions import study
     from graphplan.model.scene import load
-    from graphplan.sheets.kinematics import sheet_scales
     page = tmp / (scene.stem + ".html")
-    r = graphplan("view", str(scene), "-o", str(page), "--lang", "en", "--step", "5")
+    r = graphplan("view", str(scene), "-o", str(page), "--lang", "en", "--step", "10")
     assert r.returncode == 0, r.stderr
-    planned = json.loads(graphplan("plans", str(scene), "--json").stdout)
-    sheet = sheet_scales(study(load(scene)), "A1")
+    planned = json.loads(graphplan("plans", str(scene), "--json").stdout)     # at the A1 sheet's scales
     data = page_data(page)
     open_page(d, page)
     walked = d.execute_script(TUTOR_WALK)
@@ -302,9 +323,8 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
         # step 0: the pole and the scale — the sheet's μ, reached from the trial length by the series
         zero, scale = steps[0], rec["steps"][0]["scale"]
         assert zero["pole"] and zero["caption"].startswith("Step 0: the pole and the scale")
-        assert scale["mu"] == sheet[mu_name] == rec["mu"]
-        if pos and mu_name in pos:
-            assert pos[mu_name] == scale["mu"]
+        sheet = next(p[mu_name] for p in planned["positions"] if mu_name in p)
+        assert scale["mu"] == sheet == rec["mu"]
         pin = st.mech.crank
         exact = abs(st.mech.omega1) * pin.length if rec["kind"] == "velocity" else pin.length * math.hypot(
             st.mech.omega1 ** 2, pin.epsilon)
@@ -393,7 +413,8 @@ SLOW = pytest.mark.slow
 @pytest.mark.parametrize("scene", ["four_bar"] + [pytest.param(s, marks=SLOW) for s in
                                    ("shaper", "crank_slider", "lab_crank_slider", "slotter")])
 def test_every_plan_of_the_examples_is_a_lesson(driver, scene, tmp_path):  # noqa: F811
-    """Every plan of the example, walked: step 0 states the pole and the sheet's scale (the trial length
+    """Every plan of the example, walked: step 0 states the pole and the sheet's scale (`plans --json`
+    draws at the A1 sheet's scales, `sheets.kinematics.sheet_scales`; the trial length
     rounds to it by the standard series; the drawn length is v_A/μ); each group's equation marks every
     term (two known only in direction, each with its ⊥/∥ note); the mechanism's highlighted link is the
     one the direction line names and its direction line runs as the plan's; ω and ε at the end equal
@@ -458,7 +479,7 @@ divisions = 6
 """
 
 
-@pytest.mark.parametrize("scene", ["cam_translating", "cam_rocking", "generated"])
+@pytest.mark.parametrize("scene", ["cam_translating"] + [pytest.param(s, marks=pytest.mark.slow) for s in ("cam_rocking", "generated")])
 def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
     """`graphplan view` on a cam scene (the two examples, and a generated knife-edge cam with the best
     offset): a page with 0 console errors; at every division of the construction the pressure angle the
@@ -472,27 +493,40 @@ def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
     else:
         path = ROOT / "examples" / f"{scene}.toml"
     page = tmp_path / f"{scene}.html"
-    r = graphplan("view", str(path), "-o", str(page), "--lang", "en")
+    r = graphplan("view", str(path), "-o", str(page), "--lang", "en", "--step", "2")
     assert r.returncode == 0, r.stderr
     doc = json.loads(graphplan("cam", str(path), "--json").stdout)
     open_page(driver, page)
-    buttons = driver.find_elements("css selector", "#divisions button")
-    assert len(buttons) == len(doc["positions"])
-    x = []
-    for k, (button, pos) in enumerate(zip(buttons, doc["positions"])):
-        button.click()
-        shown = driver.find_element("id", "theta-value")
+    shown = driver.execute_script("""
+      return Array.from(document.querySelectorAll('#divisions button')).map((b, k) => {
+        b.click();
+        const t = document.getElementById('theta-value'), m = document.getElementById('mech');
+        const cell = document.querySelector('#values tr[data-division="' + k + '"] td[data-value]');
+        return [t.getAttribute('data-value'), t.textContent, document.getElementById('theta-graphical').textContent,
+                m.getAttribute('data-angle'), cell.getAttribute('data-value'),
+                document.getElementById('diagram-cursor').getAttribute('x1'), document.getElementById('phase-point').getAttribute('cx')];
+      });""")
+    assert len(shown) == len(doc["positions"])
+    for k, (got, pos) in enumerate(zip(shown, doc["positions"])):
+        value, text, graphical, drawn, cell, _, _ = got
         exact = pos["exact"]["pressure_angle_deg"]
-        assert float(shown.get_attribute("data-value")) == pytest.approx(exact, abs=1e-6)
-        assert shown.text.replace("−", "-") == f"ϑ = {exact:.2f}°"
-        assert f"ϑ = {pos['graphical']['pressure_angle_deg']:.1f}° (division {k})" in driver.find_element("id", "theta-graphical").text.replace("−", "-")
-        drawn = float(driver.find_element("id", "mech").get_attribute("data-angle"))
-        assert drawn == pytest.approx(abs(exact), abs=0.05 if scene != "generated" else 1.0)     # a knife edge: its normal from the drawn profile
-        cell = driver.find_element("css selector", f'#values tr[data-division="{k}"] td[data-value]')
-        assert float(cell.get_attribute("data-value")) == pytest.approx(exact, abs=1e-9)
-        x.append((driver.find_element("id", "diagram-cursor").get_attribute("x1"),
-                  driver.find_element("id", "phase-point").get_attribute("cx")))
-    assert len(set(x)) >= len(doc["positions"]) - 2       # the dwells' ends coincide on the phase diagram only
+        assert float(value) == pytest.approx(exact, abs=1e-6)
+        assert text.replace("−", "-") == f"ϑ = {exact:.2f}°"
+        assert f"ϑ = {pos['graphical']['pressure_angle_deg']:.1f}° (division {k})" in graphical.replace("−", "-")
+        assert float(drawn) == pytest.approx(abs(exact), abs=0.05 if scene != "generated" else 1.0)   # a knife edge: its normal from the drawn profile
+        assert float(cell) == pytest.approx(exact, abs=1e-9)
+    assert len({tuple(got[5:]) for got in shown}) >= len(doc["positions"]) - 2   # the dwells' ends coincide on the phase diagram only
+    buttons = driver.find_elements("css selector", "#divisions button")
+    if scene == "cam_translating":         # the pictures of docs/view.md (kept with GRAPHPLAN_SHOTS=docs/view)
+        from test_view import element_shot, keep_picture
+        buttons[3].click()
+        element_shot(driver, "views", tmp_path / "cam.png")
+        keep_picture(tmp_path / "cam.png", "cam_views")
+        driver.find_element("id", "step-first").click()
+        for _ in range(4):
+            driver.find_element("id", "step-next").click()
+        element_shot(driver, "replay-section", tmp_path / "inversion.png")
+        keep_picture(tmp_path / "inversion.png", "cam_inversion")
     driver.find_element("id", "step-last").click()
     steps = driver.find_elements("css selector", "#step-list li")
     assert len(steps) == len(doc["positions"]) + 3 and "current" in steps[-1].get_attribute("class")
