@@ -532,3 +532,25 @@ def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
     assert len(steps) == len(doc["positions"]) + 3 and "current" in steps[-1].get_attribute("class")
     assert driver.find_element("id", "step-caption").text
     check_clean(driver, page.resolve().as_uri())
+
+
+def test_the_cam_page_is_one_offline_deterministic_file(tmp_path):
+    """The cam's page, like the mechanism's: the same bytes twice, no URI but the namespaces, no src or
+    href, a Content-Security-Policy that forbids every load, a word for a browser without JavaScript; a
+    bad --step is one line on stderr and no file."""
+    from test_view import NAMESPACES
+    scene = ROOT / "examples" / "cam_rocking.toml"
+    pages = []
+    for k in (1, 2):
+        out = tmp_path / f"cam{k}.html"
+        r = graphplan("view", str(scene), "-o", str(out), "--step", "3")
+        assert r.returncode == 0, r.stderr
+        pages.append(out.read_bytes())
+    assert pages[0] == pages[1] and 30_000 < len(pages[0]) < 1_000_000
+    text = pages[0].decode("utf-8")
+    assert set(re.findall(r"[a-zA-Z][a-zA-Z0-9+.-]*://[^\s\"'<>)]*", text)) <= NAMESPACES
+    assert not re.search(r"\b(src|href)\s*=", text, re.I) and "default-src 'none'" in text
+    assert "<noscript>" in text and "JavaScript" in text
+    r = graphplan("view", str(scene), "-o", str(tmp_path / "bad.html"), "--step", "0")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "Traceback" not in r.stderr
+    assert not (tmp_path / "bad.html").exists()
