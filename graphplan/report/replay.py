@@ -311,6 +311,8 @@ class Replay:
         from graphplan.graphic.scales import at_least
         n, plan, cr = self.n, self.plan, self.n.mech.crank
         e = plan.entries.get(cr.pin)
+        if e is None or not float(e.analytic) > 0:
+            return                  # no crank vector to scale by (nothing the plans draw does this)
         value, mu = float(e.analytic), plan.mu
         drawn = value / mu
         trial = math.ceil(drawn - 1e-9)
