@@ -291,7 +291,8 @@ def set_slider(d, phi: float) -> None:
 
 
 def cell(d, q: str, col: str) -> str:
-    return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text
+    """A cell's text with the page's minus sign (U+2212) written as the terminal writes it."""
+    return d.find_element("css selector", f'[data-q="{q}"] td.{col}').text.replace("−", "-")
 
 
 def analyze_shown(phis: list[float], scene: Path = SHAPER, lang: str = "uk") -> dict[float, dict[str, str]]:
@@ -353,7 +354,7 @@ def test_slider_values_equal_analyze(driver, pages, shots):
             q = names.get(column[:2], column[:2]) + column[2:]
             found = driver.find_elements("css selector", f'[data-q="{q}"] td.exact')
             if found:
-                assert found[0].text == text, (phi, column)
+                assert found[0].text.replace("−", "-") == text, (phi, column)
                 compared += 1
         assert compared >= 14
         assert cell(driver, "v_C", "graphical") == ""      # no plan was drawn at this angle
@@ -371,13 +372,13 @@ def test_lab_position_shows_the_plan_reading(driver, pages, shots):
     got = driver.find_element("css selector", '[data-q="v_C"] td.graphical')
     assert float(got.get_attribute("data-value")) == pytest.approx(v["value"], rel=1e-6)
     assert f"({v['mm']:.1f} mm)" in got.text
-    assert cell(driver, "v_C", "error") == f"{v['error_pct']:.2f}".replace("-", "−")
+    assert cell(driver, "v_C", "error") == f"{v['error_pct']:.2f}"
     rel = driver.find_element("css selector", '[data-q="vrel_A"] td.graphical')      # the block in the slot
     exact = float(driver.find_element("css selector", '[data-q="vrel_A"] td.exact').get_attribute("data-value"))
     assert float(rel.get_attribute("data-value")) == pytest.approx(
         math.copysign(pos["velocity"]["A3A2"]["value"], exact), rel=1e-6)
     k = pos["acceleration"]["k_A3A2"]
-    assert cell(driver, "k_A", "error") == f"{k['error_pct']:.2f}".replace("-", "−")
+    assert cell(driver, "k_A", "error") == f"{k['error_pct']:.2f}"
     # the graphical plans are drawn over the exact ones
     assert driver.execute_script("return document.querySelectorAll('#vplan .g-vec').length") > 5
     assert driver.execute_script("return document.querySelectorAll('#aplan .g-vec').length") > 5
@@ -593,7 +594,8 @@ def test_choosing_a_plan_moves_the_mechanism(driver, pages):
     box = driver.execute_script("const r = document.getElementById('diagrams').getBoundingClientRect();"
                                 "const m = document.getElementById('diagrams').getScreenCTM();"
                                 "return [r.width, r.height, m.a, m.e - r.left];")
-    x = box[3] + box[2] * 120.0      # 180° of the turn: x = 120 in the diagrams' units (240 for 360°)
+    x0, w = (float(svg.get_attribute(a)) for a in ("data-x0", "data-width"))     # the axis of the turn, 0…360°
+    x = box[3] + box[2] * (x0 + w / 2)      # 180° of the turn
     ActionChains(driver).move_to_element_with_offset(svg, x - box[0] / 2, 0).click().perform()
     assert float(driver.find_element("id", "turn-value").get_attribute("data-turn")) == pytest.approx(180.0, abs=1.01)
     check_clean(driver, pages["en"].resolve().as_uri())
@@ -678,14 +680,25 @@ def element_shot(d, element: str, path: Path) -> None:
     path.write_bytes(base64.b64decode(png["data"]))
 
 
+def keep_picture(shot: Path, name: str) -> None:
+    """A test's picture kept for the docs when $GRAPHPLAN_SHOTS is set (64 colours keep it small)."""
+    if os.environ.get("GRAPHPLAN_SHOTS"):
+        folder = Path(os.environ["GRAPHPLAN_SHOTS"])
+        folder.mkdir(parents=True, exist_ok=True)
+        from PIL import Image              # matplotlib's
+        Image.open(shot).convert("RGB").quantize(64).save(folder / f"{name}.png", optimize=True)
+
+
 def test_replay_pictures_for_the_docs(driver, tmp_path):
-    """The four-bar's acceleration plan of position 2 replayed in the browser at 1100×800, the replay
-    panel photographed at the steps docs/view.md shows (GRAPHPLAN_SHOTS=docs/view keeps them): the
-    known vector, the first and the second direction line, the intersection, the found vectors. At each
-    of those steps the caption says the rule and the point c is lettered only from the intersection on."""
+    """The four-bar's acceleration plan replayed from a blank sheet in the browser at 1366×900, the replay
+    section photographed at the steps docs/view.md's walk-through shows (GRAPHPLAN_SHOTS=docs/view keeps
+    them): step 0 the pole and the scale, the group's marked equation, the known vector, the first and the
+    second direction line (the mechanism beside with the link and its line), the intersection, the found
+    vectors, a point by similarity, ε at the end. At each the caption says the rule and the point b is
+    lettered only from the intersection on."""
     path = tmp_path / "four_bar.html"
     assert graphplan("view", str(ROOT / "examples" / "four_bar.toml"), "-o", str(path), "--lang", "en").returncode == 0
-    driver.set_window_size(1100, 800)
+    driver.set_window_size(1366, 900)
     open_page(driver, path)
     records = page_data(path)["records"]
     k = next(i for i, r in enumerate(records) if r["kind"] == "acceleration")
@@ -696,7 +709,11 @@ def test_replay_pictures_for_the_docs(driver, tmp_path):
     found_at = {n: s for n, _, _, s in records[k]["points"]}
     meet = next(i for i, s in enumerate(steps) if s.get("meet"))
     lines = [i for i, s in enumerate(steps) if s.get("line") and i < meet][-2:]
-    wanted = {0: "known", lines[0]: "line_1", lines[1]: "line_2", meet: "meet", meet + 1: "found"}
+    equation = next(i for i, s in enumerate(steps) if s.get("equation"))
+    similar = next(i for i, s in enumerate(steps) if " by similarity" in s["caption"]["en"])
+    rate = next(i for i, s in enumerate(steps) if s.get("rate"))
+    wanted = {0: "scale", 1: "known", equation: "equation", lines[0]: "line_1", lines[1]: "line_2", meet: "meet",
+              meet + 1: "found", similar: "similar", rate: "epsilon"}
     seen = {}
     for i in range(len(steps)):
         if i in wanted:
@@ -708,11 +725,15 @@ def test_replay_pictures_for_the_docs(driver, tmp_path):
             shot = tmp_path / f"replay_{i:02d}_{wanted[i]}.png"
             element_shot(driver, "replay-section", shot)
             assert shot.stat().st_size > 5_000
-            if os.environ.get("GRAPHPLAN_SHOTS"):
-                folder = Path(os.environ["GRAPHPLAN_SHOTS"])
-                folder.mkdir(parents=True, exist_ok=True)
-                from PIL import Image              # matplotlib's; 64 colours keep a docs picture small
-                Image.open(shot).convert("RGB").quantize(64).save(folder / f"replay_{wanted[i]}.png", optimize=True)
+            keep_picture(shot, f"replay_{wanted[i]}")
         driver.find_element("id", "step-next").click()
+    assert seen["scale"].startswith("Step 0: the pole and the scale")
+    assert "Underlined twice" in seen["equation"]
     assert "perpendicular" in seen["line_1"] and "perpendicular" in seen["line_2"]
     assert "cross" in seen["meet"] and "found" in seen["found"].lower()
+    assert "the ratio" in seen["similar"] and "Carried to the point" in seen["epsilon"]
+    driver.set_window_size(1366, 768)
+    driver.execute_script("window.scrollTo(0, 0)")
+    shot = tmp_path / "window.png"
+    driver.save_screenshot(str(shot))
+    keep_picture(shot, "window_1366")

@@ -22,6 +22,10 @@ def cmd_view(args: argparse.Namespace) -> int:
         raise GraphplanError(word("view html", lang, name=out))
     if out.exists() and out.is_dir():
         raise GraphplanError(word("view folder", lang, name=out))
+    from graphplan.cli.sheet import _cam_scene
+    cam = _cam_scene(args.scene)
+    if cam is not None:
+        return view_cam(cam, args, out)
     st = load_study(args.scene)
     lang = lang_of(args, st)
     if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
@@ -29,7 +33,31 @@ def cmd_view(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.precision) and 0 <= args.precision <= 10):
         raise GraphplanError(word("view precision", lang, p=f"{args.precision:g}"))
     plans = sheet_plans(st, args.format, args.precision)
-    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang, plans=plans))
+    write_atomic(out, explorer_html(st, precision=args.precision, step=args.step, lang=lang, plans=plans,
+                                          sheet=args.format if plans is not None else None))
+    return 0
+
+
+def view_cam(cam, args: argparse.Namespace, out: Path) -> int:
+    """A cam scene's page: the cam turning, the pressure angle live, the phase diagram, the diagrams and
+    the profile by inversion (report.camview), the construction of `graphplan cam` (its precision)."""
+    import math
+
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.report.camview import cam_html
+    from graphplan.util.words import pick
+    lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
+    if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
+        raise GraphplanError(f"--step must be from 0.05 to 30 degrees, got {args.step:g}")
+    if not (math.isfinite(args.precision) and 0 <= args.precision <= 10):
+        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+    try:
+        sol = solve(cam)
+        g = construct(sol, None, args.precision)
+    except GraphplanError as exc:
+        raise GraphplanError(str(exc), exc.where or args.scene) from None
+    write_atomic(out, cam_html(sol, g, step=args.step, lang=lang, scene=args.scene))
     return 0
 
 

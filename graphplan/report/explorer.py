@@ -229,10 +229,12 @@ def check_data(plans: Plans) -> dict[str, list[list[Any]]]:
         for plan in (p.velocity, p.acceleration):
             if plan is None:
                 continue
+            floor = ROUND_OFF * max([abs(float(e.analytic)) for e in plan.entries.values()] + [0.0])
             for e in ordered(plan):
                 if e.mm is None or e.kind in ("normal", "coriolis"):
                     continue
-                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu, float(e.analytic), float(e.mm),
+                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu,
+                             0.0 if abs(float(e.analytic)) <= floor else float(e.analytic), float(e.mm),
                              None if e.error_pct is None else float(e.error_pct)])
         out[str(p.key)] = rows
     return out
@@ -272,9 +274,10 @@ def diagrams_data(st: Study, precision: float, phi: np.ndarray) -> dict[str, Any
 # -- the page -------------------------------------------------------------------------------------
 
 def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: str = "uk",
-                  plans: Plans | None = None) -> dict[str, Any]:
+                  plans: Plans | None = None, sheet: str | None = None) -> dict[str, Any]:
     """Everything the page shows, computed here (SI units; drawing mm where said), the words in
-    both languages (``lang`` is the one the page opens in)."""
+    both languages (``lang`` is the one the page opens in); ``sheet``: the format whose kinematics
+    sheet chose the plans' scales (step 0 of each replay says so), None for the plans' own."""
     if lang not in LANGS:
         raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
     plans = plans or build_plans(st, precision=precision)
@@ -285,6 +288,8 @@ def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
     meta = mech.task.meta
     scheme = scheme_data(st, plans)
     scheme["labels"] = {name: indexed(name) for name in list(grid["points"]) + list(scheme["frame"])}
+    # a rocker pivoted at its only joint (a slotted link) has no moving joint: its path is its points'
+    scheme["trajectories"] = [name for name in scheme["trajectories"] if name in grid["points"]]
     return {
         "title": {"uk": mech.title, "en": meta.get("title_en") or mech.title}, "lang": lang,
         "precision": plans.precision, "step": step,
@@ -299,7 +304,7 @@ def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
         "rows": rows,
         "readings": readings(plans, rows),
         "check": check_data(plans),
-        "records": plan_records(plans),
+        "records": plan_records(plans, sheet),
         "diagrams": diagrams_data(st, plans.precision, phi),
         "warnings": warnings_data(st, plans),
     }
@@ -310,9 +315,9 @@ def _asset(name: str) -> str:
 
 
 def explorer_html(st: Study, precision: float = 0.5, step: float = 1.0, lang: str = "uk",
-                  plans: Plans | None = None) -> str:
+                  plans: Plans | None = None, sheet: str | None = None) -> str:
     """The explorer as one self-contained HTML page (inline style, script and data)."""
-    data = explorer_data(st, precision, step, lang, plans)
+    data = explorer_data(st, precision, step, lang, plans, sheet)
     payload = json.dumps(data, ensure_ascii=False, separators=(",", ":"), allow_nan=False)
     payload = payload.replace("</", "<\\/")     # a "</script>" inside a caption cannot end the script
     page = _asset("explorer.html")

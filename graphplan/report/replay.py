@@ -56,14 +56,14 @@ def seg(a: str, b: str) -> str:
 # -- the words, Ukrainian and English (markup of util.markup) ----------------------------------------
 
 SAY: dict[str, tuple[str, str]] = {
-    "crank v": ("{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} мм перпендикулярно до {arm_l}, у бік ω_1",
-                "{seg} = v_{pin} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} mm perpendicular to {arm_l}, in the sense of ω_1"),
-    "crank a": ("{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} мм паралельно до {back}, до {pivot}",
-                "{seg} = a_{pin} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} mm parallel to {back}, toward {pivot}"),
+    "crank v": ("{seg} = v_{pin}{also} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} мм перпендикулярно до {arm_l}, у бік ω_1",
+                "{seg} = v_{pin}{also} = ω_1·l_{{{arm}}} = {value} {unit}: {mm} mm perpendicular to {arm_l}, in the sense of ω_1"),
+    "crank a": ("{seg} = a_{pin}{also} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} мм паралельно до {back}, до {pivot}",
+                "{seg} = a_{pin}{also} = ω_1^2·l_{{{arm}}} = {value} {unit}: {mm} mm parallel to {back}, toward {pivot}"),
     "crank a eps": ("{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, паралельно до {back}, до {pivot}; {t} = a^τ_{pin} = "
-                    "ε_1·l_{{{arm}}}, перпендикулярно до {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} мм",
+                    "ε_1·l_{{{arm}}}, перпендикулярно до {arm_l}; {seg} = a_{pin}{also} = {value} {unit}: {mm} мм",
                     "{n} = a^n_{pin} = ω_1^2·l_{{{arm}}}, parallel to {back}, toward {pivot}; {t} = a^τ_{pin} = "
-                    "ε_1·l_{{{arm}}}, perpendicular to {arm_l}; {seg} = a_{pin} = {value} {unit}: {mm} mm"),
+                    "ε_1·l_{{{arm}}}, perpendicular to {arm_l}; {seg} = a_{pin}{also} = {value} {unit}: {mm} mm"),
     "normal": ("Від {base} відкладаємо {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
                "{mm} мм паралельно до {link}, до {toward}",
                "From {base} lay off {seg} = a^n_{{{sub}}} = v^2_{{{sub}}}/l_{{{sub}}} = {value} {unit}: "
@@ -103,6 +103,46 @@ SAY: dict[str, tuple[str, str]] = {
     "at pole": ("{x} збігається з {pole}: {sym}_{{{X}}} = 0", "{x} coincides with {pole}: {sym}_{{{X}}} = 0"),
     "figure": ("Подібна фігура ланки {link} на плані: {fig}", "The similar figure of the link {link} on the plan: {fig}"),
     "rest": ("{eq}", "{eq}"),
+    "scale": ("Крок 0: полюс і масштаб. Полюс {pole} ставимо в будь-якому місці аркуша. Беремо {seg} ≈ {trial} мм "
+              "для {sym}_{pin} = {value} {unit} ⇒ μ_{s} = {sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; "
+              "заокруглюємо до стандартного масштабу (1; 2; 2,5; 4; 5·10^k), не дрібнішого{why}: "
+              "μ_{s} = {mu} {munit}; тоді {seg} = {sym}_{pin}/μ_{s} = {drawn} мм",
+              "Step 0: the pole and the scale. Put the pole {pole} anywhere on the sheet. Take {seg} ≈ {trial} mm "
+              "for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = {sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; "
+              "round it to a standard scale (1, 2, 2.5, 4, 5·10^k), not finer{why}: "
+              "μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm"),
+    "why sheet": ("; аркуш {f} бере той, з яким усі плани вміщуються на ньому", "; the {f} sheet takes the one with which every plan fits on it"),
+    "why own": ("; той, з яким найдовший вектор плану вміщується", "; the one with which the plan's longest vector fits"),
+    "equation": ("Група {group}: векторне рівняння точки {X}. Двічі підкреслене — відоме за величиною і напрямом, "
+                 "один раз — лише за напрямом; невідомих величин дві ({unknown}), тож рівняння розв'язує план",
+                 "The group {group}: the vector equation of the point {X}. Underlined twice: known in size and "
+                 "direction; once: in direction only; two sizes are unknown ({unknown}), so the plan solves it"),
+    "guide note": ("∥ напрямної", "∥ the guide"),
+    "known note": ("відома", "known"),
+    "zero note": ("= 0", "= 0"),
+    "to note": ("до {p}", "toward {p}"),
+    "rate": ("{w}_{{{link}}} = {rel}/l_{{{pair}}} = ({seg}·μ_{s})/l_{{{pair}}} = ({mm} мм · {mu} {munit})/{l} м = {value} {unit}. "
+             "Переносимо вектор {seg} у точку {C} механізму: він повертає {C} навколо {P} {sense}, тож {w}_{{{link}}} = {signed} {unit}",
+             "{w}_{{{link}}} = {rel}/l_{{{pair}}} = ({seg}·μ_{s})/l_{{{pair}}} = ({mm} mm · {mu} {munit})/{l} m = {value} {unit}. "
+             "Carried to the point {C} of the mechanism, the vector {seg} turns {C} about {P} {sense}, so {w}_{{{link}}} = {signed} {unit}"),
+    "ccw": ("проти годинникової стрілки", "counter-clockwise"),
+    "cw": ("за годинниковою стрілкою", "clockwise"),
+    "rate zero": ("{w}_{{{link}}} = {rel}/l_{{{pair}}} = 0: {seg} має нульову довжину", "{w}_{{{link}}} = {rel}/l_{{{pair}}} = 0: {seg} has no length"),
+    "why similar v": ("швидкості точок однієї ланки одна відносно одної перпендикулярні до відрізків між ними, тож "
+                      "фігура {fig} має сторони, перпендикулярні до сторін {FIG}: вона подібна до ланки й повернута на 90° у бік ω_{{{link}}}",
+                      "the velocities of one link's points relative to each other are perpendicular to the lines joining them, "
+                      "so the figure {fig} has its sides perpendicular to those of {FIG}: it is similar to the link, turned 90° "
+                      "in the sense of ω_{{{link}}}"),
+    "why similar a": ("відносні прискорення точок однієї ланки всі складають з відрізками між ними той самий кут "
+                      "(tg = ε/ω^2) і пропорційні їм, тож фігура {fig} подібна до {FIG}, повернута на {turn}°",
+                      "the relative accelerations of one link's points all make the same angle with the lines joining "
+                      "them (tan = ε/ω^2) and are proportional to them, so the figure {fig} is similar to {FIG}, turned by {turn}°"),
+    "ratio line": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} мм",
+                   "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} mm"),
+    "ratio triangle": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} мм, {qx} = {k}·{QX} = {qxmm} мм "
+                       "(дуги з {p} і {q}; трикутник обходимо в тому самому напрямі, що й на ланці)",
+                       "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} mm, {qx} = {k}·{QX} = {qxmm} mm "
+                       "(arcs from {p} and {q}; the triangle is gone round in the same sense as on the link)"),
     "guide word": ("напрямній", "the guide"),
 }
 
@@ -156,6 +196,10 @@ class Names:
     def mech_label(self, point: str) -> str:
         """A mechanism point as the lab letters it: A3 (the rocker's point at A) → A, O1 → O_1."""
         return indexed(self.base.get(point, point))
+
+    def own_label(self, point: str) -> str:
+        """A point with its own number kept: the rocker's point at A is A_3 (OB : OA_3)."""
+        return indexed(point) if point in self.base else self.mech_label(point)
 
     def position(self, point: str) -> complex:
         """Where the mechanism's point is on the position plan (drawing mm) at this position."""
@@ -241,17 +285,200 @@ class Replay:
         v = self.value(cr.pin) or {"mm": {"uk": "—", "en": "—"}, "value": {"uk": "—", "en": "—"}}
         units = both(lambda lang: unit(n.unit, lang))
         arm = f"{cr.pivot}{cr.pin}"
-        common = dict(seg=seg(n.pole, a), pin=cr.pin, arm=arm, unit=units, **v,
+        said = {m.group(1) for g in plan.solved
+                for m in re.finditer(rf"\b{n.sym}_{re.escape(cr.pin)}(\d+)(?![\dA-Za-z])", g.step)}
+        others = set(n.sc.coincident.values())      # A3: the rocker's point at A moves otherwise
+        also = "".join(f" = {n.sym}_{{{cr.pin}{d}}}" for d in sorted(said) if f"{cr.pin}{d}" not in others)
+        common = dict(seg=seg(n.pole, a), pin=cr.pin, also=also, arm=arm, unit=units, **v,
                       back=braced(n.mech_label(cr.pin)) + n.mech_label(cr.pivot), pivot=n.mech_label(cr.pivot),
                       arm_l=braced(n.mech_label(cr.pivot)) + n.mech_label(cr.pin))
         items = list(plan.crank_items) + [plan.absolute_items.get(cr.pin)]
+        mark = {"link": [cr.pivot, cr.pin], "point": cr.pin, "line": "perp" if plan.kind == "velocity" else "along"}
         if plan.kind == "velocity":
-            self.add(items, say("crank v", **common), letters=(a,))
+            self.add(items, say("crank v", **common), letters=(a,), mech=mark)
         elif plan.crank_items:
             end = "n_1"         # the first end of a normal component: the crank's (AccelerationPlan.crank)
-            self.add(items, say("crank a eps", n=seg(n.pole, end), t=seg(end, a), **common), letters=(end, a))
+            self.add(items, say("crank a eps", n=seg(n.pole, end), t=seg(end, a), **common), letters=(end, a), mech=mark)
         else:
-            self.add(items, say("crank a", **common), letters=(a,))
+            self.add(items, say("crank a", **common), letters=(a,), mech=mark)
+
+    def scale(self, sheet: str | None) -> None:
+        """Step 0: the pole anywhere; a trial length of the crank's vector, the scale it gives, rounded
+        to the standard series (graphic.scales.at_least) — to the very μ the plans are drawn with
+        (the sheet's, which may be coarser so that every plan fits) — and the length drawn."""
+        import math
+
+        from graphplan.graphic.scales import at_least
+        n, plan, cr = self.n, self.plan, self.n.mech.crank
+        e = plan.entries.get(cr.pin)
+        if e is None or not float(e.analytic) > 0:
+            return                  # no crank vector to scale by (nothing the plans draw does this)
+        value, mu = float(e.analytic), plan.mu
+        drawn = value / mu
+        trial = math.ceil(drawn - 1e-9)
+        if abs(at_least(value / trial) - mu) > 1e-12 * mu:
+            trial = round(drawn, 1)
+        raw = value / trial
+        s_ = "v" if plan.kind == "velocity" else "a"
+        munit = "(m/s)/mm" if plan.kind == "velocity" else "(m/s²)/mm"
+        why = say("why sheet", f=sheet) if sheet else say("why own")
+        a = sub(cr.pin)
+        self.add([], say("scale", pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
+                         sym=n.sym, pin=cr.pin, value=both(lambda lang: num(value, lang)),
+                         unit=both(lambda lang: unit(n.unit, lang)), s=s_,
+                         raw=both(lambda lang: num(raw, lang)), munit=both(lambda lang: unit(munit, lang)), why=why,
+                         mu=both(lambda lang: num(mu, lang)), drawn=both(lambda lang: fixed(drawn, lang, 1))),
+                 scale={"symbol": f"mu_{s_}", "mu": mu, "value": value, "trial": trial, "raw": raw, "drawn": round(drawn, 6)},
+                 mech={"link": [cr.pivot, cr.pin], "point": cr.pin})
+
+    def equation(self, g: Solved) -> dict[str, Any]:
+        """The group's vector equation as the textbook marks it: each term with its vector bar, its
+        marks (2: known in size and direction, 1: in direction only, 0: the sought point's own
+        vector) and its direction note (⊥ CB, ∥ OB, ∥ the guide, ∥ CB toward B)."""
+        n = self.n
+        names = n.mech.point_names() + list(n.sc.coincident.values())
+        unknown = {side.equation.term: side.equation for side in g.sides}
+        text = g.step.split(", ")[0]
+        tokens: list[dict[str, Any]] = []
+        for k, part in enumerate(text.split(" = ")):
+            if k:
+                tokens.append({"op": "="})
+            for j, term in enumerate(part.split(" + ")):
+                if j:
+                    tokens.append({"op": "+"})
+                term = term.strip()
+                m = re.match(r"^([av])(?:\^(\S))?_\{?([^{}\s]+)\}?$", term)
+                sym, mark, sub_ = m.groups() if m else (term, None, "")
+                shown = sym + (f"^{mark}" if mark else "") + (f"_{{{sub_}}}" if sub_ else "")
+                pair = split_pair(sub_, names) if sub_ else None
+                if term in unknown:
+                    e = unknown[term]
+                    kind, what = e.rule
+                    if kind == "guide":
+                        note = say("guide note")
+                    elif kind == "link":
+                        note = {lang: f"∥ {n.pair(what)}" for lang in LANGS}
+                    elif kind == "perp":
+                        note = {lang: f"⊥ {n.pair(what)}" for lang in LANGS}
+                    else:
+                        note = {lang: "" for lang in LANGS}
+                    tokens.append({"t": shown, "m": 1, "note": note})
+                elif mark in ("n",) and pair:
+                    note = join([{lang: f"∥ {n.pair(sub_)}" for lang in LANGS}, say("to note", p=n.mech_label(pair[1]))], ", ")
+                    tokens.append({"t": shown, "m": 2, "note": note})
+                elif mark == "k":
+                    carrier = next((s_.equation.rule[1] for s_ in g.sides if s_.equation.rule[0] == "link"), "")
+                    tokens.append({"t": shown, "m": 2, "note": {lang: f"⊥ {n.pair(carrier)}" if carrier else "" for lang in LANGS}})
+                elif k == 0 and j == 0:
+                    tokens.append({"t": shown, "m": 0, "note": {lang: "" for lang in LANGS}})
+                else:
+                    point = sub_ if sub_ in names else ""
+                    fixed_ = bool(point) and n.sc.fixed(n.base.get(point, point))
+                    tokens.append({"t": shown, "m": 2, "note": say("zero note") if fixed_ else say("known note")})
+        return {"tokens": tokens}
+
+    def similarity_words(self, point: str, body: str, chosen: tuple[str, str, str, str]) -> list[dict[str, str]]:
+        """Why the figure on the plan is similar to the link, how it is turned, and the ratio with its
+        numbers (plan mm over the position plan's mm)."""
+        import cmath
+        import math
+        n = self.n
+        P, p, Q, q = chosen
+        x = sub(point)
+        XP, XQ, X = n.position(P), n.position(Q), n.position(point)
+        pp, qq, xx = n.place(p), n.place(q), n.place(x)
+        PQ = abs(XQ - XP)
+        k = abs(qq - pp) / PQ if abs(qq - pp) > 1e-6 else 0.0     # a dead centre: the figure shrinks to a point
+        pw, qw = n.word(p), n.word(q)
+        PL, QL, XL = n.own_label(P), n.own_label(Q), n.own_label(point)
+        fig, FIG = seg(seg(pw, qw), x), seg(seg(PL, QL), XL)
+        collinear = abs(((XQ - XP).conjugate() * (X - XP)).imag) <= 1e-6 * max(PQ * abs(X - XP), 1e-12)
+        if self.plan.kind == "velocity":
+            why = say("why similar v", fig=fig, FIG=FIG, link=body)
+        else:
+            turn = math.degrees(cmath.phase((qq - pp) / (XQ - XP))) if abs(qq - pp) > 1e-9 else 0.0
+            why = say("why similar a", fig=fig, FIG=FIG, turn=both(lambda lang: fixed(turn, lang, 1)))
+        mmf = lambda v: both(lambda lang: fixed(v, lang, 1))    # noqa: E731
+        kf = both(lambda lang: num(k, lang, 3))
+        if collinear:
+            ratio = say("ratio line", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
+                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)), pxmm=mmf(k * abs(X - XP)))
+        else:
+            ratio = say("ratio triangle", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
+                        px=seg(pw, x), PX=seg(PL, XL), pxmm=mmf(k * abs(X - XP)), qx=seg(qw, x), QX=seg(QL, XL),
+                        qxmm=mmf(k * abs(X - XQ)), p=pw, q=qw)
+        return [why, ratio]
+
+    def rates(self) -> None:
+        """ω (velocity plan) or ε (acceleration plan) of every turning link at the end: the segment
+        read off the plan (v_CP, or a^τ_CP) over the link's length, and the sense found by carrying
+        the segment to C on the mechanism (its turn about P). The value is the plan's own reading."""
+        n, plan = self.n, self.plan
+        mech, sc = n.mech, n.sc
+        kind = "omega" if plan.kind == "velocity" else "epsilon"
+        w = "ω" if kind == "omega" else "ε"
+        s_ = "v" if plan.kind == "velocity" else "a"
+        munit = "(m/s)/mm" if plan.kind == "velocity" else "(m/s²)/mm"
+        names = mech.point_names() + list(sc.coincident.values())
+        mu_l = self.plans.mu_l
+        for link_name, link in mech.links.items():
+            rate = plan.entries.get(f"{kind}_{link_name}")
+            if rate is None or link_name == mech.crank.link or len(link.joints) < 2:
+                continue
+            own = set(link.joints) | set(link.local) | {nm for (pt, b), nm in sc.coincident.items() if b == link_name}
+            best = None
+            for key, e in plan.entries.items():
+                if e.mm is None:
+                    continue
+                if plan.kind == "velocity":
+                    if e.kind == "relative":
+                        pair = split_pair(key, names)
+                    elif e.kind == "point":
+                        fixed_ = [j for j in link.joints if sc.fixed(j)]
+                        pair = (key, fixed_[0]) if fixed_ else None
+                    else:
+                        continue
+                else:
+                    if e.kind != "tangential":
+                        continue
+                    pair = split_pair(key.removeprefix("t_"), names)
+                if not pair or pair[0] not in own or pair[1] not in own or pair[0] == pair[1]:
+                    continue
+                length = abs(n.position(pair[0]) - n.position(pair[1])) * mu_l
+                if length <= 0:
+                    continue
+                gap = abs(e.value / length - abs(rate.vector.real))
+                if best is None or gap < best[0]:
+                    best = (gap, key, e, pair, length)
+            if best is None:
+                continue
+            _, key, e, (C, P), length = best
+            signed = float(rate.vector.real)
+            c = sub(C)
+            vec = e.vector / plan.mu
+            start = n.place(c) - vec        # the segment ends at c: from a (v_CA), n_1 (a^τ_CA) or the pole
+            p = min([""] + list(plan.named), key=lambda name: abs(n.place(name) - start))
+            if abs(n.place(p) - start) > 1e-3:
+                p = ""
+            rel = (f"{s_}_{{{C}{P}}}" if plan.kind == "velocity" else f"a^τ_{{{C}{P}}}")
+            pair_l = braced(n.own_label(P)) + n.own_label(C)
+            fields = dict(w=w, link=link_name, rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
+                          unit=both(lambda lang: unit("rad/s" if kind == "omega" else "rad/s²", lang)))
+            if e.value == 0 or signed == 0:
+                caption = say("rate zero", **fields)
+            else:
+                caption = say("rate", **fields, mm=both(lambda lang: fixed(e.mm, lang, 1)),
+                              mu=both(lambda lang: num(plan.mu, lang)), munit=both(lambda lang: unit(munit, lang)),
+                              l=both(lambda lang: num(length, lang)), value=both(lambda lang: num(abs(signed), lang)),
+                              C=n.own_label(C), P=n.own_label(P), sense=say("ccw" if signed > 0 else "cw"),
+                              signed=both(lambda lang: ("+" if signed > 0 else "−") + num(abs(signed), lang)))
+            del pair_l
+            self.add([], caption, rate={"kind": kind, "link": link_name, "value": signed, "C": C, "P": P,
+                                        "sense": "ccw" if signed > 0 else "cw" if signed < 0 else None,
+                                        "from": [mm(start.real), mm(start.imag)],
+                                        "to": [mm((start + vec).real), mm((start + vec).imag)]},
+                     mech={"link": [P, C], "point": C, "carry": [mm(vec.real), mm(vec.imag)],
+                           "sense": 1 if signed > 0 else -1 if signed < 0 else 0})
 
     def similar(self, point: str) -> None:
         """A point of a link found by similarity from two of the link's points already found."""
@@ -284,6 +511,9 @@ class Replay:
             if chosen:
                 break
         at = n.place(x)
+        why: list[dict[str, str]] = []
+        if chosen is not None:
+            why = self.similarity_words(point, body, chosen)
         if chosen is None and len(candidates) >= 2:
             (P, p), (Q, q) = candidates[:2]
             rule = say("together", x=x, p=n.word(p), q=n.word(q))
@@ -294,7 +524,7 @@ class Replay:
             XP, XQ = n.position(P), n.position(Q)
             cross = ((XQ - XP).conjugate() * (X - XP)).imag
             pw, qw = n.word(p), n.word(q)
-            PL, QL, XL = (n.mech_label(P), n.mech_label(Q), n.mech_label(point))
+            PL, QL, XL = (n.own_label(P), n.own_label(Q), n.own_label(point))
             if abs(cross) <= 1e-6 * max(abs(XQ - XP) * abs(X - XP), 1e-12):
                 rule = say("on line", x=x, pq=seg(pw, qw), px=seg(pw, x), PX=seg(PL, XL), PQ=seg(PL, QL))
             else:
@@ -305,7 +535,8 @@ class Replay:
             v = self.value(point)
             tail = say("absolute", seg=seg(n.pole, x), sym=n.sym, X=point,
                        unit=both(lambda lang: unit(n.unit, lang)), **(v or {"mm": "—", "value": "—"}))
-        self.add([plan.absolute_items.get(point)], join([rule, tail]), letters=(x,))
+        mark = {"link": [chosen[0], chosen[2]], "point": point} if chosen else {"point": point}
+        self.add([plan.absolute_items.get(point)], join([rule] + why + [tail]), letters=(x,), mech=mark)
 
     def ensure(self, plan_name: str) -> None:
         """A known point an equation starts from, found by similarity first if it is not yet."""
@@ -323,6 +554,12 @@ class Replay:
         eq = self.eq(g.step)
         for side in g.sides:
             self.ensure(side.equation.name)
+        names = n.mech.point_names() + list(n.sc.coincident.values())
+        X = n.of_plan.get(g.found, "")
+        equation = self.equation(g)
+        unknown = [t["t"] for t in equation["tokens"] if t.get("m") == 1]
+        self.add([], say("equation", group=g.group, X=n.mech_label(X) if X else g.found,
+                         unknown=", ".join(unknown)), eq, equation=equation, mech={"point": X})
         throughs = []
         for side in g.sides:
             e = side.equation
@@ -334,24 +571,45 @@ class Replay:
                 if item is None:
                     self.add([], say("zero " + role, **fields), eq)
                     continue
-                pair = split_pair(sub_, n.mech.point_names() + list(n.sc.coincident.values())) or (sub_, "")
+                pair = split_pair(sub_, names) or (sub_, "")
                 v = self.value(key) or {"mm": "—", "value": "—"}
+                mark = {"point": pair[0], "link": [pair[0], pair[1]]} if pair[1] and role == "normal" else {"point": X}
                 self.add([item], say(role, seg=seg(n.word(at), label), link=n.pair(sub_),
                                      toward=n.mech_label(pair[1]) if pair[1] else "",
-                                     unit=both(lambda lang: unit("m/s²", lang)), **fields, **v), eq, letters=(label,))
+                                     unit=both(lambda lang: unit("m/s²", lang)), **fields, **v), eq, letters=(label,),
+                         equation=equation, mech=mark)
                 at = label
             throughs.append(at)
         for side, through in zip(g.sides, throughs):
             e = side.equation
             rule = say(e.rule[0], what=n.pair(e.rule[1])) if e.rule[0] else {"uk": "", "en": ""}
-            self.add([side.line], say("line", through=n.word(through), rule=rule, term=e.term), eq, line=True)
+            ends = self.plan.record.items[side.line].points
+            u = complex(ends[1][0] - ends[0][0], ends[1][1] - ends[0][1])
+            u = u / abs(u) if abs(u) else 0j
+            direction = [round(u.real, 6), round(u.imag, 6)]
+            if e.rule[0] == "perp":
+                two = split_pair(e.rule[1], names)
+                mark = {"point": X, "link": list(two), "line": "perp"} if two else {"point": X}
+            elif e.rule[0] == "link":
+                joints = list(n.mech.links[e.rule[1]].joints) if e.rule[1] in n.mech.links else []
+                ends = [joints[0], joints[-1]] if len(joints) >= 2 else [joints[0], X] if joints and X else []
+                mark = {"point": X, "link": ends, "line": "along"} if ends else {"point": X, "line": "along"}
+            elif e.rule[0] == "guide":
+                mark = {"point": X, "guide": e.rule[1], "line": "guide"}
+            else:
+                mark = {"point": X}
+            if "line" in mark:
+                mark["dir"] = direction        # drawn through the point as on the plan (the same directions)
+            self.add([side.line], say("line", through=n.word(through), rule=rule, term=e.term), eq, line=True,
+                     equation=equation, mech=mark)
         found = g.found
         point = n.of_plan.get(found, "")
         if abs(g.at) <= COINCIDE:
             caption = say("meet pole", found=found, pole=n.pole, sym=n.sym, X=point or found)
         else:
             caption = say("meet", found=found)
-        self.add([], caption, eq, letters=(found,), meet=[found, mm(g.at.real), mm(g.at.imag)])
+        self.add([], caption, eq, letters=(found,), meet=[found, mm(g.at.real), mm(g.at.imag)], equation=equation,
+                 mech={"point": X})
         parts, items = [], []
         absolute = f"{n.sym}_{point}"
         said_absolute = False
@@ -378,7 +636,7 @@ class Replay:
             if v is not None and abs(g.at) > COINCIDE and not said_absolute:
                 parts.append(say("absolute", seg=seg(n.pole, found), sym=n.sym, X=point, unit=units, **v))
         if items or parts:
-            self.add(items, say("found", list=join(parts)), eq)
+            self.add(items, say("found", list=join(parts)), eq, equation=equation, mech={"point": X})
 
     def figures(self) -> None:
         n = self.n
@@ -387,8 +645,9 @@ class Replay:
             fig = "".join(braced(n.pole if n.sc.fixed(j) else sub(j)) for j in joints)
             self.add(items, say("figure", link=link, fig=fig))
 
-    def build(self) -> list[dict[str, Any]]:
+    def build(self, sheet: str | None = None) -> list[dict[str, Any]]:
         plan = self.plan
+        self.scale(sheet)
         self.crank()
         for g in plan.solved:
             self.group(g)
@@ -397,6 +656,7 @@ class Replay:
             if e.kind == "point" and not self.known(sub(e.key)):
                 self.similar(e.key)
         self.figures()
+        self.rates()
         rest = [i for i, p in enumerate(plan.record.items)
                 if i not in self.used and p.kind != "text" and p.role != "pole"]
         for i in rest:      # nothing should be left; if it is, it is still drawn, worded by its equation
@@ -427,7 +687,7 @@ def record_data(rec: Record) -> list[list[Any]]:
     return prims
 
 
-def plan_records(plans: Plans) -> list[dict[str, Any]]:
+def plan_records(plans: Plans, sheet: str | None = None) -> list[dict[str, Any]]:
     """Every plan of the lab's positions with its replay (record indices skip no primitive: the
     labels are not in the record, the page letters the points)."""
     out = []
@@ -436,7 +696,7 @@ def plan_records(plans: Plans) -> list[dict[str, Any]]:
             if plan is None:
                 continue
             r = Replay(plans, plan)
-            steps = r.build()
+            steps = r.build(sheet)
             out.append({"kind": plan.kind, "key": p.key, "index": p.index, "phi": round(p.phi, 6),
                         "mu": plan.mu, "items": record_data(plan.record), "steps": steps,
                         "points": r.points()})

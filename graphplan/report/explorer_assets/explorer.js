@@ -9,9 +9,11 @@
       play: "▶ play", pause: "⏸ pause", playName: "play or pause the turn (Space)", speed: "speed",
       prev: "one grid step back (←)", next: "one grid step forward (→)", slider: "crank turn from position 0",
       turn: "turn from position 0", phi: "crank angle φ", lab: "position", labs: "lab positions",
-      mech: "Mechanism, μ_l = ", vplan: "Velocity plan, μ_v = ", aplan: "Acceleration plan, μ_a = ",
+      mech: "Mechanism, μ_l = ", vplan: "Velocity plan, μ_v = ", aplan: "Acceleration plan, μ_a = ", ofAngle: " (the scale of this angle)",
+      zoomKeys: "keys: + and − zoom, the arrows move, 0 shows the whole drawing",
       perAngle: "plans at a scale of their own for each angle (on paper one scale serves the turn)",
-      zoom: "Wheel or pinch to zoom a drawing, drag to move it, double-click to fit it again.",
+      zoom: "Wheel or pinch to zoom a drawing, drag to move it, double-click to fit it again; on a focused drawing (Tab) + and − zoom, "
+        + "the arrows move it, 0 fits it; on the diagrams ← → seek the angle.",
       values: "Values at the current angle", q: "quantity", graphical: "graphical", exact: "exact", error: "error, %",
       note: "graphical: read off the plan of a lab position with a ruler of {p} mm (length on the plan, mm → value); "
         + "exact: the analytic solution; error = 100·(graphical − exact)/exact. Grey: the exact plan of this angle; "
@@ -22,6 +24,8 @@
       replay: "The construction, step by step", back: "◀ back", forward: "forward ▶", first: "first step (Home)",
       last: "last step (End)", backName: "one step back (←)", forwardName: "one step forward (→)",
       step: "step {k} of {n}", plan: "plan to replay", returnTo: "↩ back to φ = {a}°",
+      rmech: "The mechanism at the plan's position, φ = {a}°: the link of the step in red, its direction line dashed",
+      eqKey: "  (═ known in size and direction; ─ in direction only)",
       velocity: "velocity plan", acceleration: "acceleration plan", at: "position {k}",
       legend: "Symbols", check: "Check your own plan",
       checkNote: "Type the lengths you measured on your own plan of this position, mm: the page multiplies them by "
@@ -46,9 +50,11 @@
       play: "▶ пуск", pause: "⏸ пауза", playName: "пуск або пауза обертання (пробіл)", speed: "швидкість",
       prev: "на крок сітки назад (←)", next: "на крок сітки вперед (→)", slider: "поворот кривошипа від положення 0",
       turn: "поворот від положення 0", phi: "кут кривошипа φ", lab: "положення", labs: "лабораторні положення",
-      mech: "Механізм, μ_l = ", vplan: "План швидкостей, μ_v = ", aplan: "План прискорень, μ_a = ",
+      mech: "Механізм, μ_l = ", vplan: "План швидкостей, μ_v = ", aplan: "План прискорень, μ_a = ", ofAngle: " (масштаб цього кута)",
+      zoomKeys: "клавіші: + і − масштаб, стрілки зсувають, 0 показує все креслення",
       perAngle: "плани у власному масштабі для кожного кута (на папері — один масштаб на оберт)",
-      zoom: "Коліщатко або жест — масштаб креслення, перетягування — зсув, подвійне клацання — повернути.",
+      zoom: "Коліщатко або жест — масштаб креслення, перетягування — зсув, подвійне клацання — повернути; на вибраному (Tab) "
+        + "кресленні + і − — масштаб, стрілки — зсув, 0 — усе креслення; на діаграмах ← → — кут.",
       values: "Значення при поточному куті", q: "величина", graphical: "графічно", exact: "точно", error: "похибка, %",
       note: "графічно: зміряно на плані лабораторного положення лінійкою з точністю {p} мм (відрізок на плані, мм → "
         + "значення); точно: аналітичний розв'язок; похибка = 100·(графічно − точно)/точно. Сіре — точний план цього "
@@ -59,6 +65,8 @@
       replay: "Побудова крок за кроком", back: "◀ назад", forward: "вперед ▶", first: "перший крок (Home)",
       last: "останній крок (End)", backName: "на крок назад (←)", forwardName: "на крок вперед (→)",
       step: "крок {k} з {n}", plan: "план для показу", returnTo: "↩ назад до φ = {a}°",
+      rmech: "Механізм у положенні плану, φ = {a}°: ланка кроку червона, її лінія напрямку штрихова",
+      eqKey: "  (═ відомий за величиною і напрямом; ─ лише за напрямом)",
       velocity: "план швидкостей", acceleration: "план прискорень", at: "положення {k}",
       legend: "Позначення", check: "Перевірте свій план",
       checkNote: "Введіть довжини, зміряні на власному плані цього положення, мм: сторінка помножить їх на масштаб і "
@@ -95,7 +103,7 @@
     const out = [], base = [];
     let i = 0;
     const n = text.length;
-    const flush = () => { if (base.length) { out.push({ text: base.join(""), level: 0, stacked: false }); base.length = 0; } };
+    const flush = () => { if (base.length) { out.push({ text: minus(base.join("")), level: 0, stacked: false }); base.length = 0; } };
     while (i < n) {
       const c = text[i];
       if (c === "\\" && i + 1 < n && "_^{}\\".indexOf(text[i + 1]) >= 0) { base.push(text[i + 1]); i += 2; continue; }
@@ -137,7 +145,7 @@
       const want = r.level < 0 ? 0.3 * size : r.level > 0 ? -0.45 * size : 0;
       if (want !== shift) ts.setAttribute("dy", r3(want - shift));
       shift = want;
-      if (r.level) ts.setAttribute("font-size", r3(0.7 * size));
+      if (r.level) ts.setAttribute("font-size", r3(SCRIPT * size));
       if (r.stacked && prev) {
         const w = prev.getComputedTextLength ? prev.getComputedTextLength() : 0;
         if (w > 0) ts.setAttribute("dx", r3(-w));
@@ -150,18 +158,16 @@
 
   // -- numbers as the page's language writes them: Python's "{:.4g}", the decimal comma in Ukrainian --
   const dec = (s) => (lang === "uk" ? s.replace(/\./g, ",") : s);
-  const fx = (x, n) => dec(x.toFixed(n)).replace(/^-/, "−");
-  function fmtG(x, p) {
+  const fx = (x, n) => { const s = x.toFixed(n); return dec(/^-[0.]*$/.test(s) ? s.slice(1) : s).replace(/^-/, "−"); };
+  const minus = (s) => String(s).replace(/(^|[^\p{L}\p{N}_])-(?=[\d.,])/gu, "$1−");   // one minus sign: U+2212
+  function fmtG(x, p) {                      // p significant digits, never in e-notation
     if (x === null || x === undefined || !isFinite(x)) return "—";
-    if (x === 0) return "0";
-    const e = x.toExponential(p - 1);
-    const exp = parseInt(e.split("e")[1], 10);
-    const strip = (s) => (s.indexOf(".") >= 0 ? s.replace(/0+$/, "").replace(/\.$/, "") : s);
-    if (exp < -4 || exp >= p) {
-      return dec(strip(e.split("e")[0])) + "e" + (exp < 0 ? "-" : "+") + String(Math.abs(exp)).padStart(2, "0");
-    }
-    const s = strip(x.toFixed(Math.max(0, p - 1 - exp)));
-    return s === "-0" ? "0" : dec(s);
+    if (Math.abs(x) < 1e-9) return "0";     // round-off of a vanishing quantity, as the values' table
+    const y = Number(x.toPrecision(p));
+    const exp = Math.floor(Math.log10(Math.abs(y)));
+    let s = y.toFixed(Math.max(0, Math.min(60, p - 1 - exp)));
+    if (s.indexOf(".") >= 0) s = s.replace(/0+$/, "").replace(/\.$/, "");
+    return s === "-0" ? "0" : minus(dec(s));
   }
 
   // -- svg helpers (drawing mm, y up → screen y down) -------------------------------------------------
@@ -190,7 +196,14 @@
   function grow(box, p) { box[0] = Math.min(box[0], p[0]); box[1] = Math.min(box[1], p[1]); box[2] = Math.max(box[2], p[0]); box[3] = Math.max(box[3], p[1]); }
 
   // -- drawings that zoom and pan, lettered at a constant size on the screen ------------------------------
-  const LETTER = 13;     // px: the drawings' lettering
+  const LETTER = 14;     // px: the drawings' lettering (11–16 px at every width, as the text beside them)
+  const SCRIPT = 0.8;    // sub- and superscripts: 0.8 of the letter (11.2 px)
+  const SERIES = [1, 2, 2.5, 4, 5];
+  function standardAtLeast(v) {              // the smallest 1, 2, 2.5, 4, 5 × 10^k ≥ v (graphic.scales.at_least)
+    const k0 = Math.floor(Math.log10(v));
+    for (let k = k0 - 1; k <= k0 + 1; k++) for (const m of SERIES) { const c = Number(m + "e" + k); if (c >= v * (1 - 1e-12)) return c; }
+    return v;
+  }
   function Zoomable(svg, redraw) {
     const z = { svg: svg, base: [0, 0, 1, 1], k: 1, cx: 0.5, cy: 0.5, redraw: redraw };
     z.view = function () {
@@ -245,6 +258,25 @@
     svg.addEventListener("pointerup", end);
     svg.addEventListener("pointercancel", end);
     svg.addEventListener("dblclick", () => { z.k = 1; z.cx = 0.5; z.cy = 0.5; z.apply(); z.redraw(); });
+    z.place = function (centre, s) {          // the base view: centre at s drawing units per screen pixel
+      const cw = svg.clientWidth || 400, ch = svg.clientHeight || 300;
+      z.base = [centre[0] - cw * s / 2, centre[1] - ch * s / 2, centre[0] + cw * s / 2, centre[1] + ch * s / 2];
+      z.apply();
+    };
+    svg.setAttribute("tabindex", "0");       // the keys: + − zoom, arrows pan, 0 (or Home) the whole drawing
+    svg.addEventListener("keydown", (ev) => {
+      if (ev.altKey || ev.ctrlKey || ev.metaKey) return;
+      const pan = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[ev.key];
+      if (ev.key === "+" || ev.key === "=") z.k = Math.min(40, z.k * 1.25);
+      else if (ev.key === "-" || ev.key === "_") z.k = Math.max(0.5, z.k / 1.25);
+      else if (ev.key === "0" || ev.key === "Home") { z.k = 1; z.cx = 0.5; z.cy = 0.5; }
+      else if (pan) { z.cx += pan[0] * 0.1 / z.k; z.cy += pan[1] * 0.1 / z.k; }
+      else return;
+      ev.preventDefault();
+      ev.stopPropagation();
+      z.apply();
+      z.redraw();
+    });
     return z;
   }
 
@@ -336,10 +368,13 @@
   Object.values(S.frame).forEach((p) => grow(mechBox, p));
   Object.keys(G.points).forEach((n) => { for (let i = 0; i < N; i += 1) grow(mechBox, at(n, i)); });
   mechSvg.style.aspectRatio = String(r3(Math.min(2.2, Math.max(0.75, (mechBox[2] - mechBox[0] + 30) / (mechBox[3] - mechBox[1] + 30)))));
-  function drawMechanism(i) {
-    clear(mechSvg);
-    const px = mechZ.px(), segs = [];
-    const g = el("g", {}, mechSvg);
+  function drawMechanism(i) { drawMechanismIn(mechSvg, mechZ, i, null); }
+  function drawMechanismIn(svgEl, zoom, i, mark) {
+    // mark (the replay's step): the link of the step highlighted, its direction line through the point,
+    // the plan's segment carried to the point and the sense it turns the link
+    clear(svgEl);
+    const px = zoom.px(), segs = [], boxes = [];     // boxes: the joints and the ground hatches, kept clear of letters
+    const g = el("g", {}, svgEl);
     const seg = (a, b, cls) => { line(g, a, b, cls); segs.push([a, b]); };
     S.guides.forEach((gd) => {
       const u = [Math.cos(gd.angle * Math.PI / 180), Math.sin(gd.angle * Math.PI / 180)];
@@ -364,6 +399,7 @@
       poly(g, [p, [p[0] - 3, p[1] - 5], [p[0] + 3, p[1] - 5]], "ground", true);
       line(g, [p[0] - 5, p[1] - 5], [p[0] + 5, p[1] - 5], "ground");
       for (let k = -4; k <= 4; k += 2) line(g, [p[0] + k, p[1] - 5], [p[0] + k - 1.5, p[1] - 6.5], "ground");
+      boxes.push([p[0] - 6.5, p[1] - 6.5, p[0] + 5, p[1]]);
     });
     S.links.forEach((L) => {
       const pts = L.joints.map((j) => at(j, i));
@@ -393,7 +429,9 @@
       if (seen[j]) return;
       seen[j] = 1;
       const p = at(j, i);
-      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(Math.max(0.9, 3.5 * px)), class: "joint" }, g);
+      const r = Math.max(0.9, 3.5 * px);
+      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(r), class: "joint" }, g);
+      boxes.push([p[0] - r, p[1] - r, p[0] + r, p[1] + r]);
       labels.unshift({ at: p, text: label(j) });
     }));
     Object.keys(G.points).forEach((n) => {
@@ -402,7 +440,54 @@
       el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(2.5 * px), class: "labpos" }, g);
       labels.push({ at: p, text: label(n) });
     });
-    placeLabels(el("g", {}, mechSvg), labels, segs, px);
+    if (mark) markMechanism(svgEl, g, i, mark, px, segs);
+    placeLabels(el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl), labels, segs, px, boxes.slice());
+    svgEl.setAttribute("data-kept", JSON.stringify(boxes.map((b) => b.map(r3))));
+  }
+  function guideAngle(point) {
+    const gd = S.guides.find((x) => x.point === point);
+    return gd ? gd.angle * Math.PI / 180 : null;
+  }
+  function markMechanism(svgEl, g, i, mark, px, segs) {
+    svgEl.removeAttribute("data-link");
+    svgEl.removeAttribute("data-line");
+    if (mark.link && mark.link.length === 2 && mark.link[0] !== mark.link[1]) {
+      const a = at(mark.link[0], i), b = at(mark.link[1], i);
+      line(g, a, b, "mark-link");
+      svgEl.setAttribute("data-link", mark.link.join(" "));
+      svgEl.setAttribute("data-link-xy", JSON.stringify([a, b].map((p) => p.map(r3))));
+    }
+    const P = mark.point && (S.frame[mark.point] || G.points[mark.point]) ? at(mark.point, i) : null;
+    if (P) el("circle", { cx: r3(P[0]), cy: r3(-P[1]), r: r3(7 * px), class: "meet" }, g);
+    let u = null;
+    if (P && mark.dir) u = mark.dir;
+    else if (P && mark.line && mark.link) {
+      const a = at(mark.link[0], i), b = at(mark.link[1], i), d = [b[0] - a[0], b[1] - a[1]];
+      u = mark.line === "perp" ? [-d[1], d[0]] : d;
+    } else if (P && mark.line === "guide") {
+      const th = guideAngle(mark.guide);
+      if (th !== null) u = [Math.cos(th), Math.sin(th)];
+    }
+    if (u) {                                // the direction line, through the point, as it is named
+      const n = Math.hypot(u[0], u[1]) || 1, L = 160 * px;
+      const e = [u[0] / n * L, u[1] / n * L];
+      line(g, [P[0] - e[0], P[1] - e[1]], [P[0] + e[0], P[1] + e[1]], "mark-line");
+      svgEl.setAttribute("data-line", JSON.stringify([u[0] / n, u[1] / n].map((v) => Math.round(v * 1e6) / 1e6)));
+    }
+    if (P && mark.carry) {                  // the plan's segment carried to the point: the sense of ω or ε
+      const n = Math.hypot(mark.carry[0], mark.carry[1]) || 1, L = 55 * px;
+      const tip = [P[0] + mark.carry[0] / n * L, P[1] + mark.carry[1] / n * L];
+      arrow(g, P, tip, "carry", px);
+      svgEl.setAttribute("data-carry", JSON.stringify([mark.carry[0] / n, mark.carry[1] / n].map((v) => Math.round(v * 1e6) / 1e6)));
+      const O = at(mark.link[0], i), R = 22 * px, a0 = Math.atan2(P[1] - O[1], P[0] - O[0]), sense = mark.sense || 0;
+      if (sense) {                           // an arc about the link's other end in that sense, with its head
+        const pts = [];
+        for (let k = 0; k <= 12; k++) { const t = a0 - sense * 0.9 + sense * 1.8 * k / 12; pts.push([O[0] + R * Math.cos(t), O[1] + R * Math.sin(t)]); }
+        poly(g, pts, "carry", false);
+        arrow(g, pts[10], pts[12], "carry", px * 0.8);
+        svgEl.setAttribute("data-sense", String(sense));
+      }
+    } else svgEl.removeAttribute("data-carry");
   }
 
   // -- the plans of the current angle -----------------------------------------------------------------------
@@ -451,9 +536,30 @@
       }
     });
   }
+  const fitScale = (svg, box, margin) => {   // drawing units per screen pixel that fit box in the panel (Zoomable.fit)
+    const cw = svg.clientWidth || 400, ch = svg.clientHeight || 300;
+    return Math.max(Math.max(box[2] - box[0], 1e-6) / Math.max(cw - 2 * margin, 40), Math.max(box[3] - box[1], 1e-6) / Math.max(ch - 2 * margin, 40));
+  };
+  const planMu = { velocity: muV, acceleration: muA };
+  function planCaption(kind, mu) {           // the caption says the scale the plan is drawn at now
+    const cap = $(kind === "velocity" ? "cap-vplan" : "cap-aplan");
+    setMarkup(cap, (kind === "velocity" ? W().vplan : W().aplan) + fmtG(mu, 4) + " " + unit(kind === "velocity" ? "(m/s)/mm" : "(m/s²)/mm")
+      + (mu !== (kind === "velocity" ? muV : muA) ? W().ofAngle : ""));
+    cap.setAttribute("data-mu", String(mu));
+    $(kind === "velocity" ? "vplan" : "aplan").setAttribute("aria-label", cap.textContent + "; " + W().zoomKeys);
+  }
   function drawPlan(kind, i) {
     const svg = planSvg[kind], z = planZ[kind];
-    if ($("per-angle").checked) { z.k = 1; z.cx = 0.5; z.cy = 0.5; z.fit(angleBox(kind, i), 28); }
+    if ($("per-angle").checked) {
+      // the plan of this angle at the standard scale that fills the panel the fixed-scale plan fills (as
+      // a draftsman would choose it for this angle alone): μ' ≥ μ·(its extent)/(the turn's extent)
+      const box = angleBox(kind, i), s0 = fitScale(svg, turnBox[kind], 28), s1 = fitScale(svg, box, 28);
+      const mu = Math.min(kind === "velocity" ? muV : muA, standardAtLeast((kind === "velocity" ? muV : muA) * s1 / s0));
+      z.k = 1; z.cx = 0.5; z.cy = 0.5;
+      z.place([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2], s0 * mu / (kind === "velocity" ? muV : muA));
+      planMu[kind] = mu;
+    } else planMu[kind] = kind === "velocity" ? muV : muA;
+    planCaption(kind, planMu[kind]);
     clear(svg);
     const px = z.px(), g = el("g", {}, svg), segs = [];
     S.links.forEach((L) => {
@@ -551,48 +657,58 @@
     tr(D.warnings.study).forEach(add);
   }
 
-  // -- the s–v–a diagrams: click or drag to seek -------------------------------------------------------------
+  // -- the s–v–a diagrams: click or drag to seek; ← → on the focused diagrams --------------------------------
+  // laid out in screen pixels (the lettering 13 px at any width), redrawn when the window changes
   const dg = D.diagrams, dsvg = $("diagrams");
-  const CH = 48, GAP = 16, WIDTH = 240;
-  let cursor = null;
+  let cursor = null, DX = { x0: 0, w: 1 };
   function drawDiagrams() {
     clear(dsvg);
     cursor = null;
     if (!dg) { $("diagrams-section").hidden = true; return; }
-    dsvg.setAttribute("viewBox", [-34, -6, WIDTH + 44, 3 * (CH + GAP) + 12].join(" "));
-    dsvg.setAttribute("font-size", "4.6");
+    const width = Math.max(280, dsvg.clientWidth || 600), size = LETTER;
+    const left = 78, right = 18, CH = Math.round(Math.min(170, Math.max(90, width * 0.16))), GAP = 34;
+    const WIDTH = width - left - right;
+    DX = { x0: left, w: WIDTH };
+    const height = 3 * (CH + GAP) + 30;
+    dsvg.setAttribute("viewBox", [0, 0, width, height].join(" "));
+    dsvg.style.height = height + "px";
+    dsvg.setAttribute("font-size", String(size));
+    dsvg.setAttribute("data-x0", String(left));
+    dsvg.setAttribute("data-width", String(WIDTH));
     ["s", "v", "a"].forEach((key, row) => {
-      const y0 = row * (CH + GAP);
+      const y0 = 8 + row * (CH + GAP);
       const ex = dg.exact[key], ch = dg.chords[key];
       let lo = Math.min(0, ...ex, ...ch.map((c) => c[1])), hi = Math.max(0, ...ex, ...ch.map((c) => c[1]));
       if (hi - lo < 1e-12) hi = lo + 1;
-      const X = (turn) => (turn / 360) * WIDTH, Y = (v) => y0 + CH - ((v - lo) / (hi - lo)) * CH;
+      const X = (turn) => left + (turn / 360) * WIDTH, Y = (v) => y0 + CH - ((v - lo) / (hi - lo)) * CH;
       const g = el("g", {}, dsvg);
       const ln = (x1, y1, x2, y2, cls) => el("line", { x1: r3(x1), y1: r3(y1), x2: r3(x2), y2: r3(y2), class: cls }, g);
-      ln(0, y0, 0, y0 + CH, "axis");
-      ln(0, Y(0), WIDTH, Y(0), "axis");
+      ln(left, y0, left, y0 + CH, "axis");
+      ln(left, Y(0), left + WIDTH, Y(0), "axis");
       for (let t = 30; t <= 360; t += 30) ln(X(t), y0, X(t), y0 + CH, "grid");
       el("polyline", { points: order.map((i) => r3(X(turnOf(G.phi[i]))) + "," + r3(Y(ex[i]))).join(" "), class: "curve" }, g);
-      ch.forEach((c) => el("circle", { cx: r3(X(turnOf(c[0]))), cy: r3(Y(c[1])), r: 1, class: "chord" }, g));
+      ch.forEach((c) => el("circle", { cx: r3(X(turnOf(c[0]))), cy: r3(Y(c[1])), r: 2.5, class: "chord" }, g));
       const u = { s: dg.unit, v: dg.unit + "/s", a: dg.unit + "/s²" }[key];
-      const t1 = el("text", { x: -32, y: y0 + 5, class: "dtext" }, g); svgMarkup(t1, dg.symbols[row] + "_{" + dg.sub + "}, " + unit(u), 4.6);
-      const t2 = el("text", { x: -32, y: y0 + 12, class: "dtext" }, g); t2.textContent = fmtG(hi, 3);
-      const t3 = el("text", { x: -32, y: y0 + CH, class: "dtext" }, g); t3.textContent = fmtG(lo, 3);
+      const t1 = el("text", { x: left + 6, y: y0 + size, class: "dtext" }, g);
+      svgMarkup(t1, dg.symbols[row] + "_{" + dg.sub + "}, " + unit(u), size);
+      const t2 = el("text", { x: left - 4, y: y0 + size * 0.8, class: "dtext", "text-anchor": "end" }, g); t2.textContent = fmtG(hi, 3);
+      const t3 = el("text", { x: left - 4, y: y0 + CH, class: "dtext", "text-anchor": "end" }, g); t3.textContent = fmtG(lo, 3);
     });
+    const base = 8 + 3 * (CH + GAP) - GAP;
     for (let t = 0; t <= 360; t += 60) {
-      const tx = el("text", { x: r3((t / 360) * WIDTH), y: 3 * (CH + GAP) - GAP + 7, class: "dtext", "text-anchor": "middle" }, dsvg);
+      const tx = el("text", { x: r3(left + (t / 360) * WIDTH), y: base + size + 2, class: "dtext", "text-anchor": "middle" }, dsvg);
       tx.textContent = String(t);
     }
-    const t = el("text", { x: WIDTH / 2, y: 3 * (CH + GAP) + 5, class: "dtext", "text-anchor": "middle" }, dsvg);
+    const t = el("text", { x: left + WIDTH / 2, y: base + 2 * size + 6, class: "dtext", "text-anchor": "middle" }, dsvg);
     t.textContent = W().turnAxis;
-    cursor = el("line", { x1: 0, y1: -2, x2: 0, y2: 3 * (CH + GAP) - GAP + 2, class: "cursor", id: "diagram-cursor" }, dsvg);
+    cursor = el("line", { x1: 0, y1: 4, x2: 0, y2: base + 2, class: "cursor", id: "diagram-cursor" }, dsvg);
     setMarkup($("diagrams-note"), fill(W().diagnote, { n: dg.divisions, d: fmtG(360 / dg.divisions, 4), L: fmtG(dg.L, 4), H1: fmtG(dg.H1, 4),
       H2: fmtG(dg.H2, 4), ms: fmtG(dg.mu.s, 4), mt: fmtG(dg.mu.t, 4), mv: fmtG(dg.mu.v, 4), ma: fmtG(dg.mu.a, 4) }));
     moveCursor();
   }
   function moveCursor() {
     if (!cursor) return;
-    const x = r3((turnOf(G.phi[index]) / 360) * WIDTH);
+    const x = r3(DX.x0 + (turnOf(G.phi[index]) / 360) * DX.w);
     cursor.setAttribute("x1", x);
     cursor.setAttribute("x2", x);
   }
@@ -601,16 +717,29 @@
     const p = dsvg.createSVGPoint();
     p.x = ev.clientX; p.y = ev.clientY;
     const q = p.matrixTransform(dsvg.getScreenCTM().inverse());
-    show(nearestTurn(Math.min(359.999, Math.max(0, (q.x / WIDTH) * 360))));
+    show(nearestTurn(Math.min(359.999, Math.max(0, ((q.x - DX.x0) / DX.w) * 360))));
   }
   dsvg.addEventListener("pointerdown", (ev) => { seeking = true; dsvg.setPointerCapture(ev.pointerId); seek(ev); });
   dsvg.addEventListener("pointermove", (ev) => { if (seeking) seek(ev); });
   dsvg.addEventListener("pointerup", () => { seeking = false; });
+  dsvg.setAttribute("tabindex", "0");
+  dsvg.addEventListener("keydown", (ev) => {       // the diagrams seek by keyboard: a grid step, 10°, the ends
+    if (ev.altKey || ev.ctrlKey || ev.metaKey) return;
+    const by = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: Math.max(1, Math.round(10 / D.step)),
+      PageDown: -Math.max(1, Math.round(10 / D.step)) }[ev.key];
+    if (by) stepAngle(by);
+    else if (ev.key === "Home") show(order[0]);
+    else if (ev.key === "End") show(order[N - 1]);
+    else return;
+    ev.preventDefault();
+    ev.stopPropagation();
+  });
 
   // -- the replay --------------------------------------------------------------------------------------------------
   const sel = $("replay-plan"), rsvg = $("replay");
   let current = null, stepNo = 0, returnTo = null;
   const replayZ = Zoomable(rsvg, () => showStep());
+  const rmechSvg = $("rmech"), rmechZ = Zoomable(rmechSvg, () => showStep());
   function planName(r) {
     return W()[r.kind] + ", " + (r.index !== null ? fill(W().at, { k: r.index }) : "φ = " + fx(r.phi, 1) + "°");
   }
@@ -622,11 +751,20 @@
     recordBox(current, box);
     replayZ.k = 1; replayZ.cx = 0.5; replayZ.cy = 0.5;
     replayZ.fit(box, 30);
+    rmechZ.k = 1; rmechZ.cx = 0.5; rmechZ.cy = 0.5;
+    rmechZ.fit(mechBox, 20);
+    setMarkup($("cap-rmech"), fill(W().rmech, { a: fx(current.phi, 2) }));
+    rmechSvg.setAttribute("aria-label", $("cap-rmech").textContent + "; " + W().zoomKeys);
     const ol = $("step-list");
     ol.textContent = "";
     current.steps.forEach((s, n) => {
       const li = document.createElement("li");
       li.setAttribute("data-step", String(n));
+      const no = document.createElement("span");
+      no.className = "no";
+      no.textContent = n + ".";                 // step 0: the pole and the scale
+      no.setAttribute("aria-hidden", "true");
+      li.appendChild(no);
       const b = document.createElement("button");
       b.type = "button";
       setMarkup(b, tr(s.caption));
@@ -641,6 +779,31 @@
     updateReturn();
     showStep();
   }
+  function showEquation(node, eq) {           // the vector equation, each term barred and underlined as known
+    node.textContent = "";
+    const box = document.createElement("span");
+    box.className = "equation";
+    eq.tokens.forEach((t) => {
+      if (t.op) { const o = document.createElement("span"); o.className = "op"; o.textContent = t.op; box.appendChild(o); return; }
+      const term = document.createElement("span");
+      term.className = "term m" + t.m;
+      term.setAttribute("data-marks", String(t.m));
+      const v = document.createElement("span");
+      v.className = "vec";
+      setMarkup(v, t.t);
+      const note = document.createElement("span");
+      note.className = "dir";
+      setMarkup(note, tr(t.note) || "\u00a0");
+      term.appendChild(v);
+      term.appendChild(note);
+      box.appendChild(term);
+    });
+    node.appendChild(box);
+    const key = document.createElement("span");
+    key.className = "eq-key";
+    setMarkup(key, W().eqKey);
+    node.appendChild(key);
+  }
   function updateReturn() {
     const b = $("replay-return");
     b.hidden = returnTo === null;
@@ -653,20 +816,31 @@
     drawItems(el("g", {}, rsvg), current, stepNo, stepNo, px, segs);
     const s = current.steps[stepNo];
     if (s.meet) el("circle", { cx: r3(s.meet[1]), cy: r3(-s.meet[2]), r: r3(7 * px), class: "meet" }, rsvg);
+    if (s.scale) el("circle", { cx: 0, cy: 0, r: r3(7 * px), class: "meet", id: "replay-pole" }, rsvg);     // step 0: the pole
+    if (s.rate) arrow(rsvg, s.rate.from, s.rate.to, "g-vec hl rate", px);           // the segment ω (ε) is read from
+    if (s.equation && !s.items.length && !s.meet) {                                  // the equation's known points
+      current.points.forEach((q) => { if (q[3] < stepNo) el("circle", { cx: r3(q[1]), cy: r3(-q[2]), r: r3(5 * px), class: "meet known" }, rsvg); });
+    }
+    drawMechanismIn(rmechSvg, rmechZ, nearest(current.phi), s.mech || null);
     const labels = [];
     current.points.forEach((q) => { if (q[3] <= stepNo) labels.push({ at: [q[1], q[2]], text: q[0], cls: q[3] === stepNo ? "new" : "" }); });
     const lg = el("g", { id: "replay-labels" }, rsvg);
     placeLabels(lg, labels, segs, px);
     setMarkup($("step-caption"), tr(s.caption));
-    setMarkup($("step-eq"), tr(s.eq));
+    if (s.equation) showEquation($("step-eq"), s.equation); else setMarkup($("step-eq"), tr(s.eq));
     const c = $("step-count");
-    c.textContent = fill(W().step, { k: stepNo + 1, n: current.steps.length });
+    c.textContent = fill(W().step, { k: stepNo, n: current.steps.length - 1 });
     c.setAttribute("data-step", String(stepNo));
     document.querySelectorAll("#step-list li").forEach((li, n) => {
       li.className = n < stepNo ? "done" : n === stepNo ? "current" : "todo";
-      const b = li.firstChild;
+      const b = li.querySelector("button");
       if (n === stepNo) b.setAttribute("aria-current", "step"); else b.removeAttribute("aria-current");
     });
+    const ol = $("step-list"), cur = ol.children[stepNo];    // the list scrolls to the current step (not the page)
+    if (cur) {
+      if (cur.offsetTop < ol.scrollTop) ol.scrollTop = Math.max(0, cur.offsetTop - 4);
+      else if (cur.offsetTop + cur.offsetHeight > ol.scrollTop + ol.clientHeight) ol.scrollTop = cur.offsetTop + cur.offsetHeight - ol.clientHeight + 4;
+    }
   }
   function stepBy(d) { if (!current) return; stepNo = Math.max(0, Math.min(current.steps.length - 1, stepNo + d)); showStep(); }
   sel.addEventListener("change", () => choose(parseInt(sel.value, 10), true));
@@ -817,7 +991,7 @@
     if (tag === "SELECT" || tag === "TEXTAREA") return;
     const inReplay = t && t.closest && t.closest("#replay-section");
     if (ev.key === " " || ev.key === "Spacebar") {
-      if (tag === "BUTTON") return;           // a focused button is pressed by Space itself
+      if (tag === "BUTTON" || (tag === "INPUT" && t.type === "checkbox")) return;   // Space presses a button, ticks a checkbox
       ev.preventDefault(); play(); return;
     }
     if (t === slider) return;                 // the slider's own keys (above)
@@ -861,9 +1035,9 @@
     });
     $("per-angle-label").textContent = w.perAngle;
     setMarkup($("cap-mech"), w.mech + fmtG(muL, 4) + " " + unit("m/mm"));
-    setMarkup($("cap-vplan"), w.vplan + fmtG(muV, 4) + " " + unit("(m/s)/mm"));
-    setMarkup($("cap-aplan"), w.aplan + fmtG(muA, 4) + " " + unit("(m/s²)/mm"));
-    ["mech", "vplan", "aplan"].forEach((id) => $(id).setAttribute("aria-label", $("cap-" + id).textContent));
+    planCaption("velocity", planMu.velocity);
+    planCaption("acceleration", planMu.acceleration);
+    $("mech").setAttribute("aria-label", $("cap-mech").textContent + "; " + w.zoomKeys);
     $("zoom-note").textContent = w.zoom;
     $("cap-values").textContent = w.values;
     $("values").querySelector("thead").innerHTML = "";
@@ -925,7 +1099,7 @@
   function fitAll() {
     mechZ.fit(mechBox, 30);
     ["velocity", "acceleration"].forEach((k) => planZ[k].fit($("per-angle").checked ? angleBox(k, index) : turnBox[k], 28));
-    if (current) { const box = [0, 0, 0, 0]; recordBox(current, box); replayZ.fit(box, 30); }
+    if (current) { const box = [0, 0, 0, 0]; recordBox(current, box); replayZ.fit(box, 30); rmechZ.fit(mechBox, 20); }
   }
   words();
   drawDiagrams();
@@ -937,7 +1111,7 @@
   let resizeTimer = null;
   window.addEventListener("resize", () => {
     clearTimeout(resizeTimer);
-    resizeTimer = setTimeout(() => { fitAll(); show(index, true); showStep(); }, 60);
+    resizeTimer = setTimeout(() => { fitAll(); drawDiagrams(); show(index, true); showStep(); }, 60);
   });
   window.graphplanExplorer = { show: show, nearest: nearest, turnOf: turnOf, phi: G.phi, records: D.records,
     choose: (k) => choose(k, true), step: () => stepNo, setLanguage: setLanguage };
