@@ -213,6 +213,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for k, (about, t, f) in enumerate(arms, 1):
         rec.segment(_pt(about), _pt(t.foot), role="construction", layer="construction", step=step,
                     text=f"h{k} = {abs(t.arm_mm):g} mm to {t.name}")
+        # the right-angle mark at the foot: the arm is perpendicular to this force's line
+        back, along = _unit(about - t.foot) * 1.5, _unit(f.force) * 1.5
+        if dot(f.at / mu - t.foot, along) < 0:
+            along = -along
+        rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
+                role="construction", layer="construction", step=step)
         z = f.at / mu
         tip = z + reach[f.name] * _unit(f.force)
         if dot(t.foot - z, tip - z) < 0 or abs(t.foot - z) > abs(tip - z):
@@ -448,8 +454,7 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
 
 
 TABLE_WORD = {"uk": "Таблиця", "en": "Table"}
-REACTIONS_TITLE = {"uk": "Реакції в кінематичних парах: з планів сил і точні",
-                   "en": "Reactions in the pairs: from the force plans and exact"}
+REACTIONS_TITLE = {"uk": "Реакції: з планів сил і точні", "en": "Reactions: by the force plans and exact"}
 
 
 def table_title(n: int, title: str, lang: str) -> str:
