@@ -347,7 +347,8 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, counts: tuple[int, 
     return Leaf("column", width, ch + GAP + height(width) + GAP + foot), groups, width
 
 
-SHAPES = ("column", "bands")
+ACROSS = " across"
+SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS)
 # the families grown in turn in these orders; the better composition kept (a tight sheet where the
 # force plans, grown first, leave the groups at 0.4 of their size has a twin with both at ≥ 0.56)
 ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"),
@@ -357,9 +358,15 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
-    the sheet's full height at the right; "bands" — the column under the groups' band."""
+    the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
+    — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
+    slotter's at 1:5 instead of 1:10)."""
     S = leaves["scheme"][0]
-    groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    if shape.endswith(ACROSS):
+        groups = Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    else:
+        groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    shape = shape.removesuffix(ACROSS)
     A, L = leaves["acceleration"][0], leaves["lever"][0]
     charts = leaves["charts"]
     H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
