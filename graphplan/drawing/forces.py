@@ -86,28 +86,39 @@ def _pairs(points: list[complex]) -> list[tuple[complex, complex]]:
     return list(zip(points, points[1:]))
 
 
-ALONG_DEG = 3.0    # a force within this angle of a link through its point lies on the link's line
+ALONG_DEG = 12.0   # a force within this angle of a link through its point lies on the link's line
 PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, to read
 
 
-def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]]) -> float:
-    """An arrow's length from ``z`` along ``u``: ``length``, or, where the force lies along a drawn
-    link through its point (Φ1 of a crank at S1), long enough to leave the link by ``PAST_MM`` — its
-    head and name clear of the link's line, its line of action unchanged."""
-    out = length
+def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
+    d = b - a
+    if abs(d) < 1e-9:
+        return abs(z - a) <= tol
+    t = min(max(dot(z - a, d) / abs(d) ** 2, 0.0), 1.0)
+    return abs(z - (a + t * d)) <= tol
+
+
+def _clear_of_links(z: complex, u: complex, length: float,
+                    links: list[tuple[complex, complex]]) -> tuple[complex, complex]:
+    """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
+    along ``u``, ``length`` long; where the force lies along a drawn link through its point, so
+    that it does not hide in the link's line: at the link's end (R03 up the rocker from O2) it is
+    drawn pushing, its head at the point and its tail outside the link; inside the link (Φ1 at S1)
+    it reaches ``PAST_MM`` past the link's end."""
+    ahead = behind = 0.0
     for a, b in links:
         d = b - a
-        if abs(d) < 1e-9:
+        if abs(d) < 1e-9 or not _on_segment(z, a, b):
             continue
-        t = dot(z - a, d) / abs(d) ** 2
-        off = abs(z - (a + min(max(t, 0.0), 1.0) * d))
-        if off > 0.5 or abs((u.conjugate() * d / abs(d)).imag) > math.sin(math.radians(ALONG_DEG)):
+        if abs((u.conjugate() * d / abs(d)).imag) > math.sin(math.radians(ALONG_DEG)):
             continue
         ends = [dot(e - z, u) for e in (a, b)]
-        ahead = max(ends)
-        if ahead > 0:
-            out = max(out, ahead + PAST_MM)
-    return out
+        ahead, behind = max(ahead, max(ends)), max(behind, -min(ends))
+    if ahead <= 0.5:
+        return z, z + length * u
+    if behind <= 0.5:
+        return z - length * u, z
+    return z, z + max(length, ahead + PAST_MM) * u
 
 
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
@@ -164,14 +175,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
     labels: list[tuple[complex, str, complex]] = []
     drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
-    reach: dict[str, float] = {}
+    span: dict[str, tuple[complex, complex]] = {}
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
-        reach[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links)
-        tip = z + reach[f.name] * u
-        rec.vector(_pt(z), _pt(tip), role="absolute", layer="vectors", step=step, text=f.name)
-        labels.append((tip, f.name, u))
+        a, b = span[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links)
+        rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
+        labels.append((b, f.name, u) if a == z else (a, f.name, -u))
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":
             # M_зр at the crank's pivot: an arc arrow in its sense, on the side away from the crank
@@ -185,8 +195,15 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             mid = _moment_arc(rec, z, f.couple, _free_direction(taken), step, r=7.0, span=90.0)
             labels.append((mid, f.name, mid - z))
         elif f.couple and not f.force:
-            _couple(rec, f.at / mu, f.couple, step)
-            labels.append((f.at / mu + 7j, f.name, 1j))
+            # a couple's arc on the side of its point free of the links and forces there
+            z = f.at / mu
+            taken = [cmath.phase(e - z) for a, b in drawn_links for e in (a, b)
+                     if abs(e - z) > 0.5 and _on_segment(z, a, b)]
+            taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step, r=5.0,
+                              span=110.0, name=f.name)
+            labels.append((mid, f.name, mid - z))
     for m in outer:
         # the reaction found here acts on the group's link: drawn and named so, R<from><to> (R03, R12)
         truth = fp.ks.reactions[m.key]
@@ -196,9 +213,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        tip = z + _arrow_length(m.value, biggest) * u
-        rec.vector(_pt(z), _pt(tip), role="result", layer="vectors", step=step, text=m.name)
-        labels.append((tip, m.name, u))
+        a, b = span[m.name] = _clear_of_links(z, u, _arrow_length(m.value, biggest), drawn_links)
+        rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
+        labels.append((b, m.name, u) if a == z else (a, m.name, -u))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)
@@ -219,10 +236,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             along = -along
         rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
                 role="construction", layer="construction", step=step)
-        z = f.at / mu
-        tip = z + reach[f.name] * _unit(f.force)
-        if dot(t.foot - z, tip - z) < 0 or abs(t.foot - z) > abs(tip - z):
-            rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
+        a, b = span[f.name]
+        if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
+            near = a if abs(t.foot - a) < abs(t.foot - b) else b
+            rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
     lab = Labeler(rec)
     if omega_at is not None:
         ck = mech.crank
@@ -287,7 +304,7 @@ def _free_direction(taken: list[float]) -> float:
 
 
 def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, r: float = 6.0,
-                span: float = 120.0) -> complex:
+                span: float = 120.0, name: str = "M_b") -> complex:
     """A moment drawn at ``z`` as an arc of ``span``° centred on the direction ``away`` (rad) with an
     arrowhead in its sense (+ counter-clockwise); returns the arc's middle (for its name)."""
     c = math.degrees(away)
@@ -298,17 +315,8 @@ def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, 
     tip = z + r * complex(math.cos(end), math.sin(end))
     tangent = 1j * (tip - z) / r * (1 if couple > 0 else -1)
     rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="vectors", step=step,
-               text="M_b")
+               text=name)
     return z + r * complex(math.cos(away), math.sin(away))
-
-
-def _couple(rec: Record, z: complex, couple: float, step: str, r: float = 5.0) -> None:
-    """A couple: an arc with an arrowhead in its sense."""
-    rec.arc(_pt(z), r, 30.0, 150.0, role="relative", layer="vectors", step=step)
-    end = math.radians(150.0 if couple > 0 else 30.0)
-    tip = z + r * complex(math.cos(end), math.sin(end))
-    tangent = 1j * (tip - z) / r * (1 if couple > 0 else -1)
-    rec.vector(_pt(tip - 2.5 * tangent), _pt(tip), role="relative", layer="vectors", step=step)
 
 
 # -- a force polygon ---------------------------------------------------------------------------
