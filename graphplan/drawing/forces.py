@@ -176,6 +176,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     labels: list[tuple[complex, str, complex]] = []
     drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
     span: dict[str, tuple[complex, complex]] = {}
+    clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
@@ -192,8 +193,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
-            mid = _moment_arc(rec, z, f.couple, _free_direction(taken), step, r=7.0, span=90.0)
+            mid = _moment_arc(rec, z, f.couple, _free_direction(taken), step, r=9.0, span=80.0)
             labels.append((mid, f.name, mid - z))
+            clear[z] = z - mid          # the pivot's letter on the side away from the arc
         elif f.couple and not f.force:
             # a couple's arc on the side of its point free of the links and forces there
             z = f.at / mu
@@ -202,8 +204,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
             taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
             mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step, r=5.0,
-                              span=110.0, name=f.name)
+                              span=110.0, name="")
             labels.append((mid, f.name, mid - z))
+            clear[z] = z - mid
     for m in outer:
         # the reaction found here acts on the group's link: drawn and named so, R<from><to> (R03, R12)
         truth = fp.ks.reactions[m.key]
@@ -246,7 +249,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
         _omega(rec, lab, omega_at, mech.omega1, cmath.phase(omega_at - pin))
     for z, name in names:
-        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+        side = next((v for c, v in clear.items() if abs(c - z) < 0.5), -1 - 1j)
+        lab.place(z, indexed(name), 3.5, side, step)
     for k, (about, t, _) in enumerate(arms, 1):
         mid = 0.5 * (about + t.foot)
         lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
@@ -306,7 +310,8 @@ def _free_direction(taken: list[float]) -> float:
 def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, r: float = 6.0,
                 span: float = 120.0, name: str = "M_b") -> complex:
     """A moment drawn at ``z`` as an arc of ``span``° centred on the direction ``away`` (rad) with an
-    arrowhead in its sense (+ counter-clockwise); returns the arc's middle (for its name)."""
+    arrowhead in its sense (+ counter-clockwise), the arrowhead's record text ``name`` (M_b; a couple
+    of inertia none: a record's named vectors are its forces); returns the arc's middle."""
     c = math.degrees(away)
     a0, a1 = c - span / 2, c + span / 2
     rec.arc(_pt(z), r, a0 % 360.0, a0 % 360.0 + span, role="relative", layer="vectors", step=step,
