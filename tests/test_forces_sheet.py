@@ -97,10 +97,8 @@ def test_the_crank_group_shows_the_balancing_moment_with_its_sense(sheet):
     assert any(p.kind == "text" and "зр" in p.text for p in rec.items)
 
 
-def test_each_arm_ends_on_its_own_forces_line(sheet):
-    """The foot of each arm h lies on the line of the force it is named for (within 0.01 mm),
-    the arm is perpendicular to it, and its drawn length reads as the ruler's value printed."""
-    for rec in sheet["drawings"]["groups"]:
+def _arms_on_their_lines(records) -> None:
+    for rec in records:
         arms = [p for p in rec.items if p.kind == "segment" and p.text.startswith("h")]
         forces = {v.text: v for v in _vectors(rec)}
         for arm in arms:
@@ -115,6 +113,34 @@ def test_each_arm_ends_on_its_own_forces_line(sheet):
             assert off < 0.01, (rec.title, arm.text, off)
             assert abs((fx - ax) * ux + (fy - ay) * uy) / n < 0.01   # perpendicular
             assert abs(math.hypot(fx - ax, fy - ay) - h) <= 0.25 + 1e-9
+
+
+def test_each_arm_ends_on_its_own_forces_line(sheet):
+    """The foot of each arm h lies on the line of the force it is named for (within 0.01 mm),
+    the arm is perpendicular to it, and its drawn length reads as the ruler's value printed."""
+    _arms_on_their_lines(sheet["drawings"]["groups"])
+
+
+@pytest.mark.parametrize("kind", ["RRR", "RRP", "RPR", "PRP", "RPP"])
+def test_every_dyad_kind_is_named_and_armed_by_the_rule(kind):
+    """Generated mechanisms of every dyad kind (tests/random_mechanisms.py): each force drawn on a
+    group is R<from><to> with <to> in it, the crank group gets R21 and M_зр, each arm ends on its
+    own force's line."""
+    from graphplan.drawing import forces as forcedraw
+    from graphplan.graphic.forceplans import construct
+    from test_forces import KINDS
+    make, point = KINDS[kind]
+    st = scene_study(loaded(make()[0], point, 30.0))
+    fp = construct(st, 40.0, precision=0.5)
+    recs = [forcedraw.group_record(fp, gp, "uk") for gp in fp.groups]
+    for gp, rec in zip(fp.groups, recs):
+        inside = _numbers(st.mech, gp.links)
+        for name in [v.text for v in _vectors(rec) if FORCE_NAME.match(v.text)]:
+            frm, to = _split(name, st.mech)
+            assert to in inside and frm not in inside, (kind, gp.label, name)
+    assert "R21" in [v.text for v in _vectors(recs[-1])]
+    assert [v for v in _vectors(recs[-1]) if v.text == "M_b"]
+    _arms_on_their_lines(recs)
 
 
 def _number(text: str) -> float | None:
