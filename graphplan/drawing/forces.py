@@ -98,13 +98,14 @@ def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
     return abs(z - (a + t * d)) <= tol
 
 
-def _clear_of_links(z: complex, u: complex, length: float,
-                    links: list[tuple[complex, complex]]) -> tuple[complex, complex]:
+def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
+                    busy: list[tuple[complex, complex]] = ()) -> tuple[complex, complex]:
     """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
     along ``u``, ``length`` long; where the force lies along a drawn link through its point, so
     that it does not hide in the link's line: at the link's end (R03 up the rocker from O2) it is
-    drawn pushing, its head at the point and its tail outside the link; inside the link (Φ1 at S1)
-    it reaches ``PAST_MM`` past the link's end."""
+    drawn pushing, its head at the point and its tail outside the link — unless another force of
+    ``busy`` (point, direction) leaves the point that way (the slotter's G5 at D under P_D and Φ5);
+    inside the link (Φ1 at S1) it reaches ``PAST_MM`` past the link's end."""
     ahead = behind = 0.0
     for a, b in links:
         d = b - a
@@ -116,8 +117,12 @@ def _clear_of_links(z: complex, u: complex, length: float,
         ahead, behind = max(ahead, max(ends)), max(behind, -min(ends))
     if ahead <= 0.5:
         return z, z + length * u
-    if behind <= 0.5:
+    cos_along = math.cos(math.radians(ALONG_DEG))
+    taken = any(abs(w - z) < 0.5 and dot(v, -u) > cos_along for w, v in busy)
+    if behind <= 0.5 and not taken:
         return z - length * u, z
+    if behind <= 0.5:
+        return z, z + length * u
     return z, z + max(length, ahead + PAST_MM) * u
 
 
@@ -177,10 +182,16 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
     span: dict[str, tuple[complex, complex]] = {}
     clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
+    busy = [(f.at / mu, _unit(f.force)) for f in forces]       # every force leaving its point
+    for m in outer:
+        truth = fp.ks.reactions[m.key]
+        at = truth.line_point()[0] if truth.on in gp.links else truth.at[0]
+        if m.acting:
+            busy.append((complex(at) / mu, _unit(m.acting)))
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links)
+        a, b = span[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links, busy)
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
         labels.append((b, f.name, u) if a == z else (a, f.name, -u))
     for f in gp.forces:
@@ -216,7 +227,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = _clear_of_links(z, u, _arrow_length(m.value, biggest), drawn_links)
+        a, b = span[m.name] = _clear_of_links(z, u, _arrow_length(m.value, biggest), drawn_links, busy)
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((b, m.name, u) if a == z else (a, m.name, -u))
     arms = []
