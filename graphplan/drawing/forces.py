@@ -153,6 +153,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     rec = Record(title, scales={"mu_l": mu})
     step = f"{gp.label}: ΣM = 0, ΣF = 0"
     names: list[tuple[complex, str]] = []
+    supports: list[complex] = []
     for link in gp.links:
         outline = _link_outline(fp, link, mu)
         if len(outline) >= 2:
@@ -172,6 +173,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
             if p in mech.frame:
                 _support(rec, z, step)
+                supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
     forces = [f for f in gp.forces if f.force != 0]
@@ -214,6 +216,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                      if abs(e - z) > 0.5 and _on_segment(z, a, b)]
             taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
             taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            if any(abs(w - z) < 0.5 for w in supports):          # the support under a frame pivot
+                taken += [math.radians(a) for a in (-40.0, -90.0, -140.0)]
+            if omega_at is not None and abs(omega_at - z) < 0.5:  # ω1's arc, away from the crank
+                ck = mech.crank
+                pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
+                taken.append(cmath.phase(z - pin))
             mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step, r=5.0,
                               span=110.0, name="")
             labels.append((mid, f.name, mid - z))
