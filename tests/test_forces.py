@@ -359,7 +359,8 @@ def test_drawings_of_every_dyad_kind(kind):
     assert {f"group {g.label}" for g in fp.groups} <= set(recs) and "lever" in recs
     for g in fp.groups:
         drawn = {s.name for s in g.sides}
-        assert set(g.reactions) <= drawn                 # every reaction is a side of its polygon
+        # every reaction is a side of its polygon, named as it acts on the group's link
+        assert {m.name for m in g.reactions.values()} <= drawn
     page, w, h = svg.page_for(forcedraw.drawing(fp))
     text = svg.render(page, w, h)
     assert text.count("<line") > 20 and ">R</tspan><tspan" in text and ">01</tspan>" in text   # R₀₁

@@ -227,6 +227,24 @@ def reaction_record(t: Turn, key: str, width: float = 180.0, height: float = 60.
     return rec
 
 
+CLUSTER_MM = 4.0   # consecutive positions this close (each to the last, all within twice it of the
+                   # run's first) share one number, "6–10"
+
+
+def _clusters(points: list[tuple[int, complex]]) -> list[tuple[int, int, complex]]:
+    """Consecutive positions drawn within ``CLUSTER_MM`` of the run's first point, as (first,
+    last, the run's middle point): one number "6–10" for a run the idle stroke bunches, not five
+    numbers crowding one spot."""
+    runs: list[list[tuple[int, complex]]] = []
+    for pos, w in points:
+        if (runs and pos == runs[-1][-1][0] + 1 and abs(w - runs[-1][-1][1]) <= CLUSTER_MM
+                and abs(w - runs[-1][0][1]) <= 2 * CLUSTER_MM):
+            runs[-1].append((pos, w))
+        else:
+            runs.append([(pos, w)])
+    return [(r[0][0], r[-1][0], r[len(r) // 2][1]) for r in runs]
+
+
 def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR is the standard scale at which the curve
@@ -248,11 +266,12 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
     numbers = []
-    for k, pos in t.position_index():
+    for first, last, w in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()]):
+        text = str(first) if first == last else f"{first}–{last}"
+        numbers.append(LabelRequest(w, text, w if abs(w) > 1e-9 else 1j, 2.5, optional=first != 0, step=step))
+    for k, _ in t.position_index():
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
-        numbers.append(LabelRequest(complex(float(w.real), float(w.imag)), str(pos), w if abs(w) > 1e-9 else 1j,
-                                    2.5, optional=pos != 0, step=step))
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve (on a small
                                     # loop those without room are left out; position 0 always stands)
     rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",

@@ -57,15 +57,21 @@ class Labeler:
 
 # -- a group's scheme --------------------------------------------------------------------------
 
-def _link_outline(fp: ForcePlans, link: str) -> list[complex]:
+def _mu(fp: ForcePlans, gp: GroupPlan | None) -> float:
+    """The scale a group is drawn at (its own, else the plans')."""
+    return gp.mu_l if gp is not None and gp.mu_l else fp.mu_l
+
+
+def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[complex]:
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
     mech, kin = fp.ks.mech, fp.ks.kin
+    mu = mu or fp.mu_l
     lk = mech.links[link]
     body = kin.bodies[link]
-    pos = {p: complex(body.at(lk.local[p])[0][0]) / fp.mu_l for p in lk.joints}
+    pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
     riders = [name for name, other in mech.links.items() if other.slides_on == link]
     for r in riders:
-        pos[f"~{r}"] = complex(kin.bodies[r].at(mech.links[r].local[next(iter(mech.links[r].local))])[0][0]) / fp.mu_l
+        pos[f"~{r}"] = complex(kin.bodies[r].at(mech.links[r].local[next(iter(mech.links[r].local))])[0][0]) / mu
     pts = list(pos.values())
     if len(lk.joints) >= 3:
         return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
@@ -74,6 +80,50 @@ def _link_outline(fp: ForcePlans, link: str) -> list[complex]:
     axis = _unit(pts[1] - pts[0])
     proj = sorted(pts, key=lambda z: dot(z - pts[0], axis))
     return [proj[0], proj[-1]]
+
+
+def _pairs(points: list[complex]) -> list[tuple[complex, complex]]:
+    return list(zip(points, points[1:]))
+
+
+ALONG_DEG = 12.0   # a force within this angle of a link through its point lies on the link's line
+PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, to read
+
+
+def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
+    d = b - a
+    if abs(d) < 1e-9:
+        return abs(z - a) <= tol
+    t = min(max(dot(z - a, d) / abs(d) ** 2, 0.0), 1.0)
+    return abs(z - (a + t * d)) <= tol
+
+
+def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
+                    busy: list[tuple[complex, complex]] = ()) -> tuple[complex, complex]:
+    """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
+    along ``u``, ``length`` long; where the force lies along a drawn link through its point, so
+    that it does not hide in the link's line: at the link's end (R03 up the rocker from O2) it is
+    drawn pushing, its head at the point and its tail outside the link — unless another force of
+    ``busy`` (point, direction) leaves the point that way (the slotter's G5 at D under P_D and Φ5);
+    inside the link (Φ1 at S1) it reaches ``PAST_MM`` past the link's end."""
+    ahead = behind = 0.0
+    for a, b in links:
+        d = b - a
+        if abs(d) < 1e-9 or not _on_segment(z, a, b):
+            continue
+        if abs((u.conjugate() * d / abs(d)).imag) > math.sin(math.radians(ALONG_DEG)):
+            continue
+        ends = [dot(e - z, u) for e in (a, b)]
+        ahead, behind = max(ahead, max(ends)), max(behind, -min(ends))
+    if ahead <= 0.5:
+        return z, z + length * u
+    cos_along = math.cos(math.radians(ALONG_DEG))
+    taken = any(abs(w - z) < 0.5 and dot(v, -u) > cos_along for w, v in busy)
+    if behind <= 0.5 and not taken:
+        return z - length * u, z
+    if behind <= 0.5:
+        return z, z + length * u
+    return z, z + max(length, ahead + PAST_MM) * u
 
 
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
@@ -98,29 +148,32 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     the later groups, the reactions found here) and the arms of the moment equations; with
     ``omega_at`` (mm) the crank's sense of rotation there, drawn before any label is set."""
     mech, kin = fp.ks.mech, fp.ks.kin
+    mu = _mu(fp, gp)
     title = f"{gp.label} {pair_kind(gp.kind, lang)}" if gp.kind not in ("crank", "mechanism") else gp.label
-    rec = Record(title, scales={"mu_l": fp.mu_l})
+    rec = Record(title, scales={"mu_l": mu})
     step = f"{gp.label}: ΣM = 0, ΣF = 0"
     names: list[tuple[complex, str]] = []
+    supports: list[complex] = []
     for link in gp.links:
-        outline = _link_outline(fp, link)
+        outline = _link_outline(fp, link, mu)
         if len(outline) >= 2:
             rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
         lk = mech.links[link]
         if lk.slides_on is not None:
             guide = mech.guides[lk.slides_on]
             origin = next(iter(lk.local))
-            z = complex(kin.bodies[link].at(lk.local[origin])[0][0]) / fp.mu_l
+            z = complex(kin.bodies[link].at(lk.local[origin])[0][0]) / mu
             import numpy as np
             g = complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))
             _block(rec, z, g, step)
             if guide.body == FRAME:
                 rec.segment(_pt(z - 25 * g), _pt(z + 25 * g), role="axis", layer="frame", step=step)
         for p in lk.joints:
-            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / fp.mu_l
+            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
             if p in mech.frame:
                 _support(rec, z, step)
+                supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
     forces = [f for f in gp.forces if f.force != 0]
@@ -128,53 +181,96 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
              if {fp.ks.reactions[m.key].frm, fp.ks.reactions[m.key].on} - set(gp.links)]
     biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
     labels: list[tuple[complex, str, complex]] = []
-    for f in forces:
-        z = f.at / fp.mu_l
-        u = _unit(f.force)
-        tip = z + _arrow_length(abs(f.force), biggest) * u
-        rec.vector(_pt(z), _pt(tip), role="absolute", layer="vectors", step=step, text=f.name)
-        labels.append((tip, f.name, u))
-    for f in gp.forces:
-        if f.couple and not f.force:
-            _couple(rec, f.at / fp.mu_l, f.couple, step)
-            labels.append((f.at / fp.mu_l + 7j, f.name, 1j))
+    drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
+    span: dict[str, tuple[complex, complex]] = {}
+    clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
+    busy = [(f.at / mu, _unit(f.force)) for f in forces]       # every force leaving its point
     for m in outer:
         truth = fp.ks.reactions[m.key]
+        at = truth.line_point()[0] if truth.on in gp.links else truth.at[0]
+        if m.acting:
+            busy.append((complex(at) / mu, _unit(m.acting)))
+    for f in forces:
+        z = f.at / mu
+        u = _unit(f.force)
+        a, b = span[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links, busy)
+        rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
+        labels.append((b, f.name, u) if a == z else (a, f.name, -u))
+    for f in gp.forces:
+        if f.couple and not f.force and f.kind == "balancing":
+            # M_зр at the crank's pivot: an arc arrow in its sense, on the side away from the crank
+            ck = mech.crank
+            pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
+            z = f.at / mu
+            taken = [cmath.phase(pin - z)] + [math.radians(a) for a in (-40.0, -90.0, -140.0)]  # the crank, the support
+            taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
+            taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
+                      if abs(t.arm_mm) >= 1.0 and not t.couple]
+            mid = _moment_arc(rec, z, f.couple, _free_direction(taken), step, r=9.0, span=80.0)
+            labels.append((mid, f.name, mid - z))
+            clear[z] = z - mid          # the pivot's letter on the side away from the arc
+        elif f.couple and not f.force:
+            # a couple's arc on the side of its point free of the links and forces there
+            z = f.at / mu
+            taken = [cmath.phase(e - z) for a, b in drawn_links for e in (a, b)
+                     if abs(e - z) > 0.5 and _on_segment(z, a, b)]
+            taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            if any(abs(w - z) < 0.5 for w in supports):          # the support under a frame pivot
+                taken += [math.radians(a) for a in (-40.0, -90.0, -140.0)]
+            if omega_at is not None and abs(omega_at - z) < 0.5:  # ω1's arc, away from the crank
+                ck = mech.crank
+                pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
+                taken.append(cmath.phase(z - pin))
+            mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step, r=5.0,
+                              span=110.0, name="")
+            labels.append((mid, f.name, mid - z))
+            clear[z] = z - mid
+    for m in outer:
+        # the reaction found here acts on the group's link: drawn and named so, R<from><to> (R03, R12)
+        truth = fp.ks.reactions[m.key]
         inward = truth.on in gp.links
-        z = complex(truth.line_point()[0] if inward else truth.at[0]) / fp.mu_l
-        v = m.vector if inward else -m.vector
+        z = complex(truth.line_point()[0] if inward else truth.at[0]) / mu
+        v = m.acting
         if not v:
             continue
         u = _unit(v)
-        tip = z + _arrow_length(m.value, biggest) * u
-        rec.vector(_pt(z), _pt(tip), role="result", layer="vectors", step=step, text=m.key)
-        labels.append((tip, m.key, u))
+        a, b = span[m.name] = _clear_of_links(z, u, _arrow_length(m.value, biggest), drawn_links, busy)
+        rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
+        labels.append((b, m.name, u) if a == z else (a, m.name, -u))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)
         if about is None:
             continue
         for t in eq.terms:
-            if abs(t.arm_mm) < 1.0:
+            # an arm is drawn to the line of a force drawn on the group (not to a component's)
+            f = next((g for g in forces if g.name == t.name), None)
+            if abs(t.arm_mm) < 1.0 or t.couple or f is None:
                 continue
-            arms.append((about, t))
-    for k, (about, t) in enumerate(arms, 1):
+            arms.append((about, t, f))
+    for k, (about, t, f) in enumerate(arms, 1):
         rec.segment(_pt(about), _pt(t.foot), role="construction", layer="construction", step=step,
-                    text=f"h{k} = {abs(t.arm_mm):g} mm")
-        f = next((g for g in forces if g.name == t.name), None)
-        if f is not None:
-            z = f.at / fp.mu_l
-            tip = z + _arrow_length(abs(f.force), biggest) * _unit(f.force)
-            if dot(t.foot - z, tip - z) < 0 or abs(t.foot - z) > abs(tip - z):
-                rec.segment(_pt(z), _pt(t.foot), role="projection", layer="construction", step=step)
+                    text=f"h{k} = {abs(t.arm_mm):g} mm to {t.name}")
+        # the right-angle mark at the foot: the arm is perpendicular to this force's line
+        back, along = _unit(about - t.foot) * 1.5, _unit(f.force) * 1.5
+        if dot(f.at / mu - t.foot, along) < 0:
+            along = -along
+        rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
+                role="construction", layer="construction", step=step)
+        a, b = span[f.name]
+        if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
+            near = a if abs(t.foot - a) < abs(t.foot - b) else b
+            rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
     lab = Labeler(rec)
     if omega_at is not None:
         ck = mech.crank
-        pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / fp.mu_l
+        pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
         _omega(rec, lab, omega_at, mech.omega1, cmath.phase(omega_at - pin))
     for z, name in names:
-        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
-    for k, (about, t) in enumerate(arms, 1):
+        side = next((v for c, v in clear.items() if abs(c - z) < 0.5), -1 - 1j)
+        lab.place(z, indexed(name), 3.5, side, step)
+    for k, (about, t, _) in enumerate(arms, 1):
         mid = 0.5 * (about + t.foot)
         lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
@@ -191,7 +287,7 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
     pivot = next(r.at for r in fp.ks.reactions.values() if r.on == crank and r.frm == FRAME)
     loads.append(GForce("M_b", crank, complex(pivot[0]), 0j, couple=fp.balancing))
     links = tuple(link for gp in reversed(fp.groups) for link in gp.links)
-    whole = GroupPlan("0", "mechanism", links, loads, [], [], [], {}, {}, [])
+    whole = GroupPlan("0", "mechanism", links, loads, [], [], [], {}, {}, [], fp.mu_l)
     rec = group_record(fp, whole, lang, omega_at=complex(pivot[0]) / fp.mu_l)
     rec.title = "mechanism with its loads"
     return rec
@@ -215,20 +311,36 @@ def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: 
 
 def _about(fp: ForcePlans, name: str, gp: GroupPlan) -> complex | None:
     mech, kin = fp.ks.mech, fp.ks.kin
+    mu = _mu(fp, gp)
     for link in gp.links:
         lk = mech.links[link]
         if name in lk.local:
-            return complex(kin.bodies[link].at(lk.local[name])[0][0]) / fp.mu_l
-    return complex(kin.point(name)[0][0]) / fp.mu_l if name in mech.point_names() else None
+            return complex(kin.bodies[link].at(lk.local[name])[0][0]) / mu
+    return complex(kin.point(name)[0][0]) / mu if name in mech.point_names() else None
 
 
-def _couple(rec: Record, z: complex, couple: float, step: str, r: float = 5.0) -> None:
-    """A couple: an arc with an arrowhead in its sense."""
-    rec.arc(_pt(z), r, 30.0, 150.0, role="relative", layer="vectors", step=step)
-    end = math.radians(150.0 if couple > 0 else 30.0)
+def _free_direction(taken: list[float]) -> float:
+    """The direction (rad, of 24 around) farthest in angle from every direction in ``taken``."""
+    def gap(a: float) -> float:
+        return min(abs((a - t + math.pi) % (2 * math.pi) - math.pi) for t in taken) if taken else math.pi
+    return max((math.radians(15.0 * k) for k in range(24)), key=gap)
+
+
+def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, r: float = 6.0,
+                span: float = 120.0, name: str = "M_b") -> complex:
+    """A moment drawn at ``z`` as an arc of ``span``° centred on the direction ``away`` (rad) with an
+    arrowhead in its sense (+ counter-clockwise), the arrowhead's record text ``name`` (M_b; a couple
+    of inertia none: a record's named vectors are its forces); returns the arc's middle."""
+    c = math.degrees(away)
+    a0, a1 = c - span / 2, c + span / 2
+    rec.arc(_pt(z), r, a0 % 360.0, a0 % 360.0 + span, role="relative", layer="vectors", step=step,
+            width=0.5)
+    end = math.radians(a1 if couple > 0 else a0)
     tip = z + r * complex(math.cos(end), math.sin(end))
     tangent = 1j * (tip - z) / r * (1 if couple > 0 else -1)
-    rec.vector(_pt(tip - 2.5 * tangent), _pt(tip), role="relative", layer="vectors", step=step)
+    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="vectors", step=step,
+               text=name)
+    return z + r * complex(math.cos(away), math.sin(away))
 
 
 # -- a force polygon ---------------------------------------------------------------------------
@@ -326,17 +438,18 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm)."""
     rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
+    from graphplan.graphic.draftsman import measure
     cells = []
-    for f in gp.forces:
+    for f in gp.forces:       # "on the drawing, mm": each length as laid off with the ruler
         if f.force:
-            cells.append((f.name, abs(f.force), abs(f.force) / fp.mu_F))
+            cells.append((f.name, abs(f.force), measure(abs(f.force) / fp.mu_F, fp.precision)))
         if f.couple:
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, abs(eq.result), abs(eq.result) / fp.mu_F))
+            cells.append((eq.unknown, abs(eq.result), measure(abs(eq.result) / fp.mu_F, fp.precision)))
     for m in gp.reactions.values():
-        cells.append((m.key, m.value, m.mm))
+        cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
     rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in cells],
             [word("drawn mm", lang)] + [num(c[2], lang) for c in cells]]
@@ -372,10 +485,29 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
     return word("kin why_ruler", lang, sym=sym)
 
 
-def results_record(fp: ForcePlans, lang: str = "uk") -> Record:
+TABLE_WORD = {"uk": "Таблиця", "en": "Table"}
+REACTIONS_TITLE = {"uk": "Реакції: з планів сил і точні", "en": "Reactions: by the force plans and exact"}
+
+
+def table_title(n: int, title: str, lang: str) -> str:
+    """A table's numbered title as the sheets write it: "Таблиця 3. Сили групи II(4-5)"."""
+    return f"{TABLE_WORD.get(lang, 'Table')} {n}. {title}"
+
+
+def _title_above(rec: Record, y_top: float, title: str, step: str) -> None:
+    """A table's title over its top edge at ``y_top`` (wrapped to the tables' width)."""
+    from graphplan.drawing.tables import TITLE_MM, title_lines
+    lines = title_lines(title, TITLE_MM)
+    for k, line in enumerate(lines):
+        rec.label((0.0, y_top + 2.2 + line_pitch(3.5) * (len(lines) - 1 - k)), line, size=3.5,
+                  layer="tables", step=step)
+
+
+def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) -> Record:
     """The balancing moment found four ways and each reaction against its closed form; a result
     past the lab's 5 % is marked (*) and the lines under the tables say why (a short vector, a small
-    angle between the polygon's closing lines, a short pa on the lever, the arms' ruler)."""
+    angle between the polygon's closing lines, a short pa on the lever, the arms' ruler). With
+    ``number`` the two tables are titled "Table n." and "Table n+1." (the sheet's numbering)."""
     rec = Record(word("balancing moment", lang))
     step = "results"
     a = fp.analytic
@@ -392,7 +524,16 @@ def results_record(fp: ForcePlans, lang: str = "uk") -> Record:
             else:
                 why.append(word("fs why arms", lang, sym=sym, p=num(fp.precision, lang)))
         rows.append([word(name, lang), num(value, lang).replace("-", "−"), err])
+    if number is not None:
+        _title_above(rec, 0.0, table_title(number, word("fs results", lang), lang), step)
     bottom = _table(rec, 0.0, 0.0, [word("M_b", lang), unit("N·m", lang), "δ, %"], rows, [34.0, 22.0, 18.0], step)
+    if number is not None:
+        bottom -= 8.0
+        from graphplan.drawing.tables import TITLE_MM, title_lines
+        title = table_title(number + 1, REACTIONS_TITLE.get(lang, REACTIONS_TITLE["en"]), lang)
+        bottom -= line_pitch(3.5) * (len(title_lines(title, TITLE_MM)) - 1)
+        _title_above(rec, bottom, title, step)
+        bottom += 8.0
     rows = []
     for m in fp.reactions().values():
         err = _pct(m.error_pct, lang)

@@ -26,7 +26,7 @@ import numpy as np
 from graphplan.graphic.draftsman import measure  # noqa: F401  (the one ruler)
 from graphplan.graphic.scales import SERIES, at_least as standard_scale  # noqa: F401  (the one series)
 from graphplan.exact.kinematics import cross, dot
-from graphplan.exact.kinetostatics import CRANK_LABEL, Kinetostatics, analyse, number
+from graphplan.exact.kinetostatics import CRANK_LABEL, Kinetostatics, analyse, number, reaction_key
 from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
 from graphplan.graphic.lever import Lever, LeverTerm, lever, velocity_scale  # noqa: F401
@@ -62,7 +62,7 @@ class GForce:
     at: complex          # m
     force: complex       # N, as the draftsman uses it (loads exact, reactions as measured)
     couple: float = 0.0  # N·m
-    kind: str = "load"   # "load" or "reaction"
+    kind: str = "load"   # "load", "reaction" (handed over by a group solved before) or "balancing" (M_зр)
 
 
 @dataclass
@@ -111,7 +111,9 @@ class Measured:
     analytic: float
     analytic_angle_deg: float
     error_pct: float | None
-    vector: complex      # the measured force on the higher-numbered link, N
+    vector: complex      # the measured force on the higher-numbered link, N (as ``key`` reads it)
+    name: str = ""       # R<from><to> as the group it was found in bears it: <to> in that group
+    acting: complex = 0j  # the measured force on that group's link (``name``), N
 
 
 @dataclass
@@ -127,6 +129,7 @@ class GroupPlan:
     reactions: dict[str, Measured]
     points: dict[str, complex]                      # the group's points on the drawing (mm)
     segments: list[tuple[str, str]]                 # the group's links as point pairs
+    mu_l: float = 0.0                               # the scale the group is drawn (and measured) at, m/mm
 
 
 @dataclass
@@ -286,15 +289,17 @@ class _Plans:
                  couple_line: complex | None = None) -> Measured:
         """Read a reaction (the force on ``on`` from ``frm``) and hand it to the links it loads."""
         mm, force = self.d.read(vec_mm)
-        for body, f in ((frm, -force), (on, force)):
+        for body, other, f in ((frm, on, -force), (on, frm, force)):
             if body != FRAME and body not in self.current:
                 where = couple_line if couple_line is not None else at
-                self.d.known[body].append(GForce(key, body, where, f, 0.0, "reaction"))
+                # handed over to a later group: the force of ``other`` on ``body``, named so (R43)
+                self.d.known[body].append(GForce(reaction_key(self.mech, other, body), body, where, f,
+                                                 0.0, "reaction"))
         truth = self.ks.reactions[key]
         t = complex(truth.force[0])
         v = _orient(self.mech, frm, on, force)
         return Measured(key, mm, abs(v), angle_deg(v), abs(t), angle_deg(t),
-                        error_pct(abs(v), abs(t), self.d.scale), v)
+                        error_pct(abs(v), abs(t), self.d.scale), v, reaction_key(self.mech, frm, on), force)
 
     def key_of(self, group: str, pair) -> str:
         for k, r in self.ks.reactions.items():
@@ -324,15 +329,19 @@ class _Plans:
         def pair_key(pair):
             return self.key_of(d.label, pair)
 
+        def on(pair, body):
+            """The reaction in ``pair`` as it acts on the group's ``body``: R<from><to>."""
+            return reaction_key(self.mech, pair.other(body), body)
+
         if kind in ("RRR", "RRP"):
             p1, c = self.d.pair_at(d.outer_a), self.d.pair_at(d.inner)
             la = self.d.length(p1, c)
             ua = (c - p1) / abs(c - p1)
             # moment of link a about C: M_a(C) − l·τ_a = 0 (τ along i·u_a)
-            ea = self.equation(d.inner.point, c, (d.a,), f"{pair_key(d.outer_a)}τ", -la)
+            ea = self.equation(d.inner.point, c, (d.a,), f"{on(d.outer_a, d.a)}τ", -la)
             eqs.append(ea)
             ta = ea.result
-            poly.lay(f"{pair_key(d.outer_a)}τ", 1j * ta * ua, "component")
+            poly.lay(f"{on(d.outer_a, d.a)}τ", 1j * ta * ua, "component")
             t_end = poly.end
             poly.lay_all(fa)
             vb = poly.end
@@ -341,14 +350,14 @@ class _Plans:
                 p3 = self.d.pair_at(d.outer_b)
                 lb = self.d.length(p3, c)
                 ub = (c - p3) / abs(c - p3)
-                eb = self.equation(d.inner.point, c, (d.b,), f"{pair_key(d.outer_b)}τ", -lb)
+                eb = self.equation(d.inner.point, c, (d.b,), f"{on(d.outer_b, d.b)}τ", -lb)
                 eqs.append(eb)
-                u_start = poly.lay(f"{pair_key(d.outer_b)}τ", 1j * eb.result * ub, "component")
+                u_start = poly.lay(f"{on(d.outer_b, d.b)}τ", 1j * eb.result * ub, "component")
                 k = poly.close_two(ub, ua)
-                poly.side(f"{pair_key(d.outer_b)}n", poly.end, k, "component")
+                poly.side(f"{on(d.outer_b, d.b)}n", poly.end, k, "component")
                 kb = pair_key(d.outer_b)
                 found[kb] = self.measured(kb, k - u_start, d.outer_b.other(d.b), d.b, d.outer_b, p3)
-                poly.side(kb, u_start, k)
+                poly.side(found[kb].name, u_start, k)
                 pts[d.outer_b.point] = p3
             else:
                 ng = 1j * self.d.guide(d.outer_b)
@@ -359,14 +368,14 @@ class _Plans:
                 # the slider's moment about C places the guide's reaction along the guide
                 line = self.p_line(d.b, c, d.outer_b, xb, force_b)
                 found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb, line)
-                poly.side(kb, poly.end, k)
+                poly.side(found[kb].name, poly.end, k)
                 pts[d.outer_b.point + "'"] = xb
-            poly.side(f"{pair_key(d.outer_a)}n", k, 0j, "component")
+            poly.side(f"{on(d.outer_a, d.a)}n", k, 0j, "component")
             ka, ki = pair_key(d.outer_a), pair_key(d.inner)
             found[ka] = self.measured(ka, t_end - k, d.outer_a.other(d.a), d.a, d.outer_a, p1)
-            poly.side(ka, k, t_end)
+            poly.side(found[ka].name, k, t_end)
             found[ki] = self.measured(ki, vb - k, d.a, d.b, d.inner, c)
-            poly.side(ki, k, vb)
+            poly.side(found[ki].name, k, vb)
             pts[d.outer_a.point], pts[d.inner.point] = p1, c
             segs = [(d.outer_a.point, d.inner.point)] + ([(d.outer_b.point, d.inner.point)]
                                                          if kind == "RRR" else [])
@@ -381,20 +390,22 @@ class _Plans:
             rho = self.d.mm(ps - pc)
             along_arm = math.copysign(measure(abs(dot(rho, g)), self.p), dot(rho, g)) * self.d.mu_l
             off_arm = math.copysign(measure(abs(cross(rho, g)), self.p), cross(rho, g)) * self.d.mu_l
-            extra = [Term(f"{ks_}^∥", r_along, off_arm / self.d.mu_l, r_along * off_arm)] if r_along else []
-            e = self.equation(outer_c.point, pc, (slider, carrier), f"{ks_}^⊥", along_arm, extra)
+            foot = self.d.mm(ps + dot(pc - ps, g) * g)      # on the guide's line through the block
+            extra = ([Term(f"{on(outer_s, slider)}^∥", r_along, off_arm / self.d.mu_l, r_along * off_arm, foot)]
+                     if r_along else [])
+            e = self.equation(outer_c.point, pc, (slider, carrier), f"{on(outer_s, slider)}^⊥", along_arm, extra)
             eqs.append(e)
             r_s = r_along * g + e.result * n
-            start = poly.lay(ks_, r_s, "known")
+            start = poly.lay(on(outer_s, slider), r_s, "known")
             poly.lay_all(self.d.known[slider])
             vc = poly.end
             poly.lay_all(self.d.known[carrier])
             found[ks_] = self.measured(ks_, self.d.drawn(r_s), outer_s.other(slider), slider, outer_s, ps)
             kc, ki = pair_key(outer_c), pair_key(d.inner)
             found[kc] = self.measured(kc, start - poly.end, outer_c.other(carrier), carrier, outer_c, pc)
-            poly.side(kc, poly.end, start)
+            poly.side(found[kc].name, poly.end, start)
             found[ki] = self.measured(ki, start - vc, carrier, slider, d.inner, ps)
-            poly.side(ki, vc, start, "component")
+            poly.side(found[ki].name, vc, start, "component")
             pts[outer_s.point], pts[outer_c.point] = ps, pc
             # the rocker's drawn extent: its pivot, the block and any joint it carries
             far = [p for p in self.mech.links[carrier].joints if p != outer_c.point]
@@ -415,12 +426,12 @@ class _Plans:
             _, force_a = self.d.read(0j - k)
             found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb,
                                       self.p_line(d.b, c, d.outer_b, xb, force_b))
-            poly.side(kb, poly.end, k)
+            poly.side(found[kb].name, poly.end, k)
             found[ka] = self.measured(ka, 0j - k, d.outer_a.other(d.a), d.a, d.outer_a, xa,
                                       self.p_line(d.a, c, d.outer_a, xa, force_a))
-            poly.side(ka, k, 0j)
+            poly.side(found[ka].name, k, 0j)
             found[ki] = self.measured(ki, vb - k, d.a, d.b, d.inner, c)
-            poly.side(ki, k, vb)
+            poly.side(found[ki].name, k, vb)
             pts[d.inner.point] = c
         elif kind == "RPP":
             pa = self.d.pair_at(d.outer_a)
@@ -436,17 +447,17 @@ class _Plans:
             back = -abs(r_in) * cross(self.d.mm(in_line - xb), r_in / abs(r_in)) * self.d.mu_l if r_in else 0.0
             found[kb] = self.measured(kb, k - poly.end, d.outer_b.other(d.b), d.b, d.outer_b, xb,
                                       self.p_line(d.b, xb, d.outer_b, xb, r_b, back))
-            poly.side(kb, poly.end, k)
+            poly.side(found[kb].name, poly.end, k)
             found[ki] = self.measured(ki, k - 0j, d.b, d.a, d.inner, x_in)
-            poly.side(ki, 0j, k)
+            poly.side(found[ki].name, 0j, k)
             poly.end = k
             poly.lay_all(fa)
             found[ka] = self.measured(ka, 0j - poly.end, d.outer_a.other(d.a), d.a, d.outer_a, pa)
-            poly.side(ka, poly.end, 0j)
+            poly.side(found[ka].name, poly.end, 0j)
             pts[d.outer_a.point] = pa
         forces = self.d.known[d.a] + self.d.known[d.b]
         self.groups.append(GroupPlan(d.label, kind, (d.a, d.b), forces, eqs, poly.sides, poly.lines,
-                                     found, {k: self.d.mm(v) for k, v in pts.items()}, segs))
+                                     found, {k: self.d.mm(v) for k, v in pts.items()}, segs, self.d.mu_l))
 
     @property
     def p(self) -> float:
@@ -482,11 +493,25 @@ class _Plans:
         eq = MomentEquation(mech.crank.pivot, (crank,), terms, "M_b", 0.0, m_b)
         transferred = [t for t in terms if t.name.startswith("R")]
         arm = transferred[0].arm_mm if len(transferred) == 1 else float("nan")
-        self.groups.append(GroupPlan(CRANK_LABEL, "crank", (crank,), list(self.d.known[crank]), [eq],
+        # the balancing moment M_зр (found here) acts on the crank with its sense: drawn and tabulated
+        balancing = GForce("M_b", crank, o, 0j, m_b, "balancing")
+        self.groups.append(GroupPlan(CRANK_LABEL, "crank", (crank,), list(self.d.known[crank]) + [balancing], [eq],
                                      poly.sides, poly.lines, found,
                                      {mech.crank.pivot: self.d.mm(o), mech.crank.pin: self.d.mm(a)},
-                                     [(mech.crank.pivot, mech.crank.pin)]))
+                                     [(mech.crank.pivot, mech.crank.pin)], self.d.mu_l))
         return m_b, arm
+
+
+def group_extent(ks: Kinetostatics, links: tuple[str, ...]) -> float:
+    """The larger side of the box around a group's points (its links' joints and centres of mass) in
+    the analysed position, m."""
+    mech, kin = ks.mech, ks.kin
+    pts = [complex(kin.bodies[link].at(mech.links[link].local[p])[0][0])
+           for link in links for p in mech.links[link].local]
+    if len(pts) < 2:
+        return 0.0
+    xs, ys = [z.real for z in pts], [z.imag for z in pts]
+    return max(max(xs) - min(xs), max(ys) - min(ys))
 
 
 def mechanism_scale(st: Study, target_mm: float = MECHANISM_MM) -> float:
@@ -507,16 +532,22 @@ def force_scale(ks: Kinetostatics, target_mm: float = POLYGON_MM) -> float:
 
 def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
               mu_l: float | None = None, mu_F: float | None = None,
-              mu_v: float | None = None) -> ForcePlans:
-    """The force plans of every group, the crank's balancing moment and the lever at one angle."""
+              mu_v: float | None = None, group_mu: dict[str, float] | None = None) -> ForcePlans:
+    """The force plans of every group, the crank's balancing moment and the lever at one angle.
+    Every group is drawn (and its arms measured) at ``mu_l``, a group named in ``group_mu`` (label →
+    m/mm) at its own scale — the force sheet draws a small group (the crank's) larger where its cell
+    has room (sheets.forces)."""
     phi = float(phi_deg) % 360.0
     ks = analyse(st, [phi])
     mu_l = mu_l or mechanism_scale(st)
     mu_F = mu_F or force_scale(ks)
     plans = _Plans(ks, precision, mu_l, mu_F)
+    scales = dict(group_mu or {})
     for gf in ks.groups:
         if gf.dyad is not None:
+            plans.d.mu_l = scales.get(gf.label, mu_l)
             plans.group(gf)
+    plans.d.mu_l = scales.get(CRANK_LABEL, mu_l)
     m_b, arm = plans.crank()
     return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v))
 

@@ -65,12 +65,19 @@ def forces_json(fp) -> dict[str, Any]:
         "reactions": reactions,
         "inertia": inertia,
         "groups": [{"label": g.label, "kind": g.kind, "links": list(g.links),
-                    "reactions": list(g.reactions)} for g in fp.groups],
+                    "reactions": list(g.reactions),
+                    "acting": {k: m.name for k, m in g.reactions.items()}} for g in fp.groups],
     })
 
 
 def _row(cells: list[str], widths: list[int]) -> str:
     return "  ".join(c.rjust(w) for c, w in zip(cells, widths)).rstrip()
+
+
+def drawn_mm(mm: float, precision: float) -> float:
+    """A known force's length on its plan as the draftsman lays it off: to the ruler's precision."""
+    from graphplan.graphic.draftsman import measure
+    return measure(mm, precision) if precision > 0 else mm
 
 
 def forces_table(fp, lang: str = "uk") -> str:
@@ -114,7 +121,7 @@ def forces_table(fp, lang: str = "uk") -> str:
         cells = []
         for f in gp.forces:
             if f.force:
-                cells.append((sym(f.name), n(abs(f.force), 5), n(abs(f.force) / fp.mu_F)))
+                cells.append((sym(f.name), n(abs(f.force), 5), n(drawn_mm(abs(f.force) / fp.mu_F, fp.precision))))
             if f.couple:
                 cells.append((sym(f.name), f"{n(f.couple, 5)} {unit('N·m', lang)}", "—"))
         lines.append(w("forces on group"))
@@ -125,8 +132,9 @@ def forces_table(fp, lang: str = "uk") -> str:
         lines.append("  " + _row(["R", unit("mm", lang), f"{w('value')}, {unit('N', lang)}", w("angle deg"),
                                   w("exact N"), w("exact deg"), "δ, %"], rw))
         for m in gp.reactions.values():
-            lines.append("  " + _row([sym(m.key), n(m.mm), n(m.value, 5), fixed(m.angle_deg, lang, 1),
-                                      n(m.analytic, 5), fixed(m.analytic_angle_deg, lang, 1),
+            turn = 0.0 if m.name == m.key else 180.0     # the force on the group's link, as named
+            lines.append("  " + _row([sym(m.name), n(m.mm), n(m.value, 5), fixed((m.angle_deg + turn) % 360, lang, 1),
+                                      n(m.analytic, 5), fixed((m.analytic_angle_deg + turn) % 360, lang, 1),
                                       pct(m.error_pct, lang)], rw))
     lv = fp.lever
     lines += ["", plain(w("lever head", mv=n(lv.mu_v), pa=n(lv.pa_mm)))]

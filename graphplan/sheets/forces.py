@@ -11,6 +11,7 @@ format by arithmetic (``plan``); ``forces --format`` prints the same numbers (``
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -116,6 +117,14 @@ SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a 
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
+GROUP = "group "      # mu["group I(0-1)"]: a group drawn at its own scale
+
+
+def group_scales(mu: dict[str, float]) -> tuple[tuple[str, float], ...]:
+    """The groups the plan draws at their own scales, (label, μl) in order."""
+    return tuple(sorted((k[len(GROUP):], v) for k, v in mu.items() if k.startswith(GROUP)))
+
+
 @dataclass
 class ForceDrafter:
     """Draws what the force sheet holds at given scales, remembering it."""
@@ -135,10 +144,17 @@ class ForceDrafter:
             self.memo[key] = make()
         return self.memo[key]
 
-    def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None):
+    def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None,
+           group_mu: tuple[tuple[str, float], ...] = ()):
         from graphplan.graphic import forceplans
-        return self._once(("fp", mu_l, mu_F, mu_v), lambda: forceplans.construct(
-            self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v))
+        return self._once(("fp", mu_l, mu_F, mu_v, group_mu), lambda: forceplans.construct(
+            self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
+            group_mu=dict(group_mu)))
+
+    def groups_fp(self, mu: dict[str, float]):
+        """The groups' force plans at the sheet's scales: μl, μF, μv and a group's own μl where the
+        plan draws it larger (``mu["group <label>"]``)."""
+        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
 
     def plans(self, mu_a: float | None = None):
         from graphplan.graphic.plans import build_plans
@@ -159,7 +175,7 @@ class ForceDrafter:
             from graphplan.drawing import charts as forcecharts
             from graphplan.drawing import forces as forcedraw
             from graphplan.drawing.plans import acceleration_records
-            fp = self.fp(mu["groups"], mu["forces"], mu["lever"])
+            fp = self.groups_fp(mu)
             scheme = self.fp(mu["scheme"], mu["forces"], mu["lever"])
             plans = self.plans(mu["acceleration"])
             q = next(x for x in plans.positions if x.acceleration is not None)
@@ -198,7 +214,8 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
     names = dr.names()
     at = force_position(dr.st, dr.phi, lang)
     out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
-           "groups": [(_caption(n, lang), format_scale('mu_l', mu['groups'], lang)) for n in names["groups"]],
+           "groups": [(_caption(n, lang), format_scale('mu_l', gp.mu_l or mu['groups'], lang))
+                      for n, gp in zip(names["groups"], dr.groups_fp(mu).groups)],
            "forces": [(_caption(n, lang), "") for n in names["forces"]],     # μF under the plan itself
            "acceleration": [(f"{w('acceleration')}, {w('position')}",
                              f"{format_scale('mu_a', mu['acceleration'], lang)},  {at}")],
@@ -210,7 +227,7 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
 
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
     """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
-    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"])
+    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
     return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
 
 
@@ -223,14 +240,28 @@ def _tables_at(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[tuple[
     plans = dr.plans(mu["acceleration"])
     acc_doc = next(d for d in plans_json(plans)["positions"] if "acceleration" in d)
     n = len(st.mech.task.accel) + 1 if st.mech.task.accel else 2   # after the kinematics sheet's 2.1 …
-    fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
-    out = [("acceleration table", acceleration_table(acc_doc, n, lang, p)),
-           ("inertia table", inertia_table(st, dr.ks, acc_doc, lang))]
-    for gp in fp.groups:
+    fp = dr.groups_fp(mu)
+    # numbered 1, 2, 3 … in reading order on this sheet (not the kinematics sheet's 2.n, nor a fixed 5)
+    out = [("acceleration table", _renumbered(acceleration_table(acc_doc, n, lang, p), 1)),
+           ("inertia table", _renumbered(inertia_table(st, dr.ks, acc_doc, lang), 2))]
+    for k, gp in enumerate(fp.groups, 3):
         rec = forcedraw.group_table_record(fp, gp, lang)
-        out.append((f"table {gp.label}", _titled(rec, _caption(f"table {gp.label}", lang))))
-    out.append(("results", _titled(forcedraw.results_record(fp, lang), _caption("results", lang))))
+        title = forcedraw.table_title(k, f"{_caption(f'table {gp.label}', lang)}, {unit('N', lang)}", lang)
+        out.append((f"table {gp.label}", _titled(rec, title)))
+    out.append(("results", forcedraw.results_record(fp, lang, number=3 + len(fp.groups))))
     return out
+
+
+_NUMBER = re.compile(r"^(Таблиця|Table) [0-9]+(?:\.[0-9]+)?\.")
+
+
+def _renumbered(rec: Record, n: int) -> Record:
+    """A table whose title carries another sheet's number ("Таблиця 2.2.", "Таблиця 5.") numbered
+    ``n`` as this sheet reads it."""
+    from dataclasses import replace
+    items = [replace(p, text=_NUMBER.sub(lambda m: f"{m.group(1)} {n}.", p.text, count=1))
+             if p.kind == "text" and _NUMBER.match(p.text) else p for p in rec.items]
+    return Record(rec.title, items, dict(rec.scales))
 
 
 def _titled(rec: Record, title: str) -> Record:
@@ -244,12 +275,16 @@ def _titled(rec: Record, title: str) -> Record:
 def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]:
     from graphplan.graphic.scales import format_scale
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
-    fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+    fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
     scales = [format_scale("mu_l", mu["scheme"], lang)]
-    if mu["groups"] != mu["scheme"]:
-        scales.append(format_scale("mu_l", mu["groups"], lang) + f" ({w('group').lower()})")
+    by_scale: dict[float, list[str]] = {}
+    for gp in fp.groups:                  # each group at its own scale (forceplans.group_scales)
+        by_scale.setdefault(gp.mu_l or mu["groups"], []).append(gp.label)
+    for m_l, labels in by_scale.items():
+        if m_l != mu["scheme"]:
+            scales.append(format_scale("mu_l", m_l, lang) + f" ({w('group').lower()} {', '.join(labels)})")
     scales += [format_scale(m, mu[k], lang) for m, k in (("mu_F", "forces"), ("mu_a", "acceleration"),
                                                           ("mu_v", "lever"))]
     from graphplan.sheets.compose import lines_of
@@ -312,15 +347,26 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, counts: tuple[int, 
     return Leaf("column", width, ch + GAP + height(width) + GAP + foot), groups, width
 
 
-SHAPES = ("column", "bands")
+ACROSS = " across"
+SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS)
+# the families grown in turn in these orders; the better composition kept (a tight sheet where the
+# force plans, grown first, leave the groups at 0.4 of their size has a twin with both at ≥ 0.56)
+ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"),
+          ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs"))
 
 
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
-    the sheet's full height at the right; "bands" — the column under the groups' band."""
+    the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
+    — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
+    slotter's at 1:5 instead of 1:10)."""
     S = leaves["scheme"][0]
-    groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    if shape.endswith(ACROSS):
+        groups = Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    else:
+        groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    shape = shape.removesuffix(ACROSS)
     A, L = leaves["acceleration"][0], leaves["lever"][0]
     charts = leaves["charts"]
     H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
@@ -366,9 +412,8 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
                             found = (fill, hc, parts)
             return found
 
-        for shape in SHAPES:
-            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None,
-                               ("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"))
+        for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
+            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None, order)
             if mu is None:
                 continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
@@ -451,7 +496,64 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
         if _checked(dr, nat, p):
             break
-    return p, nat, dr
+    return _grown_groups(dr, nat, f, p), nat, dr
+
+
+GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
+
+
+def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool:
+    """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
+    or needs no more sheets (a set)."""
+    if p.shape == "set":
+        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
+        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
+        rows.append([Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
+                    + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
+        out = flow(rows, field_of(f), keep_out(f))
+        return out is not None and len(out) <= p.sheets
+    x0, y0, x1, y1 = field_of(f)
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
+    C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
+    tw, th = extent(_tree(p.shape, leaves, p.hcols, C))
+    return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
+
+
+def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """LAYOUT.md's rule for each group: the largest standard scale that fits its cell. A group
+    smaller than the largest (the crank's, a short dyad) is drawn at a finer standard μl than the
+    family's — no larger than the largest group's drawing — while the composition still fits the
+    sheet at every other scale unchanged (the crank group of a long-rocker shaper at 1:2, not 1:5
+    with G1 and Φ1 crowding its 20 mm). The grown scales go into ``mu`` as "group <label>"."""
+    from graphplan.graphic.forceplans import group_extent
+    from graphplan.sheets.compose import finer
+    fam = nat.families["groups"]
+    mu = dict(p.mu)
+    base = mu["groups"]
+    fp = dr.fp(base, mu["forces"], mu["lever"])
+    extents = {gf.label: group_extent(dr.ks, gf.links) for gf in dr.ks.groups}
+    largest = max(list(extents.values()) + [0.0])
+    if largest <= 0:
+        return p
+    leaves = _leaves(nat, mu)
+    for i in reversed(range(len(fp.groups))):          # the crank first: the smallest, solved last
+        label = fp.groups[i].label
+        e = extents.get(label, 0.0)
+        if e <= 0:
+            continue
+        best, s = None, finer(base)
+        while s is not None and e / s <= largest / base + 1e-9:
+            w, h = fam.size(s, i)
+            trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
+                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
+                                          *leaves["groups"][i + 1:]]}
+            if not _fits(nat, f, p, trial):
+                break
+            best, s = (s, trial), finer(s)
+        if best is not None:
+            mu[GROUP + label] = best[0]
+            leaves = best[1]
+    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
 
 
 def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
@@ -468,7 +570,8 @@ def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[
     """μl (of the groups) and μF of the force sheet of ``format`` — for ``forces --format``; no sheet
     is built."""
     p, _, _ = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
-    return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"]}
+    return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"],
+            "group_mu": dict(group_scales(p.mu))}
 
 
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
