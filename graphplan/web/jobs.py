@@ -357,7 +357,7 @@ def _side_by_side(drawings, lang: str) -> str:
     boxes = [d[1][1] for d in drawings if d[1] is not None]
     w = max(b[2] - b[0] for b in boxes)
     h = max(b[3] - b[1] for b in boxes)
-    cap = 9.0
+    cap = max(9.0, w / 30)
     for k, (chosen, drawn, error) in enumerate(drawings):
         x = k * (w + 10)
         said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '-1'}" for n, v in chosen.items())
@@ -366,7 +366,8 @@ def _side_by_side(drawings, lang: str) -> str:
                  f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
                  'stroke-width="0.3"/>']
         if caption:
-            parts.append(f'<text x="4" y="6" font-size="4" font-family="osifont, sans-serif">{escape(caption)}</text>')
+            parts.append(f'<text x="4" y="{cap * 0.7:.3f}" font-size="{cap * 0.5:.3f}" '
+                         f'font-family="sans-serif">{escape(caption)}</text>')
         if drawn is not None:
             rec, (x0, y0, x1, y1) = drawn
             moved = rec.moved(-x0, -y0)
@@ -378,8 +379,9 @@ def _side_by_side(drawings, lang: str) -> str:
             parts.append(inner)
         else:
             lines = _wrap(error, 60)
+            size = max(4.0, w / 60)
             for j, line in enumerate(lines):
-                parts.append(f'<text x="4" y="{cap + 8 + 6 * j:.3f}" font-size="4" fill="#a00" '
+                parts.append(f'<text x="4" y="{cap + 2 * size + 1.5 * size * j:.3f}" font-size="{size:.3f}" fill="#a00" '
                              f'font-family="sans-serif">{escape(line)}</text>')
         parts.append("</g>")
         cells.append("".join(parts))
