@@ -175,13 +175,13 @@ def test_bodies_over_the_limits_are_413(client):
 
 def test_at_the_bound_of_work_503_with_retry_after_and_past_the_time_bound_the_worker_is_replaced(client):
     pool = client.app.state.pool
-    idle, pool.idle, busy = pool.idle, [], pool.busy
-    pool.busy = pool.size
+    idle, pool.idle, busy, queue_wait = pool.idle, [], pool.busy, pool.queue_wait
+    pool.busy, pool.queue_wait = pool.size, 0.2          # every worker busy, a short wait in the queue
     try:
         r = client.post("/api/scene/check", content=CRANK.encode())
         assert "busy" in refused(r, 503) and int(r.headers["retry-after"]) > 0
     finally:
-        pool.idle, pool.busy = idle, busy
+        pool.idle, pool.busy, pool.queue_wait = idle, busy, queue_wait
     pool.timeout, bound = 0.05, pool.timeout
     try:
         line = refused(client.post("/api/sheet?kind=kinematics&format=A1", content=CRANK.encode()))

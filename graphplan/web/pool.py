@@ -148,8 +148,13 @@ def clean_stale(root: Path | None = None) -> list[Path]:
 class Pool:
     """``size`` workers, each job bounded by ``timeout`` seconds."""
 
-    def __init__(self, size: int = 2, timeout: float = 120.0, root: Path | None = None):
+    def __init__(self, size: int = 2, timeout: float = 120.0, root: Path | None = None,
+                 queue_wait: float = 20.0, queue: int | None = None):
         self.size, self.timeout = max(1, size), timeout
+        self.queue_wait = queue_wait              # s a request waits for a free worker before 503
+        self.queue = 16 * self.size if queue is None else queue   # requests that may wait at once
+        self.waiting = 0
+        self.freed: asyncio.Event | None = None
         clean_stale(root)
         self.root = Path(tempfile.mkdtemp(prefix=f"{PREFIX}{os.getpid()}-", dir=root))
         self.idle: list[Worker] = []
@@ -165,6 +170,30 @@ class Pool:
         return self.root / secrets.token_hex(8)
 
     async def take(self) -> Worker:
+        """An idle worker, a new one below ``size``, or — when all work — a wait of at most
+        ``queue_wait`` s in a queue of at most ``queue`` requests; then Busy."""
+        import time
+        deadline = time.monotonic() + self.queue_wait
+        while not self.idle and self.busy >= self.size:
+            left = deadline - time.monotonic()
+            if left <= 0 or self.waiting >= self.queue:
+                raise Busy(max(1, round(self.queue_wait / 4)))
+            self.freed = self.freed or asyncio.Event()
+            self.waiting += 1
+            try:
+                await asyncio.wait_for(self.freed.wait(), left)
+            except asyncio.TimeoutError:
+                pass
+            finally:
+                self.waiting -= 1
+        return await self._take()
+
+    def _release(self) -> None:
+        if self.freed is not None:
+            self.freed.set()
+            self.freed = None
+
+    async def _take(self) -> Worker:
         if self.idle:
             self.busy += 1
             return self.idle.pop()
@@ -197,6 +226,7 @@ class Pool:
             else:                  # stopped mid-job (time bound, a cancelled request): a fresh one later
                 worker.kill()
                 shutil.rmtree(folder, ignore_errors=True)
+            self._release()
 
     async def close(self) -> None:
         for w in self.idle:
