@@ -168,7 +168,8 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     buttons = d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")
     assert len(buttons) == 2 and "B = −1" in buttons[1].get_attribute("aria-label")
     shot(d, tmp_path, "serve_student")
-    buttons[1].click()                                                   # the lower assembly
+    from selenium.webdriver.common.keys import Keys
+    buttons[1].send_keys(Keys.ENTER)                                     # the lower one, by the keyboard
     wait(d, lambda: "B = −1" in d.find_element(By.ID, "branch-said").text, what="the chosen assembly said")
     wait(d, lambda: "[branch]\nB = -1" in d.find_element(By.ID, "toml").get_attribute("value"),
          what="the TOML with the assembly")
@@ -183,6 +184,12 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     set_value(d, "f-l2", "0.05")
     wait(d, lambda: "crank angle" in d.find_element(By.ID, "scene-error").text, what="the assembly's ranges")
     shot(d, tmp_path, "serve_error")
+    Select(d.find_element(By.ID, "lang")).select_by_value("uk")          # the same line in Ukrainian
+    wait(d, lambda: "не складається при кутах кривошипа" in d.find_element(By.ID, "scene-error").text,
+         what="the assembly's ranges in Ukrainian")
+    assert d.find_element(By.ID, "f-l2").get_attribute("value") == "0.05"   # the values kept
+    assert "довжина шатуна" in d.find_element(By.ID, "fields").text
+    Select(d.find_element(By.ID, "lang")).select_by_value("en")
     set_value(d, "f-l2", "0.35")
     wait(d, lambda: not d.find_element(By.ID, "scene-error").text, what="the error gone")
 
@@ -234,3 +241,24 @@ def test_a_teacher_turns_variants_into_keys_and_students_tables_into_grades(driv
     table = list(csv.DictReader(io.StringIO(grades.read_text(encoding="utf-8"))))
     assert [r["status"] for r in table] == ["pass", "fail"]
     assert console_errors(d) == []
+
+
+def test_on_a_phone_one_column_and_nothing_wider_than_the_screen(driver, server, tmp_path):
+    from selenium.webdriver.common.by import By
+    d = driver
+    d.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                      {"width": 390, "height": 844, "deviceScaleFactor": 2, "mobile": True})
+    try:
+        d.get(server + "/?lang=uk")
+        wait(d, lambda: preview_src(d), what="the preview on a phone")
+        wide = d.execute_script("""const w = document.documentElement.clientWidth, out = [];
+            document.querySelectorAll('body *').forEach((e) => { const r = e.getBoundingClientRect();
+              if (r.width && r.right > w + 1) out.push(e.tagName + '#' + e.id + ' ' + Math.round(r.right)); });
+            return [w, out];""")
+        assert wide[0] == 390 and wide[1] == [], wide
+        form = d.find_element(By.ID, "scene-form").rect
+        view = d.find_element(By.ID, "view-col").rect
+        assert view["y"] >= form["y"] + form["height"] - 1              # under the form, not beside it
+        shot(d, tmp_path, "serve_phone")
+    finally:
+        d.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})

@@ -110,6 +110,14 @@ function symbol(text) {
 const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°", "kg/m": "кг/м" },
                 en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m" } };
 
+const CHOICES = {
+  uk: { ccw: "проти годинникової стрілки", cw: "за годинниковою стрілкою", cosine: "косинусний",
+        cycloidal: "синусний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецієвидний",
+        linear: "лінійний" },
+  en: { ccw: "counter-clockwise", cw: "clockwise", cosine: "cosine", cycloidal: "cycloidal (sine)",
+        parabolic: "parabolic", trapezoidal: "trapezoidal", linear: "linear" },
+};
+
 function renderTemplates() {
   const sel = $("template");
   const chosen = sel.value || (state.template && state.template.id);
@@ -142,7 +150,12 @@ function renderFields() {
     let input;
     if (f.choices && f.choices.length) {
       input = document.createElement("select");
-      f.choices.forEach((c) => { const o = document.createElement("option"); o.value = c; o.textContent = c; input.appendChild(o); });
+      f.choices.forEach((c) => {
+        const o = document.createElement("option");
+        o.value = c;
+        o.textContent = (CHOICES[state.lang] || {})[c] || c;
+        input.appendChild(o);
+      });
     } else {
       input = document.createElement("input");
       input.type = "text";
@@ -181,9 +194,18 @@ function showError(line) {
     input.setAttribute("aria-invalid", "true");
     $("f-" + m[1] + "-err").textContent = line.replace(/^form: \w+: /, "");
   } else {
-    $("scene-error").textContent = line;
+    $("scene-error").textContent = inWords(line);
   }
   $("preview").classList.add("stale");
+}
+
+function inWords(line) {
+  // the assembly's one line (the command line's, in English) said in Ukrainian on a Ukrainian page
+  if (state.lang !== "uk") return line;
+  const m = /^(.*?)dyad (\S+) (\S+) \(links ([^)]*)\) cannot be assembled (for crank angles (.+)|at any crank angle)$/.exec(line);
+  if (!m) return line;
+  const where = m[6] ? "при кутах кривошипа " + m[6].replace(/(\d)\.(\d)/g, "$1,$2") : "за жодного кута кривошипа";
+  return `${m[1]}група ${m[2]} ${m[3]} (ланки ${m[4]}) не складається ${where}`;
 }
 
 // -- the scene, its preview -----------------------------------------------------------------------
