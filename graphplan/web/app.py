@@ -148,6 +148,9 @@ async def in_worker(request: Request, name: str, *args: Any) -> Response:
 # -- the routes ----------------------------------------------------------------------------------------
 
 async def index(request: Request) -> Response:
+    lang = request.app.state.config.lang
+    if lang in ("uk", "en") and "lang" not in request.query_params:      # graphplan serve --lang
+        return RedirectResponse(f"/?lang={lang}", 303)
     return FileResponse(STATIC / "index.html", media_type="text/html; charset=utf-8")
 
 
@@ -551,9 +554,16 @@ def create_app(config: Config | None = None, pool: Pool | None = None) -> Starle
         app.state.pool = pool or Pool(config.workers, config.timeout)
         await app.state.pool.warm()
         app.state.batches = {}
+
+        async def sweep():                       # batches not downloaded: removed after their time
+            while True:
+                await asyncio.sleep(60)
+                expire(app.state)
+        sweeper = asyncio.create_task(sweep())
         try:
             yield
         finally:
+            sweeper.cancel()
             for b in list(app.state.batches.values()):
                 kill(b)
             await app.state.pool.close()

@@ -192,7 +192,10 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
                 for q, v in values.items():
                     w.writerow([p["index"], p["phi_deg"], group, name, q, v])
     files.append(("analyze.csv", buf.getvalue().encode()))
-    plans = api.plans(st, precision=0.5).to_json()
+    try:
+        plans = api.plans(st, precision=0.5).to_json()        # at the A1 sheet's scales, as `plans` prints
+    except GraphplanError:                                    # more positions than a sheet holds
+        plans = api.plans(st, precision=0.5, format=None).to_json()
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["position", "phi_deg", "plan", "quantity", "mm", "value", "analytic", "error_pct"])
