@@ -102,10 +102,13 @@ def test_the_templates_speak_both_languages_and_each_makes_a_scene_that_assemble
 
 
 def test_the_form_s_values_reach_the_scene_and_a_bad_one_is_named(client):
-    text = client.post("/api/toml", json={"template": "four_bar", "values": {"r": "0,12", "l2": 0.4},
+    text = client.post("/api/toml", json={"template": "four_bar", "values": {"r": "0,12", "l2": 0.4, "delta": 0.05,
+                                                                           "stroke": "idle"},
                                            "branch": {"B": -1}}).text
     tree = tomllib.loads(text)
     assert tree["crank"]["length"] == 0.12 and tree["link"][0]["length"] == 0.4 and tree["branch"] == {"B": -1}
+    assert tree["dynamics"]["delta"] == 0.05 and tree["force"][0]["stroke"] == "idle"
+    assert "stroke" in refused(client.post("/api/toml", json={"template": "four_bar", "values": {"stroke": "x"}}))
     assert refused(client.post("/api/toml", json={"template": "four_bar", "values": {"l2": "abc"}})) \
         == "form: l2: 'abc' is not a number"
     assert "template" in refused(client.post("/api/toml", json={"template": "../../etc/passwd"}))
@@ -203,6 +206,9 @@ def test_sheet_one_file_in_either_language_and_a_set_as_a_zip(client):
     assert "Velocity" in words or "velocity" in words
     uk = client.post("/api/sheet?kind=kinematics&format=A1&type=dxf&lang=uk", content=FOUR_BAR.encode())
     assert uk.status_code == 200 and b"SECTION" in uk.content[:200]
+    png = client.post("/api/sheet?kind=kinematics&format=A1&type=png&dpi=30&lang=uk", content=FOUR_BAR.encode())
+    assert png.content[:8] == b"\x89PNG\r\n\x1a\n" and png.headers["content-type"] == "image/png"
+    assert int.from_bytes(png.content[16:20], "big") == round(841 / 25.4 * 30)      # A1's 841 mm at 30 dpi
     lab = (EXAMPLES / "lab_crank_slider.toml").read_bytes()
     three = client.post("/api/sheet?kind=kinematics&format=A3&type=svg&lang=uk", content=lab)
     assert three.headers["content-type"] == "application/zip"

@@ -33,6 +33,9 @@ COMMON = [F("title", "", "", "", "назва на аркуші", "title on the s
 SPEED = [F("n1", "n_1", "rpm", 120, "частота обертання кривошипа", "crank speed"),
          F("direction", "", "", "ccw", "напрям обертання", "sense of rotation", ("ccw", "cw"))]
 POSITIONS = [F("count", "N", "", 12, "кількість положень", "number of positions")]
+LOAD = [F("stroke", "", "", "working", "хід, на якому діє сила", "the stroke the force acts on",
+          ("working", "idle", "both")),
+        F("delta", "δ", "", 0.04, "коефіцієнт нерівномірності ходу", "coefficient of unevenness")]
 
 
 def _s(v: Any) -> str:
@@ -50,8 +53,8 @@ def _head(v: dict[str, Any], uk: str, en: str, designation: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _tail(v: dict[str, Any], branch: dict[str, int]) -> str:
-    out = ""
+def _tail(v: dict[str, Any], branch: dict[str, int], dynamics: str = "") -> str:
+    out = f"\n[dynamics]\ndelta = {v['delta']:g}\n{dynamics}" if "delta" in v else ""
     if branch:
         out += "\n[branch]\n" + "".join(f"{k} = {int(s)}\n" for k, s in branch.items())
     return out
@@ -73,7 +76,7 @@ def crank_slider(v, branch, offset=False):
             + f'\n[[link]]\nname = "B"\nnumber = 3\njoints = ["B"]\nslides_on = "x"\nmass = {v["m3"]:g}\n'
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"max\"\naccel = [1]\n"
             + "\n[loads]\ng = 9.81\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
+            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
             + _tail(v, branch))
 
 
@@ -87,7 +90,7 @@ def four_bar(v, branch):
               f"points = {{ S3 = 0.5 }}\nmass = {v['m3']:g}\n"
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"max\"\naccel = [1]\n"
             + "\n[loads]\ng = 9.81\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
+            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
             + _tail(v, branch))
 
 
@@ -106,7 +109,7 @@ def four_bar_slider(v, branch):
             + f'\n[[link]]\nname = "C"\nnumber = 5\njoints = ["C"]\nslides_on = "x"\nmass = {v["m5"]:g}\n'
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"max\"\naccel = [1]\n"
             + "\n[loads]\ng = 9.81\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "C"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
+            + f'\n[[force]]\npoint = "C"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
             + _tail(v, branch))
 
 
@@ -125,9 +128,8 @@ def shaper(v, branch):
             + f'\n[[link]]\nname = "C"\nnumber = 5\njoints = ["C"]\nslides_on = "ram"\nmass = {v["m5"]:g}\n'
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"idle\"\naccel = [1]\n"
             + f"\n[loads]\ng = 9.81\nmass_per_length = {v['q']:g}\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "C"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
-            + "\n[dynamics]\ndelta = 0.04\nefficiency = 0.92\nsynchronous_rpm = 1500\n"
-            + _tail(v, branch))
+            + f'\n[[force]]\npoint = "C"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
+            + _tail(v, branch, "efficiency = 0.92\nsynchronous_rpm = 1500\n"))
 
 
 def slotter(v, branch):
@@ -144,7 +146,7 @@ def slotter(v, branch):
             + f'\n[[link]]\nname = "D"\nnumber = 5\njoints = ["D"]\nslides_on = "ram"\nmass = {v["m5"]:g}\n'
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"max\"\nworking_stroke = \"to_min\"\naccel = [1]\n"
             + "\n[loads]\ng = 9.81\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "D"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
+            + f'\n[[force]]\npoint = "D"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
             + _tail(v, branch))
 
 
@@ -158,7 +160,7 @@ def scotch_yoke(v, branch):
               f"guide = {{ through = [0, 0], angle_deg = 90 }}\npoints = {{ S3 = [0, 0] }}\nmass = {v['m3']:g}\n"
             + f"\n[positions]\ncount = {int(v['count'])}\nstart = \"max\"\naccel = [1]\n"
             + "\n[loads]\ng = 9.81\ninertia_factor = 0.1\n"
-            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = "working"\ndirection = "oppose"\n'
+            + f'\n[[force]]\npoint = "B"\nmagnitude = {v["F"]:g}\nstroke = {_s(v["stroke"])}\ndirection = "oppose"\n'
             + _tail(v, branch))
 
 
@@ -220,7 +222,7 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("l", "l_AB", "m", 0.307, "довжина шатуна", "connecting rod length"),
               F("s2", "l_AS2/l_AB", "", 0.35, "положення центра мас шатуна", "rod's centre of mass"),
               *SPEED, _m(1, 5), _m(2, 10), _m(3, 20),
-              F("F", "F_B", "N", 1000, "сила корисного опору", "useful resistance force"), *POSITIONS, *COMMON],
+              F("F", "F_B", "N", 1000, "сила корисного опору", "useful resistance force"), *LOAD, *POSITIONS, *COMMON],
              crank_slider),
     Template("crank_slider_offset", "Кривошипно-повзунний (дезаксіальний)", "Crank-slider (offset)",
              [F("r", "l_OA", "m", 0.064, "довжина кривошипа", "crank length"),
@@ -228,7 +230,7 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("e", "e", "m", 0.02, "ексцентриситет (зміщення напрямної)", "offset of the guide"),
               F("s2", "l_AS2/l_AB", "", 0.35, "положення центра мас шатуна", "rod's centre of mass"),
               *SPEED, _m(1, 5), _m(2, 10), _m(3, 20),
-              F("F", "F_B", "N", 1000, "сила корисного опору", "useful resistance force"), *POSITIONS, *COMMON],
+              F("F", "F_B", "N", 1000, "сила корисного опору", "useful resistance force"), *LOAD, *POSITIONS, *COMMON],
              lambda v, b: crank_slider(v, b, offset=True)),
     Template("four_bar", "Шарнірний чотириланковий", "Four-bar linkage",
              [F("r", "l_O1A", "m", 0.10, "довжина кривошипа", "crank length"),
@@ -236,7 +238,7 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("l3", "l_O2B", "m", 0.25, "довжина коромисла", "rocker length"),
               F("d", "l_O1O2", "m", 0.30, "міжосьова відстань", "frame length"),
               *SPEED, _m(1, 2), _m(2, 5), _m(3, 4),
-              F("F", "F_B", "N", 200, "сила корисного опору", "useful resistance force"), *POSITIONS, *COMMON],
+              F("F", "F_B", "N", 200, "сила корисного опору", "useful resistance force"), *LOAD, *POSITIONS, *COMMON],
              four_bar),
     Template("four_bar_slider", "Чотириланковий з повзуном", "Four-bar driving a slider",
              [F("r", "l_O1A", "m", 0.10, "довжина кривошипа", "crank length"),
@@ -246,7 +248,7 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("l4", "l_BC", "m", 0.40, "довжина шатуна BC", "rod BC length"),
               F("h", "h", "m", 0.15, "висота напрямної повзуна", "height of the slider's guide"),
               *SPEED, _m(1, 2), _m(2, 5), _m(3, 4), _m(4, 5), _m(5, 10),
-              F("F", "F_C", "N", 300, "сила корисного опору", "useful resistance force"), *POSITIONS, *COMMON],
+              F("F", "F_C", "N", 300, "сила корисного опору", "useful resistance force"), *LOAD, *POSITIONS, *COMMON],
              four_bar_slider),
     Template("shaper", "Поперечно-стругальний верстат (за K)", "Shaper (from K)",
              [F("K", "K", "", 1.8, "коефіцієнт зміни середньої швидкості", "time-ratio coefficient"),
@@ -257,7 +259,7 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("n1", "n_1", "rpm", 195, "частота обертання кривошипа", "crank speed"),
               F("direction", "", "", "ccw", "напрям обертання", "sense of rotation", ("ccw", "cw")),
               F("q", "q", "kg/m", 150, "погонна маса ланок", "mass per length of the links"),
-              _m(5, 40), F("F", "P_C", "N", 5800, "сила різання", "cutting force"), *POSITIONS, *COMMON],
+              _m(5, 40), F("F", "P_C", "N", 5800, "сила різання", "cutting force"), *LOAD, *POSITIONS, *COMMON],
              shaper),
     Template("slotter", "Довбальний верстат", "Slotting machine",
              [F("r", "l_OA", "m", 0.12, "довжина кривошипа", "crank length"),
@@ -268,12 +270,12 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               F("n1", "n_1", "rpm", 120, "частота обертання кривошипа", "crank speed"),
               F("direction", "", "", "ccw", "напрям обертання", "sense of rotation", ("ccw", "cw")),
               _m(1, 5), _m(3, 22), _m(4, 6), _m(5, 34),
-              F("F", "P_D", "N", 1500, "сила різання", "cutting force"), *POSITIONS, *COMMON],
+              F("F", "P_D", "N", 1500, "сила різання", "cutting force"), *LOAD, *POSITIONS, *COMMON],
              slotter),
     Template("scotch_yoke", "Кулісний (синусний) механізм", "Scotch yoke",
              [F("r", "l_OA", "m", 0.1, "довжина кривошипа", "crank length"),
               *SPEED, _m(1, 2), _m(2, 1), _m(3, 8),
-              F("F", "F_B", "N", 300, "сила корисного опору", "useful resistance force"), *POSITIONS, *COMMON],
+              F("F", "F_B", "N", 300, "сила корисного опору", "useful resistance force"), *LOAD, *POSITIONS, *COMMON],
              scotch_yoke),
     Template("cam_translating", "Кулачковий, поступальний штовхач", "Cam, translating follower",
              [F("h", "h", "m", 0.04, "хід штовхача", "follower's stroke"),

@@ -113,9 +113,10 @@ const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°",
 const CHOICES = {
   uk: { ccw: "проти годинникової стрілки", cw: "за годинниковою стрілкою", cosine: "косинусний",
         cycloidal: "синусний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецієвидний",
-        linear: "лінійний" },
+        linear: "лінійний", working: "робочий", idle: "холостий", both: "обидва" },
   en: { ccw: "counter-clockwise", cw: "clockwise", cosine: "cosine", cycloidal: "cycloidal (sine)",
-        parabolic: "parabolic", trapezoidal: "trapezoidal", linear: "linear" },
+        parabolic: "parabolic", trapezoidal: "trapezoidal", linear: "linear", working: "working", idle: "idle",
+        both: "both" },
 };
 
 function renderTemplates() {
