@@ -12,6 +12,7 @@ import math
 import re
 import subprocess
 import sys
+import time
 import tomllib
 import warnings
 import xml.etree.ElementTree as ET
@@ -359,3 +360,49 @@ def test_off_loopback_the_token_is_asked_of_every_request():
         assert refused(c.get("/?token=wrong"), 401)
         r = c.post("/api/scene/check", content=CRANK.encode(), headers={"Origin": "http://evil.example"})
         assert refused(r, 403)
+
+
+def test_a_worker_killed_mid_job_is_an_error_and_the_next_request_is_answered(client):
+    import os
+    import signal
+    import threading
+    pool = client.app.state.pool
+    killed = []
+
+    def kill_busy_worker():
+        for _ in range(200):
+            procs = [w.proc.pid for w in pool.idle]
+            time.sleep(0.01)
+            if pool.busy:
+                for pid in _children():
+                    if pid not in procs:
+                        os.kill(pid, signal.SIGKILL)
+                        killed.append(pid)
+                        return
+
+    def _children():
+        me = os.getpid()
+        return [int(p.name) for p in Path("/proc").iterdir() if p.name.isdigit()
+                and (p / "stat").exists() and _ppid(p) == me and "graphplan.web.pool" in _cmd(p)]
+
+    t = threading.Thread(target=kill_busy_worker)
+    t.start()
+    r = client.post("/api/sheet?kind=dynamics&format=A1&type=pdf", content=(EXAMPLES / "shaper.toml").read_bytes())
+    t.join()
+    assert killed, "no busy worker found to kill"
+    assert "ended unexpectedly" in refused(r, 500)
+    assert client.post("/api/scene/check", content=CRANK.encode()).status_code == 200
+
+
+def _ppid(p: Path) -> int:
+    try:
+        return int(p.joinpath("stat").read_text().rsplit(")", 1)[1].split()[1])
+    except (OSError, IndexError, ValueError):
+        return -1
+
+
+def _cmd(p: Path) -> str:
+    try:
+        return p.joinpath("cmdline").read_bytes().replace(b"\0", b" ").decode()
+    except OSError:
+        return ""

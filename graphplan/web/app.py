@@ -30,7 +30,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from graphplan.util.errors import GraphplanError
-from graphplan.web.pool import Busy, Pool, TimedOut
+from graphplan.web.pool import Busy, Pool, TimedOut, WorkerDied
 
 STATIC = Path(__file__).parent / "static"
 SCENE_LIMIT = 1024 * 1024            # bytes of a scene (model.bounds.MAX_SCENE_BYTES)
@@ -140,6 +140,9 @@ async def in_worker(request: Request, name: str, *args: Any) -> Response:
     except TimedOut:
         raise Refused(422, f"the work took longer than {pool.timeout:g} s and was stopped "
                            "(fewer positions or divisions draw faster)") from None
+    except WorkerDied:
+        raise Refused(500, "internal error: the worker computing this ended unexpectedly; "
+                           "a fresh one takes the next request") from None
     if answer.status != 200:
         return error(answer.status, answer.line)
     return Response(answer.body, 200, headers=answer.headers, media_type=answer.media)

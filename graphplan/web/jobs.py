@@ -422,6 +422,9 @@ def run(name: str, folder: str, *args: Any) -> Answer:
         return refused(exc, where)
     except RecursionError:
         return Answer(422, line=f"{SCENE}: nested too deeply")
+    except MemoryError:
+        return Answer(422, line="the work needs more memory than a worker has (4 GB); a smaller format or dpi, "
+                                "fewer positions")
     except Exception as exc:   # an internal error is one line too (as the command line says it)
         text = " ".join(str(exc).split())[:300].replace(f"{where}/", "")
         return Answer(500, line=f"internal error: {type(exc).__name__}: {text}")

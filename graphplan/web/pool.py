@@ -36,6 +36,13 @@ class TimedOut(Exception):
     """A job ran past its time bound (its worker was stopped)."""
 
 
+class WorkerDied(Exception):
+    """A worker ended in the middle of a job (killed from outside, or crashed)."""
+
+
+MEMORY = 4 * 1024 ** 3        # bytes of address space a worker may take (an A1 PNG at 600 dpi needs ~1.2 GB)
+
+
 def _die_with_parent(parent: int) -> None:
     """Linux's PR_SET_PDEATHSIG: the worker is killed when the server dies, even by SIGKILL."""
     import signal
@@ -61,6 +68,11 @@ def main() -> None:
     import signal
     signal.signal(signal.SIGINT, signal.SIG_IGN)       # the server's Ctrl-C is the server's to handle
     _die_with_parent(int(sys.argv[1]))
+    try:
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+    except (ImportError, ValueError, OSError):
+        pass
     out = os.fdopen(os.dup(1), "wb")
     os.dup2(2, 1)                                      # a stray print cannot break the frames
     src = sys.stdin.buffer
@@ -218,7 +230,7 @@ class Pool:
         except asyncio.TimeoutError:
             raise TimedOut() from None
         except (asyncio.IncompleteReadError, OSError, BrokenPipeError, ConnectionResetError):
-            raise TimedOut() from None
+            raise WorkerDied() from None
         finally:
             self.busy -= 1
             if ok:
