@@ -193,6 +193,22 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     set_value(d, "f-l2", "0.35")
     wait(d, lambda: not d.find_element(By.ID, "scene-error").text, what="the error gone")
 
+    # the other way in: a scene file
+    before = preview_src(d)
+    d.find_element(By.ID, "upload").send_keys(str(ROOT / "examples" / "shaper.toml"))
+    wait(d, lambda: (s := preview_src(d)) and s != before, what="the uploaded scene's preview")
+    assert d.find_element(By.ID, "toml").get_attribute("value").startswith("# Seed 000's shaping machine")
+    assert d.find_element(By.ID, "fields").get_attribute("disabled") == "true"
+    Select(d.find_element(By.ID, "template")).select_by_value("four_bar")      # back to the form
+    wait(d, lambda: d.find_element(By.ID, "fields").get_attribute("disabled") is None, what="the form again")
+    set_value(d, "f-r", "0.08")
+    wait(d, lambda: "[branch]" not in d.find_element(By.ID, "toml").get_attribute("value")
+         and "length = 0.08" in d.find_element(By.ID, "toml").get_attribute("value"), what="the form's scene")
+    d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")
+    wait(d, lambda: len(d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")) == 2, what="two assemblies")
+    d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1].click()
+    wait(d, lambda: "[branch]\nB = -1" in d.find_element(By.ID, "toml").get_attribute("value"), what="chosen again")
+
     Select(d.find_element(By.ID, "type")).select_by_value("pdf")
     Select(d.find_element(By.ID, "format")).select_by_value("A1")
     d.find_element(By.ID, "dl-sheet").click()

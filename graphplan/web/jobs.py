@@ -225,6 +225,8 @@ def grade(folder: Path, key: bytes, student: bytes, signed: bool) -> Answer:
     student_path.write_bytes(student)
     graded = grade_rows(load_keys(key_path), read_student(student_path), signed=signed)
     doc = report_json(graded, key_name, "student.csv", signed)
+    for row, g in zip(doc["rows"], graded):        # the note in Ukrainian too, for the Ukrainian page
+        row["note_uk"] = g.note_uk
     return Answer(body=json.dumps(doc, ensure_ascii=False, indent=1).encode(), media="application/json")
 
 

@@ -129,7 +129,8 @@ function renderTemplates() {
     o.textContent = tp[state.lang];
     sel.appendChild(o);
   });
-  if (chosen) sel.value = chosen;
+  if (chosen && state.mode === "template") sel.value = chosen;
+  else if (state.mode !== "template") sel.selectedIndex = -1;
   renderFields();
 }
 
@@ -396,18 +397,23 @@ async function gradesCsv() {
 
 function showGrades(doc) {
   const cols = ["line", "variant", "position", "quantity", "value", "exact", "error_pct", "tolerance_pct", "status", "note"];
+  const heads = state.lang === "uk"
+    ? ["рядок", "варіант", "положення", "величина", "значення", "точне", "похибка, %", "допуск, %", "оцінка", "примітка"]
+    : ["line", "variant", "position", "quantity", "value", "exact", "error, %", "tolerance, %", "status", "note"];
+  const verdict = state.lang === "uk" ? { pass: "зараховано", fail: "не зараховано", unknown: "невідомо" } : {};
   const head = $("grades").tHead;
   const body = $("grades").tBodies[0];
   head.textContent = "";
   body.textContent = "";
   const tr = head.insertRow();
-  cols.forEach((c) => { const th = document.createElement("th"); th.textContent = c; th.scope = "col"; tr.appendChild(th); });
+  cols.forEach((c, k) => { const th = document.createElement("th"); th.textContent = heads[k]; th.scope = "col"; tr.appendChild(th); });
   doc.rows.forEach((row) => {
     const r = body.insertRow();
     r.className = row.status;
     cols.forEach((c) => {
       const td = r.insertCell();
-      let v = row[c];
+      let v = c === "note" && state.lang === "uk" && row.note_uk ? row.note_uk : row[c];
+      if (c === "status") v = verdict[v] || v;
       if (typeof v === "number" && !Number.isInteger(v)) v = Number(v.toPrecision(5));
       td.textContent = v === null || v === undefined ? "" : String(v);
       if (["variant", "quantity", "status", "note"].includes(c)) td.className = "l";
@@ -459,6 +465,7 @@ async function start() {
     $("toml").value = await f.text();
     state.mode = "toml";
     state.branch = {};
+    $("template").selectedIndex = -1;             // no template: choosing one goes back to the form
     $("fields").disabled = true;
     $("toml-box").open = true;
     $("scene-error").textContent = "";
