@@ -386,9 +386,21 @@ async def start_batch(request: Request) -> Batch:
     env["PYTHONPATH"] = here + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
     batch.proc = await asyncio.create_subprocess_exec(*args, cwd=folder, env=env, stdin=asyncio.subprocess.DEVNULL,
                                                       stdout=asyncio.subprocess.DEVNULL,
-                                                      stderr=asyncio.subprocess.PIPE, start_new_session=True)
+                                                      stderr=asyncio.subprocess.PIPE, start_new_session=True,
+                                                      preexec_fn=_die_with_server)
     batch.task = asyncio.create_task(finish_batch(batch, state.config.batch_seconds))  # type: ignore[attr-defined]
     return batch
+
+
+def _die_with_server() -> None:
+    """In the key process before it runs: killed when the server dies, even by SIGKILL (Linux's
+    PR_SET_PDEATHSIG; its own workers die with it the same way, cli/key.py)."""
+    import signal
+    try:
+        import ctypes
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL), 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
 
 
 async def finish_batch(batch: Batch, bound: float) -> None:
