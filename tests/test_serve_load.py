@@ -2,7 +2,7 @@
 
 A bounded load on loopback: 20 clients × 10 sheet requests against the real server with its two
 workers — every answer the same bytes `graphplan sheet` writes for the scene, none lost (a 503 is
-retried after its Retry-After, as a browser's page does), the p50/p95 latency and the peak memory of
+retried after its Retry-After, as the page's preview does), the p50/p95 latency and the peak memory of
 the server with its workers printed (docs/benchmarks.md quotes them). A server stopped mid-request
 (Ctrl-C, or killed outright) leaves no file behind once it or the next one has started, and that next
 one answers. A teacher's batch running at the time ends with the server too."""

@@ -256,7 +256,9 @@ async function refresh() {
     $("preview").classList.remove("stale");
     showAssemblies(keys, asm);
   } catch (e) {
-    if (seq === state.seq) showError(e.message);
+    if (seq !== state.seq) return;
+    showError(e.message);
+    if (e.status === 503) setTimeout(changed, 1000 * Number(e.retry || 5));   // busy: ask again
   }
 }
 
