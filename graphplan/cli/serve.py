@@ -28,6 +28,20 @@ def is_loopback(host: str) -> bool:
         return False
 
 
+def _reachable(host: str) -> str:
+    """The address to print: for every interface (0.0.0.0, ::) the one a classroom reaches this machine
+    by (the interface a route out leaves by; no packet is sent), else the host as given."""
+    if host not in ("0.0.0.0", "::", ""):
+        return host
+    import socket
+    try:
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            s.connect(("192.0.2.1", 9))              # TEST-NET-1: nothing is sent by a UDP connect
+            return s.getsockname()[0]
+    except OSError:
+        return socket.gethostname()
+
+
 def cmd_serve(args: argparse.Namespace) -> int:
     try:
         import uvicorn
@@ -43,7 +57,8 @@ def cmd_serve(args: argparse.Namespace) -> int:
         raise GraphplanError(f"--timeout must be from 1 to 3600 s, got {args.timeout:g}")
     local = is_loopback(args.host)
     token = None if local else secrets.token_urlsafe(24)
-    shown = f"[{args.host}]" if ":" in args.host else args.host
+    shown = _reachable(args.host)
+    shown = f"[{shown}]" if ":" in shown else shown
     url = f"http://{shown}:{args.port}/" + (f"?token={token}" if token else "")
     if args.lang:
         url += ("&" if token else "?") + f"lang={args.lang}"
