@@ -264,7 +264,6 @@ async def form_files(request: Request, names: dict[str, tuple[int, str]]) -> dic
         if len(data) > limit:
             raise Refused(413, too_large("scene" if limit == SCENE_LIMIT else what, limit))
         out[name] = data
-    out["_fields"] = {k: v for k, v in form.items() if isinstance(v, str)}   # type: ignore[assignment]
     await form.close()
     return out
 

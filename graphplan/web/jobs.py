@@ -319,7 +319,6 @@ def _at(st, phi: float, lang: str):
     from graphplan.graphic.plans import Scheme
     from graphplan.graphic.position_plan import construct_position, where
     from graphplan.graphic.record import Record
-    from graphplan.model.mechanism import FRAME
     from graphplan.util.markup import indexed
     if not math.isfinite(phi):
         raise GraphplanError(f"--phi must be a number of degrees, got {phi}")
