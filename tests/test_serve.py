@@ -271,6 +271,10 @@ def test_keys_then_grades_from_the_key_zip_and_as_csv(client):
                                                        "student": ("s.csv", student)})
     grades = list(csv.DictReader(io.StringIO(one.text)))
     assert [row["status"] for row in grades] == ["pass", "fail"]
+    formula = student + "01,1,=HYPERLINK(\"http://x\"),1\n"          # a spreadsheet formula as a name
+    rows = list(csv.DictReader(io.StringIO(client.post("/api/check?format=csv", files={
+        "key": ("key.json", z.read("01/key.json")), "student": ("s.csv", formula)}).text)))
+    assert rows[-1]["quantity"].startswith("'=")                        # kept as text in a spreadsheet
     assert "student.csv: line 2: value 'x': not a number" == refused(client.post("/api/check", files={"key": ("k.json", z.read("01/key.json")),
                                                              "student": ("s.csv", "variant,position,quantity,value\n01,1,v_B,x\n")}))
 
