@@ -193,6 +193,13 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     set_value(d, "f-l2", "0.35")
     wait(d, lambda: not d.find_element(By.ID, "scene-error").text, what="the error gone")
 
+    # a cam: its profile, no crank angle to set
+    Select(d.find_element(By.ID, "template")).select_by_value("cam_translating")
+    wait(d, lambda: not d.find_element(By.ID, "phi-row").is_displayed(), what="no crank angle for a cam")
+    assert d.find_element(By.CSS_SELECTOR, "input[name=kind][value=cam]").is_selected()
+    Select(d.find_element(By.ID, "template")).select_by_value("four_bar")
+    wait(d, lambda: d.find_element(By.ID, "phi-row").is_displayed(), what="the crank angle again")
+
     # the other way in: a scene file
     before = preview_src(d)
     d.find_element(By.ID, "upload").send_keys(str(ROOT / "examples" / "shaper.toml"))

@@ -303,7 +303,7 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
     svg = _side_by_side(drawings, lang)
-    headers = {"X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
+    headers = {"X-Scene-Kind": "lever", "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
                "X-Assemblies": quote(json.dumps([{"branch": c, "error": e} for c, _, e in drawings],
                                                 ensure_ascii=False))}
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml", headers=headers)
@@ -407,7 +407,8 @@ def _cam_preview(tree: dict[str, Any], lang: str) -> Answer:
     from graphplan.model.cam import build as build_cam
     sol = solve(build_cam(tree, SCENE))
     svg = _page(profile_drawing(sol, construct(sol, None, 0.5), lang))
-    return Answer(body=svg.encode("utf-8"), media="image/svg+xml", headers={"X-Branch-Keys": "%5B%5D"})
+    return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
+                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "cam"})
 
 
 JOBS = {"check": check, "sheet": sheet, "view": view, "tables": tables, "grade": grade, "preview": preview}

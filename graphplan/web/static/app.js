@@ -254,6 +254,7 @@ async function refresh() {
     if (old) URL.revokeObjectURL(old);
     img.alt = (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
     $("preview").classList.remove("stale");
+    $("phi-row").hidden = r.headers.get("X-Scene-Kind") === "cam";     // a cam's profile has no crank angle
     showAssemblies(keys, asm);
   } catch (e) {
     if (seq !== state.seq) return;
