@@ -137,6 +137,11 @@ def test_preview_draws_both_assemblies_where_branch_is_open_and_one_where_it_is_
     assert len(cells(set_.content)) == 1
     other = client.post("/api/scene/preview?phi=120", content=FOUR_BAR.encode())
     assert other.content != set_.content          # the mechanism moved
+    shaper = re.sub(r"\[branch\]\n(.+\n)+", "", (EXAMPLES / "shaper.toml").read_text(encoding="utf-8"))
+    uk = client.post("/api/scene/preview?phi=30&lang=uk", content=shaper.encode())
+    said = json.loads(__import__("urllib.parse").parse.unquote(uk.headers["x-assemblies"]))
+    assert said[0]["error"] == "" and "cannot be assembled at any crank angle" in said[1]["error"]
+    assert "не складається за жодного кута кривошипа".encode() in uk.content   # in the reader's words
 
 
 def test_check_and_refusals_say_the_command_line_s_own_line(client, tmp_path):
