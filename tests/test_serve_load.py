@@ -195,3 +195,38 @@ def test_a_server_stopped_mid_request_leaves_nothing_and_restarts_clean(tmp_path
         proc.send_signal(signal.SIGINT)
         proc.wait(20)
     assert not list(tmp_path.glob("graphplan-serve-*"))
+
+
+def test_a_scene_of_3600_positions_does_not_hold_the_server(tmp_path):
+    """While one worker computes the tables of a 3600-position turn, the other answers a check at once;
+    with a 3 s time bound the heavy one is stopped and said so, and the server goes on."""
+    import httpx
+    heavy = (ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8").replace("count = 12", "count = 3600")
+    light = (ROOT / "examples" / "four_bar.toml").read_bytes()
+    port = free_port()
+    proc = start(port, tmp_path, "--timeout", "3")
+    try:
+        time.sleep(1.0)
+        result: dict = {}
+
+        def ask_heavy():
+            with httpx.Client(timeout=60) as c:
+                result["heavy"] = c.post(f"http://127.0.0.1:{port}/api/tables", content=heavy.encode())
+
+        t = threading.Thread(target=ask_heavy)
+        t.start()
+        time.sleep(0.3)
+        with httpx.Client(timeout=60) as c:
+            t0 = time.monotonic()
+            r = c.post(f"http://127.0.0.1:{port}/api/scene/check", content=light)
+            quick = time.monotonic() - t0
+        t.join()
+        assert r.status_code == 200 and quick < 2.0, quick
+        h = result["heavy"]
+        print(f"\n3600 positions: {h.status_code} {h.text[:100] if h.status_code != 200 else len(h.content)}; a check meanwhile {quick:.2f} s")
+        assert h.status_code == 200 or (h.status_code == 422 and "longer than 3 s" in h.json()["error"]), h.text
+        with httpx.Client(timeout=60) as c:
+            assert c.post(f"http://127.0.0.1:{port}/api/scene/check", content=light).status_code == 200
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.wait(20)
