@@ -123,6 +123,12 @@ def preview_src(d) -> str:
                             "return i.complete && i.naturalWidth > 0 ? i.src : '';")
 
 
+def settled(d) -> None:
+    """Wait until the page has drawn the last change (no request pending or running)."""
+    wait(d, lambda: d.execute_script("return !document.getElementById('preview').dataset.busy"),
+         what="the preview settled")
+
+
 def downloaded(folder: Path, suffix: str, timeout: float = 60.0) -> Path:
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
@@ -162,7 +168,9 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     t0 = time.monotonic()
     set_value(d, "phi-num", "150")                                       # the crank turned
     wait(d, lambda: (s := preview_src(d)) and s != second, what="the preview after the angle")
-    assert time.monotonic() - t0 < 3.0
+    took = time.monotonic() - t0                     # typing, the debounce, the TOML and the drawing: ~0.5 s
+    assert took < 5.0, f"the preview took {took:.1f} s"   # alone; the bound leaves room for a loaded machine
+    settled(d)
     toml = d.find_element(By.ID, "toml").get_attribute("value")
     assert "length = 0.08" in toml and "[branch]" not in toml
     buttons = d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")
@@ -212,6 +220,7 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     wait(d, lambda: "[branch]" not in d.find_element(By.ID, "toml").get_attribute("value")
          and "length = 0.08" in d.find_element(By.ID, "toml").get_attribute("value"), what="the form's scene")
     d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")
+    settled(d)
     wait(d, lambda: len(d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")) == 2, what="two assemblies")
     d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1].click()
     wait(d, lambda: "[branch]\nB = -1" in d.find_element(By.ID, "toml").get_attribute("value"), what="chosen again")

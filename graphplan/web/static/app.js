@@ -232,11 +232,23 @@ function withBranch(text) {
 
 function changed() {
   clearTimeout(state.timer);
+  state.pending = true;
+  $("preview").dataset.busy = "1";              // drawing: a test (or a reader) can wait for it
   state.timer = setTimeout(refresh, 150);
 }
 
 async function refresh() {
+  state.pending = false;
+  $("preview").dataset.busy = "1";
   const seq = ++state.seq;
+  try {
+    await draw(seq);
+  } finally {
+    if (seq === state.seq && !state.pending) delete $("preview").dataset.busy;
+  }
+}
+
+async function draw(seq) {
   clearFieldErrors();
   let text;
   try {
