@@ -1,0 +1,95 @@
+"""`graphplan serve`: the lab's web page on this machine (graphplan/web, docs/serve.md).
+
+The web room sits beside the command line (neither imports the other): this command checks its
+options, then has uvicorn start the application by its name, ``graphplan.web.app:from_env``, with the
+configuration in the environment — as uvicorn starts any application."""
+from __future__ import annotations
+
+import argparse
+import ipaddress
+import json
+import os
+import secrets
+import sys
+
+from graphplan.cli.common import lang_arg
+from graphplan.util.errors import GraphplanError
+
+APP = "graphplan.web.app:from_env"
+ENV = "GRAPHPLAN_SERVE_CONFIG"
+
+
+def is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+def _reachable(host: str) -> str:
+    """The address to print: for every interface (0.0.0.0, ::) the one a classroom reaches this machine
+    by (the interface a route out leaves by; no packet is sent), else the host as given."""
+    if host not in ("0.0.0.0", "::", ""):
+        return host
+    import socket
+    try:
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+            s.connect(("192.0.2.1", 9))              # TEST-NET-1: nothing is sent by a UDP connect
+            return s.getsockname()[0]
+    except OSError:
+        return socket.gethostname()
+
+
+def cmd_serve(args: argparse.Namespace) -> int:
+    try:
+        import uvicorn
+        import starlette  # noqa: F401
+        import multipart  # noqa: F401
+    except ImportError as exc:
+        raise GraphplanError(f"graphplan serve needs {exc.name}: pip install starlette uvicorn python-multipart") from None
+    if not 1 <= args.port <= 65535:
+        raise GraphplanError(f"--port must be from 1 to 65535, got {args.port}")
+    if not 1 <= args.workers <= 16:
+        raise GraphplanError(f"--workers must be from 1 to 16, got {args.workers}")
+    if not 1 <= args.timeout <= 3600:
+        raise GraphplanError(f"--timeout must be from 1 to 3600 s, got {args.timeout:g}")
+    local = is_loopback(args.host)
+    token = None if local else secrets.token_urlsafe(24)
+    shown = _reachable(args.host)
+    shown = f"[{shown}]" if ":" in shown else shown
+    url = f"http://{shown}:{args.port}/" + (f"?token={token}" if token else "")
+    if args.lang:
+        url += ("&" if token else "?") + f"lang={args.lang}"
+    config = {"host": args.host, "port": args.port, "token": token, "workers": args.workers,
+              "timeout": args.timeout, "lang": args.lang,
+              "allowed_hosts": ["127.0.0.1", "localhost", "::1"] if local else []}
+    os.environ[ENV] = json.dumps(config)
+    print(f"graphplan serve: {url}" + ("" if local else "  (the token is asked of every visitor; share this "
+                                       "address with the class)") + "  — Ctrl-C stops it", file=sys.stderr,
+          flush=True)
+    if args.open:
+        import threading
+        import webbrowser
+        threading.Timer(1.0, webbrowser.open, (url,)).start()
+    uvicorn.run(APP, factory=True, host=args.host, port=args.port, log_level="warning",
+                timeout_graceful_shutdown=5)
+    return 0
+
+
+def register(sub) -> None:
+    p = sub.add_parser("serve", help="the lab's web page on this machine (loopback by default)",
+                       description="A web page for students (a template filled in or a TOML uploaded, the "
+                                   "mechanism previewed, the sheets, the explorer and the tables downloaded) "
+                                   "and teachers (variants → keys, students' tables → grades). Loopback by "
+                                   "default; any other --host asks every visitor for the token printed at "
+                                   "start (docs/serve.md).")
+    p.add_argument("--host", default="127.0.0.1", help="address to listen on (default 127.0.0.1)")
+    p.add_argument("--port", type=int, default=8000, help="port (default 8000)")
+    p.add_argument("--open", action="store_true", help="open the page in the browser")
+    p.add_argument("--workers", type=int, default=2, help="worker processes computing at once (default 2)")
+    p.add_argument("--timeout", type=float, default=120.0, metavar="S",
+                   help="time bound of one sheet, explorer or grading, seconds (default 120)")
+    lang_arg(p)
+    p.set_defaults(handler=cmd_serve)

@@ -1,0 +1,445 @@
+"""The work behind the routes, run in a worker process (web/pool.py): each job takes plain data (the
+scene's text, the options as strings) and a folder of its own the server made, and returns
+``Answer`` — the bytes to send, or the one line the command line would print for the same input.
+
+The computation is graphplan's own: the scene read as ``graphplan sheet``/``view``/``check`` read it
+(model.scene, model.cam), the sheets' builders, the explorer, teach.grading. File names here are
+fixed ("scene.toml", "student.csv"), never the client's; error lines lose the job's folder so they
+read as the command line's for a file of that name."""
+from __future__ import annotations
+
+import io
+import math
+import zipfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from graphplan.util.errors import GraphplanError
+
+SCENE = "scene.toml"
+KINDS = ("kinematics", "forces", "dynamics", "cam", "gears")
+TYPES = {"svg": "image/svg+xml", "pdf": "application/pdf", "png": "image/png", "dxf": "image/vnd.dxf"}
+FIXED_DATE = (1980, 1, 1, 0, 0, 0)          # zip entries' date: the same input, the same bytes
+
+
+@dataclass
+class Answer:
+    """What a job hands back: ``status`` 200 with ``body`` of ``media``, or an error ``line``."""
+    status: int = 200
+    body: bytes = b""
+    media: str = "application/octet-stream"
+    headers: dict[str, str] = field(default_factory=dict)
+    line: str = ""
+
+
+def refused(exc: GraphplanError, folder: Path | None) -> Answer:
+    """The command line's one line for ``exc``, without the job's folder."""
+    text = exc.line()
+    if folder is not None:
+        text = text.replace(f"{folder}/", "").replace(str(folder), ".")
+    return Answer(422, line=text)
+
+
+def zipped(files: list[tuple[str, bytes]]) -> bytes:
+    """A zip of (name, bytes), every entry dated FIXED_DATE (deterministic)."""
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        for name, data in files:
+            info = zipfile.ZipInfo(name, FIXED_DATE)
+            info.compress_type = zipfile.ZIP_DEFLATED
+            info.external_attr = 0o644 << 16
+            z.writestr(info, data)
+    return buf.getvalue()
+
+
+def _tree(text: str) -> dict[str, Any]:
+    from graphplan.model import bounds as B
+    return B.parse_toml(text, SCENE)
+
+
+def _lang(asked: str | None, tree: Any) -> str:
+    """--lang, else the scene's ``lang``, else Ukrainian (cli.common.lang_of)."""
+    from graphplan.util.words import pick
+    said = tree.get("lang") if isinstance(tree, dict) else None
+    return pick(asked, said if said in ("uk", "en") else None)
+
+
+def _cam_or_study(tree: dict[str, Any]):
+    """("cam", Cam) for a [cam] scene, else ("lever", Study) — as `graphplan sheet` tells them."""
+    from graphplan.model.cam import build as build_cam
+    from graphplan.model.cam import is_cam
+    if is_cam(tree):
+        return "cam", build_cam(tree, SCENE)
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import build
+    return "lever", study(build(tree, SCENE))
+
+
+# -- the jobs ------------------------------------------------------------------------------------------
+
+def check(folder: Path, text: str, lang: str | None) -> Answer:
+    """{"ok": true, "warnings": [...]} when the scene reads and assembles over the whole turn."""
+    import json
+    tree = _tree(text)
+    kind, obj = _cam_or_study(tree)
+    lang = _lang(lang, tree)
+    if kind == "cam":
+        from graphplan.exact.cam import solve
+        sol = solve(obj)
+        warnings = [w[1] if lang == "uk" else w[0] for w in sol.warnings]
+        doc = {"ok": True, "kind": "cam", "warnings": warnings}
+    else:
+        doc = {"ok": True, "kind": "lever", "warnings": list(obj.says(lang)),
+               "structure": obj.structure.formula,
+               "branches": _branch_keys(obj.mech, obj.structure)}
+    return Answer(body=json.dumps(doc, ensure_ascii=False).encode(), media="application/json")
+
+
+def _branch_keys(mech, structure) -> list[str]:
+    """The groups' points whose assembly [branch] chooses (RRR, RRP, RPR have two)."""
+    return [d.key for d in structure.dyads if d.kind in ("RRR", "RRP", "RPR")]
+
+
+def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str, lang: str | None,
+          dpi: float = 300) -> Answer:
+    """The sheets of ``kinds`` on ``fmt`` as ``kind_of_file``: one file, or a zip of the set."""
+    from graphplan.sheets.compose import SheetOptions, page_path
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    f = form(fmt)
+    if kind_of_file in ("pdf", "png"):
+        from graphplan.drawing.raster import require_cairo
+        require_cairo()
+    tree = _tree(text)
+    scene_kind, obj = _cam_or_study(tree)
+    lang = _lang(lang, tree)
+    if not kinds:
+        kinds = ["cam" if scene_kind == "cam" else "kinematics"]
+    files: list[tuple[str, bytes]] = []
+    for kind in kinds:
+        build = BUILDERS.get(kind)
+        if build is None:
+            raise GraphplanError(f"--sheet {kind}: not available")
+        if scene_kind == "cam" and kind != "cam":
+            raise GraphplanError(f"--sheet {kind}: a cam scene has the cam sheet only", SCENE)
+        if scene_kind != "cam" and kind == "cam":
+            raise GraphplanError("--sheet cam: the scene has no [cam] table (docs/cams.md)", SCENE)
+        made = build(obj, f, SheetOptions(lang=lang, sheet=kind))
+        out = folder / f"{kind}-{f.name}.{kind_of_file}"
+        made.write(out, False, dpi)
+        for n in range(1, len(made.pages) + 1):
+            p = page_path(out, n)
+            files.append((p.name, p.read_bytes()))
+    if len(files) == 1:
+        name, data = files[0]
+        return Answer(body=data, media=TYPES[kind_of_file],
+                      headers={"Content-Disposition": f'attachment; filename="{name}"'})
+    stem = "-".join(kinds)
+    return Answer(body=zipped(files), media="application/zip",
+                  headers={"Content-Disposition": f'attachment; filename="{stem}-{f.name}-{kind_of_file}.zip"'})
+
+
+def view(folder: Path, text: str, lang: str | None) -> Answer:
+    """The explorer page, as `graphplan view` writes it (the plans at the A1 sheet's scales)."""
+    from graphplan import api
+    from graphplan.report.explorer import explorer_html
+    tree = _tree(text)
+    from graphplan.model.cam import is_cam
+    if is_cam(tree):
+        raise GraphplanError("the explorer shows lever mechanisms; a cam scene has graphplan cam and its sheet",
+                             SCENE)
+    st = api.study(_cam_or_study(tree)[1]).value
+    lang = _lang(lang, tree)
+    plans = api.plans(st, precision=0.5, format="A1").value
+    page = explorer_html(st, precision=0.5, step=1.0, lang=lang, plans=plans)
+    return Answer(body=page.encode("utf-8"), media="text/html; charset=utf-8",
+                  headers={"Content-Disposition": 'attachment; filename="explorer.html"'})
+
+
+def tables(folder: Path, text: str, lang: str | None) -> Answer:
+    """The tables as CSV in a zip: the exact kinematics at the scene's positions (analyze --json's
+    points, links, slides) and the plans' readings (plans --json's velocity and acceleration)."""
+    import csv
+    from graphplan import api
+    tree = _tree(text)
+    kind, obj = _cam_or_study(tree)
+    files: list[tuple[str, bytes]] = []
+    if kind == "cam":
+        from graphplan.exact.cam import solve
+        from graphplan.graphic.cam import construct
+        sol = solve(obj)
+        g = api.Cam((sol, construct(sol, None, 0.5)))
+        doc = g.to_json()
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(["phi_deg", "quantity", "exact", "graphical", "error_pct"])
+        for p in doc["positions"]:
+            for q, e in (("s_m", "s"), ("ds_dphi_m", "ds_dphi"), ("pressure_angle_deg", "pressure_angle")):
+                err = p["error_pct"].get(e)
+                w.writerow([p["phi_deg"], q, p["exact"][q], p["graphical"][q], "" if err is None else err])
+        files.append(("cam.csv", buf.getvalue().encode()))
+        return Answer(body=zipped(files), media="application/zip",
+                      headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+    st = obj
+    exact = api.study(st).to_json()
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["position", "phi_deg", "kind", "name", "quantity", "value"])
+    for p in exact["positions"]:
+        for group in ("points", "links", "slides"):
+            for name, values in p[group].items():
+                for q, v in values.items():
+                    w.writerow([p["index"], p["phi_deg"], group, name, q, v])
+    files.append(("analyze.csv", buf.getvalue().encode()))
+    try:
+        plans = api.plans(st, precision=0.5).to_json()        # at the A1 sheet's scales, as `plans` prints
+    except GraphplanError:                                    # more positions than a sheet holds
+        plans = api.plans(st, precision=0.5, format=None).to_json()
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["position", "phi_deg", "plan", "quantity", "mm", "value", "analytic", "error_pct"])
+    for p in plans["positions"]:
+        for plan in ("velocity", "acceleration"):
+            for q, e in p.get(plan, {}).items():
+                w.writerow([p["index"], p["phi_deg"], plan, q, e.get("mm", ""), e["value"], e["analytic"],
+                            "" if e.get("error_pct") is None else e["error_pct"]])
+    files.append(("plans.csv", buf.getvalue().encode()))
+    return Answer(body=zipped(files), media="application/zip",
+                  headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+
+
+def grade(folder: Path, key: bytes, student: bytes, signed: bool) -> Answer:
+    """`graphplan check KEY STUDENT.csv --json`: the key a key.json, or the zip /api/key answers."""
+    import json
+    from graphplan.teach.grading import grade as grade_rows
+    from graphplan.teach.grading import load_keys, read_student, report_json
+    if key[:4] == b"PK\x03\x04":
+        key_path = _unzip_keys(key, folder / "keys")
+        key_name = "keys"
+    else:
+        key_path = folder / "key.json"
+        key_path.write_bytes(key)
+        key_name = "key.json"
+    student_path = folder / "student.csv"
+    student_path.write_bytes(student)
+    graded = grade_rows(load_keys(key_path), read_student(student_path), signed=signed)
+    doc = report_json(graded, key_name, "student.csv", signed)
+    for row, g in zip(doc["rows"], graded):        # the note in Ukrainian too, for the Ukrainian page
+        row["note_uk"] = g.note_uk
+    return Answer(body=json.dumps(doc, ensure_ascii=False, indent=1).encode(), media="application/json")
+
+
+MAX_KEY_FILES = 5000
+
+
+def _unzip_keys(data: bytes, into: Path) -> Path:
+    """A key folder's zip unpacked: only ``summary.json`` and ``<variant>/key.json`` entries whose names
+    are plain (no ``..``, no absolute path, no link), the rest ignored."""
+    import re
+    plain = re.compile(r"^(?:[A-Za-z0-9][A-Za-z0-9._-]*/)?(?:summary\.json|key\.json)$")
+    try:
+        z = zipfile.ZipFile(io.BytesIO(data))
+        infos = z.infolist()
+    except (zipfile.BadZipFile, ValueError) as exc:
+        raise GraphplanError(f"cannot read the key's zip: {exc}", "key") from None
+    if len(infos) > MAX_KEY_FILES:
+        raise GraphplanError(f"the key's zip holds {len(infos)} files (at most {MAX_KEY_FILES})", "key")
+    into.mkdir()
+    total = 0
+    for info in infos:
+        name = info.filename
+        if not plain.match(name) or ".." in name or info.is_dir():
+            continue
+        total += info.file_size
+        if total > 64 * 1024 * 1024:
+            raise GraphplanError("the key's zip unpacks to more than 64 MB", "key")
+        target = into / name
+        target.parent.mkdir(exist_ok=True)
+        target.write_bytes(z.read(info))
+    return into
+
+
+# -- the preview: the mechanism at φ, both assemblies where [branch] leaves them open ---------------
+
+PREVIEW_WIDTH = 150.0        # mm the mechanism spans over its turn in the preview
+TURN = 36                    # crank angles the preview's extent is taken over
+
+
+def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
+    """image/svg+xml: the mechanism at φ; two drawings side by side (the [branch] +1 and −1 of every
+    group the scene leaves open), each with its caption, or the cam's profile."""
+    import dataclasses
+    import itertools
+    import json
+    from urllib.parse import quote
+    tree = _tree(text)
+    from graphplan.model.cam import is_cam
+    if is_cam(tree):
+        return _cam_preview(tree, _lang(lang, tree))
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import build
+    from graphplan.model.structure import analyse
+    mech = build(tree, SCENE)
+    lang = _lang(lang, tree)
+    structure = analyse(mech)
+    open_keys = [k for k in _branch_keys(mech, structure) if k not in mech.branches]
+    drawings, first_error = [], None
+    for sign in ((+1, -1) if open_keys else (0,)):
+        chosen = {open_keys[0]: sign} if sign else {}
+        drawn, error = None, None
+        for rest in itertools.islice(itertools.product((1, -1), repeat=max(len(open_keys) - 1, 0)), 8):
+            branches = {**mech.branches, **chosen, **dict(zip(open_keys[1:], rest))}
+            try:
+                st = study(dataclasses.replace(mech, branches=branches))
+            except GraphplanError as exc:
+                error = error or exc
+                continue
+            drawn = _at(st, phi, lang)
+            break
+        if drawn is None:
+            first_error = first_error or error
+        drawings.append((chosen, drawn, "" if drawn is not None else refused(error, folder).line))
+    if all(d[1] is None for d in drawings):
+        raise first_error                                    # type: ignore[misc]
+    svg = _side_by_side(drawings, lang)
+    headers = {"X-Scene-Kind": "lever", "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
+               "X-Assemblies": quote(json.dumps([{"branch": c, "error": e} for c, _, e in drawings],
+                                                ensure_ascii=False))}
+    return Answer(body=svg.encode("utf-8"), media="image/svg+xml", headers=headers)
+
+
+def _at(st, phi: float, lang: str):
+    """The record of the mechanism at φ: the frame, the crank pin's circle, the joints' paths over the
+    turn (thin), the links thick, the letters — the position plan's own drawing of one position."""
+    import numpy as np
+
+    from graphplan.drawing.labels import LabelRequest, place_labels
+    from graphplan.drawing.plans import draw_frame, draw_links, joints_at, catmull_rom
+    from graphplan.graphic.plans import Scheme
+    from graphplan.graphic.position_plan import construct_position, where
+    from graphplan.graphic.record import Record
+    from graphplan.util.markup import indexed
+    if not math.isfinite(phi):
+        raise GraphplanError(f"--phi must be a number of degrees, got {phi}")
+    sc = Scheme(st)
+    angles = [float(a) for a in np.arange(TURN) * 360.0 / TURN]
+    probe = [construct_position(sc, a, 1.0) for a in angles]
+    pts = [p for lay in probe for p in joints_at(sc, lay).values()]
+    span = max(max(p.real for p in pts) - min(p.real for p in pts),
+               max(p.imag for p in pts) - min(p.imag for p in pts), 1e-9)
+    mu = span / PREVIEW_WIDTH
+    every = [construct_position(sc, a, mu) for a in angles]
+    lay = construct_position(sc, float(phi) % 360.0, mu)
+    rec = Record(title="mechanism")
+    draw_frame(rec, sc, every + [lay])
+    moving = [n for n in st.mech.point_names() if not sc.fixed(n)]
+    for name in moving:
+        path = [where(sc, l, sc.body_of(name), name) for l in every]
+        if max(abs(p - path[0]) for p in path) > 1.0:
+            rec.add("polyline", [(c.real, c.imag) for c in catmull_rom(path)], role="trajectory",
+                    layer="construction")
+    draw_links(rec, sc, lay, thick=True)
+    here = joints_at(sc, lay)
+    centre = sum(here.values(), 0j) / len(here)
+    labels = [LabelRequest(X, indexed(n), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5)
+              for n, X in here.items()]
+    # the drawing's extent fixed over the turn: an invisible frame of every position's joints
+    allp = [p for l in every for p in joints_at(sc, l).values()]
+    x0, x1 = min(p.real for p in allp) - 12, max(p.real for p in allp) + 12
+    y0, y1 = min(p.imag for p in allp) - 12, max(p.imag for p in allp) + 12
+    place_labels(rec, labels)
+    return rec, (x0, y0, x1, y1)
+
+
+def _side_by_side(drawings, lang: str) -> str:
+    """One SVG: the drawings in equal cells left to right, each captioned with its [branch] values."""
+    from graphplan.drawing.svg import render
+    from graphplan.util.markup import plain
+    from xml.sax.saxutils import escape
+    cells = []
+    boxes = [d[1][1] for d in drawings if d[1] is not None]
+    w = max(b[2] - b[0] for b in boxes)
+    h = max(b[3] - b[1] for b in boxes)
+    cap = max(9.0, w / 30)
+    for k, (chosen, drawn, error) in enumerate(drawings):
+        x = k * (w + 10)
+        said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '-1'}" for n, v in chosen.items())
+        caption = (("складання" if lang == "uk" else "assembly") + f" {k + 1}: [branch] {said}") if said else ""
+        parts = [f'<g class="assembly" transform="translate({x:.3f},0)">',
+                 f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
+                 'stroke-width="0.3"/>']
+        if caption:
+            parts.append(f'<text x="4" y="{cap * 0.7:.3f}" font-size="{cap * 0.5:.3f}" '
+                         f'font-family="sans-serif">{escape(caption)}</text>')
+        if drawn is not None:
+            rec, (x0, y0, x1, y1) = drawn
+            moved = rec.moved(-x0, -y0)
+            inner = render(moved, x1 - x0, y1 - y0, "", embed_font=False)
+            import re
+            head, _, body = inner.partition(">")
+            head = re.sub(r'(width|height)="([0-9.]+)mm"', r'\1="\2"', head)
+            inner = head.replace("<svg ", f'<svg x="0" y="{cap:.3f}" ', 1) + ">" + body
+            parts.append(inner)
+        else:
+            lines = _wrap(_in_words(error, lang), 60)
+            size = max(4.0, w / 60)
+            for j, line in enumerate(lines):
+                parts.append(f'<text x="4" y="{cap + 2 * size + 1.5 * size * j:.3f}" font-size="{size:.3f}" fill="#a00" '
+                             f'font-family="sans-serif">{escape(line)}</text>')
+        parts.append("</g>")
+        cells.append("".join(parts))
+    total_w = len(drawings) * (w + 10) - 10
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {h + cap:.3f}" '
+            f'width="{total_w:.3f}mm" height="{h + cap:.3f}mm">' + "".join(cells) + "</svg>")
+
+
+def _in_words(line: str, lang: str) -> str:
+    """The assembly's one line (the command line's English) in Ukrainian for a Ukrainian reader; the
+    page's script says it the same way beside the fields."""
+    import re
+    m = re.match(r"^(.*?)dyad (\S+) (\S+) \(links ([^)]*)\) cannot be assembled "
+                 r"(for crank angles (.+)|at any crank angle)$", line)
+    if lang != "uk" or not m:
+        return line
+    where = ("при кутах кривошипа " + re.sub(r"(\d)\.(\d)", r"\1,\2", m.group(6))) if m.group(6) \
+        else "за жодного кута кривошипа"
+    return f"{m.group(1)}група {m.group(2)} {m.group(3)} (ланки {m.group(4)}) не складається {where}"
+
+
+def _wrap(text: str, width: int) -> list[str]:
+    import textwrap
+    return textwrap.wrap(text, width) or [""]
+
+
+def _cam_preview(tree: dict[str, Any], lang: str) -> Answer:
+    from graphplan.api import _page
+    from graphplan.drawing.cam import profile_drawing
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.model.cam import build as build_cam
+    sol = solve(build_cam(tree, SCENE))
+    svg = _page(profile_drawing(sol, construct(sol, None, 0.5), lang))
+    return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
+                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "cam"})
+
+
+JOBS = {"check": check, "sheet": sheet, "view": view, "tables": tables, "grade": grade, "preview": preview}
+
+
+def run(name: str, folder: str, *args: Any) -> Answer:
+    """Run job ``name`` in ``folder`` (made here, emptied by the caller): an Answer, never a raise."""
+    where = Path(folder)
+    where.mkdir(parents=True, exist_ok=True)
+    try:
+        return JOBS[name](where, *args)
+    except GraphplanError as exc:
+        return refused(exc, where)
+    except RecursionError:
+        return Answer(422, line=f"{SCENE}: nested too deeply")
+    except MemoryError:
+        return Answer(422, line="the work needs more memory than a worker has (4 GB); a smaller format or dpi, "
+                                "fewer positions")
+    except Exception as exc:   # an internal error is one line too (as the command line says it)
+        text = " ".join(str(exc).split())[:300].replace(f"{where}/", "")
+        return Answer(500, line=f"internal error: {type(exc).__name__}: {text}")

@@ -1,0 +1,510 @@
+// graphplan serve: the page. Every number comes from the server (one solver); this file only
+// builds the forms, sends the scene and shows what comes back.
+"use strict";
+
+const WORDS = {
+  uk: {
+    title: "graphplan — графічні методи ТММ", student: "Студент", teacher: "Викладач", language: "Мова",
+    "student part": "Механізм студента", template: "Схема", "or upload": "або завантажте сцену TOML",
+    values: "Значення варіанта", toml: "Сцена (TOML)", "crank angle": "Кут кривошипа",
+    "branch help": "Два складання: натисніть на те, яке потрібне.", "branch reset": "Обрати складання знову",
+    downloads: "Завантажити", sheets: "Аркуші", kinematics: "кінематика", forces: "сили", dynamics: "динаміка",
+    cam: "кулачок", format: "Формат", "file type": "Файл", "sheet language": "Мова аркуша",
+    "download sheets": "Аркуші", "download toml": "TOML", "download view": "Інтерактивна сторінка",
+    "download tables": "Таблиці CSV", "teacher part": "Ключі й оцінювання", keys: "Ключі групи",
+    variants: "Таблиця варіантів (CSV)", base: "Базова сцена (TOML)", "base current": "або сцена зі сторінки студента",
+    "make keys": "Скласти ключі", grading: "Оцінювання", "key file": "Ключ (key.json або zip ключів)",
+    students: "Таблиця студента (CSV)", grade: "Оцінити", "grades csv": "Оцінки CSV",
+    footer: "Усі обчислення — той самий graphplan, що й у командному рядку.",
+    chosen: "Обране складання", working: "Обчислюється…", ready: "Готово: ", uploaded: "Сцену завантажено з файла",
+    "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
+    passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
+    "assembly pick": "Обрати складання", uploaded_mode: "сцена з файла — поля шаблону не діють",
+  },
+  en: {
+    title: "graphplan — graphical methods of TMM", student: "Student", teacher: "Teacher", language: "Language",
+    "student part": "The student's mechanism", template: "Scheme", "or upload": "or upload a TOML scene",
+    values: "The variant's values", toml: "Scene (TOML)", "crank angle": "Crank angle",
+    "branch help": "Two assemblies: click the one you need.", "branch reset": "Choose the assembly again",
+    downloads: "Download", sheets: "Sheets", kinematics: "kinematics", forces: "forces", dynamics: "dynamics",
+    cam: "cam", format: "Format", "file type": "File", "sheet language": "Sheet language",
+    "download sheets": "Sheets", "download toml": "TOML", "download view": "Interactive explorer",
+    "download tables": "Tables CSV", "teacher part": "Keys and grading", keys: "The group's keys",
+    variants: "Variants table (CSV)", base: "Base scene (TOML)", "base current": "or the scene of the student's part",
+    "make keys": "Make the keys", grading: "Grading", "key file": "Key (key.json or the keys' zip)",
+    students: "Student's table (CSV)", grade: "Grade", "grades csv": "Grades CSV",
+    footer: "Every number is the same graphplan as on the command line.",
+    chosen: "Assembly chosen", working: "Working…", ready: "Ready: ", uploaded: "Scene loaded from the file",
+    "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
+    passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
+    "assembly pick": "Choose assembly", uploaded_mode: "scene from a file — the template's fields do not apply",
+  },
+};
+
+const $ = (id) => document.getElementById(id);
+const state = {
+  lang: "uk", templates: [], template: null, values: {}, branch: {}, mode: "template", toml: "",
+  assemblies: [], seq: 0, timer: null, grades: null,
+};
+
+function t(key) { return (WORDS[state.lang] || WORDS.uk)[key] || WORDS.en[key] || key; }
+
+function translate() {
+  document.documentElement.lang = state.lang;
+  document.querySelectorAll("[data-t]").forEach((el) => { el.textContent = t(el.dataset.t); });
+  document.title = t("title");
+  renderTemplates();
+}
+
+// -- requests ---------------------------------------------------------------------------------------
+
+async function post(path, body, type) {
+  const headers = {};
+  if (type) headers["Content-Type"] = type;
+  const r = await fetch(path, { method: "POST", body, headers, credentials: "same-origin" });
+  if (!r.ok) {
+    let line = r.status + " " + r.statusText;
+    try { line = (await r.json()).error || line; } catch (e) { /* not JSON */ }
+    const err = new Error(line);
+    err.status = r.status;
+    err.retry = r.headers.get("Retry-After");
+    throw err;
+  }
+  return r;
+}
+
+function save(blob, name) {
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 2000);
+}
+
+function filename(r, fallback) {
+  const m = /filename="([^"]+)"/.exec(r.headers.get("Content-Disposition") || "");
+  return m ? m[1] : fallback;
+}
+
+// -- the template's form ----------------------------------------------------------------------------
+
+function symbol(text) {
+  // "l_OA" → l with the subscript OA; "λ = l_BC/l_OB" keeps its words
+  const span = document.createElement("span");
+  span.className = "sym";
+  text.split(/(\s+|\/|=)/).forEach((part) => {
+    const m = /^([^_]*)_(.+)$/.exec(part);
+    if (m) {
+      span.appendChild(document.createTextNode(m[1]));
+      const sub = document.createElement("sub");
+      sub.textContent = m[2];
+      span.appendChild(sub);
+    } else {
+      span.appendChild(document.createTextNode(part));
+    }
+  });
+  return span;
+}
+
+const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°", "kg/m": "кг/м" },
+                en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m" } };
+
+const CHOICES = {
+  uk: { ccw: "проти годинникової стрілки", cw: "за годинниковою стрілкою", cosine: "косинусний",
+        cycloidal: "синусний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецієвидний",
+        linear: "лінійний", working: "робочий", idle: "холостий", both: "обидва" },
+  en: { ccw: "counter-clockwise", cw: "clockwise", cosine: "cosine", cycloidal: "cycloidal (sine)",
+        parabolic: "parabolic", trapezoidal: "trapezoidal", linear: "linear", working: "working", idle: "idle",
+        both: "both" },
+};
+
+function renderTemplates() {
+  const sel = $("template");
+  const chosen = sel.value || (state.template && state.template.id);
+  sel.textContent = "";
+  state.templates.forEach((tp) => {
+    const o = document.createElement("option");
+    o.value = tp.id;
+    o.textContent = tp[state.lang];
+    sel.appendChild(o);
+  });
+  if (chosen && state.mode === "template") sel.value = chosen;
+  else if (state.mode !== "template") sel.selectedIndex = -1;
+  renderFields();
+}
+
+function renderFields() {
+  const box = $("fields");
+  const legend = box.querySelector("legend");
+  box.textContent = "";
+  box.appendChild(legend);
+  const tp = state.template;
+  if (!tp) return;
+  tp.fields.forEach((f) => {
+    const row = document.createElement("div");
+    row.className = "field";
+    const id = "f-" + f.key;
+    const label = document.createElement("label");
+    label.htmlFor = id;
+    if (f.symbol) label.appendChild(symbol(f.symbol));
+    label.appendChild(document.createTextNode(f[state.lang]));
+    let input;
+    if (f.choices && f.choices.length) {
+      input = document.createElement("select");
+      f.choices.forEach((c) => {
+        const o = document.createElement("option");
+        o.value = c;
+        o.textContent = (CHOICES[state.lang] || {})[c] || c;
+        input.appendChild(o);
+      });
+    } else {
+      input = document.createElement("input");
+      input.type = "text";
+      if (typeof f.default === "number") input.inputMode = "decimal";
+    }
+    input.id = id;
+    input.name = f.key;
+    input.value = state.values[f.key] !== undefined ? state.values[f.key] : f.default;
+    const err = document.createElement("span");
+    err.className = "err";
+    err.id = id + "-err";
+    err.setAttribute("aria-live", "polite");
+    input.setAttribute("aria-describedby", err.id);
+    input.addEventListener("input", () => { state.values[f.key] = input.value; changed(); });
+    input.addEventListener("change", () => { state.values[f.key] = input.value; changed(); });
+    const unit = document.createElement("span");
+    unit.className = "unit";
+    unit.textContent = (UNITS[state.lang] || {})[f.unit] || f.unit;
+    row.append(label, input, unit, err);
+    box.appendChild(row);
+  });
+  box.disabled = state.mode !== "template";
+}
+
+function clearFieldErrors() {
+  document.querySelectorAll(".field .err").forEach((e) => { e.textContent = ""; });
+  document.querySelectorAll(".field [aria-invalid]").forEach((e) => e.removeAttribute("aria-invalid"));
+  $("scene-error").textContent = "";
+}
+
+function showError(line) {
+  // "form: r: ... is not a number" → beside the field r; the rest (assembly ranges …) above the preview
+  const m = /^form: (\w+):/.exec(line);
+  const input = m && $("f-" + m[1]);
+  if (input) {
+    input.setAttribute("aria-invalid", "true");
+    $("f-" + m[1] + "-err").textContent = line.replace(/^form: \w+: /, "");
+  } else {
+    $("scene-error").textContent = inWords(line);
+  }
+  $("preview").classList.add("stale");
+}
+
+function inWords(line) {
+  // the assembly's one line (the command line's, in English) said in Ukrainian on a Ukrainian page
+  if (state.lang !== "uk") return line;
+  const m = /^(.*?)dyad (\S+) (\S+) \(links ([^)]*)\) cannot be assembled (for crank angles (.+)|at any crank angle)$/.exec(line);
+  if (!m) return line;
+  const where = m[6] ? "при кутах кривошипа " + m[6].replace(/(\d)\.(\d)/g, "$1,$2") : "за жодного кута кривошипа";
+  return `${m[1]}група ${m[2]} ${m[3]} (ланки ${m[4]}) не складається ${where}`;
+}
+
+// -- the scene, its preview -----------------------------------------------------------------------
+
+async function sceneText() {
+  if (state.mode === "toml") return withBranch($("toml").value);
+  const body = JSON.stringify({ template: state.template.id, values: state.values, branch: state.branch });
+  const r = await post("/api/toml", body, "application/json");
+  const text = await r.text();
+  $("toml").value = text;
+  return text;
+}
+
+function withBranch(text) {
+  // the chosen assembly written into an uploaded scene's [branch] table
+  const keys = Object.keys(state.branch);
+  if (!keys.length) return text;
+  const lines = keys.map((k) => `${k} = ${state.branch[k]}`).join("\n");
+  if (/^\[branch\]\s*$/m.test(text)) return text.replace(/^\[branch\]\s*$/m, "[branch]\n" + lines);
+  return text.replace(/\s*$/, "\n") + "\n[branch]\n" + lines + "\n";
+}
+
+function changed() {
+  clearTimeout(state.timer);
+  state.pending = true;
+  $("preview").dataset.busy = "1";              // drawing: a test (or a reader) can wait for it
+  state.timer = setTimeout(refresh, 150);
+}
+
+async function refresh() {
+  state.pending = false;
+  $("preview").dataset.busy = "1";
+  const seq = ++state.seq;
+  try {
+    await draw(seq);
+  } finally {
+    if (seq === state.seq && !state.pending) delete $("preview").dataset.busy;
+  }
+}
+
+async function draw(seq) {
+  clearFieldErrors();
+  let text;
+  try {
+    text = await sceneText();
+    state.toml = text;
+    const phi = $("phi").value;
+    const r = await post(`/api/scene/preview?phi=${encodeURIComponent(phi)}&lang=${state.lang}`, text, "text/plain; charset=utf-8");
+    const blob = await r.blob();
+    if (seq !== state.seq) return;
+    const keys = JSON.parse(decodeURIComponent(r.headers.get("X-Branch-Keys") || "%5B%5D"));
+    const asm = JSON.parse(decodeURIComponent(r.headers.get("X-Assemblies") || "%5B%5D"));
+    const img = $("preview-img");
+    const old = img.src;
+    img.src = URL.createObjectURL(blob);
+    if (old) URL.revokeObjectURL(old);
+    img.alt = (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
+    $("preview").classList.remove("stale");
+    $("phi-row").hidden = r.headers.get("X-Scene-Kind") === "cam";     // a cam's profile has no crank angle
+    showAssemblies(keys, asm);
+  } catch (e) {
+    if (seq !== state.seq) return;
+    showError(e.message);
+    if (e.status === 503) setTimeout(changed, 1000 * Number(e.retry || 5));   // busy: ask again
+  }
+}
+
+function showAssemblies(keys, asm) {
+  const box = $("assemblies");
+  box.textContent = "";
+  state.assemblies = asm;
+  const two = asm.length === 2;
+  $("branch-help").hidden = !two;
+  asm.forEach((a, k) => {
+    if (!two) return;
+    const b = document.createElement("button");
+    b.type = "button";
+    b.className = "assembly" + (a.error ? " broken" : "");
+    b.id = "assembly-" + (k + 1);
+    const said = Object.entries(a.branch).map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ");
+    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}` + (a.error ? ` — ${a.error}` : ""));
+    b.textContent = `${t("assembly")} ${k + 1}`;
+    if (a.error) b.disabled = true;
+    b.addEventListener("click", () => {
+      Object.assign(state.branch, a.branch);
+      sayBranch();
+      refresh();
+    });
+    box.appendChild(b);
+  });
+  sayBranch();
+}
+
+function sayBranch() {
+  const entries = Object.entries(state.branch);
+  $("branch-said").textContent = entries.length
+    ? `${t("chosen")}: [branch] ` + entries.map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ") : "";
+  $("branch-reset").hidden = !entries.length;
+}
+
+// -- downloads ------------------------------------------------------------------------------------
+
+async function download(path, fallback, button) {
+  $("dl-error").textContent = "";
+  $("dl-status").textContent = t("working");
+  button.disabled = true;
+  try {
+    const text = await sceneText();
+    const r = await post(path, text, "text/plain; charset=utf-8");
+    const name = filename(r, fallback);
+    save(await r.blob(), name);
+    $("dl-status").textContent = t("ready") + name;
+  } catch (e) {
+    $("dl-status").textContent = "";
+    $("dl-error").textContent = e.message + (e.retry ? ` (Retry-After: ${e.retry} s)` : "");
+  } finally {
+    button.disabled = false;
+  }
+}
+
+function sheetPath() {
+  const kinds = [...document.querySelectorAll("input[name=kind]:checked")].map((c) => c.value).join(",");
+  return `/api/sheet?kind=${encodeURIComponent(kinds)}&format=${$("format").value}&type=${$("type").value}` +
+    `&lang=${$("sheet-lang").value}`;
+}
+
+// -- the teacher's part -------------------------------------------------------------------------------
+
+async function readFile(input) {
+  const f = input.files && input.files[0];
+  if (!f) throw new Error(t("no file") + ": " + input.labels[0].textContent);
+  return f;
+}
+
+async function makeKeys() {
+  $("key-error").textContent = "";
+  $("key-status").textContent = "";
+  const button = $("make-keys");
+  const bar = $("key-progress");
+  try {
+    const fd = new FormData();
+    fd.append("variants", await readFile($("variants")), "variants.csv");
+    if ($("base-current").checked) {
+      fd.append("base", new Blob([await sceneText()], { type: "text/plain" }), "base.toml");
+    } else {
+      fd.append("base", await readFile($("base")), "base.toml");
+    }
+    button.disabled = true;
+    const r = await post(`/api/key?wait=0&lang=${state.lang}`, fd);
+    let job = await r.json();
+    bar.hidden = false;
+    while (job.state === "running") {
+      bar.max = job.total;
+      bar.value = job.done;
+      $("key-status").textContent = t("keys progress") + `${job.done} / ${job.total}`;
+      await new Promise((ok) => setTimeout(ok, 700));
+      const s = await fetch(`/api/key/${encodeURIComponent(job.job)}`, { credentials: "same-origin" });
+      job = await s.json();
+      if (!s.ok) throw new Error(job.error);
+    }
+    if (job.state !== "done") throw new Error(job.error);
+    bar.max = job.total;
+    bar.value = job.total;
+    const z = await fetch(`/api/key/${encodeURIComponent(job.job)}/zip`, { credentials: "same-origin" });
+    if (!z.ok) throw new Error((await z.json()).error);
+    save(await z.blob(), "keys.zip");
+    $("key-status").textContent = t("keys done");
+  } catch (e) {
+    $("key-error").textContent = e.message;
+  } finally {
+    button.disabled = false;
+  }
+}
+
+async function gradeForm() {
+  const fd = new FormData();
+  const key = await readFile($("keyfile"));
+  fd.append("key", key, key.name.endsWith(".zip") ? "keys.zip" : "key.json");
+  fd.append("student", await readFile($("students")), "student.csv");
+  return fd;
+}
+
+async function grade() {
+  $("grade-error").textContent = "";
+  try {
+    const r = await post(`/api/check?lang=${state.lang}`, await gradeForm());
+    showGrades(await r.json());
+  } catch (e) {
+    $("grade-error").textContent = e.message;
+  }
+}
+
+async function gradesCsv() {
+  $("grade-error").textContent = "";
+  try {
+    const r = await post(`/api/check?format=csv&lang=${state.lang}`, await gradeForm());
+    save(await r.blob(), "grades.csv");
+  } catch (e) {
+    $("grade-error").textContent = e.message;
+  }
+}
+
+function showGrades(doc) {
+  const cols = ["line", "variant", "position", "quantity", "value", "exact", "error_pct", "tolerance_pct", "status", "note"];
+  const heads = state.lang === "uk"
+    ? ["рядок", "варіант", "положення", "величина", "значення", "точне", "похибка, %", "допуск, %", "оцінка", "примітка"]
+    : ["line", "variant", "position", "quantity", "value", "exact", "error, %", "tolerance, %", "status", "note"];
+  const verdict = state.lang === "uk" ? { pass: "зараховано", fail: "не зараховано", unknown: "невідомо" } : {};
+  const head = $("grades").tHead;
+  const body = $("grades").tBodies[0];
+  head.textContent = "";
+  body.textContent = "";
+  const tr = head.insertRow();
+  cols.forEach((c, k) => { const th = document.createElement("th"); th.textContent = heads[k]; th.scope = "col"; tr.appendChild(th); });
+  doc.rows.forEach((row) => {
+    const r = body.insertRow();
+    r.className = row.status;
+    cols.forEach((c) => {
+      const td = r.insertCell();
+      let v = c === "note" && state.lang === "uk" && row.note_uk ? row.note_uk : row[c];
+      if (c === "status") v = verdict[v] || v;
+      if (typeof v === "number" && !Number.isInteger(v)) v = Number(v.toPrecision(5));
+      td.textContent = v === null || v === undefined ? "" : String(v);
+      if (["variant", "quantity", "status", "note"].includes(c)) td.className = "l";
+    });
+  });
+  const s = doc.summary;
+  $("grade-summary").textContent = `${s.rows} ${t("rows")}: ${s.passed} ${t("passed")}, ${s.failed} ${t("failed")}` +
+    (s.pass_pct !== null ? ` (${s.pass_pct} %)` : "");
+}
+
+// -- start ------------------------------------------------------------------------------------------
+
+function chooseTemplate(id) {
+  state.template = state.templates.find((tp) => tp.id === id) || state.templates[0];
+  state.values = {};
+  state.branch = {};
+  state.mode = "template";
+  renderFields();
+  sayBranch();
+  const cam = state.template.id.startsWith("cam");
+  document.querySelectorAll("input[name=kind]").forEach((c) => {
+    c.checked = cam ? c.value === "cam" : c.value === "kinematics";
+  });
+  changed();
+}
+
+function showPart(which) {
+  const student = which === "student";
+  $("student").hidden = !student;
+  $("teacher").hidden = student;
+  $("tab-student").setAttribute("aria-pressed", String(student));
+  $("tab-teacher").setAttribute("aria-pressed", String(!student));
+}
+
+async function start() {
+  const asked = new URLSearchParams(location.search).get("lang");
+  state.lang = asked === "en" || (!asked && (navigator.language || "").slice(0, 2) === "en") ? "en" : "uk";
+  $("lang").value = state.lang;
+  $("sheet-lang").value = state.lang;
+  const r = await fetch("/api/templates", { credentials: "same-origin" });
+  state.templates = await r.json();
+  state.template = state.templates[0];
+  translate();
+  $("lang").addEventListener("change", () => { state.lang = $("lang").value; $("sheet-lang").value = state.lang; translate(); changed(); });
+  $("template").addEventListener("change", () => chooseTemplate($("template").value));
+  $("upload").addEventListener("change", async () => {
+    const f = $("upload").files[0];
+    if (!f) return;
+    $("toml").value = await f.text();
+    state.mode = "toml";
+    state.branch = {};
+    $("template").selectedIndex = -1;             // no template: choosing one goes back to the form
+    $("fields").disabled = true;
+    $("toml-box").open = true;
+    $("scene-error").textContent = "";
+    $("dl-status").textContent = t("uploaded") + " — " + t("uploaded_mode");
+    changed();
+  });
+  $("toml").addEventListener("input", () => { state.mode = "toml"; $("fields").disabled = true; changed(); });
+  const phi = $("phi"), num = $("phi-num");
+  phi.addEventListener("input", () => { num.value = phi.value; changed(); });
+  num.addEventListener("input", () => { phi.value = num.value; changed(); });
+  $("branch-reset").addEventListener("click", () => { state.branch = {}; sayBranch(); changed(); });
+  $("dl-sheet").addEventListener("click", (e) => download(sheetPath(), "sheet", e.currentTarget));
+  $("dl-view").addEventListener("click", (e) => download(`/api/view?lang=${$("sheet-lang").value}`, "explorer.html", e.currentTarget));
+  $("dl-tables").addEventListener("click", (e) => download(`/api/tables?lang=${$("sheet-lang").value}`, "tables.zip", e.currentTarget));
+  $("dl-toml").addEventListener("click", async () => {
+    try { save(new Blob([await sceneText()], { type: "text/plain" }), "scene.toml"); } catch (e) { $("dl-error").textContent = e.message; }
+  });
+  $("tab-student").addEventListener("click", () => showPart("student"));
+  $("tab-teacher").addEventListener("click", () => showPart("teacher"));
+  $("make-keys").addEventListener("click", makeKeys);
+  $("grade").addEventListener("click", grade);
+  $("grade-csv").addEventListener("click", gradesCsv);
+  $("scene-form").addEventListener("submit", (e) => { e.preventDefault(); refresh(); });
+  refresh();
+}
+
+document.addEventListener("DOMContentLoaded", start);
