@@ -286,13 +286,11 @@ def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str =
     """A cam scene (a path to a file with a [cam] table) solved exactly and constructed graphically
     with ``divisions`` intervals a phase, read with a ruler of ``precision`` mm (docs/cams.md)."""
     from graphplan.exact.cam import solve
-    from graphplan.graphic.cam import construct
     from graphplan.model.cam import load as load_cam
-    from graphplan.sheets.cam import cam_sizes
+    from graphplan.sheets.cam import construct_on
     from graphplan.sheets.form import form
     sol = solve(load_cam(scene))
-    size, prof, height = cam_sizes(sol, form("A1"), divisions, precision)    # the A1 cam sheet's scales
-    return Cam((sol, construct(sol, divisions, precision, size=size, profile_size=prof, height=height)), lang)
+    return Cam((sol, construct_on(sol, form("A1"), divisions, precision)), lang)    # the A1 sheet's scales
 
 
 class Sheet(View):

@@ -36,7 +36,6 @@ def register(sub) -> None:
 def cmd_cam(args: argparse.Namespace) -> int:
     from graphplan.cli.common import dumps
     from graphplan.exact.cam import solve
-    from graphplan.graphic.cam import construct
     from graphplan.model.cam import load
     from graphplan.report.cam import cam_json, cam_table
     from graphplan.util.words import pick
@@ -44,14 +43,13 @@ def cmd_cam(args: argparse.Namespace) -> int:
         raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
     if args.divisions is not None and not 2 <= args.divisions <= 360:
         raise GraphplanError(f"--divisions must be a whole number from 2 to 360, got {args.divisions}")
-    from graphplan.sheets.cam import cam_sizes
+    from graphplan.sheets.cam import construct_on
     from graphplan.sheets.form import form
     cam = load(args.scene)
     f = form(args.format)
     try:
         sol = solve(cam)
-        size, prof, height = cam_sizes(sol, f, args.divisions, args.precision)
-        g = construct(sol, args.divisions, args.precision, size=size, profile_size=prof, height=height)
+        g = construct_on(sol, f, args.divisions, args.precision)
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
     lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))

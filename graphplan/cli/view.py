@@ -44,8 +44,9 @@ def view_cam(cam, args: argparse.Namespace, out: Path) -> int:
     import math
 
     from graphplan.exact.cam import solve
-    from graphplan.graphic.cam import construct
     from graphplan.report.camview import cam_html
+    from graphplan.sheets.cam import construct_on
+    from graphplan.sheets.form import form
     from graphplan.util.words import pick
     lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
@@ -54,7 +55,7 @@ def view_cam(cam, args: argparse.Namespace, out: Path) -> int:
         raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
     try:
         sol = solve(cam)
-        g = construct(sol, None, args.precision)
+        g = construct_on(sol, form("A1"), None, args.precision)    # the numbers of `graphplan cam`
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
     write_atomic(out, cam_html(sol, g, step=args.step, lang=lang, scene=args.scene))

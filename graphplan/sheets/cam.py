@@ -215,14 +215,20 @@ def _lined_up(page: list[Placed]) -> list[Placed]:
     return [Placed(p.name, moved, p.box) if p.name == "phase" else p for p in page]
 
 
+def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
+    """The construction at the scales of the cam sheet on ``f`` (cam_sizes): what `graphplan cam`,
+    the explorer, graphplan.cam() and the sheet itself measure, so that they print the same numbers."""
+    size, prof, height = cam_sizes(sol, f, n, precision)
+    return construct(sol, n, precision, size=size, profile_size=prof, height=height)
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
     each drawing at the largest standard scale that fits its zone (cam_sizes)."""
     lang = args.lang
     sol = solve(cam)
-    size, prof, height = cam_sizes(sol, f, None, args.precision)
-    g = construct(sol, None, args.precision, size=size, profile_size=prof, height=height)
+    g = construct_on(sol, f, None, args.precision)
     leaves, tab, nts, _ = _leaves(sol, g, cam, lang)
     region = field_of(f)
     laid = flow([leaves, [tab, nts]], region, keep_out(f))
