@@ -292,6 +292,33 @@ def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str =
     return Cam((sol, construct(sol, divisions, precision)), lang)
 
 
+class Gears(View):
+    """A gear scene synthesised: the pair drawn in mesh and the planetary train's velocity pictures,
+    each reading beside the closed forms; ``value`` is (gears, solution, mesh, velocities); shown as
+    the meshing (else the train's pictures)."""
+
+    def to_json(self) -> dict[str, Any]:
+        from graphplan.report.gears import gears_json
+        g, sol, mesh, vel = self.value
+        return gears_json(sol, mesh, vel, g.source or "")
+
+    def table(self) -> str:
+        from graphplan.report.gears import gears_table
+        g = self.value[0]
+        return gears_table(self.to_json(), self.lang, g.title_in(self.lang))
+
+    def svg(self) -> str:
+        _, _, mesh, vel = self.value
+        return _page(mesh.record if mesh is not None else vel.record)
+
+
+def gears(scene, precision: float = 0.5, lang: str = "uk") -> Gears:
+    """A gear scene (a path to a file with [gears] and/or [planetary]) solved by the closed forms and
+    constructed graphically, read with a ruler of ``precision`` mm (docs/gears.md)."""
+    from graphplan.report.gears import solved
+    return Gears(solved(scene, precision), lang)
+
+
 class Sheet(View):
     """A drawing sheet (frame, title block, blocks); ``save(path)`` writes .svg, .pdf, .png or .dxf."""
 

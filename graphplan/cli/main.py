@@ -38,6 +38,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.bench",
     "graphplan.cli.view",
     "graphplan.cli.cam",
+    "graphplan.cli.gears",
 )
 
 
