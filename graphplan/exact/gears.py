@@ -261,6 +261,7 @@ class TrainSolution:
     conditions: dict[str, bool]
     candidates: list[dict] = field(default_factory=list)
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    weighed: int = 0              # how many sets met every condition (the candidates are the first of them)
 
     @property
     def radii(self) -> dict[str, float]:
@@ -309,7 +310,7 @@ def overall(kind: str, z) -> int:
 Z_SEARCH = 200      # the largest number of teeth the synthesis tries for a sun or a planet
 
 
-def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> tuple[tuple[int, ...], list[dict]]:
+def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> tuple[tuple[int, ...], list[dict], int]:
     """The z's for the ratio ``u`` with K planets: every set meeting coaxiality, assembly, neighbourhood
     and no undercut with the ratio within ±4 %, the smallest train by its outer diameter (in modules;
     ties: the ratio nearest, then the fewest teeth). Returns the chosen z's and the first ``keep``
@@ -367,15 +368,16 @@ def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> t
     found.sort()
     cands = [{"z": list(z), "diameter_modules": d, "ratio": ratio_of(kind, z),
               "error_pct": 100.0 * (ratio_of(kind, z) - u) / u} for d, _, _, z in found[:keep]]
-    return found[0][3], cands
+    return found[0][3], cands, len(found)
 
 
 def solve_train(train: Train) -> TrainSolution:
     """The train: its z's (given, or synthesised from the ratio), u1H and every member's ω by Willis."""
     cands: list[dict] = []
+    count = 0
     if train.z is None:
         assert train.ratio is not None
-        z, cands = synthesise(train.kind, train.ratio, train.planets)
+        z, cands, count = synthesise(train.kind, train.ratio, train.planets)
     else:
         z = train.z
     u = ratio_of(train.kind, z)
@@ -384,7 +386,7 @@ def solve_train(train: Train) -> TrainSolution:
     w2 = wH - (w1 - wH) * z[0] / z[1]
     omega = {"1": w1, "2": w2, "3": 0.0, "H": wH}
     cond = conditions(train.kind, z, train.planets)
-    sol = TrainSolution(train, tuple(z), u, omega, cond, cands)
+    sol = TrainSolution(train, tuple(z), u, omega, cond, cands, weighed=count)
     names = {"coaxial": ("the coaxiality condition fails", "не виконано умову співвісності"),
              "assembly": ("the assembly condition fails", "не виконано умову складання"),
              "neighbourhood": ("the neighbourhood condition fails", "не виконано умову сусідства"),

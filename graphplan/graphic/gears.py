@@ -31,7 +31,7 @@ import numpy as np
 
 from graphplan.exact.gears import PairSolution, TrainSolution, inv
 from graphplan.graphic.draftsman import circle_line, lay_off, measure
-from graphplan.graphic.record import Record, text_width
+from graphplan.graphic.record import Primitive, Record, text_width
 
 LAYER = "gears"
 TEXT = 3.5
@@ -39,6 +39,7 @@ DEPTH_MM = (40.0, 60.0)        # the whole depth 2.25m drawn this tall
 ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.302 enlargements, 1:1 …
 MODULE_MM = 20.0               # the drawn module when no standard scale gives 40–60 mm
 DIVISIONS = 4                  # equal parts of N1P for the involute
+LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
 LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
 LAMBDA_CLIP = 3.0              # |λ| drawn up to 3 (±∞ at N1, N2)
@@ -78,7 +79,7 @@ class Placer:
         return True
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0)) -> bool:
+              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0)) -> bool:
         w = text_width(text, size)
         dirs = [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
         if toward is not None and abs(toward) > 0:
@@ -89,10 +90,15 @@ class Placer:
                 # the box's nearest side ``rad`` from the anchor along d
                 cx = at.real + d.real * (rad + w / 2)
                 cy = at.imag + d.imag * (rad + size / 2)
-                box = (cx - w / 2, cy - size / 2 - 0.6, cx + w / 2, cy + size / 2)
+                box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
                 if self.free(box):
                     self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
                     self._add_box(box)
+                    if rad > LEADER:          # far from its point: a thin leader to the letter's box
+                        q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
+                        end = at + (q - at) * (1 - 0.6 / abs(q - at))
+                        seg = self.rec.segment(_f(at), _f(end), role="construction", layer=LAYER, step="leader")
+                        self._add(_ink_points(seg))
                     return True
         self.rec.label((at.real + 2.0, at.imag + 2.0), text, size=size, layer=LAYER)
         return False
@@ -319,13 +325,13 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(N2, "N_2", toward=-1 + 0j)
     pl.label(B1, "B_1", toward=-1j * u)
     pl.label(B2, "B_2", toward=1j * u)
-    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, radii=(0.5, 1.5, 3.0))
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
             ang = min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau[k - 1], aw_ + math.radians(10.0)))
             end = centre + rad * cmath.exp(1j * ((math.pi / 2 - ang) if k == 1 else (-math.pi / 2 + ang)))
             sub = {"rf": "f", "rb": "b", "r": "", "rw": "w", "ra": "a"}[name]
-            pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j, radii=(1.0, 2.0, 3.5, 5.5))
+            pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     rec.scales.update(mu_l=mu)
     # readings in SI
     s_g = tuple(2 * (rr * mu) * math.asin(min(1.0, c / (2 * rr))) for c, rr in zip(s_read, (d["r1"], d["r2"])))
@@ -377,13 +383,13 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh) -> Record:
     rec.segment((G, -LAMBDA_CLIP * k), (G, k + 4.0), role="construction", layer=LAYER)
     pl = Placer(rec)
     for name, x in marks.items():
-        pl.label(complex(x, 0), name, size=2.5, toward=-1j, radii=(1.0, 2.0, 3.0, 5.0))
+        pl.label(complex(x, 0), name, size=2.5, toward=-1j, radii=(1.0, 2.0, 3.0, 5.0, 9.0, 13.0))
     for v, t in ((1.0, "1"), (-1.0, "−1"), (-2.0, "−2"), (-3.0, "−3")):
-        pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0))
+        pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
     j1 = int(np.argmin(np.abs(rho - 0.75 * G)))
     j2 = int(np.argmin(np.abs(rho - 0.25 * G)))
-    pl.label(complex(rho[j1], l1[j1] * k), "λ_1", toward=1j, radii=(1.5, 3.0, 5.0, 8.0))
-    pl.label(complex(rho[j2], l2[j2] * k), "λ_2", toward=1j, radii=(1.5, 3.0, 5.0, 8.0))
+    pl.label(complex(rho[j1], l1[j1] * k), "λ_1", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
+    pl.label(complex(rho[j2], l2[j2] * k), "λ_2", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
     rec.scales.update(mu_lambda=1.0 / k, mu_l=mesh.mu_l)
     return rec
 
@@ -466,9 +472,9 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H"}
     for k, s in slopes.items():
         if k != "3":
-            pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5))
+            pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     pl.label(pole, "p_ω", toward=-1 + 0j)
-    pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0))
+    pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
     pl.label(a, "a", toward=1 + 0j)
     pl.label(o2, "o_2", toward=1 + 0j)
     pl.label(C, "c", toward=1j)

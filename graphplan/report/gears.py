@@ -91,7 +91,7 @@ def train_json(tr, vel) -> dict[str, Any]:
         "omega_rad_s": dict(tr.omega),
         "radii_m": tr.radii,
         "conditions": dict(tr.conditions),
-        "candidates": tr.candidates,
+        "candidates": tr.candidates, "candidates_passing": tr.weighed,
         "warnings": [en for en, _ in tr.warnings], "warnings_uk": [uk for _, uk in tr.warnings]}
     if tr.train.ratio is not None:
         doc["ratio"]["required_error_pct"] = 100.0 * (tr.ratio - tr.train.ratio) / tr.train.ratio
@@ -118,7 +118,7 @@ WORDS = {
     "uk": {"title": "Синтез зубчастих механізмів", "pair": "Евольвентна передача", "train": "Планетарна передача",
            "given": "зміщення задано", "auto": "зміщення вибрано за правилом: {rule}",
            "head": ["величина", "колесо 1", "колесо 2"], "exact": "точно", "graph": "графічно", "eps": "εα",
-           "eps_line": "коефіцієнт перекриття εα = {e} (графічно B_1B_2/p_b = {g}, похибка {d} %, межа ±{b})",
+           "eps_line": "коефіцієнт перекриття εα = {e} (графічно B1B2/pb = {g}, похибка {d} %, межа ±{b})",
            "data": "z = {z}, m = {m} мм, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} мм, aw = {w} мм, y = {y}, Δy = {dy}, p = {p} мм, pb = {pb} мм",
            "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e}; "
@@ -128,7 +128,7 @@ WORDS = {
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
            "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %, межа ±{b})",
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
-           "cands": "розглянуто (найменший зовнішній діаметр у модулях D/m):",
+           "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
@@ -136,7 +136,7 @@ WORDS = {
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
-           "eps_line": "contact ratio εα = {e} (graphically B_1B_2/p_b = {g}, error {d} %, bound ±{b})",
+           "eps_line": "contact ratio εα = {e} (graphically B1B2/pb = {g}, error {d} %, bound ±{b})",
            "data": "z = {z}, m = {m} mm, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} mm, aw = {w} mm, y = {y}, Δy = {dy}, p = {p} mm, pb = {pb} mm",
            "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e}; "
@@ -146,7 +146,7 @@ WORDS = {
            "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",
            "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %, bound ±{b})",
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
-           "cands": "weighed (the smallest outer diameter in modules D/m):",
+           "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
@@ -217,7 +217,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
                      n(g["error_pct"][k], 3) if g else ""])
     lines += _table(rows)
     if d["candidates"]:
-        lines += ["", w["cands"]]
+        lines += ["", w["cands"].format(n=d["candidates_passing"])]
         for cnd in d["candidates"]:
             lines.append(f"  z = {', '.join(map(str, cnd['z']))}: D/m = {cnd['diameter_modules']}, u1H = "
                          f"{n(cnd['ratio'])} ({n(cnd['error_pct'], 3)} %)")
