@@ -310,6 +310,24 @@ def overall(kind: str, z) -> int:
 Z_SEARCH = 200      # the largest number of teeth the synthesis tries for a sun or a planet
 
 
+def _ranked(kind: str, zs: np.ndarray, u: float) -> list[tuple]:
+    """The sets (rows of zs) ordered by the criterion: the outer diameter in modules, then the ratio's
+    distance from u, then the fewest teeth; as (diameter, distance, teeth, z) tuples."""
+    if len(zs) == 0:
+        return []
+    zf = zs.astype(float)
+    if kind == "A":
+        dia = zs[:, 2]
+        ratio = 1.0 + zf[:, 2] / zf[:, 0]
+    else:
+        dia = np.maximum(zs[:, 0] + 2 * zs[:, 1], zs[:, 3])
+        ratio = 1.0 + zf[:, 1] * zf[:, 3] / (zf[:, 0] * zf[:, 2])
+    dist = np.round(np.abs(ratio - u), 12)
+    teeth = zs.sum(axis=1)
+    order = np.lexsort(tuple(zs[:, c] for c in range(zs.shape[1] - 1, -1, -1)) + (teeth, dist, dia))
+    return [(int(dia[o]), float(dist[o]), int(teeth[o]), tuple(int(v) for v in zs[o])) for o in order]
+
+
 def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> tuple[tuple[int, ...], list[dict], int]:
     """The z's for the ratio ``u`` with K planets: every set meeting coaxiality, assembly, neighbourhood
     and no undercut with the ratio within ±4 %, the smallest train by its outer diameter (in modules;
@@ -331,29 +349,28 @@ def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> t
         blocked["ratio"] = int(np.sum(ok_r & ok_u))
         blocked["assembly"] = int(np.sum(ok_r & ok_u & ok_a))
         blocked["neighbourhood"] = int(np.sum(ok_r & ok_u & ok_n))
-        for i, j in zip(*np.nonzero(ok)):
-            z = (int(z1[i, 0]), int(z2[0, j]), int(z3[i, j]))
-            found.append((overall(kind, z), round(abs(ratio[i, j] - u), 12), sum(z), z))
+        i, j = np.nonzero(ok)
+        zs = np.stack([z1[i, 0], z2[0, j], z3[i, j]], axis=1)
+        found = _ranked(kind, zs, u)
     else:
         top = 120
-        z1 = np.arange(Z_EXTERNAL_MIN, top + 1)[:, None, None]
-        z2 = np.arange(Z_EXTERNAL_MIN, top + 1)[None, :, None]
-        z2b = np.arange(Z_PLANET_INTERNAL_MIN, top + 1)[None, None, :]
+        a = np.arange(Z_EXTERNAL_MIN, top + 1, dtype=np.int64)
+        b = np.arange(Z_PLANET_INTERNAL_MIN, top + 1, dtype=np.int64)
+        # the ratio first (one pass over the grid), the other conditions on the sets it leaves
+        r3 = 1.0 + (a[None, :, None] * (a[:, None, None] + a[None, :, None] + b[None, None, :])
+                    / (a[:, None, None] * b[None, None, :]).astype(float))
+        i, j, k = np.nonzero(np.abs(r3 - u) <= RATIO_TOLERANCE * u)
+        z1, z2, z2b = a[i], a[j], b[k]
         z3 = z1 + z2 + z2b
-        ratio = 1.0 + z2 * z3 / (z1 * z2b)
-        ok_r = np.abs(ratio - u) <= RATIO_TOLERANCE * u
         ok_u = (z3 >= Z_RING_MIN) & (z3 - z2b >= RING_PLANET_DIFF)
-        g = np.gcd(z2, z2b)
-        ok_a = (z1 * z2b + z2 * z3) % (K * g) == 0
-        ok_n = ((z1 + z2) * sK > np.maximum(z2, z2b) + 2 * ha) if K > 1 else np.ones_like(ok_r)
-        ok = ok_r & ok_u & ok_a & ok_n
-        blocked["ratio"] = int(np.sum(ok_r & ok_u))
-        blocked["assembly"] = int(np.sum(ok_r & ok_u & ok_a))
-        blocked["neighbourhood"] = int(np.sum(ok_r & ok_u & ok_n))
-        idx = np.argwhere(ok)
-        for i, j, k in idx:
-            z = (int(z1[i, 0, 0]), int(z2[0, j, 0]), int(z2b[0, 0, k]), int(z3[i, j, k]))
-            found.append((overall(kind, z), round(abs(ratio_of(kind, z) - u), 12), sum(z), z))
+        ok_a = (z1 * z2b + z2 * z3) % (K * np.gcd(z2, z2b)) == 0
+        ok_n = ((z1 + z2) * sK > np.maximum(z2, z2b) + 2 * ha) if K > 1 else np.ones_like(ok_u)
+        ok = ok_u & ok_a & ok_n
+        blocked["ratio"] = int(np.sum(ok_u))
+        blocked["assembly"] = int(np.sum(ok_u & ok_a))
+        blocked["neighbourhood"] = int(np.sum(ok_u & ok_n))
+        zs = np.stack([z1[ok], z2[ok], z2b[ok], z3[ok]], axis=1)
+        found = _ranked(kind, zs, u)
     if not found:
         if blocked["ratio"] == 0:
             why = f"no teeth without undercut reach u1H = {u:g} within ±4 %"
@@ -365,7 +382,6 @@ def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> t
             why = (f"no set within ±4 % of u1H = {u:g} meets both the assembly and the neighbourhood conditions "
                    f"for K = {K} planets")
         raise GraphplanError(f"planetary.ratio: type {kind}: {why} (teeth tried up to {Z_SEARCH if kind == 'A' else 120})")
-    found.sort()
     cands = [{"z": list(z), "diameter_modules": d, "ratio": ratio_of(kind, z),
               "error_pct": 100.0 * (ratio_of(kind, z) - u) / u} for d, _, _, z in found[:keep]]
     return found[0][3], cands, len(found)
