@@ -215,7 +215,7 @@ def auto_shifts(pair: Pair) -> PairSolution:
     best, key_best = None, None
     failing: dict[str, int] = {}
     names = ("no undercut", "sa ≥ 0.25m", "εα ≥ 1.2", "no interference")
-    tried = 0
+    tried = passing = 0
     for x1, x2 in product(grid, grid):
         try:
             sol = pair_geometry(pair, (x1, x2))
@@ -228,6 +228,7 @@ def auto_shifts(pair: Pair) -> PairSolution:
             if sum(fails) == 1:
                 failing[names[fails.index(True)]] = failing.get(names[fails.index(True)], 0) + 1
             continue
+        passing += 1
         smax = max(v if v is not None else math.inf for v in q["sliding_max"])
         key = (round(smax, 12), -round(sol.eps, 12), x1, x2)
         if key_best is None or key < key_best:
@@ -237,7 +238,7 @@ def auto_shifts(pair: Pair) -> PairSolution:
         raise GraphplanError(f'gears.shifts: "auto" found no shifts x1, x2 from {lo:g} to {hi:g} (step {step:g}) '
                              f"for z = [{pair.z[0]}, {pair.z[1]}]: the zone is closed by {' and '.join(blocking)}")
     q = best.quality()
-    best.auto = {"rule": AUTO_RULE, "rule_uk": AUTO_RULE_UK, "grid": [lo, hi, step], "tried": tried,
+    best.auto = {"rule": AUTO_RULE, "rule_uk": AUTO_RULE_UK, "grid": [lo, hi, step], "tried": tried, "passing": passing,
                  "sliding_max": q["sliding_max"]}
     return best
 

@@ -479,6 +479,8 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(o2, "o_2", toward=1 + 0j)
     pl.label(C, "c", toward=1j)
     pl.label(O, "o", toward=-1j)
+    pl.label(complex(X0 + va / 2, yA), "v_A", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
     pl.label(a + (a - O) * 0.08, "1", toward=1 + 0j)
     pl.label(low, names["2"], toward=1 + 0j)
     pl.label(o2 + (o2 - O) * 0.15, "H", toward=1 + 0j)

@@ -69,7 +69,7 @@ def pair_json(sol, mesh) -> dict[str, Any]:
         "warnings_uk": [uk for _, uk in sol.warnings + (mesh.warnings if mesh else [])]}
     if sol.auto:
         doc["auto"] = {"rule": sol.auto["rule"], "rule_uk": sol.auto["rule_uk"], "grid": sol.auto["grid"],
-                       "tried": sol.auto["tried"]}
+                       "tried": sol.auto["tried"], "passing": sol.auto["passing"]}
     if mesh:
         doc["graphical"] = {
             "mu_l_m_mm": mesh.mu_l, "module_mm": mesh.module_mm, "precision_mm": mesh.precision,

@@ -24,8 +24,8 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
            "meshing": "Евольвентне зачеплення (μ_l = {mu} м/мм)",
-           "sliding": "Діаграми питомого ковзання λ_1, λ_2 уздовж N_{1}N_{2}",
-           "planetary": "Схема планетарної передачі, картина швидкостей і план кутових швидкостей",
+           "sliding": "Питоме ковзання λ_1, λ_2 уздовж N_{1}N_{2}",
+           "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
@@ -35,7 +35,7 @@ WORDS = {
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм",
-           "rule": "Зміщення вибрано за правилом «{rule}»: сітка x від {a} до {b} з кроком {s}, з усіх "
+           "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25m = {h} мм; точність креслення {p} мм",
@@ -49,7 +49,7 @@ WORDS = {
     "en": {"subtitle": "Gear synthesis", "group": "gr.",
            "meshing": "Involute meshing (μ_l = {mu} m/mm)",
            "sliding": "Specific sliding λ_1, λ_2 along N_{1}N_{2}",
-           "planetary": "Planetary train: scheme, velocity picture and plan of angular velocities",
+           "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
@@ -59,7 +59,7 @@ WORDS = {
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm",
-           "rule": "Shifts chosen by the rule “{rule}”: a grid of x from {a} to {b} by {s}; of the {n} pairs "
+           "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25m = {h} mm; drafting precision {p} mm",
@@ -161,7 +161,7 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
         if p["shifts"] == "auto":
             a = p["auto"]
             out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
-                                        b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["tried"]))
+                                        b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
         else:
             out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
@@ -211,7 +211,7 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"])))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
     if vel is not None:
-        drawings.append(Leaf("planetary", record=captioned(vel.record, w["planetary"])))
+        drawings.append(Leaf("planetary", record=captioned(vel.record, w["planetary"], w["planetary2"])))
         tables.append(Leaf("train", record=train_table(doc, lang)))
     width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in tables])
     nts = Leaf("notes", record=note_block(notes(doc, lang, mesh, vel), width))
