@@ -396,3 +396,20 @@ def test_the_sheet_command_writes_the_gear_sheet(tmp_path):
     assert code == 2 and "gear sheet only" in err
     doc = json.loads(run(["gears", str(GEARS), "--json"])[1])
     assert doc["pair"]["graphical"]["module_mm"] == 20.0            # 4:1, the whole depth 45 mm
+
+
+def test_the_bench_section_measures_against_the_bound_and_says_the_failures():
+    from graphplan.bench.gears import rows
+    got = list(rows(quick=True))
+    measured = [r for r in got if r["method"] in ("contact ratio", "ratio u1H")]
+    assert {r["x"] for r in measured} == {0.0, 0.5}
+    for r in measured:
+        if r["x"] == 0:
+            assert r["max_error_pct"] < 1e-9
+        else:
+            assert 0 < r["max_error_pct"] <= r["bound_pct"]
+    fails = {r["setting"]: r for r in got if r["method"] == "failure"}
+    assert fails["sa → 0: z = 12, 30; x = 1.05, 0.3"]["status"] == "warning"
+    assert any("pointed" in w for w in fails["sa → 0: z = 12, 30; x = 1.05, 0.3"]["warnings"])
+    assert any("undercut" in w for w in fails["z = 8, 30; x = 0, 0"]["warnings"])
+    assert any("carrier's segment" in w for w in fails["u1H = 40, B"]["warnings"])

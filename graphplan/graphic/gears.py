@@ -217,11 +217,12 @@ def _wrap(a: float) -> float:
 
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
-                   height_mm: float = 480.0) -> Mesh:
-    """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact)."""
+                   height_mm: float = 480.0, module_mm: float | None = None) -> Mesh:
+    """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
+    drawn ``module_mm`` long (default: ``mesh_scale``)."""
     pair = sol.pair
     z1, z2 = pair.z
-    md = mesh_scale(sol, height_mm)
+    md = module_mm or mesh_scale(sol, height_mm)
     mu = pair.module / md                                     # m/mm
     L = lambda v: lay_off(v / mu, precision)                  # noqa: E731   a length laid off
     d = {"aw": L(sol.aw), "r1": L(sol.r[0]), "r2": L(sol.r[1]), "rb1": L(sol.rb[0]), "rb2": L(sol.rb[1]),
@@ -417,9 +418,11 @@ def _nice(v: float) -> float:
     return at_least(v)
 
 
-def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0) -> Velocities:
+def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0,
+                    sun_segment_mm: float = 100.0) -> Velocities:
     """The scheme at μl (the ring's radius about ``ring_mm``), the velocity picture with vA about
-    60 mm, the plan of angular velocities with h chosen so the sun's segment is about 100 mm."""
+    60 mm, the plan of angular velocities with h chosen so the sun's segment is about
+    ``sun_segment_mm``."""
     rad = tr.radii
     kind = tr.train.kind
     mu = _nice(rad["3"] / ring_mm)                          # m/mm
@@ -429,7 +432,7 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     vA = tr.omega["1"] * rad["1"]
     mu_v = _nice(vA / 60.0)
     va = lay_off(vA / mu_v, precision)
-    h = float(min(150.0, max(20.0, round(100.0 * yA / va))))
+    h = float(min(150.0, max(20.0, round(sun_segment_mm * yA / va))))
     v_o2 = va * (yC - yO2) / (yC - yA)                       # on the planet's line, at the axis' height
     slopes = {"1": va / yA, "2": va / (yA - yC), "H": v_o2 / yO2, "3": 0.0}
     seg = {k: measure(h * s, precision) for k, s in slopes.items()}
