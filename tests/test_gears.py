@@ -413,3 +413,26 @@ def test_the_bench_section_measures_against_the_bound_and_says_the_failures():
     assert any("pointed" in w for w in fails["sa → 0: z = 12, 30; x = 1.05, 0.3"]["warnings"])
     assert any("undercut" in w for w in fails["z = 8, 30; x = 0, 0"]["warnings"])
     assert any("carrier's segment" in w for w in fails["u1H = 40, B"]["warnings"])
+
+
+def test_keys_for_gear_variants_are_graded_by_check(tmp_path):
+    """`graphplan key` over a gear base (z, shifts as "12 30" cells, dotted [gears]/[planetary] columns)
+    writes each variant's geometry and train in the key format; `check` grades a student's table."""
+    table = tmp_path / "variants.csv"
+    table.write_text(f"# base = {GEARS}\nvariant,student,gears.z,gears.module,gears.shifts,planetary.ratio\n"
+                     "01,Ann,12 30,0.005,0.5 0.3,6\n02,Bob,8 9,0.006,auto,8\n", encoding="utf-8")
+    out = tmp_path / "keys"
+    code, _, err = run(["key", str(table), "-o", str(out), "--no-pdf", "--quiet"])
+    assert code == 0, err
+    key = json.loads((out / "01" / "key.json").read_text(encoding="utf-8"))
+    ex = pair_closed(12, 30, 0.005, 0.5, 0.3)
+    values = key["positions"][0]["values"]
+    assert key["kind"] == "gears" and close(values["a_w"], ex["a_w_m"]) and close(values["eps"], ex["eps"])
+    assert close(values["sa1"], ex["sa_m"][0]) and values["u1H"] == pytest.approx(6.0, rel=0.04)
+    assert "skipped" in (out / "summary.csv").read_text(encoding="utf-8")        # z = 8, 9: no "auto" shifts
+    student = tmp_path / "s.csv"
+    student.write_text(f"variant,position,quantity,value\n01,0,a_w,{ex['a_w_m']:.5f}\n01,0,sa1,0.003\n",
+                       encoding="utf-8")
+    code, report, _ = run(["check", str(out / "01" / "key.json"), str(student), "--json"])
+    rows = json.loads(report)["rows"]
+    assert code == 0 and [r["status"] for r in rows] == ["pass", "fail"] and rows[1]["note"] == ""

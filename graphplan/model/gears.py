@@ -107,7 +107,27 @@ def _number(table: dict, prefix: str, key: str, lo: float, hi: float, unit: str,
     return v
 
 
+def _listed(value: Any) -> Any:
+    """A variant table's cell for a list: "12 30" or "12;30" → [12, 30] (numbers as TOML reads them);
+    anything else as it is."""
+    if not isinstance(value, str) or value == "auto":
+        return value
+    import re
+    parts = [p for p in re.split(r"[;\s]+", value.strip()) if p]
+    out: list[Any] = []
+    for p in parts:
+        try:
+            out.append(int(p))
+        except ValueError:
+            try:
+                out.append(float(p.replace(",", ".")))
+            except ValueError:
+                return value
+    return out
+
+
 def _teeth(value: Any, key: str, count: tuple[int, ...], bounds: tuple[int, int], where: str) -> tuple[int, ...]:
+    value = _listed(value)
     lo, hi = bounds
     names = " or ".join(str(c) for c in count)
     if not isinstance(value, list) or len(value) not in count:
@@ -131,7 +151,7 @@ def _pair(t: Any, where: str) -> Pair:
         raise SceneError("gears.z: missing (z = [z1, z2])", where)
     z = _teeth(t["z"], "gears.z", (2,), Z_PAIR, where)
     m = _number(t, "gears", "module", *MODULE, "m", where)
-    raw = t.get("shifts", [0.0, 0.0])
+    raw = _listed(t.get("shifts", [0.0, 0.0]))
     shifts: tuple[float, float] | None
     if raw == "auto":
         shifts = None
