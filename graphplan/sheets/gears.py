@@ -24,7 +24,7 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
            "meshing": "Евольвентне зачеплення (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2 уздовж N_{1}N_{2}",
+           "sliding": "Питоме ковзання λ_1, λ_2 уздовж лінії зачеплення",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
@@ -38,7 +38,7 @@ WORDS = {
            "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
-           "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25m = {h} мм; точність креслення {p} мм",
+           "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
            "bound_eps": "Межа похибки ε_α від точності креслення: ±{b} (відкладені a_w, r_b, r_a, p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності)",
            "train": "Передача типу {t}: K = {k}, u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
@@ -48,7 +48,7 @@ WORDS = {
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %"},
     "en": {"subtitle": "Gear synthesis", "group": "gr.",
            "meshing": "Involute meshing (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2 along N_{1}N_{2}",
+           "sliding": "Specific sliding λ_1, λ_2 along the line of action",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
@@ -62,7 +62,7 @@ WORDS = {
            "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
-           "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25m = {h} mm; drafting precision {p} mm",
+           "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
            "bound_eps": "Bound of the error of ε_α from the drafting precision: ±{b} (a_w, r_b, r_a, p_b laid off "
                         "and B_{{1}}B_{{2}} read, each within half the precision)",
            "train": "Type {t} train: K = {k}, u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
