@@ -225,8 +225,12 @@ def test_the_train_meets_its_conditions_and_willis(kind, u, K):
 
 
 def test_given_teeth_that_fail_a_condition_are_said():
-    tr = solve_train(Train("A", 4, 0.003, 100.0, z=(20, 30, 81)))
-    assert not tr.conditions["coaxial"] and any("coaxiality" in en for en, _ in tr.warnings)
+    tr = solve_train(Train("A", 5, 0.003, 100.0, z=(20, 40, 100)))         # 120/5 whole, 60·sin 36° < 42
+    assert tr.conditions["coaxial"] and tr.conditions["assembly"] and not tr.conditions["neighbourhood"]
+    assert tr.conditions["no_undercut"]
+    assert any("neighbourhood" in en for en, _ in tr.warnings)
+    with pytest.raises(GraphplanError, match="not coaxial"):
+        solve_train(Train("A", 4, 0.003, 100.0, z=(20, 30, 81)))
 
 
 # -- the graphical construction: within the precision's worst case, exact at 0 --------------------------

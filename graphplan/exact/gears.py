@@ -397,6 +397,11 @@ def solve_train(train: Train) -> TrainSolution:
         z, cands, count = synthesise(train.kind, train.ratio, train.planets)
     else:
         z = train.z
+        cond = conditions(train.kind, z, train.planets)
+        if not cond["coaxial"]:
+            want = (f"z3 = z1 + 2·z2 = {z[0] + 2 * z[1]}, got {z[2]}" if train.kind == "A" else
+                    f"z1 + z2 = z3 − z2' needs z3 = {z[0] + z[1] + z[2]}, got {z[3]}")
+            raise GraphplanError(f"planetary.z: the wheels are not coaxial (equal modules): {want}")
     u = ratio_of(train.kind, z)
     w1 = train.omega
     wH = w1 / u

@@ -60,53 +60,78 @@ class Placer:
     def __init__(self, rec: Record, clear: float = 0.8):
         self.rec, self.clear = rec, clear
         self.cells: dict[tuple[int, int], list[tuple[float, float]]] = {}
+        self.letters: dict[tuple[int, int], list[tuple[float, float]]] = {}     # the letters' ink alone
         for p in rec.items:
             self._add(_ink_points(p))
 
-    def _add(self, pts) -> None:
+    def _add(self, pts, into=None) -> None:
         c = self.CELL
         for x, y in pts:
-            self.cells.setdefault((int(math.floor(x / c)), int(math.floor(y / c))), []).append((x, y))
+            (self.cells if into is None else into).setdefault((int(math.floor(x / c)), int(math.floor(y / c))),
+                                                              []).append((x, y))
 
-    def free(self, box) -> bool:
+    def free(self, box, cells=None) -> bool:
         x0, y0, x1, y1 = box
         m, c = self.clear, self.CELL
+        cells = self.cells if cells is None else cells
         for i in range(int(math.floor((x0 - m) / c)), int(math.floor((x1 + m) / c)) + 1):
             for j in range(int(math.floor((y0 - m) / c)), int(math.floor((y1 + m) / c)) + 1):
-                for x, y in self.cells.get((i, j), ()):
+                for x, y in cells.get((i, j), ()):
                     if x0 - m <= x <= x1 + m and y0 - m <= y <= y1 + m:
                         return False
         return True
 
+    def free_path(self, a: complex, b: complex, letters_only: bool = False) -> bool:
+        """Whether a leader from a to b passes clear of every line and letter (of the letters only)."""
+        n = max(1, int(abs(b - a) / 0.4))
+        for k in range(n + 1):
+            q = a + (b - a) * k / n
+            if not self.free((q.real, q.imag, q.real, q.imag), self.letters if letters_only else None):
+                return False
+        return True
+
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0)) -> bool:
+              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False) -> bool:
         w = text_width(text, size)
         dirs = [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
         if toward is not None and abs(toward) > 0:
             u = toward / abs(toward)
             dirs.sort(key=lambda d: -((d * u.conjugate()).real))
-        for rad in radii:
-            for d in dirs:
-                # the box's nearest side ``rad`` from the anchor along d
-                cx = at.real + d.real * (rad + w / 2)
-                cy = at.imag + d.imag * (rad + size / 2)
-                box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
-                if self.free(box):
-                    self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
-                    self._add_box(box)
+        far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
+        for strict in (True, False):          # first with the leader's path clear too, then the box alone
+            for rad in tuple(radii) + far:
+                for d in dirs:
+                    # the box's nearest side ``rad`` from the anchor along d
+                    cx = at.real + d.real * (rad + w / 2)
+                    cy = at.imag + d.imag * (rad + size / 2)
+                    box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
+                    if not self.free(box):
+                        continue
+                    end = None
                     if rad > LEADER:          # far from its point: a thin leader to the letter's box
                         q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
-                        end = at + (q - at) * (1 - 0.6 / abs(q - at))
+                        end = at + (q - at) * (1 - 1.2 / abs(q - at))
+                        if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
+                                              letters_only=not strict):
+                            continue
+                    self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
+                    self._add_box(box)
+                    if end is not None:
                         seg = self.rec.segment(_f(at), _f(end), role="construction", layer=LAYER, step="leader")
                         self._add(_ink_points(seg))
                     return True
+        if optional:                          # a circle's name where five circles crowd: left out
+            return False
         self.rec.label((at.real + 2.0, at.imag + 2.0), text, size=size, layer=LAYER)
         return False
 
     def _add_box(self, box) -> None:
         x0, y0, x1, y1 = box
-        self._add([(float(x), y) for x in np.arange(x0, x1 + 0.4, 0.4) for y in (y0, y1)])
-        self._add([(x, float(y)) for y in np.arange(y0, y1 + 0.4, 0.4) for x in (x0, x1)])
+        pts = [(float(x), y) for x in np.arange(x0, x1 + 0.4, 0.4) for y in (y0, y1)] + \
+              [(x, float(y)) for y in np.arange(y0, y1 + 0.4, 0.4) for x in (x0, x1)] + \
+              [(float(x), float(y)) for x in np.arange(x0, x1 + 0.4, 0.8) for y in np.arange(y0, y1 + 0.4, 0.8)]
+        self._add(pts)
+        self._add(pts, self.letters)
 
 
 def _ink_points(p) -> list[tuple[float, float]]:
@@ -156,20 +181,25 @@ class Mesh:
     warnings: list[tuple[str, str]] = field(default_factory=list)
 
 
-def mesh_scale(sol: PairSolution, height_mm: float = 480.0) -> float:
+def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 780.0) -> float:
     """The drawn module, mm: a standard enlargement (GOST 2.302) that draws the whole depth 2.25m 40–60 mm
-    tall, else 20 mm to the module (45 mm); smaller only when the centres would not fit ``height_mm``
-    (the zone's height) — then the largest whole millimetre that fits."""
+    tall, else 20 mm to the module (45 mm); smaller only when the centres and the teeth would not fit
+    ``height_mm`` × ``width_mm`` (the zone) — then the largest whole millimetre that fits (half
+    millimetres below 2 mm: large wheels on a small sheet draw small teeth, and say so)."""
     m = sol.pair.module * 1000.0                     # mm
     top = (sol.aw + sol.ra[0] * 0.1) * 1000.0 / m    # the drawing's height in modules, about
-    fits = lambda md: top * md <= height_mm           # noqa: E731
+    tau = [2 * math.pi / z for z in sol.pair.z]
+    wide = 2 * max(sol.rb[0] * math.sin(sol.alpha_w), sol.rb[1] * math.sin(sol.alpha_w),
+                   1.7 * tau[0] * sol.ra[0], 1.7 * tau[1] * sol.ra[1]) * 1000.0 / m + 4.0
+    fits = lambda md: top * md + 20.0 <= height_mm and wide * md + 30.0 <= width_mm     # noqa: E731
     for k in ENLARGE:
         md = m * k
         if DEPTH_MM[0] <= 2.25 * md <= DEPTH_MM[1] and fits(md):
             return md
     if fits(MODULE_MM):
         return MODULE_MM
-    return max(2.0, math.floor(height_mm / top))
+    md = min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)
+    return float(math.floor(md)) if md >= 2.0 else max(0.25, math.floor(md * 4) / 4)
 
 
 def _involute(R: float, theta_s: float, t: np.ndarray) -> np.ndarray:
@@ -217,12 +247,12 @@ def _wrap(a: float) -> float:
 
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
-                   height_mm: float = 480.0, module_mm: float | None = None) -> Mesh:
+                   height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0) -> Mesh:
     """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
     drawn ``module_mm`` long (default: ``mesh_scale``)."""
     pair = sol.pair
     z1, z2 = pair.z
-    md = module_mm or mesh_scale(sol, height_mm)
+    md = module_mm or mesh_scale(sol, height_mm, width_mm)
     mu = pair.module / md                                     # m/mm
     L = lambda v: lay_off(v / mu, precision)                  # noqa: E731   a length laid off
     d = {"aw": L(sol.aw), "r1": L(sol.r[0]), "r2": L(sol.r[1]), "rb1": L(sol.rb[0]), "rb2": L(sol.rb[1]),
@@ -332,7 +362,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             ang = min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau[k - 1], aw_ + math.radians(10.0)))
             end = centre + rad * cmath.exp(1j * ((math.pi / 2 - ang) if k == 1 else (-math.pi / 2 + ang)))
             sub = {"rf": "f", "rb": "b", "r": "", "rw": "w", "ra": "a"}[name]
-            pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
+            pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j,
+                     radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
     rec.scales.update(mu_l=mu)
     # readings in SI
     s_g = tuple(2 * (rr * mu) * math.asin(min(1.0, c / (2 * rr))) for c, rr in zip(s_read, (d["r1"], d["r2"])))
@@ -429,6 +460,10 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     L = lambda v: lay_off(v / mu, precision)                 # noqa: E731
     yA, yO2 = L(rad["1"]), L(rad["H"])
     yC = L(rad["3"])
+    if not 0 < yA < yO2 < yC:
+        from graphplan.util.errors import GraphplanError
+        raise GraphplanError(f"--precision {precision:g} mm: the train's radii drawn at μl = {mu:g} m/mm "
+                             "collapse (r1, aw, r3 read the same); take a finer precision")
     vA = tr.omega["1"] * rad["1"]
     mu_v = _nice(vA / 60.0)
     va = lay_off(vA / mu_v, precision)

@@ -86,7 +86,7 @@ def train_json(tr, vel) -> dict[str, Any]:
     doc: dict[str, Any] = {
         "type": t.kind, "planets": t.planets, "z": list(tr.z), "module_m": t.module,
         "ratio_required": t.ratio,
-        "ratio": {"exact": tr.ratio, "graphical": vel.ratio if vel else None,
+        "ratio": {"exact": tr.ratio, "graphical": _fin(vel.ratio) if vel else None,
                   "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None},
         "omega_rad_s": dict(tr.omega),
         "radii_m": tr.radii,

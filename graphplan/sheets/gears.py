@@ -24,7 +24,7 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
            "meshing": "Евольвентне зачеплення (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2 уздовж лінії зачеплення",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
@@ -48,7 +48,7 @@ WORDS = {
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %"},
     "en": {"subtitle": "Gear synthesis", "group": "gr.",
            "meshing": "Involute meshing (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2 along the line of action",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
@@ -199,7 +199,9 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     region = field_of(f)
     sol = solve(g)
     height = region[3] - region[1] - 25.0                      # the meshing's zone: the field less its caption
-    mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=height) if sol.pair else None
+    mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=height,
+                          width_mm=min(region[2] - region[0], 0.6 * (region[2] - region[0]) + 150.0)) \
+        if sol.pair else None
     vel = construct_train(sol.train, args.precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
         if sol.train else None
     doc = gears_json(sol, mesh, vel, g.source or "")
@@ -208,7 +210,7 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     tables: list[Leaf] = []
     if mesh is not None:
         drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(mu=_n(mesh.mu_l, lang)))))
-        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"])))
+        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"])))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
     if vel is not None:
         drawings.append(Leaf("planetary", record=captioned(vel.record, w["planetary"], w["planetary2"])))
@@ -219,7 +221,8 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     if pages is None:
         laid = flow(_rows(drawings, tables + [nts], region), region, keep_out(f))
         if laid is None:
-            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format")
+            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
+                                 g.source)
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
