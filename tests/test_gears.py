@@ -440,3 +440,22 @@ def test_keys_for_gear_variants_are_graded_by_check(tmp_path):
     code, report, _ = run(["check", str(out / "01" / "key.json"), str(student), "--json"])
     rows = json.loads(report)["rows"]
     assert code == 0 and [r["status"] for r in rows] == ["pass", "fail"] and rows[1]["note"] == ""
+
+
+@pytest.mark.slow
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(5, 300), st.integers(5, 300), st.sampled_from([0.0001, 0.004, 0.1]),
+       st.floats(-0.5, 1.2), st.floats(-0.5, 1.2), st.sampled_from(["A1", "A3"]), st.sampled_from(["uk", "en"]))
+def test_any_gear_sheet_is_composed_without_defects(z1, z2, m, x1, x2, fmt, lang):
+    """Large and small wheels on either format: nothing overprinted, nothing outside its box."""
+    from graphplan.model.gears import build
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    try:
+        g = build({"gears": {"z": [z1, z2], "module": m, "shifts": [x1, x2]},
+                   "planetary": {"type": "B" if z1 % 2 else "A", "ratio": 5.0 + z2 % 7, "module": 0.003}}, "<t>")
+        sheet = BUILDERS["gears"](g, form(fmt), SheetOptions(lang=lang, sheet="gears"))
+    except GraphplanError:
+        return
+    assert defects(sheet) == []
