@@ -426,7 +426,8 @@ def dynamics(scene=None, delta: float | None = None, divisions: int | None = Non
 def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = "uk",
           precision: float = 0.5, positions: int | None = None,
           accel: Sequence[str | int | float] | None = None) -> Sheet:
-    """A drawing sheet: ``kind`` "kinematics", "forces" or "dynamics", on ``format`` A1…A3, in ``lang``."""
+    """A drawing sheet: ``kind`` "kinematics", "forces", "dynamics" or "gears" (a gear scene's path), on
+    ``format`` A1…A3, in ``lang``."""
     from types import SimpleNamespace
 
     from graphplan.sheets.form import form
@@ -437,4 +438,9 @@ def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = 
         raise GraphplanError(f"sheet kind {kind!r}: use one of {', '.join(BUILDERS)}")
     options = SimpleNamespace(positions=positions, accel=[f"#{a}" if isinstance(a, int) else str(a) for a in accel] if accel else None,
                               precision=precision, lang=lang, sheet=kind)
+    if kind == "gears":                     # a gear scene: the sheet takes the gears themselves
+        from graphplan.model.gears import Gears as GearScene
+        from graphplan.model.gears import load as load_gears
+        target = scene if isinstance(scene, GearScene) else load_gears(scene)
+        return Sheet(build(target, form(format), options), lang)
     return Sheet(build(_study_of(scene), form(format), options), lang)
