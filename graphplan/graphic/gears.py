@@ -258,6 +258,10 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     d = {"aw": L(sol.aw), "r1": L(sol.r[0]), "r2": L(sol.r[1]), "rb1": L(sol.rb[0]), "rb2": L(sol.rb[1]),
          "ra1": L(sol.ra[0]), "ra2": L(sol.ra[1]), "rf1": L(sol.rf[0]), "rf2": L(sol.rf[1]), "pb": L(sol.pb)}
     D, R1, R2 = d["aw"], d["rb1"], d["rb2"]
+    if not (d["pb"] > 0 and d["ra1"] > R1 > 0 and d["ra2"] > R2 > 0 and D > R1 + R2 and d["r1"] > 0 and d["r2"] > 0):
+        from graphplan.util.errors import GraphplanError
+        raise GraphplanError(f"--precision {precision:g} mm: the meshing drawn with the module {md:g} mm long cannot "
+                             "be laid off at this precision (its circles and pitch collapse); take a finer one")
     O1, O2 = 0j, 1j * D
     aw_ = math.acos(min(1.0, (R1 + R2) / D))                  # the common tangent's angle
     N1 = R1 * complex(math.sin(aw_), math.cos(aw_))
