@@ -37,6 +37,7 @@ LAYER = "gears"
 TEXT = 3.5
 DEPTH_MM = (40.0, 60.0)        # the whole depth 2.25m drawn this tall
 ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.302 enlargements, 1:1 …
+REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
 MODULE_MM = 20.0               # the drawn module when no standard scale gives 40–60 mm
 DIVISIONS = 4                  # equal parts of N1P for the involute
 LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
@@ -184,8 +185,10 @@ class Mesh:
 def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 780.0) -> float:
     """The drawn module, mm: a standard enlargement (GOST 2.302) that draws the whole depth 2.25m 40–60 mm
     tall, else 20 mm to the module (45 mm); smaller only when the centres and the teeth would not fit
-    ``height_mm`` × ``width_mm`` (the zone) — then the largest whole millimetre that fits (half
-    millimetres below 2 mm: large wheels on a small sheet draw small teeth, and say so)."""
+    ``height_mm`` × ``width_mm`` (the zone) — then the largest whole millimetre that still draws 40 mm,
+    else the largest standard scale that fits with the module at least 2 mm, else the largest whole
+    millimetre (quarter millimetres below 2 mm: large wheels on a small sheet draw small teeth, and say
+    so)."""
     m = sol.pair.module * 1000.0                     # mm
     top = (sol.aw + sol.ra[0] * 0.1) * 1000.0 / m    # the drawing's height in modules, about
     tau = [2 * math.pi / z for z in sol.pair.z]
@@ -198,6 +201,12 @@ def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 78
             return md
     if fits(MODULE_MM):
         return MODULE_MM
+    md = float(math.floor(min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)))
+    if 2.25 * md >= DEPTH_MM[0]:                  # a whole millimetre still draws 40 mm
+        return md
+    for k in sorted(ENLARGE + REDUCE, reverse=True):    # the largest standard scale that fits, when one does
+        if m * k >= 2.0 and fits(m * k):
+            return m * k
     md = min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)
     return float(math.floor(md)) if md >= 2.0 else max(0.25, math.floor(md * 4) / 4)
 
