@@ -459,3 +459,31 @@ def test_any_gear_sheet_is_composed_without_defects(z1, z2, m, x1, x2, fmt, lang
     except GraphplanError:
         return
     assert defects(sheet) == []
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(8, 120), st.integers(8, 120), st.floats(-0.5, 1.0), st.floats(-0.5, 1.0),
+       st.sampled_from([0.1, 0.25, 0.5, 1.0]))
+def test_the_contact_ratio_measured_on_generated_pairs_is_within_the_worst_case(z1, z2, x1, x2, p):
+    from graphplan.graphic.gears import construct_mesh
+    assume(pair_closed(z1, z2, 0.004, x1, x2) is not None)
+    sol = solve_pair(Pair((z1, z2), 0.004, (x1, x2)))
+    try:
+        m = construct_mesh(sol, p)
+    except GraphplanError:
+        return                                          # collapsed at this precision: refused
+    assert abs(m.eps - sol.eps) <= eps_worst(sol, m.mu_l, p) + 1e-12
+    assert abs(construct_mesh(sol, 0.0, module_mm=m.module_mm).eps - sol.eps) < 1e-9
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from("AB"), st.floats(3.0, 12.0), st.integers(2, 4), st.sampled_from([0.1, 0.25, 0.5, 1.0]))
+def test_the_ratio_read_on_generated_trains_is_within_the_worst_case(kind, u, K, p):
+    from graphplan.graphic.gears import construct_train
+    try:
+        tr = solve_train(Train(kind, K, 0.003, 100.0, ratio=u))
+        vel = construct_train(tr, p)
+    except GraphplanError:
+        return
+    assert abs(vel.ratio - tr.ratio) <= ratio_worst(tr, vel, p) + 1e-12
+    assert abs(construct_train(tr, 0.0).ratio - tr.ratio) < 1e-9
