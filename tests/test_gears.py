@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from conftest import ROOT
 from fuzz_scenes import check_run, run
-from graphplan.exact.gears import Solution, solve, solve_pair, solve_train
+from graphplan.exact.gears import Solution, solve_pair, solve_train
 from graphplan.model.gears import Gears, Pair, Train
 from graphplan.report.gears import gears_json
 from graphplan.util.errors import GraphplanError

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphplan.exact.gears import PairSolution, TrainSolution, inv
+from graphplan.exact.gears import PairSolution, TrainSolution
 from graphplan.graphic.draftsman import circle_line, lay_off, measure
 from graphplan.graphic.record import Primitive, Record, text_width
 
@@ -293,9 +293,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             span = min(math.degrees(math.asin(min(1.0, half_w / rad))),
                        max(math.degrees(1.8 * tau[k - 1]), math.degrees(aw_) + 10.0))
             mid = 90.0 if up > 0 else 270.0
-            role = "axis" if name in ("r", "rw") else "construction"
-            if name == "rw":
-                role = "construction"
+            role = "axis" if name == "r" else "construction"      # the pitch circle dash-dot (GOST 2.402)
             rec.arc(_f(centre), rad, mid - span, mid + span, role=role, layer=LAYER, step=f"circle {name}{k}")
     rec.segment(_f(O1 - 8j), _f(O2 + 8j), role="axis", layer=LAYER, step="O1O2")
     # the line of action, extended a little past N1 and N2
