@@ -378,7 +378,7 @@ def test_the_gear_sheet_is_composed_and_clean(name, lang, fmt):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name, lang, fmt", [("gears", "uk", "A1"), ("gears_b", "en", "A1"), ("gears", "uk", "A3"),
-                                             ("gears_b", "en", "A3")])
+                                             ("gears_b", "en", "A3"), ("gears", "uk", "A2")])
 def test_the_gear_sheet_has_no_overprinted_word(tmp_path, name, lang, fmt):
     import subprocess
     import sys
