@@ -20,10 +20,10 @@ from __future__ import annotations
 from typing import Any
 
 __version__ = "0.1.0"
-__all__ = ["load", "study", "plans", "diagrams", "forces", "dynamics", "sheet", "cam", "__version__"]
+__all__ = ["load", "study", "plans", "diagrams", "forces", "dynamics", "sheet", "cam", "gears", "__version__"]
 
 _LAZY = {name: "graphplan.api" for name in ("load", "study", "plans", "diagrams", "forces", "dynamics", "sheet",
-                                            "cam")}
+                                            "cam", "gears")}
 
 
 def __getattr__(name: str) -> Any:

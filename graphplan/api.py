@@ -293,6 +293,33 @@ def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str =
     return Cam((sol, construct_on(sol, form("A1"), divisions, precision)), lang)    # the A1 sheet's scales
 
 
+class Gears(View):
+    """A gear scene synthesised: the pair drawn in mesh and the planetary train's velocity pictures,
+    each reading beside the closed forms; ``value`` is (gears, solution, mesh, velocities); shown as
+    the meshing (else the train's pictures)."""
+
+    def to_json(self) -> dict[str, Any]:
+        from graphplan.report.gears import gears_json
+        g, sol, mesh, vel = self.value
+        return gears_json(sol, mesh, vel, g.source or "")
+
+    def table(self) -> str:
+        from graphplan.report.gears import gears_table
+        g = self.value[0]
+        return gears_table(self.to_json(), self.lang, g.title_in(self.lang))
+
+    def svg(self) -> str:
+        _, _, mesh, vel = self.value
+        return _page(mesh.record if mesh is not None else vel.record)
+
+
+def gears(scene, precision: float = 0.5, lang: str = "uk") -> Gears:
+    """A gear scene (a path to a file with [gears] and/or [planetary]) solved by the closed forms and
+    constructed graphically, read with a ruler of ``precision`` mm (docs/gears.md)."""
+    from graphplan.report.gears import solved
+    return Gears(solved(scene, precision), lang)
+
+
 class Sheet(View):
     """A drawing sheet (frame, title block, blocks); ``save(path)`` writes .svg, .pdf, .png or .dxf."""
 
@@ -400,7 +427,8 @@ def dynamics(scene=None, delta: float | None = None, divisions: int | None = Non
 def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = "uk",
           precision: float = 0.5, positions: int | None = None,
           accel: Sequence[str | int | float] | None = None) -> Sheet:
-    """A drawing sheet: ``kind`` "kinematics", "forces" or "dynamics", on ``format`` A1…A3, in ``lang``."""
+    """A drawing sheet: ``kind`` "kinematics", "forces", "dynamics" or "gears" (a gear scene's path), on
+    ``format`` A1…A3, in ``lang``."""
     from types import SimpleNamespace
 
     from graphplan.sheets.form import form
@@ -411,4 +439,9 @@ def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = 
         raise GraphplanError(f"sheet kind {kind!r}: use one of {', '.join(BUILDERS)}")
     options = SimpleNamespace(positions=positions, accel=[f"#{a}" if isinstance(a, int) else str(a) for a in accel] if accel else None,
                               precision=precision, lang=lang, sheet=kind)
+    if kind == "gears":                     # a gear scene: the sheet takes the gears themselves
+        from graphplan.model.gears import Gears as GearScene
+        from graphplan.model.gears import load as load_gears
+        target = scene if isinstance(scene, GearScene) else load_gears(scene)
+        return Sheet(build(target, form(format), options), lang)
     return Sheet(build(_study_of(scene), form(format), options), lang)

@@ -24,6 +24,9 @@ def example(name: str):
     if name.startswith("cam_"):
         from graphplan.model.cam import load as load_cam
         return load_cam(ROOT / "examples" / f"{name}.toml")
+    if name.startswith("gears"):            # a gear example: the gear sheet takes the scene itself
+        from graphplan.model.gears import load as load_gears
+        return load_gears(ROOT / "examples" / f"{name}.toml")
     return study(load(ROOT / "examples" / f"{name}.toml"))
 
 

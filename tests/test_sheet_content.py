@@ -46,7 +46,9 @@ def latin_words(text: str, names: set[str]) -> list[str]:
 
 def symbol_names(st) -> set[str]:
     """The names a Ukrainian sheet may letter in Latin: the scene's points and links (not its guides'
-    identifiers, which the sheet names per language)."""
+    identifiers, which the sheet names per language); a cam or a gear scene names none."""
+    if not hasattr(st, "mech"):
+        return set()
     return set(st.mech.point_names()) | set(st.mech.links)
 
 

@@ -209,6 +209,12 @@ def cam(quick: bool) -> Iterator[Row]:
     return measured(quick, examples_dir())
 
 
+def gears(quick: bool) -> Iterator[Row]:
+    """The graphical εα and u1H against the closed forms (bench/gears.py)."""
+    from graphplan.bench.gears import rows as measured
+    return measured(quick)
+
+
 def processes(quick: bool) -> Iterator[Row]:
     """Whole commands as fresh processes against the bare import (bench/processes.py)."""
     from graphplan.bench.processes import rows as measured
@@ -225,6 +231,7 @@ SECTIONS: dict[str, Callable[[bool], Iterator[Row]]] = {
     "external": external,
     "flywheel": flywheel,
     "cam": cam,
+    "gears": gears,
 }
 ON_REQUEST: dict[str, Callable[[bool], Iterator[Row]]] = {     # not in a plain run: asked for by name
     "processes": processes,
@@ -380,6 +387,11 @@ def _chart_cam(rows: list[Row], plt):
     return chart(rows, plt)
 
 
+def _chart_gears(rows: list[Row], plt):
+    from graphplan.bench.gears import chart
+    return chart(rows, plt)
+
+
 def _chart_flywheel(rows: list[Row], plt):
     from graphplan.bench.dynamics import chart
     return chart(rows, plt)
@@ -387,7 +399,7 @@ def _chart_flywheel(rows: list[Row], plt):
 
 CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "plans": _chart_plans,
                                "stability": _chart_stability, "differentiation": differentiation.chart,
-                               "flywheel": _chart_flywheel, "cam": _chart_cam}
+                               "flywheel": _chart_flywheel, "cam": _chart_cam, "gears": _chart_gears}
 
 
 SWEEP_WORDS = {"four_bar toward": "bench sweep four_bar", "crank_slider l/r": "bench sweep crank_slider",

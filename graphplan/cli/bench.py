@@ -29,7 +29,7 @@ def register(sub) -> None:
     p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
     p.add_argument("--section", action="append", metavar="NAME",
                    help="run only this section (repeatable): speed, chords, differentiation, plans, stability, "
-                        "sheet, external, flywheel, or processes (whole commands against the bare import of "
+                        "sheet, external, flywheel, cam, gears, or processes (whole commands against the bare import of "
                         "numpy, shapely and svgwrite; only when asked for)")
     lang_arg(p)
     p.set_defaults(handler=cmd_bench)

@@ -25,6 +25,8 @@ SHEETS = [
     ("slotter", "dynamics", "uk", "slotter_dynamics.svg", "A1"),
     ("cam_translating", "cam", "uk", "cam_translating.svg", "A1"),
     ("cam_rocking", "cam", "en", "cam_rocking_en.svg", "A1"),
+    ("gears", "gears", "uk", "gears.svg", "A1"),
+    ("gears_b", "gears", "en", "gears_b_en.svg", "A1"),
 ]
 
 
@@ -38,6 +40,9 @@ def build_set(scene: str, kind: str, lang: str, fmt: str = "A1") -> list[str]:
     if kind == "cam":                       # a cam scene: the sheet takes the cam itself
         from graphplan.model.cam import load as load_cam
         st = load_cam(ROOT / "examples" / f"{scene}.toml")
+    elif kind == "gears":                   # a gear scene: the sheet takes the gears themselves
+        from graphplan.model.gears import load as load_gears
+        st = load_gears(ROOT / "examples" / f"{scene}.toml")
     else:
         st = study(load(ROOT / "examples" / f"{scene}.toml"))
     sheet = BUILDERS[kind](st, form(fmt), SheetOptions(lang=lang, sheet=kind))

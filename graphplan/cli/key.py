@@ -56,6 +56,8 @@ def write_key(folder: Path, key: dict[str, Any], pdf: bool = True, lang: str = "
     from graphplan.drawing.svg import render
     if key.get("kind") == "cam":
         from graphplan.teach.camkeys import key_sheet
+    if key.get("kind") == "gears":
+        from graphplan.teach.gearkeys import key_sheet
     sheet = key_sheet(key, lang)
     svg = render(sheet, *A4_PORTRAIT, title=plain(sheet.title))
     files = [write_atomic(folder / "key.json", dumps(key)),
@@ -172,7 +174,16 @@ def _variant_job(index: int) -> dict[str, Any]:
     from graphplan.model.cam import is_cam
     try:
         tree = vt.scene_tree(table, v)
-        if is_cam(tree):                  # a cam variant: its own key (teach/camkeys.py)
+        from graphplan.model.gears import is_gears
+        if is_gears(tree) and "cam" not in tree:     # a gear variant: its own key (teach/gearkeys.py)
+            from graphplan.exact.gears import solve as solve_gears
+            from graphplan.model.gears import build as build_gears
+            from graphplan.teach import gearkeys
+            key = gearkeys.make_gear_key(solve_gears(build_gears(tree, v.where(table.path))), variant=v.id,
+                                         student=v.student, base=v.base.name, overrides=v.overrides, scene=tree,
+                                         tolerances=[v.tolerances, opt.tolerances, table.tolerances])
+            summary_row, summary_units = gearkeys.summary_row, gearkeys.summary_units
+        elif is_cam(tree):                  # a cam variant: its own key (teach/camkeys.py)
             from graphplan.exact.cam import solve
             from graphplan.model.cam import build as build_cam
             from graphplan.teach import camkeys

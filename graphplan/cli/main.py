@@ -39,6 +39,7 @@ COMMAND_MODULES: tuple[str, ...] = (
     "graphplan.cli.view",
     "graphplan.cli.cam",
     "graphplan.cli.serve",
+    "graphplan.cli.gears",
 )
 
 

@@ -19,9 +19,10 @@ def register(sub) -> None:
     p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3; what does not fit "
                    "goes to further sheets of the set (FILE-2, FILE-3 …)")
     lang_arg(p)
-    p.add_argument("--sheet", default=None, choices=["kinematics", "forces", "dynamics", "cam"],
-                   help="which sheet: kinematics (the default of a lever mechanism), forces, dynamics, or "
-                        "cam (the default of a [cam] scene, docs/cams.md)")
+    p.add_argument("--sheet", default=None, choices=["kinematics", "forces", "dynamics", "cam", "gears"],
+                   help="which sheet: kinematics (the default of a lever mechanism), forces, dynamics, "
+                        "cam (the default of a [cam] scene, docs/cams.md), or gears (the default of a "
+                        "[gears]/[planetary] scene, docs/gears.md)")
     p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
     p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
     p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
@@ -40,8 +41,18 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     if Path(args.output).suffix.lower() in (".pdf", ".png"):
         from graphplan.drawing.raster import require_cairo
         require_cairo()                  # before the work: one line when the cairo library is missing
-    cam = _cam_scene(args.scene)
-    if cam is not None or args.sheet == "cam":
+    gears = _gears_scene(args.scene)
+    cam = _cam_scene(args.scene) if gears is None else None
+    if gears is not None or args.sheet == "gears":
+        if gears is None:
+            raise GraphplanError("--sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)",
+                                 args.scene)
+        if args.sheet not in (None, "gears"):
+            raise GraphplanError(f"--sheet {args.sheet}: a gear scene has the gear sheet only", args.scene)
+        from graphplan.util.words import pick
+        args.sheet, st = "gears", gears
+        args.lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
+    elif cam is not None or args.sheet == "cam":
         if cam is None:
             raise GraphplanError("--sheet cam: the scene has no [cam] table (docs/cams.md)", args.scene)
         if args.sheet not in (None, "cam"):
@@ -83,3 +94,17 @@ def _cam_scene(path: str | None):
         return None                      # the lever scene's reader says what is wrong
     return build(data, str(path)) if is_cam(data) else None
 
+
+
+def _gears_scene(path: str | None):
+    """The gear scene of a [gears]/[planetary] scene, or None for another scene (read as every scene is)."""
+    if path is None:
+        return None
+    from graphplan.model import bounds as B
+    from graphplan.model.gears import build, is_gears
+    from graphplan.util.files import read_bytes
+    try:
+        data = B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), str(path))
+    except (UnicodeDecodeError, GraphplanError):
+        return None                      # the lever scene's reader says what is wrong
+    return build(data, str(path)) if is_gears(data) and "cam" not in data else None

@@ -79,6 +79,9 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
     def fail(key: str, what: str) -> SceneError:
         return SceneError(f"{key}: {what}", where)
 
+    if "cam" not in data and ("gears" in data or "planetary" in data):
+        raise SceneError("the scene has no [cam] table: it describes a gear mechanism (graphplan gears and "
+                         "graphplan sheet draw it, docs/gears.md)", where)
     if "cam" not in data:
         raise SceneError("the scene has no [cam] table: it describes a lever mechanism (graphplan cam reads a "
                          "cam scene, docs/cams.md)", where)

@@ -120,6 +120,10 @@ class _Reader:
         if isinstance(self.data, dict) and "cam" in self.data:
             raise self.fail("cam", "a cam scene: graphplan cam and graphplan sheet draw it (docs/cams.md); "
                                    "this command takes a lever mechanism")
+        if isinstance(self.data, dict) and ("gears" in self.data or "planetary" in self.data):
+            key = "gears" if "gears" in self.data else "planetary"
+            raise self.fail(key, "a gear scene: graphplan gears and graphplan sheet draw it (docs/gears.md); "
+                                 "this command takes a lever mechanism")
         data = self.table(self.data, "scene", _TOP)
         derived = self.read_synthesis(data.get("synthesis"))
         self.read_params(data)

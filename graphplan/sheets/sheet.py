@@ -40,9 +40,16 @@ def build_cam_sheet(cam, f, options) -> Sheet:
     return build(cam, f, options)
 
 
+def build_gears_sheet(gears, f, options) -> Sheet:
+    """The gear synthesis sheet (sheets/gears.py): its first argument the gear scene (model.gears.Gears)."""
+    from graphplan.sheets.gears import build_gears_sheet as build
+    return build(gears, f, options)
+
+
 BUILDERS: dict[str, Callable[..., Sheet]] = {
     "kinematics": build_kinematics_sheet,
     "forces": build_forces_sheet,
     "dynamics": build_dynamics_sheet,
     "cam": build_cam_sheet,
+    "gears": build_gears_sheet,
 }

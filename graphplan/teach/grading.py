@@ -233,6 +233,8 @@ class _Variant:
         if self._study is None:
             if self.key.get("kind") == "cam":
                 raise NoScene("a cam key: its values stand at the divisions only", self.key.get("_path"))
+            if self.key.get("kind") == "gears":
+                raise NoScene("a gear key: its values stand at position 0 only", self.key.get("_path"))
             scene = self.key.get("scene")
             if not scene:
                 raise NoScene("the key has no scene to search other crank angles", self.key.get("_path"))
@@ -368,6 +370,8 @@ def _explain_all(pending: list) -> None:
         try:
             st = var.study()
         except NoScene:
+            if var.key.get("kind") == "gears":     # a gear's geometry has no crank angle to search
+                continue
             for _, g, *_ in items:
                 g.add(said("grade key no scene"))
             continue

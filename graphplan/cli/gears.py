@@ -1,0 +1,64 @@
+"""`graphplan gears`: the involute pair drawn in mesh and the planetary train by velocity pictures —
+measured with the ruler and compared with the closed forms (docs/gears.md); tables, the contract's
+JSON, and the constructions as SVG on request."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+
+from graphplan.cli.common import lang_arg
+from graphplan.util.errors import GraphplanError
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "gears", help="gear synthesis: the involute pair and the planetary train, graphical vs closed forms",
+        description="A gear scene ([gears] and/or [planetary], docs/gears.md): the shifted involute pair's "
+                    "geometry and quality (shifts given or \"auto\"), drawn in mesh with εα measured off the "
+                    "drawing; the planetary train by Willis' formula (z's given or chosen for the ratio) and "
+                    "by its velocity picture and plan of angular velocities — every reading beside the exact "
+                    "value with the percent error.")
+    p.add_argument("scene", help="a gear scene file (TOML with [gears] and/or [planetary]; examples/gears.toml)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
+                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
+    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
+    p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (meshing, sliding, planetary .svg)")
+    lang_arg(p)
+    p.set_defaults(handler=cmd_gears)
+
+
+def cmd_gears(args: argparse.Namespace) -> int:
+    from graphplan.cli.common import dumps
+    from graphplan.report.gears import gears_json, gears_table, solved
+    from graphplan.util.words import pick
+    if not math.isfinite(args.precision) or not 0 <= args.precision <= 10:
+        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+    gears, sol, mesh, vel = solved(args.scene, args.precision)
+    lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
+    if args.svg:
+        write_svg(mesh, vel, args.svg)
+    doc = gears_json(sol, mesh, vel, args.scene)
+    sys.stdout.write(dumps(doc) if args.json else gears_table(doc, lang, gears.title_in(lang)))
+    return 0
+
+
+def records(mesh, vel) -> dict:
+    out = {}
+    if mesh is not None:
+        out["meshing"], out["sliding"] = mesh.record, mesh.lam
+    if vel is not None:
+        out["planetary"] = vel.record
+    return out
+
+
+def write_svg(mesh, vel, folder: str) -> None:
+    from pathlib import Path
+
+    from graphplan.drawing import svg
+    from graphplan.util.files import write_atomic
+    if Path(folder).exists() and not Path(folder).is_dir():
+        raise GraphplanError("--svg needs a folder, this is a file", folder)
+    for name, rec in records(mesh, vel).items():
+        page, w, h = svg.page_for(rec)
+        write_atomic(Path(folder) / f"{name}.svg", svg.render(page, w, h, rec.title))

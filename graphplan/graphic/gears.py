@@ -1,0 +1,597 @@
+"""The gear sheet's constructions as a draftsman makes them (REFERENCE §12; docs/gears.md), in drawing
+millimetres (x right, y up), every laid-off length rounded by the ruler of the drafting precision and
+every reading taken with it (graphic.draftsman.measure):
+
+1. The meshing: the centres O1 (below) and O2 at aw; the five circles rf, rb, r, rw, ra of each wheel;
+   the line of action N1N2, the common tangent of the base circles, crossing O1O2 at the pitch point P
+   (rw read off as O1P, O2P); its active part B1B2 cut by the tip circles (B1 on wheel 2's, B2 on wheel
+   1's); the involutes as the draftsman builds them — N1P (N2P) divided into four equal parts, the same
+   arcs laid off along the base circle, tangents at the division points with the unrolled lengths;
+   the tooth thickness s laid off as its chord on the pitch circle, the other flank mirrored about the
+   tooth's axis; three teeth of each wheel with the fillets (radius 0.38m) to the root circle; the
+   working parts of the flanks in mesh marked; the arc of action on both rolling circles.
+   Read: B1B2 with the ruler, εα = B1B2/pb (pb laid off); s, sa as chords (turned into arcs).
+2. The specific sliding λ1, λ2 over N1N2 (at the meshing's length scale; λ at 20 mm a unit).
+3. The planetary train: its scheme at μl (the upper half, radii on one vertical line), the velocity
+   picture (vA = ω1·r1 at μv; each member's velocities a straight line: the sun's through O, the
+   planet's through its contact C with the fixed ring, the carrier's through O and the planet's axis),
+   the plan of angular velocities (rays from a pole h below a horizontal, parallel to those lines:
+   ω = segment·μv/(μl·h)); u1H = the sun's segment over the carrier's.
+
+The bounds on the graphical error (``eps_bound``, ``ratio_bound``) are first-order: each laid-off and
+each read length off by at most half the precision, the errors added in absolute value.
+"""
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from graphplan.exact.gears import PairSolution, TrainSolution
+from graphplan.graphic.draftsman import circle_line, lay_off, measure
+from graphplan.graphic.record import Primitive, Record, text_width
+
+LAYER = "gears"
+TEXT = 3.5
+DEPTH_MM = (40.0, 60.0)        # the whole depth 2.25m drawn this tall
+ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.302 enlargements, 1:1 …
+REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
+MODULE_MM = 20.0               # the drawn module when no standard scale gives 40–60 mm
+DIVISIONS = 4                  # equal parts of N1P for the involute
+LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
+FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
+LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
+LAMBDA_CLIP = 3.0              # |λ| drawn up to 3 (±∞ at N1, N2)
+
+
+def _f(z: complex) -> tuple[float, float]:
+    return (z.real, z.imag)
+
+
+# -- placing letters clear of every line ---------------------------------------------------------
+
+class Placer:
+    """Letters put where no ink is: the record's lines sampled every 0.4 mm into 2-mm cells, each
+    label at the first candidate spot around its anchor whose box, grown by ``clear`` mm, holds
+    no ink and no earlier letter."""
+    CELL = 2.0
+
+    def __init__(self, rec: Record, clear: float = 0.8):
+        self.rec, self.clear = rec, clear
+        self.cells: dict[tuple[int, int], list[tuple[float, float]]] = {}
+        self.letters: dict[tuple[int, int], list[tuple[float, float]]] = {}     # the letters' ink alone
+        for p in rec.items:
+            self._add(_ink_points(p))
+
+    def _add(self, pts, into=None) -> None:
+        c = self.CELL
+        for x, y in pts:
+            (self.cells if into is None else into).setdefault((int(math.floor(x / c)), int(math.floor(y / c))),
+                                                              []).append((x, y))
+
+    def free(self, box, cells=None) -> bool:
+        x0, y0, x1, y1 = box
+        m, c = self.clear, self.CELL
+        cells = self.cells if cells is None else cells
+        for i in range(int(math.floor((x0 - m) / c)), int(math.floor((x1 + m) / c)) + 1):
+            for j in range(int(math.floor((y0 - m) / c)), int(math.floor((y1 + m) / c)) + 1):
+                for x, y in cells.get((i, j), ()):
+                    if x0 - m <= x <= x1 + m and y0 - m <= y <= y1 + m:
+                        return False
+        return True
+
+    def free_path(self, a: complex, b: complex, letters_only: bool = False) -> bool:
+        """Whether a leader from a to b passes clear of every line and letter (of the letters only)."""
+        n = max(1, int(abs(b - a) / 0.4))
+        for k in range(n + 1):
+            q = a + (b - a) * k / n
+            if not self.free((q.real, q.imag, q.real, q.imag), self.letters if letters_only else None):
+                return False
+        return True
+
+    def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
+              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False) -> bool:
+        w = text_width(text, size)
+        dirs = [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
+        if toward is not None and abs(toward) > 0:
+            u = toward / abs(toward)
+            dirs.sort(key=lambda d: -((d * u.conjugate()).real))
+        far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
+        for strict in (True, False):          # first with the leader's path clear too, then the box alone
+            for rad in tuple(radii) + far:
+                for d in dirs:
+                    # the box's nearest side ``rad`` from the anchor along d
+                    cx = at.real + d.real * (rad + w / 2)
+                    cy = at.imag + d.imag * (rad + size / 2)
+                    box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
+                    if not self.free(box):
+                        continue
+                    end = None
+                    if rad > LEADER:          # far from its point: a thin leader to the letter's box
+                        q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
+                        end = at + (q - at) * (1 - 1.2 / abs(q - at))
+                        if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
+                                              letters_only=not strict):
+                            continue
+                    self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
+                    self._add_box(box)
+                    if end is not None:
+                        seg = self.rec.segment(_f(at), _f(end), role="construction", layer=LAYER, step="leader")
+                        self._add(_ink_points(seg))
+                    return True
+        if optional:                          # a circle's name where five circles crowd: left out
+            return False
+        self.rec.label((at.real + 2.0, at.imag + 2.0), text, size=size, layer=LAYER)
+        return False
+
+    def _add_box(self, box) -> None:
+        x0, y0, x1, y1 = box
+        pts = [(float(x), y) for x in np.arange(x0, x1 + 0.4, 0.4) for y in (y0, y1)] + \
+              [(x, float(y)) for y in np.arange(y0, y1 + 0.4, 0.4) for x in (x0, x1)] + \
+              [(float(x), float(y)) for x in np.arange(x0, x1 + 0.4, 0.8) for y in np.arange(y0, y1 + 0.4, 0.8)]
+        self._add(pts)
+        self._add(pts, self.letters)
+
+
+def _ink_points(p) -> list[tuple[float, float]]:
+    step = 0.4
+    if p.kind in ("segment", "vector", "polyline", "polygon"):
+        pts = list(p.points) + ([p.points[0]] if p.kind == "polygon" else [])
+        out = []
+        for a, b in zip(pts[:-1], pts[1:]):
+            n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
+            out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
+        return out
+    if p.kind in ("arc", "circle"):
+        (cx, cy), r = p.points[0], p.radius
+        a0, a1 = (0.0, 360.0) if p.kind == "circle" else p.angles
+        sweep = (a1 - a0) % 360.0 or 360.0
+        n = max(2, int(math.radians(sweep) * r / step))
+        return [(cx + r * math.cos(math.radians(a0 + sweep * t / n)), cy + r * math.sin(math.radians(a0 + sweep * t / n)))
+                for t in range(n + 1)]
+    if p.kind == "point":
+        x, y = p.points[0]
+        return [(x, y), (x + 0.6, y), (x - 0.6, y), (x, y + 0.6), (x, y - 0.6)]
+    if p.kind == "text":
+        x0, y0, x1, y1 = p.bounds()
+        return [(x, y) for x in np.arange(x0, x1 + step, step) for y in (y0, y1)] + \
+               [(x, y) for y in np.arange(y0, y1 + step, step) for x in (x0, x1)]
+    return [tuple(q) for q in p.points]
+
+
+# -- the meshing ------------------------------------------------------------------------------------
+
+@dataclass
+class Mesh:
+    """The drawn meshing and what was read off it."""
+    mu_l: float                     # m/mm
+    module_mm: float                # the module as drawn
+    precision: float
+    drawn: dict[str, float]         # the laid-off lengths, mm: aw, r1, rb1, ra1, rf1, … , pb
+    read: dict[str, float]          # the readings, mm: B1B2, rw1, rw2, s1, s2, sa1, sa2 (chords)
+    eps: float                      # εα = B1B2/pb, graphically
+    eps_bound: float                # its first-order bound from the precision
+    s: tuple[float, float]          # m, the chords turned into arcs
+    sa: tuple[float, float]
+    rw: tuple[float, float]
+    record: Record
+    lam: Record
+    points: dict[str, complex] = field(default_factory=dict)
+    warnings: list[tuple[str, str]] = field(default_factory=list)
+
+
+def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 780.0) -> float:
+    """The drawn module, mm: a standard enlargement (GOST 2.302) that draws the whole depth 2.25m 40–60 mm
+    tall, else 20 mm to the module (45 mm); smaller only when the centres and the teeth would not fit
+    ``height_mm`` × ``width_mm`` (the zone) — then the largest whole millimetre that still draws 40 mm,
+    else the largest standard scale that fits with the module at least 2 mm, else the largest whole
+    millimetre (quarter millimetres below 2 mm: large wheels on a small sheet draw small teeth, and say
+    so)."""
+    m = sol.pair.module * 1000.0                     # mm
+    top = (sol.aw + sol.ra[0] * 0.1) * 1000.0 / m    # the drawing's height in modules, about
+    tau = [2 * math.pi / z for z in sol.pair.z]
+    wide = 2 * max(sol.rb[0] * math.sin(sol.alpha_w), sol.rb[1] * math.sin(sol.alpha_w),
+                   1.7 * tau[0] * sol.ra[0], 1.7 * tau[1] * sol.ra[1]) * 1000.0 / m + 4.0
+    fits = lambda md: top * md + 20.0 <= height_mm and wide * md + 30.0 <= width_mm     # noqa: E731
+    for k in ENLARGE:
+        md = m * k
+        if DEPTH_MM[0] <= 2.25 * md <= DEPTH_MM[1] and fits(md):
+            return md
+    if fits(MODULE_MM):
+        return MODULE_MM
+    md = float(math.floor(min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)))
+    if 2.25 * md >= DEPTH_MM[0]:                  # a whole millimetre still draws 40 mm
+        return md
+    for k in sorted(ENLARGE + REDUCE, reverse=True):    # the largest standard scale that fits, when one does
+        if m * k >= 2.0 and fits(m * k):
+            return m * k
+    md = min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)
+    return float(math.floor(md)) if md >= 2.0 else max(0.25, math.floor(md * 4) / 4)
+
+
+def _involute(R: float, theta_s: float, t: np.ndarray) -> np.ndarray:
+    """Points of the involute of the circle R (centre 0) unrolled from the angle θS: the tangent
+    points at θS − t/R, the unrolled length t laid off along each tangent."""
+    th = theta_s - t / R
+    return R * np.exp(1j * th) + t * 1j * np.exp(1j * th)
+
+
+def _flank_at(R: float, theta_s: float, radius: float) -> complex:
+    """The involute's point at ``radius`` (≥ R)."""
+    t = math.sqrt(max(radius * radius - R * R, 0.0))
+    return complex(_involute(R, theta_s, np.array([t]))[0])
+
+
+def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int = 24) -> list[complex]:
+    """One tooth's outline (centre 0), from its left root fillet over the tip to its right one: the
+    fillet (radius 0.38m, tangent to the root circle and to the radial line under the involute),
+    the radial line to the base circle, the involute to the tip circle, the tip arc, the mirror."""
+    start = max(R, rf + 1e-9)
+    t0 = math.sqrt(max(start * start - R * R, 0.0))
+    t1 = math.sqrt(ra * ra - R * R)
+    inv_pts = list(_involute(R, theta_s, np.linspace(t0, t1, n)))
+    beta = cmath.phase(inv_pts[0])
+    left: list[complex] = []
+    gap = start - rf
+    if gap > 1e-6:
+        rho = min(FILLET * md, 0.9 * gap)
+        d = math.asin(rho / (rf + rho))
+        c = (rf + rho) * cmath.exp(1j * (beta + d))
+        a_from, a_to = beta + d - math.pi, beta - math.pi / 2
+        left += [c + rho * cmath.exp(1j * a) for a in np.linspace(a_from, a_to, 8)]
+    left += inv_pts
+    # mirror about the axis: angle a → 2·axis − a
+    mirror = [abs(q) * cmath.exp(1j * (2 * axis - cmath.phase(q))) for q in reversed(left)]
+    a_left, a_right = cmath.phase(left[-1]), cmath.phase(mirror[0])
+    if _wrap(a_left - axis) * _wrap(a_right - axis) >= 0:       # pointed within the tip circle
+        return left + mirror
+    tip = [ra * cmath.exp(1j * a) for a in np.linspace(a_left, a_left + _wrap(a_right - a_left), 6)[1:-1]]
+    return left + tip + mirror
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
+                   height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0) -> Mesh:
+    """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
+    drawn ``module_mm`` long (default: ``mesh_scale``)."""
+    pair = sol.pair
+    z1, z2 = pair.z
+    md = module_mm or mesh_scale(sol, height_mm, width_mm)
+    mu = pair.module / md                                     # m/mm
+    L = lambda v: lay_off(v / mu, precision)                  # noqa: E731   a length laid off
+    d = {"aw": L(sol.aw), "r1": L(sol.r[0]), "r2": L(sol.r[1]), "rb1": L(sol.rb[0]), "rb2": L(sol.rb[1]),
+         "ra1": L(sol.ra[0]), "ra2": L(sol.ra[1]), "rf1": L(sol.rf[0]), "rf2": L(sol.rf[1]), "pb": L(sol.pb)}
+    D, R1, R2 = d["aw"], d["rb1"], d["rb2"]
+    if not (d["pb"] > 0 and d["ra1"] > R1 > 0 and d["ra2"] > R2 > 0 and D > R1 + R2 and d["r1"] > 0 and d["r2"] > 0):
+        from graphplan.util.errors import GraphplanError
+        raise GraphplanError(f"--precision {precision:g} mm: the meshing drawn with the module {md:g} mm long cannot "
+                             "be laid off at this precision (its circles and pitch collapse); take a finer one")
+    O1, O2 = 0j, 1j * D
+    aw_ = math.acos(min(1.0, (R1 + R2) / D))                  # the common tangent's angle
+    N1 = R1 * complex(math.sin(aw_), math.cos(aw_))
+    N2 = O2 - R2 * complex(math.sin(aw_), math.cos(aw_))
+    u = (N2 - N1) / abs(N2 - N1)
+    P = 1j * D * R1 / (R1 + R2)                               # where the tangent crosses O1O2
+    B1 = circle_line(O2, d["ra2"], N1, u, -1)                  # wheel 2's tip circle, near N1
+    B2 = circle_line(O1, d["ra1"], N1, u, +1)                  # wheel 1's tip circle, near N2
+    read = {"B1B2": measure(abs(B2 - B1) * (1 if ((B2 - B1) / u).real >= 0 else -1), precision),
+            "rw1": measure(abs(P - O1), precision), "rw2": measure(abs(O2 - P), precision)}
+    eps = read["B1B2"] / d["pb"]
+    rec = Record("meshing")
+    # the five circles of each wheel, as arcs over the window of the teeth and the line of action
+    tau = (2 * math.pi / z1, 2 * math.pi / z2)
+    half_w = max(abs(N1.real), abs(N2.real), 1.7 * tau[0] * d["ra1"], 1.7 * tau[1] * d["ra2"]) + 12.0
+    circles = {1: [("rf", d["rf1"]), ("rb", R1), ("r", d["r1"]), ("rw", read["rw1"]), ("ra", d["ra1"])],
+               2: [("rf", d["rf2"]), ("rb", R2), ("r", d["r2"]), ("rw", read["rw2"]), ("ra", d["ra2"])]}
+    for k, centre, up in ((1, O1, 1.0), (2, O2, -1.0)):
+        for name, rad in circles[k]:
+            span = min(math.degrees(math.asin(min(1.0, half_w / rad))),
+                       max(math.degrees(1.8 * tau[k - 1]), math.degrees(aw_) + 10.0))
+            mid = 90.0 if up > 0 else 270.0
+            role = "axis" if name == "r" else "construction"      # the pitch circle dash-dot (GOST 2.402)
+            rec.arc(_f(centre), rad, mid - span, mid + span, role=role, layer=LAYER, step=f"circle {name}{k}")
+    rec.segment(_f(O1 - 8j), _f(O2 + 8j), role="axis", layer=LAYER, step="O1O2")
+    # the line of action, extended a little past N1 and N2
+    rec.segment(_f(N1 - 6 * u), _f(N2 + 6 * u), role="relative", layer=LAYER, step="line of action N1N2")
+    rec.segment(_f(P - 30.0), _f(P + 30.0), role="construction", layer=LAYER, step="tangent at P")
+    rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
+    rec.segment(_f(O1), _f(N1), role="construction", layer=LAYER)
+    rec.segment(_f(O2), _f(N2), role="construction", layer=LAYER)
+    # the involutes by the draftsman's steps, the teeth
+    teeth_pts = {}
+    s_read, sa_read = [], []
+    for k, centre, N, R, r_, rf, ra, z, s_ex in ((1, O1, N1, R1, d["r1"], d["rf1"], d["ra1"], z1, sol.s[0]),
+                                                  (2, O2, N2, R2, d["r2"], d["rf2"], d["ra2"], z2, sol.s[1])):
+        tP = abs(P - N)
+        step = tP / DIVISIONS
+        thN = cmath.phase(N - centre)
+        theta_s = thN + tP / R                                   # where the involute through P starts
+        jmax = int(math.ceil(math.sqrt(ra * ra - R * R) / step))
+        marks = _involute(R, theta_s, step * np.arange(0, jmax + 1))
+        for j in range(0, jmax + 1):
+            q = R * cmath.exp(1j * (theta_s - j * step / R))
+            if j <= DIVISIONS + 2 and j > 0:
+                rec.segment(_f(centre + q), _f(centre + marks[j]), role="construction", layer=LAYER,
+                            step=f"involute {k}: tangent {j}")
+            rec.point(_f(centre + marks[j]), role="construction", layer=LAYER)
+        for j in range(1, DIVISIONS):
+            rec.point(_f(N + j * step * (P - N) / tP), role="construction", layer=LAYER)
+        # the tooth thickness laid off as a chord on the pitch circle; the axis between the flanks
+        chord = lay_off(2 * (r_ * mu) * math.sin(s_ex / (2 * (r_ * mu))) / mu, precision)
+        F = _flank_at(R, theta_s, r_)
+        half = math.asin(min(1.0, chord / (2 * r_)))
+        axis = cmath.phase(F) - half
+        s_read.append(measure(chord, precision))
+        A = _flank_at(R, theta_s, ra)
+        ha_ = _wrap(cmath.phase(A) - axis)
+        sa_read.append(measure(2 * ra * math.sin(ha_) if ha_ > 0 else 0.0, precision))
+        one = _tooth(R, theta_s, rf, ra, axis, md)
+        outline: list[complex] = []
+        for j in (1, 0, -1):                          # counter-clockwise to clockwise, as each tooth runs
+            rot = cmath.exp(1j * j * tau[k - 1])
+            pts = [q * rot for q in one]
+            if outline:                              # the root circle between the teeth
+                a0, a1 = cmath.phase(outline[-1]), cmath.phase(pts[0])
+                sweep = _wrap(a1 - a0)
+                outline += [rf * cmath.exp(1j * (a0 + sweep * t)) for t in np.linspace(0, 1, 8)[1:-1]]
+            outline += pts
+        teeth_pts[k] = (theta_s, axis)
+        rec.add("polyline", [_f(centre + q) for q in outline], role="link", layer=LAYER, step=f"teeth {k}")
+        # the working part of the flank in mesh: from the radius of B1 (wheel 1) or B2 (wheel 2) to the tip
+        low = abs((B1 if k == 1 else B2) - centre)
+        t_lo = math.sqrt(max(low * low - R * R, 0.0))
+        wp = _involute(R, theta_s, np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12))
+        normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12)]
+        rec.add("polyline", [_f(centre + q + 1.0 * nrm) for q, nrm in zip(wp, normal)], role="result",
+                layer=LAYER, step=f"working part {k}", width=1.0)
+    # the arc of action on the rolling circles
+    for k, centre, rw, R, sign in ((1, O1, read["rw1"], R1, 1.0), (2, O2, read["rw2"], R2, -1.0)):
+        base = 90.0 if k == 1 else 270.0
+        rhoP, a, b = abs(P - N1), (abs(B1 - N1) if ((B1 - N1) / u).real >= 0 else -abs(B1 - N1)), abs(B2 - N1)
+        a0 = base + sign * math.degrees((a - rhoP) / R)
+        a1 = base + sign * math.degrees((b - rhoP) / R)
+        rec.arc(_f(centre), rw + (1.2 if k == 1 else -1.2), min(a0, a1), max(a0, a1), role="relative", layer=LAYER,
+                step=f"arc of action {k}")
+    for q in (N1, N2, B1, B2, P, O1, O2):
+        rec.point(_f(q), role="pole", layer=LAYER)
+    pl = Placer(rec)
+    pl.label(O1, "O_1", toward=-1 + 0j)
+    pl.label(O2, "O_2", toward=-1 + 0j)
+    pl.label(P, "P", toward=1 + 0.3j)
+    pl.label(N1, "N_1", toward=1 + 0j)
+    pl.label(N2, "N_2", toward=-1 + 0j)
+    pl.label(B1, "B_1", toward=-1j * u)
+    pl.label(B2, "B_2", toward=1j * u)
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)
+    for k, centre in ((1, O1), (2, O2)):
+        for name, rad in circles[k]:
+            ang = min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau[k - 1], aw_ + math.radians(10.0)))
+            end = centre + rad * cmath.exp(1j * ((math.pi / 2 - ang) if k == 1 else (-math.pi / 2 + ang)))
+            sub = {"rf": "f", "rb": "b", "r": "", "rw": "w", "ra": "a"}[name]
+            pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j,
+                     radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
+    rec.scales.update(mu_l=mu)
+    # readings in SI
+    s_g = tuple(2 * (rr * mu) * math.asin(min(1.0, c / (2 * rr))) for c, rr in zip(s_read, (d["r1"], d["r2"])))
+    sa_g = tuple(2 * (rr * mu) * math.asin(min(1.0, c / (2 * rr))) for c, rr in zip(sa_read, (d["ra1"], d["ra2"])))
+    read.update(s1=s_read[0], s2=s_read[1], sa1=sa_read[0], sa2=sa_read[1])
+    mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
+                (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
+                {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P})
+    if 2.25 * md < DEPTH_MM[0]:
+        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (the zone cannot hold 40 mm)",
+                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (зона не вміщує 40 мм)"))
+    mesh.lam = sliding_diagram(sol, mesh)
+    return mesh
+
+
+def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
+    """|εα(graphical) − εα| to first order: aw, rb1, rb2, ra1, ra2 and pb laid off and B1B2 read, each
+    within half the precision: (p/2)/pb·[1 + ra1/e1 + ra2/e2 + |R/G − rb1/e1| + |R/G − rb2/e2| + aw/G + εα],
+    e_k = √(ra_k² − rb_k²), G = N1N2, R = rb1 + rb2 (all in drawing mm)."""
+    h = precision / 2
+    ra, rb = [v / mu for v in sol.ra], [v / mu for v in sol.rb]
+    e = [math.sqrt(ra[k] ** 2 - rb[k] ** 2) for k in (0, 1)]
+    G, R, D, pb = sol.g / mu, (rb[0] + rb[1]), sol.aw / mu, sol.pb / mu
+    terms = 1 + ra[0] / e[0] + ra[1] / e[1] + abs(R / G - rb[0] / e[0]) + abs(R / G - rb[1] / e[1]) + D / G + abs(sol.eps)
+    return h / pb * terms
+
+
+def sliding_diagram(sol: PairSolution, mesh: Mesh) -> Record:
+    """λ1 and λ2 over N1N2 drawn horizontally at the meshing's scale, λ at 20 mm a unit (clipped at
+    ±3): the ordinates at B1, P, B2 and the working part between B1 and B2."""
+    rec = Record("sliding")
+    G = sol.g / mesh.mu_l
+    rho = np.linspace(0.0, G, 401)
+    l1, l2 = sol.sliding(rho * mesh.mu_l)
+    k = LAMBDA_MM
+    rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="axis", layer=LAYER, step="λ axis")
+    rec.segment((0.0, -LAMBDA_CLIP * k - 3), (0.0, k + 8.0), role="axis", layer=LAYER)
+    for curve, name in ((l1, "λ_1"), (l2, "λ_2")):
+        ok = np.isfinite(curve) & (np.abs(curve) <= LAMBDA_CLIP)
+        xs, ys = rho[ok], curve[ok] * k
+        rec.add("polyline", list(zip(xs, ys)), role="curve", layer=LAYER, step=f"{name}(ρ)")
+    for v in (1.0, -1.0, -2.0, -3.0):
+        rec.segment((-1.5, v * k), (1.5, v * k), role="construction", layer=LAYER)
+    marks = {"N_1": 0.0, "B_1": sol.rho_B1 / mesh.mu_l, "P": sol.rho_P / mesh.mu_l, "B_2": sol.rho_B2 / mesh.mu_l,
+             "N_2": G}
+    for name, x in marks.items():
+        if name in ("B_1", "B_2", "P"):
+            rec.segment((x, -LAMBDA_CLIP * k), (x, k + 4.0), role="projection", layer=LAYER, step=name)
+    rec.segment((G, -LAMBDA_CLIP * k), (G, k + 4.0), role="construction", layer=LAYER)
+    pl = Placer(rec)
+    for name, x in marks.items():
+        pl.label(complex(x, 0), name, size=2.5, toward=-1j, radii=(1.0, 2.0, 3.0, 5.0, 9.0, 13.0))
+    for v, t in ((1.0, "1"), (-1.0, "−1"), (-2.0, "−2"), (-3.0, "−3")):
+        pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
+    j1 = int(np.argmin(np.abs(rho - 0.75 * G)))
+    j2 = int(np.argmin(np.abs(rho - 0.25 * G)))
+    pl.label(complex(rho[j1], l1[j1] * k), "λ_1", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
+    pl.label(complex(rho[j2], l2[j2] * k), "λ_2", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
+    rec.scales.update(mu_lambda=1.0 / k, mu_l=mesh.mu_l)
+    return rec
+
+
+# -- the planetary train ---------------------------------------------------------------------------
+
+@dataclass
+class Velocities:
+    """The train's scheme, velocity picture and plan of angular velocities, and their readings."""
+    mu_l: float
+    mu_v: float
+    h: float
+    precision: float
+    heights: dict[str, float]       # laid off, mm: A (r1), O2 (aw), C (the ring's contact)
+    va_mm: float
+    segments: dict[str, float]      # read off the plan of angular velocities, mm (signed)
+    omega: dict[str, float]         # rad/s, graphically
+    ratio: float
+    ratio_bound: float
+    record: Record
+
+
+def _nice(v: float) -> float:
+    from graphplan.graphic.scales import at_least
+    return at_least(v)
+
+
+def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0,
+                    sun_segment_mm: float = 100.0) -> Velocities:
+    """The scheme at μl (the ring's radius about ``ring_mm``), the velocity picture with vA about
+    60 mm, the plan of angular velocities with h chosen so the sun's segment is about
+    ``sun_segment_mm``."""
+    rad = tr.radii
+    kind = tr.train.kind
+    mu = _nice(rad["3"] / ring_mm)                          # m/mm
+    L = lambda v: lay_off(v / mu, precision)                 # noqa: E731
+    yA, yO2 = L(rad["1"]), L(rad["H"])
+    yC = L(rad["3"])
+    if not 0 < yA < yO2 < yC:
+        from graphplan.util.errors import GraphplanError
+        raise GraphplanError(f"--precision {precision:g} mm: the train's radii drawn at μl = {mu:g} m/mm "
+                             "collapse (r1, aw, r3 read the same); take a finer precision")
+    vA = tr.omega["1"] * rad["1"]
+    mu_v = _nice(vA / 60.0)
+    va = lay_off(vA / mu_v, precision)
+    h = float(min(150.0, max(20.0, round(sun_segment_mm * yA / va))))
+    v_o2 = va * (yC - yO2) / (yC - yA)                       # on the planet's line, at the axis' height
+    slopes = {"1": va / yA, "2": va / (yA - yC), "H": v_o2 / yO2, "3": 0.0}
+    seg = {k: measure(h * s, precision) for k, s in slopes.items()}
+    omega = {k: seg[k] * mu_v / (mu * h) for k in seg}
+    ratio = seg["1"] / seg["H"] if seg["H"] else math.nan
+    rec = Record("planetary")
+    _scheme(rec, tr, mu, yA, yO2, yC)
+    # the velocity picture: the radii on one vertical line right of the scheme
+    X0 = 60.0
+    rec.segment((X0, -4.0), (X0, yC + 8.0), role="axis", layer=LAYER, step="radii")
+    for y in (yA, yO2, yC):
+        rec.segment((X0 - 50.0 if y != yC else X0 - 50.0, y), (X0, y), role="projection", layer=LAYER)
+    a = complex(X0 + va, yA)
+    o2 = complex(X0 + v_o2, yO2)
+    C = complex(X0, yC)
+    O = complex(X0, 0.0)
+    rec.vector(_f(complex(X0, yA)), _f(a), role="absolute", layer=LAYER, step="vA = ω1·r1")
+    rec.vector(_f(complex(X0, yO2)), _f(o2), role="absolute", layer=LAYER, step="vO2")
+    rec.segment(_f(O), _f(a + (a - O) * 0.08), role="relative", layer=LAYER, step="line 1")
+    low = C + (a - C) * 1.12
+    rec.segment(_f(C), _f(low), role="relative", layer=LAYER, step="line 2")
+    rec.segment(_f(O), _f(o2 + (o2 - O) * 0.15), role="relative", layer=LAYER, step="line H")
+    for q in (a, o2, C, O):
+        rec.point(_f(q), role="pole", layer=LAYER)
+    # the plan of angular velocities below: a horizontal, the pole h under it
+    xs = [h * s for s in slopes.values()]
+    y0 = -26.0
+    xp = X0 - min(0.0, min(xs)) + 4.0
+    left, right = xp + min(xs + [0.0]) - 6.0, xp + max(xs + [0.0]) + 6.0
+    rec.segment((left, y0), (right, y0), role="construction", layer=LAYER, step="plan of ω")
+    pole = complex(xp, y0 - h)
+    rec.point(_f(pole), role="pole", layer=LAYER)
+    rec.segment(_f(pole), (xp, y0), role="construction", layer=LAYER, step="h")
+    for k, s in slopes.items():
+        if k == "3":
+            continue
+        rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
+        rec.point((xp + h * s, y0), role="pole", layer=LAYER)
+    pl = Placer(rec)
+    names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H"}
+    for k, s in slopes.items():
+        if k != "3":
+            pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
+    pl.label(pole, "p_ω", toward=-1 + 0j)
+    pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
+    pl.label(a, "a", toward=1 + 0j)
+    pl.label(o2, "o_2", toward=1 + 0j)
+    pl.label(C, "c", toward=1j)
+    pl.label(O, "o", toward=-1j)
+    pl.label(complex(X0 + va / 2, yA), "v_A", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    pl.label(a + (a - O) * 0.08, "1", toward=1 + 0j)
+    pl.label(low, names["2"], toward=1 + 0j)
+    pl.label(o2 + (o2 - O) * 0.15, "H", toward=1 + 0j)
+    rec.scales.update(mu_l=mu, mu_v=mu_v, h=h)
+    out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
+                     ratio_bound(tr, mu, h, va, precision), rec)
+    return out
+
+
+def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float) -> float:
+    """|u1H(graphical) − u1H| to first order: the heights yA = r1, yO2 = aw, yC = r3 laid off and the
+    segments s1, sH read, each within half the precision (vA and h are whole millimetres):
+    u = yO2(yC − yA)/(yA(yC − yO2)); (p/2)·u·[1/s1 + 1/sH + 1/yA + 1/(yC − yA) + 1/yO2 + 1/(yC − yO2)
+    + |1/(yC − yA) − 1/(yC − yO2)|]."""
+    rad = tr.radii
+    yA, yO2, yC = rad["1"] / mu, rad["H"] / mu, rad["3"] / mu
+    u = tr.ratio
+    s1 = h * va / yA
+    sH = s1 / u
+    terms = (1 / s1 + 1 / sH + 1 / yA + 1 / (yC - yA) + 1 / yO2 + 1 / (yC - yO2)
+             + abs(1 / (yC - yA) - 1 / (yC - yO2)))
+    return precision / 2 * u * terms
+
+
+def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> None:
+    """The kinematic scheme's upper half (GOST 2.770): the central axis, the sun 1, the planet (block
+    2–2'), the fixed ring 3 with its hatching, the carrier H; numbers beside the members."""
+    kind = tr.train.kind
+    rad = tr.radii
+    w = 3.0                                  # a wheel's half-width
+    rec.segment((-48.0, 0.0), (38.0, 0.0), role="axis", layer=LAYER, step="central axis")
+    xs = 0.0
+    xb = 0.0 if kind == "A" else 14.0       # the second row (the ring's) for type B
+    # sun 1
+    rec.add("polygon", [(xs - w, 0.0), (xs + w, 0.0), (xs + w, yA), (xs - w, yA)], role="link", layer=LAYER, step="1")
+    rec.segment((-40.0, 1.5), (xs - w, 1.5), role="link", layer=LAYER)           # its shaft
+    # the planet (block)
+    r2 = rad["2"] / mu
+    rec.add("polygon", [(xs - w, yO2 - r2), (xs + w, yO2 - r2), (xs + w, yO2 + r2), (xs - w, yO2 + r2)],
+            role="link", layer=LAYER, step="2")
+    if kind == "B":
+        r2b = rad["2'"] / mu
+        rec.add("polygon", [(xb - w, yO2 - r2b), (xb + w, yO2 - r2b), (xb + w, yO2 + r2b), (xb - w, yO2 + r2b)],
+                role="link", layer=LAYER, step="2'")
+    rec.segment((xs - 8.0, yO2), (xb + 8.0, yO2), role="link", layer=LAYER, step="planet axis")
+    # ring 3 (internal) at xb with the fixed frame's hatching above
+    rec.add("polygon", [(xb - w, yC), (xb + w, yC), (xb + w, yC + 6.0), (xb - w, yC + 6.0)], role="link", layer=LAYER,
+            step="3")
+    rec.segment((xb - 9.0, yC + 6.0), (xb + 9.0, yC + 6.0), role="link", layer=LAYER)
+    for k in range(6):
+        x = xb - 9.0 + 3.0 * k
+        rec.segment((x, yC + 6.0), (x + 3.0, yC + 9.0), role="hatch", layer=LAYER)
+    # carrier H: from the planet axis down its arm beside the wheels to the output shaft
+    xh = xb + 16.0
+    rec.segment((xb + 8.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H")
+    rec.segment((xh, yO2), (xh, 1.5), role="link", layer=LAYER)
+    rec.segment((xh, 1.5), (38.0, 1.5), role="link", layer=LAYER)
+    pl = Placer(rec)
+    pl.label(complex(xs - w, yA * 0.5), "1", toward=-1 + 0j)
+    pl.label(complex(xs - w, yO2 + r2 * 0.5), "2", toward=-1 + 0j)
+    if kind == "B":
+        pl.label(complex(xb + w, yO2 - rad["2'"] / mu * 0.5), "2'", toward=1 + 0j)
+    pl.label(complex(xb - w, yC + 3.0), "3", toward=-1 + 0j)
+    pl.label(complex(xh, yO2 * 0.5), "H", toward=1 + 0j)
+    pl.label(complex(-44.0, 0.0), "O", toward=1j)

@@ -1,0 +1,238 @@
+"""The gear mechanism's results for people and programs: the contract's ``gears --json`` and the
+terminal's tables (both languages, the lab's notation: z, m, x, αw, aw, y, Δy, r, rb, rw, ra, rf, s,
+sa, p, pb, εα, λ, u1H, ω)."""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from graphplan.exact.gears import CONTACT_MIN, POINTED, Solution
+from graphplan.util.words import num
+
+
+def solved(path, precision: float = 0.5, height_mm: float = 480.0):
+    """A gear scene read, solved by the closed forms and constructed: (gears, solution, mesh, velocities);
+    the meshing drawn to fit ``height_mm`` (an A1 sheet's zone by default)."""
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.gears import construct_mesh, construct_train
+    from graphplan.model.gears import load
+    gears = load(path)
+    sol = solve(gears)
+    mesh = construct_mesh(sol.pair, precision, height_mm=height_mm) if sol.pair else None
+    vel = construct_train(sol.train, precision) if sol.train else None
+    return gears, sol, mesh, vel
+
+
+def err(g: float | None, e: float) -> float | None:
+    """The lab's percent error; None where the exact value is (near) zero or nothing was read."""
+    if g is None or not math.isfinite(g) or abs(e) < 1e-12:
+        return None
+    v = 100.0 * (g - e) / abs(e)
+    return 0.0 if abs(v) < 1e-9 else v
+
+
+def _fin(v) -> float | None:
+    return float(v) if v is not None and math.isfinite(v) else None
+
+
+def pair_json(sol, mesh) -> dict[str, Any]:
+    p = sol.pair
+    q = sol.quality()
+    pts = [("N1", 0.0)] + [(None, sol.g * k / 10) for k in range(1, 10)] + [("N2", sol.g)]
+    pts += [("B1", sol.rho_B1), ("P", sol.rho_P), ("B2", sol.rho_B2)]
+    pts.sort(key=lambda t: t[1])
+    sliding = []
+    for name, rho in pts:
+        l1, l2 = sol.sliding(rho)
+        row: dict[str, Any] = {"rho1_m": float(rho), "lambda1": _fin(float(l1)), "lambda2": _fin(float(l2))}
+        if name:
+            row["point"] = name
+        sliding.append(row)
+    doc: dict[str, Any] = {
+        "z": list(p.z), "module_m": p.module, "alpha_deg": p.alpha_deg, "addendum": p.addendum,
+        "clearance": p.clearance, "x": list(sol.x),
+        "shifts": "given" if p.shifts is not None else "auto",
+        "alpha_w_deg": sol.alpha_w_deg, "a_m": sol.a, "a_w_m": sol.aw, "y": sol.y, "delta_y": sol.dy,
+        "r_m": list(sol.r), "rb_m": list(sol.rb), "rw_m": list(sol.rw), "ra_m": list(sol.ra), "rf_m": list(sol.rf),
+        "s_m": list(sol.s), "sa_m": list(sol.sa), "pitch_m": sol.p, "base_pitch_m": sol.pb,
+        "line_of_action_m": sol.g, "rho_m": {"B1": sol.rho_B1, "P": sol.rho_P, "B2": sol.rho_B2},
+        "contact_ratio": {"exact": sol.eps, "graphical": mesh.eps if mesh else None,
+                          "error_pct": err(mesh.eps, sol.eps) if mesh else None,
+                          "bound": mesh.eps_bound if mesh else None},
+        "quality": {"undercut": q["undercut"], "x_min": q["x_min"], "pointed": q["pointed"],
+                    "sa_min_m": POINTED * p.module, "interference": q["interference"],
+                    "contact_ratio_min": CONTACT_MIN, "contact_ratio_ok": q["contact_ratio_ok"],
+                    "sliding_max": q["sliding_max"],
+                    "involute_start_rho_m": list(sol.rho_limit)},
+        "sliding": sliding,
+        "warnings": [en for en, _ in sol.warnings + (mesh.warnings if mesh else [])],
+        "warnings_uk": [uk for _, uk in sol.warnings + (mesh.warnings if mesh else [])]}
+    if sol.auto:
+        doc["auto"] = {"rule": sol.auto["rule"], "rule_uk": sol.auto["rule_uk"], "grid": sol.auto["grid"],
+                       "tried": sol.auto["tried"], "passing": sol.auto["passing"]}
+    if mesh:
+        doc["graphical"] = {
+            "mu_l_m_mm": mesh.mu_l, "module_mm": mesh.module_mm, "precision_mm": mesh.precision,
+            "drawn_mm": dict(mesh.drawn), "read_mm": dict(mesh.read),
+            "rw_m": list(mesh.rw), "s_m": list(mesh.s), "sa_m": list(mesh.sa),
+            "error_pct": {"rw": [err(mesh.rw[k], sol.rw[k]) for k in (0, 1)],
+                          "s": [err(mesh.s[k], sol.s[k]) for k in (0, 1)],
+                          "sa": [err(mesh.sa[k], sol.sa[k]) for k in (0, 1)]}}
+    return doc
+
+
+def train_json(tr, vel) -> dict[str, Any]:
+    t = tr.train
+    doc: dict[str, Any] = {
+        "type": t.kind, "planets": t.planets, "z": list(tr.z), "module_m": t.module,
+        "ratio_required": t.ratio,
+        "ratio": {"exact": tr.ratio, "graphical": _fin(vel.ratio) if vel else None,
+                  "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None},
+        "omega_rad_s": dict(tr.omega),
+        "radii_m": tr.radii,
+        "conditions": dict(tr.conditions),
+        "candidates": tr.candidates, "candidates_passing": tr.weighed,
+        "warnings": [en for en, _ in tr.warnings], "warnings_uk": [uk for _, uk in tr.warnings]}
+    if tr.train.ratio is not None:
+        doc["ratio"]["required_error_pct"] = 100.0 * (tr.ratio - tr.train.ratio) / tr.train.ratio
+    if vel:
+        doc["graphical"] = {
+            "mu_l_m_mm": vel.mu_l, "mu_v_mm": vel.mu_v, "h_mm": vel.h, "precision_mm": vel.precision,
+            "va_mm": vel.va_mm, "heights_mm": dict(vel.heights), "segments_mm": dict(vel.segments),
+            "omega_rad_s": dict(vel.omega),
+            "error_pct": {k: err(vel.omega[k], tr.omega[k]) for k in tr.omega}}
+    return doc
+
+
+def gears_json(sol: Solution, mesh, vel, scene: str) -> dict[str, Any]:
+    """The contract's document: ``pair`` for [gears], ``planetary`` for [planetary]."""
+    doc: dict[str, Any] = {"scene": scene}
+    if sol.pair is not None:
+        doc["pair"] = pair_json(sol.pair, mesh)
+    if sol.train is not None:
+        doc["planetary"] = train_json(sol.train, vel)
+    return doc
+
+
+WORDS = {
+    "uk": {"title": "Синтез зубчастих механізмів", "pair": "Евольвентна передача", "train": "Планетарна передача",
+           "given": "зміщення задано", "auto": "зміщення вибрано за правилом: {rule}",
+           "head": ["величина", "колесо 1", "колесо 2"], "exact": "точно", "graph": "графічно", "eps": "εα",
+           "eps_line": "коефіцієнт перекриття εα = {e} (графічно B1B2/pb = {g}, похибка {d} %, межа ±{b})",
+           "data": "z = {z}, m = {m} мм, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
+           "geo": "αw = {aw}°, a = {a} мм, aw = {w} мм, y = {y}, Δy = {dy}, p = {p} мм, pb = {pb} мм",
+           "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e}; "
+                      "найбільше питоме ковзання λ1 = {l1}, λ2 = {l2}",
+           "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
+           "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
+           "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
+           "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %, межа ±{b})",
+           "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
+           "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
+           "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
+           "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
+                    "s": "s, мм", "sa": "s_a, мм"},
+           "warn": "Попередження", "member": "ланка"},
+    "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
+           "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
+           "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
+           "eps_line": "contact ratio εα = {e} (graphically B1B2/pb = {g}, error {d} %, bound ±{b})",
+           "data": "z = {z}, m = {m} mm, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
+           "geo": "αw = {aw}°, a = {a} mm, aw = {w} mm, y = {y}, Δy = {dy}, p = {p} mm, pb = {pb} mm",
+           "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e}; "
+                      "greatest specific sliding λ1 = {l1}, λ2 = {l2}",
+           "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
+           "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
+           "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",
+           "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %, bound ±{b})",
+           "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
+           "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
+           "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
+           "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
+                    "s": "s, mm", "sa": "s_a, mm"},
+           "warn": "Warnings", "member": "member"},
+}
+
+
+def _table(rows: list[list[str]]) -> list[str]:
+    widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
+    return ["  ".join(x.rjust(w) if i else x.ljust(w) for i, (x, w) in enumerate(zip(r, widths))) for r in rows]
+
+
+def pair_lines(d: dict, lang: str) -> list[str]:
+    w = WORDS[lang]
+    n = lambda x, k=4: "—" if x is None else num(x, lang, k).replace("-", "−")   # noqa: E731
+    mm = lambda v: n(v * 1000)                                                     # noqa: E731
+    yes = lambda b: w["yes"] if b else w["no"]                                      # noqa: E731
+    lines = [w["pair"] + ":", w["data"].format(z=", ".join(map(str, d["z"])), m=n(d["module_m"] * 1000),
+                                                a=n(d["alpha_deg"]), h=n(d["addendum"]), c=n(d["clearance"]),
+                                                x=", ".join(n(v) for v in d["x"]))]
+    if d["shifts"] == "auto":
+        lines.append(w["auto"].format(rule=d["auto"]["rule_uk" if lang == "uk" else "rule"]))
+    lines.append(w["geo"].format(aw=n(d["alpha_w_deg"], 6), a=mm(d["a_m"]), w=mm(d["a_w_m"]), y=n(d["y"]),
+                                 dy=n(d["delta_y"]), p=mm(d["pitch_m"]), pb=mm(d["base_pitch_m"])))
+    c = d["contact_ratio"]
+    lines.append(w["eps_line"].format(e=n(c["exact"]), g=n(c["graphical"]), d=n(c["error_pct"], 3), b=n(c["bound"], 2)))
+    q = d["quality"]
+    lines.append(w["quality"].format(u=", ".join(yes(v) for v in q["undercut"]),
+                                     s=", ".join(yes(v) for v in q["pointed"]),
+                                     i=", ".join(yes(v) for v in q["interference"]),
+                                     e=w["ok"] if q["contact_ratio_ok"] else w["fail"],
+                                     l1=n(q["sliding_max"][0]), l2=n(q["sliding_max"][1])))
+    g = d.get("graphical")
+    if g:
+        lines.append(w["scale"].format(mu=n(g["mu_l_m_mm"]), md=n(g["module_mm"]), p=n(g["precision_mm"])))
+    rows = [[w["head"][0], f"{w['exact']} 1", f"{w['graph']} 1", "δ, %", f"{w['exact']} 2", f"{w['graph']} 2", "δ, %"]]
+    for key in ("r", "rb", "rw", "ra", "rf", "s", "sa"):
+        ex = d[f"{key}_m"]
+        gr = g[f"{key}_m"] if g and f"{key}_m" in g else None
+        e = g["error_pct"].get(key) if g and key in g["error_pct"] else None
+        row = [w["rows"][key].replace("_", "")]
+        for k in (0, 1):
+            row += [mm(ex[k]), "" if gr is None else mm(gr[k]), "" if e is None else n(e[k], 3)]
+        rows.append(row)
+    lines += [""] + _table(rows)
+    return lines
+
+
+def train_lines(d: dict, lang: str) -> list[str]:
+    w = WORDS[lang]
+    n = lambda x, k=4: "—" if x is None else num(x, lang, k).replace("-", "−")   # noqa: E731
+    ok = lambda b: w["ok"] if b else w["fail"]                                      # noqa: E731
+    r = d["ratio"]
+    lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
+                                                 w=n(d["omega_rad_s"]["1"])),
+             w["zt"].format(z=", ".join(map(str, d["z"])), u=n(r["exact"]), r=n(d["ratio_required"]),
+                            g=n(r["graphical"]), d=n(r["error_pct"], 3), b=n(r["bound"], 2))]
+    c = d["conditions"]
+    lines.append(w["cond"].format(c=ok(c["coaxial"]), a=ok(c["assembly"]), n=ok(c["neighbourhood"]),
+                                  u=ok(c["no_undercut"])))
+    g = d.get("graphical")
+    if g:
+        lines.append(w["vel"].format(l=n(g["mu_l_m_mm"]), v=n(g["mu_v_mm"]), h=n(g["h_mm"])))
+    rows = [[w["member"], f"ω {w['exact']}", f"ω {w['graph']}", "δ, %"]]
+    for k in ("1", "2", "3", "H"):
+        name = k if not (k == "2" and d["type"] == "B") else "2, 2'"
+        rows.append([name, n(d["omega_rad_s"][k]), n(g["omega_rad_s"][k]) if g else "",
+                     n(g["error_pct"][k], 3) if g else ""])
+    lines += _table(rows)
+    if d["candidates"]:
+        lines += ["", w["cands"].format(n=d["candidates_passing"])]
+        for cnd in d["candidates"]:
+            lines.append(f"  z = {', '.join(map(str, cnd['z']))}: D/m = {cnd['diameter_modules']}, u1H = "
+                         f"{n(cnd['ratio'])} ({n(cnd['error_pct'], 3)} %)")
+    return lines
+
+
+def gears_table(doc: dict[str, Any], lang: str, title: str) -> str:
+    """The terminal's report of the pair and the train."""
+    w = WORDS[lang]
+    lines = [f"{title} — {w['title']}"]
+    warnings: list[str] = []
+    for key, fn in (("pair", pair_lines), ("planetary", train_lines)):
+        if key in doc:
+            lines += [""] + fn(doc[key], lang)
+            warnings += doc[key]["warnings_uk" if lang == "uk" else "warnings"]
+    if warnings:
+        lines += ["", w["warn"] + ":"] + [f"  - {x}" for x in warnings]
+    return "\n".join(lines).replace("_", "") + "\n"

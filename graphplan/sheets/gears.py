@@ -1,0 +1,282 @@
+"""The third sheet, «Синтез зубчастих механізмів» (gear synthesis): the involute pair drawn in mesh,
+the specific sliding diagrams, the planetary train's scheme with its velocity picture and plan of
+angular velocities, the tables (the geometry exact / graphical / δ %, the quality indices, the train's
+teeth, conditions and angular velocities) and the notes — composed in zones like the other sheets:
+the drawings in a row in reading order, the tables and the notes beside the title block; a format
+too small carries the rest to further sheets of the set (docs/gears.md)."""
+from __future__ import annotations
+
+from graphplan.drawing.layout import GAP, Leaf, Placed, centred, flow
+from graphplan.exact.gears import solve
+from graphplan.graphic.diagrams import LAB_LIMIT
+from graphplan.graphic.gears import construct_mesh, construct_train
+from graphplan.graphic.record import Record
+from graphplan.model.gears import Gears
+from graphplan.report.gears import gears_json
+from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
+                                      note_block)
+from graphplan.sheets.form import Form, table
+from graphplan.sheets.kinematics import TITLE
+from graphplan.util.errors import GraphplanError
+from graphplan.util.markup import escape
+from graphplan.util.words import num
+
+WORDS = {
+    "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
+           "meshing": "Евольвентне зачеплення (μ_l = {mu} м/мм)",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
+           "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
+           "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
+           "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
+           "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
+           "cond": "умова", "bound": "межа", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
+           "under": "без підрізання: x ≥ x_{min}", "point": "без загострення: s_a/m ≥ 0,25",
+           "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2", "lam": "найбільше |λ|",
+           "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
+           "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
+           "member": "ланка", "mm": "мм",
+           "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
+                   "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
+           "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
+           "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
+           "bound_eps": "Межа похибки ε_α від точності креслення: ±{b} (відкладені a_w, r_b, r_a, p_b і прочитане "
+                        "B_{{1}}B_{{2}} — кожне в межах половини точності)",
+           "train": "Передача типу {t}: K = {k}, u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
+                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}}: ±{b}",
+           "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
+                    "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
+           "warn": "Попередження: ", "mark": "* — похибка понад 5 %"},
+    "en": {"subtitle": "Gear synthesis", "group": "gr.",
+           "meshing": "Involute meshing (μ_l = {mu} m/mm)",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
+           "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
+           "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
+           "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
+           "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
+           "cond": "condition", "bound": "bound", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
+           "under": "no undercut: x ≥ x_{min}", "point": "not pointed: s_a/m ≥ 0.25",
+           "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2", "lam": "largest |λ|",
+           "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
+           "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
+           "member": "member", "mm": "mm",
+           "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
+                   "that meet the conditions of Table 2, the one with the least greatest specific sliding",
+           "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
+           "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
+           "bound_eps": "Bound of the error of ε_α from the drafting precision: ±{b} (a_w, r_b, r_a, p_b laid off "
+                        "and B_{{1}}B_{{2}} read, each within half the precision)",
+           "train": "Type {t} train: K = {k}, u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
+                    "pole distance h = {h} mm; bound of the error of u_{{1H}}: ±{b}",
+           "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
+                    "with u_{{1H}} within ±4 %: the smallest outer diameter",
+           "warn": "Warning: ", "mark": "* — an error past 5 %"},
+}
+
+
+def _n(v, lang: str, d: int = 4) -> str:
+    return "—" if v is None else num(v, lang, d).replace("-", "−")
+
+
+def _pct(v, lang: str) -> str:
+    if v is None:
+        return "—"
+    return num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
+
+
+def geometry_table(doc: dict, lang: str) -> Record:
+    """Per wheel: r, rb, rw, ra, rf, s, sa exact and graphical (mm) with δ; then αw, aw, y, Δy, p,
+    pb, εα."""
+    w = WORDS[lang]
+    p = doc["pair"]
+    g = p.get("graphical", {})
+    mm = lambda v: _n(None if v is None else v * 1000, lang)            # noqa: E731
+    rows = [[w["qty"], f"{w['ex']} 1", f"{w['gr']} 1", "δ, %", f"{w['ex']} 2", f"{w['gr']} 2", "δ, %"]]
+    names = {"r": "r", "rb": "r_b", "rw": "r_w", "ra": "r_a", "rf": "r_f", "s": "s", "sa": "s_a"}
+    for key, sym in names.items():
+        row = [f"{sym}, {w['mm']}"]
+        for k in (0, 1):
+            gr = g.get(f"{key}_m")
+            e = g.get("error_pct", {}).get(key)
+            row += [mm(p[f"{key}_m"][k]), mm(gr[k]) if gr else "", _pct(e[k], lang) if e else ""]
+        rows.append(row)
+    c = p["contact_ratio"]
+    rows.append(["ε_α", _n(c["exact"], lang), _n(c["graphical"], lang), _pct(c["error_pct"], lang), "", "", ""])
+    for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
+                   (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
+                   (f"p, {w['mm']}", p["pitch_m"] * 1000), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000)):
+        rows.append([sym, _n(v, lang, 5), "", "", "", "", ""])
+    return table(rows, [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
+
+
+def quality_table(doc: dict, lang: str) -> Record:
+    w = WORDS[lang]
+    p = doc["pair"]
+    q = p["quality"]
+    m = p["module_m"]
+    yes = lambda b: w["ok"] if b else w["fail"]                           # noqa: E731
+    rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]
+    rows.append([w["under"], f"{_n(p['x'][0], lang)} ≥ {_n(q['x_min'][0], lang)}",
+                 f"{_n(p['x'][1], lang)} ≥ {_n(q['x_min'][1], lang)}",
+                 " / ".join(yes(not v) for v in q["undercut"])])
+    rows.append([w["point"], _n(p["sa_m"][0] / m, lang), _n(p["sa_m"][1] / m, lang),
+                 " / ".join(yes(not v) for v in q["pointed"])])
+    rho = [p["rho_m"]["B1"], p["line_of_action_m"] - p["rho_m"]["B2"]]
+    lim = [max(v, 0.0) for v in q["involute_start_rho_m"]]
+    rows.append([w["interf"], f"{_n(rho[0] * 1000, lang)} ≥ {_n(lim[0] * 1000, lang)}",
+                 f"{_n(rho[1] * 1000, lang)} ≥ {_n(lim[1] * 1000, lang)}",
+                 " / ".join(yes(not v) for v in q["interference"])])
+    rows.append([w["eps"], _n(p["contact_ratio"]["exact"], lang), "", yes(q["contact_ratio_ok"])])
+    rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
+    return table(rows, [62.0, 26.0, 26.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
+
+
+def train_table(doc: dict, lang: str) -> Record:
+    w = WORDS[lang]
+    t = doc["planetary"]
+    ok = lambda b: w["ok"] if b else w["fail"]                            # noqa: E731
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    r = t["ratio"]
+    g = t.get("graphical", {})
+    rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
+            [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
+            [w["u"].split(":")[0], _n(r["exact"], lang), _n(r["graphical"], lang), _pct(r["error_pct"], lang)]]
+    if t["ratio_required"] is not None:
+        rows.append([w["u"].split(":")[0] + (" потрібне" if lang == "uk" else " wanted"),
+                     _n(t["ratio_required"], lang), "", _pct(r.get("required_error_pct"), lang)])
+    for key in ("1", "2", "H"):
+        name = key if not (key == "2" and t["type"] == "B") else "2"
+        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), _n(t["omega_rad_s"][key], lang),
+                     _n(g.get("omega_rad_s", {}).get(key), lang), _pct(g.get("error_pct", {}).get(key), lang)])
+    c = t["conditions"]
+    for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
+        rows.append([w[name], ok(c[key]), "", ""])
+    return table(rows, [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
+
+
+def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
+    w = WORDS[lang]
+    out = []
+    if "pair" in doc:
+        p = doc["pair"]
+        if p["shifts"] == "auto":
+            a = p["auto"]
+            out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
+                                        b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
+        else:
+            out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
+        out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
+                                     p=_n(mesh.precision, lang)))
+        out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2)))
+    if "planetary" in doc:
+        t = doc["planetary"]
+        out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
+                                     v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2)))
+        if t["candidates"]:
+            out.append(w["synth"].format(n=t["candidates_passing"]))
+    key = "warnings_uk" if lang == "uk" else "warnings"
+    for part in ("pair", "planetary"):
+        if part in doc:
+            out += [w["warn"] + x for x in doc[part][key]]
+    out.append(w["mark"])
+    return [escape(x) if "_" not in x else x for x in out]
+
+
+def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
+    meta = dict(g.meta)
+    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
+    if group:
+        org = ", ".join(x for x in (org, f"{WORDS[lang]['group']} {group}") if x)
+    return {"designation": escape(meta.get("designation", "")), "title": escape(g.title_in(lang)),
+            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "organisation": escape(org), "scale": drawing_scale(mu_l, lang) if mu_l else "", "sheet": "1",
+            "sheets": "1", "subtitle": WORDS[lang]["subtitle"]}
+
+
+def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
+    """The gear sheet: the meshing, the λ diagrams and the planetary pictures captioned, the three
+    tables and the notes, flowed over the sheet (and further sheets of the set) in reading order."""
+    lang = args.lang
+    region = field_of(f)
+    sol = solve(g)
+    height = region[3] - region[1] - 25.0                      # the meshing's zone: the field less its caption
+    mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=height,
+                          width_mm=min(region[2] - region[0], 0.6 * (region[2] - region[0]) + 150.0)) \
+        if sol.pair else None
+    vel = construct_train(sol.train, args.precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
+        if sol.train else None
+    doc = gears_json(sol, mesh, vel, g.source or "")
+    w = WORDS[lang]
+    drawings: list[Leaf] = []
+    tables: list[Leaf] = []
+    if mesh is not None:
+        drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(mu=_n(mesh.mu_l, lang)))))
+        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"])))
+        tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
+    if vel is not None:
+        drawings.append(Leaf("planetary", record=captioned(vel.record, w["planetary"], w["planetary2"])))
+        tables.append(Leaf("train", record=train_table(doc, lang)))
+    width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in tables])
+    nts = Leaf("notes", record=note_block(notes(doc, lang, mesh, vel), width))
+    pages = zones(drawings, tables + [nts], f, width)
+    if pages is None:
+        laid = flow(_rows(drawings, tables + [nts], region), region, keep_out(f))
+        if laid is None:
+            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
+                                 g.source)
+        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
+                 for page in laid]
+    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
+                   f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list[list[Placed]] | None:
+    """One sheet in three zones (LAYOUT.md): the meshing on the left, the λ diagrams over the
+    planetary pictures in the middle, the tables and the notes in the title block's column on the
+    right, above the block. None when the field cannot hold them (the caller flows them over a set)."""
+    x0, y0, x1, y1 = field_of(f)
+    keep = keep_out(f)
+    right = max(width, x1 - keep[0])
+    need = sum(t.h for t in side) + GAP * (len(side) - 1)
+    if need > y1 - keep[3] - GAP:
+        return None
+    mesh = [d for d in drawings if d.name == "meshing"]
+    mid = [d for d in drawings if d.name != "meshing"]
+    mid_w = max((d.w for d in mid), default=0.0)
+    mid_h = sum(d.h for d in mid) + GAP * max(len(mid) - 1, 0)
+    mesh_w = sum(d.w for d in mesh)
+    room = x1 - x0 - right - GAP
+    used = mesh_w + mid_w + (GAP if mesh and mid else 0.0)
+    if used > room or mid_h > y1 - y0 or any(d.h > y1 - y0 for d in mesh):
+        return None
+    spare = (room - used) / (1 + len([z for z in (mesh, mid) if z]))
+    out: list[Placed] = []
+    x = x0 + spare / 2
+    for d in mesh:
+        box = (x, y0, x + d.w + spare, y1)
+        out.append(Placed(d.name, centred(d.record, box), box))
+        x = box[2] + GAP
+    if mid:
+        gap = (y1 - y0 - mid_h) / (len(mid) + 1)
+        y = y1 - gap / 2
+        for d in mid:
+            box = (x, y - d.h - gap / 2, x + mid_w + spare, y)
+            out.append(Placed(d.name, centred(d.record, box), box))
+            y = box[1] - GAP
+    y = y1
+    for t in side:
+        box = (x1 - right, y - t.h, x1, y)
+        out.append(Placed(t.name, top_left_of(t.record, box), box))
+        y = box[1] - GAP
+    return [out]
+
+
+def top_left_of(rec: Record, box) -> Record:
+    """The record with its top-left corner at the box's."""
+    b = rec.bounds()
+    return rec.moved(box[0] - b[0], box[3] - b[3])
+
+
+def _rows(drawings: list[Leaf], side: list[Leaf], region):
+    """Reading order for a set of smaller sheets: the meshing, the λ diagrams, the planetary pictures
+    (side by side while they fit across), then the tables and the notes."""
+    return [drawings, side]

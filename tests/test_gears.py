@@ -1,0 +1,489 @@
+"""Gear synthesis (issue 33): the pair's JSON against the closed forms written here (αw by bisection,
+not the code's Newton), the quality warnings exactly where the formulas put them, the "auto" shifts
+checked against the conditions written here, the planetary train against the velocity picture's
+own derivation and a brute-force search, the graphical εα and u1H within the worst case of the
+drafting precision (every laid-off and read length at ± half the precision, all corners), the sheet's
+composition and language, the command's refusals."""
+from __future__ import annotations
+
+import itertools
+import json
+import math
+
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from conftest import ROOT
+from fuzz_scenes import check_run, run
+from graphplan.exact.gears import Solution, solve_pair, solve_train
+from graphplan.model.gears import Gears, Pair, Train
+from graphplan.report.gears import gears_json
+from graphplan.util.errors import GraphplanError
+
+GEARS = ROOT / "examples" / "gears.toml"
+GEARS_B = ROOT / "examples" / "gears_b.toml"
+FAST = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+# -- the closed forms, written here -------------------------------------------------------------------
+
+def inv(a: float) -> float:
+    return math.tan(a) - a
+
+
+def alpha_w(value: float) -> float:
+    """inv⁻¹ by bisection on (0, 1.5): independent of the code's Newton."""
+    lo, hi = 1e-9, 1.5
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if inv(mid) < value else (lo, mid)
+    return (lo + hi) / 2
+
+
+def pair_closed(z1, z2, m, x1, x2, al_deg=20.0, ha=1.0, c=0.25):
+    al = math.radians(al_deg)
+    t = 2 * (x1 + x2) * math.tan(al) / (z1 + z2) + inv(al)
+    if t <= 1e-9:
+        return None
+    aw_ = alpha_w(t)
+    a = m * (z1 + z2) / 2
+    aw = a * math.cos(al) / math.cos(aw_)
+    y = (aw - a) / m
+    dy = x1 + x2 - y
+    r = [m * z / 2 for z in (z1, z2)]
+    rb = [v * math.cos(al) for v in r]
+    rw = [v * math.cos(al) / math.cos(aw_) for v in r]
+    rf = [m * (z / 2 - ha - c + x) for z, x in ((z1, x1), (z2, x2))]
+    ra = [m * (z / 2 + ha + x - dy) for z, x in ((z1, x1), (z2, x2))]
+    if ra[0] <= rb[0] or ra[1] <= rb[1]:
+        return None
+    s = [m * (math.pi / 2 + 2 * x * math.tan(al)) for x in (x1, x2)]
+    sa = [2 * ra[k] * (s[k] / (2 * r[k]) + inv(al) - inv(math.acos(rb[k] / ra[k]))) for k in (0, 1)]
+    if min(sa) <= 0:
+        return None
+    pb = math.pi * m * math.cos(al)
+    e = [math.sqrt(ra[k] ** 2 - rb[k] ** 2) for k in (0, 1)]
+    g = aw * math.sin(aw_)
+    eps = (e[0] + e[1] - g) / pb
+    rhoB1, rhoB2 = g - e[1], e[0]
+    lim = [r[k] * math.sin(al) - (ha - (x1, x2)[k]) * m / math.sin(al) for k in (0, 1)]
+    return {"alpha_w_deg": math.degrees(aw_), "a_m": a, "a_w_m": aw, "y": y, "delta_y": dy, "r_m": r, "rb_m": rb,
+            "rw_m": rw, "rf_m": rf, "ra_m": ra, "s_m": s, "sa_m": sa, "pitch_m": math.pi * m, "base_pitch_m": pb,
+            "eps": eps, "g": g, "rhoB1": rhoB1, "rhoB2": rhoB2,
+            "undercut": [x < ha - z * math.sin(al) ** 2 / 2 for z, x in ((z1, x1), (z2, x2))],
+            "pointed": [v < 0.25 * m for v in sa],
+            "interference": [rhoB1 < max(lim[0], 0.0), g - rhoB2 < max(lim[1], 0.0)]}
+
+
+def close(a, b, tol=1e-9):
+    if isinstance(b, list):
+        return all(close(u, v, tol) for u, v in zip(a, b))
+    return abs(a - b) <= tol * max(1.0, abs(b))
+
+
+def pair_doc(z1, z2, m, x1, x2):
+    sol = Solution(Gears("t"), solve_pair(Pair((z1, z2), m, (x1, x2))), None)
+    return gears_json(sol, None, None, "")["pair"]
+
+
+# -- the pair --------------------------------------------------------------------------------------
+
+@FAST
+@given(st.integers(8, 120), st.integers(8, 120), st.sampled_from([0.001, 0.0025, 0.005, 0.012]),
+       st.floats(-0.5, 1.0), st.floats(-0.5, 1.0))
+def test_the_pair_is_its_closed_forms_and_warns_where_they_say(z1, z2, m, x1, x2):
+    ex = pair_closed(z1, z2, m, x1, x2)
+    if ex is None:                                 # no mesh, no tip or a tooth pointed below its tip: refused
+        with pytest.raises(GraphplanError):
+            pair_doc(z1, z2, m, x1, x2)
+        return
+    d = pair_doc(z1, z2, m, x1, x2)
+    for key in ("alpha_w_deg", "a_m", "a_w_m", "y", "delta_y", "r_m", "rb_m", "rw_m", "rf_m", "ra_m", "s_m",
+                "sa_m", "pitch_m", "base_pitch_m"):
+        assert close(d[key], ex[key]), (key, d[key], ex[key])
+    assert close(d["contact_ratio"]["exact"], ex["eps"])
+    q = d["quality"]
+    assert q["undercut"] == ex["undercut"] and q["pointed"] == ex["pointed"]
+    assert q["interference"] == ex["interference"]
+    assert q["contact_ratio_ok"] == (ex["eps"] >= 1.2)
+    warn = " ".join(d["warnings"])
+    assert ("undercut" in warn) == any(ex["undercut"])
+    assert ("pointed" in warn) == any(ex["pointed"])
+    assert ("interference" in warn) == any(ex["interference"])
+    assert ("below 1.2" in warn) == (ex["eps"] < 1.2)
+    for row in d["sliding"]:                       # λ1 = 1 − (ρ2/ρ1)(z1/z2), λ2 = 1 − (ρ1/ρ2)(z2/z1)
+        r1 = row["rho1_m"]
+        r2 = ex["g"] - r1
+        if r1 > 1e-9 * ex["g"]:
+            assert close(row["lambda1"], 1 - (r2 / r1) * (z1 / z2))
+        if r2 > 1e-9 * ex["g"]:
+            assert close(row["lambda2"], 1 - (r1 / r2) * (z2 / z1))
+
+
+def test_the_contracts_example_pair():
+    d = pair_doc(12, 30, 0.005, 0.5, 0.3)
+    assert d["alpha_w_deg"] == pytest.approx(24.678, abs=5e-4) and d["a_w_m"] == pytest.approx(0.10858, abs=5e-6)
+    assert d["contact_ratio"]["exact"] == pytest.approx(1.277, abs=5e-4)
+    assert [p["point"] for p in d["sliding"] if "point" in p] == ["N1", "B1", "P", "B2", "N2"]
+    assert d["sliding"][0]["lambda1"] is None and d["sliding"][0]["lambda2"] == 1.0
+
+
+def test_a_shift_that_points_the_tooth_is_refused_in_one_line(tmp_path):
+    path = tmp_path / "g.toml"
+    path.write_text("[gears]\nz = [10, 40]\nmodule = 0.004\nshifts = [1.6, 0.0]\n", encoding="utf-8")
+    code, out, err = run(["gears", str(path)])
+    check_run(["gears"], code, out, err)
+    assert code == 2 and "gears.shifts[0]" in err and "points the tooth" in err
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(8, 120), st.integers(8, 120))
+def test_auto_shifts_pass_every_condition_written_here(z1, z2):
+    check_auto(z1, z2)
+
+
+@pytest.mark.slow
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(8, 120), st.integers(8, 120))
+def test_auto_shifts_pass_every_condition_written_here_many(z1, z2):
+    check_auto(z1, z2)
+
+
+def check_auto(z1, z2):
+    try:
+        sol = solve_pair(Pair((z1, z2), 0.004, None))
+    except GraphplanError as exc:
+        assert "auto" in str(exc) and "closed by" in str(exc)
+        return
+    ex = pair_closed(z1, z2, 0.004, *sol.x)
+    assert ex is not None
+    assert not any(ex["undercut"]) and not any(ex["pointed"]) and not any(ex["interference"]) and ex["eps"] >= 1.2
+    assert sol.auto["rule"] == "blocking-contour zone, least greatest specific sliding"
+
+
+# -- the train --------------------------------------------------------------------------------------
+
+def conditions_here(kind, z, K):
+    if kind == "A":
+        z1, z2, z3 = z
+        return (z3 == z1 + 2 * z2 and (z1 + z3) % K == 0 and (z1 + z2) * math.sin(math.pi / K) > z2 + 2
+                and z1 >= 17 and z2 >= 20 and z3 >= 85 and z3 - z2 >= 8)
+    z1, z2, z2b, z3 = z
+    return (z1 + z2 == z3 - z2b and (z1 * z2b + z2 * z3) % (K * math.gcd(z2, z2b)) == 0
+            and (z1 + z2) * math.sin(math.pi / K) > max(z2, z2b) + 2
+            and min(z1, z2) >= 17 and z2b >= 20 and z3 >= 85 and z3 - z2b >= 8)
+
+
+def type_a_sets(u, K):
+    """Every type A set (z1 17…200, z2 20…200) within ±4 % of u meeting the conditions, by brute force."""
+    import numpy as np
+    a = np.arange(17, 201)[:, None]
+    b = np.arange(20, 201)[None, :]
+    c = a + 2 * b
+    ok = ((np.abs(1 + c / a - u) <= 0.04 * u) & ((a + c) % K == 0) & ((a + b) * math.sin(math.pi / K) > b + 2)
+          & (c >= 85) & (c - b >= 8))
+    return [(int(a[i, 0]), int(b[0, j]), int(c[i, j])) for i, j in zip(*np.nonzero(ok))]
+
+
+def omegas_by_velocity_picture(kind, z, m, w1):
+    """vA = ω1·r1; the planet's instant centre at its contact with the fixed ring; the carrier through
+    the planet's axis."""
+    r = [m * k / 2 for k in z]
+    vA = w1 * r[0]
+    if kind == "A":
+        w2 = -vA / (2 * r[1])
+        vO2 = vA / 2
+    else:
+        w2 = -vA / (r[1] + r[2])
+        vO2 = -w2 * r[2]
+    return {"1": w1, "2": w2, "3": 0.0, "H": vO2 / (r[0] + r[1])}
+
+
+@FAST
+@given(st.sampled_from("AB"), st.floats(3.0, 12.0), st.integers(2, 6))
+def test_the_train_meets_its_conditions_and_willis(kind, u, K):
+    train = Train(kind, K, 0.003, 100.0, ratio=u)
+    try:
+        tr = solve_train(train)
+    except GraphplanError as exc:
+        msg = str(exc)
+        assert msg.startswith("planetary.ratio") and any(w in msg for w in ("neighbourhood", "assembly", "no teeth"))
+        if kind == "A":                          # nothing within ±4 % passes, by the search written here
+            assert not type_a_sets(u, K)
+        return
+    z = tr.z
+    assert conditions_here(kind, z, K)
+    ratio = 1 + z[2] / z[0] if kind == "A" else 1 + z[1] * z[3] / (z[0] * z[2])
+    assert abs(ratio - u) <= 0.04 * u and close(tr.ratio, ratio)
+    d = gears_json(Solution(Gears("t"), None, tr), None, None, "")["planetary"]
+    for k, v in omegas_by_velocity_picture(kind, z, 0.003, 100.0).items():
+        assert close(d["omega_rad_s"][k], v)
+    assert all(d["conditions"].values())
+    if kind == "A":                              # the smallest ring among every set that passes
+        assert z[2] == min(c for _, _, c in type_a_sets(u, K))
+
+
+def test_given_teeth_that_fail_a_condition_are_said():
+    tr = solve_train(Train("A", 5, 0.003, 100.0, z=(20, 40, 100)))         # 120/5 whole, 60·sin 36° < 42
+    assert tr.conditions["coaxial"] and tr.conditions["assembly"] and not tr.conditions["neighbourhood"]
+    assert tr.conditions["no_undercut"]
+    assert any("neighbourhood" in en for en, _ in tr.warnings)
+    with pytest.raises(GraphplanError, match="not coaxial"):
+        solve_train(Train("A", 4, 0.003, 100.0, z=(20, 30, 81)))
+
+
+# -- the graphical construction: within the precision's worst case, exact at 0 --------------------------
+
+def eps_worst(sol, mu, p):
+    """Every corner of aw, rb1, rb2, ra1, ra2, pb laid off and B1B2 read at ± p/2 (drawing mm)."""
+    base = [sol.aw / mu, sol.rb[0] / mu, sol.rb[1] / mu, sol.ra[0] / mu, sol.ra[1] / mu, sol.pb / mu]
+    worst = 0.0
+    for signs in itertools.product((-1, 1), repeat=7):
+        D, R1, R2, A1, A2, pb = (v + s * p / 2 for v, s in zip(base, signs))
+        b1b2 = math.sqrt(A1 ** 2 - R1 ** 2) + math.sqrt(A2 ** 2 - R2 ** 2) - math.sqrt(D ** 2 - (R1 + R2) ** 2)
+        worst = max(worst, abs((b1b2 + signs[6] * p / 2) / pb - sol.eps))
+    return worst
+
+
+def ratio_worst(tr, vel, p):
+    rad = tr.radii
+    base = [rad["1"] / vel.mu_l, rad["H"] / vel.mu_l, rad["3"] / vel.mu_l]
+    worst = 0.0
+    for signs in itertools.product((-1, 1), repeat=5):
+        yA, yO2, yC = (v + s * p / 2 for v, s in zip(base, signs))
+        s1 = vel.h * vel.va_mm / yA
+        sH = vel.h * vel.va_mm * (yC - yO2) / ((yC - yA) * yO2)
+        worst = max(worst, abs((s1 + signs[3] * p / 2) / (sH + signs[4] * p / 2) - tr.ratio))
+    return worst
+
+
+@pytest.mark.parametrize("z, x", [((12, 30), (0.5, 0.3)), ((17, 60), (0.0, 0.0)), ((25, 40), (0.3, -0.2)),
+                                  ((10, 90), (0.6, 0.0))])
+def test_the_contact_ratio_measured_is_within_the_precisions_worst_case(z, x):
+    from graphplan.graphic.gears import construct_mesh
+    sol = solve_pair(Pair(z, 0.004, x))
+    m = construct_mesh(sol, 0.5)
+    worst = eps_worst(sol, m.mu_l, 0.5)
+    assert abs(m.eps - sol.eps) <= worst + 1e-12
+    assert m.eps_bound == pytest.approx(worst, rel=0.05)          # the stated bound is the worst case, to first order
+    assert 2.25 * m.module_mm >= 40 or m.warnings
+    exact = construct_mesh(sol, 0.0)
+    assert abs(exact.eps - sol.eps) < 1e-9
+    for k in (0, 1):
+        assert abs(exact.s[k] - sol.s[k]) < 1e-12 and abs(exact.sa[k] - sol.sa[k]) < 1e-12
+        assert abs(exact.rw[k] - sol.rw[k]) < 1e-12
+
+
+@pytest.mark.parametrize("kind, u, K", [("A", 6.0, 3), ("A", 4.0, 4), ("A", 9.5, 3), ("B", 12.0, 3), ("B", 7.0, 2)])
+def test_the_ratio_read_off_the_plan_is_within_the_precisions_worst_case(kind, u, K):
+    from graphplan.graphic.gears import construct_train
+    tr = solve_train(Train(kind, K, 0.003, 120.0, ratio=u))
+    vel = construct_train(tr, 0.5)
+    worst = ratio_worst(tr, vel, 0.5)
+    assert abs(vel.ratio - tr.ratio) <= worst + 1e-12
+    assert vel.ratio_bound == pytest.approx(worst, rel=0.1)
+    exact = construct_train(tr, 0.0)
+    assert abs(exact.ratio - tr.ratio) < 1e-9
+    assert all(abs(exact.omega[k] - tr.omega[k]) < 1e-9 * abs(tr.omega["1"]) for k in tr.omega)
+
+
+# -- outputs ------------------------------------------------------------------------------------------
+
+def test_gears_json_and_tables():
+    code, out, err = run(["gears", str(GEARS), "--json"])
+    doc = check_run(["gears", "--json"], code, out, err)
+    p, t = doc["pair"], doc["planetary"]
+    assert p["z"] == [12, 30] and p["x"] == [0.5, 0.3] and abs(p["contact_ratio"]["error_pct"]) < 5
+    assert t["type"] == "A" and t["conditions"] == {"coaxial": True, "assembly": True, "neighbourhood": True,
+                                                     "no_undercut": True}
+    assert abs(t["ratio"]["exact"] - 6.0) <= 0.24 and t["candidates"]
+    code, out, err = run(["gears", str(GEARS_B), "--precision", "0", "--json"])
+    doc = check_run(["gears", "--json"], code, out, err)
+    assert doc["pair"]["shifts"] == "auto" and "least greatest" in doc["pair"]["auto"]["rule"]
+    assert abs(doc["pair"]["contact_ratio"]["error_pct"]) < 1e-7 and abs(doc["planetary"]["ratio"]["error_pct"]) < 1e-7
+    code, uk, _ = run(["gears", str(GEARS)])
+    code2, en, _ = run(["gears", str(GEARS_B)])
+    assert code == code2 == 0 and "Синтез зубчастих механізмів" in uk and "Gear synthesis" in en
+    assert "зона блокувального контуру" in run(["gears", str(GEARS_B), "--lang", "uk"])[1]
+
+
+@pytest.mark.parametrize("text, words", [
+    ("[gears]\nz = [12]\nmodule = 0.004\n", ["gears.z", "list of 2"]),
+    ("[gears]\nz = [12, 3]\nmodule = 0.004\n", ["gears.z[1]", "from 5 to 300"]),
+    ("[gears]\nz = [12, 30]\nmodule = 2\n", ["gears.module"]),
+    ("[gears]\nz = [12, 30]\nmodule = 0.004\nshifts = [0.1, 5]\n", ["gears.shifts[1]"]),
+    ("[gears]\nz = [12, 30]\nmodule = 0.004\nshifts = \"maybe\"\n", ["gears.shifts", "auto"]),
+    ("[gears]\nz = [12, 30]\nmodule = 0.004\nspeed = 3\n", ["gears.speed", "unknown key"]),
+    ("[gears]\nz = [8, 8]\nmodule = 0.004\nshifts = \"auto\"\n", ["auto", "closed by"]),
+    ("[planetary]\ntype = \"C\"\nratio = 5\nmodule = 0.003\n", ["planetary.type"]),
+    ("[planetary]\nratio = 5\nz = [20, 30, 80]\nmodule = 0.003\n", ["planetary", "one of them"]),
+    ("[planetary]\nratio = 6\nplanets = 6\nmodule = 0.003\n", ["planetary.ratio", "neighbourhood", "K = 6"]),
+    ("[planetary]\ntype = \"B\"\nz = [20, 30, 40]\nmodule = 0.003\n", ["planetary.z", "list of 4"]),
+])
+def test_bad_gear_scenes_are_one_line_naming_the_key(tmp_path, text, words):
+    path = tmp_path / "g.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = run(["gears", str(path)])
+    check_run(["gears"], code, out, err)
+    assert code == 2 and out == ""
+    for w in words + [str(path)]:
+        assert w in err, (w, err)
+
+
+def test_each_kind_of_scene_to_its_commands():
+    for argv, words in ((["analyze", str(GEARS)], ["a gear scene", "graphplan gears"]),
+                        (["cam", str(GEARS)], ["gear mechanism"]),
+                        (["gears", str(ROOT / "examples" / "shaper.toml")], ["no [gears] or [planetary]"]),
+                        (["gears", str(ROOT / "examples" / "cam_translating.toml")], ["no [gears] or [planetary]"])):
+        code, out, err = run(argv)
+        check_run(argv, code, out, err)
+        assert code == 2 and all(w in err for w in words), err
+
+
+def test_the_api_shows_the_gears():
+    import graphplan
+    g = graphplan.gears(GEARS, lang="en")
+    assert g.to_json()["pair"]["z"] == [12, 30] and "Gear synthesis" in g.table() and "<svg" in g._repr_html_()
+
+
+def test_svg_constructions(tmp_path):
+    code, out, err = run(["gears", str(GEARS), "--svg", str(tmp_path)])
+    assert code == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["meshing.svg", "planetary.svg", "sliding.svg"]
+
+
+# -- the sheet -------------------------------------------------------------------------------------------
+
+def gear_sheet(name, lang, fmt="A1"):
+    from graphplan.model.gears import load
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    return BUILDERS["gears"](load(ROOT / "examples" / f"{name}.toml"), form(fmt), SheetOptions(lang=lang, sheet="gears"))
+
+
+@pytest.mark.parametrize("name, lang, fmt", [("gears", "uk", "A1"), ("gears_b", "en", "A1"), ("gears", "uk", "A3")])
+def test_the_gear_sheet_is_composed_and_clean(name, lang, fmt):
+    from graphplan.sheets.compose import defects
+    from test_sheet_content import check_clean, texts
+    sheet = gear_sheet(name, lang, fmt)
+    assert defects(sheet) == []
+    lines = texts(sheet)
+    check_clean(lines, set() if lang == "uk" else None)
+    title = "Синтез зубчастих механізмів" if lang == "uk" else "Gear synthesis"
+    assert any(title in t for t in lines)
+    assert (len(sheet.pages) == 1) == (fmt == "A1")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, lang, fmt", [("gears", "uk", "A1"), ("gears_b", "en", "A1"), ("gears", "uk", "A3"),
+                                             ("gears_b", "en", "A3"), ("gears", "uk", "A2")])
+def test_the_gear_sheet_has_no_overprinted_word(tmp_path, name, lang, fmt):
+    import subprocess
+    import sys
+    sheet = gear_sheet(name, lang, fmt)
+    for n, page in enumerate(sheet.pages, 1):
+        path = tmp_path / f"s{n}.svg"
+        path.write_text(page.svg(), encoding="utf-8")
+        out = subprocess.run([sys.executable, "/work/shared/tools/overprint.py", str(path)], capture_output=True,
+                             text=True, check=True).stdout
+        assert " 0 overprinted" in out, out
+
+
+def test_the_sheet_command_writes_the_gear_sheet(tmp_path):
+    out = tmp_path / "g.svg"
+    code, _, err = run(["sheet", str(GEARS), "-o", str(out)])
+    assert code == 0 and out.exists()
+    assert "Синтез зубчастих механізмів" in out.read_text(encoding="utf-8")
+    code, _, err = run(["sheet", str(GEARS), "-o", str(out), "--sheet", "forces"])
+    assert code == 2 and "gear sheet only" in err
+    doc = json.loads(run(["gears", str(GEARS), "--json"])[1])
+    assert doc["pair"]["graphical"]["module_mm"] == 20.0            # 4:1, the whole depth 45 mm
+
+
+def test_the_bench_section_measures_against_the_bound_and_says_the_failures():
+    from graphplan.bench.gears import rows
+    got = list(rows(quick=True))
+    measured = [r for r in got if r["method"] in ("contact ratio", "ratio u1H")]
+    assert {r["x"] for r in measured} == {0.0, 0.5}
+    for r in measured:
+        if r["x"] == 0:
+            assert r["max_error_pct"] < 1e-9
+        else:
+            assert 0 < r["max_error_pct"] <= r["bound_pct"]
+    fails = {r["setting"]: r for r in got if r["method"] == "failure"}
+    assert fails["sa → 0: z = 12, 30; x = 1.05, 0.3"]["status"] == "warning"
+    assert any("pointed" in w for w in fails["sa → 0: z = 12, 30; x = 1.05, 0.3"]["warnings"])
+    assert any("undercut" in w for w in fails["z = 8, 30; x = 0, 0"]["warnings"])
+    assert any("carrier's segment" in w for w in fails["u1H = 40, B"]["warnings"])
+
+
+def test_keys_for_gear_variants_are_graded_by_check(tmp_path):
+    """`graphplan key` over a gear base (z, shifts as "12 30" cells, dotted [gears]/[planetary] columns)
+    writes each variant's geometry and train in the key format; `check` grades a student's table."""
+    table = tmp_path / "variants.csv"
+    table.write_text(f"# base = {GEARS}\nvariant,student,gears.z,gears.module,gears.shifts,planetary.ratio\n"
+                     "01,Ann,12 30,0.005,0.5 0.3,6\n02,Bob,8 9,0.006,auto,8\n", encoding="utf-8")
+    out = tmp_path / "keys"
+    code, _, err = run(["key", str(table), "-o", str(out), "--no-pdf", "--quiet"])
+    assert code == 0, err
+    key = json.loads((out / "01" / "key.json").read_text(encoding="utf-8"))
+    ex = pair_closed(12, 30, 0.005, 0.5, 0.3)
+    values = key["positions"][0]["values"]
+    assert key["kind"] == "gears" and close(values["a_w"], ex["a_w_m"]) and close(values["eps"], ex["eps"])
+    assert close(values["sa1"], ex["sa_m"][0]) and values["u1H"] == pytest.approx(6.0, rel=0.04)
+    assert "skipped" in (out / "summary.csv").read_text(encoding="utf-8")        # z = 8, 9: no "auto" shifts
+    student = tmp_path / "s.csv"
+    student.write_text(f"variant,position,quantity,value\n01,0,a_w,{ex['a_w_m']:.5f}\n01,0,sa1,0.003\n",
+                       encoding="utf-8")
+    code, report, _ = run(["check", str(out / "01" / "key.json"), str(student), "--json"])
+    rows = json.loads(report)["rows"]
+    assert code == 0 and [r["status"] for r in rows] == ["pass", "fail"] and rows[1]["note"] == ""
+
+
+@pytest.mark.slow
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(5, 300), st.integers(5, 300), st.sampled_from([0.0001, 0.004, 0.1]),
+       st.floats(-0.5, 1.2), st.floats(-0.5, 1.2), st.sampled_from(["A1", "A3"]), st.sampled_from(["uk", "en"]))
+def test_any_gear_sheet_is_composed_without_defects(z1, z2, m, x1, x2, fmt, lang):
+    """Large and small wheels on either format: nothing overprinted, nothing outside its box."""
+    from graphplan.model.gears import build
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    try:
+        g = build({"gears": {"z": [z1, z2], "module": m, "shifts": [x1, x2]},
+                   "planetary": {"type": "B" if z1 % 2 else "A", "ratio": 5.0 + z2 % 7, "module": 0.003}}, "<t>")
+        sheet = BUILDERS["gears"](g, form(fmt), SheetOptions(lang=lang, sheet="gears"))
+    except GraphplanError:
+        return
+    assert defects(sheet) == []
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(8, 120), st.integers(8, 120), st.floats(-0.5, 1.0), st.floats(-0.5, 1.0),
+       st.sampled_from([0.1, 0.25, 0.5, 1.0]))
+def test_the_contact_ratio_measured_on_generated_pairs_is_within_the_worst_case(z1, z2, x1, x2, p):
+    from graphplan.graphic.gears import construct_mesh
+    assume(pair_closed(z1, z2, 0.004, x1, x2) is not None)
+    sol = solve_pair(Pair((z1, z2), 0.004, (x1, x2)))
+    try:
+        m = construct_mesh(sol, p)
+    except GraphplanError:
+        return                                          # collapsed at this precision: refused
+    assert abs(m.eps - sol.eps) <= eps_worst(sol, m.mu_l, p) + 1e-12
+    assert abs(construct_mesh(sol, 0.0, module_mm=m.module_mm).eps - sol.eps) < 1e-9
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from("AB"), st.floats(3.0, 12.0), st.integers(2, 4), st.sampled_from([0.1, 0.25, 0.5, 1.0]))
+def test_the_ratio_read_on_generated_trains_is_within_the_worst_case(kind, u, K, p):
+    from graphplan.graphic.gears import construct_train
+    try:
+        tr = solve_train(Train(kind, K, 0.003, 100.0, ratio=u))
+        vel = construct_train(tr, p)
+    except GraphplanError:
+        return
+    assert abs(vel.ratio - tr.ratio) <= ratio_worst(tr, vel, p) + 1e-12
+    assert abs(construct_train(tr, 0.0).ratio - tr.ratio) < 1e-9
