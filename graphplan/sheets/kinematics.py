@@ -41,8 +41,51 @@ POLES = (15.0, 50.0)   # the lab manual's pole distances H1, H2, mm
 SHARE = 0.6            # an unset pole distance draws the v or a peak about this share of the s diagram's
 
 
-def diagram_options(st: Study, k: float = 1.0, positions: int | None = None) -> dict:
-    """The diagrams' L, s height and pole distances: the scene's L (× k where a small sheet needs it),
+_REDRAWN: dict[tuple, dict] = {}
+
+
+def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, precision: float = 0.5,
+                    width: float | None = None) -> dict:
+    """The options the sheet draws the diagrams with (``chord_diagrams`` keywords): ``first_options``
+    where that drawing is qualitatively right, else as graphic.redraw changes it until it is (the
+    area correction, other poles within the lab's 15–50 mm, smaller intervals where the curve bends;
+    the scene's own H1, H2 kept; a longer L, up to the scene's, where the block stays within ``width``
+    mm — the sheet's field) — ``redrawn`` says what. The s height is the size factor's: a larger
+    one is the composition's choice (``kinlayout.set_of_sheets`` takes a size whose diagrams are
+    right where that costs a sheet at most). Once per
+    scene, size factor, positions and ruler: the sheet of either language, ``sheet_scales`` and
+    the terminal get the same."""
+    from graphplan.graphic.redraw import redraw
+    key = (repr(st.mech), k, positions, precision, width)
+    if key not in _REDRAWN:
+        if len(_REDRAWN) >= 32:
+            _REDRAWN.pop(next(iter(_REDRAWN)))
+        first = first_options(st, k, positions)
+        dg = st.mech.task.diagram
+        fixed = frozenset(name for name in ("H1", "H2") if f"{name}_mm" in dg)
+        longest = float(dg.get("L_mm", 240.0)) if width is not None else None
+        chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest)
+        if chosen["L"] > first["L"] and _block_width(st, chosen, precision) > width:
+            chosen, done = redraw(st, first, precision, POLES, fixed=fixed)      # no room for a longer L
+        _REDRAWN[key] = {**chosen, "redrawn": done}
+    return dict(_REDRAWN[key])
+
+
+def _block_width(st: Study, options: dict, precision: float) -> float:
+    """The width of the diagrams' block drawn with ``options`` (the wider language), mm."""
+    from graphplan.drawing.diagrams import draw
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.util.words import LANGS
+    widths = []
+    for lang in LANGS:
+        b = captioned(draw(chord_diagrams(st, precision=precision, lang=lang, **options), lang),
+                      word("kin diagrams", lang)).bounds()
+        widths.append(b[2] - b[0])
+    return max(widths)
+
+
+def first_options(st: Study, k: float = 1.0, positions: int | None = None) -> dict:
+    """The diagrams' first L, s height and pole distances: the scene's L (× k where a small sheet needs it),
     the s diagram at most ``S_HEIGHT`` × k high; H1, H2 the scene's where it gives them, else chosen
     (whole mm, within the lab's 15–50 mm) so the v or a peak is about ``SHARE`` of the s diagram:
     v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv, μt = T/L (REFERENCE §1.5). No language enters."""
@@ -87,6 +130,7 @@ class Drafter:
     diagrams at a size factor."""
     st: Study
     opts: SheetOptions
+    width: float | None = None     # the field's width: a redrawn diagrams' block no wider
 
     def __post_init__(self) -> None:
         self.memo: dict = {}
@@ -108,7 +152,8 @@ class Drafter:
         from graphplan.graphic.diagrams import chord_diagrams
         o = self.opts
         return self._once(("diag", k, lang), lambda: chord_diagrams(
-            self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions)))
+            self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
+                                                                         self.width)))
 
     def lines(self, mu: dict[str, float]) -> dict[str, list[Record]]:
         """The plans at the scales ``mu``, their lines only (no lettering): family → records."""
@@ -128,6 +173,11 @@ class Drafter:
             return {"position": [position_record(pl)], "velocity": list(velocity_records(pl).values()),
                     "acceleration": list(acceleration_records(pl).values())}
         return self._once(key, make)
+
+    def diagrams_right(self, k: float) -> bool:
+        """Whether the diagrams at size factor k are qualitatively right (graphic.redraw found a drawing)."""
+        o = self.opts
+        return diagram_options(self.st, k, o.positions, o.precision, self.width)["redrawn"].right
 
     def diagram_record(self, k: float, lang: str) -> Record:
         from graphplan.drawing.diagrams import draw
@@ -186,7 +236,9 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
     not enter): one sheet where one holds the plans legibly (on A1 always), else a set. The plans
     are then drawn at the chosen scales and, where one came out larger than assumed, the choice is
     made again allowing for it (the sheet, the terminal and the explorer all get this result)."""
-    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"))
+    region = field_of(f)
+    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"),
+                 region[2] - region[0])
     nat = measure(dr)
     for _ in range(4):
         one = one_sheet(dr, nat, f)
@@ -203,14 +255,17 @@ def _options(opts: SheetOptions) -> SheetOptions:
 def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, accel=None,
                  precision: float = 0.5) -> dict[str, float]:
     """The scales the kinematics sheet of ``format`` draws with — μl, μv, μa of the plans and the
-    diagrams' L, height, H1, H2 — for the terminal's ``plans``/``diagrams``, the API and the explorer
+    diagrams' L, height, H1, H2 (and under "diagrams" all the options its diagrams are drawn with,
+    ``diagram_options``) — for the terminal's ``plans``/``diagrams``, the API and the explorer
     to print what the sheet draws. Arithmetic on the drawings' sizes: no sheet is built. More
     positions than a sheet holds are refused first (the layout of 3600 plans would take minutes)."""
     check_positions(st, SheetOptions(positions=positions, accel=accel, precision=precision))
     p, _, _ = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
-    opts = diagram_options(st, p.diagrams, positions)
+    region = field_of(form(format))
+    opts = diagram_options(st, p.diagrams, positions, precision, region[2] - region[0])
     return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
-            "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"]}
+            "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"],
+            "diagrams": opts}
 
 
 A1_POSITIONS = 40     # an A1 sheet holds about 40 velocity plans at a legible scale

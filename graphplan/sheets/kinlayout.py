@@ -230,8 +230,9 @@ def _legible(fam: Family) -> float:
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
-    flowing over the sheets in reading order — the fewest sheets; then each family grown while the
-    set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
+    flowing over the sheets in reading order — the fewest sheets (qualitatively wrong diagrams
+    counted as one more: their larger size factor is taken where it is right); then each family
+    grown while the set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
     from graphplan.sheets.compose import keep_out
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
@@ -274,7 +275,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                             break
                         mu = {**mu, fam: bigger}
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + math.log(k)
-                key = (count, -(factor == TABLES), -rel)
+                # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
+                # right is taken where it costs a sheet at most
+                wrong = 0 if dr.diagrams_right(k) else 1
+                key = (count + wrong, wrong, -(factor == TABLES), -rel)
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count))
     if best is None:
