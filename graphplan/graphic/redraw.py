@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Iterator
+from typing import Any, Callable, Iterator
 
 import numpy as np
 
@@ -158,11 +158,13 @@ def candidates(L: float, H1: float, H2: float, wrong: tuple[str, ...], poles=LAB
 
 
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
-           fixed: frozenset[str] = frozenset(), tallest: float | None = None) -> tuple[dict[str, Any], Redrawing]:
+           fixed: frozenset[str] = frozenset(), tallest: float | None = None,
+           fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
     """The options of a qualitatively right drawing: ``options`` (``chord_diagrams`` keywords: point,
     divisions, L, H1, H2, height) as given where that drawing is right, else the first candidate
-    (``candidates``; each tried once) that is; none: ``options`` unchanged (their warnings stay).
-    Returns the options and what was done."""
+    (``candidates``; each tried once) that is and that ``fits`` (the caller's room: a right drawing too
+    large for it is passed over); none: ``options`` unchanged (their warnings stay). Returns the
+    options and what was done."""
     probe = Probe(st, options.get("point"), options.get("divisions"), precision)
     L, H1, H2 = float(options["L"]), float(options["H1"]), float(options["H2"])
     base = {"L": L, "H1": H1, "H2": H2, "correct": bool(options.get("correct", False)),
@@ -180,6 +182,8 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         seen.add(key)
         if not probe.wrong(**trial, all_of=False):
             change = {k: v for k, v in change.items() if trial[k] != base[k]}
+            if fits is not None and not fits({**options, **change}):
+                continue
             return ({**options, **change},
                     Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}))
     return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1)

@@ -25,8 +25,8 @@ from graphplan.sheets.form import TABLES, Form, form
 from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, lab_table, notes,  # noqa: F401
                                         notes_lines, sheet_tables, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
-                                        PlansUndrawable, column_leaf, grid_rows, legible, one_sheet,
-                                        set_of_sheets, size_of, tree)
+                                        PlansUndrawable, column_leaf, grid_rows, legible, one_sheet, room,
+                                        room_fits, set_of_sheets, size_of, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, word
 
@@ -45,43 +45,52 @@ _REDRAWN: dict[tuple, dict] = {}
 
 
 def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, precision: float = 0.5,
-                    width: float | None = None) -> dict:
+                    room: tuple[float, ...] | None = None) -> dict:
     """The options the sheet draws the diagrams with (``chord_diagrams`` keywords): ``first_options``
     where that drawing is qualitatively right, else as graphic.redraw changes it until it is (the
     area correction, other poles within the lab's 15–50 mm, smaller intervals where the curve bends;
-    the scene's own H1, H2 kept; a longer L, up to the scene's, where the block stays within ``width``
-    mm — the sheet's field) — ``redrawn`` says what. The s height is the size factor's: a larger
-    one is the composition's choice (``kinlayout.set_of_sheets`` takes a size whose diagrams are
-    right where that costs a sheet at most). Once per
+    the scene's own H1, H2 kept; a longer L, up to the scene's, where ``room`` is given) — ``redrawn``
+    says what. A redrawn block is at most ``GROWTH`` times the first one's width and height and fits
+    ``room`` (the sheet's: ``kinlayout.room``), else the next right candidate is taken. The s height
+    is the size factor's: a larger one is the composition's choice (``kinlayout.set_of_sheets``
+    takes a size whose diagrams are right where that costs a sheet at most). Once per
     scene, size factor, positions and ruler: the sheet of either language, ``sheet_scales`` and
     the terminal get the same."""
     from graphplan.graphic.redraw import redraw
-    key = (repr(st.mech), k, positions, precision, width)
+    key = (repr(st.mech), k, positions, precision, room)
     if key not in _REDRAWN:
         if len(_REDRAWN) >= 32:
             _REDRAWN.pop(next(iter(_REDRAWN)))
         first = first_options(st, k, positions)
         dg = st.mech.task.diagram
         fixed = frozenset(name for name in ("H1", "H2") if f"{name}_mm" in dg)
-        longest = float(dg.get("L_mm", 240.0)) if width is not None else None
-        chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest)
-        if chosen["L"] > first["L"] and _block_width(st, chosen, precision) > width:
-            chosen, done = redraw(st, first, precision, POLES, fixed=fixed)      # no room for a longer L
+        longest = float(dg.get("L_mm", 240.0)) if room is not None else None
+        sizes: dict = {}
+
+        def fits(options: dict) -> bool:
+            w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
+            w, h = _block_size(st, options, precision)
+            return (w <= GROWTH * w0 + 1e-6 and h <= GROWTH * h0 + 1e-6
+                    and (room is None or room_fits(room, w, h)))
+        chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
         _REDRAWN[key] = {**chosen, "redrawn": done}
     return dict(_REDRAWN[key])
 
 
-def _block_width(st: Study, options: dict, precision: float) -> float:
-    """The width of the diagrams' block drawn with ``options`` (the wider language), mm."""
+GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height
+
+
+def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:
+    """The diagrams' block drawn with ``options`` (the larger of the two languages), mm."""
     from graphplan.drawing.diagrams import draw
     from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.util.words import LANGS
-    widths = []
+    sizes = []
     for lang in LANGS:
         b = captioned(draw(chord_diagrams(st, precision=precision, lang=lang, **options), lang),
                       word("kin diagrams", lang)).bounds()
-        widths.append(b[2] - b[0])
-    return max(widths)
+        sizes.append((b[2] - b[0], b[3] - b[1]))
+    return max(w for w, _ in sizes), max(h for _, h in sizes)
 
 
 def first_options(st: Study, k: float = 1.0, positions: int | None = None) -> dict:
@@ -130,7 +139,7 @@ class Drafter:
     diagrams at a size factor."""
     st: Study
     opts: SheetOptions
-    width: float | None = None     # the field's width: a redrawn diagrams' block no wider
+    room: tuple[float, ...] | None = None    # kinlayout.room: where a redrawn diagrams' block must fit
 
     def __post_init__(self) -> None:
         self.memo: dict = {}
@@ -153,7 +162,7 @@ class Drafter:
         o = self.opts
         return self._once(("diag", k, lang), lambda: chord_diagrams(
             self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
-                                                                         self.width)))
+                                                                         self.room)))
 
     def lines(self, mu: dict[str, float]) -> dict[str, list[Record]]:
         """The plans at the scales ``mu``, their lines only (no lettering): family → records."""
@@ -177,7 +186,7 @@ class Drafter:
     def diagrams_right(self, k: float) -> bool:
         """Whether the diagrams at size factor k are qualitatively right (graphic.redraw found a drawing)."""
         o = self.opts
-        return diagram_options(self.st, k, o.positions, o.precision, self.width)["redrawn"].right
+        return diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"].right
 
     def diagram_record(self, k: float, lang: str) -> Record:
         from graphplan.drawing.diagrams import draw
@@ -236,9 +245,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
     not enter): one sheet where one holds the plans legibly (on A1 always), else a set. The plans
     are then drawn at the chosen scales and, where one came out larger than assumed, the choice is
     made again allowing for it (the sheet, the terminal and the explorer all get this result)."""
-    region = field_of(f)
-    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"),
-                 region[2] - region[0])
+    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"), room(f))
     nat = measure(dr)
     for _ in range(4):
         one = one_sheet(dr, nat, f)
@@ -261,8 +268,7 @@ def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, ac
     positions than a sheet holds are refused first (the layout of 3600 plans would take minutes)."""
     check_positions(st, SheetOptions(positions=positions, accel=accel, precision=precision))
     p, _, _ = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
-    region = field_of(form(format))
-    opts = diagram_options(st, p.diagrams, positions, precision, region[2] - region[0])
+    opts = diagram_options(st, p.diagrams, positions, precision, room(form(format)))
     return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
             "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"],
             "diagrams": opts}

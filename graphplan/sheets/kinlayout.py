@@ -91,6 +91,7 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
 
 
 SHAPES = ("bands", "column", "accel", "sides")
+BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
 
@@ -127,12 +128,12 @@ def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: t
 
 
 def _grids(n: int) -> list[int]:
-    """Column counts of a grid of n cells that give different row counts."""
-    out, seen = [], set()
-    for c in range(n, 0, -1):
-        r = -(-n // c)
-        if r not in seen:
-            seen.add(r)
+    """Column counts of a grid of n cells, one for each row count: the fewest columns that give it
+    (the narrowest grid of r rows has ⌈n/r⌉ columns — 12 plans in two rows are 6 a row, not 11)."""
+    out: list[int] = []
+    for r in range(1, n + 1):
+        c = -(-n // r)
+        if -(-n // c) == r and c not in out:
             out.append(c)
     return out or [1]
 
@@ -172,8 +173,22 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
             return found
 
         for shape in SHAPES:
-            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None,
-                               ("velocity", "position", "acceleration"))
+            current: dict[str, float] = {}
+
+            def fits(m, s=shape, current=current) -> bool:
+                ok = arranged(m, s) is not None
+                if ok:                      # choose_levels takes every trial that fits: the scales now
+                    current.update(m)
+                return ok
+
+            def balanced(name: str, bigger: float, current=current) -> bool:
+                """A family grows past its target only up to ``BALANCE`` times the smallest of the
+                others (an acceleration plan twice its target beside 25-mm velocity plans takes the
+                room they could grow into)."""
+                others = [nat.families[fam].rel(current[fam]) for fam in FAMILIES
+                          if fam != name and (fam != "acceleration" or has_a)]
+                return not others or nat.families[name].rel(bigger) <= max(1.0, BALANCE * min(others)) + 1e-9
+            mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
             if mu is None:
                 continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
@@ -227,6 +242,22 @@ def _legible(fam: Family) -> float:
     return mu
 
 
+def room(f: Form) -> tuple[float, ...]:
+    """Where one drawing fits an empty sheet of the format: (the field's width, its height over the
+    title block, the width beside the title block, the field's height), mm."""
+    from graphplan.sheets.compose import keep_out
+    region = field_of(f)
+    keep = keep_out(f)
+    height = region[3] - region[1]
+    return (region[2] - region[0], keep[1] + height - keep[3], keep[0] - region[0], height)
+
+
+def room_fits(r: tuple[float, ...], w: float, h: float) -> bool:
+    """Whether a w × h drawing fits the room ``r`` (``room``): across the field over the title
+    block, or beside the title block the field's full height."""
+    return (w <= r[0] and h <= r[1]) or (w <= r[2] and h <= r[3])
+
+
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
@@ -239,8 +270,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     keep = keep_out(f)
 
     def alone(size) -> bool:              # fits an empty sheet beside or over the title block
-        w, h = size
-        return (w <= width and h <= keep[1] + height - keep[3]) or (w <= keep[0] - region[0] and h <= height)
+        return room_fits(room(f), *size)
     fams = nat.families
     floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
     def fitted(fam: str, mu: float) -> float:
