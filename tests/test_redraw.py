@@ -14,10 +14,12 @@ from conftest import ROOT, example, scene_study
 from graphplan.cli.main import main
 from graphplan.graphic.diagrams import chord_diagrams
 from graphplan.report.diagrams import sheet_notes
+from graphplan.sheets.form import form
 from graphplan.sheets.kinematics import diagram_options, first_options
+from graphplan.sheets.kinlayout import room
 from graphplan.util.errors import GraphplanError
 
-A1_WIDTH = 841.0 - 25.0 - 5.0        # the A1 field's width (frame 20/5 mm, as the sheet passes it)
+A1_ROOM = room(form("A1"))            # where the A1 sheet lets a redrawn diagrams' block go
 
 
 def wrong(d) -> list[str]:
@@ -32,7 +34,7 @@ ALTERNATIVES = ([{"correct": True}, {"adaptive": True}, {"adaptive": True, "corr
 def check_sheet_diagrams(st, k: float = 1.0) -> str:
     """The sheet's diagrams at size factor k: right, or no alternative makes them right; the notes
     say what was redrawn. Returns "first", "redrawn" or "kept"."""
-    options = diagram_options(st, k, None, 0.5, A1_WIDTH)
+    options = diagram_options(st, k, None, 0.5, A1_ROOM)
     rd = options.pop("redrawn")
     d = chord_diagrams(st, precision=0.5, redrawn=rd, **options)
     notes = " ".join(sheet_notes(d, "en"))
@@ -107,7 +109,7 @@ def test_the_offset_crank_slider_is_redrawn_with_a_larger_pole():
     first = first_options(st, 1.0)
     assert wrong(chord_diagrams(st, precision=0.5, **first)) == ["a"]
     assert check_sheet_diagrams(st) == "redrawn"
-    options = diagram_options(st, 1.0, None, 0.5, A1_WIDTH)
+    options = diagram_options(st, 1.0, None, 0.5, A1_ROOM)
     assert options["H2"] > first["H2"] and 15.0 <= options["H2"] <= 50.0
 
 

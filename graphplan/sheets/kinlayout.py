@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from graphplan.sheets.kinematics import Drafter
 
 FAMILIES = ("position", "velocity", "acceleration")
+PLAN_MM = 100.0        # … or its largest plan drawn at least this across
 LEGIBLE_MM = 40.0      # a set's plans: the crank pin's vectors p_v a and π a drawn at least this long
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
 SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
@@ -202,10 +203,21 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     return best[1] if best else None
 
 
+def readable(fam: Family, mu: float) -> bool:
+    """Whether a family of plans reads at μ: its principal segment (p_v a, π a) at least
+    ``LEGIBLE_MM`` long, or its largest plan at least ``PLAN_MM`` across — where the crank pin's
+    vector is the plan's short one (a rocker swinging fast beside a short crank), p_v a that long
+    would draw every plan a sheet wide, one plan a sheet."""
+    if fam.drawn(mu) >= LEGIBLE_MM - 1e-9:
+        return True
+    k = fam.mu0 / mu
+    return max((max(gw, gh) * k for gw, gh, _, _ in fam.sizes), default=0.0) >= PLAN_MM - 1e-9
+
+
 def legible(nat: Natural, mu: dict[str, float]) -> bool:
-    """Whether the plans draw the crank pin's velocity and acceleration at least ``LEGIBLE_MM`` long."""
-    return nat.drawn("velocity", mu["velocity"]) >= LEGIBLE_MM - 1e-9 and (
-        nat.count["acceleration"] == 0 or nat.drawn("acceleration", mu["acceleration"]) >= LEGIBLE_MM - 1e-9)
+    """Whether the plans read (``readable``) at the scales ``mu``."""
+    return readable(nat.families["velocity"], mu["velocity"]) and (
+        nat.count["acceleration"] == 0 or readable(nat.families["acceleration"], mu["acceleration"]))
 
 
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float) -> list[list[Leaf]]:
@@ -233,11 +245,11 @@ def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
 
 
 def _legible(fam: Family) -> float:
-    """The coarsest standard μ at which the family's principal segment is drawn ``LEGIBLE_MM`` long."""
+    """The coarsest standard μ at which the family's plans read (``readable``)."""
     mu = fam.start(1.0)
-    while fam.drawn(mu) < LEGIBLE_MM - 1e-9:
+    while not readable(fam, mu):
         mu = finer(mu)
-    while fam.drawn(coarser(mu)) >= LEGIBLE_MM - 1e-9:
+    while readable(fam, coarser(mu)):
         mu = coarser(mu)
     return mu
 

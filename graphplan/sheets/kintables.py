@@ -52,12 +52,16 @@ def velocity_columns(doc: dict, precision: float) -> list[str]:
 def _cell(e: dict | None, precision: float, lang: str = "en") -> str:
     """A table's graphical value: the plan's reading (a vector read as 0 mm — a dead centre's
     velocity — is the number 0, as the terminal prints it); ω and ε signed by their sense
-    (+ counter-clockwise, the tables' headers say so); "—" only where there is no entry."""
+    (+ counter-clockwise, the tables' headers say so) and written to the figures of the vector they
+    are read from (report.plans.figures); "—" only where there is no entry."""
     if not e:
         return "—"
     value = e.get("value")
     if value is not None and e.get("sense") == "cw":
         value = -value
+    if e.get("sense") is not None:         # ω, ε: no finer than the vector they are read from
+        from graphplan.report.plans import figures
+        return number(value, figures(e.get("from_mm"), precision), lang=lang)
     return number(value, lang=lang)
 
 
