@@ -46,8 +46,8 @@ def test_the_diagrams_scales_are_named_apart_from_the_plans():
     assert "μ_ω = μ_φ/(μ_t·H_1)" in " ".join(scale_lines(rocker, "uk"))
 
 
-@pytest.mark.parametrize("mm, figs", [(2.0, 2), (23.0, 2), (23.4, 3), (61.5, 3), (123.5, 4), (123.0, 3),
-                                      (0.2, 2), (None, 4)])
+@pytest.mark.parametrize("mm, figs", [(2.0, 2), (23.0, 3), (23.4, 3), (61.5, 3), (123.5, 4), (123.0, 4),
+                                      (0.2, 2), (8.0, 2), (None, 4)])
 def test_figures_of_a_ruler_reading(mm, figs):
     assert figures(mm, 0.5) == figs
 

@@ -99,13 +99,15 @@ def symbol(e: Entry, kind: str) -> str:
 
 def figures(mm: float | None, precision: float = 0.5, most: int = 4) -> int:
     """The significant figures a value derived from one drawn length supports — ω = v_BA/l_AB from
-    the vector ab, ε from a^τ — the figures of the ruler's reading of that length (to ``precision``:
-    23 → 2, 23.5 → 3, 123.5 → 4), at least 2 and at most ``most`` (what the tables print of every
-    other value): ω is written no finer than the velocity it is read from. An exact ruler: ``most``."""
+    the vector ab, ε from a^τ — the figures of the ruler's reading of that length written to the
+    ruler's division (0.5 mm: 2.0 → 2, 23.0 → 3, 61.5 → 3, 123.5 → 4), at least 2 and at most
+    ``most`` (what the tables print of every other value): ω is written no finer than the velocity
+    it is read from. An exact ruler: ``most``."""
     if mm is None or not math.isfinite(mm) or mm <= 0 or precision <= 0:
         return most
     reading = round(abs(mm) / precision) * precision
-    digits = f"{reading:.3f}".rstrip("0").rstrip(".").replace(".", "").lstrip("0")
+    decimals = max(0, -math.floor(math.log10(precision) + 1e-9))     # 0.5 mm: one decimal, 42 → "42.0"
+    digits = f"{reading:.{decimals}f}".replace(".", "").lstrip("0")
     return max(2, min(most, len(digits)))
 
 
