@@ -394,6 +394,9 @@ def diagrams(scene=None, point: str | None = None, divisions: int | None = None,
         from graphplan.sheets.kinematics import sheet_scales     # as the A1 sheet draws them
         drawn = sheet_scales(st, "A1", precision=precision)
         options.update({k: drawn[k] for k in ("L", "H1", "H2", "height")})
+        if not {"point", "method", "correct", "adaptive", "tolerance"} & set(options) and point is None:
+            chosen = drawn["diagrams"]        # redrawn as the sheet redraws it (graphic.redraw)
+            options.update({k: chosen[k] for k in ("correct", "adaptive", "tolerance", "redrawn") if k in chosen})
     return Diagrams(chord_diagrams(st, point=point, divisions=divisions, precision=precision, lang=lang,
                                    **options), lang)
 

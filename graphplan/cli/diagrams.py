@@ -41,18 +41,28 @@ def cmd_diagrams(args) -> int:
             drawn = sheet_scales(st, args.format, None, None, args.precision)
         except PlansUndrawable:           # no sheet draws its plans: the diagrams at their own scales
             drawn = None
+    extra = {}
     if drawn is not None:
         sheet = {"L_mm": drawn["L"], "H1_mm": drawn["H1"], "H2_mm": drawn["H2"]}
         pick = lambda given, key, default: given if given is not None else sheet.get(key, scene.get(key, default))  # noqa: E731
         if args.height is None and args.divisions is None and args.L is None:
             args.height = drawn["height"]
+        # no option that shapes the drawing given: the diagrams exactly as the sheet draws them —
+        # redrawn, where the first drawing is qualitatively wrong, with what the lab allows
+        given = (args.point, args.divisions, args.L, args.h1, args.h2, args.method, args.angle_error)
+        if (all(g is None for g in given) and not (args.adaptive or args.correct) and args.tolerance == 0.5
+                and scene.get("method", "chords") == "chords"):
+            chosen = drawn["diagrams"]
+            extra = {"redrawn": chosen["redrawn"]}
+            args.adaptive, args.correct = chosen.get("adaptive", False), chosen.get("correct", False)
+            args.tolerance = chosen.get("tolerance", args.tolerance)
     d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),
                        L=pick(args.L, "L_mm", 240.0), H1=pick(args.h1, "H1_mm", 30.0),
                        H2=pick(args.h2, "H2_mm", 30.0),
                        precision=args.precision, adaptive=args.adaptive, height=args.height,
                        tolerance=args.tolerance, chosen=args.at, lang=lang,
                        method=pick(args.method, "method", "chords"), angle_error_deg=ANGLE_ERROR_DEG if args.angle_error is None else args.angle_error,
-                       correct=args.correct)
+                       correct=args.correct, **extra)
     if args.svg:
         write_atomic(args.svg, diagrams_svg(d))
     if args.json:

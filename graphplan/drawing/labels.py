@@ -25,8 +25,11 @@ Box = tuple[float, float, float, float]
 CLEAR = 0.5          # mm of paper between a label's ink and a line's ink when placing
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
 APART = 1.0          # mm between two labels' ink
+NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
+LINK_APART = 6.0     # … where one is a link's number (5 mm high: "2" 3 mm from "1" still reads "2 1")
+LINK_SIZE = 5.0      # mm: the height of a link's number (drawing.plans.link_numbers)
 DIRECTIONS = 16      # candidate directions around a point
-NEAR = (0.8, 1.5, 3.0)                    # mm from the point to the box: beside it
+NEAR = (0.8, 1.5, 3.0, 4.5)               # mm from the point to the box: beside it
 FAR = (5.0, 7.0, 9.5, 12.5, 16.0, 20.0, 25.0, 32.0)   # … farther out, with a leader
 
 
@@ -37,6 +40,8 @@ class Obstacles:
     half: np.ndarray        # (n,): half the line width
     boxes: list[Box]
     solid: list[Box]        # closed figures whose inside stays free of lettering (slider blocks)
+    numbers: list[Box] | None = None   # the boxes of labels that are numbers (a subset of boxes) …
+    big: list[Box] | None = None       # … of them, links' numbers
 
     def __post_init__(self) -> None:
         self._reach()
@@ -57,7 +62,8 @@ class Obstacles:
         def close(b: Box) -> bool:
             return b[2] > x - reach and b[0] < x + reach and b[3] > y - reach and b[1] < y + reach
         return Obstacles(self.segs[keep], self.half[keep], [b for b in self.boxes if close(b)],
-                         [b for b in self.solid if close(b)])
+                         [b for b in self.solid if close(b)], [b for b in self.numbers or [] if close(b)],
+                         [b for b in self.big or [] if close(b)])
 
     def add_segment(self, a, b, half: float) -> None:
         self.segs = np.vstack([self.segs, [[a[0], a[1], b[0], b[1]]]])
@@ -99,17 +105,21 @@ def strokes(p: Primitive) -> list[tuple[tuple[float, float], tuple[float, float]
 
 def obstacles(items: list[Primitive]) -> Obstacles:
     """What a new label must keep clear of, from the primitives already drawn."""
-    segs, half, boxes, solid = [], [], [], []
+    segs, half, boxes, solid, numbers, big = [], [], [], [], [], []
     for p in items:
         if p.kind == "text":
             boxes.append(p.ink())
+            if is_number(p.text or ""):
+                numbers.append(boxes[-1])
+                if p.size >= LINK_SIZE:
+                    big.append(boxes[-1])
             continue
         for a, b, hw in strokes(p):
             segs.append((a[0], a[1], b[0], b[1]))
             half.append(hw)
         if p.kind == "polygon":
             solid.append(p.bounds())
-    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid)
+    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid, numbers, big)
 
 
 def _hits(ob: Obstacles, box: Box, clear: float) -> list[int]:
@@ -158,9 +168,21 @@ def _segment_meets_box(a: complex, b: complex, box: Box) -> bool:
     return _clips(a.real, a.imag, b.real, b.imag, *box)
 
 
-def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR) -> np.ndarray:
+def is_number(text: str) -> bool:
+    """Whether a label is a number (a position's, a link's; primes allowed: 0', 12'')."""
+    return text.rstrip("'").isdigit()
+
+
+def _number(req: LabelRequest) -> float:
+    """A request's height where its text is a number (what ``_counts`` keeps numbers apart by), else 0."""
+    return req.size if is_number(req.text) else 0.0
+
+
+def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR, number: float = 0.0) -> np.ndarray:
     """For each candidate box (m, 4): how many lines (within ``clear`` + half their width), labels
-    (within ``APART``) and closed figures it would touch — all candidates at once."""
+    (within ``APART``; a number's — ``number`` its height, 0 for a word — within ``NUMBERS_APART`` of
+    another number's, ``LINK_APART`` where either is a link's) and closed figures it would touch —
+    all candidates at once."""
     m = len(boxes)
     out = np.zeros(m, dtype=int)
     bx0, by0, bx1, by1 = (boxes[:, i:i + 1] for i in range(4))
@@ -185,7 +207,10 @@ def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR) -> np.ndarra
                     t0 = np.where(~zero & (p < 0), np.maximum(t0, r), t0)
                     t1 = np.where(~zero & (p > 0), np.minimum(t1, r), t1)
             np.add.at(out, ci[ok & (t0 <= t1)], 1)
-    for group, apart in ((ob.boxes, APART), (ob.solid, 0.0)):
+    groups = [(ob.boxes, APART), (ob.solid, 0.0)]
+    if number:
+        groups += [(ob.numbers, LINK_APART if number >= LINK_SIZE else NUMBERS_APART), (ob.big, LINK_APART)]
+    for group, apart in groups:
         if group:
             q = np.asarray(group, dtype=float)
             hit = ((bx0 < q[None, :, 2] + apart) & (q[None, :, 0] < bx1 + apart)
@@ -263,13 +288,17 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
             ob.add_segment((a.real, a.imag), (b.real, b.imag), 0.125)
         record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
         ob.boxes.append(box)
+        if is_number(req.text):
+            ob.numbers = (ob.numbers or []) + [box]
+            if req.size >= LINK_SIZE:
+                ob.big = (ob.big or []) + [box]
     return record
 
 
 def _near(ob: Obstacles, req: LabelRequest, ink: Box):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
-    boxes, starts = _candidates(req, ink, gaps, DIRECTIONS)
-    free = np.nonzero(_counts(ob, boxes) == 0)[0]
+    boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
+    free = np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]
     if len(free):
         k = int(free[0])
         return tuple(boxes[k]), complex(starts[k]), None
@@ -279,7 +308,7 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     """A free spot farther out, joined to the point by a leader that crosses no label."""
     boxes, starts = _candidates(req, ink, FAR, 2 * DIRECTIONS)
-    for k in np.nonzero(_counts(ob, boxes) == 0)[0]:
+    for k in np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]:
         box = tuple(boxes[k])
         a, b = _leader(req.at, box)
         if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
@@ -311,7 +340,7 @@ def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
     spots.sort(key=lambda c: abs(c - at))
     for c in spots:
         box = (c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2)
-        if _counts(ob, np.asarray([box])).item():
+        if _counts(ob, np.asarray([box]), number=_number(req)).item():
             continue
         a, b = _leader(at, box)
         if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
@@ -324,7 +353,7 @@ def _least(ob: Obstacles, req: LabelRequest, ink: Box):
     """The spot that touches the fewest lines and labels (nothing free anywhere)."""
     boxes, starts = _candidates(req, ink, NEAR + FAR, DIRECTIONS)
     gaps = np.repeat(np.asarray(NEAR + FAR), DIRECTIONS)
-    k = int(np.argmin(_counts(ob, boxes) + 0.01 * gaps))
+    k = int(np.argmin(_counts(ob, boxes, number=_number(req)) + 0.01 * gaps))
     box = tuple(boxes[k])
     return box, complex(starts[k]), (_leader(req.at, box) if gaps[k] >= FAR[0] else None)
 

@@ -212,14 +212,15 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
         if lay.key in thick_keys:
             draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
     labels: list[LabelRequest] = []
-    # letters at the first thick position
+    # letters at the first thick position, placed first: each beside its point (a link's number,
+    # placed after them, may go a little farther along its bar)
     lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
     pts = joints_at(sc, lay)
-    labels += link_numbers(sc, lay, pts)
-    labels += omega_arrow(rec, O, r, mech.omega1)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
+    labels += omega_arrow(rec, O, r, mech.omega1)
+    labels += link_numbers(sc, lay, pts)
     # numbers of the positions at the crank pin, the output point and the groups' inner joints
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
     for p in plans.positions:

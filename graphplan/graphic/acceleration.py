@@ -35,7 +35,7 @@ class AccelerationPlan(Plan):
         if cr.epsilon:
             self.crank_items = [i for i in (self.vector(0j, n, "normal", step),
                                             self.vector(n, n + t, "tangential", step)) if i is not None]
-            self.name_point(self.end_label("n"), n)
+            self.name_point(self.end_label("n", cr.link), n)
         self.images[cr.link] = Image.through(O, 0j, A, n + t)
         self.rates[cr.link], self.basis[cr.link] = cr.epsilon, abs(cr.epsilon) * cr.length
 
@@ -63,7 +63,7 @@ def normal_and_tangent(plan: AccelerationPlan, link: str, p: str, X: complex, ap
     """a_C = a_P + a^n_CP (v_CP²/l, ∥ CP toward P) + a^τ_CP (⊥ CP): the known part of one equation."""
     n = plan.normal(plan.vel.plan_point(link, c) - plan.vel.plan_point(link, p), length, X - XC)
     step_keys.append((link, p, X, n, length))
-    return Equation(ap, 1j * (XC - X), "tangential", [(n, "normal", plan.end_label("n"), f"n_{c}{p}")],
+    return Equation(ap, 1j * (XC - X), "tangential", [(n, "normal", plan.end_label("n", link), f"n_{c}{p}")],
                     name=plan.known(p), term=f"a^τ_{c}{p}", rule=("perp", f"{c}{p}"))
 
 
@@ -169,7 +169,7 @@ def acceleration_rpr(plan: AccelerationPlan, d: Dyad) -> None:
     e1 = slide_equation(plan, carrier, Xs, a_s, rel_v, g, key, name=plan.known(ps))
     length = vel.rocker_length[carrier]
     n = plan.normal(vel.images[carrier].at(Xs) - vel.plan_point(Kc, pc), length, Xc - Xs)
-    e2 = Equation(a_c, 1j * (Xs - Xc), "tangential", [(n, "normal", plan.end_label("n"), f"n_{a3}{pc}")],
+    e2 = Equation(a_c, 1j * (Xs - Xc), "tangential", [(n, "normal", plan.end_label("n", carrier), f"n_{a3}{pc}")],
                   name=plan.known(pc), term=f"a^τ_{a3}{pc}", rule=("perp", f"{pc}{ps}"))
     step = f"a_{a3} = a_{a2} + a^k_{key} + a^r_{key} = a_{pc} + a^n_{a3}{pc} + a^τ_{a3}{pc}"
     x3 = plan.solve(d.label, sub(a3), e1, e2, step)

@@ -60,10 +60,12 @@ class Reading:
     s_int_v: np.ndarray  # integration of the v ordinates straight back to s, n + 1
 
 
-def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
-              precision: float, correct: bool = False) -> Reading:
-    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm. ``correct``: the
-    lab's area correction of each French curve (graphic.correction), v and a then read on it."""
+def differentiate(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float, precision: float,
+                  correct: bool = False) -> tuple[np.ndarray, ...]:
+    """The two differentiations by chords (seed 002, fig. 2.5), in mm: s read, the rays' heights and
+    the v read at the middles, the v curve read at the division ordinates, the same for a.
+    ``correct``: the lab's area correction of each French curve (graphic.correction), v and a then
+    read on it. Returns (s, v_ray, v, v_at, a_ray, a)."""
     xm = midpoints(x)
     s = read(s_mm, precision)
     v_ray = pole_heights(x, s, H1)
@@ -76,6 +78,15 @@ def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
     a = read(a_ray, precision)
     if correct:
         a = read(area_correction(x, a, L, precision).points, precision)
+    return s, v_ray, v, v_at, a_ray, a
+
+
+def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
+              precision: float, correct: bool = False) -> Reading:
+    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm: ``differentiate``,
+    the a curve read at the division ordinates, and the graphical integration back."""
+    xm = midpoints(x)
+    s, v_ray, v, v_at, a_ray, a = differentiate(x, s_mm, L, H1, H2, precision, correct)
     a_at = read(periodic_spline(xm, a, L)(x), precision)
     # graphical integration, the reverse construction: a → v from v(0), then v → s from s(0)
     v_int = integrate_by_chords(x, a, H2, v_at[0])
@@ -125,6 +136,7 @@ class Diagrams:
     method: str = "chords"
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
+    redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -275,7 +287,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                    adaptive: bool = False, height: float | None = None, *,
                    tolerance: float = 0.5, chosen: Sequence[int] | None = None,
                    lang: str = "uk", method: str = "chords", angle_error_deg: float = ANGLE_ERROR_DEG,
-                   correct: bool = False, seed: int = SEED) -> Diagrams:
+                   correct: bool = False, seed: int = SEED, redrawn: Any = None) -> Diagrams:
     """The s, v, a diagrams of the output (or ``point``: a sliding point or a link) by chords.
 
     ``divisions``: a number of equal intervals (default: the scene's positions count) or the crank
@@ -283,7 +295,8 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     the chord error estimate exceeds ``tolerance`` mm. ``height``: fit the s diagram to this many mm.
     ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn).
     ``method``: "chords" (``correct``: the lab's area correction) or "tangents" (each tangent off by
-    up to ``angle_error_deg``, deterministic from ``seed``; see graphic.tangents)."""
+    up to ``angle_error_deg``, deterministic from ``seed``; see graphic.tangents). ``redrawn``: what
+    graphic.redraw changed to make these options (kept for the notes and the JSON)."""
     _check_positive(L=L, H1=H1, H2=H2, tolerance=tolerance)
     if method not in METHODS:
         raise GraphplanError(f"--method must be chords or tangents, got {method!r}")
@@ -349,7 +362,8 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                  bool(adaptive), float(tolerance), mu_s, mu_t, mu_v, mu_a, turns, position, x,
                  crank_angle(st, turns), crank_angle(st, own), drawn, exact, truth, maxima,
                  chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
-                 angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct))
+                 angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct),
+                 redrawn=redrawn)
     d.warnings = diagnose(d)
     return d
 

@@ -232,9 +232,18 @@ class Plan:
     def name_point(self, label: str, at: complex) -> None:
         self.named.setdefault(label, at)
 
-    def end_label(self, letter: str) -> str:
-        self.ends[letter] += 1
-        return sub(f"{letter}{self.ends[letter]}")
+    def end_label(self, letter: str, link: str | None = None) -> str:
+        """The letter of a component's end on the plan: by the link it belongs to (n2: the normal
+        component of link 2's rotation; a second one of the same link n2′), else numbered in the
+        order of drawing."""
+        if link is None:
+            self.ends[letter] += 1
+            return sub(f"{letter}{self.ends[letter]}")
+        number = self.sc.mech.links[link].number
+        key = f"{letter}{number}"
+        seen = self.ends.setdefault(key, 0)
+        self.ends[key] = seen + 1
+        return sub(key) + "′" * seen
 
     def direction_line(self, through: complex, found: complex, direction: complex, step: str) -> int:
         """A thin line along ``direction`` through the known end, reaching past the intersection;
@@ -262,7 +271,7 @@ class Plan:
             chain = []
             for vec, role, label, _key in eq.chain:
                 chain.append(self.vector(at, at + vec, role, step))
-                if label and abs(vec) > 0.3:
+                if label:                 # a short one shares its start's label ("b, n3")
                     self.name_point(label, at + vec)
                 at = at + vec
             line = self.direction_line(eq.end, x, eq.direction, step)

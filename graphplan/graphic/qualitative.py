@@ -37,11 +37,9 @@ def extrema(turn: np.ndarray, y: np.ndarray, visible: float) -> list[Feature]:
     if nz.size == 0:
         return []
     # a change of the slope's sign between consecutive non-flat steps: an extremum at the sample after
-    cand = []
-    for j, k in zip(nz, np.roll(nz, -1)):
-        if sign[j] != sign[k]:
-            at = (j + 1) % len(y)
-            cand.append(("max" if sign[j] > 0 else "min", at))
+    nxt = np.roll(nz, -1)
+    turning = nz[sign[nz] != sign[nxt]]
+    cand = sorted((("max" if sign[j] > 0 else "min"), int((j + 1) % len(y))) for j in turning)
     cand.sort(key=lambda c: c[1])
     while len(cand) > 2:
         swings = [abs(y[cand[i][1]] - y[cand[(i + 1) % len(cand)][1]]) for i in range(len(cand))]
@@ -57,25 +55,35 @@ def extrema(turn: np.ndarray, y: np.ndarray, visible: float) -> list[Feature]:
 
 def zero_crossings(turn: np.ndarray, y: np.ndarray, visible: float, period: float = 360.0) -> list[Feature]:
     """Visible zero crossings of a periodic curve: the sign flips only past ±``visible``; each is
-    placed where the curve last crossed zero on the way (linear interpolation between samples)."""
+    placed where the curve last crossed zero on the way (linear interpolation between samples).
+
+    Walking once round from the first sample beyond ±visible: a zero event is a step whose sign
+    changes (from a non-zero sample) or that lands on 0; a crossing is a sample beyond ±visible whose
+    sign differs from the last such sample's, placed at the last zero event before it."""
+    y = np.asarray(y, dtype=float)
+    turn = np.asarray(turn, dtype=float)
     n = len(y)
     definite = np.flatnonzero(np.abs(y) >= visible)
     if definite.size == 0:
         return []
     start = int(definite[0])
+    k = (start + np.arange(1, n + 1)) % n           # the walk: each step's sample and the one before
+    prev = (k - 1) % n
+    yk, yp = y[k], y[prev]
+    event = ((yp != 0) & (np.sign(yp) != np.sign(yk))) | (yk == 0)
+    with np.errstate(all="ignore"):
+        frac = np.where(yp != yk, yp / (yp - yk), 0.0)
+    at = (turn[prev] + frac * ((turn[k] - turn[prev]) % period)) % period
+    steps = np.flatnonzero(np.abs(yk) >= visible)  # the definite samples on the walk, in order
+    signs = np.sign(yk[steps])
+    before = np.concatenate(([np.sign(y[start])], signs[:-1]))
+    flips = steps[signs != before]
+    events = np.flatnonzero(event)
     out: list[Feature] = []
-    last_sign = np.sign(y[start])
-    last_zero = None
-    for step in range(1, n + 1):
-        k = (start + step) % n
-        prev = (k - 1) % n
-        if y[prev] != 0 and np.sign(y[prev]) != np.sign(y[k]) or y[k] == 0:
-            frac = y[prev] / (y[prev] - y[k]) if y[prev] != y[k] else 0.0
-            t0 = turn[prev] + frac * ((turn[k] - turn[prev]) % period)
-            last_zero = float(t0 % period)
-        if abs(y[k]) >= visible and np.sign(y[k]) != last_sign:
-            out.append(Feature("up" if y[k] > 0 else "down", last_zero if last_zero is not None else float(turn[k])))
-            last_sign = np.sign(y[k])
+    for step in flips:
+        last = np.searchsorted(events, step, side="right") - 1
+        where = float(at[events[last]]) if last >= 0 else float(turn[k[step]])
+        out.append(Feature("up" if yk[step] > 0 else "down", where))
     return sorted(out, key=lambda f: f.turn)
 
 
@@ -117,6 +125,24 @@ def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: floa
     return Verdict(se, me, sz, mz)
 
 
+def sample_turns(samples: int = 720) -> np.ndarray:
+    """The crank turns (deg, one period, no closing sample) both curves are compared at."""
+    return np.arange(samples) * 360.0 / samples
+
+
+def window_of(turns: np.ndarray) -> float:
+    """How far (deg) a drawn feature may lie from the exact one: one division interval, the longest."""
+    return float(np.max(np.diff(turns)))
+
+
+def of_ordinates(turn: np.ndarray, x_at: np.ndarray, ordinates: np.ndarray, L: float, truth: np.ndarray,
+                 window: float, visible: float) -> Verdict:
+    """The verdict on a diagram drawn as the French curve (periodic spline over L mm) through the
+    ``ordinates`` at abscissae ``x_at``, against the exact curve ``truth`` (mm) at ``turn``."""
+    from graphplan.graphic.chords import periodic_spline
+    return compare(turn, periodic_spline(x_at, ordinates, L)(L * turn / 360.0), truth, window, visible)
+
+
 KIND_WORDS = {"en": {"max": "max", "min": "min", "up": "rising", "down": "falling"},
               "uk": {"max": "макс.", "min": "мін.", "up": "зростає", "down": "спадає"}}
 
@@ -125,22 +151,18 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
     """Warnings (kind "qualitative") for the v and a diagrams of ``d`` (graphic.diagrams.Diagrams) whose French curves have
     extrema or zero crossings the exact curves lack, or miss some they have; positions as crank
     angles φ (deg). None when both diagrams are qualitatively right."""
-    from graphplan.graphic.chords import periodic_spline
     from graphplan.exact.positions import crank_angle, exact_motion
-    turn = np.arange(samples) * 360.0 / samples
-    x = d.L * turn / 360.0
+    turn = sample_turns(samples)
     _, v, a = exact_motion(d.study, d.output, turn)
-    window = float(np.max(np.diff(d.turn)))
-    visible = max(VISIBLE_MM, d.precision)
+    window, visible = window_of(d.turn), max(VISIBLE_MM, d.precision)
     out: list[dict[str, Any]] = []
     for sym, key, exact, mu in ((d.symbols[1], "v", v, d.mu_v), (d.symbols[2], "a", a, d.mu_a)):
         truth = d.sign * exact / mu
-        drawn = periodic_spline(d.x_mid, getattr(d.drawn, key), d.L)(x)
-        verdict = compare(turn, drawn, truth, window, visible)
+        verdict = of_ordinates(turn, d.x_mid, getattr(d.drawn, key), d.L, truth, window, visible)
         if not verdict.wrong:
             continue
         # the cause: the method's own error if the exact drawing is wrong too, else the drafting's
-        own = compare(turn, periodic_spline(d.x_mid, getattr(d.exact, key), d.L)(x), truth, window, visible).wrong
+        own = of_ordinates(turn, d.x_mid, getattr(d.exact, key), d.L, truth, window, visible).wrong
         entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method,
                                  "cause": "method" if own else "drafting"}
         parts = {"en": [], "uk": []}

@@ -77,6 +77,7 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
             "a_estimate_mm": [float(e) for e in d.estimate["a_mm"]]},
         "ruler": None if (ruler := ruler_effect(d)) is None else {k: _num(x) for k, x in ruler.items()},
         "integration": integration,
+        "redrawn": None if d.redrawn is None else d.redrawn.to_json(),
         "warnings": [{k: (float(x) if isinstance(x, (np.floating,)) else x) for k, x in w.items()}
                      for w in d.warnings],
     }
@@ -88,8 +89,46 @@ def sheet_notes(d: Diagrams, lang: str) -> list[str]:
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {d.point}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
+    said = redrawn_note(d, lang)
+    lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
     return lines
+
+
+def redrawn_note(d: Diagrams, lang: str) -> str | None:
+    """What graphic.redraw did, in one line (markup): the options the diagrams were redrawn with so
+    that they are qualitatively right, or that nothing the lab allows made them so. None where the
+    first drawing was right."""
+    rd = d.redrawn
+    if rd is None or not rd.wrong_before:
+        return None
+    uk = lang == "uk"
+    syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
+    mm = unit("mm", lang)
+    if not rd.right:
+        return (f"{syms}: жодне перекреслення, яке дозволяє лабораторна (корекція площ, H_{{1}}, H_{{2}} від 15 до "
+                f"50 {mm}, довша L, менші інтервали), тут не робить діаграму якісно правильною" if uk else
+                f"{syms}: no redrawing the lab allows (the area correction, H_{{1}}, H_{{2}} from 15 to 50 {mm}, a "
+                "longer L, smaller intervals) makes the diagram qualitatively right here")
+    parts = []
+    for key, value in rd.changed.items():
+        was = rd.first.get(key)
+        if key in ("H1", "H2", "L"):
+            name = {"H1": "H_{1}", "H2": "H_{2}", "L": "L"}[key]
+            parts.append(f"{name} = {num(value, lang, 3)} {mm} " + (f"(не {num(was, lang, 3)})" if uk else
+                                                                    f"(not {num(was, lang, 3)})"))
+        elif key == "correct":
+            parts.append("з корекцією площ" if uk else "with the area correction")
+        elif key == "adaptive":
+            parts.append(f"менші інтервали там, де крива згинається ({d.divisions} поділок)" if uk else
+                         f"smaller intervals where the curve bends ({d.divisions} divisions)")
+    many = len(rd.wrong_before) > 1
+    how = ", ".join(parts)
+    if uk:
+        return (f"Діаграми {syms} перекреслено: {how} — перші мали екстремуми чи нулі, яких немає в русі" if many
+                else f"Діаграму {syms} перекреслено: {how} — перша мала екстремуми чи нулі, яких немає в русі")
+    return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema or zero crossings "
+            "the motion lacks")
 
 
 def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]:
@@ -167,6 +206,9 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         lines.append(f"  {w(key.replace('_', ' '))}: " + w("deviation", mm=fixed(float(np.max(np.abs(dev))), lang, 2),
                                                              pct=fixed(float(100 * np.max(np.abs(dev)) / mx), lang, 2),
                                                              cl=fixed(float(dev[-1]), lang, 2, plus=True)))
+    said = redrawn_note(d, lang)
+    if said:
+        lines += ["", plain(said)]
     lines.append("")
     lines.append(w("warnings") + ":" + ("" if d.warnings else " " + w("none")))
     for item in d.warnings:

@@ -2,6 +2,8 @@
 plans themselves as SVG files in true millimetres."""
 from __future__ import annotations
 
+import math
+
 from typing import Any
 
 from graphplan.graphic.record import Record
@@ -95,6 +97,25 @@ def symbol(e: Entry, kind: str) -> str:
     return f"{letter}_{e.key}"
 
 
+def figures(mm: float | None, precision: float = 0.5, most: int = 4) -> int:
+    """The significant figures a value derived from one drawn length supports — ω = v_BA/l_AB from
+    the vector ab, ε from a^τ — the figures of the ruler's reading of that length written to the
+    ruler's division (0.5 mm: 2.0 → 2, 23.0 → 3, 61.5 → 3, 123.5 → 4), at least 2 and at most
+    ``most`` (what the tables print of every other value): ω is written no finer than the velocity
+    it is read from. An exact ruler: ``most``."""
+    if mm is None or not math.isfinite(mm) or mm <= 0 or precision <= 0:
+        return most
+    reading = round(abs(mm) / precision) * precision
+    decimals = max(0, -math.floor(math.log10(precision) + 1e-9))     # 0.5 mm: one decimal, 42 → "42.0"
+    digits = f"{reading:.{decimals}f}".replace(".", "").lstrip("0")
+    return max(2, min(most, len(digits)))
+
+
+def rate(e: Entry, mu: float, lang: str, precision: float = 0.5) -> str:
+    """ω or ε as the tables print it: signed, to the figures of the vector it is read from."""
+    return num(signed(e), lang, figures(e.basis / mu if mu else None, precision))
+
+
 def signed(e: Entry) -> float:
     """ω and ε keep their sign in the tables; vectors are magnitudes."""
     return e.vector.real if e.kind in ("omega", "epsilon") else e.value
@@ -123,7 +144,8 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
     lines += [w("velocities read"), row([w("no"), "φ, °"] + heads)]
     for p in plans.positions:
         lines.append(row([label(p), fixed(p.phi % 360, lang, 2)] +
-                         [n(signed(p.velocity.entries[k])) for k in keys]))
+                         [rate(e, plans.mu_v, lang, plans.precision) if e.kind == "omega" else n(signed(e))
+                          for e in (p.velocity.entries[k] for k in keys)]))
     lines += ["", w("errors exact"), row([w("no"), "φ, °"] + heads)]
     for p in plans.positions:
         cells = [pct(p.velocity.entries[k].error_pct, lang) for k in keys]
@@ -140,7 +162,8 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
         for e in ordered(acc):
             mm = "" if e.mm is None else fixed(e.mm, lang, 1)
             exact = e.exact.real if e.kind in ("omega", "epsilon") else e.analytic
-            lines.append(f"{plain(symbol(e, 'acceleration')):>12}  {mm:>7}  {n(signed(e)):>10}  "
+            value = rate(e, plans.mu_a, lang, plans.precision) if e.kind == "epsilon" else n(signed(e))
+            lines.append(f"{plain(symbol(e, 'acceleration')):>12}  {mm:>7}  {value:>10}  "
                          f"{n(exact):>10}  {pct(e.error_pct, lang):>9}")
     lines += ["", w("warnings") + ":"]
     warned = False

@@ -1,0 +1,189 @@
+"""Diagrams redrawn until they are qualitatively right, as a student redraws them (seed 002).
+
+A diagram whose French curve has extrema or zero crossings the motion lacks (or misses some it has:
+graphic.qualitative) is not handed in: the student redraws it with what the lab allows — the area
+correction of the chords (graphic.correction: only the curves are drawn again), other pole distances
+(H1, H2 within the lab's 15–50 mm: a taller diagram, the ruler's half division a smaller share of
+it), a longer abscissa L (where the sheet has room), smaller intervals where the curve bends
+(``refine``, the adaptive mode). ``redraw`` tries them in that order, cheapest first, and takes the
+first drawing whose v and a diagrams are both qualitatively right; where none is, the first drawing
+stays and its note with it.
+
+A candidate is judged on the diagram alone — the construction (``construct``) and the qualitative
+comparison (``qualitative.of_ordinates``), the exact motion sampled once — a few milliseconds each,
+not a sheet."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Iterator
+
+import numpy as np
+
+from graphplan.exact.positions import exact_motion
+from graphplan.graphic import qualitative
+from graphplan.graphic.chords import midpoints
+from graphplan.graphic.diagrams import CYCLE, choose_mu_s, differentiate, division_turns, refine, resolve_output
+
+LAB_POLES = (15.0, 50.0)    # mm: the pole distances H1, H2 the lab manual allows
+POLE_STEP = 5.0             # mm: a pole distance is tried larger in these steps
+LONGER = (1.25, 1.5, 2.0)   # L tried this many times longer, up to the longest the sheet allows
+CORRECTED_PAIRS = 16        # the nearest pole pairs tried with the correction too (it is the costly one)
+FINER = 0.25                # mm: the adaptive mode's tolerance tried after its default (0.5 mm)
+
+
+@dataclass(frozen=True)
+class Redrawing:
+    """What ``redraw`` chose: the options changed from the first drawing (``chord_diagrams``
+    keywords: ``correct``, ``H1``, ``H2``, ``L``, ``adaptive``, ``tolerance``), the first drawing's
+    and the chosen drawing's qualitatively wrong diagrams ("v", "a"), the candidates tried."""
+    changed: dict[str, Any] = field(default_factory=dict)
+    wrong_before: tuple[str, ...] = ()
+    wrong_after: tuple[str, ...] = ()
+    tried: int = 0
+    first: dict[str, Any] = field(default_factory=dict)   # the first drawing's values of the changed keys
+
+    @property
+    def right(self) -> bool:
+        return not self.wrong_after
+
+    def to_json(self) -> dict[str, Any]:
+        return {"changed": dict(self.changed), "before": dict(self.first), "wrong_before": list(self.wrong_before),
+                "wrong_after": list(self.wrong_after), "tried": self.tried}
+
+
+class Probe:
+    """The exact motion of one output sampled once — the division ordinates' s and the comparison's
+    v, a — on which drawings of different L, H1, H2, correction and divisions are tried."""
+
+    def __init__(self, st, point: str | None, divisions, precision: float) -> None:
+        self.st = st
+        self.out, _, _, _, self.unit = resolve_output(st, point)
+        self.turns = division_turns(st.mech.task.count if divisions is None else divisions)
+        cycle = np.arange(CYCLE + 1) * 360.0 / CYCLE
+        s_c = exact_motion(st, self.out, cycle)[0]
+        growth, self.s_range = s_c[-1] - s_c[0], float(np.ptp(s_c))
+        rotating = abs(growth) > 1e-9 * max(self.s_range, 1e-300)
+        self.sign = int(np.sign(growth)) if rotating else (1 if np.mean(s_c) >= 0 else -1)
+        self.s = exact_motion(st, self.out, self.turns)[0]
+        self.sample = qualitative.sample_turns()
+        _, self.v, self.a = exact_motion(st, self.out, self.sample)
+        self.precision = precision
+        self.omega = abs(st.mech.omega1)
+
+    def wrong(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
+              tolerance: float = 0.5, height: float | None = None, all_of: bool = True) -> tuple[str, ...]:
+        """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
+        ``chord_diagrams`` would report them (the same construction, ruler and comparison);
+        ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
+        turns, s = self.turns, self.s
+        mu_s = choose_mu_s(self.st, self.unit, self.s_range, height)
+        if adaptive:
+            turns = refine(self.st, self.out, turns, self.sign, mu_s, L, H1, H2, tolerance, self.precision)
+            if len(turns) != len(self.turns):
+                s = exact_motion(self.st, self.out, turns)[0]
+        x = L * turns / 360.0
+        _, _, v, _, _, a = differentiate(x, self.sign * s / mu_s, L, H1, H2, self.precision, correct)
+        mu_t = 2 * math.pi / (self.omega * L)
+        mu_v = mu_s / (mu_t * H1)
+        mu_a = mu_v / (mu_t * H2)
+        window, visible = qualitative.window_of(turns), max(qualitative.VISIBLE_MM, self.precision)
+        xm = midpoints(x)
+        wrong = []
+        for key, ordinates, exact, mu in (("v", v, self.v, mu_v), ("a", a, self.a, mu_a)):
+            if qualitative.of_ordinates(self.sample, xm, ordinates, L, self.sign * exact / mu, window, visible).wrong:
+                wrong.append(key)
+                if not all_of:
+                    break
+        return tuple(wrong)
+
+
+POLE_MENU = tuple(float(h) for h in range(15, 51, 5))   # mm: the pole distances a redrawing takes (the lab's 15–50)
+
+
+def _larger(h: float, top: float) -> list[float]:
+    """The menu's pole distances above ``h`` up to ``top``."""
+    return [p for p in POLE_MENU if h + 1e-9 < p <= top + 1e-9]
+
+
+def candidates(L: float, H1: float, H2: float, wrong: tuple[str, ...], poles=LAB_POLES,
+               longest: float | None = None, fixed: frozenset[str] = frozenset(), height: float | None = None,
+               tallest: float | None = None) -> Iterator[dict[str, Any]]:
+    """The redrawings in the order a student tries them, each a dict of changed options:
+
+    1. the area correction (the curves alone drawn again);
+    2. the pole distance of the wrong diagram larger (H2 for a, H1 for v — H1 scales the v diagram
+       and so the curve a starts from), step by step to the lab's largest, then both;
+    3. a longer L (up to ``longest``) and the s diagram as high or taller in proportion (up to
+       ``tallest``: a finer μs), the pole distances as they are (the diagrams flatter) and grown with
+       it (the diagrams as tall), with and without the correction;
+    4. smaller intervals where the curve bends (the adaptive mode, then a finer tolerance);
+    5. any other pair of pole distances from the menu (15–50 mm), nearest the first drawing's first,
+       the nearest ``CORRECTED_PAIRS`` also with the correction — the ruler's readings fall
+       differently on each.
+
+    ``fixed``: options the scene gives (H1, H2, L), not changed."""
+    lo, top = poles
+    yield {"correct": True}
+    first = ("H1",) if wrong == ("v",) else ("H2", "H1")
+    for key in first:
+        if key in fixed:
+            continue
+        for h in _larger(H1 if key == "H1" else H2, top):
+            yield {key: h}
+    if not {"H1", "H2"} & fixed:
+        for h in _larger(min(H1, H2), top):
+            yield {"H1": max(H1, h), "H2": max(H2, h)}
+    if longest is not None and "L" not in fixed:
+        for f in sorted({f for f in LONGER if L * f <= longest + 1e-9} | ({longest / L} if longest > L + 1e-9 else set())):
+            grown = {} if {"H1", "H2"} & fixed else {"H1": min(top, H1 * f), "H2": min(top, H2 * f)}
+            taller = ({"height": min(tallest, height * f)} if height is not None and tallest is not None
+                      and height < tallest - 1e-9 else {})
+            for size in ({}, taller) if taller else ({},):
+                for poles_ in ({}, grown):
+                    yield {"L": L * f, **size, **poles_}
+                    yield {"L": L * f, **size, **poles_, "correct": True}
+    for extra in ({}, {"correct": True}):
+        yield {"adaptive": True, **extra}
+        yield {"adaptive": True, "tolerance": FINER, **extra}
+    if {"H1", "H2"} & fixed:
+        return
+    menu = [h for h in POLE_MENU if lo - 1e-9 <= h <= top + 1e-9]
+    pairs = sorted(((h1, h2) for h1 in menu for h2 in menu),
+                   key=lambda p: (abs(p[0] - H1) + abs(p[1] - H2), p))
+    for h1, h2 in pairs:
+        yield {"H1": h1, "H2": h2}
+    for h1, h2 in pairs[:CORRECTED_PAIRS]:
+        yield {"H1": h1, "H2": h2, "correct": True}
+
+
+def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
+           fixed: frozenset[str] = frozenset(), tallest: float | None = None,
+           fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
+    """The options of a qualitatively right drawing: ``options`` (``chord_diagrams`` keywords: point,
+    divisions, L, H1, H2, height) as given where that drawing is right, else the first candidate
+    (``candidates``; each tried once) that is and that ``fits`` (the caller's room: a right drawing too
+    large for it is passed over); none: ``options`` unchanged (their warnings stay). Returns the
+    options and what was done."""
+    probe = Probe(st, options.get("point"), options.get("divisions"), precision)
+    L, H1, H2 = float(options["L"]), float(options["H1"]), float(options["H2"])
+    base = {"L": L, "H1": H1, "H2": H2, "correct": bool(options.get("correct", False)),
+            "adaptive": bool(options.get("adaptive", False)), "tolerance": float(options.get("tolerance", 0.5)),
+            "height": options.get("height")}
+    wrong = probe.wrong(**base)
+    if not wrong:
+        return dict(options), Redrawing()
+    seen = {tuple(sorted(base.items()))}
+    for change in candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest):
+        trial = {**base, **change}
+        key = tuple(sorted(trial.items()))
+        if key in seen:
+            continue
+        seen.add(key)
+        if not probe.wrong(**trial, all_of=False):
+            change = {k: v for k, v in change.items() if trial[k] != base[k]}
+            if fits is not None and not fits({**options, **change}):
+                continue
+            return ({**options, **change},
+                    Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}))
+    return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1)

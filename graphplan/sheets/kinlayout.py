@@ -1,0 +1,329 @@
+"""The kinematics sheet composed by arithmetic (docs/composition.md, LAYOUT.md): the drawings' natural
+sizes measured once at trial scales (``Natural``), then the largest standard scales at which the
+position plan, the diagrams, the velocity and acceleration plans and the tables' column fit the zones
+of one sheet (``one_sheet``: four shapes of zones, the grids' columns, the tables' parts), or, where one
+sheet cannot hold the plans legibly, the fewest sheets of a set (``set_of_sheets``). Nothing is drawn
+here: the drawings come from sheets/kinematics.py's Drafter."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
+from graphplan.graphic.record import Record
+from graphplan.sheets.compose import Family, choose_levels, coarser, field_of, finer, notes_height
+from graphplan.sheets.form import TABLES, Form
+from graphplan.util.errors import GraphplanError
+
+if TYPE_CHECKING:
+    from graphplan.sheets.kinematics import Drafter
+
+FAMILIES = ("position", "velocity", "acceleration")
+PLAN_MM = 100.0        # … or its largest plan drawn at least this across
+LEGIBLE_MM = 40.0      # a set's plans: the crank pin's vectors p_v a and π a drawn at least this long
+ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
+SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
+DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
+TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
+
+
+class PlansUndrawable(GraphplanError):
+    """No standard scale draws a family of plans on the sheet (a size that does not shrink)."""
+
+
+def size_of(rec: Record) -> tuple[float, float]:
+    b = rec.bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+@dataclass
+class Natural:
+    """The drawings' natural sizes, measured once at trial scales — what the arithmetic needs: the
+    plans' families (position, velocity, acceleration; sheets.compose.Family), the diagrams' size
+    per size factor, the tables' sizes per lettering factor (in order) and the notes' lines — each
+    the larger of the two languages, so no scale depends on the language."""
+    families: dict[str, Family]
+    diagrams: dict[float, tuple[float, float]]
+    tables: dict[float, list[tuple[str, float, float]]]
+    notes: list[list[str]]
+
+    @property
+    def count(self) -> dict[str, int]:
+        return {name: len(fam.sizes) for name, fam in self.families.items()}
+
+    def leaf(self, family: str, mu: float, name: str = "") -> Leaf:
+        """The family's cell at μ: its largest drawing with lettering and caption."""
+        return self.families[family].leaf(mu, name or family)
+
+    def drawn(self, family: str, mu: float) -> float:
+        """The principal segment drawn at μ, mm."""
+        return self.families[family].drawn(mu)
+
+    def notes_height(self, width: float) -> float:
+        return notes_height(self.notes, width)
+
+
+def diagrams_size(dr: Drafter, nat: Natural, k: float) -> tuple[float, float]:
+    """The diagrams' block at size factor k (the larger of the two languages)."""
+    from graphplan.util.words import LANGS
+    if k not in nat.diagrams:
+        sizes = [size_of(dr.diagram_record(k, lang)) for lang in LANGS]
+        nat.diagrams[k] = (max(s[0] for s in sizes), max(s[1] for s in sizes))
+    return nat.diagrams[k]
+
+
+def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
+    """The sheet's composition (C: the tables' column with the notes over the title block, in the
+    bottom-right corner): "bands" — position plan and diagrams across the top, under them the
+    velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
+    height, the rest in those two bands; "accel" — the acceleration plans beside the position plan
+    and the diagrams, the velocity plans beside the column; "sides" — the position plan over the
+    velocity plans, beside them the diagrams over the acceleration plans over the column."""
+    vg = [vgrid] if vgrid is not None else []
+    ag = [agrid] if agrid is not None else []
+    if shape == "bands":
+        return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
+    if shape == "column":
+        return Row([Stack([Row([P, D]), Row(vg + ag)]), C], flush=True)
+    if shape == "accel":
+        return Stack([Row([P, D] + ag), Row(vg + [C], flush=True)], flush=True)
+    return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
+
+
+SHAPES = ("bands", "column", "accel", "sides")
+BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
+LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
+
+
+@dataclass
+class Plan:
+    """The kinematics sheet as composed by arithmetic: the scales (μ per family), the diagrams'
+    size factor, the tables' lettering factor, the composition's shape, grid columns and table
+    columns, and the number of sheets (a set: more than 1)."""
+    mu: dict[str, float]
+    diagrams: float
+    tables: float
+    shape: str = "bands"
+    vcols: int = 1
+    acols: int = 1
+    parts: int = 1
+    sheets: int = 1
+    counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
+
+
+TITLE = 185.0     # the title block's width: the column is at least this wide
+
+
+def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
+                ) -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables in ``parts`` columns (``counts`` tables each, where the plan found them) with the
+    notes under them and the title block's room at the foot, as one leaf for the composition; its
+    table groups and its width."""
+    from graphplan.sheets.compose import keep_out
+    groups = split(tables, parts, counts=counts)
+    cw, ch = column_size(groups)
+    width = max(cw, TITLE)
+    foot = keep_out(f)[3] - field_of(f)[1]
+    return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
+
+
+def _grids(n: int) -> list[int]:
+    """Column counts of a grid of n cells, one for each row count: the fewest columns that give it
+    (the narrowest grid of r rows has ⌈n/r⌉ columns — 12 plans in two rows are 6 a row, not 11)."""
+    out: list[int] = []
+    for r in range(1, n + 1):
+        c = -(-n // r)
+        if -(-n // c) == r and c not in out:
+            out.append(c)
+    return out or [1]
+
+
+
+def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
+    """The best one-sheet composition: for each lettering of the tables, each shape and each order
+    of growth, the scales by ``choose_levels``; the one whose plans are drawn largest (the product
+    of the principal segments), 3.5 mm tables where they cost no drawing a step."""
+    x0, y0, x1, y1 = field_of(f)
+    W, H = x1 - x0, y1 - y0
+    has_a = nat.count["acceleration"] > 0
+    D = Leaf("diagrams", *diagrams_size(dr, nat, 1.0))
+    nv, na = nat.count["velocity"], nat.count["acceleration"]
+    best = None
+    for factor in (TABLES, 1.0):
+        tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+        cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
+
+        def arranged(mu, shape, best_fill=False):
+            P = nat.leaf("position", mu["position"])
+            V = [nat.leaf("velocity", mu["velocity"])] * nv
+            A = [nat.leaf("acceleration", mu["acceleration"])] * na
+            vgrids = {vc: Grid(V, vc) for vc in _grids(nv)} if V else {1: None}
+            agrids = {ac: Grid(A, ac) for ac in _grids(na)} if A else {1: None}
+            found = None
+            for vc, vg in vgrids.items():
+                for ac, ag in agrids.items():
+                    for parts, C in enumerate(cols, 1):
+                        tw, th = extent(tree(shape, P, D, vg, ag, C))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            if not best_fill:
+                                return (0.0, vc, ac, parts)
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, vc, ac, parts)
+            return found
+
+        for shape in SHAPES:
+            current: dict[str, float] = {}
+
+            def fits(m, s=shape, current=current) -> bool:
+                ok = arranged(m, s) is not None
+                if ok:                      # choose_levels takes every trial that fits: the scales now
+                    current.update(m)
+                return ok
+
+            def balanced(name: str, bigger: float, current=current) -> bool:
+                """A family grows past its target only up to ``BALANCE`` times the smallest of the
+                others (an acceleration plan twice its target beside 25-mm velocity plans takes the
+                room they could grow into)."""
+                others = [nat.families[fam].rel(current[fam]) for fam in FAMILIES
+                          if fam != name and (fam != "acceleration" or has_a)]
+                return not others or nat.families[name].rel(bigger) <= max(1.0, BALANCE * min(others)) + 1e-9
+            mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
+            if mu is None:
+                continue
+            rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
+            score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
+                     -SHAPES.index(shape))
+            _, vc, ac, parts = arranged(mu, shape, best_fill=True)
+            counts = tuple(len(g) for g in split(tabs, parts))
+            cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1, counts))
+            if best is None or cand[0] > best[0]:
+                best = cand
+    return best[1] if best else None
+
+
+def readable(fam: Family, mu: float) -> bool:
+    """Whether a family of plans reads at μ: its principal segment (p_v a, π a) at least
+    ``LEGIBLE_MM`` long, or its largest plan at least ``PLAN_MM`` across — where the crank pin's
+    vector is the plan's short one (a rocker swinging fast beside a short crank), p_v a that long
+    would draw every plan a sheet wide, one plan a sheet."""
+    if fam.drawn(mu) >= LEGIBLE_MM - 1e-9:
+        return True
+    k = fam.mu0 / mu
+    return max((max(gw, gh) * k for gw, gh, _, _ in fam.sizes), default=0.0) >= PLAN_MM - 1e-9
+
+
+def legible(nat: Natural, mu: dict[str, float]) -> bool:
+    """Whether the plans read (``readable``) at the scales ``mu``."""
+    return readable(nat.families["velocity"], mu["velocity"]) and (
+        nat.count["acceleration"] == 0 or readable(nat.families["acceleration"], mu["acceleration"]))
+
+
+def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float) -> list[list[Leaf]]:
+    """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
+    the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
+    plans likewise, the tables and the notes (rows wrap where too wide)."""
+    rows: list[list[Leaf]] = [[nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize)]]
+    for fam in ("velocity", "acceleration"):
+        cell = nat.leaf(fam, mu[fam])
+        k = max(1, int((width + GAP) // (cell.w + GAP)))
+        n = nat.count[fam]
+        rows += grid_rows([Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(n)], k)
+    rows.append([Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+                + [Leaf("notes", TITLE, nat.notes_height(TITLE))])
+    return rows
+
+
+def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
+    """Equal cells k to a row, the last row filled up with empty cells so the columns line up."""
+    rows = [cells_[j:j + k] for j in range(0, len(cells_), k)]
+    if rows and len(rows) > 1 and len(rows[-1]) < k:
+        c = rows[-1][0]
+        rows[-1] = rows[-1] + [Leaf("", c.w, c.h) for _ in range(k - len(rows[-1]))]
+    return rows
+
+
+def _legible(fam: Family) -> float:
+    """The coarsest standard μ at which the family's plans read (``readable``)."""
+    mu = fam.start(1.0)
+    while not readable(fam, mu):
+        mu = finer(mu)
+    while readable(fam, coarser(mu)):
+        mu = coarser(mu)
+    return mu
+
+
+def room(f: Form) -> tuple[float, ...]:
+    """Where one drawing fits an empty sheet of the format: (the field's width, its height over the
+    title block, the width beside the title block, the field's height), mm."""
+    from graphplan.sheets.compose import keep_out
+    region = field_of(f)
+    keep = keep_out(f)
+    height = region[3] - region[1]
+    return (region[2] - region[0], keep[1] + height - keep[3], keep[0] - region[0], height)
+
+
+def room_fits(r: tuple[float, ...], w: float, h: float) -> bool:
+    """Whether a w × h drawing fits the room ``r`` (``room``): across the field over the title
+    block, or beside the title block the field's full height."""
+    return (w <= r[0] and h <= r[1]) or (w <= r[2] and h <= r[3])
+
+
+def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
+    """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
+    as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
+    flowing over the sheets in reading order — the fewest sheets (qualitatively wrong diagrams
+    counted as one more: their larger size factor is taken where it is right); then each family
+    grown while the set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
+    from graphplan.sheets.compose import keep_out
+    region = field_of(f)
+    width, height = region[2] - region[0], region[3] - region[1]
+    keep = keep_out(f)
+
+    def alone(size) -> bool:              # fits an empty sheet beside or over the title block
+        return room_fits(room(f), *size)
+    fams = nat.families
+    floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
+    def fitted(fam: str, mu: float) -> float:
+        """The finest μ from ``mu`` on at which the family fits an empty sheet; a family no μ fits
+        (a size that does not shrink: lettering alone, or no finite size) is refused in one line."""
+        for _ in range(90):                     # 30 decades of the standard series
+            if alone(fams[fam].size(mu)):
+                return mu
+            mu = coarser(mu)
+        raise PlansUndrawable(f"the {fam} plans cannot be drawn on a {f.name} sheet at any scale (a plan of "
+                             "directions nearly parallel?); the terminal's commands take --format none",
+                             dr.st.mech.source if hasattr(dr, "st") else None)
+    for fam in floor:                       # … unless a plan that large fits no sheet
+        floor[fam] = fitted(fam, floor[fam])
+    top = fitted("position", fams["position"].start(2.0))
+    best = None
+    for k in [k for k in DIAGRAM_SIZES if alone(diagrams_size(dr, nat, k))] or DIAGRAM_SIZES[-1:]:
+        dsize = diagrams_size(dr, nat, k)
+        for factor in (TABLES, 1.0):
+            def pages(mu):
+                out = flow(_set_rows(nat, mu, dsize, factor, width), region, keep)
+                return None if out is None else len(out)
+            for mu_l in (top, coarser(top), coarser(coarser(top))):
+                mu = {"position": mu_l, **floor}
+                count = pages(mu)
+                if count is None:
+                    continue
+                for fam in ("velocity", "acceleration", "position"):
+                    while True:
+                        bigger = finer(mu[fam])
+                        if fams[fam].rel(bigger) > SET_LARGEST or pages({**mu, fam: bigger}) != count:
+                            break
+                        mu = {**mu, fam: bigger}
+                rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + math.log(k)
+                # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
+                # right is taken where it costs a sheet at most
+                wrong = 0 if dr.diagrams_right(k) else 1
+                key = (count + wrong, wrong, -(factor == TABLES), -rel)
+                if best is None or key < best[0]:
+                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count))
+    if best is None:
+        raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
+                             "choose a larger --format")
+    return best[1]

@@ -1,0 +1,360 @@
+"""The kinematics sheet's tables and notes (seeds 000, 002 and 004): table 1 the plans' velocities at
+every position, tables 2.n one acceleration plan each, table 3 the links' dimensions, table 4 the lab's
+s, v, a at its chosen positions — each error past the lab's 5 % marked and footnoted with its cause —
+and the notes' lines (mobility, structure, scales, precision, the largest errors, the signs). The
+composition that places them is sheets/kinematics.py (sheets/kinlayout.py the arithmetic)."""
+from __future__ import annotations
+
+from graphplan.exact.positions import Study
+from graphplan.graphic.record import Record, text_width
+from graphplan.sheets.compose import lines_of, number, percent
+from graphplan.sheets.form import enlarged, table
+from graphplan.util.markup import escape
+from graphplan.util.words import column, fixed, num, pair_kind, unit, word
+
+SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
+
+def _symbol(key: str, letter: str = "v") -> str:
+    """A JSON key as the lab writes the quantity (markup): B → v_B, BA → v_BA, omega_AB → ω_AB,
+    n_BA → a^n_BA, t_BA → a^τ_BA, k_A3A2 → a^k_A3A2, r_A3A2 → a^r_A3A2."""
+    for prefix, sym in (("omega_", "ω"), ("epsilon_", "ε")):
+        if key.startswith(prefix):
+            return f"{sym}_{{{key[len(prefix):]}}}"
+    head, _, rest = key.partition("_")
+    marks = {"n": "n", "t": "τ", "k": "k", "r": "r"}
+    if rest and head in marks:
+        return f"{letter}^{marks[head]}_{{{rest}}}"
+    return f"{letter}_{{{key}}}"
+
+
+# -- tables ------------------------------------------------------------------------------------
+
+def velocity_columns(doc: dict, precision: float) -> list[str]:
+    """The velocity table's columns: every quantity once — a column equal to an earlier one (ω of a
+    block riding its rocker: ω2 = ωOB) or zero at every position (a centre of mass on a fixed
+    pivot) is left out."""
+    keys: list[str] = []
+    for pos in doc["positions"]:
+        for key in pos["velocity"]:
+            if key not in keys:
+                keys.append(key)
+    kept: list[str] = []
+    seen: list[tuple[str, ...]] = []
+    for key in keys:
+        cells = tuple(_cell(pos["velocity"].get(key), precision) for pos in doc["positions"])
+        if all(c in ("0", "—") for c in cells) or cells in seen:
+            continue
+        seen.append(cells)
+        kept.append(key)
+    return kept
+
+
+def _cell(e: dict | None, precision: float, lang: str = "en") -> str:
+    """A table's graphical value: the plan's reading (a vector read as 0 mm — a dead centre's
+    velocity — is the number 0, as the terminal prints it); ω and ε signed by their sense
+    (+ counter-clockwise, the tables' headers say so) and written to the figures of the vector they
+    are read from (report.plans.figures); "—" only where there is no entry."""
+    if not e:
+        return "—"
+    value = e.get("value")
+    if value is not None and e.get("sense") == "cw":
+        value = -value
+    if e.get("sense") is not None:         # ω, ε: no finer than the vector they are read from
+        from graphplan.report.plans import figures
+        return number(value, figures(e.get("from_mm"), precision), lang=lang)
+    return number(value, lang=lang)
+
+
+LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a cell past it is marked
+MARK = "*"
+
+
+def _length(e: dict) -> float | None:
+    """The drawn length an entry is read from: its own mm, or for ω, ε the relative vector's."""
+    return e.get("mm") if e.get("mm") is not None else e.get("from_mm")
+
+
+def why(e: dict, sym: str, pos: dict, plan: str, lang: str) -> str:
+    """Why an entry misses the lab's 5 %: a vector drawn shorter than ``SHORT_MM`` (its ±½ division
+    is a large share of it), direction lines crossing at a small angle on its plan (the plan's
+    warnings), else the ruler's precision."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    mm = _length(e)
+    if mm is not None and mm < SHORT_MM:
+        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=num(mm, lang, 3))
+    angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
+    if angles:
+        return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))
+    return w('why_ruler', sym=sym)
+
+
+def footnoted(rec: Record, notes: list[str], size: float = 2.5) -> Record:
+    """A table with its footnotes under it (wrapped to the table's width): what its marks mean."""
+    if not notes:
+        return rec
+    from graphplan.sheets.form import wrap
+    from graphplan.graphic.record import line_pitch
+    x0, y0, x1, _ = rec.bounds()
+    y = y0 - 2.0 - size                        # the first line's capitals 2 mm under the table's rule
+    for note in notes:
+        for line in wrap(note, max(x1 - x0, 80.0), size):
+            rec.label((x0, y), line, size=size, layer="tables")
+            y -= line_pitch(size)
+    return rec
+
+
+def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
+    """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3, with
+    the row's largest error; ω signed (+ counter-clockwise); a row's error past the lab's 5 % is
+    marked and its footnote says which vector and why."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    keys = velocity_columns(doc, precision)
+    head = ["№", "φ, °"] + [_symbol(k, "v") for k in keys] + ["δ_{max}, %"]
+    rows = [head]
+    notes = []
+    for pos in doc["positions"]:
+        err = row_error(pos, keys)
+        cell = percent(err, lang=lang)
+        if err is not None and err > LAB_LIMIT:
+            cell += MARK
+            key = worst(pos, keys)
+            notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v"), pos,
+                                                                "velocity", lang)))
+        rows.append([str(pos["index"]), fixed(pos['phi_deg'], lang, 1)]
+                    + [_cell(pos["velocity"].get(k), precision, lang) for k in keys] + [cell])
+    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
+    rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
+    return footnoted(rec, [w('mark_head')] + notes if notes else [])
+
+
+def worst(pos: dict, keys: list[str] | None = None, kind: str = "velocity") -> str:
+    """The key of a position's largest |δ| (velocities, or ``kind``)."""
+    errs = {k: abs(e["error_pct"]) for k, e in pos[kind].items() if (keys is None or k in keys) and judged(e)}
+    return max(errs, key=errs.get)
+
+
+def row_error(pos: dict, keys: list[str] | None = None, shortest: float = 0.0) -> float | None:
+    """The largest |δ| of a position's velocities (of vectors at least ``shortest`` mm long; ω by
+    the relative velocity it is read from)."""
+    errs = [abs(e["error_pct"]) for k, e in pos["velocity"].items()
+            if (keys is None or k in keys) and judged(e) and (_length(e) is None or _length(e) >= shortest)]
+    return max(errs) if errs else None
+
+
+def judged(e: dict) -> bool:
+    """Whether an entry's δ means anything: it has one, and the ruler read the vector (a vector
+    read as 0 mm, shorter than half a division, has no percent error — "—")."""
+    return e.get("error_pct") is not None and e.get("value") != 0
+
+
+def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> Record:
+    """Table 2.n: one acceleration plan: drawn mm, graphical value, analytic value and δ, %; ε
+    signed (+ counter-clockwise); a vector read as 0 mm is 0; an analytic value below its column's
+    resolution is 0; an error past the lab's 5 % is marked, its footnote says why. The force
+    position (no index) is named by the crank's turn from position 0, as the scene gives it."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    rows = [[w('quantity'), unit("mm", lang), w('graphical'), w('analytic'), w('error')]]
+    items = list(pos.get("acceleration", {}).items())
+    exact = column([(-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None
+                    else None for _, e in items], lang)
+    notes = []
+    for (key, e), analytic in zip(items, exact):
+        cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
+        if judged(e) and abs(e["error_pct"]) > LAB_LIMIT:
+            cell += MARK
+            notes.append(w('mark_cell', why=why(e, _symbol(key, "a"), pos, "acceleration", lang)))
+        rows.append([_symbol(key, "a"), "—" if e.get("mm") is None else number(e["mm"], 4, lang=lang),
+                     _cell(e, precision, lang), analytic, cell])
+    if pos["index"] is not None:
+        where = pos["index"]
+    else:
+        where = w('turn_at', turn=num(pos.get("turn_deg", pos["phi_deg"]), lang, 4),
+                  phi=fixed(pos['phi_deg'], lang, 1))
+    rec = table(rows, [22.0, 14.0, 20.0, 20.0, 14.0], row_h=6.0, size=2.5,
+                title=w('acc_table_signed', n=n, i=where))
+    return footnoted(rec, [w('mark_head')] + notes if notes else [])
+
+
+def link_lengths(st: Study) -> list[tuple[str, float]]:
+    """Every link's dimensions: the crank, each pair of joints on a link, the frame's pivots' distances."""
+    mech = st.mech
+    out: list[tuple[str, float]] = [(mech.crank.pivot + mech.crank.pin, mech.crank.length)]
+    for name, link in mech.links.items():
+        if name == mech.crank.link:
+            continue
+        pts = [p for p in link.local if p in link.joints or p in mech.frame]
+        for a, b in zip(pts, pts[1:]):
+            d = abs(link.local[a] - link.local[b])
+            if d > 0:
+                out.append((a + b, d))
+    frame = [p for p in mech.frame if any(p in l.joints for l in mech.links.values())]
+    for a, b in zip(frame, frame[1:]):
+        d = abs(mech.frame[a] - mech.frame[b])
+        if d > 0:
+            out.append((a + b, d))
+    return out
+
+
+def dimensions_table(st: Study, mu_l: float, lang: str) -> Record:
+    """Seed 000's table 2.1 / seed 002's measured dimensions: each length real and drawn at μl."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    rows = [[w('link'), w('real'), w('drawn')]]
+    for name, length in link_lengths(st):
+        rows.append([name, number(length, 4, lang=lang), number(length / mu_l, 4, lang=lang)])
+    return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims'))
+
+
+def lab_table(diag, lang: str) -> Record | None:
+    """Seed 002's table: s, v, a of the output at the lab's given positions — the diagrams'
+    ordinates (mm), the graphical and the exact values' errors — one sign convention (the values'
+    along the guide, the ordinates too: a mirrored diagram's ordinate is written with the value's
+    sign) and the units in the header; an error past the lab's 5 % is marked, its footnote says why
+    (the chords' own error of coarse divisions, a short ordinate, or the ruler)."""
+    import numpy as np
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    chosen = [k for k in range(len(diag.position)) if diag.position[k] in diag.chosen]
+    if not chosen:
+        return None
+    vals = diag.values()
+    s_, v_, a_ = diag.symbols
+    mm = unit("mm", lang)
+    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
+    us, uv, ua = (unit(u, lang) for u in units)
+    rows = [[w('no'), "φ, °", f"{s_}, {mm}", f"{s_}, {us}", f"{v_}, {mm}", f"{v_}, {uv}", f"δ_{v_}, %",
+             f"{a_}, {mm}", f"{a_}, {ua}", f"δ_{a_}, %"]]
+    ev, ea = diag.errors_pct("v_at"), diag.errors_pct("a_at")
+    own = {"v_at": diag.errors_pct("v_at", diag.exact), "a_at": diag.errors_pct("a_at", diag.exact)}
+    r, k_ = diag.drawn, diag.sign
+    notes = []
+
+    def pct(key: str, errs, k: int, ordinate: float, sym: str) -> str:
+        e = None if not np.isfinite(errs[k]) else float(errs[k])
+        cell = percent(e, lang=lang)
+        if e is not None and abs(e) > LAB_LIMIT:
+            o = float(own[key][k])
+            if np.isfinite(o) and abs(o) > LAB_LIMIT:
+                reason = w('why_chords', sym=sym, e=fixed(o, lang, 1).replace("-", "−"), n=diag.divisions)
+            elif abs(ordinate) < SHORT_MM:
+                reason = w('why_ordinate', sym=sym, mm=num(abs(ordinate), lang, 3))
+            else:
+                reason = w('why_ruler', sym=sym)
+            notes.append(w('mark_row', n=diag.position[k], why=reason))
+            cell += MARK
+        return cell
+
+    for k in chosen:
+        rows.append([str(diag.position[k]), fixed(diag.phi[k], lang, 1),
+                     number(k_ * r.s[k], 3, lang=lang), number(vals["s"][k], lang=lang),
+                     number(k_ * r.v_at[k], 3, lang=lang), number(vals["v_at"][k], lang=lang),
+                     pct("v_at", ev, k, r.v_at[k], v_),
+                     number(k_ * r.a_at[k], 3, lang=lang), number(vals["a_at"][k], lang=lang),
+                     pct("a_at", ea, k, r.a_at[k], a_)])
+    rec = table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 18.0, 14.0], row_h=6.0, size=2.5,
+                title=w('lab'))
+    said = ([w('mark_head')] + notes if notes else []) + ([w('lab_mirrored')] if k_ < 0 else [])
+    return footnoted(rec, said)
+
+
+def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
+    """The structural formula, the mobility and the scale coefficients as lines of text."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    s = st.structure
+    lines = [f"{w('mobility')}: W = 3n − 2p_5 − p_4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
+             f"{w('structure')}: {s.formula}  ("
+             + ", ".join(f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads) + ")",
+             f"{w('scales')}: " + "; ".join(scales)] + extra
+    rec = Record("notes")
+    for k, line in enumerate(lines):
+        rec.label((0.0, -7.0 * k), line, size=3.5, layer="labels")
+    return rec
+
+
+def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
+           subtitle: str | None = None) -> dict[str, str]:
+    """The title block's fields from the scene's title and [sheet] table: the organisation's field
+    carries the organisation and the student's group ("НУБіП України, гр. МБ-21")."""
+    meta = st.mech.task.meta
+    title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
+        meta.get("title", st.mech.title)
+    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
+    if group:
+        org = ", ".join(x for x in (org, word("kin group", lang, g=group)) if x)
+    return {"designation": escape(meta.get("designation", "")), "title": escape(title),
+            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "organisation": escape(org),
+            "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),
+            "subtitle": subtitle or word("kin subtitle", lang)}
+
+
+def sign_note(st: Study, diag, lang: str) -> str:
+    """One sign convention, said on the sheet: s, v, a are signed along the output's guide (a
+    rocker: counter-clockwise) everywhere; the diagrams are drawn so the stroke from position 0
+    rises, which for some outputs mirrors them."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    out = st.output
+    if out.kind == "slide":
+        import math
+        slider = next(link for link in st.mech.links.values()
+                      if link.slides_on is not None and next(iter(link.local)) == out.name)
+        guide = st.mech.guides[slider.slides_on]
+        said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
+    else:
+        said = w('signs_link', link=escape(out.name))
+    return said + (w('flipped') if diag.sign < 0 else "")
+
+
+def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
+    """Every |δ| the tables 1 and 2 print (velocities; accelerations the ruler read), of vectors at
+    least ``shortest`` mm long — ω and ε by the relative vector they are read from."""
+    out = []
+    keys = velocity_columns(doc, precision)
+    for pos in doc["positions"]:
+        e = row_error(pos, keys, shortest)
+        if e is not None:
+            out.append(e)
+        for a in pos.get("acceleration", {}).values():
+            mm = _length(a)
+            if not judged(a) or (mm is not None and (mm < precision or mm < shortest)):
+                continue
+            out.append(abs(a["error_pct"]))
+    return out
+
+
+
+def sheet_tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> list[tuple[str, Record]]:
+    """The sheet's tables in reading order: 1 velocities, 2.n accelerations, 3 dimensions, 4 the
+    lab's s, v, a (a lab of at most 8 positions)."""
+    from graphplan.report.plans import plans_json
+    doc = plans_json(plans)
+    out = [("velocity table", velocity_table(doc, lang, p))]
+    n = 0
+    for q, pos in zip(plans.positions, doc["positions"]):
+        if q.acceleration is not None:
+            n += 1
+            out.append((f"acceleration table {n}", acceleration_table(pos, n, lang, p)))
+    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang)))
+    if st.mech.task.count <= 8:
+        lab = lab_table(diag, lang)
+        if lab is not None:
+            out.append(("lab table", lab))
+    return [(name, enlarged(rec, factor)) for name, rec in out]
+
+
+def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
+    """The notes' lines: mobility, structure, scales, precision, the largest errors, the signs."""
+    from graphplan.graphic.scales import format_scale
+    from graphplan.report.diagrams import sheet_notes
+    from graphplan.report.plans import plans_json
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    doc = plans_json(plans)
+    scales = [format_scale(m, v, lang) for m, v in (("mu_l", plans.mu_l), ("mu_v", plans.mu_v), ("mu_a", plans.mu_a))]
+    scales.append(f"μ_t = {num(diag.mu_t, lang)} {unit('s/mm', lang)}")
+    extra = [f"{w('precision')}: {num(p, lang)} {unit('mm', lang)}"]
+    every = table_errors(doc, p, 0.0)
+    long_ = table_errors(doc, p, SHORT_MM)
+    if every:
+        extra.append(f"{w('max_error')}: {fixed(max(every), lang, 2)} %"
+                     + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
+    extra.append(w('dash'))
+    extra.append(sign_note(st, diag, lang))
+    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang), lang))

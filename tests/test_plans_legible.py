@@ -1,0 +1,74 @@
+"""Plans large enough to read (issue 32, item 4), measured on the records the sheet draws: the crank
+pin's velocity p_v a as long as its cell lets it be, no grid of plans narrower than its rows need, the
+position plan's letters beside their points, a link's number never beside another number."""
+from __future__ import annotations
+
+import pytest
+
+from conftest import example
+from graphplan.drawing.labels import LINK_APART, LINK_SIZE, NUMBERS_APART, is_number
+from graphplan.drawing.plans import indexed, joints_at, position_record
+from graphplan.sheets.compose import SheetOptions
+from graphplan.sheets.form import form
+from graphplan.sheets.kinematics import plan
+from graphplan.sheets.kinlayout import _grids
+
+
+def test_a_grid_of_r_rows_takes_the_fewest_columns():
+    """12 velocity plans in two rows are 6 a row (the grid was 11 wide: one row of 11 and one of 1,
+    too wide to grow, so the plans stayed small)."""
+    for n in range(1, 40):
+        cols = _grids(n)
+        rows = [-(-n // c) for c in cols]
+        assert sorted(set(rows)) == sorted(rows) == sorted({-(-n // c) for c in range(1, n + 1)})
+        for c, r in zip(cols, rows):
+            assert c == -(-n // r)          # no narrower grid has r rows
+
+
+def _pa_mm(st, mu_v: float) -> float:
+    return abs(st.mech.omega1) * st.mech.crank.length / mu_v
+
+
+# p_v a on the A1 sheet, mm: the lab model and the four-bar drew 42 and 31 mm (a grid of 11 columns)
+@pytest.mark.parametrize("name, least", [("lab_crank_slider", 80.0), ("four_bar", 55.0), ("crank_slider", 40.0)])
+def test_velocity_plans_fill_their_cells(name, least):
+    st = example(name)
+    p = plan(st, form("A1"), SheetOptions(sheet="kinematics"))[0]
+    assert _pa_mm(st, p.mu["velocity"]) >= least
+
+
+def _box_gap(a, b) -> float:
+    dx = max(a[0] - b[2], b[0] - a[2], 0.0)
+    dy = max(a[1] - b[3], b[1] - a[3], 0.0)
+    return (dx * dx + dy * dy) ** 0.5
+
+
+@pytest.mark.parametrize("name", ["lab_crank_slider", "four_bar", "shaper", "crank_slider"])
+def test_position_plan_letters_and_numbers(name):
+    """Each joint's letter is drawn (at the first thick position), every one within 20 mm of its
+    point and half of them within 6 mm (the crank's pivot, where the twelve crank lines meet, and
+    points among the links' twelve thin positions take a short leader: measured 9–17 mm); a
+    link's number (5 mm) is ``LINK_APART`` from every other number, position numbers ``NUMBERS_APART``
+    from each other — "3" by "1" does not read "31"."""
+    st = example(name)
+    p, _, dr = plan(st, form("A1"), SheetOptions(sheet="kinematics"))
+    pl = dr.plans(p.mu)
+    rec = position_record(pl)
+    thick = set(pl.accel_keys) or {0}
+    lay = next(q.layout for q in pl.positions if q.layout.key == min(thick))
+    texts = [q for q in rec.items if q.kind == "text"]
+    dist = []
+    for point, X in joints_at(pl.scheme, lay).items():
+        boxes = [q.ink() for q in texts if q.text == indexed(point)]
+        assert boxes, point
+        d = min(_box_gap(b, (X.real, X.imag, X.real, X.imag)) for b in boxes)
+        assert d <= 20.0, (point, d)
+        dist.append(d)
+    assert sorted(dist)[(len(dist) - 1) // 2] <= 6.0, dist
+    numbers = [q for q in texts if is_number(q.text)]
+    links = [q for q in numbers if q.size >= LINK_SIZE]
+    assert sorted(q.text for q in links) == sorted({str(l.number) for l in pl.scheme.mech.links.values()})
+    for i, a in enumerate(numbers):
+        for b in numbers[i + 1:]:
+            need = LINK_APART if max(a.size, b.size) >= LINK_SIZE else NUMBERS_APART
+            assert _box_gap(a.ink(), b.ink()) >= need - 1e-6, (a.text, b.text)
