@@ -278,6 +278,9 @@ def test_a_gear_template_s_scene_draws_the_gear_sheet_the_command_line_draws(cli
     assert r.status_code == 200 and 'filename="gears-A1.svg"' in r.headers["content-disposition"]
     assert cli(monkeypatch, capsys, tmp_path, text, "sheet", "scene.toml", "-o", "x.svg")[0] == 0
     assert r.content == (tmp_path / "x.svg").read_bytes()
+    hostile = client.post("/api/toml", json={"template": "gears_b", "values": {"title": HOSTILE}}).text
+    drawn = client.post("/api/scene/preview?lang=en", content=hostile.encode()).content
+    assert b"<script" not in drawn and ET.fromstring(drawn).find(f"{SVG}title").text == HOSTILE   # escaped
     b = tomllib.loads(client.post("/api/toml", json={"template": "gears_b", "values": {}}).text)
     assert b["gears"]["shifts"] == "auto" and b["planetary"]["type"] == "B"
     field = {f["key"]: f for t in client.get("/api/templates").json() if t["id"] == "gears_b" for f in t["fields"]}
