@@ -91,7 +91,7 @@ def test_the_templates_speak_both_languages_and_each_makes_a_scene_that_assemble
     templates = client.get("/api/templates").json()
     ids = {t["id"] for t in templates}
     assert {"crank_slider", "crank_slider_offset", "four_bar", "four_bar_slider", "shaper", "slotter",
-            "scotch_yoke", "cam_translating", "cam_rocking"} <= ids
+            "scotch_yoke", "cam_translating", "cam_rocking", "gears_a", "gears_b"} <= ids
     for t in templates:
         assert t["uk"] != t["en"]
         for f in t["fields"]:
@@ -166,8 +166,8 @@ def test_every_option_refused_in_one_line(client):
     assert "--format" in refused(client.post("/api/sheet?format=A0", content=body))
     assert "unknown format" in refused(client.post("/api/sheet?type=exe", content=body))
     assert "--sheet" in refused(client.post("/api/sheet?kind=../x", content=body))
-    assert refused(client.post("/api/sheet?kind=gears", content=body)) == "--sheet gears: not available" \
-        or client.post("/api/sheet?kind=gears", content=body).status_code in (200, 422)
+    assert refused(client.post("/api/sheet?kind=gears", content=body)) \
+        == "scene.toml: --sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)"
     assert "cam" in refused(client.post("/api/sheet?kind=cam", content=body))
     assert refused(client.get("/api/nothing"), 404) == "not found"
     assert refused(client.get("/api/sheet"), 405)
@@ -248,6 +248,94 @@ def test_tables_are_the_exact_solution_as_csv(client):
     assert float(got[0]["value"]) == pytest.approx(p3["points"]["B"]["vx"], rel=1e-12, abs=1e-12)
     plans = list(csv.DictReader(io.StringIO(z.read("plans.csv").decode())))
     assert any(p["quantity"] == "B" and p["plan"] == "velocity" for p in plans)
+
+
+# -- gear scenes and cam scenes through every endpoint ---------------------------------------------------
+
+GEARS = (EXAMPLES / "gears.toml").read_text(encoding="utf-8")
+GEARS_B = (EXAMPLES / "gears_b.toml").read_text(encoding="utf-8")
+CAM = (EXAMPLES / "cam_translating.toml").read_text(encoding="utf-8")
+
+
+def cli(monkeypatch, capsys, tmp_path: Path, text: str, *args: str) -> tuple[int, str, str]:
+    """The command line run in this process on the scene saved as scene.toml: (code, stdout, stderr)."""
+    from graphplan.cli.main import main
+    (tmp_path / "scene.toml").write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    capsys.readouterr()
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_a_gear_template_s_scene_draws_the_gear_sheet_the_command_line_draws(client, monkeypatch, capsys, tmp_path):
+    text = client.post("/api/toml", json={"template": "gears_a", "values": {"z1": "13", "shifts": "given",
+                                                                           "x1": "0,4", "u": 5}}).text
+    tree = tomllib.loads(text)
+    assert tree["gears"]["z"] == [13, 30] and tree["gears"]["shifts"] == [0.4, 0.3]
+    assert tree["planetary"] == {"type": "A", "ratio": 5, "planets": 3, "module": 0.004, "omega": 150}
+    r = client.post("/api/sheet?format=A1&type=svg", content=text.encode())        # no kind: the gear sheet
+    assert r.status_code == 200 and 'filename="gears-A1.svg"' in r.headers["content-disposition"]
+    assert cli(monkeypatch, capsys, tmp_path, text, "sheet", "scene.toml", "-o", "x.svg")[0] == 0
+    assert r.content == (tmp_path / "x.svg").read_bytes()
+    hostile = client.post("/api/toml", json={"template": "gears_b", "values": {"title": HOSTILE}}).text
+    drawn = client.post("/api/scene/preview?lang=en", content=hostile.encode()).content
+    assert b"<script" not in drawn and ET.fromstring(drawn).find(f"{SVG}title").text == HOSTILE   # escaped
+    b = tomllib.loads(client.post("/api/toml", json={"template": "gears_b", "values": {}}).text)
+    assert b["gears"]["shifts"] == "auto" and b["planetary"]["type"] == "B"
+    field = {f["key"]: f for t in client.get("/api/templates").json() if t["id"] == "gears_b" for f in t["fields"]}
+    assert field["omega"]["unit"] == "rad/s" and field["u"]["symbol"] == "u_1H" and field["shifts"]["choices"] == [
+        "given", "auto"]
+
+
+def test_gear_tables_check_and_preview_are_graphplan_gears(client, monkeypatch, capsys, tmp_path):
+    code, out, _ = cli(monkeypatch, capsys, tmp_path, GEARS_B, "gears", "scene.toml", "--json", "--svg", "d")
+    doc = json.loads(out)
+    z = zipfile.ZipFile(io.BytesIO(client.post("/api/tables", content=GEARS_B.encode()).content))
+    assert z.namelist() == ["pair.csv", "sliding.csv", "train.csv"]
+    pair = {(r["quantity"], r["wheel"]): r for r in csv.DictReader(io.StringIO(z.read("pair.csv").decode()))}
+    eps = pair[("contact_ratio", "")]
+    c = doc["pair"]["contact_ratio"]
+    assert (float(eps["exact"]), float(eps["graphical"]), float(eps["error_pct"])) == (
+        c["exact"], c["graphical"], c["error_pct"])
+    assert float(pair[("sa_m", "1")]["graphical"]) == doc["pair"]["graphical"]["sa_m"][0]
+    train = list(csv.DictReader(io.StringIO(z.read("train.csv").decode())))
+    assert [int(r["exact"]) for r in train if r["quantity"] == "z"] == doc["planetary"]["z"]
+    u = next(r for r in train if r["quantity"] == "u1H")
+    zs = dict(zip(["1", "2", "2'", "3"], doc["planetary"]["z"]))
+    assert float(u["exact"]) == pytest.approx(1 + zs["2"] * zs["3"] / (zs["1"] * zs["2'"]), rel=1e-12)  # Willis, B
+    uk = client.post("/api/scene/check?lang=uk", content=GEARS_B.encode()).json()
+    en = client.post("/api/scene/check?lang=en", content=GEARS_B.encode()).json()
+    assert uk["kind"] == "gears" and uk["warnings"] == doc["pair"]["warnings_uk"] + doc["planetary"]["warnings_uk"]
+    assert en["warnings"] == doc["pair"]["warnings"] + doc["planetary"]["warnings"] and en["warnings"]
+    r = client.post("/api/scene/preview?phi=0&lang=en", content=GEARS_B.encode())
+    assert r.status_code == 200 and r.headers["x-scene-kind"] == "gears"
+
+    def letters(svg: bytes) -> list[str]:
+        return ["".join(t.itertext()) for t in ET.fromstring(svg).iter(f"{SVG}text")]
+    drawn = letters((tmp_path / "d" / "meshing.svg").read_bytes()) \
+        + letters((tmp_path / "d" / "planetary.svg").read_bytes())
+    assert letters(r.content) == drawn and {"B1", "B2", "pω"} <= set(drawn)     # gears --svg's two drawings
+
+
+def test_a_gear_scene_refused_where_it_has_nothing_and_cams_get_their_explorer(client, monkeypatch, capsys,
+                                                                              tmp_path):
+    code, _, err = cli(monkeypatch, capsys, tmp_path, GEARS, "sheet", "scene.toml", "--sheet", "kinematics",
+                       "-o", "x.svg")
+    assert code == 2 and refused(client.post("/api/sheet?kind=kinematics", content=GEARS.encode())) \
+        == err.strip()[len("graphplan: "):]
+    assert refused(client.post("/api/view?lang=en", content=GEARS.encode())) == (
+        "scene.toml: the explorer shows lever mechanisms and cams; a gear scene has graphplan gears and its sheet "
+        "(docs/gears.md)")
+    code, out, _ = cli(monkeypatch, capsys, tmp_path, CAM, "cam", "scene.toml", "--json")
+    doc = json.loads(out)
+    page = client.post("/api/view?lang=en", content=CAM.encode())
+    assert page.status_code == 200 and page.headers["content-type"].startswith("text/html")
+    drawn = [float(x) for x in re.findall(r'"theta_g":(-?[0-9.eE+-]+)', page.text)]
+    assert drawn == [p["graphical"]["pressure_angle_deg"] for p in doc["positions"]]
+    z = zipfile.ZipFile(io.BytesIO(client.post("/api/tables", content=CAM.encode()).content))
+    rows = [r for r in csv.DictReader(io.StringIO(z.read("cam.csv").decode())) if r["quantity"] == "pressure_angle_deg"]
+    assert [float(r["graphical"]) for r in rows] == drawn      # graphplan cam's construction in both
 
 
 # -- the teacher's part ----------------------------------------------------------------------------------

@@ -66,7 +66,12 @@ def _lang(asked: str | None, tree: Any) -> str:
 
 
 def _cam_or_study(tree: dict[str, Any]):
-    """("cam", Cam) for a [cam] scene, else ("lever", Study) — as `graphplan sheet` tells them."""
+    """("gears", Gears) for a [gears]/[planetary] scene, ("cam", Cam) for a [cam] scene, else
+    ("lever", Study) — as `graphplan sheet` tells them (cli/sheet.py: a gear scene first)."""
+    from graphplan.model.gears import is_gears
+    if is_gears(tree) and "cam" not in tree:
+        from graphplan.model.gears import build as build_gears
+        return "gears", build_gears(tree, SCENE)
     from graphplan.model.cam import build as build_cam
     from graphplan.model.cam import is_cam
     if is_cam(tree):
@@ -74,6 +79,23 @@ def _cam_or_study(tree: dict[str, Any]):
     from graphplan.exact.positions import study
     from graphplan.model.scene import build
     return "lever", study(build(tree, SCENE))
+
+
+def _gears_solved(gears, precision: float = 0.5):
+    """(solution, mesh, velocities) as `graphplan gears` makes them (report.gears.solved: the meshing
+    at the A1 zone's height, the train's default scales)."""
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.gears import construct_mesh, construct_train
+    sol = solve(gears)
+    mesh = construct_mesh(sol.pair, precision) if sol.pair else None
+    vel = construct_train(sol.train, precision) if sol.train else None
+    return sol, mesh, vel
+
+
+def _gears_doc(gears) -> dict[str, Any]:
+    """`graphplan gears scene.toml --json`'s document."""
+    from graphplan.report.gears import gears_json
+    return gears_json(*_gears_solved(gears), SCENE)
 
 
 # -- the jobs ------------------------------------------------------------------------------------------
@@ -89,6 +111,11 @@ def check(folder: Path, text: str, lang: str | None) -> Answer:
         sol = solve(obj)
         warnings = [w[1] if lang == "uk" else w[0] for w in sol.warnings]
         doc = {"ok": True, "kind": "cam", "warnings": warnings}
+    elif kind == "gears":                     # the pair's and the train's, as gears --json says them
+        g = _gears_doc(obj)
+        said = "warnings_uk" if lang == "uk" else "warnings"
+        doc = {"ok": True, "kind": "gears",
+               "warnings": [w for part in ("pair", "planetary") if part in g for w in g[part][said]]}
     else:
         doc = {"ok": True, "kind": "lever", "warnings": list(obj.says(lang)),
                "structure": obj.structure.formula,
@@ -115,12 +142,17 @@ def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str
     scene_kind, obj = _cam_or_study(tree)
     lang = _lang(lang, tree)
     if not kinds:
-        kinds = ["cam" if scene_kind == "cam" else "kinematics"]
+        kinds = [scene_kind if scene_kind in ("cam", "gears") else "kinematics"]
     files: list[tuple[str, bytes]] = []
     for kind in kinds:
         build = BUILDERS.get(kind)
         if build is None:
             raise GraphplanError(f"--sheet {kind}: not available")
+        if scene_kind == "gears" and kind != "gears":             # cli/sheet.py's lines
+            raise GraphplanError(f"--sheet {kind}: a gear scene has the gear sheet only", SCENE)
+        if scene_kind != "gears" and kind == "gears":
+            raise GraphplanError("--sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)",
+                                 SCENE)
         if scene_kind == "cam" and kind != "cam":
             raise GraphplanError(f"--sheet {kind}: a cam scene has the cam sheet only", SCENE)
         if scene_kind != "cam" and kind == "cam":
@@ -141,18 +173,27 @@ def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str
 
 
 def view(folder: Path, text: str, lang: str | None) -> Answer:
-    """The explorer page, as `graphplan view` writes it (the plans at the A1 sheet's scales)."""
+    """The explorer page, as `graphplan view` writes it: a lever mechanism's (the plans at the A1
+    sheet's scales) or a cam's (cli/view.py view_cam: the construction of `graphplan cam`)."""
     from graphplan import api
     from graphplan.report.explorer import explorer_html
     tree = _tree(text)
-    from graphplan.model.cam import is_cam
-    if is_cam(tree):
-        raise GraphplanError("the explorer shows lever mechanisms; a cam scene has graphplan cam and its sheet",
-                             SCENE)
-    st = api.study(_cam_or_study(tree)[1]).value
+    kind, obj = _cam_or_study(tree)
     lang = _lang(lang, tree)
-    plans = api.plans(st, precision=0.5, format="A1").value
-    page = explorer_html(st, precision=0.5, step=1.0, lang=lang, plans=plans)
+    if kind == "gears":
+        raise GraphplanError("the explorer shows lever mechanisms and cams; a gear scene has graphplan gears "
+                             "and its sheet (docs/gears.md)", SCENE)
+    if kind == "cam":
+        from graphplan.exact.cam import solve
+        from graphplan.report.camview import cam_html
+        from graphplan.sheets.cam import construct_on
+        from graphplan.sheets.form import form
+        sol = solve(obj)
+        page = cam_html(sol, construct_on(sol, form("A1"), None, 0.5), step=1.0, lang=lang, scene=SCENE)
+    else:
+        st = api.study(obj).value
+        plans = api.plans(st, precision=0.5, format="A1").value
+        page = explorer_html(st, precision=0.5, step=1.0, lang=lang, plans=plans)
     return Answer(body=page.encode("utf-8"), media="text/html; charset=utf-8",
                   headers={"Content-Disposition": 'attachment; filename="explorer.html"'})
 
@@ -167,9 +208,10 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
     files: list[tuple[str, bytes]] = []
     if kind == "cam":
         from graphplan.exact.cam import solve
-        from graphplan.graphic.cam import construct
+        from graphplan.sheets.cam import construct_on
+        from graphplan.sheets.form import form
         sol = solve(obj)
-        g = api.Cam((sol, construct(sol, None, 0.5)))
+        g = api.Cam((sol, construct_on(sol, form("A1"), None, 0.5)))     # `graphplan cam`'s construction
         doc = g.to_json()
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
@@ -179,6 +221,10 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
                 err = p["error_pct"].get(e)
                 w.writerow([p["phi_deg"], q, p["exact"][q], p["graphical"][q], "" if err is None else err])
         files.append(("cam.csv", buf.getvalue().encode()))
+        return Answer(body=zipped(files), media="application/zip",
+                      headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+    if kind == "gears":
+        files = gears_tables(_gears_doc(obj))
         return Answer(body=zipped(files), media="application/zip",
                       headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
     st = obj
@@ -207,6 +253,57 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
     files.append(("plans.csv", buf.getvalue().encode()))
     return Answer(body=zipped(files), media="application/zip",
                   headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+
+
+def _csv(rows: list[list[Any]]) -> bytes:
+    import csv
+    buf = io.StringIO()
+    csv.writer(buf, lineterminator="\n").writerows(rows)
+    return buf.getvalue().encode()
+
+
+def gears_tables(doc: dict[str, Any]) -> list[tuple[str, bytes]]:
+    """`gears --json` as CSV: ``pair.csv`` (each quantity of the pair by wheel: exact, graphical, error
+    %, and εα with its bound), ``sliding.csv`` (λ1, λ2 along N1N2), ``train.csv`` (the teeth, u1H and
+    the angular velocities by member: exact, graphical, error %)."""
+    files: list[tuple[str, bytes]] = []
+    e = lambda v: "" if v is None else v        # noqa: E731
+    p = doc.get("pair")
+    if p is not None:
+        g = p.get("graphical", {})
+        rows: list[list[Any]] = [["quantity", "wheel", "exact", "graphical", "error_pct", "bound"]]
+        for q in ("z", "x"):
+            rows += [[q, k + 1, p[q][k], "", "", ""] for k in (0, 1)]
+        for q in ("r_m", "rb_m", "rw_m", "ra_m", "rf_m", "s_m", "sa_m"):
+            for k in (0, 1):
+                gr = g.get(q, [None, None])[k] if q in g else None
+                er = g.get("error_pct", {}).get(q[:-2], [None, None])[k]
+                rows.append([q, k + 1, p[q][k], e(gr), e(er), ""])
+        for q in ("module_m", "alpha_deg", "addendum", "clearance", "alpha_w_deg", "a_m", "a_w_m", "y", "delta_y",
+                  "pitch_m", "base_pitch_m", "line_of_action_m"):
+            rows.append([q, "", p[q], "", "", ""])
+        c = p["contact_ratio"]
+        rows.append(["contact_ratio", "", c["exact"], e(c["graphical"]), e(c["error_pct"]), e(c["bound"])])
+        files.append(("pair.csv", _csv(rows)))
+        rows = [["point", "rho1_m", "lambda1", "lambda2"]]
+        rows += [[s.get("point", ""), s["rho1_m"], e(s["lambda1"]), e(s["lambda2"])] for s in p["sliding"]]
+        files.append(("sliding.csv", _csv(rows)))
+    t = doc.get("planetary")
+    if t is not None:
+        g = t.get("graphical", {})
+        rows = [["quantity", "member", "exact", "graphical", "error_pct", "bound"]]
+        members = ["1", "2", "3"] if t["type"] == "A" else ["1", "2", "2'", "3"]
+        rows += [["z", m, z, "", "", ""] for m, z in zip(members, t["z"])]
+        rows += [["planets", "", t["planets"], "", "", ""], ["module_m", "", t["module_m"], "", "", ""]]
+        r = t["ratio"]
+        rows.append(["u1H", "", r["exact"], e(r["graphical"]), e(r["error_pct"]), e(r["bound"])])
+        if t["ratio_required"] is not None:
+            rows.append(["u1H_wanted", "", t["ratio_required"], "", e(r.get("required_error_pct")), ""])
+        for m, w in t["omega_rad_s"].items():
+            rows.append(["omega_rad_s", m, w, e(g.get("omega_rad_s", {}).get(m)),
+                         e(g.get("error_pct", {}).get(m)), ""])
+        files.append(("train.csv", _csv(rows)))
+    return files
 
 
 def grade(folder: Path, key: bytes, student: bytes, signed: bool) -> Answer:
@@ -275,6 +372,9 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
     from urllib.parse import quote
     tree = _tree(text)
     from graphplan.model.cam import is_cam
+    from graphplan.model.gears import is_gears
+    if is_gears(tree) and "cam" not in tree:
+        return _gears_preview(tree, _lang(lang, tree))
     if is_cam(tree):
         return _cam_preview(tree, _lang(lang, tree))
     from graphplan.exact.positions import study
@@ -422,6 +522,34 @@ def _cam_preview(tree: dict[str, Any], lang: str) -> Answer:
     svg = _page(profile_drawing(sol, construct(sol, None, 0.5), lang))
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
                   headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "cam"})
+
+
+def _gears_preview(tree: dict[str, Any], lang: str) -> Answer:
+    """The meshing and the planetary train's pictures side by side, as `graphplan gears --svg` draws
+    them (graphic.gears; the page scales the drawing down)."""
+    from graphplan.drawing.svg import page_for, render
+    from graphplan.graphic.gears import construct_mesh, construct_train
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.record import Record
+    from graphplan.model.gears import build as build_gears
+    gears = build_gears(tree, SCENE)
+    sol = solve(gears)
+    parts = []
+    if sol.pair is not None:
+        parts.append(construct_mesh(sol.pair, 0.5, lang).record)
+    if sol.train is not None:
+        parts.append(construct_train(sol.train, 0.5, lang).record)
+    both = Record(title=gears.title_in(lang))
+    right = None
+    for rec in parts:
+        x0, y0, x1, _ = rec.bounds()
+        moved = rec if right is None else rec.moved(right + 20.0 - x0, both.bounds()[1] - y0)
+        both.extend(moved)
+        right = moved.bounds()[2]
+    page, w, h = page_for(both)
+    svg = render(page, w, h, both.title, embed_font=False)
+    return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
+                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "gears"})
 
 
 JOBS = {"check": check, "sheet": sheet, "view": view, "tables": tables, "grade": grade, "preview": preview}

@@ -1,7 +1,8 @@
 """The page's templates: each mechanism of the course as a form of its values (the lab's symbols,
 units, Ukrainian and English words) and the scene TOML those values make (docs/scenes.md,
-docs/cams.md). The TOML is written here, on the server, so the page and the command line read one
-scene format; every number is checked finite and every text is written as a TOML string."""
+docs/cams.md, docs/gears.md). The TOML is written here, on the server, so the page and the command
+line read one scene format; every number is checked finite and every text is written as a TOML
+string."""
 from __future__ import annotations
 
 import json
@@ -189,6 +190,36 @@ def cam_rocking(v, branch):
               f"centre_distance = {v['a']:g}\nroller_radius = {v['rr']:g}\n" + _cam_tail(v))
 
 
+def gear_pair_and_train(v, branch, kind: str):
+    """An external involute pair (docs/gears.md: shifts given or "auto") and a planetary train of
+    ``kind`` A or B chosen for its ratio u1H with K planets."""
+    shifts = '"auto"' if v["shifts"] == "auto" else f"[{v['x1']:g}, {v['x2']:g}]"
+    uk, en = (("Зубчаста передача і планетарний редуктор", "A gear pair and a planetary reducer") if kind == "A"
+              else ("Зубчаста передача і дворядний планетарний редуктор", "A gear pair and a two-row planetary reducer"))
+    return (_head(v, uk, en, "ТММ.03.00.000")
+            + f"\n[gears]\nz = [{v['z1']:g}, {v['z2']:g}]\nmodule = {v['m']:g}\nshifts = {shifts}\n"
+              f"pressure_angle_deg = 20\naddendum = 1.0\nclearance = 0.25\n"
+            + f'\n[planetary]\ntype = "{kind}"\nratio = {v["u"]:g}\nplanets = {v["K"]:g}\nmodule = {v["mp"]:g}\n'
+              f"omega = {v['omega']:g}\n")
+
+
+def gear_fields(z1, z2, m, shifts, x1, x2, u, k, mp, omega) -> list[Field]:
+    return [F("z1", "z_1", "", z1, "число зубців шестірні", "teeth of the pinion"),
+            F("z2", "z_2", "", z2, "число зубців колеса", "teeth of the wheel"),
+            F("m", "m", "m", m, "модуль зачеплення", "module of the pair"),
+            F("shifts", "", "", shifts, "зміщення: задані чи вибрані за правилом (auto)",
+              "shifts: given or chosen by the rule (auto)", ("given", "auto")),
+            F("x1", "x_1", "", x1, "коефіцієнт зміщення шестірні", "shift coefficient of the pinion"),
+            F("x2", "x_2", "", x2, "коефіцієнт зміщення колеса", "shift coefficient of the wheel"),
+            F("u", "u_1H", "", u, "потрібне передаточне відношення планетарної передачі",
+              "wanted ratio of the planetary train"),
+            F("K", "K", "", k, "кількість сателітів", "number of planets"),
+            F("mp", "m", "m", mp, "модуль планетарної передачі", "module of the planetary train"),
+            F("omega", "ω_1", "rad/s", omega, "кутова швидкість центрального колеса 1",
+              "angular velocity of the sun gear 1"),
+            *COMMON]
+
+
 MASS = "маса ланки {}", "mass of link {}"
 
 
@@ -290,6 +321,12 @@ TEMPLATES: dict[str, Template] = {t.id: t for t in [
               *CAM_FIELDS, F("n1", "n_1", "rpm", 120, "частота обертання кулачка", "cam speed"),
               F("direction", "", "", "cw", "напрям обертання", "sense of rotation", ("ccw", "cw")), *COMMON],
              cam_rocking),
+    Template("gears_a", "Зубчаста передача і планетарна типу A", "Gear pair and a type A planetary train",
+             gear_fields(12, 30, 0.005, "given", 0.5, 0.3, 6, 3, 0.004, 150),
+             lambda v, b: gear_pair_and_train(v, b, "A")),
+    Template("gears_b", "Зубчаста передача і планетарна типу B", "Gear pair and a type B planetary train",
+             gear_fields(14, 35, 0.004, "auto", 0, 0, 12, 3, 0.003, 100),
+             lambda v, b: gear_pair_and_train(v, b, "B")),
 ]}
 
 

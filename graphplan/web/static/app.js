@@ -9,7 +9,7 @@ const WORDS = {
     values: "Значення варіанта", toml: "Сцена (TOML)", "crank angle": "Кут кривошипа",
     "branch help": "Два складання: натисніть на те, яке потрібне.", "branch reset": "Обрати складання знову",
     downloads: "Завантажити", sheets: "Аркуші", kinematics: "кінематика", forces: "сили", dynamics: "динаміка",
-    cam: "кулачок", format: "Формат", "file type": "Файл", "sheet language": "Мова аркуша",
+    cam: "кулачок", gears: "зубчасті механізми", format: "Формат", "file type": "Файл", "sheet language": "Мова аркуша",
     "download sheets": "Аркуші", "download toml": "TOML", "download view": "Інтерактивна сторінка",
     "download tables": "Таблиці CSV", "teacher part": "Ключі й оцінювання", keys: "Ключі групи",
     variants: "Таблиця варіантів (CSV)", base: "Базова сцена (TOML)", "base current": "або сцена зі сторінки студента",
@@ -27,7 +27,7 @@ const WORDS = {
     values: "The variant's values", toml: "Scene (TOML)", "crank angle": "Crank angle",
     "branch help": "Two assemblies: click the one you need.", "branch reset": "Choose the assembly again",
     downloads: "Download", sheets: "Sheets", kinematics: "kinematics", forces: "forces", dynamics: "dynamics",
-    cam: "cam", format: "Format", "file type": "File", "sheet language": "Sheet language",
+    cam: "cam", gears: "gears", format: "Format", "file type": "File", "sheet language": "Sheet language",
     "download sheets": "Sheets", "download toml": "TOML", "download view": "Interactive explorer",
     "download tables": "Tables CSV", "teacher part": "Keys and grading", keys: "The group's keys",
     variants: "Variants table (CSV)", base: "Base scene (TOML)", "base current": "or the scene of the student's part",
@@ -44,7 +44,7 @@ const WORDS = {
 const $ = (id) => document.getElementById(id);
 const state = {
   lang: "uk", templates: [], template: null, values: {}, branch: {}, mode: "template", toml: "",
-  assemblies: [], seq: 0, timer: null, grades: null,
+  assemblies: [], seq: 0, timer: null, grades: null, kind: "lever",
 };
 
 function t(key) { return (WORDS[state.lang] || WORDS.uk)[key] || WORDS.en[key] || key; }
@@ -107,8 +107,8 @@ function symbol(text) {
   return span;
 }
 
-const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°", "kg/m": "кг/м" },
-                en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m" } };
+const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°", "kg/m": "кг/м", "rad/s": "рад/с" },
+                en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m", "rad/s": "rad/s" } };
 
 const CHOICES = {
   uk: { ccw: "проти годинникової стрілки", cw: "за годинниковою стрілкою", cosine: "косинусний",
@@ -264,9 +264,13 @@ async function draw(seq) {
     const old = img.src;
     img.src = URL.createObjectURL(blob);
     if (old) URL.revokeObjectURL(old);
-    img.alt = (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
+    const kind = r.headers.get("X-Scene-Kind") || "lever";
+    img.alt = kind === "gears" ? (state.lang === "uk" ? "Зубчасте зачеплення і планетарна передача"
+                                                      : "The gear meshing and the planetary train")
+      : (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
     $("preview").classList.remove("stale");
-    $("phi-row").hidden = r.headers.get("X-Scene-Kind") === "cam";     // a cam's profile has no crank angle
+    $("phi-row").hidden = kind !== "lever";          // a cam's profile, a gear's meshing: no crank angle
+    if (kind !== state.kind) defaultKinds(kind);     // a scene of another kind: its own sheet ticked
     showAssemblies(keys, asm);
   } catch (e) {
     if (seq !== state.seq) return;
@@ -448,11 +452,16 @@ function chooseTemplate(id) {
   state.mode = "template";
   renderFields();
   sayBranch();
-  const cam = state.template.id.startsWith("cam");
-  document.querySelectorAll("input[name=kind]").forEach((c) => {
-    c.checked = cam ? c.value === "cam" : c.value === "kinematics";
-  });
+  const chosen = state.template.id;
+  defaultKinds(chosen.startsWith("cam") ? "cam" : chosen.startsWith("gears") ? "gears" : "lever");
   changed();
+}
+
+function defaultKinds(kind) {
+  // the sheet a scene of this kind has by default (graphplan sheet: kinematics, cam or gears)
+  state.kind = kind;
+  const first = kind === "lever" ? "kinematics" : kind;
+  document.querySelectorAll("input[name=kind]").forEach((c) => { c.checked = c.value === first; });
 }
 
 function showPart(which) {
