@@ -108,4 +108,6 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet; choose a larger --format")
     pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
              for page in laid]
-    return compose(f, pages, _fields(cam, lang), lang, f"{cam.title_in(lang)} — {w['subtitle']}")
+    from graphplan.sheets.compose import drawing_scale
+    tf = dict(_fields(cam, lang), scale=drawing_scale(doc["scales"]["mu_l_m_mm"], lang))   # the profile's scale
+    return compose(f, pages, tf, lang, f"{cam.title_in(lang)} — {w['subtitle']}")

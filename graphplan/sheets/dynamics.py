@@ -354,6 +354,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         items.append(Placed("notes", top_left(nrec, nb), nb))
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
-    tf = fields(st, lang, "", 3, 3)       # diagrams: no drawing scale (the scales are in the notes)
+    from graphplan.util.words import word
+    tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
     tf["subtitle"] = WORDS[lang]["subtitle"]
     return compose(f, pages, tf, lang, f"{st.mech.title} — {tf['subtitle']}")

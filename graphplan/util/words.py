@@ -516,6 +516,9 @@ WORDS: dict[str, tuple[str, str]] = {
                   "--step: the angle grid's step must be from 0.05 to 30 degrees, got {step}"),
     "view precision": ("--precision: точність креслення має бути від 0 до 10 мм, задано {p}",
                        "--precision: the drafting precision must be from 0 to 10 mm, got {p}"),
+    # sheet set
+    "tb changes": ("Змн.", "Rev."),
+    "tb no scale": ("—", "—"),
 }
 
 
