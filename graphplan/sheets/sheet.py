@@ -41,7 +41,7 @@ def build_cam_sheet(cam, f, options) -> Sheet:
     return build(cam, f, options)
 
 
-RAW: dict[str, Callable[..., Sheet]] = {
+BUILDERS: dict[str, Callable[..., Sheet]] = {
     "kinematics": build_kinematics_sheet,
     "forces": build_forces_sheet,
     "dynamics": build_dynamics_sheet,
@@ -49,6 +49,8 @@ RAW: dict[str, Callable[..., Sheet]] = {
 }
 
 # -- the sheets as one project (docs/scenes.md, "The sheets of a scene") -------------------------
+
+RAW = dict(BUILDERS)        # each kind's sheets numbered as their own set (counted by ``pages_of``)
 
 ORDER = ("kinematics", "forces", "dynamics", "gears", "cam")   # the course project's documents in order
 
@@ -131,4 +133,4 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
     return wrapper
 
 
-BUILDERS: dict[str, Callable[..., Sheet]] = {kind: numbered(kind, build) for kind, build in RAW.items()}
+BUILDERS = {kind: numbered(kind, build) for kind, build in RAW.items()}   # … numbered in the scene's project
