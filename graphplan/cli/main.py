@@ -44,6 +44,7 @@ COMMAND_MODULES: tuple[str, ...] = (
 def main(argv: Sequence[str] | None = None) -> int:
     from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
+    args = None
     try:
         args = build_parser().parse_args(argv)
         if not getattr(args, "handler", None):
@@ -52,7 +53,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         check_options(args)
         return args.handler(args)
     except GraphplanError as exc:
-        print(f"graphplan: {exc.line()}", file=sys.stderr)
+        print(f"graphplan: {exc.line(getattr(args, 'lang', None))}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return 0
