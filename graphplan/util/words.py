@@ -519,25 +519,25 @@ WORDS: dict[str, tuple[str, str]] = {
     # sheet set
     "tb changes": ("Змн.", "Rev."),
     "tb no scale": ("—", "—"),
-    "asm group at": ("група {label} не складається при куті корби {phi}°",
+    "asm group at": ("група {label} не складається при куті кривошипа {phi}°",
                      "group {label} cannot be assembled at crank angle {phi}°"),
-    "asm locks direction": ("{dyad} заклинює при куті корби {phi}°: її напрямні лінії збігаються (кут передачі "
-                            "0°), корба не може провести її далі",
+    "asm locks direction": ("{dyad} заклинює при куті кривошипа {phi}°: її напрямні лінії збігаються (кут передачі "
+                            "0°), кривошип не може провести її далі",
                             "{dyad} locks at crank angle {phi}°: its direction lines coincide (transmission angle "
                             "0°), the crank cannot drive it through"),
-    "asm beyond": ("{dyad} відкидає ланки далі ніж на {km} км при куті корби {phi}°: вона майже заклинена "
+    "asm beyond": ("{dyad} відкидає ланки далі ніж на {km} км при куті кривошипа {phi}°: вона майже заклинена "
                    "(куліса майже вздовж своєї напрямної?)",
                    "{dyad} throws its links beyond {km} km at crank angle {phi}°: it is nearly locked (a slot "
                    "almost along its guide?)"),
-    "asm never": ("{dyad} не складається за жодного кута корби", "{dyad} cannot be assembled at any crank angle"),
-    "asm locks line": ("{dyad} заклинює при куті корби {where}: її ланки стають в одну лінію, корба не може "
+    "asm never": ("{dyad} не складається за жодного кута кривошипа", "{dyad} cannot be assembled at any crank angle"),
+    "asm locks line": ("{dyad} заклинює при куті кривошипа {where}: її ланки стають в одну лінію, кривошип не може "
                        "провести її далі",
                        "{dyad} locks at crank angle {where}: its links come into line, the crank cannot drive it "
                        "through"),
-    "asm ranges": ("{dyad} не складається для кутів корби {ranges}",
+    "asm ranges": ("{dyad} не складається для кутів кривошипа {ranges}",
                    "{dyad} cannot be assembled for crank angles {ranges}"),
-    "asm through pivot": ("{dyad}: повзун {block} проходить через опору {pivot} при куті корби {phi}° (ближче "
-                          "ніж {mm} мм): напрям куліси там невизначений, її ω необмежена, корба не може "
+    "asm through pivot": ("{dyad}: повзун {block} проходить через опору {pivot} при куті кривошипа {phi}° (ближче "
+                          "ніж {mm} мм): напрям куліси там невизначений, її ω необмежена, кривошип не може "
                           "провести механізм далі",
                           "{dyad}: the block {block} passes through the pivot {pivot} at crank angle {phi}° "
                           "(within {mm} mm): the slotted link's direction is undefined there and its ω unbounded, "
