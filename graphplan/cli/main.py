@@ -53,7 +53,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         check_options(args)
         return args.handler(args)
     except GraphplanError as exc:
-        print(f"graphplan: {exc.line(getattr(args, 'lang', None))}", file=sys.stderr)
+        from graphplan.util.words import pick     # --lang, else the scene's, else Ukrainian
+        print(f"graphplan: {exc.line(pick(getattr(args, 'lang', None), exc.lang))}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return 0

@@ -17,12 +17,9 @@ class GraphplanError(Exception):
         super().__init__(message)
 
     def line(self, lang: str | None = None) -> str:
-        """The one line to print: in ``lang`` (the command's --lang), else the scene's language,
-        else Ukrainian — where the error says itself in both languages."""
-        text = str(self)
-        if self.said:
-            from graphplan.util.words import pick
-            text = self.said.get(pick(lang, self.lang), text)
+        """The one line to print, in ``lang`` where the error says itself in both languages (else,
+        and without ``lang``, its message as raised)."""
+        text = self.said.get(lang, str(self)) if lang else str(self)
         text = " ".join(text.split())
         return f"{self.where}: {text}" if self.where else text
 
