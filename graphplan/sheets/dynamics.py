@@ -135,13 +135,13 @@ def motor_table(doc: dict, lang: str) -> Record:
     rows = [[m["name"], w["chosen"] if m["chosen"] else w["scene"]],
             ["P_н, кВт" if uk else "P_n, kW", power],
             ["n_с / n_н, об/хв" if uk else "n_c / n_n, rpm", f"{num(m['rpm_sync'], lang)} / {num(m['rpm_rated'], lang)}"],
-            ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fixed(m['omega_sync'], lang, 2)} / {fixed(m['omega_rated'], lang, 2)}"],
-            ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fixed(m['moment_rated'], lang, 3)} / {fixed(m['moment_max'], lang, 3)}"],
+            ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fmt(m['omega_sync'], lang)} / {fmt(m['omega_rated'], lang)}"],
+            ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fmt(m['moment_rated'], lang)} / {fmt(m['moment_max'], lang)}"],
             ["M = Aω + B", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
             ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
             ["i, η", f"{num(m['ratio'], lang, 4)}, {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
-            ["ω_m, δ", f"{fixed(m['motion']['omega_mean'], lang, 4)}, {fixed(m['motion']['delta'], lang, 4)}"],
+            ["ω_m, δ", f"{fmt(m['motion']['omega_mean'], lang)}, {fmt(m['motion']['delta'], lang, 3)}"],
             ["M_{max} циклу, Н·м" if uk else "M_{max} on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
 
