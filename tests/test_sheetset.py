@@ -254,7 +254,7 @@ def test_the_flywheel_formula_is_typeset(shaper_a1):
     notes = [p.text for p in shaper_a1["dynamics"].record.items if p.kind == "text" and "|kl|/" in p.text]
     assert notes
     pieces = [(r.text, r.level) for r in runs(notes[0])]
-    assert ("m", -1) in pieces and not any("δ" in t and level for t, level in pieces)
+    assert ("m", -1) in pieces and ("2", 1) in pieces and not any("δ" in t and level for t, level in pieces)
 
 
 # -- the motor catalogue ------------------------------------------------------------------------------

@@ -213,6 +213,13 @@ def _text(prim: Primitive, h: float, chars: list[str]) -> str:
     each word where it was measured, so nothing laid out clear of lettering runs into it. (A
     ``textLength`` would not do: cairosvg ignores it.)"""
     drawn = _plain_set(prim.text, prim.size)
+    if drawn is not None and len(drawn) == 1:    # a single letter: its anchor and one x (the viewer's
+                                                 # font can only grow it about where it stands)
+        chars.append(drawn)
+        x, y = _xy(prim.points[0], h)
+        head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
+                f'text-anchor="{prim.anchor}" x="{x}" y="{y}"')
+        return f"{head}>{_text_escape(drawn)}</text>"
     if drawn is not None:         # the attributes in svgwrite's (sorted) order
         chars.append(drawn)
         x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \

@@ -41,7 +41,7 @@ WORDS = {
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "похибка, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
-           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}²·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
+           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
            "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ω_m = {w} рад/с",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
@@ -62,7 +62,7 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}²·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
+           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
            "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ω_m = {w} rad/s",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
@@ -173,9 +173,9 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang, 5)} {'Дж' if uk else 'J'}, "
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang, 5)}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang, 5)} {'Н·м' if uk else 'N·m'}",
-             f"tg ψ = μ_I·ω_{{m}}²(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, "
+             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, "
              f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, 3)}°",
-             f"J = μ_T·|kl|/(ω_{{m}}²·δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·"
+             f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·"
              f"{num(doc['delta'], lang)}) = {num(f.total, lang, 4)}; {fl} = J − {rot}·i² − {red} = "
              f"{num(f.flywheel, lang, 4)} {'кг·м²' if uk else 'kg·m²'}",
              w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=closure(doc["motion"]["closure"], lang)),
