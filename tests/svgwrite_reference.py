@@ -2,7 +2,7 @@
 extension, ElementTree's serializer): the oracle drawing.svg.render's text must equal byte for byte.
 
 One intended difference from the renderer svgwrite once drove: every letter of a text of two or more
-carries its own x (the packaged font's advances summed here from ``plain_width`` of each prefix), the
+lower than 5 mm (or not centred) carries its own x (the packaged font's advances summed here from ``plain_width`` of each prefix), the
 text anchored at its start, so that a viewer without the embedded font sets each word where it was measured (issue 32)."""
 from __future__ import annotations
 
@@ -104,7 +104,8 @@ def _text(dwg, prim: Primitive, h: float):
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
     if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1 \
-            and len(lettering(prim.text)) == 1:          # a single letter: one x, its own anchor
+            and (len(lettering(prim.text)) == 1 or (prim.size >= 5.0 and prim.anchor == "middle")):
+        # a single letter, a centred caption: one x, its own anchor
         return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
                         font_family=FONT, text_anchor=prim.anchor, fill="black")
     if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:

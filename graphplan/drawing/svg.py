@@ -203,18 +203,23 @@ def _kept_spaces(drawn: str) -> str:
     return "".join(out)
 
 
+WHOLE = 5.0     # mm: lettering this high (captions, headings) is anchored as a whole, lower letter by letter
+
+
 def _text(prim: Primitive, h: float, chars: list[str]) -> str:
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
     size with their baselines shifted by dy, the arrow → in a font that has it.
 
-    Every character is placed at its own x, where the packaged font's advances put it (``glyph_xs``),
-    and the text anchored at its start: a viewer that letters with another font — Inkscape, rsvg,
-    cairosvg, ImageMagick ignore the embedded @font-face and fall back to a wider sans — still sets
-    each word where it was measured, so nothing laid out clear of lettering runs into it. (A
-    ``textLength`` would not do: cairosvg ignores it.)"""
+    Every character of lettering lower than ``WHOLE`` is placed at its own x, where the packaged
+    font's advances put it (``glyph_xs``), the text anchored at its start: a viewer that letters with
+    another font — Inkscape, rsvg, cairosvg, ImageMagick ignore the embedded @font-face and fall back
+    to a wider sans — still sets each word where it was measured, so nothing laid out clear of
+    lettering runs into it. (A ``textLength`` would not do: cairosvg ignores it.) A single letter and
+    a centred caption or heading keep one x and their anchor: the fallback grows them about where
+    they stand, and with the font a viewer sets them as before (letter by letter, a 5 mm «Група»
+    would stand 0.25 mm off cairo's own setting — where the ink check splits its Г from its р)."""
     drawn = _plain_set(prim.text, prim.size)
-    if drawn is not None and len(drawn) == 1:    # a single letter: its anchor and one x (the viewer's
-                                                 # font can only grow it about where it stands)
+    if drawn is not None and (len(drawn) == 1 or (prim.size >= WHOLE and prim.anchor == "middle")):
         chars.append(drawn)
         x, y = _xy(prim.points[0], h)
         head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
