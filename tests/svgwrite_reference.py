@@ -1,12 +1,17 @@
 """The SVG renderer as it was written with svgwrite's objects (svgwrite.Drawing, its Inkscape
-extension, ElementTree's serializer): the oracle drawing.svg.render's text must equal byte for byte."""
+extension, ElementTree's serializer): the oracle drawing.svg.render's text must equal byte for byte.
+
+One intended difference from the renderer svgwrite once drove: every letter of a text of two or more
+lower than 5 mm (or not centred) carries its own x (the packaged font's advances summed here from ``plain_width`` of each prefix), the
+text anchored at its start, so that a viewer without the embedded font sets each word where it was measured (issue 32)."""
 from __future__ import annotations
 
 import re
 
-from graphplan.drawing.svg import (ARROW_FONT, DASHES, FONT, MISSING, _f, _svg_lettering, arc_path, text_outline,
+from graphplan.drawing.svg import (ARROW_FONT, DASHES, FONT, MISSING, _f, arc_path, text_outline,
                                    typeset as _set)
-from graphplan.graphic.record import LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering,
+                                      plain_width)
 from graphplan.util.markup import SMALL, is_plain
 
 _MISSING = re.compile(f"([{MISSING}])")
@@ -98,27 +103,46 @@ def _text(dwg, prim: Primitive, h: float):
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
-    anchor = {"start": "start", "middle": "middle", "end": "end"}[prim.anchor]
-    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
+    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1 \
+            and (len(lettering(prim.text)) == 1 or (prim.size >= 5.0 and prim.anchor == "middle")):
+        # a single letter, a centred caption: one x, its own anchor
         return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
-                        font_family=FONT, text_anchor=anchor, fill="black")
+                        font_family=FONT, text_anchor=prim.anchor, fill="black")
+    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
+        drawn = lettering(prim.text)
+        x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
+            plain_width(prim.text, prim.size)
+        el = dwg.text(_nbsp(drawn), x=[_xs(drawn, prim.size, x0) or _f(x0)], y=[_xy(prim.points[0], h)[1]],
+                      font_size=_f(em(prim.size)), font_family=FONT, text_anchor="start", fill="black")
+        return el
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
     pieces, total = _set(prim.text, prim.size)
     x_start = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * total
     el = dwg.text("", insert=_xy((x_start, prim.points[0][1]), h), font_size=_f(em(prim.size)), font_family=FONT,
                   fill="black")
-    shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
+    shift = 0.0    # the baseline shift (mm up)
     for piece, small, x0, up, advance in pieces:
         kw = {}
         if up != shift:
             kw["dy"] = [_f(shift - up)]
-        if abs(x0 - pen) > 1e-6:
-            kw["dx"] = [_f(x0 - pen)]
         if small:
             kw["font_size"] = _f(em(prim.size) * SMALL)
         if piece in MISSING:
             kw["font_family"] = ARROW_FONT
-        el.add(dwg.tspan(piece if piece in MISSING else _svg_lettering(piece), **kw))
-        shift, pen = up, x0 + advance
+        drawn = piece if piece in MISSING else lettering(piece)
+        kw["x"] = [_xs(drawn, prim.size * SMALL if small else prim.size, x_start + x0)]
+        el.add(dwg.tspan(_nbsp(drawn), **kw))
+        shift = up
     return el
+
+
+def _xs(drawn: str, size: float, x0: float) -> str:
+    """Each letter's x: ``x0`` plus the width of the letters before it."""
+    return " ".join(_f(x0 + plain_width(drawn[:i], size)) for i in range(len(drawn)))
+
+
+def _nbsp(drawn: str) -> str:
+    """Spaces SVG would strip or collapse (at the ends, after a space) as no-break spaces."""
+    return "".join("\u00a0" if c == " " and (i in (0, len(drawn) - 1) or drawn[i - 1] in " \u00a0") else c
+                   for i, c in enumerate(drawn))

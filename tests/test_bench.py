@@ -70,7 +70,7 @@ def test_chords_warn_at_the_quick_return():
 def test_refusals_are_one_line_for_impossible_geometry():
     with pytest.raises(AssemblyError) as info:
         scene_study(bench._scene_crank_slider(0.9))     # the rod is shorter than the crank
-    assert "cannot be assembled for crank angles" in info.value.line()
+    assert "cannot be assembled for crank angles" in info.value.line("en")
 
 
 def test_run_writes_rows_and_charts(tmp_path, monkeypatch):

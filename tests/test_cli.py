@@ -99,7 +99,7 @@ BAD = {
                             "[[link]]\njoints=['B','B2']\nlength=0.2\n[[link]]\njoints=['A','D']\nlength=0.2\n",
                             "joint 'D'", "joins nothing"),
     "unknown branch point": ("@[branch]\nB = 1\nZ = 1\n", "branch.Z", "no such point"),
-    "assembly": (None, "II(2-3) RRP", "°–"),
+    "assembly": (None, "II(2-3) ВВП", "°–"),      # the scene's language: Ukrainian (util.words "asm …")
 }
 
 
@@ -132,7 +132,8 @@ def test_assembly_range_is_exact(capsys, tmp_path):
     code, out, err = run(capsys, "analyze", str(path))
     a = np.degrees(np.arcsin(0.05 / 0.064))
     assert code == 2
-    assert f"{a:.1f}°–{180 - a:.1f}°" in err and f"{180 + a:.1f}°–{360 - a:.1f}°" in err
+    uk = lambda t: t.replace(".", ",")  # noqa: E731  (the scene's language: a decimal comma)
+    assert uk(f"{a:.1f}°–{180 - a:.1f}°") in err and uk(f"{180 + a:.1f}°–{360 - a:.1f}°") in err
 
 
 def test_usage_error_is_one_line():

@@ -174,7 +174,8 @@ def test_a_yoke_slot_almost_along_its_guide_is_refused(tmp_path):
     with the group and the angle."""
     text, _ = rm.rpp(0.0625, 5.960464477539063e-08, 1.0, 1.0)
     for command in ("analyze", "plans", "diagrams", "forces"):
-        refused([command, scene(tmp_path, text), "--json"], "II(2-3) RPP", "beyond 10 km", "crank angle")
+        refused([command, scene(tmp_path, text), "--json", "--lang", "en"], "II(2-3) RPP", "beyond 10 km",
+                "crank angle")
 
 
 def test_frame_guides_that_are_not_a_table(tmp_path):

@@ -121,7 +121,7 @@ def test_a_link_that_never_turns_is_no_output(tmp_path):
 
 def test_a_crank_slider_with_l_equal_r_is_refused_naming_the_angle(tmp_path):
     text = CRANK_SLIDER.replace("l = 0.307", "l = 0.064")
-    ends(["analyze", scene(tmp_path, text)], 2, "locks at crank angle 90.00°")
+    ends(["analyze", scene(tmp_path, text), "--lang", "en"], 2, "locks at crank angle 90.00°")
 
 
 RPR = """title = "slotted link"
@@ -153,7 +153,7 @@ start = 0
 def test_a_slotted_link_whose_pivot_lies_on_the_crank_circle_is_refused(tmp_path, r):
     """The rocker's pivot O on the crank pin's circle (O1O = r): the block passes through the pivot at
     270°, where the slotted link's direction is undefined (ω was 1.5·10¹⁴ rad/s)."""
-    ends(["analyze", scene(tmp_path, RPR.format(r=r))], 2, "passes through the pivot O", "270.00°")
+    ends(["analyze", scene(tmp_path, RPR.format(r=r)), "--lang", "en"], 2, "passes through the pivot O", "270.00°")
 
 
 def test_a_slotted_link_passing_near_its_pivot_is_answered_with_a_warning(tmp_path):

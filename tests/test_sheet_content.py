@@ -230,7 +230,7 @@ def test_clockwise_crank_derivative_follows_the_printed_phi():
     doc = dynamics_json(construct(analyse(st), divisions=24))
     lines = record_texts(positions_table(doc, "uk"))
     start = lines.index("ΔT, Дж") + 1
-    rows = [lines[start + 9 * k: start + 9 * (k + 1)] for k in range(24)]
+    rows = [lines[start + 10 * k: start + 10 * (k + 1)] for k in range(24)]   # 10 columns: A_д гр. added
     val = lambda s: float(s.replace("−", "-").replace(",", "."))  # noqa: E731
     phi = [val(r[1]) for r in rows]
     inertia = [val(r[2]) for r in rows]

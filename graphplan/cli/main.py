@@ -46,6 +46,7 @@ COMMAND_MODULES: tuple[str, ...] = (
 def main(argv: Sequence[str] | None = None) -> int:
     from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
+    args = None
     try:
         args = build_parser().parse_args(argv)
         if not getattr(args, "handler", None):
@@ -54,7 +55,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         check_options(args)
         return args.handler(args)
     except GraphplanError as exc:
-        print(f"graphplan: {exc.line()}", file=sys.stderr)
+        from graphplan.util.words import pick     # --lang, else the scene's, else Ukrainian
+        print(f"graphplan: {exc.line(pick(getattr(args, 'lang', None), exc.lang))}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return 0

@@ -76,8 +76,9 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     dpi = f", {args.dpi:g} dpi" if path.suffix.lower() == ".png" else ""
     size = f"{f.width:g}×{f.height:g} {unit('mm', args.lang)}{dpi}"
     for n, page in enumerate(sheet.pages, 1):
-        print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size, k=n,
-                   m=len(sheet.pages), n=len(page.placed)), file=sys.stderr)
+        print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size,
+                   k=page.fields.get("sheet", n), m=page.fields.get("sheets", len(sheet.pages)),
+                   n=len(page.placed)), file=sys.stderr)      # the sheet's number in its scene's project
     return 0
 
 

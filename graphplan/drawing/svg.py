@@ -170,38 +170,90 @@ def _em_text(size: float) -> str:
 _FONT_ATTR = _attr_escape(FONT)
 
 
+def glyph_xs(drawn: str, size: float, x0: float) -> list[float]:
+    """Where each character of ``drawn`` (lettering, one piece set without kerning) starts, mm: from
+    ``x0`` by the packaged font's advances × the em (graphic.record.plain_width, metrics.json)."""
+    advance, box = _advances_em()
+    k = em(size)
+    out, x = [], x0
+    for c in drawn:
+        out.append(x)
+        x += k * advance.get(c, box)
+    return out
+
+
+@lru_cache(maxsize=1)
+def _advances_em():
+    from graphplan.graphic.record import _advances
+    return _advances()
+
+
+def _xs_attr(xs: list[float]) -> str:
+    return " ".join(_f(v) for v in xs)
+
+
+def _kept_spaces(drawn: str) -> str:
+    """The spaces SVG would collapse or strip (at the ends, the second of two) as no-break spaces:
+    every character keeps its own x."""
+    out = []
+    for i, c in enumerate(drawn):
+        if c == " " and (i == 0 or i == len(drawn) - 1 or drawn[i - 1] in " \u00a0"):
+            c = "\u00a0"
+        out.append(c)
+    return "".join(out)
+
+
+WHOLE = 5.0     # mm: lettering this high (captions, headings) is anchored as a whole, lower letter by letter
+
+
 def _text(prim: Primitive, h: float, chars: list[str]) -> str:
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
-    size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
-    font that has it."""
+    size with their baselines shifted by dy, the arrow → in a font that has it.
+
+    Every character of lettering lower than ``WHOLE`` is placed at its own x, where the packaged
+    font's advances put it (``glyph_xs``), the text anchored at its start: a viewer that letters with
+    another font — Inkscape, rsvg, cairosvg, ImageMagick ignore the embedded @font-face and fall back
+    to a wider sans — still sets each word where it was measured, so nothing laid out clear of
+    lettering runs into it. (A ``textLength`` would not do: cairosvg ignores it.) A single letter and
+    a centred caption or heading keep one x and their anchor: the fallback grows them about where
+    they stand, and with the font a viewer sets them as before (letter by letter, a 5 mm «Група»
+    would stand 0.25 mm off cairo's own setting — where the ink check splits its Г from its р)."""
     drawn = _plain_set(prim.text, prim.size)
-    if drawn is not None:         # the attributes in svgwrite's (sorted) order
+    if drawn is not None and (len(drawn) == 1 or (prim.size >= WHOLE and prim.anchor == "middle")):
         chars.append(drawn)
         x, y = _xy(prim.points[0], h)
-        inner = _text_escape(drawn)
         head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
                 f'text-anchor="{prim.anchor}" x="{x}" y="{y}"')
+        return f"{head}>{_text_escape(drawn)}</text>"
+    if drawn is not None:         # the attributes in svgwrite's (sorted) order
+        chars.append(drawn)
+        x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
+            plain_width(prim.text, prim.size)
+        _, y = _xy(prim.points[0], h)
+        inner = _text_escape(_kept_spaces(drawn))
+        head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
+                f'text-anchor="start" x="{_xs_attr(glyph_xs(drawn, prim.size, x0)) or _f(x0)}" y="{y}"')
         return f"{head}>{inner}</text>" if inner else f"{head} />"
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
     pieces, x_start = placed(prim)
     x, y = _xy((x_start, prim.points[0][1]), h)
     spans = []
-    shift = pen = 0.0    # the baseline shift (mm up) and the pen's x so far
+    shift = 0.0    # the baseline shift (mm up) so far
     for piece, small, x0, up, advance in pieces:
         kw = {}
         if up != shift:
             kw["dy"] = _f(shift - up)
-        if abs(x0 - pen) > 1e-6:
-            kw["dx"] = _f(x0 - pen)
         if small:
             kw["font-size"] = _f(em(prim.size) * SMALL)
         if piece in MISSING:
             kw["font-family"] = ARROW_FONT
-        drawn = piece if piece in MISSING else _svg_lettering(piece)
+        drawn = piece if piece in MISSING else lettering(piece)
+        kw["x"] = _xs_attr(glyph_xs(drawn, prim.size * SMALL if small else prim.size, x_start + x0))
+        drawn = _kept_spaces(drawn)
         chars.append(drawn)
         spans.append(_tag("tspan", kw, _text_escape(drawn)))
-        shift, pen = up, x0 + advance
+        shift = up
     return _tag("text", {"x": x, "y": y, "font-size": _f(em(prim.size)), "font-family": FONT, "fill": "black"},
                 "".join(spans))
 

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from graphplan.util.words import Fixed, pair_kind, said, word
-from graphplan.util.errors import AssemblyError, SceneError
+from graphplan.util.errors import AssemblyError, SceneError, said_error
 from graphplan.exact.kinematics import REACH, Kinematics, solve
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.model.structure import Structure, analyse
@@ -67,8 +67,8 @@ class Study:
         for label, ok in kin.valid.items():
             if not np.all(ok):
                 bad = np.asarray(kin.phi_deg)[~ok]
-                raise AssemblyError(f"group {label} cannot be assembled at crank angle {bad[0]:.2f}°",
-                                    self.mech.source)
+                raise said_error(AssemblyError, "asm group at", self.mech.source, _lang(self.mech), label=label,
+                                 phi=Fixed(float(bad[0]), 2))
         return kin
 
     def from_position0(self, phi_deg) -> np.ndarray:
@@ -137,9 +137,8 @@ def check_assembly(mech: Mechanism, structure: Structure, kin: Kinematics | None
         if np.all(ok):
             phi, worst = worst_of[dyad.label]
             if worst < LOCK_SIN:
-                raise AssemblyError(f"{dyad.title} locks at crank angle {deg(phi, 2)}: its direction lines "
-                                    "coincide (transmission angle 0°), the crank cannot drive it through",
-                                    mech.source)
+                raise said_error(AssemblyError, "asm locks direction", mech.source, _lang(mech), dyad=_named(dyad),
+                                 phi=_angle(phi, 2))
             if dyad.kind == "RPR":
                 warnings += _block_near_pivot(mech, structure, kin, dyad, grid)
             angle = math.degrees(math.asin(min(worst, 1.0)))
@@ -149,18 +148,16 @@ def check_assembly(mech: Mechanism, structure: Structure, kin: Kinematics | None
             continue
         far = _beyond_reach(kin, dyad)
         if np.any(far):
-            raise AssemblyError(f"{dyad.title} throws its links beyond {REACH / 1000:g} km at crank angle "
-                                f"{deg(float(grid[far][0]), 2)}: it is nearly locked (a slot almost along "
-                                "its guide?)", mech.source)
+            raise said_error(AssemblyError, "asm beyond", mech.source, _lang(mech), dyad=_named(dyad),
+                             km=f"{REACH / 1000:g}", phi=_angle(float(grid[far][0]), 2))
         if not np.any(ok):
-            raise AssemblyError(f"{dyad.title} cannot be assembled at any crank angle", mech.source)
+            raise said_error(AssemblyError, "asm never", mech.source, _lang(mech), dyad=_named(dyad))
         ranges = _bad_ranges(mech, structure, dyad.label, grid, ok)
         if all((b - a) % 360.0 < 1e-3 or (a - b) % 360.0 < 1e-3 for a, b in ranges):
-            where = ", ".join(deg(a, 2) for a, _ in ranges)
-            raise AssemblyError(f"{dyad.title} locks at crank angle {where}: its links come into line, "
-                                "the crank cannot drive it through", mech.source)
-        text = ", ".join(f"{deg(a)}–{deg(b)}" for a, b in ranges)
-        raise AssemblyError(f"{dyad.title} cannot be assembled for crank angles {text}", mech.source)
+            raise said_error(AssemblyError, "asm locks line", mech.source, _lang(mech), dyad=_named(dyad),
+                             where=lambda lang: ", ".join(deg(a, 2, lang) for a, _ in ranges))
+        raise said_error(AssemblyError, "asm ranges", mech.source, _lang(mech), dyad=_named(dyad),
+                         ranges=lambda lang: ", ".join(f"{deg(a, 1, lang)}–{deg(b, 1, lang)}" for a, b in ranges))
     return warnings
 
 
@@ -200,10 +197,9 @@ def _block_near_pivot(mech: Mechanism, structure: Structure, kin: Kinematics, dy
             phi, near = float(fine[j]), float(fine_rho[j])
         step /= 1000.0
     if near < 1e-4 * largest:
-        raise AssemblyError(f"{dyad.title}: the block {outer_s.point} passes through the pivot {outer_c.point} "
-                            f"at crank angle {deg(phi % 360.0, 2)} (within {near * 1000:.2g} mm): the slotted "
-                            "link's direction is undefined there and its ω unbounded, the crank cannot drive it "
-                            "through", mech.source)
+        raise said_error(AssemblyError, "asm through pivot", mech.source, _lang(mech), dyad=_named(dyad),
+                         block=outer_s.point, pivot=outer_c.point, phi=_angle(phi, 2),
+                         mm=lambda lang: f"{near * 1000:.2g}".replace(".", "," if lang == "uk" else "."))
     w = float(np.max(np.abs(kin.bodies[carrier].omega)))
     return [said("warn block near pivot", dyad=_named(dyad), block=outer_s.point, mm=float(rho[k] * 1000),
                  pivot=outer_c.point, phi=Fixed(float(round(grid[k] % 360.0, 1) % 360.0), 1), w=w)]
@@ -215,9 +211,21 @@ def _named(dyad):
                              b=dyad.b)
 
 
-def deg(angle: float, digits: int = 1) -> str:
-    """A crank angle as text in [0, 360): 359.99 rounds to 0.0°, never to 360.0°."""
-    return f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
+def deg(angle: float, digits: int = 1, lang: str = "en") -> str:
+    """A crank angle as text in [0, 360): 359.99 rounds to 0.0°, never to 360.0° (a decimal comma in
+    Ukrainian)."""
+    text = f"{round(angle % 360.0, digits) % 360.0:.{digits}f}°"
+    return text.replace(".", ",") if lang == "uk" else text
+
+
+def _angle(angle: float, digits: int):
+    """A crank angle for a message in either language, without its degree sign (the words add it)."""
+    return lambda lang: deg(angle, digits, lang)[:-1]
+
+
+def _lang(mech: Mechanism) -> str | None:
+    """The scene's language (its ``lang``), what its errors speak unless --lang says otherwise."""
+    return mech.task.meta.get("lang")
 
 
 ZOOM = 20        # the worst transmission angle: each round samples a bracket at 2·ZOOM + 1 angles …

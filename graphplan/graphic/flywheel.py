@@ -9,7 +9,8 @@ The draftsman's sequence, in drawing millimetres over an abscissa of L mm for on
    gives the direction of the work curve's chord; A_c(φ) with μ_A = μ_M·μ_φ·H;
 3. the driving work A_d: the straight line from the origin to A_c(2π) (a constant M*_d, whose
    ordinate on the moment diagram is the ray's height H·A_c(L)/L);
-4. the change of kinetic energy ΔT = A_d − A_c, read between the two lines (μ_T = μ_A);
+4. the change of kinetic energy ΔT = A_d − A_c: both ordinates read at each division and subtracted,
+   as the lab's table does (μ_T = μ_A) — the sheet's table prints A_c, A_d and ΔT that agree;
 5. the diagram of I*_m(φ) (μ_I);
 6. the energy–mass (Wittenbauer) curve ΔT(I*_m) — φ eliminated, the points (I_k, ΔT_k) joined
    by the French curve — and its two tangents at tg ψ_max,min = μ_I·ω_m²·(1 ± δ)/(2·μ_T), which cut
@@ -162,7 +163,7 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     M_mid = read(mid.moment / mu_M, precision)
     A_drawn = integrate_by_chords(x, M_mid, H, 0.0)
     A = read(A_drawn, precision)
-    dT = read(A_drawn[-1] * x / L - A_drawn, precision)
+    dT = read(A_drawn[-1] * x / L, precision) - A        # A_d and A_c read at each division, subtracted
     I = read(at.inertia / mu_I, precision)
     wm, d = dyn.omega_mean, dyn.delta
     hi, lo = ((1 + d), (1 - d)) if slopes == "course" else ((1 + d / 2) ** 2, (1 - d / 2) ** 2)

@@ -96,8 +96,9 @@ def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
     """Seed 003's rule: the next size up — the smallest motor of the line with P_n ≥ the power."""
     line = sorted((m for m in catalogue() if m.rpm_sync == rpm_sync), key=lambda m: m.power_kW)
     if not line:
+        lines = ", ".join(f"{v:g}" for v in sorted({m.rpm_sync for m in catalogue()}, reverse=True))
         raise GraphplanError(f"dynamics.synchronous_rpm: the catalogue has no {rpm_sync:g} rpm line "
-                             "(3000, 1500)", where)
+                             f"({lines})", where)
     for m in line:
         if m.power_kW >= power_kW * (1 - 1e-12):
             return m

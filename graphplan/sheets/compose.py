@@ -13,7 +13,7 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from graphplan.drawing.layout import GAP, Placed
@@ -52,6 +52,19 @@ class Sheet:
     placed: list[Placed] = field(default_factory=list)
     lang: str = "uk"
     more: list[Sheet] = field(default_factory=list)
+    fields: dict[str, str] = field(default_factory=dict)    # the title block's fields as lettered
+
+    def number(self, first: int, total: int, designation: str | None = None) -> Sheet:
+        """Letter the set's title blocks as sheets ``first``, ``first + 1`` … of a project of
+        ``total`` sheets under ``designation`` (sheets/sheet.py numbers a scene's sheets as one
+        project): form 1 on this sheet, form 2a on the later sheets of the set. Returns self."""
+        for k, page in enumerate(self.pages):
+            tf = dict(page.fields, sheet=str(first + k), sheets=str(total))
+            if designation is not None:
+                tf["designation"] = designation
+            page.record = _lettered(page.form, page.record, tf, page.lang, k == 0)
+            page.fields = tf
+        return self
 
     @property
     def pages(self) -> list[Sheet]:
@@ -110,19 +123,31 @@ def keep_out(f: Form) -> tuple[float, float, float, float]:
 
 
 def compose(f: Form, pages: list[list[Placed]], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
-    """Each page's frame, title block ("sheet N of M") and placed drawings: the set's sheets."""
+    """Each page's frame, title block and placed drawings: the set's sheets, numbered "sheet N of
+    M" of the set (form 1 on the first, form 2a on the later ones) until ``Sheet.number`` numbers
+    them in their project."""
     sheets = []
     for n, placed in enumerate(pages, 1):
-        tf = dict(title_fields, sheet=str(n), sheets=str(len(pages)))
         rec = Record(title if n == 1 else f"{title} ({n})")
         rec.extend(frame(f))
-        rec.extend(title_block(f, tf, lang))
         for p in placed:
             rec.extend(p.record)
-        sheets.append(Sheet(f, rec, placed, lang))
+        sheets.append(Sheet(f, rec, placed, lang, fields=dict(title_fields)))
     first = sheets[0]
     first.more = sheets[1:]
-    return first
+    return first.number(1, len(pages))
+
+
+def _lettered(f: Form, rec: Record, tf: dict[str, str], lang: str, first: bool) -> Record:
+    """The page's record with its title block (form 1 on a document's first sheet, else form 2a)
+    lettered from ``tf`` in place of the one it had: the frame first, the block, the drawings."""
+    from graphplan.sheets.form import title_block_2a
+    out = Record(rec.title, [p for p in rec.items if not (p.layer == "frame" and p.step == "title block")],
+                 dict(rec.scales))
+    block = title_block(f, tf, lang) if first else title_block_2a(f, tf, lang)
+    n = len(frame(f).items)
+    out.items[n:n] = [replace(p, step="title block") for p in block.items]
+    return out
 
 
 def defects(sheet: Sheet) -> list[str]:

@@ -41,7 +41,7 @@ WORDS = {
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "похибка, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
-           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_m²δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
+           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
            "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ω_m = {w} рад/с",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
@@ -62,7 +62,7 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_m²δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
+           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
            "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ω_m = {w} rad/s",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
@@ -88,16 +88,21 @@ def positions_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     uk = lang == "uk"
     head = [w["n"], "φ, °", "I^*_м, кг·м²" if uk else "I^*_m, kg·m²", "dI^*_м/dφ, кг·м²" if uk else "dI^*_m/dφ, kg·m²",
-            "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m", "A_с, Дж" if uk else "A_c, J",
+            "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m",
+            "A_с гр., Дж" if uk else "A_c gr., J", "A_д гр., Дж" if uk else "A_d gr., J",
             "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J"]
     ps = doc["positions"]
     cols = [column([p[k] for p in ps], lang) for k in ("inertia", "d_inertia", "moment_resistance", "moment_driving")]
-    cols += [column([p["graphical"][k] for p in ps], lang) for k in ("work_resistance", "energy")]
+    # the graphical columns as the work diagram is read: A_c and A_d measured at each division, ΔT = A_d − A_c
+    # their difference (graphic.flywheel) — so A_d here is ΔT + A_c to the unit, the row checks by subtraction
+    a_c = [p["graphical"]["work_resistance"] for p in ps]
+    d_t = [p["graphical"]["energy"] for p in ps]
+    cols += [column(a_c, lang), column([t + a for t, a in zip(d_t, a_c)], lang), column(d_t, lang)]
     cols.append(column([p["energy"] for p in ps], lang))
     rows = [head]
     for k, p in enumerate(ps):
         rows.append([str(p["index"]), fixed(p["turn_deg"], lang, 1)] + [c[k] for c in cols])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 18.0, 20.0, 18.0], row_h=6.0, size=2.5,
+    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=6.0, size=2.5,
                  title=w["positions"])
 
 
@@ -130,13 +135,13 @@ def motor_table(doc: dict, lang: str) -> Record:
     rows = [[m["name"], w["chosen"] if m["chosen"] else w["scene"]],
             ["P_н, кВт" if uk else "P_n, kW", power],
             ["n_с / n_н, об/хв" if uk else "n_c / n_n, rpm", f"{num(m['rpm_sync'], lang)} / {num(m['rpm_rated'], lang)}"],
-            ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fixed(m['omega_sync'], lang, 2)} / {fixed(m['omega_rated'], lang, 2)}"],
-            ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fixed(m['moment_rated'], lang, 3)} / {fixed(m['moment_max'], lang, 3)}"],
+            ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fmt(m['omega_sync'], lang)} / {fmt(m['omega_rated'], lang)}"],
+            ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fmt(m['moment_rated'], lang)} / {fmt(m['moment_max'], lang)}"],
             ["M = Aω + B", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
             ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
             ["i, η", f"{num(m['ratio'], lang, 4)}, {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
-            ["ω_m, δ", f"{fixed(m['motion']['omega_mean'], lang, 4)}, {fixed(m['motion']['delta'], lang, 4)}"],
+            ["ω_m, δ", f"{fmt(m['motion']['omega_mean'], lang)}, {fmt(m['motion']['delta'], lang, 3)}"],
             ["M_{max} циклу, Н·м" if uk else "M_{max} on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
 
@@ -168,9 +173,9 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang, 5)} {'Дж' if uk else 'J'}, "
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang, 5)}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang, 5)} {'Н·м' if uk else 'N·m'}",
-             f"tg ψ = μ_I·ω_m²(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, "
+             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, "
              f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, 3)}°",
-             f"J = μ_T·|kl|/(ω_m²δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·"
+             f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·"
              f"{num(doc['delta'], lang)}) = {num(f.total, lang, 4)}; {fl} = J − {rot}·i² − {red} = "
              f"{num(f.flywheel, lang, 4)} {'кг·м²' if uk else 'kg·m²'}",
              w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=closure(doc["motion"]["closure"], lang)),
@@ -354,6 +359,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         items.append(Placed("notes", top_left(nrec, nb), nb))
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
-    tf = fields(st, lang, "", 3, 3)       # diagrams: no drawing scale (the scales are in the notes)
+    from graphplan.util.words import word
+    tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
     tf["subtitle"] = WORDS[lang]["subtitle"]
     return compose(f, pages, tf, lang, f"{st.mech.title} — {tf['subtitle']}")

@@ -84,7 +84,7 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     """Title block form 1 (185×55 mm) in the frame's bottom-right corner, filled from ``fields``:
     designation, title, student, teacher, organisation, scale, sheet, sheets, letter, mass."""
     cap = {k: _word("tb " + k.replace("_", " "), lang) for k in (
-        "rev", "sheet", "doc", "sign", "date", "drawn", "checked", "tech", "norm", "approved", "letter", "mass",
+        "changes", "sheet", "doc", "sign", "date", "drawn", "checked", "tech", "norm", "approved", "letter", "mass",
         "scale", "sheet_no", "sheets")}
     rec = Record("title block")
     _, fy0, fx1, _ = f.frame_box
@@ -106,7 +106,7 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
             _line(rec, (x, Y(30)), (x, Y(55)), True)
         else:
             _line(rec, (x, Y(0)), (x, Y(55)), True)
-    heads = [cap["rev"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
+    heads = [cap["changes"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
     for (a, b), head in zip(zip(cols, cols[1:]), heads):
         _text(rec, X((a + b) / 2), Y(30), head, size=_fit(head, b - a - 1, (2.5, 2.0), 1.0), row=True)
     roles = [cap["drawn"], cap["checked"], cap["tech"], "", cap["norm"], cap["approved"]]
@@ -140,6 +140,36 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     _block_text(rec, fields.get("title", ""), X(66), Y(15), 68, 25, (5.0, 3.5, 2.5))
     _block_text(rec, fields.get("organisation", ""), X(136), Y(0), 48, 15, (3.5, 2.5))
     _block_text(rec, fields.get("subtitle", ""), X(66), Y(0), 68, 15, (3.5, 2.5))
+    return rec
+
+
+def title_block_2a(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
+    """Title block form 2a (185×15 mm, GOST 2.104) of a document's later sheets, in the frame's
+    bottom-right corner: the left part 65 mm (columns 7 | 10 | 23 | 15 | 10, two revision rows over
+    the header row), the designation 110×15, the sheet's number in a 10 mm column (the caption
+    "Арк." in its upper 7 mm, the number in the lower 8 mm)."""
+    cap = {k: _word("tb " + k, lang) for k in ("changes", "sheet", "doc", "sign", "date")}
+    rec = Record("title block")
+    _, fy0, fx1, _ = f.frame_box
+    x0, y0 = fx1 - BLOCK_W, fy0
+    X = lambda dx: x0 + dx  # noqa: E731
+    Y = lambda dy: y0 + dy  # noqa: E731
+    rec.add("polygon", [(X(0), Y(0)), (X(185), Y(0)), (X(185), Y(15)), (X(0), Y(15))],
+            role="frame", layer="frame")
+    _line(rec, (X(0), Y(10)), (X(65), Y(10)), False)       # the revision rows: thin
+    _line(rec, (X(0), Y(5)), (X(65), Y(5)), True)          # the header row under a thick line
+    cols = [0, 7, 17, 40, 55, 65]
+    for c in cols[1:]:
+        _line(rec, (X(c), Y(0)), (X(c), Y(15)), True)
+    _line(rec, (X(175), Y(0)), (X(175), Y(15)), True)
+    _line(rec, (X(175), Y(8)), (X(185), Y(8)), True)
+    heads = [cap["changes"], cap["sheet"], cap["doc"], cap["sign"], cap["date"]]
+    for (a, b), head in zip(zip(cols, cols[1:]), heads):
+        _text(rec, X((a + b) / 2), Y(0), head, size=_fit(head, b - a - 1, (2.5, 2.0), 1.0), row=True)
+    _text(rec, X(180), Y(9.5), cap["sheet"], size=_fit(cap["sheet"], 9, (2.5, 2.0), 1.0))
+    _text(rec, X(180), Y(2.25), fields.get("sheet", ""), size=3.5)
+    designation = fields.get("designation", "")
+    _text(rec, X(120), Y(5), designation, size=_fit(designation, 106, (7.0, 5.0, 3.5)))
     return rec
 
 

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from graphplan.sheets.compose import FORMATS_OUT, Sheet, SheetOptions, drawing_scale, page_path  # noqa: F401
+from graphplan.sheets.compose import (FORMATS_OUT, Sheet, SheetOptions, drawing_scale, options_of,  # noqa: F401
+                                      page_path)
 
 Options = SheetOptions
 
@@ -53,3 +54,90 @@ BUILDERS: dict[str, Callable[..., Sheet]] = {
     "cam": build_cam_sheet,
     "gears": build_gears_sheet,
 }
+
+# -- the sheets as one project (docs/scenes.md, "The sheets of a scene") -------------------------
+
+RAW = dict(BUILDERS)        # each kind's sheets numbered as their own set (counted by ``pages_of``)
+
+ORDER = ("kinematics", "forces", "dynamics", "gears", "cam")   # the course project's documents in order
+
+
+def document_number(kind: str) -> int:
+    """The kind's document number in the project (its place in ``ORDER``; a kind not listed comes
+    after them all): kinematics 1, forces 2, dynamics 3, gears 4, cam 5."""
+    return ORDER.index(kind) + 1 if kind in ORDER else len(ORDER) + 1
+
+
+def designation(base: str, kind: str) -> str:
+    """The designation of the kind's document: the scene's ``base`` with its last group of digits
+    replaced by the document's number, as wide as that group ("ТММ.КП.00.000" → "ТММ.КП.00.003"
+    for the dynamics); a base not ending in digits gets ".N" appended; none stays none."""
+    import re
+    if not base:
+        return base
+    n = document_number(kind)
+    m = re.search(r"(\d+)$", base)
+    if m is None:
+        return f"{base}.{n}"
+    return base[:m.start()] + str(n).zfill(len(m.group(1)))
+
+
+def kinds_of(scene, kind: str) -> tuple[str, ...]:
+    """The sheets the scene makes, in the project's order: a lever mechanism's kinematics always,
+    forces when it loads a link (a mass, an inertia or a [[force]]), dynamics when it has a
+    [dynamics] table; a cam or gear scene its one sheet. ``kind`` (the sheet asked for) is among
+    them."""
+    kinds = {kind}
+    mech = getattr(scene, "mech", None)
+    if mech is not None:
+        from graphplan.model.mechanism import Drive
+        from graphplan.sheets.forces import has_loads
+        kinds.add("kinematics")
+        if has_loads(scene):
+            kinds.add("forces")
+        if mech.task.flywheel or mech.drive != Drive():
+            kinds.add("dynamics")
+    return tuple(sorted(kinds, key=lambda k: (document_number(k), k)))
+
+
+_PAGES: dict[tuple, int] = {}
+
+
+def pages_of(kind: str, scene, f, options) -> int:
+    """How many sheets the kind's document takes on the format ``f``: one on A1 (every kind
+    composes on one A1 sheet), else counted by composing it (remembered per scene, format and
+    options; the language changes no composition)."""
+    if f.name == "A1":
+        return 1
+    opts = options_of(options)
+    key = (kind, repr(getattr(scene, "mech", scene)), f.name, opts.positions, tuple(opts.accel or ()),
+           opts.precision)
+    if key not in _PAGES:
+        if len(_PAGES) >= 64:
+            _PAGES.pop(next(iter(_PAGES)))
+        _PAGES[key] = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk",
+                                                           kind)).pages)
+    return _PAGES[key]
+
+
+def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
+    """``build`` with its sheets numbered in the scene's project: the designation ending in the
+    kind's document number, "Аркуш" the running number over the project's documents in order (an
+    A2/A3 set's later sheets continue it), "Аркушів" the project's total."""
+    import functools
+
+    @functools.wraps(build)
+    def wrapper(scene, f, options) -> Sheet:
+        sheet = build(scene, f, options)
+        kinds = kinds_of(scene, kind)
+        first, total = 1, 0
+        for k in kinds:
+            n = len(sheet.pages) if k == kind else pages_of(k, scene, f, options)
+            if document_number(k) < document_number(kind):
+                first += n
+            total += n
+        return sheet.number(first, total, designation(sheet.fields.get("designation", ""), kind))
+    return wrapper
+
+
+BUILDERS = {kind: numbered(kind, build) for kind, build in RAW.items()}   # … numbered in the scene's project

@@ -9,13 +9,27 @@ class GraphplanError(Exception):
     for geometry, the crank-angle range where it fails.
     """
 
-    def __init__(self, message: str, where: str | None = None):
+    def __init__(self, message: str, where: str | None = None, said: dict[str, str] | None = None,
+                 lang: str | None = None):
         self.where = where
+        self.said = said or {}      # the message in each language (util.words.said); ``message`` its English
+        self.lang = lang            # the scene's language: what ``line`` speaks unless told
         super().__init__(message)
 
-    def line(self) -> str:
-        text = " ".join(str(self).split())
+    def line(self, lang: str | None = None) -> str:
+        """The one line to print, in ``lang`` where the error says itself in both languages (else,
+        and without ``lang``, its message as raised)."""
+        text = self.said.get(lang, str(self)) if lang else str(self)
+        text = " ".join(text.split())
         return f"{self.where}: {text}" if self.where else text
+
+
+def said_error(cls: type[GraphplanError], key: str, where: str | None, lang: str | None, /, **fields) -> GraphplanError:
+    """An error of ``cls`` worded by the catalogue (util.words ``key``) in both languages: English
+    as its message, the scene's ``lang`` the one its line speaks."""
+    from graphplan.util.words import said
+    texts = said(key, **fields)
+    return cls(texts["en"], where, texts, lang)
 
 
 class SceneError(GraphplanError):

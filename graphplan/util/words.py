@@ -520,6 +520,32 @@ WORDS: dict[str, tuple[str, str]] = {
     # gears: graphplan bench --section gears (bench/gears.py)
     "bench gears": ("зубчасті", "gears"), "bench contact ratio": ("перекриття εα", "contact ratio"),
     "bench ratio u1H": ("відношення u1H", "ratio u1H"), "bench failure": ("межа методу", "failure"),
+    # sheet set
+    "tb changes": ("Змн.", "Rev."),
+    "tb no scale": ("—", "—"),
+    "asm group at": ("група {label} не складається при куті кривошипа {phi}°",
+                     "group {label} cannot be assembled at crank angle {phi}°"),
+    "asm locks direction": ("{dyad} заклинює при куті кривошипа {phi}°: її напрямні лінії збігаються (кут передачі "
+                            "0°), кривошип не може провести її далі",
+                            "{dyad} locks at crank angle {phi}°: its direction lines coincide (transmission angle "
+                            "0°), the crank cannot drive it through"),
+    "asm beyond": ("{dyad} відкидає ланки далі ніж на {km} км при куті кривошипа {phi}°: вона майже заклинена "
+                   "(куліса майже вздовж своєї напрямної?)",
+                   "{dyad} throws its links beyond {km} km at crank angle {phi}°: it is nearly locked (a slot "
+                   "almost along its guide?)"),
+    "asm never": ("{dyad} не складається за жодного кута кривошипа", "{dyad} cannot be assembled at any crank angle"),
+    "asm locks line": ("{dyad} заклинює при куті кривошипа {where}: її ланки стають в одну лінію, кривошип не може "
+                       "провести її далі",
+                       "{dyad} locks at crank angle {where}: its links come into line, the crank cannot drive it "
+                       "through"),
+    "asm ranges": ("{dyad} не складається для кутів кривошипа {ranges}",
+                   "{dyad} cannot be assembled for crank angles {ranges}"),
+    "asm through pivot": ("{dyad}: повзун {block} проходить через опору {pivot} при куті кривошипа {phi}° (ближче "
+                          "ніж {mm} мм): напрям куліси там невизначений, її ω необмежена, кривошип не може "
+                          "провести механізм далі",
+                          "{dyad}: the block {block} passes through the pivot {pivot} at crank angle {phi}° "
+                          "(within {mm} mm): the slotted link's direction is undefined there and its ω unbounded, "
+                          "the crank cannot drive it through"),
 }
 
 
