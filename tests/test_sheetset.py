@@ -175,10 +175,6 @@ def _sheets_of(text: str | Path, kind: str, lang: str):
     return BUILDERS[kind](scene, form("A1"), SheetOptions(sheet=kind, lang=lang))
 
 
-CAM_NOTES = pytest.mark.xfail(reason="issue 32 item 1: the cam sheet's notes (φ_п, μ_φ, ρ_min) are typeset on "
-                              "the cam branch", strict=False)
-
-
 @pytest.mark.parametrize("kind", ["kinematics", "forces", "dynamics"])
 def test_no_lettering_of_the_shapers_sheets_carries_raw_markup(shaper_a1, kind):
     """No _, ^, { or } reaches the paper: every symbol is typeset."""
@@ -191,7 +187,7 @@ GENERATED = {"crank-slider": crank_slider(0.08, 4.0, 0.2, 600.0, 60.0, 2500.0, 1
 
 @pytest.mark.parametrize("scene,kind,lang", [
     ("crank-slider", "forces", "uk"),
-    pytest.param(EXAMPLES / "cam_translating.toml", "cam", "uk", marks=CAM_NOTES),
+    (EXAMPLES / "cam_translating.toml", "cam", "uk"),
     pytest.param(EXAMPLES / "slotter.toml", "forces", "en", marks=pytest.mark.slow),
     pytest.param(EXAMPLES / "four_bar.toml", "kinematics", "en", marks=pytest.mark.slow),
     pytest.param("shaper", "dynamics", "en", marks=pytest.mark.slow),
