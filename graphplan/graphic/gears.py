@@ -455,10 +455,10 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
                 {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P})
     if 2.25 * md < DEPTH_MM[0]:
-        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale draws "
-                              "it 40 mm tall in the zone)",
-                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (жоден стандартний масштаб "
-                              "не дає 40 мм у зоні)"))
+        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
+                              "that fits the zone draws it 40–60 mm tall)",
+                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (жоден стандартний масштаб, "
+                              "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh
 
