@@ -113,8 +113,8 @@ class Placer:
                         q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
                         end = at + (q - at) * (1 - 1.2 / abs(q - at))
                         if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
-                                              letters_only=not strict):
-                            continue
+                                              letters_only=not strict) or not self.free_path(at, end, True):
+                            continue            # (no leader through a letter, even near its point)
                     self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
                     self._add_box(box)
                     if end is not None:
@@ -437,8 +437,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(B1, "B_1", toward=-1j * u)
     pl.label(B2, "B_2", toward=1j * u)
     for at, name, out in arc_ends:
-        pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
-    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)
+        pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
             ang = _span(rad, half_w, tau[k - 1], aw_)
