@@ -399,7 +399,8 @@ def test_the_sheet_command_writes_the_gear_sheet(tmp_path):
     code, _, err = run(["sheet", str(GEARS), "-o", str(out), "--sheet", "forces"])
     assert code == 2 and "gear sheet only" in err
     doc = json.loads(run(["gears", str(GEARS), "--json"])[1])
-    assert doc["pair"]["graphical"]["module_mm"] == 20.0            # 4:1, the whole depth 45 mm
+    md = doc["pair"]["graphical"]["module_mm"]                     # m = 5 mm at 4:1 or 5:1: 45 or 56.25 mm deep
+    assert md in (20.0, 25.0) and 40.0 <= 2.25 * md <= 60.0
 
 
 def test_the_bench_section_measures_against_the_bound_and_says_the_failures():
@@ -459,6 +460,11 @@ def test_any_gear_sheet_is_composed_without_defects(z1, z2, m, x1, x2, fmt, lang
     except GraphplanError:
         return
     assert defects(sheet) == []
+    # the meshing at a GOST 2.302 scale (1:10 … 1:2, 1:1, 2:1 … 100:1), as the title block says
+    gost = (0.1, 0.2, 0.25, 0.4, 0.5, 1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)
+    mesh = [p.record for s in sheet.pages for p in s.placed if p.name == "meshing"]
+    k = 1e-3 / mesh[0].scales["mu_l"]
+    assert len(mesh) == 1 and any(abs(k - v) < 1e-9 * v for v in gost), k
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])

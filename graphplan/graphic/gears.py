@@ -32,13 +32,13 @@ import numpy as np
 from graphplan.exact.gears import PairSolution, TrainSolution
 from graphplan.graphic.draftsman import circle_line, lay_off, measure
 from graphplan.graphic.record import Primitive, Record, text_width
+from graphplan.util.words import num
 
 LAYER = "gears"
 TEXT = 3.5
 DEPTH_MM = (40.0, 60.0)        # the whole depth 2.25m drawn this tall
 ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.302 enlargements, 1:1 …
 REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
-MODULE_MM = 20.0               # the drawn module when no standard scale gives 40–60 mm
 DIVISIONS = 4                  # equal parts of N1P for the involute
 LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
@@ -113,8 +113,8 @@ class Placer:
                         q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
                         end = at + (q - at) * (1 - 1.2 / abs(q - at))
                         if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
-                                              letters_only=not strict):
-                            continue
+                                              letters_only=not strict) or not self.free_path(at, end, True):
+                            continue            # (no leader through a letter, even near its point)
                     self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
                     self._add_box(box)
                     if end is not None:
@@ -182,33 +182,59 @@ class Mesh:
     warnings: list[tuple[str, str]] = field(default_factory=list)
 
 
-def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 780.0) -> float:
-    """The drawn module, mm: a standard enlargement (GOST 2.302) that draws the whole depth 2.25m 40–60 mm
-    tall, else 20 mm to the module (45 mm); smaller only when the centres and the teeth would not fit
-    ``height_mm`` × ``width_mm`` (the zone) — then the largest whole millimetre that still draws 40 mm,
-    else the largest standard scale that fits with the module at least 2 mm, else the largest whole
-    millimetre (quarter millimetres below 2 mm: large wheels on a small sheet draw small teeth, and say
-    so)."""
-    m = sol.pair.module * 1000.0                     # mm
-    top = (sol.aw + sol.ra[0] * 0.1) * 1000.0 / m    # the drawing's height in modules, about
+def _extent(sol: PairSolution, md: float) -> tuple[float, float, float]:
+    """The meshing's window about P at the module ``md`` mm (width, height, mm) and the centre
+    distance drawn, mm: the circles' arcs over the three teeth and the line of action, N1 and N2,
+    the λ diagram's length N1N2 below it (about)."""
+    k = md / (sol.pair.module * 1000.0) * 1000.0               # mm of drawing per metre
+    aw_, D = sol.alpha_w, sol.aw * k
     tau = [2 * math.pi / z for z in sol.pair.z]
-    wide = 2 * max(sol.rb[0] * math.sin(sol.alpha_w), sol.rb[1] * math.sin(sol.alpha_w),
-                   1.7 * tau[0] * sol.ra[0], 1.7 * tau[1] * sol.ra[1]) * 1000.0 / m + 4.0
-    fits = lambda md: top * md + 20.0 <= height_mm and wide * md + 30.0 <= width_mm     # noqa: E731
-    for k in ENLARGE:
-        md = m * k
-        if DEPTH_MM[0] <= 2.25 * md <= DEPTH_MM[1] and fits(md):
-            return md
-    if fits(MODULE_MM):
-        return MODULE_MM
-    md = float(math.floor(min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)))
-    if 2.25 * md >= DEPTH_MM[0]:                  # a whole millimetre still draws 40 mm
-        return md
-    for k in sorted(ENLARGE + REDUCE, reverse=True):    # the largest standard scale that fits, when one does
-        if m * k >= 2.0 and fits(m * k):
-            return m * k
-    md = min((height_mm - 20.0) / top, (width_mm - 30.0) / wide)
-    return float(math.floor(md)) if md >= 2.0 else max(0.25, math.floor(md * 4) / 4)
+    rb, ra, rf = [v * k for v in sol.rb], [v * k for v in sol.ra], [v * k for v in sol.rf]
+    n_x = [rb[0] * math.sin(aw_), rb[1] * math.sin(aw_)]
+    half_w = max(n_x[0], n_x[1], 1.7 * tau[0] * ra[0], 1.7 * tau[1] * ra[1]) + 12.0
+    low, high = [], []
+    for j, rads in ((0, (rf[0], ra[0])), (1, (rf[1], ra[1]))):
+        for rad in rads:
+            span = _span(rad, half_w, tau[j], aw_)
+            (low if j == 0 else high).append(rad * math.cos(span) if j == 0 else D - rad * math.cos(span))
+    y_lo = min(low + [rb[0] * math.cos(aw_)]) - 8.0
+    y_hi = max(high + [D - rb[1] * math.cos(aw_)]) + 8.0
+    g = sol.g * k
+    return max(2 * half_w + 50.0, g + 30.0), y_hi - y_lo, D       # the letters r_a1 … right, a_w left
+
+
+def broken(sol: PairSolution, md: float) -> bool:
+    """Whether the centres are left off the drawing (the centre line broken, aw dimensioned, as the
+    textbook draws wheels whose centres lie far from the teeth): when drawing them would make the
+    meshing more than 1.4 times as tall as its window about P."""
+    w, h, D = _extent(sol, md)
+    return D + 30.0 > 1.4 * h
+
+
+def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 780.0,
+               line_mm: float | None = None) -> float:
+    """The drawn module, mm, at a standard scale (GOST 2.302: 1:5 … 1:1 … 100:1; μl then a round
+    number): the largest that draws the whole depth 2.25m 40–60 mm tall and fits the zone
+    ``width_mm`` × ``height_mm`` (the window about P, the centres shown or the centre line broken);
+    when none draws 40–60 mm, the fitting scale whose depth comes nearest that band (the larger of
+    two as near); when none fits, the smallest of the series. ``line_mm``: the longest N1N2 the
+    λ diagrams' place takes (they are drawn at the meshing's scale)."""
+    m = sol.pair.module * 1000.0                     # mm
+
+    def fits(md: float) -> bool:
+        w, h, D = _extent(sol, md)
+        tall = h + 12.0 if broken(sol, md) else max(h, D + 30.0)
+        return tall + 20.0 <= height_mm and w <= width_mm and (line_mm is None or sol.g * md / m * 1000.0 <= line_mm)
+
+    series = sorted(ENLARGE + REDUCE)
+    ok = [k for k in series if fits(m * k)]
+    if not ok:
+        return m * series[0]
+    band = [k for k in ok if DEPTH_MM[0] <= 2.25 * m * k <= DEPTH_MM[1]]
+    if band:
+        return m * max(band)
+    far = lambda k: max(DEPTH_MM[0] / (2.25 * m * k), 2.25 * m * k / DEPTH_MM[1])     # noqa: E731
+    return m * min(ok, key=lambda k: (far(k), -k))
 
 
 def _involute(R: float, theta_s: float, t: np.ndarray) -> np.ndarray:
@@ -224,7 +250,7 @@ def _flank_at(R: float, theta_s: float, radius: float) -> complex:
     return complex(_involute(R, theta_s, np.array([t]))[0])
 
 
-def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int = 24) -> list[complex]:
+def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int = 64) -> list[complex]:
     """One tooth's outline (centre 0), from its left root fillet over the tip to its right one: the
     fillet (radius 0.38m, tangent to the root circle and to the radial line under the involute),
     the radial line to the base circle, the involute to the tip circle, the tip arc, the mirror."""
@@ -251,17 +277,24 @@ def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: floa
     return left + tip + mirror
 
 
+def _span(rad: float, half_w: float, tau: float, aw_: float) -> float:
+    """Half the angle of a circle's arc drawn over the window: to the window's side, at most 1.8 pitch
+    angles (or αw + 10°), rad."""
+    return min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau, aw_ + math.radians(10.0)))
+
+
 def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
-                   height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0) -> Mesh:
+                   height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0,
+                   line_mm: float | None = None) -> Mesh:
     """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
     drawn ``module_mm`` long (default: ``mesh_scale``)."""
     pair = sol.pair
     z1, z2 = pair.z
-    md = module_mm or mesh_scale(sol, height_mm, width_mm)
+    md = module_mm or mesh_scale(sol, height_mm, width_mm, line_mm)
     mu = pair.module / md                                     # m/mm
     L = lambda v: lay_off(v / mu, precision)                  # noqa: E731   a length laid off
     d = {"aw": L(sol.aw), "r1": L(sol.r[0]), "r2": L(sol.r[1]), "rb1": L(sol.rb[0]), "rb2": L(sol.rb[1]),
@@ -290,18 +323,45 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                2: [("rf", d["rf2"]), ("rb", R2), ("r", d["r2"]), ("rw", read["rw2"]), ("ra", d["ra2"])]}
     for k, centre, up in ((1, O1, 1.0), (2, O2, -1.0)):
         for name, rad in circles[k]:
-            span = min(math.degrees(math.asin(min(1.0, half_w / rad))),
-                       max(math.degrees(1.8 * tau[k - 1]), math.degrees(aw_) + 10.0))
+            span = math.degrees(_span(rad, half_w, tau[k - 1], aw_))
             mid = 90.0 if up > 0 else 270.0
             role = "axis" if name == "r" else "construction"      # the pitch circle dash-dot (GOST 2.402)
             rec.arc(_f(centre), rad, mid - span, mid + span, role=role, layer=LAYER, step=f"circle {name}{k}")
-    rec.segment(_f(O1 - 8j), _f(O2 + 8j), role="axis", layer=LAYER, step="O1O2")
+    cut = broken(sol, md)
+    if cut:          # the centres off the drawing: the centre line broken above and below the window
+        wlo = min(N1.imag, min(rad * math.cos(_span(rad, half_w, tau[0], aw_)) for _, rad in circles[1])) - 8.0
+        whi = max(N2.imag, max(D - rad * math.cos(_span(rad, half_w, tau[1], aw_)) for _, rad in circles[2])) + 8.0
+        for y0, y1 in ((wlo - 6.0, wlo), (whi, whi + 6.0)):
+            rec.segment((0.0, y0), (0.0, y1), role="axis", layer=LAYER, step="O1O2")
+        rec.segment((0.0, wlo), (0.0, whi), role="axis", layer=LAYER, step="O1O2")
+        for y in (wlo - 6.0, whi + 6.0):                     # the break marks (GOST 2.303, a thin zigzag)
+            rec.add("polyline", [(-6.0, y), (-1.5, y), (-0.8, y + 2.0), (0.8, y - 2.0), (1.5, y), (6.0, y)],
+                    role="construction", layer=LAYER, step="break")
+        xd = -half_w - 4.0                                   # aw dimensioned on a broken dimension line
+        ymid = 0.5 * (wlo + whi)
+        rec.segment((xd - 2.0, wlo - 6.0), (-8.0, wlo - 6.0), role="construction", layer=LAYER, step="aw")
+        rec.segment((xd - 2.0, whi + 6.0), (-8.0, whi + 6.0), role="construction", layer=LAYER, step="aw")
+        rec.vector((xd, ymid - 12.0), (xd, wlo - 6.0), role="construction", layer=LAYER, step="aw")
+        rec.vector((xd, ymid + 12.0), (xd, whi + 6.0), role="construction", layer=LAYER, step="aw")
+        aw_text = f"a_w = {num(sol.aw * 1000.0, lang, 4)} " + ("мм" if lang == "uk" else "mm")
+        for y, name, toward in ((wlo - 6.0, "O_1", -1j), (whi + 6.0, "O_2", 1j)):
+            rec.vector((3.0, y + (4.0 if toward == -1j else -4.0)), (3.0, y + (-6.0 if toward == -1j else 6.0)),
+                       role="construction", layer=LAYER, step=f"to {name}")
+            rec.label((5.0, y + (-6.0 if toward == -1j else 2.5)), name, size=TEXT, layer=LAYER, step=name)
+    else:
+        rec.segment(_f(O1 - 8j), _f(O2 + 8j), role="axis", layer=LAYER, step="O1O2")
     # the line of action, extended a little past N1 and N2
     rec.segment(_f(N1 - 6 * u), _f(N2 + 6 * u), role="relative", layer=LAYER, step="line of action N1N2")
     rec.segment(_f(P - 30.0), _f(P + 30.0), role="construction", layer=LAYER, step="tangent at P")
     rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
-    rec.segment(_f(O1), _f(N1), role="construction", layer=LAYER)
-    rec.segment(_f(O2), _f(N2), role="construction", layer=LAYER)
+    if cut:          # the radii to N1, N2 (perpendicular to the line of action) as far as the window
+        rec.segment(_f(N1), _f(N1 + (O1 - N1) / abs(O1 - N1) * min(20.0, abs(O1 - N1))), role="construction",
+                    layer=LAYER)
+        rec.segment(_f(N2), _f(N2 + (O2 - N2) / abs(O2 - N2) * min(20.0, abs(O2 - N2))), role="construction",
+                    layer=LAYER)
+    else:
+        rec.segment(_f(O1), _f(N1), role="construction", layer=LAYER)
+        rec.segment(_f(O2), _f(N2), role="construction", layer=LAYER)
     # the involutes by the draftsman's steps, the teeth
     teeth_pts = {}
     s_read, sa_read = [], []
@@ -313,12 +373,12 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         theta_s = thN + tP / R                                   # where the involute through P starts
         jmax = int(math.ceil(math.sqrt(ra * ra - R * R) / step))
         marks = _involute(R, theta_s, step * np.arange(0, jmax + 1))
-        for j in range(0, jmax + 1):
+        for j in range(1, min(jmax, DIVISIONS + 2) + 1):     # the tangents with the unrolled lengths, their ends
             q = R * cmath.exp(1j * (theta_s - j * step / R))
-            if j <= DIVISIONS + 2 and j > 0:
+            if j != DIVISIONS:                                 # the fourth is NP itself
                 rec.segment(_f(centre + q), _f(centre + marks[j]), role="construction", layer=LAYER,
                             step=f"involute {k}: tangent {j}")
-            rec.point(_f(centre + marks[j]), role="construction", layer=LAYER)
+                rec.point(_f(centre + marks[j]), role="construction", layer=LAYER)
         for j in range(1, DIVISIONS):
             rec.point(_f(N + j * step * (P - N) / tP), role="construction", layer=LAYER)
         # the tooth thickness laid off as a chord on the pitch circle; the axis between the flanks
@@ -347,30 +407,41 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         t_lo = math.sqrt(max(low * low - R * R, 0.0))
         wp = _involute(R, theta_s, np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12))
         normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12)]
-        rec.add("polyline", [_f(centre + q + 1.0 * nrm) for q, nrm in zip(wp, normal)], role="result",
-                layer=LAYER, step=f"working part {k}", width=1.0)
+        rec.add("polyline", [_f(centre + q + 0.45 * nrm) for q, nrm in zip(wp, normal)], role="result",
+                layer=LAYER, step=f"working part {k}", width=0.9)
     # the arc of action on the rolling circles
+    arc_ends: list[tuple[complex, str, complex]] = []
     for k, centre, rw, R, sign in ((1, O1, read["rw1"], R1, 1.0), (2, O2, read["rw2"], R2, -1.0)):
         base = 90.0 if k == 1 else 270.0
         rhoP, a, b = abs(P - N1), (abs(B1 - N1) if ((B1 - N1) / u).real >= 0 else -abs(B1 - N1)), abs(B2 - N1)
         a0 = base + sign * math.degrees((a - rhoP) / R)
         a1 = base + sign * math.degrees((b - rhoP) / R)
-        rec.arc(_f(centre), rw + (1.2 if k == 1 else -1.2), min(a0, a1), max(a0, a1), role="relative", layer=LAYER,
-                step=f"arc of action {k}")
-    for q in (N1, N2, B1, B2, P, O1, O2):
+        rr = rw
+        rec.arc(_f(centre), rr, min(a0, a1), max(a0, a1), role="relative", layer=LAYER, step=f"arc of action {k}")
+        for a_, name in ((a0, "a"), (a1, "b")):                # its ends ticked and lettered a1 b1, a2 b2
+            e = cmath.exp(1j * math.radians(a_))
+            rec.segment(_f(centre + (rr - 1.5) * e), _f(centre + (rr + 1.5) * e), role="relative", layer=LAYER,
+                        step=f"arc of action {k}")
+            arc_ends.append((centre + rr * e, f"{name}_{k}", e if k == 1 else -e))
+    for q in (N1, N2, B1, B2, P) + (() if cut else (O1, O2)):
         rec.point(_f(q), role="pole", layer=LAYER)
     pl = Placer(rec)
-    pl.label(O1, "O_1", toward=-1 + 0j)
-    pl.label(O2, "O_2", toward=-1 + 0j)
+    if cut:
+        pl.label(complex(xd, ymid), aw_text, toward=-1 + 0j, radii=(1.0, 2.0, 3.5, 5.5))
+    if not cut:
+        pl.label(O1, "O_1", toward=-1 + 0j)
+        pl.label(O2, "O_2", toward=-1 + 0j)
     pl.label(P, "P", toward=1 + 0.3j)
     pl.label(N1, "N_1", toward=1 + 0j)
     pl.label(N2, "N_2", toward=-1 + 0j)
     pl.label(B1, "B_1", toward=-1j * u)
     pl.label(B2, "B_2", toward=1j * u)
-    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)
+    for at, name, out in arc_ends:
+        pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
-            ang = min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau[k - 1], aw_ + math.radians(10.0)))
+            ang = _span(rad, half_w, tau[k - 1], aw_)
             end = centre + rad * cmath.exp(1j * ((math.pi / 2 - ang) if k == 1 else (-math.pi / 2 + ang)))
             sub = {"rf": "f", "rb": "b", "r": "", "rw": "w", "ra": "a"}[name]
             pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j,
@@ -384,8 +455,10 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
                 {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P})
     if 2.25 * md < DEPTH_MM[0]:
-        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (the zone cannot hold 40 mm)",
-                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (зона не вміщує 40 мм)"))
+        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
+                              "that fits the zone draws it 40–60 mm tall)",
+                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (жоден стандартний масштаб, "
+                              "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh
 

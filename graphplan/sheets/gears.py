@@ -23,7 +23,7 @@ from graphplan.util.words import num
 
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
-           "meshing": "Евольвентне зачеплення (μ_l = {mu} м/мм)",
+           "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
            "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
@@ -47,7 +47,7 @@ WORDS = {
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %"},
     "en": {"subtitle": "Gear synthesis", "group": "gr.",
-           "meshing": "Involute meshing (μ_l = {mu} m/mm)",
+           "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
            "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
@@ -193,27 +193,39 @@ def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
 
 
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
-    """The gear sheet: the meshing, the λ diagrams and the planetary pictures captioned, the three
-    tables and the notes, flowed over the sheet (and further sheets of the set) in reading order."""
+    """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
+    tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
+    format too small flows them over further sheets of the set in reading order."""
     lang = args.lang
     region = field_of(f)
     sol = solve(g)
-    height = region[3] - region[1] - 25.0                      # the meshing's zone: the field less its caption
-    mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=height,
-                          width_mm=min(region[2] - region[0], 0.6 * (region[2] - region[0]) + 150.0)) \
-        if sol.pair else None
+    w = WORDS[lang]
     vel = construct_train(sol.train, args.precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
         if sol.train else None
+    plan = captioned(vel.record, w["planetary"], w["planetary2"]) if vel else None
+    mesh = None
+    if sol.pair:
+        # the meshing's zone: the field less the tables' column and the row under it where the λ diagrams
+        # (N1N2 long, at the meshing's scale) stand beside the planetary pictures
+        side_w = max(TITLE, 150.0)
+        plan_w, plan_h = ((plan.bounds()[2] - plan.bounds()[0], plan.bounds()[3] - plan.bounds()[1]) if plan
+                          else (0.0, 0.0))
+        zone_w = region[2] - region[0] - side_w - GAP
+        zone_h = region[3] - region[1] - max(SLIDING_H, plan_h) - GAP
+        line = zone_w - (plan_w + GAP if plan else 0.0) - 30.0
+        if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing gets a sheet of its own
+            zone_w, zone_h, line = region[2] - region[0] - 10.0, region[3] - region[1] - 40.0, None
+        mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
     doc = gears_json(sol, mesh, vel, g.source or "")
-    w = WORDS[lang]
     drawings: list[Leaf] = []
     tables: list[Leaf] = []
     if mesh is not None:
-        drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(mu=_n(mesh.mu_l, lang)))))
+        drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(
+            mu=_n(mesh.mu_l, lang), scale=drawing_scale(mesh.mu_l, lang)))))
         drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"])))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
-    if vel is not None:
-        drawings.append(Leaf("planetary", record=captioned(vel.record, w["planetary"], w["planetary2"])))
+    if plan is not None:
+        drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
     width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in tables])
     nts = Leaf("notes", record=note_block(notes(doc, lang, mesh, vel), width))
@@ -229,39 +241,42 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
                    f"{g.title_in(lang)} — {w['subtitle']}")
 
 
+SLIDING_H = 125.0        # the λ diagrams' height with their caption, mm (λ from −3 to 1 at 20 mm, labels)
+
+
 def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list[list[Placed]] | None:
-    """One sheet in three zones (LAYOUT.md): the meshing on the left, the λ diagrams over the
-    planetary pictures in the middle, the tables and the notes in the title block's column on the
-    right, above the block. None when the field cannot hold them (the caller flows them over a set)."""
+    """One sheet in zones (LAYOUT.md): the meshing on top (the largest drawing), under it the λ
+    diagrams beside the planetary pictures, the tables and the notes in the title block's column on
+    the right, above the block. None when the field cannot hold them (the caller flows them over a
+    set)."""
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f)
     right = max(width, x1 - keep[0])
     need = sum(t.h for t in side) + GAP * (len(side) - 1)
     if need > y1 - keep[3] - GAP:
         return None
-    mesh = [d for d in drawings if d.name == "meshing"]
-    mid = [d for d in drawings if d.name != "meshing"]
-    mid_w = max((d.w for d in mid), default=0.0)
-    mid_h = sum(d.h for d in mid) + GAP * max(len(mid) - 1, 0)
-    mesh_w = sum(d.w for d in mesh)
+    top = [d for d in drawings if d.name == "meshing"]
+    row = [d for d in drawings if d.name != "meshing"]
     room = x1 - x0 - right - GAP
-    used = mesh_w + mid_w + (GAP if mesh and mid else 0.0)
-    if used > room or mid_h > y1 - y0 or any(d.h > y1 - y0 for d in mesh):
+    row_w = sum(d.w for d in row) + GAP * max(len(row) - 1, 0)
+    row_h = max((d.h for d in row), default=0.0)
+    top_h = max((d.h for d in top), default=0.0)
+    if row_w > room or any(d.w > room for d in top) or top_h + row_h + (GAP if top and row else 0.0) > y1 - y0:
         return None
-    spare = (room - used) / (1 + len([z for z in (mesh, mid) if z]))
     out: list[Placed] = []
-    x = x0 + spare / 2
-    for d in mesh:
-        box = (x, y0, x + d.w + spare, y1)
+    spare_y = (y1 - y0 - top_h - row_h - (GAP if top and row else 0.0)) / (1 + len([z for z in (top, row) if z]))
+    y = y1 - spare_y
+    for d in top:
+        box = (x0, y - d.h, x0 + room, y)
         out.append(Placed(d.name, centred(d.record, box), box))
-        x = box[2] + GAP
-    if mid:
-        gap = (y1 - y0 - mid_h) / (len(mid) + 1)
-        y = y1 - gap / 2
-        for d in mid:
-            box = (x, y - d.h - gap / 2, x + mid_w + spare, y)
+        y = box[1] - GAP - spare_y
+    if row:
+        spare_x = (room - row_w) / (len(row) + 1)
+        x = x0 + spare_x
+        for d in row:
+            box = (x, y - row_h, x + d.w, y)
             out.append(Placed(d.name, centred(d.record, box), box))
-            y = box[1] - GAP
+            x = box[2] + spare_x + GAP
     y = y1
     for t in side:
         box = (x1 - right, y - t.h, x1, y)
