@@ -95,7 +95,7 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
                                    toward=-0.2 + 1j, size=TEXT))
         rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
         for k in range(len(x)):
-            rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER)
+            rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER, step=f"{key} at {k}")
         if key in ("v", "s"):     # the chords of the integral, parallel to the rays below
             chord = g.v_chord if key == "v" else g.s_chord
             for ph in (0, 1):
