@@ -45,8 +45,17 @@ def test_the_cam_sheet_reads_as_lettered(cam, lang):
     assert overprinted(svg) == []
     # the drawings fill the field: their boxes span its width and more than half its height
     x0, y0, x1, y1 = field_of(sheet.form)
-    boxes = [p.record.bounds() for p in sheet.placed if p.name in ("diagrams", "phase", "profile")]
-    assert len(boxes) == 3
+    boxes = [p.record.bounds() for p in sheet.placed if p.name in ("diagrams", "profile")]
+    assert len(boxes) == 2
     width = sum(b[2] - b[0] for b in boxes)
     height = max(b[3] - b[1] for b in boxes)
-    assert width > 0.85 * (x1 - x0) and height > 0.5 * (y1 - y0), (width, height)
+    assert width > 0.85 * (x1 - x0) and height > 0.6 * (y1 - y0), (width, height)
+    # the phase diagram stands beside the s diagram at μ_s, its s axis level with the s diagram's: the
+    # point of each division on it (K k) at the height of that division's ordinate on the s diagram
+    if lang == "uk":          # the translating follower (its s axis straight)
+        rec = next(p.record for p in sheet.placed if p.name == "diagrams")
+        tops = {p.step: p.points[1][1] for p in rec.items if p.step.startswith("s at ")}
+        ks = {p.step: p.points[0][1] for p in rec.items if p.kind == "point" and p.step.startswith("K ")}
+        assert len(tops) == len(ks) > 10
+        for k in range(len(ks)):
+            assert abs(ks[f"K {k}"] - tops[f"s at {k}"]) < 0.5, k

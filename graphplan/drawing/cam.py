@@ -60,8 +60,11 @@ def numbered(n_points: int, spacing: float, size: float = NUMBER) -> list[int]:
 
 
 def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
-    """d²s/dφ², ds/dφ and s over the turn (L mm), one above another on one φ axis; the drawn ordinates
-    at the divisions, the chords of each integration, the poles H1, H2 on the left, the divisions
+    """d²s/dφ², ds/dφ and s over the turn (L mm), one above another on one φ axis (s on top, where the
+    phase diagram stands beside it), integrated upward by chords: on the d²s/dφ² diagram's axis the
+    pole P1 at H1 left of the origin, each interval's mean ordinate carried across to the ordinate
+    axis and joined to P1 by a ray, the chords of ds/dφ laid parallel to the rays; the same with P2 at
+    H2 on the ds/dφ diagram for the chords of s. The drawn ordinates at the divisions, the divisions
     numbered under the s diagram as in the table and on the profile."""
     cam = sol.cam
     rec = Record("cam diagrams")
@@ -70,15 +73,19 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
-    bands = []
+    # the intervals' middles, rise then return (as the mean ordinates are kept)
+    xm = np.concatenate([0.5 * (x[g.phase == ph][:-1] + x[g.phase == ph][1:]) for ph in (0, 1)])
+    bands = {}
     labels: list[LabelRequest] = []
     y = 0.0
-    for key, curve, drawn, letter in (("s", s / g.mu_s, g.s_mm, "s"), ("v", v / g.mu_v, g.v_mm, "ds/dφ"),
-                                      ("a", a / g.mu_a, g.a_mm, "d^{2}s/dφ^{2}")):
+    for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, "d^{2}s/dφ^{2}", g.H1),
+                                             ("v", v / g.mu_v, g.v_mm, "ds/dφ", g.H2),
+                                             ("s", s / g.mu_s, g.s_mm, "s", 0.0)):
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
         y0 = y - lo
-        bands.append((key, y0))
-        rec.segment((0.0, y0), (L + 6.0, y0), role="axis", layer=LAYER, step=f"axis {key}")
+        bands[key] = y0
+        left = -pole - 4.0 if pole else 0.0
+        rec.segment((left, y0), (L + 6.0, y0), role="axis", layer=LAYER, step=f"axis {key}")
         rec.vector((0.0, y0 + lo - 3.0 if lo < 0 else y0), (0.0, y0 + hi + 6.0), role="axis", layer=LAYER,
                    step=f"ordinate {key}")
         labels.append(LabelRequest(complex(0.0, y0 + hi + 6.0), letter, toward=1 + 0.3j, size=TEXT))
@@ -88,20 +95,20 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
                                    toward=-0.2 + 1j, size=TEXT))
         rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
         for k in range(len(x)):
-            rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER)
-        for ph in (0, 1):
-            sel = np.flatnonzero(g.phase == ph)
-            if key == "a":        # integrated by its intervals' middle ordinates: no chords of its own
-                continue
-            for j in range(len(sel) - 1):
-                p, q = sel[j], sel[j + 1]
-                rec.segment((x[p], y0 + drawn[p]), (x[q], y0 + drawn[q]), role="chord", layer=LAYER)
-        y = y0 + hi + 16.0
-    for name, H, (_, y0) in (("H_1", g.H1, bands[1]), ("H_2", g.H2, bands[0])):
-        rec.point((-H, y0), role="pole", layer=LAYER)
-        rec.segment((-H, y0), (0.0, y0), role="construction", layer=LAYER)
-        labels.append(LabelRequest(complex(-H, y0), name, toward=-0.3 + 1j, size=TEXT))
-    y_s = bands[0][1]
+            rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER, step=f"{key} at {k}")
+        if key in ("v", "s"):     # the chords of the integral, parallel to the rays below
+            chord = g.v_chord if key == "v" else g.s_chord
+            for ph in (0, 1):
+                sel = np.flatnonzero(g.phase == ph)
+                for j in range(len(sel) - 1):
+                    p, q = sel[j], sel[j + 1]
+                    rec.segment((x[p], y0 + chord[p]), (x[q], y0 + chord[q]), role="chord", layer=LAYER,
+                                step=f"chord {key} {ph} {j}")
+        if pole:
+            _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
+                  key, labels)
+        y = y0 + hi + 20.0
+    y_s = bands["s"]
     spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
     for k in numbered(len(x), spacing):
         rec.label((x[k], y_s - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
@@ -109,6 +116,27 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
+
+
+def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
+          labels: list[LabelRequest]) -> None:
+    """The pole P at ``H`` left of the origin on the axis of the diagram integrated, each interval's
+    mean ordinate (at its middle) carried across to the ordinate axis and joined to P by a ray (the
+    direction of the integral's chord over that interval), and H dimensioned under the axis."""
+    pole = (-H, y0)
+    rec.point(pole, role="pole", layer=LAYER, step=f"pole P{index}")
+    labels.append(LabelRequest(complex(-H, y0), f"P_{index}", toward=-0.6 + 1j, size=TEXT))
+    for j, (h, xj) in enumerate(zip(mid, xm)):
+        if not np.isfinite(h):        # a linear law's ds/dφ: drawn directly, no ray
+            continue
+        rec.segment((xj, y0 + h), (0.0, y0 + h), role="projection", layer=LAYER, step=f"mean {key} {j}")
+        rec.point((xj, y0 + h), role="construction", layer=LAYER, step=f"mean {key} {j}")
+        rec.segment(pole, (0.0, y0 + h), role="ray", layer=LAYER, step=f"ray P{index} {j}")
+    yd = y0 + lo - 4.0
+    rec.segment((-H, y0), (-H, yd - 1.5), role="construction", layer=LAYER, step=f"H{index}")
+    rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
+    rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
+    rec.label((-H / 2, yd - 4.5), f"H_{index}", size=TEXT, anchor="middle", layer=LAYER, step=f"H{index}")
 
 
 def phase_points(sol: Solution, g: CamConstruction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -214,7 +242,10 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     fine = np.linspace(0.0, 360.0, 1441)
     p = sol.at(fine)
     P, W = p["P"] / mu, p["working"] / mu
-    rec.add("polyline", list(zip(P.real, P.imag)), role="curve", layer=LAYER, step="centre profile")
+    # the centre (theoretical) profile a thin line, the working one thick (GOST 2.303); a knife-edge's
+    # centre profile is the working profile
+    rec.add("polyline", list(zip(P.real, P.imag)), role="construction" if cam.roller > 0 else "link",
+            layer=LAYER, step="centre profile")
     if cam.roller > 0:
         rec.add("polyline", list(zip(W.real, W.imag)), role="link", layer=LAYER, step="working profile")
     pts = profile(cam, sol.geometry, g.phi, g.s, g.v, np.zeros_like(g.phi))["P"] / mu

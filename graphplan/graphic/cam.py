@@ -31,6 +31,7 @@ HEIGHT_MM = 40.0       # the tallest ordinate of the analogue-acceleration diagr
 STROKE_MM = 80.0       # the stroke (swing) drawn on the s diagram, about
 PROFILE_MM = 100.0     # the centre profile's largest radius, drawn, about
 L_MM = 240.0           # the abscissa of a whole turn
+POLE_MM = (15.0, 50.0)  # the lab's range of pole distances, set with a ruler in whole millimetres
 
 
 def read(mm: np.ndarray, precision: float) -> np.ndarray:
@@ -66,6 +67,13 @@ class CamConstruction:
     mu_l: float                     # m/mm of the profile
     warnings: list[tuple[str, str]] = field(default_factory=list)
     closing: tuple[float, float] = (0.0, 0.0)   # the integral's closing error of the rise and the return, mm
+    # the chord construction as drawn: each interval's mean ordinate (read, mm; NaN where a phase's
+    # ds/dφ is drawn directly) carried to the ordinate axis and joined to the pole, and the vertices of
+    # the integral's chords laid parallel to those rays (before they are read; per division)
+    a_mid: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    v_mid: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    v_chord: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    s_chord: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def s(self) -> np.ndarray:
@@ -89,40 +97,52 @@ def divisions(sol: Solution, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float, precision: float,
-                     mid: np.ndarray | None = None) -> np.ndarray:
+                     mid: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """One phase integrated by chords: the middle ordinates (given, else the chord's middle of the
-    drawn curve) read with the ruler, the integral's ordinates read too."""
+    drawn curve) read with the ruler, the chords laid parallel to the rays from the pole, their
+    vertices' ordinates read too. Returns (read ordinates, mean ordinates, chord vertices)."""
     if mid is None:
         mid = 0.5 * (y_mm[:-1] + y_mm[1:])
-    return read(integrate_by_chords(x_mm, read(mid, precision), pole, y0), precision)
+    mid = read(mid, precision)
+    chord = integrate_by_chords(x_mm, mid, pole, y0)
+    return read(chord, precision), mid, chord
+
+
+def pole_distance(h: float) -> float:
+    """A pole distance one sets with a ruler: ``h`` rounded to a whole millimetre within the lab's
+    15–50 mm (POLE_MM)."""
+    return float(min(POLE_MM[1], max(POLE_MM[0], round(h))))
 
 
 def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
               H2: float | None = None, L: float | None = None, size: float = 1.0,
-              profile_size: float = 1.0, height: float | None = None, measure: bool = True) -> CamConstruction:
+              profile_size: float = 1.0, height: float | None = None, measure: bool = True,
+              accel: float | None = None) -> CamConstruction:
     """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
     read with a ruler of ``precision`` mm. ``size`` enlarges the diagrams (L, the tallest ordinate and
     the stroke drawn) and ``profile_size`` the profile, each scale then the standard one at or above
     what that asks (the sheet takes the largest that fit their zones, sheets.cam.cam_sizes); ``height``
-    (default ``size``) enlarges the ordinates alone. ``measure=False`` leaves R0 unmeasured (NaN):
+    (default ``size``) enlarges the ordinates alone, ``accel`` (default ``height``) those of d²s/dφ²
+    alone (μ_s kept: the poles move out, ds/dφ grows as its square root). ``measure=False`` leaves R0 unmeasured (NaN):
     a trial of the drawings' sizes."""
     cam = sol.cam
     n = n or cam.divisions
     phi, phase = divisions(sol, n)
     L = L or L_MM * size
     height = size if height is None else height
+    accel = height if accel is None else accel
     mu_phi = 2 * math.pi / L
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0
-    mu_a = nice(peak / (HEIGHT_MM * height))
+    mu_a = nice(peak / (HEIGHT_MM * accel))
     if H1 is None or H2 is None:
-        # the stroke drawn about STROKE_MM high at a standard μ_s; H1 a whole millimetre near the
-        # geometric mean, H2 then follows from μ_s = μ_a·μ_φ²·H1·H2 (what the student computes)
+        # the stroke drawn about STROKE_MM high: H1 and H2 whole millimetres (15–50) near what that
+        # asks; the scales follow from them, μ_v = μ_a·μ_φ·H1, μ_s = μ_v·μ_φ·H2 (the lab's formula)
         mu_s_target = nice(cam.stroke / (STROKE_MM * height))
         H = math.sqrt(mu_s_target / (mu_a * mu_phi ** 2))
-        H1 = H1 or float(max(5.0, round(H)))
-        H2 = H2 or mu_s_target / (mu_a * mu_phi ** 2 * H1)
+        H1 = H1 or pole_distance(H)
+        H2 = H2 or pole_distance(mu_s_target / (mu_a * mu_phi ** 2 * H1))
     mu_v = mu_a * mu_phi * H1
     mu_s = mu_v * mu_phi * H2
     s_ex, v_ex, a_ex = motion(cam, phi, phase)
@@ -130,18 +150,24 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     a_mm = read(a_ex / mu_a, precision)
     v_mm = np.zeros_like(phi)
     s_mm = np.zeros_like(phi)
+    v_chord, s_chord = np.zeros_like(phi), np.zeros_like(phi)
+    a_mid, v_mid = [], []
     for k in (0, 1):
         sel = phase == k
         x = x_mm[sel]
         start = 0.0 if k == 0 else cam.stroke / mu_s
         if cam.laws[k] == "linear":                       # drawn directly: a constant ds/dφ
             v_mm[sel] = read(v_ex[sel] / mu_v, precision)
+            v_chord[sel] = v_mm[sel]
+            a_mid.append(np.full(len(x) - 1, np.nan))
         else:
             # the middle ordinate of each interval read off the drawn curve of the analogue acceleration
             mid_phi = 0.5 * (phi[sel][:-1] + phi[sel][1:])
-            _, _, a_mid = motion(cam, mid_phi)
-            v_mm[sel] = _integrate_phase(x, a_mm[sel], H1, 0.0, precision, mid=a_mid / mu_a)
-        s_mm[sel] = _integrate_phase(x, v_mm[sel], H2, start, precision)
+            _, _, a_m = motion(cam, mid_phi)
+            v_mm[sel], mid, v_chord[sel] = _integrate_phase(x, a_mm[sel], H1, 0.0, precision, mid=a_m / mu_a)
+            a_mid.append(mid)
+        s_mm[sel], mid, s_chord[sel] = _integrate_phase(x, v_mm[sel], H2, start, precision)
+        v_mid.append(mid)
     s_mm, closing = close_phases(s_mm, phase, cam.stroke / mu_s, precision)
     s_g, v_g = s_mm * mu_s, v_mm * mu_v
     # the phase diagram: the smallest base radius at which no drawn point exceeds the allowed angle
@@ -154,7 +180,8 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     radius_mm = read(prof["radius"] / mu_l, precision)
     theta = np.round(prof["theta"] * 2) / 2 if precision > 0 else prof["theta"]   # a protractor's ½°
     out = CamConstruction(phi, phase, mu_phi, mu_a, mu_v, mu_s, H1, H2, precision, a_mm, v_mm, s_mm, R0_min,
-                          sol.geometry.R0, radius_mm, theta, mu_l, closing=closing)
+                          sol.geometry.R0, radius_mm, theta, mu_l, closing=closing, a_mid=np.concatenate(a_mid),
+                          v_mid=np.concatenate(v_mid), v_chord=v_chord, s_chord=s_chord)
     closure = abs(closing[0]) * mu_s / cam.stroke
     if closure > 0.05:
         out.warnings.append((f"the rise's graphical s ended {closure * 100:.1f} % off the stroke before its closing: "

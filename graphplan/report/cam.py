@@ -88,7 +88,7 @@ WORDS = {
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
-           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} мм, H_2 = {h2} мм",
+           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0мм, H_2 = {h2}\u00a0мм",
            "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
@@ -104,7 +104,7 @@ WORDS = {
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
-           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1} mm, H_2 = {h2} mm",
+           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0mm, H_2 = {h2}\u00a0mm",
            "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",

@@ -108,12 +108,31 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     return {"diagrams": (w["diagrams"], first), "phase": (w["phase"], phase), "profile": (w["profile"], profile)}
 
 
+def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
+    """The diagrams and, to their right, the phase diagram at the same height — its s axis lined up
+    with the s diagram's (both at μ_s: the point C0 of s = 0 level with the s diagram's φ axis, so a
+    value of s reads straight across) —, each with its caption: one drawing on the sheet."""
+    left = captioned(diagrams, *caps["diagrams"])
+    right = captioned(phase, *caps["phase"])
+    axis = next(q for q in diagrams.items if q.step == "axis s")
+    start = next(q for q in phase.items if q.step == "R0")
+    dy = axis.points[0][1] - start.points[1][1]
+    dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
+    out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
+    out.scales.update(phase.scales)
+    return out
+
+
 def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
-    """The captioned drawings (none when ``drawn`` is {}), the table and the notes."""
+    """The captioned drawings (none when ``drawn`` is {}): the diagrams with the phase diagram beside
+    them, the profile; the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
     drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
-    leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in drawn]
+    leaves = []
+    if drawn:
+        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps)),
+                  Leaf("profile", record=captioned(drawn["profile"], *caps["profile"]))]
     tab = Leaf("table", record=positions_table(doc, lang))
     table_w = tab.record.bounds()[2] - tab.record.bounds()[0]
     # the notes between the table and the title block, their lines not longer than about 300 mm
@@ -126,38 +145,47 @@ def _one_sheet(laid) -> bool:
     """The drawings on one sheet and in one row (the reading order of LAYOUT.md's cam sheet)."""
     if laid is None or len(laid) != 1:
         return False
-    tops = {round(b[3], 6) for leaf, b in laid[0] if leaf.name in ("diagrams", "phase", "profile")}
+    tops = {round(b[3], 6) for leaf, b in laid[0] if leaf.name in ("diagrams", "profile")}
     return len(tops) == 1
 
 
-def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple[float, float, float]:
-    """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``): the
-    largest common size whose drawings (at the standard scales that size asks) fit the sheet in one
-    row above the table and the notes — in both languages —, then the diagrams' ordinates grown while
-    they fit, then the profile, the main drawing. (1, 1, 1) when nothing fits one sheet (then a set
-    of sheets)."""
+def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
+              ) -> tuple[float, float, float, float]:
+    """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``,
+    ``accel``): the largest common size whose drawings (at the standard scales that size asks) fit the
+    sheet in one row above the table and the notes — in both languages —, then the diagrams'
+    ordinates grown while they fit, then the profile, the main drawing, then the d²s/dφ² and ds/dφ
+    diagrams alone (μ_s kept) into the height left. (1, 1, 1, 1) when nothing fits one sheet (then a
+    set of sheets)."""
     region, keep = field_of(f), keep_out(f)
 
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     memo: dict = {}
     fixed_: dict = {}                      # the table's and the notes' sizes: the same at every size
 
-    def leaf(name, draw, key, g, lang):
-        if (name, key, lang) not in memo:  # each drawing depends on its own scales only
-            if (name, key) not in memo:
-                memo[(name, key)] = draw(sol, g, "en")   # the longer phase names
-            memo[(name, key, lang)] = Leaf(name, record=captioned(memo[(name, key)], *_captions(g, sol.cam, lang)[name]))
+    def drawing(name, draw, key, g):
+        if (name, key) not in memo:        # each drawing depends on its own scales only
+            memo[(name, key)] = draw(sol, g, "en")   # the longer phase names
+        return memo[(name, key)]
+
+    def leaf(name, key, g, lang):
+        if (name, key, lang) not in memo:
+            caps = _captions(g, sol.cam, lang)
+            if name == "diagrams":
+                rec = beside(drawing("diagrams", diagrams, key, g), drawing("phase", phase_diagram, key[2:3], g), caps)
+            else:
+                rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
+            memo[(name, key, lang)] = Leaf(name, record=rec)
         return memo[(name, key, lang)]
 
-    def fits(size: float, prof: float, height: float) -> bool:
-        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False)
+    def fits(size: float, prof: float, height: float, accel: float | None = None) -> bool:
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
         for lang in ("uk", "en"):
             if lang not in fixed_:
                 _, tab, nts, _ = _leaves(sol, g, sol.cam, lang, {})
                 fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
-            leaves = [leaf("diagrams", diagrams, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g, lang),
-                      leaf("phase", phase_diagram, (g.mu_s,), g, lang),
-                      leaf("profile", profile_drawing, (g.mu_l,), g, lang)]
+            leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g, lang),
+                      leaf("profile", (g.mu_l,), g, lang)]
             if not _one_sheet(flow([leaves, fixed_[lang]], region, keep)):
                 return False
         return True
@@ -166,21 +194,23 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
         _, tab, nts, _ = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
         if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
-            return 1.0, 1.0, 1.0
+            return 1.0, 1.0, 1.0, 1.0
     if not fits(1.0, 1.0, 1.0):
-        return 1.0, 1.0, 1.0
+        return 1.0, 1.0, 1.0, 1.0
     k = _largest(lambda x: fits(x, x, x), list(SIZES)) or 1.0
     rest = [x for x in SIZES if x > k]
     kh = (_largest(lambda x: fits(k, k, x), rest) if rest else None) or k
     kp = (_largest(lambda x: fits(k, x, kh), rest) if rest else None) or k
+    up = [x for x in SIZES if x > kh]
+    ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
     for lang in ("uk", "en"):
         leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
         if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
-            return 1.0, 1.0, 1.0
-    return k, kp, kh
+            return 1.0, 1.0, 1.0, 1.0
+    return k, kp, kh, ka
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -195,31 +225,11 @@ def _largest(ok, sizes: list[float]) -> float | None:
     return best
 
 
-def _lined_up(page: list[Placed]) -> list[Placed]:
-    """The phase diagram moved up or down so that its s axis starts level with the s diagram's (both
-    at μ_s: a point of s reads across from one to the other), where it stays inside its box."""
-    by = {p.name: p for p in page}
-    if "diagrams" not in by or "phase" not in by:
-        return page
-    axis = [q for q in by["diagrams"].record.items if q.step == "axis s"]
-    start = [q for q in by["phase"].record.items if q.step == "R0"]
-    if not axis or not start:
-        return page
-    dy = axis[0].points[0][1] - start[0].points[1][1]
-    phase = by["phase"]
-    moved = phase.record.moved(0.0, dy)
-    x0, y0, x1, y1 = moved.bounds()
-    b = phase.box
-    if y0 < b[1] - 1e-9 or y1 > b[3] + 1e-9:
-        return page
-    return [Placed(p.name, moved, p.box) if p.name == "phase" else p for p in page]
-
-
 def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     """The construction at the scales of the cam sheet on ``f`` (cam_sizes): what `graphplan cam`,
     the explorer, graphplan.cam() and the sheet itself measure, so that they print the same numbers."""
-    size, prof, height = cam_sizes(sol, f, n, precision)
-    return construct(sol, n, precision, size=size, profile_size=prof, height=height)
+    size, prof, height, accel = cam_sizes(sol, f, n, precision)
+    return construct(sol, n, precision, size=size, profile_size=prof, height=height, accel=accel)
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -236,8 +246,6 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet; choose a larger --format")
     pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
              for page in laid]
-    if not cam.rocking:
-        pages = [_lined_up(page) for page in pages]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")
