@@ -421,17 +421,36 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         rec.vector(_pt(s.start), _pt(s.end), role=role[s.role], layer="vectors", step=step,
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
-    lab = Labeler(rec)
     tiny = [s for s in sides if s.mm < TINY_MM]
-    for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM]):
-        lab.place(at, force_symbol(s.name, lang), 2.5, side, step)
-    lab.done()
+    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, 2.5, step=step)
+                 for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}"
     if tiny:     # vectors too short to carry a label: named under the plan with their bound
         names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
-        caption += f"; {names} < {num(math.ceil(max(s.mm for s in tiny)), lang)} {unit('mm', lang)}"
+        caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
+    return rec
+
+
+def _apart(rec: Record, asked: list[LabelRequest]) -> Record:
+    """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
+    ring its letter height out, so that no two stand closer than their height; the rings go."""
+    from graphplan.drawing.labels import place_labels
+    rings = []
+    for req in asked:
+        n = len(rec.items)
+        place_labels(rec, [req], layer="labels")
+        for p in rec.items[n:]:
+            if p.kind != "text":
+                continue
+            x0, y0, x1, y1 = p.bounds()
+            g = req.size
+            rings.append(rec.add("polyline", [(x0 - g, y0 - g), (x1 + g, y0 - g), (x1 + g, y1 + g),
+                                              (x0 - g, y1 + g), (x0 - g, y0 - g)],
+                                 role="construction", layer="construction"))
+    keep = {id(r) for r in rings}
+    rec.items[:] = [p for p in rec.items if id(p) not in keep]
     return rec
 
 
