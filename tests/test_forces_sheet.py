@@ -287,3 +287,15 @@ def test_tiny_plan_vectors_are_named_under_the_plan(sheet):
                 assert sym in caption, (sheet["name"], gp.label, s.name, caption)
                 bound = float(caption.split("<")[1].split()[0].replace(",", "."))
                 assert s.mm < bound, (s.name, s.mm, caption)
+
+
+def test_lever_forces_at_one_image_do_not_cover_each_other(sheet):
+    """On the Zhukovsky lever two forces at one image on one line (the slotter's Φ5 and P_D at d)
+    are drawn side by side: no two arrows share a stretch of a line."""
+    for rec in sheet["drawings"]["lever"]:
+        vs = [v for v in _vectors(rec)]
+        for i, v in enumerate(vs):
+            a, b = _shaft(v)
+            for w in vs[i + 1:]:
+                c, d = _shaft(w)
+                assert _shared(a, b, c, d) < 1.0, (sheet["name"], v.text, w.text)
