@@ -102,9 +102,10 @@ def _arms_on_their_lines(records) -> None:
         arms = [p for p in rec.items if p.kind == "segment" and p.text.startswith("h")]
         forces = {v.text: v for v in _vectors(rec)}
         for arm in arms:
-            m = re.match(r"h\d+ = ([0-9.]+) mm to (.+)$", arm.text)
+            m = re.match(r"h_\{(.+)\} = ([0-9.]+) mm to (.+)$", arm.text)
             assert m, arm.text
-            h, name = float(m.group(1)), m.group(2)
+            h, name = float(m.group(2)), m.group(3)
+            assert m.group(1) == name.replace("_", ""), arm.text     # lettered by its own force: h_{G2}
             (ax, ay), (fx, fy) = arm.points
             (px, py), (qx, qy) = forces[name].points
             ux, uy = qx - px, qy - py
@@ -197,3 +198,104 @@ def test_force_sheets_have_no_overprint(name, tmp_path):
     res = subprocess.run([sys.executable, "/work/shared/tools/overprint.py", str(out)], capture_output=True,
                          text=True, check=True)
     assert " 0 overprinted" in res.stdout, res.stdout
+
+
+def _shaft(v):
+    (px, py), (qx, qy) = v.points
+    return complex(px, py), complex(qx, qy)
+
+
+def _shared(a, b, c, d, tol: float = 0.3) -> float:
+    """How long (mm) the segments a–b and c–d run on one line (0 when they do not)."""
+    u = (b - a) / abs(b - a)
+    if any(abs(((p - a) * u.conjugate()).imag) > tol for p in (c, d)):
+        return 0.0
+    lo, hi = sorted((((c - a) * u.conjugate()).real, ((d - a) * u.conjugate()).real))
+    return max(0.0, min(hi, abs(b - a)) - max(lo, 0.0))
+
+
+def test_no_force_is_drawn_over_another_or_inside_a_link(sheet):
+    """Each force on a group's drawing reads on its own: no two arrows share a stretch of one line
+    (Φ5 over P_D at the ram), and no force lies inside a link's line (Φ1 along the crank at S1)."""
+    for rec in sheet["drawings"]["groups"]:
+        vs = [v for v in _vectors(rec) if not v.text.startswith("M")]
+        for i, v in enumerate(vs):
+            a, b = _shaft(v)
+            for w in vs[i + 1:]:
+                c, d = _shaft(w)
+                assert _shared(a, b, c, d) < 1.0, (sheet["name"], rec.title, v.text, w.text)
+            for p in rec.items:
+                if p.kind == "polyline" and p.role == "link" and p.layer == "mechanism":
+                    pts = [complex(x, y) for x, y in p.points]
+                    for s, e in zip(pts, pts[1:]):
+                        if abs(e - s) > 1e-6:
+                            assert _shared(s, e, a, b) < 1.0, (sheet["name"], rec.title, v.text)
+
+
+def test_a_load_at_a_centre_of_mass_is_applied_at_a_marked_point(sheet):
+    """A weight or inertia force at a link's centre of mass starts at a point lettered S_i
+    (or the link's named centre) on the group's drawing, as the teacher reads "applied at S1"."""
+    fp = sheet["fp"]
+    for gp, rec in zip(fp.groups, sheet["drawings"]["groups"]):
+        mu = gp.mu_l or fp.mu_l
+        texts = [p.text for p in rec.items if p.kind == "text"]
+        points = [complex(*p.points[0]) for p in rec.items if p.kind == "point"]
+        for f in gp.forces:
+            if f.force and f.name[0] in "GΦ":
+                z = f.at / mu
+                assert any(abs(z - w) < 0.05 for w in points), (sheet["name"], gp.label, f.name)
+        kin, mech = fp.ks.kin, fp.ks.mech
+        joints = [complex(kin.bodies[k].at(mech.links[k].local[j])[0][0]) for k in gp.links
+                  for j in mech.links[k].joints]
+        for f in gp.forces:
+            if f.force and f.name[0] == "G" and all(abs(f.at - w) > 1e-6 for w in joints):
+                lk = mech.links[f.link]          # not at a lettered joint: its centre lettered
+                centre = lk.com or f"S{lk.number}"
+                assert any(t.replace("_", "").replace("{", "").replace("}", "") == centre
+                           for t in texts), (sheet["name"], gp.label, centre, texts)
+
+
+def _box_gap(p, q) -> float:
+    ax0, ay0, ax1, ay1 = p.bounds()
+    bx0, by0, bx1, by1 = q.bounds()
+    dx = max(0.0, max(ax0, bx0) - min(ax1, bx1))
+    dy = max(0.0, max(ay0, by0) - min(ay1, by1))
+    return math.hypot(dx, dy)
+
+
+def test_force_plan_labels_stand_apart(sheet):
+    """No two labels of a force plan closer than their letter height (R23, R12 and Rⁿ12 on
+    near-parallel sides named apart; the crank plan's tiny G1, Φ1 not lettered in a clump)."""
+    for rec in sheet["drawings"]["forces"]:
+        labels = [p for p in rec.items if p.kind == "text" and not p.text.startswith("μ")]
+        for i, p in enumerate(labels):
+            for q in labels[i + 1:]:
+                assert _box_gap(p, q) >= min(p.size, q.size) - 1e-9, (sheet["name"], rec.title, p.text, q.text)
+
+
+def test_tiny_plan_vectors_are_named_under_the_plan(sheet):
+    """A force plan's vector too short to letter (< 3 mm) is named in the line under the plan with
+    its bound ("G_1, Φ_1 < 2 мм"), the bound above its drawn length."""
+    from graphplan.drawing.forces import TINY_MM
+    from graphplan.util.words import force_symbol
+    fp = sheet["fp"]
+    for gp, rec in zip(fp.groups, sheet["drawings"]["forces"]):
+        caption = next(p.text for p in rec.items if p.kind == "text" and p.text.startswith("μ"))
+        for s in gp.sides:
+            if 1e-9 < s.mm < TINY_MM:
+                sym = force_symbol(s.name, "uk")
+                assert sym in caption, (sheet["name"], gp.label, s.name, caption)
+                bound = float(caption.split("<")[1].split()[0].replace(",", "."))
+                assert s.mm < bound, (s.name, s.mm, caption)
+
+
+def test_lever_forces_at_one_image_do_not_cover_each_other(sheet):
+    """On the Zhukovsky lever two forces at one image on one line (the slotter's Φ5 and P_D at d)
+    are drawn side by side: no two arrows share a stretch of a line."""
+    for rec in sheet["drawings"]["lever"]:
+        vs = [v for v in _vectors(rec)]
+        for i, v in enumerate(vs):
+            a, b = _shaft(v)
+            for w in vs[i + 1:]:
+                c, d = _shaft(w)
+                assert _shared(a, b, c, d) < 1.0, (sheet["name"], v.text, w.text)

@@ -90,6 +90,39 @@ ALONG_DEG = 12.0   # a force within this angle of a link through its point lies 
 PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, to read
 
 
+SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel
+
+
+def arm_symbol(name: str) -> str:
+    """The arm of a force as the lab letters it (markup): h with the force's name below —
+    G2 → h_{G2}, Φ2 → h_{Φ2}, R43 → h_{R43}; the terminal writes the same pair as G₂·h."""
+    return "h_{" + name.replace("_", "").replace("{", "").replace("}", "") + "}"
+
+
+def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -> tuple[float, float]:
+    """How far (mm) a drawn link whose line the force's line follows (within ``ALONG_DEG``) runs on
+    from ``z`` ahead along ``u`` and behind it."""
+    ahead = behind = 0.0
+    for a, b in links:
+        d = b - a
+        if abs(d) < 1e-9 or not _on_segment(z, a, b):
+            continue
+        if abs((u.conjugate() * d / abs(d)).imag) > math.sin(math.radians(ALONG_DEG)):
+            continue
+        ends = [dot(e - z, u) for e in (a, b)]
+        ahead, behind = max(ahead, max(ends)), max(behind, -min(ends))
+    return ahead, behind
+
+
+def _overlap(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
+    """Two arrows a→b and c→d on one line (within ``tol`` mm) sharing more than ``tol`` of it."""
+    u = _unit(b - a)
+    if abs(((c - a).conjugate() * u).imag) > tol or abs(((d - a).conjugate() * u).imag) > tol:
+        return False
+    lo, hi = sorted((dot(c - a, u), dot(d - a, u)))
+    return min(hi, abs(b - a)) - max(lo, 0.0) > tol
+
+
 def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
     d = b - a
     if abs(d) < 1e-9:
@@ -181,6 +214,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
              if {fp.ks.reactions[m.key].frm, fp.ks.reactions[m.key].on} - set(gp.links)]
     biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
     labels: list[tuple[complex, str, complex]] = []
+    centres: list[tuple[complex, str]] = []
     drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
     span: dict[str, tuple[complex, complex]] = {}
     clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
@@ -190,12 +224,40 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         at = truth.line_point()[0] if truth.on in gp.links else truth.at[0]
         if m.acting:
             busy.append((complex(at) / mu, _unit(m.acting)))
+    armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
+    drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
+
+    def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
+        """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
+        link's line (Φ1 at S1 on the crank) or on the line of an arrow already drawn at its point
+        (Φ5 over P_D at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others —
+        unless an arm is drawn to its line (the arm ends on the line itself)."""
+        a, b = _clear_of_links(z, u, length, drawn_links, busy)
+        ahead, behind = _along_links(z, u, drawn_links)
+        inside = ahead > 0.5 and behind > 0.5
+        over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
+        if (inside or over) and name not in armed:
+            others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
+            others += [_unit(e - z) for s, e in drawn_links for e in (s, e)
+                       if abs(e - z) > 0.5 and _on_segment(z, s, e)
+                       and abs((_unit(e - z).conjugate() * u).imag) > math.sin(math.radians(ALONG_DEG))]
+            n = 1j * u
+            if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
+                n = -n
+            a, b = z + SIDE_MM * n, z + SIDE_MM * n + length * u
+        drawn.append((z, a, b))
+        return a, b
+
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = _clear_of_links(z, u, _arrow_length(abs(f.force), biggest), drawn_links, busy)
+        a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
-        labels.append((b, f.name, u) if a == z else (a, f.name, -u))
+        labels.append((a, f.name, -u) if abs(b - z) < 0.5 else (b, f.name, u))
+        if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
+            lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
+            centres.append((z, lk.com or f"S{lk.number}"))
+            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":
             # M_зр at the crank's pivot: an arc arrow in its sense, on the side away from the crank
@@ -235,9 +297,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = _clear_of_links(z, u, _arrow_length(m.value, biggest), drawn_links, busy)
+        a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
-        labels.append((b, m.name, u) if a == z else (a, m.name, -u))
+        labels.append((a, m.name, -u) if abs(b - z) < 0.5 else (b, m.name, u))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)
@@ -249,9 +311,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             if abs(t.arm_mm) < 1.0 or t.couple or f is None:
                 continue
             arms.append((about, t, f))
-    for k, (about, t, f) in enumerate(arms, 1):
+    for about, t, f in arms:
         rec.segment(_pt(about), _pt(t.foot), role="construction", layer="construction", step=step,
-                    text=f"h{k} = {abs(t.arm_mm):g} mm to {t.name}")
+                    text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
         # the right-angle mark at the foot: the arm is perpendicular to this force's line
         back, along = _unit(about - t.foot) * 1.5, _unit(f.force) * 1.5
         if dot(f.at / mu - t.foot, along) < 0:
@@ -270,9 +332,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for z, name in names:
         side = next((v for c, v in clear.items() if abs(c - z) < 0.5), -1 - 1j)
         lab.place(z, indexed(name), 3.5, side, step)
-    for k, (about, t, _) in enumerate(arms, 1):
+    for z, name in centres:
+        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+    for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
-        lab.place(mid, f"h_{k}", 2.5, 1j * _unit(t.foot - about), step)
+        lab.place(mid, arm_symbol(t.name), 2.5, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), 2.5, u, step)
     return lab.done()
@@ -357,14 +421,69 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         rec.vector(_pt(s.start), _pt(s.end), role=role[s.role], layer="vectors", step=step,
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
-    lab = Labeler(rec)
-    for s in sorted(sides, key=lambda s: s.mm):
-        u = _unit(s.end - s.start)
-        lab.place(0.5 * (s.start + s.end), force_symbol(s.name, lang), 2.5, 1j * u, step)
-    lab.done()
+    tiny = [s for s in sides if s.mm < TINY_MM]
+    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, 2.5, step=step)
+                 for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
-    rec.label((x0, y0 - 6.0), f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}", size=3.5, step=step)
+    caption = f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}"
+    if tiny:     # vectors too short to carry a label: named under the plan with their bound
+        names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
+        caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
+    rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
+
+
+def _apart(rec: Record, asked: list[LabelRequest]) -> Record:
+    """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
+    ring its letter height out, so that no two stand closer than their height; the rings go."""
+    from graphplan.drawing.labels import place_labels
+    rings = []
+    for req in asked:
+        n = len(rec.items)
+        place_labels(rec, [req], layer="labels")
+        for p in rec.items[n:]:
+            if p.kind != "text":
+                continue
+            x0, y0, x1, y1 = p.bounds()
+            g = req.size
+            rings.append(rec.add("polyline", [(x0 - g, y0 - g), (x1 + g, y0 - g), (x1 + g, y1 + g),
+                                              (x0 - g, y1 + g), (x0 - g, y0 - g)],
+                                 role="construction", layer="construction"))
+    keep = {id(r) for r in rings}
+    rec.items[:] = [p for p in rec.items if id(p) not in keep]
+    return rec
+
+
+TINY_MM = 3.0      # a force plan's vector shorter than this gets no label of its own (named under the plan)
+SPREAD_MM = 8.0    # labels' anchors on a force plan kept at least this far apart where the sides allow
+
+
+def _plan_anchors(sides: list) -> list[tuple[complex, object, complex]]:
+    """Where each side of a force plan is labelled: at its middle, else the point along it (of
+    0.5, 0.35, 0.65 … of its length) farthest from the anchors already taken, so that sides on
+    near-parallel lines (R23, R12, Rⁿ12) are named apart; on the side away from the plan's middle."""
+    if not sides:
+        return []
+    centre = sum(0.5 * (s.start + s.end) for s in sides) / len(sides)
+    taken: list[complex] = []
+    out = []
+    for s in sorted(sides, key=lambda s: -s.mm):
+        d = s.end - s.start
+        best, score = None, -1.0
+        for t in (0.5, 0.35, 0.65, 0.25, 0.75, 0.15, 0.85):
+            z = s.start + t * d
+            gap = min((abs(z - w) for w in taken), default=math.inf)
+            if gap >= SPREAD_MM:
+                best = z
+                break
+            if gap > score:
+                best, score = z, gap
+        taken.append(best)
+        n = 1j * _unit(d)
+        if dot(n, best - centre) < 0:
+            n = -n
+        out.append((best, s, n))
+    return out
 
 
 # -- the lever ---------------------------------------------------------------------------------
@@ -386,13 +505,24 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     rec.point((0.0, 0.0), role="joint", layer="vectors", step=step)
     biggest = max([t.force for t in lv.terms] + [abs(lv.balancing_force), 1e-9])
     labels = []
+    drawn: list[tuple[complex, complex, complex]] = []
+    lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
     for t in lv.terms:
         if not t.vector:
             continue
         z = turned[t.image]
         u = _unit(t.vector)
-        tip = z + _arrow_length(t.force, biggest) * u
-        rec.vector(_pt(z), _pt(tip), role="absolute", layer="vectors", step=step,
+        tail, tip = z, z + _arrow_length(t.force, biggest) * u
+        ahead, behind = _along_links(z, u, lines)
+        if (any(abs(w - z) < 0.5 and _overlap(tail, tip, a, b) for w, a, b in drawn)
+                or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)):
+            # on the line of a force drawn at the same image (Φ5 with P_D at d), or along a line of
+            # the lever through its point (Φ1 along p_v s1): set aside, parallel, away from the
+            # pole; the arm to their one line serves both
+            n = 1j * u if dot(1j * u, z) >= 0 else -1j * u
+            tail, tip = z + SIDE_MM * n, tip + SIDE_MM * n
+        drawn.append((z, tail, tip))
+        rec.vector(_pt(tail), _pt(tip), role="absolute", layer="vectors", step=step,
                    text=f"{t.name}: h = {t.arm_mm:g} mm")
         labels.append((tip, t.name, u))
         if abs(t.arm_mm) >= 1.0:
