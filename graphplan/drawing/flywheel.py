@@ -13,7 +13,7 @@ from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
 from graphplan.drawing.labels import place_labels
 from graphplan.graphic.record import LabelRequest, Record, line_pitch
-from graphplan.util.words import fixed, num
+from graphplan.util.words import num
 
 if TYPE_CHECKING:
     from graphplan.graphic.flywheel import Flywheel
@@ -39,6 +39,13 @@ WORDS = {
            "kl": "|kl| = {kl} mm", "axis": "ΔT axis", "Mc": "M^*_c", "Md": "M^*_d", "Ac": "A_c", "Ad": "A_d",
            "Im": "I^*_m"},
 }
+
+
+def achieved(value: float, given: float, lang: str) -> str:
+    """The δ a steady state achieves as the lab writes it: the given value as given (0,05, not
+    0,050000) where the two agree to the sheet's 4 significant figures, else the value itself to 4
+    (util.words.num)."""
+    return num(given, lang) if num(value, lang) == num(given, lang) else num(value, lang)
 
 
 def _extent(*arrays) -> tuple[float, float]:
@@ -188,7 +195,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ_{{{name}}} = {fixed(psi, lang, 2)}°", 1 + 0j, TEXT,
+        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ_{{{name}}} = {num(psi, lang)}°", 1 + 0j, TEXT,
                                    step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
@@ -240,8 +247,26 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {fixed(m.delta, lang, 4)}, ω_m = {fmt(m.mean, lang)}", size=NUM, layer=LAYER)
+        rec.label((12.0, yl), f"{text}: δ = {achieved(m.delta, dyn.delta, lang)}, ω_m = {fmt(m.mean, lang)} "
+                              f"{w['rad']}/{w['s']}", size=NUM, layer=LAYER)
     return rec
+
+
+SPEED_MIN = (150.0, 50.0)     # mm: the smallest ω(φ) plot (abscissa × height) that still reads
+SPEED_ASPECT = 0.75           # the plot no taller than ¾ of its abscissa …
+SPEED_TALLEST = 160.0         # … nor than this (mm)
+
+
+def speed_fitted(f: Flywheel, lang: str, w: float, h: float) -> Record:
+    """ω(φ) drawn as large as a zone of w × h mm holds (its lettering included): ω has no standard
+    scale — its ticks are read off the ordinate axis —, so the plot takes the zone, no taller than
+    ``SPEED_ASPECT`` of its abscissa or ``SPEED_TALLEST``; never below ``SPEED_MIN``."""
+    pw, ph = SPEED_MIN
+    probe = speed_record(f, lang, width=pw, height=ph)
+    x0, y0, x1, y1 = probe.bounds()
+    pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed
+    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), SPEED_ASPECT * pw, SPEED_TALLEST))
+    return speed_record(f, lang, width=pw, height=ph)
 
 
 def _nice(raw: float) -> float:
@@ -252,8 +277,11 @@ def _nice(raw: float) -> float:
     return 10 ** (e + 1)
 
 
-def records(f: Flywheel, lang: str = "uk", speed_height: float = 100.0) -> dict[str, Record]:
-    """Every drawing of the construction by name."""
+def records(f: Flywheel, lang: str = "uk", speed_height: float = 100.0,
+            speed_zone: tuple[float, float] | None = None) -> dict[str, Record]:
+    """Every drawing of the construction by name; ω(φ) over the abscissa L ``speed_height`` mm
+    high, or as large as ``speed_zone`` (w, h mm) holds (``speed_fitted``)."""
     return {"moments": moments_record(f, lang), "energy": energy_record(f, lang),
             "inertia": inertia_record(f, lang), "wittenbauer": wittenbauer_record(f, lang),
-            "speed": speed_record(f, lang, height=speed_height)}
+            "speed": speed_record(f, lang, height=speed_height) if speed_zone is None
+            else speed_fitted(f, lang, *speed_zone)}

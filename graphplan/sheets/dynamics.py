@@ -4,7 +4,7 @@ flywheel read off |kl|, the steady-state speed ω(φ), the tables of the reduced
 position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
-from graphplan.drawing.flywheel import records
+from graphplan.drawing.flywheel import achieved, records, speed_fitted
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
@@ -137,11 +137,12 @@ def motor_table(doc: dict, lang: str) -> Record:
             ["n_с / n_н, об/хв" if uk else "n_c / n_n, rpm", f"{num(m['rpm_sync'], lang)} / {num(m['rpm_rated'], lang)}"],
             ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fmt(m['omega_sync'], lang)} / {fmt(m['omega_rated'], lang)}"],
             ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fmt(m['moment_rated'], lang)} / {fmt(m['moment_max'], lang)}"],
-            ["M = Aω + B", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
+            ["M = Aω + B, Н·м" if uk else "M = Aω + B, N·m", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
             ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
-            ["i, η", f"{num(m['ratio'], lang, 4)}, {num(m['efficiency'], lang)}"],
+            ["i; η", f"{num(m['ratio'], lang, 4)}; {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
-            ["ω_m, δ", f"{fmt(m['motion']['omega_mean'], lang)}, {fmt(m['motion']['delta'], lang, 3)}"],
+            ["ω_m, рад/с; δ" if uk else "ω_m, rad/s; δ",
+             f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             ["M_{max} циклу, Н·м" if uk else "M_{max} on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
 
@@ -165,22 +166,22 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     s = doc["scales"]
     fw = doc["flywheel"]
     rot, red, fl = ("I_рот", "I_ред", "I_мах") if uk else ("I_rotor", "I_red", "I_fl")
+    J, Nm, kgm2 = ("Дж", "Н·м", "кг·м²") if uk else ("J", "N·m", "kg·m²")
     lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang)),
-             f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {'Н·м' if uk else 'N·m'}/{mm}, μ_φ = 2π/L = "
-             f"{num(s['mu_phi'], lang, 5)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
-             f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang, 5)} {'Дж' if uk else 'J'}/{mm}, μ_I = {num(s['mu_I'], lang)} "
-             f"{'кг·м²' if uk else 'kg·m²'}/{mm}",
-             f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang, 5)} {'Дж' if uk else 'J'}, "
-             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang, 5)}; "
-             f"{'графічно' if uk else 'graphical'} {num(f.driving, lang, 5)} {'Н·м' if uk else 'N·m'}",
-             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, 3)}°, "
-             f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, 3)}°",
-             f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang, 5)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang, 4)}²·"
-             f"{num(doc['delta'], lang)}) = {num(f.total, lang, 4)}; {fl} = J − {rot}·i² − {red} = "
-             f"{num(f.flywheel, lang, 4)} {'кг·м²' if uk else 'kg·m²'}",
-             w["achieved"].format(d=fixed(doc["motion"]["delta"], lang, 6), c=closure(doc["motion"]["closure"], lang)),
+             f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
+             f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
+             f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
+             f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang)} {J}, "
+             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang)} {Nm}; "
+             f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
+             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
+             f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
+             f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(s['mu_A'], lang)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang)}²·"
+             f"{num(doc['delta'], lang)}) = {num(f.total, lang)} {kgm2}; {fl} = J − {rot}·i² − {red} = "
+             f"{num(f.flywheel, lang)} {kgm2}",
+             w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
+                                  c=closure(doc["motion"]["closure"], lang)),
              w["turn"].format(phi0=fixed(doc["start_phi_deg"], lang, 1))]
-    from graphplan.sheets.form import wrap
     said = []
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
@@ -194,12 +195,11 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"], p=fmt(m["power_kW"], lang),
                                                  need=fmt(m["power_needed_kW"], lang)))
-    for text in said:
-        lines += wrap(text, 250.0, 3.5)
+    lines += said                          # each a line the note block wraps to the column (once)
     for en, uk_text in f.dyn.warnings:
         if "no flywheel is needed" in en or "below the power rule" in en:   # said above in full
             continue
-        lines += wrap(f"{w['warn']}: {uk_text if uk else en}", 250.0, 3.5)
+        lines.append(f"{w['warn']}: {uk_text if uk else en}")
     rec = Record("notes")
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
@@ -215,9 +215,30 @@ def _tables(doc: dict, lang: str, factor: float) -> list[tuple[str, Record]]:
 
 
 def _drawn(dyn, args, L: float, size: float, lang: str) -> tuple[Flywheel, dict[str, Record]]:
+    """The construction at (L, size) and its drawings captioned, ω(φ) at its smallest (``_speed``
+    grows it into its zone once the composition is chosen)."""
     f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
-    drawn = records(f, lang, speed_height=100.0 * size)
+    drawn = records(f, lang, speed_zone=(0.0, 0.0))
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
+
+
+def _speed(f: Flywheel, lang: str, zone: tuple[float, float]) -> Record:
+    """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds."""
+    w, h = zone
+    probe = speed_fitted(f, lang, w, 0.0)
+    h -= _wh(captioned(probe, WORDS[lang]["speed"]))[1] - _wh(probe)[1]   # the caption's height comes off
+    return captioned(speed_fitted(f, lang, w, h), WORDS[lang]["speed"])
+
+
+def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
+    """The room ω(φ) owns once the other zones have theirs (LAYOUT.md: each zone's drawing as large
+    as fits it): over the tables' column beside the left bands ("speed"), under the bands beside
+    the column ("bands", "column")."""
+    middle = extent(Row([Stack([d["energy"], d["inertia"]]), d["wittenbauer"]]))
+    if shape == "speed":
+        left = max(d["moments"].w, middle[0])
+        return W - left - GAP, H - C.h - GAP
+    return W - C.w - GAP, H - d["moments"].h - middle[1] - 2 * GAP
 
 
 SHAPES = ("bands", "column", "speed")
@@ -337,6 +358,12 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
     note_lines = lines_of(notes(fw, doc, lang))
     region = field_of(f)
+    if shape != "set":                       # ω(φ) grows into the room the other zones leave it
+        C = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])[0]
+        zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
+        speed = _speed(fw, lang, zone)
+        if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
+            leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
         rows = [[leaves["moments"]], [leaves["energy"], leaves["inertia"]], [leaves["wittenbauer"], leaves["speed"]],
                 tables + [Leaf("notes", record=note_block(note_lines, TITLE))]]

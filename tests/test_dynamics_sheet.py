@@ -1,0 +1,276 @@
+"""The dynamics sheet read as a teacher reads it: every value of a dimensional quantity in the notes,
+tables and lettering carries its unit, no number longer than the sheet's 4 significant figures, the
+given δ written as given, ω_m²·δ typeset, the field filled — on two mechanisms nobody drew before
+(a six-bar press and an offset crank-slider with a 1000 rpm motor, the review's scenes)."""
+from __future__ import annotations
+
+import re
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from conftest import scene_study
+from graphplan.util.markup import plain, runs
+
+SIXBAR = """title = "Шестиланковий важільний механізм преса"
+title_en = "Six-bar lever mechanism of a press"
+designation = "ТММ.21.00.000"
+
+[sheet]
+student = "Петренко І."
+teacher = "Коваль О."
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, 0.05]
+
+[frame.guides]
+ram = { through = [0.34, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.09
+rpm = 90
+points = { S1 = 0.5 }
+mass = 4
+inertia = 0.02
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 8
+inertia = 0.08
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+shape = { C = [0.30, 0] }
+points = { S3 = 0.4 }
+mass = 10
+inertia = 0.12
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.35
+points = { S4 = 0.5 }
+mass = 6
+inertia = 0.07
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "ram"
+mass = 30
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 2000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+"""
+
+OFFSET = """title = "Кривошипно-повзунний механізм з дезаксіалом"
+title_en = "Offset crank-slider mechanism"
+designation = "ТММ.22.00.000"
+
+[sheet]
+student = "Петренко І."
+teacher = "Коваль О."
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[params]
+r = 0.08
+l = 0.30
+e = 0.03
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, "e"], angle_deg = 0 }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 240
+points = { S1 = 0.3 }
+mass = 3
+inertia = 0.01
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+points = { S2 = 0.3 }
+mass = 5
+inertia = 0.05
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 12
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [4]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.95
+synchronous_rpm = 1000
+"""
+
+UNITS = ("Н·м", "N·m", "Дж", "J", "кг·м²", "kg·m²", "рад", "rad", "мм", "mm", "°", "%", "кВт", "kW", "об/хв", "rpm")
+DIMENSIONLESS = {"δ", "i", "η"}
+LETTERED = {"notes", "positions table", "flywheel table", "motor table", "speed", "wittenbauer"}
+
+
+@pytest.fixture(scope="module")
+def sheets():
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    out = {}
+    for name, text, langs in (("sixbar", SIXBAR, ("uk", "en")), ("offset", OFFSET, ("uk",))):
+        st = scene_study(text)
+        for lang in langs:
+            args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
+            out[name, lang] = BUILDERS["dynamics"](st, form("A1"), args)
+    return out
+
+
+def lettering(sheet) -> list[str]:
+    return [item.text for p in sheet.placed if p.name in LETTERED for item in p.record.items if item.kind == "text"]
+
+
+def clauses(text: str) -> list[str]:
+    return re.split(r";\s|,\s|:\s", plain(text))
+
+
+NUMBER = re.compile(r"^[−-]?\d+(?:[.,]\d+)?\s*(.*)$")
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_every_value_of_a_dimensional_quantity_has_its_unit(sheets, key):
+    bare = []
+    for text in lettering(sheets[key]):
+        for clause in clauses(text):
+            if "=" not in clause:
+                continue
+            parts = clause.split("=")
+            m = NUMBER.match(parts[-1].strip())
+            if m is None or m.group(1).startswith(UNITS):
+                continue
+            symbol = parts[0].split()[-1] if parts[0].split() else ""
+            if symbol not in DIMENSIONLESS:
+                bare.append(clause)
+    assert bare == []
+
+
+def significant(token: str) -> int:
+    digits = token.replace(",", "").replace(".", "").lstrip("0")
+    return len(digits if ("," in token or "." in token) else digits.rstrip("0")) or 1
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_no_number_longer_than_four_significant_figures(sheets, key):
+    sep = "," if key[1] == "uk" else "."
+    token = re.compile(rf"(?<![\w.,])\d+(?:{re.escape(sep)}\d+)?")
+    long = [(t, text) for text in lettering(sheets[key]) for t in token.findall(plain(text)) if significant(t) > 4]
+    assert long == []
+
+
+@pytest.mark.parametrize("key, given", [(("sixbar", "uk"), "0,05"), (("sixbar", "en"), "0.05"),
+                                        (("offset", "uk"), "0,03")])
+def test_the_achieved_delta_is_written_as_given(sheets, key, given):
+    notes = [plain(t) for t in lettering(sheets[key])]
+    word = "Досягнуто" if key[1] == "uk" else "Achieved"
+    line = next(t for t in notes if t.startswith(word))
+    assert line.startswith(f"{word}: δ = {given};")
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en")])
+def test_omega_m_squared_delta_is_typeset(sheets, key):
+    """ω with m below and 2 above, then ·δ on the line — in the flywheel's formula and in tg ψ."""
+    found = 0
+    for text in lettering(sheets[key]):
+        if not (text.startswith("J = ") or text.startswith("tg ψ")):
+            continue
+        r = runs(text)
+        for k, run in enumerate(r[:-2]):
+            if run.level == 0 and run.text.endswith("ω") and r[k + 1] == type(run)("m", -1) \
+                    and (r[k + 2].text, r[k + 2].level) == ("2", 1):
+                found += 1
+                assert r[k + 3].level == 0
+        assert not any("δ" in run.text for run in r if run.level != 0)
+    assert found == 2
+
+
+def covered(sheet) -> float:
+    """The share of the field (less the title block) under the drawings' and tables' extents."""
+    from graphplan.sheets.compose import field_of, keep_out
+    x0, y0, x1, y1 = field_of(sheet.form)
+    k = keep_out(sheet.form)
+    X, Y = np.meshgrid(np.arange(x0, x1, 2.0) + 1.0, np.arange(y0, y1, 2.0) + 1.0)
+    free = ~((X >= k[0]) & (Y <= k[3]))
+    cov = np.zeros_like(free)
+    for p in sheet.placed:
+        b = p.record.bounds()
+        cov |= (X >= b[0]) & (X <= b[2]) & (Y >= b[1]) & (Y <= b[3])
+    return float((cov & free).sum() / free.sum())
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_the_diagrams_grow_into_the_field(sheets, key):
+    """The review found about a quarter of the field empty (57 % under the drawings' extents): ω(φ)
+    takes the room over the tables and the bands grow to the next size."""
+    assert covered(sheets[key]) > 0.68
