@@ -379,7 +379,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             if j != DIVISIONS:                                 # the fourth is NP itself
                 rec.segment(_f(centre + q), _f(centre + marks[j]), role="construction", layer=LAYER,
                             step=f"involute {k}: tangent {j}")
-                rec.point(_f(centre + marks[j]), role="construction", layer=LAYER)
+                rec.point(_f(centre + marks[j]), role="construction", layer=LAYER, step=f"involute {k}: mark {j}")
         for j in range(1, DIVISIONS):
             q = N + j * step * (P - N) / tP
             if min(abs(q - B1), abs(q - B2)) > 1.5:       # (on a lettered B1, B2 its dot is theirs)
