@@ -343,7 +343,8 @@ def test_every_bound_says_its_unit_on_the_sheet_and_in_the_terminal():
     lines = notes(doc, "en", mesh, vel)
     assert any(f"±{num(vel.ratio_bound, 'en', 2)} (absolute" in x and f"{share(vel.ratio_bound, sol.train.ratio)} % of"
                in x for x in lines)
-    assert any(f"±{num(mesh.eps_bound, 'en', 2)} (absolute" in x for x in lines)
+    assert any(f"±{num(mesh.eps_bound, 'en', 2)} absolute" in x and f"{share(mesh.eps_bound, sol.pair.eps)} % of" in x
+               for x in lines)
 
 
 def test_table_1_prints_a_graphical_length_to_the_rulers_resolution_on_the_part():

@@ -40,9 +40,10 @@ WORDS = {
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
-           "bound_eps": "Межа похибки ε_α від точності креслення: ±{b} (абсолютна, ε_α без одиниці; ±{bp} % від "
-                        "ε_α): відкладені a_w, r_b, r_a, p_b і прочитане B_{{1}}B_{{2}} — кожне в межах половини "
-                        "точності",
+           "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
+                        "p_b і прочитане "
+                        "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
+                        "±{bp} % від ε_α",
            "train": "Передача типу {t}: K = {k}, u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
                     "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
@@ -68,9 +69,10 @@ WORDS = {
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
-           "bound_eps": "Bound of the error of ε_α from the drafting precision: ±{b} (absolute, ε_α has no unit; "
-                        "±{bp} % of ε_α): a_w, r_b, r_a, p_b laid off and B_{{1}}B_{{2}} read, each within half the "
-                        "precision",
+           "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
+                        "laid off and "
+                        "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
+                        "±{bp} % of ε_α",
            "train": "Type {t} train: K = {k}, u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
                     "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
