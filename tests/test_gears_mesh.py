@@ -143,3 +143,17 @@ def test_the_sheet_says_its_standard_scale(name):
     assert len(shown) == 1                                  # the title block's box says it: 4:1 or 5:1 here
     caption = [t for t in texts if t.startswith("Евольвентне зачеплення" if lang == "uk" else "Involute meshing")]
     assert len(caption) == 1 and f"{shown[0]:g}:1" in caption[0]
+
+
+@pytest.mark.parametrize("z, x", PAIRS)
+def test_no_involute_mark_lies_past_its_wheels_tip_circle(z, x):
+    """The draftsman's marks on each involute (the ends of the unrolled tangents) stop at the tip: none
+    is left as a dot without a tooth beside the meshing's teeth (the review's stray dot)."""
+    from graphplan.graphic.gears import construct_mesh
+    m = construct_mesh(solve_pair(Pair(z, 0.004, x)), 0.5)
+    centre = {"1": 0j, "2": 1j * m.drawn["aw"]}
+    marks = [p for p in m.record.items if p.kind == "point" and p.step.startswith("involute ")]
+    assert len(marks) >= 6
+    for p in marks:
+        k = p.step.split()[1].rstrip(":")
+        assert abs(complex(*p.points[0]) - centre[k]) <= m.drawn[f"ra{k}"] + 1e-9, p.step

@@ -24,6 +24,7 @@ each read length off by at most half the precision, the errors added in absolute
 from __future__ import annotations
 
 import cmath
+import itertools
 import math
 from dataclasses import dataclass, field
 
@@ -371,16 +372,18 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         step = tP / DIVISIONS
         thN = cmath.phase(N - centre)
         theta_s = thN + tP / R                                   # where the involute through P starts
-        jmax = int(math.ceil(math.sqrt(ra * ra - R * R) / step))
+        jmax = int(math.floor(math.sqrt(ra * ra - R * R) / step + 1e-9))   # no mark past the tip circle
         marks = _involute(R, theta_s, step * np.arange(0, jmax + 1))
         for j in range(1, min(jmax, DIVISIONS + 2) + 1):     # the tangents with the unrolled lengths, their ends
             q = R * cmath.exp(1j * (theta_s - j * step / R))
             if j != DIVISIONS:                                 # the fourth is NP itself
                 rec.segment(_f(centre + q), _f(centre + marks[j]), role="construction", layer=LAYER,
                             step=f"involute {k}: tangent {j}")
-                rec.point(_f(centre + marks[j]), role="construction", layer=LAYER)
+                rec.point(_f(centre + marks[j]), role="construction", layer=LAYER, step=f"involute {k}: mark {j}")
         for j in range(1, DIVISIONS):
-            rec.point(_f(N + j * step * (P - N) / tP), role="construction", layer=LAYER)
+            q = N + j * step * (P - N) / tP
+            if min(abs(q - B1), abs(q - B2)) > 1.5:       # (on a lettered B1, B2 its dot is theirs)
+                rec.point(_f(q), role="construction", layer=LAYER)
         # the tooth thickness laid off as a chord on the pitch circle; the axis between the flanks
         chord = lay_off(2 * (r_ * mu) * math.sin(s_ex / (2 * (r_ * mu))) / mu, precision)
         F = _flank_at(R, theta_s, r_)
@@ -464,15 +467,28 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
 
 
 def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
-    """|εα(graphical) − εα| to first order: aw, rb1, rb2, ra1, ra2 and pb laid off and B1B2 read, each
-    within half the precision: (p/2)/pb·[1 + ra1/e1 + ra2/e2 + |R/G − rb1/e1| + |R/G − rb2/e2| + aw/G + εα],
-    e_k = √(ra_k² − rb_k²), G = N1N2, R = rb1 + rb2 (all in drawing mm)."""
+    """The bound of |εα(graphical) − εα| (absolute, εα has no unit) from the drafting precision p:
+    aw, rb1, rb2, ra1, ra2, pb laid off and B1B2 read, each within p/2 (drawing mm), through
+    εα = B1B2/pb with B1B2 = e1 + e2 − √(aw² − R²), e_k = √(ra_k² − rb_k²), R = rb1 + rb2.
+
+    First order: (p/2)/pb·[1 + ra1/e1 + ra2/e2 + |R/G − rb1/e1| + |R/G − rb2/e2| + aw/G + εα]
+    (G = N1N2); the margin: the formula evaluated at every corner of the seven lengths at ± p/2 (the
+    ratio is monotone in each length over so small a box, so its worst corner is the worst case to
+    every order); the larger of the two is stated."""
     h = precision / 2
     ra, rb = [v / mu for v in sol.ra], [v / mu for v in sol.rb]
     e = [math.sqrt(ra[k] ** 2 - rb[k] ** 2) for k in (0, 1)]
     G, R, D, pb = sol.g / mu, (rb[0] + rb[1]), sol.aw / mu, sol.pb / mu
     terms = 1 + ra[0] / e[0] + ra[1] / e[1] + abs(R / G - rb[0] / e[0]) + abs(R / G - rb[1] / e[1]) + D / G + abs(sol.eps)
-    return h / pb * terms
+    first = h / pb * terms
+    worst = 0.0
+    for sg in itertools.product((-h, h), repeat=7):
+        d_, r1, r2, a1, a2, p_ = D + sg[0], rb[0] + sg[1], rb[1] + sg[2], ra[0] + sg[3], ra[1] + sg[4], pb + sg[5]
+        if min(a1 - r1, a2 - r2, d_ - r1 - r2, p_) <= 0:
+            return math.inf                 # the precision as coarse as the drawing: no bound
+        b = math.sqrt(a1 * a1 - r1 * r1) + math.sqrt(a2 * a2 - r2 * r2) - math.sqrt(d_ * d_ - (r1 + r2) ** 2)
+        worst = max(worst, abs((b + sg[6]) / p_ - sol.eps))
+    return max(first, worst)
 
 
 def sliding_diagram(sol: PairSolution, mesh: Mesh) -> Record:
@@ -534,10 +550,10 @@ def _nice(v: float) -> float:
 
 
 def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0,
-                    sun_segment_mm: float = 100.0) -> Velocities:
-    """The scheme at μl (the ring's radius about ``ring_mm``), the velocity picture with vA about
-    60 mm, the plan of angular velocities with h chosen so the sun's segment is about
-    ``sun_segment_mm``."""
+                    sun_segment_mm: float = 100.0, va_mm: float = 60.0) -> Velocities:
+    """The scheme at μl (the ring's radius about ``ring_mm``, μl the next round value of the series
+    1, 2, 2.5, 4, 5·10ⁿ), the velocity picture with vA about ``va_mm`` (μv round likewise), the plan of
+    angular velocities with h chosen so the sun's segment is about ``sun_segment_mm``."""
     rad = tr.radii
     kind = tr.train.kind
     mu = _nice(rad["3"] / ring_mm)                          # m/mm
@@ -549,7 +565,7 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
         raise GraphplanError(f"--precision {precision:g} mm: the train's radii drawn at μl = {mu:g} m/mm "
                              "collapse (r1, aw, r3 read the same); take a finer precision")
     vA = tr.omega["1"] * rad["1"]
-    mu_v = _nice(vA / 60.0)
+    mu_v = _nice(vA / va_mm)
     va = lay_off(vA / mu_v, precision)
     h = float(min(150.0, max(20.0, round(sun_segment_mm * yA / va))))
     v_o2 = va * (yC - yO2) / (yC - yA)                       # on the planet's line, at the axis' height
@@ -570,10 +586,13 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     O = complex(X0, 0.0)
     rec.vector(_f(complex(X0, yA)), _f(a), role="absolute", layer=LAYER, step="vA = ω1·r1")
     rec.vector(_f(complex(X0, yO2)), _f(o2), role="absolute", layer=LAYER, step="vO2")
-    rec.segment(_f(O), _f(a + (a - O) * 0.08), role="relative", layer=LAYER, step="line 1")
-    low = C + (a - C) * 1.12
+    run = lambda p, q, mm: q + (q - p) / abs(q - p) * mm           # noqa: E731   q, then mm further from p
+    end1 = run(O, a, 14.0)
+    rec.segment(_f(O), _f(end1), role="relative", layer=LAYER, step="line 1")
+    low = run(C, a, 14.0)
     rec.segment(_f(C), _f(low), role="relative", layer=LAYER, step="line 2")
-    rec.segment(_f(O), _f(o2 + (o2 - O) * 0.15), role="relative", layer=LAYER, step="line H")
+    endH = run(O, o2, 14.0)
+    rec.segment(_f(O), _f(endH), role="relative", layer=LAYER, step="line H")
     for q in (a, o2, C, O):
         rec.point(_f(q), role="pole", layer=LAYER)
     # the plan of angular velocities below: a horizontal, the pole h under it
@@ -597,15 +616,15 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
             pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     pl.label(pole, "p_ω", toward=-1 + 0j)
     pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
+    pl.label(end1, "1", toward=end1 - a, radii=(1.0, 2.0, 3.5, 5.5))     # the lines' numbers at their ends,
+    pl.label(low, names["2"], toward=low - a, radii=(1.0, 2.0, 3.5, 5.5))  # far from a's letter
+    pl.label(endH, "H", toward=endH - o2, radii=(1.0, 2.0, 3.5, 5.5))
     pl.label(a, "a", toward=1 + 0j)
     pl.label(o2, "o_2", toward=1 + 0j)
     pl.label(C, "c", toward=1j)
     pl.label(O, "o", toward=-1j)
     pl.label(complex(X0 + va / 2, yA), "v_A", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
     pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    pl.label(a + (a - O) * 0.08, "1", toward=1 + 0j)
-    pl.label(low, names["2"], toward=1 + 0j)
-    pl.label(o2 + (o2 - O) * 0.15, "H", toward=1 + 0j)
     rec.scales.update(mu_l=mu, mu_v=mu_v, h=h)
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
                      ratio_bound(tr, mu, h, va, precision), rec)
@@ -613,10 +632,15 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
 
 
 def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float) -> float:
-    """|u1H(graphical) − u1H| to first order: the heights yA = r1, yO2 = aw, yC = r3 laid off and the
-    segments s1, sH read, each within half the precision (vA and h are whole millimetres):
-    u = yO2(yC − yA)/(yA(yC − yO2)); (p/2)·u·[1/s1 + 1/sH + 1/yA + 1/(yC − yA) + 1/yO2 + 1/(yC − yO2)
-    + |1/(yC − yA) − 1/(yC − yO2)|]."""
+    """The bound of |u1H(graphical) − u1H| (absolute, u1H has no unit) from the drafting precision p:
+    the heights yA = r1, yO2 = aw, yC = r3 laid off and the segments s1, sH read, each within p/2
+    (drawing mm), through u1H = s1/sH with s1 = h·vA/yA, sH = h·vA·(yC − yO2)/((yC − yA)·yO2)
+    (vA and h cancel).
+
+    First order: (p/2)·u·[1/s1 + 1/sH + 1/yA + 1/(yC − yA) + 1/yO2 + 1/(yC − yO2)
+    + |1/(yC − yA) − 1/(yC − yO2)|]; the margin: the formula at every corner of the five lengths at
+    ± p/2 (monotone in each, so the worst corner is the worst case to every order); the larger of
+    the two is stated."""
     rad = tr.radii
     yA, yO2, yC = rad["1"] / mu, rad["H"] / mu, rad["3"] / mu
     u = tr.ratio
@@ -624,7 +648,24 @@ def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: fl
     sH = s1 / u
     terms = (1 / s1 + 1 / sH + 1 / yA + 1 / (yC - yA) + 1 / yO2 + 1 / (yC - yO2)
              + abs(1 / (yC - yA) - 1 / (yC - yO2)))
-    return precision / 2 * u * terms
+    hp = precision / 2
+    first = hp * u * terms
+    worst = 0.0
+    for sg in itertools.product((-hp, hp), repeat=5):
+        a, o, c = yA + sg[0], yO2 + sg[1], yC + sg[2]
+        g1 = h * va / a + sg[3]
+        gH = h * va * (c - o) / ((c - a) * o) + sg[4]
+        if min(a, o - a, c - o, g1, gH) <= 0:
+            return math.inf                 # the precision as coarse as the drawing: no bound
+        worst = max(worst, abs(g1 / gH - u))
+    return max(first, worst)
+
+
+def outside(graphical: float | None, exact: float, bound: float | None) -> bool:
+    """Whether a graphical reading lies outside its stated bound (round-off of 1e-9 relative allowed)."""
+    if graphical is None or bound is None or not math.isfinite(graphical):
+        return False
+    return abs(graphical - exact) > bound + 1e-9 * max(1.0, abs(exact))
 
 
 def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> None:

@@ -8,6 +8,7 @@ from typing import Any
 
 from graphplan.exact.gears import CONTACT_MIN, POINTED, Solution
 from graphplan.util.words import num
+from graphplan.util.words import num as _num
 
 
 def solved(path, precision: float = 0.5, height_mm: float = 480.0):
@@ -36,6 +37,7 @@ def _fin(v) -> float | None:
 
 
 def pair_json(sol, mesh) -> dict[str, Any]:
+    from graphplan.graphic.gears import outside
     p = sol.pair
     q = sol.quality()
     pts = [("N1", 0.0)] + [(None, sol.g * k / 10) for k in range(1, 10)] + [("N2", sol.g)]
@@ -58,7 +60,8 @@ def pair_json(sol, mesh) -> dict[str, Any]:
         "line_of_action_m": sol.g, "rho_m": {"B1": sol.rho_B1, "P": sol.rho_P, "B2": sol.rho_B2},
         "contact_ratio": {"exact": sol.eps, "graphical": mesh.eps if mesh else None,
                           "error_pct": err(mesh.eps, sol.eps) if mesh else None,
-                          "bound": mesh.eps_bound if mesh else None},
+                          "bound": mesh.eps_bound if mesh else None,
+                          "outside_bound": outside(mesh.eps, sol.eps, mesh.eps_bound) if mesh else False},
         "quality": {"undercut": q["undercut"], "x_min": q["x_min"], "pointed": q["pointed"],
                     "sa_min_m": POINTED * p.module, "interference": q["interference"],
                     "contact_ratio_min": CONTACT_MIN, "contact_ratio_ok": q["contact_ratio_ok"],
@@ -67,6 +70,8 @@ def pair_json(sol, mesh) -> dict[str, Any]:
         "sliding": sliding,
         "warnings": [en for en, _ in sol.warnings + (mesh.warnings if mesh else [])],
         "warnings_uk": [uk for _, uk in sol.warnings + (mesh.warnings if mesh else [])]}
+    if doc["contact_ratio"]["outside_bound"]:
+        _flag(doc, "εα = B1B2/pb", mesh.eps, sol.eps, mesh.eps_bound)
     if sol.auto:
         doc["auto"] = {"rule": sol.auto["rule"], "rule_uk": sol.auto["rule_uk"], "grid": sol.auto["grid"],
                        "tried": sol.auto["tried"], "passing": sol.auto["passing"]}
@@ -81,18 +86,33 @@ def pair_json(sol, mesh) -> dict[str, Any]:
     return doc
 
 
+def _flag(doc: dict[str, Any], name: str, graphical: float, exact: float, bound: float) -> None:
+    """A reading outside its stated bound: said in the warnings (the terminal's, the sheet's notes)."""
+    d = graphical - exact
+    num = lambda v, lang, k=4: _num(v, lang, k).replace("-", "−")        # noqa: E731
+    doc["warnings"].append(f"{name} read off the drawing, {num(graphical, 'en')}, is off the exact {num(exact, 'en')} "
+                           f"by {num(d, 'en', 3)}: outside its bound ±{num(bound, 'en', 2)} from the drafting precision")
+    doc["warnings_uk"].append(f"{name}, прочитане з креслення, {num(graphical, 'uk')}, відрізняється від точного "
+                              f"{num(exact, 'uk')} на {num(d, 'uk', 3)}: поза межею ±{num(bound, 'uk', 2)} від "
+                              "точності креслення")
+
+
 def train_json(tr, vel) -> dict[str, Any]:
+    from graphplan.graphic.gears import outside
     t = tr.train
     doc: dict[str, Any] = {
         "type": t.kind, "planets": t.planets, "z": list(tr.z), "module_m": t.module,
         "ratio_required": t.ratio,
         "ratio": {"exact": tr.ratio, "graphical": _fin(vel.ratio) if vel else None,
-                  "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None},
+                  "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None,
+                  "outside_bound": outside(vel.ratio, tr.ratio, vel.ratio_bound) if vel else False},
         "omega_rad_s": dict(tr.omega),
         "radii_m": tr.radii,
         "conditions": dict(tr.conditions),
         "candidates": tr.candidates, "candidates_passing": tr.weighed,
         "warnings": [en for en, _ in tr.warnings], "warnings_uk": [uk for _, uk in tr.warnings]}
+    if doc["ratio"]["outside_bound"]:
+        _flag(doc, "u1H", vel.ratio, tr.ratio, vel.ratio_bound)
     if tr.train.ratio is not None:
         doc["ratio"]["required_error_pct"] = 100.0 * (tr.ratio - tr.train.ratio) / tr.train.ratio
     if vel:
@@ -118,7 +138,7 @@ WORDS = {
     "uk": {"title": "Синтез зубчастих механізмів", "pair": "Евольвентна передача", "train": "Планетарна передача",
            "given": "зміщення задано", "auto": "зміщення вибрано за правилом: {rule}",
            "head": ["величина", "колесо 1", "колесо 2"], "exact": "точно", "graph": "графічно", "eps": "εα",
-           "eps_line": "коефіцієнт перекриття εα = {e} (графічно B1B2/pb = {g}, похибка {d} %, межа ±{b})",
+           "eps_line": "коефіцієнт перекриття εα = {e} (графічно B1B2/pb = {g}, похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "data": "z = {z}, m = {m} мм, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} мм, aw = {w} мм, y = {y}, Δy = {dy}, p = {p} мм, pb = {pb} мм",
            "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e}; "
@@ -126,17 +146,17 @@ WORDS = {
            "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
            "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
-           "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %, межа ±{b})",
+           "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
            "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
-           "warn": "Попередження", "member": "ланка"},
+           "warn": "Попередження", "member": "ланка", "out": " — ПОЗА МЕЖЕЮ"},
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
-           "eps_line": "contact ratio εα = {e} (graphically B1B2/pb = {g}, error {d} %, bound ±{b})",
+           "eps_line": "contact ratio εα = {e} (graphically B1B2/pb = {g}, error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "data": "z = {z}, m = {m} mm, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} mm, aw = {w} mm, y = {y}, Δy = {dy}, p = {p} mm, pb = {pb} mm",
            "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e}; "
@@ -144,14 +164,32 @@ WORDS = {
            "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
            "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",
-           "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %, bound ±{b})",
+           "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
            "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
-           "warn": "Warnings", "member": "member"},
+           "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
 }
+
+
+def reading_mm(v_m: float | None, g: dict[str, Any], lang: str) -> str:
+    """A graphical length (m) in mm on the part to the ruler's resolution there, precision·μl (0.5 mm
+    at 5:1 → 0.1 mm): as many decimals as that resolution has; at precision 0 four significant figures."""
+    if v_m is None:
+        return "—"
+    res = g["precision_mm"] * g["mu_l_m_mm"] * 1000.0
+    if res <= 0:
+        return num(v_m * 1000.0, lang, 4).replace("-", "−")
+    dec = max(0, math.ceil(-math.log10(res) - 1e-9))
+    text = f"{v_m * 1000.0:.{dec}f}"
+    return (text.replace(".", ",") if lang == "uk" else text).replace("-", "−")
+
+
+def _share(bound: float | None, exact: float, lang: str) -> str:
+    """An absolute bound as a percent of the exact value (what the δ % column is compared with)."""
+    return "—" if bound is None or not exact else num(100.0 * bound / abs(exact), lang, 2)
 
 
 def _table(rows: list[list[str]]) -> list[str]:
@@ -172,7 +210,8 @@ def pair_lines(d: dict, lang: str) -> list[str]:
     lines.append(w["geo"].format(aw=n(d["alpha_w_deg"], 6), a=mm(d["a_m"]), w=mm(d["a_w_m"]), y=n(d["y"]),
                                  dy=n(d["delta_y"]), p=mm(d["pitch_m"]), pb=mm(d["base_pitch_m"])))
     c = d["contact_ratio"]
-    lines.append(w["eps_line"].format(e=n(c["exact"]), g=n(c["graphical"]), d=n(c["error_pct"], 3), b=n(c["bound"], 2)))
+    lines.append(w["eps_line"].format(e=n(c["exact"]), g=n(c["graphical"]), d=n(c["error_pct"], 3), b=n(c["bound"], 2),
+                                      bp=_share(c["bound"], c["exact"], lang), out=w["out"] if c["outside_bound"] else ""))
     q = d["quality"]
     lines.append(w["quality"].format(u=", ".join(yes(v) for v in q["undercut"]),
                                      s=", ".join(yes(v) for v in q["pointed"]),
@@ -189,7 +228,7 @@ def pair_lines(d: dict, lang: str) -> list[str]:
         e = g["error_pct"].get(key) if g and key in g["error_pct"] else None
         row = [w["rows"][key].replace("_", "")]
         for k in (0, 1):
-            row += [mm(ex[k]), "" if gr is None else mm(gr[k]), "" if e is None else n(e[k], 3)]
+            row += [mm(ex[k]), "" if gr is None else reading_mm(gr[k], g, lang), "" if e is None else n(e[k], 3)]
         rows.append(row)
     lines += [""] + _table(rows)
     return lines
@@ -203,7 +242,8 @@ def train_lines(d: dict, lang: str) -> list[str]:
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
              w["zt"].format(z=", ".join(map(str, d["z"])), u=n(r["exact"]), r=n(d["ratio_required"]),
-                            g=n(r["graphical"]), d=n(r["error_pct"], 3), b=n(r["bound"], 2))]
+                            g=n(r["graphical"]), d=n(r["error_pct"], 3), b=n(r["bound"], 2),
+                            bp=_share(r["bound"], r["exact"], lang), out=w["out"] if r["outside_bound"] else "")]
     c = d["conditions"]
     lines.append(w["cond"].format(c=ok(c["coaxial"]), a=ok(c["assembly"]), n=ok(c["neighbourhood"]),
                                   u=ok(c["no_undercut"])))

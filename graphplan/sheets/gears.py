@@ -12,7 +12,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import construct_mesh, construct_train
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import gears_json
+from graphplan.report.gears import gears_json, reading_mm
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import Form, table
@@ -26,6 +26,7 @@ WORDS = {
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
            "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
+           "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
@@ -39,17 +40,22 @@ WORDS = {
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
-           "bound_eps": "Межа похибки ε_α від точності креслення: ±{b} (відкладені a_w, r_b, r_a, p_b і прочитане "
-                        "B_{{1}}B_{{2}} — кожне в межах половини точності)",
+           "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
+                        "p_b і прочитане "
+                        "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
+                        "±{bp} % від ε_α",
            "train": "Передача типу {t}: K = {k}, u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
-                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}}: ±{b}",
+                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
+                    "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
-           "warn": "Попередження: ", "mark": "* — похибка понад 5 %"},
+           "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
+           "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis", "group": "gr.",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
            "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
+           "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
@@ -63,13 +69,17 @@ WORDS = {
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
-           "bound_eps": "Bound of the error of ε_α from the drafting precision: ±{b} (a_w, r_b, r_a, p_b laid off "
-                        "and B_{{1}}B_{{2}} read, each within half the precision)",
+           "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
+                        "laid off and "
+                        "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
+                        "±{bp} % of ε_α",
            "train": "Type {t} train: K = {k}, u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
-                    "pole distance h = {h} mm; bound of the error of u_{{1H}}: ±{b}",
+                    "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
+                    "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
-           "warn": "Warning: ", "mark": "* — an error past 5 %"},
+           "warn": "Warning: ", "mark": "* — an error past 5 %",
+           "past": "! — a reading outside its bound from the drafting precision"},
 }
 
 
@@ -97,10 +107,11 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             e = g.get("error_pct", {}).get(key)
-            row += [mm(p[f"{key}_m"][k]), mm(gr[k]) if gr else "", _pct(e[k], lang) if e else ""]
+            row += [mm(p[f"{key}_m"][k]), reading_mm(gr[k], g, lang) if gr else "", _pct(e[k], lang) if e else ""]
         rows.append(row)
     c = p["contact_ratio"]
-    rows.append(["ε_α", _n(c["exact"], lang), _n(c["graphical"], lang), _pct(c["error_pct"], lang), "", "", ""])
+    rows.append(["ε_α", _n(c["exact"], lang), _n(c["graphical"], lang),
+                 _pct(c["error_pct"], lang) + ("!" if c["outside_bound"] else ""), "", "", ""])
     for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
                    (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
                    (f"p, {w['mm']}", p["pitch_m"] * 1000), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000)):
@@ -139,7 +150,8 @@ def train_table(doc: dict, lang: str) -> Record:
     g = t.get("graphical", {})
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
-            [w["u"].split(":")[0], _n(r["exact"], lang), _n(r["graphical"], lang), _pct(r["error_pct"], lang)]]
+            [w["u"].split(":")[0], _n(r["exact"], lang), _n(r["graphical"], lang),
+             _pct(r["error_pct"], lang) + ("!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
         rows.append([w["u"].split(":")[0] + (" потрібне" if lang == "uk" else " wanted"),
                      _n(t["ratio_required"], lang), "", _pct(r.get("required_error_pct"), lang)])
@@ -166,11 +178,13 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
             out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
-        out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2)))
+        out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
+                                         bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
     if "planetary" in doc:
         t = doc["planetary"]
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
-                                     v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2)))
+                                     v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
+                                     bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
         if t["candidates"]:
             out.append(w["synth"].format(n=t["candidates_passing"]))
     key = "warnings_uk" if lang == "uk" else "warnings"
@@ -178,6 +192,8 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
         if part in doc:
             out += [w["warn"] + x for x in doc[part][key]]
     out.append(w["mark"])
+    if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
+        out.append(w["past"])
     return [escape(x) if "_" not in x else x for x in out]
 
 
@@ -192,6 +208,48 @@ def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
             "sheets": "1", "subtitle": WORDS[lang]["subtitle"]}
 
 
+def _plan(vel, lang: str) -> Record:
+    """The planetary pictures captioned: the name, what they are, their scales μl, μv and h."""
+    w = WORDS[lang]
+    return captioned(vel.record, w["planetary"], w["planetary2"] + "; " + w["plan_scales"].format(
+        l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
+
+
+GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.4, 1.2, 1.1)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
+# (the ring's radius, vA, the sun's segment)
+H_MIN = 40.0             # mm: the pole distance of a grown plan of angular velocities at least this
+
+
+def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
+    """The planetary pictures as large as their place in the row under the meshing takes (beside the
+    λ diagrams, the meshing's height and the tables' column off the field): the ring's radius, vA and
+    the sun's segment grown together, μl and μv the round values of the series, the first (largest)
+    that fits; the pictures as they were when none larger fits."""
+    def size(r: Record) -> tuple[float, float]:
+        b = r.bounds()
+        return b[2] - b[0], b[3] - b[1]
+    mesh_h = size(captioned(mesh.record, "M"))[1] + 12.0          # the meshing and its caption's line
+    lam_w = size(mesh.lam)[0]
+    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 3 * GAP
+    room_h = region[3] - region[1] - mesh_h - 3 * GAP
+    w0, h0 = size(plan)
+    for k in GROW:
+        for va_share, share in ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
+                                (0.5, 0.6), (0.5, 0.5)):    # vA and the sun's segment shorter where too wide
+            try:
+                v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
+                                    sun_segment_mm=100.0 * k * share)
+            except GraphplanError:
+                break
+            p = _plan(v, lang)
+            w_, h_ = size(p)
+            if h_ > room_h:
+                break
+            if w_ <= room_w and v.h >= min(H_MIN, vel.h):
+                return (v, p) if h_ > h0 else (vel, plan)
+    return vel, plan
+
+
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
     tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
@@ -202,7 +260,7 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     w = WORDS[lang]
     vel = construct_train(sol.train, args.precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
         if sol.train else None
-    plan = captioned(vel.record, w["planetary"], w["planetary2"]) if vel else None
+    plan = _plan(vel, lang) if vel else None
     mesh = None
     if sol.pair:
         # the meshing's zone: the field less the tables' column and the row under it where the λ diagrams
@@ -216,6 +274,8 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing gets a sheet of its own
             zone_w, zone_h, line = region[2] - region[0] - 10.0, region[3] - region[1] - 40.0, None
         mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
+    if vel is not None and mesh is not None:
+        vel, plan = _grown(sol.train, args.precision, lang, region, mesh, plan, vel)
     doc = gears_json(sol, mesh, vel, g.source or "")
     drawings: list[Leaf] = []
     tables: list[Leaf] = []
