@@ -316,8 +316,14 @@ class Gears(View):
 def gears(scene, precision: float = 0.5, lang: str = "uk") -> Gears:
     """A gear scene (a path to a file with [gears] and/or [planetary]) solved by the closed forms and
     constructed graphically, read with a ruler of ``precision`` mm (docs/gears.md)."""
-    from graphplan.report.gears import solved
-    return Gears(solved(scene, precision), lang)
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import load
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on
+    g = load(scene)
+    sol = solve(g)
+    mesh, vel, _ = construct_on(sol, form("A1"), precision, lang)     # the A1 sheet's readings
+    return Gears((g, sol, mesh, vel), lang)
 
 
 class Sheet(View):

@@ -30,12 +30,18 @@ def register(sub) -> None:
 
 def cmd_gears(args: argparse.Namespace) -> int:
     from graphplan.cli.common import dumps
-    from graphplan.report.gears import gears_json, gears_table, solved
+    from graphplan.report.gears import gears_json, gears_table
     from graphplan.util.words import pick
     if not math.isfinite(args.precision) or not 0 <= args.precision <= 10:
         raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
-    gears, sol, mesh, vel = solved(args.scene, args.precision)
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import load
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on
+    gears = load(args.scene)
     lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
+    sol = solve(gears)
+    mesh, vel, _ = construct_on(sol, form("A1"), args.precision, lang)    # the A1 sheet's readings
     if args.svg:
         write_svg(mesh, vel, args.svg)
     doc = gears_json(sol, mesh, vel, args.scene)

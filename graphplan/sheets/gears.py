@@ -250,15 +250,12 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     return vel, plan
 
 
-def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
-    """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
-    tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
-    format too small flows them over further sheets of the set in reading order."""
-    lang = args.lang
+def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
+    """The meshing and the planetary pictures at the scales of the gear sheet on ``f``: (mesh, vel,
+    plan). What `graphplan gears`, graphplan.gears(), the web page and the sheet measure, so that all
+    print the same readings."""
     region = field_of(f)
-    sol = solve(g)
-    w = WORDS[lang]
-    vel = construct_train(sol.train, args.precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
+    vel = construct_train(sol.train, precision, lang, ring_mm=110.0 if f.name == "A1" else 80.0) \
         if sol.train else None
     plan = _plan(vel, lang) if vel else None
     mesh = None
@@ -273,9 +270,21 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         line = zone_w - (plan_w + GAP if plan else 0.0) - 30.0
         if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing gets a sheet of its own
             zone_w, zone_h, line = region[2] - region[0] - 10.0, region[3] - region[1] - 40.0, None
-        mesh = construct_mesh(sol.pair, args.precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
+        mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
     if vel is not None and mesh is not None:
-        vel, plan = _grown(sol.train, args.precision, lang, region, mesh, plan, vel)
+        vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
+    return mesh, vel, plan
+
+
+def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
+    """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
+    tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
+    format too small flows them over further sheets of the set in reading order."""
+    lang = args.lang
+    region = field_of(f)
+    sol = solve(g)
+    w = WORDS[lang]
+    mesh, vel, plan = construct_on(sol, f, args.precision, lang)
     doc = gears_json(sol, mesh, vel, g.source or "")
     drawings: list[Leaf] = []
     tables: list[Leaf] = []

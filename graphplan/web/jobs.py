@@ -8,6 +8,7 @@ fixed ("scene.toml", "student.csv"), never the client's; error lines lose the jo
 read as the command line's for a file of that name."""
 from __future__ import annotations
 
+import inspect
 import io
 import math
 import zipfile
@@ -33,9 +34,11 @@ class Answer:
     line: str = ""
 
 
-def refused(exc: GraphplanError, folder: Path | None) -> Answer:
-    """The command line's one line for ``exc``, without the job's folder."""
-    text = exc.line()
+def refused(exc: GraphplanError, folder: Path | None, lang: str | None = None) -> Answer:
+    """The command line's one line for ``exc`` (in the request's language, else the scene's, as
+    `--lang` and the scene's ``lang`` choose on the command line), without the job's folder."""
+    from graphplan.util.words import pick
+    text = exc.line(pick(lang, exc.lang))
     if folder is not None:
         text = text.replace(f"{folder}/", "").replace(str(folder), ".")
     return Answer(422, line=text)
@@ -81,14 +84,14 @@ def _cam_or_study(tree: dict[str, Any]):
     return "lever", study(build(tree, SCENE))
 
 
-def _gears_solved(gears, precision: float = 0.5):
-    """(solution, mesh, velocities) as `graphplan gears` makes them (report.gears.solved: the meshing
-    at the A1 zone's height, the train's default scales)."""
+def _gears_solved(gears, precision: float = 0.5, lang: str = "uk"):
+    """(solution, mesh, velocities) as `graphplan gears` makes them (sheets.gears.construct_on: the
+    A1 sheet's scales)."""
     from graphplan.exact.gears import solve
-    from graphplan.graphic.gears import construct_mesh, construct_train
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on
     sol = solve(gears)
-    mesh = construct_mesh(sol.pair, precision) if sol.pair else None
-    vel = construct_train(sol.train, precision) if sol.train else None
+    mesh, vel, _ = construct_on(sol, form("A1"), precision, lang)
     return sol, mesh, vel
 
 
@@ -399,7 +402,7 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
             break
         if drawn is None:
             first_error = first_error or error
-        drawings.append((chosen, drawn, "" if drawn is not None else refused(error, folder).line))
+        drawings.append((chosen, drawn, "" if drawn is not None else refused(error, folder, lang).line))
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
     svg = _side_by_side(drawings, lang)
@@ -528,17 +531,11 @@ def _gears_preview(tree: dict[str, Any], lang: str) -> Answer:
     """The meshing and the planetary train's pictures side by side, as `graphplan gears --svg` draws
     them (graphic.gears; the page scales the drawing down)."""
     from graphplan.drawing.svg import page_for, render
-    from graphplan.graphic.gears import construct_mesh, construct_train
-    from graphplan.exact.gears import solve
     from graphplan.graphic.record import Record
     from graphplan.model.gears import build as build_gears
     gears = build_gears(tree, SCENE)
-    sol = solve(gears)
-    parts = []
-    if sol.pair is not None:
-        parts.append(construct_mesh(sol.pair, 0.5, lang).record)
-    if sol.train is not None:
-        parts.append(construct_train(sol.train, 0.5, lang).record)
+    _, mesh, vel = _gears_solved(gears, 0.5, lang)
+    parts = [c.record for c in (mesh, vel) if c is not None]
     both = Record(title=gears.title_in(lang))
     right = None
     for rec in parts:
@@ -559,10 +556,12 @@ def run(name: str, folder: str, *args: Any) -> Answer:
     """Run job ``name`` in ``folder`` (made here, emptied by the caller): an Answer, never a raise."""
     where = Path(folder)
     where.mkdir(parents=True, exist_ok=True)
+    job = JOBS[name]
     try:
-        return JOBS[name](where, *args)
+        return job(where, *args)
     except GraphplanError as exc:
-        return refused(exc, where)
+        names = list(inspect.signature(job).parameters)[1:]
+        return refused(exc, where, dict(zip(names, args)).get("lang"))
     except RecursionError:
         return Answer(422, line=f"{SCENE}: nested too deeply")
     except MemoryError:
