@@ -264,13 +264,75 @@ def test_velocity_table_has_no_repeated_or_zero_columns():
     assert not [c for c in body if all(v in ("0", "—") for v in c)]
 
 
+TITLE_NO = re.compile(r"^(?:Таблиця|Table) (\d+(?:\.\d+)?)\. ")
+
+
+def table_numbers(sheet) -> list[str]:
+    """The numbers of the sheet's (or set's) table titles in reading order: sheet by sheet, on a
+    sheet column by column (a title more than 20 mm to the right of another starts a new
+    column), top to bottom in a column."""
+    out = []
+    for page in sheet.pages:
+        titles = [(p.bounds()[0], -p.bounds()[3], TITLE_NO.match(p.text).group(1))
+                  for p in page.record.items if p.kind == "text" and TITLE_NO.match(p.text)]
+        titles.sort()
+        columns: list[list[tuple]] = []
+        for t in titles:
+            if columns and t[0] - columns[-1][0][0] < 20.0:
+                columns[-1].append(t)
+            else:
+                columns.append([t])
+        out += [n for col in columns for _, _, n in sorted(col, key=lambda t: t[1])]
+    return out
+
+
 def test_acceleration_tables_are_numbered():
+    """Three acceleration plans: the tables are numbered 1, 2, 3 … in reading order (no "2.1"
+    beside "3"), in both languages; the notes cite the plans' tables by those numbers."""
     st = example("crank_slider")
-    sheet = BUILDERS["kinematics"](st, form("A1"), SheetOptions(accel=["#1", "#4", "#7"]))
-    texts = " ".join(_texts(sheet))
-    for n in (1, 2, 3):
-        assert f"Таблиця 2.{n}." in texts
-    assert not E_NOTATION.search(texts)
+    for lang in ("uk", "en"):
+        sheet = BUILDERS["kinematics"](st, form("A1"), SheetOptions(accel=["#1", "#4", "#7"], lang=lang))
+        numbers = table_numbers(sheet)
+        assert numbers == [str(k) for k in range(1, len(numbers) + 1)], numbers
+        assert len(numbers) >= 5
+        texts = " ".join(_texts(sheet))
+        assert ("таблицях 1–4" if lang == "uk" else "tables 1–4") in texts
+        assert not E_NOTATION.search(texts)
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper", "slotter", "lab_crank_slider"])
+@pytest.mark.parametrize("fmt", ["A1", "A3"])
+def test_kinematics_tables_numbered_in_reading_order(name, fmt):
+    """Every example's kinematics sheet (and an A3 set) numbers its tables 1, 2, 3 … as it is read."""
+    numbers = table_numbers(_build(name, "kinematics", fmt))
+    assert numbers == [str(k) for k in range(1, len(numbers) + 1)] and len(numbers) >= 3, numbers
+
+
+MU_VALUE = re.compile(r"μ_\{?([^\s=}]+)\}?\s*=\s*(?:[^=;]*=\s*)?(-?\d[\d.,]*)")
+
+
+def mu_values(sheet) -> dict[str, set[str]]:
+    """Every scale symbol μ_x the sheet's lettering gives a value, with its values (a formula
+    "μ_V = μ_S/(μ_t·H_1) = 0,1" gives μ_V its last value)."""
+    out: dict[str, set[str]] = {}
+    for text in _texts(sheet):
+        for part in re.split(r";|,\s{2}", text):
+            m = MU_VALUE.search(part)
+            if m:
+                out.setdefault(m.group(1), set()).add(m.group(2).rstrip(".,"))
+    return out
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper"])
+def test_one_scale_symbol_one_value(name):
+    """The plans' μ_v, μ_a and the diagrams' μ_V, μ_A (μ_ω, μ_ε) are named apart: no μ symbol on a
+    kinematics sheet carries two values, in either language; the diagrams' velocity scale is on it."""
+    for lang in ("uk", "en"):
+        sheet = BUILDERS["kinematics"](example(name), form("A1"), SheetOptions(lang=lang))
+        mus = mu_values(sheet)
+        assert {"l", "v", "a", "t"} <= set(mus), mus
+        assert len(set(mus) - {"l", "v", "a", "t"}) >= 3, mus      # the diagrams' own s, v, a scales
+        assert all(len(v) == 1 for v in mus.values()), mus
 
 
 def test_title_block_scale_is_the_drawings():
