@@ -268,13 +268,21 @@ TITLE_NO = re.compile(r"^(?:Таблиця|Table) (\d+(?:\.\d+)?)\. ")
 
 
 def table_numbers(sheet) -> list[str]:
-    """The numbers of the sheet's (or set's) table titles in reading order: sheet by sheet, on a
-    sheet column by column (a title more than 20 mm to the right of another starts a new
-    column), top to bottom in a column."""
+    """The numbers of the sheet's (or set's) table titles in reading order, sheet by sheet: on one
+    sheet the tables' column is read column by column (a title more than 20 mm to the right of
+    another starts a new column), top to bottom; a set's sheets are read row by row (the rows of
+    drawings and tables as they flow), left to right."""
     out = []
     for page in sheet.pages:
         titles = [(p.bounds()[0], -p.bounds()[3], TITLE_NO.match(p.text).group(1))
                   for p in page.record.items if p.kind == "text" and TITLE_NO.match(p.text)]
+        if sheet.more or len(sheet.pages) > 1:
+            def row(t):
+                box = next(pl.box for pl in page.placed if pl.box[0] - 1 <= t[0] <= pl.box[2] + 1
+                           and pl.box[1] - 1 <= -t[1] <= pl.box[3] + 1)
+                return (-round(box[3], 1), t[0])
+            out += [n for _, _, n in sorted(titles, key=row)]
+            continue
         titles.sort()
         columns: list[list[tuple]] = []
         for t in titles:
@@ -424,3 +432,29 @@ def test_diagrams_share_one_time_base():
         assert len(spans) == 2
         assert spans[0][0] <= bottom + 1e-6 and spans[1][1] >= top - 1e-6
         assert 0.0 < spans[1][0] - spans[0][1] < 8.0          # the gap for the numbers under s
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "shaper", "four_bar"])
+def test_a3_set_fills_its_sheets_in_order(name):
+    """An A3 set fills its sheets in reading order: no sheet holds a single drawing while the next
+    sheet's first drawing would fit under it above the title block (the offset crank-slider's set
+    gave a sheet to one acceleration plan and left the last one half empty); the position plan
+    shares its sheet or fills half its height."""
+    from graphplan.sheets.compose import field_of, keep_out
+    from graphplan.drawing.layout import GAP
+    f = form("A3")
+    sheet = _build(name, "kinematics", "A3")
+    x0, y0, x1, y1 = field_of(f)
+    above = y1 - keep_out(f)[3]            # the field's height over the title block
+    pages = [page.placed for page in sheet.pages]
+    assert len(pages) > 1
+    for n, (page, after) in enumerate(zip(pages, pages[1:]), 1):
+        if len(page) != 1:
+            continue
+        h = page[0].record.bounds()[3] - page[0].record.bounds()[1]
+        b = after[0].record.bounds()
+        assert h + GAP + (b[3] - b[1]) > above or b[2] - b[0] > x1 - x0, (n, page[0].name, after[0].name)
+    first = pages[0]
+    assert first[0].name == "position plan"
+    b = first[0].record.bounds()
+    assert len(first) >= 2 or b[3] - b[1] >= (y1 - y0) / 2, [p.name for p in first]
