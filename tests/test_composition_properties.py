@@ -88,6 +88,11 @@ def test_sheets_of_new_mechanisms_have_no_defects(mechanism, kind):
     def check(text):
         sheet = _sheet(text, kind)
         assert defects(sheet) == [], text
+        if kind == "kinematics":       # tables 1, 2, 3 … in reading order; one μ symbol, one value
+            from test_sheets_composition import mu_values, table_numbers
+            numbers = table_numbers(sheet)
+            assert numbers == [str(k) for k in range(1, len(numbers) + 1)] and len(numbers) >= 3, (numbers, text)
+            assert all(len(v) == 1 for v in mu_values(sheet).values()), (mu_values(sheet), text)
     check()
 
 
@@ -98,6 +103,10 @@ def test_sets_of_new_mechanisms_have_no_defects(mechanism):
     def check(text):
         sheet = _sheet(text, "kinematics", "A3")
         assert defects(sheet) == [], text
+        from test_sheets_composition import mu_values, table_numbers
+        numbers = table_numbers(sheet)
+        assert numbers == [str(k) for k in range(1, len(numbers) + 1)] and len(numbers) >= 3, (numbers, text)
+        assert all(len(v) == 1 for v in mu_values(sheet).values()), (mu_values(sheet), text)
     check()
 
 

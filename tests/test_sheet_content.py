@@ -276,7 +276,7 @@ def test_lab_table_units_and_one_sign(lab_sheet):
     """Table 4: units in the header; a drawn ordinate carries its value's sign (s = 14 mm beside
     s = −0,014 m before)."""
     lines = texts(lab_sheet)
-    k = next(i for i, t in enumerate(lines) if t.startswith("Таблиця 4"))
+    k = next(i for i, t in enumerate(lines) if t.startswith("Таблиця ") and t.endswith("s, v, a у заданих положеннях"))
     assert lines[k + 1:k + 11] == ["№", "φ, °", "s, мм", "s, м", "v, мм", "v, м/с", "δ_v, %", "a, мм", "a, м/с²",
                                    "δ_a, %"]
     val = lambda s: float(s.rstrip("*").replace("−", "-").replace(",", "."))  # noqa: E731
@@ -294,7 +294,7 @@ def test_lab_table_marks_an_error_past_the_limit():
     st = example("lab_crank_slider")
     diag = chord_diagrams(st, precision=0.5, L=96.0, H1=25.0, H2=9.0, height=20.0)   # the A3 set's
     lines = record_texts(lab_table(diag, "uk"))
-    k = next(i for i, t in enumerate(lines) if t.startswith("Таблиця 4"))
+    k = next(i for i, t in enumerate(lines) if t.startswith("Таблиця ") and t.endswith("s, v, a у заданих положеннях"))
     marked = 0
     for key, col in (("v_at", 6), ("a_at", 9)):
         errs = diag.errors_pct(key)

@@ -272,13 +272,83 @@ def test_velocity_table_has_no_repeated_or_zero_columns():
     assert not [c for c in body if all(v in ("0", "—") for v in c)]
 
 
+TITLE_NO = re.compile(r"^(?:Таблиця|Table) (\d+(?:\.\d+)?)\. ")
+
+
+def table_numbers(sheet) -> list[str]:
+    """The numbers of the sheet's (or set's) table titles in reading order, sheet by sheet: on one
+    sheet the tables' column is read column by column (a title more than 20 mm to the right of
+    another starts a new column), top to bottom; a set's sheets are read row by row (the rows of
+    drawings and tables as they flow), left to right."""
+    out = []
+    for page in sheet.pages:
+        titles = [(p.bounds()[0], -p.bounds()[3], TITLE_NO.match(p.text).group(1))
+                  for p in page.record.items if p.kind == "text" and TITLE_NO.match(p.text)]
+        if sheet.more or len(sheet.pages) > 1:
+            def row(t):
+                box = next(pl.box for pl in page.placed if pl.box[0] - 1 <= t[0] <= pl.box[2] + 1
+                           and pl.box[1] - 1 <= -t[1] <= pl.box[3] + 1)
+                return (-round(box[3], 1), t[0])
+            out += [n for _, _, n in sorted(titles, key=row)]
+            continue
+        titles.sort()
+        columns: list[list[tuple]] = []
+        for t in titles:
+            if columns and t[0] - columns[-1][0][0] < 20.0:
+                columns[-1].append(t)
+            else:
+                columns.append([t])
+        out += [n for col in columns for _, _, n in sorted(col, key=lambda t: t[1])]
+    return out
+
+
 def test_acceleration_tables_are_numbered():
+    """Three acceleration plans: the tables are numbered 1, 2, 3 … in reading order (no "2.1"
+    beside "3"), in both languages; the notes cite the plans' tables by those numbers."""
     st = example("crank_slider")
-    sheet = BUILDERS["kinematics"](st, form("A1"), SheetOptions(accel=["#1", "#4", "#7"]))
-    texts = " ".join(_texts(sheet))
-    for n in (1, 2, 3):
-        assert f"Таблиця 2.{n}." in texts
-    assert not E_NOTATION.search(texts)
+    for lang in ("uk", "en"):
+        sheet = BUILDERS["kinematics"](st, form("A1"), SheetOptions(accel=["#1", "#4", "#7"], lang=lang))
+        numbers = table_numbers(sheet)
+        assert numbers == [str(k) for k in range(1, len(numbers) + 1)], numbers
+        assert len(numbers) >= 5
+        texts = " ".join(_texts(sheet))
+        assert ("таблицях 1–4" if lang == "uk" else "tables 1–4") in texts
+        assert not E_NOTATION.search(texts)
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper", "slotter", "lab_crank_slider"])
+@pytest.mark.parametrize("fmt", ["A1", "A3"])
+def test_kinematics_tables_numbered_in_reading_order(name, fmt):
+    """Every example's kinematics sheet (and an A3 set) numbers its tables 1, 2, 3 … as it is read."""
+    numbers = table_numbers(_build(name, "kinematics", fmt))
+    assert numbers == [str(k) for k in range(1, len(numbers) + 1)] and len(numbers) >= 3, numbers
+
+
+MU_VALUE = re.compile(r"μ_\{?([^\s=}]+)\}?\s*=\s*(?:[^=;]*=\s*)?(-?\d[\d.,]*)")
+
+
+def mu_values(sheet) -> dict[str, set[str]]:
+    """Every scale symbol μ_x the sheet's lettering gives a value, with its values (a formula
+    "μ_V = μ_S/(μ_t·H_1) = 0,1" gives μ_V its last value)."""
+    out: dict[str, set[str]] = {}
+    for text in _texts(sheet):
+        for part in re.split(r";|,\s{2}", text):
+            m = MU_VALUE.search(part)
+            if m:
+                out.setdefault(m.group(1), set()).add(m.group(2).rstrip(".,"))
+    return out
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper"])
+def test_one_scale_symbol_one_value(name):
+    """The plans' μ_v, μ_a and the diagrams' μ_V, μ_A (μ_ω, μ_ε) are named apart: no μ symbol on a
+    kinematics sheet carries two values, in either language; the diagrams' velocity scale is on it."""
+    for lang in ("uk", "en"):
+        sheet = BUILDERS["kinematics"](example(name), form("A1"), SheetOptions(lang=lang))
+        mus = mu_values(sheet)
+        assert {"l", "v", "a", "t"} <= set(mus), mus
+        assert len(set(mus) - {"l", "v", "a", "t"}) >= 3, mus      # the diagrams' own s, v, a scales
+        assert all(len(v) == 1 for v in mus.values()), mus
 
 
 def test_title_block_scale_is_the_drawings():
@@ -370,3 +440,29 @@ def test_diagrams_share_one_time_base():
         assert len(spans) == 2
         assert spans[0][0] <= bottom + 1e-6 and spans[1][1] >= top - 1e-6
         assert 0.0 < spans[1][0] - spans[0][1] < 8.0          # the gap for the numbers under s
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "shaper", "four_bar"])
+def test_a3_set_fills_its_sheets_in_order(name):
+    """An A3 set fills its sheets in reading order: no sheet holds a single drawing while the next
+    sheet's first drawing would fit under it above the title block (the offset crank-slider's set
+    gave a sheet to one acceleration plan and left the last one half empty); the position plan
+    shares its sheet or fills half its height."""
+    from graphplan.sheets.compose import field_of, keep_out
+    from graphplan.drawing.layout import GAP
+    f = form("A3")
+    sheet = _build(name, "kinematics", "A3")
+    x0, y0, x1, y1 = field_of(f)
+    above = y1 - keep_out(f)[3]            # the field's height over the title block
+    pages = [page.placed for page in sheet.pages]
+    assert len(pages) > 1
+    for n, (page, after) in enumerate(zip(pages, pages[1:]), 1):
+        if len(page) != 1:
+            continue
+        h = page[0].record.bounds()[3] - page[0].record.bounds()[1]
+        b = after[0].record.bounds()
+        assert h + GAP + (b[3] - b[1]) > above or b[2] - b[0] > x1 - x0, (n, page[0].name, after[0].name)
+    first = pages[0]
+    assert first[0].name == "position plan"
+    b = first[0].record.bounds()
+    assert len(first) >= 2 or b[3] - b[1] >= (y1 - y0) / 2, [p.name for p in first]

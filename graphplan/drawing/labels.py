@@ -24,13 +24,14 @@ Box = tuple[float, float, float, float]
 
 CLEAR = 0.5          # mm of paper between a label's ink and a line's ink when placing
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
-APART = 1.0          # mm between two labels' ink
+APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d")
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
 LINK_APART = 6.0     # … where one is a link's number (5 mm high: "2" 3 mm from "1" still reads "2 1")
 LINK_SIZE = 5.0      # mm: the height of a link's number (drawing.plans.link_numbers)
 DIRECTIONS = 16      # candidate directions around a point
 NEAR = (0.8, 1.5, 3.0, 4.5)               # mm from the point to the box: beside it
-FAR = (5.0, 7.0, 9.5, 12.5, 16.0, 20.0, 25.0, 32.0)   # … farther out, with a leader
+FAR = (5.0, 6.0, 7.0, 8.0, 9.5, 11.0, 12.5, 16.0, 20.0, 25.0, 32.0)   # … farther out, with a leader
+FAR_DIRECTIONS = 96  # … in this many directions (a letter finds the sector between a pivot's twelve lines)
 
 
 @dataclass
@@ -307,7 +308,7 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
 
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     """A free spot farther out, joined to the point by a leader that crosses no label."""
-    boxes, starts = _candidates(req, ink, FAR, 2 * DIRECTIONS)
+    boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
     for k in np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]:
         box = tuple(boxes[k])
         a, b = _leader(req.at, box)

@@ -266,6 +266,20 @@ def boxes_apart(items: Sequence[Placed], gap: float = 0.0) -> list[tuple[str, st
     return out
 
 
+def _prefix(items: list[Node], y: float, bottom: float, room, width) -> tuple[list[Node], float]:
+    """The longest run of ``items`` from the first that fits side by side under ``y`` (above
+    ``bottom``, within ``room``), and its height: what of a row fills the rest of a sheet."""
+    fit: list[Node] = []
+    height = 0.0
+    for item in items:
+        h = max(height, extent(item)[1])
+        if y - h < bottom - 1e-9 or width(fit + [item]) > room(y, h) + 1e-9:
+            break
+        fit.append(item)
+        height = h
+    return fit, height
+
+
 def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP
          ) -> list[list[tuple[Leaf, Box]]] | None:
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
@@ -298,6 +312,12 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
                 taken.append(item)
                 height = max(height, h)
             if width(taken) > room(y, height) + 1e-9 or y - height < ry0 - 1e-9:
+                fit, low = _prefix(taken, y, ry0, room, width) if page else ([], 0.0)
+                if fit:                        # the first items fit below: the sheet is filled first
+                    page.append((y, low, fit))
+                    y -= low + gap
+                    queue = queue[len(fit):]
+                    continue
                 if not page:                   # alone on an empty sheet and still too large
                     return None
                 pages.append(page)
@@ -306,6 +326,8 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             page.append((y, height, taken))
             y -= height + gap
             queue = queue[len(taken):]
+            if all(isinstance(q, Leaf) and not q.name and q.record is None for q in queue):
+                queue = []                     # a grid's padding cells do not start a row of their own
     if page:
         pages.append(page)
     out = []

@@ -26,7 +26,7 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, column_leaf, grid_rows, legible, one_sheet, room,
-                                        room_fits, set_of_sheets, size_of, tree)
+                                        room_fits, set_of_sheets, set_rows, size_of, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, word
 
@@ -202,12 +202,12 @@ def measure(dr: Drafter) -> Natural:
     pl = dr.plans()
     mech = st.mech
     mu0 = {"position": pl.mu_l, "velocity": pl.mu_v, "acceleration": pl.mu_a}
-    recs = dr.lines(mu0)          # the lettering is allowed for (LETTERING) and checked once drawn
+    recs = dr.records(mu0)        # lettered: what the lettering adds is measured (and checked once drawn)
     v_a = abs(mech.omega1) * mech.crank.length
     a_a = mech.crank.length * (mech.omega1 ** 4 + mech.crank.epsilon ** 2) ** 0.5
     principal = {"position": mech.crank.length, "velocity": v_a, "acceleration": a_a}
     families = {fam: measured(rs, mu0[fam], [c for lang in LANGS for c in _captions(st, pl, lang, mu0)[fam]],
-                              principal=principal[fam], target=TARGETS[fam], lettering=LETTERING)
+                              principal=principal[fam], target=TARGETS[fam])
                 for fam, rs in recs.items()}
     diag = dr.diagrams(1.0)
     tables = {}
@@ -341,12 +341,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = note_block(d["notes"], TITLE)
-        rows: list[list[Leaf]] = [[P, D]]
-        width = region[2] - region[0]
-        for cells_ in (V, A):
-            if cells_:
-                rows += grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP))))
-        rows.append(tables + [Leaf("notes", record=notes_rec)])
+        rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0])
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")

@@ -22,6 +22,8 @@ if TYPE_CHECKING:
 FAMILIES = ("position", "velocity", "acceleration")
 PLAN_MM = 100.0        # … or its largest plan drawn at least this across
 LEGIBLE_MM = 40.0      # a set's plans: the crank pin's vectors p_v a and π a drawn at least this long
+CRANK_MM = 30.0        # a set's position plan: the crank drawn at least this long (else its twelve
+                       # positions crowd the letters off their points: 1:4 drew OA 20 mm, S1 23 mm away)
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
 SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
@@ -224,14 +226,34 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide)."""
-    rows: list[list[Leaf]] = [[nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize)]]
+    grids = {}
     for fam in ("velocity", "acceleration"):
         cell = nat.leaf(fam, mu[fam])
-        k = max(1, int((width + GAP) // (cell.w + GAP)))
-        n = nat.count[fam]
-        rows += grid_rows([Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(n)], k)
-    rows.append([Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                + [Leaf("notes", TITLE, nat.notes_height(TITLE))])
+        grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
+    return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
+                    grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
+                    + [Leaf("notes", TITLE, nat.notes_height(TITLE))], width)
+
+
+def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float
+             ) -> list[list[Leaf]]:
+    """A set's drawings and tables as rows in reading order: the position plan and the diagrams
+    side by side where the sheet's width holds both (else the position plan, the velocity plans
+    under it, then the diagrams: no sheet holds a position plan alone), the velocity plans as many
+    equal cells to a row as the width holds, the acceleration plans likewise, their last row
+    (unpadded) followed by the tables and the notes — a lone acceleration plan shares its sheet
+    with the tables instead of taking one for itself."""
+    def grid(cells_: list[Leaf]) -> list[list[Leaf]]:
+        return grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP)))) if cells_ else []
+    if P.w + GAP + D.w <= width + 1e-9:
+        rows = [[P, D]] + grid(V)
+    else:
+        rows = [[P]] + grid(V) + [[D]]
+    rows += grid(A)
+    if A:
+        rows[-1] = [c for c in rows[-1] if c.name] + tail
+    else:
+        rows.append(tail)
     return rows
 
 
@@ -318,9 +340,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                         mu = {**mu, fam: bigger}
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + math.log(k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
-                # right is taken where it costs a sheet at most
+                # right is taken where it costs a sheet at most; so does a crowded position plan
+                # (its crank shorter than CRANK_MM where a sheet holds a larger one)
                 wrong = 0 if dr.diagrams_right(k) else 1
-                key = (count + wrong, wrong, -(factor == TABLES), -rel)
+                small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9
+                            and fams["position"].drawn(top) >= CRANK_MM - 1e-9)
+                key = (count + wrong + small, wrong, -(factor == TABLES), -rel)
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count))
     if best is None:

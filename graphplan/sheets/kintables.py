@@ -1,6 +1,6 @@
-"""The kinematics sheet's tables and notes (seeds 000, 002 and 004): table 1 the plans' velocities at
-every position, tables 2.n one acceleration plan each, table 3 the links' dimensions, table 4 the lab's
-s, v, a at its chosen positions — each error past the lab's 5 % marked and footnoted with its cause —
+"""The kinematics sheet's tables and notes (seeds 000, 002 and 004), numbered 1, 2, 3 … in reading
+order: table 1 the plans' velocities at every position, then one table per acceleration plan (2, 3 …),
+then the links' dimensions and the lab's s, v, a at its chosen positions — each error past the lab's 5 % marked and footnoted with its cause —
 and the notes' lines (mobility, structure, scales, precision, the largest errors, the signs). The
 composition that places them is sheets/kinematics.py (sheets/kinlayout.py the arithmetic)."""
 from __future__ import annotations
@@ -148,7 +148,7 @@ def judged(e: dict) -> bool:
 
 
 def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> Record:
-    """Table 2.n: one acceleration plan: drawn mm, graphical value, analytic value and δ, %; ε
+    """Table n: one acceleration plan (the sheet numbers it after table 1 and the earlier plans): drawn mm, graphical value, analytic value and δ, %; ε
     signed (+ counter-clockwise); a vector read as 0 mm is 0; an analytic value below its column's
     resolution is 0; an error past the lab's 5 % is marked, its footnote says why. The force
     position (no index) is named by the crank's turn from position 0, as the scene gives it."""
@@ -195,16 +195,16 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
     return out
 
 
-def dimensions_table(st: Study, mu_l: float, lang: str) -> Record:
+def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3) -> Record:
     """Seed 000's table 2.1 / seed 002's measured dimensions: each length real and drawn at μl."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     rows = [[w('link'), w('real'), w('drawn')]]
     for name, length in link_lengths(st):
         rows.append([name, number(length, 4, lang=lang), number(length / mu_l, 4, lang=lang)])
-    return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims'))
+    return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
 
 
-def lab_table(diag, lang: str) -> Record | None:
+def lab_table(diag, lang: str, n: int = 4) -> Record | None:
     """Seed 002's table: s, v, a of the output at the lab's given positions — the diagrams'
     ordinates (mm), the graphical and the exact values' errors — one sign convention (the values'
     along the guide, the ordinates too: a mirrored diagram's ordinate is written with the value's
@@ -250,7 +250,7 @@ def lab_table(diag, lang: str) -> Record | None:
                      number(k_ * r.a_at[k], 3, lang=lang), number(vals["a_at"][k], lang=lang),
                      pct("a_at", ea, k, r.a_at[k], a_)])
     rec = table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 18.0, 14.0], row_h=6.0, size=2.5,
-                title=w('lab'))
+                title=w('lab', n=n))
     said = ([w('mark_head')] + notes if notes else []) + ([w('lab_mirrored')] if k_ < 0 else [])
     return footnoted(rec, said)
 
@@ -322,8 +322,9 @@ def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
 
 
 def sheet_tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> list[tuple[str, Record]]:
-    """The sheet's tables in reading order: 1 velocities, 2.n accelerations, 3 dimensions, 4 the
-    lab's s, v, a (a lab of at most 8 positions)."""
+    """The sheet's tables in reading order, numbered 1, 2, 3 … consecutively (``table_numbers``):
+    the velocities, one table per acceleration plan, the dimensions, the lab's s, v, a (a lab of at
+    most 8 positions)."""
     from graphplan.report.plans import plans_json
     doc = plans_json(plans)
     out = [("velocity table", velocity_table(doc, lang, p))]
@@ -331,13 +332,20 @@ def sheet_tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> 
     for q, pos in zip(plans.positions, doc["positions"]):
         if q.acceleration is not None:
             n += 1
-            out.append((f"acceleration table {n}", acceleration_table(pos, n, lang, p)))
-    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang)))
+            out.append((f"acceleration table {n}", acceleration_table(pos, 1 + n, lang, p)))
+    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang, 2 + n)))
     if st.mech.task.count <= 8:
-        lab = lab_table(diag, lang)
+        lab = lab_table(diag, lang, 3 + n)
         if lab is not None:
             out.append(("lab table", lab))
     return [(name, enlarged(rec, factor)) for name, rec in out]
+
+
+def plan_tables(plans) -> str:
+    """The numbers of the tables of the plans' errors (velocities 1, accelerations 2 … 1 + m):
+    "1", "1, 2" or "1–4", as the notes cite them."""
+    m = sum(q.acceleration is not None for q in plans.positions)
+    return "1" if m == 0 else "1, 2" if m == 1 else f"1–{1 + m}"
 
 
 def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
@@ -353,7 +361,7 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
     every = table_errors(doc, p, 0.0)
     long_ = table_errors(doc, p, SHORT_MM)
     if every:
-        extra.append(f"{w('max_error')}: {fixed(max(every), lang, 2)} %"
+        extra.append(f"{w('max_error', t=plan_tables(plans))}: {fixed(max(every), lang, 2)} %"
                      + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
     extra.append(w('dash'))
     extra.append(sign_note(st, diag, lang))
