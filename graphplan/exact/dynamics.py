@@ -103,8 +103,13 @@ def inertia_terms(st: Study, kin: Kinematics) -> tuple[Array, Array]:
 def resistance(st: Study, kin: Kinematics, working: Array) -> Array:
     """M*_c = −(P_G + P_F)/|ω1|: the power of gravity and of the external forces (kinetostatics'
     loads, their strokes and profiles) reduced to the crank; positive where it resists."""
-    power = sum((ld.power for ld in loads(st, kin, working) if ld.kind in ("gravity", "external")),
+    acting = [ld for ld in loads(st, kin, working) if ld.kind in ("gravity", "external")]
+    power = sum((ld.power for ld in acting), np.zeros(kin.phi_deg.shape))
+    # the loads' gross power Σ|F|·|v| + |M|·|ω| is the scale of the sum: a weight on a level guide
+    # gives F·v ~ 1e-16 of it, round-off, not a resistance (it made A_c ~ 1e-17 J and a bracket error)
+    gross = sum((np.abs(ld.force) * np.abs(ld.velocity) + np.abs(ld.couple * ld.omega) for ld in acting),
                 np.zeros(kin.phi_deg.shape))
+    power = np.where(np.abs(power) <= 1e-12 * float(np.max(gross, initial=0.0)), 0.0, power)
     return -power / abs(st.mech.omega1)
 
 
@@ -301,7 +306,8 @@ def _sample(c: Cycle, sols) -> tuple[Array, Array]:
     idx = np.clip(np.searchsorted(c.breaks, turn, side="right") - 1, 0, len(sols) - 1)
     for k, sol in enumerate(sols):
         sel = idx == k
-        values[sel] = sol.sol(turn[sel])[0]
+        if np.any(sel):            # a piece shorter than a sample step holds none (scipy fails on none)
+            values[sel] = sol.sol(turn[sel])[0]
     return turn, values
 
 
