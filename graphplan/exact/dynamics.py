@@ -358,6 +358,38 @@ def flywheel_classical(c: Cycle, delta: float, omega_mean: float) -> float:
     return brentq(f, lo, hi, xtol=1e-13 * guess, rtol=1e-14, maxiter=200)
 
 
+def check_divisions(n, key: str = "--divisions") -> int:
+    """The flywheel construction's divisions asked for explicitly: a whole number within
+    bounds.DYNAMICS_DIVISIONS (the construction's cost grows with them; a drawing resolves no more)."""
+    from graphplan.model.bounds import DYNAMICS_DIVISIONS
+    lo, hi = DYNAMICS_DIVISIONS
+    if isinstance(n, bool) or not isinstance(n, int) or not lo <= n <= hi:
+        raise GraphplanError(f"{key} must be a whole number from {lo} to {hi} (the construction divides the "
+                             f"turn into at most {hi} parts, 1° each; a drawing resolves no finer), got {n!r}")
+    return n
+
+
+def bounded(st: Study) -> tuple[Study, list[tuple[str, str]]]:
+    """The study the dynamics works on, and its note: the scene's [dynamics] divisions must lie
+    within bounds.DYNAMICS_DIVISIONS (refused before any work); without them the construction
+    divides the turn at the positions — a positions.count above the bound (the kinematics takes up
+    to 3600) is clamped to it with a note, as the exact integration needs no positions at all."""
+    from graphplan.model.bounds import DYNAMICS_DIVISIONS
+    task = st.mech.task
+    if "divisions" in task.flywheel:
+        check_divisions(task.flywheel["divisions"], "dynamics.divisions")
+        return st, []
+    hi = DYNAMICS_DIVISIONS[1]
+    if task.count <= hi:
+        return st, []
+    task = replace(task, flywheel={**task.flywheel, "divisions": hi})
+    note = (f"positions.count = {st.mech.task.count}: the flywheel construction divides the turn into {hi} "
+            f"parts (1° each; a drawing resolves no finer) — set [dynamics] divisions for fewer",
+            f"positions.count = {st.mech.task.count}: побудова маховика ділить оберт на {hi} частин (по 1°; "
+            f"креслення тонше не розрізняє) — менше задайте в [dynamics] divisions")
+    return replace(st, mech=replace(st.mech, task=task)), [note]
+
+
 def check_delta(delta: float) -> None:
     if not (isinstance(delta, (int, float)) and DELTA_RANGE[0] < delta < DELTA_RANGE[1]):
         raise GraphplanError(f"--delta: the coefficient of unevenness must lie in (0, 0.5), got {delta!r}")
@@ -590,6 +622,7 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     else 0.04."""
     delta = float(st.mech.task.flywheel.get("delta", 0.04)) if delta is None else delta
     check_delta(delta)
+    st, notes = bounded(st)
     c = cycle(st)
     wm = abs(st.mech.omega1)
     dr = drive(st, c)
@@ -599,7 +632,7 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     fm = flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
     mm = motor_motion(c, dr, fm)
     carries(dr, mm)
-    warnings = list(dr.warnings)
+    warnings = list(dr.warnings) + notes
     const = dr.rotor_reduced + dr.reducer_reduced
     if total <= const:
         warnings.append((f"the rotor and the reducer ({const:.4g} kg·m²) exceed the inertia δ = {delta:g} needs "

@@ -69,6 +69,8 @@ ABSCISSA_MM = Range(10.0, 2000.0, "mm")              # the diagrams' L
 POLE_MM = Range(1.0, 1000.0, "mm")                   # H1, H2
 COUNT = (2, 3600)                                    # positions of a turn
 DIVISIONS = (2, 720)                                 # the diagrams' intervals
+DYNAMICS_DIVISIONS = (4, 360)                        # the flywheel construction's divisions: 1° each at
+                                                     # most (L ≈ 250 mm: 0.7 mm a division, the ruler's 0.5 mm)
 
 
 def check(value: float, bounds: Range, key: str, where: str) -> float:

@@ -356,35 +356,38 @@ def _grade_row(var: _Variant, row: Row, signed: bool, pending: list | None = Non
 
 def _explain_all(pending: list) -> None:
     """Search the turn for the crank angles where each failed row's quantity takes the student's
-    value. Rows of the same variant, quantity and sign share one tabulation of the turn and one
-    bisection: every bracket of every row is refined together, 45 vectorised solves a group, so a
-    faculty's 100 000 rows cost what a few hundred groups do (was 45 solves a row)."""
-    groups: dict[tuple[int, str, bool], list] = {}
+    value. The rows of one variant share one solution of the turn's grid (every quantity read off
+    it) and one bisection of all their brackets, whatever the quantity: 45 vectorised solves a
+    variant, so a faculty's 100 000 rows over hundreds of variants and every quantity cost what a few
+    hundred variants do (was 46 solves a variant and quantity, 45 solves a row before that)."""
+    by_variant: dict[int, list] = {}
     for item in pending:
-        var, _, name, _, _, _, signed = item
-        groups.setdefault((id(var), name, signed), []).append(item)
-    for items in groups.values():
-        var, _, name, _, _, _, signed = items[0]
+        by_variant.setdefault(id(item[0]), []).append(item)
+    grid = np.arange(SEARCH_GRID + 1) * 360.0 / SEARCH_GRID
+    for items in by_variant.values():
+        var = items[0][0]
         try:
             st = var.study()
         except NoScene:
             for _, g, *_ in items:
                 g.add(said("grade key no scene"))
             continue
-        q = var.quantity(name)
-
-        def f(phi: np.ndarray) -> np.ndarray:
-            y = q(st.solve(phi))
-            return y if signed else np.abs(y)
-        grid = np.arange(SEARCH_GRID + 1) * 360.0 / SEARCH_GRID
-        curve = f(grid)
-        lo_v, hi_v = float(np.min(curve)), float(np.max(curve))
-        size = max(abs(lo_v), abs(hi_v))
-        lo_v, hi_v = (0.0 if abs(v) < 1e-12 * size else v for v in (lo_v, hi_v))   # round-off is 0
-        targets = np.array([value if signed else abs(value) for *_, value, _ in items])
-        roots = _roots_many(f, grid, curve, targets)
-        for item, found in zip(items, roots):
-            _explain(item, st, found, lo_v, hi_v)
+        kin = st.solve(grid)
+        groups: dict[tuple[str, bool], list[int]] = {}
+        for k, (_, _, name, _, _, _, signed) in enumerate(items):
+            groups.setdefault((name, signed), []).append(k)
+        curves, span = [], {}
+        for name, signed in groups:
+            y = var.quantity(name)(kin)
+            curve = y if signed else np.abs(y)
+            lo_v, hi_v = float(np.min(curve)), float(np.max(curve))
+            size = max(abs(lo_v), abs(hi_v))
+            span[name, signed] = tuple(0.0 if abs(v) < 1e-12 * size else v for v in (lo_v, hi_v))  # round-off is 0
+            curves.append((var.quantity(name), signed, curve, groups[name, signed]))
+        roots = _roots_variant(st, grid, curves, [value if signed else abs(value)
+                                                  for *_, value, signed in items])
+        for k, item in enumerate(items):
+            _explain(item, st, roots[k], *span[item[2], item[6]])
 
 
 def _explain(item: tuple, st: Study, roots: np.ndarray, lo_v: float, hi_v: float) -> None:
@@ -437,35 +440,61 @@ def _explain(item: tuple, st: Study, roots: np.ndarray, lo_v: float, hi_v: float
                    turn=Fixed(float(turns[k]), 1), there=float(there_cmp), claimed=g.row.position))
 
 
-def _roots_many(f, grid: np.ndarray, curve: np.ndarray, targets: np.ndarray,
-                chunk: int = 2000) -> list[np.ndarray]:
-    """For each target, the crank angles where f − target changes sign on the grid (or touches
-    zero), refined by bisection to ~1e-9° — the brackets of ``chunk`` targets at a time together
-    (one solve a step; a chunk's sign table is chunk × grid)."""
-    out: list[np.ndarray] = []
-    for first in range(0, len(targets), chunk):
-        part = targets[first:first + chunk]
-        y = curve[None, :] - part[:, None]
-        s = np.sign(y)
-        row, idx = np.nonzero(s[:, :-1] * s[:, 1:] < 0)          # row-major: grouped by target
-        lo, hi = grid[idx].copy(), grid[idx + 1].copy()
-        if len(idx):
-            f_lo = y[row, idx].copy()
-            goal = part[row]
-            for _ in range(45):
-                mid = 0.5 * (lo + hi)
-                f_mid = f(mid) - goal
-                left = np.sign(f_mid) == np.sign(f_lo)
-                lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-                hi = np.where(left, hi, mid)
-        mids = 0.5 * (lo + hi)
-        bounds = np.searchsorted(row, np.arange(len(part) + 1))
-        touch_row, touch_idx = np.nonzero(s[:, :-1] == 0)
-        touch_bounds = np.searchsorted(touch_row, np.arange(len(part) + 1))
-        for k in range(len(part)):
-            roots = np.concatenate([mids[bounds[k]:bounds[k + 1]],
-                                    grid[touch_idx[touch_bounds[k]:touch_bounds[k + 1]]]]) % 360.0
-            out.append(np.unique(np.round(roots, 9)))
+def _roots_variant(st: Study, grid: np.ndarray, curves: list, targets: list[float],
+                   chunk: int = 500) -> list[np.ndarray]:
+    """For each target (row k), the crank angles where its quantity − target changes sign on the
+    grid (or touches zero), refined by bisection to ~1e-9°. ``curves``: (quantity, signed, its values
+    on the grid, the rows it serves). The sign tables are built ``chunk`` rows at a time (chunk ×
+    grid, bounded memory); the brackets of every row and quantity are then refined together, one
+    solve of the mechanism a step."""
+    out: list[np.ndarray] = [np.empty(0)] * len(targets)
+    found_rows, found_lo, found_hi, found_flo, found_goal, found_q = [], [], [], [], [], []
+    touched: dict[int, np.ndarray] = {}
+    for qi, (_, _, curve, rows) in enumerate(curves):
+        rows = np.asarray(rows)
+        for first in range(0, len(rows), chunk):
+            part_rows = rows[first:first + chunk]
+            part = np.asarray([targets[k] for k in part_rows])
+            y = curve[None, :] - part[:, None]
+            sgn = np.sign(y)
+            row, idx = np.nonzero(sgn[:, :-1] * sgn[:, 1:] < 0)          # row-major: grouped by target
+            found_rows.append(part_rows[row])
+            found_lo.append(grid[idx])
+            found_hi.append(grid[idx + 1])
+            found_flo.append(y[row, idx])
+            found_goal.append(part[row])
+            found_q.append(np.full(len(row), qi))
+            touch_row, touch_idx = np.nonzero(sgn[:, :-1] == 0)
+            for r, i in zip(part_rows[touch_row], touch_idx):
+                touched.setdefault(int(r), [])
+                touched[int(r)].append(grid[i])
+    rows_of = np.concatenate(found_rows) if found_rows else np.empty(0, int)
+    lo = np.concatenate(found_lo) if found_lo else np.empty(0)
+    hi = np.concatenate(found_hi) if found_hi else np.empty(0)
+    if len(lo):
+        f_lo = np.concatenate(found_flo)
+        goal = np.concatenate(found_goal)
+        which = np.concatenate(found_q)
+        sel = [(np.nonzero(which == qi)[0], q, signed) for qi, (q, signed, _, _) in enumerate(curves)]
+        sel = [x for x in sel if len(x[0])]
+        f_mid = np.empty(len(lo))
+        for _ in range(45):
+            mid = 0.5 * (lo + hi)
+            kin = st.solve(mid)
+            for at, q, signed in sel:
+                y = q(kin)[at]
+                f_mid[at] = (y if signed else np.abs(y)) - goal[at]
+            left = np.sign(f_mid) == np.sign(f_lo)
+            lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+            hi = np.where(left, hi, mid)
+    mids = 0.5 * (lo + hi)
+    order = np.argsort(rows_of, kind="stable")
+    bounds = np.searchsorted(rows_of[order], np.arange(len(targets) + 1))
+    for k in range(len(targets)):
+        roots = mids[order[bounds[k]:bounds[k + 1]]]
+        if k in touched:
+            roots = np.concatenate([roots, np.asarray(touched[k])])
+        out[k] = np.unique(np.round(roots % 360.0, 9))
     return out
 
 
