@@ -29,7 +29,7 @@ MAX_KEY_BYTES = 64 * 1024 * 1024   # a key of 3600 positions is a few MB
 ABS_FLOOR = 1e-12       # SI: a floor for quantities that are zero over the whole turn
 
 
-@dataclass
+@dataclass(slots=True)
 class Row:
     """One line of the student's table."""
     line: int
@@ -39,7 +39,7 @@ class Row:
     value: float | None
 
 
-@dataclass
+@dataclass(slots=True)
 class Graded:
     """A graded row: the exact value, the error and the verdict, and where the value fits."""
     row: Row
@@ -523,6 +523,25 @@ def summary(graded: list[Graded]) -> dict[str, Any]:
 def report_json(graded: list[Graded], key_path: str, student_path: str, signed: bool) -> dict[str, Any]:
     return {"key": key_path, "student": student_path, "signed": signed,
             "rows": [g.json() for g in graded], "summary": summary(graded)}
+
+
+def write_json(out, graded: list[Graded], key_path: str, student_path: str, signed: bool) -> None:
+    """``report_json`` as the CLI's JSON text (util.files.json_text), written row by row to ``out``:
+    the same bytes without the whole document in memory at once (100 000 rows are ~100 MB of dicts)."""
+    import json
+    from graphplan.util.files import json_text
+    head = json_text({"key": key_path, "student": student_path, "signed": signed, "rows": [],
+                      "summary": summary(graded)})
+    if not graded:
+        out.write(head)
+        return
+    before, after = head.split('"rows": []', 1)
+    out.write(before + '"rows": [\n')
+    last = len(graded) - 1
+    for k, g in enumerate(graded):
+        text = json.dumps(g.json(), ensure_ascii=False, indent=1, allow_nan=False)
+        out.write("  " + text.replace("\n", "\n  ") + (",\n" if k < last else "\n"))
+    out.write(" ]" + after)
 
 
 def report_table(graded: list[Graded], key_path: str, student_path: str, lang: str = "uk") -> str:
