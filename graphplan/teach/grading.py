@@ -75,11 +75,15 @@ def read_student(path: str | Path) -> list[Row]:
     """A long table with the columns position, quantity, value (and variant); ``,`` ``;`` or tab
     separated; the encodings, decimal commas, minus signs and thousands spaces a person's
     spreadsheet writes (teach.tables). Other columns are ignored. A table without a ``quantity``
-    column is read as a wide one (see ``_wide``)."""
+    column is read as a wide one (see ``_wide``). The columns are found by their names in any order;
+    a name given twice is refused, and so is a decimal comma split across cells wherever the value
+    column stands ("7,2" read as 7 and a variant or position 2). Values and positions are read by the
+    one reader of every table's numbers (model.bounds.read_number)."""
     from graphplan.teach.tables import read_rows, split_comma
     path = Path(path)
     records, delimiter = read_rows(path)
     header = [h.strip().lower() for h in records[0][1]]
+    _no_twice(header, path)
     if "quantity" not in header:
         return _wide(records, header, delimiter, path)
     for need in ("position", "value"):
@@ -87,40 +91,76 @@ def read_student(path: str | Path) -> list[Row]:
             raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
                                  f"(missing {need!r})", str(path))
     col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
-    used = set(col.values())
     rows = []
     for line_no, cells in records[1:]:
         def cell(name: str) -> str:
             k = col.get(name)
             return cells[k].strip() if k is not None and k < len(cells) else ""
-        if "value" in col and split_comma(cells, col["value"], delimiter) and col["value"] + 1 not in used:
+        if split_comma(cells, col["value"], delimiter):
             _split(cells, col["value"], line_no, path)
-        value = _number(cell("value"), delimiter, line_no, path)
-        rows.append(Row(line_no, cell("variant"), cell("position"), cell("quantity"), value))
+        value = _number(cell("value"), delimiter, line_no, path, "value", col["value"])
+        position = cell("position")
+        _position_number(position, delimiter, line_no, path, col["position"])
+        rows.append(Row(line_no, cell("variant"), position, cell("quantity"), value))
     return rows
 
 
-def _number(text: str, delimiter: str, line_no: int, path: Path) -> float | None:
+def _no_twice(header: list[str], path: Path) -> None:
+    for name in ("variant", "position", "quantity", "value"):
+        if header.count(name) > 1:
+            raise GraphplanError(f"line 1: the column {name!r} appears twice (columns "
+                                 f"{', '.join(str(k + 1) for k, h in enumerate(header) if h == name)}); "
+                                 "keep one", str(path))
+
+
+def _number(text: str, delimiter: str, line_no: int, path: Path, column: str = "value",
+            k: int | None = None) -> float | None:
     from graphplan.teach.tables import number
     if not text:
         return None
     try:
         return number(text, delimiter)
     except ValueError as exc:
-        raise GraphplanError(f"line {line_no}: value {text[:30]!r}: {exc}", str(path)) from None
+        raise GraphplanError(f"line {line_no}: {column} {text[:30]!r}{_at(k)}: {exc}", str(path)) from None
+
+
+def _at(k: int | None) -> str:
+    return f" (column {k + 1})" if k is not None else ""
+
+
+def _position_number(text: str, delimiter: str, line_no: int, path: Path, k: int | None = None) -> None:
+    """A position written as a number is read by the same rule as a value (1e-400 is not position 0);
+    a word stays for the grading to call unknown."""
+    from graphplan.model.bounds import numeric_like, read_number
+    bare = text.lstrip("#")
+    if bare and numeric_like(bare):
+        try:
+            read_number(bare, delimiter)
+        except ValueError as exc:
+            raise GraphplanError(f"line {line_no}: position {text[:30]!r}{_at(k)}: {exc}",
+                                 str(path)) from None
 
 
 def _split(cells: list[str], k: int, line_no: int, path: Path) -> None:
-    raise GraphplanError(f"line {line_no}: {cells[k].strip()!r} and then {cells[k + 1].strip()[:12]!r} — a decimal "
+    raise GraphplanError(f"line {line_no}: {cells[k].strip()!r} and then {cells[k + 1].strip()[:12]!r} (columns {k + 1} "
+                         f"and {k + 2}) — a decimal "
                          "comma split across cells? Write the number with a point, quote it (\"11,09\") or "
                          "separate the table with ';'", str(path))
 
 
 def _wide(records, header, delimiter, path: Path) -> list[Row]:
     """A wide table (as a lab's sheet prints it): a position column — named ``position``, else the
-    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped."""
-    pos = header.index("position") if "position" in header else 0
+    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped.
+    A table whose first column is the variant and which names no position column is refused (the
+    variant is no position)."""
     var = header.index("variant") if "variant" in header else None
+    if "position" in header:
+        pos = header.index("position")
+    elif var == 0:
+        raise GraphplanError("line 1: the table has no position column (its first column is the variant): "
+                             "name the positions' column 'position'", str(path))
+    else:
+        pos = 0
     from graphplan.teach.tables import split_comma
     names = [h.strip() for h in records[0][1]]
     rows = []
@@ -129,12 +169,14 @@ def _wide(records, header, delimiter, path: Path) -> list[Row]:
             if not (names[k + 1] if k + 1 < len(names) else "") and k not in (pos, var) \
                     and split_comma(cells, k, delimiter):
                 _split(cells, k, line_no, path)
+        position = cells[pos].strip() if pos < len(cells) else ""
+        _position_number(position, delimiter, line_no, path, pos)
         for k, name in enumerate(names):
             if k in (pos, var) or k >= len(cells) or not cells[k].strip():
                 continue
-            value = _number(cells[k].strip(), delimiter, line_no, path)
+            value = _number(cells[k].strip(), delimiter, line_no, path, name or "value", k)
             rows.append(Row(line_no, cells[var].strip() if var is not None and var < len(cells) else "",
-                            cells[pos].strip() if pos < len(cells) else "", name, value))
+                            position, name, value))
     return rows
 
 
