@@ -494,11 +494,14 @@ def _roots_variant(st: Study, grid: np.ndarray, curves: list, targets: list[floa
     touched: dict[int, np.ndarray] = {}
     for qi, (_, _, curve, rows) in enumerate(curves):
         rows = np.asarray(rows)
+        # a sample within round-off of the value touches it: the value a quantity takes at an exact
+        # sample, its 0 at a dead centre included (|ω_AB| = 1e-16 at 90° is no "no angle gives 0")
+        tol = 1e-12 * float(np.max(np.abs(curve), initial=0.0))
         for first in range(0, len(rows), chunk):
             part_rows = rows[first:first + chunk]
             part = np.asarray([targets[k] for k in part_rows])
             y = curve[None, :] - part[:, None]
-            sgn = np.sign(y)
+            sgn = np.where(np.abs(y) <= tol, 0.0, np.sign(y))
             row, idx = np.nonzero(sgn[:, :-1] * sgn[:, 1:] < 0)          # row-major: grouped by target
             found_rows.append(part_rows[row])
             found_lo.append(grid[idx])
