@@ -157,7 +157,9 @@ def test_more_divisions_than_the_construction_takes_are_refused_before_the_work(
 
 def test_a_scenes_dynamics_divisions_above_the_bound_are_refused_before_the_work(tmp_path):
     path = scene(tmp_path, SLOTTER.replace("[dynamics]", "[dynamics]\ndivisions = 3600"))
-    ends(["dynamics", path, "--json"], 2, "dynamics.divisions", "from 4 to 360", limit=5.0)
+    ends(["dynamics", path, "--json"], 2, "dynamics.divisions", "from 4 to 360", str(path), limit=5.0)
+    ends(["sheet", path, "--sheet", "dynamics", "-o", tmp_path / "s.svg"], 2, "dynamics.divisions", str(path), limit=5.0)
+    assert not (tmp_path / "s.svg").exists()
 
 
 def six_bar(count: int) -> str:

@@ -358,14 +358,14 @@ def flywheel_classical(c: Cycle, delta: float, omega_mean: float) -> float:
     return brentq(f, lo, hi, xtol=1e-13 * guess, rtol=1e-14, maxiter=200)
 
 
-def check_divisions(n, key: str = "--divisions") -> int:
+def check_divisions(n, key: str = "--divisions", where: str | None = None) -> int:
     """The flywheel construction's divisions asked for explicitly: a whole number within
     bounds.DYNAMICS_DIVISIONS (the construction's cost grows with them; a drawing resolves no more)."""
     from graphplan.model.bounds import DYNAMICS_DIVISIONS
     lo, hi = DYNAMICS_DIVISIONS
     if isinstance(n, bool) or not isinstance(n, int) or not lo <= n <= hi:
         raise GraphplanError(f"{key} must be a whole number from {lo} to {hi} (the construction divides the "
-                             f"turn into at most {hi} parts, 1° each; a drawing resolves no finer), got {n!r}")
+                             f"turn into at most {hi} parts, 1° each; a drawing resolves no finer), got {n!r}", where)
     return n
 
 
@@ -377,7 +377,7 @@ def bounded(st: Study) -> tuple[Study, list[tuple[str, str]]]:
     from graphplan.model.bounds import DYNAMICS_DIVISIONS
     task = st.mech.task
     if "divisions" in task.flywheel:
-        check_divisions(task.flywheel["divisions"], "dynamics.divisions")
+        check_divisions(task.flywheel["divisions"], "dynamics.divisions", st.mech.source)
         return st, []
     hi = DYNAMICS_DIVISIONS[1]
     if task.count <= hi:
