@@ -113,6 +113,14 @@ def test_a_weight_on_a_level_guide_has_no_resistance_moment(tmp_path):
     assert np.max(r.inertia) > 1.0             # the ram's 40 kg still has its inertia
 
 
+def test_a_motors_field_of_200_digits_is_refused_in_one_line(tmp_path):
+    """Found by this round's census: math.isfinite of a 200-digit integer overflowed (every command)."""
+    text = SHAPER.replace("synchronous_rpm = 1500 # the motor", 'motor = { name = "m", power_kW = 30.0, '
+                          'rpm_sync = 1500, rpm_rated = 1460, start_ratio = ' + "7" * 200 + ' }\n'
+                          "synchronous_rpm = 1500 # the motor")
+    ends(["analyze", scene(tmp_path, text), "--json"], 2, "dynamics.motor.start_ratio")
+
+
 # -- 3. a centric crank-slider with a profile bending at its stroke ------------------------------------
 
 R, L = 0.0307491395289921, 0.1359188286656915
