@@ -248,6 +248,151 @@ MALFORMED = st.one_of(
 """Text that is not a scene: binary garbage, random text, broken TOML."""
 
 
+# -- the deterministic families of issue 36: sections removed, the cam's combinations, counts --------
+
+OPTIONAL = ("sheet", "params", "synthesis", "loads", "force", "dynamics", "diagrams", "branch", "positions",
+            "title", "title_en", "designation", "frame.guides", "crank.points", "crank.direction",
+            "positions.accel", "positions.start", "positions.force_phi_deg", "positions.working_stroke",
+            "dynamics.synchronous_rpm", "dynamics.delta", "dynamics.efficiency", "cam.direction",
+            "cam.offset", "cam.roller_radius", "cam.pressure_angle_deg", "cam.laws", "cam.divisions")
+
+
+def _without(tree: dict, dotted: str) -> dict | None:
+    """The tree with the section or key ``dotted`` removed (None when the tree has none)."""
+    import copy
+    parts = dotted.split(".")
+    tree = copy.deepcopy(tree)
+    node = tree
+    for part in parts[:-1]:
+        node = node.get(part) if isinstance(node, dict) else None
+        if not isinstance(node, dict):
+            return None
+    if not isinstance(node, dict) or parts[-1] not in node:
+        return None
+    del node[parts[-1]]
+    return tree
+
+
+def sections_removed() -> list[tuple[str, str]]:
+    """Every example (and the full shaper) with one optional section or key removed, one at a time —
+    the shaper without [loads] and [[force]] together too (issue 36's bracket error)."""
+    out = []
+    trees = [(p.stem, tomllib.loads(p.read_text(encoding="utf-8"))) for p in sorted((ROOT / "examples").glob("*.toml"))]
+    for name, tree in trees + [("full shaper", FULL_TREE)]:
+        for dotted in OPTIONAL:
+            cut = _without(tree, dotted)
+            if cut is not None:
+                out.append((f"{name} without {dotted}", to_toml(cut)))
+    both = _without(_without(trees[[n for n, _ in trees].index("shaper")][1], "loads"), "force")
+    out.append(("shaper without loads and force", to_toml(both)))
+    return out
+
+
+def cam_combinations() -> list[tuple[str, str]]:
+    """Both cam examples in both senses, with the other laws, offsets of both signs and "auto", a
+    knife edge, the pressure angles at the ends of their range and the fewest divisions."""
+    import copy
+    import itertools
+    out = []
+    for stem in ("cam_translating", "cam_rocking"):
+        base = tomllib.loads((ROOT / "examples" / f"{stem}.toml").read_text(encoding="utf-8"))
+        laws = ["parabolic", "cosine", "cycloidal", "linear", "trapezoidal"]
+        extras = ([{"offset": 0.0}, {"offset": -0.005}, {"offset": "auto"}, {"roller_radius": 0.0}]
+                  if base["cam"]["follower"] == "translating" else [{"roller_radius": 0.0}, {"arm": 0.15}])
+        extras += [{"pressure_angle_deg": {"rise": 5, "return": 80}}, {"pressure_angle_deg": 80},
+                   {"divisions": 2}, {}]
+        for sense, law, extra in itertools.product(("cw", "ccw", None), laws, extras):
+            tree = copy.deepcopy(base)
+            if sense is None:
+                tree["cam"].pop("direction", None)
+            else:
+                tree["cam"]["direction"] = sense
+            tree["cam"]["laws"] = {"rise": law, "return": laws[(laws.index(law) + 2) % len(laws)]}
+            tree["cam"].update(extra)
+            out.append((f"{stem} {sense or 'default sense'} {law} {extra}", to_toml(tree)))
+    return out
+
+
+def counts_at_bounds() -> list[tuple[str, str]]:
+    """The examples at the counts the bounds allow: 2 and 3600 positions, 2 and 720 diagram divisions,
+    4 and 360 dynamics divisions."""
+    import copy
+    out = []
+    for stem in ("crank_slider", "four_bar", "shaper", "slotter"):
+        base = tomllib.loads((ROOT / "examples" / f"{stem}.toml").read_text(encoding="utf-8"))
+        for count, divisions, dyn in ((2, 2, 4), (3600, 720, 360), (3600, None, None), (3, None, 4)):
+            tree = copy.deepcopy(base)
+            tree.setdefault("positions", {})["count"] = count
+            tree["positions"]["accel"] = [1] if count > 2 else [0]
+            if divisions is not None:
+                tree.setdefault("diagrams", {})["divisions"] = divisions
+            if dyn is not None and "dynamics" in tree:
+                tree["dynamics"]["divisions"] = dyn
+            out.append((f"{stem} count {count} divisions {divisions} dynamics {dyn}", to_toml(tree)))
+    return out
+
+
+def extras_census(progress: str | None = None) -> dict:
+    """The deterministic families through every command (``cam`` too), tallied as ``census`` does."""
+    import os
+    import tempfile
+    import time
+    families = {"sections": sections_removed(), "cam": cam_combinations(), "counts": counts_at_bounds()}
+    tally: dict = {"scenes": 0, "runs": 0, "exit0": 0, "exit2": 0, "internal": 0, "multiline": 0,
+                   "warnings": 0, "nan_json": 0, "other_exit": 0, "over_30s": 0, "slowest_s": 0.0,
+                   "by_family": {}}
+    failures: list[str] = []
+    folder = tempfile.mkdtemp(prefix="graphplan-fuzz-extra-")
+    path = os.path.join(folder, "scene.toml")
+    start = time.perf_counter()
+    for family, scenes in families.items():
+        tally["by_family"][family] = {"scenes": len(scenes), "internal": 0, "exit0": 0, "exit2": 0}
+        for name, text in scenes:
+            tally["scenes"] += 1
+            Path(path).write_text(text, encoding="utf-8")
+            commands = ("cam", "analyze") if family == "cam" else COMMANDS
+            for command in commands:
+                argv = [command, path, "--json"]
+                t0 = time.perf_counter()
+                code, out, err = run(argv)
+                took = time.perf_counter() - t0
+                tally["runs"] += 1
+                tally["slowest_s"] = round(max(tally["slowest_s"], took), 2)
+                problem = None
+                if took > 30:
+                    tally["over_30s"] += 1
+                    problem = f"{took:.0f} s"
+                if "internal error" in err:
+                    tally["internal"] += 1
+                    tally["by_family"][family]["internal"] += 1
+                    problem = "internal"
+                elif code not in (0, 2):
+                    tally["other_exit"] += 1
+                    problem = f"exit {code}"
+                elif "Warning" in err:
+                    tally["warnings"] += 1
+                    problem = "warning"
+                elif code == 2 and len(err.splitlines()) != 1:
+                    tally["multiline"] += 1
+                    problem = "multiline"
+                else:
+                    tally[f"exit{code}"] += 1
+                    tally["by_family"][family][f"exit{code}"] += 1
+                    if code == 0:
+                        try:
+                            json.loads(out, parse_constant=_no_constant)
+                        except AssertionError:
+                            tally["nan_json"] += 1
+                            problem = "NaN in JSON"
+                if problem:
+                    failures.append(f"{problem}: {command} {name}: {err.strip()[:160]}")
+            if progress:
+                tally["seconds"] = round(time.perf_counter() - start, 1)
+                Path(progress).write_text(json.dumps({"tally": tally, "failures": failures}, indent=1))
+    tally["seconds"] = round(time.perf_counter() - start, 1)
+    return {"tally": tally, "failures": failures}
+
+
 # -- the release count (docs/benchmarks.md): python tests/fuzz_scenes.py N ------------------------
 
 COMMANDS = ("analyze", "plans", "diagrams", "forces", "dynamics")
@@ -346,6 +491,9 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
 if __name__ == "__main__":
     import sys
     sys.path.insert(0, str(Path(__file__).resolve().parent))
+    if len(sys.argv) > 1 and sys.argv[1] == "extras":     # python tests/fuzz_scenes.py extras [PROGRESS.json]
+        print(json.dumps(extras_census(sys.argv[2] if len(sys.argv) > 2 else None), ensure_ascii=False, indent=1))
+        sys.exit(0)
     result = census(int(sys.argv[1]) if len(sys.argv) > 1 else 1000,
                     progress=sys.argv[2] if len(sys.argv) > 2 else None)
     print(json.dumps(result, ensure_ascii=False, indent=1))

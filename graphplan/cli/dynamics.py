@@ -26,8 +26,8 @@ def register(sub) -> None:
     p.add_argument("--precision", type=float, default=0.5, metavar="MM",
                    help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
     p.add_argument("--divisions", type=int, metavar="N",
-                   help="divisions of the turn on the diagrams (default: the scene's [dynamics] divisions, "
-                        "else its number of positions)")
+                   help="divisions of the turn on the diagrams, 4 to 360 (default: the scene's [dynamics] "
+                        "divisions, else its number of positions, at most 360)")
     p.add_argument("--format", default="A1", metavar="A1",
                    help="report the construction (L, scales, H) the dynamics sheet of this format draws: "
                         "A1 (default), A2, A3")
@@ -40,15 +40,15 @@ def register(sub) -> None:
 
 def cmd_dynamics(args: argparse.Namespace) -> int:
     from graphplan.cli.common import dumps, lang_arg, lang_of, load_study
-    from graphplan.exact.dynamics import analyse, check_delta
+    from graphplan.exact.dynamics import analyse, check_delta, check_divisions
     from graphplan.graphic.flywheel import construct
     from graphplan.report.dynamics import dynamics_json, dynamics_table
     if not math.isfinite(args.precision) or args.precision < 0:
         raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {args.precision:g}")
     if args.delta is not None:
         check_delta(args.delta)
-    if args.divisions is not None and not 4 <= args.divisions <= 3600:
-        raise GraphplanError(f"--divisions must be a whole number from 4 to 3600, got {args.divisions}")
+    if args.divisions is not None:
+        check_divisions(args.divisions)
     st = load_study(args.scene)
     try:
         dyn = analyse(st, args.delta)

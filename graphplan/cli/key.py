@@ -379,13 +379,12 @@ def _override_columns(table) -> set[str]:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from graphplan.cli.main import dumps
-    from graphplan.teach.grading import grade, load_keys, read_student, report_json, report_table
+    from graphplan.teach.grading import grade, load_keys, read_student, report_table, write_json
     keys = load_keys(args.key)
     rows = read_student(args.student)
     graded = grade(keys, rows, signed=args.signed)
     if args.json:
-        sys.stdout.write(dumps(report_json(graded, args.key, args.student, args.signed)))
+        write_json(sys.stdout, graded, args.key, args.student, args.signed)
     else:
         sys.stdout.write(report_table(graded, args.key, args.student, lang_of(args)))
     return 0

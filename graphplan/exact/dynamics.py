@@ -103,8 +103,13 @@ def inertia_terms(st: Study, kin: Kinematics) -> tuple[Array, Array]:
 def resistance(st: Study, kin: Kinematics, working: Array) -> Array:
     """M*_c = −(P_G + P_F)/|ω1|: the power of gravity and of the external forces (kinetostatics'
     loads, their strokes and profiles) reduced to the crank; positive where it resists."""
-    power = sum((ld.power for ld in loads(st, kin, working) if ld.kind in ("gravity", "external")),
+    acting = [ld for ld in loads(st, kin, working) if ld.kind in ("gravity", "external")]
+    power = sum((ld.power for ld in acting), np.zeros(kin.phi_deg.shape))
+    # the loads' gross power Σ|F|·|v| + |M|·|ω| is the scale of the sum: a weight on a level guide
+    # gives F·v ~ 1e-16 of it, round-off, not a resistance (it made A_c ~ 1e-17 J and a bracket error)
+    gross = sum((np.abs(ld.force) * np.abs(ld.velocity) + np.abs(ld.couple * ld.omega) for ld in acting),
                 np.zeros(kin.phi_deg.shape))
+    power = np.where(np.abs(power) <= 1e-12 * float(np.max(gross, initial=0.0)), 0.0, power)
     return -power / abs(st.mech.omega1)
 
 
@@ -301,7 +306,8 @@ def _sample(c: Cycle, sols) -> tuple[Array, Array]:
     idx = np.clip(np.searchsorted(c.breaks, turn, side="right") - 1, 0, len(sols) - 1)
     for k, sol in enumerate(sols):
         sel = idx == k
-        values[sel] = sol.sol(turn[sel])[0]
+        if np.any(sel):            # a piece shorter than a sample step holds none (scipy fails on none)
+            values[sel] = sol.sol(turn[sel])[0]
     return turn, values
 
 
@@ -350,6 +356,38 @@ def flywheel_classical(c: Cycle, delta: float, omega_mean: float) -> float:
     while f(hi) > 0:
         hi *= 4.0
     return brentq(f, lo, hi, xtol=1e-13 * guess, rtol=1e-14, maxiter=200)
+
+
+def check_divisions(n, key: str = "--divisions", where: str | None = None) -> int:
+    """The flywheel construction's divisions asked for explicitly: a whole number within
+    bounds.DYNAMICS_DIVISIONS (the construction's cost grows with them; a drawing resolves no more)."""
+    from graphplan.model.bounds import DYNAMICS_DIVISIONS
+    lo, hi = DYNAMICS_DIVISIONS
+    if isinstance(n, bool) or not isinstance(n, int) or not lo <= n <= hi:
+        raise GraphplanError(f"{key} must be a whole number from {lo} to {hi} (the construction divides the "
+                             f"turn into at most {hi} parts, 1° each; a drawing resolves no finer), got {n!r}", where)
+    return n
+
+
+def bounded(st: Study) -> tuple[Study, list[tuple[str, str]]]:
+    """The study the dynamics works on, and its note: the scene's [dynamics] divisions must lie
+    within bounds.DYNAMICS_DIVISIONS (refused before any work); without them the construction
+    divides the turn at the positions — a positions.count above the bound (the kinematics takes up
+    to 3600) is clamped to it with a note, as the exact integration needs no positions at all."""
+    from graphplan.model.bounds import DYNAMICS_DIVISIONS
+    task = st.mech.task
+    if "divisions" in task.flywheel:
+        check_divisions(task.flywheel["divisions"], "dynamics.divisions", st.mech.source)
+        return st, []
+    hi = DYNAMICS_DIVISIONS[1]
+    if task.count <= hi:
+        return st, []
+    task = replace(task, flywheel={**task.flywheel, "divisions": hi})
+    note = (f"positions.count = {st.mech.task.count}: the flywheel construction divides the turn into {hi} "
+            f"parts (1° each; a drawing resolves no finer) — set [dynamics] divisions for fewer",
+            f"positions.count = {st.mech.task.count}: побудова маховика ділить оберт на {hi} частин (по 1°; "
+            f"креслення тонше не розрізняє) — менше задайте в [dynamics] divisions")
+    return replace(st, mech=replace(st.mech, task=task)), [note]
 
 
 def check_delta(delta: float) -> None:
@@ -584,6 +622,7 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     else 0.04."""
     delta = float(st.mech.task.flywheel.get("delta", 0.04)) if delta is None else delta
     check_delta(delta)
+    st, notes = bounded(st)
     c = cycle(st)
     wm = abs(st.mech.omega1)
     dr = drive(st, c)
@@ -593,7 +632,7 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     fm = flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
     mm = motor_motion(c, dr, fm)
     carries(dr, mm)
-    warnings = list(dr.warnings)
+    warnings = list(dr.warnings) + notes
     const = dr.rotor_reduced + dr.reducer_reduced
     if total <= const:
         warnings.append((f"the rotor and the reducer ({const:.4g} kg·m²) exceed the inertia δ = {delta:g} needs "

@@ -10,6 +10,7 @@ size, and the text that ends up in a drawing (no control characters: an SVG must
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 import unicodedata
 from dataclasses import dataclass
@@ -69,6 +70,8 @@ ABSCISSA_MM = Range(10.0, 2000.0, "mm")              # the diagrams' L
 POLE_MM = Range(1.0, 1000.0, "mm")                   # H1, H2
 COUNT = (2, 3600)                                    # positions of a turn
 DIVISIONS = (2, 720)                                 # the diagrams' intervals
+DYNAMICS_DIVISIONS = (4, 360)                        # the flywheel construction's divisions: 1° each at
+                                                     # most (L ≈ 250 mm: 0.7 mm a division, the ruler's 0.5 mm)
 
 
 def check(value: float, bounds: Range, key: str, where: str) -> float:
@@ -145,3 +148,87 @@ def check_tree(data: Any, where: str) -> None:
             stack.extend((v, depth + 1) for v in node.values())
         elif isinstance(node, list):
             stack.extend((v, depth + 1) for v in node)
+
+
+# -- numbers in tables: one reader for variant tables (key) and students' tables (check) --------------
+
+MAX_CELL_VALUE = 1e12                 # no number of a lab's table is larger (SI units)
+_GROUPING = "\u0020\u00a0\u202f\u2009"   # spaces between thousands: space, no-break, narrow no-break, thin
+_MINUSES = "\u2212\u2012\u2013\ufe63\uff0d"   # minus sign, figure dash, en dash, small/full-width
+_PLAIN = re.compile(r"^[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?$")
+_GROUPED = re.compile(r"^[+-]?\d{1,3}([ ]\d{3})+([.,]\d*)?$")
+_THOUSANDS_COMMA = re.compile(r"^[+-]?[1-9]\d{0,2}(,\d{3})+$")   # 1,234: a decimal comma or thousands?
+_THOUSANDS_DOT = re.compile(r"^[+-]?[1-9]\d{0,2}(\.\d{3})+$")   # 5.351: a decimal point or thousands?
+_RADIX = re.compile(r"^[+-]?0[xXoObB]")
+_WORDS = re.compile(r"^[+-]?(inf|infinity|nan)$", re.IGNORECASE)
+_NUMERIC = re.compile(r"^[+-]?[.,]?\d[\w.,+-]*$")
+_TOKEN = re.compile(r"(?<![\w.])\.?\d(?:[\w.]|(?<=[eE])[+-])*")
+_QUOTED = re.compile(r"\"(?:[^\"\\]|\\.)*\"|'[^']*'")
+
+
+def _normal(text: str) -> str:
+    s = text.strip()
+    for m in _MINUSES:
+        s = s.replace(m, "-")
+    return s
+
+
+def numeric_like(text: str) -> bool:
+    """Whether a table's cell is meant as a number (then ``read_number`` reads it or says why not):
+    digits with signs, points, commas, exponents, letters (0x10, 2r), thousands spaces (5 346,1),
+    inf and nan — not an expression (0.7 * rocker), a list or a word."""
+    s = _normal(text)
+    if _WORDS.match(s) or _NUMERIC.match(s):
+        return True
+    return any(c in s for c in _GROUPING) and bool(_GROUPED.match(re.sub(f"[{_GROUPING}]", " ", s)))
+
+
+def read_number(text: str, delimiter: str) -> int | float:
+    """A table's number as a person writes it — "−52.7", "5 346,1", "7,2" (where the comma is not
+    the separator, or the cell was quoted), "1e-3" — by one rule for every table (variants, students'):
+    an integer's text gives an int. ValueError with the reason for what cannot be read unambiguously:
+    hexadecimal, octal and binary literals (0x10), '_' (7_2), inf and nan, "1,234" in a ','
+    table, "5.351" in a ';' or tab table (a decimal point or thousands?), both a point and a comma,
+    |value| > 10¹², and a value that underflows to 0 (1e-400)."""
+    s = _normal(text)
+    if _RADIX.match(s):
+        raise ValueError("a hexadecimal, octal or binary literal: write the number in decimal digits")
+    if "_" in s:
+        raise ValueError("write numbers without '_' (7_2 is not 72)")
+    if _WORDS.match(s):
+        raise ValueError("not a finite number")
+    if any(c in s for c in _GROUPING):
+        s = re.sub(f"[{_GROUPING}]", " ", s)
+        if not _GROUPED.match(s):
+            raise ValueError("spaces only between groups of three digits (5 346,1)")
+        s = s.replace(" ", "")
+    if "," in s:
+        if "." in s:
+            raise ValueError("both a decimal point and a comma: write 5346.1 or 5346,1")
+        if delimiter == "," and _THOUSANDS_COMMA.match(s):
+            raise ValueError("is the comma a decimal comma or between thousands? write 1.234 or 1234")
+        if s.count(",") > 1:
+            raise ValueError("more than one decimal comma")
+        s = s.replace(",", ".")
+    elif delimiter in (";", "\t") and _THOUSANDS_DOT.match(s):
+        raise ValueError("is the dot a decimal point or between thousands? in a ';' or tab-separated "
+                         "table write 5,351 or 5351")
+    if not _PLAIN.match(s):
+        raise ValueError("not a number")
+    value = float(s)
+    if not abs(value) <= MAX_CELL_VALUE:
+        raise ValueError(f"|value| ≤ {MAX_CELL_VALUE:g}")
+    if value == 0.0 and re.search(r"[1-9]", s.split("e")[0].split("E")[0]):
+        raise ValueError("too small: it underflows to 0")
+    return int(s) if re.fullmatch(r"[+-]?\d+", s) else value
+
+
+def check_numbers_in(text: str, delimiter: str) -> None:
+    """Every number written inside a cell that is not itself a number (an expression such as
+    ``0.7 * rocker``, a list ``[0, 0.5]``), outside its quoted strings, read by ``read_number``'s
+    rule: ValueError for 0x10, 7_2, 1e-400 … there too."""
+    for token in _TOKEN.findall(_QUOTED.sub(" ", text)):
+        try:
+            read_number(token, ",")           # the cell's own commas separate its items
+        except ValueError as exc:
+            raise ValueError(f"{token[:30]!r}: {exc}") from None

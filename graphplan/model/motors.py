@@ -130,8 +130,8 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
                   "omega_sync", "omega_rated"):
         if field in raw:
             v, (lo, hi, unit) = raw[field], _RANGES[field]
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) \
-                    or not (lo <= v <= hi) or (v == 0 and field != "inertia"):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (lo <= v <= hi) \
+                    or not math.isfinite(v) or (v == 0 and field != "inertia"):    # a 200-digit int: no float()
                 shown = repr(v) if isinstance(v, (int, float, str)) else type(v).__name__
                 raise GraphplanError(f"{key}.{field}: must be a {'positive ' if field != 'inertia' else ''}"
                                      f"number up to {hi:g} {unit}, got {shown[:40]}", where)

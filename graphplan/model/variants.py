@@ -1,6 +1,7 @@
 """A group's variants: one row per student over a base scene, each row overriding a few numbers.
 
-The table is CSV (``,`` ``;`` or tab separated; with ``;`` or tab a decimal comma is accepted) or TOML.
+The table is CSV (``,`` ``;`` or tab separated; a decimal comma where the comma is not the separator,
+or quoted) or TOML; its numbers are read as a student's table's are (model.bounds.read_number).
 Directives in ``#`` lines above the CSV header (``# base = crank_slider.toml``) or top-level TOML keys
 set the defaults; the ``variant`` column names each row. Columns override the base scene's tree:
 a ``[params]`` name, a shorthand (``rpm``, ``K``, ``accel`` …) or a dotted path (``crank.length``,
@@ -35,7 +36,6 @@ SHORTHAND = {"rpm": "crank", "omega": "crank", "direction": "crank", "epsilon": 
              "count": "positions", "start": "positions", "accel": "positions", "output": "positions"}
 _DIRECTIVE = re.compile(r"^#\s*([A-Za-z_][\w.*?\[\]]*)\s*=\s*(.*?)\s*$")
 _ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
-_NUMBER = re.compile(r"^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$")
 
 
 @dataclass
@@ -82,17 +82,23 @@ def tolerance_for(quantity: str, *layers: dict[str, float]) -> float:
     return DEFAULT_TOLERANCE
 
 
-def parse_cell(text: str, decimal_comma: bool = False) -> Any:
-    """A cell's value: a number, a TOML value (``[0, 0.5]``, ``"text"``, ``true``), else the text
-    itself (an expression such as ``0.7 * rocker`` or a word such as ``ccw``)."""
+def parse_cell(text: str, delimiter: str = ";") -> Any:
+    """A cell's value: a number (read by model.bounds.read_number, the one reader of every table's
+    numbers: students' tables too), a TOML value (``[0, 0.5]``, ``"text"``, ``true``), else the text
+    itself (an expression such as ``0.7 * rocker`` or a word such as ``ccw``). ValueError with the
+    reason for a number that cannot be read for sure (0x10, 7_2, 1e-400, "2.800" in a ';' table),
+    also inside an expression or a list."""
+    from graphplan.model.bounds import check_numbers_in, numeric_like, read_number
     text = text.strip()
-    if _NUMBER.match(text):
-        if "," in text and not decimal_comma:
-            raise ValueError(f"{text!r}: a decimal comma needs a ';' separated table")
-        text = text.replace(",", ".")
-        return int(text) if re.fullmatch(r"[+-]?\d+", text) else float(text)
-    if "_" in text and re.fullmatch(r"[+-]?[\d_]+([.,][\d_]*)?([eE][+-]?[\d_]+)?", text):
-        raise ValueError(f"{text!r}: write numbers without '_' (7_2 is not 72)")
+    if numeric_like(text):
+        try:
+            return read_number(text, delimiter)
+        except ValueError as exc:
+            raise ValueError(f"{text[:30]!r}: {exc}") from None
+    try:
+        check_numbers_in(text, delimiter)
+    except ValueError as exc:
+        raise ValueError(f"{text[:30]!r}: {exc}") from None
     try:
         return tomllib.loads(f"v = {text}")["v"]
     except (tomllib.TOMLDecodeError, RecursionError, ValueError):
@@ -122,7 +128,7 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
             m = _DIRECTIVE.match(stripped)
             if m:
                 try:
-                    directives[m.group(1)] = parse_cell(m.group(2), decimal_comma=True)
+                    directives[m.group(1)] = parse_cell(m.group(2), ";")
                 except ValueError as exc:
                     raise GraphplanError(f"line {n + 1}: {exc}", str(path)) from None
             continue
@@ -152,7 +158,7 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
                 row[name] = cell.strip()
                 continue
             try:
-                row[name] = parse_cell(cell, decimal_comma=delimiter != ",")
+                row[name] = parse_cell(cell, delimiter)
             except ValueError as exc:
                 raise GraphplanError(f"line {line_no}, column {name}: {exc}", str(path)) from None
         rows.append((line_no, row))
@@ -180,6 +186,7 @@ def _toml_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]],
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise GraphplanError(f"TOML syntax error: {exc}", str(path)) from None
+    _toml_numbers(text, path)
     raw = data.pop("variant", None)
     if not isinstance(raw, list) or not raw:
         raise GraphplanError("the table needs [[variant]] entries", str(path))
@@ -203,6 +210,28 @@ def _toml_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]],
             row["variant"] = str(row["variant"])
         rows.append((k, row))
     return rows, directives
+
+
+_TOML_STRING = re.compile(r'"""[\s\S]*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\\\n]|\\\\.)*"|\'[^\'\n]*\'')
+_TOML_WORDS = re.compile(r"(?<![\w.])[+-]?(inf|nan)(?![\w.])")
+
+
+def _toml_numbers(text: str, path: Path) -> None:
+    """A TOML variant table's numbers by the rule of the CSV's and the students' tables
+    (model.bounds.read_number): TOML itself reads 0x10, 0o7000, 0b101, 1_000, inf, nan and 1e-400
+    (as 0) — each is refused here, naming the line, as it is in a CSV cell."""
+    from graphplan.model.bounds import check_numbers_in
+    blanked = _TOML_STRING.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)   # keeps the lines
+    for n, line in enumerate(blanked.split("\n"), 1):
+        line = line.split("#", 1)[0]
+        key, value = line.split("=", 1) if "=" in line else ("", line)
+        try:
+            if _TOML_WORDS.search(value):
+                raise ValueError(f"{_TOML_WORDS.search(value).group(0).strip()!r}: not a finite number")
+            check_numbers_in(value, ",")
+        except ValueError as exc:
+            where = f", {key.strip()}" if key.strip() else ""
+            raise GraphplanError(f"line {n}{where}: {exc}", str(path)) from None
 
 
 def _percent(value: Any, where: str, path: Path) -> float:

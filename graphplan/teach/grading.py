@@ -29,7 +29,7 @@ MAX_KEY_BYTES = 64 * 1024 * 1024   # a key of 3600 positions is a few MB
 ABS_FLOOR = 1e-12       # SI: a floor for quantities that are zero over the whole turn
 
 
-@dataclass
+@dataclass(slots=True)
 class Row:
     """One line of the student's table."""
     line: int
@@ -39,7 +39,7 @@ class Row:
     value: float | None
 
 
-@dataclass
+@dataclass(slots=True)
 class Graded:
     """A graded row: the exact value, the error and the verdict, and where the value fits."""
     row: Row
@@ -75,11 +75,15 @@ def read_student(path: str | Path) -> list[Row]:
     """A long table with the columns position, quantity, value (and variant); ``,`` ``;`` or tab
     separated; the encodings, decimal commas, minus signs and thousands spaces a person's
     spreadsheet writes (teach.tables). Other columns are ignored. A table without a ``quantity``
-    column is read as a wide one (see ``_wide``)."""
+    column is read as a wide one (see ``_wide``). The columns are found by their names in any order;
+    a name given twice is refused, and so is a decimal comma split across cells wherever the value
+    column stands ("7,2" read as 7 and a variant or position 2). Values and positions are read by the
+    one reader of every table's numbers (model.bounds.read_number)."""
     from graphplan.teach.tables import read_rows, split_comma
     path = Path(path)
     records, delimiter = read_rows(path)
     header = [h.strip().lower() for h in records[0][1]]
+    _no_twice(header, path)
     if "quantity" not in header:
         return _wide(records, header, delimiter, path)
     for need in ("position", "value"):
@@ -87,40 +91,76 @@ def read_student(path: str | Path) -> list[Row]:
             raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
                                  f"(missing {need!r})", str(path))
     col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
-    used = set(col.values())
     rows = []
     for line_no, cells in records[1:]:
         def cell(name: str) -> str:
             k = col.get(name)
             return cells[k].strip() if k is not None and k < len(cells) else ""
-        if "value" in col and split_comma(cells, col["value"], delimiter) and col["value"] + 1 not in used:
+        if split_comma(cells, col["value"], delimiter):
             _split(cells, col["value"], line_no, path)
-        value = _number(cell("value"), delimiter, line_no, path)
-        rows.append(Row(line_no, cell("variant"), cell("position"), cell("quantity"), value))
+        value = _number(cell("value"), delimiter, line_no, path, "value", col["value"])
+        position = cell("position")
+        _position_number(position, delimiter, line_no, path, col["position"])
+        rows.append(Row(line_no, cell("variant"), position, cell("quantity"), value))
     return rows
 
 
-def _number(text: str, delimiter: str, line_no: int, path: Path) -> float | None:
+def _no_twice(header: list[str], path: Path) -> None:
+    for name in ("variant", "position", "quantity", "value"):
+        if header.count(name) > 1:
+            raise GraphplanError(f"line 1: the column {name!r} appears twice (columns "
+                                 f"{', '.join(str(k + 1) for k, h in enumerate(header) if h == name)}); "
+                                 "keep one", str(path))
+
+
+def _number(text: str, delimiter: str, line_no: int, path: Path, column: str = "value",
+            k: int | None = None) -> float | None:
     from graphplan.teach.tables import number
     if not text:
         return None
     try:
         return number(text, delimiter)
     except ValueError as exc:
-        raise GraphplanError(f"line {line_no}: value {text[:30]!r}: {exc}", str(path)) from None
+        raise GraphplanError(f"line {line_no}: {column} {text[:30]!r}{_at(k)}: {exc}", str(path)) from None
+
+
+def _at(k: int | None) -> str:
+    return f" (column {k + 1})" if k is not None else ""
+
+
+def _position_number(text: str, delimiter: str, line_no: int, path: Path, k: int | None = None) -> None:
+    """A position written as a number is read by the same rule as a value (1e-400 is not position 0);
+    a word stays for the grading to call unknown."""
+    from graphplan.model.bounds import numeric_like, read_number
+    bare = text.lstrip("#")
+    if bare and numeric_like(bare):
+        try:
+            read_number(bare, delimiter)
+        except ValueError as exc:
+            raise GraphplanError(f"line {line_no}: position {text[:30]!r}{_at(k)}: {exc}",
+                                 str(path)) from None
 
 
 def _split(cells: list[str], k: int, line_no: int, path: Path) -> None:
-    raise GraphplanError(f"line {line_no}: {cells[k].strip()!r} and then {cells[k + 1].strip()[:12]!r} — a decimal "
+    raise GraphplanError(f"line {line_no}: {cells[k].strip()!r} and then {cells[k + 1].strip()[:12]!r} (columns {k + 1} "
+                         f"and {k + 2}) — a decimal "
                          "comma split across cells? Write the number with a point, quote it (\"11,09\") or "
                          "separate the table with ';'", str(path))
 
 
 def _wide(records, header, delimiter, path: Path) -> list[Row]:
     """A wide table (as a lab's sheet prints it): a position column — named ``position``, else the
-    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped."""
-    pos = header.index("position") if "position" in header else 0
+    first — and one column per quantity; optionally a ``variant`` column. Empty cells are skipped.
+    A table whose first column is the variant and which names no position column is refused (the
+    variant is no position)."""
     var = header.index("variant") if "variant" in header else None
+    if "position" in header:
+        pos = header.index("position")
+    elif var == 0:
+        raise GraphplanError("line 1: the table has no position column (its first column is the variant): "
+                             "name the positions' column 'position'", str(path))
+    else:
+        pos = 0
     from graphplan.teach.tables import split_comma
     names = [h.strip() for h in records[0][1]]
     rows = []
@@ -129,12 +169,14 @@ def _wide(records, header, delimiter, path: Path) -> list[Row]:
             if not (names[k + 1] if k + 1 < len(names) else "") and k not in (pos, var) \
                     and split_comma(cells, k, delimiter):
                 _split(cells, k, line_no, path)
+        position = cells[pos].strip() if pos < len(cells) else ""
+        _position_number(position, delimiter, line_no, path, pos)
         for k, name in enumerate(names):
             if k in (pos, var) or k >= len(cells) or not cells[k].strip():
                 continue
-            value = _number(cells[k].strip(), delimiter, line_no, path)
+            value = _number(cells[k].strip(), delimiter, line_no, path, name or "value", k)
             rows.append(Row(line_no, cells[var].strip() if var is not None and var < len(cells) else "",
-                            cells[pos].strip() if pos < len(cells) else "", name, value))
+                            position, name, value))
     return rows
 
 
@@ -358,15 +400,16 @@ def _grade_row(var: _Variant, row: Row, signed: bool, pending: list | None = Non
 
 def _explain_all(pending: list) -> None:
     """Search the turn for the crank angles where each failed row's quantity takes the student's
-    value. Rows of the same variant, quantity and sign share one tabulation of the turn and one
-    bisection: every bracket of every row is refined together, 45 vectorised solves a group, so a
-    faculty's 100 000 rows cost what a few hundred groups do (was 45 solves a row)."""
-    groups: dict[tuple[int, str, bool], list] = {}
+    value. The rows of one variant share one solution of the turn's grid (every quantity read off
+    it) and one bisection of all their brackets, whatever the quantity: 45 vectorised solves a
+    variant, so a faculty's 100 000 rows over hundreds of variants and every quantity cost what a few
+    hundred variants do (was 46 solves a variant and quantity, 45 solves a row before that)."""
+    by_variant: dict[int, list] = {}
     for item in pending:
-        var, _, name, _, _, _, signed = item
-        groups.setdefault((id(var), name, signed), []).append(item)
-    for items in groups.values():
-        var, _, name, _, _, _, signed = items[0]
+        by_variant.setdefault(id(item[0]), []).append(item)
+    grid = np.arange(SEARCH_GRID + 1) * 360.0 / SEARCH_GRID
+    for items in by_variant.values():
+        var = items[0][0]
         try:
             st = var.study()
         except NoScene:
@@ -375,20 +418,22 @@ def _explain_all(pending: list) -> None:
             for _, g, *_ in items:
                 g.add(said("grade key no scene"))
             continue
-        q = var.quantity(name)
-
-        def f(phi: np.ndarray) -> np.ndarray:
-            y = q(st.solve(phi))
-            return y if signed else np.abs(y)
-        grid = np.arange(SEARCH_GRID + 1) * 360.0 / SEARCH_GRID
-        curve = f(grid)
-        lo_v, hi_v = float(np.min(curve)), float(np.max(curve))
-        size = max(abs(lo_v), abs(hi_v))
-        lo_v, hi_v = (0.0 if abs(v) < 1e-12 * size else v for v in (lo_v, hi_v))   # round-off is 0
-        targets = np.array([value if signed else abs(value) for *_, value, _ in items])
-        roots = _roots_many(f, grid, curve, targets)
-        for item, found in zip(items, roots):
-            _explain(item, st, found, lo_v, hi_v)
+        kin = st.solve(grid)
+        groups: dict[tuple[str, bool], list[int]] = {}
+        for k, (_, _, name, _, _, _, signed) in enumerate(items):
+            groups.setdefault((name, signed), []).append(k)
+        curves, span = [], {}
+        for name, signed in groups:
+            y = var.quantity(name)(kin)
+            curve = y if signed else np.abs(y)
+            lo_v, hi_v = float(np.min(curve)), float(np.max(curve))
+            size = max(abs(lo_v), abs(hi_v))
+            span[name, signed] = tuple(0.0 if abs(v) < 1e-12 * size else v for v in (lo_v, hi_v))  # round-off is 0
+            curves.append((var.quantity(name), signed, curve, groups[name, signed]))
+        roots = _roots_variant(st, grid, curves, [value if signed else abs(value)
+                                                  for *_, value, signed in items])
+        for k, item in enumerate(items):
+            _explain(item, st, roots[k], *span[item[2], item[6]])
 
 
 def _explain(item: tuple, st: Study, roots: np.ndarray, lo_v: float, hi_v: float) -> None:
@@ -441,35 +486,64 @@ def _explain(item: tuple, st: Study, roots: np.ndarray, lo_v: float, hi_v: float
                    turn=Fixed(float(turns[k]), 1), there=float(there_cmp), claimed=g.row.position))
 
 
-def _roots_many(f, grid: np.ndarray, curve: np.ndarray, targets: np.ndarray,
-                chunk: int = 2000) -> list[np.ndarray]:
-    """For each target, the crank angles where f − target changes sign on the grid (or touches
-    zero), refined by bisection to ~1e-9° — the brackets of ``chunk`` targets at a time together
-    (one solve a step; a chunk's sign table is chunk × grid)."""
-    out: list[np.ndarray] = []
-    for first in range(0, len(targets), chunk):
-        part = targets[first:first + chunk]
-        y = curve[None, :] - part[:, None]
-        s = np.sign(y)
-        row, idx = np.nonzero(s[:, :-1] * s[:, 1:] < 0)          # row-major: grouped by target
-        lo, hi = grid[idx].copy(), grid[idx + 1].copy()
-        if len(idx):
-            f_lo = y[row, idx].copy()
-            goal = part[row]
-            for _ in range(45):
-                mid = 0.5 * (lo + hi)
-                f_mid = f(mid) - goal
-                left = np.sign(f_mid) == np.sign(f_lo)
-                lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-                hi = np.where(left, hi, mid)
-        mids = 0.5 * (lo + hi)
-        bounds = np.searchsorted(row, np.arange(len(part) + 1))
-        touch_row, touch_idx = np.nonzero(s[:, :-1] == 0)
-        touch_bounds = np.searchsorted(touch_row, np.arange(len(part) + 1))
-        for k in range(len(part)):
-            roots = np.concatenate([mids[bounds[k]:bounds[k + 1]],
-                                    grid[touch_idx[touch_bounds[k]:touch_bounds[k + 1]]]]) % 360.0
-            out.append(np.unique(np.round(roots, 9)))
+def _roots_variant(st: Study, grid: np.ndarray, curves: list, targets: list[float],
+                   chunk: int = 500) -> list[np.ndarray]:
+    """For each target (row k), the crank angles where its quantity − target changes sign on the
+    grid (or touches zero), refined by bisection to ~1e-9°. ``curves``: (quantity, signed, its values
+    on the grid, the rows it serves). The sign tables are built ``chunk`` rows at a time (chunk ×
+    grid, bounded memory); the brackets of every row and quantity are then refined together, one
+    solve of the mechanism a step."""
+    out: list[np.ndarray] = [np.empty(0)] * len(targets)
+    found_rows, found_lo, found_hi, found_flo, found_goal, found_q = [], [], [], [], [], []
+    touched: dict[int, np.ndarray] = {}
+    for qi, (_, _, curve, rows) in enumerate(curves):
+        rows = np.asarray(rows)
+        # a sample within round-off of the value touches it: the value a quantity takes at an exact
+        # sample, its 0 at a dead centre included (|ω_AB| = 1e-16 at 90° is no "no angle gives 0")
+        tol = 1e-12 * float(np.max(np.abs(curve), initial=0.0))
+        for first in range(0, len(rows), chunk):
+            part_rows = rows[first:first + chunk]
+            part = np.asarray([targets[k] for k in part_rows])
+            y = curve[None, :] - part[:, None]
+            sgn = np.where(np.abs(y) <= tol, 0.0, np.sign(y))
+            row, idx = np.nonzero(sgn[:, :-1] * sgn[:, 1:] < 0)          # row-major: grouped by target
+            found_rows.append(part_rows[row])
+            found_lo.append(grid[idx])
+            found_hi.append(grid[idx + 1])
+            found_flo.append(y[row, idx])
+            found_goal.append(part[row])
+            found_q.append(np.full(len(row), qi))
+            touch_row, touch_idx = np.nonzero(sgn[:, :-1] == 0)
+            for r, i in zip(part_rows[touch_row], touch_idx):
+                touched.setdefault(int(r), [])
+                touched[int(r)].append(grid[i])
+    rows_of = np.concatenate(found_rows) if found_rows else np.empty(0, int)
+    lo = np.concatenate(found_lo) if found_lo else np.empty(0)
+    hi = np.concatenate(found_hi) if found_hi else np.empty(0)
+    if len(lo):
+        f_lo = np.concatenate(found_flo)
+        goal = np.concatenate(found_goal)
+        which = np.concatenate(found_q)
+        sel = [(np.nonzero(which == qi)[0], q, signed) for qi, (q, signed, _, _) in enumerate(curves)]
+        sel = [x for x in sel if len(x[0])]
+        f_mid = np.empty(len(lo))
+        for _ in range(45):
+            mid = 0.5 * (lo + hi)
+            kin = st.solve(mid)
+            for at, q, signed in sel:
+                y = q(kin)[at]
+                f_mid[at] = (y if signed else np.abs(y)) - goal[at]
+            left = np.sign(f_mid) == np.sign(f_lo)
+            lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
+            hi = np.where(left, hi, mid)
+    mids = 0.5 * (lo + hi)
+    order = np.argsort(rows_of, kind="stable")
+    bounds = np.searchsorted(rows_of[order], np.arange(len(targets) + 1))
+    for k in range(len(targets)):
+        roots = mids[order[bounds[k]:bounds[k + 1]]]
+        if k in touched:
+            roots = np.concatenate([roots, np.asarray(touched[k])])
+        out[k] = np.unique(np.round(roots % 360.0, 9))
     return out
 
 
@@ -498,6 +572,25 @@ def summary(graded: list[Graded]) -> dict[str, Any]:
 def report_json(graded: list[Graded], key_path: str, student_path: str, signed: bool) -> dict[str, Any]:
     return {"key": key_path, "student": student_path, "signed": signed,
             "rows": [g.json() for g in graded], "summary": summary(graded)}
+
+
+def write_json(out, graded: list[Graded], key_path: str, student_path: str, signed: bool) -> None:
+    """``report_json`` as the CLI's JSON text (util.files.json_text), written row by row to ``out``:
+    the same bytes without the whole document in memory at once (100 000 rows are ~100 MB of dicts)."""
+    import json
+    from graphplan.util.files import json_text
+    head = json_text({"key": key_path, "student": student_path, "signed": signed, "rows": [],
+                      "summary": summary(graded)})
+    if not graded:
+        out.write(head)
+        return
+    before, after = head.split('"rows": []', 1)
+    out.write(before + '"rows": [\n')
+    last = len(graded) - 1
+    for k, g in enumerate(graded):
+        text = json.dumps(g.json(), ensure_ascii=False, indent=1, allow_nan=False)
+        out.write("  " + text.replace("\n", "\n  ") + (",\n" if k < last else "\n"))
+    out.write(" ]" + after)
 
 
 def report_table(graded: list[Graded], key_path: str, student_path: str, lang: str = "uk") -> str:
