@@ -373,7 +373,7 @@ def test_keys_then_grades_from_the_key_zip_and_as_csv(client):
     rows = list(csv.DictReader(io.StringIO(client.post("/api/check?format=csv", files={
         "key": ("key.json", z.read("01/key.json")), "student": ("s.csv", formula)}).text)))
     assert rows[-1]["quantity"].startswith("'=")                        # kept as text in a spreadsheet
-    assert "student.csv: line 2: value 'x': not a number" == refused(client.post("/api/check", files={"key": ("k.json", z.read("01/key.json")),
+    assert "student.csv: line 2: value 'x' (column 4): not a number" == refused(client.post("/api/check", files={"key": ("k.json", z.read("01/key.json")),
                                                              "student": ("s.csv", "variant,position,quantity,value\n01,1,v_B,x\n")}))
 
 

@@ -193,7 +193,7 @@ def test_a_student_fills_a_template_sees_it_move_chooses_the_assembly_and_takes_
     wait(d, lambda: "crank angle" in d.find_element(By.ID, "scene-error").text, what="the assembly's ranges")
     shot(d, tmp_path, "serve_error")
     Select(d.find_element(By.ID, "lang")).select_by_value("uk")          # the same line in Ukrainian
-    wait(d, lambda: "не складається при кутах кривошипа" in d.find_element(By.ID, "scene-error").text,
+    wait(d, lambda: "не складається для кутів кривошипа" in d.find_element(By.ID, "scene-error").text,
          what="the assembly's ranges in Ukrainian")
     assert d.find_element(By.ID, "f-l2").get_attribute("value") == "0.05"   # the values kept
     assert "довжина шатуна" in d.find_element(By.ID, "fields").text

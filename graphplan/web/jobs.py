@@ -485,7 +485,7 @@ def _side_by_side(drawings, lang: str) -> str:
             inner = head.replace("<svg ", f'<svg x="0" y="{cap:.3f}" ', 1) + ">" + body
             parts.append(inner)
         else:
-            lines = _wrap(_in_words(error, lang), 60)
+            lines = _wrap(error, 60)          # already in the reader's language (refused)
             size = max(4.0, w / 60)
             for j, line in enumerate(lines):
                 parts.append(f'<text x="4" y="{cap + 2 * size + 1.5 * size * j:.3f}" font-size="{size:.3f}" fill="#a00" '
@@ -495,19 +495,6 @@ def _side_by_side(drawings, lang: str) -> str:
     total_w = len(drawings) * (w + 10) - 10
     return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {h + cap:.3f}" '
             f'width="{total_w:.3f}mm" height="{h + cap:.3f}mm">' + "".join(cells) + "</svg>")
-
-
-def _in_words(line: str, lang: str) -> str:
-    """The assembly's one line (the command line's English) in Ukrainian for a Ukrainian reader; the
-    page's script says it the same way beside the fields."""
-    import re
-    m = re.match(r"^(.*?)dyad (\S+) (\S+) \(links ([^)]*)\) cannot be assembled "
-                 r"(for crank angles (.+)|at any crank angle)$", line)
-    if lang != "uk" or not m:
-        return line
-    where = ("при кутах кривошипа " + re.sub(r"(\d)\.(\d)", r"\1,\2", m.group(6))) if m.group(6) \
-        else "за жодного кута кривошипа"
-    return f"{m.group(1)}група {m.group(2)} {m.group(3)} (ланки {m.group(4)}) не складається {where}"
 
 
 def _wrap(text: str, width: int) -> list[str]:

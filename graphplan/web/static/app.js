@@ -196,18 +196,9 @@ function showError(line) {
     input.setAttribute("aria-invalid", "true");
     $("f-" + m[1] + "-err").textContent = line.replace(/^form: \w+: /, "");
   } else {
-    $("scene-error").textContent = inWords(line);
+    $("scene-error").textContent = line;     // the server says it in the page's language
   }
   $("preview").classList.add("stale");
-}
-
-function inWords(line) {
-  // the assembly's one line (the command line's, in English) said in Ukrainian on a Ukrainian page
-  if (state.lang !== "uk") return line;
-  const m = /^(.*?)dyad (\S+) (\S+) \(links ([^)]*)\) cannot be assembled (for crank angles (.+)|at any crank angle)$/.exec(line);
-  if (!m) return line;
-  const where = m[6] ? "при кутах кривошипа " + m[6].replace(/(\d)\.(\d)/g, "$1,$2") : "за жодного кута кривошипа";
-  return `${m[1]}група ${m[2]} ${m[3]} (ланки ${m[4]}) не складається ${where}`;
 }
 
 // -- the scene, its preview -----------------------------------------------------------------------
