@@ -203,6 +203,44 @@ def test_sheets_of_3600_positions_within_30_s(tmp_path, kind):
         assert not (tmp_path / "s.svg").exists()
 
 
+def test_the_force_sheet_draws_the_same_number_of_plans_at_any_count(tmp_path, monkeypatch):
+    """The force sheet (and ``forces``, which plans it for its scales) draws one acceleration plan at
+    the force position: the velocity plans it constructs are as many at 720 positions as at 12 —
+    and the plan it draws is ``build_plans``' own at that position (the same scales, the same readings)."""
+    from graphplan.exact.kinetostatics import at_scene_angle
+    from graphplan.exact.positions import study as make_study
+    from graphplan.graphic.forceplans import acceleration_plan
+    from graphplan.graphic.plans import build_plans
+    from graphplan.graphic.velocity import VelocityPlan
+    from graphplan.model.scene import load
+    from graphplan.sheets.forces import force_scales
+    built = []
+    finish = VelocityPlan.finish
+
+    def counted(self, *a, **k):
+        built.append(self)
+        return finish(self, *a, **k)
+
+    monkeypatch.setattr(VelocityPlan, "finish", counted)
+    made = {}
+    for count in (12, 720):
+        s = make_study(load(scene(tmp_path, SLOTTER.replace("count = 12", f"count = {count}"), f"s{count}.toml")))
+        built.clear()
+        force_scales(s, "A1")
+        made[count] = len(built)
+    assert 1 <= made[720] == made[12] <= 4, made
+    s = make_study(load(scene(tmp_path, SLOTTER.replace("count = 12", "count = 36"), "s36.toml")))
+    phi = float(at_scene_angle(s))
+    mine, full = acceleration_plan(s, phi, 36), build_plans(s, 36, accel=[phi])
+    assert (mine.mu_l, mine.mu_v, mine.mu_a) == (full.mu_l, full.mu_v, full.mu_a)
+    (q,) = mine.positions
+    ref = full.at(q.key)
+    assert q.index == ref.index and q.phi == ref.phi
+    for kind in ("velocity", "acceleration"):
+        a, b = getattr(q, kind).entries, getattr(ref, kind).entries
+        assert a.keys() == b.keys() and all(a[k].value == b[k].value for k in a)
+
+
 # -- 5. check on many rows, variants and quantities ---------------------------------------------------
 
 @pytest.fixture(scope="module")

@@ -551,3 +551,44 @@ def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
     m_b, arm = plans.crank()
     return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v))
 
+
+
+def acceleration_plan(st: Study, phi_deg: float, count: int | None = None, precision: float = DEFAULT_PRECISION,
+                      mu_a: float | None = None):
+    """The plans the force sheet draws at the force position ``phi_deg``: its position, velocity and
+    acceleration plans only — at the scales ``graphic.plans.build_plans(st, count, accel=[phi_deg])``
+    chooses (μl and μv from the exact solution over all ``count`` positions, vectorised), keyed and
+    measured as there, so the drawing is the same while the work no longer grows with the count."""
+    from graphplan.graphic import plans as gp
+    from graphplan.util.errors import GraphplanError
+    n = count or st.mech.task.count
+    if not 2 <= n <= 3600:
+        raise GraphplanError(f"--positions must be from 2 to 3600, got {n}")
+    targets = gp.Targets()
+    phis = np.asarray(st.positions(n), dtype=float)
+    accel_idx, extra = gp.resolve_accel(st, phis, [phi_deg])
+    all_phi = np.concatenate([phis, np.asarray(extra, dtype=float)])
+    kin = st.solve(all_phi)
+    acc_keys = accel_idx + list(range(n, n + len(extra)))
+    ml, mv, ma = gp.choose_scales(st, kin, all_phi, acc_keys, targets, None, None, mu_a)
+    sc = gp.Scheme(st)
+    results = []
+    for key in acc_keys:                       # one key: the force position (on a position or extra)
+        phi = float(all_phi[key])
+        lay = gp.construct_position(sc, phi, ml, key, key if key < n else None)
+        exact = gp.Exact(kin, key)
+        vel = gp.VelocityPlan(sc, lay, exact, mv, precision)
+        _draw(vel, st)
+        acc = gp.AccelerationPlan(sc, lay, exact, ma, precision, vel)
+        _draw(acc, st)
+        results.append(gp.PositionPlans(key, key if key < n else None, phi, lay, vel, acc,
+                                        vel.warnings + acc.warnings))
+    return gp.Plans(st, sc, n, float(precision), ml, mv, ma, targets, results, [], ())
+
+
+def _draw(plan, st: Study) -> None:
+    """A velocity or acceleration plan drawn from the crank, group by group, and finished."""
+    plan.crank()
+    for d in st.structure.dyads:
+        plan.group(d)
+    plan.finish()

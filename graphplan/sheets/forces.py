@@ -157,9 +157,9 @@ class ForceDrafter:
         return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
 
     def plans(self, mu_a: float | None = None):
-        from graphplan.graphic.plans import build_plans
-        return self._once(("plans", mu_a), lambda: build_plans(
-            self.st, count=self.opts.positions, accel=[self.phi], precision=self.opts.precision, mu_a=mu_a))
+        from graphplan.graphic.forceplans import acceleration_plan      # only the plans drawn
+        return self._once(("plans", mu_a), lambda: acceleration_plan(
+            self.st, self.phi, count=self.opts.positions, precision=self.opts.precision, mu_a=mu_a))
 
     def drawings(self, mu: dict[str, float], lang: str = "uk", lettered: bool = True) -> dict[str, list[Record]]:
         """The drawings at the scales ``mu`` (no captions): family → records in order; sketched
