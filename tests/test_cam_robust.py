@@ -266,3 +266,17 @@ def test_a_roller_between_the_sampled_and_the_true_smallest_curvature_warns():
     assert sampled > truth * (1 + 1e-5)
     data["cam"]["roller_radius"] = (sampled + truth) / 2
     assert any("undercut" in en for en, _ in X.solve(build(data)).warnings)
+
+
+def test_an_allowed_band_between_two_scan_points_is_found():
+    """ratio(R) = 0.8 + 4·(R − 0.55)²/0.05² is over 1 at every scan point 0, 0.1, …, 1 but 0.8 at 0.55:
+    the band's search returns a bracket whose ends differ in sign, and its root is the band's left
+    edge 0.55 − 0.05·√0.05 (closed form)."""
+    import numpy as np
+    ratio = lambda R: 0.8 + 4 * (R - 0.55) ** 2 / 0.05 ** 2       # noqa: E731
+    f = lambda R: ratio(R) - 1.0                                  # noqa: E731
+    scan = np.linspace(0.0, 1.0, 11)
+    first, cut = X._narrow_band(None, None, scan, [ratio(R) for R in scan], ratio, f)
+    lo, hi = cut[first - 1], cut[first]
+    assert f(lo) > 0 >= f(hi)
+    assert X.bracketed_root(f, lo, hi) == pytest.approx(0.55 - 0.05 * math.sqrt(0.05), abs=1e-12)
