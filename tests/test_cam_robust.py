@@ -89,6 +89,65 @@ def test_any_cam_ends_with_an_answer_or_one_line_many(tmp_path, case):
     _ends_well(tmp_path, case)
 
 
+# -- the fuzz census's cam family (issue 36, item 1) ------------------------------------------------------
+
+def _census_cases() -> list[tuple[str, str]]:
+    """The census's rocking scenes where it counted 9 internal errors: a cycloidal rise turning ccw or
+    in the default sense, a trapezoidal rise turning cw (each with every extra of the family)."""
+    from fuzz_scenes import cam_combinations
+    return [(n, t) for n, t in cam_combinations() if n.startswith("cam_rocking ")
+            and (((" ccw " in n or " default sense " in n) and " cycloidal " in n) or " cw trapezoidal " in n)]
+
+
+CENSUS = _census_cases()
+
+
+def test_the_census_rocking_cams_end_with_an_answer_or_one_line(tmp_path):
+    """Each of the 18 scenes: an answer whose R0 makes the largest |ϑ|/[ϑ] exactly 1 (and a radius 1 %
+    smaller exceeds it), or the reach's lower end; else one line (exit 2) naming the phase, its
+    allowed angle and the least it reaches — that least above the allowed one."""
+    import re
+    import tomllib
+    assert len(CENSUS) == 18
+    answered = refused = 0
+    for name, text in CENSUS:
+        path = tmp_path / "cam.toml"
+        path.write_text(text, encoding="utf-8")
+        code, out, err = run(["cam", str(path), "--json"])
+        doc = check_run(["cam", "--json"], code, out, err)
+        if code == 0:
+            answered += 1
+            c = tomllib.loads(text)["cam"]
+            cam = build({"cam": c})
+            r = doc["base_radius_min_m"]
+            reach = abs(c["centre_distance"] - c["arm"])
+            assert reach < r < c["centre_distance"] + c["arm"], name
+            if r > reach * (1 + 1e-6) + 2e-9:
+                assert X._refined_worst(cam, r, None) == pytest.approx(1.0, abs=1e-9), name
+                assert X._refined_worst(cam, r * 0.99, None) > 1.0, name
+        else:
+            refused += 1
+            assert code == 2 and len(err.strip().splitlines()) == 1, name
+            m = re.search(r"the (rise|return)'s pressure angle stays above its allowed ([\d.]+)° .*"
+                          r"at best ([\d.]+)° at R0 = ([\d.]+) mm", err)
+            assert m, err
+            assert float(m.group(3)) > float(m.group(2)), err
+    assert answered >= 9 and refused >= 1
+
+
+def test_a_rocking_refusal_names_the_phase_and_its_angle(tmp_path):
+    """[ϑ] = 5° on the rise of cam_rocking.toml: with the arm's swing 20° over 100° of the cam no base
+    radius the arm reaches allows it — one line naming the rise and 5°, not the return (allowed
+    80°)."""
+    path = tmp_path / "cam.toml"
+    path.write_text(ROCKING.read_text(encoding="utf-8").replace(
+        "pressure_angle_deg = { rise = 45, return = 45 }", "pressure_angle_deg = { rise = 5, return = 80 }"),
+        encoding="utf-8")
+    code, out, err = run(["cam", str(path)])
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert "the rise's pressure angle" in err and "allowed 5°" in err and "return" not in err.split("(")[0]
+
+
 # -- the phase diagram drawn as computed (issue 32, item 1) ----------------------------------------------
 
 def drawn_angles(rec, rocking: bool) -> dict[int, float]:
@@ -207,3 +266,17 @@ def test_a_roller_between_the_sampled_and_the_true_smallest_curvature_warns():
     assert sampled > truth * (1 + 1e-5)
     data["cam"]["roller_radius"] = (sampled + truth) / 2
     assert any("undercut" in en for en, _ in X.solve(build(data)).warnings)
+
+
+def test_an_allowed_band_between_two_scan_points_is_found():
+    """ratio(R) = 0.8 + 4·(R − 0.55)²/0.05² is over 1 at every scan point 0, 0.1, …, 1 but 0.8 at 0.55:
+    the band's search returns a bracket whose ends differ in sign, and its root is the band's left
+    edge 0.55 − 0.05·√0.05 (closed form)."""
+    import numpy as np
+    ratio = lambda R: 0.8 + 4 * (R - 0.55) ** 2 / 0.05 ** 2       # noqa: E731
+    f = lambda R: ratio(R) - 1.0                                  # noqa: E731
+    scan = np.linspace(0.0, 1.0, 11)
+    first, cut = X._narrow_band(None, None, scan, [ratio(R) for R in scan], ratio, f)
+    lo, hi = cut[first - 1], cut[first]
+    assert f(lo) > 0 >= f(hi)
+    assert X.bracketed_root(f, lo, hi) == pytest.approx(0.55 - 0.05 * math.sqrt(0.05), abs=1e-12)

@@ -241,17 +241,37 @@ def min_base_radius(cam: Cam, e: float | None = None) -> float:
         def quick(R: float) -> float:
             th = np.abs(profile(cam, geometry(cam, R, e), coarse)["theta"])
             return max(float(np.max(th[phases == k])) / cam.allowed[k] for k in (0, 1))
-        first = next((k for k, R in enumerate(scan) if quick(R) <= 1.0 and f(R) <= 0), None)
+        ratios = [quick(R) for R in scan]
+        first = next((k for k, R in enumerate(scan) if ratios[k] <= 1.0 and f(R) <= 0), None)
         if first is None:
-            raise GraphplanError("the rocking follower's arm cannot keep the pressure angles within the "
-                                 "allowed ones at any base radius; change the arm or the centre distance",
-                                 cam.source)
+            first, scan = _narrow_band(cam, e, scan, ratios, quick, f)
         if first == 0:
             return float(lo)
         lo, hi = scan[first - 1], scan[first]
     elif f(lo) <= 0:
         return float(lo)
     return bracketed_root(f, lo, hi)
+
+
+def _narrow_band(cam: Cam, e, scan: Array, ratios: list[float], quick, f) -> tuple[int, Array]:
+    """Where no scan point of the rocking follower's reach is allowed: the coarse ratio's least value
+    searched between the best scan point's neighbours (a band narrower than the scan's step); found
+    allowed, the scan is cut there (index 1: its left neighbour is not allowed, so f changes sign on
+    the bracket). Else one line naming the phase and the least pressure angle it can have."""
+    from scipy.optimize import minimize_scalar
+    j = int(np.nanargmin(np.where(np.isfinite(ratios), ratios, np.inf)))
+    a, b = scan[max(j - 1, 0)], scan[min(j + 1, len(scan) - 1)]
+    r = minimize_scalar(quick, bounds=(a, b), method="bounded", options={"xatol": 1e-12})
+    R = float(r.x) if r.fun < ratios[j] else float(scan[j])
+    if quick(R) <= 1.0 and f(R) <= 0 and R > scan[0]:
+        return 1, np.array([a if f(a) > 0 else scan[0], R])
+    rise, ret = phase_maxima(cam, geometry(cam, R, e))
+    k = 0 if rise / cam.allowed[0] >= ret / cam.allowed[1] else 1
+    name, least = ("rise", rise) if k == 0 else ("return", ret)
+    raise GraphplanError(f"the {name}'s pressure angle stays above its allowed "
+                         f"{cam.allowed[k]:g}° at every base radius the rocking arm reaches (at best "
+                         f"{least:.2f}° at R0 = {R * 1000:.3f} mm); allow a larger angle or change the arm "
+                         "or the centre distance", cam.source)
 
 
 def bracketed_root(f, lo: float, hi: float) -> float:
