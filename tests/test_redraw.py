@@ -127,7 +127,7 @@ def test_terminal_diagrams_draw_what_the_sheet_draws(tmp_path, capsys):
     asked = json.loads(capsys.readouterr().out)
     assert asked["redrawn"] is None and [w for w in asked["warnings"] if w["kind"] == "qualitative"]
     assert main(["diagrams", str(scene)]) == 0
-    assert "перекреслено: H₂ = " in capsys.readouterr().out
+    assert "побудовано заново: H₂ = " in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper", "slotter", "lab_crank_slider"])

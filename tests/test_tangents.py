@@ -224,7 +224,7 @@ def test_the_sheet_notes_say_the_method_and_the_spurious_extrema(crank_slider):
     a3 = "".join(page.svg() for page in BUILDERS["kinematics"](crank_slider, form("A3"), args).pages)
     assert "методом хорд, 12 поділок" in a3
     assert "Діаграма a якісно хибна: хибні екстремуми φ = " in a3
-    assert "a: жодне перекреслення, яке дозволяє лабораторна" in a3
+    assert "a: жодна побудова заново, яку дозволяє лабораторна" in a3
 
 
 # -- the drawing, the command ----------------------------------------------------------------------

@@ -106,7 +106,7 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
     syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
     mm = unit("mm", lang)
     if not rd.right:
-        return (f"{syms}: жодне перекреслення, яке дозволяє лабораторна (корекція площ, H_{{1}}, H_{{2}} від 15 до "
+        return (f"{syms}: жодна побудова заново, яку дозволяє лабораторна (корекція площ, H_{{1}}, H_{{2}} від 15 до "
                 f"50 {mm}, довша L, менші інтервали), тут не робить діаграму якісно правильною" if uk else
                 f"{syms}: no redrawing the lab allows (the area correction, H_{{1}}, H_{{2}} from 15 to 50 {mm}, a "
                 "longer L, smaller intervals) makes the diagram qualitatively right here")
@@ -125,8 +125,8 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
     many = len(rd.wrong_before) > 1
     how = ", ".join(parts)
     if uk:
-        return (f"Діаграми {syms} перекреслено: {how} — перші мали екстремуми чи нулі, яких немає в русі" if many
-                else f"Діаграму {syms} перекреслено: {how} — перша мала екстремуми чи нулі, яких немає в русі")
+        return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми чи нулі, яких немає в русі" if many
+                else f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми чи нулі, яких немає в русі")
     return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema or zero crossings "
             "the motion lacks")
 
