@@ -82,30 +82,28 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     return 0
 
 
-def _cam_scene(path: str | None):
-    """The cam of a [cam] scene, or None for a lever mechanism's scene (read as every scene is)."""
+def _scene_tree(path: str | None) -> dict | None:
+    """The scene file's table, or None where there is no file or it does not read (the lever scene's
+    reader then says what is wrong, in one line)."""
     if path is None:
         return None
     from graphplan.model import bounds as B
-    from graphplan.model.cam import build, is_cam
     from graphplan.util.files import read_bytes
     try:
-        data = B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), str(path))
+        return B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), str(path))
     except (UnicodeDecodeError, GraphplanError):
-        return None                      # the lever scene's reader says what is wrong
-    return build(data, str(path)) if is_cam(data) else None
+        return None
 
+
+def _cam_scene(path: str | None):
+    """The cam of a [cam] scene, or None for a lever mechanism's scene (read as every scene is)."""
+    from graphplan.model.cam import build, is_cam
+    data = _scene_tree(path)
+    return build(data, str(path)) if data is not None and is_cam(data) else None
 
 
 def _gears_scene(path: str | None):
     """The gear scene of a [gears]/[planetary] scene, or None for another scene (read as every scene is)."""
-    if path is None:
-        return None
-    from graphplan.model import bounds as B
     from graphplan.model.gears import build, is_gears
-    from graphplan.util.files import read_bytes
-    try:
-        data = B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), str(path))
-    except (UnicodeDecodeError, GraphplanError):
-        return None                      # the lever scene's reader says what is wrong
-    return build(data, str(path)) if is_gears(data) and "cam" not in data else None
+    data = _scene_tree(path)
+    return build(data, str(path)) if data is not None and is_gears(data) and "cam" not in data else None

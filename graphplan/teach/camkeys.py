@@ -81,21 +81,10 @@ def summary_units(key: dict[str, Any]) -> dict[str, str]:
 
 def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
     """The cam variant's A4 key sheet: the data, the headline answers, the table of the divisions."""
-    from graphplan.teach.keysheet import A4_PORTRAIT, EDGE, INSET, LEFT, MEDIUM, SMALL, frame, table
+    from graphplan.teach.keysheet import A4_PORTRAIT, EDGE, INSET, LEFT, MEDIUM, SMALL, frame, table, heading
     W, H = A4_PORTRAIT
     uk = lang == "uk"
-    rec = Record(("Ключ: варіант " if uk else "Key: variant ") + escape(key["variant"]))
-    frame(rec, W, H)
-    x0, y = LEFT + INSET, H - EDGE - 3.0
-    rec.label((W - EDGE - INSET, y - SMALL), f"graphplan · {escape(key['base'])}", size=SMALL, anchor="end")
-    y -= 7.0
-    rec.label((x0, y), ("Ключ відповідей, варіант " if uk else "Answer key, variant ") + escape(key["variant"]),
-              size=5.0)
-    y -= 7.0
-    rec.label((x0, y), escape(key["title"] if uk else (key.get("title_en") or key["title"])), size=MEDIUM)
-    if key.get("student"):
-        y -= 5.5
-        rec.label((x0, y), ("студент: " if uk else "student: ") + escape(key["student"]), size=MEDIUM)
+    rec, x0, y = heading(key, lang)
     if key["overrides"]:
         y -= 5.5
         rec.label((x0, y), ("дані варіанта: " if uk else "variant data: ") + escape(

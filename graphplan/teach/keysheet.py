@@ -58,6 +58,26 @@ def display(name: str, lang: str = "en") -> str:
     return re.sub(r"^omega_", "ω_", re.sub(r"^eps_", "ε_", name))
 
 
+def heading(key: dict[str, Any], lang: str = "uk") -> tuple[Record, float, float]:
+    """A cam or gear variant's A4 key sheet begun: the frame, the base's name, «Ключ відповідей,
+    варіант …», the title and the student; (record, x of the text, y of the last line)."""
+    W, H = A4_PORTRAIT
+    uk = lang == "uk"
+    rec = Record(("Ключ: варіант " if uk else "Key: variant ") + escape(key["variant"]))
+    frame(rec, W, H)
+    x0, y = LEFT + INSET, H - EDGE - 3.0
+    rec.label((W - EDGE - INSET, y - SMALL), f"graphplan · {escape(key['base'])}", size=SMALL, anchor="end")
+    y -= 7.0
+    rec.label((x0, y), ("Ключ відповідей, варіант " if uk else "Answer key, variant ") + escape(key["variant"]),
+              size=5.0)
+    y -= 7.0
+    rec.label((x0, y), escape(key["title"] if uk else (key.get("title_en") or key["title"])), size=MEDIUM)
+    if key.get("student"):
+        y -= 5.5
+        rec.label((x0, y), ("студент: " if uk else "student: ") + escape(key["student"]), size=MEDIUM)
+    return rec, x0, y
+
+
 def frame(rec: Record, width: float, height: float) -> None:
     rec.add("polygon", [(LEFT, EDGE), (width - EDGE, EDGE), (width - EDGE, height - EDGE), (LEFT, height - EDGE)],
             role="frame", layer="frame")
