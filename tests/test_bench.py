@@ -12,6 +12,7 @@ import pytest
 from conftest import example, scene_study
 from graphplan.bench import run as bench
 from graphplan.util.errors import AssemblyError, GraphplanError
+from graphplan.util.words import word
 
 
 @pytest.fixture(scope="module")
@@ -73,10 +74,12 @@ def test_refusals_are_one_line_for_impossible_geometry():
     assert "cannot be assembled for crank angles" in info.value.line("en")
 
 
-def test_run_writes_rows_and_charts(tmp_path, monkeypatch):
+def test_run_writes_rows_and_charts(tmp_path, monkeypatch, capsys):
     small = {"stability": bench.SECTIONS["stability"], "plans": bench.SECTIONS["plans"]}
     monkeypatch.setattr(bench, "SECTIONS", small)
-    rows = bench.run(tmp_path, quick=True, show_progress=False)
+    rows = bench.run(tmp_path, quick=True, show_progress=True, lang="uk")
+    bar = capsys.readouterr().err                  # the progress bar speaks the reader's language
+    assert "2/2" in bar and word("bench done", "uk") in bar and not re.search(r"[A-Za-z]{2,}", bar)
     doc = json.loads((tmp_path / "bench.json").read_text())
     assert len(doc["rows"]) == len(rows) > 10
     for r in doc["rows"]:
@@ -90,19 +93,53 @@ def test_run_writes_rows_and_charts(tmp_path, monkeypatch):
     assert all(0.01 < r["max_error_pct"] < 5 for r in ruler)
 
 
-# names in a bench row: scenes, libraries and their calls, the sheet's format
-BENCH_NAMES = {"crank", "slider", "four", "bar", "shaper", "slotter", "SVG", "graphplan", "pylinkage", "mechanism",
-               "Linkage", "Linkag", "Mechanism", "Mechan", "Study", "solve", "solv", "step", "fast", "iterate", "fsolve"}
+# names a Ukrainian bench row keeps: the sheet's format, the libraries compared and the functions they
+# and the flywheel call (a call written Package.method is a name and removed first, see latin_words)
+BENCH_NAMES = {"SVG", "graphplan", "pylinkage", "mechanism", "fsolve", "brentq", "numba", "Python", "NaN"}
+
+
+def latin_words(text: str) -> set[str]:
+    """Words of three or more Latin letters, calls such as Linkage.step_fast left out."""
+    return set(re.findall(r"[A-Za-z]{3,}", re.sub(r"\w+(?:\.\w+)+", " ", text)))
 
 
 def test_summary_speaks_the_language(stability_rows):
     import re
     uk = bench.summary(stability_rows, "uk")
     assert "стійкість" in uk and "відмова" in uk and "гаразд" in uk
-    assert not set(re.findall(r"[A-Za-z]{3,}", uk)) - BENCH_NAMES
+    assert not latin_words(uk) - BENCH_NAMES
     assert not re.search(r"\d\.\d", uk)
     en = bench.summary(stability_rows, "en")
     assert "stability" in en and "refused" in en and not re.search(r"[А-Яа-яіїє]", en)
+
+
+def test_a_section_in_ukrainian_keeps_no_english_word(stability_rows):
+    """The smallest section that names methods (cam: exact, graphical, the method's failures) and
+    the sweeps: every word of their English table — sections, methods, scenes, settings, statuses,
+    the head — is gone from the Ukrainian one, which words the laws as the cam's own tables do;
+    the rows (bench.json) keep their English identifiers."""
+    from graphplan.report.cam import WORDS as CAM
+    cam = list(bench.SECTIONS["cam"](True))
+    for rows in (cam, stability_rows):
+        en, uk = bench.summary(rows, "en"), bench.summary(rows, "uk")
+        english = latin_words(en)
+        ids = {w for r in rows for w in latin_words(f"{r['section']} {r['method']} {r.get('status', '')}")}
+        assert ids and ids <= english                       # the rows' identifiers, said in English
+        assert len(english) > 10 and not latin_words(uk) & english, latin_words(uk) & english
+        assert not latin_words(uk) and not re.search(r"\d\.\d", uk)
+        assert not re.search(r"[А-Яа-яіїєґ]", en)
+        assert len(uk.splitlines()) == len(en.splitlines()) == len(rows) + 1
+    laws = CAM["uk"]["laws"]
+    assert laws["linear"] in bench.summary(cam, "uk")
+    assert {r["section"] for r in cam} == {"cam"} and {"exact", "graphical", "failure"} <= {r["method"] for r in cam}
+
+
+def test_unknown_section_is_one_line_in_the_language(capsys):
+    from graphplan.cli.main import main
+    assert main(["bench", "--section", "nope", "--lang", "uk", "-o", "/nonexistent/x"]) == 2
+    err = capsys.readouterr().err.strip()
+    known = ", ".join({**bench.SECTIONS, **bench.ON_REQUEST})
+    assert err == "graphplan: " + word("bench unknown section", "uk", name="'nope'", known=known)
 
 
 @pytest.mark.slow
@@ -111,8 +148,12 @@ def test_bench_quick_whole(tmp_path):
     rows = bench.run(tmp_path, quick=True, show_progress=False)
     assert {r["section"] for r in rows} >= {"speed", "chords", "plans", "stability", "sheet", "external"}
     uk = bench.summary(rows, "uk")
-    ours = "\n".join(ln for ln in uk.splitlines() if "failed:" not in ln and "not compared:" not in ln)
-    assert not set(re.findall(r"[A-Za-z]{3,}", ours)) - BENCH_NAMES    # a library's own error stays as it said it
+    theirs = (word("bench failed", "uk"), word("bench not compared", "uk"))   # a library's own error stays as said
+    ours = "\n".join(ln for ln in uk.splitlines() if not any(w in ln for w in theirs))
+    assert not latin_words(ours) - BENCH_NAMES
+    en = bench.summary(rows, "en")
+    assert not latin_words(ours) & (latin_words(en) - BENCH_NAMES)
+    assert not re.search(r"[А-Яа-яіїєґ]", en)
 
 
 def test_bench_refuses_outside_a_checkout(monkeypatch, tmp_path):

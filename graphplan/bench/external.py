@@ -226,7 +226,7 @@ def mechanism_run(model, n: int) -> Motion:
         warnings.simplefilter("always", RuntimeWarning)
         mech.iterate()
     stalled = sum(1 for w in caught if "iteration" in str(w.message) or "calls to function" in str(w.message))
-    note = f"fsolve did not converge {stalled} times" if stalled else ""
+    note = f"fsolve did not converge (×{stalled})" if stalled else ""
     pos = np.array([j.x_positions + 1j * j.y_positions for j in joints]) + shift
     if mech.vel is None:
         return Motion(pos, note=note)

@@ -5,6 +5,7 @@ Every row has ``section``, ``method``, ``setting``, ``x`` (the swept quantity), 
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 import time
@@ -238,19 +239,24 @@ ON_REQUEST: dict[str, Callable[[bool], Iterator[Row]]] = {     # not in a plain 
 }
 
 
-def run(out: Path, quick: bool, show_progress: bool | None = None, sections: list[str] | None = None) -> list[Row]:
+def run(out: Path, quick: bool, show_progress: bool | None = None, sections: list[str] | None = None,
+        lang: str = "uk") -> list[Row]:
     """Run every section (or the ``sections`` named), write ``out/bench.json`` and the charts;
-    return the rows."""
+    return the rows. ``lang`` is the language of the progress bar and of a refusal."""
+    from graphplan.util.errors import said_error
     from graphplan.util.files import json_text, write_atomic
     from graphplan.util.progress import progress
+    from graphplan.util.words import word
 
     known = {**SECTIONS, **ON_REQUEST}
     names = list(SECTIONS) if not sections else sections
     for name in names:
         if name not in known:
-            raise GraphplanError(f"--section {name!r}: one of {', '.join(known)}")
+            raise said_error(GraphplanError, "bench unknown section", None, lang, name=repr(name),
+                             known=", ".join(known))
     rows: list[Row] = []
-    for name in progress(names, len(names), "bench", show_progress):
+    for name in progress(names, len(names), word("bench progress", lang), show_progress,
+                         done=word("bench done", lang)):
         rows.extend(known[name](quick))
     doc = {"quick": quick, "rows": rows}
     write_atomic(out / "bench.json", json_text(_clean(doc)))
@@ -402,37 +408,55 @@ CHARTS: dict[str, Callable] = {"speed": _chart_speed, "chords": _chart_chords, "
                                "flywheel": _chart_flywheel, "cam": _chart_cam, "gears": _chart_gears}
 
 
-SWEEP_WORDS = {"four_bar toward": "bench sweep four_bar", "crank_slider l/r": "bench sweep crank_slider",
-               "slotted link": "bench sweep slotted"}
+@functools.lru_cache(maxsize=None)
+def _phrases(lang: str) -> tuple[dict[str, str], re.Pattern]:
+    """Every English phrase a bench row says → its words in ``lang``: the catalogue's "bench …"
+    entries (the laws' names as the cam's tables word them), the cam scenes as the cam's tables name
+    their followers, the drawn millimetre."""
+    from graphplan.report.cam import WORDS as CAM
+    from graphplan.util.words import WORDS, unit, word
+    table = {en: (uk if lang == "uk" else en) for key, (uk, en) in WORDS.items()
+             if key.startswith("bench ") and "{" not in en}
+    for law in CAM["en"]["laws"]:
+        table[word("bench law shocks", "en", law=CAM["en"]["laws"][law])] = word(
+            "bench law shocks", lang, law=CAM[lang]["laws"][law])
+    for follower in ("translating", "rocking"):
+        table[f"cam_{follower}"] = f"{word('bench cam', lang)}, {CAM[lang][follower]}"
+    table["mm"] = unit("mm", lang)          # (not "m": m is the gears' module there)
+    pattern = "|".join(re.escape(p) for p in sorted(table, key=len, reverse=True))
+    return table, re.compile(rf"(?<!\w)(?:{pattern})(?!\w)")
 
 
-def _setting(r: Row, lang: str) -> str:
-    """A row's setting in ``lang``: the sweeps' titles from the catalogue, scenes by their file
-    names, "precision" and "mm" in the language, numbers with the language's decimal sign."""
-    from graphplan.util.words import num, unit, word
-    text = r["setting"]
-    for head, key in SWEEP_WORDS.items():
-        if text.startswith(head):
-            text = word(key, lang)
-    if lang != "en":
-        text = text.replace("precision=", word("bench precision", lang) + "=").replace(" mm", " " + unit("mm", lang))
-        text = re.sub(r"(?<=\d)\.(?=\d)", ",", text)
-        text = re.sub(r"\b(positions|velocities|accelerations)\b", lambda m: word(f"bench {m.group(1)}", lang), text)
+def say(text: str, lang: str) -> str:
+    """A bench row's English text in ``lang``: each known phrase (the longest first, whole words
+    only) in the language's words, decimal commas in Ukrainian; names of libraries, their calls and
+    the errors they raise stay as they are."""
+    if lang == "en" or not text:
+        return text
+    table, pattern = _phrases(lang)
+    text = pattern.sub(lambda m: table[m.group(0)], text)
+    return re.sub(r"(?<=\d)\.(?=\d)", ",", text)
+
+
+def setting(r: Row, lang: str) -> str:
+    """A row's setting in ``lang`` (a sweep's row adds its swept value x)."""
+    from graphplan.util.words import num
+    text = say(r["setting"], lang)
     if r["section"] == "stability":
-        text += f" x={num(r['x'], lang)}"
+        text += f" x={num(r['x'], lang, 6)}"
     return text
 
 
 def summary(rows: list[Row], lang: str = "uk") -> str:
-    """One line per row, for people, in ``lang``."""
-    from graphplan.util.words import WORDS, num, word
-    say = lambda k_: word(f"bench {k_}", lang) if f"bench {k_}" in WORDS else k_  # noqa: E731
-    head = word("bench head", lang).split("|")
-    lines = [f"{head[0]:10} {head[1]:14} {head[2]:58} {head[3]:>10} {head[4]:>10}  {head[5]}"]
+    """One line per row, for people, in ``lang``: section, method, setting, time, error, the status
+    or the note; columns as wide as their widest cell."""
+    from graphplan.util.words import num, word
+    table = [word("bench head", lang).split("|")]
     for r in rows:
         t = "" if r.get("time_s") is None else num(r["time_s"], lang, 3)
         e = "" if r.get("max_error_pct") is None else num(r["max_error_pct"], lang, 3)
         status = r.get("status") or r.get("note") or ""
-        lines.append(f"{say(r['section']):10} {say(r['method'])[:14]:14} {_setting(r, lang)[:58]:58} {t:>10} "
-                     f"{e:>10}  {say(status)}")
-    return "\n".join(lines)
+        table.append([say(r["section"], lang), say(r["method"], lang), setting(r, lang), t, e, say(status, lang)])
+    widths = [max(len(row[k]) for row in table) for k in range(5)]
+    return "\n".join(f"{c[0]:{widths[0]}} {c[1]:{widths[1]}} {c[2]:{widths[2]}} {c[3]:>{widths[3]}} "
+                     f"{c[4]:>{widths[4]}}  {c[5]}".rstrip() for c in table)

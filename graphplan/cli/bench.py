@@ -12,10 +12,10 @@ from graphplan.cli.common import lang_arg, lang_of
 def cmd_bench(args: argparse.Namespace) -> int:
     from graphplan.bench.run import run, summary
     out = Path(args.out)
-    t0 = time.perf_counter()
-    rows = run(out, args.quick, sections=args.section)
-    from graphplan.util.words import fixed, word
     lang = lang_of(args)
+    t0 = time.perf_counter()
+    rows = run(out, args.quick, sections=args.section, lang=lang)
+    from graphplan.util.words import fixed, word
     sys.stdout.write(summary(rows, lang) + "\n" + word("rows in", lang, n=len(rows), t=fixed(time.perf_counter() - t0, lang),
                                                        path=out / "bench.json") + "\n")
     return 0

@@ -14,10 +14,10 @@ class Progress:
     prints a diagnostic line (always) above the bar, ``close()`` ends the line."""
 
     def __init__(self, total: int, enabled: bool | None = None, stream: TextIO | None = None,
-                 width: int = 24):
+                 width: int = 24, done: str = "done"):
         self.stream = stream or sys.stderr
         self.enabled = self.stream.isatty() if enabled is None else enabled
-        self.total, self.width = total, width
+        self.total, self.width, self.done = total, width, done
         self.done_count = 0
         self.shown = False
 
@@ -42,14 +42,16 @@ class Progress:
 
     def close(self) -> None:
         if self.enabled and self.shown:
-            self.step("done")
+            self.step(self.done)
             self.stream.write("\n")
             self.stream.flush()
 
 
-def progress(items: Iterable[T], total: int, label: str, enabled: bool | None = None) -> Iterator[T]:
-    """Yield the items while the bar counts them (``label`` and the item's number)."""
-    bar = Progress(total, enabled)
+def progress(items: Iterable[T], total: int, label: str, enabled: bool | None = None,
+             done: str = "done") -> Iterator[T]:
+    """Yield the items while the bar counts them (``label`` and the item's number; ``done`` the
+    last label, in the reader's language)."""
+    bar = Progress(total, enabled, done=done)
     for k, item in enumerate(items):
         bar.step(f"{label} {k + 1}")
         yield item
