@@ -113,6 +113,20 @@ def test_summary_speaks_the_language(stability_rows):
     assert "stability" in en and "refused" in en and not re.search(r"[А-Яа-яіїє]", en)
 
 
+def chart_texts(rows: list[dict], lang: str) -> str:
+    """Every text of the rows' section chart, said in ``lang`` (the ticks' mathtext left out)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.text import Text
+    fig = bench.CHARTS[rows[0]["section"]](rows, plt)
+    bench.say_figure(fig, lang)
+    fig.canvas.draw()
+    texts = " ".join(t.get_text() for t in fig.findobj(Text))
+    plt.close(fig)
+    return re.sub(r"\$[^$]*\$", " ", texts)
+
+
 def test_a_section_in_ukrainian_keeps_no_english_word(stability_rows):
     """The smallest section that names methods (cam: exact, graphical, the method's failures) and
     the sweeps: every word of their English table — sections, methods, scenes, settings, statuses,
@@ -131,6 +145,8 @@ def test_a_section_in_ukrainian_keeps_no_english_word(stability_rows):
         assert len(uk.splitlines()) == len(en.splitlines()) == len(rows) + 1
     laws = CAM["uk"]["laws"]
     assert laws["linear"] in bench.summary(cam, "uk")
+    english = latin_words(chart_texts(cam, "en"))          # the chart: titles, axes, legend
+    assert len(english) > 10 and not latin_words(chart_texts(cam, "uk"))
     assert {r["section"] for r in cam} == {"cam"} and {"exact", "graphical", "failure"} <= {r["method"] for r in cam}
 
 
@@ -154,6 +170,9 @@ def test_bench_quick_whole(tmp_path):
     en = bench.summary(rows, "en")
     assert not latin_words(ours) & (latin_words(en) - BENCH_NAMES)
     assert not re.search(r"[А-Яа-яіїєґ]", en)
+    for name in bench.CHARTS:                                 # every chart, in Ukrainian
+        section = [r for r in rows if r["section"] == name]
+        assert not latin_words(chart_texts(section, "uk")) - BENCH_NAMES - {"numpy"}, name
 
 
 def test_bench_refuses_outside_a_checkout(monkeypatch, tmp_path):

@@ -315,7 +315,7 @@ def _quirks(package: str, label: str) -> str:
         from pylinkage._numba_compat import HAS_NUMBA
         jit = "numba" if HAS_NUMBA else "pure Python (numba absent)"
         return f"{label}, {jit}; keeps the root nearest the previous position"
-    return f"{label}; each fsolve started from the previous root"
+    return f"{label}; each solve started from the previous root"
 
 
 def compare(study: positions.Study, example: str, n_positions: int = 360, repeats: int = 5,

@@ -242,7 +242,7 @@ ON_REQUEST: dict[str, Callable[[bool], Iterator[Row]]] = {     # not in a plain 
 def run(out: Path, quick: bool, show_progress: bool | None = None, sections: list[str] | None = None,
         lang: str = "uk") -> list[Row]:
     """Run every section (or the ``sections`` named), write ``out/bench.json`` and the charts;
-    return the rows. ``lang`` is the language of the progress bar and of a refusal."""
+    return the rows. ``lang`` is the language of the progress bar, the charts and a refusal."""
     from graphplan.util.errors import said_error
     from graphplan.util.files import json_text, write_atomic
     from graphplan.util.progress import progress
@@ -260,7 +260,7 @@ def run(out: Path, quick: bool, show_progress: bool | None = None, sections: lis
         rows.extend(known[name](quick))
     doc = {"quick": quick, "rows": rows}
     write_atomic(out / "bench.json", json_text(_clean(doc)))
-    charts(rows, out)
+    charts(rows, out, lang)
     return rows
 
 
@@ -275,8 +275,8 @@ def _clean(value: Any) -> Any:
     return value
 
 
-def charts(rows: list[Row], out: Path) -> list[Path]:
-    """Draw each section's chart as PNG and SVG (deterministic files)."""
+def charts(rows: list[Row], out: Path, lang: str = "uk") -> list[Path]:
+    """Draw each section's chart as PNG and SVG (deterministic files), its words in ``lang``."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -290,6 +290,7 @@ def charts(rows: list[Row], out: Path) -> list[Path]:
         if not section:
             continue
         fig = draw(section, plt)
+        say_figure(fig, lang)
         for fmt in ("png", "svg"):
             buf = io.BytesIO()
             meta = {"Date": None} if fmt == "svg" else {"Software": None}
@@ -436,6 +437,53 @@ def say(text: str, lang: str) -> str:
     table, pattern = _phrases(lang)
     text = pattern.sub(lambda m: table[m.group(0)], text)
     return re.sub(r"(?<=\d)\.(?=\d)", ",", text)
+
+
+def say_figure(fig, lang: str) -> None:
+    """Every text a chart holds (titles, axis labels, legends, notes) said in ``lang`` (``say``),
+    the ticks' numbers with the decimal comma in Ukrainian."""
+    if lang == "en":
+        return
+    from matplotlib.text import Text
+    from matplotlib.ticker import Formatter
+
+    class Comma(Formatter):
+        """The axis's own labels, the decimal point a comma."""
+
+        def __init__(self, inner: Formatter):
+            self.inner = inner
+
+        def __call__(self, x, pos=None):
+            return self.inner(x, pos).replace(".", ",")
+
+        def format_ticks(self, values):
+            return [t.replace(".", ",") for t in self.inner.format_ticks(values)]
+
+        def get_offset(self):
+            return self.inner.get_offset().replace(".", ",")
+
+    import textwrap
+    for t in fig.findobj(Text):
+        if t.get_text():
+            t.set_text(say(t.get_text(), lang))
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_formatter(Comma(axis.get_major_formatter()))
+            axis.set_minor_formatter(Comma(axis.get_minor_formatter()))
+        room = ax.get_window_extent(renderer)
+        for t, span in ((ax.title, room.width), (ax.xaxis.label, room.width), (ax.yaxis.label, room.height)):
+            box = t.get_window_extent(renderer)
+            wide = max(box.width, box.height) if t is ax.yaxis.label else box.width
+            if wide > span:                  # a longer title or axis label: wrapped to the axes' size
+                text = t.get_text()
+                t.set_text(textwrap.fill(text, max(int(len(text) * span / wide), 16)))
+        legend = ax.get_legend()
+        if legend is not None and legend.get_window_extent(renderer).width > room.width:
+            texts = legend.get_texts()       # longer entries: one column, where they cover least
+            ax.legend(legend.legend_handles, [t.get_text() for t in texts], fontsize=texts[0].get_fontsize(),
+                      ncol=1)
+    fig.tight_layout()
 
 
 def setting(r: Row, lang: str) -> str:
