@@ -150,6 +150,15 @@ def test_a_section_in_ukrainian_keeps_no_english_word(stability_rows):
     assert {r["section"] for r in cam} == {"cam"} and {"exact", "graphical", "failure"} <= {r["method"] for r in cam}
 
 
+def test_another_packages_error_stays_as_it_said_it():
+    """Only the program's own words change language: a failed package's message keeps every word."""
+    said = "ValueError: the set of roots is empty near the view of a roller"
+    row = {"section": "external", "method": "pylinkage", "setting": "four_bar positions N=360 (Linkage.step)",
+           "time_s": None, "max_error_pct": None, "note": f"{word('bench failed', 'en')} {said}"}
+    uk = bench.summary([row], "uk").splitlines()[1]
+    assert uk.endswith(f"{word('bench failed', 'uk')} {said}") and "four_bar" not in uk
+
+
 def test_unknown_section_is_one_line_in_the_language(capsys):
     from graphplan.cli.main import main
     assert main(["bench", "--section", "nope", "--lang", "uk", "-o", "/nonexistent/x"]) == 2
