@@ -103,12 +103,7 @@ def _text(dwg, prim: Primitive, h: float):
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
     size with their baselines shifted by dy (and stacked ones moved back by dx), the arrow → in a
     font that has it."""
-    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1 \
-            and (len(lettering(prim.text)) == 1 or (prim.size >= 5.0 and prim.anchor == "middle")):
-        # a single letter, a centred caption: one x, its own anchor
-        return dwg.text(lettering(prim.text), insert=_xy(prim.points[0], h), font_size=_f(em(prim.size)),
-                        font_family=FONT, text_anchor=prim.anchor, fill="black")
-    if is_plain(prim.text) and not _MISSING.search(prim.text) and len(kerned(prim.text, prim.size)) == 1:
+    if is_plain(prim.text) and not _MISSING.search(prim.text):
         drawn = lettering(prim.text)
         x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
             plain_width(prim.text, prim.size)
@@ -138,8 +133,10 @@ def _text(dwg, prim: Primitive, h: float):
 
 
 def _xs(drawn: str, size: float, x0: float) -> str:
-    """Each letter's x: ``x0`` plus the width of the letters before it."""
-    return " ".join(_f(x0 + plain_width(drawn[:i], size)) for i in range(len(drawn)))
+    """Each letter's x: ``x0`` plus the width of the letters up to it and its own kern, less its own
+    advance."""
+    return " ".join(_f(x0 + plain_width(drawn[:i + 1], size) - plain_width(drawn[i], size))
+                    for i in range(len(drawn)))
 
 
 def _nbsp(drawn: str) -> str:

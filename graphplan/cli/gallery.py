@@ -128,13 +128,20 @@ def zones_svg() -> str:
 
 
 def write_metrics() -> Path:
-    """graphplan/data/fonts/metrics.json from the packaged fonts (graphic.record.metrics_from_fonts)."""
+    """graphplan/data/fonts/metrics.json from the packaged fonts (graphic.record.metrics_from_fonts), and
+    fallback.json from the fallback font when installed (graphic.record.fallback_from_font)."""
     import json
 
     from graphplan.graphic.record import METRICS, metrics_from_fonts
     from graphplan.util.files import write_atomic
+    from graphplan.graphic.record import FALLBACK, fallback_font, fallback_from_font
     text = json.dumps(metrics_from_fonts(), ensure_ascii=False, sort_keys=True, separators=(",", ":"))
-    return write_atomic(ROOT / "graphplan" / "data" / "fonts" / METRICS, text)
+    out = write_atomic(ROOT / "graphplan" / "data" / "fonts" / METRICS, text)
+    font = fallback_font()          # kept as committed on a machine without the fallback font
+    if font:
+        text = json.dumps(fallback_from_font(font), ensure_ascii=False, sort_keys=True, separators=(",", ":"))
+        write_atomic(ROOT / "graphplan" / "data" / "fonts" / FALLBACK, text)
+    return out
 
 
 def main(argv: list[str] | None = None) -> int:

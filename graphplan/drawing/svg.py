@@ -11,7 +11,7 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering,
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, SCRIPT_SPACE, em, kern, kerned, lettering,
                                       plain_width, run_offsets, sub_kern)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
@@ -155,9 +155,9 @@ _MISSING = re.compile(f"([{MISSING}])")
 
 @lru_cache(maxsize=65536)
 def _plain_set(text: str, size: float) -> str | None:
-    """The lettering of a text set in one piece (no markup, no character from the symbols' font, no
-    comma set apart), else None."""
-    if is_plain(text) and not _MISSING.search(text) and len(kerned(text, size)) == 1:
+    """The lettering of a text set in one piece (no markup, no character from the symbols' font),
+    else None."""
+    if is_plain(text) and not _MISSING.search(text):
         return lettering(text)
     return None
 
@@ -171,14 +171,18 @@ _FONT_ATTR = _attr_escape(FONT)
 
 
 def glyph_xs(drawn: str, size: float, x0: float) -> list[float]:
-    """Where each character of ``drawn`` (lettering, one piece set without kerning) starts, mm: from
-    ``x0`` by the packaged font's advances × the em (graphic.record.plain_width, metrics.json)."""
+    """Where each character of ``drawn`` (lettering) starts, mm: from ``x0`` by the packaged font's
+    advances × the em and the pairs ``kern`` sets apart or tucks in (graphic.record.plain_width,
+    metrics.json)."""
     advance, box = _advances_em()
     k = em(size)
-    out, x = [], x0
+    out, x, prev = [], x0, ""
     for c in drawn:
+        if prev:
+            x += kern(prev, c, size)
         out.append(x)
         x += k * advance.get(c, box)
+        prev = c
     return out
 
 
@@ -203,28 +207,18 @@ def _kept_spaces(drawn: str) -> str:
     return "".join(out)
 
 
-WHOLE = 5.0     # mm: lettering this high (captions, headings) is anchored as a whole, lower letter by letter
-
-
 def _text(prim: Primitive, h: float, chars: list[str]) -> str:
     """A text element; the markup's sub- and superscripts (util.markup) as <tspan>s at 0.7 of the
     size with their baselines shifted by dy, the arrow → in a font that has it.
 
-    Every character of lettering lower than ``WHOLE`` is placed at its own x, where the packaged
-    font's advances put it (``glyph_xs``), the text anchored at its start: a viewer that letters with
-    another font — Inkscape, rsvg, cairosvg, ImageMagick ignore the embedded @font-face and fall back
-    to a wider sans — still sets each word where it was measured, so nothing laid out clear of
-    lettering runs into it. (A ``textLength`` would not do: cairosvg ignores it.) A single letter and
-    a centred caption or heading keep one x and their anchor: the fallback grows them about where
-    they stand, and with the font a viewer sets them as before (letter by letter, a 5 mm «Група»
-    would stand 0.25 mm off cairo's own setting — where the ink check splits its Г from its р)."""
+    Every character of a lettering is placed at its own x, where the packaged font's advances put
+    it (``glyph_xs``), the text anchored at its start: a viewer that letters with another font —
+    Inkscape, rsvg, cairosvg, ImageMagick ignore the embedded @font-face and fall back to a wider
+    sans — still sets each letter where it was measured, so nothing laid out clear of lettering
+    runs into it, and a caption keeps its measured width; the layout keeps lines clear of the
+    union of both fonts' glyph boxes (graphic.record.ink_boxes, fallback.json). (A ``textLength``
+    would not do: cairosvg ignores it.)"""
     drawn = _plain_set(prim.text, prim.size)
-    if drawn is not None and (len(drawn) == 1 or (prim.size >= WHOLE and prim.anchor == "middle")):
-        chars.append(drawn)
-        x, y = _xy(prim.points[0], h)
-        head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
-                f'text-anchor="{prim.anchor}" x="{x}" y="{y}"')
-        return f"{head}>{_text_escape(drawn)}</text>"
     if drawn is not None:         # the attributes in svgwrite's (sorted) order
         chars.append(drawn)
         x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
@@ -272,9 +266,13 @@ def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float,
     out = []
     pen = start = 0.0
     base = ("", size)        # the last letter set on the baseline, and its size
+    level = 0
     for run in runs(text):
         s = size * SMALL if run.level else size
         x = start if run.stacked else pen
+        if not run.stacked and run.level == 0 and level and run.text:
+            x += SCRIPT_SPACE * em(size)         # the base letters clear of the index before them
+        level = run.level
         if run.level == -1 and not run.stacked and base[0] and run.text:
             x += sub_kern(base[0], base[1], run.text[0], s)      # an index beside a P, Г, Т
         start = x

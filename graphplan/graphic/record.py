@@ -104,6 +104,8 @@ def lettering(text: str) -> str:
 FONTS = ("graphplan-symbols.ttf", "osifont.ttf")     # osifont's own glyphs win over the symbols'
 FOOT = 0.1        # ems: a glyph's "foot", its ink this low, is what a comma after it sits beside
 METRICS = "metrics.json"      # what the lettering needs of the fonts, read once from them (metrics_from_fonts)
+FALLBACK = "fallback.json"    # the ink boxes of the font a viewer letters with when it lacks ours (fallback_from_font)
+FALLBACK_FAMILY = "DejaVu Sans"   # the sheets' font-family's second name: Debian's and most viewers' sans
 
 
 def metrics_from_fonts() -> dict:
@@ -172,6 +174,59 @@ def _outline(gl, glyf, steps: int = 8) -> list[tuple[float, float]]:
     return out
 
 
+def fallback_font() -> str | None:
+    """The file of the fallback family (``FALLBACK_FAMILY``) on this machine, None when absent."""
+    import shutil
+    import subprocess
+    from pathlib import Path
+    known = Path("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf")
+    if known.is_file():
+        return str(known)
+    if shutil.which("fc-match"):
+        out = subprocess.run(["fc-match", "-f", "%{family}\t%{file}", FALLBACK_FAMILY],
+                             capture_output=True, text=True, check=False).stdout
+        family, _, file = out.partition("\t")
+        if family.split(",")[0] == FALLBACK_FAMILY and Path(file).is_file():
+            return file
+    return None
+
+
+def fallback_from_font(path: str) -> dict:
+    """The fallback font's ink boxes in ems (x_min, y_min, x_max, y_max from the baseline at the
+    glyph's origin) for every character the packaged fonts letter (``metrics_from_fonts``): a
+    viewer without our font (Inkscape, rsvg, cairosvg, ImageMagick ignore the embedded @font-face)
+    letters each character with this one at the x our font's advances gave it (drawing.svg), at
+    the same em — so a label kept clear of lines by the union of both boxes is clear in either.
+    Stored in ``fallback.json`` (tests/test_gallery.py checks it against the font when installed)."""
+    from fontTools.ttLib import TTFont
+    ours = _metrics()["boxes"]
+    boxes: dict[str, list[float] | None] = {}
+    with TTFont(path) as font:
+        em, glyf, cmap = font["head"].unitsPerEm, font["glyf"], font.getBestCmap()
+        for c in sorted(ours):
+            g = cmap.get(ord(c))
+            if g is None:
+                continue
+            gl = glyf[g]
+            if not getattr(gl, "numberOfContours", 0):
+                boxes[c] = None
+                continue
+            boxes[c] = [round(v / em, 9) for v in (gl.xMin, gl.yMin, gl.xMax, gl.yMax)]
+    return {"family": FALLBACK_FAMILY, "boxes": boxes}
+
+
+@lru_cache(maxsize=1)
+def _fallback() -> dict[str, list[float] | None]:
+    import json
+    from importlib import resources
+    path = resources.files("graphplan") / "data" / "fonts" / FALLBACK
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))["boxes"]
+    except OSError:               # a checkout without the derived file: the font itself, or none
+        font = fallback_font()
+        return fallback_from_font(font)["boxes"] if font else {}
+
+
 @lru_cache(maxsize=1)
 def _metrics() -> dict:
     import json
@@ -197,12 +252,26 @@ APART = 1.0         # mm: a comma that cannot join its letter stands this far cl
 ENOUGH = 0.9        # … unless it already stands this far
 
 
+BARRED = "Г"        # a capital whose bar hangs over all of its right side …
+UNDER = "авгдежзиклмнопрстухцчшщъыьэюяєacemnopqrsuvwxyz"   # … and the small letters (no ascender, no dot) that tuck under it
+UNDER_BAR = 0.08    # ems: how far it tucks in, its ink then beginning where the bar ends (osifont leaves 0.09 em:
+                    # at 5 mm a gap the eye, and the ink check, take for a word break; Cyrillic fonts kern Гр, Га 60–100/1000)
+
+
+SCRIPT_SPACE = 0.1    # ems: a thin space between an index and the base letters after it (twice TeX's \scriptspace):
+                      # "μ_φ·H" reads as two factors, the dot not tucked against the φ
+
+
 @lru_cache(maxsize=65536)
 def kern(prev: str, c: str, size: float) -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
     near the baseline on its right (°, Г, Т, P, 7 …) stands apart from it, beside its box rather
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
-    the degree sign reads as a stray mark. Nothing otherwise (the font sets text by its advances)."""
+    the degree sign reads as a stray mark. A small letter after Г tucks under its bar
+    (``UNDER_BAR``), the pair osifont does not kern. Nothing otherwise (the font sets text by its
+    advances)."""
+    if prev and c in UNDER and prev in BARRED:
+        return -UNDER_BAR * em(size)
     if c not in LOW or not prev.strip():
         return 0.0
     m = _metrics()
@@ -238,8 +307,17 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
 @lru_cache(maxsize=1)
 def _glyph_boxes() -> dict[str, tuple[float, float, float, float] | None]:
     """Each character's ink box in ems, (x_min, y_min, x_max, y_max) from the baseline at its origin,
-    as the packaged fonts draw it (None: a blank, such as the space)."""
-    return {c: (tuple(b) if b is not None else None) for c, b in _metrics()["boxes"].items()}
+    where the packaged fonts or the fallback a viewer without them letters with (``fallback_from_font``)
+    put ink — the union of both boxes (None: a blank, such as the space)."""
+    other = _fallback()
+    out: dict[str, tuple[float, float, float, float] | None] = {}
+    for c, b in _metrics()["boxes"].items():
+        f = other.get(c)
+        if b is None or f is None:
+            out[c] = tuple(b) if b is not None else None
+        else:
+            out[c] = (min(b[0], f[0]), min(b[1], f[1]), max(b[2], f[2]), max(b[3], f[3]))
+    return out
 
 
 @lru_cache(maxsize=16384)
@@ -285,7 +363,7 @@ def _ink_extent(text: str, size: float) -> tuple[float, float, float, float] | N
 @lru_cache(maxsize=1)
 def cap_height() -> float:
     """The lettering font's capitals' height in ems (osifont's H: 0.737)."""
-    return _glyph_boxes()["H"][3]
+    return _metrics()["boxes"]["H"][3]
 
 
 def em(size: float) -> float:
@@ -304,21 +382,23 @@ def line_pitch(size: float) -> float:
 @lru_cache(maxsize=32768)
 def plain_width(text: str, size: float) -> float:
     """Width of ``text`` taken literally (no markup): the sum of the packaged font's advance widths ×
-    the em (cairo sets text by advances, without kerning), a missing character as the font's box."""
+    the em and of ``kern``'s pairs (every letter is set at its own x, drawing.svg), a missing
+    character as the font's box."""
     advance, box = _advances()
     drawn = lettering(text)
     return em(size) * sum(advance.get(c, box) for c in drawn) + sum(
-        kern(a, b, size) for a, b in zip(drawn, drawn[1:]) if b in LOW)
+        kern(a, b, size) for a, b in zip(drawn, drawn[1:]))
 
 
 def kerned(text: str, size: float) -> list[tuple[str, float]]:
-    """The drawn text (``lettering``) cut where ``kern`` adds space: (piece, extra space before it)."""
+    """The drawn text (``lettering``) cut where ``kern`` adds or takes space: (piece, extra space
+    before it, negative where a letter tucks in)."""
     drawn = lettering(text)
     out: list[tuple[str, float]] = []
     start, extra = 0, 0.0
     for i in range(1, len(drawn)):
-        k = kern(drawn[i - 1], drawn[i], size) if drawn[i] in LOW else 0.0
-        if k > 0:
+        k = kern(drawn[i - 1], drawn[i], size)
+        if k:
             out.append((drawn[start:i], extra))
             start, extra = i, k
     out.append((drawn[start:], extra))
@@ -333,6 +413,7 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
     x = 0.0
     start = 0.0
     prev: tuple[str, float] = ("", size)
+    level = 0
     for r in runs(text):
         s = size * SMALL if r.level else size
         if r.stacked:
@@ -340,7 +421,10 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
         else:
             if r.level == -1 and prev[0] and r.text:
                 x += sub_kern(prev[0][-1], prev[1], r.text[0], s)     # an index beside a P, Г, Т
+            if r.level == 0 and level and r.text:
+                x += SCRIPT_SPACE * em(size)
             x0 = start = x
+        level = r.level
         shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
         if r.level == 0:
             prev = (r.text, s)

@@ -47,8 +47,13 @@ def _line(rec: Record, a, b, thick: bool) -> None:
 def _text(rec: Record, x: float, y: float, text: str, size: float = 2.5, anchor: str = "middle",
           row: bool = False) -> None:
     """A text at baseline y — or, ``row``, centred in the 5 mm row whose bottom is y (its capitals
-    and descenders clear of both rules)."""
+    and descenders clear of both rules); a centred one centred by its ink (either font's,
+    ``Primitive.ink``), so that it stands clear of both sides of its cell as ``_fit`` measured."""
     if text:
+        if anchor == "middle":
+            from graphplan.graphic.record import Primitive
+            b = Primitive("text", ((0.0, 0.0),), text=text, size=size, anchor="middle").ink()
+            x -= (b[0] + b[2]) / 2
         rec.label((x, y + 2.5 - 0.35 * size if row else y), text, size=size, anchor=anchor, layer="frame")
 
 
