@@ -379,14 +379,14 @@ def _override_columns(table) -> set[str]:
 
 
 def cmd_check(args: argparse.Namespace) -> int:
-    from graphplan.teach.grading import grade, load_keys, read_student, report_table, write_json
+    from graphplan.teach.grading import grade, load_keys, read_student, write_json, write_table
     keys = load_keys(args.key)
     rows = read_student(args.student)
     graded = grade(keys, rows, signed=args.signed)
     if args.json:
         write_json(sys.stdout, graded, args.key, args.student, args.signed)
     else:
-        sys.stdout.write(report_table(graded, args.key, args.student, lang_of(args)))
+        write_table(sys.stdout, graded, args.key, args.student, lang_of(args))
     return 0
 
 

@@ -92,16 +92,23 @@ def read_student(path: str | Path) -> list[Row]:
                                  f"(missing {need!r})", str(path))
     col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
     rows = []
-    for line_no, cells in records[1:]:
+    one: dict[str, str] = {}         # a table's variants, positions and quantities repeat: one string each
+    for i in range(1, len(records)):
+        line_no, cells = records[i]
+
         def cell(name: str) -> str:
             k = col.get(name)
             return cells[k].strip() if k is not None and k < len(cells) else ""
+
+        def once(name: str) -> str:
+            text = cell(name)
+            return one.setdefault(text, text)
         if split_comma(cells, col["value"], delimiter):
             _split(cells, col["value"], line_no, path)
         value = _number(cell("value"), delimiter, line_no, path, "value", col["value"])
-        position = cell("position")
+        position = once("position")
         _position_number(position, delimiter, line_no, path, col["position"])
-        rows.append(Row(line_no, cell("variant"), position, cell("quantity"), value))
+        rows.append(Row(line_no, once("variant"), position, once("quantity"), value))
     return rows
 
 
@@ -164,7 +171,8 @@ def _wide(records, header, delimiter, path: Path) -> list[Row]:
     from graphplan.teach.tables import split_comma
     names = [h.strip() for h in records[0][1]]
     rows = []
-    for line_no, cells in records[1:]:
+    for i in range(1, len(records)):
+        line_no, cells = records[i]
         for k in range(len(cells) - 1):       # a value spilled into an unnamed column: "7,2" → 7 | 2
             if not (names[k + 1] if k + 1 < len(names) else "") and k not in (pos, var) \
                     and split_comma(cells, k, delimiter):
@@ -505,15 +513,22 @@ def _roots_variant(st: Study, grid: np.ndarray, curves: list, targets: list[floa
             part_rows = rows[first:first + chunk]
             part = np.asarray([targets[k] for k in part_rows])
             y = curve[None, :] - part[:, None]
-            sgn = np.where(np.abs(y) <= tol, 0.0, np.sign(y))
-            row, idx = np.nonzero(sgn[:, :-1] * sgn[:, 1:] < 0)          # row-major: grouped by target
+            # the signs as masks (a byte a sample, not float signs and their products): a sample
+            # within tol is 0, "touched"; a sign change is + then − or − then +
+            near = np.abs(y) <= tol
+            above = ~near & (y > 0)
+            below = ~near & (y < 0)
+            crosses = (above[:, :-1] & below[:, 1:]) | (below[:, :-1] & above[:, 1:])
+            del above, below
+            row, idx = np.nonzero(crosses)                                 # row-major: grouped by target
+            del crosses
             found_rows.append(part_rows[row])
             found_lo.append(grid[idx])
             found_hi.append(grid[idx + 1])
             found_flo.append(y[row, idx])
             found_goal.append(part[row])
             found_q.append(np.full(len(row), qi))
-            touch_row, touch_idx = np.nonzero(sgn[:, :-1] == 0)
+            touch_row, touch_idx = np.nonzero(near[:, :-1])
             for r, i in zip(part_rows[touch_row], touch_idx):
                 touched.setdefault(int(r), [])
                 touched[int(r)].append(grid[i])
@@ -594,27 +609,36 @@ def write_json(out, graded: list[Graded], key_path: str, student_path: str, sign
 
 
 def report_table(graded: list[Graded], key_path: str, student_path: str, lang: str = "uk") -> str:
-    """The graded rows as a table for people, then the summary; in ``lang``."""
+    """The graded rows as a table for people, then the summary; in ``lang`` (``write_table``'s text)."""
+    import io
+    out = io.StringIO()
+    write_table(out, graded, key_path, student_path, lang)
+    return out.getvalue()
+
+
+def write_table(out, graded: list[Graded], key_path: str, student_path: str, lang: str = "uk") -> None:
+    """``report_table`` written line by line to ``out``: the columns' widths in a first pass over the
+    rows, each line formatted again as it is written; the same text without 100 000 rows' cells,
+    lines and their joined copy in memory at once (~100 MB)."""
     head = word("grade head", lang).split("|")
-    cells = []
+    cells = _Cells(lang)
+    widths = [len(h) for h in head[:-1]]
     for g in graded:
-        cells.append([str(g.row.line), g.row.variant, g.row.position, g.row.quantity,
-                      "" if g.row.value is None else num(g.row.value, lang, 6),
-                      num(g.exact, lang) if g.exact is not None else "",
-                      fixed(g.error_pct, lang, 1, plus=True) if g.error_pct is not None else
-                      ("—" if g.exact is not None else ""),
-                      num(g.tolerance_pct, lang) if g.tolerance_pct is not None else "",
-                      {"pass": word("pass", lang), "fail": word("fail", lang), "unknown": "?"}[g.status],
-                      g.says(lang)])
-    widths = [max(len(r[i]) for r in cells + [head]) for i in range(len(head) - 1)]
+        for i, c in enumerate(cells(g)[:len(widths)]):
+            if len(c) > widths[i]:
+                widths[i] = len(c)
     right = {0, 2, 4, 5, 6, 7}
-    lines = [word("graded against", lang, student=student_path, key=key_path)]
-    for r in [head] + cells:
+
+    def line(r: list[str]) -> str:
         parts = [(c.rjust(w) if i in right else c.ljust(w)) for i, (c, w) in enumerate(zip(r, widths))]
-        lines.append("  ".join(parts + [r[-1]]).rstrip())
+        return "  ".join(parts + [r[-1]]).rstrip() + "\n"
+    out.write(word("graded against", lang, student=student_path, key=key_path) + "\n")
+    out.write(line(head))
+    for g in graded:
+        out.write(line(cells(g)))
     s = summary(graded)
     rate = f"{num(s['pass_pct'], lang)} %" if s["pass_pct"] is not None else "—"
-    lines.append("")
+    lines = [""]
     lines.append(word("grade summary", lang, rows=s["rows"], passed=s["passed"], failed=s["failed"],
                       unknown=s["unknown"], rate=rate, other=s["other_position"]))
     if len(s["variants"]) > 1:
@@ -624,4 +648,32 @@ def report_table(graded: list[Graded], key_path: str, student_path: str, lang: s
                               rate=rate)
                          + (word("grade variant unknown", lang, n=c["unknown"]) if c["unknown"] else "")
                          + (word("grade variant other", lang, n=c["other_position"]) if c["other_position"] else ""))
-    return "\n".join(lines) + "\n"
+    out.write("\n".join(lines) + "\n")
+
+
+class _Cells:
+    """A graded row's cells in ``lang``: line, variant, position, quantity, value, exact, δ %,
+    tolerance, verdict, note. The key's exact values and tolerances repeat over a table's rows and
+    are formatted once."""
+
+    def __init__(self, lang: str) -> None:
+        self.lang = lang
+        self.verdict = {"pass": word("pass", lang), "fail": word("fail", lang), "unknown": "?"}
+        self.known: dict[float, str] = {}
+
+    def _num(self, v: float) -> str:
+        text = self.known.get(v)
+        if text is None:
+            text = self.known[v] = num(v, self.lang)
+        return text
+
+    def __call__(self, g: Graded) -> list[str]:
+        lang = self.lang
+        return [str(g.row.line), g.row.variant, g.row.position, g.row.quantity,
+                "" if g.row.value is None else num(g.row.value, lang, 6),
+                self._num(g.exact) if g.exact is not None else "",
+                fixed(g.error_pct, lang, 1, plus=True) if g.error_pct is not None else
+                ("—" if g.exact is not None else ""),
+                self._num(g.tolerance_pct) if g.tolerance_pct is not None else "",
+                self.verdict[g.status],
+                g.says(lang)]

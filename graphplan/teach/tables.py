@@ -49,11 +49,12 @@ def _decode(data: bytes, encoding: str, where: str) -> str:
                              "save it as CSV UTF-8", where) from None
 
 
-def read_rows(path: str | Path, what: str = "student table") -> tuple[list[tuple[int, list[str]]], str]:
+def read_rows(path: str | Path, what: str = "student table") -> tuple[Records, str]:
     """The table's non-empty, non-comment lines as (line number, cells), and the separator.
 
     The separator is the header's: ``;``, else a tab, else ``,``. Quotes must close; every row has
-    at most as many cells as the header."""
+    at most as many cells as the header (the first unclosed quote is named, else the first row too
+    wide). The rows are checked here and split into cells again as they are read (``Records``)."""
     data = read_bytes(path, what, MAX_TABLE_BYTES)
     where = str(path)
     text = decode(data, where)
@@ -61,29 +62,50 @@ def read_rows(path: str | Path, what: str = "student table") -> tuple[list[tuple
         raise GraphplanError(f"the {what} is not text (it holds zero bytes)", where)
     # lines end as a file's lines do (\n, \r\n, \r): str.splitlines would also break at U+2028, a
     # form feed or U+0085 and number the lines past the file's end; those stay in their cells
-    numbered = [(n + 1, line) for n, line in enumerate(_LINES.split(text))
-                if line.strip() and not line.lstrip().startswith("#")]
-    if not numbered:
+    lines = _LINES.split(text)
+    del data, text
+    kept = [n for n, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")]
+    if not kept:
         raise GraphplanError(f"the {what} is empty", where)
-    if len(numbered) > MAX_ROWS + 1:
-        raise GraphplanError(f"the {what} has {len(numbered) - 1} rows; at most {MAX_ROWS} are graded "
+    if len(kept) > MAX_ROWS + 1:
+        raise GraphplanError(f"the {what} has {len(kept) - 1} rows; at most {MAX_ROWS} are graded "
                              "at once (split the table)", where)
-    header = numbered[0][1]
+    header = lines[kept[0]]
     delimiter = ";" if ";" in header else "\t" if "\t" in header else ","
-    rows = []
-    for line_no, line in numbered:
+    records = Records(lines, kept, delimiter)
+    width, wide = None, None
+    for k in range(len(kept)):
         try:
-            cells = next(csv.reader([line], delimiter=delimiter, strict=True))
+            count = len(records[k][1])
         except csv.Error:
-            raise GraphplanError(f"line {line_no}: a quote is not closed", where) from None
-        rows.append((line_no, cells))
-    width = len(rows[0][1])
-    for line_no, cells in rows[1:]:
-        if len(cells) > width:
-            hint = (" — a decimal comma in a comma-separated table? Separate with ';' or write 7.2"
-                    if delimiter == "," else "")
-            raise GraphplanError(f"line {line_no}: {len(cells)} cells for {width} columns{hint}", where)
-    return rows, delimiter
+            raise GraphplanError(f"line {kept[k] + 1}: a quote is not closed", where) from None
+        if width is None:
+            width = count
+        elif count > width and wide is None:
+            wide = (kept[k] + 1, count)
+    if wide is not None:
+        hint = (" — a decimal comma in a comma-separated table? Separate with ';' or write 7.2"
+                if delimiter == "," else "")
+        raise GraphplanError(f"line {wide[0]}: {wide[1]} cells for {width} columns{hint}", where)
+    return records, delimiter
+
+
+class Records:
+    """A table's kept lines as (line number, cells), split into cells when read: 100 000 rows held
+    as their lines (~10 MB), not as lists of cells besides (~40 MB)."""
+
+    def __init__(self, lines: list[str], kept: list[int], delimiter: str) -> None:
+        self._lines, self._kept, self.delimiter = lines, kept, delimiter
+
+    def __len__(self) -> int:
+        return len(self._kept)
+
+    def __getitem__(self, k: int) -> tuple[int, list[str]]:
+        n = self._kept[k]
+        return n + 1, next(csv.reader([self._lines[n]], delimiter=self.delimiter, strict=True))
+
+    def __iter__(self):
+        return (self[k] for k in range(len(self._kept)))
 
 
 def number(text: str, delimiter: str) -> float:
