@@ -42,6 +42,42 @@ def test_font_metrics_are_the_fonts():
     assert stored == json.loads(json.dumps(metrics_from_fonts()))
 
 
+def test_fallback_boxes_are_the_fallback_font():
+    """graphplan/data/fonts/fallback.json (the glyph boxes of the font a viewer without ours letters
+    with, which the layout keeps lines clear of) is what that font says, where it is installed."""
+    import json
+
+    from graphplan.graphic.record import FALLBACK, fallback_font, fallback_from_font
+    font = fallback_font()
+    if font is None:
+        pytest.skip("the fallback font (DejaVu Sans) is not installed")
+    stored = json.loads((ROOT / "graphplan" / "data" / "fonts" / FALLBACK).read_text(encoding="utf-8"))
+    assert stored == json.loads(json.dumps(fallback_from_font(font)))
+
+
+def test_a_label_keeps_clear_of_either_fonts_ink():
+    """A label's ink box (what lines are kept clear of) holds both fonts' glyphs set at our font's
+    advances: DejaVu Sans's wider "м" and "=" reach past osifont's, and the box reaches them."""
+    from fontTools.ttLib import TTFont
+
+    from graphplan.graphic.record import Primitive, em, fallback_font
+    from graphplan.drawing.svg import glyph_xs
+    font = fallback_font()
+    if font is None:
+        pytest.skip("the fallback font (DejaVu Sans) is not installed")
+    text, size = "мм = 4", 3.5
+    ink = Primitive("text", ((0.0, 0.0),), text=text, size=size).ink()
+    with TTFont(font) as f:
+        upem, glyf, cmap = f["head"].unitsPerEm, f["glyf"], f.getBestCmap()
+        for c, x in zip(text, glyph_xs(text, size, 0.0)):
+            g = glyf[cmap[ord(c)]]
+            if not getattr(g, "numberOfContours", 0):
+                continue
+            x0, x1 = x + g.xMin / upem * em(size), x + g.xMax / upem * em(size)
+            assert ink[0] - 1e-9 <= x0 and x1 <= ink[2] + 1e-9, (c, x0, x1, ink)
+            assert g.yMax / upem * em(size) <= ink[3] + 1e-9
+
+
 def test_the_composition_picture_is_current():
     """docs/composition/zones.svg (the shaper's sheet with each drawing's box) is redrawn from the
     example."""

@@ -34,18 +34,36 @@ def gallery_files() -> list[str]:
     return out
 
 
-def ink_overprints(names: list[str]) -> dict[str, list]:
+FALLBACK_ONLY = """<?xml version="1.0"?><!DOCTYPE fontconfig SYSTEM "fonts.dtd">
+<fontconfig><dir>{folder}</dir><cachedir>{cache}</cachedir>
+<include ignore_missing="yes">/etc/fonts/conf.d</include></fontconfig>"""
+
+
+def ink_overprints(names: list[str], font: bool = True, tmp=None) -> dict[str, list]:
     """Each committed gallery sheet's overprinted words (tests/inkcheck.py), rendered in a fresh
-    process with the packaged fonts registered before cairo draws anything."""
+    process with the packaged fonts registered before cairo draws anything — or, ``font=False``,
+    as a viewer without them does: a fontconfig that knows only the fallback family's folder
+    (DejaVu Sans, the sheets' font-family's second name), nothing registered."""
     code = ("import json, sys\n"
             f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
-            "from graphplan.drawing.fonts import register\n"
-            "register()\n"
-            "from inkcheck import overprinted\n"
+            + ("from graphplan.drawing.fonts import register\nregister()\n" if font else "")
+            + "from inkcheck import overprinted\n"
             f"names = {names!r}\n"
             f"print(json.dumps({{n: overprinted(open({str(ROOT / 'drawings')!r} + '/' + n, encoding='utf-8').read())"
             " for n in names}))\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    env = None
+    if not font:
+        import os
+        from pathlib import Path
+
+        from graphplan.graphic.record import fallback_font
+        file = fallback_font()
+        if file is None:
+            pytest.skip("the fallback font (DejaVu Sans) is not installed")
+        conf = Path(tmp) / "fonts.conf"
+        conf.write_text(FALLBACK_ONLY.format(folder=Path(file).parent, cache=Path(tmp) / "cache"), encoding="utf-8")
+        env = dict(os.environ, FONTCONFIG_FILE=str(conf))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True, env=env)
     return json.loads(done.stdout)
 
 
@@ -65,6 +83,53 @@ def test_no_word_on_a_gallery_sheet_is_overprinted(names):
     """Counted on the rendered sheet, as a reader's eye (and ../shared/tools/overprint.py) does."""
     found = ink_overprints(names)
     assert {n: words for n, words in found.items() if words} == {}
+
+
+WITHOUT_FONT = ["shaper_forces.svg", "lab_crank_slider_a3-2.svg", "slotter_dynamics.svg", "cam_translating.svg"]
+
+
+@pytest.mark.parametrize("names", [WITHOUT_FONT] + [
+    pytest.param(chunk, marks=pytest.mark.slow)
+    for chunk in (lambda rest: [rest[k:k + 6] for k in range(0, len(rest), 6)])(
+        [n for n in gallery_files() if n not in WITHOUT_FONT])], ids=lambda names: names[0])
+def test_no_word_is_overprinted_without_the_font(names, tmp_path):
+    """The same count where a viewer letters the sheet with the fallback font (Inkscape, rsvg,
+    cairosvg and ImageMagick ignore the embedded @font-face): every letter stands where our font
+    put it, and nothing was laid out within either font's glyph box — in the default run the
+    sheets with the most lettering of each kind (a force sheet, an A3 set's crowded page, a
+    dynamics sheet, a cam sheet), the whole gallery in the slow one."""
+    found = ink_overprints(names, font=False, tmp=tmp_path)
+    assert {n: words for n, words in found.items() if words} == {}
+
+
+def test_the_fallback_check_sees_a_caption_set_as_one_piece(tmp_path):
+    """Not vacuous: the A3 set's lettering set in one piece each, centred (as a viewer sets it
+    without the font when the SVG gives one x, as the sheets did before), runs into lines."""
+    name = "lab_crank_slider_a3-2.svg"
+    svg = (ROOT / "drawings" / name).read_text(encoding="utf-8")
+
+    def centred(m: re.Match) -> str:
+        xs = [float(v) for v in m.group(2).split()]
+        return f'{m.group(1)}text-anchor="middle" x="{(xs[0] + xs[-1]) / 2:.3f}"'
+    one = re.sub(r'(<text [^>]*?)text-anchor="start" x="([\d.]+(?: [\d.]+)+)"', centred, svg)
+    assert one != svg
+    (tmp_path / "one").mkdir()
+    code = ("import sys\n"
+            f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
+            "from inkcheck import overprinted\n"
+            "print(len(overprinted(sys.stdin.read())))\n")
+    from graphplan.graphic.record import fallback_font
+    if fallback_font() is None:
+        pytest.skip("the fallback font (DejaVu Sans) is not installed")
+    import os
+    from pathlib import Path
+    conf = tmp_path / "fonts.conf"
+    conf.write_text(FALLBACK_ONLY.format(folder=Path(fallback_font()).parent, cache=tmp_path / "cache"), encoding="utf-8")
+    env = dict(os.environ, FONTCONFIG_FILE=str(conf))
+    run = lambda text: int(subprocess.run([sys.executable, "-c", code], input=text, capture_output=True, text=True,
+                                          cwd=ROOT, check=True, env=env).stdout)
+    assert run(svg) == 0
+    assert run(one) > 0
 
 
 @pytest.mark.parametrize("scene,kind,lang,name,fmt", available())
@@ -466,3 +531,29 @@ def test_a3_set_fills_its_sheets_in_order(name):
     assert first[0].name == "position plan"
     b = first[0].record.bounds()
     assert len(first) >= 2 or b[3] - b[1] >= (y1 - y0) / 2, [p.name for p in first]
+
+
+def test_lettering_reads_as_words_wherever_it_stands():
+    """A heading «Група II(2–3)», a table's title and a product of indexed factors, each drawn at 25
+    sub-pixel offsets and counted as the reader's eye does (tests/inkcheck.py): no letter splits off
+    its word into another's box — the Г's small letter kerned under its bar, a thin space after an
+    index (graphic.record.UNDER_BAR, SCRIPT_SPACE)."""
+    code = ("import json, sys\n"
+            f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
+            "from graphplan.drawing.fonts import register\n"
+            "register()\n"
+            "from inkcheck import overprinted\n"
+            "from graphplan.graphic.record import Record\n"
+            "from graphplan.drawing.svg import render\n"
+            "bad = []\n"
+            "for i in range(5):\n"
+            "    for j in range(5):\n"
+            "        r = Record('t')\n"
+            "        r.label((5 + 0.05 * i, 30 + 0.05 * j), 'Група II(2–3)', size=5.0)\n"
+            "        r.label((5 + 0.05 * i, 20 + 0.05 * j), 'Таблиця 2. Гранична сила', size=5.0)\n"
+            "        r.label((5 + 0.05 * i, 10 + 0.05 * j), 'μ_A = μ_M·μ_φ·H = 24,75 Дж/мм', size=3.5)\n"
+            "        hits = overprinted(render(r, 120.0, 40.0, 't'))\n"
+            "        if hits: bad.append((i, j, hits))\n"
+            "print(json.dumps(bad))\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    assert json.loads(done.stdout) == []
