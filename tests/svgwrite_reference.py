@@ -10,8 +10,8 @@ import re
 
 from graphplan.drawing.svg import (ARROW_FONT, DASHES, FONT, MISSING, _f, arc_path, text_outline,
                                    typeset as _set)
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, em, kerned, lettering,
-                                      plain_width)
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, em, kerned, lettering,
+                                      plain_width, vector_arrow)
 from graphplan.util.markup import SMALL, is_plain
 
 _MISSING = re.compile(f"([{MISSING}])")
@@ -78,8 +78,8 @@ def _elements(dwg, prim: Primitive, h: float):
         yield dwg.line((x1, y1), (x2, y2), **_stroke(prim))
     elif k == "vector":
         a, b = prim.points
-        tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
-        yield dwg.line(_xy(a, h), _xy(tip[0], h), **_stroke(prim))
+        tip, end = vector_arrow(a, b, prim.line_width, prim.role == "head")
+        yield dwg.line(_xy(a, h), _xy(end, h), **_stroke(prim))
         yield dwg.polygon([_xy(p, h) for p in tip], fill="black", stroke="none")
     elif k in ("polyline", "polygon"):
         pts = [_xy(p, h) for p in prim.points]

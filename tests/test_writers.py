@@ -302,3 +302,26 @@ def test_key_sheet_letters_inside_the_frame_and_clear_of_each_other(keyset, lang
                 if q is not p:
                     b = q.ink()
                     assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (p.text, q.text)
+
+
+def test_arrowheads_read_at_a_glance():
+    """A thick vector's head is about three times its line wide (2 mm on 0.7 mm, 4 mm long) and its
+    shaft ends inside the head (the point sharp, no round cap past it); an arc's arrow (ω₁, the
+    balancing moment) a head 3 mm long on the arc, its tip at the arc's end — measured off the
+    rendered primitives."""
+    import math
+
+    from graphplan.graphic.record import arc_head, vector_arrow
+    a, b = (0.0, 0.0), (30.0, 40.0)
+    tip, end = vector_arrow(a, b, 0.7)
+    wide = math.dist(tip[1], tip[2])
+    assert wide >= 3 * 0.7 * 0.95 and tip[0] == b
+    base = ((tip[1][0] + tip[2][0]) / 2, (tip[1][1] + tip[2][1]) / 2)
+    assert math.isclose(math.dist(base, b), 4.0)
+    # the shaft's round cap (0.35 mm) ends inside the head, where the head is wider than the line
+    assert math.dist(end, b) - 0.35 > 0 and (math.dist(end, b) - 0.35) / 4.0 * wide > 0.7
+    tail, tip_ = arc_head(complex(0, 0), 9.0, 90.0, +1)
+    assert math.isclose(math.hypot(*tip_), 9.0) and math.isclose(tip_[1], 9.0)
+    assert math.isclose(math.hypot(*tail), 9.0) and tail[0] > 0       # back against the sense (ccw)
+    head, _ = vector_arrow(tail, tip_, 0.25, head=True)
+    assert math.dist(*head[1:]) >= 1.2 - 1e-9 and 2.9 < math.dist(tail, tip_) <= 3.0

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import io
 
-from graphplan.graphic.record import (DASHED_ROLES, LAYERS, Primitive, Record, arrowhead, lettering, run_offsets,
+from graphplan.graphic.record import (DASHED_ROLES, LAYERS, Primitive, Record, vector_arrow, lettering, run_offsets,
                                       text_width)
 from graphplan.util.markup import is_plain
 
@@ -78,9 +78,8 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
             msp.add_line(prim.points[0], prim.points[1], dxfattribs=attribs)
         elif k == "vector":
             a, b = prim.points
-            tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
-            base = ((tip[1][0] + tip[2][0]) / 2, (tip[1][1] + tip[2][1]) / 2)
-            msp.add_line(a, base, dxfattribs=attribs)
+            tip, end = vector_arrow(a, b, prim.line_width, prim.role == "head")
+            msp.add_line(a, end, dxfattribs=attribs)
             msp.add_solid([tip[0], tip[1], tip[2]], dxfattribs={"layer": prim.layer})
         elif k in ("polyline", "polygon"):
             msp.add_lwpolyline(prim.points, close=(k == "polygon"), dxfattribs=attribs)

@@ -11,7 +11,7 @@ import math
 
 from graphplan.drawing.labels import place_labels
 from graphplan.drawing.tables import table
-from graphplan.graphic.record import LabelRequest, Record, line_pitch, text_width
+from graphplan.graphic.record import LabelRequest, Record, arc_head, line_pitch, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
 from graphplan.exact.kinematics import dot
 from graphplan.model.mechanism import FRAME
@@ -366,9 +366,8 @@ def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: 
     start, end = (c - 45.0, c + 45.0) if omega > 0 else (c + 45.0, c - 45.0)
     rec.arc(_pt(z), r, min(start, end) % 360.0, min(start, end) % 360.0 + 90.0, role="relative",
             layer="mechanism", step=step)
-    tip = z + r * complex(math.cos(math.radians(end)), math.sin(math.radians(end)))
-    tangent = 1j * (tip - z) / r * (1 if omega > 0 else -1)
-    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="mechanism", step=step)
+    tail, tip = arc_head(z, r, end, 1 if omega > 0 else -1)
+    rec.vector(tail, tip, role="head", layer="mechanism", step=step)
     mid = z + r * complex(math.cos(away), math.sin(away))
     lab.place(mid, "ω_1", 3.5, mid - z, step)
 
@@ -399,11 +398,8 @@ def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, 
     a0, a1 = c - span / 2, c + span / 2
     rec.arc(_pt(z), r, a0 % 360.0, a0 % 360.0 + span, role="relative", layer="vectors", step=step,
             width=0.5)
-    end = math.radians(a1 if couple > 0 else a0)
-    tip = z + r * complex(math.cos(end), math.sin(end))
-    tangent = 1j * (tip - z) / r * (1 if couple > 0 else -1)
-    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="vectors", step=step,
-               text=name)
+    tail, tip = arc_head(z, r, a1 if couple > 0 else a0, 1 if couple > 0 else -1)
+    rec.vector(tail, tip, role="head", layer="vectors", step=step, text=name, width=0.5)
     return z + r * complex(math.cos(away), math.sin(away))
 
 

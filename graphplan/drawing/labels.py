@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphplan.graphic.record import LabelRequest, Primitive, Record, arrowhead
+from graphplan.graphic.record import LabelRequest, Primitive, Record, vector_arrow
 
 Box = tuple[float, float, float, float]
 
@@ -98,7 +98,7 @@ def strokes(p: Primitive) -> list[tuple[tuple[float, float], tuple[float, float]
     elif p.kind == "polygon":
         pts = pts + pts[:1]
     elif p.kind == "vector" and len(pts) == 2:
-        tip = arrowhead(pts[0], pts[1], length=3.0 if p.line_width >= 0.5 else 2.5)
+        tip, _ = vector_arrow(pts[0], pts[1], p.line_width, p.role == "head")
         out += [(tip[0], tip[1], 0.05), (tip[1], tip[2], 0.05), (tip[2], tip[0], 0.05)]
     out += [(a, b, hw) for a, b in zip(pts, pts[1:])]
     return out

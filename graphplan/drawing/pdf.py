@@ -22,7 +22,7 @@ import io
 import math
 from collections.abc import Sequence
 
-from graphplan.graphic.record import DASHED_ROLES, Primitive, Record, arrowhead, em, lettering
+from graphplan.graphic.record import DASHED_ROLES, Primitive, Record, em, lettering, vector_arrow
 from graphplan.drawing.svg import ARROW_FONT, DASHES, FONT, MISSING, placed
 from graphplan.util.markup import SMALL
 
@@ -108,9 +108,9 @@ class _Pen:
             self.stroke(prim)
         elif k == "vector":
             a, b = prim.points
-            tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
+            tip, end = vector_arrow(a, b, prim.line_width, prim.role == "head")
             ctx.move_to(*self.xy(a))
-            ctx.line_to(*self.xy(tip[0]))
+            ctx.line_to(*self.xy(end))
             self.stroke(prim)
             self.polygon(tip)
             ctx.fill()

@@ -7,7 +7,7 @@ import cmath
 import math
 
 from graphplan.util.markup import indexed
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
@@ -282,10 +282,8 @@ def omega_arrow(rec: Record, O: complex, r: float, omega: float) -> list[LabelRe
     start, end = (200.0, 290.0) if omega > 0 else (290.0, 200.0)
     rec.arc(_pt(O), rr, min(start, end), max(start, end), role="relative", layer="mechanism",
             step="the crank's rotation ω1")
-    tip = O + rr * cmath.exp(1j * math.radians(end))
-    tangent = 1j * (tip - O) / rr * (1 if omega > 0 else -1)
-    rec.vector(_pt(tip - 3.0 * tangent), _pt(tip), role="relative", layer="mechanism",
-               step="the crank's rotation ω1")
+    tail, tip = arc_head(O, rr, end, 1 if omega > 0 else -1)
+    rec.vector(tail, tip, role="head", layer="mechanism", step="the crank's rotation ω1")
     mid = O + rr * cmath.exp(1j * math.radians(245.0))
     return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False)]
 

@@ -11,8 +11,8 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, arrowhead, SCRIPT_SPACE, em, kern, kerned, lettering,
-                                      plain_width, run_offsets, sub_kern)
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, SCRIPT_SPACE, em, kern, kerned, lettering,
+                                      plain_width, run_offsets, sub_kern, vector_arrow)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
@@ -129,8 +129,8 @@ def _elements(prim: Primitive, h: float, chars: list[str]) -> list[str]:
         return [f'<line fill="none"{stroke} x1="{x1}" x2="{x2}" y1="{y1}" y2="{y2}" />']
     if k == "vector":
         a, b = prim.points
-        tip = arrowhead(a, b, length=3.0 if prim.line_width >= 0.5 else 2.5)
-        (x1, y1), (x2, y2) = _xy(a, h), _xy(tip[0], h)
+        tip, end = vector_arrow(a, b, prim.line_width, prim.role == "head")
+        (x1, y1), (x2, y2) = _xy(a, h), _xy(end, h)
         return [f'<line fill="none"{stroke} x1="{x1}" x2="{x2}" y1="{y1}" y2="{y2}" />',
                 f'<polygon fill="black" points="{_points(tip, h)}" stroke="none" />']
     if k in ("polyline", "polygon"):
