@@ -253,17 +253,24 @@ def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5,
     if not over(before):
         first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given)
         return first
-    tried = 0
+    tried, fallback = 0, None
     for n in finer(first.divisions, DYNAMICS_DIVISIONS[1]):
         f = construct(dyn, n, precision, L, H, slopes, size)
         tried += 1
         after = errors(f)
-        if over(after):
-            continue
-        if given:
-            first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, n, after, tried)
+        if not over(after):
+            break
+        if fallback is None and "flywheel" in over(before) and "flywheel" not in over(after):
+            fallback = (f, after)       # the answer within the limit, M*_d's short ordinate still not
+    else:
+        # no drawing has both: the first whose flywheel (the answer) is within, where one is — M*_d
+        # is read off the ray's height H·A_c/L, which no number of divisions makes longer
+        if fallback is None:
+            first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, tried=tried)
             return first
-        f.redrawn = Redrawing(first.divisions, n, before, after, None, tried=tried)
-        return f
-    first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, tried=tried)
-    return first
+        f, after = fallback
+    if given:
+        first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, f.divisions, after, tried)
+        return first
+    f.redrawn = Redrawing(first.divisions, f.divisions, before, after, None, tried=tried)
+    return f

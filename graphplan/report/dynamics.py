@@ -219,9 +219,10 @@ def redrawn_note(f, lang: str) -> str | None:
                            "ΔT(φ) and I^*_m(φ) change inside an interval"))
         return (f"Діаграми побудовано заново на {rd.divisions} поділках замість {rd.first}: з {rd.first} графічний "
                 f"маховик відхилявся на {e0} — понад 5{NB}% лабораторної, бо {why}; з {rd.divisions} — "
-                f"{_errs(rd.after, lang)}" if uk else
+                f"{_errs(rd.after, lang)}{_short(f, lang)}" if uk else
                 f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the graphical flywheel "
-                f"was {e0} off — over the lab's 5{NB}%, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}")
+                f"was {e0} off — over the lab's 5{NB}%, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}"
+                f"{_short(f, lang)}")
     if rd.given:
         src = ({"scene": "задано в сцені ([dynamics] divisions)", "option": "задано параметром --divisions"}[rd.given]
                if uk else {"scene": "given by the scene ([dynamics] divisions)",
@@ -237,6 +238,19 @@ def redrawn_note(f, lang: str) -> str | None:
             f"графічного маховика ({e0}) в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
             f"error ({e0}) within the lab's 5{NB}%: the {rd.first} divisions stay")
+
+
+def _short(f, lang: str) -> str:
+    """Where M*_d stays past the limit on the redrawn drawing: its ordinate, too short for the ruler
+    at any number of divisions (markup; empty otherwise)."""
+    if "driving" not in over(f.redrawn.after):
+        return ""
+    mm = NB + ("мм" if lang == "uk" else "mm")
+    h, p = num(f.Md, lang, 3), num(f.precision, lang)
+    return (f"; M^*_д лишається поза 5{NB}%: його ордината H·A_с/L = {h}{mm} закоротка для лінійки {p}{mm} за будь-якої "
+            "кількості поділок" if lang == "uk" else
+            f"; M^*_d stays past 5{NB}%: its ordinate H·A_c/L = {h}{mm} is too short for a {p}{mm} ruler at any number "
+            "of divisions")
 
 
 PROTRACTOR_DEG = 5.0      # °: a tangent angle below this is laid off by its slope, not with a protractor
