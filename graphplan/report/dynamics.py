@@ -148,14 +148,16 @@ def dynamics_table(f, lang: str = "uk") -> str:
                    f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
     fw = doc["flywheel"]
     exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
+    none = "не потрібен" if lang == "uk" else "not needed"
+    val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
     motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:48} {exact}",
-            f"  {w['graph']:48} {fw['graphical']:10.4f}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"  {w['graph']:48} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-            f"  {w['approx']:48} {fw['approximate']:10.4f}  {_pct(fw['approximate_error_pct'])}",
-            f"  {w['merk']:48} {fw['merkalov']:10.4f}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {w['approx']:48} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
+            f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
             f"  {w['motor_fl']:48} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     out += [f"  {plain(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
@@ -221,7 +223,7 @@ def redrawn_note(f, lang: str) -> str | None:
                 f"маховик відхилявся на {e0} — понад 5{NB}% лабораторної, бо {why}; з {rd.divisions} — "
                 f"{_errs(rd.after, lang)}{_short(f, lang)}" if uk else
                 f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the graphical flywheel "
-                f"was {e0} off — over the lab's 5{NB}%, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}"
+                f"was {e0} off — over the 5{NB}% the lab accepts, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}"
                 f"{_short(f, lang)}")
     if rd.given:
         src = ({"scene": "задано в сцені ([dynamics] divisions)", "option": "задано параметром --divisions"}[rd.given]
@@ -237,7 +239,7 @@ def redrawn_note(f, lang: str) -> str | None:
     return (f"Жодна побудова заново на більшій кількості поділок (кратній {rd.first}, до 360) не зводить похибку "
             f"графічного маховика ({e0}) в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
-            f"error ({e0}) within the lab's 5{NB}%: the {rd.first} divisions stay")
+            f"error ({e0}) within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
 
 
 def _short(f, lang: str) -> str:
