@@ -236,10 +236,18 @@ def redrawn_note(f, lang: str) -> str | None:
                     f"the graphical flywheel would be {_errs(rd.better_errors, lang)} off")
         return (f"Кількість поділок ({rd.first}) {src}; жодна більша (до 360) не дає похибки в межах 5{NB}%" if uk else
                 f"The {rd.first} divisions are {src}; no more divisions (up to 360) bring the error within 5{NB}%")
+    if "flywheel" not in over(rd.before):      # the answer within, M*_d's ordinate too short for the ruler
+        mm = NB + ("мм" if uk else "mm")
+        h, p, e = num(f.Md, lang, 3), num(f.precision, lang), _signed(rd.before["driving"], lang)
+        md = "M^*_д" if uk else "M^*_d"
+        return (f"Графічний {md} відхиляється на {e}{NB}%: його ордината H·A_с/L = {h}{mm} закоротка для лінійки "
+                f"{p}{mm}; більше поділок (кратних {rd.first}, до 360) цього не виправляє — залишено {rd.first}" if uk
+                else f"The graphical {md} is {e}{NB}% off: its ordinate H·A_c/L = {h}{mm} is too short for a {p}{mm} "
+                f"ruler; more divisions (multiples of {rd.first}, up to 360) do not help — the {rd.first} stay")
     return (f"Жодна побудова заново на більшій кількості поділок (кратній {rd.first}, до 360) не зводить похибку "
-            f"графічного маховика ({e0}) в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
+            f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
-            f"error ({e0}) within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+            f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
 
 
 def _short(f, lang: str) -> str:
