@@ -191,7 +191,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
              w["turn"].format(phi0=fixed(doc["start_phi_deg"], lang, 1))]
-    said = [line for line in (redrawn_note(f, lang),) if line]
+    said = []
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
@@ -200,6 +200,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
         if fw[key] is not None and abs(fw[key]) > LAB_LIMIT:
             said.append(w["mark"] + w[why].format(e=fmt(fw[key], lang, 3), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
+    said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     m = doc["motor"]
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"], p=fmt(m["power_kW"], lang),
