@@ -426,13 +426,14 @@ def dynamics(scene=None, delta: float | None = None, divisions: int | None = Non
     """The exact dynamics (δ: the scene's [dynamics] delta, else 0.04) and the flywheel's graphical
     construction over ``divisions`` of the turn read with a ruler of ``precision`` mm."""
     from graphplan.exact.dynamics import analyse, check_divisions
-    from graphplan.graphic.flywheel import construct
+    from graphplan.graphic.flywheel import redrawn
     from graphplan.sheets.dynamics import dynamics_scales
     if divisions is not None:
         check_divisions(divisions)
     st = _study_of(scene)
     dyn = analyse(st, delta)
-    return Dynamics(construct(dyn, divisions, precision, **dynamics_scales(st, dyn, "A1", divisions, precision)), lang)
+    return Dynamics(redrawn(dyn, divisions, precision, given="option" if divisions is not None else None,
+                            **dynamics_scales(st, dyn, "A1", divisions, precision)), lang)
 
 
 def sheet(scene=None, kind: str = "kinematics", format: str = "A1", lang: str = "uk",

@@ -210,7 +210,7 @@ def test_every_value_of_a_dimensional_quantity_has_its_unit(sheets, key):
             m = NUMBER.match(parts[-1].strip())
             if m is None or m.group(1).startswith(UNITS):
                 continue
-            symbol = parts[0].split()[-1] if parts[0].split() else ""
+            symbol = parts[0].split()[-1].lstrip("(") if parts[0].split() else ""   # "(δ = …)" is δ
             if symbol not in DIMENSIONLESS:
                 bare.append(clause)
     assert bare == []

@@ -41,7 +41,7 @@ def register(sub) -> None:
 def cmd_dynamics(args: argparse.Namespace) -> int:
     from graphplan.cli.common import dumps, lang_arg, lang_of, load_study
     from graphplan.exact.dynamics import analyse, check_delta, check_divisions
-    from graphplan.graphic.flywheel import construct
+    from graphplan.graphic.flywheel import redrawn
     from graphplan.report.dynamics import dynamics_json, dynamics_table
     if not math.isfinite(args.precision) or args.precision < 0:
         raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {args.precision:g}")
@@ -55,8 +55,10 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
     from graphplan.sheets.dynamics import dynamics_scales     # the construction the sheet draws
-    f = construct(dyn, args.divisions, args.precision,
-                  **dynamics_scales(st, dyn, args.format or "A1", args.divisions, args.precision))
+    # as the sheet draws it: redrawn on more divisions where the first drawing is past the lab's 5 %
+    # (graphic.flywheel.redrawn), unless --divisions (or the scene) gives them
+    f = redrawn(dyn, args.divisions, args.precision, given="option" if args.divisions is not None else None,
+                **dynamics_scales(st, dyn, args.format or "A1", args.divisions, args.precision))
     args.lang = lang_of(args, st)
     if args.svg:
         write_svg(f, args.svg, args.lang)

@@ -27,14 +27,16 @@ WORDS = {
     "uk": {"moments": "Зведені моменти сил опору і рушійних сил", "work": "Роботи сил опору і рушійних сил",
            "energy": "Зміна кінетичної енергії ΔT = A_д − A_с", "inertia": "Зведений момент інерції механізму",
            "witt": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість кривошипа ω(φ) за оберт",
-           "classical": "сталий M^*_д, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²",
+           "classical": "сталий M^*_д, маховик точно", "motor": "двигун {name}, маховик {fl} кг·м²", "motor_none": "двигун {name}, маховик не потрібен",
+           "classical_none": "сталий M^*_д, маховик не потрібен",
            "mm": "мм", "Nm": "Н·м", "J": "Дж", "kgm2": "кг·м²", "rad": "рад", "s": "с",
            "kl": "|kl| = {kl} мм", "axis": "вісь ΔT", "Mc": "M^*_с", "Md": "M^*_д", "Ac": "A_с", "Ad": "A_д",
            "Im": "I^*_м"},
     "en": {"moments": "Reduced moments of the resistance and driving forces", "work": "Work of the resistance and driving forces",
            "energy": "Change of kinetic energy ΔT = A_d − A_c", "inertia": "Reduced moment of inertia of the mechanism",
            "witt": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) over a turn",
-           "classical": "constant M^*_d, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²",
+           "classical": "constant M^*_d, exact flywheel", "motor": "motor {name}, flywheel {fl} kg·m²", "motor_none": "motor {name}, no flywheel needed",
+           "classical_none": "constant M^*_d, no flywheel needed",
            "mm": "mm", "Nm": "N·m", "J": "J", "kgm2": "kg·m²", "rad": "rad", "s": "s",
            "kl": "|kl| = {kl} mm", "axis": "ΔT axis", "Mc": "M^*_c", "Md": "M^*_d", "Ac": "A_c", "Ad": "A_d",
            "Im": "I^*_m"},
@@ -218,9 +220,10 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     dyn = f.dyn
     L = width or f.L
     rec = Record(w["speed"])
-    curves = [(dyn.motion, "curve", w["classical"]),
-              (dyn.motor_motion, "projection", w["motor"].format(name=dyn.drive.motor.name,
-                                                              fl=fmt(dyn.motor_flywheel, lang)))]
+    motor = (w["motor"].format(name=dyn.drive.motor.name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
+             else w["motor_none"].format(name=dyn.drive.motor.name))     # δ < the request without one: beside it
+    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"]),
+              (dyn.motor_motion, "projection", motor)]
     lo = min(float(np.min(m.omega)) for m, _, _ in curves)
     hi = max(float(np.max(m.omega)) for m, _, _ in curves)
     pad = 0.08 * (hi - lo)

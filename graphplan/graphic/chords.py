@@ -53,14 +53,43 @@ def spline_moments(x: np.ndarray, y: np.ndarray, period: float
     ys = np.append(y, y[0])
     h = np.diff(xs)
     d = np.diff(ys) / h
-    A = np.zeros((n, n))
     idx = np.arange(n)
     prev = (idx - 1) % n
+    if n > DENSE_MAX:
+        M = _cyclic_solve(h[prev], 2 * (h[prev] + h), h, 6 * (d - d[prev]))
+        return xs, ys, h, np.append(M, M[0])
+    A = np.zeros((n, n))
     A[idx, prev] += h[prev]
     A[idx, idx] += 2 * (h[prev] + h)
     A[idx, (idx + 1) % n] += h
     M = np.linalg.solve(A, 6 * (d - d[prev]))
     return xs, ys, h, np.append(M, M[0])
+
+
+DENSE_MAX = 64    # the cyclic system solved densely up to this size (n³, fast and bit-stable when small)
+
+
+def _cyclic_solve(lower: np.ndarray, diag: np.ndarray, upper: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """The cyclic tridiagonal system lower_i·M_{i−1} + diag_i·M_i + upper_i·M_{i+1} = rhs_i (indices
+    mod n) in O(n): the tridiagonal part by scipy's banded solver, the two corner entries by the
+    Sherman–Morrison formula (A = B + u·vᵀ, u = (γ, 0 … 0, c), v = (1, 0 … 0, a/γ), γ = −diag_0)."""
+    from scipy.linalg import solve_banded
+    n = len(diag)
+    a, c = lower[0], upper[-1]                 # A[0, n−1] and A[n−1, 0]
+    gamma = -diag[0]
+    band = np.zeros((3, n))
+    band[0, 1:] = upper[:-1]
+    band[1] = diag
+    band[1, 0] -= gamma
+    band[1, -1] -= c * a / gamma
+    band[2, :-1] = lower[1:]
+    u = np.zeros(n)
+    u[0], u[-1] = gamma, c
+    y = solve_banded((1, 1), band, rhs)
+    z = solve_banded((1, 1), band, u)
+    vy = y[0] + a / gamma * y[-1]
+    vz = z[0] + a / gamma * z[-1]
+    return y - z * vy / (1.0 + vz)
 
 
 def _piece(xs: np.ndarray, period: float, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -24,7 +24,8 @@ The course's slopes drop the δ²/4 of ω²_max,min = ω_m²(1 ± δ/2)²; ``slo
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -64,6 +65,7 @@ class Flywheel:
     I: np.ndarray               # I*_m read, mm (N + 1)
     tangent: dict[str, float]   # slopes tg ψ (mm/mm), the intercepts k, l (mm), the touching points
     kl: float                   # |kl| read, mm
+    redrawn: Any = field(default=None)   # Redrawing: how ``redrawn`` chose the divisions (None: not asked)
 
     # -- results ----------------------------------------------------------------------------------
     @property
@@ -171,3 +173,104 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     kl = float(read(tg["k"] - tg["l"], precision))
     return Flywheel(dyn, n, L, H, precision, slopes, mu_M, mu_phi, mu_A, mu_I, x, turn, at.moment, at.inertia,
                     at.d_inertia, M, M_mid, A_drawn, A, float(read(A_drawn[-1] * H / L, precision)), dT, I, tg, kl)
+
+
+# -- redrawn with more divisions until right ------------------------------------------------------
+
+LAB_LIMIT = 5.0      # %: what the lab accepts of the graphical flywheel and M*_d (graphic.diagrams.LAB_LIMIT)
+
+
+def errors(f: Flywheel) -> dict[str, float]:
+    """The construction's errors the lab judges, in %: the graphical flywheel against the exact one
+    (NaN where none is needed: no percent of 0) and the graphical M*_d (the ray's height on the
+    moment diagram) against A_c/2π."""
+    exact_md = f.dyn.cycle.driving
+    return {"flywheel": f.error_pct(f.flywheel),
+            "driving": 100.0 * (f.driving - exact_md) / exact_md if exact_md else math.nan}
+
+
+def over(errs: dict[str, float], limit: float = LAB_LIMIT) -> tuple[str, ...]:
+    """The keys of ``errs`` past the lab's limit (NaN is not judged)."""
+    return tuple(k for k, v in errs.items() if math.isfinite(v) and abs(v) > limit)
+
+
+def finer(first: int, top: int) -> list[int]:
+    """The divisions a redrawing tries: the first drawing's multiplied by 2, 3, 4 … up to ``top``
+    (the scene's positions stay among the divisions, each interval split equally)."""
+    return [first * k for k in range(2, top // first + 1)]
+
+
+@dataclass(frozen=True)
+class Redrawing:
+    """What ``redrawn`` did: the first drawing's divisions and errors (``errors``), the drawn one's;
+    ``given`` — the divisions were given (``"scene"`` its [dynamics] divisions, ``"option"`` the
+    command's --divisions) and kept, ``better``/``better_errors`` then the first finer drawing that
+    would be within the lab's limit (None: none up to the bound); ``tried`` the finer drawings
+    constructed."""
+    first: int
+    divisions: int
+    before: dict[str, float]
+    after: dict[str, float]
+    given: str | None = None
+    better: int | None = None
+    better_errors: dict[str, float] | None = None
+    tried: int = 0
+
+    @property
+    def needed(self) -> bool:
+        """The first drawing was past the lab's limit."""
+        return bool(over(self.before))
+
+    @property
+    def right(self) -> bool:
+        """The drawing kept is within the lab's limit."""
+        return not over(self.after)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"needed": self.needed, "right": self.right, "first_divisions": self.first,
+                "divisions": self.divisions, "given": self.given, "errors_before": dict(self.before),
+                "errors_after": dict(self.after), "better_divisions": self.better,
+                "better_errors": None if self.better_errors is None else dict(self.better_errors),
+                "tried": self.tried}
+
+
+def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
+            H: float | None = None, slopes: str = "course", size: float = 1.0,
+            given: str | None = None) -> Flywheel:
+    """The construction a student hands in: drawn with ``divisions`` (``construct``); where its
+    graphical flywheel or M*_d is past the lab's 5 % (``errors``), drawn again with more divisions —
+    the first's × 2, × 3 … up to bounds.DYNAMICS_DIVISIONS (``finer``) — and the first within the
+    limit taken, as a student redraws a diagram whose intervals are too coarse for the curves (a
+    reduced moment that jumps inside an interval: the chords' middle ordinates miss the jump).
+    ``given`` (``"scene"``, ``"option"``): the divisions were asked for and are kept — the finer
+    drawing that would be right is found for the note only. Nothing within the bound right: the
+    first drawing stays. ``redrawn`` on the result says what was done."""
+    from graphplan.model.bounds import DYNAMICS_DIVISIONS
+    if given is None and divisions is None and "divisions" in dyn.study.mech.task.flywheel:
+        given = "scene"
+    first = construct(dyn, divisions, precision, L, H, slopes, size)
+    before = errors(first)
+    if not over(before):
+        first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given)
+        return first
+    tried, fallback = 0, None
+    for n in finer(first.divisions, DYNAMICS_DIVISIONS[1]):
+        f = construct(dyn, n, precision, L, H, slopes, size)
+        tried += 1
+        after = errors(f)
+        if not over(after):
+            break
+        if fallback is None and "flywheel" in over(before) and "flywheel" not in over(after):
+            fallback = (f, after)       # the answer within the limit, M*_d's short ordinate still not
+    else:
+        # no drawing has both: the first whose flywheel (the answer) is within, where one is — M*_d
+        # is read off the ray's height H·A_c/L, which no number of divisions makes longer
+        if fallback is None:
+            first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, tried=tried)
+            return first
+        f, after = fallback
+    if given:
+        first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, f.divisions, after, tried)
+        return first
+    f.redrawn = Redrawing(first.divisions, f.divisions, before, after, None, tried=tried)
+    return f

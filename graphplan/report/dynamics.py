@@ -12,6 +12,8 @@ import numpy as np
 
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import plain
+from graphplan.graphic.flywheel import over
+from graphplan.util.words import num
 
 
 def _clean(doc: Any) -> Any:
@@ -79,6 +81,8 @@ def dynamics_json(f) -> dict[str, Any]:
             "total_exact": dyn.flywheel_total, "total_graphical": f.total,
             "rotor_reduced": dr.rotor_reduced, "reducer_reduced": dr.reducer_reduced,
             "kl_mm": f.kl, "k_mm": tg["k"], "l_mm": tg["l"], "slopes": f.slopes,
+            "tg_psi_max": tg["s_max"], "tg_psi_min": tg["s_min"],
+            "redrawn": None if f.redrawn is None else f.redrawn.to_json(),
             "psi_max_deg": math.degrees(math.atan(tg["s_max"])), "psi_min_deg": math.degrees(math.atan(tg["s_min"])),
             "motor": dyn.motor_flywheel},
         "motion": _motion(dyn.motion, every),
@@ -123,7 +127,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
     """The readable tables."""
     doc = dynamics_json(f)
     w = WORDS[lang]
-    out = [w["title"].format(scene=doc["scene"]), ""]
+    mech = f.dyn.study.mech
+    out = [w["title"].format(scene=mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title)), ""]
     s = doc["scales"]
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
@@ -142,14 +147,20 @@ def dynamics_table(f, lang: str = "uk") -> str:
                    f"{p['moment_resistance']:9.3f} {p['moment_driving']:8.3f} {p['work_resistance']:9.3f} "
                    f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
     fw = doc["flywheel"]
+    exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
+    none = "не потрібен" if lang == "uk" else "not needed"
+    val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
-            f"  {w['exact']:48} {fw['exact']:10.4f}",
-            f"  {w['graph']:48} {fw['graphical']:10.4f}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"  {w['exact']:48} {exact}",
+            f"  {w['graph']:48} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-            f"  {w['approx']:48} {fw['approximate']:10.4f}  {_pct(fw['approximate_error_pct'])}",
-            f"  {w['merk']:48} {fw['merkalov']:10.4f}  {_pct(fw['merkalov_error_pct'])}",
-            f"  {w['motor_fl']:48} {fw['motor']:10.4f}",
+            f"  {w['approx']:48} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
+            f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {w['motor_fl']:48} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
+    out += [f"  {plain(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
     m = doc["motor"]
     out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
             f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
@@ -167,3 +178,120 @@ def dynamics_table(f, lang: str = "uk") -> str:
 
 def _pct(v: float | None) -> str:
     return "—" if v is None else f"{v:+.3f} %"
+
+
+# -- the notes the terminal and the sheet share -----------------------------------------------------
+
+NB = "\u00a0"     # a no-break space: a number stays on its line with its unit (the notes are wrapped)
+
+
+def _signed(v: float, lang: str) -> str:
+    text = num(v, lang, 3)
+    return text.replace("-", "−") if text.startswith("-") or text in ("0", "—") else "+" + text
+
+
+def _errs(e: dict[str, float], lang: str) -> str:
+    """"+7,09 % (M^*_д +5,94 %)": the flywheel's error, M*_d's beside it (markup)."""
+    md = "M^*_д" if lang == "uk" else "M^*_d"
+    parts = []
+    if math.isfinite(e.get("flywheel", math.nan)):
+        parts.append(f"{_signed(e['flywheel'], lang)}{NB}%")
+    if math.isfinite(e.get("driving", math.nan)):
+        parts.append(f"{md}{NB}{_signed(e['driving'], lang)}{NB}%")
+    if len(parts) == 2:
+        return f"{parts[0]} ({parts[1]})"
+    return parts[0] if parts else "—"
+
+
+def redrawn_note(f, lang: str) -> str | None:
+    """What graphic.flywheel.redrawn did, in one line (markup), or None where the first drawing was
+    within the lab's 5 %: redrawn on more divisions (which, instead of which, the errors before and
+    after); the given divisions kept (and which would be right); or nothing within the bound right."""
+    rd = f.redrawn
+    if rd is None or not rd.needed:
+        return None
+    uk = lang == "uk"
+    e0 = _errs(rd.before, lang)
+    if rd.divisions != rd.first:
+        # M*_d off: the chords' middle ordinates missed how M*_c changes inside an interval (its work);
+        # else the curves ΔT(φ), I*(φ) the Wittenbauer diagram joins change inside one
+        moment = "driving" in over(rd.before)
+        why = (("M^*_с змінюється всередині інтервалу" if moment else "ΔT(φ) та I^*_м(φ) змінюються всередині інтервалу")
+               if uk else ("M^*_c changes inside an interval" if moment else
+                           "ΔT(φ) and I^*_m(φ) change inside an interval"))
+        return (f"Діаграми побудовано заново на {rd.divisions} поділках замість {rd.first}: з {rd.first} графічний "
+                f"маховик відхилявся на {e0} — понад 5{NB}% лабораторної, бо {why}; з {rd.divisions} — "
+                f"{_errs(rd.after, lang)}{_short(f, lang)}" if uk else
+                f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the graphical flywheel "
+                f"was {e0} off — over the 5{NB}% the lab accepts, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}"
+                f"{_short(f, lang)}")
+    if rd.given:
+        src = ({"scene": "задано в сцені ([dynamics] divisions)", "option": "задано параметром --divisions"}[rd.given]
+               if uk else {"scene": "given by the scene ([dynamics] divisions)",
+                           "option": "given by --divisions"}[rd.given])
+        if rd.better is not None:
+            return (f"Кількість поділок ({rd.first}) {src}, тому діаграми не побудовано заново; на {rd.better} поділках "
+                    f"графічний маховик відхилявся б на {_errs(rd.better_errors, lang)}" if uk else
+                    f"The {rd.first} divisions are {src}, so the diagrams are not redrawn; on {rd.better} divisions "
+                    f"the graphical flywheel would be {_errs(rd.better_errors, lang)} off")
+        return (f"Кількість поділок ({rd.first}) {src}; жодна більша (до 360) не дає похибки в межах 5{NB}%" if uk else
+                f"The {rd.first} divisions are {src}; no more divisions (up to 360) bring the error within 5{NB}%")
+    if "flywheel" not in over(rd.before):      # the answer within, M*_d's ordinate too short for the ruler
+        mm = NB + ("мм" if uk else "mm")
+        h, p, e = num(f.Md, lang, 3), num(f.precision, lang), _signed(rd.before["driving"], lang)
+        md = "M^*_д" if uk else "M^*_d"
+        return (f"Графічний {md} відхиляється на {e}{NB}%: його ордината H·A_с/L = {h}{mm} закоротка для лінійки "
+                f"{p}{mm}; більше поділок (кратних {rd.first}, до 360) цього не виправляє — залишено {rd.first}" if uk
+                else f"The graphical {md} is {e}{NB}% off: its ordinate H·A_c/L = {h}{mm} is too short for a {p}{mm} "
+                f"ruler; more divisions (multiples of {rd.first}, up to 360) do not help — the {rd.first} stay")
+    return (f"Жодна побудова заново на більшій кількості поділок (кратній {rd.first}, до 360) не зводить похибку "
+            f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
+            f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
+            f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+
+
+def _short(f, lang: str) -> str:
+    """Where M*_d stays past the limit on the redrawn drawing: its ordinate, too short for the ruler
+    at any number of divisions (markup; empty otherwise)."""
+    if "driving" not in over(f.redrawn.after):
+        return ""
+    mm = NB + ("мм" if lang == "uk" else "mm")
+    h, p = num(f.Md, lang, 3), num(f.precision, lang)
+    return (f"; M^*_д лишається поза 5{NB}%: його ордината H·A_с/L = {h}{mm} закоротка для лінійки {p}{mm} за будь-якої "
+            "кількості поділок" if lang == "uk" else
+            f"; M^*_d stays past 5{NB}%: its ordinate H·A_c/L = {h}{mm} is too short for a {p}{mm} ruler at any number "
+            "of divisions")
+
+
+PROTRACTOR_DEG = 5.0      # °: a tangent angle below this is laid off by its slope, not with a protractor
+RUN_MM = 100.0            # mm: the run along the I* axis over which the slope's rise is given
+
+
+def tangents_note(f, lang: str) -> str | None:
+    """How the Wittenbauer tangents are drawn where ψ is too small for a protractor (below
+    ``PROTRACTOR_DEG``): by their slope tg ψ — the rise over ``RUN_MM`` of the I* axis — moved
+    parallel until they touch the curve, and where they cut the ΔT axis: k, l and |kl| in mm (markup)."""
+    tg = f.tangent
+    if math.degrees(math.atan(abs(tg["s_min"]))) >= PROTRACTOR_DEG:
+        return None
+    uk = lang == "uk"
+    mm = NB + ("мм" if uk else "mm")
+    run = num(RUN_MM, lang)
+    hi, lo = (num(RUN_MM * tg[key], lang, 3).replace("-", "−") for key in ("s_max", "s_min"))
+    k, l = (num(tg[key], lang, 3).replace("-", "−") for key in ("k", "l"))
+    kl = num(f.kl, lang)
+    im = "I^*_м" if uk else "I^*_m"
+    if uk:
+        return (f"ψ замалі для транспортира: дотичні проводять за tg ψ (на {run}{mm} осі {im} підйом {hi}{mm} при "
+                f"ψ_{{max}}, {lo}{mm} при ψ_{{min}}), переносячи паралельно до дотику з кривою; на осі ΔT вони "
+                f"відтинають k{NB}={NB}{k}{mm} і l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
+    return (f"ψ is too small for a protractor: the tangents are drawn by tg ψ (a rise of {hi}{mm} at ψ_{{max}}, {lo}{mm} "
+            f"at ψ_{{min}} over {run}{mm} of the {im} axis), moved parallel until they touch the curve; they cut the "
+            f"ΔT axis at k{NB}={NB}{k}{mm} and l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
+
+
+def not_needed(delta_without: float, delta: float, lang: str) -> str:
+    """"не потрібен (δ = 0,0236 < 0,03)": a flywheel no method needs, with the δ the machine keeps
+    without one against the δ asked for."""
+    return (f"не потрібен (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
+            f"not needed (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})")

@@ -10,9 +10,9 @@ from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, ce
 from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.flywheel import Flywheel, construct
+from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record
-from graphplan.report.dynamics import dynamics_json
+from graphplan.report.dynamics import dynamics_json, not_needed, redrawn_note, tangents_note
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -52,7 +52,8 @@ WORDS = {
            "weak": "Двигун {name}: P_н = {p} кВт менша за потрібну за правилом P = M^*_{{с max}}·ω_1/η = {need} кВт",
            "weak_cell": "{p} (< {need})", "mark": "* — ",
            "open": "незамкнення |ω(2π) − ω(0)|/ω_m = {c}",
-           "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм) — більше поділок зменшить її",
+           "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
+           "not": "не потрібен", "negative": "{v} кг·м² ≤ 0: маховик не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
            "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M^*_c(φ), M^*_d and the work A_c(φ), A_d(φ) "
@@ -73,7 +74,8 @@ WORDS = {
            "weak": "Motor {name}: P_n = {p} kW is below the power rule P = M^*_{{c max}}·ω_1/η = {need} kW",
            "weak_cell": "{p} (< {need})", "mark": "* — ",
            "open": "closure |ω(2π) − ω(0)|/ω_m = {c}",
-           "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler); more divisions reduce it",
+           "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler)",
+           "not": "not needed", "negative": "{v} kg·m² ≤ 0: no flywheel is needed",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
@@ -114,12 +116,17 @@ def flywheel_table(doc: dict, lang: str) -> Record:
 
     def pct(v: float | None) -> str:          # over the lab's 5 %: marked, the notes say why
         return "—" if v is None else fmt(v, lang, 3) + ("*" if abs(v) > LAB_LIMIT else "")
+    def value(v: float) -> str:               # a method's J no larger than rotor and reducer: none needed
+        return fmt(v, lang) if v > 0 else w["not"]
+    exact = (fmt(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
+    motor = (fmt(fw["motor"], lang) if fw["motor"] > 0 else
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
-            [w["exact"], fmt(fw["exact"], lang), "0" if fw["exact"] > 0 else "—"],
-            [w["graph"], fmt(fw["graphical"], lang), pct(fw["error_pct"])],
-            [w["approx"], fmt(fw["approximate"], lang), pct(fw["approximate_error_pct"])],
-            [w["merk"], fmt(fw["merkalov"], lang), pct(fw["merkalov_error_pct"])],
-            [w["motor_fl"], fmt(fw["motor"], lang), ""]]
+            [w["exact"], exact, "0" if fw["exact"] > 0 else "—"],
+            [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
+            [w["approx"], value(fw["approximate"]), pct(fw["approximate_error_pct"])],
+            [w["merk"], value(fw["merkalov"]), pct(fw["merkalov_error_pct"])],
+            [w["motor_fl"], motor, ""]]
     return table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
 
 
@@ -178,7 +185,9 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
              f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(s['mu_A'], lang)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang)}²·"
              f"{num(doc['delta'], lang)}) = {num(f.total, lang)} {kgm2}; {fl} = J − {rot}·i² − {red} = "
-             f"{num(f.flywheel, lang)} {kgm2}",
+             + (f"{num(f.flywheel, lang)} {kgm2}" if f.flywheel > 0 else
+                w["negative"].format(v=num(f.total - f.dyn.constant, lang))),
+             *[line for line in (tangents_note(f, lang),) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
              w["turn"].format(phi0=fixed(doc["start_phi_deg"], lang, 1))]
@@ -191,6 +200,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
         if fw[key] is not None and abs(fw[key]) > LAB_LIMIT:
             said.append(w["mark"] + w[why].format(e=fmt(fw[key], lang, 3), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
+    said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     m = doc["motor"]
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"], p=fmt(m["power_kW"], lang),
@@ -214,10 +224,19 @@ def _tables(doc: dict, lang: str, factor: float) -> list[tuple[str, Record]]:
             (("positions table", positions_table), ("flywheel table", flywheel_table), ("motor table", motor_table))]
 
 
-def _drawn(dyn, args, L: float, size: float, lang: str) -> tuple[Flywheel, dict[str, Record]]:
-    """The construction at (L, size) and its drawings captioned, ω(φ) at its smallest (``_speed``
-    grows it into its zone once the composition is chosen)."""
-    f = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
+def _built(dyn, args, L: float, size: float) -> Flywheel:
+    """The construction at (L, size): redrawn on more divisions where the first drawing's flywheel
+    or M*_d is past the lab's 5 % (graphic.flywheel.redrawn; divisions the scene or the command
+    gives are kept)."""
+    divisions = getattr(args, "divisions", None)
+    return redrawn(dyn, divisions, args.precision, L=L, size=size,
+                   given="option" if divisions is not None else None)
+
+
+def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = None) -> tuple[Flywheel, dict[str, Record]]:
+    """The construction at (L, size) (``_built``, or ``f``) and its drawings captioned, ω(φ) at its
+    smallest (``_speed`` grows it into its zone once the composition is chosen)."""
+    f = f if f is not None else _built(dyn, args, L, size)
     drawn = records(f, lang, speed_zone=(0.0, 0.0))
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
@@ -289,8 +308,9 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     def measured(L: float, size: float, factor: float):
         if (L, size) not in drawn_at:             # the drawings and the tables' content once per size
             per = []
+            built = _built(dyn, args, L, size)     # once for both languages
             for lang in LANGS:
-                fw, drawn = _drawn(dyn, args, L, size, lang)
+                fw, drawn = _drawn(dyn, args, L, size, lang, built)
                 doc = dynamics_json(fw)
                 per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang))))
             drawn_at[(L, size)] = per
