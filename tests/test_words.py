@@ -318,3 +318,14 @@ def test_ukrainian_output_of_dynamics(capsys, scene):
     assert not re.search(r"\d\.\d", out), "a decimal point in the Ukrainian tables"
     code, default, _ = run(capsys, "dynamics", path)
     assert default == out
+
+
+def test_ukrainian_counts_agree_with_their_number():
+    """«1 поділка, 2–4 поділки, 5–20 поділок», by the last two digits (11–14 take the many form)."""
+    from graphplan.util.words import uk_count, word
+    forms = ("поділка", "поділки", "поділок")
+    expect = {1: 0, 2: 1, 4: 1, 5: 2, 11: 2, 12: 2, 14: 2, 21: 0, 22: 1, 24: 1, 25: 2, 101: 0, 111: 2, 112: 2, 360: 2}
+    for n, k in expect.items():
+        assert uk_count(n, *forms) == forms[k], n
+    assert word("divisions count", "uk", n=24) == "24 поділки"
+    assert word("divisions count", "en", n=24) == "24 divisions"

@@ -17,6 +17,8 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.util.words import uk_count
+
 
 VISIBLE_MM = 0.5      # the least swing or excursion a feature needs to be seen (the ruler's division)
 SHOWN = 6             # features named in a message (the JSON lists all)
@@ -192,7 +194,7 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
                             + "; ".join(parts["en"]) + ("; take more divisions (smaller intervals there)" if own else
                                                         "; the exact drawing is right: the drafting error does it — "
                                                         "take a larger L or H or a finer ruler, not more divisions"))
-        entry["message_uk"] = (f"діаграма {sym} ({how[1]}, {d.divisions} поділок) якісно хибна — "
+        entry["message_uk"] = (f"діаграма {sym} ({how[1]}, {d.divisions} {uk_count(d.divisions, 'поділка', 'поділки', 'поділок')}) якісно хибна — "
                                + "; ".join(parts["uk"]) + ("; візьміть більше поділок (менші інтервали там)" if own else
                                                            "; точна побудова правильна: це похибка креслення — "
                                                            "візьміть більші L чи H або точнішу лінійку, а не більше "

@@ -252,10 +252,10 @@ APART = 1.0         # mm: a comma that cannot join its letter stands this far cl
 ENOUGH = 0.9        # … unless it already stands this far
 
 
-BARRED = "Г"        # a capital whose bar hangs over all of its right side …
+BARRED = "ГТT"      # capitals with a bar over an open right side …
 UNDER = "авгдежзиклмнопрстухцчшщъыьэюяєacemnopqrsuvwxyz"   # … and the small letters (no ascender, no dot) that tuck under it
-UNDER_BAR = 0.08    # ems: how far it tucks in, its ink then beginning where the bar ends (osifont leaves 0.09 em:
-                    # at 5 mm a gap the eye, and the ink check, take for a word break; Cyrillic fonts kern Гр, Га 60–100/1000)
+UNDER_BAR = 0.04    # ems: how far inside the bar's end its ink then begins (osifont leaves 0.09–0.16 em between
+                    # them, at 5 mm a gap the eye, and the ink check, take for a word break; DejaVu kerns T–a 0.17 em)
 
 
 SCRIPT_SPACE = 0.1    # ems: a thin space between an index and the base letters after it (twice TeX's \scriptspace):
@@ -267,11 +267,14 @@ def kern(prev: str, c: str, size: float) -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
     near the baseline on its right (°, Г, Т, P, 7 …) stands apart from it, beside its box rather
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
-    the degree sign reads as a stray mark. A small letter after Г tucks under its bar
-    (``UNDER_BAR``), the pair osifont does not kern. Nothing otherwise (the font sets text by its
+    the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
+    its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
     advances)."""
     if prev and c in UNDER and prev in BARRED:
-        return -UNDER_BAR * em(size)
+        m = _metrics()
+        bar, ink = m["boxes"][prev], m["boxes"].get(c)
+        if ink is not None:            # the small letter's ink begins UNDER_BAR inside the bar's end
+            return -(m["advance"][prev] - bar[2] + ink[0] + UNDER_BAR) * em(size)
     if c not in LOW or not prev.strip():
         return 0.0
     m = _metrics()

@@ -272,7 +272,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "method chords": ("методом хорд", "by the method of chords"),
     "method corrected": ("методом хорд з корекцією площ", "by the method of chords with the area correction"),
     "method tangents": ("методом дотичних (дзеркало, ±{e}°)", "by the method of tangents (mirror, ±{e}°)"),
-    "divisions count": ("{n} поділок", "{n} divisions"),
+    "divisions count": ("{n} {n_divisions}", "{n} {n_divisions}"),
     "tangent ordinates": ("Ординати методу дотичних (на ординатах поділу)",
                           "The tangents' ordinates (at the division ordinates)"),
     "at ordinates": ("На ординатах поділу (крива, прочитана на ординатах)",
@@ -638,7 +638,24 @@ def word(key: str, lang: str, /, **fields: object) -> str:
     if "{" not in text:
         return text
     units = {k: unit(k, lang) for k in UNITS}
+    if "{n_divisions}" in text:           # the noun agreeing with its number
+        try:
+            n = int(str(fields.get("n")))
+        except ValueError:
+            n = 5                         # not a count: the plural
+        fields = {**fields, "n_divisions": uk_count(n, "поділка", "поділки", "поділок") if lang == "uk"
+                  else ("division" if n == 1 else "divisions")}
     return text.format_map(_Fields({**units, **{k: str(v) for k, v in fields.items()}}))
+
+
+def uk_count(n: int, one: str, few: str, many: str) -> str:
+    """The Ukrainian noun after the number n: 1, 21 поділка; 2–4, 22–24 поділки; 0, 5–20, 25 поділок."""
+    n = abs(int(n))
+    if n % 10 == 1 and n % 100 != 11:
+        return one
+    if 2 <= n % 10 <= 4 and not 12 <= n % 100 <= 14:
+        return few
+    return many
 
 
 class Fixed(float):
