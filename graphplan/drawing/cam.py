@@ -110,8 +110,9 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         y = y0 + hi + 20.0
     y_s = bands["s"]
     spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    for k in numbered(len(x), spacing):
-        rec.label((x[k], y_s - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
+    for k in numbered(len(x), spacing):      # under the axis, and under a chord ending below it (a closing error)
+        low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
+        rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {k}")
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)

@@ -254,10 +254,13 @@ def closing_warning(g: "CamConstruction", better: int | None = None, tried: bool
     def mm(x: float, comma: bool) -> str:
         text = f"{x:.1f}".replace("-", "−")
         return text.replace(".", ",") if comma else text
-    r, t, b = (mm(x, False) for x in (*g.closing, g.closing_bound))
+    b2 = f"{g.closing_bound:.2f}"
+    r, t = (mm(x, False) for x in g.closing)
+    b = b2
     en = (f"the graphical s at {n} divisions missed its closing by Δ = {r} mm (rise), {t} mm (return), more than "
           f"the {b} mm allowed ({CLOSING_LIMIT:g} % of the stroke drawn and the ruler's half division)")
-    r, t, b = (mm(x, True) for x in (*g.closing, g.closing_bound))
+    r, t = (mm(x, True) for x in g.closing)
+    b = b2.replace(".", ",")
     uk = (f"графічне s при {n} поділках не замкнулося на Δ = {r} мм (підйом), {t} мм (опускання) — більше за "
           f"допустимі {b} мм ({CLOSING_LIMIT:g} % ходу на кресленні й половина поділки лінійки)")
     if better is not None:
