@@ -77,7 +77,7 @@ class CamConstruction:
     # the closing error the s diagram may have (closing_bound, mm) and, where the drawing was redrawn
     # with more divisions for it, the first drawing's divisions and closing errors (mm)
     closing_bound: float = math.inf
-    redrawn: tuple[int, float, float] | None = None
+    redrawn: tuple[int, float, float, float] | None = None     # n, Δ rise, Δ return, the bound (mm)
 
     @property
     def closes(self) -> bool:

@@ -70,7 +70,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
             "closing_mm_first": {"rise": float(g.redrawn[1]), "return": float(g.redrawn[2])},
-            "closing_bound_mm": float(g.closing_bound)},
+            "closing_bound_mm_first": float(g.redrawn[3])},
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
@@ -159,7 +159,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         lines.append(w["redrawn"].format(n=doc["divisions"], f=again["divisions_first"],
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
-                                         b=n(again["closing_bound_mm"], 3)))
+                                         b=n(again["closing_bound_mm_first"], 3)))
     return lines
 
 

@@ -303,7 +303,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
         redrawn = construct(sol, m, precision, size=sizes[0], profile_size=sizes[1], height=sizes[2],
                             accel=sizes[3])
         if redrawn.closes:
-            redrawn.redrawn = (first_n, *g.closing)
+            redrawn.redrawn = (first_n, *g.closing, g.closing_bound)
             return redrawn
         m += 1
     g.warnings.append(closing_warning(g, tried=True))
