@@ -223,7 +223,7 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
-    ordinates, then d²s/dφ² alone, and the profile, the main drawing, at the largest standard scale at
+    ordinates, then d²s/dφ² alone, then the abscissa alone, and the profile, the main drawing, at the largest standard scale at
     which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large."""
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     region, keep = field_of(f), keep_out(f)
@@ -252,8 +252,10 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     kh = (_largest(lambda x: fits(k, k, x, None, both), up) if up else None) or k
     up = [x for x in sizes if x > kh]
     ka = (_largest(lambda x: fits(k, k, kh, x, both), up) if up else None) or kh
-    kp = _largest(lambda x: fits(k, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
-    return k, kp, kh, ka
+    up = [x for x in sizes if x > k]        # the abscissa alone longer (the ordinates as they are)
+    kl = (_largest(lambda x: fits(x, k, kh, ka, both), up) if up else None) or k
+    kp = _largest(lambda x: fits(kl, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
+    return kl, kp, kh, ka
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -283,31 +285,42 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     where none tried helps, the first drawing stays with its warning."""
     first_n = n or sol.cam.divisions
     given = n is not None or sol.cam.divisions_given
-    size, prof, height, accel = cam_sizes(sol, f, first_n, precision)
-    g = construct(sol, first_n, precision, size=size, profile_size=prof, height=height, accel=accel)
-    if g.closes:
+    sizes = cam_sizes(sol, f, first_n, precision)
+
+    def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
+        return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                         measure=measure)
+
+    def kept(better: int | None):
+        g = make(first_n, sizes, True)
+        g.warnings = [w for w in g.warnings if w != closing_warning(g)] + [closing_warning(g, better, True)]
         return g
-    default = closing_warning(g)
-    g.warnings = [w for w in g.warnings if w != default]
+    first = make(first_n, sizes)
+    if first.closes:
+        return make(first_n, sizes, True)
     top = min(MOST_DIVISIONS, 360, 4 * first_n)
-    m = first_n + 1
-    while m <= top:
-        trial = construct(sol, m, precision, size=size, profile_size=prof, height=height, accel=accel, measure=False)
-        if not trial.closes:
-            m += 1
+    for m in range(first_n + 1, top + 1):
+        if not make(m, sizes).closes:
             continue
         if given:
-            g.warnings.append(closing_warning(g, better=m))
-            return g
-        sizes = cam_sizes(sol, f, m, precision)           # the taller table may change the scales
-        redrawn = construct(sol, m, precision, size=sizes[0], profile_size=sizes[1], height=sizes[2],
-                            accel=sizes[3])
-        if redrawn.closes:
-            redrawn.redrawn = (first_n, *g.closing, g.closing_bound)
+            return kept(m)
+        sz = sizes if _one_sheet_still(sol, f, make(m, sizes)) else cam_sizes(sol, f, m, precision)
+        if make(m, sz).closes:                 # the taller table may have changed the scales
+            redrawn = make(m, sz, True)
+            redrawn.redrawn = (first_n, *first.closing, first.closing_bound)
             return redrawn
-        m += 1
-    g.warnings.append(closing_warning(g, tried=True))
-    return g
+    return kept(None)
+
+
+def _one_sheet_still(sol, f: Form, g) -> bool:
+    """Whether the drawings at ``g``'s scales with the table of ``g``'s divisions still share one sheet
+    of ``f`` in both languages (a redrawing's longer table may not leave them room)."""
+    region, keep = field_of(f), keep_out(f)
+    for lang in ("uk", "en"):
+        leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
+        if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+            return False
+    return True
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
