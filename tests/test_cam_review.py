@@ -67,7 +67,7 @@ def test_a_phase_that_misses_its_closing_is_redrawn_with_more_divisions():
     assert max(abs(x) for x in closing_errors(sol, g)) <= allowed_mm(sol, g)
     doc = cam_json(sol, g, "x")
     assert doc["divisions"] == n and doc["redrawn"]["divisions_first"] == 8
-    said = " ".join(cam_lines(doc, "en"))
+    said = " ".join(cam_lines(doc, "en")).replace("\u00a0", " ")
     assert f"redrawn with {n} divisions instead of 8" in said and "2 % of the stroke" in said
     assert not any("closing" in w for w in doc["warnings"])
 

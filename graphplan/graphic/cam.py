@@ -258,11 +258,11 @@ def closing_warning(g: "CamConstruction", better: int | None = None, tried: bool
     r, t = (mm(x, False) for x in g.closing)
     b = b2
     en = (f"the graphical s at {n} divisions missed its closing by Δ = {r} mm (rise), {t} mm (return), more than "
-          f"the {b} mm allowed ({CLOSING_LIMIT:g} % of the stroke drawn and the ruler's half division)")
+          f"the {b} mm allowed ({CLOSING_LIMIT:g}\u00a0% of the stroke drawn and the ruler's half division)")
     r, t = (mm(x, True) for x in g.closing)
     b = b2.replace(".", ",")
     uk = (f"графічне s при {n} поділках не замкнулося на Δ = {r} мм (підйом), {t} мм (опускання) — більше за "
-          f"допустимі {b} мм ({CLOSING_LIMIT:g} % ходу на кресленні й половина поділки лінійки)")
+          f"допустимі {b} мм ({CLOSING_LIMIT:g}\u00a0% ходу на кресленні й половина поділки лінійки)")
     if better is not None:
         en += f"; {better} divisions would close within it"
         uk += f"; у межах допуску замкнулося б при {better} поділках"

@@ -92,11 +92,11 @@ WORDS = {
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
-           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0мм, H_2 = {h2}\u00a0мм",
+           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
            "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
            "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} s не замкнулося на Δ = {r} мм "
-                      "(підйом), {t} мм (опускання) — правило: s замикається в межах 2 % ходу на кресленні й "
+                      "(підйом), {t} мм (опускання) — правило: s замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
@@ -111,11 +111,11 @@ WORDS = {
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
-           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0mm, H_2 = {h2}\u00a0mm",
+           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
            "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} s missed its closing by "
-                      "Δ = {r} mm (rise), {t} mm (return) — the rule: s closes within 2 % of the stroke drawn "
+                      "Δ = {r} mm (rise), {t} mm (return) — the rule: s closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
