@@ -110,8 +110,9 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         y = y0 + hi + 20.0
     y_s = bands["s"]
     spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    for k in numbered(len(x), spacing):
-        rec.label((x[k], y_s - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
+    for k in numbered(len(x), spacing):      # under the axis, and under a chord ending below it (a closing error)
+        low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
+        rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {k}")
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
@@ -150,9 +151,17 @@ def phase_points(sol: Solution, g: CamConstruction) -> tuple[np.ndarray, np.ndar
     return C, u, C + 1j * cam.sense * C1
 
 
+def phase_scale(sol: Solution, g: CamConstruction) -> float:
+    """The phase diagram's scale, m/mm: a translating follower's at μ_s (its s axis reads across from
+    the s diagram's); a rocking follower's at the profile's μ_l, as the lab draws it — the arm and its
+    arcs l·ψ at the scale of the profile, so R0 and the arm carry over to it (at μ_s·l the arm alone
+    would be 1/μ_s mm long, larger than the profile, the main drawing)."""
+    return g.mu_l if sol.cam.rocking else g.mu_s
+
+
 def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     """The phase diagram as the textbook draws it, in the fixed frame at the scale of s (rocking: the
-    arm's arcs l·ψ at μ_s·l): the follower's axis (rocking: the arc of the roller's centre and the arm's
+    arm's arcs l·ψ at the profile's μ_l, phase_scale): the follower's axis (rocking: the arc of the roller's centre and the arm's
     lines toward its pivot), the drawn ds/dφ laid off from each position of the roller's centre turned
     by 90° in the sense of ω, the lines at [ϑ] to the follower's motion through the points seen at the
     largest angle, bounding the region of the cam's centre, and the centre O chosen in it, joined to
@@ -160,7 +169,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     cam = sol.cam
     rec = Record("phase diagram")
     labels: list[LabelRequest] = []
-    mu = g.mu_s * (cam.arm if cam.rocking else 1.0)
+    mu = phase_scale(sol, g)
     C, u, K = phase_points(sol, g)
     C, K = C / mu, K / mu
     sig = cam.sense
@@ -208,8 +217,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         end = K[k] + d * length
         rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
-        labels.append(LabelRequest(end - d * 4.0, "[ϑ]", toward=d * 1j * (1 if turn > 0 else -1), size=TEXT,
-                                   optional=True))
+        labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),
+                                   toward=d * 1j * (1 if turn > 0 else -1), size=TEXT, step=f"[ϑ] {ph}"))
         rec.segment((K[k].real, K[k].imag), (O.real, O.imag), role="construction", layer=LAYER, step=f"OK {ph}")
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
@@ -218,8 +227,17 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         rec.segment(_pt(O), (C[0].real, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
     labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT))
+    # the axis of ds/dφ: a translating follower's through C0 (s = 0) square to its axis, lettered at its
+    # end; a rocking follower's ds/dφ lies along the arm's line, lettered at the end of the longest
     j = int(np.argmax(np.abs(K - C)))
-    labels.append(LabelRequest(0.5 * (K[j] + C[j]), "ds/dφ", toward=1j, size=TEXT))
+    if cam.rocking:
+        w = (K[j] - C[j]) / abs(K[j] - C[j])
+        labels.append(LabelRequest(K[j] + 4.0 * w, "ds/dφ", toward=w, size=TEXT, step="axis ds/dφ"))
+    else:
+        y0 = float(C[0].imag)
+        lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
+        rec.segment((lo, y0), (hi, y0), role="axis", layer=LAYER, step="axis ds/dφ")
+        labels.append(LabelRequest(complex(hi, y0), "ds/dφ", toward=1 - 1j, size=TEXT, step="axis ds/dφ"))
     for k in range(len(K)):
         labels.append(LabelRequest(K[k], str(k), toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
     place_labels(rec, labels, layer=LAYER)
@@ -355,33 +373,51 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
     rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
 
 
+def allowed_text(value: float, lang: str) -> str:
+    """The allowed pressure angle with its value, «[ϑ] = 30°»."""
+    from graphplan.util.words import num
+    return f"[ϑ] = {num(value, lang, 4)}°"
+
+
+def phase_text(name: str, size: float, lang: str) -> str:
+    """A phase angle's lettering: its name and its value, «φ_п = 120°»."""
+    from graphplan.util.words import num
+    return f"{name} = {num(size, lang, 4)}°"
+
+
 def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, outer: float, lang: str,
                 labels: list[LabelRequest]) -> None:
-    """The phase angles as arcs about O outside the profile, between the follower's positions at the
-    phases' starts (the rays turned against ω), each with its name at its middle."""
+    """The phase angles dimensioned as angles are (GOST 2.307): about O, outside the division numbers,
+    an arc between extension lines along the follower's positions at the phases' starts (the rays
+    turned against ω), its arrowheads on them, its name and value at its middle («φ_п = 120°»)."""
     cam = sol.cam
     rise, far, ret, near = cam.phases
     starts = [0.0, rise, rise + far, rise + far + ret]
     sizes = [rise, far, ret, near]
-    R = outer + 10.0
-    if cam.rocking:
+    if cam.rocking:        # the numbers at the arms' pivots (radius a): the arcs inside them if there is room
+        a = cam.centre_distance / g.mu_l
         ref = cmath.phase(feet[0])
-    else:
+        R, root = (outer + 10.0, outer - 2.0) if a - outer >= 22.0 else (a + 14.0, a + 2.0)
+    else:                  # the numbers at the rays' tips (outer + 6 mm)
         ref = cmath.phase(rays[0])
+        R, root = outer + 18.0, outer + 7.0
     sig = cam.sense
-    for name, start, size in zip(PHASE_NAMES[lang], starts, sizes):
+    for j, (name, start, size) in enumerate(zip(PHASE_NAMES[lang], starts, sizes)):
         if size < 1.0:
             continue
         a0 = ref - sig * math.radians(start)
         a1 = ref - sig * math.radians(start + size)
         lo, hi = sorted((a0, a1))
         rec.arc((0.0, 0.0), R, math.degrees(lo), math.degrees(hi), role="construction", layer=LAYER,
-                step=f"phase {name}")
-        for t in (a0, a1):
+                step=f"phase {j}")
+        for t, inward in ((lo, 1.0), (hi, -1.0)):
             z = cmath.exp(1j * t)
-            rec.segment(_pt((R - 3.0) * z), _pt((R + 3.0) * z), role="construction", layer=LAYER)
+            rec.segment(_pt(root * z), _pt((R + 2.0) * z), role="construction", layer=LAYER, step=f"phase {j} end")
+            back = min(6.0, 0.4 * R * (hi - lo)) / R           # the arrow 6 mm along the arc, less on a short one
+            tail = R * cmath.exp(1j * (t + inward * back))
+            rec.vector(_pt(tail), _pt(R * z), role="construction", layer=LAYER, step=f"phase {j} arrow")
         m = cmath.exp(1j * (lo + hi) / 2)
-        labels.append(LabelRequest(R * m, name, toward=m, size=TEXT))
+        labels.append(LabelRequest(R * m, phase_text(name, size, lang), toward=m, size=TEXT, step=f"phase {j}"))
 
 
 def records(sol: Solution, g: CamConstruction, lang: str) -> dict[str, Record]:

@@ -74,6 +74,15 @@ class CamConstruction:
     v_mid: np.ndarray = field(default_factory=lambda: np.zeros(0))
     v_chord: np.ndarray = field(default_factory=lambda: np.zeros(0))
     s_chord: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    # the closing error the s diagram may have (closing_bound, mm) and, where the drawing was redrawn
+    # with more divisions for it, the first drawing's divisions and closing errors (mm)
+    closing_bound: float = math.inf
+    redrawn: tuple[int, float, float, float] | None = None     # n, Δ rise, Δ return, the bound (mm)
+
+    @property
+    def closes(self) -> bool:
+        """Whether both phases' s closed within the bound (closing_bound)."""
+        return max(abs(self.closing[0]), abs(self.closing[1])) <= self.closing_bound + 1e-9
 
     @property
     def s(self) -> np.ndarray:
@@ -182,12 +191,9 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     out = CamConstruction(phi, phase, mu_phi, mu_a, mu_v, mu_s, H1, H2, precision, a_mm, v_mm, s_mm, R0_min,
                           sol.geometry.R0, radius_mm, theta, mu_l, closing=closing, a_mid=np.concatenate(a_mid),
                           v_mid=np.concatenate(v_mid), v_chord=v_chord, s_chord=s_chord)
-    closure = abs(closing[0]) * mu_s / cam.stroke
-    if closure > 0.05:
-        out.warnings.append((f"the rise's graphical s ended {closure * 100:.1f} % off the stroke before its closing: "
-                             "take more divisions or a larger scale", f"графічне s наприкінці підйому до замикання "
-                             f"відрізнялося від ходу на {closure * 100:.1f} %: візьміть більше поділок або більший "
-                             "масштаб"))
+    out.closing_bound = closing_bound(cam.stroke / mu_s, precision)
+    if not out.closes:
+        out.warnings.append(closing_warning(out))
     return out
 
 
@@ -220,6 +226,53 @@ def _phase_diagram_radius(sol: Solution, phi, phase, s_g, v_g) -> float:
     if worst(lo) <= 0:
         return float(lo)
     return float(brentq(worst, lo, hi, xtol=1e-12))
+
+
+CLOSING_LIMIT = 2.0    # %: of the stroke drawn, the closing error of the s diagram the lab's 5 % allows
+
+
+def closing_bound(stroke_mm: float, precision: float) -> float:
+    """The closing error (mm) the s diagram may have: 2 % of the stroke drawn (CLOSING_LIMIT), plus
+    the ruler's half division the end ordinate is read to. Laid back over the divisions (close_phases)
+    Δ moves each ordinate by Δ·k/n; on the return an ordinate of a quarter of the stroke stands at
+    k/n ≈ 0.7, so it moves by about 2.8·Δ/h of itself — at 2 % about the lab's 5 %. Past it the
+    diagrams are redrawn with more divisions (sheets.cam.construct_on)."""
+    return CLOSING_LIMIT / 100.0 * abs(stroke_mm) + 0.5 * precision
+
+
+def divisions_of(g: "CamConstruction") -> int:
+    """The intervals of each phase the construction was drawn with."""
+    return int(len(g.phi) // 2 - 1)
+
+
+def closing_warning(g: "CamConstruction", better: int | None = None, tried: bool = False) -> tuple[str, str]:
+    """The warning of a closing past the rule (closing_bound): the closing errors, the bound,
+    and how many divisions would close within the rule (``better``; ``tried``: none of those tried
+    does)."""
+    n = divisions_of(g)
+
+    def mm(x: float, comma: bool) -> str:
+        text = f"{x:.1f}".replace("-", "−")
+        return text.replace(".", ",") if comma else text
+    b2 = f"{g.closing_bound:.2f}"
+    r, t = (mm(x, False) for x in g.closing)
+    b = b2
+    en = (f"the graphical s at {n} divisions missed its closing by Δ = {r} mm (rise), {t} mm (return), more than "
+          f"the {b} mm allowed ({CLOSING_LIMIT:g}\u00a0% of the stroke drawn and the ruler's half division)")
+    r, t = (mm(x, True) for x in g.closing)
+    b = b2.replace(".", ",")
+    uk = (f"графічне s при {n} поділках не замкнулося на Δ = {r} мм (підйом), {t} мм (опускання) — більше за "
+          f"допустимі {b} мм ({CLOSING_LIMIT:g}\u00a0% ходу на кресленні й половина поділки лінійки)")
+    if better is not None:
+        en += f"; {better} divisions would close within it"
+        uk += f"; у межах допуску замкнулося б при {better} поділках"
+    elif tried:
+        en += "; no number of divisions tried closes within it: take a larger scale"
+        uk += "; жодна випробувана кількість поділок не замикає в межах допуску: візьміть більший масштаб"
+    else:
+        en += ": take more divisions"
+        uk += ": візьміть більше поділок"
+    return en, uk
 
 
 def close_phases(s_mm: np.ndarray, phase: np.ndarray, stroke_mm: float, precision: float

@@ -47,6 +47,7 @@ class Cam:
     divisions: int = 8
     source: str | None = None
     meta: tuple[tuple[str, str], ...] = ()
+    divisions_given: bool = False                   # the scene names its divisions (kept, warned of)
 
     @property
     def rocking(self) -> bool:
@@ -207,4 +208,5 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
     meta += tuple((f"sheet.{B.clean_text(k)}", B.clean_text(v)) for k, v in sheet.items())
     return Cam(B.clean_text(data.get("title", "Кулачковий механізм")), follower, stroke,
                (phases[0], phases[1], phases[2], phases[3]), (laws[0], laws[1]), (allowed[0], allowed[1]),
-               omega, 1 if direction == "ccw" else -1, roller, offset, arm, centre, base, divisions, where, meta)
+               omega, 1 if direction == "ccw" else -1, roller, offset, arm, centre, base, divisions, where, meta,
+               divisions_given="divisions" in cam)

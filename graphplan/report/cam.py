@@ -67,6 +67,10 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "pressure_angle_max_deg": dict(zip(("rise", "return"), sol.pressure_maxima())),
         "curvature_min_m": _f(sol.curvature_min()),
         "closing_mm": {"rise": float(g.closing[0]), "return": float(g.closing[1])},
+        "redrawn": None if g.redrawn is None else {
+            "divisions_first": int(g.redrawn[0]),
+            "closing_mm_first": {"rise": float(g.redrawn[1]), "return": float(g.redrawn[2])},
+            "closing_bound_mm_first": float(g.redrawn[3])},
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
@@ -88,9 +92,12 @@ WORDS = {
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
-           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0мм, H_2 = {h2}\u00a0мм",
+           "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
            "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
+           "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} s не замкнулося на Δ = {r} мм "
+                      "(підйом), {t} мм (опускання) — правило: s замикається в межах 2\u00a0% ходу на кресленні й "
+                      "половини поділки лінійки ({b} мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
            "warn": "Попередження"},
@@ -104,9 +111,12 @@ WORDS = {
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
-           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1 = {h1}\u00a0mm, H_2 = {h2}\u00a0mm",
+           "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
+           "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} s missed its closing by "
+                      "Δ = {r} mm (rise), {t} mm (return) — the rule: s closes within 2\u00a0% of the stroke drawn "
+                      "and the ruler's half division ({b} mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
            "warn": "Warnings"},
@@ -144,6 +154,12 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     if close:
         lines.append(w["closing"].format(r=n(close["rise"], 3).replace("-", "−"),
                                          t=n(close["return"], 3).replace("-", "−")))
+    again = doc.get("redrawn")
+    if again:
+        lines.append(w["redrawn"].format(n=doc["divisions"], f=again["divisions_first"],
+                                         r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
+                                         t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
+                                         b=n(again["closing_bound_mm_first"], 3)))
     return lines
 
 

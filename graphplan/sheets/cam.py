@@ -8,7 +8,7 @@ from __future__ import annotations
 from graphplan.drawing.cam import records, scale_text
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred, extent, flow
 from graphplan.exact.cam import solve
-from graphplan.graphic.cam import construct
+from graphplan.graphic.cam import closing_warning, construct
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
@@ -23,11 +23,11 @@ from graphplan.util.words import fixed, num
 
 WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми d^{2}s/dφ^{2}, ds/dφ, s (графічне "
-           "інтегрування методом хорд)", "phase": "Фазова діаграма s(ds/dφ) і найменший радіус R_0",
+           "інтегрування методом хорд)", "phase": "Фазова діаграма s(ds/dφ), найменший R_0",
            "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№", "group": "гр."},
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams d^{2}s/dφ^{2}, ds/dφ, s (graphical integration by "
-           "chords)", "phase": "Phase diagram s(ds/dφ) and the smallest base radius R_0",
+           "chords)", "phase": "Phase diagram s(ds/dφ), smallest R_0",
            "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
            "pressure angle at the divisions", "n": "No", "group": "gr."},
 }
@@ -100,8 +100,8 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     num_ = lambda x: num(x, lang, 4)                                             # noqa: E731
     first = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_1 = {num_(g.H1)} {mm}, H_2 = {num_(g.H2)} {mm}"
     if cam.rocking:
-        phase = (f"{scale_text('mu_s', g.mu_s, True, lang)}; μ_s·l = {num_(g.mu_s * cam.arm)} "
-                 + ("м/мм (дуги l·ψ)" if lang == "uk" else "m/mm (the arcs l·ψ)"))
+        phase = (f"{scale_text('mu_l', g.mu_l, True, lang)} "
+                 + ("(коромисло і дуги l·ψ)" if lang == "uk" else "(the arm and the arcs l·ψ)"))
     else:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
@@ -123,14 +123,17 @@ def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
     return out
 
 
-def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
+def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False
+            ) -> tuple[list[Leaf], Leaf, Leaf, dict]:
     """The captioned drawings (none when ``drawn`` is {}): the diagrams with the phase diagram beside
-    them, the profile; the table and the notes."""
+    them (``split``, a set of sheets: each on its own), the profile; the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
     drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
     leaves = []
-    if drawn:
+    if drawn and split:
+        leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
+    elif drawn:
         leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps)),
                   Leaf("profile", record=captioned(drawn["profile"], *caps["profile"]))]
     tab = Leaf("table", record=positions_table(doc, lang))
@@ -153,10 +156,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
               ) -> tuple[float, float, float, float]:
     """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``,
     ``accel``): the largest common size whose drawings (at the standard scales that size asks) fit the
-    sheet in one row above the table and the notes — in both languages —, then the diagrams'
-    ordinates grown while they fit, then the profile, the main drawing, then the d²s/dφ² and ds/dφ
-    diagrams alone (μ_s kept) into the height left. (1, 1, 1, 1) when nothing fits one sheet (then a
-    set of sheets)."""
+    sheet in one row above the table and the notes — in both languages —, then the profile, the main
+    drawing, then the diagrams' ordinates grown while they fit, then the d²s/dφ² and ds/dφ
+    diagrams alone (μ_s kept) into the height left. When nothing fits one sheet: a set of sheets,
+    each drawing on its own (set_sizes)."""
     region, keep = field_of(f), keep_out(f)
 
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
@@ -172,7 +175,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         if (name, key, lang) not in memo:
             caps = _captions(g, sol.cam, lang)
             if name == "diagrams":
-                rec = beside(drawing("diagrams", diagrams, key, g), drawing("phase", phase_diagram, key[2:3], g), caps)
+                rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g), caps)
             else:
                 rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
             memo[(name, key, lang)] = Leaf(name, record=rec)
@@ -184,7 +187,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             if lang not in fixed_:
                 _, tab, nts, _ = _leaves(sol, g, sol.cam, lang, {})
                 fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
-            leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), g, lang),
+            leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
             if not _one_sheet(flow([leaves, fixed_[lang]], region, keep)):
                 return False
@@ -194,13 +197,13 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         _, tab, nts, _ = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
         if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
-            return 1.0, 1.0, 1.0, 1.0
+            return set_sizes(sol, f, n, precision)
     if not fits(1.0, 1.0, 1.0):
-        return 1.0, 1.0, 1.0, 1.0
+        return set_sizes(sol, f, n, precision)
     k = _largest(lambda x: fits(x, x, x), list(SIZES)) or 1.0
     rest = [x for x in SIZES if x > k]
-    kh = (_largest(lambda x: fits(k, k, x), rest) if rest else None) or k
-    kp = (_largest(lambda x: fits(k, x, kh), rest) if rest else None) or k
+    kp = (_largest(lambda x: fits(k, x, k), rest) if rest else None) or k      # the main drawing first
+    kh = (_largest(lambda x: fits(k, kp, x), rest) if rest else None) or k
     up = [x for x in SIZES if x > kh]
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
@@ -209,8 +212,50 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     for lang in ("uk", "en"):
         leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
         if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
-            return 1.0, 1.0, 1.0, 1.0
+            return set_sizes(sol, f, n, precision)
     return k, kp, kh, ka
+
+
+SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
+
+
+def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple[float, float, float, float]:
+    """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
+    the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
+    the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
+    ordinates, then d²s/dφ² alone, then the abscissa alone, and the profile, the main drawing, at the largest standard scale at
+    which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large."""
+    from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
+    region, keep = field_of(f), keep_out(f)
+    memo: dict = {}
+
+    def alone(name: str, g) -> bool:
+        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing}[name]
+        key = {"diagrams": (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), "phase": (g.mu_s, g.mu_l),
+               "profile": (g.mu_l,)}[name]
+        if (name, key) not in memo:
+            ok = True
+            for lang in ("uk", "en"):
+                rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
+                laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
+                ok = ok and laid is not None and len(laid) == 1
+            memo[(name, key)] = ok
+        return memo[(name, key)]
+
+    def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...]) -> bool:
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
+        return all(alone(name, g) for name in names)
+    both = ("diagrams", "phase")
+    sizes = list(SET_SIZES)
+    k = _largest(lambda x: fits(x, x, x, None, both), sizes) or sizes[0]
+    up = [x for x in sizes if x > k]
+    kh = (_largest(lambda x: fits(k, k, x, None, both), up) if up else None) or k
+    up = [x for x in sizes if x > kh]
+    ka = (_largest(lambda x: fits(k, k, kh, x, both), up) if up else None) or kh
+    up = [x for x in sizes if x > k]        # the abscissa alone longer (the ordinates as they are)
+    kl = (_largest(lambda x: fits(x, k, kh, ka, both), up) if up else None) or k
+    kp = _largest(lambda x: fits(kl, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
+    return kl, kp, kh, ka
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -225,11 +270,57 @@ def _largest(ok, sizes: list[float]) -> float | None:
     return best
 
 
+MOST_DIVISIONS = 48      # the most intervals a phase a redrawing tries (four times the scene's, at most)
+
+
 def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     """The construction at the scales of the cam sheet on ``f`` (cam_sizes): what `graphplan cam`,
-    the explorer, graphplan.cam() and the sheet itself measure, so that they print the same numbers."""
-    size, prof, height, accel = cam_sizes(sol, f, n, precision)
-    return construct(sol, n, precision, size=size, profile_size=prof, height=height, accel=accel)
+    the explorer, graphplan.cam() and the sheet itself measure, so that they print the same numbers.
+
+    Redrawn until it closes, as the s–v–a diagrams are (graphic.redraw): where the s diagram misses
+    its closing by more than 2 % of the stroke drawn and the ruler's half division
+    (graphic.cam.closing_bound), the diagrams are drawn again with more divisions — the fewest that
+    close within it, up to four times as many (MOST_DIVISIONS at most) —, the notes saying so
+    (``redrawn``). Divisions the scene or ``n`` names are kept and a warning says how many would do;
+    where none tried helps, the first drawing stays with its warning."""
+    first_n = n or sol.cam.divisions
+    given = n is not None or sol.cam.divisions_given
+    sizes = cam_sizes(sol, f, first_n, precision)
+
+    def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
+        return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                         measure=measure)
+
+    def kept(better: int | None):
+        g = make(first_n, sizes, True)
+        g.warnings = [w for w in g.warnings if w != closing_warning(g)] + [closing_warning(g, better, True)]
+        return g
+    first = make(first_n, sizes)
+    if first.closes:
+        return make(first_n, sizes, True)
+    top = min(MOST_DIVISIONS, 360, 4 * first_n)
+    for m in range(first_n + 1, top + 1):
+        if not make(m, sizes).closes:
+            continue
+        if given:
+            return kept(m)
+        sz = sizes if _one_sheet_still(sol, f, make(m, sizes)) else cam_sizes(sol, f, m, precision)
+        if make(m, sz).closes:                 # the taller table may have changed the scales
+            redrawn = make(m, sz, True)
+            redrawn.redrawn = (first_n, *first.closing, first.closing_bound)
+            return redrawn
+    return kept(None)
+
+
+def _one_sheet_still(sol, f: Form, g) -> bool:
+    """Whether the drawings at ``g``'s scales with the table of ``g``'s divisions still share one sheet
+    of ``f`` in both languages (a redrawing's longer table may not leave them room)."""
+    region, keep = field_of(f), keep_out(f)
+    for lang in ("uk", "en"):
+        leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
+        if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+            return False
+    return True
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -239,11 +330,15 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     lang = args.lang
     sol = solve(cam)
     g = construct_on(sol, f, None, args.precision)
+    region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, _ = _leaves(sol, g, cam, lang)
-    region = field_of(f)
-    laid = flow([leaves, [tab, nts]], region, keep_out(f))
+    laid = flow([leaves, [tab, nts]], region, keep)
+    if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
+        leaves, tab, nts, _ = _leaves(sol, g, cam, lang, split=True)
+        laid = flow([leaves, [tab, nts]], region, keep)
     if laid is None:
-        raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet; choose a larger --format")
+        raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
+                             "choose a larger --format")
     pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
              for page in laid]
     fields = _fields(cam, lang)
