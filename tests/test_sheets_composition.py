@@ -533,27 +533,43 @@ def test_a3_set_fills_its_sheets_in_order(name):
     assert len(first) >= 2 or b[3] - b[1] >= (y1 - y0) / 2, [p.name for p in first]
 
 
-def test_lettering_reads_as_words_wherever_it_stands():
-    """A heading «Група II(2–3)», a table's title and a product of indexed factors, each drawn at 25
-    sub-pixel offsets and counted as the reader's eye does (tests/inkcheck.py): no letter splits off
-    its word into another's box — the Г's small letter kerned under its bar, a thin space after an
-    index (graphic.record.UNDER_BAR, SCRIPT_SPACE)."""
+@pytest.mark.parametrize("font", [True, False], ids=["font", "fallback"])
+def test_lettering_reads_as_words_wherever_it_stands(font, tmp_path):
+    """Headings and table titles in both languages and a product of indexed factors, each drawn at
+    25 sub-pixel offsets and counted as the reader's eye does (tests/inkcheck.py), with the packaged
+    font and as a viewer without it letters them: no letter splits off its word into another's box —
+    a small letter after Г, Т, T kerned under the bar, a thin space after an index
+    (graphic.record.kern, SCRIPT_SPACE)."""
     code = ("import json, sys\n"
             f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
-            "from graphplan.drawing.fonts import register\n"
-            "register()\n"
-            "from inkcheck import overprinted\n"
+            + ("from graphplan.drawing.fonts import register\nregister()\n" if font else "")
+            + "from inkcheck import overprinted\n"
             "from graphplan.graphic.record import Record\n"
             "from graphplan.drawing.svg import render\n"
             "bad = []\n"
             "for i in range(5):\n"
             "    for j in range(5):\n"
             "        r = Record('t')\n"
-            "        r.label((5 + 0.05 * i, 30 + 0.05 * j), 'Група II(2–3)', size=5.0)\n"
-            "        r.label((5 + 0.05 * i, 20 + 0.05 * j), 'Таблиця 2. Гранична сила', size=5.0)\n"
-            "        r.label((5 + 0.05 * i, 10 + 0.05 * j), 'μ_A = μ_M·μ_φ·H = 24,75 Дж/мм', size=3.5)\n"
-            "        hits = overprinted(render(r, 120.0, 40.0, 't'))\n"
+            "        y = 8 + 0.05 * j\n"
+            "        for text in ('Група II(2–3)', 'Таблиця 2. Гранична сила', 'Table 1. Reduced moments',\n"
+            "                     'Type A train, tooth T3', 'Гр. МБ-31'):\n"
+            "            r.label((5 + 0.05 * i, y), text, size=5.0)\n"
+            "            y += 9\n"
+            "        r.label((5 + 0.05 * i, y), 'μ_A = μ_M·μ_φ·H = 24,75 Дж/мм', size=3.5)\n"
+            "        hits = overprinted(render(r, 150.0, 64.0, 't'))\n"
             "        if hits: bad.append((i, j, hits))\n"
             "print(json.dumps(bad))\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True)
+    env = None
+    if not font:
+        import os
+        from pathlib import Path
+
+        from graphplan.graphic.record import fallback_font
+        if fallback_font() is None:
+            pytest.skip("the fallback font (DejaVu Sans) is not installed")
+        conf = tmp_path / "fonts.conf"
+        conf.write_text(FALLBACK_ONLY.format(folder=Path(fallback_font()).parent, cache=tmp_path / "cache"),
+                        encoding="utf-8")
+        env = dict(os.environ, FONTCONFIG_FILE=str(conf))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, check=True, env=env)
     assert json.loads(done.stdout) == []
