@@ -565,7 +565,9 @@ def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str
 
 
 def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
-    """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm)."""
+    """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm).
+    A tangential component found by a moment equation is printed signed as solved (R^τ03 = −348):
+    its minus says the assumed direction is reversed; its drawn length is the magnitude."""
     rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
     from graphplan.graphic.draftsman import measure
@@ -577,7 +579,7 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, abs(eq.result), measure(abs(eq.result) / fp.mu_F, fp.precision)))
+            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / fp.mu_F, fp.precision)))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
