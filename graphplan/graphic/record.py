@@ -503,6 +503,7 @@ class LabelRequest:
     optional: bool = False
     step: str = ""
     gap: float = LABEL_GAP
+    breaks: bool = False   # a joint's letter at a crowded point: set beside it, the thin lines under it broken
 
 
 
