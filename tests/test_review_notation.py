@@ -299,6 +299,10 @@ def test_a_symbol_keeps_its_value_on_its_line():
         assert " ".join(lines) == line
         for part in whole:
             assert any(part in x for x in lines), (width, part, lines)
+    forces = "Сили, коротші за 10 мм: R^{τ}_{34} 2,5 мм, 2,8 %; Φ_2 3 мм, 3,1 %; G_3 7 мм, 7,2 %"
+    for width in range(40, 121, 3):
+        for x in wrap_markup(forces, float(width), NOTE):
+            assert not x.endswith(("2,5", " 3", " 7", "10")) and not x.startswith("мм"), (width, x)
 
 
 def test_the_inertia_table_heads_its_moment_as_everywhere(sixbar_forces):

@@ -255,8 +255,8 @@ def _unit_word(token: str) -> bool:
 def _bound(words: list[str]) -> list[str]:
     """The words a line never breaks between kept together: a symbol, its relation and its value
     with the value's unit — "μ_a = 0,025 (м/с²)/мм," is one word to the wrapping (the reviewer found
-    "μ_a" at a line's end, "= 0,025" under it). A chain "J = a = b" breaks before its second "="
-    at most (each "= value unit" whole)."""
+    "μ_a" at a line's end, "= 0,025" under it), and any number its unit ("Φ_2 3 мм"). A chain
+    "J = a = b" breaks before its second "=" at most (each "= value unit" whole)."""
     out: list[str] = []
     state = None              # "rel": a relation waits for its value; "value": a unit may follow
     for t in words:
@@ -269,8 +269,8 @@ def _bound(words: list[str]) -> list[str]:
         elif state == "rel":
             out[-1] += " " + t
             state = None if t.endswith((",", ";", ":")) else "value"
-        elif state == "value" and _unit_word(t):
-            out[-1] += " " + t
+        elif (state == "value" or (out and out[-1][-1:] in "0123456789")) and _unit_word(t):
+            out[-1] += " " + t            # a value keeps its unit: "3 мм", "= 0,025 (м/с²)/мм"
             state = None
         else:
             out.append(t)
