@@ -176,9 +176,12 @@ def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[com
     return z, z + max(length, ahead + PAST_MM) * u
 
 
+BLOCK_HALF = 2.5   # a slider's block: 8 × 5 mm
+
+
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
     """A slider drawn as a 8 × 5 mm rectangle along its guide."""
-    u, n = _unit(g) * 4.0, _unit(g) * 2.5j
+    u, n = _unit(g) * 4.0, _unit(g) * BLOCK_HALF * 1j
     rec.add("polygon", [_pt(z - u - n), _pt(z + u - n), _pt(z + u + n), _pt(z - u + n)],
             role="link", layer="mechanism", step=step)
 
@@ -274,17 +277,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             busy.append((complex(at) / mu, _unit(m.acting)))
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
     drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
+    guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
-        link's line (Φ1 at S1 on the crank) or on the line of an arrow already drawn at its point
-        (Φ5 over P_D at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others —
-        unless an arm is drawn to its line (the arm ends on the line itself)."""
+        link's line (Φ1 at S1 on the crank), along a link or a slider's guide (Φ5 along the rod CD,
+        P_B along the guide) or on the line of an arrow already drawn at its point (Φ5 over P_D
+        at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others (a lane farther
+        where that is taken) — unless an arm is drawn to its line (the arm ends on the line)."""
         a, b = _clear_of_links(z, u, length, drawn_links, busy)
         ahead, behind = _along_links(z, u, drawn_links)
         # inside a link's line, or along one from its end (Φ5 at D along the rod CD where P_D
         # leaves D the other way): either hides in the link
-        inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links) > 1.0
+        inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
         if (inside or over) and name not in armed:
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
@@ -294,7 +299,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             n = 1j * u
             if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
                 n = -n
-            a, b = z + SIDE_MM * n, z + SIDE_MM * n + length * u
+            # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
+            # lanes start clear of the block (its half height and a millimetre)
+            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else SIDE_MM
+            for off in (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM):
+                a, b = z + off * n, z + off * n + length * u
+                if not any(_overlap(a, b, t, h) for _, t, h in drawn):
+                    break
         drawn.append((z, a, b))
         return a, b
 
