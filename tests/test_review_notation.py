@@ -73,14 +73,6 @@ def test_a_tangential_component_keeps_its_sign(sixbar_forces):
     assert r03.startswith("−") and _value(r03) == pytest.approx(-348.0, abs=1.0)
 
 
-def test_a_negative_table_number_is_written_with_a_true_minus():
-    """Every negative number in a ruled table is written with the minus sign (U+2212), as computed."""
-    from graphplan.drawing.tables import table
-    rec = table([["a", "b"], ["-348", "12,5"], ["-0,09*", "x-1"]], [10.0, 10.0])
-    texts = {p.text for p in rec.items if p.kind == "text"}
-    assert {"−348", "12,5", "−0,09*", "x-1"} <= texts
-
-
 @pytest.fixture(scope="module")
 def offset_sheets():
     """The offset press's three A1 sheets in both languages (the crank turning clockwise)."""

@@ -46,7 +46,7 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
           title: str = "", header: int = 1, align: list[str] | None = None) -> Record:
     """A ruled table; its top-left corner at (0, 0), growing downward (y < 0), its title above it.
     The first ``header`` rows are the header (centred, a thick line under them); in the body numbers
-    are right-aligned (a negative one with a true minus, its sign as computed) and text centred, or each column as ``align`` says ("start", "middle",
+    are right-aligned and text centred, or each column as ``align`` says ("start", "middle",
     "end"). A column is widened to its widest cell: the lettering keeps its height (never under
     2.5 mm) and stays in its cell, clear of the rules."""
     rec = Record(title)
@@ -73,8 +73,6 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         for c, cell in enumerate(row):
             if not cell:
                 continue
-            if r >= header and cell.startswith("-") and _is_number(cell):
-                cell = "−" + cell[1:]         # a signed value keeps its sign, written with a true minus
             how = "middle" if r < header else (align[c] if align else ("end" if _is_number(cell) else "middle"))
             x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
                  "end": x_edges[c + 1] - PAD - 0.3}[how]
