@@ -329,7 +329,12 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
         exact = abs(st.mech.omega1) * pin.length if rec["kind"] == "velocity" else pin.length * math.hypot(
             st.mech.omega1 ** 2, pin.epsilon)
         assert scale["value"] == pytest.approx(exact, rel=1e-9)
-        assert series_at_least(exact / scale["trial"]) == pytest.approx(scale["mu"], rel=1e-12)
+        if abs(series_at_least(scale["mu"]) - scale["mu"]) < 1e-12 * scale["mu"]:
+            assert series_at_least(exact / scale["trial"]) == pytest.approx(scale["mu"], rel=1e-12)
+        else:       # the sheet chose p_v a ≥ 40 mm (docs/scenes.md) and μ = v_A/p_v a, 3 figures down
+            raw = exact / scale["trial"]
+            k = math.floor(math.log10(raw)) - 2
+            assert scale["trial"] >= 40 and scale["mu"] == pytest.approx(math.floor(raw / 10 ** k) * 10 ** k)
         assert scale["drawn"] == pytest.approx(exact / scale["mu"], abs=1e-6)
         shown = zero["caption"].replace("−", "-")
         assert f"μ{mu_name[-1]} = {scale['mu']:g} " in shown and f"= {scale['drawn']:.1f} mm" in shown, shown

@@ -15,6 +15,7 @@ from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, motion, profile
 from graphplan.graphic.cam import CamConstruction
 from graphplan.graphic.record import Record
+from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
 LAYER = "cam"
 TEXT = 3.5
@@ -85,9 +86,9 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         y0 = y - lo
         bands[key] = y0
         left = -pole - 4.0 if pole else 0.0
-        rec.segment((left, y0), (L + 6.0, y0), role="axis", layer=LAYER, step=f"axis {key}")
-        rec.vector((0.0, y0 + lo - 3.0 if lo < 0 else y0), (0.0, y0 + hi + 6.0), role="axis", layer=LAYER,
-                   step=f"ordinate {key}")
+        rec.segment((left, y0), (L + 6.0, y0), role="construction", width=AXIS_W, layer=LAYER, step=f"axis {key}")
+        rec.vector((0.0, y0 + lo - 3.0 if lo < 0 else y0), (0.0, y0 + hi + 6.0), role="construction", width=AXIS_W,
+                   layer=LAYER, step=f"ordinate {key}")
         labels.append(LabelRequest(complex(0.0, y0 + hi + 6.0), letter, toward=1 + 0.3j, size=TEXT))
         labels.append(LabelRequest(complex(L + 6.0, y0), "φ", toward=1 - 1j, size=TEXT))
         mu = {"s": g.mu_s, "v": g.mu_v, "a": g.mu_a}[key]
@@ -196,7 +197,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     else:                  # the follower's axis
         x = float(C[0].real)
         top = float(max(np.max(C.imag), np.max(K.imag))) + 6.0
-        rec.segment((x, -4.0), (x, top), role="axis", layer=LAYER, step="follower axis")
+        rec.segment((x, -4.0), (x, top), role="construction", width=AXIS_W, layer=LAYER,   # the s axis
+                    step="follower axis")
         labels.append(LabelRequest(complex(x, top), "s", toward=1 + 0.2j, size=TEXT))
     for k in range(len(C)):
         if abs(K[k] - C[k]) > 1e-9:

@@ -14,6 +14,7 @@ from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
 from graphplan.drawing.labels import place_labels
 from graphplan.graphic.record import LabelRequest, Record
+from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
@@ -165,7 +166,7 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
     mu = standard_scale((hi - lo) / height) if hi > lo else 1.0
     mu_phi = 360.0 / width
     rec.scales["mu_phi"] = mu_phi
-    rec.segment((0.0, 0.0), (width + 5.0, 0.0), role="axis", layer="diagrams", step=step)
+    rec.segment((0.0, 0.0), (width + 5.0, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     rec.vector((0.0, lo / mu - 3.0), (0.0, hi / mu + 8.0), role="construction", layer="diagrams", step=step)
     pts = [(float(x / mu_phi), float(v / mu)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[values, values[0]])]
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
@@ -260,8 +261,8 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
     rec.scales["mu_R"] = mu_r
     pad = 5.0
     x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
-    rec.segment((x0, 0.0), (x1, 0.0), role="axis", layer="diagrams", step=step)
-    rec.segment((0.0, y0), (0.0, y1), role="axis", layer="diagrams", step=step)
+    rec.segment((x0, 0.0), (x1, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
+    rec.segment((0.0, y0), (0.0, y1), role="construction", width=AXIS_W, layer="diagrams", step=step)
     for idx, z in _pieces(t, f):
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
@@ -319,7 +320,7 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     step = f"{name}(s)"
     x_end, y_end = reach / mu_s, top / mu_p
     X = lambda k: float(path[k] / mu_s)  # noqa: E731
-    rec.segment((0.0, 0.0), (x_end + 8.0, 0.0), role="axis", layer="diagrams", step=step)
+    rec.segment((0.0, 0.0), (x_end + 8.0, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     rec.vector((0.0, -2.0), (0.0, y_end + 8.0), role="construction", layer="diagrams", step=step)
     pts = [(X(0), float(force[0] / mu_p))]
     for k in range(1, n + 1):

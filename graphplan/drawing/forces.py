@@ -114,6 +114,23 @@ def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -
     return ahead, behind
 
 
+def _run_along(a: complex, b: complex, links: list[tuple[complex, complex]], tol: float = 0.6) -> float:
+    """How much (mm) of the arrow a→b lies on a drawn line — within ``tol`` mm of a segment of
+    ``links`` that runs within ``ALONG_DEG`` of it (Φ5 at the slider's joint along the rod CD, P_D
+    on the lever along the image d–s4): sampled at 40 points."""
+    d = b - a
+    if abs(d) < 1e-9:
+        return 0.0
+    u = d / abs(d)
+    near = [(s, e) for s, e in links if abs(e - s) > 1e-9
+            and abs((u.conjugate() * (e - s) / abs(e - s)).imag) <= math.sin(math.radians(ALONG_DEG))]
+    if not near:
+        return 0.0
+    n = 40
+    hits = sum(1 for k in range(n + 1) if any(_on_segment(a + d * k / n, s, e, tol) for s, e in near))
+    return abs(d) * max(0, hits - 1) / n
+
+
 def _overlap(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
     """Two arrows a→b and c→d on one line (within ``tol`` mm) sharing more than ``tol`` of it."""
     u = _unit(b - a)
@@ -159,11 +176,44 @@ def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[com
     return z, z + max(length, ahead + PAST_MM) * u
 
 
+BLOCK_HALF = 2.5   # a slider's block: 8 × 5 mm
+
+
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
     """A slider drawn as a 8 × 5 mm rectangle along its guide."""
-    u, n = _unit(g) * 4.0, _unit(g) * 2.5j
+    u, n = _unit(g) * 4.0, _unit(g) * BLOCK_HALF * 1j
     rec.add("polygon", [_pt(z - u - n), _pt(z + u - n), _pt(z + u + n), _pt(z - u + n)],
             role="link", layer="mechanism", step=step)
+
+
+GUIDE_MM = 25.0    # a slider's fixed guide drawn this far either side of the block
+
+
+def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, complex]], step: str) -> None:
+    """A slider's fixed guide as the kinematics sheet draws it (drawing.plans.draw_frame): a line of
+    the frame along the guide with short hatch strokes every 4 mm on one side, left clear under
+    the block — on the side where fewer of the drawn ``lines`` (links, arrows) pass near it; a
+    stroke that would still cross one is left out."""
+    u = _unit(g)
+
+    def ink(n: complex) -> int:          # samples of the lines inside the hatching's band on side n
+        return sum(1 for a, b in lines for k in range(41)
+                   if 0.1 <= dot(a + (b - a) * k / 40 - z, n) <= 3.0
+                   and 6.0 <= abs(dot(a + (b - a) * k / 40 - z, u)) <= GUIDE_MM)
+    normal = -1j * u
+    if ink(normal) > ink(-normal):
+        normal = -normal
+    rec.segment(_pt(z - GUIDE_MM * u), _pt(z + GUIDE_MM * u), role="frame", layer="frame", step=step)
+    t = -GUIDE_MM
+    while t <= GUIDE_MM + 1e-9:
+        base = z + t * u
+        p, q = base + 0.35 * normal, base + 2.5 * normal - 2.0 * u
+        # the block (8 mm long) and a millimetre either side clear; a stroke that would cross a
+        # line (the rod coming in at a small angle) or an arrow left out, as a draftsman breaks it
+        if abs(t) > 6.0 and not any(_on_segment(p + (q - p) * k / 4, a, b, 0.4) for k in range(1, 5)
+                                    for a, b in lines):
+            rec.segment(_pt(p), _pt(q), role="hatch", layer="frame", step=step)
+        t += 4.0
 
 
 def _support(rec: Record, z: complex, step: str) -> None:
@@ -187,6 +237,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     step = f"{gp.label}: ΣM = 0, ΣF = 0"
     names: list[tuple[complex, str]] = []
     supports: list[complex] = []
+    guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     for link in gp.links:
         outline = _link_outline(fp, link, mu)
         if len(outline) >= 2:
@@ -200,7 +251,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             g = complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))
             _block(rec, z, g, step)
             if guide.body == FRAME:
-                rec.segment(_pt(z - 25 * g), _pt(z + 25 * g), role="axis", layer="frame", step=step)
+                guides.append((z, g))
         for p in lk.joints:
             z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
@@ -226,15 +277,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             busy.append((complex(at) / mu, _unit(m.acting)))
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
     drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
+    guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
-        link's line (Φ1 at S1 on the crank) or on the line of an arrow already drawn at its point
-        (Φ5 over P_D at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others —
-        unless an arm is drawn to its line (the arm ends on the line itself)."""
+        link's line (Φ1 at S1 on the crank), along a link or a slider's guide (Φ5 along the rod CD,
+        P_B along the guide) or on the line of an arrow already drawn at its point (Φ5 over P_D
+        at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others (a lane farther
+        where that is taken) — unless an arm is drawn to its line (the arm ends on the line)."""
         a, b = _clear_of_links(z, u, length, drawn_links, busy)
         ahead, behind = _along_links(z, u, drawn_links)
-        inside = ahead > 0.5 and behind > 0.5
+        # inside a link's line, or along one from its end (Φ5 at D along the rod CD where P_D
+        # leaves D the other way): either hides in the link
+        inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
         if (inside or over) and name not in armed:
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
@@ -244,7 +299,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             n = 1j * u
             if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
                 n = -n
-            a, b = z + SIDE_MM * n, z + SIDE_MM * n + length * u
+            # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
+            # lanes start clear of the block (its half height and a millimetre)
+            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else SIDE_MM
+            for off in (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM):
+                a, b = z + off * n, z + off * n + length * u
+                if not any(_overlap(a, b, t, h) for _, t, h in drawn):
+                    break
         drawn.append((z, a, b))
         return a, b
 
@@ -324,6 +385,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
             near = a if abs(t.foot - a) < abs(t.foot - b) else b
             rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
+    for z, g in guides:
+        _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step)
     lab = Labeler(rec)
     if omega_at is not None:
         ck = mech.crank
@@ -508,24 +571,38 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             continue
         z = turned[t.image]
         u = _unit(t.vector)
-        tail, tip = z, z + _arrow_length(t.force, biggest) * u
+        length = _arrow_length(t.force, biggest)
+        tail, tip = z, z + length * u
         ahead, behind = _along_links(z, u, lines)
+        if abs(t.arm_mm) >= 1.0 and ahead > 0.5 and behind <= 0.5:
+            # along a line of the lever that runs on from its image (P_D at d along d–s4): drawn
+            # on its own line pushing, its head at the image, so that the arm still ends on it
+            tail, tip = z - length * u, z
         if (any(abs(w - z) < 0.5 and _overlap(tail, tip, a, b) for w, a, b in drawn)
-                or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)):
-            # on the line of a force drawn at the same image (Φ5 with P_D at d), or along a line of
-            # the lever through its point (Φ1 along p_v s1): set aside, parallel, away from the
-            # pole; the arm to their one line serves both
+                or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)
+                or _run_along(tail, tip, lines) > 1.0):
+            # on the line of a force drawn at the same image (Φ5 with P_D at d), along a line of
+            # the lever through its point (Φ1 along p_v s1; P_D along d–s4 where Φ5 shares its
+            # line): set aside, parallel, away from the pole — a lane farther where the first is
+            # taken; the arm to their one line serves both
             n = 1j * u if dot(1j * u, z) >= 0 else -1j * u
-            tail, tip = z + SIDE_MM * n, tip + SIDE_MM * n
+            for k in (1, 2, -1, 3, -2):
+                a_, b_ = tail + k * SIDE_MM * n, tip + k * SIDE_MM * n
+                if not any(_overlap(a_, b_, a, b) for _, a, b in drawn):
+                    break
+            tail, tip = a_, b_
         drawn.append((z, tail, tip))
         rec.vector(_pt(tail), _pt(tip), role="absolute", layer="vectors", step=step,
                    text=f"{t.name}: h = {t.arm_mm:g} mm")
-        labels.append((tip, t.name, u))
+        labels.append((tip, t.name, u) if abs(tip - z) >= abs(tail - z) else (tail, t.name, -u))
         if abs(t.arm_mm) >= 1.0:
             foot = z - dot(z, u) * u
             rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step)
-            if dot(foot - z, u) < 0 or abs(foot - z) > abs(tip - z):
-                rec.segment(_pt(z), _pt(foot), role="projection", layer="construction", step=step)
+            lo, hi = sorted((dot(tail - z, u), dot(tip - z, u)))
+            at = dot(foot - z, u)
+            if at < lo - 1e-9 or at > hi + 1e-9:      # past the arrow: its line extended to the foot
+                near = z + (lo if at < lo else hi) * u
+                rec.segment(_pt(near), _pt(foot), role="projection", layer="construction", step=step)
     crank = fp.ks.mech.crank
     a = turned.get(crank.pin, 0j)
     if lv.balancing_force and abs(a) > 0:
@@ -561,7 +638,9 @@ def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str
 
 
 def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
-    """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm)."""
+    """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm).
+    A tangential component found by a moment equation is printed signed as solved (R^τ03 = −348):
+    its minus says the assumed direction is reversed; its drawn length is the magnitude."""
     rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
     from graphplan.graphic.draftsman import measure
@@ -573,7 +652,7 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, abs(eq.result), measure(abs(eq.result) / fp.mu_F, fp.precision)))
+            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / fp.mu_F, fp.precision)))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]

@@ -4,8 +4,11 @@ A label is a box of ink (its letters' glyph boxes, ``Primitive.ink``). It is pla
 grown by a clearance, meets no line of the drawing (each line by its own width) and no other label:
 first at candidate spots around its point (the preferred side first, 1–3 mm off), then — when none
 is free — farther out with a short thin leader from the point to it (the leader stops short of the
-letters). An optional label (a position number) that finds no free spot is left out; a label that
-must be drawn and finds none goes to the least crowded spot, and ``collisions`` reports it.
+letters). A joint's letter asked with ``breaks`` (a pivot where twelve thin positions meet) is
+instead set beside its point where only thin construction lines are in the way, and those lines are
+interrupted under it, as a draftsman writes it (``_breaking``). An optional label (a position
+number) that finds no free spot is left out; a label that must be drawn and finds none goes to the
+least crowded spot, and ``collisions`` reports it.
 
 ``collisions(record)`` is the same geometry used as a check: every label against every line and
 every other label of the record (the tests run it on whole sheets).
@@ -275,6 +278,10 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
         ink = probe.ink()
         size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
         spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink)
+        if spot is None and req.breaks:
+            spot = _breaking(record, req, ink)
+            if spot is not None:
+                ob = obstacles(record.items)          # the lines under the letter were broken
         if spot is None:
             local = ob.near(req.at, FAR[-1] + size)
             spot = _far(local, req, ink)
@@ -304,6 +311,119 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
         k = int(free[0])
         return tuple(boxes[k]), complex(starts[k]), None
     return None
+
+
+BREAK_WIDTH = 0.5    # lines thinner than this (the thin positions, trajectories, construction) may be broken
+BREAK_ROLES = ("link", "construction", "projection", "trajectory", "arc", "direction", "chord", "ray", "grid")
+
+
+def breakable(p: Primitive) -> bool:
+    """A thin construction or position line a letter may interrupt (a draftsman breaks the thin
+    lines under a pivot's letter): a segment, polyline, circle or arc thinner than ``BREAK_WIDTH``
+    of a construction role — never a link drawn thick, a vector, the frame, a point or a label."""
+    return (p.kind in ("segment", "polyline", "circle", "arc") and p.line_width < BREAK_WIDTH
+            and p.role in BREAK_ROLES and p.layer != "frame")
+
+
+def _breaking(record: Record, req: LabelRequest, ink: Box):
+    """A joint's letter where the point is crowded by thin lines (the crank's pivot, where twelve
+    positions meet): the nearest spot beside the point (within ``NEAR``) that meets no line but
+    breakable ones (``breakable``) and no label; the thin lines under it are broken there, each
+    piece keeping its role, layer, step and width. None where even that finds no spot."""
+    hard = obstacles([p for p in record.items if not breakable(p)])
+    text_size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+    local = hard.near(req.at, NEAR[-1] + text_size)
+    gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+    boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
+    free = np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
+    if not len(free):
+        return None
+    k = int(free[0])
+    box = tuple(boxes[k])
+    broken = []
+    for p in record.items:
+        broken += break_under(p, box, CLEAR) if breakable(p) else [p]
+    record.items[:] = broken
+    return box, complex(starts[k]), None
+
+
+def _outside_runs(ts: list[float], inside: list[bool]) -> list[tuple[float, float]]:
+    """The runs of parameters (sorted ``ts``) whose samples lie outside."""
+    runs, start = [], None
+    for t, ins in zip(ts, inside):
+        if not ins and start is None:
+            start = t
+        if ins and start is not None:
+            runs.append((start, prev))
+            start = None
+        prev = t
+    if start is not None:
+        runs.append((start, ts[-1]))
+    return runs
+
+
+def break_under(p: Primitive, box: Box, clear: float) -> list[Primitive]:
+    """The primitive with what lies within ``clear`` (+ its half width) of the box cut out: the
+    pieces outside, each like the original (role, layer, step, width); the primitive itself where
+    it does not meet the box."""
+    from dataclasses import replace
+    g = clear + p.line_width / 2
+    x0, y0, x1, y1 = box[0] - g, box[1] - g, box[2] + g, box[3] + g
+
+    def inside(x: float, y: float) -> bool:
+        return x0 <= x <= x1 and y0 <= y <= y1
+    if p.kind in ("circle", "arc"):
+        (cx, cy), r = p.points[0], p.radius
+        a0, a1 = p.angles if p.kind == "arc" else (0.0, 360.0)
+        sweep = (a1 - a0) % 360.0 or 360.0
+        n = max(8, int(sweep * 4))
+        ts = [a0 + sweep * k / n for k in range(n + 1)]
+        ins = [inside(cx + r * math.cos(math.radians(t)), cy + r * math.sin(math.radians(t))) for t in ts]
+        if not any(ins):
+            return [p]
+        return [replace(p, kind="arc", angles=(a, b)) for a, b in _outside_runs(ts, ins) if b - a > 0.2]
+    out: list[Primitive] = []
+    pts = list(p.points)
+    if not any(_clips(a[0], a[1], b[0], b[1], x0, y0, x1, y1) for a, b in zip(pts, pts[1:])):
+        return [p]
+    run: list[tuple[float, float]] = []
+    for a, b in zip(pts, pts[1:]):
+        ax, ay, bx, by = a[0], a[1], b[0], b[1]
+        t0, t1 = _clip_params(ax, ay, bx, by, x0, y0, x1, y1)
+        if t0 is None:                    # this piece misses the box
+            run = run or [a]
+            run.append(b)
+            continue
+        if t0 > 1e-9:
+            run = run or [a]
+            run.append((ax + (bx - ax) * t0, ay + (by - ay) * t0))
+        if len(run) >= 2 and math.dist(run[0], run[-1]) > 0.05:
+            out.append(replace(p, points=tuple(run)))
+        run = [(ax + (bx - ax) * t1, ay + (by - ay) * t1), b] if t1 < 1 - 1e-9 else []
+    if len(run) >= 2 and math.dist(run[0], run[-1]) > 0.05:
+        out.append(replace(p, points=tuple(run)))
+    return [replace(q, kind="segment") if p.kind == "segment" else q for q in out]
+
+
+def _clip_params(sx: float, sy: float, ex: float, ey: float, x0: float, y0: float, x1: float, y1: float
+                 ) -> tuple[float | None, float]:
+    """The parameters (t0, t1) in [0, 1] of the part of the segment inside the box (Liang–Barsky);
+    (None, 0) where it misses."""
+    dx, dy = ex - sx, ey - sy
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
+        if abs(p) < 1e-12:
+            if q < 0:
+                return None, 0.0
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return None, 0.0
+    return t0, t1
 
 
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):

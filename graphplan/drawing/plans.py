@@ -218,7 +218,8 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
-        labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5))
+        labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
+                                   breaks=True))   # crowded by thin positions: beside it, the lines broken
     labels += omega_arrow(rec, O, r, mech.omega1)
     labels += link_numbers(sc, lay, pts)
     # numbers of the positions at the crank pin, the output point and the groups' inner joints

@@ -11,8 +11,8 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, SCRIPT_SPACE, em, kern, kerned, lettering,
-                                      plain_width, run_offsets, sub_kern, vector_arrow)
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, em, kern, kerned, lettering,
+                                      plain_width, run_offsets, script_space, sub_kern, vector_arrow)
 from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
@@ -270,8 +270,8 @@ def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float,
     for run in runs(text):
         s = size * SMALL if run.level else size
         x = start if run.stacked else pen
-        if not run.stacked and run.level == 0 and level and run.text:
-            x += SCRIPT_SPACE * em(size)         # the base letters clear of the index before them
+        if not run.stacked and run.level == 0:
+            x += script_space(level, run.text, size)    # the base letters clear of the index before them
         level = run.level
         if run.level == -1 and not run.stacked and base[0] and run.text:
             x += sub_kern(base[0], base[1], run.text[0], s)      # an index beside a P, Г, Т

@@ -499,8 +499,8 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh) -> Record:
     rho = np.linspace(0.0, G, 401)
     l1, l2 = sol.sliding(rho * mesh.mu_l)
     k = LAMBDA_MM
-    rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="axis", layer=LAYER, step="λ axis")
-    rec.segment((0.0, -LAMBDA_CLIP * k - 3), (0.0, k + 8.0), role="axis", layer=LAYER)
+    rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="construction", width=0.35, layer=LAYER, step="λ axis")   # a diagram's
+    rec.segment((0.0, -LAMBDA_CLIP * k - 3), (0.0, k + 8.0), role="construction", width=0.35, layer=LAYER)  # axes: solid
     for curve, name in ((l1, "λ_1"), (l2, "λ_2")):
         ok = np.isfinite(curve) & (np.abs(curve) <= LAMBDA_CLIP)
         xs, ys = rho[ok], curve[ok] * k
@@ -623,8 +623,8 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(o2, "o_2", toward=1 + 0j)
     pl.label(C, "c", toward=1j)
     pl.label(O, "o", toward=-1j)
-    pl.label(complex(X0 + va / 2, yA), "v_A", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=2.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    pl.label(complex(X0 + va / 2, yA), "v_A", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
     rec.scales.update(mu_l=mu, mu_v=mu_v, h=h)
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
                      ratio_bound(tr, mu, h, va, precision), rec)

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from graphplan.util.errors import GraphplanError
 
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
+LEGIBLE_MM = 40.0   # docs/scenes.md: a plan reads when the crank pin's p_v a (π a) is at least this long
 
 UNITS = {"mu_l": "m/mm", "mu_v": "(m/s)/mm", "mu_a": "(m/s²)/mm", "mu_F": "N/mm"}
 SYMBOLS = {"mu_l": "μ_l", "mu_v": "μ_v", "mu_a": "μ_a", "mu_F": "μ_F", "mu_t": "μ_t", "mu_s": "μ_s",
@@ -78,6 +79,35 @@ def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | 
     if largest is not None and limit_mm is not None and largest > 0 and limit_mm > 0:
         need = max(need, largest / limit_mm)
     return at_least(need)
+
+
+GOST_BETWEEN = (1.5, 7.5)   # GOST 2.302's reductions 1:15 and 1:75 (×10^k) between the series' steps
+
+
+def legible_values(mu: float, finer: float) -> list[float]:
+    """The scale coefficients a draftsman may take between the series' ``mu`` and the next finer
+    ``finer`` (a drawing twice as large): GOST 2.302's 1.5 and 7.5 × 10^k — 0.015 between 0.02 and
+    0.01 — then ``finer`` itself; coarsest (smallest drawing) first."""
+    k0 = math.floor(math.log10(mu))
+    inner = [series_value(m, k) for k in range(k0 - 2, k0 + 2) for m in GOST_BETWEEN]
+    return sorted({v for v in inner if finer * (1 + 1e-9) < v < mu * (1 - 1e-9)} | {finer}, reverse=True)
+
+
+def chosen_length(value: float, length_mm: float) -> float:
+    """The lab's own way (REFERENCE §3, seed 004's π a = 110 mm): choose the drawn length of the
+    crank pin's vector, then μ = value / length — written to three significant figures, rounded
+    down, so the vector is drawn at least ``length_mm`` long (v_A = 0.754 m/s, p_v a = 40 mm:
+    μv = 0.0188 (m/s)/mm, p_v a = 40.1 mm)."""
+    if not (value > 0 and length_mm > 0 and math.isfinite(value / length_mm)):
+        raise GraphplanError(f"cannot choose a scale for a segment of size {value!r} drawn {length_mm!r} mm")
+    raw = value / length_mm
+    k = math.floor(math.log10(raw)) - 2
+    return series_value(math.floor(raw / 10.0 ** k * (1 + 1e-12)), k)
+
+
+def on_series(mu: float) -> bool:
+    """Whether μ is a value of the standard series 1, 2, 2.5, 4, 5 × 10^k."""
+    return mu > 0 and abs(at_least(mu) - mu) <= 1e-12 * mu
 
 
 def format_scale(name: str, mu: float, lang: str = "en") -> str:

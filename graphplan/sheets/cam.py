@@ -25,19 +25,18 @@ WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми d^{2}s/dφ^{2}, ds/dφ, s (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма s(ds/dφ), найменший R_0",
            "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
-           "швидкості й кут тиску в точках поділу", "n": "№", "group": "гр."},
+           "швидкості й кут тиску в точках поділу", "n": "№"},
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams d^{2}s/dφ^{2}, ds/dφ, s (graphical integration by "
            "chords)", "phase": "Phase diagram s(ds/dφ), smallest R_0",
            "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
-           "pressure angle at the divisions", "n": "No", "group": "gr."},
+           "pressure angle at the divisions", "n": "No"},
 }
 
 
 def _fields(cam: Cam, lang: str) -> dict[str, str]:
     meta = dict(cam.meta)
-    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
-    if group:
-        org = ", ".join(x for x in (org, f"{WORDS[lang]['group']} {group}") if x)
+    from graphplan.sheets.compose import organisation
+    org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(cam.title_in(lang)),
             "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
             "organisation": escape(org), "scale": "", "sheet": "1", "sheets": "1",

@@ -236,7 +236,46 @@ def _tokens(text: str) -> list[str]:
         else:
             cur += c
     out.append(cur)
-    return [t for t in out if t]
+    return _bound([t for t in out if t])
+
+
+RELATIONS = ("=", "≈", "≤", "≥", "<", ">")
+
+
+def _unit_word(token: str) -> bool:
+    """Whether a word is a unit as the sheets write one after a value (мм, Н·м, (м/с)/мм, °/мм, %)."""
+    from graphplan.util.words import UNITS
+    bare = token.rstrip(",;:.)")
+    if not bare or any(c in "0123456789" for c in bare):
+        return False
+    return bare in {u for pair in UNITS.values() for u in pair} or bare in ("%", "°") or "/" in bare \
+        or "·" in bare
+
+
+def _bound(words: list[str]) -> list[str]:
+    """The words a line never breaks between kept together: a symbol, its relation and its value
+    with the value's unit — "μ_a = 0,025 (м/с²)/мм," is one word to the wrapping (the reviewer found
+    "μ_a" at a line's end, "= 0,025" under it), and any number its unit ("Φ_2 3 мм"). A chain
+    "J = a = b" breaks before its second "=" at most (each "= value unit" whole)."""
+    out: list[str] = []
+    state = None              # "rel": a relation waits for its value; "value": a unit may follow
+    for t in words:
+        if t in RELATIONS:
+            if out and state is None and not out[-1].endswith((",", ";", ":")):
+                out[-1] += " " + t
+            else:
+                out.append(t)
+            state = "rel"
+        elif state == "rel":
+            out[-1] += " " + t
+            state = None if t.endswith((",", ";", ":")) else "value"
+        elif (state == "value" or (out and out[-1][-1:] in "0123456789")) and _unit_word(t):
+            out[-1] += " " + t            # a value keeps its unit: "3 мм", "= 0,025 (м/с²)/мм"
+            state = None
+        else:
+            out.append(t)
+            state = None
+    return out
 
 
 @functools.lru_cache(maxsize=4096)
@@ -248,6 +287,14 @@ def _wrapped(text: str, width: float, size: float) -> tuple[str, ...]:
         else:
             lines.append(word)
     return tuple(lines or [""])
+
+
+def organisation(meta: dict, lang: str) -> str:
+    """The title block's organisation field: the organisation and the student's group in one word
+    on every sheet ("НУБіП України, гр. МБ-21"; "…, group МБ-21"), unescaped."""
+    from graphplan.util.words import word
+    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
+    return ", ".join(x for x in (org, word("kin group", lang, g=group) if group else "") if x)
 
 
 def wrap_markup(text: str, width: float, size: float) -> list[str]:

@@ -17,6 +17,7 @@ from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, f
                                       note_block, notes_height)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
+from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import LANGS, column, fixed, num
 
@@ -45,8 +46,7 @@ WORDS = {
            "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ω_m = {w} рад/с",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
-           "turn": "φ — поворот кривошипа від положення 0 у бік його обертання (як на діаграмах); положення 0: "
-                   "кут кривошипа {phi0}° від осі x; dI^*_м/dφ — похідна за цим φ",
+           "turn": "dI^*_м/dφ — похідна за цим φ",
            "none": "Маховик не потрібен: ротор і редуктор (I_рот·i² + I_ред = {c} кг·м²) уже дають δ ≤ {d} "
                    "(потрібно J = {j} кг·м²), тому I_мах = 0",
            "weak": "Двигун {name}: P_н = {p} кВт менша за потрібну за правилом P = M^*_{{с max}}·ω_1/η = {need} кВт",
@@ -67,8 +67,7 @@ WORDS = {
            "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ω_m = {w} rad/s",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
-           "turn": "φ: the crank's turn from position 0 in its sense of rotation (as on the diagrams); position 0: "
-                   "crank angle {phi0}° from the x axis; dI^*_m/dφ: the derivative along this φ",
+           "turn": "dI^*_m/dφ: the derivative along this φ",
            "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I_red = {c} kg·m²) already keep "
                    "δ ≤ {d} (J = {j} kg·m² is needed), so I_fl = 0",
            "weak": "Motor {name}: P_n = {p} kW is below the power rule P = M^*_{{c max}}·ω_1/η = {need} kW",
@@ -190,7 +189,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
              *[line for line in (tangents_note(f, lang),) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
-             w["turn"].format(phi0=fixed(doc["start_phi_deg"], lang, 1))]
+             f"{phi_convention(doc['start_phi_deg'], lang)}; {w['turn']}"]
     said = []
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
@@ -409,4 +408,4 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     from graphplan.util.words import word
     tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
     tf["subtitle"] = WORDS[lang]["subtitle"]
-    return compose(f, pages, tf, lang, f"{st.mech.title} — {tf['subtitle']}")
+    return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {tf['subtitle']}")

@@ -25,6 +25,7 @@ from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, ch
                                       options_of, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import ONE_SHEET, TITLE, acceleration_table, fields, notes
+from graphplan.sheets.kintables import title_in
 from graphplan.util.errors import GraphplanError
 from graphplan.sheets.compose import number
 from graphplan.util.words import fixed, force_symbol, num, unit, word
@@ -52,16 +53,16 @@ def has_loads(st: Study) -> bool:
 
 def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
     """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε, G = m·g,
-    Φ = m·a_S and M_Φ = −I_S·ε — one computation and one sign convention with the force plans, the
+    Φ = m·a_S and M^Φ = −I_S·ε — one computation and one sign convention with the force plans, the
     groups' tables, the lever and ``forces``: the inertia loads of the exact kinetostatics (``ks``;
-    ε and M_Φ + counter-clockwise); the plan's own a_S beside the exact ones is Table 2's business.
+    ε and M^Φ + counter-clockwise); the plan's own a_S beside the exact ones is Table 2's business.
     ``acc_doc`` is not read (kept for the callers)."""
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     mech = st.mech
     kin = ks.kin
     rows = [[w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}", f"a_S, {unit('m/s²', lang)}",
              f"ε, {unit('rad/s²', lang)}", f"G, {unit('N', lang)}", f"Φ, {unit('N', lang)}",
-             f"M_Φ, {unit('N·m', lang)}"]]
+             f"M^Φ, {unit('N·m', lang)}"]]
     loads = {(ld.link, ld.kind): ld for ld in ks.loads}
     for name, link in mech.links.items():
         m, inertia = link.mass or 0.0, link.inertia or 0.0
@@ -617,4 +618,4 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
-    return compose(f, pages, tf, lang, f"{st.mech.title} — {w('subtitle')}")
+    return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")

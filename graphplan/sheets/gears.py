@@ -22,7 +22,7 @@ from graphplan.util.markup import escape
 from graphplan.util.words import num
 
 WORDS = {
-    "uk": {"subtitle": "Синтез зубчастих механізмів", "group": "гр.",
+    "uk": {"subtitle": "Синтез зубчастих механізмів",
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
            "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
@@ -51,7 +51,7 @@ WORDS = {
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
            "past": "! — прочитане поза межею похибки від точності креслення"},
-    "en": {"subtitle": "Gear synthesis", "group": "gr.",
+    "en": {"subtitle": "Gear synthesis",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
            "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
@@ -199,9 +199,8 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
 
 def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
     meta = dict(g.meta)
-    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
-    if group:
-        org = ", ".join(x for x in (org, f"{WORDS[lang]['group']} {group}") if x)
+    from graphplan.sheets.compose import organisation
+    org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(g.title_in(lang)),
             "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
             "organisation": escape(org), "scale": drawing_scale(mu_l, lang) if mu_l else "", "sheet": "1",

@@ -23,12 +23,12 @@ from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, d
 from graphplan.sheets.form import TABLES, Form, form
 # the tables and the title block's fields (the force, dynamics and cam sheets import them from here too)
 from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, lab_table, notes,  # noqa: F401
-                                        notes_lines, sheet_tables, velocity_columns)
+                                        notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, column_leaf, grid_rows, legible, one_sheet, room,
                                         room_fits, set_of_sheets, set_rows, size_of, tree)
 from graphplan.util.errors import GraphplanError
-from graphplan.util.words import fixed, word
+from graphplan.util.words import fixed, num, word
 
 
 def _accel_arg(values) -> list | None:
@@ -128,7 +128,8 @@ def _captions(st: Study, plans, lang: str, mu: dict[str, float]) -> dict[str, li
                        for q in plans.positions]
     out["acceleration"] = [
         (f"{w('acceleration')}, {w('position')} {q.index}" if q.index is not None else w('acceleration'),
-         f"{format_scale('mu_a', mu['acceleration'], lang)},  φ = {fixed(q.phi % 360, lang, 1)}°")
+         f"{format_scale('mu_a', mu['acceleration'], lang)},  "
+         f"φ = {num(float(st.from_position0(q.phi % 360)), lang, 4)}°")
         for q in plans.positions if q.acceleration is not None]
     return out
 
@@ -347,5 +348,5 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
-    return compose(f, pages, fields(st, opts.lang, drawing_scale(p.mu["position"], opts.lang)), opts.lang,
-                   st.mech.title)
+    tf = fields(st, opts.lang, drawing_scale(p.mu["position"], opts.lang))
+    return compose(f, pages, tf, opts.lang, f"{title_in(st, opts.lang)} — {tf['subtitle']}")

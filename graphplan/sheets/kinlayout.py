@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
+from graphplan.graphic.scales import LEGIBLE_MM   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError
@@ -21,7 +22,6 @@ if TYPE_CHECKING:
 
 FAMILIES = ("position", "velocity", "acceleration")
 PLAN_MM = 100.0        # … or its largest plan drawn at least this across
-LEGIBLE_MM = 40.0      # a set's plans: the crank pin's vectors p_v a and π a drawn at least this long
 CRANK_MM = 30.0        # a set's position plan: the crank drawn at least this long (else its twelve
                        # positions crowd the letters off their points: 1:4 drew OA 20 mm, S1 23 mm away)
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
@@ -156,7 +156,7 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
 
-        def arranged(mu, shape, best_fill=False):
+        def arranged(mu, shape, best_fill=False, D=D):
             P = nat.leaf("position", mu["position"])
             V = [nat.leaf("velocity", mu["velocity"])] * nv
             A = [nat.leaf("acceleration", mu["acceleration"])] * na
@@ -194,15 +194,59 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
             mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
             if mu is None:
                 continue
+            k_d, D_k = 1.0, D
+            if not legible(nat, mu):
+                found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
+                if found is not None:
+                    mu, k_d = found
+                    D_k = Leaf("diagrams", *diagrams_size(dr, nat, k_d))
             rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
-            score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
-                     -SHAPES.index(shape))
-            _, vc, ac, parts = arranged(mu, shape, best_fill=True)
+            score = (legible(nat, mu), round(min(rel), 6), round(sum(math.log(r) for r in rel), 6),
+                     k_d, factor == TABLES, -SHAPES.index(shape))
+            _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
             counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, 1.0, factor, shape, vc, ac, parts, 1, counts))
+            cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
             if best is None or cand[0] > best[0]:
                 best = cand
     return best[1] if best else None
+
+
+def legible_where_room(dr: Drafter, nat: Natural, mu: dict[str, float], fits
+                       ) -> tuple[dict[str, float], float] | None:
+    """The plans made legible where the sheet has the room (docs/scenes.md: the crank pin's p_v a
+    and π a at least ``LEGIBLE_MM``; ``readable``): each family of plans drawn shorter is given a
+    scale that draws it legibly and still ``fits(μ, diagrams' leaf)``, the other families as they
+    are — first a round one, GOST 2.302's 1:15 and 1:75 between the series' steps or the series'
+    next; else the lab's own (REFERENCE §3, seed 004): p_v a chosen, the longest multiple of 5 mm
+    from ``LEGIBLE_MM`` up that fits, μ = v_A / p_v a (the six-bar's μv 0.02 drew p_v a 37.7 mm in
+    cells twice as large; the series' next, 0.01, would need twice the room). The diagrams keep
+    their size, or give a step (0.8) where only that makes the room. The scales and the diagrams'
+    size factor, or None where none fits (one sheet then holds the plans smaller: LAYOUT.md's
+    last resort)."""
+    from graphplan.graphic.scales import chosen_length, legible_values
+    for k in DIAGRAM_SIZES[:2]:
+        if k != 1.0 and not dr.diagrams_right(k):
+            continue
+        D = Leaf("diagrams", *diagrams_size(dr, nat, k))
+        out = dict(mu)
+        for name in ("velocity", "acceleration"):
+            fam = nat.families[name]
+            if nat.count[name] == 0 or readable(fam, out[name]):
+                continue
+            nxt = finer(out[name])
+            found = next((v for v in legible_values(out[name], nxt)
+                          if readable(fam, v) and fits({**out, name: v}, D)), None)
+            if found is None:
+                lengths = [LEGIBLE_MM + 5.0 * j for j in range(int((fam.drawn(nxt) - LEGIBLE_MM) // 5.0) + 1)]
+                fitting = [m for m in (chosen_length(fam.principal, n) for n in lengths)
+                           if m < out[name] and fits({**out, name: m}, D)]
+                found = min(fitting) if fitting else None
+            if found is None:
+                break
+            out[name] = found
+        else:
+            return out, k
+    return None
 
 
 def readable(fam: Family, mu: float) -> bool:

@@ -104,7 +104,8 @@ def footnoted(rec: Record, notes: list[str], size: float = 2.5) -> Record:
 
 
 def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
-    """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3, with
+    """Table 1: the plans' velocities (graphical) at every position, like seed 004's table 3 (φ the
+    crank's turn from position 0, as on every sheet), with
     the row's largest error; ω signed (+ counter-clockwise); a row's error past the lab's 5 % is
     marked and its footnote says which vector and why."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
@@ -120,7 +121,7 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
             key = worst(pos, keys)
             notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v"), pos,
                                                                 "velocity", lang)))
-        rows.append([str(pos["index"]), fixed(pos['phi_deg'], lang, 1)]
+        rows.append([str(pos["index"]), fixed(pos.get("turn_deg", pos["phi_deg"]), lang, 1)]
                     + [_cell(pos["velocity"].get(k), precision, lang) for k in keys] + [cell])
     widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
     rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
@@ -243,7 +244,7 @@ def lab_table(diag, lang: str, n: int = 4) -> Record | None:
         return cell
 
     for k in chosen:
-        rows.append([str(diag.position[k]), fixed(diag.phi[k], lang, 1),
+        rows.append([str(diag.position[k]), fixed(float(diag.turn[k]) % 360.0, lang, 1),
                      number(k_ * r.s[k], 3, lang=lang), number(vals["s"][k], lang=lang),
                      number(k_ * r.v_at[k], 3, lang=lang), number(vals["v_at"][k], lang=lang),
                      pct("v_at", ev, k, r.v_at[k], v_),
@@ -255,18 +256,33 @@ def lab_table(diag, lang: str, n: int = 4) -> Record | None:
     return footnoted(rec, said)
 
 
+def phi_convention(phi0: float, lang: str) -> str:
+    """The one meaning of φ on every sheet (the lab's, seed 000's φ_8 = 200°): the crank's turn from
+    position 0 in its sense of rotation; the crank angle of position 0 from the x axis beside it."""
+    return word("sheet phi", lang, phi0=fixed(phi0 % 360.0, lang, 1))
+
+
 def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
-    """The structural formula, the mobility and the scale coefficients as lines of text."""
+    """The structural formula, the mobility, the scale coefficients and what φ means as lines of
+    text."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     s = st.structure
     lines = [f"{w('mobility')}: W = 3n − 2p_5 − p_4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
              f"{w('structure')}: {s.formula}  ("
              + ", ".join(f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads) + ")",
-             f"{w('scales')}: " + "; ".join(scales)] + extra
+             f"{w('scales')}: " + "; ".join(scales), phi_convention(st.phi0, lang)] + extra
     rec = Record("notes")
     for k, line in enumerate(lines):
         rec.label((0.0, -7.0 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def title_in(st: Study, lang: str) -> str:
+    """The scene's title in the sheet's language: ``title_en`` on an English sheet where the scene
+    gives it (the title block and the SVG's <title> alike), else ``title``."""
+    meta = st.mech.task.meta
+    title = meta.get("title", st.mech.title)
+    return meta.get("title_en", title) if lang == "en" else title
 
 
 def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
@@ -274,11 +290,9 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
     """The title block's fields from the scene's title and [sheet] table: the organisation's field
     carries the organisation and the student's group ("НУБіП України, гр. МБ-21")."""
     meta = st.mech.task.meta
-    title = meta.get("title_en", meta.get("title", st.mech.title)) if lang == "en" else \
-        meta.get("title", st.mech.title)
-    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
-    if group:
-        org = ", ".join(x for x in (org, word("kin group", lang, g=group)) if x)
+    title = title_in(st, lang)
+    from graphplan.sheets.compose import organisation
+    org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(title),
             "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
             "organisation": escape(org),

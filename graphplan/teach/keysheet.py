@@ -432,7 +432,7 @@ def _curves(rec: Record, key: dict[str, Any], x0: float, top: float, width: floa
         for k in range(1, n):
             rec.segment((X(k * 360.0 / n), y0), (X(k * 360.0 / n), y1), role="grid", layer="diagrams")
         if lo < 0 < hi:
-            rec.segment((px, Y(0.0)), (px + pw, Y(0.0)), role="axis", layer="diagrams")
+            rec.segment((px, Y(0.0)), (px + pw, Y(0.0)), role="construction", layer="diagrams")   # solid (GOST 2.303)
         rec.add("polyline", [(X(t), Y(v)) for t, v in zip(turn, values)], role="curve", layer="diagrams")
         for j in marks[name]:
             point = key["diagram"][j]

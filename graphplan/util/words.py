@@ -359,8 +359,8 @@ WORDS: dict[str, tuple[str, str]] = {
                       "μ_F = {mf} {N/mm}, μ_v = {mv} {(m/s)/mm}",
                       "ω_1 = {w} {rad/s}; drafting precision {p} {mm}; μ_l = {ml} {m/mm}, "
                       "μ_F = {mf} {N/mm}, μ_v = {mv} {(m/s)/mm}"),
-    "loads": ("Навантаження: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ проти годинникової стрілки), зовнішні сили",
-              "Loads: G = m·g, Φ = −m·a_S, M_Φ = −I_S·ε (+ counter-clockwise), external forces"),
+    "loads": ("Навантаження: G = m·g, Φ = −m·a_S, M^Φ = −I_S·ε (+ проти годинникової стрілки), зовнішні сили",
+              "Loads: G = m·g, Φ = −m·a_S, M^Φ = −I_S·ε (+ counter-clockwise), external forces"),
     "no loads": ("немає: у сцені немає ні мас, ні сил, тож усі реакції нульові",
                  "none: the scene gives no masses and no forces, so every reaction is zero"),
     "load": ("навантаження", "load"), "link": ("ланка", "link"), "value": ("значення", "value"),
@@ -560,6 +560,10 @@ WORDS: dict[str, tuple[str, str]] = {
                              "Table 1. Velocities, m/s; ω, rad/s (+ counter-clockwise)"),
     "kin acc_table_signed": ("Таблиця {n}. Прискорення, м/с²; ε, рад/с² (+ проти год. стрілки), положення {i}",
                              "Table {n}. Accelerations, m/s²; ε, rad/s² (+ counter-clockwise), position {i}"),
+    "sheet phi": ("φ — поворот кривошипа від положення 0 у бік його обертання; положення 0: кут кривошипа {phi0}° "
+                  "від осі x",
+                  "φ: the crank's turn from position 0 in its sense of rotation; position 0: crank angle {phi0}° "
+                  "from the x axis"),
     "kin turn_at": ("φ = {turn}° від положення 0", "φ = {turn}° from position 0"),
     "kin why_short": ("{sym}: короткий вектор ({mm} мм)", "{sym}: a short vector ({mm} mm)"),
     "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм)", "{sym}: read from a short vector ({mm} mm)"),
@@ -575,10 +579,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
                          "The ordinates, mm, carry the value's sign along the guide (the diagrams are drawn mirrored)"),
     "kin group": ("гр.\u00a0{g}", "group\u00a0{g}"),
-    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S і M_Φ = −I_S·ε діють у планах сил "
-                        "і на важелі; ε, M_Φ: + проти год. стрілки",
-                        "a_S, ε from the exact analysis; the same Φ = m·a_S and M_Φ = −I_S·ε act on the force "
-                        "plans and the lever; ε, M_Φ: + counter-clockwise"),
+    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S і M^Φ = −I_S·ε діють у планах сил "
+                        "і на важелі; ε, M^Φ: + проти год. стрілки",
+                        "a_S, ε from the exact analysis; the same Φ = m·a_S and M^Φ = −I_S·ε act on the force "
+                        "plans and the lever; ε, M^Φ: + counter-clockwise"),
     "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}°)",
                     "φ = {turn}° from position 0 (crank angle {phi}°)"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),

@@ -1,0 +1,168 @@
+"""The teacher's review scenes (the six-bar I(0-1) → II(2-3) RRR → II(4-5) RRP with a slider driven
+by a rocker's extension; the offset crank-slider press turning clockwise) as scene text, for the
+tests of the review's corrections."""
+
+SIXBAR = '''# Review scene 1: a six-bar — crank-rocker four-bar O1ABO2 whose rocker extension C drives a slider D
+# through rod CD (structural formula I(0-1) -> II(2-3) -> II(4-5)).
+title = "Шестиланковий важільний механізм з повзуном"
+title_en = "Six-bar linkage with a slider"
+designation = "ТММ.РВ1.00.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.02]
+
+[frame.guides]
+x = { through = [0, 0.30], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 6
+inertia = 0.05
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+shape = { C = [0.30, 0.0] }
+points = { S3 = 0.5 }
+mass = 7
+inertia = 0.06
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.32
+points = { S4 = 0.5 }
+mass = 5
+inertia = 0.045
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "x"
+mass = 25
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500
+'''
+
+OFFSET_SLIDER = '''# Review scene 2: an offset (eccentric) crank-slider press with a heavy load, 1000 rpm motor line.
+title = "Дезаксіальний кривошипно-повзунний механізм преса"
+title_en = "Offset crank-slider mechanism of a press"
+designation = "ТММ.РВ2.00.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[params]
+r = 0.09
+l = 0.36
+e = -0.03
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, "e"], angle_deg = 0 }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 60
+direction = "cw"
+points = { S1 = 0.3 }
+mass = 12
+inertia = 0.05
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+points = { S2 = 0.3 }
+mass = 18
+inertia = 0.25
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 60
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [3]
+force_phi_deg = 60
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 25000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.05, 0], [0.08, 1], [0.18, 1], [0.19, 0]]
+
+[dynamics]
+delta = 0.03
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
