@@ -238,7 +238,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     else:
         y0 = float(C[0].imag)
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
-        rec.segment((lo, y0), (hi, y0), role="axis", layer=LAYER, step="axis ds/dφ")
+        rec.segment((lo, y0), (hi, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis ds/dφ")
         labels.append(LabelRequest(complex(hi, y0), "ds/dφ", toward=1 - 1j, size=TEXT, step="axis ds/dφ"))
     for k in range(len(K)):
         labels.append(LabelRequest(K[k], str(k), toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
