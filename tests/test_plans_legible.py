@@ -75,3 +75,31 @@ def test_position_plan_letters_and_numbers(name, fmt):
         for b in numbers[i + 1:]:
             need = LINK_APART if max(a.size, b.size) >= LINK_SIZE else NUMBERS_APART
             assert _box_gap(a.ink(), b.ink()) >= need - 1e-6, (a.text, b.text)
+
+
+@pytest.mark.parametrize("r,ratio,offset", [(0.1, 4.0, 0.3), (0.15, 3.0, -0.4), (0.08, 5.0, 0.0)])
+def test_a_slider_stroke_and_offset_are_dimensioned(r, ratio, offset):
+    """The position plan dimensions the slider's stroke H and a crank-slider's offset e in real mm:
+    H = √((l + r)² − e²) − √((l − r)² − e²) (the closed form, not the drawing's) to the whole mm, e
+    the scene's; no e where the guide passes through the crank's pivot."""
+    import math
+    import re
+
+    from coursework_scenes import crank_slider
+    from graphplan.exact.positions import study
+    from graphplan.graphic.plans import build_plans
+    from graphplan.model.scene import loads
+    st = study(loads(crank_slider(r, ratio, offset, 60.0, 50.0, 1000.0, 10.0), "cs"))
+    rec = position_record(build_plans(st))
+    texts = [p.text for p in rec.items if p.kind == "text"]
+    l, e = ratio * r, abs(offset) * r
+    H = math.sqrt((l + r) ** 2 - e ** 2) - math.sqrt((l - r) ** 2 - e ** 2)
+    found = [t for t in texts if re.fullmatch(r"H = \d+", t)]
+    assert found and abs(int(found[0][4:]) - 1000 * H) <= 0.5 + 1e-9, (found, 1000 * H)
+    es = [t for t in texts if re.fullmatch(r"e = \d+", t)]
+    if e:
+        assert es and abs(int(es[0][4:]) - 1000 * e) <= 0.5 + 1e-9, es
+    else:
+        assert es == []
+    dims = [p for p in rec.items if p.step == "dimensions" and p.kind == "vector"]
+    assert len(dims) == (4 if e else 2)

@@ -236,7 +236,60 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
         X = where(sc, lay, sc.body_of(out), out)
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
         labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+    labels += stroke_dimensions(rec, plans, O)
     return place_labels(rec, labels) if lettered else rec
+
+
+DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)
+
+
+def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
+    """The output slider's stroke H between its extreme positions, dimensioned on the side of its
+    path away from the crank (extension lines, a dimension line with arrows at both ends, GOST
+    2.307), and a crank-slider's offset e from the crank's pivot to the path — each lettered with its
+    real size in mm (``H = 250``, ``e = 30``), as a kinematic scheme gives them. None for a rocker."""
+    st = plans.study
+    if st.output.kind != "slide" or len(plans.extremes) < 2:
+        return []
+    sc = plans.scheme
+    out = output_point(plans)
+    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in plans.extremes[:2])
+    if abs(X2 - X1) < 1e-6:
+        return []
+    u = (X2 - X1) / abs(X2 - X1)
+    n = 1j * u
+    side = ((O - X1) * n.conjugate()).real          # O's side of the path (+ along n)
+    away = -n if side > 0 else n
+    step = "dimensions"
+    a, b = X1 + away * DIM_OFF, X2 + away * DIM_OFF
+    for X, Y in ((X1, a), (X2, b)):
+        rec.segment(_pt(X + away * 1.5), _pt(Y + away * 2.0), role="construction", layer="construction", step=step)
+    mid = 0.5 * (a + b)
+    rec.vector(_pt(mid), _pt(a), role="construction", layer="construction", step=step)
+    rec.vector(_pt(mid), _pt(b), role="construction", layer="construction", step=step)
+    mm = 1000.0 * plans.mu_l
+    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm)}", toward=away, size=3.5, step=step)]
+    if len(st.structure.dyads) == 1 and abs(side) * mm >= 0.5:      # a crank-slider's offset
+        # beside the crank's circle, on the side away from the slider: O's line and the path carried
+        # there parallel to the path, the dimension line across them
+        F = X1 + ((O - X1) * u.conjugate()).real * u                # the foot of O on the path
+        back = -u if ((0.5 * (X1 + X2) - O) * u.conjugate()).real > 0 else u
+        r = st.mech.crank.length / plans.mu_l
+        near = min((X1, X2), key=lambda z: abs(z - F))
+        for start, end in ((O, O + back * (r + 10.0)), (near, F + back * (r + 10.0))):
+            rec.segment(_pt(start), _pt(end), role="construction", layer="construction", step=step)
+        a, b = O + back * (r + 8.0), F + back * (r + 8.0)
+        c = 0.5 * (a + b)
+        rec.vector(_pt(c), _pt(a), role="construction", layer="construction", step=step)
+        rec.vector(_pt(c), _pt(b), role="construction", layer="construction", step=step)
+        labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm)}", toward=back, size=3.5, step=step))
+    return labels
+
+
+def _real_mm(v: float) -> str:
+    """A real length in whole millimetres, as a scheme's dimensions read (a number without a decimal
+    sign reads the same in either language)."""
+    return f"{max(v, 1.0):.0f}"
 
 
 def sheet_points(plans: Plans) -> list[str]:
