@@ -168,9 +168,83 @@ def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
     return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m")
 
 
-def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
+PROJ_LAYER = "construction"   # the thin projection lines that carry ΔT across and I* up
+
+
+def projected_x(f: Flywheel, length: float) -> np.ndarray:
+    """The divisions' abscissae on a φ axis ``length`` mm long (the ΔT(φ) and the turned I*(φ)
+    diagrams of the projection: their φ scale is free, their ordinates' μ_T and μ_I are not)."""
+    return np.asarray(f.x) * (length / f.L)
+
+
+def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Record:
+    """ΔT(φ) beside the energy–mass diagram (the textbook's elimination of φ): the read ordinates
+    ΔT_k at μ_T = μ_A over a φ axis ``length`` mm long, and from each division point a thin
+    horizontal projection line to x = ``reach`` (the energy–mass diagram's side, same height)."""
+    w = WORDS[lang]
+    rec = Record(w["energy"], scales={"mu_T": f.mu_A})
+    xs = projected_x(f, length)
+    lo, hi = _extent(f.dT)
+    n = f.divisions
+    rec.vector((0.0, lo - 1.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
+    rec.vector((-3.0, 0.0), (length + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
+    _text(rec, (1.8, hi + 5.0), "ΔT", step="axes ΔT")
+    every = 1
+    while length / n * every < 5.0:
+        every *= 2
+    for k, xk in enumerate(xs):
+        if k:
+            rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
+        if k % every == 0 or k == n:
+            rec.label((xk, lo - 5.0), str(k), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
+    for xk, yk in zip(xs, f.dT):
+        rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
+    fine, curve = _smooth(f, f.dT)
+    rec.add("polyline", list(zip(fine * (length / f.L), curve)), role="curve", layer=LAYER, step="ΔT(φ)")
+    for j in range(n):
+        rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
+                    step=f"projection of ΔT at {j}")
+    return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT")],
+                        layer=LAYER)
+
+
+def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Record:
+    """I*_m(φ) turned by 90° under the energy–mass diagram: I* to the right at the same μ_I (its
+    I* axis the energy–mass diagram's), φ running downward over ``length`` mm; from each division
+    point a thin vertical projection line up to y = ``reach``."""
+    w = WORDS[lang]
+    rec = Record(w["inertia"], scales={"mu_I": f.mu_I})
+    ys = -projected_x(f, length)
+    hi = float(np.max(f.I))
+    n = f.divisions
+    rec.vector((0.0, 1.0), (0.0, -length - 10.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
+    rec.vector((-1.0, 0.0), (hi + 8.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
+    _text(rec, (hi + 9.5, -1.2), w["Im"], step="axes I*_m")
+    rec.label((0.0, -length - 15.0), "φ", size=TEXT, anchor="middle", layer=LAYER, step="axes I*_m")
+    every = 1
+    while length / n * every < 5.0:
+        every *= 2
+    for k, yk in enumerate(ys):
+        if k:
+            rec.segment((0.0, yk), (hi, yk), role="grid", layer=LAYER, step="division ordinates")
+        if k % every == 0 or k == n:
+            rec.label((-2.0, yk - 0.9), str(k), size=NUM, anchor="end", layer=LAYER, step="division numbers")
+    for yk, ik in zip(ys, f.I):
+        rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
+    fine, curve = _smooth(f, f.I)
+    rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
+    for j in range(n):
+        rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,
+                    step=f"projection of I* at {j}")
+    return rec
+
+
+def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, float] | None = None) -> Record:
     """ΔT over I*_m: the points of the divisions numbered, the French curve, the tangents at
-    ψ_max and ψ_min cutting the ΔT axis at k and l, and |kl|."""
+    ψ_max and ψ_min cutting the ΔT axis at k and l, and |kl|. With ``projections`` (x of the
+    left side, y of the foot) each point i is where the horizontal projection of ΔT(φ)'s point i
+    from the left meets the vertical projection of the turned I*(φ)'s point i from below (the
+    lettering then keeps off the lines: k, l to the left of the ΔT axis, |kl| under l)."""
     w = WORDS[lang]
     rec = Record(w["witt"], scales={"mu_I": f.mu_I, "mu_T": f.mu_A})
     X, Y = f.curve()
@@ -184,6 +258,12 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     labels = [LabelRequest(complex(0.0, hi + 10.0), "ΔT", 1 + 0j, TEXT, step="axes")]
     rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
+    if projections is not None:
+        left, foot = projections
+        for j in range(n):
+            at = (float(f.I[j]), float(f.dT[j]))
+            rec.segment((left, at[1]), at, role="projection", layer=PROJ_LAYER, step=f"projection of ΔT at {j}")
+            rec.segment((at[0], foot), at, role="projection", layer=PROJ_LAYER, step=f"projection of I* at {j}")
     every = 1
     while n / every > 24:
         every *= 2
@@ -194,6 +274,8 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
         x_end = tx + 15.0
+        if projections is not None and b + s * x_end < float(np.max(f.dT)) + 4.0:    # among the projections:
+            x_end = max(x_end, x_hi + 4.0)                                         # its ψ right of them
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
@@ -201,14 +283,16 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk") -> Record:
                                    step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
-    labels += [LabelRequest(complex(0.0, k), "k", 1 - 1j, TEXT, step="k"),
-               LabelRequest(complex(0.0, l), "l", 1 + 1j, TEXT, step="l")]
+    side = 1.0 if projections is None else -1.0          # the projections cross x > 0 between k and l
+    labels += [LabelRequest(complex(0.0, k), "k", side - 1j * side, TEXT, step="k"),
+               LabelRequest(complex(0.0, l), "l", side + 1j * side, TEXT, step="l")]
     xd = -9.0
     rec.vector((xd, 0.5 * (k + l)), (xd, k), role="construction", layer=LAYER, step="kl")
     rec.vector((xd, 0.5 * (k + l)), (xd, l), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, k), (0.0, k), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, l), (0.0, l), role="construction", layer=LAYER, step="kl")
-    rec.label((xd - 1.5, 0.5 * (k + l) - 1.2), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
+    y_kl = 0.5 * (k + l) - 1.2 if projections is None else l - 5.5    # the ΔT projections pass between k and l
+    rec.label((xd - 1.5, y_kl), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
     return place_labels(rec, labels, layer=LAYER)
 

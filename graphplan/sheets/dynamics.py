@@ -4,16 +4,17 @@ flywheel read off |kl|, the steady-state speed ω(φ), the tables of the reduced
 position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
-from graphplan.drawing.flywheel import achieved, records, speed_fitted
+from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, records, speed_fitted,
+                                       wittenbauer_record)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import Record, text_width
 from graphplan.report.dynamics import dynamics_json, not_needed, redrawn_note, tangents_note
-from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
+from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
@@ -216,6 +217,95 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
 
 
 DRAWINGS = ("moments", "energy", "inertia", "wittenbauer", "speed")
+BAND = ("energy", "wittenbauer", "inertia")
+# the φ axis of ΔT(φ) and of the turned I*(φ) (free: their ordinates' μ_T and μ_I are the
+# construction's), as a share of L, largest first, no shorter than PROJECTED_MIN mm
+PROJECTED = (1.0, 0.85, 0.7, 0.6, 0.5, 0.42, 0.35)
+PROJECTED_MIN = 80.0
+PROJECTED_LEAST = 50.0      # … but on a set's page too small for that (5 mm a division at 10)
+
+
+def _body(rec: Record) -> tuple[float, float, float, float]:
+    """The drawing's box without its projection lines (they run to the neighbour's side)."""
+    return Record(items=[p for p in rec.items if p.role != "projection"]).bounds()
+
+
+def _caption(rec: Record, title: str, above: bool = False, left: float | None = None) -> Record:
+    """``captioned``, centred on the drawing without its projection lines; ``above`` it for the
+    energy–mass diagram, whose foot the I* projections cross (and no further left than ``left``,
+    ΔT(φ)'s side)."""
+    x0, y0, x1, y1 = _body(rec)
+    out = Record(rec.title, list(rec.items), dict(rec.scales))
+    y = y1 + CAPTION_GAP if above else y0 - CAPTION_GAP - CAPTION
+    mid = (x0 + x1) / 2
+    if left is not None:
+        mid = max(mid, left + text_width(title, CAPTION) / 2 + 1.0)
+    out.label((mid, y), title, size=CAPTION, anchor="middle", layer="labels", step="caption")
+    return out
+
+
+def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict[str, tuple]]:
+    """The textbook's elimination of φ (REFERENCE §9): ΔT(φ) to the left of the energy–mass
+    diagram, its ΔT zero line the diagram's I* axis (the same μ_T), I*(φ) turned by 90° under it,
+    its I* axis the diagram's (the same μ_I), φ running down ``length`` mm; a thin horizontal
+    projection from each ΔT(φ) point and a thin vertical one from each turned I*(φ) point meet at
+    the diagram's point of that division. Records in one frame (the ΔT axis of the energy–mass
+    diagram at x = 0, its I* axis at y = 0), captioned, and the boxes they own (touching where the
+    projections cross from one to the other)."""
+    w = WORDS[lang]
+    probe = wittenbauer_record(f, lang, projections=(0.0, 0.0))
+    px0, py0, _, _ = probe.bounds()
+    side = px0 - 3.0                                   # the energy–mass diagram's left side …
+    foot = py0 - 2.0                                   # … and its foot
+    turned = _caption(inertia_turned(f, lang, length, 0.0), w["inertia"])
+    for attempt in range(6):                           # the lettering keeps off the lines: where it moves
+        reach = length + 24.0                          # past the side or the foot, they go farther
+        energy = _caption(energy_projected(f, lang, length, reach), w["energy"])
+        if energy.bounds()[2] > reach:                 # ΔT(φ)'s lines run past its φ and its caption
+            reach = energy.bounds()[2]
+            energy = _caption(energy_projected(f, lang, length, reach), w["energy"])
+        energy = energy.moved(side - reach, 0.0)
+        if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
+            foot = min(foot, energy.bounds()[1] - 2.0)
+        witt = _caption(wittenbauer_record(f, lang, projections=(side, foot)), w["wittenbauer"], above=True,
+                        left=side)
+        wx0, wy0, _, _ = witt.bounds()
+        if (wx0 >= side - 1e-9 and wy0 >= foot - 1e-9) or attempt == 5:
+            break
+        side, foot = min(side, wx0 - 1.0), min(foot, wy0 - 1.0)
+    ex0, ey0, _, ey1 = energy.bounds()
+    dy = foot - 3.0 - turned.bounds()[3]
+    inertia = _caption(inertia_turned(f, lang, length, foot - dy), w["inertia"]).moved(0.0, dy)
+    wx0, wy0, wx1, wy1 = witt.bounds()
+    ix0, iy0, ix1, _ = inertia.bounds()
+    boxes = {"energy": (ex0, ey0, side, ey1), "wittenbauer": (side, foot, wx1, wy1),
+             "inertia": (ix0, iy0, ix1, foot)}
+    return {"energy": energy, "wittenbauer": witt, "inertia": inertia}, boxes
+
+
+def _union(parts: dict[str, Record]) -> Record:
+    """The band as one drawing for the composition (its parts' items)."""
+    rec = Record("band")
+    for name in BAND:
+        rec.extend(parts[name])
+    return rec
+
+
+def _band_placed(parts: dict[str, Record], boxes: dict[str, tuple], box: tuple) -> list[Placed]:
+    """The band's parts moved as one into ``box`` (centred), each with its own box."""
+    x0 = min(b[0] for b in boxes.values())
+    y0 = min(b[1] for b in boxes.values())
+    x1 = max(b[2] for b in boxes.values())
+    y1 = max(b[3] for b in boxes.values())
+    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2
+    return [Placed(name, parts[name].moved(dx, dy),
+                   (boxes[name][0] + dx, boxes[name][1] + dy, boxes[name][2] + dx, boxes[name][3] + dy))
+            for name in BAND]
+
+
+def _band_size(boxes: dict[str, tuple]) -> tuple[float, float]:
+    return (max(b[2] for b in boxes.values()) - min(b[0] for b in boxes.values()),
+            max(b[3] for b in boxes.values()) - min(b[1] for b in boxes.values()))
 
 
 def _tables(doc: dict, lang: str, factor: float) -> list[tuple[str, Record]]:
@@ -251,22 +341,23 @@ def _speed(f: Flywheel, lang: str, zone: tuple[float, float]) -> Record:
 def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
     """The room ω(φ) owns once the other zones have theirs (LAYOUT.md: each zone's drawing as large
     as fits it): over the tables' column beside the left bands ("speed"), under the bands beside
-    the column ("bands", "column")."""
-    middle = extent(Row([Stack([d["energy"], d["inertia"]]), d["wittenbauer"]]))
+    the column ("bands", "column"), beside the column under the moments ("side")."""
+    middle = extent(d["band"])
     if shape == "speed":
         left = max(d["moments"].w, middle[0])
         return W - left - GAP, H - C.h - GAP
+    if shape == "side":
+        return W - middle[0] - C.w - 2 * GAP, H - d["moments"].h - GAP
     return W - C.w - GAP, H - d["moments"].h - middle[1] - 2 * GAP
 
 
-SHAPES = ("bands", "column", "speed")
+CLASSICAL = ("bands", "column", "speed")
 
 
-def _tree(shape: str, d: dict[str, Leaf], C: Leaf):
-    """The dynamics sheet's composition: the moments and the work on one φ axis; ΔT(φ) over I*(φ)
-    beside the energy–mass diagram; ω(φ); the tables' column with the notes over the title block.
-    "bands": those bands one under another, the column beside ω(φ); "column": the column the
-    sheet's full height; "speed": ω(φ) over the column, beside the moments and the middle band."""
+def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
+    """The classical composition (ΔT(φ) over I*(φ) on one φ axis beside the energy–mass diagram)
+    that sets the construction's scales (L, size): the band of the projections drawn in its place
+    keeps them, so the numbers do not depend on how the band is laid out."""
     middle = Row([Stack([d["energy"], d["inertia"]]), d["wittenbauer"]])
     if shape == "bands":
         return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
@@ -275,12 +366,34 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf):
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
 
-def _column(f: Form, tables: list[Leaf], parts: int, height) -> tuple[Leaf, list[list[Leaf]], float]:
+SHAPES = ("bands", "column", "speed", "side")
+
+
+def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
+    """The dynamics sheet's composition: the moments and the work on one φ axis; the band of the
+    energy–mass diagram (ΔT(φ) beside it, the turned I*(φ) under it: ``band``); ω(φ); the tables'
+    column with the notes over the title block. "bands": those one under another, the column beside
+    ω(φ); "column": the column the sheet's full height; "speed": ω(φ) over the column, beside the
+    moments and the band; "side": the band at the right over the title block (``foot`` mm kept
+    for it), the column and ω(φ) under the moments."""
+    middle = d["band"]
+    if shape == "bands":
+        return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
+    if shape == "speed":
+        return Row([Stack([d["moments"], middle]), Stack([d["speed"], C], flush=True)], flush=True)
+    if shape == "side":
+        return Row([Stack([d["moments"], Row([C, d["speed"]])], flush=True),
+                    Stack([middle, Leaf("title block", 0.0, foot)], flush=True)], flush=True)
+    return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
+
+
+def _column(f: Form, tables: list[Leaf], parts: int, height, shape: str = "") -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables over the notes, over the title block but in "side" (the column at the left)."""
     groups = split(tables, parts)
     cw, ch = column_size(groups)
     width = max(cw, TITLE)
-    foot = keep_out(f)[3] - field_of(f)[1]
-    return Leaf("column", width, ch + GAP + height(width) + GAP + foot), groups, width
+    foot = 0.0 if shape == "side" else GAP + keep_out(f)[3] - field_of(f)[1]
+    return Leaf("column", width, ch + GAP + height(width) + foot), groups, width
 
 
 def _sizes(st: Study):
@@ -291,18 +404,22 @@ def _sizes(st: Study):
     return SIZES
 
 
-def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int]:
-    """The flywheel construction the dynamics sheet of ``f`` draws: the largest abscissa L and
-    heights' size at which its composition fits one sheet (the tables lettered 3.5 mm where that
-    costs nothing; both languages measured) — (L, size, tables' factor, shape, table columns); a
-    set of sheets at the smallest when none does. The terminal's ``dynamics`` reports the same
-    construction. The sizes are tried by halving the list (a larger size never fits where a smaller
-    does not); each try draws the diagrams (a few ms), no layout is searched."""
+def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float]:
+    """The flywheel construction the dynamics sheet of ``f`` draws and how: the largest abscissa L
+    and heights' size at which the classical composition (``_classical``) fits one sheet (both
+    languages measured) — the scales, hence every number, do not depend on the band's layout —;
+    then the band of the projections (``band``) at the longest φ axis (``_lengths``) at which a
+    composition (``SHAPES``) holds it on that sheet, the tables lettered 3.5 mm where that costs
+    nothing: (L, size, tables' factor, shape, table columns, the band's φ axis); a set of sheets at
+    those scales where none does (at the smallest where not even the classical one fits). The
+    terminal's ``dynamics`` reports the same construction. The sizes are tried by halving the list
+    (a larger size never fits where a smaller does not); each try draws the diagrams (a few ms)."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     sizes = _sizes(st)
 
     drawn_at: dict = {}
+    banded: dict = {}
 
     def measured(L: float, size: float, factor: float):
         if (L, size) not in drawn_at:             # the drawings and the tables' content once per size
@@ -311,25 +428,33 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
             for lang in LANGS:
                 fw, drawn = _drawn(dyn, args, L, size, lang, built)
                 doc = dynamics_json(fw)
-                per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang))))
+                per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang)), fw))
             drawn_at[(L, size)] = per
         per = drawn_at[(L, size)]
         leaves = {name: Leaf(name, max(p[1][name][0] for p in per), max(p[1][name][1] for p in per))
                   for name in per[0][1]}
-        tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)] for lang, _, doc, _ in per]
+        tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)] for lang, _, doc, _, _ in per]
         tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
-        return leaves, tables, [p[3] for p in per]
+        return leaves, tables, [p[3] for p in per], per
 
-    def fit(k: int):
+    def band_leaf(L: float, size: float, length: float, per) -> Leaf:
+        if (L, size, length) not in banded:       # the band in both languages (its captions differ)
+            wh = [_band_size(band(p[4], p[0], length)[1]) for p in per]
+            banded[(L, size, length)] = Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh))
+        return banded[(L, size, length)]
+
+    foot = keep_out(f)[3] - y0
+
+    def fit(k: int):                      # the scales: as the classical composition sets them
         L, size = sizes[k]
         for factor in (TABLES, 1.0):
-            leaves, tables, notes_ = measured(L, size, factor)
-            for shape in SHAPES:
+            leaves, tables, notes_, _ = measured(L, size, factor)
+            for shape in CLASSICAL:
                 for parts in (1, 2, 3):
                     C = _column(f, tables, parts, lambda w: notes_height(notes_, w))[0]
-                    tw, th = extent(_tree(shape, leaves, C))
+                    tw, th = extent(_classical(shape, leaves, C))
                     if tw <= W + 1e-9 and th <= H + 1e-9:
-                        return L, size, factor, shape, parts
+                        return L, size
         return None
     lo, hi, found = 0, len(sizes) - 1, None
     while lo <= hi:                      # the first (largest) size that fits
@@ -339,10 +464,31 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
             found, hi = got, k - 1
         else:
             lo = k + 1
-    if found is not None:
-        return found
-    L, size = sizes[-1]
-    return L, size, 1.0, "set", 1         # nothing fits one sheet: a set of sheets
+    L, size = found if found is not None else sizes[-1]
+    if found is not None:                 # the band: its longest φ axis at which the sheet holds it
+        for factor in (TABLES, 1.0):
+            leaves, tables, notes_, per = measured(L, size, factor)
+            for length in _lengths(L):
+                leaves["band"] = band_leaf(L, size, length, per)
+                for shape in SHAPES:
+                    for parts in (1, 2, 3):
+                        C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
+                        tw, th = extent(_tree(shape, leaves, C, foot))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            return L, size, factor, shape, parts, length
+    per = measured(L, size, 1.0)[3]       # else a set of sheets at these scales, the band on one of them
+
+    def on_a_page(b: Leaf) -> bool:       # over the title block, or beside it
+        return (b.w <= W + 1e-9 and b.h <= H - foot - GAP + 1e-9) or (b.w <= keep_out(f)[0] - x0 + 1e-9
+                                                                       and b.h <= H + 1e-9)
+    length = next((g for g in _lengths(L) if on_a_page(band_leaf(L, size, g, per))), _lengths(L)[-1])
+    return L, size, 1.0, "set", 1, length
+
+
+def _lengths(L: float) -> tuple[float, ...]:
+    """The φ axes tried for the band's ΔT(φ) and turned I*(φ), longest first (``PROJECTED``)."""
+    return tuple(dict.fromkeys([*(max(k * L, min(L, PROJECTED_MIN)) for k in PROJECTED),
+                                *(min(L, g) for g in (70.0, 60.0, PROJECTED_LEAST))]))
 
 
 def _wh(rec: Record) -> tuple[float, float]:
@@ -365,43 +511,51 @@ class _Args:
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
-    """Sheet 3: the flywheel construction at the largest L and size whose composition fits one
-    sheet (``construction``), in zones: the moments and the work, ΔT and I* beside the energy–mass
-    diagram, ω(φ), the tables' column with the notes over the title block."""
+    """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
+    moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
+    left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
     dyn = analyse(st, getattr(args, "delta", None))
-    L, size, factor, shape, parts = construction(st, dyn, f, args)
+    L, size, factor, shape, parts, length = construction(st, dyn, f, args)
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
     doc = dynamics_json(fw)
-    leaves = {name: Leaf(name, record=rec) for name, rec in drawn.items()}
+    leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
+    parts_, boxes = band(fw, lang, length)
+    bw = [_band_size(band(fw, other, length)[1]) for other in LANGS]    # the same room in either language
+    leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
     note_lines = lines_of(notes(fw, doc, lang))
     region = field_of(f)
+    foot = keep_out(f)[3]
+
+    def placed(leaf: Leaf, b) -> list[Placed]:
+        if leaf.name == "band":
+            return _band_placed(parts_, boxes, b)
+        return [Placed(leaf.name, centred(leaf.record, b), b)]
     if shape != "set":                       # ω(φ) grows into the room the other zones leave it
-        C = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])[0]
+        C = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
         speed = _speed(fw, lang, zone)
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        rows = [[leaves["moments"]], [leaves["energy"], leaves["inertia"]], [leaves["wittenbauer"], leaves["speed"]],
+        rows = [[leaves["moments"]], [leaves["band"], leaves["speed"]],
                 tables + [Leaf("notes", record=note_block(note_lines, TITLE))]]
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
-        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
-                 for page in laid]
+        pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]
     else:
-        C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1])
+        C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)
         items, col_box = [], None
-        for leaf, b in arrange(_tree(shape, leaves, C), region):
+        for leaf, b in arrange(_tree(shape, leaves, C, foot - region[1]), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
-                items.append(Placed(leaf.name, centred(leaf.record, b), b))
+                items += placed(leaf, b)
         nrec = note_block(note_lines, width)
-        foot = keep_out(f)[3]
-        nb = (col_box[2] - width, foot, col_box[2], foot + _wh(nrec)[1])
+        bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
+        nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
         items.append(Placed("notes", top_left(nrec, nb), nb))
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]

@@ -1,0 +1,102 @@
+"""The energy–mass diagram built as the textbook builds it (REFERENCE §9: φ eliminated between
+ΔT(φ) and I*(φ)), read off the dynamics sheet's own record: ΔT(φ) stands to the left of the
+energy–mass diagram on one ΔT zero line, I*(φ) is turned under it on one I* axis, and thin
+projection lines carry each division point across and up to the curve's point of that division."""
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import pytest
+
+from conftest import example
+
+TOL = 0.1      # mm
+
+
+@pytest.fixture(scope="module", params=[("shaper", "uk"), ("slotter", "en")])
+def sheet(request):
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    name, lang = request.param
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
+    out = BUILDERS["dynamics"](example(name), form("A1"), args)
+    out.name = name
+    return out
+
+
+def _placed(sheet, name):
+    found = [p for p in sheet.placed if p.name == name]
+    assert len(found) == 1, name
+    return found[0].record
+
+
+def _points(rec, step):
+    return [p.points[0] for p in rec.items if p.kind == "point" and p.step == step]
+
+
+def _projections(rec):
+    return [p.points for p in rec.items if p.kind == "segment" and p.role == "projection"]
+
+
+def _joined(segments, a, b) -> bool:
+    """a and b joined by a chain of projection segments (end to end, within TOL; any path)."""
+    def near(p, q):
+        return abs(p[0] - q[0]) <= TOL and abs(p[1] - q[1]) <= TOL
+    front, used = [a], set()
+    while front:
+        at = front.pop()
+        if near(at, b):
+            return True
+        for k, (p, q) in enumerate(segments):
+            if k not in used and (near(p, at) or near(q, at)):
+                used.add(k)
+                front.append(q if near(p, at) else p)
+    return False
+
+
+def test_each_point_is_where_its_two_projections_meet(sheet):
+    energy, inertia, witt = (_placed(sheet, n) for n in ("energy", "inertia", "wittenbauer"))
+    dT = _points(energy, "ΔT read")
+    inert = _points(inertia, "I*_m read")
+    n = len(dT) - 1
+    curve = [_points(witt, f"point {j}")[0] for j in range(n)]
+    assert n >= 8 and len(inert) == n + 1
+    segments = _projections(energy) + _projections(inertia) + _projections(witt)
+    for j, c in enumerate(curve):
+        assert dT[j][1] == pytest.approx(c[1], abs=TOL), f"ΔT of {j} not carried across on one horizontal"
+        assert dT[j][0] < c[0]                                  # ΔT(φ) to the left
+        assert inert[j][0] == pytest.approx(c[0], abs=TOL), f"I* of {j} not carried up on one vertical"
+        assert inert[j][1] < c[1]                               # I*(φ) under the diagram
+        assert _joined(segments, dT[j], c), f"no horizontal projection joins ΔT(φ)'s point {j} to the curve"
+        assert _joined(segments, inert[j], c), f"no vertical projection joins I*(φ)'s point {j} to the curve"
+    # the turned I*(φ): φ runs downward, the divisions equally spaced
+    ys = [p[1] for p in inert]
+    steps = [a - b for a, b in zip(ys, ys[1:])]
+    assert min(steps) > 0 and max(steps) - min(steps) < 1e-6
+    # ΔT(φ) over φ to the right, equally spaced, with its zero line the diagram's I* axis: point 0 (ΔT = 0)
+    xs = [p[0] for p in dT]
+    gaps = [b - a for a, b in zip(xs, xs[1:])]
+    assert min(gaps) > 0 and max(gaps) - min(gaps) < 1e-6
+    axis = [p.points for p in witt.items if p.kind == "vector" and p.step == "I* axis"][0]
+    assert dT[0][1] == pytest.approx(axis[0][1], abs=TOL) == pytest.approx(axis[1][1], abs=TOL)
+
+
+def test_the_projections_carry_the_constructions_ordinates(sheet):
+    """The ΔT(φ) ordinates (from its zero line) and the turned I*(φ) abscissae (from the ΔT axis
+    of the energy–mass diagram) are the construction's ΔT_k and I_k in mm at the sheet's μ_T and μ_I:
+    the band's φ axis is free, its ordinates are not."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.sheets.dynamics import _built, construction
+    from graphplan.sheets.form import form
+    st = example(sheet.name)
+    dyn = analyse(st, None)
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
+    L, size, *_ = construction(st, dyn, form("A1"), args)
+    f = _built(dyn, args, L, size)
+    energy, inertia, witt = (_placed(sheet, n) for n in ("energy", "inertia", "wittenbauer"))
+    assert energy.scales["mu_T"] == witt.scales["mu_T"] == f.mu_A and inertia.scales["mu_I"] == witt.scales["mu_I"]
+    axis = [p.points for p in witt.items if p.kind == "vector" and p.step == "ΔT axis"][0]
+    dT, inert = _points(energy, "ΔT read"), _points(inertia, "I*_m read")
+    for j in range(f.divisions):
+        assert dT[j][1] - dT[0][1] == pytest.approx(f.dT[j] - f.dT[0], abs=1e-6)
+        assert inert[j][0] - axis[0][0] == pytest.approx(f.I[j], abs=1e-6)
