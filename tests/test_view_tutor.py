@@ -517,7 +517,8 @@ def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
         exact = pos["exact"]["pressure_angle_deg"]
         assert float(value) == pytest.approx(exact, abs=1e-6)
         assert text.replace("−", "-") == f"ϑ = {exact:.2f}°"
-        assert f"ϑ = {pos['graphical']['pressure_angle_deg']:.1f}° (division {k})" in graphical.replace("−", "-")
+        angle = f"{pos['graphical']['pressure_angle_deg']:.1f}".replace("-0.0", "0.0")   # no "−0.0°"
+        assert f"ϑ = {angle}° (division {k})" in graphical.replace("−", "-")
         assert float(drawn) == pytest.approx(abs(exact), abs=0.05 if scene != "generated" else 1.0)   # a knife edge: its normal from the drawn profile
         assert float(cell) == pytest.approx(exact, abs=1e-9)
     assert len({tuple(got[5:]) for got in shown}) >= len(doc["positions"]) - 2   # the dwells' ends coincide on the phase diagram only

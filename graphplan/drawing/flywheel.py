@@ -169,6 +169,16 @@ def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
 
 
 PROJ_LAYER = "construction"   # the thin projection lines that carry ΔT across and I* up
+PROJECTED = 24                # at most this many points carried across by projection lines
+
+
+def projected(n: int) -> range:
+    """The division points whose projections are drawn: all of up to ``PROJECTED``, else every 2nd,
+    4th … (a draftsman projects the numbered points; 360 divisions would bury the diagram)."""
+    every = 1
+    while n / every > PROJECTED:
+        every *= 2
+    return range(0, n, every)
 
 
 def projected_x(f: Flywheel, length: float) -> np.ndarray:
@@ -201,7 +211,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
         rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
     fine, curve = _smooth(f, f.dT)
     rec.add("polyline", list(zip(fine * (length / f.L), curve)), role="curve", layer=LAYER, step="ΔT(φ)")
-    for j in range(n):
+    for j in projected(n):
         rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
                     step=f"projection of ΔT at {j}")
     return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT")],
@@ -233,7 +243,7 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
     fine, curve = _smooth(f, f.I)
     rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
-    for j in range(n):
+    for j in projected(n):
         rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,
                     step=f"projection of I* at {j}")
     return rec
@@ -260,7 +270,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     n = f.divisions
     if projections is not None:
         left, foot = projections
-        for j in range(n):
+        for j in projected(n):
             at = (float(f.I[j]), float(f.dT[j]))
             rec.segment((left, at[1]), at, role="projection", layer=PROJ_LAYER, step=f"projection of ΔT at {j}")
             rec.segment((at[0], foot), at, role="projection", layer=PROJ_LAYER, step=f"projection of I* at {j}")
