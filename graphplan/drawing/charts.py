@@ -13,7 +13,7 @@ import numpy as np
 from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
 from graphplan.drawing.labels import place_labels
-from graphplan.graphic.record import LabelRequest, Record
+from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
@@ -336,12 +336,15 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     # each stroke named under the axis, across its span
     cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]
     low = -5.0
-    seen: list[float] = []
+    seen: list[tuple[float, float, int]] = []    # (x, half the number's ink width, its row) set so far
     for k, pos in t.position_index():
         x = X(k)
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
-        below = sum(1 for s_ in seen if abs(s_ - x) < 3.0)
-        seen.append(x)
+        ink = Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink()
+        half = 0.5 * (ink[2] - ink[0])
+        taken = {row for s_, h_, row in seen if abs(s_ - x) < half + h_ + 1.0}   # 1 mm of paper between numbers
+        below = min(r for r in range(len(taken) + 1) if r not in taken)          # the first free row down
+        seen.append((x, half, below))
         rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
         low = min(low, -5.0 - 3.5 * below)
     for a, b in zip(cuts, cuts[1:]):
