@@ -24,63 +24,8 @@ from graphplan.util.markup import plain
 LIMIT = 5.0     # %, the lab's
 
 # the review's scene (an offset press, e = −30 mm, clockwise, 25 kN on a ramp, 1000 rpm motor line)
-PRESS = """
-title = "Дезаксіальний кривошипно-повзунний механізм преса"
-title_en = "Offset crank-slider mechanism of a press"
-designation = "ТММ.РВ2.00.000"
-[params]
-r = 0.09
-l = 0.36
-e = -0.03
-[frame.points]
-O = [0, 0]
-[frame.guides]
-x = { through = [0, "e"], angle_deg = 0 }
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = "r"
-rpm = 60
-direction = "cw"
-points = { S1 = 0.3 }
-mass = 12
-inertia = 0.05
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = "l"
-points = { S2 = 0.3 }
-mass = 18
-inertia = 0.25
-[[link]]
-name = "B"
-number = 3
-joints = ["B"]
-slides_on = "x"
-mass = 60
-[branch]
-B = 1
-[positions]
-count = 12
-start = "outer"
-accel = [3]
-force_phi_deg = 60
-working_stroke = "to_min"
-[loads]
-g = 9.81
-[[force]]
-point = "B"
-magnitude = 25000
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.05, 0], [0.08, 1], [0.18, 1], [0.19, 0]]
-[dynamics]
-delta = 0.03
-efficiency = 0.9
-synchronous_rpm = 1000
-"""
+from review_scenes import OFFSET_SLIDER as PRESS  # noqa: E402
+
 
 
 def errors_of(f, dyn) -> tuple[float, float]:
