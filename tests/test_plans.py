@@ -377,8 +377,27 @@ def test_plans_table(capsys):
     assert code == 0
     assert "μ_v = 0.2 (m/s)/mm" in out and "μ_a = 50 (m/s²)/mm" in out
     rows = [line.split() for line in out.splitlines() if re.match(r"\s+1\s+30\.00\s", line)]
-    assert rows and rows[0][4] == "11.1"                           # v_B at position 1
+    assert rows and rows[0][5] == "11.1"                           # v_B at position 1
     assert "dead centre" in out
+
+
+def test_plans_and_diagrams_tables_give_the_sheets_turn_beside_the_angle_from_x(capsys):
+    """The shaper's position 0 is its extreme position, where the crank is perpendicular to the
+    rocker: φ₀ = 180° + arcsin(r/l_OB)·(sense) from +x — the terminal's φ column keeps that angle,
+    the turn column gives the sheets' φ (0, 30, … in the crank's sense)."""
+    import tomllib
+    sense = {"ccw": 1.0, "cw": -1.0}[tomllib.loads((ROOT / "examples" / "shaper.toml").read_text(
+        encoding="utf-8"))["crank"]["direction"]]
+    for command in ("plans", "diagrams"):
+        code, out, _ = run(capsys, command, str(ROOT / "examples" / "shaper.toml"), "--lang", "en")
+        assert code == 0 and "turn, °" in out and "the sheets' φ" in out
+        rows = [line.split() for line in out.splitlines() if re.match(r"\s+\d+\s+\d+\.\d\d\s+\d+\.\d\d\s", line)]
+        first = {int(r[0]): (float(r[1]), float(r[2])) for r in reversed(rows)}
+        phi0 = first[0][0]
+        assert first[0][1] == 0.0 and phi0 not in (0.0, 360.0)
+        for k, (phi, turn) in first.items():
+            assert turn == pytest.approx(30.0 * k)
+            assert (sense * (phi - phi0)) % 360.0 == pytest.approx(turn, abs=0.011)
     code, out, _ = run(capsys, "plans", str(ROOT / "examples" / "slotter.toml"), "--lang", "uk")
     assert "Швидкості" in out and "aᵏ_A3A2" in out
 

@@ -154,6 +154,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
              w("diagrams title", what=what, how=method_words(d, lang)),
              w("period", T=num(mech.period, lang), L=num(d.L, lang)), f"{w('scales')}:"]
     lines += ["  " + plain(t) for t in scale_lines(d, lang)]
+    lines += ["", w("turn note")]
     vals = d.values()
 
     def block(title: str, head: list[str], rows: list[list[str]]) -> None:
@@ -164,6 +165,10 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         for r in rows:
             lines.append("  ".join(c.rjust(wd) for c, wd in zip(r, widths)))
 
+    def turn(phi: float) -> str:
+        """The sheets' φ: the crank's turn from position 0 in its sense of rotation."""
+        return fixed(float(d.study.from_position0(phi % 360.0)) % 360.0, lang, 2)
+
     def g(x: float, key: str) -> str:
         """5 significant digits; round-off below 1e-9 of the cycle's maximum shows as 0."""
         return num(0.0 if abs(x) <= 1e-9 * d.maxima[key] else x + 0.0, lang, 5)
@@ -172,7 +177,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         r = d.drawn
         pos = d.position[k]
         f1 = lambda v: fixed(v, lang, 1)  # noqa: E731
-        return [str(pos if pos is not None else f"({k})"), fixed(d.phi[k], lang, 2), f1(r.s[k]),
+        return [str(pos if pos is not None else f"({k})"), fixed(d.phi[k], lang, 2), turn(d.phi[k]), f1(r.s[k]),
                 g(vals['s'][k], "s"), g(d.truth['s'][k], "s"),
                 f1(r.v_at[k]), g(vals['v_at'][k], "v"), g(d.truth['v_at'][k], "v"),
                 _pct(d.errors_pct('v_at')[k], lang),
@@ -180,7 +185,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
                 _pct(d.errors_pct('a_at')[k], lang)]
 
     mm = unit("mm", lang)
-    head = [w("no"), "φ, °", f"{s_}, {mm}", f"{s_}, {us}", w("exact"), f"{v_}, {mm}", f"{v_}, {uv}", w("exact"),
+    head = [w("no"), "φ, °", w("turn col"), f"{s_}, {mm}", f"{s_}, {us}", w("exact"), f"{v_}, {mm}", f"{v_}, {uv}", w("exact"),
             w("error pct"), f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")]
     block(w("at ordinates"), head, [row_at(k) for k in range(d.divisions)])
     chosen = [k for k in range(d.divisions) if d.position[k] in d.chosen]
@@ -190,11 +195,13 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     tangents = d.method == "tangents"
     for k in range(d.divisions):
         r = d.drawn
-        rows.append([str(k) if tangents else f"{k}–{k + 1}", fixed(d.phi_mid[k], lang, 2), fixed(r.v[k], lang, 1), g(vals['v_mid'][k], "v"),
+        rows.append([str(k) if tangents else f"{k}–{k + 1}", fixed(d.phi_mid[k], lang, 2), turn(d.phi_mid[k]),
+                     fixed(r.v[k], lang, 1), g(vals['v_mid'][k], "v"),
                      g(d.truth['v_mid'][k], "v"), _pct(d.errors_pct('v_mid')[k], lang),
                      fixed(r.a[k], lang, 1), g(vals['a_mid'][k], "a"), g(d.truth['a_mid'][k], "a"),
                      _pct(d.errors_pct('a_mid')[k], lang)])
-    block(w("tangent ordinates" if tangents else "chord ordinates"), [w("no") if tangents else w("interval"), "φ, °", f"{v_}, {mm}", f"{v_}, {uv}", w("exact"), w("error pct"),
+    block(w("tangent ordinates" if tangents else "chord ordinates"), [w("no") if tangents else w("interval"), "φ, °",
+                                                                       w("turn col"), f"{v_}, {mm}", f"{v_}, {uv}", w("exact"), w("error pct"),
                                  f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")], rows)
     lines.append("")
     lines.append(w("integration") + ":")

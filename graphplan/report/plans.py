@@ -136,26 +136,31 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
     widths = [max(8, len(h)) for h in heads]
 
     def row(cells: list[str]) -> str:
-        return "  ".join(c.rjust(wd) for c, wd in zip(cells, [4, 7] + widths))
+        return "  ".join(c.rjust(wd) for c, wd in zip(cells, [4, 7, 7] + widths))
+
+    def turn(phi: float) -> str:
+        """The sheets' φ: the crank's turn from position 0 in its sense of rotation."""
+        return fixed(float(st.from_position0(phi % 360.0)) % 360.0, lang, 2)
 
     def label(p: PositionPlans) -> str:
         return str(p.index) if p.index is not None else "*"
 
-    lines += [w("velocities read"), row([w("no"), "φ, °"] + heads)]
+    lines += [w("turn note"), "", w("velocities read"), row([w("no"), "φ, °", w("turn col")] + heads)]
     for p in plans.positions:
-        lines.append(row([label(p), fixed(p.phi % 360, lang, 2)] +
+        lines.append(row([label(p), fixed(p.phi % 360, lang, 2), turn(p.phi)] +
                          [rate(e, plans.mu_v, lang, plans.precision) if e.kind == "omega" else n(signed(e))
                           for e in (p.velocity.entries[k] for k in keys)]))
-    lines += ["", w("errors exact"), row([w("no"), "φ, °"] + heads)]
+    lines += ["", w("errors exact"), row([w("no"), "φ, °", w("turn col")] + heads)]
     for p in plans.positions:
         cells = [pct(p.velocity.entries[k].error_pct, lang) for k in keys]
-        lines.append(row([label(p), fixed(p.phi % 360, lang, 2)] + cells))
+        lines.append(row([label(p), fixed(p.phi % 360, lang, 2), turn(p.phi)] + cells))
     for p in plans.positions:
         acc = p.acceleration
         if acc is None:
             continue
         where_ = f"{p.index}" if p.index is not None else "*"
-        lines += ["", f"{w('accelerations at')} {where_} (φ = {fixed(p.phi % 360, lang, 2)}°), "
+        lines += ["", f"{w('accelerations at')} {where_} (φ = {fixed(p.phi % 360, lang, 2)}°, "
+                      f"{w('turn col').split(',')[0]} {turn(p.phi)}°), "
                       f"{plain(format_scale('mu_a', plans.mu_a, lang))}; {w('rates')}",
                   f"{w('quantity'):>12}  {unit('mm', lang):>7}  {w('plan'):>10}  {w('exact'):>10}  "
                   f"{w('error'):>9}"]

@@ -300,6 +300,11 @@ WORDS: dict[str, tuple[str, str]] = {
     "errors exact": ("Похибки відносно точного розв'язку, % (— де точне значення ≈ 0)",
                      "Errors against the exact solution, % (— where the exact value is ~0)"),
     "accelerations at": ("Прискорення в положенні", "Accelerations at position"),
+    "turn col": ("пов., °", "turn, °"),
+    "turn note": ("φ — кут кривошипа від осі x; пов. — поворот кривошипа від положення 0 у бік його обертання "
+                  "(φ аркушів)",
+                  "φ: the crank angle from the x axis; turn: the crank's turn from position 0 in its sense "
+                  "(the sheets' φ)"),
     "plan": ("план", "plan"),
     "error": ("похибка, %", "error, %"),
     "rates": ("ε, {rad/s²}, + проти годинникової стрілки", "ε, {rad/s²}, + counter-clockwise"),
