@@ -304,10 +304,14 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
     if not ext:
         return None
+    forces = [ld for ld in ext if ld.point is not None]
+    couple = not forces                  # a resistance moment alone (on a rocker): M(φ) of the output
+    ext = forces or ext
     st = t.ks.st
     path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
-    force = np.abs(sum(ld.force for ld in ext))
+    force = np.abs(sum(ld.couple for ld in ext)) if couple else np.abs(sum(ld.force for ld in ext))
+    f_unit, f_mu = (unit("N·m", lang), "μ_M") if couple else (unit("N", lang), "μ_P")
     work = np.asarray(t.ks.working, dtype=bool)
     n = len(force)
     reach = float(path[-1]) or 1.0
@@ -353,12 +357,13 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
         rec.label((0.5 * (xa + xb), low - 8.5), word("fs working" if work[a] else "fs idle", lang), size=2.5,
                   anchor="middle", step=step)
     rec.label((x_end + 9.0, -1.0), f"s, {dist_unit}", size=3.5, step=step)
-    rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {unit('N', lang)}", size=3.5, step=step)
+    rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {f_unit}", size=3.5, step=step)
     rec.label((-2.5, y_end - 1.2), num(top, lang), size=2.5, anchor="end", step=step)
     rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
     what = f"s_{{{st.output.name}}}" if st.output.kind == "slide" else f"φ_{{{st.mech.links[st.output.name].number}}}"
     rec.label((0.0, low - 15.0), word("fs path", lang, s=what, u=dist_unit) + f"; μ_s = {num(mu_s, lang)} "
-              f"{dist_unit}/{unit('mm', lang)}, μ_P = {num(mu_p, lang)} {unit('N/mm', lang)}", size=2.5, step=step)
+              f"{dist_unit}/{unit('mm', lang)}, {f_mu} = {num(mu_p, lang)} {f_unit}/{unit('mm', lang)}", size=2.5,
+              step=step)
     return rec
 
 

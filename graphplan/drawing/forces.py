@@ -319,6 +319,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
             centres.append((z, lk.com or f"S{lk.number}"))
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+    arcs: dict[complex, list[complex]] = {}      # the couples' arcs drawn at a point (their middles)
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":
             # M_зр at the crank's pivot: an arc arrow in its sense, on the side away from the crank
@@ -345,8 +346,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 ck = mech.crank
                 pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
                 taken.append(cmath.phase(z - pin))
-            mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step, r=5.0,
-                              span=110.0, name="")
+            key = next((w for w in arcs if abs(w - z) < 0.5), z)     # M^Φ3 and M3 on one link: two arcs
+            taken += [cmath.phase(m_ - z) for m_ in arcs.get(key, [])]     # apart, the second wider
+            mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step,
+                              r=5.0 + 4.0 * len(arcs.get(key, [])), span=110.0, name="")
+            arcs.setdefault(key, []).append(mid)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid
     for m in outer:

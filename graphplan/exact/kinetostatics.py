@@ -271,6 +271,29 @@ def loads(st: Study, kin: Kinematics, working: Array) -> list[Load]:
         magnitude = f.magnitude * (_profile(st, kin, f.profile) if f.profile else 1.0)
         force = np.where(active, magnitude * unit, 0j)
         out.append(Load(f"P_{f.point}", name, "external", f.point, x, force, zero, v, body.omega))
+    for m in mech.moments:
+        link = mech.links[m.link]
+        body = kin.bodies[m.link]
+        x, v, _ = body.at(link.local[link.com or next(iter(link.local))])
+        active = np.ones(zero.shape, dtype=bool) if m.stroke == "both" else (
+            working if m.stroke == "working" else ~working)
+        sense = -_turn_sense(st, m.link, kin.phi_deg, body.omega) if m.direction == "oppose" else (
+            zero + (1.0 if m.direction == "ccw" else -1.0))
+        magnitude = m.magnitude * (_profile(st, kin, m.profile) if m.profile else 1.0)
+        out.append(Load(f"M_{link.number}", m.link, "external", None, x, zero + 0j,
+                        np.where(active, magnitude * sense, 0.0), v, body.omega))
+    return out
+
+
+def _turn_sense(st: Study, link: str, phi: Array, omega: Array) -> Array:
+    """+1 where the link turns counter-clockwise, −1 clockwise; where it stands still (a rocker's
+    extreme position), the sense it starts turning in as the crank turns on."""
+    still = np.abs(omega) <= 1e-9 * abs(st.mech.omega1)
+    out = np.sign(np.where(still, 1.0, omega))
+    if np.any(still):
+        step = 1e-4 * np.sign(st.mech.omega1)
+        ahead = solve(st.mech, st.structure, phi[still] + step).bodies[link].omega
+        out[still] = np.where(ahead >= 0, 1.0, -1.0)
     return out
 
 

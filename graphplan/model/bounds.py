@@ -60,6 +60,7 @@ INERTIA = Range(0.0, 1e6, "kg·m²", floor=1e-12)
 MASS_PER_LENGTH = Range(0.0, 1e6, "kg/m", lo_open=True, floor=1e-6)
 INERTIA_FACTOR = Range(0.0, 10.0, "", lo_open=True)   # I = k·m·l², a rod's k = 1/12
 FORCE = Range(0.0, 1e9, "N", lo_open=True, floor=1e-6)
+MOMENT = Range(0.0, 1e9, "N·m", lo_open=True, floor=1e-6)
 GRAVITY = Range(0.0, 1e3, "m/s²")
 ANGLE = Range(-1e6, 1e6, "deg")
 TIME_RATIO = Range(1.0, 100.0, "", lo_open=True)      # K of the quick-return synthesis

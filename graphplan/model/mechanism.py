@@ -72,6 +72,18 @@ class Force:
 
 
 @dataclass(frozen=True)
+class Moment:
+    """An external couple on a link (a resistance moment on a rocker, a pump's or a loom's shaft):
+    its magnitude in N·m, the strokes it acts on, its sense ("oppose": against the link's angular
+    velocity; "ccw" or "cw") and, like a force, an optional profile over the output's distance."""
+    link: str
+    magnitude: float
+    stroke: str = "working"  # "working", "idle" or "both"
+    direction: str = "oppose"
+    profile: tuple[tuple[float, float], ...] = ()
+
+
+@dataclass(frozen=True)
 class Task:
     """What the exercise asks of the mechanism — not its physics: how many positions, where the
     acceleration plans and the force analysis are, the diagrams' settings and the title block."""
@@ -114,6 +126,7 @@ class Mechanism:
     start: str | float = "max"
     working_stroke: str = "slow"    # which stroke of the output is the working one: slow, fast, to_max, to_min
     forces: tuple[Force, ...] = ()
+    moments: tuple[Moment, ...] = ()
     g: float = 9.81
     params: dict[str, float] = field(default_factory=dict)
     derived: dict[str, float] = field(default_factory=dict)

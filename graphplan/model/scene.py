@@ -15,12 +15,12 @@ from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.util.files import read_text
 from graphplan.model import bounds as B
 from graphplan.model.expressions import evaluate
-from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, Mechanism, Task
+from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, Mechanism, Moment, Task
 
 BUILTIN = "crank_slider.toml"
 
 _TOP = {"diagrams", "title", "title_en", "designation", "lang", "sheet", "params", "synthesis", "frame", "crank",
-        "link", "branch", "positions", "loads", "force", "dynamics"}
+        "link", "branch", "positions", "loads", "force", "moment", "dynamics"}
 _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
@@ -29,6 +29,7 @@ _POSITIONS = {"count", "start", "accel", "output", "force_phi_deg", "working_str
 _DIAGRAMS = {"L_mm", "H1_mm", "H2_mm", "divisions", "point", "method"}
 _LOADS = {"g", "mass_per_length", "inertia_factor"}
 _FORCE = {"point", "magnitude", "stroke", "direction", "profile"}
+_MOMENT = {"link", "magnitude", "stroke", "direction", "profile"}
 _SYNTH = {"type", "K", "stroke", "centre_distance"}
 _DYNAMICS = {"delta", "motor", "synchronous_rpm", "ratio", "efficiency", "reducer_inertia", "rotor_inertia",
              "reducer_shafts", "first_stage_ratio", "L_mm", "H_mm", "divisions"}
@@ -165,6 +166,7 @@ class _Reader:
             start=self.read_start(positions.get("start", "max")),
             working_stroke=self.read_working(positions.get("working_stroke", "slow")),
             forces=self.read_forces(data.get("force", [])),
+            moments=self.read_moments(data.get("moment", []), links),
             g=self.number(loads.get("g", 9.81), "loads.g", bounds=B.GRAVITY),
             params=dict(self.names), derived=derived,
             task=Task(count=self.read_count(positions.get("count", 12)),
@@ -419,6 +421,34 @@ class _Reader:
                              magnitude=self.number(f["magnitude"], f"{key}.magnitude", bounds=B.FORCE),
                              stroke=stroke, direction=direction,
                              profile=self.read_profile(f.get("profile", []), f"{key}.profile")))
+        return tuple(out)
+
+    def read_moments(self, raw: Any, links: dict[str, Link]) -> tuple[Moment, ...]:
+        """[[moment]]: an external couple on a link (given by its name or its number), N·m."""
+        if not isinstance(raw, list):
+            raise self.fail("moment", "must be an array of tables [[moment]]")
+        out = []
+        for k, m in enumerate(raw):
+            key = f"moment[{k}]"
+            m = self.table(m, key, _MOMENT)
+            for need in ("link", "magnitude"):
+                if need not in m:
+                    raise self.fail(f"{key}.{need}", "missing")
+            stroke = m.get("stroke", "working")
+            if stroke not in ("working", "idle", "both"):
+                raise self.fail(f"{key}.stroke", f'must be "working", "idle" or "both", got {stroke!r}')
+            direction = m.get("direction", "oppose")
+            if direction not in ("oppose", "ccw", "cw"):
+                raise self.fail(f"{key}.direction", f'must be "oppose", "ccw" or "cw", got {direction!r}')
+            link = self.name(m["link"], f"{key}.link")
+            numbers = {str(v.number): name for name, v in links.items()}
+            if link not in links and link not in numbers:
+                known = ", ".join(f"{name} ({v.number})" for name, v in links.items())
+                raise self.fail(f"{key}.link", f"no link named or numbered {link!r} (links: {known})")
+            link = link if link in links else numbers[link]
+            out.append(Moment(link=link, magnitude=self.number(m["magnitude"], f"{key}.magnitude", bounds=B.MOMENT),
+                              stroke=stroke, direction=direction,
+                              profile=self.read_profile(m.get("profile", []), f"{key}.profile")))
         return tuple(out)
 
     def read_profile(self, raw: Any, key: str) -> tuple[tuple[float, float], ...]:

@@ -101,7 +101,7 @@ def forces_table(fp, lang: str = "uk") -> str:
         lines.append(_row([w("load"), w("link"), w("value"), w("angle deg")], wd))
     for ld in ks.loads:
         f, c = complex(ld.force[0]), float(ld.couple[0])
-        if ld.kind == "couple":
+        if ld.point is None:            # a couple: the inertia couple M^Φ or an external moment
             lines.append(_row([sym(ld.name), ld.link, f"{n(c + 0.0)} {unit('N·m', lang)}", ""], wd))
         else:
             lines.append(_row([sym(ld.name), ld.link, f"{n(abs(f))} {unit('N', lang)}",

@@ -214,6 +214,7 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     names = dr.names()
     at = force_position(dr.st, dr.phi, lang)
+    moment_only = not any(ld.kind == "external" and ld.point is not None for ld in dr.turn.ks.loads)
     out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
            "groups": [(_caption(n, lang), format_scale('mu_l', gp.mu_l or mu['groups'], lang))
                       for n, gp in zip(names["groups"], dr.groups_fp(mu).groups)],
@@ -221,7 +222,8 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
            "acceleration": [(f"{w('acceleration')}, {w('position')}",
                              f"{format_scale('mu_a', mu['acceleration'], lang)},  {at}")],
            "lever": [(_caption("lever", lang), "")],                           # μv under the lever itself
-           "charts": [(_caption(n, lang), "") for n in names["charts"]],
+           "charts": [(w("resistance moment") if n == "resistance" and moment_only else _caption(n, lang), "")
+                      for n in names["charts"]],
            "hodographs": [(_caption(n, lang), "") for n in names["hodographs"]]}
     return out
 
