@@ -13,6 +13,7 @@ from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
 from graphplan.drawing.labels import place_labels
 from graphplan.graphic.record import LabelRequest, Record, line_pitch
+from graphplan.model.motors import latin
 from graphplan.util.words import num
 
 if TYPE_CHECKING:
@@ -48,6 +49,12 @@ def achieved(value: float, given: float, lang: str) -> str:
     0,050000) where the two agree to the sheet's 4 significant figures, else the value itself to 4
     (util.words.num)."""
     return num(given, lang) if num(value, lang) == num(given, lang) else num(value, lang)
+
+
+def motor_omega(lang: str) -> str:
+    """The symbol of the crank's mean speed in the motor's steady state (markup): ω_m is the
+    flywheel's, the scene's n_1 (πn_1/30); the motor's, through the reducer, is another speed."""
+    return "ω_{m дв}" if lang == "uk" else "ω_{m mot}"
 
 
 def _extent(*arrays) -> tuple[float, float]:
@@ -314,12 +321,14 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     dyn = f.dyn
     L = width or f.L
     rec = Record(w["speed"])
-    motor = (w["motor"].format(name=dyn.drive.motor.name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
-             else w["motor_none"].format(name=dyn.drive.motor.name))     # δ < the request without one: beside it
-    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"]),
-              (dyn.motor_motion, "projection", motor)]
-    lo = min(float(np.min(m.omega)) for m, _, _ in curves)
-    hi = max(float(np.max(m.omega)) for m, _, _ in curves)
+    name = dyn.drive.motor.name if lang == "uk" else latin(dyn.drive.motor.name)
+    motor = (w["motor"].format(name=name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
+             else w["motor_none"].format(name=name))     # δ < the request without one: beside it
+    # the flywheel's ω_m is the scene's n_1; the motor's crank turns at its own mean speed (another symbol)
+    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"], "ω_m"),
+              (dyn.motor_motion, "projection", motor, motor_omega(lang))]
+    lo = min(float(np.min(m.omega)) for m, *_ in curves)
+    hi = max(float(np.max(m.omega)) for m, *_ in curves)
     pad = 0.08 * (hi - lo)
     lo, hi = lo - pad, hi + pad
     y = lambda v: (np.asarray(v) - lo) / (hi - lo) * height  # noqa: E731
@@ -338,13 +347,13 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         xx = L * deg / 360.0
         rec.segment((xx, 0.0), (xx, -1.5), role="construction", layer=LAYER, step="φ ticks")
         rec.label((xx, -5.0), f"{deg}°", size=NUM, anchor="middle", layer=LAYER, step="φ ticks")
-    for k, (m, role, text) in enumerate(curves):
+    for k, (m, role, text, sym) in enumerate(curves):
         xs = m.turn / (2 * math.pi) * L
         rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {achieved(m.delta, dyn.delta, lang)}, ω_m = {fmt(m.mean, lang)} "
+        rec.label((12.0, yl), f"{text}: δ = {achieved(m.delta, dyn.delta, lang)}, {sym} = {fmt(m.mean, lang)} "
                               f"{w['rad']}/{w['s']}", size=NUM, layer=LAYER)
     return rec
 

@@ -10,9 +10,11 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.drawing.flywheel import motor_omega
 from graphplan.exact.dynamics import crank_angle
-from graphplan.util.markup import plain
+from graphplan.util.markup import inline
 from graphplan.graphic.flywheel import over
+from graphplan.model.motors import latin
 from graphplan.util.words import num
 
 
@@ -91,7 +93,7 @@ def dynamics_json(f) -> dict[str, Any]:
                   "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
                   "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
                   "underpowered": dyn.underpowered,
-                  "ratio": dr.ratio, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
+                  "ratio": dr.ratio, "ratio_given": st.mech.drive.ratio is not None, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
                   "flywheel": dyn.motor_flywheel,
                   "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
                   "motion": _motion(dyn.motor_motion, every)},
@@ -160,17 +162,19 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
             f"  {w['motor_fl']:48} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {plain(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
+    out += [f"  {inline(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
     m = doc["motor"]
-    out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
+    ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
+    out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
             f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
             f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
-            f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
-            f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
+            f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; {'i' if m['ratio_given'] else ratio} = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
+            f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: {inline(motor_omega(lang))} = {m['motion']['omega_mean']:.4f} "
             f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    out.append(f"  {inline(motor_speed_note(doc, lang))}")
     if f.dyn.warnings:
-        out += ["", w["warn"] + ":"] + [f"  {plain(uk) if lang == 'uk' else plain(en)}" for en, uk in f.dyn.warnings]
+        out += ["", w["warn"] + ":"] + [f"  {inline(uk if lang == 'uk' else en)}" for en, uk in f.dyn.warnings]
     text = "\n".join(out) + "\n"
     # the decimal comma of the Ukrainian tables (the rows above format with Python's point)
     return re.sub(r"(?<=\d)\.(?=\d)", ",", text) if lang == "uk" else text
@@ -288,6 +292,25 @@ def tangents_note(f, lang: str) -> str | None:
     return (f"ψ is too small for a protractor: the tangents are drawn by tg ψ (a rise of {hi}{mm} at ψ_{{max}}, {lo}{mm} "
             f"at ψ_{{min}} over {run}{mm} of the {im} axis), moved parallel until they touch the curve; they cut the "
             f"ΔT axis at k{NB}={NB}{k}{mm} and l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
+
+
+def motor_speed_note(doc: dict, lang: str) -> str:
+    """Which ω_m is used where (markup): the flywheel's ω_m = πn_1/30 (the scene's n_1, the
+    kinematics' speed; ``WORDS`` "given") and the crank's mean speed with the motor through the
+    reducer (i = n_н/n_1 on the rated speed, Table 3), another symbol: faster where the load is
+    below the rated one (less slip), used only by the flywheel «with the motor» and the dashed ω(φ)."""
+    uk = lang == "uk"
+    m = doc["motor"]
+    w1, wm = doc["omega_mean"], m["motion"]["omega_mean"]
+    pct = 100.0 * (wm / w1 - 1.0)
+    sym, sign = motor_omega(lang), _signed(pct, lang)
+    if uk:
+        why = "ковзання за неповного навантаження менше за номінальне" if pct > 0 else "ковзання більше за номінальне"
+        return (f"З двигуном кривошип обертається з {sym}{NB}={NB}{num(wm, lang, 4)}{NB}рад/с ({sign}{NB}% до ω_m: "
+                f"{why}) — лише для маховика «з двигуном» і штрихової ω(φ)")
+    why = "below the rated load the motor slips less" if pct > 0 else "the motor slips more than rated"
+    return (f"Driven by the motor the crank turns at {sym}{NB}={NB}{num(wm, lang, 4)}{NB}rad/s ({sign}{NB}% on ω_m: "
+            f"{why}) — only for the flywheel “with the motor” and the dashed ω(φ)")
 
 
 def not_needed(delta_without: float, delta: float, lang: str) -> str:
