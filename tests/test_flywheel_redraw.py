@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from types import SimpleNamespace
 
 import pytest
@@ -17,9 +18,9 @@ from conftest import scene_study
 from graphplan.cli.main import main
 from graphplan.exact.dynamics import analyse
 from graphplan.graphic.flywheel import construct, redrawn
-from graphplan.report.dynamics import redrawn_note
+from graphplan.report.dynamics import redrawn_note, tangents_note
 from graphplan.util.errors import GraphplanError
-from graphplan.util.markup import plain
+from graphplan.util.markup import inline, plain
 
 LIMIT = 5.0     # %, the lab's
 
@@ -94,6 +95,18 @@ def test_the_press_sheet_is_redrawn_and_its_rows_check():
         assert abs(dt_gr - dt) <= 0.05 * dt_range            # ΔT read within 5 % of its range (12 divisions: 6.4 %)
 
 
+@pytest.mark.parametrize("lang, want", [("uk", ("осі I*м", "при ψmax", "при ψmin")),
+                                         ("en", ("at ψmax", "at ψmin", "of the I*m axis"))])
+def test_the_terminal_writes_the_tangents_note_in_plain_text(lang, want):
+    """The review's four-bar (ψ 4.4°/4.0°): `dynamics` printed "осі I*_м … при ψ_max"; the terminal
+    writes its neighbours' ψmax, I*м (util.markup.inline), the sheet keeps the markup."""
+    f = SimpleNamespace(tangent={"s_max": 0.0765, "s_min": 0.0693, "k": 51.8, "l": -13.8}, kl=65.5)
+    note = tangents_note(f, lang)
+    assert "ψ_{max}" in note                                 # the sheet's markup …
+    text = inline(note)                                      # … the terminal's plain text
+    assert not any(c in text for c in "_^{}\\") and all(w in text for w in want)
+
+
 def test_dynamics_in_english_is_headed_in_english(tmp_path, capsys):
     path = tmp_path / "press.toml"
     path.write_text(PRESS, encoding="utf-8")
@@ -101,6 +114,10 @@ def test_dynamics_in_english_is_headed_in_english(tmp_path, capsys):
     out = capsys.readouterr().out
     assert out.splitlines()[0] == "Dynamics of the machine: Offset crank-slider mechanism of a press"
     assert "redrawn on 24 divisions" in out and "not needed (δ = 0.0236 < 0.03)" in out
+    # the notes in plain text (the review: "I*_m", "ψ_max" printed raw), the motor in Latin
+    notes = [line for line in out.splitlines() if "redrawn" in line or "crank turns at" in line]
+    assert len(notes) == 2 and not any(c in line for line in notes for c in "_^{}\\")
+    assert re.search(r"^Motor: 4AM\d+[A-Z]\d ", out, re.M)
     assert main(["dynamics", str(path), "--json", "--divisions", "12"]) == 0     # given: kept, with the note's data
     doc = json.loads(capsys.readouterr().out)
     rd = doc["flywheel"]["redrawn"]
