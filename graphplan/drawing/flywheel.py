@@ -320,7 +320,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     return place_labels(rec, labels, layer=LAYER)
 
 
-BREAK = 8.0      # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there
+BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there
 
 
 def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 100.0) -> Record:
@@ -351,7 +351,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
             role="construction", width=AXIS_W, layer=LAYER, step="axes ω: break")
     rec.vector((0.0, zig + 2.0), (0.0, top + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
     rec.vector((0.0, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
-    rec.label((-1.5, 0.2), "0", size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+    rec.label((-1.5, -1.0), "0", size=NUM, anchor="end", layer=LAYER, step="ω ticks")
     _text(rec, (1.8, top + 5.0), f"ω, {w['rad']}/{w['s']}", step="axes ω")
     rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
     step = _nice((hi - lo) / 5)
