@@ -110,17 +110,17 @@ WORDS = {
                    "dI*/dφ — похідна за цим поворотом",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
-           "u": {"rotor": "I_рот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
+           "u": {"rotor": "Iрот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
                  "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
-           "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
-           "err": "error, %", "exact": "exact (equation of motion, constant M_d*)", "graph": "graphical (Wittenbauer)",
+           "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
+           "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
            "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
                    "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
            "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
-           "u": {"rotor": "I_rotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
+           "u": {"rotor": "Irotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
                  "s": "s", "steady": "steady state", "peak": "peak moment"}},
 }
 
@@ -135,8 +135,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
                f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
-               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; A_c = {doc['work_resistance']:.5g} {u['J']}, "
-               f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {doc['work_resistance']:.5g} {u['J']}, "
+               f"Md* = {doc['moment_driving']:.5g} {u['Nm']}")
     out += ["", w["pos"]]
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
     turn = "пов., °" if lang == "uk" else "turn, °"
@@ -166,8 +166,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
-            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
-            f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
+            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ωc = {m['omega_sync']:.2f}, ωn = {m['omega_rated']:.2f} "
+            f"{u['rad']}/{u['s']}, Mn = {m['moment_rated']:.3f} {u['Nm']}, Mmax = {m['moment_max']:.3f} {u['Nm']}, "
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
             f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; {'i' if m['ratio_given'] else ratio} = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
             f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: {inline(motor_omega(lang))} = {m['motion']['omega_mean']:.4f} "
