@@ -172,7 +172,7 @@ synchronous_rpm = 1000
 """
 
 UNITS = ("Н·м", "N·m", "Дж", "J", "кг·м²", "kg·m²", "рад", "rad", "мм", "mm", "°", "%", "кВт", "kW", "об/хв", "rpm")
-DIMENSIONLESS = {"δ", "i", "η"}
+DIMENSIONLESS = {"δ", "δ_дв", "δ_mot", "i", "η"}
 LETTERED = {"notes", "positions table", "flywheel table", "motor table", "speed", "wittenbauer"}
 
 
@@ -329,7 +329,8 @@ def test_one_value_per_symbol_and_the_flywheel_omega_is_the_scenes_n1(sheets, ke
     assert wm == pytest.approx(math.pi * N1[key[0]] / 30, abs=6e-3)
     motor = "ω_m дв" if key[1] == "uk" else "ω_m mot"
     assert motor in values and values[motor] != values["ω_m"]
-    said = [plain(t) for t in lettering(sheets[key]) if motor in plain(t) and "ω_m:" in plain(t)]
+    said = [t for t in (plain(t).replace("\u00a0", " ") for t in lettering(sheets[key]))
+            if f"{motor} = " in t and "ω_m = πn₁/30" in t]
     assert len(said) == 1                            # the line saying which serves what
 
 

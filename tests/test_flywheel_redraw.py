@@ -76,7 +76,7 @@ def test_the_press_sheet_is_redrawn_and_its_rows_check():
     assert "побудовано заново на 24 поділках" in notes
     assert "відтинають k" in notes                        # the tangents by their slope, not a protractor
     flywheel = [plain(t) for t in texts["flywheel table"]]
-    assert "не потрібен (δ = 0,0236 < 0,03)" in flywheel  # with the motor: none needed
+    assert "не потрібен (δ_дв = 0,0236 < 0,03)" in flywheel  # with the motor: none needed, its own δ
     table = next(p.record for p in sheet.placed if p.name == "positions table")
     lines: dict[float, list] = {}
     for item in table.items:                   # the body's cells by their baseline, left to right
@@ -113,9 +113,9 @@ def test_dynamics_in_english_is_headed_in_english(tmp_path, capsys):
     assert main(["dynamics", str(path), "--lang", "en"]) == 0
     out = capsys.readouterr().out
     assert out.splitlines()[0] == "Dynamics of the machine: Offset crank-slider mechanism of a press"
-    assert "redrawn on 24 divisions" in out and "not needed (δ = 0.0236 < 0.03)" in out
+    assert "redrawn on 24 divisions" in out and "not needed (δmot = 0.0236 < 0.03)" in out
     # the notes in plain text (the review: "I*_m", "ψ_max" printed raw), the motor in Latin
-    notes = [line for line in out.splitlines() if "redrawn" in line or "crank turns at" in line]
+    notes = [line for line in out.splitlines() if "redrawn" in line or "With the motor ωm mot = " in line]
     assert len(notes) == 2 and not re.search(r"[_^{}\\]", out)
     assert re.search(r"^Motor: 4AM\d+[A-Z]\d ", out, re.M)
     assert main(["dynamics", str(path), "--json", "--divisions", "12"]) == 0     # given: kept, with the note's data

@@ -57,6 +57,12 @@ def motor_omega(lang: str) -> str:
     return "ω_{m дв}" if lang == "uk" else "ω_{m mot}"
 
 
+def motor_delta(lang: str) -> str:
+    """The symbol of the coefficient of unevenness the motor's steady state achieves (markup): δ is
+    the one asked for; the motor's, below it where no flywheel is needed, is another value."""
+    return "δ_{дв}" if lang == "uk" else "δ_{mot}"
+
+
 def _extent(*arrays) -> tuple[float, float]:
     v = np.concatenate([np.atleast_1d(np.asarray(a, dtype=float)) for a in arrays] + [[0.0]])
     return float(v.min()), float(v.max())
@@ -336,8 +342,8 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     motor = (w["motor"].format(name=name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
              else w["motor_none"].format(name=name))     # δ < the request without one: beside it
     # the flywheel's ω_m is the scene's n_1; the motor's crank turns at its own mean speed (another symbol)
-    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"], "ω_m"),
-              (dyn.motor_motion, "projection", motor, motor_omega(lang))]
+    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"], "ω_m", "δ"),
+              (dyn.motor_motion, "projection", motor, motor_omega(lang), motor_delta(lang))]
     lo = min(float(np.min(m.omega)) for m, *_ in curves)
     hi = max(float(np.max(m.omega)) for m, *_ in curves)
     pad = 0.08 * (hi - lo)
@@ -365,13 +371,13 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         xx = L * deg / 360.0
         rec.segment((xx, 0.0), (xx, -1.5), role="construction", layer=LAYER, step="φ ticks")
         rec.label((xx, -5.0), f"{deg}°", size=NUM, anchor="middle", layer=LAYER, step="φ ticks")
-    for k, (m, role, text, sym) in enumerate(curves):
+    for k, (m, role, text, sym, dsym) in enumerate(curves):
         xs = m.turn / (2 * math.pi) * L
         rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {achieved(m.delta, dyn.delta, lang)}, {sym} = {fmt(m.mean, lang)} "
+        rec.label((12.0, yl), f"{text}: {dsym} = {achieved(m.delta, dyn.delta, lang)}, {sym} = {fmt(m.mean, lang)} "
                               f"{w['rad']}/{w['s']}", size=NUM, layer=LAYER)
     return rec
 

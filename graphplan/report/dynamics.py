@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.drawing.flywheel import motor_omega
+from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.flywheel import over
@@ -153,7 +153,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
     none = "не потрібен" if lang == "uk" else "not needed"
     val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
     motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
-             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:48} {exact}",
             f"  {w['graph']:48} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
@@ -162,7 +162,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
             f"  {w['motor_fl']:48} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {inline(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
@@ -171,13 +171,19 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
             f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; {'i' if m['ratio_given'] else ratio} = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
             f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: {inline(motor_omega(lang))} = {m['motion']['omega_mean']:.4f} "
-            f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
-    out.append(f"  {inline(motor_speed_note(doc, lang))}")
+            f"{u['rad']}/{u['s']}, {inline(motor_delta(lang))} = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    note = _term(motor_speed_note(doc, lang))
+    out.append(f"  {note[0].upper()}{note[1:]}")                # which ω_m serves what: the flywheel's above
     if f.dyn.warnings:
-        out += ["", w["warn"] + ":"] + [f"  {inline(uk if lang == 'uk' else en)}" for en, uk in f.dyn.warnings]
+        out += ["", w["warn"] + ":"] + [f"  {_term(uk if lang == 'uk' else en)}" for en, uk in f.dyn.warnings]
     text = "\n".join(out) + "\n"
     # the decimal comma of the Ukrainian tables (the rows above format with Python's point)
     return re.sub(r"(?<=\d)\.(?=\d)", ",", text) if lang == "uk" else text
+
+
+def _term(text: str) -> str:
+    """A note's markup as the terminal prints it: plain text (util.markup.inline), plain spaces."""
+    return inline(text).replace(NB, " ")
 
 
 def _pct(v: float | None) -> str:
@@ -295,26 +301,24 @@ def tangents_note(f, lang: str) -> str | None:
 
 
 def motor_speed_note(doc: dict, lang: str) -> str:
-    """Which ω_m is used where (markup): the flywheel's ω_m = πn_1/30 (the scene's n_1, the
-    kinematics' speed; ``WORDS`` "given") and the crank's mean speed with the motor through the
-    reducer (i = n_н/n_1 on the rated speed, Table 3), another symbol: faster where the load is
-    below the rated one (less slip), used only by the flywheel «with the motor» and the dashed ω(φ)."""
+    """Which ω_m is used where (markup), one line for the sheet's notes after the flywheel's
+    ω_m = πn_1/30 (``WORDS`` "given"): with the motor through the reducer (i = n_н/n_1 at the rated
+    speed, Table 3) the crank's mean speed is another one, ω_{m дв} — faster where the load is below
+    the rated one (less slip) —, which serves only the flywheel «with the motor» and the dashed ω(φ)."""
     uk = lang == "uk"
     m = doc["motor"]
     w1, wm = doc["omega_mean"], m["motion"]["omega_mean"]
     pct = 100.0 * (wm / w1 - 1.0)
     sym, sign = motor_omega(lang), _signed(pct, lang)
     if uk:
-        why = "ковзання за неповного навантаження менше за номінальне" if pct > 0 else "ковзання більше за номінальне"
-        return (f"З двигуном кривошип обертається з {sym}{NB}={NB}{num(wm, lang, 4)}{NB}рад/с ({sign}{NB}% до ω_m: "
-                f"{why}) — лише для маховика «з двигуном» і штрихової ω(φ)")
-    why = "below the rated load the motor slips less" if pct > 0 else "the motor slips more than rated"
-    return (f"Driven by the motor the crank turns at {sym}{NB}={NB}{num(wm, lang, 4)}{NB}rad/s ({sign}{NB}% on ω_m: "
-            f"{why}) — only for the flywheel “with the motor” and the dashed ω(φ)")
+        why = "ковзання менше номінального" if pct > 0 else "ковзання більше номінального"
+        return f"з двигуном {sym}{NB}={NB}{num(wm, lang, 4)}{NB}рад/с ({sign}{NB}%: {why})"
+    why = "less slip than rated" if pct > 0 else "more slip than rated"
+    return f"with the motor {sym}{NB}={NB}{num(wm, lang, 4)}{NB}rad/s ({sign}{NB}%: {why})"
 
 
-def not_needed(delta_without: float, delta: float, lang: str) -> str:
+def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ") -> str:
     """"не потрібен (δ = 0,0236 < 0,03)": a flywheel no method needs, with the δ the machine keeps
-    without one against the δ asked for."""
-    return (f"не потрібен (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
-            f"not needed (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+    without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
+    return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
+            f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")

@@ -16,7 +16,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (dynamics_json, motor_omega, motor_speed_note, not_needed, redrawn_note,
+from graphplan.report.dynamics import (dynamics_json, motor_delta, motor_omega, motor_speed_note, not_needed, redrawn_note,
                                        tangents_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height)
@@ -48,7 +48,7 @@ WORDS = {
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "δ, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
            "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
-           "motor_fl": "з двигуном (ω_{m дв}): рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ω_m = πn_1/30 = {w} рад/с (n_1 = {n} об/хв, як у кінематиці) — для маховика",
+           "motor_fl": "з двигуном (ω_{m дв}): рівняння руху", "scales": "Масштаби", "given": "δ = {d}; для маховика ω_m = πn_1/30 = {w} рад/с (n_1 = {n} об/хв), {motor}",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
            "turn": "dI^*_м/dφ — похідна за цим φ",
@@ -69,7 +69,7 @@ WORDS = {
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
            "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
-           "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}, ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm, as in the kinematics) — for the flywheel",
+           "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
@@ -124,7 +124,7 @@ def flywheel_table(doc: dict, lang: str) -> Record:
         return fmt(v, lang) if v > 0 else w["not"]
     exact = (fmt(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
     motor = (fmt(fw["motor"], lang) if fw["motor"] > 0 else
-             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
             [w["exact"], exact, "0" if fw["exact"] > 0 else "—"],
             [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
@@ -153,7 +153,7 @@ def motor_table(doc: dict, lang: str) -> Record:
             ["i; η" if m.get("ratio_given") else f"i = n_{'н' if uk else 'n'}/n_1; η",
              f"{num(m['ratio'], lang, 4)}; {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
-            [f"{motor_omega(lang)}, {'рад/с' if uk else 'rad/s'}; δ",
+            [f"{motor_omega(lang)}, {'рад/с' if uk else 'rad/s'}; {motor_delta(lang)}",
              f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             ["M_{max} циклу, Н·м" if uk else "M_{max} on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
@@ -180,7 +180,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     rot, red, fl = ("I_рот", "I_ред", "I_мах") if uk else ("I_rotor", "I_red", "I_fl")
     J, Nm, kgm2 = ("Дж", "Н·м", "кг·м²") if uk else ("J", "N·m", "kg·m²")
     lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang),
-                               n=num(doc["omega_mean"] * 30.0 / math.pi, lang)),
+                               n=num(doc["omega_mean"] * 30.0 / math.pi, lang), motor=motor_speed_note(doc, lang)),
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
              f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
@@ -211,7 +211,6 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"] if uk else latin(m["name"]), p=fmt(m["power_kW"], lang),
                                                  need=fmt(m["power_needed_kW"], lang)))
-    said.append(motor_speed_note(doc, lang))     # which ω_m is used where (the flywheel's: n_1)
     lines += said                          # each a line the note block wraps to the column (once)
     for en, uk_text in f.dyn.warnings:
         if "no flywheel is needed" in en or "below the power rule" in en:   # said above in full
