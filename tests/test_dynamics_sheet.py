@@ -4,6 +4,7 @@ given δ written as given, ω_m²·δ typeset, the field filled — on two mecha
 (a six-bar press and an offset crank-slider with a 1000 rpm motor, the review's scenes)."""
 from __future__ import annotations
 
+import math
 import re
 from types import SimpleNamespace
 
@@ -171,7 +172,7 @@ synchronous_rpm = 1000
 """
 
 UNITS = ("Н·м", "N·m", "Дж", "J", "кг·м²", "kg·m²", "рад", "rad", "мм", "mm", "°", "%", "кВт", "kW", "об/хв", "rpm")
-DIMENSIONLESS = {"δ", "i", "η"}
+DIMENSIONLESS = {"δ", "δ_дв", "δ_mot", "i", "η"}
 LETTERED = {"notes", "positions table", "flywheel table", "motor table", "speed", "wittenbauer"}
 
 
@@ -274,3 +275,98 @@ def test_the_diagrams_grow_into_the_field(sheets, key):
     """The review found about a quarter of the field empty (57 % under the drawings' extents): ω(φ)
     takes the room over the tables and the bands grow to the next size."""
     assert covered(sheets[key]) > 0.68
+
+
+# -- the review's corrections 7, 15 (one ω_m per symbol; the broken ω axis; ΔT's unit; δ, %; Latin) --------
+
+N1 = {"sixbar": 90.0, "offset": 240.0}     # the scenes' crank rpm: the flywheel's ω_m = πn_1/30
+VALUE = re.compile(r"^[−-]?\d+(?:[.,]\d+)?")
+OMEGA = re.compile(r"ω_?[a-z0-9₀-₉]+(?: дв| mot)?$")
+
+
+def rows(sheet, name: str) -> list[list[str]]:
+    """A table's cells (plain text) row by row: its text items grouped by their baseline, left to right."""
+    rec = next(p.record for p in sheet.placed if p.name == name)
+    by_y: dict[float, list] = {}
+    for it in rec.items:
+        if it.kind == "text":
+            by_y.setdefault(round(it.points[0][1], 1), []).append(it)
+    return [[plain(it.text) for it in sorted(v, key=lambda it: it.points[0][0])] for v in by_y.values()]
+
+
+def omega_values(sheet) -> dict[str, set[float]]:
+    """Every value the lettering gives an ω symbol (ω_m, ω_m дв …): "sym = … = value" clauses in the
+    notes, legends and tables, and the motor table's "sym, unit; δ" | "value; δ" rows."""
+    out: dict[str, set[float]] = {}
+
+    def put(sym: str, text: str) -> None:
+        m = VALUE.match(text.strip())
+        if m:
+            out.setdefault(sym, set()).add(float(m.group(0).replace(",", ".").replace("−", "-")))
+    for text in lettering(sheet):
+        for clause in re.split(r";\s|,\s(?!дв|mot)|:\s|\s\(", plain(text)):
+            parts = clause.split("=")
+            for head in parts[:-1]:
+                sym = OMEGA.search(head.strip())
+                if sym:
+                    put(sym.group(0), parts[-1])
+    for row in rows(sheet, "motor table"):
+        if len(row) == 2:
+            for head, value in zip(row[0].split("; "), row[1].split("; ")):
+                sym = OMEGA.search(head.split(",")[0].strip())
+                if sym and "/" not in head:
+                    put(sym.group(0), value)
+    return out
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_one_value_per_symbol_and_the_flywheel_omega_is_the_scenes_n1(sheets, key):
+    """The review's fourbar: "ω_m = 9,425" in the notes, "ω_m = 10,14" in Table 3 (the motor-driven
+    crank, 7.6 % faster). The flywheel's ω_m is πn_1/30; the motor's mean speed has its own symbol."""
+    values = omega_values(sheets[key])
+    assert all(len(v) == 1 for v in values.values()), values
+    (wm,) = values["ω_m"]
+    assert wm == pytest.approx(math.pi * N1[key[0]] / 30, abs=6e-3)
+    motor = "ω_m дв" if key[1] == "uk" else "ω_m mot"
+    assert motor in values and values[motor] != values["ω_m"]
+    said = [t for t in (plain(t).replace("\u00a0", " ") for t in lettering(sheets[key]))
+            if f"{motor} = " in t and "ω_m = πn₁/30" in t]
+    assert len(said) == 1                            # the line saying which serves what
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_the_truncated_omega_axis_is_broken(sheets, key):
+    """ω(φ) swings a few per cent about ω_m: its scale starts near ω_min, so between the φ axis
+    (ω = 0, lettered 0) and the lowest tick the ordinate axis carries a zigzag (GOST 2.303)."""
+    rec = next(p.record for p in sheets[key].placed if p.name == "speed")
+    phi_axis = next(it for it in rec.items if it.kind == "vector" and it.points[0][1] == it.points[1][1])
+    x0, y0 = phi_axis.points[0]
+    ticks = sorted((float(it.text.replace(",", ".")), it.points[0][1]) for it in rec.items
+                   if it.kind == "text" and it.anchor == "end" and VALUE.fullmatch(it.text))
+    (v1, y1), (v2, y2) = ticks[1], ticks[-1]
+    zero = y1 - v1 * (y2 - y1) / (v2 - v1)             # where ω = 0 would be on the ticks' scale
+    assert ticks[0][0] == 0 and zero < y0 - 50.0       # lettered 0 at the φ axis, far above the true zero
+    zig = [it for it in rec.items if it.kind == "polyline"
+           and all(abs(x - x0) < 3.0 and y0 <= y <= y1 for x, y in it.points)]
+    assert zig and max(x for x, _ in zig[0].points) > x0 + 1.0 and min(x for x, _ in zig[0].points) < x0 - 1.0
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en")])
+def test_the_energy_axes_carry_the_unit_and_table_2_heads_delta(sheets, key):
+    uk = key[1] == "uk"
+    texts = [plain(it.text) for p in sheets[key].placed if p.name in ("energy", "wittenbauer")
+             for it in p.record.items if it.kind == "text" and plain(it.text).startswith("ΔT")]
+    assert texts and all(t.startswith("ΔT, Дж" if uk else "ΔT, J") for t in texts)
+    assert any(re.search(r"μ_T = \d", t) for t in texts)
+    cells = [c for row in rows(sheets[key], "flywheel table") for c in row]
+    assert "δ, %" in cells and not any("похибка" in c or "error" in c for c in cells)
+
+
+def test_the_english_sheet_writes_the_motor_in_latin(sheets):
+    """The catalogue's 4АМ… (Cyrillic А, М, В) in Latin on an English sheet; the Ukrainian keeps it."""
+    cyrillic = [t for t in lettering(sheets["sixbar", "en"]) if re.search("[\u0400-\u04ff]", t)]
+    assert cyrillic == []
+    def names(lang: str) -> list[str]:
+        return [c for row in rows(sheets["sixbar", lang], "motor table") for c in row if c.startswith("4")]
+    assert len(names("en")) == 1 and re.fullmatch(r"4AM\d+[A-Z]\d", names("en")[0])
+    assert len(names("uk")) == 1 and re.fullmatch(r"4АМ\d+[A-ZА-Я]\d", names("uk")[0])

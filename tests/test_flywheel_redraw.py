@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from types import SimpleNamespace
 
 import pytest
@@ -17,9 +18,9 @@ from conftest import scene_study
 from graphplan.cli.main import main
 from graphplan.exact.dynamics import analyse
 from graphplan.graphic.flywheel import construct, redrawn
-from graphplan.report.dynamics import redrawn_note
+from graphplan.report.dynamics import redrawn_note, tangents_note
 from graphplan.util.errors import GraphplanError
-from graphplan.util.markup import plain
+from graphplan.util.markup import inline, plain
 
 LIMIT = 5.0     # %, the lab's
 
@@ -75,7 +76,7 @@ def test_the_press_sheet_is_redrawn_and_its_rows_check():
     assert "побудовано заново на 24 поділках" in notes
     assert "відтинають k" in notes                        # the tangents by their slope, not a protractor
     flywheel = [plain(t) for t in texts["flywheel table"]]
-    assert "не потрібен (δ = 0,0236 < 0,03)" in flywheel  # with the motor: none needed
+    assert "не потрібен (δ_дв = 0,0236 < 0,03)" in flywheel  # with the motor: none needed, its own δ
     table = next(p.record for p in sheet.placed if p.name == "positions table")
     lines: dict[float, list] = {}
     for item in table.items:                   # the body's cells by their baseline, left to right
@@ -94,13 +95,29 @@ def test_the_press_sheet_is_redrawn_and_its_rows_check():
         assert abs(dt_gr - dt) <= 0.05 * dt_range            # ΔT read within 5 % of its range (12 divisions: 6.4 %)
 
 
+@pytest.mark.parametrize("lang, want", [("uk", ("осі I*м", "при ψmax", "при ψmin")),
+                                         ("en", ("at ψmax", "at ψmin", "of the I*m axis"))])
+def test_the_terminal_writes_the_tangents_note_in_plain_text(lang, want):
+    """The review's four-bar (ψ 4.4°/4.0°): `dynamics` printed "осі I*_м … при ψ_max"; the terminal
+    writes its neighbours' ψmax, I*м (util.markup.inline), the sheet keeps the markup."""
+    f = SimpleNamespace(tangent={"s_max": 0.0765, "s_min": 0.0693, "k": 51.8, "l": -13.8}, kl=65.5)
+    note = tangents_note(f, lang)
+    assert "ψ_{max}" in note                                 # the sheet's markup …
+    text = inline(note)                                      # … the terminal's plain text
+    assert not any(c in text for c in "_^{}\\") and all(w in text for w in want)
+
+
 def test_dynamics_in_english_is_headed_in_english(tmp_path, capsys):
     path = tmp_path / "press.toml"
     path.write_text(PRESS, encoding="utf-8")
     assert main(["dynamics", str(path), "--lang", "en"]) == 0
     out = capsys.readouterr().out
     assert out.splitlines()[0] == "Dynamics of the machine: Offset crank-slider mechanism of a press"
-    assert "redrawn on 24 divisions" in out and "not needed (δ = 0.0236 < 0.03)" in out
+    assert "redrawn on 24 divisions" in out and "not needed (δmot = 0.0236 < 0.03)" in out
+    # the notes in plain text (the review: "I*_m", "ψ_max" printed raw), the motor in Latin
+    notes = [line for line in out.splitlines() if "redrawn" in line or "With the motor ωm mot = " in line]
+    assert len(notes) == 2 and not re.search(r"[_^{}\\]", out)
+    assert re.search(r"^Motor: 4AM\d+[A-Z]\d ", out, re.M)
     assert main(["dynamics", str(path), "--json", "--divisions", "12"]) == 0     # given: kept, with the note's data
     doc = json.loads(capsys.readouterr().out)
     rd = doc["flywheel"]["redrawn"]

@@ -179,7 +179,9 @@ def test_dynamics_sheets_typeset_every_symbol(slotter_dynamics, shaper_dynamics)
         for plain_symbol in ("Iм", "I*м", "Mс*", "Mд*", "ωm", "μM", "Iрот", "ψmax"):
             assert plain_symbol not in joined, plain_symbol    # only as markup (I_мах, I^*_м, M^*_с …)
     lines = texts(shaper_dynamics)
-    first = lines[lines.index("ΔT, Дж") + 1:][:9]                # position 0: a dead centre of the ram
+    head = lines.index("ΔT гр., Дж")                              # Table 1's last two heads (the axes
+    assert lines[head + 1] == "ΔT, Дж"                             # are lettered "ΔT, Дж" too)
+    first = lines[head + 2:][:9]                                   # position 0: a dead centre of the ram
     assert first[:2] == ["0", "0,0"] and first[3] == "0", first
 
 

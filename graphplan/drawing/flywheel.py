@@ -13,6 +13,7 @@ from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
 from graphplan.drawing.labels import place_labels
 from graphplan.graphic.record import LabelRequest, Record, line_pitch
+from graphplan.model.motors import latin
 from graphplan.util.words import num
 
 if TYPE_CHECKING:
@@ -48,6 +49,18 @@ def achieved(value: float, given: float, lang: str) -> str:
     0,050000) where the two agree to the sheet's 4 significant figures, else the value itself to 4
     (util.words.num)."""
     return num(given, lang) if num(value, lang) == num(given, lang) else num(value, lang)
+
+
+def motor_omega(lang: str) -> str:
+    """The symbol of the crank's mean speed in the motor's steady state (markup): ω_m is the
+    flywheel's, the scene's n_1 (πn_1/30); the motor's, through the reducer, is another speed."""
+    return "ω_{m дв}" if lang == "uk" else "ω_{m mot}"
+
+
+def motor_delta(lang: str) -> str:
+    """The symbol of the coefficient of unevenness the motor's steady state achieves (markup): δ is
+    the one asked for; the motor's, below it where no flywheel is needed, is another value."""
+    return "δ_{дв}" if lang == "uk" else "δ_{mot}"
 
 
 def _extent(*arrays) -> tuple[float, float]:
@@ -158,9 +171,15 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     return rec
 
 
+def energy_axis(f: Flywheel, lang: str) -> str:
+    """The ΔT axis's lettering: the quantity, its unit and its scale ("ΔT, Дж; μ_T = 0,6093 Дж/мм")."""
+    w = WORDS[lang]
+    return f"ΔT, {w['J']}; μ_T = {num(f.mu_A, lang)} {w['J']}/{w['mm']}"
+
+
 def energy_record(f: Flywheel, lang: str = "uk") -> Record:
     """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
-    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, "ΔT", "ΔT")
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, energy_axis(f, lang), "ΔT")
 
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
@@ -198,7 +217,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     n = f.divisions
     rec.vector((0.0, lo - 1.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
     rec.vector((-3.0, 0.0), (length + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
-    _text(rec, (1.8, hi + 5.0), "ΔT", step="axes ΔT")
+    _text(rec, (1.8, hi + 5.0), energy_axis(f, lang), step="axes ΔT")
     every = 1
     while length / n * every < 5.0:
         every *= 2
@@ -265,7 +284,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
     _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
-    labels = [LabelRequest(complex(0.0, hi + 10.0), "ΔT", 1 + 0j, TEXT, step="axes")]
+    labels = [LabelRequest(complex(0.0, hi + 10.0), f"ΔT, {w['J']}", 1 + 0j, TEXT, step="axes")]
     rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     if projections is not None:
@@ -307,25 +326,39 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     return place_labels(rec, labels, layer=LAYER)
 
 
+BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there
+
+
 def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, height: float = 100.0) -> Record:
     """ω(φ) of the steady states (classical with the exact flywheel, and the motor's) over one
-    turn, with a scale of ω on the ordinate axis (ticks in rad/s)."""
+    turn, with a scale of ω on the ordinate axis (ticks in rad/s) that starts near ω_min: the φ axis
+    is ω = 0, the ordinate axis broken (a zigzag) ``BREAK`` mm above it. Each legend gives its own
+    mean speed: ω_m the flywheel's (the scene's n_1), ``motor_omega`` the motor-driven crank's."""
     w = WORDS[lang]
     dyn = f.dyn
     L = width or f.L
     rec = Record(w["speed"])
-    motor = (w["motor"].format(name=dyn.drive.motor.name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
-             else w["motor_none"].format(name=dyn.drive.motor.name))     # δ < the request without one: beside it
-    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"]),
-              (dyn.motor_motion, "projection", motor)]
-    lo = min(float(np.min(m.omega)) for m, _, _ in curves)
-    hi = max(float(np.max(m.omega)) for m, _, _ in curves)
+    name = dyn.drive.motor.name if lang == "uk" else latin(dyn.drive.motor.name)
+    motor = (w["motor"].format(name=name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
+             else w["motor_none"].format(name=name))     # δ < the request without one: beside it
+    # the flywheel's ω_m is the scene's n_1; the motor's crank turns at its own mean speed (another symbol)
+    curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"], "ω_m", "δ"),
+              (dyn.motor_motion, "projection", motor, motor_omega(lang), motor_delta(lang))]
+    lo = min(float(np.min(m.omega)) for m, *_ in curves)
+    hi = max(float(np.max(m.omega)) for m, *_ in curves)
     pad = 0.08 * (hi - lo)
     lo, hi = lo - pad, hi + pad
-    y = lambda v: (np.asarray(v) - lo) / (hi - lo) * height  # noqa: E731
-    rec.vector((0.0, 0.0), (0.0, height + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
+    # ω swings a few per cent about ω_m: its axis starts at lo, not at 0 — the φ axis stays ω = 0 and
+    # the ordinate axis is broken between them (the textbook's ω(φ) about ω_m, GOST 2.303's zigzag)
+    top = BREAK + height
+    y = lambda v: BREAK + (np.asarray(v) - lo) / (hi - lo) * height  # noqa: E731
+    zig = 0.5 * BREAK
+    rec.add("polyline", [(0.0, 0.0), (0.0, zig - 2.0), (-1.8, zig - 1.0), (1.8, zig + 1.0), (0.0, zig + 2.0)],
+            role="construction", width=AXIS_W, layer=LAYER, step="axes ω: break")
+    rec.vector((0.0, zig + 2.0), (0.0, top + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
     rec.vector((0.0, 0.0), (L + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ω")
-    _text(rec, (1.8, height + 5.0), f"ω, {w['rad']}/{w['s']}", step="axes ω")
+    rec.label((-1.5, -1.0), "0", size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+    _text(rec, (1.8, top + 5.0), f"ω, {w['rad']}/{w['s']}", step="axes ω")
     rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
     step = _nice((hi - lo) / 5)
     v = math.ceil(lo / step) * step
@@ -338,13 +371,13 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         xx = L * deg / 360.0
         rec.segment((xx, 0.0), (xx, -1.5), role="construction", layer=LAYER, step="φ ticks")
         rec.label((xx, -5.0), f"{deg}°", size=NUM, anchor="middle", layer=LAYER, step="φ ticks")
-    for k, (m, role, text) in enumerate(curves):
+    for k, (m, role, text, sym, dsym) in enumerate(curves):
         xs = m.turn / (2 * math.pi) * L
         rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
                 width=0.5 if k == 0 else 0.35)
         yl = -10.0 - line_pitch(NUM) * k
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
-        rec.label((12.0, yl), f"{text}: δ = {achieved(m.delta, dyn.delta, lang)}, ω_m = {fmt(m.mean, lang)} "
+        rec.label((12.0, yl), f"{text}: {dsym} = {achieved(m.delta, dyn.delta, lang)}, {sym} = {fmt(m.mean, lang)} "
                               f"{w['rad']}/{w['s']}", size=NUM, layer=LAYER)
     return rec
 

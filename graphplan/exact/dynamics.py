@@ -32,7 +32,7 @@ import numpy as np
 from graphplan.exact.kinematics import Kinematics, dot, solve
 from graphplan.exact.kinetostatics import loads, output_distance, working_stroke
 from graphplan.exact.positions import Study
-from graphplan.model.motors import Motor, choose
+from graphplan.model.motors import Motor, choose, latin
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import num
 
@@ -524,7 +524,7 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float, guess: float | None = Non
     w0 = _periodic_start(c, dr, const, guess)
     if w0 is None or not lo < w0:
         if ret(lo) <= 0:
-            raise GraphplanError(f"dynamics: the motor {dr.motor.name} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
+            raise GraphplanError(f"dynamics: the motor {latin(dr.motor.name)} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
                                  "cannot drive the cycle: even at the end of its working branch the crank "
                                  "slows down over a turn; choose a larger motor", None)
         while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
@@ -572,7 +572,7 @@ def carries(dr: Drive, m: Motion) -> None:
     branch (above ω_k) all the turn; otherwise one line, exit 2."""
     peak = float(np.max(dr.moment(m.omega)))
     if peak > dr.moment_max or m.omega_min < dr.omega_breakdown:
-        raise GraphplanError(f"dynamics: the motor {dr.motor.name} cannot drive the cycle: its moment "
+        raise GraphplanError(f"dynamics: the motor {latin(dr.motor.name)} cannot drive the cycle: its moment "
                              f"reaches {peak / (dr.ratio * dr.efficiency):.3g} N·m on its shaft, above "
                              f"M_max = {dr.motor.moment_max:.3g} N·m (off the working branch); choose a "
                              "larger motor")
@@ -640,13 +640,13 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
                          f"ротор і редуктор ({num(const, 'uk')} кг·м²) більші за момент інерції, потрібний для "
                          f"δ = {num(delta, 'uk')} ({num(total, 'uk')} кг·м²): маховик не потрібен, I_мах = 0"))
     if dr.motor.power_kW < dr.power_needed_kW:
-        warnings.append((f"the motor {dr.motor.name} ({dr.motor.power_kW:g} kW) is below the power rule "
+        warnings.append((f"the motor {latin(dr.motor.name)} ({dr.motor.power_kW:g} kW) is below the power rule "
                          f"P = max M*_c·ω1/η = {dr.power_needed_kW:.4g} kW",
                          f"двигун {dr.motor.name} ({num(dr.motor.power_kW, 'uk')} кВт) слабший, ніж вимагає "
                          f"правило потужності P = M^*_{{с max}}·ω_1/η = {num(dr.power_needed_kW, 'uk')} кВт"))
     mean_moment = float(np.mean(mm.driving[:-1])) / (dr.ratio * dr.efficiency)
     if mean_moment > dr.motor.moment_rated:
-        warnings.append((f"the motor {dr.motor.name} works above its rated moment on average "
+        warnings.append((f"the motor {latin(dr.motor.name)} works above its rated moment on average "
                          f"({mean_moment:.3g} > {dr.motor.moment_rated:.3g} N·m): it will overheat",
                          f"двигун {dr.motor.name} у середньому працює з моментом, більшим за номінальний "
                          f"({num(mean_moment, 'uk', 3)} > {num(dr.motor.moment_rated, 'uk', 3)} Н·м): "

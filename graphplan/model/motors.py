@@ -76,6 +76,17 @@ def _key(name: str) -> str:
     return text.translate(str.maketrans("АВМСЕНКОРТХ", "ABMCEHKOPTX"))
 
 
+_LOOKALIKE = str.maketrans("АВМСЕНКОРТХ", "ABMCEHKOPTX")
+
+
+def latin(name: str) -> str:
+    """A catalogue designation as an English sheet writes it: the series' Cyrillic capitals that
+    look like Latin ones in Latin (4АМ132S4 → 4AM132S4, as the English catalogues print the 4A/4AM
+    series); a name with any other Cyrillic letter stays as it is."""
+    out = name.translate(_LOOKALIKE)
+    return name if any("\u0400" <= c <= "\u04ff" for c in out) else out
+
+
 @lru_cache(maxsize=1)
 def catalogue() -> tuple[Motor, ...]:
     """The shipped catalogue, in file order (by line, then power)."""

@@ -10,9 +10,11 @@ from typing import Any
 
 import numpy as np
 
+from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
-from graphplan.util.markup import plain
+from graphplan.util.markup import inline
 from graphplan.graphic.flywheel import over
+from graphplan.model.motors import latin
 from graphplan.util.words import num
 
 
@@ -91,7 +93,7 @@ def dynamics_json(f) -> dict[str, Any]:
                   "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
                   "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
                   "underpowered": dyn.underpowered,
-                  "ratio": dr.ratio, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
+                  "ratio": dr.ratio, "ratio_given": st.mech.drive.ratio is not None, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
                   "flywheel": dyn.motor_flywheel,
                   "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
                   "motion": _motion(dyn.motor_motion, every)},
@@ -108,17 +110,17 @@ WORDS = {
                    "dI*/dφ — похідна за цим поворотом",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
-           "u": {"rotor": "I_рот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
+           "u": {"rotor": "Iрот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
                  "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
-           "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "I_fl, kg·m²",
-           "err": "error, %", "exact": "exact (equation of motion, constant M_d*)", "graph": "graphical (Wittenbauer)",
+           "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
+           "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
            "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
                    "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
            "given": "given by the scene", "warn": "Warnings", "scales": "Scales",
-           "u": {"rotor": "I_rotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
+           "u": {"rotor": "Irotor", "Nm": "N·m", "mm": "mm", "rad": "rad", "J": "J", "kgm2": "kg·m²", "kW": "kW", "rpm": "rpm",
                  "s": "s", "steady": "steady state", "peak": "peak moment"}},
 }
 
@@ -133,8 +135,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
                f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
-               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; A_c = {doc['work_resistance']:.5g} {u['J']}, "
-               f"M_d* = {doc['moment_driving']:.5g} {u['Nm']}")
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {doc['work_resistance']:.5g} {u['J']}, "
+               f"Md* = {doc['moment_driving']:.5g} {u['Nm']}")
     out += ["", w["pos"]]
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
     turn = "пов., °" if lang == "uk" else "turn, °"
@@ -151,7 +153,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
     none = "не потрібен" if lang == "uk" else "not needed"
     val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
     motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
-             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:48} {exact}",
             f"  {w['graph']:48} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
@@ -160,20 +162,28 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
             f"  {w['motor_fl']:48} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {plain(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
     m = doc["motor"]
-    out += ["", f"{w['motor']}: {m['name']} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
-            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ω_c = {m['omega_sync']:.2f}, ω_n = {m['omega_rated']:.2f} "
-            f"{u['rad']}/{u['s']}, M_n = {m['moment_rated']:.3f} {u['Nm']}, M_max = {m['moment_max']:.3f} {u['Nm']}, "
+    ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
+    out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
+            f"{m['rpm_sync']:g}/{m['rpm_rated']:g} {u['rpm']}, ωc = {m['omega_sync']:.2f}, ωn = {m['omega_rated']:.2f} "
+            f"{u['rad']}/{u['s']}, Mn = {m['moment_rated']:.3f} {u['Nm']}, Mmax = {m['moment_max']:.3f} {u['Nm']}, "
             f"M = {m['A']:.4g}·ω + {m['B']:.5g}",
-            f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; i = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
-            f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: ωm = {m['motion']['omega_mean']:.4f} "
-            f"{u['rad']}/{u['s']}, δ = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+            f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; {'i' if m['ratio_given'] else ratio} = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
+            f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: {inline(motor_omega(lang))} = {m['motion']['omega_mean']:.4f} "
+            f"{u['rad']}/{u['s']}, {inline(motor_delta(lang))} = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    note = _term(motor_speed_note(doc, lang))
+    out.append(f"  {note[0].upper()}{note[1:]}")                # which ω_m serves what: the flywheel's above
     if f.dyn.warnings:
-        out += ["", w["warn"] + ":"] + [f"  {plain(uk) if lang == 'uk' else plain(en)}" for en, uk in f.dyn.warnings]
+        out += ["", w["warn"] + ":"] + [f"  {_term(uk if lang == 'uk' else en)}" for en, uk in f.dyn.warnings]
     text = "\n".join(out) + "\n"
     # the decimal comma of the Ukrainian tables (the rows above format with Python's point)
     return re.sub(r"(?<=\d)\.(?=\d)", ",", text) if lang == "uk" else text
+
+
+def _term(text: str) -> str:
+    """A note's markup as the terminal prints it: plain text (util.markup.inline), plain spaces."""
+    return inline(text).replace(NB, " ")
 
 
 def _pct(v: float | None) -> str:
@@ -290,8 +300,25 @@ def tangents_note(f, lang: str) -> str | None:
             f"ΔT axis at k{NB}={NB}{k}{mm} and l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
 
 
-def not_needed(delta_without: float, delta: float, lang: str) -> str:
+def motor_speed_note(doc: dict, lang: str) -> str:
+    """Which ω_m is used where (markup), one line for the sheet's notes after the flywheel's
+    ω_m = πn_1/30 (``WORDS`` "given"): with the motor through the reducer (i = n_н/n_1 at the rated
+    speed, Table 3) the crank's mean speed is another one, ω_{m дв} — faster where the load is below
+    the rated one (less slip) —, which serves only the flywheel «with the motor» and the dashed ω(φ)."""
+    uk = lang == "uk"
+    m = doc["motor"]
+    w1, wm = doc["omega_mean"], m["motion"]["omega_mean"]
+    pct = 100.0 * (wm / w1 - 1.0)
+    sym, sign = motor_omega(lang), _signed(pct, lang)
+    if uk:
+        why = "ковзання менше номінального" if pct > 0 else "ковзання більше номінального"
+        return f"з двигуном {sym}{NB}={NB}{num(wm, lang, 4)}{NB}рад/с ({sign}{NB}%: {why})"
+    why = "less slip than rated" if pct > 0 else "more slip than rated"
+    return f"with the motor {sym}{NB}={NB}{num(wm, lang, 4)}{NB}rad/s ({sign}{NB}%: {why})"
+
+
+def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ") -> str:
     """"не потрібен (δ = 0,0236 < 0,03)": a flywheel no method needs, with the δ the machine keeps
-    without one against the δ asked for."""
-    return (f"не потрібен (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
-            f"not needed (δ = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+    without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
+    return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
+            f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")

@@ -4,6 +4,8 @@ flywheel read off |kl|, the steady-state speed ω(φ), the tables of the reduced
 position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
+import math
+
 from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, records, speed_fitted,
                                        wittenbauer_record)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
@@ -13,7 +15,9 @@ from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, text_width
-from graphplan.report.dynamics import dynamics_json, not_needed, redrawn_note, tangents_note
+from graphplan.model.motors import latin
+from graphplan.report.dynamics import (dynamics_json, motor_delta, motor_omega, motor_speed_note, not_needed, redrawn_note,
+                                       tangents_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -41,10 +45,10 @@ WORDS = {
            "inertia": "Діаграма зведеного моменту інерції механізму I^*_м(φ)",
            "wittenbauer": "Діаграма енергія–маса (Віттенбауера)", "speed": "Кутова швидкість кривошипа ω(φ) усталеного руху",
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
-           "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "похибка, %",
+           "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "δ, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
            "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
-           "motor_fl": "з двигуном: рівняння руху", "scales": "Масштаби", "given": "δ = {d}, ω_m = {w} рад/с",
+           "motor_fl": "з двигуном (ω_{m дв}): рівняння руху", "scales": "Масштаби", "given": "δ = {d}; для маховика ω_m = πn_1/30 = {w} рад/с (n_1 = {n} об/хв), {motor}",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
            "turn": "dI^*_м/dφ — похідна за цим φ",
@@ -62,10 +66,10 @@ WORDS = {
            "inertia": "Reduced moment of inertia of the mechanism I^*_m(φ)",
            "wittenbauer": "Energy–mass (Wittenbauer) diagram", "speed": "Crank speed ω(φ) in the steady state",
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
-           "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "error, %",
+           "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
            "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
-           "motor_fl": "with the motor: equation of motion", "scales": "Scales", "given": "δ = {d}, ω_m = {w} rad/s",
+           "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
@@ -120,7 +124,7 @@ def flywheel_table(doc: dict, lang: str) -> Record:
         return fmt(v, lang) if v > 0 else w["not"]
     exact = (fmt(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
     motor = (fmt(fw["motor"], lang) if fw["motor"] > 0 else
-             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang))
+             not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
             [w["exact"], exact, "0" if fw["exact"] > 0 else "—"],
             [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
@@ -139,16 +143,17 @@ def motor_table(doc: dict, lang: str) -> Record:
     power = fmt(m["power_kW"], lang)
     if m.get("underpowered"):
         power = w["weak_cell"].format(p=power, need=fmt(m["power_needed_kW"], lang)) + "*"
-    rows = [[m["name"], w["chosen"] if m["chosen"] else w["scene"]],
+    rows = [[m["name"] if uk else latin(m["name"]), w["chosen"] if m["chosen"] else w["scene"]],
             ["P_н, кВт" if uk else "P_n, kW", power],
             ["n_с / n_н, об/хв" if uk else "n_c / n_n, rpm", f"{num(m['rpm_sync'], lang)} / {num(m['rpm_rated'], lang)}"],
             ["ω_с / ω_н, рад/с" if uk else "ω_c / ω_n, rad/s", f"{fmt(m['omega_sync'], lang)} / {fmt(m['omega_rated'], lang)}"],
             ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fmt(m['moment_rated'], lang)} / {fmt(m['moment_max'], lang)}"],
             ["M = Aω + B, Н·м" if uk else "M = Aω + B, N·m", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
             ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
-            ["i; η", f"{num(m['ratio'], lang, 4)}; {num(m['efficiency'], lang)}"],
+            ["i; η" if m.get("ratio_given") else f"i = n_{'н' if uk else 'n'}/n_1; η",
+             f"{num(m['ratio'], lang, 4)}; {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
-            ["ω_m, рад/с; δ" if uk else "ω_m, rad/s; δ",
+            [f"{motor_omega(lang)}, {'рад/с' if uk else 'rad/s'}; {motor_delta(lang)}",
              f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             ["M_{max} циклу, Н·м" if uk else "M_{max} on the cycle, N·m", fmt(m["moment_peak"], lang)]]
     return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
@@ -174,7 +179,8 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     fw = doc["flywheel"]
     rot, red, fl = ("I_рот", "I_ред", "I_мах") if uk else ("I_rotor", "I_red", "I_fl")
     J, Nm, kgm2 = ("Дж", "Н·м", "кг·м²") if uk else ("J", "N·m", "kg·m²")
-    lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang)),
+    lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang),
+                               n=num(doc["omega_mean"] * 30.0 / math.pi, lang), motor=motor_speed_note(doc, lang)),
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
              f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
@@ -203,7 +209,7 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     m = doc["motor"]
     if m.get("underpowered"):
-        said.append(w["mark"] + w["weak"].format(name=m["name"], p=fmt(m["power_kW"], lang),
+        said.append(w["mark"] + w["weak"].format(name=m["name"] if uk else latin(m["name"]), p=fmt(m["power_kW"], lang),
                                                  need=fmt(m["power_needed_kW"], lang)))
     lines += said                          # each a line the note block wraps to the column (once)
     for en, uk_text in f.dyn.warnings:

@@ -118,6 +118,24 @@ def plain(text: str) -> str:
     return "".join(parts)
 
 
+def inline(text: str) -> str:
+    """The text for a terminal line written as its neighbours are (ψmax, I*м, ω₁): digits as
+    Unicode sub-/superscripts, the star in line, any other sub- or superscript written in line
+    without its marker (``ψ_{max}`` → ψmax, ``I^*_м`` → I*м, ``ω_{m дв}`` → ωm дв);
+    braces and escapes gone — no raw ``_``, ``^`` or ``{``."""
+    if is_plain(text):
+        return text
+    parts = []
+    for r in runs(text):
+        if r.level == 0:
+            parts.append(r.text)
+        elif r.text.isdigit():
+            parts.append(r.text.translate(_SUB if r.level < 0 else _SUP))
+        else:
+            parts.append(r.text)
+    return "".join(parts)
+
+
 def flat(text: str) -> str:
     """The characters that are drawn, in order (for widths and searching)."""
     return "".join(r.text for r in runs(text)) if not is_plain(text) else text
