@@ -80,6 +80,18 @@ def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float
             rec.label((xk, numbers_at), str(k), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
 
 
+DRAWN = 0.01      # mm: the most a drawn curve's polyline departs from the construction's samples
+
+
+def drawn(X: np.ndarray, Y: np.ndarray) -> list[tuple[float, float]]:
+    """The polyline a pen draws of a sampled curve: the samples (graphic.flywheel: 40 an interval,
+    14 400 at 360 divisions) simplified by Douglas–Peucker (shapely) to within ``DRAWN`` mm of them —
+    a few hundred vertices, the same line on paper, what the lettering keeps clear of."""
+    from shapely import LineString
+    line = LineString(np.column_stack([X, Y])).simplify(DRAWN, preserve_topology=False)
+    return [(float(x), float(y)) for x, y in line.coords]
+
+
 def _smooth(f: Flywheel, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The French curve through a periodic diagram's division ordinates."""
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
@@ -266,7 +278,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
     _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
     labels = [LabelRequest(complex(0.0, hi + 10.0), "ΔT", 1 + 0j, TEXT, step="axes")]
-    rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
+    rec.add("polyline", drawn(X, Y), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     if projections is not None:
         left, foot = projections

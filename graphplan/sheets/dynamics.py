@@ -4,6 +4,8 @@ flywheel read off |kl|, the steady-state speed ω(φ), the tables of the reduced
 position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
+import math
+
 from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, records, speed_fitted,
                                        wittenbauer_record)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
@@ -83,6 +85,9 @@ WORDS = {
 }
 
 
+ROW = 6.0     # mm: a row of the tables
+
+
 def positions_table(doc: dict, lang: str) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
@@ -104,7 +109,7 @@ def positions_table(doc: dict, lang: str) -> Record:
     rows = [head]
     for k, p in enumerate(ps):
         rows.append([str(p["index"]), fixed(p["turn_deg"], lang, 1)] + [c[k] for c in cols])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=6.0, size=2.5,
+    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
                  title=w["positions"])
 
 
@@ -510,11 +515,28 @@ class _Args:
         self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
+def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
+    """The table of the positions has a row per division and no sheet of a set splits it: where
+    the fewest divisions the sheet can draw (the first construction's: ``redrawn`` only adds) make
+    it taller or wider than the sheet's field, refused before any drawing is laid out — one line."""
+    from graphplan.graphic.flywheel import construct
+    L, size = _sizes(st)[-1]
+    first = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
+    x0, y0, x1, y1 = field_of(f)
+    w, h = _wh(positions_table(dynamics_json(first), args.lang))
+    if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
+        most = first.divisions - math.ceil((h - (y1 - y0)) / ROW)       # a row a division
+        raise GraphplanError(f"the dynamics sheet's table of the positions, a row for each of {first.divisions} "
+                             f"divisions, is {h:.0f} mm tall: more than a whole {f.name} sheet holds; give at most "
+                             f"{most} divisions (the scene's [dynamics] divisions, or --positions)")
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
     dyn = analyse(st, getattr(args, "delta", None))
+    _refuse_a_table_taller_than(st, dyn, f, args)
     L, size, factor, shape, parts, length = construction(st, dyn, f, args)
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
