@@ -515,6 +515,25 @@ class _Args:
         self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
+def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep):
+    """A set's sheets (drawing.layout.flow): the drawings' ``rows``, then the tables and the notes
+    in one row. Where that leaves the notes alone on the last sheet, the last table goes with them
+    (over them, else beside them) — every sheet of a set carries a drawing or a table."""
+    laid = flow(rows + [tables + [notes]], region, keep)
+    if laid is None or not _notes_alone(laid[-1]):
+        return laid
+    for together in (Stack([tables[-1], notes]), Row([tables[-1], notes])):
+        again = flow(rows + [tables[:-1] + [together]], region, keep)
+        if again is not None and not _notes_alone(again[-1]):
+            return again
+    return laid
+
+
+def _notes_alone(page) -> bool:
+    """A sheet of a set that holds the notes and nothing else drawn."""
+    return [leaf.name for leaf, _ in page if leaf.record is not None] == ["notes"]
+
+
 def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
     """The table of the positions has a row per division and no sheet of a set splits it: where
     the fewest divisions the sheet can draw (the first construction's: ``redrawn`` only adds) make
@@ -561,9 +580,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        rows = [[leaves["moments"]], [leaves["band"], leaves["speed"]],
-                tables + [Leaf("notes", record=note_block(note_lines, TITLE))]]
-        laid = flow(rows, region, keep_out(f))
+        laid = _set_flow([[leaves["moments"]], [leaves["band"], leaves["speed"]]], tables,
+                         Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]
