@@ -502,3 +502,31 @@ def collisions(record: Record, clear: float = CHECK) -> list[str]:
             if _meets(boxes[a], boxes[b]):
                 out.append(f"{texts[a].text!r} ↔ {texts[b].text!r} at ({boxes[a][0]:.1f}, {boxes[a][1]:.1f})")
     return out
+
+
+ROW_STEP = 0.5       # mm: a row of numbers moves away from its axis by this much at a time …
+ROW_REACH = 15.0     # … up to this far
+
+
+def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -> list[Primitive]:
+    """A row of lettering set as one (the division numbers along a diagram's axis: a draftsman keeps
+    them on one line) moved along ``away`` (a unit direction: down for numbers under a φ axis) by the
+    least multiple of ``ROW_STEP`` at which none of them comes within ``CLEAR`` of a line of
+    ``record`` (each by its own width: the French curve that dips below its lowest division point,
+    a projection line) nor within ``APART`` of its lettering. Not found within ``ROW_REACH``: the
+    row where it touches the fewest. Returns the row moved; the caller adds it to the record."""
+    if not row:
+        return row
+    ob = obstacles(record.items)
+    ink = np.asarray([p.ink() for p in row], dtype=float)
+    ux, uy = away
+    best, fewest = 0.0, None
+    for k in range(int(ROW_REACH / ROW_STEP) + 1):
+        d = k * ROW_STEP
+        boxes = ink + np.array([ux * d, uy * d, ux * d, uy * d])
+        hits = int(_counts(ob, boxes).sum())
+        if fewest is None or hits < fewest:
+            best, fewest = d, hits
+        if hits == 0:
+            break
+    return [p.moved(ux * best, uy * best) for p in row]
