@@ -562,7 +562,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     doc = dynamics_json(fw)
     leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
     parts_, boxes = band(fw, lang, length)
-    bw = [_band_size(band(fw, other, length)[1]) for other in LANGS]    # the same room in either language
+    bw = [_band_size(boxes if other == lang else band(fw, other, length)[1]) for other in LANGS]   # the same
+    # room in either language (this language's band drawn once)
     leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
     note_lines = lines_of(notes(fw, doc, lang))
