@@ -449,6 +449,9 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         return banded[(L, size, length)]
 
     foot = keep_out(f)[3] - y0
+    if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
+        L, size = sizes[-1]                        # (what the search below would end at), nothing drawn
+        return L, size, 1.0, "set", 1, _lengths(L)[-1]
 
     def fit(k: int):                      # the scales: as the classical composition sets them
         L, size = sizes[k]
@@ -534,20 +537,29 @@ def _notes_alone(page) -> bool:
     return [leaf.name for leaf, _ in page if leaf.record is not None] == ["notes"]
 
 
-def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
-    """The table of the positions has a row per division and no sheet of a set splits it: where
-    the fewest divisions the sheet can draw (the first construction's: ``redrawn`` only adds) make
-    it taller or wider than the sheet's field, refused before any drawing is laid out — one line."""
+def _table_overflow(st: Study, dyn, f: Form, args) -> str | None:
+    """Why no sheet of ``f`` holds the table of the positions, or None where one does: it has a row
+    per division and no sheet of a set splits it, so where the fewest divisions the sheet can draw
+    (the first construction's: ``redrawn`` only adds) make it taller or wider than the field,
+    neither the sheet nor any set can be laid out (the line says how many divisions fit)."""
     from graphplan.graphic.flywheel import construct
     L, size = _sizes(st)[-1]
     first = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
     x0, y0, x1, y1 = field_of(f)
-    w, h = _wh(positions_table(dynamics_json(first), args.lang))
-    if w > x1 - x0 + 1e-9 or h > y1 - y0 + 1e-9:
-        most = first.divisions - math.ceil((h - (y1 - y0)) / ROW)       # a row a division
-        raise GraphplanError(f"the dynamics sheet's table of the positions, a row for each of {first.divisions} "
-                             f"divisions, is {h:.0f} mm tall: more than a whole {f.name} sheet holds; give at most "
-                             f"{most} divisions (the scene's [dynamics] divisions, or --positions)")
+    w, h = _wh(positions_table(dynamics_json(first), getattr(args, "lang", "uk")))
+    if w <= x1 - x0 + 1e-9 and h <= y1 - y0 + 1e-9:
+        return None
+    most = first.divisions - math.ceil((h - (y1 - y0)) / ROW)       # a row a division
+    return (f"the dynamics sheet's table of the positions, a row for each of {first.divisions} divisions, is "
+            f"{h:.0f} mm tall: more than a whole {f.name} sheet holds; give at most {most} divisions (the scene's "
+            "[dynamics] divisions, or --positions)")
+
+
+def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
+    """``_table_overflow`` refused in one line, before any drawing is laid out."""
+    why = _table_overflow(st, dyn, f, args)
+    if why:
+        raise GraphplanError(why)
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
