@@ -4,6 +4,7 @@ turned diagram's "4"), a set's last sheet never holding the notes alone, and a t
 that no sheet holds refused at once in one line that says how many divisions fit."""
 from __future__ import annotations
 
+import functools
 import math
 from types import SimpleNamespace
 
@@ -108,20 +109,26 @@ def test_no_sheet_of_a_set_holds_only_the_notes(name, fmt):
     assert defects(sheet) == []
 
 
+@functools.lru_cache(maxsize=None)
+def _slotter(divisions: int):
+    """examples/slotter.toml with [dynamics] divisions, studied and analysed (once per count)."""
+    from conftest import ROOT
+    from graphplan.exact.dynamics import analyse
+    base = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8")
+    st = scene_study(base.replace("[dynamics]", f"[dynamics]\ndivisions = {divisions}"))
+    return st, analyse(st, None)
+
+
 def test_a_table_of_positions_no_sheet_holds_is_refused_at_once():
     """The table of the positions takes a 6 mm row a division: at A1 (574 mm of field) 93
     divisions are the most; 94 are refused before any drawing is laid out, the line naming 93."""
     import time
 
-    from graphplan.exact.dynamics import analyse
     from graphplan.sheets.dynamics import _refuse_a_table_taller_than
     from graphplan.sheets.form import form
     from graphplan.util.errors import GraphplanError
-    from conftest import ROOT
-    base = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8")
     for n, refused in ((93, False), (94, True)):
-        st = scene_study(base.replace("[dynamics]", f"[dynamics]\ndivisions = {n}"))
-        dyn = analyse(st, None)
+        st, dyn = _slotter(n)
         t = time.perf_counter()
         if refused:
             with pytest.raises(GraphplanError) as e:
@@ -131,3 +138,17 @@ def test_a_table_of_positions_no_sheet_holds_is_refused_at_once():
         else:
             _refuse_a_table_taller_than(st, dyn, form("A1"), _args())
         assert time.perf_counter() - t < 2.0
+
+
+def test_numbers_by_twos_do_not_run_into_the_last():
+    """93 divisions on a 250 mm φ axis are numbered by twos: 0, 2 … 90 and 93 — not 92 beside 93
+    (their ink overlapped); every diagram of the construction is then free of collisions."""
+    from graphplan.drawing.flywheel import energy_projected, inertia_turned, moments_record
+    from graphplan.drawing.labels import collisions
+    from graphplan.graphic.flywheel import construct
+    st, dyn = _slotter(93)
+    f = construct(dyn, 93, 0.5, L=250.0)
+    for rec in (moments_record(f, "uk"), energy_projected(f, "uk", 250.0, 280.0), inertia_turned(f, "uk", 250.0, 10.0)):
+        numbers = [int(t.text) for t in _numbers(rec)]
+        assert 93 in numbers and 92 not in numbers and 90 in numbers, numbers
+        assert collisions(rec) == [], collisions(rec)[:3]

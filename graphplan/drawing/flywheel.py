@@ -76,6 +76,13 @@ def _every(length: float, n: int) -> int:
     return every
 
 
+def _lettered(k: int, n: int, every: int) -> bool:
+    """Whether division ``k`` of ``n`` is numbered: every ``every``-th and the last, n — but not a
+    multiple of ``every`` closer than that to n (93 divisions numbered by twos: 90 and 93, not 92
+    and 93 on one another)."""
+    return k == n or (k % every == 0 and n - k >= every)
+
+
 def _number(at: tuple[float, float], k: int, anchor: str = "middle") -> Primitive:
     """Division ``k``'s number (not yet on the record: ``_numbers`` sets the row clear of the lines)."""
     return Primitive("text", (at,), role="label", layer=LAYER, step="division numbers", text=str(k), size=NUM,
@@ -97,7 +104,7 @@ def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float
     for k, xk in enumerate(f.x):
         if k:
             rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
-        if numbers_at is not None and (k % every == 0 or k == n):
+        if numbers_at is not None and _lettered(k, n, every):
             row.append(_number((float(xk), numbers_at), k))
     return row
 
@@ -241,7 +248,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     for k, xk in enumerate(xs):
         if k:
             rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
-        if k % every == 0 or k == n:
+        if _lettered(k, n, every):
             row.append(_number((float(xk), lo - 5.0), k))
     for xk, yk in zip(xs, f.dT):
         rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
@@ -273,7 +280,7 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     for k, yk in enumerate(ys):
         if k:
             rec.segment((0.0, yk), (hi, yk), role="grid", layer=LAYER, step="division ordinates")
-        if k % every == 0 or k == n:
+        if _lettered(k, n, every):
             row.append(_number((-2.0, float(yk) - 0.9), k, anchor="end"))
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
