@@ -429,12 +429,15 @@ def _clip_params(sx: float, sy: float, ex: float, ey: float, x0: float, y0: floa
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     """A free spot farther out, joined to the point by a leader that crosses no label."""
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
-    for k in np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]:
-        box = tuple(boxes[k])
-        a, b = _leader(req.at, box)
-        if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
-            continue
-        return box, complex(starts[k]), (a, b)
+    n = FAR_DIRECTIONS
+    for ring in range(len(FAR)):          # ring by ring, nearest first: the same order, counted lazily
+        counts = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+        for k in np.nonzero(counts == 0)[0] + ring * n:
+            box = tuple(boxes[k])
+            a, b = _leader(req.at, box)
+            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+                continue
+            return box, complex(starts[k]), (a, b)
     return None
 
 
