@@ -212,8 +212,8 @@ def test_3600_positions_within_30_s(tmp_path, name, command):
 @pytest.mark.slow
 @pytest.mark.parametrize("kind", ["dynamics", "forces"])
 def test_sheets_of_3600_positions_within_30_s(tmp_path, kind):
-    """The forces sheet is drawn; the dynamics sheet's 360-division drawings do not fit an A1 sheet:
-    its own one-line refusal, within the 30 s, no file."""
+    """The forces sheet is drawn; the dynamics sheet's table of 360 positions (a row a division) fits
+    no A1 sheet: its own one-line refusal before any drawing is laid out, within the 30 s, no file."""
     path = scene(tmp_path, SLOTTER.replace("count = 12", "count = 3600"))
     if kind == "forces":
         ends(["sheet", path, "--sheet", kind, "-o", tmp_path / "s.svg"], 0)

@@ -34,7 +34,8 @@ def latin_words(text: str, allowed: set[str]) -> list[str]:
     """Latin words of 3+ letters in ``text`` that are neither symbols nor names nor --options nor
     file paths nor a file name's extension (.html)."""
     text = re.sub(r"--[a-z-]+|(?<!\S)(?:/[\w.-]+)+|(?<![\w.])\.[a-z]{2,5}\b", " ", text)   # .html: an extension
-    return [w for w in LATIN_WORD.findall(text) if w not in SYMBOLS and w not in allowed]
+    return [w for w in LATIN_WORD.findall(text) if w not in SYMBOLS and w not in allowed
+            and not re.fullmatch(r"[A-Za-z](?:max|min)", w)]          # Mmax: M with its index, plain
 
 
 def scene_names(path) -> set[str]:

@@ -78,7 +78,8 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     for n, page in enumerate(sheet.pages, 1):
         print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size,
                    k=page.fields.get("sheet", n), m=page.fields.get("sheets", len(sheet.pages)),
-                   n=len(page.placed)), file=sys.stderr)      # the sheet's number in its scene's project
+                   n=len(page.placed), blocks="block" if len(page.placed) == 1 else "blocks"),
+              file=sys.stderr)      # the sheet's number in its scene's project
     return 0
 
 

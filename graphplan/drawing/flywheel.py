@@ -11,8 +11,8 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_spline
-from graphplan.drawing.labels import place_labels
-from graphplan.graphic.record import LabelRequest, Record, line_pitch
+from graphplan.drawing.labels import place_labels, row_clear
+from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
 from graphplan.util.words import num
 
@@ -81,16 +81,57 @@ def _axes(rec: Record, lo: float, hi: float, x_from: float, L: float, sym: str,
     rec.label((L + 11.5, -1.2), xsym, size=TEXT, layer=LAYER, step=f"axes {step}")
 
 
-def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float | None) -> None:
-    n = f.divisions
+def _every(length: float, n: int) -> int:
+    """Every how many divisions a number is lettered: 1, 2, 4 … so that numbers stand ≥ 5 mm apart."""
     every = 1
-    while f.L / n * every < 5.0:
+    while length / n * every < 5.0:
         every *= 2
+    return every
+
+
+def _lettered(k: int, n: int, every: int) -> bool:
+    """Whether division ``k`` of ``n`` is numbered: every ``every``-th and the last, n — but not a
+    multiple of ``every`` closer than that to n (93 divisions numbered by twos: 90 and 93, not 92
+    and 93 on one another)."""
+    return k == n or (k % every == 0 and n - k >= every)
+
+
+def _number(at: tuple[float, float], k: int, anchor: str = "middle") -> Primitive:
+    """Division ``k``'s number (not yet on the record: ``_numbers`` sets the row clear of the lines)."""
+    return Primitive("text", (at,), role="label", layer=LAYER, step="division numbers", text=str(k), size=NUM,
+                     anchor=anchor)
+
+
+def _numbers(rec: Record, row: list[Primitive], away: tuple[float, float] = (0.0, -1.0)) -> None:
+    """The division numbers added once every line is drawn, the row moved as one ``away`` from its
+    axis until it keeps clear of them (drawing.labels.row_clear: the French curve dips below its
+    lowest division point, a turned curve beyond its axis)."""
+    rec.items.extend(row_clear(rec, row, away))
+
+
+def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float | None) -> list[Primitive]:
+    """The division ordinates; the numbers under them at ``numbers_at`` (returned, for ``_numbers``)."""
+    n = f.divisions
+    every = _every(f.L, n)
+    row = []
     for k, xk in enumerate(f.x):
         if k:
             rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
-        if numbers_at is not None and (k % every == 0 or k == n):
-            rec.label((xk, numbers_at), str(k), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
+        if numbers_at is not None and _lettered(k, n, every):
+            row.append(_number((float(xk), numbers_at), k))
+    return row
+
+
+DRAWN = 0.01      # mm: the most a drawn curve's polyline departs from the construction's samples
+
+
+def drawn(X: np.ndarray, Y: np.ndarray) -> list[tuple[float, float]]:
+    """The polyline a pen draws of a sampled curve: the samples (graphic.flywheel: 40 an interval,
+    14 400 at 360 divisions) simplified by Douglas–Peucker (shapely) to within ``DRAWN`` mm of them —
+    a few hundred vertices, the same line on paper, what the lettering keeps clear of."""
+    from shapely import LineString
+    line = LineString(np.column_stack([X, Y])).simplify(DRAWN, preserve_topology=False)
+    return [(float(x), float(y)) for x, y in line.coords]
 
 
 def _smooth(f: Flywheel, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -107,7 +148,7 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     rec = Record(w["moments"], scales={"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "H_mm": f.H})
     lo, hi = _extent(f.M, f.M_mid, [f.Md], f.dyn.cycle.samples.moment / f.mu_M)
     _axes(rec, lo, hi, -f.H - 4.0, f.L, f"{w['Mc']}, {w['Md']}", step="M")
-    _ordinates(rec, f, lo, hi, lo - 5.0)
+    row = _ordinates(rec, f, lo, hi, lo - 5.0)
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
     curve = f.dyn.cycle.moment(fine * f.mu_phi) / f.mu_M     # the diagram plotted from the computed M*_c
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="M*_c(φ)")
@@ -122,10 +163,11 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
         rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
+    _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
+    _numbers(rec, row)
     place_labels(rec, [LabelRequest(complex(f.L, f.Md), w["Md"], 1 + 0.3j, TEXT, step="M*_d"),
                        LabelRequest(complex(f.L, float(f.M[-1])), w["Mc"], 1 - 0.3j, TEXT, step="M*_c")],
                  layer=LAYER)
-    _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     # b) the work diagrams, below
     a_lo, a_hi = _extent(f.A_drawn)
     y0 = lo - 22.0 - a_hi - 8.0
@@ -137,7 +179,7 @@ def _work(f: Flywheel, w: dict) -> Record:
     rec = Record("work")
     lo, hi = _extent(f.A_drawn)
     _axes(rec, lo, hi, -3.0, f.L, f"{w['Ac']}, {w['Ad']}", step="A")
-    _ordinates(rec, f, lo, hi, lo - 5.0)
+    row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for k in range(f.divisions):
         rec.segment((f.x[k], f.A_drawn[k]), (f.x[k + 1], f.A_drawn[k + 1]), role="chord", layer=LAYER,
                     step=f"chord {k}–{k + 1} ∥ ray P–{k + 1}")
@@ -145,6 +187,7 @@ def _work(f: Flywheel, w: dict) -> Record:
     fine, curve = _smooth(f, f.A_drawn)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
     rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
+    _numbers(rec, row)
     return place_labels(rec, [LabelRequest(complex(f.L, float(f.A_drawn[-1])), f"{w['Ad']} = {w['Ac']}", 1 + 0.3j,
                                            TEXT, step="A_d")], layer=LAYER)
 
@@ -163,11 +206,12 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     rec = Record(title, scales=scales)
     lo, hi = _extent(values)
     _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
-    _ordinates(rec, f, lo, hi, lo - 5.0)
+    row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for xk, yk in zip(f.x, values):
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
     fine, curve = _smooth(f, values)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
+    _numbers(rec, row)
     return rec
 
 
@@ -218,14 +262,13 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     rec.vector((0.0, lo - 1.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
     rec.vector((-3.0, 0.0), (length + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
     _text(rec, (1.8, hi + 5.0), energy_axis(f, lang), step="axes ΔT")
-    every = 1
-    while length / n * every < 5.0:
-        every *= 2
+    every = _every(length, n)
+    row = []
     for k, xk in enumerate(xs):
         if k:
             rec.segment((xk, lo), (xk, hi), role="grid", layer=LAYER, step="division ordinates")
-        if k % every == 0 or k == n:
-            rec.label((xk, lo - 5.0), str(k), size=NUM, anchor="middle", layer=LAYER, step="division numbers")
+        if _lettered(k, n, every):
+            row.append(_number((float(xk), lo - 5.0), k))
     for xk, yk in zip(xs, f.dT):
         rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
     fine, curve = _smooth(f, f.dT)
@@ -233,6 +276,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     for j in projected(n):
         rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
                     step=f"projection of ΔT at {j}")
+    _numbers(rec, row)
     return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT")],
                         layer=LAYER)
 
@@ -250,14 +294,13 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     rec.vector((-1.0, 0.0), (hi + 8.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
     _text(rec, (hi + 9.5, -1.2), w["Im"], step="axes I*_m")
     rec.label((0.0, -length - 15.0), "φ", size=TEXT, anchor="middle", layer=LAYER, step="axes I*_m")
-    every = 1
-    while length / n * every < 5.0:
-        every *= 2
+    every = _every(length, n)
+    row = []
     for k, yk in enumerate(ys):
         if k:
             rec.segment((0.0, yk), (hi, yk), role="grid", layer=LAYER, step="division ordinates")
-        if k % every == 0 or k == n:
-            rec.label((-2.0, yk - 0.9), str(k), size=NUM, anchor="end", layer=LAYER, step="division numbers")
+        if _lettered(k, n, every):
+            row.append(_number((-2.0, float(yk) - 0.9), k, anchor="end"))
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
     fine, curve = _smooth(f, f.I)
@@ -265,6 +308,7 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     for j in projected(n):
         rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,
                     step=f"projection of I* at {j}")
+    _numbers(rec, row, away=(-1.0, 0.0))
     return rec
 
 
@@ -285,7 +329,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
     _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
     labels = [LabelRequest(complex(0.0, hi + 10.0), f"ΔT, {w['J']}", 1 + 0j, TEXT, step="axes")]
-    rec.add("polyline", list(zip(X, Y)), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
+    rec.add("polyline", drawn(X, Y), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     if projections is not None:
         left, foot = projections

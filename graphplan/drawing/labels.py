@@ -429,12 +429,15 @@ def _clip_params(sx: float, sy: float, ex: float, ey: float, x0: float, y0: floa
 def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     """A free spot farther out, joined to the point by a leader that crosses no label."""
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
-    for k in np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]:
-        box = tuple(boxes[k])
-        a, b = _leader(req.at, box)
-        if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
-            continue
-        return box, complex(starts[k]), (a, b)
+    n = FAR_DIRECTIONS
+    for ring in range(len(FAR)):          # ring by ring, nearest first: the same order, counted lazily
+        counts = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+        for k in np.nonzero(counts == 0)[0] + ring * n:
+            box = tuple(boxes[k])
+            a, b = _leader(req.at, box)
+            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+                continue
+            return box, complex(starts[k]), (a, b)
     return None
 
 
@@ -502,3 +505,31 @@ def collisions(record: Record, clear: float = CHECK) -> list[str]:
             if _meets(boxes[a], boxes[b]):
                 out.append(f"{texts[a].text!r} ↔ {texts[b].text!r} at ({boxes[a][0]:.1f}, {boxes[a][1]:.1f})")
     return out
+
+
+ROW_STEP = 0.5       # mm: a row of numbers moves away from its axis by this much at a time …
+ROW_REACH = 15.0     # … up to this far
+
+
+def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -> list[Primitive]:
+    """A row of lettering set as one (the division numbers along a diagram's axis: a draftsman keeps
+    them on one line) moved along ``away`` (a unit direction: down for numbers under a φ axis) by the
+    least multiple of ``ROW_STEP`` at which none of them comes within ``CLEAR`` of a line of
+    ``record`` (each by its own width: the French curve that dips below its lowest division point,
+    a projection line) nor within ``APART`` of its lettering. Not found within ``ROW_REACH``: the
+    row where it touches the fewest. Returns the row moved; the caller adds it to the record."""
+    if not row:
+        return row
+    ob = obstacles(record.items)
+    ink = np.asarray([p.ink() for p in row], dtype=float)
+    ux, uy = away
+    best, fewest = 0.0, None
+    for k in range(int(ROW_REACH / ROW_STEP) + 1):
+        d = k * ROW_STEP
+        boxes = ink + np.array([ux * d, uy * d, ux * d, uy * d])
+        hits = int(_counts(ob, boxes).sum())
+        if fewest is None or hits < fewest:
+            best, fewest = d, hits
+        if hits == 0:
+            break
+    return [p.moved(ux * best, uy * best) for p in row]

@@ -87,6 +87,9 @@ WORDS = {
 }
 
 
+ROW = 6.0     # mm: a row of the tables
+
+
 def positions_table(doc: dict, lang: str) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
@@ -108,7 +111,7 @@ def positions_table(doc: dict, lang: str) -> Record:
     rows = [head]
     for k, p in enumerate(ps):
         rows.append([str(p["index"]), fixed(p["turn_deg"], lang, 1)] + [c[k] for c in cols])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=6.0, size=2.5,
+    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
                  title=w["positions"])
 
 
@@ -450,6 +453,9 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         return banded[(L, size, length)]
 
     foot = keep_out(f)[3] - y0
+    if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
+        L, size = sizes[-1]                        # (what the search below would end at), nothing drawn
+        return L, size, 1.0, "set", 1, _lengths(L)[-1]
 
     def fit(k: int):                      # the scales: as the classical composition sets them
         L, size = sizes[k]
@@ -516,18 +522,64 @@ class _Args:
         self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
+def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep):
+    """A set's sheets (drawing.layout.flow): the drawings' ``rows``, then the tables and the notes
+    in one row. Where that leaves the notes alone on the last sheet, the last table goes with them
+    (over them, else beside them) — every sheet of a set carries a drawing or a table."""
+    laid = flow(rows + [tables + [notes]], region, keep)
+    if laid is None or not _notes_alone(laid[-1]):
+        return laid
+    for together in (Stack([tables[-1], notes]), Row([tables[-1], notes])):
+        again = flow(rows + [tables[:-1] + [together]], region, keep)
+        if again is not None and not _notes_alone(again[-1]):
+            return again
+    return laid
+
+
+def _notes_alone(page) -> bool:
+    """A sheet of a set that holds the notes and nothing else drawn."""
+    return [leaf.name for leaf, _ in page if leaf.record is not None] == ["notes"]
+
+
+def _table_overflow(st: Study, dyn, f: Form, args) -> str | None:
+    """Why no sheet of ``f`` holds the table of the positions, or None where one does: it has a row
+    per division and no sheet of a set splits it, so where the fewest divisions the sheet can draw
+    (the first construction's: ``redrawn`` only adds) make it taller or wider than the field,
+    neither the sheet nor any set can be laid out (the line says how many divisions fit)."""
+    from graphplan.graphic.flywheel import construct
+    L, size = _sizes(st)[-1]
+    first = construct(dyn, getattr(args, "divisions", None), args.precision, L=L, size=size)
+    x0, y0, x1, y1 = field_of(f)
+    w, h = _wh(positions_table(dynamics_json(first), getattr(args, "lang", "uk")))
+    if w <= x1 - x0 + 1e-9 and h <= y1 - y0 + 1e-9:
+        return None
+    most = first.divisions - math.ceil((h - (y1 - y0)) / ROW)       # a row a division
+    return (f"the dynamics sheet's table of the positions, a row for each of {first.divisions} divisions, is "
+            f"{h:.0f} mm tall: more than a whole {f.name} sheet holds; give at most {most} divisions (the scene's "
+            "[dynamics] divisions, or --positions)")
+
+
+def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
+    """``_table_overflow`` refused in one line, before any drawing is laid out."""
+    why = _table_overflow(st, dyn, f, args)
+    if why:
+        raise GraphplanError(why)
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
     dyn = analyse(st, getattr(args, "delta", None))
+    _refuse_a_table_taller_than(st, dyn, f, args)
     L, size, factor, shape, parts, length = construction(st, dyn, f, args)
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
     doc = dynamics_json(fw)
     leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
     parts_, boxes = band(fw, lang, length)
-    bw = [_band_size(band(fw, other, length)[1]) for other in LANGS]    # the same room in either language
+    bw = [_band_size(boxes if other == lang else band(fw, other, length)[1]) for other in LANGS]   # the same
+    # room in either language (this language's band drawn once)
     leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
     note_lines = lines_of(notes(fw, doc, lang))
@@ -545,9 +597,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        rows = [[leaves["moments"]], [leaves["band"], leaves["speed"]],
-                tables + [Leaf("notes", record=note_block(note_lines, TITLE))]]
-        laid = flow(rows, region, keep_out(f))
+        laid = _set_flow([[leaves["moments"]], [leaves["band"], leaves["speed"]]], tables,
+                         Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]

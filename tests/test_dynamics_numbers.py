@@ -1,0 +1,154 @@
+"""The dynamics sheet's division numbers and sets read as a teacher reads them: no number touched by
+a curve (a generated shaper whose French curve of I*(φ) dips past its φ axis ran through the
+turned diagram's "4"), a set's last sheet never holding the notes alone, and a table of positions
+that no sheet holds refused at once in one line that says how many divisions fit."""
+from __future__ import annotations
+
+import functools
+import math
+from types import SimpleNamespace
+
+import pytest
+from shapely.geometry import LineString, box
+
+from conftest import example, scene_study
+from coursework_scenes import shaper
+
+CHECK = 0.3      # mm: the least paper a reader needs between a number's ink and a line's ink
+
+# the falsifying shaper of test_composition_properties' many_new_mechanisms (dynamics, A1): I*_m
+# 0.038 kg·m² at positions 0 and 4 between 1.1 and 6.5 — the French curve swings 2 mm past the axis
+DIPPING = shaper(2.0, 0.29826407280599715, 0.3, 0.75, 0.9, 204.1166895861926, 32.4540087809624, 8000.0, 60.0)
+
+
+def _args(lang: str = "uk"):
+    return SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
+
+
+@pytest.fixture(scope="module")
+def dipping():
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    return BUILDERS["dynamics"](scene_study(DIPPING), form("A1"), _args())
+
+
+def _numbers(rec):
+    return [p for p in rec.items if p.kind == "text" and p.step == "division numbers"]
+
+
+def _curves(rec):
+    return [LineString(p.points) for p in rec.items if p.kind == "polyline" and p.role == "curve"]
+
+
+def test_the_turned_curve_really_dips_past_its_axis(dipping):
+    """The scene is the one that needs the fix: its turned I*(φ) curve runs left of the φ axis
+    (negative abscissae: I* drawn under 0) by more than the numbers' old 2 mm margin less CHECK."""
+    inertia = next(p.record for p in dipping.placed if p.name == "inertia")
+    axis = [p.points for p in inertia.items if p.kind == "vector" and p.step == "axes I*_m"][0]
+    x_axis = axis[0][0]                                        # the φ axis, drawn downward first
+    least = min(x for c in _curves(inertia) for x, _ in c.coords)
+    assert x_axis - least > 2.0 - CHECK - 0.25
+
+
+@pytest.mark.parametrize("name", ["energy", "inertia", "moments"])
+def test_no_division_number_is_touched_by_a_curve(dipping, name):
+    """Every division number's ink keeps CHECK mm of paper from every curve on the sheet (the
+    distance by shapely, from the curve's centre line less half its width), and the numbers of a
+    diagram stand on one line (one baseline under ΔT(φ) and the moments; one right edge beside the
+    turned I*(φ))."""
+    rec = next(p.record for p in dipping.placed if p.name == name)
+    curves = [(LineString(p.points), p.line_width / 2) for q in dipping.placed for p in q.record.items
+              if p.kind == "polyline" and p.role == "curve"]
+    numbers = _numbers(rec)
+    assert len(numbers) >= 13
+    for t in numbers:
+        ink = box(*t.ink())
+        gap = min(c.distance(ink) - half for c, half in curves)
+        assert gap >= CHECK, (name, t.text, round(gap, 2))
+    if name == "inertia":                      # beside the φ axis running down: one right edge
+        assert len({round(t.points[0][0], 6) for t in numbers}) == 1 and {t.anchor for t in numbers} == {"end"}
+    else:                                      # under the φ axis: one baseline (the moments' and the work's)
+        assert len({round(t.points[0][1], 6) for t in numbers}) == (2 if name == "moments" else 1)
+
+
+def test_the_sheet_has_no_defect(dipping):
+    from graphplan.sheets.compose import defects
+    assert defects(dipping) == []
+
+
+def test_a_row_moves_as_one_by_the_least_step_that_clears_it():
+    """labels.row_clear: a line through a row of numbers' ink, 0.5 mm under its top, moves the row
+    down 0.5 mm at a time until CLEAR (0.5 mm) + the line's half width lies between them: 1.175 mm,
+    so by 3 steps (1.5 mm), not 2."""
+    from graphplan.drawing.labels import CLEAR, ROW_STEP, row_clear
+    from graphplan.graphic.record import Primitive, Record
+    rec = Record("t")
+    row = [Primitive("text", ((x, 0.0),), text=str(k), size=2.5, anchor="middle") for k, x in enumerate((0.0, 10.0))]
+    top = max(p.ink()[3] for p in row)
+    half = 0.35 / 2
+    rec.segment((-5.0, top - 0.5), (15.0, top - 0.5), width=0.35)
+    moved = row_clear(rec, row, (0.0, -1.0))
+    shift = row[0].points[0][1] - moved[0].points[0][1]
+    assert shift == pytest.approx(math.ceil((0.5 + CLEAR + half) / ROW_STEP) * ROW_STEP) == pytest.approx(1.5)
+    assert [p.points[0][0] for p in moved] == [0.0, 10.0] and moved[0].points[0][1] == moved[1].points[0][1]
+
+
+@pytest.mark.parametrize("name, fmt", [("shaper", "A3"), pytest.param("slotter", "A3", marks=pytest.mark.slow)])
+def test_no_sheet_of_a_set_holds_only_the_notes(name, fmt):
+    """Every sheet of a dynamics set carries a drawing or a table; the notes share a sheet with the
+    last table (shaper and slotter at A3 left them alone on a fourth sheet)."""
+    from graphplan.sheets.compose import defects
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    sheet = BUILDERS["dynamics"](example(name), form(fmt), _args("en"))
+    pages = [[p.name for p in page.placed] for page in sheet.pages]
+    assert len(pages) > 1
+    assert all(set(names) - {"notes"} for names in pages), pages
+    last = pages[-1]
+    assert "notes" in last and "motor table" in last, pages
+    assert defects(sheet) == []
+
+
+@functools.lru_cache(maxsize=None)
+def _slotter(divisions: int):
+    """examples/slotter.toml with [dynamics] divisions, studied and analysed (once per count)."""
+    from conftest import ROOT
+    from graphplan.exact.dynamics import analyse
+    base = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8")
+    st = scene_study(base.replace("[dynamics]", f"[dynamics]\ndivisions = {divisions}"))
+    return st, analyse(st, None)
+
+
+def test_a_table_of_positions_no_sheet_holds_is_refused_at_once():
+    """The table of the positions takes a 6 mm row a division: at A1 (574 mm of field) 93
+    divisions are the most; 94 are refused before any drawing is laid out, the line naming 93."""
+    import time
+
+    from graphplan.sheets.dynamics import _refuse_a_table_taller_than
+    from graphplan.sheets.form import form
+    from graphplan.util.errors import GraphplanError
+    for n, refused in ((93, False), (94, True)):
+        st, dyn = _slotter(n)
+        t = time.perf_counter()
+        if refused:
+            with pytest.raises(GraphplanError) as e:
+                _refuse_a_table_taller_than(st, dyn, form("A1"), _args())
+            assert "94 divisions" in str(e.value) and "at most 93" in str(e.value) and "A1" in str(e.value)
+            assert "\n" not in str(e.value)
+        else:
+            _refuse_a_table_taller_than(st, dyn, form("A1"), _args())
+        assert time.perf_counter() - t < 2.0
+
+
+def test_numbers_by_twos_do_not_run_into_the_last():
+    """93 divisions on a 250 mm φ axis are numbered by twos: 0, 2 … 90 and 93 — not 92 beside 93
+    (their ink overlapped); every diagram of the construction is then free of collisions."""
+    from graphplan.drawing.flywheel import energy_projected, inertia_turned, moments_record
+    from graphplan.drawing.labels import collisions
+    from graphplan.graphic.flywheel import construct
+    st, dyn = _slotter(93)
+    f = construct(dyn, 93, 0.5, L=250.0)
+    for rec in (moments_record(f, "uk"), energy_projected(f, "uk", 250.0, 280.0), inertia_turned(f, "uk", 250.0, 10.0)):
+        numbers = [int(t.text) for t in _numbers(rec)]
+        assert 93 in numbers and 92 not in numbers and 90 in numbers, numbers
+        assert collisions(rec) == [], collisions(rec)[:3]
