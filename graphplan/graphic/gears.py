@@ -605,15 +605,13 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     rec.point(_f(pole), role="pole", layer=LAYER)
     rec.segment(_f(pole), (xp, y0), role="construction", layer=LAYER, step="h")
     for k, s in slopes.items():
-        if k == "3":
-            continue
-        rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
-        rec.point((xp + h * s, y0), role="pole", layer=LAYER)
+        if k != "3":      # the fixed ring's ray (ω3 = 0) is h itself: its point the foot of h
+            rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
+        rec.point((xp + h * s, y0), role="pole", layer=LAYER, step=f"point {k}")
     pl = Placer(rec)
-    names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H"}
-    for k, s in slopes.items():
-        if k != "3":
-            pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
+    names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H", "3": "3"}
+    for k, s in slopes.items():      # every point lettered, the ring's 3 (ω = 0) too
+        pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     pl.label(pole, "p_ω", toward=-1 + 0j)
     pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
     pl.label(end1, "1", toward=end1 - a, radii=(1.0, 2.0, 3.5, 5.5))     # the lines' numbers at their ends,

@@ -49,13 +49,14 @@ def _pct(v, lang: str) -> str:
 
 def positions_table(doc: dict, lang: str) -> Record:
     """Per division: φ, s and ds/dφ exact and graphical with δ, ϑ exact and measured, R exact and
-    measured (mm)."""
+    measured (mm); ds/dφ per radian of the cam's turn (мм/рад, rocking °/рад)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
     k = 1.0 if rocking else 1000.0                      # a translating follower's s in mm
     unit = "°" if rocking else ("мм" if lang == "uk" else "mm")
+    per = unit + "/" + ("рад" if lang == "uk" else "rad")     # the analogue: per radian of the cam's turn
     gr = "гр." if lang == "uk" else "gr."
-    head = [WORDS[lang]["n"], "φ, °", f"s, {unit}", f"s {gr}", "δ_s, %", f"ds/dφ, {unit}", f"ds/dφ {gr}", "δ, %",
+    head = [WORDS[lang]["n"], "φ, °", f"s, {unit}", f"s {gr}", "δ_s, %", f"ds/dφ, {per}", f"ds/dφ {gr}", "δ, %",
             "ϑ, °", f"ϑ {gr}", "R, " + ("мм" if lang == "uk" else "mm"), f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
@@ -69,7 +70,7 @@ def positions_table(doc: dict, lang: str) -> Record:
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
-    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 19.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
+    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 22.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
     return table(rows, widths, row_h=6.0, size=2.5, title=WORDS[lang]["table"])
 
 
