@@ -97,3 +97,39 @@ def test_a_rocking_cam_gives_its_analogue_in_degrees_per_radian():
     g = construct(sol, measure=False)
     head = [q.text for q in positions_table(cam_json(sol, g, ""), "uk").items if q.kind == "text"]
     assert "ds/dφ, °/рад" in head
+
+
+def test_the_a1_sheet_fills_its_height_with_the_table_and_notes_by_the_title_block(tmp_path):
+    """Review 2, item 11: the review's cam on A1 left a strip across the whole width under the drawings
+    (y 345–410 mm from the top), the right third bare and a lower band of only the table and the
+    notes; the diagrams were 308 mm high in a field of 574. Now: the diagrams with the phase diagram
+    over more than 70 % of the field's height; Table 1 and the notes right of them, over the title
+    block and the lower of them by it; no band across the field higher than 3·GAP with nothing in it."""
+    from graphplan.drawing.layout import GAP
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions, defects, field_of, keep_out
+    from graphplan.sheets.form import form
+    path = tmp_path / "cam_tr.toml"
+    path.write_text(CAM_TR, encoding="utf-8")
+    f = form("A1")
+    sheet = build_cam_sheet(load(path), f, SheetOptions(lang="uk", sheet="cam"))
+    assert not defects(sheet)
+    box = {p.name: p.record.bounds() for p in sheet.placed}
+    assert set(box) == {"diagrams", "profile", "table", "notes"}
+    x0, y0, x1, y1 = field_of(f)
+    keep = keep_out(f)
+    d = box["diagrams"]
+    assert d[3] - d[1] > 0.7 * (y1 - y0), d
+    for name in ("table", "notes"):
+        assert box[name][0] >= d[2] and box[name][1] >= keep[3] - 1e-6, (name, box[name])
+    assert min(box["table"][1], box["notes"][1]) - keep[3] <= 2 * GAP
+    # every horizontal band of the field over the title block meets a drawing, the table or the notes
+    covered = sorted((b[1], b[3]) for b in box.values())
+    top = keep[3]
+    gaps = []
+    for lo, hi in covered:
+        if lo > top:
+            gaps.append(lo - top)
+        top = max(top, hi)
+    gaps.append(y1 - top)
+    assert max(gaps) <= 3 * GAP, (gaps, covered)
