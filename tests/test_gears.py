@@ -484,6 +484,31 @@ def test_the_notes_say_which_train_nearer_the_ratio_lost_and_why(tmp_path):
                           and abs(nearest["error_pct"]) < abs(cands[0]["error_pct"]))
 
 
+def test_the_planetary_scheme_draws_each_wheel_as_gost_2770_does():
+    """Review 2, item 17: the scheme's wheels were bare strips. GOST 2.770: a wheel a line across its
+    radius with short bars square to it at its pitch circle — the sun's bar at r1, the planet's at
+    aw ± r2, the ring's at r3 (drawn at μl); no strip (polygon) left."""
+    from graphplan.graphic.gears import construct_train
+    for kind, u in (("A", 5.0), ("B", 12.0)):
+        tr = solve_train(Train(kind, 3, 0.003, 100.0, ratio=u))
+        vel = construct_train(tr, 0.5, "en")
+        items = vel.record.items
+        assert not [q for q in items if q.kind == "polygon" and q.step in ("1", "2", "2'", "3")]
+        r = {k: v / vel.mu_l for k, v in tr.radii.items()}
+        pitch = {"1": [r["1"]], "3": [r["3"]], "2": [r["H"] - r["2"], r["H"] + r["2"]]}
+        if kind == "B":
+            pitch["2'"] = [r["H"] - r["2'"], r["H"] + r["2'"]]
+        for member, ys in pitch.items():
+            bars = [q for q in items if q.step == f"{member} pitch"]
+            line = [q for q in items if q.step == member and q.kind == "segment"]
+            assert len(line) == 1 and abs(line[0].points[0][0] - line[0].points[1][0]) < 1e-9, member
+            assert len(bars) == len(ys), member
+            for q, y in zip(sorted(bars, key=lambda q: q.points[0][1]), sorted(ys)):
+                (x0, y0), (x1, y1) = q.points
+                assert y0 == y1 and abs(y0 - y) <= vel.precision, (member, y0, y)   # laid off to the ruler
+                assert x0 < line[0].points[0][0] < x1                                # square across the line
+
+
 def test_the_a1_sheet_grows_the_planetary_pictures_to_their_zone():
     import re
     from graphplan.graphic.gears import construct_train
