@@ -174,19 +174,6 @@ WORDS = {
 }
 
 
-def reading_mm(v_m: float | None, g: dict[str, Any], lang: str) -> str:
-    """A graphical length (m) in mm on the part to the ruler's resolution there, precision·μl (0.5 mm
-    at 5:1 → 0.1 mm): as many decimals as that resolution has; at precision 0 four significant figures."""
-    if v_m is None:
-        return "—"
-    res = g["precision_mm"] * g["mu_l_m_mm"] * 1000.0
-    if res <= 0:
-        return num(v_m * 1000.0, lang, 4).replace("-", "−")
-    dec = max(0, math.ceil(-math.log10(res) - 1e-9))
-    text = f"{v_m * 1000.0:.{dec}f}"
-    return (text.replace(".", ",") if lang == "uk" else text).replace("-", "−")
-
-
 def table_decimals(g: dict[str, Any]) -> int:
     """The decimals of Table 1's lengths in mm: one past the ruler's resolution on the part,
     precision·μl (0.5 mm at 4:1 → 0.125 mm → two decimals), so that the percent error worked out
