@@ -166,3 +166,54 @@ delta = 0.03
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+# The second review (issue 32's sheets of new mechanisms): a translating roller follower turning
+# counter-clockwise with a positive offset, and a gear pair with a type-B planetary train.
+CAM_TR = '''title = "Кулачковий механізм з поступальним роликовим штовхачем (варіант рецензента)"
+title_en = "Disc cam with an offset translating roller follower"
+designation = "ТММ.КП.09.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = 0.008
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 40, return = 90, dwell_near = 130 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 30 }
+omega = 12
+direction = "ccw"
+divisions = 10
+'''
+
+GEARS_REVIEW = '''title = "Зубчаста передача і планетарний редуктор (варіант рецензента)"
+title_en = "A gear pair and a planetary reducer (reviewer's variant)"
+designation = "ТММ.КП.10.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 23]
+module = 0.006
+shifts = [0.4, 0.2]
+pressure_angle_deg = 20
+addendum = 1.0
+clearance = 0.25
+
+[planetary]
+type = "B"
+ratio = 12.0
+planets = 3
+module = 0.003
+rpm = 960
+'''

@@ -38,9 +38,11 @@ def scale_units(rocking: bool, lang: str) -> dict[str, str]:
 
 
 def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
-    """“μ_s = 0,0005 м/мм” in the lab's notation (markup)."""
+    """“μ_s = 0,0005 м/мм” in the lab's notation (markup). The analogues' scales are named by their
+    quantity, μ_{ds/dφ} and μ_{d²s/dφ²}: μ_v and μ_a are the kinematic velocity's and acceleration's
+    (m/s per mm), which a cam's analogues per radian of its turn are not."""
     from graphplan.util.words import num
-    sym = {"mu_s": "μ_s", "mu_v": "μ_v", "mu_a": "μ_a", "mu_phi": "μ_φ", "mu_l": "μ_l"}[key]
+    sym = {"mu_s": "μ_s", "mu_v": "μ_{ds/dφ}", "mu_a": "μ_{d²s/dφ²}", "mu_phi": "μ_φ", "mu_l": "μ_l"}[key]
     return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
 
 
@@ -99,11 +101,14 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
             rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER, step=f"{key} at {k}")
         if key in ("v", "s"):     # the chords of the integral, parallel to the rays below
             chord = g.v_chord if key == "v" else g.s_chord
+            # s closed by the correction (close_phases): its chords, which miss the closing, are a
+            # thin construction under the corrected ordinates and the curve (the lab erases them)
+            role = "construction" if key == "s" and any(abs(c) > 0 for c in g.closing) else "chord"
             for ph in (0, 1):
                 sel = np.flatnonzero(g.phase == ph)
                 for j in range(len(sel) - 1):
                     p, q = sel[j], sel[j + 1]
-                    rec.segment((x[p], y0 + chord[p]), (x[q], y0 + chord[q]), role="chord", layer=LAYER,
+                    rec.segment((x[p], y0 + chord[p]), (x[q], y0 + chord[q]), role=role, layer=LAYER,
                                 step=f"chord {key} {ph} {j}")
         if pole:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
@@ -158,6 +163,21 @@ def phase_scale(sol: Solution, g: CamConstruction) -> float:
     arcs l·ψ at the scale of the profile, so R0 and the arm carry over to it (at μ_s·l the arm alone
     would be 1/μ_s mm long, larger than the profile, the main drawing)."""
     return g.mu_l if sol.cam.rocking else g.mu_s
+
+
+def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple[int, str]]:
+    """The division numbers of the points ``K`` (mm), one label a place: points within ``tol`` mm of
+    an earlier one share its label, the numbers apart — "0; 21" (uk, where the comma is the decimal
+    sign), "0, 21" (en) —, not two numbers side by side that read as one ("0 21" as 021)."""
+    sep = "; " if lang == "uk" else ", "
+    out: list[tuple[int, list[str]]] = []
+    for k, z in enumerate(K):
+        same = next((o for o in out if abs(K[o[0]] - z) <= tol), None)
+        if same is None:
+            out.append((k, [str(k)]))
+        else:
+            same[1].append(str(k))
+    return [(k, sep.join(names)) for k, names in out]
 
 
 def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
@@ -240,8 +260,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
         rec.segment((lo, y0), (hi, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis ds/dφ")
         labels.append(LabelRequest(complex(hi, y0), "ds/dφ", toward=1 - 1j, size=TEXT, step="axis ds/dφ"))
-    for k in range(len(K)):
-        labels.append(LabelRequest(K[k], str(k), toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
+    for k, text in coincident_numbers(K, lang):
+        labels.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec

@@ -605,15 +605,13 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     rec.point(_f(pole), role="pole", layer=LAYER)
     rec.segment(_f(pole), (xp, y0), role="construction", layer=LAYER, step="h")
     for k, s in slopes.items():
-        if k == "3":
-            continue
-        rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
-        rec.point((xp + h * s, y0), role="pole", layer=LAYER)
+        if k != "3":      # the fixed ring's ray (ω3 = 0) is h itself: its point the foot of h
+            rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
+        rec.point((xp + h * s, y0), role="pole", layer=LAYER, step=f"point {k}")
     pl = Placer(rec)
-    names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H"}
-    for k, s in slopes.items():
-        if k != "3":
-            pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
+    names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H", "3": "3"}
+    for k, s in slopes.items():      # every point lettered, the ring's 3 (ω = 0) too
+        pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     pl.label(pole, "p_ω", toward=-1 + 0j)
     pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
     pl.label(end1, "1", toward=end1 - a, radii=(1.0, 2.0, 3.5, 5.5))     # the lines' numbers at their ends,
@@ -670,28 +668,32 @@ def outside(graphical: float | None, exact: float, bound: float | None) -> bool:
 
 def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> None:
     """The kinematic scheme's upper half (GOST 2.770): the central axis, the sun 1, the planet (block
-    2–2'), the fixed ring 3 with its hatching, the carrier H; numbers beside the members."""
+    2–2'), the fixed ring 3 with its hatching, the carrier H as a crank; each wheel a line across its
+    radius with short bars at its pitch circle; numbers beside the members."""
     kind = tr.train.kind
     rad = tr.radii
     w = 3.0                                  # a wheel's half-width
     rec.segment((-48.0, 0.0), (38.0, 0.0), role="axis", layer=LAYER, step="central axis")
     xs = 0.0
     xb = 0.0 if kind == "A" else 14.0       # the second row (the ring's) for type B
-    # sun 1
-    rec.add("polygon", [(xs - w, 0.0), (xs + w, 0.0), (xs + w, yA), (xs - w, yA)], role="link", layer=LAYER, step="1")
-    rec.segment((-40.0, 1.5), (xs - w, 1.5), role="link", layer=LAYER)           # its shaft
-    # the planet (block)
+    # GOST 2.770: a wheel seen along the axial plane is a line across its radius with short bars
+    # square to it at its pitch circle (a planet: at both ends of its diameter)
+    def wheel(x: float, y0: float, y1: float, bars: tuple[float, ...], step: str) -> None:
+        rec.segment((x, y0), (x, y1), role="link", layer=LAYER, step=step)
+        for y in bars:
+            rec.segment((x - w, y), (x + w, y), role="link", layer=LAYER, step=f"{step} pitch")
+    # sun 1 on its shaft
+    wheel(xs, 1.5, yA, (yA,), "1")
+    rec.segment((-40.0, 1.5), (xs, 1.5), role="link", layer=LAYER)           # its shaft
+    # the planet (block 2–2′), both ends of its diameter on pitch circles
     r2 = rad["2"] / mu
-    rec.add("polygon", [(xs - w, yO2 - r2), (xs + w, yO2 - r2), (xs + w, yO2 + r2), (xs - w, yO2 + r2)],
-            role="link", layer=LAYER, step="2")
+    wheel(xs, yO2 - r2, yO2 + r2, (yO2 - r2, yO2 + r2), "2")
     if kind == "B":
         r2b = rad["2'"] / mu
-        rec.add("polygon", [(xb - w, yO2 - r2b), (xb + w, yO2 - r2b), (xb + w, yO2 + r2b), (xb - w, yO2 + r2b)],
-                role="link", layer=LAYER, step="2'")
+        wheel(xb, yO2 - r2b, yO2 + r2b, (yO2 - r2b, yO2 + r2b), "2'")
     rec.segment((xs - 8.0, yO2), (xb + 8.0, yO2), role="link", layer=LAYER, step="planet axis")
-    # ring 3 (internal) at xb with the fixed frame's hatching above
-    rec.add("polygon", [(xb - w, yC), (xb + w, yC), (xb + w, yC + 6.0), (xb - w, yC + 6.0)], role="link", layer=LAYER,
-            step="3")
+    # ring 3 (internal): from its pitch circle out to the frame, hatched (fixed)
+    wheel(xb, yC, yC + 6.0, (yC,), "3")
     rec.segment((xb - 9.0, yC + 6.0), (xb + 9.0, yC + 6.0), role="link", layer=LAYER)
     for k in range(6):
         x = xb - 9.0 + 3.0 * k

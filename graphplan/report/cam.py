@@ -11,7 +11,7 @@ from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import CamConstruction, errors_pct
 from graphplan.drawing.cam import scale_text
 from graphplan.util.markup import plain
-from graphplan.util.words import num
+from graphplan.util.words import fixed, num
 
 
 def _f(x) -> float | None:
@@ -139,7 +139,8 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     e=n(doc["base_radius_error_pct"], 3).replace("-", "−"),
                                     r=n(doc["base_radius_m"] * 1000)))
-    lines.append(w["angles"].format(r=n(doc["pressure_angle_max_deg"]["rise"]), t=n(doc["pressure_angle_max_deg"]["return"]),
+    ang = lambda x: fixed(x, lang, 2)                 # noqa: E731  both maxima to 0.01°, one style
+    lines.append(w["angles"].format(r=ang(doc["pressure_angle_max_deg"]["rise"]), t=ang(doc["pressure_angle_max_deg"]["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     c = doc["curvature_min_m"]
@@ -160,7 +161,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
-    return lines
+    return [x[:1].upper() + x[1:] for x in lines]       # each a sentence: a capital first letter
 
 
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:

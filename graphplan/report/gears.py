@@ -174,17 +174,33 @@ WORDS = {
 }
 
 
-def reading_mm(v_m: float | None, g: dict[str, Any], lang: str) -> str:
-    """A graphical length (m) in mm on the part to the ruler's resolution there, precision·μl (0.5 mm
-    at 5:1 → 0.1 mm): as many decimals as that resolution has; at precision 0 four significant figures."""
-    if v_m is None:
-        return "—"
+def table_decimals(g: dict[str, Any]) -> int:
+    """The decimals of Table 1's lengths in mm: one past the ruler's resolution on the part,
+    precision·μl (0.5 mm at 4:1 → 0.125 mm → two decimals), so that the percent error worked out
+    from the printed values is the lab's error and not the rounding's; four at precision 0."""
     res = g["precision_mm"] * g["mu_l_m_mm"] * 1000.0
-    if res <= 0:
-        return num(v_m * 1000.0, lang, 4).replace("-", "−")
-    dec = max(0, math.ceil(-math.log10(res) - 1e-9))
-    text = f"{v_m * 1000.0:.{dec}f}"
-    return (text.replace(".", ",") if lang == "uk" else text).replace("-", "−")
+    return 4 if res <= 0 else max(0, math.ceil(-math.log10(res) - 1e-9)) + 1
+
+
+def agreeing(exact: float, graphical: float | None, decimals: int, lang: str
+             ) -> tuple[str, str, float | None]:
+    """The exact and the graphical value printed to ``decimals`` places and the percent error δ
+    worked out from the two printed numbers, δ = 100·(graphical − exact)/exact, as the student works
+    it out: a reader who recomputes δ from the table gets the printed δ (the JSON keeps the unrounded
+    error). None where nothing was read or the printed exact value is 0."""
+    e = round(float(exact), decimals)
+    text = lambda v: (f"{v + 0.0:.{decimals}f}".replace(".", "," if lang == "uk" else ".")   # noqa: E731
+                      .replace("-", "−"))
+    if graphical is None:
+        return text(e), "", None
+    g = round(float(graphical), decimals)
+    return text(e), text(g), (100.0 * (g - e) / e if e else None)
+
+
+def sig_decimals(exact: float, digits: int = 5) -> int:
+    """The decimals that give ``exact`` ``digits`` significant figures (u1H 11.81 → 3, ω 100.5 → 2):
+    the ratio's and the velocities' rows of the train, printed so that δ reads from them."""
+    return max(0, digits - 1 - math.floor(math.log10(abs(exact)))) if exact else 0
 
 
 def _share(bound: float | None, exact: float, lang: str) -> str:
@@ -222,13 +238,14 @@ def pair_lines(d: dict, lang: str) -> list[str]:
     if g:
         lines.append(w["scale"].format(mu=n(g["mu_l_m_mm"]), md=n(g["module_mm"]), p=n(g["precision_mm"])))
     rows = [[w["head"][0], f"{w['exact']} 1", f"{w['graph']} 1", "δ, %", f"{w['exact']} 2", f"{w['graph']} 2", "δ, %"]]
+    dec = table_decimals(g) if g else 4
     for key in ("r", "rb", "rw", "ra", "rf", "s", "sa"):
         ex = d[f"{key}_m"]
         gr = g[f"{key}_m"] if g and f"{key}_m" in g else None
-        e = g["error_pct"].get(key) if g and key in g["error_pct"] else None
         row = [w["rows"][key].replace("_", "")]
         for k in (0, 1):
-            row += [mm(ex[k]), "" if gr is None else reading_mm(gr[k], g, lang), "" if e is None else n(e[k], 3)]
+            te, tg, e = agreeing(ex[k] * 1000, None if gr is None else gr[k] * 1000, dec, lang)
+            row += [te, tg, "" if e is None else n(e, 3)]
         rows.append(row)
     lines += [""] + _table(rows)
     return lines
@@ -239,10 +256,12 @@ def train_lines(d: dict, lang: str) -> list[str]:
     n = lambda x, k=4: "—" if x is None else num(x, lang, k).replace("-", "−")   # noqa: E731
     ok = lambda b: w["ok"] if b else w["fail"]                                      # noqa: E731
     r = d["ratio"]
+    ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
+    ug = ug or "—"
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
-             w["zt"].format(z=", ".join(map(str, d["z"])), u=n(r["exact"]), r=n(d["ratio_required"]),
-                            g=n(r["graphical"]), d=n(r["error_pct"], 3), b=n(r["bound"], 2),
+             w["zt"].format(z=", ".join(map(str, d["z"])), u=ue, r=n(d["ratio_required"]),
+                            g=ug, d=n(ud, 3), b=n(r["bound"], 2),
                             bp=_share(r["bound"], r["exact"], lang), out=w["out"] if r["outside_bound"] else "")]
     c = d["conditions"]
     lines.append(w["cond"].format(c=ok(c["coaxial"]), a=ok(c["assembly"]), n=ok(c["neighbourhood"]),
@@ -253,8 +272,9 @@ def train_lines(d: dict, lang: str) -> list[str]:
     rows = [[w["member"], f"ω {w['exact']}", f"ω {w['graph']}", "δ, %"]]
     for k in ("1", "2", "3", "H"):
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"
-        rows.append([name, n(d["omega_rad_s"][k]), n(g["omega_rad_s"][k]) if g else "",
-                     n(g["error_pct"][k], 3) if g else ""])
+        te, tg, e = agreeing(d["omega_rad_s"][k], g["omega_rad_s"][k] if g else None,
+                             sig_decimals(d["omega_rad_s"][k]), lang)
+        rows.append([name, te, tg, "" if e is None else n(e, 3)])
     lines += _table(rows)
     if d["candidates"]:
         lines += ["", w["cands"].format(n=d["candidates_passing"])]

@@ -6,7 +6,7 @@ a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
 from graphplan.drawing.cam import records, scale_text
-from graphplan.drawing.layout import GAP, Leaf, Placed, centred, extent, flow
+from graphplan.drawing.layout import GAP, Box, Leaf, Placed, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import closing_warning, construct
 from graphplan.graphic.diagrams import LAB_LIMIT
@@ -49,13 +49,14 @@ def _pct(v, lang: str) -> str:
 
 def positions_table(doc: dict, lang: str) -> Record:
     """Per division: φ, s and ds/dφ exact and graphical with δ, ϑ exact and measured, R exact and
-    measured (mm)."""
+    measured (mm); ds/dφ per radian of the cam's turn (мм/рад, rocking °/рад)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
     k = 1.0 if rocking else 1000.0                      # a translating follower's s in mm
     unit = "°" if rocking else ("мм" if lang == "uk" else "mm")
+    per = unit + "/" + ("рад" if lang == "uk" else "rad")     # the analogue: per radian of the cam's turn
     gr = "гр." if lang == "uk" else "gr."
-    head = [WORDS[lang]["n"], "φ, °", f"s, {unit}", f"s {gr}", "δ_s, %", f"ds/dφ, {unit}", f"ds/dφ {gr}", "δ, %",
+    head = [WORDS[lang]["n"], "φ, °", f"s, {unit}", f"s {gr}", "δ_s, %", f"ds/dφ, {per}", f"ds/dφ {gr}", "δ, %",
             "ϑ, °", f"ϑ {gr}", "R, " + ("мм" if lang == "uk" else "mm"), f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
@@ -69,7 +70,7 @@ def positions_table(doc: dict, lang: str) -> Record:
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
-    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 19.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
+    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 22.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
     return table(rows, widths, row_h=6.0, size=2.5, title=WORDS[lang]["table"])
 
 
@@ -143,6 +144,60 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     return leaves, tab, nts, doc
 
 
+def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[list[tuple[Leaf, Box]]] | None:
+    """The A1 sheet's composition (review 2, item 11: a row of drawings over a band with only the
+    table left half the sheet bare): the diagrams with the phase diagram beside them at the left over
+    the field's whole height; at the right, in a column over the title block, the profile and under
+    it Table 1 and the notes, by the title block — the notes, when the column has no room for them,
+    at the foot of the left column beside the title block. ``notes_at(width)``: the notes' leaf
+    wrapped to ``width`` mm. One sheet's leaves with their boxes, or None when they do not fit."""
+    rx0, ry0, rx1, ry1 = region
+    wr = max(prof.w, tab.w)
+    xr = rx1 - wr                       # the right column's left edge
+    xl = xr - GAP                       # the left column's right edge
+    if xl - rx0 < dia.w - 1e-9:
+        return None
+    floor = keep[3] if xl > keep[0] else ry0        # the left column clear of the title block
+    nr = notes_at(wr)
+    if prof.h + tab.h + nr.h + 2 * GAP <= ry1 - keep[3] + 1e-9:
+        nb = (xr, keep[3], xr + nr.w, keep[3] + nr.h)
+        low = keep[3] + nr.h + GAP
+        left_floor, nl = floor, nr
+    else:
+        nl = notes_at(xl - rx0)
+        nb = (rx0, floor, rx0 + nl.w, floor + nl.h)
+        low = keep[3]
+        left_floor = floor + nl.h + GAP
+    tb = (xr, low, xr + tab.w, low + tab.h)
+    if tb[3] + GAP + prof.h > ry1 + 1e-9 or ry1 - left_floor < dia.h - 1e-9:
+        return None
+    return [[(dia, (rx0, left_floor, xl, ry1)), (prof, (xr, tb[3] + GAP, rx1, ry1)), (tab, tb), (nl, nb)]]
+
+
+def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
+    """The notes' leaf wrapped to a width (columns), remembered by the width to 1 mm."""
+    memo = {} if memo is None else memo
+    lines = notes(doc, lang, cam)
+
+    def at(width: float) -> Leaf:
+        key = (lang, round(width))
+        if key not in memo:
+            memo[key] = Leaf("notes", record=note_block(lines, float(round(width))))
+        return memo[key]
+    return at
+
+
+def _laid(f: Form, leaves: list[Leaf], tab: Leaf, nts: Leaf, notes_at=None):
+    """The leaves laid on sheets of ``f``: on A1 in columns when they fit so, else (and on the
+    smaller formats) flowed in rows — the drawings in a row, the table and the notes under them."""
+    region, keep = field_of(f), keep_out(f)
+    if f.name == "A1" and notes_at is not None and [leaf.name for leaf in leaves] == ["diagrams", "profile"]:
+        laid = columns(leaves[0], leaves[1], tab, notes_at, region, keep)
+        if laid is not None:
+            return laid
+    return flow([leaves, [tab, nts]], region, keep)
+
+
 def _one_sheet(laid) -> bool:
     """The drawings on one sheet and in one row (the reading order of LAYOUT.md's cam sheet)."""
     if laid is None or len(laid) != 1:
@@ -159,11 +214,12 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     drawing, then the diagrams' ordinates grown while they fit, then the d²s/dφ² and ds/dφ
     diagrams alone (μ_s kept) into the height left. When nothing fits one sheet: a set of sheets,
     each drawing on its own (set_sizes)."""
-    region, keep = field_of(f), keep_out(f)
+    region = field_of(f)
 
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     memo: dict = {}
     fixed_: dict = {}                      # the table's and the notes' sizes: the same at every size
+    wrapped: dict = {}                     # the notes wrapped to a column's width (A1), by language
 
     def drawing(name, draw, key, g):
         if (name, key) not in memo:        # each drawing depends on its own scales only
@@ -180,21 +236,22 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             memo[(name, key, lang)] = Leaf(name, record=rec)
         return memo[(name, key, lang)]
 
-    def fits(size: float, prof: float, height: float, accel: float | None = None) -> bool:
+    def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
         for lang in ("uk", "en"):
-            if lang not in fixed_:
-                _, tab, nts, _ = _leaves(sol, g, sol.cam, lang, {})
-                fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
             leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
-            if not _one_sheet(flow([leaves, fixed_[lang]], region, keep)):
+            if not _one_sheet(_laid(f, leaves, *fixed_[lang], wrapped[lang])):
                 return False
+        if largest and f.name == "A1":     # the columns give the phase diagram room to outgrow the profile: it may not
+            return _profile_largest(drawing("profile", profile_drawing, (g.mu_l,), g).bounds(),
+                                    drawing("phase", phase_diagram, (g.mu_s, g.mu_l), g).bounds())
         return True
     g0 = construct(sol, n, precision, measure=False)
     for lang in ("uk", "en"):              # the table and the notes alone higher than the field: a set
-        _, tab, nts, _ = _leaves(sol, g0, sol.cam, lang, {})
+        _, tab, nts, doc = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
+        wrapped[lang] = _notes_at(doc, lang, sol.cam)
         if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
             return set_sizes(sol, f, n, precision)
     if not fits(1.0, 1.0, 1.0):
@@ -202,17 +259,53 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     k = _largest(lambda x: fits(x, x, x), list(SIZES)) or 1.0
     rest = [x for x in SIZES if x > k]
     kp = (_largest(lambda x: fits(k, x, k), rest) if rest else None) or k      # the main drawing first
-    kh = (_largest(lambda x: fits(k, kp, x), rest) if rest else None) or k
+    # the ordinates grown (μ_s: the profile kept the largest drawing, the columns would let the phase
+    # diagram outgrow it), then d²s/dφ² alone (μ_s kept, the phase diagram as it is)
+    kh = (_largest(lambda x: fits(k, kp, x, None, True), rest) if rest else None) or k
     up = [x for x in SIZES if x > kh]
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
+    if f.name == "A1":       # the columns leave the diagrams the field's height: a step less along φ
+        k, kh, ka = _taller(k, kp, kh, ka, fits, lambda *sz: _area(leaf, sol, n, precision, *sz))
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
     for lang in ("uk", "en"):
-        leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
-        if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
+        if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
             return set_sizes(sol, f, n, precision)
     return k, kp, kh, ka
+
+
+def _profile_largest(p: Box, q: Box) -> bool:
+    """Whether the profile (box ``p``) stays the sheet's largest drawing beside the phase diagram
+    (``q``): half as large again in area and longer in its longest side (LAYOUT.md's cam sheet)."""
+    pw, ph, qw, qh = p[2] - p[0], p[3] - p[1], q[2] - q[0], q[3] - q[1]
+    return pw * ph > 1.5 * qw * qh and max(pw, ph) > max(qw, qh)
+
+
+def _taller(k, kp, kh, ka, fits, area) -> tuple[float, float, float]:
+    """The diagrams' abscissa one or two standard steps shorter (μ_φ coarser) when their ordinates
+    then grow enough (μ_s, μ_{d²s/dφ²} finer) that the diagrams with the phase diagram cover more of
+    the sheet: in the A1 columns they have the field's whole height but not its width (the profile's
+    column beside them), and the ordinates alone widen them only by their poles."""
+    best, best_area = (k, kh, ka), area(k, kp, kh, ka)
+    lower = [x for x in SIZES if x < k][-2:]
+    for k2 in reversed(lower):
+        up = [x for x in SIZES if x > k2]
+        kh2 = _largest(lambda x: fits(k2, kp, x, None, True), up) or k2
+        more = [x for x in SIZES if x > kh2]
+        ka2 = (_largest(lambda x: fits(k2, kp, kh2, x), more) if more else None) or kh2
+        a2 = area(k2, kp, kh2, ka2)
+        if fits(k2, kp, kh2, ka2) and a2 > 1.15 * best_area:     # worth a coarser μ_φ: 15 % more drawing
+            best, best_area = (k2, kh2, ka2), a2
+    return best
+
+
+def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
+    """The area (mm²) of the diagrams with the phase diagram beside them at these sizes."""
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    d = leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, "en")
+    return d.w * d.h
 
 
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
@@ -314,10 +407,9 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
 def _one_sheet_still(sol, f: Form, g) -> bool:
     """Whether the drawings at ``g``'s scales with the table of ``g``'s divisions still share one sheet
     of ``f`` in both languages (a redrawing's longer table may not leave them room)."""
-    region, keep = field_of(f), keep_out(f)
     for lang in ("uk", "en"):
-        leaves, tab, nts, _ = _leaves(sol, g, sol.cam, lang)
-        if not _one_sheet(flow([leaves, [tab, nts]], region, keep)):
+        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
+        if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
             return False
     return True
 
@@ -330,8 +422,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     sol = solve(cam)
     g = construct_on(sol, f, None, args.precision)
     region, keep = field_of(f), keep_out(f)
-    leaves, tab, nts, _ = _leaves(sol, g, cam, lang)
-    laid = flow([leaves, [tab, nts]], region, keep)
+    leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
+    laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, _ = _leaves(sol, g, cam, lang, split=True)
         laid = flow([leaves, [tab, nts]], region, keep)

@@ -12,14 +12,14 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import construct_mesh, construct_train
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import gears_json, reading_mm
+from graphplan.report.gears import agreeing, gears_json, sig_decimals, table_decimals
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
-from graphplan.util.words import num
+from graphplan.util.words import fixed, num
 
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів",
@@ -49,6 +49,8 @@ WORDS = {
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
+           "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
+                     "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
@@ -78,6 +80,8 @@ WORDS = {
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
+           "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
+                     "{D0} — the rule takes the smaller train, ±4 % being allowed",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
            "past": "! — a reading outside its bound from the drafting precision"},
 }
@@ -99,19 +103,21 @@ def geometry_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     p = doc["pair"]
     g = p.get("graphical", {})
-    mm = lambda v: _n(None if v is None else v * 1000, lang)            # noqa: E731
     rows = [[w["qty"], f"{w['ex']} 1", f"{w['gr']} 1", "δ, %", f"{w['ex']} 2", f"{w['gr']} 2", "δ, %"]]
     names = {"r": "r", "rb": "r_b", "rw": "r_w", "ra": "r_a", "rf": "r_f", "s": "s", "sa": "s_a"}
+    # the lengths to one decimal past the ruler's resolution on the part, δ from the printed values
+    # (report.gears.agreeing): the column and its δ agree for a reader who recomputes it
+    dec = table_decimals(g) if g else 4
     for key, sym in names.items():
         row = [f"{sym}, {w['mm']}"]
         for k in (0, 1):
             gr = g.get(f"{key}_m")
-            e = g.get("error_pct", {}).get(key)
-            row += [mm(p[f"{key}_m"][k]), reading_mm(gr[k], g, lang) if gr else "", _pct(e[k], lang) if e else ""]
+            te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
+            row += [te, tg, _pct(e, lang) if gr else ""]
         rows.append(row)
     c = p["contact_ratio"]
-    rows.append(["ε_α", _n(c["exact"], lang), _n(c["graphical"], lang),
-                 _pct(c["error_pct"], lang) + ("!" if c["outside_bound"] else ""), "", "", ""])
+    te, tg, e = agreeing(c["exact"], c["graphical"], 3, lang)
+    rows.append(["ε_α", te, tg, (_pct(e, lang) + ("!" if c["outside_bound"] else "")) if tg else "", "", "", ""])
     for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
                    (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
                    (f"p, {w['mm']}", p["pitch_m"] * 1000), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000)):
@@ -148,17 +154,22 @@ def train_table(doc: dict, lang: str) -> Record:
     names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
     r = t["ratio"]
     g = t.get("graphical", {})
+    # the values to five significant figures, δ from the printed values (report.gears.agreeing)
+    ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
-            [w["u"].split(":")[0], _n(r["exact"], lang), _n(r["graphical"], lang),
-             _pct(r["error_pct"], lang) + ("!" if r["outside_bound"] else "")]]
+            [w["u"].split(":")[0], ue, ug or "—",
+             _pct(ud, lang) + ("!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
+        req = t["ratio_required"]
+        tr_, te_, d_ = agreeing(req, r["exact"], sig_decimals(r["exact"]), lang)
         rows.append([w["u"].split(":")[0] + (" потрібне" if lang == "uk" else " wanted"),
-                     _n(t["ratio_required"], lang), "", _pct(r.get("required_error_pct"), lang)])
+                     _n(req, lang), "", _pct(d_, lang)])
     for key in ("1", "2", "H"):
         name = key if not (key == "2" and t["type"] == "B") else "2"
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), _n(t["omega_rad_s"][key], lang),
-                     _n(g.get("omega_rad_s", {}).get(key), lang), _pct(g.get("error_pct", {}).get(key), lang)])
+        te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
+                             sig_decimals(t["omega_rad_s"][key]), lang)
+        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), te, tg or "—", _pct(e, lang)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
@@ -187,6 +198,13 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
         if t["candidates"]:
             out.append(w["synth"].format(n=t["candidates_passing"]))
+            pair = nearer_candidate(t)
+            if pair:
+                near, chosen = pair
+                out.append(w["nearer"].format(z=", ".join(map(str, near["z"])), r=_n(t["ratio_required"], lang),
+                                              u=_n(near["ratio"], lang),
+                                              d=fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−"),
+                                              D=near["diameter_modules"], D0=chosen["diameter_modules"]))
     key = "warnings_uk" if lang == "uk" else "warnings"
     for part in ("pair", "planetary"):
         if part in doc:
@@ -195,6 +213,18 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
     if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
         out.append(w["past"])
     return [escape(x) if "_" not in x else x for x in out]
+
+
+def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
+    """Among the trains weighed (the smallest by D/m), the one whose u1H is nearest the wanted, when
+    it is not the one chosen (the rule takes the smallest diameter within ±4 %): what the notes say
+    lost and why, with the chosen. None when the chosen train is also the nearest."""
+    cands = t.get("candidates") or []
+    if not cands or t.get("ratio_required") is None:
+        return None
+    near = min(cands, key=lambda c: (abs(c["error_pct"]), c["diameter_modules"]))
+    chosen = next((c for c in cands if list(c["z"]) == list(t["z"])), cands[0])
+    return None if near["z"] == chosen["z"] or abs(near["error_pct"]) >= abs(chosen["error_pct"]) else (near, chosen)
 
 
 def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
