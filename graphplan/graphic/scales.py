@@ -105,6 +105,32 @@ def chosen_length(value: float, length_mm: float) -> float:
     return series_value(math.floor(raw / 10.0 ** k * (1 + 1e-12)), k)
 
 
+def next_round(mu: float) -> float:
+    """The next finer round coefficient (a larger drawing): the series' 1, 2, 2.5, 4, 5 and GOST
+    2.302's 1.5, 7.5 × 10^k — 0.04 → 0.025, 0.02 → 0.015 → 0.01."""
+    k0 = math.floor(math.log10(mu))
+    return max(series_value(m, k) for k in range(k0 - 1, k0 + 2) for m in SERIES + GOST_BETWEEN
+               if series_value(m, k) < mu * (1 - 1e-9))
+
+
+def larger_choices(value: float, mu: float, longest_mm: float, step_mm: float = 5.0) -> list[tuple[float, bool]]:
+    """The scale coefficients that draw ``value`` larger than ``mu`` does, up to ``longest_mm``, as
+    the plans choose theirs (sheets/kinlayout.legible_where_room): the round ones — the series'
+    1, 2, 2.5, 4, 5 and GOST 2.302's 1.5, 7.5 × 10^k — and the lab's own, the drawn length chosen
+    (multiples of ``step_mm``) with μ = value / length at three figures (``chosen_length``).
+    (μ, round?) pairs, the smallest drawing first."""
+    if not (value > 0 and mu > 0 and math.isfinite(value / mu)):
+        return []
+    k0 = math.floor(math.log10(value / longest_mm)) if longest_mm > 0 else 0
+    rounds = {series_value(m, k) for k in range(k0 - 1, k0 + 3) for m in SERIES + GOST_BETWEEN}
+    drawn = value / mu
+    lengths = [step_mm * j for j in range(int(drawn // step_mm) + 1, int(longest_mm // step_mm) + 1)]
+    chosen = {chosen_length(value, n) for n in lengths}
+    out = {(m, True) for m in rounds} | {(m, False) for m in chosen - rounds}
+    return sorted(((m, r) for m, r in out if value / m <= longest_mm + 1e-9 and m < mu * (1 - 1e-9)),
+                  key=lambda c: (-c[0], not c[1]))
+
+
 def on_series(mu: float) -> bool:
     """Whether μ is a value of the standard series 1, 2, 2.5, 4, 5 × 10^k."""
     return mu > 0 and abs(at_least(mu) - mu) <= 1e-12 * mu

@@ -115,6 +115,8 @@ FAMILIES = ("scheme", "groups", "forces", "acceleration", "lever", "charts", "ho
 TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration": 120.0, "lever": 100.0,
            "charts": 1.0, "hodographs": 1.0}
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
+LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
+ROUND_SHARE = 0.9     # a round μv taken where it draws the lever at least this share of the largest that fits
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -301,6 +303,43 @@ class Natural:
     notes: list[list[str]]
 
 
+@dataclass
+class LeverFamily(Family):
+    """The lever's family, grown in finer steps than the series' (up to twice as large — seldom
+    room for it in the lever's row): the next of the velocity plans' choices (graphic.scales.
+    larger_choices: the round values, GOST's 1.5, 7.5 × 10^k between the series' steps, then p_v a
+    chosen in 5 mm steps), so that the lever takes its share of a row in turn with the other
+    drawings; at most ``LEVER_MM`` across."""
+    figure: float = 0.0      # the drawing's figure across at μ = 1 (its lines without the forces), mm
+    arrows: float = 0.0      # what the forces' arrows (of one length at any μ) add across, mm
+
+    def lines_across(self, mu: float) -> float:
+        """The drawing's lines across at μ, mm."""
+        return self.figure / mu + self.arrows
+
+    def choices(self, mu: float) -> list[tuple[float, bool]]:
+        """(μ, round?) that draw the lever larger than μ and at most ``LEVER_MM`` across, the
+        smallest drawing first."""
+        from graphplan.graphic.scales import larger_choices
+        if self.figure <= 0:
+            return []
+        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * LEVER_MM / self.figure)
+                if self.lines_across(m) <= LEVER_MM + 1e-9]
+
+    def finer(self, mu: float) -> float | None:
+        nxt = self.choices(mu)
+        return nxt[0][0] if nxt else None
+
+
+def lever_across(lv) -> float:
+    """The lever's figure across (the larger of its width and height), mm: the velocity plan
+    turned, the pole with the points' images, without the forces (their arrows keep their length
+    at any μv)."""
+    zs = [1j * z for z in lv.images.values()] + [0j]
+    xs, ys = [z.real for z in zs], [z.imag for z in zs]
+    return max(max(xs) - min(xs), max(ys) - min(ys))
+
+
 def measure(dr: ForceDrafter) -> Natural:
     from graphplan.util.words import LANGS
     fp = dr.fp()
@@ -325,6 +364,10 @@ def measure(dr: ForceDrafter) -> Natural:
                                        principal=principal[fam], target=TARGETS[fam],
                                        factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
                                        lettering=LETTERING)
+    figure = lever_across(fp.lever)
+    lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
+    families["lever"] = LeverFamily(**vars(families["lever"]), figure=figure * fp.lever.mu_v,
+                                   arrows=max(0.0, max(lines[2] - lines[0], lines[3] - lines[1]) - figure))
     tables = {}
     for factor in (TABLES, 1.0):
         per = [[(name, *_wh(rec)) for name, rec in _tables(dr, mu0, lang, factor)] for lang in LANGS]
@@ -497,7 +540,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
         if _checked(dr, nat, p):
             break
-    return _grown_groups(dr, nat, f, p), nat, dr
+    return _grown_lever(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
 
 
 GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
@@ -555,6 +598,77 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             mu[GROUP + label] = best[0]
             leaves = best[1]
     return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
+
+
+def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
+    """The drawings' cells at the plan's scales, a group drawn at its own μl (``_grown_groups``)
+    in its own cell."""
+    leaves = _leaves(nat, mu)
+    own = dict(group_scales(mu))
+    if own:
+        fam = nat.families["groups"]
+        fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(own[gp.label], i)))
+                            if gp.label in own else leaf
+                            for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
+    return leaves
+
+
+def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Plan) -> bool:
+    """Whether the tables and the notes at the scales ``mu`` (the lever's μv is printed in the
+    notes, its P_b and M_b in the results) are no larger than the composition allowed for; where
+    they are, ``nat`` takes their sizes."""
+    from graphplan.util.words import LANGS
+    ok = not grown(nat.tables[p.tables], [[(n, *_wh(r)) for n, r in _tables(dr, mu, lang, p.tables)]
+                                          for lang in LANGS])
+    drawn = [_notes_lines(dr, mu, lang) for lang in LANGS]
+    if notes_height(drawn, TITLE) > notes_height(nat.notes, TITLE) + 1e-6:
+        nat.notes += drawn
+        ok = False
+    return ok
+
+
+def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """The Zhukovsky lever as large as its cell allows (LAYOUT.md: the largest scale that fits its
+    zone), every other drawing as planned — the lever's μv grown in the plans' steps
+    (``LeverFamily``) while the composition fits — then a round μv (the series, GOST's 1.5, 7.5 ×
+    10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
+    5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
+    off the lever to the ruler's 0.5 mm, so a larger lever reads P_зр closer to the exact."""
+    fam = nat.families["lever"]
+    mu = dict(p.mu)
+    if not isinstance(fam, LeverFamily) or fam.figure <= 0 or not fam.sizes:
+        return p
+    leaves = _placed_leaves(dr, nat, mu)
+    name = leaves["lever"][0].name
+
+    def fits(m: float) -> bool:
+        w, h = fam.size(m, 0)
+        return _fits(nat, f, p, {**leaves, "lever": [Leaf(name, w + GROW_MARGIN, h + GROW_MARGIN)]})
+
+    for _ in range(3):
+        fitting = [(mu["lever"], on_round(mu["lever"]))]
+        for m, rnd in fam.choices(mu["lever"]):       # the smallest drawing first: stop at the first too large
+            if not fits(m):
+                break
+            fitting.append((m, rnd))
+        largest = fitting[-1][0]
+        rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
+        m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
+        if m == p.mu["lever"]:
+            break
+        trial = {**mu, "lever": m}
+        if _lettering_kept(dr, nat, trial, p) and fits(m):
+            mu = trial
+            break
+    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
+
+
+def on_round(mu: float) -> bool:
+    """Whether μ is a round value: the series' or GOST 2.302's 1.5, 7.5 × 10^k."""
+    from graphplan.graphic.scales import GOST_BETWEEN, on_series
+    k = math.floor(math.log10(mu))
+    return on_series(mu) or any(abs(mu - float(f"{g:g}e{k}")) <= 1e-12 * mu for g in GOST_BETWEEN)
 
 
 def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
