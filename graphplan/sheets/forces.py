@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -116,7 +116,6 @@ TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration
            "charts": 1.0, "hodographs": 1.0}
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
 LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
-ROUND_SHARE = 0.9     # a round μv taken where it draws the lever at least this share of the largest that fits
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -331,6 +330,25 @@ class LeverFamily(Family):
         return nxt[0][0] if nxt else None
 
 
+@dataclass
+class Floored(Family):
+    """A family of size factors never started below ``floor`` (the hodographs: a teacher reads one
+    whose larger extent is ~60 mm on A1; the sheet's other drawings give way first)."""
+    floor: float = 0.0
+    cap: float = math.inf
+
+    def start(self, k: float) -> float:
+        return super().start(max(k, self.floor))
+
+    def finer(self, mu: float) -> float | None:
+        m = super().finer(mu)
+        return m if m is not None and self.rel(m) <= self.cap + 1e-9 else None
+
+
+HODOGRAPHS_FLOOR = 1.0    # the hodographs' least size factor on one sheet (drawing.charts.HODOGRAPH_MM)
+HODOGRAPHS_CAP = 1.0      # … and the largest they grow to: the room beyond goes to the lever and the charts
+
+
 def lever_across(lv) -> float:
     """The lever's figure across (the larger of its width and height), mm: the velocity plan
     turned, the pole with the points' images, without the forces (their arrows keep their length
@@ -366,6 +384,7 @@ def measure(dr: ForceDrafter) -> Natural:
                                        lettering=LETTERING)
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
+    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR, cap=HODOGRAPHS_CAP)
     families["lever"] = LeverFamily(**vars(families["lever"]), figure=figure * fp.lever.mu_v,
                                    arrows=max(0.0, max(lines[2] - lines[0], lines[3] - lines[1]) - figure))
     tables = {}
@@ -399,25 +418,37 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
           ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs"))
 
 
-def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf):
+HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
+
+
+def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
+    """The groups with their force plans: a row per group, or (``… across``) side by side."""
+    if shape.endswith(ACROSS):
+        return Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    return Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+
+
+def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
     the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
     — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
-    slotter's at 1:5 instead of 1:10)."""
+    slotter's at 1:5 instead of 1:10). The hodographs' grid ends row ``hrow`` (1, 2 or 3): the
+    charts' row, or beside the groups or the lever where those leave the room (the slotter's five
+    at 60 mm beside its narrow groups)."""
     S = leaves["scheme"][0]
-    if shape.endswith(ACROSS):
-        groups = Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
-    else:
-        groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    groups = _groups_node(shape, leaves) if groups is None else groups     # (a leaf of its size: a trial)
     shape = shape.removesuffix(ACROSS)
     A, L = leaves["acceleration"][0], leaves["lever"][0]
     charts = leaves["charts"]
-    H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+    if H is None:
+        H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+    at = {k: H if k == hrow else [] for k in (1, 2, 3)}
     if shape == "column":
-        body = Stack([Row([S, groups]), Row([A, L] + charts[:1]), Row(charts[1:] + H)])
-        return Row([body, C], flush=True)
-    return Stack([Row([S, groups, A]), Row([L] + charts[:2]), Row(charts[2:] + H + [C], flush=True)], flush=True)
+        rows = [Row([S, groups] + at[1]), Row([A, L] + charts[:1] + at[2]), Row(charts[1:] + at[3])]
+        return Row([Stack([r for r in rows if r.children]), C], flush=True)
+    rows = [Row([S, groups, A] + at[1]), Row([L] + charts[:2] + at[2]), Row(charts[2:] + at[3] + [C], flush=True)]
+    return Stack(rows, flush=True)
 
 
 @dataclass
@@ -429,13 +460,16 @@ class Plan:
     parts: int = 1
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
+    hrow: int = 3                    # the row the hodographs end (``_tree``)
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
     return {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
 
 
-def _one_sheet(nat: Natural, f: Form) -> Plan | None:
+def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
+    """The best one-sheet composition (its score: the smallest of the main drawings' sizes against
+    their targets first), or None where none fits."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     nh = len(nat.families["hodographs"].sizes)
@@ -444,31 +478,39 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [_column(f, tabs, parts, lambda w: notes_height(nat.notes, w))[0] for parts in (1, 2, 3)]
 
-        def arranged(mu, shape):
+        def arranged(mu, shape, first=False):
+            """(fill, hodographs' columns, the column's parts, the hodographs' row) of the best
+            arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
+            groups = Leaf("groups", *extent(_groups_node(shape, leaves)))      # sizes only: one extent each
+            grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc)))] if nh else []
+                     for hc in range(1, max(nh, 1) + 1)}
             found = None
-            for hc in range(1, max(nh, 1) + 1):
-                for parts, C in enumerate(cols, 1):
-                    tw, th = extent(_tree(shape, leaves, hc, C))
-                    if tw <= W + 1e-9 and th <= H + 1e-9:
-                        fill = min(W / tw, H / th)
-                        if found is None or fill > found[0] + 1e-9:
-                            found = (fill, hc, parts)
+            for hrow in HROWS if nh else HROWS[:1]:
+                for hc in range(1, max(nh, 1) + 1):
+                    for parts, C in enumerate(cols, 1):
+                        tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc]))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, hc, parts, hrow)
+                            if first:
+                                return found
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
-            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None, order)
+            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s, True) is not None, order)
             if mu is None:
                 continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
             score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
                      -SHAPES.index(shape))
-            _, hc, parts = arranged(mu, shape)
+            _, hc, parts, hrow = arranged(mu, shape)
             counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
             if best is None or cand[0] > best[0]:
                 best = cand
-    return best[1] if best else None
+    return best
 
 
 SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
@@ -533,11 +575,24 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
     dr = ForceDrafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
     nat = measure(dr)
+    hod = nat.families["hodographs"]
     for _ in range(4):
-        one = _one_sheet(nat, f)
+        hod.floor = 0.0
+        free = _one_sheet(nat, f)
+        floored = None
+        if free is None or hod.rel(free[1].mu["hodographs"]) < HODOGRAPHS_FLOOR - 1e-9:
+            hod.floor = HODOGRAPHS_FLOOR
+            floored = _one_sheet(nat, f)
+        # the hodographs at their legible size where that costs the main drawings no step of size
+        one = floored if floored is not None and (free is None or floored[0][0] >= free[0][0] - 1e-9) else free
+        hod.floor = HODOGRAPHS_FLOOR if one is floored and one is not None else 0.0
+        one = one[1] if one is not None else None
         fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
                                        for n in ("scheme", "groups", "forces"))
-        p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
+        if one is None or not (f.name in ONE_SHEET or fine):
+            hod.floor = HODOGRAPHS_FLOOR                 # a set: every drawing at least at its size
+            one = _set(nat, f)
+        p = one
         if _checked(dr, nat, p):
             break
     return _grown_lever(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
@@ -559,7 +614,7 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
     C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
-    tw, th = extent(_tree(p.shape, leaves, p.hcols, C))
+    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow))
     return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
 
 
@@ -597,7 +652,7 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if best is not None:
             mu[GROUP + label] = best[0]
             leaves = best[1]
-    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
+    return replace(p, mu=mu)
 
 
 def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -635,6 +690,7 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
     5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
     off the lever to the ruler's 0.5 mm, so a larger lever reads P_зр closer to the exact."""
+    from graphplan.graphic.scales import ROUND_SHARE, on_round
     fam = nat.families["lever"]
     mu = dict(p.mu)
     if not isinstance(fam, LeverFamily) or fam.figure <= 0 or not fam.sizes:
@@ -661,14 +717,7 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if _lettering_kept(dr, nat, trial, p) and fits(m):
             mu = trial
             break
-    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
-
-
-def on_round(mu: float) -> bool:
-    """Whether μ is a round value: the series' or GOST 2.302's 1.5, 7.5 × 10^k."""
-    from graphplan.graphic.scales import GOST_BETWEEN, on_series
-    k = math.floor(math.log10(mu))
-    return on_series(mu) or any(abs(mu - float(f"{g:g}e{k}")) <= 1e-12 * mu for g in GOST_BETWEEN)
+    return replace(p, mu=mu)
 
 
 def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
@@ -711,7 +760,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C), region):
+        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
