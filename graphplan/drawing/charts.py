@@ -37,7 +37,8 @@ class Turn:
 
     def position_index(self) -> list[tuple[int, int]]:
         """(sample index, position number) of the scene's positions on the sample grid."""
-        step = SAMPLES // self.count if SAMPLES % self.count == 0 else None
+        n = len(self.turn_deg)
+        step = n // self.count if n % self.count == 0 else None
         if step is None:
             return []
         return [(k * step, k) for k in range(self.count)]

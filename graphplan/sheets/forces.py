@@ -115,6 +115,7 @@ FAMILIES = ("scheme", "groups", "forces", "acceleration", "lever", "charts", "ho
 TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration": 120.0, "lever": 100.0,
            "charts": 1.0, "hodographs": 1.0}
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
+LEVER_STEP = 1.25     # the lever grown in the composition's rounds by at least this factor a step
 LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
@@ -326,8 +327,20 @@ class LeverFamily(Family):
                 if self.lines_across(m) <= LEVER_MM + 1e-9]
 
     def finer(self, mu: float) -> float | None:
-        nxt = self.choices(mu)
-        return nxt[0][0] if nxt else None
+        steps = self.steps(mu)
+        return steps[0] if steps else None
+
+    def steps(self, mu: float) -> list[float]:
+        """The next sizes to try, largest first: a step as large as the other families' (the first
+        choice that draws the lever ``LEVER_STEP`` times as large, else the largest there is), then
+        one about half as large, then the next choice (p_v a 5 mm longer) — so that the lever takes
+        what room its row has left when a whole step no longer fits (``_levels``)."""
+        nxt = [m for m, _ in self.choices(mu)]
+        if not nxt:
+            return []
+        big = next((m for m in nxt if mu / m >= LEVER_STEP - 1e-9), nxt[-1])
+        mid = next((m for m in nxt if mu / m >= (1 + LEVER_STEP) / 2 - 1e-9), nxt[-1])
+        return list(dict.fromkeys(m for m in (big, mid, nxt[0]) if m >= big))
 
 
 @dataclass
@@ -451,6 +464,32 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     return Stack(rows, flush=True)
 
 
+def _levels(families: dict[str, Family], fits, order, largest=None) -> dict[str, float] | None:
+    """``compose.choose_levels`` where a family may offer smaller steps when its whole one does not
+    fit (``LeverFamily.steps``): the largest common size factor that fits, then the families in
+    ``order`` each grown by the first of its steps that still fits, round after round."""
+    from graphplan.sheets.compose import FACTORS
+    mu = next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
+               if fits(trial)), None)
+    if mu is None:
+        return None
+    growing = [name for name in order if name in families]
+    while growing:
+        for name in list(growing):
+            fam = families[name]
+            steps = fam.steps(mu[name]) if isinstance(fam, LeverFamily) else [fam.finer(mu[name])]
+            for bigger in steps:
+                if bigger is None or (largest is not None and not largest(name, bigger)):
+                    continue
+                trial = {**mu, name: bigger}
+                if fits(trial):
+                    mu = trial
+                    break
+            else:
+                growing.remove(name)
+    return mu
+
+
 @dataclass
 class Plan:
     mu: dict[str, float]
@@ -499,7 +538,7 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
-            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s, True) is not None, order)
+            mu = _levels(nat.families, lambda m, s=shape: arranged(m, s, True) is not None, order)
             if mu is None:
                 continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
@@ -540,7 +579,7 @@ def _set(nat: Natural, f: Form) -> Plan:
         if mu is None:
             continue
         count = pages(mu)
-        grown = choose_levels(nat.families, lambda m: pages(m) == count, FAMILIES,
+        grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
                               lambda name, m: nat.families[name].rel(m) <= 1.25 + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0]:
@@ -583,8 +622,8 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         if free is None or hod.rel(free[1].mu["hodographs"]) < HODOGRAPHS_FLOOR - 1e-9:
             hod.floor = HODOGRAPHS_FLOOR
             floored = _one_sheet(nat, f)
-        # the hodographs at their legible size where that costs the main drawings no step of size
-        one = floored if floored is not None and (free is None or floored[0][0] >= free[0][0] - 1e-9) else free
+        # the hodographs at their legible size where that costs no main drawing a step it needs
+        one = floored if floored is not None and (free is None or _costs_nothing(nat, floored[1], free[1])) else free
         hod.floor = HODOGRAPHS_FLOOR if one is floored and one is not None else 0.0
         one = one[1] if one is not None else None
         fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
@@ -596,6 +635,16 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         if _checked(dr, nat, p):
             break
     return _grown_lever(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
+
+
+MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
+
+
+def _costs_nothing(nat: Natural, floored: Plan, free: Plan) -> bool:
+    """Whether the hodographs drawn at their legible size (``floored``) leave every main drawing as
+    large as without (``free``), or at least at its target size."""
+    return all(nat.families[n].rel(floored.mu[n]) >= min(nat.families[n].rel(free.mu[n]), 1.0) * (1 - 1e-9)
+               for n in MAIN)
 
 
 GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
