@@ -20,7 +20,7 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
                                       flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
-from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser, compose,
+from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, coarser, compose,
                                       drawing_scale, field_of, grown, keep_out, measured_twice, note_block, notes_height,
                                       options_of, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
