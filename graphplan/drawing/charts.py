@@ -37,7 +37,8 @@ class Turn:
 
     def position_index(self) -> list[tuple[int, int]]:
         """(sample index, position number) of the scene's positions on the sample grid."""
-        step = SAMPLES // self.count if SAMPLES % self.count == 0 else None
+        n = len(self.turn_deg)
+        step = n // self.count if n % self.count == 0 else None
         if step is None:
             return []
         return [(k * step, k) for k in range(self.count)]
@@ -228,14 +229,15 @@ def reaction_record(t: Turn, key: str, width: float = 180.0, height: float = 60.
     return rec
 
 
-CLUSTER_MM = 4.0   # consecutive positions this close (each to the last, all within twice it of the
-                   # run's first) share one number, "6–10"
+CLUSTER_MM = 2.5   # consecutive positions this close (each to the last, all within twice it of the run's
+                   # first) share one number, "6–10": points nearer than the lettering's height (2.5 mm)
+                   # leave no room for a number each; points farther apart are numbered each
 
 
 def _clusters(points: list[tuple[int, complex]]) -> list[tuple[int, int, complex]]:
     """Consecutive positions drawn within ``CLUSTER_MM`` of the run's first point, as (first,
-    last, the run's middle point): one number "6–10" for a run the idle stroke bunches, not five
-    numbers crowding one spot."""
+    last, the run's middle point): one number "6–10" for a run the idle stroke bunches into one
+    spot, not five numbers crowding it."""
     runs: list[list[tuple[int, complex]]] = []
     for pos, w in points:
         if (runs and pos == runs[-1][-1][0] + 1 and abs(w - runs[-1][-1][1]) <= CLUSTER_MM
@@ -246,18 +248,31 @@ def _clusters(points: list[tuple[int, complex]]) -> list[tuple[int, int, complex
     return [(r[0][0], r[-1][0], r[len(r) // 2][1]) for r in runs]
 
 
-def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") -> Record:
+HODOGRAPH_MM = 60.0    # a hodograph's larger extent (its curve with the origin) at size factor 1: with its
+                       # axes 70 mm, what a teacher reads on A1
+
+
+def hodograph_scale(span: float, size: float) -> float:
+    """μR (N/mm) that draws a hodograph's larger extent ``span`` (N) nearly ``size`` mm and no more:
+    a round value where it draws ≥ 0.9 of it, else span/size at three figures (graphic.scales.filling)
+    — the series' next would draw it up to half as large."""
+    from graphplan.graphic.scales import filling
+    return filling(span, size)
+
+
+def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk") -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
-    axes through the origin reach just past the curve: μR is the standard scale at which the curve
-    and the origin together span ``size`` mm (a reaction that keeps its direction draws its loop
-    large in one quadrant instead of small in the middle of a bare cross)."""
+    axes through the origin reach just past the curve: μR draws the curve and the origin together
+    ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
+    large in one quadrant instead of small in the middle of a bare cross). Every position's number
+    stands beside its point; only points nearer than the lettering share one ("6–10")."""
     f = t.ks.reactions[key].force
     rec = Record(f"hodograph {key}")
     step = f"hodograph {key}"
     xlo, xhi = min(0.0, float(np.min(f.real))), max(0.0, float(np.max(f.real)))
     ylo, yhi = min(0.0, float(np.min(f.imag))), max(0.0, float(np.max(f.imag)))
     span = max(xhi - xlo, yhi - ylo) or 1.0
-    mu_r = standard_scale(span / size)
+    mu_r = hodograph_scale(span, size)
     rec.scales["mu_R"] = mu_r
     pad = 5.0
     x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
@@ -269,12 +284,12 @@ def hodograph_record(t: Turn, key: str, size: float = 70.0, lang: str = "uk") ->
     numbers = []
     for first, last, w in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()]):
         text = str(first) if first == last else f"{first}–{last}"
-        numbers.append(LabelRequest(w, text, w if abs(w) > 1e-9 else 1j, 2.5, optional=first != 0, step=step))
+        numbers.append(LabelRequest(w, text, w if abs(w) > 1e-9 else 1j, 2.5, step=step, sight=True))
     for k, _ in t.position_index():
         w = f[k] / mu_r
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
-    place_labels(rec, numbers)      # each position's number by its point, clear of the curve (on a small
-                                    # loop those without room are left out; position 0 always stands)
+    place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
+                                    # other numbers (on a leader where its point is crowded)
     rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
     return rec
@@ -380,5 +395,5 @@ def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | Non
     for key in slider_reactions(t):
         out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key, 70.0 * kh, lang=lang)
+        out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang)
     return out

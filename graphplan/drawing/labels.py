@@ -307,10 +307,35 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     free = np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]
+    if req.sight:
+        free = [k for k in free.tolist() if _in_sight(ob, req.at, boxes[k])]
     if len(free):
         k = int(free[0])
         return tuple(boxes[k]), complex(starts[k]), None
     return None
+
+
+SIGHT_FROM = 0.9     # mm from the point where its sight line starts (the lines through the point itself)
+
+
+def _in_sight(ob: Obstacles, at: complex, box) -> bool:
+    """Whether no line of the drawing crosses the straight line from the point (``SIGHT_FROM`` off
+    it) to the nearest point of the label's box: nothing between a number and its point."""
+    x0, y0, x1, y1 = (float(v) for v in box)
+    near = complex(min(max(at.real, x0), x1), min(max(at.imag, y0), y1))
+    d = near - at
+    if abs(d) <= SIGHT_FROM or len(ob.segs) == 0:
+        return True
+    a = at + d / abs(d) * SIGHT_FROM
+    sx, sy, ex, ey = ob.segs.T
+    ux, uy = near.real - a.real, near.imag - a.imag
+    vx, vy = ex - sx, ey - sy
+    den = ux * vy - uy * vx
+    with np.errstate(all="ignore"):
+        t = ((sx - a.real) * vy - (sy - a.imag) * vx) / den
+        s = ((sx - a.real) * uy - (sy - a.imag) * ux) / den
+    cross = (np.abs(den) > 1e-12) & (t >= 0.0) & (t <= 1.0) & (s >= 0.0) & (s <= 1.0)
+    return not bool(np.any(cross))
 
 
 BREAK_WIDTH = 0.5    # lines thinner than this (the thin positions, trajectories, construction) may be broken

@@ -516,6 +516,8 @@ class LabelRequest:
     step: str = ""
     gap: float = LABEL_GAP
     breaks: bool = False   # a joint's letter at a crowded point: set beside it, the thin lines under it broken
+    sight: bool = False    # set beside its point only where no line passes between them (a hodograph's
+                           # number across another branch of the curve reads as that branch's)
 
 
 

@@ -105,6 +105,59 @@ def chosen_length(value: float, length_mm: float) -> float:
     return series_value(math.floor(raw / 10.0 ** k * (1 + 1e-12)), k)
 
 
+def next_round(mu: float) -> float:
+    """The next finer round coefficient (a larger drawing): the series' 1, 2, 2.5, 4, 5 and GOST
+    2.302's 1.5, 7.5 × 10^k — 0.04 → 0.025, 0.02 → 0.015 → 0.01."""
+    k0 = math.floor(math.log10(mu))
+    return max(series_value(m, k) for k in range(k0 - 1, k0 + 2) for m in SERIES + GOST_BETWEEN
+               if series_value(m, k) < mu * (1 - 1e-9))
+
+
+def larger_choices(value: float, mu: float, longest_mm: float, step_mm: float = 5.0) -> list[tuple[float, bool]]:
+    """The scale coefficients that draw ``value`` larger than ``mu`` does, up to ``longest_mm``, as
+    the plans choose theirs (sheets/kinlayout.legible_where_room): the round ones — the series'
+    1, 2, 2.5, 4, 5 and GOST 2.302's 1.5, 7.5 × 10^k — and the lab's own, the drawn length chosen
+    (multiples of ``step_mm``) with μ = value / length at three figures (``chosen_length``).
+    (μ, round?) pairs, the smallest drawing first."""
+    if not (value > 0 and mu > 0 and math.isfinite(value / mu)):
+        return []
+    k0 = math.floor(math.log10(value / longest_mm)) if longest_mm > 0 else 0
+    rounds = {series_value(m, k) for k in range(k0 - 1, k0 + 3) for m in SERIES + GOST_BETWEEN}
+    drawn = value / mu
+    lengths = [step_mm * j for j in range(int(drawn // step_mm) + 1, int(longest_mm // step_mm) + 1)]
+    chosen = {chosen_length(value, n) for n in lengths}
+    out = {(m, True) for m in rounds} | {(m, False) for m in chosen - rounds}
+    return sorted(((m, r) for m, r in out if value / m <= longest_mm + 1e-9 and m < mu * (1 - 1e-9)),
+                  key=lambda c: (-c[0], not c[1]))
+
+
+def on_round(mu: float) -> bool:
+    """Whether μ is a round value: the series' or GOST 2.302's 1.5, 7.5 × 10^k."""
+    k = math.floor(math.log10(mu))
+    return on_series(mu) or any(abs(mu - series_value(g, k)) <= 1e-12 * mu for g in GOST_BETWEEN)
+
+
+ROUND_SHARE = 0.9     # a round coefficient is taken where it draws at least this share of the chosen length
+
+
+def filling(value: float, length_mm: float, figures: int = 2) -> float:
+    """The coefficient that draws ``value`` as nearly ``length_mm`` long as the lab draws it, and no
+    longer: a round one (the series, GOST's 1.5, 7.5 × 10^k) where that draws it at least
+    ``ROUND_SHARE`` of the length, else μ = value / length to ``figures`` significant figures
+    rounded up (the lab's own way, ``chosen_length``; 9150 N in 70 mm: 140 N/mm, drawn 65.4 mm —
+    two figures draw it at least 0.91 of the length)."""
+    if not (value > 0 and length_mm > 0 and math.isfinite(value / length_mm)):
+        raise GraphplanError(f"cannot choose a scale for a segment of size {value!r} drawn {length_mm!r} mm")
+    need = value / length_mm
+    k0 = math.floor(math.log10(need))
+    rounds = sorted(series_value(m, k) for k in (k0, k0 + 1) for m in SERIES + GOST_BETWEEN)
+    best = next(m for m in rounds if m >= need * (1 - 1e-12))
+    if need / best >= ROUND_SHARE - 1e-12:
+        return best
+    k = k0 - (figures - 1)
+    return series_value(math.ceil(need / 10.0 ** k * (1 - 1e-12)), k)
+
+
 def on_series(mu: float) -> bool:
     """Whether μ is a value of the standard series 1, 2, 2.5, 4, 5 × 10^k."""
     return mu > 0 and abs(at_least(mu) - mu) <= 1e-12 * mu

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -20,7 +20,7 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
                                       flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
-from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, choose_levels, coarser, compose,
+from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, coarser, compose,
                                       drawing_scale, field_of, grown, keep_out, measured_twice, note_block, notes_height,
                                       options_of, remembered)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -115,6 +115,8 @@ FAMILIES = ("scheme", "groups", "forces", "acceleration", "lever", "charts", "ho
 TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration": 120.0, "lever": 100.0,
            "charts": 1.0, "hodographs": 1.0}
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
+LEVER_STEP = 1.25     # the lever grown in the composition's rounds by at least this factor a step
+LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -303,6 +305,74 @@ class Natural:
     notes: list[list[str]]
 
 
+@dataclass
+class LeverFamily(Family):
+    """The lever's family, grown in finer steps than the series' (up to twice as large — seldom
+    room for it in the lever's row): the next of the velocity plans' choices (graphic.scales.
+    larger_choices: the round values, GOST's 1.5, 7.5 × 10^k between the series' steps, then p_v a
+    chosen in 5 mm steps), so that the lever takes its share of a row in turn with the other
+    drawings; at most ``LEVER_MM`` across."""
+    figure: float = 0.0      # the drawing's figure across at μ = 1 (its lines without the forces), mm
+    arrows: float = 0.0      # what the forces' arrows (of one length at any μ) add across, mm
+
+    def lines_across(self, mu: float) -> float:
+        """The drawing's lines across at μ, mm."""
+        return self.figure / mu + self.arrows
+
+    def choices(self, mu: float) -> list[tuple[float, bool]]:
+        """(μ, round?) that draw the lever larger than μ and at most ``LEVER_MM`` across, the
+        smallest drawing first."""
+        from graphplan.graphic.scales import larger_choices
+        if self.figure <= 0:
+            return []
+        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * LEVER_MM / self.figure)
+                if self.lines_across(m) <= LEVER_MM + 1e-9]
+
+    def finer(self, mu: float) -> float | None:
+        steps = self.steps(mu)
+        return steps[0] if steps else None
+
+    def steps(self, mu: float) -> list[float]:
+        """The next sizes to try, largest first: a step as large as the other families' (the first
+        choice that draws the lever ``LEVER_STEP`` times as large, else the largest there is), then
+        one about half as large, then the next choice (p_v a 5 mm longer) — so that the lever takes
+        what room its row has left when a whole step no longer fits (``_levels``)."""
+        nxt = [m for m, _ in self.choices(mu)]
+        if not nxt:
+            return []
+        big = next((m for m in nxt if mu / m >= LEVER_STEP - 1e-9), nxt[-1])
+        mid = next((m for m in nxt if mu / m >= (1 + LEVER_STEP) / 2 - 1e-9), nxt[-1])
+        return list(dict.fromkeys(m for m in (big, mid, nxt[0]) if m >= big))
+
+
+@dataclass
+class Floored(Family):
+    """A family of size factors never started below ``floor`` (the hodographs: a teacher reads one
+    whose larger extent is ~60 mm on A1; the sheet's other drawings give way first)."""
+    floor: float = 0.0
+    cap: float = math.inf
+
+    def start(self, k: float) -> float:
+        return super().start(max(k, self.floor))
+
+    def finer(self, mu: float) -> float | None:
+        m = super().finer(mu)
+        return m if m is not None and self.rel(m) <= self.cap + 1e-9 else None
+
+
+HODOGRAPHS_FLOOR = 1.0    # the hodographs' least size factor on one sheet (drawing.charts.HODOGRAPH_MM)
+HODOGRAPHS_CAP = 1.0      # … and the largest they grow to: the room beyond goes to the lever and the charts
+
+
+def lever_across(lv) -> float:
+    """The lever's figure across (the larger of its width and height), mm: the velocity plan
+    turned, the pole with the points' images, without the forces (their arrows keep their length
+    at any μv)."""
+    zs = [1j * z for z in lv.images.values()] + [0j]
+    xs, ys = [z.real for z in zs], [z.imag for z in zs]
+    return max(max(xs) - min(xs), max(ys) - min(ys))
+
+
 def measure(dr: ForceDrafter) -> Natural:
     from graphplan.util.words import LANGS
     fp = dr.fp()
@@ -327,6 +397,11 @@ def measure(dr: ForceDrafter) -> Natural:
                                        principal=principal[fam], target=TARGETS[fam],
                                        factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
                                        lettering=LETTERING)
+    figure = lever_across(fp.lever)
+    lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
+    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR, cap=HODOGRAPHS_CAP)
+    families["lever"] = LeverFamily(**vars(families["lever"]), figure=figure * fp.lever.mu_v,
+                                   arrows=max(0.0, max(lines[2] - lines[0], lines[3] - lines[1]) - figure))
     tables = {}
     for factor in (TABLES, 1.0):
         per = [[(name, *_wh(rec)) for name, rec in _tables(dr, mu0, lang, factor)] for lang in LANGS]
@@ -358,25 +433,63 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
           ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs"))
 
 
-def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf):
+HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
+
+
+def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
+    """The groups with their force plans: a row per group, or (``… across``) side by side."""
+    if shape.endswith(ACROSS):
+        return Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    return Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+
+
+def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
     the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
     — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
-    slotter's at 1:5 instead of 1:10)."""
+    slotter's at 1:5 instead of 1:10). The hodographs' grid ends row ``hrow`` (1, 2 or 3): the
+    charts' row, or beside the groups or the lever where those leave the room (the slotter's five
+    at 60 mm beside its narrow groups)."""
     S = leaves["scheme"][0]
-    if shape.endswith(ACROSS):
-        groups = Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
-    else:
-        groups = Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+    groups = _groups_node(shape, leaves) if groups is None else groups     # (a leaf of its size: a trial)
     shape = shape.removesuffix(ACROSS)
     A, L = leaves["acceleration"][0], leaves["lever"][0]
     charts = leaves["charts"]
-    H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+    if H is None:
+        H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+    at = {k: H if k == hrow else [] for k in (1, 2, 3)}
     if shape == "column":
-        body = Stack([Row([S, groups]), Row([A, L] + charts[:1]), Row(charts[1:] + H)])
-        return Row([body, C], flush=True)
-    return Stack([Row([S, groups, A]), Row([L] + charts[:2]), Row(charts[2:] + H + [C], flush=True)], flush=True)
+        rows = [Row([S, groups] + at[1]), Row([A, L] + charts[:1] + at[2]), Row(charts[1:] + at[3])]
+        return Row([Stack([r for r in rows if r.children]), C], flush=True)
+    rows = [Row([S, groups, A] + at[1]), Row([L] + charts[:2] + at[2]), Row(charts[2:] + at[3] + [C], flush=True)]
+    return Stack(rows, flush=True)
+
+
+def _levels(families: dict[str, Family], fits, order, largest=None) -> dict[str, float] | None:
+    """``compose.choose_levels`` where a family may offer smaller steps when its whole one does not
+    fit (``LeverFamily.steps``): the largest common size factor that fits, then the families in
+    ``order`` each grown by the first of its steps that still fits, round after round."""
+    from graphplan.sheets.compose import FACTORS
+    mu = next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
+               if fits(trial)), None)
+    if mu is None:
+        return None
+    growing = [name for name in order if name in families]
+    while growing:
+        for name in list(growing):
+            fam = families[name]
+            steps = fam.steps(mu[name]) if isinstance(fam, LeverFamily) else [fam.finer(mu[name])]
+            for bigger in steps:
+                if bigger is None or (largest is not None and not largest(name, bigger)):
+                    continue
+                trial = {**mu, name: bigger}
+                if fits(trial):
+                    mu = trial
+                    break
+            else:
+                growing.remove(name)
+    return mu
 
 
 @dataclass
@@ -388,13 +501,16 @@ class Plan:
     parts: int = 1
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
+    hrow: int = 3                    # the row the hodographs end (``_tree``)
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
     return {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
 
 
-def _one_sheet(nat: Natural, f: Form) -> Plan | None:
+def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
+    """The best one-sheet composition (its score: the smallest of the main drawings' sizes against
+    their targets first), or None where none fits."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     nh = len(nat.families["hodographs"].sizes)
@@ -403,31 +519,39 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [_column(f, tabs, parts, lambda w: notes_height(nat.notes, w))[0] for parts in (1, 2, 3)]
 
-        def arranged(mu, shape):
+        def arranged(mu, shape, first=False):
+            """(fill, hodographs' columns, the column's parts, the hodographs' row) of the best
+            arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
+            groups = Leaf("groups", *extent(_groups_node(shape, leaves)))      # sizes only: one extent each
+            grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc)))] if nh else []
+                     for hc in range(1, max(nh, 1) + 1)}
             found = None
-            for hc in range(1, max(nh, 1) + 1):
-                for parts, C in enumerate(cols, 1):
-                    tw, th = extent(_tree(shape, leaves, hc, C))
-                    if tw <= W + 1e-9 and th <= H + 1e-9:
-                        fill = min(W / tw, H / th)
-                        if found is None or fill > found[0] + 1e-9:
-                            found = (fill, hc, parts)
+            for hrow in HROWS if nh else HROWS[:1]:
+                for hc in range(1, max(nh, 1) + 1):
+                    for parts, C in enumerate(cols, 1):
+                        tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc]))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, hc, parts, hrow)
+                            if first:
+                                return found
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
-            mu = choose_levels(nat.families, lambda m, s=shape: arranged(m, s) is not None, order)
+            mu = _levels(nat.families, lambda m, s=shape: arranged(m, s, True) is not None, order)
             if mu is None:
                 continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
             score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
                      -SHAPES.index(shape))
-            _, hc, parts = arranged(mu, shape)
+            _, hc, parts, hrow = arranged(mu, shape)
             counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
             if best is None or cand[0] > best[0]:
                 best = cand
-    return best[1] if best else None
+    return best
 
 
 SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
@@ -457,7 +581,7 @@ def _set(nat: Natural, f: Form) -> Plan:
         if mu is None:
             continue
         count = pages(mu)
-        grown = choose_levels(nat.families, lambda m: pages(m) == count, FAMILIES,
+        grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
                               lambda name, m: nat.families[name].rel(m) <= 1.25 + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0]:
@@ -492,14 +616,37 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
     dr = ForceDrafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
     nat = measure(dr)
+    hod = nat.families["hodographs"]
     for _ in range(4):
-        one = _one_sheet(nat, f)
+        hod.floor = 0.0
+        free = _one_sheet(nat, f)
+        floored = None
+        if free is None or hod.rel(free[1].mu["hodographs"]) < HODOGRAPHS_FLOOR - 1e-9:
+            hod.floor = HODOGRAPHS_FLOOR
+            floored = _one_sheet(nat, f)
+        # the hodographs at their legible size where that costs no main drawing a step it needs
+        one = floored if floored is not None and (free is None or _costs_nothing(nat, floored[1], free[1])) else free
+        hod.floor = HODOGRAPHS_FLOOR if one is floored and one is not None else 0.0
+        one = one[1] if one is not None else None
         fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
                                        for n in ("scheme", "groups", "forces"))
-        p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
+        if one is None or not (f.name in ONE_SHEET or fine):
+            hod.floor = HODOGRAPHS_FLOOR                 # a set: every drawing at least at its size
+            one = _set(nat, f)
+        p = one
         if _checked(dr, nat, p):
             break
-    return _grown_groups(dr, nat, f, p), nat, dr
+    return _grown_lever(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
+
+
+MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
+
+
+def _costs_nothing(nat: Natural, floored: Plan, free: Plan) -> bool:
+    """Whether the hodographs drawn at their legible size (``floored``) leave every main drawing as
+    large as without (``free``), or at least at its target size."""
+    return all(nat.families[n].rel(floored.mu[n]) >= min(nat.families[n].rel(free.mu[n]), 1.0) * (1 - 1e-9)
+               for n in MAIN)
 
 
 GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
@@ -518,7 +665,7 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
     C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
-    tw, th = extent(_tree(p.shape, leaves, p.hcols, C))
+    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow))
     return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
 
 
@@ -556,7 +703,72 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if best is not None:
             mu[GROUP + label] = best[0]
             leaves = best[1]
-    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
+    return replace(p, mu=mu)
+
+
+def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
+    """The drawings' cells at the plan's scales, a group drawn at its own μl (``_grown_groups``)
+    in its own cell."""
+    leaves = _leaves(nat, mu)
+    own = dict(group_scales(mu))
+    if own:
+        fam = nat.families["groups"]
+        fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(own[gp.label], i)))
+                            if gp.label in own else leaf
+                            for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
+    return leaves
+
+
+def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Plan) -> bool:
+    """Whether the tables and the notes at the scales ``mu`` (the lever's μv is printed in the
+    notes, its P_b and M_b in the results) are no larger than the composition allowed for; where
+    they are, ``nat`` takes their sizes."""
+    from graphplan.util.words import LANGS
+    ok = not grown(nat.tables[p.tables], [[(n, *_wh(r)) for n, r in _tables(dr, mu, lang, p.tables)]
+                                          for lang in LANGS])
+    drawn = [_notes_lines(dr, mu, lang) for lang in LANGS]
+    if notes_height(drawn, TITLE) > notes_height(nat.notes, TITLE) + 1e-6:
+        nat.notes += drawn
+        ok = False
+    return ok
+
+
+def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """The Zhukovsky lever as large as its cell allows (LAYOUT.md: the largest scale that fits its
+    zone), every other drawing as planned — the lever's μv grown in the plans' steps
+    (``LeverFamily``) while the composition fits — then a round μv (the series, GOST's 1.5, 7.5 ×
+    10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
+    5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
+    off the lever to the ruler's 0.5 mm, so a larger lever reads P_зр closer to the exact."""
+    from graphplan.graphic.scales import ROUND_SHARE, on_round
+    fam = nat.families["lever"]
+    mu = dict(p.mu)
+    if not isinstance(fam, LeverFamily) or fam.figure <= 0 or not fam.sizes:
+        return p
+    leaves = _placed_leaves(dr, nat, mu)
+    name = leaves["lever"][0].name
+
+    def fits(m: float) -> bool:
+        w, h = fam.size(m, 0)
+        return _fits(nat, f, p, {**leaves, "lever": [Leaf(name, w + GROW_MARGIN, h + GROW_MARGIN)]})
+
+    for _ in range(3):
+        fitting = [(mu["lever"], on_round(mu["lever"]))]
+        for m, rnd in fam.choices(mu["lever"]):       # the smallest drawing first: stop at the first too large
+            if not fits(m):
+                break
+            fitting.append((m, rnd))
+        largest = fitting[-1][0]
+        rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
+        m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
+        if m == p.mu["lever"]:
+            break
+        trial = {**mu, "lever": m}
+        if _lettering_kept(dr, nat, trial, p) and fits(m):
+            mu = trial
+            break
+    return replace(p, mu=mu)
 
 
 def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
@@ -599,7 +811,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C), region):
+        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
