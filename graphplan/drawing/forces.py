@@ -62,6 +62,11 @@ def _mu(fp: ForcePlans, gp: GroupPlan | None) -> float:
     return gp.mu_l if gp is not None and gp.mu_l else fp.mu_l
 
 
+def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
+    """The scale a group's force plan is drawn at (its own, else the plans')."""
+    return gp.mu_F or fp.mu_F
+
+
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[complex]:
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
     mech, kin = fp.ks.mech, fp.ks.kin
@@ -470,7 +475,8 @@ def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, 
 
 def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """The group's force polygon at μF: known forces head to tail, the reactions closing it."""
-    rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": fp.mu_F})
+    mu_F = _mu_F(fp, gp)
+    rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": mu_F})
     step = f"{gp.label}: ΣF = 0"
     for a, b in gp.lines:
         rec.segment(_pt(a), _pt(b), role="direction", layer="construction", step=step)
@@ -484,7 +490,7 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, 2.5, step=step)
                  for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
-    caption = f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}"
+    caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     if tiny:     # vectors too short to carry a label: named under the plan with their bound
         names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
         caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
@@ -647,12 +653,12 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     cells = []
     for f in gp.forces:       # "on the drawing, mm": each length as laid off with the ruler
         if f.force:
-            cells.append((f.name, abs(f.force), measure(abs(f.force) / fp.mu_F, fp.precision)))
+            cells.append((f.name, abs(f.force), measure(abs(f.force) / _mu_F(fp, gp), fp.precision)))
         if f.couple:
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / fp.mu_F, fp.precision)))
+            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]

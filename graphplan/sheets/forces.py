@@ -126,6 +126,14 @@ def group_scales(mu: dict[str, float]) -> tuple[tuple[str, float], ...]:
     return tuple(sorted((k[len(GROUP):], v) for k, v in mu.items() if k.startswith(GROUP)))
 
 
+PLAN = "plan "        # mu["plan II(4-5)"]: a group's force plan drawn at its own μF
+
+
+def plan_scales(mu: dict[str, float]) -> tuple[tuple[str, float], ...]:
+    """The force plans the sheet draws at their own μF, (label, μF) in order."""
+    return tuple(sorted((k[len(PLAN):], v) for k, v in mu.items() if k.startswith(PLAN)))
+
+
 @dataclass
 class ForceDrafter:
     """Draws what the force sheet holds at given scales, remembering it."""
@@ -146,16 +154,17 @@ class ForceDrafter:
         return self.memo[key]
 
     def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None,
-           group_mu: tuple[tuple[str, float], ...] = ()):
+           group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = ()):
         from graphplan.graphic import forceplans
-        return self._once(("fp", mu_l, mu_F, mu_v, group_mu), lambda: forceplans.construct(
+        return self._once(("fp", mu_l, mu_F, mu_v, group_mu, plan_mu), lambda: forceplans.construct(
             self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
-            group_mu=dict(group_mu)))
+            group_mu=dict(group_mu), group_mu_F=dict(plan_mu)))
 
     def groups_fp(self, mu: dict[str, float]):
-        """The groups' force plans at the sheet's scales: μl, μF, μv and a group's own μl where the
-        plan draws it larger (``mu["group <label>"]``)."""
-        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
+        """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
+        plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
+        (``mu["plan <label>"]``)."""
+        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), plan_scales(mu))
 
     def plans(self, mu_a: float | None = None):
         from graphplan.graphic.forceplans import acceleration_plan      # only the plans drawn
@@ -228,7 +237,8 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
 
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
     """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
-    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
+    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
+           plan_scales(mu))
     return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
 
 
@@ -286,8 +296,13 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     for m_l, labels in by_scale.items():
         if m_l != mu["scheme"]:
             scales.append(format_scale("mu_l", m_l, lang) + f" ({w('group').lower()} {', '.join(labels)})")
-    scales += [format_scale(m, mu[k], lang) for m, k in (("mu_F", "forces"), ("mu_a", "acceleration"),
-                                                          ("mu_v", "lever"))]
+    forces: dict[float, list[str]] = {}
+    for gp in fp.groups:                  # each force plan at its own μF (stated under it, too)
+        forces.setdefault(gp.mu_F or mu["forces"], []).append(gp.label)
+    for m_F, labels in forces.items():
+        tail = f" ({w('polygon').lower()} {', '.join(labels)})" if len(forces) > 1 else ""
+        scales.append(format_scale("mu_F", m_F, lang) + tail)
+    scales += [format_scale(m, mu[k], lang) for m, k in (("mu_a", "acceleration"), ("mu_v", "lever"))]
     from graphplan.sheets.compose import lines_of
     return lines_of(notes(dr.st, scales, lines, lang))
 
@@ -497,7 +512,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one if one is not None and (f.name in ONE_SHEET or fine) else _set(nat, f)
         if _checked(dr, nat, p):
             break
-    return _grown_groups(dr, nat, f, p), nat, dr
+    return _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
 
 
 GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
@@ -553,6 +568,46 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             best, s = (s, trial), finer(s)
         if best is not None:
             mu[GROUP + label] = best[0]
+            leaves = best[1]
+    return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
+
+
+def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """LAYOUT.md's rule for each force plan: its own μF from the standard series, the finest at
+    which it still fits its cell. A group whose forces are small beside the crank's (the coulisse's
+    outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer μF than the family's — its largest
+    vector no longer than the largest plan's — while the composition still fits at every other
+    scale unchanged (II(4-5) at 20 N/mm instead of 40: R34 87 mm, not 43). The grown scales go into
+    ``mu`` as "plan <label>" and are printed under each plan and in the notes."""
+    from graphplan.sheets.compose import finer
+    fam = nat.families["forces"]
+    mu = dict(p.mu)
+    base = mu["forces"]
+    fp = dr.groups_fp(mu)
+    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
+    largest = max(list(longest.values()) + [0.0])
+    if largest <= 0:
+        return p
+    leaves = _leaves(nat, mu)
+    for i, gp in enumerate(fp.groups):      # the groups as _grown_groups drew them
+        if GROUP + gp.label in mu:
+            w, h = nat.families["groups"].size(mu[GROUP + gp.label], i)
+            leaves["groups"][i] = Leaf(leaves["groups"][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
+    for i, gp in enumerate(fp.groups):
+        e = longest[gp.label]
+        if e <= 0:
+            continue
+        best, s = None, finer(base)
+        while s is not None and e * base / s <= largest + 1e-9:
+            w, h = fam.size(s, i)
+            trial = {**leaves, "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name,
+                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
+                                          *leaves["forces"][i + 1:]]}
+            if not _fits(nat, f, p, trial):
+                break
+            best, s = (s, trial), finer(s)
+        if best is not None:
+            mu[PLAN + gp.label] = best[0]
             leaves = best[1]
     return Plan(mu, p.tables, p.shape, p.hcols, p.parts, p.sheets, p.counts)
 
