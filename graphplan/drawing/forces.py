@@ -20,6 +20,8 @@ from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit,
 
 Box = tuple[float, float, float, float]
 
+LETTER = 3.5    # mm: a force's, an arm's name — the sheet's lettering height (GOST 2.304 on A1, LAYOUT.md)
+
 
 def _pt(z: complex) -> tuple[float, float]:
     return (float(z.real), float(z.imag))
@@ -95,7 +97,8 @@ ALONG_DEG = 12.0   # a force within this angle of a link through its point lies 
 PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, to read
 
 
-SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel
+SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
+LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
 
 
 def arm_symbol(name: str) -> str:
@@ -283,6 +286,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
     drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
     guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
+    lanes: dict[str, complex] = {}     # a force set aside from its line of action: by how much (mm)
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
@@ -296,7 +300,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         # leaves D the other way): either hides in the link
         inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
-        if (inside or over) and name not in armed:
+        if inside and name in armed:
+            # an arm is drawn to its line: the arrow beside the link in a lane, its own length
+            # (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line
+            # of action drawn thin through the point (``lanes``)
+            a, b = z, z + length * u
+        if inside or (over and name not in armed):
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
             others += [_unit(e - z) for s, e in drawn_links for e in (s, e)
                        if abs(e - z) > 0.5 and _on_segment(z, s, e)
@@ -306,11 +315,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 n = -n
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
-            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else SIDE_MM
-            for off in (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM):
+            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else LANE_MM
+            for off in (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM):
                 a, b = z + off * n, z + off * n + length * u
-                if not any(_overlap(a, b, t, h) for _, t, h in drawn):
+                if not any(_overlap(a, b, t, h, LANE_MM / 2) for _, t, h in drawn):
                     break
+            lanes[name] = off * n
         drawn.append((z, a, b))
         return a, b
 
@@ -387,9 +397,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
                 role="construction", layer="construction", step=step)
         a, b = span[f.name]
+        off = lanes.get(f.name, 0j)
+        a, b = a - off, b - off          # the force's line of action (a laned arrow runs beside it)
         if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
             near = a if abs(t.foot - a) < abs(t.foot - b) else b
             rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
+        if off:                          # the line itself along the arrow, where the arm ends
+            rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
     for z, g in guides:
         _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step)
     lab = Labeler(rec)
@@ -404,9 +418,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
-        lab.place(mid, arm_symbol(t.name), 2.5, 1j * _unit(t.foot - about), step)
+        lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
-        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     return lab.done()
 
 
@@ -487,7 +501,7 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
-    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, 2.5, step=step)
+    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, LETTER, step=step)
                  for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
@@ -625,7 +639,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             placed.add(key)
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
-        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     lab.done()
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
