@@ -629,7 +629,10 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
         tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
         rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
-        labels.append((tip, "P_b", u))
+        # named beside its shaft, on the side away from the pole: at the head it met the letters
+        # of the images the arrow points at (s3 on the coulisse's lever)
+        side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
+        labels.append((a + 0.55 * (tip - a), "P_b", side))
     lab = Labeler(rec)
     lab.place(0j, "p_v", 3.5, -1 + 1j, step)
     placed = set()
@@ -752,13 +755,15 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
     if number is not None:
         _title_above(rec, 0.0, table_title(number, word("fs results", lang), lang), step)
     bottom = _table(rec, 0.0, 0.0, [word("M_b", lang), unit("N·m", lang), "δ, %"], rows, [34.0, 22.0, 18.0], step)
+    top = bottom
     if number is not None:
-        bottom -= 8.0
+        # the next table's title as far under this table as the sheet's tables stand apart
+        # (layout.GAP to its capitals' top; Tables 6 and 7 stood 2.3 mm apart)
+        from graphplan.drawing.layout import GAP
         from graphplan.drawing.tables import TITLE_MM, title_lines
         title = table_title(number + 1, REACTIONS_TITLE.get(lang, REACTIONS_TITLE["en"]), lang)
-        bottom -= line_pitch(3.5) * (len(title_lines(title, TITLE_MM)) - 1)
-        _title_above(rec, bottom, title, step)
-        bottom += 8.0
+        top = bottom - GAP - 3.5 - 2.2 - line_pitch(3.5) * (len(title_lines(title, TITLE_MM)) - 1)
+        _title_above(rec, top, title, step)
     rows = []
     for m in fp.reactions().values():
         err = _pct(m.error_pct, lang)
@@ -767,7 +772,7 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
             why.append(reaction_why(fp, m.key, lang))
         rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
                      num(m.analytic, lang), err])
-    bottom = _table(rec, 0.0, bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
+    bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
                                              word("exact N", lang), "δ, %"], rows,
                     [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
     if why:

@@ -446,6 +446,54 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
 SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
 
 
+def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float) -> list[list]:
+    """A set's rows in reading order: the scheme; each group with its force plan; the acceleration
+    plan and the lever; the charts, then the hodographs as one grid (kept together on one sheet —
+    R34's stood alone on the coulisse's sheet 3, the other four on sheet 4); the tables and notes
+    (``tail``)."""
+    rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
+    rows.append(leaves["acceleration"] + leaves["lever"])
+    hods = leaves["hodographs"]
+    if hods:
+        cw = max(extent(h)[0] for h in hods)
+        cols = max(1, min(len(hods), int((width + GAP) // (cw + GAP))))
+        rows.append(leaves["charts"] + [Grid(hods, cols)])
+    else:
+        rows.append(leaves["charts"])
+    rows.append(tail)
+    return rows
+
+
+def _tables_by_title(page: list[Placed], tables: list[Leaf], notes: Leaf, f: Form) -> list[Placed] | None:
+    """A set's last sheet as LAYOUT.md composes a sheet: the tables in a column (two or three where
+    one is too tall) at the right above the title block, the notes right over the title block, the
+    sheet's other drawings flowed again in the room to the column's left; None where they do not
+    fit so (the sheet then keeps the tables in rows, as flowed)."""
+    x0, y0, x1, y1 = field_of(f)
+    foot = keep_out(f)[3]
+    names = {t.name for t in tables} | {notes.name}
+    rest = [it for it in page if it.name not in names]
+    for parts in (1, 2, 3):
+        groups = split(tables, parts)
+        cw, ch = column_size(groups)
+        width = max(cw, notes.w)
+        if ch + GAP + notes.h > y1 - foot + 1e-9:
+            continue
+        left = x1 - width
+        region = (x0, y0, left - GAP, y1)
+        out = []
+        if rest:
+            laid = flow([[Leaf(it.name, record=it.record) for it in rest]], region, keep_out(f))
+            if laid is None or len(laid) != 1:
+                continue
+            out = [Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in laid[0]]
+        out += set_columns(groups, x1 - cw, y1)
+        nb = (x1 - width, foot, x1, foot + notes.h)
+        out.append(Placed(notes.name, top_left(notes.record, nb), nb))
+        return out
+    return None
+
+
 def _set(nat: Natural, f: Form) -> Plan:
     """A set: every family at least at its target size (or as large as a sheet holds), flowing over
     the sheets in reading order; then grown while the set needs no more sheets."""
@@ -455,10 +503,8 @@ def _set(nat: Natural, f: Form) -> Plan:
     for factor in (TABLES, 1.0):
         def pages(mu):
             leaves = _leaves(nat, mu)
-            rows = [leaves["scheme"]] + [[g, p] for g, p in zip(leaves["groups"], leaves["forces"])]
-            rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-            rows.append([Leaf(n, w, h) for n, w, h in nat.tables[factor]]
-                        + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
+            rows = _set_rows(leaves, [Leaf(n, w, h) for n, w, h in nat.tables[factor]]
+                             + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))], region[2] - region[0])
             out = flow(rows, region, keep)
             return None if out is None else len(out)
         mu = None
@@ -522,11 +568,10 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
     or needs no more sheets (a set)."""
     if p.shape == "set":
-        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
-        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-        rows.append([Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
-                    + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
-        out = flow(rows, field_of(f), keep_out(f))
+        region = field_of(f)
+        rows = _set_rows(leaves, [Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
+                         + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))], region[2] - region[0])
+        out = flow(rows, region, keep_out(f))
         return out is not None and len(out) <= p.sheets
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
@@ -664,13 +709,15 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
-        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-        rows.append(tables + [Leaf("notes", record=note_block(note_lines, TITLE))])
+        notes_leaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        rows = _set_rows(leaves, tables + [notes_leaf], region[2] - region[0])
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
+        if {t.name for t in tables} <= {it.name for it in pages[-1]}:
+            last = _tables_by_title(pages[-1], tables, notes_leaf, f)
+            pages[-1] = last if last is not None else pages[-1]
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")
