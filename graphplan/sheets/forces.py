@@ -446,6 +446,12 @@ def _one_sheet(nat: Natural, f: Form) -> Plan | None:
 SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
 
 
+# how much larger than its target a family of a set grows while the set needs no more sheets: the
+# scheme and the groups, where the crowding is (the coulisse's crank end at 1:4 on an A2 sheet 70 %
+# empty), as far as a sheet holds them; the others as before
+SET_LARGEST = {"scheme": 4.0, "groups": 4.0}
+
+
 def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float) -> list[list]:
     """A set's rows in reading order: the scheme; each group with its force plan; the acceleration
     plan and the lever; the charts, then the hodographs as one grid (kept together on one sheet —
@@ -517,7 +523,7 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         count = pages(mu)
         grown = choose_levels(nat.families, lambda m: pages(m) == count, FAMILIES,
-                              lambda name, m: nat.families[name].rel(m) <= 1.25 + 1e-9)
+                              lambda name, m: nat.families[name].rel(m) <= SET_LARGEST.get(name, 1.25) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0]:
             best = (count, Plan(mu, factor, "set", 1, 1, count))
