@@ -313,10 +313,24 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             n = 1j * u
             if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
                 n = -n
+            # a force a few degrees off its link's line (G3 at S3, the rocker 8° from vertical) on
+            # the side it turns away to, so that its head does not come back onto the link
+            away = False
+            sin_along = math.sin(math.radians(ALONG_DEG))
+            near = [_unit(e - s_) for s_, e in drawn_links if abs(e - s_) > 1e-9 and _on_segment(z, s_, e)
+                    and abs((u.conjugate() * _unit(e - s_)).imag) <= sin_along]
+            if near:
+                d = near[0] if dot(near[0], u) >= 0 else -near[0]
+                dev = u - d * dot(u, d)
+                if abs(dev) > math.sin(math.radians(1.0)):
+                    n = 1j * u if dot(1j * u, dev) > 0 else -1j * u
+                    away = True
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
             first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else LANE_MM
-            for off in (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM):
+            offs = ((first, first + LANE_MM, first + 2 * LANE_MM, -first, -first - LANE_MM) if away else
+                    (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM))
+            for off in offs:
                 a, b = z + off * n, z + off * n + length * u
                 if not any(_overlap(a, b, t, h, LANE_MM / 2) for _, t, h in drawn):
                     break
