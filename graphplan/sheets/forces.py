@@ -678,7 +678,7 @@ def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[
     is built."""
     p, _, _ = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"],
-            "group_mu": dict(group_scales(p.mu))}
+            "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu))}
 
 
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
