@@ -470,32 +470,36 @@ def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float) -> 
     return rows
 
 
-def _tables_by_title(page: list[Placed], tables: list[Leaf], notes: Leaf, f: Form) -> list[Placed] | None:
-    """A set's last sheet as LAYOUT.md composes a sheet: the tables in a column (two or three where
-    one is too tall) at the right above the title block, the notes right over the title block, the
-    sheet's other drawings flowed again in the room to the column's left; None where they do not
-    fit so (the sheet then keeps the tables in rows, as flowed)."""
+def _tables_by_title(page: list[Placed], tables: list[Leaf], notes: Leaf | None, f: Form) -> list[Placed] | None:
+    """A set's sheet that holds tables as LAYOUT.md composes a sheet: its tables in a column (two or
+    three where one is too tall) at the right above the title block, the notes (where they are on
+    this sheet) right over the title block, the sheet's other drawings flowed again in the room to
+    the column's left; None where they do not fit so (the sheet then keeps its tables in rows, as
+    flowed)."""
     x0, y0, x1, y1 = field_of(f)
     foot = keep_out(f)[3]
-    names = {t.name for t in tables} | {notes.name}
+    names = {t.name for t in tables} | ({notes.name} if notes is not None else set())
     rest = [it for it in page if it.name not in names]
+    notes_h = notes.h + GAP if notes is not None else 0.0
     for parts in (1, 2, 3):
         groups = split(tables, parts)
         cw, ch = column_size(groups)
-        width = max(cw, notes.w)
-        if ch + GAP + notes.h > y1 - foot + 1e-9:
+        width = max(cw, notes.w if notes is not None else 0.0)
+        if ch + notes_h > y1 - foot + 1e-9 or width > x1 - x0 + 1e-9:
             continue
-        left = x1 - width
-        region = (x0, y0, left - GAP, y1)
         out = []
         if rest:
+            region = (x0, y0, x1 - width - GAP, y1)
+            if region[2] <= x0:
+                continue
             laid = flow([[Leaf(it.name, record=it.record) for it in rest]], region, keep_out(f))
             if laid is None or len(laid) != 1:
                 continue
             out = [Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in laid[0]]
         out += set_columns(groups, x1 - cw, y1)
-        nb = (x1 - width, foot, x1, foot + notes.h)
-        out.append(Placed(notes.name, top_left(notes.record, nb), nb))
+        if notes is not None:
+            nb = (x1 - width, foot, x1, foot + notes.h)
+            out.append(Placed(notes.name, top_left(notes.record, nb), nb))
         return out
     return None
 
@@ -722,8 +726,11 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
-        if {t.name for t in tables} <= {it.name for it in pages[-1]}:
-            last = _tables_by_title(pages[-1], tables, notes_leaf, f)
-            pages[-1] = last if last is not None else pages[-1]
+        for k, page in enumerate(pages):          # each sheet's tables in a column by its title block
+            here = {it.name for it in page}
+            mine = [t for t in tables if t.name in here]
+            if mine:
+                laid_out = _tables_by_title(page, mine, notes_leaf if notes_leaf.name in here else None, f)
+                pages[k] = laid_out if laid_out is not None else page
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")
