@@ -111,6 +111,14 @@ def _arms_on_their_lines(records) -> None:
             ux, uy = qx - px, qy - py
             n = math.hypot(ux, uy)
             off = abs((fx - px) * uy - (fy - py) * ux) / n          # the foot's distance from the line
+            if off >= 0.01:
+                # an arrow set beside its link in a lane: its line of action drawn thin along it,
+                # as long as it, within a few lanes — the arm ends on that line
+                lines = [q for q in rec.items if q.kind == "segment" and q.role == "projection"
+                         and abs(math.hypot(q.points[1][0] - q.points[0][0], q.points[1][1] - q.points[0][1]) - n) < 0.01
+                         and abs((q.points[1][0] - q.points[0][0]) * uy - (q.points[1][1] - q.points[0][1]) * ux) < 1e-6 * n * n
+                         and abs((q.points[0][0] - px) * uy - (q.points[0][1] - py) * ux) / n <= 3 * 2.5 + 1e-6]
+                off = min([abs((fx - q.points[0][0]) * uy - (fy - q.points[0][1]) * ux) / n for q in lines] + [off])
             assert off < 0.01, (rec.title, arm.text, off)
             assert abs((fx - ax) * ux + (fy - ay) * uy) / n < 0.01   # perpendicular
             assert abs(math.hypot(fx - ax, fy - ay) - h) <= 0.25 + 1e-9

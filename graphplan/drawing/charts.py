@@ -366,6 +366,7 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
         seen.append((x, half, below))
         rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
         low = min(low, -5.0 - 3.5 * below)
+    low = _path_values(rec, reach, mu_s, low, lang, step)
     for a, b in zip(cuts, cuts[1:]):
         xa, xb = X(a), X(b)
         rec.segment((xa, low - 4.0), (xb, low - 4.0), role="construction", layer="diagrams", step=step)
@@ -380,6 +381,29 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
               f"{dist_unit}/{unit('mm', lang)}, {f_mu} = {num(mu_p, lang)} {f_unit}/{unit('mm', lang)}", size=2.5,
               step=step)
     return rec
+
+
+VALUE_GAP_MM = 20.0    # the path axis's values at least this far apart
+
+
+def _path_values(rec: Record, reach: float, mu_s: float, low: float, lang: str, step: str) -> float:
+    """The path axis's values (0, 0.1, 0.2 … m, or degrees) in a row under the positions' numbers,
+    each at a tick above the axis, at a round step (1, 2 or 5 × 10ⁿ) no closer than
+    ``VALUE_GAP_MM``: the axis "s, m" reads in metres, not only in position numbers. Returns the
+    lowest row's y."""
+    if reach <= 0:
+        return low
+    lo = VALUE_GAP_MM * mu_s
+    step_v = min(m * 10.0 ** e for e in range(math.floor(math.log10(lo)) - 1, math.floor(math.log10(lo)) + 2)
+                 for m in (1.0, 2.0, 5.0) if m * 10.0 ** e >= lo - 1e-12)
+    y = low - 4.5
+    k = 0
+    while k * step_v <= reach + 1e-9:
+        x = k * step_v / mu_s
+        rec.segment((x, 0.0), (x, 2.5), role="construction", layer="diagrams", step=step)
+        rec.label((x, y), num(round(k * step_v, 9), lang), size=2.5, anchor="middle", step=step)
+        k += 1
+    return y
 
 
 def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | None = None) -> dict[str, Record]:

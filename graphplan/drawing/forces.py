@@ -20,6 +20,8 @@ from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit,
 
 Box = tuple[float, float, float, float]
 
+LETTER = 3.5    # mm: a force's, an arm's name — the sheet's lettering height (GOST 2.304 on A1, LAYOUT.md)
+
 
 def _pt(z: complex) -> tuple[float, float]:
     return (float(z.real), float(z.imag))
@@ -62,6 +64,11 @@ def _mu(fp: ForcePlans, gp: GroupPlan | None) -> float:
     return gp.mu_l if gp is not None and gp.mu_l else fp.mu_l
 
 
+def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
+    """The scale a group's force plan is drawn at (its own, else the plans')."""
+    return gp.mu_F or fp.mu_F
+
+
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[complex]:
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
     mech, kin = fp.ks.mech, fp.ks.kin
@@ -90,7 +97,8 @@ ALONG_DEG = 12.0   # a force within this angle of a link through its point lies 
 PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, to read
 
 
-SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel
+SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
+LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
 
 
 def arm_symbol(name: str) -> str:
@@ -278,6 +286,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
     drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
     guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
+    lanes: dict[str, complex] = {}     # a force set aside from its line of action: by how much (mm)
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
@@ -291,7 +300,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         # leaves D the other way): either hides in the link
         inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
-        if (inside or over) and name not in armed:
+        if inside and name in armed:
+            # an arm is drawn to its line: the arrow beside the link in a lane, its own length
+            # (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line
+            # of action drawn thin through the point (``lanes``)
+            a, b = z, z + length * u
+        if inside or (over and name not in armed):
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
             others += [_unit(e - z) for s, e in drawn_links for e in (s, e)
                        if abs(e - z) > 0.5 and _on_segment(z, s, e)
@@ -299,13 +313,28 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             n = 1j * u
             if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
                 n = -n
+            # a force a few degrees off its link's line (G3 at S3, the rocker 8° from vertical) on
+            # the side it turns away to, so that its head does not come back onto the link
+            away = False
+            sin_along = math.sin(math.radians(ALONG_DEG))
+            near = [_unit(e - s_) for s_, e in drawn_links if abs(e - s_) > 1e-9 and _on_segment(z, s_, e)
+                    and abs((u.conjugate() * _unit(e - s_)).imag) <= sin_along]
+            if near:
+                d = near[0] if dot(near[0], u) >= 0 else -near[0]
+                dev = u - d * dot(u, d)
+                if abs(dev) > math.sin(math.radians(1.0)):
+                    n = 1j * u if dot(1j * u, dev) > 0 else -1j * u
+                    away = True
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
-            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else SIDE_MM
-            for off in (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM):
+            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else LANE_MM
+            offs = ((first, first + LANE_MM, first + 2 * LANE_MM, -first, -first - LANE_MM) if away else
+                    (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM))
+            for off in offs:
                 a, b = z + off * n, z + off * n + length * u
-                if not any(_overlap(a, b, t, h) for _, t, h in drawn):
+                if not any(_overlap(a, b, t, h, LANE_MM / 2) for _, t, h in drawn):
                     break
+            lanes[name] = off * n
         drawn.append((z, a, b))
         return a, b
 
@@ -386,9 +415,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
                 role="construction", layer="construction", step=step)
         a, b = span[f.name]
+        off = lanes.get(f.name, 0j)
+        a, b = a - off, b - off          # the force's line of action (a laned arrow runs beside it)
         if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
             near = a if abs(t.foot - a) < abs(t.foot - b) else b
             rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
+        if off:                          # the line itself along the arrow, where the arm ends
+            rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
     for z, g in guides:
         _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step)
     lab = Labeler(rec)
@@ -403,9 +436,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
-        lab.place(mid, arm_symbol(t.name), 2.5, 1j * _unit(t.foot - about), step)
+        lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
-        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     return lab.done()
 
 
@@ -474,7 +507,8 @@ def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, 
 
 def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """The group's force polygon at μF: known forces head to tail, the reactions closing it."""
-    rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": fp.mu_F})
+    mu_F = _mu_F(fp, gp)
+    rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": mu_F})
     step = f"{gp.label}: ΣF = 0"
     for a, b in gp.lines:
         rec.segment(_pt(a), _pt(b), role="direction", layer="construction", step=step)
@@ -485,10 +519,10 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
-    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, 2.5, step=step)
+    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, LETTER, step=step)
                  for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
-    caption = f"μ_F = {num(fp.mu_F, lang)} {unit('N/mm', lang)}"
+    caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     if tiny:     # vectors too short to carry a label: named under the plan with their bound
         names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
         caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
@@ -613,7 +647,10 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
         tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
         rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
-        labels.append((tip, "P_b", u))
+        # named beside its shaft, on the side away from the pole: at the head it met the letters
+        # of the images the arrow points at (s3 on the coulisse's lever)
+        side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
+        labels.append((a + 0.55 * (tip - a), "P_b", side))
     lab = Labeler(rec)
     lab.place(0j, "p_v", 3.5, -1 + 1j, step)
     placed = set()
@@ -623,7 +660,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             placed.add(key)
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
-        lab.place(tip, force_symbol(name, lang), 2.5, u, step)
+        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     lab.done()
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
@@ -651,12 +688,12 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     cells = []
     for f in gp.forces:       # "on the drawing, mm": each length as laid off with the ruler
         if f.force:
-            cells.append((f.name, abs(f.force), measure(abs(f.force) / fp.mu_F, fp.precision)))
+            cells.append((f.name, abs(f.force), measure(abs(f.force) / _mu_F(fp, gp), fp.precision)))
         if f.couple:
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / fp.mu_F, fp.precision)))
+            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
@@ -736,13 +773,15 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
     if number is not None:
         _title_above(rec, 0.0, table_title(number, word("fs results", lang), lang), step)
     bottom = _table(rec, 0.0, 0.0, [word("M_b", lang), unit("N·m", lang), "δ, %"], rows, [34.0, 22.0, 18.0], step)
+    top = bottom
     if number is not None:
-        bottom -= 8.0
+        # the next table's title as far under this table as the sheet's tables stand apart
+        # (layout.GAP to its capitals' top; Tables 6 and 7 stood 2.3 mm apart)
+        from graphplan.drawing.layout import GAP
         from graphplan.drawing.tables import TITLE_MM, title_lines
         title = table_title(number + 1, REACTIONS_TITLE.get(lang, REACTIONS_TITLE["en"]), lang)
-        bottom -= line_pitch(3.5) * (len(title_lines(title, TITLE_MM)) - 1)
-        _title_above(rec, bottom, title, step)
-        bottom += 8.0
+        top = bottom - GAP - 3.5 - 2.2 - line_pitch(3.5) * (len(title_lines(title, TITLE_MM)) - 1)
+        _title_above(rec, top, title, step)
     rows = []
     for m in fp.reactions().values():
         err = _pct(m.error_pct, lang)
@@ -751,7 +790,7 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
             why.append(reaction_why(fp, m.key, lang))
         rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
                      num(m.analytic, lang), err])
-    bottom = _table(rec, 0.0, bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
+    bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
                                              word("exact N", lang), "δ, %"], rows,
                     [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
     if why:

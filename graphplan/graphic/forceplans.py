@@ -130,6 +130,7 @@ class GroupPlan:
     points: dict[str, complex]                      # the group's points on the drawing (mm)
     segments: list[tuple[str, str]]                 # the group's links as point pairs
     mu_l: float = 0.0                               # the scale the group is drawn (and measured) at, m/mm
+    mu_F: float = 0.0                               # the scale its force plan is drawn (and read) at, N/mm
 
 
 @dataclass
@@ -457,7 +458,8 @@ class _Plans:
             pts[d.outer_a.point] = pa
         forces = self.d.known[d.a] + self.d.known[d.b]
         self.groups.append(GroupPlan(d.label, kind, (d.a, d.b), forces, eqs, poly.sides, poly.lines,
-                                     found, {k: self.d.mm(v) for k, v in pts.items()}, segs, self.d.mu_l))
+                                     found, {k: self.d.mm(v) for k, v in pts.items()}, segs, self.d.mu_l,
+                                     self.d.mu_F))
 
     @property
     def p(self) -> float:
@@ -498,7 +500,7 @@ class _Plans:
         self.groups.append(GroupPlan(CRANK_LABEL, "crank", (crank,), list(self.d.known[crank]) + [balancing], [eq],
                                      poly.sides, poly.lines, found,
                                      {mech.crank.pivot: self.d.mm(o), mech.crank.pin: self.d.mm(a)},
-                                     [(mech.crank.pivot, mech.crank.pin)], self.d.mu_l))
+                                     [(mech.crank.pivot, mech.crank.pin)], self.d.mu_l, self.d.mu_F))
         return m_b, arm
 
 
@@ -532,22 +534,27 @@ def force_scale(ks: Kinetostatics, target_mm: float = POLYGON_MM) -> float:
 
 def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
               mu_l: float | None = None, mu_F: float | None = None,
-              mu_v: float | None = None, group_mu: dict[str, float] | None = None) -> ForcePlans:
+              mu_v: float | None = None, group_mu: dict[str, float] | None = None,
+              group_mu_F: dict[str, float] | None = None) -> ForcePlans:
     """The force plans of every group, the crank's balancing moment and the lever at one angle.
     Every group is drawn (and its arms measured) at ``mu_l``, a group named in ``group_mu`` (label →
     m/mm) at its own scale — the force sheet draws a small group (the crank's) larger where its cell
-    has room (sheets.forces)."""
+    has room (sheets.forces); likewise each force plan at ``mu_F`` or its own ``group_mu_F`` (label →
+    N/mm: a group whose forces are small drawn at a finer μF where its cell has room)."""
     phi = float(phi_deg) % 360.0
     ks = analyse(st, [phi])
     mu_l = mu_l or mechanism_scale(st)
     mu_F = mu_F or force_scale(ks)
     plans = _Plans(ks, precision, mu_l, mu_F)
     scales = dict(group_mu or {})
+    forces = dict(group_mu_F or {})
     for gf in ks.groups:
         if gf.dyad is not None:
             plans.d.mu_l = scales.get(gf.label, mu_l)
+            plans.d.mu_F = forces.get(gf.label, mu_F)
             plans.group(gf)
     plans.d.mu_l = scales.get(CRANK_LABEL, mu_l)
+    plans.d.mu_F = forces.get(CRANK_LABEL, mu_F)
     m_b, arm = plans.crank()
     return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v))
 

@@ -299,13 +299,18 @@ def kern(prev: str, c: str, size: float) -> float:
 
 
 TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl at half height or more
+BOWLED = "PРF"       # … of them those whose bowl or bar ends at about half the height (0.45 in osifont)
+BOWL_TOP = 0.35      # an index reaching higher than this (of the letter height) would meet that bowl (a capital, b, d: 0.4; з 0.30)
+BOWL_GAP = 0.1       # the gap it keeps from the letter's ink then, of the letter height
 
 
 def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     """The shift (mm, negative: to the left) of a subscript ``c`` (letters ``sub`` high) after the
     letter ``prev``: after a letter open below on its right (P, Г, Т, F, 7) the index tucks in under
     its bowl or bar, its ink starting 0.15 of the letter height inside the letter's box, as a
-    typesetter kerns it — set at the full advance it hangs apart, belonging to neither word."""
+    typesetter kerns it — set at the full advance it hangs apart, belonging to neither word. A tall
+    index (a capital, b, d) after a bowl or a middle bar (P, Р, F) would reach up into it (the D of
+    P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink."""
     if prev not in TUCKED:
         return 0.0
     m = _metrics()
@@ -313,7 +318,10 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     if box is None or cb is None:
         return 0.0
     adv = m["advance"].get(prev, m["missing"])
-    return min(0.0, (box[2] * em(size) - 0.15 * size) - (adv * em(size) + cb[0] * em(sub)))
+    inside = -0.15 * size
+    if prev in BOWLED and cb[3] * em(sub) - SUB_SHIFT * size > BOWL_TOP * size:
+        inside = BOWL_GAP * size
+    return min(0.0, (box[2] * em(size) + inside) - (adv * em(size) + cb[0] * em(sub)))
 
 
 @lru_cache(maxsize=1)

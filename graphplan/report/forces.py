@@ -66,7 +66,8 @@ def forces_json(fp) -> dict[str, Any]:
         "inertia": inertia,
         "groups": [{"label": g.label, "kind": g.kind, "links": list(g.links),
                     "reactions": list(g.reactions),
-                    "acting": {k: m.name for k, m in g.reactions.items()}} for g in fp.groups],
+                    "acting": {k: m.name for k, m in g.reactions.items()},
+                    "mu_F": g.mu_F or fp.mu_F} for g in fp.groups],
     })
 
 
@@ -109,6 +110,8 @@ def forces_table(fp, lang: str = "uk") -> str:
     for gp in fp.groups:
         kind = pair_kind(gp.kind, lang) if gp.kind != "crank" else w("crank group")
         lines += ["", w("group line", label=gp.label, kind=kind, links=", ".join(gp.links))]
+        if gp.mu_F and gp.mu_F != fp.mu_F:      # its force plan at its own scale (the force sheet's)
+            lines.append(plain(f"  μ_F = {n(gp.mu_F)} {unit('N/mm', lang)}"))
         for eq in gp.equations:
             terms = " ".join(f"{'+' if t.value >= 0 else '−'} {sym(t.name)}" +
                              ("" if t.couple else f"·{n(abs(t.arm_mm))}") for t in eq.terms)
@@ -121,7 +124,8 @@ def forces_table(fp, lang: str = "uk") -> str:
         cells = []
         for f in gp.forces:
             if f.force:
-                cells.append((sym(f.name), n(abs(f.force), 5), n(drawn_mm(abs(f.force) / fp.mu_F, fp.precision))))
+                cells.append((sym(f.name), n(abs(f.force), 5),
+                              n(drawn_mm(abs(f.force) / (gp.mu_F or fp.mu_F), fp.precision))))
             if f.couple:
                 cells.append((sym(f.name), f"{n(f.couple, 5)} {unit('N·m', lang)}", "—"))
         lines.append(w("forces on group"))

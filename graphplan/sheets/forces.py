@@ -128,6 +128,14 @@ def group_scales(mu: dict[str, float]) -> tuple[tuple[str, float], ...]:
     return tuple(sorted((k[len(GROUP):], v) for k, v in mu.items() if k.startswith(GROUP)))
 
 
+PLAN = "plan "        # mu["plan II(4-5)"]: a group's force plan drawn at its own μF
+
+
+def plan_scales(mu: dict[str, float]) -> tuple[tuple[str, float], ...]:
+    """The force plans the sheet draws at their own μF, (label, μF) in order."""
+    return tuple(sorted((k[len(PLAN):], v) for k, v in mu.items() if k.startswith(PLAN)))
+
+
 @dataclass
 class ForceDrafter:
     """Draws what the force sheet holds at given scales, remembering it."""
@@ -148,16 +156,17 @@ class ForceDrafter:
         return self.memo[key]
 
     def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None,
-           group_mu: tuple[tuple[str, float], ...] = ()):
+           group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = ()):
         from graphplan.graphic import forceplans
-        return self._once(("fp", mu_l, mu_F, mu_v, group_mu), lambda: forceplans.construct(
+        return self._once(("fp", mu_l, mu_F, mu_v, group_mu, plan_mu), lambda: forceplans.construct(
             self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
-            group_mu=dict(group_mu)))
+            group_mu=dict(group_mu), group_mu_F=dict(plan_mu)))
 
     def groups_fp(self, mu: dict[str, float]):
-        """The groups' force plans at the sheet's scales: μl, μF, μv and a group's own μl where the
-        plan draws it larger (``mu["group <label>"]``)."""
-        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
+        """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
+        plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
+        (``mu["plan <label>"]``)."""
+        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), plan_scales(mu))
 
     def plans(self, mu_a: float | None = None):
         from graphplan.graphic.forceplans import acceleration_plan      # only the plans drawn
@@ -232,7 +241,8 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
 
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
     """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
-    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu))
+    key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
+           plan_scales(mu))
     return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
 
 
@@ -290,8 +300,13 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     for m_l, labels in by_scale.items():
         if m_l != mu["scheme"]:
             scales.append(format_scale("mu_l", m_l, lang) + f" ({w('group').lower()} {', '.join(labels)})")
-    scales += [format_scale(m, mu[k], lang) for m, k in (("mu_F", "forces"), ("mu_a", "acceleration"),
-                                                          ("mu_v", "lever"))]
+    forces: dict[float, list[str]] = {}
+    for gp in fp.groups:                  # each force plan at its own μF (stated under it, too)
+        forces.setdefault(gp.mu_F or mu["forces"], []).append(gp.label)
+    for m_F, labels in forces.items():
+        tail = f" ({w('polygon').lower()} {', '.join(labels)})" if len(forces) > 1 else ""
+        scales.append(format_scale("mu_F", m_F, lang) + tail)
+    scales += [format_scale(m, mu[k], lang) for m, k in (("mu_a", "acceleration"), ("mu_v", "lever"))]
     from graphplan.sheets.compose import lines_of
     return lines_of(notes(dr.st, scales, lines, lang))
 
@@ -557,6 +572,64 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
 SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their targets to keep one sheet
 
 
+# how much larger than its target a family of a set grows while the set needs no more sheets: the
+# scheme and the groups, where the crowding is (the coulisse's crank end at 1:4 on an A2 sheet 70 %
+# empty), as far as a sheet holds them; the others as before
+SET_LARGEST = {"scheme": 4.0, "groups": 4.0}
+
+
+def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float) -> list[list]:
+    """A set's rows in reading order: the scheme; each group with its force plan; the acceleration
+    plan and the lever; the charts, then the hodographs as one grid (kept together on one sheet —
+    R34's stood alone on the coulisse's sheet 3, the other four on sheet 4); the tables and notes
+    (``tail``)."""
+    rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
+    rows.append(leaves["acceleration"] + leaves["lever"])
+    hods = leaves["hodographs"]
+    if hods:
+        cw = max(extent(h)[0] for h in hods)
+        cols = max(1, min(len(hods), int((width + GAP) // (cw + GAP))))
+        rows.append(leaves["charts"] + [Grid(hods, cols)])
+    else:
+        rows.append(leaves["charts"])
+    rows.append(tail)
+    return rows
+
+
+def _tables_by_title(page: list[Placed], tables: list[Leaf], notes: Leaf | None, f: Form) -> list[Placed] | None:
+    """A set's sheet that holds tables as LAYOUT.md composes a sheet: its tables in a column (two or
+    three where one is too tall) at the right above the title block, the notes (where they are on
+    this sheet) right over the title block, the sheet's other drawings flowed again in the room to
+    the column's left; None where they do not fit so (the sheet then keeps its tables in rows, as
+    flowed)."""
+    x0, y0, x1, y1 = field_of(f)
+    foot = keep_out(f)[3]
+    names = {t.name for t in tables} | ({notes.name} if notes is not None else set())
+    rest = [it for it in page if it.name not in names]
+    notes_h = notes.h + GAP if notes is not None else 0.0
+    for parts in (1, 2, 3):
+        groups = split(tables, parts)
+        cw, ch = column_size(groups)
+        width = max(cw, notes.w if notes is not None else 0.0)
+        if ch + notes_h > y1 - foot + 1e-9 or width > x1 - x0 + 1e-9:
+            continue
+        out = []
+        if rest:
+            region = (x0, y0, x1 - width - GAP, y1)
+            if region[2] <= x0:
+                continue
+            laid = flow([[Leaf(it.name, record=it.record) for it in rest]], region, keep_out(f))
+            if laid is None or len(laid) != 1:
+                continue
+            out = [Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in laid[0]]
+        out += set_columns(groups, x1 - cw, y1)
+        if notes is not None:
+            nb = (x1 - width, foot, x1, foot + notes.h)
+            out.append(Placed(notes.name, top_left(notes.record, nb), nb))
+        return out
+    return None
+
+
 def _set(nat: Natural, f: Form) -> Plan:
     """A set: every family at least at its target size (or as large as a sheet holds), flowing over
     the sheets in reading order; then grown while the set needs no more sheets."""
@@ -566,10 +639,8 @@ def _set(nat: Natural, f: Form) -> Plan:
     for factor in (TABLES, 1.0):
         def pages(mu):
             leaves = _leaves(nat, mu)
-            rows = [leaves["scheme"]] + [[g, p] for g, p in zip(leaves["groups"], leaves["forces"])]
-            rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-            rows.append([Leaf(n, w, h) for n, w, h in nat.tables[factor]]
-                        + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
+            rows = _set_rows(leaves, [Leaf(n, w, h) for n, w, h in nat.tables[factor]]
+                             + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))], region[2] - region[0])
             out = flow(rows, region, keep)
             return None if out is None else len(out)
         mu = None
@@ -582,7 +653,7 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         count = pages(mu)
         grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
-                              lambda name, m: nat.families[name].rel(m) <= 1.25 + 1e-9)
+                        lambda name, m: nat.families[name].rel(m) <= SET_LARGEST.get(name, 1.25) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0]:
             best = (count, Plan(mu, factor, "set", 1, 1, count))
@@ -636,7 +707,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
-    return _grown_lever(dr, nat, f, _grown_groups(dr, nat, f, p)), nat, dr
+    return _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))), nat, dr
 
 
 MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
@@ -656,11 +727,10 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
     or needs no more sheets (a set)."""
     if p.shape == "set":
-        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
-        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-        rows.append([Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
-                    + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))])
-        out = flow(rows, field_of(f), keep_out(f))
+        region = field_of(f)
+        rows = _set_rows(leaves, [Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
+                         + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))], region[2] - region[0])
+        out = flow(rows, region, keep_out(f))
         return out is not None and len(out) <= p.sheets
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
@@ -771,6 +841,46 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     return replace(p, mu=mu)
 
 
+def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """LAYOUT.md's rule for each force plan: its own μF from the standard series, the finest at
+    which it still fits its cell. A group whose forces are small beside the crank's (the coulisse's
+    outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer μF than the family's — its largest
+    vector no longer than the largest plan's — while the composition still fits at every other
+    scale unchanged (II(4-5) at 20 N/mm instead of 40: R34 87 mm, not 43). The grown scales go into
+    ``mu`` as "plan <label>" and are printed under each plan and in the notes."""
+    from graphplan.sheets.compose import finer
+    fam = nat.families["forces"]
+    mu = dict(p.mu)
+    base = mu["forces"]
+    fp = dr.groups_fp(mu)
+    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
+    largest = max(list(longest.values()) + [0.0])
+    if largest <= 0:
+        return p
+    leaves = _leaves(nat, mu)
+    for i, gp in enumerate(fp.groups):      # the groups as _grown_groups drew them
+        if GROUP + gp.label in mu:
+            w, h = nat.families["groups"].size(mu[GROUP + gp.label], i)
+            leaves["groups"][i] = Leaf(leaves["groups"][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
+    for i, gp in enumerate(fp.groups):
+        e = longest[gp.label]
+        if e <= 0:
+            continue
+        best, s = None, finer(base)
+        while s is not None and e * base / s <= largest + 1e-9:
+            w, h = fam.size(s, i)
+            trial = {**leaves, "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name,
+                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
+                                          *leaves["forces"][i + 1:]]}
+            if not _fits(nat, f, p, trial):
+                break
+            best, s = (s, trial), finer(s)
+        if best is not None:
+            mu[PLAN + gp.label] = best[0]
+            leaves = best[1]
+    return replace(p, mu=mu)
+
+
 def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, dict[str, float]]:
     """Every drawing of the force sheet of ``format`` with the scales it is drawn at (the scheme's
     and the groups' μl, μF, μa, μv, the charts' and hodographs' μ) — for ``forces --json``: the
@@ -786,7 +896,7 @@ def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[
     is built."""
     p, _, _ = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"],
-            "group_mu": dict(group_scales(p.mu))}
+            "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu))}
 
 
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
@@ -823,13 +933,18 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        rows = [leaves["scheme"]] + [[g, q] for g, q in zip(leaves["groups"], leaves["forces"])]
-        rows += [leaves["acceleration"] + leaves["lever"], leaves["charts"] + leaves["hodographs"]]
-        rows.append(tables + [Leaf("notes", record=note_block(note_lines, TITLE))])
+        notes_leaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        rows = _set_rows(leaves, tables + [notes_leaf], region[2] - region[0])
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
+        for k, page in enumerate(pages):          # each sheet's tables in a column by its title block
+            here = {it.name for it in page}
+            mine = [t for t in tables if t.name in here]
+            if mine:
+                laid_out = _tables_by_title(page, mine, notes_leaf if notes_leaf.name in here else None, f)
+                pages[k] = laid_out if laid_out is not None else page
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")
