@@ -10,6 +10,7 @@ import cmath
 import math
 
 from graphplan.drawing.labels import place_labels
+from graphplan.drawing.linkshape import extra_points, rigid_outline
 from graphplan.drawing.tables import table
 from graphplan.graphic.record import LabelRequest, Record, arc_head, line_pitch, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
@@ -73,6 +74,10 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[co
     for r in riders:
         pos[f"~{r}"] = complex(kin.bodies[r].at(mech.links[r].local[next(iter(mech.links[r].local))])[0][0]) / mu
     pts = list(pos.values())
+    extras = [complex(body.at(lk.local[p])[0][0]) / mu for p in extra_points(lk)]
+    if extras and len(lk.joints) >= 2:       # one rigid link through all its points (O2–B–D)
+        return rigid_outline([pos[p] for p in lk.joints],
+                             extras + [z for k, z in pos.items() if k.startswith("~")])
     if len(lk.joints) >= 3:
         return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
     if len(pts) < 2:
@@ -80,6 +85,16 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[co
     axis = _unit(pts[1] - pts[0])
     proj = sorted(pts, key=lambda z: dot(z - pts[0], axis))
     return [proj[0], proj[-1]]
+
+
+def _point_name(fp: ForcePlans, link: str, z: complex, mu: float) -> str:
+    """The name of the link's point drawn at ``z`` (mm): the point itself (S3, D), else the
+    centre of mass the lab letters S<number>."""
+    lk = fp.ks.mech.links[link]
+    body = fp.ks.kin.bodies[link]
+    near = [(abs(complex(body.at(lk.local[p])[0][0]) / mu - z), p) for p in lk.local]
+    hit = min(near, default=(1e9, ""))
+    return hit[1] if hit[0] < 0.5 else (lk.com or f"S{lk.number}")
 
 
 def _pairs(points: list[complex]) -> list[tuple[complex, complex]]:
@@ -260,6 +275,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
+        for p in extra_points(lk):          # its other points (D where P_D acts), each by its name
+            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
+            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+            if all(n != p for _, n in names):
+                names.append((z, p))
     forces = [f for f in gp.forces if f.force != 0]
     outer = [m for m in gp.reactions.values()
              if {fp.ks.reactions[m.key].frm, fp.ks.reactions[m.key].on} - set(gp.links)]
@@ -317,7 +337,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         labels.append((a, f.name, -u) if abs(b - z) < 0.5 else (b, f.name, u))
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
-            centres.append((z, lk.com or f"S{lk.number}"))
+            centres.append((z, _point_name(fp, f.link, z, mu)))
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":

@@ -9,6 +9,7 @@ import math
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_labels
+from graphplan.drawing.linkshape import extra_points, rigid_outline
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -64,11 +65,10 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                            ((-1, -1), (1, -1), (1, 1), (-1, 1))]
                 rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
             continue
-        for p, q in zip(joints, joints[1:]):
-            rec.segment(_pt(pts[p]), _pt(pts[q]), role=role, width=width, layer="mechanism", step=step)
-        if len(joints) > 2:
-            rec.segment(_pt(pts[joints[-1]]), _pt(pts[joints[0]]), role=role, width=width,
-                        layer="mechanism", step=step)
+        # one rigid link through all its points: the rocker O2–B–D to D, a plate round E off its line
+        shape = rigid_outline([pts[p] for p in joints], [pts[p] for p in extra_points(link) if p in pts])
+        for p, q in zip(shape, shape[1:]):
+            rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
     for name, link in mech.links.items():
         for j in link.joints:
             rec.point(_pt(pts[j]), role="joint" if thick else "dot", layer="mechanism")
