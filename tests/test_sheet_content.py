@@ -253,7 +253,7 @@ def test_dead_centre_velocity_is_the_number_zero(lab_sheet):
     lines = texts(lab_sheet)
     k = title_at(lines, "Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)")
     head = lines[k + 1:k + 8]
-    assert head == ["№", "φ, °", "v_{A}", "v_{B}", "v_{BA}", "ω_{AB}", "δ_{max}, %"]
+    assert head == ["№", "φ, °", "v_{A}", "v_{B}", "v_{BA}", "ω_{2}", "δ_{max}, %"]
     rows = [lines[k + 8 + 7 * n: k + 15 + 7 * n] for n in range(8)]
     assert rows[0][3] == "0" and rows[4][3] == "0"
     assert not any("—" == c for r in rows for c in r[2:6])
