@@ -502,3 +502,32 @@ def collisions(record: Record, clear: float = CHECK) -> list[str]:
             if _meets(boxes[a], boxes[b]):
                 out.append(f"{texts[a].text!r} ↔ {texts[b].text!r} at ({boxes[a][0]:.1f}, {boxes[a][1]:.1f})")
     return out
+
+
+def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels") -> Record:
+    """One label asked at several anchors in order of preference (a link's number at the middle of
+    its bar, then a third and a quarter from either end): the first anchor with a free spot beside
+    it takes it; when none has, the first where only thin lines are in the way, those broken under
+    it (``_breaking``, as a joint's letter at a crowded pivot); else as ``place_labels`` places any
+    label (farther out, on a leader) — a number stays by its bar, not 15 mm off it."""
+    if _SKETCH[-1] or not alternatives:
+        return record
+    ob = obstacles(record.items)
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink)
+        if spot is not None:
+            box, start, _ = spot
+            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return record
+    for req in alternatives:             # by its bar, the thin positions' lines broken under it
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        spot = _breaking(record, req, ink)
+        if spot is not None:
+            box, start, _ = spot
+            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return record
+    return place_labels(record, alternatives[:1], layer)
