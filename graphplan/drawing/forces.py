@@ -155,6 +155,23 @@ def _overlap(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -
     return min(hi, abs(b - a)) - max(lo, 0.0) > tol
 
 
+def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bool:
+    """Whether the arrow a→b crosses a drawn link's line (their segments meet, not just touch at an
+    end within 0.3 mm)."""
+    def cross(p: complex, q: complex) -> float:
+        return p.real * q.imag - p.imag * q.real
+    d = b - a
+    for s, e in links:
+        w = e - s
+        den = cross(d, w)
+        if abs(den) < 1e-12:
+            continue
+        t, v = cross(s - a, w) / den, cross(s - a, d) / den
+        if 0.3 / abs(d) < t < 1 - 0.3 / abs(d) and 0.0 <= v <= 1.0:
+            return True
+    return False
+
+
 def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
     d = b - a
     if abs(d) < 1e-9:
@@ -321,11 +338,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 n = -n
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
-            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else SIDE_MM
-            for off in (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM):
-                a, b = z + off * n, z + off * n + length * u
-                if not any(_overlap(a, b, t, h) for _, t, h in drawn):
-                    break
+            block = any(abs(w - z) < 0.5 for w, _ in guides)
+            first = BLOCK_HALF + 1.0 if block else SIDE_MM
+            offs = (first, -first, first + SIDE_MM, -first - SIDE_MM, first + 2 * SIDE_MM)
+            lanes = [(z + off * n, z + off * n + length * u) for off in offs]
+            free = [(a, b) for a, b in lanes if not any(_overlap(a, b, t, h) for _, t, h in drawn)]
+            a, b = free[0] if free else lanes[-1]
+            if block and _crosses(a, b, drawn_links):
+                # beside a slider's block, a lane across no link: leaving the block's level, else
+                # arriving at it, head by the block (Φ5 at C crossed the rod BC coming down to C)
+                ends = [(z + off * n + k * length * u, z + off * n + (k + 1) * length * u)
+                        for off in offs for k in (0, -1)]
+                a, b = next((ab for ab in ends if not _crosses(*ab, drawn_links)
+                             and not any(_overlap(*ab, t, h) for _, t, h in drawn)), (a, b))
         drawn.append((z, a, b))
         return a, b
 
@@ -334,7 +359,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(f.force)
         a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
-        labels.append((a, f.name, -u) if abs(b - z) < 0.5 else (b, f.name, u))
+        labels.append((a, f.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, f.name, u))   # an arrow ending at its point: named at its tail
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
             centres.append((z, _point_name(fp, f.link, z, mu)))
@@ -380,7 +405,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(v)
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
-        labels.append((a, m.name, -u) if abs(b - z) < 0.5 else (b, m.name, u))
+        labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)

@@ -275,9 +275,16 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     for lay in every:
         if lay.key in thick_keys:
             draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
+    # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
+    late: list[LabelRequest] = []
+    for j, lay in enumerate(extremes):
+        X = where(sc, lay, sc.body_of(out), out)
+        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
+        late.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+    late += stroke_dimensions(rec, plans, O)
     labels: list[LabelRequest] = []
     # letters at the first thick position, placed first: each beside its point (a link's number,
-    # placed after them, may go a little farther along its bar)
+    # placed after them, by its bar)
     lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
@@ -286,11 +293,12 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
                                    breaks=True))   # crowded by thin positions: beside it, the lines broken
     _, middle = support_direction(leaving(sc, thick_lays, crank.pivot), omega=True)
     labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
-    if lettered:
-        place_labels(rec, labels)
-        for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
-            place_first(rec, alternatives)
-        labels = []
+    if not lettered:
+        return rec
+    place_labels(rec, labels)
+    for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
+        place_first(rec, alternatives)
+    labels = []
     # numbers of the positions at the crank pin, the output point and the groups' inner joints
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
     for p in plans.positions:
@@ -301,12 +309,8 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
         for name in dict.fromkeys([out] + inner):
             X = where(sc, lay, sc.body_of(name), name)
             labels.append(LabelRequest(X, label, toward=-1j, size=2.5, optional=True))
-    for j, lay in enumerate(extremes):
-        X = where(sc, lay, sc.body_of(out), out)
-        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
-        labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
-    labels += stroke_dimensions(rec, plans, O)
-    return place_labels(rec, labels) if lettered else rec
+    labels += late
+    return place_labels(rec, labels)
 
 
 DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)
