@@ -507,8 +507,8 @@ def collisions(record: Record, clear: float = CHECK) -> list[str]:
 def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels") -> Record:
     """One label asked at several anchors in order of preference (a link's number at the middle of
     its bar, then a third and a quarter from either end): the first anchor with a free spot beside
-    it takes it; when none has, the first where only thin lines are in the way, those broken under
-    it (``_breaking``, as a joint's letter at a crowded pivot); else as ``place_labels`` places any
+    it takes it; when none has, the first asked with ``breaks`` where only thin lines are in the
+    way, those broken under it (``_breaking``, as a joint's letter at a crowded pivot); else as ``place_labels`` places any
     label (farther out, on a leader) — a number stays by its bar, not 15 mm off it."""
     if _SKETCH[-1] or not alternatives:
         return record
@@ -522,7 +522,7 @@ def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "
             record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
                          layer=layer)
             return record
-    for req in alternatives:             # by its bar, the thin positions' lines broken under it
+    for req in (r for r in alternatives if r.breaks):   # by its bar, the thin lines broken under it
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         spot = _breaking(record, req, ink)
         if spot is not None:

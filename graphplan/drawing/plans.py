@@ -433,7 +433,8 @@ def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex], along: bool =
         else:
             spots = [pts[next(iter(link.local))]]
             normal = 1j
-        asked = [LabelRequest(z, str(link.number), toward=normal, size=5.0, optional=True) for z in spots]
+        asked = [LabelRequest(z, str(link.number), toward=normal, size=5.0, optional=True,
+                              breaks=len(joints) >= 2) for z in spots]     # by a bar: its lines may break
         out.append(asked if along else asked[0])
     return out
 
