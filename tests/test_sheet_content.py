@@ -67,7 +67,7 @@ def title_at(lines: list[str], title: str) -> int:
     """The index of a table title's last line (a long title wraps over the table's width)."""
     for k in range(len(lines)):
         for n in range(1, 4):
-            if " ".join(lines[k:k + n]) == title:
+            if " ".join(lines[k:k + n]).replace("\u00a0", " ") == title:     # no-break spaces read as spaces
                 return k + n - 1
     raise ValueError(title)
 

@@ -8,7 +8,7 @@ import math
 
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
-from graphplan.drawing.labels import LabelRequest, place_first, place_labels
+from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from graphplan.drawing.linkshape import extra_points, rigid_outline
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
@@ -455,7 +455,7 @@ def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float =
 def labelled(plan: Plan) -> Record:
     """A velocity or acceleration plan's record with its labels placed (the pole at (0, 0))."""
     rec = Record(plan.record.title, list(plan.record.items), dict(plan.record.scales))
-    return place_labels(rec, plan.labels)
+    return place_owned(rec, plan.labels)      # crowded points: each letter nearest its own point
 
 
 def plan_records(plans: Plans, kind: str) -> dict[int, Record]:
