@@ -229,3 +229,32 @@ def test_a_sliders_force_beside_its_guide_crosses_no_link():
     a, b = (complex(x, y) for x, y in arrows[0].points)
     for s, e in links:
         assert not meet(a, b, s, e), (s, e)
+
+
+def test_crowded_plan_points_are_lettered_unambiguously():
+    """The four-bar's velocity plan 8 put a, b and s2 within 4 mm, "b" nearer a than b. Now every
+    letter of a point with another within 4 mm stands at most half as far from its own point as
+    from any other, or hangs on a leader starting at its own point."""
+    from graphplan.drawing.plans import velocity_records
+    from graphplan.graphic.plans import build_plans
+    from test_link_points import FOURBAR
+    plans = build_plans(scene_study(FOURBAR), precision=0.5, mu_l=0.002, mu_v=0.015)
+    recs = velocity_records(plans)
+    crowded = 0
+    for p in plans.positions:
+        rec = recs[p.key]
+        asked = p.velocity.labels
+        leaders = [complex(*q.points[0]) for q in rec.items if q.kind == "segment" and q.role == "label"]
+        for req in asked:
+            others = [r.at for r in asked if abs(r.at - req.at) > 1e-9]
+            if not any(abs(z - req.at) < 4.0 for z in others):
+                continue
+            crowded += 1
+            text = next(q for q in rec.items if q.kind == "text" and q.text == req.text)
+            box = text.ink()
+
+            def gap(z: complex) -> float:
+                return abs(complex(max(box[0] - z.real, 0.0, z.real - box[2]), max(box[1] - z.imag, 0.0, z.imag - box[3])))
+            hung = any(abs(s - req.at) < 1.5 for s in leaders)
+            assert hung or all(gap(z) >= 2.0 * gap(req.at) for z in others), (p.index, req.text)
+    assert crowded >= 3                                   # plan 8's a, b, s2 at least
