@@ -317,31 +317,54 @@ DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (cl
 DIM_PAST = 7.0    # … and at least this far past the drawing's last line on that side, over the stroke
 
 
-def beyond(rec: Record, X1: complex, u: complex, away: complex, span: float) -> float:
-    """How far (mm) the drawing reaches from the slider's path on the side ``away``, over the
-    stroke X1 … X1 + span·u (5 mm more each end): the rods' and the rocker's lines above a
-    coulisse's guide — the stroke's dimension goes past them, clear of the drawing, not through
-    them (the review's H = 350 across the slotter's rods)."""
-    far = 0.0
-
-    def take(z: complex, reach: float = 0.0) -> None:
-        nonlocal far
-        t = ((z - X1) * u.conjugate()).real
-        if -5.0 - reach <= t <= span + 5.0 + reach:
-            far = max(far, ((z - X1) * away.conjugate()).real + reach)
+def _strokes(rec: Record) -> list[tuple[complex, complex]]:
+    """Every drawn line of the record as straight pieces (arcs and circles as 5° chords)."""
+    out = []
     for p in rec.items:
         if p.kind in ("circle", "arc"):
             c = complex(*p.points[0])
             lo, hi = p.angles if p.kind == "arc" else (0.0, 360.0)
-            for k in range(73):                   # sampled every 5° of its sweep
-                a = math.radians(lo + (hi - lo if hi >= lo else hi - lo + 360.0) * k / 72)
-                take(c + p.radius * cmath.exp(1j * a))
+            sweep = (hi - lo) % 360.0 or 360.0
+            zs = [c + p.radius * cmath.exp(1j * math.radians(lo + sweep * k / 72)) for k in range(73)]
+        elif p.kind in ("segment", "vector", "polyline", "polygon"):
+            zs = [complex(x, y) for x, y in p.points] + ([complex(*p.points[0])] if p.kind == "polygon" else [])
+        else:
             continue
-        pts = [complex(x, y) for x, y in p.points]
-        for s0, s1 in zip(pts, pts[1:]) if len(pts) > 1 else [(pts[0], pts[0])]:
-            for k in range(11):                   # a line's points over the stroke, sampled
-                take(s0 + (s1 - s0) * k / 10)
-    return far
+        out += list(zip(zs, zs[1:]))
+    return out
+
+
+def dimension_place(rec: Record, X1: complex, u: complex, away: complex, span: float) -> tuple[complex, float]:
+    """Where the stroke's dimension line goes: the side of the slider's path (``away`` from the
+    crank first) and the offset (from ``DIM_OFF`` out, 1 mm steps, to ``DIM_PAST`` past the
+    drawing's last line on that side over the stroke) at which it crosses the fewest lines — the
+    nearest such, the side away from the crank on a tie. The slotter's H = 350 ran 12 mm above
+    its guide through its rods; it now runs above them, clear."""
+    import numpy as np
+    pieces = _strokes(rec)
+    if not pieces:
+        return away, DIM_OFF
+    P = np.array([[((a - X1) * u.conjugate()).real, ((a - X1) * u.conjugate()).imag,
+                   ((b - X1) * u.conjugate()).real, ((b - X1) * u.conjugate()).imag] for a, b in pieces])
+    best = None
+    for sign, side in ((1.0, away), (-1.0, -away)):
+        # in the path's frame (x along u, y across, + toward n = 1j·u): the side's y sign
+        ys = (side * u.conjugate()).imag
+        x0, y0, x1, y1 = P[:, 0], P[:, 1] * ys, P[:, 2], P[:, 3] * ys
+        over = ((np.maximum(x0, x1) >= -5.0) & (np.minimum(x0, x1) <= span + 5.0))
+        reach = float(np.max(np.where(over, np.maximum(y0, y1), 0.0), initial=0.0))
+        for off in np.arange(DIM_OFF, max(DIM_OFF, reach + DIM_PAST) + 0.5, 1.0):
+            dy = y1 - y0
+            with np.errstate(all="ignore"):
+                t = (off - y0) / dy
+                x = x0 + t * (x1 - x0)
+            hits = int(np.sum((np.abs(dy) > 1e-12) & (t >= 0) & (t <= 1) & (x >= 0) & (x <= span)))
+            key = (hits, sign < 0, float(off))
+            if best is None or key < best[0]:
+                best = (key, side, float(off))
+            if hits == 0:
+                break
+    return best[1], best[2]
 
 
 def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
@@ -362,7 +385,7 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelReques
     side = ((O - X1) * n.conjugate()).real          # O's side of the path (+ along n)
     away = -n if side > 0 else n
     step = "dimensions"
-    off = max(DIM_OFF, beyond(rec, X1, u, away, abs(X2 - X1)) + DIM_PAST)
+    away, off = dimension_place(rec, X1, u, away, abs(X2 - X1))
     a, b = X1 + away * off, X2 + away * off
     for X, Y in ((X1, a), (X2, b)):
         rec.segment(_pt(X + away * 1.5), _pt(Y + away * 2.0), role="construction", layer="construction", step=step)
