@@ -484,7 +484,8 @@ class Replay:
                 p = ""
             rel = (f"{s_}_{{{C}{P}}}" if plan.kind == "velocity" else f"a^τ_{{{C}{P}}}")
             pair_l = braced(n.own_label(P)) + n.own_label(C)
-            fields = dict(w=w, link=link_name, rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
+            # ω3 by the link's number, as the sheet's tables write it
+            fields = dict(w=w, link=str(link.number), rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
                           unit=both(lambda lang: unit("rad/s" if kind == "omega" else "rad/s²", lang)))
             if e.value == 0 or signed == 0:
                 caption = say("rate zero", **fields)
