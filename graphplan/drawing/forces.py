@@ -10,6 +10,7 @@ import cmath
 import math
 
 from graphplan.drawing.labels import place_labels
+from graphplan.drawing.linkshape import extra_points, rigid_outline
 from graphplan.drawing.tables import table
 from graphplan.graphic.record import LabelRequest, Record, arc_head, line_pitch, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan
@@ -80,6 +81,10 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[co
     for r in riders:
         pos[f"~{r}"] = complex(kin.bodies[r].at(mech.links[r].local[next(iter(mech.links[r].local))])[0][0]) / mu
     pts = list(pos.values())
+    extras = [complex(body.at(lk.local[p])[0][0]) / mu for p in extra_points(lk)]
+    if extras and len(lk.joints) >= 2:       # one rigid link through all its points (O2–B–D)
+        return rigid_outline([pos[p] for p in lk.joints],
+                             extras + [z for k, z in pos.items() if k.startswith("~")])
     if len(lk.joints) >= 3:
         return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
     if len(pts) < 2:
@@ -87,6 +92,16 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[co
     axis = _unit(pts[1] - pts[0])
     proj = sorted(pts, key=lambda z: dot(z - pts[0], axis))
     return [proj[0], proj[-1]]
+
+
+def _point_name(fp: ForcePlans, link: str, z: complex, mu: float) -> str:
+    """The name of the link's point drawn at ``z`` (mm): the point itself (S3, D), else the
+    centre of mass the lab letters S<number>."""
+    lk = fp.ks.mech.links[link]
+    body = fp.ks.kin.bodies[link]
+    near = [(abs(complex(body.at(lk.local[p])[0][0]) / mu - z), p) for p in lk.local]
+    hit = min(near, default=(1e9, ""))
+    return hit[1] if hit[0] < 0.5 else (lk.com or f"S{lk.number}")
 
 
 def _pairs(points: list[complex]) -> list[tuple[complex, complex]]:
@@ -146,6 +161,23 @@ def _overlap(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -
         return False
     lo, hi = sorted((dot(c - a, u), dot(d - a, u)))
     return min(hi, abs(b - a)) - max(lo, 0.0) > tol
+
+
+def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bool:
+    """Whether the arrow a→b crosses a drawn link's line (their segments meet, not just touch at an
+    end within 0.3 mm)."""
+    def cross(p: complex, q: complex) -> float:
+        return p.real * q.imag - p.imag * q.real
+    d = b - a
+    for s, e in links:
+        w = e - s
+        den = cross(d, w)
+        if abs(den) < 1e-12:
+            continue
+        t, v = cross(s - a, w) / den, cross(s - a, d) / den
+        if 0.3 / abs(d) < t < 1 - 0.3 / abs(d) and 0.0 <= v <= 1.0:
+            return True
+    return False
 
 
 def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
@@ -268,6 +300,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
+        for p in extra_points(lk):          # its other points (D where P_D acts), each by its name
+            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
+            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+            if all(n != p for _, n in names):
+                names.append((z, p))
     forces = [f for f in gp.forces if f.force != 0]
     outer = [m for m in gp.reactions.values()
              if {fp.ks.reactions[m.key].frm, fp.ks.reactions[m.key].on} - set(gp.links)]
@@ -327,13 +364,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     away = True
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
-            first = BLOCK_HALF + 1.0 if any(abs(w - z) < 0.5 for w, _ in guides) else LANE_MM
+            block = any(abs(w - z) < 0.5 for w, _ in guides)
+            first = BLOCK_HALF + 1.0 if block else LANE_MM
             offs = ((first, first + LANE_MM, first + 2 * LANE_MM, -first, -first - LANE_MM) if away else
                     (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM))
-            for off in offs:
-                a, b = z + off * n, z + off * n + length * u
-                if not any(_overlap(a, b, t, h, LANE_MM / 2) for _, t, h in drawn):
-                    break
+            cands = [(z + off * n, z + off * n + length * u, off) for off in offs]
+            free = [c for c in cands if not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
+            a, b, off = free[0] if free else cands[-1]
+            if block and _crosses(a, b, drawn_links):
+                # beside a slider's block, a lane across no link: leaving the block's level, else
+                # arriving at it, head by the block (Φ5 at C crossed the rod BC coming down to C)
+                ends = [(z + o * n + k * length * u, z + o * n + (k + 1) * length * u, o)
+                        for o in offs for k in (0, -1)]
+                a, b, off = next((c for c in ends if not _crosses(c[0], c[1], drawn_links)
+                                  and not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)),
+                                 (a, b, off))
             lanes[name] = off * n
         drawn.append((z, a, b))
         return a, b
@@ -343,10 +388,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(f.force)
         a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
-        labels.append((a, f.name, -u) if abs(b - z) < 0.5 else (b, f.name, u))
+        labels.append((a, f.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, f.name, u))   # an arrow ending at its point: named at its tail
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
-            centres.append((z, lk.com or f"S{lk.number}"))
+            centres.append((z, _point_name(fp, f.link, z, mu)))
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
     arcs: dict[complex, list[complex]] = {}      # the couples' arcs drawn at a point (their middles)
     for f in gp.forces:
@@ -393,7 +438,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(v)
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
-        labels.append((a, m.name, -u) if abs(b - z) < 0.5 else (b, m.name, u))
+        labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)

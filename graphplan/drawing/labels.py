@@ -558,3 +558,79 @@ def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -
         if hits == 0:
             break
     return [p.moved(ux * best, uy * best) for p in row]
+
+
+def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels") -> Record:
+    """One label asked at several anchors in order of preference (a link's number at the middle of
+    its bar, then a third and a quarter from either end): the first anchor with a free spot beside
+    it takes it; when none has, the first asked with ``breaks`` where only thin lines are in the
+    way, those broken under it (``_breaking``, as a joint's letter at a crowded pivot); else as ``place_labels`` places any
+    label (farther out, on a leader) — a number stays by its bar, not 15 mm off it."""
+    if _SKETCH[-1] or not alternatives:
+        return record
+    ob = obstacles(record.items)
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink)
+        if spot is not None:
+            box, start, _ = spot
+            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return record
+    for req in (r for r in alternatives if r.breaks):   # by its bar, the thin lines broken under it
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        spot = _breaking(record, req, ink)
+        if spot is not None:
+            box, start, _ = spot
+            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return record
+    return place_labels(record, alternatives[:1], layer)
+
+
+CROWD_MM = 4.0    # plan points closer than this: each letter must stand nearest its own point
+OWN_MARGIN = 0.5  # mm: … at most half as far from it as from any other point, less this much
+
+
+def _box_gap(box, z: complex) -> float:
+    return abs(complex(max(box[0] - z.real, 0.0, z.real - box[2]), max(box[1] - z.imag, 0.0, z.imag - box[3])))
+
+
+def place_owned(record: Record, requests: list[LabelRequest], layer: str = "labels") -> Record:
+    """Labels of points that crowd one another (a plan's a, b and s2 within 4 mm): each is placed
+    as ``place_labels`` places it, but only where its box is at most half as far from its own
+    point as from any other (less ``OWN_MARGIN``) — else farther out on a leader from its point, which says whose it
+    is; a label far from every other point is placed as any label. So "b" is never read as a's."""
+    if _SKETCH[-1]:
+        return record
+    anchors = [r.at for r in requests]
+    for req in requests:
+        others = [z for z in anchors if abs(z - req.at) > 1e-9]
+        if not any(abs(z - req.at) < CROWD_MM for z in others):
+            place_labels(record, [req], layer)
+            continue
+        ob = obstacles(record.items)
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+
+        def own(box) -> bool:
+            mine = _box_gap(box, req.at)
+            return all(_box_gap(box, z) >= 2.0 * mine + OWN_MARGIN for z in others)
+        gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+        local = ob.near(req.at, NEAR[-1] + size)
+        boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
+        spot = next(((tuple(boxes[k]), complex(starts[k]), None)
+                     for k in np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
+                     if own(boxes[k])), None)
+        if spot is None:
+            spot = _far(ob.near(req.at, FAR[-1] + size), req, ink)
+        if spot is None:
+            place_labels(record, [req], layer)
+            continue
+        box, start, leader = spot
+        if leader is not None:
+            a, b = leader
+            record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
+        record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
+    return record

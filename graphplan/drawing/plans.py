@@ -8,7 +8,8 @@ import math
 
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
-from graphplan.drawing.labels import LabelRequest, place_labels
+from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
+from graphplan.drawing.linkshape import extra_points, rigid_outline
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -64,11 +65,10 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                            ((-1, -1), (1, -1), (1, 1), (-1, 1))]
                 rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
             continue
-        for p, q in zip(joints, joints[1:]):
-            rec.segment(_pt(pts[p]), _pt(pts[q]), role=role, width=width, layer="mechanism", step=step)
-        if len(joints) > 2:
-            rec.segment(_pt(pts[joints[-1]]), _pt(pts[joints[0]]), role=role, width=width,
-                        layer="mechanism", step=step)
+        # one rigid link through all its points: the rocker O2–B–D to D, a plate round E off its line
+        shape = rigid_outline([pts[p] for p in joints], [pts[p] for p in extra_points(link) if p in pts])
+        for p, q in zip(shape, shape[1:]):
+            rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
     for name, link in mech.links.items():
         for j in link.joints:
             rec.point(_pt(pts[j]), role="joint" if thick else "dot", layer="mechanism")
@@ -78,22 +78,85 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                     rec.point(_pt(pts[p]), role="dot", layer="mechanism")
 
 
-def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout]) -> None:
-    """Fixed pivots with their supports, fixed guides with hatching over the slider's travel."""
+SUPPORT_HALF_DEG = 45.0   # the support's triangle and hatched bar, seen from its pivot: ±45° about its axis
+OMEGA_HALF_DEG = 45.0     # ω1's arc: 90° about its middle
+CLEAR_DEG = 5.0           # and this much clear of a link leaving the pivot
+
+
+def _gap(a: float, b: float) -> float:
+    """The angle between two directions, degrees (0 … 180)."""
+    return abs((a - b + 180.0) % 360.0 - 180.0)
+
+
+def leaving(sc: Scheme, layouts: list[Layout], name: str) -> list[float]:
+    """The directions (degrees) of the links leaving the frame pivot ``name`` at the drawn (thick)
+    positions: toward each other point of each link jointed there."""
+    out = []
+    for lay in layouts:
+        pts = joints_at(sc, lay)
+        X = pts[name]
+        for link in sc.mech.links.values():
+            if name in link.joints:
+                out += [math.degrees(cmath.phase(pts[p] - X)) for p in list(link.joints) + extra_points(link)
+                        if p in pts and abs(pts[p] - X) > 1e-6]
+    return out
+
+
+SUPPORT_DIRS = (-90.0, -60.0, -120.0, -30.0, -150.0, 0.0, 180.0, 30.0, 150.0, 60.0, 120.0, 90.0)
+
+
+def support_direction(links: list[float], omega: bool = False) -> tuple[float, float | None]:
+    """Where a frame pivot's support stands (degrees from the pivot: below, −90°, where that is
+    free) — the side away from the links leaving it at the drawn position — and, for the crank's
+    pivot (``omega``), the middle of ω1's 90° arc clear of both (nearest 245°, lower left, as
+    before): the support is not drawn across the crank, nor ω1's arrow across the support."""
+    def free(d: float, half: float) -> float:
+        return min([_gap(d, a) for a in links] + [180.0]) - half
+    best = (-1e9, -90.0, None)
+    for d in SUPPORT_DIRS:
+        room = free(d, SUPPORT_HALF_DEG)
+        arc = None
+        if omega:
+            arcs = [m for m in range(0, 360, 5) if free(m, OMEGA_HALF_DEG) >= CLEAR_DEG
+                    and _gap(m, d) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+            arc = min(arcs, key=lambda m: _gap(m, 245.0)) if arcs else None
+        if room >= CLEAR_DEG and (not omega or arc is not None):
+            return d, arc
+        score = room + (0.0 if not omega or arc is not None else -90.0)
+        if score > best[0]:
+            best = (score, d, arc)
+    return best[1], best[2]
+
+
+def support(rec: Record, X: complex, direction: float, step: str = "") -> None:
+    """A fixed pivot's support (GOST 2.770): a triangle from the pivot to a bar 5 mm away along
+    ``direction`` (degrees), the bar hatched on its far side."""
+    r = cmath.exp(1j * math.radians(direction + 90.0))        # (0, −1), straight down, → direction
+
+    def at(c: complex) -> tuple[float, float]:
+        return _pt(X + c * r)
+    a, b = complex(-3.5, -5.0), complex(3.5, -5.0)
+    rec.segment(_pt(X), at(a), role="frame", width=0.35, layer="frame", step=step)
+    rec.segment(_pt(X), at(b), role="frame", width=0.35, layer="frame", step=step)
+    rec.segment(at(a + complex(-1.5, 0)), at(b + complex(1.5, 0)), role="frame", layer="frame", step=step)
+    for k in range(5):
+        s = a + complex(-1.5 + 2.5 * k, 0)
+        rec.segment(at(s), at(s + complex(-1.8, -1.8)), role="hatch", layer="frame", step=step)
+    rec.point(_pt(X), role="joint", layer="frame", step=step)
+
+
+def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layout] | None = None) -> None:
+    """Fixed pivots with their supports (each on the side away from the links leaving it at the
+    ``thick`` positions, below where that is free), fixed guides with hatching over the slider's
+    travel."""
     mech = sc.mech
     lay0 = layouts[0]
     for name in mech.frame:
         if not any(name in link.joints for link in mech.links.values()):
             continue
         X = where(sc, lay0, FRAME, name)
-        a, b = X + complex(-3.5, -5.0), X + complex(3.5, -5.0)
-        rec.segment(_pt(X), _pt(a), role="frame", width=0.35, layer="frame")
-        rec.segment(_pt(X), _pt(b), role="frame", width=0.35, layer="frame")
-        rec.segment(_pt(a + complex(-1.5, 0)), _pt(b + complex(1.5, 0)), role="frame", layer="frame")
-        for k in range(5):
-            s = a + complex(-1.5 + 2.5 * k, 0)
-            rec.segment(_pt(s), _pt(s + complex(-1.8, -1.8)), role="hatch", layer="frame")
-        rec.point(_pt(X), role="joint", layer="frame")
+        d, _ = support_direction(leaving(sc, thick or [], name), omega=name == mech.crank.pivot)
+        support(rec, X, d)
     for gname, g in mech.guides.items():
         if g.body != FRAME:
             continue
@@ -179,7 +242,8 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     regular = [p.layout for p in plans.positions if p.index is not None]
     every = [p.layout for p in plans.positions]
     thick_keys = set(plans.accel_keys) or {0}
-    draw_frame(rec, sc, every + plans.extremes)
+    thick_lays = [l for l in every if l.key in thick_keys]
+    draw_frame(rec, sc, every + plans.extremes, thick_lays)
     crank = mech.crank
     O = where(sc, regular[0], FRAME, crank.pivot)
     r = crank.length / plans.mu_l
@@ -211,17 +275,30 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     for lay in every:
         if lay.key in thick_keys:
             draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
+    # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
+    late: list[LabelRequest] = []
+    for j, lay in enumerate(extremes):
+        X = where(sc, lay, sc.body_of(out), out)
+        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
+        late.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+    late += stroke_dimensions(rec, plans, O)
     labels: list[LabelRequest] = []
     # letters at the first thick position, placed first: each beside its point (a link's number,
-    # placed after them, may go a little farther along its bar)
+    # placed after them, by its bar)
     lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True))   # crowded by thin positions: beside it, the lines broken
-    labels += omega_arrow(rec, O, r, mech.omega1)
-    labels += link_numbers(sc, lay, pts)
+    _, middle = support_direction(leaving(sc, thick_lays, crank.pivot), omega=True)
+    labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
+    if not lettered:
+        return rec
+    place_labels(rec, labels)
+    for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
+        place_first(rec, alternatives)
+    labels = []
     # numbers of the positions at the crank pin, the output point and the groups' inner joints
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
     for p in plans.positions:
@@ -232,15 +309,62 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
         for name in dict.fromkeys([out] + inner):
             X = where(sc, lay, sc.body_of(name), name)
             labels.append(LabelRequest(X, label, toward=-1j, size=2.5, optional=True))
-    for j, lay in enumerate(extremes):
-        X = where(sc, lay, sc.body_of(out), out)
-        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
-        labels.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
-    labels += stroke_dimensions(rec, plans, O)
-    return place_labels(rec, labels) if lettered else rec
+    labels += late
+    return place_labels(rec, labels)
 
 
 DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)
+DIM_PAST = 7.0    # … and at least this far past the drawing's last line on that side, over the stroke
+
+
+def _strokes(rec: Record) -> list[tuple[complex, complex]]:
+    """Every drawn line of the record as straight pieces (arcs and circles as 5° chords)."""
+    out = []
+    for p in rec.items:
+        if p.kind in ("circle", "arc"):
+            c = complex(*p.points[0])
+            lo, hi = p.angles if p.kind == "arc" else (0.0, 360.0)
+            sweep = (hi - lo) % 360.0 or 360.0
+            zs = [c + p.radius * cmath.exp(1j * math.radians(lo + sweep * k / 72)) for k in range(73)]
+        elif p.kind in ("segment", "vector", "polyline", "polygon"):
+            zs = [complex(x, y) for x, y in p.points] + ([complex(*p.points[0])] if p.kind == "polygon" else [])
+        else:
+            continue
+        out += list(zip(zs, zs[1:]))
+    return out
+
+
+def dimension_place(rec: Record, X1: complex, u: complex, away: complex, span: float) -> tuple[complex, float]:
+    """Where the stroke's dimension line goes: the side of the slider's path (``away`` from the
+    crank first) and the offset (from ``DIM_OFF`` out, 1 mm steps, to ``DIM_PAST`` past the
+    drawing's last line on that side over the stroke) at which it crosses the fewest lines — the
+    nearest such, the side away from the crank on a tie. The slotter's H = 350 ran 12 mm above
+    its guide through its rods; it now runs above them, clear."""
+    import numpy as np
+    pieces = _strokes(rec)
+    if not pieces:
+        return away, DIM_OFF
+    P = np.array([[((a - X1) * u.conjugate()).real, ((a - X1) * u.conjugate()).imag,
+                   ((b - X1) * u.conjugate()).real, ((b - X1) * u.conjugate()).imag] for a, b in pieces])
+    best = None
+    for sign, side in ((1.0, away), (-1.0, -away)):
+        # in the path's frame (x along u, y across, + toward n = 1j·u): the side's y sign
+        ys = (side * u.conjugate()).imag
+        x0, y0, x1, y1 = P[:, 0], P[:, 1] * ys, P[:, 2], P[:, 3] * ys
+        over = ((np.maximum(x0, x1) >= -5.0) & (np.minimum(x0, x1) <= span + 5.0))
+        reach = float(np.max(np.where(over, np.maximum(y0, y1), 0.0), initial=0.0))
+        for off in np.arange(DIM_OFF, max(DIM_OFF, reach + DIM_PAST) + 0.5, 1.0):
+            dy = y1 - y0
+            with np.errstate(all="ignore"):
+                t = (off - y0) / dy
+                x = x0 + t * (x1 - x0)
+            hits = int(np.sum((np.abs(dy) > 1e-12) & (t >= 0) & (t <= 1) & (x >= 0) & (x <= span)))
+            key = (hits, sign < 0, float(off))
+            if best is None or key < best[0]:
+                best = (key, side, float(off))
+            if hits == 0:
+                break
+    return best[1], best[2]
 
 
 def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
@@ -261,7 +385,8 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelReques
     side = ((O - X1) * n.conjugate()).real          # O's side of the path (+ along n)
     away = -n if side > 0 else n
     step = "dimensions"
-    a, b = X1 + away * DIM_OFF, X2 + away * DIM_OFF
+    away, off = dimension_place(rec, X1, u, away, abs(X2 - X1))
+    a, b = X1 + away * off, X2 + away * off
     for X, Y in ((X1, a), (X2, b)):
         rec.segment(_pt(X + away * 1.5), _pt(Y + away * 2.0), role="construction", layer="construction", step=step)
     mid = 0.5 * (a + b)
@@ -313,39 +438,47 @@ def _on_circle_or_line(path: list[complex]) -> bool:
     return all(abs(((z - a) * u.conjugate()).imag) < 0.3 for z in path)
 
 
-def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex]) -> list[LabelRequest]:
-    """Each link's number beside the middle of its bar (the frame's pivots are 0)."""
+ALONG = (0.5, 0.35, 0.65, 0.25, 0.75)    # where along its bar a link's number is tried, in turn
+
+
+def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex], along: bool = False):
+    """Each link's number beside the middle of its bar (the frame's pivots are 0); with ``along``,
+    each link's list of requests at ``ALONG`` of its bar (``labels.place_first``: the first with
+    room beside it) — the rod BC's "4" by the rod, not 15 mm off at the guide's end."""
     mech = sc.mech
     out = []
     for name, link in mech.links.items():
         joints = [pts[j] for j in link.joints if j in pts]
         if len(joints) >= 2:
-            mid = 0.5 * (joints[0] + joints[1])
             d = joints[1] - joints[0]
             normal = 1j * d / abs(d) if abs(d) > 1e-9 else 1j
+            spots = [joints[0] + t * d for t in (ALONG if along else ALONG[:1])]
         else:
-            mid = pts[next(iter(link.local))]
+            spots = [pts[next(iter(link.local))]]
             normal = 1j
-        out.append(LabelRequest(mid, str(link.number), toward=normal, size=5.0, optional=True))
+        asked = [LabelRequest(z, str(link.number), toward=normal, size=5.0, optional=True,
+                              breaks=len(joints) >= 2) for z in spots]     # by a bar: its lines may break
+        out.append(asked if along else asked[0])
     return out
 
 
-def omega_arrow(rec: Record, O: complex, r: float, omega: float) -> list[LabelRequest]:
-    """The crank's sense of rotation: an arc around the pivot with an arrowhead, labelled ω₁ (ω_1)."""
+def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float = 245.0) -> list[LabelRequest]:
+    """The crank's sense of rotation: a 90° arc around the pivot about ``middle`` (degrees) with an
+    arrowhead, labelled ω₁ (ω_1)."""
     rr = max(6.0, 0.25 * r)
-    start, end = (200.0, 290.0) if omega > 0 else (290.0, 200.0)
+    start, end = (middle - 45.0, middle + 45.0) if omega > 0 else (middle + 45.0, middle - 45.0)
     rec.arc(_pt(O), rr, min(start, end), max(start, end), role="relative", layer="mechanism",
             step="the crank's rotation ω1")
     tail, tip = arc_head(O, rr, end, 1 if omega > 0 else -1)
     rec.vector(tail, tip, role="head", layer="mechanism", step="the crank's rotation ω1")
-    mid = O + rr * cmath.exp(1j * math.radians(245.0))
+    mid = O + rr * cmath.exp(1j * math.radians(middle))
     return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False)]
 
 
 def labelled(plan: Plan) -> Record:
     """A velocity or acceleration plan's record with its labels placed (the pole at (0, 0))."""
     rec = Record(plan.record.title, list(plan.record.items), dict(plan.record.scales))
-    return place_labels(rec, plan.labels)
+    return place_owned(rec, plan.labels)      # crowded points: each letter nearest its own point
 
 
 def plan_records(plans: Plans, kind: str) -> dict[int, Record]:

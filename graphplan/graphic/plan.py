@@ -235,7 +235,12 @@ class Plan:
     def end_label(self, letter: str, link: str | None = None) -> str:
         """The letter of a component's end on the plan: by the link it belongs to (n2: the normal
         component of link 2's rotation; a second one of the same link n2′), else numbered in the
-        order of drawing."""
+        order of drawing — but the Coriolis end is k as the lab letters it (REFERENCE §1: "Coriolis
+        k"), a second one k′."""
+        if link is None and letter == "k":
+            seen = self.ends[letter]
+            self.ends[letter] += 1
+            return letter + "′" * seen
         if link is None:
             self.ends[letter] += 1
             return sub(f"{letter}{self.ends[letter]}")

@@ -93,14 +93,24 @@ def legible_values(mu: float, finer: float) -> list[float]:
     return sorted({v for v in inner if finer * (1 + 1e-9) < v < mu * (1 - 1e-9)} | {finer}, reverse=True)
 
 
-def chosen_length(value: float, length_mm: float) -> float:
+LEGIBLE_READS = 0.25   # mm: a vector this much short of ``LEGIBLE_MM`` reads 40 on the 0.5-mm ruler
+
+
+def chosen_length(value: float, length_mm: float, reads_mm: float = 0.0) -> float:
     """The lab's own way (REFERENCE §3, seed 004's π a = 110 mm): choose the drawn length of the
     crank pin's vector, then μ = value / length — written to three significant figures, rounded
     down, so the vector is drawn at least ``length_mm`` long (v_A = 0.754 m/s, p_v a = 40 mm:
-    μv = 0.0188 (m/s)/mm, p_v a = 40.1 mm)."""
+    μv = 0.0188 (m/s)/mm, p_v a = 40.1 mm). With ``reads_mm`` (half the ruler's division) a μ of
+    two figures is written where it draws the vector within that of the length, or at most 1 %
+    longer — as a student rounds it (v_A = 1.398 m/s, 40 mm: μv = 0.035, p_v a = 39.94 mm, read
+    40.0; not 0.0349)."""
     if not (value > 0 and length_mm > 0 and math.isfinite(value / length_mm)):
         raise GraphplanError(f"cannot choose a scale for a segment of size {value!r} drawn {length_mm!r} mm")
     raw = value / length_mm
+    if reads_mm > 0:
+        two = float(f"{raw:.2g}")
+        if length_mm - reads_mm <= value / two < length_mm * 1.01:
+            return two
     k = math.floor(math.log10(raw)) - 2
     return series_value(math.floor(raw / 10.0 ** k * (1 + 1e-12)), k)
 

@@ -233,7 +233,7 @@ def check_data(plans: Plans) -> dict[str, list[list[Any]]]:
             for e in ordered(plan):
                 if e.mm is None or e.kind in ("normal", "coriolis"):
                     continue
-                rows.append([plan.kind, e.key, symbol(e, plan.kind), plan.mu,
+                rows.append([plan.kind, e.key, symbol(e, plan.kind, plans.study.mech), plan.mu,
                              0.0 if abs(float(e.analytic)) <= floor else float(e.analytic), float(e.mm),
                              None if e.error_pct is None else float(e.error_pct)])
         out[str(p.key)] = rows

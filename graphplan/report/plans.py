@@ -54,6 +54,11 @@ def position_json(plans: Plans, p: PositionPlans) -> dict[str, Any]:
     if p.acceleration is not None:
         doc["mu_a"] = plans.mu_a
         doc["acceleration"] = {e.key: entry_json(e, plans.mu_a) for e in ordered(p.acceleration)}
+    for plan in ("velocity", "acceleration"):       # ω, ε: the link's number (ω3), as the lab writes
+        for key, entry in doc.get(plan, {}).items():
+            n = link_number(st.mech, key)
+            if n is not None:
+                entry["link_number"] = n
     doc["warnings"] = [w.text for w in p.warnings]
     doc["warning_angles"] = [{"plan": w.plan, "group": w.group, "kind": w.kind, "angle_deg": w.angle}
                              for w in p.warnings]
@@ -83,13 +88,24 @@ def plans_json(plans: Plans) -> dict[str, Any]:
 
 # -- tables -------------------------------------------------------------------------------------
 
-def symbol(e: Entry, kind: str) -> str:
-    """How a quantity is written in a table: v_B, v_BA, ω_AB, a^n_BA, a^k_A3A2, ε_AB."""
+def link_number(mech, key: str) -> int | None:
+    """The number of the link an ω or ε key names (omega_O2B → 3): the lab writes ω3, ε3 — by the
+    link's number, not its joints' letters; None for any other key."""
+    for prefix in ("omega_", "epsilon_"):
+        if key.startswith(prefix) and key[len(prefix):] in mech.links:
+            return mech.links[key[len(prefix):]].number
+    return None
+
+
+def symbol(e: Entry, kind: str, mech=None) -> str:
+    """How a quantity is written in a table: v_B, v_BA, a^n_BA, a^k_A3A2 and, with the mechanism,
+    ω and ε by the link's number as the lab writes them (ω_3, ε_2; else by its name, ω_AB)."""
     letter = "v" if kind == "velocity" else "a"
-    if e.kind == "omega":
-        return "ω_" + e.key[len("omega_"):]
-    if e.kind == "epsilon":
-        return "ε_" + e.key[len("epsilon_"):]
+    if e.kind in ("omega", "epsilon"):
+        n = link_number(mech, e.key) if mech is not None else None
+        sym = "ω" if e.kind == "omega" else "ε"
+        return f"{sym}_{n}" if n is not None and n < 10 else f"{sym}_{{{n}}}" if n is not None \
+            else sym + "_" + e.key.partition("_")[2]
     head, _, rest = e.key.partition("_")
     marks = {"n": "n", "t": "τ", "k": "k", "r": "r"}
     if rest and head in marks and e.kind in ("normal", "tangential", "coriolis", "relative"):
@@ -132,7 +148,7 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
              f"{w('structure')}: {st.structure.formula};  {w('ruler')} {n(plans.precision)} {unit('mm', lang)}",
              "; ".join(plain(format_scale(k, v, lang)) for k, v in plans.scales.items()), ""]
     keys = [e.key for e in ordered(plans.positions[0].velocity)]
-    heads = [plain(symbol(plans.positions[0].velocity.entries[k], "velocity")) for k in keys]
+    heads = [plain(symbol(plans.positions[0].velocity.entries[k], "velocity", st.mech)) for k in keys]
     widths = [max(8, len(h)) for h in heads]
 
     def row(cells: list[str]) -> str:
@@ -168,7 +184,7 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
             mm = "" if e.mm is None else fixed(e.mm, lang, 1)
             exact = e.exact.real if e.kind in ("omega", "epsilon") else e.analytic
             value = rate(e, plans.mu_a, lang, plans.precision) if e.kind == "epsilon" else n(signed(e))
-            lines.append(f"{plain(symbol(e, 'acceleration')):>12}  {mm:>7}  {value:>10}  "
+            lines.append(f"{plain(symbol(e, 'acceleration', st.mech)):>12}  {mm:>7}  {value:>10}  "
                          f"{n(exact):>10}  {pct(e.error_pct, lang):>9}")
     lines += ["", w("warnings") + ":"]
     warned = False

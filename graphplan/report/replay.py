@@ -119,6 +119,14 @@ SAY: dict[str, tuple[str, str]] = {
                      "(not shorter than {least} mm, for the plan to read) for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
                      "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; write it to three significant figures, "
                      "rounded down: μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm"),
+    "scale rounded": ("Крок 0: полюс і масштаб. Полюс {pole} ставимо в будь-якому місці аркуша. Беремо {seg} = {trial} мм "
+                      "(не коротше {least} мм, щоб план читався) для {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
+                      "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; записуємо дві значущі цифри: "
+                      "μ_{s} = {mu} {munit}; тоді {seg} = {sym}_{pin}/μ_{s} = {drawn} мм (за лінійкою {trial} мм)",
+                      "Step 0: the pole and the scale. Put the pole {pole} anywhere on the sheet. Take {seg} = {trial} mm "
+                      "(not shorter than {least} mm, for the plan to read) for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
+                      "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; write it to two significant figures: "
+                      "μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm ({trial} mm by the ruler)"),
     "why sheet": ("; аркуш {f} бере той, з яким усі плани вміщуються на ньому", "; the {f} sheet takes the one with which every plan fits on it"),
     "why own": ("; той, з яким найдовший вектор плану вміщується", "; the one with which the plan's longest vector fits"),
     "equation": ("Група {group}: векторне рівняння точки {X}. Двічі підкреслене — відоме за величиною і напрямом, "
@@ -326,7 +334,10 @@ class Replay:
         value, mu = float(e.analytic), plan.mu
         drawn = value / mu
         chosen = not on_series(mu)     # the sheet chose the length (kinlayout.legible_where_room)
-        trial = math.floor(drawn + 1e-9) if chosen else math.ceil(drawn - 1e-9)
+        # a chosen length whose μ the sheet wrote to two figures draws it a little short of that
+        # length (graphic.scales.chosen_length: 39.94 mm for 40, read 40.0 on the ruler)
+        rounded = chosen and drawn < round(drawn) - 1e-9
+        trial = round(drawn) if rounded else math.floor(drawn + 1e-9) if chosen else math.ceil(drawn - 1e-9)
         if not chosen and abs(at_least(value / trial) - mu) > 1e-12 * mu:
             trial = round(drawn, 1)
         raw = value / trial
@@ -334,7 +345,7 @@ class Replay:
         munit = "(m/s)/mm" if plan.kind == "velocity" else "(m/s²)/mm"
         why = say("why sheet", f=sheet) if sheet else say("why own")
         a = sub(cr.pin)
-        self.add([], say("scale chosen" if chosen else "scale", least=both(lambda lang: num(LEGIBLE_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
+        self.add([], say("scale rounded" if rounded else "scale chosen" if chosen else "scale", least=both(lambda lang: num(LEGIBLE_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
                          sym=n.sym, pin=cr.pin, value=both(lambda lang: num(value, lang)),
                          unit=both(lambda lang: unit(n.unit, lang)), s=s_,
                          raw=both(lambda lang: num(raw, lang)), munit=both(lambda lang: unit(munit, lang)), why=why,
@@ -473,7 +484,8 @@ class Replay:
                 p = ""
             rel = (f"{s_}_{{{C}{P}}}" if plan.kind == "velocity" else f"a^τ_{{{C}{P}}}")
             pair_l = braced(n.own_label(P)) + n.own_label(C)
-            fields = dict(w=w, link=link_name, rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
+            # ω3 by the link's number, as the sheet's tables write it
+            fields = dict(w=w, link=str(link.number), rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
                           unit=both(lambda lang: unit("rad/s" if kind == "omega" else "rad/s²", lang)))
             if e.value == 0 or signed == 0:
                 caption = say("rate zero", **fields)

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
-from graphplan.graphic.scales import LEGIBLE_MM   # the plans read: p_v a and π a at least this long
+from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError
@@ -238,7 +238,7 @@ def legible_where_room(dr: Drafter, nat: Natural, mu: dict[str, float], fits
                           if readable(fam, v) and fits({**out, name: v}, D)), None)
             if found is None:
                 lengths = [LEGIBLE_MM + 5.0 * j for j in range(int((fam.drawn(nxt) - LEGIBLE_MM) // 5.0) + 1)]
-                fitting = [m for m in (chosen_length(fam.principal, n) for n in lengths)
+                fitting = [m for m in (chosen_length(fam.principal, n, LEGIBLE_READS) for n in lengths)
                            if m < out[name] and fits({**out, name: m}, D)]
                 found = min(fitting) if fitting else None
             if found is None:
@@ -254,7 +254,7 @@ def readable(fam: Family, mu: float) -> bool:
     ``LEGIBLE_MM`` long, or its largest plan at least ``PLAN_MM`` across — where the crank pin's
     vector is the plan's short one (a rocker swinging fast beside a short crank), p_v a that long
     would draw every plan a sheet wide, one plan a sheet."""
-    if fam.drawn(mu) >= LEGIBLE_MM - 1e-9:
+    if fam.drawn(mu) >= LEGIBLE_MM - LEGIBLE_READS - 1e-9:      # reads 40.0 on the ruler
         return True
     k = fam.mu0 / mu
     return max((max(gw, gh) * k for gw, gh, _, _ in fam.sizes), default=0.0) >= PLAN_MM - 1e-9

@@ -14,12 +14,14 @@ from graphplan.util.words import column, fixed, num, pair_kind, unit, word
 
 SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
 
-def _symbol(key: str, letter: str = "v") -> str:
-    """A JSON key as the lab writes the quantity (markup): B → v_B, BA → v_BA, omega_AB → ω_AB,
-    n_BA → a^n_BA, t_BA → a^τ_BA, k_A3A2 → a^k_A3A2, r_A3A2 → a^r_A3A2."""
+def _symbol(key: str, letter: str = "v", e: dict | None = None) -> str:
+    """A JSON key as the lab writes the quantity (markup): B → v_B, BA → v_BA, n_BA → a^n_BA,
+    t_BA → a^τ_BA, k_A3A2 → a^k_A3A2, r_A3A2 → a^r_A3A2; omega_O2B → ω_3 by the link's number its
+    entry ``e`` carries (``link_number``), as the lab writes ω3, ε3 (else by the name, ω_O2B)."""
     for prefix, sym in (("omega_", "ω"), ("epsilon_", "ε")):
         if key.startswith(prefix):
-            return f"{sym}_{{{key[len(prefix):]}}}"
+            n = (e or {}).get("link_number")
+            return f"{sym}_{{{n if n is not None else key[len(prefix):]}}}"
     head, _, rest = key.partition("_")
     marks = {"n": "n", "t": "τ", "k": "k", "r": "r"}
     if rest and head in marks:
@@ -110,7 +112,8 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
     marked and its footnote says which vector and why."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     keys = velocity_columns(doc, precision)
-    head = ["№", "φ, °"] + [_symbol(k, "v") for k in keys] + ["δ_{max}, %"]
+    first = {k: next((pos["velocity"][k] for pos in doc["positions"] if k in pos["velocity"]), None) for k in keys}
+    head = ["№", "φ, °"] + [_symbol(k, "v", first[k]) for k in keys] + ["δ_{max}, %"]
     rows = [head]
     notes = []
     for pos in doc["positions"]:
@@ -119,11 +122,11 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
         if err is not None and err > LAB_LIMIT:
             cell += MARK
             key = worst(pos, keys)
-            notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v"), pos,
+            notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v", first[key]), pos,
                                                                 "velocity", lang)))
         rows.append([str(pos["index"]), fixed(pos.get("turn_deg", pos["phi_deg"]), lang, 1)]
                     + [_cell(pos["velocity"].get(k), precision, lang) for k in keys] + [cell])
-    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v"), 2.5) + 3) for k in keys] + [15.0]
+    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v", first[k]), 2.5) + 3) for k in keys] + [15.0]
     rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
     return footnoted(rec, [w('mark_head')] + notes if notes else [])
 
@@ -163,8 +166,8 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
         cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
         if judged(e) and abs(e["error_pct"]) > LAB_LIMIT:
             cell += MARK
-            notes.append(w('mark_cell', why=why(e, _symbol(key, "a"), pos, "acceleration", lang)))
-        rows.append([_symbol(key, "a"), "—" if e.get("mm") is None else number(e["mm"], 4, lang=lang),
+            notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang)))
+        rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else number(e["mm"], 4, lang=lang),
                      _cell(e, precision, lang), analytic, cell])
     if pos["index"] is not None:
         where = pos["index"]
@@ -268,8 +271,8 @@ def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     s = st.structure
     lines = [f"{w('mobility')}: W = 3n − 2p_5 − p_4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
-             f"{w('structure')}: {s.formula}  ("
-             + ", ".join(f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads) + ")",
+             f"{w('structure')}: "     # each group once, with its kind: I(0-1) → II(2-3) ВВВ
+             + " → ".join(["I(0-1)"] + [f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads]),
              f"{w('scales')}: " + "; ".join(scales), phi_convention(st.phi0, lang)] + extra
     rec = Record("notes")
     for k, line in enumerate(lines):

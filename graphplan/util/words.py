@@ -562,10 +562,12 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade variant unknown": (", не оцінено {n}", ", {n} not graded"),
     "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
     # issue 24 (one set of numbers, the lab's notation, every check said on the sheet)
-    "kin vel_table_signed": ("Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)",
-                             "Table 1. Velocities, m/s; ω, rad/s (+ counter-clockwise)"),
-    "kin acc_table_signed": ("Таблиця {n}. Прискорення, м/с²; ε, рад/с² (+ проти год. стрілки), положення {i}",
-                             "Table {n}. Accelerations, m/s²; ε, rad/s² (+ counter-clockwise), position {i}"),
+    # the sign's parenthesis with no-break spaces: a title wraps before it, never inside it
+    "kin vel_table_signed": ("Таблиця 1. Швидкості, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стрілки)",
+                             "Table 1. Velocities, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
+    "kin acc_table_signed": ("Таблиця {n}. Прискорення, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стрілки), "
+                             "положення\u00a0{i}",
+                             "Table {n}. Accelerations, m/s²; ε, rad/s² (+\u00a0counter-clockwise), position\u00a0{i}"),
     "sheet phi": ("φ — поворот кривошипа від положення 0 у бік його обертання; положення 0: кут кривошипа {phi0}° "
                   "від осі x",
                   "φ: the crank's turn from position 0 in its sense of rotation; position 0: crank angle {phi0}° "

@@ -1,0 +1,79 @@
+"""The drawn shape of one rigid link through all its points, as the textbook draws it: a bar
+from its farthest point to its farthest point when every point lies on the line of its joints
+(the rocker O2–B–D with D on BO2's extension), else a plate — the outline around all its points
+(the coupler ABE a triangle). Pure geometry in drawing mm."""
+from __future__ import annotations
+
+from graphplan.model.mechanism import Link
+
+ON_LINE_MM = 0.3    # a point this close to the joints' line lies on the bar
+
+
+def extra_points(link: Link) -> list[str]:
+    """The link's named points beyond its joints that its outline must reach (D, E …): every
+    local point except the joints and the centre of mass (a centre of mass is not a pair or a
+    point of application the link is shaped for; it lies on the bar in the lab's schemes)."""
+    return [p for p in link.local if p not in link.joints and p != link.com]
+
+
+def _hull(points: list[complex]) -> list[complex]:
+    """The convex hull, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set((round(z.real, 9), round(z.imag, 9)) for z in points))
+    if len(pts) <= 2:
+        return [complex(*p) for p in pts]
+
+    def cross(o, a, b) -> float:
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower: list = []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    upper: list = []
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return [complex(*p) for p in lower[:-1] + upper[:-1]]
+
+
+def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]:
+    """One polyline (mm) drawing a link through its joints and its other points. Two joints and
+    every point on their line: the bar between the two outermost points. Three or more joints and
+    no point outside their polygon: the polygon in the joints' order (closed). Otherwise the
+    closed outline around all the points (a rigid plate)."""
+    if len(joints) < 2:
+        return list(joints)
+    a, b = joints[0], joints[1]
+    d = b - a
+    if abs(d) < 1e-9:
+        d = next((z - a for z in joints + extras if abs(z - a) > 1e-9), 1 + 0j)
+    u = d / abs(d)
+    every = joints + extras
+    if all(abs(((z - a) * u.conjugate()).imag) <= ON_LINE_MM for z in every):
+        ordered = sorted(every, key=lambda z: ((z - a) * u.conjugate()).real)
+        return [ordered[0], ordered[-1]]
+    polygon = joints + [joints[0]]
+    if len(joints) >= 3 and all(_inside(z, joints) for z in extras):
+        return polygon
+    hull = _hull(every)
+    return hull + [hull[0]]
+
+
+def _inside(z: complex, polygon: list[complex]) -> bool:
+    """A point inside or on a polygon (the even–odd rule, the edges counted in)."""
+    n = len(polygon)
+    for i in range(n):
+        p, q = polygon[i], polygon[(i + 1) % n]
+        if abs(q - p) > 1e-9 and abs(((z - p) * (q - p).conjugate()).imag) / abs(q - p) <= ON_LINE_MM \
+                and -ON_LINE_MM <= ((z - p) * ((q - p) / abs(q - p)).conjugate()).real <= abs(q - p) + ON_LINE_MM:
+            return True
+    inside = False
+    for i in range(n):
+        p, q = polygon[i], polygon[(i + 1) % n]
+        if (p.imag > z.imag) != (q.imag > z.imag):
+            x = p.real + (z.imag - p.imag) * (q.real - p.real) / (q.imag - p.imag)
+            if x > z.real:
+                inside = not inside
+    return inside

@@ -1,0 +1,140 @@
+"""A point on a link's extension (the review's correction 1): the four-bar's rocker O2B carries
+D = 1.3·O2B, where P_D acts. The textbook draws O2–B–D as one rigid link and letters the point D;
+the sheets drew the rocker only to B and lettered D "S3" (a second S3 on one drawing). Checked
+against D placed by hand, O2 + 1.3·(B − O2), on the position plan, the scheme and the group."""
+from __future__ import annotations
+
+import pytest
+
+from conftest import scene_study
+from graphplan.drawing.linkshape import rigid_outline
+
+FOURBAR = '''
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.04]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.32
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.5, D = 1.3 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 270
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 400
+stroke = "working"
+direction = "oppose"
+'''
+
+
+def _points(p) -> list[complex]:
+    return [complex(x, y) for x, y in p.points]
+
+
+def _reaches(rec, a: complex, d: complex, tol: float = 0.3) -> bool:
+    """A drawn line of a link runs from ``a`` (the joint O2 or B) to ``d``: one segment's ends, or a
+    polyline's consecutive points, at both."""
+    for p in rec.items:
+        if p.kind in ("segment", "polyline") and p.role == "link":
+            pts = _points(p)
+            for s, e in zip(pts, pts[1:]):
+                if {min(abs(s - a), abs(e - a)) <= tol, min(abs(s - d), abs(e - d)) <= tol} == {True}:
+                    return True
+    return False
+
+
+def _gap(text, z: complex) -> float:
+    """How far (mm) a text's box stands from the point ``z``."""
+    x0, y0, x1, y1 = text.bounds()
+    return abs(complex(max(x0 - z.real, 0.0, z.real - x1), max(y0 - z.imag, 0.0, z.imag - y1)))
+
+
+@pytest.fixture(scope="module")
+def force_drawings():
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    st = scene_study(FOURBAR)
+    p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    return dr.groups_fp(p.mu), dr.drawings(p.mu, "uk")
+
+
+@pytest.mark.parametrize("which", ["scheme", "groups"])
+def test_the_point_d_is_lettered_d_on_its_link(force_drawings, which):
+    fp, drawings = force_drawings
+    rec = next(r for r in drawings[which] if "B" in [q.text for q in r.items if q.kind == "text"])
+    mu = rec.scales["mu_l"]
+    kin = fp.ks.kin
+    O2 = complex(kin.point("O2")[0][0]) / mu
+    B = complex(kin.point("B")[0][0]) / mu
+    D = O2 + 1.3 * (B - O2)                       # the scene's D, placed by hand
+    texts = [q for q in rec.items if q.kind == "text"]
+    names = [q.text for q in texts]
+    assert names.count("S_3") == 1 and names.count("D") == 1, names
+    letter = next(q for q in texts if q.text == "D")
+    assert _gap(letter, D) < 3.0, "D lettered away from D"
+    assert any(q.kind == "circle" or abs(complex(*q.points[0]) - D) < 0.3 for q in rec.items
+               if q.kind in ("point", "circle") and q.points)
+    assert _reaches(rec, B, D) or _reaches(rec, O2, D), "no line of link 3 reaches D"
+
+
+def test_the_position_plan_draws_the_rocker_to_d():
+    from graphplan.drawing.plans import position_record
+    from graphplan.graphic.plans import build_plans, where
+    st = scene_study(FOURBAR)
+    plans = build_plans(st, precision=0)
+    rec = position_record(plans)
+    sc = plans.scheme
+    thick = [p.layout for p in plans.positions if p.key in (set(plans.accel_keys) or {0})]
+    for lay in thick:
+        O2 = where(sc, lay, sc.body_of("O2"), "O2")
+        B = where(sc, lay, "O2B", "B")
+        D = O2 + 1.3 * (B - O2)
+        assert abs(where(sc, lay, "O2B", "D") - D) < 1e-6
+        assert _reaches(rec, O2, D), f"position {lay.key}: the rocker stops short of D"
+    texts = [q for q in rec.items if q.kind == "text"]
+    assert [q.text for q in texts].count("D") == 1 and [q.text for q in texts].count("S_3") == 1
+
+
+def test_outline_of_a_bar_and_a_plate():
+    # three points on a line: the bar between the outer two, whatever their order
+    assert rigid_outline([0j, 10 + 0j], [13 + 0j, 5 + 0j]) == [0j, 13 + 0j]
+    assert rigid_outline([0j, 10 + 0j], [-4 + 0j]) == [-4 + 0j, 10 + 0j]
+    # a point off the line: a closed triangle through all three
+    tri = rigid_outline([0j, 10 + 0j], [5 + 6j])
+    assert tri[0] == tri[-1] and set(tri) == {0j, 10 + 0j, 5 + 6j}
+    # a point inside a triangle of joints: the joints' triangle, as before
+    assert rigid_outline([0j, 10 + 0j, 5 + 8j], [5 + 2j]) == [0j, 10 + 0j, 5 + 8j, 0j]
