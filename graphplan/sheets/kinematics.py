@@ -196,6 +196,12 @@ class Drafter:
         o = self.opts
         return diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"].right
 
+    def redrawn(self, k) -> bool:
+        """Whether the diagrams at size ``k`` are drawn otherwise than first (graphic.redraw)."""
+        o = self.opts
+        r = diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"]
+        return bool(r.changed or r.wrong_after)
+
     def drawn(self, k) -> tuple[float, float, float, float]:
         """The diagrams at size ``k`` as drawn: L and the s, v, a diagrams' heights (with their
         axis), mm."""

@@ -351,26 +351,33 @@ def room_fits(r: tuple[float, ...], w: float, h: float) -> bool:
 
 def set_diagrams(dr: Drafter, nat: Natural, r: tuple[float, ...]) -> list[float | tuple[float, float]]:
     """The diagrams' sizes a set tries: each length factor of ``DIAGRAM_SIZES`` whose block fits an
-    empty sheet (``room_fits`` the room ``r``), drawn with its one factor (the block may then share a sheet) and as
-    tall as an empty sheet holds it — the length kept, the height factor the largest of
-    ``HEIGHTS`` that fits (the A3 set's diagrams at 0.5 drew s 32 mm high over a sheet half empty;
-    length and height grown together, 0.8 missed the sheet by 10 mm). μs stays a standard value,
-    H1, H2 as the length gives them (``first_options``)."""
+    empty sheet (``room_fits`` the room ``r``) drawn with its one factor (the block may then share a
+    sheet), and the longest that the sheet's width holds drawn as tall as an empty sheet holds it —
+    the height factor the largest from ``HEIGHTS`` (the A3 set's diagrams at one factor 0.5 drew
+    s 32 mm high and L 120 mm over a sheet half empty; length and height grown together, 0.8 missed
+    the sheet by 10 mm). The next length is tried where that drawing is qualitatively wrong. μs
+    stays a standard value, H1, H2 whole mm within the lab's (``first_options``)."""
     out: list[float | tuple[float, float]] = []
+    tall_found = False
     for k in DIAGRAM_SIZES:
         w, h = diagrams_size(dr, nat, k)
         if w > r[0] + 1e-9:
             continue                        # too long for the sheet whatever its height
         if room_fits(r, w, h):
             out.append(k)
-        # the tallest drawing as finally drawn (redrawn where the first is qualitatively wrong), and
-        # the tallest whose first drawing fits (a redrawing keeps near it: a taller first drawing
-        # may be redrawn with the lab's smallest poles to fit, flat — the crank-slider's v 15 mm
-        # high —; ``drawn_share`` weighs them)
-        for tall in {tallest(lambda t, k=k: room_fits(r, *diagrams_size(dr, nat, (k, t)))),
-                     tallest(lambda t, k=k: room_fits(r, *dr.first_size((k, t))))}:
+        if tall_found:
+            continue
+        # the height chosen on the first drawing (a redrawing keeps near it: graphic.redraw); where
+        # that one is redrawn, also the tallest as finally drawn (a taller first drawing may be
+        # redrawn with the lab's smallest poles to fit, flat — the crank-slider's v 15 mm high —;
+        # ``drawn_share`` weighs them)
+        talls = [tallest(lambda t, k=k: room_fits(r, *dr.first_size((k, t))))]
+        if talls[0] is None or dr.redrawn((k, talls[0])):
+            talls.append(tallest(lambda t, k=k: room_fits(r, *diagrams_size(dr, nat, (k, t)))))
+        for tall in dict.fromkeys(talls):
             if tall is not None and room_fits(r, *diagrams_size(dr, nat, (k, tall))):
                 out.append((k, tall))
+                tall_found = tall_found or dr.diagrams_right((k, tall))
     return out or list(DIAGRAM_SIZES[-1:])
 
 
