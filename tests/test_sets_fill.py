@@ -86,7 +86,8 @@ accel = [3]
 
 OWN = {"long_rocker": LONG_ROCKER, "offset_slider": OFFSET_SLIDER}
 LEAST_FILL = 0.18       # no sheet of a set with less of its field drawn on (A2 four-bar's notes-only sheet: 0.08)
-DIAGRAMS_ALONE = 0.7    # a sheet the diagrams take alone: their block covers this much of the field over the title block
+DIAGRAMS_ALONE = 0.7    # a sheet the diagrams take alone: their block covers this much of the field over the
+                        # title block
 
 
 def study_of(name: str):

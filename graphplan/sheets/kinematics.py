@@ -44,8 +44,8 @@ SHARE = 0.6            # an unset pole distance draws the v or a peak about this
 _REDRAWN: dict[tuple, dict] = {}
 
 
-def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None, precision: float = 0.5,
-                    room: tuple[float, ...] | None = None) -> dict:
+def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None,
+                    precision: float = 0.5, room: tuple[float, ...] | None = None) -> dict:
     """The options the sheet draws the diagrams with (``chord_diagrams`` keywords): ``first_options``
     where that drawing is qualitatively right, else as graphic.redraw changes it until it is (the
     area correction, other poles within the lab's 15–50 mm, smaller intervals where the curve bends;

@@ -417,8 +417,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
     flowing over the sheets in reading order — the fewest sheets (qualitatively wrong diagrams
-    counted as one more: their larger size factor is taken where it is right); then each family
-    grown while the set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
+    counted as one more: their larger size factor is taken where it is right; so is a sheet of the
+    notes alone, the notes first wrapped wider to avoid it); then each family grown while the set
+    needs no more sheets (up to ``SET_LARGEST`` times its target). The diagrams' sizes are
+    ``set_diagrams``'; where they do not fit beside the position plan, both orders are tried (the
+    diagrams before the acceleration plans, or after them on a sheet of their own); of as many
+    sheets, the set whose emptiest sheet is fuller, then whose drawings are larger."""
     from graphplan.sheets.compose import keep_out
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
@@ -443,7 +447,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     top = fitted("position", fams["position"].start(2.0))
     best = None
     r = room(f)
-    wide = tuple(sorted({TITLE, max(TITLE, r[2])}))        # the notes' widths tried: the title block's, the room beside it
+    wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
         for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
