@@ -422,7 +422,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     needs no more sheets (up to ``SET_LARGEST`` times its target). The diagrams' sizes are
     ``set_diagrams``'; where they do not fit beside the position plan, both orders are tried (the
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
-    sheets, the set whose emptiest sheet is fuller, then whose drawings are larger."""
+    sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
     from graphplan.sheets.compose import keep_out
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
@@ -488,11 +488,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
                 # (its crank shorter than CRANK_MM where a sheet holds a larger one) and a sheet
-                # holding the notes alone; of as many sheets, the one whose emptiest sheet is fuller
+                # holding the notes alone; of as many, the larger drawings (then the fuller
+                # emptiest sheet)
                 wrong = 0 if dr.diagrams_right(k) else 1
                 small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9
                             and fams["position"].drawn(top) >= CRANK_MM - 1e-9)
-                key = (count + wrong + small + orphan, wrong, -(factor == TABLES), -round(fill, 1), -rel)
+                key = (count + wrong + small + orphan, wrong, -(factor == TABLES), -round(rel, 6), -round(fill, 1))
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))
     if best is None:
