@@ -121,7 +121,7 @@ class Plan:
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     after: bool = False              # a set: the diagrams after the acceleration plans (else before)
-    notes: float = 185.0             # a set: the notes' width, mm
+    notes: float = 185.0             # a set: the notes' width, mm (the title block's, ``TITLE``, or wider)
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -277,7 +277,7 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
 
 
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
-              notes: float = 185.0) -> list[list[Leaf]]:
+              notes: float = TITLE) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide)."""
