@@ -6,7 +6,7 @@ a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
 from graphplan.drawing.cam import records, scale_text
-from graphplan.drawing.layout import GAP, Box, Leaf, Placed, centred, extent, flow
+from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import closing_warning, construct
 from graphplan.graphic.diagrams import LAB_LIMIT
@@ -414,6 +414,32 @@ def _one_sheet_still(sol, f: Form, g) -> bool:
     return True
 
 
+def notes_alone(page) -> bool:
+    """Whether a laid-out sheet holds the notes and nothing else."""
+    return all(leaf.name == "notes" for leaf, _ in page)
+
+
+def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep):
+    """A set's sheets: the drawings, then the table with the notes after it — on one sheet (every
+    sheet of a set carries a drawing or a table: the rocking cam's A3 set gave its last sheet to
+    ten lines of notes). The notes as laid out where they do not take a sheet alone; else wrapped
+    to the width the sheet leaves beside the table (at least the title block's); else under the
+    table, the two one block."""
+    laid = flow([leaves, [tab, nts]], region, keep)
+    if laid is None or not notes_alone(laid[-1]):
+        return laid
+    tw = extent(tab)[0]
+    width = min(300.0, region[2] - region[0] - tw - GAP)
+    if width >= TITLE:
+        beside_ = Leaf("notes", record=note_block(lines, width))
+        again = flow([leaves, [tab, beside_]], region, keep)
+        if again is not None and not notes_alone(again[-1]) and len(again) <= len(laid):
+            return again
+    under = Leaf("notes", record=note_block(lines, max(TITLE, tw)))
+    again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep)
+    return again if again is not None and not notes_alone(again[-1]) else laid
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -425,8 +451,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
-        leaves, tab, nts, _ = _leaves(sol, g, cam, lang, split=True)
-        laid = flow([leaves, [tab, nts]], region, keep)
+        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
+        laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")

@@ -25,7 +25,7 @@ from graphplan.sheets.form import TABLES, Form, form
 from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, lab_table, notes,  # noqa: F401
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
-                                        PlansUndrawable, column_leaf, grid_rows, legible, one_sheet, room,
+                                        PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
                                         room_fits, set_of_sheets, set_rows, size_of, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
@@ -44,8 +44,8 @@ SHARE = 0.6            # an unset pole distance draws the v or a peak about this
 _REDRAWN: dict[tuple, dict] = {}
 
 
-def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, precision: float = 0.5,
-                    room: tuple[float, ...] | None = None) -> dict:
+def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None,
+                    precision: float = 0.5, room: tuple[float, ...] | None = None) -> dict:
     """The options the sheet draws the diagrams with (``chord_diagrams`` keywords): ``first_options``
     where that drawing is qualitatively right, else as graphic.redraw changes it until it is (the
     area correction, other poles within the lab's 15–50 mm, smaller intervals where the curve bends;
@@ -93,20 +93,27 @@ def _block_size(st: Study, options: dict, precision: float) -> tuple[float, floa
     return max(w for w, _ in sizes), max(h for _, h in sizes)
 
 
-def first_options(st: Study, k: float = 1.0, positions: int | None = None) -> dict:
+def first_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None) -> dict:
     """The diagrams' first L, s height and pole distances: the scene's L (× k where a small sheet needs it),
-    the s diagram at most ``S_HEIGHT`` × k high; H1, H2 the scene's where it gives them, else chosen
-    (whole mm, within the lab's 15–50 mm) so the v or a peak is about ``SHARE`` of the s diagram:
-    v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv, μt = T/L (REFERENCE §1.5). No language enters."""
+    the s diagram at most ``S_HEIGHT`` × k high (k a pair: L × its first, the height × its second —
+    a set's diagrams as tall as their sheet holds, ``kinlayout.set_of_sheets``); H1, H2 the scene's
+    where it gives them, else chosen (whole mm, within the lab's 15–50 mm) so the v or a peak is
+    about ``SHARE`` of the s diagram — of the height allowed it, for a pair: μs is a standard value,
+    so s takes 0.4–1 of its allowance and the v and a diagrams take up the rest (heights are
+    ordinates at a scale: the construction is the same) —: v_mm = v·μt·H1/μs, a_mm = a·μt·H2/μv,
+    μt = T/L (REFERENCE §1.5). No language enters."""
     from graphplan.graphic.diagrams import chord_diagrams
     dg = st.mech.task.diagram
+    long, tall = factors(k)
     out: dict = {"point": dg.get("point"), "divisions": positions or dg.get("divisions") or st.mech.task.count,
-                 "L": float(dg.get("L_mm", 240.0)) * k, "H1": float(dg.get("H1_mm", 30.0)),
-                 "H2": float(dg.get("H2_mm", 30.0)), "height": S_HEIGHT * k}
+                 "L": float(dg.get("L_mm", 240.0)) * long, "H1": float(dg.get("H1_mm", 30.0)),
+                 "H2": float(dg.get("H2_mm", 30.0)), "height": S_HEIGHT * tall}
     if "H1_mm" in dg and "H2_mm" in dg:
         return out
     probe = chord_diagrams(st, precision=0.0, **out)
     s_mm = float(max(abs(probe.exact.s.max() - probe.exact.s.min()), 1e-9))
+    if not isinstance(k, (int, float)):
+        s_mm = max(s_mm, out["height"])
 
     def pole(peak: float, mu_before: float) -> float:
         if peak <= 0:
@@ -188,6 +195,26 @@ class Drafter:
         """Whether the diagrams at size factor k are qualitatively right (graphic.redraw found a drawing)."""
         o = self.opts
         return diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"].right
+
+    def redrawn(self, k) -> bool:
+        """Whether the diagrams at size ``k`` are drawn otherwise than first (graphic.redraw)."""
+        o = self.opts
+        r = diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"]
+        return bool(r.changed or r.wrong_after)
+
+    def drawn(self, k) -> tuple[float, float, float, float]:
+        """The diagrams at size ``k`` as drawn: L and the s, v, a diagrams' heights (with their
+        axis), mm."""
+        import numpy as np
+        d = self.diagrams(k)
+        r = d.drawn
+        return d.L, *(float(np.ptp(np.append(x, 0.0))) for x in (r.s, r.v, r.a))
+
+    def first_size(self, k) -> tuple[float, float]:
+        """The diagrams' block as first drawn at size ``k`` (``first_options``, before any redrawing), mm."""
+        o = self.opts
+        return self._once(("first size", k), lambda: _block_size(self.st, first_options(self.st, k, o.positions),
+                                                                 o.precision))
 
     def diagram_record(self, k: float, lang: str) -> Record:
         from graphplan.drawing.diagrams import draw
@@ -341,8 +368,8 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        notes_rec = note_block(d["notes"], TITLE)
-        rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0])
+        notes_rec = note_block(d["notes"], p.notes)
+        rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")

@@ -27,6 +27,8 @@ CRANK_MM = 30.0        # a set's position plan: the crank drawn at least this lo
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
 SET_LARGEST = 1.25     # a set's principal segments grow to at most this times the targets' upper end
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
+HEIGHTS = (1.25, 0.5)    # a set's diagrams' height factors: from s at most 100 mm high down to 40 mm …
+HEIGHT_STEP = 0.05       # … in these steps (4 mm of s's allowance)
 TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
 
 
@@ -66,8 +68,14 @@ class Natural:
         return notes_height(self.notes, width)
 
 
-def diagrams_size(dr: Drafter, nat: Natural, k: float) -> tuple[float, float]:
-    """The diagrams' block at size factor k (the larger of the two languages)."""
+def factors(k: float | tuple[float, float]) -> tuple[float, float]:
+    """A diagrams' size as (length factor, height factor): one factor for both, or the pair."""
+    return (float(k), float(k)) if isinstance(k, (int, float)) else (float(k[0]), float(k[1]))
+
+
+def diagrams_size(dr: Drafter, nat: Natural, k: float | tuple[float, float]) -> tuple[float, float]:
+    """The diagrams' block at size factor k (or length and height factors; the larger of the two
+    languages)."""
     from graphplan.util.words import LANGS
     if k not in nat.diagrams:
         sizes = [size_of(dr.diagram_record(k, lang)) for lang in LANGS]
@@ -104,7 +112,7 @@ class Plan:
     size factor, the tables' lettering factor, the composition's shape, grid columns and table
     columns, and the number of sheets (a set: more than 1)."""
     mu: dict[str, float]
-    diagrams: float
+    diagrams: float | tuple[float, float]     # the diagrams' size factor (or length and height factors)
     tables: float
     shape: str = "bands"
     vcols: int = 1
@@ -112,6 +120,8 @@ class Plan:
     parts: int = 1
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
+    after: bool = False              # a set: the diagrams after the acceleration plans (else before)
+    notes: float = 185.0             # a set: the notes' width, mm (the title block's, ``TITLE``, or wider)
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -266,7 +276,8 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
         nat.count["acceleration"] == 0 or readable(nat.families["acceleration"], mu["acceleration"]))
 
 
-def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float) -> list[list[Leaf]]:
+def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
+              notes: float = TITLE) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide)."""
@@ -276,11 +287,11 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
     return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", TITLE, nat.notes_height(TITLE))], width)
+                    + [Leaf("notes", notes, nat.notes_height(notes))], width, after)
 
 
-def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float
-             ) -> list[list[Leaf]]:
+def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
+             after: bool = False) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams
     side by side where the sheet's width holds both (else the position plan, the velocity plans
     under it, then the diagrams: no sheet holds a position plan alone), the velocity plans as many
@@ -291,6 +302,8 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         return grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP)))) if cells_ else []
     if P.w + GAP + D.w <= width + 1e-9:
         rows = [[P, D]] + grid(V)
+    elif after:                     # the plans first, the diagrams on a sheet of their own before the tables
+        return [[P]] + grid(V) + grid(A) + [[D], tail]
     else:
         rows = [[P]] + grid(V) + [[D]]
     rows += grid(A)
@@ -336,12 +349,80 @@ def room_fits(r: tuple[float, ...], w: float, h: float) -> bool:
     return (w <= r[0] and h <= r[1]) or (w <= r[2] and h <= r[3])
 
 
+def set_diagrams(dr: Drafter, nat: Natural, r: tuple[float, ...]) -> list[float | tuple[float, float]]:
+    """The diagrams' sizes a set tries: each length factor of ``DIAGRAM_SIZES`` whose block fits an
+    empty sheet (``room_fits`` the room ``r``) drawn with its one factor (the block may then share a
+    sheet), and the longest that the sheet's width holds drawn as tall as an empty sheet holds it —
+    the height factor the largest from ``HEIGHTS`` (the A3 set's diagrams at one factor 0.5 drew
+    s 32 mm high and L 120 mm over a sheet half empty; length and height grown together, 0.8 missed
+    the sheet by 10 mm). The next length is tried where that drawing is qualitatively wrong. μs
+    stays a standard value, H1, H2 whole mm within the lab's (``first_options``)."""
+    out: list[float | tuple[float, float]] = []
+    tall_found = False
+    for k in DIAGRAM_SIZES:
+        w, h = diagrams_size(dr, nat, k)
+        if w > r[0] + 1e-9:
+            continue                        # too long for the sheet whatever its height
+        if room_fits(r, w, h):
+            out.append(k)
+        if tall_found:
+            continue
+        # the height chosen on the first drawing (a redrawing keeps near it: graphic.redraw); where
+        # that one is redrawn, also the tallest as finally drawn (a taller first drawing may be
+        # redrawn with the lab's smallest poles to fit, flat — the crank-slider's v 15 mm high —;
+        # ``drawn_share`` weighs them)
+        talls = [tallest(lambda t, k=k: room_fits(r, *dr.first_size((k, t))))]
+        if talls[0] is None or dr.redrawn((k, talls[0])):
+            talls.append(tallest(lambda t, k=k: room_fits(r, *diagrams_size(dr, nat, (k, t)))))
+        for tall in dict.fromkeys(talls):
+            if tall is not None and room_fits(r, *diagrams_size(dr, nat, (k, tall))):
+                out.append((k, tall))
+                tall_found = tall_found or dr.diagrams_right((k, tall))
+    return out or list(DIAGRAM_SIZES[-1:])
+
+
+def tallest(fits, low: float = HEIGHTS[-1], high: float = HEIGHTS[0], step: float = HEIGHT_STEP) -> float | None:
+    """The largest height factor from ``low`` to ``high`` in steps of ``step`` that ``fits`` (bisection:
+    a block's height grows with its factor), or None where not even ``low`` does."""
+    n = int(round((high - low) / step))
+    if not fits(low):
+        return None
+    lo, hi = 0, n + 1                       # fits(low + lo·step); not known to fit from hi on
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if fits(round(low + mid * step, 6)):
+            lo = mid
+        else:
+            hi = mid
+    return round(low + lo * step, 6)
+
+
+def page_fill(page, region) -> float:
+    """The share of the field a laid-out sheet's drawings take (their boxes' areas)."""
+    area = sum((b[2] - b[0]) * (b[3] - b[1]) for leaf, b in page if leaf.name)
+    return area / ((region[2] - region[0]) * (region[3] - region[1]))
+
+
+def drawn_share(dr: Drafter, k) -> float:
+    """How large the diagrams of size ``k`` are drawn: half the log of L × the geometric mean of the
+    s, v, a diagrams' heights over the same at factor 1 (k's log where length and height grow
+    together; a flat diagram counts: v 15 mm high under s 32 mm reads worse than both at 25)."""
+    def size(k) -> float:
+        L, *heights = dr.drawn(k)
+        return L * math.prod(max(h, 1.0) for h in heights) ** (1 / 3)
+    return math.log(size(k) / size(1.0)) / 2
+
+
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
     flowing over the sheets in reading order — the fewest sheets (qualitatively wrong diagrams
-    counted as one more: their larger size factor is taken where it is right); then each family
-    grown while the set needs no more sheets (up to ``SET_LARGEST`` times its target)."""
+    counted as one more: their larger size factor is taken where it is right; so is a sheet of the
+    notes alone, the notes first wrapped wider to avoid it); then each family grown while the set
+    needs no more sheets (up to ``SET_LARGEST`` times its target). The diagrams' sizes are
+    ``set_diagrams``'; where they do not fit beside the position plan, both orders are tried (the
+    diagrams before the acceleration plans, or after them on a sheet of their own); of as many
+    sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
     from graphplan.sheets.compose import keep_out
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
@@ -365,12 +446,32 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         floor[fam] = fitted(fam, floor[fam])
     top = fitted("position", fams["position"].start(2.0))
     best = None
-    for k in [k for k in DIAGRAM_SIZES if alone(diagrams_size(dr, nat, k))] or DIAGRAM_SIZES[-1:]:
+    r = room(f)
+    wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
+    for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
-        for factor in (TABLES, 1.0):
+        for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
+            def laid(mu, factor=factor, after=after):
+                """The set's pages at ``mu``: (count, notes alone on the last sheet, the emptiest
+                sheet's fill, the notes' width) — the notes wider where at the title block's width
+                they would take a sheet of their own."""
+                found = None
+                for nw in wide:
+                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep)
+                    if out is None:
+                        return None
+                    orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
+                    fill = min(page_fill(page, region) for page in out)
+                    found = (len(out), orphan, fill, nw)
+                    if not orphan:
+                        break
+                return found
+
             def pages(mu):
-                out = flow(_set_rows(nat, mu, dsize, factor, width), region, keep)
-                return None if out is None else len(out)
+                got = laid(mu)
+                return None if got is None else got[0]
+            if after and (fams["position"].size(top)[0] + GAP + dsize[0] <= width + 1e-9):
+                continue                    # the diagrams beside the position plan: one order only
             for mu_l in (top, coarser(top), coarser(coarser(top))):
                 mu = {"position": mu_l, **floor}
                 count = pages(mu)
@@ -382,16 +483,19 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                         if fams[fam].rel(bigger) > SET_LARGEST or pages({**mu, fam: bigger}) != count:
                             break
                         mu = {**mu, fam: bigger}
-                rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + math.log(k)
+                _, orphan, fill, nw = laid(mu)
+                rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
-                # (its crank shorter than CRANK_MM where a sheet holds a larger one)
+                # (its crank shorter than CRANK_MM where a sheet holds a larger one) and a sheet
+                # holding the notes alone; of as many, the larger drawings (then the fuller
+                # emptiest sheet)
                 wrong = 0 if dr.diagrams_right(k) else 1
                 small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9
                             and fams["position"].drawn(top) >= CRANK_MM - 1e-9)
-                key = (count + wrong + small, wrong, -(factor == TABLES), -rel)
+                key = (count + wrong + small + orphan, wrong, -(factor == TABLES), -round(rel, 6), -round(fill, 1))
                 if best is None or key < best[0]:
-                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count))
+                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))
     if best is None:
         raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
                              "choose a larger --format")
