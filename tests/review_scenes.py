@@ -1,6 +1,6 @@
 """The teacher's review scenes (the six-bar I(0-1) → II(2-3) RRR → II(4-5) RRP with a slider driven
-by a rocker's extension; the offset crank-slider press turning clockwise) as scene text, for the
-tests of the review's corrections."""
+by a rocker's extension; the offset crank-slider press turning clockwise; the second review's slotting
+coulisse and crank-rocker four-bar) as scene text, for the tests of the reviews' corrections."""
 
 SIXBAR = '''# Review scene 1: a six-bar — crank-rocker four-bar O1ABO2 whose rocker extension C drives a slider D
 # through rod CD (structural formula I(0-1) -> II(2-3) -> II(4-5)).
@@ -163,6 +163,167 @@ profile = [[0, 0], [0.05, 0], [0.08, 1], [0.18, 1], [0.19, 0]]
 
 [dynamics]
 delta = 0.03
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
+
+
+COULISSE = '''# Review scene (b): a slotted-lever quick-return mechanism, proportions unlike examples/shaper.toml.
+title = "Кулісний механізм довбального верстата"
+title_en = "Slotted-lever quick-return mechanism of a slotting machine"
+designation = "TMM.CP.08.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer"
+teacher = "Teacher"
+group = "MB-31"
+organisation = "NULES of Ukraine"
+
+[synthesis]
+type = "quick_return"
+K = 1.5
+stroke = 0.35
+centre_distance = 0.36
+
+[params]
+X = 0.50
+lambda1 = 0.5
+rod = "lambda1 * rocker"
+
+[frame.points]
+O = [0, 0]
+O1 = [0, "centre_distance"]
+
+[frame.guides]
+ram = { through = [0, "X"], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = "crank"
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "OB"
+mass = 3
+
+[[link]]
+name = "OB"
+number = 3
+joints = ["O", "B"]
+length = "rocker"
+points = { S3 = 0.5 }
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = "rod"
+points = { S4 = 0.5 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 25
+
+[branch]
+A = 1
+C = 1
+
+[positions]
+count = 12
+start = "idle"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+mass_per_length = 100
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 3200
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.03, 1], [0.32, 1], [0.35, 0]]
+
+[dynamics]
+delta = 0.03
+efficiency = 0.9
+synchronous_rpm = 1500
+'''
+
+FOURBAR = '''# Review scene (a): a crank-rocker four-bar with a resistance on the rocker and masses.
+title = "Шарнірний чотириланковий механізм привода гойдального конвеєра"
+title_en = "Crank-rocker four-bar of a rocking conveyor drive"
+designation = "ТММ.КП.07.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.04]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.32
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.5, D = 1.3 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 270
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 400
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''

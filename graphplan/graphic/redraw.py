@@ -221,7 +221,8 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
     """The options of a drawing both qualitatively right and read within the lab's 5 % at the
     positions: ``options`` (``chord_diagrams`` keywords: point, divisions, L, H1, H2, height) as given
     where that drawing is both, else the first candidate (``candidates``, then ``taller``; each tried
-    once) that is and that ``fits`` (the caller's room: a drawing too large for it is passed over).
+    once) that is and that ``fits`` (the caller's room: a drawing too large for it is passed over;
+    its second argument False where the first drawing was right: no larger than it).
     Where none reaches 5 %: the qualitatively right one with the smallest largest |δ| at the
     positions (the first drawing, unless another cuts that by at least ``WORTHWHILE``); none right:
     ``options`` unchanged (their warnings stay). Returns the options and what was done."""
@@ -255,14 +256,14 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             continue
         change = {k: v for k, v in change.items() if trial[k] != base[k]}
         if off <= LAB_LIMIT:
-            if fits is None or fits({**options, **change}):
+            if fits is None or fits({**options, **change}, bool(wrong)):
                 return done(change, off)
             continue
         right.append((off, order, change))
     for off, _, change in sorted(right, key=lambda r: r[:2]):
         if not change or (not wrong and off > WORTHWHILE * off0):
             break
-        if fits is None or fits({**options, **change}):
+        if fits is None or fits({**options, **change}, bool(wrong)):
             return done(change, off)
     if not wrong:
         return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0)

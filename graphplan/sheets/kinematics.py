@@ -67,17 +67,19 @@ def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, pre
         longest = float(dg.get("L_mm", 240.0)) if room is not None else None
         sizes: dict = {}
 
-        def fits(options: dict) -> bool:
+        def fits(options: dict, grow: bool = True) -> bool:
             w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
             w, h = _block_size(st, options, precision)
-            return (w <= GROWTH * w0 + 1e-6 and h <= GROWTH * h0 + 1e-6
+            g = GROWTH if grow else 1.0
+            return (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6
                     and (room is None or room_fits(room, w, h)))
         chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
         _REDRAWN[key] = {**chosen, "redrawn": done}
     return dict(_REDRAWN[key])
 
 
-GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height
+GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height (redrawn
+                  # for its errors at the positions alone, a right drawing's: no larger than the first)
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:

@@ -312,9 +312,9 @@ def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
         rows.append([str(r["position"]), number(r["s"], lang=lang), number(r["v"], lang=lang),
                      number(r["v_plan"], lang=lang), pct(r["delta_v"]), number(r["a"], lang=lang),
                      number(r["a_plan"], lang=lang), pct(r["delta_a"])])
-    rec = table(rows, [9.0, 16.0, 16.0, 16.0, 13.0, 16.0, 16.0, 13.0], row_h=6.0, size=2.5,
+    rec = table(rows, [9.0, 15.0, 15.0, 15.0, 13.0, 15.0, 15.0, 13.0], row_h=5.0, size=2.5,
                 title=w('readings', n=n))
-    return footnoted(rec, [w('readings_delta')] + ([w('readings_mark')] if marked else []))
+    return footnoted(rec, [w('readings_delta') + (w('readings_mark') if marked else "")])
 
 
 def phi_convention(phi0: float, lang: str) -> str:

@@ -222,14 +222,11 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
     "kin no": ('№', 'No.'),
-    "kin readings": ('Таблиця {n}. Значення з діаграм у положеннях поруч з планами',
-                     'Table {n}. Values read off the diagrams at the positions, beside the plans'),
+    "kin readings": ('Таблиця {n}. Діаграми в положеннях і плани', 'Table {n}. Diagrams at the positions, plans'),
     "kin readings_plan": ('план', 'plan'),
-    "kin readings_delta": ('δ — діаграми проти точного значення (проти |max|, де |значення| < 10 % від нього); '
-                           'план — табл. 1 і плани прискорень',
-                           'δ: the diagrams against the exact value (against |max| where |value| < 10 % of it); '
-                           'plan: Table 1 and the acceleration plans'),
-    "kin readings_mark": ('* — понад 5 % лабораторної (див. примітки)', "* — over the lab's 5 % (see the notes)"),
+    "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
+                           'δ: of the exact value (of |max| where |value| < 10 % of it)'),
+    "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
     "kin dash": ('— : немає (мм для ε; δ там, де вектор коротший за півподілки лінійки або точне значення ≈ 0)',
                  '— : none (mm of ε; δ where a vector is under half a ruler division or the exact value is ≈ 0)'),
     "kin signs": ('Знаки s, v, a (таблиці, точний аналіз, ключі): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, analyze, keys): + along the guide {guide}'),
