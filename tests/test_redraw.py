@@ -44,7 +44,7 @@ def check_sheet_diagrams(st, k: float = 1.0) -> str:
     errs = d.position_errors()
     worst = max(float(np.max(np.abs(e))) for e in errs.values())
     assert rd.off_after == pytest.approx(worst, abs=1e-9)
-    assert ("miss the lab's 5 %" in notes) == (worst > 5.0), (worst, notes)
+    assert ("miss the 5 % the lab allows" in notes) == (worst > 5.0), (worst, notes)
     if not wrong(d):
         assert "qualitatively wrong" not in notes
         if rd.wrong_before:                       # the first drawing was wrong: say what changed

@@ -134,7 +134,7 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
         return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}"
                 + ("; жодна побудова, яку дозволяє лабораторна (H_{1}, H_{2} 15–50 мм, корекція площ, менші "
                    "інтервали, вища діаграма s), не дає 5 %" if searched else ""))
-    return (f"Values read off the diagrams at the positions miss the lab's 5 %{ref}: {where} — {why}"
+    return (f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}"
             + ("; no drawing the lab allows (H_{1}, H_{2} 15–50 mm, the area correction, smaller intervals, "
                "a taller s) reaches 5 %" if searched else ""))
 

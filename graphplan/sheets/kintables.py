@@ -290,15 +290,21 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
     return rows
 
 
+READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
+
+
 def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
     """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
-    v and a beside them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why)."""
+    v and a under them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why). The
+    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
+    ``READINGS_COLUMNS`` a block, the blocks one under another."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
     units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
     us, uv, ua = (unit(u, lang) for u in units)
     plans = w('readings_plan')
-    rows = [[w('no'), f"{s_}, {us}", f"{v_}, {uv}", plans, "δ, %", f"{a_}, {ua}", plans, "δ, %"]]
+    heads = [w('no'), f"{s_}, {us}", f"{v_}, {uv}", plans, f"δ_{{{diag.symbols[1]}}}, %", f"{a_}, {ua}", plans,
+             f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
     def pct(e: float) -> str:
@@ -308,12 +314,22 @@ def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
             marked = True
             cell += MARK
         return cell
-    for r in diagram_readings(diag, doc):
-        rows.append([str(r["position"]), number(r["s"], lang=lang), number(r["v"], lang=lang),
-                     number(r["v_plan"], lang=lang), pct(r["delta_v"]), number(r["a"], lang=lang),
-                     number(r["a_plan"], lang=lang), pct(r["delta_a"])])
-    rec = table(rows, [9.0, 15.0, 15.0, 15.0, 13.0, 15.0, 15.0, 13.0], row_h=5.0, size=2.5,
-                title=w('readings', n=n))
+    cols = [[str(r["position"]), number(r["s"], lang=lang), number(r["v"], lang=lang),
+             number(r["v_plan"], lang=lang), pct(r["delta_v"]), number(r["a"], lang=lang),
+             number(r["a_plan"], lang=lang), pct(r["delta_a"])] for r in diagram_readings(diag, doc)]
+    rec: Record | None = None
+    y = 0.0
+    for start in range(0, len(cols), READINGS_COLUMNS):
+        block = cols[start:start + READINGS_COLUMNS]
+        rows = [[heads[i]] + [c[i] for c in block] for i in range(len(heads))]
+        part = table(rows, [20.0] + [11.0] * len(block), row_h=5.0, size=2.5,
+                     title=w('readings', n=n) if rec is None else "", align=["start"] + ["end"] * len(block))
+        if rec is None:
+            rec = part
+        else:
+            b, top = rec.bounds(), part.bounds()[3]
+            rec.extend(part.moved(0.0, b[1] - 3.0 - top))
+    assert rec is not None
     return footnoted(rec, [w('readings_delta') + (w('readings_mark') if marked else "")])
 
 

@@ -222,7 +222,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
     "kin no": ('№', 'No.'),
-    "kin readings": ('Таблиця {n}. Діаграми в положеннях і плани', 'Table {n}. Diagrams at the positions, plans'),
+    "kin readings": ('Таблиця {n}. Діаграми в положеннях поруч з планами', 'Table {n}. Diagrams read at the positions, beside the plans'),
     "kin readings_plan": ('план', 'plan'),
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
