@@ -70,7 +70,7 @@ def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, pre
         def fits(options: dict, grow: bool = True) -> bool:
             w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
             w, h = _block_size(st, options, precision)
-            g = GROWTH if grow else 1.0
+            g = GROWTH if grow else SAME
             return (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6
                     and (room is None or room_fits(room, w, h)))
         chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
@@ -78,8 +78,8 @@ def diagram_options(st: Study, k: float = 1.0, positions: int | None = None, pre
     return dict(_REDRAWN[key])
 
 
-GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height (redrawn
-                  # for its errors at the positions alone, a right drawing's: no larger than the first)
+GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height
+SAME = 1.05       # … redrawn for its errors at the positions alone (the first was right): about its size
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:
