@@ -177,7 +177,7 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
         off = (f"найбільша |δ| у положеннях {a} → {b} %" if uk else f"the largest |δ| at the positions {a} → {b} %")
     if not rd.wrong_before:
         return (f"Діаграми побудовано заново: {how} — {off}" if uk else f"Diagrams redrawn: {how} — {off}")
-    syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
+    syms = ", ".join(f"{d.symbols[1 if key == 'v' else 2]}_{{{d.sub}}}" for key in rd.wrong_before)
     many = len(rd.wrong_before) > 1
     tail = f"; {off}" if off else ""
     if uk:

@@ -323,7 +323,7 @@ def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
         block = cols[start:start + READINGS_COLUMNS]
         rows = [[heads[i]] + [c[i] for c in block] for i in range(len(heads))]
         part = table(rows, [20.0] + [11.0] * len(block), row_h=5.0, size=2.5,
-                     title=w('readings', n=n) if rec is None else "", align=["start"] + ["end"] * len(block))
+                     title=w("readings", n=n) if rec is None else "")
         if rec is None:
             rec = part
         else:
