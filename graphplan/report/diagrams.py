@@ -130,13 +130,14 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
         why = (f"похибка відліку {num(d.precision, lang)} мм, підсилена двома диференціюваннями" if uk else
                f"the ruler's {num(d.precision, lang)} mm amplified by the two differentiations")
     searched = d.redrawn is not None and d.redrawn.off_after is not None
+    s0 = f"{d.symbols[0]}_{{{d.sub}}}"
     if uk:
         return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}"
                 + ("; жодна побудова, яку дозволяє лабораторна (H_{1}, H_{2} 15–50 мм, корекція площ, менші "
-                   "інтервали, вища діаграма s), не дає 5 %" if searched else ""))
+                   f"інтервали, вища діаграма {s0}), не дає 5 %" if searched else ""))
     return (f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}"
             + ("; no drawing the lab allows (H_{1}, H_{2} 15–50 mm, the area correction, smaller intervals, "
-               "a taller s) reaches 5 %" if searched else ""))
+               f"a taller {s0}) reaches 5 %" if searched else ""))
 
 
 def redrawn_note(d: Diagrams, lang: str) -> str | None:
@@ -163,8 +164,9 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
             parts.append(f"{name} = {num(value, lang, 3)} {mm} " + (f"(не {num(was, lang, 3)})" if uk else
                                                                     f"(not {num(was, lang, 3)})"))
         elif key == "height":
-            parts.append(f"діаграма s вища: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}" if uk else
-                         f"the s diagram taller: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
+            s0 = f"{d.symbols[0]}_{{{d.sub}}}"
+            parts.append(f"діаграма {s0} вища: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}" if uk else
+                         f"the {s0} diagram taller: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
