@@ -1,7 +1,8 @@
 """The kinematics sheet (sheet 1 of the coursework, seeds 000 and 004; the lab report of seed 002):
 the position plan, the velocity plan of every position, the acceleration plans asked for, the s–v–a
 diagrams, the tables (sheets/kintables.py: velocities; one numbered table per acceleration plan; the
-links' dimensions; the lab's s, v, a at the chosen positions) and the notes.
+links' dimensions; the lab's s, v, a at the chosen positions; the diagrams read at every position
+beside the plans) and the notes.
 
 Composed by construction (docs/composition.md): the tables in a column by the title block, the notes
 above it; in the rest of the field the position plan and the diagrams, the velocity plans in a grid of

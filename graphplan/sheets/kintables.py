@@ -1,6 +1,7 @@
 """The kinematics sheet's tables and notes (seeds 000, 002 and 004), numbered 1, 2, 3 … in reading
 order: table 1 the plans' velocities at every position, then one table per acceleration plan (2, 3 …),
-then the links' dimensions and the lab's s, v, a at its chosen positions — each error past the lab's 5 % marked and footnoted with its cause —
+then the links' dimensions, the lab's s, v, a at its chosen positions and the diagrams read at every
+position beside the plans (seed 002, step 11) — each error past the lab's 5 % marked and footnoted with its cause —
 and the notes' lines (mobility, structure, scales, precision, the largest errors, the signs). The
 composition that places them is sheets/kinematics.py (sheets/kinlayout.py the arithmetic)."""
 from __future__ import annotations
