@@ -1,7 +1,7 @@
 """The teacher's review scenes (the six-bar I(0-1) → II(2-3) RRR → II(4-5) RRP with a slider driven
 by a rocker's extension; the offset crank-slider press turning clockwise; the second review's
-slotted-lever coulisse, K = 1.5, its crank clockwise) as scene text, for the tests of the review's
-corrections."""
+slotted-lever coulisse, K = 1.5, its crank clockwise, and crank-rocker four-bar) as scene text, for the
+tests of the reviews' corrections."""
 
 SIXBAR = '''# Review scene 1: a six-bar — crank-rocker four-bar O1ABO2 whose rocker extension C drives a slider D
 # through rod CD (structural formula I(0-1) -> II(2-3) -> II(4-5)).
@@ -312,4 +312,69 @@ profile = [[0, 0], [0.03, 1], [0.32, 1], [0.35, 0]]
 delta = 0.03
 efficiency = 0.9
 synchronous_rpm = 1500
+'''
+
+FOURBAR = '''# Review scene (a): a crank-rocker four-bar with a resistance on the rocker and masses.
+title = "Шарнірний чотириланковий механізм привода гойдального конвеєра"
+title_en = "Crank-rocker four-bar of a rocking conveyor drive"
+designation = "ТММ.КП.07.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.04]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.32
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.5, D = 1.3 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 270
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 400
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
 '''

@@ -212,10 +212,10 @@ def test_none_reported_where_the_diagram_is_right(crank_slider):
 
 def test_the_sheet_notes_say_the_method_and_the_spurious_extrema(crank_slider):
     """The sheets issue draws the A2 sheet's diagrams at L = 300 mm: its a-diagram is right and the
-    notes say only the method. The A3 set still draws them at L = 120 mm with the s diagram 40 mm
-    high (a taller one does not fit an A3 sheet), where the a-diagram shows extrema the exact a_B
-    lacks and no correction, pole distance or finer division the lab allows removes them
-    (graphic.redraw): the notes say where, and that nothing helped."""
+    notes say only the method. The A3 set drew them at L = 120 mm with the s diagram 40 mm high, where
+    the a-diagram shows extrema the exact a_B lacks; redrawn for its errors at the positions
+    (H1 = 15, H2 = 30 mm: a narrower block) the full-size diagrams fit the same four sheets and are
+    right: the notes say what was redrawn and nothing is qualitatively wrong."""
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import BUILDERS
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="kinematics")
@@ -223,8 +223,7 @@ def test_the_sheet_notes_say_the_method_and_the_spurious_extrema(crank_slider):
     assert "методом хорд, 12 поділок" in a2 and "якісно хибна" not in a2
     a3 = "".join(page.svg() for page in BUILDERS["kinematics"](crank_slider, form("A3"), args).pages)
     assert "методом хорд, 12 поділок" in a3
-    assert "Діаграма a якісно хибна: хибні екстремуми φ = " in a3
-    assert "a: жодна побудова заново, яку дозволяє лабораторна" in a3
+    assert "якісно хибна" not in a3 and "Діаграми побудовано заново: H" in a3
 
 
 # -- the drawing, the command ----------------------------------------------------------------------

@@ -78,9 +78,14 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     for n, page in enumerate(sheet.pages, 1):
         print(word("sheet page written", args.lang, path=page_path(path, n), form=f.name, size=size,
                    k=page.fields.get("sheet", n), m=page.fields.get("sheets", len(sheet.pages)),
-                   n=len(page.placed), blocks="block" if len(page.placed) == 1 else "blocks"),
+                   n=len(page.placed), blocks=_blocks(len(page.placed), args.lang)),
               file=sys.stderr)      # the sheet's number in its scene's project
     return 0
+
+
+def _blocks(n: int, lang: str) -> str:
+    """The noun of the written-sheet line: «блоків: 4» (uk), "1 block", "4 blocks" (en)."""
+    return "блоків" if lang == "uk" else ("block" if n == 1 else "blocks")
 
 
 def _scene_tree(path: str | None) -> dict | None:

@@ -178,6 +178,42 @@ class Diagrams:
         """The error in percent of the cycle's maximum |value| (what the bench charts)."""
         return 100.0 * (self.values(reading)[key] - self.truth[key]) / self.maxima[key[0]]
 
+    @property
+    def at_positions(self) -> list[int]:
+        """The division ordinates that are the mechanism's positions 0 … N − 1 (the plans')."""
+        return [k for k, p in enumerate(self.position[:-1]) if p is not None]
+
+    def position_errors(self, reading: Reading | None = None) -> dict[str, np.ndarray]:
+        """δ, % of s, v, a read off the diagrams at the positions (``at_positions``), judged as the
+        lab judges them (``judged_pct``): keys "s", "v_at", "a_at"."""
+        k = self.at_positions
+        vals = self.values(reading)
+        return {key: judged_pct(vals[key][k], self.truth[key][k], self.maxima[key[0]])
+                for key in ("s", "v_at", "a_at")}
+
+
+def judged_pct(value: np.ndarray, truth: np.ndarray, big: float) -> np.ndarray:
+    """δ, % as the lab's 5 % judges a diagram's reading: 100·(graphical − analytic)/analytic where
+    |analytic| ≥ ``MEANINGFUL`` of the cycle's maximum ``big``, else 100·(graphical − analytic)/big
+    (near a zero a reading's share of the value means nothing; its share of the maximum does)."""
+    value, truth = np.asarray(value, dtype=float), np.asarray(truth, dtype=float)
+    big = max(float(big), 1e-300)
+    meaningful = np.abs(truth) >= MEANINGFUL * big
+    return 100.0 * (value - truth) / np.where(meaningful, np.where(truth == 0, 1.0, truth), big)
+
+
+def drawing_sign(out: Output, s_cycle: np.ndarray) -> int:
+    """How the diagram is drawn (value = sign · mm · μ): a turning output's angle grows upward; a
+    rocker's angle (a link that swings) as the tables sign it, + counter-clockwise (ω3 on the
+    diagram with Table 1's sign); a sliding output's s so that the stroke from position 0 rises
+    (the lab's s, for some outputs mirrored)."""
+    growth, span = s_cycle[-1] - s_cycle[0], float(np.ptp(s_cycle))
+    if abs(growth) > 1e-9 * max(span, 1e-300):
+        return int(np.sign(growth))
+    if out.kind == "link":
+        return 1
+    return 1 if np.mean(s_cycle) >= 0 else -1
+
 
 # -- the study ---------------------------------------------------------------------------------------
 
@@ -318,10 +354,8 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
 
     cycle_turn = np.arange(CYCLE + 1) * 360.0 / CYCLE
     s_c, v_c, a_c = exact_motion(st, out, cycle_turn)
-    growth = s_c[-1] - s_c[0]
     s_range = float(np.ptp(s_c))
-    rotating = abs(growth) > 1e-9 * max(s_range, 1e-300)
-    sign = int(np.sign(growth)) if rotating else (1 if np.mean(s_c) >= 0 else -1)
+    sign = drawing_sign(out, s_c)
     mu_s = choose_mu_s(st, unit, s_range, height)
     mu_t = 2 * math.pi / (abs(mech.omega1) * L)     # μt = T/L = 2π/(ω1·L)
     mu_v = mu_s / (mu_t * H1)

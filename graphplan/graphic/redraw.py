@@ -22,34 +22,50 @@ import numpy as np
 
 from graphplan.exact.positions import exact_motion
 from graphplan.graphic import qualitative
-from graphplan.graphic.chords import midpoints
-from graphplan.graphic.diagrams import CYCLE, choose_mu_s, differentiate, division_turns, refine, resolve_output
+from graphplan.graphic.chords import midpoints, periodic_spline, read
+from graphplan.graphic.diagrams import CYCLE, drawing_sign, choose_mu_s, differentiate, division_turns, judged_pct, LAB_LIMIT, refine, resolve_output
 
 LAB_POLES = (15.0, 50.0)    # mm: the pole distances H1, H2 the lab manual allows
 POLE_STEP = 5.0             # mm: a pole distance is tried larger in these steps
 LONGER = (1.25, 1.5, 2.0)   # L tried this many times longer, up to the longest the sheet allows
 CORRECTED_PAIRS = 16        # the nearest pole pairs tried with the correction too (it is the costly one)
+TALLER = (1.25,)    # the s diagram tried this many times taller (the sheet's room permitting)
+WORTHWHILE = 0.8    # a redrawing that reaches no 5 % is taken where it cuts the largest |δ| at least to this share
 FINER = 0.25                # mm: the adaptive mode's tolerance tried after its default (0.5 mm)
 
 
 @dataclass(frozen=True)
 class Redrawing:
     """What ``redraw`` chose: the options changed from the first drawing (``chord_diagrams``
-    keywords: ``correct``, ``H1``, ``H2``, ``L``, ``adaptive``, ``tolerance``), the first drawing's
-    and the chosen drawing's qualitatively wrong diagrams ("v", "a"), the candidates tried."""
+    keywords: ``correct``, ``H1``, ``H2``, ``L``, ``adaptive``, ``tolerance``, ``height``), the first
+    drawing's and the chosen drawing's qualitatively wrong diagrams ("v", "a"), the candidates
+    tried, and the largest |δ| at the positions of each (judged_pct)."""
     changed: dict[str, Any] = field(default_factory=dict)
     wrong_before: tuple[str, ...] = ()
     wrong_after: tuple[str, ...] = ()
     tried: int = 0
     first: dict[str, Any] = field(default_factory=dict)   # the first drawing's values of the changed keys
+    off_before: float | None = None   # the largest |δ|, % at the positions: the first drawing's
+    off_after: float | None = None    # … and the chosen one's (None: not measured)
 
     @property
     def right(self) -> bool:
         return not self.wrong_after
 
+    @property
+    def within(self) -> bool:
+        """Whether the chosen drawing reads within the lab's 5 % at the positions."""
+        return self.off_after is not None and self.off_after <= LAB_LIMIT
+
+    @property
+    def for_errors(self) -> bool:
+        """Whether the drawing was changed for its errors at the positions alone (it was right)."""
+        return bool(self.changed) and not self.wrong_before
+
     def to_json(self) -> dict[str, Any]:
         return {"changed": dict(self.changed), "before": dict(self.first), "wrong_before": list(self.wrong_before),
-                "wrong_after": list(self.wrong_after), "tried": self.tried}
+                "wrong_after": list(self.wrong_after), "tried": self.tried,
+                "worst_pct_before": self.off_before, "worst_pct_after": self.off_after}
 
 
 class Probe:
@@ -61,21 +77,30 @@ class Probe:
         self.out, _, _, _, self.unit = resolve_output(st, point)
         self.turns = division_turns(st.mech.task.count if divisions is None else divisions)
         cycle = np.arange(CYCLE + 1) * 360.0 / CYCLE
-        s_c = exact_motion(st, self.out, cycle)[0]
-        growth, self.s_range = s_c[-1] - s_c[0], float(np.ptp(s_c))
-        rotating = abs(growth) > 1e-9 * max(self.s_range, 1e-300)
-        self.sign = int(np.sign(growth)) if rotating else (1 if np.mean(s_c) >= 0 else -1)
-        self.s = exact_motion(st, self.out, self.turns)[0]
+        s_c, v_c, a_c = exact_motion(st, self.out, cycle)
+        self.s_range = float(np.ptp(s_c))
+        self.sign = drawing_sign(self.out, s_c)
+        self.s, self.v_pos, self.a_pos = exact_motion(st, self.out, self.turns)
+        self.max_s, self.max_v, self.max_a = (float(np.max(np.abs(q))) for q in (s_c, v_c, a_c))
         self.sample = qualitative.sample_turns()
         _, self.v, self.a = exact_motion(st, self.out, self.sample)
         self.precision = precision
         self.omega = abs(st.mech.omega1)
+        self.memo: dict = {}
 
-    def wrong(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
-              tolerance: float = 0.5, height: float | None = None, all_of: bool = True) -> tuple[str, ...]:
-        """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
-        ``chord_diagrams`` would report them (the same construction, ruler and comparison);
-        ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
+    def readings(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
+                 tolerance: float = 0.5, height: float | None = None):
+        """The drawing with these options, as ``chord_diagrams`` constructs it: (turns, μs, μv, μa,
+        the read v and a at the middles, the v and a curves read at the division ordinates, s read);
+        each drawing constructed once (``wrong`` and ``off`` judge the same one)."""
+        key = (L, H1, H2, correct, adaptive, tolerance, height)
+        if key not in self.memo:
+            if len(self.memo) > 4:
+                self.memo.clear()
+            self.memo[key] = self._readings(*key)
+        return self.memo[key]
+
+    def _readings(self, L, H1, H2, correct, adaptive, tolerance, height):
         turns, s = self.turns, self.s
         mu_s = choose_mu_s(self.st, self.unit, self.s_range, height)
         if adaptive:
@@ -83,10 +108,18 @@ class Probe:
             if len(turns) != len(self.turns):
                 s = exact_motion(self.st, self.out, turns)[0]
         x = L * turns / 360.0
-        _, _, v, _, _, a = differentiate(x, self.sign * s / mu_s, L, H1, H2, self.precision, correct)
+        s_r, _, v, v_at, _, a = differentiate(x, self.sign * s / mu_s, L, H1, H2, self.precision, correct)
         mu_t = 2 * math.pi / (self.omega * L)
         mu_v = mu_s / (mu_t * H1)
         mu_a = mu_v / (mu_t * H2)
+        return turns, x, mu_s, mu_v, mu_a, v, a, v_at, s_r
+
+    def wrong(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
+              tolerance: float = 0.5, height: float | None = None, all_of: bool = True) -> tuple[str, ...]:
+        """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
+        ``chord_diagrams`` would report them (the same construction, ruler and comparison);
+        ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
+        turns, x, _, mu_v, mu_a, v, a, _, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         window, visible = qualitative.window_of(turns), max(qualitative.VISIBLE_MM, self.precision)
         xm = midpoints(x)
         wrong = []
@@ -96,6 +129,20 @@ class Probe:
                 if not all_of:
                     break
         return tuple(wrong)
+
+    def off(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
+            tolerance: float = 0.5, height: float | None = None) -> float:
+        """The largest |δ|, % of s, v, a read at the mechanism's positions off a drawing with these
+        options, judged as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
+        turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+        at = np.isin(np.round(turns[:-1], 9), np.round(self.turns[:-1], 9))
+        a_at = read(periodic_spline(midpoints(x), a, L)(x), self.precision)
+        worst = 0.0
+        for got, mu, truth, big in ((s_r, mu_s, self.s, self.max_s), (v_at, mu_v, self.v_pos, self.max_v),
+                                    (a_at, mu_a, self.a_pos, self.max_a)):
+            pct = judged_pct(self.sign * got[:-1][at] * mu, truth[:-1], big)
+            worst = max(worst, float(np.max(np.abs(pct))))
+        return worst
 
 
 POLE_MENU = tuple(float(h) for h in range(15, 51, 5))   # mm: the pole distances a redrawing takes (the lab's 15–50)
@@ -157,33 +204,67 @@ def candidates(L: float, H1: float, H2: float, wrong: tuple[str, ...], poles=LAB
         yield {"H1": h1, "H2": h2, "correct": True}
 
 
+def taller(height: float | None) -> Iterator[dict[str, Any]]:
+    """The s diagram drawn taller (a finer μs: the ruler's half division a smaller share of every
+    ordinate, the v and a diagrams as much taller), with and without the correction; the caller's
+    ``fits`` bounds it by the sheet's room."""
+    if height is None:
+        return
+    for f in TALLER:
+        yield {"height": height * f}
+        yield {"height": height * f, "correct": True}
+
+
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
            fixed: frozenset[str] = frozenset(), tallest: float | None = None,
            fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
-    """The options of a qualitatively right drawing: ``options`` (``chord_diagrams`` keywords: point,
-    divisions, L, H1, H2, height) as given where that drawing is right, else the first candidate
-    (``candidates``; each tried once) that is and that ``fits`` (the caller's room: a right drawing too
-    large for it is passed over); none: ``options`` unchanged (their warnings stay). Returns the
-    options and what was done."""
+    """The options of a drawing both qualitatively right and read within the lab's 5 % at the
+    positions: ``options`` (``chord_diagrams`` keywords: point, divisions, L, H1, H2, height) as given
+    where that drawing is both, else the first candidate (``candidates``, then ``taller``; each tried
+    once) that is and that ``fits`` (the caller's room: a drawing too large for it is passed over;
+    its second argument False where the first drawing was right: no larger than it).
+    Where none reaches 5 %: the qualitatively right one with the smallest largest |δ| at the
+    positions (the first drawing, unless another cuts that by at least ``WORTHWHILE``); none right:
+    ``options`` unchanged (their warnings stay). Returns the options and what was done."""
     probe = Probe(st, options.get("point"), options.get("divisions"), precision)
     L, H1, H2 = float(options["L"]), float(options["H1"]), float(options["H2"])
     base = {"L": L, "H1": H1, "H2": H2, "correct": bool(options.get("correct", False)),
             "adaptive": bool(options.get("adaptive", False)), "tolerance": float(options.get("tolerance", 0.5)),
             "height": options.get("height")}
     wrong = probe.wrong(**base)
-    if not wrong:
-        return dict(options), Redrawing()
+    off0 = probe.off(**base)
+    if not wrong and off0 <= LAB_LIMIT:
+        return dict(options), Redrawing(off_before=off0, off_after=off0)
     seen = {tuple(sorted(base.items()))}
-    for change in candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest):
+    right: list[tuple[float, int, dict[str, Any]]] = [] if wrong else [(off0, 0, {})]
+
+    def done(change: dict[str, Any], off: float) -> tuple[dict[str, Any], Redrawing]:
+        return ({**options, **change},
+                Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
+
+    cands = list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest)) + list(taller(base["height"]))
+    for order, change in enumerate(cands, 1):
         trial = {**base, **change}
         key = tuple(sorted(trial.items()))
         if key in seen:
             continue
         seen.add(key)
-        if not probe.wrong(**trial, all_of=False):
-            change = {k: v for k, v in change.items() if trial[k] != base[k]}
-            if fits is not None and not fits({**options, **change}):
-                continue
-            return ({**options, **change},
-                    Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}))
-    return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1)
+        off = probe.off(**trial)
+        if off > LAB_LIMIT and right and off >= min(r[0] for r in right):
+            continue                  # no better than one already right: not judged further
+        if probe.wrong(**trial, all_of=False):
+            continue
+        change = {k: v for k, v in change.items() if trial[k] != base[k]}
+        if off <= LAB_LIMIT:
+            if fits is None or fits({**options, **change}, bool(wrong)):
+                return done(change, off)
+            continue
+        right.append((off, order, change))
+    for off, _, change in sorted(right, key=lambda r: r[:2]):
+        if not change or (not wrong and off > WORTHWHILE * off0):
+            break
+        if fits is None or fits({**options, **change}, bool(wrong)):
+            return done(change, off)
+    if not wrong:
+        return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0)
+    return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1, {}, off0, off0)

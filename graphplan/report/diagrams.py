@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from graphplan.drawing.diagrams import fmt, method_words, scale_lines, units  # noqa: F401
+from graphplan.drawing.diagrams import fmt, method_words, scale_lines, scale_symbols, units  # noqa: F401
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, num, pct, unit, word
 
@@ -83,7 +83,7 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     }
 
 
-def sheet_notes(d: Diagrams, lang: str) -> list[str]:
+def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
     """The lines a sheet's notes give the diagrams: which method drew them, and what they get
     qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {d.point}"
@@ -92,20 +92,66 @@ def sheet_notes(d: Diagrams, lang: str) -> list[str]:
     said = redrawn_note(d, lang)
     lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
+    said = limit_note(d, lang, table)
+    lines += [said] if said else []
     return lines
+
+
+def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
+    """Where the values read off the diagrams at the positions miss the lab's 5 % (δ of the exact
+    value; of the cycle's |max| where the value is below ``MEANINGFUL`` of it): which, by how much,
+    and why — the chords' own error (the exact drawing misses too: smaller intervals would be
+    needed) or the ruler's half division amplified by the differentiations — and, where
+    graphic.redraw searched, that nothing the lab allows reaches it. None where all are within."""
+    from graphplan.graphic.diagrams import LAB_LIMIT
+    errs, own = d.position_errors(), d.position_errors(d.exact)
+    idx = d.at_positions
+    parts, chords = [], False
+    for key, sym in (("s", d.symbols[0]), ("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
+        bad = [i for i in np.argsort(-np.abs(errs[key])) if abs(errs[key][i]) > LAB_LIMIT]
+        if not bad:
+            continue
+        chords |= any(abs(own[key][i]) > LAB_LIMIT for i in bad)
+        cells = ", ".join(f"{d.position[idx[i]]} ({fixed(errs[key][i], lang, 1, plus=True).replace('-', '−')} %)"
+                          for i in bad[:3])
+        parts.append(f"{sym}_{{{d.sub}}} {cells}" + (" …" if len(bad) > 3 else ""))
+    if not parts:
+        return None
+    uk = lang == "uk"
+    where = "; ".join(parts)
+    ref = (f" (табл. {table})" if uk else f" (Table {table})") if table else ""
+    if chords:
+        p = num(d.precision, lang)
+        why = (f"власна похибка хорд при {d.divisions} поділках; менші інтервали там підсилюють похибку лінійки "
+               f"{p} мм більше, ніж зменшують її" if uk else
+               f"the chords' own error at {d.divisions} divisions; smaller intervals there amplify the ruler's "
+               f"{p} mm more than they remove it")
+    else:
+        why = (f"похибка відліку {num(d.precision, lang)} мм, підсилена двома диференціюваннями" if uk else
+               f"the ruler's {num(d.precision, lang)} mm amplified by the two differentiations")
+    searched = d.redrawn is not None and d.redrawn.off_after is not None
+    s0 = f"{d.symbols[0]}_{{{d.sub}}}"
+    if uk:
+        return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}"
+                + ("; жодна побудова, яку дозволяє лабораторна (H_{1}, H_{2} 15–50 мм, корекція площ, менші "
+                   f"інтервали, вища діаграма {s0}), не дає 5 %" if searched else ""))
+    return (f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}"
+            + ("; no drawing the lab allows (H_{1}, H_{2} 15–50 mm, the area correction, smaller intervals, "
+               f"a taller {s0}) reaches 5 %" if searched else ""))
 
 
 def redrawn_note(d: Diagrams, lang: str) -> str | None:
     """What graphic.redraw did, in one line (markup): the options the diagrams were redrawn with so
-    that they are qualitatively right, or that nothing the lab allows made them so. None where the
-    first drawing was right."""
+    that they are qualitatively right, or read closer to the exact at the positions (the largest
+    |δ| before → after), or that nothing the lab allows made them right. None where the first
+    drawing was kept."""
     rd = d.redrawn
-    if rd is None or not rd.wrong_before:
+    if rd is None or not (rd.wrong_before or rd.changed):
         return None
     uk = lang == "uk"
-    syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
     mm = unit("mm", lang)
-    if not rd.right:
+    if rd.wrong_before and not rd.right:
+        syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
         return (f"{syms}: жодна побудова заново, яку дозволяє лабораторна (корекція площ, H_{{1}}, H_{{2}} від 15 до "
                 f"50 {mm}, довша L, менші інтервали), тут не робить діаграму якісно правильною" if uk else
                 f"{syms}: no redrawing the lab allows (the area correction, H_{{1}}, H_{{2}} from 15 to 50 {mm}, a "
@@ -117,18 +163,30 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
             name = {"H1": "H_{1}", "H2": "H_{2}", "L": "L"}[key]
             parts.append(f"{name} = {num(value, lang, 3)} {mm} " + (f"(не {num(was, lang, 3)})" if uk else
                                                                     f"(not {num(was, lang, 3)})"))
+        elif key == "height":
+            s0 = f"{d.symbols[0]}_{{{d.sub}}}"
+            parts.append(f"діаграма {s0} вища: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}" if uk else
+                         f"the {s0} diagram taller: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
             parts.append(f"менші інтервали там, де крива згинається ({d.divisions} поділок)" if uk else
                          f"smaller intervals where the curve bends ({d.divisions} divisions)")
-    many = len(rd.wrong_before) > 1
     how = ", ".join(parts)
+    off = ""
+    if rd.off_before is not None and rd.off_after is not None:
+        a, b = fixed(rd.off_before, lang, 1), fixed(rd.off_after, lang, 1)
+        off = (f"найбільша |δ| у положеннях {a} → {b} %" if uk else f"the largest |δ| at the positions {a} → {b} %")
+    if not rd.wrong_before:
+        return (f"Діаграми побудовано заново: {how} — {off}" if uk else f"Diagrams redrawn: {how} — {off}")
+    syms = ", ".join(f"{d.symbols[1 if key == 'v' else 2]}_{{{d.sub}}}" for key in rd.wrong_before)
+    many = len(rd.wrong_before) > 1
+    tail = f"; {off}" if off else ""
     if uk:
-        return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми чи нулі, яких немає в русі" if many
-                else f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми чи нулі, яких немає в русі")
+        return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми чи нулі, яких немає в русі{tail}" if many
+                else f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми чи нулі, яких немає в русі{tail}")
     return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema or zero crossings "
-            "the motion lacks")
+            f"the motion lacks{tail}")
 
 
 def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]:
@@ -213,9 +271,9 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         lines.append(f"  {w(key.replace('_', ' '))}: " + w("deviation", mm=fixed(float(np.max(np.abs(dev))), lang, 2),
                                                              pct=fixed(float(100 * np.max(np.abs(dev)) / mx), lang, 2),
                                                              cl=fixed(float(dev[-1]), lang, 2, plus=True)))
-    said = redrawn_note(d, lang)
+    said = [s for s in (redrawn_note(d, lang), limit_note(d, lang)) if s]
     if said:
-        lines += ["", plain(said)]
+        lines += [""] + [plain(s) for s in said]
     lines.append("")
     lines.append(w("warnings") + ":" + ("" if d.warnings else " " + w("none")))
     for item in d.warnings:

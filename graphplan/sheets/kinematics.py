@@ -1,7 +1,8 @@
 """The kinematics sheet (sheet 1 of the coursework, seeds 000 and 004; the lab report of seed 002):
 the position plan, the velocity plan of every position, the acceleration plans asked for, the s–v–a
 diagrams, the tables (sheets/kintables.py: velocities; one numbered table per acceleration plan; the
-links' dimensions; the lab's s, v, a at the chosen positions) and the notes.
+links' dimensions; the lab's s, v, a at the chosen positions; the diagrams read at every position
+beside the plans) and the notes.
 
 Composed by construction (docs/composition.md): the tables in a column by the title block, the notes
 above it; in the rest of the field the position plan and the diagrams, the velocity plans in a grid of
@@ -67,10 +68,11 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
         longest = float(dg.get("L_mm", 240.0)) if room is not None else None
         sizes: dict = {}
 
-        def fits(options: dict) -> bool:
+        def fits(options: dict, grow: bool = True) -> bool:
             w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
             w, h = _block_size(st, options, precision)
-            return (w <= GROWTH * w0 + 1e-6 and h <= GROWTH * h0 + 1e-6
+            g = GROWTH if grow else SAME
+            return (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6
                     and (room is None or room_fits(room, w, h)))
         chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
         _REDRAWN[key] = {**chosen, "redrawn": done}
@@ -78,6 +80,7 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
 
 
 GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height
+SAME = 1.05       # … redrawn for its errors at the positions alone (the first was right): about its size
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:

@@ -1,6 +1,7 @@
 """The kinematics sheet's tables and notes (seeds 000, 002 and 004), numbered 1, 2, 3 … in reading
 order: table 1 the plans' velocities at every position, then one table per acceleration plan (2, 3 …),
-then the links' dimensions and the lab's s, v, a at its chosen positions — each error past the lab's 5 % marked and footnoted with its cause —
+then the links' dimensions, the lab's s, v, a at its chosen positions and the diagrams read at every
+position beside the plans (seed 002, step 11) — each error past the lab's 5 % marked and footnoted with its cause —
 and the notes' lines (mobility, structure, scales, precision, the largest errors, the signs). The
 composition that places them is sheets/kinematics.py (sheets/kinlayout.py the arithmetic)."""
 from __future__ import annotations
@@ -259,6 +260,83 @@ def lab_table(diag, lang: str, n: int = 4) -> Record | None:
     return footnoted(rec, said)
 
 
+def _plan_value(doc_pos: dict | None, key: str, truth: float) -> float | None:
+    """The output's value on a position's plan: a link's ω or ε signed by its sense (+
+    counter-clockwise), a point's vector along its guide signed as its direction on the plan (the
+    analytic value's: the plan's vector points the same way wherever it is read at all)."""
+    e = (doc_pos or {}).get(key)
+    if not e or e.get("value") is None:
+        return None
+    if e.get("sense") is not None:
+        return -e["value"] if e["sense"] == "cw" else e["value"]
+    return e["value"] if truth >= 0 else -e["value"]
+
+
+def diagram_readings(diag, doc: dict) -> list[dict]:
+    """Seed 002's step 11: s, v, a read off the diagrams at each position of the plans (the
+    values the diagrams' ordinates give, as ``Diagrams.values``), beside the plans' v (Table 1) and
+    a (the acceleration plans, where drawn), and δ, % of the diagrams' readings against the exact
+    values as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
+    vals, errs = diag.values(), diag.position_errors()
+    out_kind, name = diag.output.kind, diag.output.name
+    vkey, akey = (name, name) if out_kind == "slide" else (f"omega_{name}", f"epsilon_{name}")
+    by_index = {pos["index"]: pos for pos in doc["positions"] if pos.get("index") is not None}
+    rows = []
+    for i, k in enumerate(diag.at_positions):
+        n = diag.position[k]
+        pos = by_index.get(n, {})
+        rows.append({"position": n, "s": float(vals["s"][k]), "v": float(vals["v_at"][k]),
+                     "a": float(vals["a_at"][k]),
+                     "v_plan": _plan_value(pos.get("velocity"), vkey, float(diag.truth["v_at"][k])),
+                     "a_plan": _plan_value(pos.get("acceleration"), akey, float(diag.truth["a_at"][k])),
+                     "delta_s": float(errs["s"][i]), "delta_v": float(errs["v_at"][i]),
+                     "delta_a": float(errs["a_at"][i])})
+    return rows
+
+
+READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
+
+
+def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
+    """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
+    v and a under them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why). The
+    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
+    ``READINGS_COLUMNS`` a block, the blocks one under another."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
+    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
+    us, uv, ua = (unit(u, lang) for u in units)
+    plans = w('readings_plan')
+    heads = [w('no'), f"{s_}, {us}", f"{v_}, {uv}", plans, f"δ_{{{diag.symbols[1]}}}, %", f"{a_}, {ua}", plans,
+             f"δ_{{{diag.symbols[2]}}}, %"]
+    marked = False
+
+    def pct(e: float) -> str:
+        nonlocal marked
+        cell = percent(e, lang=lang)
+        if abs(e) > LAB_LIMIT:
+            marked = True
+            cell += MARK
+        return cell
+    cols = [[str(r["position"]), number(r["s"], lang=lang), number(r["v"], lang=lang),
+             number(r["v_plan"], lang=lang), pct(r["delta_v"]), number(r["a"], lang=lang),
+             number(r["a_plan"], lang=lang), pct(r["delta_a"])] for r in diagram_readings(diag, doc)]
+    rec: Record | None = None
+    y = 0.0
+    for start in range(0, len(cols), READINGS_COLUMNS):
+        block = cols[start:start + READINGS_COLUMNS]
+        rows = [[heads[i]] + [c[i] for c in block] for i in range(len(heads))]
+        part = table(rows, [20.0] + [11.0] * len(block), row_h=5.0, size=2.5,
+                     title=w("readings", n=n) if rec is None else "")
+        if rec is None:
+            rec = part
+        else:
+            b, top = rec.bounds(), part.bounds()[3]
+            rec.extend(part.moved(0.0, b[1] - 3.0 - top))
+    assert rec is not None
+    return footnoted(rec, [w('readings_delta') + (w('readings_mark') if marked else "")])
+
+
 def phi_convention(phi0: float, lang: str) -> str:
     """The one meaning of φ on every sheet (the lab's, seed 000's φ_8 = 200°): the crank's turn from
     position 0 in its sense of rotation; the crank angle of position 0 from the x axis beside it."""
@@ -304,9 +382,10 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
 
 
 def sign_note(st: Study, diag, lang: str) -> str:
-    """One sign convention, said on the sheet: s, v, a are signed along the output's guide (a
-    rocker: counter-clockwise) everywhere; the diagrams are drawn so the stroke from position 0
-    rises, which for some outputs mirrors them."""
+    """One sign convention, said on the sheet: s, v, a are signed along the output's guide
+    everywhere, the diagrams drawn so the stroke from position 0 rises (for some outputs mirrored);
+    a link's φ (from position 0), ω, ε counter-clockwise, a rocker's diagrams with the tables' sign
+    (a link turning clockwise round: mirrored, said with −φ)."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     out = st.output
     if out.kind == "slide":
@@ -315,9 +394,9 @@ def sign_note(st: Study, diag, lang: str) -> str:
                       if link.slides_on is not None and next(iter(link.local)) == out.name)
         guide = st.mech.guides[slider.slides_on]
         said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
-    else:
-        said = w('signs_link', link=escape(out.name))
-    return said + (w('flipped') if diag.sign < 0 else "")
+        return said + (w('flipped') if diag.sign < 0 else "")
+    n = diag.sub
+    return w('signs_link', link=escape(out.name), n=n) + (w('flipped_link', n=n) if diag.sign < 0 else "")
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
@@ -355,7 +434,15 @@ def sheet_tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> 
         lab = lab_table(diag, lang, 3 + n)
         if lab is not None:
             out.append(("lab table", lab))
+    out.append(("diagram readings table", readings_table(diag, doc, lang, len(out) + 1)))
     return [(name, enlarged(rec, factor)) for name, rec in out]
+
+
+def readings_number(st: Study, plans, diag) -> int:
+    """The number of the diagrams' readings table (``sheet_tables``: the last)."""
+    m = sum(q.acceleration is not None for q in plans.positions)
+    lab = st.mech.task.count <= 8 and any(p in diag.chosen for p in diag.position)
+    return 3 + m + int(lab)
 
 
 def plan_tables(plans) -> str:
@@ -382,4 +469,4 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
                      + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
     extra.append(w('dash'))
     extra.append(sign_note(st, diag, lang))
-    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang), lang))
+    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag)), lang))
