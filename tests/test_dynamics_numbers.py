@@ -171,3 +171,22 @@ def test_numbers_by_twos_do_not_run_into_the_last():
         numbers = [int(t.text) for t in _numbers(rec)]
         assert 93 in numbers and 92 not in numbers and 90 in numbers, numbers
         assert collisions(rec) == [], collisions(rec)[:3]
+
+
+def test_the_last_table_and_the_notes_in_one_row_stay_together():
+    """A generated crank-slider's A2 set ends with the motor table and the notes in one row: the
+    notes beside the table a normal gap (GAP) away, their tops level — not the row's spare width
+    shared out between them (about 200 mm apart)."""
+    from coursework_scenes import crank_slider
+    from graphplan.drawing.layout import GAP
+    from graphplan.sheets.compose import defects
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    st = scene_study(crank_slider(0.15, 4.0, 0.0, 300.0, 60.0, 2000.0, 20.0))
+    sheet = BUILDERS["dynamics"](st, form("A2"), _args())
+    last = {p.name: p.record.bounds() for p in sheet.pages[-1].placed}
+    assert set(last) == {"motor table", "notes"}, sorted(last)
+    table, notes = last["motor table"], last["notes"]
+    assert 0.0 < notes[0] - table[2] <= GAP + 0.5
+    assert abs(notes[3] - table[3]) <= 0.5
+    assert defects(sheet) == []

@@ -525,15 +525,41 @@ class _Args:
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep):
     """A set's sheets (drawing.layout.flow): the drawings' ``rows``, then the tables and the notes
     in one row. Where that leaves the notes alone on the last sheet, the last table goes with them
-    (over them, else beside them) — every sheet of a set carries a drawing or a table."""
+    (over them, else beside them) — every sheet of a set carries a drawing or a table; where the
+    last table and the notes share a row, they stay together (the notes beside the table, a GAP
+    apart: ``flow`` shares a row's spare width out between its items and set them far apart)."""
     laid = flow(rows + [tables + [notes]], region, keep)
-    if laid is None or not _notes_alone(laid[-1]):
+    if laid is None:
         return laid
-    for together in (Stack([tables[-1], notes]), Row([tables[-1], notes])):
+    if _notes_alone(laid[-1]):
+        tries = (Stack([tables[-1], notes]), Row([tables[-1], notes]))
+    elif _one_row(laid[-1], tables[-1], notes):
+        tries = (Row([tables[-1], notes]),)
+    else:
+        return laid
+    for together in tries:
         again = flow(rows + [tables[:-1] + [together]], region, keep)
-        if again is not None and not _notes_alone(again[-1]):
+        if again is not None and not _notes_alone(again[-1]) and len(again) <= len(laid):
             return again
     return laid
+
+
+def _one_row(page, table: Leaf, notes: Leaf) -> bool:
+    """Whether ``table`` and ``notes`` stand side by side in one row of a set's sheet (``flow``
+    gives a row's items boxes of one top)."""
+    tops = [b[3] for leaf, b in page if leaf is table or leaf is notes]
+    return len(tops) == 2 and abs(tops[0] - tops[1]) < 1e-6
+
+
+def _top_aligned(page: list[tuple[Leaf, tuple]]) -> set[str]:
+    """The names on a set's sheet drawn at the top of their boxes, not centred: the last table and
+    the notes side by side in one row (a row of text read from its first line, the table's title
+    and the notes' first line on one level)."""
+    boxes = {leaf.name: b for leaf, b in page if leaf.record is not None}
+    pair = ("motor table", "notes")
+    if all(n in boxes for n in pair) and abs(boxes[pair[0]][3] - boxes[pair[1]][3]) < 1e-6:
+        return set(pair)
+    return set()
 
 
 def _notes_alone(page) -> bool:
@@ -586,10 +612,13 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     region = field_of(f)
     foot = keep_out(f)[3]
 
-    def placed(leaf: Leaf, b) -> list[Placed]:
+    def placed(leaf: Leaf, b, top: bool = False) -> list[Placed]:
         if leaf.name == "band":
             return _band_placed(parts_, boxes, b)
-        return [Placed(leaf.name, centred(leaf.record, b), b)]
+        rec = centred(leaf.record, b)
+        if top:                                  # at the top of its box (``_top_aligned``)
+            rec = rec.moved(0.0, b[3] - rec.bounds()[3])
+        return [Placed(leaf.name, rec, b)]
     if shape != "set":                       # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
@@ -601,7 +630,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
                          Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
-        pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]
+        pages = [[q for leaf, b in page if leaf.record is not None
+                  for q in placed(leaf, b, leaf.name in _top_aligned(page))] for page in laid]
     else:
         C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)
         items, col_box = [], None
