@@ -193,6 +193,21 @@ def lettering(sheet) -> list[str]:
     return [item.text for p in sheet.placed if p.name in LETTERED for item in p.record.items if item.kind == "text"]
 
 
+def note_lines(sheet) -> list[str]:
+    """The notes' lines as written, each wrapped line joined again (a continuation stands indented
+    from the block's left edge: compose.note_block), whatever width the notes are set in."""
+    items = sorted((it for p in sheet.placed if p.name == "notes" for it in p.record.items if it.kind == "text"),
+                   key=lambda it: -it.points[0][1])
+    left = min(it.points[0][0] for it in items)
+    out: list[str] = []
+    for it in items:
+        if abs(it.points[0][0] - left) < 1e-6 or not out:
+            out.append(it.text)
+        else:
+            out[-1] += " " + it.text
+    return out
+
+
 def clauses(text: str) -> list[str]:
     return re.split(r";\s|,\s|:\s", plain(text))
 
@@ -329,7 +344,7 @@ def test_one_value_per_symbol_and_the_flywheel_omega_is_the_scenes_n1(sheets, ke
     assert wm == pytest.approx(math.pi * N1[key[0]] / 30, abs=6e-3)
     motor = "ω_m дв" if key[1] == "uk" else "ω_m mot"
     assert motor in values and values[motor] != values["ω_m"]
-    said = [t for t in (plain(t).replace("\u00a0", " ") for t in lettering(sheets[key]))
+    said = [t for t in (plain(t).replace("\u00a0", " ") for t in note_lines(sheets[key]))
             if f"{motor} = " in t and "ω_m = πn₁/30" in t]
     assert len(said) == 1                            # the line saying which serves what
 
