@@ -292,6 +292,21 @@ def test_the_diagrams_grow_into_the_field(sheets, key):
     assert covered(sheets[key]) > 0.68
 
 
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_the_notes_fill_the_room_under_the_energy_diagram(sheets, key):
+    """The band (ΔT(φ) beside the energy–mass diagram, I*(φ) turned under it) is an L: the review
+    found the room under ΔT(φ) empty (about 220 × 150 mm on the four-bar's A1 sheet). The notes
+    stand there — under ΔT(φ), left of the turned I*(φ), their tops level with one another, a GAP
+    under ΔT(φ) or under the energy–mass diagram — and the field is covered more than before (0.70)."""
+    from graphplan.drawing.layout import GAP
+    box = {p.name: p.record.bounds() for p in sheets[key].placed}
+    notes, energy, inertia, witt = box["notes"], box["energy"], box["inertia"], box["wittenbauer"]
+    assert notes[2] <= inertia[0] - GAP + 1.0 and (notes[2] <= witt[0] - GAP + 1.0 or notes[3] < witt[1])
+    assert notes[3] <= energy[1] - GAP + 1.0 and notes[1] >= inertia[1] - 1.0
+    assert min(abs(notes[3] - (energy[1] - GAP)), abs(notes[3] - (witt[1] - GAP))) < 3.0     # not adrift
+    assert covered(sheets[key]) > 0.72
+
+
 # -- the review's corrections 7, 15 (one ω_m per symbol; the broken ω axis; ΔT's unit; δ, %; Latin) --------
 
 N1 = {"sixbar": 90.0, "offset": 240.0}     # the scenes' crank rpm: the flywheel's ω_m = πn_1/30
