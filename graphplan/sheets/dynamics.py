@@ -314,8 +314,8 @@ def nooks(boxes: dict[str, tuple]) -> list[tuple[float, float, float, float]]:
     diagram, the turned I*(φ) under the diagram only, so under ΔT(φ) and left of I*(φ) the band's
     box is empty — from the band's left side to GAP short of the turned I*(φ), from its foot to GAP
     under ΔT(φ)'s caption: that whole height where it clears the energy–mass diagram's side too
-    (narrower), else from GAP under the diagram's foot (lower, as wide as to I*(φ)). None where
-    I*(φ) reaches under ΔT(φ)."""
+    (narrower), else from GAP under the diagram's foot (lower, as wide as to I*(φ)). None (an empty
+    list) where I*(φ) reaches under ΔT(φ)."""
     x0 = min(b[0] for b in boxes.values())
     y0 = min(b[1] for b in boxes.values())
     ey0, (wx0, wy0), ix0 = boxes["energy"][1], boxes["wittenbauer"][:2], boxes["inertia"][0]
