@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st_
 
 from graphplan.graphic.chords import (SERIES, chord_error_estimate, integrate_by_chords, midpoints,
-                              periodic_spline, pole_heights, read, standard_scale)
+                              periodic_pchip, periodic_spline, pole_heights, read, standard_scale)
 
 
 @given(st_.floats(min_value=1e-9, max_value=1e9, allow_nan=False, allow_infinity=False))
@@ -70,6 +70,41 @@ def test_periodic_spline_agrees_with_scipy(n, seed):
     expect = ref(x[0] + np.mod(q - x[0], period))
     assert np.allclose(ours(q), expect, atol=1e-9 * max(1.0, np.max(np.abs(expect))))
     assert np.allclose(ours(x), y, atol=1e-10)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st_.integers(min_value=3, max_value=30), st_.integers(min_value=0, max_value=2 ** 31))
+def test_periodic_pchip_keeps_each_piece_between_its_ordinates(n, seed):
+    """The shape-preserving curve for a positive quantity: through every point, each piece between
+    its two ordinates (so never below the least: I* ≥ 0 drawn), and periodic to the slope (the
+    one-sided difference quotients at the seam x_0 and at x_0 + period agree)."""
+    rng = np.random.default_rng(seed)
+    period = 240.0
+    x = np.sort(rng.uniform(0, period, n))
+    if np.min(np.diff(np.append(x, x[0] + period))) < 1e-2:
+        return
+    y = rng.uniform(0.0, 1.0, n) ** 3            # positive, with sharp peaks a cubic spline overshoots
+    f = periodic_pchip(x, y, period)
+    assert np.allclose(f(x), y, atol=1e-12) and np.allclose(f(x + period), y, atol=1e-12)
+    xs, ys = np.append(x, x[0] + period), np.append(y, y[0])
+    for a, b, ya, yb in zip(xs[:-1], xs[1:], ys[:-1], ys[1:]):
+        q = f(np.linspace(a, b, 41))
+        assert np.all(q >= min(ya, yb) - 1e-12) and np.all(q <= max(ya, yb) + 1e-12)
+    e = 1e-6
+    left = (f(np.array([x[0] + period - e]))[0] - y[0]) / -e
+    right = (f(np.array([x[0] + e]))[0] - y[0]) / e
+    assert left == pytest.approx(right, abs=1e-3 * (1 + abs(right)))
+
+
+def test_the_cubic_spline_dips_where_the_shape_preserving_curve_does_not():
+    """A peak between two flat stretches: the French curve (cubic spline) runs below the least
+    ordinate 0.1 beside the peak; the shape-preserving one stays ≥ 0.1."""
+    x = np.arange(12.0) * 20.0
+    y = np.full(12, 0.1)
+    y[5] = 1.0
+    q = np.linspace(0.0, 240.0, 2401)
+    assert np.min(periodic_spline(x, y, 240.0)(q)) < 0.05
+    assert np.min(periodic_pchip(x, y, 240.0)(q)) >= 0.1 - 1e-12
 
 
 def test_chord_error_estimate_predicts_the_midpoint_error():

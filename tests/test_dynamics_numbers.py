@@ -8,8 +8,9 @@ import functools
 import math
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
-from shapely.geometry import LineString, box
+from shapely.geometry import LineString, Point, box
 
 from conftest import example, scene_study
 from coursework_scenes import shaper
@@ -40,14 +41,32 @@ def _curves(rec):
     return [LineString(p.points) for p in rec.items if p.kind == "polyline" and p.role == "curve"]
 
 
-def test_the_turned_curve_really_dips_past_its_axis(dipping):
-    """The scene is the one that needs the fix: its turned I*(φ) curve runs left of the φ axis
-    (negative abscissae: I* drawn under 0) by more than the numbers' old 2 mm margin less CHECK."""
+def _turned(dipping):
+    """The turned I*(φ) on the sheet: its φ axis's abscissa, the division points (I*_k, φ_k) and
+    the drawn curve's vertices."""
     inertia = next(p.record for p in dipping.placed if p.name == "inertia")
     axis = [p.points for p in inertia.items if p.kind == "vector" and p.step == "axes I*_m"][0]
-    x_axis = axis[0][0]                                        # the φ axis, drawn downward first
-    least = min(x for c in _curves(inertia) for x, _ in c.coords)
-    assert x_axis - least > 2.0 - CHECK - 0.25
+    points = sorted((p.points[0] for p in inertia.items if p.step == "I*_m read"), key=lambda q: -q[1])
+    return axis[0][0], np.array(points), [xy for c in _curves(inertia) for xy in c.coords]
+
+
+def test_the_french_curve_through_the_scenes_points_dips_past_the_axis(dipping):
+    """The scene is the one that needs the fix: scipy's periodic cubic spline (the French curve)
+    through its turned I*(φ) points runs left of the φ axis (I* < 0) by more than 1.5 mm."""
+    from scipy.interpolate import CubicSpline
+    x_axis, pts, _ = _turned(dipping)
+    phi = pts[0, 1] - pts[:, 1]                      # φ runs downward
+    spline = CubicSpline(phi, pts[:, 0] - x_axis, bc_type="periodic")
+    assert np.min(spline(np.linspace(0.0, phi[-1], 4001))) < -1.5
+
+
+def test_the_drawn_inertia_never_runs_below_zero(dipping):
+    """I* > 0: the turned I*(φ) curve is drawn shape-preserving, never left of its φ axis (0.05 mm
+    of drawing tolerance), and through every division point."""
+    x_axis, pts, curve = _turned(dipping)
+    assert min(x for x, _ in curve) >= x_axis - 0.05
+    drawn_ = LineString(curve)
+    assert max(drawn_.distance(Point(*p)) for p in pts) < 0.02
 
 
 @pytest.mark.parametrize("name", ["energy", "inertia", "moments"])
@@ -152,3 +171,22 @@ def test_numbers_by_twos_do_not_run_into_the_last():
         numbers = [int(t.text) for t in _numbers(rec)]
         assert 93 in numbers and 92 not in numbers and 90 in numbers, numbers
         assert collisions(rec) == [], collisions(rec)[:3]
+
+
+def test_the_last_table_and_the_notes_in_one_row_stay_together():
+    """A generated crank-slider's A2 set ends with the motor table and the notes in one row: the
+    notes beside the table a normal gap (GAP) away, their tops level — not the row's spare width
+    shared out between them (about 200 mm apart)."""
+    from coursework_scenes import crank_slider
+    from graphplan.drawing.layout import GAP
+    from graphplan.sheets.compose import defects
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    st = scene_study(crank_slider(0.15, 4.0, 0.0, 300.0, 60.0, 2000.0, 20.0))
+    sheet = BUILDERS["dynamics"](st, form("A2"), _args())
+    last = {p.name: p.record.bounds() for p in sheet.pages[-1].placed}
+    assert set(last) == {"motor table", "notes"}, sorted(last)
+    table, notes = last["motor table"], last["notes"]
+    assert 0.0 < notes[0] - table[2] <= GAP + 0.5
+    assert abs(notes[3] - table[3]) <= 0.5
+    assert defects(sheet) == []

@@ -193,6 +193,21 @@ def lettering(sheet) -> list[str]:
     return [item.text for p in sheet.placed if p.name in LETTERED for item in p.record.items if item.kind == "text"]
 
 
+def note_lines(sheet) -> list[str]:
+    """The notes' lines as written, each wrapped line joined again (a continuation stands indented
+    from the block's left edge: compose.note_block), whatever width the notes are set in."""
+    items = sorted((it for p in sheet.placed if p.name == "notes" for it in p.record.items if it.kind == "text"),
+                   key=lambda it: -it.points[0][1])
+    left = min(it.points[0][0] for it in items)
+    out: list[str] = []
+    for it in items:
+        if abs(it.points[0][0] - left) < 1e-6 or not out:
+            out.append(it.text)
+        else:
+            out[-1] += " " + it.text
+    return out
+
+
 def clauses(text: str) -> list[str]:
     return re.split(r";\s|,\s|:\s", plain(text))
 
@@ -277,6 +292,21 @@ def test_the_diagrams_grow_into_the_field(sheets, key):
     assert covered(sheets[key]) > 0.68
 
 
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_the_notes_fill_the_room_under_the_energy_diagram(sheets, key):
+    """The band (ΔT(φ) beside the energy–mass diagram, I*(φ) turned under it) is an L: the review
+    found the room under ΔT(φ) empty (about 220 × 150 mm on the four-bar's A1 sheet). The notes
+    stand there — under ΔT(φ), left of the turned I*(φ), their tops level with one another, a GAP
+    under ΔT(φ) or under the energy–mass diagram — and the field is covered more than before (0.70)."""
+    from graphplan.drawing.layout import GAP
+    box = {p.name: p.record.bounds() for p in sheets[key].placed}
+    notes, energy, inertia, witt = box["notes"], box["energy"], box["inertia"], box["wittenbauer"]
+    assert notes[2] <= inertia[0] - GAP + 1.0 and (notes[2] <= witt[0] - GAP + 1.0 or notes[3] < witt[1])
+    assert notes[3] <= energy[1] - GAP + 1.0 and notes[1] >= inertia[1] - 1.0
+    assert min(abs(notes[3] - (energy[1] - GAP)), abs(notes[3] - (witt[1] - GAP))) < 3.0     # not adrift
+    assert covered(sheets[key]) > 0.72
+
+
 # -- the review's corrections 7, 15 (one ω_m per symbol; the broken ω axis; ΔT's unit; δ, %; Latin) --------
 
 N1 = {"sixbar": 90.0, "offset": 240.0}     # the scenes' crank rpm: the flywheel's ω_m = πn_1/30
@@ -329,7 +359,7 @@ def test_one_value_per_symbol_and_the_flywheel_omega_is_the_scenes_n1(sheets, ke
     assert wm == pytest.approx(math.pi * N1[key[0]] / 30, abs=6e-3)
     motor = "ω_m дв" if key[1] == "uk" else "ω_m mot"
     assert motor in values and values[motor] != values["ω_m"]
-    said = [t for t in (plain(t).replace("\u00a0", " ") for t in lettering(sheets[key]))
+    said = [t for t in (plain(t).replace("\u00a0", " ") for t in note_lines(sheets[key]))
             if f"{motor} = " in t and "ω_m = πn₁/30" in t]
     assert len(said) == 1                            # the line saying which serves what
 

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.drawing.diagrams import fmt
-from graphplan.graphic.chords import periodic_spline
+from graphplan.graphic.chords import periodic_pchip, periodic_spline
 from graphplan.drawing.labels import place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
@@ -134,9 +134,14 @@ def drawn(X: np.ndarray, Y: np.ndarray) -> list[tuple[float, float]]:
     return [(float(x), float(y)) for x, y in line.coords]
 
 
-def _smooth(f: Flywheel, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The French curve through a periodic diagram's division ordinates."""
+def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The French curve through a periodic diagram's division ordinates; a ``positive`` quantity's
+    (I*_m) by the shape-preserving cubic (graphic.chords.periodic_pchip), which never dips below its
+    least ordinate between divisions as the cubic spline's overshoot does (I* < 0 drawn) — a picture
+    only: the energy–mass curve whose tangents give the flywheel is the construction's own."""
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
+    if positive:
+        return fine, periodic_pchip(f.x[:-1], y[:-1], f.L)(fine)
     trend = y[-1] - y[0]
     return fine, periodic_spline(f.x[:-1], y[:-1] - trend * f.x[:-1] / f.L, f.L)(fine) + trend * fine / f.L
 
@@ -201,15 +206,16 @@ def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:
 
 
 def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.ndarray,
-                  sym: str, name: str) -> Record:
-    """A diagram over φ of ordinates read at the divisions, joined by the French curve."""
+                  sym: str, name: str, positive: bool = False) -> Record:
+    """A diagram over φ of ordinates read at the divisions, joined by the French curve
+    (``_smooth``: shape-preserving for a ``positive`` quantity)."""
     rec = Record(title, scales=scales)
     lo, hi = _extent(values)
     _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for xk, yk in zip(f.x, values):
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
-    fine, curve = _smooth(f, values)
+    fine, curve = _smooth(f, values, positive)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
     return rec
@@ -228,7 +234,8 @@ def energy_record(f: Flywheel, lang: str = "uk") -> Record:
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
     """I*_m(φ) at μ_I."""
-    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m")
+    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m",
+                         positive=True)
 
 
 PROJ_LAYER = "construction"   # the thin projection lines that carry ΔT across and I* up
@@ -303,7 +310,7 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
             row.append(_number((-2.0, float(yk) - 0.9), k, anchor="end"))
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
-    fine, curve = _smooth(f, f.I)
+    fine, curve = _smooth(f, f.I, positive=True)            # I* > 0: never drawn left of its φ axis
     rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
     for j in projected(n):
         rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,

@@ -112,6 +112,28 @@ def periodic_spline(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np
     return spline
 
 
+def periodic_pchip(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
+    """The periodic shape-preserving cubic through (x_i, y_i), i = 0 … n−1 (scipy's
+    PchipInterpolator, Fritsch–Carlson slopes): each piece stays between its two ordinates (zero
+    slope at a local extremum), so a positive quantity's curve never runs below its least point,
+    as the French curve (``periodic_spline``) does between divisions. A slope depends only on the
+    two neighbours, so the ordinates continued two points into either next period make it periodic."""
+    from scipy.interpolate import PchipInterpolator
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    n = len(x)
+    if n < 3:
+        raise ValueError("a periodic interpolant needs at least 3 points")
+    xs = np.concatenate([x[-2:] - period, x, x[:3] + period])
+    ys = np.concatenate([y[-2:], y, y[:3]])
+    curve = PchipInterpolator(xs, ys, extrapolate=False)
+
+    def pchip(q: np.ndarray) -> np.ndarray:
+        return curve(x[0] + np.mod(np.asarray(q, dtype=float) - x[0], period))
+
+    return pchip
+
+
 def periodic_spline_slope(x: np.ndarray, y: np.ndarray, period: float) -> Callable[[np.ndarray], np.ndarray]:
     """The slope S'(q) of the same periodic spline: on the piece [x_i, x_{i+1}], with a = x_{i+1} − q,
     b = q − x_i, S' = (M_{i+1}·b² − M_i·a²)/(2h_i) + (y_{i+1} − y_i)/h_i − (M_{i+1} − M_i)·h_i/6."""

@@ -300,13 +300,47 @@ def _union(parts: dict[str, Record]) -> Record:
     return rec
 
 
-def _band_placed(parts: dict[str, Record], boxes: dict[str, tuple], box: tuple) -> list[Placed]:
-    """The band's parts moved as one into ``box`` (centred), each with its own box."""
+def _band_shift(boxes: dict[str, tuple], box: tuple) -> tuple[float, float]:
+    """How far the band moves to stand centred in ``box``."""
     x0 = min(b[0] for b in boxes.values())
     y0 = min(b[1] for b in boxes.values())
     x1 = max(b[2] for b in boxes.values())
     y1 = max(b[3] for b in boxes.values())
-    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2
+    return (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2
+
+
+def nooks(boxes: dict[str, tuple]) -> list[tuple[float, float, float, float]]:
+    """The room the band leaves at its lower left (its frame): ΔT(φ) stands left of the energy–mass
+    diagram, the turned I*(φ) under the diagram only, so under ΔT(φ) and left of I*(φ) the band's
+    box is empty — from the band's left side to GAP short of the turned I*(φ), from its foot to GAP
+    under ΔT(φ)'s caption: that whole height where it clears the energy–mass diagram's side too
+    (narrower), else from GAP under the diagram's foot (lower, as wide as to I*(φ)). None (an empty
+    list) where I*(φ) reaches under ΔT(φ)."""
+    x0 = min(b[0] for b in boxes.values())
+    y0 = min(b[1] for b in boxes.values())
+    ey0, (wx0, wy0), ix0 = boxes["energy"][1], boxes["wittenbauer"][:2], boxes["inertia"][0]
+    out = [(x0, y0, min(ix0, wx0 if ey0 - GAP > wy0 else ix0) - GAP, ey0 - GAP),
+           (x0, y0, ix0 - GAP, min(ey0, wy0) - GAP)]
+    return [n for k, n in enumerate(out) if n[2] > x0 and n[3] > y0 and n not in out[:k]]
+
+
+def nook_for(boxes: dict[str, tuple], lines: list[str], slack: float = 0.0):
+    """The nook (``nooks``) that holds the notes' ``lines``, the first (the highest) that does, with
+    the width they are set in — ``slack`` mm more at the left, where the band stands centred in a
+    wider box —, or None."""
+    for n in nooks(boxes):
+        w = n[2] - n[0] + slack
+        if w >= NOOK_NOTES and notes_height([lines], w) <= n[3] - n[1] + 1e-9:
+            return n, w
+    return None
+
+
+NOOK_NOTES = 120.0       # mm: the least width the notes are set in under ΔT(φ) (the column's: TITLE)
+
+
+def _band_placed(parts: dict[str, Record], boxes: dict[str, tuple], box: tuple) -> list[Placed]:
+    """The band's parts moved as one into ``box`` (centred), each with its own box."""
+    dx, dy = _band_shift(boxes, box)
     return [Placed(name, parts[name].moved(dx, dy),
                    (boxes[name][0] + dx, boxes[name][1] + dy, boxes[name][2] + dx, boxes[name][3] + dy))
             for name in BAND]
@@ -397,12 +431,13 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
 
 
 def _column(f: Form, tables: list[Leaf], parts: int, height, shape: str = "") -> tuple[Leaf, list[list[Leaf]], float]:
-    """The tables over the notes, over the title block but in "side" (the column at the left)."""
+    """The tables over the notes, over the title block but in "side" (the column at the left);
+    ``height`` None: the notes stand elsewhere (in the band's ``nook``)."""
     groups = split(tables, parts)
     cw, ch = column_size(groups)
     width = max(cw, TITLE)
     foot = 0.0 if shape == "side" else GAP + keep_out(f)[3] - field_of(f)[1]
-    return Leaf("column", width, ch + GAP + height(width) + foot), groups, width
+    return Leaf("column", width, ch + (0.0 if height is None else GAP + height(width)) + foot), groups, width
 
 
 def _sizes(st: Study):
@@ -413,13 +448,14 @@ def _sizes(st: Study):
     return SIZES
 
 
-def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float]:
+def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float, bool]:
     """The flywheel construction the dynamics sheet of ``f`` draws and how: the largest abscissa L
     and heights' size at which the classical composition (``_classical``) fits one sheet (both
     languages measured) — the scales, hence every number, do not depend on the band's layout —;
     then the band of the projections (``band``) at the longest φ axis (``_lengths``) at which a
     composition (``SHAPES``) holds it on that sheet, the tables lettered 3.5 mm where that costs
-    nothing: (L, size, tables' factor, shape, table columns, the band's φ axis); a set of sheets at
+    nothing, the notes in the band's ``nook`` where they fit it (the column then the tables' alone):
+    (L, size, tables' factor, shape, table columns, the band's φ axis, notes in the nook); a set of sheets at
     those scales where none does (at the smallest where not even the classical one fits). The
     terminal's ``dynamics`` reports the same construction. The sizes are tried by halving the list
     (a larger size never fits where a smaller does not); each try draws the diagrams (a few ms)."""
@@ -447,15 +483,34 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         return leaves, tables, [p[3] for p in per], per
 
     def band_leaf(L: float, size: float, length: float, per) -> Leaf:
+        return band_and_nooks(L, size, length, per)[0]
+
+    def band_and_nooks(L: float, size: float, length: float, per):
+        """The band's leaf (both languages) and each language's band: its boxes and width (``nooks``)."""
         if (L, size, length) not in banded:       # the band in both languages (its captions differ)
-            wh = [_band_size(band(p[4], p[0], length)[1]) for p in per]
-            banded[(L, size, length)] = Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh))
+            bx = [band(p[4], p[0], length)[1] for p in per]
+            wh = [_band_size(b) for b in bx]
+            banded[(L, size, length)] = (Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh)),
+                                         [(b, w) for b, (w, _) in zip(bx, wh)])
         return banded[(L, size, length)]
+
+    def notes_in_nook(boxes_, per, shape: str, C: Leaf) -> bool:
+        """Each language's notes in its band's nook, the band centred in the box the composition
+        gives it with that language's drawings (ω(φ) at its smallest: the box only grows)."""
+        for (b, bw), p in zip(boxes_, per):
+            own = {name: Leaf(name, *wh) for name, wh in p[1].items()}
+            own["band"] = leaves["band"]
+            if nook_for(b, p[3], (band_room(_tree(shape, own, C, foot)) - bw) / 2) is None:
+                return False
+        return True
+
+    def band_room(tree) -> float:              # the width of the box the composition gives the band
+        return next(b[2] - b[0] for leaf, b in arrange(tree, (0.0, 0.0, W, H)) if leaf.name == "band")
 
     foot = keep_out(f)[3] - y0
     if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
         L, size = sizes[-1]                        # (what the search below would end at), nothing drawn
-        return L, size, 1.0, "set", 1, _lengths(L)[-1]
+        return L, size, 1.0, "set", 1, _lengths(L)[-1], False
 
     def fit(k: int):                      # the scales: as the classical composition sets them
         L, size = sizes[k]
@@ -481,20 +536,27 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         for factor in (TABLES, 1.0):
             leaves, tables, notes_, per = measured(L, size, factor)
             for length in _lengths(L):
-                leaves["band"] = band_leaf(L, size, length, per)
-                for shape in SHAPES:
-                    for parts in (1, 2, 3):
-                        C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
-                        tw, th = extent(_tree(shape, leaves, C, foot))
-                        if tw <= W + 1e-9 and th <= H + 1e-9:
-                            return L, size, factor, shape, parts, length
+                leaves["band"], nooks = band_and_nooks(L, size, length, per)
+                # the notes in the band's nook where they fit it (the column then holds the tables alone)
+                for in_nook in (True, False):
+                    for shape in SHAPES:
+                        if in_nook and shape == "side":     # the band at the right: no nook under ΔT(φ)
+                            continue
+                        for parts in (1, 2, 3):
+                            C = _column(f, tables, parts, None if in_nook else lambda w: notes_height(notes_, w),
+                                        shape)[0]
+                            tree = _tree(shape, leaves, C, foot)
+                            tw, th = extent(tree)
+                            if tw <= W + 1e-9 and th <= H + 1e-9 and (
+                                    not in_nook or notes_in_nook(nooks, per, shape, C)):
+                                return L, size, factor, shape, parts, length, in_nook
     per = measured(L, size, 1.0)[3]       # else a set of sheets at these scales, the band on one of them
 
     def on_a_page(b: Leaf) -> bool:       # over the title block, or beside it
         return (b.w <= W + 1e-9 and b.h <= H - foot - GAP + 1e-9) or (b.w <= keep_out(f)[0] - x0 + 1e-9
                                                                        and b.h <= H + 1e-9)
     length = next((g for g in _lengths(L) if on_a_page(band_leaf(L, size, g, per))), _lengths(L)[-1])
-    return L, size, 1.0, "set", 1, length
+    return L, size, 1.0, "set", 1, length, False
 
 
 def _lengths(L: float) -> tuple[float, ...]:
@@ -525,15 +587,41 @@ class _Args:
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep):
     """A set's sheets (drawing.layout.flow): the drawings' ``rows``, then the tables and the notes
     in one row. Where that leaves the notes alone on the last sheet, the last table goes with them
-    (over them, else beside them) — every sheet of a set carries a drawing or a table."""
+    (over them, else beside them) — every sheet of a set carries a drawing or a table; where the
+    last table and the notes share a row, they stay together (the notes beside the table, a GAP
+    apart: ``flow`` shares a row's spare width out between its items and set them far apart)."""
     laid = flow(rows + [tables + [notes]], region, keep)
-    if laid is None or not _notes_alone(laid[-1]):
+    if laid is None:
         return laid
-    for together in (Stack([tables[-1], notes]), Row([tables[-1], notes])):
+    if _notes_alone(laid[-1]):
+        tries = (Stack([tables[-1], notes]), Row([tables[-1], notes]))
+    elif _one_row(laid[-1], tables[-1], notes):
+        tries = (Row([tables[-1], notes]),)
+    else:
+        return laid
+    for together in tries:
         again = flow(rows + [tables[:-1] + [together]], region, keep)
-        if again is not None and not _notes_alone(again[-1]):
+        if again is not None and not _notes_alone(again[-1]) and len(again) <= len(laid):
             return again
     return laid
+
+
+def _one_row(page, table: Leaf, notes: Leaf) -> bool:
+    """Whether ``table`` and ``notes`` stand side by side in one row of a set's sheet (``flow``
+    gives a row's items boxes of one top)."""
+    tops = [b[3] for leaf, b in page if leaf is table or leaf is notes]
+    return len(tops) == 2 and abs(tops[0] - tops[1]) < 1e-6
+
+
+def _top_aligned(page: list[tuple[Leaf, tuple]]) -> set[str]:
+    """The names on a set's sheet drawn at the top of their boxes, not centred: the last table and
+    the notes side by side in one row (a row of text read from its first line, the table's title
+    and the notes' first line on one level)."""
+    boxes = {leaf.name: b for leaf, b in page if leaf.record is not None}
+    pair = ("motor table", "notes")
+    if all(n in boxes for n in pair) and abs(boxes[pair[0]][3] - boxes[pair[1]][3]) < 1e-6:
+        return set(pair)
+    return set()
 
 
 def _notes_alone(page) -> bool:
@@ -572,7 +660,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
     dyn = analyse(st, getattr(args, "delta", None))
     _refuse_a_table_taller_than(st, dyn, f, args)
-    L, size, factor, shape, parts, length = construction(st, dyn, f, args)
+    L, size, factor, shape, parts, length, in_nook = construction(st, dyn, f, args)
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
     doc = dynamics_json(fw)
@@ -586,12 +674,16 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     region = field_of(f)
     foot = keep_out(f)[3]
 
-    def placed(leaf: Leaf, b) -> list[Placed]:
+    def placed(leaf: Leaf, b, top: bool = False) -> list[Placed]:
         if leaf.name == "band":
             return _band_placed(parts_, boxes, b)
-        return [Placed(leaf.name, centred(leaf.record, b), b)]
+        rec = centred(leaf.record, b)
+        if top:                                  # at the top of its box (``_top_aligned``)
+            rec = rec.moved(0.0, b[3] - rec.bounds()[3])
+        return [Placed(leaf.name, rec, b)]
+    height = None if in_nook else (lambda w: _wh(note_block(note_lines, w))[1])   # the notes in the column
     if shape != "set":                       # ω(φ) grows into the room the other zones leave it
-        C = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)[0]
+        C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
         speed = _speed(fw, lang, zone)
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
@@ -601,18 +693,30 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
                          Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
-        pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]
+        pages = [[q for leaf, b in page if leaf.record is not None
+                  for q in placed(leaf, b, leaf.name in _top_aligned(page))] for page in laid]
     else:
-        C, groups, width = _column(f, tables, parts, lambda w: _wh(note_block(note_lines, w))[1], shape)
-        items, col_box = [], None
+        C, groups, width = _column(f, tables, parts, height, shape)
+        items, col_box, band_box = [], None, None
         for leaf, b in arrange(_tree(shape, leaves, C, foot - region[1]), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
                 items += placed(leaf, b)
-        nrec = note_block(note_lines, width)
-        bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
-        nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
+                band_box = b if leaf.name == "band" else band_box
+        if in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
+            dx, dy = _band_shift(boxes, band_box)
+            slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2    # the band centred in its box
+            got = nook_for(boxes, note_lines, slack)
+            if got is None:                          # (``construction`` found it holds them) the lowest
+                got = (nooks(boxes)[-1], nooks(boxes)[-1][2] - nooks(boxes)[-1][0] + max(slack, 0.0))
+            (_, _, n1, n3), nw = got
+            nrec = note_block(note_lines, nw)          # from the left side of the band's box
+            nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
+        else:
+            nrec = note_block(note_lines, width)
+            bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
+            nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
         items.append(Placed("notes", top_left(nrec, nb), nb))
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
