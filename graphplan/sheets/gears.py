@@ -40,6 +40,8 @@ WORDS = {
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
+           "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
+                  "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
            "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
@@ -71,6 +73,8 @@ WORDS = {
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
+           "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
+                  "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
            "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
@@ -89,6 +93,31 @@ WORDS = {
 
 def _n(v, lang: str, d: int = 4) -> str:
     return "—" if v is None else num(v, lang, d).replace("-", "−")
+
+
+def _bare(text: str) -> str:
+    """A printed number without trailing zeros ("42,00" → "42", "−37,500" → "−37,5"): as the other
+    sheets print values, where no reading's resolution is the point."""
+    if "," not in text and "." not in text:
+        return text
+    out = text.rstrip("0").rstrip(",.")
+    return "0" if out in ("", "−", "-", "−0") else out
+
+
+def contact_ratio_text(exact: float, graphical: float | None, lang: str, least: int = 3
+                       ) -> tuple[str, str, float | None]:
+    """ε_α exact and graphical printed to the fewest decimals (at least ``least``) whose δ worked out
+    from the two printed numbers prints as the true δ = 100·(ε_g − ε)/ε does to three significant
+    figures (1.212/1.207 gave 0.414 % where the true δ is 0.392 %): (exact, graphical, δ printed)."""
+    if graphical is None:
+        te, _, _ = agreeing(exact, None, least, lang)
+        return te, "", None
+    true = 100.0 * (graphical - exact) / exact
+    for dec in range(least, 10):
+        te, tg, e = agreeing(exact, graphical, dec, lang)
+        if e is not None and _pct(e, lang) == _pct(true, lang):
+            return te, tg, e
+    return agreeing(exact, graphical, 10, lang)
 
 
 def _pct(v, lang: str) -> str:
@@ -113,10 +142,10 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e, lang) if gr else ""]
+            row += [te, tg, _pct(e, lang) if gr else ""] if gr else [_bare(te), "", ""]
         rows.append(row)
     c = p["contact_ratio"]
-    te, tg, e = agreeing(c["exact"], c["graphical"], 3, lang)
+    te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
     rows.append(["ε_α", te, tg, (_pct(e, lang) + ("!" if c["outside_bound"] else "")) if tg else "", "", "", ""])
     for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
                    (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
@@ -158,7 +187,7 @@ def train_table(doc: dict, lang: str) -> Record:
     ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
-            [w["u"].split(":")[0], ue, ug or "—",
+            [w["u"].split(":")[0], _bare(ue), _bare(ug) if ug else "—",
              _pct(ud, lang) + ("!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
         req = t["ratio_required"]
@@ -169,7 +198,8 @@ def train_table(doc: dict, lang: str) -> Record:
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), te, tg or "—", _pct(e, lang)])
+        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), _bare(te), _bare(tg) if tg else "—",
+                     _pct(e, lang)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
@@ -189,6 +219,10 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
             out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
+        g = p.get("graphical")
+        if g and mesh.precision > 0:
+            out.append(w["res"].format(d=num(10.0 ** -table_decimals(g), lang), p=_n(mesh.precision, lang),
+                                       r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
     if "planetary" in doc:
