@@ -9,13 +9,13 @@ from __future__ import annotations
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred, flow
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import construct_mesh, construct_train
+from graphplan.graphic.gears import construct_mesh, construct_train, sliding_diagram
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
 from graphplan.report.gears import agreeing, gears_json, sig_decimals, table_decimals
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
-from graphplan.sheets.form import Form, table
+from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
@@ -24,7 +24,7 @@ from graphplan.util.words import fixed, num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів",
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення; μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
@@ -57,7 +57,7 @@ WORDS = {
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action; μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
@@ -173,7 +173,7 @@ def quality_table(doc: dict, lang: str) -> Record:
                  " / ".join(yes(not v) for v in q["interference"])])
     rows.append([w["eps"], _n(p["contact_ratio"]["exact"], lang), "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
-    return table(rows, [62.0, 26.0, 26.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
+    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -292,8 +292,8 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         b = r.bounds()
         return b[2] - b[0], b[3] - b[1]
     mesh_h = size(captioned(mesh.record, "M"))[1] + 12.0          # the meshing and its caption's line
-    lam_w = size(mesh.lam)[0]
-    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 3 * GAP
+    lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
+    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
     room_h = region[3] - region[1] - mesh_h - 3 * GAP
     w0, h0 = size(plan)
     for k in GROW:
@@ -336,7 +336,32 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
     if vel is not None and mesh is not None:
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
+    if mesh is not None and sol.pair:
+        if beside(region, mesh):          # beside the meshing, as tall as it with its caption
+            row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
+        else:                             # in the row under it, beside the planetary pictures
+            row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
+        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
     return mesh, vel, plan
+
+
+def beside(region, mesh) -> bool:
+    """Whether the λ diagrams stand beside the meshing (the zone under it then the planetary
+    pictures' alone): when the two fit across the drawings' zone, the field less the tables'
+    column."""
+    b, lam = mesh.record.bounds(), mesh.lam.bounds()
+    zone_w = region[2] - region[0] - max(TITLE, 150.0) - GAP
+    return (b[2] - b[0]) + GAP + (lam[2] - lam[0]) <= zone_w
+
+
+LAMBDA_UNITS = (20.0, 25.0, 40.0, 50.0)    # mm a unit of λ (μλ = 0.05, 0.04, 0.025, 0.02 1/mm)
+
+
+def lambda_unit(row_h: float) -> float:
+    """The λ diagrams' unit, mm: the largest of ``LAMBDA_UNITS`` whose diagram (λ from −3 to 1 and
+    the margins, with its two-line caption, about 4.3 units and 37 mm) stands in the row ``row_h``
+    mm tall beside the planetary pictures."""
+    return max([u for u in LAMBDA_UNITS if 4.3 * u + 37.0 <= row_h] or [LAMBDA_UNITS[0]])
 
 
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
@@ -354,13 +379,13 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     if mesh is not None:
         drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(
             mu=_n(mesh.mu_l, lang), scale=drawing_scale(mesh.mu_l, lang)))))
-        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"])))
+        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
+            mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
-    width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in tables])
-    nts = Leaf("notes", record=note_block(notes(doc, lang, mesh, vel), width))
+    tables, nts, width = _column(tables, notes(doc, lang, mesh, vel), f)
     pages = zones(drawings, tables + [nts], f, width)
     if pages is None:
         laid = flow(_rows(drawings, tables + [nts], region), region, keep_out(f))
@@ -371,6 +396,23 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
                  for page in laid]
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
                    f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def _column(tables: list[Leaf], lines: list[str], f: Form) -> tuple[list[Leaf], Leaf, float]:
+    """The tables and the notes of the column by the title block: the tables drawn as the other
+    sheets draw theirs (``TABLES`` times the ruled size: 3.5 mm letters, 8.4 mm rows) where the
+    column holds them over the title block with the notes, else at the ruled size; the column
+    the title block's width or the widest table's."""
+    x0, y0, x1, y1 = field_of(f)
+    room = y1 - keep_out(f)[3] - GAP
+    for k in (TABLES, 1.0):
+        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+        width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in grown])
+        nts = Leaf("notes", record=note_block(lines, width))
+        need = sum(t.h for t in grown + [nts]) + GAP * len(grown)
+        if k == 1.0 or (width <= TITLE + 1e-6 and need <= room):
+            return grown, nts, width
+    raise AssertionError("unreachable")
 
 
 SLIDING_H = 125.0        # the λ diagrams' height with their caption, mm (λ from −3 to 1 at 20 mm, labels)
@@ -387,21 +429,29 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
     need = sum(t.h for t in side) + GAP * (len(side) - 1)
     if need > y1 - keep[3] - GAP:
         return None
-    top = [d for d in drawings if d.name == "meshing"]
-    row = [d for d in drawings if d.name != "meshing"]
     room = x1 - x0 - right - GAP
+    mesh_w = sum(d.w for d in drawings if d.name == "meshing")
+    up = ("meshing", "sliding") if any(d.name == "sliding" and mesh_w + GAP + d.w <= room for d in drawings) \
+        else ("meshing",)                 # the λ diagrams beside the meshing where the two fit across
+    top = [d for d in drawings if d.name in up]
+    row = [d for d in drawings if d.name not in up]
     row_w = sum(d.w for d in row) + GAP * max(len(row) - 1, 0)
     row_h = max((d.h for d in row), default=0.0)
     top_h = max((d.h for d in top), default=0.0)
-    if row_w > room or any(d.w > room for d in top) or top_h + row_h + (GAP if top and row else 0.0) > y1 - y0:
+    top_w = sum(d.w for d in top) + GAP * max(len(top) - 1, 0)
+    if row_w > room or top_w > room or top_h + row_h + (GAP if top and row else 0.0) > y1 - y0:
         return None
     out: list[Placed] = []
     spare_y = (y1 - y0 - top_h - row_h - (GAP if top and row else 0.0)) / (1 + len([z for z in (top, row) if z]))
     y = y1 - spare_y
-    for d in top:
-        box = (x0, y - d.h, x0 + room, y)
-        out.append(Placed(d.name, centred(d.record, box), box))
-        y = box[1] - GAP - spare_y
+    if top:
+        spare_x = (room - top_w) / (len(top) + 1)
+        x = x0 + spare_x
+        for d in top:
+            box = (x, y - top_h, x + d.w, y)
+            out.append(Placed(d.name, centred(d.record, box), box))
+            x = box[2] + spare_x + GAP
+        y = y - top_h - GAP - spare_y
     if row:
         spare_x = (room - row_w) / (len(row) + 1)
         x = x0 + spare_x
@@ -410,10 +460,14 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
             out.append(Placed(d.name, centred(d.record, box), box))
             x = box[2] + spare_x + GAP
     y = y1
+    tabs = [t for t in side if t.name != "notes"]
+    spare = (y1 - keep[3] - GAP - need) / max(len(tabs), 1)      # the column's spare height between its parts
     for t in side:
+        if t.name == "notes":                                      # the notes stand on the title block
+            y = keep[3] + GAP + t.h
         box = (x1 - right, y - t.h, x1, y)
         out.append(Placed(t.name, top_left_of(t.record, box), box))
-        y = box[1] - GAP
+        y = box[1] - GAP - (spare if t is not tabs[-1] else 0.0)
     return [out]
 
 
