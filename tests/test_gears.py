@@ -783,3 +783,45 @@ def _review12(tmp_path):
     path = tmp_path / "gears12.toml"
     path.write_text(GEARS12, encoding="utf-8")
     return path
+
+
+# -- the A1 sheet filled (reviews 2 and 3: the gear sheet 59–62 % empty) ------------------------------
+
+@pytest.mark.parametrize("name, lang", [("gears.toml", "uk"), ("gears_b.toml", "en"), ("review", "uk"),
+                                        ("review12", "en")])
+def test_the_a1_gear_sheet_fills_its_field_in_zones(name, lang, tmp_path):
+    """The drawings' and tables' extents cover at least 60 % of the field (the sheet composed before
+    covered 51–56 %); the meshing is larger than the λ diagrams; the tables stand in the column by the title
+    block, top down, and the notes on the title block; the λ diagrams stand beside the meshing or
+    beside the planetary pictures, and the planetary pictures take at least 70 % of their row's width."""
+    from shapely.geometry import box
+    from shapely.ops import unary_union
+    from graphplan.model.gears import load
+    from graphplan.sheets.compose import GAP, SheetOptions, field_of, keep_out
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    path = _review12(tmp_path) if name == "review12" else _scene_path(name, tmp_path)
+    f = form("A1")
+    sheet = BUILDERS["gears"](load(path), f, SheetOptions(lang=lang, sheet="gears"))
+    assert len(sheet.pages) == 1
+    x0, y0, x1, y1 = field_of(f)
+    ext = {p.name: p.record.bounds() for p in sheet.placed}
+    field = box(x0, y0, x1, y1)
+    cover = unary_union([box(*b) for b in ext.values()]).intersection(field).area / field.area
+    assert cover >= 0.6, cover
+    area = lambda b: (b[2] - b[0]) * (b[3] - b[1])                       # noqa: E731
+    drawings = ("meshing", "sliding", "planetary")
+    assert area(ext["meshing"]) > area(ext["sliding"])
+    column = [ext[n] for n in ("geometry", "quality", "train", "notes")]
+    left = min(b[0] for b in column)
+    assert all(b[0] >= max(ext[n][2] for n in drawings) for b in column)     # the column right of the drawings
+    assert abs(column[0][3] - y1) < 1.0                                  # Table 1 at the field's top
+    assert 0.0 <= column[-1][1] - keep_out(f)[3] <= GAP + 1.0             # the notes on the title block
+    assert [b[3] for b in column] == sorted((b[3] for b in column), reverse=True)
+    room = left - GAP - x0
+    m, s, p = ext["meshing"], ext["sliding"], ext["planetary"]
+    if s[1] >= p[3]:                                                    # the λ diagrams up by the meshing
+        assert s[0] >= m[2] and p[2] - p[0] >= 0.7 * room, (s, p, room)
+    else:                                                               # in the row with the planetary train
+        assert s[3] <= m[1] and (s[2] - s[0]) + (p[2] - p[0]) >= 0.7 * room, (s, p, room)
+    assert s[3] - s[1] >= 120.0                                         # grown from 20 mm a unit of λ
