@@ -385,10 +385,15 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
-    tables, nts, width = _column(tables, notes(doc, lang, mesh, vel), f)
-    pages = zones(drawings, tables + [nts], f, width)
-    if pages is None:
-        laid = flow(_rows(drawings, tables + [nts], region), region, keep_out(f))
+    lines = notes(doc, lang, mesh, vel)
+    pages = None
+    for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
+        side, width = _column(tables, lines, k)
+        pages = zones(drawings, side, f, width)
+        if pages is not None:
+            break
+    if pages is None:                     # a set of sheets (the tables at the ruled size, as they were)
+        laid = flow(_rows(drawings, side, region), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
@@ -398,21 +403,13 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
                    f"{g.title_in(lang)} — {w['subtitle']}")
 
 
-def _column(tables: list[Leaf], lines: list[str], f: Form) -> tuple[list[Leaf], Leaf, float]:
-    """The tables and the notes of the column by the title block: the tables drawn as the other
-    sheets draw theirs (``TABLES`` times the ruled size: 3.5 mm letters, 8.4 mm rows) where the
-    column holds them over the title block with the notes, else at the ruled size; the column
-    the title block's width or the widest table's."""
-    x0, y0, x1, y1 = field_of(f)
-    room = y1 - keep_out(f)[3] - GAP
-    for k in (TABLES, 1.0):
-        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
-        width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in grown])
-        nts = Leaf("notes", record=note_block(lines, width))
-        need = sum(t.h for t in grown + [nts]) + GAP * len(grown)
-        if k == 1.0 or (width <= TITLE + 1e-6 and need <= room):
-            return grown, nts, width
-    raise AssertionError("unreachable")
+def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
+    """The tables drawn ``k`` times their ruled size (``TABLES``: as the other sheets draw theirs,
+    3.5 mm letters and 8.4 mm rows) and the notes under them, wrapped to the column's width (the
+    title block's or the widest table's): (the leaves, the width)."""
+    grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+    width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in grown])
+    return grown + [Leaf("notes", record=note_block(lines, width))], width
 
 
 SLIDING_H = 125.0        # the λ diagrams' height with their caption, mm (λ from −3 to 1 at 20 mm, labels)
