@@ -12,7 +12,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import construct_mesh, construct_train, sliding_diagram
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import agreeing, gears_json, sig_decimals, table_decimals
+from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
@@ -95,15 +95,6 @@ def _n(v, lang: str, d: int = 4) -> str:
     return "—" if v is None else num(v, lang, d).replace("-", "−")
 
 
-def _bare(text: str) -> str:
-    """A printed number without trailing zeros ("42,00" → "42", "−37,500" → "−37,5"): as the other
-    sheets print values, where no reading's resolution is the point."""
-    if "," not in text and "." not in text:
-        return text
-    out = text.rstrip("0").rstrip(",.")
-    return "0" if out in ("", "−", "-", "−0") else out
-
-
 def contact_ratio_text(exact: float, graphical: float | None, lang: str, least: int = 3
                        ) -> tuple[str, str, float | None]:
     """ε_α exact and graphical printed to the fewest decimals (at least ``least``) whose δ worked out
@@ -142,7 +133,7 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e, lang) if gr else ""] if gr else [_bare(te), "", ""]
+            row += [te, tg, _pct(e, lang) if gr else ""] if gr else [bare(te), "", ""]
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
@@ -187,7 +178,7 @@ def train_table(doc: dict, lang: str) -> Record:
     ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
-            [w["u"].split(":")[0], _bare(ue), _bare(ug) if ug else "—",
+            [w["u"].split(":")[0], bare(ue), bare(ug) if ug else "—",
              _pct(ud, lang) + ("!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
         req = t["ratio_required"]
@@ -198,7 +189,7 @@ def train_table(doc: dict, lang: str) -> Record:
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), _bare(te), _bare(tg) if tg else "—",
+        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), bare(te), bare(tg) if tg else "—",
                      _pct(e, lang)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
