@@ -725,3 +725,103 @@ def test_the_ratio_read_on_generated_trains_is_within_the_worst_case(kind, u, K,
     assert abs(vel.ratio - tr.ratio) <= ratio_worst(tr, vel, p) + 1e-12
     assert abs(vel.ratio - tr.ratio) <= vel.ratio_bound       # within the bound the sheet states
     assert abs(construct_train(tr, 0.0).ratio - tr.ratio) < 1e-9
+
+
+# -- the tables' numbers (review 3, item 6; the lead's brief: no trailing zeros) ---------------------
+
+@pytest.mark.parametrize("name", SCENES_DELTA + ["review12"])
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_tables_print_no_trailing_zero_but_where_a_reading_is_and_eps_delta_is_the_true_one(name, lang, tmp_path):
+    """Table 3's u1H and ω and Table 1's exact-only lengths carry no trailing zero ("6.0000", "150.00",
+    "42.00" were printed); only the rows read off the drawing keep the ruler's decimals, which the notes
+    say. ε_α: δ worked out here from the two printed ε_α equals the terminal's δ (JSON error_pct) to
+    the printed δ's digits (1.212/1.207 gave 0.414 % against the true 0.392 %)."""
+    import re
+    from graphplan.report.gears import solved
+    from graphplan.sheets.gears import geometry_table, notes, train_table
+    path = _review12(tmp_path) if name == "review12" else _scene_path(name, tmp_path)
+    _, sol, mesh, vel = solved(path)
+    doc = gears_json(sol, mesh, vel, "")
+    trailing = re.compile(r"^−?\d+[.,]\d*0[*!]?$")
+    if vel is not None:
+        for row in _table_rows(train_table(doc, lang))[3:]:
+            assert not any(trailing.match(c) for c in row), row
+    if mesh is not None:
+        read = ("r_w", "s,", "s_a", "δ")
+        for row in _table_rows(geometry_table(doc, lang))[2:]:
+            if not row[0].startswith(read):
+                assert not any(trailing.match(c) for c in row[1:]), row
+            if row[0] == "ε_α":
+                true = doc["pair"]["contact_ratio"]["error_pct"]
+                e, g = _value(row[1]), _value(row[2])
+                step = _last_digit(row[3])
+                assert abs(100.0 * (g - e) / e - true) <= step / 2 + 1e-12, (row, true)
+                assert abs(_value(row[3]) - true) <= step / 2 + 1e-12, (row, true)
+        text = " ".join(notes(doc, lang, mesh, vel))
+        assert ("0,01 мм" if lang == "uk" else "0.01 mm") in text or mesh.precision * mesh.mu_l * 1000 < 0.1
+
+
+GEARS12 = """title = "gears12"
+lang = "en"
+
+[gears]
+z = [12, 31]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 7.3
+planets = 3
+module = 0.003
+omega = 100.0
+"""
+
+
+def _review12(tmp_path):
+    """Review 3's gears12 scene as the review wrote it (z 12/31, m 4, auto shifts; type A, u 7.3, K 3)."""
+    path = tmp_path / "gears12.toml"
+    path.write_text(GEARS12, encoding="utf-8")
+    return path
+
+
+# -- the A1 sheet filled (reviews 2 and 3: the gear sheet 59–62 % empty) ------------------------------
+
+@pytest.mark.parametrize("name, lang", [("gears.toml", "uk"), ("gears_b.toml", "en"), ("review", "uk"),
+                                        ("review12", "en")])
+def test_the_a1_gear_sheet_fills_its_field_in_zones(name, lang, tmp_path):
+    """The drawings' and tables' extents cover at least 60 % of the field (the sheet composed before
+    covered 51–56 %); the meshing is larger than the λ diagrams; the tables stand in the column by the title
+    block, top down, and the notes on the title block; the λ diagrams stand beside the meshing or
+    beside the planetary pictures, and the planetary pictures take at least 70 % of their row's width."""
+    from shapely.geometry import box
+    from shapely.ops import unary_union
+    from graphplan.model.gears import load
+    from graphplan.sheets.compose import GAP, SheetOptions, field_of, keep_out
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    path = _review12(tmp_path) if name == "review12" else _scene_path(name, tmp_path)
+    f = form("A1")
+    sheet = BUILDERS["gears"](load(path), f, SheetOptions(lang=lang, sheet="gears"))
+    assert len(sheet.pages) == 1
+    x0, y0, x1, y1 = field_of(f)
+    ext = {p.name: p.record.bounds() for p in sheet.placed}
+    field = box(x0, y0, x1, y1)
+    cover = unary_union([box(*b) for b in ext.values()]).intersection(field).area / field.area
+    assert cover >= 0.6, cover
+    area = lambda b: (b[2] - b[0]) * (b[3] - b[1])                       # noqa: E731
+    drawings = ("meshing", "sliding", "planetary")
+    assert area(ext["meshing"]) > area(ext["sliding"])
+    column = [ext[n] for n in ("geometry", "quality", "train", "notes")]
+    left = min(b[0] for b in column)
+    assert all(b[0] >= max(ext[n][2] for n in drawings) for b in column)     # the column right of the drawings
+    assert abs(column[0][3] - y1) < 1.0                                  # Table 1 at the field's top
+    assert 0.0 <= column[-1][1] - keep_out(f)[3] <= GAP + 1.0             # the notes on the title block
+    assert [b[3] for b in column] == sorted((b[3] for b in column), reverse=True)
+    room = left - GAP - x0
+    m, s, p = ext["meshing"], ext["sliding"], ext["planetary"]
+    if s[1] >= p[3]:                                                    # the λ diagrams up by the meshing
+        assert s[0] >= m[2] and p[2] - p[0] >= 0.7 * room, (s, p, room)
+    else:                                                               # in the row with the planetary train
+        assert s[3] <= m[1] and (s[2] - s[0]) + (p[2] - p[0]) >= 0.7 * room, (s, p, room)
+    assert s[3] - s[1] >= 120.0                                         # grown from 20 mm a unit of λ

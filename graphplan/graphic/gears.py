@@ -491,14 +491,15 @@ def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
     return max(first, worst)
 
 
-def sliding_diagram(sol: PairSolution, mesh: Mesh) -> Record:
-    """λ1 and λ2 over N1N2 drawn horizontally at the meshing's scale, λ at 20 mm a unit (clipped at
-    ±3): the ordinates at B1, P, B2 and the working part between B1 and B2."""
+def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM) -> Record:
+    """λ1 and λ2 over N1N2 drawn horizontally at the meshing's scale, λ at ``unit_mm`` a unit (20 mm
+    unless the sheet grows it; clipped at −3): the ordinates at B1, P, B2 and the working part
+    between B1 and B2."""
     rec = Record("sliding")
     G = sol.g / mesh.mu_l
     rho = np.linspace(0.0, G, 401)
     l1, l2 = sol.sliding(rho * mesh.mu_l)
-    k = LAMBDA_MM
+    k = unit_mm
     rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="construction", width=0.35, layer=LAYER, step="λ axis")   # a diagram's
     rec.segment((0.0, -LAMBDA_CLIP * k - 3), (0.0, k + 8.0), role="construction", width=0.35, layer=LAYER)  # axes: solid
     for curve, name in ((l1, "λ_1"), (l2, "λ_2")):

@@ -197,6 +197,16 @@ def agreeing(exact: float, graphical: float | None, decimals: int, lang: str
     return text(e), text(g), (100.0 * (g - e) / e if e else None)
 
 
+def bare(text: str) -> str:
+    """A printed number without trailing zeros ("42,00" → "42", "−37,500" → "−37,5"), as the other
+    sheets and the terminal print values where no reading's resolution is the point; the value and
+    so the δ worked out from it are unchanged."""
+    if "," not in text and "." not in text:
+        return text
+    out = text.rstrip("0").rstrip(",.")
+    return "0" if out in ("", "−", "-", "−0", "-0") else out
+
+
 def sig_decimals(exact: float, digits: int = 5) -> int:
     """The decimals that give ``exact`` ``digits`` significant figures (u1H 11.81 → 3, ω 100.5 → 2):
     the ratio's and the velocities' rows of the train, printed so that δ reads from them."""
@@ -245,7 +255,7 @@ def pair_lines(d: dict, lang: str) -> list[str]:
         row = [w["rows"][key].replace("_", "")]
         for k in (0, 1):
             te, tg, e = agreeing(ex[k] * 1000, None if gr is None else gr[k] * 1000, dec, lang)
-            row += [te, tg, "" if e is None else n(e, 3)]
+            row += [te, tg, "" if e is None else n(e, 3)] if gr is not None else [bare(te), "", ""]
         rows.append(row)
     lines += [""] + _table(rows)
     return lines
@@ -257,7 +267,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
     ok = lambda b: w["ok"] if b else w["fail"]                                      # noqa: E731
     r = d["ratio"]
     ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
-    ug = ug or "—"
+    ue, ug = bare(ue), bare(ug) if ug else "—"
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
              w["zt"].format(z=", ".join(map(str, d["z"])), u=ue, r=n(d["ratio_required"]),
@@ -274,7 +284,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"
         te, tg, e = agreeing(d["omega_rad_s"][k], g["omega_rad_s"][k] if g else None,
                              sig_decimals(d["omega_rad_s"][k]), lang)
-        rows.append([name, te, tg, "" if e is None else n(e, 3)])
+        rows.append([name, bare(te), bare(tg) if tg else tg, "" if e is None else n(e, 3)])
     lines += _table(rows)
     if d["candidates"]:
         lines += ["", w["cands"].format(n=d["candidates_passing"])]

@@ -9,13 +9,13 @@ from __future__ import annotations
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred, flow
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import construct_mesh, construct_train
+from graphplan.graphic.gears import construct_mesh, construct_train, sliding_diagram
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import agreeing, gears_json, sig_decimals, table_decimals
+from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
-from graphplan.sheets.form import Form, table
+from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
@@ -24,7 +24,7 @@ from graphplan.util.words import fixed, num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів",
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення; μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
@@ -40,6 +40,8 @@ WORDS = {
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
            "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
+           "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
+                  "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
            "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
@@ -55,7 +57,7 @@ WORDS = {
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action; μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
@@ -71,6 +73,8 @@ WORDS = {
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
            "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
+           "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
+                  "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
            "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
@@ -89,6 +93,22 @@ WORDS = {
 
 def _n(v, lang: str, d: int = 4) -> str:
     return "—" if v is None else num(v, lang, d).replace("-", "−")
+
+
+def contact_ratio_text(exact: float, graphical: float | None, lang: str, least: int = 3
+                       ) -> tuple[str, str, float | None]:
+    """ε_α exact and graphical printed to the fewest decimals (at least ``least``) whose δ worked out
+    from the two printed numbers prints as the true δ = 100·(ε_g − ε)/ε does to three significant
+    figures (1.212/1.207 gave 0.414 % where the true δ is 0.392 %): (exact, graphical, δ printed)."""
+    if graphical is None:
+        te, _, _ = agreeing(exact, None, least, lang)
+        return te, "", None
+    true = 100.0 * (graphical - exact) / exact
+    for dec in range(least, 10):
+        te, tg, e = agreeing(exact, graphical, dec, lang)
+        if e is not None and _pct(e, lang) == _pct(true, lang):
+            return te, tg, e
+    return agreeing(exact, graphical, 10, lang)
 
 
 def _pct(v, lang: str) -> str:
@@ -113,10 +133,10 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e, lang) if gr else ""]
+            row += [te, tg, _pct(e, lang) if gr else ""] if gr else [bare(te), "", ""]
         rows.append(row)
     c = p["contact_ratio"]
-    te, tg, e = agreeing(c["exact"], c["graphical"], 3, lang)
+    te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
     rows.append(["ε_α", te, tg, (_pct(e, lang) + ("!" if c["outside_bound"] else "")) if tg else "", "", "", ""])
     for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
                    (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
@@ -144,7 +164,7 @@ def quality_table(doc: dict, lang: str) -> Record:
                  " / ".join(yes(not v) for v in q["interference"])])
     rows.append([w["eps"], _n(p["contact_ratio"]["exact"], lang), "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
-    return table(rows, [62.0, 26.0, 26.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
+    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -158,7 +178,7 @@ def train_table(doc: dict, lang: str) -> Record:
     ue, ug, ud = agreeing(r["exact"], r["graphical"], sig_decimals(r["exact"]), lang)
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
-            [w["u"].split(":")[0], ue, ug or "—",
+            [w["u"].split(":")[0], bare(ue), bare(ug) if ug else "—",
              _pct(ud, lang) + ("!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
         req = t["ratio_required"]
@@ -169,7 +189,8 @@ def train_table(doc: dict, lang: str) -> Record:
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), te, tg or "—", _pct(e, lang)])
+        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), bare(te), bare(tg) if tg else "—",
+                     _pct(e, lang)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
@@ -189,6 +210,10 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
             out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
+        g = p.get("graphical")
+        if g and mesh.precision > 0:
+            out.append(w["res"].format(d=num(10.0 ** -table_decimals(g), lang), p=_n(mesh.precision, lang),
+                                       r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
     if "planetary" in doc:
@@ -258,8 +283,8 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         b = r.bounds()
         return b[2] - b[0], b[3] - b[1]
     mesh_h = size(captioned(mesh.record, "M"))[1] + 12.0          # the meshing and its caption's line
-    lam_w = size(mesh.lam)[0]
-    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 3 * GAP
+    lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
+    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
     room_h = region[3] - region[1] - mesh_h - 3 * GAP
     w0, h0 = size(plan)
     for k in GROW:
@@ -302,7 +327,32 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
     if vel is not None and mesh is not None:
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
+    if mesh is not None and sol.pair:
+        if beside(region, mesh):          # beside the meshing, as tall as it with its caption
+            row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
+        else:                             # in the row under it, beside the planetary pictures
+            row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
+        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
     return mesh, vel, plan
+
+
+def beside(region, mesh) -> bool:
+    """Whether the λ diagrams stand beside the meshing (the zone under it then the planetary
+    pictures' alone): when the two fit across the drawings' zone, the field less the tables'
+    column."""
+    b, lam = mesh.record.bounds(), mesh.lam.bounds()
+    zone_w = region[2] - region[0] - max(TITLE, 150.0) - GAP
+    return (b[2] - b[0]) + GAP + (lam[2] - lam[0]) <= zone_w
+
+
+LAMBDA_UNITS = (20.0, 25.0, 40.0, 50.0)    # mm a unit of λ (μλ = 0.05, 0.04, 0.025, 0.02 1/mm)
+
+
+def lambda_unit(row_h: float) -> float:
+    """The λ diagrams' unit, mm: the largest of ``LAMBDA_UNITS`` whose diagram (λ from −3 to 1 and
+    the margins, with its two-line caption, about 4.3 units and 37 mm) stands in the row ``row_h``
+    mm tall beside the planetary pictures."""
+    return max([u for u in LAMBDA_UNITS if 4.3 * u + 37.0 <= row_h] or [LAMBDA_UNITS[0]])
 
 
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
@@ -320,16 +370,21 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     if mesh is not None:
         drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(
             mu=_n(mesh.mu_l, lang), scale=drawing_scale(mesh.mu_l, lang)))))
-        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"])))
+        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
+            mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
-    width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in tables])
-    nts = Leaf("notes", record=note_block(notes(doc, lang, mesh, vel), width))
-    pages = zones(drawings, tables + [nts], f, width)
-    if pages is None:
-        laid = flow(_rows(drawings, tables + [nts], region), region, keep_out(f))
+    lines = notes(doc, lang, mesh, vel)
+    pages = None
+    for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
+        side, width = _column(tables, lines, k)
+        pages = zones(drawings, side, f, width)
+        if pages is not None:
+            break
+    if pages is None:                     # a set of sheets (the tables at the ruled size, as they were)
+        laid = flow(_rows(drawings, side, region), region, keep_out(f))
         if laid is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
@@ -337,6 +392,15 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
                  for page in laid]
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
                    f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
+    """The tables drawn ``k`` times their ruled size (``TABLES``: as the other sheets draw theirs,
+    3.5 mm letters and 8.4 mm rows) and the notes under them, wrapped to the column's width (the
+    title block's or the widest table's): (the leaves, the width)."""
+    grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+    width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in grown])
+    return grown + [Leaf("notes", record=note_block(lines, width))], width
 
 
 SLIDING_H = 125.0        # the λ diagrams' height with their caption, mm (λ from −3 to 1 at 20 mm, labels)
@@ -353,21 +417,29 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
     need = sum(t.h for t in side) + GAP * (len(side) - 1)
     if need > y1 - keep[3] - GAP:
         return None
-    top = [d for d in drawings if d.name == "meshing"]
-    row = [d for d in drawings if d.name != "meshing"]
     room = x1 - x0 - right - GAP
+    mesh_w = sum(d.w for d in drawings if d.name == "meshing")
+    up = ("meshing", "sliding") if any(d.name == "sliding" and mesh_w + GAP + d.w <= room for d in drawings) \
+        else ("meshing",)                 # the λ diagrams beside the meshing where the two fit across
+    top = [d for d in drawings if d.name in up]
+    row = [d for d in drawings if d.name not in up]
     row_w = sum(d.w for d in row) + GAP * max(len(row) - 1, 0)
     row_h = max((d.h for d in row), default=0.0)
     top_h = max((d.h for d in top), default=0.0)
-    if row_w > room or any(d.w > room for d in top) or top_h + row_h + (GAP if top and row else 0.0) > y1 - y0:
+    top_w = sum(d.w for d in top) + GAP * max(len(top) - 1, 0)
+    if row_w > room or top_w > room or top_h + row_h + (GAP if top and row else 0.0) > y1 - y0:
         return None
     out: list[Placed] = []
     spare_y = (y1 - y0 - top_h - row_h - (GAP if top and row else 0.0)) / (1 + len([z for z in (top, row) if z]))
     y = y1 - spare_y
-    for d in top:
-        box = (x0, y - d.h, x0 + room, y)
-        out.append(Placed(d.name, centred(d.record, box), box))
-        y = box[1] - GAP - spare_y
+    if top:
+        spare_x = (room - top_w) / (len(top) + 1)
+        x = x0 + spare_x
+        for d in top:
+            box = (x, y - top_h, x + d.w, y)
+            out.append(Placed(d.name, centred(d.record, box), box))
+            x = box[2] + spare_x + GAP
+        y = y - top_h - GAP - spare_y
     if row:
         spare_x = (room - row_w) / (len(row) + 1)
         x = x0 + spare_x
@@ -376,10 +448,14 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
             out.append(Placed(d.name, centred(d.record, box), box))
             x = box[2] + spare_x + GAP
     y = y1
+    tabs = [t for t in side if t.name != "notes"]
+    spare = (y1 - keep[3] - GAP - need) / max(len(tabs), 1)      # the column's spare height between its parts
     for t in side:
+        if t.name == "notes":                                      # the notes stand on the title block
+            y = keep[3] + GAP + t.h
         box = (x1 - right, y - t.h, x1, y)
         out.append(Placed(t.name, top_left_of(t.record, box), box))
-        y = box[1] - GAP
+        y = box[1] - GAP - (spare if t is not tabs[-1] else 0.0)
     return [out]
 
 
