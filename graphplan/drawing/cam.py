@@ -23,26 +23,38 @@ NUMBER = 2.5          # the division numbers
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
 
+def symbols(rocking: bool) -> dict[str, str]:
+    """The follower's displacement and its analogues in the lab's letters (markup): a translating
+    follower's s, ds/dφ, d²s/dφ²; a rocking follower's arm angle ψ, dψ/dφ, d²ψ/dφ² (REFERENCE §11,
+    docs/cams.md: the swing ψ_max, ψ_0 — an angle is not s)."""
+    q = "ψ" if rocking else "s"
+    return {"s": q, "v": f"d{q}/dφ", "a": f"d^{{2}}{q}/dφ^{{2}}",
+            "mu_s": f"μ_{q}", "mu_v": f"μ_{{d{q}/dφ}}", "mu_a": f"μ_{{d²{q}/dφ²}}"}
+
+
 def scale_units(rocking: bool, lang: str) -> dict[str, str]:
-    """The unit of each scale (the value per drawn millimetre): s in m (rocking: rad), its analogues
-    per radian of the cam's turn."""
+    """The unit of each scale (the value per drawn millimetre): s in m, its analogues per radian of
+    the cam's turn; a rocking follower's ψ in degrees as the table gives it (° per mm, its analogues
+    (°/рад)/мм and (°/рад²)/мм: one unit for each quantity on the drawing, in the notes and the table)."""
     uk = lang == "uk"
     m, rad, mm = ("м", "рад", "мм") if uk else ("m", "rad", "mm")
-    top = rad if rocking else m
-    per = {"mu_s": f"{top}/{mm}", "mu_phi": f"{rad}/{mm}", "mu_l": f"{m}/{mm}"}
+    per = {"mu_phi": f"{rad}/{mm}", "mu_l": f"{m}/{mm}"}
     if rocking:
-        per.update(mu_v=f"1/{mm}", mu_a=f"1/({rad}·{mm})")
+        per.update(mu_s=f"°/{mm}", mu_v=f"(°/{rad})/{mm}", mu_a=f"(°/{rad}^{{2}})/{mm}")
     else:
-        per.update(mu_v=f"{m}/({rad}·{mm})", mu_a=f"{m}/({rad}^{{2}}·{mm})")
+        per.update(mu_s=f"{m}/{mm}", mu_v=f"{m}/({rad}·{mm})", mu_a=f"{m}/({rad}^{{2}}·{mm})")
     return per
 
 
 def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
     """“μ_s = 0,0005 м/мм” in the lab's notation (markup). The analogues' scales are named by their
-    quantity, μ_{ds/dφ} and μ_{d²s/dφ²}: μ_v and μ_a are the kinematic velocity's and acceleration's
-    (m/s per mm), which a cam's analogues per radian of its turn are not."""
+    quantity, μ_{ds/dφ} and μ_{d²s/dφ²} (rocking μ_ψ, μ_{dψ/dφ}, μ_{d²ψ/dφ²}, their values in degrees:
+    ``value`` is per radian as construct keeps it): μ_v and μ_a are the kinematic velocity's and
+    acceleration's (m/s per mm), which a cam's analogues per radian of its turn are not."""
     from graphplan.util.words import num
-    sym = {"mu_s": "μ_s", "mu_v": "μ_{ds/dφ}", "mu_a": "μ_{d²s/dφ²}", "mu_phi": "μ_φ", "mu_l": "μ_l"}[key]
+    sym = {"mu_phi": "μ_φ", "mu_l": "μ_l", **symbols(rocking)}[key]
+    if rocking and key in ("mu_s", "mu_v", "mu_a"):
+        value = math.degrees(value)
     return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
 
 
@@ -81,9 +93,10 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     bands = {}
     labels: list[LabelRequest] = []
     y = 0.0
-    for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, "d^{2}s/dφ^{2}", g.H1),
-                                             ("v", v / g.mu_v, g.v_mm, "ds/dφ", g.H2),
-                                             ("s", s / g.mu_s, g.s_mm, "s", 0.0)):
+    sym = symbols(cam.rocking)
+    for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, sym["a"], g.H1),
+                                             ("v", v / g.mu_v, g.v_mm, sym["v"], g.H2),
+                                             ("s", s / g.mu_s, g.s_mm, sym["s"], 0.0)):
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
         y0 = y - lo
         bands[key] = y0
@@ -114,15 +127,30 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
                   key, labels)
         y = y0 + hi + 20.0
-    y_s = bands["s"]
     spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    for k in numbered(len(x), spacing):      # under the axis, and under a chord ending below it (a closing error)
+    keep = numbered(len(x), spacing)
+    y_s = bands["s"]
+    for k in keep:      # s: under the axis, and under a chord ending below it (a closing error)
         low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
         rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {k}")
+    for key, drawn in (("v", g.v_mm), ("a", g.a_mm)):
+        _division_numbers(rec, x, bands[key], drawn, keep, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
+
+
+def _division_numbers(rec: Record, x: np.ndarray, y0: float, drawn: np.ndarray, keep: list[int], key: str) -> None:
+    """The divisions 0…N numbered on a diagram's φ axis as on the s diagram (the lab numbers every
+    diagram): each number just right of its division, on the side of the axis away from the curve
+    there — the next division's ordinate (the curve leaving the division), or this one's where the
+    next is on the axis —, so the number crosses neither the curve nor an ordinate."""
+    for k in keep:
+        right = float(drawn[k + 1]) if k + 1 < len(drawn) else 0.0
+        up = right < -0.25 or (abs(right) <= 0.25 and float(drawn[k]) < -0.25)
+        y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+        rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
