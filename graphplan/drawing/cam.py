@@ -134,22 +134,53 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
         rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {k}")
-    for key, drawn in (("v", g.v_mm), ("a", g.a_mm)):
-        _division_numbers(rec, x, bands[key], drawn, keep, key)
+    for key in ("v", "a"):
+        _division_numbers(rec, x, bands[key], keep, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
 
 
-def _division_numbers(rec: Record, x: np.ndarray, y0: float, drawn: np.ndarray, keep: list[int], key: str) -> None:
+def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], key: str) -> None:
     """The divisions 0…N numbered on a diagram's φ axis as on the s diagram (the lab numbers every
-    diagram): each number just right of its division, on the side of the axis away from the curve
-    there — the next division's ordinate (the curve leaving the division), or this one's where the
-    next is on the axis —, so the number crosses neither the curve nor an ordinate."""
+    diagram): each number just right of its division, 1.2 mm off the axis on the side the curve
+    leaves free — the next division's ordinate's other side (the curve leaving the division), or this
+    one's where the next is on the axis — and moved on (the other side, then further off) while its
+    letters would touch a line already drawn on the diagram: the curve, an ordinate, a chord, a mean
+    ordinate carried across to the pole."""
+    from graphplan.graphic.record import Primitive
+    lines = [q for q in rec.items if q.kind in ("segment", "polyline") and q.step != f"axis {key}"
+             and (q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}")))]
+    pts = [np.asarray(q.points, float) for q in lines]
+    drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in lines if q.step.startswith(f"{key} at ")}
+
+    def clear(box) -> bool:
+        x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
+        for p in pts:
+            for (ax, ay), (bx, by) in zip(p[:-1], p[1:]):
+                if max(ax, bx) < x0 or min(ax, bx) > x1 or max(ay, by) < y_0 or min(ay, by) > y_1:
+                    continue
+                # the part of the segment within the box's x range: does it reach into its y range?
+                if abs(bx - ax) < 1e-9:
+                    return False
+                u0, u1 = sorted(((x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)))
+                u0, u1 = max(u0, 0.0), min(u1, 1.0)
+                ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
+                if not (max(ya, yb) < y_0 or min(ya, yb) > y_1):
+                    return False
+        return True
+
     for k in keep:
-        right = float(drawn[k + 1]) if k + 1 < len(drawn) else 0.0
-        up = right < -0.25 or (abs(right) <= 0.25 and float(drawn[k]) < -0.25)
-        y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+        right = drawn.get(k + 1, 0.0)
+        up = right < -0.25 or (abs(right) <= 0.25 and drawn.get(k, 0.0) < -0.25)
+        tries = [(s, extra) for extra in (0.0, 1.5, 3.0, 4.5) for s in ((1, -1) if up else (-1, 1))]
+        for side, extra in tries:
+            y = y0 + 1.2 + extra if side > 0 else y0 - 1.2 - extra - NUMBER * 0.75
+            if clear(Primitive("text", ((x[k] + 0.4, y),), text=str(k), size=NUMBER, anchor="start").ink()):
+                break
+        else:
+            side, extra = tries[0]
+            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
         rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
 
@@ -282,7 +313,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     j = int(np.argmax(np.abs(K - C)))
     if cam.rocking:
         w = (K[j] - C[j]) / abs(K[j] - C[j])
-        labels.append(LabelRequest(K[j] + 4.0 * w, "ds/dφ", toward=w, size=TEXT, step="axis ds/dφ"))
+        labels.append(LabelRequest(K[j] + 4.0 * w, "l·dψ/dφ", toward=w, size=TEXT, step="axis ds/dφ"))
     else:
         y0 = float(C[0].imag)
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
@@ -355,6 +386,12 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT))
     for k in numbered(len(pts), 2 * math.pi * outer / max(len(pts), 1)):
         tip = rays[k] if not cam.rocking else feet[k]
+        if cam.rocking and k == 0:
+            # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
+            # and out: its 0 below the arm and left of the support, not on O_1's line ("0O_1")
+            rec.label((tip.real - 4.3, tip.imag - 3.0), "0", size=NUMBER, anchor="end", layer=LAYER,
+                      step="division 0")
+            continue
         labels.append(LabelRequest(tip, str(k), toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
     place_labels(rec, labels, layer=LAYER)
