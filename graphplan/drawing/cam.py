@@ -145,42 +145,61 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
     """The divisions 0…N numbered on a diagram's φ axis as on the s diagram (the lab numbers every
     diagram): each number just right of its division, 1.2 mm off the axis on the side the curve
     leaves free — the next division's ordinate's other side (the curve leaving the division), or this
-    one's where the next is on the axis — and moved on (the other side, then further off) while its
-    letters would touch a line already drawn on the diagram: the curve, an ordinate, a chord, a mean
-    ordinate carried across to the pole."""
+    one's where the next is on the axis —, the other side where its letters would touch a line drawn
+    there (the curve, an ordinate, a chord, a mean ordinate carried across to the pole); where both
+    sides are crossed only by the mean ordinates' thin lines (a small diagram, ordinates near the
+    axis), those lines are broken round the number, as a draftsman leaves a gap for it."""
+    import dataclasses
     from graphplan.graphic.record import Primitive
-    lines = [q for q in rec.items if q.kind in ("segment", "polyline") and q.step != f"axis {key}"
-             and (q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}")))]
-    pts = [np.asarray(q.points, float) for q in lines]
-    drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in lines if q.step.startswith(f"{key} at ")}
+    ours = [q for q in rec.items if q.kind in ("segment", "polyline")
+            and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
+    drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in ours if q.step.startswith(f"{key} at ")}
 
-    def clear(box) -> bool:
+    def hits(box, lines) -> list:
         x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
-        for p in pts:
+        out = []
+        for q in lines:
+            p = np.asarray(q.points, float)
             for (ax, ay), (bx, by) in zip(p[:-1], p[1:]):
                 if max(ax, bx) < x0 or min(ax, bx) > x1 or max(ay, by) < y_0 or min(ay, by) > y_1:
                     continue
-                # the part of the segment within the box's x range: does it reach into its y range?
                 if abs(bx - ax) < 1e-9:
-                    return False
+                    out.append(q)
+                    break
+                # the part of the segment within the box's x range: does it reach into its y range?
                 u0, u1 = sorted(((x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)))
                 u0, u1 = max(u0, 0.0), min(u1, 1.0)
                 ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
                 if not (max(ya, yb) < y_0 or min(ya, yb) > y_1):
-                    return False
-        return True
+                    out.append(q)
+                    break
+        return out
 
     for k in keep:
         right = drawn.get(k + 1, 0.0)
         up = right < -0.25 or (abs(right) <= 0.25 and drawn.get(k, 0.0) < -0.25)
-        tries = [(s, extra) for extra in (0.0, 1.5, 3.0, 4.5) for s in ((1, -1) if up else (-1, 1))]
-        for side, extra in tries:
-            y = y0 + 1.2 + extra if side > 0 else y0 - 1.2 - extra - NUMBER * 0.75
-            if clear(Primitive("text", ((x[k] + 0.4, y),), text=str(k), size=NUMBER, anchor="start").ink()):
-                break
-        else:
-            side, extra = tries[0]
+        lines = [q for q in rec.items if q.kind in ("segment", "polyline")
+                 and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
+        best = None
+        for side in ((1, -1) if up else (-1, 1)):
             y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
+            box = Primitive("text", ((x[k] + 0.4, y),), text=str(k), size=NUMBER, anchor="start").ink()
+            crossed = hits(box, lines)
+            if not crossed:
+                best = (y, box, [])
+                break
+            if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
+                best = (y, box, crossed)
+        if best is None:
+            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+            best = (y, None, [])
+        y, box, broken = best
+        for q in broken:           # a horizontal thin line: two pieces, 1 mm clear of the number
+            (ax, ay), (bx, by) = q.points
+            lo, hi = sorted((ax, bx))
+            at = rec.items.index(q)
+            pieces = [((lo, ay), (box[0] - 1.0, ay)), ((box[2] + 1.0, ay), (hi, ay))]
+            rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
         rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
 
