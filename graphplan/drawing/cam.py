@@ -148,7 +148,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
     one's where the next is on the axis —, the other side where its letters would touch a line drawn
     there (the curve, an ordinate, a chord, a mean ordinate carried across to the pole); where both
     sides are crossed only by the mean ordinates' thin lines (a small diagram, ordinates near the
-    axis), those lines are broken round the number, as a draftsman leaves a gap for it."""
+    axis), those lines are broken 1.5 mm round the number, as a draftsman leaves a gap for it."""
     import dataclasses
     from graphplan.graphic.record import Primitive
     ours = [q for q in rec.items if q.kind in ("segment", "polyline")
@@ -194,11 +194,11 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
             best = (y, None, [])
         y, box, broken = best
-        for q in broken:           # a horizontal thin line: two pieces, 1 mm clear of the number
+        for q in broken:           # a horizontal thin line: two pieces, 1.5 mm clear of the number
             (ax, ay), (bx, by) = q.points
             lo, hi = sorted((ax, bx))
             at = rec.items.index(q)
-            pieces = [((lo, ay), (box[0] - 1.0, ay)), ((box[2] + 1.0, ay), (hi, ay))]
+            pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
         rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
