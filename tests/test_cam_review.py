@@ -159,7 +159,8 @@ def test_the_phase_arcs_are_drawn_to_the_values_they_print(scene):
     texts = [q.text for q in ph.items if q.kind == "text"]
     for k, key in enumerate(("rise", "return")):
         assert any(t.replace(" ", "") == f"[ϑ]={scene['cam']['pressure_angle_deg'][key]}°" for t in texts), texts
-    (label,) = [q for q in ph.items if q.kind == "text" and q.text == "ds/dφ"]
+    # a rocking follower's analogue is laid off along the arm as the arc l·dψ/dφ (an angle is not s)
+    (label,) = [q for q in ph.items if q.kind == "text" and q.text == ("l·dψ/dφ" if cam.rocking else "ds/dφ")]
     if not cam.rocking:      # at the end of its axis (through C0, square to the follower's)
         (axis,) = [q for q in ph.items if q.kind == "segment" and q.step == "axis ds/dφ"]
         end = max(axis.points, key=lambda p: p[0])

@@ -96,7 +96,7 @@ def test_a_rocking_cam_gives_its_analogue_in_degrees_per_radian():
     sol = solve(load(ROOT / "examples" / "cam_rocking.toml"))
     g = construct(sol, measure=False)
     head = [q.text for q in positions_table(cam_json(sol, g, ""), "uk").items if q.kind == "text"]
-    assert "ds/dφ, °/рад" in head
+    assert "dψ/dφ, °/рад" in head
 
 
 def test_the_a1_sheet_fills_its_height_with_the_table_and_notes_by_the_title_block(tmp_path):

@@ -23,26 +23,38 @@ NUMBER = 2.5          # the division numbers
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
 
+def symbols(rocking: bool) -> dict[str, str]:
+    """The follower's displacement and its analogues in the lab's letters (markup): a translating
+    follower's s, ds/dφ, d²s/dφ²; a rocking follower's arm angle ψ, dψ/dφ, d²ψ/dφ² (REFERENCE §11,
+    docs/cams.md: the swing ψ_max, ψ_0 — an angle is not s)."""
+    q = "ψ" if rocking else "s"
+    return {"s": q, "v": f"d{q}/dφ", "a": f"d^{{2}}{q}/dφ^{{2}}",
+            "mu_s": f"μ_{q}", "mu_v": f"μ_{{d{q}/dφ}}", "mu_a": f"μ_{{d²{q}/dφ²}}"}
+
+
 def scale_units(rocking: bool, lang: str) -> dict[str, str]:
-    """The unit of each scale (the value per drawn millimetre): s in m (rocking: rad), its analogues
-    per radian of the cam's turn."""
+    """The unit of each scale (the value per drawn millimetre): s in m, its analogues per radian of
+    the cam's turn; a rocking follower's ψ in degrees as the table gives it (° per mm, its analogues
+    (°/рад)/мм and (°/рад²)/мм: one unit for each quantity on the drawing, in the notes and the table)."""
     uk = lang == "uk"
     m, rad, mm = ("м", "рад", "мм") if uk else ("m", "rad", "mm")
-    top = rad if rocking else m
-    per = {"mu_s": f"{top}/{mm}", "mu_phi": f"{rad}/{mm}", "mu_l": f"{m}/{mm}"}
+    per = {"mu_phi": f"{rad}/{mm}", "mu_l": f"{m}/{mm}"}
     if rocking:
-        per.update(mu_v=f"1/{mm}", mu_a=f"1/({rad}·{mm})")
+        per.update(mu_s=f"°/{mm}", mu_v=f"(°/{rad})/{mm}", mu_a=f"(°/{rad}^{{2}})/{mm}")
     else:
-        per.update(mu_v=f"{m}/({rad}·{mm})", mu_a=f"{m}/({rad}^{{2}}·{mm})")
+        per.update(mu_s=f"{m}/{mm}", mu_v=f"{m}/({rad}·{mm})", mu_a=f"{m}/({rad}^{{2}}·{mm})")
     return per
 
 
 def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
     """“μ_s = 0,0005 м/мм” in the lab's notation (markup). The analogues' scales are named by their
-    quantity, μ_{ds/dφ} and μ_{d²s/dφ²}: μ_v and μ_a are the kinematic velocity's and acceleration's
-    (m/s per mm), which a cam's analogues per radian of its turn are not."""
+    quantity, μ_{ds/dφ} and μ_{d²s/dφ²} (rocking μ_ψ, μ_{dψ/dφ}, μ_{d²ψ/dφ²}, their values in degrees:
+    ``value`` is per radian as construct keeps it): μ_v and μ_a are the kinematic velocity's and
+    acceleration's (m/s per mm), which a cam's analogues per radian of its turn are not."""
     from graphplan.util.words import num
-    sym = {"mu_s": "μ_s", "mu_v": "μ_{ds/dφ}", "mu_a": "μ_{d²s/dφ²}", "mu_phi": "μ_φ", "mu_l": "μ_l"}[key]
+    sym = {"mu_phi": "μ_φ", "mu_l": "μ_l", **symbols(rocking)}[key]
+    if rocking and key in ("mu_s", "mu_v", "mu_a"):
+        value = math.degrees(value)
     return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
 
 
@@ -81,9 +93,10 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     bands = {}
     labels: list[LabelRequest] = []
     y = 0.0
-    for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, "d^{2}s/dφ^{2}", g.H1),
-                                             ("v", v / g.mu_v, g.v_mm, "ds/dφ", g.H2),
-                                             ("s", s / g.mu_s, g.s_mm, "s", 0.0)):
+    sym = symbols(cam.rocking)
+    for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, sym["a"], g.H1),
+                                             ("v", v / g.mu_v, g.v_mm, sym["v"], g.H2),
+                                             ("s", s / g.mu_s, g.s_mm, sym["s"], 0.0)):
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
         y0 = y - lo
         bands[key] = y0
@@ -114,15 +127,80 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
                   key, labels)
         y = y0 + hi + 20.0
-    y_s = bands["s"]
     spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    for k in numbered(len(x), spacing):      # under the axis, and under a chord ending below it (a closing error)
+    keep = numbered(len(x), spacing)
+    y_s = bands["s"]
+    for k in keep:      # s: under the axis, and under a chord ending below it (a closing error)
         low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
         rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {k}")
+    for key in ("v", "a"):
+        _division_numbers(rec, x, bands[key], keep, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
+
+
+def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], key: str) -> None:
+    """The divisions 0…N numbered on a diagram's φ axis as on the s diagram (the lab numbers every
+    diagram): each number just right of its division, 1.2 mm off the axis on the side the curve
+    leaves free — the next division's ordinate's other side (the curve leaving the division), or this
+    one's where the next is on the axis —, the other side where its letters would touch a line drawn
+    there (the curve, an ordinate, a chord, a mean ordinate carried across to the pole); where both
+    sides are crossed only by the mean ordinates' thin lines (a small diagram, ordinates near the
+    axis), those lines are broken 1.5 mm round the number, as a draftsman leaves a gap for it."""
+    import dataclasses
+    from graphplan.graphic.record import Primitive
+    ours = [q for q in rec.items if q.kind in ("segment", "polyline")
+            and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
+    drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in ours if q.step.startswith(f"{key} at ")}
+
+    def hits(box, lines) -> list:
+        x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
+        out = []
+        for q in lines:
+            p = np.asarray(q.points, float)
+            for (ax, ay), (bx, by) in zip(p[:-1], p[1:]):
+                if max(ax, bx) < x0 or min(ax, bx) > x1 or max(ay, by) < y_0 or min(ay, by) > y_1:
+                    continue
+                if abs(bx - ax) < 1e-9:
+                    out.append(q)
+                    break
+                # the part of the segment within the box's x range: does it reach into its y range?
+                u0, u1 = sorted(((x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)))
+                u0, u1 = max(u0, 0.0), min(u1, 1.0)
+                ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
+                if not (max(ya, yb) < y_0 or min(ya, yb) > y_1):
+                    out.append(q)
+                    break
+        return out
+
+    for k in keep:
+        right = drawn.get(k + 1, 0.0)
+        up = right < -0.25 or (abs(right) <= 0.25 and drawn.get(k, 0.0) < -0.25)
+        lines = [q for q in rec.items if q.kind in ("segment", "polyline")
+                 and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
+        best = None
+        for side in ((1, -1) if up else (-1, 1)):
+            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
+            box = Primitive("text", ((x[k] + 0.4, y),), text=str(k), size=NUMBER, anchor="start").ink()
+            crossed = hits(box, lines)
+            if not crossed:
+                best = (y, box, [])
+                break
+            if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
+                best = (y, box, crossed)
+        if best is None:
+            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+            best = (y, None, [])
+        y, box, broken = best
+        for q in broken:           # a horizontal thin line: two pieces, 1.5 mm clear of the number
+            (ax, ay), (bx, by) = q.points
+            lo, hi = sorted((ax, bx))
+            at = rec.items.index(q)
+            pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
+            rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
+        rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
@@ -254,7 +332,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     j = int(np.argmax(np.abs(K - C)))
     if cam.rocking:
         w = (K[j] - C[j]) / abs(K[j] - C[j])
-        labels.append(LabelRequest(K[j] + 4.0 * w, "ds/dφ", toward=w, size=TEXT, step="axis ds/dφ"))
+        labels.append(LabelRequest(K[j] + 4.0 * w, "l·dψ/dφ", toward=w, size=TEXT, step="axis ds/dφ"))
     else:
         y0 = float(C[0].imag)
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
@@ -327,6 +405,12 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT))
     for k in numbered(len(pts), 2 * math.pi * outer / max(len(pts), 1)):
         tip = rays[k] if not cam.rocking else feet[k]
+        if cam.rocking and k == 0:
+            # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
+            # and out: its 0 below the arm and left of the support, not on O_1's line ("0O_1")
+            rec.label((tip.real - 4.3, tip.imag - 3.0), "0", size=NUMBER, anchor="end", layer=LAYER,
+                      step="division 0")
+            continue
         labels.append(LabelRequest(tip, str(k), toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
     place_labels(rec, labels, layer=LAYER)

@@ -78,6 +78,7 @@ class CamConstruction:
     # with more divisions for it, the first drawing's divisions and closing errors (mm)
     closing_bound: float = math.inf
     redrawn: tuple[int, float, float, float] | None = None     # n, Δ rise, Δ return, the bound (mm)
+    rocking: bool = False           # a rocking follower: its displacement is the arm's angle ψ, not s
 
     @property
     def closes(self) -> bool:
@@ -192,6 +193,7 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
                           sol.geometry.R0, radius_mm, theta, mu_l, closing=closing, a_mid=np.concatenate(a_mid),
                           v_mid=np.concatenate(v_mid), v_chord=v_chord, s_chord=s_chord)
     out.closing_bound = closing_bound(cam.stroke / mu_s, precision)
+    out.rocking = cam.rocking
     if not out.closes:
         out.warnings.append(closing_warning(out))
     return out
@@ -257,11 +259,12 @@ def closing_warning(g: "CamConstruction", better: int | None = None, tried: bool
     b2 = f"{g.closing_bound:.2f}"
     r, t = (mm(x, False) for x in g.closing)
     b = b2
-    en = (f"the graphical s at {n} divisions missed its closing by Δ = {r} mm (rise), {t} mm (return), more than "
+    q = "ψ" if g.rocking else "s"      # a rocking follower's arm angle ψ
+    en = (f"the graphical {q} at {n} divisions missed its closing by Δ = {r} mm (rise), {t} mm (return), more than "
           f"the {b} mm allowed ({CLOSING_LIMIT:g}\u00a0% of the stroke drawn and the ruler's half division)")
     r, t = (mm(x, True) for x in g.closing)
     b = b2.replace(".", ",")
-    uk = (f"графічне s при {n} поділках не замкнулося на Δ = {r} мм (підйом), {t} мм (опускання) — більше за "
+    uk = (f"графічне {q} при {n} поділках не замкнулося на Δ = {r} мм (підйом), {t} мм (опускання) — більше за "
           f"допустимі {b} мм ({CLOSING_LIMIT:g}\u00a0% ходу на кресленні й половина поділки лінійки)")
     if better is not None:
         en += f"; {better} divisions would close within it"

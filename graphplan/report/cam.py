@@ -9,7 +9,7 @@ import numpy as np
 
 from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import CamConstruction, errors_pct
-from graphplan.drawing.cam import scale_text
+from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, num
 
@@ -93,10 +93,10 @@ WORDS = {
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
-           "closing": "графічне s замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
+           "closing": "графічне {q} замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
-           "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} s не замкнулося на Δ = {r} мм "
-                      "(підйом), {t} мм (опускання) — правило: s замикається в межах 2\u00a0% ходу на кресленні й "
+           "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} {q} не замкнулося на Δ = {r} мм "
+                      "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
@@ -112,10 +112,10 @@ WORDS = {
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
-           "closing": "the graphical s closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
+           "closing": "the graphical {q} closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
-           "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} s missed its closing by "
-                      "Δ = {r} mm (rise), {t} mm (return) — the rule: s closes within 2\u00a0% of the stroke drawn "
+           "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} {q} missed its closing by "
+                      "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
@@ -153,11 +153,11 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     h1=n(sc["H1_mm"]), h2=n(sc["H2_mm"])))
     close = doc.get("closing_mm")
     if close:
-        lines.append(w["closing"].format(r=n(close["rise"], 3).replace("-", "−"),
+        lines.append(w["closing"].format(q=symbols(rocking)["s"], r=n(close["rise"], 3).replace("-", "−"),
                                          t=n(close["return"], 3).replace("-", "−")))
     again = doc.get("redrawn")
     if again:
-        lines.append(w["redrawn"].format(n=doc["divisions"], f=again["divisions_first"],
+        lines.append(w["redrawn"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
@@ -173,7 +173,9 @@ def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     lines = [f"{title} — {w['title']}"] + [plain(x) for x in cam_lines(doc, lang)]
     lines.append("")
     key = "_deg" if rocking else "_m"
-    rows = [w["head"]]
+    q = symbols(rocking)                     # rocking: ψ, dψ/dφ (an angle is not s)
+    rows = [[x.replace("ds/dφ", plain(q["v"])).replace("δs", "δ" + q["s"]).replace("s ", q["s"] + " ")
+             for x in w["head"]]]
     for p in doc["positions"]:
         e, gr, err = p["exact"], p["graphical"], p["error_pct"]
         rows.append([n(p["phi_deg"]), n(e["s" + key]), n(gr["s" + key]), n(err["s"], 3), n(e["ds_dphi" + key]),

@@ -5,7 +5,7 @@ other sheets: the drawings in a row in reading order, the table and the notes be
 a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
-from graphplan.drawing.cam import records, scale_text
+from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import closing_warning, construct
@@ -22,12 +22,12 @@ from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num
 
 WORDS = {
-    "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми d^{2}s/dφ^{2}, ds/dφ, s (графічне "
-           "інтегрування методом хорд)", "phase": "Фазова діаграма s(ds/dφ), найменший R_0",
+    "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
+           "інтегрування методом хорд)", "phase": "Фазова діаграма {s}({v}), найменший R_0",
            "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№"},
-    "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams d^{2}s/dφ^{2}, ds/dφ, s (graphical integration by "
-           "chords)", "phase": "Phase diagram s(ds/dφ), smallest R_0",
+    "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams {a}, {v}, {s} (graphical integration by "
+           "chords)", "phase": "Phase diagram {s}({v}), smallest R_0",
            "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
            "pressure angle at the divisions", "n": "No"},
 }
@@ -49,14 +49,17 @@ def _pct(v, lang: str) -> str:
 
 def positions_table(doc: dict, lang: str) -> Record:
     """Per division: φ, s and ds/dφ exact and graphical with δ, ϑ exact and measured, R exact and
-    measured (mm); ds/dφ per radian of the cam's turn (мм/рад, rocking °/рад)."""
+    measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
+    unit of its scale μ_{dψ/dφ} in (°/рад)/мм)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
     k = 1.0 if rocking else 1000.0                      # a translating follower's s in mm
     unit = "°" if rocking else ("мм" if lang == "uk" else "mm")
     per = unit + "/" + ("рад" if lang == "uk" else "rad")     # the analogue: per radian of the cam's turn
     gr = "гр." if lang == "uk" else "gr."
-    head = [WORDS[lang]["n"], "φ, °", f"s, {unit}", f"s {gr}", "δ_s, %", f"ds/dφ, {per}", f"ds/dφ {gr}", "δ, %",
+    q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
+    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"{q['s']} {gr}", f"δ_{q['s']}, %", f"{q['v']}, {per}",
+            f"{q['v']} {gr}", "δ, %",
             "ϑ, °", f"ϑ {gr}", "R, " + ("мм" if lang == "uk" else "mm"), f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
@@ -105,7 +108,9 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     else:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
-    return {"diagrams": (w["diagrams"], first), "phase": (w["phase"], phase), "profile": (w["profile"], profile)}
+    q = symbols(cam.rocking)
+    return {"diagrams": (w["diagrams"].format(**q), first), "phase": (w["phase"].format(**q), phase),
+            "profile": (w["profile"], profile)}
 
 
 def beside(diagrams: Record, phase: Record, caps: dict) -> Record:

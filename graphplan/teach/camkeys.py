@@ -104,7 +104,9 @@ def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
     rocking = key["follower"] == "rocking"
     unit = "°" if rocking else mm
     k = 1.0 if rocking else 1000.0
-    header = [["№", "φ, °", f"s, {unit}", f"ds/dφ, {unit}", "ϑ, °", f"R, {mm}"]]
+    from graphplan.drawing.cam import symbols
+    q = symbols(rocking)                    # rocking: ψ, dψ/dφ per radian of the cam's turn, as on the sheet
+    header = [["№", "φ, °", f"{q['s']}, {unit}", f"{q['v']}, {unit}/{'рад' if uk else 'rad'}", "ϑ, °", f"R, {mm}"]]
     rows = [[str(p["index"]), fixed(p["phi_deg"], lang, 1), num(p["values"]["s"] * k, lang),
              num(p["values"]["ds_dphi"] * k, lang), fixed(p["values"]["theta"], lang, 2),
              fixed(p["values"]["R"] * 1000, lang, 2)] for p in key["positions"]]
