@@ -589,6 +589,26 @@ class _Args:
         self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
+SPEED_WIDTHS = (1.0, 0.8, 0.65, 0.5, 0.4)     # ω(φ) in a set: its width a share of the field's, largest first
+
+
+def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
+    """ω(φ) in a set grown while the set's count of sheets holds (``lay(speed)`` lays the set out):
+    the widest of ``SPEED_WIDTHS`` of the field at 0.45 of its width high."""
+    x0, y0, x1, _ = field_of(f)
+    small = Leaf("speed", record=_speed(fw, lang, (0.0, 0.0)))
+    base = lay(small)
+    if base is None:
+        return small, base
+    for share in SPEED_WIDTHS:
+        w = share * (x1 - x0)
+        leaf = Leaf("speed", record=_speed(fw, lang, (w, 0.45 * w)))
+        laid = lay(leaf)
+        if laid is not None and len(laid) <= len(base):
+            return leaf, laid
+    return small, base
+
+
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
     the drawings' ``rows``, then the tables and the notes in one row; where the first drawing does
@@ -598,8 +618,9 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
     tried = []
     for order in ("drawings", "tables"):
         for tail in ([tables + [notes]], [tables[:-1] + [Stack([tables[-1], notes])]],
-                     [tables[:-1] + [Row([tables[-1], notes])]]):
-            laid = flow(rows + tail if order == "drawings" else tail + rows, region, keep, later=later)
+                     [tables[:-1] + [Row([tables[-1], notes])]]):     # the last drawing (ω) goes with the tables
+            first = rows + tail if order == "drawings" else [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]
+            laid = flow([r for r in first if r], region, keep, later=later)
             if laid is not None and not _notes_alone(laid[-1]):
                 tried.append(laid)
         if tried:
@@ -670,8 +691,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        laid = _set_flow([[leaves["moments"]], [leaves["band"], leaves["speed"]]], tables,
-                         Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f), _later_keep(f))
+        nleaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
+            [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None for q in placed(leaf, b)] for page in laid]
