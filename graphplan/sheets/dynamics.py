@@ -507,6 +507,7 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
 
 SET_SIZES = (1.5, 1.3, 1.2, 1.15, 1.1, 1.05, 1.0, 0.9, 0.8, 0.7, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 0.3)
 SET_L_STEP = 10.0        # mm: the set's abscissae L tried, from the longest down
+SET_PATIENCE = 3         # L tried past the largest |kl| found before a set settles for it
 
 
 def _later_keep(f: Form) -> tuple[float, float, float, float]:
@@ -535,32 +536,42 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
 def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, float]) -> tuple[float, float]:
     """A set's construction (L, size): for each L from the longest down (``SET_L_STEP``) the largest
     size (``SET_SIZES``) at which the moments and the band each fit a sheet; the first whose |kl| is
-    at least ``target`` (the A1 sheet's: the flywheel read no worse), else the one of the largest |kl|.
-    ``fits`` is taken to hold for every smaller size where it holds for one (the drawings grow with
-    it), so each L is searched by halving."""
+    at least ``target`` (the A1 sheet's: the flywheel read no worse), else the one of the largest |kl|
+    (the search ends after ``SET_PATIENCE`` L without a larger one). ``fits`` is taken to hold for
+    every smaller size where it holds for one (the drawings grow with it): each L's size is sought
+    from the last L's (a shorter L holds at least as large a size), upward while it fits, else by
+    halving below it."""
     Ls = sorted({L for L, _ in sizes}, reverse=True)
     if len(Ls) > 1:
         top, low = Ls[0], Ls[-1]
         Ls = [top - SET_L_STEP * k for k in range(int((top - low) / SET_L_STEP) + 1)]
-    best = None
+    best, last, idle = None, None, 0
     for L in Ls:
-        if not fits(L, SET_SIZES[-1]):
-            continue
-        lo, hi, got = 0, len(SET_SIZES) - 1, len(SET_SIZES) - 1
-        while lo <= hi:
-            k = (lo + hi) // 2
-            if fits(L, SET_SIZES[k]):
-                got, hi = k, k - 1
-            else:
-                lo = k + 1
+        if last is not None and fits(L, SET_SIZES[last]):
+            got = last
+            while got > 0 and fits(L, SET_SIZES[got - 1]):
+                got -= 1
+        else:
+            lo, hi, got = 0 if last is None else last + 1, len(SET_SIZES) - 1, None
+            while lo <= hi:
+                k = (lo + hi) // 2
+                if fits(L, SET_SIZES[k]):
+                    got, hi = k, k - 1
+                else:
+                    lo = k + 1
+            if got is None:
+                continue
+        last = got
         pair = (L, SET_SIZES[got])
         value = kl(*pair)
-        if target is not None and value >= target - 1e-9:
+        if target is None or value >= target - 1e-9:
             return pair
         if best is None or value > best[0] + 1e-9:
-            best = (value, pair)
-        if target is None:
-            return pair
+            best, idle = (value, pair), 0
+        else:
+            idle += 1
+            if idle >= SET_PATIENCE:
+                break
     return best[1] if best is not None else fallback
 
 
