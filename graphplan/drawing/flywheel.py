@@ -146,6 +146,12 @@ def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndar
     return fine, periodic_spline(f.x[:-1], y[:-1] - trend * f.x[:-1] / f.L, f.L)(fine) + trend * fine / f.L
 
 
+ORDINATE_LEAST = 1.0   # mm: an ordinate shorter than this is neither projected to the M axis nor rayed to P (a
+#                        draftsman omits it: its line would run along the φ axis; the chord is drawn level)
+PROJECTION_LEAST = 2.5  # mm: one shorter than this is projected by a stub at the M axis only, not across the width
+PROJECTION_STUB = 6.0   # mm: that stub's length (the ray starts where it meets the axis)
+
+
 def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     """a) M*_c(φ) with the constant M*_d, the pole P at H and the rays to the middles' heights;
     b) below it, A_c by chords and the straight A_d on the same abscissa."""
@@ -164,8 +170,10 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     rec.point(pole, role="joint", layer=LAYER, step="pole P")
     rec.label((-f.H - 1.8, 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step="pole P")
     for k, (xk, yk) in enumerate(zip(xm, f.M_mid)):
-        rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
-        rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
+        if abs(yk) >= ORDINATE_LEAST:        # a near-zero ordinate is not projected: its line would lie on the axis
+            start = xk if abs(yk) >= PROJECTION_LEAST else min(xk, PROJECTION_STUB)   # near the axis: a stub at it
+            rec.segment((start, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+            rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")

@@ -280,21 +280,24 @@ def _prefix(items: list[Node], y: float, bottom: float, room, width) -> tuple[li
     return fit, height
 
 
-def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP
-         ) -> list[list[tuple[Leaf, Box]]] | None:
+def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP,
+         later: Box | None = None) -> list[list[tuple[Leaf, Box]]] | None:
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
     while they fit across (the rest wrap to the next row), rows one under another, a new sheet when
     the next row does not fit below. Near the foot a row keeps clear of ``keep`` (the title block).
     The spare room of each row is shared out across it, a sheet's spare height between its rows
-    (where no row then meets the title block). None when one item is larger than a sheet."""
+    (where no row then meets the title block). None when one item is larger than a sheet. ``later``:
+    the title block kept clear of on the sheets after the first (a set's smaller form 2a), else ``keep``."""
     rx0, ry0, rx1, ry1 = region
     pages: list[list[tuple[float, float, list[Node]]]] = []      # per sheet: (top, height, items) of each row
     page: list[tuple[float, float, list[Node]]] = []
     y = ry1
+    sheet = [0]                                                  # the sheet being filled (0: the first)
 
     def room(top: float, h: float) -> float:
-        if keep is not None and top - h < keep[3] + 1e-9:
-            return keep[0] - rx0
+        k = keep if (sheet[0] == 0 or later is None) else later
+        if k is not None and top - h < k[3] + 1e-9:
+            return k[0] - rx0
         return rx1 - rx0
 
     def width(items: list[Node]) -> float:
@@ -322,6 +325,7 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
                     return None
                 pages.append(page)
                 page, y = [], ry1
+                sheet[0] += 1
                 continue
             page.append((y, height, taken))
             y -= height + gap
@@ -331,7 +335,8 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
     if page:
         pages.append(page)
     out = []
-    for rows_ in pages:
+    for n, rows_ in enumerate(pages):
+        sheet[0] = n
         spare = (rows_[-1][0] - rows_[-1][1]) - ry0
         extra = spare / len(rows_) if rows_ else 0.0
         shifted = [(top - extra * (k + 0.5), h, items) for k, (top, h, items) in enumerate(rows_)]

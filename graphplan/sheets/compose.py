@@ -165,6 +165,9 @@ def defects(sheet: Sheet) -> list[str]:
         out += [f"sheet {n}: {c}" for c in collisions(page.record)]
         fx0, fy0, fx1, fy1 = f.frame_box
         tb = title_block_box(f)
+        if n > 1:                                   # a set's later sheets carry form 2a (``Sheet.number``)
+            from graphplan.sheets.form import BLOCK_2A_H
+            tb = (tb[0], tb[1], tb[2], tb[1] + BLOCK_2A_H)
         for p in page.record.items:
             if p.layer == "frame":
                 continue

@@ -550,13 +550,91 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
                             if tw <= W + 1e-9 and th <= H + 1e-9 and (
                                     not in_nook or notes_in_nook(nooks, per, shape, C)):
                                 return L, size, factor, shape, parts, length, in_nook
-    per = measured(L, size, 1.0)[3]       # else a set of sheets at these scales, the band on one of them
+    # else a set of sheets: each drawing at the scales a sheet of its own holds
 
-    def on_a_page(b: Leaf) -> bool:       # over the title block, or beside it
-        return (b.w <= W + 1e-9 and b.h <= H - foot - GAP + 1e-9) or (b.w <= keep_out(f)[0] - x0 + 1e-9
-                                                                       and b.h <= H + 1e-9)
+    def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
+        return _fits_later(f, b)
+
+    def fits(L: float, size: float) -> bool:
+        leaves, _, _, per = measured(L, size, 1.0)
+        return _fits_later(f, leaves["moments"]) and _fits_later(f, band_leaf(L, size, _lengths(L)[-1], per))
+
+    def kl(L: float, size: float) -> float:
+        return abs(measured(L, size, 1.0)[3][0][2]["flywheel"]["kl_mm"])
+    L, size = _set_scales(sizes, fits, kl, _a1_kl(st, dyn, f, args), (L, size))
+    per = measured(L, size, 1.0)[3]
     length = next((g for g in _lengths(L) if on_a_page(band_leaf(L, size, g, per))), _lengths(L)[-1])
     return L, size, 1.0, "set", 1, length, False
+
+
+SET_SIZES = (1.5, 1.3, 1.2, 1.15, 1.1, 1.05, 1.0, 0.9, 0.8, 0.7, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 0.3)
+SET_L_STEP = 10.0        # mm: the set's abscissae L tried, from the longest down
+SET_PATIENCE = 3         # L tried past the largest |kl| found before a set settles for it
+
+
+def _later_keep(f: Form) -> tuple[float, float, float, float]:
+    """The title block form 2a (185×15 mm) of a set's later sheets with its clearance (``keep_out``)."""
+    from graphplan.sheets.form import BLOCK_2A_H, BLOCK_W
+    _, fy0, fx1, _ = f.frame_box
+    return fx1 - BLOCK_W - GAP, fy0, fx1, fy0 + BLOCK_2A_H + GAP
+
+
+def _fits_later(f: Form, b: Leaf) -> bool:
+    """``b`` fits a set's later sheet: over its title block form 2a, or beside it."""
+    x0, y0, x1, y1 = field_of(f)
+    k = _later_keep(f)
+    return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
+
+
+def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
+    """|kl| of the energy–mass diagram on the A1 sheet (the reading error a set must not make worse:
+    the ruler's 0.5 mm over |kl|), or None on A1 itself."""
+    if f.name == "A1":
+        return None
+    L, size, *_ = construction(st, dyn, form("A1"), args)
+    return abs(dynamics_json(_built(dyn, args, L, size))["flywheel"]["kl_mm"])
+
+
+def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, float]) -> tuple[float, float]:
+    """A set's construction (L, size): for each L from the longest down (``SET_L_STEP``) the largest
+    size (``SET_SIZES``) at which the moments and the band each fit a sheet; the first whose |kl| is
+    at least ``target`` (the A1 sheet's: the flywheel read no worse), else the one of the largest |kl|
+    (the search ends after ``SET_PATIENCE`` L without a larger one). ``fits`` is taken to hold for
+    every smaller size where it holds for one (the drawings grow with it): each L's size is sought
+    from the last L's (a shorter L holds at least as large a size), upward while it fits, else by
+    halving below it."""
+    Ls = sorted({L for L, _ in sizes}, reverse=True)
+    if len(Ls) > 1:
+        top, low = Ls[0], Ls[-1]
+        Ls = [top - SET_L_STEP * k for k in range(int((top - low) / SET_L_STEP) + 1)]
+    best, last, idle = None, None, 0
+    for L in Ls:
+        if last is not None and fits(L, SET_SIZES[last]):
+            got = last
+            while got > 0 and fits(L, SET_SIZES[got - 1]):
+                got -= 1
+        else:
+            lo, hi, got = 0 if last is None else last + 1, len(SET_SIZES) - 1, None
+            while lo <= hi:
+                k = (lo + hi) // 2
+                if fits(L, SET_SIZES[k]):
+                    got, hi = k, k - 1
+                else:
+                    lo = k + 1
+            if got is None:
+                continue
+        last = got
+        pair = (L, SET_SIZES[got])
+        value = kl(*pair)
+        if target is None or value >= target - 1e-9:
+            return pair
+        if best is None or value > best[0] + 1e-9:
+            best, idle = (value, pair), 0
+        else:
+            idle += 1
+            if idle >= SET_PATIENCE:
+                break
+    return best[1] if best is not None else fallback
 
 
 def _lengths(L: float) -> tuple[float, ...]:
@@ -584,26 +662,48 @@ class _Args:
         self.divisions, self.precision, self.lang = divisions, precision, "uk"
 
 
-def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep):
-    """A set's sheets (drawing.layout.flow): the drawings' ``rows``, then the tables and the notes
-    in one row. Where that leaves the notes alone on the last sheet, the last table goes with them
-    (over them, else beside them) — every sheet of a set carries a drawing or a table; where the
-    last table and the notes share a row, they stay together (the notes beside the table, a GAP
-    apart: ``flow`` shares a row's spare width out between its items and set them far apart)."""
-    laid = flow(rows + [tables + [notes]], region, keep)
-    if laid is None:
-        return laid
-    if _notes_alone(laid[-1]):
-        tries = (Stack([tables[-1], notes]), Row([tables[-1], notes]))
-    elif _one_row(laid[-1], tables[-1], notes):
-        tries = (Row([tables[-1], notes]),)
-    else:
-        return laid
-    for together in tries:
-        again = flow(rows + [tables[:-1] + [together]], region, keep)
-        if again is not None and not _notes_alone(again[-1]) and len(again) <= len(laid):
-            return again
-    return laid
+SPEED_WIDTHS = (1.0, 0.8, 0.65, 0.5, 0.4)     # ω(φ) in a set: its width a share of the field's, largest first
+
+
+def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
+    """ω(φ) in a set grown while the set's count of sheets holds (``lay(speed)`` lays the set out):
+    the widest of ``SPEED_WIDTHS`` of the field at 0.45 of its width high."""
+    x0, y0, x1, _ = field_of(f)
+    small = Leaf("speed", record=_speed(fw, lang, (0.0, 0.0)))
+    base = lay(small)
+    if base is None:
+        return small, base
+    for share in SPEED_WIDTHS:
+        w = share * (x1 - x0)
+        leaf = Leaf("speed", record=_speed(fw, lang, (w, 0.45 * w)))
+        laid = lay(leaf)
+        if laid is not None and len(laid) <= len(base):
+            return leaf, laid
+    return small, base
+
+
+def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None):
+    """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
+    the drawings' ``rows``, then the tables and the notes in one row; where the first drawing does
+    not fit beside the first sheet's title block, the tables' rows first. Where that leaves the
+    notes alone on the last sheet, the last table goes with them (over them, else beside them) —
+    every sheet of a set carries a drawing or a table. The fewest sheets of those — where the last
+    table and the notes share a row, the one keeping them together (the notes beside the table, a
+    GAP apart: ``flow`` shares a row's spare width out between its items and sets them far apart)."""
+    tried = []
+    for order in ("drawings", "tables"):
+        for tail in ([tables + [notes]], [tables[:-1] + [Stack([tables[-1], notes])]],
+                     [tables[:-1] + [Row([tables[-1], notes])]]):     # the last drawing (ω) goes with the tables
+            first = rows + tail if order == "drawings" else [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]
+            laid = flow([r for r in first if r], region, keep, later=later)
+            if laid is not None and not _notes_alone(laid[-1]):
+                spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
+                tried.append((len(laid), spread, len(tried), laid))
+        if tried:
+            break
+    if tried:
+        return min(tried)[3]
+    return flow(rows + [tables + [notes]], region, keep, later=later)
 
 
 def _one_row(page, table: Leaf, notes: Leaf) -> bool:
@@ -689,8 +789,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        laid = _set_flow([[leaves["moments"]], [leaves["band"], leaves["speed"]]], tables,
-                         Leaf("notes", record=note_block(note_lines, TITLE)), region, keep_out(f))
+        nleaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
+            [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None
