@@ -55,7 +55,7 @@ def test_sheet_content_and_language():
     uk = build("shaper")
     texts = " ".join(p.text for p in uk.record.items if p.kind == "text")
     assert "План положень" in texts and "План швидкостей 11" in texts and "План прискорень" in texts
-    assert "I(0-1) → II(2-3) → II(4-5)" in texts and "μ_l = " in texts and "Розроб." in texts
+    assert "I(0-1) → II(2-3) ВПВ → II(4-5) ВВП" in texts and "μ_l = " in texts and "Розроб." in texts
     en = build("shaper", lang="en")
     texts = " ".join(p.text for p in en.record.items if p.kind == "text")
     assert "Position plan" in texts and "Velocity plan 11" in texts and "Drawn" in texts

@@ -309,8 +309,9 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     letter ``prev``: after a letter open below on its right (P, Г, Т, F, 7) the index tucks in under
     its bowl or bar, its ink starting 0.15 of the letter height inside the letter's box, as a
     typesetter kerns it — set at the full advance it hangs apart, belonging to neither word. A tall
-    index (a capital, b, d) after a bowl or a middle bar (P, Р, F) would reach up into it (the D of
-    P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink."""
+    letter index (a capital, b, d) after a bowl or a middle bar (P, Р, F) would reach up into it (the D
+    of P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink;
+    a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl."""
     if prev not in TUCKED:
         return 0.0
     m = _metrics()
@@ -319,7 +320,7 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
         return 0.0
     adv = m["advance"].get(prev, m["missing"])
     inside = -0.15 * size
-    if prev in BOWLED and cb[3] * em(sub) - SUB_SHIFT * size > BOWL_TOP * size:
+    if prev in BOWLED and c.isalpha() and cb[3] * em(sub) - SUB_SHIFT * size > BOWL_TOP * size:
         inside = BOWL_GAP * size
     return min(0.0, (box[2] * em(size) + inside) - (adv * em(size) + cb[0] * em(sub)))
 
