@@ -13,6 +13,81 @@ from conftest import example, scene_study
 from test_moment_load import scene
 
 
+LOOM = '''# review3's loom: a four-bar driving a batten, a resistance moment on the rocker
+title = "Шарнірний чотириланковий механізм батана"
+title_en = "Four-bar linkage of a loom batten"
+designation = "ТММ.КП.08.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.42, 0.05]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.12
+rpm = 150
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.40
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.28
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 240
+
+[loads]
+g = 9.81
+mass_per_length = 40
+inertia_factor = 0.1
+
+[[moment]]
+link = 3
+magnitude = 150
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+synchronous_rpm = 1000
+'''
+
+
+@pytest.fixture(scope="module")
+def loom_a1():
+    """The loom's A1 force sheet: its plan and drawings."""
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    st = scene_study(LOOM)
+    p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    return st, p, dr, dr.drawings(p.mu, "uk")
+
+
 @pytest.fixture(scope="module")
 def rocker():
     return scene_study(scene("3", "oppose").replace('stroke = "both"', 'stroke = "working"'))
@@ -69,3 +144,27 @@ def test_the_balancing_moment_chart_takes_a_round_mu_phi_and_values_its_axis(roc
     assert len(steps) == 1 and _mantissa(steps.pop()) in {1.0, 2.0, 5.0}
     m = rocker_turn.ks.balancing
     assert values[-1][0] >= m.max() - 1e-9 and values[0][0] <= min(0.0, m.min()) + 1e-9
+
+
+def _gap(a, b) -> float:
+    (ax0, ay0, ax1, ay1), (bx0, by0, bx1, by1) = a.bounds(), b.bounds()
+    return max(ax0 - bx1, bx0 - ax1, ay0 - by1, by0 - ay1, 0.0)
+
+
+def test_the_levers_pole_names_the_fixed_pivots_and_its_labels_stand_apart(loom_a1):
+    """The pole read p_v alone though o1 and o2 (where M3'' acts) are there; the names of the
+    forces at a, s2 and b stood 1.5 mm apart: the pole is "p_v, o1, o2" — every image drawn at
+    the pole, the pivots' images having no velocity — and no two labels closer than the force's
+    lettering."""
+    from graphplan.drawing.forces import LETTER
+    st, p, dr, drawings = loom_a1
+    rec = drawings["lever"][0]
+    labels = [q for q in rec.items if q.kind == "text" and q.layer == "labels"]
+    fp = dr.groups_fp(p.mu)
+    at_pole = {n for n, z in fp.lever.images.items() if abs(z) <= 0.1}
+    assert {"O1", "O2"} <= at_pole
+    pole = [q.text for q in labels if q.text.startswith("p_v")]
+    assert pole == ["p_v, " + ", ".join(sorted(f"{n[0].lower()}_{n[1:]}" for n in at_pole))], pole
+    for i, a in enumerate(labels):
+        for b in labels[i + 1:]:
+            assert _gap(a, b) >= LETTER - 0.05, (a.text, b.text, _gap(a, b))
