@@ -168,3 +168,24 @@ def test_the_levers_pole_names_the_fixed_pivots_and_its_labels_stand_apart(loom_
     for i, a in enumerate(labels):
         for b in labels[i + 1:]:
             assert _gap(a, b) >= LETTER - 0.05, (a.text, b.text, _gap(a, b))
+
+
+def test_a_group_is_drawn_freed_from_the_frame_its_arms_named_apart(loom_a1):
+    """Group II(2–3) kept the frame's hatched support at O2, and h_Φ3, h_G3 on one line at B had
+    their names 2 mm apart: a group's pivot on the frame is a joint circle with no support (R03
+    replaces it) while the scheme keeps its supports; no two labels of a group closer than 3.5 mm."""
+    from graphplan.drawing.forces import LETTER
+    st, p, dr, drawings = loom_a1
+    mech = st.mech
+    for rec in drawings["groups"]:
+        assert not [q for q in rec.items if q.layer == "frame"], rec.title
+        labels = [q for q in rec.items if q.kind == "text" and q.layer == "labels"]
+        assert {"O_2"} <= {q.text for q in labels} or "II" not in rec.title
+        for i, a in enumerate(labels):
+            for b in labels[i + 1:]:
+                assert _gap(a, b) >= LETTER - 0.05, (rec.title, a.text, b.text, _gap(a, b))
+    texts = [q.text for q in drawings["groups"][0].items if q.kind == "text"]
+    assert {"h_{Φ3}", "h_{G3}", "R_{03}"} <= set(texts), texts
+    scheme = drawings["scheme"][0]
+    hatches = [q for q in scheme.items if q.role == "hatch" and q.layer == "frame"]
+    assert len(hatches) == 5 * len(mech.frame)      # the scheme's supports: five strokes a pivot

@@ -295,7 +295,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         for p in lk.joints:
             z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
-            if p in mech.frame:
+            if p in mech.frame and gp.kind == "mechanism":
+                # the scheme keeps its supports; a group is drawn freed from the frame, the
+                # pivot a circle, its support replaced by the reaction (R03, R01)
                 _support(rec, z, step)
                 supports.append(z)
             if all(n != p for _, n in names):
@@ -484,7 +486,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
-    return lab.done()
+    # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
+    # h_G3 on the loom's rocker) had their names stacked against each other
+    return _apart(rec, lab.asked)
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
