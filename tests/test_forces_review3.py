@@ -189,3 +189,27 @@ def test_a_group_is_drawn_freed_from_the_frame_its_arms_named_apart(loom_a1):
     scheme = drawings["scheme"][0]
     hatches = [q for q in scheme.items if q.role == "hatch" and q.layer == "frame"]
     assert len(hatches) == 5 * len(mech.frame)      # the scheme's supports: five strokes a pivot
+
+
+def test_a_hodographs_jump_is_joined_where_the_moment_switches(rocker_turn):
+    """R23 and R03 jump where M3 switches on (and off), and the sheet left the gap unexplained:
+    each jump's two ends — the reaction just before and just after the switch, from the exact
+    analysis — are joined by one thin dashed line."""
+    from graphplan.drawing.charts import hodograph_record
+    from graphplan.graphic.record import DASHED_ROLES, ROLES, THIN
+    work = np.asarray(rocker_turn.ks.working, dtype=bool)
+    cuts = [k for k in range(len(work)) if work[k] != work[k - 1]]
+    assert len(cuts) == 2
+    for key in rocker_turn.revolute:
+        rec = hodograph_record(rocker_turn, key)
+        mu = rec.scales["mu_R"]
+        f = rocker_turn.ks.reactions[key].force / mu
+        jumps = [q for q in rec.items if q.kind == "segment" and q.step.endswith("the jump")]
+        assert len(jumps) == sum(1 for k in cuts if abs(f[k] - f[k - 1]) > 0.5), key
+        for k in cuts:
+            if abs(f[k] - f[k - 1]) <= 0.5:
+                continue
+            ends = {(round(f[k - 1].real, 6), round(f[k - 1].imag, 6)), (round(f[k].real, 6), round(f[k].imag, 6))}
+            assert any({tuple(round(c, 6) for c in pt) for pt in q.points} == ends for q in jumps), (key, k)
+        for q in jumps:
+            assert ROLES[q.role] == THIN and q.role in DASHED_ROLES

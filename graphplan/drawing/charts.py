@@ -307,9 +307,18 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
     rec.segment((x0, 0.0), (x1, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     rec.segment((0.0, y0), (0.0, y1), role="construction", width=AXIS_W, layer="diagrams", step=step)
-    for idx, z in _pieces(t, f):
+    pieces = _pieces(t, f)
+    for idx, z in pieces:
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
+    if len(pieces) > 1:
+        # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
+        # dashed line, so that the gap reads as the jump (the notes say so), not as a curve left open
+        for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
+            a, b = z[-1] / mu_r, z_next[0] / mu_r
+            if abs(b - a) > 0.5:
+                rec.segment((float(a.real), float(a.imag)), (float(b.real), float(b.imag)), role="projection",
+                            layer="diagrams", step=f"{step}: the jump")
     numbers = []
     for first, last, w in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()]):
         text = str(first) if first == last else f"{first}–{last}"
