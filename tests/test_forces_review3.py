@@ -201,7 +201,7 @@ def test_a_hodographs_jump_is_joined_where_the_moment_switches(rocker_turn):
     cuts = [k for k in range(len(work)) if work[k] != work[k - 1]]
     assert len(cuts) == 2
     for key in rocker_turn.revolute:
-        rec = hodograph_record(rocker_turn, key)
+        rec = hodograph_record(rocker_turn, key, lang="en")
         mu = rec.scales["mu_R"]
         f = rocker_turn.ks.reactions[key].force / mu
         jumps = [q for q in rec.items if q.kind == "segment" and q.step.endswith("the jump")]
@@ -213,3 +213,8 @@ def test_a_hodographs_jump_is_joined_where_the_moment_switches(rocker_turn):
             assert any({tuple(round(c, 6) for c in pt) for pt in q.points} == ends for q in jumps), (key, k)
         for q in jumps:
             assert ROLES[q.role] == THIN and q.role in DASHED_ROLES
+
+    from graphplan.drawing.charts import records     # the caption says once what the dashed line is
+    said = [q.text for name, rec in records(rocker_turn, lang="en").items() if name.startswith("hodograph")
+            for q in rec.items if q.kind == "text" and "dashed" in q.text]
+    assert said == ["dashed: the jump due to M_{3}"], said

@@ -289,7 +289,7 @@ def hodograph_scale(span: float, size: float) -> float:
     return filling(span, size)
 
 
-def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk") -> Record:
+def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
@@ -311,12 +311,14 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     for idx, z in pieces:
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
+    jumps = 0
     if len(pieces) > 1:
         # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
-        # dashed line, so that the gap reads as the jump (the notes say so), not as a curve left open
+        # dashed line, so that the gap reads as the jump (the caption says so), not as a curve left open
         for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
             a, b = z[-1] / mu_r, z_next[0] / mu_r
             if abs(b - a) > 0.5:
+                jumps += 1
                 rec.segment((float(a.real), float(a.imag)), (float(b.real), float(b.imag)), role="projection",
                             layer="diagrams", step=f"{step}: the jump")
     numbers = []
@@ -328,8 +330,12 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
                                     # other numbers (on a leader where its point is crowded)
-    rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
+    y = rec.bounds()[1] - 6.0
+    rec.label((x0, y), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
+    if jumps and say_jump:      # said once, under the first hodograph that jumps
+        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
+        rec.label((x0, y - 5.0), word("fs jump", lang, what=", ".join(ext)), size=2.5, step=step)
     return rec
 
 
@@ -462,6 +468,8 @@ def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | Non
         out["resistance"] = res
     for key in slider_reactions(t):
         out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
+    said = False
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang)
+        rec = out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang, say_jump=not said)
+        said = said or any(p.step.endswith("the jump") for p in rec.items)
     return out

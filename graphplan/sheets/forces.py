@@ -293,11 +293,6 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
-    ks = dr.turn.ks
-    if dr.turn.revolute and len(set(np.asarray(ks.working, dtype=bool).tolist())) > 1:
-        # the hodographs' jumps are joined by a dashed line (drawing.charts.hodograph_record)
-        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in ks.loads if ld.kind == "external")
-        lines.append(word("fs jump", lang, what=", ".join(ext)))
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     by_scale: dict[float, list[str]] = {}
     for gp in fp.groups:                  # each group at its own scale (forceplans.group_scales)
