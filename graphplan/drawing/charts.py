@@ -16,6 +16,7 @@ from graphplan.drawing.labels import place_labels
 from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
+from graphplan.graphic.scales import GOST_BETWEEN, SERIES, series_value
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
 from graphplan.exact.positions import Study
@@ -151,24 +152,54 @@ def write_charts(t: Turn, folder: str | Path, title: str = "", lang: str = "uk")
 
 # -- records for the sheet ---------------------------------------------------------------------
 
-def _nice_step(span: float, parts: int = 6) -> float:
-    return standard_scale(span / parts) if span > 0 else 1.0
+TURN_FILL = 0.8       # a round μφ is taken when its turn, 360°/μφ, fills at least this much of the length
+
+
+def turn_scale(width: float) -> float:
+    """μφ (°/mm) of a chart over the turn in ``width`` mm: the finest value of the round series
+    (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10ⁿ: graphic.scales' series with GOST 2.302's 1.5, 7.5) whose
+    turn 360°/μφ fits the length and fills ≥ ``TURN_FILL`` of it (252 mm → 1.5 °/mm, 240 mm); where
+    none does, the lab's μφ = 360°/L with L the length rounded down to 10 mm."""
+    need = 360.0 / width
+    k0 = math.floor(math.log10(need))
+    rounds = sorted(series_value(m, k) for k in (k0, k0 + 1) for m in SERIES + GOST_BETWEEN)
+    mu = next(m for m in rounds if m >= need * (1 - 1e-12))
+    if 360.0 / mu >= TURN_FILL * width:
+        return mu
+    return 360.0 / max(10.0, 10.0 * math.floor(width / 10.0 + 1e-9))
+
+
+TICK_MM = 8.0         # an ordinate axis's round values at least this far apart
+
+
+def axis_step(mu: float, gap_mm: float = TICK_MM) -> float:
+    """The ordinate's value step: the smallest 1, 2 or 5 × 10ⁿ drawn ≥ ``gap_mm`` apart at μ."""
+    lo = gap_mm * mu
+    e = math.floor(math.log10(lo))
+    return min(series_value(m, k) for k in (e, e + 1) for m in (1.0, 2.0, 5.0)
+               if series_value(m, k) >= lo * (1 - 1e-12))
 
 
 def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, mm_unit: str,
                width: float, height: float, lang: str) -> tuple[Record, float]:
     """A quantity over the turn as the course draws it: abscissa = crank turn from position 0 at
-    μφ = 360°/``width``, ordinate at the standard scale μ that fits ``height``; each position's
-    ordinate drawn, as the points are plotted from the table; ticks within the drawn axis.
-    Returns the record and μ."""
+    a round μφ (``turn_scale``: the turn 360°/μφ within ``width``), ordinate at the standard scale μ
+    that fits ``height``; each position's ordinate drawn, as the points are plotted from the table;
+    the ordinate's values at a round step (``axis_step``) from below the lowest to past the peak,
+    the axis drawn through them. Returns the record and μ."""
     rec = Record(title)
     step = title
     lo, hi = min(0.0, float(np.min(values))), max(0.0, float(np.max(values)))
     mu = standard_scale((hi - lo) / height) if hi > lo else 1.0
-    mu_phi = 360.0 / width
+    mu_phi = turn_scale(width)
+    width = 360.0 / mu_phi
     rec.scales["mu_phi"] = mu_phi
+    tick = axis_step(mu)
+    v_lo = math.floor(lo / tick + 1e-9) * tick if lo < 0 else 0.0     # the round values bracketing the curve
+    v_hi = math.ceil(hi / tick - 1e-9) * tick if hi > 0 else 0.0
     rec.segment((0.0, 0.0), (width + 5.0, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
-    rec.vector((0.0, lo / mu - 3.0), (0.0, hi / mu + 8.0), role="construction", layer="diagrams", step=step)
+    rec.vector((0.0, min(lo / mu, v_lo / mu) - 3.0), (0.0, max(hi / mu, v_hi / mu) + 8.0), role="construction",
+               layer="diagrams", step=step)
     pts = [(float(x / mu_phi), float(v / mu)) for x, v in zip(np.r_[t.turn_deg, 360.0], np.r_[values, values[0]])]
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
     numbers = []
@@ -184,14 +215,12 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
                 rec.segment((x, a), (x, b), role="grid", layer="diagrams", step=f"positions of {step}")
         numbers.append(LabelRequest(complex(x, 0.0), str(pos), -1 + -2j if y > 0 else -1 + 2j, 2.5, step=step))
     rec.label((width + 6.0, -1.0), "φ", size=3.5, step=step)
-    rec.label((2.0, hi / mu + 5.0), axis, size=3.5, step=step)
-    tick = _nice_step(hi - lo, 4)
-    v = math.ceil(lo / tick - 1e-9) * tick        # the ticks within the drawn axis only
-    while v <= hi + 1e-9:
+    rec.label((2.0, max(hi / mu, v_hi / mu) + 5.0), axis, size=3.5, step=step)
+    for i in range(round(v_lo / tick), round(v_hi / tick) + 1):
+        v = i * tick
         y = v / mu
         rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
-        rec.label((-2.5, y - 1.2), num(v, lang).replace("-", "−"), size=2.5, anchor="end", step=step)
-        v += tick
+        rec.label((-2.5, y - 1.2), num(round(v, 9), lang).replace("-", "−"), size=2.5, anchor="end", step=step)
     place_labels(rec, numbers)                  # each number beside its line, clear of the curve
     rec.label((0.0, rec.bounds()[1] - 6.0), f"{per_mm} = {num(mu, lang)} {mm_unit}, "
               f"μ_φ = {num(mu_phi, lang)} {unit('deg/mm', lang)}", size=2.5, step=step)
@@ -260,7 +289,7 @@ def hodograph_scale(span: float, size: float) -> float:
     return filling(span, size)
 
 
-def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk") -> Record:
+def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
@@ -278,9 +307,20 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
     rec.segment((x0, 0.0), (x1, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     rec.segment((0.0, y0), (0.0, y1), role="construction", width=AXIS_W, layer="diagrams", step=step)
-    for idx, z in _pieces(t, f):
+    pieces = _pieces(t, f)
+    for idx, z in pieces:
         rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
                 layer="diagrams", step=step)
+    jumps = 0
+    if len(pieces) > 1:
+        # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
+        # dashed line, so that the gap reads as the jump (the caption says so), not as a curve left open
+        for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
+            a, b = z[-1] / mu_r, z_next[0] / mu_r
+            if abs(b - a) > 0.5:
+                jumps += 1
+                rec.segment((float(a.real), float(a.imag)), (float(b.real), float(b.imag)), role="projection",
+                            layer="diagrams", step=f"{step}: the jump")
     numbers = []
     for first, last, w in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()]):
         text = str(first) if first == last else f"{first}–{last}"
@@ -290,8 +330,12 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
                                     # other numbers (on a leader where its point is crowded)
-    rec.label((x0, rec.bounds()[1] - 6.0), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
+    y = rec.bounds()[1] - 6.0
+    rec.label((x0, y), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
+    if jumps and say_jump:      # said once, under the first hodograph that jumps
+        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
+        rec.label((x0, y - 5.0), word("fs jump", lang, what=", ".join(ext)), size=2.5, step=step)
     return rec
 
 
@@ -325,6 +369,13 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     st = t.ks.st
     path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
+    # a slide's path s with μ_s; a rocking output's angle φ_3 from position 0 (the kinematics sheet's
+    # name for the rocker's angle) with μ_φ
+    if st.output.kind == "slide":
+        sym, what, mu_sym = "s", f"s_{{{st.output.name}}}", "μ_s"
+    else:
+        sym = what = f"φ_{{{st.mech.links[st.output.name].number}}}"
+        mu_sym = "μ_φ"
     force = np.abs(sum(ld.couple for ld in ext)) if couple else np.abs(sum(ld.force for ld in ext))
     f_unit, f_mu = (unit("N·m", lang), "μ_M") if couple else (unit("N", lang), "μ_P")
     work = np.asarray(t.ks.working, dtype=bool)
@@ -372,12 +423,11 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
         rec.segment((xa, low - 4.0), (xb, low - 4.0), role="construction", layer="diagrams", step=step)
         rec.label((0.5 * (xa + xb), low - 8.5), word("fs working" if work[a] else "fs idle", lang), size=2.5,
                   anchor="middle", step=step)
-    rec.label((x_end + 9.0, -1.0), f"s, {dist_unit}", size=3.5, step=step)
+    rec.label((x_end + 9.0, -1.0), f"{sym}, {dist_unit}", size=3.5, step=step)
     rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {f_unit}", size=3.5, step=step)
     rec.label((-2.5, y_end - 1.2), num(top, lang), size=2.5, anchor="end", step=step)
     rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
-    what = f"s_{{{st.output.name}}}" if st.output.kind == "slide" else f"φ_{{{st.mech.links[st.output.name].number}}}"
-    rec.label((0.0, low - 15.0), word("fs path", lang, s=what, u=dist_unit) + f"; μ_s = {num(mu_s, lang)} "
+    rec.label((0.0, low - 15.0), word("fs path", lang, s=what, u=dist_unit) + f"; {mu_sym} = {num(mu_s, lang)} "
               f"{dist_unit}/{unit('mm', lang)}, {f_mu} = {num(mu_p, lang)} {f_unit}/{unit('mm', lang)}", size=2.5,
               step=step)
     return rec
@@ -418,6 +468,8 @@ def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | Non
         out["resistance"] = res
     for key in slider_reactions(t):
         out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
+    said = False
     for key in t.revolute:
-        out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang)
+        rec = out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang, say_jump=not said)
+        said = said or any(p.step.endswith("the jump") for p in rec.items)
     return out

@@ -295,7 +295,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         for p in lk.joints:
             z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
-            if p in mech.frame:
+            if p in mech.frame and gp.kind == "mechanism":
+                # the scheme keeps its supports; a group is drawn freed from the frame, the
+                # pivot a circle, its support replaced by the reaction (R03, R01)
                 _support(rec, z, step)
                 supports.append(z)
             if all(n != p for _, n in names):
@@ -484,7 +486,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
-    return lab.done()
+    # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
+    # h_G3 on the loom's rocker) had their names stacked against each other
+    return _apart(rec, lab.asked)
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -697,7 +701,10 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
         labels.append((a + 0.55 * (tip - a), "P_b", side))
     lab = Labeler(rec)
-    lab.place(0j, "p_v", 3.5, -1 + 1j, step)
+    # the pole lettered with the images it is, as the lab does: "p_v, o1, o2" — the fixed pivots
+    # have no velocity, and the couples' forces at o2 act there
+    still = sorted(indexed(name.lower()) for name, z in turned.items() if abs(z) <= 0.1)
+    lab.place(0j, ", ".join(["p_v"] + still), 3.5, -1 + 1j, step)
     placed = set()
     for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
         key = (round(z.real, 1), round(z.imag, 1))
@@ -706,7 +713,8 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
-    lab.done()
+    _apart(rec, lab.asked)        # each label fenced while the rest are placed: near a, s2, b (a plan
+                                  # narrow there) the forces' names stood within their height
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec

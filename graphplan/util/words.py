@@ -196,6 +196,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs reaction": ('Реакція стояка на повзун', 'Reaction of the frame on the slider'),
     "fs resistance": ('Діаграма сили корисного опору за хід', 'Resistance force over the stroke'),
     "fs resistance moment": ('Діаграма моменту корисного опору за хід', 'Resistance moment over the swing'),
+    "fs jump": ("пунктир — стрибок від {what}", "dashed: the jump due to {what}"),
     "fs small": ('Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): ', "Forces drawn under 10 mm (length, share of their plan's largest): "),
     # the kinematics sheet (sheets/kinematics.py)
     "kin positions": ('План положень', 'Position plan'),
