@@ -20,6 +20,7 @@ from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 
 LAYER = "cam"
 TEXT = 3.5
 NUMBER = 2.5          # the division numbers
+NUMBER_OFF = 0.8      # mm a diagram's division number starts right of its division (clear of a bold phase line)
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
 
@@ -183,7 +184,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
         best = None
         for side in ((1, -1) if up else (-1, 1)):
             y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
-            box = Primitive("text", ((x[k] + 0.4, y),), text=str(k), size=NUMBER, anchor="start").ink()
+            box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=str(k), size=NUMBER, anchor="start").ink()
             crossed = hits(box, lines)
             if not crossed:
                 best = (y, box, [])
@@ -200,7 +201,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             at = rec.items.index(q)
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
-        rec.label((x[k] + 0.4, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
+        rec.label((x[k] + NUMBER_OFF, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,

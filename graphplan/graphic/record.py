@@ -301,7 +301,7 @@ def kern(prev: str, c: str, size: float) -> float:
 TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl at half height or more
 BOWLED = "PРF"       # … of them those whose bowl or bar ends at about half the height (0.45 in osifont)
 BOWL_TOP = 0.35      # an index reaching higher than this (of the letter height) would meet that bowl (a capital, b, d: 0.4; з 0.30)
-BOWL_GAP = 0.1       # the gap it keeps from the letter's ink then, of the letter height
+BOWL_GAP = 0.08      # the gap it keeps from the letter's ink then, of the letter height
 
 
 def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
