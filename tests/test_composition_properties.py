@@ -96,8 +96,9 @@ def test_sheets_of_new_mechanisms_have_no_defects(mechanism, kind):
     check()
 
 
-@pytest.mark.parametrize("mechanism", ["crank_slider", "shaper"])
+@pytest.mark.parametrize("mechanism", ["crank_slider", pytest.param("shaper", marks=pytest.mark.slow)])
 def test_sets_of_new_mechanisms_have_no_defects(mechanism):
+    """(The shaper's sets count their dynamics set's sheets too: ~25 s an example, in the slow run.)"""
     @QUICK
     @given(KINDS[mechanism])
     def check(text):
