@@ -149,3 +149,16 @@ def test_the_closed_form_rocker_angle_agrees_with_the_law_of_cosines():
     gamma = math.acos((d ** 2 + L3 ** 2 - L2 ** 2) / (2 * d * L3))     # at O2 between O2→A and O2→B
     base = cmath.phase(a - O2)
     assert min(abs(cmath.phase(cmath.exp(1j * (theta[0] - base - s * gamma)))) for s in (1, -1)) < 1e-12
+
+
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_the_json_balancing_force_is_the_moment_over_the_crank_for_either_sense(sense):
+    """P_b = M_b / l_OA (its moment on the crank in M_b's sense) from the lever and from the exact
+    analysis alike — a clockwise crank's lever gave −4591 N against +4601 N."""
+    from graphplan.report.forces import forces_json
+    turn = 'direction = "cw"\n' if sense < 0 else ""
+    st = scene_study(scene().replace(f"omega = {W1}\n", f"omega = {W1}\n{turn}"))
+    assert math.copysign(1.0, st.mech.omega1) == sense
+    doc = forces_json(construct(st, 130.0, precision=0))
+    assert doc["balancing_force"]["analytic"] == pytest.approx(doc["balancing_moment"]["analytic"] / R, rel=1e-9)
+    assert doc["balancing_force"]["lever"] == pytest.approx(doc["balancing_force"]["analytic"], rel=1e-9)

@@ -60,7 +60,10 @@ def forces_json(fp) -> dict[str, Any]:
         "mu_v": fp.lever.mu_v,
         "balancing_moment": moments,
         "error_pct": {k: _pct(v, a, scale) for k, v in moments.items() if k != "analytic"},
-        "balancing_force": {"lever": fp.lever.balancing_force, "analytic": float(ks.balancing_force[0]),
+        # P_b in the crank's sense, as the analytic one (M_b = P_b·l_OA): the lever's own P_b is signed
+        # by its moment about the pole of the plan turned 90°, opposite for a clockwise crank
+        "balancing_force": {"lever": math.copysign(1.0, st.mech.omega1) * fp.lever.balancing_force,
+                            "analytic": float(ks.balancing_force[0]),
                             "pa_mm": fp.lever.pa_mm},
         "reactions": reactions,
         "inertia": inertia,
