@@ -8,56 +8,7 @@ import pytest
 
 from conftest import scene_study
 from graphplan.drawing.linkshape import rigid_outline
-
-FOURBAR = '''
-[frame.points]
-O1 = [0, 0]
-O2 = [0.30, 0.04]
-
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.08
-rpm = 90
-direction = "ccw"
-points = { S1 = 0.5 }
-
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.32
-points = { S2 = 0.5 }
-
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.22
-points = { S3 = 0.5, D = 1.3 }
-
-[branch]
-B = 1
-
-[positions]
-count = 12
-start = "max"
-accel = [2]
-force_phi_deg = 270
-working_stroke = "slow"
-
-[loads]
-g = 9.81
-mass_per_length = 30
-inertia_factor = 0.1
-
-[[force]]
-point = "D"
-magnitude = 400
-stroke = "working"
-direction = "oppose"
-'''
+from review_scenes import FOURBAR   # the second review's four-bar: P_D at D = 1.3·O2B on the rocker
 
 
 def _points(p) -> list[complex]:
