@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from conftest import scene_study
-from graphplan.drawing.linkshape import rigid_outline
+from graphplan.model.linkshape import rigid_outline
 from review_scenes import FOURBAR   # the second review's four-bar: P_D at D = 1.3·O2B on the rocker
 
 
@@ -89,3 +89,37 @@ def test_outline_of_a_bar_and_a_plate():
     assert tri[0] == tri[-1] and set(tri) == {0j, 10 + 0j, 5 + 6j}
     # a point inside a triangle of joints: the joints' triangle, as before
     assert rigid_outline([0j, 10 + 0j, 5 + 8j], [5 + 2j]) == [0j, 10 + 0j, 5 + 8j, 0j]
+
+
+SIEVE = FOURBAR.replace('points = { S2 = 0.5 }', 'points = { S2 = 0.5, C = [0.6, 0.15] }', 1)
+
+
+def test_a_plates_point_is_found_by_its_similar_triangle_on_both_plans():
+    """A coupler point C off the line AB (a plate): the textbook finds c on the velocity and the
+    acceleration plan by the similarity theorem, Δabc ∼ ΔABC, and draws that triangle — c joined
+    to a and to b (a point read off a bare vector from the pole would not show how it was found).
+    Checked against c placed by hand: c = a + (b − a)·(C − A)/(B − A) in complex numbers."""
+    from graphplan.graphic.plans import build_plans
+    from graphplan.graphic.position_plan import where
+    assert SIEVE != FOURBAR
+    st = scene_study(SIEVE)
+    plans = build_plans(st, precision=0)
+    checked = 0
+    for pos in plans.positions:
+        for plan in (pos.velocity, pos.acceleration):
+            if plan is None:
+                continue
+            a, b, c = (plan.plan_point("AB", n) for n in ("A", "B", "C"))
+            lay = pos.layout
+            A, B, C = (where(plans.scheme, lay, "AB", n) for n in ("A", "B", "C"))
+            if abs(b - a) < 5:          # a near-degenerate figure: nothing to read the triangle by
+                continue
+            assert abs(c - (a + (b - a) * (C - A) / (B - A))) < 1e-6
+            segs = [(complex(*q.points[0]), complex(*q.points[-1])) for q in plan.record.items
+                    if q.kind == "segment"] + [(complex(*q.points[0]), complex(*q.points[-1]))
+                                               for q in plan.record.items if q.kind == "vector"]
+            for end in (a, b):
+                assert any(min(abs(s - c) + abs(e - end), abs(s - end) + abs(e - c)) < 1e-6
+                           for s, e in segs), f"position {pos.key}: c not joined to its link's points"
+            checked += 1
+    assert checked >= 10

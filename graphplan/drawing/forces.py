@@ -10,7 +10,7 @@ import cmath
 import math
 
 from graphplan.drawing.labels import place_labels
-from graphplan.drawing.linkshape import extra_points, rigid_outline
+from graphplan.model.linkshape import extra_points, rigid_outline
 from graphplan.drawing.tables import table
 from graphplan.graphic.record import LabelRequest, Record, arc_head, line_pitch, text_width
 from graphplan.graphic.forceplans import ForcePlans, GForce, GroupPlan

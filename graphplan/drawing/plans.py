@@ -9,7 +9,7 @@ import math
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from graphplan.drawing.linkshape import extra_points, rigid_outline
+from graphplan.model.linkshape import extra_points, rigid_outline
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc

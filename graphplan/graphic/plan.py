@@ -10,6 +10,7 @@ from graphplan.util.words import LANGS, fixed, num, word
 from graphplan.graphic.record import LabelRequest, Record
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.kinematics import Kinematics
+from graphplan.model.linkshape import extra_points, rigid_outline
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.draftsman import cross, crossing_angle, dot, lay_off, line_line, measure, unit
 from graphplan.graphic.position_plan import Image, Layout, Scheme, sub, where
@@ -211,14 +212,17 @@ class Plan:
         return any(min(abs(a - p) + abs(b - q), abs(a - q) + abs(b - p)) < 1e-6 for p, q in self.segments)
 
     def link_figures(self) -> None:
-        """The similar figure of every link on the plan: its joints' plan points joined thin
-        (the line ab on which s2 lies, the triangle of a three-joint link)."""
+        """The similar figure of every link on the plan, drawn thin as the link is drawn on the
+        position plan (``rigid_outline``): the line ab on which s2 lies, extended to a point on the
+        link's extension; the triangle abc of a plate — the similarity theorem's figure, by which c
+        is found (Δabc ∼ ΔABC)."""
         sc = self.sc
         for name, link in sc.mech.links.items():
             if name == sc.mech.crank.link or name not in self.images:
                 continue
-            pts = [self.plan_point(name, j) for j in link.joints]
-            pairs = list(zip(pts, pts[1:])) + ([(pts[-1], pts[0])] if len(pts) > 2 else [])
+            outline = rigid_outline([self.plan_point(name, j) for j in link.joints],
+                                    [self.plan_point(name, p) for p in extra_points(link)])
+            pairs = list(zip(outline, outline[1:]))
             for a, b in pairs:
                 if abs(b - a) > 0.3 and not self.drawn(a, b):
                     self.record.segment((a.real, a.imag), (b.real, b.imag), role="construction",
