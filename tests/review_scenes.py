@@ -378,3 +378,68 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+SIEVE = '''# A four-bar driving a sieve: the coupler carries the sieve's point C off the line AB (my own, lead's review).
+title = "Шарнірний чотириланковий механізм привода сита"
+title_en = "Four-bar linkage of a sieve drive"
+designation = "ТММ.КП.11.000"
+lang = "uk"
+
+[sheet]
+student = "Лід"
+teacher = "Викладач"
+group = "МБ-42"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.36, -0.12]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.09
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.34
+points = { S2 = 0.5, C = [0.6, 0.15] }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [3]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+synchronous_rpm = 1500
+'''

@@ -9,6 +9,7 @@ import pytest
 from conftest import scene_study
 from graphplan.model.linkshape import rigid_outline
 from review_scenes import FOURBAR   # the second review's four-bar: P_D at D = 1.3·O2B on the rocker
+from review_scenes import SIEVE     # the lead's review: a cw crank, the coupler a plate ABC, P_C at C
 
 
 def _points(p) -> list[complex]:
@@ -91,9 +92,6 @@ def test_outline_of_a_bar_and_a_plate():
     assert rigid_outline([0j, 10 + 0j, 5 + 8j], [5 + 2j]) == [0j, 10 + 0j, 5 + 8j, 0j]
 
 
-SIEVE = FOURBAR.replace('points = { S2 = 0.5 }', 'points = { S2 = 0.5, C = [0.6, 0.15] }', 1)
-
-
 def test_a_plates_point_is_found_by_its_similar_triangle_on_both_plans():
     """A coupler point C off the line AB (a plate): the textbook finds c on the velocity and the
     acceleration plan by the similarity theorem, Δabc ∼ ΔABC, and draws that triangle — c joined
@@ -101,7 +99,6 @@ def test_a_plates_point_is_found_by_its_similar_triangle_on_both_plans():
     Checked against c placed by hand: c = a + (b − a)·(C − A)/(B − A) in complex numbers."""
     from graphplan.graphic.plans import build_plans
     from graphplan.graphic.position_plan import where
-    assert SIEVE != FOURBAR
     st = scene_study(SIEVE)
     plans = build_plans(st, precision=0)
     checked = 0
@@ -123,3 +120,19 @@ def test_a_plates_point_is_found_by_its_similar_triangle_on_both_plans():
                            for s, e in segs), f"position {pos.key}: c not joined to its link's points"
             checked += 1
     assert checked >= 10
+
+
+def test_a_grown_crank_group_is_drawn_as_large_as_the_composition_allowed():
+    """The sieve's force sheet (A1): the crank group, drawn at a finer μl of its own, took its size
+    from the family's model — arrows longer than its 23 mm crank measured as lettering, so its size
+    seemed not to grow — and went to 1:0.5, 152 mm where 64 mm was allowed, pushing the bottom row
+    off the sheet. Every drawing inside the frame and its box, nothing overprinted (``defects``)."""
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.forces import build_forces_sheet, group_scales, plan
+    from graphplan.sheets.form import form
+    st = scene_study(SIEVE)
+    p, _, _ = plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    own = dict(group_scales(p.mu))
+    assert own.get("I(0-1)", p.mu["groups"]) < p.mu["groups"]        # still drawn larger than the family
+    sheet = build_forces_sheet(st, form("A1"), SheetOptions(precision=0.5, lang="uk", sheet="forces"))
+    assert defects(sheet) == []

@@ -162,6 +162,23 @@ class ForceDrafter:
             self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
             group_mu=dict(group_mu), group_mu_F=dict(plan_mu)))
 
+    def group_size(self, mu: dict[str, float], i: int, mu_l: float, caption: tuple[float, float]) -> tuple[float, float]:
+        """Group i drawn (lettered, both languages) at its own μl ``mu_l``, the others as ``mu``:
+        its cell with the caption. Drawn, not scaled from the family's model: a crank group whose
+        force arrows outreach its short crank keeps its size while μl shrinks, until the crank
+        outgrows them (the sieve's crank at 1:0.5 was taken for 64 mm, drawn 152 mm, over the frame)."""
+        from graphplan.drawing import forces as forcedraw
+        from graphplan.util.words import LANGS
+
+        def make():
+            base = self.groups_fp(mu)
+            label = base.groups[i].label
+            own = tuple(sorted({**dict(group_scales(mu)), label: mu_l}.items()))
+            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], own, plan_scales(mu))
+            wh = [_wh(forcedraw.group_record(fp, fp.groups[i], lang)) for lang in LANGS]
+            return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
+        return self._once(("group size", i, mu_l, mu["groups"], mu["forces"], mu["lever"], plan_scales(mu)), make)
+
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
         plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
@@ -763,7 +780,7 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             continue
         best, s = None, finer(base)
         while s is not None and e / s <= largest / base + 1e-9:
-            w, h = fam.size(s, i)
+            w, h = dr.group_size(mu, i, s, fam.caption)
             trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
                                                                        w + GROW_MARGIN, h + GROW_MARGIN),
                                           *leaves["groups"][i + 1:]]}
@@ -784,7 +801,8 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
     if own:
         fam = nat.families["groups"]
         fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
-        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(own[gp.label], i)))
+        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in dr.group_size(mu, i, own[gp.label],
+                                                                                    fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
     return leaves
@@ -860,7 +878,7 @@ def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     leaves = _leaves(nat, mu)
     for i, gp in enumerate(fp.groups):      # the groups as _grown_groups drew them
         if GROUP + gp.label in mu:
-            w, h = nat.families["groups"].size(mu[GROUP + gp.label], i)
+            w, h = dr.group_size(mu, i, mu[GROUP + gp.label], nat.families["groups"].caption)
             leaves["groups"][i] = Leaf(leaves["groups"][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
     for i, gp in enumerate(fp.groups):
         e = longest[gp.label]
