@@ -73,15 +73,22 @@ force_phi_deg = 200
 """ + _loads(kg_per_m, force, "B") + _dynamics(delta, 1500))
 
 
-def four_bar(r: float, d: float, coupler: float, rocker: float, rpm: float, kg_per_m: float) -> str:
-    """A crank-rocker O1A–AB–O2B, O1O2 = d on the x axis (lengths in m; the caller keeps Grashof's
-    condition so that the crank turns fully)."""
+def four_bar(r: float, d: float, coupler: float, rocker: float, rpm: float, kg_per_m: float,
+             beta_deg: float = 0.0, cw: bool = False, plate: tuple[float, float] | None = None,
+             force: float | None = None) -> str:
+    """A crank-rocker O1A–AB–O2B, O1O2 = d at β to the x axis (lengths in m; the caller keeps
+    Grashof's condition so that the crank turns fully); the crank clockwise where ``cw``; the coupler
+    a plate ABC where ``plate`` gives C = (along AB, across) in shares of AB, loaded at C by ``force``
+    on the working stroke."""
+    import math
+    b = math.radians(beta_deg)
+    points = "{ S2 = 0.5 }" if plate is None else f"{{ S2 = 0.5, C = [{plate[0]:.4g}, {plate[1]:.4g}] }}"
     return (SHEET.format(title="Шарнірний чотириланковий механізм", title_en="Crank-rocker four-bar linkage",
                          code="03")
             + f"""
 [frame.points]
 O1 = [0, 0]
-O2 = [{d:.6g}, 0]
+O2 = [{d * math.cos(b):.6g}, {d * math.sin(b):.6g}]
 
 [crank]
 name = "O1A"
@@ -89,13 +96,14 @@ pivot = "O1"
 pin = "A"
 length = {r:.6g}
 rpm = {rpm:.6g}
+direction = "{'cw' if cw else 'ccw'}"
 
 [[link]]
 name = "AB"
 number = 2
 joints = ["A", "B"]
 length = {coupler:.6g}
-points = {{ S2 = 0.5 }}
+points = {points}
 
 [[link]]
 name = "O2B"
@@ -111,7 +119,7 @@ B = 1
 count = 12
 start = "max"
 accel = [1]
-""" + _loads(kg_per_m, None, ""))
+""" + _loads(kg_per_m, force if plate is not None else None, "C"))
 
 
 def shaper(K: float, stroke: float, centre: float, height: float, lam: float, rpm: float, kg_per_m: float,

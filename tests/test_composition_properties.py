@@ -37,7 +37,8 @@ def crank_sliders(draw):
 
 @st.composite
 def four_bars(draw):
-    """A Grashof crank-rocker with 5 % to spare on both assembly conditions."""
+    """A Grashof crank-rocker with 5 % to spare on both assembly conditions, O2 above or below O1's
+    level, either sense, the coupler a plate ABC loaded at C or a bar."""
     r = draw(st.floats(0.02, 0.15))
     d = r * draw(st.floats(2.2, 5.0))
     rocker = d * draw(st.floats(0.5, 1.2))
@@ -45,7 +46,10 @@ def four_bars(draw):
     lo, hi = max(d + r - rocker, rocker - (d - r)) + m, rocker + (d - r) - m
     assume(hi > lo)
     coupler = lo + (hi - lo) * draw(st.floats(0.0, 1.0))
-    return four_bar(r, d, coupler, rocker, draw(RPM), draw(KG_PER_M))
+    plate = draw(st.none() | st.tuples(st.floats(0.2, 1.2), st.sampled_from([-1.0, 1.0]), st.floats(0.1, 0.4)))
+    return four_bar(r, d, coupler, rocker, draw(RPM), draw(KG_PER_M), draw(st.floats(-25.0, 25.0)),
+                    draw(st.booleans()), None if plate is None else (plate[0], plate[1] * plate[2]),
+                    draw(FORCE))
 
 
 @st.composite
