@@ -152,14 +152,30 @@ def _grids(n: int) -> list[int]:
 
 
 
+DIAGRAMS_SHRUNK = (1.0, 0.8, 0.64, 0.5)   # the diagrams' size factors a sheet tries, largest first
+
+
 def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
-    """The best one-sheet composition: for each lettering of the tables, each shape and each order
-    of growth, the scales by ``choose_levels``; the one whose plans are drawn largest (the product
-    of the principal segments), 3.5 mm tables where they cost no drawing a step."""
+    """The best one-sheet composition (``one_sheet_at``) with the diagrams at their full size, else
+    at the smaller factor of ``DIAGRAMS_SHRUNK`` whose plans come out largest: a six-bar press's twelve
+    tall velocity plans, 347 × 268 mm of diagrams and four tables hold no A1 sheet at full size,
+    and A1 is one sheet. None where none holds even then."""
+    full = one_sheet_at(dr, nat, f, DIAGRAMS_SHRUNK[0])
+    if full is not None or f.name not in ONE_SHEET:       # a smaller format makes a set instead
+        return full[1] if full is not None else None
+    shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k)) is not None]
+    return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
+
+
+def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float) -> tuple[tuple, Plan] | None:
+    """The best one-sheet composition with the diagrams at size factor ``k_diagrams``: for each
+    lettering of the tables, each shape and each order of growth, the scales by ``choose_levels``;
+    the one whose plans are drawn largest (the product of the principal segments), 3.5 mm tables
+    where they cost no drawing a step — with its score."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     has_a = nat.count["acceleration"] > 0
-    D = Leaf("diagrams", *diagrams_size(dr, nat, 1.0))
+    D = Leaf("diagrams", *diagrams_size(dr, nat, k_diagrams))
     nv, na = nat.count["velocity"], nat.count["acceleration"]
     best = None
     for factor in (TABLES, 1.0):
@@ -204,8 +220,8 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
             mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
             if mu is None:
                 continue
-            k_d, D_k = 1.0, D
-            if not legible(nat, mu):
+            k_d, D_k = k_diagrams, D
+            if not legible(nat, mu) and k_diagrams == 1.0:
                 found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
                 if found is not None:
                     mu, k_d = found
@@ -218,7 +234,7 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
             cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
             if best is None or cand[0] > best[0]:
                 best = cand
-    return best[1] if best else None
+    return best
 
 
 def legible_where_room(dr: Drafter, nat: Natural, mu: dict[str, float], fits
