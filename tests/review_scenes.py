@@ -443,3 +443,28 @@ direction = "oppose"
 delta = 0.04
 synchronous_rpm = 1500
 '''
+
+
+CAM_KN = '''title = "Кулачковий механізм з поступальним загостреним штовхачем"
+title_en = "Disc cam with a translating knife-edge follower"
+designation = "ТММ.КМ.00.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = -0.006
+roller_radius = 0
+phases_deg = { rise = 100, dwell_far = 40, return = 140, dwell_near = 80 }
+laws = { rise = "cycloidal", return = "trapezoidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+omega = 12
+direction = "cw"
+divisions = 10
+'''

@@ -199,6 +199,9 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             (ax, ay), (bx, by) = q.points
             lo, hi = sorted((ax, bx))
             at = rec.items.index(q)
+            if abs(ay - y0) <= NUMBER + 2.0:     # a near-zero mean carried along the number row: it
+                del rec.items[at]                # would thread the numbers ("0 _ 1 _ 2"), and reads
+                continue                         # as the axis itself; its ray from P still shows it
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
         rec.label((x[k] + NUMBER_OFF, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
@@ -403,7 +406,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     rec.segment((0.0, 0.0), _pt(r0 * along), role="construction", layer=LAYER, step="R0")
     labels.append(LabelRequest(0.55 * r0 * along, "R_0", toward=along * 1j, size=TEXT))
     _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
-    labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT))
+    labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     for k in numbered(len(pts), 2 * math.pi * outer / max(len(pts), 1)):
         tip = rays[k] if not cam.rocking else feet[k]
         if cam.rocking and k == 0:
