@@ -468,3 +468,79 @@ omega = 12
 direction = "cw"
 divisions = 10
 '''
+
+
+PRESS_EN = '''title = "Дезаксіальний кривошипно-повзунний механізм преса"
+title_en = "Offset crank-slider mechanism of a press"
+designation = "ТММ.КП.15.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP"
+
+[params]
+r = 0.09
+l = 0.24
+e = 0.06
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+ram = { through = ["e", 0], angle_deg = -90, title_en = "of the ram", title_uk = "повзуна" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 90
+direction = "cw"
+mass = 8
+inertia = 0.06
+points = { S1 = 0.25 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+mass = 6
+inertia = 0.035
+points = { S2 = 0.4 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "ram"
+mass = 25
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "min"
+accel = [2, 7]
+force_phi_deg = 150
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 8000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.11, 0], [0.15, 0.7], [0.17, 1], [0.19, 1]]
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
