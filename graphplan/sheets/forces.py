@@ -684,11 +684,18 @@ def _set(nat: Natural, f: Form) -> Plan:
         grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
                         lambda name, m: nat.families[name].rel(m) <= SET_LARGEST.get(name, 1.25) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
-        if best is None or count < best[0]:
+        if best is None or count < best[0] and (not packed or _no_smaller(nat, mu, best[1].mu)):
             best = (count, Plan(mu, factor, "set", 1, 1, count, packed=packed))
     if best is None:
         raise GraphplanError(f"the force drawings do not fit a {f.name} sheet; choose a larger --format")
     return best[1]
+
+
+def _no_smaller(nat: Natural, mu: dict[str, float], than: dict[str, float]) -> bool:
+    """Whether the scheme and the groups at ``mu`` are drawn no smaller than at ``than``: a packed
+    set takes fewer sheets only so (the coulisse's A2 set packed onto 3 sheets drew its scheme at
+    1:4 again, its crank end crowded, where 4 sheets hold it at 1:2)."""
+    return all(nat.families[n].rel(mu[n]) >= nat.families[n].rel(than[n]) * (1 - 1e-9) for n in ("scheme", "groups"))
 
 
 def _checked(dr: ForceDrafter, nat: Natural, p: Plan) -> bool:
