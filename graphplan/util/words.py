@@ -594,9 +594,9 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
                          "The ordinates, mm, carry the value's sign along the guide (the diagrams are drawn mirrored)"),
     "kin group": ("гр.\u00a0{g}", "group\u00a0{g}"),
-    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S і M^Φ = −I_S·ε діють у планах сил "
+    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S (напрям проти a_S) і M^Φ = −I_S·ε діють у планах сил "
                         "і на важелі; ε, M^Φ: + проти год. стрілки",
-                        "a_S, ε from the exact analysis; the same Φ = m·a_S and M^Φ = −I_S·ε act on the force "
+                        "a_S, ε from the exact analysis; the same Φ = m·a_S (directed against a_S) and M^Φ = −I_S·ε act on the force "
                         "plans and the lever; ε, M^Φ: + counter-clockwise"),
     "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}°)",
                     "φ = {turn}° from position 0 (crank angle {phi}°)"),
