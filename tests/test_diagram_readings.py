@@ -103,3 +103,27 @@ def test_a_rocker_is_drawn_with_the_tables_sign(rocker):
     text = " ".join(notes_lines(rocker, plans, d, "uk", 0.5))
     assert "φ_{3} (кут ланки O2B від положення 0), ω_{3}, ε_{3}" in text
     assert "s, v, a" not in text and "−s" not in text
+
+
+def test_the_terminal_judges_a_reading_near_a_zero_as_the_sheet_does():
+    """The fourth review's item 14: `diagrams` printed a at position 4 as −948,96 % off (0,384 read
+    where the exact is −0,045) while the sheet's Table 4 printed 3,57 % of |max|. The JSON positions
+    now carry error_pct_judged — of the exact value where |exact| ≥ 10 % of the cycle's |max|, else
+    of |max| — and the text table prints it; checked against the rule worked out here."""
+    import numpy as np
+
+    from conftest import ROOT
+    from graphplan import api
+    doc = api.diagrams(str(ROOT / "examples" / "crank_slider.toml")).to_json()
+    for key in ("v", "a"):
+        cells = [p[key] for p in doc["positions"]]
+        big = max(abs(c["analytic"]) for c in cells)
+        near = 0
+        for c in cells:
+            if abs(c["analytic"]) >= 0.1 * big:
+                assert c["error_pct_judged"] == pytest.approx(100 * (c["value"] - c["analytic"]) / c["analytic"])
+            else:
+                near += 1
+                assert c["error_pct_judged"] == pytest.approx(100 * (c["value"] - c["analytic"]) / big, abs=0.02)
+        assert np.isfinite([c["error_pct_judged"] for c in cells]).all()
+        assert near >= 1 or key == "a"        # a dead centre: v ≈ 0 there

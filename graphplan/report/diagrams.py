@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphplan.drawing.diagrams import fmt, method_words, scale_lines, scale_symbols, units  # noqa: F401
+from graphplan.graphic.diagrams import judged_pct
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, num, pct, unit, word
 
@@ -22,9 +23,14 @@ def _num(v) -> float | None:
     return v if math.isfinite(v) else None
 
 
-def _entry(values: dict, pct: dict, truth: dict, key: str, k: int, mm: float) -> dict[str, Any]:
-    return {"mm": float(mm), "value": float(values[key][k]), "analytic": float(truth[key][k]),
-            "error_pct": _num(pct[key][k])}
+def _entry(values: dict, pct: dict, truth: dict, key: str, k: int, mm: float, big: float | None = None) -> dict[str, Any]:
+    """A reading: mm, value, analytic, error_pct (of the analytic value) and, where ``big`` (the
+    cycle's maximum) is given, error_pct_judged as the sheet's Table 4 prints it (``judged_pct``)."""
+    out = {"mm": float(mm), "value": float(values[key][k]), "analytic": float(truth[key][k]),
+           "error_pct": _num(pct[key][k])}
+    if big is not None:
+        out["error_pct_judged"] = float(judged_pct(values[key][k], truth[key][k], big))
+    return out
 
 
 def diagrams_json(d: Diagrams) -> dict[str, Any]:
@@ -42,7 +48,9 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     positions = []
     for k in range(n):
         positions.append({"index": k, "position": d.position[k]} | at(d.phi[k], d.t[k]) | {
-            "s": cell("s", k, r.s[k]), "v": cell("v_at", k, r.v_at[k]), "a": cell("a_at", k, r.a_at[k])})
+            "s": _entry(values, pct, truth, "s", k, r.s[k], d.maxima["s"]),
+            "v": _entry(values, pct, truth, "v_at", k, r.v_at[k], d.maxima["v"]),
+            "a": _entry(values, pct, truth, "a_at", k, r.a_at[k], d.maxima["a"])})
     ex = d.exact
     integration = {
         "v_from_a": _integral(r.v_int, r.v_at, d.maxima["v"] / d.mu_v),
@@ -231,21 +239,26 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
         """5 significant digits; round-off below 1e-9 of the cycle's maximum shows as 0."""
         return num(0.0 if abs(x) <= 1e-9 * d.maxima[key] else x + 0.0, lang, 5)
 
+    judged = {key: judged_pct(vals[key], d.truth[key], d.maxima[key[0]]) for key in ("v_at", "a_at")}
+
     def row_at(k: int) -> list[str]:
+        """A division ordinate's reading, δ judged as the sheet's Table 4 judges it (``judged_pct``:
+        of |max| where |exact| < 10 % of it — a reading near a zero is not 949 % off)."""
         r = d.drawn
         pos = d.position[k]
         f1 = lambda v: fixed(v, lang, 1)  # noqa: E731
         return [str(pos if pos is not None else f"({k})"), fixed(d.phi[k], lang, 2), turn(d.phi[k]), f1(r.s[k]),
                 g(vals['s'][k], "s"), g(d.truth['s'][k], "s"),
                 f1(r.v_at[k]), g(vals['v_at'][k], "v"), g(d.truth['v_at'][k], "v"),
-                _pct(d.errors_pct('v_at')[k], lang),
+                _pct(judged['v_at'][k], lang),
                 f1(r.a_at[k]), g(vals['a_at'][k], "a"), g(d.truth['a_at'][k], "a"),
-                _pct(d.errors_pct('a_at')[k], lang)]
+                _pct(judged['a_at'][k], lang)]
 
     mm = unit("mm", lang)
     head = [w("no"), "φ, °", w("turn col"), f"{s_}, {mm}", f"{s_}, {us}", w("exact"), f"{v_}, {mm}", f"{v_}, {uv}", w("exact"),
             w("error pct"), f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")]
     block(w("at ordinates"), head, [row_at(k) for k in range(d.divisions)])
+    lines.append(w("judged note"))
     chosen = [k for k in range(d.divisions) if d.position[k] in d.chosen]
     if chosen:
         block(w("chosen"), head, [row_at(k) for k in chosen])
