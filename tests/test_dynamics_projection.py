@@ -100,3 +100,26 @@ def test_the_projections_carry_the_constructions_ordinates(sheet):
     for j in range(f.divisions):
         assert dT[j][1] - dT[0][1] == pytest.approx(f.dT[j] - f.dT[0], abs=1e-6)
         assert inert[j][0] - axis[0][0] == pytest.approx(f.I[j], abs=1e-6)
+
+
+def test_the_phi_of_delta_t_stands_at_its_arrow_clear_of_the_projections():
+    """The fifth review's item 4: on its desaxial press (24 divisions, the ΔT projections a dense
+    band) the φ of ΔT(φ) went on a 28 mm leader into the dashes, overprinted. A draftsman letters φ
+    at the axis' arrow and breaks the thin projections under it: within 8 mm of the tip, no line
+    through its box."""
+    from shapely.geometry import LineString, box
+
+    from conftest import scene_study
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    from review_scenes import PRESS_EN
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="en", sheet="dynamics")
+    out = BUILDERS["dynamics"](scene_study(PRESS_EN), form("A1"), args)
+    rec = next(p.record for p in out.placed
+               if any(q.step == "axes ΔT" and q.kind == "text" and q.text == "φ" for q in p.record.items))
+    phi = next(q for q in rec.items if q.step == "axes ΔT" and q.kind == "text" and q.text == "φ")
+    tip = max((q.points[-1] for q in rec.items if q.step == "axes ΔT" and q.kind == "vector"), key=lambda p: p[0])
+    b = box(*phi.ink())                            # the letter's ink (its box reaches the axis' line)
+    assert b.distance(box(tip[0], tip[1], tip[0], tip[1])) < 8.0
+    lines = [q for q in rec.items if q.kind in ("segment", "polyline", "vector") and len(q.points) >= 2]
+    assert not [q.step for q in lines if LineString(q.points).intersects(b)]

@@ -292,7 +292,8 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
         rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
                     step=f"projection of ΔT at {j}")
     _numbers(rec, row)
-    return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT")],
+    return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
+                                           breaks=True)],   # at its arrow, the projections broken under it
                         layer=LAYER)
 
 
