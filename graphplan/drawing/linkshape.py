@@ -16,11 +16,15 @@ def extra_points(link: Link) -> list[str]:
     return [p for p in link.local if p not in link.joints and p != link.com]
 
 
-def _hull(points: list[complex]) -> list[complex]:
-    """The convex hull, counter-clockwise (Andrew's monotone chain)."""
-    pts = sorted(set((round(z.real, 9), round(z.imag, 9)) for z in points))
+def _hull(points: list[complex]) -> list[int]:
+    """The convex hull, counter-clockwise (Andrew's monotone chain), as indices into ``points``
+    (of coincident points the first)."""
+    first: dict[tuple[float, float], int] = {}
+    for k, z in enumerate(points):
+        first.setdefault((round(z.real, 9), round(z.imag, 9)), k)
+    pts = sorted(first)
     if len(pts) <= 2:
-        return [complex(*p) for p in pts]
+        return [first[p] for p in pts]
 
     def cross(o, a, b) -> float:
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
@@ -35,16 +39,18 @@ def _hull(points: list[complex]) -> list[complex]:
         while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
             upper.pop()
         upper.append(p)
-    return [complex(*p) for p in lower[:-1] + upper[:-1]]
+    return [first[p] for p in lower[:-1] + upper[:-1]]
 
 
-def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]:
-    """One polyline (mm) drawing a link through its joints and its other points. Two joints and
-    every point on their line: the bar between the two outermost points. Three or more joints and
-    no point outside their polygon: the polygon in the joints' order (closed). Otherwise the
-    closed outline around all the points (a rigid plate)."""
+def outline_order(joints: list[complex], extras: list[complex]) -> list[int]:
+    """The order in which a link's outline runs through its points, as indices into
+    ``joints + extras`` (a closed outline repeats its first index at the end). Two joints and every
+    point on their line: the bar between the two outermost points. Three or more joints and no point
+    outside their polygon: the polygon in the joints' order. Otherwise the outline around all the
+    points (a rigid plate). A rigid motion keeps the order, so one position gives it for the turn
+    (the explorer draws every angle from it: the sheets' shape, not a second one)."""
     if len(joints) < 2:
-        return list(joints)
+        return list(range(len(joints)))
     a, b = joints[0], joints[1]
     d = b - a
     if abs(d) < 1e-9:
@@ -52,13 +58,30 @@ def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]
     u = d / abs(d)
     every = joints + extras
     if all(abs(((z - a) * u.conjugate()).imag) <= ON_LINE_MM for z in every):
-        ordered = sorted(every, key=lambda z: ((z - a) * u.conjugate()).real)
-        return [ordered[0], ordered[-1]]
-    polygon = joints + [joints[0]]
+        along = sorted(range(len(every)), key=lambda k: ((every[k] - a) * u.conjugate()).real)
+        return [along[0], along[-1]]
     if len(joints) >= 3 and all(_inside(z, joints) for z in extras):
-        return polygon
+        return list(range(len(joints))) + [0]
     hull = _hull(every)
     return hull + [hull[0]]
+
+
+def outline_names(link: Link, pts: dict[str, complex]) -> list[str]:
+    """The names of the points a link's outline runs through, in order (``outline_order`` over its
+    joints and its ``extra_points`` drawn in ``pts``): ["O2", "D"] for the rocker O2–B–D, ["A", "B",
+    "E", "A"] for a coupler plate ABE."""
+    joints = list(link.joints)
+    extras = [p for p in extra_points(link) if p in pts]
+    names = joints + extras
+    return [names[k] for k in outline_order([pts[p] for p in joints], [pts[p] for p in extras])]
+
+
+def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]:
+    """One polyline (mm) drawing a link through its joints and its other points, in the order of
+    ``outline_order``: the bar between its outermost points, the joints' polygon, or the closed
+    outline around all its points (a rigid plate)."""
+    every = joints + extras
+    return [every[k] for k in outline_order(joints, extras)]
 
 
 def _inside(z: complex, polygon: list[complex]) -> bool:

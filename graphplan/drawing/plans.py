@@ -9,7 +9,7 @@ import math
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from graphplan.drawing.linkshape import extra_points, rigid_outline
+from graphplan.drawing.linkshape import extra_points, outline_names
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -66,7 +66,7 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
             continue
         # one rigid link through all its points: the rocker O2–B–D to D, a plate round E off its line
-        shape = rigid_outline([pts[p] for p in joints], [pts[p] for p in extra_points(link) if p in pts])
+        shape = [pts[p] for p in outline_names(link, pts)]
         for p, q in zip(shape, shape[1:]):
             rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
     for name, link in mech.links.items():

@@ -119,8 +119,14 @@ def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
 
 def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     """What the page needs to draw the mechanism: frame points, links (bars, blocks, slotted
-    links), guides on the frame, the trajectories worth drawing."""
+    links), guides on the frame, the trajectories worth drawing. Each link's ``outline`` is the
+    sheets' own (drawing.linkshape: the bar to its outermost point, a plate round a point off its
+    joints' line) as the names of the points it runs through, taken at position 0 (a rigid motion
+    keeps it), and ``points`` its named points beyond the joints (D, E), drawn and lettered."""
+    from graphplan.drawing.linkshape import extra_points, outline_names
+    from graphplan.drawing.plans import joints_at
     mech = st.mech
+    at0 = joints_at(plans.scheme, plans.positions[0].layout)
     carriers: dict[str, list[str]] = {}
     for name, link in mech.links.items():
         if link.slides_on is not None:
@@ -129,7 +135,9 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     for name, link in mech.links.items():
         links.append({"name": name, "number": link.number, "joints": list(link.joints),
                       "block": next(iter(link.local)) if link.slides_on is not None and len(link.joints) <= 1 else None,
-                      "slot": carriers.get(name, []) if name != FRAME else []})
+                      "slot": carriers.get(name, []) if name != FRAME else [],
+                      "outline": outline_names(link, at0) if len(link.joints) >= 2 else [],
+                      "points": [p for p in extra_points(link) if p in at0 and p not in mech.frame]})
     guides = [{"point": next(iter(mech.links[s].local)),
                "angle": math.degrees(g.angle),
                "through": [mm(g.through.real / plans.mu_l), mm(g.through.imag / plans.mu_l)]}

@@ -296,6 +296,8 @@
   function placeLabels(g, labels, segs, px, boxes) {
     // labels: {at:[x,y], text, cls, prefer:[dx,dy]}; segs: [[a,b]] in drawing units; boxes: taken boxes
     const size = LETTER * px, taken = boxes || [];
+    const vb = g.ownerSVGElement && g.ownerSVGElement.viewBox.baseVal;       // the view: a letter kept inside it
+    const view = vb && vb.width ? [vb.x, -(vb.y + vb.height), vb.x + vb.width, -vb.y] : null;
     labels.forEach((lb) => {
       const t = el("text", { x: 0, y: 0, class: "lbl " + (lb.cls || "") }, g);
       svgMarkup(t, lb.text, size);
@@ -312,6 +314,7 @@
           let cost = rank + (far > 1 ? 12 : 0);
           taken.forEach((b) => { if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) cost += 1000; });
           segs.forEach((s) => { if (clipHits(s[0], s[1], box)) cost += 100; });
+          if (view && (box[0] < view[0] || box[1] < view[1] || box[2] > view[2] || box[3] > view[3])) cost += 500;
           if (!best || cost < best.cost) best = { cost: cost, box: box };
         }
       });
@@ -410,10 +413,10 @@
         L.slot.forEach((s) => { const p = at(s, i), t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]; lo = Math.min(lo, t - 6); hi = Math.max(hi, t + 6); });
         seg([a[0] + lo * u[0], a[1] + lo * u[1]], [a[0] + hi * u[0], a[1] + hi * u[1]], "link");
       }
-      if (pts.length >= 2) {
-        poly(g, pts, "link", pts.length > 2);
-        for (let k = 0; k + 1 < pts.length; k++) segs.push([pts[k], pts[k + 1]]);
-        if (pts.length > 2) segs.push([pts[pts.length - 1], pts[0]]);
+      if (pts.length >= 2) {           // the sheets' outline (drawing.linkshape): the bar to D, the plate round E
+        const shape = (L.outline && L.outline.length >= 2 ? L.outline : L.joints).map((j) => at(j, i));
+        poly(g, shape, "link", false);
+        for (let k = 0; k + 1 < shape.length; k++) segs.push([shape[k], shape[k + 1]]);
       }
       if (L.block) {
         const c = at(L.block, i), th = G.links[L.name].theta[i] * Math.PI / 180;
@@ -433,6 +436,14 @@
       el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(r), class: "joint" }, g);
       boxes.push([p[0] - r, p[1] - r, p[0] + r, p[1] + r]);
       labels.unshift({ at: p, text: label(j) });
+    }));
+    S.links.forEach((L) => (L.points || []).forEach((n) => {      // a link's own points beyond its joints: D, E
+      if (seen[n]) return;
+      seen[n] = 1;
+      const p = at(n, i), r = Math.max(0.7, 2.5 * px);
+      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(r), class: "point", "data-point": n }, g);
+      boxes.push([p[0] - r, p[1] - r, p[0] + r, p[1] + r]);
+      labels.push({ at: p, text: label(n) });
     }));
     Object.keys(G.points).forEach((n) => {
       if (seen[n] || !/^S/.test(n)) return;
@@ -564,8 +575,9 @@
     const px = z.px(), g = el("g", {}, svg), segs = [];
     S.links.forEach((L) => {
       if (L.name === S.crank.link || L.joints.length < 2) return;
-      const fig = L.joints.map((j) => imageOf(kind, j, i));
-      poly(g, fig, "figure", L.joints.length > 2);
+      // the link's image, similar to it: the same outline through the images of its points
+      const fig = (L.outline && L.outline.length >= 2 ? L.outline : L.joints).map((j) => imageOf(kind, j, i));
+      poly(g, fig, "figure", false);
     });
     Object.keys(G.points).forEach((n) => { const p = planVector(kind, n, i); arrow(g, [0, 0], p, "exact", px); segs.push([[0, 0], p]); });
     const lab = labKey[i], rec = lab && recByKey[kind][lab.key];
