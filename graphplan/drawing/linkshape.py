@@ -7,6 +7,7 @@ from __future__ import annotations
 from graphplan.model.mechanism import Link
 
 ON_LINE_MM = 0.3    # a point this close to the joints' line lies on the bar
+COLLINEAR = 1e-5    # mm²: |cross| this small (a point ~1e-7 mm off a 100 mm edge) is no corner: round-off cannot make one
 
 
 def extra_points(link: Link) -> list[str]:
@@ -31,12 +32,12 @@ def _hull(points: list[complex]) -> list[int]:
 
     lower: list = []
     for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= COLLINEAR:
             lower.pop()
         lower.append(p)
     upper: list = []
     for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= COLLINEAR:
             upper.pop()
         upper.append(p)
     return [first[p] for p in lower[:-1] + upper[:-1]]
