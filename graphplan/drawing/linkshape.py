@@ -7,6 +7,7 @@ from __future__ import annotations
 from graphplan.model.mechanism import Link
 
 ON_LINE_MM = 0.3    # a point this close to the joints' line lies on the bar
+SLOT_MARGIN_MM = 4.0  # a slotted link's line runs this far beyond its outermost point or block
 COLLINEAR = 1e-5    # mm²: |cross| this small (a point ~1e-7 mm off a 100 mm edge) is no corner: round-off cannot make one
 
 
@@ -83,6 +84,17 @@ def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]
     outline around all its points (a rigid plate)."""
     every = joints + extras
     return [every[k] for k in outline_order(joints, extras)]
+
+
+def slot_line(base, u, own: list, blocks: list, margin: float = SLOT_MARGIN_MM):
+    """A slotted link (a coulisse) drawn along its guide: the line through ``base`` in the direction
+    ``u`` (a unit complex) from its farthest point to its farthest point, its own (joints, D …) and
+    its blocks' alike, ``margin`` mm beyond each end — the coulisse O2A3 reaching its end B. Works on
+    complex numbers or on numpy arrays of them (every angle of a turn at once); returns both ends."""
+    import numpy as np
+    along = [((z - base) * np.conj(u)).real for z in list(own) + list(blocks)]
+    lo, hi = np.min(along, axis=0) - margin, np.max(along, axis=0) + margin
+    return base + lo * u, base + hi * u
 
 
 def _inside(z: complex, polygon: list[complex]) -> bool:
