@@ -108,10 +108,31 @@ def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
                     "s": column(s.t - st.t0[key], floor=fx), "v": column(s.v, floor=fv),
                     "a": column(s.a, floor=fa), "k": column(s.coriolis_magnitude, floor=fa)}
               for key, s in kin.slides.items()}
+    slots = slot_lines(st, plans, kin)
     crossing = {label: [round(math.degrees(math.asin(min(1.0, abs(float(c))))), 1) for c in cond]
                 for label, cond in kin.condition.items()}
     return {"phi": [round(float(p), 6) for p in phi], "points": points, "links": links,
-            "slides": slides, "crossing": crossing}
+            "slides": slides, "crossing": crossing, "slots": slots}
+
+
+def slot_lines(st: Study, plans: Plans, kin) -> dict[str, list[list[list[float]]]]:
+    """Each slotted link (a coulisse) drawn at every angle of the grid as the sheets draw it
+    (drawing.linkshape.slot_line: along its guide, through its own points and its blocks, 4 mm
+    beyond): per carrier, per block sliding in it, per angle [x0, y0, x1, y1] in drawing mm."""
+    from graphplan.drawing.linkshape import extra_points, slot_line
+    mech, k = st.mech, 1.0 / plans.mu_l
+    out: dict[str, list[list[list[float]]]] = {}
+    for slider, link in mech.links.items():
+        if link.slides_on is None or mech.guides[link.slides_on].body == FRAME:
+            continue
+        g = mech.guides[link.slides_on]
+        carrier = mech.links[g.body]
+        body = kin.bodies[g.body]
+        own = [body.at(carrier.local[p])[0] * k for p in list(carrier.joints) + extra_points(carrier)]
+        blocks = [kin.bodies[slider].at(z)[0] * k for z in link.local.values()]
+        a, b = slot_line(body.at(g.through)[0] * k, body.turn * np.exp(1j * g.angle), own, blocks)
+        out.setdefault(g.body, []).append([[mm(p.real), mm(p.imag), mm(q.real), mm(q.imag)] for p, q in zip(a, b)])
+    return out
 
 
 # -- the mechanism's scheme for the drawing --------------------------------------------------------
@@ -163,8 +184,10 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
     mech = st.mech
     rows: list[dict[str, Any]] = []
     pts = [p for p in grid["points"]]
+    # every turning link but the crank and the blocks (a block turns with its coulisse: ω2 = ω3) — a
+    # coulisse pivoted at its only joint included (its ω3 is the lab's very question)
     rot = [n for n in mech.links if n != mech.crank.link and plans.scheme.rotating.get(n)
-           and len(mech.links[n].joints) >= 2]
+           and (len(mech.links[n].joints) >= 2 or mech.links[n].slides_on is None)]
     for p in pts:
         rows.append({"q": f"v_{p}", "plan": "velocity", "source": "point", "name": p, "unit": "m/s", "entry": p})
     for n in rot:
@@ -182,7 +205,24 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
         if max(s["k"]) > 0:
             rows.append({"q": f"k_{key}", "plan": "acceleration", "source": "slide_k", "name": key,
                          "unit": "m/s²", "entry": None, "point": s["point"]})
+    # each row written as the sheets' tables write it (report.plans.symbol): ω_3, v_A3A2, a^k_A3A2
+    from graphplan.report.plans import symbol
+    for row in rows:
+        for p in plans.positions:
+            plan = p.velocity if row["plan"] == "velocity" else p.acceleration
+            e = plan_entry(plan, row) if plan is not None else None
+            if e is not None:
+                row["symbol"] = symbol(e, plan.kind, mech)
+                break
     return rows
+
+
+def plan_entry(plan, row: dict[str, Any]):
+    """The plan's entry a row of the values' table reads (None where the plan has none)."""
+    e = plan.entries.get(row["entry"]) if row["entry"] else None
+    if e is None and row["source"] in ("slide_v", "slide_k"):
+        e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
+    return e
 
 
 def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, list]]:
@@ -199,9 +239,7 @@ def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, li
             for row in rows:
                 if row["plan"] != plan.kind:
                     continue
-                e = plan.entries.get(row["entry"]) if row["entry"] else None
-                if e is None and row["source"] in ("slide_v", "slide_k"):
-                    e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
+                e = plan_entry(plan, row)
                 if e is None:
                     continue
                 value = e.vector.real if row["source"] in ("omega", "epsilon") else e.value

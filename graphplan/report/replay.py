@@ -260,6 +260,17 @@ def numbers(plan: Plan, key: str, lang: str) -> tuple[str, str] | None:
     return fixed(e.mm, lang, 1), num(e.value, lang)
 
 
+def ratio_digits(k: float, lengths: list[float]) -> int:
+    """The fewest significant figures (3 … 5) of a similarity ratio ``k`` for which each written
+    product k·PX, with PX written to 0.1 mm, gives the 0.1 mm written for the true k·PX; 0 if none
+    does (PX itself rounded: the caller then writes the products of the written numbers)."""
+    for d in (3, 4, 5):
+        shown = float(f"{k:.{d}g}")
+        if all(f"{shown * float(f'{L:.1f}'):.1f}" == f"{k * L:.1f}" for L in lengths):
+            return d
+    return 0            # none: a length is itself written rounded
+
+
 # -- the replay ---------------------------------------------------------------------------------------
 
 class Replay:
@@ -416,19 +427,30 @@ class Replay:
         fig, FIG = seg(seg(pw, qw), x), seg(seg(PL, QL), XL)
         collinear = abs(((XQ - XP).conjugate() * (X - XP)).imag) <= 1e-6 * max(PQ * abs(X - XP), 1e-12)
         if self.plan.kind == "velocity":
-            why = say("why similar v", fig=fig, FIG=FIG, link=body)
+            # ω3 by the link's number, as the sheet's tables write it
+            why = say("why similar v", fig=fig, FIG=FIG,
+                      link=str(n.mech.links[body].number) if body in n.mech.links else body)
         else:
             turn = math.degrees(cmath.phase((qq - pp) / (XQ - XP))) if abs(qq - pp) > 1e-9 else 0.0
             why = say("why similar a", fig=fig, FIG=FIG, turn=both(lambda lang: fixed(turn, lang, 1)))
         mmf = lambda v: both(lambda lang: fixed(v, lang, 1))    # noqa: E731
-        kf = both(lambda lang: num(k, lang, 3))
+        # the ratio to as many figures as make the written products come out as written (1,33·50,0
+        # would give 66,5 where the construction's 66,4 stands: 1,328·50,0 = 66,4)
+        kd = ratio_digits(k, [abs(X - XP)] + ([] if collinear else [abs(X - XQ)]))
+        kf = both(lambda lang: num(k, lang, kd or 4))
+        if not kd:          # a length written rounded (144.04 as 144,0): the products of what is written
+            ks = float(f"{k:.4g}")
+            k_of = lambda L: ks * float(f"{L:.1f}") / L if L else k     # noqa: E731
+        else:
+            k_of = lambda L: k      # noqa: E731
         if collinear:
             ratio = say("ratio line", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
-                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)), pxmm=mmf(k * abs(X - XP)))
+                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)),
+                        pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)))
         else:
             ratio = say("ratio triangle", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
-                        px=seg(pw, x), PX=seg(PL, XL), pxmm=mmf(k * abs(X - XP)), qx=seg(qw, x), QX=seg(QL, XL),
-                        qxmm=mmf(k * abs(X - XQ)), p=pw, q=qw)
+                        px=seg(pw, x), PX=seg(PL, XL), pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)), qx=seg(qw, x),
+                        QX=seg(QL, XL), qxmm=mmf(k_of(abs(X - XQ)) * abs(X - XQ)), p=pw, q=qw)
         return [why, ratio]
 
     def rates(self) -> None:
@@ -445,8 +467,8 @@ class Replay:
         mu_l = self.plans.mu_l
         for link_name, link in mech.links.items():
             rate = plan.entries.get(f"{kind}_{link_name}")
-            if rate is None or link_name == mech.crank.link or len(link.joints) < 2:
-                continue
+            if rate is None or link_name == mech.crank.link or (len(link.joints) < 2 and link.slides_on is not None):
+                continue        # (a block turns with its coulisse; the coulisse O2A3 itself is read: ω3 = v_A3/l_O2A3)
             own = set(link.joints) | set(link.local) | {nm for (pt, b), nm in sc.coincident.items() if b == link_name}
             best = None
             for key, e in plan.entries.items():
@@ -469,7 +491,10 @@ class Replay:
                 length = abs(n.position(pair[0]) - n.position(pair[1])) * mu_l
                 if length <= 0:
                     continue
-                gap = abs(e.value / length - abs(rate.vector.real))
+                # the textbook reads ω3 off the point its group found (v_A3/l_O2A3, v_BA/l_AB), not one
+                # found from it by similarity (S3, D): a joint or a coincident point first
+                found = 0 if pair[0] in link.joints or pair[0] not in link.local else 1
+                gap = (found, abs(e.value / length - abs(rate.vector.real)))
                 if best is None or gap < best[0]:
                     best = (gap, key, e, pair, length)
             if best is None:
@@ -590,6 +615,8 @@ class Replay:
             for (vec, role, label, key), item in zip(e.chain, side.chain):
                 sub_ = key.partition("_")[2]
                 carrier = e.rule[1] if e.rule[0] == "link" else ""
+                if carrier in n.mech.links:          # ω3 in 2·ω3·v_A3A2: the link's number, as the sheets
+                    carrier = str(n.mech.links[carrier].number)
                 fields = dict(base=n.word(at), sub=sub_, carrier=carrier, end=label)
                 if item is None:
                     self.add([], say("zero " + role, **fields), eq)

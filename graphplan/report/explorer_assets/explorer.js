@@ -298,20 +298,27 @@
     const size = LETTER * px, taken = boxes || [];
     const vb = g.ownerSVGElement && g.ownerSVGElement.viewBox.baseVal;       // the view: a letter kept inside it
     const view = vb && vb.width ? [vb.x, -(vb.y + vb.height), vb.x + vb.width, -vb.y] : null;
+    // a letter nearer another point than its own reads as that point's: each box is kept nearer its own
+    const boxDist = (b, p) => Math.hypot(Math.max(b[0] - p[0], 0, p[0] - b[2]), Math.max(b[1] - p[1], 0, p[1] - b[3]));
+    const anchors = labels.map((lb) => lb.at);
     labels.forEach((lb) => {
       const t = el("text", { x: 0, y: 0, class: "lbl " + (lb.cls || "") }, g);
       svgMarkup(t, lb.text, size);
       let bb;
       try { bb = t.getBBox(); } catch (e) { bb = { x: 0, y: -size, width: size * 0.65 * lb.text.length, height: size * 1.3 }; }
       const w = bb.width + 2 * px, h = bb.height + 2 * px, asc = -bb.y;
-      const gap = 3 * px;
+      const gap = 4.5 * px;                    // clear of the point's own circle (3.5 px)
       const order = lb.prefer ? OFFSETS.slice().sort((u, v) => (v[0] * lb.prefer[0] + v[1] * lb.prefer[1]) - (u[0] * lb.prefer[0] + u[1] * lb.prefer[1])) : OFFSETS;
       let best = null;
       order.forEach((o, rank) => {
-        for (const far of [1, 2.2]) {
+        for (const far of [1, 1.6, 2.2]) {
           const cx = lb.at[0] + o[0] * (w / 2 + gap) * far, cy = lb.at[1] + o[1] * (h / 2 + gap) * far;
           const box = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
-          let cost = rank + (far > 1 ? 12 : 0);
+          let cost = rank + (far > 2 ? 12 : far > 1 ? 6 : 0);
+          const own = boxDist(box, lb.at);
+          anchors.forEach((p) => {
+            if (Math.abs(p[0] - lb.at[0]) + Math.abs(p[1] - lb.at[1]) > 1e-6 && boxDist(box, p) < own) cost += 150;
+          });
           taken.forEach((b) => { if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) cost += 1000; });
           segs.forEach((s) => { if (clipHits(s[0], s[1], box)) cost += 100; });
           if (view && (box[0] < view[0] || box[1] < view[1] || box[2] > view[2] || box[3] > view[3])) cost += 500;
@@ -406,13 +413,8 @@
     });
     S.links.forEach((L) => {
       const pts = L.joints.map((j) => at(j, i));
-      if (L.slot.length && pts.length >= 2) {
-        const a = pts[0], b = pts[pts.length - 1], n = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
-        const u = [(b[0] - a[0]) / n, (b[1] - a[1]) / n];
-        let lo = 0, hi = n;
-        L.slot.forEach((s) => { const p = at(s, i), t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]; lo = Math.min(lo, t - 6); hi = Math.max(hi, t + 6); });
-        seg([a[0] + lo * u[0], a[1] + lo * u[1]], [a[0] + hi * u[0], a[1] + hi * u[1]], "link");
-      }
+      // a coulisse along its guide, as the sheets draw it (Python's slot_line at every angle): to its end B
+      ((G.slots || {})[L.name] || []).forEach((per) => { const e = per[i]; seg([e[0], e[1]], [e[2], e[3]], "link"); });
       if (pts.length >= 2) {           // the sheets' outline (drawing.linkshape): the bar to D, the plate round E
         const shape = (L.outline && L.outline.length >= 2 ? L.outline : L.joints).map((j) => at(j, i));
         poly(g, shape, "link", false);
@@ -594,6 +596,7 @@
 
   // -- the values' table --------------------------------------------------------------------------------------
   function rowSymbol(row) {
+    if (row.symbol) return row.symbol;          // the sheets' own (report.plans.symbol): ω_3, v_A3A2
     if (row.source === "point") return (row.plan === "velocity" ? "v_{" : "a_{") + row.name + "}";
     if (row.source === "omega") return "ω_{" + row.name + "}";
     if (row.source === "epsilon") return "ε_{" + row.name + "}";
