@@ -18,6 +18,45 @@ from conftest import scene_study
 from graphplan.drawing.linkshape import outline_order, rigid_outline
 from review_scenes import FOURBAR   # the second review's four-bar: P_D at D = 1.3·O2B on the rocker
 
+# a coulisse pivoted at its only joint O2, the block A sliding in it, its end B = 0.30 m from O2
+COULISSE = """title = "Кулісний механізм"
+title_en = "Slotted-lever mechanism"
+
+[frame.points]
+O1 = [0, 0.12]
+O2 = [0, 0]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 60
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "O2B"
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2"]
+length = 0.30
+points = { S3 = 0.5, B = 1.0 }
+
+[branch]
+A = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+"""
+
 PLATE = FOURBAR.replace('points = { S2 = 0.5 }', 'points = { S2 = 0.5, E = [0.12, 0.06] }')
 
 
@@ -101,6 +140,70 @@ def test_a_rigid_motion_keeps_the_outlines_order(xy, turn, shift):
     assert a == b
 
 
+def test_the_coulisse_runs_to_b_as_on_the_sheet():
+    """The coulisse O2A3 is drawn along its guide through O2, the block A and its end B (placed by
+    hand: B = O2 + 0.30 m toward A) at every angle, 4 mm beyond its outermost points; at the lab's
+    positions its ends are the position plan's (the sheet's) own."""
+    from graphplan.drawing.plans import position_record
+    st, plans, data = _data(COULISSE)
+    lines = data["grid"]["slots"]["O2B"]
+    assert len(lines) == 1 and len(lines[0]) == len(data["grid"]["phi"])
+    pts, mu = data["grid"]["points"], plans.mu_l
+    for i, (x0, y0, x1, y1) in enumerate(lines[0]):
+        a, b = complex(x0, y0), complex(x1, y1)
+        A = complex(pts["A"]["x"][i], pts["A"]["y"][i]) / mu
+        B = 0.30 / mu * A / abs(A)                                   # O2 at the origin
+        assert abs(complex(pts["B"]["x"][i], pts["B"]["y"][i]) / mu - B) < 1e-3
+        for z in (0j, A, B):
+            assert _dist(z, a, b) < 2e-3
+        assert min(abs(a - B), abs(b - B)) == pytest.approx(4.0, abs=2e-3) or \
+            min(abs(a - A), abs(b - A)) == pytest.approx(4.0, abs=2e-3)
+    from graphplan.drawing.plans import joints_at
+    rec = position_record(plans)
+    drawn = [tuple(complex(*q) for q in it.points) for it in rec.items if it.kind == "segment" and it.role == "link"]
+    for p in plans.positions:
+        i = data["grid"]["phi"].index(min(data["grid"]["phi"], key=lambda f: abs(f - p.phi)))
+        shift = joints_at(plans.scheme, p.layout)["O2"]            # the sheet's origin is the crank's pivot
+        ends = complex(*lines[0][i][:2]) + shift, complex(*lines[0][i][2:]) + shift
+        # (the sheet breaks a line where a letter stands: its pieces on the line reach both ends)
+        pieces = [q for s in drawn if _dist(s[0], *ends) < 0.01 and _dist(s[1], *ends) < 0.01 for q in s]
+        assert all(min(abs(q - e) for q in pieces) < 0.01 for e in ends), p.key
+
+
+def test_the_coulisse_is_read_as_the_textbook_reads_it():
+    """Its ω3 and ε3 are in the values' table under the sheets' symbols (ω_3, v_A3A2, a^k_A3A2), equal
+    to the plans' readings; the velocity plan's last step reads ω3 off the group's point A3; the
+    Coriolis step writes 2·ω_3·v_A3A2."""
+    st, plans, data = _data(COULISSE)
+    sym = {r["q"]: r.get("symbol") for r in data["rows"]}
+    assert sym["omega_O2B"] == "ω_3" and sym["epsilon_O2B"] == "ε_3"
+    assert sym["vrel_A"] == "v_A3A2" and sym["k_A"] == "a^k_A3A2"
+    for p in plans.positions:
+        got = data["readings"][str(p.key)]
+        assert got["omega_O2B"][1] == pytest.approx(p.velocity.entries["omega_O2B"].vector.real, rel=1e-5)
+    steps = [s["caption"]["en"] for r in data["records"] for s in r["steps"]]
+    omega = [c for c in steps if c.startswith("ω_{3} = ")]
+    assert len(omega) == len(plans.positions) and all(c.startswith("ω_{3} = v_{A3O2}/l_{O2A3}") for c in omega)
+    coriolis = [c for c in steps if "a^k_{A3A2} = 2·" in c]
+    assert coriolis and all("2·ω_{3}·v_{A3A2}" in c and "O2B" not in c.split("(")[0] for c in coriolis)
+
+
+@pytest.mark.parametrize("text", [FOURBAR, PLATE, COULISSE], ids=["four-bar", "plate", "coulisse"])
+def test_the_similarity_arithmetic_is_right_as_written(text):
+    """Every product the replay writes, ratio × length = result (0,750838·144,0 = 108,1 mm), holds
+    to the 0.1 mm it is written to: a student checking it with a calculator finds it right."""
+    import re
+    _, _, data = _data(text)
+    checked = 0
+    for rec in data["records"]:
+        for step in rec["steps"]:
+            for m in re.finditer(r"([\d.]+)·([\d.]+) = ([\d.]+) mm", step["caption"]["en"]):
+                k, length, result = m.groups()
+                assert f"{float(k) * float(length):.1f}" == result, m.group(0)
+                checked += 1
+    assert checked >= 5
+
+
 # -- in the browser -------------------------------------------------------------------------------------
 
 from test_view import driver, graphplan, open_page  # noqa: E402,F401
@@ -161,3 +264,29 @@ def test_the_serve_pages_preview_draws_the_rocker_to_d():
         letter = next(q for q in rec.items if q.kind == "text" and q.text == "D")
         x0, y0, x1, y1 = letter.bounds()
         assert abs(complex(max(x0 - R.real, 0, R.real - x1), max(y0 - R.imag, 0, R.imag - y1))) < 3.0
+
+
+def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
+    """The page draws the coulisse through O2, the block's A and its end B (by hand: 0.30 m from O2
+    toward A) at every angle shown, and letters B and ω_3 in its table."""
+    scene = tmp_path / "coulisse.toml"
+    scene.write_text(COULISSE, encoding="utf-8")
+    page = tmp_path / "coulisse.html"
+    r = graphplan("view", str(scene), "-o", str(page), "--step", "10", "--lang", "en")
+    assert r.returncode == 0, r.stderr
+    open_page(driver, page)
+    data = json.loads(driver.execute_script("return document.getElementById('explorer-data').textContent")
+                      .replace("<\\/", "</"))
+    mu, pts = data["scales"]["mu_l"], data["grid"]["points"]
+    flip = lambda z: complex(z.real, -z.imag)              # noqa: E731
+    for i in range(0, len(data["grid"]["phi"]), 5):
+        driver.execute_script("window.graphplanExplorer.show(arguments[0])", i)
+        got = driver.execute_script(MECH.replace('"D"', '"B"'))
+        A = complex(pts["A"]["x"][i], pts["A"]["y"][i]) / mu
+        B = 0.30 / mu * A / abs(A)                               # O2 at the origin
+        assert got["D"] and abs(complex(*got["D"]) - flip(B)) < 0.01
+        segs = [(complex(*a), complex(*b)) for poly in got["links"] for a, b in zip(poly, poly[1:])]
+        assert any(all(_dist(flip(z), *s) < 0.01 for z in (0j, A, B)) for s in segs), data["grid"]["phi"][i]
+        assert got["texts"].count("B") == 1
+    heads = driver.execute_script("return [...document.querySelectorAll('#values th')].map((t) => t.textContent)")
+    assert "ω3, rad/s" in heads and "vA3A2, m/s" in heads, heads
