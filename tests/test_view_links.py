@@ -191,17 +191,26 @@ def test_the_coulisse_is_read_as_the_textbook_reads_it():
 @pytest.mark.parametrize("text", [FOURBAR, PLATE, COULISSE], ids=["four-bar", "plate", "coulisse"])
 def test_the_similarity_arithmetic_is_right_as_written(text):
     """Every product the replay writes, ratio × length = result (0,750838·144,0 = 108,1 mm), holds
-    to the 0.1 mm it is written to: a student checking it with a calculator finds it right."""
+    to the 0.1 mm it is written to, and every ω and ε, (mm · μ)/l = value, to the 4 figures it is
+    written to (the coulisse's l_O2A3 is the ruler's 18.0 mm, as the plan divides by it): a student
+    checking them with a calculator finds them right."""
     import re
+    from graphplan.util.words import num
     _, _, data = _data(text)
-    checked = 0
+    products = rates = 0
     for rec in data["records"]:
         for step in rec["steps"]:
-            for m in re.finditer(r"([\d.]+)·([\d.]+) = ([\d.]+) mm", step["caption"]["en"]):
+            c = step["caption"]["en"]
+            for m in re.finditer(r"([\d.]+)·([\d.]+) = ([\d.]+) mm", c):
                 k, length, result = m.groups()
                 assert f"{float(k) * float(length):.1f}" == result, m.group(0)
-                checked += 1
-    assert checked >= 5
+                products += 1
+            m = re.search(r"\(([\d.]+) mm · ([\d.]+) \(m/s²?\)/mm\)/([\d.]+) m = ([\d.]+) rad", c)
+            if m:
+                mm_, mu, length, value = m.groups()
+                assert num(float(mm_) * float(mu) / float(length), "en") == value, m.group(0)
+                rates += 1
+    assert products >= 5 and rates >= 5
 
 
 # -- in the browser -------------------------------------------------------------------------------------

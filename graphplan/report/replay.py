@@ -501,6 +501,9 @@ class Replay:
                 continue
             _, key, e, (C, P), length = best
             signed = float(rate.vector.real)
+            if signed and e.value and abs(e.value / abs(signed) - length) <= 0.02 * length:
+                length = e.value / abs(signed)      # the length the plan divided by: a coulisse's l_O2A3 as the
+                #                                    ruler reads it off the position plan (18.0 mm, not 17.92)
             c = sub(C)
             vec = e.vector / plan.mu
             start = n.place(c) - vec        # the segment ends at c: from a (v_CA), n_1 (a^τ_CA) or the pole
@@ -512,12 +515,15 @@ class Replay:
             # ω3 by the link's number, as the sheet's tables write it
             fields = dict(w=w, link=str(link.number), rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
                           unit=both(lambda lang: unit("rad/s" if kind == "omega" else "rad/s²", lang)))
+            # l to the figures that make (mm·μ)/l come out as the value written (0.40334, not 0.4033)
+            ld = next((d for d in (4, 5, 6) if num(e.mm * plan.mu / float(f"{length:.{d}g}"), "en")
+                       == num(abs(signed), "en")), 4) if e.mm and signed else 4
             if e.value == 0 or signed == 0:
                 caption = say("rate zero", **fields)
             else:
                 caption = say("rate", **fields, mm=both(lambda lang: fixed(e.mm, lang, 1)),
                               mu=both(lambda lang: num(plan.mu, lang)), munit=both(lambda lang: unit(munit, lang)),
-                              l=both(lambda lang: num(length, lang)), value=both(lambda lang: num(abs(signed), lang)),
+                              l=both(lambda lang: num(length, lang, ld)), value=both(lambda lang: num(abs(signed), lang)),
                               C=n.own_label(C), P=n.own_label(P), sense=say("ccw" if signed > 0 else "cw"),
                               signed=both(lambda lang: ("+" if signed > 0 else "−") + num(abs(signed), lang)))
             del pair_l

@@ -317,7 +317,7 @@
           let cost = rank + (far > 2 ? 12 : far > 1 ? 6 : 0);
           const own = boxDist(box, lb.at);
           anchors.forEach((p) => {
-            if (Math.abs(p[0] - lb.at[0]) + Math.abs(p[1] - lb.at[1]) > 1e-6 && boxDist(box, p) < own) cost += 150;
+            if (Math.abs(p[0] - lb.at[0]) + Math.abs(p[1] - lb.at[1]) > 1e-6 && boxDist(box, p) < own) cost += 60;     // below a line crossed (100): never overprint
           });
           taken.forEach((b) => { if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) cost += 1000; });
           segs.forEach((s) => { if (clipHits(s[0], s[1], box)) cost += 100; });
