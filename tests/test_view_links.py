@@ -299,3 +299,20 @@ def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
         assert got["texts"].count("B") == 1
     heads = driver.execute_script("return [...document.querySelectorAll('#values th')].map((t) => t.textContent)")
     assert "ω3, rad/s" in heads and "vA3A2, m/s" in heads, heads
+
+
+@pytest.mark.parametrize("text", [FOURBAR, PLATE, COULISSE], ids=["four-bar", "plate", "coulisse"])
+def test_no_point_floats_in_the_serve_preview(text):
+    """In `graphplan serve`'s preview every point drawn as a dot (S1, D, E, the coulisse's B) lies on a
+    drawn line of its link — none is left floating off its link."""
+    from graphplan.web.jobs import _at
+    st = scene_study(text)
+    for phi in (30.0, 150.0, 270.0):
+        rec, _ = _at(st, phi, "en")
+        dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point" and q.role == "dot"]
+        segs = [(complex(*a), complex(*b)) for q in rec.items if q.kind in ("segment", "polyline", "polygon")
+                and q.role == "link" for a, b in zip(q.points, list(q.points[1:]) + list(q.points[:1]))
+                if q.kind == "polygon" or (a, b) != (q.points[-1], q.points[0])]
+        assert dots
+        for z in dots:
+            assert min(_dist(z, *s) for s in segs) < 1e-6, (phi, z)

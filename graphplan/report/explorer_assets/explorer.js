@@ -292,7 +292,8 @@
     }
     return true;
   }
-  const OFFSETS = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1]];
+  const OFFSETS = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1],
+    [1, 0.5], [-1, 0.5], [1, -0.5], [-1, -0.5], [0.5, 1], [-0.5, 1], [0.5, -1], [-0.5, -1]];
   function placeLabels(g, labels, segs, px, boxes) {
     // labels: {at:[x,y], text, cls, prefer:[dx,dy]}; segs: [[a,b]] in drawing units; boxes: taken boxes
     const size = LETTER * px, taken = boxes || [];
@@ -311,10 +312,10 @@
       const order = lb.prefer ? OFFSETS.slice().sort((u, v) => (v[0] * lb.prefer[0] + v[1] * lb.prefer[1]) - (u[0] * lb.prefer[0] + u[1] * lb.prefer[1])) : OFFSETS;
       let best = null;
       order.forEach((o, rank) => {
-        for (const far of [1, 1.6, 2.2]) {
+        for (const far of [1, 1.6, 2.2, 3]) {
           const cx = lb.at[0] + o[0] * (w / 2 + gap) * far, cy = lb.at[1] + o[1] * (h / 2 + gap) * far;
           const box = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
-          let cost = rank + (far > 2 ? 12 : far > 1 ? 6 : 0);
+          let cost = rank + (far > 2.5 ? 24 : far > 2 ? 12 : far > 1 ? 6 : 0);
           const own = boxDist(box, lb.at);
           anchors.forEach((p) => {
             if (Math.abs(p[0] - lb.at[0]) + Math.abs(p[1] - lb.at[1]) > 1e-6 && boxDist(box, p) < own) cost += 60;     // below a line crossed (100): never overprint
