@@ -155,9 +155,11 @@ SAY: dict[str, tuple[str, str]] = {
                       "them (tan = ε/ω^2) and are proportional to them, so the figure {fig} is similar to {FIG}, turned by {turn}°"),
     "ratio line": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} мм",
                    "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} mm"),
-    "ratio triangle": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} мм, {qx} = {k}·{QX} = {qxmm} мм "
+    "ratio triangle": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} мм, "
+                       "{qx} = {k}·{QX} = {k}·{QXmm} = {qxmm} мм "
                        "(дуги з {p} і {q}; трикутник обходимо в тому самому напрямі, що й на ланці)",
-                       "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} mm, {qx} = {k}·{QX} = {qxmm} mm "
+                       "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} mm, "
+                       "{qx} = {k}·{QX} = {k}·{QXmm} = {qxmm} mm "
                        "(arcs from {p} and {q}; the triangle is gone round in the same sense as on the link)"),
     "guide word": ("напрямній", "the guide"),
 }
@@ -449,8 +451,9 @@ class Replay:
                         pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)))
         else:
             ratio = say("ratio triangle", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
-                        px=seg(pw, x), PX=seg(PL, XL), pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)), qx=seg(qw, x),
-                        QX=seg(QL, XL), qxmm=mmf(k_of(abs(X - XQ)) * abs(X - XQ)), p=pw, q=qw)
+                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)), pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)),
+                        qx=seg(qw, x), QX=seg(QL, XL), QXmm=mmf(abs(X - XQ)), qxmm=mmf(k_of(abs(X - XQ)) * abs(X - XQ)),
+                        p=pw, q=qw)
         return [why, ratio]
 
     def rates(self) -> None:
