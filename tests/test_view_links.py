@@ -7,6 +7,7 @@ outline's order (hypothesis)."""
 from __future__ import annotations
 
 import cmath
+import functools
 import json
 import math
 
@@ -60,7 +61,9 @@ accel = [2]
 PLATE = FOURBAR.replace('points = { S2 = 0.5 }', 'points = { S2 = 0.5, E = [0.12, 0.06] }')
 
 
+@functools.lru_cache(maxsize=None)
 def _data(text: str):
+    """(study, plans, the page's data at a 10° grid) of a scene, built once for the module."""
     from graphplan.graphic.plans import build_plans
     from graphplan.report.explorer import explorer_data
     st = scene_study(text)
@@ -251,6 +254,18 @@ def test_d_lies_on_the_drawn_rocker_at_every_angle(driver, tmp_path):  # noqa: F
                    and _dist(flip(O2), *s) < 0.01]
         assert through, f"angle {data['grid']['phi'][i]}: no drawn segment joins O2, B and D"
         assert got["texts"].count("D") == 1
+        assert omega1_sense(driver) == 1
+
+
+def omega1_sense(d) -> int:
+    """The sense ω1's arc on the mechanism turns about the crank's pivot: +1 counter-clockwise (the
+    drawing's y up), from the arc's ends; checked against the one the page says."""
+    arc = json.loads(d.find_element("id", "mech").get_attribute("data-omega1"))
+    (x0, y0), (x1, y1), (cx, cy) = arc["from"], arc["to"], arc["centre"]
+    turn = (x0 - cx) * (y1 - cy) - (y0 - cy) * (x1 - cx)
+    assert abs(math.hypot(x0 - cx, y0 - cy) - math.hypot(x1 - cx, y1 - cy)) < 1e-2 and abs(turn) > 1e-6
+    assert (1 if turn > 0 else -1) == arc["sense"]
+    return arc["sense"]
 
 
 def test_the_serve_pages_preview_draws_the_rocker_to_d():
@@ -277,9 +292,10 @@ def test_the_serve_pages_preview_draws_the_rocker_to_d():
 
 def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
     """The page draws the coulisse through O2, the block's A and its end B (by hand: 0.30 m from O2
-    toward A) at every angle shown, and letters B and ω_3 in its table."""
+    toward A) at every angle shown, ω1's arc about O1 turning clockwise as the crank does (ccw in
+    the four-bar's test), and letters B and ω_3 in its table."""
     scene = tmp_path / "coulisse.toml"
-    scene.write_text(COULISSE, encoding="utf-8")
+    scene.write_text(COULISSE.replace('direction = "ccw"', 'direction = "cw"'), encoding="utf-8")
     page = tmp_path / "coulisse.html"
     r = graphplan("view", str(scene), "-o", str(page), "--step", "10", "--lang", "en")
     assert r.returncode == 0, r.stderr
@@ -297,6 +313,7 @@ def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
         segs = [(complex(*a), complex(*b)) for poly in got["links"] for a, b in zip(poly, poly[1:])]
         assert any(all(_dist(flip(z), *s) < 0.01 for z in (0j, A, B)) for s in segs), data["grid"]["phi"][i]
         assert got["texts"].count("B") == 1
+        assert omega1_sense(driver) == -1
     heads = driver.execute_script("return [...document.querySelectorAll('#values th')].map((t) => t.textContent)")
     assert "ω3, rad/s" in heads and "vA3A2, m/s" in heads, heads
 

@@ -455,8 +455,38 @@
       labels.push({ at: p, text: label(n) });
     });
     if (mark) markMechanism(svgEl, g, i, mark, px, segs);
-    placeLabels(el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl), labels, segs, px, boxes.slice());
+    const lg = el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl);
+    omega1(svgEl, g, lg, i, px, segs, placeLabels(lg, labels, segs, px, boxes.slice()));
     svgEl.setAttribute("data-kept", JSON.stringify(boxes.map((b) => b.map(r3))));
+  }
+  function omega1(svgEl, g, lg, i, px, segs, taken) {
+    // ω1: an arc about the crank's pivot in its sense (as the sheets draw it), crossing no link and no
+    // letter, off the support below, nearest opposite the crank; then its letter
+    const O = S.frame[S.crank.pivot], A = at(S.crank.pin, i), up = Math.atan2(A[1] - O[1], A[0] - O[0]), R = 20 * px;
+    const gap = (a, b) => Math.abs(((a - b + 3 * Math.PI) % (2 * Math.PI)) - Math.PI);
+    const sense = D.omega1 >= 0 ? 1 : -1;
+    const arc = (m) => { const out = []; for (let k = 0; k <= 12; k++) { const t = m - sense * 0.75 + sense * 1.5 * k / 12; out.push([O[0] + R * Math.cos(t), O[1] + R * Math.sin(t)]); } return out; };
+    const side = (a, b, c) => Math.sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    const meets = (p, q, a, b) => side(p, q, a) * side(p, q, b) < 0 && side(a, b, p) * side(a, b, q) < 0;
+    let mid = up + Math.PI, best = 1e9;
+    for (let k = 0; k < 24; k++) {
+      const m = up + Math.PI + (k % 2 ? 1 : -1) * Math.ceil(k / 2) * Math.PI / 12, a = arc(m);
+      let cost = Math.ceil(k / 2) + (gap(m, -Math.PI / 2) < 1.2 ? 50 : 0);     // the support: ±45° about down, the arc ±43°
+      for (let j = 0; j < 12; j++) segs.forEach((sg) => { if (meets(a[j], a[j + 1], sg[0], sg[1])) cost += 100; });
+      a.forEach((p) => taken.forEach((b) => { if (p[0] > b[0] && p[0] < b[2] && p[1] > b[1] && p[1] < b[3]) cost += 100; }));
+      const c = [O[0] + (R + 16 * px) * Math.cos(m), O[1] + (R + 16 * px) * Math.sin(m)];      // room for its letter
+      const lb = [c[0] - 12 * px, c[1] - 9 * px, c[0] + 12 * px, c[1] + 9 * px];
+      segs.forEach((sg) => { if (clipHits(sg[0], sg[1], lb)) cost += 30; });
+      taken.forEach((b) => { if (b[0] < lb[2] && lb[0] < b[2] && b[1] < lb[3] && lb[1] < b[3]) cost += 30; });
+      if (cost < best) { best = cost; mid = m; }
+    }
+    const pts = arc(mid);
+    poly(g, pts, "omega1", false);
+    arrow(g, pts[10], pts[12], "omega1", px * 0.8);
+    for (let k = 0; k < 12; k++) segs.push([pts[k], pts[k + 1]]);
+    placeLabels(lg, [{ at: [O[0] + 1.15 * R * Math.cos(mid), O[1] + 1.15 * R * Math.sin(mid)], text: "ω_1",
+      prefer: [Math.cos(mid), Math.sin(mid)] }], segs, px, taken);
+    svgEl.setAttribute("data-omega1", JSON.stringify({ sense: sense, from: pts[0].map(r3), to: pts[12].map(r3), centre: O }));
   }
   function guideAngle(point) {
     const gd = S.guides.find((x) => x.point === point);
