@@ -255,6 +255,37 @@ def test_d_lies_on_the_drawn_rocker_at_every_angle(driver, tmp_path):  # noqa: F
         assert through, f"angle {data['grid']['phi'][i]}: no drawn segment joins O2, B and D"
         assert got["texts"].count("D") == 1
         assert omega1_sense(driver) == 1
+        assert driver.execute_script(OVERPRINT, ["mech"]) == [], data["grid"]["phi"][i]
+
+
+# on a drawing: two letters overlapping, or a letter crossed by a link's line (screen boxes, 1 px in)
+OVERPRINT = r"""
+const out = [];
+for (const id of arguments[0]) {
+  const svg = document.getElementById(id); if (!svg) continue;
+  const texts = [...svg.querySelectorAll('text')].filter(t => t.textContent.trim());
+  const boxes = texts.map(t => { const r = t.getBoundingClientRect(); return [r.left + 1, r.top + 2, r.right - 1, r.bottom - 2, t.textContent]; });
+  for (let i = 0; i < boxes.length; i++) for (let j = i + 1; j < boxes.length; j++) {
+    const a = boxes[i], b = boxes[j];
+    if (a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]) out.push([id, 'text', a[4], b[4]]);
+  }
+  const segs = [];
+  const M = svg.getScreenCTM();
+  const P = (x, y) => { const p = svg.createSVGPoint(); p.x = x; p.y = y; const q = p.matrixTransform(M); return [q.x, q.y]; };
+  svg.querySelectorAll('.link').forEach(e => {
+    if (e.tagName === 'line') segs.push([P(+e.getAttribute('x1'), +e.getAttribute('y1')), P(+e.getAttribute('x2'), +e.getAttribute('y2'))]);
+    else { const pts = e.getAttribute('points').trim().split(/\s+/).map(s => s.split(',').map(Number)).map(p => P(p[0], p[1]));
+      for (let k = 0; k + 1 < pts.length; k++) segs.push([pts[k], pts[k + 1]]);
+      if (e.tagName === 'polygon') segs.push([pts[pts.length - 1], pts[0]]); }
+  });
+  const hit = (a, b, box) => { let t0 = 0, t1 = 1; const dx = b[0] - a[0], dy = b[1] - a[1];
+    const p = [-dx, dx, -dy, dy], q = [a[0] - box[0], box[2] - a[0], a[1] - box[1], box[3] - a[1]];
+    for (let i = 0; i < 4; i++) { if (p[i] === 0) { if (q[i] < 0) return false; continue; } const t = q[i] / p[i];
+      if (p[i] < 0) { if (t > t1) return false; if (t > t0) t0 = t; } else { if (t < t0) return false; if (t < t1) t1 = t; } } return true; };
+  boxes.forEach(b => segs.forEach(s => { if (hit(s[0], s[1], b)) out.push([id, 'line', b[4]]); }));
+}
+return out;
+"""
 
 
 def omega1_sense(d) -> int:
@@ -293,7 +324,7 @@ def test_the_serve_pages_preview_draws_the_rocker_to_d():
 def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
     """The page draws the coulisse through O2, the block's A and its end B (by hand: 0.30 m from O2
     toward A) at every angle shown, ω1's arc about O1 turning clockwise as the crank does (ccw in
-    the four-bar's test), and letters B and ω_3 in its table."""
+    the four-bar's test), no letter overprinted, and letters B and ω_3 in its table."""
     scene = tmp_path / "coulisse.toml"
     scene.write_text(COULISSE.replace('direction = "ccw"', 'direction = "cw"'), encoding="utf-8")
     page = tmp_path / "coulisse.html"
@@ -314,6 +345,7 @@ def test_the_coulisse_reaches_b_in_the_browser(driver, tmp_path):  # noqa: F811
         assert any(all(_dist(flip(z), *s) < 0.01 for z in (0j, A, B)) for s in segs), data["grid"]["phi"][i]
         assert got["texts"].count("B") == 1
         assert omega1_sense(driver) == -1
+        assert driver.execute_script(OVERPRINT, ["mech"]) == [], data["grid"]["phi"][i]
     heads = driver.execute_script("return [...document.querySelectorAll('#values th')].map((t) => t.textContent)")
     assert "ω3, rad/s" in heads and "vA3A2, m/s" in heads, heads
 
