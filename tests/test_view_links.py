@@ -3,7 +3,10 @@ review four-bar's rocker O2–B–D to D = 1.3·O2B, a coupler with a point off 
 outline the Python side exports (the names of the points it runs through), so the page and the sheets
 cannot disagree. Checked against D placed by hand, O2 + 1.3·(B − O2), in the data and in chromium
 (one browser, a few seconds); and the premise of exporting names once: a rigid motion keeps the
-outline's order (hypothesis)."""
+outline's order (hypothesis). A coulisse pivoted at its only joint runs to its end B; its ω3 is read
+as the textbook reads it; every product and quotient the replay writes is right as written; ω1's
+arc turns as the crank; no letter of the mechanism is overprinted; no dot floats in the serve
+preview."""
 from __future__ import annotations
 
 import cmath
