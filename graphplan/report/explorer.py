@@ -157,7 +157,7 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
         links.append({"name": name, "number": link.number, "joints": list(link.joints),
                       "block": next(iter(link.local)) if link.slides_on is not None and len(link.joints) <= 1 else None,
                       "slot": carriers.get(name, []) if name != FRAME else [],
-                      "outline": outline_names(link, at0) if len(link.joints) >= 2 else [],
+                      "outline": outline_names(link, at0) if len(link.joints) >= 2 else coulisse_outline(link, at0),
                       "points": [p for p in extra_points(link) if p in at0 and p not in mech.frame]})
     guides = [{"point": next(iter(mech.links[s].local)),
                "angle": math.degrees(g.angle),
@@ -173,6 +173,17 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     return {"frame": frame, "pivots": pivots, "links": links, "guides": guides,
             "crank": {"link": mech.crank.link, "pivot": mech.crank.pivot, "pin": mech.crank.pin},
             "trajectories": paths, "output": {"kind": out.kind, "name": out.name, "point": output_point}}
+
+
+def coulisse_outline(link, at0: dict[str, complex]) -> list[str]:
+    """A link pivoted at its only joint (a coulisse O2 … B): its points' outline through the joint and
+    its own points (["O2", "B"]), for its similar figure on the plans (the mechanism draws it along
+    its guide); none for a block."""
+    from graphplan.drawing.linkshape import extra_points, outline_order
+    names = list(link.joints) + [p for p in extra_points(link) if p in at0]
+    if link.slides_on is not None or len(names) < 2:
+        return []
+    return [names[k] for k in outline_order([at0[n] for n in names[:2]], [at0[n] for n in names[2:]])]
 
 
 # -- the values' table -----------------------------------------------------------------------------

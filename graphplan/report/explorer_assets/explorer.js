@@ -607,9 +607,10 @@
     clear(svg);
     const px = z.px(), g = el("g", {}, svg), segs = [];
     S.links.forEach((L) => {
-      if (L.name === S.crank.link || L.joints.length < 2) return;
-      // the link's image, similar to it: the same outline through the images of its points
-      const fig = (L.outline && L.outline.length >= 2 ? L.outline : L.joints).map((j) => imageOf(kind, j, i));
+      // the link's image, similar to it: the same outline through the images of its points (a coulisse's too)
+      const names = L.outline && L.outline.length >= 2 ? L.outline : L.joints;
+      if (L.name === S.crank.link || names.length < 2) return;
+      const fig = names.map((j) => imageOf(kind, j, i));
       poly(g, fig, "figure", false);
     });
     Object.keys(G.points).forEach((n) => { const p = planVector(kind, n, i); arrow(g, [0, 0], p, "exact", px); segs.push([[0, 0], p]); });
