@@ -787,6 +787,7 @@
   let current = null, stepNo = 0, returnTo = null;
   const replayZ = Zoomable(rsvg, () => showStep());
   const rmechSvg = $("rmech"), rmechZ = Zoomable(rmechSvg, () => showStep());
+  rmechSvg.style.aspectRatio = mechSvg.style.aspectRatio;     // the mechanism's own shape: a tall one is not shrunk to a 4:3 strip
   function planName(r) {
     return W()[r.kind] + ", " + (r.index !== null ? fill(W().at, { k: r.index }) : "φ = " + fx(r.phi, 1) + "°");
   }
