@@ -9,7 +9,7 @@ import math
 from graphplan.util.markup import indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from graphplan.model.linkshape import extra_points, rigid_outline
+from graphplan.model.linkshape import extra_points, outline_names, slot_line
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -47,15 +47,13 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
         joints = list(link.joints)
         if name in carriers:
             # a slotted link: its guide line over its joints and the blocks sliding in it
+            # (through all its own points: the coulisse O2A3 runs to its end B)
+            own = [pts[p] for p in joints + [q for q in extra_points(link) if q in pts]]
             for slider in carriers[name]:
                 g = mech.guides[mech.links[slider].slides_on]
-                base = lay.poses[name].at(g.through)
-                u = lay.poses[name].direction(g.angle)
-                along = [((pts[p] - base) * u.conjugate()).real
-                         for p in list(joints) + list(mech.links[slider].local)]
-                lo, hi = min(along) - 4.0, max(along) + 4.0
-                rec.segment(_pt(base + lo * u), _pt(base + hi * u), role=role, width=width,
-                            layer="mechanism", step=step)
+                a, b = slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle), own,
+                                 [pts[p] for p in mech.links[slider].local])
+                rec.segment(_pt(complex(a)), _pt(complex(b)), role=role, width=width, layer="mechanism", step=step)
         if link.slides_on is not None and len(joints) <= 1:
             if thick:
                 centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
@@ -66,7 +64,7 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
             continue
         # one rigid link through all its points: the rocker O2–B–D to D, a plate round E off its line
-        shape = rigid_outline([pts[p] for p in joints], [pts[p] for p in extra_points(link) if p in pts])
+        shape = [pts[p] for p in outline_names(link, pts)]
         for p, q in zip(shape, shape[1:]):
             rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
     for name, link in mech.links.items():

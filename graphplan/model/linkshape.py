@@ -7,6 +7,8 @@ from __future__ import annotations
 from graphplan.model.mechanism import Link
 
 ON_LINE_MM = 0.3    # a point this close to the joints' line lies on the bar
+SLOT_MARGIN_MM = 4.0  # a slotted link's line runs this far beyond its outermost point or block
+COLLINEAR = 1e-5    # mm²: |cross| this small (a point ~1e-7 mm off a 100 mm edge) is no corner: round-off cannot make one
 
 
 def extra_points(link: Link) -> list[str]:
@@ -16,35 +18,41 @@ def extra_points(link: Link) -> list[str]:
     return [p for p in link.local if p not in link.joints and p != link.com]
 
 
-def _hull(points: list[complex]) -> list[complex]:
-    """The convex hull, counter-clockwise (Andrew's monotone chain)."""
-    pts = sorted(set((round(z.real, 9), round(z.imag, 9)) for z in points))
+def _hull(points: list[complex]) -> list[int]:
+    """The convex hull, counter-clockwise (Andrew's monotone chain), as indices into ``points``
+    (of coincident points the first)."""
+    first: dict[tuple[float, float], int] = {}
+    for k, z in enumerate(points):
+        first.setdefault((round(z.real, 9), round(z.imag, 9)), k)
+    pts = sorted(first)
     if len(pts) <= 2:
-        return [complex(*p) for p in pts]
+        return [first[p] for p in pts]
 
     def cross(o, a, b) -> float:
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
     lower: list = []
     for p in pts:
-        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= COLLINEAR:
             lower.pop()
         lower.append(p)
     upper: list = []
     for p in reversed(pts):
-        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= COLLINEAR:
             upper.pop()
         upper.append(p)
-    return [complex(*p) for p in lower[:-1] + upper[:-1]]
+    return [first[p] for p in lower[:-1] + upper[:-1]]
 
 
-def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]:
-    """One polyline (mm) drawing a link through its joints and its other points. Two joints and
-    every point on their line: the bar between the two outermost points. Three or more joints and
-    no point outside their polygon: the polygon in the joints' order (closed). Otherwise the
-    closed outline around all the points (a rigid plate)."""
+def outline_order(joints: list[complex], extras: list[complex]) -> list[int]:
+    """The order in which a link's outline runs through its points, as indices into
+    ``joints + extras`` (a closed outline repeats its first index at the end). Two joints and every
+    point on their line: the bar between the two outermost points. Three or more joints and no point
+    outside their polygon: the polygon in the joints' order. Otherwise the outline around all the
+    points (a rigid plate). A rigid motion keeps the order, so one position gives it for the turn
+    (the explorer draws every angle from it: the sheets' shape, not a second one)."""
     if len(joints) < 2:
-        return list(joints)
+        return list(range(len(joints)))
     a, b = joints[0], joints[1]
     d = b - a
     if abs(d) < 1e-9:
@@ -52,13 +60,41 @@ def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]
     u = d / abs(d)
     every = joints + extras
     if all(abs(((z - a) * u.conjugate()).imag) <= ON_LINE_MM for z in every):
-        ordered = sorted(every, key=lambda z: ((z - a) * u.conjugate()).real)
-        return [ordered[0], ordered[-1]]
-    polygon = joints + [joints[0]]
+        along = sorted(range(len(every)), key=lambda k: ((every[k] - a) * u.conjugate()).real)
+        return [along[0], along[-1]]
     if len(joints) >= 3 and all(_inside(z, joints) for z in extras):
-        return polygon
+        return list(range(len(joints))) + [0]
     hull = _hull(every)
     return hull + [hull[0]]
+
+
+def outline_names(link: Link, pts: dict[str, complex]) -> list[str]:
+    """The names of the points a link's outline runs through, in order (``outline_order`` over its
+    joints and its ``extra_points`` drawn in ``pts``): ["O2", "D"] for the rocker O2–B–D, ["A", "B",
+    "E", "A"] for a coupler plate ABE."""
+    joints = list(link.joints)
+    extras = [p for p in extra_points(link) if p in pts]
+    names = joints + extras
+    return [names[k] for k in outline_order([pts[p] for p in joints], [pts[p] for p in extras])]
+
+
+def rigid_outline(joints: list[complex], extras: list[complex]) -> list[complex]:
+    """One polyline (mm) drawing a link through its joints and its other points, in the order of
+    ``outline_order``: the bar between its outermost points, the joints' polygon, or the closed
+    outline around all its points (a rigid plate)."""
+    every = joints + extras
+    return [every[k] for k in outline_order(joints, extras)]
+
+
+def slot_line(base, u, own: list, blocks: list, margin: float = SLOT_MARGIN_MM):
+    """A slotted link (a coulisse) drawn along its guide: the line through ``base`` in the direction
+    ``u`` (a unit complex) from its farthest point to its farthest point, its own (joints, D …) and
+    its blocks' alike, ``margin`` mm beyond each end — the coulisse O2A3 reaching its end B. Works on
+    complex numbers or on numpy arrays of them (every angle of a turn at once); returns both ends."""
+    import numpy as np
+    along = [((z - base) * np.conj(u)).real for z in list(own) + list(blocks)]
+    lo, hi = np.min(along, axis=0) - margin, np.max(along, axis=0) + margin
+    return base + lo * u, base + hi * u
 
 
 def _inside(z: complex, polygon: list[complex]) -> bool:

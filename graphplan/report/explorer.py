@@ -108,10 +108,31 @@ def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
                     "s": column(s.t - st.t0[key], floor=fx), "v": column(s.v, floor=fv),
                     "a": column(s.a, floor=fa), "k": column(s.coriolis_magnitude, floor=fa)}
               for key, s in kin.slides.items()}
+    slots = slot_lines(st, plans, kin)
     crossing = {label: [round(math.degrees(math.asin(min(1.0, abs(float(c))))), 1) for c in cond]
                 for label, cond in kin.condition.items()}
     return {"phi": [round(float(p), 6) for p in phi], "points": points, "links": links,
-            "slides": slides, "crossing": crossing}
+            "slides": slides, "crossing": crossing, "slots": slots}
+
+
+def slot_lines(st: Study, plans: Plans, kin) -> dict[str, list[list[list[float]]]]:
+    """Each slotted link (a coulisse) drawn at every angle of the grid as the sheets draw it
+    (model.linkshape.slot_line: along its guide, through its own points and its blocks, 4 mm
+    beyond): per carrier, per block sliding in it, per angle [x0, y0, x1, y1] in drawing mm."""
+    from graphplan.model.linkshape import extra_points, slot_line
+    mech, k = st.mech, 1.0 / plans.mu_l
+    out: dict[str, list[list[list[float]]]] = {}
+    for slider, link in mech.links.items():
+        if link.slides_on is None or mech.guides[link.slides_on].body == FRAME:
+            continue
+        g = mech.guides[link.slides_on]
+        carrier = mech.links[g.body]
+        body = kin.bodies[g.body]
+        own = [body.at(carrier.local[p])[0] * k for p in list(carrier.joints) + extra_points(carrier)]
+        blocks = [kin.bodies[slider].at(z)[0] * k for z in link.local.values()]
+        a, b = slot_line(body.at(g.through)[0] * k, body.turn * np.exp(1j * g.angle), own, blocks)
+        out.setdefault(g.body, []).append([[mm(p.real), mm(p.imag), mm(q.real), mm(q.imag)] for p, q in zip(a, b)])
+    return out
 
 
 # -- the mechanism's scheme for the drawing --------------------------------------------------------
@@ -119,8 +140,14 @@ def grid_data(st: Study, plans: Plans, phi: np.ndarray) -> dict[str, Any]:
 
 def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     """What the page needs to draw the mechanism: frame points, links (bars, blocks, slotted
-    links), guides on the frame, the trajectories worth drawing."""
+    links), guides on the frame, the trajectories worth drawing. Each link's ``outline`` is the
+    sheets' own (model.linkshape: the bar to its outermost point, a plate round a point off its
+    joints' line) as the names of the points it runs through, taken at position 0 (a rigid motion
+    keeps it), and ``points`` its named points beyond the joints (D, E), drawn and lettered."""
+    from graphplan.model.linkshape import extra_points, outline_names
+    from graphplan.drawing.plans import joints_at
     mech = st.mech
+    at0 = joints_at(plans.scheme, plans.positions[0].layout)
     carriers: dict[str, list[str]] = {}
     for name, link in mech.links.items():
         if link.slides_on is not None:
@@ -129,7 +156,9 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     for name, link in mech.links.items():
         links.append({"name": name, "number": link.number, "joints": list(link.joints),
                       "block": next(iter(link.local)) if link.slides_on is not None and len(link.joints) <= 1 else None,
-                      "slot": carriers.get(name, []) if name != FRAME else []})
+                      "slot": carriers.get(name, []) if name != FRAME else [],
+                      "outline": outline_names(link, at0) if len(link.joints) >= 2 else coulisse_outline(link, at0),
+                      "points": [p for p in extra_points(link) if p in at0 and p not in mech.frame]})
     guides = [{"point": next(iter(mech.links[s].local)),
                "angle": math.degrees(g.angle),
                "through": [mm(g.through.real / plans.mu_l), mm(g.through.imag / plans.mu_l)]}
@@ -146,6 +175,17 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
             "trajectories": paths, "output": {"kind": out.kind, "name": out.name, "point": output_point}}
 
 
+def coulisse_outline(link, at0: dict[str, complex]) -> list[str]:
+    """A link pivoted at its only joint (a coulisse O2 … B): its points' outline through the joint and
+    its own points (["O2", "B"]), for its similar figure on the plans (the mechanism draws it along
+    its guide); none for a block."""
+    from graphplan.model.linkshape import extra_points, outline_order
+    names = list(link.joints) + [p for p in extra_points(link) if p in at0]
+    if link.slides_on is not None or len(names) < 2:
+        return []
+    return [names[k] for k in outline_order([at0[n] for n in names[:2]], [at0[n] for n in names[2:]])]
+
+
 # -- the values' table -----------------------------------------------------------------------------
 
 
@@ -155,8 +195,10 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
     mech = st.mech
     rows: list[dict[str, Any]] = []
     pts = [p for p in grid["points"]]
+    # every turning link but the crank and the blocks (a block turns with its coulisse: ω2 = ω3) — a
+    # coulisse pivoted at its only joint included (its ω3 is the lab's very question)
     rot = [n for n in mech.links if n != mech.crank.link and plans.scheme.rotating.get(n)
-           and len(mech.links[n].joints) >= 2]
+           and (len(mech.links[n].joints) >= 2 or mech.links[n].slides_on is None)]
     for p in pts:
         rows.append({"q": f"v_{p}", "plan": "velocity", "source": "point", "name": p, "unit": "m/s", "entry": p})
     for n in rot:
@@ -174,7 +216,24 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
         if max(s["k"]) > 0:
             rows.append({"q": f"k_{key}", "plan": "acceleration", "source": "slide_k", "name": key,
                          "unit": "m/s²", "entry": None, "point": s["point"]})
+    # each row written as the sheets' tables write it (report.plans.symbol): ω_3, v_A3A2, a^k_A3A2
+    from graphplan.report.plans import symbol
+    for row in rows:
+        for p in plans.positions:
+            plan = p.velocity if row["plan"] == "velocity" else p.acceleration
+            e = plan_entry(plan, row) if plan is not None else None
+            if e is not None:
+                row["symbol"] = symbol(e, plan.kind, mech)
+                break
     return rows
+
+
+def plan_entry(plan, row: dict[str, Any]):
+    """The plan's entry a row of the values' table reads (None where the plan has none)."""
+    e = plan.entries.get(row["entry"]) if row["entry"] else None
+    if e is None and row["source"] in ("slide_v", "slide_k"):
+        e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
+    return e
 
 
 def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, list]]:
@@ -191,9 +250,7 @@ def readings(plans: Plans, rows: list[dict[str, Any]]) -> dict[str, dict[str, li
             for row in rows:
                 if row["plan"] != plan.kind:
                     continue
-                e = plan.entries.get(row["entry"]) if row["entry"] else None
-                if e is None and row["source"] in ("slide_v", "slide_k"):
-                    e = relative_entry(plan.entries, row["point"], "k_" if row["source"] == "slide_k" else "")
+                e = plan_entry(plan, row)
                 if e is None:
                     continue
                 value = e.vector.real if row["source"] in ("omega", "epsilon") else e.value

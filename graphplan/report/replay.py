@@ -155,9 +155,11 @@ SAY: dict[str, tuple[str, str]] = {
                       "them (tan = ε/ω^2) and are proportional to them, so the figure {fig} is similar to {FIG}, turned by {turn}°"),
     "ratio line": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} мм",
                    "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} mm"),
-    "ratio triangle": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} мм, {qx} = {k}·{QX} = {qxmm} мм "
+    "ratio triangle": ("відношення {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} мм, "
+                       "{qx} = {k}·{QX} = {k}·{QXmm} = {qxmm} мм "
                        "(дуги з {p} і {q}; трикутник обходимо в тому самому напрямі, що й на ланці)",
-                       "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {pxmm} mm, {qx} = {k}·{QX} = {qxmm} mm "
+                       "the ratio {pq}/{PQ} = {pqmm}/{PQmm} = {k}; {px} = {k}·{PX} = {k}·{PXmm} = {pxmm} mm, "
+                       "{qx} = {k}·{QX} = {k}·{QXmm} = {qxmm} mm "
                        "(arcs from {p} and {q}; the triangle is gone round in the same sense as on the link)"),
     "guide word": ("напрямній", "the guide"),
 }
@@ -258,6 +260,17 @@ def numbers(plan: Plan, key: str, lang: str) -> tuple[str, str] | None:
     if e is None or e.mm is None:
         return None
     return fixed(e.mm, lang, 1), num(e.value, lang)
+
+
+def ratio_digits(k: float, lengths: list[float]) -> int:
+    """The fewest significant figures (3 … 5) of a similarity ratio ``k`` for which each written
+    product k·PX, with PX written to 0.1 mm, gives the 0.1 mm written for the true k·PX; 0 if none
+    does (PX itself rounded: the caller then writes the products of the written numbers)."""
+    for d in (3, 4, 5):
+        shown = float(f"{k:.{d}g}")
+        if all(f"{shown * float(f'{L:.1f}'):.1f}" == f"{k * L:.1f}" for L in lengths):
+            return d
+    return 0            # none: a length is itself written rounded
 
 
 # -- the replay ---------------------------------------------------------------------------------------
@@ -416,19 +429,31 @@ class Replay:
         fig, FIG = seg(seg(pw, qw), x), seg(seg(PL, QL), XL)
         collinear = abs(((XQ - XP).conjugate() * (X - XP)).imag) <= 1e-6 * max(PQ * abs(X - XP), 1e-12)
         if self.plan.kind == "velocity":
-            why = say("why similar v", fig=fig, FIG=FIG, link=body)
+            # ω3 by the link's number, as the sheet's tables write it
+            why = say("why similar v", fig=fig, FIG=FIG,
+                      link=str(n.mech.links[body].number) if body in n.mech.links else body)
         else:
             turn = math.degrees(cmath.phase((qq - pp) / (XQ - XP))) if abs(qq - pp) > 1e-9 else 0.0
             why = say("why similar a", fig=fig, FIG=FIG, turn=both(lambda lang: fixed(turn, lang, 1)))
         mmf = lambda v: both(lambda lang: fixed(v, lang, 1))    # noqa: E731
-        kf = both(lambda lang: num(k, lang, 3))
+        # the ratio to as many figures as make the written products come out as written (1,33·50,0
+        # would give 66,5 where the construction's 66,4 stands: 1,328·50,0 = 66,4)
+        kd = ratio_digits(k, [abs(X - XP)] + ([] if collinear else [abs(X - XQ)]))
+        kf = both(lambda lang: num(k, lang, kd or 4))
+        if not kd:          # a length written rounded (144.04 as 144,0): the products of what is written
+            ks = float(f"{k:.4g}")
+            k_of = lambda L: ks * float(f"{L:.1f}") / L if L else k     # noqa: E731
+        else:
+            k_of = lambda L: k      # noqa: E731
         if collinear:
             ratio = say("ratio line", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
-                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)), pxmm=mmf(k * abs(X - XP)))
+                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)),
+                        pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)))
         else:
             ratio = say("ratio triangle", pq=seg(pw, qw), PQ=seg(PL, QL), pqmm=mmf(abs(qq - pp)), PQmm=mmf(PQ), k=kf,
-                        px=seg(pw, x), PX=seg(PL, XL), pxmm=mmf(k * abs(X - XP)), qx=seg(qw, x), QX=seg(QL, XL),
-                        qxmm=mmf(k * abs(X - XQ)), p=pw, q=qw)
+                        px=seg(pw, x), PX=seg(PL, XL), PXmm=mmf(abs(X - XP)), pxmm=mmf(k_of(abs(X - XP)) * abs(X - XP)),
+                        qx=seg(qw, x), QX=seg(QL, XL), QXmm=mmf(abs(X - XQ)), qxmm=mmf(k_of(abs(X - XQ)) * abs(X - XQ)),
+                        p=pw, q=qw)
         return [why, ratio]
 
     def rates(self) -> None:
@@ -445,8 +470,8 @@ class Replay:
         mu_l = self.plans.mu_l
         for link_name, link in mech.links.items():
             rate = plan.entries.get(f"{kind}_{link_name}")
-            if rate is None or link_name == mech.crank.link or len(link.joints) < 2:
-                continue
+            if rate is None or link_name == mech.crank.link or (len(link.joints) < 2 and link.slides_on is not None):
+                continue        # (a block turns with its coulisse; the coulisse O2A3 itself is read: ω3 = v_A3/l_O2A3)
             own = set(link.joints) | set(link.local) | {nm for (pt, b), nm in sc.coincident.items() if b == link_name}
             best = None
             for key, e in plan.entries.items():
@@ -469,13 +494,19 @@ class Replay:
                 length = abs(n.position(pair[0]) - n.position(pair[1])) * mu_l
                 if length <= 0:
                     continue
-                gap = abs(e.value / length - abs(rate.vector.real))
+                # the textbook reads ω3 off the point its group found (v_A3/l_O2A3, v_BA/l_AB), not one
+                # found from it by similarity (S3, D): a joint or a coincident point first
+                found = 0 if pair[0] in link.joints or pair[0] not in link.local else 1
+                gap = (found, abs(e.value / length - abs(rate.vector.real)))
                 if best is None or gap < best[0]:
                     best = (gap, key, e, pair, length)
             if best is None:
                 continue
             _, key, e, (C, P), length = best
             signed = float(rate.vector.real)
+            if signed and e.value and abs(e.value / abs(signed) - length) <= 0.02 * length:
+                length = e.value / abs(signed)      # the length the plan divided by: a coulisse's l_O2A3 as the
+                #                                    ruler reads it off the position plan (18.0 mm, not 17.92)
             c = sub(C)
             vec = e.vector / plan.mu
             start = n.place(c) - vec        # the segment ends at c: from a (v_CA), n_1 (a^τ_CA) or the pole
@@ -487,12 +518,15 @@ class Replay:
             # ω3 by the link's number, as the sheet's tables write it
             fields = dict(w=w, link=str(link.number), rel=rel, pair=f"{P}{C}", seg=seg(n.word(p), c), s=s_,
                           unit=both(lambda lang: unit("rad/s" if kind == "omega" else "rad/s²", lang)))
+            # l to the figures that make (mm·μ)/l come out as the value written (0.40334, not 0.4033)
+            ld = next((d for d in (4, 5, 6) if num(e.mm * plan.mu / float(f"{length:.{d}g}"), "en")
+                       == num(abs(signed), "en")), 4) if e.mm and signed else 4
             if e.value == 0 or signed == 0:
                 caption = say("rate zero", **fields)
             else:
                 caption = say("rate", **fields, mm=both(lambda lang: fixed(e.mm, lang, 1)),
                               mu=both(lambda lang: num(plan.mu, lang)), munit=both(lambda lang: unit(munit, lang)),
-                              l=both(lambda lang: num(length, lang)), value=both(lambda lang: num(abs(signed), lang)),
+                              l=both(lambda lang: num(length, lang, ld)), value=both(lambda lang: num(abs(signed), lang)),
                               C=n.own_label(C), P=n.own_label(P), sense=say("ccw" if signed > 0 else "cw"),
                               signed=both(lambda lang: ("+" if signed > 0 else "−") + num(abs(signed), lang)))
             del pair_l
@@ -590,6 +624,8 @@ class Replay:
             for (vec, role, label, key), item in zip(e.chain, side.chain):
                 sub_ = key.partition("_")[2]
                 carrier = e.rule[1] if e.rule[0] == "link" else ""
+                if carrier in n.mech.links:          # ω3 in 2·ω3·v_A3A2: the link's number, as the sheets
+                    carrier = str(n.mech.links[carrier].number)
                 fields = dict(base=n.word(at), sub=sub_, carrier=carrier, end=label)
                 if item is None:
                     self.add([], say("zero " + role, **fields), eq)

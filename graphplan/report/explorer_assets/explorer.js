@@ -292,26 +292,37 @@
     }
     return true;
   }
-  const OFFSETS = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1]];
+  const OFFSETS = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1],
+    [1, 0.5], [-1, 0.5], [1, -0.5], [-1, -0.5], [0.5, 1], [-0.5, 1], [0.5, -1], [-0.5, -1]];
   function placeLabels(g, labels, segs, px, boxes) {
     // labels: {at:[x,y], text, cls, prefer:[dx,dy]}; segs: [[a,b]] in drawing units; boxes: taken boxes
     const size = LETTER * px, taken = boxes || [];
+    const vb = g.ownerSVGElement && g.ownerSVGElement.viewBox.baseVal;       // the view: a letter kept inside it
+    const view = vb && vb.width ? [vb.x, -(vb.y + vb.height), vb.x + vb.width, -vb.y] : null;
+    // a letter nearer another point than its own reads as that point's: each box is kept nearer its own
+    const boxDist = (b, p) => Math.hypot(Math.max(b[0] - p[0], 0, p[0] - b[2]), Math.max(b[1] - p[1], 0, p[1] - b[3]));
+    const anchors = labels.map((lb) => lb.at);
     labels.forEach((lb) => {
       const t = el("text", { x: 0, y: 0, class: "lbl " + (lb.cls || "") }, g);
       svgMarkup(t, lb.text, size);
       let bb;
       try { bb = t.getBBox(); } catch (e) { bb = { x: 0, y: -size, width: size * 0.65 * lb.text.length, height: size * 1.3 }; }
       const w = bb.width + 2 * px, h = bb.height + 2 * px, asc = -bb.y;
-      const gap = 3 * px;
+      const gap = 4.5 * px;                    // clear of the point's own circle (3.5 px)
       const order = lb.prefer ? OFFSETS.slice().sort((u, v) => (v[0] * lb.prefer[0] + v[1] * lb.prefer[1]) - (u[0] * lb.prefer[0] + u[1] * lb.prefer[1])) : OFFSETS;
       let best = null;
       order.forEach((o, rank) => {
-        for (const far of [1, 2.2]) {
+        for (const far of [1, 1.6, 2.2, 3]) {
           const cx = lb.at[0] + o[0] * (w / 2 + gap) * far, cy = lb.at[1] + o[1] * (h / 2 + gap) * far;
           const box = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
-          let cost = rank + (far > 1 ? 12 : 0);
+          let cost = rank + (far > 2.5 ? 24 : far > 2 ? 12 : far > 1 ? 6 : 0);
+          const own = boxDist(box, lb.at);
+          anchors.forEach((p) => {
+            if (Math.abs(p[0] - lb.at[0]) + Math.abs(p[1] - lb.at[1]) > 1e-6 && boxDist(box, p) < own) cost += 60;     // below a line crossed (100): never overprint
+          });
           taken.forEach((b) => { if (b[0] < box[2] && box[0] < b[2] && b[1] < box[3] && box[1] < b[3]) cost += 1000; });
           segs.forEach((s) => { if (clipHits(s[0], s[1], box)) cost += 100; });
+          if (view && (box[0] < view[0] || box[1] < view[1] || box[2] > view[2] || box[3] > view[3])) cost += 500;
           if (!best || cost < best.cost) best = { cost: cost, box: box };
         }
       });
@@ -403,17 +414,12 @@
     });
     S.links.forEach((L) => {
       const pts = L.joints.map((j) => at(j, i));
-      if (L.slot.length && pts.length >= 2) {
-        const a = pts[0], b = pts[pts.length - 1], n = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
-        const u = [(b[0] - a[0]) / n, (b[1] - a[1]) / n];
-        let lo = 0, hi = n;
-        L.slot.forEach((s) => { const p = at(s, i), t = (p[0] - a[0]) * u[0] + (p[1] - a[1]) * u[1]; lo = Math.min(lo, t - 6); hi = Math.max(hi, t + 6); });
-        seg([a[0] + lo * u[0], a[1] + lo * u[1]], [a[0] + hi * u[0], a[1] + hi * u[1]], "link");
-      }
-      if (pts.length >= 2) {
-        poly(g, pts, "link", pts.length > 2);
-        for (let k = 0; k + 1 < pts.length; k++) segs.push([pts[k], pts[k + 1]]);
-        if (pts.length > 2) segs.push([pts[pts.length - 1], pts[0]]);
+      // a coulisse along its guide, as the sheets draw it (Python's slot_line at every angle): to its end B
+      ((G.slots || {})[L.name] || []).forEach((per) => { const e = per[i]; seg([e[0], e[1]], [e[2], e[3]], "link"); });
+      if (pts.length >= 2) {           // the sheets' outline (model.linkshape): the bar to D, the plate round E
+        const shape = (L.outline && L.outline.length >= 2 ? L.outline : L.joints).map((j) => at(j, i));
+        poly(g, shape, "link", false);
+        for (let k = 0; k + 1 < shape.length; k++) segs.push([shape[k], shape[k + 1]]);
       }
       if (L.block) {
         const c = at(L.block, i), th = G.links[L.name].theta[i] * Math.PI / 180;
@@ -434,6 +440,14 @@
       boxes.push([p[0] - r, p[1] - r, p[0] + r, p[1] + r]);
       labels.unshift({ at: p, text: label(j) });
     }));
+    S.links.forEach((L) => (L.points || []).forEach((n) => {      // a link's own points beyond its joints: D, E
+      if (seen[n]) return;
+      seen[n] = 1;
+      const p = at(n, i), r = Math.max(0.7, 2.5 * px);
+      el("circle", { cx: r3(p[0]), cy: r3(-p[1]), r: r3(r), class: "point", "data-point": n }, g);
+      boxes.push([p[0] - r, p[1] - r, p[0] + r, p[1] + r]);
+      labels.push({ at: p, text: label(n) });
+    }));
     Object.keys(G.points).forEach((n) => {
       if (seen[n] || !/^S/.test(n)) return;
       const p = at(n, i);
@@ -441,8 +455,38 @@
       labels.push({ at: p, text: label(n) });
     });
     if (mark) markMechanism(svgEl, g, i, mark, px, segs);
-    placeLabels(el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl), labels, segs, px, boxes.slice());
+    const lg = el("g", svgEl === mechSvg ? { id: "mech-labels" } : { class: "rmech-labels" }, svgEl);
+    omega1(svgEl, g, lg, i, px, segs, placeLabels(lg, labels, segs, px, boxes.slice()));
     svgEl.setAttribute("data-kept", JSON.stringify(boxes.map((b) => b.map(r3))));
+  }
+  function omega1(svgEl, g, lg, i, px, segs, taken) {
+    // ω1: an arc about the crank's pivot in its sense (as the sheets draw it), crossing no link and no
+    // letter, off the support below, nearest opposite the crank; then its letter
+    const O = S.frame[S.crank.pivot], A = at(S.crank.pin, i), up = Math.atan2(A[1] - O[1], A[0] - O[0]), R = 20 * px;
+    const gap = (a, b) => Math.abs(((a - b + 3 * Math.PI) % (2 * Math.PI)) - Math.PI);
+    const sense = D.omega1 >= 0 ? 1 : -1;
+    const arc = (m) => { const out = []; for (let k = 0; k <= 12; k++) { const t = m - sense * 0.75 + sense * 1.5 * k / 12; out.push([O[0] + R * Math.cos(t), O[1] + R * Math.sin(t)]); } return out; };
+    const side = (a, b, c) => Math.sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    const meets = (p, q, a, b) => side(p, q, a) * side(p, q, b) < 0 && side(a, b, p) * side(a, b, q) < 0;
+    let mid = up + Math.PI, best = 1e9;
+    for (let k = 0; k < 24; k++) {
+      const m = up + Math.PI + (k % 2 ? 1 : -1) * Math.ceil(k / 2) * Math.PI / 12, a = arc(m);
+      let cost = Math.ceil(k / 2) + (gap(m, -Math.PI / 2) < 1.2 ? 50 : 0);     // the support: ±45° about down, the arc ±43°
+      for (let j = 0; j < 12; j++) segs.forEach((sg) => { if (meets(a[j], a[j + 1], sg[0], sg[1])) cost += 100; });
+      a.forEach((p) => taken.forEach((b) => { if (p[0] > b[0] && p[0] < b[2] && p[1] > b[1] && p[1] < b[3]) cost += 100; }));
+      const c = [O[0] + (R + 16 * px) * Math.cos(m), O[1] + (R + 16 * px) * Math.sin(m)];      // room for its letter
+      const lb = [c[0] - 12 * px, c[1] - 9 * px, c[0] + 12 * px, c[1] + 9 * px];
+      segs.forEach((sg) => { if (clipHits(sg[0], sg[1], lb)) cost += 30; });
+      taken.forEach((b) => { if (b[0] < lb[2] && lb[0] < b[2] && b[1] < lb[3] && lb[1] < b[3]) cost += 30; });
+      if (cost < best) { best = cost; mid = m; }
+    }
+    const pts = arc(mid);
+    poly(g, pts, "omega1", false);
+    arrow(g, pts[10], pts[12], "omega1", px * 0.8);
+    for (let k = 0; k < 12; k++) segs.push([pts[k], pts[k + 1]]);
+    placeLabels(lg, [{ at: [O[0] + 1.15 * R * Math.cos(mid), O[1] + 1.15 * R * Math.sin(mid)], text: "ω_1",
+      prefer: [Math.cos(mid), Math.sin(mid)] }], segs, px, taken);
+    svgEl.setAttribute("data-omega1", JSON.stringify({ sense: sense, from: pts[0].map(r3), to: pts[12].map(r3), centre: O }));
   }
   function guideAngle(point) {
     const gd = S.guides.find((x) => x.point === point);
@@ -563,9 +607,11 @@
     clear(svg);
     const px = z.px(), g = el("g", {}, svg), segs = [];
     S.links.forEach((L) => {
-      if (L.name === S.crank.link || L.joints.length < 2) return;
-      const fig = L.joints.map((j) => imageOf(kind, j, i));
-      poly(g, fig, "figure", L.joints.length > 2);
+      // the link's image, similar to it: the same outline through the images of its points (a coulisse's too)
+      const names = L.outline && L.outline.length >= 2 ? L.outline : L.joints;
+      if (L.name === S.crank.link || names.length < 2) return;
+      const fig = names.map((j) => imageOf(kind, j, i));
+      poly(g, fig, "figure", false);
     });
     Object.keys(G.points).forEach((n) => { const p = planVector(kind, n, i); arrow(g, [0, 0], p, "exact", px); segs.push([[0, 0], p]); });
     const lab = labKey[i], rec = lab && recByKey[kind][lab.key];
@@ -582,6 +628,7 @@
 
   // -- the values' table --------------------------------------------------------------------------------------
   function rowSymbol(row) {
+    if (row.symbol) return row.symbol;          // the sheets' own (report.plans.symbol): ω_3, v_A3A2
     if (row.source === "point") return (row.plan === "velocity" ? "v_{" : "a_{") + row.name + "}";
     if (row.source === "omega") return "ω_{" + row.name + "}";
     if (row.source === "epsilon") return "ε_{" + row.name + "}";
@@ -740,6 +787,7 @@
   let current = null, stepNo = 0, returnTo = null;
   const replayZ = Zoomable(rsvg, () => showStep());
   const rmechSvg = $("rmech"), rmechZ = Zoomable(rmechSvg, () => showStep());
+  rmechSvg.style.aspectRatio = mechSvg.style.aspectRatio;     // the mechanism's own shape: a tall one is not shrunk to a 4:3 strip
   function planName(r) {
     return W()[r.kind] + ", " + (r.index !== null ? fill(W().at, { k: r.index }) : "φ = " + fx(r.phi, 1) + "°");
   }
