@@ -458,7 +458,7 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, counts: tuple[int, 
 
 
 ACROSS = " across"
-SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS)
+SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS, "low", "low" + ACROSS, "lever up" + ACROSS)
 # the families grown in turn in these orders; the better composition kept (a tight sheet where the
 # force plans, grown first, leave the groups at 0.4 of their size has a twin with both at ≥ 0.56)
 ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"),
@@ -494,6 +494,15 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     if shape == "column":
         rows = [Row([S, groups] + at[1]), Row([A, L] + charts[:1] + at[2]), Row(charts[1:] + at[3])]
         return Row([Stack([r for r in rows if r.children]), C], flush=True)
+    if shape in ("low", "lever up"):
+        # the scheme and the groups across the sheet's full width, the column under them at the
+        # right (the tables a short column: the press's two parts 348 mm high left 226 × 346 mm
+        # under them blank while its groups were drawn at 1:10 beside a 1:4 scheme); "lever up" —
+        # the lever in the top row too, where the row beside the column leaves it no room
+        up = [L] if shape == "lever up" else []
+        rows = [Row([A] + ([] if up else [L]) + charts[:1] + at[2]), Row(charts[1:] + at[3])]
+        return Stack([Row([S, groups] + up + at[1]),
+                      Row([Stack([r for r in rows if r.children]), C], flush=True)], flush=True)
     rows = [Row([S, groups, A] + at[1]), Row([L] + charts[:2] + at[2]), Row(charts[2:] + at[3] + [C], flush=True)]
     return Stack(rows, flush=True)
 
