@@ -285,9 +285,7 @@ def hodograph_scale(span: float, size: float) -> float:
     """μR (N/mm) that draws a hodograph's larger extent ``span`` (N) at most ``size`` mm: the
     smallest value of the series the program's other scales take (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k,
     graphic.scales) that does — 270 and 260 N/mm on the press's sheet were no scale a draftsman
-    sets (now 300: the curve at least 1/1.6 of the size)."""
-    import math
-    from graphplan.graphic.scales import GOST_BETWEEN, SERIES, series_value
+    sets (now 150 and 250; the curve at least 1/1.6 of the size)."""
     need = span / size
     k0 = math.floor(math.log10(need))
     return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES + GOST_BETWEEN)
