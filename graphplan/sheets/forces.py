@@ -478,7 +478,9 @@ def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
-    the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
+    the sheet's full height at the right; "bands" — the column under the groups' band; "low" — the
+    scheme and the groups across the full width, the column under them at the right beside the
+    acceleration plan, the lever and the charts; "lever up" — so, the lever in the top row; "… across"
     — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
     slotter's at 1:5 instead of 1:10). The hodographs' grid ends row ``hrow`` (1, 2 or 3): the
     charts' row, or beside the groups or the lever where those leave the room (the slotter's five
