@@ -185,3 +185,16 @@ def test_the_press_groups_at_least_at_the_schemes_scale(press):
         assert gp.mu_l <= p.mu["scheme"] * (1 + 1e-9), (gp.label, gp.mu_l, p.mu["scheme"])
         arms = [abs(t.arm_mm) for eq in gp.equations for t in eq.terms if not t.couple and abs(t.arm_mm) > 0]
         assert min(arms) >= 2.0, (gp.label, arms)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["shaper", "slotter"])
+def test_the_examples_sheets_letter_each_force_at_its_own_arrow(name):
+    """The examples' scheme and groups as their A1 force sheets draw them, in both languages."""
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    p, _, dr = sf.plan(example(name), form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    for lang in ("uk", "en"):
+        d = dr.drawings(p.mu, lang)
+        assert not [s for rec in d["scheme"] + d["groups"] for s in _strays(rec, lang)], lang
