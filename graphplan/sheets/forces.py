@@ -790,7 +790,9 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if e <= 0:
             continue
         best, s = None, finer(base)
-        while s is not None and e / s <= largest / base + 1e-9:
+        # no larger than the largest group's drawing — or than the scheme's scale, which every
+        # group takes where the sheet has room (review4: the groups at 1:10 beside a 1:4 scheme)
+        while s is not None and (e / s <= largest / base + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)):
             w, h = dr.group_size(mu, i, s, fam.caption)
             trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
                                                                        w + GROW_MARGIN, h + GROW_MARGIN),
