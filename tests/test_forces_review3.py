@@ -214,7 +214,11 @@ def test_a_hodographs_jump_is_joined_where_the_moment_switches(rocker_turn):
         for q in jumps:
             assert ROLES[q.role] == THIN and q.role in DASHED_ROLES
 
-    from graphplan.drawing.charts import records     # the caption says once what the dashed line is
-    said = [q.text for name, rec in records(rocker_turn, lang="en").items() if name.startswith("hodograph")
-            for q in rec.items if q.kind == "text" and "dashed" in q.text]
-    assert said == ["dashed: the jump due to M_{3}"], said
+    # each hodograph that draws a jump says what the dashed line is (review4 #11: said under one of
+    # four, the other three left to guess)
+    from graphplan.drawing.charts import records
+    for name, rec in records(rocker_turn, lang="en").items():
+        if name.startswith("hodograph"):
+            said = [q.text for q in rec.items if q.kind == "text" and "dashed" in q.text]
+            drawn = any(q.step.endswith("the jump") for q in rec.items)
+            assert said == (["dashed: the jump due to M_{3}"] if drawn else []), (name, said)

@@ -84,10 +84,11 @@ def test_the_lever_states_its_scale_and_its_p_v_a(planned):
 
 
 def test_hodographs_read_at_sixty_millimetres(planned):
-    """Each hodograph's larger extent (its curve, the origin and the axes through it) ≥ 60 mm on the
-    shaper's and the four-bar's A1 sheets; the slotter's five, beside its narrow groups, ≥ 54 mm (no
-    room for more without drawing its scheme and force plans a step smaller)."""
-    least = 54.0 if planned["name"] == "slotter" else 60.0
+    """Each hodograph's larger extent (its curve, the origin and the axes through it, 10 mm more) at
+    least what its μR, a value of the series (``hodograph_scale``), draws of a 60-mm size on the
+    shaper's and the four-bar's A1 sheets — 1/1.6 of it where the series steps from 2.5 to 4; the
+    slotter's five, beside its narrow groups, of 54 mm."""
+    least = (54.0 if planned["name"] == "slotter" else 60.0) / 1.6 + 10.0
     recs = planned["drawings"]["hodographs"]
     assert recs
     for rec in recs:
@@ -182,7 +183,10 @@ def test_larger_choices_are_larger_and_bounded(value, mu, longest):
 
 
 def test_hodograph_scale_fills_its_size():
-    """A hodograph's curve with the origin spans 0.9–1 of its size at the μR it states."""
+    """A hodograph's μR is a value of the series 1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k (the press's 270
+    and 260 N/mm were none), the largest that draws the curve with the origin within its size:
+    1/1.6 of it at least (the series' widest step, 2.5 → 4)."""
+    import math
     from graphplan.drawing import charts
     st = example("shaper")
     t = charts.turn(st, 72)
@@ -191,5 +195,8 @@ def test_hodograph_scale_fills_its_size():
         f = t.ks.reactions[key].force
         span = max(max(0.0, f.real.max()) - min(0.0, f.real.min()), max(0.0, f.imag.max()) - min(0.0, f.imag.min()))
         drawn = span / rec.scales["mu_R"]
-        assert 54.0 - 1e-9 <= drawn <= 60.0 + 1e-9, (key, drawn)
+        assert 60.0 / 1.6 - 1e-9 <= drawn <= 60.0 + 1e-9, (key, drawn)
+        mu = rec.scales["mu_R"]
+        mantissa = mu / 10.0 ** math.floor(math.log10(mu) + 1e-12)
+        assert any(abs(mantissa - m) < 1e-9 for m in (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5)), mu
         assert np.isfinite(drawn)

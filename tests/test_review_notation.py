@@ -196,14 +196,16 @@ def test_no_force_lies_on_a_link_on_the_scheme_or_a_line_of_the_lever(sixbar_for
 
 
 def test_the_sliders_guide_is_drawn_with_its_hatching(sixbar_forces):
-    """Correction 10: the slider D on the scheme and on its group stands on its guide as on the
-    kinematics sheet: a solid line of the frame along the guide (y = 0.30 m, horizontal) through
-    the block with short hatch strokes on one side — none under the block, none across a line."""
+    """Correction 10: the slider D on the scheme stands on its guide as on the kinematics sheet: a
+    solid line of the frame along the guide (y = 0.30 m, horizontal) through the block with short
+    hatch strokes on one side — none under the block, none across a line. Its group is drawn freed
+    from the frame (review4 #10: the press's II(4–5) kept the guide): no frame line, no hatching."""
     fp, mu = sixbar_forces["fp"], sixbar_forces["mu"]
     drawings = sixbar_forces["dr"].drawings(mu, "uk")
     groups = drawings["groups"]
     gp45 = next(k for k, g in enumerate(fp.groups) if g.label.startswith("II(4-5)"))
-    for rec, m in ((drawings["scheme"][0], mu["scheme"]), (groups[gp45], fp.groups[gp45].mu_l or mu["groups"])):
+    assert not [p for p in groups[gp45].items if p.layer == "frame"], groups[gp45].title
+    for rec, m in ((drawings["scheme"][0], mu["scheme"]),):
         d = complex(fp.ks.reactions["R05"].at[0]) / m
         guide = [p for p in rec.items if p.kind == "segment" and p.role == "frame"
                  and all(abs(y - d.imag) < 1e-6 for _, y in p.points)

@@ -282,11 +282,14 @@ HODOGRAPH_MM = 60.0    # a hodograph's larger extent (its curve with the origin)
 
 
 def hodograph_scale(span: float, size: float) -> float:
-    """μR (N/mm) that draws a hodograph's larger extent ``span`` (N) nearly ``size`` mm and no more:
-    a round value where it draws ≥ 0.9 of it, else span/size at three figures (graphic.scales.filling)
-    — the series' next would draw it up to half as large."""
-    from graphplan.graphic.scales import filling
-    return filling(span, size)
+    """μR (N/mm) that draws a hodograph's larger extent ``span`` (N) at most ``size`` mm: the
+    smallest value of the series the program's other scales take (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k,
+    graphic.scales) that does — 270 and 260 N/mm on the press's sheet were no scale a draftsman
+    sets (now 150 and 250; the curve at least 1/1.6 of the size)."""
+    need = span / size
+    k0 = math.floor(math.log10(need))
+    return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES + GOST_BETWEEN)
+               if m >= need * (1 - 1e-12))
 
 
 def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
@@ -333,7 +336,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     y = rec.bounds()[1] - 6.0
     rec.label((x0, y), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
-    if jumps and say_jump:      # said once, under the first hodograph that jumps
+    if jumps and say_jump:      # said under every hodograph that draws a jump
         ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
         rec.label((x0, y - 5.0), word("fs jump", lang, what=", ".join(ext)), size=2.5, step=step)
     return rec
@@ -468,8 +471,6 @@ def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | Non
         out["resistance"] = res
     for key in slider_reactions(t):
         out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
-    said = False
-    for key in t.revolute:
-        rec = out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang, say_jump=not said)
-        said = said or any(p.step.endswith("the jump") for p in rec.items)
+    for key in t.revolute:      # each hodograph that draws a jump says what the dashes are
+        out[f"hodograph {key}"] = hodograph_record(t, key, HODOGRAPH_MM * kh, lang=lang)
     return out

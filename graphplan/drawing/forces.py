@@ -469,7 +469,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
         if off:                          # the line itself along the arrow, where the arm ends
             rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
-    for z, g in guides:
+    for z, g in guides if gp.kind == "mechanism" else ():
+        # the scheme keeps its guides; a group freed from the frame shows the reaction (R05) in
+        # the guide's place — its block's arrows still laid clear of the guide's line
         _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step)
     lab = Labeler(rec)
     if omega_at is not None:
@@ -484,11 +486,17 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
+    owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     for tip, name, u in labels:
+        if name in span:       # a force's letter: read as its own arrow's, not a neighbour's
+            a, b = span[name]
+            mid = 0.5 * (a + b)
+            owned[len(lab.asked)] = ((a, b), [LabelRequest(mid, force_symbol(name, lang), side, LETTER, step=step)
+                                              for side in (1j * _unit(b - a), -1j * _unit(b - a))])
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
     # h_G3 on the loom's rocker) had their names stacked against each other
-    return _apart(rec, lab.asked)
+    return _apart(rec, lab.asked, owned, list(span.values()))
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -579,14 +587,26 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     return rec
 
 
-def _apart(rec: Record, asked: list[LabelRequest]) -> Record:
+def _apart(rec: Record, asked: list[LabelRequest],
+           owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] | None = None,
+           arrows: list[tuple[complex, complex]] = ()) -> Record:
     """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
-    ring its letter height out, so that no two stand closer than their height; the rings go."""
-    from graphplan.drawing.labels import place_labels
+    ring its letter height out, so that no two stand closer than their height; the rings go.
+    A force's letter (``owned``: the request's index → its arrow, tail and head, and further
+    anchors along its shaft) is set only where it stands nearer its own arrow than any other of
+    the ``arrows`` (labels.place_owned_line): at the ram the press's "P_E" stood by the head of
+    Φ4's short arrow and "Φ4" beside the shaft of P_E's."""
+    from graphplan.drawing.labels import place_labels, place_owned_line
+    owned = owned or {}
     rings = []
-    for req in asked:
+    for i, req in enumerate(asked):
         n = len(rec.items)
-        place_labels(rec, [req], layer="labels")
+        if i in owned:
+            mine, more = owned[i]
+            others = [ab for ab in arrows if ab is not mine and ab != mine]
+            place_owned_line(rec, [req, *more], mine, others, layer="labels")
+        else:
+            place_labels(rec, [req], layer="labels")
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue

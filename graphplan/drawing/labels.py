@@ -451,14 +451,17 @@ def _clip_params(sx: float, sy: float, ex: float, ey: float, x0: float, y0: floa
     return t0, t1
 
 
-def _far(ob: Obstacles, req: LabelRequest, ink: Box):
-    """A free spot farther out, joined to the point by a leader that crosses no label."""
+def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
+    """A free spot farther out, joined to the point by a leader that crosses no label (and where
+    ``ok(box)``, when given)."""
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
     n = FAR_DIRECTIONS
     for ring in range(len(FAR)):          # ring by ring, nearest first: the same order, counted lazily
         counts = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
         for k in np.nonzero(counts == 0)[0] + ring * n:
             box = tuple(boxes[k])
+            if ok is not None and not ok(box):
+                continue
             a, b = _leader(req.at, box)
             if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
                 continue
@@ -633,4 +636,79 @@ def place_owned(record: Record, requests: list[LabelRequest], layer: str = "labe
             a, b = leader
             record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
         record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
+    return record
+
+
+OWN_LINE_MM = 1.0    # a force's letter at least this much nearer its own arrow than any other arrow
+LED_CLEAR = 2.0      # … or, on a leader from its head, at least this far from every other arrow
+
+
+def _segments_cross(a: complex, b: complex, c: complex, d: complex) -> bool:
+    """Whether the segments a–b and c–d meet."""
+    def side(p: complex, q: complex, r: complex) -> float:
+        return ((q - p).conjugate() * (r - p)).imag
+    d1, d2, d3, d4 = side(c, d, a), side(c, d, b), side(a, b, c), side(a, b, d)
+    return d1 * d2 <= 0 and d3 * d4 <= 0 and (d1 != d2 or d3 != d4)
+
+
+def box_to_segment(box: Box, a: complex, b: complex) -> float:
+    """The distance (mm) between a box and the segment a–b (0 where they meet): the least of the
+    segment's ends to the box and the box's corners to the segment."""
+    if _segment_meets_box(a, b, box):
+        return 0.0
+    d = b - a
+    n2 = abs(d) ** 2
+
+    def to_seg(z: complex) -> float:
+        t = 0.0 if n2 < 1e-18 else min(max(((z - a) * d.conjugate()).real / n2, 0.0), 1.0)
+        return abs(z - (a + t * d))
+    corners = (complex(box[0], box[1]), complex(box[2], box[1]), complex(box[2], box[3]), complex(box[0], box[3]))
+    return min([_box_gap(box, a), _box_gap(box, b)] + [to_seg(c) for c in corners])
+
+
+def owns_line(box: Box, mine: tuple[complex, complex], others: list[tuple[complex, complex]],
+              margin: float = OWN_LINE_MM) -> bool:
+    """Whether a label's box reads as its own arrow's (``mine``, tail → head): nearer it than any of
+    the ``others`` by ``margin`` and by half again its own distance."""
+    d = box_to_segment(box, *mine)
+    return all(box_to_segment(box, *o) >= max(d + margin, 1.5 * d) for o in others)
+
+
+def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tuple[complex, complex],
+                     others: list[tuple[complex, complex]], layer: str = "labels") -> Record:
+    """A force's letter that must read as its own arrow's where other arrows pass near (Φ4 and P_E
+    side by side at the press's ram): the first free spot beside the first of its anchors (its
+    head, then along its shaft) that ``owns_line``; else farther out, on a leader, where the box
+    still does; else as ``place_labels`` places any label."""
+    if _SKETCH[-1] or not alternatives:
+        return record
+    ob = obstacles(record.items)
+    near = [o for o in others if min(abs(o[0] - mine[0]), abs(o[0] - mine[1]), abs(o[1] - mine[0]),
+                                     abs(o[1] - mine[1])) < 200.0]
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+        local = ob.near(req.at, NEAR[-1] + size)
+        boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
+        k = next((k for k in np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
+                  if owns_line(tuple(boxes[k]), mine, near)), None)
+        if k is not None:
+            record.label((starts[k].real, starts[k].imag), req.text, size=req.size, anchor="start",
+                         step=req.step, layer=layer)
+            return record
+    req = alternatives[0]
+    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+    size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+    def led(box) -> bool:
+        """On a leader from its head: the box clear of the other arrows, the leader across none."""
+        a, b = _leader(req.at, box)
+        return (owns_line(box, mine, near) or all(box_to_segment(box, *o) >= LED_CLEAR for o in near)
+                and not any(_segments_cross(a, b, *o) for o in near))
+    spot = _far(ob.near(req.at, FAR[-1] + size), req, ink, led)
+    if spot is None:
+        return place_labels(record, [req], layer)
+    box, start, (a, b) = spot
+    record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
+    record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
     return record

@@ -458,7 +458,7 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, counts: tuple[int, 
 
 
 ACROSS = " across"
-SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS)
+SHAPES = ("column", "bands", "column" + ACROSS, "bands" + ACROSS, "low", "low" + ACROSS, "lever up" + ACROSS)
 # the families grown in turn in these orders; the better composition kept (a tight sheet where the
 # force plans, grown first, leave the groups at 0.4 of their size has a twin with both at ≥ 0.56)
 ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hodographs"),
@@ -478,7 +478,9 @@ def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
-    the sheet's full height at the right; "bands" — the column under the groups' band; "… across"
+    the sheet's full height at the right; "bands" — the column under the groups' band; "low" — the
+    scheme and the groups across the full width, the column under them at the right beside the
+    acceleration plan, the lever and the charts; "lever up" — so, the lever in the top row; "… across"
     — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
     slotter's at 1:5 instead of 1:10). The hodographs' grid ends row ``hrow`` (1, 2 or 3): the
     charts' row, or beside the groups or the lever where those leave the room (the slotter's five
@@ -494,6 +496,15 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     if shape == "column":
         rows = [Row([S, groups] + at[1]), Row([A, L] + charts[:1] + at[2]), Row(charts[1:] + at[3])]
         return Row([Stack([r for r in rows if r.children]), C], flush=True)
+    if shape in ("low", "lever up"):
+        # the scheme and the groups across the sheet's full width, the column under them at the
+        # right (the tables a short column: the press's two parts 348 mm high left 226 × 346 mm
+        # under them blank while its groups were drawn at 1:10 beside a 1:4 scheme); "lever up" —
+        # the lever in the top row too, where the row beside the column leaves it no room
+        up = [L] if shape == "lever up" else []
+        rows = [Row([A] + ([] if up else [L]) + charts[:1] + at[2]), Row(charts[1:] + at[3])]
+        return Stack([Row([S, groups] + up + at[1]),
+                      Row([Stack([r for r in rows if r.children]), C], flush=True)], flush=True)
     rows = [Row([S, groups, A] + at[1]), Row([L] + charts[:2] + at[2]), Row(charts[2:] + at[3] + [C], flush=True)]
     return Stack(rows, flush=True)
 
@@ -798,7 +809,9 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if e <= 0:
             continue
         best, s = None, finer(base)
-        while s is not None and e / s <= largest / base + 1e-9:
+        # no larger than the largest group's drawing — or than the scheme's scale, which every
+        # group takes where the sheet has room (review4: the groups at 1:10 beside a 1:4 scheme)
+        while s is not None and (e / s <= largest / base + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)):
             w, h = dr.group_size(mu, i, s, fam.caption)
             trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
                                                                        w + GROW_MARGIN, h + GROW_MARGIN),
