@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
-from graphplan.sheets.compose import Family, choose_levels, coarser, field_of, finer, notes_height
+from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError
 
@@ -98,10 +98,14 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
         return Row([Stack([Row([P, D]), Row(vg + ag)]), C], flush=True)
     if shape == "accel":
         return Stack([Row([P, D] + ag), Row(vg + [C], flush=True)], flush=True)
+    if shape == "stacked":
+        return Row([Stack([P, D]), Stack(vg + ag), C], flush=True)
+    if shape == "stacked-bands":
+        return Row([Stack([P, D]), Stack(vg + [Row(ag + [C], flush=True)], flush=True)], flush=True)
     return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
 
 
-SHAPES = ("bands", "column", "accel", "sides")
+SHAPES = ("bands", "column", "accel", "sides", "stacked", "stacked-bands")
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -201,24 +205,51 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
                 others = [nat.families[fam].rel(current[fam]) for fam in FAMILIES
                           if fam != name and (fam != "acceleration" or has_a)]
                 return not others or nat.families[name].rel(bigger) <= max(1.0, BALANCE * min(others)) + 1e-9
-            mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
-            if mu is None:
-                continue
-            k_d, D_k = 1.0, D
-            if not legible(nat, mu):
-                found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
-                if found is not None:
-                    mu, k_d = found
-                    D_k = Leaf("diagrams", *diagrams_size(dr, nat, k_d))
-            rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
-            score = (legible(nat, mu), round(min(rel), 6), round(sum(math.log(r) for r in rel), 6),
-                     k_d, factor == TABLES, -SHAPES.index(shape))
-            _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
-            counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
-            if best is None or cand[0] > best[0]:
-                best = cand
+            balanced_mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
+            for mu in (balanced_mu, position_first(nat, fits, balanced)):
+                if mu is None:
+                    continue
+                k_d, D_k = 1.0, D
+                if not legible(nat, mu):
+                    found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
+                    if found is not None:
+                        mu, k_d = found
+                        D_k = Leaf("diagrams", *diagrams_size(dr, nat, k_d))
+                rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
+                score = (legible(nat, mu), main_rel(nat, mu), round(min(rel), 6),
+                         round(sum(math.log(r) for r in rel), 6), k_d, factor == TABLES, -SHAPES.index(shape))
+                _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
+                counts = tuple(len(g) for g in split(tabs, parts))
+                cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
+                if best is None or cand[0] > best[0]:
+                    best = cand
     return best[1] if best else None
+
+
+MAIN = 1.0     # the position plan, the sheet's main drawing, grows first up to this share of its target
+
+
+def main_rel(nat: Natural, mu: dict[str, float]) -> float:
+    """How large the position plan is drawn against its target, up to ``MAIN`` (the composition
+    prefers a larger one before any other drawing grows)."""
+    return round(min(nat.families["position"].rel(mu["position"]), MAIN), 6)
+
+
+def position_first(nat: Natural, fits, balanced) -> dict[str, float] | None:
+    """The scales where the position plan, the sheet's main drawing (LAYOUT.md), is given its room
+    first: the velocity and acceleration plans just legible (``_legible``), the position plan grown
+    from the smallest common size while the composition fits, up to ``MAIN`` of its target; then
+    every family grown in turn as ``choose_levels`` does. None where the legible plans leave no room."""
+    fams = nat.families
+    mu = {fam: just_legible(fams[fam]) if fam != "position" else fams[fam].start(FACTORS[-1]) for fam in fams}
+    if not fits(mu):
+        return None
+    while True:
+        bigger = finer(mu["position"])
+        if fams["position"].rel(bigger) > MAIN + 1e-9 or not fits({**mu, "position": bigger}):
+            break
+        mu["position"] = bigger
+    return choose_levels(fams, fits, ("velocity", "position", "acceleration"), balanced, start=mu)
 
 
 def legible_where_room(dr: Drafter, nat: Natural, mu: dict[str, float], fits
@@ -323,6 +354,14 @@ def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
     return rows
 
 
+def just_legible(fam: Family) -> float:
+    """The coarsest μ at which the family's plans read: the series' (``_legible``) or the lab's own,
+    p_v a (π a) chosen ``LEGIBLE_MM`` long (``legible_where_room``), whichever draws them smaller."""
+    from graphplan.graphic.scales import chosen_length
+    own = chosen_length(fam.principal, LEGIBLE_MM, LEGIBLE_READS)
+    return max(_legible(fam), own if readable(fam, own) else 0.0)
+
+
 def _legible(fam: Family) -> float:
     """The coarsest standard μ at which the family's plans read (``readable``)."""
     mu = fam.start(1.0)
@@ -333,12 +372,13 @@ def _legible(fam: Family) -> float:
     return mu
 
 
-def room(f: Form) -> tuple[float, ...]:
+def room(f: Form, later: bool = False) -> tuple[float, ...]:
     """Where one drawing fits an empty sheet of the format: (the field's width, its height over the
-    title block, the width beside the title block, the field's height), mm."""
-    from graphplan.sheets.compose import keep_out
+    title block, the width beside the title block, the field's height), mm — ``later``: a set's
+    later sheet, whose title block is form 2a (15 mm high, not 55)."""
+    from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
-    keep = keep_out(f)
+    keep = later_keep(f) if later else keep_out(f)
     height = region[3] - region[1]
     return (region[2] - region[0], keep[1] + height - keep[3], keep[0] - region[0], height)
 
@@ -413,6 +453,15 @@ def drawn_share(dr: Drafter, k) -> float:
     return math.log(size(k) / size(1.0)) / 2
 
 
+def flat(dr: Drafter, k) -> int:
+    """1 where a diagram of size ``k`` is drawn lower than ``DIAGRAM_MM`` (with its axis): a set,
+    which has a sheet for its diagrams, weighs that like one more sheet (the crank-slider's A3 set
+    drew v 26 mm and a 22 mm high under s 64 mm; the lab's model, whose poles are given, a 15.5 mm
+    at L 240 mm where L 154 mm draws it 38 mm)."""
+    from graphplan.sheets.kinematics import DIAGRAM_MM
+    return int(min(dr.drawn(k)[1:]) < DIAGRAM_MM - 1e-6)
+
+
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
@@ -423,10 +472,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     ``set_diagrams``'; where they do not fit beside the position plan, both orders are tried (the
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
     sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
-    from graphplan.sheets.compose import keep_out
+    from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
-    keep = keep_out(f)
+    keep, later = keep_out(f), later_keep(f)
 
     def alone(size) -> bool:              # fits an empty sheet beside or over the title block
         return room_fits(room(f), *size)
@@ -446,7 +495,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         floor[fam] = fitted(fam, floor[fam])
     top = fitted("position", fams["position"].start(2.0))
     best = None
-    r = room(f)
+    r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
     wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
@@ -457,7 +506,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 they would take a sheet of their own."""
                 found = None
                 for nw in wide:
-                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep)
+                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later=later)
                     if out is None:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
@@ -487,13 +536,14 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
-                # (its crank shorter than CRANK_MM where a sheet holds a larger one) and a sheet
-                # holding the notes alone; of as many, the larger drawings (then the fuller
-                # emptiest sheet)
+                # (its crank shorter than CRANK_MM where a sheet holds a larger plan: the A3
+                # coulisse, whose crank is 28 mm at the largest, was drawn at 1:10, 11 mm), a
+                # diagram lower than DIAGRAM_MM (``flat``) and a sheet holding the notes alone;
+                # of as many, the larger drawings (then the fuller emptiest sheet)
                 wrong = 0 if dr.diagrams_right(k) else 1
-                small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9
-                            and fams["position"].drawn(top) >= CRANK_MM - 1e-9)
-                key = (count + wrong + small + orphan, wrong, -(factor == TABLES), -round(rel, 6), -round(fill, 1))
+                small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9 and mu["position"] > top)
+                key = (count + wrong + small + orphan + flat(dr, k), wrong, -(factor == TABLES), -round(rel, 6),
+                       -round(fill, 1))
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))
     if best is None:
