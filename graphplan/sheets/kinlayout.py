@@ -89,7 +89,11 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
     velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
     height, the rest in those two bands; "accel" — the acceleration plans beside the position plan
     and the diagrams, the velocity plans beside the column; "sides" — the position plan over the
-    velocity plans, beside them the diagrams over the acceleration plans over the column."""
+    velocity plans, beside them the diagrams over the acceleration plans over the column; "stacked" —
+    the position plan over the diagrams, beside them the velocity plans over the acceleration plans,
+    then the column; "stacked-bands" — the position plan over the diagrams, beside them the velocity
+    plans over the acceleration plans and the column (a long or tall position plan: it and the
+    diagrams need not share a row's width)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
     if shape == "bands":
@@ -158,8 +162,10 @@ def _grids(n: int) -> list[int]:
 
 def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     """The best one-sheet composition: for each lettering of the tables, each shape and each order
-    of growth, the scales by ``choose_levels``; the one whose plans are drawn largest (the product
-    of the principal segments), 3.5 mm tables where they cost no drawing a step."""
+    of growth, the scales by ``choose_levels`` (all families grown together, and ``position_first``);
+    the legible one whose position plan is drawn largest (up to ``MAIN`` of its target), then whose
+    plans are drawn largest (the smallest, then the product of the principal segments), 3.5 mm
+    tables where they cost no drawing a step."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     has_a = nat.count["acceleration"] > 0
