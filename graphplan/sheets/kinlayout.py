@@ -29,6 +29,7 @@ SET_LARGEST = 1.25     # a set's principal segments grow to at most this times t
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
 HEIGHTS = (1.25, 0.5)    # a set's diagrams' height factors: from s at most 100 mm high down to 40 mm …
 HEIGHT_STEP = 0.05       # … in these steps (4 mm of s's allowance)
+LEAST_TALLER = 4         # a flat one-factor drawing: this many steps taller tried for one that is not
 TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
 
 
@@ -424,6 +425,15 @@ def set_diagrams(dr: Drafter, nat: Natural, r: tuple[float, ...]) -> list[float 
             if tall is not None and room_fits(r, *diagrams_size(dr, nat, (k, tall))):
                 out.append((k, tall))
                 tall_found = tall_found or dr.diagrams_right((k, tall))
+        if k in out and flat(dr, k) and tall_found:
+            # the one factor draws a diagram flat (the shaper's A2 v 38 mm): the least taller one that
+            # does not, where it is lower than the tallest (a block that may still share its sheet)
+            for t in (round(k + j * HEIGHT_STEP, 6) for j in range(1, LEAST_TALLER + 1)):
+                if t >= max(x[1] for x in out if isinstance(x, tuple)) - 1e-9:
+                    break
+                if room_fits(r, *diagrams_size(dr, nat, (k, t))) and not flat(dr, (k, t)):
+                    out.append((k, t))
+                    break
     return out or list(DIAGRAM_SIZES[-1:])
 
 
