@@ -53,12 +53,12 @@ def test_the_position_plan_is_the_a1_sheets_main_drawing(name):
             assert main > area(*nat.families[fam].size(p.mu[fam])), (name, fam)
 
 
-@pytest.mark.parametrize("fmt", ["A3", "A2"])
-def test_a_sets_diagrams_are_drawn_readably_high(fmt):
-    """The crank-slider's A3 and A2 sets: each of s, v, a drawn at least ``READABLE_MM`` high (the
-    curve's extent with its axis, off the drawn record's ordinates), at the lab's scales (μs of the
-    standard series, H1 and H2 whole mm within 15–50 mm)."""
-    st = example("crank_slider")
+@pytest.mark.parametrize("name, fmt", [("crank_slider", "A3"), ("crank_slider", "A2"), ("shaper", "A2")])
+def test_a_sets_diagrams_are_drawn_readably_high(name, fmt):
+    """The crank-slider's A3 and A2 sets and the shaper's A2 set (s 25 mm before): each of s, v, a
+    drawn at least ``READABLE_MM`` high (the curve's extent with its axis, off the drawn record's
+    ordinates), at the lab's scales (μs of the standard series, H1 and H2 whole mm within 15–50 mm)."""
+    st = example(name)
     p, _, dr = plan(st, form(fmt), SheetOptions(sheet="kinematics"))
     assert p.sheets > 1
     d = dr.diagrams(p.diagrams)
