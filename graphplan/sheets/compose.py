@@ -122,6 +122,13 @@ def keep_out(f: Form) -> tuple[float, float, float, float]:
     return tb[0] - GAP, tb[1], tb[2], tb[3] + GAP
 
 
+def later_keep(f: Form) -> tuple[float, float, float, float]:
+    """``keep_out`` of a set's later sheets: their title block is form 2a (185×15 mm)."""
+    from graphplan.sheets.form import BLOCK_2A_H
+    tb = title_block_box(f)
+    return tb[0] - GAP, tb[1], tb[2], tb[1] + BLOCK_2A_H + GAP
+
+
 def compose(f: Form, pages: list[list[Placed]], title_fields: dict[str, str], lang: str, title: str) -> Sheet:
     """Each page's frame, title block and placed drawings: the set's sheets, numbered "sheet N of
     M" of the set (form 1 on the first, form 2a on the later ones) until ``Sheet.number`` numbers
@@ -466,17 +473,18 @@ def measured_twice(first: Sequence[Record], second: Sequence[Record], mu0: float
 
 
 def choose_levels(families: dict[str, Family], fits: Callable[[dict[str, float]], bool],
-                  order: Sequence[str], largest: Callable[[str, float], bool] | None = None
-                  ) -> dict[str, float] | None:
+                  order: Sequence[str], largest: Callable[[str, float], bool] | None = None,
+                  start: dict[str, float] | None = None) -> dict[str, float] | None:
     """The scales by arithmetic: the largest common size factor k (each family's ``start(k)``) at
-    which ``fits`` holds; then the families in ``order``, in turn, each made one step larger while it
-    still fits (and ``largest(name, μ)`` allows) — round after round, so they grow together. None
-    when even the smallest factor does not fit."""
+    which ``fits`` holds (or the scales ``start``, where given and they fit); then the families in
+    ``order``, in turn, each made one step larger while it still fits (and ``largest(name, μ)``
+    allows) — round after round, so they grow together. None when even the smallest factor (or
+    ``start``) does not fit."""
     mu = None
-    for k in FACTORS:
-        trial = {name: fam.start(k) for name, fam in families.items()}
+    for trial in ([start] if start is not None else
+                  ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)):
         if fits(trial):
-            mu = trial
+            mu = dict(trial)
             break
     if mu is None:
         return None

@@ -46,19 +46,21 @@ _REDRAWN: dict[tuple, dict] = {}
 
 
 def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None,
-                    precision: float = 0.5, room: tuple[float, ...] | None = None) -> dict:
+                    precision: float = 0.5, room: tuple[float, ...] | None = None, floor: float = 0.0) -> dict:
     """The options the sheet draws the diagrams with (``chord_diagrams`` keywords): ``first_options``
     where that drawing is qualitatively right, else as graphic.redraw changes it until it is (the
     area correction, other poles within the lab's 15–50 mm, smaller intervals where the curve bends;
     the scene's own H1, H2 kept; a longer L, up to the scene's, where ``room`` is given) — ``redrawn``
     says what. A redrawn block is at most ``GROWTH`` times the first one's width and height and fits
-    ``room`` (the sheet's: ``kinlayout.room``), else the next right candidate is taken. The s height
+    ``room`` (the sheet's: ``kinlayout.room``) and leaves the v and a diagrams at least ``floor``
+    mm high (or as high as first drawn; a set's ``DIAGRAM_MM``: a lower drawing reads worse than
+    one off 5 % at a position), else the next right candidate is taken. The s height
     is the size factor's: a larger one is the composition's choice (``kinlayout.set_of_sheets``
     takes a size whose diagrams are right where that costs a sheet at most). Once per
     scene, size factor, positions and ruler: the sheet of either language, ``sheet_scales`` and
     the terminal get the same."""
     from graphplan.graphic.redraw import redraw
-    key = (repr(st.mech), k, positions, precision, room)
+    key = (repr(st.mech), k, positions, precision, room, floor)
     if key not in _REDRAWN:
         if len(_REDRAWN) >= 32:
             _REDRAWN.pop(next(iter(_REDRAWN)))
@@ -72,15 +74,29 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
             w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
             w, h = _block_size(st, options, precision)
             g = GROWTH if grow else SAME
-            return (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6
-                    and (room is None or room_fits(room, w, h)))
+            if not (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6 and (room is None or room_fits(room, w, h))):
+                return False
+            if floor <= 0:
+                return True
+            low = sizes.setdefault("first spans", _spans(st, first, precision))
+            return all(got >= min(floor, was) - 1e-6 for got, was in zip(_spans(st, options, precision), low))
         chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
         _REDRAWN[key] = {**chosen, "redrawn": done}
     return dict(_REDRAWN[key])
 
 
+DIAGRAM_MM = 40.0   # a set's redrawing leaves the v and a diagrams at least this high (or as high as first
+                    # drawn): the crank-slider's A3 set took H1 15 mm for 5 % at the positions, v 26 mm high
 GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's width and height
 SAME = 1.05       # … redrawn for its errors at the positions alone (the first was right): about its size
+
+
+def _spans(st: Study, options: dict, precision: float) -> tuple[float, float]:
+    """The v and a diagrams drawn with ``options``: each one's height with its axis, mm."""
+    import numpy as np
+    from graphplan.graphic.diagrams import chord_diagrams
+    r = chord_diagrams(st, precision=precision, **options).drawn
+    return tuple(float(np.ptp(np.append(x, 0.0))) for x in (r.v, r.a))
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:
@@ -151,6 +167,7 @@ class Drafter:
     st: Study
     opts: SheetOptions
     room: tuple[float, ...] | None = None    # kinlayout.room: where a redrawn diagrams' block must fit
+    floor: float = 0.0       # … and how high its v and a diagrams stay (a set's: ``DIAGRAM_MM``)
 
     def __post_init__(self) -> None:
         self.memo: dict = {}
@@ -173,7 +190,7 @@ class Drafter:
         o = self.opts
         return self._once(("diag", k, lang), lambda: chord_diagrams(
             self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
-                                                                         self.room)))
+                                                                         self.room, self.floor)))
 
     def lines(self, mu: dict[str, float]) -> dict[str, list[Record]]:
         """The plans at the scales ``mu``, their lines only (no lettering): family → records."""
@@ -197,12 +214,12 @@ class Drafter:
     def diagrams_right(self, k: float) -> bool:
         """Whether the diagrams at size factor k are qualitatively right (graphic.redraw found a drawing)."""
         o = self.opts
-        return diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"].right
+        return diagram_options(self.st, k, o.positions, o.precision, self.room, self.floor)["redrawn"].right
 
     def redrawn(self, k) -> bool:
         """Whether the diagrams at size ``k`` are drawn otherwise than first (graphic.redraw)."""
         o = self.opts
-        r = diagram_options(self.st, k, o.positions, o.precision, self.room)["redrawn"]
+        r = diagram_options(self.st, k, o.positions, o.precision, self.room, self.floor)["redrawn"]
         return bool(r.changed or r.wrong_after)
 
     def drawn(self, k) -> tuple[float, float, float, float]:
@@ -276,7 +293,8 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
     not enter): one sheet where one holds the plans legibly (on A1 always), else a set. The plans
     are then drawn at the chosen scales and, where one came out larger than assumed, the choice is
     made again allowing for it (the sheet, the terminal and the explorer all get this result)."""
-    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"), room(f))
+    dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"),
+                 room(f, later=f.name not in ONE_SHEET), 0.0 if f.name in ONE_SHEET else DIAGRAM_MM)
     nat = measure(dr)
     for _ in range(4):
         one = one_sheet(dr, nat, f)
@@ -298,8 +316,8 @@ def sheet_scales(st: Study, format: str = "A1", positions: int | None = None, ac
     to print what the sheet draws. Arithmetic on the drawings' sizes: no sheet is built. More
     positions than a sheet holds are refused first (the layout of 3600 plans would take minutes)."""
     check_positions(st, SheetOptions(positions=positions, accel=accel, precision=precision))
-    p, _, _ = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
-    opts = diagram_options(st, p.diagrams, positions, precision, room(form(format)))
+    p, _, dr = plan(st, form(format), SheetOptions(positions=positions, accel=accel, precision=precision))
+    opts = diagram_options(st, p.diagrams, positions, precision, dr.room, dr.floor)
     return {"mu_l": p.mu["position"], "mu_v": p.mu["velocity"], "mu_a": p.mu["acceleration"],
             "L": opts["L"], "height": opts["height"], "H1": opts["H1"], "H2": opts["H2"],
             "diagrams": opts}
@@ -341,7 +359,7 @@ def drawings(st: Study, p: Plan, dr: Drafter, lang: str) -> dict:
 def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis at the scales ``plan`` chose, in the zones of the
     composition (one sheet), or flowing over a set of sheets."""
-    from graphplan.sheets.compose import keep_out
+    from graphplan.sheets.compose import keep_out, later_keep
     opts = options_of(options)
     check_positions(st, opts)
     p, nat, dr = plan(st, f, _options(opts))
@@ -373,7 +391,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     else:
         notes_rec = note_block(d["notes"], p.notes)
         rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
-        laid = flow(rows, region, keep_out(f))
+        laid = flow(rows, region, keep_out(f), later=later_keep(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]

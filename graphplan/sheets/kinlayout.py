@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
-from graphplan.sheets.compose import Family, choose_levels, coarser, field_of, finer, notes_height
+from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError
 
@@ -29,6 +29,7 @@ SET_LARGEST = 1.25     # a set's principal segments grow to at most this times t
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
 HEIGHTS = (1.25, 0.5)    # a set's diagrams' height factors: from s at most 100 mm high down to 40 mm …
 HEIGHT_STEP = 0.05       # … in these steps (4 mm of s's allowance)
+LEAST_TALLER = 4         # a flat one-factor drawing: this many steps taller tried for one that is not
 TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
 
 
@@ -89,7 +90,11 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
     velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
     height, the rest in those two bands; "accel" — the acceleration plans beside the position plan
     and the diagrams, the velocity plans beside the column; "sides" — the position plan over the
-    velocity plans, beside them the diagrams over the acceleration plans over the column."""
+    velocity plans, beside them the diagrams over the acceleration plans over the column; "stacked" —
+    the position plan over the diagrams, beside them the velocity plans over the acceleration plans,
+    then the column; "stacked-bands" — the position plan over the diagrams, beside them the velocity
+    plans over the acceleration plans and the column (a long or tall position plan: it and the
+    diagrams need not share a row's width)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
     if shape == "bands":
@@ -98,10 +103,14 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
         return Row([Stack([Row([P, D]), Row(vg + ag)]), C], flush=True)
     if shape == "accel":
         return Stack([Row([P, D] + ag), Row(vg + [C], flush=True)], flush=True)
+    if shape == "stacked":
+        return Row([Stack([P, D]), Stack(vg + ag), C], flush=True)
+    if shape == "stacked-bands":
+        return Row([Stack([P, D]), Stack(vg + [Row(ag + [C], flush=True)], flush=True)], flush=True)
     return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
 
 
-SHAPES = ("bands", "column", "accel", "sides")
+SHAPES = ("bands", "column", "accel", "sides", "stacked", "stacked-bands")
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -163,15 +172,20 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     full = one_sheet_at(dr, nat, f, DIAGRAMS_SHRUNK[0])
     if full is not None or f.name not in ONE_SHEET:       # a smaller format makes a set instead
         return full[1] if full is not None else None
-    shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k)) is not None]
+    shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k, True)) is not None]
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
 
 
-def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float) -> tuple[tuple, Plan] | None:
+def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False
+                 ) -> tuple[tuple, Plan] | None:
     """The best one-sheet composition with the diagrams at size factor ``k_diagrams``: for each
-    lettering of the tables, each shape and each order of growth, the scales by ``choose_levels``;
-    the one whose plans are drawn largest (the product of the principal segments), 3.5 mm tables
-    where they cost no drawing a step — with its score."""
+    lettering of the tables, each shape and each order of growth, the scales by ``choose_levels``
+    (all families grown together, and ``position_first``); the legible one whose position plan is
+    drawn largest (up to ``MAIN`` of its target), then whose plans are drawn largest (the smallest,
+    then the product of the principal segments), 3.5 mm tables where they cost no drawing a step —
+    with its score. ``even``: where no arrangement is legible (the diagrams already shrunk), the
+    smallest plan drawn largest first, the position plan after it — a press's position plan grown
+    first left its twelve velocity plans at p_v a = 19 mm, their letters crowding."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     has_a = nat.count["acceleration"] > 0
@@ -217,24 +231,57 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float) -> tuple
                 others = [nat.families[fam].rel(current[fam]) for fam in FAMILIES
                           if fam != name and (fam != "acceleration" or has_a)]
                 return not others or nat.families[name].rel(bigger) <= max(1.0, BALANCE * min(others)) + 1e-9
-            mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
-            if mu is None:
-                continue
-            k_d, D_k = k_diagrams, D
-            if not legible(nat, mu) and k_diagrams == 1.0:
-                found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
-                if found is not None:
-                    mu, k_d = found
-                    D_k = Leaf("diagrams", *diagrams_size(dr, nat, k_d))
-            rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
-            score = (legible(nat, mu), round(min(rel), 6), round(sum(math.log(r) for r in rel), 6),
-                     k_d, factor == TABLES, -SHAPES.index(shape))
-            _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
-            counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
-            if best is None or cand[0] > best[0]:
-                best = cand
+            balanced_mu = choose_levels(nat.families, fits, ("velocity", "position", "acceleration"), balanced)
+            for mu in (balanced_mu, position_first(nat, fits, balanced)):
+                if mu is None:
+                    continue
+                k_d, D_k = k_diagrams, D
+                if not legible(nat, mu) and k_diagrams == 1.0:
+                    found = legible_where_room(dr, nat, mu, lambda m, d, s=shape: arranged(m, s, D=d) is not None)
+                    if found is not None:
+                        mu, k_d = found
+                        D_k = Leaf("diagrams", *diagrams_size(dr, nat, k_d))
+                rel = [nat.families[fam].rel(mu[fam]) for fam in FAMILIES if fam != "acceleration" or has_a]
+                score = (legible(nat, mu), main_rel(nat, mu), round(min(rel), 6),
+                         round(sum(math.log(r) for r in rel), 6), k_d, factor == TABLES, -SHAPES.index(shape))
+                _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
+                counts = tuple(len(g) for g in split(tabs, parts))
+                cand = (score, Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts))
+                if best is None or _order(cand[0], even) > _order(best[0], even):
+                    best = cand
     return best
+
+
+def _order(score: tuple, even: bool) -> tuple:
+    """A candidate's score as compared: (legible, main, smallest, product, …), or with ``even`` and
+    nothing legible the smallest plan's size before the position plan's."""
+    return score[:1] + score[2:3] + score[1:2] + score[3:] if even and not score[0] else score
+
+
+MAIN = 1.0     # the position plan, the sheet's main drawing, grows first up to this share of its target
+
+
+def main_rel(nat: Natural, mu: dict[str, float]) -> float:
+    """How large the position plan is drawn against its target, up to ``MAIN`` (the composition
+    prefers a larger one before any other drawing grows)."""
+    return round(min(nat.families["position"].rel(mu["position"]), MAIN), 6)
+
+
+def position_first(nat: Natural, fits, balanced) -> dict[str, float] | None:
+    """The scales where the position plan, the sheet's main drawing (LAYOUT.md), is given its room
+    first: the velocity and acceleration plans just legible (``_legible``), the position plan grown
+    from the smallest common size while the composition fits, up to ``MAIN`` of its target; then
+    every family grown in turn as ``choose_levels`` does. None where the legible plans leave no room."""
+    fams = nat.families
+    mu = {fam: just_legible(fams[fam]) if fam != "position" else fams[fam].start(FACTORS[-1]) for fam in fams}
+    if not fits(mu):
+        return None
+    while True:
+        bigger = finer(mu["position"])
+        if fams["position"].rel(bigger) > MAIN + 1e-9 or not fits({**mu, "position": bigger}):
+            break
+        mu["position"] = bigger
+    return choose_levels(fams, fits, ("velocity", "position", "acceleration"), balanced, start=mu)
 
 
 def legible_where_room(dr: Drafter, nat: Natural, mu: dict[str, float], fits
@@ -339,6 +386,14 @@ def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
     return rows
 
 
+def just_legible(fam: Family) -> float:
+    """The coarsest μ at which the family's plans read: the series' (``_legible``) or the lab's own,
+    p_v a (π a) chosen ``LEGIBLE_MM`` long (``legible_where_room``), whichever draws them smaller."""
+    from graphplan.graphic.scales import chosen_length
+    own = chosen_length(fam.principal, LEGIBLE_MM, LEGIBLE_READS)
+    return max(_legible(fam), own if readable(fam, own) else 0.0)
+
+
 def _legible(fam: Family) -> float:
     """The coarsest standard μ at which the family's plans read (``readable``)."""
     mu = fam.start(1.0)
@@ -349,12 +404,13 @@ def _legible(fam: Family) -> float:
     return mu
 
 
-def room(f: Form) -> tuple[float, ...]:
+def room(f: Form, later: bool = False) -> tuple[float, ...]:
     """Where one drawing fits an empty sheet of the format: (the field's width, its height over the
-    title block, the width beside the title block, the field's height), mm."""
-    from graphplan.sheets.compose import keep_out
+    title block, the width beside the title block, the field's height), mm — ``later``: a set's
+    later sheet, whose title block is form 2a (15 mm high, not 55)."""
+    from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
-    keep = keep_out(f)
+    keep = later_keep(f) if later else keep_out(f)
     height = region[3] - region[1]
     return (region[2] - region[0], keep[1] + height - keep[3], keep[0] - region[0], height)
 
@@ -394,6 +450,15 @@ def set_diagrams(dr: Drafter, nat: Natural, r: tuple[float, ...]) -> list[float 
             if tall is not None and room_fits(r, *diagrams_size(dr, nat, (k, tall))):
                 out.append((k, tall))
                 tall_found = tall_found or dr.diagrams_right((k, tall))
+        if k in out and flat(dr, k) and tall_found:
+            # the one factor draws a diagram flat (the shaper's A2 v 38 mm): the least taller one that
+            # does not, where it is lower than the tallest (a block that may still share its sheet)
+            for t in (round(k + j * HEIGHT_STEP, 6) for j in range(1, LEAST_TALLER + 1)):
+                if t >= max(x[1] for x in out if isinstance(x, tuple)) - 1e-9:
+                    break
+                if room_fits(r, *diagrams_size(dr, nat, (k, t))) and not flat(dr, (k, t)):
+                    out.append((k, t))
+                    break
     return out or list(DIAGRAM_SIZES[-1:])
 
 
@@ -429,6 +494,15 @@ def drawn_share(dr: Drafter, k) -> float:
     return math.log(size(k) / size(1.0)) / 2
 
 
+def flat(dr: Drafter, k) -> int:
+    """1 where a diagram of size ``k`` is drawn lower than ``DIAGRAM_MM`` (with its axis): a set,
+    which has a sheet for its diagrams, weighs that like one more sheet (the crank-slider's A3 set
+    drew v 26 mm and a 22 mm high under s 64 mm; the lab's model, whose poles are given, a 15.5 mm
+    at L 240 mm where L 154 mm draws it 38 mm)."""
+    from graphplan.sheets.kinematics import DIAGRAM_MM
+    return int(min(dr.drawn(k)[1:]) < DIAGRAM_MM - 1e-6)
+
+
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
     as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
@@ -439,10 +513,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     ``set_diagrams``'; where they do not fit beside the position plan, both orders are tried (the
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
     sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
-    from graphplan.sheets.compose import keep_out
+    from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
-    keep = keep_out(f)
+    keep, later = keep_out(f), later_keep(f)
 
     def alone(size) -> bool:              # fits an empty sheet beside or over the title block
         return room_fits(room(f), *size)
@@ -462,7 +536,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         floor[fam] = fitted(fam, floor[fam])
     top = fitted("position", fams["position"].start(2.0))
     best = None
-    r = room(f)
+    r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
     wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
@@ -473,7 +547,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 they would take a sheet of their own."""
                 found = None
                 for nw in wide:
-                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep)
+                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later=later)
                     if out is None:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
@@ -503,13 +577,14 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
-                # (its crank shorter than CRANK_MM where a sheet holds a larger one) and a sheet
-                # holding the notes alone; of as many, the larger drawings (then the fuller
-                # emptiest sheet)
+                # (its crank shorter than CRANK_MM where a sheet holds a larger plan: the A3
+                # coulisse, whose crank is 28 mm at the largest, was drawn at 1:10, 11 mm), a
+                # diagram lower than DIAGRAM_MM (``flat``) and a sheet holding the notes alone;
+                # of as many, the larger drawings (then the fuller emptiest sheet)
                 wrong = 0 if dr.diagrams_right(k) else 1
-                small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9
-                            and fams["position"].drawn(top) >= CRANK_MM - 1e-9)
-                key = (count + wrong + small + orphan, wrong, -(factor == TABLES), -round(rel, 6), -round(fill, 1))
+                small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9 and mu["position"] > top)
+                key = (count + wrong + small + orphan + flat(dr, k), wrong, -(factor == TABLES), -round(rel, 6),
+                       -round(fill, 1))
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))
     if best is None:

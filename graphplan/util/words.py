@@ -590,7 +590,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin why_chords": ("{sym}: крупні поділки — хорди самі дають {e} % ({n} поділок)",
                        "{sym}: coarse divisions — the chords alone miss by {e} % ({n} divisions)"),
     "kin why_ordinate": ("{sym}: коротка ордината ({mm} мм)", "{sym}: a short ordinate ({mm} mm)"),
-    "kin mark_head": ("* — похибка понад 5 % (межа лабораторної роботи):", "* — an error over 5 % (the lab's limit):"),
+    "kin mark_head": ("* — похибка понад 5 % (межа лабораторної роботи):", "* — an error over 5 % (the limit the lab sets):"),
     "kin mark_row": ("положення {n}: {why}", "position {n}: {why}"),
     "kin mark_cell": ("{why}", "{why}"),
     "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
