@@ -469,7 +469,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     omega_mid: float | None = None
     for z in supports:
         crank_pivot = omega_at is not None and abs(omega_at - z) < 0.5
-        d, mid_ = _support_direction(z, drawn_links + guide_lines, [(a, b) for _, a, b in drawn],
+        others = [(a, b) for w, d_ in support_at.items() for a, b in support_strokes(w, d_)]   # clear of those set
+        d, mid_ = _support_direction(z, drawn_links + guide_lines, [(a, b) for _, a, b in drawn] + others,
                                      omega=crank_pivot)
         from graphplan.drawing.plans import support as draw_support
         draw_support(rec, z, d, step)
@@ -823,11 +824,8 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         # on the side toward the plan's middle, not out past its edge (the lever keeps its size)
         at = foot - min(ARM_LETTER_MM, 0.5 * abs(foot)) * _unit(foot)
         side = 1j * _unit(foot) if dot(1j * _unit(foot), middle - at) >= 0 else -1j * _unit(foot)
-        # set beside its arm, the thin rays and lines under it broken as a draftsman breaks them,
-        # rather than on a leader out past the lever's edge
         text = arm_symbol(names[0]) if len(names) == 1 else "h_{" + ",".join(arm_symbol(n)[3:-1] for n in names) + "}"
-        lab.asked.append(LabelRequest(at, text, side, LETTER, step=step,
-                                      breaks=True))
+        lab.place(at, text, LETTER, side, step)
     _apart(rec, lab.asked)        # each label fenced while the rest are placed: near a, s2, b (a plan
                                   # narrow there) the forces' names stood within their height
     x0, y0, _, _ = rec.bounds()
