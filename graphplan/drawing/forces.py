@@ -665,9 +665,13 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                  for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
-    if tiny:     # vectors too short to carry a label: named under the plan with their bound
-        names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
-        caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
+    # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
+    unseen = [f.name for f in gp.forces if f.force != 0 and all(s.name != f.name for s in sides)]
+    if tiny or unseen:     # vectors too short to carry a label: named under the plan with their bound
+        names = ", ".join(dict.fromkeys([force_symbol(s.name, lang) for s in tiny]
+                                        + [force_symbol(n, lang) for n in unseen]))
+        bound = math.floor(max(s.mm for s in tiny)) + 1 if tiny else 1
+        caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
 
