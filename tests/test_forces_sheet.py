@@ -400,3 +400,18 @@ def test_every_lever_arm_is_drawn_to_its_forces_line_and_lettered_by_it(sheet):
                                                                      for a, b in on_arm) < 1.5
                   for q in leaders)
         assert near <= 5.0 or led, (sheet["name"], t.name, near)
+
+
+def test_no_two_leaders_cross(sheet):
+    """Two labels' leaders crossing read as an X (the four-bar's lever had h_Φ3's and h_G3's so):
+    on every drawing of the force sheet no leader crosses another."""
+    def side(p, q, r):
+        return ((q - p).conjugate() * (r - p)).imag
+    for fam, recs in sheet["drawings"].items():
+        for rec in recs:
+            leaders = [(complex(*p.points[0]), complex(*p.points[1])) for p in rec.items
+                       if p.kind == "segment" and p.role == "label" and len(p.points) == 2]
+            for i, (a, b) in enumerate(leaders):
+                for c, d in leaders[i + 1:]:
+                    assert not (side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0), \
+                        (sheet["name"], rec.title, a, b, c, d)
