@@ -415,3 +415,20 @@ def test_no_two_leaders_cross(sheet):
                 for c, d in leaders[i + 1:]:
                     assert not (side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0), \
                         (sheet["name"], rec.title, a, b, c, d)
+
+
+def test_no_leader_crosses_a_link_on_the_scheme_or_a_group(sheet):
+    """A force's name on a leader across the link (the four-bar's crank group named G1, laid beside
+    the crank, across it once h_G1 had taken the room under its head) reads as the other side's: on
+    the scheme and every group no leader crosses a link's bar."""
+    def side(p, q, r):
+        return ((q - p).conjugate() * (r - p)).imag
+    for rec in sheet["drawings"]["scheme"] + sheet["drawings"]["groups"]:
+        bars = [s for p in rec.items if p.role == "link" and p.layer == "mechanism"
+                and p.kind in ("segment", "polyline") for s in _strokes(p)]
+        for p in rec.items:
+            if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
+                a, b = complex(*p.points[0]), complex(*p.points[1])
+                for c, d in bars:
+                    assert not (side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0), \
+                        (sheet["name"], rec.title, a, b)

@@ -571,14 +571,16 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(z, indexed(name), 3.5, side, step)
     for z, name in centres:
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+    # the forces' names before the arms': an arrow's name by its head (the crank's G1, laid beside
+    # the crank, was named across the crank on a leader once h_G1 had the room under its head)
+    for tip, name, u in labels:
+        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
-    for tip, name, u in labels:
-        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
-    # h_G3 on the loom's rocker) had their names stacked against each other
-    return _apart(rec, lab.asked)
+    # h_G3 on the loom's rocker) had their names stacked against each other; no leader across a link
+    return _apart(rec, lab.asked, across=False)
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -679,14 +681,17 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
 _FENCE = "a label's fence (removed once the labels are set)"
 
 
-def _apart(rec: Record, asked: list[LabelRequest]) -> Record:
+def _apart(rec: Record, asked: list[LabelRequest], across: bool = True) -> Record:
     """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
-    ring its letter height out, so that no two stand closer than their height; the rings go."""
+    ring its letter height out, so that no two stand closer than their height; the rings go. Not
+    ``across``: no leader crosses a link or an arrow (on a group a force's name there reads as the
+    other side's)."""
     from graphplan.drawing.labels import place_labels
     rings = []
+    from dataclasses import replace
     for req in asked:
         n = len(rec.items)
-        place_labels(rec, [req], layer="labels")
+        place_labels(rec, [replace(req, across=across)], layer="labels")
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue

@@ -469,6 +469,8 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box):
                 continue
             if any(_cross(a, b, c, d) for c, d in ob.leaders or []):   # two leaders crossing read as an X
                 continue
+            if not req.across and _crosses_thick(ob, a, b):   # nor across a link or an arrow, where asked
+                continue
             return box, complex(starts[k]), (a, b)
     return None
 
@@ -478,6 +480,26 @@ def _cross(a: complex, b: complex, c: complex, d: complex) -> bool:
     def side(p: complex, q: complex, r: complex) -> float:
         return ((q - p).conjugate() * (r - p)).imag
     return (side(a, b, c) * side(a, b, d) < 0) and (side(c, d, a) * side(c, d, b) < 0)
+
+
+THICK_HALF = 0.3    # a line this thick (half width, mm) or more — a link, a vector — no leader crosses
+
+
+def _crosses_thick(ob: Obstacles, a: complex, b: complex) -> bool:
+    """Whether the leader a–b crosses a thick line of the drawing (``THICK_HALF``)."""
+    if len(ob.segs) == 0:
+        return False
+    s = ob.segs[ob.half >= THICK_HALF]
+    if len(s) == 0:
+        return False
+    sx, sy, ex, ey = s.T
+    ux, uy = b.real - a.real, b.imag - a.imag
+    vx, vy = ex - sx, ey - sy
+    den = ux * vy - uy * vx
+    with np.errstate(all="ignore"):
+        t = ((sx - a.real) * vy - (sy - a.imag) * vx) / den
+        v = ((sx - a.real) * uy - (sy - a.imag) * ux) / den
+    return bool(np.any((np.abs(den) > 1e-12) & (t > 0.0) & (t < 1.0) & (v > 0.0) & (v < 1.0)))
 
 
 def _leader(at: complex, box: Box) -> tuple[complex, complex]:
