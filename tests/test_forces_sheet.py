@@ -306,3 +306,129 @@ def test_lever_forces_at_one_image_do_not_cover_each_other(sheet):
             for w in vs[i + 1:]:
                 c, d = _shaft(w)
                 assert _shared(a, b, c, d) < 1.0, (sheet["name"], v.text, w.text)
+
+
+def _dist(z: complex, a: complex, b: complex) -> float:
+    """The distance (mm) from the point z to the segment a–b."""
+    d = b - a
+    if abs(d) < 1e-12:
+        return abs(z - a)
+    t = min(max(((z - a) * d.conjugate()).real / abs(d) ** 2, 0.0), 1.0)
+    return abs(z - (a + t * d))
+
+
+def _strokes(p) -> list[tuple[complex, complex]]:
+    """A primitive's ink as segments (an arc as 5° chords)."""
+    if p.kind == "arc":
+        (cx, cy), r = p.points[0], p.radius
+        a0, a1 = p.angles
+        n = max(2, int(abs(a1 - a0) / 5.0))
+        pts = [complex(cx, cy) + r * complex(math.cos(math.radians(a0 + (a1 - a0) * k / n)),
+                                             math.sin(math.radians(a0 + (a1 - a0) * k / n))) for k in range(n + 1)]
+    else:
+        pts = [complex(x, y) for x, y in p.points]
+        if p.kind == "polygon":
+            pts.append(pts[0])
+    return list(zip(pts, pts[1:]))
+
+
+def _box_dist(z: complex, box) -> float:
+    x0, y0, x1, y1 = box
+    return abs(complex(max(x0 - z.real, 0.0, z.real - x1), max(y0 - z.imag, 0.0, z.imag - y1)))
+
+
+def test_the_schemes_supports_stand_clear_of_links_arrows_and_labels(sheet):
+    """Every frame pivot's support on the scheme (issue 32, the teacher's mark: drawn straight down
+    under each pivot whatever the links did, the crank through its hatching): its bar and hatch
+    strokes at least 0.5 mm from every link's bar, every force's arrow and moment's arc, and off
+    every label."""
+    rec = sheet["drawings"]["scheme"][0]
+    pivots = [complex(*p.points[0]) for p in rec.items if p.kind == "point" and p.layer == "frame"]
+    assert len(pivots) == sum(1 for n in sheet["st"].mech.frame
+                              if any(n in lk.joints for lk in sheet["st"].mech.links.values()))
+    lines = [s for p in rec.items if p.layer in ("mechanism", "vectors") and p.kind in
+             ("segment", "polyline", "polygon", "vector", "arc") for s in _strokes(p)]
+    texts = [p.ink() for p in rec.items if p.kind == "text"]
+    for z in pivots:
+        strokes = [s for p in rec.items if p.layer == "frame" and p.kind == "segment"
+                   for s in _strokes(p) if all(abs(e - z) <= 10.0 for e in s)
+                   and min(pivots, key=lambda w: abs(w - s[0])) == z]
+        assert len(strokes) == 8, (sheet["name"], z, len(strokes))       # 2 sides, the bar, 5 strokes
+        far = [s for s in strokes if min(abs(e - z) for e in s) >= 4.0]  # the bar and the hatching
+        assert len(far) == 6
+        for a, b in far:
+            for k in range(11):
+                w = a + (b - a) * k / 10
+                near = min(_dist(w, c, d) for c, d in lines)
+                assert near >= 0.5, (sheet["name"], z, w, near)
+                assert all(_box_dist(w, box) > 0.0 for box in texts), (sheet["name"], z, w)
+
+
+def test_every_lever_arm_is_drawn_to_its_forces_line_and_lettered_by_it(sheet):
+    """The Zhukovsky lever's arms were unlettered: each arm h (from the pole, perpendicular to its
+    force's line on the turned plan, the foot on that line or on a lane SIDE_MM beside it) carries
+    h with its force's name (h_{G2}, the groups' notation) within a few mm, on a leader at most."""
+    from graphplan.drawing.forces import SIDE_MM, arm_symbol
+    fp = sheet["fp"]
+    rec = sheet["drawings"]["lever"][0]
+    forces = {v.text.split(":")[0]: v for v in _vectors(rec) if ": h = " in v.text}
+    armed = [t for t in fp.lever.terms if t.vector and abs(t.arm_mm) >= 1.0]
+    assert armed
+    arms = [p for p in rec.items if p.kind == "segment" and p.text.startswith("h_{")]
+    texts = [p for p in rec.items if p.kind == "text"]
+    leaders = [p for p in rec.items if p.kind == "segment" and p.role == "label"]
+    for t in armed:
+        mine = [p for p in arms if p.text.endswith(f" mm to {t.name}")]
+        assert mine, t.name
+        assert mine[0].text.startswith(arm_symbol(t.name) + " = ")
+        pts = [complex(x, y) for p in mine for x, y in p.points]
+        foot = max(pts, key=abs)
+        assert abs(abs(foot) - abs(t.arm_mm)) <= 0.25 + 1e-9                 # as long as it reads
+        (px, py), (qx, qy) = forces[t.name].points
+        u = complex(qx - px, qy - py) / abs(complex(qx - px, qy - py))
+        assert abs((foot.conjugate() * u).real) < 0.01 * abs(foot)           # perpendicular to the force
+        off = abs(((foot - complex(px, py)).conjugate() * u).imag)           # on its line, or a lane's
+        assert min(abs(off - k * SIDE_MM) for k in range(4)) < 0.01, (t.name, off)
+        sub = arm_symbol(t.name)[3:-1]
+        letters = [q for q in texts if q.text.startswith("h_{") and sub in q.text[3:-1].split(",")]
+        assert len(letters) == 1, (t.name, [q.text for q in texts if q.text.startswith("h")])
+        box = letters[0].ink()
+        on_arm = [(a, b) for p in mine for a, b in _strokes(p)]
+        near = min(_box_dist(w, box) for a, b in on_arm for w in (a + (b - a) * k / 20 for k in range(21)))
+        # a leader runs from 1.2 mm off its anchor on the arm to just short of the letter
+        led = any(_box_dist(complex(*q.points[1]), box) < 1.0 and min(_dist(complex(*q.points[0]), a, b)
+                                                                     for a, b in on_arm) < 1.5
+                  for q in leaders)
+        assert near <= 5.0 or led, (sheet["name"], t.name, near)
+
+
+def test_no_two_leaders_cross(sheet):
+    """Two labels' leaders crossing read as an X (the four-bar's lever had h_Φ3's and h_G3's so):
+    on every drawing of the force sheet no leader crosses another."""
+    def side(p, q, r):
+        return ((q - p).conjugate() * (r - p)).imag
+    for fam, recs in sheet["drawings"].items():
+        for rec in recs:
+            leaders = [(complex(*p.points[0]), complex(*p.points[1])) for p in rec.items
+                       if p.kind == "segment" and p.role == "label" and len(p.points) == 2]
+            for i, (a, b) in enumerate(leaders):
+                for c, d in leaders[i + 1:]:
+                    assert not (side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0), \
+                        (sheet["name"], rec.title, a, b, c, d)
+
+
+def test_no_leader_crosses_a_link_on_the_scheme_or_a_group(sheet):
+    """A force's name on a leader across the link (the four-bar's crank group named G1, laid beside
+    the crank, across it once h_G1 had taken the room under its head) reads as the other side's: on
+    the scheme and every group no leader crosses a link's bar."""
+    def side(p, q, r):
+        return ((q - p).conjugate() * (r - p)).imag
+    for rec in sheet["drawings"]["scheme"] + sheet["drawings"]["groups"]:
+        bars = [s for p in rec.items if p.role == "link" and p.layer == "mechanism"
+                and p.kind in ("segment", "polyline") for s in _strokes(p)]
+        for p in rec.items:
+            if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
+                a, b = complex(*p.points[0]), complex(*p.points[1])
+                for c, d in bars:
+                    assert not (side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0), \
+                        (sheet["name"], rec.title, a, b)

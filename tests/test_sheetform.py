@@ -141,3 +141,15 @@ def test_a_set_flows_in_reading_order_and_keeps_clear_of_the_title_block():
         for _leaf, (x0, y0, x1, y1) in page:
             assert not (x1 > keep[0] and y0 < keep[3])
     assert flow([[_square("huge", 500, 100)]], region, keep) is None
+
+
+def test_a_region_left_of_a_column_keeps_its_own_edge_by_the_title_block():
+    """A set's sheet flows its drawings in the room left of the tables' column (the region ends at
+    x = 120) while the title block starts farther right (x = 200): a row near the foot took the room
+    up to the title block and ran on under the notes (R01's hodograph on an A2 set's last sheet)."""
+    region, keep = (0.0, 0.0, 120.0, 270.0), (200.0, 0.0, 400.0, 60.0)
+    rows = [[_square(f"h{k}", 100, 70) for k in range(3)]]
+    pages = flow(rows, region, keep)
+    assert len(pages) == 1
+    for _leaf, (x0, y0, x1, y1) in pages[0]:
+        assert region[0] - 1e-9 <= x0 and x1 <= region[2] + 1e-9, (_leaf.name, x0, x1)

@@ -118,8 +118,9 @@ LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of t
 
 def arm_symbol(name: str) -> str:
     """The arm of a force as the lab letters it (markup): h with the force's name below —
-    G2 → h_{G2}, Φ2 → h_{Φ2}, R43 → h_{R43}; the terminal writes the same pair as G₂·h."""
-    return "h_{" + name.replace("_", "").replace("{", "").replace("}", "") + "}"
+    G2 → h_{G2}, Φ2 → h_{Φ2}, R43 → h_{R43}, a couple's pair force on the lever M^Φ_2' → h_{MΦ2'};
+    the terminal writes the same pair as G₂·h."""
+    return "h_{" + "".join(c for c in name if c not in "_^{}\\") + "}"
 
 
 def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -> tuple[float, float]:
@@ -256,14 +257,80 @@ def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, compl
         t += 4.0
 
 
-def _support(rec: Record, z: complex, step: str) -> None:
-    """A frame pivot: a small triangle with a hatched base."""
-    a, b = z + (-3.0 - 5.0j), z + (3.0 - 5.0j)
-    rec.add("polyline", [_pt(a), _pt(z), _pt(b)], role="link", layer="frame", step=step, width=0.35)
-    rec.segment(_pt(a + (-1.5)), _pt(b + 1.5), role="frame", layer="frame", step=step, width=0.35)
+SUPPORT_SPARE_DEG = 10.0  # a support's side this much more than the kinematics sheet's 5° off a link at its pivot
+SUPPORT_CLEAR_MM = 0.8   # a support's strokes this far at least from any link (but its own at the pivot) or arrow
+
+
+def support_strokes(z: complex, direction: float) -> list[tuple[complex, complex]]:
+    """The strokes (mm) of a frame pivot's support as ``drawing.plans.support`` draws it at ``z``
+    along ``direction`` (degrees): the triangle's two sides, the bar, the five hatch strokes."""
+    r = cmath.exp(1j * math.radians(direction + 90.0))
+    a, b = complex(-3.5, -5.0), complex(3.5, -5.0)
+    out = [(z, z + a * r), (z, z + b * r), (z + (a - 1.5) * r, z + (b + 1.5) * r)]
     for k in range(5):
-        x = a + (-1.0 + 2.0 * k)
-        rec.segment(_pt(x), _pt(x + (-1.5 - 1.5j)), role="hatch", layer="frame", step=step)
+        s_ = a + complex(-1.5 + 2.5 * k, 0)
+        out.append((z + s_ * r, z + (s_ + complex(-1.8, -1.8)) * r))
+    return out
+
+
+def _gap_deg(a: float, b: float) -> float:
+    return abs((a - b + 180.0) % 360.0 - 180.0)
+
+
+def _support_direction(z: complex, links: list[tuple[complex, complex]],
+                       arrows: list[tuple[complex, complex]], omega: bool = False) -> tuple[float, float | None]:
+    """Where a frame pivot's support stands on the force scheme (degrees from the pivot), as the
+    kinematics sheet puts it (``drawing.plans.support_direction``: below where that is free, else
+    the next of ``SUPPORT_DIRS``), and further: none of its strokes within ``SUPPORT_CLEAR_MM`` of
+    a link not leaving the pivot or of a force's arrow (G1 at S1 beside the crank's pivot). For the
+    crank's pivot (``omega``) also the middle of ω1's 90° arc (degrees), clear of the links and the
+    support. Returns (direction, ω1's middle or None)."""
+    from graphplan.drawing.plans import (CLEAR_DEG, OMEGA_HALF_DEG, SUPPORT_DIRS, SUPPORT_HALF_DEG)
+    leaving = [math.degrees(cmath.phase(e - z)) for a, b in links for e in (a, b)
+               if abs(e - z) > 0.5 and _on_segment(z, a, b)]
+    leaving += [math.degrees(cmath.phase(b - a)) for a, b in arrows if abs(a - z) < 0.5]
+    leaving += [math.degrees(cmath.phase(a - b)) for a, b in arrows if abs(b - z) < 0.5]
+    others = [(a, b) for a, b in links if not _on_segment(z, a, b)] + \
+             [(a, b) for a, b in arrows if abs(a - z) >= 0.5 and abs(b - z) >= 0.5]
+
+    def free(d: float, half: float) -> float:
+        return min([_gap_deg(d, a) for a in leaving] + [180.0]) - half
+
+    def touches(d: float) -> bool:
+        strokes = support_strokes(z, d)
+        for i, (p, q) in enumerate(strokes):
+            # the triangle's sides leave the pivot with the links (kept apart by angle, ``free``);
+            # the bar and the hatching clear of every line, those leaving the pivot too
+            near = others if i < 2 else others + [(a, b) for a, b in links if (a, b) not in others]
+            for k in range(9):
+                w = p + (q - p) * k / 8
+                if abs(w - z) > 1.0 and any(_on_segment(w, a, b, SUPPORT_CLEAR_MM) for a, b in near):
+                    return True
+        return False
+
+    def arc_touches(m: float) -> bool:
+        """ω1's arc (r = ``OMEGA_R_MM``, 90° about ``m``, its head 2 mm wide) near a line not at the pivot."""
+        for k in range(13):
+            w = z + OMEGA_R_MM * cmath.exp(1j * math.radians(m - 50.0 + 100.0 * k / 12))
+            if any(_on_segment(w, a, b, 1.0) for a, b in others):
+                return True
+        return False
+
+    best = (-1e9, -90.0, None)
+    for d in SUPPORT_DIRS:
+        # the bar's ends stand 45° off the axis, 7 mm out: 15° more keeps them 1.8 mm off a link
+        room = free(d, SUPPORT_HALF_DEG) - SUPPORT_SPARE_DEG - (20.0 if touches(d) else 0.0)
+        arc = None
+        if omega:
+            arcs = [m for m in range(0, 360, 5) if free(m, OMEGA_HALF_DEG) >= CLEAR_DEG
+                    and _gap_deg(m, d) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+            arc = min(arcs, key=lambda m: (arc_touches(m), _gap_deg(m, 245.0))) if arcs else None
+        if room >= CLEAR_DEG and (not omega or arc is not None):
+            return d, arc
+        score = room + (0.0 if not omega or arc is not None else -90.0)
+        if score > best[0]:
+            best = (score, d, arc)
+    return best[1], best[2]
 
 
 def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: complex | None = None) -> Record:
@@ -296,10 +363,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
             if p in mech.frame and gp.kind == "mechanism":
-                # the scheme keeps its supports; a group is drawn freed from the frame, the
-                # pivot a circle, its support replaced by the reaction (R03, R01)
-                _support(rec, z, step)
-                supports.append(z)
+                # the scheme keeps its supports (drawn once the arrows are laid, away from the
+                # links and arrows); a group is drawn freed from the frame, the pivot a circle, its
+                # support replaced by the reaction (R03, R01)
+                if all(abs(w - z) > 0.5 for w in supports):
+                    supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
         for p in extra_points(lk):          # its other points (D where P_D acts), each by its name
@@ -395,6 +463,25 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
             centres.append((z, _point_name(fp, f.link, z, mu)))
             rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+    # each frame pivot's support on the side free of the links and the arrows (as the kinematics
+    # sheet puts it), the crank's leaving room for ω1's arc
+    support_at: dict[complex, float] = {}
+    omega_mid: float | None = None
+    for z in supports:
+        crank_pivot = omega_at is not None and abs(omega_at - z) < 0.5
+        others = [(a, b) for w, d_ in support_at.items() for a, b in support_strokes(w, d_)]   # clear of those set
+        d, mid_ = _support_direction(z, drawn_links + guide_lines, [(a, b) for _, a, b in drawn] + others,
+                                     omega=crank_pivot)
+        from graphplan.drawing.plans import support as draw_support
+        draw_support(rec, z, d, step)
+        support_at[z] = d
+        if crank_pivot and mid_ is not None:
+            omega_mid = math.radians(mid_)
+
+    def support_dirs(z: complex) -> list[float]:
+        """The directions (rad) a support at ``z`` takes: its axis and its triangle's sides."""
+        return [math.radians(d + e) for w, d in support_at.items() if abs(w - z) < 0.5
+                for e in (-40.0, 0.0, 40.0)]
     arcs: dict[complex, list[complex]] = {}      # the couples' arcs drawn at a point (their middles)
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":
@@ -402,7 +489,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             ck = mech.crank
             pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
             z = f.at / mu
-            taken = [cmath.phase(pin - z)] + [math.radians(a) for a in (-40.0, -90.0, -140.0)]  # the crank, the support
+            taken = [cmath.phase(pin - z)] + support_dirs(z)          # the crank, the support
+            if omega_at is not None and abs(omega_at - z) < 0.5:     # ω1's arc (r = 9 mm as this one)
+                w1 = omega_mid if omega_mid is not None else cmath.phase(z - pin)
+                taken += [w1 + math.radians(e) for e in (-45.0, 0.0, 45.0)]
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
@@ -416,12 +506,11 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                      if abs(e - z) > 0.5 and _on_segment(z, a, b)]
             taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
             taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
-            if any(abs(w - z) < 0.5 for w in supports):          # the support under a frame pivot
-                taken += [math.radians(a) for a in (-40.0, -90.0, -140.0)]
+            taken += support_dirs(z)                              # the support at a frame pivot
             if omega_at is not None and abs(omega_at - z) < 0.5:  # ω1's arc, away from the crank
                 ck = mech.crank
                 pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
-                taken.append(cmath.phase(z - pin))
+                taken.append(omega_mid if omega_mid is not None else cmath.phase(z - pin))
             key = next((w for w in arcs if abs(w - z) < 0.5), z)     # M^Φ3 and M3 on one link: two arcs
             taken += [cmath.phase(m_ - z) for m_ in arcs.get(key, [])]     # apart, the second wider
             mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step,
@@ -477,12 +566,16 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     if omega_at is not None:
         ck = mech.crank
         pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
-        _omega(rec, lab, omega_at, mech.omega1, cmath.phase(omega_at - pin))
+        _omega(rec, lab, omega_at, mech.omega1,
+               omega_mid if omega_mid is not None else cmath.phase(omega_at - pin))
     for z, name in names:
         side = next((v for c, v in clear.items() if abs(c - z) < 0.5), -1 - 1j)
         lab.place(z, indexed(name), 3.5, side, step)
     for z, name in centres:
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+    # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
+    # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
+    # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
     for about, t, _ in arms:
         mid = 0.5 * (about + t.foot)
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
@@ -495,8 +588,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                                               for side in (1j * _unit(b - a), -1j * _unit(b - a))])
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
-    # h_G3 on the loom's rocker) had their names stacked against each other
-    return _apart(rec, lab.asked, owned, list(span.values()))
+    # h_G3 on the loom's rocker) had their names stacked against each other; no leader across a link
+    return _apart(rec, lab.asked, owned, list(span.values()), across=False)
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -514,7 +607,10 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
     return rec
 
 
-def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: float = 9.0) -> None:
+OMEGA_R_MM = 9.0   # ω1's arc on the scheme
+
+
+def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: float = OMEGA_R_MM) -> None:
     """The crank's sense of rotation at its pivot: a 90° arc with an arrowhead, labelled ω₁ (as on
     the position plan), on the side of the pivot away from the crank (``away``, rad) so that it
     crosses neither the crank nor the balancing moment's arc (r = 5 mm)."""
@@ -580,22 +676,32 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                  for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
-    if tiny:     # vectors too short to carry a label: named under the plan with their bound
-        names = ", ".join(dict.fromkeys(force_symbol(s.name, lang) for s in tiny))
-        caption += f"; {names} < {num(math.floor(max(s.mm for s in tiny)) + 1, lang)} {unit('mm', lang)}"
+    # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
+    unseen = [f.name for f in gp.forces if f.force != 0 and all(s.name != f.name for s in sides)]
+    if tiny or unseen:     # vectors too short to carry a label: named under the plan with their bound
+        names = ", ".join(dict.fromkeys([force_symbol(s.name, lang) for s in tiny]
+                                        + [force_symbol(n, lang) for n in unseen]))
+        bound = math.floor(max(s.mm for s in tiny)) + 1 if tiny else 1
+        caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
 
 
+_FENCE = "a label's fence (removed once the labels are set)"
+
+
 def _apart(rec: Record, asked: list[LabelRequest],
            owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] | None = None,
-           arrows: list[tuple[complex, complex]] = ()) -> Record:
+           arrows: list[tuple[complex, complex]] = (), across: bool = True) -> Record:
     """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
     ring its letter height out, so that no two stand closer than their height; the rings go.
     A force's letter (``owned``: the request's index → its arrow, tail and head, and further
     anchors along its shaft) is set only where it stands nearer its own arrow than any other of
     the ``arrows`` (labels.place_owned_line): at the ram the press's "P_E" stood by the head of
-    Φ4's short arrow and "Φ4" beside the shaft of P_E's."""
+    Φ4's short arrow and "Φ4" beside the shaft of P_E's. Not ``across``: no leader crosses a link
+    or an arrow (on a group a force's name there reads as the other side's)."""
+    from dataclasses import replace
+
     from graphplan.drawing.labels import place_labels, place_owned_line
     owned = owned or {}
     rings = []
@@ -604,9 +710,9 @@ def _apart(rec: Record, asked: list[LabelRequest],
         if i in owned:
             mine, more = owned[i]
             others = [ab for ab in arrows if ab is not mine and ab != mine]
-            place_owned_line(rec, [req, *more], mine, others, layer="labels")
+            place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
         else:
-            place_labels(rec, [req], layer="labels")
+            place_labels(rec, [replace(req, across=across)], layer="labels")
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue
@@ -614,9 +720,9 @@ def _apart(rec: Record, asked: list[LabelRequest],
             g = req.size
             rings.append(rec.add("polyline", [(x0 - g, y0 - g), (x1 + g, y0 - g), (x1 + g, y1 + g),
                                               (x0 - g, y1 + g), (x0 - g, y0 - g)],
-                                 role="construction", layer="construction"))
-    keep = {id(r) for r in rings}
-    rec.items[:] = [p for p in rec.items if id(p) not in keep]
+                                 role="label", layer="construction", step=_FENCE))   # not breakable
+    # by their step: a letter set over thin lines (``breaks``) breaks a ring into pieces too
+    rec.items[:] = [p for p in rec.items if p.step != _FENCE]
     return rec
 
 
@@ -654,6 +760,9 @@ def _plan_anchors(sides: list) -> list[tuple[complex, object, complex]]:
 
 # -- the lever ---------------------------------------------------------------------------------
 
+ARM_LETTER_MM = 5.0   # a lever arm's letter anchored this far from its foot, back toward the pole
+
+
 def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     """The Zhukovsky lever: the velocity plan turned 90° counter-clockwise, each force at its point's
     image, the arms from the pole, the balancing force P_b at the crank pin's image."""
@@ -671,6 +780,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     rec.point((0.0, 0.0), role="joint", layer="vectors", step=step)
     biggest = max([t.force for t in lv.terms] + [abs(lv.balancing_force), 1e-9])
     labels = []
+    arm_feet: dict[complex, list[str]] = {}      # each arm's foot: the forces on that line (one arm serves them)
     drawn: list[tuple[complex, complex, complex]] = []
     lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
     for t in lv.terms:
@@ -704,7 +814,11 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         labels.append((tip, t.name, u) if abs(tip - z) >= abs(tail - z) else (tail, t.name, -u))
         if abs(t.arm_mm) >= 1.0:
             foot = z - dot(z, u) * u
-            rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step)
+            # the arm h from the pole to the force's line, lettered as on the groups (h_{G2})
+            rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step,
+                        text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
+            key = next((k for k in arm_feet if abs(k - foot) < 0.3), foot)
+            arm_feet.setdefault(key, []).append(t.name)
             lo, hi = sorted((dot(tail - z, u), dot(tip - z, u)))
             at = dot(foot - z, u)
             if at < lo - 1e-9 or at > hi + 1e-9:      # past the arrow: its line extended to the foot
@@ -733,6 +847,15 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
     for tip, name, u in labels:
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
+    middle = sum(turned.values()) / max(len(turned), 1)
+    for foot, names in arm_feet.items():
+        # each arm lettered across it by its foot, where it is its own (G1's and G2's arms run on
+        # one line from the pole to their feet); two forces on one line: one arm, both names (h_{G3,G4})
+        # on the side toward the plan's middle, not out past its edge (the lever keeps its size)
+        at = foot - min(ARM_LETTER_MM, 0.5 * abs(foot)) * _unit(foot)
+        side = 1j * _unit(foot) if dot(1j * _unit(foot), middle - at) >= 0 else -1j * _unit(foot)
+        text = arm_symbol(names[0]) if len(names) == 1 else "h_{" + ",".join(arm_symbol(n)[3:-1] for n in names) + "}"
+        lab.place(at, text, LETTER, side, step)
     _apart(rec, lab.asked)        # each label fenced while the rest are placed: near a, s2, b (a plan
                                   # narrow there) the forces' names stood within their height
     x0, y0, _, _ = rec.bounds()

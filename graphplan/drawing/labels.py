@@ -46,6 +46,7 @@ class Obstacles:
     solid: list[Box]        # closed figures whose inside stays free of lettering (slider blocks)
     numbers: list[Box] | None = None   # the boxes of labels that are numbers (a subset of boxes) …
     big: list[Box] | None = None       # … of them, links' numbers
+    leaders: list[tuple[complex, complex]] | None = None   # the leaders drawn: a new one crosses none
 
     def __post_init__(self) -> None:
         self._reach()
@@ -67,7 +68,7 @@ class Obstacles:
             return b[2] > x - reach and b[0] < x + reach and b[3] > y - reach and b[1] < y + reach
         return Obstacles(self.segs[keep], self.half[keep], [b for b in self.boxes if close(b)],
                          [b for b in self.solid if close(b)], [b for b in self.numbers or [] if close(b)],
-                         [b for b in self.big or [] if close(b)])
+                         [b for b in self.big or [] if close(b)], self.leaders)
 
     def add_segment(self, a, b, half: float) -> None:
         self.segs = np.vstack([self.segs, [[a[0], a[1], b[0], b[1]]]])
@@ -109,8 +110,10 @@ def strokes(p: Primitive) -> list[tuple[tuple[float, float], tuple[float, float]
 
 def obstacles(items: list[Primitive]) -> Obstacles:
     """What a new label must keep clear of, from the primitives already drawn."""
-    segs, half, boxes, solid, numbers, big = [], [], [], [], [], []
+    segs, half, boxes, solid, numbers, big, leaders = [], [], [], [], [], [], []
     for p in items:
+        if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
+            leaders.append((complex(*p.points[0]), complex(*p.points[1])))
         if p.kind == "text":
             boxes.append(p.ink())
             if is_number(p.text or ""):
@@ -123,7 +126,8 @@ def obstacles(items: list[Primitive]) -> Obstacles:
             half.append(hw)
         if p.kind == "polygon":
             solid.append(p.bounds())
-    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid, numbers, big)
+    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid, numbers, big,
+                     leaders)
 
 
 def _hits(ob: Obstacles, box: Box, clear: float) -> list[int]:
@@ -294,6 +298,7 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
             a, b = leader
             record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
             ob.add_segment((a.real, a.imag), (b.real, b.imag), 0.125)
+            ob.leaders = (ob.leaders or []) + [(a, b)]
         record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
         ob.boxes.append(box)
         if is_number(req.text):
@@ -465,8 +470,39 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
             a, b = _leader(req.at, box)
             if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
                 continue
+            if any(_cross(a, b, c, d) for c, d in ob.leaders or []):   # two leaders crossing read as an X
+                continue
+            if not req.across and _crosses_thick(ob, a, b):   # nor across a link or an arrow, where asked
+                continue
             return box, complex(starts[k]), (a, b)
     return None
+
+
+def _cross(a: complex, b: complex, c: complex, d: complex) -> bool:
+    """Whether the segments a–b and c–d cross (proper intersection, inside both)."""
+    def side(p: complex, q: complex, r: complex) -> float:
+        return ((q - p).conjugate() * (r - p)).imag
+    return (side(a, b, c) * side(a, b, d) < 0) and (side(c, d, a) * side(c, d, b) < 0)
+
+
+THICK_HALF = 0.3    # a line this thick (half width, mm) or more — a link, a vector — no leader crosses
+
+
+def _crosses_thick(ob: Obstacles, a: complex, b: complex) -> bool:
+    """Whether the leader a–b crosses a thick line of the drawing (``THICK_HALF``)."""
+    if len(ob.segs) == 0:
+        return False
+    s = ob.segs[ob.half >= THICK_HALF]
+    if len(s) == 0:
+        return False
+    sx, sy, ex, ey = s.T
+    ux, uy = b.real - a.real, b.imag - a.imag
+    vx, vy = ex - sx, ey - sy
+    den = ux * vy - uy * vx
+    with np.errstate(all="ignore"):
+        t = ((sx - a.real) * vy - (sy - a.imag) * vx) / den
+        v = ((sx - a.real) * uy - (sy - a.imag) * ux) / den
+    return bool(np.any((np.abs(den) > 1e-12) & (t > 0.0) & (t < 1.0) & (v > 0.0) & (v < 1.0)))
 
 
 def _leader(at: complex, box: Box) -> tuple[complex, complex]:
@@ -490,15 +526,21 @@ def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
             spots += [complex(x1 + out + iw / 2, at.imag + shift), complex(x0 - out - iw / 2, at.imag + shift),
                       complex(at.real + shift, y1 + out + ih / 2), complex(at.real + shift, y0 - out - ih / 2)]
     spots.sort(key=lambda c: abs(c - at))
-    for c in spots:
-        box = (c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2)
-        if _counts(ob, np.asarray([box]), number=_number(req)).item():
-            continue
-        a, b = _leader(at, box)
-        if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
-            continue
-        return box, complex(box[0] - ink[0], box[1] - ink[1]), (a, b)
+    for strict in (True, False):      # first a leader that crosses no other and is not long
+        for c in spots:
+            box = (c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2)
+            if _counts(ob, np.asarray([box]), number=_number(req)).item():
+                continue
+            a, b = _leader(at, box)
+            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+                continue
+            if strict and (abs(b - a) > OUTSIDE_LEADER_MM or any(_cross(a, b, c_, d) for c_, d in ob.leaders or [])):
+                continue
+            return box, complex(box[0] - ink[0], box[1] - ink[1]), (a, b)
     return None
+
+
+OUTSIDE_LEADER_MM = 30.0    # a leader out past the drawing's edge no longer than this where it can
 
 
 def _least(ob: Obstacles, req: LabelRequest, ink: Box):

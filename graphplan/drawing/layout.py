@@ -297,7 +297,9 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
     def room(top: float, h: float) -> float:
         k = keep if (sheet[0] == 0 or later is None) else later
         if k is not None and top - h < k[3] + 1e-9:
-            return k[0] - rx0
+            # the room left of the title block, never past the region's own edge (a set's sheet
+            # flows its drawings left of the tables' column: R01's hodograph ran on under the notes)
+            return min(k[0], rx1) - rx0
         return rx1 - rx0
 
     def width(items: list[Node]) -> float:

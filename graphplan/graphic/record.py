@@ -527,6 +527,8 @@ class LabelRequest:
     breaks: bool = False   # a joint's letter at a crowded point: set beside it, the thin lines under it broken
     sight: bool = False    # set beside its point only where no line passes between them (a hodograph's
                            # number across another branch of the curve reads as that branch's)
+    across: bool = True    # its leader may cross a thick line (a link, a vector); False on the force
+                           # drawings, where a force's name across a link reads as the other side's
 
 
 

@@ -108,6 +108,10 @@ def small_forces(fp, lang: str = "uk") -> list[str]:
         big = max(s.mm for s in sides)
         out += [f"{force_symbol(s.name, lang)} {num(measure(s.mm, fp.precision), lang, 2)} {unit('mm', lang)}, "
                 f"{fixed(100 * s.mm / big, lang, 1)} %" for s in sides if s.mm < SHORT_FORCE_MM]
+        # a load the ruler reads as 0 mm is no side of the plan (its table says 0): named with its bound
+        drawn = {s.name for s in sides}
+        out += [f"{force_symbol(f.name, lang)} < {num(fp.precision, lang, 2)} {unit('mm', lang)}"
+                for f in gp.forces if f.force != 0 and f.name not in drawn and fp.precision > 0]
     return list(dict.fromkeys(out))
 
 
