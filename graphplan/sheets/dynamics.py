@@ -63,7 +63,11 @@ WORDS = {
            "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
            "not": "не потрібен", "negative": "{v} кг·м² ≤ 0: маховик не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
-           "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)"},
+           "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
+           "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
+           "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
+                         "а аркуш {fmt} вміщує {room} мм",
+           "short_none": "жоден масштаб (L = {low}…{top} мм), що вміщується на аркуші {fmt}, не дає |kl| ≥ {a1} мм"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M^*_c(φ), M^*_d and the work A_c(φ), A_d(φ) "
            "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
            "inertia": "Reduced moment of inertia of the mechanism I^*_m(φ)",
@@ -86,7 +90,11 @@ WORDS = {
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
-                       "not the drawing's)"},
+                       "not the drawing's)",
+           "short": "|kl| = {kl} mm ({a1} mm on the A1 sheet): ",
+           "short_tall": "at |kl| = {a1} mm the energy–mass diagram with I^*_m(φ) under it would be ≥ {need} mm tall, "
+                         "an {fmt} sheet holds {room} mm",
+           "short_none": "no scale (L = {low}…{top} mm) that fits an {fmt} sheet gives |kl| ≥ {a1} mm"},
 }
 
 
@@ -175,9 +183,10 @@ def closure(c: float, lang: str) -> str:
     return "" if abs(c) < CLOSURE_FLOOR else "; " + WORDS[lang]["open"].format(c=num(c, lang, 2))
 
 
-def notes(f: Flywheel, doc: dict, lang: str) -> Record:
+def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> Record:
     """The scales, the construction's numbers with their symbols typeset, the convention of φ, the
-    flywheel (0 and why where none is needed), the motor against the power rule and the warnings."""
+    flywheel (0 and why where none is needed), the motor against the power rule and the warnings;
+    in a set whose energy–mass diagram reads |kl| short of the A1 sheet's, why (``short``)."""
     w = WORDS[lang]
     uk = lang == "uk"
     mm = "мм" if uk else "mm"
@@ -213,6 +222,8 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
             said.append(w["mark"] + w[why].format(e=fmt(fw[key], lang, 3), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
+    if short is not None:
+        said.append(short_note(short, lang))
     m = doc["motor"]
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"] if uk else latin(m["name"]), p=fmt(m["power_kW"], lang),
@@ -226,6 +237,15 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def short_note(short: Shortfall, lang: str) -> str:
+    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``)."""
+    w = WORDS[lang]
+    fmt = {"kl": num(short.kl, lang), "a1": num(short.target, lang), "fmt": short.format,
+           "need": num(math.floor(short.need), lang), "room": num(short.room, lang), "low": num(short.low, lang),
+           "top": num(short.top, lang)}
+    return w["short"].format(**fmt) + w["short_" + short.kind].format(**fmt)
 
 
 DRAWINGS = ("moments", "energy", "inertia", "wittenbauer", "speed")
@@ -922,13 +942,14 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
     doc = dynamics_json(fw)
+    short = shortfall(st, dyn, f, args) if shape == "set" else None
     leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
     parts_, boxes = band(fw, lang, length)
     bw = [_band_size(boxes if other == lang else band(fw, other, length)[1]) for other in LANGS]   # the same
     # room in either language (this language's band drawn once)
     leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
-    note_lines = lines_of(notes(fw, doc, lang))
+    note_lines = lines_of(notes(fw, doc, lang, short))
     region = field_of(f)
     foot = keep_out(f)[3]
 
