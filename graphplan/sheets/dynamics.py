@@ -932,11 +932,25 @@ def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
         raise GraphplanError(why)
 
 
+_ANALYSED: dict[tuple, object] = {}
+
+
+def _analysed(st: Study, delta: float | None):
+    """exact.dynamics ``analyse`` remembered per mechanism and δ: a scene's sheets each count the
+    dynamics document's sheets (sheets/sheet.py ``pages_of``), in both languages and formats."""
+    key = (repr(st.mech), delta)
+    if key not in _ANALYSED:
+        if len(_ANALYSED) >= 8:
+            _ANALYSED.pop(next(iter(_ANALYSED)))
+        _ANALYSED[key] = analyse(st, delta)
+    return _ANALYSED[key]
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
-    dyn = analyse(st, getattr(args, "delta", None))
+    dyn = _analysed(st, getattr(args, "delta", None))
     _refuse_a_table_taller_than(st, dyn, f, args)
     L, size, factor, shape, parts, length, in_nook = construction(st, dyn, f, args)
     lang = args.lang
