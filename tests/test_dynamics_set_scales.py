@@ -141,3 +141,50 @@ def test_near_zero_ordinates_are_not_projected_across_the_moments_diagram(a1):
     assert len(proj) == len(f.M_mid) - small and any(abs(p.points[0][1]) > 20.0 for p in proj)
     rays = [p for p in rec.items if p.role == "ray"]
     assert len(rays) == len(f.M_mid) - small
+
+
+def _notes_text(sheet) -> str:
+    """The set's notes as one line of words (the note block wraps its lines; markup runs joined)."""
+    words = [it.text for page in sheet.pages for p in page.placed if p.name == "notes"
+             for it in p.record.items if it.kind == "text" and it.text]
+    return " ".join(" ".join(words).split())
+
+
+def test_the_shapers_a3_set_reads_the_a1_kl_or_its_notes_say_why_not():
+    """The shaper's A3 set drew the energy–mass diagram at |kl| = 125 mm where the A1 sheet has
+    229.5 mm and said nothing. Either the set reads |kl| no shorter than the A1 sheet's, or its notes
+    give both |kl| and why: at the A1 sheet's |kl| the energy–mass diagram with I*(φ) turned under
+    it is taller than a sheet of the set — checked by drawing that band at the A1 sheet's scales
+    (its shortest φ axis, 50 mm) against the A3 field."""
+    import re
+
+    from conftest import ROOT
+
+    from graphplan.exact.dynamics import analyse
+    from graphplan.exact.positions import study
+    from graphplan.graphic.flywheel import redrawn
+    from graphplan.model.scene import load
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.dynamics import _band_size, band, dynamics_scales
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import RAW      # unnumbered: the kinematics and forces sets not counted
+    st = study(load(ROOT / "examples" / "shaper.toml"))
+    dyn = analyse(st, None)
+    s = dynamics_scales(st, dyn, "A1")
+    f1 = redrawn(dyn, None, 0.5, L=s["L"], size=s["size"], given=None)
+    on_a1 = abs(f1.kl)
+    sheet = RAW["dynamics"](st, form("A3"), _args())
+    on_a3 = _lettered_kl(sheet)
+    text = _notes_text(sheet)
+    if on_a3 >= on_a1 - 0.05:
+        assert "on the A1 sheet" not in text
+        return
+    said = re.search(r"\|kl\| = ([\d.]+) mm \(([\d.]+) mm on the A1 sheet\): at \|kl\| = [\d.]+ mm the energy–mass "
+                     r"diagram with I.*?under it would be ≥ (\d+) mm tall, an A3 sheet holds ([\d.]+) mm", text)
+    assert said, text
+    kl, a1, need, room = (float(g) for g in said.groups())
+    assert (kl, a1) == (on_a3, on_a1) and need > room
+    x0, y0, x1, y1 = field_of(form("A3"))
+    assert room == pytest.approx(y1 - y0)
+    drawn = max(_band_size(band(f1, lang, 50.0)[1])[1] for lang in ("uk", "en"))
+    assert drawn >= need > room, (drawn, need, room)

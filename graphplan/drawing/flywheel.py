@@ -188,6 +188,16 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     return rec
 
 
+def moments_least(f: Flywheel) -> tuple[float, float]:
+    """The least box (w, h mm) ``moments_record`` can take, its lettering left out: the M axis from
+    the pole's side (−H − 4) to L + 10, and from under the work diagram's axis (set 30 mm + its
+    height under M's lowest ordinate) to 8 mm over M's highest — a drawing composed where this
+    box does not fit need not be drawn to know it does not."""
+    lo, hi = _extent(f.M, f.M_mid, [f.Md], f.dyn.cycle.samples.moment / f.mu_M)
+    a_lo, a_hi = _extent(f.A_drawn)
+    return f.L + f.H + 14.0, (hi + 8.0) - (lo - 31.0 - a_hi + a_lo)
+
+
 def _work(f: Flywheel, w: dict) -> Record:
     rec = Record("work")
     lo, hi = _extent(f.A_drawn)

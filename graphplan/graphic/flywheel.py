@@ -138,6 +138,28 @@ def tangents(X: np.ndarray, Y: np.ndarray, s_max: float, s_min: float) -> dict[s
             "touch_min_x": float(X[kd]), "touch_min_y": float(Y[kd])}
 
 
+_REDUCED: dict[tuple[int, int], tuple] = {}
+
+
+def _reduced(st, n: int):
+    """I*_m, dI*_m/dφ and M*_c at the ``n`` divisions of the turn and at their middles (exact.dynamics
+    ``reduce``): the same whatever L and size the construction is drawn at, so solved once per study
+    and divisions (a sheet tries a few hundred scales of one construction). The study is kept with
+    them: a study made later at the same address is not taken for it."""
+    hit = _REDUCED.get((id(st), n))
+    if hit is None or hit[0] is not st:
+        turn = np.linspace(0.0, 2 * math.pi, n + 1)
+        hit = (st, reduce(st, turn), reduce(st, midpoints(turn)))
+        for r in hit[1:]:                     # shared by every construction: nobody writes into them
+            for v in vars(r).values():
+                if isinstance(v, np.ndarray):
+                    v.flags.writeable = False
+        if len(_REDUCED) >= 16:
+            _REDUCED.pop(next(iter(_REDUCED)))
+        _REDUCED[(id(st), n)] = hit
+    return hit[1], hit[2]
+
+
 def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
               H: float | None = None, slopes: str = "course", size: float = 1.0) -> Flywheel:
     """The draftsman's flywheel construction (module docstring), every length read with the ruler;
@@ -153,8 +175,7 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     L = float(L or settings.get("L_mm", 240.0))
     x = np.linspace(0.0, L, n + 1)
     turn = np.linspace(0.0, 2 * math.pi, n + 1)
-    at = reduce(st, turn)
-    mid = reduce(st, midpoints(turn))
+    at, mid = _reduced(st, n)
     mu_M = standard_scale(float(np.max(np.abs(at.moment))) / (M_HEIGHT * size))
     mu_phi = 2 * math.pi / L
     if H is None:

@@ -5,9 +5,12 @@ position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
-from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, records, speed_fitted,
-                                       wittenbauer_record)
+import numpy as np
+
+from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least,
+                                       moments_record, records, speed_fitted, wittenbauer_record)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
@@ -60,7 +63,11 @@ WORDS = {
            "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
            "not": "не потрібен", "negative": "{v} кг·м² ≤ 0: маховик не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
-           "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)"},
+           "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
+           "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
+           "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
+                         "а аркуш {fmt} вміщує {room} мм",
+           "short_none": "жоден масштаб (L = {low}…{top} мм), що вміщується на аркуші {fmt}, не дає |kl| ≥ {a1} мм"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M^*_c(φ), M^*_d and the work A_c(φ), A_d(φ) "
            "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
            "inertia": "Reduced moment of inertia of the mechanism I^*_m(φ)",
@@ -83,7 +90,11 @@ WORDS = {
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
-                       "not the drawing's)"},
+                       "not the drawing's)",
+           "short": "|kl| = {kl} mm ({a1} mm on the A1 sheet): ",
+           "short_tall": "at |kl| = {a1} mm the energy–mass diagram with I^*_m(φ) under it would be ≥ {need} mm tall, "
+                         "an {fmt} sheet holds {room} mm",
+           "short_none": "no scale (L = {low}…{top} mm) that fits an {fmt} sheet gives |kl| ≥ {a1} mm"},
 }
 
 
@@ -172,9 +183,10 @@ def closure(c: float, lang: str) -> str:
     return "" if abs(c) < CLOSURE_FLOOR else "; " + WORDS[lang]["open"].format(c=num(c, lang, 2))
 
 
-def notes(f: Flywheel, doc: dict, lang: str) -> Record:
+def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> Record:
     """The scales, the construction's numbers with their symbols typeset, the convention of φ, the
-    flywheel (0 and why where none is needed), the motor against the power rule and the warnings."""
+    flywheel (0 and why where none is needed), the motor against the power rule and the warnings;
+    in a set whose energy–mass diagram reads |kl| short of the A1 sheet's, why (``short``)."""
     w = WORDS[lang]
     uk = lang == "uk"
     mm = "мм" if uk else "mm"
@@ -210,6 +222,8 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
             said.append(w["mark"] + w[why].format(e=fmt(fw[key], lang, 3), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
+    if short is not None:
+        said.append(short_note(short, lang))
     m = doc["motor"]
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"] if uk else latin(m["name"]), p=fmt(m["power_kW"], lang),
@@ -223,6 +237,15 @@ def notes(f: Flywheel, doc: dict, lang: str) -> Record:
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def short_note(short: Shortfall, lang: str) -> str:
+    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``)."""
+    w = WORDS[lang]
+    fmt = {"kl": num(short.kl, lang), "a1": num(short.target, lang), "fmt": short.format,
+           "need": num(math.floor(short.need), lang), "room": num(short.room, lang), "low": num(short.low, lang),
+           "top": num(short.top, lang)}
+    return w["short"].format(**fmt) + w["short_" + short.kind].format(**fmt)
 
 
 DRAWINGS = ("moments", "energy", "inertia", "wittenbauer", "speed")
@@ -290,6 +313,27 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
     boxes = {"energy": (ex0, ey0, side, ey1), "wittenbauer": (side, foot, wx1, wy1),
              "inertia": (ix0, iy0, ix1, foot)}
     return {"energy": energy, "wittenbauer": witt, "inertia": inertia}, boxes
+
+
+def band_least(f: Flywheel, length: float) -> tuple[float, float]:
+    """The least box (w, h mm) ``band`` can take at the φ axis ``length``, its lettering left out:
+    the energy–mass diagram's ΔT axis (6 mm under the lowest of the curve, ΔT_k, k and l, 10 mm
+    over the highest) over the turned I*(φ) (its φ axis ``length`` + 10 mm long, ≥ 14 mm under that
+    axis's foot), and from ΔT(φ)'s axis (≥ ``length`` + 40.5 mm left of the I* axis) to the I*
+    axis's end (14 mm right of the largest I*) — a band composed where this box does not fit need
+    not be drawn to know it does not."""
+    w, h = wittenbauer_least(f)
+    return w + length + 37.5, h + length + 16.0
+
+
+def wittenbauer_least(f: Flywheel) -> tuple[float, float]:
+    """The least box (w, h mm) the energy–mass diagram (``wittenbauer_record``) can take, its
+    lettering left out: its I* axis from −3 mm to 14 mm past the largest I* (or the curve's
+    abscissa), its ΔT axis from 6 mm under the lowest of the curve, ΔT_k, k and l (and 0) to 10 mm
+    over the highest."""
+    X, Y = f.curve()
+    v = np.concatenate([Y, f.dT, [f.tangent["k"], f.tangent["l"], 0.0]])
+    return float(max(np.max(X), np.max(f.I))) + 17.0, float(v.max() - v.min()) + 16.0
 
 
 def _union(parts: dict[str, Record]) -> Record:
@@ -448,6 +492,9 @@ def _sizes(st: Study):
     return SIZES
 
 
+_CONSTRUCTIONS: dict[tuple, tuple] = {}
+
+
 def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float, bool]:
     """The flywheel construction the dynamics sheet of ``f`` draws and how: the largest abscissa L
     and heights' size at which the classical composition (``_classical``) fits one sheet (both
@@ -458,20 +505,69 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     (L, size, tables' factor, shape, table columns, the band's φ axis, notes in the nook); a set of sheets at
     those scales where none does (at the smallest where not even the classical one fits). The
     terminal's ``dynamics`` reports the same construction. The sizes are tried by halving the list
-    (a larger size never fits where a smaller does not); each try draws the diagrams (a few ms)."""
+    (a larger size never fits where a smaller does not); each try draws the diagrams (a few ms).
+    Remembered per mechanism, δ, format, divisions and precision (the language changes no
+    construction: every size is measured in both): a scene's sheets each count the dynamics
+    document's sheets (sheets/sheet.py ``pages_of``), and the A2/A3 set's search takes the A1
+    sheet's |kl| (``_a1_kl``)."""
+    if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
+        L, size = _sizes(st)[-1]                   # (what the search would end at), nothing drawn
+        return L, size, 1.0, "set", 1, _lengths(L)[-1], False
+    key = _construction_key(st, dyn, f, args)
+    if key not in _CONSTRUCTIONS:
+        if len(_CONSTRUCTIONS) >= 64:
+            _CONSTRUCTIONS.pop(next(iter(_CONSTRUCTIONS)))
+        _CONSTRUCTIONS[key] = _construction(st, dyn, f, args)
+    return _CONSTRUCTIONS[key]
+
+
+_SCALES: dict[tuple, tuple[float, float]] = {}
+
+
+def construction_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
+    """(L, size) of ``construction`` alone — what the A2/A3 set's search needs of the A1 sheet
+    (``_a1_kl``): the classical composition's scales stand once the band holds at its shortest φ
+    axis in some composition, whichever longer one the sheet then draws (not sought here)."""
+    if _table_overflow(st, dyn, f, args):
+        return _sizes(st)[-1]
+    key = _construction_key(st, dyn, f, args)
+    if key in _CONSTRUCTIONS:
+        return _CONSTRUCTIONS[key][:2]
+    if key not in _SCALES:
+        if len(_SCALES) >= 64:
+            _SCALES.pop(next(iter(_SCALES)))
+        _SCALES[key] = _construction(st, dyn, f, args, scales_only=True)[:2]
+    return _SCALES[key]
+
+
+def _construction_key(st: Study, dyn, f: Form, args) -> tuple:
+    """What a construction depends on: the mechanism, δ, the format, the divisions and the ruler
+    (not the language: every drawing is measured in both)."""
+    return (repr(st.mech), dyn.delta, f.name, f.width, f.height, getattr(args, "divisions", None), args.precision)
+
+
+def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> tuple:
+    """``construction`` computed (its table of the positions known to fit a sheet); ``scales_only``:
+    (L, size) as soon as they are known to stand (``construction_scales``)."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     sizes = _sizes(st)
 
     drawn_at: dict = {}
     banded: dict = {}
+    built_at: dict = {}
+
+    def built(L: float, size: float) -> Flywheel:      # the construction once for both languages
+        if (L, size) not in built_at:
+            built_at[(L, size)] = _built(dyn, args, L, size)
+        return built_at[(L, size)]
 
     def measured(L: float, size: float, factor: float):
         if (L, size) not in drawn_at:             # the drawings and the tables' content once per size
             per = []
-            built = _built(dyn, args, L, size)     # once for both languages
+            built_ = built(L, size)
             for lang in LANGS:
-                fw, drawn = _drawn(dyn, args, L, size, lang, built)
+                fw, drawn = _drawn(dyn, args, L, size, lang, built_)
                 doc = dynamics_json(fw)
                 per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang)), fw))
             drawn_at[(L, size)] = per
@@ -482,13 +578,13 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
         return leaves, tables, [p[3] for p in per], per
 
-    def band_leaf(L: float, size: float, length: float, per) -> Leaf:
-        return band_and_nooks(L, size, length, per)[0]
+    def band_leaf(L: float, size: float, length: float) -> Leaf:
+        return band_and_nooks(L, size, length)[0]
 
-    def band_and_nooks(L: float, size: float, length: float, per):
+    def band_and_nooks(L: float, size: float, length: float):
         """The band's leaf (both languages) and each language's band: its boxes and width (``nooks``)."""
         if (L, size, length) not in banded:       # the band in both languages (its captions differ)
-            bx = [band(p[4], p[0], length)[1] for p in per]
+            bx = [band(built(L, size), lang, length)[1] for lang in LANGS]
             wh = [_band_size(b) for b in bx]
             banded[(L, size, length)] = (Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh)),
                                          [(b, w) for b, (w, _) in zip(bx, wh)])
@@ -508,12 +604,13 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         return next(b[2] - b[0] for leaf, b in arrange(tree, (0.0, 0.0, W, H)) if leaf.name == "band")
 
     foot = keep_out(f)[3] - y0
-    if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
-        L, size = sizes[-1]                        # (what the search below would end at), nothing drawn
-        return L, size, 1.0, "set", 1, _lengths(L)[-1], False
 
     def fit(k: int):                      # the scales: as the classical composition sets them
         L, size = sizes[k]
+        fw = built(L, size)                # every one stacks the energy–mass diagram under the moments:
+        (mw, mh), (ww, wh) = moments_least(fw), wittenbauer_least(fw)     # where their least boxes
+        if max(mw, ww) > W + 1e-9 or mh + wh > H + 1e-9:                  # do not fit, none is drawn
+            return None
         for factor in (TABLES, 1.0):
             leaves, tables, notes_, _ = measured(L, size, factor)
             for shape in CLASSICAL:
@@ -532,11 +629,25 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
         else:
             lo = k + 1
     L, size = found if found is not None else sizes[-1]
+    if found is not None and scales_only:     # the band at its shortest φ axis held by a composition (the
+        shortest = _lengths(L)[-1]            # notes in the column): the search below keeps (L, size)
+        for factor in (TABLES, 1.0):
+            leaves, tables, notes_, _ = measured(L, size, factor)
+            leaves["band"] = band_leaf(L, size, shortest)
+            for shape in SHAPES:
+                for parts in (1, 2, 3):
+                    C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
+                    tw, th = extent(_tree(shape, leaves, C, foot))
+                    if tw <= W + 1e-9 and th <= H + 1e-9:
+                        return L, size
     if found is not None:                 # the band: its longest φ axis at which the sheet holds it
         for factor in (TABLES, 1.0):
             leaves, tables, notes_, per = measured(L, size, factor)
             for length in _lengths(L):
-                leaves["band"], nooks = band_and_nooks(L, size, length, per)
+                least = band_least(built(L, size), length)      # no composition holds a band wider or
+                if least[0] > W + 1e-9 or least[1] > H + 1e-9:   # taller than the field: not drawn
+                    continue
+                leaves["band"], nooks = band_and_nooks(L, size, length)
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
                 for in_nook in (True, False):
                     for shape in SHAPES:
@@ -555,15 +666,30 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
         return _fits_later(f, b)
 
-    def fits(L: float, size: float) -> bool:
-        leaves, _, _, per = measured(L, size, 1.0)
-        return _fits_later(f, leaves["moments"]) and _fits_later(f, band_leaf(L, size, _lengths(L)[-1], per))
+    def moments_leaf(L: float, size: float) -> Leaf:      # the moments and the work alone, both languages
+        if (L, size) in drawn_at:
+            return measured(L, size, 1.0)[0]["moments"]
+        fw = built(L, size)
+        wh = [_wh(captioned(moments_record(fw, lang), WORDS[lang]["moments"])) for lang in LANGS]
+        return Leaf("moments", max(a[0] for a in wh), max(a[1] for a in wh))
 
-    def kl(L: float, size: float) -> float:
-        return abs(measured(L, size, 1.0)[3][0][2]["flywheel"]["kl_mm"])
-    L, size = _set_scales(sizes, fits, kl, _a1_kl(st, dyn, f, args), (L, size))
-    per = measured(L, size, 1.0)[3]
-    length = next((g for g in _lengths(L) if on_a_page(band_leaf(L, size, g, per))), _lengths(L)[-1])
+    def fits(L: float, size: float) -> bool:      # the moments, then the band: only what decides, each
+        fw, length = built(L, size), _lengths(L)[-1]   # drawn only where its least box fits
+        return (_fits_later(f, Leaf("moments", *moments_least(fw))) and _fits_later(f, moments_leaf(L, size))
+                and _fits_later(f, Leaf("band", *band_least(fw, length))) and _fits_later(f, band_leaf(L, size, length)))
+
+    def kl(L: float, size: float) -> float:       # read off the construction: nothing drawn
+        return abs(built(L, size).kl)
+    target = _a1_kl(st, dyn, f, args)
+    L, size = _set_scales(sizes, fits, kl, target, (L, size))
+    if target is not None and kl(L, size) < target - 1e-9:      # the search's steps may pass a scale that
+        L, size, why = _reach(sizes, fits, kl, target, args.precision, f, (L, size))    # reads it: any?
+        if why is not None:
+            if len(_SHORT) >= 64:
+                _SHORT.pop(next(iter(_SHORT)))
+            _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
+    length = next((g for g in _lengths(L) if on_a_page(Leaf("band", *band_least(built(L, size), g)))
+                   and on_a_page(band_leaf(L, size, g))), _lengths(L)[-1])
     return L, size, 1.0, "set", 1, length, False
 
 
@@ -591,8 +717,63 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
     the ruler's 0.5 mm over |kl|), or None on A1 itself."""
     if f.name == "A1":
         return None
-    L, size, *_ = construction(st, dyn, form("A1"), args)
-    return abs(dynamics_json(_built(dyn, args, L, size))["flywheel"]["kl_mm"])
+    L, size = construction_scales(st, dyn, form("A1"), args)
+    return abs(_built(dyn, args, L, size).kl)
+
+
+@dataclass(frozen=True)
+class Shortfall:
+    """Why a set's energy–mass diagram reads |kl| short of the A1 sheet's (``_reach``): ``kind``
+    "tall" — at the A1 sheet's |kl| the diagram with I*(φ) turned under it would be at least
+    ``need`` mm tall where a sheet of the set holds ``room`` mm —, or "none" — no scale of the
+    set's grid (L from ``low`` to ``top`` mm) that a sheet holds reads it."""
+    kl: float
+    target: float
+    format: str
+    kind: str
+    need: float = 0.0
+    room: float = 0.0
+    low: float = 0.0
+    top: float = 0.0
+
+
+_SHORT: dict[tuple, Shortfall] = {}
+
+
+def shortfall(st: Study, dyn, f: Form, args) -> Shortfall | None:
+    """Where the set of ``f`` draws the energy–mass diagram at a |kl| short of the A1 sheet's, why
+    (``Shortfall``, for the notes); else None."""
+    if _table_overflow(st, dyn, f, args) or construction(st, dyn, f, args)[3] != "set":
+        return None
+    return _SHORT.get(_construction_key(st, dyn, f, args))
+
+
+def _set_grid(sizes) -> list[float]:
+    """The abscissae L a set tries, the longest first, ``SET_L_STEP`` apart."""
+    Ls = sorted({L for L, _ in sizes}, reverse=True)
+    if len(Ls) > 1:
+        top, low = Ls[0], Ls[-1]
+        Ls = [top - SET_L_STEP * k for k in range(int((top - low) / SET_L_STEP) + 1)]
+    return Ls
+
+
+def _reach(sizes, fits, kl, target: float, precision: float, f: Form, found: tuple[float, float]):
+    """The set's scales where ``_set_scales`` stopped short of ``target``: the first pair of the grid
+    (L the longest first, then the size the largest) whose |kl| reaches it and whose drawings fit a
+    sheet, with None; else ``found`` and why none does (``Shortfall``'s kind and numbers). The
+    energy–mass diagram's ΔT axis spans k and l, so at |kl| ≥ target the band is at least target −
+    precision/2 + its shortest φ axis + 32 mm tall (``band_least``): where no sheet of ``f`` is that
+    tall, no pair is tried."""
+    Ls = _set_grid(sizes)
+    x0, y0, x1, y1 = field_of(f)
+    need = target - precision / 2 + min(_lengths(Ls[-1])) + 32.0
+    if need > y1 - y0 + 1e-9:
+        return (*found, ("tall", need, y1 - y0))
+    for L in Ls:
+        for size in SET_SIZES:
+            if kl(L, size) >= target - 1e-9 and fits(L, size):
+                return L, size, None
+    return (*found, ("none", 0.0, 0.0, Ls[-1], Ls[0]))
 
 
 def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, float]) -> tuple[float, float]:
@@ -603,10 +784,7 @@ def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, fl
     every smaller size where it holds for one (the drawings grow with it): each L's size is sought
     from the last L's (a shorter L holds at least as large a size), upward while it fits, else by
     halving below it."""
-    Ls = sorted({L for L, _ in sizes}, reverse=True)
-    if len(Ls) > 1:
-        top, low = Ls[0], Ls[-1]
-        Ls = [top - SET_L_STEP * k for k in range(int((top - low) / SET_L_STEP) + 1)]
+    Ls = _set_grid(sizes)
     best, last, idle = None, None, 0
     for L in Ls:
         if last is not None and fits(L, SET_SIZES[last]):
@@ -754,23 +932,38 @@ def _refuse_a_table_taller_than(st: Study, dyn, f: Form, args) -> None:
         raise GraphplanError(why)
 
 
+_ANALYSED: dict[tuple, object] = {}
+
+
+def _analysed(st: Study, delta: float | None):
+    """exact.dynamics ``analyse`` remembered per mechanism and δ: a scene's sheets each count the
+    dynamics document's sheets (sheets/sheet.py ``pages_of``), in both languages and formats."""
+    key = (repr(st.mech), delta)
+    if key not in _ANALYSED:
+        if len(_ANALYSED) >= 8:
+            _ANALYSED.pop(next(iter(_ANALYSED)))
+        _ANALYSED[key] = analyse(st, delta)
+    return _ANALYSED[key]
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
-    dyn = analyse(st, getattr(args, "delta", None))
+    dyn = _analysed(st, getattr(args, "delta", None))
     _refuse_a_table_taller_than(st, dyn, f, args)
     L, size, factor, shape, parts, length, in_nook = construction(st, dyn, f, args)
     lang = args.lang
     fw, drawn = _drawn(dyn, args, L, size, lang)
     doc = dynamics_json(fw)
+    short = shortfall(st, dyn, f, args) if shape == "set" else None
     leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
     parts_, boxes = band(fw, lang, length)
     bw = [_band_size(boxes if other == lang else band(fw, other, length)[1]) for other in LANGS]   # the same
     # room in either language (this language's band drawn once)
     leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
     tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
-    note_lines = lines_of(notes(fw, doc, lang))
+    note_lines = lines_of(notes(fw, doc, lang, short))
     region = field_of(f)
     foot = keep_out(f)[3]
 
