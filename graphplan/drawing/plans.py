@@ -289,8 +289,10 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     for name, X in pts.items():
+        # crowded by thin positions: beside it, the lines broken; nearer it than the point's other positions
+        rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6)
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
-                                   breaks=True))   # crowded by thin positions: beside it, the lines broken
+                                   breaks=True, rivals=rivals))
     _, middle = support_direction(leaving(sc, thick_lays, crank.pivot), omega=True)
     labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
     if not lettered:
@@ -298,19 +300,63 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     place_labels(rec, labels)
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
         place_first(rec, alternatives)
-    labels = []
-    # numbers of the positions at the crank pin, the output point and the groups' inner joints
-    inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
-    for p in plans.positions:
-        lay = p.layout
-        label = str(p.index) if p.index is not None else f"{p.phi:g}°"
-        A = where(sc, lay, crank.link, crank.pin)
-        labels.append(LabelRequest(A, label, toward=A - O, size=2.5, optional=False))
-        for name in dict.fromkeys([out] + inner):
-            X = where(sc, lay, sc.body_of(name), name)
-            labels.append(LabelRequest(X, label, toward=-1j, size=2.5, optional=True))
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    labels = position_numbers(plans, O, dots)
     labels += late
     return place_labels(rec, labels)
+
+
+def _numbered(plans: Plans) -> list[tuple[str, bool]]:
+    """The points whose positions are numbered: the crank pin (always lettered) and the output
+    point and the groups' inner joints (left out where no room is)."""
+    crank = plans.scheme.mech.crank
+    inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
+    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner) if n != crank.pin]
+
+
+def _beside(path: list[complex], i: int, O: complex) -> complex:
+    """The side a position number takes at the path's i-th point: across the path (its chord
+    through the neighbours), on its convex side — away from the path's middle; a straight path
+    (a slider's guide) away from the crank's pivot O."""
+    n = len(path)
+    t = path[(i + 1) % n] - path[(i - 1) % n]
+    if abs(t) < 1e-6:
+        t = path[(i + 1) % n] - path[i] if abs(path[(i + 1) % n] - path[i]) > 1e-6 else 1.0 + 0j
+    normal = 1j * t / abs(t)
+    middle = sum(path, 0j) / n
+    away = path[i] - middle
+    if abs((away * normal.conjugate()).real) < 0.05 * max(abs(away), 1e-9) or abs(away) < 1e-6:
+        away = path[i] - O
+    return normal if (away * normal.conjugate()).real >= 0 else -normal
+
+
+RIVALS_WITHIN = 30.0   # mm: the other points a position number is kept from (farther ones cannot be confused)
+SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that point (an extreme on a dead centre)
+
+
+def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list[LabelRequest]:
+    """The numbers of the positions at the crank pin, the output point and the groups' inner
+    joints: each across its path beside its own point, read as nobody else's — nearer its point
+    than any other numbered point of another position or any other drawn point (``dots``: a
+    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it."""
+    sc = plans.scheme
+    named = _numbered(plans)
+    rows = []
+    for name, optional in named:
+        path = [where(sc, p.layout, sc.body_of(name), name) for p in plans.positions]
+        rows.append((name, optional, path))
+    out = []
+    for k, p in enumerate(plans.positions):
+        label = str(p.index) if p.index is not None else f"{p.phi:g}°"
+        for name, optional, path in rows:
+            X = path[k]
+            mine = [q[k] for _, _, q in rows]
+            others = [q[j] for _, _, q in rows for j in range(len(q)) if j != k]
+            rivals = tuple(z for z in others + [d for d in dots if abs(d - X) > SAME_DOT]
+                           if abs(z - X) < RIVALS_WITHIN and min(abs(z - m) for m in mine) > 1e-6)
+            toward = X - O if name == sc.mech.crank.pin else _beside(path, k, O)
+            out.append(LabelRequest(X, label, toward=toward, size=2.5, optional=optional, rivals=rivals))
+    return out
 
 
 DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)

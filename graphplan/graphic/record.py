@@ -527,6 +527,8 @@ class LabelRequest:
     breaks: bool = False   # a joint's letter at a crowded point: set beside it, the thin lines under it broken
     sight: bool = False    # set beside its point only where no line passes between them (a hodograph's
                            # number across another branch of the curve reads as that branch's)
+    rivals: tuple = ()     # other points its label must not be read as (the same path's other positions):
+                           # beside it only nearer its own point than any of them, else on a leader to it
 
 
 
