@@ -83,14 +83,16 @@ def _check(text: str, mu_l: float | None, accel):
     # every position numbered at the crank pin (the numbers at other points may be left out where
     # no room is), and most of the others
     assert len(readings) >= len(plans.positions) * len(_numbered(plans)) * 0.9, len(readings)
-    # the joints' letters (at the first thick position) nearest their own position's point
-    thick = plans.positions[[p.index for p in plans.positions].index(min(plans.accel_keys or [0]))].layout
+    # the joints' letters (at the first thick position) nearer their own position's point than the
+    # same point's other positions drawn as dots
+    thick = next(p.layout for p in plans.positions if p.layout.key == min(set(plans.accel_keys) or {0}))
     sc = plans.scheme
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
     for name, X in joints_at(sc, thick).items():
         if name in plans.scheme.mech.frame:
             continue
         others = [z for z in (joints_at(sc, p.layout).get(name) for p in plans.positions)
-                  if z is not None and abs(z - X) > SAME]
+                  if z is not None and abs(z - X) > SAME and any(abs(z - d) < 1e-6 for d in dots)]
         for q in rec.items:
             if q.kind == "text" and q.text == indexed(name):
                 led = [s for s in rec.items if s.kind == "segment" and s.role == "label"

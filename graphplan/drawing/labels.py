@@ -460,22 +460,31 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box):
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
     n = FAR_DIRECTIONS
     # a label with rivals: nearer its own point first, then clear of them; its leader off the lines first
-    for strict, apart in (((True, True), (False, True), (False, False)) if req.rivals else ((False, False),)):
-        for ring in range(len(FAR)):          # ring by ring, nearest first: the same order, counted lazily
-            counts = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
-            for k in np.nonzero(counts == 0)[0] + ring * n:
-                box = tuple(boxes[k])
-                a, b = _leader(req.at, box)
-                if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
-                    continue
-                if req.rivals and (not led_owned(req, box, b, strict) or apart and _along_line(ob, a, b)):
-                    continue
-                return box, complex(starts[k]), (a, b)
+    passes = ((True, True), (False, True), (False, False)) if req.rivals else ((False, False),)
+    rings = range(len(FAR))
+    # a number with rivals: nearer its own point than theirs at any length of leader first; a letter:
+    # the nearest ring first (it stays within a few mm), the stricter passes first in each
+    order = ([(p, r) for p in passes for r in rings] if is_number(req.text)
+             else [(p, r) for r in rings for p in passes])
+    counted: dict[int, np.ndarray] = {}
+    for (strict, apart), ring in order:
+        if ring not in counted:               # ring by ring, nearest first: counted lazily
+            counted[ring] = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+        counts = counted[ring]
+        for k in np.nonzero(counts == 0)[0] + ring * n:
+            box = tuple(boxes[k])
+            a, b = _leader(req.at, box)
+            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+                continue
+            if req.rivals and (not led_owned(req, box, b, strict) or apart and _along_line(ob, a, b)):
+                continue
+            return box, complex(starts[k]), (a, b)
     return None
 
 
 RIVAL_CLEAR = 1.0    # mm: a leader passes no other point of its path nearer than this (it would read as that point's)
 RIVAL_BOX = 2.5      # … and the label at its end stands at least this clear of any (else beside that point)
+RIVAL_FARTHER = 1.5  # mm: a label beside its point this much nearer it than any rival reads as its
 
 
 def _along_line(ob: Obstacles, a: complex, b: complex, clear: float = 1.0) -> bool:
@@ -497,9 +506,10 @@ def _along_line(ob: Obstacles, a: complex, b: complex, clear: float = 1.0) -> bo
 def owned(req: LabelRequest, box) -> bool:
     """Whether a label set beside its point (no leader) reads as that point's and not a rival's
     (``req.rivals``, the same path's other positions): its box at most half as far from its own
-    point as from any rival, less ``OWN_MARGIN``."""
+    point as from any rival, less ``OWN_MARGIN``, or ``RIVAL_FARTHER`` mm farther from every one."""
     mine = _box_gap(box, req.at)
-    return all(_box_gap(box, z) >= 2.0 * mine + OWN_MARGIN for z in req.rivals)
+    need = min(2.0 * mine + OWN_MARGIN, mine + RIVAL_FARTHER)
+    return all(_box_gap(box, z) >= need for z in req.rivals)
 
 
 def _off_segment(z: complex, a: complex, b: complex) -> float:
