@@ -220,8 +220,9 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
                     else None for _, e in items], lang)
     notes = []
     # one count of decimals for the vectors' graphical values (ε each by its own vector's figures),
-    # one more for the analytic ones, the ruler's for the drawn mm
+    # one more for the analytic ones (at most 4 figures), the ruler's for the drawn mm
     vec = decimals([e for _, e in items if e.get("sense") is None], precision)
+    exact_d = min(vec + 1, places([e.get("analytic") for _, e in items if e.get("sense") is None], None, 0.0))
     ruler = step_decimals(precision) if precision > 0 else 2
     for (key, e), analytic in zip(items, exact):
         cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
@@ -232,7 +233,8 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
         truth = (-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None else None
         rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
                      written(_signed(e), d, lang) if e.get("value") is not None else "—",
-                     written(truth, d + 1, lang) if analytic != "—" else "—", cell])
+                     written(truth, exact_d if e.get("sense") is None else d + 1, lang) if analytic != "—" else "—",
+                     cell])
     if pos["index"] is not None:
         where = pos["index"]
     else:
