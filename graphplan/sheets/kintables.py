@@ -280,7 +280,8 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
     for gname, g in guides:
         u = cmath.exp(1j * g.angle)
         e = abs(((O - g.through) * u.conjugate()).imag)        # O's distance from the guide's line
-        out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
+        if e > 1e-9:                                            # an axial slider: no offset to give
+            out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
     return out
 
 
