@@ -314,6 +314,8 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
     free = np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]
     if req.sight:
         free = [k for k in free.tolist() if _in_sight(ob, req.at, boxes[k])]
+    if req.rivals:
+        free = [k for k in list(free) if owned(req, boxes[k])]
     if len(free):
         k = int(free[0])
         return tuple(boxes[k]), complex(starts[k]), None
@@ -366,6 +368,8 @@ def _breaking(record: Record, req: LabelRequest, ink: Box):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     free = np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
+    if req.rivals:
+        free = [k for k in list(free) if owned(req, boxes[k])]
     if not len(free):
         return None
     k = int(free[0])
@@ -461,8 +465,18 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
     ``ok(box)``, when given)."""
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
     n = FAR_DIRECTIONS
-    for ring in range(len(FAR)):          # ring by ring, nearest first: the same order, counted lazily
-        counts = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+    # a label with rivals: nearer its own point first, then clear of them; its leader off the lines first
+    passes = ((True, True), (False, True), (False, False)) if req.rivals else ((False, False),)
+    rings = range(len(FAR))
+    # a number with rivals: nearer its own point than theirs at any length of leader first; a letter:
+    # the nearest ring first (it stays within a few mm), the stricter passes first in each
+    order = ([(p, r) for p in passes for r in rings] if is_number(req.text)
+             else [(p, r) for r in rings for p in passes])
+    counted: dict[int, np.ndarray] = {}
+    for (strict, apart), ring in order:
+        if ring not in counted:               # ring by ring, nearest first: counted lazily
+            counted[ring] = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+        counts = counted[ring]
         for k in np.nonzero(counts == 0)[0] + ring * n:
             box = tuple(boxes[k])
             if ok is not None and not ok(box):
@@ -473,6 +487,8 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
             if any(_cross(a, b, c, d) for c, d in ob.leaders or []):   # two leaders crossing read as an X
                 continue
             if not req.across and _crosses_thick(ob, a, b):   # nor across a link or an arrow, where asked
+                continue
+            if req.rivals and (not led_owned(req, box, b, strict) or apart and _along_line(ob, a, b)):
                 continue
             return box, complex(starts[k]), (a, b)
     return None
@@ -503,6 +519,59 @@ def _crosses_thick(ob: Obstacles, a: complex, b: complex) -> bool:
         t = ((sx - a.real) * vy - (sy - a.imag) * vx) / den
         v = ((sx - a.real) * uy - (sy - a.imag) * ux) / den
     return bool(np.any((np.abs(den) > 1e-12) & (t > 0.0) & (t < 1.0) & (v > 0.0) & (v < 1.0)))
+
+
+RIVAL_CLEAR = 1.0    # mm: a leader passes no other point of its path nearer than this (it would read as that point's)
+RIVAL_BOX = 2.5      # … and the label at its end stands at least this clear of any (else beside that point)
+RIVAL_FARTHER = 1.5  # mm: a label beside its point this much nearer it than any rival reads as its
+
+
+def _along_line(ob: Obstacles, a: complex, b: complex, clear: float = 1.0) -> bool:
+    """Whether a leader from ``a`` to ``b`` runs on a drawn line (its middle and three quarters
+    within ``clear`` of one line's ink): it would read as part of that line (a dimension's extension)."""
+    if len(ob.segs) == 0:
+        return False
+    sx, sy, ex, ey = ob.segs.T
+    dx, dy = ex - sx, ey - sy
+    n2 = np.maximum(dx * dx + dy * dy, 1e-12)
+    on = np.ones(len(sx), dtype=bool)
+    for f in (0.5, 0.75):
+        z = a + f * (b - a)
+        t = np.clip(((z.real - sx) * dx + (z.imag - sy) * dy) / n2, 0.0, 1.0)
+        on &= np.hypot(sx + t * dx - z.real, sy + t * dy - z.imag) - ob.half < clear
+    return bool(np.any(on))
+
+
+def owned(req: LabelRequest, box) -> bool:
+    """Whether a label set beside its point (no leader) reads as that point's and not a rival's
+    (``req.rivals``, the same path's other positions): its box at most half as far from its own
+    point as from any rival, less ``OWN_MARGIN``, or ``RIVAL_FARTHER`` mm farther from every one."""
+    mine = _box_gap(box, req.at)
+    need = min(2.0 * mine + OWN_MARGIN, mine + RIVAL_FARTHER)
+    return all(_box_gap(box, z) >= need for z in req.rivals)
+
+
+def _off_segment(z: complex, a: complex, b: complex) -> float:
+    d = b - a
+    t = 0.0 if abs(d) < 1e-12 else min(max(((z - a) * d.conjugate()).real / abs(d) ** 2, 0.0), 1.0)
+    return abs(z - (a + t * d))
+
+
+def led_owned(req: LabelRequest, box, end: complex, strict: bool = False) -> bool:
+    """Whether a label on a leader (from its point to ``end``, at the box) reads as its point's:
+    the box no nearer a rival than its own point (``strict``; else at least ``RIVAL_BOX`` clear of
+    it, where points crowd so that no spot is nearer), and the leader passing no rival within
+    ``RIVAL_CLEAR`` — a rival all but on the point (nearer than that) behind the leader, not ahead."""
+    mine = _box_gap(box, req.at)
+    for z in req.rivals:
+        if _box_gap(box, z) < (mine + 0.05 if strict else min(mine, RIVAL_BOX)):
+            return False
+        if abs(z - req.at) < RIVAL_CLEAR:
+            if ((z - req.at) * (end - req.at).conjugate()).real > 0.0:
+                return False
+        elif _off_segment(z, req.at, end) < RIVAL_CLEAR:
+            return False
+    return True
 
 
 def _leader(at: complex, box: Box) -> tuple[complex, complex]:

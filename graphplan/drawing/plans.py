@@ -100,9 +100,6 @@ def leaving(sc: Scheme, layouts: list[Layout], name: str) -> list[float]:
     return out
 
 
-SUPPORT_DIRS = (-90.0, -60.0, -120.0, -30.0, -150.0, 0.0, 180.0, 30.0, 150.0, 60.0, 120.0, 90.0)
-
-
 def support_direction(links: list[float], omega: bool = False) -> tuple[float, float | None]:
     """Where a frame pivot's support stands (degrees from the pivot: below, −90°, where that is
     free) — the side away from the links leaving it at the drawn position — and, for the crank's
@@ -111,7 +108,7 @@ def support_direction(links: list[float], omega: bool = False) -> tuple[float, f
     def free(d: float, half: float) -> float:
         return min([_gap(d, a) for a in links] + [180.0]) - half
     best = (-1e9, -90.0, None)
-    for d in SUPPORT_DIRS:
+    for d in FINE_DIRS:                  # nearest straight down first
         room = free(d, SUPPORT_HALF_DEG)
         arc = None
         if omega:
@@ -124,6 +121,69 @@ def support_direction(links: list[float], omega: bool = False) -> tuple[float, f
         if score > best[0]:
             best = (score, d, arc)
     return best[1], best[2]
+
+
+FINE_DIRS = sorted(range(-180, 180, 5), key=lambda d: (_gap(d, -90.0), d))   # straight down first
+
+
+def frame_support(sc: Scheme, drawn: list[Layout], thick: list[Layout], name: str,
+                  omega: bool = False) -> tuple[float, float | None]:
+    """Where the frame pivot ``name``'s support stands (and, for the crank's pivot, ω1's arc):
+    where no link line of any ``drawn`` position passes (nearest straight down) — else as
+    ``support_direction`` puts it clear of the ``thick`` positions' links (straight down where
+    they leave it free), the thin lines then broken under it (``break_under_supports``)."""
+    every = leaving(sc, drawn, name)
+    bold = leaving(sc, thick, name)
+    if every:
+        for d in FINE_DIRS:
+            if min(_gap(d, a) for a in every) - SUPPORT_HALF_DEG < CLEAR_DEG:
+                continue
+            if not omega:
+                return float(d), None
+            arcs = [m for m in range(0, 360, 5)
+                    if min([_gap(m, a) for a in bold] + [180.0]) - OMEGA_HALF_DEG >= CLEAR_DEG
+                    and _gap(m, d) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+            if arcs:
+                return float(d), min(arcs, key=lambda m: _gap(m, 245.0))
+    return support_direction(bold, omega=omega)
+
+
+def support_outline(X: complex, direction: float) -> list[complex]:
+    """The ink of ``support``'s symbol as a convex outline: the pivot, the bar's ends, the
+    hatching's far corners."""
+    r = cmath.exp(1j * math.radians(direction + 90.0))
+    return [X + c * r for c in (0j, complex(5.0, -5.0), complex(3.2, -6.8), complex(-6.8, -6.8), complex(-5.0, -5.0))]
+
+
+def break_under_supports(rec: Record, outlines: list[list[complex]], clear: float = 0.4) -> None:
+    """The thin lines (``labels.breakable``: the thin positions, trajectories, construction)
+    interrupted where they pass under a support's symbol, as a draftsman draws the support over
+    them: the crank's twelve lines leave its pivot clear of its frame symbol."""
+    if not outlines:
+        return
+    from dataclasses import replace
+
+    from shapely.geometry import LineString, Polygon
+    from shapely.ops import unary_union
+
+    from graphplan.drawing.labels import breakable
+    cover = unary_union([Polygon([(z.real, z.imag) for z in o]).buffer(clear) for o in outlines])
+    out = []
+    for p in rec.items:
+        if p.kind not in ("segment", "polyline") or not breakable(p) or len(p.points) < 2:
+            out.append(p)
+            continue
+        line = LineString(p.points)
+        if not line.intersects(cover):
+            out.append(p)
+            continue
+        rest = line.difference(cover)
+        parts = [rest] if rest.geom_type == "LineString" else list(getattr(rest, "geoms", []))
+        for g in parts:
+            if g.geom_type == "LineString" and g.length > 0.05:
+                pts = tuple((float(x), float(y)) for x, y in g.coords)
+                out.append(replace(p, points=pts if p.kind == "polyline" else (pts[0], pts[-1])))
+    rec.items[:] = out
 
 
 def support(rec: Record, X: complex, direction: float, step: str = "") -> None:
@@ -143,18 +203,22 @@ def support(rec: Record, X: complex, direction: float, step: str = "") -> None:
     rec.point(_pt(X), role="joint", layer="frame", step=step)
 
 
-def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layout] | None = None) -> None:
-    """Fixed pivots with their supports (each on the side away from the links leaving it at the
-    ``thick`` positions, below where that is free), fixed guides with hatching over the slider's
-    travel."""
+def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layout] | None = None,
+               drawn: list[Layout] | None = None) -> list[list[complex]]:
+    """Fixed pivots with their supports (each where no link of the ``drawn`` positions passes,
+    else on the side away from the links leaving it at the ``thick`` positions, below where that
+    is free: ``frame_support``), fixed guides with hatching over the slider's travel. Returns the
+    supports' outlines (``support_outline``: the thin lines drawn later are broken under them)."""
     mech = sc.mech
     lay0 = layouts[0]
+    outlines = []
     for name in mech.frame:
         if not any(name in link.joints for link in mech.links.values()):
             continue
         X = where(sc, lay0, FRAME, name)
-        d, _ = support_direction(leaving(sc, thick or [], name), omega=name == mech.crank.pivot)
-        support(rec, X, d)
+        d, _ = frame_support(sc, drawn or [], thick or [], name, omega=name == mech.crank.pivot)
+        support(rec, X, d, step=f"support {name}")
+        outlines.append(support_outline(X, d))
     for gname, g in mech.guides.items():
         if g.body != FRAME:
             continue
@@ -176,6 +240,7 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
             s = base + t * u + normal * 2.5
             rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
             t += 4.0
+    return outlines
 
 
 def where_frame(sc: Scheme, lay: Layout, p: complex) -> complex:
@@ -241,7 +306,7 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     every = [p.layout for p in plans.positions]
     thick_keys = set(plans.accel_keys) or {0}
     thick_lays = [l for l in every if l.key in thick_keys]
-    draw_frame(rec, sc, every + plans.extremes, thick_lays)
+    outlines = draw_frame(rec, sc, every + plans.extremes, thick_lays, drawn=every + plans.extremes)
     crank = mech.crank
     O = where(sc, regular[0], FRAME, crank.pivot)
     r = crank.length / plans.mu_l
@@ -273,6 +338,7 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     for lay in every:
         if lay.key in thick_keys:
             draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
+    break_under_supports(rec, outlines)
     # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
     late: list[LabelRequest] = []
     for j, lay in enumerate(extremes):
@@ -286,29 +352,78 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
     lay = next(l for l in every if l.key in sorted(thick_keys)[0:1] or l.key == min(thick_keys))
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
     for name, X in pts.items():
+        # crowded by thin positions: beside it, the lines broken; nearer it than the point's other
+        # positions drawn as dots (a centre of mass is dotted at the thick positions only)
+        rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
+                       and any(abs(z - d) < 1e-6 for d in dots))
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
-                                   breaks=True))   # crowded by thin positions: beside it, the lines broken
-    _, middle = support_direction(leaving(sc, thick_lays, crank.pivot), omega=True)
+                                   breaks=True, rivals=rivals))
+    _, middle = frame_support(sc, every + plans.extremes, thick_lays, crank.pivot, omega=True)
     labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
     if not lettered:
         return rec
     place_labels(rec, labels)
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
         place_first(rec, alternatives)
-    labels = []
-    # numbers of the positions at the crank pin, the output point and the groups' inner joints
-    inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
-    for p in plans.positions:
-        lay = p.layout
-        label = str(p.index) if p.index is not None else f"{p.phi:g}°"
-        A = where(sc, lay, crank.link, crank.pin)
-        labels.append(LabelRequest(A, label, toward=A - O, size=2.5, optional=False))
-        for name in dict.fromkeys([out] + inner):
-            X = where(sc, lay, sc.body_of(name), name)
-            labels.append(LabelRequest(X, label, toward=-1j, size=2.5, optional=True))
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
+    labels = position_numbers(plans, O, dots)
     labels += late
     return place_labels(rec, labels)
+
+
+def _numbered(plans: Plans) -> list[tuple[str, bool]]:
+    """The points whose positions are numbered: the crank pin (always lettered) and the output
+    point and the groups' inner joints (left out where no room is)."""
+    crank = plans.scheme.mech.crank
+    inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
+    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner) if n != crank.pin]
+
+
+def _beside(path: list[complex], i: int, O: complex) -> complex:
+    """The side a position number takes at the path's i-th point: across the path (its chord
+    through the neighbours), on its convex side — away from the path's middle; a straight path
+    (a slider's guide) away from the crank's pivot O."""
+    n = len(path)
+    t = path[(i + 1) % n] - path[(i - 1) % n]
+    if abs(t) < 1e-6:
+        t = path[(i + 1) % n] - path[i] if abs(path[(i + 1) % n] - path[i]) > 1e-6 else 1.0 + 0j
+    normal = 1j * t / abs(t)
+    middle = sum(path, 0j) / n
+    away = path[i] - middle
+    if abs((away * normal.conjugate()).real) < 0.05 * max(abs(away), 1e-9) or abs(away) < 1e-6:
+        away = path[i] - O
+    return normal if (away * normal.conjugate()).real >= 0 else -normal
+
+
+RIVALS_WITHIN = 30.0   # mm: the other points a position number is kept from (farther ones cannot be confused)
+SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that point (an extreme on a dead centre)
+
+
+def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list[LabelRequest]:
+    """The numbers of the positions at the crank pin, the output point and the groups' inner
+    joints: each across its path beside its own point, read as nobody else's — nearer its point
+    than any other numbered point of another position or any other drawn point (``dots``: a
+    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it."""
+    sc = plans.scheme
+    named = _numbered(plans)
+    rows = []
+    for name, optional in named:
+        path = [where(sc, p.layout, sc.body_of(name), name) for p in plans.positions]
+        rows.append((name, optional, path))
+    out = []
+    for k, p in enumerate(plans.positions):
+        label = str(p.index) if p.index is not None else f"{p.phi:g}°"
+        for name, optional, path in rows:
+            X = path[k]
+            mine = [q[k] for _, _, q in rows]
+            others = [q[j] for _, _, q in rows for j in range(len(q)) if j != k]
+            rivals = tuple(z for z in others + [d for d in dots if abs(d - X) > SAME_DOT]
+                           if abs(z - X) < RIVALS_WITHIN and min(abs(z - m) for m in mine) > 1e-6)
+            toward = X - O if name == sc.mech.crank.pin else _beside(path, k, O)
+            out.append(LabelRequest(X, label, toward=toward, size=2.5, optional=optional, rivals=rivals))
+    return out
 
 
 DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)

@@ -529,6 +529,8 @@ class LabelRequest:
                            # number across another branch of the curve reads as that branch's)
     across: bool = True    # its leader may cross a thick line (a link, a vector); False on the force
                            # drawings, where a force's name across a link reads as the other side's
+    rivals: tuple = ()     # other points its label must not be read as (the same path's other positions):
+                           # beside it only nearer its own point than any of them, else on a leader to it
 
 
 

@@ -68,6 +68,57 @@ def _cell(e: dict | None, precision: float, lang: str = "en") -> str:
     return number(value, lang=lang)
 
 
+def _signed(e: dict) -> float | None:
+    """An entry's graphical value as the tables print it: ω, ε signed by their sense (+ ccw)."""
+    value = e.get("value")
+    return -value if value is not None and e.get("sense") == "cw" else value
+
+
+def step_decimals(step: float) -> int:
+    """The decimals that write a ruler's step exactly (μ·0.5 mm: 0.01 → 2, 0.0125 → 4), at most 6."""
+    for d in range(7):
+        if abs(round(step, d) - step) <= 1e-9 * max(1.0, abs(step)):
+            return d
+    return 6
+
+
+def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int:
+    """One count of decimals for a column of values read off drawn lengths (REFERENCE: a length is
+    read to the ruler's division, then multiplied by the scale): the figures the longest reading
+    supports (report.plans.figures: 38.5 mm → 3, 123.5 mm → 4; ω, ε by the vector they are read
+    from) at the column's largest value, and no finer than the ruler's step times the scale (μ_v =
+    0.02, 0.5 mm: 0.01, two decimals). So a column writes 0.85, 0.10, 0.50 — never 0.1 beside
+    0.85 — and ω2 −3.54, 0.42, −0.50 beside it."""
+    values = [_signed(e) for e in entries if e]
+    mms = [_length(e) for e in entries if e and _length(e)]
+    mus = [abs(e["value"] / e["mm"]) for e in entries if e and e.get("sense") is None and e.get("mm") and e.get("value")]
+    return places(values, max(mms, default=None), precision, mus[0] if mus else None, most)
+
+
+def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4) -> int:
+    """``decimals`` of plain values: the figures of the longest drawn length ``longest_mm`` they are
+    read from at the largest |value|, no finer than the ruler's step times the scale ``mu``."""
+    import math
+
+    from graphplan.report.plans import figures
+    vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
+    if not vals:
+        return 0
+    figs = figures(longest_mm, precision, most) if longest_mm else most
+    d = figs - 1 - math.floor(math.log10(max(vals)))
+    if mu and precision > 0:
+        d = min(d, step_decimals(mu * precision))
+    return max(0, d)
+
+
+def written(value: float | None, d: int, lang: str) -> str:
+    """A value to ``d`` decimals, trailing zeros kept, a true minus; "—" for none; a reading of
+    0 mm (a dead centre's velocity: no vector drawn) the number 0, as the terminal prints it."""
+    if value is not None and value == 0:
+        return "0"
+    return fixed(value, lang, d).replace("-", "−")
+
+
 LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a cell past it is marked
 MARK = "*"
 
@@ -77,14 +128,17 @@ def _length(e: dict) -> float | None:
     return e.get("mm") if e.get("mm") is not None else e.get("from_mm")
 
 
-def why(e: dict, sym: str, pos: dict, plan: str, lang: str) -> str:
+def why(e: dict, sym: str, pos: dict, plan: str, lang: str, precision: float = 0.5) -> str:
     """Why an entry misses the lab's 5 %: a vector drawn shorter than ``SHORT_MM`` (its ±½ division
-    is a large share of it), direction lines crossing at a small angle on its plan (the plan's
-    warnings), else the ruler's precision."""
+    is a large share of it; its length as the ruler reads it, 0.5 mm — not 0.529), direction lines
+    crossing at a small angle on its plan (the plan's warnings), else the ruler's precision."""
+    from graphplan.graphic.draftsman import measure
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     mm = _length(e)
     if mm is not None and mm < SHORT_MM:
-        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=num(mm, lang, 3))
+        read = measure(mm, precision)
+        text = written(read, step_decimals(precision), lang) if precision > 0 else num(mm, lang, 3)
+        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=text)
     angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
     if angles:
         return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))
@@ -114,8 +168,9 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     keys = velocity_columns(doc, precision)
     first = {k: next((pos["velocity"][k] for pos in doc["positions"] if k in pos["velocity"]), None) for k in keys}
-    head = ["№", "φ, °"] + [_symbol(k, "v", first[k]) for k in keys] + ["δ_{max}, %"]
+    head = [w('no'), "φ, °"] + [_symbol(k, "v", first[k]) for k in keys] + ["δ_{max}, %"]
     rows = [head]
+    places = {k: decimals([pos["velocity"].get(k) for pos in doc["positions"]], precision) for k in keys}
     notes = []
     for pos in doc["positions"]:
         err = row_error(pos, keys)
@@ -124,9 +179,10 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
             cell += MARK
             key = worst(pos, keys)
             notes.append(w('mark_row', n=pos["index"], why=why(pos["velocity"][key], _symbol(key, "v", first[key]), pos,
-                                                                "velocity", lang)))
+                                                                "velocity", lang, precision)))
         rows.append([str(pos["index"]), fixed(pos.get("turn_deg", pos["phi_deg"]), lang, 1)]
-                    + [_cell(pos["velocity"].get(k), precision, lang) for k in keys] + [cell])
+                    + [written(_signed(pos["velocity"][k]), places[k], lang) if pos["velocity"].get(k) else "—"
+                       for k in keys] + [cell])
     widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v", first[k]), 2.5) + 3) for k in keys] + [15.0]
     rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
     return footnoted(rec, [w('mark_head')] + notes if notes else [])
@@ -163,13 +219,22 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
     exact = column([(-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None
                     else None for _, e in items], lang)
     notes = []
+    # one count of decimals for the vectors' graphical values (ε each by its own vector's figures),
+    # one more for the analytic ones (at most 4 figures), the ruler's for the drawn mm
+    vec = decimals([e for _, e in items if e.get("sense") is None], precision)
+    exact_d = min(vec + 1, places([e.get("analytic") for _, e in items if e.get("sense") is None], None, 0.0))
+    ruler = step_decimals(precision) if precision > 0 else 2
     for (key, e), analytic in zip(items, exact):
         cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
         if judged(e) and abs(e["error_pct"]) > LAB_LIMIT:
             cell += MARK
-            notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang)))
-        rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else number(e["mm"], 4, lang=lang),
-                     _cell(e, precision, lang), analytic, cell])
+            notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang, precision)))
+        d = vec if e.get("sense") is None else decimals([e], precision)
+        truth = (-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None else None
+        rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
+                     written(_signed(e), d, lang) if e.get("value") is not None else "—",
+                     written(truth, exact_d if e.get("sense") is None else d + 1, lang) if analytic != "—" else "—",
+                     cell])
     if pos["index"] is not None:
         where = pos["index"]
     else:
@@ -181,35 +246,58 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
 
 
 def link_lengths(st: Study) -> list[tuple[str, float]]:
-    """Every link's dimensions: the crank, each pair of joints on a link, the frame's pivots' distances."""
+    """Every link's dimensions as the drawing letters them (markup: O_{1}A): the crank, each pair
+    of joints on a floating link, a pivoted link's arms from its pivot (a bell crank's O2B and
+    O2D, not the derived BD), the frame's pivots' distances, and each fixed guide's distance from
+    the crank's pivot (e, the offset; e with the guide's name where there are several)."""
+    import cmath
+
+    from graphplan.util.markup import indexed
     mech = st.mech
-    out: list[tuple[str, float]] = [(mech.crank.pivot + mech.crank.pin, mech.crank.length)]
+
+    def named(a: str, b: str) -> str:
+        return indexed(a) + indexed(b)
+    out: list[tuple[str, float]] = [(named(mech.crank.pivot, mech.crank.pin), mech.crank.length)]
     for name, link in mech.links.items():
         if name == mech.crank.link:
             continue
         pts = [p for p in link.local if p in link.joints or p in mech.frame]
-        for a, b in zip(pts, pts[1:]):
+        pivot = next((p for p in pts if p in mech.frame), None)
+        pairs = [(pivot, p) for p in pts if p != pivot] if pivot is not None else list(zip(pts, pts[1:]))
+        for a, b in pairs:
             d = abs(link.local[a] - link.local[b])
             if d > 0:
-                out.append((a + b, d))
+                out.append((named(a, b), d))
     frame = [p for p in mech.frame if any(p in l.joints for l in mech.links.values())]
     for a, b in zip(frame, frame[1:]):
         d = abs(mech.frame[a] - mech.frame[b])
         if d > 0:
-            out.append((a + b, d))
+            out.append((named(a, b), d))
+    O = mech.frame.get(mech.crank.pivot)
+    from graphplan.model.mechanism import FRAME
+    guides = [(g.name, g) for g in mech.guides.values()
+              if g.body == FRAME and any(l.slides_on == g.name for l in mech.links.values())] if O is not None else []
+    for gname, g in guides:
+        u = cmath.exp(1j * g.angle)
+        e = abs(((O - g.through) * u.conjugate()).imag)        # O's distance from the guide's line
+        if e > 1e-9:                                            # an axial slider: no offset to give
+            out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
     return out
 
 
-def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3) -> Record:
-    """Seed 000's table 2.1 / seed 002's measured dimensions: each length real and drawn at μl."""
+def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: float = 0.5) -> Record:
+    """Seed 000's table 2.1 / seed 002's measured dimensions: each length real (to the millimetre:
+    three decimals of a metre) and drawn at μl, laid off with the ruler (its 0.5 mm)."""
+    from graphplan.graphic.draftsman import lay_off
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     rows = [[w('link'), w('real'), w('drawn')]]
+    ruler = step_decimals(precision) if precision > 0 else 2
     for name, length in link_lengths(st):
-        rows.append([name, number(length, 4, lang=lang), number(length / mu_l, 4, lang=lang)])
+        rows.append([name, written(length, 3, lang), written(lay_off(length / mu_l, precision), ruler, lang)])
     return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
 
 
-def lab_table(diag, lang: str, n: int = 4) -> Record | None:
+def lab_table(diag, lang: str, n: int = 4, precision: float = 0.5) -> Record | None:
     """Seed 002's table: s, v, a of the output at the lab's given positions — the diagrams'
     ordinates (mm), the graphical and the exact values' errors — one sign convention (the values'
     along the guide, the ordinates too: a mirrored diagram's ordinate is written with the value's
@@ -247,12 +335,16 @@ def lab_table(diag, lang: str, n: int = 4) -> Record | None:
             cell += MARK
         return cell
 
+    # a column one count of decimals: the ordinates the ruler's, the values by the longest ordinate
+    ruler = step_decimals(precision) if precision > 0 else 2
+    d = {key: places([vals[key][k] for k in chosen], float(np.max(np.abs(getattr(r, key)))), precision, mu)
+         for key, mu in (("s", diag.mu_s), ("v_at", diag.mu_v), ("a_at", diag.mu_a))}
     for k in chosen:
         rows.append([str(diag.position[k]), fixed(float(diag.turn[k]) % 360.0, lang, 1),
-                     number(k_ * r.s[k], 3, lang=lang), number(vals["s"][k], lang=lang),
-                     number(k_ * r.v_at[k], 3, lang=lang), number(vals["v_at"][k], lang=lang),
+                     written(k_ * r.s[k], ruler, lang), written(vals["s"][k], d["s"], lang),
+                     written(k_ * r.v_at[k], ruler, lang), written(vals["v_at"][k], d["v_at"], lang),
                      pct("v_at", ev, k, r.v_at[k], v_),
-                     number(k_ * r.a_at[k], 3, lang=lang), number(vals["a_at"][k], lang=lang),
+                     written(k_ * r.a_at[k], ruler, lang), written(vals["a_at"][k], d["a_at"], lang),
                      pct("a_at", ea, k, r.a_at[k], a_)])
     rec = table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 18.0, 14.0], row_h=6.0, size=2.5,
                 title=w('lab', n=n))
@@ -297,7 +389,7 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
 READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
 
 
-def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
+def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
     """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
     v and a under them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why). The
     positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
@@ -318,9 +410,21 @@ def readings_table(diag, doc: dict, lang: str, n: int) -> Record:
             marked = True
             cell += MARK
         return cell
-    cols = [[str(r["position"]), number(r["s"], lang=lang), number(r["v"], lang=lang),
-             number(r["v_plan"], lang=lang), pct(r["delta_v"]), number(r["a"], lang=lang),
-             number(r["a_plan"], lang=lang), pct(r["delta_a"])] for r in diagram_readings(diag, doc)]
+    import numpy as np
+    read = diagram_readings(diag, doc)
+    # one count of decimals a row: the diagram's values by its longest ordinate and its scale, the
+    # plans' by their vectors (``decimals``)
+    out_kind, name = diag.output.kind, diag.output.name
+    vkey, akey = (name, name) if out_kind == "slide" else (f"omega_{name}", f"epsilon_{name}")
+    d = {key: places([r[key] for r in read], float(np.max(np.abs(getattr(diag.drawn, ordinate)))), precision, mu)
+         for key, ordinate, mu in (("s", "s", diag.mu_s), ("v", "v_at", diag.mu_v), ("a", "a_at", diag.mu_a))}
+    d["v_plan"] = decimals([pos["velocity"].get(vkey) for pos in doc["positions"]], precision)
+    d["a_plan"] = decimals([pos.get("acceleration", {}).get(akey) for pos in doc["positions"]], precision)
+
+    def cell(r: dict, key: str) -> str:
+        return written(r[key], d[key], lang) if r[key] is not None else "—"
+    cols = [[str(r["position"]), cell(r, "s"), cell(r, "v"), cell(r, "v_plan"), pct(r["delta_v"]),
+             cell(r, "a"), cell(r, "a_plan"), pct(r["delta_a"])] for r in read]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):
@@ -429,12 +533,12 @@ def sheet_tables(st: Study, plans, diag, lang: str, p: float, factor: float) -> 
         if q.acceleration is not None:
             n += 1
             out.append((f"acceleration table {n}", acceleration_table(pos, 1 + n, lang, p)))
-    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang, 2 + n)))
+    out.append(("dimensions table", dimensions_table(st, plans.mu_l, lang, 2 + n, p)))
     if st.mech.task.count <= 8:
-        lab = lab_table(diag, lang, 3 + n)
+        lab = lab_table(diag, lang, 3 + n, p)
         if lab is not None:
             out.append(("lab table", lab))
-    out.append(("diagram readings table", readings_table(diag, doc, lang, len(out) + 1)))
+    out.append(("diagram readings table", readings_table(diag, doc, lang, len(out) + 1, p)))
     return [(name, enlarged(rec, factor)) for name, rec in out]
 
 

@@ -1,0 +1,122 @@
+"""Each position number on the position plan reads as its own point's (review5 #2: the top dead
+centre's "0" stood under B1/B11's dot and "11" at B0's height; review4 #9: the guide's numbers one
+step off). Read as a reader reads it: a number with a leader belongs to the point its leader points
+at; a number without one to the drawn point nearest its ink. That point must be the number's own
+position's (the crank pin, the output point or a group's inner joint at that position), never
+another position's point nor another drawn point (a centre of mass). Likewise a joint's letter
+stands nearer its lettered position's point than the same point's other positions."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import scene_study
+from graphplan.drawing.plans import joints_at, position_record
+from graphplan.graphic.plans import build_plans, where
+from graphplan.util.markup import indexed
+from review45_scenes import OFFSET_PRESS, SIXBAR_PRESS
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+SAME = 1.0    # mm: a drawn point nearer a position's point than this is drawn on it (an extreme on a dead centre)
+ONE_DOT = 0.3  # mm: two positions' points nearer than this are one dot (B2 = B10 of a central crank-slider)
+
+
+def _gap(box, z: complex) -> float:
+    return abs(complex(max(box[0] - z.real, 0.0, z.real - box[2]), max(box[1] - z.imag, 0.0, z.imag - box[3])))
+
+
+def _numbered(plans) -> list[str]:
+    """The points the lab numbers at every position: the crank pin, the output (the last link's
+    joint) and the inner joint of each group."""
+    mech = plans.scheme.mech
+    names = [mech.crank.pin]
+    names += [d.inner.point for d in plans.study.structure.dyads]
+    return list(dict.fromkeys(names))
+
+
+def _read(rec, plans):
+    """(number, its own position's points, the point a reader reads it as, how) for every position
+    number on the drawing."""
+    sc = plans.scheme
+    names = _numbered(plans)
+    at = {}
+    for p in plans.positions:
+        lab = str(p.index)
+        at.setdefault(lab, []).extend(where(sc, p.layout, sc.body_of(n), n) for n in names)
+    every = [(lab, z) for lab, zs in at.items() for z in zs]
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    leaders = [(complex(*q.points[0]), complex(*q.points[-1])) for q in rec.items
+               if q.kind == "segment" and q.role == "label"]
+    out = []
+    for q in rec.items:
+        if q.kind != "text" or q.text not in at or q.size > 3.0:
+            continue
+        box = q.ink()
+        mine = at[q.text]
+        led = [(a, b) for a, b in leaders if min(_gap(box, a), _gap(box, b)) < 1.2]
+        if led:
+            a, b = led[0]
+            if _gap(box, a) < _gap(box, b):
+                a, b = b, a                          # a: the end at the point
+            u = (a - b) / abs(a - b)                 # the leader, produced back past its start
+            seen = min(every + [("dot", d) for d in dots], key=lambda t: abs(t[1] - (a + 1.2 * u)))
+            out.append((q.text, mine, seen, "leader"))
+        else:
+            cands = [(lab, z) for lab, z in every if lab != q.text or any(abs(z - m) < 1e-6 for m in mine)]
+            cands += [("dot", d) for d in dots if min(abs(d - m) for m in mine) > SAME]
+            near = min(_gap(box, z) for z in mine)
+            rival = min((t for t in cands if t[0] != q.text), key=lambda t: _gap(box, t[1]), default=None)
+            seen = (q.text, mine[0]) if rival is None or _gap(box, rival[1]) > near else rival
+            out.append((q.text, mine, seen, "beside"))
+    return out
+
+
+def _check(text: str, mu_l: float | None, accel):
+    st = scene_study(text)
+    plans = build_plans(st, accel=accel, mu_l=mu_l)
+    rec = position_record(plans)
+    readings = _read(rec, plans)
+    wrong = [(n, how, seen[0]) for n, mine, seen, how in readings
+             if min(abs(seen[1] - m) for m in mine) > (SAME if seen[0] == n else ONE_DOT)]
+    assert not wrong, f"numbers read as another point's: {wrong}"
+    # every position numbered at the crank pin (the numbers at other points may be left out where
+    # no room is), and most of the others
+    assert len(readings) >= len(plans.positions) * len(_numbered(plans)) * 0.9, len(readings)
+    # the joints' letters (at the first thick position) nearer their own position's point than the
+    # same point's other positions drawn as dots
+    thick = next(p.layout for p in plans.positions if p.layout.key == min(set(plans.accel_keys) or {0}))
+    sc = plans.scheme
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    for name, X in joints_at(sc, thick).items():
+        if name in plans.scheme.mech.frame:
+            continue
+        others = [z for z in (joints_at(sc, p.layout).get(name) for p in plans.positions)
+                  if z is not None and abs(z - X) > SAME and any(abs(z - d) < 1e-6 for d in dots)]
+        for q in rec.items:
+            if q.kind == "text" and q.text == indexed(name):
+                led = [s for s in rec.items if s.kind == "segment" and s.role == "label"
+                       and min(_gap(q.ink(), complex(*e)) for e in s.points) < 1.2]
+                if not led and others:
+                    assert _gap(q.ink(), X) < min(_gap(q.ink(), z) for z in others), f"{name}'s letter"
+
+
+def test_offset_press_numbers_at_their_points():
+    """review5 #2 at the sheet's scale: B0 at the top dead centre, B1/B11 0.7 mm apart under it."""
+    _check(OFFSET_PRESS, 0.002, [2, 7])
+
+
+def test_sixbar_press_numbers_at_their_points():
+    """review4 #9: the ram's guide, E6/E7 0.3 mm apart by the extreme E'."""
+    _check(SIXBAR_PRESS, 0.004, [5])
+
+
+@pytest.mark.parametrize("name", ["crank_slider", "four_bar", "lab_crank_slider"])
+def test_examples_numbers_at_their_points(name):
+    _check((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"), None, None)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["shaper", "slotter"])
+def test_more_examples_numbers_at_their_points(name):
+    _check((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"), None, None)

@@ -1,0 +1,118 @@
+"""The kinematics tables' number formats (review5 #10, review4 #3/#10): within a column one count
+of decimals, trailing zeros kept ("0.10", "−0.50" in a two-decimal column — not "0.1" beside
+"0.85"); the ω columns likewise (not "3,483", "1", "−2", "0,6" in one column); one drawn length
+read once (the same mm, the same number in every row); a footnote's drawn length as the ruler
+reads it (0.5 mm, not 0.529 mm); "№" heading the rows in both languages."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from conftest import scene_study
+from graphplan.graphic.plans import build_plans
+from graphplan.report.plans import plans_json
+from graphplan.sheets.kintables import acceleration_table, dimensions_table, velocity_table
+from review45_scenes import OFFSET_PRESS, SIXBAR_PRESS
+
+# the sheets' scales (review5: μv 0.02, μa 0.1; review4: μv 0.025, μa 0.1), the lab's 0.5 mm ruler
+CASES = [(OFFSET_PRESS, "en", [2, 7], 0.002, 0.02, 0.1), (SIXBAR_PRESS, "uk", [5], 0.004, 0.025, 0.1)]
+PRECISION = 0.5
+
+
+@pytest.fixture(scope="module", params=CASES, ids=["offset press en", "six-bar press uk"])
+def case(request):
+    text, lang, accel, mu_l, mu_v, mu_a = request.param
+    st = scene_study(text)
+    plans = build_plans(st, accel=accel, mu_l=mu_l, mu_v=mu_v, mu_a=mu_a, precision=PRECISION)
+    return st, plans, plans_json(plans), lang
+
+
+def _rows(rec) -> list[list[str]]:
+    """A table record's lettering as rows (by baseline, top first), each left to right."""
+    by: dict[float, list] = {}
+    for q in rec.items:
+        if q.kind == "text":
+            by.setdefault(round(q.points[0][1], 1), []).append(q)
+    return [[q.text for q in sorted(by[y], key=lambda q: q.points[0][0])] for y in sorted(by, reverse=True)]
+
+
+def _grid(rec) -> list[list[str]]:
+    rows = _rows(rec)
+    width = max(len(r) for r in rows)
+    return [r for r in rows if len(r) == width]
+
+
+NUMBER = re.compile(r"^[−-]?\d+([.,](\d+))?\*?$")
+
+
+def _decimals(cell: str) -> int | None:
+    m = NUMBER.match(cell)
+    if not m or cell in ("0",):
+        return None                 # "—", words, a 0-mm reading written 0
+    return len(m.group(2) or "")
+
+
+def test_velocity_columns_one_count_of_decimals(case):
+    st, plans, doc, lang = case
+    grid = _grid(velocity_table(doc, lang, PRECISION))
+    head, body = grid[0], grid[1:]
+    assert head[0] == "№"
+    for j, name in enumerate(head[2:-1], start=2):          # the values' columns (not № and φ, δ)
+        counts = {_decimals(r[j]) for r in body} - {None}
+        assert len(counts) == 1, (name, [r[j] for r in body])
+    omegas = [j for j, name in enumerate(head) if name.startswith("ω")]
+    assert omegas, head
+
+
+def test_one_drawn_length_one_number(case):
+    """The same reading (mm) of a quantity gives the same cell in every row."""
+    st, plans, doc, lang = case
+    grid = _grid(velocity_table(doc, lang, PRECISION))
+    head, body = grid[0], grid[1:]
+    keys = [k for k in doc["positions"][0]["velocity"]]
+    for pos, row in zip(doc["positions"], body):
+        assert row[0] == str(pos["index"])
+    seen: dict[tuple[str, float], str] = {}
+    for key in keys:
+        col = next((j for j, name in enumerate(head) if name in (f"v_{{{key}}}",)), None)
+        if col is None:
+            continue
+        for pos, row in zip(doc["positions"], body):
+            mm = pos["velocity"][key].get("mm")
+            if mm is not None:
+                assert seen.setdefault((key, mm), row[col]) == row[col], (key, mm)
+
+
+def test_acceleration_tables_one_count_of_decimals(case):
+    st, plans, doc, lang = case
+    for q, pos in zip(plans.positions, doc["positions"]):
+        if q.acceleration is None:
+            continue
+        rec = acceleration_table(pos, 2, lang, PRECISION)
+        grid = _grid(rec)
+        body = [r for r in grid[1:] if not r[0].startswith("ε")]
+        for j in (1, 2, 3):                                   # mm, graphical, analytic
+            counts = {_decimals(r[j]) for r in body} - {None}
+            assert len(counts) == 1, (j, [r[j] for r in body])
+        mm = [float(r[1].replace(",", ".")) for r in body if NUMBER.match(r[1])]
+        assert all(abs(2 * v - round(2 * v)) < 1e-9 for v in mm)     # to the ruler's 0.5 mm
+        for line in (t for t in _rows(rec) if len(t) == 1):
+            for x in re.findall(r"\(([\d.,]+) (?:mm|мм)\)", line[0]):   # a footnote's drawn length
+                v = float(x.replace(",", "."))
+                assert abs(2 * v - round(2 * v)) < 1e-9, line
+
+
+def test_dimensions_table_names_the_drawings_letters(case):
+    """review4 #12: the links' dimensions lettered as the drawing letters them (O₁A, O₂B: subscripts),
+    the bell crank's second arm O2D listed (not the derived BD), the slider's guide placed (e, its
+    distance from the crank's pivot)."""
+    st, plans, doc, lang = case
+    names = [r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]]
+    if st.mech.crank.pivot == "O1":
+        assert "O_1A" in names and "O_2B" in names and "O_2D" in names and "BD" not in names, names
+        rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
+        assert rows.get("e") in ("0,5", "0,50", "0,500"), rows       # the ram's guide x = 0.50 m from O1
+    else:
+        rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
+        assert rows.get("e") in ("0.06", "0.060"), rows                # the offset e = 60 mm
