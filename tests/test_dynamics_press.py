@@ -108,3 +108,28 @@ def test_point_zero_is_numbered_at_its_point(built):
             line = LineString(p.points)
             if line.distance(at) > 0.9:       # not a line through the point (within its dot, 0.9 mm)
                 assert not line.intersects(sight), p.step
+
+
+@pytest.mark.slow
+def test_the_press_a2_set_reads_in_the_order_of_the_work():
+    """Review 4, item 16: the press's A2 set gave Tables 1–3, the notes and ω(φ) on its first sheet and
+    the construction after, its band's sheet half empty. Now: the moments on sheet 1, the band on
+    sheet 2 with the notes in its nook under ΔT(φ) (as the A1 sheet sets them), ω(φ) and the tables
+    on the last sheet; the notes clear of the band's drawings; no overprinted word."""
+    from types import SimpleNamespace
+    from shapely.geometry import box
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    from review_scenes import PRESS4
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
+    sheet = BUILDERS["dynamics"](scene_study(PRESS4), form("A2"), args)
+    names = [[p.name for p in page.placed] for page in sheet.pages]
+    assert names[0] == ["moments"], names
+    assert {"energy", "wittenbauer", "inertia", "notes"} <= set(names[1]), names
+    assert {"speed", "positions table", "flywheel table", "motor table"} <= set(names[-1]), names
+    from graphplan.sheets.compose import defects
+    band = {p.name: p for p in sheet.pages[1].placed}
+    notes = box(*band["notes"].record.bounds())
+    for name in ("energy", "inertia"):              # under ΔT(φ), left of the turned I*(φ)
+        assert not notes.intersects(box(*band[name].record.bounds())), name
+    assert defects(sheet) == []

@@ -150,7 +150,7 @@ ORDINATE_LEAST = 1.0   # mm: an ordinate shorter than this is neither projected 
 #                        draftsman omits it: its line would run along the φ axis; the chord is drawn level)
 PROJECTION_LEAST = 2.5  # mm: one shorter than this is not projected (its dashed line would lie along the φ axis);
 #                         its ray to P still marks its height on the M axis
-PROJECTION_SPACING = 2.0  # mm: the least distance between two projections, and from a projection to M*_d's line
+PROJECTION_SPACING = 3.0  # mm: the least distance between two projections, and from a projection to M*_d's line
 
 
 def projected_middles(M_mid, Md: float, x_mid) -> list[int]:

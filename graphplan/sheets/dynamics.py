@@ -555,13 +555,19 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
         return _fits_later(f, b)
 
-    def fits(L: float, size: float) -> bool:
+    def fits(L: float, size: float, first: bool = False) -> bool:
         leaves, _, _, per = measured(L, size, 1.0)
-        return _fits_later(f, leaves["moments"]) and _fits_later(f, band_leaf(L, size, _lengths(L)[-1], per))
+        return ((_fits_first if first else _fits_later)(f, leaves["moments"])
+                and _fits_later(f, band_leaf(L, size, _lengths(L)[-1], per)))
 
     def kl(L: float, size: float) -> float:
         return abs(measured(L, size, 1.0)[3][0][2]["flywheel"]["kl_mm"])
-    L, size = _set_scales(sizes, fits, kl, _a1_kl(st, dyn, f, args), (L, size))
+    target = _a1_kl(st, dyn, f, args)
+    # the moments on the first sheet (the set in the order of the work) where that reads the flywheel
+    # no worse than the A1 sheet; else at the scales a later sheet holds (the tables then go first)
+    ordered = _set_scales(sizes, lambda L_, s_: fits(L_, s_, True), kl, target, (L, size))
+    L, size = (ordered if target is None or kl(*ordered) >= target - 1e-9
+               else _set_scales(sizes, fits, kl, target, (L, size)))
     per = measured(L, size, 1.0)[3]
     length = next((g for g in _lengths(L) if on_a_page(band_leaf(L, size, g, per))), _lengths(L)[-1])
     return L, size, 1.0, "set", 1, length, False
@@ -583,6 +589,14 @@ def _fits_later(f: Form, b: Leaf) -> bool:
     """``b`` fits a set's later sheet: over its title block form 2a, or beside it."""
     x0, y0, x1, y1 = field_of(f)
     k = _later_keep(f)
+    return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
+
+
+def _fits_first(f: Form, b: Leaf) -> bool:
+    """``b`` fits a set's first sheet: over its title block (form 1), or beside it — where the set's
+    first drawing, the moments, goes (a set reads in the order of the work)."""
+    x0, y0, x1, y1 = field_of(f)
+    k = keep_out(f)
     return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
 
 
@@ -694,11 +708,15 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
     for order in ("drawings", "tables"):
         for tail in ([tables + [notes]], [tables[:-1] + [Stack([tables[-1], notes])]],
                      [tables[:-1] + [Row([tables[-1], notes])]]):     # the last drawing (ω) goes with the tables
-            first = rows + tail if order == "drawings" else [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]
-            laid = flow([r for r in first if r], region, keep, later=later)
-            if laid is not None and not _notes_alone(laid[-1]):
-                spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
-                tried.append((len(laid), spread, len(tried), laid))
+            if order == "drawings":        # in the order of the work: ω beside the band, or leading the tables' row
+                ways = [rows + tail, rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]]
+            else:
+                ways = [[tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
+            for first in ways:
+                laid = flow([r for r in first if r], region, keep, later=later)
+                if laid is not None and not _notes_alone(laid[-1]):
+                    spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
+                    tried.append((len(laid), spread, len(tried), laid))
         if tried:
             break
     if tried:
@@ -789,13 +807,25 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        nleaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        # the notes in the band's nook where they fit it, as on the A1 sheet (the band's sheet not half
+        # empty); else with the tables. The set reads in the order of the work: the moments on the
+        # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_flow``)
+        nook = nook_for(boxes, note_lines)
+        nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
         leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
             [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None
                   for q in placed(leaf, b, leaf.name in _top_aligned(page))] for page in laid]
+        if nook is not None:
+            at = next(k for k, page in enumerate(laid) if any(leaf.name == "band" for leaf, _ in page))
+            band_box = next(b for leaf, b in laid[at] if leaf.name == "band")
+            dx, dy = _band_shift(boxes, band_box)
+            (_, _, n1, n3), nw = nook
+            nrec = note_block(note_lines, nw)
+            nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
+            pages[at].append(Placed("notes", top_left(nrec, nb), nb))
     else:
         C, groups, width = _column(f, tables, parts, height, shape)
         items, col_box, band_box = [], None, None
