@@ -66,7 +66,7 @@ def _value(text: str) -> float:
 
 def test_the_inertia_axis_is_graduated_at_its_scale(built):
     """The turned I*(φ)'s foot carries I* values at μ_I: each value's text stands at x = value/μ_I
-    from the φ axis (the energy–mass diagram's I* abscissa), round steps ≥ 12 mm apart, up to the
+    from the φ axis (the energy–mass diagram's I* abscissa), round steps ≥ 8 mm apart, up to the
     largest I* (computed: the exact inertia's maximum)."""
     import numpy as np
     from graphplan.drawing.flywheel import inertia_turned
@@ -77,7 +77,7 @@ def test_the_inertia_axis_is_graduated_at_its_scale(built):
     for x, v in marks:
         assert x == pytest.approx(v / f.mu_I, abs=1e-6)
     steps = np.diff([v for _, v in marks])
-    assert np.allclose(steps, steps[0]) and steps[0] / f.mu_I >= 12.0 - 1e-9
+    assert np.allclose(steps, steps[0]) and steps[0] / f.mu_I >= 8.0 - 1e-9
     assert marks[0][1] == pytest.approx(steps[0])
     top = float(np.max(f.inertia_exact))
     assert marks[-1][1] <= top * (1 + 1e-9) + f.precision * f.mu_I and marks[-1][1] + steps[0] > top - f.precision * f.mu_I
@@ -133,3 +133,12 @@ def test_the_press_a2_set_reads_in_the_order_of_the_work():
     for name in ("energy", "inertia"):              # under ΔT(φ), left of the turned I*(φ)
         assert not notes.intersects(box(*band[name].record.bounds())), name
     assert defects(sheet) == []
+
+
+@pytest.mark.parametrize("top, mu, expected", [(26.0, 1.0, [10.0, 20.0]), (107.0, 0.005, [0.1, 0.2, 0.3, 0.4, 0.5]),
+                                               (5.0, 1.0, []), (30.0, 0.004, [0.05, 0.1])])
+def test_graduation_steps_are_round_and_apart(top, mu, expected):
+    """Round steps 12 mm apart or more (0,1 kg·m² at μ_I = 0,005: 20 mm), closer down to 8 mm
+    where that alone gives two values (the shaper's 26 mm I*: 10 and 20, not 20 alone)."""
+    from graphplan.drawing.flywheel import graduation
+    assert graduation(top, mu) == pytest.approx(expected)

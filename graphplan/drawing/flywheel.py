@@ -349,17 +349,24 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     return rec
 
 
-GRADUATION = 12.0     # mm: the least distance between two graduated values of an axis
+GRADUATION = (12.0, 8.0)     # mm: the least distance between two graduated values of an axis, and
+#                              the closest allowed where that leaves fewer than two values on it
 
 
-def graduation(top_mm: float, mu: float, least: float = GRADUATION) -> list[float]:
+def graduation(top_mm: float, mu: float, least: tuple[float, ...] = GRADUATION) -> list[float]:
     """The values graduated along an axis drawn at ``mu`` (units a mm) up to ``top_mm`` mm: the
-    multiples of the smallest round step (1, 2, 2,5, 5 ×10^k) whose ticks stand ``least`` mm apart
-    or more, zero left out (the origin carries its own number)."""
+    multiples of the smallest round step (1, 2, 2,5, 5 ×10^k) whose ticks stand ``least[0]`` mm
+    apart or more — closer (down to ``least[-1]``) where that gives fewer than two values —, zero
+    left out (the origin carries its own number)."""
     if top_mm <= 0.0 or mu <= 0.0:
         return []
-    step = _nice(least * mu)
-    return [k * step for k in range(1, int(top_mm * mu / step + 1e-9) + 1)]
+    values: list[float] = []
+    for gap in least:
+        step = _nice(gap * mu)
+        values = [k * step for k in range(1, int(top_mm * mu / step + 1e-9) + 1)]
+        if len(values) >= 2:
+            break
+    return values
 
 
 def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None:
