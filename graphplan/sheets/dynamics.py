@@ -698,8 +698,9 @@ def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
 
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
-    the drawings' ``rows``, then the tables and the notes in one row; where the first drawing does
-    not fit beside the first sheet's title block, the tables' rows first. Where that leaves the
+    the drawings' ``rows``, then the tables and the notes in one row — the last drawing (ω) in its
+    row or leading the tables' —, in the order of the work; where the first drawing does not fit
+    beside the first sheet's title block, the tables' rows first. Where that leaves the
     notes alone on the last sheet, the last table goes with them (over them, else beside them) —
     every sheet of a set carries a drawing or a table. The fewest sheets of those — where the last
     table and the notes share a row, the one keeping them together (the notes beside the table, a
