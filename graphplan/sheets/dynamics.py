@@ -812,6 +812,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         # empty); else with the tables. The set reads in the order of the work: the moments on the
         # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_flow``)
         nook = nook_for(boxes, note_lines)
+        if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
+                                    for other in LANGS if other != lang):
+            nook = None                      # the same sheets in either language
         nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
         leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
             [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
