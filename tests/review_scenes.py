@@ -544,3 +544,97 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+PRESS4 = '''# A six-bar press (own mechanism, review4): crank-rocker O1A-AB-O2B, the rocker's arm O2D drives the
+# ram E on a vertical guide through the rod DE.
+title = "Важільний механізм кривошипного преса"
+title_en = "Lever mechanism of a crank press"
+designation = "ТММ.ПР.00.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.06]
+
+[frame.guides]
+ram = { through = [0.50, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 7
+inertia = 0.06
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+shape = { D = [0, -0.20] }
+points = { S3 = 0.5 }
+mass = 9
+inertia = 0.07
+
+[[link]]
+name = "DE"
+number = 4
+joints = ["D", "E"]
+length = 0.26
+points = { S4 = 0.5 }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "E"
+number = 5
+joints = ["E"]
+slides_on = "ram"
+mass = 40
+
+[branch]
+B = 1
+E = -1
+
+[positions]
+count = 12
+start = "max"
+working_stroke = "to_min"
+accel = [5]
+force_phi_deg = 160
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "E"
+magnitude = 6000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.08, 0], [0.12, 0.5], [0.145, 1], [0.155, 1]]
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -11,7 +11,7 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_pchip, periodic_spline
-from graphplan.drawing.labels import place_labels, row_clear
+from graphplan.drawing.labels import place_first, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
 from graphplan.util.words import num
@@ -148,8 +148,28 @@ def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndar
 
 ORDINATE_LEAST = 1.0   # mm: an ordinate shorter than this is neither projected to the M axis nor rayed to P (a
 #                        draftsman omits it: its line would run along the φ axis; the chord is drawn level)
-PROJECTION_LEAST = 2.5  # mm: one shorter than this is projected by a stub at the M axis only, not across the width
-PROJECTION_STUB = 6.0   # mm: that stub's length (the ray starts where it meets the axis)
+PROJECTION_LEAST = 2.5  # mm: one shorter than this is not projected (its dashed line would lie along the φ axis);
+#                         its ray to P still marks its height on the M axis
+PROJECTION_SPACING = 3.0  # mm: the least distance between two projections, and from a projection to M*_d's line
+
+
+def projected_middles(M_mid, Md: float, x_mid) -> list[int]:
+    """The middles of the intervals whose ordinates are projected (dashed) to the M axis: every
+    projection runs from its point to the axis, so any two overlap over the shorter one's length and
+    must stand ``PROJECTION_SPACING`` apart, as must a projection and the line of M*_d; none nearer
+    the φ axis than ``PROJECTION_LEAST``. Taken from the largest ordinate down (the diagram's
+    extremes carry its readings; of two alike the one nearer the M axis: the shorter line), each kept
+    where it clears those kept before — the rest are carried by their rays alone (the ray from P ends
+    at the ordinate's height on the M axis), so the idle stroke's small ordinates draw no striped
+    band over the φ axis."""
+    kept: list[int] = []
+    for k in sorted(range(len(M_mid)), key=lambda j: (-abs(float(M_mid[j])), float(x_mid[j]), j)):
+        y = float(M_mid[k])
+        if abs(y) < PROJECTION_LEAST or abs(y - Md) < PROJECTION_SPACING:
+            continue
+        if all(abs(y - float(M_mid[j])) >= PROJECTION_SPACING for j in kept):
+            kept.append(k)
+    return sorted(kept)
 
 
 def moments_record(f: Flywheel, lang: str = "uk") -> Record:
@@ -169,10 +189,11 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     pole = (-f.H, 0.0)
     rec.point(pole, role="joint", layer=LAYER, step="pole P")
     rec.label((-f.H - 1.8, 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step="pole P")
+    shown = set(projected_middles(f.M_mid, f.Md, xm))
     for k, (xk, yk) in enumerate(zip(xm, f.M_mid)):
-        if abs(yk) >= ORDINATE_LEAST:        # a near-zero ordinate is not projected: its line would lie on the axis
-            start = xk if abs(yk) >= PROJECTION_LEAST else min(xk, PROJECTION_STUB)   # near the axis: a stub at it
-            rec.segment((start, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+        if abs(yk) >= ORDINATE_LEAST:        # a near-zero ordinate is not rayed: its ray would lie on the axis
+            if k in shown:                   # projected where it reads (``projected_middles``)
+                rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
             rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
@@ -318,7 +339,7 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     n = f.divisions
     rec.vector((0.0, 1.0), (0.0, -length - 10.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
     rec.vector((-1.0, 0.0), (hi + 8.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
-    _text(rec, (hi + 9.5, -1.2), w["Im"], step="axes I*_m")
+    _text(rec, (hi + 9.5, -1.2), f"{w['Im']}, {w['kgm2']}", step="axes I*_m")
     rec.label((0.0, -length - 15.0), "φ", size=TEXT, anchor="middle", layer=LAYER, step="axes I*_m")
     every = _every(length, n)
     row = []
@@ -335,7 +356,44 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
         rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,
                     step=f"projection of I* at {j}")
     _numbers(rec, row, away=(-1.0, 0.0))
+    _graduate(rec, hi, f.mu_I, lang, float(ys[-1]))
     return rec
+
+
+GRADUATION = (12.0, 8.0)     # mm: the least distance between two graduated values of an axis, and
+#                              the closest allowed where that leaves fewer than two values on it
+
+
+def graduation(top_mm: float, mu: float, least: tuple[float, ...] = GRADUATION) -> list[float]:
+    """The values graduated along an axis drawn at ``mu`` (units a mm) up to ``top_mm`` mm: the
+    multiples of the smallest round step (1, 2, 2,5, 5 ×10^k) whose ticks stand ``least[0]`` mm
+    apart or more — closer (down to ``least[-1]``) where that gives fewer than two values —, zero
+    left out (the origin carries its own number)."""
+    if top_mm <= 0.0 or mu <= 0.0:
+        return []
+    values: list[float] = []
+    for gap in least:
+        step = _nice(gap * mu)
+        values = [k * step for k in range(1, int(top_mm * mu / step + 1e-9) + 1)]
+        if len(values) >= 2:
+            break
+    return values
+
+
+def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None:
+    """The turned I*(φ) graduated in I* at μ_I along its foot, the line of φ = 2π at y = ``foot``
+    (no projection line crosses it: each runs up from its point; the top axis, the energy–mass
+    diagram's, is crossed by every one of them): a tick under it at each value of ``graduation``,
+    the value under the tick; the scale lettered under the axis's symbol (I^*_м, кг·м²), as the ΔT
+    axis's is."""
+    w = WORDS[lang]
+    for v in graduation(hi, mu):
+        x = v / mu
+        rec.segment((x, foot), (x, foot - 1.5), role="construction", width=AXIS_W, layer=LAYER, step="I* graduation")
+        rec.label((x, foot - 1.5 - 0.6 - NUM), num(v, lang), size=NUM, anchor="middle", layer=LAYER,
+                  step="I* graduation")
+    rec.label((hi + 9.5, -1.2 - line_pitch(TEXT)), f"μ_I = {num(mu, lang)} {w['kgm2']}/{w['mm']}",
+              size=NUM, layer=LAYER, step="axes I*_m")
 
 
 def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, float] | None = None) -> Record:
@@ -355,6 +413,7 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
     _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
     labels = [LabelRequest(complex(0.0, hi + 10.0), f"ΔT, {w['J']}", 1 + 0j, TEXT, step="axes")]
+    numbers: list[list[LabelRequest]] = []
     rec.add("polyline", drawn(X, Y), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
     n = f.divisions
     if projections is not None:
@@ -369,7 +428,11 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     for j in range(n):
         rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
         if j % every == 0:
-            labels.append(LabelRequest(complex(float(f.I[j]), float(f.dT[j])), str(j), 1 + 1j, NUM, step=f"point {j}"))
+            at = complex(float(f.I[j]), float(f.dT[j]))
+            asked = [LabelRequest(at, str(j), 1 + 1j, NUM, step=f"point {j}", sight=True)]
+            if j:                # point 0 lies on the I* axis, its own projection: its number never across it
+                asked.append(LabelRequest(at, str(j), 1 + 1j, NUM, step=f"point {j}"))
+            numbers.append(asked)
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
         x_end = tx + 15.0
@@ -393,7 +456,10 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     y_kl = 0.5 * (k + l) - 1.2 if projections is None else l - 5.5    # the ΔT projections pass between k and l
     rec.label((xd - 1.5, y_kl), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
-    return place_labels(rec, labels, layer=LAYER)
+    place_labels(rec, labels[:1], layer=LAYER)
+    for asked in numbers:        # a point's number beside it with no line between them where it can be
+        place_first(rec, asked, layer=LAYER)      # (a number across a projection reads as that line's)
+    return place_labels(rec, labels[1:], layer=LAYER)
 
 
 BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there

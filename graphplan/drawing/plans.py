@@ -77,6 +77,7 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
 
 
 SUPPORT_HALF_DEG = 45.0   # the support's triangle and hatched bar, seen from its pivot: ±45° about its axis
+SUPPORT_DIRS = (-90.0, -60.0, -120.0, -30.0, -150.0, 0.0, 180.0, 30.0, 150.0, 60.0, 120.0, 90.0)   # the force scheme tries, down first
 OMEGA_HALF_DEG = 45.0     # ω1's arc: 90° about its middle
 CLEAR_DEG = 5.0           # and this much clear of a link leaving the pivot
 

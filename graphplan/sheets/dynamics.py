@@ -673,21 +673,28 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         wh = [_wh(captioned(moments_record(fw, lang), WORDS[lang]["moments"])) for lang in LANGS]
         return Leaf("moments", max(a[0] for a in wh), max(a[1] for a in wh))
 
-    def fits(L: float, size: float) -> bool:      # the moments, then the band: only what decides, each
-        fw, length = built(L, size), _lengths(L)[-1]   # drawn only where its least box fits
-        return (_fits_later(f, Leaf("moments", *moments_least(fw))) and _fits_later(f, moments_leaf(L, size))
+    def fits(L: float, size: float, first: bool = False) -> bool:   # the moments, then the band: only
+        fw, length = built(L, size), _lengths(L)[-1]   # what decides, each drawn only where its least box fits
+        fit_m = _fits_first if first else _fits_later  # the moments on the first sheet (form 1) or a later one
+        return (fit_m(f, Leaf("moments", *moments_least(fw))) and fit_m(f, moments_leaf(L, size))
                 and _fits_later(f, Leaf("band", *band_least(fw, length))) and _fits_later(f, band_leaf(L, size, length)))
 
     def kl(L: float, size: float) -> float:       # read off the construction: nothing drawn
         return abs(built(L, size).kl)
     target = _a1_kl(st, dyn, f, args)
-    L, size = _set_scales(sizes, fits, kl, target, (L, size))
-    if target is not None and kl(L, size) < target - 1e-9:      # the search's steps may pass a scale that
-        L, size, why = _reach(sizes, fits, kl, target, args.precision, f, (L, size))    # reads it: any?
-        if why is not None:
-            if len(_SHORT) >= 64:
-                _SHORT.pop(next(iter(_SHORT)))
-            _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
+    # the moments on the first sheet (the set in the order of the work) where that reads the flywheel
+    # no worse than the A1 sheet; else at the scales a later sheet holds (the tables then go first)
+    ordered = _set_scales(sizes, lambda L_, s_: fits(L_, s_, True), kl, target, (L, size))
+    if target is None or kl(*ordered) >= target - 1e-9:
+        L, size = ordered
+    else:
+        L, size = _set_scales(sizes, fits, kl, target, (L, size))
+        if kl(L, size) < target - 1e-9:      # the search's steps may pass a scale that reads it: any?
+            L, size, why = _reach(sizes, fits, kl, target, args.precision, f, (L, size))
+            if why is not None:
+                if len(_SHORT) >= 64:
+                    _SHORT.pop(next(iter(_SHORT)))
+                _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
     length = next((g for g in _lengths(L) if on_a_page(Leaf("band", *band_least(built(L, size), g)))
                    and on_a_page(band_leaf(L, size, g))), _lengths(L)[-1])
     return L, size, 1.0, "set", 1, length, False
@@ -709,6 +716,14 @@ def _fits_later(f: Form, b: Leaf) -> bool:
     """``b`` fits a set's later sheet: over its title block form 2a, or beside it."""
     x0, y0, x1, y1 = field_of(f)
     k = _later_keep(f)
+    return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
+
+
+def _fits_first(f: Form, b: Leaf) -> bool:
+    """``b`` fits a set's first sheet: over its title block (form 1), or beside it — where the set's
+    first drawing, the moments, goes (a set reads in the order of the work)."""
+    x0, y0, x1, y1 = field_of(f)
+    k = keep_out(f)
     return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
 
 
@@ -862,8 +877,9 @@ def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
 
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
-    the drawings' ``rows``, then the tables and the notes in one row; where the first drawing does
-    not fit beside the first sheet's title block, the tables' rows first. Where that leaves the
+    the drawings' ``rows``, then the tables and the notes in one row — the last drawing (ω) in its
+    row or leading the tables' —, in the order of the work; where the first drawing does not fit
+    beside the first sheet's title block, the tables' rows first. Where that leaves the
     notes alone on the last sheet, the last table goes with them (over them, else beside them) —
     every sheet of a set carries a drawing or a table. The fewest sheets of those — where the last
     table and the notes share a row, the one keeping them together (the notes beside the table, a
@@ -872,11 +888,15 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
     for order in ("drawings", "tables"):
         for tail in ([tables + [notes]], [tables[:-1] + [Stack([tables[-1], notes])]],
                      [tables[:-1] + [Row([tables[-1], notes])]]):     # the last drawing (ω) goes with the tables
-            first = rows + tail if order == "drawings" else [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]
-            laid = flow([r for r in first if r], region, keep, later=later)
-            if laid is not None and not _notes_alone(laid[-1]):
-                spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
-                tried.append((len(laid), spread, len(tried), laid))
+            if order == "drawings":        # in the order of the work: ω beside the band, or leading the tables' row
+                ways = [rows + tail, rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]]
+            else:
+                ways = [[tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
+            for first in ways:
+                laid = flow([r for r in first if r], region, keep, later=later)
+                if laid is not None and not _notes_alone(laid[-1]):
+                    spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
+                    tried.append((len(laid), spread, len(tried), laid))
         if tried:
             break
     if tried:
@@ -982,13 +1002,28 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
-        nleaf = Leaf("notes", record=note_block(note_lines, TITLE))
+        # the notes in the band's nook where they fit it, as on the A1 sheet (the band's sheet not half
+        # empty); else with the tables. The set reads in the order of the work: the moments on the
+        # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_flow``)
+        nook = nook_for(boxes, note_lines)
+        if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
+                                    for other in LANGS if other != lang):
+            nook = None                      # the same sheets in either language
+        nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
         leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
             [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None
                   for q in placed(leaf, b, leaf.name in _top_aligned(page))] for page in laid]
+        if nook is not None:
+            at = next(k for k, page in enumerate(laid) if any(leaf.name == "band" for leaf, _ in page))
+            band_box = next(b for leaf, b in laid[at] if leaf.name == "band")
+            dx, dy = _band_shift(boxes, band_box)
+            (_, _, n1, n3), nw = nook
+            nrec = note_block(note_lines, nw)
+            nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
+            pages[at].append(Placed("notes", top_left(nrec, nb), nb))
     else:
         C, groups, width = _column(f, tables, parts, height, shape)
         items, col_box, band_box = [], None, None
