@@ -441,6 +441,14 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
+        # its components at the same point, as the textbook draws them (seed 000, group 12–11):
+        # R^τ from the moment equation about the inner joint, R^n along the link from the plan
+        for c in _components(gp, m.name):
+            cv = (c.end - c.start) * _mu_F(fp, gp)
+            cu = _unit(cv)
+            ca, cb = span[c.name] = lay(c.name, z, cu, _arrow_length(abs(cv), biggest))
+            rec.vector(_pt(ca), _pt(cb), role="relative", layer="vectors", step=step, text=c.name)
+            labels.append((ca, c.name, -cu) if abs(dot(cb - z, cu)) < 0.5 else (cb, c.name, cu))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)
@@ -497,6 +505,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
     # h_G3 on the loom's rocker) had their names stacked against each other
     return _apart(rec, lab.asked, owned, list(span.values()))
+
+
+def _components(gp: GroupPlan, name: str) -> list:
+    """The sides of the group's force plan that are the reaction ``name``'s tangential and normal
+    components (R12τ, R12n: R̄12 = R̄^τ12 + R̄^n12), τ first; none where the plan lays it whole."""
+    return [s for mark in ("τ", "n") for s in gp.sides
+            if s.name == name + mark and s.role == "component" and s.mm > 1e-9][:2]
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -671,6 +686,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     rec.point((0.0, 0.0), role="joint", layer="vectors", step=step)
     biggest = max([t.force for t in lv.terms] + [abs(lv.balancing_force), 1e-9])
     labels = []
+    span: dict[str, tuple[complex, complex]] = {}      # each force's arrow, tail → head
     drawn: list[tuple[complex, complex, complex]] = []
     lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
     for t in lv.terms:
@@ -699,6 +715,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
                     break
             tail, tip = a_, b_
         drawn.append((z, tail, tip))
+        span[t.name] = (tail, tip)
         rec.vector(_pt(tail), _pt(tip), role="absolute", layer="vectors", step=step,
                    text=f"{t.name}: h = {t.arm_mm:g} mm")
         labels.append((tip, t.name, u) if abs(tip - z) >= abs(tail - z) else (tail, t.name, -u))
@@ -716,6 +733,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
         tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
         rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
+        span["P_b"] = (a, tip)
         # named beside its shaft, on the side away from the pole: at the head it met the letters
         # of the images the arrow points at (s3 on the coulisse's lever)
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
@@ -731,10 +749,17 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         if abs(z) > 0.1 and key not in placed:
             placed.add(key)
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
+    owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     for tip, name, u in labels:
+        if name in span:       # a force's letter read as its own arrow's (the press's lever set "G2"
+            a_, b_ = span[name]    # on Φ2's head and "Φ2" by G2's shaft: the two read swapped)
+            mid = 0.5 * (a_ + b_)
+            owned[len(lab.asked)] = ((a_, b_), [LabelRequest(mid, force_symbol(name, lang), side, LETTER, step=step)
+                                                for side in (1j * _unit(b_ - a_), -1j * _unit(b_ - a_))])
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
-    _apart(rec, lab.asked)        # each label fenced while the rest are placed: near a, s2, b (a plan
-                                  # narrow there) the forces' names stood within their height
+    # each label fenced while the rest are placed: near a, s2, b (a plan narrow there) the forces'
+    # names stood within their height
+    _apart(rec, lab.asked, owned, list(span.values()))
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
@@ -767,6 +792,10 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     for eq in gp.equations:
         if eq.unknown != "M_b":
             cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
+        if eq.unknown.endswith("τ"):     # its normal component, read off the force plan (seed 000's R^n)
+            for c in _components(gp, eq.unknown[:-1])[1:]:
+                mm = measure(c.mm, fp.precision)
+                cells.append((c.name, mm * _mu_F(fp, gp), mm))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
     head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
