@@ -114,6 +114,7 @@ PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, 
 
 SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
 LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
+COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most this long (its value in the table)
 
 
 def arm_symbol(name: str) -> str:
@@ -385,6 +386,27 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         drawn.append((z, a, b))
         return a, b
 
+    def along_link(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
+        """A component along its link (R^n12 along AB): drawn inside the link's span, from the
+        joint or to it, ``LANE_MM`` aside on the side no arrow takes — so that it adds nothing to
+        the group's extent (laid from the joint outward it made the six-bar press's II(4-5) a
+        step smaller); a component across its link (R^τ12) as any force (``lay``)."""
+        runs = [(a_, b_) for a_, b_ in drawn_links if abs(b_ - a_) > 1.0 and _on_segment(z, a_, b_)
+                and abs((u.conjugate() * _unit(b_ - a_)).imag) <= math.sin(math.radians(ALONG_DEG))]
+        if not runs:          # across: short, the group's extent kept (the value is in the table)
+            return lay(name, z, u, min(length, COMPONENT_MM))
+        a_, b_ = max(runs, key=lambda r: abs(r[1] - r[0]))
+        far = a_ if abs(a_ - z) > abs(b_ - z) else b_
+        d = _unit(far - z)
+        length = min(length, 0.6 * abs(far - z))
+        t0, t1 = (z, z + length * u) if dot(u, d) > 0 else (z - length * u, z)
+        n = 1j * d
+        cands = [(t0 + k * n, t1 + k * n) for k in (LANE_MM, -LANE_MM, 2 * LANE_MM, -2 * LANE_MM)]
+        ca, cb = next((c for c in cands if not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)
+                       and not _crosses(c[0], c[1], drawn_links)), cands[0])
+        drawn.append((z, ca, cb))
+        return ca, cb
+
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
@@ -446,7 +468,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         for c in _components(gp, m.name):
             cv = (c.end - c.start) * _mu_F(fp, gp)
             cu = _unit(cv)
-            ca, cb = span[c.name] = lay(c.name, z, cu, _arrow_length(abs(cv), biggest))
+            ca, cb = span[c.name] = along_link(c.name, z, cu, _arrow_length(abs(cv), biggest))
             rec.vector(_pt(ca), _pt(cb), role="relative", layer="vectors", step=step, text=c.name)
             labels.append((ca, c.name, -cu) if abs(dot(cb - z, cu)) < 0.5 else (cb, c.name, cu))
     arms = []
@@ -793,17 +815,31 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
         if eq.unknown != "M_b":
             cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
         if eq.unknown.endswith("τ"):     # its normal component, read off the force plan (seed 000's R^n)
-            for c in _components(gp, eq.unknown[:-1])[1:]:
-                mm = measure(c.mm, fp.precision)
-                cells.append((c.name, mm * _mu_F(fp, gp), mm))
+            for c in _components(gp, eq.unknown[:-1]):
+                if c.name.endswith("n"):
+                    mm = measure(c.mm, fp.precision)
+                    cells.append((c.name, mm * _mu_F(fp, gp), mm))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
-    head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
-    rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in cells],
-            [word("drawn mm", lang)] + [num(c[2], lang) for c in cells]]
-    widths = [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]]
-    _table(rec, 0.0, 0.0, head, rows, widths, step)
+    widths = [max(14.0, text_width(force_symbol(c[0], lang), 2.5) + 4) for c in cells]
+    tiers = [cells]
+    if 30.0 + sum(widths) > TABLE_WIDEST_MM and len(cells) > 1:
+        # two tiers, one under the other, each with its header: a group's table grown by the
+        # components (R^τ, R^n at two joints) no wider than the sheet's column already was
+        k = len(cells) - len(cells) // 2
+        tiers = [cells[:k], cells[k:]]
+    y = 0.0
+    for tier in tiers:
+        head = [word("force", lang)] + [force_symbol(c[0], lang) for c in tier]
+        rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in tier],
+                [word("drawn mm", lang)] + [num(c[2], lang) for c in tier]]
+        y = _table(rec, 0.0, y, head, rows, [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]],
+                   step) - TIER_GAP_MM
     return rec
+
+
+TABLE_WIDEST_MM = 200.0   # a group's table wider than this is set in two tiers
+TIER_GAP_MM = 3.0         # between the tiers
 
 
 LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a result past it is marked
