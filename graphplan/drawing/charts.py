@@ -303,6 +303,21 @@ def hodograph_scale(span: float, size: float) -> float:
                if m >= need * (1 - 1e-12))
 
 
+FLAT_GROWTH = 2.0      # a flat hodograph's larger extent grows up to this much over a round one's
+
+
+def hodograph_growth(t: Turn, key: str) -> float:
+    """How much larger than a round one a hodograph's larger extent may be drawn: 1/√(its aspect),
+    at most ``FLAT_GROWTH`` — a flat one (the press's R12, 8000 N down, 300 N across: 60 × 15 mm,
+    its idle-stroke points 2 mm from the origin) over the area of a round one."""
+    f = t.ks.reactions[key].force
+    w = max(0.0, float(np.max(f.real))) - min(0.0, float(np.min(f.real)))
+    h = max(0.0, float(np.max(f.imag))) - min(0.0, float(np.min(f.imag)))
+    if max(w, h) <= 0:
+        return 1.0
+    return min(FLAT_GROWTH, 1.0 / math.sqrt(max(min(w, h) / max(w, h), FLAT_GROWTH ** -2)))
+
+
 def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together

@@ -431,7 +431,13 @@ def measure(dr: ForceDrafter) -> Natural:
                                        lettering=LETTERING)
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
-    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR, cap=HODOGRAPHS_CAP)
+    # flat hodographs (the press's, 8000 N down and 300 N across: 60 × 15 mm slivers) grow to the
+    # area of a round one (charts.hodograph_growth, the flattest's share) — the last to take the
+    # room the sheet has left, never a main drawing's or a chart's
+    from graphplan.drawing.charts import FLAT_GROWTH, hodograph_growth
+    grown = min([hodograph_growth(dr.turn, k) for k in dr.turn.revolute] + [FLAT_GROWTH])
+    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR,
+                                     cap=HODOGRAPHS_CAP * grown)
     families["lever"] = LeverFamily(**vars(families["lever"]), figure=figure * fp.lever.mu_v,
                                    arrows=max(0.0, max(lines[2] - lines[0], lines[3] - lines[1]) - figure))
     tables = {}
