@@ -613,6 +613,15 @@ SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their 
 SET_LARGEST = {"scheme": 4.0, "groups": 4.0}
 
 
+def _set_largest(nat: Natural, name: str) -> float:
+    """How large a family of a set grows (``SET_LARGEST``, else 1.25); flat hodographs to their
+    cap, the area of a round one (the press's A3 set drew them 60 × 15 mm on a sheet half empty)."""
+    fam = nat.families[name]
+    if name == "hodographs" and math.isfinite(getattr(fam, "cap", math.inf)):
+        return max(SET_LARGEST.get(name, 1.25), fam.rel(1.0 / fam.cap))
+    return SET_LARGEST.get(name, 1.25)
+
+
 def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float, packed: bool = False) -> list[list]:
     """A set's rows in reading order: the scheme; each group with its force plan; the acceleration
     plan and the lever; the charts, then the hodographs as one grid (kept together on one sheet —
@@ -699,7 +708,7 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         count = pages(mu)
         grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
-                        lambda name, m: nat.families[name].rel(m) <= SET_LARGEST.get(name, 1.25) + 1e-9)
+                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0] and (not packed or _no_smaller(nat, mu, best[1].mu)):
             best = (count, Plan(mu, factor, "set", 1, 1, count, packed=packed))
