@@ -154,3 +154,48 @@ def test_the_resistance_charts_force_axis_is_graduated(press_turn):
     end = path_travelled(press_turn)[-1] / rec.scales["mu_s"]
     twelve = [q for q in rec.items if q.kind == "text" and q.text == "12"]
     assert twelve and twelve[0].points[0][0] == pytest.approx(end)
+
+
+def test_flat_hodographs_grow_where_the_sheet_has_room(press_turn):
+    """Review5 #6: the press's hodographs were 60 × 15 mm slivers at 150 N/mm in a 125 mm wide
+    column, their idle-stroke numbers merged "7–11". A hodograph's growth is 1/√(its aspect), at
+    most 2 (checked against its own extents), and on the A1 sheet the press's are drawn at least
+    1.6 times the round size — μR finer than 150 N/mm — the main drawings' scales unchanged."""
+    import numpy as np
+    from graphplan.drawing.charts import FLAT_GROWTH, hodograph_growth
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    for key in press_turn.revolute:
+        f = press_turn.ks.reactions[key].force
+        w = np.ptp(np.r_[f.real, 0.0])
+        h = np.ptp(np.r_[f.imag, 0.0])
+        assert hodograph_growth(press_turn, key) == pytest.approx(min(FLAT_GROWTH, math.sqrt(max(w, h) / min(w, h))))
+    p, nat, dr = sf.plan(scene_study(PRESS_EN), form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    assert 1.0 / p.mu["hodographs"] >= 1.6
+    hods = dr.drawings(p.mu, "en")["hodographs"]
+    assert hods and all(rec.scales["mu_R"] < 150.0 for rec in hods)
+    assert p.mu["scheme"] == pytest.approx(0.002) and p.mu["lever"] == pytest.approx(0.0113, rel=1e-3)
+
+
+def test_a_wide_group_table_is_set_in_two_tiers():
+    """The components widened review4's press II(2-3) table to 226 mm (the column grew, the group
+    II(4-5) lost a step): a table wider than 200 mm is set in two tiers, each narrower, together
+    every force once — R^τ and R^n for each outer joint's R^τ."""
+    from graphplan.drawing.forces import TABLE_WIDEST_MM, group_table_record
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    fp = sf.ForceDrafter(scene_study(PRESS), SheetOptions(precision=0.5, sheet="forces")).fp()
+    gp = next(g for g in fp.groups if "2-3" in g.label)
+    rec = group_table_record(fp, gp, "en")
+    heads = [q for q in rec.items if q.kind == "text" and q.text == "force"]
+    assert len(heads) == 2
+    x0, _, x1, _ = rec.bounds()
+    assert x1 - x0 <= TABLE_WIDEST_MM
+    names = [q.text for q in rec.items if q.kind == "text" and q.text.startswith(("R", "G", "Φ", "M", "P"))]
+    assert len(names) == len(set(names))
+    taus = {eq.unknown for eq in gp.equations if eq.unknown.endswith("τ")}
+    assert len(taus) == 2
+    for t in taus:
+        index = t[1:-1]
+        assert {f"R^{{τ}}_{{{index}}}", f"R^{{n}}_{{{index}}}", f"R_{{{index}}}"} <= set(names)
