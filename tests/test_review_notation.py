@@ -30,11 +30,14 @@ def sixbar_forces():
 
 
 def _row(rec, first: str) -> list[str]:
-    """The cells of a table's row whose first cell reads ``first``, left to right."""
-    head = next(p for p in rec.items if p.kind == "text" and p.text == first)
-    y = head.points[0][1]
-    cells = [p for p in rec.items if p.kind == "text" and abs(p.points[0][1] - y) < 0.05 and p is not head]
-    return [p.text for p in sorted(cells, key=lambda p: p.points[0][0])]
+    """The cells of a table's row whose first cell reads ``first``, left to right (a table set in
+    two tiers: the first tier's, then the second's)."""
+    out = []
+    for head in sorted((p for p in rec.items if p.kind == "text" and p.text == first), key=lambda p: -p.points[0][1]):
+        y = head.points[0][1]
+        cells = [p for p in rec.items if p.kind == "text" and abs(p.points[0][1] - y) < 0.05 and p is not head]
+        out += [p.text for p in sorted(cells, key=lambda p: p.points[0][0])]
+    return out
 
 
 def _value(text: str) -> float:

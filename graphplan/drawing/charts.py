@@ -214,6 +214,17 @@ def _over_turn(t: Turn, values: np.ndarray, title: str, axis: str, per_mm: str, 
             if b - a > 1.0:
                 rec.segment((x, a), (x, b), role="grid", layer="diagrams", step=f"positions of {step}")
         numbers.append(LabelRequest(complex(x, 0.0), str(pos), -1 + -2j if y > 0 else -1 + 2j, 2.5, step=step))
+    if numbers:
+        # the turn closes at position 0 again, numbered as the lab numbers the divisions, 0 … 12
+        y = float(values[0] / mu)
+        rec.segment((width, -1.5), (width, 1.5), role="construction", layer="diagrams", step=step)
+        if abs(y) > 1.5:
+            rec.segment((width, 0.0), (width, y), role="grid", layer="diagrams", step=step)
+        for a, b in ((lo / mu, min(0.0, y)), (max(0.0, y), hi / mu)):
+            if b - a > 1.0:
+                rec.segment((width, a), (width, b), role="grid", layer="diagrams", step=f"positions of {step}")
+        numbers.append(LabelRequest(complex(width, 0.0), str(t.count), -1 + -2j if y > 0 else -1 + 2j, 2.5,
+                                    step=step))
     rec.label((width + 6.0, -1.0), "φ", size=3.5, step=step)
     rec.label((2.0, max(hi / mu, v_hi / mu) + 5.0), axis, size=3.5, step=step)
     for i in range(round(v_lo / tick), round(v_hi / tick) + 1):
@@ -290,6 +301,21 @@ def hodograph_scale(span: float, size: float) -> float:
     k0 = math.floor(math.log10(need))
     return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES + GOST_BETWEEN)
                if m >= need * (1 - 1e-12))
+
+
+FLAT_GROWTH = 2.0      # a flat hodograph's larger extent grows up to this much over a round one's
+
+
+def hodograph_growth(t: Turn, key: str) -> float:
+    """How much larger than a round one a hodograph's larger extent may be drawn: 1/√(its aspect),
+    at most ``FLAT_GROWTH`` — a flat one (the press's R12, 8000 N down, 300 N across: 60 × 15 mm,
+    its idle-stroke points 2 mm from the origin) over the area of a round one."""
+    f = t.ks.reactions[key].force
+    w = max(0.0, float(np.max(f.real))) - min(0.0, float(np.min(f.real)))
+    h = max(0.0, float(np.max(f.imag))) - min(0.0, float(np.min(f.imag)))
+    if max(w, h) <= 0:
+        return 1.0
+    return min(FLAT_GROWTH, 1.0 / math.sqrt(max(min(w, h) / max(w, h), FLAT_GROWTH ** -2)))
 
 
 def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
@@ -410,7 +436,10 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]
     low = -5.0
     seen: list[tuple[float, float, int]] = []    # (x, half the number's ink width, its row) set so far
-    for k, pos in t.position_index():
+    marks = t.position_index()
+    if marks:        # the cycle closes at position 0 again: the lab numbers its end 12
+        marks = marks + [(n, t.count)]
+    for k, pos in marks:
         x = X(k)
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
         ink = Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink()
@@ -428,8 +457,11 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
                   anchor="middle", step=step)
     rec.label((x_end + 9.0, -1.0), f"{sym}, {dist_unit}", size=3.5, step=step)
     rec.label((2.0, y_end + 5.0), f"{force_symbol(name, lang)}, {f_unit}", size=3.5, step=step)
-    rec.label((-2.5, y_end - 1.2), num(top, lang), size=2.5, anchor="end", step=step)
-    rec.segment((-1.5, y_end), (0.0, y_end), role="construction", layer="diagrams", step=step)
+    tick = axis_step(mu_p)        # the force axis graduated at a round step, as the other charts
+    for i in range(0, math.floor(top / tick + 1e-9) + 1):
+        y = i * tick / mu_p
+        rec.segment((-1.5, y), (0.0, y), role="construction", layer="diagrams", step=step)
+        rec.label((-2.5, y - 1.2), num(round(i * tick, 9), lang), size=2.5, anchor="end", step=step)
     rec.label((0.0, low - 15.0), word("fs path", lang, s=what, u=dist_unit) + f"; {mu_sym} = {num(mu_s, lang)} "
               f"{dist_unit}/{unit('mm', lang)}, {f_mu} = {num(mu_p, lang)} {f_unit}/{unit('mm', lang)}", size=2.5,
               step=step)

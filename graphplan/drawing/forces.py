@@ -114,6 +114,7 @@ PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, 
 
 SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
 LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
+COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most this long (its value in the table)
 
 
 def arm_symbol(name: str) -> str:
@@ -453,6 +454,27 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         drawn.append((z, a, b))
         return a, b
 
+    def along_link(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
+        """A component along its link (R^n12 along AB): drawn inside the link's span, from the
+        joint or to it, ``LANE_MM`` aside on the side no arrow takes — so that it adds nothing to
+        the group's extent (laid from the joint outward it made the six-bar press's II(4-5) a
+        step smaller); a component across its link (R^τ12) as any force (``lay``)."""
+        runs = [(a_, b_) for a_, b_ in drawn_links if abs(b_ - a_) > 1.0 and _on_segment(z, a_, b_)
+                and abs((u.conjugate() * _unit(b_ - a_)).imag) <= math.sin(math.radians(ALONG_DEG))]
+        if not runs:          # across: short, the group's extent kept (the value is in the table)
+            return lay(name, z, u, min(length, COMPONENT_MM))
+        a_, b_ = max(runs, key=lambda r: abs(r[1] - r[0]))
+        far = a_ if abs(a_ - z) > abs(b_ - z) else b_
+        d = _unit(far - z)
+        length = min(length, 0.6 * abs(far - z))
+        t0, t1 = (z, z + length * u) if dot(u, d) > 0 else (z - length * u, z)
+        n = 1j * d
+        cands = [(t0 + k * n, t1 + k * n) for k in (LANE_MM, -LANE_MM, 2 * LANE_MM, -2 * LANE_MM)]
+        ca, cb = next((c for c in cands if not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)
+                       and not _crosses(c[0], c[1], drawn_links)), cands[0])
+        drawn.append((z, ca, cb))
+        return ca, cb
+
     for f in forces:
         z = f.at / mu
         u = _unit(f.force)
@@ -530,6 +552,14 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
+        # its components at the same point, as the textbook draws them (seed 000, group 12–11):
+        # R^τ from the moment equation about the inner joint, R^n along the link from the plan
+        for c in _components(gp, m.name):
+            cv = (c.end - c.start) * _mu_F(fp, gp)
+            cu = _unit(cv)
+            ca, cb = span[c.name] = along_link(c.name, z, cu, _arrow_length(abs(cv), biggest))
+            rec.vector(_pt(ca), _pt(cb), role="relative", layer="vectors", step=step, text=c.name)
+            labels.append((ca, c.name, -cu) if abs(dot(cb - z, cu)) < 0.5 else (cb, c.name, cu))
     arms = []
     for eq in gp.equations:
         about = _about(fp, eq.about, gp)
@@ -590,6 +620,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
     # h_G3 on the loom's rocker) had their names stacked against each other; no leader across a link
     return _apart(rec, lab.asked, owned, list(span.values()), across=False)
+
+
+def _components(gp: GroupPlan, name: str) -> list:
+    """The sides of the group's force plan that are the reaction ``name``'s tangential and normal
+    components (R12τ, R12n: R̄12 = R̄^τ12 + R̄^n12), τ first; none where the plan lays it whole."""
+    return [s for mark in ("τ", "n") for s in gp.sides
+            if s.name == name + mark and s.role == "component" and s.mm > 1e-9][:2]
 
 
 def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
@@ -781,6 +818,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     biggest = max([t.force for t in lv.terms] + [abs(lv.balancing_force), 1e-9])
     labels = []
     arm_feet: dict[complex, list[str]] = {}      # each arm's foot: the forces on that line (one arm serves them)
+    span: dict[str, tuple[complex, complex]] = {}      # each force's arrow, tail → head
     drawn: list[tuple[complex, complex, complex]] = []
     lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
     for t in lv.terms:
@@ -809,6 +847,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
                     break
             tail, tip = a_, b_
         drawn.append((z, tail, tip))
+        span[t.name] = (tail, tip)
         rec.vector(_pt(tail), _pt(tip), role="absolute", layer="vectors", step=step,
                    text=f"{t.name}: h = {t.arm_mm:g} mm")
         labels.append((tip, t.name, u) if abs(tip - z) >= abs(tail - z) else (tail, t.name, -u))
@@ -830,6 +869,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
         tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
         rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
+        span["P_b"] = (a, tip)
         # named beside its shaft, on the side away from the pole: at the head it met the letters
         # of the images the arrow points at (s3 on the coulisse's lever)
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
@@ -845,7 +885,13 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         if abs(z) > 0.1 and key not in placed:
             placed.add(key)
             lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
+    owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     for tip, name, u in labels:
+        if name in span:       # a force's letter read as its own arrow's (the press's lever set "G2"
+            a_, b_ = span[name]    # on Φ2's head and "Φ2" by G2's shaft: the two read swapped)
+            mid = 0.5 * (a_ + b_)
+            owned[len(lab.asked)] = ((a_, b_), [LabelRequest(mid, force_symbol(name, lang), side, LETTER, step=step)
+                                                for side in (1j * _unit(b_ - a_), -1j * _unit(b_ - a_))])
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     middle = sum(turned.values()) / max(len(turned), 1)
     for foot, names in arm_feet.items():
@@ -856,8 +902,9 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         side = 1j * _unit(foot) if dot(1j * _unit(foot), middle - at) >= 0 else -1j * _unit(foot)
         text = arm_symbol(names[0]) if len(names) == 1 else "h_{" + ",".join(arm_symbol(n)[3:-1] for n in names) + "}"
         lab.place(at, text, LETTER, side, step)
-    _apart(rec, lab.asked)        # each label fenced while the rest are placed: near a, s2, b (a plan
-                                  # narrow there) the forces' names stood within their height
+    # each label fenced while the rest are placed: near a, s2, b (a plan narrow there) the forces'
+    # names stood within their height
+    _apart(rec, lab.asked, owned, list(span.values()))
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
@@ -890,14 +937,32 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     for eq in gp.equations:
         if eq.unknown != "M_b":
             cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
+        if eq.unknown.endswith("τ"):     # its normal component, read off the force plan (seed 000's R^n)
+            for c in _components(gp, eq.unknown[:-1]):
+                if c.name.endswith("n"):
+                    mm = measure(c.mm, fp.precision)
+                    cells.append((c.name, mm * _mu_F(fp, gp), mm))
     for m in gp.reactions.values():
         cells.append((m.name, m.value, m.mm))
-    head = [word("force", lang)] + [force_symbol(c[0], lang) for c in cells]
-    rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in cells],
-            [word("drawn mm", lang)] + [num(c[2], lang) for c in cells]]
-    widths = [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]]
-    _table(rec, 0.0, 0.0, head, rows, widths, step)
+    widths = [max(14.0, text_width(force_symbol(c[0], lang), 2.5) + 4) for c in cells]
+    tiers = [cells]
+    if 30.0 + sum(widths) > TABLE_WIDEST_MM and len(cells) > 1:
+        # two tiers, one under the other, each with its header: a group's table grown by the
+        # components (R^τ, R^n at two joints) no wider than the sheet's column already was
+        k = len(cells) - len(cells) // 2
+        tiers = [cells[:k], cells[k:]]
+    y = 0.0
+    for tier in tiers:
+        head = [word("force", lang)] + [force_symbol(c[0], lang) for c in tier]
+        rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in tier],
+                [word("drawn mm", lang)] + [num(c[2], lang) for c in tier]]
+        y = _table(rec, 0.0, y, head, rows, [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]],
+                   step) - TIER_GAP_MM
     return rec
+
+
+TABLE_WIDEST_MM = 200.0   # a group's table wider than this is set in two tiers
+TIER_GAP_MM = 3.0         # between the tiers
 
 
 LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a result past it is marked

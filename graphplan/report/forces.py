@@ -124,6 +124,12 @@ def forces_table(fp, lang: str = "uk") -> str:
                 sign = "" if eq.arm_mm >= 0 else "−"
                 lines.append(f"  ΣM_{eq.about} = 0: {sign}{sym(eq.unknown)}·{n(abs(eq.arm_mm))} {terms} = 0 "
                              f"→ {sym(eq.unknown)} = {n(eq.result, 5)} {unit('N', lang)}")
+            if eq.unknown.endswith("τ"):      # its normal component read off the plan (the sheet's table)
+                for s in gp.sides:
+                    if s.name == eq.unknown[:-1] + "n" and s.role == "component" and s.mm > 1e-9:
+                        mm = drawn_mm(s.mm, fp.precision)
+                        lines.append(w("normal component", sym=sym(s.name), mm=n(mm), mm_=unit("mm", lang),
+                                       v=n(mm * (gp.mu_F or fp.mu_F), 5)))
         cells = []
         for f in gp.forces:
             if f.force:

@@ -435,7 +435,13 @@ def measure(dr: ForceDrafter) -> Natural:
                                        lettering=LETTERING)
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
-    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR, cap=HODOGRAPHS_CAP)
+    # flat hodographs (the press's, 8000 N down and 300 N across: 60 × 15 mm slivers) grow to the
+    # area of a round one (charts.hodograph_growth, the flattest's share) — the last to take the
+    # room the sheet has left, never a main drawing's or a chart's
+    from graphplan.drawing.charts import FLAT_GROWTH, hodograph_growth
+    grown = min([hodograph_growth(dr.turn, k) for k in dr.turn.revolute] + [FLAT_GROWTH])
+    families["hodographs"] = Floored(**vars(families["hodographs"]), floor=HODOGRAPHS_FLOOR,
+                                     cap=HODOGRAPHS_CAP * grown)
     families["lever"] = LeverFamily(**vars(families["lever"]), figure=figure * fp.lever.mu_v,
                                    arrows=max(0.0, max(lines[2] - lines[0], lines[3] - lines[1]) - figure))
     tables = {}
@@ -611,6 +617,15 @@ SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their 
 SET_LARGEST = {"scheme": 4.0, "groups": 4.0}
 
 
+def _set_largest(nat: Natural, name: str) -> float:
+    """How large a family of a set grows (``SET_LARGEST``, else 1.25); flat hodographs to their
+    cap, the area of a round one (the press's A3 set drew them 60 × 15 mm on a sheet half empty)."""
+    fam = nat.families[name]
+    if name == "hodographs" and math.isfinite(getattr(fam, "cap", math.inf)):
+        return max(SET_LARGEST.get(name, 1.25), fam.rel(1.0 / fam.cap))
+    return SET_LARGEST.get(name, 1.25)
+
+
 def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float, packed: bool = False) -> list[list]:
     """A set's rows in reading order: the scheme; each group with its force plan; the acceleration
     plan and the lever; the charts, then the hodographs as one grid (kept together on one sheet —
@@ -697,7 +712,7 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         count = pages(mu)
         grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
-                        lambda name, m: nat.families[name].rel(m) <= SET_LARGEST.get(name, 1.25) + 1e-9)
+                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0] and (not packed or _no_smaller(nat, mu, best[1].mu)):
             best = (count, Plan(mu, factor, "set", 1, 1, count, packed=packed))

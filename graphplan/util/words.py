@@ -383,6 +383,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "moment eq balancing": ("  ΣM_{about} = 0: M_зр {terms} = 0 (сили × плечі в мм × μ_l) → M_зр = {r} {N·m}",
                             "  ΣM_{about} = 0: M_b {terms} = 0 (forces × arms in mm × μ_l) → M_b = {r} {N·m}"),
     "forces on group": ("  сили, що діють на групу:", "  forces on the group:"),
+    "normal component": ("  {sym} = {mm} {mm_} · μ_F = {v} {N} (уздовж ланки, з плану сил)",
+                         "  {sym} = {mm} {mm_} · μ_F = {v} {N} (along the link, from the force plan)"),
     "reactions from plan": ("  реакції з плану сил:", "  reactions from the force plan:"),
     "lever head": ("Важіль Жуковського (план швидкостей, повернутий на 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):",
                    "Zhukovsky lever (velocity plan turned 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):"),
