@@ -6,10 +6,10 @@ the drawings in a row in reading order, the tables and the notes beside the titl
 too small carries the rest to further sheets of the set (docs/gears.md)."""
 from __future__ import annotations
 
-from graphplan.drawing.layout import GAP, Leaf, Placed, centred, flow
+from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import construct_mesh, construct_train, sliding_diagram
+from graphplan.graphic.gears import TEETH, construct_mesh, construct_train, most_teeth, sliding_diagram
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
 from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
@@ -269,38 +269,53 @@ def _plan(vel, lang: str) -> Record:
         l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
 
 
-GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.4, 1.2, 1.1)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
+GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
 # (the ring's radius, vA, the sun's segment)
 H_MIN = 40.0             # mm: the pole distance of a grown plan of angular velocities at least this
 
 
 def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
-    λ diagrams, the meshing's height and the tables' column off the field): the ring's radius, vA and
-    the sun's segment grown together, μl and μv the round values of the series, the first (largest)
-    that fits; the pictures as they were when none larger fits."""
+    λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
+    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: the ring's
+    radius, vA and the sun's segment grown together, μl and μv the round values of the series, the
+    first (largest) that fits; the pictures as they were when none fits."""
     def size(r: Record) -> tuple[float, float]:
         b = r.bounds()
         return b[2] - b[0], b[3] - b[1]
-    mesh_h = size(captioned(mesh.record, "M"))[1] + 12.0          # the meshing and its caption's line
+    mesh_w, mesh_h = size(captioned(mesh.record, "M"))
+    mesh_h += 12.0                                                 # the meshing and its caption's line
     lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
-    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
-    room_h = region[3] - region[1] - mesh_h - 3 * GAP
-    w0, h0 = size(plan)
-    for k in GROW:
-        for va_share, share in ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
-                                (0.5, 0.6), (0.5, 0.5)):    # vA and the sun's segment shorter where too wide
-            try:
-                v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
-                                    sun_segment_mm=100.0 * k * share)
-            except GraphplanError:
-                break
-            p = _plan(v, lang)
-            w_, h_ = size(p)
-            if h_ > room_h:
-                break
-            if w_ <= room_w and v.h >= min(H_MIN, vel.h):
-                return (v, p) if h_ > h0 else (vel, plan)
+    room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
+    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    shares = ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
+              (0.5, 0.5))               # vA and the sun's segment shorter where too wide
+
+    def drawn(k: float, va_share: float, share: float):
+        try:
+            v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
+                                sun_segment_mm=100.0 * k * share)
+        except GraphplanError:
+            return None
+        p = _plan(v, lang)
+        w_, h_ = size(p)
+        return (v, p) if h_ <= room_h and w_ <= room_w and v.h >= min(H_MIN, vel.h) else None
+
+    # the largest size whose narrowest variant fits (halving the list of sizes: the pictures grow
+    # with k), then at that size the widest variant that fits
+    lo, hi, got = 0, len(GROW) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        if drawn(GROW[mid], *shares[-1]) is not None:
+            got, hi = mid, mid - 1
+        else:
+            lo = mid + 1
+    if got is None:
+        return vel, plan
+    for va_share, share in shares:
+        found = drawn(GROW[got], va_share, share)
+        if found is not None:
+            return found
     return vel, plan
 
 
@@ -322,10 +337,14 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         zone_w = region[2] - region[0] - side_w - GAP
         zone_h = region[3] - region[1] - max(SLIDING_H, plan_h) - GAP
         line = zone_w - (plan_w + GAP if plan else 0.0) - 30.0
-        if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing gets a sheet of its own
-            zone_w, zone_h, line = region[2] - region[0] - 10.0, region[3] - region[1] - 40.0, None
-        mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
-    if vel is not None and mesh is not None:
+        if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing heads a set
+            mesh = set_mesh(sol.pair, f, precision, lang)
+        else:
+            mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
+            teeth = most_teeth(sol.pair, mesh.module_mm, zone_h, zone_w)     # more teeth where the zone holds them
+            if teeth != TEETH:
+                mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
+    if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
         if beside(region, mesh):          # beside the meshing, as tall as it with its caption
@@ -334,6 +353,32 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
         mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
     return mesh, vel, plan
+
+
+def meshing_leaf(mesh, lang: str) -> Record:
+    """The meshing with its caption: the name, the scale and μl."""
+    return captioned(mesh.record, WORDS[lang]["meshing"].format(mu=_n(mesh.mu_l, lang),
+                                                               scale=drawing_scale(mesh.mu_l, lang)))
+
+
+def set_mesh(pair, f: Form, precision: float, lang: str):
+    """The meshing at the head of an A2/A3 set: the largest GOST 2.302 scale whose whole depth 2.25m
+    is 40–60 mm and whose drawing, caption included, fits the first sheet over its title block (or
+    beside it); when none in that band does, the largest below it that fits; the drawings built and
+    measured, not estimated (``mesh_scale``'s window is a few mm wider than the drawing)."""
+    from graphplan.graphic.gears import DEPTH_MM, ENLARGE, REDUCE
+    x0, y0, x1, y1 = field_of(f)
+    keep = keep_out(f)
+    m = pair.pair.module * 1000.0
+    series = sorted(ENLARGE + REDUCE, reverse=True)
+    band = [k for k in series if 2.25 * m * k <= DEPTH_MM[1] + 1e-9]
+    for k in band:
+        mesh = construct_mesh(pair, precision, lang, module_mm=m * k)
+        b = meshing_leaf(mesh, lang).bounds()
+        w, h = b[2] - b[0], b[3] - b[1]
+        if (w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0):
+            return mesh
+    return construct_mesh(pair, precision, lang, module_mm=m * series[-1])
 
 
 def beside(region, mesh) -> bool:
@@ -368,8 +413,7 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     drawings: list[Leaf] = []
     tables: list[Leaf] = []
     if mesh is not None:
-        drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(
-            mu=_n(mesh.mu_l, lang), scale=drawing_scale(mesh.mu_l, lang)))))
+        drawings.append(Leaf("meshing", record=meshing_leaf(mesh, lang)))
         drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
             mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
@@ -383,13 +427,15 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         pages = zones(drawings, side, f, width)
         if pages is not None:
             break
-    if pages is None:                     # a set of sheets (the tables at the ruled size, as they were)
-        laid = flow(_rows(drawings, side, region), region, keep_out(f))
-        if laid is None:
+    if pages is None:                     # a set of sheets (sheets/gearset.py): the tables as the other
+        from graphplan.sheets.gearset import set_pages     # sheets draw theirs unless that costs a sheet
+        tried = [set_pages(drawings + _column(tables, lines, k)[0], f, lambda w: Leaf("notes", record=note_block(lines, w)))
+                 for k in (TABLES, 1.0)]
+        tried = [t for t in tried if t is not None]
+        if not tried:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
-        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
-                 for page in laid]
+        pages = min(tried, key=len)
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
                    f"{g.title_in(lang)} — {w['subtitle']}")
 
@@ -463,9 +509,3 @@ def top_left_of(rec: Record, box) -> Record:
     """The record with its top-left corner at the box's."""
     b = rec.bounds()
     return rec.moved(box[0] - b[0], box[3] - b[3])
-
-
-def _rows(drawings: list[Leaf], side: list[Leaf], region):
-    """Reading order for a set of smaller sheets: the meshing, the λ diagrams, the planetary pictures
-    (side by side while they fit across), then the tables and the notes."""
-    return [drawings, side]
