@@ -364,21 +364,38 @@ def meshing_leaf(mesh, lang: str) -> Record:
 def set_mesh(pair, f: Form, precision: float, lang: str):
     """The meshing at the head of an A2/A3 set: the largest GOST 2.302 scale whose whole depth 2.25m
     is 40–60 mm and whose drawing, caption included, fits the first sheet over its title block (or
-    beside it); when none in that band does, the largest below it that fits; the drawings built and
-    measured, not estimated (``mesh_scale``'s window is a few mm wider than the drawing)."""
+    beside it); when none in that band does, the fitting one whose depth comes nearest the band (as
+    ``mesh_scale`` takes it); the drawings built and measured, not estimated (``mesh_scale``'s window
+    is a few mm wider than the drawing)."""
     from graphplan.graphic.gears import DEPTH_MM, ENLARGE, REDUCE
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f)
     m = pair.pair.module * 1000.0
     series = sorted(ENLARGE + REDUCE, reverse=True)
-    band = [k for k in series if 2.25 * m * k <= DEPTH_MM[1] + 1e-9]
-    for k in band:
+    far = lambda k: max(DEPTH_MM[0] / (2.25 * m * k), 2.25 * m * k / DEPTH_MM[1])     # noqa: E731
+    for k in sorted(series, key=lambda k: (round(far(k), 9) if far(k) > 1.0 else 0.0, -k)):
         mesh = construct_mesh(pair, precision, lang, module_mm=m * k)
         b = meshing_leaf(mesh, lang).bounds()
         w, h = b[2] - b[0], b[3] - b[1]
         if (w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0):
             return mesh
     return construct_mesh(pair, precision, lang, module_mm=m * series[-1])
+
+
+def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
+    """The set's meshing at its scale with more teeth of each wheel (``most_teeth``), when that drawing
+    with its caption still fits the first sheet over its title block; else None."""
+    x0, y0, x1, y1 = field_of(f)
+    room_w, room_h = x1 - x0, y1 - keep_out(f)[3]
+    n = most_teeth(pair, mesh.module_mm, room_h, room_w)
+    if n == TEETH:
+        return None
+    more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=n)
+    b = meshing_leaf(more, lang).bounds()
+    if b[2] - b[0] > room_w or b[3] - b[1] > room_h:
+        return None
+    more.lam = mesh.lam
+    return more
 
 
 def beside(region, mesh) -> bool:
@@ -429,8 +446,14 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py): the tables as the other
         from graphplan.sheets.gearset import set_pages     # sheets draw theirs unless that costs a sheet
-        tried = [set_pages(drawings + _column(tables, lines, k)[0], f, lambda w: Leaf("notes", record=note_block(lines, w)))
-                 for k in (TABLES, 1.0)]
+        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
+        tried = []
+        for k in (TABLES, 1.0):           # (the meshing with more teeth first, where that costs no sheet)
+            for m in ([more] if more is not None else []) + [None]:
+                d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
+                     for t in drawings]
+                tried.append(set_pages(d + _column(tables, lines, k)[0], f,
+                                       lambda w: Leaf("notes", record=note_block(lines, w))))
         tried = [t for t in tried if t is not None]
         if not tried:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",

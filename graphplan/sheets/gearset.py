@@ -68,17 +68,18 @@ def _groupings(items: list[Leaf]) -> list:
 NOTE_WIDTHS = (130.0, 150.0, 240.0, 300.0, 380.0)   # mm: the notes wrapped to another width where that fits
 
 
-def page(leaves: list[Leaf], f: Form, first: bool, notes=None) -> list[Placed] | None:
+def page(leaves: list[Leaf], f: Form, first: bool, notes=None):
     """One sheet of the set in zones: its drawings on the left and its tables and notes in a column by
     the title block, or the drawings across the top and the tables and notes in a row under them; the
     spare room shared out (the arrangement whose least spare is largest). None when no arrangement
     fits the field (the title block kept clear of: form 1 on the first sheet, form 2a on the later
-    ones). ``notes(width)``: the notes wrapped to another width, tried where they are on the sheet."""
+    ones). ``notes(width)``: the notes wrapped to another width, tried where they are on the sheet.
+    Returns a function that places them (a set weighs many runs of its leaves and places one)."""
     tried = [_page(leaves, f, first)]
     if notes is not None and any(t.name == "notes" for t in leaves):
         tried += [_page([notes(w) if t.name == "notes" else t for t in leaves], f, first) for w in NOTE_WIDTHS]
     tried = [t for t in tried if t is not None]
-    return max(tried, key=lambda t: t[0])[1] if tried else None
+    return max(tried, key=lambda t: t[0])[1] if tried else None     # (placed when the set is chosen)
 
 
 def _cached(notes):
@@ -89,7 +90,7 @@ def _cached(notes):
     return lambda w: seen[w] if w in seen else seen.setdefault(w, notes(w))
 
 
-def _page(leaves: list[Leaf], f: Form, first: bool) -> tuple[float, list[Placed]] | None:
+def _page(leaves: list[Leaf], f: Form, first: bool):
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f) if first else later_keep(f)
     drawings = [t for t in leaves if t.name in DRAWINGS]
@@ -145,7 +146,7 @@ def _page(leaves: list[Leaf], f: Form, first: bool) -> tuple[float, list[Placed]
                      lambda d=d, c=c, a=(x0, split, dright, y1), b=(x0, foot, right, split - GAP):
                      _placed(d, a, texts) + _placed(c, b, texts))
                 break
-    return None if best is None else (best[0], best[1]())
+    return best
 
 
 def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | None:
@@ -155,9 +156,9 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | N
     leaves = sorted(leaves, key=lambda t: ORDER.index(t.name))
     notes = _cached(notes)
     n = len(leaves)
-    memo: dict[tuple[int, int, bool], list[Placed] | None] = {}
+    memo: dict[tuple[int, int, bool], object] = {}
 
-    def one(i: int, j: int) -> list[Placed] | None:
+    def one(i: int, j: int):
         key = (i, j, i == 0)
         if key not in memo:
             run = leaves[i:j]
@@ -172,5 +173,5 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | N
             if all(p is not None for p in pages):
                 found.append(([-(b - a) for a, b in zip(bounds, bounds[1:])], pages))
         if found:
-            return min(found, key=lambda t: t[0])[1]
+            return [place() for place in min(found, key=lambda t: t[0])[1]]
     return None
