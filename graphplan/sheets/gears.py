@@ -198,8 +198,19 @@ def train_table(doc: dict, lang: str) -> Record:
 
 
 def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
+    """The sheet's notes: the pair's, then the train's (``note_parts``)."""
+    return [x for part in note_parts(doc, lang, mesh, vel) for x in part]
+
+
+def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
+    """The notes in two parts — the pair's (the shifts' rule, the scale, the readings' decimals, the
+    bound of εα, its warnings) and the train's (the scales, the bound of u1H, the synthesis, its
+    warnings) —, the legends of the tables' marks closing the last; a part a scene lacks is left out.
+    A set puts each part by its tables (sheets/gearset.py)."""
     w = WORDS[lang]
-    out = []
+    key = "warnings_uk" if lang == "uk" else "warnings"
+    parts = []
+    out: list[str] = []
     if "pair" in doc:
         p = doc["pair"]
         if p["shifts"] == "auto":
@@ -216,6 +227,9 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
+        out += [w["warn"] + x for x in p[key]]
+        parts.append(out)
+        out = []
     if "planetary" in doc:
         t = doc["planetary"]
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
@@ -230,14 +244,13 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
                                               u=_n(near["ratio"], lang),
                                               d=fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−"),
                                               D=near["diameter_modules"], D0=chosen["diameter_modules"]))
-    key = "warnings_uk" if lang == "uk" else "warnings"
-    for part in ("pair", "planetary"):
-        if part in doc:
-            out += [w["warn"] + x for x in doc[part][key]]
-    out.append(w["mark"])
+        out += [w["warn"] + x for x in t[key]]
+        parts.append(out)
+    last = parts[-1] if parts else out
+    last.append(w["mark"])
     if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
-        out.append(w["past"])
-    return [escape(x) if "_" not in x else x for x in out]
+        last.append(w["past"])
+    return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
 
 
 def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
@@ -420,12 +433,36 @@ def lambda_unit(row_h: float) -> float:
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
     tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
-    format too small flows them over further sheets of the set in reading order."""
+    format too small flows them over further sheets of the set in reading order (sheets/gearset.py),
+    the planetary pictures there grown while the set keeps its count of sheets."""
     lang = args.lang
-    region = field_of(f)
     sol = solve(g)
-    w = WORDS[lang]
     mesh, vel, plan = construct_on(sol, f, args.precision, lang)
+    drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
+    lines = [x for part in parts for x in part]
+    pages = None
+    for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
+        side, width = _column(tables, lines, k)
+        pages = zones(drawings, side, f, width)
+        if pages is not None:
+            break
+    if pages is None:                     # a set of sheets (sheets/gearset.py)
+        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
+        pages = _set(drawings, tables, parts, f, more, lang)
+        if pages is None:
+            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
+                                 g.source)
+        if vel is not None:
+            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages)
+    w = WORDS[lang]
+    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
+                   f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
+    """The sheet's drawings (the meshing, the λ diagrams, the planetary pictures), its tables and the
+    lines of its notes in their parts (``note_parts``), from the constructions."""
+    w = WORDS[lang]
     doc = gears_json(sol, mesh, vel, g.source or "")
     drawings: list[Leaf] = []
     tables: list[Leaf] = []
@@ -437,30 +474,61 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
-    lines = notes(doc, lang, mesh, vel)
-    pages = None
-    for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
-        side, width = _column(tables, lines, k)
-        pages = zones(drawings, side, f, width)
-        if pages is not None:
-            break
-    if pages is None:                     # a set of sheets (sheets/gearset.py): the tables as the other
-        from graphplan.sheets.gearset import set_pages     # sheets draw theirs unless that costs a sheet
-        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
-        tried = []
-        for k in (TABLES, 1.0):           # (the meshing with more teeth first, where that costs no sheet)
-            for m in ([more] if more is not None else []) + [None]:
-                d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
-                     for t in drawings]
-                tried.append(set_pages(d + _column(tables, lines, k)[0], f,
-                                       lambda w: Leaf("notes", record=note_block(lines, w))))
-        tried = [t for t in tried if t is not None]
-        if not tried:
-            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
-                                 g.source)
-        pages = min(tried, key=len)
-    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
-                   f"{g.title_in(lang)} — {w['subtitle']}")
+    return drawings, tables, note_parts(doc, lang, mesh, vel)
+
+
+def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str):
+    """The set's sheets: the fewest of the tables as the other sheets draw theirs or at the ruled
+    size, the meshing with ``more`` teeth or its three — the larger tables, then more teeth, where
+    that costs no sheet —, each part of the notes by its tables (the pair's, the train's). None
+    when a drawing is larger than a sheet."""
+    from graphplan.sheets.gearset import set_pages
+    names = ["notes", "train notes"] if len(parts) == 2 else (["notes"] if any(t.name == "geometry" for t in tables)
+                                                               else ["train notes"])
+    lines = dict(zip(names, parts))
+    tried = []
+    for k in (TABLES, 1.0):
+        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+        width = max([TITLE] + [t.w for t in grown])
+        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]
+        for m in ([more] if more is not None else []) + [None]:
+            d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
+                 for t in drawings]
+            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w))))
+    tried = [t for t in tried if t is not None]
+    return min(tried, key=len) if tried else None
+
+
+SET_GROW = (3.0, 2.5, 2.0, 1.8, 1.6, 1.4, 1.3, 1.2, 1.1)    # a set's planetary pictures, × (80, 60, 100) mm, tried
+
+
+def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages):
+    """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
+    ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
+    meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
+    ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
+    takes fewer sheets)."""
+    sizes = []
+    for k in SET_GROW:
+        try:
+            v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
+                                sun_segment_mm=100.0 * k)
+        except GraphplanError:
+            continue
+        p = _plan(v, lang)
+        if v.h > vel.h:
+            sizes.append((v, p))
+    lo, hi, best = 0, len(sizes) - 1, pages
+    while lo <= hi:                       # sizes largest first: the first that keeps the count
+        mid = (lo + hi) // 2
+        v, p = sizes[mid]
+        drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
+        got = _set(drawings, tables, parts, f, more, lang)
+        if got is not None and len(got) <= len(pages):
+            best, hi = got, mid - 1
+        else:
+            lo = mid + 1
+    return best
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:

@@ -1,6 +1,6 @@
 """The gear sheet's A2/A3 set (``--format A2``/``A3``): the drawings, the tables and the notes in the
-A1 sheet's reading order — the meshing, the λ diagrams, Tables 1 and 2 (the pair), the planetary
-pictures, Table 3 and the notes (the train) — cut into consecutive sheets, each composed in zones
+A1 sheet's reading order — the meshing, the λ diagrams, Tables 1 and 2 and the pair's notes, the
+planetary pictures, Table 3 and the train's notes — cut into consecutive sheets, each composed in zones
 as the A1 sheet is: its drawings on the left (or across the top), its tables and notes in a column by
 the title block (or in a row under the drawings). The fewest sheets win; every sheet holds a drawing
 or a table (never the notes alone), a table is never cut, the meshing — the main drawing — stands
@@ -17,7 +17,8 @@ from graphplan.sheets.form import BLOCK_2A_H, BLOCK_W, Form
 
 Box = tuple[float, float, float, float]
 
-ORDER = ("meshing", "sliding", "geometry", "quality", "planetary", "train", "notes")   # reading order
+ORDER = ("meshing", "sliding", "geometry", "quality", "notes", "planetary", "train", "train notes")   # reading order
+NOTES = ("notes", "train notes")      # the pair's notes, the train's
 DRAWINGS = ("meshing", "sliding", "planetary")
 
 
@@ -28,8 +29,21 @@ def later_keep(f: Form) -> Box:
 
 
 def _fits(node, w: float, h: float) -> bool:
-    nw, nh = extent(node)
+    nw, nh = _extent(node)
     return nw <= w + 1e-9 and nh <= h + 1e-9
+
+
+_SIZES: dict[int, tuple[object, tuple[float, float]]] = {}
+
+
+def _extent(node) -> tuple[float, float]:
+    """``extent`` remembered per node (a set weighs the same groupings many times)."""
+    got = _SIZES.get(id(node))
+    if got is None or got[0] is not node:
+        if len(_SIZES) > 4096:
+            _SIZES.clear()
+        got = _SIZES[id(node)] = (node, extent(node))
+    return got[1]
 
 
 def _placed(node, box: Box, top: set[str] = frozenset()) -> list[Placed]:
@@ -73,21 +87,22 @@ def page(leaves: list[Leaf], f: Form, first: bool, notes=None):
     the title block, or the drawings across the top and the tables and notes in a row under them; the
     spare room shared out (the arrangement whose least spare is largest). None when no arrangement
     fits the field (the title block kept clear of: form 1 on the first sheet, form 2a on the later
-    ones). ``notes(width)``: the notes wrapped to another width, tried where they are on the sheet.
+    ones). ``notes(name, width)``: the notes ``name`` (of ``NOTES``) wrapped to another width, tried
+    where they are on the sheet.
     Returns a function that places them (a set weighs many runs of its leaves and places one)."""
     tried = [_page(leaves, f, first)]
-    if notes is not None and any(t.name == "notes" for t in leaves):
-        tried += [_page([notes(w) if t.name == "notes" else t for t in leaves], f, first) for w in NOTE_WIDTHS]
+    if notes is not None and any(t.name in NOTES for t in leaves):
+        tried += [_page([notes(t.name, w) if t.name in NOTES else t for t in leaves], f, first) for w in NOTE_WIDTHS]
     tried = [t for t in tried if t is not None]
     return max(tried, key=lambda t: t[0])[1] if tried else None     # (placed when the set is chosen)
 
 
 def _cached(notes):
-    """``notes(width)`` remembered per width."""
+    """``notes(name, width)`` remembered per name and width."""
     if notes is None:
         return None
-    seen: dict[float, Leaf] = {}
-    return lambda w: seen[w] if w in seen else seen.setdefault(w, notes(w))
+    seen: dict[tuple[str, float], Leaf] = {}
+    return lambda n, w: seen[(n, w)] if (n, w) in seen else seen.setdefault((n, w), notes(n, w))
 
 
 def _page(leaves: list[Leaf], f: Form, first: bool):
@@ -107,13 +122,15 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
     lefts = []                          # the drawings, and the first tables under them, with the rest
     for k in range(len(side) + (1 if drawings else 0)):
         under, rest = side[:k], side[k:]
+        if k and any(t.name not in NOTES for t in rest):
+            continue                    # tables under the drawings: the notes alone by them (Table 1 first)
         for dg in _groupings(drawings) or [None]:
             for ug in _groupings(under) or [None]:
                 node = dg if ug is None else (ug if dg is None else Stack([dg, ug]))
                 lefts += [(node, c) for c in _groupings(rest) or [None]]
     for d, c in lefts:
-        dw, dh = extent(d) if d is not None else (0.0, 0.0)
-        cw, ch = extent(c) if c is not None else (0.0, 0.0)
+        dw, dh = _extent(d) if d is not None else (0.0, 0.0)
+        cw, ch = _extent(c) if c is not None else (0.0, 0.0)
         if d is None or c is None:              # one zone alone: the field over (or beside) the block
             node, (w, h) = (d, (dw, dh)) if c is None else (c, (cw, ch))
             for box in ((x0, low, x1, y1), (x0, y0, keep[0], y1)):
@@ -162,7 +179,7 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | N
         key = (i, j, i == 0)
         if key not in memo:
             run = leaves[i:j]
-            memo[key] = None if all(t.name == "notes" for t in run) else page(run, f, i == 0, notes)
+            memo[key] = None if all(t.name in NOTES for t in run) else page(run, f, i == 0, notes)
         return memo[key]
 
     for k in range(1, n + 1):                     # k sheets: the cuts between them
