@@ -296,11 +296,10 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     def size(r: Record) -> tuple[float, float]:
         b = r.bounds()
         return b[2] - b[0], b[3] - b[1]
-    mesh_w, mesh_h = size(captioned(mesh.record, "M"))
-    mesh_h += 12.0                                                 # the meshing and its caption's line
+    mesh_w, mesh_h = size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
-    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    room_h = min(region[3] - region[1] - mesh_h - 12.0 - 3 * GAP, mesh_h)
     shares = ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
               (0.5, 0.5))               # vA and the sun's segment shorter where too wide
 
