@@ -299,9 +299,10 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     mesh_w, mesh_h = size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
-    room_h = min(region[3] - region[1] - mesh_h - 12.0 - 3 * GAP, mesh_h)
-    shares = ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
-              (0.5, 0.5))               # vA and the sun's segment shorter where too wide
+    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    shares = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
+              (0.5, 0.5))               # the sun's segment (and h) longer where the row is wide, vA and it
+    #                                 shorter where too wide
 
     def drawn(k: float, va_share: float, share: float):
         try:
