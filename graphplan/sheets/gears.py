@@ -362,7 +362,10 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if mesh is not None and sol.pair:
         if beside(region, mesh):          # beside the meshing, as tall as it with its caption
             row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
-        else:                             # in the row under it, beside the planetary pictures
+        elif f.name == "A1":              # in the row under it, beside the planetary pictures: as tall
+            top = meshing_leaf(mesh, lang).bounds()   # as the row's room, within the meshing's height
+            row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+        else:                             # a set's: as tall as the planetary pictures
             row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
         mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
     return mesh, vel, plan
