@@ -6,10 +6,13 @@ the drawings in a row in reading order, the tables and the notes beside the titl
 too small carries the rest to further sheets of the set (docs/gears.md)."""
 from __future__ import annotations
 
+import math
+
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import TEETH, construct_mesh, construct_train, most_teeth, sliding_diagram
+from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, most_teeth,
+                                     sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
 from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
@@ -399,19 +402,20 @@ def set_mesh(pair, f: Form, precision: float, lang: str):
 
 
 def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
-    """The set's meshing at its scale with more teeth of each wheel (``most_teeth``), when that drawing
-    with its caption still fits the first sheet over its title block; else None."""
+    """The set's meshing at its scale with more teeth of each wheel (the most of ``MORE_TEETH`` whose
+    outer teeth stay within ``TEETH_SPAN``) whose drawing with its caption still fits the first sheet
+    over its title block; else None."""
     x0, y0, x1, y1 = field_of(f)
     room_w, room_h = x1 - x0, y1 - keep_out(f)[3]
-    n = most_teeth(pair, mesh.module_mm, room_h, room_w)
-    if n == TEETH:
-        return None
-    more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=n)
-    b = meshing_leaf(more, lang).bounds()
-    if b[2] - b[0] > room_w or b[3] - b[1] > room_h:
-        return None
-    more.lam = mesh.lam
-    return more
+    for k in MORE_TEETH:                  # (the drawing measured, not its window estimated)
+        if any((k / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in pair.pair.z):
+            continue
+        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k)
+        b = meshing_leaf(more, lang).bounds()
+        if b[2] - b[0] <= room_w and b[3] - b[1] <= room_h:
+            more.lam = mesh.lam
+            return more
+    return None
 
 
 def beside(region, mesh) -> bool:
@@ -497,7 +501,9 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
         for m in ([more] if more is not None else []) + [None]:
             d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
                  for t in drawings]
-            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w))))
+            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)),
+                                   {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables}
+                                   if k != TABLES else None))
     tried = [t for t in tried if t is not None]
     return min(tried, key=len) if tried else None
 

@@ -123,7 +123,7 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
     for k in range(len(side) + (1 if drawings else 0)):
         under, rest = side[:k], side[k:]
         if k and any(t.name not in NOTES for t in rest):
-            continue                    # tables under the drawings: the notes alone by them (Table 1 first)
+            continue                    # (Table 1 low on the left, Table 2 high on the right: out of order)
         for dg in _groupings(drawings) or [None]:
             for ug in _groupings(under) or [None]:
                 node = dg if ug is None else (ug if dg is None else Stack([dg, ug]))
@@ -166,10 +166,13 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
     return best
 
 
-def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | None:
+def set_pages(leaves: list[Leaf], f: Form, notes=None, larger: dict[str, Leaf] | None = None
+              ) -> list[list[Placed]] | None:
     """The set's sheets: ``leaves`` (in ``ORDER``) cut into consecutive runs, each composed by
     ``page``; the fewest sheets, then the first sheets the fullest (the reading order kept), no sheet
-    with the notes alone. None when one of them does not fit a whole sheet. ``notes``: as ``page``'s."""
+    with the notes alone. None when one of them does not fit a whole sheet. ``notes``: as ``page``'s.
+    ``larger``: the tables drawn larger (as the other sheets draw theirs), taken on each sheet of the
+    chosen cut that still holds them."""
     leaves = sorted(leaves, key=lambda t: ORDER.index(t.name))
     notes = _cached(notes)
     n = len(leaves)
@@ -188,7 +191,14 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None) -> list[list[Placed]] | N
             bounds = (0, *cuts, n)
             pages = [one(a, b) for a, b in zip(bounds, bounds[1:])]
             if all(p is not None for p in pages):
-                found.append(([-(b - a) for a, b in zip(bounds, bounds[1:])], pages))
+                found.append(([-(b - a) for a, b in zip(bounds, bounds[1:])], pages, bounds))
         if found:
-            return [place() for place in min(found, key=lambda t: t[0])[1]]
+            _, pages, bounds = min(found, key=lambda t: t[0])
+            out = []
+            for (a, b), place in zip(zip(bounds, bounds[1:]), pages):
+                big = None
+                if larger and any(t.name in larger for t in leaves[a:b]):
+                    big = page([larger.get(t.name, t) for t in leaves[a:b]], f, a == 0, notes)
+                out.append((big or place)())
+            return out
     return None
