@@ -455,12 +455,13 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
         more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
-        pages = _set(drawings, tables, parts, f, more, lang)
+        lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
+        pages = _set(drawings, tables, parts, f, more, lang, lam)
         if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
         if vel is not None:
-            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages)
+            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages, lam)
     w = WORDS[lang]
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
                    f"{g.title_in(lang)} — {w['subtitle']}")
@@ -484,11 +485,13 @@ def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list
     return drawings, tables, note_parts(doc, lang, mesh, vel)
 
 
-def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str):
+def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str,
+         lam: Leaf | None = None):
     """The set's sheets: the fewest of the tables as the other sheets draw theirs or at the ruled
     size, the meshing with ``more`` teeth or its three — the larger tables, then more teeth, where
-    that costs no sheet —, each part of the notes by its tables (the pair's, the train's). None
-    when a drawing is larger than a sheet."""
+    that costs no sheet —, each part of the notes by its tables (the pair's, the train's), ``lam``
+    (the λ diagrams with a longer unit) where their sheet holds it. None when a drawing is larger
+    than a sheet."""
     from graphplan.sheets.gearset import set_pages
     names = ["notes", "train notes"] if len(parts) == 2 else (["notes"] if any(t.name == "geometry" for t in tables)
                                                                else ["train notes"])
@@ -501,9 +504,10 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
         for m in ([more] if more is not None else []) + [None]:
             d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
                  for t in drawings]
-            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)),
-                                   {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables}
-                                   if k != TABLES else None))
+            larger = {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables} if k != TABLES else {}
+            if lam is not None:
+                larger["sliding"] = lam
+            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
     tried = [t for t in tried if t is not None]
     return min(tried, key=len) if tried else None
 
@@ -511,7 +515,17 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
 SET_GROW = (3.0, 2.5, 2.0, 1.8, 1.6, 1.4, 1.3, 1.2, 1.1)    # a set's planetary pictures, × (80, 60, 100) mm, tried
 
 
-def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages):
+def _set_lambda(sol, mesh, f: Form, lang: str) -> Leaf:
+    """The λ diagrams of a set with the longest unit of ``LAMBDA_UNITS`` a later sheet's field takes
+    in height (over its title block form 2a), captioned."""
+    from graphplan.sheets.gearset import later_keep
+    x0, y0, x1, y1 = field_of(f)
+    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP))
+    w = WORDS[lang]
+    return Leaf("sliding", record=captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang))))
+
+
+def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None):
     """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
     ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
     meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
@@ -532,7 +546,7 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
         mid = (lo + hi) // 2
         v, p = sizes[mid]
         drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
-        got = _set(drawings, tables, parts, f, more, lang)
+        got = _set(drawings, tables, parts, f, more, lang, lam)
         if got is not None and len(got) <= len(pages):
             best, hi = got, mid - 1
         else:

@@ -171,8 +171,8 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None, larger: dict[str, Leaf] |
     """The set's sheets: ``leaves`` (in ``ORDER``) cut into consecutive runs, each composed by
     ``page``; the fewest sheets, then the first sheets the fullest (the reading order kept), no sheet
     with the notes alone. None when one of them does not fit a whole sheet. ``notes``: as ``page``'s.
-    ``larger``: the tables drawn larger (as the other sheets draw theirs), taken on each sheet of the
-    chosen cut that still holds them."""
+    ``larger``: leaves drawn larger (the tables as the other sheets draw theirs, the λ diagrams with a
+    longer unit), taken on each sheet of the chosen cut that still holds them."""
     leaves = sorted(leaves, key=lambda t: ORDER.index(t.name))
     notes = _cached(notes)
     n = len(leaves)
@@ -197,8 +197,12 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None, larger: dict[str, Leaf] |
             out = []
             for (a, b), place in zip(zip(bounds, bounds[1:]), pages):
                 big = None
-                if larger and any(t.name in larger for t in leaves[a:b]):
-                    big = page([larger.get(t.name, t) for t in leaves[a:b]], f, a == 0, notes)
+                run = leaves[a:b]
+                names = [t.name for t in run if larger and t.name in larger]
+                # all larger, else the tables larger, else the drawings: the first this sheet holds
+                for some in (names, [n for n in names if n not in DRAWINGS], [n for n in names if n in DRAWINGS]):
+                    if some and big is None:
+                        big = page([larger[t.name] if t.name in some else t for t in run], f, a == 0, notes)
                 out.append((big or place)())
             return out
     return None
