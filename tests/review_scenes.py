@@ -638,3 +638,81 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# The third review's gear scene (z 12/31 with "auto" shifts, a type-A train for u = 7.3), and two gear
+# scenes of the gear-set round (issue 32): 17/40 with "auto" shifts and a type-B train for u = 9
+# (rpm given), 10/25 shifted against undercut (x1 = 0.45 > (17 − 10)/17) with a type-A train of
+# four planets, in English.
+GEARS12 = '''title = "Зубчаста передача і планетарний редуктор"
+title_en = "A gear pair and a planetary reducer"
+designation = "ТММ.КП.10.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP"
+
+[gears]
+z = [12, 31]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 7.3
+planets = 3
+module = 0.003
+omega = 100.0
+'''
+
+
+GEARS_17_40 = '''title = "Зубчаста передача 17/40 і дворядний планетарний редуктор"
+title_en = "A gear pair 17/40 and a two-row planetary reducer"
+designation = "ТММ.КП.21.000"
+
+[sheet]
+student = "Студент"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[gears]
+z = [17, 40]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 9.0
+planets = 3
+module = 0.0025
+rpm = 1450
+'''
+
+
+GEARS_10_25 = '''title = "Зубчаста передача 10/25 з корекцією і планетарний редуктор"
+title_en = "A shifted gear pair 10/25 and a planetary reducer"
+designation = "TMM.CP.22.000"
+lang = "en"
+
+[sheet]
+student = "Student"
+teacher = "Teacher"
+group = "MB-42"
+organisation = "NULES of Ukraine"
+
+[gears]
+z = [10, 25]
+module = 0.003
+shifts = [0.45, 0.2]
+
+[planetary]
+type = "A"
+ratio = 5.5
+planets = 4
+module = 0.002
+omega = 120.0
+'''

@@ -509,16 +509,22 @@ def test_the_planetary_scheme_draws_each_wheel_as_gost_2770_does():
                 assert x0 < line[0].points[0][0] < x1                                # square across the line
 
 
-def test_the_a1_sheet_grows_the_planetary_pictures_to_their_zone():
+def test_the_a1_sheet_grows_the_planetary_pictures_to_their_zone_within_the_meshing():
+    """The planetary pictures grow from the ring of 110 mm toward their row (h at least 40 mm) but stay
+    within the meshing's size, neither wider nor taller: the meshing is the sheet's main drawing."""
     import re
     from graphplan.graphic.gears import construct_train
     from graphplan.model.gears import load
     from test_sheet_content import texts
     tr = solve(load(GEARS)).train
     small = construct_train(tr, 0.5, ring_mm=110.0)                  # the size before growing
-    cap = next(t for t in texts(gear_sheet("gears", "en")) if "μ_v = " in t)
+    sheet = gear_sheet("gears", "en")
+    cap = next(t for t in texts(sheet) if "μ_v = " in t)
     mu_l, h = re.search(r"μ_l = ([0-9.]+) m/mm", cap).group(1), re.search(r"h = ([0-9.]+) mm", cap).group(1)
-    assert float(mu_l) < small.mu_l and float(h) >= 40.0
+    assert float(mu_l) <= small.mu_l and float(h) >= 40.0
+    ext = {p.name: p.record.bounds() for p in sheet.placed}
+    m, p = ext["meshing"], ext["planetary"]
+    assert p[2] - p[0] <= m[2] - m[0] and p[3] - p[1] <= m[3] - m[1]
 
 
 # -- outputs ------------------------------------------------------------------------------------------

@@ -45,6 +45,9 @@ LEADER = 7.0                   # mm: a letter farther than this from its point g
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
 LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
 LAMBDA_CLIP = 3.0              # |λ| drawn up to 3 (±∞ at N1, N2)
+TEETH = 3                      # teeth drawn of each wheel (the one in mesh at P in the middle) …
+MORE_TEETH = (7, 5)            # … or more where the meshing's zone holds them (a sheet's main drawing)
+TEETH_SPAN = math.radians(85.0)   # the outer teeth's circles reach at most this far from the centre line
 
 
 def _f(z: complex) -> tuple[float, float]:
@@ -183,7 +186,7 @@ class Mesh:
     warnings: list[tuple[str, str]] = field(default_factory=list)
 
 
-def _extent(sol: PairSolution, md: float) -> tuple[float, float, float]:
+def _extent(sol: PairSolution, md: float, teeth: int = TEETH) -> tuple[float, float, float]:
     """The meshing's window about P at the module ``md`` mm (width, height, mm) and the centre
     distance drawn, mm: the circles' arcs over the three teeth and the line of action, N1 and N2,
     the λ diagram's length N1N2 below it (about)."""
@@ -192,11 +195,11 @@ def _extent(sol: PairSolution, md: float) -> tuple[float, float, float]:
     tau = [2 * math.pi / z for z in sol.pair.z]
     rb, ra, rf = [v * k for v in sol.rb], [v * k for v in sol.ra], [v * k for v in sol.rf]
     n_x = [rb[0] * math.sin(aw_), rb[1] * math.sin(aw_)]
-    half_w = max(n_x[0], n_x[1], 1.7 * tau[0] * ra[0], 1.7 * tau[1] * ra[1]) + 12.0
+    half_w = _half_width(n_x, tau, ra, teeth)
     low, high = [], []
     for j, rads in ((0, (rf[0], ra[0])), (1, (rf[1], ra[1]))):
         for rad in rads:
-            span = _span(rad, half_w, tau[j], aw_)
+            span = _span(rad, half_w, tau[j], aw_, teeth)
             (low if j == 0 else high).append(rad * math.cos(span) if j == 0 else D - rad * math.cos(span))
     y_lo = min(low + [rb[0] * math.cos(aw_)]) - 8.0
     y_hi = max(high + [D - rb[1] * math.cos(aw_)]) + 8.0
@@ -204,11 +207,32 @@ def _extent(sol: PairSolution, md: float) -> tuple[float, float, float]:
     return max(2 * half_w + 50.0, g + 30.0), y_hi - y_lo, D       # the letters r_a1 … right, a_w left
 
 
-def broken(sol: PairSolution, md: float) -> bool:
+def _half_width(n_x, tau, ra, teeth: int) -> float:
+    """Half the window's width about P, mm: N1, N2 and the teeth (``teeth`` of each wheel) with 12 mm."""
+    k = teeth / 2 + 0.2
+    return max(n_x[0], n_x[1], k * tau[0] * ra[0], k * tau[1] * ra[1]) + 12.0
+
+
+def most_teeth(sol: PairSolution, md: float, height_mm: float, width_mm: float) -> int:
+    """How many teeth of each wheel the meshing drawn with the module ``md`` mm shows in the zone
+    ``width_mm`` × ``height_mm``: the most of ``MORE_TEETH`` whose window (the centres shown or the
+    centre line broken, as ``mesh_scale`` counts it) fits and whose outer teeth stay within
+    ``TEETH_SPAN`` of the centre line on both wheels, else ``TEETH``."""
+    for n in MORE_TEETH:
+        if any((n / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in sol.pair.z):
+            continue
+        w, h, D = _extent(sol, md, n)
+        tall = h + 12.0 if broken(sol, md, n) else max(h, D + 30.0)
+        if tall + 20.0 <= height_mm and w <= width_mm:
+            return n
+    return TEETH
+
+
+def broken(sol: PairSolution, md: float, teeth: int = TEETH) -> bool:
     """Whether the centres are left off the drawing (the centre line broken, aw dimensioned, as the
     textbook draws wheels whose centres lie far from the teeth): when drawing them would make the
     meshing more than 1.4 times as tall as its window about P."""
-    w, h, D = _extent(sol, md)
+    w, h, D = _extent(sol, md, teeth)
     return D + 30.0 > 1.4 * h
 
 
@@ -278,10 +302,10 @@ def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: floa
     return left + tip + mirror
 
 
-def _span(rad: float, half_w: float, tau: float, aw_: float) -> float:
-    """Half the angle of a circle's arc drawn over the window: to the window's side, at most 1.8 pitch
-    angles (or αw + 10°), rad."""
-    return min(math.asin(min(1.0, half_w / rad)), max(1.8 * tau, aw_ + math.radians(10.0)))
+def _span(rad: float, half_w: float, tau: float, aw_: float, teeth: int = TEETH) -> float:
+    """Half the angle of a circle's arc drawn over the window: to the window's side, at most
+    teeth/2 + 0.3 pitch angles (1.8 for three teeth; or αw + 10°), rad."""
+    return min(math.asin(min(1.0, half_w / rad)), max((teeth / 2 + 0.3) * tau, aw_ + math.radians(10.0)))
 
 
 def _wrap(a: float) -> float:
@@ -290,9 +314,10 @@ def _wrap(a: float) -> float:
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                    height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0,
-                   line_mm: float | None = None) -> Mesh:
+                   line_mm: float | None = None, teeth: int = TEETH) -> Mesh:
     """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
-    drawn ``module_mm`` long (default: ``mesh_scale``)."""
+    drawn ``module_mm`` long (default: ``mesh_scale``), ``teeth`` teeth of each wheel (odd: the
+    middle one of wheel 1 in mesh at P)."""
     pair = sol.pair
     z1, z2 = pair.z
     md = module_mm or mesh_scale(sol, height_mm, width_mm, line_mm)
@@ -319,19 +344,19 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     rec = Record("meshing")
     # the five circles of each wheel, as arcs over the window of the teeth and the line of action
     tau = (2 * math.pi / z1, 2 * math.pi / z2)
-    half_w = max(abs(N1.real), abs(N2.real), 1.7 * tau[0] * d["ra1"], 1.7 * tau[1] * d["ra2"]) + 12.0
+    half_w = _half_width((abs(N1.real), abs(N2.real)), tau, (d["ra1"], d["ra2"]), teeth)
     circles = {1: [("rf", d["rf1"]), ("rb", R1), ("r", d["r1"]), ("rw", read["rw1"]), ("ra", d["ra1"])],
                2: [("rf", d["rf2"]), ("rb", R2), ("r", d["r2"]), ("rw", read["rw2"]), ("ra", d["ra2"])]}
     for k, centre, up in ((1, O1, 1.0), (2, O2, -1.0)):
         for name, rad in circles[k]:
-            span = math.degrees(_span(rad, half_w, tau[k - 1], aw_))
+            span = math.degrees(_span(rad, half_w, tau[k - 1], aw_, teeth))
             mid = 90.0 if up > 0 else 270.0
             role = "axis" if name == "r" else "construction"      # the pitch circle dash-dot (GOST 2.402)
             rec.arc(_f(centre), rad, mid - span, mid + span, role=role, layer=LAYER, step=f"circle {name}{k}")
-    cut = broken(sol, md)
+    cut = broken(sol, md, teeth)
     if cut:          # the centres off the drawing: the centre line broken above and below the window
-        wlo = min(N1.imag, min(rad * math.cos(_span(rad, half_w, tau[0], aw_)) for _, rad in circles[1])) - 8.0
-        whi = max(N2.imag, max(D - rad * math.cos(_span(rad, half_w, tau[1], aw_)) for _, rad in circles[2])) + 8.0
+        wlo = min(N1.imag, min(rad * math.cos(_span(rad, half_w, tau[0], aw_, teeth)) for _, rad in circles[1])) - 8.0
+        whi = max(N2.imag, max(D - rad * math.cos(_span(rad, half_w, tau[1], aw_, teeth)) for _, rad in circles[2])) + 8.0
         for y0, y1 in ((wlo - 6.0, wlo), (whi, whi + 6.0)):
             rec.segment((0.0, y0), (0.0, y1), role="axis", layer=LAYER, step="O1O2")
         rec.segment((0.0, wlo), (0.0, whi), role="axis", layer=LAYER, step="O1O2")
@@ -395,7 +420,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         sa_read.append(measure(2 * ra * math.sin(ha_) if ha_ > 0 else 0.0, precision))
         one = _tooth(R, theta_s, rf, ra, axis, md)
         outline: list[complex] = []
-        for j in (1, 0, -1):                          # counter-clockwise to clockwise, as each tooth runs
+        for j in range(teeth // 2, -(teeth // 2) - 1, -1):   # counter-clockwise to clockwise, as each tooth runs
             rot = cmath.exp(1j * j * tau[k - 1])
             pts = [q * rot for q in one]
             if outline:                              # the root circle between the teeth
@@ -444,7 +469,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
-            ang = _span(rad, half_w, tau[k - 1], aw_)
+            ang = _span(rad, half_w, tau[k - 1], aw_, teeth)
             end = centre + rad * cmath.exp(1j * ((math.pi / 2 - ang) if k == 1 else (-math.pi / 2 + ang)))
             sub = {"rf": "f", "rb": "b", "r": "", "rw": "w", "ra": "a"}[name]
             pl.label(end, f"r_{sub}{k}" if sub else f"r_{k}", size=2.5, toward=1 + 0j,

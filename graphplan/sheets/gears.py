@@ -6,10 +6,13 @@ the drawings in a row in reading order, the tables and the notes beside the titl
 too small carries the rest to further sheets of the set (docs/gears.md)."""
 from __future__ import annotations
 
-from graphplan.drawing.layout import GAP, Leaf, Placed, centred, flow
+import math
+
+from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import construct_mesh, construct_train, sliding_diagram
+from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, most_teeth,
+                                     sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
 from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
@@ -198,8 +201,19 @@ def train_table(doc: dict, lang: str) -> Record:
 
 
 def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
+    """The sheet's notes: the pair's, then the train's (``note_parts``)."""
+    return [x for part in note_parts(doc, lang, mesh, vel) for x in part]
+
+
+def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
+    """The notes in two parts — the pair's (the shifts' rule, the scale, the readings' decimals, the
+    bound of εα, its warnings) and the train's (the scales, the bound of u1H, the synthesis, its
+    warnings) —, the legends of the tables' marks closing the last; a part a scene lacks is left out.
+    A set puts each part by its tables (sheets/gearset.py)."""
     w = WORDS[lang]
-    out = []
+    key = "warnings_uk" if lang == "uk" else "warnings"
+    parts = []
+    out: list[str] = []
     if "pair" in doc:
         p = doc["pair"]
         if p["shifts"] == "auto":
@@ -216,6 +230,9 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
+        out += [w["warn"] + x for x in p[key]]
+        parts.append(out)
+        out = []
     if "planetary" in doc:
         t = doc["planetary"]
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
@@ -230,14 +247,13 @@ def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
                                               u=_n(near["ratio"], lang),
                                               d=fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−"),
                                               D=near["diameter_modules"], D0=chosen["diameter_modules"]))
-    key = "warnings_uk" if lang == "uk" else "warnings"
-    for part in ("pair", "planetary"):
-        if part in doc:
-            out += [w["warn"] + x for x in doc[part][key]]
-    out.append(w["mark"])
+        out += [w["warn"] + x for x in t[key]]
+        parts.append(out)
+    last = parts[-1] if parts else out
+    last.append(w["mark"])
     if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
-        out.append(w["past"])
-    return [escape(x) if "_" not in x else x for x in out]
+        last.append(w["past"])
+    return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
 
 
 def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
@@ -269,38 +285,53 @@ def _plan(vel, lang: str) -> Record:
         l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
 
 
-GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.4, 1.2, 1.1)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
+GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
 # (the ring's radius, vA, the sun's segment)
 H_MIN = 40.0             # mm: the pole distance of a grown plan of angular velocities at least this
 
 
 def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
-    λ diagrams, the meshing's height and the tables' column off the field): the ring's radius, vA and
-    the sun's segment grown together, μl and μv the round values of the series, the first (largest)
-    that fits; the pictures as they were when none larger fits."""
+    λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
+    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: the ring's
+    radius, vA and the sun's segment grown together, μl and μv the round values of the series, the
+    first (largest) that fits; the pictures as they were when none fits."""
     def size(r: Record) -> tuple[float, float]:
         b = r.bounds()
         return b[2] - b[0], b[3] - b[1]
-    mesh_h = size(captioned(mesh.record, "M"))[1] + 12.0          # the meshing and its caption's line
+    mesh_w, mesh_h = size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
-    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
-    room_h = region[3] - region[1] - mesh_h - 3 * GAP
-    w0, h0 = size(plan)
-    for k in GROW:
-        for va_share, share in ((1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
-                                (0.5, 0.6), (0.5, 0.5)):    # vA and the sun's segment shorter where too wide
-            try:
-                v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
-                                    sun_segment_mm=100.0 * k * share)
-            except GraphplanError:
-                break
-            p = _plan(v, lang)
-            w_, h_ = size(p)
-            if h_ > room_h:
-                break
-            if w_ <= room_w and v.h >= min(H_MIN, vel.h):
-                return (v, p) if h_ > h0 else (vel, plan)
+    room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
+    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    shares = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
+              (0.5, 0.5))               # the sun's segment (and h) longer where the row is wide, vA and it
+    #                                 shorter where too wide
+
+    def drawn(k: float, va_share: float, share: float):
+        try:
+            v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
+                                sun_segment_mm=100.0 * k * share)
+        except GraphplanError:
+            return None
+        p = _plan(v, lang)
+        w_, h_ = size(p)
+        return (v, p) if h_ <= room_h and w_ <= room_w and v.h >= min(H_MIN, vel.h) else None
+
+    # the largest size whose narrowest variant fits (halving the list of sizes: the pictures grow
+    # with k), then at that size the widest variant that fits
+    lo, hi, got = 0, len(GROW) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        if drawn(GROW[mid], *shares[-1]) is not None:
+            got, hi = mid, mid - 1
+        else:
+            lo = mid + 1
+    if got is None:
+        return vel, plan
+    for va_share, share in shares:
+        found = drawn(GROW[got], va_share, share)
+        if found is not None:
+            return found
     return vel, plan
 
 
@@ -322,18 +353,69 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         zone_w = region[2] - region[0] - side_w - GAP
         zone_h = region[3] - region[1] - max(SLIDING_H, plan_h) - GAP
         line = zone_w - (plan_w + GAP if plan else 0.0) - 30.0
-        if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing gets a sheet of its own
-            zone_w, zone_h, line = region[2] - region[0] - 10.0, region[3] - region[1] - 40.0, None
-        mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
-    if vel is not None and mesh is not None:
+        if zone_w < 150.0 or zone_h < 150.0 or line < 100.0:   # a small format: the meshing heads a set
+            mesh = set_mesh(sol.pair, f, precision, lang)
+        else:
+            mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
+            teeth = most_teeth(sol.pair, mesh.module_mm, zone_h, zone_w)     # more teeth where the zone holds them
+            if teeth != TEETH:
+                mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
+    if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
         if beside(region, mesh):          # beside the meshing, as tall as it with its caption
             row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
-        else:                             # in the row under it, beside the planetary pictures
+        elif f.name == "A1":              # in the row under it, beside the planetary pictures: as tall
+            top = meshing_leaf(mesh, lang).bounds()   # as the row's room, within the meshing's height
+            row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+        else:                             # a set's: as tall as the planetary pictures
             row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
         mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
     return mesh, vel, plan
+
+
+def meshing_leaf(mesh, lang: str) -> Record:
+    """The meshing with its caption: the name, the scale and μl."""
+    return captioned(mesh.record, WORDS[lang]["meshing"].format(mu=_n(mesh.mu_l, lang),
+                                                               scale=drawing_scale(mesh.mu_l, lang)))
+
+
+def set_mesh(pair, f: Form, precision: float, lang: str):
+    """The meshing at the head of an A2/A3 set: the largest GOST 2.302 scale whose whole depth 2.25m
+    is 40–60 mm and whose drawing, caption included, fits the first sheet over its title block (or
+    beside it); when none in that band does, the fitting one whose depth comes nearest the band (as
+    ``mesh_scale`` takes it); the drawings built and measured, not estimated (``mesh_scale``'s window
+    is a few mm wider than the drawing)."""
+    from graphplan.graphic.gears import DEPTH_MM, ENLARGE, REDUCE
+    x0, y0, x1, y1 = field_of(f)
+    keep = keep_out(f)
+    m = pair.pair.module * 1000.0
+    series = sorted(ENLARGE + REDUCE, reverse=True)
+    far = lambda k: max(DEPTH_MM[0] / (2.25 * m * k), 2.25 * m * k / DEPTH_MM[1])     # noqa: E731
+    for k in sorted(series, key=lambda k: (round(far(k), 9) if far(k) > 1.0 else 0.0, -k)):
+        mesh = construct_mesh(pair, precision, lang, module_mm=m * k)
+        b = meshing_leaf(mesh, lang).bounds()
+        w, h = b[2] - b[0], b[3] - b[1]
+        if (w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0):
+            return mesh
+    return construct_mesh(pair, precision, lang, module_mm=m * series[-1])
+
+
+def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
+    """The set's meshing at its scale with more teeth of each wheel (the most of ``MORE_TEETH`` whose
+    outer teeth stay within ``TEETH_SPAN``) whose drawing with its caption still fits the first sheet
+    over its title block; else None."""
+    x0, y0, x1, y1 = field_of(f)
+    room_w, room_h = x1 - x0, y1 - keep_out(f)[3]
+    for k in MORE_TEETH:                  # (the drawing measured, not its window estimated)
+        if any((k / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in pair.pair.z):
+            continue
+        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k)
+        b = meshing_leaf(more, lang).bounds()
+        if b[2] - b[0] <= room_w and b[3] - b[1] <= room_h:
+            more.lam = mesh.lam
+            return more
+    return None
 
 
 def beside(region, mesh) -> bool:
@@ -358,40 +440,118 @@ def lambda_unit(row_h: float) -> float:
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
     tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
-    format too small flows them over further sheets of the set in reading order."""
+    format too small flows them over further sheets of the set in reading order (sheets/gearset.py),
+    the planetary pictures there grown while the set keeps its count of sheets."""
     lang = args.lang
-    region = field_of(f)
     sol = solve(g)
-    w = WORDS[lang]
     mesh, vel, plan = construct_on(sol, f, args.precision, lang)
-    doc = gears_json(sol, mesh, vel, g.source or "")
-    drawings: list[Leaf] = []
-    tables: list[Leaf] = []
-    if mesh is not None:
-        drawings.append(Leaf("meshing", record=captioned(mesh.record, w["meshing"].format(
-            mu=_n(mesh.mu_l, lang), scale=drawing_scale(mesh.mu_l, lang)))))
-        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
-            mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
-        tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
-    if plan is not None:
-        drawings.append(Leaf("planetary", record=plan))
-        tables.append(Leaf("train", record=train_table(doc, lang)))
-    lines = notes(doc, lang, mesh, vel)
+    drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
+    lines = [x for part in parts for x in part]
     pages = None
     for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
         side, width = _column(tables, lines, k)
         pages = zones(drawings, side, f, width)
         if pages is not None:
             break
-    if pages is None:                     # a set of sheets (the tables at the ruled size, as they were)
-        laid = flow(_rows(drawings, side, region), region, keep_out(f))
-        if laid is None:
+    if pages is None:                     # a set of sheets (sheets/gearset.py)
+        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
+        lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
+        pages = _set(drawings, tables, parts, f, more, lang, lam)
+        if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
-        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
-                 for page in laid]
+        if vel is not None:
+            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages, lam)
+    w = WORDS[lang]
     return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
                    f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
+    """The sheet's drawings (the meshing, the λ diagrams, the planetary pictures), its tables and the
+    lines of its notes in their parts (``note_parts``), from the constructions."""
+    w = WORDS[lang]
+    doc = gears_json(sol, mesh, vel, g.source or "")
+    drawings: list[Leaf] = []
+    tables: list[Leaf] = []
+    if mesh is not None:
+        drawings.append(Leaf("meshing", record=meshing_leaf(mesh, lang)))
+        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
+            mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
+        tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
+    if plan is not None:
+        drawings.append(Leaf("planetary", record=plan))
+        tables.append(Leaf("train", record=train_table(doc, lang)))
+    return drawings, tables, note_parts(doc, lang, mesh, vel)
+
+
+def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str,
+         lam: Leaf | None = None):
+    """The set's sheets: the fewest of the tables as the other sheets draw theirs or at the ruled
+    size, the meshing with ``more`` teeth or its three — the larger tables, then more teeth, where
+    that costs no sheet —, each part of the notes by its tables (the pair's, the train's), ``lam``
+    (the λ diagrams with a longer unit) where their sheet holds it. None when a drawing is larger
+    than a sheet."""
+    from graphplan.sheets.gearset import set_pages
+    names = ["notes", "train notes"] if len(parts) == 2 else (["notes"] if any(t.name == "geometry" for t in tables)
+                                                               else ["train notes"])
+    lines = dict(zip(names, parts))
+    tried = []
+    for k in (TABLES, 1.0):
+        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+        width = max([TITLE] + [t.w for t in grown])
+        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]
+        for m in ([more] if more is not None else []) + [None]:
+            d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
+                 for t in drawings]
+            larger = {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables} if k != TABLES else {}
+            if lam is not None:
+                larger["sliding"] = lam
+            tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
+    tried = [t for t in tried if t is not None]
+    return min(tried, key=len) if tried else None
+
+
+SET_GROW = (3.0, 2.5, 2.0, 1.8, 1.6, 1.4, 1.3, 1.2, 1.1)    # a set's planetary pictures, × (80, 60, 100) mm, tried
+
+
+def _set_lambda(sol, mesh, f: Form, lang: str) -> Leaf:
+    """The λ diagrams of a set with the longest unit of ``LAMBDA_UNITS`` a later sheet's field takes
+    in height (over its title block form 2a), captioned."""
+    from graphplan.sheets.gearset import later_keep
+    x0, y0, x1, y1 = field_of(f)
+    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP))
+    w = WORDS[lang]
+    return Leaf("sliding", record=captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang))))
+
+
+def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None):
+    """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
+    ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
+    meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
+    ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
+    takes fewer sheets)."""
+    sizes = []
+    for k in SET_GROW:
+        try:
+            v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
+                                sun_segment_mm=100.0 * k)
+        except GraphplanError:
+            continue
+        p = _plan(v, lang)
+        if v.h > vel.h:
+            sizes.append((v, p))
+    lo, hi, best = 0, len(sizes) - 1, pages
+    while lo <= hi:                       # sizes largest first: the first that keeps the count
+        mid = (lo + hi) // 2
+        v, p = sizes[mid]
+        drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
+        got = _set(drawings, tables, parts, f, more, lang, lam)
+        if got is not None and len(got) <= len(pages):
+            best, hi = got, mid - 1
+        else:
+            lo = mid + 1
+    return best
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
@@ -463,9 +623,3 @@ def top_left_of(rec: Record, box) -> Record:
     """The record with its top-left corner at the box's."""
     b = rec.bounds()
     return rec.moved(box[0] - b[0], box[3] - b[3])
-
-
-def _rows(drawings: list[Leaf], side: list[Leaf], region):
-    """Reading order for a set of smaller sheets: the meshing, the λ diagrams, the planetary pictures
-    (side by side while they fit across), then the tables and the notes."""
-    return [drawings, side]

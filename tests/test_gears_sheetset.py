@@ -1,0 +1,114 @@
+"""The gear sheet as a teacher signs it (issue 32): on A1 the meshing is the main drawing — its box the
+largest, the planetary pictures neither wider nor taller —; an A2/A3 set is a proper set: the meshing
+first, at the largest GOST 2.302 scale in the 40–60 mm band that fits the first sheet (checked by
+drawing the next larger one here), every sheet holding a drawing or a table (never the notes alone),
+each table whole on one sheet and the tables in order, the sheets numbered 1…N of N, the later ones
+under form 2a. Scenes: the examples, the second and third reviews' and two of this round's (17/40
+"auto" with a type-B train, 10/25 shifted against undercut with a type-A train of four planets)."""
+from __future__ import annotations
+
+import functools
+import tomllib
+
+import pytest
+
+import review_scenes
+from conftest import ROOT
+
+SCENES = {"gears": None, "gears_b": None, "review2": review_scenes.GEARS_REVIEW, "review3": review_scenes.GEARS12,
+          "z17_40": review_scenes.GEARS_17_40, "z10_25": review_scenes.GEARS_10_25}
+DRAWINGS = ("meshing", "sliding", "planetary")
+TABLES = ("geometry", "quality", "train")             # Tables 1, 2, 3
+
+
+def scene(name: str):
+    from graphplan.model.gears import build, load
+    text = SCENES[name]
+    if text is None:
+        return load(ROOT / "examples" / f"{name}.toml")
+    return build(tomllib.loads(text), f"<{name}>")
+
+
+@functools.lru_cache(maxsize=None)
+def sheet(name: str, fmt: str):
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    g = scene(name)
+    return BUILDERS["gears"](g, form(fmt), SheetOptions(lang=dict(g.meta).get("lang", "uk"), sheet="gears"))
+
+
+def size(b) -> tuple[float, float]:
+    return b[2] - b[0], b[3] - b[1]
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_the_meshing_is_the_largest_drawing_of_the_a1_sheet(name):
+    s = sheet(name, "A1")
+    boxes = {p.name: p.record.bounds() for p in s.placed if p.name in DRAWINGS}
+    area = {n: size(b)[0] * size(b)[1] for n, b in boxes.items()}
+    assert max(area, key=area.get) == "meshing", area
+    (mw, mh), (pw, ph) = size(boxes["meshing"]), size(boxes["planetary"])
+    assert pw <= mw + 1e-6 and ph <= mh + 1e-6, (boxes["meshing"], boxes["planetary"])
+    # the title block's scale is the meshing's
+    k = 1e-3 / next(p for p in s.placed if p.name == "meshing").record.scales["mu_l"]
+    assert s.fields["scale"] in (f"{k:g}:1".replace(".", ","), f"{k:g}:1", f"1:{1 / k:g}".replace(".", ","))
+
+
+SETS = [("gears", "A3"), ("z17_40", "A3"), ("review2", "A3"), ("gears_b", "A2")]
+
+
+@pytest.mark.parametrize("name, fmt", SETS)
+def test_a_set_holds_a_drawing_or_a_table_on_every_sheet_the_tables_whole_and_in_order(name, fmt):
+    from graphplan.sheets.compose import defects, field_of
+    s = sheet(name, fmt)
+    pages = s.pages
+    assert len(pages) > 1 and defects(s) == []
+    where: dict[str, list[int]] = {}
+    for n, page in enumerate(pages, 1):
+        names = [p.name for p in page.placed]
+        assert any(x in DRAWINGS or x in TABLES for x in names), (n, names)       # never the notes alone
+        for x in names:
+            where.setdefault(x, []).append(n)
+        x0, y0, x1, y1 = field_of(page.form)
+        for p in page.placed:                                                   # whole, inside the field
+            b = p.record.bounds()
+            assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6, p.name
+        assert page.fields["sheet"] == str(n) and page.fields["sheets"] == str(len(pages))
+    assert all(len(v) == 1 for v in where.values()), where                      # each block once
+    assert [where[t][0] for t in TABLES] == sorted(where[t][0] for t in TABLES)  # Tables 1, 2, 3 in order
+    assert where["meshing"] == [1]
+    first = {p.name: size(p.record.bounds()) for p in pages[0].placed if p.name in DRAWINGS}
+    area = {n: w * h for n, (w, h) in first.items()}
+    assert max(area, key=area.get) == "meshing"
+
+
+@pytest.mark.parametrize("name, fmt", SETS)
+def test_a_set_carries_form_1_then_form_2a(name, fmt):
+    from graphplan.sheets.form import BLOCK_2A_H, BLOCK_H
+    for n, page in enumerate(sheet(name, fmt).pages, 1):
+        block = [q for q in page.record.items if q.step == "title block"]
+        ys = [y for q in block for _, y in q.points] if block else []
+        tall = max(ys) - min(ys)
+        assert abs(tall - (BLOCK_H if n == 1 else BLOCK_2A_H)) < 1.0, (n, tall)
+
+
+@pytest.mark.parametrize("name, fmt", SETS[:3])
+def test_the_set_draws_the_meshing_at_the_largest_band_scale_that_fits_its_first_sheet(name, fmt):
+    """The next larger GOST 2.302 scale whose whole depth 2.25m stays at most 60 mm, drawn here with its
+    caption, does not fit the first sheet's field over the title block nor beside it."""
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.gears import ENLARGE, REDUCE, construct_mesh
+    from graphplan.sheets.compose import field_of, keep_out
+    from graphplan.sheets.gears import meshing_leaf
+    s = sheet(name, fmt)
+    mesh = next(p for p in s.pages[0].placed if p.name == "meshing").record
+    k = 1e-3 / mesh.scales["mu_l"]
+    pair = solve(scene(name)).pair
+    m = pair.pair.module * 1000.0
+    x0, y0, x1, y1 = field_of(s.form)
+    keep = keep_out(s.form)
+    lang = s.lang
+    for g in sorted(v for v in ENLARGE + REDUCE if v > k + 1e-9 and 2.25 * m * v <= 60.0):
+        w, h = size(meshing_leaf(construct_mesh(pair, 0.5, lang, module_mm=m * g), lang).bounds())
+        assert not ((w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0)), g
