@@ -48,8 +48,9 @@ def _pct(v, lang: str) -> str:
 
 
 def positions_table(doc: dict, lang: str) -> Record:
-    """Per division: φ, s and ds/dφ exact and graphical with δ, ϑ exact and measured, R exact and
-    measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
+    """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
+    graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
+    exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
     unit of its scale μ_{dψ/dφ} in (°/рад)/мм)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
@@ -58,22 +59,27 @@ def positions_table(doc: dict, lang: str) -> Record:
     per = unit + "/" + ("рад" if lang == "uk" else "rad")     # the analogue: per radian of the cam's turn
     gr = "гр." if lang == "uk" else "gr."
     q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
-    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"{q['s']} {gr}", f"δ_{q['s']}, %", f"{q['v']}, {per}",
-            f"{q['v']} {gr}", "δ, %",
-            "ϑ, °", f"ϑ {gr}", "R, " + ("мм" if lang == "uk" else "mm"), f"R {gr}"]
+    mm = "мм" if lang == "uk" else "mm"
+    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{q['s']}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
+            f"{q['v']}, {per}", f"y_{q['v']}, {mm}", f"{q['v']} {gr}", "δ, %",
+            "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
+    precision = doc.get("precision_mm", 0.5)
     for j, p in enumerate(doc["positions"]):
         e, g, err = p["exact"], p["graphical"], p["error_pct"]
         def v(x, d=4):
             return num(x, lang, d).replace("-", "−")
-        rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), v(g["s" + key] * k),
-                     _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
-                     v(g["ds_dphi" + key] * k), _pct(err["ds_dphi"], lang),
+
+        def read(mm_):             # the ruler's reading: the drawn ordinate's mm to its 0.5 mm (or finer)
+            return fixed(mm_, lang, 1 if precision >= 0.1 or precision == 0 else 2).replace("-", "−")
+        rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), read(g["s_mm"]),
+                     v(g["s" + key] * k, 3), _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
+                     read(g["ds_dphi_mm"]), v(g["ds_dphi" + key] * k, 3), _pct(err["ds_dphi"], lang),
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
-    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 22.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
+    widths = [8.0, 13.0, 17.0, 13.0, 15.0, 14.0, 22.0, 13.0, 17.0, 14.0, 13.0, 13.0, 16.0, 15.0]
     return table(rows, widths, row_h=6.0, size=2.5, title=WORDS[lang]["table"])
 
 
@@ -125,7 +131,20 @@ def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
     dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
     out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
     out.scales.update(phase.scales)
+    out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
     return out
+
+
+def hole(dia: Leaf, box: Box) -> Box | None:
+    """The room under the phase diagram beside the ds/dφ and d²s/dφ² diagrams (review 4, item 19:
+    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf is centred in ``box``:
+    from the diagrams' right edge to the box's, from the box's foot to a GAP under the phase diagram."""
+    at = getattr(dia.record, "hole", None)
+    if at is None:
+        return None
+    x0, y0, x1, y1 = dia.record.bounds()
+    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2
+    return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
 def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False
@@ -176,7 +195,25 @@ def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[li
     tb = (xr, low, xr + tab.w, low + tab.h)
     if tb[3] + GAP + prof.h > ry1 + 1e-9 or ry1 - left_floor < dia.h - 1e-9:
         return None
+    under = _notes_under(dia, prof, tab, notes_at, (rx0, floor, xl, ry1), (xr, keep[3], rx1, ry1))
+    if under is not None:
+        return under
     return [[(dia, (rx0, left_floor, xl, ry1)), (prof, (xr, tb[3] + GAP, rx1, ry1)), (tab, tb), (nl, nb)]]
+
+
+def _notes_under(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, left: Box, right: Box):
+    """The notes in the room under the phase diagram (hole) when they fit it, Table 1 then by the
+    title block under the profile in the right column: the notes read under the phase diagram they
+    follow, and neither the middle nor the right column keeps a blank as large as the notes."""
+    room = hole(dia, left) if left[3] - left[1] >= dia.h - 1e-9 else None
+    if room is None or room[2] - room[0] < 120.0:
+        return None
+    nts = notes_at(room[2] - room[0])
+    if nts.h > room[3] - room[1] + 1e-9 or tab.h + GAP + prof.h > right[3] - right[1] + 1e-9:
+        return None
+    tb = (right[0], right[1], right[0] + tab.w, right[1] + tab.h)
+    nb = (room[0], room[3] - nts.h, room[0] + nts.w, room[3])
+    return [[(dia, left), (prof, (right[0], tb[3] + GAP, right[2], right[3])), (tab, tb), (nts, nb)]]
 
 
 def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
