@@ -5,10 +5,12 @@ other sheets: the drawings in a row in reading order, the table and the notes be
 a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
+import math
+
 from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
-from graphplan.graphic.cam import closing_warning, construct
+from graphplan.graphic.cam import POLE_MM, closing_warning, construct
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
@@ -60,8 +62,8 @@ def positions_table(doc: dict, lang: str) -> Record:
     gr = "гр." if lang == "uk" else "gr."
     q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
     mm = "мм" if lang == "uk" else "mm"
-    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{q['s']}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
-            f"{q['v']}, {per}", f"y_{q['v']}, {mm}", f"{q['v']} {gr}", "δ, %",
+    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{{{q['s']}}}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
+            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", "δ, %",
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
@@ -132,7 +134,25 @@ def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
     out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
     out.scales.update(phase.scales)
     out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
+    out.parts = len(left.items)                                          # see apart()
     return out
+
+
+def apart(name: str, rec: Record, box: Box, page, n: int | None = None) -> list[Placed]:
+    """A placed leaf; the diagrams with a leaf laid in the room under their phase diagram (hole) as
+    two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
+    boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
+    ``rec``'s items are the diagrams' (beside)."""
+    inside = [b for other, b in page if other.name != name and box[0] <= b[0] and b[2] <= box[2]
+              and box[1] <= b[1] and b[3] <= box[3]]
+    if name != "diagrams" or n is None or not inside:
+        return [Placed(name, rec, box)]
+    left = Record(rec.title, rec.items[:n], dict(rec.scales))
+    right = Record("phase diagram", rec.items[n:], {})
+    lb, pb = left.bounds(), right.bounds()
+    xm = lb[2] + GAP
+    return [Placed(name, left, (box[0], box[1], xm, box[3])),
+            Placed("phase", right, (xm, pb[1] - GAP / 2, box[2], box[3]))]
 
 
 def hole(dia: Leaf, box: Box) -> Box | None:
@@ -249,7 +269,7 @@ def _one_sheet(laid) -> bool:
 
 
 def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
-              ) -> tuple[float, float, float, float]:
+              ) -> tuple:
     """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``,
     ``accel``): the largest common size whose drawings (at the standard scales that size asks) fit the
     sheet in one row above the table and the notes — in both languages —, then the profile, the main
@@ -278,8 +298,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             memo[(name, key, lang)] = Leaf(name, record=rec)
         return memo[(name, key, lang)]
 
-    def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False) -> bool:
-        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
+    def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False,
+             poles: tuple = (None, None)) -> bool:
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
+                      H1=poles[0], H2=poles[1])
         for lang in ("uk", "en"):
             leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
@@ -308,14 +330,33 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     if f.name == "A1":       # the columns leave the diagrams the field's height: a step less along φ
         k, kh, ka = _taller(k, kp, kh, ka, fits, lambda *sz: _area(leaf, sol, n, precision, *sz))
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2)
     for lang in ("uk", "en"):
         leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
         if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
             return set_sizes(sol, f, n, precision)
-    return k, kp, kh, ka
+    return k, kp, kh, ka, h1, h2
+
+
+def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
+    """The ds/dφ diagram alone taller where the field's height has room for it (review 4, item 19:
+    the A1 column of diagrams 404 mm high in a field of 574): μ_{ds/dφ} = μ_{d²s/dφ²}·μ_φ·H_1 finer by
+    a shorter pole distance H_1, H_2 longer by as much, so that μ_s = μ_{d²s/dφ²}·μ_φ²·H_1·H_2 stays
+    (H_2 a whole millimetre, both within the lab's 15–50 mm: μ_s at most 2 % finer, never coarser). The
+    shortest H_1 at which the drawings still fit (``fits((H1, H2))``); (None, None) when none does."""
+    lo, hi = POLE_MM
+    trials = []
+    for h1 in range(int(H1) - 1, int(lo) - 1, -1):     # v grows as H_1 shortens
+        h2 = float(math.floor(H1 * H2 / h1))            # μ_s not coarser… nor finer: the phase diagram as it is
+        if h2 > hi or h1 * h2 < 0.98 * H1 * H2:
+            continue
+        trials.append((float(h1), h2))
+    best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
+    return trials[best] if best is not None else (None, None)
 
 
 def _profile_largest(p: Box, q: Box) -> bool:
@@ -353,7 +394,7 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
-def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple[float, float, float, float]:
+def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple:
     """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
@@ -389,7 +430,7 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     up = [x for x in sizes if x > k]        # the abscissa alone longer (the ordinates as they are)
     kl = (_largest(lambda x: fits(x, k, kh, ka, both), up) if up else None) or k
     kp = _largest(lambda x: fits(kl, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
-    return kl, kp, kh, ka
+    return kl, kp, kh, ka, None, None
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -423,7 +464,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
         return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         measure=measure)
+                         H1=sz[4], H2=sz[5], measure=measure)
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -498,8 +539,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
-    pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
-             for page in laid]
+    pages = [[q for leaf, b in page if leaf.record is not None
+              for q in apart(leaf.name, centred(leaf.record, b), b, page, getattr(leaf.record, "parts", None))] for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")
