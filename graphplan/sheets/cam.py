@@ -548,7 +548,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                              "choose a larger --format")
     place = at_top if f.name == "A1" else centred        # A1's columns: the drawings' tops in one line
     pages = [[q for leaf, b in page if leaf.record is not None
-              for q in apart(leaf.name, place(leaf.record, b), b, page, getattr(leaf.record, "parts", None))] for page in laid]
+              for q in apart(leaf.name, place(leaf.record, b), b, page, getattr(leaf.record, "parts", None))]
+             for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")
