@@ -49,7 +49,7 @@ def _pct(v, lang: str) -> str:
     return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
 
 
-def positions_table(doc: dict, lang: str) -> Record:
+def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
     graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
     exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
@@ -82,7 +82,7 @@ def positions_table(doc: dict, lang: str) -> Record:
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
     widths = [8.0, 13.0, 17.0, 13.0, 15.0, 14.0, 22.0, 13.0, 17.0, 14.0, 13.0, 13.0, 16.0, 15.0]
-    return table(rows, widths, row_h=6.0, size=2.5, title=WORDS[lang]["table"])
+    return table(rows, widths, row_h=row_h, size=2.5, title=WORDS[lang]["table"])
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -209,6 +209,9 @@ def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[li
     if xl - rx0 < dia.w - 1e-9:
         return None
     floor = keep[3] if xl > keep[0] else ry0        # the left column clear of the title block
+    under = _notes_under(dia, prof, tab, notes_at, (rx0, floor, xl, ry1), (xr, keep[3], rx1, ry1))
+    if under is not None:
+        return under
     nr = notes_at(wr)
     if prof.h + tab.h + nr.h + 2 * GAP <= ry1 - keep[3] + 1e-9:
         nb = (xr, keep[3], xr + nr.w, keep[3] + nr.h)
@@ -222,9 +225,6 @@ def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[li
     tb = (xr, low, xr + tab.w, low + tab.h)
     if tb[3] + GAP + prof.h > ry1 + 1e-9 or ry1 - left_floor < dia.h - 1e-9:
         return None
-    under = _notes_under(dia, prof, tab, notes_at, (rx0, floor, xl, ry1), (xr, keep[3], rx1, ry1))
-    if under is not None:
-        return under
     return [[(dia, (rx0, left_floor, xl, ry1)), (prof, (xr, tb[3] + GAP, rx1, ry1)), (tab, tb), (nl, nb)]]
 
 
@@ -530,6 +530,25 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
     return again if again is not None and not notes_alone(again[-1]) else laid
 
 
+TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
+
+
+def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
+    """The A1 sheet's layout with Table 1 ruled at TABLE_ROW mm rows (its lettering as it is) when
+    that leaves the drawings where they were — the column under the profile otherwise stands part
+    blank —; else ``laid`` as it is."""
+    tall = Leaf("table", record=positions_table(doc, lang, TABLE_ROW))
+    nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
+    again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
+    if not _one_sheet(again):
+        return laid
+    before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
+    after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
+    profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
+    room = next(b for leaf, b in again[0] if leaf.name == "profile")
+    return again if before == after and room[3] - room[1] >= profile.h - 1e-9 else laid
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -540,6 +559,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
+    if f.name == "A1" and _one_sheet(laid):
+        laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
