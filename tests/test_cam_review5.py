@@ -164,3 +164,18 @@ def test_table_1_gives_the_rulers_reading_and_the_value_to_three_figures(tmp_pat
         v = float(value.replace(",", ".").replace("−", "-"))
         s = p["graphical"]["s_m"] * 1000
         assert v == pytest.approx(s, rel=5e-3, abs=1e-9), (value, s)
+
+
+@pytest.mark.parametrize("H1, H2, shortest", [(24.0, 24.0, 15), (24.0, 24.0, 19), (47.0, 47.0, 40), (38.0, 37.0, 30)])
+def test_the_poles_grow_ds_dphi_alone_keeping_mu_s(H1, H2, shortest):
+    """The ds/dφ diagram alone taller (μ_{ds/dφ} ∝ H1) while μ_s ∝ H1·H2 stays within 2 %, never
+    coarser: whole-millimetre pole distances in the lab's 15–50 mm, the shortest H1 that fits."""
+    from graphplan.sheets.cam import _poles
+    h1, h2 = _poles(H1, H2, lambda p: p[0] >= shortest)
+    assert h1 is not None and h1 >= shortest and h1 == int(h1) and h2 == int(h2)
+    assert 15 <= h1 < H1 and h2 <= 50
+    assert 0.98 * H1 * H2 <= h1 * h2 <= H1 * H2
+    better = [h for h in range(shortest, int(h1)) if 0.98 * H1 * H2 <= h * (H1 * H2 // h) <= H1 * H2
+              and H1 * H2 // h <= 50]
+    assert not better, better
+    assert _poles(H1, H2, lambda p: False) == (None, None)
