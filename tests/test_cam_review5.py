@@ -89,6 +89,7 @@ def _laid_sheet(path, lang):
     """The A1 composition at the construction's sizes as cam_sizes found them for the review's cam
     (1.1, 1.9, 1.1, 4.0), without the search: the leaves laid (sheets.cam._laid) and placed."""
     from types import SimpleNamespace
+    from graphplan.drawing.layout import centred
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     from graphplan.sheets import cam as sc
@@ -97,7 +98,7 @@ def _laid_sheet(path, lang):
     leaves, tab, nts, doc = sc._leaves(sol, g, sol.cam, lang)
     f = form("A1")
     (page,) = sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam))
-    placed = [q for leaf, b in page for q in sc.apart(leaf.name, sc.at_top(leaf.record, b), b, page,
+    placed = [q for leaf, b in page for q in sc.apart(leaf.name, (sc.at_top if leaf.name == "profile" else centred)(leaf.record, b), b, page,
                                                        getattr(leaf.record, "parts", None))]
     return SimpleNamespace(form=f, placed=placed)
 

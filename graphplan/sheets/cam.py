@@ -156,21 +156,21 @@ def apart(name: str, rec: Record, box: Box, page, n: int | None = None) -> list[
 
 
 def at_top(rec: Record, box: Box) -> Record:
-    """The record at the top of ``box``, in the middle across it: the drawings' tops in one line
-    (the s diagram, the phase diagram lined up with it, the profile), read from the top."""
+    """The record at the top of ``box``, in the middle across it (the A1 sheet's profile: the
+    room its column leaves under it goes to Table 1, not to a band over it)."""
     x0, _, x1, y1 = rec.bounds()
     return rec.moved((box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1)
 
 
 def hole(dia: Leaf, box: Box) -> Box | None:
     """The room under the phase diagram beside the ds/dφ and d²s/dφ² diagrams (review 4, item 19:
-    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf is placed in ``box`` (at_top):
+    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf is centred in ``box``:
     from the diagrams' right edge to the box's, from the box's foot to a GAP under the phase diagram."""
     at = getattr(dia.record, "hole", None)
     if at is None:
         return None
-    x0, _, x1, y1 = dia.record.bounds()
-    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1          # at_top
+    x0, y0, x1, y1 = dia.record.bounds()
+    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2     # centred
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
@@ -567,9 +567,10 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
-    place = at_top if f.name == "A1" else centred        # A1's columns: the drawings' tops in one line
+    def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
+        return (at_top if f.name == "A1" and leaf.name == "profile" else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None
-              for q in apart(leaf.name, place(leaf.record, b), b, page, getattr(leaf.record, "parts", None))]
+              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None))]
              for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
