@@ -81,7 +81,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
-    widths = [8.0, 13.0, 17.0, 13.0, 15.0, 14.0, 22.0, 13.0, 17.0, 14.0, 13.0, 13.0, 16.0, 15.0]
+    widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
     return table(rows, widths, row_h=row_h, size=2.5, title=WORDS[lang]["table"])
 
 
