@@ -180,3 +180,20 @@ def test_the_poles_grow_ds_dphi_alone_keeping_mu_s(H1, H2, shortest):
               and H1 * H2 // h <= 50]
     assert not better, better
     assert _poles(H1, H2, lambda p: False) == (None, None)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_built_sheet_of_the_reviews_cam_is_filled_and_clean(tmp_path, lang):
+    """The whole A1 sheet as `graphplan sheet` builds it (sizes searched, Table 1's rows of 8 mm):
+    nothing a teacher sends back (compose.defects), the notes under the phase diagram, no empty
+    square of 8 cells, and fewer empty cells than the composition review 4 graded (46 % of them
+    by this count)."""
+    path = tmp_path / "kn.toml"
+    path.write_text(KNIFE, encoding="utf-8")
+    sheet = _sheet(path, lang)
+    assert defects(sheet) == []
+    ink = {p.name: p.record.bounds() for p in sheet.placed}
+    assert ink["notes"][3] < ink["phase"][1] and ink["diagrams"][2] < ink["notes"][0]
+    share, empty = empty_share(sheet)
+    assert _largest_blank(empty) < 8 and share < 0.45, (share, _largest_blank(empty))
