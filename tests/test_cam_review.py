@@ -58,8 +58,9 @@ def test_a_phase_that_misses_its_closing_is_redrawn_with_more_divisions():
     cam = build(data, "<cam_rocking without divisions>")
     assert not cam.divisions_given and cam.divisions == 8
     sol = solve(cam)
-    size, prof, height, accel = cam_sizes(sol, form("A1"), 8)
-    first = construct(sol, 8, 0.5, size=size, profile_size=prof, height=height, accel=accel, measure=False)
+    size, prof, height, accel, h1, h2 = cam_sizes(sol, form("A1"), 8)
+    first = construct(sol, 8, 0.5, size=size, profile_size=prof, height=height, accel=accel, H1=h1, H2=h2,
+                      measure=False)
     assert max(abs(x) for x in closing_errors(sol, first)) > 0.02 * cam.stroke / first.mu_s + 0.25
     g = construct_on(sol, form("A1"))
     n = len(g.phi) // 2 - 1

@@ -5,10 +5,12 @@ other sheets: the drawings in a row in reading order, the table and the notes be
 a format too small carries the rest to further sheets of the set."""
 from __future__ import annotations
 
+import math
+
 from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
-from graphplan.graphic.cam import closing_warning, construct
+from graphplan.graphic.cam import POLE_MM, closing_warning, construct
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
@@ -47,9 +49,10 @@ def _pct(v, lang: str) -> str:
     return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
 
 
-def positions_table(doc: dict, lang: str) -> Record:
-    """Per division: φ, s and ds/dφ exact and graphical with δ, ϑ exact and measured, R exact and
-    measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
+def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
+    """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
+    graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
+    exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
     unit of its scale μ_{dψ/dφ} in (°/рад)/мм)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
@@ -58,23 +61,28 @@ def positions_table(doc: dict, lang: str) -> Record:
     per = unit + "/" + ("рад" if lang == "uk" else "rad")     # the analogue: per radian of the cam's turn
     gr = "гр." if lang == "uk" else "gr."
     q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
-    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"{q['s']} {gr}", f"δ_{q['s']}, %", f"{q['v']}, {per}",
-            f"{q['v']} {gr}", "δ, %",
-            "ϑ, °", f"ϑ {gr}", "R, " + ("мм" if lang == "uk" else "mm"), f"R {gr}"]
+    mm = "мм" if lang == "uk" else "mm"
+    head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{{{q['s']}}}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
+            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", "δ, %",
+            "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     rows = [head]
     mu_l = doc["scales"]["mu_l_m_mm"]
+    precision = doc.get("precision_mm", 0.5)
     for j, p in enumerate(doc["positions"]):
         e, g, err = p["exact"], p["graphical"], p["error_pct"]
         def v(x, d=4):
             return num(x, lang, d).replace("-", "−")
-        rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), v(g["s" + key] * k),
-                     _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
-                     v(g["ds_dphi" + key] * k), _pct(err["ds_dphi"], lang),
+
+        def read(mm_):             # the ruler's reading: the drawn ordinate's mm to its 0.5 mm (or finer)
+            return fixed(mm_, lang, 1 if precision >= 0.1 or precision == 0 else 2).replace("-", "−")
+        rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), read(g["s_mm"]),
+                     v(g["s" + key] * k, 3), _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
+                     read(g["ds_dphi_mm"]), v(g["ds_dphi" + key] * k, 3), _pct(err["ds_dphi"], lang),
                      fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
-    widths = [8.0, 13.0, 17.0, 17.0, 14.0, 22.0, 19.0, 14.0, 13.0, 13.0, 16.0, 15.0]
-    return table(rows, widths, row_h=6.0, size=2.5, title=WORDS[lang]["table"])
+    widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
+    return table(rows, widths, row_h=row_h, size=2.5, title=WORDS[lang]["table"])
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -125,7 +133,45 @@ def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
     dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
     out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
     out.scales.update(phase.scales)
+    out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
+    out.parts = len(left.items)                                          # see apart()
     return out
+
+
+def apart(name: str, rec: Record, box: Box, page, n: int | None = None) -> list[Placed]:
+    """A placed leaf; the diagrams with a leaf laid in the room under their phase diagram (hole) as
+    two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
+    boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
+    ``rec``'s items are the diagrams' (beside)."""
+    inside = [b for other, b in page if other.name != name and box[0] <= b[0] and b[2] <= box[2]
+              and box[1] <= b[1] and b[3] <= box[3]]
+    if name != "diagrams" or n is None or not inside:
+        return [Placed(name, rec, box)]
+    left = Record(rec.title, rec.items[:n], dict(rec.scales))
+    right = Record("phase diagram", rec.items[n:], {})
+    lb, pb = left.bounds(), right.bounds()
+    xm = lb[2] + GAP
+    return [Placed(name, left, (box[0], box[1], xm, box[3])),
+            Placed("phase", right, (xm, pb[1] - GAP / 2, box[2], box[3]))]
+
+
+def at_top(rec: Record, box: Box) -> Record:
+    """The record at the top of ``box``, in the middle across it (the A1 sheet's profile: the
+    room its column leaves under it goes to Table 1, not to a band over it)."""
+    x0, _, x1, y1 = rec.bounds()
+    return rec.moved((box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1)
+
+
+def hole(dia: Leaf, box: Box) -> Box | None:
+    """The room under the phase diagram beside the ds/dφ and d²s/dφ² diagrams (review 4, item 19:
+    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf is centred in ``box``:
+    from the diagrams' right edge to the box's, from the box's foot to a GAP under the phase diagram."""
+    at = getattr(dia.record, "hole", None)
+    if at is None:
+        return None
+    x0, y0, x1, y1 = dia.record.bounds()
+    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2     # centred
+    return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
 def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False
@@ -163,6 +209,9 @@ def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[li
     if xl - rx0 < dia.w - 1e-9:
         return None
     floor = keep[3] if xl > keep[0] else ry0        # the left column clear of the title block
+    under = _notes_under(dia, prof, tab, notes_at, (rx0, floor, xl, ry1), (xr, keep[3], rx1, ry1))
+    if under is not None:
+        return under
     nr = notes_at(wr)
     if prof.h + tab.h + nr.h + 2 * GAP <= ry1 - keep[3] + 1e-9:
         nb = (xr, keep[3], xr + nr.w, keep[3] + nr.h)
@@ -177,6 +226,21 @@ def columns(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, region, keep) -> list[li
     if tb[3] + GAP + prof.h > ry1 + 1e-9 or ry1 - left_floor < dia.h - 1e-9:
         return None
     return [[(dia, (rx0, left_floor, xl, ry1)), (prof, (xr, tb[3] + GAP, rx1, ry1)), (tab, tb), (nl, nb)]]
+
+
+def _notes_under(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, left: Box, right: Box):
+    """The notes in the room under the phase diagram (hole) when they fit it, Table 1 then by the
+    title block under the profile in the right column: the notes read under the phase diagram they
+    follow, and neither the middle nor the right column keeps a blank as large as the notes."""
+    room = hole(dia, left) if left[3] - left[1] >= dia.h - 1e-9 else None
+    if room is None or room[2] - room[0] < 120.0:
+        return None
+    nts = notes_at(room[2] - room[0])
+    if nts.h > room[3] - room[1] + 1e-9 or tab.h + GAP + prof.h > right[3] - right[1] + 1e-9:
+        return None
+    tb = (right[0], right[1], right[0] + tab.w, right[1] + tab.h)
+    nb = (room[0], room[3] - nts.h, room[0] + nts.w, room[3])
+    return [[(dia, left), (prof, (right[0], tb[3] + GAP, right[2], right[3])), (tab, tb), (nts, nb)]]
 
 
 def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
@@ -212,7 +276,7 @@ def _one_sheet(laid) -> bool:
 
 
 def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
-              ) -> tuple[float, float, float, float]:
+              ) -> tuple:
     """The construction's sizes on ``f`` (construct's ``size``, ``profile_size``, ``height``,
     ``accel``): the largest common size whose drawings (at the standard scales that size asks) fit the
     sheet in one row above the table and the notes — in both languages —, then the profile, the main
@@ -241,8 +305,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             memo[(name, key, lang)] = Leaf(name, record=rec)
         return memo[(name, key, lang)]
 
-    def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False) -> bool:
-        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
+    def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False,
+             poles: tuple = (None, None)) -> bool:
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
+                      H1=poles[0], H2=poles[1])
         for lang in ("uk", "en"):
             leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
@@ -271,14 +337,33 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     if f.name == "A1":       # the columns leave the diagrams the field's height: a step less along φ
         k, kh, ka = _taller(k, kp, kh, ka, fits, lambda *sz: _area(leaf, sol, n, precision, *sz))
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2)
     for lang in ("uk", "en"):
         leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
         if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
             return set_sizes(sol, f, n, precision)
-    return k, kp, kh, ka
+    return k, kp, kh, ka, h1, h2
+
+
+def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
+    """The ds/dφ diagram alone taller where the field's height has room for it (review 4, item 19:
+    the A1 column of diagrams 404 mm high in a field of 574): μ_{ds/dφ} = μ_{d²s/dφ²}·μ_φ·H_1 finer by
+    a shorter pole distance H_1, H_2 longer by as much, so that μ_s = μ_{d²s/dφ²}·μ_φ²·H_1·H_2 stays
+    (H_2 a whole millimetre, both within the lab's 15–50 mm: μ_s at most 2 % finer, never coarser). The
+    shortest H_1 at which the drawings still fit (``fits((H1, H2))``); (None, None) when none does."""
+    lo, hi = POLE_MM
+    trials = []
+    for h1 in range(int(H1) - 1, int(lo) - 1, -1):     # v grows as H_1 shortens
+        h2 = float(math.floor(H1 * H2 / h1))            # μ_s not coarser… nor finer: the phase diagram as it is
+        if h2 > hi or h1 * h2 < 0.98 * H1 * H2:
+            continue
+        trials.append((float(h1), h2))
+    best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
+    return trials[best] if best is not None else (None, None)
 
 
 def _profile_largest(p: Box, q: Box) -> bool:
@@ -316,7 +401,7 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
-def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple[float, float, float, float]:
+def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple:
     """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
@@ -352,7 +437,7 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     up = [x for x in sizes if x > k]        # the abscissa alone longer (the ordinates as they are)
     kl = (_largest(lambda x: fits(x, k, kh, ka, both), up) if up else None) or k
     kp = _largest(lambda x: fits(kl, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
-    return kl, kp, kh, ka
+    return kl, kp, kh, ka, None, None
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -386,7 +471,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
         return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         measure=measure)
+                         H1=sz[4], H2=sz[5], measure=measure)
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -445,6 +530,25 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
     return again if again is not None and not notes_alone(again[-1]) else laid
 
 
+TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
+
+
+def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
+    """The A1 sheet's layout with Table 1 ruled at TABLE_ROW mm rows (its lettering as it is) when
+    that leaves the drawings where they were — the column under the profile otherwise stands part
+    blank —; else ``laid`` as it is."""
+    tall = Leaf("table", record=positions_table(doc, lang, TABLE_ROW))
+    nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
+    again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
+    if not _one_sheet(again):
+        return laid
+    before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
+    after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
+    profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
+    room = next(b for leaf, b in again[0] if leaf.name == "profile")
+    return again if before == after and room[3] - room[1] >= profile.h - 1e-9 else laid
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -455,13 +559,18 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
+    if f.name == "A1" and _one_sheet(laid):
+        laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
-    pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
+    def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
+        return (at_top if f.name == "A1" and leaf.name == "profile" else centred)(leaf.record, box)
+    pages = [[q for leaf, b in page if leaf.record is not None
+              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None))]
              for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
