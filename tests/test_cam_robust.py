@@ -102,6 +102,7 @@ def _census_cases() -> list[tuple[str, str]]:
 CENSUS = _census_cases()
 
 
+@pytest.mark.slow
 def test_the_census_rocking_cams_end_with_an_answer_or_one_line(tmp_path):
     """Each of the 18 scenes: an answer whose R0 makes the largest |ϑ|/[ϑ] exactly 1 (and a radius 1 %
     smaller exceeds it), or the reach's lower end; else one line (exit 2) naming the phase, its

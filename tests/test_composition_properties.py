@@ -78,7 +78,7 @@ def _sheet(text: str, kind: str, fmt: str = "A1"):
         assume(False)
 
 
-QUICK = settings(max_examples=3, deadline=None, derandomize=True, database=None,
+QUICK = settings(max_examples=2, deadline=None, derandomize=True, database=None,
                  suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 LONG = settings(max_examples=40, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])

@@ -174,6 +174,7 @@ def test_numbers_by_twos_do_not_run_into_the_last():
         assert collisions(rec) == [], collisions(rec)[:3]
 
 
+@pytest.mark.slow
 def test_the_last_table_and_the_notes_in_one_row_stay_together(monkeypatch):
     """A set whose motor table and notes share a row (the slotter's A3 set, its tables first, with
     the notes it had before they said why its |kl| is short of the A1 sheet's — that line takes them
