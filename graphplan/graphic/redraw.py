@@ -237,6 +237,7 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         return dict(options), Redrawing(off_before=off0, off_after=off0)
     seen = {tuple(sorted(base.items()))}
     right: list[tuple[float, int, dict[str, Any]]] = [] if wrong else [(off0, 0, {})]
+    best = None if wrong else off0        # the least |δ| of a right drawing that fits the room so far
 
     def done(change: dict[str, Any], off: float) -> tuple[dict[str, Any], Redrawing]:
         return ({**options, **change},
@@ -250,16 +251,17 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             continue
         seen.add(key)
         off = probe.off(**trial)
-        if off > LAB_LIMIT and right and off >= min(r[0] for r in right):
-            continue                  # no better than one already right: not judged further
+        if off > LAB_LIMIT and best is not None and off >= best:
+            continue                  # no better than one already right and fitting: not judged further
         if probe.wrong(**trial, all_of=False):
             continue
         change = {k: v for k, v in change.items() if trial[k] != base[k]}
+        if fits is not None and not fits({**options, **change}, bool(wrong)):
+            continue                  # too large for the room (a better one that does not fit passes over none)
         if off <= LAB_LIMIT:
-            if fits is None or fits({**options, **change}, bool(wrong)):
-                return done(change, off)
-            continue
+            return done(change, off)
         right.append((off, order, change))
+        best = off if best is None else min(best, off)
     for off, _, change in sorted(right, key=lambda r: r[:2]):
         if not change or (not wrong and off > WORTHWHILE * off0):
             break
