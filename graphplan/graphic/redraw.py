@@ -237,13 +237,13 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         return dict(options), Redrawing(off_before=off0, off_after=off0)
     seen = {tuple(sorted(base.items()))}
     right: list[tuple[float, int, dict[str, Any]]] = [] if wrong else [(off0, 0, {})]
-    best = None if wrong else off0        # the least |δ| of a right drawing that fits the room so far
 
     def done(change: dict[str, Any], off: float) -> tuple[dict[str, Any], Redrawing]:
         return ({**options, **change},
                 Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
 
     cands = list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest)) + list(taller(base["height"]))
+    passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}
         key = tuple(sorted(trial.items()))
@@ -251,22 +251,30 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             continue
         seen.add(key)
         off = probe.off(**trial)
-        if off > LAB_LIMIT and best is not None and off >= best:
-            continue                  # no better than one already right and fitting: not judged further
+        if off > LAB_LIMIT and right and off >= min(r[0] for r in right):
+            passed.append((order, change, off))
+            continue                  # no better than one already right: not judged further (below if none fits)
         if probe.wrong(**trial, all_of=False):
             continue
         change = {k: v for k, v in change.items() if trial[k] != base[k]}
-        if fits is not None and not fits({**options, **change}, bool(wrong)):
-            continue                  # too large for the room (a better one that does not fit passes over none)
         if off <= LAB_LIMIT:
-            return done(change, off)
+            if fits is None or fits({**options, **change}, bool(wrong)):
+                return done(change, off)
+            continue
         right.append((off, order, change))
-        best = off if best is None else min(best, off)
     for off, _, change in sorted(right, key=lambda r: r[:2]):
         if not change or (not wrong and off > WORTHWHILE * off0):
             break
         if fits is None or fits({**options, **change}, bool(wrong)):
             return done(change, off)
+    if wrong and fits is not None:    # every right one too large for the room: those passed over, judged
+        for order, change, off in sorted(passed, key=lambda r: (r[2], r[0])):   # now (a generated six-bar's
+            trial = {**base, **change}                                        # a stayed "wrong" though
+            if probe.wrong(**trial, all_of=False):                            # H1 30 / H2 15 draws it right)
+                continue
+            change = {k: v for k, v in change.items() if trial[k] != base[k]}
+            if fits({**options, **change}, True):
+                return done(change, off)
     if not wrong:
         return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0)
     return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1, {}, off0, off0)
