@@ -15,7 +15,8 @@ from conftest import scene_study
 from graphplan.drawing.plans import joints_at, position_record
 from graphplan.graphic.plans import build_plans, where
 from graphplan.util.markup import indexed
-from review45_scenes import OFFSET_PRESS, SIXBAR_PRESS
+from review_scenes import PRESS4 as SIXBAR_PRESS  # the reviews' presses: the fourth's six-bar,
+from review_scenes import PRESS_EN as OFFSET_PRESS  # the fifth's desaxial crank-slider
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 SAME = 1.0    # mm: a drawn point nearer a position's point than this is drawn on it (an extreme on a dead centre)

@@ -12,7 +12,8 @@ from shapely.geometry import LineString
 from conftest import scene_study
 from graphplan.drawing.plans import position_record
 from graphplan.graphic.plans import build_plans
-from review45_scenes import OFFSET_PRESS, SIXBAR_PRESS
+from review_scenes import PRESS4 as SIXBAR_PRESS  # the reviews' presses: the fourth's six-bar,
+from review_scenes import PRESS_EN as OFFSET_PRESS  # the fifth's desaxial crank-slider
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 

@@ -13,7 +13,8 @@ from conftest import scene_study
 from graphplan.graphic.plans import build_plans
 from graphplan.report.plans import plans_json
 from graphplan.sheets.kintables import acceleration_table, dimensions_table, velocity_table
-from review45_scenes import OFFSET_PRESS, SIXBAR_PRESS
+from review_scenes import PRESS4 as SIXBAR_PRESS  # the reviews' presses: the fourth's six-bar,
+from review_scenes import PRESS_EN as OFFSET_PRESS  # the fifth's desaxial crank-slider
 
 # the sheets' scales (review5: μv 0.02, μa 0.1; review4: μv 0.025, μa 0.1), the lab's 0.5 mm ruler
 CASES = [(OFFSET_PRESS, "en", [2, 7], 0.002, 0.02, 0.1), (SIXBAR_PRESS, "uk", [5], 0.004, 0.025, 0.1)]
