@@ -258,3 +258,51 @@ def test_crowded_plan_points_are_lettered_unambiguously():
             hung = any(abs(s - req.at) < 1.5 for s in leaders)
             assert hung or all(gap(z) >= 2.0 * gap(req.at) for z in others), (p.index, req.text)
     assert crowded >= 3                                   # plan 8's a, b, s2 at least
+
+
+INCLINED = """
+title = "Кривошипно-повзунний механізм з похилою напрямною"
+[params]
+r = 0.065
+l = 0.26
+[frame.points]
+O = [0, 0]
+[frame.guides]
+piston = { through = [-0.025, 0], angle_deg = 150 }
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 240
+direction = "ccw"
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "piston"
+[branch]
+B = 1
+[positions]
+count = 12
+"""
+
+
+@pytest.mark.parametrize("lang, text", [("uk", "e = 12,5"), ("en", "e = 12.5")])
+def test_the_offset_is_lettered_with_its_real_size(lang, text):
+    """A guide through (−25, 0) mm at 150° passes 25·sin 30° = 12.5 mm from O: the scheme letters
+    e = 12,5 (Table 4's value), not a rounded "12"; a whole stroke keeps whole millimetres."""
+    from graphplan.drawing.plans import position_record
+    from graphplan.graphic.plans import build_plans
+    st = scene_study(INCLINED)
+    plans = build_plans(st, mu_l=0.001)
+    words = [p.text for p in position_record(plans, lang=lang).items if p.kind == "text"]
+    assert text in words
+    H = float(next(w for w in words if w.startswith("H = "))[4:].replace(",", "."))
+    r, l, e = 65.0, 260.0, 12.5                   # mm at μl = 0.001 m/mm
+    assert abs(H - (math.sqrt((l + r) ** 2 - e ** 2) - math.sqrt((l - r) ** 2 - e ** 2))) <= 0.05

@@ -297,7 +297,7 @@ def output_point(plans: Plans) -> str:
     return moving[-1] if moving else link.joints[-1]
 
 
-def position_record(plans: Plans, lettered: bool = True) -> Record:
+def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Record:
     """The position plan of all positions, with arcs, trajectories, extremes and labels (only the
     lines when not ``lettered``: what a layout measures before the lettering is placed)."""
     sc = plans.scheme
@@ -346,7 +346,7 @@ def position_record(plans: Plans, lettered: bool = True) -> Record:
         X = where(sc, lay, sc.body_of(out), out)
         rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
         late.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
-    late += stroke_dimensions(rec, plans, O)
+    late += stroke_dimensions(rec, plans, O, lang)
     labels: list[LabelRequest] = []
     # letters at the first thick position, placed first: each beside its point (a link's number,
     # placed after them, by its bar)
@@ -481,7 +481,7 @@ def dimension_place(rec: Record, X1: complex, u: complex, away: complex, span: f
     return best[1], best[2]
 
 
-def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
+def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -> list[LabelRequest]:
     """The output slider's stroke H between its extreme positions, dimensioned on the side of its
     path away from the crank (extension lines, a dimension line with arrows at both ends, GOST
     2.307), and a crank-slider's offset e from the crank's pivot to the path — each lettered with its
@@ -507,7 +507,7 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelReques
     rec.vector(_pt(mid), _pt(a), role="construction", layer="construction", step=step)
     rec.vector(_pt(mid), _pt(b), role="construction", layer="construction", step=step)
     mm = 1000.0 * plans.mu_l
-    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm)}", toward=away, size=3.5, step=step)]
+    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm, lang)}", toward=away, size=3.5, step=step)]
     if len(st.structure.dyads) == 1 and abs(side) * mm >= 0.5:      # a crank-slider's offset
         # beside the crank's circle, on the side away from the slider: O's line and the path carried
         # there parallel to the path, the dimension line across them
@@ -521,14 +521,17 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex) -> list[LabelReques
         c = 0.5 * (a + b)
         rec.vector(_pt(c), _pt(a), role="construction", layer="construction", step=step)
         rec.vector(_pt(c), _pt(b), role="construction", layer="construction", step=step)
-        labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm)}", toward=back, size=3.5, step=step))
+        labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm, lang)}", toward=back, size=3.5, step=step))
     return labels
 
 
-def _real_mm(v: float) -> str:
-    """A real length in whole millimetres, as a scheme's dimensions read (a number without a decimal
-    sign reads the same in either language)."""
-    return f"{max(v, 1.0):.0f}"
+def _real_mm(v: float, lang: str = "uk") -> str:
+    """A real length in millimetres, as a scheme's dimensions read: whole millimetres where the
+    length is whole, else to 0.1 mm in the language's decimal sign (an offset of 12.5 mm reads
+    "12,5", not a rounded "12" beside Table 4's 12,5)."""
+    from graphplan.util.words import fixed
+    v = max(v, 1.0)
+    return f"{v:.0f}" if abs(v - round(v)) < 0.05 else fixed(v, lang, 1)
 
 
 def sheet_points(plans: Plans) -> list[str]:

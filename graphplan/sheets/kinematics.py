@@ -200,14 +200,15 @@ class Drafter:
                 "velocity": [q.velocity.record for q in pl.positions if q.velocity is not None],
                 "acceleration": [q.acceleration.record for q in pl.positions if q.acceleration is not None]}
 
-    def records(self, mu: dict[str, float]) -> dict[str, list[Record]]:
-        """The plans at the scales ``mu``, drawn and lettered (no captions): family → records."""
+    def records(self, mu: dict[str, float], lang: str = "uk") -> dict[str, list[Record]]:
+        """The plans at the scales ``mu``, drawn and lettered (no captions) in ``lang`` (the position
+        plan's dimensions carry its decimal sign): family → records."""
         from graphplan.drawing.plans import acceleration_records, position_record, velocity_records
-        key = ("records",) + tuple(sorted(mu.items()))
+        key = ("records", lang) + tuple(sorted(mu.items()))
 
         def make():
             pl = self.plans(mu)
-            return {"position": [position_record(pl)], "velocity": list(velocity_records(pl).values()),
+            return {"position": [position_record(pl, lang=lang)], "velocity": list(velocity_records(pl).values()),
                     "acceleration": list(acceleration_records(pl).values())}
         return self._once(key, make)
 
@@ -343,7 +344,7 @@ def drawings(st: Study, p: Plan, dr: Drafter, lang: str) -> dict:
     diagrams, each velocity plan and acceleration plan with its caption, the tables in order."""
     plans = dr.plans(p.mu)
     caps = _captions(st, plans, lang, p.mu)
-    recs = dr.records(p.mu)
+    recs = dr.records(p.mu, lang)
     diag = dr.diagrams(p.diagrams, lang)
     return {
         "plans": plans, "diag": diag,
