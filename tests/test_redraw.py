@@ -7,11 +7,12 @@ import json
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st_
 
 import random_mechanisms as rm
-from conftest import ROOT, example, scene_study
+from conftest import ROOT, scene_study
+from conftest import example as example_study
 from graphplan.cli.main import main
 from graphplan.graphic.diagrams import chord_diagrams
 from graphplan.report.diagrams import sheet_notes
@@ -65,7 +66,8 @@ def check_sheet_diagrams(st, k: float = 1.0) -> str:
     return "kept"
 
 
-FAST = settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(max_examples=12, deadline=None, derandomize=True, database=None,   # the same cases every run (CI)
+                suppress_health_check=[HealthCheck.too_slow])
 omega = st_.sampled_from([-30.0, 7.5, 100.0])
 branch = st_.sampled_from([1, -1])
 
@@ -82,6 +84,9 @@ def test_offset_crank_slider_diagrams_are_right_or_cannot_be(r, l, e, ang, w, b)
 @FAST
 @given(r=st_.floats(0.02, 0.1), d=st_.floats(0.15, 0.4), l2=st_.floats(0.05, 0.5), l3=st_.floats(0.05, 0.5),
        w=omega, b=branch)
+# found by the fuzz: ε wrong at H1 39 / H2 20, right at H1 = H2 = 50 mm but 2.5 times as tall as the room
+# allows — drawn right over a lower s diagram (redraw.lower), no longer "no redrawing makes it right"
+@example(r=0.07410053556313063, d=0.3126182027418761, l2=1 / 3, l3=0.1193980924402145, w=-30.0, b=1)
 def test_four_bar_diagrams_are_right_or_cannot_be(r, d, l2, l3, w, b):
     text, ok = rm.rrr(r, d, l2, l3, w, b)
     assume(ok)
@@ -145,7 +150,7 @@ def test_terminal_diagrams_draw_what_the_sheet_draws(tmp_path, capsys):
 
 @pytest.mark.parametrize("name", ["crank_slider", "four_bar", "shaper", "slotter", "lab_crank_slider"])
 def test_examples_on_the_a1_sheet(name):
-    assert check_sheet_diagrams(example(name)) in ("first", "redrawn")
+    assert check_sheet_diagrams(example_study(name)) in ("first", "redrawn")
 
 
 def test_a_diagram_nothing_helps_keeps_its_note():

@@ -117,3 +117,14 @@ def test_dimensions_table_names_the_drawings_letters(case):
     else:
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         assert rows.get("e") in ("0.06", "0.060"), rows                # the offset e = 60 mm
+
+
+def test_a_dimension_not_whole_millimetres_is_written_to_its_tenth():
+    """A guide 12.5 mm from O: Table 4's real column writes 0,0125 m (four decimals for the whole
+    column, one count a column), the drawn column 12,5 mm — never a real 0,012 beside a drawn 12,5."""
+    from test_kin_drafting import INCLINED
+    from graphplan.graphic.plans import build_plans
+    st = scene_study(INCLINED)
+    rows = {r[0]: r[1:] for r in _grid(dimensions_table(st, build_plans(st, mu_l=0.001).mu_l, "uk"))[1:]}
+    assert rows["e"] == ["0,0125", "12,5"], rows
+    assert {_decimals(v[0]) for v in rows.values()} == {4}

@@ -30,6 +30,7 @@ POLE_STEP = 5.0             # mm: a pole distance is tried larger in these steps
 LONGER = (1.25, 1.5, 2.0)   # L tried this many times longer, up to the longest the sheet allows
 CORRECTED_PAIRS = 16        # the nearest pole pairs tried with the correction too (it is the costly one)
 TALLER = (1.25,)    # the s diagram tried this many times taller (the sheet's room permitting)
+LOWER = (0.8, 0.64, 0.5, 0.4)   # … and this many times lower, where a right drawing's larger poles outgrow the room
 WORTHWHILE = 0.8    # a redrawing that reaches no 5 % is taken where it cuts the largest |δ| at least to this share
 FINER = 0.25                # mm: the adaptive mode's tolerance tried after its default (0.5 mm)
 
@@ -215,6 +216,28 @@ def taller(height: float | None) -> Iterator[dict[str, Any]]:
         yield {"height": height * f, "correct": True}
 
 
+def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, dict[str, Any]]],
+          fits: Callable[[dict[str, Any], bool], bool], options: dict[str, Any]) -> tuple[dict[str, Any], float] | None:
+    """A right drawing every one of whose candidates outgrew the room (larger poles make the v and a
+    ordinates proportionally taller: y_v = H1·Δs/Δx, y_a = H2·Δy_v/Δx): the same poles over an s
+    diagram ``LOWER`` times as high (a coarser μs; the v and a diagrams as much lower), the first that
+    is still right and fits — the student's redrawing at a size the sheet holds (a generated
+    four-bar's ε was left "qualitatively wrong" though H1 = H2 = 50 mm draws it right, 2.5 times as
+    tall). None where there is no s height to lower or nothing fits."""
+    if base.get("height") is None:
+        return None
+    for off, _, change in sorted(right, key=lambda r: r[:2]):
+        if not change:
+            continue
+        for f in LOWER:
+            change_ = {**change, "height": float(base["height"]) * f}
+            trial = {**base, **change_}
+            if probe.wrong(**trial, all_of=False) or not fits({**options, **change_}, True):
+                continue
+            return change_, probe.off(**trial)
+    return None
+
+
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
            fixed: frozenset[str] = frozenset(), tallest: float | None = None,
            fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
@@ -273,8 +296,13 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             if probe.wrong(**trial, all_of=False):                            # H1 30 / H2 15 draws it right)
                 continue
             change = {k: v for k, v in change.items() if trial[k] != base[k]}
+            right.append((off, order, change))
             if fits({**options, **change}, True):
                 return done(change, off)
+        found = lower(probe, base, right, fits, options)
+        if found is not None:
+            seen.add(tuple(sorted({**base, **found[0]}.items())))
+            return done(*found)
     if not wrong:
         return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0)
     return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1, {}, off0, off0)

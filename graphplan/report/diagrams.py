@@ -120,7 +120,7 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
         if not bad:
             continue
         chords |= any(abs(own[key][i]) > LAB_LIMIT for i in bad)
-        cells = ", ".join(f"{d.position[idx[i]]} ({fixed(errs[key][i], lang, 1, plus=True).replace('-', '−')} %)"
+        cells = ", ".join(f"{d.position[idx[i]]} ({fixed(errs[key][i], lang, 2, plus=True).replace('-', '−')} %)"
                           for i in bad[:3])
         parts.append(f"{sym}_{{{d.sub}}} {cells}" + (" …" if len(bad) > 3 else ""))
     if not parts:
@@ -173,8 +173,10 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
                                                                     f"(not {num(was, lang, 3)})"))
         elif key == "height":
             s0 = f"{d.symbols[0]}_{{{d.sub}}}"
-            parts.append(f"діаграма {s0} вища: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}" if uk else
-                         f"the {s0} diagram taller: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
+            up = was is None or value > was
+            parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}"
+                         if uk else f"the {s0} diagram {'taller' if up else 'lower'}: "
+                                    f"μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
@@ -183,8 +185,8 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
     how = ", ".join(parts)
     off = ""
     if rd.off_before is not None and rd.off_after is not None:
-        a, b = fixed(rd.off_before, lang, 1), fixed(rd.off_after, lang, 1)
-        off = (f"найбільша |δ| у положеннях {a} → {b} %" if uk else f"the largest |δ| at the positions {a} → {b} %")
+        a, b = fixed(rd.off_before, lang, 2), fixed(rd.off_after, lang, 2)     # as Table 5's δ, two decimals
+        off = (f"найбільша |δ| у положеннях: {a} % → {b} %" if uk else f"the largest |δ| at the positions: {a} % → {b} %")
     if not rd.wrong_before:
         return (f"Діаграми побудовано заново: {how} — {off}" if uk else f"Diagrams redrawn: {how} — {off}")
     syms = ", ".join(f"{d.symbols[1 if key == 'v' else 2]}_{{{d.sub}}}" for key in rd.wrong_before)

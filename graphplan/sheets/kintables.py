@@ -287,13 +287,18 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
 
 def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: float = 0.5) -> Record:
     """Seed 000's table 2.1 / seed 002's measured dimensions: each length real (to the millimetre:
-    three decimals of a metre) and drawn at μl, laid off with the ruler (its 0.5 mm)."""
+    three decimals of a metre; four in the whole column where one is given to a tenth of a millimetre — an
+    offset of 12.5 mm is 0,0125, not 0,012 beside its drawn 12,5) and drawn at μl, laid off with
+    the ruler (its 0.5 mm)."""
     from graphplan.graphic.draftsman import lay_off
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     rows = [[w('link'), w('real'), w('drawn')]]
     ruler = step_decimals(precision) if precision > 0 else 2
-    for name, length in link_lengths(st):
-        rows.append([name, written(length, 3, lang), written(lay_off(length / mu_l, precision), ruler, lang)])
+    lengths = link_lengths(st)
+    tenths = [v for _, v in lengths if abs(v * 1e4 - round(v * 1e4)) < 1e-6 < abs(v * 1e3 - round(v * 1e3))]
+    real = 4 if tenths else 3        # a given 12.5 mm; a derived 286.36 mm stays to the millimetre
+    for name, length in lengths:
+        rows.append([name, written(length, real, lang), written(lay_off(length / mu_l, precision), ruler, lang)])
     return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
 
 
