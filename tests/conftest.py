@@ -1,6 +1,7 @@
 """Shared helpers: the examples, a scene builder and finite differences of exact positions."""
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import numpy as np
@@ -10,6 +11,14 @@ from graphplan.exact.positions import study
 from graphplan.model.scene import load, loads
 
 ROOT = Path(__file__).resolve().parent.parent
+
+# Property tests draw the same examples on every run (CI: a green main stays green; a failure is
+# reproducible); HYPOTHESIS_PROFILE=explore draws new ones each run (hypothesis's default) to search.
+from hypothesis import settings  # noqa: E402
+
+settings.register_profile("ci", derandomize=True, database=None)
+settings.register_profile("explore")
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 def pytest_configure(config):
