@@ -111,7 +111,7 @@ def test_dimensions_table_names_the_drawings_letters(case):
     st, plans, doc, lang = case
     names = [r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]]
     if st.mech.crank.pivot == "O1":
-        assert "O_1A" in names and "O_2B" in names and "O_2D" in names and "BD" not in names, names
+        assert "O_{1}A" in names and "O_{2}B" in names and "O_{2}D" in names and "BD" not in names, names
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         assert rows.get("e") in ("0,5", "0,50", "0,500"), rows       # the ram's guide x = 0.50 m from O1
     else:
@@ -128,3 +128,13 @@ def test_a_dimension_not_whole_millimetres_is_written_to_its_tenth():
     rows = {r[0]: r[1:] for r in _grid(dimensions_table(st, build_plans(st, mu_l=0.001).mu_l, "uk"))[1:]}
     assert rows["e"] == ["0,0125", "12,5"], rows
     assert {_decimals(v[0]) for v in rows.values()} == {4}
+
+
+def test_a_dimensions_name_sets_only_the_pivots_number_low(case):
+    """review 7: Table 4 typeset O1A as O with the subscript "1A" and O1O2 as O with "1O2": each
+    point's number alone is the subscript (O₁A, O₁O₂)."""
+    from graphplan.util.markup import runs
+    st, plans, doc, lang = case
+    for name in (r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]):
+        for run in runs(name):
+            assert run.level == 0 or run.text.isdigit(), (name, runs(name))

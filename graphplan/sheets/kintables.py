@@ -255,8 +255,11 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
     from graphplan.util.markup import indexed
     mech = st.mech
 
-    def named(a: str, b: str) -> str:
-        return indexed(a) + indexed(b)
+    def named(a: str, b: str) -> str:             # O_{1}A: the subscript closed (O_1A set "1A" low)
+        def one(p: str) -> str:
+            head = p.rstrip("0123456789")
+            return f"{indexed(head)}_{{{p[len(head):]}}}" if head and head != p else indexed(p)
+        return one(a) + one(b)
     out: list[tuple[str, float]] = [(named(mech.crank.pivot, mech.crank.pin), mech.crank.length)]
     for name, link in mech.links.items():
         if name == mech.crank.link:
