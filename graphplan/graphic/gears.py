@@ -96,15 +96,21 @@ class Placer:
         return True
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False) -> bool:
+              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False,
+              near: bool = False) -> bool:
+        """``near``: a point's letter (N1, B1, P …) tried first close to its point in 32 directions
+        before it is taken farther on a leader (review 5: N1 7 mm off)."""
         w = text_width(text, size)
-        dirs = [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
+        dirs = [cmath.exp(1j * math.pi * k / 16) for k in range(32)] if near else \
+            [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
         if toward is not None and abs(toward) > 0:
             u = toward / abs(toward)
             dirs.sort(key=lambda d: -((d * u.conjugate()).real))
         far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
-        for strict in (True, False):          # first with the leader's path clear too, then the box alone
-            for rad in tuple(radii) + far:
+        close = tuple(r for r in (0.8, 1.2, 1.8, 2.5, 3.5) if r <= LEADER)
+        passes = ([(True, close)] if near else []) + [(True, tuple(radii) + far), (False, tuple(radii) + far)]
+        for strict, rads in passes:           # first with the leader's path clear too, then the box alone
+            for rad in rads:
                 for d in dirs:
                     # the box's nearest side ``rad`` from the anchor along d
                     cx = at.real + d.real * (rad + w / 2)
@@ -262,6 +268,26 @@ def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 78
     return m * min(ok, key=lambda k: (far(k), -k))
 
 
+SAG = 0.02                     # mm: the largest sagitta of a chord standing for an arc of a profile (no
+#                                corner shows at the drawing's scale, review 5 item 19)
+
+
+def arc_points(r: float, sweep: float, least: int = 3) -> int:
+    """Points enough to draw an arc of radius ``r`` mm over ``sweep`` rad as chords of sagitta at
+    most ``SAG``: r·(1 − cos(Δ/2)) ≤ SAG, Δ ≤ 2·acos(1 − SAG/r)."""
+    if r <= SAG:
+        return least
+    return max(least, int(math.ceil(abs(sweep) / (2 * math.acos(1 - SAG / r)))) + 1)
+
+
+def involute_points(R: float, t0: float, t1: float, least: int = 12) -> int:
+    """Points enough for the involute of the base circle R from the unrolled length t0 to t1 as
+    chords of sagitta at most ``SAG``: its tangent turns by dt/R and its radius of curvature is t, so
+    a chord over Δt sags about t·(Δt/R)²/8."""
+    dt = R * math.sqrt(8 * SAG / max(t1, 1e-9))
+    return max(least, int(math.ceil((t1 - t0) / dt)) + 1)
+
+
 def _involute(R: float, theta_s: float, t: np.ndarray) -> np.ndarray:
     """Points of the involute of the circle R (centre 0) unrolled from the angle θS: the tangent
     points at θS − t/R, the unrolled length t laid off along each tangent."""
@@ -275,14 +301,14 @@ def _flank_at(R: float, theta_s: float, radius: float) -> complex:
     return complex(_involute(R, theta_s, np.array([t]))[0])
 
 
-def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int = 64) -> list[complex]:
+def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int | None = None) -> list[complex]:
     """One tooth's outline (centre 0), from its left root fillet over the tip to its right one: the
     fillet (radius 0.38m, tangent to the root circle and to the radial line under the involute),
     the radial line to the base circle, the involute to the tip circle, the tip arc, the mirror."""
     start = max(R, rf + 1e-9)
     t0 = math.sqrt(max(start * start - R * R, 0.0))
     t1 = math.sqrt(ra * ra - R * R)
-    inv_pts = list(_involute(R, theta_s, np.linspace(t0, t1, n)))
+    inv_pts = list(_involute(R, theta_s, np.linspace(t0, t1, n or involute_points(R, t0, t1, 64))))
     beta = cmath.phase(inv_pts[0])
     left: list[complex] = []
     gap = start - rf
@@ -291,14 +317,15 @@ def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: floa
         d = math.asin(rho / (rf + rho))
         c = (rf + rho) * cmath.exp(1j * (beta + d))
         a_from, a_to = beta + d - math.pi, beta - math.pi / 2
-        left += [c + rho * cmath.exp(1j * a) for a in np.linspace(a_from, a_to, 8)]
+        left += [c + rho * cmath.exp(1j * a) for a in np.linspace(a_from, a_to, arc_points(rho, a_to - a_from, 8))]
     left += inv_pts
     # mirror about the axis: angle a → 2·axis − a
     mirror = [abs(q) * cmath.exp(1j * (2 * axis - cmath.phase(q))) for q in reversed(left)]
     a_left, a_right = cmath.phase(left[-1]), cmath.phase(mirror[0])
     if _wrap(a_left - axis) * _wrap(a_right - axis) >= 0:       # pointed within the tip circle
         return left + mirror
-    tip = [ra * cmath.exp(1j * a) for a in np.linspace(a_left, a_left + _wrap(a_right - a_left), 6)[1:-1]]
+    sweep = _wrap(a_right - a_left)
+    tip = [ra * cmath.exp(1j * a) for a in np.linspace(a_left, a_left + sweep, arc_points(ra, sweep, 6))[1:-1]]
     return left + tip + mirror
 
 
@@ -426,17 +453,24 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             if outline:                              # the root circle between the teeth
                 a0, a1 = cmath.phase(outline[-1]), cmath.phase(pts[0])
                 sweep = _wrap(a1 - a0)
-                outline += [rf * cmath.exp(1j * (a0 + sweep * t)) for t in np.linspace(0, 1, 8)[1:-1]]
+                outline += [rf * cmath.exp(1j * (a0 + sweep * t))
+                            for t in np.linspace(0, 1, arc_points(rf, sweep, 8))[1:-1]]
             outline += pts
-        teeth_pts[k] = (theta_s, axis)
+        teeth_pts[k] = (theta_s, axis, R, r_, ra, centre)
         rec.add("polyline", [_f(centre + q) for q in outline], role="link", layer=LAYER, step=f"teeth {k}")
         # the working part of the flank in mesh: from the radius of B1 (wheel 1) or B2 (wheel 2) to the tip
         low = abs((B1 if k == 1 else B2) - centre)
         t_lo = math.sqrt(max(low * low - R * R, 0.0))
-        wp = _involute(R, theta_s, np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12))
-        normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12)]
+        t_hi = math.sqrt(ra * ra - R * R)
+        ts = np.linspace(t_lo, t_hi, involute_points(R, t_lo, t_hi))
+        wp = _involute(R, theta_s, ts)
+        normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in ts]
         rec.add("polyline", [_f(centre + q + 0.45 * nrm) for q, nrm in zip(wp, normal)], role="result",
                 layer=LAYER, step=f"working part {k}", width=0.9)
+    # what Table 1 reads, drawn where it is read (review 5, item 18): s and sa as chords on the pitch
+    # and tip circles of each wheel's tooth beside the one at P, p as the arc between like flanks of
+    # two teeth on wheel 1's pitch circle, pb laid off on N1N2 from B1, the active part B1B2 bold
+    marks = _readings(rec, teeth_pts, tau, B1, B2, u, d["pb"], P)
     # the arc of action on the rolling circles
     arc_ends: list[tuple[complex, str, complex]] = []
     for k, centre, rw, R, sign in ((1, O1, read["rw1"], R1, 1.0), (2, O2, read["rw2"], R2, -1.0)):
@@ -459,11 +493,13 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     if not cut:
         pl.label(O1, "O_1", toward=-1 + 0j)
         pl.label(O2, "O_2", toward=-1 + 0j)
-    pl.label(P, "P", toward=1 + 0.3j)
-    pl.label(N1, "N_1", toward=1 + 0j)
-    pl.label(N2, "N_2", toward=-1 + 0j)
-    pl.label(B1, "B_1", toward=-1j * u)
-    pl.label(B2, "B_2", toward=1j * u)
+    pl.label(P, "P", toward=1 + 0.3j, near=True)
+    pl.label(N1, "N_1", toward=1 + 0j, near=True)
+    pl.label(N2, "N_2", toward=-1 + 0j, near=True)
+    pl.label(B1, "B_1", toward=-1j * u, near=True)
+    pl.label(B2, "B_2", toward=1j * u, near=True)
+    for at, name, out in marks:
+        pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), near=True)
     for at, name, out in arc_ends:
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
     pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
@@ -489,6 +525,79 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                               "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh
+
+
+def dimension(rec: Record, a: complex, b: complex, step: str) -> None:
+    """A thin dimension line from a to b with an arrowhead at each end (GOST 2.307)."""
+    rec.segment(_f(a), _f(b), role="construction", layer=LAYER, step=step)
+    n = abs(b - a)
+    if n <= 0:
+        return
+    head = min(2.5, 0.4 * n) * (b - a) / n
+    rec.vector(_f(a + head), _f(a), role="head", layer=LAYER, step=step)
+    rec.vector(_f(b - head), _f(b), role="head", layer=LAYER, step=step)
+
+
+def arc_dimension(rec: Record, centre: complex, r: float, a0: float, a1: float, step: str) -> None:
+    """A thin dimension arc of radius r about ``centre`` from the angle a0 to a1 (rad, a0 < a1) with
+    an arrowhead at each end."""
+    from graphplan.graphic.record import arc_head
+    rec.arc(_f(centre), r, math.degrees(a0), math.degrees(a1), role="construction", layer=LAYER, step=step)
+    for end, sense in ((a1, 1), (a0, -1)):
+        tail, tip = arc_head(centre, r, math.degrees(end), sense, length=2.5)
+        rec.vector(tail, tip, role="head", layer=LAYER, step=step)
+
+
+def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: complex, pb: float,
+              P: complex) -> list[tuple[complex, str, complex]]:
+    """The constructions Table 1 reads, drawn and their letters' anchors returned (anchor, letter,
+    the side to put it): on each wheel's tooth beside the one at P (the next counter-clockwise:
+    left of P on wheel 1, right on wheel 2) the chord s on the pitch circle and sa on the tip circle
+    (a dimension 4 mm outside the tip on extension lines), p on wheel 1's pitch circle as the arc
+    from the flank through P to the like flank of that tooth (a dimension arc 6 mm inside on
+    extension lines), pb laid off on N1N2 from B1 (ticks and a dimension 6 mm off the line), B1B2
+    the active part of the line of action, bold."""
+    out: list[tuple[complex, str, complex]] = []
+    for k in (1, 2):
+        theta_s, axis, R, r_, ra, centre = teeth_pts[k]
+        rot = cmath.exp(1j * tau[k - 1])                     # the next tooth, counter-clockwise
+        F = _flank_at(R, theta_s, r_)
+        M = abs(F) * cmath.exp(1j * (2 * axis - cmath.phase(F)))
+        a, b = centre + F * rot, centre + M * rot
+        dimension(rec, a, b, f"s{k}")
+        outward = cmath.exp(1j * (axis + tau[k - 1]))       # the tooth's axis, from its centre out
+        out.append((0.5 * (a + b) - 0.4 * outward * 0, f"s_{k}", -outward))
+        A = _flank_at(R, theta_s, ra)
+        half = _wrap(cmath.phase(A) - axis)
+        if half > 0:
+            A2 = abs(A) * cmath.exp(1j * (2 * axis - cmath.phase(A)))
+            a, b = centre + A * rot, centre + A2 * rot
+            off = 4.0 * outward
+            for q in (a, b):
+                rec.segment(_f(q + 0.8 * outward), _f(q + off + 1.5 * outward), role="construction", layer=LAYER,
+                            step=f"sa{k}")
+            dimension(rec, a + off, b + off, f"sa{k}")
+            out.append((0.5 * (a + b) + off, f"s_a{k}", outward))
+        if k == 1:                                           # p: from tooth 0's flank to tooth 1's
+            f0, f1 = F, F * rot
+            a0, a1 = cmath.phase(f0), cmath.phase(f1)
+            rp = r_ - 6.0
+            for q in (f0, f1):
+                e = q / abs(q)
+                rec.segment(_f(centre + (r_ - 1.0) * e), _f(centre + (rp - 1.5) * e), role="construction",
+                            layer=LAYER, step="p")
+            arc_dimension(rec, centre, rp, min(a0, a1), max(a0, a1), "p")
+            mid = cmath.exp(1j * 0.5 * (a0 + a1))
+            out.append((centre + rp * mid, "p", -mid))
+    # pb laid off on N1N2 from B1 toward B2: ticks square to the line, the dimension 4 mm off it
+    n = 1j * u                                               # the line's normal (toward wheel 2's side)
+    E = B1 + pb * u
+    for q in (B1, E):
+        rec.segment(_f(q - 1.5 * n), _f(q - 7.5 * n), role="construction", layer=LAYER, step="pb")
+    dimension(rec, B1 - 6.0 * n, E - 6.0 * n, "pb")
+    out.append((B1 + 0.25 * (E - B1) - 6.0 * n, "p_b", -n))      # lettered near B1, clear of P
+    rec.segment(_f(B1), _f(B2), role="result", layer=LAYER, step="active part B1B2", width=0.9)
+    return out
 
 
 def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
