@@ -485,28 +485,46 @@ def test_the_notes_say_which_train_nearer_the_ratio_lost_and_why(tmp_path):
 
 
 def test_the_planetary_scheme_draws_each_wheel_as_gost_2770_does():
-    """Review 2, item 17: the scheme's wheels were bare strips. GOST 2.770: a wheel a line across its
-    radius with short bars square to it at its pitch circle — the sun's bar at r1, the planet's at
-    aw ± r2, the ring's at r3 (drawn at μl); no strip (polygon) left."""
+    """Reviews 1–5 (review 5, item 17): the scheme's wheels were bare strips, the sun and the planet one
+    vertical line, the ring a tick. Now the textbook's half-section: each wheel a rectangle of a face
+    width (≥ 6 mm) whose edge toward its mate is its pitch circle at μl — the sun's top at r1, the
+    planet's edges at aw ± r2 (2' likewise), the ring's lower edge at r3 —; the carrier H from the
+    planet's axle (at aw) down to the central axis; bearings (pairs of bars) on the input shaft, the
+    output shaft and the planet's axle; the ring's frame hatched above it; 1, 2, 3, H lettered within
+    8 mm of their members."""
     from graphplan.graphic.gears import construct_train
     for kind, u in (("A", 5.0), ("B", 12.0)):
         tr = solve_train(Train(kind, 3, 0.003, 100.0, ratio=u))
         vel = construct_train(tr, 0.5, "en")
         items = vel.record.items
-        assert not [q for q in items if q.kind == "polygon" and q.step in ("1", "2", "2'", "3")]
         r = {k: v / vel.mu_l for k, v in tr.radii.items()}
-        pitch = {"1": [r["1"]], "3": [r["3"]], "2": [r["H"] - r["2"], r["H"] + r["2"]]}
+        edges = {"1": ([r["1"]], "top"), "3": ([r["3"]], "bottom"), "2": ([r["H"] - r["2"], r["H"] + r["2"]], "both")}
         if kind == "B":
-            pitch["2'"] = [r["H"] - r["2'"], r["H"] + r["2'"]]
-        for member, ys in pitch.items():
-            bars = [q for q in items if q.step == f"{member} pitch"]
-            line = [q for q in items if q.step == member and q.kind == "segment"]
-            assert len(line) == 1 and abs(line[0].points[0][0] - line[0].points[1][0]) < 1e-9, member
-            assert len(bars) == len(ys), member
-            for q, y in zip(sorted(bars, key=lambda q: q.points[0][1]), sorted(ys)):
-                (x0, y0), (x1, y1) = q.points
-                assert y0 == y1 and abs(y0 - y) <= vel.precision, (member, y0, y)   # laid off to the ruler
-                assert x0 < line[0].points[0][0] < x1                                # square across the line
+            edges["2'"] = ([r["H"] - r["2'"], r["H"] + r["2'"]], "both")
+        boxes = {}
+        for member, (ys, which) in edges.items():
+            rect = [q for q in items if q.kind == "polygon" and q.step == member]
+            assert len(rect) == 1 and len(rect[0].points) == 4, member
+            xs_, ys_ = [p[0] for p in rect[0].points], [p[1] for p in rect[0].points]
+            assert max(xs_) - min(xs_) >= 6.0, member                       # a face width, not a line
+            got = {"top": [max(ys_)], "bottom": [min(ys_)], "both": [min(ys_), max(ys_)]}[which]
+            assert all(abs(g - y) <= vel.precision for g, y in zip(got, ys)), (member, got, ys)
+            boxes[member] = (min(xs_), min(ys_), max(xs_), max(ys_))
+        arm = [q for q in items if q.step == "H" and q.kind == "segment"]
+        assert len(arm) == 1 and {round(p[1], 6) for p in arm[0].points} == {0.0, round(vel.heights["O2"], 6)}
+        assert len([q for q in items if q.step == "bearing"]) >= 6                # three bearings, two bars each
+        assert [q for q in items if q.role == "hatch" and min(p[1] for p in q.points) > boxes["3"][3]]
+        letters: dict = {}
+        for q in items:                                                  # the scheme's are drawn first
+            if q.kind == "text":
+                letters.setdefault(q.text, q.bounds())
+        xh = arm[0].points[0][0]
+        boxes["H"] = (xh, 0.0, xh, vel.heights["O2"])
+        for member, (x0, y0, x1, y1) in boxes.items():
+            lb = letters[member]
+            dx = max(x0 - lb[2], lb[0] - x1, 0.0)
+            dy = max(y0 - lb[3], lb[1] - y1, 0.0)
+            assert math.hypot(dx, dy) <= 8.0, (member, lb, (x0, y0, x1, y1))
 
 
 def test_the_a1_sheet_grows_the_planetary_pictures_to_their_zone_within_the_meshing():

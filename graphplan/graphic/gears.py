@@ -709,12 +709,12 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     omega = {k: seg[k] * mu_v / (mu * h) for k in seg}
     ratio = seg["1"] / seg["H"] if seg["H"] else math.nan
     rec = Record("planetary")
-    _scheme(rec, tr, mu, yA, yO2, yC)
+    starts = _scheme(rec, tr, mu, yA, yO2, yC)
     # the velocity picture: the radii on one vertical line right of the scheme
-    X0 = 60.0
+    X0 = max(60.0, rec.bounds()[2] + 16.0)
     rec.segment((X0, -4.0), (X0, yC + 8.0), role="axis", layer=LAYER, step="radii")
-    for y in (yA, yO2, yC):
-        rec.segment((X0 - 50.0 if y != yC else X0 - 50.0, y), (X0, y), role="projection", layer=LAYER)
+    for y, x in zip((yA, yO2, yC), starts):     # from the scheme's points A, O2, C across
+        rec.segment((x, y), (X0, y), role="projection", layer=LAYER)
     a = complex(X0 + va, yA)
     o2 = complex(X0 + v_o2, yO2)
     C = complex(X0, yC)
@@ -801,48 +801,82 @@ def outside(graphical: float | None, exact: float, bound: float | None) -> bool:
     return abs(graphical - exact) > bound + 1e-9 * max(1.0, abs(exact))
 
 
-def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> None:
-    """The kinematic scheme's upper half (GOST 2.770): the central axis, the sun 1, the planet (block
-    2–2'), the fixed ring 3 with its hatching, the carrier H as a crank; each wheel a line across its
-    radius with short bars at its pitch circle; numbers beside the members."""
+BEARING = 1.6                # mm: a bearing's bars either side of its shaft (GOST 2.770)
+
+
+def _bearing(rec: Record, x: float, y: float, frame: bool = False, half: float = 2.5) -> None:
+    """A radial bearing on a shaft (GOST 2.770): two short bars parallel to the shaft either side of
+    it; ``frame``: set in the frame, hatched under its lower bar."""
+    for dy in (-BEARING, BEARING):
+        rec.segment((x - half, y + dy), (x + half, y + dy), role="link", layer=LAYER, step="bearing")
+    if frame:
+        yb = y - BEARING
+        rec.segment((x - half - 1.5, yb - 1.2), (x + half + 1.5, yb - 1.2), role="link", layer=LAYER, step="frame")
+        rec.segment((x, yb), (x, yb - 1.2), role="link", layer=LAYER, step="frame")
+        for k in range(4):
+            x0 = x - half - 1.5 + 2.0 * k
+            rec.segment((x0 + 2.0, yb - 1.2), (x0, yb - 3.2), role="hatch", layer=LAYER, step="frame")
+
+
+def _frame_over(rec: Record, x0: float, x1: float, y: float) -> None:
+    """The frame (the housing) as a thick line with hatching above it."""
+    rec.segment((x0, y), (x1, y), role="link", layer=LAYER, step="frame")
+    n = max(2, int((x1 - x0) / 2.5))
+    for k in range(n):
+        x = x0 + (x1 - x0) * k / n
+        rec.segment((x, y), (x + 2.5, y + 2.5), role="hatch", layer=LAYER, step="frame")
+
+
+def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> tuple[float, float, float]:
+    """The kinematic scheme in half-section over the central axis, as the textbook draws a 2K-H train
+    (GOST 2.770; review 5, item 17): each wheel a rectangle of its face width whose edge toward its
+    mate is its pitch circle (at μl: r1, aw ± r2, r3) — the sun's rim on a web from the input shaft,
+    the planet whole on its axle (its axis dash-dotted) turning in a bearing, the ring's rim on a web
+    into the frame, hatched —; the carrier H from the planet's axle to the output shaft; the shafts
+    in bearings set in the frame; the members numbered 1, 2 (2'), 3, H. Returns where the velocity
+    picture's projections start at the heights of A, O2 and C (the scheme's points)."""
     kind = tr.train.kind
     rad = tr.radii
-    w = 3.0                                  # a wheel's half-width
-    rec.segment((-48.0, 0.0), (38.0, 0.0), role="axis", layer=LAYER, step="central axis")
-    xs = 0.0
-    xb = 0.0 if kind == "A" else 14.0       # the second row (the ring's) for type B
-    # GOST 2.770: a wheel seen along the axial plane is a line across its radius with short bars
-    # square to it at its pitch circle (a planet: at both ends of its diameter)
-    def wheel(x: float, y0: float, y1: float, bars: tuple[float, ...], step: str) -> None:
-        rec.segment((x, y0), (x, y1), role="link", layer=LAYER, step=step)
-        for y in bars:
-            rec.segment((x - w, y), (x + w, y), role="link", layer=LAYER, step=f"{step} pitch")
-    # sun 1 on its shaft
-    wheel(xs, 1.5, yA, (yA,), "1")
-    rec.segment((-40.0, 1.5), (xs, 1.5), role="link", layer=LAYER)           # its shaft
-    # the planet (block 2–2′), both ends of its diameter on pitch circles
+    b = min(16.0, max(8.0, 0.18 * yC))       # a wheel's face width drawn
+    rim = min(6.0, max(3.0, 0.07 * yC))      # the sun's and the ring's rim drawn this deep
+    x1 = 0.0                                 # row 1: the sun, the planet 2 (and the ring for type A)
+    xb = 0.0 if kind == "A" else b + 6.0     # row 2 (type B): the planet 2', the ring
+    xh = xb + b / 2 + 7.0                    # the carrier's arm
+    end = xh + 24.0                          # the output shaft's end
+    rec.segment((-50.0, 0.0), (end + 4.0, 0.0), role="axis", layer=LAYER, step="central axis")
+
+    def box(xc: float, y0: float, y1: float, step: str) -> None:
+        rec.add("polygon", [(xc - b / 2, y0), (xc + b / 2, y0), (xc + b / 2, y1), (xc - b / 2, y1)],
+                role="link", layer=LAYER, step=step)
+    # the input shaft 1 in its bearing, the sun's web and rim (its pitch circle the rim's top edge)
+    rec.segment((-42.0, 0.0), (x1, 0.0), role="link", layer=LAYER, step="shaft 1")
+    _bearing(rec, -30.0, 0.0, frame=True)
+    rec.segment((x1, 0.0), (x1, yA - rim), role="link", layer=LAYER, step="1 web")
+    box(x1, yA - rim, yA, "1")
+    # the planet 2 (block 2–2'), whole, its axis dash-dotted, on the axle
     r2 = rad["2"] / mu
-    wheel(xs, yO2 - r2, yO2 + r2, (yO2 - r2, yO2 + r2), "2")
+    box(x1, yO2 - r2, yO2 + r2, "2")
     if kind == "B":
         r2b = rad["2'"] / mu
-        wheel(xb, yO2 - r2b, yO2 + r2b, (yO2 - r2b, yO2 + r2b), "2'")
-    rec.segment((xs - 8.0, yO2), (xb + 8.0, yO2), role="link", layer=LAYER, step="planet axis")
-    # ring 3 (internal): from its pitch circle out to the frame, hatched (fixed)
-    wheel(xb, yC, yC + 6.0, (yC,), "3")
-    rec.segment((xb - 9.0, yC + 6.0), (xb + 9.0, yC + 6.0), role="link", layer=LAYER)
-    for k in range(6):
-        x = xb - 9.0 + 3.0 * k
-        rec.segment((x, yC + 6.0), (x + 3.0, yC + 9.0), role="hatch", layer=LAYER)
-    # carrier H: from the planet axis down its arm beside the wheels to the output shaft
-    xh = xb + 16.0
-    rec.segment((xb + 8.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H")
-    rec.segment((xh, yO2), (xh, 1.5), role="link", layer=LAYER)
-    rec.segment((xh, 1.5), (38.0, 1.5), role="link", layer=LAYER)
+        box(xb, yO2 - r2b, yO2 + r2b, "2'")
+    rec.segment((x1 - b / 2 - 4.0, yO2), (xb + b / 2 + 4.0, yO2), role="axis", layer=LAYER, step="planet axis")
+    rec.segment((x1 - b / 2 - 2.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H axle")
+    _bearing(rec, xb + b / 2 + 3.0, yO2, half=1.5)
+    # the ring 3: its rim (the pitch circle its lower edge, the teeth inside), the web into the frame
+    box(xb, yC, yC + rim, "3")
+    top = yC + rim + 5.0
+    rec.segment((xb, yC + rim), (xb, top), role="link", layer=LAYER, step="3 web")
+    _frame_over(rec, xb - b / 2 - 4.0, xb + b / 2 + 4.0, top)
+    # the carrier H: its arm from the planet's axle down to the output shaft, in its bearing
+    rec.segment((xh, yO2), (xh, 0.0), role="link", layer=LAYER, step="H")
+    rec.segment((xh, 0.0), (end, 0.0), role="link", layer=LAYER, step="shaft H")
+    _bearing(rec, xh + 13.0, 0.0, frame=True)
     pl = Placer(rec)
-    pl.label(complex(xs - w, yA * 0.5), "1", toward=-1 + 0j)
-    pl.label(complex(xs - w, yO2 + r2 * 0.5), "2", toward=-1 + 0j)
+    pl.label(complex(x1 - b / 2, yA - rim / 2), "1", toward=-1 + 0j)
+    pl.label(complex(x1 - b / 2, yO2 + r2 * 0.5), "2", toward=-1 + 0j)
     if kind == "B":
-        pl.label(complex(xb + w, yO2 - rad["2'"] / mu * 0.5), "2'", toward=1 + 0j)
-    pl.label(complex(xb - w, yC + 3.0), "3", toward=-1 + 0j)
+        pl.label(complex(xb + b / 2, yO2 + rad["2'"] / mu * 0.6), "2'", toward=1 + 0j)
+    pl.label(complex(xb - b / 2, yC + rim / 2), "3", toward=-1 + 0j)
     pl.label(complex(xh, yO2 * 0.5), "H", toward=1 + 0j)
-    pl.label(complex(-44.0, 0.0), "O", toward=1j)
+    pl.label(complex(-46.0, 0.0), "O", toward=1j)
+    return x1 + b / 2, xh, xb + b / 2
