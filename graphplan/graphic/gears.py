@@ -470,7 +470,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     # what Table 1 reads, drawn where it is read (review 5, item 18): s and sa as chords on the pitch
     # and tip circles of each wheel's tooth beside the one at P, p as the arc between like flanks of
     # two teeth on wheel 1's pitch circle, pb laid off on N1N2 from B1, the active part B1B2 bold
-    marks = _readings(rec, teeth_pts, tau, B1, B2, u, d["pb"], P)
+    marks = _readings(rec, teeth_pts, tau, B1, B2, u, d["pb"], P, min(2, teeth // 2))
     # the arc of action on the rolling circles
     arc_ends: list[tuple[complex, str, complex]] = []
     for k, centre, rw, R, sign in ((1, O1, read["rw1"], R1, 1.0), (2, O2, read["rw2"], R2, -1.0)):
@@ -549,24 +549,24 @@ def arc_dimension(rec: Record, centre: complex, r: float, a0: float, a1: float, 
 
 
 def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: complex, pb: float,
-              P: complex) -> list[tuple[complex, str, complex]]:
+              P: complex, j: int = 1) -> list[tuple[complex, str, complex]]:
     """The constructions Table 1 reads, drawn and their letters' anchors returned (anchor, letter,
-    the side to put it): on each wheel's tooth beside the one at P (the next counter-clockwise:
-    left of P on wheel 1, right on wheel 2) the chord s on the pitch circle and sa on the tip circle
-    (a dimension 4 mm outside the tip on extension lines), p on wheel 1's pitch circle as the arc
-    from the flank through P to the like flank of that tooth (a dimension arc 6 mm inside on
-    extension lines), pb laid off on N1N2 from B1 (ticks and a dimension 6 mm off the line), B1B2
+    the side to put it): on each wheel's ``j``-th tooth counter-clockwise from the one at P (left of
+    P on wheel 1, right on wheel 2; the second where five or seven are drawn, clear of P's lines)
+    the chord s on the pitch circle and sa on the tip circle (a dimension 4 mm outside the tip on
+    extension lines), p on wheel 1's pitch circle as the arc between like flanks of that tooth and
+    the one before it (a dimension arc 6 mm inside on extension lines), pb laid off on N1N2 from B1 (ticks and a dimension 6 mm off the line), B1B2
     the active part of the line of action, bold."""
     out: list[tuple[complex, str, complex]] = []
     for k in (1, 2):
         theta_s, axis, R, r_, ra, centre = teeth_pts[k]
-        rot = cmath.exp(1j * tau[k - 1])                     # the next tooth, counter-clockwise
+        rot = cmath.exp(1j * j * tau[k - 1])                 # the j-th tooth, counter-clockwise
         F = _flank_at(R, theta_s, r_)
         M = abs(F) * cmath.exp(1j * (2 * axis - cmath.phase(F)))
         a, b = centre + F * rot, centre + M * rot
         dimension(rec, a, b, f"s{k}")
-        outward = cmath.exp(1j * (axis + tau[k - 1]))       # the tooth's axis, from its centre out
-        out.append((0.5 * (a + b) - 0.4 * outward * 0, f"s_{k}", -outward))
+        outward = cmath.exp(1j * (axis + j * tau[k - 1]))   # the tooth's axis, from its centre out
+        out.append((0.5 * (a + b), f"s_{k}", -outward))
         A = _flank_at(R, theta_s, ra)
         half = _wrap(cmath.phase(A) - axis)
         if half > 0:
@@ -578,8 +578,8 @@ def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: co
                             step=f"sa{k}")
             dimension(rec, a + off, b + off, f"sa{k}")
             out.append((0.5 * (a + b) + off, f"s_a{k}", outward))
-        if k == 1:                                           # p: from tooth 0's flank to tooth 1's
-            f0, f1 = F, F * rot
+        if k == 1:                                           # p: from tooth j − 1's flank to tooth j's
+            f0, f1 = F * rot * cmath.exp(-1j * tau[0]), F * rot
             a0, a1 = cmath.phase(f0), cmath.phase(f1)
             rp = r_ - 6.0
             for q in (f0, f1):
