@@ -462,7 +462,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         low = abs((B1 if k == 1 else B2) - centre)
         t_lo = math.sqrt(max(low * low - R * R, 0.0))
         t_hi = math.sqrt(ra * ra - R * R)
-        ts = np.linspace(t_lo, t_hi, involute_points(R, t_lo, t_hi))
+        ts = np.linspace(t_lo, t_hi, involute_points(R, t_lo, t_hi, 48))
         wp = _involute(R, theta_s, ts)
         normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in ts]
         rec.add("polyline", [_f(centre + q + 0.45 * nrm) for q, nrm in zip(wp, normal)], role="result",
