@@ -853,3 +853,38 @@ def test_the_a1_gear_sheet_fills_its_field_in_zones(name, lang, tmp_path):
     else:                                                               # in the row with the planetary train
         assert s[3] <= m[1] and (s[2] - s[0]) + (p[2] - p[0]) >= 0.7 * room, (s, p, room)
     assert s[3] - s[1] >= 120.0                                         # grown from 20 mm a unit of λ
+
+
+@pytest.mark.parametrize("name", ["review"])
+def test_readings_print_four_figures_on_the_sheet_as_in_the_terminal(name, tmp_path):
+    """Review 5, item 16: εα printed 1,20269562 / 1,20270270 and u1H 6,0345 against bounds of ±0,032
+    and ±0,22. Table 1's εα and Table 3's u1H and ω, exact and graphical, carry at most four
+    significant figures, each within half its last digit of the JSON's value, and the terminal prints
+    the same εα, u1H and δ strings."""
+    import re
+    from graphplan.exact.gears import solve as solve_scene
+    from graphplan.model.gears import load
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on, geometry_table, train_table
+    path = _scene_path(name, tmp_path)
+    sol = solve_scene(load(path))
+    mesh, vel, _ = construct_on(sol, form("A1"), 0.5, "en")          # the A1 sheet's, as the terminal
+    doc = gears_json(sol, mesh, vel, "")
+    figures = lambda c: len(re.sub(r"\D", "", c).lstrip("0"))             # noqa: E731
+    eps = next(r for r in _table_rows(geometry_table(doc, "en")) if r[0] == "ε_α")
+    train = _table_rows(train_table(doc, "en"))
+    u = next(r for r in train if r[0] == "u_{1H}")
+    omegas = [r for r in train if r[0].startswith("ω_")]
+    c, ratio = doc["pair"]["contact_ratio"], doc["planetary"]["ratio"]
+    for row, (ex, gr) in [(eps, (c["exact"], c["graphical"])), (u, (ratio["exact"], ratio["graphical"]))] + \
+            [(r, (doc["planetary"]["omega_rad_s"][r[0][2]], doc["planetary"]["graphical"]["omega_rad_s"][r[0][2]]))
+             for r in omegas]:
+        assert figures(row[1]) <= 4 and figures(row[2]) <= 4, row
+        assert abs(_value(row[1]) - ex) <= _last_digit(row[1]) / 2 + 1e-9, row
+        assert abs(_value(row[2]) - gr) <= _last_digit(row[2]) / 2 + 1e-9, row
+    code, out, err = run(["gears", str(path), "--lang", "en"])
+    assert code == 0, err
+    line = next(x for x in out.splitlines() if x.startswith("contact ratio"))
+    assert f"εα = {eps[1]} (graphically B1B2/pb = {eps[2]}, error {eps[3].rstrip('*!')} %" in line, \
+        (line, eps)
+    assert f"graphically {u[2]} " in next(x for x in out.splitlines() if x.startswith("teeth z"))
