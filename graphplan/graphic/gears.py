@@ -42,6 +42,7 @@ ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.30
 REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
 DIVISIONS = 4                  # equal parts of N1P for the involute
 LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
+NEAR_CLEAR = 0.9               # mm: a point's letter's glyphs this far off the lines' middles where placed near
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
 LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
 LAMBDA_CLIP = 3.0              # |λ| drawn up to 3 (±∞ at N1, N2)
@@ -107,23 +108,34 @@ class Placer:
             u = toward / abs(toward)
             dirs.sort(key=lambda d: -((d * u.conjugate()).real))
         far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
-        close = tuple(r for r in (0.8, 1.2, 1.8, 2.5, 3.5) if r <= LEADER)
-        passes = ([(True, close)] if near else []) + [(True, tuple(radii) + far), (False, tuple(radii) + far)]
-        for strict, rads in passes:           # first with the leader's path clear too, then the box alone
+        close = (0.8, 1.2, 1.8, 2.5, 3.5, 4.5, 5.5, 6.5)     # past 3.5 mm on a short leader
+        # a near letter's glyphs (its ink, not its advance box) kept NEAR_CLEAR off the lines' middles:
+        # less a thick line's half width (0.35 mm) and the sampled lines' 0.4 mm steps (0.2 mm), still
+        # more than the check's 0.3 mm
+        passes = ([(True, close, True)] if near else []) + [(True, tuple(radii) + far, False),
+                                                             (False, tuple(radii) + far, False)]
+        for strict, rads, by_ink in passes:   # first with the leader's path clear too, then the box alone
             for rad in rads:
                 for d in dirs:
                     # the box's nearest side ``rad`` from the anchor along d
                     cx = at.real + d.real * (rad + w / 2)
                     cy = at.imag + d.imag * (rad + size / 2)
-                    box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
-                    if not self.free(box):
+                    prim = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size)
+                    box = prim.bounds()
+                    if by_ink:
+                        keep, self.clear = self.clear, NEAR_CLEAR
+                        ok = self.free(prim.ink())
+                        self.clear = keep
+                        if not ok:
+                            continue
+                    elif not self.free(box):
                         continue
                     end = None
-                    if rad > LEADER:          # far from its point: a thin leader to the letter's box
+                    if rad > (3.5 if by_ink else LEADER):   # far from its point: a thin leader to the box
                         q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
                         end = at + (q - at) * (1 - 1.2 / abs(q - at))
                         if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
-                                              letters_only=not strict) or not self.free_path(at, end, True):
+                                              letters_only=by_ink or not strict) or not self.free_path(at, end, True):
                             continue            # (no leader through a letter, even near its point)
                     self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
                     self._add_box(box)
@@ -153,6 +165,12 @@ def _ink_points(p) -> list[tuple[float, float]]:
         for a, b in zip(pts[:-1], pts[1:]):
             n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
             out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
+        if p.kind == "vector":                # the arrowhead's filled triangle, wider than the line
+            from graphplan.graphic.record import vector_arrow
+            tri, _ = vector_arrow(p.points[0], p.points[1], p.line_width, p.role == "head")
+            for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+                n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
+                out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
         return out
     if p.kind in ("arc", "circle"):
         (cx, cy), r = p.points[0], p.radius
@@ -590,7 +608,7 @@ def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: co
             mid = cmath.exp(1j * 0.5 * (a0 + a1))
             out.append((centre + rp * mid, "p", -mid))
     # pb laid off on N1N2 from B1 toward B2: ticks square to the line, the dimension 4 mm off it
-    n = 1j * u                                               # the line's normal (toward wheel 2's side)
+    n = -1j * u                      # the line's normal on the side away from B1's letter (B1, B2 -n, +n)
     E = B1 + pb * u
     for q in (B1, E):
         rec.segment(_f(q - 1.5 * n), _f(q - 7.5 * n), role="construction", layer=LAYER, step="pb")
