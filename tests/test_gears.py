@@ -485,28 +485,46 @@ def test_the_notes_say_which_train_nearer_the_ratio_lost_and_why(tmp_path):
 
 
 def test_the_planetary_scheme_draws_each_wheel_as_gost_2770_does():
-    """Review 2, item 17: the scheme's wheels were bare strips. GOST 2.770: a wheel a line across its
-    radius with short bars square to it at its pitch circle — the sun's bar at r1, the planet's at
-    aw ± r2, the ring's at r3 (drawn at μl); no strip (polygon) left."""
+    """Reviews 1–5 (review 5, item 17): the scheme's wheels were bare strips, the sun and the planet one
+    vertical line, the ring a tick. Now the textbook's half-section: each wheel a rectangle of a face
+    width (≥ 6 mm) whose edge toward its mate is its pitch circle at μl — the sun's top at r1, the
+    planet's edges at aw ± r2 (2' likewise), the ring's lower edge at r3 —; the carrier H from the
+    planet's axle (at aw) down to the central axis; bearings (pairs of bars) on the input shaft, the
+    output shaft and the planet's axle; the ring's frame hatched above it; 1, 2, 3, H lettered within
+    8 mm of their members."""
     from graphplan.graphic.gears import construct_train
     for kind, u in (("A", 5.0), ("B", 12.0)):
         tr = solve_train(Train(kind, 3, 0.003, 100.0, ratio=u))
         vel = construct_train(tr, 0.5, "en")
         items = vel.record.items
-        assert not [q for q in items if q.kind == "polygon" and q.step in ("1", "2", "2'", "3")]
         r = {k: v / vel.mu_l for k, v in tr.radii.items()}
-        pitch = {"1": [r["1"]], "3": [r["3"]], "2": [r["H"] - r["2"], r["H"] + r["2"]]}
+        edges = {"1": ([r["1"]], "top"), "3": ([r["3"]], "bottom"), "2": ([r["H"] - r["2"], r["H"] + r["2"]], "both")}
         if kind == "B":
-            pitch["2'"] = [r["H"] - r["2'"], r["H"] + r["2'"]]
-        for member, ys in pitch.items():
-            bars = [q for q in items if q.step == f"{member} pitch"]
-            line = [q for q in items if q.step == member and q.kind == "segment"]
-            assert len(line) == 1 and abs(line[0].points[0][0] - line[0].points[1][0]) < 1e-9, member
-            assert len(bars) == len(ys), member
-            for q, y in zip(sorted(bars, key=lambda q: q.points[0][1]), sorted(ys)):
-                (x0, y0), (x1, y1) = q.points
-                assert y0 == y1 and abs(y0 - y) <= vel.precision, (member, y0, y)   # laid off to the ruler
-                assert x0 < line[0].points[0][0] < x1                                # square across the line
+            edges["2'"] = ([r["H"] - r["2'"], r["H"] + r["2'"]], "both")
+        boxes = {}
+        for member, (ys, which) in edges.items():
+            rect = [q for q in items if q.kind == "polygon" and q.step == member]
+            assert len(rect) == 1 and len(rect[0].points) == 4, member
+            xs_, ys_ = [p[0] for p in rect[0].points], [p[1] for p in rect[0].points]
+            assert max(xs_) - min(xs_) >= 6.0, member                       # a face width, not a line
+            got = {"top": [max(ys_)], "bottom": [min(ys_)], "both": [min(ys_), max(ys_)]}[which]
+            assert all(abs(g - y) <= vel.precision for g, y in zip(got, ys)), (member, got, ys)
+            boxes[member] = (min(xs_), min(ys_), max(xs_), max(ys_))
+        arm = [q for q in items if q.step == "H" and q.kind == "segment"]
+        assert len(arm) == 1 and {round(p[1], 6) for p in arm[0].points} == {0.0, round(vel.heights["O2"], 6)}
+        assert len([q for q in items if q.step == "bearing"]) >= 6                # three bearings, two bars each
+        assert [q for q in items if q.role == "hatch" and min(p[1] for p in q.points) > boxes["3"][3]]
+        letters: dict = {}
+        for q in items:                                                  # the scheme's are drawn first
+            if q.kind == "text":
+                letters.setdefault(q.text, q.bounds())
+        xh = arm[0].points[0][0]
+        boxes["H"] = (xh, 0.0, xh, vel.heights["O2"])
+        for member, (x0, y0, x1, y1) in boxes.items():
+            lb = letters[member]
+            dx = max(x0 - lb[2], lb[0] - x1, 0.0)
+            dy = max(y0 - lb[3], lb[1] - y1, 0.0)
+            assert math.hypot(dx, dy) <= 8.0, (member, lb, (x0, y0, x1, y1))
 
 
 def test_the_a1_sheet_grows_the_planetary_pictures_to_their_zone_within_the_meshing():
@@ -740,8 +758,8 @@ def test_the_ratio_read_on_generated_trains_is_within_the_worst_case(kind, u, K,
 def test_the_tables_print_no_trailing_zero_but_where_a_reading_is_and_eps_delta_is_the_true_one(name, lang, tmp_path):
     """Table 3's u1H and ω and Table 1's exact-only lengths carry no trailing zero ("6.0000", "150.00",
     "42.00" were printed); only the rows read off the drawing keep the ruler's decimals, which the notes
-    say. ε_α: δ worked out here from the two printed ε_α equals the terminal's δ (JSON error_pct) to
-    the printed δ's digits (1.212/1.207 gave 0.414 % against the true 0.392 %)."""
+    say. ε_α to four significant figures (the drawing's bound is ±0.03) and its δ the one worked out
+    from the two printed values, as the terminal prints them."""
     import re
     from graphplan.report.gears import solved
     from graphplan.sheets.gears import geometry_table, notes, train_table
@@ -758,11 +776,15 @@ def test_the_tables_print_no_trailing_zero_but_where_a_reading_is_and_eps_delta_
             if not row[0].startswith(read):
                 assert not any(trailing.match(c) for c in row[1:]), row
             if row[0] == "ε_α":
-                true = doc["pair"]["contact_ratio"]["error_pct"]
+                # four significant figures at most (review 5: 1,20269562 against a bound of ±0,032),
+                # the exact one within half its last digit, δ the one worked out from the printed two
+                true = doc["pair"]["contact_ratio"]
                 e, g = _value(row[1]), _value(row[2])
-                step = _last_digit(row[3])
-                assert abs(100.0 * (g - e) / e - true) <= step / 2 + 1e-12, (row, true)
-                assert abs(_value(row[3]) - true) <= step / 2 + 1e-12, (row, true)
+                assert all(len(re.sub(r"\D", "", c).lstrip("0")) <= 4 for c in row[1:3]), row
+                assert abs(e - true["exact"]) <= _last_digit(row[1]) / 2 + 1e-12, row
+                assert abs(g - true["graphical"]) <= _last_digit(row[2]) / 2 + 1e-12, row
+                step = _last_digit(row[3]) if row[3].strip("−0,.") else 1.0
+                assert abs(100.0 * (g - e) / e - _value(row[3])) <= step / 2 + 1e-12, row
         text = " ".join(notes(doc, lang, mesh, vel))
         assert ("0,01 мм" if lang == "uk" else "0.01 mm") in text or mesh.precision * mesh.mu_l * 1000 < 0.1
 
@@ -831,3 +853,38 @@ def test_the_a1_gear_sheet_fills_its_field_in_zones(name, lang, tmp_path):
     else:                                                               # in the row with the planetary train
         assert s[3] <= m[1] and (s[2] - s[0]) + (p[2] - p[0]) >= 0.7 * room, (s, p, room)
     assert s[3] - s[1] >= 120.0                                         # grown from 20 mm a unit of λ
+
+
+@pytest.mark.parametrize("name", ["review"])
+def test_readings_print_four_figures_on_the_sheet_as_in_the_terminal(name, tmp_path):
+    """Review 5, item 16: εα printed 1,20269562 / 1,20270270 and u1H 6,0345 against bounds of ±0,032
+    and ±0,22. Table 1's εα and Table 3's u1H and ω, exact and graphical, carry at most four
+    significant figures, each within half its last digit of the JSON's value, and the terminal prints
+    the same εα, u1H and δ strings."""
+    import re
+    from graphplan.exact.gears import solve as solve_scene
+    from graphplan.model.gears import load
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on, geometry_table, train_table
+    path = _scene_path(name, tmp_path)
+    sol = solve_scene(load(path))
+    mesh, vel, _ = construct_on(sol, form("A1"), 0.5, "en")          # the A1 sheet's, as the terminal
+    doc = gears_json(sol, mesh, vel, "")
+    figures = lambda c: len(re.sub(r"\D", "", c).lstrip("0"))             # noqa: E731
+    eps = next(r for r in _table_rows(geometry_table(doc, "en")) if r[0] == "ε_α")
+    train = _table_rows(train_table(doc, "en"))
+    u = next(r for r in train if r[0] == "u_{1H}")
+    omegas = [r for r in train if r[0].startswith("ω_")]
+    c, ratio = doc["pair"]["contact_ratio"], doc["planetary"]["ratio"]
+    for row, (ex, gr) in [(eps, (c["exact"], c["graphical"])), (u, (ratio["exact"], ratio["graphical"]))] + \
+            [(r, (doc["planetary"]["omega_rad_s"][r[0][2]], doc["planetary"]["graphical"]["omega_rad_s"][r[0][2]]))
+             for r in omegas]:
+        assert figures(row[1]) <= 4 and figures(row[2]) <= 4, row
+        assert abs(_value(row[1]) - ex) <= _last_digit(row[1]) / 2 + 1e-9, row
+        assert abs(_value(row[2]) - gr) <= _last_digit(row[2]) / 2 + 1e-9, row
+    code, out, err = run(["gears", str(path), "--lang", "en"])
+    assert code == 0, err
+    line = next(x for x in out.splitlines() if x.startswith("contact ratio"))
+    assert f"εα = {eps[1]} (graphically B1B2/pb = {eps[2]}, error {eps[3].rstrip('*!')} %" in line, \
+        (line, eps)
+    assert f"graphically {u[2]} " in next(x for x in out.splitlines() if x.startswith("teeth z"))

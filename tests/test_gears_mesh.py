@@ -157,3 +157,97 @@ def test_no_involute_mark_lies_past_its_wheels_tip_circle(z, x):
     for p in marks:
         k = p.step.split()[1].rstrip(":")
         assert abs(complex(*p.points[0]) - centre[k]) <= m.drawn[f"ra{k}"] + 1e-9, p.step
+
+
+# -- what Table 1 reads, drawn; the profiles smooth (review 5, items 18 and 19) -----------------------
+
+def _steps(mesh, name, kind=None):
+    return [q for q in mesh.record.items if q.step == name and (kind is None or q.kind == kind)]
+
+
+@pytest.mark.parametrize("z, x", [PAIRS[1], PAIRS[3], PAIRS[5]])
+def test_the_meshing_draws_s_sa_p_pb_and_b1b2_where_table_1_reads_them(z, x):
+    """The chord s of each wheel's tooth lies on its pitch circle with the tooth's flanks at its ends
+    and is the laid-off chord 2r·sin(s/2r); sa's dimension is the tip chord 2ra·sin(ψa) (ψa from the
+    involute function, written here); p is an arc of the pitch circle πm long (drawing mm); pb is laid
+    off on N1N2 from B1, pb = πm·cos α long; B1B2 is drawn bold from B1 to B2; each is lettered
+    (s_1, s_2, s_a1, s_a2, p, p_b) within 25 mm of its line (a leader's length at most)."""
+    from graphplan.graphic.gears import construct_mesh
+    sol = solve_pair(Pair(z, 0.004, x))
+    mesh = construct_mesh(sol, 0.0)
+    k = mesh.module_mm / 4.0                                      # drawing mm per part mm
+    O = {1: mesh.points["O1"], 2: mesh.points["O2"]}
+    alpha = math.radians(20.0)
+    inv = lambda a: math.tan(a) - a                               # noqa: E731
+    letters = {q.text: q.bounds() for q in mesh.record.items if q.kind == "text"}
+    for w in (1, 2):
+        r = 4.0 * sol.pair.z[w - 1] / 2 * k
+        s = 4.0 * (math.pi / 2 + 2 * x[w - 1] * math.tan(alpha)) * k
+        seg = _steps(mesh, f"s{w}", "segment")
+        assert len(seg) == 1
+        a, b = (complex(*q) for q in seg[0].points)
+        assert abs(abs(a - O[w]) - r) < 1e-6 and abs(abs(b - O[w]) - r) < 1e-6          # on the pitch circle
+        assert abs(abs(b - a) - 2 * r * math.sin(s / (2 * r))) < 1e-6                     # the chord of s
+        ra = sol.ra[w - 1] * 1000 * k
+        aa = math.acos(sol.rb[w - 1] * 1000 * k / ra)
+        psi = s / (2 * r) + inv(alpha) - inv(aa)                   # half the tip's angle
+        if psi > 0:
+            seg = _steps(mesh, f"sa{w}", "segment")
+            chord = max(abs(complex(*q.points[1]) - complex(*q.points[0])) for q in seg)
+            assert abs(chord - 2 * ra * math.sin(psi)) < 1e-6
+        for name in (f"s_{w}",) + ((f"s_a{w}",) if psi > 0 else ()):
+            assert name in letters, name
+    arc = _steps(mesh, "p", "arc")
+    assert len(arc) == 1
+    rp = arc[0].radius
+    a0, a1 = arc[0].angles
+    r1 = 4.0 * sol.pair.z[0] / 2 * k
+    assert abs(math.radians(a1 - a0) * r1 - math.pi * 4.0 * k) < 1e-6                  # p = πm on r1
+    B1, B2 = mesh.points["B1"], mesh.points["B2"]
+    dim = max(_steps(mesh, "pb", "segment"), key=lambda q: math.dist(*q.points))
+    assert abs(math.dist(*dim.points) - math.pi * 4.0 * math.cos(alpha) * k) < 1e-6        # pb = πm·cos α
+    u = (B2 - B1) / abs(B2 - B1)
+    start = complex(*dim.points[0])
+    assert abs(((start - B1) / u).real) < 1e-6                                            # from B1
+    active = _steps(mesh, "active part B1B2", "segment")
+    assert len(active) == 1 and active[0].line_width >= 0.7
+    assert {complex(*q) for q in active[0].points} == {B1, B2}
+    for name, prim in (("p", arc[0]), ("p_b", dim)):
+        box = letters[name]
+        pts = [complex(*q) for q in prim.points] if prim.kind != "arc" else \
+            [O[1] + rp * complex(math.cos(math.radians(t)), math.sin(math.radians(t))) for t in (a0, a1)]
+        mid = sum(pts) / len(pts)
+        assert math.hypot(max(box[0] - mid.real, mid.real - box[2], 0), max(box[1] - mid.imag, mid.imag - box[3], 0)) < 25.0 \
+            + abs(pts[0] - pts[-1]) / 2
+
+
+def _sagittas(points):
+    """The sagittas of the chords of a polyline on the circle through each three points in a row
+    (a turn past 20° is a corner of the outline — tip and flank —, and two chords of lengths more than
+    1.3 apart the joint of two curves — a fillet and the root —, not chords of one curve)."""
+    pts = [complex(*q) for q in points]
+    out = []
+    for a, b, c in zip(pts, pts[1:], pts[2:]):
+        if min(abs(b - a), abs(c - b)) < 1e-9 or abs(math.degrees(math.atan2(((c - b) / (b - a)).imag,
+                                                                             ((c - b) / (b - a)).real))) > 20.0:
+            continue
+        area = abs(((b - a).conjugate() * (c - a)).imag) / 2
+        if area < 1e-12 or max(abs(b - a), abs(c - b)) > 1.3 * min(abs(b - a), abs(c - b)):
+            continue
+        R = abs(b - a) * abs(c - b) * abs(c - a) / (4 * area)
+        L = max(abs(b - a), abs(c - b))
+        out.append(R - math.sqrt(max(R * R - L * L / 4, 0.0)))
+    return out
+
+
+@pytest.mark.parametrize("z, x", [PAIRS[1], PAIRS[3]])
+def test_the_profiles_show_no_corner_at_the_drawing_scale(z, x):
+    """The bold working parts and the teeth's outlines (fillets, involutes, tips, roots) as chords
+    that sag at most 0.03 mm off the curve (at 5:1 the 12-point working parts sagged about 0.07 mm and
+    showed corners, review 5 item 19)."""
+    from graphplan.graphic.gears import construct_mesh
+    mesh = construct_mesh(solve_pair(Pair(z, 0.004, x)), 0.5)
+    lines = [q for q in mesh.record.items if q.kind == "polyline" and q.step.startswith(("teeth", "working part"))]
+    assert len(lines) == 4
+    for q in lines:
+        assert max(_sagittas(q.points)) <= 0.03, q.step

@@ -42,6 +42,7 @@ ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.30
 REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
 DIVISIONS = 4                  # equal parts of N1P for the involute
 LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
+NEAR_CLEAR = 0.9               # mm: a point's letter's glyphs this far off the lines' middles where placed near
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
 LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
 LAMBDA_CLIP = 3.0              # |λ| drawn up to 3 (±∞ at N1, N2)
@@ -96,28 +97,45 @@ class Placer:
         return True
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False) -> bool:
+              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False,
+              near: bool = False) -> bool:
+        """``near``: a point's letter (N1, B1, P …) tried first close to its point in 32 directions
+        before it is taken farther on a leader (review 5: N1 7 mm off)."""
         w = text_width(text, size)
-        dirs = [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
+        dirs = [cmath.exp(1j * math.pi * k / 16) for k in range(32)] if near else \
+            [cmath.exp(1j * math.pi * k / 8) for k in range(16)]
         if toward is not None and abs(toward) > 0:
             u = toward / abs(toward)
             dirs.sort(key=lambda d: -((d * u.conjugate()).real))
         far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
-        for strict in (True, False):          # first with the leader's path clear too, then the box alone
-            for rad in tuple(radii) + far:
+        close = (0.8, 1.2, 1.8, 2.5, 3.5, 4.5, 5.5, 6.5)     # past 3.5 mm on a short leader
+        # a near letter's glyphs (its ink, not its advance box) kept NEAR_CLEAR off the lines' middles:
+        # less a thick line's half width (0.35 mm) and the sampled lines' 0.4 mm steps (0.2 mm), still
+        # more than the check's 0.3 mm
+        passes = ([(True, close, True)] if near else []) + [(True, tuple(radii) + far, False),
+                                                             (False, tuple(radii) + far, False)]
+        for strict, rads, by_ink in passes:   # first with the leader's path clear too, then the box alone
+            for rad in rads:
                 for d in dirs:
                     # the box's nearest side ``rad`` from the anchor along d
                     cx = at.real + d.real * (rad + w / 2)
                     cy = at.imag + d.imag * (rad + size / 2)
-                    box = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size).bounds()
-                    if not self.free(box):
+                    prim = Primitive("text", ((cx - w / 2, cy - size / 2),), text=text, size=size)
+                    box = prim.bounds()
+                    if by_ink:
+                        keep, self.clear = self.clear, NEAR_CLEAR
+                        ok = self.free(prim.ink())
+                        self.clear = keep
+                        if not ok:
+                            continue
+                    elif not self.free(box):
                         continue
                     end = None
-                    if rad > LEADER:          # far from its point: a thin leader to the letter's box
+                    if rad > (3.5 if by_ink else LEADER):   # far from its point: a thin leader to the box
                         q = complex(min(max(at.real, box[0]), box[2]), min(max(at.imag, box[1]), box[3]))
                         end = at + (q - at) * (1 - 1.2 / abs(q - at))
                         if not self.free_path(at + (end - at) * min(0.5, 3.0 / abs(end - at)), end,
-                                              letters_only=not strict) or not self.free_path(at, end, True):
+                                              letters_only=by_ink or not strict) or not self.free_path(at, end, True):
                             continue            # (no leader through a letter, even near its point)
                     self.rec.label((cx - w / 2, cy - size / 2), text, size=size, layer=LAYER)
                     self._add_box(box)
@@ -147,6 +165,12 @@ def _ink_points(p) -> list[tuple[float, float]]:
         for a, b in zip(pts[:-1], pts[1:]):
             n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
             out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
+        if p.kind == "vector":                # the arrowhead's filled triangle, wider than the line
+            from graphplan.graphic.record import vector_arrow
+            tri, _ = vector_arrow(p.points[0], p.points[1], p.line_width, p.role == "head")
+            for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+                n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
+                out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
         return out
     if p.kind in ("arc", "circle"):
         (cx, cy), r = p.points[0], p.radius
@@ -262,6 +286,26 @@ def mesh_scale(sol: PairSolution, height_mm: float = 480.0, width_mm: float = 78
     return m * min(ok, key=lambda k: (far(k), -k))
 
 
+SAG = 0.02                     # mm: the largest sagitta of a chord standing for an arc of a profile (no
+#                                corner shows at the drawing's scale, review 5 item 19)
+
+
+def arc_points(r: float, sweep: float, least: int = 3) -> int:
+    """Points enough to draw an arc of radius ``r`` mm over ``sweep`` rad as chords of sagitta at
+    most ``SAG``: r·(1 − cos(Δ/2)) ≤ SAG, Δ ≤ 2·acos(1 − SAG/r)."""
+    if r <= SAG:
+        return least
+    return max(least, int(math.ceil(abs(sweep) / (2 * math.acos(1 - SAG / r)))) + 1)
+
+
+def involute_points(R: float, t0: float, t1: float, least: int = 12) -> int:
+    """Points enough for the involute of the base circle R from the unrolled length t0 to t1 as
+    chords of sagitta at most ``SAG``: its tangent turns by dt/R and its radius of curvature is t, so
+    a chord over Δt sags about t·(Δt/R)²/8."""
+    dt = R * math.sqrt(8 * SAG / max(t1, 1e-9))
+    return max(least, int(math.ceil((t1 - t0) / dt)) + 1)
+
+
 def _involute(R: float, theta_s: float, t: np.ndarray) -> np.ndarray:
     """Points of the involute of the circle R (centre 0) unrolled from the angle θS: the tangent
     points at θS − t/R, the unrolled length t laid off along each tangent."""
@@ -275,14 +319,14 @@ def _flank_at(R: float, theta_s: float, radius: float) -> complex:
     return complex(_involute(R, theta_s, np.array([t]))[0])
 
 
-def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int = 64) -> list[complex]:
+def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: float, n: int | None = None) -> list[complex]:
     """One tooth's outline (centre 0), from its left root fillet over the tip to its right one: the
     fillet (radius 0.38m, tangent to the root circle and to the radial line under the involute),
     the radial line to the base circle, the involute to the tip circle, the tip arc, the mirror."""
     start = max(R, rf + 1e-9)
     t0 = math.sqrt(max(start * start - R * R, 0.0))
     t1 = math.sqrt(ra * ra - R * R)
-    inv_pts = list(_involute(R, theta_s, np.linspace(t0, t1, n)))
+    inv_pts = list(_involute(R, theta_s, np.linspace(t0, t1, n or involute_points(R, t0, t1, 64))))
     beta = cmath.phase(inv_pts[0])
     left: list[complex] = []
     gap = start - rf
@@ -291,14 +335,15 @@ def _tooth(R: float, theta_s: float, rf: float, ra: float, axis: float, md: floa
         d = math.asin(rho / (rf + rho))
         c = (rf + rho) * cmath.exp(1j * (beta + d))
         a_from, a_to = beta + d - math.pi, beta - math.pi / 2
-        left += [c + rho * cmath.exp(1j * a) for a in np.linspace(a_from, a_to, 8)]
+        left += [c + rho * cmath.exp(1j * a) for a in np.linspace(a_from, a_to, arc_points(rho, a_to - a_from, 8))]
     left += inv_pts
     # mirror about the axis: angle a → 2·axis − a
     mirror = [abs(q) * cmath.exp(1j * (2 * axis - cmath.phase(q))) for q in reversed(left)]
     a_left, a_right = cmath.phase(left[-1]), cmath.phase(mirror[0])
     if _wrap(a_left - axis) * _wrap(a_right - axis) >= 0:       # pointed within the tip circle
         return left + mirror
-    tip = [ra * cmath.exp(1j * a) for a in np.linspace(a_left, a_left + _wrap(a_right - a_left), 6)[1:-1]]
+    sweep = _wrap(a_right - a_left)
+    tip = [ra * cmath.exp(1j * a) for a in np.linspace(a_left, a_left + sweep, arc_points(ra, sweep, 6))[1:-1]]
     return left + tip + mirror
 
 
@@ -426,17 +471,24 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             if outline:                              # the root circle between the teeth
                 a0, a1 = cmath.phase(outline[-1]), cmath.phase(pts[0])
                 sweep = _wrap(a1 - a0)
-                outline += [rf * cmath.exp(1j * (a0 + sweep * t)) for t in np.linspace(0, 1, 8)[1:-1]]
+                outline += [rf * cmath.exp(1j * (a0 + sweep * t))
+                            for t in np.linspace(0, 1, arc_points(rf, sweep, 8))[1:-1]]
             outline += pts
-        teeth_pts[k] = (theta_s, axis)
+        teeth_pts[k] = (theta_s, axis, R, r_, ra, centre)
         rec.add("polyline", [_f(centre + q) for q in outline], role="link", layer=LAYER, step=f"teeth {k}")
         # the working part of the flank in mesh: from the radius of B1 (wheel 1) or B2 (wheel 2) to the tip
         low = abs((B1 if k == 1 else B2) - centre)
         t_lo = math.sqrt(max(low * low - R * R, 0.0))
-        wp = _involute(R, theta_s, np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12))
-        normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in np.linspace(t_lo, math.sqrt(ra * ra - R * R), 12)]
+        t_hi = math.sqrt(ra * ra - R * R)
+        ts = np.linspace(t_lo, t_hi, involute_points(R, t_lo, t_hi, 48))
+        wp = _involute(R, theta_s, ts)
+        normal = [-1j * cmath.exp(1j * (theta_s - t / R)) for t in ts]
         rec.add("polyline", [_f(centre + q + 0.45 * nrm) for q, nrm in zip(wp, normal)], role="result",
                 layer=LAYER, step=f"working part {k}", width=0.9)
+    # what Table 1 reads, drawn where it is read (review 5, item 18): s and sa as chords on the pitch
+    # and tip circles of each wheel's tooth beside the one at P, p as the arc between like flanks of
+    # two teeth on wheel 1's pitch circle, pb laid off on N1N2 from B1, the active part B1B2 bold
+    marks = _readings(rec, teeth_pts, tau, B1, B2, u, d["pb"], P, min(2, teeth // 2))
     # the arc of action on the rolling circles
     arc_ends: list[tuple[complex, str, complex]] = []
     for k, centre, rw, R, sign in ((1, O1, read["rw1"], R1, 1.0), (2, O2, read["rw2"], R2, -1.0)):
@@ -459,11 +511,13 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     if not cut:
         pl.label(O1, "O_1", toward=-1 + 0j)
         pl.label(O2, "O_2", toward=-1 + 0j)
-    pl.label(P, "P", toward=1 + 0.3j)
-    pl.label(N1, "N_1", toward=1 + 0j)
-    pl.label(N2, "N_2", toward=-1 + 0j)
-    pl.label(B1, "B_1", toward=-1j * u)
-    pl.label(B2, "B_2", toward=1j * u)
+    pl.label(P, "P", toward=1 + 0.3j, near=True)
+    pl.label(N1, "N_1", toward=1 + 0j, near=True)
+    pl.label(N2, "N_2", toward=-1 + 0j, near=True)
+    pl.label(B1, "B_1", toward=-1j * u, near=True)
+    pl.label(B2, "B_2", toward=1j * u, near=True)
+    for at, name, out in marks:
+        pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), near=True)
     for at, name, out in arc_ends:
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
     pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
@@ -489,6 +543,79 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                               "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh
+
+
+def dimension(rec: Record, a: complex, b: complex, step: str) -> None:
+    """A thin dimension line from a to b with an arrowhead at each end (GOST 2.307)."""
+    rec.segment(_f(a), _f(b), role="construction", layer=LAYER, step=step)
+    n = abs(b - a)
+    if n <= 0:
+        return
+    head = min(2.5, 0.4 * n) * (b - a) / n
+    rec.vector(_f(a + head), _f(a), role="head", layer=LAYER, step=step)
+    rec.vector(_f(b - head), _f(b), role="head", layer=LAYER, step=step)
+
+
+def arc_dimension(rec: Record, centre: complex, r: float, a0: float, a1: float, step: str) -> None:
+    """A thin dimension arc of radius r about ``centre`` from the angle a0 to a1 (rad, a0 < a1) with
+    an arrowhead at each end."""
+    from graphplan.graphic.record import arc_head
+    rec.arc(_f(centre), r, math.degrees(a0), math.degrees(a1), role="construction", layer=LAYER, step=step)
+    for end, sense in ((a1, 1), (a0, -1)):
+        tail, tip = arc_head(centre, r, math.degrees(end), sense, length=2.5)
+        rec.vector(tail, tip, role="head", layer=LAYER, step=step)
+
+
+def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: complex, pb: float,
+              P: complex, j: int = 1) -> list[tuple[complex, str, complex]]:
+    """The constructions Table 1 reads, drawn and their letters' anchors returned (anchor, letter,
+    the side to put it): on each wheel's ``j``-th tooth counter-clockwise from the one at P (left of
+    P on wheel 1, right on wheel 2; the second where five or seven are drawn, clear of P's lines)
+    the chord s on the pitch circle and sa on the tip circle (a dimension 4 mm outside the tip on
+    extension lines), p on wheel 1's pitch circle as the arc between like flanks of that tooth and
+    the one before it (a dimension arc 6 mm inside on extension lines), pb laid off on N1N2 from B1 (ticks and a dimension 6 mm off the line), B1B2
+    the active part of the line of action, bold."""
+    out: list[tuple[complex, str, complex]] = []
+    for k in (1, 2):
+        theta_s, axis, R, r_, ra, centre = teeth_pts[k]
+        rot = cmath.exp(1j * j * tau[k - 1])                 # the j-th tooth, counter-clockwise
+        F = _flank_at(R, theta_s, r_)
+        M = abs(F) * cmath.exp(1j * (2 * axis - cmath.phase(F)))
+        a, b = centre + F * rot, centre + M * rot
+        dimension(rec, a, b, f"s{k}")
+        outward = cmath.exp(1j * (axis + j * tau[k - 1]))   # the tooth's axis, from its centre out
+        out.append((0.5 * (a + b), f"s_{k}", -outward))
+        A = _flank_at(R, theta_s, ra)
+        half = _wrap(cmath.phase(A) - axis)
+        if half > 0:
+            A2 = abs(A) * cmath.exp(1j * (2 * axis - cmath.phase(A)))
+            a, b = centre + A * rot, centre + A2 * rot
+            off = 4.0 * outward
+            for q in (a, b):
+                rec.segment(_f(q + 0.8 * outward), _f(q + off + 1.5 * outward), role="construction", layer=LAYER,
+                            step=f"sa{k}")
+            dimension(rec, a + off, b + off, f"sa{k}")
+            out.append((0.5 * (a + b) + off, f"s_a{k}", outward))
+        if k == 1:                                           # p: from tooth j − 1's flank to tooth j's
+            f0, f1 = F * rot * cmath.exp(-1j * tau[0]), F * rot
+            a0, a1 = cmath.phase(f0), cmath.phase(f1)
+            rp = r_ - 6.0
+            for q in (f0, f1):
+                e = q / abs(q)
+                rec.segment(_f(centre + (r_ - 1.0) * e), _f(centre + (rp - 1.5) * e), role="construction",
+                            layer=LAYER, step="p")
+            arc_dimension(rec, centre, rp, min(a0, a1), max(a0, a1), "p")
+            mid = cmath.exp(1j * 0.5 * (a0 + a1))
+            out.append((centre + rp * mid, "p", -mid))
+    # pb laid off on N1N2 from B1 toward B2: ticks square to the line, the dimension 4 mm off it
+    n = -1j * u                      # the line's normal on the side away from B1's letter (B1, B2 -n, +n)
+    E = B1 + pb * u
+    for q in (B1, E):
+        rec.segment(_f(q - 1.5 * n), _f(q - 7.5 * n), role="construction", layer=LAYER, step="pb")
+    dimension(rec, B1 - 6.0 * n, E - 6.0 * n, "pb")
+    out.append((B1 + 0.25 * (E - B1) - 6.0 * n, "p_b", -n))      # lettered near B1, clear of P
+    rec.segment(_f(B1), _f(B2), role="result", layer=LAYER, step="active part B1B2", width=0.9)
+    return out
 
 
 def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
@@ -600,12 +727,12 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     omega = {k: seg[k] * mu_v / (mu * h) for k in seg}
     ratio = seg["1"] / seg["H"] if seg["H"] else math.nan
     rec = Record("planetary")
-    _scheme(rec, tr, mu, yA, yO2, yC)
+    starts = _scheme(rec, tr, mu, yA, yO2, yC)
     # the velocity picture: the radii on one vertical line right of the scheme
-    X0 = 60.0
+    X0 = max(60.0, rec.bounds()[2] + 16.0)
     rec.segment((X0, -4.0), (X0, yC + 8.0), role="axis", layer=LAYER, step="radii")
-    for y in (yA, yO2, yC):
-        rec.segment((X0 - 50.0 if y != yC else X0 - 50.0, y), (X0, y), role="projection", layer=LAYER)
+    for y, x in zip((yA, yO2, yC), starts):     # from the scheme's points A, O2, C across
+        rec.segment((x, y), (X0, y), role="projection", layer=LAYER)
     a = complex(X0 + va, yA)
     o2 = complex(X0 + v_o2, yO2)
     C = complex(X0, yC)
@@ -692,48 +819,82 @@ def outside(graphical: float | None, exact: float, bound: float | None) -> bool:
     return abs(graphical - exact) > bound + 1e-9 * max(1.0, abs(exact))
 
 
-def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> None:
-    """The kinematic scheme's upper half (GOST 2.770): the central axis, the sun 1, the planet (block
-    2–2'), the fixed ring 3 with its hatching, the carrier H as a crank; each wheel a line across its
-    radius with short bars at its pitch circle; numbers beside the members."""
+BEARING = 1.6                # mm: a bearing's bars either side of its shaft (GOST 2.770)
+
+
+def _bearing(rec: Record, x: float, y: float, frame: bool = False, half: float = 2.5) -> None:
+    """A radial bearing on a shaft (GOST 2.770): two short bars parallel to the shaft either side of
+    it; ``frame``: set in the frame, hatched under its lower bar."""
+    for dy in (-BEARING, BEARING):
+        rec.segment((x - half, y + dy), (x + half, y + dy), role="link", layer=LAYER, step="bearing")
+    if frame:
+        yb = y - BEARING
+        rec.segment((x - half - 1.5, yb - 1.2), (x + half + 1.5, yb - 1.2), role="link", layer=LAYER, step="frame")
+        rec.segment((x, yb), (x, yb - 1.2), role="link", layer=LAYER, step="frame")
+        for k in range(4):
+            x0 = x - half - 1.5 + 2.0 * k
+            rec.segment((x0 + 2.0, yb - 1.2), (x0, yb - 3.2), role="hatch", layer=LAYER, step="frame")
+
+
+def _frame_over(rec: Record, x0: float, x1: float, y: float) -> None:
+    """The frame (the housing) as a thick line with hatching above it."""
+    rec.segment((x0, y), (x1, y), role="link", layer=LAYER, step="frame")
+    n = max(2, int((x1 - x0) / 2.5))
+    for k in range(n):
+        x = x0 + (x1 - x0) * k / n
+        rec.segment((x, y), (x + 2.5, y + 2.5), role="hatch", layer=LAYER, step="frame")
+
+
+def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> tuple[float, float, float]:
+    """The kinematic scheme in half-section over the central axis, as the textbook draws a 2K-H train
+    (GOST 2.770; review 5, item 17): each wheel a rectangle of its face width whose edge toward its
+    mate is its pitch circle (at μl: r1, aw ± r2, r3) — the sun's rim on a web from the input shaft,
+    the planet whole on its axle (its axis dash-dotted) turning in a bearing, the ring's rim on a web
+    into the frame, hatched —; the carrier H from the planet's axle to the output shaft; the shafts
+    in bearings set in the frame; the members numbered 1, 2 (2'), 3, H. Returns where the velocity
+    picture's projections start at the heights of A, O2 and C (the scheme's points)."""
     kind = tr.train.kind
     rad = tr.radii
-    w = 3.0                                  # a wheel's half-width
-    rec.segment((-48.0, 0.0), (38.0, 0.0), role="axis", layer=LAYER, step="central axis")
-    xs = 0.0
-    xb = 0.0 if kind == "A" else 14.0       # the second row (the ring's) for type B
-    # GOST 2.770: a wheel seen along the axial plane is a line across its radius with short bars
-    # square to it at its pitch circle (a planet: at both ends of its diameter)
-    def wheel(x: float, y0: float, y1: float, bars: tuple[float, ...], step: str) -> None:
-        rec.segment((x, y0), (x, y1), role="link", layer=LAYER, step=step)
-        for y in bars:
-            rec.segment((x - w, y), (x + w, y), role="link", layer=LAYER, step=f"{step} pitch")
-    # sun 1 on its shaft
-    wheel(xs, 1.5, yA, (yA,), "1")
-    rec.segment((-40.0, 1.5), (xs, 1.5), role="link", layer=LAYER)           # its shaft
-    # the planet (block 2–2′), both ends of its diameter on pitch circles
+    b = min(16.0, max(8.0, 0.18 * yC))       # a wheel's face width drawn
+    rim = min(6.0, max(3.0, 0.07 * yC))      # the sun's and the ring's rim drawn this deep
+    x1 = 0.0                                 # row 1: the sun, the planet 2 (and the ring for type A)
+    xb = 0.0 if kind == "A" else b + 6.0     # row 2 (type B): the planet 2', the ring
+    xh = xb + b / 2 + 7.0                    # the carrier's arm
+    end = xh + 24.0                          # the output shaft's end
+    rec.segment((-50.0, 0.0), (end + 4.0, 0.0), role="axis", layer=LAYER, step="central axis")
+
+    def box(xc: float, y0: float, y1: float, step: str) -> None:
+        rec.add("polygon", [(xc - b / 2, y0), (xc + b / 2, y0), (xc + b / 2, y1), (xc - b / 2, y1)],
+                role="link", layer=LAYER, step=step)
+    # the input shaft 1 in its bearing, the sun's web and rim (its pitch circle the rim's top edge)
+    rec.segment((-42.0, 0.0), (x1, 0.0), role="link", layer=LAYER, step="shaft 1")
+    _bearing(rec, -30.0, 0.0, frame=True)
+    rec.segment((x1, 0.0), (x1, yA - rim), role="link", layer=LAYER, step="1 web")
+    box(x1, yA - rim, yA, "1")
+    # the planet 2 (block 2–2'), whole, its axis dash-dotted, on the axle
     r2 = rad["2"] / mu
-    wheel(xs, yO2 - r2, yO2 + r2, (yO2 - r2, yO2 + r2), "2")
+    box(x1, yO2 - r2, yO2 + r2, "2")
     if kind == "B":
         r2b = rad["2'"] / mu
-        wheel(xb, yO2 - r2b, yO2 + r2b, (yO2 - r2b, yO2 + r2b), "2'")
-    rec.segment((xs - 8.0, yO2), (xb + 8.0, yO2), role="link", layer=LAYER, step="planet axis")
-    # ring 3 (internal): from its pitch circle out to the frame, hatched (fixed)
-    wheel(xb, yC, yC + 6.0, (yC,), "3")
-    rec.segment((xb - 9.0, yC + 6.0), (xb + 9.0, yC + 6.0), role="link", layer=LAYER)
-    for k in range(6):
-        x = xb - 9.0 + 3.0 * k
-        rec.segment((x, yC + 6.0), (x + 3.0, yC + 9.0), role="hatch", layer=LAYER)
-    # carrier H: from the planet axis down its arm beside the wheels to the output shaft
-    xh = xb + 16.0
-    rec.segment((xb + 8.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H")
-    rec.segment((xh, yO2), (xh, 1.5), role="link", layer=LAYER)
-    rec.segment((xh, 1.5), (38.0, 1.5), role="link", layer=LAYER)
+        box(xb, yO2 - r2b, yO2 + r2b, "2'")
+    rec.segment((x1 - b / 2 - 4.0, yO2), (xb + b / 2 + 4.0, yO2), role="axis", layer=LAYER, step="planet axis")
+    rec.segment((x1 - b / 2 - 2.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H axle")
+    _bearing(rec, xb + b / 2 + 3.0, yO2, half=1.5)
+    # the ring 3: its rim (the pitch circle its lower edge, the teeth inside), the web into the frame
+    box(xb, yC, yC + rim, "3")
+    top = yC + rim + 5.0
+    rec.segment((xb, yC + rim), (xb, top), role="link", layer=LAYER, step="3 web")
+    _frame_over(rec, xb - b / 2 - 4.0, xb + b / 2 + 4.0, top)
+    # the carrier H: its arm from the planet's axle down to the output shaft, in its bearing
+    rec.segment((xh, yO2), (xh, 0.0), role="link", layer=LAYER, step="H")
+    rec.segment((xh, 0.0), (end, 0.0), role="link", layer=LAYER, step="shaft H")
+    _bearing(rec, xh + 13.0, 0.0, frame=True)
     pl = Placer(rec)
-    pl.label(complex(xs - w, yA * 0.5), "1", toward=-1 + 0j)
-    pl.label(complex(xs - w, yO2 + r2 * 0.5), "2", toward=-1 + 0j)
+    pl.label(complex(x1 - b / 2, yA - rim / 2), "1", toward=-1 + 0j)
+    pl.label(complex(x1 - b / 2, yO2 + r2 * 0.5), "2", toward=-1 + 0j)
     if kind == "B":
-        pl.label(complex(xb + w, yO2 - rad["2'"] / mu * 0.5), "2'", toward=1 + 0j)
-    pl.label(complex(xb - w, yC + 3.0), "3", toward=-1 + 0j)
+        pl.label(complex(xb + b / 2, yO2 + rad["2'"] / mu * 0.6), "2'", toward=1 + 0j)
+    pl.label(complex(xb - b / 2, yC + rim / 2), "3", toward=-1 + 0j)
     pl.label(complex(xh, yO2 * 0.5), "H", toward=1 + 0j)
-    pl.label(complex(-44.0, 0.0), "O", toward=1j)
+    pl.label(complex(-46.0, 0.0), "O", toward=1j)
+    return x1 + b / 2, xh, xb + b / 2

@@ -197,6 +197,13 @@ def agreeing(exact: float, graphical: float | None, decimals: int, lang: str
     return text(e), text(g), (100.0 * (g - e) / e if e else None)
 
 
+def contact_ratio_text(exact: float, graphical: float | None, lang: str) -> tuple[str, str, float | None]:
+    """εα exact and read off the drawing (B1B2/pb) to ``READ_DIGITS`` significant figures and δ % worked
+    out from the two printed numbers (``agreeing``), as the sheet's Table 1 and the terminal print
+    them: (exact, graphical, δ)."""
+    return agreeing(exact, graphical, sig_decimals(exact), lang)
+
+
 def bare(text: str) -> str:
     """A printed number without trailing zeros ("42,00" → "42", "−37,500" → "−37,5"), as the other
     sheets and the terminal print values where no reading's resolution is the point; the value and
@@ -207,9 +214,15 @@ def bare(text: str) -> str:
     return "0" if out in ("", "−", "-", "−0", "-0") else out
 
 
-def sig_decimals(exact: float, digits: int = 5) -> int:
-    """The decimals that give ``exact`` ``digits`` significant figures (u1H 11.81 → 3, ω 100.5 → 2):
-    the ratio's and the velocities' rows of the train, printed so that δ reads from them."""
+READ_DIGITS = 4          # significant figures of a value read off the drawing (εα, u1H, ω) and of its exact one
+
+
+def sig_decimals(exact: float, digits: int = READ_DIGITS) -> int:
+    """The decimals that give ``exact`` ``digits`` significant figures (u1H 11.81 → 2, ω 100.5 → 1):
+    the ratio's and the velocities' rows of the train, printed so that δ reads from them. Four
+    figures: the readings' bounds from the drafting precision are a few percent (εα ±0.03, u1H
+    ±0.2–0.4), so an eight-decimal εα or a five-figure u1H would print digits the ruler never gave
+    (review 5, item 16)."""
     return max(0, digits - 1 - math.floor(math.log10(abs(exact)))) if exact else 0
 
 
@@ -236,7 +249,8 @@ def pair_lines(d: dict, lang: str) -> list[str]:
     lines.append(w["geo"].format(aw=n(d["alpha_w_deg"], 6), a=mm(d["a_m"]), w=mm(d["a_w_m"]), y=n(d["y"]),
                                  dy=n(d["delta_y"]), p=mm(d["pitch_m"]), pb=mm(d["base_pitch_m"])))
     c = d["contact_ratio"]
-    lines.append(w["eps_line"].format(e=n(c["exact"]), g=n(c["graphical"]), d=n(c["error_pct"], 3), b=n(c["bound"], 2),
+    ce, cg, cd = contact_ratio_text(c["exact"], c["graphical"], lang)
+    lines.append(w["eps_line"].format(e=ce, g=cg or "—", d=n(cd, 3), b=n(c["bound"], 2),
                                       bp=_share(c["bound"], c["exact"], lang), out=w["out"] if c["outside_bound"] else ""))
     q = d["quality"]
     lines.append(w["quality"].format(u=", ".join(yes(v) for v in q["undercut"]),

@@ -15,7 +15,7 @@ from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_me
                                      sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import agreeing, bare, gears_json, sig_decimals, table_decimals
+from graphplan.report.gears import agreeing, bare, contact_ratio_text, gears_json, sig_decimals, table_decimals
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
@@ -96,22 +96,6 @@ WORDS = {
 
 def _n(v, lang: str, d: int = 4) -> str:
     return "—" if v is None else num(v, lang, d).replace("-", "−")
-
-
-def contact_ratio_text(exact: float, graphical: float | None, lang: str, least: int = 3
-                       ) -> tuple[str, str, float | None]:
-    """ε_α exact and graphical printed to the fewest decimals (at least ``least``) whose δ worked out
-    from the two printed numbers prints as the true δ = 100·(ε_g − ε)/ε does to three significant
-    figures (1.212/1.207 gave 0.414 % where the true δ is 0.392 %): (exact, graphical, δ printed)."""
-    if graphical is None:
-        te, _, _ = agreeing(exact, None, least, lang)
-        return te, "", None
-    true = 100.0 * (graphical - exact) / exact
-    for dec in range(least, 10):
-        te, tg, e = agreeing(exact, graphical, dec, lang)
-        if e is not None and _pct(e, lang) == _pct(true, lang):
-            return te, tg, e
-    return agreeing(exact, graphical, 10, lang)
 
 
 def _pct(v, lang: str) -> str:
