@@ -251,3 +251,18 @@ def test_the_profiles_show_no_corner_at_the_drawing_scale(z, x):
     assert len(lines) == 4
     for q in lines:
         assert max(_sagittas(q.points)) <= 0.03, q.step
+
+
+@pytest.mark.parametrize("z, x", [((17, 34), (0.5, 0.3)), ((12, 31), (0.45, 0.2)), ((20, 40), (0.0, 0.0))])
+def test_the_sliding_curves_are_lettered_apart_from_their_crossing(z, x):
+    """review 7 #16: λ2 stood at P, where λ1 and λ2 cross (both 0), and the ordinate had no name:
+    each λ is lettered beside its own curve, at least 10 mm from P along N1N2, and the axis is λ."""
+    from graphplan.graphic.gears import construct_mesh, sliding_diagram
+    sol = solve_pair(Pair(z, 0.005, x))
+    mesh = construct_mesh(sol, 0.0)
+    rec = sliding_diagram(sol, mesh)
+    texts = {p.text: complex(*p.points[0]) for p in rec.items if p.kind == "text"}
+    assert "λ" in texts
+    xP = sol.rho_P / mesh.mu_l
+    for name in ("λ_1", "λ_2"):
+        assert abs(texts[name].real - xP) > 10.0, (name, texts[name], xP)

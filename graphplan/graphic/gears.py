@@ -671,8 +671,12 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM) -
         pl.label(complex(x, 0), name, size=2.5, toward=-1j, radii=(1.0, 2.0, 3.0, 5.0, 9.0, 13.0))
     for v, t in ((1.0, "1"), (-1.0, "−1"), (-2.0, "−2"), (-3.0, "−3")):
         pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
-    j1 = int(np.argmin(np.abs(rho - 0.75 * G)))
-    j2 = int(np.argmin(np.abs(rho - 0.25 * G)))
+    pl.label(complex(0.0, k + 8.0), "λ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))     # the ordinate's name
+    # each curve lettered midway between P (where the two cross, λ = 0) and its own end of N1N2:
+    # λ2 over N1P (λ1 runs off to −∞ there), λ1 over PN2 — never at the crossing
+    xP = sol.rho_P / mesh.mu_l
+    j1 = int(np.argmin(np.abs(rho - 0.5 * (xP + G))))
+    j2 = int(np.argmin(np.abs(rho - 0.5 * xP)))
     pl.label(complex(rho[j1], l1[j1] * k), "λ_1", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
     pl.label(complex(rho[j2], l2[j2] * k), "λ_2", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
     rec.scales.update(mu_lambda=1.0 / k, mu_l=mesh.mu_l)
