@@ -108,10 +108,34 @@ def strokes(p: Primitive) -> list[tuple[tuple[float, float], tuple[float, float]
     return out
 
 
-def obstacles(items: list[Primitive]) -> Obstacles:
-    """What a new label must keep clear of, from the primitives already drawn."""
-    segs, half, boxes, solid, numbers, big, leaders = [], [], [], [], [], [], []
-    for p in items:
+@dataclass
+class _Built:
+    """What ``obstacles`` found in a list of primitives, kept to be extended: a label placer asks
+    again and again of a record that has only grown by a label or two since (``_BUILT``)."""
+    items: list[Primitive]
+    segs: np.ndarray
+    half: np.ndarray
+    boxes: list[Box]
+    solid: list[Box]
+    numbers: list[Box]
+    big: list[Box]
+    leaders: list[tuple[complex, complex]]
+
+
+_BUILT: list[_Built] = []     # the last few lists of primitives ``obstacles`` was asked of, newest last
+_BUILT_KEPT = 4
+
+
+def _built(items: list[Primitive], since: _Built | None) -> _Built:
+    """The obstacles of ``items``, those of their first ``len(since.items)`` taken from ``since``
+    (the same primitives: the same strokes, in the same order)."""
+    start = len(since.items) if since is not None else 0
+    segs: list[tuple[float, float, float, float]] = []
+    half: list[float] = []
+    boxes, solid, numbers, big, leaders = ((list(since.boxes), list(since.solid), list(since.numbers),
+                                            list(since.big), list(since.leaders)) if since is not None
+                                           else ([], [], [], [], []))
+    for p in items[start:]:
         if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
             leaders.append((complex(*p.points[0]), complex(*p.points[1])))
         if p.kind == "text":
@@ -126,8 +150,31 @@ def obstacles(items: list[Primitive]) -> Obstacles:
             half.append(hw)
         if p.kind == "polygon":
             solid.append(p.bounds())
-    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid, numbers, big,
-                     leaders)
+    new_segs = np.array(segs, dtype=float).reshape(-1, 4)
+    new_half = np.array(half, dtype=float)
+    if since is not None:
+        new_segs = np.concatenate([since.segs, new_segs])
+        new_half = np.concatenate([since.half, new_half])
+    return _Built(list(items), new_segs, new_half, boxes, solid, numbers, big, leaders)
+
+
+def obstacles(items: list[Primitive]) -> Obstacles:
+    """What a new label must keep clear of, from the primitives already drawn."""
+    since = None
+    for b in _BUILT:               # the longest list asked before that these items begin with
+        k = len(b.items)
+        if k <= len(items) and (since is None or k > len(since.items)) and items[:k] == b.items:
+            since = b
+    if since is not None and len(since.items) == len(items):
+        built = since
+    else:
+        built = _built(items, since)
+        if since is not None:
+            _BUILT.remove(since)
+        _BUILT.append(built)
+        del _BUILT[:-_BUILT_KEPT]
+    return Obstacles(built.segs, built.half, list(built.boxes), list(built.solid), list(built.numbers),
+                     list(built.big), list(built.leaders))
 
 
 def _hits(ob: Obstacles, box: Box, clear: float) -> list[int]:
