@@ -156,24 +156,35 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
     drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in ours if q.step.startswith(f"{key} at ")}
 
+    pieces: dict[int, tuple] = {}        # each line's segments as arrays (a line asked of per number)
+
+    def segments(q):
+        got = pieces.get(id(q))
+        if got is None or got[0] is not q:
+            p = np.asarray(q.points, float)
+            ax, ay, bx, by = p[:-1, 0], p[:-1, 1], p[1:, 0], p[1:, 1]
+            got = pieces[id(q)] = (q, ax, ay, bx, by, np.maximum(ax, bx), np.minimum(ax, bx),
+                                   np.maximum(ay, by), np.minimum(ay, by))
+        return got[1:]
+
     def hits(box, lines) -> list:
         x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
         out = []
         for q in lines:
-            p = np.asarray(q.points, float)
-            for (ax, ay), (bx, by) in zip(p[:-1], p[1:]):
-                if max(ax, bx) < x0 or min(ax, bx) > x1 or max(ay, by) < y_0 or min(ay, by) > y_1:
-                    continue
-                if abs(bx - ax) < 1e-9:
-                    out.append(q)
-                    break
-                # the part of the segment within the box's x range: does it reach into its y range?
-                u0, u1 = sorted(((x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)))
-                u0, u1 = max(u0, 0.0), min(u1, 1.0)
-                ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
-                if not (max(ya, yb) < y_0 or min(ya, yb) > y_1):
-                    out.append(q)
-                    break
+            ax, ay, bx, by, hx, lx, hy, ly = segments(q)
+            near = ~((hx < x0) | (lx > x1) | (hy < y_0) | (ly > y_1))
+            if not near.any():
+                continue
+            ax, ay, bx, by = ax[near], ay[near], bx[near], by[near]
+            if (np.abs(bx - ax) < 1e-9).any():
+                out.append(q)
+                continue
+            # the part of each segment within the box's x range: does it reach into its y range?
+            ua, ub = (x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)
+            u0, u1 = np.maximum(np.minimum(ua, ub), 0.0), np.minimum(np.maximum(ua, ub), 1.0)
+            ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
+            if (~((np.maximum(ya, yb) < y_0) | (np.minimum(ya, yb) > y_1))).any():
+                out.append(q)
         return out
 
     for k in keep:

@@ -47,9 +47,14 @@ class Obstacles:
     numbers: list[Box] | None = None   # the boxes of labels that are numbers (a subset of boxes) …
     big: list[Box] | None = None       # … of them, links' numbers
     leaders: list[tuple[complex, complex]] | None = None   # the leaders drawn: a new one crosses none
+    reach: tuple[np.ndarray, ...] | None = None    # (lo_x, hi_x, lo_y, hi_y) where known (``_reach``)
 
     def __post_init__(self) -> None:
-        self._reach()
+        if self.reach is None:
+            self._reach()
+        else:
+            self.lo_x, self.hi_x, self.lo_y, self.hi_y = self.reach
+            self.reach = None
 
     def _reach(self) -> None:
         """Each segment's own box grown by its half width, for a quick reject."""
@@ -68,7 +73,8 @@ class Obstacles:
             return b[2] > x - reach and b[0] < x + reach and b[3] > y - reach and b[1] < y + reach
         return Obstacles(self.segs[keep], self.half[keep], [b for b in self.boxes if close(b)],
                          [b for b in self.solid if close(b)], [b for b in self.numbers or [] if close(b)],
-                         [b for b in self.big or [] if close(b)], self.leaders)
+                         [b for b in self.big or [] if close(b)], self.leaders,
+                         (self.lo_x[keep], self.hi_x[keep], self.lo_y[keep], self.hi_y[keep]))
 
     def add_segment(self, a, b, half: float) -> None:
         self.segs = np.vstack([self.segs, [[a[0], a[1], b[0], b[1]]]])
@@ -108,10 +114,35 @@ def strokes(p: Primitive) -> list[tuple[tuple[float, float], tuple[float, float]
     return out
 
 
-def obstacles(items: list[Primitive]) -> Obstacles:
-    """What a new label must keep clear of, from the primitives already drawn."""
-    segs, half, boxes, solid, numbers, big, leaders = [], [], [], [], [], [], []
-    for p in items:
+@dataclass
+class _Built:
+    """What ``obstacles`` found in a list of primitives, kept to be extended: a label placer asks
+    again and again of a record that has only grown by a label or two since (``_BUILT``)."""
+    items: list[Primitive]
+    segs: np.ndarray
+    half: np.ndarray
+    boxes: list[Box]
+    solid: list[Box]
+    numbers: list[Box]
+    big: list[Box]
+    leaders: list[tuple[complex, complex]]
+    reach: tuple[np.ndarray, ...] = ()
+
+
+_BUILT: list[_Built] = []     # the last few lists of primitives ``obstacles`` was asked of, newest last
+_BUILT_KEPT = 4
+
+
+def _built(items: list[Primitive], since: _Built | None) -> _Built:
+    """The obstacles of ``items``, those of their first ``len(since.items)`` taken from ``since``
+    (the same primitives: the same strokes, in the same order)."""
+    start = len(since.items) if since is not None else 0
+    segs: list[tuple[float, float, float, float]] = []
+    half: list[float] = []
+    boxes, solid, numbers, big, leaders = ((list(since.boxes), list(since.solid), list(since.numbers),
+                                            list(since.big), list(since.leaders)) if since is not None
+                                           else ([], [], [], [], []))
+    for p in items[start:]:
         if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
             leaders.append((complex(*p.points[0]), complex(*p.points[1])))
         if p.kind == "text":
@@ -126,8 +157,33 @@ def obstacles(items: list[Primitive]) -> Obstacles:
             half.append(hw)
         if p.kind == "polygon":
             solid.append(p.bounds())
-    return Obstacles(np.array(segs, dtype=float).reshape(-1, 4), np.array(half, dtype=float), boxes, solid, numbers, big,
-                     leaders)
+    new_segs = np.array(segs, dtype=float).reshape(-1, 4)
+    new_half = np.array(half, dtype=float)
+    if since is not None:
+        new_segs = np.concatenate([since.segs, new_segs])
+        new_half = np.concatenate([since.half, new_half])
+    return _Built(list(items), new_segs, new_half, boxes, solid, numbers, big, leaders)
+
+
+def obstacles(items: list[Primitive]) -> Obstacles:
+    """What a new label must keep clear of, from the primitives already drawn."""
+    since = None
+    for b in _BUILT:               # the longest list asked before that these items begin with
+        k = len(b.items)
+        if k <= len(items) and (since is None or k > len(since.items)) and items[:k] == b.items:
+            since = b
+    if since is not None and len(since.items) == len(items):
+        built = since
+    else:
+        built = _built(items, since)
+        if since is not None:
+            _BUILT.remove(since)
+        _BUILT.append(built)
+        del _BUILT[:-_BUILT_KEPT]
+    ob = Obstacles(built.segs, built.half, list(built.boxes), list(built.solid), list(built.numbers),
+                   list(built.big), list(built.leaders), built.reach or None)
+    built.reach = (ob.lo_x, ob.hi_x, ob.lo_y, ob.hi_y)
+    return ob
 
 
 def _hits(ob: Obstacles, box: Box, clear: float) -> list[int]:
@@ -186,6 +242,24 @@ def _number(req: LabelRequest) -> float:
     return req.size if is_number(req.text) else 0.0
 
 
+def _clip_all(sx, sy, ex, ey, x0, y0, x1, y1) -> np.ndarray:
+    """``_clips`` of many segments against as many boxes at once (Liang–Barsky: the same quotients,
+    the entry parameter the largest of those where the segment enters, the exit the least)."""
+    dx, dy = ex - sx, ey - sy
+    with np.errstate(all="ignore"):
+        zx, zy = np.abs(dx) < 1e-12, np.abs(dy) < 1e-12
+        qa, qb, qc, qd = sx - x0, x1 - sx, sy - y0, y1 - sy
+        ok = ~((zx & ((qa < 0) | (qb < 0))) | (zy & ((qc < 0) | (qd < 0))))
+        ra, rb, rc, rd = qa / -dx, qb / dx, qc / -dy, qd / dy       # q / p of the four sides
+        px, nx = ~zx & (dx > 0), ~zx & (dx < 0)
+        py, ny = ~zy & (dy > 0), ~zy & (dy < 0)
+        t0 = np.maximum(np.maximum(np.where(px, ra, 0.0), np.where(nx, rb, 0.0)),
+                        np.maximum(np.where(py, rc, 0.0), np.where(ny, rd, 0.0)))
+        t1 = np.minimum(np.minimum(np.where(nx, ra, 1.0), np.where(px, rb, 1.0)),
+                        np.minimum(np.where(ny, rc, 1.0), np.where(py, rd, 1.0)))
+    return ok & (t0 <= t1)
+
+
 def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR, number: float = 0.0) -> np.ndarray:
     """For each candidate box (m, 4): how many lines (within ``clear`` + half their width), labels
     (within ``APART``; a number's — ``number`` its height, 0 for a word — within ``NUMBERS_APART`` of
@@ -194,27 +268,21 @@ def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR, number: floa
     m = len(boxes)
     out = np.zeros(m, dtype=int)
     bx0, by0, bx1, by1 = (boxes[:, i:i + 1] for i in range(4))
-    if len(ob.segs):
-        near = ((ob.hi_x[None, :] > bx0 - clear) & (ob.lo_x[None, :] < bx1 + clear)
-                & (ob.hi_y[None, :] > by0 - clear) & (ob.lo_y[None, :] < by1 + clear))
-        ci, si = np.nonzero(near)
-        if len(ci):
-            g = ob.half[si] + clear
-            sx, sy, ex, ey = ob.segs[si].T
-            x0, y0 = boxes[ci, 0] - g, boxes[ci, 1] - g
-            x1, y1 = boxes[ci, 2] + g, boxes[ci, 3] + g
-            dx, dy = ex - sx, ey - sy
-            t0 = np.zeros(len(ci))
-            t1 = np.ones(len(ci))
-            ok = np.ones(len(ci), dtype=bool)
-            with np.errstate(all="ignore"):
-                for p, q in ((-dx, sx - x0), (dx, x1 - sx), (-dy, sy - y0), (dy, y1 - sy)):
-                    zero = np.abs(p) < 1e-12
-                    ok &= ~(zero & (q < 0))
-                    r = np.where(zero, 0.0, q / np.where(zero, 1.0, p))
-                    t0 = np.where(~zero & (p < 0), np.maximum(t0, r), t0)
-                    t1 = np.where(~zero & (p > 0), np.minimum(t1, r), t1)
-            np.add.at(out, ci[ok & (t0 <= t1)], 1)
+    if len(ob.segs) and m:
+        # first the segments near any of the boxes (a quick reject on all of them at once), then
+        # each box against those: the same pairs as each box against every segment
+        keep = np.nonzero((ob.hi_x > bx0.min() - clear) & (ob.lo_x < bx1.max() + clear)
+                          & (ob.hi_y > by0.min() - clear) & (ob.lo_y < by1.max() + clear))[0]
+        if len(keep):
+            near = ((ob.hi_x[keep][None, :] > bx0 - clear) & (ob.lo_x[keep][None, :] < bx1 + clear)
+                    & (ob.hi_y[keep][None, :] > by0 - clear) & (ob.lo_y[keep][None, :] < by1 + clear))
+            ci, si = np.nonzero(near)
+            if len(ci):
+                si = keep[si]
+                g = ob.half[si] + clear
+                sx, sy, ex, ey = ob.segs[si].T
+                hit = _clip_all(sx, sy, ex, ey, boxes[ci, 0] - g, boxes[ci, 1] - g, boxes[ci, 2] + g, boxes[ci, 3] + g)
+                out += np.bincount(ci[hit], minlength=m)
     groups = [(ob.boxes, APART), (ob.solid, 0.0)]
     if number:
         groups += [(ob.numbers, LINK_APART if number >= LINK_SIZE else NUMBERS_APART), (ob.big, LINK_APART)]
@@ -311,15 +379,23 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
 def _near(ob: Obstacles, req: LabelRequest, ink: Box):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
-    free = np.nonzero(_counts(ob, boxes, number=_number(req)) == 0)[0]
-    if req.sight:
-        free = [k for k in free.tolist() if _in_sight(ob, req.at, boxes[k])]
-    if req.rivals:
-        free = [k for k in list(free) if owned(req, boxes[k])]
-    if len(free):
-        k = int(free[0])
-        return tuple(boxes[k]), complex(starts[k]), None
+    # the first free spot in order of preference: the nearer rings counted first (most labels find
+    # their spot there), the sight line and the rivals tried only up to the first that passes
+    rings = NEAR_FIRST * 2 * DIRECTIONS
+    for lo, hi in ((0, rings), (rings, len(boxes))):
+        if lo >= hi:
+            continue
+        free = np.nonzero(_counts(ob, boxes[lo:hi], number=_number(req)) == 0)[0] + lo
+        for k in free.tolist():
+            if req.sight and not _in_sight(ob, req.at, boxes[k]):
+                continue
+            if req.rivals and not owned(req, boxes[k]):
+                continue
+            return tuple(boxes[k]), complex(starts[k]), None
     return None
+
+
+NEAR_FIRST = 2       # the rings beside the point ``_near`` counts before the rest
 
 
 SIGHT_FROM = 0.9     # mm from the point where its sight line starts (the lines through the point itself)
@@ -595,10 +671,17 @@ def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
             spots += [complex(x1 + out + iw / 2, at.imag + shift), complex(x0 - out - iw / 2, at.imag + shift),
                       complex(at.real + shift, y1 + out + ih / 2), complex(at.real + shift, y0 - out - ih / 2)]
     spots.sort(key=lambda c: abs(c - at))
+    boxes = [(c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2) for c in spots]
+    touched: list[int] = []           # the spots' counts, a few spots at a time, as far as asked
+
+    def hits(i: int) -> int:
+        while len(touched) <= i:
+            touched.extend(_counts(ob, np.asarray(boxes[len(touched):len(touched) + OUTSIDE_CHUNK]),
+                                   number=_number(req)).tolist())
+        return touched[i]
     for strict in (True, False):      # first a leader that crosses no other and is not long
-        for c in spots:
-            box = (c.real - iw / 2, c.imag - ih / 2, c.real + iw / 2, c.imag + ih / 2)
-            if _counts(ob, np.asarray([box]), number=_number(req)).item():
+        for i, box in enumerate(boxes):
+            if hits(i):
                 continue
             a, b = _leader(at, box)
             if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
@@ -610,6 +693,7 @@ def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
 
 
 OUTSIDE_LEADER_MM = 30.0    # a leader out past the drawing's edge no longer than this where it can
+OUTSIDE_CHUNK = 12          # the spots past the edge counted at once
 
 
 def _least(ob: Obstacles, req: LabelRequest, ink: Box):

@@ -58,6 +58,9 @@ class Primitive:
                          self.radius * k, self.angles, self.anchor, self.width)
 
     def bounds(self) -> tuple[float, float, float, float]:
+        if len(self.points) == 2 and self.kind not in ("circle", "arc", "text"):     # a segment, a vector
+            (ax, ay), (bx, by) = self.points
+            return min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)
         xs = [p[0] for p in self.points]
         ys = [p[1] for p in self.points]
         if self.kind == "circle" or (self.kind == "arc" and (self.angles[1] - self.angles[0]) % 360.0 == 0):
@@ -471,7 +474,7 @@ class Record:
     scales: dict[str, float] = field(default_factory=dict)
 
     def add(self, kind: str, points, **kw) -> Primitive:
-        prim = Primitive(kind, tuple((float(x), float(y)) for x, y in points), **kw)
+        prim = Primitive(kind, tuple([(float(x), float(y)) for x, y in points]), **kw)
         self.items.append(prim)
         return prim
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 from graphplan.util.errors import GraphplanError
 
@@ -39,15 +40,20 @@ class Targets:
                        self.figure * k, self.layout * k)
 
 
+@lru_cache(maxsize=4096)
 def series_value(m: float, k: int) -> float:
     """m·10^k as the nearest float (0.0025, not 0.0025000000000000005)."""
     return float(f"{m:g}e{k}")
 
 
+@lru_cache(maxsize=256)
+def _series_from(k0: int) -> tuple[float, ...]:
+    return tuple(series_value(m, k) for k in range(k0 - 4, k0 + 5) for m in SERIES)
+
+
 def series_around(value: float) -> list[float]:
     """The standard scale values from about value/1000 to value·1000, ascending."""
-    k0 = math.floor(math.log10(value))
-    return [series_value(m, k) for k in range(k0 - 4, k0 + 5) for m in SERIES]
+    return list(_series_from(math.floor(math.log10(value))))
 
 
 def at_least(value: float) -> float:
