@@ -1,7 +1,8 @@
 """Every dynamics diagram graduates its ordinate axes in values (review 5 #14, review 3 #3/#12: the
 M*_c/M*_d, A, ΔT and I* axes carried no values, only μ in the notes): round values (1, 2, 2,5, 5
 ×10^k steps) whose ticks stand where value/μ puts them, at least 8 mm apart, at least two values
-lettered on each axis, none touching a line or other lettering, in both languages."""
+lettered on each axis as one run (every tick's, or every 2nd, 5th, 10th), none touching a line or
+other lettering, in both languages; the energy–mass diagram's ΔT axis ticked at ΔT(φ)'s heights."""
 from __future__ import annotations
 
 import math
@@ -44,8 +45,10 @@ def _axis(rec, step: str, vertical: bool = True):
     return out, along
 
 
-def _check(values, along, mu, origin=0.0):
-    assert len(values) >= 2, values
+def _check(values, along, mu, origin=0.0, least=2):
+    assert len(values) >= least, values
+    if not values:
+        return
     steps = sorted(along)
     assert min(b - a for a, b in zip(steps, steps[1:])) >= 8.0 - 1e-9
     for v, at in values:
@@ -55,6 +58,9 @@ def _check(values, along, mu, origin=0.0):
     assert any(abs(step / e - m) < 1e-6 for m in ROUND), step
     for v, _ in values:
         assert abs(v / step - round(v / step)) < 1e-6, (v, step)
+    shown = sorted(v for v, _ in values)           # lettered as a draftsman letters major ticks: a run
+    gaps = {round(b - a, 9) for a, b in zip(shown, shown[1:])}     # of one step, no value skipped
+    assert len(gaps) == 1 and any(abs(min(gaps) / step - m) < 1e-6 for m in (1, 2, 5, 10)), shown
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
@@ -68,9 +74,11 @@ def test_every_ordinate_axis_is_graduated_in_round_values_where_mu_puts_them(fly
     _check(*_axis(m, "A graduation"), f.mu_A, origin=a_axis.points[0][1])
     _check(*_axis(recs["energy"], "ΔT graduation"), f.mu_A)
     w = recs["wittenbauer"]
-    _check(*_axis(w, "I* graduation", vertical=False), f.mu_I)
-    # its ΔT axis ticked at ΔT(φ)'s values (the same μ_T, the same heights: the values read beside)
-    _, ticks = _axis(w, "ΔT graduation")
+    _check(*_axis(w, "I* graduation", vertical=False), f.mu_I, least=0)   # where a run keeps clear: else
+    # the ticks alone, the values read down on the turned I*(φ)'s foot (checked below)
+    # its ΔT axis ticked at ΔT(φ)'s values (the same μ_T, the same heights: the values read across)
+    lettered, ticks = _axis(w, "ΔT graduation")
+    assert lettered == []
     beside = [at * f.mu_A for _, at in _axis(recs["energy"], "ΔT graduation")[0]]
     assert len(ticks) >= 2 and {round(t * f.mu_A, 6) for t in ticks} >= {round(v, 6) for v in beside}
     i_values = [(_value(p.text), p.points[0][0]) for p in recs["inertia"].items

@@ -428,36 +428,54 @@ def _free_boxes(rec: Record):
 
 
 def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
-                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation") -> list[float]:
+                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True,
+                  scattered: bool = True) -> list[float]:
     """An ordinate axis through the record's origin graduated in its quantity at ``mu`` (units a
     mm), as the lab's sheets graduate them: a ``TICK`` at each of ``values`` (``graduation``: round
-    numbers) and the value beside it, on the one side of ``sides`` (−1: left of a vertical axis,
-    under a horizontal one; the first preferred) where the most values keep clear of the lines and
-    lettering already drawn (the pole's rays left of the M axis, the projections); a value that
-    would touch one there is left out, its tick kept. Returns the values lettered."""
+    numbers) and the values lettered beside their ticks on one side of the axis (``sides``: −1 left
+    of a vertical axis, under a horizontal one; the first preferred) where they keep clear of the
+    lines and lettering already drawn (the pole's rays left of the M axis, the projections): every
+    value, else every 2nd, 5th or 10th tick's (a draftsman letters the major ticks) — the finest
+    such run of at least two values that all keep clear on one side; where none does, the values
+    clear on the side where most are (``scattered`` False: none). ``letter`` False: the ticks alone
+    (an axis whose values read across from a diagram beside it). Returns the values lettered."""
     if not values:
         return []
-    free = _free_boxes(rec)
+    free = _free_boxes(rec) if letter else None
+    from shapely import box as shape_box
+    words = [shape_box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
     def number(v: float, side: float) -> Primitive:
         """The value beside its tick, its ink ``TICK`` + 0.6 mm off the axis (a comma's tail too)."""
         at = v / mu
         if vertical:
-            p = Primitive("text", ((side * (TICK + 0.6), at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
-                          text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
-            return p
+            return Primitive("text", ((side * (TICK + 0.6), at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
+                             text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
         p = Primitive("text", ((at, 0.0),), role="label", layer=LAYER, step=step, text=num(v, lang), size=NUM,
                       anchor="middle")
         x0, y0, x1, y1 = p.ink()
         return p.moved(0.0, (TICK + 0.6 - y0) if side > 0 else (-(TICK + 0.6) - y1))
-    best = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
-    shown = [v for v in values if free(number(v, best).ink())]
-    for v in values:
+    shown: list[float] = []
+    side = sides[0]
+    if letter:
+        unit = graduation_step(values) or abs(values[0])
+        for every in (1, 2, 5, 10):
+            run = [v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6]
+            ok = [sd for sd in sides if len(run) >= 2 and all(free(number(v, sd).ink()) for v in run)]
+            if ok:
+                shown, side = run, ok[0]
+                break
+        else:
+            side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
+            shown = [v for v in values if free(number(v, side).ink())] if scattered else []
+    for v in values:                     # a tick that would run into a word (k, l) is left out
         at = v / mu
-        a, b = ((0.0, at), (best * TICK, at)) if vertical else ((at, 0.0), (at, best * TICK))
-        rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
+        a, b = ((0.0, at), (side * TICK, at)) if vertical else ((at, 0.0), (at, side * TICK))
+        tick = shape_box(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]))
+        if all(wd.distance(tick) >= GRADUATION_CLEAR + AXIS_W / 2 for wd in words):
+            rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
     for v in shown:
-        rec.items.append(number(v, best))
+        rec.items.append(number(v, side))
     return shown
 
 
@@ -543,10 +561,11 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
     graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
-                  step="I* graduation")
+                  step="I* graduation", scattered=projections is None)   # else read down on I*(φ)'s foot
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
-        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, step="ΔT graduation")
+        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0,), step="ΔT graduation",
+        letter=False)                                  # its values read across, on ΔT(φ)'s axis
     return rec
 
 
