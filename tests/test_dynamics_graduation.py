@@ -22,10 +22,12 @@ def flywheel():
 
 
 def _records(f, lang):
-    from graphplan.drawing.flywheel import energy_projected, inertia_turned, moments_record, wittenbauer_record
+    from graphplan.drawing.flywheel import (energy_projected, energy_record, inertia_record, inertia_turned,
+                                            moments_record, wittenbauer_record)
     return {"moments": moments_record(f, lang), "energy": energy_projected(f, lang, 150.0, 170.0),
             "wittenbauer": wittenbauer_record(f, lang, projections=(-20.0, -10.0)),
-            "inertia": inertia_turned(f, lang, 150.0, 10.0)}
+            "inertia": inertia_turned(f, lang, 150.0, 10.0),
+            "ΔT(φ) alone": energy_record(f, lang), "I*(φ) alone": inertia_record(f, lang)}
 
 
 def _value(text: str) -> float:

@@ -448,9 +448,11 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     def number(v: float, side: float) -> Primitive:
         """The value beside its tick, its ink ``TICK`` + 0.6 mm off the axis (a comma's tail too)."""
         at = v / mu
-        if vertical:
-            return Primitive("text", ((side * (TICK + 0.6), at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
-                             text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
+        if vertical:                     # by its ink, not its advance (a "1" inks past its anchor)
+            p = Primitive("text", ((0.0, at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
+                          text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
+            x0, y0, x1, y1 = p.ink()
+            return p.moved((-(TICK + 0.6) - x1) if side < 0 else (TICK + 0.6 - x0), 0.0)
         p = Primitive("text", ((at, 0.0),), role="label", layer=LAYER, step=step, text=num(v, lang), size=NUM,
                       anchor="middle")
         x0, y0, x1, y1 = p.ink()
