@@ -470,6 +470,17 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
         else:
             side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
             shown = [v for v in values if free(number(v, side).ink())] if scattered else []
+            if scattered and len(shown) < 2:      # fewer than two on either side: each where it is clear
+                both = {v: next((sd for sd in sides if free(number(v, sd).ink())), None) for v in values}
+                if sum(sd is not None for sd in both.values()) > len(shown):
+                    for v in values:
+                        at = v / mu
+                        a, b = ((0.0, at), (sides[0] * TICK, at)) if vertical else ((at, 0.0), (at, sides[0] * TICK))
+                        rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
+                    for v, sd in both.items():
+                        if sd is not None:
+                            rec.items.append(number(v, sd))
+                    return [v for v, sd in both.items() if sd is not None]
     for v in values:                     # a tick that would run into a word (k, l) is left out
         at = v / mu
         a, b = ((0.0, at), (side * TICK, at)) if vertical else ((at, 0.0), (at, side * TICK))
