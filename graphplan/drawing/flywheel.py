@@ -178,7 +178,7 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     w = WORDS[lang]
     rec = Record(w["moments"], scales={"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "H_mm": f.H})
     lo, hi = _extent(f.M, f.M_mid, [f.Md], f.dyn.cycle.samples.moment / f.mu_M)
-    _axes(rec, lo, hi, -f.H - 4.0, f.L, f"{w['Mc']}, {w['Md']}", step="M")
+    _axes(rec, lo, hi, -f.H - 4.0, f.L, f"{w['Mc']}, {w['Md']}, {w['Nm']}", step="M")
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
     curve = f.dyn.cycle.moment(fine * f.mu_phi) / f.mu_M     # the diagram plotted from the computed M*_c
@@ -202,10 +202,11 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     place_labels(rec, [LabelRequest(complex(f.L, f.Md), w["Md"], 1 + 0.3j, TEXT, step="M*_d"),
                        LabelRequest(complex(f.L, float(f.M[-1])), w["Mc"], 1 - 0.3j, TEXT, step="M*_c")],
                  layer=LAYER)
+    graduate_axis(rec, graduation(hi, f.mu_M, bottom_mm=lo), f.mu_M, lang, step="M graduation")
     # b) the work diagrams, below
     a_lo, a_hi = _extent(f.A_drawn)
     y0 = lo - 22.0 - a_hi - 8.0
-    rec.extend(_work(f, w).moved(0.0, y0))
+    rec.extend(_work(f, w, lang).moved(0.0, y0))
     return rec
 
 
@@ -219,10 +220,10 @@ def moments_least(f: Flywheel) -> tuple[float, float]:
     return f.L + f.H + 14.0, (hi + 8.0) - (lo - 31.0 - a_hi + a_lo)
 
 
-def _work(f: Flywheel, w: dict) -> Record:
+def _work(f: Flywheel, w: dict, lang: str) -> Record:
     rec = Record("work")
     lo, hi = _extent(f.A_drawn)
-    _axes(rec, lo, hi, -3.0, f.L, f"{w['Ac']}, {w['Ad']}", step="A")
+    _axes(rec, lo, hi, -3.0, f.L, f"{w['Ac']}, {w['Ad']}, {w['J']}", step="A")
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for k in range(f.divisions):
         rec.segment((f.x[k], f.A_drawn[k]), (f.x[k + 1], f.A_drawn[k + 1]), role="chord", layer=LAYER,
@@ -232,6 +233,7 @@ def _work(f: Flywheel, w: dict) -> Record:
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
     rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
     _numbers(rec, row)
+    graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="A graduation")
     return place_labels(rec, [LabelRequest(complex(f.L, float(f.A_drawn[-1])), f"{w['Ad']} = {w['Ac']}", 1 + 0.3j,
                                            TEXT, step="A_d")], layer=LAYER)
 
@@ -245,7 +247,7 @@ def _dimension(rec: Record, x0: float, x1: float, y: float, text: str) -> None:
 
 
 def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.ndarray,
-                  sym: str, name: str, positive: bool = False) -> Record:
+                  sym: str, name: str, lang: str, positive: bool = False) -> Record:
     """A diagram over φ of ordinates read at the divisions, joined by the French curve
     (``_smooth``: shape-preserving for a ``positive`` quantity)."""
     rec = Record(title, scales=scales)
@@ -257,6 +259,8 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     fine, curve = _smooth(f, values, positive)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
+    mu = next(iter(scales.values()))
+    graduate_axis(rec, graduation(hi, mu, bottom_mm=lo), mu, lang, step=f"{name} graduation")
     return rec
 
 
@@ -268,12 +272,12 @@ def energy_axis(f: Flywheel, lang: str) -> str:
 
 def energy_record(f: Flywheel, lang: str = "uk") -> Record:
     """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
-    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, energy_axis(f, lang), "ΔT")
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, energy_axis(f, lang), "ΔT", lang)
 
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
     """I*_m(φ) at μ_I."""
-    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m",
+    return _read_diagram(f, WORDS[lang]["inertia"], {"mu_I": f.mu_I}, f.I, WORDS[lang]["Im"], "I*_m", lang,
                          positive=True)
 
 
@@ -323,6 +327,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
         rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
                     step=f"projection of ΔT at {j}")
     _numbers(rec, row)
+    graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="ΔT graduation")
     return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
                                            breaks=True)],   # at its arrow, the projections broken under it
                         layer=LAYER)
@@ -364,20 +369,127 @@ GRADUATION = (12.0, 8.0)     # mm: the least distance between two graduated valu
 #                              the closest allowed where that leaves fewer than two values on it
 
 
-def graduation(top_mm: float, mu: float, least: tuple[float, ...] = GRADUATION) -> list[float]:
-    """The values graduated along an axis drawn at ``mu`` (units a mm) up to ``top_mm`` mm: the
-    multiples of the smallest round step (1, 2, 2,5, 5 ×10^k) whose ticks stand ``least[0]`` mm
-    apart or more — closer (down to ``least[-1]``) where that gives fewer than two values —, zero
-    left out (the origin carries its own number)."""
-    if top_mm <= 0.0 or mu <= 0.0:
+def graduation(top_mm: float, mu: float, least: tuple[float, ...] = GRADUATION, bottom_mm: float = 0.0,
+               step: float | None = None) -> list[float]:
+    """The values graduated along an axis drawn at ``mu`` (units a mm) from ``bottom_mm`` (≤ 0) up to
+    ``top_mm`` mm: the multiples of the smallest round step (1, 2, 2,5, 5 ×10^k) whose ticks stand
+    ``least[0]`` mm apart or more — closer (down to ``least[-1]``) where that gives fewer than two
+    values —, or of ``step`` where given (another diagram's at the same μ: the same ticks); zero left
+    out (the origin carries its own number)."""
+    if top_mm - bottom_mm <= 0.0 or mu <= 0.0:
         return []
+
+    def at(step_: float) -> list[float]:
+        low, high = math.ceil(bottom_mm * mu / step_ - 1e-9), math.floor(top_mm * mu / step_ + 1e-9)
+        return [k * step_ for k in range(low, high + 1) if k]
+    if step is not None:
+        return at(step)
     values: list[float] = []
     for gap in least:
-        step = _nice(gap * mu)
-        values = [k * step for k in range(1, int(top_mm * mu / step + 1e-9) + 1)]
+        values = at(_nice(gap * mu))
         if len(values) >= 2:
             break
     return values
+
+
+def graduation_step(values: list[float]) -> float | None:
+    """The step of a graduation (``graduation``), None where it has fewer than two values."""
+    return min(abs(b - a) for a, b in zip(values, values[1:])) if len(values) > 1 else None
+
+
+GRADUATION_CLEAR = 0.5   # mm of paper between a graduation's value and any line (labels.CLEAR)
+TICK = 1.5               # mm: a graduation's tick
+
+
+def _free_boxes(rec: Record):
+    """A test whether a box of lettering keeps ``GRADUATION_CLEAR`` of paper from every line of
+    ``rec`` (each by its half width) and ``labels.APART`` from its lettering (shapely's STRtree over
+    the strokes ``labels.strokes`` gives)."""
+    from shapely import STRtree, LineString, box
+    from graphplan.drawing.labels import APART, strokes
+    segs, halves = [], []
+    for p in rec.items:
+        if p.kind == "text":
+            continue
+        for a, b, hw in strokes(p):
+            segs.append(LineString([a, b]))
+            halves.append(hw)
+    tree = STRtree(segs) if segs else None
+    texts = [box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
+
+    def free(bx: tuple[float, float, float, float]) -> bool:
+        g = box(*bx)
+        if tree is not None:
+            for i in tree.query(g.buffer(GRADUATION_CLEAR + 0.5)):
+                if segs[i].distance(g) < GRADUATION_CLEAR + halves[i]:
+                    return False
+        return all(t.distance(g) >= APART for t in texts)
+    return free
+
+
+def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
+                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True,
+                  scattered: bool = True) -> list[float]:
+    """An ordinate axis through the record's origin graduated in its quantity at ``mu`` (units a
+    mm), as the lab's sheets graduate them: a ``TICK`` at each of ``values`` (``graduation``: round
+    numbers) and the values lettered beside their ticks on one side of the axis (``sides``: −1 left
+    of a vertical axis, under a horizontal one; the first preferred) where they keep clear of the
+    lines and lettering already drawn (the pole's rays left of the M axis, the projections): every
+    value, else every 2nd, 5th or 10th tick's (a draftsman letters the major ticks) — the finest
+    such run of at least two values that all keep clear on one side; where none does, the values
+    clear on the side where most are (``scattered`` False: none). ``letter`` False: the ticks alone
+    (an axis whose values read across from a diagram beside it). Returns the values lettered."""
+    if not values:
+        return []
+    free = _free_boxes(rec) if letter else None
+    from shapely import box as shape_box
+    words = [shape_box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
+
+    def number(v: float, side: float) -> Primitive:
+        """The value beside its tick, its ink ``TICK`` + 0.6 mm off the axis (a comma's tail too)."""
+        at = v / mu
+        if vertical:                     # by its ink, not its advance (a "1" inks past its anchor)
+            p = Primitive("text", ((0.0, at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
+                          text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
+            x0, y0, x1, y1 = p.ink()
+            return p.moved((-(TICK + 0.6) - x1) if side < 0 else (TICK + 0.6 - x0), 0.0)
+        p = Primitive("text", ((at, 0.0),), role="label", layer=LAYER, step=step, text=num(v, lang), size=NUM,
+                      anchor="middle")
+        x0, y0, x1, y1 = p.ink()
+        return p.moved(0.0, (TICK + 0.6 - y0) if side > 0 else (-(TICK + 0.6) - y1))
+    shown: list[float] = []
+    side = sides[0]
+    if letter:
+        unit = graduation_step(values) or abs(values[0])
+        for every in (1, 2, 5, 10):
+            run = [v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6]
+            ok = [sd for sd in sides if len(run) >= 2 and all(free(number(v, sd).ink()) for v in run)]
+            if ok:
+                shown, side = run, ok[0]
+                break
+        else:
+            side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
+            shown = [v for v in values if free(number(v, side).ink())] if scattered else []
+            if scattered and len(shown) < 2:      # fewer than two on either side: each where it is clear
+                both = {v: next((sd for sd in sides if free(number(v, sd).ink())), None) for v in values}
+                if sum(sd is not None for sd in both.values()) > len(shown):
+                    for v in values:
+                        at = v / mu
+                        a, b = ((0.0, at), (sides[0] * TICK, at)) if vertical else ((at, 0.0), (at, sides[0] * TICK))
+                        rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
+                    for v, sd in both.items():
+                        if sd is not None:
+                            rec.items.append(number(v, sd))
+                    return [v for v, sd in both.items() if sd is not None]
+    for v in values:                     # a tick that would run into a word (k, l) is left out
+        at = v / mu
+        a, b = ((0.0, at), (side * TICK, at)) if vertical else ((at, 0.0), (at, side * TICK))
+        tick = shape_box(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]))
+        if all(wd.distance(tick) >= GRADUATION_CLEAR + AXIS_W / 2 for wd in words):
+            rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
+    for v in shown:
+        rec.items.append(number(v, side))
+    return shown
 
 
 def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None:
@@ -459,7 +571,15 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     place_labels(rec, labels[:1], layer=LAYER)
     for asked in numbers:        # a point's number beside it with no line between them where it can be
         place_first(rec, asked, layer=LAYER)      # (a number across a projection reads as that line's)
-    return place_labels(rec, labels[1:], layer=LAYER)
+    place_labels(rec, labels[1:], layer=LAYER)
+    # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
+    graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
+                  step="I* graduation", scattered=projections is None)   # else read down on I*(φ)'s foot
+    dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
+    graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
+        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0,), step="ΔT graduation",
+        letter=False)                                  # its values read across, on ΔT(φ)'s axis
+    return rec
 
 
 BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there

@@ -875,32 +875,43 @@ def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
     return small, base
 
 
-def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None):
+def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None,
+              lead: Leaf | None = None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
     the drawings' ``rows``, then the tables and the notes in one row — the last drawing (ω) in its
     row or leading the tables' —, in the order of the work; where the first drawing does not fit
-    beside the first sheet's title block, the tables' rows first. Where that leaves the
+    beside the first sheet's title block, the table of the positions (the reduced M*c and I* the
+    diagrams are plotted from) alone on the first sheet, the results' tables still last (review 5
+    #15: a set read backwards, its results before the constructions) — unless the tables' rows
+    first (ω(φ) beside them) take fewer sheets. Where that leaves the
     notes alone on the last sheet, the last table goes with them (over them, else beside them) —
     every sheet of a set carries a drawing or a table. The fewest sheets of those — where the last
     table and the notes share a row, the one keeping them together (the notes beside the table, a
-    GAP apart: ``flow`` shares a row's spare width out between its items and sets them far apart)."""
+    GAP apart: ``flow`` shares a row's spare width out between its items and sets them far apart).
+    ``lead``: the table of the positions lettered larger, tried first where it leads alone (its sheet
+    not three-quarters empty)."""
     tried = []
-    for order in ("drawings", "tables"):
-        for tail in ([tables + [notes]], [tables[:-1] + [Stack([tables[-1], notes])]],
-                     [tables[:-1] + [Row([tables[-1], notes])]]):     # the last drawing (ω) goes with the tables
+    for rank, order in enumerate(("drawings", "data", "tables")):
+        if order != "drawings" and tried and tried[0][1] == 0:
+            break                          # the order of the work lays out: taken as before
+        ends = tables if order in ("drawings", "tables") else tables[1:]
+        for tail in ([ends + [notes]], [ends[:-1] + [Stack([ends[-1], notes])]],
+                     [ends[:-1] + [Row([ends[-1], notes])]]):     # the last drawing (ω) goes with the tables
             if order == "drawings":        # in the order of the work: ω beside the band, or leading the tables' row
                 ways = [rows + tail, rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]]
+            elif order == "data":          # the table of the positions first, the results' tables last
+                ways = [[[t1]] + rows + tail for t1 in ([lead] if lead else []) + tables[:1]]
+                ways += [[[t1]] + rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]
+                         for t1 in ([lead] if lead else []) + tables[:1]]
             else:
                 ways = [[tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
             for first in ways:
                 laid = flow([r for r in first if r], region, keep, later=later)
                 if laid is not None and not _notes_alone(laid[-1]):
-                    spread = len(tail[0]) == len(tables) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
-                    tried.append((len(laid), spread, len(tried), laid))
-        if tried:
-            break
-    if tried:
-        return min(tried)[3]
+                    spread = len(tail[0]) == len(ends) + 1 and any(_one_row(pg, tables[-1], notes) for pg in laid)
+                    tried.append((len(laid), rank, spread, len(tried), laid))
+    if tried:                              # the fewest sheets, then the order of the work
+        return min(tried)[4]
     return flow(rows + [tables + [notes]], region, keep, later=later)
 
 
@@ -1010,8 +1021,10 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
                                     for other in LANGS if other != lang):
             nook = None                      # the same sheets in either language
         nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
+        lead = Leaf(tables[0].name, record=enlarged(tables[0].record, TABLES)) if factor == 1.0 else None
         leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
-            [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f)))
+            [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f),
+            lead=lead))
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None

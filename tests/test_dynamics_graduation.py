@@ -1,0 +1,105 @@
+"""Every dynamics diagram graduates its ordinate axes in values (review 5 #14, review 3 #3/#12: the
+M*_c/M*_d, A, ΔT and I* axes carried no values, only μ in the notes): round values (1, 2, 2,5, 5
+×10^k steps) whose ticks stand where value/μ puts them, at least 8 mm apart, at least two values
+lettered on each axis as one run (every tick's, or every 2nd, 5th, 10th), none touching a line or
+other lettering, in both languages; the energy–mass diagram's ΔT axis ticked at ΔT(φ)'s heights."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from conftest import example
+
+ROUND = (1.0, 2.0, 2.5, 5.0)
+
+
+@pytest.fixture(scope="module")
+def flywheel():
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import construct
+    return construct(analyse(example("slotter"), None), None, 0.5, L=200.0)
+
+
+def _records(f, lang):
+    from graphplan.drawing.flywheel import (energy_projected, energy_record, inertia_record, inertia_turned,
+                                            moments_record, wittenbauer_record)
+    return {"moments": moments_record(f, lang), "energy": energy_projected(f, lang, 150.0, 170.0),
+            "wittenbauer": wittenbauer_record(f, lang, projections=(-20.0, -10.0)),
+            "inertia": inertia_turned(f, lang, 150.0, 10.0),
+            "ΔT(φ) alone": energy_record(f, lang), "I*(φ) alone": inertia_record(f, lang)}
+
+
+def _value(text: str) -> float:
+    return float(text.replace(",", ".").replace("−", "-"))
+
+
+def _axis(rec, step: str, vertical: bool = True):
+    """(value lettered, where its tick stands along the axis) of an axis's graduation ``step``."""
+    ticks = [p for p in rec.items if p.kind == "segment" and p.step == step]
+    texts = [p for p in rec.items if p.kind == "text" and p.step == step]
+    along = [(p.points[0][1] if vertical else p.points[0][0]) for p in ticks]
+    out = []
+    for t in texts:                      # each value beside its own tick (the nearest along the axis)
+        x, y = t.points[0]
+        c = 0.5 * (t.ink()[1] + t.ink()[3]) if vertical else x
+        out.append((_value(t.text), min(along, key=lambda a: abs(a - c))))
+    return out, along
+
+
+def _check(values, along, mu, origin=0.0, least=2):
+    assert len(values) >= least, values
+    if not values:
+        return
+    steps = sorted(along)
+    assert min(b - a for a, b in zip(steps, steps[1:])) >= 8.0 - 1e-9
+    for v, at in values:
+        assert v * 1.0 == pytest.approx((at - origin) * mu, rel=1e-9, abs=1e-9)
+    step = min(abs(b - a) for a, b in zip(steps, steps[1:])) * mu
+    e = 10 ** math.floor(math.log10(step) + 1e-12)
+    assert any(abs(step / e - m) < 1e-6 for m in ROUND), step
+    for v, _ in values:
+        assert abs(v / step - round(v / step)) < 1e-6, (v, step)
+    shown = sorted(v for v, _ in values)           # lettered as a draftsman letters major ticks: a run
+    gaps = {round(b - a, 9) for a, b in zip(shown, shown[1:])}     # of one step, no value skipped
+    assert len(gaps) == 1 and any(abs(min(gaps) / step - m) < 1e-6 for m in (1, 2, 5, 10)), shown
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_every_ordinate_axis_is_graduated_in_round_values_where_mu_puts_them(flywheel, lang):
+    f = flywheel
+    recs = _records(f, lang)
+    m = recs["moments"]
+    _check(*_axis(m, "M graduation"), f.mu_M)
+    a_axis = [p for p in m.items if p.kind == "vector" and p.step == "axes A"
+              and abs(p.points[0][1] - p.points[1][1]) < 1e-9][0]      # the work diagram's φ axis
+    _check(*_axis(m, "A graduation"), f.mu_A, origin=a_axis.points[0][1])
+    _check(*_axis(recs["energy"], "ΔT graduation"), f.mu_A)
+    w = recs["wittenbauer"]
+    _check(*_axis(w, "I* graduation", vertical=False), f.mu_I, least=0)   # where a run keeps clear: else
+    # the ticks alone, the values read down on the turned I*(φ)'s foot (checked below)
+    # its ΔT axis ticked at ΔT(φ)'s values (the same μ_T, the same heights: the values read across)
+    lettered, ticks = _axis(w, "ΔT graduation")
+    assert lettered == []
+    beside = [at * f.mu_A for _, at in _axis(recs["energy"], "ΔT graduation")[0]]
+    assert len(ticks) >= 2 and {round(t * f.mu_A, 6) for t in ticks} >= {round(v, 6) for v in beside}
+    i_values = [(_value(p.text), p.points[0][0]) for p in recs["inertia"].items
+                if p.kind == "text" and p.step == "I* graduation"]
+    assert len(i_values) >= 2 and all(v == pytest.approx(x * f.mu_I) for v, x in i_values)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_no_graduation_value_touches_a_line_or_lettering(flywheel, lang):
+    from graphplan.drawing.labels import collisions
+    for name, rec in _records(flywheel, lang).items():
+        hits = [c for c in collisions(rec) if any(
+            c.startswith(repr(p.text)) for p in rec.items if p.kind == "text" and p.step.endswith("graduation"))]
+        assert hits == [], (name, hits[:3])
+
+
+def test_the_moment_and_work_axes_carry_their_units(flywheel):
+    from graphplan.drawing.flywheel import moments_record
+    for lang, nm, j in (("uk", "Н·м", "Дж"), ("en", "N·m", "J")):
+        texts = [p.text for p in moments_record(flywheel, lang).items if p.kind == "text"
+                 and p.step in ("axes M", "axes A")]
+        assert any(t.endswith(", " + nm) for t in texts) and any(t.endswith(", " + j) for t in texts), texts
