@@ -314,6 +314,8 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
+    if dr.turn.revolute:          # the hodographs' shared numbers, said once (drawing.charts.RULER_MM)
+        lines.append(w('coincide'))
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     by_scale: dict[float, list[str]] = {}
     for gp in fp.groups:                  # each group at its own scale (forceplans.group_scales)
