@@ -330,6 +330,7 @@ DETAIL_GAIN = 2.0      # … drawn only where it is at least this much larger th
 DETAIL_NAME = "I"      # GOST 2.305's extension element: the spot ringed and named, drawn beside at its scale
 
 
+POLE_SHARE = 0.25      # a detail takes in the pole where it lies within this share of the points' spread
 DETAIL_APART = 3.0     # mm: the nearest two points a detail tells apart drawn at least this far apart
 
 
@@ -349,10 +350,11 @@ class Detail:
 
 def hodograph_detail(points: list[tuple[int, complex]], mu_r: float, size: float = DETAIL_MM) -> Detail | None:
     """Where a hodograph's points (N) crowd — each within the lettering's ``CLUSTER_MM`` of
-    another at μR — the window round them (with the pole where it lies no farther off than their own
-    spread: the idle stroke's small reactions about it) and the series μR that draws it ``size`` mm
-    across (``hodograph_scale``); None where none crowd or the detail would not be ``DETAIL_GAIN``
-    times larger. The press's R12: 0–4, 7–11 within 2 mm of the pole at 150 N/mm → 15 N/mm."""
+    another at μR — the window round them (with the pole where it lies within ``POLE_SHARE`` of their
+    spread) and the series μR that draws it ``size`` mm across (``hodograph_scale``), or coarser
+    where that still draws its nearest two points ``DETAIL_APART`` apart; None where none crowd or
+    the detail would not be ``DETAIL_GAIN`` times larger. The press4's R34: 0–3, 9–11 within
+    1.5 mm of each other at 150 N/mm → 4 N/mm."""
     near = crowded([(p, w / mu_r) for p, w in points])
     if not near:
         return None
@@ -360,7 +362,7 @@ def hodograph_detail(points: list[tuple[int, complex]], mu_r: float, size: float
     x0, x1 = min(w.real for w in ws), max(w.real for w in ws)
     y0, y1 = min(w.imag for w in ws), max(w.imag for w in ws)
     spread = max(x1 - x0, y1 - y0, CLUSTER_MM * mu_r)
-    if max(x0, -x1, y0, -y1, 0.0) <= spread:       # the pole no farther off than the points' spread
+    if max(x0, -x1, y0, -y1, 0.0) <= POLE_SHARE * spread:      # the pole close by: drawn in it too
         x0, x1, y0, y1 = min(x0, 0.0), max(x1, 0.0), min(y0, 0.0), max(y1, 0.0)
     mu = hodograph_scale(max(x1 - x0, y1 - y0) or mu_r, size)
     # no larger than its points need: the nearest two it tells apart DETAIL_APART mm apart
@@ -401,24 +403,91 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
             if abs(b - a) > 0.5:
                 jumps += 1
                 for part in ([[(float(a.real), float(a.imag)), (float(b.real), float(b.imag))]] if box is None
-                             else _clipped(np.array([a, b]), box)):
+                             else [q for q in _clipped(np.array([a, b]), box)
+                                   if math.dist(q[0], q[-1]) >= 3.0]):     # no stray dash at a detail's edge
                     rec.segment(part[0], part[-1], role="projection", layer="diagrams", step=f"{step}: the jump")
     return jumps
 
 
-def _numbered(rec: Record, points: list[tuple[int, complex]], step: str) -> list[str]:
-    """Each position's point and its number beside it (on a leader where crowded); points the
-    ruler's 0.5 mm cannot tell apart share one number "3–4". Returns those shared numbers."""
+def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre: complex = 0j) -> list[str]:
+    """Each position's point and its number beside it, on the side away from ``centre`` (the pole;
+    a detail's middle), on a leader where crowded; points the ruler's 0.5 mm cannot tell apart
+    share one number "3–4". Returns those shared numbers."""
     numbers, shared = [], []
     for first, last, w in _clusters(points):
         text = str(first) if first == last else f"{first}–{last}"
         if first != last:
             shared.append(text)
-        numbers.append(LabelRequest(w, text, w if abs(w) > 1e-9 else 1j, 2.5, step=step, sight=True))
+        numbers.append(LabelRequest(w, text, w - centre if abs(w - centre) > 1e-9 else 1j, 2.5, step=step,
+                                    sight=True))
     for _, w in points:
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
                                     # other numbers (on a leader where its point is crowded)
+    return shared
+
+
+FAN_GAPS = (3.0, 5.0, 7.0, 9.5, 12.0)    # mm past the detail's outermost point a fanned number stands
+FAN_TURNS = (0.0, 12.0, -12.0, 24.0, -24.0, 36.0, -36.0)    # degrees off its point's own direction
+
+
+def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[str]:
+    """A detail's points numbered as a draftsman calls out a crowded spot: each number out past
+    the points in its own point's direction from their middle, on a thin leader to it — in turn
+    round the middle, clear of the lines, the points, the other numbers (3 mm, labels.NUMBERS_APART)
+    and their leaders; a number that finds no such spot is placed as any other (``place_labels``).
+    Points the ruler's 0.5 mm cannot tell apart share a number. Returns those shared numbers."""
+    from shapely.geometry import LineString, Point, box
+    from shapely.ops import unary_union
+    runs = _clusters(points)
+    for _, w in points:
+        rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    if not runs:
+        return []
+    mid = sum(w for _, _, w in runs) / len(runs)
+    reach = max(abs(w - mid) for _, _, w in runs)
+    lines = [g for g in (_shape(q) for q in rec.items) if g is not None]
+    ink = unary_union(lines).buffer(0.5) if lines else Point(0, 0).buffer(0)
+    dots = [Point(w.real, w.imag).buffer(0.9) for _, w in points]
+    boxes, leaders, shared, left = [], [], [], []
+    for first, last, w in sorted(runs, key=lambda r: math.atan2((r[2] - mid).imag, (r[2] - mid).real)):
+        text = str(first) if first == last else f"{first}–{last}"
+        if first != last:
+            shared.append(text)
+        u = (w - mid) / abs(w - mid) if abs(w - mid) > 1e-9 else 1j
+        spot = None
+        for gap in FAN_GAPS:
+            for turn in FAN_TURNS:
+                at = mid + (reach + gap) * u * complex(math.cos(math.radians(turn)), math.sin(math.radians(turn)))
+                prim = Primitive("text", ((at.real, at.imag - 1.25),), text=text, size=2.5, anchor="middle")
+                bx = box(*prim.ink())
+                if bx.buffer(0.5).intersects(ink) or any(bx.buffer(3.0).intersects(b) for b in boxes):
+                    continue
+                end = bx.exterior.interpolate(bx.exterior.project(Point(w.real, w.imag)))
+                lead = LineString([(w.real, w.imag), (end.x, end.y)])
+                if lead.length < 1.5:
+                    continue
+                a = lead.interpolate(0.9)
+                b = lead.interpolate(max(0.9, lead.length - 0.4))
+                lead = LineString([(a.x, a.y), (b.x, b.y)])
+                if (any(lead.crosses(q) or lead.intersects(q) for q in leaders)
+                        or any(lead.intersects(d) for k, d in enumerate(dots) if abs(points[k][1] - w) > 1e-9)
+                        or any(lead.intersects(b_) for b_ in boxes) or lead.crosses(unary_union(lines))):
+                    continue
+                spot = (prim, bx, lead)
+                break
+            if spot:
+                break
+        if spot is None:
+            left.append(LabelRequest(w, text, u, 2.5, step=step, sight=True))
+            continue
+        prim, bx, lead = spot
+        (x0, y0), (x1, y1) = lead.coords
+        rec.segment((x0, y0), (x1, y1), role="label", layer="labels", step=step)
+        rec.label(prim.points[0], text, size=2.5, anchor="middle", step=step, layer="labels")
+        boxes.append(bx)
+        leaders.append(lead)
+    place_labels(rec, left)
     return shared
 
 
@@ -537,10 +606,22 @@ def _detail(t: Turn, f: np.ndarray, d: Detail, inside: list[tuple[int, complex]]
     if box[1] <= 0.0 <= box[3]:
         det.segment((box[0], 0.0), (box[2], 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     _hodograph_lines(det, t, f, d.mu, step, box)
-    shared = _numbered(det, [(p, w / d.mu) for p, w in inside], step)
+    shared = _fanned(det, [(p, w / d.mu) for p, w in inside], step)
     b = det.bounds()
     det.label((b[0], b[1] - 4.5), f"{DETAIL_NAME} (μ_R = {num(d.mu, lang)} {unit('N/mm', lang)})", size=2.5, step=step)
     return det, shared
+
+
+def shares_numbers(t: Turn, size: float = HODOGRAPH_MM) -> bool:
+    """Whether a hodograph drawn ``size`` mm across numbers two positions as one ("0–2": their
+    points within the ruler's ``RULER_MM`` at its μR) — the sheet's notes then say what that means."""
+    for key in t.revolute:
+        f = t.ks.reactions[key].force
+        span = max(np.ptp(np.r_[f.real, 0.0]), np.ptp(np.r_[f.imag, 0.0])) or 1.0
+        mu_r = hodograph_scale(float(span), size)
+        if any(a != b for a, b, _ in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()])):
+            return True
+    return False
 
 
 def path_travelled(t: Turn) -> np.ndarray:

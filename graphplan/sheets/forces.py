@@ -314,7 +314,8 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
-    if dr.turn.revolute:          # the hodographs' shared numbers, said once (drawing.charts.RULER_MM)
+    from graphplan.drawing.charts import HODOGRAPH_MM, shares_numbers
+    if shares_numbers(dr.turn, HODOGRAPH_MM / mu["hodographs"]):   # the hodographs' "0–2", said once
         lines.append(w('coincide'))
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     by_scale: dict[float, list[str]] = {}
