@@ -439,17 +439,24 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
     Points the ruler's 0.5 mm cannot tell apart share a number. Returns those shared numbers."""
     from shapely.geometry import LineString, Point, box
     from shapely.ops import unary_union
-    runs = _clusters(points)
+    all_runs = _clusters(points)
     for _, w in points:
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    # only the crowded points fanned, about their own middle; the others numbered beside their points
+    tight = set(crowded([(a, w) for a, _, w in all_runs], CLUSTER_MM + 1.0))
+    runs = [r for r in all_runs if r[0] in tight]
+    alone = [r for r in all_runs if r[0] not in tight]
+    shared = [f"{a}–{b}" for a, b, _ in alone if a != b]
     if not runs:
-        return []
+        place_labels(rec, [LabelRequest(w, str(a) if a == b else f"{a}–{b}", 1j, 2.5, step=step, sight=True)
+                           for a, b, w in alone])
+        return shared
     mid = sum(w for _, _, w in runs) / len(runs)
     reach = max(abs(w - mid) for _, _, w in runs)
     lines = [g for g in (_shape(q) for q in rec.items) if g is not None]
     ink = unary_union(lines).buffer(0.5) if lines else Point(0, 0).buffer(0)
     dots = [Point(w.real, w.imag).buffer(0.9) for _, w in points]
-    boxes, leaders, shared, left = [], [], [], []
+    boxes, leaders, left = [], [], []
     for first, last, w in sorted(runs, key=lambda r: math.atan2((r[2] - mid).imag, (r[2] - mid).real)):
         text = str(first) if first == last else f"{first}–{last}"
         if first != last:
@@ -487,7 +494,8 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
         rec.label(prim.points[0], text, size=2.5, anchor="middle", step=step, layer="labels")
         boxes.append(bx)
         leaders.append(lead)
-    place_labels(rec, left)
+    place_labels(rec, left + [LabelRequest(w, str(a) if a == b else f"{a}–{b}", w - mid, 2.5, step=step, sight=True)
+                              for a, b, w in alone])
     return shared
 
 
@@ -524,8 +532,10 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         under.append(word("fs jump", lang, what=", ".join(ext)))
     wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
     field = (x0, y0, max(x1, x0 + wide), y1)
-    for share in DETAIL_SHARES:         # the largest detail that finds room within the hodograph's field
-        detail = hodograph_detail(points, mu_r, DETAIL_MM * share * size / HODOGRAPH_MM)
+    # a flat hodograph (a sliver of a cell) may take its detail beside it: its cell as wide as a round one's
+    flat = hodograph_growth(t, key) > 1.0 + 1e-9
+    for share in DETAIL_SHARES + ((None,) if flat else ()):   # the largest detail with room in the field
+        detail = hodograph_detail(points, mu_r, DETAIL_MM * (share or 1.0) * size / HODOGRAPH_MM)
         if detail is None:
             break
         bx0, by0, bx1, by1 = detail.box
@@ -533,7 +543,11 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
         det, det_shared = _detail(t, f, detail, near, lang, f"{step}: detail")
-        moved = _corner(rec, det, (c, r), field)
+        if share is None:                                     # beside the field, tops level
+            d0, _, _, d3 = det.bounds()
+            moved = det.moved(field[2] + DETAIL_GAP - d0, field[3] - d3)
+        else:
+            moved = _corner(rec, det, (c, r), field)
         if moved is None:
             continue
         inside, shared = near, det_shared
@@ -557,6 +571,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
 
 
 DETAIL_SHARES = (1.0, 0.8, 0.6, 0.45, 0.35)   # the detail's sizes tried, in DETAIL_MM
+DETAIL_GAP = 6.0       # mm between a flat hodograph's field and the detail drawn beside it
 DETAIL_CLEAR = 2.0     # mm between a detail and the hodograph's lines, points and ring
 
 
