@@ -405,7 +405,8 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
                 for part in ([[(float(a.real), float(a.imag)), (float(b.real), float(b.imag))]] if box is None
                              else [q for q in _clipped(np.array([a, b]), box)
                                    if math.dist(q[0], q[-1]) >= 3.0]):     # no stray dash at a detail's edge
-                    rec.segment(part[0], part[-1], role="projection", layer="diagrams", step=f"{step}: the jump")
+                    rec.segment(part[0], part[-1], role="projection", layer="diagrams",
+                                step=f"{step}: the jump" if box is None else f"{step}: the jump's part")
     return jumps
 
 
@@ -533,7 +534,9 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
     field = (x0, y0, max(x1, x0 + wide), y1)
     # a flat hodograph (a sliver of a cell) may take its detail beside it: its cell as wide as a round one's
-    flat = hodograph_growth(t, key) > 1.0 + 1e-9
+    # — only where it would otherwise number two positions as one ("0–2"): its cell grows for that alone
+    flat = (hodograph_growth(t, key) > 1.0 + 1e-9
+            and any(a != b for a, b, _ in _clusters([(p, w / mu_r) for p, w in points])))
     for share in DETAIL_SHARES + ((None,) if flat else ()):   # the largest detail with room in the field
         detail = hodograph_detail(points, mu_r, DETAIL_MM * (share or 1.0) * size / HODOGRAPH_MM)
         if detail is None:
@@ -551,6 +554,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         if moved is None:
             continue
         inside, shared = near, det_shared
+        rec.scales["mu_R detail"] = detail.mu
         rec.circle((c.real, c.imag), r, role="construction", layer="diagrams", step=f"{step}: detail")
         rec.extend(moved)
         place_labels(rec, [LabelRequest(c + r * (-1 + 1j) / abs(-1 + 1j), DETAIL_NAME, -1 + 1j, 3.5,
