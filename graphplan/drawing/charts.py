@@ -440,9 +440,12 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
     Points the ruler's 0.5 mm cannot tell apart share a number. Returns those shared numbers."""
     from shapely.geometry import LineString, Point, box
     from shapely.ops import unary_union
+    from graphplan.drawing.labels import _SKETCH
     all_runs = _clusters(points)
     for _, w in points:
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    if _SKETCH[-1]:                 # a sketch (drawing.labels.sketched): the numbers asked for, not placed
+        return [f"{a}–{b}" for a, b, _ in all_runs if a != b]
     # only the crowded points fanned, about their own middle; the others numbered beside their points
     tight = set(crowded([(a, w) for a, _, w in all_runs], CLUSTER_MM + 1.0))
     runs = [r for r in all_runs if r[0] in tight]
@@ -454,8 +457,8 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
         return shared
     mid = sum(w for _, _, w in runs) / len(runs)
     reach = max(abs(w - mid) for _, _, w in runs)
-    lines = [g for g in (_shape(q) for q in rec.items) if g is not None]
-    ink = unary_union(lines).buffer(0.5) if lines else Point(0, 0).buffer(0)
+    lines = unary_union([g for g in (_shape(q) for q in rec.items) if g is not None])
+    ink = lines.buffer(0.5)
     dots = [Point(w.real, w.imag).buffer(0.9) for _, w in points]
     boxes, leaders, left = [], [], []
     for first, last, w in sorted(runs, key=lambda r: math.atan2((r[2] - mid).imag, (r[2] - mid).real)):
@@ -469,7 +472,8 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
                 at = mid + (reach + gap) * u * complex(math.cos(math.radians(turn)), math.sin(math.radians(turn)))
                 prim = Primitive("text", ((at.real, at.imag - 1.25),), text=text, size=2.5, anchor="middle")
                 bx = box(*prim.ink())
-                if bx.buffer(0.5).intersects(ink) or any(bx.buffer(3.0).intersects(b) for b in boxes):
+                if (bx.buffer(0.5).intersects(ink) or any(bx.buffer(3.0).intersects(b) for b in boxes)
+                        or any(bx.buffer(0.6).intersects(q) for q in leaders)):
                     continue
                 end = bx.exterior.interpolate(bx.exterior.project(Point(w.real, w.imag)))
                 lead = LineString([(w.real, w.imag), (end.x, end.y)])
@@ -480,7 +484,7 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
                 lead = LineString([(a.x, a.y), (b.x, b.y)])
                 if (any(lead.crosses(q) or lead.intersects(q) for q in leaders)
                         or any(lead.intersects(d) for k, d in enumerate(dots) if abs(points[k][1] - w) > 1e-9)
-                        or any(lead.intersects(b_) for b_ in boxes) or lead.crosses(unary_union(lines))):
+                        or any(lead.intersects(b_) for b_ in boxes) or lead.crosses(lines)):
                     continue
                 spot = (prim, bx, lead)
                 break
@@ -500,7 +504,8 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
     return shared
 
 
-def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
+def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True,
+                     beside: bool = False) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
@@ -533,10 +538,11 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         under.append(word("fs jump", lang, what=", ".join(ext)))
     wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
     field = (x0, y0, max(x1, x0 + wide), y1)
-    # a flat hodograph (a sliver of a cell) may take its detail beside it: its cell as wide as a round one's
-    # — only where it would otherwise number two positions as one ("0–2"): its cell grows for that alone
-    flat = (hodograph_growth(t, key) > 1.0 + 1e-9
+    # a flat hodograph (a sliver of a cell) may take its detail beside it (``beside``) — only where it would
+    # otherwise number two positions as one ("0–2"): its cell grows for that alone
+    flat = (beside and hodograph_growth(t, key) > 1.0 + 1e-9
             and any(a != b for a, b, _ in _clusters([(p, w / mu_r) for p, w in points])))
+    ink = None
     for share in DETAIL_SHARES + ((None,) if flat else ()):   # the largest detail with room in the field
         detail = hodograph_detail(points, mu_r, DETAIL_MM * (share or 1.0) * size / HODOGRAPH_MM)
         if detail is None:
@@ -545,12 +551,20 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         near = [(p, w) for p, w in points if bx0 - 1e-9 <= w.real <= bx1 + 1e-9 and by0 - 1e-9 <= w.imag <= by1 + 1e-9]
         c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
+        if ink is None:
+            ink = _ink_of(rec)
+        if share is not None:           # the sketch first, 3 mm kept round it for its fanned numbers
+            from graphplan.drawing.labels import sketched
+            with sketched():
+                rough, _ = _detail(t, f, detail, near, lang, f"{step}: detail")
+            if _corner(ink, rough, (c, r), field, grow=3.0) is None:
+                continue
         det, det_shared = _detail(t, f, detail, near, lang, f"{step}: detail")
         if share is None:                                     # beside the field, tops level
             d0, _, _, d3 = det.bounds()
             moved = det.moved(field[2] + DETAIL_GAP - d0, field[3] - d3)
         else:
-            moved = _corner(rec, det, (c, r), field)
+            moved = _corner(ink, det, (c, r), field)
         if moved is None:
             continue
         inside, shared = near, det_shared
@@ -591,23 +605,29 @@ def _shape(q: Primitive):
     return None
 
 
-def _corner(rec: Record, det: Record, ring: tuple[complex, float],
-            field: tuple[float, float, float, float]) -> Record | None:
+def _ink_of(rec: Record):
+    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely)."""
+    from shapely.ops import unary_union
+    return unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
+                       ).simplify(0.1).buffer(DETAIL_CLEAR, resolution=4)
+
+
+def _corner(ink, det: Record, ring: tuple[complex, float],
+            field: tuple[float, float, float, float], grow: float = 0.0) -> Record | None:
     """``det`` moved into a corner of the hodograph's ``field`` (its axes' extent, mm) where it
     keeps ``DETAIL_CLEAR`` off every line, point and the ``ring`` — the room a hodograph that keeps
     to one quadrant or a diagonal leaves — or None: the sheet's composition is not disturbed."""
     from shapely.geometry import Point, box
-    from shapely.ops import unary_union
-    drawn = [g for g in (_shape(q) for q in rec.items) if g is not None]
-    drawn.append(Point(ring[0].real, ring[0].imag).buffer(ring[1]))
-    ink = unary_union(drawn).buffer(DETAIL_CLEAR)
+    ringed = Point(ring[0].real, ring[0].imag).buffer(ring[1] + DETAIL_CLEAR)
     x0, y0, x1, y1 = field
     d0, e0, d1, e1 = det.bounds()
-    w, h = d1 - d0, e1 - e0
+    w, h = d1 - d0 + 2 * grow, e1 - e0 + 2 * grow       # ``grow``: room kept round a sketch for its numbers
+    d0, e0 = d0 - grow, e0 - grow
     if w > x1 - x0 or h > y1 - y0:
         return None
     for cx, cy in ((x1 - w, y1 - h), (x0, y1 - h), (x1 - w, y0), (x0, y0)):
-        if not box(cx, cy, cx + w, cy + h).intersects(ink):
+        spot = box(cx, cy, cx + w, cy + h)
+        if not spot.intersects(ringed) and not spot.intersects(ink):
             return det.moved(cx - d0, cy - e0)
     return None
 
@@ -629,18 +649,6 @@ def _detail(t: Turn, f: np.ndarray, d: Detail, inside: list[tuple[int, complex]]
     b = det.bounds()
     det.label((b[0], b[1] - 4.5), f"{DETAIL_NAME} (μ_R = {num(d.mu, lang)} {unit('N/mm', lang)})", size=2.5, step=step)
     return det, shared
-
-
-def shares_numbers(t: Turn, size: float = HODOGRAPH_MM) -> bool:
-    """Whether a hodograph drawn ``size`` mm across numbers two positions as one ("0–2": their
-    points within the ruler's ``RULER_MM`` at its μR) — the sheet's notes then say what that means."""
-    for key in t.revolute:
-        f = t.ks.reactions[key].force
-        span = max(np.ptp(np.r_[f.real, 0.0]), np.ptp(np.r_[f.imag, 0.0])) or 1.0
-        mu_r = hodograph_scale(float(span), size)
-        if any(a != b for a, b, _ in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()])):
-            return True
-    return False
 
 
 def path_travelled(t: Turn) -> np.ndarray:
