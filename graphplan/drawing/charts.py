@@ -553,11 +553,11 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
         if ink is None:
             ink = _ink_of(rec)
-        if share is not None:           # the sketch first, 3 mm kept round it for its fanned numbers
+        if share is not None:           # the sketch first: where it finds no room, neither does the lettered one
             from graphplan.drawing.labels import sketched
             with sketched():
                 rough, _ = _detail(t, f, detail, near, lang, f"{step}: detail")
-            if _corner(ink, rough, (c, r), field, grow=3.0) is None:
+            if _corner(ink, rough, (c, r), field) is None:
                 continue
         det, det_shared = _detail(t, f, detail, near, lang, f"{step}: detail")
         if share is None:                                     # beside the field, tops level
