@@ -609,7 +609,7 @@ def _ink_of(rec: Record):
     """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely)."""
     from shapely.ops import unary_union
     return unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
-                       ).simplify(0.1).buffer(DETAIL_CLEAR, resolution=4)
+                       ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
 
 
 def _corner(ink, det: Record, ring: tuple[complex, float],
