@@ -159,8 +159,9 @@ def test_the_resistance_charts_force_axis_is_graduated(press_turn):
 def test_flat_hodographs_grow_where_the_sheet_has_room(press_turn):
     """Review5 #6: the press's hodographs were 60 × 15 mm slivers at 150 N/mm in a 125 mm wide
     column, their idle-stroke numbers merged "7–11". A hodograph's growth is 1/√(its aspect), at
-    most 2 (checked against its own extents), and on the A1 sheet the press's are drawn at least
-    1.6 times the round size — μR finer than 150 N/mm — the main drawings' scales unchanged."""
+    most 2 (checked against its own extents); on the A1 sheet the press's are drawn at least 1.6
+    times the round size — μR finer than 150 N/mm — every position numbered, a number shared only
+    where the points lie within the ruler's 0.5 mm — the main drawings' scales unchanged."""
     import numpy as np
     from graphplan.drawing.charts import FLAT_GROWTH, hodograph_growth
     from graphplan.sheets import forces as sf
@@ -175,7 +176,29 @@ def test_flat_hodographs_grow_where_the_sheet_has_room(press_turn):
     assert 1.0 / p.mu["hodographs"] >= 1.6
     hods = dr.drawings(p.mu, "en")["hodographs"]
     assert hods and all(rec.scales["mu_R"] < 150.0 for rec in hods)
+    # every position numbered; a number shared only by points within the ruler's 0.5 mm at the scale
+    # they are drawn (the hodograph's, or its detail's "I" where one has room)
+    count = press_turn.count
+    for rec in hods:
+        key = rec.title.split()[-1]
+        f = press_turn.ks.reactions[key].force
+        idx = dict((pos, k) for k, pos in press_turn.position_index())
+        mu_d = rec.scales.get("mu_R detail")
+        assert mu_d is None or mu_d * 2 <= rec.scales["mu_R"], rec.title
+        texts = [(q.text, q.step.endswith("detail")) for q in rec.items
+                 if q.kind == "text" and q.text.replace("–", "").isdigit()]
+        assert sorted(n for t, _ in texts for n in _runs(t)) == list(range(count)), texts
+        for t, in_detail in texts:
+            run = _runs(t)
+            mu = mu_d if in_detail else rec.scales["mu_R"]
+            for a, b in zip(run, run[1:]):
+                assert abs(f[idx[b]] - f[idx[a]]) / mu <= 0.5 + 1e-9, (rec.title, t)
     assert p.mu["scheme"] == pytest.approx(0.002) and p.mu["lever"] == pytest.approx(0.0113, rel=1e-3)
+
+
+def _runs(text: str) -> list[int]:
+    a, _, b = text.partition("–")
+    return list(range(int(a), int(b or a) + 1))
 
 
 def test_a_wide_group_table_is_set_in_two_tiers():

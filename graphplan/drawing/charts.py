@@ -269,23 +269,29 @@ def reaction_record(t: Turn, key: str, width: float = 180.0, height: float = 60.
     return rec
 
 
-CLUSTER_MM = 2.5   # consecutive positions this close (each to the last, all within twice it of the run's
-                   # first) share one number, "6–10": points nearer than the lettering's height (2.5 mm)
-                   # leave no room for a number each; points farther apart are numbered each
+CLUSTER_MM = 1.5   # points nearer than this (their dots 1 mm across all but touch) a number on a leader
+                   # no longer tells apart: a hodograph draws them again in a detail at a larger scale
+RULER_MM = 0.5     # consecutive positions this close on the drawing are one point to the ruler: one
+                   # number "3–4" for them, and a note says they coincide
 
 
-def _clusters(points: list[tuple[int, complex]]) -> list[tuple[int, int, complex]]:
-    """Consecutive positions drawn within ``CLUSTER_MM`` of the run's first point, as (first,
-    last, the run's middle point): one number "6–10" for a run the idle stroke bunches into one
-    spot, not five numbers crowding it."""
+def _clusters(points: list[tuple[int, complex]], near: float = RULER_MM) -> list[tuple[int, int, complex]]:
+    """Consecutive positions drawn within ``near`` of the run's last point (and twice it of its
+    first), as (first, last, the run's middle point): one number "3–4" for points the ruler's
+    0.5 mm cannot tell apart, not two numbers on one spot."""
     runs: list[list[tuple[int, complex]]] = []
     for pos, w in points:
-        if (runs and pos == runs[-1][-1][0] + 1 and abs(w - runs[-1][-1][1]) <= CLUSTER_MM
-                and abs(w - runs[-1][0][1]) <= 2 * CLUSTER_MM):
+        if (runs and pos == runs[-1][-1][0] + 1 and abs(w - runs[-1][-1][1]) <= near
+                and abs(w - runs[-1][0][1]) <= 2 * near):
             runs[-1].append((pos, w))
         else:
             runs.append([(pos, w)])
     return [(r[0][0], r[-1][0], r[len(r) // 2][1]) for r in runs]
+
+
+def crowded(points: list[tuple[int, complex]], near: float = CLUSTER_MM) -> list[int]:
+    """The positions whose point has another position's point within ``near`` mm."""
+    return [p for p, w in points if any(q != p and abs(w - v) < near for q, v in points)]
 
 
 HODOGRAPH_MM = 60.0    # a hodograph's larger extent (its curve with the origin) at size factor 1: with its
@@ -318,12 +324,197 @@ def hodograph_growth(t: Turn, key: str) -> float:
     return min(FLAT_GROWTH, 1.0 / math.sqrt(max(min(w, h) / max(w, h), FLAT_GROWTH ** -2)))
 
 
-def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True) -> Record:
+DETAIL_MM = 45.0       # a hodograph's detail (its crowded points at a larger scale): its larger extent at
+                       # size factor 1
+DETAIL_GAIN = 2.0      # … drawn only where it is at least this much larger than the hodograph
+DETAIL_NAME = "I"      # GOST 2.305's extension element: the spot ringed and named, drawn beside at its scale
+
+
+POLE_SHARE = 0.25      # a detail takes in the pole where it lies within this share of the points' spread
+DETAIL_APART = 3.0     # mm: the nearest two points a detail tells apart drawn at least this far apart
+
+
+def _series_below(x: float) -> float:
+    """The largest value of the series (``hodograph_scale``'s) not above ``x``."""
+    k0 = math.floor(math.log10(x))
+    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES + GOST_BETWEEN)
+               if m <= x * (1 + 1e-12))
+
+
+@dataclass
+class Detail:
+    """The window (in N: x0, y0, x1, y1) of a hodograph's crowded points and its μR (N/mm)."""
+    box: tuple[float, float, float, float]
+    mu: float
+
+
+def hodograph_detail(points: list[tuple[int, complex]], mu_r: float, size: float = DETAIL_MM) -> Detail | None:
+    """Where a hodograph's points (N) crowd — each within the lettering's ``CLUSTER_MM`` of
+    another at μR — the window round them (with the pole where it lies within ``POLE_SHARE`` of their
+    spread) and the series μR that draws it ``size`` mm across (``hodograph_scale``), or coarser
+    where that still draws its nearest two points ``DETAIL_APART`` apart; None where none crowd or
+    the detail would not be ``DETAIL_GAIN`` times larger. The press4's R34: 0–3, 9–11 within
+    1.5 mm of each other at 150 N/mm → 4 N/mm."""
+    near = crowded([(p, w / mu_r) for p, w in points])
+    if not near:
+        return None
+    ws = [w for p, w in points if p in near]
+    x0, x1 = min(w.real for w in ws), max(w.real for w in ws)
+    y0, y1 = min(w.imag for w in ws), max(w.imag for w in ws)
+    spread = max(x1 - x0, y1 - y0, CLUSTER_MM * mu_r)
+    if max(x0, -x1, y0, -y1, 0.0) <= POLE_SHARE * spread:      # the pole close by: drawn in it too
+        x0, x1, y0, y1 = min(x0, 0.0), max(x1, 0.0), min(y0, 0.0), max(y1, 0.0)
+    mu = hodograph_scale(max(x1 - x0, y1 - y0) or mu_r, size)
+    # no larger than its points need: the nearest two it tells apart DETAIL_APART mm apart
+    ws = [w for _, w in points if x0 <= w.real <= x1 and y0 <= w.imag <= y1]
+    gaps = [abs(a - b) for i, a in enumerate(ws) for b in ws[i + 1:] if abs(a - b) > RULER_MM * mu]
+    if gaps:
+        mu = max(mu, _series_below(min(gaps) / DETAIL_APART))
+    if mu * DETAIL_GAIN > mu_r * (1 + 1e-9):
+        return None
+    return Detail((x0, y0, x1, y1), mu)
+
+
+def _clipped(z: np.ndarray, box: tuple[float, float, float, float]) -> list[list[tuple[float, float]]]:
+    """The parts of the polyline ``z`` inside ``box`` (shapely's intersection)."""
+    from shapely.geometry import LineString, box as shapely_box
+    if len(z) < 2:
+        return []
+    cut = LineString([(float(w.real), float(w.imag)) for w in z]).intersection(shapely_box(*box))
+    parts = getattr(cut, "geoms", [cut])
+    return [list(g.coords) for g in parts if g.geom_type == "LineString" and len(g.coords) >= 2]
+
+
+def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
+                     box: tuple[float, float, float, float] | None = None) -> int:
+    """The hodograph's curve at μ (within ``box``, mm, where given) and the dashed jumps where the
+    resistance switches on or off; returns the count of jumps drawn."""
+    pieces = _pieces(t, f)
+    for _, z in pieces:
+        for part in ([[(float(w.real / mu), float(w.imag / mu)) for w in z]] if box is None
+                     else _clipped(z / mu, box)):
+            rec.add("polyline", part, role="curve", layer="diagrams", step=step)
+    jumps = 0
+    if len(pieces) > 1:
+        # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
+        # dashed line, so that the gap reads as the jump (the caption says so), not as a curve left open
+        for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
+            a, b = z[-1] / mu, z_next[0] / mu
+            if abs(b - a) > 0.5:
+                jumps += 1
+                for part in ([[(float(a.real), float(a.imag)), (float(b.real), float(b.imag))]] if box is None
+                             else [q for q in _clipped(np.array([a, b]), box)
+                                   if math.dist(q[0], q[-1]) >= 3.0]):     # no stray dash at a detail's edge
+                    rec.segment(part[0], part[-1], role="projection", layer="diagrams",
+                                step=f"{step}: the jump" if box is None else f"{step}: the jump's part")
+    return jumps
+
+
+def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre: complex = 0j) -> list[str]:
+    """Each position's point and its number beside it, on the side away from ``centre`` (the pole;
+    a detail's middle), on a leader where crowded; points the ruler's 0.5 mm cannot tell apart
+    share one number "3–4". Returns those shared numbers."""
+    numbers, shared = [], []
+    for first, last, w in _clusters(points):
+        text = str(first) if first == last else f"{first}–{last}"
+        if first != last:
+            shared.append(text)
+        numbers.append(LabelRequest(w, text, w - centre if abs(w - centre) > 1e-9 else 1j, 2.5, step=step,
+                                    sight=True))
+    for _, w in points:
+        rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
+                                    # other numbers (on a leader where its point is crowded)
+    return shared
+
+
+FAN_GAPS = (3.0, 5.0, 7.0, 9.5, 12.0)    # mm past the detail's outermost point a fanned number stands
+FAN_TURNS = (0.0, 12.0, -12.0, 24.0, -24.0, 36.0, -36.0)    # degrees off its point's own direction
+
+
+def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[str]:
+    """A detail's points numbered as a draftsman calls out a crowded spot: each number out past
+    the points in its own point's direction from their middle, on a thin leader to it — in turn
+    round the middle, clear of the lines, the points, the other numbers (3 mm, labels.NUMBERS_APART)
+    and their leaders; a number that finds no such spot is placed as any other (``place_labels``).
+    Points the ruler's 0.5 mm cannot tell apart share a number. Returns those shared numbers."""
+    from shapely.geometry import LineString, Point, box
+    from shapely.ops import unary_union
+    from graphplan.drawing.labels import _SKETCH
+    all_runs = _clusters(points)
+    for _, w in points:
+        rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    if _SKETCH[-1]:                 # a sketch (drawing.labels.sketched): the numbers asked for, not placed
+        return [f"{a}–{b}" for a, b, _ in all_runs if a != b]
+    # only the crowded points fanned, about their own middle; the others numbered beside their points
+    tight = set(crowded([(a, w) for a, _, w in all_runs], CLUSTER_MM + 1.0))
+    runs = [r for r in all_runs if r[0] in tight]
+    alone = [r for r in all_runs if r[0] not in tight]
+    shared = [f"{a}–{b}" for a, b, _ in alone if a != b]
+    if not runs:
+        place_labels(rec, [LabelRequest(w, str(a) if a == b else f"{a}–{b}", 1j, 2.5, step=step, sight=True)
+                           for a, b, w in alone])
+        return shared
+    mid = sum(w for _, _, w in runs) / len(runs)
+    reach = max(abs(w - mid) for _, _, w in runs)
+    lines = unary_union([g for g in (_shape(q) for q in rec.items) if g is not None])
+    ink = lines.buffer(0.5)
+    dots = [Point(w.real, w.imag).buffer(0.9) for _, w in points]
+    boxes, leaders, left = [], [], []
+    for first, last, w in sorted(runs, key=lambda r: math.atan2((r[2] - mid).imag, (r[2] - mid).real)):
+        text = str(first) if first == last else f"{first}–{last}"
+        if first != last:
+            shared.append(text)
+        u = (w - mid) / abs(w - mid) if abs(w - mid) > 1e-9 else 1j
+        spot = None
+        for gap in FAN_GAPS:
+            for turn in FAN_TURNS:
+                at = mid + (reach + gap) * u * complex(math.cos(math.radians(turn)), math.sin(math.radians(turn)))
+                prim = Primitive("text", ((at.real, at.imag - 1.25),), text=text, size=2.5, anchor="middle")
+                bx = box(*prim.ink())
+                if (bx.buffer(0.5).intersects(ink) or any(bx.buffer(3.0).intersects(b) for b in boxes)
+                        or any(bx.buffer(0.6).intersects(q) for q in leaders)):
+                    continue
+                end = bx.exterior.interpolate(bx.exterior.project(Point(w.real, w.imag)))
+                lead = LineString([(w.real, w.imag), (end.x, end.y)])
+                if lead.length < 1.5:
+                    continue
+                a = lead.interpolate(0.9)
+                b = lead.interpolate(max(0.9, lead.length - 0.4))
+                lead = LineString([(a.x, a.y), (b.x, b.y)])
+                if (any(lead.crosses(q) or lead.intersects(q) for q in leaders)
+                        or any(lead.intersects(d) for k, d in enumerate(dots) if abs(points[k][1] - w) > 1e-9)
+                        or any(lead.intersects(b_) for b_ in boxes) or lead.crosses(lines)):
+                    continue
+                spot = (prim, bx, lead)
+                break
+            if spot:
+                break
+        if spot is None:
+            left.append(LabelRequest(w, text, u, 2.5, step=step, sight=True))
+            continue
+        prim, bx, lead = spot
+        (x0, y0), (x1, y1) = lead.coords
+        rec.segment((x0, y0), (x1, y1), role="label", layer="labels", step=step)
+        rec.label(prim.points[0], text, size=2.5, anchor="middle", step=step, layer="labels")
+        boxes.append(bx)
+        leaders.append(lead)
+    place_labels(rec, left + [LabelRequest(w, str(a) if a == b else f"{a}–{b}", w - mid, 2.5, step=step, sight=True)
+                              for a, b, w in alone])
+    return shared
+
+
+def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True,
+                     beside: bool = False) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
     large in one quadrant instead of small in the middle of a bare cross). Every position's number
-    stands beside its point; only points nearer than the lettering share one ("6–10")."""
+    stands beside its point. Where points crowd closer than the lettering (a press's idle stroke:
+    eleven reactions of 100–700 N by the pole of an 8000 N curve) the spot is ringed and named "I"
+    and drawn again beside at a larger series μR (``hodograph_detail``, GOST 2.305's extension
+    element), each of its points numbered there; only points the ruler's 0.5 mm cannot tell apart
+    share a number ("3–4"), and a note says so."""
     f = t.ks.reactions[key].force
     rec = Record(f"hodograph {key}")
     step = f"hodograph {key}"
@@ -336,36 +527,128 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     x0, x1, y0, y1 = xlo / mu_r - pad, xhi / mu_r + pad, ylo / mu_r - pad, yhi / mu_r + pad
     rec.segment((x0, 0.0), (x1, 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
     rec.segment((0.0, y0), (0.0, y1), role="construction", width=AXIS_W, layer="diagrams", step=step)
-    pieces = _pieces(t, f)
-    for idx, z in pieces:
-        rec.add("polyline", [(float(w.real / mu_r), float(w.imag / mu_r)) for w in z], role="curve",
-                layer="diagrams", step=step)
-    jumps = 0
-    if len(pieces) > 1:
-        # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
-        # dashed line, so that the gap reads as the jump (the caption says so), not as a curve left open
-        for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
-            a, b = z[-1] / mu_r, z_next[0] / mu_r
-            if abs(b - a) > 0.5:
-                jumps += 1
-                rec.segment((float(a.real), float(a.imag)), (float(b.real), float(b.imag)), role="projection",
-                            layer="diagrams", step=f"{step}: the jump")
-    numbers = []
-    for first, last, w in _clusters([(pos, complex(f[k] / mu_r)) for k, pos in t.position_index()]):
-        text = str(first) if first == last else f"{first}–{last}"
-        numbers.append(LabelRequest(w, text, w if abs(w) > 1e-9 else 1j, 2.5, step=step, sight=True))
-    for k, _ in t.position_index():
-        w = f[k] / mu_r
-        rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
-    place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
-                                    # other numbers (on a leader where its point is crowded)
+    jumps = _hodograph_lines(rec, t, f, mu_r, step)
+    points = [(pos, complex(f[k])) for k, pos in t.position_index()]
+    inside: list[tuple[int, complex]] = []
+    shared: list[str] = []
+    # the field the hodograph already takes: its axes' extent, as wide as the lettering under it
+    under = [f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}"]
+    if say_jump and len(_pieces(t, f)) > 1:
+        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
+        under.append(word("fs jump", lang, what=", ".join(ext)))
+    wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
+    field = (x0, y0, max(x1, x0 + wide), y1)
+    # a flat hodograph (a sliver of a cell) may take its detail beside it (``beside``) — only where it would
+    # otherwise number two positions as one ("0–2"): its cell grows for that alone
+    flat = (beside and hodograph_growth(t, key) > 1.0 + 1e-9
+            and any(a != b for a, b, _ in _clusters([(p, w / mu_r) for p, w in points])))
+    ink = None
+    for share in DETAIL_SHARES + ((None,) if flat else ()):   # the largest detail with room in the field
+        detail = hodograph_detail(points, mu_r, DETAIL_MM * (share or 1.0) * size / HODOGRAPH_MM)
+        if detail is None:
+            break
+        bx0, by0, bx1, by1 = detail.box
+        near = [(p, w) for p, w in points if bx0 - 1e-9 <= w.real <= bx1 + 1e-9 and by0 - 1e-9 <= w.imag <= by1 + 1e-9]
+        c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
+        r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
+        if ink is None:
+            ink = _ink_of(rec)
+        if share is not None:           # the sketch first: where it finds no room, neither does the lettered one
+            from graphplan.drawing.labels import sketched
+            with sketched():
+                rough, _ = _detail(t, f, detail, near, lang, f"{step}: detail")
+            if _corner(ink, rough, (c, r), field) is None:
+                continue
+        det, det_shared = _detail(t, f, detail, near, lang, f"{step}: detail")
+        if share is None:                                     # beside the field, tops level
+            d0, _, _, d3 = det.bounds()
+            moved = det.moved(field[2] + DETAIL_GAP - d0, field[3] - d3)
+        else:
+            moved = _corner(ink, det, (c, r), field)
+        if moved is None:
+            continue
+        inside, shared = near, det_shared
+        rec.scales["mu_R detail"] = detail.mu
+        rec.circle((c.real, c.imag), r, role="construction", layer="diagrams", step=f"{step}: detail")
+        rec.extend(moved)
+        place_labels(rec, [LabelRequest(c + r * (-1 + 1j) / abs(-1 + 1j), DETAIL_NAME, -1 + 1j, 3.5,
+                                        step=f"{step}: detail")])
+        break
+    shared = _numbered(rec, [(p, w / mu_r) for p, w in points if (p, w) not in inside], step) + shared
     y = rec.bounds()[1] - 6.0
     rec.label((x0, y), f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}",
               size=2.5, step=step)
+    notes = []
     if jumps and say_jump:      # said under every hodograph that draws a jump
         ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
-        rec.label((x0, y - 5.0), word("fs jump", lang, what=", ".join(ext)), size=2.5, step=step)
+        notes.append(word("fs jump", lang, what=", ".join(ext)))
+    rec.scales["shared numbers"] = float(len(shared))    # said once in the sheet's notes ("fs coincide")
+    for k, text in enumerate(notes, 1):
+        rec.label((x0, y - 5.0 * k), text, size=2.5, step=step)
     return rec
+
+
+DETAIL_SHARES = (1.0, 0.8, 0.6, 0.45, 0.35)   # the detail's sizes tried, in DETAIL_MM
+DETAIL_GAP = 6.0       # mm between a flat hodograph's field and the detail drawn beside it
+DETAIL_CLEAR = 2.0     # mm between a detail and the hodograph's lines, points and ring
+
+
+def _shape(q: Primitive):
+    """A primitive's lines as a shapely geometry (None for lettering)."""
+    from shapely.geometry import LineString, Point
+    if q.kind in ("segment", "vector", "polyline") and len(q.points) >= 2:
+        return LineString(q.points)
+    if q.kind == "point":
+        return Point(q.points[0]).buffer(0.6)
+    if q.kind == "circle":
+        return Point(q.points[0]).buffer(q.radius).exterior
+    return None
+
+
+def _ink_of(rec: Record):
+    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely)."""
+    from shapely.ops import unary_union
+    return unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
+                       ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
+
+
+def _corner(ink, det: Record, ring: tuple[complex, float],
+            field: tuple[float, float, float, float], grow: float = 0.0) -> Record | None:
+    """``det`` moved into a corner of the hodograph's ``field`` (its axes' extent, mm) where it
+    keeps ``DETAIL_CLEAR`` off every line, point and the ``ring`` — the room a hodograph that keeps
+    to one quadrant or a diagonal leaves — or None: the sheet's composition is not disturbed."""
+    from shapely.geometry import Point, box
+    ringed = Point(ring[0].real, ring[0].imag).buffer(ring[1] + DETAIL_CLEAR)
+    x0, y0, x1, y1 = field
+    d0, e0, d1, e1 = det.bounds()
+    w, h = d1 - d0 + 2 * grow, e1 - e0 + 2 * grow       # ``grow``: room kept round a sketch for its numbers
+    d0, e0 = d0 - grow, e0 - grow
+    if w > x1 - x0 or h > y1 - y0:
+        return None
+    for cx, cy in ((x1 - w, y1 - h), (x0, y1 - h), (x1 - w, y0), (x0, y0)):
+        spot = box(cx, cy, cx + w, cy + h)
+        if not spot.intersects(ringed) and not spot.intersects(ink):
+            return det.moved(cx - d0, cy - e0)
+    return None
+
+
+def _detail(t: Turn, f: np.ndarray, d: Detail, inside: list[tuple[int, complex]], lang: str,
+            step: str) -> tuple[Record, list[str]]:
+    """The detail "I" at its μR: the window's curve, the axes where the pole is in it, every point
+    numbered, the name and scale under it. Returns it and its shared numbers."""
+    det = Record(step)
+    pad = 3.0
+    bx0, by0, bx1, by1 = (v / d.mu for v in d.box)
+    box = (bx0 - pad, by0 - pad, bx1 + pad, by1 + pad)
+    if box[0] <= 0.0 <= box[2]:
+        det.segment((0.0, box[1]), (0.0, box[3]), role="construction", width=AXIS_W, layer="diagrams", step=step)
+    if box[1] <= 0.0 <= box[3]:
+        det.segment((box[0], 0.0), (box[2], 0.0), role="construction", width=AXIS_W, layer="diagrams", step=step)
+    _hodograph_lines(det, t, f, d.mu, step, box)
+    shared = _fanned(det, [(p, w / d.mu) for p, w in inside], step)
+    b = det.bounds()
+    det.label((b[0], b[1] - 4.5), f"{DETAIL_NAME} (μ_R = {num(d.mu, lang)} {unit('N/mm', lang)})", size=2.5, step=step)
+    return det, shared
 
 
 def path_travelled(t: Turn) -> np.ndarray:

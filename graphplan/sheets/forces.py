@@ -308,12 +308,27 @@ def _titled(rec: Record, title: str) -> Record:
     return out
 
 
+def _hodographs_share(dr: ForceDrafter, mu_h: float) -> bool:
+    """Whether a hodograph drawn at the size factor 1/``mu_h`` (or its detail) numbers two
+    positions as one ("0–2"): drawn unlettered (the shared numbers do not depend on where the
+    numbers stand), once per size."""
+    def make() -> bool:
+        from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+        from graphplan.drawing.labels import sketched
+        with sketched():
+            return any(hodograph_record(dr.turn, k, HODOGRAPH_MM / mu_h, "en").scales.get("shared numbers", 0) > 0
+                       for k in dr.turn.revolute)
+    return dr._once(("hodographs share", mu_h), make)
+
+
 def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]:
     from graphplan.graphic.scales import format_scale
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
+    if _hodographs_share(dr, mu["hodographs"]):      # the hodographs' "0–2", said once
+        lines.append(w('coincide'))
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     by_scale: dict[float, list[str]] = {}
     for gp in fp.groups:                  # each group at its own scale (forceplans.group_scales)

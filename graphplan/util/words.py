@@ -197,6 +197,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs resistance": ('Діаграма сили корисного опору за хід', 'Resistance force over the stroke'),
     "fs resistance moment": ('Діаграма моменту корисного опору за хід', 'Resistance moment over the swing'),
     "fs jump": ("пунктир — стрибок від {what}", "dashed: the jump due to {what}"),
+    "fs coincide": ("Годографи: номер «0–2» — точки, що збігаються з точністю лінійки 0,5 мм",
+                    "Hodographs: a number \"0–2\" marks points that coincide to the ruler's 0.5 mm"),
     "fs small": ('Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): ', "Forces drawn under 10 mm (length, share of their plan's largest): "),
     # the kinematics sheet (sheets/kinematics.py)
     "kin positions": ('План положень', 'Position plan'),
