@@ -367,14 +367,15 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     region = field_of(f)
     P = Leaf("position plan", record=d["position"])
     D = Leaf("diagrams", record=d["diagrams"])
-    V = cells([Leaf(f"velocity plan {q.key}", record=r) for q, r in zip(d["plans"].positions, d["velocity"])])
-    A = cells([Leaf(f"acceleration plan {i + 1}", record=r) for i, r in enumerate(d["acceleration"])])
+    V = [Leaf(f"velocity plan {q.key}", record=r) for q, r in zip(d["plans"].positions, d["velocity"])]
+    A = [Leaf(f"acceleration plan {i + 1}", record=r) for i, r in enumerate(d["acceleration"])]
     tables = [Leaf(name, record=rec) for name, rec in d["tables"]]
     pages: list[list[Placed]]
     if p.sheets == 1:
         C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
                                        - note_block(d["notes"], w).bounds()[1], p.counts)
-        layout = tree(p.shape, P, D, Grid(V, p.vcols) if V else None, Grid(A, p.acols) if A else None, C)
+        layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
+                      Grid(A, p.acols, fitted=True) if A else None, C)
         items, col_box = [], None
         for leaf, b in arrange(layout, region):
             if leaf is C:
@@ -390,7 +391,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = note_block(d["notes"], p.notes)
-        rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
+        rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
