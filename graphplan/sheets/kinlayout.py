@@ -503,6 +503,12 @@ def set_diagrams(dr: Drafter, nat: Natural, r: tuple[float, ...]) -> list[float 
         talls = [tallest(lambda t, k=k: room_fits(r, *dr.first_size((k, t))))]
         if talls[0] is None or dr.redrawn((k, talls[0])):
             talls.append(tallest(lambda t, k=k: room_fits(r, *diagrams_size(dr, nat, (k, t)))))
+            if talls[0] is not None:
+                # … and the tallest under it drawn as first chosen, within ``LEAST_TALLER`` steps (the
+                # long rocker's A2 s allowance 100 mm was redrawn with H1 20 mm, v 54 mm high; 88 mm
+                # draws s, v, a 78, 98, 79 mm as first chosen)
+                talls += next(([t] for t in (round(talls[0] - j * HEIGHT_STEP, 6) for j in range(1, LEAST_TALLER + 1))
+                               if t > k + 1e-9 and not dr.redrawn((k, t))), [])
         for tall in dict.fromkeys(talls):
             if tall is not None and room_fits(r, *diagrams_size(dr, nat, (k, tall))):
                 out.append((k, tall))
