@@ -307,10 +307,12 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
     # the lettering is now measured at the chosen scales (``Family.lettering``), where the choice
     # assumed the most any scale needed: chosen once more, the drawings' true sizes may hold a
     # better one (the long rocker's A2 set was laid out with nine velocity plans on its second
-    # sheet; drawn, five went on the first and seven sat alone on the second, 17 % drawn on)
-    again = choose()
-    if again != p and _checked(dr, nat, again):
-        p = again
+    # sheet; drawn, five went on the first and seven sat alone on the second, 17 % drawn on). A set
+    # only: an A1 sheet's zones stretch, no drawing moves to another sheet
+    if f.name not in ONE_SHEET:
+        again = choose()
+        if again != p and _checked(dr, nat, again):
+            p = again
     return p, nat, dr
 
 
