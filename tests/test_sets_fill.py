@@ -200,17 +200,21 @@ def test_kinematics_sets_are_filled(name, fmt):
     """No sheet of a kinematics set with less than ``LEAST_FILL`` of its field drawn on, none of
     notes alone, and a sheet the diagrams take alone covered by them — or, where the sheet has
     more room than the lab's scales fill (an A2 sheet), the diagrams as large as they allow: the
-    scene's L and the s diagram's largest allowance (100 mm)."""
+    scene's L and the s diagram's largest allowance (100 mm) — or drawn larger than that allowance
+    draws them (redrawn right, the long rocker's tallest draws v 54 mm high where s 88 mm draws
+    it 98 mm)."""
     from graphplan.sheets.kinematics import _options, plan
-    from graphplan.sheets.kinlayout import HEIGHTS, factors
+    from graphplan.sheets.kinlayout import HEIGHTS, drawn_share, factors
     sheet = build(name, "kinematics", fmt)
     check_no_orphan(sheet)
     fills = [round(fill(page), 3) for page in sheet.pages]
     assert min(fills) >= LEAST_FILL, fills
     shares = [s for s in map(diagrams_block_share, sheet.pages) if s is not None]
     if any(s < DIAGRAMS_ALONE for s in shares):
-        p, _, _ = plan(study_of(name), form(fmt), _options(SheetOptions(sheet="kinematics")))
-        assert factors(p.diagrams) == (1.0, HEIGHTS[0]), (shares, p.diagrams)
+        p, _, dr = plan(study_of(name), form(fmt), _options(SheetOptions(sheet="kinematics")))
+        tallest = (1.0, HEIGHTS[0])
+        assert factors(p.diagrams) == tallest or drawn_share(dr, p.diagrams) > drawn_share(dr, tallest), (
+            shares, p.diagrams)
 
 
 @pytest.mark.slow

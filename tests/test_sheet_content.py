@@ -514,9 +514,9 @@ def test_the_diagrams_keep_the_scenes_L_and_poles_in_the_labs_range(name):
     given = st.mech.task.diagram
     if "L_mm" in given:                  # the scene's own L, kept
         assert p.diagrams == 1.0 and got["L"] == float(given["L_mm"])
-    else:                                # the default 240 mm, or its one step (0.8) where only that
-        assert p.diagrams in (1.0, 0.8)  # gives the plans legible room (kinlayout.legible_where_room)
-        assert got["L"] == pytest.approx(240.0 * p.diagrams)
+    else:                                # the default 240 mm (the slotter's went to 0.8 of it, its
+        assert p.diagrams == 1.0         # position plan to 1:4, while its velocity plans' rows were all
+        assert got["L"] == pytest.approx(240.0)   # as tall as the tallest plan)
     for key in ("H1", "H2"):
         if f"{key}_mm" in given:
             assert got[key] == float(given[f"{key}_mm"])

@@ -385,6 +385,14 @@ class Family:
     across: bool = True
     up: bool = True
     factors: bool = False
+    seen: dict = field(default_factory=dict)   # (μ, i) → what drawing i's lettering added, measured at μ
+
+    def lettering(self, mu: float, i: int) -> tuple[float, float]:
+        """What drawing i's lettering adds at μ (w, h): as measured where it was drawn at that μ
+        (``allow``), else the most it added anywhere (lettering placed round a smaller drawing sticks
+        out further: the slotter's position plan 1.6 mm at 1:2.5, 6.4 mm at 1:4 — so one margin for
+        all scales pushed its plan back to 1:4)."""
+        return self.seen.get((round(mu, 12), i), self.sizes[i][2:])
 
     def start(self, k: float) -> float:
         """The family's μ at the common size factor k."""
@@ -402,8 +410,8 @@ class Family:
         """Drawing i at μ (the largest of each dimension when i is None), with lettering and caption."""
         k = self.mu0 / mu
         kw, kh = (k if self.across else 1.0), (k if self.up else 1.0)
-        sizes = self.sizes if i is None else [self.sizes[i]]
-        sizes = sizes or [(0.0, 0.0, 0.0, 0.0)]
+        which = range(len(self.sizes)) if i is None else [i]
+        sizes = [self.sizes[j][:2] + self.lettering(mu, j) for j in which] or [(0.0, 0.0, 0.0, 0.0)]
         w = max(gw * kw + lw for gw, _, lw, _ in sizes)
         h = max(gh * kh + lh for _, gh, _, lh in sizes)
         return max(w, self.caption[0]), h + self.caption[1]
@@ -420,7 +428,9 @@ class Family:
         kw, kh = (k if self.across else 1.0), (k if self.up else 1.0)
         gw, gh, lw, lh = self.sizes[i]
         need_w, need_h = w - gw * kw, h - gh * kh
-        if need_w <= lw + 1e-6 and need_h <= lh + 1e-6:
+        was_w, was_h = self.lettering(mu, i)
+        self.seen[(round(mu, 12), i)] = (need_w, need_h)
+        if need_w <= was_w + 1e-6 and need_h <= was_h + 1e-6:
             return True
         self.sizes[i] = (gw, gh, max(lw, need_w), max(lh, need_h))
         return False

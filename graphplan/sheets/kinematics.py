@@ -297,11 +297,23 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
     dr = Drafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "kinematics"),
                  room(f, later=f.name not in ONE_SHEET), 0.0 if f.name in ONE_SHEET else DIAGRAM_MM)
     nat = measure(dr)
-    for _ in range(4):
+
+    def choose() -> Plan:
         one = one_sheet(dr, nat, f)
-        p = one if one is not None and (f.name in ONE_SHEET or legible(nat, one.mu)) else set_of_sheets(dr, nat, f)
+        return one if one is not None and (f.name in ONE_SHEET or legible(nat, one.mu)) else set_of_sheets(dr, nat, f)
+    for _ in range(4):
+        p = choose()
         if _checked(dr, nat, p):
             break
+    # the lettering is now measured at the chosen scales (``Family.lettering``), where the choice
+    # assumed the most any scale needed: chosen once more, the drawings' true sizes may hold a
+    # better one (the long rocker's A2 set was laid out with nine velocity plans on its second
+    # sheet; drawn, five went on the first and seven sat alone on the second, 17 % drawn on). A set
+    # only: an A1 sheet's zones stretch, no drawing moves to another sheet
+    if f.name not in ONE_SHEET:
+        again = choose()
+        if again != p and _checked(dr, nat, again):
+            p = again
     return p, nat, dr
 
 
@@ -368,14 +380,15 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     region = field_of(f)
     P = Leaf("position plan", record=d["position"])
     D = Leaf("diagrams", record=d["diagrams"])
-    V = cells([Leaf(f"velocity plan {q.key}", record=r) for q, r in zip(d["plans"].positions, d["velocity"])])
-    A = cells([Leaf(f"acceleration plan {i + 1}", record=r) for i, r in enumerate(d["acceleration"])])
+    V = [Leaf(f"velocity plan {q.key}", record=r) for q, r in zip(d["plans"].positions, d["velocity"])]
+    A = [Leaf(f"acceleration plan {i + 1}", record=r) for i, r in enumerate(d["acceleration"])]
     tables = [Leaf(name, record=rec) for name, rec in d["tables"]]
     pages: list[list[Placed]]
     if p.sheets == 1:
         C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
                                        - note_block(d["notes"], w).bounds()[1], p.counts)
-        layout = tree(p.shape, P, D, Grid(V, p.vcols) if V else None, Grid(A, p.acols) if A else None, C)
+        layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
+                      Grid(A, p.acols, fitted=True) if A else None, C)
         items, col_box = [], None
         for leaf, b in arrange(layout, region):
             if leaf is C:
@@ -391,7 +404,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = note_block(d["notes"], p.notes)
-        rows = set_rows(P, D, V, A, tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
+        rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
