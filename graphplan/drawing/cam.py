@@ -13,7 +13,7 @@ import numpy as np
 
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, motion, profile
-from graphplan.graphic.cam import CamConstruction
+from graphplan.graphic.cam import CamConstruction, working_angle
 from graphplan.graphic.record import Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
@@ -84,8 +84,9 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     numbered under the s diagram as in the table and on the profile."""
     cam = sol.cam
     rec = Record("cam diagrams")
-    L = 2 * math.pi / g.mu_phi
-    fine = np.append(np.linspace(0.0, 359.5, 720), 360.0 - 1e-9)    # the turn, its end in the near dwell
+    work = math.degrees(working_angle(cam))
+    L = math.radians(work) / g.mu_phi          # the abscissa: the working angle φ_р (μ_φ = φ_р/L)
+    fine = np.linspace(0.0, work - 1e-9, 721)  # its end the return's end (the near dwell not drawn)
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
@@ -157,7 +158,8 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
     drawn = {int(q.step.split()[-1]): q.points[1][1] - y0 for q in ours if q.step.startswith(f"{key} at ")}
 
     def hits(box, lines) -> list:
-        x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
+        pad = 0.6        # the check's 0.3 mm of paper (labels.CHECK) past a thin line's half width
+        x0, y_0, x1, y_1 = box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
         out = []
         for q in lines:
             p = np.asarray(q.points, float)

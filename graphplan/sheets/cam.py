@@ -368,9 +368,12 @@ def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
 
 def _profile_largest(p: Box, q: Box) -> bool:
     """Whether the profile (box ``p``) stays the sheet's largest drawing beside the phase diagram
-    (``q``): half as large again in area and longer in its longest side (LAYOUT.md's cam sheet)."""
+    (``q``): larger in area (LAYOUT.md's cam sheet). Not also longer in its longest side, nor half as
+    large again: the phase diagram, tall and narrow by nature (R_0 under the stroke at μ_s), was
+    held under the profile's height, and the s–ds/dφ–d²s/dφ² diagrams tied to it by μ_s with it —
+    a sheet 45 % empty (issue 32, item 1)."""
     pw, ph, qw, qh = p[2] - p[0], p[3] - p[1], q[2] - q[0], q[3] - q[1]
-    return pw * ph > 1.5 * qw * qh and max(pw, ph) > max(qw, qh)
+    return pw * ph > qw * qh
 
 
 def _taller(k, kp, kh, ka, fits, area) -> tuple[float, float, float]:
