@@ -49,7 +49,7 @@ def _pct(v, lang: str) -> str:
     return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
 
 
-def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
+def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
     graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
     exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
@@ -82,7 +82,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
-    return table(rows, widths, row_h=row_h, size=2.5, title=WORDS[lang]["table"])
+    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -534,22 +534,29 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
+# Table 1 as large as the room under the profile takes (GOST 2.304 letters 3.5 mm, rows of 10 or 8
+# mm; else the 2.5 mm letters in rows of 8): the first of these that leaves the drawings where they were
+TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
 
 
 def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
-    """The A1 sheet's layout with Table 1 ruled at TABLE_ROW mm rows (its lettering as it is) when
-    that leaves the drawings where they were — the column under the profile otherwise stands part
-    blank —; else ``laid`` as it is."""
-    tall = Leaf("table", record=positions_table(doc, lang, TABLE_ROW))
+    """The A1 sheet's layout with Table 1 drawn larger (TABLE_SIZES: its lettering 3.5 mm, its rows
+    10 mm, down to 2.5 mm letters in rows of TABLE_ROW mm) when that leaves the drawings and the notes
+    where they were and the profile its room — the column under the profile otherwise stands part
+    blank (the A1 sheet 45 % empty, issue 32 item 1) —; else ``laid`` as it is."""
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
-    again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
-    if not _one_sheet(again):
-        return laid
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
-    after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    room = next(b for leaf, b in again[0] if leaf.name == "profile")
-    return again if before == after and room[3] - room[1] >= profile.h - 1e-9 else laid
+    for size, row in TABLE_SIZES:
+        tall = Leaf("table", record=positions_table(doc, lang, row, size))
+        again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
+        if not _one_sheet(again):
+            continue
+        after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
+        room = next(b for leaf, b in again[0] if leaf.name == "profile")
+        if before == after and room[3] - room[1] >= profile.h - 1e-9 and room[2] - room[0] >= profile.w - 1e-9:
+            return again
+    return laid
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
