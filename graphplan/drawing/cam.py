@@ -535,3 +535,63 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
 def records(sol: Solution, g: CamConstruction, lang: str) -> dict[str, Record]:
     return {"diagrams": diagrams(sol, g, lang), "phase": phase_diagram(sol, g, lang),
             "profile": profile_drawing(sol, g, lang)}
+
+
+PRESSURE_NAMES = {"uk": "Кут тиску ϑ(φ)", "en": "Pressure angle ϑ(φ)"}
+
+
+def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float, mu_theta: float) -> Record:
+    """The pressure angle over the working angle φ_р: the exact ϑ(φ) a curve, the protractor's reading
+    at each division (Table 1's «ϑ гр.») an ordinate from the φ axis, the divisions numbered as on the
+    other diagrams, and each phase's band |ϑ| ≤ [ϑ] between dashed lines over that phase (the phase
+    diagram's condition read along the turn). φ at ``mu_phi`` rad/mm, ϑ at ``mu_theta`` °/mm."""
+    cam = sol.cam
+    rec = Record("pressure angle")
+    rise, far, ret, _ = cam.phases
+    work = rise + far + ret
+    L = math.radians(work) / mu_phi
+    fine = np.linspace(0.0, work - 1e-9, 721)
+    theta = sol.at(fine)["theta"]
+    xf = np.radians(fine) / mu_phi
+    x = np.radians(g.phi) / mu_phi
+    lo = min(float(np.min(theta)), float(np.min(g.theta)), -max(cam.allowed), 0.0) / mu_theta
+    hi = max(float(np.max(theta)), float(np.max(g.theta)), max(cam.allowed), 0.0) / mu_theta
+    labels: list[LabelRequest] = []
+    rec.segment((0.0, 0.0), (L + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axis ϑ")
+    rec.vector((0.0, lo - 3.0), (0.0, hi + 6.0), role="construction", width=AXIS_W, layer=LAYER, step="ordinate ϑ")
+    labels.append(LabelRequest(complex(0.0, hi + 6.0), "ϑ, °", toward=1 + 0.3j, size=TEXT))
+    labels.append(LabelRequest(complex(L + 6.0, 0.0), "φ", toward=1 - 1j, size=TEXT))
+    for ph, (a, b) in enumerate(((0.0, rise), (rise + far, work))):
+        xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
+        band = cam.allowed[ph] / mu_theta
+        for sign in (1.0, -1.0):
+            rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
+        labels.append(LabelRequest(complex((xa + xb) / 2, band), allowed_text(cam.allowed[ph], lang),
+                                   toward=1j, size=TEXT, step=f"[ϑ] {ph}"))
+    rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
+    for k in range(len(x)):
+        y = float(g.theta[k]) / mu_theta
+        if abs(y) > 1e-9:
+            rec.segment((x[k], 0.0), (x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
+        rec.point((x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
+    spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
+    for k in numbered(len(x), spacing):
+        side = -1j if g.theta[k] >= 0 else 1j            # the side the ordinate leaves free
+        labels.append(LabelRequest(complex(x[k], 0.0), str(k), toward=side, size=NUMBER, optional=True))
+    place_labels(rec, labels, layer=LAYER)
+    rec.scales.update(mu_phi=mu_phi, mu_theta=mu_theta)
+    return rec
+
+
+def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:
+    """μ_φ (rad/mm, the working angle over ``width`` mm less the axis's end and its letters) and the
+    finest standard μ_ϑ (°/mm: 1, 2, 2.5, 4, 5 × 10^k) that puts ϑ's range and the bands ±[ϑ] in
+    ``height`` mm less the letters above and below."""
+    from graphplan.graphic.scales import series_around
+    cam = sol.cam
+    rise, far, ret, _ = cam.phases
+    mu_phi = math.radians(rise + far + ret) / max(width - 20.0, 10.0)
+    theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
+    span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
+    need = span / max(height - 18.0, 5.0)
+    return mu_phi, min(m for m in series_around(need) if m >= need * (1 - 1e-12))

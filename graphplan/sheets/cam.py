@@ -559,6 +559,38 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     return laid
 
 
+PRESSURE_ROOM = (120.0, 70.0)    # mm: the least room (width, height) the pressure angle's diagram takes
+
+
+def with_pressure(laid, sol, g, lang: str):
+    """The A1 sheet's layout with the pressure angle's diagram ϑ(φ) (drawing.cam.pressure_diagram) in
+    the room the notes leave under the phase diagram, at the finest standard μ_ϑ that fits it
+    (review 4, item 19; issue 32, item 1: that room stood blank, the sheet 40 % empty), when the
+    room is at least PRESSURE_ROOM; else ``laid`` as it is."""
+    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
+    from graphplan.graphic.scales import series_around
+    boxes = {leaf.name: b for leaf, b in laid[0]}
+    if not {"diagrams", "notes"} <= set(boxes):
+        return laid
+    d, nb = boxes["diagrams"], boxes["notes"]
+    if not (d[0] < nb[0] and nb[2] <= d[2] + 1e-9 and d[1] <= nb[1]):        # the notes not in the hole
+        return laid
+    room = (nb[0], d[1], d[2], nb[1] - GAP)
+    w, h = room[2] - room[0], room[3] - room[1]
+    if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
+        return laid
+    mm = "мм" if lang == "uk" else "mm"
+    for shrink in (1.0, 0.9, 0.8, 0.7):
+        mu_phi, mu_t = pressure_scales(sol, w * shrink, h * shrink)
+        second = (f"{scale_text('mu_phi', mu_phi, sol.cam.rocking, lang)}; "
+                  f"μ_ϑ = {num(mu_t, lang, 4)} °/{mm}")
+        rec = captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t), PRESSURE_NAMES[lang], second)
+        leaf = Leaf("pressure", record=rec)
+        if leaf.w <= w + 1e-9 and leaf.h <= h + 1e-9:
+            return [laid[0] + [(leaf, room)]] + laid[1:]
+    return laid
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -571,6 +603,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
     if f.name == "A1" and _one_sheet(laid):
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
+        laid = with_pressure(laid, sol, g, lang)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
