@@ -20,6 +20,8 @@ from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 
 LAYER = "cam"
 TEXT = 3.5
 NUMBER = 2.5          # the division numbers
+BELOW = 1.0           # a number under its axis: its baseline this many letter heights lower (1.2 mm clear
+                      # with the font; a viewer's wider fallback font (DejaVu) reaches 0.27 letter higher)
 NUMBER_OFF = 0.8      # mm a diagram's division number starts right of its division (clear of a bold phase line)
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
@@ -185,7 +187,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
                  and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
         best = None
         for side in ((1, -1) if up else (-1, 1)):
-            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
+            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
             box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=str(k), size=NUMBER, anchor="start").ink()
             crossed = hits(box, lines)
             if not crossed:
@@ -194,7 +196,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
                 best = (y, box, crossed)
         if best is None:
-            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * BELOW
             best = (y, None, [])
         y, box, broken = best
         for q in broken:           # a horizontal thin line: two pieces, 1.5 mm clear of the number
@@ -566,8 +568,8 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
         band = cam.allowed[ph] / mu_theta
         for sign in (1.0, -1.0):
             rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
-        labels.append(LabelRequest(complex((xa + xb) / 2, band), allowed_text(cam.allowed[ph], lang),
-                                   toward=1j, size=TEXT, step=f"[ϑ] {ph}"))
+        labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
+                                   toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
     rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
     for k in range(len(x)):
         y = float(g.theta[k]) / mu_theta
