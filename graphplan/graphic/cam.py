@@ -30,7 +30,7 @@ from graphplan.graphic.scales import series_around
 HEIGHT_MM = 40.0       # the tallest ordinate of the analogue-acceleration diagram
 STROKE_MM = 80.0       # the stroke (swing) drawn on the s diagram, about
 PROFILE_MM = 100.0     # the centre profile's largest radius, drawn, about
-L_MM = 240.0           # the abscissa of the working angle φ_р = φ_п + φ_вв + φ_с (the near dwell not drawn)
+L_MM = 240.0           # the abscissa a whole turn would take (μ_φ = 2π/L); the diagrams draw its working angle only
 POLE_MM = (15.0, 50.0)  # the lab's range of pole distances, set with a ruler in whole millimetres
 
 
@@ -148,7 +148,8 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     L = L or L_MM * size
     height = size if height is None else height
     accel = height if accel is None else accel
-    mu_phi = working_angle(cam) / L       # the lab's μ_φ = φ_р/L: the diagrams over the working angle
+    mu_phi = 2 * math.pi / L              # the turn's; the diagrams drawn over the working angle φ_р alone,
+    #                                       its abscissa L_р = φ_р/μ_φ (the lab's μ_φ = φ_р/L_р)
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0

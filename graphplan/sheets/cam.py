@@ -249,9 +249,9 @@ def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
     lines = notes(doc, lang, cam)
 
     def at(width: float) -> Leaf:
-        key = (lang, round(width))
+        key = (lang, math.floor(width + 1e-9))      # never wider than asked (the box holds it)
         if key not in memo:
-            memo[key] = Leaf("notes", record=note_block(lines, float(round(width))))
+            memo[key] = Leaf("notes", record=note_block(lines, float(key[1])))
         return memo[key]
     return at
 
@@ -539,6 +539,12 @@ TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the
 TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
 
 
+def _in_hole(boxes: dict) -> bool:
+    """Whether the notes (box) stand in the diagrams' box, under the phase diagram."""
+    d, nb = boxes["diagrams"], boxes["notes"]
+    return d[0] < nb[0] and nb[2] <= d[2] + 1e-9 and d[1] <= nb[1]
+
+
 def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
     """The A1 sheet's layout with Table 1 drawn larger (TABLE_SIZES: its lettering 3.5 mm, its rows
     10 mm, down to 2.5 mm letters in rows of TABLE_ROW mm) when that leaves the drawings and the notes
@@ -554,7 +560,10 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
             continue
         after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
         room = next(b for leaf, b in again[0] if leaf.name == "profile")
-        if before == after and room[3] - room[1] >= profile.h - 1e-9 and room[2] - room[0] >= profile.w - 1e-9:
+        # the drawings where they were, or the column under the profile wider for the table and the
+        # notes still in the room under the phase diagram (the diagrams' box narrower, still theirs)
+        held = before == after or (_in_hole(before) and _in_hole(after))
+        if held and room[3] - room[1] >= profile.h - 1e-9 and room[2] - room[0] >= profile.w - 1e-9:
             return again
     return laid
 
@@ -572,9 +581,9 @@ def with_pressure(laid, sol, g, lang: str):
     boxes = {leaf.name: b for leaf, b in laid[0]}
     if not {"diagrams", "notes"} <= set(boxes):
         return laid
-    d, nb = boxes["diagrams"], boxes["notes"]
-    if not (d[0] < nb[0] and nb[2] <= d[2] + 1e-9 and d[1] <= nb[1]):        # the notes not in the hole
+    if not _in_hole(boxes):
         return laid
+    d, nb = boxes["diagrams"], boxes["notes"]
     room = (nb[0], d[1], d[2], nb[1] - GAP)
     w, h = room[2] - room[0], room[3] - room[1]
     if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
