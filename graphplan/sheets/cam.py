@@ -337,6 +337,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     if f.name == "A1":       # the columns leave the diagrams the field's height: a step less along φ
         k, kh, ka = _taller(k, kp, kh, ka, fits, lambda *sz: _area(leaf, sol, n, precision, *sz))
+        # then the abscissa alone longer (the ordinates' scales as they are) while the drawings fit:
+        # drawn over the working angle only, the diagrams leave their column's width part blank
+        longer = [x for x in SIZES if x > k]
+        k = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
     h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
