@@ -580,8 +580,6 @@ def with_pressure(laid, sol, g, lang: str):
     the room the notes leave under the phase diagram, at the finest standard μ_ϑ that fits it
     (review 4, item 19; issue 32, item 1: that room stood blank, the sheet 40 % empty), when the
     room is at least PRESSURE_ROOM; else ``laid`` as it is."""
-    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
-    from graphplan.graphic.scales import series_around
     boxes = {leaf.name: b for leaf, b in laid[0]}
     if not {"diagrams", "notes"} <= set(boxes):
         return laid
@@ -592,16 +590,44 @@ def with_pressure(laid, sol, g, lang: str):
     w, h = room[2] - room[0], room[3] - room[1]
     if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
         return laid
+    leaf = pressure_leaf(sol, g, lang, w, h)
+    return laid if leaf is None else [laid[0] + [(leaf, room)]] + laid[1:]
+
+
+def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
+    """The pressure angle's diagram captioned, at the finest standard μ_ϑ that puts it in ``w`` × ``h``
+    mm (None when none of the trials does)."""
+    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
     mm = "мм" if lang == "uk" else "mm"
     for shrink in (1.0, 0.9, 0.8, 0.7):
         mu_phi, mu_t = pressure_scales(sol, w * shrink, h * shrink)
         second = (f"{scale_text('mu_phi', mu_phi, sol.cam.rocking, lang)}; "
                   f"μ_ϑ = {num(mu_t, lang, 4)} °/{mm}")
-        rec = captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t), PRESSURE_NAMES[lang], second)
-        leaf = Leaf("pressure", record=rec)
+        leaf = Leaf("pressure", record=captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t),
+                                                PRESSURE_NAMES[lang], second))
         if leaf.w <= w + 1e-9 and leaf.h <= h + 1e-9:
-            return [laid[0] + [(leaf, room)]] + laid[1:]
-    return laid
+            return leaf
+    return None
+
+
+SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
+
+
+def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep):
+    """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
+    on the sheets there are (no further sheet for it): the table's sheet of an A2 or A3 set stands
+    mostly blank. Else ``laid`` as it is."""
+    if laid is None:
+        return laid
+    w = min(SET_PRESSURE[0], region[2] - region[0])
+    h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2)
+    leaf = pressure_leaf(sol, g, lang, w, h)
+    if leaf is None:
+        return laid
+    again = flow([leaves, [tab, nts, leaf]], region, keep)
+    if again is None or len(again) > len(laid) or notes_alone(again[-1]):
+        return laid
+    return again
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -620,6 +646,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
+        laid = set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
