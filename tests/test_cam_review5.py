@@ -86,18 +86,20 @@ def _largest_blank(empty: set) -> int:
 
 
 def _laid_sheet(path, lang):
-    """The A1 composition at the construction's sizes as cam_sizes found them for the review's cam
-    (1.1, 1.9, 1.1, 4.0), without the search: the leaves laid (sheets.cam._laid) and placed."""
+    """The A1 composition at the construction's sizes as cam_sizes finds them for the review's cam
+    (1.4, 1.9, 1.5, 4.0; H1 46, H2 50 mm), without the search: the leaves laid (sheets.cam._laid),
+    the pressure angle's diagram under the notes (with_pressure), placed."""
     from types import SimpleNamespace
     from graphplan.drawing.layout import centred
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     from graphplan.sheets import cam as sc
     sol = solve(load(path))
-    g = construct(sol, None, 0.5, size=1.1, profile_size=1.9, height=1.1, accel=4.0, measure=False)
+    g = construct(sol, None, 0.5, size=1.4, profile_size=1.9, height=1.5, accel=4.0, H1=46.0, H2=50.0,
+                  measure=False)
     leaves, tab, nts, doc = sc._leaves(sol, g, sol.cam, lang)
     f = form("A1")
-    (page,) = sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam))
+    (page,) = sc.with_pressure(sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam)), sol, g, lang)
     placed = [q for leaf, b in page for q in sc.apart(leaf.name, (sc.at_top if leaf.name == "profile" else centred)(leaf.record, b), b, page,
                                                        getattr(leaf.record, "parts", None))]
     return SimpleNamespace(form=f, placed=placed)
@@ -114,7 +116,7 @@ def test_the_room_under_the_phase_diagram_holds_the_notes(tmp_path, lang):
     path.write_text(KNIFE, encoding="utf-8")
     sheet = _laid_sheet(path, lang)
     box = {p.name: p.box for p in sheet.placed}
-    assert set(box) == {"diagrams", "phase", "profile", "table", "notes"}, set(box)
+    assert set(box) == {"diagrams", "phase", "profile", "table", "notes", "pressure"}, set(box)
     assert not boxes_apart(sheet.placed)
     ink = {p.name: p.record.bounds() for p in sheet.placed}
     assert ink["diagrams"][2] < ink["notes"][0] and ink["notes"][2] < ink["profile"][0]

@@ -13,13 +13,15 @@ import numpy as np
 
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, motion, profile
-from graphplan.graphic.cam import CamConstruction
+from graphplan.graphic.cam import CamConstruction, working_angle
 from graphplan.graphic.record import Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
 LAYER = "cam"
 TEXT = 3.5
 NUMBER = 2.5          # the division numbers
+BELOW = 1.0           # a number under its axis: its baseline this many letter heights lower (1.2 mm clear
+                      # with the font; a viewer's wider fallback font (DejaVu) reaches 0.27 letter higher)
 NUMBER_OFF = 0.8      # mm a diagram's division number starts right of its division (clear of a bold phase line)
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
@@ -84,8 +86,9 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     numbered under the s diagram as in the table and on the profile."""
     cam = sol.cam
     rec = Record("cam diagrams")
-    L = 2 * math.pi / g.mu_phi
-    fine = np.append(np.linspace(0.0, 359.5, 720), 360.0 - 1e-9)    # the turn, its end in the near dwell
+    work = math.degrees(working_angle(cam))
+    L = math.radians(work) / g.mu_phi          # the abscissa: the working angle φ_р (μ_φ = φ_р/L)
+    fine = np.linspace(0.0, work - 1e-9, 721)  # its end the return's end (the near dwell not drawn)
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
@@ -168,7 +171,8 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
         return got[1:]
 
     def hits(box, lines) -> list:
-        x0, y_0, x1, y_1 = box[0] - 0.3, box[1] - 0.3, box[2] + 0.3, box[3] + 0.3
+        pad = 0.6        # the check's 0.3 mm of paper (labels.CHECK) past a thin line's half width
+        x0, y_0, x1, y_1 = box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
         out = []
         for q in lines:
             ax, ay, bx, by, hx, lx, hy, ly = segments(q)
@@ -194,7 +198,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
                  and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
         best = None
         for side in ((1, -1) if up else (-1, 1)):
-            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * 0.75
+            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
             box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=str(k), size=NUMBER, anchor="start").ink()
             crossed = hits(box, lines)
             if not crossed:
@@ -203,7 +207,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
             if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
                 best = (y, box, crossed)
         if best is None:
-            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * 0.75
+            y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * BELOW
             best = (y, None, [])
         y, box, broken = best
         for q in broken:           # a horizontal thin line: two pieces, 1.5 mm clear of the number
@@ -544,3 +548,63 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
 def records(sol: Solution, g: CamConstruction, lang: str) -> dict[str, Record]:
     return {"diagrams": diagrams(sol, g, lang), "phase": phase_diagram(sol, g, lang),
             "profile": profile_drawing(sol, g, lang)}
+
+
+PRESSURE_NAMES = {"uk": "Кут тиску ϑ(φ)", "en": "Pressure angle ϑ(φ)"}
+
+
+def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float, mu_theta: float) -> Record:
+    """The pressure angle over the working angle φ_р: the exact ϑ(φ) a curve, the protractor's reading
+    at each division (Table 1's «ϑ гр.») an ordinate from the φ axis, the divisions numbered as on the
+    other diagrams, and each phase's band |ϑ| ≤ [ϑ] between dashed lines over that phase (the phase
+    diagram's condition read along the turn). φ at ``mu_phi`` rad/mm, ϑ at ``mu_theta`` °/mm."""
+    cam = sol.cam
+    rec = Record("pressure angle")
+    rise, far, ret, _ = cam.phases
+    work = rise + far + ret
+    L = math.radians(work) / mu_phi
+    fine = np.linspace(0.0, work - 1e-9, 721)
+    theta = sol.at(fine)["theta"]
+    xf = np.radians(fine) / mu_phi
+    x = np.radians(g.phi) / mu_phi
+    lo = min(float(np.min(theta)), float(np.min(g.theta)), -max(cam.allowed), 0.0) / mu_theta
+    hi = max(float(np.max(theta)), float(np.max(g.theta)), max(cam.allowed), 0.0) / mu_theta
+    labels: list[LabelRequest] = []
+    rec.segment((0.0, 0.0), (L + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axis ϑ")
+    rec.vector((0.0, lo - 3.0), (0.0, hi + 6.0), role="construction", width=AXIS_W, layer=LAYER, step="ordinate ϑ")
+    labels.append(LabelRequest(complex(0.0, hi + 6.0), "ϑ, °", toward=1 + 0.3j, size=TEXT))
+    labels.append(LabelRequest(complex(L + 6.0, 0.0), "φ", toward=1 - 1j, size=TEXT))
+    for ph, (a, b) in enumerate(((0.0, rise), (rise + far, work))):
+        xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
+        band = cam.allowed[ph] / mu_theta
+        for sign in (1.0, -1.0):
+            rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
+        labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
+                                   toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
+    rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
+    for k in range(len(x)):
+        y = float(g.theta[k]) / mu_theta
+        if abs(y) > 1e-9:
+            rec.segment((x[k], 0.0), (x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
+        rec.point((x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
+    spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
+    for k in numbered(len(x), spacing):
+        side = -1j if g.theta[k] >= 0 else 1j            # the side the ordinate leaves free
+        labels.append(LabelRequest(complex(x[k], 0.0), str(k), toward=side, size=NUMBER, optional=True))
+    place_labels(rec, labels, layer=LAYER)
+    rec.scales.update(mu_phi=mu_phi, mu_theta=mu_theta)
+    return rec
+
+
+def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:
+    """μ_φ (rad/mm, the working angle over ``width`` mm less the axis's end and its letters) and the
+    finest standard μ_ϑ (°/mm: 1, 2, 2.5, 4, 5 × 10^k) that puts ϑ's range and the bands ±[ϑ] in
+    ``height`` mm less the letters above and below."""
+    from graphplan.graphic.scales import series_around
+    cam = sol.cam
+    rise, far, ret, _ = cam.phases
+    mu_phi = math.radians(rise + far + ret) / max(width - 20.0, 10.0)
+    theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
+    span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
+    need = span / max(height - 18.0, 5.0)
+    return mu_phi, min(m for m in series_around(need) if m >= need * (1 - 1e-12))

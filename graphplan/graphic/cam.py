@@ -30,7 +30,7 @@ from graphplan.graphic.scales import series_around
 HEIGHT_MM = 40.0       # the tallest ordinate of the analogue-acceleration diagram
 STROKE_MM = 80.0       # the stroke (swing) drawn on the s diagram, about
 PROFILE_MM = 100.0     # the centre profile's largest radius, drawn, about
-L_MM = 240.0           # the abscissa of a whole turn
+L_MM = 240.0           # the abscissa a whole turn would take (μ_φ = 2π/L); the diagrams draw its working angle only
 POLE_MM = (15.0, 50.0)  # the lab's range of pole distances, set with a ruler in whole millimetres
 
 
@@ -98,6 +98,13 @@ class CamConstruction:
         return self.a_mm * self.mu_a
 
 
+def working_angle(cam) -> float:
+    """The working angle φ_р = φ_п + φ_вв + φ_с (rad) over which the lab draws the diagrams (the near
+    dwell, where s, ds/dφ and d²s/dφ² are zero, left off the abscissa: μ_φ = φ_р/L)."""
+    rise, far, ret, _ = cam.phases
+    return math.radians(rise + far + ret)
+
+
 def divisions(sol: Solution, n: int) -> tuple[np.ndarray, np.ndarray]:
     """The division turns of the rise and of the return (n intervals each), and their phases."""
     rise, far, ret, _ = sol.cam.phases
@@ -141,7 +148,8 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     L = L or L_MM * size
     height = size if height is None else height
     accel = height if accel is None else accel
-    mu_phi = 2 * math.pi / L
+    mu_phi = 2 * math.pi / L              # the turn's; the diagrams drawn over the working angle φ_р alone,
+    #                                       its abscissa L_р = φ_р/μ_φ (the lab's μ_φ = φ_р/L_р)
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0

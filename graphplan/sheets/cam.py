@@ -49,7 +49,7 @@ def _pct(v, lang: str) -> str:
     return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
 
 
-def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
+def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
     graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
     exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
@@ -82,7 +82,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0) -> Record:
                      fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
                      fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
-    return table(rows, widths, row_h=row_h, size=2.5, title=WORDS[lang]["table"])
+    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -249,9 +249,9 @@ def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
     lines = notes(doc, lang, cam)
 
     def at(width: float) -> Leaf:
-        key = (lang, round(width))
+        key = (lang, math.floor(width + 1e-9))      # never wider than asked (the box holds it)
         if key not in memo:
-            memo[key] = Leaf("notes", record=note_block(lines, float(round(width))))
+            memo[key] = Leaf("notes", record=note_block(lines, float(key[1])))
         return memo[key]
     return at
 
@@ -337,6 +337,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     ka = (_largest(lambda x: fits(k, kp, kh, x), up) if up else None) or kh
     if f.name == "A1":       # the columns leave the diagrams the field's height: a step less along φ
         k, kh, ka = _taller(k, kp, kh, ka, fits, lambda *sz: _area(leaf, sol, n, precision, *sz))
+        # then the abscissa alone longer (the ordinates' scales as they are) while the drawings fit:
+        # drawn over the working angle only, the diagrams leave their column's width part blank
+        longer = [x for x in SIZES if x > k]
+        k = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
     h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
@@ -368,9 +372,12 @@ def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
 
 def _profile_largest(p: Box, q: Box) -> bool:
     """Whether the profile (box ``p``) stays the sheet's largest drawing beside the phase diagram
-    (``q``): half as large again in area and longer in its longest side (LAYOUT.md's cam sheet)."""
+    (``q``): larger in area (LAYOUT.md's cam sheet). Not also longer in its longest side, nor half as
+    large again: the phase diagram, tall and narrow by nature (R_0 under the stroke at μ_s), was
+    held under the profile's height, and the s–ds/dφ–d²s/dφ² diagrams tied to it by μ_s with it —
+    a sheet 45 % empty (issue 32, item 1)."""
     pw, ph, qw, qh = p[2] - p[0], p[3] - p[1], q[2] - q[0], q[3] - q[1]
-    return pw * ph > 1.5 * qw * qh and max(pw, ph) > max(qw, qh)
+    return pw * ph > qw * qh
 
 
 def _taller(k, kp, kh, ka, fits, area) -> tuple[float, float, float]:
@@ -531,22 +538,96 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
+# Table 1 as large as the room under the profile takes (GOST 2.304 letters 3.5 mm, rows of 10 or 8
+# mm; else the 2.5 mm letters in rows of 8): the first of these that leaves the drawings where they were
+TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
+
+
+def _in_hole(boxes: dict) -> bool:
+    """Whether the notes (box) stand in the diagrams' box, under the phase diagram."""
+    d, nb = boxes["diagrams"], boxes["notes"]
+    return d[0] < nb[0] and nb[2] <= d[2] + 1e-9 and d[1] <= nb[1]
 
 
 def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
-    """The A1 sheet's layout with Table 1 ruled at TABLE_ROW mm rows (its lettering as it is) when
-    that leaves the drawings where they were — the column under the profile otherwise stands part
-    blank —; else ``laid`` as it is."""
-    tall = Leaf("table", record=positions_table(doc, lang, TABLE_ROW))
+    """The A1 sheet's layout with Table 1 drawn larger (TABLE_SIZES: its lettering 3.5 mm, its rows
+    10 mm, down to 2.5 mm letters in rows of TABLE_ROW mm) when that leaves the drawings and the notes
+    where they were and the profile its room — the column under the profile otherwise stands part
+    blank (the A1 sheet 45 % empty, issue 32 item 1) —; else ``laid`` as it is."""
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
-    again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
-    if not _one_sheet(again):
-        return laid
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
-    after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    room = next(b for leaf, b in again[0] if leaf.name == "profile")
-    return again if before == after and room[3] - room[1] >= profile.h - 1e-9 else laid
+    for size, row in TABLE_SIZES:
+        tall = Leaf("table", record=positions_table(doc, lang, row, size))
+        again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
+        if not _one_sheet(again):
+            continue
+        after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
+        room = next(b for leaf, b in again[0] if leaf.name == "profile")
+        # the drawings where they were, or the column under the profile wider for the table and the
+        # notes still in the room under the phase diagram (the diagrams' box narrower, still theirs)
+        held = before == after or (_in_hole(before) and _in_hole(after))
+        if held and room[3] - room[1] >= profile.h - 1e-9 and room[2] - room[0] >= profile.w - 1e-9:
+            return again
+    return laid
+
+
+PRESSURE_ROOM = (120.0, 70.0)    # mm: the least room (width, height) the pressure angle's diagram takes
+
+
+def with_pressure(laid, sol, g, lang: str):
+    """The A1 sheet's layout with the pressure angle's diagram ϑ(φ) (drawing.cam.pressure_diagram) in
+    the room the notes leave under the phase diagram, at the finest standard μ_ϑ that fits it
+    (review 4, item 19; issue 32, item 1: that room stood blank, the sheet 40 % empty), when the
+    room is at least PRESSURE_ROOM; else ``laid`` as it is."""
+    boxes = {leaf.name: b for leaf, b in laid[0]}
+    if not {"diagrams", "notes"} <= set(boxes):
+        return laid
+    if not _in_hole(boxes):
+        return laid
+    d, nb = boxes["diagrams"], boxes["notes"]
+    room = (nb[0], d[1], d[2], nb[1] - GAP)
+    w, h = room[2] - room[0], room[3] - room[1]
+    if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
+        return laid
+    leaf = pressure_leaf(sol, g, lang, w, h)
+    return laid if leaf is None else [laid[0] + [(leaf, room)]] + laid[1:]
+
+
+def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
+    """The pressure angle's diagram captioned, at the finest standard μ_ϑ that puts it in ``w`` × ``h``
+    mm (None when none of the trials does)."""
+    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
+    mm = "мм" if lang == "uk" else "mm"
+    for shrink in (1.0, 0.9, 0.8, 0.7):
+        mu_phi, mu_t = pressure_scales(sol, w * shrink, h * shrink)
+        second = (f"{scale_text('mu_phi', mu_phi, sol.cam.rocking, lang)}; "
+                  f"μ_ϑ = {num(mu_t, lang, 4)} °/{mm}")
+        leaf = Leaf("pressure", record=captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t),
+                                                PRESSURE_NAMES[lang], second))
+        if leaf.w <= w + 1e-9 and leaf.h <= h + 1e-9:
+            return leaf
+    return None
+
+
+SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
+
+
+def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep):
+    """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
+    on the sheets there are (no further sheet for it): the table's sheet of an A2 or A3 set stands
+    mostly blank. Else ``laid`` as it is."""
+    if laid is None:
+        return laid
+    w = min(SET_PRESSURE[0], region[2] - region[0])
+    h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2)
+    leaf = pressure_leaf(sol, g, lang, w, h)
+    if leaf is None:
+        return laid
+    again = flow([leaves, [tab, nts, leaf]], region, keep)
+    if again is None or len(again) > len(laid) or notes_alone(again[-1]):
+        return laid
+    return again
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -561,9 +642,11 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
     if f.name == "A1" and _one_sheet(laid):
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
+        laid = with_pressure(laid, sol, g, lang)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
+        laid = set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
