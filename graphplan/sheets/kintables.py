@@ -247,7 +247,7 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
 
 def link_lengths(st: Study) -> list[tuple[str, float]]:
     """Every link's dimensions as the drawing letters them (markup: O_{1}A): the crank, each pair
-    of joints on a floating link, a pivoted link's arms from its pivot (a bell crank's O2B and
+    of joints on a floating link (every side of a plate ABC: AB, AC, BC), a pivoted link's arms from its pivot (a bell crank's O2B and
     O2D, not the derived BD), the frame's pivots' distances, and each fixed guide's distance from
     the crank's pivot (e, the offset; e with the guide's name where there are several)."""
     import cmath
@@ -266,7 +266,13 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
             continue
         pts = [p for p in link.local if p in link.joints or p in mech.frame]
         pivot = next((p for p in pts if p in mech.frame), None)
-        pairs = [(pivot, p) for p in pts if p != pivot] if pivot is not None else list(zip(pts, pts[1:]))
+        if pivot is not None:
+            pairs = [(pivot, p) for p in pts if p != pivot]
+        elif len(pts) >= 3 and not _collinear([link.local[p] for p in pts]):
+            # a plate (the coupler ABC): every side — two do not fix C (review 6 #8: AC was missing)
+            pairs = [(a, b) for i, a in enumerate(pts) for b in pts[i + 1:]]
+        else:
+            pairs = list(zip(pts, pts[1:]))
         for a, b in pairs:
             d = abs(link.local[a] - link.local[b])
             if d > 0:
@@ -286,6 +292,16 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
         if e > 1e-9:                                            # an axial slider: no offset to give
             out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
     return out
+
+
+def _collinear(zs: list[complex], tol: float = 1e-9) -> bool:
+    """Whether the points lie on one line (a bar with a point on its extension, not a plate)."""
+    a = zs[0]
+    b = max(zs, key=lambda z: abs(z - a))
+    if abs(b - a) < tol:
+        return True
+    u = (b - a) / abs(b - a)
+    return all(abs(((z - a) * u.conjugate()).imag) < tol * max(1.0, abs(b - a)) for z in zs)
 
 
 def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: float = 0.5) -> Record:
