@@ -376,3 +376,61 @@ def test_a_plate_coupler_is_given_by_all_its_sides():
     assert sides["BC"] == pytest.approx(math.hypot(0.22 - 0.12, 0.09))
     rows = [q.text for q in dimensions_table(st, plans.mu_l, "en").items if q.kind == "text"]
     assert {"AB", "AC", "BC", "0.150"} <= set(rows), rows
+
+
+def _terminal_rows(text: str, head: str) -> dict[str, list[str]]:
+    """The terminal's table under the line starting ``head``: row label → its cells."""
+    lines = text.splitlines()
+    start = next(i for i, l in enumerate(lines) if l.strip().startswith(head))
+    out = {}
+    for line in lines[start + 1:]:
+        if not line.strip():
+            break
+        cells = line.split()
+        out[cells[0]] = cells[1:]
+    return out
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_omega_and_epsilon_are_the_same_figures_on_the_sheet_and_in_the_terminal(lang):
+    """review 6 #9: Table 1 printed ω3(0) 0.10, ω2(3) −0.94 where `plans` printed 0.096, −0.938.
+    Read from a vector drawn to the ruler's 0.5 mm, ω is known to half a division × μv / l — here
+    about ±0.02 rad/s — so two decimals, as the sheet writes them; both now write every ω and ε
+    cell alike. The check: that bound from the scene's own lengths, then cell by cell."""
+    from graphplan.report.plans import plans_json, plans_table
+    from graphplan.sheets.kintables import acceleration_table, velocity_table
+    st, plans = _plans(PLATE)
+    lengths = {"ABC": 0.22, "O2B": 0.18, "CD": 0.32}
+    for l in lengths.values():
+        assert 0.005 < 0.25 * plans.precision * 2 * plans.mu_v / l < 0.05   # half a division: the 2nd decimal
+    doc = plans_json(plans)
+    sheet = [[c for c in r] for r in _table_rows(velocity_table(doc, lang, plans.precision))]
+    head = sheet[0]
+    cols = [i for i, h in enumerate(head) if h.startswith("ω")]
+    term = plans_table(plans, lang)
+    rows = _terminal_rows(term, "No" if lang == "en" else "№")
+    assert len(cols) == 3                                   # ω2, ω3, ω4: the terminal's last three columns
+    for r in sheet[1:]:
+        mine = [r[i].replace("−", "-").rstrip("*") for i in cols]
+        theirs = rows[r[0]][-3:]
+        assert mine == theirs, (r[0], mine, theirs)
+        assert all(c == "0" or len(c.split("." if lang == "en" else ",")[1]) == 2 for c in mine), mine
+    for k, pos in enumerate(p for p in doc["positions"] if "acceleration" in p):
+        grid = _table_rows(acceleration_table(pos, 2 + k, lang, plans.precision))
+        eps = {r[0]: r[2].replace("−", "-").rstrip("*") for r in grid if r[0].startswith("ε")}
+        block = term.split(f" {pos['index']} (φ")[1]
+        for sym, cell in eps.items():
+            n = sym[3:-1]
+            line = next(l for l in block.splitlines() if l.strip().startswith("ε" + "₀₁₂₃₄₅₆₇₈₉"[int(n)]))
+            assert line.split()[1] == cell, (sym, cell, line)
+
+
+def _table_rows(rec) -> list[list[str]]:
+    """A table record's rows of cells (texts on one baseline, left to right), the full-width ones."""
+    rows: dict[float, list] = {}
+    for q in rec.items:
+        if q.kind == "text":
+            rows.setdefault(round(q.points[0][1], 1), []).append(q)
+    grid = [[t.text for t in sorted(r, key=lambda t: t.points[0][0])] for _, r in sorted(rows.items(), reverse=True)]
+    width = max(len(r) for r in grid)
+    return [r for r in grid if len(r) == width]

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
+from graphplan.report.plans import places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
 from graphplan.sheets.form import enlarged, table
 from graphplan.util.markup import escape
@@ -74,14 +75,6 @@ def _signed(e: dict) -> float | None:
     return -value if value is not None and e.get("sense") == "cw" else value
 
 
-def step_decimals(step: float) -> int:
-    """The decimals that write a ruler's step exactly (μ·0.5 mm: 0.01 → 2, 0.0125 → 4), at most 6."""
-    for d in range(7):
-        if abs(round(step, d) - step) <= 1e-9 * max(1.0, abs(step)):
-            return d
-    return 6
-
-
 def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int:
     """One count of decimals for a column of values read off drawn lengths (REFERENCE: a length is
     read to the ruler's division, then multiplied by the scale): the figures the longest reading
@@ -93,22 +86,6 @@ def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int
     mms = [_length(e) for e in entries if e and _length(e)]
     mus = [abs(e["value"] / e["mm"]) for e in entries if e and e.get("sense") is None and e.get("mm") and e.get("value")]
     return places(values, max(mms, default=None), precision, mus[0] if mus else None, most)
-
-
-def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4) -> int:
-    """``decimals`` of plain values: the figures of the longest drawn length ``longest_mm`` they are
-    read from at the largest |value|, no finer than the ruler's step times the scale ``mu``."""
-    import math
-
-    from graphplan.report.plans import figures
-    vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
-    if not vals:
-        return 0
-    figs = figures(longest_mm, precision, most) if longest_mm else most
-    d = figs - 1 - math.floor(math.log10(max(vals)))
-    if mu and precision > 0:
-        d = min(d, step_decimals(mu * precision))
-    return max(0, d)
 
 
 def written(value: float | None, d: int, lang: str) -> str:
