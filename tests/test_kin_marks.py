@@ -434,3 +434,23 @@ def _table_rows(rec) -> list[list[str]]:
     grid = [[t.text for t in sorted(r, key=lambda t: t.points[0][0])] for _, r in sorted(rows.items(), reverse=True)]
     width = max(len(r) for r in grid)
     return [r for r in grid if len(r) == width]
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_the_terminals_diagrams_name_the_sheets_table_as_the_sheet_does(lang):
+    """review 6 #9: `diagrams` said δ "as the sheet's Table 4 gives it" where the sheet's diagram
+    table is Table 5 (Table 4 is the dimensions). The terminal names no table by a number the sheet
+    may not give it; it names the table by the title the sheet prints over it."""
+    import re
+
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.report.diagrams import diagrams_table
+    from graphplan.sheets.kintables import sheet_tables
+    st, plans = _plans(PLATE)
+    d = chord_diagrams(st, divisions=12, L=240, H1=25, H2=25)
+    text = diagrams_table(d, lang)
+    assert not re.search(r"Table \d|[Тт]абл(\.|иц\w*) \d", text), text
+    tables = dict(sheet_tables(st, plans, d, lang, plans.precision, 1.0))
+    title = next(q.text for q in tables["diagram readings table"].items if q.kind == "text"
+                 and q.text.startswith(("Table", "Таблиця")))
+    assert title.split(". ", 1)[1] in text, (title, text)
