@@ -454,3 +454,26 @@ def test_the_terminals_diagrams_name_the_sheets_table_as_the_sheet_does(lang):
     title = next(q.text for q in tables["diagram readings table"].items if q.kind == "text"
                  and q.text.startswith(("Table", "Таблиця")))
     assert title.split(". ", 1)[1] in text, (title, text)
+
+
+def test_each_row_of_the_diagrams_table_writes_one_format():
+    """review 7 #17: Table 5's a_D row mixed −10,6 with a bare "0" (a 0 mm ordinate at position 3).
+    Every row of the table — the diagrams' s, v, a and the plans' v, a under them — writes its
+    numbers to one count of decimals, a zero included."""
+    import re
+
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.report.plans import plans_json
+    from graphplan.sheets.kintables import readings_table
+    st, plans = _plans(VERTICAL, 0.004)
+    d = chord_diagrams(st, divisions=12, L=153.6, H1=27, H2=25)
+    grid = _table_rows(readings_table(d, plans_json(plans), "uk", 5, plans.precision))
+    zeros = 0
+    for row in grid[1:]:
+        if row[0].startswith("δ"):
+            continue
+        cells = [c.rstrip("*") for c in row[1:] if c != "—"]
+        counts = {len(m.group(1) or "") for m in (re.fullmatch(r"−?\d+(?:,(\d+))?", c) for c in cells) if m}
+        assert len(counts) == 1, row
+        zeros += sum(1 for c in cells if float(c.replace("−", "-").replace(",", ".")) == 0)
+    assert zeros >= 1                      # the dead centre's v = 0 and a 0 mm ordinate of a are there

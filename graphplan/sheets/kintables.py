@@ -423,7 +423,13 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     d["a_plan"] = decimals([pos.get("acceleration", {}).get(akey) for pos in doc["positions"]], precision)
 
     def cell(r: dict, key: str) -> str:
-        return written(r[key], d[key], lang) if r[key] is not None else "—"
+        """A reading in its row's decimals — a 0 mm ordinate too (0,0 beside −10,6, not a bare 0:
+        review 7 #17), no sign on a zero."""
+        if r[key] is None:
+            return "—"
+        if round(r[key], d[key]) == 0:
+            return fixed(0.0, lang, d[key])
+        return written(r[key], d[key], lang)
     cols = [[str(r["position"]), cell(r, "s"), cell(r, "v"), cell(r, "v_plan"), pct(r["delta_v"]),
              cell(r, "a"), cell(r, "a_plan"), pct(r["delta_a"])] for r in read]
     rec: Record | None = None
