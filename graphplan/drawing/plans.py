@@ -398,8 +398,10 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     for other in thick_lays:
         if other.key != lay.key:
             labels += thick_letters(sc, other, every, dots)
-    _, middle = frame_support(sc, every + plans.extremes, thick_lays, crank.pivot, omega=True)
-    labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
+    d, middle = frame_support(sc, every + plans.extremes, thick_lays, crank.pivot, omega=True)
+    if middle is not None:
+        middle = roomiest_arc(rec, O, r, leaving(sc, thick_lays, crank.pivot), d, middle)
+    labels = omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle) + labels   # by its arc, first
     if not lettered:
         return rec
     place_labels(rec, labels)
@@ -703,7 +705,7 @@ def link_shapes(sc: Scheme, lay: Layout) -> dict[str, list[complex]]:
     return out
 
 
-LETTER_APART = 1.5   # mm between a link's number and any other lettering (not "4S₄" read as one)
+LETTER_APART = 2.5   # mm between a link's number and any other lettering (not "1O₁", "4S₄" read as one)
 
 
 def number_owner(sc: Scheme, thick: list[Layout], rec: Record | None = None):
@@ -755,6 +757,34 @@ def number_owner(sc: Scheme, thick: list[Layout], rec: Record | None = None):
     return {f"number of {name}": rule(name) for name in sc.mech.links}
 
 
+def roomiest_arc(rec: Record, O: complex, r: float, bold: list[float], support_deg: float,
+                 middle: float) -> float:
+    """ω1's arc's middle among those clear of the thick links and the support (``_omega_arc``'s
+    rule): where its letter has the most room — the fewest drawn lines within 3 mm of the spot
+    beside the arc's middle — ``middle`` (nearest 245°) on a tie. With the crank's support set
+    upright at the side, the arc at 245° put ω₁ 8 mm off it among the crank's lines 5–7."""
+    import numpy as np
+    rr = max(6.0, 0.25 * r)
+    pieces = _strokes(rec)
+    if not pieces:
+        return middle
+    P = np.array([[a.real, a.imag, b.real, b.imag] for a, b in pieces])
+
+    def crowd(m: float) -> int:
+        z = O + (rr + 3.5) * cmath.exp(1j * math.radians(m))
+        d = P[:, 2:] - P[:, :2]
+        L2 = np.maximum((d ** 2).sum(axis=1), 1e-12)
+        t = np.clip(((z.real - P[:, 0]) * d[:, 0] + (z.imag - P[:, 1]) * d[:, 1]) / L2, 0.0, 1.0)
+        dist = np.hypot(P[:, 0] + t * d[:, 0] - z.real, P[:, 1] + t * d[:, 1] - z.imag)
+        return int(np.sum(dist < 3.0))
+    allowed = [m for m in range(0, 360, 5)
+               if min([_gap(m, a) for a in bold] + [180.0]) - OMEGA_HALF_DEG >= CLEAR_DEG
+               and _gap(m, support_deg) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+    if not allowed:
+        return middle
+    return float(min(allowed, key=lambda m: (crowd(m), _gap(m, middle))))
+
+
 def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float = 245.0) -> list[LabelRequest]:
     """The crank's sense of rotation: a 90° arc around the pivot about ``middle`` (degrees) with an
     arrowhead, labelled ω₁ (ω_1)."""
@@ -765,7 +795,7 @@ def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float =
     tail, tip = arc_head(O, rr, end, 1 if omega > 0 else -1)
     rec.vector(tail, tip, role="head", layer="mechanism", step="the crank's rotation ω1")
     mid = O + rr * cmath.exp(1j * math.radians(middle))
-    return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False)]
+    return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False, breaks=True)]   # thin lines broken under it
 
 
 def labelled(plan: Plan) -> Record:
