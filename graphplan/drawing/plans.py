@@ -409,7 +409,9 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
         place_first(rec, alternatives, accept=owners.get(alternatives[0].step))
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
-    labels = position_numbers(plans, O, dots)
+    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key    # B₈ says 8 there
+                   for name in joints_at(sc, other) if name not in mech.frame}
+    labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)
 
@@ -511,11 +513,14 @@ RIVALS_WITHIN = 30.0   # mm: the other points a position number is kept from (fa
 SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that point (an extreme on a dead centre)
 
 
-def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list[LabelRequest]:
+def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
+                     skip: set[tuple] = frozenset()) -> list[LabelRequest]:
     """The numbers of the positions at the crank pin, the output point and the groups' inner
     joints: each across its path beside its own point, read as nobody else's — nearer its point
     than any other numbered point of another position or any other drawn point (``dots``: a
-    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it."""
+    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it. None at
+    the points ``skip`` names, (position key, point): a further thick position's joints, lettered
+    with the position's number (B₈ — not "B₈ 8")."""
     sc = plans.scheme
     named = _numbered(plans)
     rows = []
@@ -526,6 +531,8 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list
     for k, p in enumerate(plans.positions):
         label = str(p.index) if p.index is not None else f"{p.phi:g}°"
         for name, optional, path in rows:
+            if (p.key, name) in skip:
+                continue
             X = path[k]
             mine = [q[k] for _, _, q in rows]
             others = [q[j] for _, _, q in rows for j in range(len(q)) if j != k]
