@@ -376,11 +376,11 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
     return record
 
 
-def _near(ob: Obstacles, req: LabelRequest, ink: Box):
+def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     # the first free spot in order of preference: the nearer rings counted first (most labels find
-    # their spot there), the sight line and the rivals tried only up to the first that passes
+    # their spot there), the sight line, the rivals and ``accept`` tried only up to the first that passes
     rings = NEAR_FIRST * 2 * DIRECTIONS
     for lo, hi in ((0, rings), (rings, len(boxes))):
         if lo >= hi:
@@ -390,6 +390,8 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box):
             if req.sight and not _in_sight(ob, req.at, boxes[k]):
                 continue
             if req.rivals and not owned(req, boxes[k]):
+                continue
+            if accept is not None and not accept(tuple(float(v) for v in boxes[k])):
                 continue
             return tuple(boxes[k]), complex(starts[k]), None
     return None
@@ -433,7 +435,7 @@ def breakable(p: Primitive) -> bool:
             and p.role in BREAK_ROLES and p.layer != "frame")
 
 
-def _breaking(record: Record, req: LabelRequest, ink: Box):
+def _breaking(record: Record, req: LabelRequest, ink: Box, accept=None):
     """A joint's letter where the point is crowded by thin lines (the crank's pivot, where twelve
     positions meet): the nearest spot beside the point (within ``NEAR``) that meets no line but
     breakable ones (``breakable``) and no label; the thin lines under it are broken there, each
@@ -446,6 +448,8 @@ def _breaking(record: Record, req: LabelRequest, ink: Box):
     free = np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
     if req.rivals:
         free = [k for k in list(free) if owned(req, boxes[k])]
+    if accept is not None:
+        free = [k for k in list(free) if accept(tuple(float(v) for v in boxes[k]))]
     if not len(free):
         return None
     k = int(free[0])
@@ -758,19 +762,22 @@ def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -
     return [p.moved(ux * best, uy * best) for p in row]
 
 
-def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels") -> Record:
+def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels",
+                accept=None) -> Record:
     """One label asked at several anchors in order of preference (a link's number at the middle of
     its bar, then a third and a quarter from either end): the first anchor with a free spot beside
     it takes it; when none has, the first asked with ``breaks`` where only thin lines are in the
     way, those broken under it (``_breaking``, as a joint's letter at a crowded pivot); else as ``place_labels`` places any
-    label (farther out, on a leader) — a number stays by its bar, not 15 mm off it."""
+    label (farther out, on a leader) — a number stays by its bar, not 15 mm off it. ``accept``
+    (box → bool): the spots beside an anchor that may take it (a link's number nearer its own bar
+    than any other link's, outside their outlines: ``drawing.plans.number_owner``)."""
     if _SKETCH[-1] or not alternatives:
         return record
     ob = obstacles(record.items)
     for req in alternatives:
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink)
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink, accept)
         if spot is not None:
             box, start, _ = spot
             record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
@@ -778,7 +785,7 @@ def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "
             return record
     for req in (r for r in alternatives if r.breaks):   # by its bar, the thin lines broken under it
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-        spot = _breaking(record, req, ink)
+        spot = _breaking(record, req, ink, accept)
         if spot is not None:
             box, start, _ = spot
             record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,

@@ -6,7 +6,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from graphplan.util.markup import indexed
+from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from graphplan.model.linkshape import extra_points, outline_names, slot_line
@@ -136,6 +136,9 @@ def frame_support(sc: Scheme, drawn: list[Layout], thick: list[Layout], name: st
     every = leaving(sc, drawn, name)
     bold = leaving(sc, thick, name)
     if every:
+        upright = upright_support(every, bold, omega)
+        if upright is not None and upright[2] == 0:
+            return upright[0], upright[1]
         for d in FINE_DIRS:
             if min(_gap(d, a) for a in every) - SUPPORT_HALF_DEG < CLEAR_DEG:
                 continue
@@ -146,7 +149,41 @@ def frame_support(sc: Scheme, drawn: list[Layout], thick: list[Layout], name: st
                     and _gap(m, d) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
             if arcs:
                 return float(d), min(arcs, key=lambda m: _gap(m, 245.0))
+        if upright is not None:
+            return upright[0], upright[1]
     return support_direction(bold, omega=omega)
+
+
+UPRIGHT_DIRS = (-90.0, 0.0, 180.0, 90.0)   # the support upright: below, beside (a wall), above — in turn
+
+
+def _omega_arc(bold: list[float], d: float) -> float | None:
+    """ω1's arc's middle (degrees) clear of the thick links and of a support toward ``d``: nearest 245°."""
+    arcs = [m for m in range(0, 360, 5)
+            if min([_gap(m, a) for a in bold] + [180.0]) - OMEGA_HALF_DEG >= CLEAR_DEG
+            and _gap(m, d) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+    return min(arcs, key=lambda m: _gap(m, 245.0)) if arcs else None
+
+
+def upright_support(every: list[float], bold: list[float], omega: bool = False
+                    ) -> tuple[float, float | None, int] | None:
+    """The support set upright (its bar level or plumb, GOST 2.770 as a textbook draws it) where
+    that is clear of the thick positions' links (and leaves ω1's arc room at the crank's pivot):
+    the one of ``UPRIGHT_DIRS`` that the fewest thin lines leaving the pivot (``every``) cross —
+    these are broken under it — in turn on a tie. (direction, ω1's arc, thin lines crossed); None
+    where no upright support clears the thick links (review 7 #6: the crank's O1 stood tilted 13°
+    among its twelve lines)."""
+    best = None
+    for k, d in enumerate(UPRIGHT_DIRS):
+        if min([_gap(d, a) for a in bold] + [180.0]) - SUPPORT_HALF_DEG < CLEAR_DEG:
+            continue
+        arc = _omega_arc(bold, d) if omega else None
+        if omega and arc is None:
+            continue
+        crossed = sum(1 for a in every if _gap(d, a) - SUPPORT_HALF_DEG < CLEAR_DEG)
+        if best is None or (crossed, k) < best[0]:
+            best = ((crossed, k), d, arc)
+    return None if best is None else (best[1], best[2], best[0][0])
 
 
 def support_outline(X: complex, direction: float) -> list[complex]:
@@ -342,10 +379,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     break_under_supports(rec, outlines)
     # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
     late: list[LabelRequest] = []
-    for j, lay in enumerate(extremes):
-        X = where(sc, lay, sc.body_of(out), out)
-        rec.point(_pt(X), role="joint", layer="mechanism", step="extreme position")
-        late.append(LabelRequest(X, indexed(out) + "'" * (j + 1), toward=1j, size=2.5, optional=True))
+    late += extreme_letters(rec, plans, O)
     late += stroke_dimensions(rec, plans, O, lang)
     labels: list[LabelRequest] = []
     # letters at the first thick position, placed first: each beside its point (a link's number,
@@ -361,17 +395,94 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
                        and any(abs(z - d) < 1e-6 for d in dots))
         labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
-    _, middle = frame_support(sc, every + plans.extremes, thick_lays, crank.pivot, omega=True)
-    labels += omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle)
+    for other in thick_lays:
+        if other.key != lay.key:
+            labels += thick_letters(sc, other, every, dots)
+    d, middle = frame_support(sc, every + plans.extremes, thick_lays, crank.pivot, omega=True)
+    if middle is not None:
+        middle = roomiest_arc(rec, O, r, leaving(sc, thick_lays, crank.pivot), d, middle)
+    labels = omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle) + labels   # by its arc, first
     if not lettered:
         return rec
     place_labels(rec, labels)
+    owners = number_owner(sc, thick_lays, rec)
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
-        place_first(rec, alternatives)
+        place_first(rec, alternatives, accept=owners.get(alternatives[0].step))
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
-    labels = position_numbers(plans, O, dots)
+    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key    # B₈ says 8 there
+                   for name in joints_at(sc, other) if name not in mech.frame}
+    labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)
+
+
+def at_position(name: str, k: int | str) -> str:
+    """A point's letter at a further thick position: its number as a subscript, B₈; a name with a
+    number of its own takes both, A_{3,8}."""
+    head = name.rstrip("0123456789")
+    if head and head != name:
+        return f"{escape(head)}_{{{name[len(head):]},{k}}}"
+    return f"{escape(name)}_{{{k}}}"
+
+
+def thick_letters(sc: Scheme, lay: Layout, every: list[Layout], dots: list[complex]) -> list[LabelRequest]:
+    """The moving joints of a thick (acceleration) position other than the first, lettered with the
+    position's number (B₈, C₈, D₈: review 6 #11 — position 8's hollow joints had no letters while
+    position 3's had), each beside its point rather than the same point's other positions'."""
+    mech = sc.mech
+    pts = joints_at(sc, lay)
+    joints = {j for link in mech.links.values() for j in link.joints}
+    centre = sum(pts.values(), 0j) / len(pts)
+    out = []
+    for name, X in pts.items():
+        if name in mech.frame or name not in joints:
+            continue
+        rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None
+                       and abs(z - X) > 1e-6 and any(abs(z - d) < 1e-6 for d in dots))
+        out.append(LabelRequest(X, at_position(name, lay.index if lay.index is not None else lay.key),
+                                toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5, breaks=True,
+                                rivals=rivals, step=f"position {lay.key}"))
+    return out
+
+
+def primed(name: str, k: int) -> str:
+    """A point's letter at an extreme position: B′, B″ (the prime after the subscript: S₄′)."""
+    mark = {1: "′", 2: "″"}.get(k, f"({k})")
+    head = name.rstrip("0123456789")
+    return f"{escape(head)}_{{{name[len(head):]}}}{mark}" if head and head != name else escape(name) + mark
+
+
+def extreme_order(plans: Plans) -> list[Layout]:
+    """The extreme positions in the order the crank reaches them from position 0 (the first ′, the
+    second ″): position 0 itself first where it is one."""
+    st = plans.study
+    turn = [float(st.from_position0(lay.phi)) for lay in plans.extremes]
+    turn = [0.0 if t > 360.0 - 1e-6 else t for t in turn]
+    return [lay for _, lay in sorted(zip(turn, plans.extremes), key=lambda t: t[0])]
+
+
+def extreme_letters(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
+    """The extreme positions lettered as the textbook letters them: the output point (the slider's
+    B′, B″, a rocker's far joint) and the crank pin (A′, A″) at each, marked by a point — both
+    extremes, the one on a numbered position (position 0 at a dead centre) too, each letter
+    beside its own point rather than a neighbouring position's (review 7 #6: the second dead centre
+    of A was an unlabelled dot 2.6 mm from A6)."""
+    sc = plans.scheme
+    out = output_point(plans)
+    names = list(dict.fromkeys([out, sc.mech.crank.pin]))
+    paths = {n: [where(sc, p.layout, sc.body_of(n), n) for p in plans.positions] for n in names}
+    labels = []
+    for k, lay in enumerate(extreme_order(plans)[:2], 1):
+        for name in names:
+            X = where(sc, lay, sc.body_of(name), name)
+            rec.point(_pt(X), role="joint" if name == out else "dot", layer="mechanism", step="extreme position")
+            path = paths[name]
+            mid = sum(path, 0j) / len(path)
+            toward = X - O if name == sc.mech.crank.pin else (X - mid if abs(X - mid) > 1e-6 else 1j)
+            rivals = tuple(z for z in path if SAME_DOT < abs(z - X) < RIVALS_WITHIN)
+            labels.append(LabelRequest(X, primed(name, k), toward=toward, size=3.0, optional=True,
+                                       rivals=rivals, step="extreme position"))
+    return labels
 
 
 def _numbered(plans: Plans) -> list[tuple[str, bool]]:
@@ -402,11 +513,14 @@ RIVALS_WITHIN = 30.0   # mm: the other points a position number is kept from (fa
 SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that point (an extreme on a dead centre)
 
 
-def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list[LabelRequest]:
+def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
+                     skip: set[tuple] = frozenset()) -> list[LabelRequest]:
     """The numbers of the positions at the crank pin, the output point and the groups' inner
     joints: each across its path beside its own point, read as nobody else's — nearer its point
     than any other numbered point of another position or any other drawn point (``dots``: a
-    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it."""
+    centre of mass, a joint of the thick position) — ``rivals`` — else on a leader to it. None at
+    the points ``skip`` names, (position key, point): a further thick position's joints, lettered
+    with the position's number (B₈ — not "B₈ 8")."""
     sc = plans.scheme
     named = _numbered(plans)
     rows = []
@@ -417,6 +531,8 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = ()) -> list
     for k, p in enumerate(plans.positions):
         label = str(p.index) if p.index is not None else f"{p.phi:g}°"
         for name, optional, path in rows:
+            if (p.key, name) in skip:
+                continue
             X = path[k]
             mine = [q[k] for _, _, q in rows]
             others = [q[j] for _, _, q in rows for j in range(len(q)) if j != k]
@@ -574,9 +690,106 @@ def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex], along: bool =
             spots = [pts[next(iter(link.local))]]
             normal = 1j
         asked = [LabelRequest(z, str(link.number), toward=normal, size=5.0, optional=True,
-                              breaks=len(joints) >= 2) for z in spots]     # by a bar: its lines may break
+                              breaks=len(joints) >= 2, step=f"number of {name}") for z in spots]     # by a bar: its lines may break
         out.append(asked if along else asked[0])
     return out
+
+
+def link_shapes(sc: Scheme, lay: Layout) -> dict[str, list[complex]]:
+    """Each link's outline at a position, as drawn (``draw_links``): the bar or the plate's closed
+    outline through its points, a slider's block."""
+    pts = joints_at(sc, lay)
+    out = {}
+    for name, link in sc.mech.links.items():
+        if link.slides_on is not None and len(link.joints) <= 1:
+            centre = pts[next(iter(link.local))]
+            u = lay.poses[name].direction(0.0)
+            w, h = BLOCK
+            out[name] = [centre + u * complex(sx * w / 2, sy * h / 2)
+                         for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
+        else:
+            out[name] = [pts[p] for p in outline_names(link, pts)]
+    return out
+
+
+LETTER_APART = 2.5   # mm between a link's number and any other lettering (not "1O₁", "4S₄" read as one)
+
+
+def number_owner(sc: Scheme, thick: list[Layout], rec: Record | None = None):
+    """For each link (by the step ``link_numbers`` gives its number, "number of NAME") the spots its
+    number may take on the position plan: nearer its own link (at the thick positions) than any
+    other's — at most half as far, less ``OWN_MARGIN``, or 1.5 mm nearer — and outside every other
+    link's outline (a plate's triangle): a number stands by its own link (review 6 #8: the rod's
+    "4" between the plate's edge CB and the rod, 3 mm from each, read as the plate's); and
+    ``LETTER_APART`` from the lettering already in ``rec``."""
+    from shapely.geometry import LineString, Point, Polygon, box as rect
+    from shapely.ops import unary_union
+
+    from graphplan.drawing.labels import OWN_MARGIN, RIVAL_FARTHER
+    shapes: dict[str, list] = {name: [] for name in sc.mech.links}
+    plates: dict[str, list] = {name: [] for name in sc.mech.links}
+    for lay in thick:
+        for name, zs in link_shapes(sc, lay).items():
+            xy = [(z.real, z.imag) for z in zs]
+            if len(xy) >= 2:
+                shapes[name].append(LineString(xy))
+            if len(xy) >= 4 and abs(zs[0] - zs[-1]) < 1e-9:
+                poly = Polygon(xy)
+                if poly.is_valid and poly.area > 1.0:
+                    plates[name].append(poly)
+
+    def rule(name: str):
+        own = unary_union(shapes[name]) if shapes[name] else None
+        rest = [g for other, gs in shapes.items() if other != name for g in gs]
+        others = unary_union(rest) if rest else None
+        inside = [p for other, ps in plates.items() if other != name for p in ps]
+        if own is None or others is None:
+            return None
+
+        def accept(box) -> bool:
+            if rec is not None:
+                g = LETTER_APART
+                for q in rec.items:
+                    if q.kind == "text":
+                        x0, y0, x1, y1 = q.ink()
+                        if x0 < box[2] + g and box[0] - g < x1 and y0 < box[3] + g and box[1] - g < y1:
+                            return False
+            r = rect(*box)
+            centre = Point(0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3]))
+            if any(p.contains(centre) for p in inside):
+                return False
+            mine = r.distance(own)
+            return r.distance(others) >= min(2.0 * mine + OWN_MARGIN, mine + RIVAL_FARTHER)
+        return accept
+    return {f"number of {name}": rule(name) for name in sc.mech.links}
+
+
+def roomiest_arc(rec: Record, O: complex, r: float, bold: list[float], support_deg: float,
+                 middle: float) -> float:
+    """ω1's arc's middle among those clear of the thick links and the support (``_omega_arc``'s
+    rule): where its letter has the most room — the fewest drawn lines within 3 mm of the spot
+    beside the arc's middle — ``middle`` (nearest 245°) on a tie. With the crank's support set
+    upright at the side, the arc at 245° put ω₁ 8 mm off it among the crank's lines 5–7."""
+    import numpy as np
+    rr = max(6.0, 0.25 * r)
+    pieces = _strokes(rec)
+    if not pieces:
+        return middle
+    P = np.array([[a.real, a.imag, b.real, b.imag] for a, b in pieces])
+
+    def crowd(m: float) -> int:
+        z = O + (rr + 3.5) * cmath.exp(1j * math.radians(m))
+        d = P[:, 2:] - P[:, :2]
+        L2 = np.maximum((d ** 2).sum(axis=1), 1e-12)
+        t = np.clip(((z.real - P[:, 0]) * d[:, 0] + (z.imag - P[:, 1]) * d[:, 1]) / L2, 0.0, 1.0)
+        dist = np.hypot(P[:, 0] + t * d[:, 0] - z.real, P[:, 1] + t * d[:, 1] - z.imag)
+        return int(np.sum(dist < 3.0))
+    allowed = [m for m in range(0, 360, 5)
+               if min([_gap(m, a) for a in bold] + [180.0]) - OMEGA_HALF_DEG >= CLEAR_DEG
+               and _gap(m, support_deg) >= SUPPORT_HALF_DEG + OMEGA_HALF_DEG + 5.0]
+    if not allowed:
+        return middle
+    return float(min(allowed, key=lambda m: (crowd(m), _gap(m, middle))))
 
 
 def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float = 245.0) -> list[LabelRequest]:
@@ -589,7 +802,7 @@ def omega_arrow(rec: Record, O: complex, r: float, omega: float, middle: float =
     tail, tip = arc_head(O, rr, end, 1 if omega > 0 else -1)
     rec.vector(tail, tip, role="head", layer="mechanism", step="the crank's rotation ω1")
     mid = O + rr * cmath.exp(1j * math.radians(middle))
-    return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False)]
+    return [LabelRequest(mid, "ω_1", toward=mid - O, size=3.5, optional=False, breaks=True)]   # thin lines broken under it
 
 
 def labelled(plan: Plan) -> Record:

@@ -25,7 +25,7 @@ def _num(v) -> float | None:
 
 def _entry(values: dict, pct: dict, truth: dict, key: str, k: int, mm: float, big: float | None = None) -> dict[str, Any]:
     """A reading: mm, value, analytic, error_pct (of the analytic value) and, where ``big`` (the
-    cycle's maximum) is given, error_pct_judged as the sheet's Table 4 prints it (``judged_pct``)."""
+    cycle's maximum) is given, error_pct_judged as the sheet's diagrams table prints it (``judged_pct``)."""
     out = {"mm": float(mm), "value": float(values[key][k]), "analytic": float(truth[key][k]),
            "error_pct": _num(pct[key][k])}
     if big is not None:
@@ -244,7 +244,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     judged = {key: judged_pct(vals[key], d.truth[key], d.maxima[key[0]]) for key in ("v_at", "a_at")}
 
     def row_at(k: int) -> list[str]:
-        """A division ordinate's reading, δ judged as the sheet's Table 4 judges it (``judged_pct``:
+        """A division ordinate's reading, δ judged as the sheet's diagrams table judges it (``judged_pct``:
         of |max| where |exact| < 10 % of it — a reading near a zero is not 949 % off)."""
         r = d.drawn
         pos = d.position[k]

@@ -127,9 +127,44 @@ def figures(mm: float | None, precision: float = 0.5, most: int = 4) -> int:
     return max(2, min(most, len(digits)))
 
 
+def step_decimals(step: float) -> int:
+    """The decimals that write a ruler's step exactly (μ·0.5 mm: 0.01 → 2, 0.0125 → 4), at most 6."""
+    for d in range(7):
+        if abs(round(step, d) - step) <= 1e-9 * max(1.0, abs(step)):
+            return d
+    return 6
+
+
+def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4) -> int:
+    """One count of decimals for a column of values read off drawn lengths: the figures of the
+    longest drawn length ``longest_mm`` they are read from (``figures``) at the largest |value|, no
+    finer than the ruler's step times the scale ``mu``. The sheet's tables (sheets.kintables) and
+    the terminal's ω columns write with it: ω3 of the review's six-bar read from a 1 mm vector is
+    0,10 ± 0,02 (half a division × μv / l), so both write 0.10, not the sheet's 0.10 beside the
+    terminal's 0.096 (review 6 #9)."""
+    vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
+    if not vals:
+        return 0
+    figs = figures(longest_mm, precision, most) if longest_mm else most
+    d = figs - 1 - math.floor(math.log10(max(vals)))
+    if mu and precision > 0:
+        d = min(d, step_decimals(mu * precision))
+    return max(0, d)
+
+
+def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0.5) -> list[str]:
+    """A column of ω (or ε) as the sheet's tables write it: signed, one count of decimals for the
+    column (``places``: the figures of its longest vector at its largest value), 0 where the vector
+    was read as 0 mm."""
+    longest = max((e.basis / mu for e in entries if mu and e.basis), default=None)
+    d = places([signed(e) for e in entries], longest, precision)
+    return ["0" if e.value == 0 else fixed(signed(e), lang, d) for e in entries]
+
+
 def rate(e: Entry, mu: float, lang: str, precision: float = 0.5) -> str:
-    """ω or ε as the tables print it: signed, to the figures of the vector it is read from."""
-    return num(signed(e), lang, figures(e.basis / mu if mu else None, precision))
+    """ω or ε as the tables print it: signed, to the figures of the vector it is read from, in
+    decimals as the sheet's acceleration tables write it (``places`` of the one value)."""
+    return rate_column([e], mu, lang, precision)[0]
 
 
 def signed(e: Entry) -> float:
@@ -162,10 +197,11 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
         return str(p.index) if p.index is not None else "*"
 
     lines += [w("turn note"), "", w("velocities read"), row([w("no"), "φ, °", w("turn col")] + heads)]
-    for p in plans.positions:
+    omegas = {k: rate_column([p.velocity.entries[k] for p in plans.positions], plans.mu_v, lang, plans.precision)
+              for k in keys if plans.positions[0].velocity.entries[k].kind == "omega"}
+    for i, p in enumerate(plans.positions):
         lines.append(row([label(p), fixed(p.phi % 360, lang, 2), turn(p.phi)] +
-                         [rate(e, plans.mu_v, lang, plans.precision) if e.kind == "omega" else n(signed(e))
-                          for e in (p.velocity.entries[k] for k in keys)]))
+                         [omegas[k][i] if k in omegas else n(signed(p.velocity.entries[k])) for k in keys]))
     lines += ["", w("errors exact"), row([w("no"), "φ, °", w("turn col")] + heads)]
     for p in plans.positions:
         cells = [pct(p.velocity.entries[k].error_pct, lang) for k in keys]

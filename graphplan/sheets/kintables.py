@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
+from graphplan.report.plans import places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
 from graphplan.sheets.form import enlarged, table
 from graphplan.util.markup import escape
@@ -74,14 +75,6 @@ def _signed(e: dict) -> float | None:
     return -value if value is not None and e.get("sense") == "cw" else value
 
 
-def step_decimals(step: float) -> int:
-    """The decimals that write a ruler's step exactly (μ·0.5 mm: 0.01 → 2, 0.0125 → 4), at most 6."""
-    for d in range(7):
-        if abs(round(step, d) - step) <= 1e-9 * max(1.0, abs(step)):
-            return d
-    return 6
-
-
 def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int:
     """One count of decimals for a column of values read off drawn lengths (REFERENCE: a length is
     read to the ruler's division, then multiplied by the scale): the figures the longest reading
@@ -93,22 +86,6 @@ def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int
     mms = [_length(e) for e in entries if e and _length(e)]
     mus = [abs(e["value"] / e["mm"]) for e in entries if e and e.get("sense") is None and e.get("mm") and e.get("value")]
     return places(values, max(mms, default=None), precision, mus[0] if mus else None, most)
-
-
-def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4) -> int:
-    """``decimals`` of plain values: the figures of the longest drawn length ``longest_mm`` they are
-    read from at the largest |value|, no finer than the ruler's step times the scale ``mu``."""
-    import math
-
-    from graphplan.report.plans import figures
-    vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
-    if not vals:
-        return 0
-    figs = figures(longest_mm, precision, most) if longest_mm else most
-    d = figs - 1 - math.floor(math.log10(max(vals)))
-    if mu and precision > 0:
-        d = min(d, step_decimals(mu * precision))
-    return max(0, d)
 
 
 def written(value: float | None, d: int, lang: str) -> str:
@@ -247,7 +224,7 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
 
 def link_lengths(st: Study) -> list[tuple[str, float]]:
     """Every link's dimensions as the drawing letters them (markup: O_{1}A): the crank, each pair
-    of joints on a floating link, a pivoted link's arms from its pivot (a bell crank's O2B and
+    of joints on a floating link (every side of a plate ABC: AB, AC, BC), a pivoted link's arms from its pivot (a bell crank's O2B and
     O2D, not the derived BD), the frame's pivots' distances, and each fixed guide's distance from
     the crank's pivot (e, the offset; e with the guide's name where there are several)."""
     import cmath
@@ -266,7 +243,13 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
             continue
         pts = [p for p in link.local if p in link.joints or p in mech.frame]
         pivot = next((p for p in pts if p in mech.frame), None)
-        pairs = [(pivot, p) for p in pts if p != pivot] if pivot is not None else list(zip(pts, pts[1:]))
+        if pivot is not None:
+            pairs = [(pivot, p) for p in pts if p != pivot]
+        elif len(pts) >= 3 and not _collinear([link.local[p] for p in pts]):
+            # a plate (the coupler ABC): every side — two do not fix C (review 6 #8: AC was missing)
+            pairs = [(a, b) for i, a in enumerate(pts) for b in pts[i + 1:]]
+        else:
+            pairs = list(zip(pts, pts[1:]))
         for a, b in pairs:
             d = abs(link.local[a] - link.local[b])
             if d > 0:
@@ -286,6 +269,16 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
         if e > 1e-9:                                            # an axial slider: no offset to give
             out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
     return out
+
+
+def _collinear(zs: list[complex], tol: float = 1e-9) -> bool:
+    """Whether the points lie on one line (a bar with a point on its extension, not a plate)."""
+    a = zs[0]
+    b = max(zs, key=lambda z: abs(z - a))
+    if abs(b - a) < tol:
+        return True
+    u = (b - a) / abs(b - a)
+    return all(abs(((z - a) * u.conjugate()).imag) < tol * max(1.0, abs(b - a)) for z in zs)
 
 
 def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: float = 0.5) -> Record:
@@ -430,7 +423,13 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     d["a_plan"] = decimals([pos.get("acceleration", {}).get(akey) for pos in doc["positions"]], precision)
 
     def cell(r: dict, key: str) -> str:
-        return written(r[key], d[key], lang) if r[key] is not None else "—"
+        """A reading in its row's decimals — a 0 mm ordinate too (0,0 beside −10,6, not a bare 0:
+        review 7 #17), no sign on a zero."""
+        if r[key] is None:
+            return "—"
+        if round(r[key], d[key]) == 0:
+            return fixed(0.0, lang, d[key])
+        return written(r[key], d[key], lang)
     cols = [[str(r["position"]), cell(r, "s"), cell(r, "v"), cell(r, "v_plan"), pct(r["delta_v"]),
              cell(r, "a"), cell(r, "a_plan"), pct(r["delta_a"])] for r in read]
     rec: Record | None = None

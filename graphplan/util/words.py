@@ -285,8 +285,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "divisions count": ("{n} {n_divisions}", "{n} {n_divisions}"),
     "tangent ordinates": ("Ординати методу дотичних (на ординатах поділу)",
                           "The tangents' ordinates (at the division ordinates)"),
-    "judged note": ("δ у положеннях — як у табл. 4 аркуша: від точного значення, а де |точне| < 10 % |max| — від |max|",
-                    "δ at the ordinates as the sheet's Table 4 gives it: of the exact value, of |max| where |exact| < 10 % of |max|"),
+    "judged note": ("δ у положеннях — як у таблиці аркуша «Діаграми в положеннях поруч з планами»: від точного значення, "
+                    "а де |точне| < 10 % |max| — від |max|",
+                    "δ at the ordinates as the sheet's table “Diagrams read at the positions, beside the plans” gives it: "
+                    "of the exact value, of |max| where |exact| < 10 % of |max|"),
     "at ordinates": ("На ординатах поділу (крива, прочитана на ординатах)",
                      "At the division ordinates (the curves read there)"),
     "chord ordinates": ("Ординати методу хорд (посередині інтервалів)",
