@@ -193,7 +193,8 @@ def test_flat_hodographs_grow_where_the_sheet_has_room(press_turn):
             mu = mu_d if in_detail else rec.scales["mu_R"]
             for a, b in zip(run, run[1:]):
                 assert abs(f[idx[b]] - f[idx[a]]) / mu <= 0.5 + 1e-9, (rec.title, t)
-    assert p.mu["scheme"] == pytest.approx(0.002) and p.mu["lever"] == pytest.approx(0.0113, rel=1e-3)
+    v_A = 0.09 * 90 * math.pi / 30                  # r·ω1 of the press
+    assert p.mu["scheme"] == pytest.approx(0.002) and v_A / p.mu["lever"] >= 75.0   # the lever's pa no shorter
 
 
 def _runs(text: str) -> list[int]:

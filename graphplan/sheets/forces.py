@@ -971,8 +971,8 @@ def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dic
     terminal reports the construction the sheet draws."""
     p, _, dr = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     names = dr.names()
-    return {names[fam][i]: dict(r.scales) for fam, recs in dr.drawings(p.mu, lettered=False).items()
-            for i, r in enumerate(recs)}
+    return {names[fam][i]: {k: v for k, v in r.scales.items() if k.startswith("mu_")}    # the scales alone
+            for fam, recs in dr.drawings(p.mu, lettered=False).items() for i, r in enumerate(recs)}
 
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
