@@ -331,6 +331,12 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
         assert scale["value"] == pytest.approx(exact, rel=1e-9)
         if abs(series_at_least(scale["mu"]) - scale["mu"]) < 1e-12 * scale["mu"]:
             assert series_at_least(exact / scale["trial"]) == pytest.approx(scale["mu"], rel=1e-12)
+        elif round(scale["mu"] / 10 ** math.floor(math.log10(scale["mu"])), 9) in (1.5, 7.5):   # the sheet's room: GOST 2.302's 1.5, 7.5·10^k, the next round value up
+            raw = exact / scale["trial"]
+            k = math.floor(math.log10(raw))
+            rounds = sorted(m * 10.0 ** j for j in (k, k + 1) for m in (1, 1.5, 2, 2.5, 4, 5, 7.5))
+            assert next(m for m in rounds if m >= raw * (1 - 1e-12)) == pytest.approx(scale["mu"], rel=1e-12)
+            assert "GOST 2.302" in zero["caption"]
         else:       # the sheet chose p_v a ≥ 40 mm (docs/scenes.md) and μ = v_A/p_v a, 3 figures down
             raw = exact / scale["trial"]
             k = math.floor(math.log10(raw)) - 2

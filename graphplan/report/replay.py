@@ -127,6 +127,14 @@ SAY: dict[str, tuple[str, str]] = {
                       "(not shorter than {least} mm, for the plan to read) for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
                       "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; write it to two significant figures: "
                       "μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm ({trial} mm by the ruler)"),
+    "scale gost": ("Крок 0: полюс і масштаб. Полюс {pole} ставимо в будь-якому місці аркуша. Беремо {seg} ≈ {trial} мм "
+                   "для {sym}_{pin} = {value} {unit} ⇒ μ_{s} = {sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; "
+                   "аркуш має місце для більшого плану, тож заокруглюємо до масштабу ГОСТ 2.302 між стандартними "
+                   "(1,5; 7,5·10^k), не дрібнішого: μ_{s} = {mu} {munit}; тоді {seg} = {sym}_{pin}/μ_{s} = {drawn} мм",
+                   "Step 0: the pole and the scale. Put the pole {pole} anywhere on the sheet. Take {seg} ≈ {trial} mm "
+                   "for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = {sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; "
+                   "the sheet has room for a larger plan, so round it to a GOST 2.302 scale between the standard ones "
+                   "(1.5, 7.5·10^k), not finer: μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm"),
     "why sheet": ("; аркуш {f} бере той, з яким усі плани вміщуються на ньому", "; the {f} sheet takes the one with which every plan fits on it"),
     "why own": ("; той, з яким найдовший вектор плану вміщується", "; the one with which the plan's longest vector fits"),
     "equation": ("Група {group}: векторне рівняння точки {X}. Двічі підкреслене — відоме за величиною і напрямом, "
@@ -336,29 +344,31 @@ class Replay:
         to the standard series (graphic.scales.at_least) — to the very μ the plans are drawn with
         (the sheet's, which may be coarser so that every plan fits) — and the length drawn; where
         the sheet chose the length instead (a μ off the series: graphic.scales.chosen_length), that
-        length and μ = v_A / p_v a at three figures rounded down."""
+        length and μ = v_A / p_v a at three figures rounded down; where the sheet had room for a larger
+        plan (GOST 2.302's 1.5, 7.5·10^k between the series' steps), the trial rounded to that."""
         import math
 
-        from graphplan.graphic.scales import LEGIBLE_MM, at_least, on_series
+        from graphplan.graphic.scales import LEGIBLE_MM, at_least, on_round, on_series
         n, plan, cr = self.n, self.plan, self.n.mech.crank
         e = plan.entries.get(cr.pin)
         if e is None or not float(e.analytic) > 0:
             return                  # no crank vector to scale by (nothing the plans draw does this)
         value, mu = float(e.analytic), plan.mu
         drawn = value / mu
-        chosen = not on_series(mu)     # the sheet chose the length (kinlayout.legible_where_room)
+        gost = not on_series(mu) and on_round(mu)   # GOST 2.302's 1.5, 7.5·10^k: the sheet's room (kinlayout.into_room)
+        chosen = not on_round(mu)      # the sheet chose the length (kinlayout.legible_where_room)
         # a chosen length whose μ the sheet wrote to two figures draws it a little short of that
         # length (graphic.scales.chosen_length: 39.94 mm for 40, read 40.0 on the ruler)
         rounded = chosen and drawn < round(drawn) - 1e-9
         trial = round(drawn) if rounded else math.floor(drawn + 1e-9) if chosen else math.ceil(drawn - 1e-9)
-        if not chosen and abs(at_least(value / trial) - mu) > 1e-12 * mu:
+        if not chosen and not gost and abs(at_least(value / trial) - mu) > 1e-12 * mu:
             trial = round(drawn, 1)
         raw = value / trial
         s_ = "v" if plan.kind == "velocity" else "a"
         munit = "(m/s)/mm" if plan.kind == "velocity" else "(m/s²)/mm"
         why = say("why sheet", f=sheet) if sheet else say("why own")
         a = sub(cr.pin)
-        self.add([], say("scale rounded" if rounded else "scale chosen" if chosen else "scale", least=both(lambda lang: num(LEGIBLE_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
+        self.add([], say("scale rounded" if rounded else "scale chosen" if chosen else "scale gost" if gost else "scale", least=both(lambda lang: num(LEGIBLE_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
                          sym=n.sym, pin=cr.pin, value=both(lambda lang: num(value, lang)),
                          unit=both(lambda lang: unit(n.unit, lang)), s=s_,
                          raw=both(lambda lang: num(raw, lang)), munit=both(lambda lang: unit(munit, lang)), why=why,
