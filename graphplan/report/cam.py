@@ -96,12 +96,12 @@ WORDS = {
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "smooth": "на гладких ділянках",
-           "corner": "центровий профіль має злам при φ = {p}°: {v} стрибає {a} → {b} {u}, ρ = 0 (ρ_{{min}} там "
-                     "не визначений)",
-           "convex": "злам опуклий: робочий профіль має тут ребро, через яке ролик перекочується, — його центр "
-                     "огинає злам дугою радіуса r, відходячи від закону",
-           "concave": "злам угнутий: робочий профіль тут — дуга радіуса ролика r навколо зламу",
-           "sharp": "штовхач із вістрям натрапляє тут на гострий злам профілю",
+           "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
+                     "огинає злам дугою r",
+           "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
+           "sharp": "штовхач із вістрям натрапляє на гострий злам",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
            "closing": "графічне {q} замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
@@ -122,12 +122,12 @@ WORDS = {
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
-           "corner": "the centre profile has a corner at φ = {p}°: {v} jumps {a} → {b} {u}, ρ = 0 there (ρ_{{min}} "
-                     "undefined)",
-           "convex": "a convex corner: the working profile has an edge there which the roller rolls over — its "
-                     "centre rounds the corner by an arc of radius r, off the law",
-           "concave": "a concave corner: the working profile there is an arc of the roller's radius r about it",
-           "sharp": "a knife-edge follower meets a sharp corner of the profile there",
+           "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
+                     "rounding the corner by r",
+           "concave": "concave: the working profile there an arc of radius r about it",
+           "sharp": "a knife-edge follower meets a sharp corner",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical {q} closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
@@ -171,10 +171,12 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     key = "_deg" if rocking else "_m"
     k = 1.0 if rocking else 1000.0
     unit = ("°/рад" if lang == "uk" else "°/rad") if rocking else ("мм/рад" if lang == "uk" else "mm/rad")
-    for cn in corners:
-        lines.append(w["corner"].format(p=n(cn["phi_deg"]), v=q["v"], a=n(cn["ds_dphi_before" + key] * k),
-                                        b=n(cn["ds_dphi_after" + key] * k), u=unit) + "; "
-                     + w["sharp" if not roller else "convex" if cn["convex"] else "concave"])
+    if corners:
+        each = [w["corner"].format(p=n(cn["phi_deg"]), a=n(cn["ds_dphi_before" + key] * k),
+                                   b=n(cn["ds_dphi_after" + key] * k), u=unit,
+                                   k=w["sharp" if not roller else "convex" if cn["convex"] else "concave"])
+                for cn in corners]
+        lines.append(w["corners"].format(v=q["v"], c=", ".join(each)))
     sc = doc["scales"]
     mu = {k: scale_text(k, sc[f"{k}_mm" if k != "mu_phi" else "mu_phi_rad_mm"] if k != "mu_l" else sc["mu_l_m_mm"],
                         rocking, lang) for k in ("mu_phi", "mu_a", "mu_v", "mu_s", "mu_l")}
