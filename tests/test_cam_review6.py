@@ -171,3 +171,19 @@ def test_both_pressure_bands_are_lettered():
     for allowed in (40, 50):
         up, down = texts[f"[ϑ] = {allowed}°"], texts[f"−[ϑ] = −{allowed}°"]
         assert up.ink()[1] > allowed / mu_t - 0.5 and down.ink()[3] < -allowed / mu_t + 0.5
+
+
+def test_without_a_near_dwell_the_shock_at_the_turns_start_is_drawn_at_both_ends_of_the_abscissa():
+    """Linear rise 120°, linear return 240°, no dwells: one corner at 0° ≡ 360°, where ds/dφ jumps
+    −h/φ_с → +h/φ_п (up, +∞), and one at 120° (down); the arrow up at both ends of the abscissa."""
+    text = (LINEAR_RISE.replace("ROLLER", "0.008").replace("return = \"cosine\"", "return = \"linear\"")
+            .replace("rise = 100, dwell_far = 40, return = 100, dwell_near = 120",
+                     "rise = 120, dwell_far = 0, return = 240, dwell_near = 0"))
+    sol, g = _solved(text)
+    h = 0.03
+    cs = sol.corners()
+    assert [c.phi_deg for c in cs] == [0.0, 120.0]
+    assert cs[0].v_after - cs[0].v_before == pytest.approx(h / math.radians(120) + h / math.radians(240), rel=1e-9)
+    signs = [(round(math.degrees(q.points[0][0] * g.mu_phi), 6), np.sign(q.points[1][1] - q.points[0][1]))
+             for q in _shocks(diagrams(sol, g, "en"))]
+    assert signs == [(0.0, 1.0), (120.0, -1.0), (360.0, 1.0)]

@@ -171,10 +171,12 @@ def rigid_shocks(sol: Solution, mu_phi: float) -> list[tuple[float, int]]:
     work = math.degrees(working_angle(sol.cam))
     out: dict[float, float] = {}
     for c in sol.corners():
-        phi = c.phi_deg if c.phi_deg <= work + 1e-9 else c.phi_deg - 360.0
-        if -1e-9 <= phi <= work + 1e-9:
-            x = round(math.radians(phi) / mu_phi, 9)
-            out[x] = out.get(x, 0.0) + (c.v_after - c.v_before)
+        # no near dwell: the turn 0 is also the abscissa's end (the return's end and the rise's start)
+        turns = [c.phi_deg] + ([360.0] if c.phi_deg == 0.0 and work >= 360.0 - 1e-9 else [])
+        for phi in turns:
+            if -1e-9 <= phi <= work + 1e-9:
+                x = round(math.radians(phi) / mu_phi, 9)
+                out[x] = out.get(x, 0.0) + (c.v_after - c.v_before)
     return [(x, 1 if d > 0 else -1) for x, d in sorted(out.items()) if abs(d) > 1e-12]
 
 

@@ -377,7 +377,7 @@ def profile_corners(cam: Cam, g: Geometry) -> list[Corner]:
     |ds/dφ| (the linear law's rigid shocks). Convex when the tangent turns there the way the profile
     runs round the cam: Im(conj(t₋)·t₊) of the same sign as the profile's signed area."""
     rise, far, ret, _ = cam.phases
-    ends = sorted({0.0, rise, rise + far, rise + far + ret})
+    ends = sorted({e % 360.0 for e in (0.0, rise, rise + far, rise + far + ret)})      # no near dwell: 360° is 0°
     fine = np.linspace(0.0, 360.0, 3601)
     big = float(np.max(np.abs(motion(cam, fine)[1]))) or 1.0
     P = profile(cam, g, fine)["P"]
