@@ -98,10 +98,18 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     labels: list[LabelRequest] = []
     y = 0.0
     sym = symbols(cam.rocking)
+    shocks = rigid_shocks(sol, g.mu_phi)
     for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, sym["a"], g.H1),
                                              ("v", v / g.mu_v, g.v_mm, sym["v"], g.H2),
                                              ("s", s / g.mu_s, g.s_mm, sym["s"], 0.0)):
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
+        reach = SHOCK_LEAST
+        if key == "a" and shocks:      # room for the rigid shocks' arrows to ±∞ and their ∞
+            reach = max(SHOCK_LEAST, SHOCK_PART * max(hi, -lo))
+            if any(sg > 0 for _, sg in shocks):
+                hi = max(hi, reach + 6.0)
+            if any(sg < 0 for _, sg in shocks):
+                lo = min(lo, -reach - 6.0)
         y0 = y - lo
         bands[key] = y0
         left = -pole - 4.0 if pole else 0.0
@@ -114,6 +122,12 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
         labels.append(LabelRequest(complex(L, y0 + hi + 4.0), scale_text(f"mu_{key}", mu, cam.rocking, lang),
                                    toward=-0.2 + 1j, size=TEXT))
         rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
+        if key == "a":
+            for j, (xs, sg) in enumerate(shocks):     # the rigid shock: d²s/dφ² → ±∞ at the jump of ds/dφ
+                tip = (xs, y0 + sg * reach)
+                rec.vector((xs, y0), tip, role="curve", layer=LAYER, step=f"shock {j}")
+                labels.append(LabelRequest(complex(*tip), "∞", toward=complex(1.0, 0.6 * sg), size=TEXT,
+                                           step=f"shock {j}"))
         for k in range(len(x)):
             rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER, step=f"{key} at {k}")
         if key in ("v", "s"):     # the chords of the integral, parallel to the rays below
@@ -143,6 +157,27 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
+
+
+SHOCK_LEAST = 12.0     # mm: the shortest arrow of a rigid shock on the d²s/dφ² diagram
+SHOCK_PART = 0.8       # of the diagram's largest ordinate: the arrow's length where that is longer
+
+
+def rigid_shocks(sol: Solution, mu_phi: float) -> list[tuple[float, int]]:
+    """The rigid shocks on the d²s/dφ² diagram (drawn over the working angle): at each corner of the
+    centre profile (exact.cam.profile_corners: ds/dφ jumps, the linear law's ends) the acceleration is
+    an impulse, d²s/dφ² = Δ(ds/dφ)·δ(φ − φ_k) — infinite, of the sign of the jump. Its abscissa (mm at
+    ``mu_phi``) and sign (+1 up, −1 down); two jumps at one turn (no dwell between) summed."""
+    work = math.degrees(working_angle(sol.cam))
+    out: dict[float, float] = {}
+    for c in sol.corners():
+        # no near dwell: the turn 0 is also the abscissa's end (the return's end and the rise's start)
+        turns = [c.phi_deg] + ([360.0] if c.phi_deg == 0.0 and work >= 360.0 - 1e-9 else [])
+        for phi in turns:
+            if -1e-9 <= phi <= work + 1e-9:
+                x = round(math.radians(phi) / mu_phi, 9)
+                out[x] = out.get(x, 0.0) + (c.v_after - c.v_before)
+    return [(x, 1 if d > 0 else -1) for x, d in sorted(out.items()) if abs(d) > 1e-12]
 
 
 def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], key: str) -> None:
@@ -376,9 +411,12 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     labels: list[LabelRequest] = []
     r0 = sol.geometry.R0 / mu
     rec.circle((0.0, 0.0), r0, role="construction", layer=LAYER, step="base circle")
-    fine = np.linspace(0.0, 360.0, 1441)
+    corners = sol.corners()
+    fine = np.unique(np.concatenate([np.linspace(0.0, 360.0, 1441), [c.phi_deg for c in corners]]))
     p = sol.at(fine)
     P, W = p["P"] / mu, p["working"] / mu
+    if cam.roller > 0 and corners:
+        W = eroded(P, cam.roller / mu, W)
     # the centre (theoretical) profile a thin line, the working one thick (GOST 2.303); a knife-edge's
     # centre profile is the working profile
     rec.add("polyline", list(zip(P.real, P.imag)), role="construction" if cam.roller > 0 else "link",
@@ -435,6 +473,20 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_l=mu)
     return rec
+
+
+def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
+    """The working profile where the centre profile ``P`` (mm, complex, closed) has corners: the cam
+    is what stays at least r from every roller position — the centre profile's region eroded by the
+    roller's disc (shapely's inner buffer): at a concave corner an arc of radius r about it, at a
+    convex one a sharp edge (the pointwise offset C − r·n crosses itself there, or leaves a chord).
+    ``offset`` (the pointwise offset) where the erosion is not one ring (an undercut)."""
+    from shapely.geometry import Polygon
+    body = Polygon(list(zip(P.real, P.imag))).buffer(0).buffer(-r, quad_segs=32)
+    if body.is_empty or body.geom_type != "Polygon":
+        return offset
+    xy = np.asarray(body.exterior.coords)
+    return xy[:, 0] + 1j * xy[:, 1]
 
 
 def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
@@ -581,6 +633,8 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
             rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
         labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
                                    toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
+        labels.append(LabelRequest(complex((xa + xb) / 2, -band - 1.0), "−" + allowed_text(-cam.allowed[ph], lang)
+                                   .replace("-", "−"), toward=-1j, size=TEXT, step=f"−[ϑ] {ph}"))  # the lower band too
     rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
     for k in range(len(x)):
         y = float(g.theta[k]) / mu_theta

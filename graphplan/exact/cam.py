@@ -319,6 +319,12 @@ class Solution:
         out.update(s=s, v=v, a=a)
         return out
 
+    def corners(self) -> list[Corner]:
+        """The centre profile's corners (profile_corners): ρ = 0 there, outside curvature_min."""
+        if "corners" not in self.cache:
+            self.cache["corners"] = profile_corners(self.cam, self.geometry)
+        return self.cache["corners"]
+
     def curvature_min(self) -> float:
         """The smallest radius of curvature of the centre profile where it is convex, m: a 0.025° grid's
         smallest refined by a bounded search, and at every point where d²s/dφ² (or ds/dφ) jumps — the
@@ -352,6 +358,41 @@ class Solution:
             if ok.any():
                 best = min(best, float(np.min(rho[ok])))
         return best
+
+
+@dataclass(frozen=True)
+class Corner:
+    """A corner of the centre profile: where ds/dφ jumps (the linear law's ends) the profile's tangent
+    turns at once — ρ = 0 there. ``convex``: it points out of the cam (the working profile has a sharp
+    edge there, which the roller rolls over: its centre rounds the corner by an arc of radius r about
+    that edge, off the law); else the working profile is an arc of the roller's radius about it."""
+    phi_deg: float
+    v_before: float        # ds/dφ just before and just after (per radian; rocking: dψ/dφ in rad/rad)
+    v_after: float
+    convex: bool
+
+
+def profile_corners(cam: Cam, g: Geometry) -> list[Corner]:
+    """The centre profile's corners: the phases' ends where ds/dφ jumps by more than 1e-9 of the largest
+    |ds/dφ| (the linear law's rigid shocks). Convex when the tangent turns there the way the profile
+    runs round the cam: Im(conj(t₋)·t₊) of the same sign as the profile's signed area."""
+    rise, far, ret, _ = cam.phases
+    ends = sorted({e % 360.0 for e in (0.0, rise, rise + far, rise + far + ret)})      # no near dwell: 360° is 0°
+    fine = np.linspace(0.0, 360.0, 3601)
+    big = float(np.max(np.abs(motion(cam, fine)[1]))) or 1.0
+    P = profile(cam, g, fine)["P"]
+    area = float(np.sum((np.conj(P[:-1]) * P[1:]).imag))       # twice the signed area
+    out = []
+    for phi in ends:
+        _, vb, _ = motion(cam, np.array([phi - 1e-9]))
+        _, va, _ = motion(cam, np.array([phi + 1e-9]))
+        if abs(va[0] - vb[0]) <= 1e-9 * big:
+            continue
+        d = 1e-3
+        q = profile(cam, g, np.array([phi - d, phi, phi + d]))["P"]
+        turn = float((np.conj(q[1] - q[0]) * (q[2] - q[1])).imag)
+        out.append(Corner(float(phi % 360.0), float(vb[0]), float(va[0]), turn * area > 0))
+    return out
 
 
 _LAW_KNOTS = {"parabolic": (0.5,), "trapezoidal": (0.125, 0.375, 0.625, 0.875)}
@@ -388,10 +429,11 @@ def solve(cam: Cam) -> Solution:
     sol = Solution(cam, geometry(cam, R0, e), r_min, [])
     for k, name in enumerate(("rise", "return")):
         if cam.laws[k] == "linear":
+            v = "dψ/dφ" if cam.rocking else "ds/dφ"        # a rocking follower's angle is ψ, not s
             sol.warnings.append((f"the linear law of the {name}: rigid shocks at its ends (the acceleration is "
-                                 "infinite there); its ds/dφ is drawn directly, not integrated",
+                                 f"infinite there); its {v} is drawn directly, not integrated",
                                  f"лінійний закон {'підйому' if k == 0 else 'опускання'}: жорсткі удари на "
-                                 "кінцях фази (прискорення там нескінченне); ds/dφ будується прямо, без "
+                                 f"кінцях фази (прискорення там нескінченне); {v} будується прямо, без "
                                  "інтегрування"))
     if R0 < r_min * (1 - 1e-9):
         sol.warnings.append((f"the base radius {R0 * 1000:.1f} mm is below the smallest allowed "

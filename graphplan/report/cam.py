@@ -66,6 +66,9 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
         "pressure_angle_max_deg": dict(zip(("rise", "return"), sol.pressure_maxima())),
         "curvature_min_m": _f(sol.curvature_min()),
+        "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
+                             "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
+                             "convex": c.convex} for c in sol.corners()],
         "closing_mm": {"rise": float(g.closing[0]), "return": float(g.closing[1])},
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
@@ -92,6 +95,13 @@ WORDS = {
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
+           "smooth": "на гладких ділянках",
+           "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
+                     "огинає злам дугою r",
+           "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
+           "sharp": "штовхач із вістрям натрапляє на гострий злам",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
            "closing": "графічне {q} замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
                       "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
@@ -111,6 +121,13 @@ WORDS = {
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
+           "smooth": "over the smooth parts",
+           "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
+                     "rounding the corner by r",
+           "concave": "concave: the working profile there an arc of radius r about it",
+           "sharp": "a knife-edge follower meets a sharp corner",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical {q} closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
                       "back over the divisions in proportion to the turn: y_k − Δ·k/n",
@@ -127,7 +144,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     """The data, the base radius exact and measured, the largest pressure angles, ρ_min, the scales
     and the closing of s, in the lab's notation (markup: the sheet's notes typeset it)."""
     w = WORDS[lang]
-    n = lambda x, d=4: num(x, lang, d) if x is not None else "—"                # noqa: E731
+    n = lambda x, d=4: num(x, lang, d).replace("-", "−") if x is not None else "—"      # noqa: E731  a true minus
     rocking = doc["follower"] == "rocking"
     lines = [w[doc["follower"]] + "; " + w["law"].format(
         r=w["laws"][doc["laws"]["rise"]], t=w["laws"][doc["laws"]["return"]]),
@@ -144,8 +161,22 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     c = doc["curvature_min_m"]
-    lines.append(w["curv" if doc["roller_radius_m"] > 0 else "knife"].format(
-        c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000)))
+    roller = doc["roller_radius_m"] > 0
+    curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))
+    corners = doc.get("profile_corners") or []
+    if corners:         # ρ_min holds over the smooth parts only: at a corner ρ = 0
+        curv = curv.replace("ρ_{min}", "ρ_{min} " + w["smooth"], 1)
+    lines.append(curv)
+    q = symbols(rocking)
+    key = "_deg" if rocking else "_m"
+    k = 1.0 if rocking else 1000.0
+    unit = ("°/рад" if lang == "uk" else "°/rad") if rocking else ("мм/рад" if lang == "uk" else "mm/rad")
+    if corners:
+        each = [w["corner"].format(p=n(cn["phi_deg"]), a=n(cn["ds_dphi_before" + key] * k),
+                                   b=n(cn["ds_dphi_after" + key] * k), u=unit,
+                                   k=w["sharp" if not roller else "convex" if cn["convex"] else "concave"])
+                for cn in corners]
+        lines.append(w["corners"].format(v=q["v"], c=", ".join(each)))
     sc = doc["scales"]
     mu = {k: scale_text(k, sc[f"{k}_mm" if k != "mu_phi" else "mu_phi_rad_mm"] if k != "mu_l" else sc["mu_l_m_mm"],
                         rocking, lang) for k in ("mu_phi", "mu_a", "mu_v", "mu_s", "mu_l")}

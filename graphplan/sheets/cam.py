@@ -572,7 +572,7 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     return laid
 
 
-PRESSURE_ROOM = (120.0, 70.0)    # mm: the least room (width, height) the pressure angle's diagram takes
+PRESSURE_ROOM = (120.0, 50.0)    # mm: the least room (width, height) the pressure angle's diagram takes (ϑ at 2.5 °/mm at most over ±50°)
 
 
 def with_pressure(laid, sol, g, lang: str):
