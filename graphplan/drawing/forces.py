@@ -709,8 +709,40 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
-    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, LETTER, step=step)
-                 for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
+    same = _coinciding(sides)
+    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same]
+    anchors = _plan_anchors(lettered)
+    # of two sides along one line the shorter letter is set second, on the line's other side
+    pairs = {}
+    for _, s, side in anchors:
+        o = _along_lettered(s, anchors)
+        if o is not None:
+            short, long_ = sorted((s, o), key=lambda q: len(_plan_letter(q, same, lang)))
+            pairs[id(short)] = (long_, side if short is s else -side)
+    alone = [(at, s, side) for at, s, side in anchors if id(s) not in pairs]
+    _apart(rec, [LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=step) for at, s, side in alone])
+    from graphplan.drawing.labels import box_to_segment, place_first
+    for at, s, _ in anchors:
+        if id(s) not in pairs:
+            continue
+        o, side = pairs[id(s)]
+        twin = next((q for q in rec.items if q.kind == "text" and q.text == _plan_letter(o, same, lang)), None)
+        if twin is not None:          # the other side of where the long letter landed
+            x0_, y0_, x1_, y1_ = twin.bounds()
+            n_ = 1j * _unit(o.end - o.start)
+            side = -n_ if dot(complex(0.5 * (x0_ + x1_), 0.5 * (y0_ + y1_)) - o.start, n_) > 0 else n_
+        # along a side lettered already: on the other side of their one line, wherever along it
+        # there is room (by R45's upper end, where P_D stands off), so that each reads as its own
+        d = s.end - s.start
+
+        def beyond(box, o=o, s=s, side=side) -> bool:
+            mine = box_to_segment(box, s.start, s.end)
+            return (all(dot(complex(x, y) - o.start, side) > 0.5 for x in (box[0], box[2]) for y in (box[1], box[3]))
+                    and mine < 2.0 and all(box_to_segment(box, q.start, q.end) > mine + 1.0
+                                           for q in sides if q is not s and q is not o
+                                           and same.get(q.name) not in (s.name, o.name)))
+        place_first(rec, [LabelRequest(s.start + t * d, _plan_letter(s, same, lang), side, LETTER, step=step)
+                          for t in (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)], accept=beyond)
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -720,8 +752,35 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                                         + [force_symbol(n, lang) for n in unseen]))
         bound = math.floor(max(s.mm for s in tiny)) + 1 if tiny else 1
         caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
+    # a tangential component the ruler reads as 0 mm (R^τ24 = −1.99 N at 25 N/mm: 0.08 mm) is no
+    # side at all: named with its bound, the ruler's division, so that none goes unaccounted for
+    ruler = fp.precision if fp.precision > 0 else 0.5
+    lost = [eq.unknown for eq in gp.equations if eq.unknown.endswith("τ") and eq.result != 0
+            and all(s.name != eq.unknown for s in sides)]
+    if lost:
+        caption += (f"; {', '.join(force_symbol(n, lang) for n in dict.fromkeys(lost))}"
+                    f" < {num(ruler, lang)} {unit('mm', lang)}")
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
+
+
+def _coinciding(sides: list) -> dict[str, str]:
+    """The components that coincide with their whole reaction on the plan (R^n24 = R24 where R^τ24
+    is below the ruler): component's name → the reaction's — one line, one letter "R24 = R^n24"."""
+    out = {}
+    for c in sides:
+        if c.role != "component":
+            continue
+        whole = next((r for r in sides if r.role == "reaction" and c.name[:-1] == r.name
+                      and abs(r.start - c.start) < 0.3 and abs(r.end - c.end) < 0.3), None)
+        if whole is not None:
+            out[c.name] = whole.name
+    return out
+
+
+def _plan_letter(s, same: dict[str, str], lang: str) -> str:
+    """A side's letter: its symbol, joined by its coinciding components' ("R_24 = R^n_24")."""
+    return " = ".join([force_symbol(s.name, lang)] + [force_symbol(c, lang) for c, r in same.items() if r == s.name])
 
 
 _FENCE = "a label's fence (removed once the labels are set)"
@@ -791,8 +850,34 @@ def _plan_anchors(sides: list) -> list[tuple[complex, object, complex]]:
         n = 1j * _unit(d)
         if dot(n, best - centre) < 0:
             n = -n
+        # a side along one already lettered (R45 by R24 on the slider group's plan, the two all
+        # but one line): lettered on the other side of the line, so that each letter has its own
+        o = _along_lettered(s, out)
+        if o is not None:
+            m = next(m for _, q, m in out if q is o)
+            n = -m if dot(n, m) > 0 else n
         out.append((best, s, n))
     return out
+
+
+def _along_lettered(s, anchors: list):
+    """The side lettered before ``s`` (``anchors`` in order) that runs along s's line, if any."""
+    d = s.end - s.start
+    for _, o, _ in anchors:
+        if o is s:
+            return None
+        e = o.end - o.start
+        mid = 0.5 * (s.start + s.end)
+        ts = sorted(dot(z - o.start, _unit(e)) for z in (s.start, s.end))
+        if (abs((_unit(d).conjugate() * _unit(e)).imag) < COLLINEAR_SIN
+                and abs(((mid - o.start) * _unit(e).conjugate()).imag) < COLLINEAR_MM
+                and min(ts[1], abs(e)) - max(ts[0], 0.0) > 1.0):       # overlapping, not end to end
+            return o
+    return None
+
+
+COLLINEAR_SIN = 0.1   # two sides of a plan within ~6° …
+COLLINEAR_MM = 3.0    # … and this near one line read as one line: lettered on its two sides
 
 
 # -- the lever ---------------------------------------------------------------------------------
