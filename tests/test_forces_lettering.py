@@ -51,3 +51,67 @@ def test_a_component_below_the_ruler_is_named_with_its_bound(sixbar_fp):
     for lang, mm in (("uk", "0,5 мм"), ("en", "0.5 mm")):
         caption = [q.text for q in polygon_record(sixbar_fp, gp, lang).items if q.kind == "text" and "μ_F" in q.text][0]
         assert f"R^{{τ}}_{{24}} < {mm}" in caption
+
+
+@pytest.fixture(scope="module")
+def press4_turn():
+    from graphplan.drawing.charts import turn
+    from review_scenes import PRESS4
+    return turn(scene_study(PRESS4))
+
+
+def _numbers_and_dots(rec):
+    texts = [q for q in rec.items if q.kind == "text" and q.text.replace("–", "").isdigit()]
+    dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    leaders = [[complex(*p) for p in q.points] for q in rec.items if q.kind == "segment" and q.role == "label"]
+    return texts, dots, leaders
+
+
+def test_every_hodograph_number_stands_by_its_dot_or_on_a_leader(press4_turn):
+    """The forcefix report: in the press4's R34 detail "11" stood 5 mm from its dot with no leader,
+    read as no point's. Every number is within 2 mm of a dot, or on a leader that starts by a dot."""
+    from graphplan.drawing.charts import hodograph_record
+    from graphplan.drawing.labels import _box_gap
+    for key in ("R34", "R45"):
+        texts, dots, leaders = _numbers_and_dots(hodograph_record(press4_turn, key, 60.0, lang="en"))
+        assert len(texts) >= 10
+        for q in texts:
+            box = q.ink()
+            if min(_box_gap(box, d) for d in dots) <= 2.0:
+                continue
+            assert any(min(_box_gap(box, e) for e in ld) < 1.5
+                       and min(abs(e - d) for e in ld for d in dots) < 1.3 for ld in leaders), (key, q.text)
+
+
+def test_the_detail_is_marked_on_a_shelf_and_named_over_it(press4_turn):
+    """The forcefix report: the detail's mark "I" was a bare stroke by the ring, taken for a dash of
+    a jump line. GOST 2.305 marks an extension element by a leader from the ring to a shelf with the
+    numeral on it, and names the detail over it, "I (μ_R = …)"."""
+    from graphplan.drawing.charts import DETAIL_NAME, hodograph_record
+    rec = hodograph_record(press4_turn, "R34", 60.0, lang="en")
+    ring = next(q for q in rec.items if q.kind == "circle")
+    c, r = complex(*ring.points[0]), ring.radius
+    mark = next(q for q in rec.items if q.kind == "polyline" and q.role == "label")
+    a, b, e = (complex(*p) for p in mark.points)
+    assert abs(abs(a - c) - r) < 0.05 and abs(b - c) > r + 2.0      # the leader leaves the ring
+    assert abs(e.imag - b.imag) < 1e-9 and abs(e - b) >= 2.5        # the shelf, level
+    letter = next(q for q in rec.items if q.kind == "text" and q.text == DETAIL_NAME)
+    x0, y0, x1, y1 = letter.ink()
+    assert b.imag < y0 < b.imag + 1.5 and min(b.real, e.real) <= x0 and x1 <= max(b.real, e.real)
+    title = next(q for q in rec.items if q.kind == "text" and q.text.startswith(DETAIL_NAME + " ("))
+    lines = [p for q in rec.items if q.step.endswith("detail") and q.kind != "text" for p in q.points]
+    assert title.ink()[1] > max(p[1] for p in lines)               # over the detail
+
+
+def test_two_crowded_points_get_no_detail():
+    """The forcefix report: the sieve's R01 drew a detail of two points (10, 11) — hardly worth it.
+    Two points are numbered on leaders in the hodograph itself, each number by its own dot."""
+    from graphplan.drawing.charts import hodograph_record, turn
+    from graphplan.drawing.labels import _box_gap
+    from review_scenes import SIEVE
+    t = turn(scene_study(SIEVE))
+    rec = hodograph_record(t, "R01", 60.0, lang="en")
+    assert "mu_R detail" not in rec.scales
+    texts, dots, leaders = _numbers_and_dots(rec)
+    numbered = {n for q in texts for n in range(int(q.text.split("–")[0]), int(q.text.split("–")[-1]) + 1)}
+    assert numbered == set(range(12))
