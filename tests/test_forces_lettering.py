@@ -115,3 +115,32 @@ def test_two_crowded_points_get_no_detail():
     texts, dots, leaders = _numbers_and_dots(rec)
     numbered = {n for q in texts for n in range(int(q.text.split("–")[0]), int(q.text.split("–")[-1]) + 1)}
     assert numbered == set(range(12))
+
+
+def _leaders(rec):
+    return [(complex(*q.points[0]), complex(*q.points[1])) for q in rec.items if q.kind == "segment" and q.role == "label"]
+
+
+def test_no_leader_on_the_scheme_or_groups_runs_far_or_through_a_joint():
+    """Review6 #7: on the coupler-point six-bar "Φ5" hung on a 30 mm leader across h_G4 and the
+    rod, and M^Φ2's leader ran 30 mm up through C. On the scheme and every group no leader is longer
+    than 15 mm, none passes within 0.9 mm of a joint or centre of mass other than its own, and none
+    runs through another letter."""
+    from graphplan.drawing.forces import group_record, mechanism_record
+    from graphplan.drawing.labels import box_to_segment
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from review_scenes import SIXBAR6
+    fp = sf.ForceDrafter(scene_study(SIXBAR6), SheetOptions(precision=0.5, sheet="forces")).fp()
+    for rec in [mechanism_record(fp, "en")] + [group_record(fp, gp, "en") for gp in fp.groups]:
+        joints = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+        texts = [q for q in rec.items if q.kind == "text"]
+        for a, b in _leaders(rec):
+            d = b - a
+            assert abs(d) <= 15.0, (rec.title, abs(d))
+            for z in joints:
+                t = ((z - a) * d.conjugate()).real / abs(d) ** 2
+                if 0.0 < t < 1.0 and abs(z - a) > 1.5:
+                    assert abs(z - (a + t * d)) >= 0.9, (rec.title, z)
+            crossed = [q.text for q in texts if box_to_segment(q.ink(), a + 0.1 * d, a + 0.9 * d) < 0.2]
+            assert not crossed, (rec.title, crossed)

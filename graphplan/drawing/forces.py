@@ -803,12 +803,31 @@ def _apart(rec: Record, asked: list[LabelRequest],
     rings = []
     for i, req in enumerate(asked):
         n = len(rec.items)
-        if i in owned:
-            mine, more = owned[i]
-            others = [ab for ab in arrows if ab is not mine and ab != mine]
-            place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
-        else:
-            place_labels(rec, [replace(req, across=across)], layer="labels")
+
+        def put(i=i, req=req) -> None:
+            if i in owned:
+                mine, more = owned[i]
+                others = [ab for ab in arrows if ab is not mine and ab != mine]
+                place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
+            else:
+                place_labels(rec, [replace(req, across=across)], layer="labels")
+        put()
+        if _led_badly(rec.items[n:], rec.items[:n], req.at):
+            # the fences of the labels set before drove it far out (M^Φ4 on the six-bar's scheme on
+            # a 25 mm leader across the coupler) or its leader through a joint: set again with only
+            # the drawing's lines and letters in the way, kept where that leads it better
+            first = rec.items[n:]
+            del rec.items[n:]
+            kept = [p for p in rec.items if p.step == _FENCE]
+            rec.items[:] = [p for p in rec.items if p.step != _FENCE]
+            m = len(rec.items)
+            put()
+            again = rec.items[m:]
+            del rec.items[m:]
+            better = _leader_mm(again) < _leader_mm(first) and not _led_badly(again, rec.items, req.at, long=math.inf)
+            rec.items.extend(kept)
+            n = len(rec.items)
+            rec.items.extend(again if better else first)
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue
@@ -820,6 +839,38 @@ def _apart(rec: Record, asked: list[LabelRequest],
     # by their step: a letter set over thin lines (``breaks``) breaks a ring into pieces too
     rec.items[:] = [p for p in rec.items if p.step != _FENCE]
     return rec
+
+
+LONG_LEADER_MM = 12.0   # a label's leader longer than this is set again without the fences
+
+
+def _leader_mm(items: list) -> float:
+    """The length of the label's leader among ``items`` (0 where it stands beside its point)."""
+    return sum(abs(complex(*p.points[1]) - complex(*p.points[0])) for p in items
+               if p.kind == "segment" and p.role == "label")
+
+
+def _led_badly(items: list, drawn: list, at: complex, long: float = LONG_LEADER_MM) -> bool:
+    """Whether a label (its ``items``) hangs on a leader longer than ``long`` or one that passes
+    through a joint of the drawing (within 0.9 mm of a point, not its own) or through a letter."""
+    from graphplan.drawing.labels import box_to_segment
+    for p in items:
+        if p.kind != "segment" or p.role != "label":
+            continue
+        a, b = complex(*p.points[0]), complex(*p.points[1])
+        if abs(b - a) > long:
+            return True
+        d = b - a
+        for q in drawn:
+            if q.kind == "point":
+                z = complex(*q.points[0])
+                t = dot(z - a, d) / abs(d) ** 2 if abs(d) > 1e-9 else 0.0
+                if abs(z - at) > 1.5 and 0.0 < t < 1.0 and abs(z - (a + t * d)) < 0.9:
+                    return True
+            elif q.kind == "text" and q.layer == "labels" and q.step != _FENCE:
+                if box_to_segment(q.ink(), a + 0.1 * d, a + 0.9 * d) < 0.2:
+                    return True
+    return False
 
 
 TINY_MM = 3.0      # a force plan's vector shorter than this gets no label of its own (named under the plan)
