@@ -610,6 +610,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         mid = 0.5 * (about + t.foot)
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
+    # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
+    # anywhere along its shaft): set after Φ4's and G4's, M^Φ4 hung on a 25 mm leader across the rod
+    labels.sort(key=lambda lb: lb[1] in span)
     for tip, name, u in labels:
         if name in span:       # a force's letter: read as its own arrow's, not a neighbour's
             a, b = span[name]
@@ -719,30 +722,32 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         if o is not None:
             short, long_ = sorted((s, o), key=lambda q: len(_plan_letter(q, same, lang)))
             pairs[id(short)] = (long_, side if short is s else -side)
-    alone = [(at, s, side) for at, s, side in anchors if id(s) not in pairs]
-    _apart(rec, [LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=step) for at, s, side in alone])
-    from graphplan.drawing.labels import box_to_segment, place_first
-    for at, s, _ in anchors:
-        if id(s) not in pairs:
-            continue
-        o, side = pairs[id(s)]
-        twin = next((q for q in rec.items if q.kind == "text" and q.text == _plan_letter(o, same, lang)), None)
-        if twin is not None:          # the other side of where the long letter landed
-            x0_, y0_, x1_, y1_ = twin.bounds()
-            n_ = 1j * _unit(o.end - o.start)
-            side = -n_ if dot(complex(0.5 * (x0_ + x1_), 0.5 * (y0_ + y1_)) - o.start, n_) > 0 else n_
-        # along a side lettered already: on the other side of their one line, wherever along it
-        # there is room (by R45's upper end, where P_D stands off), so that each reads as its own
-        d = s.end - s.start
+    from graphplan.drawing.labels import box_to_segment
+    asked, choices = [], {}
+    for at, s, side in anchors:
+        if id(s) in pairs:
+            # along a side lettered already: on the other side of their one line, wherever along
+            # it there is room (by R45's upper end, where P_D stands off), so that each reads as its own
+            o, side = pairs[id(s)]
+            d = s.end - s.start
 
-        def beyond(box, o=o, s=s, side=side) -> bool:
-            mine = box_to_segment(box, s.start, s.end)
-            return (all(dot(complex(x, y) - o.start, side) > 0.5 for x in (box[0], box[2]) for y in (box[1], box[3]))
-                    and mine < 2.0 and all(box_to_segment(box, q.start, q.end) > mine + 1.0
-                                           for q in sides if q is not s and q is not o
-                                           and same.get(q.name) not in (s.name, o.name)))
-        place_first(rec, [LabelRequest(s.start + t * d, _plan_letter(s, same, lang), side, LETTER, step=step)
-                          for t in (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)], accept=beyond)
+            def beyond(box, o=o, s=s, side=side) -> bool:
+                twin = next((q for q in rec.items if q.kind == "text" and q.text == _plan_letter(o, same, lang)), None)
+                if twin is not None:          # the other side of where the long letter landed
+                    t0, t1, t2, t3 = twin.ink()
+                    n_ = 1j * _unit(o.end - o.start)
+                    side = -n_ if dot(complex(0.5 * (t0 + t2), 0.5 * (t1 + t3)) - o.start, n_) > 0 else n_
+                mine = box_to_segment(box, s.start, s.end)
+                return (all(dot(complex(x, y) - o.start, side) > 0.5 for x in (box[0], box[2]) for y in (box[1], box[3]))
+                        and mine < 2.0 and all(box_to_segment(box, q.start, q.end) > mine + 1.0
+                                               for q in sides if q is not s and q is not o
+                                               and same.get(q.name) not in (s.name, o.name)))
+            choices[len(asked)] = ([LabelRequest(s.start + t * d, _plan_letter(s, same, lang), side, LETTER, step=step)
+                                    for t in (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)], beyond)
+        asked.append(LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=step))
+    # the long letter first, its twin after it on the line's other side
+    order = sorted(range(len(asked)), key=lambda k: k in choices)
+    _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -788,7 +793,8 @@ _FENCE = "a label's fence (removed once the labels are set)"
 
 def _apart(rec: Record, asked: list[LabelRequest],
            owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] | None = None,
-           arrows: list[tuple[complex, complex]] = (), across: bool = True) -> Record:
+           arrows: list[tuple[complex, complex]] = (), across: bool = True,
+           choices: dict | None = None) -> Record:
     """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
     ring its letter height out, so that no two stand closer than their height; the rings go.
     A force's letter (``owned``: the request's index → its arrow, tail and head, and further
@@ -798,7 +804,7 @@ def _apart(rec: Record, asked: list[LabelRequest],
     or an arrow (on a group a force's name there reads as the other side's)."""
     from dataclasses import replace
 
-    from graphplan.drawing.labels import place_labels, place_owned_line
+    from graphplan.drawing.labels import place_first, place_labels, place_owned_line
     owned = owned or {}
     rings = []
     for i, req in enumerate(asked):
@@ -811,8 +817,18 @@ def _apart(rec: Record, asked: list[LabelRequest],
                 place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
             else:
                 place_labels(rec, [replace(req, across=across)], layer="labels")
-        put()
-        if _led_badly(rec.items[n:], rec.items[:n], req.at):
+        if choices and i in choices:
+            # asked at several anchors, where ``accept`` holds (a side along another's line: on
+            # the line's other side); else as any label
+            alts, accept = choices[i]
+            place_first(rec, [replace(r, across=across) for r in alts], layer="labels", accept=accept)
+            new = [p for p in rec.items[n:] if p.kind == "text"]
+            if not new or not accept(new[0].ink()):
+                del rec.items[n:]
+                place_labels(rec, [replace(req, across=across)], layer="labels")
+        else:
+            put()
+        if not across and _led_badly(rec.items[n:], rec.items[:n], req.at):
             # the fences of the labels set before drove it far out (M^Φ4 on the six-bar's scheme on
             # a 25 mm leader across the coupler) or its leader through a joint: set again with only
             # the drawing's lines and letters in the way, kept where that leads it better
@@ -824,7 +840,8 @@ def _apart(rec: Record, asked: list[LabelRequest],
             put()
             again = rec.items[m:]
             del rec.items[m:]
-            better = _leader_mm(again) < _leader_mm(first) and not _led_badly(again, rec.items, req.at, long=math.inf)
+            better = (not _led_badly(again, rec.items, req.at, long=max(LONG_LEADER_MM, _leader_mm(first) - 1.0))
+                      and _apart_from_labels(again, rec.items, req.size))
             rec.items.extend(kept)
             n = len(rec.items)
             rec.items.extend(again if better else first)
@@ -848,6 +865,14 @@ def _leader_mm(items: list) -> float:
     """The length of the label's leader among ``items`` (0 where it stands beside its point)."""
     return sum(abs(complex(*p.points[1]) - complex(*p.points[0])) for p in items
                if p.kind == "segment" and p.role == "label")
+
+
+def _apart_from_labels(items: list, drawn: list, gap: float) -> bool:
+    """Whether the label's letters (``items``) stand at least ``gap`` from every letter drawn."""
+    from graphplan.drawing.labels import _meets
+    mine = [q.ink() for q in items if q.kind == "text"]
+    return not any(_meets(a, q.ink(), gap - 0.05) for a in mine for q in drawn
+                   if q.kind == "text" and q.layer == "labels" and q.step != _FENCE)
 
 
 def _led_badly(items: list, drawn: list, at: complex, long: float = LONG_LEADER_MM) -> bool:
