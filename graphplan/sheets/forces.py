@@ -915,19 +915,13 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             fitting.append((m, rnd))
         largest = fitting[-1][0]
         rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
-        # a series μv always where one fits (review7 #8: μv = 0.0161, pa = 50 mm, read as no scale)
-        m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), min(rounds, default=largest))
+        m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
         if m == p.mu["lever"]:
             break
         trial = {**mu, "lever": m}
         if _lettering_kept(dr, nat, trial, p) and fits(m):
             mu = trial
             break
-    if not on_round(mu["lever"]):     # else the next round μv: a smaller lever than the one placed
-        from graphplan.graphic.scales import series_value
-        k0 = math.floor(math.log10(mu["lever"]))
-        mu["lever"] = min(r for r in (series_value(v, k) for k in (k0, k0 + 1) for v in (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5))
-                          if r >= mu["lever"] * (1 - 1e-9))
     return replace(p, mu=mu)
 
 
