@@ -69,7 +69,7 @@ def _numbers_and_dots(rec):
 
 def test_every_hodograph_number_stands_by_its_dot_or_on_a_leader(press4_turn):
     """The forcefix report: in the press4's R34 detail "11" stood 5 mm from its dot with no leader,
-    read as no point's. Every number is within 2 mm of a dot, or on a leader that starts by a dot."""
+    read as no point's. Every number is within 2.5 mm of a dot, or on a leader that starts by a dot."""
     from graphplan.drawing.charts import hodograph_record
     from graphplan.drawing.labels import _box_gap
     for key in ("R34", "R45"):
@@ -77,7 +77,7 @@ def test_every_hodograph_number_stands_by_its_dot_or_on_a_leader(press4_turn):
         assert len(texts) >= 10
         for q in texts:
             box = q.ink()
-            if min(_box_gap(box, d) for d in dots) <= 2.0:
+            if min(_box_gap(box, d) for d in dots) <= 2.5:
                 continue
             assert any(min(_box_gap(box, e) for e in ld) < 1.5
                        and min(abs(e - d) for e in ld for d in dots) < 1.3 for ld in leaders), (key, q.text)

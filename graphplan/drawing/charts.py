@@ -430,14 +430,14 @@ def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre:
     return shared
 
 
-LEAD_FROM_MM = 2.0   # a number standing farther than this from its point gets a leader to it
+LEAD_FROM_MM = 2.5   # a number standing farther than this from its point gets a leader to it
 
 
 def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> None:
     """A number the placer set a few mm off its point without a leader (the press4's "11" 5 mm from
     its dot in R34's detail, read as no point's) joined to its point by a thin leader, where the
     leader crosses no line of the curve."""
-    from graphplan.drawing.labels import _box_gap, _segment_meets_box
+    from graphplan.drawing.labels import CLEAR, _box_gap
     added = rec.items[since:]
     led = [q for q in added if q.kind == "segment" and q.role == "label"]
     lines = [q for q in rec.items[:since] if q.kind in ("segment", "polyline", "vector") and q.role != "label"]
@@ -451,7 +451,9 @@ def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> 
             continue
         near = complex(min(max(req.at.real, box[0]), box[2]), min(max(req.at.imag, box[1]), box[3]))
         u = (near - req.at) / abs(near - req.at)
-        a, b = req.at + 0.9 * u, near - 0.4 * u
+        a, b = req.at + 0.9 * u, near - (CLEAR + 0.3) * u      # as labels._leader ends short of its box
+        if abs(b - a) < 0.6:
+            continue
         if any(_crosses_line(a, b, ln) for ln in lines):
             continue
         rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=step)
