@@ -437,7 +437,7 @@ def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> 
     """A number the placer set a few mm off its point without a leader (the press4's "11" 5 mm from
     its dot in R34's detail, read as no point's) joined to its point by a thin leader, where the
     leader crosses no line of the curve."""
-    from graphplan.drawing.labels import CLEAR, _box_gap
+    from graphplan.drawing.labels import CLEAR, _box_gap, box_to_segment
     added = rec.items[since:]
     led = [q for q in added if q.kind == "segment" and q.role == "label"]
     lines = [q for q in rec.items[:since] if q.kind in ("segment", "polyline", "vector") and q.role != "label"]
@@ -455,6 +455,9 @@ def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> 
         if abs(b - a) < 0.6:
             continue
         if any(_crosses_line(a, b, ln) for ln in lines):
+            continue
+        if any(box_to_segment(o.ink(), a, b) < CLEAR + 0.3 for o in rec.items            # nor by another
+               if o.kind == "text" and o is not q):                                       # number (9 by 10–11's)
             continue
         rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=step)
 
