@@ -423,9 +423,49 @@ def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre:
                                     sight=True))
     for _, w in points:
         rec.point((float(w.real), float(w.imag)), layer="diagrams", step=step)
+    n = len(rec.items)
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
                                     # other numbers (on a leader where its point is crowded)
+    _lead_far(rec, n, numbers, step)
     return shared
+
+
+LEAD_FROM_MM = 2.5   # a number standing farther than this from its point gets a leader to it
+
+
+def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> None:
+    """A number the placer set a few mm off its point without a leader (the press4's "11" 5 mm from
+    its dot in R34's detail, read as no point's) joined to its point by a thin leader, where the
+    leader crosses no line of the curve."""
+    from graphplan.drawing.labels import CLEAR, _box_gap, box_to_segment
+    added = rec.items[since:]
+    led = [q for q in added if q.kind == "segment" and q.role == "label"]
+    lines = [q for q in rec.items[:since] if q.kind in ("segment", "polyline", "vector") and q.role != "label"]
+    for q in [q for q in added if q.kind == "text"]:
+        req = next((r for r in asked if r.text == q.text), None)
+        if req is None:
+            continue
+        box = q.ink()
+        gap = _box_gap(box, req.at)
+        if gap <= LEAD_FROM_MM or any(min(_box_gap(box, complex(*e)) for e in ld.points) < 1.0 for ld in led):
+            continue
+        near = complex(min(max(req.at.real, box[0]), box[2]), min(max(req.at.imag, box[1]), box[3]))
+        u = (near - req.at) / abs(near - req.at)
+        a, b = req.at + 0.9 * u, near - (CLEAR + 0.3) * u      # as labels._leader ends short of its box
+        if abs(b - a) < 0.6:
+            continue
+        if any(_crosses_line(a, b, ln) for ln in lines):
+            continue
+        if any(box_to_segment(o.ink(), a, b) < CLEAR + 0.3 for o in rec.items            # nor by another
+               if o.kind == "text" and o is not q):                                       # number (9 by 10–11's)
+            continue
+        rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=step)
+
+
+def _crosses_line(a: complex, b: complex, q: Primitive) -> bool:
+    """Whether the segment a–b crosses the primitive's polyline."""
+    from shapely.geometry import LineString
+    return len(q.points) >= 2 and LineString([(a.real, a.imag), (b.real, b.imag)]).crosses(LineString(q.points))
 
 
 FAN_GAPS = (3.0, 5.0, 7.0, 9.5, 12.0)    # mm past the detail's outermost point a fanned number stands
@@ -452,8 +492,11 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
     alone = [r for r in all_runs if r[0] not in tight]
     shared = [f"{a}–{b}" for a, b, _ in alone if a != b]
     if not runs:
-        place_labels(rec, [LabelRequest(w, str(a) if a == b else f"{a}–{b}", 1j, 2.5, step=step, sight=True)
-                           for a, b, w in alone])
+        rest = [LabelRequest(w, str(a) if a == b else f"{a}–{b}", 1j, 2.5, step=step, sight=True)
+                for a, b, w in alone]
+        n = len(rec.items)
+        place_labels(rec, rest)
+        _lead_far(rec, n, rest, step)
         return shared
     mid = sum(w for _, _, w in runs) / len(runs)
     reach = max(abs(w - mid) for _, _, w in runs)
@@ -499,8 +542,11 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
         rec.label(prim.points[0], text, size=2.5, anchor="middle", step=step, layer="labels")
         boxes.append(bx)
         leaders.append(lead)
-    place_labels(rec, left + [LabelRequest(w, str(a) if a == b else f"{a}–{b}", w - mid, 2.5, step=step, sight=True)
-                              for a, b, w in alone])
+    rest = left + [LabelRequest(w, str(a) if a == b else f"{a}–{b}", w - mid, 2.5, step=step, sight=True)
+                   for a, b, w in alone]
+    n = len(rec.items)
+    place_labels(rec, rest)
+    _lead_far(rec, n, rest, step)
     return shared
 
 
@@ -549,6 +595,8 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
             break
         bx0, by0, bx1, by1 = detail.box
         near = [(p, w) for p, w in points if bx0 - 1e-9 <= w.real <= bx1 + 1e-9 and by0 - 1e-9 <= w.imag <= by1 + 1e-9]
+        if len(near) < DETAIL_POINTS:       # two points are numbered on leaders, not drawn again
+            break
         c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
         if ink is None:
@@ -571,8 +619,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         rec.scales["mu_R detail"] = detail.mu
         rec.circle((c.real, c.imag), r, role="construction", layer="diagrams", step=f"{step}: detail")
         rec.extend(moved)
-        place_labels(rec, [LabelRequest(c + r * (-1 + 1j) / abs(-1 + 1j), DETAIL_NAME, -1 + 1j, 3.5,
-                                        step=f"{step}: detail")])
+        _detail_mark(rec, c, r, f"{step}: detail mark")
         break
     shared = _numbered(rec, [(p, w / mu_r) for p, w in points if (p, w) not in inside], step) + shared
     y = rec.bounds()[1] - 6.0
@@ -589,6 +636,41 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
 
 
 DETAIL_SHARES = (1.0, 0.8, 0.6, 0.45, 0.35)   # the detail's sizes tried, in DETAIL_MM
+DETAIL_POINTS = 3      # a detail is drawn only for at least this many points (two are hardly worth it)
+SHELF_LEAD = 4.0       # mm: the mark's leader from the ring to its shelf (GOST 2.305, 2.316)
+SHELF_MM = 4.5         # mm: the shelf the mark's letter stands on
+
+
+def _detail_mark(rec: Record, c: complex, r: float, step: str) -> None:
+    """The ringed spot's mark as GOST 2.305 draws an extension element: a thin leader from the
+    ring out to a shelf, the letter "I" standing on the shelf — not a bare stroke by the ring (the
+    sieve's "I" read as a dash of the jump line). The first of the four diagonals (up-left first)
+    whose leader, shelf and letter keep clear of the hodograph's lines, points and lettering."""
+    from shapely.geometry import LineString, box
+    prim = Primitive("text", ((0.0, 0.0),), text=DETAIL_NAME, size=3.5)
+    i0, j0, i1, j1 = prim.ink()
+    w = max(SHELF_MM, i1 - i0 + 1.5)
+    ink = _ink_of(rec).buffer(-DETAIL_CLEAR + 0.6)
+    texts = [box(*q.ink()).buffer(0.8) for q in rec.items if q.kind == "text"]
+    best = None
+    rx0, ry0, rx1, ry1 = rec.bounds()
+    field = box(rx0, ry0, rx1, ry1)
+    for d in (-1 + 1j, 1 + 1j, -1 - 1j, 1 - 1j):
+        u = d / abs(d)
+        a, b = c + r * u, c + (r + SHELF_LEAD) * u
+        e = b + (w if d.real > 0 else -w)
+        x = min(b.real, e.real) + w / 2 - (i0 + i1) / 2       # the letter in the shelf's middle
+        tb = box(x + i0, b.imag + 0.8 + j0, x + i1, b.imag + 0.8 + j1)
+        lines = LineString([(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)])
+        hit = (lines.intersects(ink) or tb.intersects(ink) or any(tb.intersects(t) or lines.intersects(t) for t in texts)
+               or not field.contains(tb.union(lines)))        # within the hodograph's room, not past it
+        if not hit:
+            best = (a, b, e, x)
+            break
+        best = best or (a, b, e, x)
+    a, b, e, x = best
+    rec.add("polyline", [(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)], role="label", layer="labels", step=step)
+    rec.label((x, b.imag + 0.8), DETAIL_NAME, size=3.5, step=step)
 DETAIL_GAP = 6.0       # mm between a flat hodograph's field and the detail drawn beside it
 DETAIL_CLEAR = 2.0     # mm between a detail and the hodograph's lines, points and ring
 
@@ -647,7 +729,8 @@ def _detail(t: Turn, f: np.ndarray, d: Detail, inside: list[tuple[int, complex]]
     _hodograph_lines(det, t, f, d.mu, step, box)
     shared = _fanned(det, [(p, w / d.mu) for p, w in inside], step)
     b = det.bounds()
-    det.label((b[0], b[1] - 4.5), f"{DETAIL_NAME} (μ_R = {num(d.mu, lang)} {unit('N/mm', lang)})", size=2.5, step=step)
+    # over the detail, as GOST 2.305 names an extension element: "I (μ_R = 4 N/mm)"
+    det.label((b[0], b[3] + 1.5), f"{DETAIL_NAME} (μ_R = {num(d.mu, lang)} {unit('N/mm', lang)})", size=2.5, step=step)
     return det, shared
 
 

@@ -610,6 +610,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         mid = 0.5 * (about + t.foot)
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
+    # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
+    # anywhere along its shaft): set after Φ4's and G4's, M^Φ4 hung on a 25 mm leader across the rod
+    labels.sort(key=lambda lb: lb[1] in span)
     for tip, name, u in labels:
         if name in span:       # a force's letter: read as its own arrow's, not a neighbour's
             a, b = span[name]
@@ -709,8 +712,42 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                    text=f"{s.name} = {s.mm:.4g} mm")
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
-    _apart(rec, [LabelRequest(at, force_symbol(s.name, lang), side, LETTER, step=step)
-                 for at, s, side in _plan_anchors([s for s in sides if s.mm >= TINY_MM])])
+    same = _coinciding(sides)
+    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same]
+    anchors = _plan_anchors(lettered)
+    # of two sides along one line the shorter letter is set second, on the line's other side
+    pairs = {}
+    for _, s, side in anchors:
+        o = _along_lettered(s, anchors)
+        if o is not None:
+            short, long_ = sorted((s, o), key=lambda q: len(_plan_letter(q, same, lang)))
+            pairs[id(short)] = (long_, side if short is s else -side)
+    from graphplan.drawing.labels import box_to_segment
+    asked, choices = [], {}
+    for at, s, side in anchors:
+        if id(s) in pairs:
+            # along a side lettered already: on the other side of their one line, wherever along
+            # it there is room (by R45's upper end, where P_D stands off), so that each reads as its own
+            o, side = pairs[id(s)]
+            d = s.end - s.start
+
+            def beyond(box, o=o, s=s, side=side) -> bool:
+                twin = next((q for q in rec.items if q.kind == "text" and q.text == _plan_letter(o, same, lang)), None)
+                if twin is not None:          # the other side of where the long letter landed
+                    t0, t1, t2, t3 = twin.ink()
+                    n_ = 1j * _unit(o.end - o.start)
+                    side = -n_ if dot(complex(0.5 * (t0 + t2), 0.5 * (t1 + t3)) - o.start, n_) > 0 else n_
+                mine = box_to_segment(box, s.start, s.end)
+                return (all(dot(complex(x, y) - o.start, side) > 0.5 for x in (box[0], box[2]) for y in (box[1], box[3]))
+                        and mine < 2.0 and all(box_to_segment(box, q.start, q.end) > mine + 1.0
+                                               for q in sides if q is not s and q is not o
+                                               and same.get(q.name) not in (s.name, o.name)))
+            choices[len(asked)] = ([LabelRequest(s.start + t * d, _plan_letter(s, same, lang), side, LETTER, step=step)
+                                    for t in (0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9)], beyond)
+        asked.append(LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=step))
+    # the long letter first, its twin after it on the line's other side
+    order = sorted(range(len(asked)), key=lambda k: k in choices)
+    _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -720,8 +757,35 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
                                         + [force_symbol(n, lang) for n in unseen]))
         bound = math.floor(max(s.mm for s in tiny)) + 1 if tiny else 1
         caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
+    # a tangential component the ruler reads as 0 mm (R^τ24 = −1.99 N at 25 N/mm: 0.08 mm) is no
+    # side at all: named with its bound, the ruler's division, so that none goes unaccounted for
+    ruler = fp.precision if fp.precision > 0 else 0.5
+    lost = [eq.unknown for eq in gp.equations if eq.unknown.endswith("τ") and eq.result != 0
+            and all(s.name != eq.unknown for s in sides)]
+    if lost:
+        caption += (f"; {', '.join(force_symbol(n, lang) for n in dict.fromkeys(lost))}"
+                    f" < {num(ruler, lang)} {unit('mm', lang)}")
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
+
+
+def _coinciding(sides: list) -> dict[str, str]:
+    """The components that coincide with their whole reaction on the plan (R^n24 = R24 where R^τ24
+    is below the ruler): component's name → the reaction's — one line, one letter "R24 = R^n24"."""
+    out = {}
+    for c in sides:
+        if c.role != "component":
+            continue
+        whole = next((r for r in sides if r.role == "reaction" and c.name[:-1] == r.name
+                      and abs(r.start - c.start) < 0.3 and abs(r.end - c.end) < 0.3), None)
+        if whole is not None:
+            out[c.name] = whole.name
+    return out
+
+
+def _plan_letter(s, same: dict[str, str], lang: str) -> str:
+    """A side's letter: its symbol, joined by its coinciding components' ("R_24 = R^n_24")."""
+    return " = ".join([force_symbol(s.name, lang)] + [force_symbol(c, lang) for c, r in same.items() if r == s.name])
 
 
 _FENCE = "a label's fence (removed once the labels are set)"
@@ -729,7 +793,8 @@ _FENCE = "a label's fence (removed once the labels are set)"
 
 def _apart(rec: Record, asked: list[LabelRequest],
            owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] | None = None,
-           arrows: list[tuple[complex, complex]] = (), across: bool = True) -> Record:
+           arrows: list[tuple[complex, complex]] = (), across: bool = True,
+           choices: dict | None = None) -> Record:
     """The labels placed one by one (drawing.labels), each fenced while the rest are placed by a
     ring its letter height out, so that no two stand closer than their height; the rings go.
     A force's letter (``owned``: the request's index → its arrow, tail and head, and further
@@ -739,17 +804,47 @@ def _apart(rec: Record, asked: list[LabelRequest],
     or an arrow (on a group a force's name there reads as the other side's)."""
     from dataclasses import replace
 
-    from graphplan.drawing.labels import place_labels, place_owned_line
+    from graphplan.drawing.labels import place_first, place_labels, place_owned_line
     owned = owned or {}
     rings = []
     for i, req in enumerate(asked):
         n = len(rec.items)
-        if i in owned:
-            mine, more = owned[i]
-            others = [ab for ab in arrows if ab is not mine and ab != mine]
-            place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
+
+        def put(i=i, req=req) -> None:
+            if i in owned:
+                mine, more = owned[i]
+                others = [ab for ab in arrows if ab is not mine and ab != mine]
+                place_owned_line(rec, [replace(r, across=across) for r in (req, *more)], mine, others, layer="labels")
+            else:
+                place_labels(rec, [replace(req, across=across)], layer="labels")
+        if choices and i in choices:
+            # asked at several anchors, where ``accept`` holds (a side along another's line: on
+            # the line's other side); else as any label
+            alts, accept = choices[i]
+            place_first(rec, [replace(r, across=across) for r in alts], layer="labels", accept=accept)
+            new = [p for p in rec.items[n:] if p.kind == "text"]
+            if not new or not accept(new[0].ink()):
+                del rec.items[n:]
+                place_labels(rec, [replace(req, across=across)], layer="labels")
         else:
-            place_labels(rec, [replace(req, across=across)], layer="labels")
+            put()
+        if not across and _led_badly(rec.items[n:], rec.items[:n], req.at):
+            # the fences of the labels set before drove it far out (M^Φ4 on the six-bar's scheme on
+            # a 25 mm leader across the coupler) or its leader through a joint: set again with only
+            # the drawing's lines and letters in the way, kept where that leads it better
+            first = rec.items[n:]
+            del rec.items[n:]
+            kept = [p for p in rec.items if p.step == _FENCE]
+            rec.items[:] = [p for p in rec.items if p.step != _FENCE]
+            m = len(rec.items)
+            put()
+            again = rec.items[m:]
+            del rec.items[m:]
+            better = (not _led_badly(again, rec.items, req.at, long=max(LONG_LEADER_MM, _leader_mm(first) - 1.0))
+                      and _apart_from_labels(again, rec.items, req.size))
+            rec.items.extend(kept)
+            n = len(rec.items)
+            rec.items.extend(again if better else first)
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue
@@ -761,6 +856,46 @@ def _apart(rec: Record, asked: list[LabelRequest],
     # by their step: a letter set over thin lines (``breaks``) breaks a ring into pieces too
     rec.items[:] = [p for p in rec.items if p.step != _FENCE]
     return rec
+
+
+LONG_LEADER_MM = 12.0   # a label's leader longer than this is set again without the fences
+
+
+def _leader_mm(items: list) -> float:
+    """The length of the label's leader among ``items`` (0 where it stands beside its point)."""
+    return sum(abs(complex(*p.points[1]) - complex(*p.points[0])) for p in items
+               if p.kind == "segment" and p.role == "label")
+
+
+def _apart_from_labels(items: list, drawn: list, gap: float) -> bool:
+    """Whether the label's letters (``items``) stand at least ``gap`` from every letter drawn."""
+    from graphplan.drawing.labels import _meets
+    mine = [q.ink() for q in items if q.kind == "text"]
+    return not any(_meets(a, q.ink(), gap - 0.05) for a in mine for q in drawn
+                   if q.kind == "text" and q.layer == "labels" and q.step != _FENCE)
+
+
+def _led_badly(items: list, drawn: list, at: complex, long: float = LONG_LEADER_MM) -> bool:
+    """Whether a label (its ``items``) hangs on a leader longer than ``long`` or one that passes
+    through a joint of the drawing (within 0.9 mm of a point, not its own) or through a letter."""
+    from graphplan.drawing.labels import box_to_segment
+    for p in items:
+        if p.kind != "segment" or p.role != "label":
+            continue
+        a, b = complex(*p.points[0]), complex(*p.points[1])
+        if abs(b - a) > long:
+            return True
+        d = b - a
+        for q in drawn:
+            if q.kind == "point":
+                z = complex(*q.points[0])
+                t = dot(z - a, d) / abs(d) ** 2 if abs(d) > 1e-9 else 0.0
+                if abs(z - at) > 1.5 and 0.0 < t < 1.0 and abs(z - (a + t * d)) < 0.9:
+                    return True
+            elif q.kind == "text" and q.layer == "labels" and q.step != _FENCE:
+                if box_to_segment(q.ink(), a + 0.1 * d, a + 0.9 * d) < 0.2:
+                    return True
+    return False
 
 
 TINY_MM = 3.0      # a force plan's vector shorter than this gets no label of its own (named under the plan)
@@ -791,8 +926,34 @@ def _plan_anchors(sides: list) -> list[tuple[complex, object, complex]]:
         n = 1j * _unit(d)
         if dot(n, best - centre) < 0:
             n = -n
+        # a side along one already lettered (R45 by R24 on the slider group's plan, the two all
+        # but one line): lettered on the other side of the line, so that each letter has its own
+        o = _along_lettered(s, out)
+        if o is not None:
+            m = next(m for _, q, m in out if q is o)
+            n = -m if dot(n, m) > 0 else n
         out.append((best, s, n))
     return out
+
+
+def _along_lettered(s, anchors: list):
+    """The side lettered before ``s`` (``anchors`` in order) that runs along s's line, if any."""
+    d = s.end - s.start
+    for _, o, _ in anchors:
+        if o is s:
+            return None
+        e = o.end - o.start
+        mid = 0.5 * (s.start + s.end)
+        ts = sorted(dot(z - o.start, _unit(e)) for z in (s.start, s.end))
+        if (abs((_unit(d).conjugate() * _unit(e)).imag) < COLLINEAR_SIN
+                and abs(((mid - o.start) * _unit(e).conjugate()).imag) < COLLINEAR_MM
+                and min(ts[1], abs(e)) - max(ts[0], 0.0) > 1.0):       # overlapping, not end to end
+            return o
+    return None
+
+
+COLLINEAR_SIN = 0.1   # two sides of a plan within ~6° …
+COLLINEAR_MM = 3.0    # … and this near one line read as one line: lettered on its two sides
 
 
 # -- the lever ---------------------------------------------------------------------------------
