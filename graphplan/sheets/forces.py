@@ -893,6 +893,13 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
                                                                                     fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
+    plans = dict(plan_scales(mu))
+    if plans:                                      # a force plan at its own μF (``_grown_plans``)
+        fam = nat.families["forces"]
+        fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+        leaves["forces"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(plans[gp.label], i)))
+                            if gp.label in plans else leaf
+                            for i, (leaf, gp) in enumerate(zip(leaves["forces"], fp.groups))]
     return leaves
 
 
@@ -1041,14 +1048,30 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     else:
         from graphplan.sheets.compose import later_keep
         from graphplan.sheets.forceset import laid, pack, spread, units_of
-        notes_leaf = Leaf("notes", record=note_block(note_lines, TITLE))
-        packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region, keep_out(f), later_keep(f))
+        nrec = note_block(note_lines, TITLE)
+        notes_leaf = Leaf("notes", record=nrec)
+        packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region, keep_out(f),
+                      later_keep(f))
+        if packed is None or len(packed) > p.sheets:
+            # each drawing in the cell the plan sized: the set's sheets as the plan counted them
+            planned = _placed_leaves(dr, nat, p.mu)
+            leaves = {fam: [Leaf(x.name, max(x.w, q.w), max(x.h, q.h), x.record) for x, q in zip(xs, planned[fam])]
+                      for fam, xs in leaves.items()}
+            if leaves["hodographs"]:
+                cw, ch = max(x.w for x in leaves["hodographs"]), max(x.h for x in leaves["hodographs"])
+                leaves["hodographs"] = [Leaf(x.name, cw, ch, x.record) for x in leaves["hodographs"]]
+            tables = [Leaf(t.name, max(t.w, w), max(t.h, h), t.record)
+                      for t, (_, w, h) in zip(tables, nat.tables[p.tables])]
+            notes_leaf = Leaf("notes", TITLE, max(_wh(nrec)[1], notes_height(nat.notes, TITLE)), nrec)
+            packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region,
+                          keep_out(f), later_keep(f))
         if packed is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = []
         for k, spots in enumerate(packed):
             keep = keep_out(f) if k == 0 else later_keep(f)
-            pages.append([Placed(leaf.name, centred(leaf.record, b), b)
+            corner = {t.name for t in tables} | {"notes"}          # a table at its column's left
+            pages.append([Placed(leaf.name, (top_left if leaf.name in corner else centred)(leaf.record, b), b)
                           for leaf, b in laid(spread(spots, region, keep), region) if leaf.record is not None])
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")

@@ -44,7 +44,8 @@ class Skyline:
         self.W, self.H, self.kx, self.kd, self.gap = width, height, keep_x, keep_d, gap
         self.segs: list[tuple[float, float, float]] = [(0.0, width + gap, 0.0)]    # (x0, x1, depth)
         self.spots: list[Spot] = []
-        self.left = 0.0          # no drawing set left of this (the tables' column right of the drawings)
+        self.left = 0.0          # nothing set left of this (the tables' column right of the drawings)
+        self.top = 0.0           # … nor above this (the tables under the drawings)
 
     def depth(self, x: float, w: float) -> float:
         """How deep the drawings already reach over [x, x + w)."""
@@ -73,7 +74,7 @@ class Skyline:
             if x < min_x - 1e-9 or x + w > self.W + 1e-9:
                 continue
             x = max(0.0, x)
-            d = self.depth(x, w)
+            d = max(self.depth(x, w), self.top)
             if d + h > self.floor(x, w) + 1e-9 or not self.ordered(x, d):
                 continue
             key = (round(d, 6), -x if right else x)
@@ -126,48 +127,62 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
     def grids(children: list, page: Skyline) -> list[Grid]:
         return [g for g in (Grid(children, c) for c in range(1, len(children) + 1)) if extent(g)[0] <= page.W + 1e-9]
 
-    queue = [list(alts) for alts in units]
-    while queue:
-        alts = queue.pop(0)
-        spot = place(alts, pages[-1])
-        if spot is None and isinstance(alts[0], Grid) and pages[-1].spots:
-            # the hodographs: as many as the sheet holds here (two at least, two left at least for
-            # the next sheet), the rest there — not a sheet for a few small drawings of their own
-            kids = alts[0].children
-            for k in range(len(kids) - 2, 1, -1):
-                spot = place(grids(kids[:k], pages[-1]), pages[-1])
-                if spot is not None:
-                    queue.insert(0, grids(kids[k:], pages[-1]))
-                    break
-        if spot is None:
-            if not pages[-1].spots:
-                return None                   # larger than an empty sheet
+    def tables_on(pages: list[Skyline]) -> bool:
+        """The tables whole on one sheet: the last, else a new one; only where no sheet holds them
+        all, table after table over the sheets; the notes after them. False where a table is
+        larger than a sheet."""
+        if _put_tables(pages[-1], tables, notes):
+            return True
+        fresh = sheet(len(pages))
+        if pages[-1].spots and _put_tables(fresh, tables, notes):
+            pages.append(fresh)
+            return True
+        rest = list(tables)
+        while rest:
+            n = _put_tables(pages[-1], rest, None, partial=True)
+            if n == 0 and not pages[-1].spots:
+                return False
+            rest = rest[n:]
+            if rest:
+                pages.append(sheet(len(pages)))
+        if notes is not None and not _put_notes(pages[-1], notes):
             pages.append(sheet(len(pages)))
+            return _put_notes(pages[-1], notes)
+        return True
+
+    def run(queue: list, pages: list[Skyline]) -> list[Skyline] | None:
+        """The rest of the units, then the tables, set down from the last of ``pages``."""
+        while queue:
+            alts = queue.pop(0)
             spot = place(alts, pages[-1])
+            if spot is None and isinstance(alts[0], Grid) and pages[-1].spots:
+                # the hodographs: as many as the sheet holds here (two at least, two left at least),
+                # the rest where they then fit — where that saves a sheet
+                kids = alts[0].children
+                for k in range(len(kids) - 2, 1, -1):
+                    part = place(grids(kids[:k], pages[-1]), pages[-1])
+                    if part is not None:
+                        split_pages = copy.deepcopy(pages)
+                        split_pages[-1].put(part)
+                        split = run([grids(kids[k:], split_pages[-1])] + [list(q) for q in queue], split_pages)
+                        whole = run([alts] + [list(q) for q in queue], copy.deepcopy(pages) + [sheet(len(pages))])
+                        if whole is None or (split is not None and len(split) < len(whole)):
+                            return split
+                        return whole
             if spot is None:
-                return None
-        pages[-1].put(spot)
-    if tables or notes is not None:
-        # the tables whole on one sheet: this one, else a new one; only where no sheet holds them
-        # all, table after table over the sheets
-        if not _put_tables(pages[-1], tables, notes):
-            fresh = sheet(len(pages))
-            if pages[-1].spots and _put_tables(fresh, tables, notes):
-                pages.append(fresh)
-            else:
-                rest = list(tables)
-                while rest:
-                    n = _put_tables(pages[-1], rest, None, partial=True)
-                    if n == 0 and not pages[-1].spots:
-                        return None
-                    rest = rest[n:]
-                    if rest:
-                        pages.append(sheet(len(pages)))
-                if notes is not None and not _put_notes(pages[-1], notes):
-                    pages.append(sheet(len(pages)))
-                    if not _put_notes(pages[-1], notes):
-                        return None
-    return [p.spots for p in pages]
+                if not pages[-1].spots:
+                    return None                   # larger than an empty sheet
+                pages.append(sheet(len(pages)))
+                spot = place(alts, pages[-1])
+                if spot is None:
+                    return None
+            pages[-1].put(spot)
+        if (tables or notes is not None) and not tables_on(pages):
+            return None
+        return pages
+
+    out = run([list(alts) for alts in units], pages)
+    return None if out is None else [p.spots for p in out]
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:
@@ -188,12 +203,19 @@ def _put_tables(page: Skyline, tables: Sequence[Leaf], notes: Leaf | None, parti
     where the sheet holds it there, else at the top of a new column to the right of the last; then
     the notes over the title block. Whether all (and the notes) fit — the page unchanged where not —
     or, ``partial``, how many tables fit (those taken)."""
-    # the tables' column right of the sheet's drawings (LAYOUT.md: by the title block)
-    page.left = max([s.x + s.w + page.gap for s in page.spots if not s.fixed] + [0.0])
-    try:
-        return _tables_right(page, tables, notes, partial)
-    finally:
-        page.left = 0.0
+    # the tables' column right of the sheet's drawings (LAYOUT.md: by the title block), else the
+    # tables under every drawing (a row of hodographs over them): never beside a drawing's left
+    drawn = [s for s in page.spots if not s.fixed]
+    for left, top in ((max([s.x + s.w + page.gap for s in drawn] + [0.0]), 0.0),
+                      (0.0, max([s.d + s.h + page.gap for s in drawn] + [0.0]))):
+        page.left, page.top = left, top
+        try:
+            out = _tables_right(page, tables, notes, partial)
+        finally:
+            page.left = page.top = 0.0
+        if out or not drawn:
+            return out
+    return out
 
 
 def _tables_right(page: Skyline, tables: Sequence[Leaf], notes: Leaf | None, partial: bool):
