@@ -730,14 +730,24 @@ def _set(nat: Natural, f: Form) -> Plan:
     its sheet; of the tables' two letterings and the acceleration plan before or after the groups,
     the fewest sheets, then the tables whole on one, then the emptiest sheet fullest."""
     flowed = _set_flowed(nat, f).mu
+    # the scheme no larger than the groups cut from it (review 6 #4: an A2 set's scheme at 1:1 over
+    # two-thirds of its sheet, the groups and the kinematic plan at 1:2) — unless that leaves its
+    # sheet emptier (a scheme alone on its sheet either way)
+    capped = {**flowed, "scheme": max(flowed["scheme"], flowed["groups"])}
     # the drawings after the groups (the acceleration plan, the lever, the charts, the hodographs)
     # may start at their targets where that saves a sheet: the flow grew them on its spare sheets
     # (the six-bar's lever and plan twice their targets, each on a sheet of its own)
-    targets = {n: (nat.families[n].start(1.0) if n in ("acceleration", "lever", "charts", "hodographs") else m)
-               for n, m in flowed.items()}
+    later = ("acceleration", "lever", "charts", "hodographs")
+    floors: list[tuple[dict, bool]] = []
+    for cap in (True, False):
+        for t in (False, True):
+            fl = {n: (nat.families[n].start(1.0) if t and n in later else m) for n, m in (capped if cap else flowed).items()}
+            if all(fl != f0 for f0, _ in floors):
+                floors.append((fl, cap or fl["scheme"] >= fl["groups"] * (1 - 1e-9)))
     best = None
-    for floor, factor, plan_first in [(fl, fa, pf) for fl in (flowed, targets) for pf in (True, False)
-                                      for fa in (TABLES, 1.0)]:
+    for (floor, cap), factor, plan_first in [(fl, fa, pf) for fl in floors for pf in (True, False)
+                                             for fa in (TABLES, 1.0)]:
+        smallest = floor["groups"] if cap else 0.0
         def sheets_of(mu):
             """Which drawings stand on which sheet: the growth keeps it (a drawing grown until
             the next one moved on to another sheet left the scheme alone on a sheet 77 % empty)."""
@@ -748,10 +758,11 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         tables = {n for n, _, _ in nat.tables[factor]}
         grown = _levels(nat.families, lambda m: sheets_of(m) == where, FAMILIES,
-                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9, start=mu)
+                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9
+                        and (name != "scheme" or m >= smallest * (1 - 1e-9)), start=mu)
         mu = grown if grown is not None and sheets_of(grown) == where else mu
         # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
-        key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}),
+        key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
                -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first), f), 3))
         if best is None or key < best[0]:
             best = (key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
