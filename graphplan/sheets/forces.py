@@ -824,7 +824,33 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
-    return _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))), nat, dr
+    p = _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p)))
+    return _grown_hodographs(dr, nat, f, p), nat, dr
+
+
+HODOGRAPHS_ROOM = 1.6     # a one-sheet composition's hodographs grown into the room left, up to this over their cap
+
+
+def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """A one-sheet composition's hodographs grown, every other drawing as planned, while the sheet
+    still holds them — at most ``HODOGRAPHS_ROOM`` times their cap (review 7 #9: 16 × 48 mm slivers
+    whose numbers merge, in a column of a sheet left with a 600 × 60 mm empty band, review 6 #12)."""
+    fam = nat.families["hodographs"]
+    if p.shape == "set" or not fam.sizes:
+        return p
+    leaves = _placed_leaves(dr, nat, p.mu)
+    mu = p.mu["hodographs"]
+    limit = fam.rel(mu) * HODOGRAPHS_ROOM if not math.isfinite(getattr(fam, "cap", math.inf)) \
+        else fam.cap * HODOGRAPHS_ROOM
+    while True:
+        nxt = Family.finer(fam, mu)
+        if nxt is None or fam.rel(nxt) > limit + 1e-9:
+            break
+        trial = {**leaves, "hodographs": [fam.leaf(nxt, x.name, i) for i, x in enumerate(leaves["hodographs"])]}
+        if not _fits(nat, f, p, trial):
+            break
+        mu = nxt
+    return replace(p, mu={**p.mu, "hodographs": mu}) if mu != p.mu["hodographs"] else p
 
 
 MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
@@ -1023,6 +1049,22 @@ def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[
             "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu))}
 
 
+def _arranged(tree, region):
+    """``layout.arrange`` of the one-sheet tree, a flush stack of bands giving its spare height to
+    its last band (the acceleration plan, the charts and the tables' column spread over it) rather
+    than to a blank strip between the bands (review 6 #12: 600 × 60 mm across an A1 sheet)."""
+    if not isinstance(tree, Stack) or not tree.flush or len(tree.children) < 2:
+        yield from arrange(tree, region)
+        return
+    x0, y0, x1, y1 = region
+    top = y1
+    for child in tree.children[:-1]:
+        h = extent(child)[1]
+        yield from arrange(child, (x0, top - h, x1, top))
+        top -= h + tree.gap
+    yield from arrange(tree.children[-1], (x0, y0, x1, top))
+
+
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 2: the force analysis at the scene's force position, composed in zones (a set of sheets
     where a small format cannot hold it)."""
@@ -1045,7 +1087,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
+        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
