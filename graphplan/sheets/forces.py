@@ -534,13 +534,14 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     return Stack(rows, flush=True)
 
 
-def _levels(families: dict[str, Family], fits, order, largest=None) -> dict[str, float] | None:
+def _levels(families: dict[str, Family], fits, order, largest=None, start=None) -> dict[str, float] | None:
     """``compose.choose_levels`` where a family may offer smaller steps when its whole one does not
-    fit (``LeverFamily.steps``): the largest common size factor that fits, then the families in
-    ``order`` each grown by the first of its steps that still fits, round after round."""
+    fit (``LeverFamily.steps``): the largest common size factor that fits (or ``start``), then the
+    families in ``order`` each grown by the first of its steps that still fits, round after round."""
     from graphplan.sheets.compose import FACTORS
-    mu = next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
-               if fits(trial)), None)
+    mu = start if start is not None and fits(start) else \
+        next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
+              if fits(trial)), None)
     if mu is None:
         return None
     growing = [name for name in order if name in families]
@@ -571,6 +572,8 @@ class Plan:
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     hrow: int = 3                    # the row the hodographs end (``_tree``)
     packed: bool = False             # a set: the drawings' rows side by side where they fit (``_packed``)
+    where: tuple = ()                # a set: the drawings' names on each sheet (kept as drawings grow)
+    plan_first: bool = True          # a set: the acceleration plan before the groups, else after them
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -629,16 +632,17 @@ SET_SMALLEST = 1.0     # below A1 the drawings are not drawn smaller than their 
 # how much larger than its target a family of a set grows while the set needs no more sheets: the
 # scheme and the groups, where the crowding is (the coulisse's crank end at 1:4 on an A2 sheet 70 %
 # empty), as far as a sheet holds them; the others as before
-SET_LARGEST = {"scheme": 4.0, "groups": 4.0}
+SET_LARGEST = {"scheme": 4.0, "groups": 4.0, "charts": 2.0, "hodographs": 2.0}
+FLOWED_LARGEST = {"scheme": 4.0, "groups": 4.0}      # … as the rows' flow grew them (``_set_flowed``)
 
 
-def _set_largest(nat: Natural, name: str) -> float:
+def _set_largest(nat: Natural, name: str, largest: dict[str, float] = SET_LARGEST) -> float:
     """How large a family of a set grows (``SET_LARGEST``, else 1.25); flat hodographs to their
     cap, the area of a round one (the press's A3 set drew them 60 × 15 mm on a sheet half empty)."""
     fam = nat.families[name]
     if name == "hodographs" and math.isfinite(getattr(fam, "cap", math.inf)):
-        return max(SET_LARGEST.get(name, 1.25), fam.rel(1.0 / fam.cap))
-    return SET_LARGEST.get(name, 1.25)
+        return max(largest.get(name, 1.25), fam.rel(1.0 / fam.cap))
+    return largest.get(name, 1.25)
 
 
 def _set_rows(leaves: dict[str, list[Leaf]], tail: list[Leaf], width: float, packed: bool = False) -> list[list]:
@@ -670,43 +674,41 @@ def _packed(rows: list[list]) -> list[list]:
     return [[item for row in rows for item in row]]
 
 
-def _tables_by_title(page: list[Placed], tables: list[Leaf], notes: Leaf | None, f: Form) -> list[Placed] | None:
-    """A set's sheet that holds tables as LAYOUT.md composes a sheet: its tables in a column (two or
-    three where one is too tall) at the right above the title block, the notes (where they are on
-    this sheet) right over the title block, the sheet's other drawings flowed again in the room to
-    the column's left; None where they do not fit so (the sheet then keeps its tables in rows, as
-    flowed)."""
+def _set_pages(nat: Natural, f: Form, leaves: dict[str, list[Leaf]], factor: float, plan_first: bool = True):
+    """The set's sheets at these drawings' sizes (``forceset.pack``), or None where one is larger
+    than a sheet."""
+    from graphplan.sheets.compose import later_keep
+    from graphplan.sheets.forceset import pack, units_of
+    region = field_of(f)
+    tables = [Leaf(n, w, h) for n, w, h in nat.tables[factor]]
+    notes = Leaf("notes", TITLE, notes_height(nat.notes, TITLE))
+    return pack(units_of(leaves, region[2] - region[0], plan_first), tables, notes, region, keep_out(f),
+                later_keep(f))
+
+
+def _least_share(pages, f: Form) -> float:
+    """The least share of a sheet's field its drawings take (their boxes' areas), of a set's sheets."""
     x0, y0, x1, y1 = field_of(f)
-    foot = keep_out(f)[3]
-    names = {t.name for t in tables} | ({notes.name} if notes is not None else set())
-    rest = [it for it in page if it.name not in names]
-    notes_h = notes.h + GAP if notes is not None else 0.0
-    for parts in (1, 2, 3):
-        groups = split(tables, parts)
-        cw, ch = column_size(groups)
-        width = max(cw, notes.w if notes is not None else 0.0)
-        if ch + notes_h > y1 - foot + 1e-9 or width > x1 - x0 + 1e-9:
-            continue
-        out = []
-        if rest:
-            region = (x0, y0, x1 - width - GAP, y1)
-            if region[2] <= x0:
-                continue
-            laid = flow([[Leaf(it.name, record=it.record) for it in rest]], region, keep_out(f))
-            if laid is None or len(laid) != 1:
-                continue
-            out = [Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in laid[0]]
-        out += set_columns(groups, x1 - cw, y1)
-        if notes is not None:
-            nb = (x1 - width, foot, x1, foot + notes.h)
-            out.append(Placed(notes.name, top_left(notes.record, nb), nb))
-        return out
-    return None
+    return min(sum(s.w * s.h for s in page) / ((x1 - x0) * (y1 - y0)) for page in pages)
 
 
-def _set(nat: Natural, f: Form) -> Plan:
-    """A set: every family at least at its target size (or as large as a sheet holds), flowing over
-    the sheets in reading order; then grown while the set needs no more sheets."""
+def _where(pages) -> tuple | None:
+    """Which drawings stand on which sheet of a set (``forceset.pack``'s sheets), None for none."""
+    return None if pages is None else tuple(tuple(n for s in page for n in _names(s.node)) for page in pages)
+
+
+def _names(node) -> tuple[str, ...]:
+    """The drawings' names in a node of the set's composition."""
+    if isinstance(node, Leaf):
+        return (node.name,)
+    return tuple(n for c in node.children for n in _names(c))
+
+
+def _set_flowed(nat: Natural, f: Form) -> Plan:
+    """The scales a set's drawings took flowing in rows over the sheets (reading order, a row a
+    drawing or a group with its plan): every family at least at its target size, then grown
+    while the set needed no more sheets — the floor of ``_set``'s scales (a set packed onto fewer
+    sheets draws nothing smaller than this did)."""
     region = field_of(f)
     keep = keep_out(f)
     best = None
@@ -727,12 +729,61 @@ def _set(nat: Natural, f: Form) -> Plan:
             continue
         count = pages(mu)
         grown = _levels(nat.families, lambda m: pages(m) == count, FAMILIES,
-                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9)
+                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name, FLOWED_LARGEST) + 1e-9)
         mu = grown if grown is not None and pages(grown) == count else mu
         if best is None or count < best[0] and (not packed or _no_smaller(nat, mu, best[1].mu)):
             best = (count, Plan(mu, factor, "set", 1, 1, count, packed=packed))
     if best is None:
         raise GraphplanError(f"the force drawings do not fit a {f.name} sheet; choose a larger --format")
+    return best[1]
+
+
+def _set(nat: Natural, f: Form) -> Plan:
+    """A set: the drawings set down over the fewest sheets in reading order (``forceset``), at the
+    scales the rows' flow drew them (``_set_flowed``) — the acceleration plan, the lever, the charts
+    and the hodographs at their targets where that saves a sheet — then grown while each stays on
+    its sheet; of the tables' two letterings and the acceleration plan before or after the groups,
+    the fewest sheets, then the tables whole on one, then the emptiest sheet fullest."""
+    flowed = _set_flowed(nat, f).mu
+    # the scheme no larger than the groups cut from it (review 6 #4: an A2 set's scheme at 1:1 over
+    # two-thirds of its sheet, the groups and the kinematic plan at 1:2) — unless that leaves its
+    # sheet emptier (a scheme alone on its sheet either way)
+    capped = {**flowed, "scheme": max(flowed["scheme"], flowed["groups"])}
+    # the drawings after the groups (the acceleration plan, the lever, the charts, the hodographs)
+    # may start at their targets where that saves a sheet: the flow grew them on its spare sheets
+    # (the six-bar's lever and plan twice their targets, each on a sheet of its own)
+    later = ("acceleration", "lever", "charts", "hodographs")
+    floors: list[tuple[dict, bool]] = []
+    for cap in (True, False):
+        for t in (False, True):
+            fl = {n: (nat.families[n].start(1.0) if t and n in later else m) for n, m in (capped if cap else flowed).items()}
+            if all(fl != f0 for f0, _ in floors):
+                floors.append((fl, cap or fl["scheme"] >= fl["groups"] * (1 - 1e-9)))
+    best = None
+    for (floor, cap), factor, plan_first in [(fl, fa, pf) for fl in floors for pf in (True, False)
+                                             for fa in (TABLES, 1.0)]:
+        smallest = floor["groups"] if cap else 0.0
+        def sheets_of(mu):
+            """Which drawings stand on which sheet: the growth keeps it (a drawing grown until
+            the next one moved on to another sheet left the scheme alone on a sheet 77 % empty)."""
+            return _where(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first))
+        mu = dict(floor)
+        where = sheets_of(mu)
+        if where is None:
+            continue
+        tables = {n for n, _, _ in nat.tables[factor]}
+        grown = _levels(nat.families, lambda m: sheets_of(m) == where, FAMILIES,
+                        lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9
+                        and (name != "scheme" or m >= smallest * (1 - 1e-9)), start=mu)
+        mu = grown if grown is not None and sheets_of(grown) == where else mu
+        # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
+        key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
+               -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first), f), 3))
+        if best is None or key < best[0]:
+            best = (key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
+                              plan_first=plan_first))
+    if best is None:
+        return _set_flowed(nat, f)
     return best[1]
 
 
@@ -788,7 +839,33 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
-    return _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))), nat, dr
+    p = _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p)))
+    return _grown_hodographs(dr, nat, f, p), nat, dr
+
+
+HODOGRAPHS_ROOM = 1.6     # a one-sheet composition's hodographs grown into the room left, up to this over their cap
+
+
+def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """A one-sheet composition's hodographs grown, every other drawing as planned, while the sheet
+    still holds them — at most ``HODOGRAPHS_ROOM`` times their cap (review 7 #9: 16 × 48 mm slivers
+    whose numbers merge, in a column of a sheet left with a 600 × 60 mm empty band, review 6 #12)."""
+    fam = nat.families["hodographs"]
+    if p.shape == "set" or not fam.sizes:
+        return p
+    leaves = _placed_leaves(dr, nat, p.mu)
+    mu = p.mu["hodographs"]
+    limit = fam.rel(mu) * HODOGRAPHS_ROOM if not math.isfinite(getattr(fam, "cap", math.inf)) \
+        else fam.cap * HODOGRAPHS_ROOM
+    while True:
+        nxt = Family.finer(fam, mu)
+        if nxt is None or fam.rel(nxt) > limit + 1e-9:
+            break
+        trial = {**leaves, "hodographs": [fam.leaf(nxt, x.name, i) for i, x in enumerate(leaves["hodographs"])]}
+        if not _fits(nat, f, p, trial):
+            break
+        mu = nxt
+    return replace(p, mu={**p.mu, "hodographs": mu}) if mu != p.mu["hodographs"] else p
 
 
 MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
@@ -808,11 +885,8 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
     or needs no more sheets (a set)."""
     if p.shape == "set":
-        region = field_of(f)
-        rows = _set_rows(leaves, [Leaf(n, w, h) for n, w, h in nat.tables[p.tables]]
-                         + [Leaf("notes", TITLE, notes_height(nat.notes, TITLE))], region[2] - region[0], p.packed)
-        out = flow(rows, region, keep_out(f))
-        return out is not None and len(out) <= p.sheets
+        out = _where(_set_pages(nat, f, leaves, p.tables, p.plan_first))
+        return out is not None and (out == p.where if p.where else len(out) <= p.sheets)
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
     C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
@@ -871,6 +945,13 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
                                                                                     fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
+    plans = dict(plan_scales(mu))
+    if plans:                                      # a force plan at its own μF (``_grown_plans``)
+        fam = nat.families["forces"]
+        fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+        leaves["forces"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(plans[gp.label], i)))
+                            if gp.label in plans else leaf
+                            for i, (leaf, gp) in enumerate(zip(leaves["forces"], fp.groups))]
     return leaves
 
 
@@ -983,6 +1064,22 @@ def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[
             "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu))}
 
 
+def _arranged(tree, region):
+    """``layout.arrange`` of the one-sheet tree, a flush stack of bands giving its spare height to
+    its last band (the acceleration plan, the charts and the tables' column spread over it) rather
+    than to a blank strip between the bands (review 6 #12: 600 × 60 mm across an A1 sheet)."""
+    if not isinstance(tree, Stack) or not tree.flush or len(tree.children) < 2:
+        yield from arrange(tree, region)
+        return
+    x0, y0, x1, y1 = region
+    top = y1
+    for child in tree.children[:-1]:
+        h = extent(child)[1]
+        yield from arrange(child, (x0, top - h, x1, top))
+        top -= h + tree.gap
+    yield from arrange(tree.children[-1], (x0, y0, x1, top))
+
+
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 2: the force analysis at the scene's force position, composed in zones (a set of sheets
     where a small format cannot hold it)."""
@@ -1005,7 +1102,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in arrange(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
+        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
@@ -1017,18 +1114,32 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        notes_leaf = Leaf("notes", record=note_block(note_lines, TITLE))
-        rows = _set_rows(leaves, tables + [notes_leaf], region[2] - region[0], p.packed)
-        laid = flow(rows, region, keep_out(f))
-        if laid is None:
+        from graphplan.sheets.compose import later_keep
+        from graphplan.sheets.forceset import laid, pack, spread, units_of
+        nrec = note_block(note_lines, TITLE)
+        notes_leaf = Leaf("notes", record=nrec)
+        packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region, keep_out(f),
+                      later_keep(f))
+        if packed is None or len(packed) > p.sheets:
+            # each drawing in the cell the plan sized: the set's sheets as the plan counted them
+            planned = _placed_leaves(dr, nat, p.mu)
+            leaves = {fam: [Leaf(x.name, max(x.w, q.w), max(x.h, q.h), x.record) for x, q in zip(xs, planned[fam])]
+                      for fam, xs in leaves.items()}
+            if leaves["hodographs"]:
+                cw, ch = max(x.w for x in leaves["hodographs"]), max(x.h for x in leaves["hodographs"])
+                leaves["hodographs"] = [Leaf(x.name, cw, ch, x.record) for x in leaves["hodographs"]]
+            tables = [Leaf(t.name, max(t.w, w), max(t.h, h), t.record)
+                      for t, (_, w, h) in zip(tables, nat.tables[p.tables])]
+            notes_leaf = Leaf("notes", TITLE, max(_wh(nrec)[1], notes_height(nat.notes, TITLE)), nrec)
+            packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region,
+                          keep_out(f), later_keep(f))
+        if packed is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
-        pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
-                 for page in laid]
-        for k, page in enumerate(pages):          # each sheet's tables in a column by its title block
-            here = {it.name for it in page}
-            mine = [t for t in tables if t.name in here]
-            if mine:
-                laid_out = _tables_by_title(page, mine, notes_leaf if notes_leaf.name in here else None, f)
-                pages[k] = laid_out if laid_out is not None else page
+        pages = []
+        for k, spots in enumerate(packed):
+            keep = keep_out(f) if k == 0 else later_keep(f)
+            corner = {t.name for t in tables} | {"notes"}          # a table at its column's left
+            pages.append([Placed(leaf.name, (top_left if leaf.name in corner else centred)(leaf.record, b), b)
+                          for leaf, b in laid(spread(spots, region, keep), region) if leaf.record is not None])
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")
