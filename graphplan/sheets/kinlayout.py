@@ -614,15 +614,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         floor[fam] = fitted(fam, floor[fam])
     top = fitted("position", fams["position"].start(2.0))
 
-    def grown(fam: str, mu: float) -> float | None:
-        """The family's next larger scale: the series' next for the position plan; for the velocity
-        and acceleration plans the next of ``larger_choices`` (GOST 2.302's 1.5, 7.5 × 10^k, the lab's
-        own p_v a 5 mm longer) — the room a sheet has given out in steps, not by doubling."""
-        if fam == "position":
-            return finer(mu)
+    def grown(fam: str, mu: float) -> list[float]:
+        """The velocity or acceleration plans' larger scales, smallest drawing first: ``larger_choices``
+        (the series, GOST 2.302's 1.5, 7.5 × 10^k, the lab's own p_v a in 5-mm steps) — the room a
+        sheet has given out in steps, not by doubling."""
         from graphplan.graphic.scales import larger_choices
-        nxt = larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)
-        return nxt[0][0] if nxt else None
+        return [m for m, _ in larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)]
     best = None
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
     wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
@@ -655,12 +652,19 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 count = pages(mu)
                 if count is None:
                     continue
-                for fam in ("velocity", "acceleration", "position"):
-                    while True:
-                        bigger = grown(fam, mu[fam])
-                        if bigger is None or fams[fam].rel(bigger) > SET_LARGEST or pages({**mu, fam: bigger}) != count:
-                            break
-                        mu = {**mu, fam: bigger}
+                for fam in ("velocity", "acceleration"):
+                    # the largest of the steps that keeps the count: a step's cells may wrap a row onto
+                    # another sheet where a larger one's fewer columns do not (the six-bar's velocity
+                    # plans stopped at p_v a 55 mm, a 1.5-mm v_B read 30 % off, where 69 mm kept 6 sheets)
+                    for bigger in grown(fam, mu[fam]):
+                        if fams[fam].rel(bigger) <= SET_LARGEST and (got := pages({**mu, fam: bigger})) is not None \
+                                and got <= count:
+                            mu = {**mu, fam: bigger}
+                while True:
+                    bigger = finer(mu["position"])
+                    if fams["position"].rel(bigger) > SET_LARGEST or pages({**mu, "position": bigger}) != count:
+                        break
+                    mu = {**mu, "position": bigger}
                 _, orphan, fill, nw = laid(mu)
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
