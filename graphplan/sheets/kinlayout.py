@@ -422,10 +422,21 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         return grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP)))) if cells_ else []
     if P.w + GAP + D.w <= width + 1e-9:
         rows = [[P, D]] + grid(V)
-    elif after:                     # the plans first, the diagrams on a sheet of their own before the tables
-        return [[P]] + grid(V) + grid(A) + [[D], tail]
     else:
-        rows = [[P]] + grid(V) + [[D]]
+        # the first velocity plans beside the position plan where its row has room for them (the
+        # six-bar's A3 plan 245 mm wide left 134 mm of its 163-mm row empty): a grid as many
+        # columns as fit across and rows as fit its height, read on in the rows under it
+        first: list[list[Leaf | Grid]] = [[P]]
+        if V:
+            c = int((width - P.w + 1e-9) // (V[0].w + GAP))
+            r = int((P.h + GAP + 1e-9) // (V[0].h + GAP))
+            k = min(c * r, len(V)) if c >= 1 and r >= 1 else 0
+            if k:
+                c = min(c, k)
+                first, V = [[P, Grid(V[:k], c)]], V[k:]
+        if after:                   # the plans first, the diagrams on a sheet of their own before the tables
+            return first + grid(V) + grid(A) + [[D], tail]
+        rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
         rows[-1] = [c for c in rows[-1] if c.name] + tail
@@ -584,7 +595,11 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     def alone(size) -> bool:              # fits an empty sheet beside or over the title block
         return room_fits(room(f), *size)
     fams = nat.families
-    floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
+    # the plans just legible as the lab chooses (``just_legible``: p_v a, π a 40 mm at μ = v_A / 40,
+    # not only the series' next, twice the drawing: the six-bar's A3 velocity plans at 0.01 drew
+    # p_v a 69 mm, four cells a row, three rows missing a sheet by 7 mm — sheets 27 % filled), then
+    # grown in the steps ``larger_choices`` gives while the set needs no more sheets
+    floor = {fam: just_legible(fams[fam]) for fam in ("velocity", "acceleration")}
     def fitted(fam: str, mu: float) -> float:
         """The finest μ from ``mu`` on at which the family fits an empty sheet; a family no μ fits
         (a size that does not shrink: lettering alone, or no finite size) is refused in one line."""
@@ -598,6 +613,13 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     for fam in floor:                       # … unless a plan that large fits no sheet
         floor[fam] = fitted(fam, floor[fam])
     top = fitted("position", fams["position"].start(2.0))
+
+    def grown(fam: str, mu: float) -> list[float]:
+        """The velocity or acceleration plans' larger scales, smallest drawing first: ``larger_choices``
+        (the series, GOST 2.302's 1.5, 7.5 × 10^k, the lab's own p_v a in 5-mm steps) — the room a
+        sheet has given out in steps, not by doubling."""
+        from graphplan.graphic.scales import larger_choices
+        return [m for m, _ in larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)]
     best = None
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
     wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
@@ -630,12 +652,19 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 count = pages(mu)
                 if count is None:
                     continue
-                for fam in ("velocity", "acceleration", "position"):
-                    while True:
-                        bigger = finer(mu[fam])
-                        if fams[fam].rel(bigger) > SET_LARGEST or pages({**mu, fam: bigger}) != count:
-                            break
-                        mu = {**mu, fam: bigger}
+                for fam in ("velocity", "acceleration"):
+                    # the largest of the steps that keeps the count: a step's cells may wrap a row onto
+                    # another sheet where a larger one's fewer columns do not (the six-bar's velocity
+                    # plans stopped at p_v a 55 mm, a 1.5-mm v_B read 30 % off, where 69 mm kept 6 sheets)
+                    for bigger in grown(fam, mu[fam]):
+                        if fams[fam].rel(bigger) <= SET_LARGEST and (got := pages({**mu, fam: bigger})) is not None \
+                                and got <= count:
+                            mu = {**mu, fam: bigger}
+                while True:
+                    bigger = finer(mu["position"])
+                    if fams["position"].rel(bigger) > SET_LARGEST or pages({**mu, "position": bigger}) != count:
+                        break
+                    mu = {**mu, "position": bigger}
                 _, orphan, fill, nw = laid(mu)
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
