@@ -716,3 +716,98 @@ planets = 4
 module = 0.002
 omega = 120.0
 '''
+
+
+# Review 7 scene (a): a crank-rocker six-bar turning counter-clockwise whose rocker end drives a vertical
+# slider; 750 rpm motor line, δ = 0.06 (its energy–mass curve crowds points 11–12, 15–21 and 0/1/23).
+SIXBAR_REV7 = """# Review 7 scene (a): a crank-rocker six-bar — crank O1A turning counter-clockwise, coupler AB, rocker O2B;
+# the rocker's end B drives the slider D on a vertical guide through the rod BD (I(0-1) -> II(2-3) -> II(4-5)).
+title = "Шестиланковий важільний механізм з вертикальним повзуном"
+title_en = "Six-bar linkage with a vertical slider"
+designation = "ТММ.РВ7.00.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-42"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.22]
+
+[frame.guides]
+ram = { through = [0.135, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 110
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+points = { S2 = 0.5 }
+mass = 6
+inertia = 0.045
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "BD"
+number = 4
+joints = ["B", "D"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "ram"
+mass = 30
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+working_stroke = "to_min"
+accel = [3, 8]
+force_phi_deg = 100
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 2500
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.03, 0], [0.06, 1], [0.11, 1], [0.13, 0.3]]
+
+[dynamics]
+delta = 0.06
+efficiency = 0.88
+synchronous_rpm = 750
+"""

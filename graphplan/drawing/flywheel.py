@@ -425,13 +425,19 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     every = 1
     while n / every > 24:
         every *= 2
+    dots = [complex(float(f.I[j]), float(f.dT[j])) for j in range(n)]
+    middle = complex(float(np.mean(X)), float(np.mean(Y)))
     for j in range(n):
         rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
         if j % every == 0:
-            at = complex(float(f.I[j]), float(f.dT[j]))
-            asked = [LabelRequest(at, str(j), 1 + 1j, NUM, step=f"point {j}", sight=True)]
+            at = dots[j]
+            # every other division's point a rival (drawing.plans position_numbers): the number nearer
+            # its own point than any other, else on a leader to it that passes none; outside the curve first
+            rivals = tuple(z for z in dots if abs(z - at) > 1e-6)
+            toward = at - middle if abs(at - middle) > 1e-6 else 1 + 1j
+            asked = [LabelRequest(at, str(j), toward, NUM, step=f"point {j}", sight=True, across=False, rivals=rivals)]
             if j:                # point 0 lies on the I* axis, its own projection: its number never across it
-                asked.append(LabelRequest(at, str(j), 1 + 1j, NUM, step=f"point {j}"))
+                asked.append(LabelRequest(at, str(j), toward, NUM, step=f"point {j}", across=False, rivals=rivals))
             numbers.append(asked)
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
@@ -458,8 +464,39 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
               step="kl read")
     place_labels(rec, labels[:1], layer=LAYER)
     for asked in numbers:        # a point's number beside it with no line between them where it can be
-        place_first(rec, asked, layer=LAYER)      # (a number across a projection reads as that line's)
+        _point_number(rec, asked)                 # (a number across a projection reads as that line's)
     return place_labels(rec, labels[1:], layer=LAYER)
+
+
+BESIDE_MM = 4.3     # mm: a point's number without a leader no farther from its dot (a ring farther reads as nobody's)
+
+
+def _point_number(rec: Record, asked: list[LabelRequest]) -> None:
+    """An energy–mass point's number (drawing.labels ``place_first`` with ``rivals``): beside its dot,
+    within ``BESIDE_MM`` of it, by the first request that finds a free spot there (in sight first);
+    else on a leader from the dot that crosses no other leader and passes no other point (``_far``);
+    else wherever ``place_labels`` finds room."""
+    from graphplan.drawing import labels as lb
+    if lb._SKETCH[-1]:
+        return
+    ob = lb.obstacles(rec.items)
+    for req in asked:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
+        spot = lb._near(ob.near(req.at, lb.NEAR[-1] + reach), req, ink)
+        if spot is not None and lb._box_gap(spot[0], req.at) <= BESIDE_MM:
+            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
+            return
+    req = asked[-1]
+    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+    reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
+    spot = lb._far(ob.near(req.at, lb.FAR[-1] + reach), req, ink)
+    if spot is None:
+        place_labels(rec, asked[:1], layer=LAYER)
+        return
+    box, start, (a, b) = spot
+    rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=LAYER, step=req.step)
+    rec.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
 
 
 BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there
