@@ -404,12 +404,12 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     p = approximate_parts(doc)
     fw = doc["flywheel"]
     sym, val = constant_terms(fw["rotor_reduced"], fw["reducer_reduced"], lang)
-    lo = sig(p["dt_min"], lang)
+    hi, lo = (num(p[k], lang).replace("-", "−") for k in ("dt_max", "dt_min"))    # as Table 1's column prints them
     lo = f"({lo})" if p["dt_min"] < 0 else lo
     mean = "I^*_{м сер}" if uk else "I^*_{m mean}"
     symbols = f"(ΔT_{{max}} − ΔT_{{min}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
-            f"({sig(p['dt_max'], lang)}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
+            f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
             f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang)}")
 
