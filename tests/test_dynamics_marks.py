@@ -123,8 +123,9 @@ def _cross(a, b, c, d) -> bool:
 def test_each_point_number_reads_as_its_own_point(built, length):
     """On the band as the sheet draws it (ΔT(φ) and I*(φ) projected across): every number within
     4.3 mm of its own dot and nearer it than any other division's dot, or on a leader that starts at
-    its dot, passes no other dot and crosses no other leader (review 7: "0" 1.7 mm from point 1,
-    "1" over 0's leader, the leaders of 16 and 21 crossing, "15" 7.7 mm off)."""
+    its dot, passes no other dot and crosses no other leader nor the curve (review 7: "0" 1.7 mm from
+    point 1, "1" over 0's leader, the leaders of 16 and 21 crossing, "15" 7.7 mm off; on the A3 set
+    the leaders of 11–13 across the curve)."""
     from graphplan.sheets.dynamics import band
     f, lang = built
     witt = band(f, lang, min(length, f.L))[0]["wittenbauer"]
@@ -133,6 +134,7 @@ def test_each_point_number_reads_as_its_own_point(built, length):
     leaders = {p.step: (complex(*p.points[0]), complex(*p.points[1])) for p in witt.items
                if p.kind == "segment" and p.role == "label" and p.step.startswith("point ")}
     numbers = [p for p in witt.items if p.kind == "text" and p.step.startswith("point ")]
+    curve = next([complex(*q) for q in p.points] for p in witt.items if p.kind == "polyline" and p.role == "curve")
     assert len(numbers) == len(dots) == f.divisions
     for p in numbers:
         j = int(p.step.split()[1])
@@ -143,6 +145,7 @@ def test_each_point_number_reads_as_its_own_point(built, length):
             a, b = leaders[p.step]
             assert abs(a - mine) < 1.5 and _gap(box, b) < 1.5, j
             assert all(_off(z, a, b) >= RIVAL_CLEAR for z in others if abs(z - mine) >= RIVAL_CLEAR), j
+            assert not any(_cross(a, b, c, d) for c, d in zip(curve, curve[1:])), f"{j}'s leader across the curve"
         else:
             assert _gap(box, mine) <= 4.3 + 1e-9, (j, _gap(box, mine))
             assert all(_gap(box, z) > _gap(box, mine) for z in others), j

@@ -463,19 +463,50 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     rec.label((xd - 1.5, y_kl), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
     place_labels(rec, labels[:1], layer=LAYER)
+    curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
     for asked in numbers:        # a point's number beside it with no line between them where it can be
-        _point_number(rec, asked)                 # (a number across a projection reads as that line's)
+        _point_number(rec, asked, curve)          # (a number across a projection reads as that line's)
     return place_labels(rec, labels[1:], layer=LAYER)
 
 
 BESIDE_MM = 4.3     # mm: a point's number without a leader no farther from its dot (a ring farther reads as nobody's)
 
 
-def _point_number(rec: Record, asked: list[LabelRequest]) -> None:
+def _crosses(a: complex, b: complex, line: np.ndarray) -> bool:
+    """Whether the segment a–b crosses the polyline ``line`` (complex points; proper crossings)."""
+    p, q = line[:-1], line[1:]
+    def side(u, v, w):
+        return ((v - u).conjugate() * (w - u)).imag
+    return bool(np.any((side(a, b, p) * side(a, b, q) < 0) & (side(p, q, a) * side(p, q, b) < 0)))
+
+
+KEEP_WHOLE = ("I* axis", "ΔT axis")    # lines no number breaks (the projections may be broken)
+
+
+def _broken_beside(rec: Record, req: LabelRequest, ink) -> bool:
+    """The number set beside its dot within ``BESIDE_MM``, nearest it of all the dots, where only the
+    thin projections are in the way — broken under it, as a draftsman writes a number among his
+    construction lines (drawing.labels ``_breaking``); the axes are never broken. Whether it was."""
+    from graphplan.drawing import labels as lb
+    before = list(rec.items)
+    spot = lb._breaking(rec, req, ink)
+    whole = {id(p) for p in rec.items}
+    if spot is None or lb._box_gap(spot[0], req.at) > BESIDE_MM or any(
+            p.step in KEEP_WHOLE and id(p) not in whole for p in before):
+        rec.items[:] = before
+        return False
+    rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
+    return True
+
+
+def _point_number(rec: Record, asked: list[LabelRequest], curve: np.ndarray) -> None:
     """An energy–mass point's number (drawing.labels ``place_first`` with ``rivals``): beside its dot,
     within ``BESIDE_MM`` of it, by the first request that finds a free spot there (in sight first);
-    else on a leader from the dot that crosses no other leader and passes no other point (``_far``);
-    else wherever ``place_labels`` finds room."""
+    else on a leader from the dot that crosses no other leader and passes no other point (``_far``):
+    first one that runs along no projection (where it is not seen), ends nearer its dot than any
+    other and crosses no branch of the French ``curve`` (it would read as a point of that branch);
+    then one that may cross the curve; then one ending less near; else wherever ``place_labels``
+    finds room."""
     from graphplan.drawing import labels as lb
     if lb._SKETCH[-1]:
         return
@@ -490,7 +521,25 @@ def _point_number(rec: Record, asked: list[LabelRequest]) -> None:
     req = asked[-1]
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
-    spot = lb._far(ob.near(req.at, lb.FAR[-1] + reach), req, ink)
+    local = ob.near(req.at, lb.FAR[-1] + reach)
+
+    def ok(curve_too: bool, strict: bool):
+        def check(box) -> bool:  # the leader seen (not along a projection), off the curve, the number nearest its dot
+            a, b = lb._leader(req.at, box)
+            return (not lb._along_line(local, a, b) and not (curve_too and _crosses(a, b, curve))
+                    and (not strict or lb.led_owned(req, box, b, strict=True)))
+        return check
+    spot = None
+    for curve_too, strict in ((True, True), (False, True), (None, None), (True, False), (False, False)):
+        if curve_too is None:                    # beside it, the projections broken under it
+            if _broken_beside(rec, req, ink):
+                return
+            continue
+        spot = lb._far(local, req, ink, ok=ok(curve_too, strict))
+        if spot is not None:
+            break
+    if spot is None:
+        spot = lb._far(local, req, ink)
     if spot is None:
         place_labels(rec, asked[:1], layer=LAYER)
         return

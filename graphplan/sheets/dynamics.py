@@ -283,13 +283,15 @@ def _caption(rec: Record, title: str, above: bool = False, left: float | None = 
 
 
 CAPTION_APART = 8.0    # mm: ΔT(φ)'s caption from the energy–mass diagram's lettering on its line (|kl|)
+CAPTION_SHIFT = 12.0   # mm: … moved left at most this far past ΔT(φ)'s left side (or its own start), else under it
 
 
 def _caption_apart(energy: Record, witt: Record) -> Record:
     """ΔT(φ) with its caption clear of the energy–mass diagram's lettering that stands on the
     caption's line (|kl| = … lettered under l, left of the ΔT axis: 3 mm after the caption it read
-    as the caption's end): the caption moved left, as far as ΔT(φ)'s own left side allows, until
-    ``CAPTION_APART`` mm of paper lie between them; else under that lettering, a caption's gap below."""
+    as the caption's end): the caption moved left, at most ``CAPTION_SHIFT`` past ΔT(φ)'s left side
+    (or its own start, the wider), until ``CAPTION_APART`` mm of paper lie between them; else under
+    that lettering, a caption's gap below."""
     cap = next((p for p in energy.items if p.kind == "text" and p.step == "caption"), None)
     if cap is None:
         return energy
@@ -299,7 +301,7 @@ def _caption_apart(energy: Record, witt: Record) -> Record:
            and b[0] < cx1 + CAPTION_APART]
     if not row:
         return energy
-    left = _body(energy)[0]
+    left = min(_body(energy)[0], cx0) - CAPTION_SHIFT
     dx = min(b[0] for b in row) - CAPTION_APART - cx1           # ≤ 0: leftward
     if cx0 + dx >= left - 1e-9 and all(b[2] + CAPTION_APART <= cx0 + dx or b[0] - CAPTION_APART >= cx1 + dx
                                         for b in row):
