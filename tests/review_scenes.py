@@ -902,3 +902,5 @@ delta = 0.04
 efficiency = 0.88
 synchronous_rpm = 750
 '''
+
+SIXBAR_REV7 = SIXBAR7     # the same scene (its dynamics tests name it so)

@@ -105,7 +105,7 @@ WORDS = {
     "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; ΔT графічно і точно)",
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
-           "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер", "merk": "наближено (Мерцалов)",
+           "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер − Iрот·i²", "merk": "наближено (Мерцалов)",
            "turn": "φ — кут кривошипа від осі x; пов. — поворот від положення 0 у бік обертання кривошипа; "
                    "dI*/dφ — похідна за цим поворотом",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
@@ -115,7 +115,7 @@ WORDS = {
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
-           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean", "merk": "approximate (Merkalov)",
+           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Merkalov)",
            "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
                    "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
@@ -152,17 +152,19 @@ def dynamics_table(f, lang: str = "uk") -> str:
     exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
     none = "не потрібен" if lang == "uk" else "not needed"
     val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    approx = w["approx"] + ((" − I*ред" if lang == "uk" else " − I*red") if fw["reducer_reduced"] > 0 else "")
     motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
-            f"  {w['exact']:48} {exact}",
-            f"  {w['graph']:48} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"  {w['exact']:54} {exact}",
+            f"  {w['graph']:54} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-            f"  {w['approx']:48} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
-            f"  {w['merk']:48} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
-            f"  {w['motor_fl']:48} {motor}",
+            f"  {approx:54} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
+            f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), tangents_note(f, lang)) if line]
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang), reducer_note(f, lang),
+                                             tangents_note(f, lang), approximate_note(doc, lang, formula=True)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
@@ -322,3 +324,98 @@ def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ"
     without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
     return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
             f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+
+
+# -- the flywheel's arithmetic, every term printed ---------------------------------------------------
+
+def sig(v: float, lang: str, digits: int = 4) -> str:
+    """``digits`` significant figures with the trailing zeros kept (12,998 → "13,00" beside 12,65,
+    not "13"), the language's decimal sign and a true minus."""
+    from graphplan.util.words import fixed
+    v = float(v)
+    if v == 0 or not math.isfinite(v):
+        return num(v, lang)
+    rounded = float(f"{v:.{digits - 1}e}")        # the exponent after rounding (9.9996 → 10.00)
+    decimals = max(digits - 1 - math.floor(math.log10(abs(rounded))), 0)
+    return fixed(rounded, lang, decimals).replace("-", "−")
+
+
+def constant_terms(rotor: float, reducer: float, lang: str) -> tuple[str, str]:
+    """What the flywheel's J holds besides the flywheel, as a method subtracts it (markup): the
+    symbols, " − I_рот·i²" and " − I^*_ред" where the scene's reducer has inertia (seed 003's
+    I*_ред, its shafts reduced to the crank), and their values the same way (Table 3's I_рот·i²)."""
+    uk = lang == "uk"
+    sym = f" − {'I_рот' if uk else 'I_rotor'}·i²"
+    val = f"{NB}−{NB}{sig(rotor, lang)}"        # the arithmetic kept on one line (no-break spaces)
+    if reducer > 0:
+        sym += f" − {'I^*_ред' if uk else 'I^*_red'}"
+        val += f"{NB}−{NB}{sig(reducer, lang)}"
+    return sym, val
+
+
+def reducer_note(f, lang: str) -> str | None:
+    """The reducer's reduced inertia named where the notes subtract it (markup), or None."""
+    red = f.dyn.drive.reducer_reduced
+    if red <= 0:
+        return None
+    return (f"I^*_ред{NB}={NB}{sig(red, lang)}{NB}кг·м² — момент інерції редуктора, зведений до кривошипа" if lang == "uk"
+            else f"I^*_red{NB}={NB}{sig(red, lang)}{NB}kg·m²: the reducer's moment of inertia reduced to the crank")
+
+
+def _fl(v: float, lang: str) -> str:
+    """A flywheel's value (markup) ending its arithmetic: kg·m², or ≤ 0 and none needed."""
+    kgm2 = "кг·м²" if lang == "uk" else "kg·m²"
+    if v > 0:
+        return f"{sig(v, lang)}{NB}{kgm2}"
+    return (f"{sig(v, lang)}{NB}{kgm2} ≤ 0: маховик не потрібен" if lang == "uk" else
+            f"{sig(v, lang)}{NB}{kgm2} ≤ 0: no flywheel is needed")
+
+
+def wittenbauer_note(f, lang: str) -> str:
+    """The graphical flywheel's arithmetic (markup), every input printed: J = μ_T·|kl|/(ω_m²·δ)
+    with the numbers, then I_мах = J − I_рот·i² (− I*_ред; Table 3 prints I_рот·i²) (REFERENCE §9)."""
+    uk = lang == "uk"
+    sym, _ = constant_terms(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced, lang)
+    fl = "I_мах" if uk else "I_fl"
+    kgm2 = "кг·м²" if uk else "kg·m²"
+    wm, d = f.dyn.omega_mean, f.dyn.delta
+    # each "numbers = result unit" on one line (no-break spaces): a result never wrapped off its arithmetic
+    return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
+            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang)}")
+
+
+def approximate_parts(doc: dict) -> dict[str, float]:
+    """The approximate method's inputs as read (graphic.flywheel ``approximate_total``), from the
+    ``dynamics --json`` document: ΔT_max and ΔT_min of the graphical ΔT (Table 1's column), I*_m's
+    graphical mean over the divisions, ω_m, δ, and J = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean."""
+    dt = [p["graphical"]["energy"] for p in doc["positions"]]
+    mean = float(np.mean([p["graphical"]["inertia"] for p in doc["positions"]]))
+    wm, d = doc["omega_mean"], doc["delta"]
+    return {"dt_max": max(dt), "dt_min": min(dt), "i_mean": mean, "omega_mean": wm, "delta": d,
+            "total": (max(dt) - min(dt)) / (wm ** 2 * d) - mean}
+
+
+def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
+    """The approximate flywheel's arithmetic (markup), every input printed in the order of Table 2's
+    row, I_мах = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_м сер − I_рот·i² (− I*_ред): ΔT_max,min Table 1's
+    graphical ΔT, so the printed numbers give the printed value; ``formula``: the symbols first (the
+    terminal, which has no Table 2 row beside it)."""
+    uk = lang == "uk"
+    p = approximate_parts(doc)
+    fw = doc["flywheel"]
+    sym, val = constant_terms(fw["rotor_reduced"], fw["reducer_reduced"], lang)
+    hi, lo = (num(p[k], lang).replace("-", "−") for k in ("dt_max", "dt_min"))    # as Table 1's column prints them
+    lo = f"({lo})" if p["dt_min"] < 0 else lo
+    mean = "I^*_{м сер}" if uk else "I^*_{m mean}"
+    symbols = f"(ΔT_{{max}} − ΔT_{{min}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""
+    return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
+            f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
+            f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
+            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang)}")
+
+
+def error_text(v: float, lang: str) -> str:
+    """A method's percent error as Table 2 and the notes print it: two decimals, signed ("+1,31",
+    "−0,16"; "0,00" for the exact row), the terminal's to three."""
+    from graphplan.util.words import fixed
+    return fixed(v, lang, 2) if v == 0 else fixed(v, lang, 2, plus=True).replace("-", "−")

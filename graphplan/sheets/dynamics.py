@@ -17,12 +17,13 @@ from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
-from graphplan.graphic.record import Record, text_width
+from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (dynamics_json, motor_delta, motor_omega, motor_speed_note, not_needed, redrawn_note,
-                                       tangents_note)
+from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, motor_delta, motor_omega,
+                                       motor_speed_note, not_needed, redrawn_note, reducer_note, sig, tangents_note,
+                                       wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
-                                      note_block, notes_height)
+                                      note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
@@ -55,13 +56,13 @@ WORDS = {
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
            "turn": "dI^*_м/dφ — похідна за цим φ",
-           "none": "Маховик не потрібен: ротор і редуктор (I_рот·i² + I_ред = {c} кг·м²) уже дають δ ≤ {d} "
+           "none": "Маховик не потрібен: ротор і редуктор (I_рот·i² + I^*_ред = {c} кг·м²) уже дають δ ≤ {d} "
                    "(потрібно J = {j} кг·м²), тому I_мах = 0",
            "weak": "Двигун {name}: P_н = {p} кВт менша за потрібну за правилом P = M^*_{{с max}}·ω_1/η = {need} кВт",
            "weak_cell": "{p} (< {need})", "mark": "* — ",
            "open": "незамкнення |ω(2π) − ω(0)|/ω_m = {c}",
            "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
-           "not": "не потрібен", "negative": "{v} кг·м² ≤ 0: маховик не потрібен",
+           "not": "не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
            "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
            "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
@@ -80,13 +81,13 @@ WORDS = {
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
-           "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I_red = {c} kg·m²) already keep "
+           "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I^*_red = {c} kg·m²) already keep "
                    "δ ≤ {d} (J = {j} kg·m² is needed), so I_fl = 0",
            "weak": "Motor {name}: P_n = {p} kW is below the power rule P = M^*_{{c max}}·ω_1/η = {need} kW",
            "weak_cell": "{p} (< {need})", "mark": "* — ",
            "open": "closure |ω(2π) − ω(0)|/ω_m = {c}",
            "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler)",
-           "not": "not needed", "negative": "{v} kg·m² ≤ 0: no flywheel is needed",
+           "not": "not needed",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
@@ -133,19 +134,28 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     fw = doc["flywheel"]
 
     def pct(v: float | None) -> str:          # over the lab's 5 %: marked, the notes say why
-        return "—" if v is None else fmt(v, lang, 3) + ("*" if abs(v) > LAB_LIMIT else "")
+        return "—" if v is None else error_text(v, lang) + ("*" if abs(v) > LAB_LIMIT else "")
     def value(v: float) -> str:               # a method's J no larger than rotor and reducer: none needed
-        return fmt(v, lang) if v > 0 else w["not"]
-    exact = (fmt(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
-    motor = (fmt(fw["motor"], lang) if fw["motor"] > 0 else
+        return sig(v, lang) if v > 0 else w["not"]
+    exact = (sig(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
+    motor = (sig(fw["motor"], lang) if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
+    # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic)
+    approx = w["approx"] + (" − I_рот·i²" if lang == "uk" else " − I_rotor·i²") + (
+        (" − I^*_ред" if lang == "uk" else " − I^*_red") if fw["reducer_reduced"] > 0 else "")
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
-            [w["exact"], exact, "0" if fw["exact"] > 0 else "—"],
+            [w["exact"], exact, error_text(0.0, lang) if fw["exact"] > 0 else "—"],
             [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
-            [w["approx"], value(fw["approximate"]), pct(fw["approximate_error_pct"])],
+            [approx, value(fw["approximate"]), pct(fw["approximate_error_pct"])],
             [w["merk"], value(fw["merkalov"]), pct(fw["merkalov_error_pct"])],
             [w["motor_fl"], motor, ""]]
-    return table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
+    rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
+    # under the table, the approximate row's arithmetic: its printed numbers give its printed value
+    x0, y0, x1, _ = rec.bounds()
+    for k, part in enumerate(wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)):
+        rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                  step="approximate arithmetic")
+    return rec
 
 
 def motor_table(doc: dict, lang: str) -> Record:
@@ -192,7 +202,6 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
     mm = "мм" if uk else "mm"
     s = doc["scales"]
     fw = doc["flywheel"]
-    rot, red, fl = ("I_рот", "I_ред", "I_мах") if uk else ("I_rotor", "I_red", "I_fl")
     J, Nm, kgm2 = ("Дж", "Н·м", "кг·м²") if uk else ("J", "N·m", "kg·m²")
     lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang),
                                n=num(doc["omega_mean"] * 30.0 / math.pi, lang), motor=motor_speed_note(doc, lang)),
@@ -204,11 +213,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
-             f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(s['mu_A'], lang)}·{num(f.kl, lang)}/({num(doc['omega_mean'], lang)}²·"
-             f"{num(doc['delta'], lang)}) = {num(f.total, lang)} {kgm2}; {fl} = J − {rot}·i² − {red} = "
-             + (f"{num(f.flywheel, lang)} {kgm2}" if f.flywheel > 0 else
-                w["negative"].format(v=num(f.total - f.dyn.constant, lang))),
-             *[line for line in (tangents_note(f, lang),) if line],
+             wittenbauer_note(f, lang),
+             *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
              f"{phi_convention(doc['start_phi_deg'], lang)}; {w['turn']}"]
@@ -219,7 +225,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
     for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
                      ("merkalov_error_pct", "why_merk")):
         if fw[key] is not None and abs(fw[key]) > LAB_LIMIT:
-            said.append(w["mark"] + w[why].format(e=fmt(fw[key], lang, 3), n=doc["divisions"],
+            said.append(w["mark"] + w[why].format(e=error_text(fw[key], lang), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     if short is not None:
@@ -276,6 +282,35 @@ def _caption(rec: Record, title: str, above: bool = False, left: float | None = 
     return out
 
 
+CAPTION_APART = 8.0    # mm: ΔT(φ)'s caption from the energy–mass diagram's lettering on its line (|kl|)
+CAPTION_SHIFT = 12.0   # mm: … moved left at most this far past ΔT(φ)'s left side (or its own start), else under it
+
+
+def _caption_apart(energy: Record, witt: Record) -> Record:
+    """ΔT(φ) with its caption clear of the energy–mass diagram's lettering that stands on the
+    caption's line (|kl| = … lettered under l, left of the ΔT axis: 3 mm after the caption it read
+    as the caption's end): the caption moved left, at most ``CAPTION_SHIFT`` past ΔT(φ)'s left side
+    (or its own start, the wider), until ``CAPTION_APART`` mm of paper lie between them; else under
+    that lettering, a caption's gap below."""
+    cap = next((p for p in energy.items if p.kind == "text" and p.step == "caption"), None)
+    if cap is None:
+        return energy
+    cx0, cy0, cx1, cy1 = cap.ink()
+    row = [b for b in (p.ink() for p in witt.items if p.kind == "text")
+           if b[1] < cy1 + CAPTION_GAP and b[3] > cy0 - CAPTION_GAP and b[2] > cx0 - CAPTION_APART
+           and b[0] < cx1 + CAPTION_APART]
+    if not row:
+        return energy
+    left = min(_body(energy)[0], cx0) - CAPTION_SHIFT
+    dx = min(b[0] for b in row) - CAPTION_APART - cx1           # ≤ 0: leftward
+    if cx0 + dx >= left - 1e-9 and all(b[2] + CAPTION_APART <= cx0 + dx or b[0] - CAPTION_APART >= cx1 + dx
+                                        for b in row):
+        moved = cap.moved(dx, 0.0)
+    else:
+        moved = cap.moved(0.0, min(b[1] for b in row) - CAPTION_GAP - cy1)
+    return Record(energy.title, [moved if p is cap else p for p in energy.items], dict(energy.scales))
+
+
 def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict[str, tuple]]:
     """The textbook's elimination of φ (REFERENCE §9): ΔT(φ) to the left of the energy–mass
     diagram, its ΔT zero line the diagram's I* axis (the same μ_T), I*(φ) turned by 90° under it,
@@ -305,6 +340,7 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
         if (wx0 >= side - 1e-9 and wy0 >= foot - 1e-9) or attempt == 5:
             break
         side, foot = min(side, wx0 - 1.0), min(foot, wy0 - 1.0)
+    energy = _caption_apart(energy, witt)
     ex0, ey0, _, ey1 = energy.bounds()
     dy = foot - 3.0 - turned.bounds()[3]
     inertia = _caption(inertia_turned(f, lang, length, foot - dy), w["inertia"]).moved(0.0, dy)
