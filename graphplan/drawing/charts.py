@@ -615,11 +615,15 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
             moved = _corner(ink, det, (c, r), field)
         if moved is None:
             continue
-        inside, shared = near, det_shared
-        rec.scales["mu_R detail"] = detail.mu
+        n0 = len(rec.items)
         rec.circle((c.real, c.imag), r, role="construction", layer="diagrams", step=f"{step}: detail")
         rec.extend(moved)
-        _detail_mark(rec, c, r, f"{step}: detail mark")
+        from graphplan.drawing.labels import collisions
+        if not _detail_mark(rec, c, r, f"{step}: detail mark") or collisions(rec):
+            del rec.items[n0:]          # its mark or its numbers would touch a line: the next size, or none
+            continue                    # (a generated four-bar's "I" stood on the jump's dashed line)
+        inside, shared = near, det_shared
+        rec.scales["mu_R detail"] = detail.mu
         break
     shared = _numbered(rec, [(p, w / mu_r) for p, w in points if (p, w) not in inside], step) + shared
     y = rec.bounds()[1] - 6.0
@@ -641,11 +645,12 @@ SHELF_LEAD = 4.0       # mm: the mark's leader from the ring to its shelf (GOST 
 SHELF_MM = 4.5         # mm: the shelf the mark's letter stands on
 
 
-def _detail_mark(rec: Record, c: complex, r: float, step: str) -> None:
+def _detail_mark(rec: Record, c: complex, r: float, step: str) -> bool:
     """The ringed spot's mark as GOST 2.305 draws an extension element: a thin leader from the
     ring out to a shelf, the letter "I" standing on the shelf — not a bare stroke by the ring (the
     sieve's "I" read as a dash of the jump line). The first of the four diagonals (up-left first)
-    whose leader, shelf and letter keep clear of the hodograph's lines, points and lettering."""
+    whose leader, shelf and letter keep clear of the hodograph's lines, points and lettering; False
+    (nothing drawn) where none does."""
     from shapely.geometry import LineString, box
     prim = Primitive("text", ((0.0, 0.0),), text=DETAIL_NAME, size=3.5)
     i0, j0, i1, j1 = prim.ink()
@@ -653,6 +658,7 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str) -> None:
     ink = _ink_of(rec).buffer(-DETAIL_CLEAR + 0.6)
     texts = [box(*q.ink()).buffer(0.8) for q in rec.items if q.kind == "text"]
     best = None
+    tried = []
     rx0, ry0, rx1, ry1 = rec.bounds()
     field = box(rx0, ry0, rx1, ry1)
     for d in (-1 + 1j, 1 + 1j, -1 - 1j, 1 - 1j):
@@ -667,10 +673,17 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str) -> None:
         if not hit:
             best = (a, b, e, x)
             break
-        best = best or (a, b, e, x)
-    a, b, e, x = best
-    rec.add("polyline", [(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)], role="label", layer="labels", step=step)
-    rec.label((x, b.imag + 0.8), DETAIL_NAME, size=3.5, step=step)
+        tried.append((a, b, e, x))
+    from graphplan.drawing.labels import collisions
+    for a, b, e, x in ([best] if best is not None else tried):   # else the first whose letter touches nothing
+        n0 = len(rec.items)
+        rec.add("polyline", [(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)], role="label", layer="labels",
+                step=step)
+        rec.label((x, b.imag + 0.8), DETAIL_NAME, size=3.5, step=step)
+        if best is not None or not collisions(rec):
+            return True
+        del rec.items[n0:]
+    return False
 DETAIL_GAP = 6.0       # mm between a flat hodograph's field and the detail drawn beside it
 DETAIL_CLEAR = 2.0     # mm between a detail and the hodograph's lines, points and ring
 
