@@ -508,7 +508,24 @@ def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None
               size=NUM, layer=LAYER, step="axes I*_m")
 
 
+_WITT: dict = {}
+
+
 def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, float] | None = None) -> Record:
+    """``energy_mass`` once per flywheel, language, projections and sketching (a copy each time): a
+    sheet's composition asks for the same diagram many times, and its numbers' leaders are the
+    costly part (a moment-loaded four-bar's dynamics took 41 s, 48 drawings of one diagram)."""
+    from graphplan.drawing import labels as lb
+    key = (id(f), lang, None if projections is None else tuple(round(v, 9) for v in projections), lb._SKETCH[-1])
+    hit = _WITT.get(key)
+    if hit is None or hit[0] is not f:
+        if len(_WITT) > 64:
+            _WITT.clear()
+        hit = _WITT[key] = (f, energy_mass(f, lang, projections))
+    return hit[1].moved(0.0, 0.0)
+
+
+def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] | None = None) -> Record:
     """ΔT over I*_m: the points of the divisions numbered, the French curve, the tangents at
     ψ_max and ψ_min cutting the ΔT axis at k and l, and |kl|. With ``projections`` (x of the
     left side, y of the foot) each point i is where the horizontal projection of ΔT(φ)'s point i

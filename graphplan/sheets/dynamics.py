@@ -319,8 +319,10 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
     the diagram's point of that division. Records in one frame (the ΔT axis of the energy–mass
     diagram at x = 0, its I* axis at y = 0), captioned, and the boxes they own (touching where the
     projections cross from one to the other)."""
+    from graphplan.drawing.labels import sketched
     w = WORDS[lang]
-    probe = wittenbauer_record(f, lang, projections=(0.0, 0.0))
+    with sketched():                                   # its lines' extent: the numbers are placed once, below
+        probe = wittenbauer_record(f, lang, projections=(0.0, 0.0))
     px0, py0, _, _ = probe.bounds()
     side = px0 - 3.0                                   # the energy–mass diagram's left side …
     foot = py0 - 2.0                                   # … and its foot
