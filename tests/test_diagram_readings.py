@@ -11,6 +11,7 @@ import pytest
 
 import review_scenes
 from conftest import example, scene_study
+from test_sheets_composition import printed  # a cell printing a value to its own decimals
 from graphplan.drawing.diagrams import draw
 from graphplan.graphic.diagrams import chord_diagrams, judged_pct
 from graphplan.report.diagrams import sheet_notes
@@ -105,20 +106,6 @@ def test_a_rocker_is_drawn_with_the_tables_sign(rocker):
     text = " ".join(notes_lines(rocker, plans, d, "uk", 0.5))
     assert "φ_{3} (кут ланки O2B від положення 0), ω_{3}, ε_{3}" in text
     assert "s, v, a" not in text and "−s" not in text
-
-
-def printed(value: float, cells) -> bool:
-    """Whether a cell prints ``value`` to the cell's own decimals (the tables write one count of
-    decimals a column: 4.3 as "4,30"); a bare "0" is the number zero."""
-    for c in cells:
-        m = re.fullmatch(r"[−-]?\d+(?:[.,](\d+))?\*?", c)
-        if not m:
-            continue
-        v = float(c.rstrip("*").replace("−", "-").replace(",", "."))
-        tol = 1e-12 if c == "0" else 0.5 * 10.0 ** -len(m.group(1) or "") + 1e-9
-        if abs(v - value) <= tol:
-            return True
-    return False
 
 
 def test_the_terminal_judges_a_reading_near_a_zero_as_the_sheet_does():

@@ -13,146 +13,15 @@ import pytest
 from shapely.geometry import LineString, Point, Polygon, box
 
 from conftest import scene_study
+from review_scenes import SIXBAR6, SIXBAR7
 from graphplan.drawing.plans import joints_at, position_record
 from graphplan.graphic.plans import build_plans
 
 # review 6: a crank-rocker whose coupler is a plate ABC; C drives the rod CD to a slider on a 15° guide
-PLATE = '''title = "Шестиланковий механізм з шатунною точкою і повзуном на похилій напрямній"
-title_en = "Six-bar linkage: coupler point driving a slider on an inclined guide"
-designation = "TMM.RV6.00.000"
-lang = "en"
-[frame.points]
-O1 = [0, 0]
-O2 = [0.24, 0]
-[frame.guides]
-g = { through = [0.35, 0.17], angle_deg = 15, title_uk = "повзуна", title_en = "of the slider" }
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.06
-rpm = 110
-direction = "cw"
-points = { S1 = 0.5 }
-mass = 2.5
-inertia = 0.002
-[[link]]
-name = "ABC"
-number = 2
-joints = ["A", "B"]
-length = 0.22
-shape = { C = [0.12, 0.09] }
-points = { S2 = [0.113, 0.03] }
-mass = 5
-inertia = 0.03
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.18
-points = { S3 = 0.5 }
-mass = 4
-inertia = 0.012
-[[link]]
-name = "CD"
-number = 4
-joints = ["C", "D"]
-length = 0.32
-points = { S4 = 0.5 }
-mass = 3.5
-inertia = 0.03
-[[link]]
-name = "D"
-number = 5
-joints = ["D"]
-slides_on = "g"
-mass = 18
-[branch]
-B = 1
-D = 1
-[positions]
-count = 12
-start = "working"
-accel = [3, 8]
-force_phi_deg = 110   # on the working stroke under the full load (s_D ≈ 0.06 m)
-[loads]
-g = 9.81
-[[force]]
-point = "D"
-magnitude = 1200
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.03, 0], [0.04, 1], [0.10, 1], [0.11, 0]]
-'''
+PLATE = SIXBAR6
 
 # review 7: a ccw crank-rocker; the rocker's end B drives a slider D on a vertical guide
-VERTICAL = '''title = "Шестиланковий важільний механізм з вертикальним повзуном"
-title_en = "Six-bar linkage with a vertical slider"
-designation = "ТММ.РВ7.00.000"
-lang = "uk"
-[frame.points]
-O1 = [0, 0]
-O2 = [0.30, 0.22]
-[frame.guides]
-ram = { through = [0.135, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.07
-rpm = 110
-direction = "ccw"
-points = { S1 = 0.5 }
-mass = 2.5
-inertia = 0.003
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.28
-points = { S2 = 0.5 }
-mass = 6
-inertia = 0.045
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.20
-points = { S3 = 0.5 }
-mass = 5
-inertia = 0.03
-[[link]]
-name = "BD"
-number = 4
-joints = ["B", "D"]
-length = 0.22
-points = { S4 = 0.5 }
-mass = 4
-inertia = 0.025
-[[link]]
-name = "D"
-number = 5
-joints = ["D"]
-slides_on = "ram"
-mass = 30
-[branch]
-B = 1
-D = 1
-[positions]
-count = 12
-start = "max"
-working_stroke = "to_min"
-accel = [3, 8]
-force_phi_deg = 100
-[loads]
-g = 9.81
-[[force]]
-point = "D"
-magnitude = 2500
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.03, 0], [0.06, 1], [0.11, 1], [0.13, 0.3]]
-'''
+VERTICAL = SIXBAR7
 
 # the lead's compressor: an offset crank-slider on a guide inclined at 150°
 COMPRESSOR = '''title = "Кривошипно-повзунний механізм компресора з похилою напрямною"
