@@ -313,16 +313,17 @@ class Gears(View):
         return _page(mesh.record if mesh is not None else vel.record)
 
 
-def gears(scene, precision: float = 0.5, lang: str = "uk") -> Gears:
+def gears(scene, precision: float = 0.5, lang: str = "uk", fmt: str = "A1") -> Gears:
     """A gear scene (a path to a file with [gears] and/or [planetary]) solved by the closed forms and
-    constructed graphically, read with a ruler of ``precision`` mm (docs/gears.md)."""
+    constructed graphically at the scales of the gear sheet on ``fmt``, read with a ruler of
+    ``precision`` mm (docs/gears.md)."""
     from graphplan.exact.gears import solve
     from graphplan.model.gears import load
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import construct_on
     g = load(scene)
     sol = solve(g)
-    mesh, vel, _ = construct_on(sol, form("A1"), precision, lang)     # the A1 sheet's readings
+    mesh, vel, _ = construct_on(sol, form(fmt), precision, lang)     # that sheet's readings
     return Gears((g, sol, mesh, vel), lang)
 
 

@@ -112,3 +112,21 @@ def test_the_set_draws_the_meshing_at_the_largest_band_scale_that_fits_its_first
     for g in sorted(v for v in ENLARGE + REDUCE if v > k + 1e-9 and 2.25 * m * v <= 60.0):
         w, h = size(meshing_leaf(construct_mesh(pair, 0.5, lang, module_mm=m * g), lang).bounds())
         assert not ((w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0)), g
+
+
+@pytest.mark.parametrize("fmt", ["A1", "A3"])
+def test_the_terminal_reads_the_sheet_of_its_format(fmt, capsys):
+    """`graphplan gears --format F` prints the contact ratio measured off the gear sheet on F: the
+    graphical εα of the JSON, in the table's figures, is lettered in that sheet's (or set's) Table 1 —
+    an A3 set's meshing is drawn at a smaller scale than the A1's, so its reading differs."""
+    import json
+
+    from graphplan.cli.main import main
+    from graphplan.report.gears import contact_ratio_text
+    assert main(["gears", str(ROOT / "examples" / "gears.toml"), "--format", fmt, "--json"]) == 0
+    c = json.loads(capsys.readouterr().out)["pair"]["contact_ratio"]
+    _, graphical, _ = contact_ratio_text(c["exact"], c["graphical"], "uk")
+    s = sheet("gears", fmt)
+    texts = {t.text for page in (s.pages or [s]) for p in page.placed for t in p.record.items
+             if getattr(t, "text", None)}
+    assert any(graphical in t for t in texts), (graphical, sorted(t for t in texts if t[:1].isdigit())[:40])

@@ -24,6 +24,9 @@ def register(sub) -> None:
                    help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
     p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
     p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (meshing, sliding, planetary .svg)")
+    p.add_argument("--format", default="A1", metavar="A1|A2|A3",
+                   help="the sheet whose scales the construction takes (default A1: the numbers are the gear "
+                        "sheet's; A2/A3: the set's)")
     lang_arg(p)
     p.set_defaults(handler=cmd_gears)
 
@@ -41,7 +44,7 @@ def cmd_gears(args: argparse.Namespace) -> int:
     gears = load(args.scene)
     lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
     sol = solve(gears)
-    mesh, vel, _ = construct_on(sol, form("A1"), args.precision, lang)    # the A1 sheet's readings
+    mesh, vel, _ = construct_on(sol, form(args.format), args.precision, lang)    # that sheet's readings
     if args.svg:
         write_svg(mesh, vel, args.svg)
     doc = gears_json(sol, mesh, vel, args.scene)
