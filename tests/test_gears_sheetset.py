@@ -130,3 +130,21 @@ def test_the_terminal_reads_the_sheet_of_its_format(fmt, capsys):
     texts = {t.text for page in (s.pages or [s]) for p in page.placed for t in p.record.items
              if getattr(t, "text", None)}
     assert any(graphical in t for t in texts), (graphical, sorted(t for t in texts if t[:1].isdigit())[:40])
+
+
+def test_table_1_prints_the_pairs_constants_as_the_terminal_does(capsys):
+    """αw, aw, a, y, Δy, p and pb in Table 1 are the terminal's figures (rev7 #14, rev8 #12: the sheet
+    printed y = 0,72366 and Δy = 0,076345 where `graphplan gears` prints 0,7237 and 0,07634)."""
+    import re
+
+    from graphplan.cli.main import main
+    assert main(["gears", str(ROOT / "examples" / "gears.toml")]) == 0
+    geo = next(line for line in capsys.readouterr().out.splitlines() if line.startswith("αw"))
+    said = {k: v.rstrip(",") for k, v in re.findall(r"(\w+|Δy) = ([−\d,]+)", geo)}
+    s = sheet("gears", "A1")
+    t1 = next(p for p in s.placed if p.name == "geometry")
+    texts = [t.text for t in t1.record.items if getattr(t, "text", None)]
+    for sym, key in (("α_w, °", "αw"), ("a_w, мм", "aw"), ("a, мм", "a"), ("y", "y"), ("Δy", "Δy"),
+                     ("p, мм", "p"), ("p_b, мм", "pb")):
+        i = texts.index(sym)
+        assert texts[i + 1] == said[key], (sym, texts[i + 1], said[key])

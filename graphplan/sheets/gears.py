@@ -125,10 +125,11 @@ def geometry_table(doc: dict, lang: str) -> Record:
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
     rows.append(["ε_α", te, tg, (_pct(e, lang) + ("!" if c["outside_bound"] else "")) if tg else "", "", "", ""])
-    for sym, v in (("α_w, °", p["alpha_w_deg"]), (f"a_w, {w['mm']}", p["a_w_m"] * 1000),
-                   (f"a, {w['mm']}", p["a_m"] * 1000), ("y", p["y"]), ("Δy", p["delta_y"]),
-                   (f"p, {w['mm']}", p["pitch_m"] * 1000), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000)):
-        rows.append([sym, _n(v, lang, 5), "", "", "", "", ""])
+    # the terminal's figures (report.gears.pair_lines): αw to six, the rest to four significant figures
+    for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, 4),
+                      (f"a, {w['mm']}", p["a_m"] * 1000, 4), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
+                      (f"p, {w['mm']}", p["pitch_m"] * 1000, 4), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, 4)):
+        rows.append([sym, _n(v, lang, k), "", "", "", "", ""])
     return table(rows, [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
 
 
