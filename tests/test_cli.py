@@ -57,11 +57,12 @@ def test_contract_example_numbers(capsys):
 def test_phi_option_and_table(capsys):
     code, out, _ = run(capsys, "analyze", str(ROOT / "examples" / "shaper.toml"), "--phi", "30", "390")
     assert code == 0      # Ukrainian by default: the lab's pair letters, the decimal comma
-    assert "I(0-1) → II(2-3) → II(4-5)" in out and "ВПВ" in out and "ВВП" in out and "обчислено crank = 0,20826" in out
+    assert "I(0-1) → II(2-3) → II(4-5)" in out and "ВПВ" in out and "ВВП" in out and "обчислено довжина кривошипа, м = 0,20826" in out
+    assert not any(w in out for w in ("crank", "rocker"))     # the synthesis's names in the scene's language
     code, out, _ = run(capsys, "analyze", str(ROOT / "examples" / "shaper.toml"), "--phi", "30", "390",
                        "--lang", "en")
     assert "I(0-1) → II(2-3) → II(4-5)" in out and "RPR" in out and "RRP" in out
-    assert "derived crank = 0.20826" in out and "Coriolis" in out
+    assert "derived crank length, m = 0.20826" in out and "Coriolis" in out
     rows = [line for line in out.splitlines() if line.strip().startswith(("0 ", "1 "))]
     assert len(rows) >= 2
 

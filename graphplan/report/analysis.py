@@ -55,7 +55,9 @@ def float_c(z: complex) -> complex:
     return complex(float(np.real(z)), float(np.imag(z)))
 
 
-DERIVED = {"theta_deg": "θ, °"}   # derived parameters written as the lab writes them
+# derived parameters (the quick-return synthesis, model.scene) written as the lab writes them
+DERIVED = {"theta_deg": ("θ, °", "θ, °"), "crank": ("довжина кривошипа, м", "crank length, m"),
+           "rocker": ("довжина куліси, м", "rocker length, m")}
 
 
 def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str = "uk") -> str:
@@ -73,7 +75,7 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str 
     for d in s.dyads:
         lines.append(w("dyad line", label=d.label, kind=pair_kind(d.kind, lang), a=d.a, b=d.b))
     for key, value in mech.derived.items():
-        lines.append(w("derived", key=DERIVED.get(key, key), value=num(value, lang, 5)))
+        lines.append(w("derived", key=DERIVED.get(key, (key, key))[lang != "uk"], value=num(value, lang, 5)))
     ex = ", ".join(f"{fixed(e, lang, 3)}°" for e in st.extremes) or w("turns fully")
     lines.append(w("output line", name=st.output.name, ex=ex, phi0=fixed(st.phi0, lang, 3)))
     moving = [p for p in mech.point_names() if p not in mech.frame]
