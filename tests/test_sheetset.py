@@ -94,6 +94,15 @@ def test_the_designation_ends_in_the_documents_number(base, kind, expected):
     assert designation(base, kind) == expected
 
 
+@pytest.mark.parametrize("base,kind,expected", [
+    ("ТММ.КП.08.400", "cam", "ТММ.КП.08.400"), ("ТММ.КП.08.000", "cam", "ТММ.КП.08.005"),
+    ("ТММ.КП.08.300", "gears", "ТММ.КП.08.300"), ("ТММ", "gears", "ТММ.4")])
+def test_a_scenes_one_document_keeps_the_number_its_student_gave(base, kind, expected):
+    """A cam or gear scene is one document: its own number stands (review 8: ТММ.КП.08.400 printed as
+    .005); a group of zeros is the project's base, numbered by kind."""
+    assert designation(base, kind, alone=True) == expected
+
+
 # -- SVG lettering without its font ---------------------------------------------------------------
 
 def test_svg_letters_stand_where_the_fonts_advances_put_them():

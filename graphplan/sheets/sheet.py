@@ -68,10 +68,12 @@ def document_number(kind: str) -> int:
     return ORDER.index(kind) + 1 if kind in ORDER else len(ORDER) + 1
 
 
-def designation(base: str, kind: str) -> str:
+def designation(base: str, kind: str, alone: bool = False) -> str:
     """The designation of the kind's document: the scene's ``base`` with its last group of digits
     replaced by the document's number, as wide as that group ("ТММ.КП.00.000" → "ТММ.КП.00.003"
-    for the dynamics); a base not ending in digits gets ".N" appended; none stays none."""
+    for the dynamics); a base not ending in digits gets ".N" appended; none stays none. The one
+    document of a scene (``alone``: a cam's or a gear pair's) keeps a number the student gave it
+    ("ТММ.КП.08.400" stays; only a group of zeros is the project's base)."""
     import re
     if not base:
         return base
@@ -79,6 +81,8 @@ def designation(base: str, kind: str) -> str:
     m = re.search(r"(\d+)$", base)
     if m is None:
         return f"{base}.{n}"
+    if alone and m.group(1).strip("0"):
+        return base
     return base[:m.start()] + str(n).zfill(len(m.group(1)))
 
 
@@ -136,7 +140,8 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
             if document_number(k) < document_number(kind):
                 first += n
             total += n
-        return sheet.number(first, total, designation(sheet.fields.get("designation", ""), kind))
+        return sheet.number(first, total, designation(sheet.fields.get("designation", ""), kind,
+                                                      alone=len(kinds) == 1))
     return wrapper
 
 
