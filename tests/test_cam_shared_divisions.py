@@ -1,0 +1,80 @@
+"""A cam with no far dwell (or no near dwell): the end of the rise and the start of the return are one
+division turn, and on the profile the last division meets division 0 again. Their numbers were drawn
+one over the other ("6" over "7") on the diagrams and the profile. Each shared spot is lettered once
+with both numbers ("6; 7", "6, 7" in English); no two division numbers' ink boxes come within the
+label check's 0.3 mm of each other, on any drawing, for translating and rocking followers, knife-edge
+and roller, both senses; and each diagram still numbers every division 0…N."""
+from __future__ import annotations
+
+import itertools
+import re
+
+import pytest
+
+from graphplan.drawing.cam import diagrams, phase_diagram, pressure_diagram, pressure_scales, profile_drawing
+from graphplan.exact.cam import solve
+from graphplan.graphic.cam import construct
+from graphplan.model.cam import build
+
+NUMBER = re.compile(r"^\d+(?:[;,] \d+)*$")
+GAP = 0.3        # mm: the label check's least paper between two letterings (drawing.labels.CHECK)
+
+
+def _cam(follower: str, roller: float, sense: str, far: float, near: float, n: int = 6):
+    rise, ret = (360.0 - far - near) * 0.55, (360.0 - far - near) * 0.45
+    cam = {"follower": follower, "roller_radius": roller, "direction": sense, "divisions": n,
+           "phases_deg": {"rise": rise, "dwell_far": far, "return": ret, "dwell_near": near},
+           "laws": {"rise": "cosine", "return": "parabolic"}, "pressure_angle_deg": {"rise": 30, "return": 30},
+           "omega": 10}
+    if follower == "rocking":
+        cam |= {"swing_deg": 20, "arm": 0.1, "centre_distance": 0.12,
+                "pressure_angle_deg": {"rise": 40, "return": 45}}
+    else:
+        cam |= {"stroke": 0.03, "offset": -0.005 if sense == "ccw" else "auto"}
+    return build({"title": "t", "cam": cam}, "<shared divisions>")
+
+
+CASES = [("translating", 0.008, "ccw", 0.0, 120.0), ("translating", 0.0, "cw", 60.0, 0.0),
+         ("translating", 0.0, "ccw", 0.0, 0.0), ("rocking", 0.01, "ccw", 0.0, 120.0),
+         ("rocking", 0.0, "cw", 0.0, 0.0), ("rocking", 0.01, "cw", 40.0, 0.0)]
+
+
+def _numbers(rec):
+    return [q for q in rec.items if q.kind == "text" and NUMBER.match(q.text)]
+
+
+def _divisions(texts) -> set[int]:
+    return {int(t) for q in texts for t in re.split(r"[;,] ", q.text)}
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+@pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c[0]}-{'roller' if c[1] else 'knife'}-{c[2]}-far{c[3]:g}-near{c[4]:g}")
+def test_shared_divisions_are_numbered_once_and_no_two_numbers_overlap(case, lang):
+    sol = solve(_cam(*case))
+    g = construct(sol, measure=False)
+    n_last = len(g.phi) - 1
+    far, near = case[3], case[4]
+    mu_phi, mu_t = pressure_scales(sol, 240.0, 100.0)
+    drawn = {"diagrams": diagrams(sol, g, lang), "phase": phase_diagram(sol, g, lang),
+             "profile": profile_drawing(sol, g, lang), "pressure": pressure_diagram(sol, g, lang, mu_phi, mu_t)}
+    sep = "; " if lang == "uk" else ", "
+    for name, rec in drawn.items():
+        texts = _numbers(rec)
+        for a, b in itertools.combinations(texts, 2):
+            A, B = a.ink(), b.ink()
+            apart = A[2] + GAP <= B[0] or B[2] + GAP <= A[0] or A[3] + GAP <= B[1] or B[3] + GAP <= A[1]
+            assert apart, (name, a.text, b.text, A, B)
+        # no number is drawn twice on one drawing (a shared spot carries both numbers, once)
+        seen = [int(t) for q in texts for t in re.split(r"[;,] ", q.text)]
+        if name != "diagrams":          # the diagrams number each of their three φ axes
+            assert len(seen) == len(set(seen)), (name, sorted(seen))
+    # every division on each diagram's φ axis, the shared ones as "n; n+1" under the s diagram
+    rise_end = n_last // 2
+    assert _divisions(_numbers(drawn["diagrams"])) == set(range(n_last + 1))
+    if far == 0.0:
+        shared = f"{rise_end}{sep}{rise_end + 1}"
+        assert sum(q.text == shared for q in _numbers(drawn["diagrams"])) == 3       # s, ds/dφ, d²s/dφ²
+    if near == 0.0:    # the profile closes on itself: the last division meets 0 there
+        assert any(q.text == f"0{sep}{n_last}" for q in _numbers(drawn["profile"]))
+    else:
+        assert not any(sep in q.text and q.text.startswith("0" + sep) for q in _numbers(drawn["profile"]))
