@@ -688,14 +688,15 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     w = min(SET_PRESSURE[0], region[2] - region[0])
-    h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2)
-    leaf = pressure_leaf(sol, g, lang, w, h)
-    if leaf is None:
-        return laid
-    again = flow([leaves, [tab, nts, leaf]], region, keep)
-    if again is None or len(again) > len(laid) or notes_alone(again[-1]):
-        return laid
-    return again
+    for part in (1.0, 0.85, 0.7):        # as tall as the room the table and the notes leave (an A3 set)
+        h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
+        leaf = pressure_leaf(sol, g, lang, w, h)
+        if leaf is None:
+            continue
+        again = flow([leaves, [tab, nts, leaf]], region, keep)
+        if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
+            return again
+    return laid
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
