@@ -78,3 +78,41 @@ def test_shared_divisions_are_numbered_once_and_no_two_numbers_overlap(case, lan
         assert any(q.text == f"0{sep}{n_last}" for q in _numbers(drawn["profile"]))
     else:
         assert not any(sep in q.text and q.text.startswith("0" + sep) for q in _numbers(drawn["profile"]))
+
+
+# -- the rocking cam's A1 sheet and the A3 set filled (the camfix round) ----------------------------------
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pressure_diagram(lang):
+    """examples/cam_rocking.toml on A1: the phase diagram (at the profile's μ_l, nothing reads across
+    from ψ) level with the ψ diagram's top — it hung from the ψ axis over a blank 100 mm high —, the
+    pressure angle's diagram under the notes at 1 °/mm or finer (it was 1 °/mm in a third of the room
+    it has now), the sheet under a third empty (35.3 / 34.3 % before; 32.0 / 29.7 % now)."""
+    from conftest import example
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.form import form
+    from sheetfill import empty_share
+    sheet = build_cam_sheet(example("cam_rocking"), form("A1"), SheetOptions(lang=lang, sheet="cam"))
+    assert defects(sheet) == []
+    placed = {p.name: p for p in sheet.placed}
+    dia, phase = placed["diagrams"].record, placed["phase"].record
+    assert abs(dia.bounds()[3] - phase.bounds()[3]) < 1.0
+    assert placed["pressure"].record.scales["mu_theta"] <= 1.0
+    assert empty_share(sheet) < 0.33
+
+
+@pytest.mark.slow
+def test_an_a3_sets_table_sheet_carries_the_pressure_diagram():
+    """examples/cam_translating.toml on A3: the third sheet (Table 1 and the notes) stood half blank;
+    the pressure angle's diagram goes there at 2 °/mm or finer, no fourth sheet for it."""
+    from conftest import example
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    sheet = build_cam_sheet(example("cam_translating"), form("A3"), SheetOptions(lang="uk", sheet="cam"))
+    pages = [{p.name: p for p in page.placed} for page in sheet.pages]
+    assert len(pages) == 3
+    assert {"table", "notes", "pressure"} <= set(pages[-1])
+    assert pages[-1]["pressure"].record.scales["mu_theta"] <= 2.0
