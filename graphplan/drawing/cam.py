@@ -492,7 +492,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         if cam.roller > 0 and k % 2 == 0:
             rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
-    _follower(rec, sol, g, pts[0], labels)
+    _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
     # R_0 drawn in the widest sector free of rays, O and ω in the sector opposite the follower
     angles = np.sort(np.mod(np.angle(np.concatenate([pts, [pts[0] * 3]])), 2 * math.pi))
@@ -552,10 +552,16 @@ def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, lab
     labels.append(LabelRequest(rr * cmath.exp(1j * math.radians(mid)), "ω", toward=-toward, size=TEXT))
 
 
-def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest]) -> None:
+ARC_OUT = 18.0       # mm: the phase angles' arcs outside the centre profile (a translating follower's)
+
+
+def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest],
+              clear: float = 0.0) -> None:
     """The follower in its start position (φ = 0, the nearest position): a translating one's rod on its
-    axis through the roller's centre (or the knife-edge's point), its guide hatched, the offset e
-    from O to the axis; a rocking one's arm from its fixed pivot, the pivot's support."""
+    axis through the roller's centre (or the knife-edge's point), its guide hatched — outside the
+    circle of radius ``clear`` about O (the phase angles' arcs, whose arrows meet on the follower's
+    axis: the guide stood on them) —, the offset e from O to the axis; a rocking one's arm from its
+    fixed pivot, the pivot's support."""
     cam = sol.cam
     mu = g.mu_l
     r = cam.roller / mu
@@ -582,13 +588,14 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         rec.segment(_pt(C0), _pt(C0 + complex(-1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
         rec.segment(_pt(C0), _pt(C0 + complex(1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
         base = C0 + 3.0j
-    top = base + (h + 25.0) * up
+    at = max(h + 8.0, math.sqrt(max(clear ** 2 - C0.real ** 2, 0.0)) - base.imag)   # the guide's foot over base
+    guide = base + at * up
+    top = guide + 14.0 * up
     rec.segment(_pt(base), _pt(top), role="link", layer=LAYER, step="rod")
-    guide = base + (h + 8.0) * up
     for side in (-1.0, 1.0):   # the guide: two short walls either side of the rod, hatched outward
         x = side * 3.0
-        rec.segment(_pt(guide + x), _pt(guide + x + 12.0j), role="frame", width=0.35, layer=LAYER, step="guide")
-        for t in (1.0, 4.5, 8.0, 11.5):
+        rec.segment(_pt(guide + x), _pt(guide + x + 10.0j), role="frame", width=0.35, layer=LAYER, step="guide")
+        for t in (1.0, 4.0, 7.0):
             z = guide + x + 1j * t
             rec.segment(_pt(z), _pt(z + side * 1.8 + 1.8j), role="hatch", layer=LAYER)
     x_axis = C0.real
@@ -625,7 +632,7 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
         R, root = (outer + 10.0, outer - 2.0) if a - outer >= 22.0 else (a + 14.0, a + 2.0)
     else:                  # the numbers at the rays' tips (outer + 6 mm)
         ref = cmath.phase(rays[0])
-        R, root = outer + 18.0, outer + 7.0
+        R, root = outer + ARC_OUT, outer + 7.0
     sig = cam.sense
     for j, (name, start, size) in enumerate(zip(PHASE_NAMES[lang], starts, sizes)):
         if size < 1.0:
