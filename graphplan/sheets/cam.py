@@ -688,7 +688,7 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     w = min(SET_PRESSURE[0], region[2] - region[0])
-    for part in (1.0, 0.85, 0.7):        # as tall as the room the table and the notes leave (an A3 set)
+    for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.7):     # as tall as the room the table and the notes leave (an A3 set)
         h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
         leaf = pressure_leaf(sol, g, lang, w, h)
         if leaf is None:
