@@ -77,6 +77,50 @@ def numbered(n_points: int, spacing: float, size: float = NUMBER) -> list[int]:
     return keep
 
 
+def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spacing: float | None = None
+          ) -> list[tuple[list[int], str]]:
+    """The division numbers lettered, one label a spot (``pos``: the divisions along their axis, mm;
+    ``period``: the axis's length where it closes on itself, the profile's circle): divisions at one
+    place — the end of the rise and the start of the return where there is no far dwell, on the
+    profile also the last and 0 where there is no near dwell — share one label, the numbers apart as
+    the phase diagram writes them ("6; 7" in uk, where the comma is the decimal sign; "6, 7" in en),
+    not one drawn over the other. Thinned as ``numbered`` thins them (the first and the last spot
+    always); a shared spot's label is always drawn, and a neighbour within its wider lettering and
+    1.5 mm of it left out (``spacing``: the spots' spacing ``numbered`` thins by, else their least
+    distance). Each: the divisions, the text."""
+    from graphplan.graphic.record import Primitive
+    pos = np.asarray(pos, float)
+    sep = "; " if lang == "uk" else ", "
+
+    def apart(a: float, b: float) -> float:
+        d = abs(a - b)
+        return min(d, period - d) if period else d
+    groups: list[list[int]] = []
+    for k, p in enumerate(pos):
+        at = next((g for g in groups if apart(pos[g[0]], p) < 1e-6), None)
+        if at is None:
+            groups.append([k])
+        else:
+            at.append(k)
+    if not groups:
+        return []
+    at = [float(pos[g[0]]) for g in groups]
+    gaps = [apart(a, b) for a, b in zip(at, at[1:])]
+    keep = numbered(len(groups), spacing or (min(gaps) if gaps else 10.0), size)
+    shared = [i for i, g in enumerate(groups) if len(g) > 1]
+    text = [sep.join(map(str, g)) for g in groups]
+
+    def width(i: int) -> float:
+        b = Primitive("text", ((0.0, 0.0),), text=text[i], size=size).ink()
+        return b[2] - b[0]
+    out = []
+    for i in sorted(set(keep) | set(shared)):
+        crowded = any(apart(at[i], at[j]) < max(width(i), width(j)) + 1.5 for j in shared if j != i)
+        if i in shared or not crowded or i == 0:
+            out.append(i)
+    return [(groups[i], text[i]) for i in out]
+
+
 def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     """d²s/dφ², ds/dφ and s over the turn (L mm), one above another on one φ axis (s on top, where the
     phase diagram stands beside it), integrated upward by chords: on the d²s/dφ² diagram's axis the
@@ -145,15 +189,14 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
                   key, labels)
         y = y0 + hi + 20.0
-    spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    keep = numbered(len(x), spacing)
+    marks = spots(x, lang)       # one label where two divisions meet (no far dwell: "6; 7")
     y_s = bands["s"]
-    for k in keep:      # s: under the axis, and under a chord ending below it (a closing error)
-        low = min(0.0, float(g.s_chord[k]) if len(g.s_chord) else 0.0, float(g.s_mm[k]))
-        rec.label((x[k], y_s + low - 2.0 - NUMBER), str(k), size=NUMBER, anchor="middle", layer=LAYER,
-                  step=f"division {k}")
+    for ks, text in marks:      # s: under the axis, and under a chord ending below it (a closing error)
+        low = min([0.0] + [float(g.s_chord[k]) for k in ks if len(g.s_chord)] + [float(g.s_mm[k]) for k in ks])
+        rec.label((x[ks[0]], y_s + low - 2.0 - NUMBER), text, size=NUMBER, anchor="middle", layer=LAYER,
+                  step=f"division {ks[0]}")
     for key in ("v", "a"):
-        _division_numbers(rec, x, bands[key], keep, key)
+        _division_numbers(rec, x, bands[key], marks, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
@@ -180,7 +223,7 @@ def rigid_shocks(sol: Solution, mu_phi: float) -> list[tuple[float, int]]:
     return [(x, 1 if d > 0 else -1) for x, d in sorted(out.items()) if abs(d) > 1e-12]
 
 
-def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], key: str) -> None:
+def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[list[int], str]], key: str) -> None:
     """The divisions 0…N numbered on a diagram's φ axis as on the s diagram (the lab numbers every
     diagram): each number just right of its division, 1.2 mm off the axis on the side the curve
     leaves free — the next division's ordinate's other side (the curve leaving the division), or this
@@ -226,7 +269,8 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
                 out.append(q)
         return out
 
-    for k in keep:
+    for ks, text in marks:     # a shared spot ("6; 7"): the curve leaving it is its last division's
+        k = ks[-1]
         right = drawn.get(k + 1, 0.0)
         up = right < -0.25 or (abs(right) <= 0.25 and drawn.get(k, 0.0) < -0.25)
         lines = [q for q in rec.items if q.kind in ("segment", "polyline")
@@ -234,7 +278,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
         best = None
         for side in ((1, -1) if up else (-1, 1)):
             y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
-            box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=str(k), size=NUMBER, anchor="start").ink()
+            box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=text, size=NUMBER, anchor="start").ink()
             crossed = hits(box, lines)
             if not crossed:
                 best = (y, box, [])
@@ -254,7 +298,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, keep: list[int], ke
                 continue                         # as the axis itself; its ray from P still shows it
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
-        rec.label((x[k] + NUMBER_OFF, y), str(k), size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {k}")
+        rec.label((x[k] + NUMBER_OFF, y), text, size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {ks[0]}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
@@ -448,7 +492,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         if cam.roller > 0 and k % 2 == 0:
             rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
-    _follower(rec, sol, g, pts[0], labels)
+    _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
     # R_0 drawn in the widest sector free of rays, O and ω in the sector opposite the follower
     angles = np.sort(np.mod(np.angle(np.concatenate([pts, [pts[0] * 3]])), 2 * math.pi))
@@ -460,15 +504,19 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     labels.append(LabelRequest(0.55 * r0 * along, "R_0", toward=along * 1j, size=TEXT))
     _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
-    for k in numbered(len(pts), 2 * math.pi * outer / max(len(pts), 1)):
+    tips = np.asarray(rays if not cam.rocking else feet)
+    reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
+    along_ = np.radians(np.mod(g.phi, 360.0)) * reach
+    for ks, text in spots(along_, lang, 2 * math.pi * reach, spacing=2 * math.pi * outer / max(len(pts), 1)):
+        k = ks[0]
         tip = rays[k] if not cam.rocking else feet[k]
         if cam.rocking and k == 0:
             # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
             # and out: its 0 below the arm and left of the support, not on O_1's line ("0O_1")
-            rec.label((tip.real - 4.3, tip.imag - 3.0), "0", size=NUMBER, anchor="end", layer=LAYER,
+            rec.label((tip.real - 4.3, tip.imag - 3.0), text, size=NUMBER, anchor="end", layer=LAYER,
                       step="division 0")
             continue
-        labels.append(LabelRequest(tip, str(k), toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
+        labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_l=mu)
@@ -504,10 +552,16 @@ def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, lab
     labels.append(LabelRequest(rr * cmath.exp(1j * math.radians(mid)), "ω", toward=-toward, size=TEXT))
 
 
-def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest]) -> None:
+ARC_OUT = 18.0       # mm: the phase angles' arcs outside the centre profile (a translating follower's)
+
+
+def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest],
+              clear: float = 0.0) -> None:
     """The follower in its start position (φ = 0, the nearest position): a translating one's rod on its
-    axis through the roller's centre (or the knife-edge's point), its guide hatched, the offset e
-    from O to the axis; a rocking one's arm from its fixed pivot, the pivot's support."""
+    axis through the roller's centre (or the knife-edge's point), its guide hatched — outside the
+    circle of radius ``clear`` about O (the phase angles' arcs, whose arrows meet on the follower's
+    axis: the guide stood on them) —, the offset e from O to the axis; a rocking one's arm from its
+    fixed pivot, the pivot's support."""
     cam = sol.cam
     mu = g.mu_l
     r = cam.roller / mu
@@ -534,13 +588,14 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         rec.segment(_pt(C0), _pt(C0 + complex(-1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
         rec.segment(_pt(C0), _pt(C0 + complex(1.5, 3.0)), role="link", layer=LAYER, step="knife-edge")
         base = C0 + 3.0j
-    top = base + (h + 25.0) * up
+    at = max(h + 8.0, math.sqrt(max(clear ** 2 - C0.real ** 2, 0.0)) - base.imag)   # the guide's foot over base
+    guide = base + at * up
+    top = guide + 14.0 * up
     rec.segment(_pt(base), _pt(top), role="link", layer=LAYER, step="rod")
-    guide = base + (h + 8.0) * up
     for side in (-1.0, 1.0):   # the guide: two short walls either side of the rod, hatched outward
         x = side * 3.0
-        rec.segment(_pt(guide + x), _pt(guide + x + 12.0j), role="frame", width=0.35, layer=LAYER, step="guide")
-        for t in (1.0, 4.5, 8.0, 11.5):
+        rec.segment(_pt(guide + x), _pt(guide + x + 10.0j), role="frame", width=0.35, layer=LAYER, step="guide")
+        for t in (1.0, 4.0, 7.0):
             z = guide + x + 1j * t
             rec.segment(_pt(z), _pt(z + side * 1.8 + 1.8j), role="hatch", layer=LAYER)
     x_axis = C0.real
@@ -577,7 +632,7 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
         R, root = (outer + 10.0, outer - 2.0) if a - outer >= 22.0 else (a + 14.0, a + 2.0)
     else:                  # the numbers at the rays' tips (outer + 6 mm)
         ref = cmath.phase(rays[0])
-        R, root = outer + 18.0, outer + 7.0
+        R, root = outer + ARC_OUT, outer + 7.0
     sig = cam.sense
     for j, (name, start, size) in enumerate(zip(PHASE_NAMES[lang], starts, sizes)):
         if size < 1.0:
@@ -641,10 +696,10 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
         if abs(y) > 1e-9:
             rec.segment((x[k], 0.0), (x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
         rec.point((x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
-    spacing = float(np.min(np.diff(np.unique(np.round(x, 6))))) if len(x) > 1 else 10.0
-    for k in numbered(len(x), spacing):
+    for ks, text in spots(x, lang):      # one label where two divisions meet ("6; 7")
+        k = ks[-1]
         side = -1j if g.theta[k] >= 0 else 1j            # the side the ordinate leaves free
-        labels.append(LabelRequest(complex(x[k], 0.0), str(k), toward=side, size=NUMBER, optional=True))
+        labels.append(LabelRequest(complex(x[k], 0.0), text, toward=side, size=NUMBER, optional=True))
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=mu_phi, mu_theta=mu_theta)
     return rec

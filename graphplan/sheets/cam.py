@@ -121,15 +121,20 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
             "profile": (w["profile"], profile)}
 
 
-def beside(diagrams: Record, phase: Record, caps: dict) -> Record:
+def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False) -> Record:
     """The diagrams and, to their right, the phase diagram at the same height — its s axis lined up
     with the s diagram's (both at μ_s: the point C0 of s = 0 level with the s diagram's φ axis, so a
-    value of s reads straight across) —, each with its caption: one drawing on the sheet."""
+    value of s reads straight across) —, each with its caption: one drawing on the sheet. A rocking
+    follower's phase diagram is drawn at the profile's μ_l (drawing.cam.phase_scale), not at μ_ψ: no
+    value reads across, and it stands level with the diagrams' top, the room under it (hole) to the
+    notes and the pressure angle's diagram (it hung from the ψ axis over a blank 100 mm high)."""
     left = captioned(diagrams, *caps["diagrams"])
     right = captioned(phase, *caps["phase"])
     axis = next(q for q in diagrams.items if q.step == "axis s")
     start = next(q for q in phase.items if q.step == "R0")
     dy = axis.points[0][1] - start.points[1][1]
+    if rocking:
+        dy = left.bounds()[3] - right.bounds()[3]
     dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
     out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
     out.scales.update(phase.scales)
@@ -164,13 +169,14 @@ def at_top(rec: Record, box: Box) -> Record:
 
 def hole(dia: Leaf, box: Box) -> Box | None:
     """The room under the phase diagram beside the ds/dφ and d²s/dφ² diagrams (review 4, item 19:
-    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf is centred in ``box``:
+    (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf stands at the top of
+    ``box`` (the column's spare height goes to that room, the notes and the pressure angle's diagram):
     from the diagrams' right edge to the box's, from the box's foot to a GAP under the phase diagram."""
     at = getattr(dia.record, "hole", None)
     if at is None:
         return None
     x0, y0, x1, y1 = dia.record.bounds()
-    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, (box[1] + box[3]) / 2 - (y0 + y1) / 2     # centred
+    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1     # at the top (at_top): the room under it
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
@@ -185,7 +191,7 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     if drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
     elif drawn:
-        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps)),
+        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking)),
                   Leaf("profile", record=captioned(drawn["profile"], *caps["profile"]))]
     tab = Leaf("table", record=positions_table(doc, lang))
     table_w = tab.record.bounds()[2] - tab.record.bounds()[0]
@@ -289,6 +295,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     memo: dict = {}
     fixed_: dict = {}                      # the table's and the notes' sizes: the same at every size
     wrapped: dict = {}                     # the notes wrapped to a column's width (A1), by language
+    tables: dict = {}                      # Table 1's larger sizes (_rows_of_8), by language
 
     def drawing(name, draw, key, g):
         if (name, key) not in memo:        # each drawing depends on its own scales only
@@ -299,7 +306,8 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         if (name, key, lang) not in memo:
             caps = _captions(g, sol.cam, lang)
             if name == "diagrams":
-                rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g), caps)
+                rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g),
+                             caps, sol.cam.rocking)
             else:
                 rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
             memo[(name, key, lang)] = Leaf(name, record=rec)
@@ -322,6 +330,8 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     for lang in ("uk", "en"):              # the table and the notes alone higher than the field: a set
         _, tab, nts, doc = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
+        tables[lang] = [Leaf("table", *extent(Leaf("table", record=positions_table(doc, lang, row, size))))
+                        for size, row in TABLE_SIZES]
         wrapped[lang] = _notes_at(doc, lang, sol.cam)
         if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
             return set_sizes(sol, f, n, precision)
@@ -343,6 +353,42 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         k = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
     h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
+    def room(poles) -> tuple[int, float]:
+        """How much smaller than the largest Table 1 is drawn (_rows_of_8: the index in TABLE_SIZES, the
+        larger of the two languages') and the height (mm) the room under the phase diagram leaves the
+        pressure angle's diagram under the notes (with_pressure), the lesser of the two languages (inf
+        where the notes stand elsewhere)."""
+        g_ = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka,
+                       H1=poles[0], H2=poles[1])
+        least, smaller = math.inf, 0
+        for lang in ("uk", "en"):
+            leaves = [leaf("diagrams", (g_.mu_phi, g_.mu_a, g_.mu_s, g_.H1, g_.H2, g_.mu_l), g_, lang),
+                      leaf("profile", (g_.mu_l,), g_, lang)]
+            laid = _laid(f, leaves, *fixed_[lang], wrapped[lang])
+            if not _one_sheet(laid):
+                return len(TABLE_SIZES), -math.inf
+            for i, tall in enumerate(tables[lang]):        # Table 1 as _rows_of_8 will draw it
+                again = _laid(f, leaves, tall, fixed_[lang][1], wrapped[lang])
+                if _one_sheet(again):
+                    laid, smaller = again, max(smaller, i)
+                    break
+            else:
+                smaller = len(TABLE_SIZES)
+            boxes = {lf.name: b for lf, b in laid[0]}
+            if {"diagrams", "notes"} <= set(boxes) and _in_hole(boxes):
+                least = min(least, boxes["notes"][1] - GAP - boxes["diagrams"][1])
+        return smaller, least
+    if f.name == "A1" and sol.cam.rocking:     # the ψ diagram alone taller by a shorter H_2 (the field's height has room),
+        b1, b2 = (g.H1, g.H2) if h1 is None else (h1, h2)     # the pressure angle's diagram kept legible
+        table_was, room_was = room((h1, h2))       # Table 1 not drawn smaller for it, nor ϑ(φ) below 2 °/mm
+        keep_room = min(room_was, _pressure_height(sol))
+
+        def kept(h: float) -> bool:
+            table, left = room((b1, h))
+            return table <= table_was and left >= keep_room - 1e-9
+        shorter = _shorter_h2(b2, lambda h: fits(k, kp, kh, ka, True, (b1, h)) and kept(h))
+        if shorter is not None:
+            h1, h2 = b1, shorter
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2)
@@ -368,6 +414,28 @@ def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
         trials.append((float(h1), h2))
     best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
     return trials[best] if best is not None else (None, None)
+
+
+def _pressure_height(sol) -> float:
+    """The room (mm) the pressure angle's diagram takes at 2 °/mm with its letters and caption
+    (pressure_scales' 18 mm, the caption's two lines 14 mm): under it the diagram reads poorly."""
+    import numpy as np
+    cam = sol.cam
+    rise, far, ret, _ = cam.phases
+    theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
+    span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
+    return span / 2.0 + 18.0 + 14.0
+
+
+def _shorter_h2(H2: float, fits) -> float | None:
+    """The s diagram alone taller where the field's height has room for it (the A1 column of
+    diagrams stood 76 mm short of its field's height, the cam sheet 40 % empty): μ_s = μ_{ds/dφ}·μ_φ·H_2
+    finer by a shorter pole distance H_2 (a whole millimetre, not under the lab's 15 mm), μ_φ, μ_{ds/dφ}
+    and μ_{d²s/dφ²} kept. The shortest H_2 at which the drawings still fit (``fits(H2)``: a translating
+    follower's phase diagram, at μ_s, grows with it), None when none shorter does."""
+    trials = [float(h) for h in range(int(math.ceil(H2)) - 1, int(POLE_MM[0]) - 1, -1)]
+    best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
+    return trials[best] if best is not None else None
 
 
 def _profile_largest(p: Box, q: Box) -> bool:
@@ -620,14 +688,15 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     w = min(SET_PRESSURE[0], region[2] - region[0])
-    h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2)
-    leaf = pressure_leaf(sol, g, lang, w, h)
-    if leaf is None:
-        return laid
-    again = flow([leaves, [tab, nts, leaf]], region, keep)
-    if again is None or len(again) > len(laid) or notes_alone(again[-1]):
-        return laid
-    return again
+    for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.7):     # as tall as the room the table and the notes leave (an A3 set)
+        h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
+        leaf = pressure_leaf(sol, g, lang, w, h)
+        if leaf is None:
+            continue
+        again = flow([leaves, [tab, nts, leaf]], region, keep)
+        if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
+            return again
+    return laid
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -651,7 +720,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
     def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
-        return (at_top if f.name == "A1" and leaf.name == "profile" else centred)(leaf.record, box)
+        return (at_top if f.name == "A1" and leaf.name in ("profile", "diagrams") else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None
               for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None))]
              for page in laid]
