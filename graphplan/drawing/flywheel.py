@@ -11,7 +11,7 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_pchip, periodic_spline
-from graphplan.drawing.labels import place_first, place_labels, row_clear
+from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
 from graphplan.util.words import num
@@ -405,16 +405,17 @@ def _free_boxes(rec: Record):
     """A test whether a box of lettering keeps ``GRADUATION_CLEAR`` of paper from every line of
     ``rec`` (each by its half width) and ``labels.APART`` from its lettering (shapely's STRtree over
     the strokes ``labels.strokes`` gives)."""
-    from shapely import STRtree, LineString, box
+    from shapely import STRtree, box, linestrings
     from graphplan.drawing.labels import APART, strokes
-    segs, halves = [], []
+    ends, halves = [], []
     for p in rec.items:
         if p.kind == "text":
             continue
         for a, b, hw in strokes(p):
-            segs.append(LineString([a, b]))
+            ends.append((a, b))
             halves.append(hw)
-    tree = STRtree(segs) if segs else None
+    segs = linestrings(np.asarray(ends, dtype=float)) if ends else []   # all at once (shapely ≥ 2)
+    tree = STRtree(segs) if ends else None
     texts = [box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
     def free(bx: tuple[float, float, float, float]) -> bool:
@@ -593,8 +594,10 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
               step="kl read")
     place_labels(rec, labels[:1], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
-    for asked in numbers:        # a point's number beside it with no line between them where it can be
-        _point_number(rec, asked, curve)          # (a number across a projection reads as that line's)
+    for asked in numbers:        # a point's number beside it with no line between them where it can be (a
+        # number across a projection reads as that line's), else on a leader that crosses no branch of
+        # the French curve where one can (it would read as a point of that branch): drawing.labels
+        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
     graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
@@ -606,83 +609,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     return rec
 
 
-BESIDE_MM = 4.3     # mm: a point's number without a leader no farther from its dot (a ring farther reads as nobody's)
-
-
-def _crosses(a: complex, b: complex, line: np.ndarray) -> bool:
-    """Whether the segment a–b crosses the polyline ``line`` (complex points; proper crossings)."""
-    p, q = line[:-1], line[1:]
-    def side(u, v, w):
-        return ((v - u).conjugate() * (w - u)).imag
-    return bool(np.any((side(a, b, p) * side(a, b, q) < 0) & (side(p, q, a) * side(p, q, b) < 0)))
-
-
 KEEP_WHOLE = ("I* axis", "ΔT axis")    # lines no number breaks (the projections may be broken)
-
-
-def _broken_beside(rec: Record, req: LabelRequest, ink) -> bool:
-    """The number set beside its dot within ``BESIDE_MM``, nearest it of all the dots, where only the
-    thin projections are in the way — broken under it, as a draftsman writes a number among his
-    construction lines (drawing.labels ``_breaking``); the axes are never broken. Whether it was."""
-    from graphplan.drawing import labels as lb
-    before = list(rec.items)
-    spot = lb._breaking(rec, req, ink)
-    whole = {id(p) for p in rec.items}
-    if spot is None or lb._box_gap(spot[0], req.at) > BESIDE_MM or any(
-            p.step in KEEP_WHOLE and id(p) not in whole for p in before):
-        rec.items[:] = before
-        return False
-    rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
-    return True
-
-
-def _point_number(rec: Record, asked: list[LabelRequest], curve: np.ndarray) -> None:
-    """An energy–mass point's number (drawing.labels ``place_first`` with ``rivals``): beside its dot,
-    within ``BESIDE_MM`` of it, by the first request that finds a free spot there (in sight first);
-    else on a leader from the dot that crosses no other leader and passes no other point (``_far``):
-    first one that runs along no projection (where it is not seen), ends nearer its dot than any
-    other and crosses no branch of the French ``curve`` (it would read as a point of that branch);
-    then one that may cross the curve; then one ending less near; else wherever ``place_labels``
-    finds room."""
-    from graphplan.drawing import labels as lb
-    if lb._SKETCH[-1]:
-        return
-    ob = lb.obstacles(rec.items)
-    for req in asked:
-        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-        reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
-        spot = lb._near(ob.near(req.at, lb.NEAR[-1] + reach), req, ink)
-        if spot is not None and lb._box_gap(spot[0], req.at) <= BESIDE_MM:
-            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
-            return
-    req = asked[-1]
-    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-    reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
-    local = ob.near(req.at, lb.FAR[-1] + reach)
-
-    def ok(curve_too: bool, strict: bool):
-        def check(box) -> bool:  # the leader seen (not along a projection), off the curve, the number nearest its dot
-            a, b = lb._leader(req.at, box)
-            return (not lb._along_line(local, a, b) and not (curve_too and _crosses(a, b, curve))
-                    and (not strict or lb.led_owned(req, box, b, strict=True)))
-        return check
-    spot = None
-    for curve_too, strict in ((True, True), (False, True), (None, None), (True, False), (False, False)):
-        if curve_too is None:                    # beside it, the projections broken under it
-            if _broken_beside(rec, req, ink):
-                return
-            continue
-        spot = lb._far(local, req, ink, ok=ok(curve_too, strict))
-        if spot is not None:
-            break
-    if spot is None:
-        spot = lb._far(local, req, ink)
-    if spot is None:
-        place_labels(rec, asked[:1], layer=LAYER)
-        return
-    box, start, (a, b) = spot
-    rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=LAYER, step=req.step)
-    rec.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
 
 
 BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there
