@@ -401,22 +401,26 @@ GRADUATION_CLEAR = 0.5   # mm of paper between a graduation's value and any line
 TICK = 1.5               # mm: a graduation's tick
 
 
-def _free_boxes(rec: Record):
+def _free_boxes(rec: Record, breaking: bool = False):
     """A test whether a box of lettering keeps ``GRADUATION_CLEAR`` of paper from every line of
     ``rec`` (each by its half width) and ``labels.APART`` from its lettering (shapely's STRtree over
-    the strokes ``labels.strokes`` gives)."""
+    the strokes ``labels.strokes`` gives); ``breaking``: from every line but the thin construction
+    lines a value may break (``labels.breakable``: the projections, the rays, the grid), and
+    ``labels.NUMBERS_APART`` from a number in any case (a point's 11 by −50 read −50,11)."""
     from shapely import STRtree, box, linestrings
-    from graphplan.drawing.labels import APART, strokes
+    from graphplan.drawing.labels import APART, breakable, strokes
     ends, halves = [], []
     for p in rec.items:
-        if p.kind == "text":
+        if p.kind == "text" or (breaking and breakable(p)):
             continue
         for a, b, hw in strokes(p):
             ends.append((a, b))
             halves.append(hw)
     segs = linestrings(np.asarray(ends, dtype=float)) if ends else []   # all at once (shapely ≥ 2)
     tree = STRtree(segs) if ends else None
-    texts = [box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
+    from graphplan.drawing.labels import NUMBERS_APART, is_number
+    texts = [(box(*p.ink()), NUMBERS_APART if is_number(p.text) else APART)
+             for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
     def free(bx: tuple[float, float, float, float]) -> bool:
         g = box(*bx)
@@ -424,21 +428,21 @@ def _free_boxes(rec: Record):
             for i in tree.query(g.buffer(GRADUATION_CLEAR + 0.5)):
                 if segs[i].distance(g) < GRADUATION_CLEAR + halves[i]:
                     return False
-        return all(t.distance(g) >= APART for t in texts)
+        return all(t.distance(g) >= apart for t, apart in texts)
     return free
 
 
 def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
-                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True,
-                  scattered: bool = True) -> list[float]:
+                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True
+                  ) -> list[float]:
     """An ordinate axis through the record's origin graduated in its quantity at ``mu`` (units a
     mm), as the lab's sheets graduate them: a ``TICK`` at each of ``values`` (``graduation``: round
     numbers) and the values lettered beside their ticks on one side of the axis (``sides``: −1 left
     of a vertical axis, under a horizontal one; the first preferred) where they keep clear of the
     lines and lettering already drawn (the pole's rays left of the M axis, the projections): every
     value, else every 2nd, 5th or 10th tick's (a draftsman letters the major ticks) — the finest
-    such run of at least two values that all keep clear on one side; where none does, the values
-    clear on the side where most are (``scattered`` False: none). ``letter`` False: the ticks alone
+    such run of at least two values that all keep clear on one side; where none does, on one side
+    among the thin lines, broken under them (``_breaking_run``). ``letter`` False: the ticks alone
     (an axis whose values read across from a diagram beside it). Returns the values lettered."""
     if not values:
         return []
@@ -468,20 +472,8 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
             if ok:
                 shown, side = run, ok[0]
                 break
-        else:
-            side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
-            shown = [v for v in values if free(number(v, side).ink())] if scattered else []
-            if scattered and len(shown) < 2:      # fewer than two on either side: each where it is clear
-                both = {v: next((sd for sd in sides if free(number(v, sd).ink())), None) for v in values}
-                if sum(sd is not None for sd in both.values()) > len(shown):
-                    for v in values:
-                        at = v / mu
-                        a, b = ((0.0, at), (sides[0] * TICK, at)) if vertical else ((at, 0.0), (at, sides[0] * TICK))
-                        rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
-                    for v, sd in both.items():
-                        if sd is not None:
-                            rec.items.append(number(v, sd))
-                    return [v for v, sd in both.items() if sd is not None]
+        else:               # no whole run clear: on one side, the thin lines broken under them
+            shown, side = _breaking_run(rec, values, sides, number)
     for v in values:                     # a tick that would run into a word (k, l) is left out
         at = v / mu
         a, b = ((0.0, at), (side * TICK, at)) if vertical else ((at, 0.0), (at, side * TICK))
@@ -491,6 +483,34 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     for v in shown:
         rec.items.append(number(v, side))
     return shown
+
+
+BREAK_CLEAR = 1.2    # mm: a thin line broken under a value this far from its ink
+
+
+def _breaking_run(rec: Record, values: list[float], sides: tuple[float, ...], number) -> tuple[list[float], float]:
+    """An axis's values where no two keep clear of its lines on either side (the projections and
+    rays crowd it): as a draftsman letters them among his construction lines — on one side (the
+    one where most are clear of all but the thin lines, the preferred first), every value, else
+    every 2nd, 5th or 10th, clear of the drawing's other lines and lettering, the thin lines
+    (``labels.breakable``) broken under each (``labels.break_under``): of the runs of every value,
+    every 2nd, 5th or 10th, the longest stretch of consecutive values that keep clear (one step,
+    none skipped: not 0,1 beside 0,125 and 0,225). The values lettered and their side."""
+    from graphplan.drawing.labels import break_under, breakable
+    free = _free_boxes(rec, breaking=True)
+    side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
+    unit = graduation_step(values) or abs(values[0])
+    shown: list[float] = []
+    for every in (1, 2, 5, 10):           # the longest unbroken stretch of a run, the finest first
+        block: list[float] = []
+        for v in (v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6):
+            block = block + [v] if free(number(v, side).ink()) else []
+            if len(block) > len(shown):
+                shown = block
+    for v in shown:                 # a dash ending by a value would read as its minus: a wider gap
+        ink = number(v, side).ink()
+        rec.items[:] = [q for p in rec.items for q in (break_under(p, ink, BREAK_CLEAR) if breakable(p) else [p])]
+    return shown, side
 
 
 def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None:
@@ -601,11 +621,10 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
     graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
-                  step="I* graduation", scattered=projections is None)   # else read down on I*(φ)'s foot
+                  step="I* graduation")   # lettered as on I*(φ)'s foot, the projections broken under them
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
-        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0,), step="ΔT graduation",
-        letter=False)                                  # its values read across, on ΔT(φ)'s axis
+        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")
     return rec
 
 
