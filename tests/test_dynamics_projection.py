@@ -38,7 +38,7 @@ def _projections(rec):
     return [p.points for p in rec.items if p.kind == "segment" and p.role == "projection"]
 
 
-BROKEN = 1.5      # mm: a projection broken under lettering stops this near its ink (drawing.flywheel.BREAK_CLEAR)
+BROKEN = 2.0      # mm: a projection broken under lettering stops this near its ink (BREAK_CLEAR, PHI_CLEAR)
 
 
 def _carried(segments, texts, a, b) -> bool:

@@ -328,9 +328,23 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
                     step=f"projection of ΔT at {j}")
     _numbers(rec, row)
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="ΔT graduation")
-    return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
-                                           breaks=True)],   # at its arrow, the projections broken under it
-                        layer=LAYER)
+    place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
+                                    breaks=True)], layer=LAYER)   # at its arrow, the projections broken under it
+    return _cleared(rec, "axes ΔT", "φ")
+
+
+PHI_CLEAR = 1.5    # mm: the projections stop this far from φ (a dash's own gap is about 1 mm: broken nearer, φ
+#                    read as standing on the dashed line — review 7 #11)
+
+
+def _cleared(rec: Record, step: str, text: str) -> Record:
+    """The thin projection lines broken ``PHI_CLEAR`` around the letter ``text`` of ``step``."""
+    from graphplan.drawing.labels import break_under
+    for word in [p for p in rec.items if p.kind == "text" and p.step == step and p.text == text]:
+        ink = word.ink()
+        rec.items[:] = [q for p in rec.items for q in
+                        (break_under(p, ink, PHI_CLEAR) if p.role == "projection" and p.kind == "segment" else [p])]
+    return rec
 
 
 def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Record:
