@@ -743,8 +743,9 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
     return L, size, 1.0, "set", 1, length, False
 
 
-ORDERED_READ = 0.01      # a set out of the order of the work (its tables first) only where in order |kl| would
-#                          be so short that the ruler's precision is more than this share of it (0.5 mm of 50 mm)
+ORDERED_READ = 0.02      # a set out of the order of the work (its tables first) only where in order |kl| would
+#                          be so short that the ruler's precision is more than this share of it (0.5 mm of 25 mm:
+#                          I_fl ∝ |kl| read to 2 %, well within the lab's 5 %; review 3's set had 2.9 %)
 SET_SIZES = (1.5, 1.3, 1.2, 1.15, 1.1, 1.05, 1.0, 0.9, 0.8, 0.7, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 0.3)
 SET_L_STEP = 10.0        # mm: the set's abscissae L tried, from the longest down
 SET_PATIENCE = 3         # L tried past the largest |kl| found before a set settles for it
