@@ -90,7 +90,7 @@ synchronous_rpm = 1500
 '''
 
 TABLES = ("positions table", "flywheel table", "motor table")
-FILLED = 0.35        # the least share of a set's sheet's field its drawings' and tables' boxes cover
+FILLED = 1 / 3        # the least share of a set's sheet's field its drawings' and tables' boxes cover (a third)
 
 
 def _set(text: str, lang: str):
