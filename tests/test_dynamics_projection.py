@@ -38,20 +38,29 @@ def _projections(rec):
     return [p.points for p in rec.items if p.kind == "segment" and p.role == "projection"]
 
 
-def _joined(segments, a, b) -> bool:
-    """a and b joined by a chain of projection segments (end to end, within TOL; any path)."""
-    def near(p, q):
-        return abs(p[0] - q[0]) <= TOL and abs(p[1] - q[1]) <= TOL
-    front, used = [a], set()
-    while front:
-        at = front.pop()
-        if near(at, b):
+BROKEN = 2.0      # mm: a projection broken under lettering stops this near its ink (BREAK_CLEAR, PHI_CLEAR)
+
+
+def _carried(segments, texts, a, b) -> bool:
+    """a and b joined along one horizontal or vertical line by projection segments, the line broken
+    only under lettering (an axis's value, a point's number: a draftsman breaks his construction
+    lines under them) — each gap within a word's ink grown by BROKEN."""
+    k = 1 if abs(a[1] - b[1]) <= TOL else 0          # the coordinate the line keeps (y of a horizontal)
+    if abs(a[k] - b[k]) > TOL:
+        return False
+    lo, hi = sorted((a[1 - k], b[1 - k]))
+    runs = sorted(sorted((p[1 - k], q[1 - k])) for p, q in segments
+                  if abs(p[k] - a[k]) <= TOL and abs(q[k] - a[k]) <= TOL)
+    at = lo
+    for r0, r1 in runs:
+        if r0 > at + TOL:                             # a gap from at to r0: under some word?
+            if r0 > hi or not any(t[k] - BROKEN <= a[k] <= t[k + 2] + BROKEN and t[1 - k] - BROKEN <= at
+                                  and r0 <= t[3 - k] + BROKEN for t in texts):
+                break
+        at = max(at, r1)
+        if at >= hi - TOL:
             return True
-        for k, (p, q) in enumerate(segments):
-            if k not in used and (near(p, at) or near(q, at)):
-                used.add(k)
-                front.append(q if near(p, at) else p)
-    return False
+    return at >= hi - TOL
 
 
 def test_each_point_is_where_its_two_projections_meet(sheet):
@@ -62,13 +71,14 @@ def test_each_point_is_where_its_two_projections_meet(sheet):
     curve = [_points(witt, f"point {j}")[0] for j in range(n)]
     assert n >= 8 and len(inert) == n + 1
     segments = _projections(energy) + _projections(inertia) + _projections(witt)
+    texts = [p.ink() for r in (energy, inertia, witt) for p in r.items if p.kind == "text" and p.text.strip()]
     for j, c in enumerate(curve):
         assert dT[j][1] == pytest.approx(c[1], abs=TOL), f"ΔT of {j} not carried across on one horizontal"
         assert dT[j][0] < c[0]                                  # ΔT(φ) to the left
         assert inert[j][0] == pytest.approx(c[0], abs=TOL), f"I* of {j} not carried up on one vertical"
         assert inert[j][1] < c[1]                               # I*(φ) under the diagram
-        assert _joined(segments, dT[j], c), f"no horizontal projection joins ΔT(φ)'s point {j} to the curve"
-        assert _joined(segments, inert[j], c), f"no vertical projection joins I*(φ)'s point {j} to the curve"
+        assert _carried(segments, texts, dT[j], c), f"no horizontal projection joins ΔT(φ)'s point {j} to the curve"
+        assert _carried(segments, texts, inert[j], c), f"no vertical projection joins I*(φ)'s point {j} to the curve"
     # the turned I*(φ): φ runs downward, the divisions equally spaced
     ys = [p[1] for p in inert]
     steps = [a - b for a, b in zip(ys, ys[1:])]

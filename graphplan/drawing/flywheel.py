@@ -11,7 +11,7 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt
 from graphplan.graphic.chords import periodic_pchip, periodic_spline
-from graphplan.drawing.labels import place_first, place_labels, row_clear
+from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
 from graphplan.util.words import num
@@ -328,9 +328,23 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
                     step=f"projection of ΔT at {j}")
     _numbers(rec, row)
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="ΔT graduation")
-    return place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
-                                           breaks=True)],   # at its arrow, the projections broken under it
-                        layer=LAYER)
+    place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
+                                    breaks=True)], layer=LAYER)   # at its arrow, the projections broken under it
+    return _cleared(rec, "axes ΔT", "φ")
+
+
+PHI_CLEAR = 1.5    # mm: the projections stop this far from φ (a dash's own gap is about 1 mm: broken nearer, φ
+#                    read as standing on the dashed line — review 7 #11)
+
+
+def _cleared(rec: Record, step: str, text: str) -> Record:
+    """The thin projection lines broken ``PHI_CLEAR`` around the letter ``text`` of ``step``."""
+    from graphplan.drawing.labels import break_under
+    for word in [p for p in rec.items if p.kind == "text" and p.step == step and p.text == text]:
+        ink = word.ink()
+        rec.items[:] = [q for p in rec.items for q in
+                        (break_under(p, ink, PHI_CLEAR) if p.role == "projection" and p.kind == "segment" else [p])]
+    return rec
 
 
 def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Record:
@@ -401,21 +415,26 @@ GRADUATION_CLEAR = 0.5   # mm of paper between a graduation's value and any line
 TICK = 1.5               # mm: a graduation's tick
 
 
-def _free_boxes(rec: Record):
+def _free_boxes(rec: Record, breaking: bool = False):
     """A test whether a box of lettering keeps ``GRADUATION_CLEAR`` of paper from every line of
     ``rec`` (each by its half width) and ``labels.APART`` from its lettering (shapely's STRtree over
-    the strokes ``labels.strokes`` gives)."""
-    from shapely import STRtree, LineString, box
-    from graphplan.drawing.labels import APART, strokes
-    segs, halves = [], []
+    the strokes ``labels.strokes`` gives); ``breaking``: from every line but the thin construction
+    lines a value may break (``labels.breakable``: the projections, the rays, the grid), and
+    ``labels.NUMBERS_APART`` from a number in any case (a point's 11 by −50 read −50,11)."""
+    from shapely import STRtree, box, linestrings
+    from graphplan.drawing.labels import APART, breakable, strokes
+    ends, halves = [], []
     for p in rec.items:
-        if p.kind == "text":
+        if p.kind == "text" or (breaking and breakable(p)):
             continue
         for a, b, hw in strokes(p):
-            segs.append(LineString([a, b]))
+            ends.append((a, b))
             halves.append(hw)
-    tree = STRtree(segs) if segs else None
-    texts = [box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
+    segs = linestrings(np.asarray(ends, dtype=float)) if ends else []   # all at once (shapely ≥ 2)
+    tree = STRtree(segs) if ends else None
+    from graphplan.drawing.labels import NUMBERS_APART, is_number
+    texts = [(box(*p.ink()), NUMBERS_APART if is_number(p.text) else APART)
+             for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
     def free(bx: tuple[float, float, float, float]) -> bool:
         g = box(*bx)
@@ -423,21 +442,21 @@ def _free_boxes(rec: Record):
             for i in tree.query(g.buffer(GRADUATION_CLEAR + 0.5)):
                 if segs[i].distance(g) < GRADUATION_CLEAR + halves[i]:
                     return False
-        return all(t.distance(g) >= APART for t in texts)
+        return all(t.distance(g) >= apart for t, apart in texts)
     return free
 
 
 def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
-                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True,
-                  scattered: bool = True) -> list[float]:
+                  sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True
+                  ) -> list[float]:
     """An ordinate axis through the record's origin graduated in its quantity at ``mu`` (units a
     mm), as the lab's sheets graduate them: a ``TICK`` at each of ``values`` (``graduation``: round
     numbers) and the values lettered beside their ticks on one side of the axis (``sides``: −1 left
     of a vertical axis, under a horizontal one; the first preferred) where they keep clear of the
     lines and lettering already drawn (the pole's rays left of the M axis, the projections): every
     value, else every 2nd, 5th or 10th tick's (a draftsman letters the major ticks) — the finest
-    such run of at least two values that all keep clear on one side; where none does, the values
-    clear on the side where most are (``scattered`` False: none). ``letter`` False: the ticks alone
+    such run of at least two values that all keep clear on one side; where none does, on one side
+    among the thin lines, broken under them (``_breaking_run``). ``letter`` False: the ticks alone
     (an axis whose values read across from a diagram beside it). Returns the values lettered."""
     if not values:
         return []
@@ -467,20 +486,8 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
             if ok:
                 shown, side = run, ok[0]
                 break
-        else:
-            side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
-            shown = [v for v in values if free(number(v, side).ink())] if scattered else []
-            if scattered and len(shown) < 2:      # fewer than two on either side: each where it is clear
-                both = {v: next((sd for sd in sides if free(number(v, sd).ink())), None) for v in values}
-                if sum(sd is not None for sd in both.values()) > len(shown):
-                    for v in values:
-                        at = v / mu
-                        a, b = ((0.0, at), (sides[0] * TICK, at)) if vertical else ((at, 0.0), (at, sides[0] * TICK))
-                        rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
-                    for v, sd in both.items():
-                        if sd is not None:
-                            rec.items.append(number(v, sd))
-                    return [v for v, sd in both.items() if sd is not None]
+        else:               # no whole run clear: on one side, the thin lines broken under them
+            shown, side = _breaking_run(rec, values, sides, number)
     for v in values:                     # a tick that would run into a word (k, l) is left out
         at = v / mu
         a, b = ((0.0, at), (side * TICK, at)) if vertical else ((at, 0.0), (at, side * TICK))
@@ -490,6 +497,34 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     for v in shown:
         rec.items.append(number(v, side))
     return shown
+
+
+BREAK_CLEAR = 1.2    # mm: a thin line broken under a value this far from its ink
+
+
+def _breaking_run(rec: Record, values: list[float], sides: tuple[float, ...], number) -> tuple[list[float], float]:
+    """An axis's values where no two keep clear of its lines on either side (the projections and
+    rays crowd it): as a draftsman letters them among his construction lines — on one side (the
+    one where most are clear of all but the thin lines, the preferred first), every value, else
+    every 2nd, 5th or 10th, clear of the drawing's other lines and lettering, the thin lines
+    (``labels.breakable``) broken under each (``labels.break_under``): of the runs of every value,
+    every 2nd, 5th or 10th, the longest stretch of consecutive values that keep clear (one step,
+    none skipped: not 0,1 beside 0,125 and 0,225). The values lettered and their side."""
+    from graphplan.drawing.labels import break_under, breakable
+    free = _free_boxes(rec, breaking=True)
+    side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
+    unit = graduation_step(values) or abs(values[0])
+    shown: list[float] = []
+    for every in (1, 2, 5, 10):           # the longest unbroken stretch of a run, the finest first
+        block: list[float] = []
+        for v in (v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6):
+            block = block + [v] if free(number(v, side).ink()) else []
+            if len(block) > len(shown):
+                shown = block
+    for v in shown:                 # a dash ending by a value would read as its minus: a wider gap
+        ink = number(v, side).ink()
+        rec.items[:] = [q for p in rec.items for q in (break_under(p, ink, BREAK_CLEAR) if breakable(p) else [p])]
+    return shown, side
 
 
 def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None:
@@ -593,96 +628,21 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
               step="kl read")
     place_labels(rec, labels[:1], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
-    for asked in numbers:        # a point's number beside it with no line between them where it can be
-        _point_number(rec, asked, curve)          # (a number across a projection reads as that line's)
+    for asked in numbers:        # a point's number beside it with no line between them where it can be (a
+        # number across a projection reads as that line's), else on a leader that crosses no branch of
+        # the French curve where one can (it would read as a point of that branch): drawing.labels
+        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
     graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
-                  step="I* graduation", scattered=projections is None)   # else read down on I*(φ)'s foot
+                  step="I* graduation")   # lettered as on I*(φ)'s foot, the projections broken under them
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
-        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0,), step="ΔT graduation",
-        letter=False)                                  # its values read across, on ΔT(φ)'s axis
+        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")
     return rec
 
 
-BESIDE_MM = 4.3     # mm: a point's number without a leader no farther from its dot (a ring farther reads as nobody's)
-
-
-def _crosses(a: complex, b: complex, line: np.ndarray) -> bool:
-    """Whether the segment a–b crosses the polyline ``line`` (complex points; proper crossings)."""
-    p, q = line[:-1], line[1:]
-    def side(u, v, w):
-        return ((v - u).conjugate() * (w - u)).imag
-    return bool(np.any((side(a, b, p) * side(a, b, q) < 0) & (side(p, q, a) * side(p, q, b) < 0)))
-
-
 KEEP_WHOLE = ("I* axis", "ΔT axis")    # lines no number breaks (the projections may be broken)
-
-
-def _broken_beside(rec: Record, req: LabelRequest, ink) -> bool:
-    """The number set beside its dot within ``BESIDE_MM``, nearest it of all the dots, where only the
-    thin projections are in the way — broken under it, as a draftsman writes a number among his
-    construction lines (drawing.labels ``_breaking``); the axes are never broken. Whether it was."""
-    from graphplan.drawing import labels as lb
-    before = list(rec.items)
-    spot = lb._breaking(rec, req, ink)
-    whole = {id(p) for p in rec.items}
-    if spot is None or lb._box_gap(spot[0], req.at) > BESIDE_MM or any(
-            p.step in KEEP_WHOLE and id(p) not in whole for p in before):
-        rec.items[:] = before
-        return False
-    rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
-    return True
-
-
-def _point_number(rec: Record, asked: list[LabelRequest], curve: np.ndarray) -> None:
-    """An energy–mass point's number (drawing.labels ``place_first`` with ``rivals``): beside its dot,
-    within ``BESIDE_MM`` of it, by the first request that finds a free spot there (in sight first);
-    else on a leader from the dot that crosses no other leader and passes no other point (``_far``):
-    first one that runs along no projection (where it is not seen), ends nearer its dot than any
-    other and crosses no branch of the French ``curve`` (it would read as a point of that branch);
-    then one that may cross the curve; then one ending less near; else wherever ``place_labels``
-    finds room."""
-    from graphplan.drawing import labels as lb
-    if lb._SKETCH[-1]:
-        return
-    ob = lb.obstacles(rec.items)
-    for req in asked:
-        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-        reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
-        spot = lb._near(ob.near(req.at, lb.NEAR[-1] + reach), req, ink)
-        if spot is not None and lb._box_gap(spot[0], req.at) <= BESIDE_MM:
-            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
-            return
-    req = asked[-1]
-    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-    reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + lb.CLEAR + 2.0
-    local = ob.near(req.at, lb.FAR[-1] + reach)
-
-    def ok(curve_too: bool, strict: bool):
-        def check(box) -> bool:  # the leader seen (not along a projection), off the curve, the number nearest its dot
-            a, b = lb._leader(req.at, box)
-            return (not lb._along_line(local, a, b) and not (curve_too and _crosses(a, b, curve))
-                    and (not strict or lb.led_owned(req, box, b, strict=True)))
-        return check
-    spot = None
-    for curve_too, strict in ((True, True), (False, True), (None, None), (True, False), (False, False)):
-        if curve_too is None:                    # beside it, the projections broken under it
-            if _broken_beside(rec, req, ink):
-                return
-            continue
-        spot = lb._far(local, req, ink, ok=ok(curve_too, strict))
-        if spot is not None:
-            break
-    if spot is None:
-        spot = lb._far(local, req, ink)
-    if spot is None:
-        place_labels(rec, asked[:1], layer=LAYER)
-        return
-    box, start, (a, b) = spot
-    rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=LAYER, step=req.step)
-    rec.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=LAYER)
 
 
 BREAK = 10.0     # mm between the φ axis (ω = 0) and the foot of ω(φ)'s scale, the axis broken there

@@ -914,3 +914,223 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
     record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
     return record
+
+
+BESIDE_MM = 4.3     # mm: a label set beside its point with no leader no farther from it (farther reads as nobody's)
+
+
+def _led_all(at: complex, boxes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``_leader`` of every candidate box at once: the leaders' starts and ends (complex arrays)."""
+    near = np.clip(at.real, boxes[:, 0], boxes[:, 2]) + 1j * np.clip(at.imag, boxes[:, 1], boxes[:, 3])
+    d = near - at
+    n = np.abs(d)
+    u = d / np.where(n == 0.0, 1.0, n)
+    return at + 1.2 * u, near - (CLEAR + 0.3) * u
+
+
+def _side_all(p, q, r):
+    """((q − p)* · (r − p)).imag, broadcast (``_cross``'s side test)."""
+    return (np.conj(q - p) * (r - p)).imag
+
+
+def _crosses_all(a: np.ndarray, b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """For each leader a[i]–b[i]: whether it properly crosses any of the segments c[j]–d[j] (``_cross``)."""
+    if len(a) == 0 or len(c) == 0:
+        return np.zeros(len(a), dtype=bool)
+    A, B = a[:, None], b[:, None]
+    C, D = c[None, :], d[None, :]
+    return np.any((_side_all(A, B, C) * _side_all(A, B, D) < 0) & (_side_all(C, D, A) * _side_all(C, D, B) < 0),
+                  axis=1)
+
+
+def _thick_all(ob: Obstacles, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``_crosses_thick`` of many leaders at once."""
+    out = np.zeros(len(a), dtype=bool)
+    if len(ob.segs) == 0 or len(a) == 0:
+        return out
+    s = ob.segs[ob.half >= THICK_HALF]
+    if len(s) == 0:
+        return out
+    sx, sy, ex, ey = (v[None, :] for v in s.T)
+    A, B = a[:, None], b[:, None]
+    ux, uy = B.real - A.real, B.imag - A.imag
+    vx, vy = ex - sx, ey - sy
+    den = ux * vy - uy * vx
+    with np.errstate(all="ignore"):
+        t = ((sx - A.real) * vy - (sy - A.imag) * vx) / den
+        v = ((sx - A.real) * uy - (sy - A.imag) * ux) / den
+    return np.any((np.abs(den) > 1e-12) & (t > 0.0) & (t < 1.0) & (v > 0.0) & (v < 1.0), axis=1)
+
+
+def _gap_all(boxes: np.ndarray, z: complex) -> np.ndarray:
+    """``_box_gap`` of every box to the point z."""
+    gx = np.maximum(np.maximum(boxes[:, 0] - z.real, 0.0), z.real - boxes[:, 2])
+    gy = np.maximum(np.maximum(boxes[:, 1] - z.imag, 0.0), z.imag - boxes[:, 3])
+    return np.abs(gx + 1j * gy)
+
+
+def _owned_all(req: LabelRequest, boxes: np.ndarray, end: np.ndarray, strict: bool) -> np.ndarray:
+    """``led_owned`` of every candidate (its box and its leader's end) at once."""
+    mine = _gap_all(boxes, req.at)
+    ok = np.ones(len(boxes), dtype=bool)
+    d = end - req.at
+    n2 = np.abs(d) ** 2
+    for z in req.rivals:
+        ok &= ~(_gap_all(boxes, z) < (mine + 0.05 if strict else np.minimum(mine, RIVAL_BOX)))
+        if abs(z - req.at) < RIVAL_CLEAR:
+            ok &= ~(((z - req.at) * np.conj(d)).real > 0.0)
+        else:
+            with np.errstate(all="ignore"):
+                t = np.where(np.abs(d) < 1e-12, 0.0, np.clip(((z - req.at) * np.conj(d)).real / n2, 0.0, 1.0))
+            ok &= ~(np.abs(z - (req.at + t * d)) < RIVAL_CLEAR)
+    return ok
+
+
+@dataclass
+class Leads:
+    """The leader candidates of one label (``FAR`` rings × ``FAR_DIRECTIONS``, in ``_candidates``'
+    order), each with its leader and what it meets — computed at once for every one, so that any
+    order of preference among them costs no more than one pass (``place_beside``)."""
+    boxes: np.ndarray
+    starts: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    base: np.ndarray           # free of lines and labels, the leader through no label, across no leader
+    strict: np.ndarray         # the label nearer its point than any rival (``led_owned`` strict)
+    loose: np.ndarray          # … at least ``RIVAL_BOX`` clear of them
+    ob: Obstacles
+    _along: dict
+
+    def along(self, k: int) -> bool:
+        """Whether candidate k's leader runs on a drawn line (``_along_line``; asked only of the
+        candidates that pass every other test, in order, and remembered)."""
+        if k not in self._along:
+            self._along[k] = _along_line(self.ob, complex(self.a[k]), complex(self.b[k]))
+        return self._along[k]
+
+    def first(self, req: LabelRequest, extra: np.ndarray | None = None, off_lines: bool = False,
+              reject=None) -> int | None:
+        """The candidate ``_far`` takes where its ``ok`` is ``extra`` (and, where ``off_lines``, the
+        leader along no line; ``reject(k)`` none of it): the passes (nearer its own point than the
+        rivals, off the lines; then less near; then along a line) over the rings, a number's passes
+        before its rings, a word's rings first; None where none passes."""
+        n = FAR_DIRECTIONS
+        ok = self.base if extra is None else self.base & extra
+        passes = (((self.strict, True), (self.loose, True), (self.loose, False)) if req.rivals
+                  else ((np.ones(len(ok), dtype=bool), False),))
+        rings = range(len(FAR))
+        order = ([(p, r) for p in passes for r in rings] if is_number(req.text)
+                 else [(p, r) for r in rings for p in passes])
+        for (p, apart), r in order:
+            for k in (np.nonzero((ok & p)[r * n:(r + 1) * n])[0] + r * n).tolist():
+                if (off_lines or apart) and self.along(k):
+                    continue
+                if reject is not None and reject(k):
+                    continue
+                return k
+        return None
+
+
+def leads(ob: Obstacles, req: LabelRequest, ink: Box) -> Leads:
+    """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it)."""
+    boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
+    a, b = _led_all(req.at, boxes)
+    base = _counts(ob, boxes, number=_number(req)) == 0
+    if ob.boxes:
+        q = np.asarray(ob.boxes, dtype=float)
+        idx = np.nonzero(base)[0]
+        if len(idx):
+            A, B = a[idx][:, None], b[idx][:, None]
+            meets = _clip_all(A.real, A.imag, B.real, B.imag, q[None, :, 0] - 0.7, q[None, :, 1] - 0.7,
+                              q[None, :, 2] + 0.7, q[None, :, 3] + 0.7)
+            base[idx[np.any(meets, axis=1)]] = False
+    if ob.leaders:
+        idx = np.nonzero(base)[0]
+        c = np.asarray([c for c, _ in ob.leaders])
+        d = np.asarray([d for _, d in ob.leaders])
+        base[idx[_crosses_all(a[idx], b[idx], c, d)]] = False
+    if not req.across:
+        idx = np.nonzero(base)[0]
+        base[idx[_thick_all(ob, a[idx], b[idx])]] = False
+    idx = np.nonzero(base)[0]
+    strict = np.ones(len(boxes), dtype=bool)
+    loose = np.ones(len(boxes), dtype=bool)
+    if req.rivals:
+        strict[idx] = _owned_all(req, boxes[idx], b[idx], True)
+        loose[idx] = _owned_all(req, boxes[idx], b[idx], False)
+    return Leads(boxes, starts, a, b, base, strict, loose, ob, {})
+
+
+def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels", beside: float = BESIDE_MM,
+                 avoid: np.ndarray | None = None, keep_whole: tuple[str, ...] = ()) -> str:
+    """Place one label near its point with a checked leader — a diagram's numbered point among its
+    ``rivals`` (the other points: ``LabelRequest.rivals``). ``asked``: the same label asked in order
+    of preference (in sight first, say); the last is the one set on a leader. In this order:
+
+    1. "beside": by the first request with a free spot (``_near``) within ``beside`` mm of its point;
+    2. "leader": on a leader from the point (``leads``) that crosses no label, no other leader, no
+       thick line where not ``across``, passes no rival, runs along no drawn line, its label nearer
+       its own point than any rival's — first a leader that crosses no ``avoid`` polyline (complex
+       vertices: a curve whose branch a number across it would be read on), then one that may;
+    3. "broken": beside it within ``beside`` mm where only thin lines are in the way, broken under it
+       (``_breaking``) — never a line whose step is in ``keep_whole``;
+    4. "leader": as 2. with the label merely ``RIVAL_BOX`` clear of the rivals;
+    5. "leader": on any leader ``_far`` allows; 6. "placed": as ``place_labels`` places it.
+
+    Returns which ("" when sketched: nothing placed). A number reads as its own point's: beside it
+    with nothing between, or at the end of a leader that says whose it is."""
+    if _SKETCH[-1] or not asked:
+        return ""
+    ob = obstacles(record.items)
+    for req in asked:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink)
+        if spot is not None and _box_gap(spot[0], req.at) <= beside:
+            record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return "beside"
+    req = asked[-1]
+    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+    reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+    cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink)
+    crossing: dict[int, bool] = {}
+
+    def crosses(k: int) -> bool:             # the leader across the ``avoid`` polyline (asked lazily)
+        if k not in crossing:
+            crossing[k] = avoid is not None and len(avoid) > 1 and bool(_crosses_all(
+                cand.a[k:k + 1], cand.b[k:k + 1], avoid[:-1], avoid[1:])[0])
+        return crossing[k]
+    k = None
+    for stage in ("off", "on", "broken", "off loose", "on loose", "any"):
+        if stage == "broken":
+            if _break_beside(record, req, ink, layer, beside, keep_whole):
+                return "broken"
+            continue
+        k = cand.first(req, None if stage in ("any",) or "loose" in stage else cand.strict,
+                       off_lines=stage != "any", reject=crosses if stage.startswith("off") else None)
+        if k is not None:
+            break
+    if k is None:
+        place_labels(record, asked[:1], layer=layer)
+        return "placed"
+    a, b, start = complex(cand.a[k]), complex(cand.b[k]), complex(cand.starts[k])
+    record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
+    record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
+    return "leader"
+
+
+def _break_beside(record: Record, req: LabelRequest, ink: Box, layer: str, beside: float,
+                  keep_whole: tuple[str, ...]) -> bool:
+    """The label set beside its point within ``beside`` mm, nearest it of all the rivals, where only
+    thin lines are in the way — broken under it (``_breaking``); no line of a ``keep_whole`` step
+    broken. Whether it was (the record unchanged where not)."""
+    before = list(record.items)
+    spot = _breaking(record, req, ink)
+    whole = {id(p) for p in record.items}
+    if spot is None or _box_gap(spot[0], req.at) > beside or any(
+            p.step in keep_whole and id(p) not in whole for p in before):
+        record.items[:] = before
+        return False
+    record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
+    return True
