@@ -522,12 +522,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
-            taken += _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, BALANCING_R_MM + 4.0)
-            away = _free_direction(taken)
+            away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links,
+                                                        BALANCING_R_MM))
             r = BALANCING_R_MM
             if omega_at is not None and abs(omega_at - z) < 0.5 and abs((away - w1 + math.pi) % (2 * math.pi)
-                                                                        - math.pi) < math.radians(110.0):
+                                                                        - math.pi) < math.radians(150.0):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
+                away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, r))
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
@@ -696,16 +697,16 @@ OMEGA_R_MM = 9.0   # ω1's arc on the scheme
 BALANCING_R_MM = 9.0   # M_зр's arc at the crank's pivot (on the scheme and the crank's group)
 
 
-def _near_arrows(z: complex, lines: list[tuple[complex, complex]], r: float) -> list[float]:
-    """The directions (rad) from ``z`` to the points of ``lines`` within ``r`` mm of it (sampled
-    every 0.5 mm), ``z`` itself left out: where an arc of radius < ``r`` about ``z`` would run
-    over an arrow passing by (G1 down past O1)."""
+def _near_arrows(z: complex, lines: list[tuple[complex, complex]], r: float, band: float = 3.5) -> list[float]:
+    """The directions (rad) from ``z`` to the points of ``lines`` (sampled every 0.5 mm) within
+    ``band`` mm of the circle of radius ``r`` about ``z``: where an arc of radius ``r`` about ``z``
+    would run over (or its head onto) an arrow passing by (G1 down past O1, Φ1 along the crank)."""
     out = []
     for a, b in lines:
         n = max(2, int(abs(b - a) / 0.5))
         for k in range(n + 1):
             w = a + (b - a) * k / n
-            if 1.0 < abs(w - z) < r:
+            if abs(abs(w - z) - r) < band:
                 out.append(cmath.phase(w - z))
     return out
 
