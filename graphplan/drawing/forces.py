@@ -1147,7 +1147,7 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm).
     A tangential component found by a moment equation is tabulated as its magnitude, as seed 000
     solves "−R^t = … = 579,7 Н" and lists 579,7: its arrow is drawn in the true sense, and the
-    minus (the assumed sense reversed) stays with the moment equation (``tau_reversed``)."""
+    minus (the assumed sense reversed) stays with the moment equation (``forces`` prints it)."""
     rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
     from graphplan.graphic.draftsman import measure
@@ -1182,14 +1182,6 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
         y = _table(rec, 0.0, y, head, rows, [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]],
                    step) - TIER_GAP_MM
     return rec
-
-
-def tau_reversed(fp: ForcePlans) -> list[str]:
-    """The tangential components whose moment equation came out negative (R^τ12 = −36,65 N): each
-    acts opposite to the sense assumed in its equation; the tables give their magnitudes and the
-    drawings their true senses, as seed 000 does ("−R^t = … = 579,7 Н")."""
-    return list(dict.fromkeys(eq.unknown for gp in fp.groups for eq in gp.equations
-                              if eq.unknown.endswith("τ") and eq.result < 0))
 
 
 TABLE_WIDEST_MM = 200.0   # a group's table wider than this is set in two tiers

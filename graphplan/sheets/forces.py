@@ -327,10 +327,6 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     fp = dr.groups_fp(mu)
     small = small_forces(fp, lang)
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
-    from graphplan.drawing.forces import tau_reversed
-    reversed_ = tau_reversed(fp)      # R^τ with a minus: the tables give |R^τ|, the arrows its sense
-    if reversed_:
-        lines.append(word("fs tau opposite", lang, syms=", ".join(force_symbol(k, lang) for k in reversed_)))
     if _hodographs_share(dr, mu["hodographs"]):      # the hodographs' "0–2", said once
         lines.append(w('coincide'))
     scales = [format_scale("mu_l", mu["scheme"], lang)]

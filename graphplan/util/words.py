@@ -391,10 +391,6 @@ WORDS: dict[str, tuple[str, str]] = {
                          "  {sym} = {mm} {mm_} · μ_F = {v} {N} (along the link, from the force plan)"),
     "tau opposite": ("знак «−»: {sym} спрямована протилежно прийнятому",
                      "the minus: {sym} acts opposite to the sense assumed"),
-    "fs tau opposite": ("{syms}: у рівнянні моментів зі знаком «−», тобто спрямовані протилежно прийнятому; "
-                        "у таблицях — модулі, стрілки — в дійсному напрямку",
-                        "{syms}: the moment equation gives the minus, i.e. acting opposite to the sense "
-                        "assumed; the tables give the magnitudes, the arrows the true senses"),
     "reactions from plan": ("  реакції з плану сил:", "  reactions from the force plan:"),
     "lever head": ("Важіль Жуковського (план швидкостей, повернутий на 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):",
                    "Zhukovsky lever (velocity plan turned 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):"),
