@@ -525,8 +525,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links,
                                                         BALANCING_R_MM))
             r = BALANCING_R_MM
-            if omega_at is not None and abs(omega_at - z) < 0.5 and abs((away - w1 + math.pi) % (2 * math.pi)
-                                                                        - math.pi) < math.radians(150.0):
+            ends = [e for _, p, q in drawn for e in (p, q) if abs(e - z) > 1.0]     # the arrows' ends by it
+            if omega_at is not None and abs(omega_at - z) < 0.5 and (
+                    abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
+                    or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
                 away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, r))
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
@@ -642,7 +644,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
     # h_G3 on the loom's rocker) had their names stacked against each other; no leader across a link
-    return _apart(rec, lab.asked, owned, list(span.values()), across=False)
+    # … nor nearer an arc's arrowhead (M_зр, ω1, M^Φ) than its own arrow: "G1" by M_зр's head on the
+    # press's scheme read as the moment's
+    heads = [(complex(*q.points[0]), complex(*q.points[1])) for q in rec.items if q.kind == "vector" and q.role == "head"]
+    return _apart(rec, lab.asked, owned, list(span.values()) + heads, across=False)
 
 
 ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
@@ -695,6 +700,17 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
 
 OMEGA_R_MM = 9.0   # ω1's arc on the scheme
 BALANCING_R_MM = 9.0   # M_зр's arc at the crank's pivot (on the scheme and the crank's group)
+
+
+ARC_CLEAR_MM = 7.0   # M_зр's arc on the scheme at least this far from an arrow's end (its letter's room)
+
+
+def _arc_near(z: complex, r: float, away: float, span: float, points: list[complex]) -> float:
+    """The least distance (mm) from an arc of radius ``r`` about ``z``, ``span``° centred on
+    ``away`` (rad), to ``points`` (sampled every 5°)."""
+    n = max(2, int(span / 5.0))
+    arc = [z + r * cmath.exp(1j * (away + math.radians(-span / 2 + span * k / n))) for k in range(n + 1)]
+    return min((abs(a - p) for a in arc for p in points), default=math.inf)
 
 
 def _near_arrows(z: complex, lines: list[tuple[complex, complex]], r: float, band: float = 3.5) -> list[float]:
