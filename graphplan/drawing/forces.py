@@ -346,6 +346,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     names: list[tuple[complex, str]] = []
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
+    blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
     for link in gp.links:
         outline = _link_outline(fp, link, mu)
         if len(outline) >= 2:
@@ -358,6 +359,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             import numpy as np
             g = complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))
             _block(rec, z, g, step)
+            u_, n_ = _unit(g) * 4.0, _unit(g) * BLOCK_HALF * 1j     # its edges, kept clear by the arms
+            corners = [z - u_ - n_, z + u_ - n_, z + u_ + n_, z - u_ + n_]
+            blocks += list(zip(corners, corners[1:] + corners[:1]))
             if guide.body == FRAME:
                 guides.append((z, g))
         for p in lk.joints:
@@ -518,7 +522,16 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
-            mid = _moment_arc(rec, z, f.couple, _free_direction(taken), step, r=9.0, span=80.0)
+            away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links,
+                                                        BALANCING_R_MM))
+            r = BALANCING_R_MM
+            ends = [e for _, p, q in drawn for e in (p, q) if abs(e - z) > 1.0]     # the arrows' ends by it
+            if omega_at is not None and abs(omega_at - z) < 0.5 and (
+                    abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
+                    or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
+                r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
+                away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, r))
+            mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
         elif f.couple and not f.force:
@@ -571,21 +584,30 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             if abs(t.arm_mm) < 1.0 or t.couple or f is None:
                 continue
             arms.append((about, t, f))
+    shifts: list[complex] = []
     for about, t, f in arms:
-        rec.segment(_pt(about), _pt(t.foot), role="construction", layer="construction", step=step,
-                    text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
-        # the right-angle mark at the foot: the arm is perpendicular to this force's line
-        back, along = _unit(about - t.foot) * 1.5, _unit(f.force) * 1.5
-        if dot(f.at / mu - t.foot, along) < 0:
-            along = -along
-        rec.add("polyline", [_pt(t.foot + back), _pt(t.foot + back + along), _pt(t.foot + along)],
-                role="construction", layer="construction", step=step)
         a, b = span[f.name]
         off = lanes.get(f.name, 0j)
+        # an arm lying on a drawn arrow or link (h_G2 from B along R03) drawn aside (``arm_aside``)
+        shift = arm_aside(about, t.foot, _unit(f.force), [(p, q) for _, p, q in drawn] + drawn_links,
+                          toward=0.5 * (a + b) - off, outlines=blocks)
+        shifts.append(shift)
+        s0, foot = about + shift, t.foot + shift
+        rec.segment(_pt(s0), _pt(foot), role="construction", layer="construction", step=step,
+                    text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
+        if shift:                        # the extension line from the point the moments are taken about
+            rec.segment(_pt(about), _pt(s0 + 1.0 * _unit(shift)), role="projection", layer="construction",
+                        step=step)
+        # the right-angle mark at the foot: the arm is perpendicular to this force's line
+        back, along = _unit(about - t.foot) * 1.5, _unit(f.force) * 1.5
+        if dot(f.at / mu - foot, along) < 0:
+            along = -along
+        rec.add("polyline", [_pt(foot + back), _pt(foot + back + along), _pt(foot + along)],
+                role="construction", layer="construction", step=step)
         a, b = a - off, b - off          # the force's line of action (a laned arrow runs beside it)
-        if dot(t.foot - a, b - a) < 0 or dot(t.foot - b, a - b) < 0:      # past the arrow: its line extended
-            near = a if abs(t.foot - a) < abs(t.foot - b) else b
-            rec.segment(_pt(near), _pt(t.foot), role="projection", layer="construction", step=step)
+        if dot(foot - a, b - a) < 0 or dot(foot - b, a - b) < 0:      # past the arrow: its line extended
+            near = a if abs(foot - a) < abs(foot - b) else b
+            rec.segment(_pt(near), _pt(foot), role="projection", layer="construction", step=step)
         if off:                          # the line itself along the arrow, where the arm ends
             rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
     for z, g in guides if gp.kind == "mechanism" else ():
@@ -606,8 +628,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
-    for about, t, _ in arms:
-        mid = 0.5 * (about + t.foot)
+    for (about, t, _), shift in zip(arms, shifts):
+        mid = 0.5 * (about + t.foot) + shift
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
     owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
@@ -622,7 +644,34 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         lab.place(tip, force_symbol(name, lang), LETTER, u, step)
     # each label fenced by its height while the rest are placed: two arms on one line at B (h_Φ3,
     # h_G3 on the loom's rocker) had their names stacked against each other; no leader across a link
-    return _apart(rec, lab.asked, owned, list(span.values()), across=False)
+    # … nor nearer an arc's arrowhead (M_зр, ω1, M^Φ) than its own arrow: "G1" by M_зр's head on the
+    # press's scheme read as the moment's
+    heads = [(complex(*q.points[0]), complex(*q.points[1])) for q in rec.items if q.kind == "vector" and q.role == "head"]
+    return _apart(rec, lab.asked, owned, list(span.values()) + heads, across=False)
+
+
+ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
+
+
+def arm_aside(about: complex, foot: complex, u: complex, lines: list[tuple[complex, complex]],
+              toward: complex | None = None, outlines: list[tuple[complex, complex]] = ()) -> complex:
+    """Where an arm (``about`` → ``foot``, perpendicular to its force's line along ``u``) is drawn:
+    0 where it runs along no drawn arrow or link; else moved along its force's line — its foot stays
+    on that line, its length and right angle kept — by the first of ``ARM_ASIDE_MM`` (first toward
+    ``toward``, the force's arrow) that runs along nothing drawn, an extension line from ``about``
+    to it, as a dimension line is drawn (review 9 #6: h_G2 lay on R03's shaft at B); nor along a
+    slider's block's edge (``outlines``, which its extension line may cross)."""
+    if abs(foot - about) < 1e-9 or _run_along(about, foot, lines) <= 1.0:
+        return 0j
+    v = _unit(u)
+    if toward is not None and dot(toward - foot, v) < 0:
+        v = -v
+    every = list(lines) + list(outlines)
+    for k in ARM_ASIDE_MM:
+        shift = k * v
+        if _run_along(about + shift, foot + shift, every) <= 0.5 and not _crosses(about, about + shift, lines):
+            return shift
+    return ARM_ASIDE_MM[0] * v
 
 
 def _components(gp: GroupPlan, name: str) -> list:
@@ -639,7 +688,9 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
     loads = [f for gp in fp.groups for f in gp.forces if f.kind == "load"]
     crank = fp.groups[-1].links[0]
     pivot = next(r.at for r in fp.ks.reactions.values() if r.on == crank and r.frm == FRAME)
-    loads.append(GForce("M_b", crank, complex(pivot[0]), 0j, couple=fp.balancing))
+    # M_зр drawn as on the crank's group: a 9 mm arc clear of ω1's, of the crank and of the arrows
+    # passing by (review 8 #3: a 5 mm arc under G1's arrowhead, its sense unreadable)
+    loads.append(GForce("M_b", crank, complex(pivot[0]), 0j, couple=fp.balancing, kind="balancing"))
     links = tuple(link for gp in reversed(fp.groups) for link in gp.links)
     whole = GroupPlan("0", "mechanism", links, loads, [], [], [], {}, {}, [], fp.mu_l)
     rec = group_record(fp, whole, lang, omega_at=complex(pivot[0]) / fp.mu_l)
@@ -648,6 +699,32 @@ def mechanism_record(fp: ForcePlans, lang: str = "uk") -> Record:
 
 
 OMEGA_R_MM = 9.0   # ω1's arc on the scheme
+BALANCING_R_MM = 9.0   # M_зр's arc at the crank's pivot (on the scheme and the crank's group)
+
+
+ARC_CLEAR_MM = 7.0   # M_зр's arc on the scheme at least this far from an arrow's end (its letter's room)
+
+
+def _arc_near(z: complex, r: float, away: float, span: float, points: list[complex]) -> float:
+    """The least distance (mm) from an arc of radius ``r`` about ``z``, ``span``° centred on
+    ``away`` (rad), to ``points`` (sampled every 5°)."""
+    n = max(2, int(span / 5.0))
+    arc = [z + r * cmath.exp(1j * (away + math.radians(-span / 2 + span * k / n))) for k in range(n + 1)]
+    return min((abs(a - p) for a in arc for p in points), default=math.inf)
+
+
+def _near_arrows(z: complex, lines: list[tuple[complex, complex]], r: float, band: float = 3.5) -> list[float]:
+    """The directions (rad) from ``z`` to the points of ``lines`` (sampled every 0.5 mm) within
+    ``band`` mm of the circle of radius ``r`` about ``z``: where an arc of radius ``r`` about ``z``
+    would run over (or its head onto) an arrow passing by (G1 down past O1, Φ1 along the crank)."""
+    out = []
+    for a, b in lines:
+        n = max(2, int(abs(b - a) / 0.5))
+        for k in range(n + 1):
+            w = a + (b - a) * k / n
+            if abs(abs(w - z) - r) < band:
+                out.append(cmath.phase(w - z))
+    return out
 
 
 def _omega(rec: Record, lab: Labeler, z: complex, omega: float, away: float, r: float = OMEGA_R_MM) -> None:
@@ -1084,8 +1161,9 @@ def _table(rec: Record, x: float, y: float, head: list[str], rows: list[list[str
 
 def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     """Seed 000's tables 2.4–2.5: every force of the group, its value (N) and its drawn length (mm).
-    A tangential component found by a moment equation is printed signed as solved (R^τ03 = −348):
-    its minus says the assumed direction is reversed; its drawn length is the magnitude."""
+    A tangential component found by a moment equation is tabulated as its magnitude, as seed 000
+    solves "−R^t = … = 579,7 Н" and lists 579,7: its arrow is drawn in the true sense, and the
+    minus (the assumed sense reversed) stays with the moment equation (``forces`` prints it)."""
     rec = Record(f"{word('reactions of group', lang)} {gp.label}")
     step = f"table {gp.label}"
     from graphplan.graphic.draftsman import measure
@@ -1097,7 +1175,7 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
             cells.append((f.name, f.couple, None))
     for eq in gp.equations:
         if eq.unknown != "M_b":
-            cells.append((eq.unknown, eq.result, measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
+            cells.append((eq.unknown, abs(eq.result), measure(abs(eq.result) / _mu_F(fp, gp), fp.precision)))
         if eq.unknown.endswith("τ"):     # its normal component, read off the force plan (seed 000's R^n)
             for c in _components(gp, eq.unknown[:-1]):
                 if c.name.endswith("n"):

@@ -122,8 +122,11 @@ def forces_table(fp, lang: str = "uk") -> str:
                 lines.append(plain(w("moment eq balancing", about=eq.about, terms=terms, r=n(eq.result, 5))))
             else:
                 sign = "" if eq.arm_mm >= 0 else "−"
-                lines.append(f"  ΣM_{eq.about} = 0: {sign}{sym(eq.unknown)}·{n(abs(eq.arm_mm))} {terms} = 0 "
-                             f"→ {sym(eq.unknown)} = {n(eq.result, 5)} {unit('N', lang)}")
+                line = (f"  ΣM_{eq.about} = 0: {sign}{sym(eq.unknown)}·{n(abs(eq.arm_mm))} {terms} = 0 "
+                        f"→ {sym(eq.unknown)} = {n(eq.result, 5).replace('-', '−')} {unit('N', lang)}")
+                if eq.result < 0:     # the assumed sense reversed: said, the tables give |R^τ|
+                    line += f" ({w('tau opposite', sym=sym(eq.unknown))})"
+                lines.append(line)
             if eq.unknown.endswith("τ"):      # its normal component read off the plan (the sheet's table)
                 for s in gp.sides:
                     if s.name == eq.unknown[:-1] + "n" and s.role == "component" and s.mm > 1e-9:
@@ -131,12 +134,17 @@ def forces_table(fp, lang: str = "uk") -> str:
                         lines.append(w("normal component", sym=sym(s.name), mm=n(mm), mm_=unit("mm", lang),
                                        v=n(mm * (gp.mu_F or fp.mu_F), 5)))
         cells = []
+        mu_F = gp.mu_F or fp.mu_F
         for f in gp.forces:
             if f.force:
                 cells.append((sym(f.name), n(abs(f.force), 5),
-                              n(drawn_mm(abs(f.force) / (gp.mu_F or fp.mu_F), fp.precision))))
+                              n(drawn_mm(abs(f.force) / mu_F, fp.precision))))
             if f.couple:
                 cells.append((sym(f.name), f"{n(f.couple, 5)} {unit('N·m', lang)}", "—"))
+        for eq in gp.equations:       # R^τ as the sheet's table lists it: the magnitude (seed 000)
+            if eq.unknown.endswith("τ"):
+                cells.append((sym(eq.unknown), n(abs(eq.result), 5),
+                              n(drawn_mm(abs(eq.result) / mu_F, fp.precision))))
         lines.append(w("forces on group"))
         lines.append("  " + _row([w("force"), f"P, {unit('N', lang)}", w("drawn mm")], [10, 12, 14]))
         lines += ["  " + _row(list(c), [10, 12, 14]) for c in cells]

@@ -62,25 +62,36 @@ class Skyline:
         p = self.spots[-1]
         return d >= p.d - 1e-9 or x >= p.x + p.w + self.gap - 1e-9
 
-    def where(self, w: float, h: float, right: bool = False, min_x: float = 0.0) -> tuple[float, float] | None:
+    def after(self, x: float, d: float, spot: Spot | None) -> bool:
+        """Read after ``spot``: wholly to its right or wholly under it (a group's drawing after the
+        group before it — the outer group first, the crank's last, seed 000 §2.5)."""
+        return (spot is None or x >= spot.x + spot.w + self.gap - 1e-9
+                or d >= spot.d + spot.h + self.gap - 1e-9)
+
+    def where(self, w: float, h: float, right: bool = False, min_x: float = 0.0,
+              follows: Spot | None = None) -> tuple[float, float] | None:
         """The highest place for a w × h drawing (then the leftmost, or ``right``: the rightmost),
-        not left of ``min_x``."""
+        not left of ``min_x``, read after ``follows`` (``after``)."""
+        at = self.places(w, h, right, min_x, follows)
+        return at[0] if at else None
+
+    def places(self, w: float, h: float, right: bool = False, min_x: float = 0.0,
+               follows: Spot | None = None) -> list[tuple[float, float]]:
+        """Every place for a w × h drawing (``where``'s), the highest first."""
         if w > self.W + 1e-9:
-            return None
+            return []
         min_x = max(min_x, self.left)
         xs = {a for a, _, _ in self.segs} | {b - self.gap - w for _, b, _ in self.segs} | {self.W - w, min_x}
-        best = None
+        found = {}
         for x in xs:
             if x < min_x - 1e-9 or x + w > self.W + 1e-9:
                 continue
             x = max(0.0, x)
             d = max(self.depth(x, w), self.top)
-            if d + h > self.floor(x, w) + 1e-9 or not self.ordered(x, d):
+            if d + h > self.floor(x, w) + 1e-9 or not self.ordered(x, d) or not self.after(x, d, follows):
                 continue
-            key = (round(d, 6), -x if right else x)
-            if best is None or key < best[0]:
-                best = (key, (x, d))
-        return None if best is None else best[1]
+            found[(round(d, 6), -x if right else x)] = (x, d)
+        return [found[k] for k in sorted(found)]
 
     def put(self, spot: Spot) -> None:
         """Take the spot's room (its width and height with the gap after it)."""
@@ -114,15 +125,32 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
 
     pages: list[Skyline] = [sheet(0)]
 
+    def follows(alts: Sequence[Node], page: Skyline) -> Spot | None:
+        """The group's drawing a group's unit is read after on the page (``Skyline.after``)."""
+        return next((s for s in reversed(page.spots) if _is_group(s.node)), None) if _is_group(alts[0]) else None
+
     def place(alts: Sequence[Node], page: Skyline) -> Spot | None:
-        """The alternative set highest on the page (then the one ending higher, then the first)."""
+        """The alternative set highest on the page (then the one ending higher, then the first); a
+        group's drawing read after the group before it on the page (``Skyline.after``)."""
         best = None
         for node in alts:
             w, h = extent(node)
-            at = page.where(w, h)
+            at = page.where(w, h, follows=follows(alts, page))
             if at is not None and (best is None or (round(at[1], 6), round(at[1] + h, 6)) < best[0]):
                 best = ((round(at[1], 6), round(at[1] + h, 6)), Spot(node, at[0], at[1], w, h))
         return None if best is None else best[1]
+
+    def other_places(alts: Sequence[Node], page: Skyline, taken: Spot) -> list[Spot]:
+        """A group's other places on the page than the highest (``GROUP_TRIES`` of them, one an x):
+        the outer group set highest at the right left the crank's group no place after it."""
+        out, xs = [], {round(taken.x, 3)}
+        for node in alts:
+            w, h = extent(node)
+            for x, d in page.places(w, h, follows=follows(alts, page)):
+                if round(x, 3) not in xs:
+                    xs.add(round(x, 3))
+                    out.append(Spot(node, x, d, w, h))
+        return sorted(out, key=lambda s: (round(s.d, 6), s.x))[:GROUP_TRIES]
 
     def grids(children: list, page: Skyline) -> list[Grid]:
         return [g for g in (Grid(children, c) for c in range(1, len(children) + 1)) if extent(g)[0] <= page.W + 1e-9]
@@ -169,6 +197,21 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
                         if whole is None or (split is not None and len(split) < len(whole)):
                             return split
                         return whole
+            if spot is not None and _is_group(alts[0]) and any(_is_group(q[0]) for q in queue):
+                # a group with another after it: of its places, the one that needs fewest sheets
+                # (the first of those), the groups kept in the analysis' order
+                trials = []
+                for k, s_ in enumerate([spot] + other_places(alts, pages[-1], spot)):
+                    tried = copy.deepcopy(pages)
+                    tried[-1].put(s_)
+                    done = run([list(q) for q in queue], tried)
+                    if done is not None:
+                        trials.append((len(done), k, done))
+                    if k == 0 and done is not None and not _later_group_moved(done, len(pages)):
+                        break            # the highest place keeps the next group on this sheet
+                if trials:
+                    return min(trials, key=lambda t: t[:2])[2]
+                return None
             if spot is None:
                 if not pages[-1].spots:
                     return None                   # larger than an empty sheet
@@ -183,6 +226,22 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
 
     out = run([list(alts) for alts in units], pages)
     return None if out is None else [p.spots for p in out]
+
+
+GROUP_TRIES = 3    # a group's places tried besides the highest (``pack``)
+
+
+def _later_group_moved(pages: list[Skyline], n: int) -> bool:
+    """Whether a set packed from ``n`` sheets set a group on a later sheet than the ``n``-th."""
+    return any(_is_group(s.node) for p in pages[n:] for s in p.spots)
+
+
+def _is_group(node: Node) -> bool:
+    """Whether a unit holds a group's drawing (a leaf "group II(2-3)" as drawn, "groups 0" as
+    planned), beside its force plan."""
+    if isinstance(node, Leaf):
+        return node.name.startswith(("group ", "groups "))
+    return any(_is_group(c) for c in getattr(node, "children", ()))
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:

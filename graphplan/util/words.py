@@ -389,6 +389,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "forces on group": ("  сили, що діють на групу:", "  forces on the group:"),
     "normal component": ("  {sym} = {mm} {mm_} · μ_F = {v} {N} (уздовж ланки, з плану сил)",
                          "  {sym} = {mm} {mm_} · μ_F = {v} {N} (along the link, from the force plan)"),
+    "tau opposite": ("знак «−»: {sym} спрямована протилежно прийнятому",
+                     "the minus: {sym} acts opposite to the sense assumed"),
     "reactions from plan": ("  реакції з плану сил:", "  reactions from the force plan:"),
     "lever head": ("Важіль Жуковського (план швидкостей, повернутий на 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):",
                    "Zhukovsky lever (velocity plan turned 90°, μ_v = {mv} {(m/s)/mm}, pa = {pa} {mm}):"),
