@@ -15,7 +15,7 @@ from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
-from graphplan.util.words import num
+from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
 
 def _clean(doc: Any) -> Any:
@@ -101,8 +101,41 @@ def dynamics_json(f) -> dict[str, Any]:
     })
 
 
+def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
+    """Table 1's columns as the sheet and the terminal both print them, one count of decimals a
+    column (``util.words.column_decimals``): φ (the crank's turn from position 0) and the crank
+    angle to 0.1°, I*_m, dI*_m/dφ, the moments M*_c and M*_d to the decimals of both (one diagram,
+    one μ_M), and the works and energies A_c, A_d, ΔT (graphical) and ΔT (exact) to the decimals of
+    all four (one unit, the graphical beside the exact). A_d prints the printed ΔT plus the printed
+    A_c (graphic.flywheel reads ΔT = A_d − A_c), so every row checks by subtraction to the digit."""
+    ps = doc["positions"]
+    out = {"turn": [fixed(p["turn_deg"], lang, 1) for p in ps], "phi": [fixed(p["phi_deg"], lang, 1) for p in ps],
+           "inertia": decimals_column([p["inertia"] for p in ps], lang),
+           "d_inertia": decimals_column([p["d_inertia"] for p in ps], lang)}
+    moments = [[p["moment_resistance"] for p in ps], [p["moment_driving"] for p in ps]]
+    d = column_decimals(moments[0] + moments[1])
+    out["moment_resistance"], out["moment_driving"] = (decimals_column(m, lang, d) for m in moments)
+    a_c = [p["graphical"]["work_resistance"] for p in ps]
+    d_t = [p["graphical"]["energy"] for p in ps]
+    d = energy_decimals(doc)
+    a_d = [round(t, d) + round(a, d) for t, a in zip(d_t, a_c)]
+    out.update(work_resistance=decimals_column(a_c, lang, d), work_driving=decimals_column(a_d, lang, d),
+               energy_graphical=decimals_column(d_t, lang, d),
+               energy=decimals_column([p["energy"] for p in ps], lang, d))
+    return out
+
+
+def energy_decimals(doc: dict[str, Any]) -> int:
+    """The decimals of Table 1's works and energies (A_c, A_d and ΔT graphical, ΔT exact): one count
+    for the four columns, which the approximate flywheel's ΔT_max and ΔT_min are printed to too."""
+    ps = doc["positions"]
+    a_c = [p["graphical"]["work_resistance"] for p in ps]
+    d_t = [p["graphical"]["energy"] for p in ps]
+    return column_decimals(a_c + d_t + [t + a for t, a in zip(d_t, a_c)] + [p["energy"] for p in ps])
+
+
 WORDS = {
-    "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; ΔT графічно і точно)",
+    "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; роботи й ΔT графічно, ΔT точно)",
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
            "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер − Iрот·i²", "merk": "наближено (Мерцалов)",
@@ -112,7 +145,7 @@ WORDS = {
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
            "u": {"rotor": "Iрот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
                  "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
-    "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
+    "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; the works and ΔT graphical, ΔT exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Merkalov)",
@@ -141,13 +174,16 @@ def dynamics_table(f, lang: str = "uk") -> str:
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
     turn = "пов., °" if lang == "uk" else "turn, °"
     out.append(w["turn"])
-    head = (f"{'№':>3} {'φ, °':>7} {turn:>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {gr:>9} "
-            f"{'ΔT':>9}")
-    out.append(head)
-    for p in doc["positions"]:
-        out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['turn_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
-                   f"{p['moment_resistance']:9.3f} {p['moment_driving']:8.3f} {p['work_resistance']:9.3f} "
-                   f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
+    cols = table_columns(doc, lang)
+    keys = ("phi", "turn", "inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance",
+            "work_driving", "energy_graphical", "energy")
+    names = ("φ, °", turn, "I*m", "dI*/dφ", "M*c", "Md*", "Ac гр." if lang == "uk" else "Ac gr.",
+             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT")
+    # the sheet's Table 1 cell for cell (table_columns), each column as wide as its widest entry
+    widths = [max(len(n), *(len(c) for c in cols[k])) for n, k in zip(names, keys)]
+    out.append(f"{'№':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
+    for j, p in enumerate(doc["positions"]):
+        out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
     fw = doc["flywheel"]
     exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
     none = "не потрібен" if lang == "uk" else "not needed"
@@ -404,7 +440,7 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     p = approximate_parts(doc)
     fw = doc["flywheel"]
     sym, val = constant_terms(fw["rotor_reduced"], fw["reducer_reduced"], lang)
-    hi, lo = (num(p[k], lang).replace("-", "−") for k in ("dt_max", "dt_min"))    # as Table 1's column prints them
+    hi, lo = decimals_column([p["dt_max"], p["dt_min"]], lang, energy_decimals(doc))    # as Table 1's column prints them
     lo = f"({lo})" if p["dt_min"] < 0 else lo
     mean = "I^*_{м сер}" if uk else "I^*_{m mean}"
     symbols = f"(ΔT_{{max}} − ΔT_{{min}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""

@@ -20,7 +20,7 @@ from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
 from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, motor_delta, motor_omega,
-                                       motor_speed_note, not_needed, redrawn_note, reducer_note, sig, tangents_note,
+                                       motor_speed_note, not_needed, redrawn_note, reducer_note, sig, table_columns, tangents_note,
                                        wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
@@ -28,7 +28,7 @@ from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError
-from graphplan.util.words import LANGS, column, fixed, num
+from graphplan.util.words import LANGS, fixed, num
 
 
 def fmt(v: float | None, lang: str, digits: int = 4) -> str:
@@ -105,24 +105,20 @@ ROW = 6.0     # mm: a row of the tables
 def positions_table(doc: dict, lang: str) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
-    crank's sense; each column's values below its resolution print 0 (``util.words.column``)."""
+    crank's sense; one count of decimals a column, the terminal's cells (report.dynamics
+    ``table_columns``)."""
     w = WORDS[lang]
     uk = lang == "uk"
     head = [w["n"], "φ, °", "I^*_м, кг·м²" if uk else "I^*_m, kg·m²", "dI^*_м/dφ, кг·м²" if uk else "dI^*_m/dφ, kg·m²",
             "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m",
             "A_с гр., Дж" if uk else "A_c gr., J", "A_д гр., Дж" if uk else "A_d gr., J",
             "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J"]
-    ps = doc["positions"]
-    cols = [column([p[k] for p in ps], lang) for k in ("inertia", "d_inertia", "moment_resistance", "moment_driving")]
-    # the graphical columns as the work diagram is read: A_c and A_d measured at each division, ΔT = A_d − A_c
-    # their difference (graphic.flywheel) — so A_d here is ΔT + A_c to the unit, the row checks by subtraction
-    a_c = [p["graphical"]["work_resistance"] for p in ps]
-    d_t = [p["graphical"]["energy"] for p in ps]
-    cols += [column(a_c, lang), column([t + a for t, a in zip(d_t, a_c)], lang), column(d_t, lang)]
-    cols.append(column([p["energy"] for p in ps], lang))
+    cols = table_columns(doc, lang)         # the terminal's Table 1, cell for cell
+    keys = ("inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance", "work_driving",
+            "energy_graphical", "energy")
     rows = [head]
-    for k, p in enumerate(ps):
-        rows.append([str(p["index"]), fixed(p["turn_deg"], lang, 1)] + [c[k] for c in cols])
+    for k, p in enumerate(doc["positions"]):
+        rows.append([str(p["index"]), cols["turn"][k]] + [cols[c][k] for c in keys])
     return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
                  title=w["positions"])
 
