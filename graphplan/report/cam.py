@@ -154,10 +154,21 @@ def printed_error(graphical: str, exact: str, judged: bool) -> float | None:
     return 100.0 * (g - e) / abs(e) if e else None
 
 
+def ruler_decimals(values, mm, precision: float) -> int:
+    """The most decimals a column read off the drawing writes: one past the decimal of its reading's
+    resolution, μ × the ruler's step (μ_s = 0,38 mm/mm at 0.5 mm: ±0,19 mm, so two: 0,38 from a
+    1 mm ordinate, 31,99 from 84 mm — not 31,985, five figures out of a ruler's three). An exact
+    ruler (0) or nothing read: no bound."""
+    mus = [abs(v / y) for v, y in zip(values, mm) if y and v]
+    if not mus or precision <= 0:
+        return 99
+    return max(0, math.ceil(-math.log10(mus[0] * precision))) + 1
+
+
 def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     """Table 1's columns as the sheet and the terminal both print them: one count of decimals a
     column, the exact and the graphical value of a quantity to the same decimals (``util.words.
-    column_decimals`` over both), δ % to 0.01 worked out from the printed pair (``printed_error``;
+    column_decimals`` over both, no finer than the reading supports: ``ruler_decimals``), δ % to 0.01 worked out from the printed pair (``printed_error``;
     "*" past the lab's 5 %), the ruler's ordinates y to its 0.1 mm (0.01 mm for a finer ruler), ϑ to
     0.1°; s (translating, mm; rocking ψ, °) and ds/dφ (per radian of the cam's turn)."""
     rocking = doc["follower"] == "rocking"
@@ -170,12 +181,12 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     for name, q in (("s", "s"), ("v", "ds_dphi")):
         ex = [p["exact"][q + key] * k for p in ps]
         gr = [p["graphical"][q + key] * k for p in ps]
-        d = column_decimals(ex + gr)
+        d = min(column_decimals(ex + gr), ruler_decimals(gr, [p["graphical"][q + "_mm"] for p in ps], precision))
         out[name], out[name + "_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
         out[name + "_mm"] = [fixed(p["graphical"][q + "_mm"], lang, ruler).replace("-", "−") for p in ps]
         errs = [printed_error(g, e, p["error_pct"][q] is not None)
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
-        out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
+        out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
                            for v in errs]
     out["theta"] = [fixed(p["exact"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
     out["theta_gr"] = [fixed(p["graphical"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]

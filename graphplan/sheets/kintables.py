@@ -200,7 +200,7 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
     for key, e in items:
         value, truth, delta = cells[key]
         cell = percent(delta, lang=lang)
-        if delta is not None and abs(delta) > LAB_LIMIT:
+        if delta is not None and abs(round(delta, 2)) > LAB_LIMIT:     # the printed δ past 5 %
             cell += MARK
             notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang, precision)))
         rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
