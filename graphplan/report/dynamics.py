@@ -125,6 +125,25 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     return out
 
 
+FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
+
+
+def flywheel_errors(doc: dict[str, Any]) -> dict[str, float | None]:
+    """Table 2's δ of each method, % — 100·(I − I_exact)/I_exact worked out from the two printed
+    values (four figures, ``sig``), so a reader who recomputes δ from the table gets the printed δ
+    (84,47 against 82,63: +2,23, where the unrounded values give +2,24; the JSON keeps those). A
+    method whose I (or the exact one) prints as none needed keeps its unrounded δ (or none)."""
+    fw = doc["flywheel"]
+    out: dict[str, float | None] = {}
+    for key, method in FLYWHEEL_METHODS:
+        if fw[key] is None or not (fw["needed"] and fw["exact"] > 0 and fw[method] > 0):
+            out[key] = fw[key]
+            continue
+        e, g = (float(sig(fw[k], "en")) for k in ("exact", method))
+        out[key] = 100.0 * (g - e) / e
+    return out
+
+
 def energy_decimals(doc: dict[str, Any]) -> int:
     """The decimals of Table 1's works and energies (A_c, A_d and ΔT graphical, ΔT exact): one count
     for the four columns, which the approximate flywheel's ΔT_max and ΔT_min are printed to too."""
@@ -185,18 +204,19 @@ def dynamics_table(f, lang: str = "uk") -> str:
     for j, p in enumerate(doc["positions"]):
         out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
     fw = doc["flywheel"]
-    exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
+    exact = f"{sig(fw['exact'], 'en'):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
     none = "не потрібен" if lang == "uk" else "not needed"
-    val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    val = lambda v: f"{sig(v, 'en'):>10}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    errs = flywheel_errors(doc)          # Table 2's: δ from the printed values
     approx = w["approx"] + ((" − I*ред" if lang == "uk" else " − I*red") if fw["reducer_reduced"] > 0 else "")
-    motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
+    motor = (f"{sig(fw['motor'], 'en'):>10}" if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:54} {exact}",
-            f"  {w['graph']:54} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"  {w['graph']:54} {val(fw['graphical'])}  {_pct(errs['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-            f"  {approx:54} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
-            f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {approx:54} {val(fw['approximate'])}  {_pct(errs['approximate_error_pct'])}",
+            f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(errs['merkalov_error_pct'])}",
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang), reducer_note(f, lang),
@@ -225,7 +245,8 @@ def _term(text: str) -> str:
 
 
 def _pct(v: float | None) -> str:
-    return "—" if v is None else f"{v:+.3f} %"
+    """A method's δ as Table 2 prints it (``error_text``: two decimals, signed)."""
+    return "—" if v is None else error_text(v, "en").replace("−", "-") + " %"
 
 
 # -- the notes the terminal and the sheet share -----------------------------------------------------

@@ -19,9 +19,9 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, motor_delta, motor_omega,
-                                       motor_speed_note, not_needed, redrawn_note, reducer_note, sig, table_columns, tangents_note,
-                                       wittenbauer_note)
+from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_errors, motor_delta,
+                                       motor_omega, motor_speed_note, not_needed, redrawn_note, reducer_note, sig,
+                                       table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -130,7 +130,7 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     fw = doc["flywheel"]
 
     def pct(v: float | None) -> str:          # over the lab's 5 %: marked, the notes say why
-        return "—" if v is None else error_text(v, lang) + ("*" if abs(v) > LAB_LIMIT else "")
+        return "—" if v is None else error_text(v, lang) + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
     def value(v: float) -> str:               # a method's J no larger than rotor and reducer: none needed
         return sig(v, lang) if v > 0 else w["not"]
     exact = (sig(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
@@ -139,11 +139,12 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic)
     approx = w["approx"] + (" − I_рот·i²" if lang == "uk" else " − I_rotor·i²") + (
         (" − I^*_ред" if lang == "uk" else " − I^*_red") if fw["reducer_reduced"] > 0 else "")
+    errs = flywheel_errors(doc)              # δ worked out from the printed values, as the terminal's
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
             [w["exact"], exact, error_text(0.0, lang) if fw["exact"] > 0 else "—"],
-            [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
-            [approx, value(fw["approximate"]), pct(fw["approximate_error_pct"])],
-            [w["merk"], value(fw["merkalov"]), pct(fw["merkalov_error_pct"])],
+            [w["graph"], value(fw["graphical"]), pct(errs["error_pct"])],
+            [approx, value(fw["approximate"]), pct(errs["approximate_error_pct"])],
+            [w["merk"], value(fw["merkalov"]), pct(errs["merkalov_error_pct"])],
             [w["motor_fl"], motor, ""]]
     rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
     # under the table, the approximate row's arithmetic: its printed numbers give its printed value
@@ -218,10 +219,11 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
+    errs = flywheel_errors(doc)              # Table 2's δ
     for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
                      ("merkalov_error_pct", "why_merk")):
-        if fw[key] is not None and abs(fw[key]) > LAB_LIMIT:
-            said.append(w["mark"] + w[why].format(e=error_text(fw[key], lang), n=doc["divisions"],
+        if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
+            said.append(w["mark"] + w[why].format(e=error_text(errs[key], lang), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     if short is not None:
