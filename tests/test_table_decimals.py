@@ -60,16 +60,16 @@ def test_a_column_prints_one_count_of_decimals_within_half_its_last_unit(values)
         assert abs(value(c) - v) <= 0.5 * 10.0 ** -d + 1e-9 * max(1.0, abs(v))
     big = max(abs(v) for v in values)
     order = lambda v: math.floor(math.log10(float(f"{v:.2e}")))      # noqa: E731  after rounding to 3 figures
-    if d:     # the largest shows at most five figures; the smallest meaningful one three, unless that cap stops it
-        assert d + order(big) + 1 <= 5
+    if d:     # the largest shows at most four figures; the smallest meaningful one three, unless that cap stops it
+        assert d + order(big) + 1 <= 4
         small = min(abs(v) for v in values if abs(v) >= 0.01 * big)
-        assert d + order(small) + 1 == 3 or d + order(big) + 1 == 5
+        assert d + order(small) + 1 == 3 or d + order(big) + 1 == 4
 
 
 def test_the_reviews_columns():
     """The columns the reviews marked, as they now print."""
     assert decimals_column([60.93, -38.08, -179.0, -323.7, 0.0], "uk") == ["60,9", "−38,1", "−179,0", "−323,7", "0"]
-    assert decimals_column([22.85, 205.6, 872.0, 1021.0], "uk") == ["22,9", "205,6", "872,0", "1021,0"]
+    assert decimals_column([22.85, 205.6, 872.0, 1021.0], "uk") == ["23", "206", "872", "1021"]    # four figures at most
     assert decimals_column([12.005], "en") == ["12.0"]
 
 

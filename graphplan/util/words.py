@@ -137,7 +137,7 @@ def column(values, lang: str = "en", digits: int = DIGITS) -> list[str]:
 
 MEANINGFUL = 0.01   # a value below this share of its column's largest |value| is not the one the decimals are set by
 LEAST_FIGURES = 3   # significant figures the column's smallest meaningful value keeps …
-MOST_FIGURES = 5    # … unless its largest would then show more than these
+MOST_FIGURES = 4    # … unless its largest would then show more than these (DIGITS: a sheet's every number)
 
 
 def column_decimals(values, least: int = LEAST_FIGURES, most: int = MOST_FIGURES,
@@ -145,7 +145,7 @@ def column_decimals(values, least: int = LEAST_FIGURES, most: int = MOST_FIGURES
     """One count of decimals for a table's column (or for the columns of one quantity, graphical
     beside exact): enough that the smallest value at least ``meaningful`` of the largest keeps
     ``least`` significant figures, no more than leave the largest ``most`` (ΔT 60,93 / −38,08 /
-    −514,1 → one decimal: 60,9 / −38,1 / −514,1; s 0,3987 … 29,09 mm → three: 0,399 … 29,090)."""
+    −323,7 → one decimal: 60,9 / −38,1 / −323,7; A_c 22,85 … 1021 → none: 23 … 1021)."""
     vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
     if not vals:
         return 0
