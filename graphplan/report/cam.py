@@ -9,6 +9,7 @@ import numpy as np
 
 from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import CamConstruction, errors_pct
+from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
@@ -138,9 +139,6 @@ WORDS = {
                     "R, mm", "R gr."],
            "warn": "Warnings"},
 }
-
-
-LAB_LIMIT = 5.0      # the lab's limit of an error, % (REFERENCE §1.6): a δ past it is marked "*"
 
 
 def printed_error(graphical: str, exact: str, judged: bool) -> float | None:

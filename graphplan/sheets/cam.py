@@ -11,7 +11,6 @@ from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import POLE_MM, closing_warning, construct
-from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
 from graphplan.report.cam import cam_json, table_columns

@@ -28,7 +28,7 @@ from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError
-from graphplan.util.words import LANGS, fixed, num
+from graphplan.util.words import LANGS, num
 
 
 def fmt(v: float | None, lang: str, digits: int = 4) -> str:
