@@ -161,12 +161,6 @@ def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0
     return ["0" if e.value == 0 else fixed(signed(e), lang, d) for e in entries]
 
 
-def rate(e: Entry, mu: float, lang: str, precision: float = 0.5) -> str:
-    """ω or ε as the tables print it: signed, to the figures of the vector it is read from, in
-    decimals as the sheet's acceleration tables write it (``places`` of the one value)."""
-    return rate_column([e], mu, lang, precision)[0]
-
-
 def signed(e: Entry) -> float:
     """ω and ε keep their sign in the tables; vectors are magnitudes."""
     return e.vector.real if e.kind in ("omega", "epsilon") else e.value
