@@ -187,8 +187,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
                f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
-               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {doc['work_resistance']:.5g} {u['J']}, "
-               f"Md* = {doc['moment_driving']:.5g} {u['Nm']}")
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {sig(doc['work_resistance'], 'en')} {u['J']}, "
+               f"Md* = {sig(doc['moment_driving'], 'en')} {u['Nm']}")       # four figures, as the sheet's notes
     out += ["", w["pos"]]
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
     turn = "пов., °" if lang == "uk" else "turn, °"

@@ -205,8 +205,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
              f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
-             f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang)} {J}, "
-             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang)} {Nm}; "
+             f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
+             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
