@@ -171,3 +171,21 @@ def test_acceleration_tables_same_decimals_and_delta_from_the_printed_values(lan
                 assert value(cells[-1]) == value(r[4])
                 checked += 1
     assert checked > 8
+
+
+def test_dynamics_table_2_one_count_and_delta_from_the_printed_values(dynamics):
+    """Table 2's I column (the shaper's printed 328,3 beside 54,99) one count of decimals; each
+    method's δ from its printed I and the exact one's; the terminal's rows the same numbers."""
+    from graphplan.report.dynamics import dynamics_json, dynamics_table
+    from graphplan.sheets.dynamics import flywheel_table
+    f, lang = dynamics
+    doc = dynamics_json(f)
+    rows = grid(flywheel_table(doc, lang))[1:]
+    numbers = [r for r in rows if NUMBER.match(r[1])]
+    assert len(numbers) >= 4 and len(one_count([r[1] for r in numbers])) == 1, numbers
+    exact = value(numbers[0][1])
+    term = dynamics_table(f, lang)
+    for r in numbers[1:4]:
+        if r[2] not in ("—", ""):
+            assert f"{100 * (value(r[1]) - exact) / exact:.2f}" == f"{value(r[2]):.2f}", r
+            assert f"{r[1]}  {r[2].rstrip('*').replace('−', '-')} %" in term, r

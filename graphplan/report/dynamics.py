@@ -128,18 +128,34 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
 
 
+def flywheel_decimals(doc: dict[str, Any]) -> int:
+    """Table 2's I column to one count of decimals: four figures for its smallest value, no more
+    than four for its largest (``util.words.column_decimals``; 328,3 beside 55,0, not 54,99), the
+    notes' results of the flywheel's arithmetic the same."""
+    fw = doc["flywheel"]
+    values = [fw[k] for k in ("graphical", "approximate", "merkalov", "motor") if fw[k] > 0]
+    return column_decimals(values + ([fw["exact"]] if fw["needed"] else []), least=4)
+
+
+def flywheel_text(v: float, lang: str, decimals: int | None) -> str:
+    """A flywheel's I as Table 2 prints it: to the column's ``decimals`` (four figures, ``sig``,
+    where none is given), trailing zeros kept, a true minus."""
+    return sig(v, lang) if decimals is None else fixed(v, lang, decimals).replace("-", "−")
+
+
 def flywheel_errors(doc: dict[str, Any]) -> dict[str, float | None]:
     """Table 2's δ of each method, % — 100·(I − I_exact)/I_exact worked out from the two printed
-    values (four figures, ``sig``), so a reader who recomputes δ from the table gets the printed δ
+    values (``flywheel_text``), so a reader who recomputes δ from the table gets the printed δ
     (84,47 against 82,63: +2,23, where the unrounded values give +2,24; the JSON keeps those). A
     method whose I (or the exact one) prints as none needed keeps its unrounded δ (or none)."""
     fw = doc["flywheel"]
+    d = flywheel_decimals(doc)
     out: dict[str, float | None] = {}
     for key, method in FLYWHEEL_METHODS:
         if fw[key] is None or not (fw["needed"] and fw["exact"] > 0 and fw[method] > 0):
             out[key] = fw[key]
             continue
-        e, g = (float(sig(fw[k], "en")) for k in ("exact", method))
+        e, g = (float(flywheel_text(fw[k], "en", d).replace("−", "-")) for k in ("exact", method))
         out[key] = 100.0 * (g - e) / e
     return out
 
@@ -204,12 +220,13 @@ def dynamics_table(f, lang: str = "uk") -> str:
     for j, p in enumerate(doc["positions"]):
         out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
     fw = doc["flywheel"]
-    exact = f"{sig(fw['exact'], 'en'):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
+    fd = flywheel_decimals(doc)              # Table 2's one count of decimals
+    exact = f"{flywheel_text(fw['exact'], 'en', fd):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
     none = "не потрібен" if lang == "uk" else "not needed"
-    val = lambda v: f"{sig(v, 'en'):>10}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    val = lambda v: f"{flywheel_text(v, 'en', fd):>10}" if v > 0 else f"{none:>10}"   # noqa: E731  (J below rotor + reducer)
     errs = flywheel_errors(doc)          # Table 2's: δ from the printed values
     approx = w["approx"] + ((" − I*ред" if lang == "uk" else " − I*red") if fw["reducer_reduced"] > 0 else "")
-    motor = (f"{sig(fw['motor'], 'en'):>10}" if fw["motor"] > 0 else
+    motor = (f"{flywheel_text(fw['motor'], 'en', fd):>10}" if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:54} {exact}",
@@ -219,7 +236,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(errs['merkalov_error_pct'])}",
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang), reducer_note(f, lang),
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
                                              tangents_note(f, lang), approximate_note(doc, lang, formula=True)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
@@ -419,18 +436,20 @@ def reducer_note(f, lang: str) -> str | None:
             else f"I^*_red{NB}={NB}{sig(red, lang)}{NB}kg·m²: the reducer's moment of inertia reduced to the crank")
 
 
-def _fl(v: float, lang: str) -> str:
-    """A flywheel's value (markup) ending its arithmetic: kg·m², or ≤ 0 and none needed."""
+def _fl(v: float, lang: str, decimals: int | None = None) -> str:
+    """A flywheel's value (markup) ending its arithmetic, to Table 2's ``decimals``: kg·m², or ≤ 0
+    and none needed."""
     kgm2 = "кг·м²" if lang == "uk" else "kg·m²"
     if v > 0:
-        return f"{sig(v, lang)}{NB}{kgm2}"
+        return f"{flywheel_text(v, lang, decimals)}{NB}{kgm2}"
     return (f"{sig(v, lang)}{NB}{kgm2} ≤ 0: маховик не потрібен" if lang == "uk" else
             f"{sig(v, lang)}{NB}{kgm2} ≤ 0: no flywheel is needed")
 
 
-def wittenbauer_note(f, lang: str) -> str:
+def wittenbauer_note(f, lang: str, decimals: int | None = None) -> str:
     """The graphical flywheel's arithmetic (markup), every input printed: J = μ_T·|kl|/(ω_m²·δ)
-    with the numbers, then I_мах = J − I_рот·i² (− I*_ред; Table 3 prints I_рот·i²) (REFERENCE §9)."""
+    with the numbers, then I_мах = J − I_рот·i² (− I*_ред; Table 3 prints I_рот·i²) (REFERENCE §9), the
+    result to Table 2's ``decimals`` (``flywheel_decimals``; four figures where none are given)."""
     uk = lang == "uk"
     sym, _ = constant_terms(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced, lang)
     fl = "I_мах" if uk else "I_fl"
@@ -438,7 +457,7 @@ def wittenbauer_note(f, lang: str) -> str:
     wm, d = f.dyn.omega_mean, f.dyn.delta
     # each "numbers = result unit" on one line (no-break spaces): a result never wrapped off its arithmetic
     return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
-            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang)}")
+            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang, decimals)}")
 
 
 def approximate_parts(doc: dict) -> dict[str, float]:
@@ -468,7 +487,7 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
-            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang)}")
+            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang, flywheel_decimals(doc))}")
 
 
 def error_text(v: float, lang: str) -> str:

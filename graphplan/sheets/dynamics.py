@@ -19,9 +19,9 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_errors, motor_delta,
-                                       motor_omega, motor_speed_note, not_needed, redrawn_note, reducer_note, sig,
-                                       table_columns, tangents_note, wittenbauer_note)
+from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+                                       flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
+                                       redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -131,10 +131,12 @@ def flywheel_table(doc: dict, lang: str) -> Record:
 
     def pct(v: float | None) -> str:          # over the lab's 5 %: marked, the notes say why
         return "—" if v is None else error_text(v, lang) + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
+    d = flywheel_decimals(doc)                # one count of decimals for the column, the notes' results too
+
     def value(v: float) -> str:               # a method's J no larger than rotor and reducer: none needed
-        return sig(v, lang) if v > 0 else w["not"]
-    exact = (sig(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
-    motor = (sig(fw["motor"], lang) if fw["motor"] > 0 else
+        return flywheel_text(v, lang, d) if v > 0 else w["not"]
+    exact = (flywheel_text(fw["exact"], lang, d) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
+    motor = (flywheel_text(fw["motor"], lang, d) if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
     # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic)
     approx = w["approx"] + (" − I_рот·i²" if lang == "uk" else " − I_rotor·i²") + (
@@ -210,7 +212,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
-             wittenbauer_note(f, lang),
+             wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
