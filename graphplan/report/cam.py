@@ -9,9 +9,10 @@ import numpy as np
 
 from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import CamConstruction, errors_pct
+from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
-from graphplan.util.words import fixed, num
+from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
 
 def _f(x) -> float | None:
@@ -108,8 +109,8 @@ WORDS = {
            "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} {q} не замкнулося на Δ = {r} мм "
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
-           "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
-                    "R, мм", "R граф., мм"],
+           "head": ["φ, °", "s, {s}", "s граф.", "δs, %", "ds/dφ, {v}", "ds/dφ граф.", "δ, %", "ϑ, °", "ϑ граф.",
+                    "R, мм", "R граф."],
            "warn": "Попередження"},
     "en": {"title": "Cam synthesis", "translating": "translating follower", "rocking": "rocking follower",
            "law": "laws: rise {r}, return {t}",
@@ -134,10 +135,64 @@ WORDS = {
            "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} {q} missed its closing by "
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
-           "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
-                    "R, mm", "R gr., mm"],
+           "head": ["φ, °", "s, {s}", "s gr.", "δs, %", "ds/dφ, {v}", "ds/dφ gr.", "δ, %", "ϑ, °", "ϑ gr.",
+                    "R, mm", "R gr."],
            "warn": "Warnings"},
 }
+
+
+def printed_error(graphical: str, exact: str, judged: bool) -> float | None:
+    """δ = 100·(g − e)/|e| % worked out from the two printed numbers (the sign by the graphical
+    value's side of the exact, as graphic.cam ``errors_pct``), so a reader who recomputes δ from the
+    table gets the printed δ; None where the exact value has no error (below 1 % of the largest) or
+    prints 0."""
+    if not judged or graphical in ("—", "") or exact in ("—", ""):
+        return None
+    g, e = (float(x.replace("−", "-").replace(",", ".")) for x in (graphical, exact))
+    return 100.0 * (g - e) / abs(e) if e else None
+
+
+def ruler_decimals(values, mm, precision: float) -> int:
+    """The most decimals a column read off the drawing writes: one past the decimal of its reading's
+    resolution, μ × the ruler's step (μ_s = 0,38 mm/mm at 0.5 mm: ±0,19 mm, so two: 0,38 from a
+    1 mm ordinate, 31,99 from 84 mm — not 31,985, five figures out of a ruler's three). An exact
+    ruler (0) or nothing read: no bound."""
+    mus = [abs(v / y) for v, y in zip(values, mm) if y and v]
+    if not mus or precision <= 0:
+        return 99
+    return max(0, math.ceil(-math.log10(mus[0] * precision))) + 1
+
+
+def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
+    """Table 1's columns as the sheet and the terminal both print them: one count of decimals a
+    column, the exact and the graphical value of a quantity to the same decimals (``util.words.
+    column_decimals`` over both, no finer than the reading supports: ``ruler_decimals``), δ % to 0.01 worked out from the printed pair (``printed_error``;
+    "*" past the lab's 5 %), the ruler's ordinates y to its 0.1 mm (0.01 mm for a finer ruler), ϑ to
+    0.1°; s (translating, mm; rocking ψ, °) and ds/dφ (per radian of the cam's turn)."""
+    rocking = doc["follower"] == "rocking"
+    key = "_deg" if rocking else "_m"
+    k = 1.0 if rocking else 1000.0
+    ps = doc["positions"]
+    precision = doc.get("precision_mm", 0.5)
+    ruler = 1 if precision >= 0.1 or precision == 0 else 2
+    out: dict[str, list[str]] = {"phi": [fixed(p["phi_deg"], lang, 1) for p in ps]}
+    for name, q in (("s", "s"), ("v", "ds_dphi")):
+        ex = [p["exact"][q + key] * k for p in ps]
+        gr = [p["graphical"][q + key] * k for p in ps]
+        d = min(column_decimals(ex + gr), ruler_decimals(gr, [p["graphical"][q + "_mm"] for p in ps], precision))
+        out[name], out[name + "_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
+        out[name + "_mm"] = [fixed(p["graphical"][q + "_mm"], lang, ruler).replace("-", "−") for p in ps]
+        errs = [printed_error(g, e, p["error_pct"][q] is not None)
+                for g, e, p in zip(out[name + "_gr"], out[name], ps)]
+        out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
+                           for v in errs]
+    out["theta"] = [fixed(p["exact"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
+    out["theta_gr"] = [fixed(p["graphical"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
+    ex = [p["exact"]["radius_m"] * 1000 for p in ps]
+    gr = [p["graphical"]["radius_mm"] * doc["scales"]["mu_l_m_mm"] * 1000 for p in ps]
+    d = column_decimals(ex + gr)
+    out["R"], out["R_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
+    return out
 
 
 def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
@@ -198,20 +253,18 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     """The terminal's report: the data, the base radius exact and measured, the per-division table."""
     w = WORDS[lang]
-    n = lambda x, d=4: num(x, lang, d) if x is not None else "—"                # noqa: E731
     rocking = doc["follower"] == "rocking"
-    sc = doc["scales"]
     lines = [f"{title} — {w['title']}"] + [plain(x) for x in cam_lines(doc, lang)]
     lines.append("")
-    key = "_deg" if rocking else "_m"
     q = symbols(rocking)                     # rocking: ψ, dψ/dφ (an angle is not s)
-    rows = [[x.replace("ds/dφ", plain(q["v"])).replace("δs", "δ" + q["s"]).replace("s ", q["s"] + " ")
-             for x in w["head"]]]
-    for p in doc["positions"]:
-        e, gr, err = p["exact"], p["graphical"], p["error_pct"]
-        rows.append([n(p["phi_deg"]), n(e["s" + key]), n(gr["s" + key]), n(err["s"], 3), n(e["ds_dphi" + key]),
-                     n(gr["ds_dphi" + key]), n(err["ds_dphi"], 3), n(e["pressure_angle_deg"]),
-                     n(gr["pressure_angle_deg"]), n(e["radius_m"] * 1000), n(gr["radius_mm"] * sc["mu_l_m_mm"] * 1000)])
+    unit = "°" if rocking else ("мм" if lang == "uk" else "mm")
+    per = unit + "/" + ("рад" if lang == "uk" else "rad")
+    head = [x.replace("ds/dφ", plain(q["v"])).replace("δs", "δ" + q["s"]) for x in w["head"]]
+    rows = [[(q["s"] + x[1:] if x[:2] in ("s ", "s,") else x).replace("{s}", unit).replace("{v}", per) for x in head]]
+    cols = table_columns(doc, lang)          # the sheet's Table 1 cell for cell (its "*" explained there)
+    keys = ("phi", "s", "s_gr", "ds", "v", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
+    for j in range(len(doc["positions"])):
+        rows.append([cols[c][j].rstrip("*") for c in keys])
     widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
     for r in rows:
         lines.append("  ".join(x.rjust(wd) for x, wd in zip(r, widths)).replace("-", "−"))

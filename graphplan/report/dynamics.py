@@ -15,7 +15,7 @@ from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
-from graphplan.util.words import num
+from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
 
 def _clean(doc: Any) -> Any:
@@ -101,8 +101,76 @@ def dynamics_json(f) -> dict[str, Any]:
     })
 
 
+def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
+    """Table 1's columns as the sheet and the terminal both print them, one count of decimals a
+    column (``util.words.column_decimals``): φ (the crank's turn from position 0) and the crank
+    angle to 0.1°, I*_m, dI*_m/dφ, the moments M*_c and M*_d to the decimals of both (one diagram,
+    one μ_M), and the works and energies A_c, A_d, ΔT (graphical) and ΔT (exact) to the decimals of
+    all four (one unit, the graphical beside the exact). A_d prints the printed ΔT plus the printed
+    A_c (graphic.flywheel reads ΔT = A_d − A_c), so every row checks by subtraction to the digit."""
+    ps = doc["positions"]
+    out = {"turn": [fixed(p["turn_deg"], lang, 1) for p in ps], "phi": [fixed(p["phi_deg"], lang, 1) for p in ps],
+           "inertia": decimals_column([p["inertia"] for p in ps], lang),
+           "d_inertia": decimals_column([p["d_inertia"] for p in ps], lang)}
+    moments = [[p["moment_resistance"] for p in ps], [p["moment_driving"] for p in ps]]
+    d = column_decimals(moments[0] + moments[1])
+    out["moment_resistance"], out["moment_driving"] = (decimals_column(m, lang, d) for m in moments)
+    a_c = [p["graphical"]["work_resistance"] for p in ps]
+    d_t = [p["graphical"]["energy"] for p in ps]
+    d = energy_decimals(doc)
+    a_d = [round(t, d) + round(a, d) for t, a in zip(d_t, a_c)]
+    out.update(work_resistance=decimals_column(a_c, lang, d), work_driving=decimals_column(a_d, lang, d),
+               energy_graphical=decimals_column(d_t, lang, d),
+               energy=decimals_column([p["energy"] for p in ps], lang, d))
+    return out
+
+
+FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
+
+
+def flywheel_decimals(doc: dict[str, Any]) -> int:
+    """Table 2's I column to one count of decimals: four figures for its smallest value, no more
+    than four for its largest (``util.words.column_decimals``; 328,3 beside 55,0, not 54,99), the
+    notes' results of the flywheel's arithmetic the same."""
+    fw = doc["flywheel"]
+    values = [fw[k] for k in ("graphical", "approximate", "merkalov", "motor") if fw[k] > 0]
+    return column_decimals(values + ([fw["exact"]] if fw["needed"] else []), least=4)
+
+
+def flywheel_text(v: float, lang: str, decimals: int | None) -> str:
+    """A flywheel's I as Table 2 prints it: to the column's ``decimals`` (four figures, ``sig``,
+    where none is given), trailing zeros kept, a true minus."""
+    return sig(v, lang) if decimals is None else fixed(v, lang, decimals).replace("-", "−")
+
+
+def flywheel_errors(doc: dict[str, Any]) -> dict[str, float | None]:
+    """Table 2's δ of each method, % — 100·(I − I_exact)/I_exact worked out from the two printed
+    values (``flywheel_text``), so a reader who recomputes δ from the table gets the printed δ
+    (84,47 against 82,63: +2,23, where the unrounded values give +2,24; the JSON keeps those). A
+    method whose I (or the exact one) prints as none needed keeps its unrounded δ (or none)."""
+    fw = doc["flywheel"]
+    d = flywheel_decimals(doc)
+    out: dict[str, float | None] = {}
+    for key, method in FLYWHEEL_METHODS:
+        if fw[key] is None or not (fw["needed"] and fw["exact"] > 0 and fw[method] > 0):
+            out[key] = fw[key]
+            continue
+        e, g = (float(flywheel_text(fw[k], "en", d).replace("−", "-")) for k in ("exact", method))
+        out[key] = 100.0 * (g - e) / e
+    return out
+
+
+def energy_decimals(doc: dict[str, Any]) -> int:
+    """The decimals of Table 1's works and energies (A_c, A_d and ΔT graphical, ΔT exact): one count
+    for the four columns, which the approximate flywheel's ΔT_max and ΔT_min are printed to too."""
+    ps = doc["positions"]
+    a_c = [p["graphical"]["work_resistance"] for p in ps]
+    d_t = [p["graphical"]["energy"] for p in ps]
+    return column_decimals(a_c + d_t + [t + a for t, a in zip(d_t, a_c)] + [p["energy"] for p in ps])
+
+
 WORDS = {
-    "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; ΔT графічно і точно)",
+    "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; роботи й ΔT графічно, ΔT точно)",
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
            "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер − Iрот·i²", "merk": "наближено (Мерцалов)",
@@ -112,7 +180,7 @@ WORDS = {
            "given": "заданий у сцені", "warn": "Попередження", "scales": "Масштаби",
            "u": {"rotor": "Iрот", "Nm": "Н·м", "mm": "мм", "rad": "рад", "J": "Дж", "kgm2": "кг·м²", "kW": "кВт", "rpm": "об/хв",
                  "s": "с", "steady": "усталений рух", "peak": "найбільший момент"}},
-    "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; ΔT graphical and exact)",
+    "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; the works and ΔT graphical, ΔT exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
            "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Merkalov)",
@@ -135,35 +203,40 @@ def dynamics_table(f, lang: str = "uk") -> str:
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
                f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
-               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {doc['work_resistance']:.5g} {u['J']}, "
-               f"Md* = {doc['moment_driving']:.5g} {u['Nm']}")
+               f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {sig(doc['work_resistance'], 'en')} {u['J']}, "
+               f"Md* = {sig(doc['moment_driving'], 'en')} {u['Nm']}")       # four figures, as the sheet's notes
     out += ["", w["pos"]]
     gr = "ΔT гр." if lang == "uk" else "ΔT gr."
     turn = "пов., °" if lang == "uk" else "turn, °"
     out.append(w["turn"])
-    head = (f"{'№':>3} {'φ, °':>7} {turn:>7} {'I*m':>9} {'dI*/dφ':>9} {'M*c':>9} {'Md*':>8} {'Ac':>9} {gr:>9} "
-            f"{'ΔT':>9}")
-    out.append(head)
-    for p in doc["positions"]:
-        out.append(f"{p['index']:>3} {p['phi_deg']:7.2f} {p['turn_deg']:7.2f} {p['inertia']:9.4f} {p['d_inertia']:9.4f} "
-                   f"{p['moment_resistance']:9.3f} {p['moment_driving']:8.3f} {p['work_resistance']:9.3f} "
-                   f"{p['graphical']['energy']:9.3f} {p['energy']:9.3f}")
+    cols = table_columns(doc, lang)
+    keys = ("phi", "turn", "inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance",
+            "work_driving", "energy_graphical", "energy")
+    names = ("φ, °", turn, "I*m", "dI*/dφ", "M*c", "Md*", "Ac гр." if lang == "uk" else "Ac gr.",
+             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT")
+    # the sheet's Table 1 cell for cell (table_columns), each column as wide as its widest entry
+    widths = [max(len(n), *(len(c) for c in cols[k])) for n, k in zip(names, keys)]
+    out.append(f"{'№':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
+    for j, p in enumerate(doc["positions"]):
+        out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
     fw = doc["flywheel"]
-    exact = f"{fw['exact']:10.4f}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
+    fd = flywheel_decimals(doc)              # Table 2's one count of decimals
+    exact = f"{flywheel_text(fw['exact'], 'en', fd):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
     none = "не потрібен" if lang == "uk" else "not needed"
-    val = lambda v: f"{v:10.4f}" if v > 0 else f"{none:>10}"   # noqa: E731  (a method's J below rotor + reducer)
+    val = lambda v: f"{flywheel_text(v, 'en', fd):>10}" if v > 0 else f"{none:>10}"   # noqa: E731  (J below rotor + reducer)
+    errs = flywheel_errors(doc)          # Table 2's: δ from the printed values
     approx = w["approx"] + ((" − I*ред" if lang == "uk" else " − I*red") if fw["reducer_reduced"] > 0 else "")
-    motor = (f"{fw['motor']:10.4f}" if fw["motor"] > 0 else
+    motor = (f"{flywheel_text(fw['motor'], 'en', fd):>10}" if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, inline(motor_delta(lang))))
     out += ["", w["res"].format(delta=doc["delta"], wm=doc["omega_mean"]),
             f"  {w['exact']:54} {exact}",
-            f"  {w['graph']:54} {val(fw['graphical'])}  {_pct(fw['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
+            f"  {w['graph']:54} {val(fw['graphical'])}  {_pct(errs['error_pct'])}  |kl| = {fw['kl_mm']:g} {u['mm']}, "
             f"ψmax = {fw['psi_max_deg']:.3f}°, ψmin = {fw['psi_min_deg']:.3f}°",
-            f"  {approx:54} {val(fw['approximate'])}  {_pct(fw['approximate_error_pct'])}",
-            f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(fw['merkalov_error_pct'])}",
+            f"  {approx:54} {val(fw['approximate'])}  {_pct(errs['approximate_error_pct'])}",
+            f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(errs['merkalov_error_pct'])}",
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang), reducer_note(f, lang),
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
                                              tangents_note(f, lang), approximate_note(doc, lang, formula=True)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
@@ -189,7 +262,8 @@ def _term(text: str) -> str:
 
 
 def _pct(v: float | None) -> str:
-    return "—" if v is None else f"{v:+.3f} %"
+    """A method's δ as Table 2 prints it (``error_text``: two decimals, signed)."""
+    return "—" if v is None else error_text(v, "en").replace("−", "-") + " %"
 
 
 # -- the notes the terminal and the sheet share -----------------------------------------------------
@@ -362,18 +436,20 @@ def reducer_note(f, lang: str) -> str | None:
             else f"I^*_red{NB}={NB}{sig(red, lang)}{NB}kg·m²: the reducer's moment of inertia reduced to the crank")
 
 
-def _fl(v: float, lang: str) -> str:
-    """A flywheel's value (markup) ending its arithmetic: kg·m², or ≤ 0 and none needed."""
+def _fl(v: float, lang: str, decimals: int | None = None) -> str:
+    """A flywheel's value (markup) ending its arithmetic, to Table 2's ``decimals``: kg·m², or ≤ 0
+    and none needed."""
     kgm2 = "кг·м²" if lang == "uk" else "kg·m²"
     if v > 0:
-        return f"{sig(v, lang)}{NB}{kgm2}"
+        return f"{flywheel_text(v, lang, decimals)}{NB}{kgm2}"
     return (f"{sig(v, lang)}{NB}{kgm2} ≤ 0: маховик не потрібен" if lang == "uk" else
             f"{sig(v, lang)}{NB}{kgm2} ≤ 0: no flywheel is needed")
 
 
-def wittenbauer_note(f, lang: str) -> str:
+def wittenbauer_note(f, lang: str, decimals: int | None = None) -> str:
     """The graphical flywheel's arithmetic (markup), every input printed: J = μ_T·|kl|/(ω_m²·δ)
-    with the numbers, then I_мах = J − I_рот·i² (− I*_ред; Table 3 prints I_рот·i²) (REFERENCE §9)."""
+    with the numbers, then I_мах = J − I_рот·i² (− I*_ред; Table 3 prints I_рот·i²) (REFERENCE §9), the
+    result to Table 2's ``decimals`` (``flywheel_decimals``; four figures where none are given)."""
     uk = lang == "uk"
     sym, _ = constant_terms(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced, lang)
     fl = "I_мах" if uk else "I_fl"
@@ -381,7 +457,7 @@ def wittenbauer_note(f, lang: str) -> str:
     wm, d = f.dyn.omega_mean, f.dyn.delta
     # each "numbers = result unit" on one line (no-break spaces): a result never wrapped off its arithmetic
     return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
-            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang)}")
+            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang, decimals)}")
 
 
 def approximate_parts(doc: dict) -> dict[str, float]:
@@ -404,14 +480,14 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     p = approximate_parts(doc)
     fw = doc["flywheel"]
     sym, val = constant_terms(fw["rotor_reduced"], fw["reducer_reduced"], lang)
-    hi, lo = (num(p[k], lang).replace("-", "−") for k in ("dt_max", "dt_min"))    # as Table 1's column prints them
+    hi, lo = decimals_column([p["dt_max"], p["dt_min"]], lang, energy_decimals(doc))    # as Table 1's column prints them
     lo = f"({lo})" if p["dt_min"] < 0 else lo
     mean = "I^*_{м сер}" if uk else "I^*_{m mean}"
     symbols = f"(ΔT_{{max}} − ΔT_{{min}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
-            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang)}")
+            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang, flywheel_decimals(doc))}")
 
 
 def error_text(v: float, lang: str) -> str:

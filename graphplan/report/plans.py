@@ -161,15 +161,49 @@ def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0
     return ["0" if e.value == 0 else fixed(signed(e), lang, d) for e in entries]
 
 
-def rate(e: Entry, mu: float, lang: str, precision: float = 0.5) -> str:
-    """ω or ε as the tables print it: signed, to the figures of the vector it is read from, in
-    decimals as the sheet's acceleration tables write it (``places`` of the one value)."""
-    return rate_column([e], mu, lang, precision)[0]
-
-
 def signed(e: Entry) -> float:
     """ω and ε keep their sign in the tables; vectors are magnitudes."""
     return e.vector.real if e.kind in ("omega", "epsilon") else e.value
+
+
+def _signed_json(e: dict, key: str = "value") -> float | None:
+    """An entry's value of the JSON (``value`` or ``analytic``) signed as the tables print it: ω and
+    ε + counter-clockwise."""
+    v = e.get(key)
+    return -v if v is not None and e.get("sense") == "cw" else v
+
+
+def acceleration_cells(pos: dict[str, Any], lang: str, precision: float = 0.5) -> dict[str, tuple[str, str, float | None]]:
+    """An acceleration plan's cells as the sheet's Table 2 (3 …) and the terminal both print them,
+    key → (graphical, exact, δ %): the graphical and the exact value of a quantity to the same
+    decimals, and δ = 100·(g − e)/e worked out from the two printed numbers, so a reader who
+    recomputes δ from the table gets the printed δ (the JSON keeps the unrounded error; None where
+    the vector was read as 0 mm or the printed exact value is 0). The vectors' decimals, one count
+    for them all: the figures of the longest drawn vector (``places``), one more where the ruler's
+    step times μ_a still writes it exactly (69,5 mm × 0,5 = 34,75 beside 34,74, not 34,8 beside
+    34,74); ε each to the figures of the a^τ it is read from (one more likewise: 132,1 from a^τ 27,75)."""
+    items = list(pos.get("acceleration", {}).items())
+    vectors = [e for _, e in items if e.get("sense") is None]
+    mu = pos.get("mu_a")
+    longest = max((e["mm"] for e in vectors if e.get("mm")), default=None)
+    vec = places([e.get("value") for e in vectors], longest, precision, mu)
+    finer = int(bool(mu and precision > 0 and step_decimals(mu * precision) > vec))
+    vec += finer
+
+    def text(v: float | None, d: int) -> str:
+        if v is None:
+            return "—"
+        return "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")
+    out = {}
+    for key, e in items:
+        d = vec if e.get("sense") is None else places([_signed_json(e)], e.get("from_mm"), precision) + finer
+        g = "0" if e.get("value") == 0 else text(_signed_json(e), d)
+        x = text(_signed_json(e, "analytic"), d)
+        judged = e.get("error_pct") is not None and e.get("value") not in (0, None)
+        ev, gv = (float(c.replace("−", "-").replace(",", ".")) if c != "—" else None for c in (x, g))
+        delta = 100.0 * (gv - ev) / ev if judged and ev and gv is not None else None
+        out[key] = (g, x, delta)
+    return out
 
 
 def plans_table(plans: Plans, lang: str = "uk") -> str:
@@ -216,12 +250,12 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
                       f"{plain(format_scale('mu_a', plans.mu_a, lang))}; {w('rates')}",
                   f"{w('quantity'):>12}  {unit('mm', lang):>7}  {w('plan'):>10}  {w('exact'):>10}  "
                   f"{w('error'):>9}"]
+        cells = acceleration_cells(position_json(plans, p), lang, plans.precision)    # the sheet's, cell for cell
         for e in ordered(acc):
             mm = "" if e.mm is None else fixed(e.mm, lang, 1)
-            exact = e.exact.real if e.kind in ("omega", "epsilon") else e.analytic
-            value = rate(e, plans.mu_a, lang, plans.precision) if e.kind == "epsilon" else n(signed(e))
-            lines.append(f"{plain(symbol(e, 'acceleration', st.mech)):>12}  {mm:>7}  {value:>10}  "
-                         f"{n(exact):>10}  {pct(e.error_pct, lang):>9}")
+            value, exact, delta = cells[e.key]
+            lines.append(f"{plain(symbol(e, 'acceleration', st.mech)):>12}  {mm:>7}  {value.replace('−', '-'):>10}  "
+                         f"{exact.replace('−', '-'):>10}  {pct(delta, lang):>9}")
     lines += ["", w("warnings") + ":"]
     warned = False
     for p in plans.positions:

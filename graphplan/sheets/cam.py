@@ -11,17 +11,16 @@ from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import POLE_MM, closing_warning, construct
-from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
-from graphplan.report.cam import cam_json
+from graphplan.report.cam import cam_json, table_columns
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
-from graphplan.util.words import fixed, num
+from graphplan.util.words import num
 
 WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
@@ -45,14 +44,10 @@ def _fields(cam: Cam, lang: str) -> dict[str, str]:
             "subtitle": WORDS[lang]["subtitle"]}
 
 
-def _pct(v, lang: str) -> str:
-    return "—" if v is None else num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
-
-
 def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
-    graphical values from them (to three significant figures, what a 0.5 mm reading gives) with δ, ϑ
-    exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
+    graphical values from them, each to its exact value's decimals, with δ worked out from the two
+    printed numbers (report.cam ``table_columns``), ϑ exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
     unit of its scale μ_{dψ/dφ} in (°/рад)/мм)."""
     rocking = doc["follower"] == "rocking"
     key = "_deg" if rocking else "_m"
@@ -65,22 +60,9 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5)
     head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{{{q['s']}}}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
             f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", "δ, %",
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
-    rows = [head]
-    mu_l = doc["scales"]["mu_l_m_mm"]
-    precision = doc.get("precision_mm", 0.5)
-    for j, p in enumerate(doc["positions"]):
-        e, g, err = p["exact"], p["graphical"], p["error_pct"]
-        def v(x, d=4):
-            return num(x, lang, d).replace("-", "−")
-
-        def read(mm_):             # the ruler's reading: the drawn ordinate's mm to its 0.5 mm (or finer)
-            return fixed(mm_, lang, 1 if precision >= 0.1 or precision == 0 else 2).replace("-", "−")
-        rows.append([str(j), fixed(p["phi_deg"], lang, 1), v(e["s" + key] * k), read(g["s_mm"]),
-                     v(g["s" + key] * k, 3), _pct(err["s"], lang), v(e["ds_dphi" + key] * k),
-                     read(g["ds_dphi_mm"]), v(g["ds_dphi" + key] * k, 3), _pct(err["ds_dphi"], lang),
-                     fixed(e["pressure_angle_deg"], lang, 1).replace("-", "−"),
-                     fixed(g["pressure_angle_deg"], lang, 1).replace("-", "−"),
-                     fixed(e["radius_m"] * 1000, lang, 2), fixed(g["radius_mm"] * mu_l * 1000, lang, 1)])
+    cols = table_columns(doc, lang)          # the terminal's table cell for cell (report.cam)
+    keys = ("phi", "s", "s_mm", "s_gr", "ds", "v", "v_mm", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
+    rows = [head] + [[str(j)] + [cols[c][j] for c in keys] for j in range(len(doc["positions"]))]
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
     return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
 
@@ -92,7 +74,8 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     lines = cam_lines(doc, lang)
     w = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
     lines += [("Попередження: " if lang == "uk" else "Warning: ") + escape(x) for x in w]
-    marked = any(v is not None and abs(v) > LAB_LIMIT for p in doc["positions"] for v in p["error_pct"].values())
+    cols = table_columns(doc, lang)          # a "*" in Table 1 (δ worked out from its printed values)
+    marked = any(c.endswith("*") for c in cols["ds"] + cols["dv"])
     if marked:
         lines.append("* — " + ("похибка понад 5 %: коротка ордината (кілька мм) або мало поділок"
                                if lang == "uk" else "an error past 5 %: a short ordinate (a few mm) or few "

@@ -19,16 +19,16 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, motor_delta, motor_omega,
-                                       motor_speed_note, not_needed, redrawn_note, reducer_note, sig, tangents_note,
-                                       wittenbauer_note)
+from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+                                       flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
+                                       redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError
-from graphplan.util.words import LANGS, column, fixed, num
+from graphplan.util.words import LANGS, num
 
 
 def fmt(v: float | None, lang: str, digits: int = 4) -> str:
@@ -105,24 +105,20 @@ ROW = 6.0     # mm: a row of the tables
 def positions_table(doc: dict, lang: str) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
-    crank's sense; each column's values below its resolution print 0 (``util.words.column``)."""
+    crank's sense; one count of decimals a column, the terminal's cells (report.dynamics
+    ``table_columns``)."""
     w = WORDS[lang]
     uk = lang == "uk"
     head = [w["n"], "φ, °", "I^*_м, кг·м²" if uk else "I^*_m, kg·m²", "dI^*_м/dφ, кг·м²" if uk else "dI^*_m/dφ, kg·m²",
             "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m",
             "A_с гр., Дж" if uk else "A_c gr., J", "A_д гр., Дж" if uk else "A_d gr., J",
             "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J"]
-    ps = doc["positions"]
-    cols = [column([p[k] for p in ps], lang) for k in ("inertia", "d_inertia", "moment_resistance", "moment_driving")]
-    # the graphical columns as the work diagram is read: A_c and A_d measured at each division, ΔT = A_d − A_c
-    # their difference (graphic.flywheel) — so A_d here is ΔT + A_c to the unit, the row checks by subtraction
-    a_c = [p["graphical"]["work_resistance"] for p in ps]
-    d_t = [p["graphical"]["energy"] for p in ps]
-    cols += [column(a_c, lang), column([t + a for t, a in zip(d_t, a_c)], lang), column(d_t, lang)]
-    cols.append(column([p["energy"] for p in ps], lang))
+    cols = table_columns(doc, lang)         # the terminal's Table 1, cell for cell
+    keys = ("inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance", "work_driving",
+            "energy_graphical", "energy")
     rows = [head]
-    for k, p in enumerate(ps):
-        rows.append([str(p["index"]), fixed(p["turn_deg"], lang, 1)] + [c[k] for c in cols])
+    for k, p in enumerate(doc["positions"]):
+        rows.append([str(p["index"]), cols["turn"][k]] + [cols[c][k] for c in keys])
     return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
                  title=w["positions"])
 
@@ -134,20 +130,23 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     fw = doc["flywheel"]
 
     def pct(v: float | None) -> str:          # over the lab's 5 %: marked, the notes say why
-        return "—" if v is None else error_text(v, lang) + ("*" if abs(v) > LAB_LIMIT else "")
+        return "—" if v is None else error_text(v, lang) + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
+    d = flywheel_decimals(doc)                # one count of decimals for the column, the notes' results too
+
     def value(v: float) -> str:               # a method's J no larger than rotor and reducer: none needed
-        return sig(v, lang) if v > 0 else w["not"]
-    exact = (sig(fw["exact"], lang) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
-    motor = (sig(fw["motor"], lang) if fw["motor"] > 0 else
+        return flywheel_text(v, lang, d) if v > 0 else w["not"]
+    exact = (flywheel_text(fw["exact"], lang, d) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
+    motor = (flywheel_text(fw["motor"], lang, d) if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
     # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic)
     approx = w["approx"] + (" − I_рот·i²" if lang == "uk" else " − I_rotor·i²") + (
         (" − I^*_ред" if lang == "uk" else " − I^*_red") if fw["reducer_reduced"] > 0 else "")
+    errs = flywheel_errors(doc)              # δ worked out from the printed values, as the terminal's
     rows = [[w["method"], f"{w['value']}, {'кг·м²' if lang == 'uk' else 'kg·m²'}", w["err"]],
             [w["exact"], exact, error_text(0.0, lang) if fw["exact"] > 0 else "—"],
-            [w["graph"], value(fw["graphical"]), pct(fw["error_pct"])],
-            [approx, value(fw["approximate"]), pct(fw["approximate_error_pct"])],
-            [w["merk"], value(fw["merkalov"]), pct(fw["merkalov_error_pct"])],
+            [w["graph"], value(fw["graphical"]), pct(errs["error_pct"])],
+            [approx, value(fw["approximate"]), pct(errs["approximate_error_pct"])],
+            [w["merk"], value(fw["merkalov"]), pct(errs["merkalov_error_pct"])],
             [w["motor_fl"], motor, ""]]
     rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
     # under the table, the approximate row's arithmetic: its printed numbers give its printed value
@@ -208,12 +207,12 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
              f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
-             f"{'A_с' if uk else 'A_c'} = {num(doc['work_resistance'], lang)} {J}, "
-             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {num(doc['moment_driving'], lang)} {Nm}; "
+             f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
+             f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
-             wittenbauer_note(f, lang),
+             wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
                                   c=closure(doc["motion"]["closure"], lang)),
@@ -222,10 +221,11 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
+    errs = flywheel_errors(doc)              # Table 2's δ
     for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
                      ("merkalov_error_pct", "why_merk")):
-        if fw[key] is not None and abs(fw[key]) > LAB_LIMIT:
-            said.append(w["mark"] + w[why].format(e=error_text(fw[key], lang), n=doc["divisions"],
+        if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
+            said.append(w["mark"] + w[why].format(e=error_text(errs[key], lang), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     if short is not None:

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record, text_width
-from graphplan.report.plans import places, step_decimals  # noqa: F401  (the terminal's own, one rule)
+from graphplan.report.plans import acceleration_cells, places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
 from graphplan.sheets.form import enlarged, table
 from graphplan.util.markup import escape
-from graphplan.util.words import column, fixed, num, pair_kind, unit, word
+from graphplan.util.words import fixed, num, pair_kind, unit, word
 
 SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
 
@@ -187,31 +187,24 @@ def judged(e: dict) -> bool:
 
 def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> Record:
     """Table n: one acceleration plan (the sheet numbers it after table 1 and the earlier plans): drawn mm, graphical value, analytic value and δ, %; ε
-    signed (+ counter-clockwise); a vector read as 0 mm is 0; an analytic value below its column's
-    resolution is 0; an error past the lab's 5 % is marked, its footnote says why. The force
+    signed (+ counter-clockwise); a vector read as 0 mm is 0; the graphical and the analytic value to
+    the same decimals and δ worked out from them (report.plans ``acceleration_cells``); an error past
+    the lab's 5 % is marked, its footnote says why. The force
     position (no index) is named by the crank's turn from position 0, as the scene gives it."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     rows = [[w('quantity'), unit("mm", lang), w('graphical'), w('analytic'), w('error')]]
     items = list(pos.get("acceleration", {}).items())
-    exact = column([(-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None
-                    else None for _, e in items], lang)
+    cells = acceleration_cells(pos, lang, precision)    # the terminal's, cell for cell; δ from the printed pair
     notes = []
-    # one count of decimals for the vectors' graphical values (ε each by its own vector's figures),
-    # one more for the analytic ones (at most 4 figures), the ruler's for the drawn mm
-    vec = decimals([e for _, e in items if e.get("sense") is None], precision)
-    exact_d = min(vec + 1, places([e.get("analytic") for _, e in items if e.get("sense") is None], None, 0.0))
     ruler = step_decimals(precision) if precision > 0 else 2
-    for (key, e), analytic in zip(items, exact):
-        cell = percent(e.get("error_pct") if judged(e) else None, lang=lang)
-        if judged(e) and abs(e["error_pct"]) > LAB_LIMIT:
+    for key, e in items:
+        value, truth, delta = cells[key]
+        cell = percent(delta, lang=lang)
+        if delta is not None and abs(round(delta, 2)) > LAB_LIMIT:     # the printed δ past 5 %
             cell += MARK
             notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang, precision)))
-        d = vec if e.get("sense") is None else decimals([e], precision)
-        truth = (-1.0 if e.get("sense") == "cw" else 1.0) * e["analytic"] if e.get("analytic") is not None else None
         rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
-                     written(_signed(e), d, lang) if e.get("value") is not None else "—",
-                     written(truth, exact_d if e.get("sense") is None else d + 1, lang) if analytic != "—" else "—",
-                     cell])
+                     value, truth, cell])
     if pos["index"] is not None:
         where = pos["index"]
     else:

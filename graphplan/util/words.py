@@ -135,6 +135,34 @@ def column(values, lang: str = "en", digits: int = DIGITS) -> list[str]:
                 lang, digits).replace("-", "−") for v in values]
 
 
+MEANINGFUL = 0.01   # a value below this share of its column's largest |value| is not the one the decimals are set by
+LEAST_FIGURES = 3   # significant figures the column's smallest meaningful value keeps …
+MOST_FIGURES = 4    # … unless its largest would then show more than these (DIGITS: a sheet's every number)
+
+
+def column_decimals(values, least: int = LEAST_FIGURES, most: int = MOST_FIGURES,
+                    meaningful: float = MEANINGFUL) -> int:
+    """One count of decimals for a table's column (or for the columns of one quantity, graphical
+    beside exact): enough that the smallest value at least ``meaningful`` of the largest keeps
+    ``least`` significant figures, no more than leave the largest ``most`` (ΔT 60,93 / −38,08 /
+    −323,7 → one decimal: 60,9 / −38,1 / −323,7; A_c 22,85 … 1021 → none: 23 … 1021)."""
+    vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
+    if not vals:
+        return 0
+    big = max(vals)
+    small = min(v for v in vals if v >= meaningful * big)
+    order = lambda v: math.floor(math.log10(float(f"{v:.{least - 1}e}")))     # noqa: E731  after rounding (9.996 → 10.0)
+    return max(0, min(least - 1 - order(small), most - 1 - order(big)))
+
+
+def decimals_column(values, lang: str = "en", decimals: int | None = None) -> list[str]:
+    """A table's column to one count of decimals (``column_decimals`` unless given), trailing zeros
+    kept, a true minus; a value that rounds to zero the number 0, "—" for none."""
+    d = column_decimals(values) if decimals is None else decimals
+    return ["—" if v is None or not math.isfinite(float(v)) else
+            "0" if round(float(v), d) == 0 else fixed(v, lang, d).replace("-", "−") for v in values]
+
+
 def fixed(v: float | None, lang: str = "en", decimals: int = 1, plus: bool = False) -> str:
     """A value with a fixed count of decimals (angles, drawn millimetres, percents); ``plus``
     writes the sign of positive values too; "—" for none."""
