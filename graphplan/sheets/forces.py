@@ -908,8 +908,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     six-bar's group with its force plan alone, 73–78 %) gets them drawn larger — the scheme, a
     group at its own μl, its force plan at its own μF, each by the standard series' next step in
     turn — while every drawing stays on its sheet, the tables and notes keep their size, and each
-    stays within ``FILL_LARGEST`` of its target. The scheme alone on its sheet may so be drawn
-    larger than the groups (review 6 #4 kept it no larger where it shared a sheet with them).
+    stays within ``FILL_LARGEST`` of its target; the scheme no larger than the groups (review 6 #4).
     One sheet (A1): its scheme, groups, force plans, acceleration plan and charts so grown into the
     room the composition leaves (kinlayout.into_room), the smallest against its target first, before
     the lever and the hodographs take theirs (review 7: A1 force sheets 46–53 % empty; the six-bar's
@@ -941,7 +940,9 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 key = key_of(fam, i)
                 base = mu.get(key, mu[fam])
                 nxt = fams[fam].finer(base) if fams[fam].factors else next_round(base)
-                if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9:
+                # the scheme never larger than the groups cut from it (review 6 #4)
+                if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
+                        or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)):
                     growing.remove((fam, i))
                     continue
                 trial_mu = {**mu, key: nxt}
