@@ -194,7 +194,7 @@ class ForceDrafter:
             fp = self.fp(mu_l, mu["forces"], mu["lever"])
             wh = [_wh(forcedraw.mechanism_record(fp, lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
-        return self._once(("scheme size", mu_l, mu["forces"], mu["lever"]), make)
+        return self._once(("scheme size", mu_l, mu["forces"]), make)
 
     def plan_size(self, mu: dict[str, float], i: int, mu_F: float, caption: tuple[float, float]) -> tuple[float, float]:
         """Group i's force plan drawn (lettered, both languages) at its own μF ``mu_F``: its cell
@@ -884,7 +884,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
 # the field left a six-bar's group sheet 74 % empty by the reviews' 20 mm cells (thin lines, blank corners)
 FILL_SHARE = 0.75
 # … its drawings grown at most so (against their targets)
-FILL_LARGEST = {"scheme": 4.0, "groups": 4.0, "forces": 2.0, "acceleration": 2.0, "charts": 2.0}
+FILL_LARGEST = {"scheme": 4.0, "groups": 4.0, "forces": 2.0, "acceleration": 2.0, "charts": 2.0, "hodographs": 2.0}
 
 
 def _sheet_share(leaves: dict[str, list[Leaf]], names: tuple[str, ...], f: Form) -> float:
@@ -927,8 +927,11 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         steps = [("scheme", 0)] if "scheme 0" in names else []
         for n in names:
             fam, _, i = n.partition(" ")
-            if fam in ("groups", "forces") or (fam in ("acceleration", "charts") and i == "0"):
+            if fam in ("groups", "forces"):
                 steps.append((fam, int(i)))
+            elif fam in ("acceleration", "charts", "hodographs") and (fam, 0) not in steps \
+                    and not (one and fam == "hodographs"):       # (one sheet: ``_grown_hodographs``)
+                steps.append((fam, 0))          # a family at one scale: grown while all its sheets hold it
 
         def key_of(fam: str, i: int) -> str:
             return {"groups": GROUP + labels[i], "forces": PLAN + labels[i]}.get(fam, fam)
@@ -947,7 +950,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                     continue
                 trial_mu = {**mu, key: nxt}
                 trial = {k: list(v) for k, v in leaves.items()}
-                if fam in ("acceleration", "charts"):       # a family at one scale: its model's cells
+                if fam in ("acceleration", "charts", "hodographs"):       # one scale: its model's cells
                     trial[fam] = [Leaf(x.name, *(v + GROW_MARGIN * (fam == "acceleration")
                                                  for v in fams[fam].size(nxt, j)))
                                   for j, x in enumerate(trial[fam])]
@@ -1069,7 +1072,7 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
                                                                                     fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
-    drawn = dr.memo.get(("scheme size", mu["scheme"], mu["forces"], mu["lever"]))
+    drawn = dr.memo.get(("scheme size", mu["scheme"], mu["forces"]))
     if drawn is not None and leaves["scheme"]:     # the scheme as drawn at its scale (``_filled_sheets``)
         s = leaves["scheme"][0]
         leaves["scheme"] = [Leaf(s.name, max(s.w, drawn[0] + GROW_MARGIN), max(s.h, drawn[1] + GROW_MARGIN))]
@@ -1088,7 +1091,7 @@ def _plan_cell(dr: ForceDrafter, mu: dict[str, float], fam: Family, mu_F: float,
     (``ForceDrafter.plan_size``), the larger."""
     w, h = fam.size(mu_F, i)
     for key, drawn in dr.memo.items():
-        if key[:3] == ("plan size", i, mu_F) and key[3:6] == (mu["groups"], mu["forces"], mu["lever"]):
+        if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"]):    # (not μv's)
             w, h = max(w, drawn[0]), max(h, drawn[1])
     return w, h
 
