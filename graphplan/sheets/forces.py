@@ -876,7 +876,11 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
-    p = _filled_sheets(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p)))
+    p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
+    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
+    if filled.shape != "set" or _fits(nat, f, filled, _placed_leaves(dr, nat, filled.mu)):
+        return filled, nat, dr
+    # the drawings as drawn no longer stand where the set put them: without the fill
     return _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p)), nat, dr
 
 
