@@ -878,10 +878,29 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
             break
     p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
-    if filled.shape != "set" or _fits(nat, f, filled, _placed_leaves(dr, nat, filled.mu)):
+    if filled.shape != "set" or filled.mu == p.mu:
         return filled, nat, dr
-    # the drawings as drawn no longer stand where the set put them: without the fill
-    return _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p)), nat, dr
+    # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
+    # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
+    plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
+    counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
+    return (filled if counts[0] <= counts[1] else plain), nat, dr
+
+
+def _drawn_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> int:
+    """How many sheets a set takes with its drawings as drawn at the plan's scales (both languages,
+    captioned) — as ``build_forces_sheet`` packs them — or a large number where they do not fit."""
+    from graphplan.util.words import LANGS
+    names = dr.names()
+    sizes: dict[str, list[tuple[float, float]]] = {}
+    for lang in LANGS:
+        recs, caps = dr.drawings(p.mu, lang), _captions(dr, p.mu, lang)
+        for fam, rs in recs.items():
+            got = [_wh(captioned(r, *caps[fam][i], size=SMALL_CAPTION.get(fam, 5.0))) for i, r in enumerate(rs)]
+            sizes[fam] = [(max(a[0], b[0]), max(a[1], b[1])) for a, b in zip(sizes.get(fam, got), got)]
+    leaves = {fam: [Leaf(names[fam][i], w, h) for i, (w, h) in enumerate(ws)] for fam, ws in sizes.items()}
+    out = _set_pages(nat, f, leaves, p.tables, p.plan_first, p.gap)
+    return len(out) if out is not None else 10 ** 6
 
 
 # a set's sheet whose drawings' cells cover less of its field than this has them grown: cells 60 % of
