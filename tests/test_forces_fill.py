@@ -9,8 +9,6 @@ from __future__ import annotations
 import itertools
 
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
 
 from graphplan.drawing.layout import Leaf, arrange
 from graphplan.sheets.forceset import FILL_SHARE, SPACE, pack, units_of
@@ -50,21 +48,6 @@ def test_a_sheet_already_half_full_keeps_the_reading_order():
     assert 370.0 * 160.0 / (385.0 * 277.0) >= FILL_SHARE
     flat = [n for s in sheets for n in _names(s)]
     assert flat.index("lever 0") > flat.index("groups 0")
-
-
-@given(st.lists(st.tuples(st.floats(20, 180), st.floats(20, 180)), min_size=2, max_size=7))
-def test_packed_drawings_stand_at_least_the_space_apart(sizes):
-    """Any drawings the skyline sets on a sheet: their cells never nearer than ``SPACE`` (both
-    across and up — boxes apart in at least one direction by the space)."""
-    leaves = {"scheme": [Leaf("scheme 0", *sizes[0])], "groups": [], "forces": [],
-              "acceleration": [], "lever": [Leaf("lever 0", *sizes[1])],
-              "charts": [Leaf(f"charts {i}", w, h) for i, (w, h) in enumerate(sizes[2:])], "hodographs": []}
-    sheets = pack(units_of(leaves, 385.0, gap=SPACE), [], None, REGION, KEEP, KEEP, SPACE)
-    for sheet in sheets:
-        for a, b in itertools.combinations(sheet, 2):
-            apart_x = max(b.x - (a.x + a.w), a.x - (b.x + b.w))
-            apart_d = max(b.d - (a.d + a.h), a.d - (b.d + b.h))
-            assert max(apart_x, apart_d) >= SPACE - 1e-6, (a, b)
 
 
 def test_next_round_is_the_next_round_coefficient():

@@ -81,9 +81,7 @@ class Skyline:
             if x < min_x - 1e-9 or x + w > self.W + 1e-9:
                 continue
             x = max(0.0, x)
-            # clear of what stands right of it by the gap too (the gap after a drawing pads its right
-            # and its foot only: a chart set under the scheme ended where the lever began, 9 mm under it)
-            d = max(self.depth(x, w + self.gap), self.top)
+            d = max(self.depth(x, w), self.top)
             if d + h > self.floor(x, w) + 1e-9 or not self.ordered(x, d):
                 continue
             key = (round(d, 6), -x if right else x)
