@@ -20,6 +20,7 @@ from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arran
                                       flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
+from graphplan.sheets import forceset
 from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, coarser, compose,
                                       drawing_scale, field_of, grown, keep_out, measured_twice, note_block, notes_height,
                                       options_of, remembered)
@@ -182,6 +183,34 @@ class ForceDrafter:
             wh = [_wh(forcedraw.group_record(fp, fp.groups[i], lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
         return self._once(("group size", i, mu_l, mu["groups"], mu["forces"], mu["lever"], plan_scales(mu)), make)
+
+    def scheme_size(self, mu: dict[str, float], mu_l: float, caption: tuple[float, float]) -> tuple[float, float]:
+        """The scheme drawn (lettered, both languages) at μl ``mu_l``: its cell with the caption —
+        drawn, not scaled from the family's model (its loads' arrows keep their length)."""
+        from graphplan.drawing import forces as forcedraw
+        from graphplan.util.words import LANGS
+
+        def make():
+            fp = self.fp(mu_l, mu["forces"], mu["lever"])
+            wh = [_wh(forcedraw.mechanism_record(fp, lang)) for lang in LANGS]
+            return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
+        return self._once(("scheme size", mu_l, mu["forces"]), make)
+
+    def plan_size(self, mu: dict[str, float], i: int, mu_F: float, caption: tuple[float, float]) -> tuple[float, float]:
+        """Group i's force plan drawn (lettered, both languages) at its own μF ``mu_F``: its cell
+        with the caption (a plan's lettering and small forces do not scale with it: the six-bar's
+        II(4-5) at 5 N/mm came out 188 mm across where the family's model said 149)."""
+        from graphplan.drawing import forces as forcedraw
+        from graphplan.util.words import LANGS
+
+        def make():
+            base = self.groups_fp(mu)
+            label = base.groups[i].label
+            own = tuple(sorted({**dict(plan_scales(mu)), label: mu_F}.items()))
+            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), own)
+            wh = [_wh(forcedraw.polygon_record(fp, fp.groups[i], lang)) for lang in LANGS]
+            return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
+        return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu)), make)
 
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
@@ -491,13 +520,15 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 
 
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
+SPACE = forceset.SPACE     # mm between two groups, a group and its plan (review 7 #18)
+ROWS_GAP = GAP             # … between the one-sheet composition's other drawings
 
 
 def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
     """The groups with their force plans: a row per group, or (``… across``) side by side."""
     if shape.endswith(ACROSS):
-        return Row([Stack([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
-    return Stack([Row([g, p]) for g, p in zip(leaves["groups"], leaves["forces"])])
+        return Row([Stack([g, p], SPACE) for g, p in zip(leaves["groups"], leaves["forces"])], SPACE)
+    return Stack([Row([g, p], SPACE) for g, p in zip(leaves["groups"], leaves["forces"])], SPACE)
 
 
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
@@ -516,22 +547,25 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     A, L = leaves["acceleration"][0], leaves["lever"][0]
     charts = leaves["charts"]
     if H is None:
-        H = [Grid(leaves["hodographs"], hcols)] if leaves["hodographs"] else []
+        H = [Grid(leaves["hodographs"], hcols, ROWS_GAP)] if leaves["hodographs"] else []
     at = {k: H if k == hrow else [] for k in (1, 2, 3)}
     if shape == "column":
-        rows = [Row([S, groups] + at[1]), Row([A, L] + charts[:1] + at[2]), Row(charts[1:] + at[3])]
-        return Row([Stack([r for r in rows if r.children]), C], flush=True)
+        rows = [Row([S, groups] + at[1], ROWS_GAP), Row([A, L] + charts[:1] + at[2], ROWS_GAP),
+                Row(charts[1:] + at[3], ROWS_GAP)]
+        return Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)
     if shape in ("low", "lever up"):
         # the scheme and the groups across the sheet's full width, the column under them at the
         # right (the tables a short column: the press's two parts 348 mm high left 226 × 346 mm
         # under them blank while its groups were drawn at 1:10 beside a 1:4 scheme); "lever up" —
         # the lever in the top row too, where the row beside the column leaves it no room
         up = [L] if shape == "lever up" else []
-        rows = [Row([A] + ([] if up else [L]) + charts[:1] + at[2]), Row(charts[1:] + at[3])]
-        return Stack([Row([S, groups] + up + at[1]),
-                      Row([Stack([r for r in rows if r.children]), C], flush=True)], flush=True)
-    rows = [Row([S, groups, A] + at[1]), Row([L] + charts[:2] + at[2]), Row(charts[2:] + at[3] + [C], flush=True)]
-    return Stack(rows, flush=True)
+        rows = [Row([A] + ([] if up else [L]) + charts[:1] + at[2], ROWS_GAP), Row(charts[1:] + at[3], ROWS_GAP)]
+        return Stack([Row([S, groups] + up + at[1], ROWS_GAP),
+                      Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)],
+                     ROWS_GAP, flush=True)
+    rows = [Row([S, groups, A] + at[1], ROWS_GAP), Row([L] + charts[:2] + at[2], ROWS_GAP),
+            Row(charts[2:] + at[3] + [C], ROWS_GAP, flush=True)]
+    return Stack(rows, ROWS_GAP, flush=True)
 
 
 def _levels(families: dict[str, Family], fits, order, largest=None, start=None) -> dict[str, float] | None:
@@ -574,6 +608,7 @@ class Plan:
     packed: bool = False             # a set: the drawings' rows side by side where they fit (``_packed``)
     where: tuple = ()                # a set: the drawings' names on each sheet (kept as drawings grow)
     plan_first: bool = True          # a set: the acceleration plan before the groups, else after them
+    gap: float = SPACE               # a set: mm between its drawings (``SPACE``, else ``GAP`` where that saves a sheet)
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -596,7 +631,7 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
             arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
             groups = Leaf("groups", *extent(_groups_node(shape, leaves)))      # sizes only: one extent each
-            grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc)))] if nh else []
+            grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc, ROWS_GAP)))] if nh else []
                      for hc in range(1, max(nh, 1) + 1)}
             found = None
             for hrow in HROWS if nh else HROWS[:1]:
@@ -674,16 +709,17 @@ def _packed(rows: list[list]) -> list[list]:
     return [[item for row in rows for item in row]]
 
 
-def _set_pages(nat: Natural, f: Form, leaves: dict[str, list[Leaf]], factor: float, plan_first: bool = True):
-    """The set's sheets at these drawings' sizes (``forceset.pack``), or None where one is larger
-    than a sheet."""
+def _set_pages(nat: Natural, f: Form, leaves: dict[str, list[Leaf]], factor: float, plan_first: bool = True,
+               gap: float = SPACE):
+    """The set's sheets at these drawings' sizes (``forceset.pack``, the drawings ``gap`` apart), or
+    None where one is larger than a sheet."""
     from graphplan.sheets.compose import later_keep
     from graphplan.sheets.forceset import pack, units_of
     region = field_of(f)
     tables = [Leaf(n, w, h) for n, w, h in nat.tables[factor]]
     notes = Leaf("notes", TITLE, notes_height(nat.notes, TITLE))
-    return pack(units_of(leaves, region[2] - region[0], plan_first), tables, notes, region, keep_out(f),
-                later_keep(f))
+    return pack(units_of(leaves, region[2] - region[0], plan_first, gap), tables, notes, region, keep_out(f),
+                later_keep(f), gap)
 
 
 def _least_share(pages, f: Form) -> float:
@@ -760,13 +796,14 @@ def _set(nat: Natural, f: Form) -> Plan:
             if all(fl != f0 for f0, _ in floors):
                 floors.append((fl, cap or fl["scheme"] >= fl["groups"] * (1 - 1e-9)))
     best = None
-    for (floor, cap), factor, plan_first in [(fl, fa, pf) for fl in floors for pf in (True, False)
-                                             for fa in (TABLES, 1.0)]:
+    # the drawings ``SPACE`` apart (review 7 #18), else ``GAP`` where that takes fewer sheets
+    for (floor, cap), factor, plan_first, gap in [(fl, fa, pf, g) for g in (SPACE, GAP) for fl in floors
+                                                  for pf in (True, False) for fa in (TABLES, 1.0)]:
         smallest = floor["groups"] if cap else 0.0
         def sheets_of(mu):
             """Which drawings stand on which sheet: the growth keeps it (a drawing grown until
             the next one moved on to another sheet left the scheme alone on a sheet 77 % empty)."""
-            return _where(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first))
+            return _where(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap))
         mu = dict(floor)
         where = sheets_of(mu)
         if where is None:
@@ -778,10 +815,10 @@ def _set(nat: Natural, f: Form) -> Plan:
         mu = grown if grown is not None and sheets_of(grown) == where else mu
         # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
         key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
-               -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first), f), 3))
+               -gap, -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap), f), 3))
         if best is None or key < best[0]:
             best = (key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
-                              plan_first=plan_first))
+                              plan_first=plan_first, gap=gap))
     if best is None:
         return _set_flowed(nat, f)
     return best[1]
@@ -839,8 +876,121 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
-    p = _grown_lever(dr, nat, f, _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p)))
-    return _grown_hodographs(dr, nat, f, p), nat, dr
+    p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
+    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
+    if filled.shape != "set" or filled.mu == p.mu:
+        return filled, nat, dr
+    # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
+    # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
+    plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
+    counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
+    return (filled if counts[0] <= counts[1] else plain), nat, dr
+
+
+def _drawn_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> int:
+    """How many sheets a set takes with its drawings as drawn at the plan's scales (both languages,
+    captioned) — as ``build_forces_sheet`` packs them — or a large number where they do not fit."""
+    from graphplan.util.words import LANGS
+    names = dr.names()
+    sizes: dict[str, list[tuple[float, float]]] = {}
+    for lang in LANGS:
+        recs, caps = dr.drawings(p.mu, lang), _captions(dr, p.mu, lang)
+        for fam, rs in recs.items():
+            got = [_wh(captioned(r, *caps[fam][i], size=SMALL_CAPTION.get(fam, 5.0))) for i, r in enumerate(rs)]
+            sizes[fam] = [(max(a[0], b[0]), max(a[1], b[1])) for a, b in zip(sizes.get(fam, got), got)]
+    leaves = {fam: [Leaf(names[fam][i], w, h) for i, (w, h) in enumerate(ws)] for fam, ws in sizes.items()}
+    out = _set_pages(nat, f, leaves, p.tables, p.plan_first, p.gap)
+    return len(out) if out is not None else 10 ** 6
+
+
+# a set's sheet whose drawings' cells cover less of its field than this has them grown: cells 60 % of
+# the field left a six-bar's group sheet 74 % empty by the reviews' 20 mm cells (thin lines, blank corners)
+FILL_SHARE = 0.75
+# … its drawings grown at most so (against their targets)
+FILL_LARGEST = {"scheme": 4.0, "groups": 4.0, "forces": 2.0, "acceleration": 2.0, "charts": 2.0, "hodographs": 2.0}
+
+
+def _sheet_share(leaves: dict[str, list[Leaf]], names: tuple[str, ...], f: Form) -> float:
+    """The share of a sheet's field the cells of its drawings ``names`` ("groups 1") cover."""
+    x0, y0, x1, y1 = field_of(f)
+    cells = {f"{fam} {i}": leaf for fam, ls in leaves.items() for i, leaf in enumerate(ls)}
+    return sum(cells[n].w * cells[n].h for n in names if n in cells) / ((x1 - x0) * (y1 - y0))
+
+
+def next_round(mu: float) -> float | None:
+    """The next round coefficient drawing larger than μ: the series' 1, 2, 2.5, 4, 5 or GOST 2.302's
+    1.5, 7.5 × 10^k (graphic.scales.on_round) — 10 N/mm → 7.5, not 5 (a plan half again as large)."""
+    from graphplan.graphic.scales import larger_choices
+    nxt = [m for m, rnd in larger_choices(1.0, mu, 2.01 / mu) if rnd]
+    return nxt[0] if nxt else None
+
+
+def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """A set's sheet its drawings leave mostly empty (their cells under ``FILL_SHARE`` of the field:
+    the slotter's and the sieve's scheme alone on sheet 1 of an A3 set, 80 % of its cells blank; a
+    six-bar's group with its force plan alone, 73–78 %) gets them drawn larger — the scheme, a
+    group at its own μl, its force plan at its own μF, each by the standard series' next step in
+    turn — while every drawing stays on its sheet, the tables and notes keep their size, and each
+    stays within ``FILL_LARGEST`` of its target; the scheme no larger than the groups (review 6 #4).
+    One sheet (A1): its scheme, groups, force plans, acceleration plan and charts so grown into the
+    room the composition leaves (kinlayout.into_room), the smallest against its target first, before
+    the lever and the hodographs take theirs (review 7: A1 force sheets 46–53 % empty; the six-bar's
+    II(4-5) plan at 7.5 N/mm, not 10). Each size as drawn, not scaled from the family's model (a
+    force plan's lettering and short forces do not scale: 188 mm drawn where the model said 149)."""
+    mu = dict(p.mu)
+    fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
+    labels = [gp.label for gp in fp.groups]
+    fams = nat.families
+    one = p.shape != "set" or not p.where
+    sheets = [tuple(f"{fam} {i}" for fam, ls in _leaves(nat, mu).items() for i in range(len(ls)))] if one else p.where
+    for names in sheets:
+        leaves = _placed_leaves(dr, nat, mu)
+        if not one and _sheet_share(leaves, names, f) >= FILL_SHARE:
+            continue
+        steps = [("scheme", 0)] if "scheme 0" in names else []
+        for n in names:
+            fam, _, i = n.partition(" ")
+            if fam in ("groups", "forces"):
+                steps.append((fam, int(i)))
+            elif fam in ("acceleration", "charts", "hodographs") and (fam, 0) not in steps \
+                    and not (one and fam == "hodographs"):       # (one sheet: ``_grown_hodographs``)
+                steps.append((fam, 0))          # a family at one scale: grown while all its sheets hold it
+
+        def key_of(fam: str, i: int) -> str:
+            return {"groups": GROUP + labels[i], "forces": PLAN + labels[i]}.get(fam, fam)
+
+        growing = list(steps)
+        while growing:
+            # the smallest against its target first (kinlayout.into_room)
+            for fam, i in sorted(growing, key=lambda s: fams[s[0]].rel(mu.get(key_of(*s), mu[s[0]]))):
+                key = key_of(fam, i)
+                base = mu.get(key, mu[fam])
+                nxt = fams[fam].finer(base) if fams[fam].factors else next_round(base)
+                # the scheme never larger than the groups cut from it (review 6 #4)
+                if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
+                        or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)):
+                    growing.remove((fam, i))
+                    continue
+                trial_mu = {**mu, key: nxt}
+                trial = {k: list(v) for k, v in leaves.items()}
+                if fam in ("acceleration", "charts", "hodographs"):       # one scale: its model's cells
+                    trial[fam] = [Leaf(x.name, *(v + GROW_MARGIN * (fam == "acceleration")
+                                                 for v in fams[fam].size(nxt, j)))
+                                  for j, x in enumerate(trial[fam])]
+                else:
+                    if fam == "scheme":
+                        w, h = dr.scheme_size(trial_mu, nxt, fams["scheme"].caption)
+                    elif fam == "groups":
+                        w, h = dr.group_size(mu, i, nxt, fams["groups"].caption)
+                    else:
+                        w, h = dr.plan_size(mu, i, nxt, fams["forces"].caption)
+                    trial[fam][i] = Leaf(trial[fam][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
+                # the notes may take a line (the groups' μl apart from the scheme's): then fitted again
+                if _fits(nat, f, p, trial) and (_lettering_kept(dr, nat, trial_mu, p) or _fits(nat, f, p, trial)):
+                    mu, leaves = trial_mu, trial
+                else:
+                    growing.remove((fam, i))
+    return replace(p, mu=mu) if mu != p.mu else p
 
 
 HODOGRAPHS_ROOM = 1.6     # a one-sheet composition's hodographs grown into the room left, up to this over their cap
@@ -885,7 +1035,7 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
     or needs no more sheets (a set)."""
     if p.shape == "set":
-        out = _where(_set_pages(nat, f, leaves, p.tables, p.plan_first))
+        out = _where(_set_pages(nat, f, leaves, p.tables, p.plan_first, p.gap))
         return out is not None and (out == p.where if p.where else len(out) <= p.sheets)
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
@@ -945,14 +1095,28 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
                                                                                     fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
+    drawn = dr.memo.get(("scheme size", mu["scheme"], mu["forces"]))
+    if drawn is not None and leaves["scheme"]:     # the scheme as drawn at its scale (``_filled_sheets``)
+        s = leaves["scheme"][0]
+        leaves["scheme"] = [Leaf(s.name, max(s.w, drawn[0] + GROW_MARGIN), max(s.h, drawn[1] + GROW_MARGIN))]
     plans = dict(plan_scales(mu))
     if plans:                                      # a force plan at its own μF (``_grown_plans``)
         fam = nat.families["forces"]
         fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
-        leaves["forces"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in fam.size(plans[gp.label], i)))
+        leaves["forces"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in _plan_cell(dr, mu, fam, plans[gp.label], i)))
                             if gp.label in plans else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["forces"], fp.groups))]
     return leaves
+
+
+def _plan_cell(dr: ForceDrafter, mu: dict[str, float], fam: Family, mu_F: float, i: int) -> tuple[float, float]:
+    """A force plan's cell at its own μF: the family's model, or as drawn where it was
+    (``ForceDrafter.plan_size``), the larger."""
+    w, h = fam.size(mu_F, i)
+    for key, drawn in dr.memo.items():
+        if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"]):    # (not μv's)
+            w, h = max(w, drawn[0]), max(h, drawn[1])
+    return w, h
 
 
 def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Plan) -> bool:
@@ -1118,8 +1282,8 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         from graphplan.sheets.forceset import laid, pack, spread, units_of
         nrec = note_block(note_lines, TITLE)
         notes_leaf = Leaf("notes", record=nrec)
-        packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region, keep_out(f),
-                      later_keep(f))
+        packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap), tables, notes_leaf, region,
+                      keep_out(f), later_keep(f), p.gap)
         if packed is None or len(packed) > p.sheets:
             # each drawing in the cell the plan sized: the set's sheets as the plan counted them
             planned = _placed_leaves(dr, nat, p.mu)
@@ -1131,8 +1295,8 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             tables = [Leaf(t.name, max(t.w, w), max(t.h, h), t.record)
                       for t, (_, w, h) in zip(tables, nat.tables[p.tables])]
             notes_leaf = Leaf("notes", TITLE, max(_wh(nrec)[1], notes_height(nat.notes, TITLE)), nrec)
-            packed = pack(units_of(leaves, region[2] - region[0], p.plan_first), tables, notes_leaf, region,
-                          keep_out(f), later_keep(f))
+            packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap), tables, notes_leaf, region,
+                          keep_out(f), later_keep(f), p.gap)
         if packed is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = []
@@ -1140,6 +1304,6 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             keep = keep_out(f) if k == 0 else later_keep(f)
             corner = {t.name for t in tables} | {"notes"}          # a table at its column's left
             pages.append([Placed(leaf.name, (top_left if leaf.name in corner else centred)(leaf.record, b), b)
-                          for leaf, b in laid(spread(spots, region, keep), region) if leaf.record is not None])
+                          for leaf, b in laid(spread(spots, region, keep, p.gap), region) if leaf.record is not None])
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")

@@ -8,7 +8,10 @@ at the highest free place of the sheet that holds it (a skyline: the room under 
 far), the further left the better: a drawing goes beside the last one where the width holds it, or
 under it, or starts a column to its right (a tall scheme with the groups in a column beside it, as
 the A1 sheet draws them). A drawing never goes back to an earlier sheet nor above-left of the one
-before it. The tables, each whole, go together in one to three columns under the drawings at the
+before it — except that a sheet the next drawing would leave mostly empty (a tall scheme alone: 80 %
+of its 20 mm cells blank, review 7 #1) takes a later drawing that reads on its own first, the
+acceleration plan or the lever, where one fits. Drawings stand ``SPACE`` apart (review 7 #18), or
+the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
 sheet's right, the notes right over the title block; a new sheet only where they do not fit. Each
 sheet's spare room is then shared out between its drawings (their corners' distances from the field's
 top-left corner stretched alike: boxes that did not meet still do not)."""
@@ -21,6 +24,10 @@ from dataclasses import dataclass, replace
 from graphplan.drawing.layout import GAP, Grid, Leaf, Node, Row, Stack, arrange, extent, split
 
 Box = tuple[float, float, float, float]
+# mm between two drawings (review 7 #18: group II(2-3)'s "R₀₃" stood 7 mm before group I(0-1)'s "A"
+# across a 5 mm gap and read as one label): a label nearer its own drawing than another's lettering
+SPACE = 10.0
+FILL_SHARE = 0.5      # a sheet whose drawings' cells take less of its field than this is mostly empty
 
 
 @dataclass
@@ -153,7 +160,8 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
         return sorted(out, key=lambda s: (round(s.d, 6), s.x))[:GROUP_TRIES]
 
     def grids(children: list, page: Skyline) -> list[Grid]:
-        return [g for g in (Grid(children, c) for c in range(1, len(children) + 1)) if extent(g)[0] <= page.W + 1e-9]
+        return [g for g in (Grid(children, c, page.gap) for c in range(1, len(children) + 1))
+                if extent(g)[0] <= page.W + 1e-9]
 
     def tables_on(pages: list[Skyline]) -> bool:
         """The tables whole on one sheet: the last, else a new one; only where no sheet holds them
@@ -197,6 +205,15 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
                         if whole is None or (split is not None and len(split) < len(whole)):
                             return split
                         return whole
+            if spot is None and pages[-1].spots and share(pages[-1]) < FILL_SHARE:
+                # the sheet would be left mostly empty (the slotter's and the sieve's scheme alone on
+                # sheet 1, 80 % of its cells blank): a later drawing that reads on its own — the
+                # acceleration plan the inertia loads come from, the Zhukovsky lever — set here first
+                j = next((j for j, later in enumerate(queue) if movable(later) and place(later, pages[-1])), None)
+                if j is not None:
+                    later = queue.pop(j)
+                    pages[-1].put(place(later, pages[-1]))
+                    spot = place(alts, pages[-1])
             if spot is not None and _is_group(alts[0]) and any(_is_group(q[0]) for q in queue):
                 # a group with another after it: of its places, the one that needs fewest sheets
                 # (the first of those), the groups kept in the analysis' order
@@ -242,6 +259,17 @@ def _is_group(node: Node) -> bool:
     if isinstance(node, Leaf):
         return node.name.startswith(("group ", "groups "))
     return any(_is_group(c) for c in getattr(node, "children", ()))
+
+
+def share(page: Skyline) -> float:
+    """The share of the sheet's field its drawings' cells take."""
+    return sum(s.w * s.h for s in page.spots) / (page.W * page.H)
+
+
+def movable(alts: Sequence[Node]) -> bool:
+    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever
+    (each of one drawing, named so by ``units_of``'s callers)."""
+    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(("acceleration", "lever"))
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:
@@ -442,7 +470,8 @@ def laid(spots: list[Spot], region: Box) -> list[tuple[Leaf, Box]]:
     return out
 
 
-def units_of(leaves: dict[str, list[Leaf]], width: float, plan_first: bool = True) -> list[list[Node]]:
+def units_of(leaves: dict[str, list[Leaf]], width: float, plan_first: bool = True,
+             gap: float = SPACE) -> list[list[Node]]:
     """The set's drawings in reading order as units (alternatives each): the scheme; the
     acceleration plan; each group beside (or over) its own force plan; the lever; each chart; the hodographs as one
     grid (kept together), of any width the sheet holds."""
@@ -453,11 +482,11 @@ def units_of(leaves: dict[str, list[Leaf]], width: float, plan_first: bool = Tru
     units: list[list[Node]] = [[s] for s in leaves["scheme"]] + (acc if plan_first else [])
     # a group beside its force plan, or over it where the sheet's room beside the last drawing is
     # narrow (a tall scheme's)
-    units += [[Row([g, q]), Stack([g, q])] for g, q in zip(leaves["groups"], leaves["forces"])]
+    units += [[Row([g, q], gap), Stack([g, q], gap)] for g, q in zip(leaves["groups"], leaves["forces"])]
     units += ([] if plan_first else acc) + [[lv] for lv in leaves["lever"]]
     units += [[c] for c in leaves["charts"]]
     hods = leaves["hodographs"]
     if hods:
-        grids = [Grid(hods, cols) for cols in range(1, len(hods) + 1)]
+        grids = [Grid(hods, cols, gap) for cols in range(1, len(hods) + 1)]
         units.append([g for g in grids if extent(g)[0] <= width + 1e-9] or grids[:1])
     return units
