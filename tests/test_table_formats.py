@@ -106,14 +106,18 @@ def test_acceleration_tables_one_count_of_decimals(case):
 
 def test_dimensions_table_names_the_drawings_letters(case):
     """review4 #12: the links' dimensions lettered as the drawing letters them (O₁A, O₂B: subscripts),
-    the bell crank's second arm O2D listed (not the derived BD), the slider's guide placed (e, its
-    distance from the crank's pivot)."""
+    the bell crank's second arm O2D listed (not the derived BD), the slider's guide placed (e, the
+    crank-slider's offset from the crank's pivot; X, a rocker-driven ram's guide from the rocker's pivot)."""
     st, plans, doc, lang = case
     names = [r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]]
     if st.mech.crank.pivot == "O1":
         assert "O_{1}A" in names and "O_{2}B" in names and "O_{2}D" in names and "BD" not in names, names
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
-        assert rows.get("e") in ("0,5", "0,50", "0,500"), rows       # the ram's guide x = 0.50 m from O1
+        # the ram's guide x = 0.50 m from O1 is driven by the rocker O2D: X from O2 = 0.50 − 0.28 m
+        # (seed 000 gives X from the rocker's pivot), its footnote saying so
+        assert rows.get("X") in ("0,22", "0,220"), rows
+        notes = [q.text for q in dimensions_table(st, plans.mu_l, lang).items if q.kind == "text"]
+        assert any(t.startswith("X — ") and "O_{2}" in t for t in notes), notes
     else:
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         assert rows.get("e") in ("0.06", "0.060"), rows                # the offset e = 60 mm

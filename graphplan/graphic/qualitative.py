@@ -15,8 +15,8 @@ other way) while the curve goes on one way — no extremum, but a bend the motio
 a-diagram's slopes per division 3.7 : 2.0 : 5.3 mm where the exact ones steepen 4.8 : 5.2 : 9.2).
 ``inflections`` finds the drawing's extrema of the slope and keeps a pair only where it bends the
 curve visibly: the slope's swing between the two times their distance over 4 (the curve's departure
-from the chord across the shoulder) at least ``visible`` mm; a pair the exact curve lacks even at a
-quarter of that is spurious.
+from the chord across the shoulder) at least ``BEND`` times ``visible`` mm; a pair the exact curve
+lacks even at a quarter of that is spurious.
 """
 from __future__ import annotations
 
@@ -161,7 +161,10 @@ class Verdict:
                     or self.spurious_bends)
 
 
-FAINT = 0.25     # the exact curve's inflections are looked for down to this share of ``visible``
+BEND = 2.0       # a shoulder is seen where it departs from its chord by this many ``visible`` (two ruler
+                 # divisions: the coulisse's A3 a-diagram 1.4 mm; a crank-slider's tangents 0.6 mm, the
+                 # coulisse A1's 0.4 mm a teacher passes)
+FAINT = 0.25     # the exact curve's inflections are looked for down to this share of that
 
 
 def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: float,
@@ -173,7 +176,8 @@ def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: floa
     sz, mz = match(zero_crossings(turn, drawn, visible), zero_crossings(turn, exact, visible), window)
     sb: list[Feature] = []
     if L is not None:
-        sb, _ = match(inflections(turn, drawn, L, visible), inflections(turn, exact, L, FAINT * visible), window)
+        bend = BEND * visible
+        sb, _ = match(inflections(turn, drawn, L, bend), inflections(turn, exact, L, FAINT * bend), window)
     return Verdict(se, me, sz, mz, sb)
 
 

@@ -205,15 +205,32 @@ def candidates(L: float, H1: float, H2: float, wrong: tuple[str, ...], poles=LAB
         yield {"H1": h1, "H2": h2, "correct": True}
 
 
-def taller(height: float | None) -> Iterator[dict[str, Any]]:
+def taller(height: float | None, H1: float | None = None, H2: float | None = None,
+           fixed: frozenset[str] = frozenset(), poles=LAB_POLES) -> Iterator[dict[str, Any]]:
     """The s diagram drawn taller (a finer μs: the ruler's half division a smaller share of every
-    ordinate, the v and a diagrams as much taller), with and without the correction; the caller's
-    ``fits`` bounds it by the sheet's room."""
+    ordinate, the v and a diagrams as much taller), with and without the correction; then, where
+    the pole distances are free, with the other pairs of the menu, nearest the first drawing's
+    first, with the correction and without (a finer μs doubles the v and a ordinates: the poles
+    the first drawing needed over a low s draw them too tall — the coulisse's A3 set kept H1 50,
+    H2 43 over an s 36 mm high, its a-diagram with a shoulder and 29 % off, where the A1's s 72 mm
+    high with H1 25, H2 35 and the correction is right); the caller's ``fits`` bounds it by the
+    sheet's room."""
     if height is None:
         return
     for f in TALLER:
         yield {"height": height * f}
         yield {"height": height * f, "correct": True}
+    if H1 is None or H2 is None or {"H1", "H2"} & fixed:
+        return
+    lo, top = poles
+    menu = [h for h in POLE_MENU if lo - 1e-9 <= h <= top + 1e-9]
+    pairs = sorted(((h1, h2) for h1 in menu for h2 in menu), key=lambda p: (abs(p[0] - H1) + abs(p[1] - H2), p))
+    for h1, h2 in pairs[CORRECTED_PAIRS:]:       # the rest of the menu corrected, as high as first drawn
+        yield {"H1": h1, "H2": h2, "correct": True}
+    for f in TALLER:
+        for h1, h2 in pairs:
+            yield {"height": height * f, "H1": h1, "H2": h2, "correct": True}
+            yield {"height": height * f, "H1": h1, "H2": h2}
 
 
 def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, dict[str, Any]]],
@@ -265,7 +282,8 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         return ({**options, **change},
                 Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
 
-    cands = list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest)) + list(taller(base["height"]))
+    cands = (list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest))
+             + list(taller(base["height"], H1, H2, fixed, poles)))
     passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}

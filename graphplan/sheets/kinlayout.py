@@ -273,7 +273,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
 
 def sizes_of(nat: Natural, mu: dict[str, float], k_diagrams) -> tuple[float, ...]:
     """What a candidate draws: its families' principal segments and the diagrams' size factor."""
-    return tuple(nat.drawn(fam, mu[fam]) for fam in FAMILIES) + (k_diagrams,)
+    return tuple(nat.drawn(fam, mu[fam]) for fam in FAMILIES) + (min(factors(k_diagrams)),)
 
 
 def into_room(nat: Natural, mu: dict[str, float], fits) -> dict[str, float]:
