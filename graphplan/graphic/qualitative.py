@@ -15,8 +15,8 @@ other way) while the curve goes on one way — no extremum, but a bend the motio
 a-diagram's slopes per division 3.7 : 2.0 : 5.3 mm where the exact ones steepen 4.8 : 5.2 : 9.2).
 ``inflections`` finds the drawing's extrema of the slope and keeps a pair only where it bends the
 curve visibly: the slope's swing between the two times their distance over 4 (the curve's departure
-from the chord across the shoulder) at least ``BEND`` times ``visible`` mm; a pair the exact curve
-lacks even at a quarter of that is spurious.
+from the chord across the shoulder) at least ``BEND`` times ``visible`` mm; where the drawing has
+more of them than the exact curve even at a quarter of that, those it lacks are spurious.
 """
 from __future__ import annotations
 
@@ -177,7 +177,9 @@ def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: floa
     sb: list[Feature] = []
     if L is not None:
         bend = BEND * visible
-        sb, _ = match(inflections(turn, drawn, L, bend), inflections(turn, exact, L, FAINT * bend), window)
+        got, want = inflections(turn, drawn, L, bend), inflections(turn, exact, L, FAINT * bend)
+        if len(got) > len(want):        # more bends than the motion has (a displaced one is no shoulder)
+            sb, _ = match(got, want, window)
     return Verdict(se, me, sz, mz, sb)
 
 

@@ -282,8 +282,11 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         return ({**options, **change},
                 Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
 
+    # the whole menu over the taller s only where the first drawing is wrong: a right one redrawn
+    # for its errors alone stays about its size (a press's H1 50 mm grew its diagrams into the room
+    # of its velocity plans)
     cands = (list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest))
-             + list(taller(base["height"], H1, H2, fixed, poles)))
+             + list(taller(base["height"], H1, H2, fixed if wrong else frozenset({"H1", "H2"}), poles)))
     passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}
