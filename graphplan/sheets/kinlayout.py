@@ -182,13 +182,14 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
 KEPT = 0.9        # … where every other plan keeps at least this share of its size
+GAIN = 2.0        # … and the position plan is drawn at least this many times as large
 
 
 def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
     """Where the sheet's main drawing, the position plan, is drawn with its crank under ``CRANK_MM``
     (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
-    height kept), the longest whose composition draws the position plan larger and every other
-    plan at least ``KEPT`` as large — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
+    height kept), the longest whose composition draws the position plan at least ``GAIN`` times as
+    large and every other plan at least ``KEPT`` as large — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
     letters 14–27 mm off their points) in the 77 mm the full-length diagrams left it; L × 0.7
     gives it 1:4 (p_v a 26.7 → 25.0 mm, π a 61.5 → 60.0 mm). None where no shorter length does."""
     if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
@@ -199,7 +200,7 @@ def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
         if got is None:
             continue
         now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
-        if now[0] > was[0] + 1e-9 and all(a >= KEPT * b - 1e-9 for a, b in zip(now[1:], was[1:])):
+        if now[0] >= GAIN * was[0] - 1e-9 and all(a >= KEPT * b - 1e-9 for a, b in zip(now[1:], was[1:])):
             return got[1]
     return None
 

@@ -327,12 +327,14 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     lengths = link_lengths(st)
     tenths = [v for _, v in lengths if abs(v * 1e4 - round(v * 1e4)) < 1e-6 < abs(v * 1e3 - round(v * 1e3))]
     real = 4 if tenths else 3        # a given 12.5 mm; a derived 286.36 mm stays to the millimetre
+    # a rocker-driven ram's guide: X named with the pivot it is measured from ("X від O"), no footnote
+    # (a line more under the table cost a press its full-size diagrams)
+    froms = {label: w('dims from', symbol=label, pivot=_pivot_name(pivot))
+             for label, _, _, pivot in guide_distances(st) if label.startswith("X")}
     for name, length in lengths:
-        rows.append([name, written(length, real, lang), written(lay_off(length / mu_l, precision), ruler, lang)])
-    rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
-    said = [w('dims guide', symbol=label, guide=g.title(lang), pivot=_pivot_name(pivot))
-            for label, _, g, pivot in guide_distances(st) if label.startswith("X")]
-    return footnoted(rec, said) if said else rec
+        rows.append([froms.get(name, name), written(length, real, lang),
+                     written(lay_off(length / mu_l, precision), ruler, lang)])
+    return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
 
 
 def _pivot_name(p: str) -> str:
