@@ -6,14 +6,17 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st_
 
+import random_mechanisms as rm
 from conftest import EXAMPLES, example, scene_study
 from review_scenes import COULISSE, COULISSE8, FOURBAR, OFFSET_SLIDER, PRESS4, PRESS_EN, SIXBAR, SIXBAR6, SIXBAR7
 from graphplan.graphic import qualitative
 from graphplan.graphic.plans import build_plans
 from graphplan.graphic.scales import chosen_length
+from graphplan.util.errors import GraphplanError
+from test_redraw import check_sheet_diagrams
 
 LINKAGES = [n for n in EXAMPLES if not n.startswith(("cam_", "gears"))]
 REVIEWS = [COULISSE8, COULISSE, FOURBAR, OFFSET_SLIDER, PRESS4, PRESS_EN, SIXBAR, SIXBAR6, SIXBAR7]
@@ -155,10 +158,6 @@ def test_the_a1_draws_the_coulisses_position_plan_as_large_as_its_room():
 def test_a_generated_coulisses_diagrams_have_no_shoulder_a_redrawing_removes(r, c, e, w, k):
     """Issue 32 #2 with shoulders judged: a generated slotted-lever coulisse's sheet diagrams are right
     (no extrema, zeros or shoulders the motion lacks), or none of the lab's alternatives is."""
-    from hypothesis import assume
-    from test_redraw import check_sheet_diagrams
-    from graphplan.util.errors import GraphplanError
-    import random_mechanisms as rm
     text, ok = rm.rpr(r, c, e, w, 1)
     assume(ok)
     try:
