@@ -107,7 +107,7 @@ def test_the_coulisses_a3_a_diagram_is_redrawn_without_its_shoulder():
     assert said[0].get("spurious_bends") and not said[0].get("spurious_extrema")
     turns = [b["turn_deg"] / 30.0 for b in said[0]["spurious_bends"]]
     assert any(4.5 <= t <= 6.5 for t in turns), turns
-    chosen, done = redraw(st, first, 0.5, POLES)
+    chosen, done = redraw(st, first, 0.5, POLES, menu=True)     # a set: the diagrams on a sheet of their own
     assert done.wrong_before == ("a",) and done.right and done.off_after < 15.0
     again = chord_diagrams(st, precision=0.5, **chosen)
     assert not [w for w in again.warnings if w["kind"] == "qualitative"]

@@ -257,12 +257,15 @@ def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, di
 
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
            fixed: frozenset[str] = frozenset(), tallest: float | None = None,
-           fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
+           fits: Callable[[dict[str, Any]], bool] | None = None, menu: bool = False) -> tuple[dict[str, Any], Redrawing]:
     """The options of a drawing both qualitatively right and read within the lab's 5 % at the
     positions: ``options`` (``chord_diagrams`` keywords: point, divisions, L, H1, H2, height) as given
     where that drawing is both, else the first candidate (``candidates``, then ``taller``; each tried
     once) that is and that ``fits`` (the caller's room: a drawing too large for it is passed over;
-    its second argument False where the first drawing was right: no larger than it).
+    its second argument False where the first drawing was right: no larger than it). ``menu``: a
+    wrong first drawing is also tried with every pair of the pole menu, corrected, and over a taller
+    s (``taller``) — a set's diagrams, on a sheet of their own (on an A1 a taller right drawing
+    the room passes may not fit beside the plans: a press's went from 0.8 to 0.64 of its size).
     Where none reaches 5 %: the qualitatively right one with the smallest largest |δ| at the
     positions (the first drawing, unless another cuts that by at least ``WORTHWHILE``); none right:
     ``options`` unchanged (their warnings stay). Returns the options and what was done."""
@@ -286,7 +289,7 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
     # for its errors alone stays about its size (a press's H1 50 mm grew its diagrams into the room
     # of its velocity plans)
     cands = (list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest))
-             + list(taller(base["height"], H1, H2, fixed if wrong else frozenset({"H1", "H2"}), poles)))
+             + list(taller(base["height"], H1, H2, fixed if wrong and menu else frozenset({"H1", "H2"}), poles)))
     passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}
