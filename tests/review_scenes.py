@@ -904,3 +904,99 @@ synchronous_rpm = 750
 '''
 
 SIXBAR_REV7 = SIXBAR7     # the same scene (its dynamics tests name it so)
+
+
+# Review 8: a coulisse quick-return of a slotting machine, K = 1.5, its crank clockwise, the guide pivot O
+# 0.30 m below the crank's O1, the ram's guide 0.62 m above O (the plan 1:10 on the A1, a shoulder on the A3's a).
+COULISSE8 = '''# Coulisse (rocking guide) quick-return mechanism of a slotting press: K = 1.5, crank turning clockwise.
+title = "Кулісний механізм довбального верстата"
+title_en = "Coulisse mechanism of a slotting machine"
+designation = "ТММ.КП.08.000"
+lang = "uk"
+
+[sheet]
+student = "Коваленко"
+teacher = "Петренко"
+group = "МБ-22"
+organisation = "НУБіП України"
+
+[synthesis]
+type = "quick_return"
+K = 1.5
+stroke = 0.36
+centre_distance = 0.30
+
+[params]
+X = 0.62
+rod = "0.3 * rocker"
+
+[frame.points]
+O = [0, 0]
+O1 = [0, "centre_distance"]
+
+[frame.guides]
+ram = { through = [0, "X"], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = "crank"
+rpm = 110
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "OB"
+
+[[link]]
+name = "OB"
+number = 3
+joints = ["O", "B"]
+length = "rocker"
+points = { S3 = 0.5 }
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = "rod"
+points = { S4 = 0.5 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 32
+
+[branch]
+A = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 9]
+force_phi_deg = 100
+
+[loads]
+g = 9.81
+mass_per_length = 120
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 3200
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.03, 1], [0.31, 1], [0.35, 0]]
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -96,8 +96,12 @@ def test_acceleration_tables_one_count_of_decimals(case):
         for j in (1, 2, 3):                                   # mm, graphical, analytic
             counts = {_decimals(r[j]) for r in body} - {None}
             assert len(counts) == 1, (j, [r[j] for r in body])
-        mm = [float(r[1].replace(",", ".")) for r in body if NUMBER.match(r[1])]
-        assert all(abs(2 * v - round(2 * v)) < 1e-9 for v in mm)     # to the ruler's 0.5 mm
+        # to the ruler's 0.5 mm — but the crank pin's π a, the scale's own vector a_A / μa (not a reading)
+        pin = st.mech.crank.pin
+        mm = [float(r[1].replace(",", ".")) for r in body if NUMBER.match(r[1]) and r[0] != f"a_{{{pin}}}"]
+        assert all(abs(2 * v - round(2 * v)) < 1e-9 for v in mm)
+        a_pin = next(r for r in body if r[0] == f"a_{{{pin}}}")
+        assert float(a_pin[1].replace(",", ".")) == pytest.approx(pos["acceleration"][pin]["analytic"] / pos["mu_a"], abs=0.051)
         for line in (t for t in _rows(rec) if len(t) == 1):
             for x in re.findall(r"\(([\d.,]+) (?:mm|мм)\)", line[0]):   # a footnote's drawn length
                 v = float(x.replace(",", "."))
@@ -106,14 +110,16 @@ def test_acceleration_tables_one_count_of_decimals(case):
 
 def test_dimensions_table_names_the_drawings_letters(case):
     """review4 #12: the links' dimensions lettered as the drawing letters them (O₁A, O₂B: subscripts),
-    the bell crank's second arm O2D listed (not the derived BD), the slider's guide placed (e, its
-    distance from the crank's pivot)."""
+    the bell crank's second arm O2D listed (not the derived BD), the slider's guide placed (e, the
+    crank-slider's offset from the crank's pivot; X, a rocker-driven ram's guide from the rocker's pivot)."""
     st, plans, doc, lang = case
     names = [r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]]
     if st.mech.crank.pivot == "O1":
         assert "O_{1}A" in names and "O_{2}B" in names and "O_{2}D" in names and "BD" not in names, names
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
-        assert rows.get("e") in ("0,5", "0,50", "0,500"), rows       # the ram's guide x = 0.50 m from O1
+        # the ram's guide x = 0.50 m from O1 is driven by the rocker O2D: X from O2 = 0.50 − 0.28 m
+        # (seed 000 gives X from the rocker's pivot), the row naming the pivot
+        assert rows.get("X від O_{2}") in ("0,22", "0,220"), rows
     else:
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         assert rows.get("e") in ("0.06", "0.060"), rows                # the offset e = 60 mm

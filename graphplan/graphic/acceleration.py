@@ -29,8 +29,8 @@ class AccelerationPlan(Plan):
         """a_A = a^n_AO (ω1²·l_OA, ∥ AO toward O) + a^τ_AO (ε1·l_OA ⊥ OA)."""
         sc, cr = self.sc, self.sc.mech.crank
         O, A = where(sc, self.lay, FRAME, cr.pivot), where(sc, self.lay, cr.link, cr.pin)
-        n = self.laid(cr.omega ** 2 * cr.length, O - A)
-        t = self.laid(cr.epsilon * cr.length, 1j * math.copysign(1.0, cr.epsilon) * (A - O)) if cr.epsilon else 0j
+        n = self.scaled(cr.omega ** 2 * cr.length, O - A)
+        t = self.scaled(cr.epsilon * cr.length, 1j * math.copysign(1.0, cr.epsilon) * (A - O)) if cr.epsilon else 0j
         step = f"a_{cr.pin} = a^n_{cr.pin}{cr.pivot} + a^τ_{cr.pin}{cr.pivot}"
         if cr.epsilon:
             self.crank_items = [i for i in (self.vector(0j, n, "normal", step),

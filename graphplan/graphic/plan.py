@@ -170,6 +170,13 @@ class Plan:
         """A computed magnitude laid off with the ruler along ``direction`` (a plan vector, mm)."""
         return lay_off(abs(value) / self.mu, self.precision) * unit(direction)
 
+    def scaled(self, value: float, direction: complex) -> complex:
+        """The crank's own vector, drawn as the scale defines it: p_v a = v_A / μ_v (π a = a_A / μ_a)
+        exactly — the length the scale was chosen by, so the crank pin reads v_A = ω1·l_OA back
+        (p_v a = 30 mm at μ_v = 0.0355 laid with the ruler drew 30.0 mm and read v_A 1.065 where
+        ω1·l_OA = 1.068)."""
+        return abs(value) / self.mu * unit(direction)
+
     # what is measured --------------------------------------------------------------------------------
     def entry(self, key: str, kind: str, vec_mm: complex, exact: complex, laid: bool = False) -> None:
         """A segment of the plan: read off (or, for a laid-off component, its laid length)."""
@@ -294,6 +301,11 @@ class Plan:
             self.warnings.append(PlanWarning(self.kind, group, "lines", angle, said["en"], said["uk"]))
         return x
 
+    def is_crank_pin(self, name: str) -> bool:
+        """Whether ``name`` is the crank's pin, whose plan vector the scale defines."""
+        cr = self.sc.mech.crank
+        return name == cr.pin and self.sc.body_of(name) == cr.link
+
     # images -------------------------------------------------------------------------------------------
     def plan_point(self, body: str, point: str) -> complex:
         return self.images[body].at(where(self.sc, self.lay, body, point))
@@ -305,7 +317,8 @@ class Plan:
             if sc.fixed(name):
                 continue
             p = self.plan_point(sc.body_of(name), name)
-            self.entry(name, "point", p, self.exact.point(name)[self.index])
+            # the crank pin's vector is the scale's own (``scaled``): its value is ω1·l (ω1²·l), not a reading
+            self.entry(name, "point", p, self.exact.point(name)[self.index], laid=self.is_crank_pin(name))
             self.name_point(sub(name), p)
         for (point, body), name in sc.coincident.items():
             if body in self.images:

@@ -9,6 +9,14 @@ mm are merged away in pairs (the smallest swing first: the persistence of a peak
 crossing counts only when the curve goes from beyond +visible to beyond −visible (or back). A
 diagram's feature matches an exact one of the same kind within ``window`` degrees of crank turn
 (one division interval); what is left over is spurious (the diagram's) or missed (the exact curve's).
+
+A shoulder is wrong too: a pair of inflections where the slope flattens and steepens again (or the
+other way) while the curve goes on one way — no extremum, but a bend the motion does not have (an A3
+a-diagram's slopes per division 3.7 : 2.0 : 5.3 mm where the exact ones steepen 4.8 : 5.2 : 9.2).
+``inflections`` finds the drawing's extrema of the slope and keeps a pair only where it bends the
+curve visibly: the slope's swing between the two times their distance over 4 (the curve's departure
+from the chord across the shoulder) at least ``BEND`` times ``visible`` mm; where the drawing has
+more of them than the exact curve even at a quarter of that, those it lacks are spurious.
 """
 from __future__ import annotations
 
@@ -53,6 +61,38 @@ def extrema(turn: np.ndarray, y: np.ndarray, visible: float) -> list[Feature]:
     if len(cand) == 2 and abs(y[cand[0][1]] - y[cand[1][1]]) < visible:
         cand = []
     return [Feature(kind, float(turn[at])) for kind, at in cand]
+
+
+def inflections(turn: np.ndarray, y: np.ndarray, L: float, visible: float) -> list[Feature]:
+    """Visible inflections of a periodic curve drawn over ``L`` mm (``turn``: deg, one period, no
+    closing sample): the extrema of its slope dy/dx ("bend+" a maximum of the slope, "bend-" a
+    minimum), merged away in pairs, the least first, while a pair bends the curve by less than
+    ``visible`` mm — |Δ(dy/dx)|·Δx/4, the departure from the chord across the bend."""
+    y = np.asarray(y, dtype=float)
+    n = len(y)
+    if n < 4 or L <= 0:
+        return []
+    dx = L / n
+    slope = (np.roll(y, -1) - np.roll(y, 1)) / (2.0 * dx)
+    ds = np.diff(np.append(slope, slope[0]))
+    sign = np.sign(ds)
+    nz = np.flatnonzero(sign)
+    if nz.size == 0:
+        return []
+    nxt = np.roll(nz, -1)
+    cand = sorted((int((j + 1) % n), "bend+" if sign[j] > 0 else "bend-") for j in nz[sign[nz] != sign[nxt]])
+
+    def bend(i: int, j: int) -> float:
+        a, b = cand[i][0], cand[j][0]
+        return abs(slope[a] - slope[b]) * (((b - a) % n) * dx) / 4.0
+    while len(cand) > 2:
+        bends = [bend(i, (i + 1) % len(cand)) for i in range(len(cand))]
+        i = int(np.argmin(bends))
+        if bends[i] >= visible:
+            break
+        j = (i + 1) % len(cand)
+        cand = [c for m, c in enumerate(cand) if m not in (i, j)]
+    return [Feature(kind, float(turn[at])) for at, kind in cand]
 
 
 def zero_crossings(turn: np.ndarray, y: np.ndarray, visible: float, period: float = 360.0) -> list[Feature]:
@@ -113,18 +153,34 @@ class Verdict:
     missed_extrema: list[Feature]
     spurious_zeros: list[Feature]
     missed_zeros: list[Feature]
+    spurious_bends: list[Feature] = ()     # inflections (a shoulder) the exact curve lacks
 
     @property
     def wrong(self) -> bool:
-        return bool(self.spurious_extrema or self.missed_extrema or self.spurious_zeros or self.missed_zeros)
+        return bool(self.spurious_extrema or self.missed_extrema or self.spurious_zeros or self.missed_zeros
+                    or self.spurious_bends)
+
+
+BEND = 2.0       # a shoulder is seen where it departs from its chord by this many ``visible`` (two ruler
+                 # divisions: the coulisse's A3 a-diagram 1.4 mm; a crank-slider's tangents 0.6 mm, the
+                 # coulisse A1's 0.4 mm a teacher passes)
+FAINT = 0.25     # the exact curve's inflections are looked for down to this share of that
 
 
 def compare(turn: np.ndarray, drawn: np.ndarray, exact: np.ndarray, window: float,
-            visible: float = VISIBLE_MM) -> Verdict:
-    """The drawn curve against the exact one, both in mm sampled at the same turns (one period)."""
+            visible: float = VISIBLE_MM, L: float | None = None) -> Verdict:
+    """The drawn curve against the exact one, both in mm sampled at the same turns (one period);
+    with the abscissa's length ``L`` (mm) also the shoulders (``inflections``): the drawing's
+    visible ones the exact curve lacks even faintly."""
     se, me = match(extrema(turn, drawn, visible), extrema(turn, exact, visible), window)
     sz, mz = match(zero_crossings(turn, drawn, visible), zero_crossings(turn, exact, visible), window)
-    return Verdict(se, me, sz, mz)
+    sb: list[Feature] = []
+    if L is not None:
+        bend = BEND * visible
+        got, want = inflections(turn, drawn, L, bend), inflections(turn, exact, L, FAINT * bend)
+        if len(got) > len(want):        # more bends than the motion has (a displaced one is no shoulder)
+            sb, _ = match(got, want, window)
+    return Verdict(se, me, sz, mz, sb)
 
 
 def sample_turns(samples: int = 720) -> np.ndarray:
@@ -142,11 +198,13 @@ def of_ordinates(turn: np.ndarray, x_at: np.ndarray, ordinates: np.ndarray, L: f
     """The verdict on a diagram drawn as the French curve (periodic spline over L mm) through the
     ``ordinates`` at abscissae ``x_at``, against the exact curve ``truth`` (mm) at ``turn``."""
     from graphplan.graphic.chords import periodic_spline
-    return compare(turn, periodic_spline(x_at, ordinates, L)(L * turn / 360.0), truth, window, visible)
+    return compare(turn, periodic_spline(x_at, ordinates, L)(L * turn / 360.0), truth, window, visible, L)
 
 
-KIND_WORDS = {"en": {"max": "max", "min": "min", "up": "rising", "down": "falling"},
-              "uk": {"max": "макс.", "min": "мін.", "up": "зростає", "down": "спадає"}}
+KIND_WORDS = {"en": {"max": "max", "min": "min", "up": "rising", "down": "falling",
+                     "bend+": "inflection", "bend-": "inflection"},
+              "uk": {"max": "макс.", "min": "мін.", "up": "зростає", "down": "спадає",
+                     "bend+": "перегин", "bend-": "перегин"}}
 
 
 def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
@@ -176,7 +234,9 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
                 ("spurious_zeros", verdict.spurious_zeros, "zero crossings the exact curve lacks",
                  "переходи через нуль, яких немає в точній кривій"),
                 ("missed_zeros", verdict.missed_zeros, "misses the exact curve's zero crossings",
-                 "пропущено переходи точної кривої через нуль")):
+                 "пропущено переходи точної кривої через нуль"),
+                ("spurious_bends", list(verdict.spurious_bends), "a shoulder (inflections) the exact curve lacks",
+                 "уступ (точки перегину), якого немає в точній кривій")):
             if not items:
                 continue
             phis = crank_angle(d.study, [f.turn for f in items])
@@ -213,7 +273,8 @@ def _short(entry: dict[str, Any], sym: str) -> tuple[str, str]:
     for key, e_word, u_word in (("spurious_extrema", "spurious extrema", "хибні екстремуми"),
                                 ("missed_extrema", "missed extrema", "пропущені екстремуми"),
                                 ("spurious_zeros", "spurious zeros", "хибні нулі"),
-                                ("missed_zeros", "missed zeros", "пропущені нулі")):
+                                ("missed_zeros", "missed zeros", "пропущені нулі"),
+                                ("spurious_bends", "a spurious shoulder", "хибний уступ")):
         if entry.get(key):
             en.append(f"{e_word} φ = {where(key, False)}")
             uk.append(f"{u_word} φ = {where(key, True)}")

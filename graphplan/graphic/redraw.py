@@ -205,15 +205,32 @@ def candidates(L: float, H1: float, H2: float, wrong: tuple[str, ...], poles=LAB
         yield {"H1": h1, "H2": h2, "correct": True}
 
 
-def taller(height: float | None) -> Iterator[dict[str, Any]]:
+def taller(height: float | None, H1: float | None = None, H2: float | None = None,
+           fixed: frozenset[str] = frozenset(), poles=LAB_POLES) -> Iterator[dict[str, Any]]:
     """The s diagram drawn taller (a finer μs: the ruler's half division a smaller share of every
-    ordinate, the v and a diagrams as much taller), with and without the correction; the caller's
-    ``fits`` bounds it by the sheet's room."""
+    ordinate, the v and a diagrams as much taller), with and without the correction; then, where
+    the pole distances are free, with the other pairs of the menu, nearest the first drawing's
+    first, with the correction and without (a finer μs doubles the v and a ordinates: the poles
+    the first drawing needed over a low s draw them too tall — the coulisse's A3 set kept H1 50,
+    H2 43 over an s 36 mm high, its a-diagram with a shoulder and 29 % off, where the A1's s 72 mm
+    high with H1 25, H2 35 and the correction is right); the caller's ``fits`` bounds it by the
+    sheet's room."""
     if height is None:
         return
     for f in TALLER:
         yield {"height": height * f}
         yield {"height": height * f, "correct": True}
+    if H1 is None or H2 is None or {"H1", "H2"} & fixed:
+        return
+    lo, top = poles
+    menu = [h for h in POLE_MENU if lo - 1e-9 <= h <= top + 1e-9]
+    pairs = sorted(((h1, h2) for h1 in menu for h2 in menu), key=lambda p: (abs(p[0] - H1) + abs(p[1] - H2), p))
+    for h1, h2 in pairs[CORRECTED_PAIRS:]:       # the rest of the menu corrected, as high as first drawn
+        yield {"H1": h1, "H2": h2, "correct": True}
+    for f in TALLER:
+        for h1, h2 in pairs:
+            yield {"height": height * f, "H1": h1, "H2": h2, "correct": True}
+            yield {"height": height * f, "H1": h1, "H2": h2}
 
 
 def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, dict[str, Any]]],
@@ -240,12 +257,15 @@ def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, di
 
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
            fixed: frozenset[str] = frozenset(), tallest: float | None = None,
-           fits: Callable[[dict[str, Any]], bool] | None = None) -> tuple[dict[str, Any], Redrawing]:
+           fits: Callable[[dict[str, Any]], bool] | None = None, menu: bool = False) -> tuple[dict[str, Any], Redrawing]:
     """The options of a drawing both qualitatively right and read within the lab's 5 % at the
     positions: ``options`` (``chord_diagrams`` keywords: point, divisions, L, H1, H2, height) as given
     where that drawing is both, else the first candidate (``candidates``, then ``taller``; each tried
     once) that is and that ``fits`` (the caller's room: a drawing too large for it is passed over;
-    its second argument False where the first drawing was right: no larger than it).
+    its second argument False where the first drawing was right: no larger than it). ``menu``: a
+    wrong first drawing is also tried with every pair of the pole menu, corrected, and over a taller
+    s (``taller``) — a set's diagrams, on a sheet of their own (on an A1 a taller right drawing
+    the room passes may not fit beside the plans: a press's went from 0.8 to 0.64 of its size).
     Where none reaches 5 %: the qualitatively right one with the smallest largest |δ| at the
     positions (the first drawing, unless another cuts that by at least ``WORTHWHILE``); none right:
     ``options`` unchanged (their warnings stay). Returns the options and what was done."""
@@ -265,7 +285,11 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         return ({**options, **change},
                 Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
 
-    cands = list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest)) + list(taller(base["height"]))
+    # the whole menu over the taller s only where the first drawing is wrong: a right one redrawn
+    # for its errors alone stays about its size (a press's H1 50 mm grew its diagrams into the room
+    # of its velocity plans)
+    cands = (list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest))
+             + list(taller(base["height"], H1, H2, fixed if wrong and menu else frozenset({"H1", "H2"}), poles)))
     passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}

@@ -31,7 +31,7 @@ class VelocityPlan(Plan):
         """v_A = ω1·l_OA ⊥ OA in the sense of ω1: the segment p_v a."""
         sc, cr = self.sc, self.sc.mech.crank
         O, A = where(sc, self.lay, FRAME, cr.pivot), where(sc, self.lay, cr.link, cr.pin)
-        a = self.laid(cr.omega * cr.length, 1j * math.copysign(1.0, cr.omega) * (A - O))
+        a = self.scaled(cr.omega * cr.length, 1j * math.copysign(1.0, cr.omega) * (A - O))
         self.images[cr.link] = Image.through(O, 0j, A, a)
         self.rates[cr.link], self.basis[cr.link] = cr.omega, abs(cr.omega) * cr.length
 

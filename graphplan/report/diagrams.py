@@ -172,6 +172,8 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
             parts.append(f"{name} = {num(value, lang, 3)} {mm} " + (f"(не {num(was, lang, 3)})" if uk else
                                                                     f"(not {num(was, lang, 3)})"))
         elif key == "height":
+            if was is not None and _mu_s_at(d, was) == d.mu_s:
+                continue            # the allowance changed, not the drawing: μs as first chosen
             s0 = f"{d.symbols[0]}_{{{d.sub}}}"
             up = was is None or value > was
             parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}"
@@ -193,10 +195,20 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
     many = len(rd.wrong_before) > 1
     tail = f"; {off}" if off else ""
     if uk:
-        return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми чи нулі, яких немає в русі{tail}" if many
-                else f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми чи нулі, яких немає в русі{tail}")
-    return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema or zero crossings "
-            f"the motion lacks{tail}")
+        return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми, нулі чи уступи, яких немає в русі{tail}"
+                if many else
+                f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми, нулі чи уступи, яких немає в русі{tail}")
+    return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema, zero crossings or "
+            f"shoulders the motion lacks{tail}")
+
+
+def _mu_s_at(d: Diagrams, height: float) -> float:
+    """The μs the s diagram takes fitted to ``height`` mm (graphic.diagrams.choose_mu_s): the
+    output's range over the exact cycle."""
+    from graphplan.exact.positions import exact_motion
+    from graphplan.graphic.diagrams import CYCLE, choose_mu_s
+    s = exact_motion(d.study, d.output, np.arange(CYCLE + 1) * 360.0 / CYCLE)[0]
+    return choose_mu_s(d.study, d.unit, float(np.ptp(s)), height)
 
 
 def _integral(got: np.ndarray, ref: np.ndarray, max_mm: float) -> dict[str, Any]:

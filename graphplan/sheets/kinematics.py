@@ -80,7 +80,7 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
                 return True
             low = sizes.setdefault("first spans", _spans(st, first, precision))
             return all(got >= min(floor, was) - 1e-6 for got, was in zip(_spans(st, options, precision), low))
-        chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits)
+        chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits, menu=floor > 0)
         _REDRAWN[key] = {**chosen, "redrawn": done}
     return dict(_REDRAWN[key])
 

@@ -170,10 +170,39 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     tall velocity plans, 347 × 268 mm of diagrams and four tables hold no A1 sheet at full size,
     and A1 is one sheet. None where none holds even then."""
     full = one_sheet_at(dr, nat, f, DIAGRAMS_SHRUNK[0])
+    if full is not None and f.name in ONE_SHEET:
+        main = main_larger(dr, nat, f, full[1])
+        if main is not None:
+            return main
     if full is not None or f.name not in ONE_SHEET:       # a smaller format makes a set instead
         return full[1] if full is not None else None
     shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k, True)) is not None]
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
+
+
+SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
+KEPT = 0.9        # … where every other plan keeps at least this share of its size
+GAIN = 2.0        # … and the position plan is drawn at least this many times as large
+
+
+def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
+    """Where the sheet's main drawing, the position plan, is drawn with its crank under ``CRANK_MM``
+    (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
+    height kept), the longest whose composition draws the position plan at least ``GAIN`` times as
+    large and every other plan at least ``KEPT`` as large — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
+    letters 14–27 mm off their points) in the 77 mm the full-length diagrams left it; L × 0.7
+    gives it 1:4 (p_v a 26.7 → 25.0 mm, π a 61.5 → 60.0 mm). None where no shorter length does."""
+    if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
+        return None
+    was = sizes_of(nat, p.mu, p.diagrams)[:len(FAMILIES)]
+    for k in SHORTER:
+        got = one_sheet_at(dr, nat, f, (k, 1.0))
+        if got is None:
+            continue
+        now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
+        if now[0] >= GAIN * was[0] - 1e-9 and all(a >= KEPT * b - 1e-9 for a, b in zip(now[1:], was[1:])):
+            return got[1]
+    return None
 
 
 def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False
@@ -273,7 +302,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
 
 def sizes_of(nat: Natural, mu: dict[str, float], k_diagrams) -> tuple[float, ...]:
     """What a candidate draws: its families' principal segments and the diagrams' size factor."""
-    return tuple(nat.drawn(fam, mu[fam]) for fam in FAMILIES) + (k_diagrams,)
+    return tuple(nat.drawn(fam, mu[fam]) for fam in FAMILIES) + (min(factors(k_diagrams)),)
 
 
 def into_room(nat: Natural, mu: dict[str, float], fits) -> dict[str, float]:

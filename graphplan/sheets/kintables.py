@@ -252,16 +252,50 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
         d = abs(mech.frame[a] - mech.frame[b])
         if d > 0:
             out.append((named(a, b), d))
-    O = mech.frame.get(mech.crank.pivot)
-    from graphplan.model.mechanism import FRAME
-    guides = [(g.name, g) for g in mech.guides.values()
-              if g.body == FRAME and any(l.slides_on == g.name for l in mech.links.values())] if O is not None else []
-    for gname, g in guides:
-        u = cmath.exp(1j * g.angle)
-        e = abs(((O - g.through) * u.conjugate()).imag)        # O's distance from the guide's line
-        if e > 1e-9:                                            # an axial slider: no offset to give
-            out.append(("e" if len(guides) == 1 else f"e_{{{gname}}}", e))
+    out.extend((label, d) for label, d, _, _ in guide_distances(st))
     return out
+
+
+def guide_distances(st: Study) -> list[tuple[str, float, object, str]]:
+    """Each fixed guide's distance from a pivot, as the lab gives it: (label, m, guide, pivot). The
+    guide of a slider on the crank's own rod: e, the offset from the crank's pivot; a slider driven
+    by a rocker's rod (the coulisse's ram, a six-bar's): X from the rocker's pivot, as seed 000 gives
+    X from O (the coulisse's Table 4 printed "e = 0,320 м", its ram guide's distance from O1,
+    unexplained). With the guide's name where there are several."""
+    import cmath
+
+    from graphplan.model.mechanism import FRAME
+    mech = st.mech
+    if mech.frame.get(mech.crank.pivot) is None:
+        return []
+    guides = [g for g in mech.guides.values()
+              if g.body == FRAME and any(l.slides_on == g.name for l in mech.links.values())]
+    out = []
+    for g in guides:
+        pivot = _driver_pivot(mech, g.name) or mech.crank.pivot
+        u = cmath.exp(1j * g.angle)
+        d = abs(((mech.frame[pivot] - g.through) * u.conjugate()).imag)   # the pivot's distance from the line
+        if d > 1e-9:                                                     # an axial slider: no offset to give
+            symbol = "e" if pivot == mech.crank.pivot else "X"
+            out.append((symbol if len(guides) == 1 else f"{symbol}_{{{g.name}}}", d, g, pivot))
+    return out
+
+
+def _driver_pivot(mech, guide: str) -> str | None:
+    """The frame pivot of the rocker whose rod drives the slider on ``guide`` (None: the crank's rod
+    drives it, or no rocker does)."""
+    for slider in (l for l in mech.links.values() if l.slides_on == guide):
+        for j in slider.joints:
+            for rod in (l for l in mech.links.values() if l is not slider and j in l.joints):
+                for k in rod.joints:
+                    if k == j or k == mech.crank.pin:
+                        continue
+                    for carrier in mech.links.values():
+                        if carrier is not rod and k in carrier.joints and carrier.name != mech.crank.link:
+                            pivot = next((p for p in carrier.joints if p in mech.frame), None)
+                            if pivot is not None:
+                                return pivot
+    return None
 
 
 def _collinear(zs: list[complex], tol: float = 1e-9) -> bool:
@@ -286,9 +320,21 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     lengths = link_lengths(st)
     tenths = [v for _, v in lengths if abs(v * 1e4 - round(v * 1e4)) < 1e-6 < abs(v * 1e3 - round(v * 1e3))]
     real = 4 if tenths else 3        # a given 12.5 mm; a derived 286.36 mm stays to the millimetre
+    # a rocker-driven ram's guide: X named with the pivot it is measured from ("X від O"), no footnote
+    # (a line more under the table cost a press its full-size diagrams)
+    froms = {label: w('dims from', symbol=label, pivot=_pivot_name(pivot))
+             for label, _, _, pivot in guide_distances(st) if label.startswith("X")}
     for name, length in lengths:
-        rows.append([name, written(length, real, lang), written(lay_off(length / mu_l, precision), ruler, lang)])
+        rows.append([froms.get(name, name), written(length, real, lang),
+                     written(lay_off(length / mu_l, precision), ruler, lang)])
     return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
+
+
+def _pivot_name(p: str) -> str:
+    """A pivot as the drawing letters it (markup): O, O_{2}."""
+    from graphplan.util.markup import indexed
+    head = p.rstrip("0123456789")
+    return f"{indexed(head)}_{{{p[len(head):]}}}" if head and head != p else indexed(p)
 
 
 def lab_table(diag, lang: str, n: int = 4, precision: float = 0.5) -> Record | None:

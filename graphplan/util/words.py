@@ -250,6 +250,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin subtitle": ('Кінематичний аналіз', 'Kinematic analysis'),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
     "kin link": ('ланка', 'link'),
+    "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
     "kin real": ('l, м', 'l, m'),
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
