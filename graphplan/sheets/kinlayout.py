@@ -134,6 +134,26 @@ class Plan:
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
+TWO_COLUMNS = 2 * TITLE + GAP    # a set's notes this wide stand in two columns of the title block's width
+
+
+def note_halves(lines: list[str], width: float = TITLE) -> tuple[list[str], list[str]]:
+    """A set's notes in two columns (``TWO_COLUMNS``): the lines split, whole, where the taller
+    column (lines wrapped to ``width``) is lowest — the six-bar's A3 notes, 160 mm high at the title
+    block's width, took a sixth sheet of their own; in two columns they stand under the last tables."""
+    from graphplan.sheets.compose import NOTE, wrap_markup
+    counts = [len(wrap_markup(line, width - 5.0, NOTE)) for line in lines]
+    total = sum(counts)
+    cut = min(range(len(lines) + 1), key=lambda i: (max(sum(counts[:i]), total - sum(counts[:i])), -i))
+    return lines[:cut], lines[cut:]
+
+
+def set_notes_height(notes: list[list[str]], width: float) -> float:
+    """The height of a set's notes (one list of lines per language) at ``width``: one column, or
+    two where ``width`` is ``TWO_COLUMNS`` (``note_halves``)."""
+    if width < TWO_COLUMNS - 1e-9:
+        return notes_height(notes, width)
+    return max(notes_height([half], TITLE) for lines in notes for half in note_halves(lines))
 
 
 def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
@@ -407,7 +427,7 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
     return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", notes, nat.notes_height(notes))], width, after)
+                    + [Leaf("notes", notes, set_notes_height(nat.notes, notes))], width, after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
@@ -419,7 +439,15 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
     (unpadded) followed by the tables and the notes — a lone acceleration plan shares its sheet
     with the tables instead of taking one for itself."""
     def grid(cells_: list[Leaf]) -> list[list[Leaf]]:
-        return grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP)))) if cells_ else []
+        """The cells as one row that ``flow`` wraps where the room ends (a row cut short by the title
+        block or a sheet's foot goes on in the next line, not as a line of its own: the six-bar's A3
+        set put two velocity plans beside the title block and the other two of that row alone atop
+        the next sheet), padded so the last line's columns line up with the full lines'."""
+        if not cells_:
+            return []
+        k = max(1, int((width + GAP) // (cells_[0].w + GAP)))
+        c = cells_[0]
+        return [list(cells_) + [Leaf("", c.w, c.h) for _ in range(k - 1)]]
     if P.w + GAP + D.w <= width + 1e-9:
         rows = [[P, D]] + grid(V)
     else:
@@ -622,7 +650,8 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         return [m for m, _ in larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)]
     best = None
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
-    wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
+    # the notes' widths: the title block's, the room beside it, two columns of the title block's
+    wide = tuple(sorted({TITLE, max(TITLE, r[2])})) + ((TWO_COLUMNS,) if TWO_COLUMNS <= width + 1e-9 else ())
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
         for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
@@ -637,8 +666,11 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
                     fill = min(page_fill(page, region) for page in out)
-                    found = (len(out), orphan, fill, nw)
-                    if not orphan:
+                    got = (len(out), orphan, fill, nw)
+                    # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
+                    if found is None or got[0] + got[1] < found[0] + found[1]:
+                        found = got
+                    if not orphan and nw == wide[0]:
                         break
                 return found
 
