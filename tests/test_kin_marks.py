@@ -338,11 +338,18 @@ def test_each_row_of_the_diagrams_table_writes_one_format():
     d = chord_diagrams(st, divisions=12, L=153.6, H1=27, H2=25)
     grid = _table_rows(readings_table(d, plans_json(plans), "uk", 5, plans.precision))
     zeros = 0
+    counted = []
     for row in grid[1:]:
         if row[0].startswith("δ"):
             continue
         cells = [c.rstrip("*") for c in row[1:] if c != "—"]
         counts = {len(m.group(1) or "") for m in (re.fullmatch(r"−?\d+(?:,(\d+))?", c) for c in cells) if m}
         assert len(counts) == 1, row
+        counted.append((row[0], counts.pop()))
         zeros += sum(1 for c in cells if float(c.replace("−", "-").replace(",", ".")) == 0)
     assert zeros >= 1                      # the dead centre's v = 0 and a 0 mm ordinate of a are there
+    # … and a plan's row to the decimals of the diagram's row over it (a column compares like with
+    # like: a_D −10,6 over the plan's 2,77 was the mark)
+    for (above, d_above), (name, d) in zip(counted, counted[1:]):
+        if not name.startswith(("s", "v", "a")):
+            assert d == d_above, (above, name)

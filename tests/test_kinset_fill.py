@@ -93,3 +93,55 @@ def test_velocity_read_at_a_dead_centre_is_the_drawn_curve(precision):
     assert abs(truth[0]) <= 1e-9 * vmax                      # position 0 is the dead centre
     exact_error = 0.01 * vmax
     assert abs(v[0]) <= exact_error + (2.0 * precision * d.mu_v), (v[0], d.mu_v)
+
+
+def test_velocity_plans_cut_by_the_title_block_go_on_in_the_next_line():
+    """The six-bar's A3 set put velocity plans 1, 2 beside the first sheet's title block and plans
+    3, 4 as a line of their own atop the second sheet (four fit across): the plans flow as one row,
+    so every line of them holds as many as its room does — only the family's last line (and a line
+    beside a title block) holds fewer — and they keep their order."""
+    f = form("A3")
+    region = field_of(f)
+    width = region[2] - region[0]
+    P, D = Leaf("position plan", 245.0, 163.0), Leaf("diagrams", 358.0, 253.0)
+    V = [Leaf(f"velocity plan {i}", 77.0, 79.0) for i in range(12)]
+    tail = [Leaf("velocity table", 218.0, 95.0), Leaf("notes", 185.0, 120.0)]
+    pages = flow(set_rows(P, D, V, [], tail, width), region, keep_out(f), later=later_keep(f))
+    across = int((width + GAP) // (77.0 + GAP))
+    order = []
+    for n, page in enumerate(pages):
+        keep = keep_out(f) if n == 0 else later_keep(f)
+        lines: dict[float, list] = {}
+        for leaf, b in page:
+            if leaf.name.startswith("velocity plan"):
+                lines.setdefault(round(b[3], 3), []).append((b[0], leaf.name, b))
+        for top, line in sorted(lines.items(), reverse=True):
+            order += [name for _, name, _ in sorted(line)]
+            beside = min(b[1] for _, _, b in line) < keep[3] + 1e-6
+            last = any(name == "velocity plan 11" for _, name, _ in line)
+            pb = next(b for leaf, b in pages[0] if leaf.name == "position plan")
+            by_plan = n == 0 and all(b[0] >= pb[2] - 1e-6 for _, _, b in line)    # the grid beside it
+            if not (beside or last or by_plan):
+                assert len(line) == across, (n, [name for _, name, _ in sorted(line)])
+    assert order == [f"velocity plan {i}" for i in range(12)]
+
+
+def test_a_sets_notes_in_two_columns_hold_every_line_once_and_are_lower():
+    """A set's notes 160 mm high at the title block's width took a sheet of their own: in two
+    columns (``TWO_COLUMNS`` wide) every line stands once, in order down the left column and on down
+    the right, each column the title block's width, the block lower than one column."""
+    from graphplan.sheets.compose import lines_of, notes_height
+    from graphplan.sheets.kinematics import set_notes
+    from graphplan.sheets.kinlayout import TITLE, TWO_COLUMNS, note_halves, set_notes_height
+    lines = [f"{i}: " + "the chords' own error at twelve divisions " * (1 + i % 4) for i in range(14)]
+    left, right = note_halves(lines)
+    assert left + right == lines and left and right
+    assert set_notes_height([lines], TWO_COLUMNS) < 0.7 * notes_height([lines], TITLE)
+    assert set_notes_height([lines], TITLE) == notes_height([lines], TITLE)
+    rec = set_notes(lines, TWO_COLUMNS)
+    b = rec.bounds()
+    assert b[2] - b[0] <= TWO_COLUMNS + 1e-6 and b[3] - b[1] <= set_notes_height([lines], TWO_COLUMNS)
+    xs = sorted({round(p.points[0][0], 3) for p in rec.items if p.kind == "text"})
+    assert min(xs) == 0.0 and any(x >= TITLE for x in xs)
+    words = " ".join(lines_of(rec)).split()
+    assert sorted(words) == sorted(" ".join(lines).split())

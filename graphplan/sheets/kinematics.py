@@ -369,6 +369,18 @@ def drawings(st: Study, p: Plan, dr: Drafter, lang: str) -> dict:
     }
 
 
+def set_notes(lines: list[str], width: float) -> Record:
+    """A set's notes at ``width``: one column, or two of the title block's width side by side where
+    ``width`` is ``TWO_COLUMNS`` (``kinlayout.note_halves``)."""
+    from graphplan.sheets.kinlayout import TWO_COLUMNS, note_halves
+    if width < TWO_COLUMNS - 1e-9:
+        return note_block(lines, width)
+    left, right = note_halves(lines)
+    rec = note_block(left, TITLE)
+    rec.extend(note_block(right, TITLE).moved(TITLE + GAP, 0.0))
+    return rec
+
+
 def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis at the scales ``plan`` chose, in the zones of the
     composition (one sheet), or flowing over a set of sheets."""
@@ -403,7 +415,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
         pages = [items]
     else:
-        notes_rec = note_block(d["notes"], p.notes)
+        notes_rec = set_notes(d["notes"], p.notes)
         rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f))
         if laid is None:

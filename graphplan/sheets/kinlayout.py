@@ -134,6 +134,26 @@ class Plan:
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
+TWO_COLUMNS = 2 * TITLE + GAP    # a set's notes this wide stand in two columns of the title block's width
+
+
+def note_halves(lines: list[str], width: float = TITLE) -> tuple[list[str], list[str]]:
+    """A set's notes in two columns (``TWO_COLUMNS``): the lines split, whole, where the taller
+    column (lines wrapped to ``width``) is lowest — the six-bar's A3 notes, 160 mm high at the title
+    block's width, took a sixth sheet of their own; in two columns they stand under the last tables."""
+    from graphplan.sheets.compose import NOTE, wrap_markup
+    counts = [len(wrap_markup(line, width - 5.0, NOTE)) for line in lines]
+    total = sum(counts)
+    cut = min(range(len(lines) + 1), key=lambda i: (max(sum(counts[:i]), total - sum(counts[:i])), -i))
+    return lines[:cut], lines[cut:]
+
+
+def set_notes_height(notes: list[list[str]], width: float) -> float:
+    """The height of a set's notes (one list of lines per language) at ``width``: one column, or
+    two where ``width`` is ``TWO_COLUMNS`` (``note_halves``)."""
+    if width < TWO_COLUMNS - 1e-9:
+        return notes_height(notes, width)
+    return max(notes_height([half], TITLE) for lines in notes for half in note_halves(lines))
 
 
 def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
@@ -436,7 +456,7 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
     return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", notes, nat.notes_height(notes))], width, after)
+                    + [Leaf("notes", notes, set_notes_height(nat.notes, notes))], width, after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
@@ -448,7 +468,15 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
     (unpadded) followed by the tables and the notes — a lone acceleration plan shares its sheet
     with the tables instead of taking one for itself."""
     def grid(cells_: list[Leaf]) -> list[list[Leaf]]:
-        return grid_rows(cells_, max(1, int((width + GAP) // (cells_[0].w + GAP)))) if cells_ else []
+        """The cells as one row that ``flow`` wraps where the room ends (a row cut short by the title
+        block or a sheet's foot goes on in the next line, not as a line of its own: the six-bar's A3
+        set put two velocity plans beside the title block and the other two of that row alone atop
+        the next sheet), padded so the last line's columns line up with the full lines'."""
+        if not cells_:
+            return []
+        k = max(1, int((width + GAP) // (cells_[0].w + GAP)))
+        c = cells_[0]
+        return [list(cells_) + [Leaf("", c.w, c.h) for _ in range(k - 1)]]
     if P.w + GAP + D.w <= width + 1e-9:
         rows = [[P, D]] + grid(V)
     else:
@@ -581,9 +609,16 @@ def tallest(fits, low: float = HEIGHTS[-1], high: float = HEIGHTS[0], step: floa
     return round(low + lo * step, 6)
 
 
-def page_fill(page, region) -> float:
-    """The share of the field a laid-out sheet's drawings take (their boxes' areas)."""
-    area = sum((b[2] - b[0]) * (b[3] - b[1]) for leaf, b in page if leaf.name)
+def page_fill(page, region, sizes: dict[str, tuple[float, float]] | None = None) -> float:
+    """The share of the field a laid-out sheet's drawings take: their own sizes within their boxes
+    (``sizes``: name → each plan's own size, where its cell is the family's largest plan's; a row's
+    spare width shared out is not drawn on)."""
+    sizes = sizes or {}
+    area = 0.0
+    for leaf, b in page:
+        if leaf.name:
+            w, h = sizes.get(leaf.name, (leaf.w or b[2] - b[0], leaf.h or b[3] - b[1]))
+            area += min(w, b[2] - b[0]) * min(h, b[3] - b[1])      # drawn, not the spare shared out
     return area / ((region[2] - region[0]) * (region[3] - region[1]))
 
 
@@ -604,6 +639,41 @@ def flat(dr: Drafter, k) -> int:
     at L 240 mm where L 154 mm draws it 38 mm)."""
     from graphplan.sheets.kinematics import DIAGRAM_MM
     return int(min(dr.drawn(k)[1:]) < DIAGRAM_MM - 1e-6)
+
+
+SPARSE = 0.2       # of as many sheets, a set none of whose sheets is drawn on less than this share of its
+                   # field (the crank-slider's A3 acceleration plan, 145 mm, moved to the tables' sheet and
+                   # left five velocity plans on 16 % of sheet 2; at 130 mm it shares their sheet)
+SHORT_MM = 3.0     # a table's value read off a vector shorter than this reads poorly (0.5 mm of 2.5 is 20 %)
+
+
+def short_vectors(dr: Drafter) -> dict[str, tuple[float, list[float]]]:
+    """The vectors the tables 1–3 read their values from, as drawn at the plans' own scales: family
+    → (that μ, the lengths, mm) — a value the ruler read at all (``kintables.judged``)."""
+    from graphplan.report.plans import plans_json
+    from graphplan.sheets.kintables import _length, judged, velocity_columns
+    pl = dr.plans()
+    doc = plans_json(pl)
+    keys = velocity_columns(doc, dr.opts.precision)
+    v = [_length(e) for pos in doc["positions"] for k in keys if (e := pos["velocity"].get(k)) and judged(e)]
+    a = [_length(e) for pos in doc["positions"] for e in pos.get("acceleration", {}).values() if judged(e)]
+    return {"velocity": (pl.mu_v, [x for x in v if x]), "acceleration": (pl.mu_a, [x for x in a if x])}
+
+
+def lifted(nat: Natural, short: dict[str, tuple[float, list[float]]], mu: dict[str, float]) -> int:
+    """1 where a table's value is read off a vector under ``SHORT_MM`` at ``mu`` that the family's
+    largest set scale (``SET_LARGEST`` of its target) would draw at least that long — review 7: the
+    four-bar's A3 set saved a sheet with its velocity plans at p_v a 40 mm, ω_AB read off 2.8 mm
+    7.8 % wrong, where 50 mm on one more sheet reads it off 3.5 mm. A set weighs that like a sheet."""
+    for fam, (mu0, lengths) in short.items():
+        family = nat.families[fam]
+        if not lengths or nat.count[fam] == 0:
+            continue
+        top = mu[fam] * family.rel(mu[fam]) / SET_LARGEST        # the μ that draws SET_LARGEST of the target
+        now, most = mu0 / mu[fam], mu0 / min(top, mu[fam])
+        if any(x * now < SHORT_MM - 1e-9 and x * most >= SHORT_MM - 1e-9 for x in lengths):
+            return 1
+    return 0
 
 
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
@@ -650,8 +720,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         from graphplan.graphic.scales import larger_choices
         return [m for m, _ in larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)]
     best = None
+    short = short_vectors(dr)
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
-    wide = tuple(sorted({TITLE, max(TITLE, r[2])}))   # the notes' widths: the title block's, the room beside it
+    # the notes' widths: the title block's, the room beside it, two columns of the title block's
+    wide = tuple(sorted({TITLE, max(TITLE, r[2])})) + ((TWO_COLUMNS,) if TWO_COLUMNS <= width + 1e-9 else ())
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
         for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
@@ -665,11 +737,19 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     if out is None:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
-                    fill = min(page_fill(page, region) for page in out)
-                    found = (len(out), orphan, fill, nw)
-                    if not orphan:
+                    fill = min(page_fill(page, region, own(mu)) for page in out)
+                    got = (len(out), orphan, fill, nw)
+                    # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
+                    if found is None or got[0] + got[1] < found[0] + found[1]:
+                        found = got
+                    if not orphan and nw == wide[0]:
                         break
                 return found
+
+            def own(mu) -> dict[str, tuple[float, float]]:
+                """Each velocity and acceleration plan's own size at ``mu`` (its cell is the largest's)."""
+                return {f"{fam} {i}": (c.w, c.h) for fam in ("velocity", "acceleration")
+                        for i in range(nat.count[fam]) for c in [fams[fam].leaf(mu[fam], "", i)]}
 
             def pages(mu):
                 got = laid(mu)
@@ -701,10 +781,13 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 # (its crank shorter than CRANK_MM where a sheet holds a larger plan: the A3
                 # coulisse, whose crank is 28 mm at the largest, was drawn at 1:10, 11 mm), a
                 # diagram lower than DIAGRAM_MM (``flat``) and a sheet holding the notes alone;
-                # of as many, the larger drawings (then the fuller emptiest sheet)
+                # of as many, the larger drawings (then the fuller emptiest sheet); and a value read
+                # off a vector shorter than SHORT_MM that larger plans would lift (``lifted``)
                 wrong = 0 if dr.diagrams_right(k) else 1
                 small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9 and mu["position"] > top)
-                key = (count + wrong + small + orphan + flat(dr, k), wrong, -(factor == TABLES), -round(rel, 6),
+                low = flat(dr, k)
+                key = (count + wrong + small + orphan + low + lifted(nat, short, mu), wrong,
+                       small, low, int(fill < SPARSE), -(factor == TABLES), -round(rel, 6),
                        -round(fill, 1))
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))

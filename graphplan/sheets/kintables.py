@@ -460,6 +460,11 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
          for key, ordinate, mu in (("s", "s", diag.mu_s), ("v", "v_at", diag.mu_v), ("a", "a_at", diag.mu_a))}
     d["v_plan"] = decimals([pos["velocity"].get(vkey) for pos in doc["positions"]], precision)
     d["a_plan"] = decimals([pos.get("acceleration", {}).get(akey) for pos in doc["positions"]], precision)
+    # a plan's row is compared with the diagram's row over it: both to the coarser count (review 7
+    # #17: a_D −10,6 over the plan's 2,77 — a column written to one count of decimals)
+    for plan, own in (("v_plan", "v"), ("a_plan", "a")):
+        if any(r[plan] for r in read):
+            d[plan] = d[own] = min(d[plan], d[own])
 
     def cell(r: dict, key: str) -> str:
         """A reading in its row's decimals — a 0 mm ordinate too (0,0 beside −10,6, not a bare 0:
