@@ -133,3 +133,52 @@ def test_the_coulisse_is_redrawn_where_its_12_ordinates_miss_the_peak_of_i_star(
     uk, en = plain(redrawn_note(f, "uk")), plain(redrawn_note(f, "en"))
     assert f"на {f.divisions} поділках замість 12" in uk and "найбільша ордината I" in uk
     assert f"redrawn on {f.divisions} divisions, not 12" in en and "largest I" in en
+
+
+@pytest.mark.slow
+def test_every_axis_of_the_coulisse_sheet_is_lettered_across_its_curve():
+    """Review 8 #13: the M* axis was lettered only to 300 N·m where M*_c reaches 443 (the 350/400
+    ticks bare). On the sheet, each axis's lettered values reach within one lettered step of its
+    diagram's largest and smallest ordinate (the exact M*_c, the read ΔT, I* — computed here)."""
+    from types import SimpleNamespace
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
+    st = scene_study(COULISSE8)
+    out = BUILDERS["dynamics"](st, form("A1"), args)
+    dyn = analyse(st)
+    m = dyn.cycle.samples.moment
+    wanted = {("moments", "M graduation"): (float(np.min(m)), float(np.max(m))),
+              ("moments", "A graduation"): (0.0, float(dyn.cycle.work))}
+    for (name, step), (lo, hi) in wanted.items():
+        rec = next(p.record for p in out.placed if p.name == name)
+        shown = sorted(float(p.text.replace(",", ".").replace("−", "-")) for p in rec.items
+                       if p.kind == "text" and p.step == step)
+        assert len(shown) >= 2, (step, shown)
+        every = min(b - a for a, b in zip(shown, shown[1:]))
+        assert shown[-1] >= hi - every - 1e-9, (step, shown, hi)      # 400 of 443 at a 50 step: read across
+        assert shown[0] <= max(lo, 0.0) + every + 1e-9, (step, shown, lo)
+
+
+def test_a_constant_i_star_is_drawn_compactly_and_said():
+    """A moment-loaded four-bar whose only mass is its crank's: I* is the crank's own, the same at
+    every position — the energy–mass curve a vertical line, the turned I*(φ) a line in a 250 mm
+    panel, point 0's number on the I* axis after its values read as one. Drawn on a short φ axis
+    with the value said beside the line, the energy–mass I* axis ticked only."""
+    from graphplan.drawing.flywheel import energy_mass, inertia_turned
+    from test_moment_load import scene
+    text = scene().replace("omega = ", "mass = 4.0\ninertia = 0.02\nomega = ", 1) + "\n[dynamics]\ndelta = 0.05\n"
+    dyn = analyse(scene_study(text))
+    i_star = dyn.cycle.inertia(np.linspace(0.0, 2 * math.pi, 361))
+    assert float(np.ptp(i_star)) < 1e-12 * float(np.max(i_star))
+    f = construct(dyn, None, 0.5, L=240.0)
+    rec = inertia_turned(f, "uk", 250.0, 10.0)
+    x0, y0, x1, y1 = rec.bounds()
+    assert y1 - y0 < 100.0                               # not a 250 mm panel around one line
+    said = [p.text for p in rec.items if p.kind == "text" and "стала" in (p.text or "")]
+    assert said and "0,02" in said[0]
+    en = [p.text for p in inertia_turned(f, "en", 250.0, 10.0).items if p.kind == "text" and "constant" in (p.text or "")]
+    assert en
+    w = energy_mass(f, "uk", projections=(-20.0, -10.0))
+    assert not [p for p in w.items if p.kind == "text" and p.step == "I* graduation"]
+    assert [p for p in w.items if p.kind == "segment" and p.step == "I* graduation"]     # the ticks stay
