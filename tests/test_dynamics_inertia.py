@@ -2,9 +2,8 @@
 energy–mass diagram and the energy–mass (Wittenbauer) curve are drawn by one French curve, so the
 point (I*(φ), ΔT(φ)) read off the two φ diagrams lies on the Wittenbauer curve within the ruler's
 0,5 mm at every φ — the pchip I*(φ) peaked at 4,78 kg·m² where the spline's Wittenbauer curve bulged
-to 5,1. And where the largest I* among the 12 ordinates misses the exact largest by more than the
-lab's 5 % (the peak between two divisions: 4,78 against 5,29 at 9,65), the drawing is redrawn on
-more divisions and the notes say so. The exact largest I* is sampled here from the solver's I*."""
+to 5,1. And where the diagram's largest I* misses the exact largest by more than the lab's 5 % (the
+peak between two divisions), the drawing is redrawn on more divisions and the notes say so. The exact largest I* is sampled here from the solver's I*."""
 from __future__ import annotations
 
 import math
@@ -119,20 +118,31 @@ def test_the_i_phi_diagram_and_the_wittenbauer_curve_draw_one_i_star(dyn, n):
     assert float(np.min(turned[:, 0])) >= 0.0        # never I* < 0 drawn
 
 
-def test_the_coulisse_is_redrawn_where_its_12_ordinates_miss_the_peak_of_i_star():
+def _drawn_peak_miss(f, top: float) -> float:
+    """The I*(φ) diagram's largest I* (its drawn polyline, read at μ_I) against the exact largest, %."""
+    from graphplan.drawing.flywheel import inertia_turned
+    turned = _curve(inertia_turned(f, "uk", 150.0, 10.0), "I*_m(φ)")
+    return 100.0 * (float(np.max(turned[:, 0])) * f.mu_I - top) / top
+
+
+def test_the_i_star_peak_is_drawn_within_the_lab_or_redrawn():
+    """The coulisse's exact I* peaks at 5,293 kg·m² between positions 9 and 10. At 12 divisions its
+    ordinates give 4,78 (−9,7 %), the French curve through them 5,06 (−4,45 %: the lab's 5 % holds,
+    not redrawn); at 8 divisions the curve misses by −20 %: redrawn on 16, said in the notes."""
     dyn = analyse(scene_study(COULISSE8))
     t = np.linspace(0.0, 2 * math.pi, 20001)
     top = float(np.max(dyn.cycle.inertia(t)))                      # 5,29 kg·m² at position 9,65
-    first = construct(dyn, None, 0.5, L=240.0)
-    miss = 100.0 * (float(np.max(first.I)) * first.mu_I - top) / top
-    assert first.divisions == 12 and miss < -5.0                    # the review's −9,7 %
-    f = redrawn(dyn, None, 0.5, L=240.0)
-    assert f.divisions > 12
-    assert abs(100.0 * (float(np.max(f.I)) * f.mu_I - top) / top) <= 5.0
+    twelve = redrawn(dyn, None, 0.5, L=240.0)
+    assert twelve.divisions == 12 and abs(_drawn_peak_miss(twelve, top)) <= 5.0
+    assert abs(100.0 * (float(np.max(twelve.I)) * twelve.mu_I - top) / top) > 5.0     # the ordinates alone miss
+    coarse = construct(dyn, 8, 0.5, L=240.0)
+    assert _drawn_peak_miss(coarse, top) < -5.0
+    f = redrawn(dyn, 8, 0.5, L=240.0)
+    assert f.divisions > 8 and f.divisions % 8 == 0 and abs(_drawn_peak_miss(f, top)) <= 5.0
     from graphplan.report.dynamics import redrawn_note
     uk, en = plain(redrawn_note(f, "uk")), plain(redrawn_note(f, "en"))
-    assert f"на {f.divisions} поділках замість 12" in uk and "найбільша ордината I" in uk
-    assert f"redrawn on {f.divisions} divisions, not 12" in en and "largest I" in en
+    assert f"на {f.divisions} поділках замість 8" in uk and "найбільше I" in uk and "5,293" in uk
+    assert f"redrawn on {f.divisions} divisions, not 8" in en and "largest I" in en
 
 
 @pytest.mark.slow

@@ -32,15 +32,16 @@ from review_scenes import OFFSET_SLIDER as PRESS  # noqa: E402
 
 def errors_of(f, dyn) -> tuple[float, float, float]:
     """The graphical flywheel's and M*_d's errors, % — from the readings (|kl| through J, the ray's
-    height on the moment diagram) against the exact flywheel and A_c/2π —, and the largest I*
-    ordinate's against the exact largest I* (sampled here every 0,05°; NaN for a constant I*)."""
+    height on the moment diagram) against the exact flywheel and A_c/2π —, and the I* diagram's
+    largest against the exact largest I* (sampled here every 0,05°; NaN for a constant I*)."""
     J = f.mu_A * f.kl / (dyn.omega_mean ** 2 * dyn.delta)
     fl = max(J - dyn.drive.rotor_reduced - dyn.drive.reducer_reduced, 0.0)
     e_fl = 100.0 * (fl - dyn.flywheel) / dyn.flywheel if dyn.flywheel > 0 else math.nan
     md = dyn.cycle.work / (2 * math.pi)
     i_star = dyn.cycle.inertia(np.linspace(0.0, 2 * math.pi, 7201))
     top = float(np.max(i_star))
-    e_i = (100.0 * (float(np.max(f.I)) * f.mu_I - top) / top if float(np.ptp(i_star)) > 1e-9 * top else math.nan)
+    drawn = float(np.max(f.curve()[0])) * f.mu_I        # the I* diagram's peak (the energy–mass curve's abscissa)
+    e_i = 100.0 * (drawn - top) / top if float(np.ptp(i_star)) > 1e-9 * top else math.nan
     return e_fl, 100.0 * (f.Md * f.mu_M - md) / md, e_i
 
 

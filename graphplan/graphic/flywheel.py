@@ -225,14 +225,16 @@ LAB_LIMIT = 5.0      # %: what the lab accepts of the graphical flywheel and M*_
 
 
 def inertia_miss(f: Flywheel) -> float:
-    """How far the largest I*_m among the division ordinates misses the exact largest I*_m, in %
-    (exact.dynamics' cycle, sampled at ≤ 0,25°): a peak between two divisions, which the French curve
-    through them can only guess (review 8 #6: 4,78 at position 10 against 5,29 at 9,65, −9,7 %);
-    NaN where I* is constant (nothing to miss: a moment-loaded four-bar's rotating links)."""
+    """How far the largest I*_m the diagram draws — the French curve through the ordinates
+    (``inertia_curve``, the energy–mass curve's abscissa) — misses the exact largest I*_m, in %
+    (exact.dynamics' cycle, sampled at ≤ 0,25°): a peak between two divisions the curve guesses
+    wrong (review 8's coulisse at 8 divisions: −20 %; at 12 its ordinates give 4,78 against 5,293
+    at 9,65, −9,7 %, but the curve 5,058, −4,45 %: within the lab's 5 %); NaN where I* is constant
+    (nothing to miss: a moment-loaded four-bar whose only masses turn about fixed axes)."""
     exact = float(np.max(f.dyn.cycle.samples.inertia))
     if exact <= 0.0 or float(np.ptp(f.dyn.cycle.samples.inertia)) <= 1e-9 * exact:
         return math.nan
-    return 100.0 * (float(np.max(f.I)) * f.mu_I - exact) / exact
+    return 100.0 * (float(np.max(f.curve()[0])) * f.mu_I - exact) / exact
 
 
 def errors(f: Flywheel) -> dict[str, float]:
