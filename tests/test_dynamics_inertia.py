@@ -116,6 +116,10 @@ def test_the_i_phi_diagram_and_the_wittenbauer_curve_draw_one_i_star(dyn, n):
     far = max(witt.distance(Point(i, t)) for i, t in zip(i_at, dt_at))
     assert far <= RULER, f"the I*(φ) and ΔT(φ) diagrams' point lies {far:.2f} mm off the Wittenbauer curve"
     assert float(np.min(turned[:, 0])) >= 0.0        # never I* < 0 drawn
+    values = sorted(float(p.text.replace(",", ".")) for p in inertia_turned(f, "uk", length, 10.0).items
+                    if p.kind == "text" and p.step == "I* graduation")
+    step = min(b - a for a, b in zip(values, values[1:]))
+    assert values[-1] >= float(np.max(turned[:, 0])) * f.mu_I - step      # its values span the drawn peak
 
 
 def _drawn_peak_miss(f, top: float) -> float:

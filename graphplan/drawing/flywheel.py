@@ -252,12 +252,12 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     """A diagram over φ of ordinates read at the divisions, joined by the French curve
     (``_smooth``: shape-preserving for a ``positive`` quantity)."""
     rec = Record(title, scales=scales)
-    lo, hi = _extent(values)
+    fine, curve = _smooth(f, values, positive)
+    lo, hi = _extent(values, curve)          # the axis and its values span the curve's peaks too
     _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for xk, yk in zip(f.x, values):
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
-    fine, curve = _smooth(f, values, positive)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
     mu = next(iter(scales.values()))
@@ -407,7 +407,8 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     rec = Record(w["inertia"], scales={"mu_I": f.mu_I})
     length = turned_length(f, length)
     ys = -projected_x(f, length)
-    hi = float(np.max(f.I))
+    fine, curve = _smooth(f, f.I, positive=True)            # I* > 0: never drawn left of its φ axis
+    hi = max(float(np.max(f.I)), float(np.max(curve)))       # the grid and the values span the curve's peak
     n = f.divisions
     rec.vector((0.0, 1.0), (0.0, -length - 10.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
     rec.vector((-1.0, 0.0), (hi + 8.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
@@ -422,7 +423,6 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
             row.append(_number((-2.0, float(yk) - 0.9), k, anchor="end"))
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
-    fine, curve = _smooth(f, f.I, positive=True)            # I* > 0: never drawn left of its φ axis
     rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
     short = crowded(f.I, projected(n))
     for j in projected(n):
