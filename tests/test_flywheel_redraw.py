@@ -11,6 +11,7 @@ import math
 import re
 from types import SimpleNamespace
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st_
 
@@ -29,14 +30,19 @@ from review_scenes import OFFSET_SLIDER as PRESS  # noqa: E402
 
 
 
-def errors_of(f, dyn) -> tuple[float, float]:
+def errors_of(f, dyn) -> tuple[float, float, float]:
     """The graphical flywheel's and M*_d's errors, % — from the readings (|kl| through J, the ray's
-    height on the moment diagram) against the exact flywheel and A_c/2π."""
+    height on the moment diagram) against the exact flywheel and A_c/2π —, and the I* diagram's
+    largest against the exact largest I* (sampled here every 0,05°; NaN for a constant I*)."""
     J = f.mu_A * f.kl / (dyn.omega_mean ** 2 * dyn.delta)
     fl = max(J - dyn.drive.rotor_reduced - dyn.drive.reducer_reduced, 0.0)
     e_fl = 100.0 * (fl - dyn.flywheel) / dyn.flywheel if dyn.flywheel > 0 else math.nan
     md = dyn.cycle.work / (2 * math.pi)
-    return e_fl, 100.0 * (f.Md * f.mu_M - md) / md
+    i_star = dyn.cycle.inertia(np.linspace(0.0, 2 * math.pi, 7201))
+    top = float(np.max(i_star))
+    drawn = float(np.max(f.curve()[0])) * f.mu_I        # the I* diagram's peak (the energy–mass curve's abscissa)
+    e_i = 100.0 * (drawn - top) / top if float(np.ptp(i_star)) > 1e-9 * top else math.nan
+    return e_fl, 100.0 * (f.Md * f.mu_M - md) / md, e_i
 
 
 def within(e: tuple[float, float]) -> bool:
@@ -227,7 +233,8 @@ def check_redrawing(text: str) -> None:
         assert f"на {f.divisions} поділках замість {n0}" in plain(note)
     elif answer and not within(errors_of(first, dyn)[:1]):
         assert f.divisions == answer[0] and within(errors_of(f, dyn)[:1])
-        assert f"на {f.divisions} поділках замість {n0}" in plain(note) and "закоротка" in note
+        assert f"на {f.divisions} поділках замість {n0}" in plain(note)
+        assert "закоротка" in note or within(errors_of(f, dyn)[1:2])
     else:                                  # nothing up to 360 helps: the first stays, and says so
         assert f.divisions == n0 and "залишено" in note
 

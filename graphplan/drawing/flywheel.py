@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.drawing.diagrams import fmt
-from graphplan.graphic.chords import periodic_pchip, periodic_spline
+from graphplan.graphic.chords import periodic_spline
 from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
@@ -136,12 +136,13 @@ def drawn(X: np.ndarray, Y: np.ndarray) -> list[tuple[float, float]]:
 
 def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """The French curve through a periodic diagram's division ordinates; a ``positive`` quantity's
-    (I*_m) by the shape-preserving cubic (graphic.chords.periodic_pchip), which never dips below its
-    least ordinate between divisions as the cubic spline's overshoot does (I* < 0 drawn) — a picture
-    only: the energy–mass curve whose tangents give the flywheel is the construction's own."""
+    (I*_m) as the energy–mass curve draws it (graphic.flywheel.inertia_curve: the spline, the
+    shape-preserving cubic only in an interval where the spline would dip below zero) — the I*(φ)
+    diagram and the Wittenbauer curve beside it are one I*."""
+    from graphplan.graphic.flywheel import inertia_curve
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
     if positive:
-        return fine, periodic_pchip(f.x[:-1], y[:-1], f.L)(fine)
+        return fine, inertia_curve(f.x, y, f.L, fine)
     trend = y[-1] - y[0]
     return fine, periodic_spline(f.x[:-1], y[:-1] - trend * f.x[:-1] / f.L, f.L)(fine) + trend * fine / f.L
 
@@ -251,12 +252,12 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     """A diagram over φ of ordinates read at the divisions, joined by the French curve
     (``_smooth``: shape-preserving for a ``positive`` quantity)."""
     rec = Record(title, scales=scales)
-    lo, hi = _extent(values)
+    fine, curve = _smooth(f, values, positive)
+    lo, hi = _extent(values, curve)          # the axis and its values span the curve's peaks too
     _axes(rec, lo, hi, -3.0, f.L, sym, step=name)
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for xk, yk in zip(f.x, values):
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
-    fine, curve = _smooth(f, values, positive)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
     mu = next(iter(scales.values()))
@@ -294,6 +295,40 @@ def projected(n: int) -> range:
     return range(0, n, every)
 
 
+CROWDED = 2.0   # mm: two parallel projections nearer than this (about 1 mm of paper between their dashes) run as a
+#                 striped band (review SIXBAR7: ΔT of positions 16–22 0,4–1,7 mm apart) — each drawn short instead
+STUB = 5.0      # mm: a crowded projection's length at each of its ends (from its point toward the other diagram)
+
+
+def crowded(values, js) -> set[int]:
+    """The projected divisions ``js`` whose projection would run within ``CROWDED`` of one drawn
+    through (their ``values`` in mm: ΔT_k for the horizontal ones, I_k for the vertical; all of one
+    kind run side by side along the whole gap between the diagrams): taken in order of division, each
+    drawn through where it clears those drawn through before, else short — from each end's point
+    ``STUB`` mm toward the other diagram, the ruler carrying the height between (the point still
+    where its two projections meet), as a draftsman stops a thin line where it would run by a
+    neighbour: no striped band, the lines drawn through ≥ ``CROWDED`` apart."""
+    through: list[float] = []
+    short: set[int] = set()
+    for j in js:
+        v = float(values[j])
+        if any(abs(v - u) < CROWDED for u in through):
+            short.add(j)
+        else:
+            through.append(v)
+    return short
+
+
+def _projection(rec: Record, a: tuple[float, float], b: tuple[float, float], short: bool, step: str) -> None:
+    """The projection from the point ``a`` toward ``b`` (along one horizontal or vertical): the whole
+    line, or ``short`` only its first ``STUB`` mm from ``a`` (``crowded``)."""
+    if short:
+        d = math.hypot(b[0] - a[0], b[1] - a[1])
+        if d > STUB:
+            b = (a[0] + (b[0] - a[0]) * STUB / d, a[1] + (b[1] - a[1]) * STUB / d)
+    rec.segment(a, b, role="projection", layer=PROJ_LAYER, step=step)
+
+
 def projected_x(f: Flywheel, length: float) -> np.ndarray:
     """The divisions' abscissae on a φ axis ``length`` mm long (the ΔT(φ) and the turned I*(φ)
     diagrams of the projection: their φ scale is free, their ordinates' μ_T and μ_I are not)."""
@@ -323,9 +358,10 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
         rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
     fine, curve = _smooth(f, f.dT)
     rec.add("polyline", list(zip(fine * (length / f.L), curve)), role="curve", layer=LAYER, step="ΔT(φ)")
+    short = crowded(f.dT, projected(n))
     for j in projected(n):
-        rec.segment((float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), role="projection", layer=PROJ_LAYER,
-                    step=f"projection of ΔT at {j}")
+        _projection(rec, (float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), j in short,
+                    f"projection of ΔT at {j}")
     _numbers(rec, row)
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="ΔT graduation")
     place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
@@ -347,14 +383,32 @@ def _cleared(rec: Record, step: str, text: str) -> Record:
     return rec
 
 
+CONSTANT_TURNED = 60.0    # mm: the φ axis of a constant I*_m's turned diagram (a line: nothing to read along φ)
+
+
+def constant_inertia(f: Flywheel) -> bool:
+    """I*_m the same at every division (a moment-loaded four-bar whose only masses turn about fixed
+    axes): its diagram is a line, the energy–mass curve the ΔT axis's parallel through it."""
+    return float(np.ptp(f.I)) == 0.0
+
+
+def turned_length(f: Flywheel, length: float) -> float:
+    """The φ axis of the turned I*_m(φ): ``length`` (ΔT(φ)'s), or ``CONSTANT_TURNED`` where I*_m is
+    constant — a 250 mm panel holding one straight line is drawn compactly, with its note."""
+    return min(length, CONSTANT_TURNED) if constant_inertia(f) else length
+
+
 def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Record:
     """I*_m(φ) turned by 90° under the energy–mass diagram: I* to the right at the same μ_I (its
-    I* axis the energy–mass diagram's), φ running downward over ``length`` mm; from each division
-    point a thin vertical projection line up to y = ``reach``."""
+    I* axis the energy–mass diagram's), φ running downward over ``length`` mm (``turned_length``:
+    shorter for a constant I*, which is then said beside the line); from each division point a thin
+    vertical projection line up to y = ``reach``."""
     w = WORDS[lang]
     rec = Record(w["inertia"], scales={"mu_I": f.mu_I})
+    length = turned_length(f, length)
     ys = -projected_x(f, length)
-    hi = float(np.max(f.I))
+    fine, curve = _smooth(f, f.I, positive=True)            # I* > 0: never drawn left of its φ axis
+    hi = max(float(np.max(f.I)), float(np.max(curve)))       # the grid and the values span the curve's peak
     n = f.divisions
     rec.vector((0.0, 1.0), (0.0, -length - 10.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
     rec.vector((-1.0, 0.0), (hi + 8.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes I*_m")
@@ -369,13 +423,17 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
             row.append(_number((-2.0, float(yk) - 0.9), k, anchor="end"))
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
-    fine, curve = _smooth(f, f.I, positive=True)            # I* > 0: never drawn left of its φ axis
     rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
+    short = crowded(f.I, projected(n))
     for j in projected(n):
-        rec.segment((float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), role="projection", layer=PROJ_LAYER,
-                    step=f"projection of I* at {j}")
+        _projection(rec, (float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), j in short,
+                    f"projection of I* at {j}")
     _numbers(rec, row, away=(-1.0, 0.0))
     _graduate(rec, hi, f.mu_I, lang, float(ys[-1]))
+    if constant_inertia(f):               # the line's meaning said beside it, right of the grid
+        value = f"{num(float(f.I[0]) * f.mu_I, lang)} {w['kgm2']}"
+        text = (f"{w['Im']} = {value} — стала" if lang == "uk" else f"{w['Im']} = {value}, constant")
+        rec.label((hi + 3.0, -0.5 * length - 1.2), text, size=NUM, layer=LAYER, step="I*_m constant")
     return rec
 
 
@@ -582,10 +640,11 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     n = f.divisions
     if projections is not None:
         left, foot = projections
+        across, up = crowded(f.dT, projected(n)), crowded(f.I, projected(n))
         for j in projected(n):
             at = (float(f.I[j]), float(f.dT[j]))
-            rec.segment((left, at[1]), at, role="projection", layer=PROJ_LAYER, step=f"projection of ΔT at {j}")
-            rec.segment((at[0], foot), at, role="projection", layer=PROJ_LAYER, step=f"projection of I* at {j}")
+            _projection(rec, at, (left, at[1]), j in across, f"projection of ΔT at {j}")
+            _projection(rec, at, (at[0], foot), j in up, f"projection of I* at {j}")
     every = 1
     while n / every > 24:
         every *= 2
@@ -635,7 +694,9 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
     graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
-                  step="I* graduation")   # lettered as on I*(φ)'s foot, the projections broken under them
+                  step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
+                  letter=not constant_inertia(f))   # a constant I*: ticks only (its value on I*(φ), point
+    #                                                 0's number on the axis read as the next value)
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
         graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")

@@ -298,6 +298,8 @@ def redrawn_note(f, lang: str) -> str | None:
         return None
     uk = lang == "uk"
     e0 = _errs(rd.before, lang)
+    if not {"flywheel", "driving"} & set(over(rd.before)):     # the flywheel right, I*'s peak between divisions
+        return _inertia_note(f, rd, lang)
     if rd.divisions != rd.first:
         # M*_d off: the chords' middle ordinates missed how M*_c changes inside an interval (its work);
         # else the curves ΔT(φ), I*(φ) the Wittenbauer diagram joins change inside one
@@ -334,6 +336,35 @@ def redrawn_note(f, lang: str) -> str | None:
             f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
             f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+
+
+def _inertia_note(f, rd, lang: str) -> str:
+    """The drawing redrawn (or not) because the diagram's largest I*_m missed the exact largest by
+    more than the lab's 5 % (graphic.flywheel.inertia_miss): its peak lies between two divisions,
+    where the French curve through them guesses it wrong (markup)."""
+    uk = lang == "uk"
+    im = "I^*_м" if uk else "I^*_m"
+    e0 = f"{_signed(rd.before['inertia'], lang)}{NB}%"
+    exact = num(float(max(f.dyn.cycle.samples.inertia)), lang)
+    unit = NB + ("кг·м²" if uk else "kg·m²")
+    if rd.divisions != rd.first:
+        e1 = f"{_signed(rd.after['inertia'], lang)}{NB}%"
+        return (f"Діаграми побудовано заново на {rd.divisions} поділках замість {rd.first}: з {rd.first} найбільше "
+                f"{im} діаграми відхилялося від точного найбільшого {im} = {exact}{unit} на {e0} (понад 5{NB}% "
+                f"лабораторної: вершина між поділками); з {rd.divisions} — {e1}" if uk else
+                f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the diagram's largest "
+                f"{im} missed the exact largest {im} = {exact}{unit} by {e0} (over the lab's 5{NB}%: the peak "
+                f"lies between divisions); with {rd.divisions}, {e1}")
+    if rd.given and rd.better is not None:
+        e1 = f"{_signed(rd.better_errors['inertia'], lang)}{NB}%"
+        return (f"Кількість поділок ({rd.first}) задано, тому діаграми не побудовано заново: найбільше {im} діаграми "
+                f"відхиляється від точного {exact}{unit} на {e0}, на {rd.better} поділках — {e1}" if uk else
+                f"The {rd.first} divisions are given, so the diagrams are not redrawn: the diagram's largest {im} "
+                f"misses the exact {exact}{unit} by {e0}; on {rd.better} divisions, {e1}")
+    return (f"Найбільше {im} діаграми відхиляється від точного {exact}{unit} на {e0}; жодна більша кількість "
+            f"поділок (до 360) не зводить це в межі 5{NB}% — залишено {rd.first}" if uk else
+            f"The diagram's largest {im} misses the exact {exact}{unit} by {e0}; no more divisions (up to 360) "
+            f"bring it within 5{NB}%: the {rd.first} stay")
 
 
 def _short(f, lang: str) -> str:

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least,
+from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least, turned_length,
                                        moments_record, records, speed_fitted, wittenbauer_record)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
@@ -361,7 +361,7 @@ def band_least(f: Flywheel, length: float) -> tuple[float, float]:
     axis's end (14 mm right of the largest I*) — a band composed where this box does not fit need
     not be drawn to know it does not."""
     w, h = wittenbauer_least(f)
-    return w + length + 37.5, h + length + 16.0
+    return w + length + 37.5, h + turned_length(f, length) + 16.0
 
 
 def wittenbauer_least(f: Flywheel) -> tuple[float, float]:
