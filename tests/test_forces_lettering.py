@@ -41,8 +41,12 @@ def test_sides_along_one_line_are_lettered_on_its_two_sides(sixbar_fp):
 
 def test_a_component_below_the_ruler_is_named_with_its_bound(sixbar_fp):
     """Review7 #10: R^τ24 = −1.99 N is 0.08 mm at μF = 25 N/mm — no side — and the plan's note named
-    only G4, Φ4. The note now names it below the ruler's 0.5 mm, in both languages."""
-    from graphplan.drawing.forces import polygon_record
+    only G4, Φ4, and the group's drawing did not name it at all. The plan's note now names it below
+    the ruler's 0.5 mm and the group's drawing with its value (the moment equation's result), within
+    the group's own extent, in both languages."""
+    from graphplan.drawing.forces import GROUP_NOTE, group_record, polygon_record
+    from graphplan.graphic.record import Record
+    from graphplan.util.words import num
     gp = next(g for g in sixbar_fp.groups if g.label == "II(4-5)")
     eq = next(e for e in gp.equations if e.unknown == "R24τ")
     mu_F = gp.mu_F or sixbar_fp.mu_F
@@ -51,6 +55,13 @@ def test_a_component_below_the_ruler_is_named_with_its_bound(sixbar_fp):
     for lang, mm in (("uk", "0,5 мм"), ("en", "0.5 mm")):
         caption = [q.text for q in polygon_record(sixbar_fp, gp, lang).items if q.kind == "text" and "μ_F" in q.text][0]
         assert f"R^{{τ}}_{{24}} < {mm}" in caption
+        rec = group_record(sixbar_fp, gp, lang)
+        said = f"R^{{τ}}_{{24}} = {num(eq.result, lang, 3)} {'Н' if lang == 'uk' else 'N'}"
+        notes = [q for q in rec.items if q.kind == "text" and q.text == said]
+        assert len(notes) == 1 and GROUP_NOTE, (lang, said)
+        x0, y0, x1, y1 = Record(items=[q for q in rec.items if q is not notes[0]]).bounds()
+        b = notes[0].bounds()
+        assert x0 <= b[0] and b[2] <= x1 and y0 <= b[1] and b[3] <= y1     # it adds nothing to the drawing's size
 
 
 @pytest.fixture(scope="module")

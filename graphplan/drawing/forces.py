@@ -21,6 +21,9 @@ from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit,
 
 Box = tuple[float, float, float, float]
 
+GROUP_NOTE = True     # a component below the ruler named under its group too (review 7 #10)
+NOTE_ROWS = (0.1, 0.3, 0.5, 0.7, 0.9)    # … at a free spot: these fractions of its height, lowest first
+NOTE_COLUMNS = (0.25, 0.5, 0.75)         # … and of its width
 LETTER = 3.5    # mm: a force's, an arm's name — the sheet's lettering height (GOST 2.304 on A1, LAYOUT.md)
 
 
@@ -647,7 +650,31 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # … nor nearer an arc's arrowhead (M_зр, ω1, M^Φ) than its own arrow: "G1" by M_зр's head on the
     # press's scheme read as the moment's
     heads = [(complex(*q.points[0]), complex(*q.points[1])) for q in rec.items if q.kind == "vector" and q.role == "head"]
-    return _apart(rec, lab.asked, owned, list(span.values()) + heads, across=False)
+    _apart(rec, lab.asked, owned, list(span.values()) + heads, across=False)
+    lost = lost_components(fp, gp, lang, bound=False) if GROUP_NOTE else ""
+    if lost:
+        # a component the ruler reads as 0 mm is neither drawn here nor on the plan: named on the
+        # group with its value, as its plan's note names it (review 7 #10: R^τ24 = −1.99 N went
+        # unaccounted for) — a note at a free spot within the drawing's own extent, lowest first, on
+        # no leader (a line under the drawing recomposed the sheet: SIXBAR7's groups went from 1:4
+        # to 1:10; set by a point, it read as that point's: "… Н B"); where none has room, only the
+        # plan's note names it
+        x0, y0, x1, y1 = rec.bounds()
+        n = len(rec.items)
+        for fy in NOTE_ROWS:
+            for fx in NOTE_COLUMNS:
+                at = complex(x0 + fx * (x1 - x0), y0 + fy * (y1 - y0))
+                place_labels(rec, [LabelRequest(at, lost, 1 + 0j, 3.5, step=step, across=False)], layer="labels")
+                placed = rec.items[n:]
+                if placed and all(q.kind == "text" for q in placed):
+                    bx = Record(items=placed).bounds()
+                    if bx[0] >= x0 and bx[1] >= y0 and bx[2] <= x1 and bx[3] <= y1:
+                        break
+                del rec.items[n:]
+            else:
+                continue
+            break
+    return rec
 
 
 ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
@@ -672,6 +699,21 @@ def arm_aside(about: complex, foot: complex, u: complex, lines: list[tuple[compl
         if _run_along(about + shift, foot + shift, every) <= 0.5 and not _crosses(about, about + shift, lines):
             return shift
     return ARM_ASIDE_MM[0] * v
+
+
+def lost_components(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", values: bool = True,
+                    bound: bool = True) -> str:
+    """The tangential components found by a group's moment equations that the ruler reads as 0 mm
+    on its force plan (no side drawn), with their values and the bound: "R^τ24 = −1,99 Н < 0,5 мм";
+    "" where there are none."""
+    ruler = fp.precision if fp.precision > 0 else 0.5
+    lost = {eq.unknown: eq.result for eq in gp.equations if eq.unknown.endswith("τ") and eq.result != 0
+            and all(s.name != eq.unknown or s.mm <= 1e-9 for s in gp.sides)}
+    if not lost:
+        return ""
+    named = ", ".join(f"{force_symbol(n, lang)} = {num(v, lang, 3)} {unit('N', lang)}" if values
+                      else force_symbol(n, lang) for n, v in lost.items())
+    return f"{named} < {num(ruler, lang)} {unit('mm', lang)}" if bound else named
 
 
 def _components(gp: GroupPlan, name: str) -> list:
@@ -836,12 +878,9 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
     # a tangential component the ruler reads as 0 mm (R^τ24 = −1.99 N at 25 N/mm: 0.08 mm) is no
     # side at all: named with its bound, the ruler's division, so that none goes unaccounted for
-    ruler = fp.precision if fp.precision > 0 else 0.5
-    lost = [eq.unknown for eq in gp.equations if eq.unknown.endswith("τ") and eq.result != 0
-            and all(s.name != eq.unknown for s in sides)]
+    lost = lost_components(fp, gp, lang, values=False)
     if lost:
-        caption += (f"; {', '.join(force_symbol(n, lang) for n in dict.fromkeys(lost))}"
-                    f" < {num(ruler, lang)} {unit('mm', lang)}")
+        caption += f"; {lost}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
 
