@@ -463,6 +463,7 @@ def test_force_sheet_draws_the_mechanism_with_every_load():
     rec = mechanism_record(construct(st, phi))
     drawn = {p.text: p.points for p in rec.items if p.kind == "vector" and p.text}
     loads = {ld.name: complex(ld.force[0]) for ld in ks.loads if abs(ld.force[0]) > 1e-9}
+    assert drawn.pop("M_b", None) is not None       # the balancing moment's arc ends in its arrowhead
     assert set(drawn) == set(loads)
     for name, f in loads.items():
         (x0, y0), (x1, y1) = drawn[name]

@@ -174,13 +174,20 @@ class Plan:
         """The crank's own vector, drawn as the scale defines it: p_v a = v_A / μ_v (π a = a_A / μ_a)
         exactly — the length the scale was chosen by, so the crank pin reads v_A = ω1·l_OA back
         (p_v a = 30 mm at μ_v = 0.0355 laid with the ruler drew 30.0 mm and read v_A 1.065 where
-        ω1·l_OA = 1.068)."""
-        return abs(value) / self.mu * unit(direction)
+        ω1·l_OA = 1.068). A vector shorter than the ruler's division is not drawn so: laid off with the
+        ruler as any other (0 mm — the scale draws no plan; a Scotch yoke a hair off its guide at
+        μ_v = 0.5 would draw p_v a = 0.125 mm)."""
+        length = abs(value) / self.mu
+        if self.precision > 0 and length < self.precision:
+            return self.laid(value, direction)
+        return length * unit(direction)
 
     # what is measured --------------------------------------------------------------------------------
     def entry(self, key: str, kind: str, vec_mm: complex, exact: complex, laid: bool = False) -> None:
         """A segment of the plan: read off (or, for a laid-off component, its laid length)."""
         mm, value = (abs(vec_mm), abs(vec_mm) * self.mu) if laid else self.read(vec_mm)
+        if laid and math.isclose(value, abs(exact), rel_tol=1e-9):
+            value = abs(exact)          # laid off as computed: its round-off is no error (not "−0,00 %")
         self.entries[key] = Entry(key, kind, mm, value, abs(exact), vec_mm * self.mu, exact, abs(exact))
 
     def rate(self, link: str, value: float, exact: float, basis: float) -> None:
