@@ -77,7 +77,8 @@ class CamConstruction:
     # the closing error the s diagram may have (closing_bound, mm) and, where the drawing was redrawn
     # with more divisions for it, the first drawing's divisions and closing errors (mm)
     closing_bound: float = math.inf
-    redrawn: tuple[int, float, float, float] | None = None     # n, Δ rise, Δ return, the bound (mm)
+    # n, Δ rise, Δ return, the bound (mm)[, whether the scene named those n]
+    redrawn: tuple[int, float, float, float] | tuple[int, float, float, float, bool] | None = None
     rocking: bool = False           # a rocking follower: its displacement is the arm's angle ψ, not s
 
     @property

@@ -73,7 +73,8 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
             "closing_mm_first": {"rise": float(g.redrawn[1]), "return": float(g.redrawn[2])},
-            "closing_bound_mm_first": float(g.redrawn[3])},
+            "closing_bound_mm_first": float(g.redrawn[3]),
+            "divisions_first_given": bool(g.redrawn[4]) if len(g.redrawn) > 4 else False},
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
@@ -108,6 +109,8 @@ WORDS = {
            "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} {q} не замкнулося на Δ = {r} мм "
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
+           "given": "{f} {word} задано; графік {q} побудовано при {n}, бо при {f} він не замикається "
+                    "(Δ = {d} > {b} мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
            "warn": "Попередження"},
@@ -134,6 +137,8 @@ WORDS = {
            "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} {q} missed its closing by "
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
+           "given": "{f} divisions given; the {q} diagram drawn with {n}, as at {f} it does not close "
+                    "(Δ = {d} > {b} mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
            "warn": "Warnings"},
@@ -187,12 +192,27 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         lines.append(w["closing"].format(q=symbols(rocking)["s"], r=n(close["rise"], 3).replace("-", "−"),
                                          t=n(close["return"], 3).replace("-", "−")))
     again = doc.get("redrawn")
-    if again:
+    if again and again.get("divisions_first_given"):
+        first = again["closing_mm_first"]
+        worst = max((first["rise"], first["return"]), key=abs)
+        lines.append(w["given"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
+                                       word=_divisions_uk(again["divisions_first"]),
+                                       d=n(worst, 3).replace("-", "−"), b=n(again["closing_bound_mm_first"], 3)))
+    elif again:
         lines.append(w["redrawn"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
     return [x[:1].upper() + x[1:] for x in lines]       # each a sentence: a capital first letter
+
+
+def _divisions_uk(k: int) -> str:
+    """«поділку», «поділки» or «поділок» after the number ``k`` (Ukrainian agreement)."""
+    if k % 10 == 1 and k % 100 != 11:
+        return "поділку"
+    if 2 <= k % 10 <= 4 and not 12 <= k % 100 <= 14:
+        return "поділки"
+    return "поділок"
 
 
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:

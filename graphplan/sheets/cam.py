@@ -538,10 +538,12 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     its closing by more than 2 % of the stroke drawn and the ruler's half division
     (graphic.cam.closing_bound), the diagrams are drawn again with more divisions — the fewest that
     close within it, up to four times as many (MOST_DIVISIONS at most) —, the notes saying so
-    (``redrawn``). Divisions the scene or ``n`` names are kept and a warning says how many would do;
-    where none tried helps, the first drawing stays with its warning."""
+    (``redrawn``; where the scene named the first divisions, the notes say it named them and why the
+    drawing takes others: issue 32 item 2, the sheet chooses what makes the diagram right and says
+    so). Divisions ``n`` names (`--divisions` on the command line) are kept and a warning says how
+    many would do; where none tried helps, the first drawing stays with its warning."""
     first_n = n or sol.cam.divisions
-    given = n is not None or sol.cam.divisions_given
+    given = n is not None
     sizes = cam_sizes(sol, f, first_n, precision)
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
@@ -564,7 +566,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
         sz = sizes if _one_sheet_still(sol, f, make(m, sizes)) else cam_sizes(sol, f, m, precision)
         if make(m, sz).closes:                 # the taller table may have changed the scales
             redrawn = make(m, sz, True)
-            redrawn.redrawn = (first_n, *first.closing, first.closing_bound)
+            redrawn.redrawn = (first_n, *first.closing, first.closing_bound, bool(sol.cam.divisions_given))
             return redrawn
     return kept(None)
 
