@@ -110,7 +110,7 @@ WORDS = {
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
            "given": "{f} {word} задано; графік {q} побудовано при {n}, бо при {f} він не замикається "
-                    "(Δ = {d} > {b} мм)",
+                    "({D} = {d} > {b} мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
            "warn": "Попередження"},
@@ -138,7 +138,7 @@ WORDS = {
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
            "given": "{f} divisions given; the {q} diagram drawn with {n}, as at {f} it does not close "
-                    "(Δ = {d} > {b} mm)",
+                    "({D} = {d} > {b} mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
            "warn": "Warnings"},
@@ -197,7 +197,8 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         worst = max((first["rise"], first["return"]), key=abs)
         lines.append(w["given"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
                                        word=_divisions_uk(again["divisions_first"]),
-                                       d=n(worst, 3).replace("-", "−"), b=n(again["closing_bound_mm_first"], 3)))
+                                       D="Δ" if worst >= 0 else "|Δ|", d=n(abs(worst), 3),
+                                       b=n(again["closing_bound_mm_first"], 3)))
     elif again:
         lines.append(w["redrawn"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
