@@ -706,13 +706,15 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
 
 
 def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:
-    """μ_φ (rad/mm, the working angle over ``width`` mm less the axis's end and its letters) and the
+    """μ_φ (rad/mm, a standard one in °/mm: the working angle in at most ``width`` mm less the axis's
+    end and its letters) and the
     finest standard μ_ϑ (°/mm: 1, 2, 2.5, 4, 5 × 10^k) that puts ϑ's range and the bands ±[ϑ] in
     ``height`` mm less the letters above and below."""
     from graphplan.graphic.scales import series_around
     cam = sol.cam
     rise, far, ret, _ = cam.phases
-    mu_phi = math.radians(rise + far + ret) / max(width - 20.0, 10.0)
+    need_phi = (rise + far + ret) / max(width - 20.0, 10.0)          # °/mm: the series' at or above it
+    mu_phi = math.radians(min(m for m in series_around(need_phi) if m >= need_phi * (1 - 1e-12)))
     theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
     span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
     need = span / max(height - 18.0, 5.0)
