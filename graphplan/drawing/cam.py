@@ -7,6 +7,7 @@ one label placer (drawing.labels), clear of the lines."""
 from __future__ import annotations
 
 import cmath
+import dataclasses
 import math
 
 import numpy as np
@@ -356,6 +357,31 @@ def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple
     return [(k, sep.join(names)) for k, names in out]
 
 
+def _own_spot(rec: Record, req: LabelRequest) -> None:
+    """A number whose dot has another numbered dot within a few mm set so that its lettering is
+    nearer its own dot than any of ``req.rivals`` (on a leader where need be): the placer tried with
+    the preferred side turned in 16 directions, the first that gives that kept, else the nearest."""
+    import copy
+    from graphplan.drawing.labels import _box_gap
+    best, score = None, -math.inf
+    base = req.toward / abs(req.toward)
+    for j in range(16):
+        trial = copy.deepcopy(rec)
+        turn = cmath.exp(1j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / 8)
+        place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
+        text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
+        if not text:
+            continue
+        box = text[0].ink()
+        margin = min(_box_gap(box, z) for z in req.rivals) - _box_gap(box, req.at)
+        if margin > score:
+            best, score = trial, margin
+        if margin >= 1.0:
+            break
+    if best is not None:
+        rec.items[:] = best.items
+
+
 def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     """The phase diagram as the textbook draws it, in the fixed frame at the scale of s (rocking: the
     arm's arcs l·ψ at the profile's μ_l, phase_scale): the follower's axis (rocking: the arc of the roller's centre and the arm's
@@ -436,9 +462,20 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
         rec.segment((lo, y0), (hi, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis ds/dφ")
         labels.append(LabelRequest(complex(hi, y0), "ds/dφ", toward=1 - 1j, size=TEXT, step="axis ds/dφ"))
-    for k, text in coincident_numbers(K, lang):
-        labels.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
-    place_labels(rec, labels, layer=LAYER)
+    # each number by its own dot: nearer it than any other numbered dot, else on a leader to it (review 9,
+    # finding 1: the rocking cam's "18" and "0, 19" stood at each other's dots, R0 read as drawn to 18)
+    # Those with a rival dot near are set first (before the letters R_0, O, [ϑ] take the room)
+    marked = coincident_numbers(K, lang)
+    numbers, first = [], []
+    for k, text in marked:
+        rivals = tuple(complex(K[j]) for j, _ in marked if j != k and abs(K[j] - K[k]) < 25.0)
+        close = any(abs(z - K[k]) < 8.0 for z in rivals)
+        numbers.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=not rivals,
+                                    rivals=rivals, step=f"number {k}"))
+        first.append(close)
+    for q in (q for q, c in zip(numbers, first) if c):
+        _own_spot(rec, q)
+    place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
 
@@ -512,8 +549,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         tip = rays[k] if not cam.rocking else feet[k]
         if cam.rocking and k == 0:
             # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
-            # and out: its 0 below the arm and left of the support, not on O_1's line ("0O_1")
-            rec.label((tip.real - 4.3, tip.imag - 3.0), text, size=NUMBER, anchor="end", layer=LAYER,
+            # and out: its 0 left of the support's hatching, below it, a row under O_1's letters and on
+            # the other side (beside them on one line it read "0 O_1"), off the pivots' circle
+            rec.label((tip.real - 8.0, tip.imag - 7.0 - NUMBER), text, size=NUMBER, anchor="end", layer=LAYER,
                       step="division 0")
             continue
         labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
@@ -626,10 +664,11 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
     rise, far, ret, near = cam.phases
     starts = [0.0, rise, rise + far, rise + far + ret]
     sizes = [rise, far, ret, near]
-    if cam.rocking:        # the numbers at the arms' pivots (radius a): the arcs inside them if there is room
+    if cam.rocking:        # the numbers at the arms' pivots (radius a): the arcs outside them (docs/cams.md;
+        # review 9: inside, they crossed every arm's line), the extension lines from past the numbers
         a = cam.centre_distance / g.mu_l
         ref = cmath.phase(feet[0])
-        R, root = (outer + 10.0, outer - 2.0) if a - outer >= 22.0 else (a + 14.0, a + 2.0)
+        R, root = a + 14.0, a + 8.0
     else:                  # the numbers at the rays' tips (outer + 6 mm)
         ref = cmath.phase(rays[0])
         R, root = outer + ARC_OUT, outer + 7.0
