@@ -277,15 +277,21 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         lines = [q for q in rec.items if q.kind in ("segment", "polyline")
                  and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
         best = None
-        for side in ((1, -1) if up else (-1, 1)):
-            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
-            box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=text, size=NUMBER, anchor="start").ink()
-            crossed = hits(box, lines)
-            if not crossed:
-                best = (y, box, [])
+        anchor, xs = "start", x[k] + NUMBER_OFF
+        # right of the division on either side of the axis; where the curve crosses the axis there
+        # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
+        for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF)):
+            for side in ((1, -1) if up else (-1, 1)):
+                y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
+                box = Primitive("text", ((sx, y),), text=text, size=NUMBER, anchor=where).ink()
+                crossed = hits(box, lines)
+                if not crossed:
+                    best, anchor, xs = (y, box, []), where, sx
+                    break
+                if best is None and where == "start" and all(q.step.startswith(f"mean {key}") for q in crossed):
+                    best = (y, box, crossed)
+            if best is not None and not best[2]:
                 break
-            if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
-                best = (y, box, crossed)
         if best is None:
             y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * BELOW
             best = (y, None, [])
@@ -299,7 +305,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                 continue                         # as the axis itself; its ray from P still shows it
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
-        rec.label((x[k] + NUMBER_OFF, y), text, size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {ks[0]}")
+        rec.label((xs, y), text, size=NUMBER, anchor=anchor, layer=LAYER, step=f"division {key} {ks[0]}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
