@@ -59,7 +59,13 @@ def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
     sym = {"mu_phi": "μ_φ", "mu_l": "μ_l", **symbols(rocking)}[key]
     if rocking and key in ("mu_s", "mu_v", "mu_a"):
         value = math.degrees(value)
-    return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
+    text = f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
+    if key == "mu_phi" and value > 0:       # a standard one in degrees said so (review 8: 0.01745 rad/mm is 1 °/mm)
+        deg = math.degrees(value)
+        mantissa = deg / 10 ** math.floor(math.log10(deg) + 1e-9)
+        if any(abs(mantissa - m) < 1e-6 for m in (1.0, 2.0, 2.5, 4.0, 5.0)):
+            text += f" ({num(deg, lang, 4)} °/{'мм' if lang == 'uk' else 'mm'})"
+    return text
 
 
 def _pt(z: complex) -> tuple[float, float]:
@@ -278,13 +284,15 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                  and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
         best = None
         anchor, xs = "start", x[k] + NUMBER_OFF
+        # left of a division any line counts (the pole's rays end at division 0's ordinate axis)
+        everything = [q for q in rec.items if q.kind in ("segment", "polyline", "vector")]
         # right of the division on either side of the axis; where the curve crosses the axis there
         # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
         for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF)):
             for side in ((1, -1) if up else (-1, 1)):
                 y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
                 box = Primitive("text", ((sx, y),), text=text, size=NUMBER, anchor=where).ink()
-                crossed = hits(box, lines)
+                crossed = hits(box, lines if where == "start" else everything)
                 if not crossed:
                     best, anchor, xs = (y, box, []), where, sx
                     break
