@@ -110,7 +110,7 @@ WORDS = {
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
            "given": "{f} {word} задано; графік {q} побудовано при {n}, бо при {f} він не замикається "
-                    "({D} = {d} > {b} мм)",
+                    "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0мм)",
            "head": ["φ, °", "s точн.", "s граф.", "δs, %", "ds/dφ точн.", "ds/dφ граф.", "δ, %", "ϑ точн.", "ϑ граф.",
                     "R, мм", "R граф., мм"],
            "warn": "Попередження"},
@@ -138,7 +138,7 @@ WORDS = {
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
            "given": "{f} divisions given; the {q} diagram drawn with {n}, as at {f} it does not close "
-                    "({D} = {d} > {b} mm)",
+                    "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0mm)",
            "head": ["φ, °", "s exact", "s gr.", "δs, %", "ds/dφ exact", "ds/dφ gr.", "δ, %", "ϑ exact", "ϑ gr.",
                     "R, mm", "R gr., mm"],
            "warn": "Warnings"},
