@@ -73,14 +73,14 @@ def test_a_phase_that_misses_its_closing_is_redrawn_with_more_divisions():
     assert not any("closing" in w for w in doc["warnings"])
 
 
-def test_divisions_the_scene_names_are_kept_and_warned_with_how_many_would_do():
-    """The reviewer's scene names 6 divisions: kept, and the warning's number of divisions closes
+def test_divisions_the_command_line_names_are_kept_and_warned_with_how_many_would_do():
+    """`--divisions 6` on the reviewer's scene: kept, and the warning's number of divisions closes
     within the bound at the same scales where 6 do not."""
     from graphplan.sheets.cam import cam_sizes, construct_on
     from graphplan.sheets.form import form
-    cam = build(ROCK_CCW | {"cam": ROCK_CCW["cam"] | {"divisions": 6}}, "<rock ccw>")
+    cam = build(ROCK_CCW, "<rock ccw>")
     sol = solve(cam)
-    g = construct_on(sol, form("A1"))
+    g = construct_on(sol, form("A1"), 6)
     assert len(g.phi) // 2 - 1 == 6
     assert max(abs(x) for x in closing_errors(sol, g)) > 0.02 * cam.stroke / g.mu_s + 0.25
     (warning,) = [w for w, _ in g.warnings if "closing" in w]
@@ -90,6 +90,32 @@ def test_divisions_the_scene_names_are_kept_and_warned_with_how_many_would_do():
     h = construct(sol, better, 0.5, size=sizes[0], profile_size=sizes[1], height=sizes[2], accel=sizes[3],
                   measure=False)
     assert max(abs(x) for x in closing_errors(sol, h)) <= allowed_mm(sol, h)
+
+
+def test_divisions_the_scene_names_that_do_not_close_are_redrawn_and_the_notes_say_why():
+    """Issue 32 item 2 (review 8, finding 10): the scene names 6 divisions at which s does not close
+    within the bound: the sheet's construction (and `graphplan cam`'s) takes the fewest that close,
+    and the notes say that 6 were given, what was drawn, and the first closing error against the
+    bound — no warning against itself."""
+    from graphplan.report.cam import cam_json, cam_lines
+    from graphplan.sheets.form import form
+    from graphplan.sheets.cam import construct_on
+    cam = build(ROCK_CCW | {"cam": ROCK_CCW["cam"] | {"divisions": 6}}, "<rock ccw>")
+    sol = solve(cam)
+    g = construct_on(sol, form("A1"))
+    n = len(g.phi) // 2 - 1
+    assert n > 6
+    assert max(abs(x) for x in closing_errors(sol, g)) <= allowed_mm(sol, g)
+    doc = cam_json(sol, g, "x")
+    first = doc["redrawn"]
+    assert first["divisions_first"] == 6 and first["divisions_first_given"]
+    worst = max(abs(first["closing_mm_first"]["rise"]), abs(first["closing_mm_first"]["return"]))
+    assert worst > first["closing_bound_mm_first"]
+    en = " ".join(cam_lines(doc, "en"))
+    assert f"6 divisions given; the ψ diagram drawn with {n}, as at 6 it does not close" in en
+    uk = " ".join(cam_lines(doc, "uk"))
+    assert f"6 поділок задано; графік ψ побудовано при {n}, бо при 6 він не замикається" in uk
+    assert not any("closing" in w for w in doc["warnings"])
 
 
 def test_the_profile_is_the_largest_drawing():

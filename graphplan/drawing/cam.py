@@ -7,6 +7,7 @@ one label placer (drawing.labels), clear of the lines."""
 from __future__ import annotations
 
 import cmath
+import dataclasses
 import math
 
 import numpy as np
@@ -58,7 +59,13 @@ def scale_text(key: str, value: float, rocking: bool, lang: str) -> str:
     sym = {"mu_phi": "μ_φ", "mu_l": "μ_l", **symbols(rocking)}[key]
     if rocking and key in ("mu_s", "mu_v", "mu_a"):
         value = math.degrees(value)
-    return f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
+    text = f"{sym} = {num(value, lang, 4)} {scale_units(rocking, lang)[key]}"
+    if key == "mu_phi" and value > 0:       # a standard one in degrees said so (review 8: 0.01745 rad/mm is 1 °/mm)
+        deg = math.degrees(value)
+        mantissa = deg / 10 ** math.floor(math.log10(deg) + 1e-9)
+        if any(abs(mantissa - m) < 1e-6 for m in (1.0, 2.0, 2.5, 4.0, 5.0)):
+            text += f" ({num(deg, lang, 4)} °/{'мм' if lang == 'uk' else 'mm'})"
+    return text
 
 
 def _pt(z: complex) -> tuple[float, float]:
@@ -276,15 +283,23 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         lines = [q for q in rec.items if q.kind in ("segment", "polyline")
                  and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
         best = None
-        for side in ((1, -1) if up else (-1, 1)):
-            y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
-            box = Primitive("text", ((x[k] + NUMBER_OFF, y),), text=text, size=NUMBER, anchor="start").ink()
-            crossed = hits(box, lines)
-            if not crossed:
-                best = (y, box, [])
+        anchor, xs = "start", x[k] + NUMBER_OFF
+        # left of a division any line counts (the pole's rays end at division 0's ordinate axis)
+        everything = [q for q in rec.items if q.kind in ("segment", "polyline", "vector")]
+        # right of the division on either side of the axis; where the curve crosses the axis there
+        # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
+        for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF)):
+            for side in ((1, -1) if up else (-1, 1)):
+                y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
+                box = Primitive("text", ((sx, y),), text=text, size=NUMBER, anchor=where).ink()
+                crossed = hits(box, lines if where == "start" else everything)
+                if not crossed:
+                    best, anchor, xs = (y, box, []), where, sx
+                    break
+                if best is None and where == "start" and all(q.step.startswith(f"mean {key}") for q in crossed):
+                    best = (y, box, crossed)
+            if best is not None and not best[2]:
                 break
-            if best is None and all(q.step.startswith(f"mean {key}") for q in crossed):
-                best = (y, box, crossed)
         if best is None:
             y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * BELOW
             best = (y, None, [])
@@ -298,7 +313,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                 continue                         # as the axis itself; its ray from P still shows it
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
-        rec.label((x[k] + NUMBER_OFF, y), text, size=NUMBER, anchor="start", layer=LAYER, step=f"division {key} {ks[0]}")
+        rec.label((xs, y), text, size=NUMBER, anchor=anchor, layer=LAYER, step=f"division {key} {ks[0]}")
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
@@ -354,6 +369,31 @@ def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple
         else:
             same[1].append(str(k))
     return [(k, sep.join(names)) for k, names in out]
+
+
+def _own_spot(rec: Record, req: LabelRequest) -> None:
+    """A number whose dot has another numbered dot within a few mm set so that its lettering is
+    nearer its own dot than any of ``req.rivals`` (on a leader where need be): the placer tried with
+    the preferred side turned in 16 directions, the first that gives that kept, else the nearest."""
+    import copy
+    from graphplan.drawing.labels import _box_gap
+    best, score = None, -math.inf
+    base = req.toward / abs(req.toward)
+    for j in range(16):
+        trial = copy.deepcopy(rec)
+        turn = cmath.exp(1j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / 8)
+        place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
+        text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
+        if not text:
+            continue
+        box = text[0].ink()
+        margin = min(_box_gap(box, z) for z in req.rivals) - _box_gap(box, req.at)
+        if margin > score:
+            best, score = trial, margin
+        if margin >= 1.0:
+            break
+    if best is not None:
+        rec.items[:] = best.items
 
 
 def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
@@ -436,9 +476,20 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         lo, hi = float(min(np.min(K.real), C[0].real)) - 4.0, float(max(np.max(K.real), C[0].real)) + 8.0
         rec.segment((lo, y0), (hi, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis ds/dφ")
         labels.append(LabelRequest(complex(hi, y0), "ds/dφ", toward=1 - 1j, size=TEXT, step="axis ds/dφ"))
-    for k, text in coincident_numbers(K, lang):
-        labels.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=True))
-    place_labels(rec, labels, layer=LAYER)
+    # each number by its own dot: nearer it than any other numbered dot, else on a leader to it (review 9,
+    # finding 1: the rocking cam's "18" and "0, 19" stood at each other's dots, R0 read as drawn to 18)
+    # Those with a rival dot near are set first (before the letters R_0, O, [ϑ] take the room)
+    marked = coincident_numbers(K, lang)
+    numbers, first = [], []
+    for k, text in marked:
+        rivals = tuple(complex(K[j]) for j, _ in marked if j != k and abs(K[j] - K[k]) < 25.0)
+        close = any(abs(z - K[k]) < 8.0 for z in rivals)
+        numbers.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=not rivals,
+                                    rivals=rivals, step=f"number {k}"))
+        first.append(close)
+    for q in (q for q, c in zip(numbers, first) if c):
+        _own_spot(rec, q)
+    place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
 
@@ -512,8 +563,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         tip = rays[k] if not cam.rocking else feet[k]
         if cam.rocking and k == 0:
             # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
-            # and out: its 0 below the arm and left of the support, not on O_1's line ("0O_1")
-            rec.label((tip.real - 4.3, tip.imag - 3.0), text, size=NUMBER, anchor="end", layer=LAYER,
+            # and out: its 0 left of the support's hatching, below it, a row under O_1's letters and on
+            # the other side (beside them on one line it read "0 O_1"), off the pivots' circle
+            rec.label((tip.real - 8.0, tip.imag - 7.0 - NUMBER), text, size=NUMBER, anchor="end", layer=LAYER,
                       step="division 0")
             continue
         labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
@@ -626,10 +678,11 @@ def _phase_arcs(rec: Record, sol: Solution, g: CamConstruction, feet, rays, oute
     rise, far, ret, near = cam.phases
     starts = [0.0, rise, rise + far, rise + far + ret]
     sizes = [rise, far, ret, near]
-    if cam.rocking:        # the numbers at the arms' pivots (radius a): the arcs inside them if there is room
+    if cam.rocking:        # the numbers at the arms' pivots (radius a): the arcs outside them (docs/cams.md;
+        # review 9: inside, they crossed every arm's line), the extension lines from past the numbers
         a = cam.centre_distance / g.mu_l
         ref = cmath.phase(feet[0])
-        R, root = (outer + 10.0, outer - 2.0) if a - outer >= 22.0 else (a + 14.0, a + 2.0)
+        R, root = a + 14.0, a + 8.0
     else:                  # the numbers at the rays' tips (outer + 6 mm)
         ref = cmath.phase(rays[0])
         R, root = outer + ARC_OUT, outer + 7.0
@@ -706,13 +759,15 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
 
 
 def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:
-    """μ_φ (rad/mm, the working angle over ``width`` mm less the axis's end and its letters) and the
+    """μ_φ (rad/mm, a standard one in °/mm: the working angle in at most ``width`` mm less the axis's
+    end and its letters) and the
     finest standard μ_ϑ (°/mm: 1, 2, 2.5, 4, 5 × 10^k) that puts ϑ's range and the bands ±[ϑ] in
     ``height`` mm less the letters above and below."""
     from graphplan.graphic.scales import series_around
     cam = sol.cam
     rise, far, ret, _ = cam.phases
-    mu_phi = math.radians(rise + far + ret) / max(width - 20.0, 10.0)
+    need_phi = (rise + far + ret) / max(width - 20.0, 10.0)          # °/mm: the series' at or above it
+    mu_phi = math.radians(min(m for m in series_around(need_phi) if m >= need_phi * (1 - 1e-12)))
     theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
     span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
     need = span / max(height - 18.0, 5.0)

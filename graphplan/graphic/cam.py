@@ -77,7 +77,8 @@ class CamConstruction:
     # the closing error the s diagram may have (closing_bound, mm) and, where the drawing was redrawn
     # with more divisions for it, the first drawing's divisions and closing errors (mm)
     closing_bound: float = math.inf
-    redrawn: tuple[int, float, float, float] | None = None     # n, Δ rise, Δ return, the bound (mm)
+    # n, Δ rise, Δ return, the bound (mm)[, whether the scene named those n]
+    redrawn: tuple[int, float, float, float] | tuple[int, float, float, float, bool] | None = None
     rocking: bool = False           # a rocking follower: its displacement is the arm's angle ψ, not s
 
     @property
@@ -134,14 +135,17 @@ def pole_distance(h: float) -> float:
 def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
               H2: float | None = None, L: float | None = None, size: float = 1.0,
               profile_size: float = 1.0, height: float | None = None, measure: bool = True,
-              accel: float | None = None) -> CamConstruction:
+              accel: float | None = None, series: bool = False) -> CamConstruction:
     """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
     read with a ruler of ``precision`` mm. ``size`` enlarges the diagrams (L, the tallest ordinate and
     the stroke drawn) and ``profile_size`` the profile, each scale then the standard one at or above
     what that asks (the sheet takes the largest that fit their zones, sheets.cam.cam_sizes); ``height``
     (default ``size``) enlarges the ordinates alone, ``accel`` (default ``height``) those of d²s/dφ²
     alone (μ_s kept: the poles move out, ds/dφ grows as its square root). ``measure=False`` leaves R0 unmeasured (NaN):
-    a trial of the drawings' sizes."""
+    a trial of the drawings' sizes. ``series``: the scales a drawing's reader takes off it from the
+    standard series (GOST 2.302; the lab's 1, 2, 2.5, 4, 5·10^k) — μ_φ in °/mm and μ_s —, the poles
+    whole millimetres and μ_a, μ_v the derived ones (μ_a = μ_s/(μ_φ²·H1·H2), μ_v = μ_a·μ_φ·H1: the
+    a-diagram about ``accel``'s height); else μ_a standard and μ_s derived."""
     cam = sol.cam
     n = n or cam.divisions
     phi, phase = divisions(sol, n)
@@ -150,10 +154,24 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     accel = height if accel is None else accel
     mu_phi = 2 * math.pi / L              # the turn's; the diagrams drawn over the working angle φ_р alone,
     #                                       its abscissa L_р = φ_р/μ_φ (the lab's μ_φ = φ_р/L_р)
+    if series:                            # μ_φ of the series in °/mm, at or coarser than L asks (no longer)
+        mu_phi = math.radians(nice(360.0 / L))
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0
     mu_a = nice(peak / (HEIGHT_MM * accel))
+    if series:
+        # μ_s of the series; H1·H2 = μ_s/(μ_a·μ_φ²) in whole millimetres (15–50), μ_a = the derived one
+        mu_s_series = nice(cam.stroke / (STROKE_MM * height))
+        if cam.rocking:                   # ψ is read in degrees: μ_ψ standard in °/mm
+            mu_s_series = math.radians(nice(math.degrees(cam.stroke) / (STROKE_MM * height)))
+        product = mu_s_series / ((peak / (HEIGHT_MM * accel)) * mu_phi ** 2)
+        # H2 such that ds/dφ's tallest ordinate, v·μ_φ·H2/μ_s, is about d²s/dφ²'s (HEIGHT_MM·accel):
+        # neither takes the height the s diagram needs
+        v_peak = float(np.max(np.abs(motion(cam, fine)[1]))) or 1.0
+        H2 = H2 or pole_distance(HEIGHT_MM * accel * mu_s_series / (v_peak * mu_phi))
+        H1 = H1 or pole_distance(product / H2)
+        mu_a = mu_s_series / (mu_phi ** 2 * H1 * H2)
     if H1 is None or H2 is None:
         # the stroke drawn about STROKE_MM high: H1 and H2 whole millimetres (15–50) near what that
         # asks; the scales follow from them, μ_v = μ_a·μ_φ·H1, μ_s = μ_v·μ_φ·H2 (the lab's formula)

@@ -74,7 +74,8 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
             "closing_mm_first": {"rise": float(g.redrawn[1]), "return": float(g.redrawn[2])},
-            "closing_bound_mm_first": float(g.redrawn[3])},
+            "closing_bound_mm_first": float(g.redrawn[3]),
+            "divisions_first_given": bool(g.redrawn[4]) if len(g.redrawn) > 4 else False},
         "warnings": [en for en, _ in sol.warnings + g.warnings],
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
@@ -109,6 +110,8 @@ WORDS = {
            "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} {q} не замкнулося на Δ = {r} мм "
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
+           "given": "{f} {word} задано; графік {q} побудовано при {n}, бо при {f} він не замикається "
+                    "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0мм)",
            "head": ["φ, °", "s, {s}", "s граф.", "δs, %", "ds/dφ, {v}", "ds/dφ граф.", "δ, %", "ϑ, °", "ϑ граф.",
                     "R, мм", "R граф."],
            "warn": "Попередження"},
@@ -135,6 +138,8 @@ WORDS = {
            "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} {q} missed its closing by "
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
+           "given": "{f} divisions given; the {q} diagram drawn with {n}, as at {f} it does not close "
+                    "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0mm)",
            "head": ["φ, °", "s, {s}", "s gr.", "δs, %", "ds/dφ, {v}", "ds/dφ gr.", "δ, %", "ϑ, °", "ϑ gr.",
                     "R, mm", "R gr."],
            "warn": "Warnings"},
@@ -242,12 +247,28 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         lines.append(w["closing"].format(q=symbols(rocking)["s"], r=n(close["rise"], 3).replace("-", "−"),
                                          t=n(close["return"], 3).replace("-", "−")))
     again = doc.get("redrawn")
-    if again:
+    if again and again.get("divisions_first_given"):
+        first = again["closing_mm_first"]
+        worst = max((first["rise"], first["return"]), key=abs)
+        lines.append(w["given"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
+                                       word=_divisions_uk(again["divisions_first"]),
+                                       D="Δ" if worst >= 0 else "|Δ|", d=n(abs(worst), 3),
+                                       b=n(again["closing_bound_mm_first"], 3)))
+    elif again:
         lines.append(w["redrawn"].format(q=symbols(rocking)["s"], n=doc["divisions"], f=again["divisions_first"],
                                          r=n(again["closing_mm_first"]["rise"], 3).replace("-", "−"),
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
     return [x[:1].upper() + x[1:] for x in lines]       # each a sentence: a capital first letter
+
+
+def _divisions_uk(k: int) -> str:
+    """«поділку», «поділки» or «поділок» after the number ``k`` (Ukrainian agreement)."""
+    if k % 10 == 1 and k % 100 != 11:
+        return "поділку"
+    if 2 <= k % 10 <= 4 and not 12 <= k % 100 <= 14:
+        return "поділки"
+    return "поділок"
 
 
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:

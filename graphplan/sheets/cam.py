@@ -15,7 +15,7 @@ from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
 from graphplan.report.cam import cam_json, table_columns
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
-                                      note_block)
+                                      later_keep, note_block)
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
@@ -464,7 +464,9 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
     ordinates, then d²s/dφ² alone, then the abscissa alone, and the profile, the main drawing, at the largest standard scale at
-    which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large."""
+    which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large.
+    The scales of the series (construct's ``series``: μ_φ in °/mm and μ_s standard, the poles whole
+    millimetres); the tuple's seventh item says so."""
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     region, keep = field_of(f), keep_out(f)
     memo: dict = {}
@@ -483,19 +485,42 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
         return memo[(name, key)]
 
     def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...]) -> bool:
-        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel)
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
+                      series=True)
         return all(alone(name, g) for name in names)
     both = ("diagrams", "phase")
     sizes = list(SET_SIZES)
     k = _largest(lambda x: fits(x, x, x, None, both), sizes) or sizes[0]
+    # then s (and ds/dφ) alone taller, d²s/dφ² as it is: the s ordinates, the ones the table's δ_s
+    # reads, as large as the sheet allows (review 8, finding 11: 0.5 mm at division 1, δ_s +24.8 %,
+    # where d²s/dφ² took the sheet's height); then d²s/dφ² into what is left
+    # (at the abscissa the sheet allows: a short one asks short poles, d²s/dφ² the taller)
     up = [x for x in sizes if x > k]
-    kh = (_largest(lambda x: fits(k, k, x, None, both), up) if up else None) or k
-    up = [x for x in sizes if x > kh]
-    ka = (_largest(lambda x: fits(k, k, kh, x, both), up) if up else None) or kh
-    up = [x for x in sizes if x > k]        # the abscissa alone longer (the ordinates as they are)
-    kl = (_largest(lambda x: fits(x, k, kh, ka, both), up) if up else None) or k
-    kp = _largest(lambda x: fits(kl, x, kh, ka, ("profile", "phase")), sizes) or sizes[0]
-    return kl, kp, kh, ka, None, None
+    kl = (_largest(lambda x: fits(x, k, k, k, both), up) if up else None) or k
+    ks = (_largest(lambda x: fits(kl, k, x, sizes[0], both), up) if up else None) or k
+    ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
+    up = [x for x in sizes if x > kl]        # the abscissa alone longer (the ordinates as they are)
+    kl = (_largest(lambda x: fits(x, k, ks, ka, both), up) if up else None) or kl
+    kp = _largest(lambda x: fits(kl, x, ks, ka, ("profile", "phase")), sizes) or sizes[0]
+
+    def shared(size: float, prof: float, height: float, accel: float) -> bool:
+        """Whether the phase diagram (a translating follower's at μ_s) and the profile share a sheet."""
+        g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False,
+                      accel=accel, series=True)
+        for lang in ("uk", "en"):
+            pair = [Leaf(name, *extent(Leaf(name, record=captioned(draw(sol, g, lang),
+                                                                    *_captions(g, sol.cam, lang)[name]))))
+                    for name, draw in (("phase", phase_diagram), ("profile", profile_drawing))]
+            laid = flow([pair], region, keep)
+            if laid is None or len(laid) != 1:
+                return False
+        return True
+    if ks > k and not shared(kl, kp, ks, ka) and shared(kl, kp, k, ka):
+        # a finer μ_s would give the phase diagram a sheet of its own, and the set a sheet more, half
+        # blank: s as tall as keeps the two on one sheet
+        ks = next(x for x in reversed([x for x in sizes if k <= x < ks]) if shared(kl, kp, x, ka))
+        ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
+    return kl, kp, ks, ka, None, None, True
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -521,15 +546,17 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     its closing by more than 2 % of the stroke drawn and the ruler's half division
     (graphic.cam.closing_bound), the diagrams are drawn again with more divisions — the fewest that
     close within it, up to four times as many (MOST_DIVISIONS at most) —, the notes saying so
-    (``redrawn``). Divisions the scene or ``n`` names are kept and a warning says how many would do;
-    where none tried helps, the first drawing stays with its warning."""
+    (``redrawn``; where the scene named the first divisions, the notes say it named them and why the
+    drawing takes others: issue 32 item 2, the sheet chooses what makes the diagram right and says
+    so). Divisions ``n`` names (`--divisions` on the command line) are kept and a warning says how
+    many would do; where none tried helps, the first drawing stays with its warning."""
     first_n = n or sol.cam.divisions
-    given = n is not None or sol.cam.divisions_given
+    given = n is not None
     sizes = cam_sizes(sol, f, first_n, precision)
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
         return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         H1=sz[4], H2=sz[5], measure=measure)
+                         H1=sz[4], H2=sz[5], measure=measure, series=len(sz) > 6 and sz[6])
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -547,7 +574,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
         sz = sizes if _one_sheet_still(sol, f, make(m, sizes)) else cam_sizes(sol, f, m, precision)
         if make(m, sz).closes:                 # the taller table may have changed the scales
             redrawn = make(m, sz, True)
-            redrawn.redrawn = (first_n, *first.closing, first.closing_bound)
+            redrawn.redrawn = (first_n, *first.closing, first.closing_bound, bool(sol.cam.divisions_given))
             return redrawn
     return kept(None)
 
@@ -664,22 +691,29 @@ def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
 SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
 
 
-def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep):
+def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None):
     """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
     on the sheets there are (no further sheet for it): the table's sheet of an A2 or A3 set stands
     mostly blank. Else ``laid`` as it is."""
     if laid is None:
         return laid
-    w = min(SET_PRESSURE[0], region[2] - region[0])
-    for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.7):     # as tall as the room the table and the notes leave (an A3 set)
-        h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
-        leaf = pressure_leaf(sol, g, lang, w, h)
-        if leaf is None:
-            continue
-        again = flow([leaves, [tab, nts, leaf]], region, keep)
-        if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
-            return again
-    return laid
+    # the table and the notes as kept_together laid them (the notes may be wrapped to the table's width)
+    last = [leaf for leaf, _ in laid[-1] if leaf.name in ("table", "notes")] or [tab, nts]
+    # as tall as the room the table and the notes leave (an A3 set: 70 mm under them; review 9,
+    # finding 2 — the trials stopped at 70 % of 130 mm, and ϑ(φ) went nowhere), as wide as the sheet
+    # — of the widths tried, the one that draws it tallest (a fine μ_ϑ at a coarse μ_φ over a flat ϑ)
+    best, area = laid, (0.0, 0.0)
+    for w in (region[2] - region[0] - 2 * GAP, SET_PRESSURE[0], 180.0, 150.0):
+        for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5, 0.45, 0.4):
+            h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
+            leaf = pressure_leaf(sol, g, lang, w, h)
+            if leaf is None or (round(leaf.h), leaf.w) <= area:
+                continue
+            again = flow([leaves, last + [leaf]], region, keep, later=later)
+            if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
+                best, area = again, (round(leaf.h), leaf.w)
+                break
+    return best
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -698,7 +732,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        laid = set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep)
+        laid = set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f))
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
