@@ -371,6 +371,9 @@ def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple
     return [(k, sep.join(names)) for k, names in out]
 
 
+CROWDED_MAX = 12     # numbers with a rival dot near that are set one by one (``_own_spot``); more: the placer's order
+
+
 def _own_spot(rec: Record, req: LabelRequest) -> None:
     """A number whose dot has another numbered dot within a few mm set so that its lettering is
     nearer its own dot than any of ``req.rivals`` (on a leader where need be): the placer tried with
@@ -487,6 +490,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         numbers.append(LabelRequest(K[k], text, toward=(K[k] - C[k]) or 1j, size=NUMBER, optional=not rivals,
                                     rivals=rivals, step=f"number {k}"))
         first.append(close)
+    if sum(first) > CROWDED_MAX:        # many divisions (--divisions 64): every number has a rival near,
+        first = [False] * len(first)    # the placer's own order serves (16 trials each cost minutes)
     for q in (q for q, c in zip(numbers, first) if c):
         _own_spot(rec, q)
     place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
