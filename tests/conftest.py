@@ -34,10 +34,10 @@ def pytest_configure(config):
 THINNED = {
     "test_gallery_sheet_is_current": lambda case: not any(f in case for f in ("-A2", "-A3")),   # sets: slow
     "test_no_word_on_a_gallery_sheet_is_overprinted": 1,
-    "test_gallery_sets_are_composed_cleanly": 4,
+    "test_gallery_sets_are_composed_cleanly": 2,
     "test_the_page_replays_every_plan_in_textbook_order": 1,
     "test_kinematics_tables_numbered_in_reading_order": 3,
-    "test_position_plan_letters_and_numbers": 3,
+    "test_position_plan_letters_and_numbers": 2,
     "test_a_sets_diagrams_are_drawn_readably_high": 1,
     "test_sheet_is_a1_in_mm_with_layers": 2,
     "test_killed_sheet_leaves_no_partial_file": 1,
@@ -51,7 +51,7 @@ THINNED = {
     "test_lettering_reads_as_words_wherever_it_stands": 1,
     "test_forces_json_contract": 1,
     "test_every_force_on_a_group_is_named_from_its_source_to_the_group": 2,
-    "test_the_cam_page_is_one_offline_deterministic_file": 1,
+    "test_the_cam_page_is_one_offline_deterministic_file": 0,
     # the heaviest single checks (sets and a moment-loaded dynamics sheet, 10–42 s each): slow suite
     "test_every_format_draws_quick": 0,
     "test_the_force_sheet_draws_and_names_the_moment": 0,
@@ -72,6 +72,14 @@ THINNED = {
     "test_sheet_reports_in_its_language": 0,
     "test_plans_json_precision_zero_shaper": 0,
     "test_formats_by_suffix": 0,
+    "test_cam_rocking_a3_set_keeps_the_notes_with_the_table": 0,          # 23 s: a rocking cam's A3 set
+    # stop 42's merges took the default run from 163 to 205 s: the cases that repeat a behaviour another
+    # case of the same test shows (a four-bar and a shaper beside the crank-slider and the slotter; the A2
+    # DXF beside the A1; the rocking phase diagram, 5.7 s, beside the two translating ones): slow suite
+    "test_sheets_of_new_mechanisms_have_no_defects": lambda case: case.endswith(("crank_slider", "slotter")),
+    "test_dxf_is_cad_ready": 1,
+    "test_ukrainian_output_of_every_command": lambda case: case.endswith("-shaper"),     # each command once
+    "test_the_phase_diagram_draws_the_printed_pressure_angles": 2,
 }
 
 

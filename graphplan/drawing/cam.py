@@ -378,12 +378,11 @@ def _own_spot(rec: Record, req: LabelRequest) -> None:
     """A number whose dot has another numbered dot within a few mm set so that its lettering is
     nearer its own dot than any of ``req.rivals`` (on a leader where need be): the placer tried with
     the preferred side turned in 16 directions, the first that gives that kept, else the nearest."""
-    import copy
     from graphplan.drawing.labels import _box_gap
     best, score = None, -math.inf
     base = req.toward / abs(req.toward)
     for j in range(16):
-        trial = copy.deepcopy(rec)
+        trial = dataclasses.replace(rec, items=list(rec.items), scales=dict(rec.scales))   # primitives are frozen
         turn = cmath.exp(1j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / 8)
         place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
         text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
