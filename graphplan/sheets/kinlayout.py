@@ -731,13 +731,13 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 """The set's pages at ``mu``: (count, notes alone on the last sheet, the emptiest
                 sheet's fill, the notes' width) — the notes wider where at the title block's width
                 they would take a sheet of their own."""
-                found = None
+                found, sizes = None, own(mu)
                 for nw in wide:
                     out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later=later)
                     if out is None:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
-                    fill = min(page_fill(page, region, own(mu)) for page in out)
+                    fill = min(page_fill(page, region, sizes) for page in out)
                     got = (len(out), orphan, fill, nw)
                     # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
                     if found is None or got[0] + got[1] < found[0] + found[1]:
