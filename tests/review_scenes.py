@@ -1000,3 +1000,66 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+# the lead's own look (stop 41), a compressor: an offset crank-slider on a guide inclined at 150°
+COMPRESSOR = '''title = "Кривошипно-повзунний механізм компресора з похилою напрямною"
+title_en = "Compressor crank-slider with an inclined guide"
+designation = "ТММ.КП.21.000"
+lang = "uk"
+[params]
+r = 0.065
+l = 0.26
+e = -0.025
+[frame.points]
+O = [0, 0]
+[frame.guides]
+piston = { through = ["e", 0], angle_deg = 150, title_en = "of the piston", title_uk = "поршня" }
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 240
+direction = "ccw"
+mass = 5
+inertia = 0.02
+points = { S1 = 0.3 }
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+mass = 4
+inertia = 0.03
+points = { S2 = 0.35 }
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "piston"
+mass = 6
+[branch]
+B = 1
+[positions]
+count = 12
+start = "min"
+accel = [3, 8]
+force_phi_deg = 60
+working_stroke = "to_max"
+[loads]
+g = 9.81
+[[force]]
+point = "B"
+magnitude = 3500
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.06, 0.1], [0.10, 0.4], [0.12, 1], [0.13, 1]]
+'''
+
+# … with its flywheel, for the dynamics set's order (test_dynamics_set_order)
+COMPRESSOR_DYN = COMPRESSOR + """
+[dynamics]
+delta = 0.04
+efficiency = 0.85
+synchronous_rpm = 1500
+"""

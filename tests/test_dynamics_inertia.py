@@ -12,82 +12,13 @@ import numpy as np
 import pytest
 
 from conftest import example, scene_study
+from review_scenes import COULISSE8   # review 8's coulisse (cw, the 1000 rpm motor line)
 from graphplan.exact.dynamics import analyse
 from graphplan.graphic.flywheel import construct, redrawn
 from graphplan.util.markup import plain
 
 RULER = 0.5    # mm
 
-# review 8's coulisse (a slotting machine's quick-return, cw crank, the 1000 rpm motor line)
-COULISSE8 = '''title = "Кулісний механізм довбального верстата"
-lang = "uk"
-[synthesis]
-type = "quick_return"
-K = 1.5
-stroke = 0.36
-centre_distance = 0.30
-[params]
-X = 0.62
-rod = "0.3 * rocker"
-[frame.points]
-O = [0, 0]
-O1 = [0, "centre_distance"]
-[frame.guides]
-ram = { through = [0, "X"], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = "crank"
-rpm = 110
-direction = "cw"
-points = { S1 = 0.5 }
-[[link]]
-name = "2"
-number = 2
-joints = ["A"]
-slides_on = "OB"
-[[link]]
-name = "OB"
-number = 3
-joints = ["O", "B"]
-length = "rocker"
-points = { S3 = 0.5 }
-[[link]]
-name = "BC"
-number = 4
-joints = ["B", "C"]
-length = "rod"
-points = { S4 = 0.5 }
-[[link]]
-name = "C"
-number = 5
-joints = ["C"]
-slides_on = "ram"
-mass = 32
-[branch]
-A = 1
-C = 1
-[positions]
-count = 12
-start = "working"
-accel = [2, 9]
-force_phi_deg = 100
-[loads]
-g = 9.81
-mass_per_length = 120
-inertia_factor = 0.1
-[[force]]
-point = "C"
-magnitude = 3200
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.03, 1], [0.31, 1], [0.35, 0]]
-[dynamics]
-delta = 0.05
-efficiency = 0.9
-synchronous_rpm = 1000
-'''
 
 
 @pytest.fixture(scope="module", params=["coulisse", "shaper"])

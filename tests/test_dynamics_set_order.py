@@ -11,83 +11,8 @@ from types import SimpleNamespace
 import pytest
 
 from conftest import ROOT, scene_study
-from review_scenes import PRESS_EN
+from review_scenes import COMPRESSOR_DYN as COMPRESSOR, PRESS_EN
 
-COMPRESSOR = '''# The lead's own look (stop 41): a compressor's crank-slider with an inclined guide (150°), offset, ccw.
-title = "Кривошипно-повзунний механізм компресора з похилою напрямною"
-title_en = "Compressor crank-slider with an inclined guide"
-designation = "ТММ.КП.21.000"
-lang = "uk"
-
-[sheet]
-student = "Студент"
-teacher = "Викладач"
-group = "ТМ-31"
-organisation = "НУБіП"
-
-[params]
-r = 0.065
-l = 0.26
-e = -0.025
-
-[frame.points]
-O = [0, 0]
-
-[frame.guides]
-piston = { through = ["e", 0], angle_deg = 150, title_en = "of the piston", title_uk = "поршня" }
-
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = "r"
-rpm = 240
-direction = "ccw"
-mass = 5
-inertia = 0.02
-points = { S1 = 0.3 }
-
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = "l"
-mass = 4
-inertia = 0.03
-points = { S2 = 0.35 }
-
-[[link]]
-name = "B"
-number = 3
-joints = ["B"]
-slides_on = "piston"
-mass = 6
-
-[branch]
-B = 1
-
-[positions]
-count = 12
-start = "min"
-accel = [3, 8]
-force_phi_deg = 60
-working_stroke = "to_max"
-
-[loads]
-g = 9.81
-
-[[force]]
-point = "B"
-magnitude = 3500
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.06, 0.1], [0.10, 0.4], [0.12, 1], [0.13, 1]]
-
-[dynamics]
-delta = 0.04
-efficiency = 0.85
-synchronous_rpm = 1500
-'''
 
 TABLES = ("positions table", "flywheel table", "motor table")
 FILLED = 1 / 3        # the least share of a set's sheet's field its drawings' and tables' boxes cover (a third)

@@ -13,7 +13,7 @@ import pytest
 from shapely.geometry import LineString, Point, Polygon, box
 
 from conftest import scene_study
-from review_scenes import SIXBAR6, SIXBAR7
+from review_scenes import COMPRESSOR, SIXBAR6, SIXBAR7
 from graphplan.drawing.plans import joints_at, position_record
 from graphplan.graphic.plans import build_plans
 
@@ -23,60 +23,6 @@ PLATE = SIXBAR6
 # review 7: a ccw crank-rocker; the rocker's end B drives a slider D on a vertical guide
 VERTICAL = SIXBAR7
 
-# the lead's compressor: an offset crank-slider on a guide inclined at 150°
-COMPRESSOR = '''title = "Кривошипно-повзунний механізм компресора з похилою напрямною"
-title_en = "Compressor crank-slider with an inclined guide"
-designation = "ТММ.КП.21.000"
-lang = "uk"
-[params]
-r = 0.065
-l = 0.26
-e = -0.025
-[frame.points]
-O = [0, 0]
-[frame.guides]
-piston = { through = ["e", 0], angle_deg = 150, title_en = "of the piston", title_uk = "поршня" }
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = "r"
-rpm = 240
-direction = "ccw"
-mass = 5
-inertia = 0.02
-points = { S1 = 0.3 }
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = "l"
-mass = 4
-inertia = 0.03
-points = { S2 = 0.35 }
-[[link]]
-name = "B"
-number = 3
-joints = ["B"]
-slides_on = "piston"
-mass = 6
-[branch]
-B = 1
-[positions]
-count = 12
-start = "min"
-accel = [3, 8]
-force_phi_deg = 60
-working_stroke = "to_max"
-[loads]
-g = 9.81
-[[force]]
-point = "B"
-magnitude = 3500
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0], [0.06, 0.1], [0.10, 0.4], [0.12, 1], [0.13, 1]]
-'''
 
 LEADER_AT = 1.2    # mm: a leader starting this near a label's box is its leader
 SAME = 1.0         # mm: a drawn point this near another is drawn on it
