@@ -1063,3 +1063,150 @@ delta = 0.04
 efficiency = 0.85
 synchronous_rpm = 1500
 """
+
+
+COMPRESSOR42 = '''# Lead's check, stop 42: a compressor crank-slider on a guide inclined at 30°, offset +20 mm, ccw.
+title = "Кривошипно-повзунний механізм компресора з похилою напрямною"
+title_en = "Compressor crank-slider on an inclined guide"
+designation = "ТММ.КП.42.000"
+
+[sheet]
+student = "Перевірка"
+teacher = "Викладач"
+group = "МБ-42"
+organisation = "НУБіП України"
+
+[params]
+r = 0.07
+l = 0.26
+e = 0.02
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+g = { through = [0, "e"], angle_deg = 30, title_uk = "поршня", title_en = "of the piston" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 180
+direction = "ccw"
+points = { S1 = 0.25 }
+mass = 4.0
+inertia = 0.006
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+points = { S2 = 0.35 }
+mass = 3.0
+inertia = 0.02
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 6.0
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3, 9]
+force_phi_deg = 130
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 3500
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.05], [0.06, 0.3], [0.1, 1], [0.14, 1]]
+
+[dynamics]
+delta = 0.04
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
+
+# Review 9's crank-rocker (rev9:out/m2.toml): its ε3 misses 5 % at the positions whatever the lab draws
+ROCKER9 = '''# Review 9: a crank-rocker four-bar whose rocker carries a resistance moment (a loom's batten shaft).
+title = "Шарнірний чотириланковий механізм з моментом опору на коромислі (рецензія 9)"
+title_en = "Crank-rocker four-bar with a resistance moment on the rocker (review 9)"
+designation = "TMM.RV9.02.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer 9"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.27, -0.05]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.075
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 1.8
+inertia = 0.0015
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.29
+points = { S2 = 0.5 }
+mass = 3.4
+inertia = 0.025
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.19
+points = { S3 = 0.45 }
+mass = 2.8
+inertia = 0.012
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3, 9]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 3
+magnitude = 95
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.3], [15, 1], [40, 1]]
+
+[dynamics]
+delta = 0.06
+efficiency = 0.92
+synchronous_rpm = 1000
+'''

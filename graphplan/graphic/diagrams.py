@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.util.words import fixed, num
+from graphplan.util.words import fixed, num, uk_count
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
 from graphplan.graphic import qualitative
@@ -137,6 +137,7 @@ class Diagrams:
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
+    _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -191,6 +192,18 @@ class Diagrams:
         return {key: judged_pct(vals[key][k], self.truth[key][k], self.maxima[key[0]])
                 for key in ("s", "v_at", "a_at")}
 
+    def worst_pct(self, reading: Reading | None = None) -> float:
+        """The largest |δ|, % of s, v, a read at the positions (``position_errors``): what the lab's
+        5 % judges."""
+        errs = self.position_errors(reading)
+        return max((float(np.max(np.abs(e))) for e in errs.values() if e.size), default=0.0)
+
+    def alternatives(self) -> list[Trial]:
+        """The lab's other constructions of these diagrams, each tried once (``try_alternatives``)."""
+        if self._trials is None:
+            self._trials = try_alternatives(self)
+        return self._trials
+
 
 def judged_pct(value: np.ndarray, truth: np.ndarray, big: float) -> np.ndarray:
     """δ, % as the lab's 5 % judges a diagram's reading: 100·(graphical − analytic)/analytic where
@@ -200,6 +213,154 @@ def judged_pct(value: np.ndarray, truth: np.ndarray, big: float) -> np.ndarray:
     big = max(float(big), 1e-300)
     meaningful = np.abs(truth) >= MEANINGFUL * big
     return 100.0 * (value - truth) / np.where(meaningful, np.where(truth == 0, 1.0, truth), big)
+
+
+@dataclass(frozen=True)
+class Trial:
+    """Another construction of the same diagrams the lab allows (same L, H1, H2, μs and ruler): which
+    (``key``: "adaptive" — smaller intervals where the curve bends, "double" — twice the divisions,
+    "correct" — the area correction, "tangents" or "chords" — the other method), its divisions, the
+    option that draws it, and the largest |δ| at the first drawing's positions drawn with the ruler
+    (``worst_pct``) and exactly (``exact_pct``: the method's own error)."""
+    key: str
+    divisions: int
+    option: str
+    worst_pct: float
+    exact_pct: float
+
+    def to_json(self) -> dict[str, Any]:
+        return {"construction": self.key, "divisions": self.divisions, "option": self.option,
+                "worst_pct": self.worst_pct, "exact_pct": self.exact_pct}
+
+
+def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> tuple[float, float]:
+    """The construction over the division ordinates ``turns`` (containing the drawing's positions),
+    read at the positions: the largest |δ| (judged_pct) at the drafting precision and exactly."""
+    x = d.L * turns / 360.0
+    s_mm = d.sign * exact_motion(d.study, d.output, turns)[0] / d.mu_s
+    k = d.at_positions
+    idx = np.searchsorted(np.round(turns, 9), np.round(d.turn[k], 9))
+    out = []
+    for precision in (d.precision, 0.0):
+        if method == "tangents":
+            r = construct_tangents(x, s_mm, d.L, d.H1, d.H2, precision,
+                                   d.angle_error_deg if precision and d.method == "tangents" else
+                                   (ANGLE_ERROR_DEG if precision else 0.0), SEED)
+        else:
+            r = construct(x, s_mm, d.L, d.H1, d.H2, precision, correct)
+        worst = 0.0
+        for key, got, mu in (("s", r.s, d.mu_s), ("v_at", r.v_at, d.mu_v), ("a_at", r.a_at, d.mu_a)):
+            pct = judged_pct(d.sign * got[idx] * mu, d.truth[key][k], d.maxima[key[0]])
+            worst = max(worst, float(np.max(np.abs(pct))))
+        out.append(worst)
+    return out[0], out[1]
+
+
+def try_alternatives(d: Diagrams) -> list[Trial]:
+    """What a student would try where the values read at the positions miss the lab's 5 %, each
+    drawn on the exact s at the same scales and read with the same ruler (a few ms, no sheet):
+    smaller intervals where the curve bends (``refine``), twice the divisions (the positions kept
+    as every other ordinate), the area correction, the other method. Judged as the lab judges
+    (the largest |δ| at the positions), so that a hint names only what does better."""
+    if not d.at_positions:
+        return []
+    trials: list[Trial] = []
+    n = d.divisions
+    uniform = d.method == "chords" and not d.adaptive
+    if uniform:
+        fine = refine(d.study, d.output, d.turn, d.sign, d.mu_s, d.L, d.H1, d.H2, d.tolerance, d.precision)
+        if len(fine) != len(d.turn):
+            trials.append(Trial("adaptive", len(fine) - 1, "--adaptive", *_trial_worst(d, fine, "chords", d.correct)))
+        else:       # no interval where halving pays (the ruler's error would grow more than the chords' falls)
+            trials.append(Trial("adaptive none", n, "", d.worst_pct(), d.worst_pct(d.exact)))
+    if 2 * n <= MAX_DIVISIONS:
+        double = np.sort(np.concatenate((d.turn, midpoints(d.turn))))
+        trials.append(Trial("double", 2 * n, f"--divisions {2 * n}" if uniform or d.method == "tangents" else "",
+                            *_trial_worst(d, double, d.method, d.correct)))
+    if d.method == "chords":
+        if not d.correct:
+            trials.append(Trial("correct", n, "--correct", *_trial_worst(d, d.turn, "chords", True)))
+        trials.append(Trial("tangents", n, "--method tangents", *_trial_worst(d, d.turn, "tangents", False)))
+    else:
+        trials.append(Trial("chords", n, "--method chords", *_trial_worst(d, d.turn, "chords", False)))
+    return trials
+
+
+TRIAL_WORDS = {"adaptive": ("smaller intervals where the curve bends, {n} divisions", "менші інтервали там, де крива "
+                            "згинається, {n} {many}"),
+               "adaptive none": ("the adaptive mode, which finds no interval worth halving",
+                                 "адаптивний поділ, що не знаходить інтервалу, який варто поділити"),
+               "double": ("{n} divisions", "{n} {many}"),
+               "correct": ("the area correction", "корекція площ"),
+               "tangents": ("the method of tangents", "метод дотичних"),
+               "chords": ("the method of chords", "метод хорд")}
+
+
+def trial_words(t: Trial, lang: str) -> str:
+    """A trial named as the notes name it (with its divisions)."""
+    en, uk = TRIAL_WORDS[t.key]
+    return (uk if lang == "uk" else en).format(n=t.divisions, many=uk_count(t.divisions, "поділка", "поділки", "поділок"))
+
+
+def advice(d: Diagrams, lang: str) -> str:
+    """What to do where the values at the positions miss the lab's 5 %, from the trials
+    (``alternatives``), not from a rule: the constructions that read within 5 % (with their
+    options), else those that do better, else that none does and why (the chords' own error
+    against the ruler's amplified by the smaller intervals). Empty where all are within 5 %."""
+    w0 = d.worst_pct()
+    if w0 <= LAB_LIMIT:
+        return ""
+    uk = lang == "uk"
+    trials = d.alternatives()
+    f = (lambda v: fixed(v, "uk", 1)) if uk else (lambda v: f"{v:.1f}")   # noqa: E731
+    named = lambda t: trial_words(t, lang) + (f" ({t.option})" if t.option else "")  # noqa: E731
+    within = [t for t in trials if t.worst_pct <= LAB_LIMIT]
+    if within:
+        best = sorted(within, key=lambda t: t.worst_pct)
+        items = "; ".join(f"{named(t)}: {f(t.worst_pct)} %" for t in best)
+        return (f"у межах 5 % у положеннях: {items}" if uk else f"within 5 % at the positions: {items}")
+    better = sorted((t for t in trials if t.worst_pct < w0 - 0.05 and t.key != "adaptive none"), key=lambda t: t.worst_pct)
+    tried = "; ".join(trial_words(t, lang) + ("" if t.key == "adaptive none" else f" {f(t.worst_pct)} %")
+                      for t in trials)
+    if better:
+        items = "; ".join(f"{named(t)}: {f(t.worst_pct)} %" for t in better)
+        rest = "; ".join(trial_words(t, lang) + ("" if t.key == "adaptive none" else f" {f(t.worst_pct)} %")
+                         for t in trials if t not in better)
+        return (f"найбільша |δ| у положеннях, {f(w0)} %, менша з: {items}" + (f"; не менша з: {rest}" if rest else "")
+                + "; жодна з цих побудов не дає 5 %" if uk else
+                f"the largest |δ| at the positions, {f(w0)} %, is smaller with {items}"
+                + (f"; not with {rest}" if rest else "") + "; none of these reaches 5 %")
+    why = why_not(d, lang)
+    searched = d.redrawn is not None and d.redrawn.off_after is not None
+    return (f"жодна з випробуваних побудов не зменшує найбільшу |δ| у положеннях, {f(w0)} % ({tried}){why}; "
+            + ("ні жодна з побудов, які аркуш випробував у межах свого місця (H1, H2 15–50 мм, корекція площ, менші "
+               "інтервали, вища діаграма s): жодна побудова лабораторної, що вміщується, не дає тут 5 %" if searched else
+               "залишаються інші полюсні відстані (--h1, --h2) і вища діаграма s (--height)") if uk else
+            f"none of the constructions tried lowers the largest |δ| at the positions, {f(w0)} % ({tried}){why}; "
+            + ("nor does any the sheet tried in its room (H1, H2 15–50 mm, the area correction, smaller intervals, a "
+               "taller s): no lab construction that fits reaches 5 % here" if searched else
+               "other pole distances (--h1, --h2) and a taller s (--height) are left to try"))
+
+
+def why_not(d: Diagrams, lang: str) -> str:
+    """Why more divisions do not help, measured: the method's own error (the exact drawing's
+    largest |δ| at the positions) at these divisions and at twice as many, against the drawing with
+    the ruler at twice as many — the chords miss a peak that is sharp for the step, and halving the
+    step amplifies the ruler's half division more than it removes that. Empty where not so."""
+    dbl = next((t for t in d.alternatives() if t.key == "double"), None)
+    w0 = d.worst_pct()
+    if dbl is None or not (dbl.exact_pct < dbl.worst_pct and dbl.worst_pct > w0):
+        return ""
+    uk = lang == "uk"
+    f = (lambda v: fixed(v, "uk", 1)) if uk else (lambda v: f"{v:.1f}")   # noqa: E731
+    own, n, p = d.worst_pct(d.exact), d.divisions, num(d.precision, lang)
+    step = num(360.0 / n, lang, 3)
+    return (f": власна похибка методу при {n} {uk_count(n, 'поділці', 'поділках', 'поділках')} — {f(own)} % (пік "
+            f"гострий для кроку {step}°), при {dbl.divisions} — {f(dbl.exact_pct)} %, але похибка лінійки {p} мм, "
+            f"підсилена меншим кроком, дає {f(dbl.worst_pct)} %" if uk else
+            f": the method's own error is {f(own)} % at {n} divisions (the peak is sharp for the {step}° step) "
+            f"and {f(dbl.exact_pct)} % at {dbl.divisions}, but the ruler's {p} mm amplified by the smaller step "
+            f"gives {f(dbl.worst_pct)} %")
 
 
 def drawing_sign(out: Output, s_cycle: np.ndarray) -> int:
@@ -487,9 +648,19 @@ def _tangent_error(d: Diagrams, sym: str, err: np.ndarray, bad: np.ndarray) -> d
     return {"kind": "tangent_error", "diagram": sym, "ordinates": [int(k) for k in bad],
             "max_pct_of_max": float(np.max(np.abs(err))),
             "message": f"exact tangents to the drawn curve miss {sym} by more than {LAB_LIMIT:g} % of |{sym}|max "
-                       f"at {bad.size} of {d.divisions} ordinates: {en}; take more divisions",
+                       f"at {bad.size} of {d.divisions} ordinates: {en}" + _within_tail(d, "en"),
             "message_uk": f"точні дотичні до накресленої кривої дають {sym} з похибкою понад {LAB_LIMIT:g} % від "
-                          f"|{sym}|max на {bad.size} з {d.divisions} ординат: {uk}; візьміть більше поділок"}
+                          f"|{sym}|max на {bad.size} з {d.divisions} ординат: {uk}" + _within_tail(d, "uk")}
+
+
+def _within_tail(d: Diagrams, lang: str) -> str:
+    """A method's error past 5 % between the positions, where the values at the positions are within
+    the lab's 5 % (what the lab judges): said so; else nothing (the ``advice`` warning says what helps)."""
+    w0 = d.worst_pct()
+    if w0 > LAB_LIMIT or not d.at_positions:
+        return ""
+    return (f"; значення в положеннях — у межах 5 % (найбільша |δ| {fixed(w0, 'uk', 1)} %)" if lang == "uk" else
+            f"; the values at the positions are within 5 % (largest |δ| {w0:.1f} %)")
 
 
 def diagnose(d: Diagrams) -> list[dict[str, Any]]:
@@ -511,11 +682,9 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
             out.append({"kind": "chord_error", "diagram": sym, "intervals": [int(k) for k in bad],
                         "max_pct_of_max": float(np.max(np.abs(err))),
                         "message": f"chord error of {sym} exceeds {LAB_LIMIT:g} % of |{sym}|max in {bad.size} "
-                                   f"of {n} intervals: {en}; take smaller intervals there (--adaptive) or "
-                                   "more divisions",
+                                   f"of {n} intervals: {en}" + _within_tail(d, "en"),
                         "message_uk": f"похибка хорд для {sym} перевищує {num(LAB_LIMIT, 'uk')} % від |{sym}|_max у "
-                                      f"{bad.size} з {n} інтервалів: {uk}; там треба менші інтервали "
-                                      "(--adaptive) або більше поділок"})
+                                      f"{bad.size} з {n} інтервалів: {uk}" + _within_tail(d, "uk")})
     for key, sym in (("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
         pct = d.errors_pct(key)[:-1]
         judged = np.abs(d.truth[key][:-1]) >= MEANINGFUL * d.maxima[key[0]]
@@ -530,6 +699,10 @@ def diagnose(d: Diagrams) -> list[dict[str, Any]]:
                                       f"лабораторної роботи в " + ", ".join(
                                           f"{k} ({fixed(pct[k], 'uk', 1, plus=True)} %)" for k in bad[:8])
                                       + (" …" if bad.size > 8 else "")})
+    if d.worst_pct() > LAB_LIMIT:
+        trials = d.alternatives()
+        out.append({"kind": "advice", "worst_pct": d.worst_pct(), "tried": [t.to_json() for t in trials],
+                    "message": advice(d, "en"), "message_uk": advice(d, "uk")})
     ruler = ruler_effect(d)
     if ruler is not None:
         s0, v1, v2 = d.symbols

@@ -223,6 +223,7 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
             continue
         # the cause: the method's own error if the exact drawing is wrong too, else the drafting's
         own = of_ordinates(turn, d.x_mid, getattr(d.exact, key), d.L, truth, window, visible).wrong
+        diagram = key
         entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method,
                                  "cause": "method" if own else "drafting"}
         parts = {"en": [], "uk": []}
@@ -250,15 +251,26 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
                 parts[lang].append(f"{words}: {where}")
         how = {"chords": ("by chords", "методом хорд"), "tangents": ("by tangents", "методом дотичних")}[d.method]
         entry["note"], entry["note_uk"] = _short(entry, sym)
+        rd = getattr(d, "redrawn", None)
+        if rd is not None and diagram in rd.wrong_after:    # graphic.redraw searched: say so, suggest nothing untried
+            longer = "L" in rd.searched
+            tail_en = (f"; none of the {rd.tried} redrawings tried (the area correction, H1, H2 15–50 mm, "
+                       f"{'a longer L, ' if longer else ''}smaller intervals, a taller s diagram) within the sheet's "
+                       "room made it right")
+            tail_uk = (f"; жодна з {rd.tried} випробуваних побудов (корекція площ, H1, H2 15–50 мм, "
+                       f"{'довша L, ' if longer else ''}менші інтервали, вища діаграма s) у межах місця на аркуші не "
+                       "зробила її правильною")
+        elif own:
+            tail_en, tail_uk = "; take more divisions (smaller intervals there)", "; візьміть більше поділок (менші інтервали там)"
+        else:
+            tail_en = ("; the exact drawing is right: the drafting error does it — take a larger L or H or a finer "
+                       "ruler, not more divisions")
+            tail_uk = ("; точна побудова правильна: це похибка креслення — візьміть більші L чи H або точнішу "
+                       "лінійку, а не більше поділок")
         entry["message"] = (f"the {sym} diagram ({how[0]}, {d.divisions} divisions) is qualitatively wrong — "
-                            + "; ".join(parts["en"]) + ("; take more divisions (smaller intervals there)" if own else
-                                                        "; the exact drawing is right: the drafting error does it — "
-                                                        "take a larger L or H or a finer ruler, not more divisions"))
+                            + "; ".join(parts["en"]) + tail_en)
         entry["message_uk"] = (f"діаграма {sym} ({how[1]}, {d.divisions} {uk_count(d.divisions, 'поділка', 'поділки', 'поділок')}) якісно хибна — "
-                               + "; ".join(parts["uk"]) + ("; візьміть більше поділок (менші інтервали там)" if own else
-                                                           "; точна побудова правильна: це похибка креслення — "
-                                                           "візьміть більші L чи H або точнішу лінійку, а не більше "
-                                                           "поділок"))
+                               + "; ".join(parts["uk"]) + tail_uk)
         out.append(entry)
     return out
 

@@ -33,6 +33,8 @@ TALLER = (1.25,)    # the s diagram tried this many times taller (the sheet's ro
 LOWER = (0.8, 0.64, 0.5, 0.4)   # … and this many times lower, where a right drawing's larger poles outgrow the room
 WORTHWHILE = 0.8    # a redrawing that reaches no 5 % is taken where it cuts the largest |δ| at least to this share
 FINER = 0.25                # mm: the adaptive mode's tolerance tried after its default (0.5 mm)
+READABLE = 0.4      # the lab's rule of thumb: the largest ordinate of a diagram ≈ 40–80 % of its zone's height;
+                    # a redrawing draws the v and a peaks at least this share of it (or as high as first drawn)
 
 
 @dataclass(frozen=True)
@@ -48,6 +50,7 @@ class Redrawing:
     first: dict[str, Any] = field(default_factory=dict)   # the first drawing's values of the changed keys
     off_before: float | None = None   # the largest |δ|, % at the positions: the first drawing's
     off_after: float | None = None    # … and the chosen one's (None: not measured)
+    searched: frozenset[str] = frozenset()   # the options the candidates varied (a longer "L" only where room was)
 
     @property
     def right(self) -> bool:
@@ -144,6 +147,25 @@ class Probe:
             pct = judged_pct(self.sign * got[:-1][at] * mu, truth[:-1], big)
             worst = max(worst, float(np.max(np.abs(pct))))
         return worst
+
+    def peaks(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
+              tolerance: float = 0.5, height: float | None = None) -> tuple[float, float, float]:
+        """The drawing's largest ordinates, mm: |v| and |a| read at the middles, and the s diagram's
+        height (its range)."""
+        _, _, _, _, _, v, a, _, s_r = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+        return float(np.max(np.abs(v))), float(np.max(np.abs(a))), float(np.ptp(s_r))
+
+
+def readable(peaks: tuple[float, float, float], first: tuple[float, float, float], zone: float,
+             precision: float = 0.5) -> bool:
+    """Whether a redrawing's v and a diagrams are as readable as the lab asks: each one's largest
+    ordinate at least ``READABLE`` of the ``zone`` height (the s diagram's allowance on the sheet:
+    the lab draws the three diagrams in bands of one height), or — where the first drawing's was
+    lower (its poles at the lab's 50 mm, a low s) — no lower than the first drawing's, to the ruler's
+    ``precision``. A drawing the lab sends back as flat is not a redrawing: the crank-slider of
+    review 42 went from H2 32 to 20 mm for 4.9 % at the positions and drew its a diagram 28.5 mm high
+    in an 80-mm band."""
+    return all(got >= min(READABLE * zone, was) - precision - 1e-9 for got, was in zip(peaks[:2], first[:2]))
 
 
 POLE_MENU = tuple(float(h) for h in range(15, 51, 5))   # mm: the pole distances a redrawing takes (the lab's 15–50)
@@ -278,18 +300,21 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
     off0 = probe.off(**base)
     if not wrong and off0 <= LAB_LIMIT:
         return dict(options), Redrawing(off_before=off0, off_after=off0)
+    first_peaks = probe.peaks(**base)
+    zone = float(base["height"]) if base["height"] is not None else first_peaks[2]
     seen = {tuple(sorted(base.items()))}
     right: list[tuple[float, int, dict[str, Any]]] = [] if wrong else [(off0, 0, {})]
 
     def done(change: dict[str, Any], off: float) -> tuple[dict[str, Any], Redrawing]:
         return ({**options, **change},
-                Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off))
+                Redrawing(dict(change), wrong, (), len(seen) - 1, {k: base[k] for k in change}, off0, off, searched))
 
     # the whole menu over the taller s only where the first drawing is wrong: a right one redrawn
     # for its errors alone stays about its size (a press's H1 50 mm grew its diagrams into the room
     # of its velocity plans)
     cands = (list(candidates(L, H1, H2, wrong, poles, longest, fixed, base["height"], tallest))
              + list(taller(base["height"], H1, H2, fixed if wrong and menu else frozenset({"H1", "H2"}), poles)))
+    searched = frozenset(key for change in cands for key in change)
     passed: list[tuple[int, dict[str, Any], float]] = []      # right, or not judged: worse than a right one
     for order, change in enumerate(cands, 1):
         trial = {**base, **change}
@@ -301,6 +326,9 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
         if off > LAB_LIMIT and right and off >= min(r[0] for r in right):
             passed.append((order, change, off))
             continue                  # no better than one already right: not judged further (below if none fits)
+        if not readable(probe.peaks(**trial), first_peaks, zone, precision):
+            passed.append((order, change, off))
+            continue                  # flat: judged below only where no readable drawing is right
         if probe.wrong(**trial, all_of=False):
             continue
         change = {k: v for k, v in change.items() if trial[k] != base[k]}
@@ -314,19 +342,20 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             break
         if fits is None or fits({**options, **change}, bool(wrong)):
             return done(change, off)
-    if wrong and fits is not None:    # every right one too large for the room: those passed over, judged
+    if wrong:    # every readable right one too large for the room: those passed over (or flat), judged
         for order, change, off in sorted(passed, key=lambda r: (r[2], r[0])):   # now (a generated six-bar's
             trial = {**base, **change}                                        # a stayed "wrong" though
             if probe.wrong(**trial, all_of=False):                            # H1 30 / H2 15 draws it right)
                 continue
             change = {k: v for k, v in change.items() if trial[k] != base[k]}
             right.append((off, order, change))
-            if fits({**options, **change}, True):
+            if fits is None or fits({**options, **change}, True):
                 return done(change, off)
+    if wrong and fits is not None:
         found = lower(probe, base, right, fits, options)
         if found is not None:
             seen.add(tuple(sorted({**base, **found[0]}.items())))
             return done(*found)
     if not wrong:
-        return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0)
-    return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1, {}, off0, off0)
+        return dict(options), Redrawing({}, (), (), len(seen) - 1, {}, off0, off0, searched)
+    return dict(options), Redrawing({}, wrong, wrong, len(seen) - 1, {}, off0, off0, searched)

@@ -128,24 +128,58 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
     uk = lang == "uk"
     where = "; ".join(parts)
     ref = (f" (табл. {table})" if uk else f" (Table {table})") if table else ""
+    p = num(d.precision, lang)
+    n = d.divisions
     if chords:
-        p = num(d.precision, lang)
-        why = (f"власна похибка хорд при {d.divisions} поділках; менші інтервали там підсилюють похибку лінійки "
-               f"{p} мм більше, ніж зменшують її" if uk else
-               f"the chords' own error at {d.divisions} divisions; smaller intervals there amplify the ruler's "
-               f"{p} mm more than they remove it")
+        own = fixed(d.worst_pct(d.exact), lang, 1)
+        bend = ((f": згин, крутий для кроку {num(360.0 / n, lang, 3)}°" if uk else
+                 f": a bend sharp for the {num(360.0 / n, lang, 3)}° step") if not d.adaptive else "")
+        why = (f"власна похибка хорд при {n} поділках ({own} % з точною лінійкою{bend})" if uk else
+               f"the chords' own error at {n} divisions ({own} % with an exact ruler{bend})")
     else:
-        why = (f"похибка відліку {num(d.precision, lang)} мм, підсилена двома диференціюваннями" if uk else
-               f"the ruler's {num(d.precision, lang)} mm amplified by the two differentiations")
-    searched = d.redrawn is not None and d.redrawn.off_after is not None
-    s0 = f"{d.symbols[0]}_{{{d.sub}}}"
-    if uk:
-        return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}"
-                + ("; жодна побудова, яку дозволяє лабораторна (H_{1}, H_{2} 15–50 мм, корекція площ, менші "
-                   f"інтервали, вища діаграма {s0}), не дає 5 %" if searched else ""))
-    return (f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}"
-            + ("; no drawing the lab allows (H_{1}, H_{2} 15–50 mm, the area correction, smaller intervals, "
-               f"a taller {s0}) reaches 5 %" if searched else ""))
+        why = (f"похибка відліку {p} мм, підсилена двома диференціюваннями" if uk else
+               f"the ruler's {p} mm amplified by the two differentiations")
+    return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}" if uk else
+            f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}") + _tried(d, lang)
+
+
+SHORT = {"adaptive": ("smaller intervals", "менші інтервали"), "double": ("{n} divisions", "{n} {many}"),
+         "correct": ("the correction", "корекція площ"), "tangents": ("tangents", "дотичні"), "chords": ("chords", "хорди")}
+
+
+def _short(t, uk: bool) -> str:
+    """A trial (graphic.diagrams.Trial) named as short as a note names it."""
+    from graphplan.util.words import uk_count
+    return SHORT[t.key][1 if uk else 0].format(n=t.divisions, many=uk_count(t.divisions, "поділка", "поділки", "поділок"))
+
+
+def _tried(d: Diagrams, lang: str) -> str:
+    """What else was tried, measured and short (a note costs the sheet's room): each of
+    graphic.diagrams.alternatives with its largest |δ| at the positions — more divisions marked
+    where the ruler's half division, amplified by the smaller step, is why they read worse — and
+    graphic.redraw's search where the sheet redrew; then whether any reaches 5 % (one that does is
+    named: the sheet draws at its positions' divisions)."""
+    from graphplan.graphic.diagrams import LAB_LIMIT
+    uk = lang == "uk"
+    trials = [t for t in d.alternatives() if t.key != "adaptive none"]
+    items = []
+    for t in trials:
+        item = f"{_short(t, uk)} {fixed(t.worst_pct, lang, 1)} %"
+        if t.key == "double" and t.exact_pct < t.worst_pct and t.worst_pct > d.worst_pct():
+            item += " (похибка лінійки)" if uk else " (the ruler's error)"
+        items.append(item)
+    if d.redrawn is not None and d.redrawn.off_after is not None:
+        items.append(f"H_{{1}}, H_{{2}} 15–50 мм, вища {d.symbols[0]}_{{{d.sub}}}" if uk else
+                     f"H_{{1}}, H_{{2}} 15–50 mm, a taller {d.symbols[0]}_{{{d.sub}}}")
+    if not items:
+        return ""
+    within = [t for t in trials if t.worst_pct <= LAB_LIMIT]
+    if within:
+        names = ", ".join(_short(t, uk) for t in within)
+        verdict = f"у межах 5 %: {names}" if uk else f"within 5 %: {names}"
+    else:
+        verdict = "жодна не дає 5 %" if uk else "none reaches 5 %"
+    return (f"; випробувано: {', '.join(items)} — {verdict}" if uk else f"; tried: {', '.join(items)} — {verdict}")
 
 
 def redrawn_note(d: Diagrams, lang: str) -> str | None:
@@ -160,10 +194,13 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
     mm = unit("mm", lang)
     if rd.wrong_before and not rd.right:
         syms = ", ".join(d.symbols[1 if key == "v" else 2] for key in rd.wrong_before)
-        return (f"{syms}: жодна побудова заново, яку дозволяє лабораторна (корекція площ, H_{{1}}, H_{{2}} від 15 до "
-                f"50 {mm}, довша L, менші інтервали), тут не робить діаграму якісно правильною" if uk else
-                f"{syms}: no redrawing the lab allows (the area correction, H_{{1}}, H_{{2}} from 15 to 50 {mm}, a "
-                "longer L, smaller intervals) makes the diagram qualitatively right here")
+        longer = "L" in rd.searched
+        return (f"{syms}: жодна з {rd.tried} побудов заново, які дозволяє лабораторна і вміщує аркуш (корекція площ, "
+                f"H_{{1}}, H_{{2}} від 15 до 50 {mm}, {'довша L, ' if longer else ''}менші інтервали, вища діаграма "
+                f"{d.symbols[0]}_{{{d.sub}}}), не робить діаграму якісно правильною" if uk else
+                f"{syms}: none of the {rd.tried} redrawings the lab allows and the sheet holds (the area correction, "
+                f"H_{{1}}, H_{{2}} from 15 to 50 {mm}, {'a longer L, ' if longer else ''}smaller intervals, a taller "
+                f"{d.symbols[0]}_{{{d.sub}}}) makes the diagram qualitatively right")
     parts = []
     for key, value in rd.changed.items():
         was = rd.first.get(key)
