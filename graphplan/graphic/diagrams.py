@@ -333,8 +333,8 @@ def advice(d: Diagrams, lang: str) -> str:
     why = why_not(d, lang)
     searched = d.redrawn is not None and d.redrawn.off_after is not None
     return (f"жодна з випробуваних побудов не зменшує найбільшу |δ| у положеннях, {f(w0)} % ({tried}){why}; "
-            + ("ні жодна з побудов, які аркуш випробував у межах свого місця (H1, H2 15–50 мм, корекція площ, менші "
-               "інтервали, вища діаграма s): жодна побудова лабораторної, що вміщується, не дає тут 5 %" if searched else
+            + ("і жодна з побудов, які аркуш випробував у межах свого місця (H1, H2 15–50 мм, корекція площ, менші "
+               "інтервали, вища діаграма s), теж не дає 5 %" if searched else
                "залишаються інші полюсні відстані (--h1, --h2) і вища діаграма s (--height)") if uk else
             f"none of the constructions tried lowers the largest |δ| at the positions, {f(w0)} % ({tried}){why}; "
             + ("nor does any the sheet tried in its room (H1, H2 15–50 mm, the area correction, smaller intervals, a "
@@ -355,10 +355,10 @@ def why_not(d: Diagrams, lang: str) -> str:
     f = (lambda v: fixed(v, "uk", 1)) if uk else (lambda v: f"{v:.1f}")   # noqa: E731
     own, n, p = d.worst_pct(d.exact), d.divisions, num(d.precision, lang)
     step = num(360.0 / n, lang, 3)
-    return (f": власна похибка методу при {n} {uk_count(n, 'поділці', 'поділках', 'поділках')} — {f(own)} % (пік "
-            f"гострий для кроку {step}°), при {dbl.divisions} — {f(dbl.exact_pct)} %, але похибка лінійки {p} мм, "
+    return (f": власна похибка методу при {n} {uk_count(n, 'поділці', 'поділках', 'поділках')} — {f(own)} % (згин, "
+            f"крутий для кроку {step}°), при {dbl.divisions} — {f(dbl.exact_pct)} %, але похибка лінійки {p} мм, "
             f"підсилена меншим кроком, дає {f(dbl.worst_pct)} %" if uk else
-            f": the method's own error is {f(own)} % at {n} divisions (the peak is sharp for the {step}° step) "
+            f": the method's own error is {f(own)} % at {n} divisions (a bend sharp for the {step}° step) "
             f"and {f(dbl.exact_pct)} % at {dbl.divisions}, but the ruler's {p} mm amplified by the smaller step "
             f"gives {f(dbl.worst_pct)} %")
 
