@@ -33,8 +33,10 @@ TALLER = (1.25,)    # the s diagram tried this many times taller (the sheet's ro
 LOWER = (0.8, 0.64, 0.5, 0.4)   # … and this many times lower, where a right drawing's larger poles outgrow the room
 WORTHWHILE = 0.8    # a redrawing that reaches no 5 % is taken where it cuts the largest |δ| at least to this share
 FINER = 0.25                # mm: the adaptive mode's tolerance tried after its default (0.5 mm)
-READABLE = 0.4      # the lab's rule of thumb: the largest ordinate of a diagram ≈ 40–80 % of its zone's height;
-                    # a redrawing draws the v and a peaks at least this share of it (or as high as first drawn)
+LAB_ALLOWANCE = 0.05    # the lab's allowed |δ| at the positions
+# A redrawing draws the v and a peaks at least READABLE_MM high (or as high as first drawn): there the ruler's
+# 0.5 mm is 2.5 % of the peak, half the lab's 5 %, and a diagram of both signs spans 40 mm, the seeds' 40–80 mm.
+READABLE_MM = 0.5 / (LAB_ALLOWANCE / 2)
 
 
 @dataclass(frozen=True)
@@ -159,13 +161,14 @@ class Probe:
 def readable(peaks: tuple[float, float, float], first: tuple[float, float, float], zone: float,
              precision: float = 0.5) -> bool:
     """Whether a redrawing's v and a diagrams are as readable as the lab asks: each one's largest
-    ordinate at least ``READABLE`` of the ``zone`` height (the s diagram's allowance on the sheet:
-    the lab draws the three diagrams in bands of one height), or — where the first drawing's was
+    ordinate at least ``READABLE_MM`` (20 mm: the ruler's 0.5 mm then costs 2.5 % of the peak, half
+    the lab's 5 %; ``zone``, the s diagram's allowance on the sheet, caps it where the band is lower
+    than 40 mm), or — where the first drawing's was
     lower (its poles at the lab's 50 mm, a low s) — no lower than the first drawing's, to the ruler's
     ``precision``. A drawing the lab sends back as flat is not a redrawing: the crank-slider of
     review 42 went from H2 32 to 20 mm for 4.9 % at the positions and drew its a diagram 28.5 mm high
     in an 80-mm band."""
-    return all(got >= min(READABLE * zone, was) - precision - 1e-9 for got, was in zip(peaks[:2], first[:2]))
+    return all(got >= min(READABLE_MM, zone / 2, was) - precision - 1e-9 for got, was in zip(peaks[:2], first[:2]))
 
 
 POLE_MENU = tuple(float(h) for h in range(15, 51, 5))   # mm: the pole distances a redrawing takes (the lab's 15–50)
