@@ -42,16 +42,18 @@ def test_slotter_keeps_its_position_plan_at_1_to_2_5_with_full_diagrams():
 
 
 def test_a_fitted_grid_rows_as_tall_as_their_tallest():
-    """A grid of fitted rows: the columns as wide as the widest cell, each row as tall as its
-    tallest cell, the spare height shared evenly; an equal grid as before."""
+    """A grid fitted: each column as wide as its widest cell, each row as tall as its tallest cell,
+    the spare width and height shared evenly; an equal grid as before."""
     from graphplan.drawing.layout import Grid, Leaf, arrange, extent
     leaves = [Leaf(str(i), w, h) for i, (w, h) in enumerate([(10, 40), (20, 10), (5, 10), (8, 30), (12, 5)])]
     g = Grid(leaves, 2, gap=1.0, fitted=True)
-    assert extent(g) == (41.0, 40 + 30 + 5 + 2)
+    assert extent(g) == (12 + 20 + 1.0, 40 + 30 + 5 + 2)      # columns: max(10, 5, 12), max(20, 8)
     assert extent(Grid(leaves, 2, gap=1.0)) == (41.0, 3 * 40 + 2)
-    boxes = dict((leaf.name, b) for leaf, b in arrange(g, (0.0, 0.0, 41.0, 80.0)))   # 3 mm spare: 1 a row
-    assert boxes["0"] == (0.0, 39.0, 20.0, 80.0) and boxes["1"][0] == 21.0
-    assert boxes["2"] == pytest.approx((0.0, 7.0, 20.0, 38.0)) and boxes["4"] == pytest.approx((0.0, 0.0, 20.0, 6.0))
+    boxes = dict((leaf.name, b) for leaf, b in arrange(g, (0.0, 0.0, 41.0, 80.0)))   # 8 mm, 3 mm spare
+    assert boxes["0"] == (0.0, 39.0, 16.0, 80.0) and boxes["1"][0] == 17.0 and boxes["1"][2] == 41.0
+    assert boxes["2"] == pytest.approx((0.0, 7.0, 16.0, 38.0)) and boxes["4"] == pytest.approx((0.0, 0.0, 16.0, 6.0))
+    equal = dict((leaf.name, b) for leaf, b in arrange(Grid(leaves, 2, gap=1.0), (0.0, 0.0, 41.0, 122.0)))
+    assert equal["1"][0] == 21.0 and equal["3"][2] == 41.0
 
 
 @pytest.mark.slow

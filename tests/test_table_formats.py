@@ -96,7 +96,7 @@ def test_acceleration_tables_one_count_of_decimals(case):
         for j in (1, 2, 3):                                   # mm, graphical, analytic
             counts = {_decimals(r[j]) for r in body} - {None}
             assert len(counts) == 1, (j, [r[j] for r in body])
-        # to the ruler's 0.5 mm — but the crank pin's π a, the scale's own vector a_A / μa (not a reading)
+        # to the ruler's 0.5 mm — but the crank pin's π a, the scale's own vector a_A / μa, laid to 0.1 mm
         pin = st.mech.crank.pin
         mm = [float(r[1].replace(",", ".")) for r in body if NUMBER.match(r[1]) and r[0] != f"a_{{{pin}}}"]
         assert all(abs(2 * v - round(2 * v)) < 1e-9 for v in mm)
@@ -106,6 +106,45 @@ def test_acceleration_tables_one_count_of_decimals(case):
             for x in re.findall(r"\(([\d.,]+) (?:mm|мм)\)", line[0]):   # a footnote's drawn length
                 v = float(x.replace(",", "."))
                 assert abs(2 * v - round(2 * v)) < 1e-9, line
+
+
+def test_acceleration_tables_read_mm_times_mu(case):
+    """A teacher checks each row of an acceleration table: the drawn mm × μa is the printed graphical
+    value, to its printed decimals — the crank pin's π a too (printed 99,5 mm beside 24,871 m/s² at
+    μa 0,25, drawn at the computed 99,48 mm, where 99,5 × 0,25 = 24,875)."""
+    st, plans, doc, lang = case
+    for q, pos in zip(plans.positions, doc["positions"]):
+        if q.acceleration is None:
+            continue
+        body = [r for r in _grid(acceleration_table(pos, 2, lang, PRECISION))[1:] if not r[0].startswith("ε")]
+        rows = [r for r in body if NUMBER.match(r[1]) and NUMBER.match(r[2]) and r[1] != "0"]
+        assert any(r[0] == f"a_{{{st.mech.crank.pin}}}" for r in rows)
+        for r in rows:
+            mm, shown = (float(c.rstrip("*").replace(",", ".").replace("−", "-")) for c in r[1:3])
+            d = _decimals(r[2].rstrip("*"))
+            assert abs(mm * pos["mu_a"] - shown) <= 0.5 * 10 ** -d + 1e-9, (r, pos["mu_a"])
+
+
+def test_the_crank_rows_mm_times_mu_at_a_series_scale():
+    """The four-bar at μa 0,25: a_A / μa = 15,79 mm, not a length the ruler lays; the crank's vector
+    is laid to 0.1 mm (as seed 000 lays π a = 113,6 mm) and read so: 15,8 mm × 0,25 = 3,950, printed
+    beside the analytic 3,948 (it printed 15,8 mm beside 3,948). Precision 0 keeps it exact."""
+    from conftest import example
+    st = example("four_bar")
+    pin = f"a_{{{st.mech.crank.pin}}}"
+    for precision in (PRECISION, 0.0):
+        plans = build_plans(st, mu_a=0.25, precision=precision)
+        for q, pos in zip(plans.positions, plans_json(plans)["positions"]):
+            if q.acceleration is None:
+                continue
+            row = next(r for r in _grid(acceleration_table(pos, 2, "uk", precision))[1:] if r[0] == pin)
+            mm, shown, exact = (float(c.replace(",", ".")) for c in row[1:4])
+            e = q.acceleration.entries[st.mech.crank.pin]
+            if precision:
+                assert abs(10 * mm - round(10 * mm)) < 1e-9 and abs(mm * 0.25 - shown) <= 0.0005 + 1e-9, row
+                assert abs(e.mm - e.analytic / 0.25) <= 0.05 + 1e-9
+            else:
+                assert e.value == pytest.approx(e.analytic, rel=1e-9) and shown == exact
 
 
 def test_dimensions_table_names_the_drawings_letters(case):

@@ -66,10 +66,11 @@ class Stack:
 @dataclass
 class Grid:
     """Equal cells, ``cols`` to a row, filled row by row (cell i holds child i): the velocity plans
-    0, 1, 2 … read like a text. A cell is as large as the largest child — or, ``fitted``, as wide
-    as the widest (the columns line up) and as tall as the tallest child of its row (a slotter's
-    twelve velocity plans 36–162 mm tall: three rows of the tallest took 43 mm more than the sheet
-    had beside its position plan at 1:2.5)."""
+    0, 1, 2 … read like a text. A cell is as large as the largest child — or, ``fitted``, each
+    column as wide as its widest child (the columns line up) and each row as tall as its tallest
+    (a slotter's twelve velocity plans 36–162 mm tall: three rows of the tallest took 43 mm more
+    than the sheet had beside its position plan at 1:2.5; the coulisse's plans 9 and 10, 2.7 times
+    as wide as the others, made every column theirs)."""
     children: list
     cols: int
     gap: float = GAP
@@ -86,6 +87,14 @@ class Grid:
         hs = [extent(c)[1] for c in self.children]
         k = max(self.cols, 1)
         return [max(hs[j:j + k]) for j in range(0, len(hs), k)]
+
+    def widths(self) -> list[float]:
+        """Each column's width: the cell's, or (``fitted``) its widest child's."""
+        k = max(self.cols, 1)
+        if not self.fitted:
+            return [self.cell()[0]] * k
+        ws = [extent(c)[0] for c in self.children]
+        return [max(ws[j::k], default=0.0) for j in range(k)]
 
     def cell(self) -> tuple[float, float]:
         """The cell's size: the largest child's width and height."""
@@ -109,8 +118,8 @@ def extent(node: Node) -> tuple[float, float]:
         if not node.children:
             return 0.0, 0.0
         if isinstance(node, Grid):
-            cw, _ = node.cell()
-            return cw * node.cols + node.gap * (node.cols - 1), sum(node.heights()) + node.gap * (node.rows - 1)
+            width = sum(node.widths()) if node.fitted else node.cell()[0] * node.cols
+            return width + node.gap * (node.cols - 1), sum(node.heights()) + node.gap * (node.rows - 1)
     children = node.children
     if not children:
         return 0.0, 0.0
@@ -171,14 +180,20 @@ def arrange(node: Node, box: Box) -> Iterator[tuple[Leaf, Box]]:
             yield from arrange(c, (x0, y1 - at - hgt, x1, y1 - at))
         return
     cols, rows = node.cols, node.rows
-    cw = (x1 - x0 - node.gap * (cols - 1)) / cols
+    if node.fitted:                 # each column its own width, the spare width shared evenly
+        ws = node.widths()
+        wider = max(0.0, x1 - x0 - node.gap * (cols - 1) - sum(ws)) / cols
+        ws = [w + wider for w in ws]
+        lefts = [x0 + sum(ws[:k]) + k * node.gap for k in range(cols)]
+    else:
+        cw = (x1 - x0 - node.gap * (cols - 1)) / cols
+        ws, lefts = [cw] * cols, [x0 + k * (cw + node.gap) for k in range(cols)]
     hs = node.heights()
     extra = max(0.0, y1 - y0 - node.gap * (rows - 1) - sum(hs)) / rows     # the spare height shared evenly
     tops = [y1 - sum(hs[:r]) - r * (extra + node.gap) for r in range(rows)]
     for i, c in enumerate(node.children):
         r, k = divmod(i, cols)
-        cx0 = x0 + k * (cw + node.gap)
-        yield from arrange(c, (cx0, tops[r] - hs[r] - extra, cx0 + cw, tops[r]))
+        yield from arrange(c, (lefts[k], tops[r] - hs[r] - extra, lefts[k] + ws[k], tops[r]))
 
 
 def centred(rec: Record, box: Box) -> Record:

@@ -103,6 +103,8 @@ class Solved:
 
 # -- 2, 3. velocity and acceleration plans --------------------------------------------------------
 
+CRANK_STEP = 0.1    # mm: the crank's own vector laid to a tenth of a millimetre (``Plan.scaled``)
+
 class Exact:
     """The analytic solution at one crank angle — used only for the comparison."""
 
@@ -170,23 +172,37 @@ class Plan:
         """A computed magnitude laid off with the ruler along ``direction`` (a plan vector, mm)."""
         return lay_off(abs(value) / self.mu, self.precision) * unit(direction)
 
+    @property
+    def crank_step(self) -> float:
+        """The step the crank's own vector is laid and written to: a tenth of a millimetre (seed 000
+        lays π a = a_A / μa = 113,6 mm), or the ruler's division where that is finer (0 = exact)."""
+        return min(self.precision, CRANK_STEP) if self.precision > 0 else 0.0
+
     def scaled(self, value: float, direction: complex) -> complex:
-        """The crank's own vector, drawn as the scale defines it: p_v a = v_A / μ_v (π a = a_A / μ_a)
-        exactly — the length the scale was chosen by, so the crank pin reads v_A = ω1·l_OA back
-        (p_v a = 30 mm at μ_v = 0.0355 laid with the ruler drew 30.0 mm and read v_A 1.065 where
-        ω1·l_OA = 1.068). A vector shorter than the ruler's division is not drawn so: laid off with the
+        """The crank's own vector, p_v a = v_A / μ_v (π a = a_A / μ_a), laid off to ``crank_step``
+        as the lab lays a computed length — read back (``entries``) it is what the tables print, mm ×
+        μ = value: Table 2 printed π a 99,5 mm beside a_A 24,871 m/s² at μa 0,25 (99,5 × 0,25 =
+        24,875; drawn at the computed 99,48 mm, its value ω1²·l, not the drawing's). Laid with the
+        ruler's 0.5 mm it would read v_A 1,06 where ω1·l = 1,07 (review 8: the coulisse's p_v a 42,7
+        mm at μ_v 0,025 laid 42,5). A vector shorter than the ruler's division is laid with the
         ruler as any other (0 mm — the scale draws no plan; a Scotch yoke a hair off its guide at
         μ_v = 0.5 would draw p_v a = 0.125 mm)."""
         length = abs(value) / self.mu
         if self.precision > 0 and length < self.precision:
             return self.laid(value, direction)
-        return length * unit(direction)
+        return lay_off(length, self.crank_step) * unit(direction)
 
     # what is measured --------------------------------------------------------------------------------
-    def entry(self, key: str, kind: str, vec_mm: complex, exact: complex, laid: bool = False) -> None:
-        """A segment of the plan: read off (or, for a laid-off component, its laid length)."""
-        mm, value = (abs(vec_mm), abs(vec_mm) * self.mu) if laid else self.read(vec_mm)
-        if laid and math.isclose(value, abs(exact), rel_tol=1e-9):
+    def entry(self, key: str, kind: str, vec_mm: complex, exact: complex, laid: bool = False,
+              step: float | None = None) -> None:
+        """A segment of the plan: read off (or, for a laid-off component, its laid length; ``step``:
+        read to that step, the crank pin's vector laid to it — ``scaled``)."""
+        if step is not None and abs(vec_mm) >= self.precision:
+            mm = measure(abs(vec_mm), step)
+            value = mm * self.mu
+        else:
+            mm, value = (abs(vec_mm), abs(vec_mm) * self.mu) if laid else self.read(vec_mm)
+        if (laid or step is not None) and math.isclose(value, abs(exact), rel_tol=1e-9):
             value = abs(exact)          # laid off as computed: its round-off is no error (not "−0,00 %")
         self.entries[key] = Entry(key, kind, mm, value, abs(exact), vec_mm * self.mu, exact, abs(exact))
 
@@ -309,7 +325,7 @@ class Plan:
         return x
 
     def is_crank_pin(self, name: str) -> bool:
-        """Whether ``name`` is the crank's pin, whose plan vector the scale defines."""
+        """Whether ``name`` is the crank's pin, whose plan vector the scale is chosen by."""
         cr = self.sc.mech.crank
         return name == cr.pin and self.sc.body_of(name) == cr.link
 
@@ -324,8 +340,9 @@ class Plan:
             if sc.fixed(name):
                 continue
             p = self.plan_point(sc.body_of(name), name)
-            # the crank pin's vector is the scale's own (``scaled``): its value is ω1·l (ω1²·l), not a reading
-            self.entry(name, "point", p, self.exact.point(name)[self.index], laid=self.is_crank_pin(name))
+            # the crank pin's vector, laid to ``crank_step`` (``scaled``), read to it: mm × μ = value
+            self.entry(name, "point", p, self.exact.point(name)[self.index],
+                       step=self.crank_step if self.is_crank_pin(name) else None)
             self.name_point(sub(name), p)
         for (point, body), name in sc.coincident.items():
             if body in self.images:

@@ -27,7 +27,7 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        room_fits, set_of_sheets, set_rows, size_of, tree)
+                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
 
@@ -397,22 +397,29 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     tables = [Leaf(name, record=rec) for name, rec in d["tables"]]
     pages: list[list[Placed]]
     if p.sheets == 1:
-        C, groups, width = column_leaf(f, tables, p.parts, lambda w: note_block(d["notes"], w).bounds()[3]
-                                       - note_block(d["notes"], w).bounds()[1], p.counts)
+        def high(w: float) -> float:
+            b = note_block(d["notes"], w).bounds()
+            return b[3] - b[1]
+        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts)
+        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts)
+        if p.shape == "split":
+            groups, width = groups_, TITLE
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
-                      Grid(A, p.acols, fitted=True) if A else None, C)
-        items, col_box = [], None
+                      Grid(A, p.acols, fitted=True) if A else None, C, (T, N))
+        items, tab_box, notes_at = [], None, None
         for leaf, b in arrange(layout, region):
-            if leaf is C:
-                col_box = b
-            elif leaf.record is not None:
+            if leaf is C or leaf is T:          # the tables at its top right
+                tab_box = b
+            if leaf is C or leaf is N:          # the notes over the title block at its right
+                notes_at = b[2]
+            if leaf.record is not None:
                 items.append(Placed(leaf.name, centred(leaf.record, b), b))
         notes_rec = note_block(d["notes"], width)
         nb = notes_rec.bounds()
         foot = keep_out(f)[3]
-        notes_box = (col_box[2] - width, foot, col_box[2], foot + nb[3] - nb[1])
+        notes_box = (notes_at - width, foot, notes_at, foot + nb[3] - nb[1])
         items.append(Placed("notes", top_left(notes_rec, notes_box), notes_box))
-        items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+        items += set_columns(groups, tab_box[2] - column_size(groups)[0], tab_box[3])
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)

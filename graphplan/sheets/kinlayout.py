@@ -84,7 +84,7 @@ def diagrams_size(dr: Drafter, nat: Natural, k: float | tuple[float, float]) -> 
     return nat.diagrams[k]
 
 
-def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
+def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_column: tuple | None = None):
     """The sheet's composition (C: the tables' column with the notes over the title block, in the
     bottom-right corner): "bands" — position plan and diagrams across the top, under them the
     velocity plans, the acceleration plans and the column; "column" — the column the sheet's full
@@ -94,9 +94,16 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
     the position plan over the diagrams, beside them the velocity plans over the acceleration plans,
     then the column; "stacked-bands" — the position plan over the diagrams, beside them the velocity
     plans over the acceleration plans and the column (a long or tall position plan: it and the
-    diagrams need not share a row's width)."""
+    diagrams need not share a row's width); "split" — the column split (``split_column``: the tables,
+    the notes over the title block's room): the position plan, the diagrams and the tables across
+    the top, under them the velocity plans, the acceleration plans and the notes over the title
+    block (the coulisse's tables, 258 mm high in two columns 361 mm wide, left a full-height column
+    150 mm empty under them while its velocity plans were drawn at p_v a 26.7 mm)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
+    if shape == "split":
+        T, N = split_column
+        return Stack([Row([P, D, T], flush=True), Row(vg + ag + [N], flush=True)], flush=True)
     if shape == "bands":
         return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
     if shape == "column":
@@ -110,7 +117,7 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C):
     return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
 
 
-SHAPES = ("bands", "column", "accel", "sides", "stacked", "stacked-bands")
+SHAPES = ("bands", "column", "accel", "sides", "stacked", "stacked-bands", "split")
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -169,6 +176,16 @@ def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: t
     return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
 
 
+def split_leaves(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
+                 ) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
+    """The column split in two (``tree``'s "split"): the tables in ``parts`` columns, and the notes
+    at the title block's width over the title block's room; and the tables' groups."""
+    from graphplan.sheets.compose import keep_out
+    groups = split(tables, parts, counts=counts)
+    foot = keep_out(f)[3] - field_of(f)[1]
+    return Leaf("tables", *column_size(groups)), Leaf("notes", TITLE, notes_height(TITLE) + GAP + foot), groups
+
+
 def _grids(n: int) -> list[int]:
     """Column counts of a grid of n cells, one for each row count: the fewest columns that give it
     (the narrowest grid of r rows has ⌈n/r⌉ columns — 12 plans in two rows are 6 a row, not 11)."""
@@ -208,21 +225,34 @@ GAIN = 2.0        # … and the position plan is drawn at least this many times 
 def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
     """Where the sheet's main drawing, the position plan, is drawn with its crank under ``CRANK_MM``
     (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
-    height kept), the longest whose composition draws the position plan at least ``GAIN`` times as
-    large and every other plan at least ``KEPT`` as large — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
+    height kept): of those whose composition draws the position plan at least ``GAIN`` times as
+    large and every other plan at least ``KEPT`` as large (or legible and no smaller against its
+    target than the position plan), the one drawing the position plan largest, then the longest
+    (the first whose crank reaches ``CRANK_MM``) — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
     letters 14–27 mm off their points) in the 77 mm the full-length diagrams left it; L × 0.7
     gives it 1:4 (p_v a 26.7 → 25.0 mm, π a 61.5 → 60.0 mm). None where no shorter length does."""
     if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
         return None
     was = sizes_of(nat, p.mu, p.diagrams)[:len(FAMILIES)]
+    best: tuple[float, Plan] | None = None
     for k in SHORTER:
         got = one_sheet_at(dr, nat, f, (k, 1.0))
         if got is None:
             continue
         now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
-        if now[0] >= GAIN * was[0] - 1e-9 and all(a >= KEPT * b - 1e-9 for a, b in zip(now[1:], was[1:])):
-            return got[1]
-    return None
+        main = nat.families["position"].rel(got[1].mu["position"])
+
+        def kept(fam: str, a: float, b: float) -> bool:
+            """A plan keeps ``KEPT`` of its size, or yields room to the main drawing while it still
+            reads and is drawn, against its target, no smaller than the position plan now is (the
+            coulisse's acceleration plans π a 82 → 55 mm for its position plan 1:10 → 1:4)."""
+            return a >= KEPT * b - 1e-9 or (legible(nat, got[1].mu) and a / nat.families[fam].target >= main - 1e-9)
+        if now[0] >= GAIN * was[0] - 1e-9 and all(kept(fam, a, b) for fam, a, b in zip(FAMILIES[1:], now[1:], was[1:])):
+            if best is None or now[0] > best[0] + 1e-9:
+                best = (now[0], got[1])
+            if now[0] >= CRANK_MM - 1e-9:
+                break
+    return best[1] if best else None
 
 
 def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False
@@ -255,6 +285,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     for factor in (TABLES, 1.0):
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
+        halves = [split_leaves(f, tabs, parts, nat.notes_height)[:2] for parts in (1, 2, 3)][:max(1, len(tabs))]
 
         def arranged(mu, shape, best_fill=False, D=D):
             P = nat.leaf("position", mu["position"])
@@ -266,7 +297,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
                     for parts, C in enumerate(cols, 1):
-                        tw, th = extent(tree(shape, P, D, vg, ag, C))
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, halves[parts - 1]))
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             if not best_fill:
                                 return (0.0, vc, ac, parts)
