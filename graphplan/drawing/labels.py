@@ -885,11 +885,6 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     if _SKETCH[-1] or not alternatives:
         return record
     ob = obstacles(record.items)
-    def own(box) -> bool:
-        if loose:      # nearer its own line than any other by a margin, whatever the font's side bearings
-            d = box_to_segment(box, a0, b0)
-            return all(box_to_segment(box, *o) > d + 1.0 for o in near)
-        return owns_line(box, mine, near)
     near = [o for o in others if min(abs(o[0] - mine[0]), abs(o[0] - mine[1]), abs(o[1] - mine[0]),
                                      abs(o[1] - mine[1])) < 200.0]
     for req in alternatives:
