@@ -1031,9 +1031,10 @@ class Leads:
         return None
 
 
-def leads(ob: Obstacles, req: LabelRequest, ink: Box) -> Leads:
-    """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it)."""
-    boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
+def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR) -> Leads:
+    """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it),
+    on the ``rings`` (``FAR``, or its nearer ones)."""
+    boxes, starts = _candidates(req, ink, rings, FAR_DIRECTIONS)
     a, b = _led_all(req.at, boxes)
     base = _counts(ob, boxes, number=_number(req)) == 0
     if ob.boxes:
@@ -1196,7 +1197,8 @@ def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex]
     best = None
     for i, z in enumerate(anchors if longest > 0 else ()):
         sub = ob.near(z, min(FAR[-1], longest) + reach)
-        cand = leads(sub, replace(req, at=z, across=False), ink)
+        # (a ring g out gives leaders at least g − 2 mm long: the farther rings are not asked)
+        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0))
         length = np.abs(cand.b - cand.a)
         ok = cand.base & (length <= longest)
         idx = np.nonzero(ok)[0]
