@@ -28,7 +28,7 @@ def press_turn():
 
 def _lever_strays(rec, lang: str) -> list:
     """The lever's force letters that do not read as their own arrow's: another arrow nearer the
-    letter's box — unless the letter stands on a leader from its own arrow's end, ≥ 1.5 mm clear of
+    letter's box — unless the letter stands on a leader from its own arrow (its end or its shaft), ≥ 1.5 mm clear of
     every other arrow (the lever's vectors carry "G2: h = … mm"; the name is before the colon)."""
     from graphplan.drawing.labels import box_to_segment
     from graphplan.util.words import force_symbol
@@ -45,9 +45,10 @@ def _lever_strays(rec, lang: str) -> list:
         gaps = sorted((box_to_segment(box, a, b), n) for n, (a, b) in arrows.items())
         if gaps[0][1] == name:
             continue
-        ends = arrows[name]
+        a, b = arrows[name]
         led = any(min(box_to_segment(box, z, z) for z in ld) < 1.5
-                  and min(abs(z - e) for z in ld for e in ends) < 2.0 for ld in leaders)
+                  and min(box_to_segment((z.real, z.imag, z.real, z.imag), a, b) for z in ld) < 2.0
+                  for ld in leaders)
         if not (led and all(g >= 1.5 for g, n in gaps if n != name)):
             out.append((q.text, gaps[:2]))
     return out

@@ -7,9 +7,10 @@ direction first, the first spot that overlaps neither another label nor a drawn 
 from __future__ import annotations
 
 import cmath
+from dataclasses import dataclass
 import math
 
-from graphplan.drawing.labels import place_labels
+from graphplan.drawing.labels import place_along, place_labels
 from graphplan.model.linkshape import extra_points, rigid_outline
 from graphplan.drawing.tables import table
 from graphplan.graphic.record import LabelRequest, Record, arc_head, line_pitch, text_width
@@ -1074,12 +1075,82 @@ COLLINEAR_MM = 3.0    # … and this near one line read as one line: lettered on
 
 # -- the lever ---------------------------------------------------------------------------------
 
+@dataclass
+class _Name:
+    """A name of the lever to set by its own line (``mine``), not read as any of ``others``."""
+    req: LabelRequest
+    mine: tuple[complex, complex]
+    others: list[tuple[complex, complex]]
+    fractions: tuple[float, ...]
+    accept: object = None
+    owned: tuple | None = None       # a force's arrow and its shaft's anchors, for the last resort
+
+
+def _name_all(rec: Record, jobs: list[_Name], arrows: list[tuple[complex, complex]]) -> None:
+    """The lever's names set by their own lines (labels.place_along) in rounds, each round for the
+    names the rounds before did not set: beside its line, owning it; beside it, merely nearer it
+    than any other line (where the plan crowds); on a leader to a glance (15 mm) across nothing; on
+    one to 25 mm; on one across thin lines only; last as any label (``_apart``) — so that a name that fits beside its line is not
+    driven off by one that would need a leader anyway. No name nearer another than its height."""
+    from graphplan.drawing.labels import APART
+    gap = LETTER - APART + 0.9    # box to box (review 3: names 1.5 mm apart at a, s2, b)
+    rounds = ({"longest": 0.0}, {"longest": 0.0, "loose": True}, {}, {"loose": True}, {"longest": FAR_ALONG_MM},
+              {"longest": FAR_ALONG_MM, "loose": True}, {"loose": True, "thin": True},
+              {"longest": FAR_ALONG_MM, "loose": True, "thin": True}, {"longest": 40.0, "loose": True, "thin": True})
+    left = list(jobs)
+    for kw in rounds:
+        # a force's name only where it owns its arrow (review 5: "Φ3" by P_B's shaft read as P_B's)
+        left = [j for j in left if (j.owned and kw.get("loose"))
+                or not place_along(rec, j.req, j.mine, j.others, j.fractions, apart=gap, accept=j.accept, **kw)]
+    if not left:
+        return
+    # the rest as any label, each fenced off by the names set (``_apart``'s rings)
+    for p in [q for q in rec.items if q.kind == "text" and q.layer == "labels"]:
+        x0, y0, x1, y1 = p.bounds()
+        g = LETTER
+        rec.add("polyline", [(x0 - g, y0 - g), (x1 + g, y0 - g), (x1 + g, y1 + g), (x0 - g, y1 + g), (x0 - g, y0 - g)],
+                role="label", layer="construction", step=_FENCE)
+    _apart(rec, [j.req for j in left], {i: j.owned for i, j in enumerate(left) if j.owned}, arrows)
+    rec.items[:] = [p for p in rec.items if p.step != _FENCE]
+
+
+FAR_ALONG_MM = 25.0
+ONE_RAY_SIN = 0.1     # two arms within ~6° of one ray from the pole read as one line (a name between them is either's)
+
+
+def _one_ray(f: complex, g: complex) -> bool:
+    """Whether two arms' feet lie on one ray from the pole."""
+    return dot(g, f) > 0 and abs((f.conjugate() * g).imag) <= ONE_RAY_SIN * abs(f) * abs(g)
+
+
+def _over(a: complex, b: complex):
+    """Whether a name's box stands over the stretch a–b of a line it shares with other arms: its
+    middle's projection inside it, 1 mm in from either end."""
+    d = b - a
+    def accept(box) -> bool:
+        t = dot(complex(0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])) - a, d) / abs(d)
+        return 1.0 <= t <= abs(d) - 1.0
+    return accept
+
+
+def _arm_pieces(feet: list[complex]) -> dict[complex, tuple[complex, complex]]:
+    """Each arm's own piece (mm): from the pole to its foot, or, where arms run on one ray from the
+    pole (the weights' arms of a lever all horizontal), from the next foot nearer the pole — the
+    stretch of that line a name reads as this arm's."""
+    out = {}
+    for f in feet:
+        inner = [g for g in feet if 0.3 < abs(f) - abs(g) and _one_ray(f, g)]
+        out[f] = (max(inner, key=abs) if inner else 0j, f)
+    return out
+
+
 ARM_LETTER_MM = 5.0   # a lever arm's letter anchored this far from its foot, back toward the pole
 
 
 def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     """The Zhukovsky lever: the velocity plan turned 90° counter-clockwise, each force at its point's
     image, the arms from the pole, the balancing force P_b at the crank pin's image."""
+    from dataclasses import replace
     lv = fp.lever
     rec = Record(word("lever", lang), scales={"mu_v": lv.mu_v})
     step = "ΣM_p = 0 (Zhukovsky lever)"
@@ -1156,32 +1227,54 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     # have no velocity, and the couples' forces at o2 act there
     still = sorted(indexed(name.lower()) for name, z in turned.items() if abs(z) <= 0.1)
     lab.place(0j, ", ".join(["p_v"] + still), 3.5, -1 + 1j, step)
-    placed = set()
+    _apart(rec, lab.asked)
+    # the names asked for — each image's letter, each force's, each arm's — each with its own
+    # line, the others it must not read as, and where along its line it is anchored
+    jobs: list[_Name] = []
+    seen: set[tuple[float, float]] = set()
     for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
+        # each image lettered beside it, nearer it than any other image (the six-bar's "b" stood
+        # on a leader across three arrows)
         key = (round(z.real, 1), round(z.imag, 1))
-        if abs(z) > 0.1 and key not in placed:
-            placed.add(key)
-            lab.place(z, indexed(name.lower()), 3.5, _unit(z), step)
-    owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
+        if abs(z) <= 0.1 or key in seen:
+            continue
+        seen.add(key)
+        req = LabelRequest(z, indexed(name.lower()), _unit(z), 3.5, step=step)
+        jobs.append(_Name(req, (z, z), [(w, w) for w in turned.values() if abs(w - z) > 0.05], (0.0,)))
+    arrows = list(span.values())
     for tip, name, u in labels:
-        if name in span:       # a force's letter read as its own arrow's (the press's lever set "G2"
-            a_, b_ = span[name]    # on Φ2's head and "Φ2" by G2's shaft: the two read swapped)
-            mid = 0.5 * (a_ + b_)
-            owned[len(lab.asked)] = ((a_, b_), [LabelRequest(mid, force_symbol(name, lang), side, LETTER, step=step)
-                                                for side in (1j * _unit(b_ - a_), -1j * _unit(b_ - a_))])
-        lab.place(tip, force_symbol(name, lang), LETTER, u, step)
+        # a force's name by its own arrow (the press's lever set "G2" on Φ2's head and "Φ2" by
+        # G2's shaft: the two read swapped): beside its head or its shaft, either side, else on
+        # a short leader from it across nothing (review: leaders to 51 mm across six lines)
+        a_, b_ = span[name]
+        mine = (a_, b_) if abs(b_ - tip) < abs(a_ - tip) else (b_, a_)     # … from its image to its free end
+        fractions = (0.55, 0.75, 0.35, 1.0) if name == "P_b" else (1.0, 0.75, 0.5, 0.25)
+        req = LabelRequest(tip, force_symbol(name, lang), u, LETTER, step=step)
+        side = 1j * _unit(b_ - a_)
+        jobs.append(_Name(req, mine, [ab for ab in arrows if ab != span[name]], fractions,
+                          owned=((a_, b_), [replace(req, at=0.5 * (a_ + b_), toward=t) for t in (side, -side)])))
     middle = sum(turned.values()) / max(len(turned), 1)
+    arms = _arm_pieces(list(arm_feet))
     for foot, names in arm_feet.items():
-        # each arm lettered across it by its foot, where it is its own (G1's and G2's arms run on
-        # one line from the pole to their feet); two forces on one line: one arm, both names (h_{G3,G4})
-        # on the side toward the plan's middle, not out past its edge (the lever keeps its size)
+        # each arm named by its own segment from the pole, toward its foot (G1's and G2's arms run
+        # on one line from the pole: over its own stretch of it), on the side toward the plan's
+        # middle first; two forces on one line: one arm, both names (h_{G3,G4})
         at = foot - min(ARM_LETTER_MM, 0.5 * abs(foot)) * _unit(foot)
         side = 1j * _unit(foot) if dot(1j * _unit(foot), middle - at) >= 0 else -1j * _unit(foot)
         text = arm_symbol(names[0]) if len(names) == 1 else "h_{" + ",".join(arm_symbol(n)[3:-1] for n in names) + "}"
-        lab.place(at, text, LETTER, side, step)
-    # each label fenced while the rest are placed: near a, s2, b (a plan narrow there) the forces'
-    # names stood within their height
-    _apart(rec, lab.asked, owned, list(span.values()))
+        g, _ = arms[foot]
+        ray = [f for f in arms if f != foot and _one_ray(f, foot)]
+        jobs.append(_Name(LabelRequest(at, text, side, LETTER, step=step), arms[foot],
+                          [s for f, s in arms.items() if f != foot and f not in ray],
+                          (0.8, 0.65, 0.5, 0.9, 0.35), accept=_over(g, foot) if ray else None))
+    # the forces' names first: an arrow has the fewest spots its name reads as its own
+    # the images' letters, then the forces' names one by one, each before the next (review 5: at
+    # the ram), then the arms'
+    _name_all(rec, [j for j in jobs if j.mine[0] == j.mine[1]], arrows)
+    for j in jobs:
+        if j.owned:
+            _name_all(rec, [j], arrows)
+    _name_all(rec, [j for j in jobs if not j.owned and j.mine[0] != j.mine[1]], arrows)
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec

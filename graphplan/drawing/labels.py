@@ -1031,9 +1031,10 @@ class Leads:
         return None
 
 
-def leads(ob: Obstacles, req: LabelRequest, ink: Box) -> Leads:
-    """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it)."""
-    boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
+def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR) -> Leads:
+    """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it),
+    on the ``rings`` (``FAR``, or its nearer ones)."""
+    boxes, starts = _candidates(req, ink, rings, FAR_DIRECTIONS)
     a, b = _led_all(req.at, boxes)
     base = _counts(ob, boxes, number=_number(req)) == 0
     if ob.boxes:
@@ -1134,3 +1135,92 @@ def _break_beside(record: Record, req: LabelRequest, ink: Box, layer: str, besid
         return False
     record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
     return True
+
+
+ALONG_LEADER_MM = 15.0   # a name on a leader from its own line: at most this long (a reader follows it at a glance)
+ALONG_APART = 1.0        # mm more than ``APART`` between two names set along lines (a crowded plan's names
+                         # closer than their height read as one another's)
+
+
+def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex],
+                others: list[tuple[complex, complex]], fractions: tuple[float, ...] = (1.0, 0.75, 0.5, 0.25),
+                beside: float = BESIDE_MM, longest: float = ALONG_LEADER_MM, apart: float = ALONG_APART,
+                layer: str = "labels", accept=None, loose: bool = False, thin: bool = False) -> str:
+    """A name that belongs to a line — a force's arrow, an arm of the Zhukovsky lever (``mine``,
+    a → b) — set where it reads as that line's, not as any of the ``others``' (``owns_line``):
+
+    1. "beside": free, within ``beside`` mm of one of the points of ``mine`` at ``fractions`` of
+       its length (the head first for an arrow), either side — the nearer rings of all the points
+       before the farther ones;
+    2. "leader": on the shortest leader (≤ ``longest`` mm) from one of those points that crosses
+       no drawn line, no label and no other leader, runs along no line, its label owning the line
+       or ``LED_CLEAR`` clear of every other;
+    3. "" — nothing placed (the caller sets it as any label).
+
+    Other names are kept ``APART`` + ``apart`` away; ``accept(box)``, where given, must hold too
+    (a stretch of a line shared with others: the name over its own stretch). ``loose``: a name
+    merely nearer its own line than any other owns it (where lines crowd); ``thin``: the leader
+    may cross thin lines (construction, projections), never a thick one. ``req.at`` is unused (the points along the
+    line are the anchors); ``req.toward`` the side preferred."""
+    from dataclasses import replace
+    if _SKETCH[-1]:
+        return ""
+    a0, b0 = mine
+    ob = obstacles(record.items)
+    if apart:
+        ob.boxes = [(x0 - apart, y0 - apart, x1 + apart, y1 + apart) for x0, y0, x1, y1 in ob.boxes]
+    ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+    reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+    span = abs(b0 - a0)
+    def own(box) -> bool:
+        if loose:      # nearer its own line than any other by a margin, whatever the font's side bearings
+            d = box_to_segment(box, a0, b0)
+            return all(box_to_segment(box, *o) > d + 1.0 for o in near)
+        return owns_line(box, mine, near)
+    near = [o for o in others if min(abs(o[0] - a0), abs(o[1] - b0), abs(o[0] - b0), abs(o[1] - a0))
+            < span + 2 * (FAR[-1] + reach) + abs(o[1] - o[0])]
+    anchors = [a0 + t * (b0 - a0) for t in fractions]
+    gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+    n = 2 * DIRECTIONS
+    found = [_candidates(replace(req, at=z), ink, gaps, n) for z in anchors]
+    local = ob.near(0.5 * (a0 + b0), 0.5 * span + NEAR[-1] + reach)
+    counts = [_counts(local, boxes, number=_number(req)) for boxes, _ in found]
+    for r in range(len(gaps)):
+        for (boxes, starts), c in zip(found, counts):
+            for k in (np.nonzero(c[r * n:(r + 1) * n] == 0)[0] + r * n).tolist():
+                box = tuple(float(v) for v in boxes[k])
+                if (box_to_segment(box, a0, b0) <= beside and own(box)
+                        and (accept is None or accept(box))):
+                    record.label((starts[k].real, starts[k].imag), req.text, size=req.size, anchor="start",
+                                 step=req.step, layer=layer)
+                    return "beside"
+    best = None
+    for i, z in enumerate(anchors if longest > 0 else ()):
+        sub = ob.near(z, min(FAR[-1], longest) + reach)
+        # (a ring g out gives leaders at least g − 2 mm long: the farther rings are not asked)
+        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0))
+        length = np.abs(cand.b - cand.a)
+        ok = cand.base & (length <= longest)
+        idx = np.nonzero(ok)[0]
+        s = sub.segs[sub.half >= THICK_HALF] if thin else sub.segs
+        if len(idx) and len(s):
+            crossing = _crosses_all(cand.a[idx], cand.b[idx], s[:, 0] + 1j * s[:, 1], s[:, 2] + 1j * s[:, 3])
+            idx = idx[~crossing]
+        for k in idx[np.argsort(length[idx], kind="stable")].tolist():
+            if best is not None and length[k] >= best[0] - 1e-9:
+                break
+            box = tuple(float(v) for v in cand.boxes[k])
+            a, b = complex(cand.a[k]), complex(cand.b[k])
+            if cand.along(k) or any(_segments_cross(a, b, *o) for o in near):
+                continue
+            if accept is not None and not accept(box):
+                continue
+            if own(box) or all(box_to_segment(box, *o) >= LED_CLEAR + 0.9 for o in near):
+                best = (float(length[k]), a, b, complex(cand.starts[k]))
+                break
+    if best is None:
+        return ""
+    _, a, b, start = best
+    record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
+    record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step, layer=layer)
+    return "leader"
