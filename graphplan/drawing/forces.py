@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import cmath
 import math
+from dataclasses import dataclass
 
 from graphplan.drawing.labels import place_labels
 from graphplan.model.linkshape import extra_points, rigid_outline
@@ -832,7 +833,10 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
     same = _coinciding(sides)
-    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same]
+    detail = _detail_ring(rec, sides, mu_F, step)
+    # a side wholly within the ring is named in the detail (the crank's G1 and Φ1 by R21's tail)
+    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same
+                and (detail is None or not _within(s, detail.box))]
     anchors = _plan_anchors(lettered)
     # of two sides along one line the shorter letter is set second, on the line's other side
     pairs = {}
@@ -867,6 +871,8 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     # the long letter first, its twin after it on the line's other side
     order = sorted(range(len(asked)), key=lambda k: k in choices)
     _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
+    if detail is not None:
+        _polygon_detail(rec, detail, sides, same, mu_F, lang, step)
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -883,6 +889,137 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         caption += f"; {lost}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
+
+
+DETAIL_SHORT_MM = 5.0    # a force plan's side drawn shorter than this is drawn again in the plan's detail
+DETAIL_LEAST_MM = 6.0    # … where the shortest of them is drawn at least this long (the series' μF)
+DETAIL_MOST_MM = 30.0    # … and the detail's window at most this across
+DETAIL_PAD = 1.5         # mm round the short sides' spot on the plan (the ring's room)
+DETAIL_GAP = 8.0         # mm between the plan and a detail set beside it
+DETAIL_CLEAR = 2.0       # mm a detail set within the plan's room keeps off its letters
+
+
+@dataclass
+class PlanDetail:
+    """Where a force plan's short sides crowd (the crank group's G1 and Φ1 at the tip of a sliver
+    where R21 and R01 nearly cancel): the window (plan mm) and the detail's μF, the series' value
+    that draws the shortest side at least ``DETAIL_LEAST_MM`` long."""
+    box: tuple[float, float, float, float]
+    mu_F: float
+
+
+def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
+    """The detail of a force plan's short sides (those under ``DETAIL_SHORT_MM``, drawn with the
+    sides they meet), GOST 2.305's extension element: the window round them and μF_I — the largest
+    value of the series (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k) at which the shortest is drawn at least
+    ``DETAIL_LEAST_MM`` (μF_I ≤ μF·s_min/10), no finer than draws the window ``DETAIL_MOST_MM``
+    across; None where no side is too short to carry its name (``TINY_MM``: named only under the
+    plan, "G1, Φ1 < 3 mm"), or the detail would not be twice the plan's size."""
+    from graphplan.drawing.charts import _series_below, hodograph_scale
+    short = [s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM]
+    if not any(s.mm < TINY_MM for s in short):      # each side long enough to carry its name: none
+        return None
+    zs = [z for s in short for z in (s.start, s.end)]
+    x0, x1 = min(z.real for z in zs) - DETAIL_PAD, max(z.real for z in zs) + DETAIL_PAD
+    y0, y1 = min(z.imag for z in zs) - DETAIL_PAD, max(z.imag for z in zs) + DETAIL_PAD
+    smallest = min(s.mm for s in short)
+    mu = _series_below(mu_F * smallest / DETAIL_LEAST_MM)
+    mu = max(mu, hodograph_scale(mu_F * max(x1 - x0, y1 - y0), DETAIL_MOST_MM))
+    if mu_F / mu < 2.0 - 1e-9:
+        return None
+    return PlanDetail((x0, y0, x1, y1), mu)
+
+
+def _inside(a: complex, b: complex, box) -> tuple[float, float] | None:
+    """The part of segment ab inside ``box`` as (t0, t1) along it (Liang–Barsky), None outside."""
+    x0, y0, x1, y1 = box
+    t0, t1 = 0.0, 1.0
+    d = b - a
+    for p, q in ((-d.real, a.real - x0), (d.real, x1 - a.real), (-d.imag, a.imag - y0), (d.imag, y1 - a.imag)):
+        if abs(p) < 1e-12:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    return (t0, t1) if t1 - t0 > 1e-9 else None
+
+
+def _within(s, box) -> bool:
+    """Whether a side lies wholly within ``box``."""
+    x0, y0, x1, y1 = box
+    return all(x0 - 1e-9 <= z.real <= x1 + 1e-9 and y0 - 1e-9 <= z.imag <= y1 + 1e-9 for z in (s.start, s.end))
+
+
+def _detail_ring(rec: Record, sides: list, mu_F: float, step: str) -> PlanDetail | None:
+    """The short sides' spot ringed on the plan and marked "I" on a shelf (GOST 2.305, as the
+    hodographs' details) before the plan's letters are set, so that they keep clear of both; the
+    detail (``plan_detail``), or None where none is drawn (no short side, or no room for the mark)."""
+    from graphplan.drawing.charts import _detail_mark
+    d = plan_detail(sides, mu_F)
+    if d is None:
+        return None
+    x0, y0, x1, y1 = d.box
+    c = complex(x0 + x1, y0 + y1) / 2
+    n0 = len(rec.items)
+    rec.circle(_pt(c), abs(complex(x1 - x0, y1 - y0)) / 2, role="construction", layer="construction",
+               step=f"{step}: detail")
+    if not _detail_mark(rec, c, abs(complex(x1 - x0, y1 - y0)) / 2, f"{step}: detail mark", within=False):
+        del rec.items[n0:]
+        return None
+    return d
+
+
+def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
+                    step: str) -> None:
+    """The ringed spot (``_detail_ring``) drawn again beside the plan at the detail's μF, every side
+    through the window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its
+    lengths as the ruler read them, times μF/μF_I), as the hodographs' details."""
+    from graphplan.drawing.charts import DETAIL_NAME
+    from graphplan.graphic.forceplans import Side
+    k = mu_F / d.mu_F
+    x0, y0, x1, y1 = d.box
+    c = complex(x0 + x1, y0 + y1) / 2
+    det = Record(f"{step}: detail")
+    dstep = f"{step}: detail"
+    role = {"known": "absolute", "reaction": "result", "component": "relative"}
+    drawn = []
+    for s in sides:
+        t = _inside(s.start, s.end, d.box)
+        if t is None:
+            continue
+        a, b = s.start + t[0] * (s.end - s.start), s.start + t[1] * (s.end - s.start)
+        A, B = (a - c) * k, (b - c) * k
+        if abs(B - A) < 1.0:
+            continue
+        if t[1] >= 1.0 - 1e-9:          # its head within the window: the arrow
+            det.vector(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+        else:                           # a long side's part: its line, its head out of the window
+            det.segment(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+        drawn.append(Side(s.name, A, B, s.role))
+    if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
+        det.point(_pt(-c * k), layer="vectors", step=dstep)
+    lettered = [s for s in drawn if s.mm >= TINY_MM and s.name not in same]
+    _apart(det, [LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=dstep)
+                 for at, s, side in _plan_anchors(lettered)])
+    b = det.bounds()
+    det.label((b[0], b[3] + 4.0), f"{DETAIL_NAME} (μ_F = {num(d.mu_F, lang)} {unit('N/mm', lang)})",
+              size=2.5, step=dstep)
+    # in a corner of the plan's own room its lines and letters leave free (a sliver's), else beside it
+    from shapely.geometry import box as shapely_box
+    from shapely.ops import unary_union
+
+    from graphplan.drawing.charts import _corner, _ink_of
+    ink = unary_union([_ink_of(rec)] + [shapely_box(*q.ink()).buffer(DETAIL_CLEAR)
+                                        for q in rec.items if q.kind == "text"])
+    rb, (d0, _, _, d3) = rec.bounds(), det.bounds()
+    r = abs(complex(x1 - x0, y1 - y0)) / 2
+    moved = _corner(ink, det, (c, r), rb)
+    rec.extend(moved if moved is not None else det.moved(rb[2] + DETAIL_GAP - d0, rb[3] - d3))
+    rec.scales["mu_F detail"] = d.mu_F
 
 
 def _coinciding(sides: list) -> dict[str, str]:
