@@ -645,12 +645,12 @@ SHELF_LEAD = 4.0       # mm: the mark's leader from the ring to its shelf (GOST 
 SHELF_MM = 4.5         # mm: the shelf the mark's letter stands on
 
 
-def _detail_mark(rec: Record, c: complex, r: float, step: str) -> bool:
+def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = True) -> bool:
     """The ringed spot's mark as GOST 2.305 draws an extension element: a thin leader from the
     ring out to a shelf, the letter "I" standing on the shelf — not a bare stroke by the ring (the
     sieve's "I" read as a dash of the jump line). The first of the four diagonals (up-left first)
     whose leader, shelf and letter keep clear of the hodograph's lines, points and lettering; False
-    (nothing drawn) where none does."""
+    (nothing drawn) where none does; ``within``: only within the record's extent (a hodograph's room)."""
     from shapely.geometry import LineString, box
     prim = Primitive("text", ((0.0, 0.0),), text=DETAIL_NAME, size=3.5)
     i0, j0, i1, j1 = prim.ink()
@@ -669,7 +669,7 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str) -> bool:
         tb = box(x + i0, b.imag + 0.8 + j0, x + i1, b.imag + 0.8 + j1)
         lines = LineString([(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)])
         hit = (lines.intersects(ink) or tb.intersects(ink) or any(tb.intersects(t) or lines.intersects(t) for t in texts)
-               or not field.contains(tb.union(lines)))        # within the hodograph's room, not past it
+               or (within and not field.contains(tb.union(lines))))   # within the hodograph's room, not past it
         if not hit:
             best = (a, b, e, x)
             break

@@ -9,6 +9,7 @@ from __future__ import annotations
 import cmath
 from dataclasses import dataclass
 import math
+from dataclasses import dataclass
 
 from graphplan.drawing.labels import place_along, place_labels
 from graphplan.model.linkshape import extra_points, rigid_outline
@@ -819,7 +820,28 @@ def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, 
 # -- a force polygon ---------------------------------------------------------------------------
 
 def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
-    """The group's force polygon at μF: known forces head to tail, the reactions closing it."""
+    """The group's force polygon at μF: known forces head to tail, the reactions closing it; its
+    sides too short to carry their names drawn again in a detail (``plan_detail``) — in a corner of
+    the plan's room (as wide as the sheet's caption under it) where one is free, else, on the crank
+    group's plan (a sliver where R21 ≈ R01, its G1 and Φ1 at the tip), beside it. Sketched (the
+    composition's first measure) without it: the finished drawing is measured again."""
+    from graphplan.drawing.labels import _SKETCH
+    plain = _polygon(fp, gp, lang, detail=False)
+    if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
+        return plain
+    x0, y0, x1, y1 = plain.bounds()
+    half = max(x1 - x0, text_width(f"{word('force plan of group', lang)} {gp.label}", CAPTION_MM)) / 2
+    room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
+    beside = gp.kind == "crank"
+    out = _polygon(fp, gp, lang, detail=True, beside=beside)
+    a0, b0, a1, b1 = out.bounds()
+    inside = room[0] <= a0 and room[1] <= b0 and a1 <= room[2] and b1 <= room[3]
+    return out if (inside or beside) and "mu_F detail" in out.scales else plain
+
+
+def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
+    """``polygon_record``, with its detail where ``detail`` and the plan's room holds one (or
+    ``beside`` it)."""
     mu_F = _mu_F(fp, gp)
     rec = Record(f"{word('force plan of group', lang)} {gp.label}", scales={"mu_F": mu_F})
     step = f"{gp.label}: ΣF = 0"
@@ -833,7 +855,10 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
     same = _coinciding(sides)
-    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same]
+    detail = _detail_ring(rec, sides, mu_F, step) if detail else None
+    # a side wholly within the ring is named in the detail (the crank's G1 and Φ1 by R21's tail)
+    lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same
+                and (detail is None or not _within(s, detail.box))]
     anchors = _plan_anchors(lettered)
     # of two sides along one line the shorter letter is set second, on the line's other side
     pairs = {}
@@ -868,6 +893,8 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     # the long letter first, its twin after it on the line's other side
     order = sorted(range(len(asked)), key=lambda k: k in choices)
     _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
+    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside):
+        return _polygon(fp, gp, lang, detail=False)      # no room for it: the plan as it was
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -884,6 +911,162 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
         caption += f"; {lost}"
     rec.label((x0, y0 - 6.0), caption, size=3.5, step=step)
     return rec
+
+
+DETAIL_SHORT_MM = 5.0    # a force plan's side drawn shorter than this is drawn again in the plan's detail
+DETAIL_LEAST_MM = (6.0, 5.0, 4.0, 3.0)    # … the shortest of them drawn at least so long, the first with room
+DETAIL_MOST_MM = 30.0    # … and the detail's window at most this across
+DETAIL_PAD = 1.5         # mm round the short sides' spot on the plan (the ring's room)
+DETAIL_CLEAR = 2.0       # mm a detail set within the plan's room keeps off its letters
+DETAIL_GAP = 8.0         # mm between the crank group's plan and its detail set beside it
+CAPTION_MM = 5.0         # the sheet's caption under a plan (sheets.compose.CAPTION)
+
+
+@dataclass
+class PlanDetail:
+    """Where a force plan's short sides crowd (the crank group's G1 and Φ1 at the tip of a sliver
+    where R21 and R01 nearly cancel): the window (plan mm) and the detail's μF values to try, the
+    finest first (``plan_detail``)."""
+    box: tuple[float, float, float, float]
+    choices: tuple[float, ...]
+
+
+def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
+    """The detail of a force plan's short sides (those under ``DETAIL_SHORT_MM``, drawn with the
+    sides they meet), GOST 2.305's extension element: the window round them and the μF_I to try —
+    for each of ``DETAIL_LEAST_MM``'s lengths ℓ the largest value of the series (1, 1.5, 2, 2.5, 4,
+    5, 7.5 × 10^k) at which the shortest side s_min is drawn at least ℓ long (μF_I ≤ μF·s_min/ℓ), no
+    finer than draws the window ``DETAIL_MOST_MM`` across, and at least twice the plan's size (μF_I
+    ≤ μF/2); None where no side is too short to carry its name (``TINY_MM``: named only under the
+    plan, "G1, Φ1 < 3 mm"), or no value is left."""
+    from graphplan.drawing.charts import _series_below, hodograph_scale
+    short = [s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM]
+    if not any(s.mm < TINY_MM for s in short):      # each side long enough to carry its name: none
+        return None
+    zs = [z for s in short for z in (s.start, s.end)]
+    x0, x1 = min(z.real for z in zs) - DETAIL_PAD, max(z.real for z in zs) + DETAIL_PAD
+    y0, y1 = min(z.imag for z in zs) - DETAIL_PAD, max(z.imag for z in zs) + DETAIL_PAD
+    smallest = min(s.mm for s in short)
+    cap = hodograph_scale(mu_F * max(x1 - x0, y1 - y0), DETAIL_MOST_MM)
+    choices = dict.fromkeys(m for m in (max(_series_below(mu_F * smallest / least), cap) for least in DETAIL_LEAST_MM)
+                            if mu_F / m >= 2.0 - 1e-9)
+    return PlanDetail((x0, y0, x1, y1), tuple(choices)) if choices else None
+
+
+def _inside(a: complex, b: complex, box) -> tuple[float, float] | None:
+    """The part of segment ab inside ``box`` as (t0, t1) along it (Liang–Barsky), None outside."""
+    x0, y0, x1, y1 = box
+    t0, t1 = 0.0, 1.0
+    d = b - a
+    for p, q in ((-d.real, a.real - x0), (d.real, x1 - a.real), (-d.imag, a.imag - y0), (d.imag, y1 - a.imag)):
+        if abs(p) < 1e-12:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    return (t0, t1) if t1 - t0 > 1e-9 else None
+
+
+def _within(s, box) -> bool:
+    """Whether a side lies wholly within ``box``."""
+    x0, y0, x1, y1 = box
+    return all(x0 - 1e-9 <= z.real <= x1 + 1e-9 and y0 - 1e-9 <= z.imag <= y1 + 1e-9 for z in (s.start, s.end))
+
+
+def _detail_ring(rec: Record, sides: list, mu_F: float, step: str) -> PlanDetail | None:
+    """The short sides' spot ringed on the plan (GOST 2.305, as the hodographs' details) before the
+    plan's letters are set, so that they keep clear of it; the detail (``plan_detail``), or None."""
+    d = plan_detail(sides, mu_F)
+    if d is None:
+        return None
+    x0, y0, x1, y1 = d.box
+    rec.circle(_pt(complex(x0 + x1, y0 + y1) / 2), abs(complex(x1 - x0, y1 - y0)) / 2, role="construction",
+               layer="construction", step=f"{step}: detail")
+    return d
+
+
+def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
+                    step: str, gp_label: str = "", beside: bool = False) -> bool:
+    """The ringed spot (``_detail_ring``) drawn again at the detail's μF, every side through the
+    window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its lengths as the
+    ruler read them, times μF/μF_I), as the hodographs' details — in a corner of the plan's room
+    free of its lines and letters (the sheet's composition undisturbed), at the finest of the
+    detail's μF that has room there, its ring marked "I" on a shelf; False where none has."""
+    from shapely.geometry import box as shapely_box
+    from shapely.ops import unary_union
+
+    from graphplan.drawing.charts import _corner, _detail_mark, _ink_of
+    x0, y0, x1, y1 = d.box
+    c = complex(x0 + x1, y0 + y1) / 2
+    r = abs(complex(x1 - x0, y1 - y0)) / 2
+    ink = unary_union([_ink_of(rec)] + [shapely_box(*q.ink()).buffer(DETAIL_CLEAR)
+                                        for q in rec.items if q.kind == "text"])
+    rb = rec.bounds()
+    # the plan's room: as wide as the sheet's caption under it ("План сил групи I(0-1)", 5 mm,
+    # centred), which a sliver's cell takes anyway
+    half = max(rb[2] - rb[0], text_width(f"{word('force plan of group', lang)} {gp_label}", CAPTION_MM)) / 2
+    mid = (rb[0] + rb[2]) / 2
+    tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
+    for mu, out in tries:
+        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step)
+        if out:                 # under the plan, at its middle
+            e0, _, e2, e3 = det.bounds()
+            moved = det.moved((rb[0] + rb[2]) / 2 - (e0 + e2) / 2, rb[1] - DETAIL_GAP - e3)
+        else:
+            moved = _corner(ink, det, (c, r), (mid - half, rb[1], mid + half, rb[3]))
+        if moved is None:
+            continue
+        n0 = len(rec.items)
+        rec.extend(moved)
+        # the ring's mark "I" on a shelf, within the plan's extent where it finds room there
+        if not (_detail_mark(rec, c, r, f"{step}: detail mark")
+                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)):
+            del rec.items[n0:]
+            continue
+        rec.scales["mu_F detail"] = mu
+        return True
+    return False
+
+
+def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
+                    step: str) -> Record:
+    """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
+    middle (a side's head out of the window drawn as its line), named; its name over it."""
+    from graphplan.drawing.charts import DETAIL_NAME
+    from graphplan.graphic.forceplans import Side
+    k = mu_F / mu
+    x0, y0, x1, y1 = d.box
+    c = complex(x0 + x1, y0 + y1) / 2
+    dstep = f"{step}: detail"
+    det = Record(dstep)
+    role = {"known": "absolute", "reaction": "result", "component": "relative"}
+    drawn = []
+    for s in sides:
+        t = _inside(s.start, s.end, d.box)
+        if t is None:
+            continue
+        a, b = s.start + t[0] * (s.end - s.start), s.start + t[1] * (s.end - s.start)
+        A, B = (a - c) * k, (b - c) * k
+        if abs(B - A) < 1.0:
+            continue
+        if t[1] >= 1.0 - 1e-9:          # its head within the window: the arrow
+            det.vector(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+        else:                           # a long side's part: its line, its head out of the window
+            det.segment(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+        drawn.append(Side(s.name, A, B, s.role))
+    if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
+        det.point(_pt(-c * k), layer="vectors", step=dstep)
+    lettered = [s for s in drawn if s.mm >= TINY_MM and s.name not in same]
+    _apart(det, [LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=dstep)
+                 for at, s, side in _plan_anchors(lettered)])
+    b = det.bounds()
+    det.label((b[0], b[3] + 4.0), f"{DETAIL_NAME} (μ_F = {num(mu, lang)} {unit('N/mm', lang)})",
+              size=2.5, step=dstep)
+    return det
 
 
 def _coinciding(sides: list) -> dict[str, str]:
