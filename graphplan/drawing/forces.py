@@ -77,6 +77,9 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[co
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
     mech, kin = fp.ks.mech, fp.ks.kin
     mu = mu or fp.mu_l
+    from graphplan.model.linkshape import yoke_guide
+    if yoke_guide(mech, link) is not None:
+        return yoke_lines(fp, link, mu)
     lk = mech.links[link]
     body = kin.bodies[link]
     pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
@@ -350,12 +353,24 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
+    from graphplan.model.linkshape import yoke_guide
     for link in gp.links:
-        outline = _link_outline(fp, link, mu)
-        if len(outline) >= 2:
-            rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
         lk = mech.links[link]
-        if lk.slides_on is not None:
+        yoke = yoke_guide(mech, link) is not None
+        outline = _link_outline(fp, link, mu)
+        if yoke:          # the slotted crosshead and its rod, one body (no block at D: its rod slides)
+            draw_yoke(rec, fp, link, mu, step)
+        elif len(outline) >= 2:
+            rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
+        if lk.slides_on is not None and yoke:
+            guide = mech.guides[lk.slides_on]
+            if guide.body == FRAME and gp.kind == "mechanism":
+                import numpy as np
+                # its guide on the rod between the slot and the rod's end, clear of the slot
+                line = yoke_lines(fp, link, mu)
+                guides.append((0.5 * (line[2] + line[3]),
+                               complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))))
+        elif lk.slides_on is not None:
             guide = mech.guides[lk.slides_on]
             origin = next(iter(lk.local))
             z = complex(kin.bodies[link].at(lk.local[origin])[0][0]) / mu
@@ -556,6 +571,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             arcs.setdefault(key, []).append(mid)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid
+    slide_arms: list = []
     for m in outer:
         # the reaction found here acts on the group's link: drawn and named so, R<from><to> (R03, R12)
         truth = fp.ks.reactions[m.key]
@@ -568,6 +584,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
+        if inward and m.line is not None:
+            # a sliding pair's reaction off its pair's point (the yoke's R03 from ΣM = 0 of link 3):
+            # its arm h from the point along the guide, drawn aside on the side away from the arrow
+            slide_arms.append(_slide_arm(rec, complex(truth.at[0]) / mu, m.line / mu, u, m.name, step))
         # its components at the same point, as the textbook draws them (seed 000, group 12–11):
         # R^τ from the moment equation about the inner joint, R^n along the link from the plan
         for c in _components(gp, m.name):
@@ -634,6 +654,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for (about, t, _), shift in zip(arms, shifts):
         mid = 0.5 * (about + t.foot) + shift
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
+    for mark in slide_arms:
+        if mark is not None:
+            lab.place(mark[0], arm_symbol(mark[1]), LETTER, mark[2], step)
     owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
     # anywhere along its shaft): set after Φ4's and G4's, M^Φ4 hung on a 25 mm leader across the rod
@@ -1332,10 +1355,12 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
     bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
                                              word("exact N", lang), "δ, %"], rows,
                     [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
-    if why:
+    from graphplan.graphic.forceplans import slide_arms
+    arms = [slide_arm_text(a, lang) for a in slide_arms(fp)]
+    if why or arms:
         from graphplan.util.markup import split
         y = bottom - 4.5
-        for text in [word("kin mark_head", lang)] + why:
+        for text in arms + ([word("kin mark_head", lang)] + why if why else []):
             line = ""
             for piece in split(text):        # wrapped to the tables' width
                 if line and text_width(line + " " + piece, 2.5) > 94.0:
@@ -1394,3 +1419,89 @@ def drawing(fp: ForcePlans, lang: str = "uk") -> Record:
     rows = [arrange([group_record(fp, gp, lang), polygon_record(fp, gp, lang)]) for gp in fp.groups]
     rows.append(arrange([lever_record(fp, lang), results_record(fp, lang)]))
     return arrange(rows, across=False, titles=False)
+
+
+# -- a yoke (a slotted crosshead on a rod) drawn as one rigid body --------------------------------
+
+YOKE_TURN = 72    # the block's travel in the slot taken over this many steps of the turn
+
+
+def yoke_mm(fp: ForcePlans, link: str, mu: float) -> tuple[complex, complex, complex, complex]:
+    """A yoke at the force position (mm at ``mu``) as the position plan draws it: its slot over the
+    block's travel in it over the whole turn (``linkshape.yoke_spans``) and its rod from the slot
+    through D to its farthest point (S3). Returns (slot's ends, rod's ends)."""
+    import numpy as np
+
+    from graphplan.model.linkshape import rod_crossing, yoke_guide, yoke_shape, yoke_spans
+    mech, kin = fp.ks.mech, fp.ks.kin
+    lk = mech.links[link]
+    g = yoke_guide(mech, link)
+    ref_local = lk.local[next(iter(lk.local))]
+    turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
+
+    def frame(k, i):
+        body = k.bodies[link]
+        ref = complex(body.at(ref_local)[0][i]) / mu
+        ur = complex(body.turn[i])
+        return ref, ur, complex(body.at(g.through)[0][i]) / mu, ur * np.exp(1j * g.angle)
+
+    def along(z, base, u):
+        return ((z - base) * u.conjugate()).real
+    blocks, own = [], []
+    cross_rod = 0.0
+    for i in range(YOKE_TURN):
+        ref, ur, base, us = frame(turn, i)
+        x = rod_crossing(ref, ur, base, us)
+        cross_rod = along(x, ref, ur)
+        blocks.append(along(x, base, us))
+        for s, other in mech.links.items():
+            if other.slides_on == g.name:
+                blocks += [along(complex(turn.bodies[s].at(z)[0][i]) / mu, base, us) for z in other.local.values()]
+    ref, ur, base, us = frame(kin, 0)
+    own = [along(complex(kin.bodies[link].at(z)[0][0]) / mu, ref, ur) for z in lk.local.values()]
+    slot, rod = yoke_spans(blocks, cross_rod, own)
+    return yoke_shape(ref, ur, base, us, slot, rod)
+
+
+def yoke_lines(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+    """A yoke's drawn lines as one polyline for the arrows to keep clear of: along its slot, back
+    to the rod's crossing, along the rod to its far end."""
+    from graphplan.model.linkshape import rod_crossing
+    a, b, p, q = yoke_mm(fp, link, mu)
+    x = rod_crossing(p, _unit(q - p), a, _unit(b - a))
+    return [a, b, x, q if abs(q - x) >= abs(p - x) else p]
+
+
+def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str) -> None:
+    """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
+    from graphplan.model.linkshape import slot_outline
+    a, b, p, q = yoke_mm(fp, link, mu)
+    rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
+    rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
+
+
+SLIDE_ARM_ASIDE_MM = 4.0   # a sliding pair's reaction's arm drawn this far beside the guide's line
+
+
+def _slide_arm(rec: Record, at: complex, line: complex, u: complex, name: str, step: str):
+    """The arm h of a sliding pair's reaction (mm): from the pair's point ``at`` along the guide to
+    the reaction's line through ``line`` (its direction ``u``), drawn ``SLIDE_ARM_ASIDE_MM`` aside
+    on the side away from the arrow with extension lines from both ends (it lies on the rod). The
+    spot and side for its letter, or None where it is shorter than a millimetre (on the point)."""
+    if abs(line - at) < 1.0:
+        return None
+    side = -u * SLIDE_ARM_ASIDE_MM
+    rec.segment(_pt(at + side), _pt(line + side), role="construction", layer="construction", step=step,
+                text=f"{arm_symbol(name)} = {abs(line - at):.1f} mm to {name}")
+    for z in (at, line):
+        rec.segment(_pt(z), _pt(z + side * 1.25), role="projection", layer="construction", step=step)
+    return 0.5 * (at + line) + side, name, side
+
+
+def slide_arm_text(a, lang: str = "uk", h: str | None = None) -> str:
+    """One line (markup) for a sliding pair's reaction's arm (``forceplans.SlideArm``): h_{R03} (or
+    ``h``) in mm and m from its point along the guide, the closed form's and δ — the sheet's and the
+    terminal's words."""
+    return word("fs slide arm", lang, h=h or arm_symbol(a.key), mm=num(abs(a.h_mm), lang), m=num(a.value, lang),
+                p=a.point, e=num(a.analytic, lang), d=_pct(a.error_pct, lang), r=force_symbol(a.key, lang),
+                g=a.group, n=a.link)

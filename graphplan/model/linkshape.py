@@ -113,3 +113,61 @@ def _inside(z: complex, polygon: list[complex]) -> bool:
             if x > z.real:
                 inside = not inside
     return inside
+
+
+SLOT_HALF_MM = 3.5    # a yoke's slot drawn as its two sides this far either side of its line (the 5 mm block inside)
+SLOT_END_MM = 7.0     # … running this far beyond the block's centre at either end of its travel
+
+
+def yoke_guide(mech, name: str):
+    """A yoke: a link with no revolute joint of its own that slides along a guide (the rod in its
+    bushings) and carries a guide a block slides in (its slot) — the Scotch yoke's slotted
+    crosshead. Its carried guide (model.mechanism.Guide), or None for any other link."""
+    link = mech.links[name]
+    if link.joints or link.slides_on is None:
+        return None
+    for other in mech.links.values():
+        if other.slides_on is not None and other.slides_on != link.slides_on:
+            g = mech.guides[other.slides_on]
+            if g.body == name:
+                return g
+    return None
+
+
+def rod_crossing(ref: complex, u_rod: complex, base: complex, u_slot: complex) -> complex:
+    """Where a yoke's slot line (through ``base`` along ``u_slot``) crosses its rod's axis (through
+    ``ref`` along ``u_rod``): base + t·u_slot with (base + t·u_slot − ref) × u_rod = 0,
+    t = −(base − ref) × u_rod / (u_slot × u_rod); a slot parallel to the rod: base's foot on it."""
+    def cr(a: complex, b: complex) -> float:
+        return a.real * b.imag - a.imag * b.real
+    den = cr(u_slot, u_rod)
+    if abs(den) < 1e-9:
+        return ref + ((base - ref) * u_rod.conjugate()).real * u_rod
+    return base - cr(base - ref, u_rod) / den * u_slot
+
+
+def yoke_shape(ref: complex, u_rod: complex, base: complex, u_slot: complex, slot: tuple[float, float],
+               rod: tuple[float, float]) -> tuple[complex, complex, complex, complex]:
+    """A yoke drawn as one rigid body (mm): its slot from ``slot`` = (lo, hi) along ``u_slot`` from
+    ``base`` (the guide's point), and its rod along ``u_rod`` from ``rod`` = (lo, hi) off ``ref``
+    (the link's own point D). Returns (slot's ends, rod's ends)."""
+    return (base + slot[0] * u_slot, base + slot[1] * u_slot, ref + rod[0] * u_rod, ref + rod[1] * u_rod)
+
+
+def yoke_spans(along_blocks: list[float], along_crossing: float, along_own: list[float],
+               rod_reach: list[float] = ()) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The yoke's constant spans (mm, in its own frame): the slot over every block position drawn
+    and the rod's crossing with it (``along_blocks``: along the slot from its guide's point),
+    ``SLOT_END_MM`` beyond the outermost; the rod from the crossing (``along_crossing``, along the rod
+    from D) to its farthest own point and to every ``rod_reach`` (a bushing it must pass through)."""
+    slot = (min(along_blocks) - SLOT_END_MM, max(along_blocks) + SLOT_END_MM)
+    every = [along_crossing] + list(along_own) + list(rod_reach)
+    return slot, (min(every), max(every))
+
+
+def slot_outline(a: complex, b: complex, half: float = SLOT_HALF_MM) -> list[complex]:
+    """A slot from ``a`` to ``b`` drawn as its two sides ``half`` mm off its line, closed at the
+    ends (a closed polyline)."""
+    u = (b - a) / abs(b - a) if abs(b - a) > 1e-12 else 1 + 0j
+    n = 1j * u * half
+    return [a - n, b - n, b + n, a + n, a - n]

@@ -90,7 +90,24 @@ def force_position(st: Study, phi: float, lang: str) -> str:
     (``positions.force_phi_deg``, in the crank's sense) with the crank angle from the x axis —
     "φ = 200° від положення 0 (кут кривошипа 45,71°)"."""
     turn = round(float(st.from_position0(phi)), 9) % 360.0
-    return word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
+    text = word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
+    return text + idle_words(st, phi, lang)
+
+
+def idle_words(st: Study, phi: float, lang: str) -> str:
+    """On the idle stroke, the terminal's words and the resistance that is then nil (review 11 #17):
+    ", idle stroke: P_D = 0"; nothing on the working stroke or without a stroke-bound force."""
+    import numpy as np
+
+    from graphplan.exact.kinetostatics import working_stroke
+    from graphplan.util.words import force_symbol
+    mech = st.mech
+    nil = [f"{force_symbol('P_' + f.point, lang)} = 0" for f in mech.forces if f.stroke == "working"]
+    nil += [f"M_{{{mech.links[m.link].number}}} = 0" for m in mech.moments if m.stroke == "working"]
+    if not nil or bool(np.atleast_1d(working_stroke(st, np.atleast_1d(float(phi))))[0]):
+        return ""
+    nil = ", ".join(nil)
+    return f", {word('fs idle', lang)}: {nil}"
 
 
 SHORT_FORCE_MM = 10.0

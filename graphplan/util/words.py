@@ -643,6 +643,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
     "fs why pa": ("{sym}: короткий відрізок pa на важелі ({mm} мм)", "{sym}: a short pa on the lever ({mm} mm)"),
+    "fs slide arm": ("{h} = {mm} мм: {r} діє на відстані {m} м від {p} уздовж напрямної (точно {e} м, δ = {d} %), "
+                     "з ΣM_{p} = 0 ланки {n} групи {g}",
+                     "{h} = {mm} mm: {r} acts {m} m from {p} along the guide (exact {e} m, δ = {d} %), "
+                     "from ΣM_{p} = 0 of link {n} of group {g}"),
     "fs why arms": ("{sym}: плечі, прочитані лінійкою до {p} мм", "{sym}: arms read with a {p} mm ruler"),
     "fs idle": ("холостий хід", "idle stroke"),
     "fs working": ("робочий хід", "working stroke"),
