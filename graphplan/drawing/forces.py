@@ -411,6 +411,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for m in outer:
         truth = fp.ks.reactions[m.key]
         at = truth.line_point()[0] if truth.on in gp.links else truth.at[0]
+        if truth.on in gp.links and m.line is not None:
+            at = m.line
         if m.acting:
             busy.append((complex(at) / mu, _unit(m.acting)))
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
@@ -577,6 +579,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         truth = fp.ks.reactions[m.key]
         inward = truth.on in gp.links
         z = complex(truth.line_point()[0] if inward else truth.at[0]) / mu
+        if inward and m.line is not None:      # a sliding pair's: on the line its ΣM = 0 found (measured)
+            z = m.line / mu
         v = m.acting
         if not v:
             continue
@@ -1474,10 +1478,14 @@ def yoke_lines(fp: ForcePlans, link: str, mu: float) -> list[complex]:
 
 def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str) -> None:
     """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
-    from graphplan.model.linkshape import slot_outline
+    from graphplan.model.linkshape import rod_stubs, slot_outline
     a, b, p, q = yoke_mm(fp, link, mu)
     rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
     rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
+    body = fp.ks.kin.bodies[link]
+    own = [complex(body.at(w)[0][0]) / mu for w in fp.ks.mech.links[link].local.values()]
+    for f, z in rod_stubs(p, _unit(q - p), own):
+        rec.segment(_pt(f), _pt(z), role="link", layer="mechanism", step=step)
 
 
 SLIDE_ARM_ASIDE_MM = 4.0   # a sliding pair's reaction's arm drawn this far beside the guide's line

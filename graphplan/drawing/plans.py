@@ -11,7 +11,7 @@ from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from dataclasses import dataclass
 
-from graphplan.model.linkshape import (extra_points, outline_names, rod_crossing, slot_line, slot_outline,
+from graphplan.model.linkshape import (extra_points, outline_names, rod_crossing, rod_stubs, slot_line, slot_outline,
                                         yoke_guide, yoke_shape, SLOT_HALF_MM)
 from graphplan.model.linkshape import yoke_spans as shape_spans
 from graphplan.model.mechanism import FRAME
@@ -944,6 +944,9 @@ def draw_yoke(rec: Record, sc: Scheme, lay: Layout, name: str, spans: YokeSpans,
     else:
         rec.segment(_pt(a), _pt(b), role=role, width=width, layer="mechanism", step=step)
     rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
+    pose = lay.poses[name]
+    for f, z in rod_stubs(p, (q - p) / abs(q - p), [pose.at(w) for w in sc.mech.links[name].local.values()]):
+        rec.segment(_pt(f), _pt(z), role=role, width=width, layer="mechanism", step=step)
 
 
 def draw_bushing(rec: Record, mid: complex, u: complex, step: str = "") -> None:

@@ -171,3 +171,14 @@ def slot_outline(a: complex, b: complex, half: float = SLOT_HALF_MM) -> list[com
     u = (b - a) / abs(b - a) if abs(b - a) > 1e-12 else 1 + 0j
     n = 1j * u * half
     return [a - n, b - n, b + n, a + n, a - n]
+
+
+def rod_stubs(ref: complex, u_rod: complex, points: list[complex]) -> list[tuple[complex, complex]]:
+    """A yoke's points off its rod's axis (a centre of mass set aside) joined to the rod: from each
+    one's foot on the axis to it — so that the body stays one piece."""
+    out = []
+    for z in points:
+        d = (z - ref) * u_rod.conjugate()
+        if abs(d.imag) > ON_LINE_MM:
+            out.append((ref + d.real * u_rod, z))
+    return out
