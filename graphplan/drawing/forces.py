@@ -405,6 +405,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     labels: list[tuple[complex, str, complex]] = []
     centres: list[tuple[complex, str]] = []
     drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
+    drawn_links += [pair for link in gp.links if yoke_guide(mech, link) is not None     # a slot's sides
+                    for pair in _pairs(_slot_sides(fp, link, mu))]
     span: dict[str, tuple[complex, complex]] = {}
     clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
     busy = [(f.at / mu, _unit(f.force)) for f in forces]       # every force leaving its point
@@ -1513,3 +1515,10 @@ def slide_arm_text(a, lang: str = "uk", h: str | None = None) -> str:
     return word("fs slide arm", lang, h=h or arm_symbol(a.key), mm=num(abs(a.h_mm), lang), m=num(a.value, lang),
                 p=a.point, e=num(a.analytic, lang), d=_pct(a.error_pct, lang), r=force_symbol(a.key, lang),
                 g=a.group, n=a.link)
+
+
+def _slot_sides(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+    """A yoke's slot as drawn (its closed outline, mm): the arrows are laid clear of its sides."""
+    from graphplan.model.linkshape import slot_outline
+    a, b, _, _ = yoke_mm(fp, link, mu)
+    return slot_outline(a, b)

@@ -632,6 +632,8 @@ def slide_arms(fp: ForcePlans) -> list[SlideArm]:
             g, at = complex(r.guide[0]), complex(r.at[0])
             h = float(dot(m.line - at, g))
             exact = float(dot(complex(r.line_point()[0]) - at, g))
+            if abs(h) < 1e-9 and abs(exact) < 1e-9:      # through the pair's point (a slider's R03 at B)
+                continue
             out.append(SlideArm(key, r.point, gp.label, h / mu, h, exact, error_pct(h, exact, mu),
                                 number(fp.ks.mech, r.on)))
     return out
