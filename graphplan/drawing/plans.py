@@ -916,8 +916,13 @@ def yoke_spans(sc: Scheme, layouts: list[Layout], name: str, O: complex | None =
         _, ur, _, _ = _yoke_frame(sc, lay0, name)
         side = 1.0 if (max(own) - cross_rod) * _along(gb + ur, gb, ug) >= 0 else -1.0
         t_o, off = _along(O, gb, ug), abs(((O - gb) * ug.conjugate()).imag)
-        reach = [side * t_o + math.sqrt(max(r * r - off * off, 0.0))]
+        clear_r = r + BUSH_GAP_MM + 2.5          # the circle and the bushing's hatching
+        reach = [side * t_o + math.sqrt(clear_r * clear_r - off * off)] if off < clear_r else []
         reach += [side * _along(x, gb, ug) + (SLOT_HALF_MM + BUSH_GAP_MM) / max(sin, 0.05) for x, sin in feet]
+        for lay in layouts:      # a point set off the rod (its stub) never runs into the bushing
+            ref, ur, _, _ = _yoke_frame(sc, lay, name)
+            reach += [side * _along(z, gb, ug) for _, z in
+                      rod_stubs(ref, ur, [lay.poses[name].at(w) for w in link.local.values()])]
         near = max(reach) + BUSH_CLEAR_MM
         mid = gb + side * (near + BUSH_HALF_MM) * ug
         bushing = (mid, ug)
