@@ -43,6 +43,10 @@ def forces_json(fp) -> dict[str, Any]:
                           "error_pct": m.error_pct, "mm": m.mm,
                           "analytic_angle_deg": m.analytic_angle_deg,
                           "kind": ks.reactions[key].kind, "point": ks.reactions[key].point}
+    from graphplan.graphic.forceplans import slide_arms
+    for arm in slide_arms(fp):      # a sliding pair's reaction off its point: its arm along the guide, m
+        reactions[arm.key]["arm"] = {"value": arm.value, "analytic": arm.analytic, "mm": arm.h_mm,
+                                     "error_pct": arm.error_pct}
     inertia = {}
     for key, item in ks.inertia().items():
         inertia[key] = {"force": float(item["force"][0]), "moment": float(item["moment"][0]),
