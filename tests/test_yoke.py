@@ -108,3 +108,30 @@ def test_a_force_sheets_length_scale_grows_only_through_gost_2302_scales():
         nxt = next_length(mu)
         assert nxt < mu and gost_length(nxt)
         assert not [g for g in gost if nxt * (1 + 1e-9) < g < mu * (1 - 1e-9)], (mu, nxt)
+
+
+def test_the_force_sheet_draws_the_same_body_and_r03_on_its_found_line(st):
+    """The scheme's and the group's yoke: the slot through the block A, the rod from the slot's line
+    through D and S3; the group draws R03 on the line its ΣM = 0 found, its arm h_R03 from D to it."""
+    from graphplan.drawing.forces import group_record, yoke_mm
+    from graphplan.exact.kinetostatics import at_scene_angle
+    from graphplan.graphic.forceplans import construct
+    from graphplan.model.linkshape import rod_crossing
+    fp = construct(st, at_scene_angle(st), 0.5)
+    mu = fp.mu_l
+    kin, mech = fp.ks.kin, st.mech
+    at = {p: complex(kin.bodies[b].at(mech.links[b].local[p])[0][0]) / mu for b, p in (("2", "A"), ("yoke", "D"), ("yoke", "S3"))}
+    a, b, p, q = yoke_mm(fp, "yoke", mu)
+    assert _dist_to_segment(at["A"], a, b) < 1e-6
+    x = rod_crossing(p, (q - p) / abs(q - p), a, (b - a) / abs(b - a))
+    assert min(abs(x - p), abs(x - q)) < 1e-6
+    assert _dist_to_segment(at["D"], p, q) < 1e-6 and _dist_to_segment(at["S3"], p, q) < 1e-6
+    gp = next(g for g in fp.groups if "yoke" in g.links)
+    rec = group_record(fp, gp, "en")
+    (t, h), = [v.points for v in rec.items if v.kind == "vector" and v.text == "R03"]
+    line = gp.reactions["R03"].line / gp.mu_l
+    u = complex(*h) - complex(*t)
+    assert abs(((line - complex(*t)) * u.conjugate()).imag) / abs(u) < 1e-6      # R03 on its line
+    arm, = [s for s in rec.items if s.kind == "segment" and s.text.startswith("h_{R03}")]
+    (ax, ay), (bx, by) = arm.points
+    assert abs(math.hypot(bx - ax, by - ay) - abs(line - at["D"] * mu / gp.mu_l)) < 1e-6
