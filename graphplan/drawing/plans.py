@@ -5,12 +5,11 @@ from __future__ import annotations
 
 import cmath
 import math
+from dataclasses import dataclass
 
 from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from dataclasses import dataclass
-
 from graphplan.model.linkshape import (extra_points, outline_names, rod_crossing, rod_stubs, slot_line, slot_outline,
                                         yoke_guide, yoke_shape, SLOT_HALF_MM)
 from graphplan.model.linkshape import yoke_spans as shape_spans
@@ -927,7 +926,10 @@ def yoke_spans(sc: Scheme, layouts: list[Layout], name: str, O: complex | None =
         mid = gb + side * (near + BUSH_HALF_MM) * ug
         bushing = (mid, ug)
         far = mid + side * (BUSH_HALF_MM + ROD_PAST_MM) * ug
-        ends = [_along(far, _yoke_frame(sc, lay, name)[0], _yoke_frame(sc, lay, name)[1]) for lay in layouts]
+        ends = []
+        for lay in layouts:                  # the rod stays in its bushing at every position
+            ref, ur, _, _ = _yoke_frame(sc, lay, name)
+            ends.append(_along(far, ref, ur))
         _, rod = shape_spans(blocks, cross_rod, own, ends)
     return YokeSpans(slot, rod, bushing)
 

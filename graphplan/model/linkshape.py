@@ -127,7 +127,7 @@ def yoke_guide(mech, name: str):
     if link.joints or link.slides_on is None:
         return None
     for other in mech.links.values():
-        if other.slides_on is not None and other.slides_on != link.slides_on:
+        if other.slides_on is not None:
             g = mech.guides[other.slides_on]
             if g.body == name:
                 return g
