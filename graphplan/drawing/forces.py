@@ -73,13 +73,14 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
     return gp.mu_F or fp.mu_F
 
 
-def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[complex]:
-    """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
+def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
+    """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it
+    (a yoke: its slot and rod, ``framed``: the rod reaching its bushing)."""
     mech, kin = fp.ks.mech, fp.ks.kin
     mu = mu or fp.mu_l
     from graphplan.model.linkshape import yoke_guide
     if yoke_guide(mech, link) is not None:
-        return yoke_lines(fp, link, mu)
+        return yoke_lines(fp, link, mu, framed)
     lk = mech.links[link]
     body = kin.bodies[link]
     pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
@@ -353,23 +354,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
+    bushings: list[tuple[complex, complex]] = []    # a yoke's rod's bushing: (middle, unit)
     from graphplan.model.linkshape import yoke_guide
     for link in gp.links:
         lk = mech.links[link]
         yoke = yoke_guide(mech, link) is not None
-        outline = _link_outline(fp, link, mu)
+        outline = _link_outline(fp, link, mu, gp.kind == "mechanism")
         if yoke:          # the slotted crosshead and its rod, one body (no block at D: its rod slides)
-            draw_yoke(rec, fp, link, mu, step)
+            draw_yoke(rec, fp, link, mu, step, framed=gp.kind == "mechanism")
         elif len(outline) >= 2:
             rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
-        if lk.slides_on is not None and yoke:
-            guide = mech.guides[lk.slides_on]
-            if guide.body == FRAME and gp.kind == "mechanism":
-                import numpy as np
-                # its guide on the rod between the slot and the rod's end, clear of the slot
-                line = yoke_lines(fp, link, mu)
-                guides.append((0.5 * (line[2] + line[3]),
-                               complex(np.exp(1j * (kin.bodies[guide.body].theta[0] + guide.angle)))))
+        if yoke:
+            # the scheme keeps the rod's bushing as the position plan draws it (clear of the crank)
+            bush = yoke_at(fp, link, mu)[4]
+            if bush is not None and gp.kind == "mechanism":
+                bushings.append(bush)
         elif lk.slides_on is not None:
             guide = mech.guides[lk.slides_on]
             origin = next(iter(lk.local))
@@ -404,9 +403,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
     labels: list[tuple[complex, str, complex]] = []
     centres: list[tuple[complex, str]] = []
-    drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
+    drawn_links = [(a, b) for link in gp.links
+                   for a, b in _pairs(_link_outline(fp, link, mu, gp.kind == "mechanism"))]
     drawn_links += [pair for link in gp.links if yoke_guide(mech, link) is not None     # a slot's sides
                     for pair in _pairs(_slot_sides(fp, link, mu))]
+    from graphplan.model.linkshape import BUSH_GAP_MM, BUSH_HALF_MM
+    drawn_links += [(m + BUSH_GAP_MM * s * 1j * u - BUSH_HALF_MM * u, m + BUSH_GAP_MM * s * 1j * u + BUSH_HALF_MM * u)
+                    for m, u in bushings for s in (1.0, -1.0)]      # its walls
     span: dict[str, tuple[complex, complex]] = {}
     clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
     busy = [(f.at / mu, _unit(f.force)) for f in forces]       # every force leaving its point
@@ -639,6 +642,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             rec.segment(_pt(near), _pt(foot), role="projection", layer="construction", step=step)
         if off:                          # the line itself along the arrow, where the arm ends
             rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
+    if bushings:
+        from graphplan.drawing.plans import draw_bushing
+        for m, u in bushings:
+            draw_bushing(rec, m, u, step=step)
     for z, g in guides if gp.kind == "mechanism" else ():
         # the scheme keeps its guides; a group freed from the frame shows the reaction (R05) in
         # the guide's place — its block's arrows still laid clear of the guide's line
@@ -1432,56 +1439,59 @@ def drawing(fp: ForcePlans, lang: str = "uk") -> Record:
 YOKE_TURN = 72    # the block's travel in the slot taken over this many steps of the turn
 
 
-def yoke_mm(fp: ForcePlans, link: str, mu: float) -> tuple[complex, complex, complex, complex]:
-    """A yoke at the force position (mm at ``mu``) as the position plan draws it: its slot over the
-    block's travel in it over the whole turn (``linkshape.yoke_spans``) and its rod from the slot
-    through D to its farthest point (S3). Returns (slot's ends, rod's ends)."""
+def yoke_at(fp: ForcePlans, link: str, mu: float, framed: bool = True):
+    """A yoke at the force position (mm at ``mu``) as the position plan draws it
+    (``linkshape.yoke_body`` over the whole turn): its slot over the block's travel in it, its rod
+    from the slot through D to its farthest point and through its bushing, the bushing (middle,
+    unit; None on a moving guide). Not ``framed`` (a group freed from the frame): the rod from the
+    slot to its farthest point only, no bushing. Returns (slot's ends, rod's ends, bushing)."""
     import numpy as np
 
-    from graphplan.model.linkshape import rod_crossing, yoke_guide, yoke_shape, yoke_spans
+    from graphplan.model.linkshape import yoke_body, yoke_guide, yoke_shape
     mech, kin = fp.ks.mech, fp.ks.kin
     lk = mech.links[link]
     g = yoke_guide(mech, link)
     ref_local = lk.local[next(iter(lk.local))]
     turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
+    sliders = [s for s, other in mech.links.items() if other.slides_on == g.name]
+
+    def at(k, body, z, i):
+        return complex(k.bodies[body].at(z)[0][i]) / mu
 
     def frame(k, i):
-        body = k.bodies[link]
-        ref = complex(body.at(ref_local)[0][i]) / mu
-        ur = complex(body.turn[i])
-        return ref, ur, complex(body.at(g.through)[0][i]) / mu, ur * np.exp(1j * g.angle)
-
-    def along(z, base, u):
-        return ((z - base) * u.conjugate()).real
-    blocks, own = [], []
-    cross_rod = 0.0
-    for i in range(YOKE_TURN):
-        ref, ur, base, us = frame(turn, i)
-        x = rod_crossing(ref, ur, base, us)
-        cross_rod = along(x, ref, ur)
-        blocks.append(along(x, base, us))
-        for s, other in mech.links.items():
-            if other.slides_on == g.name:
-                blocks += [along(complex(turn.bodies[s].at(z)[0][i]) / mu, base, us) for z in other.local.values()]
-    ref, ur, base, us = frame(kin, 0)
-    own = [along(complex(kin.bodies[link].at(z)[0][0]) / mu, ref, ur) for z in lk.local.values()]
-    slot, rod = yoke_spans(blocks, cross_rod, own)
-    return yoke_shape(ref, ur, base, us, slot, rod)
+        ur = complex(k.bodies[link].turn[i])
+        return at(k, link, ref_local, i), ur, at(k, link, g.through, i), ur * np.exp(1j * g.angle)
+    every = [(turn, i) for i in range(YOKE_TURN)] + [(kin, 0)]
+    frames = [frame(k, i) for k, i in every]
+    blocks = [[at(k, s, z, i) for s in sliders for z in mech.links[s].local.values()] for k, i in every]
+    own = [[at(k, link, z, i) for z in lk.local.values()] for k, i in every]
+    guide = mech.guides[lk.slides_on]
+    line = O = None
+    if guide.body == FRAME and framed:
+        line = (guide.through / mu, complex(np.exp(1j * guide.angle)))
+        O = mech.frame[mech.crank.pivot] / mu
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu)
+    return (*yoke_shape(*frames[-1], slot, rod), bushing)
 
 
-def yoke_lines(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+def yoke_mm(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> tuple[complex, complex, complex, complex]:
+    """A yoke at the force position (mm at ``mu``): its slot's ends and its rod's ends (``yoke_at``)."""
+    return yoke_at(fp, link, mu, framed)[:4]
+
+
+def yoke_lines(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> list[complex]:
     """A yoke's drawn lines as one polyline for the arrows to keep clear of: along its slot, back
     to the rod's crossing, along the rod to its far end."""
     from graphplan.model.linkshape import rod_crossing
-    a, b, p, q = yoke_mm(fp, link, mu)
+    a, b, p, q = yoke_mm(fp, link, mu, framed)
     x = rod_crossing(p, _unit(q - p), a, _unit(b - a))
     return [a, b, x, q if abs(q - x) >= abs(p - x) else p]
 
 
-def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str) -> None:
+def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str, framed: bool = True) -> None:
     """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
     from graphplan.model.linkshape import rod_stubs, slot_outline
-    a, b, p, q = yoke_mm(fp, link, mu)
+    a, b, p, q = yoke_mm(fp, link, mu, framed)
     rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
     rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
     body = fp.ks.kin.bodies[link]

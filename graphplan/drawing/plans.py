@@ -10,9 +10,8 @@ from dataclasses import dataclass
 from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from graphplan.model.linkshape import (extra_points, outline_names, rod_crossing, rod_stubs, slot_line, slot_outline,
-                                        yoke_guide, yoke_shape, SLOT_HALF_MM)
-from graphplan.model.linkshape import yoke_spans as shape_spans
+from graphplan.model.linkshape import (BUSH_GAP_MM, BUSH_HALF_MM, extra_points, outline_names, rod_crossing,
+                                        rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -856,12 +855,6 @@ def acceleration_records(plans: Plans) -> dict[int, Record]:
 
 # -- a yoke (a slotted crosshead on a rod, no revolute joint of its own) drawn as one rigid body ----
 
-BUSH_HALF_MM = 8.0     # a yoke's rod bushing (the frame's guide) this long either side of its middle
-BUSH_GAP_MM = 2.0      # … its two walls this far either side of the rod's axis
-BUSH_CLEAR_MM = 4.0    # … this far clear of the crank pin's circle and of the slot's sweep
-ROD_PAST_MM = 3.0      # the rod reaches this far past its bushing's far end
-
-
 @dataclass(frozen=True)
 class YokeSpans:
     """A yoke's drawn spans in its own frame (mm), the same at every position (one rigid body):
@@ -881,56 +874,26 @@ def _yoke_frame(sc: Scheme, lay: Layout, name: str):
     return pose.at(link.local[next(iter(link.local))]), pose.direction(0.0), pose.at(g.through), pose.direction(g.angle)
 
 
-def _along(z: complex, base: complex, u: complex) -> float:
-    return ((z - base) * u.conjugate()).real
-
-
 def yoke_spans(sc: Scheme, layouts: list[Layout], name: str, O: complex | None = None,
                r: float = 0.0) -> YokeSpans:
-    """The slot over the block's travel at every drawn position (and the rod's crossing), the rod
-    from the slot to its farthest point and through its bushing — which stands on the rod's axis
-    clear of the crank pin's circle (about ``O``, radius ``r`` mm) and of the slot's sweep, on the
-    side of the rod's own points (the textbook's Scotch yoke: its rod's guides beside the crank,
+    """The yoke's spans over the drawn positions (``linkshape.yoke_body``): the slot over the
+    block's travel (and the rod's crossing), the rod from the slot to its farthest point and through
+    its bushing, which stands on the rod's axis clear of the crank pin's circle (about ``O``, radius
+    ``r`` mm) and of the slot's sweep (the textbook's Scotch yoke: its rod's guide beside the crank,
     not a wall through it)."""
     mech = sc.mech
     link = mech.links[name]
     g = yoke_guide(mech, name)
-    blocks, own, cross_rod, feet = [], [], 0.0, []
-    for lay in layouts:
-        ref, ur, base, us = _yoke_frame(sc, lay, name)
-        x = rod_crossing(ref, ur, base, us)
-        cross_rod = _along(x, ref, ur)
-        blocks.append(_along(x, base, us))
-        for s, other in mech.links.items():
-            if other.slides_on == g.name:
-                blocks += [_along(lay.poses[s].at(z), base, us) for z in other.local.values()]
-        own += [_along(lay.poses[name].at(z), ref, ur) for z in link.local.values()]
-        feet.append((x, abs((us.conjugate() * ur).imag)))
-    slot, rod = shape_spans(blocks, cross_rod, own)
-    bushing = None
+    sliders = [s for s, other in mech.links.items() if other.slides_on == g.name]
+    frames = [_yoke_frame(sc, lay, name) for lay in layouts]
+    blocks = [[lay.poses[s].at(z) for s in sliders for z in mech.links[s].local.values()] for lay in layouts]
+    own = [[lay.poses[name].at(z) for z in link.local.values()] for lay in layouts]
     guide = mech.guides[link.slides_on]
-    if guide.body == FRAME and O is not None:
+    line = None
+    if guide.body == FRAME:
         lay0 = layouts[0]
-        gb, ug = where_frame(sc, lay0, guide.through), lay0.poses[FRAME].direction(guide.angle)
-        _, ur, _, _ = _yoke_frame(sc, lay0, name)
-        side = 1.0 if (max(own) - cross_rod) * _along(gb + ur, gb, ug) >= 0 else -1.0
-        t_o, off = _along(O, gb, ug), abs(((O - gb) * ug.conjugate()).imag)
-        clear_r = r + BUSH_GAP_MM + 2.5          # the circle and the bushing's hatching
-        reach = [side * t_o + math.sqrt(clear_r * clear_r - off * off)] if off < clear_r else []
-        reach += [side * _along(x, gb, ug) + (SLOT_HALF_MM + BUSH_GAP_MM) / max(sin, 0.05) for x, sin in feet]
-        for lay in layouts:      # a point set off the rod (its stub) never runs into the bushing
-            ref, ur, _, _ = _yoke_frame(sc, lay, name)
-            reach += [side * _along(z, gb, ug) for _, z in
-                      rod_stubs(ref, ur, [lay.poses[name].at(w) for w in link.local.values()])]
-        near = max(reach) + BUSH_CLEAR_MM
-        mid = gb + side * (near + BUSH_HALF_MM) * ug
-        bushing = (mid, ug)
-        far = mid + side * (BUSH_HALF_MM + ROD_PAST_MM) * ug
-        ends = []
-        for lay in layouts:                  # the rod stays in its bushing at every position
-            ref, ur, _, _ = _yoke_frame(sc, lay, name)
-            ends.append(_along(far, ref, ur))
-        _, rod = shape_spans(blocks, cross_rod, own, ends)
+        line = (where_frame(sc, lay0, guide.through), lay0.poses[FRAME].direction(guide.angle))
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, r)
     return YokeSpans(slot, rod, bushing)
 
 

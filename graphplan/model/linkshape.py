@@ -182,3 +182,50 @@ def rod_stubs(ref: complex, u_rod: complex, points: list[complex]) -> list[tuple
         if abs(d.imag) > ON_LINE_MM:
             out.append((ref + d.real * u_rod, z))
     return out
+
+
+BUSH_HALF_MM = 8.0     # a yoke's rod bushing (the frame's guide) this long either side of its middle
+BUSH_GAP_MM = 2.0      # … its two walls this far either side of the rod's axis
+BUSH_CLEAR_MM = 4.0    # … this far clear of the crank pin's circle and of the slot's sweep
+ROD_PAST_MM = 3.0      # the rod reaches this far past its bushing's far end
+
+
+def yoke_body(frames: list[tuple[complex, complex, complex, complex]], blocks: list[list[complex]],
+              own: list[list[complex]], guide: tuple[complex, complex] | None = None,
+              O: complex | None = None, r: float = 0.0):
+    """A yoke's constant spans over the positions it is drawn at (mm), one rigid body: at each
+    position its frame ``frames[i]`` = (D, the rod's unit, the slot guide's point, the slot's unit),
+    the blocks' points in its slot ``blocks[i]`` and its own points ``own[i]``. The slot over every
+    block position and the rod's crossing (``yoke_spans``); with the frame's ``guide`` line (point,
+    unit) its rod's bushing on that line on the side of its own points, clear of the crank pin's
+    circle (about ``O``, radius ``r``), of the slot's sweep and of a point off the rod, the rod long
+    enough to stay in it at every position. Returns (slot span, rod span, bushing (middle, unit) or
+    None)."""
+    import math
+
+    def along(z: complex, base: complex, u: complex) -> float:
+        return ((z - base) * u.conjugate()).real
+    slot_at, own_at, feet, cross_rod = [], [], [], 0.0
+    for (ref, ur, base, us), bl, ow in zip(frames, blocks, own):
+        x = rod_crossing(ref, ur, base, us)
+        cross_rod = along(x, ref, ur)
+        slot_at += [along(x, base, us)] + [along(z, base, us) for z in bl]
+        own_at += [along(z, ref, ur) for z in ow]
+        feet.append((x, abs((us.conjugate() * ur).imag)))
+    slot, rod = yoke_spans(slot_at, cross_rod, own_at)
+    if guide is None or O is None:
+        return slot, rod, None
+    gb, ug = guide
+    ur0 = frames[0][1]
+    side = 1.0 if (max(own_at) - cross_rod) * along(gb + ur0, gb, ug) >= 0 else -1.0
+    t_o, off = along(O, gb, ug), abs(((O - gb) * ug.conjugate()).imag)
+    clear_r = r + BUSH_GAP_MM + 2.5          # the circle and the bushing's hatching
+    reach = [side * t_o + math.sqrt(clear_r * clear_r - off * off)] if off < clear_r else []
+    reach += [side * along(x, gb, ug) + (SLOT_HALF_MM + BUSH_GAP_MM) / max(sin, 0.05) for x, sin in feet]
+    for (ref, ur, _, _), ow in zip(frames, own):     # a point set off the rod never runs into it
+        reach += [side * along(z, gb, ug) for _, z in rod_stubs(ref, ur, ow)]
+    near = max(reach) + BUSH_CLEAR_MM
+    mid = gb + side * (near + BUSH_HALF_MM) * ug
+    far = mid + side * (BUSH_HALF_MM + ROD_PAST_MM) * ug
+    _, rod = yoke_spans(slot_at, cross_rod, own_at, [along(far, ref, ur) for ref, ur, _, _ in frames])
+    return slot, rod, (mid, ug)
