@@ -135,3 +135,20 @@ def test_the_force_sheet_draws_the_same_body_and_r03_on_its_found_line(st):
     arm, = [s for s in rec.items if s.kind == "segment" and s.text.startswith("h_{R03}")]
     (ax, ay), (bx, by) = arm.points
     assert abs(math.hypot(bx - ax, by - ay) - abs(line - at["D"] * mu / gp.mu_l)) < 1e-6
+
+
+def test_the_schemes_rod_runs_in_a_bushing_clear_of_the_crank(st):
+    """Review 11 #2 on the force sheet's scheme: at both a working and an idle position the rod's
+    bushing stands on the rod's axis outside the crank pin's circle, the rod through it; a group
+    freed from the frame draws no bushing and the rod only from the slot to S3."""
+    from graphplan.drawing.forces import yoke_at
+    from graphplan.graphic.forceplans import construct
+    for phi in (45.0, 225.0):
+        fp = construct(st, phi, 0.5)
+        mu = fp.mu_l
+        a, b, p, q, (mid, u) = yoke_at(fp, "yoke", mu)
+        assert abs(mid) > 0.08 / mu + 2.0 and abs(mid.imag) < 1e-9 and abs(abs(u) - 1) < 1e-12
+        assert _dist_to_segment(mid, p, q) < 1e-9
+        *_, p2, q2, none = yoke_at(fp, "yoke", mu, framed=False)
+        s3 = complex(fp.ks.kin.bodies["yoke"].at(st.mech.links["yoke"].local["S3"])[0][0]) / mu
+        assert none is None and abs(max(p2.real, q2.real) - s3.real) < 1e-9
