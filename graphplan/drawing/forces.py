@@ -75,10 +75,14 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
     return gp.mu_F or fp.mu_F
 
 
-def _link_outline(fp: ForcePlans, link: str, mu: float | None = None) -> list[complex]:
-    """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it."""
+def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
+    """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it
+    (a yoke: its slot and rod, ``framed``: the rod reaching its bushing)."""
     mech, kin = fp.ks.mech, fp.ks.kin
     mu = mu or fp.mu_l
+    from graphplan.model.linkshape import yoke_guide
+    if yoke_guide(mech, link) is not None:
+        return yoke_lines(fp, link, mu, framed)
     lk = mech.links[link]
     body = kin.bodies[link]
     pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
@@ -352,12 +356,22 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
+    bushings: list[tuple[complex, complex]] = []    # a yoke's rod's bushing: (middle, unit)
+    from graphplan.model.linkshape import yoke_guide
     for link in gp.links:
-        outline = _link_outline(fp, link, mu)
-        if len(outline) >= 2:
-            rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
         lk = mech.links[link]
-        if lk.slides_on is not None:
+        yoke = yoke_guide(mech, link) is not None
+        outline = _link_outline(fp, link, mu, gp.kind == "mechanism")
+        if yoke:          # the slotted crosshead and its rod, one body (no block at D: its rod slides)
+            draw_yoke(rec, fp, link, mu, step, framed=gp.kind == "mechanism")
+        elif len(outline) >= 2:
+            rec.add("polyline", [_pt(z) for z in outline], role="link", layer="mechanism", step=step)
+        if yoke:
+            # the scheme keeps the rod's bushing as the position plan draws it (clear of the crank)
+            bush = yoke_at(fp, link, mu)[4]
+            if bush is not None and gp.kind == "mechanism":
+                bushings.append(bush)
+        elif lk.slides_on is not None:
             guide = mech.guides[lk.slides_on]
             origin = next(iter(lk.local))
             z = complex(kin.bodies[link].at(lk.local[origin])[0][0]) / mu
@@ -391,13 +405,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     biggest = max([abs(f.force) for f in forces] + [m.value for m in outer] + [1e-9])
     labels: list[tuple[complex, str, complex]] = []
     centres: list[tuple[complex, str]] = []
-    drawn_links = [(a, b) for link in gp.links for a, b in _pairs(_link_outline(fp, link, mu))]
+    drawn_links = [(a, b) for link in gp.links
+                   for a, b in _pairs(_link_outline(fp, link, mu, gp.kind == "mechanism"))]
+    drawn_links += [pair for link in gp.links if yoke_guide(mech, link) is not None     # a slot's sides
+                    for pair in _pairs(_slot_sides(fp, link, mu))]
+    from graphplan.model.linkshape import BUSH_GAP_MM, BUSH_HALF_MM
+    drawn_links += [(m + BUSH_GAP_MM * s * 1j * u - BUSH_HALF_MM * u, m + BUSH_GAP_MM * s * 1j * u + BUSH_HALF_MM * u)
+                    for m, u in bushings for s in (1.0, -1.0)]      # its walls
     span: dict[str, tuple[complex, complex]] = {}
     clear: dict[complex, complex] = {}     # a point with a moment's arc: its letter's side
     busy = [(f.at / mu, _unit(f.force)) for f in forces]       # every force leaving its point
     for m in outer:
         truth = fp.ks.reactions[m.key]
         at = truth.line_point()[0] if truth.on in gp.links else truth.at[0]
+        if truth.on in gp.links and m.line is not None:
+            at = m.line
         if m.acting:
             busy.append((complex(at) / mu, _unit(m.acting)))
     armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
@@ -558,11 +580,14 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             arcs.setdefault(key, []).append(mid)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid
+    slide_arms: list = []
     for m in outer:
         # the reaction found here acts on the group's link: drawn and named so, R<from><to> (R03, R12)
         truth = fp.ks.reactions[m.key]
         inward = truth.on in gp.links
         z = complex(truth.line_point()[0] if inward else truth.at[0]) / mu
+        if inward and m.line is not None:      # a sliding pair's: on the line its ΣM = 0 found (measured)
+            z = m.line / mu
         v = m.acting
         if not v:
             continue
@@ -570,6 +595,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
+        if inward and m.line is not None:
+            # a sliding pair's reaction off its pair's point (the yoke's R03 from ΣM = 0 of link 3):
+            # its arm h from the point along the guide, drawn aside on the side away from the arrow
+            slide_arms.append(_slide_arm(rec, complex(truth.at[0]) / mu, m.line / mu, u, m.name, step))
         # its components at the same point, as the textbook draws them (seed 000, group 12–11):
         # R^τ from the moment equation about the inner joint, R^n along the link from the plan
         for c in _components(gp, m.name):
@@ -615,6 +644,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             rec.segment(_pt(near), _pt(foot), role="projection", layer="construction", step=step)
         if off:                          # the line itself along the arrow, where the arm ends
             rec.segment(_pt(a), _pt(b), role="projection", layer="construction", step=step)
+    if bushings:
+        from graphplan.drawing.plans import draw_bushing
+        for m, u in bushings:
+            draw_bushing(rec, m, u, step=step)
     for z, g in guides if gp.kind == "mechanism" else ():
         # the scheme keeps its guides; a group freed from the frame shows the reaction (R05) in
         # the guide's place — its block's arrows still laid clear of the guide's line
@@ -636,6 +669,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for (about, t, _), shift in zip(arms, shifts):
         mid = 0.5 * (about + t.foot) + shift
         lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
+    for mark in slide_arms:
+        if mark is not None:
+            lab.place(mark[0], arm_symbol(mark[1]), LETTER, mark[2], step)
     owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] = {}
     # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
     # anywhere along its shaft): set after Φ4's and G4's, M^Φ4 hung on a 25 mm leader across the rod
@@ -1608,10 +1644,12 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
     bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
                                              word("exact N", lang), "δ, %"], rows,
                     [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
-    if why:
+    from graphplan.graphic.forceplans import slide_arms
+    arms = [slide_arm_text(a, lang) for a in slide_arms(fp)]
+    if why or arms:
         from graphplan.util.markup import split
         y = bottom - 4.5
-        for text in [word("kin mark_head", lang)] + why:
+        for text in arms + ([word("kin mark_head", lang)] + why if why else []):
             line = ""
             for piece in split(text):        # wrapped to the tables' width
                 if line and text_width(line + " " + piece, 2.5) > 94.0:
@@ -1670,3 +1708,103 @@ def drawing(fp: ForcePlans, lang: str = "uk") -> Record:
     rows = [arrange([group_record(fp, gp, lang), polygon_record(fp, gp, lang)]) for gp in fp.groups]
     rows.append(arrange([lever_record(fp, lang), results_record(fp, lang)]))
     return arrange(rows, across=False, titles=False)
+
+
+# -- a yoke (a slotted crosshead on a rod) drawn as one rigid body --------------------------------
+
+YOKE_TURN = 72    # the block's travel in the slot taken over this many steps of the turn
+
+
+def yoke_at(fp: ForcePlans, link: str, mu: float, framed: bool = True):
+    """A yoke at the force position (mm at ``mu``) as the position plan draws it
+    (``linkshape.yoke_body`` over the whole turn): its slot over the block's travel in it, its rod
+    from the slot through D to its farthest point and through its bushing, the bushing (middle,
+    unit; None on a moving guide). Not ``framed`` (a group freed from the frame): the rod from the
+    slot to its farthest point only, no bushing. Returns (slot's ends, rod's ends, bushing)."""
+    import numpy as np
+
+    from graphplan.model.linkshape import yoke_body, yoke_guide, yoke_shape
+    mech, kin = fp.ks.mech, fp.ks.kin
+    lk = mech.links[link]
+    g = yoke_guide(mech, link)
+    ref_local = lk.local[next(iter(lk.local))]
+    turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
+    sliders = [s for s, other in mech.links.items() if other.slides_on == g.name]
+
+    def at(k, body, z, i):
+        return complex(k.bodies[body].at(z)[0][i]) / mu
+
+    def frame(k, i):
+        ur = complex(k.bodies[link].turn[i])
+        return at(k, link, ref_local, i), ur, at(k, link, g.through, i), ur * np.exp(1j * g.angle)
+    every = [(turn, i) for i in range(YOKE_TURN)] + [(kin, 0)]
+    frames = [frame(k, i) for k, i in every]
+    blocks = [[at(k, s, z, i) for s in sliders for z in mech.links[s].local.values()] for k, i in every]
+    own = [[at(k, link, z, i) for z in lk.local.values()] for k, i in every]
+    guide = mech.guides[lk.slides_on]
+    line = O = None
+    if guide.body == FRAME and framed:
+        line = (guide.through / mu, complex(np.exp(1j * guide.angle)))
+        O = mech.frame[mech.crank.pivot] / mu
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu)
+    return (*yoke_shape(*frames[-1], slot, rod), bushing)
+
+
+def yoke_mm(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> tuple[complex, complex, complex, complex]:
+    """A yoke at the force position (mm at ``mu``): its slot's ends and its rod's ends (``yoke_at``)."""
+    return yoke_at(fp, link, mu, framed)[:4]
+
+
+def yoke_lines(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> list[complex]:
+    """A yoke's drawn lines as one polyline for the arrows to keep clear of: along its slot, back
+    to the rod's crossing, along the rod to its far end."""
+    from graphplan.model.linkshape import rod_crossing
+    a, b, p, q = yoke_mm(fp, link, mu, framed)
+    x = rod_crossing(p, _unit(q - p), a, _unit(b - a))
+    return [a, b, x, q if abs(q - x) >= abs(p - x) else p]
+
+
+def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str, framed: bool = True) -> None:
+    """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
+    from graphplan.model.linkshape import rod_stubs, slot_outline
+    a, b, p, q = yoke_mm(fp, link, mu, framed)
+    rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
+    rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
+    body = fp.ks.kin.bodies[link]
+    own = [complex(body.at(w)[0][0]) / mu for w in fp.ks.mech.links[link].local.values()]
+    for f, z in rod_stubs(p, _unit(q - p), own):
+        rec.segment(_pt(f), _pt(z), role="link", layer="mechanism", step=step)
+
+
+SLIDE_ARM_ASIDE_MM = 4.0   # a sliding pair's reaction's arm drawn this far beside the guide's line
+
+
+def _slide_arm(rec: Record, at: complex, line: complex, u: complex, name: str, step: str):
+    """The arm h of a sliding pair's reaction (mm): from the pair's point ``at`` along the guide to
+    the reaction's line through ``line`` (its direction ``u``), drawn ``SLIDE_ARM_ASIDE_MM`` aside
+    on the side away from the arrow with extension lines from both ends (it lies on the rod). The
+    spot and side for its letter, or None where it is shorter than a millimetre (on the point)."""
+    if abs(line - at) < 1.0:
+        return None
+    side = -u * SLIDE_ARM_ASIDE_MM
+    rec.segment(_pt(at + side), _pt(line + side), role="construction", layer="construction", step=step,
+                text=f"{arm_symbol(name)} = {abs(line - at):.1f} mm to {name}")
+    for z in (at, line):
+        rec.segment(_pt(z), _pt(z + side * 1.25), role="projection", layer="construction", step=step)
+    return 0.5 * (at + line) + side, name, side
+
+
+def slide_arm_text(a, lang: str = "uk", h: str | None = None) -> str:
+    """One line (markup) for a sliding pair's reaction's arm (``forceplans.SlideArm``): h_{R03} (or
+    ``h``) in mm and m from its point along the guide, the closed form's and δ — the sheet's and the
+    terminal's words."""
+    return word("fs slide arm", lang, h=h or arm_symbol(a.key), mm=num(abs(a.h_mm), lang), m=num(a.value, lang),
+                p=a.point, e=num(a.analytic, lang), d=_pct(a.error_pct, lang), r=force_symbol(a.key, lang),
+                g=a.group, n=a.link)
+
+
+def _slot_sides(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+    """A yoke's slot as drawn (its closed outline, mm): the arrows are laid clear of its sides."""
+    from graphplan.model.linkshape import slot_outline
+    a, b, _, _ = yoke_mm(fp, link, mu)
+    return slot_outline(a, b)

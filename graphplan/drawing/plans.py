@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import cmath
 import math
+from dataclasses import dataclass
 
 from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
-from graphplan.model.linkshape import extra_points, outline_names, slot_line
+from graphplan.model.linkshape import (BUSH_GAP_MM, BUSH_HALF_MM, extra_points, outline_names, rod_crossing,
+                                        rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -37,14 +39,19 @@ def guide_carriers(sc: Scheme) -> dict[str, list[str]]:
 
 
 def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "link",
-               step: str = "") -> None:
-    """The links of one position: bars between joints, slotted links along their guides, blocks."""
+               step: str = "", yokes: dict[str, YokeSpans] | None = None) -> None:
+    """The links of one position: bars between joints, slotted links along their guides, blocks;
+    a yoke as one body (``draw_yoke``: its slot and rod, its spans ``yokes`` kept over the turn)."""
     mech = sc.mech
     pts = joints_at(sc, lay)
     width = None if thick else 0.3
     carriers = guide_carriers(sc)
     for name, link in mech.links.items():
         joints = list(link.joints)
+        if yoke_guide(mech, name) is not None:
+            draw_yoke(rec, sc, lay, name, (yokes or {}).get(name) or yoke_spans(sc, [lay], name), thick,
+                      role, step)
+            continue
         if name in carriers:
             # a slotted link: its guide line over its joints and the blocks sliding in it
             # (through all its own points: the coulisse O2A3 runs to its end B)
@@ -72,7 +79,8 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
             rec.point(_pt(pts[j]), role="joint" if thick else "dot", layer="mechanism")
         if thick:
             for p in link.local:
-                if p not in link.joints and p in pts and not sc.fixed(p) and p != next(iter(link.local)):
+                if p not in link.joints and p in pts and not sc.fixed(p) and (
+                        p != next(iter(link.local)) or yoke_guide(mech, name) is not None):
                     rec.point(_pt(pts[p]), role="dot", layer="mechanism")
 
 
@@ -242,7 +250,7 @@ def support(rec: Record, X: complex, direction: float, step: str = "") -> None:
 
 
 def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layout] | None = None,
-               drawn: list[Layout] | None = None) -> list[list[complex]]:
+               drawn: list[Layout] | None = None, yokes: dict[str, YokeSpans] | None = None) -> list[list[complex]]:
     """Fixed pivots with their supports (each where no link of the ``drawn`` positions passes,
     else on the side away from the links leaving it at the ``thick`` positions, below where that
     is free: ``frame_support``), fixed guides with hatching over the slider's travel. Returns the
@@ -262,6 +270,11 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
             continue
         sliders = [n for n, l in mech.links.items() if l.slides_on == gname]
         if not sliders:
+            continue
+        bushings = [(yokes or {}).get(n) for n in sliders]
+        if all(b is not None and b.bushing is not None for b in bushings):
+            for b in bushings:          # a yoke's rod: its bushing beside the crank, not a wall through it
+                draw_bushing(rec, *b.bushing, step=f"guide {gname}")
             continue
         base = where_frame(sc, lay0, g.through)
         u = cmath.exp(1j * g.angle)
@@ -344,10 +357,11 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     every = [p.layout for p in plans.positions]
     thick_keys = set(plans.accel_keys) or {0}
     thick_lays = [l for l in every if l.key in thick_keys]
-    outlines = draw_frame(rec, sc, every + plans.extremes, thick_lays, drawn=every + plans.extremes)
     crank = mech.crank
     O = where(sc, regular[0], FRAME, crank.pivot)
     r = crank.length / plans.mu_l
+    yokes = {n: yoke_spans(sc, every + plans.extremes, n, O, r) for n in mech.links if yoke_guide(mech, n)}
+    outlines = draw_frame(rec, sc, every + plans.extremes, thick_lays, drawn=every + plans.extremes, yokes=yokes)
     rec.circle(_pt(O), r, role="trajectory", layer="construction", step="the crank pin's circle")
     for lay in every:
         draw_construction(rec, lay)
@@ -369,13 +383,13 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     extremes = [lay for lay in plans.extremes
                 if all(abs((lay.phi - p.phi + 180.0) % 360.0 - 180.0) > 1e-6 for p in plans.positions)]
     for lay in extremes:
-        draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position")
+        draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position", yokes=yokes)
     for lay in every:
         if lay.key not in thick_keys:
-            draw_links(rec, sc, lay, thick=False, step=f"position {lay.key}")
+            draw_links(rec, sc, lay, thick=False, step=f"position {lay.key}", yokes=yokes)
     for lay in every:
         if lay.key in thick_keys:
-            draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}")
+            draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}", yokes=yokes)
     break_under_supports(rec, outlines)
     # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
     late: list[LabelRequest] = []
@@ -701,7 +715,11 @@ def link_shapes(sc: Scheme, lay: Layout) -> dict[str, list[complex]]:
     pts = joints_at(sc, lay)
     out = {}
     for name, link in sc.mech.links.items():
-        if link.slides_on is not None and len(link.joints) <= 1:
+        if yoke_guide(sc.mech, name) is not None:
+            a, b, p, q = yoke_parts(sc, lay, name, yoke_spans(sc, [lay], name))
+            x = rod_crossing(p, (q - p) / abs(q - p), a, (b - a) / abs(b - a))
+            out[name] = [a, b, x, q if abs(q - x) >= abs(p - x) else p]
+        elif link.slides_on is not None and len(link.joints) <= 1:
             centre = pts[next(iter(link.local))]
             u = lay.poses[name].direction(0.0)
             w, h = BLOCK
@@ -833,3 +851,83 @@ def velocity_records(plans: Plans) -> dict[int, Record]:
 def acceleration_records(plans: Plans) -> dict[int, Record]:
     """The acceleration plans, keyed by position, the pole π at (0, 0)."""
     return plan_records(plans, "acceleration")
+
+
+# -- a yoke (a slotted crosshead on a rod, no revolute joint of its own) drawn as one rigid body ----
+
+@dataclass(frozen=True)
+class YokeSpans:
+    """A yoke's drawn spans in its own frame (mm), the same at every position (one rigid body):
+    the slot along its guide from the guide's point, the rod along its axis from its point D; and
+    the frame's bushing on the rod's axis (its middle, unit direction; None: no bushing)."""
+    slot: tuple[float, float]
+    rod: tuple[float, float]
+    bushing: tuple[complex, complex] | None = None
+
+
+def _yoke_frame(sc: Scheme, lay: Layout, name: str):
+    """A yoke's drawing frame at a position: (D, rod's unit, slot guide's point, slot's unit)."""
+    mech = sc.mech
+    link = mech.links[name]
+    g = yoke_guide(mech, name)
+    pose = lay.poses[name]
+    return pose.at(link.local[next(iter(link.local))]), pose.direction(0.0), pose.at(g.through), pose.direction(g.angle)
+
+
+def yoke_spans(sc: Scheme, layouts: list[Layout], name: str, O: complex | None = None,
+               r: float = 0.0) -> YokeSpans:
+    """The yoke's spans over the drawn positions (``linkshape.yoke_body``): the slot over the
+    block's travel (and the rod's crossing), the rod from the slot to its farthest point and through
+    its bushing, which stands on the rod's axis clear of the crank pin's circle (about ``O``, radius
+    ``r`` mm) and of the slot's sweep (the textbook's Scotch yoke: its rod's guide beside the crank,
+    not a wall through it)."""
+    mech = sc.mech
+    link = mech.links[name]
+    g = yoke_guide(mech, name)
+    sliders = [s for s, other in mech.links.items() if other.slides_on == g.name]
+    frames = [_yoke_frame(sc, lay, name) for lay in layouts]
+    blocks = [[lay.poses[s].at(z) for s in sliders for z in mech.links[s].local.values()] for lay in layouts]
+    own = [[lay.poses[name].at(z) for z in link.local.values()] for lay in layouts]
+    guide = mech.guides[link.slides_on]
+    line = None
+    if guide.body == FRAME:
+        lay0 = layouts[0]
+        line = (where_frame(sc, lay0, guide.through), lay0.poses[FRAME].direction(guide.angle))
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, r)
+    return YokeSpans(slot, rod, bushing)
+
+
+def yoke_parts(sc: Scheme, lay: Layout, name: str, spans: YokeSpans) -> tuple[complex, complex, complex, complex]:
+    """The yoke at a position (mm): its slot's ends and its rod's ends (``linkshape.yoke_shape``)."""
+    ref, ur, base, us = _yoke_frame(sc, lay, name)
+    return yoke_shape(ref, ur, base, us, spans.slot, spans.rod)
+
+
+def draw_yoke(rec: Record, sc: Scheme, lay: Layout, name: str, spans: YokeSpans, thick: bool,
+              role: str = "link", step: str = "") -> None:
+    """A yoke as one rigid body: its slot (drawn as a slot, its two sides, on a thick position; its
+    line on a thin one) and its rod from the slot through D to its end."""
+    a, b, p, q = yoke_parts(sc, lay, name, spans)
+    width = None if thick else 0.3
+    if thick:
+        rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role=role, layer="mechanism", step=step)
+    else:
+        rec.segment(_pt(a), _pt(b), role=role, width=width, layer="mechanism", step=step)
+    rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
+    pose = lay.poses[name]
+    for f, z in rod_stubs(p, (q - p) / abs(q - p), [pose.at(w) for w in sc.mech.links[name].local.values()]):
+        rec.segment(_pt(f), _pt(z), role=role, width=width, layer="mechanism", step=step)
+
+
+def draw_bushing(rec: Record, mid: complex, u: complex, step: str = "") -> None:
+    """The frame's bushing a rod slides in: its two walls ``BUSH_GAP_MM`` either side of the rod's
+    axis, ``2·BUSH_HALF_MM`` long, hatched on their outer sides (GOST 2.770's fixed guide)."""
+    for s in (1.0, -1.0):
+        n = 1j * u * s
+        a, b = mid - BUSH_HALF_MM * u + BUSH_GAP_MM * n, mid + BUSH_HALF_MM * u + BUSH_GAP_MM * n
+        rec.segment(_pt(a), _pt(b), role="frame", layer="frame", step=step)
+        t = -BUSH_HALF_MM
+        while t <= BUSH_HALF_MM - 2.0 + 1e-9:
+            z = mid + t * u + BUSH_GAP_MM * n
+            rec.segment(_pt(z + 0.35 * n), _pt(z + 2.5 * n + 2.0 * u), role="hatch", layer="frame", step=step)
+            t += 4.0

@@ -114,6 +114,7 @@ class Measured:
     vector: complex      # the measured force on the higher-numbered link, N (as ``key`` reads it)
     name: str = ""       # R<from><to> as the group it was found in bears it: <to> in that group
     acting: complex = 0j  # the measured force on that group's link (``name``), N
+    line: complex | None = None   # a sliding pair's reaction: a point of its line of action found by ΣM = 0 (m)
 
 
 @dataclass
@@ -300,7 +301,8 @@ class _Plans:
         t = complex(truth.force[0])
         v = _orient(self.mech, frm, on, force)
         return Measured(key, mm, abs(v), angle_deg(v), abs(t), angle_deg(t),
-                        error_pct(abs(v), abs(t), self.d.scale), v, reaction_key(self.mech, frm, on), force)
+                        error_pct(abs(v), abs(t), self.d.scale), v, reaction_key(self.mech, frm, on), force,
+                        couple_line if pair is not None and pair.kind == "P" else None)
 
     def key_of(self, group: str, pair) -> str:
         for k, r in self.ks.reactions.items():
@@ -599,3 +601,39 @@ def _draw(plan, st: Study) -> None:
     for d in st.structure.dyads:
         plan.group(d)
     plan.finish()
+
+
+@dataclass(frozen=True)
+class SlideArm:
+    """Where a sliding pair's reaction acts on its slider (the yoke's R03, a slider's R03): its
+    line's distance h from the pair's point along the guide, from the slider's ΣM = 0 with the arms
+    measured (``h_mm`` at the group's μl, ``value`` m) against the closed form's (``analytic``, m:
+    ``Reaction.line_point``, h = M/(g × R))."""
+    key: str
+    point: str
+    group: str
+    h_mm: float
+    value: float
+    analytic: float
+    error_pct: float | None
+    link: int = 0        # the number of the link it acts on (3: the yoke)
+
+
+def slide_arms(fp: ForcePlans) -> list[SlideArm]:
+    """The arm of every sliding pair's reaction found on a group (the RPP group's R03 from ΣM = 0 of
+    the yoke, the RRP group's R03 from the slider's), graphical and exact."""
+    out = []
+    for gp in fp.groups:
+        mu = gp.mu_l or fp.mu_l
+        for key, m in gp.reactions.items():
+            r = fp.ks.reactions[key]
+            if m.line is None or r.guide is None or m.value == 0:
+                continue
+            g, at = complex(r.guide[0]), complex(r.at[0])
+            h = float(dot(m.line - at, g))
+            exact = float(dot(complex(r.line_point()[0]) - at, g))
+            if abs(h) < 1e-9 and abs(exact) < 1e-9:      # through the pair's point (a slider's R03 at B)
+                continue
+            out.append(SlideArm(key, r.point, gp.label, h / mu, h, exact, error_pct(h, exact, mu),
+                                number(fp.ks.mech, r.on)))
+    return out

@@ -121,6 +121,17 @@ def chosen_length(value: float, length_mm: float, reads_mm: float = 0.0) -> floa
     return series_value(math.floor(raw / 10.0 ** k * (1 + 1e-12)), k)
 
 
+GOST_LENGTH_BETWEEN = (15.0, 75.0)   # GOST 2.302 draws 1.5, 7.5 × 10^k only as 1:15 and 1:75 (μl 0.015, 0.075 m/mm)
+
+
+def gost_length(mu_l: float) -> bool:
+    """Whether μl (m/mm) is a drawing scale of GOST 2.302: the series' 1, 2, 2.5, 4, 5 × 10^k
+    (1:2.5, 2:1, 4:1 …: the series holds its reciprocals) or the reductions 1:15 and 1:75 — not
+    0.00075 m/mm (1.333:1) nor 0.0015 (1:1.5)."""
+    ratio = mu_l * 1000.0
+    return on_series(mu_l) or any(abs(ratio - g) <= 1e-9 * g for g in GOST_LENGTH_BETWEEN)
+
+
 def next_round(mu: float) -> float:
     """The next finer round coefficient (a larger drawing): the series' 1, 2, 2.5, 4, 5 and GOST
     2.302's 1.5, 7.5 × 10^k — 0.04 → 0.025, 0.02 → 0.015 → 0.01."""

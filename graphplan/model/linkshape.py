@@ -113,3 +113,119 @@ def _inside(z: complex, polygon: list[complex]) -> bool:
             if x > z.real:
                 inside = not inside
     return inside
+
+
+SLOT_HALF_MM = 3.5    # a yoke's slot drawn as its two sides this far either side of its line (the 5 mm block inside)
+SLOT_END_MM = 7.0     # … running this far beyond the block's centre at either end of its travel
+
+
+def yoke_guide(mech, name: str):
+    """A yoke: a link with no revolute joint of its own that slides along a guide (the rod in its
+    bushings) and carries a guide a block slides in (its slot) — the Scotch yoke's slotted
+    crosshead. Its carried guide (model.mechanism.Guide), or None for any other link."""
+    link = mech.links[name]
+    if link.joints or link.slides_on is None:
+        return None
+    for other in mech.links.values():
+        if other.slides_on is not None:
+            g = mech.guides[other.slides_on]
+            if g.body == name:
+                return g
+    return None
+
+
+def rod_crossing(ref: complex, u_rod: complex, base: complex, u_slot: complex) -> complex:
+    """Where a yoke's slot line (through ``base`` along ``u_slot``) crosses its rod's axis (through
+    ``ref`` along ``u_rod``): base + t·u_slot with (base + t·u_slot − ref) × u_rod = 0,
+    t = −(base − ref) × u_rod / (u_slot × u_rod); a slot parallel to the rod: base's foot on it."""
+    def cr(a: complex, b: complex) -> float:
+        return a.real * b.imag - a.imag * b.real
+    den = cr(u_slot, u_rod)
+    if abs(den) < 1e-9:
+        return ref + ((base - ref) * u_rod.conjugate()).real * u_rod
+    return base - cr(base - ref, u_rod) / den * u_slot
+
+
+def yoke_shape(ref: complex, u_rod: complex, base: complex, u_slot: complex, slot: tuple[float, float],
+               rod: tuple[float, float]) -> tuple[complex, complex, complex, complex]:
+    """A yoke drawn as one rigid body (mm): its slot from ``slot`` = (lo, hi) along ``u_slot`` from
+    ``base`` (the guide's point), and its rod along ``u_rod`` from ``rod`` = (lo, hi) off ``ref``
+    (the link's own point D). Returns (slot's ends, rod's ends)."""
+    return (base + slot[0] * u_slot, base + slot[1] * u_slot, ref + rod[0] * u_rod, ref + rod[1] * u_rod)
+
+
+def yoke_spans(along_blocks: list[float], along_crossing: float, along_own: list[float],
+               rod_reach: list[float] = ()) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The yoke's constant spans (mm, in its own frame): the slot over every block position drawn
+    and the rod's crossing with it (``along_blocks``: along the slot from its guide's point),
+    ``SLOT_END_MM`` beyond the outermost; the rod from the crossing (``along_crossing``, along the rod
+    from D) to its farthest own point and to every ``rod_reach`` (a bushing it must pass through)."""
+    slot = (min(along_blocks) - SLOT_END_MM, max(along_blocks) + SLOT_END_MM)
+    every = [along_crossing] + list(along_own) + list(rod_reach)
+    return slot, (min(every), max(every))
+
+
+def slot_outline(a: complex, b: complex, half: float = SLOT_HALF_MM) -> list[complex]:
+    """A slot from ``a`` to ``b`` drawn as its two sides ``half`` mm off its line, closed at the
+    ends (a closed polyline)."""
+    u = (b - a) / abs(b - a) if abs(b - a) > 1e-12 else 1 + 0j
+    n = 1j * u * half
+    return [a - n, b - n, b + n, a + n, a - n]
+
+
+def rod_stubs(ref: complex, u_rod: complex, points: list[complex]) -> list[tuple[complex, complex]]:
+    """A yoke's points off its rod's axis (a centre of mass set aside) joined to the rod: from each
+    one's foot on the axis to it — so that the body stays one piece."""
+    out = []
+    for z in points:
+        d = (z - ref) * u_rod.conjugate()
+        if abs(d.imag) > ON_LINE_MM:
+            out.append((ref + d.real * u_rod, z))
+    return out
+
+
+BUSH_HALF_MM = 8.0     # a yoke's rod bushing (the frame's guide) this long either side of its middle
+BUSH_GAP_MM = 2.0      # … its two walls this far either side of the rod's axis
+BUSH_CLEAR_MM = 4.0    # … this far clear of the crank pin's circle and of the slot's sweep
+ROD_PAST_MM = 3.0      # the rod reaches this far past its bushing's far end
+
+
+def yoke_body(frames: list[tuple[complex, complex, complex, complex]], blocks: list[list[complex]],
+              own: list[list[complex]], guide: tuple[complex, complex] | None = None,
+              O: complex | None = None, r: float = 0.0):
+    """A yoke's constant spans over the positions it is drawn at (mm), one rigid body: at each
+    position its frame ``frames[i]`` = (D, the rod's unit, the slot guide's point, the slot's unit),
+    the blocks' points in its slot ``blocks[i]`` and its own points ``own[i]``. The slot over every
+    block position and the rod's crossing (``yoke_spans``); with the frame's ``guide`` line (point,
+    unit) its rod's bushing on that line on the side of its own points, clear of the crank pin's
+    circle (about ``O``, radius ``r``), of the slot's sweep and of a point off the rod, the rod long
+    enough to stay in it at every position. Returns (slot span, rod span, bushing (middle, unit) or
+    None)."""
+    import math
+
+    def along(z: complex, base: complex, u: complex) -> float:
+        return ((z - base) * u.conjugate()).real
+    slot_at, own_at, feet, cross_rod = [], [], [], 0.0
+    for (ref, ur, base, us), bl, ow in zip(frames, blocks, own):
+        x = rod_crossing(ref, ur, base, us)
+        cross_rod = along(x, ref, ur)
+        slot_at += [along(x, base, us)] + [along(z, base, us) for z in bl]
+        own_at += [along(z, ref, ur) for z in ow]
+        feet.append((x, abs((us.conjugate() * ur).imag)))
+    slot, rod = yoke_spans(slot_at, cross_rod, own_at)
+    if guide is None or O is None:
+        return slot, rod, None
+    gb, ug = guide
+    ur0 = frames[0][1]
+    side = 1.0 if (max(own_at) - cross_rod) * along(gb + ur0, gb, ug) >= 0 else -1.0
+    t_o, off = along(O, gb, ug), abs(((O - gb) * ug.conjugate()).imag)
+    clear_r = r + BUSH_GAP_MM + 2.5          # the circle and the bushing's hatching
+    reach = [side * t_o + math.sqrt(clear_r * clear_r - off * off)] if off < clear_r else []
+    reach += [side * along(x, gb, ug) + (SLOT_HALF_MM + BUSH_GAP_MM) / max(sin, 0.05) for x, sin in feet]
+    for (ref, ur, _, _), ow in zip(frames, own):     # a point set off the rod never runs into it
+        reach += [side * along(z, gb, ug) for _, z in rod_stubs(ref, ur, ow)]
+    near = max(reach) + BUSH_CLEAR_MM
+    mid = gb + side * (near + BUSH_HALF_MM) * ug
+    far = mid + side * (BUSH_HALF_MM + ROD_PAST_MM) * ug
+    _, rod = yoke_spans(slot_at, cross_rod, own_at, [along(far, ref, ur) for ref, ur, _, _ in frames])
+    return slot, rod, (mid, ug)

@@ -43,6 +43,10 @@ def forces_json(fp) -> dict[str, Any]:
                           "error_pct": m.error_pct, "mm": m.mm,
                           "analytic_angle_deg": m.analytic_angle_deg,
                           "kind": ks.reactions[key].kind, "point": ks.reactions[key].point}
+    from graphplan.graphic.forceplans import slide_arms
+    for arm in slide_arms(fp):      # a sliding pair's reaction off its point: its arm along the guide, m
+        reactions[arm.key]["arm"] = {"value": arm.value, "analytic": arm.analytic, "mm": arm.h_mm,
+                                     "error_pct": arm.error_pct}
     inertia = {}
     for key, item in ks.inertia().items():
         inertia[key] = {"force": float(item["force"][0]), "moment": float(item["moment"][0]),
@@ -157,6 +161,10 @@ def forces_table(fp, lang: str = "uk") -> str:
             lines.append("  " + _row([sym(m.name), n(m.mm), n(m.value, 5), fixed((m.angle_deg + turn) % 360, lang, 1),
                                       n(m.analytic, 5), fixed((m.analytic_angle_deg + turn) % 360, lang, 1),
                                       pct(m.error_pct, lang)], rw))
+        from graphplan.drawing.forces import slide_arm_text
+        from graphplan.graphic.forceplans import slide_arms
+        lines += ["  " + plain(slide_arm_text(a, lang, h=f"h({sym(a.key)})")) for a in slide_arms(fp)
+                  if a.group == gp.label]
     lv = fp.lever
     lines += ["", plain(w("lever head", mv=n(lv.mu_v), pa=n(lv.pa_mm)))]
     lw = [10, 6, 10, 8, 12]

@@ -90,7 +90,24 @@ def force_position(st: Study, phi: float, lang: str) -> str:
     (``positions.force_phi_deg``, in the crank's sense) with the crank angle from the x axis —
     "φ = 200° від положення 0 (кут кривошипа 45,71°)"."""
     turn = round(float(st.from_position0(phi)), 9) % 360.0
-    return word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
+    text = word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
+    return text + idle_words(st, phi, lang)
+
+
+def idle_words(st: Study, phi: float, lang: str) -> str:
+    """On the idle stroke, the terminal's words and the resistance that is then nil (review 11 #17):
+    ", idle stroke: P_D = 0"; nothing on the working stroke or without a stroke-bound force."""
+    import numpy as np
+
+    from graphplan.exact.kinetostatics import working_stroke
+    from graphplan.util.words import force_symbol
+    mech = st.mech
+    nil = [f"{force_symbol('P_' + f.point, lang)} = 0" for f in mech.forces if f.stroke == "working"]
+    nil += [f"M_{{{mech.links[m.link].number}}} = 0" for m in mech.moments if m.stroke == "working"]
+    if not nil or bool(np.atleast_1d(working_stroke(st, np.atleast_1d(float(phi))))[0]):
+        return ""
+    nil = ", ".join(nil)
+    return f", {word('fs idle', lang)}: {nil}"
 
 
 SHORT_FORCE_MM = 10.0
@@ -925,6 +942,17 @@ def next_round(mu: float) -> float | None:
     return nxt[0] if nxt else None
 
 
+def next_length(mu_l: float) -> float | None:
+    """``next_round`` for a length scale (the scheme, a group): the next that is a GOST 2.302
+    drawing scale (graphic.scales.gost_length) — 0.001 → 0.0005 (2:1), not 0.00075 (the title
+    block's "1.333:1", review 11 #3); 0.02 → 0.015 (1:15)."""
+    from graphplan.graphic.scales import gost_length
+    nxt = next_round(mu_l)
+    while nxt is not None and not gost_length(nxt):
+        nxt = next_round(nxt)
+    return nxt
+
+
 def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     """A set's sheet its drawings leave mostly empty (their cells under ``FILL_SHARE`` of the field:
     the slotter's and the sieve's scheme alone on sheet 1 of an A3 set, 80 % of its cells blank; a
@@ -965,7 +993,8 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             for fam, i in sorted(growing, key=lambda s: fams[s[0]].rel(mu.get(key_of(*s), mu[s[0]]))):
                 key = key_of(fam, i)
                 base = mu.get(key, mu[fam])
-                nxt = fams[fam].finer(base) if fams[fam].factors else next_round(base)
+                nxt = fams[fam].finer(base) if fams[fam].factors else (
+                    next_length(base) if fam in ("scheme", "groups") else next_round(base))
                 # the scheme never larger than the groups cut from it (review 6 #4)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
                         or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)):

@@ -327,7 +327,48 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     for name, length in lengths:
         rows.append([froms.get(name, name), written(length, real, lang),
                      written(lay_off(length / mu_l, precision), ruler, lang)])
-    return table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
+    notes = []
+    for label, value, kind in yoke_dimensions(st):     # a yoke's slot and its points (review 11 #2)
+        if kind == "angle":
+            deg = f"{num(value, lang)}°"
+            rows.append([label, deg, deg])
+        else:
+            rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
+    for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
+        notes.append(w('dims yoke', n=yoke.strip("{}")))
+    rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
+    return footnoted(rec, notes)
+
+
+def yoke_dimensions(st: Study) -> list[tuple[str, float, str]]:
+    """A yoke's given data (the Scotch yoke's link 3: no joint to measure between): its slot's angle
+    to the rod's guide α (deg), the slot's distance e from its point D along the rod (to where the
+    slot's line crosses the rod's axis) and each of its other points' distance from D (DS3) — as
+    (label, value, "angle" | "length")."""
+    import cmath
+    import math
+
+    from graphplan.model.linkshape import rod_crossing, yoke_guide
+    mech = st.mech
+    out = []
+    for name, link in mech.links.items():
+        g = yoke_guide(mech, name)
+        if g is None:
+            continue
+        n = link.number
+        ref = next(iter(link.local))
+        d = link.local[ref]
+        alpha = math.degrees(g.angle) % 180.0
+        out.append((f"α_{{{n}}}", alpha, "angle"))
+        x = rod_crossing(d, 1 + 0j, g.through, cmath.exp(1j * g.angle))
+        if abs(x - d) > 1e-9:
+            out.append((f"e_{{{n}}}", abs(x - d), "length"))
+        for p, z in link.local.items():
+            if p != ref and abs(z - d) > 1e-9:
+                head = p.rstrip("0123456789")
+                low = f"{head}_{{{p[len(head):]}}}" if head and head != p else p
+                out.append((f"{ref}{low}", abs(z - d), "length"))
+    return out
 
 
 def _pivot_name(p: str) -> str:

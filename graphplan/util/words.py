@@ -248,6 +248,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin max_error": ('Найбільша похибка в таблицях {t}', 'Largest error in tables {t}'),
     "kin max_error_20": ('векторів від 20 мм', 'vectors from 20 mm'),
     "kin subtitle": ('Кінематичний аналіз', 'Kinematic analysis'),
+    "kin dims yoke": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока; e_{{{n}}} — від D до осі паза вздовж штока",
+                      "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide; e_{{{n}}}: from D to the slot's line along the rod"),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
     "kin link": ('ланка', 'link'),
     "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
@@ -643,6 +645,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
     "fs why pa": ("{sym}: короткий відрізок pa на важелі ({mm} мм)", "{sym}: a short pa on the lever ({mm} mm)"),
+    "fs slide arm": ("{h} = {mm} мм: {r} діє на відстані {m} м від {p} уздовж напрямної (точно {e} м, δ = {d} %), "
+                     "з ΣM_{p} = 0 ланки {n} групи {g}",
+                     "{h} = {mm} mm: {r} acts {m} m from {p} along the guide (exact {e} m, δ = {d} %), "
+                     "from ΣM_{p} = 0 of link {n} of group {g}"),
     "fs why arms": ("{sym}: плечі, прочитані лінійкою до {p} мм", "{sym}: arms read with a {p} mm ruler"),
     "fs idle": ("холостий хід", "idle stroke"),
     "fs working": ("робочий хід", "working stroke"),
