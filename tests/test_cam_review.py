@@ -58,9 +58,9 @@ def test_a_phase_that_misses_its_closing_is_redrawn_with_more_divisions():
     cam = build(data, "<cam_rocking without divisions>")
     assert not cam.divisions_given and cam.divisions == 8
     sol = solve(cam)
-    size, prof, height, accel, h1, h2 = cam_sizes(sol, form("A1"), 8)
+    size, prof, height, accel, h1, h2, series = cam_sizes(sol, form("A1"), 8)
     first = construct(sol, 8, 0.5, size=size, profile_size=prof, height=height, accel=accel, H1=h1, H2=h2,
-                      measure=False)
+                      measure=False, series=series)
     assert max(abs(x) for x in closing_errors(sol, first)) > 0.02 * cam.stroke / first.mu_s + 0.25
     g = construct_on(sol, form("A1"))
     n = len(g.phi) // 2 - 1
@@ -88,7 +88,7 @@ def test_divisions_the_command_line_names_are_kept_and_warned_with_how_many_woul
     assert better > 6
     sizes = cam_sizes(sol, form("A1"), 6)
     h = construct(sol, better, 0.5, size=sizes[0], profile_size=sizes[1], height=sizes[2], accel=sizes[3],
-                  measure=False)
+                  H1=sizes[4], H2=sizes[5], measure=False, series=sizes[6])
     assert max(abs(x) for x in closing_errors(sol, h)) <= allowed_mm(sol, h)
 
 

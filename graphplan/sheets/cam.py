@@ -648,7 +648,9 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     # the table and the notes as kept_together laid them (the notes may be wrapped to the table's width)
-    last = [leaf for leaf, _ in laid[-1] if leaf.name in ("table", "notes")] or [tab, nts]
+    # (from every sheet: where the notes took a sheet after the table's, the table is not on the last —
+    # taken from the last alone, it was dropped: the reviewer's knife-edge cam's A3 set had no Table 1)
+    last = [leaf for page in laid for leaf, _ in page if leaf.name in ("table", "notes")] or [tab, nts]
     # as tall as the room the table and the notes leave (an A3 set: 70 mm under them; review 9,
     # finding 2 — the trials stopped at 70 % of 130 mm, and ϑ(φ) went nowhere), as wide as the sheet
     # — of the widths tried, the one that draws it tallest (a fine μ_ϑ at a coarse μ_φ over a flat ϑ)
