@@ -106,8 +106,8 @@ def test_the_rocking_a3_set_draws_the_pressure_angle_beside_the_profile(tmp_path
                                 "pressure_angle_deg = { rise = 40, return = 50 }", "rpm = 100", 'direction = "ccw"']),
                      encoding="utf-8")
     assert main(["sheet", str(scene), "--format", "A3", "-o", str(tmp_path / "s.svg")]) == 0
-    sheets = sorted(tmp_path.glob("s*.svg"))
-    assert len(sheets) == 3
+    sheets = [tmp_path / name for name in ("s.svg", "s-2.svg", "s-3.svg")]
+    assert sorted(tmp_path.glob("s*.svg")) == sorted(sheets)
     texts = [p.read_text(encoding="utf-8") for p in sheets]
     holding = [k for k, t in enumerate(texts) if "Pressure angle" in t]
     assert holding == [1] and "Phase diagram" in texts[1] and "Cam profile" in texts[1]
