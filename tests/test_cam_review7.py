@@ -92,9 +92,10 @@ def test_each_phase_diagram_number_reads_as_its_own_dot(scene):
 
 
 @pytest.mark.slow
-def test_the_rocking_a3_set_draws_the_pressure_angle_on_its_table_sheet(tmp_path):
-    """Review 9, finding 2: the A3 set of the reviewer's rocking cam carries ϑ(φ) as the A1 does, on
-    the table's sheet (the room under the notes), in three sheets."""
+def test_the_rocking_a3_set_draws_the_pressure_angle_beside_the_profile(tmp_path):
+    """Review 9, finding 2: the A3 set of the reviewer's rocking cam carries ϑ(φ) as the A1 does, in
+    three sheets — under the phase diagram, beside the profile (issue 32: that sheet stood 63 %
+    empty), Table 1 and the notes on the last."""
     from graphplan.cli.main import main
     scene = tmp_path / "m3.toml"
     scene.write_text("\n".join([f'title = "{M3["title"]}"', f'title_en = "{M3["title_en"]}"', 'lang = "en"', "[cam]",
@@ -105,8 +106,9 @@ def test_the_rocking_a3_set_draws_the_pressure_angle_on_its_table_sheet(tmp_path
                                 "pressure_angle_deg = { rise = 40, return = 50 }", "rpm = 100", 'direction = "ccw"']),
                      encoding="utf-8")
     assert main(["sheet", str(scene), "--format", "A3", "-o", str(tmp_path / "s.svg")]) == 0
-    sheets = sorted(tmp_path.glob("s*.svg"))
-    assert len(sheets) == 3
+    sheets = [tmp_path / name for name in ("s.svg", "s-2.svg", "s-3.svg")]
+    assert sorted(tmp_path.glob("s*.svg")) == sorted(sheets)
     texts = [p.read_text(encoding="utf-8") for p in sheets]
     holding = [k for k, t in enumerate(texts) if "Pressure angle" in t]
-    assert holding and all("Table 1" in texts[k] for k in holding)
+    assert holding == [1] and "Phase diagram" in texts[1] and "Cam profile" in texts[1]
+    assert "Table 1" in texts[2] and "Table 1" not in texts[1]

@@ -104,9 +104,11 @@ def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pr
 
 
 @pytest.mark.slow
-def test_an_a3_sets_table_sheet_carries_the_pressure_diagram():
-    """examples/cam_translating.toml on A3: the third sheet (Table 1 and the notes) stood half blank;
-    the pressure angle's diagram goes there at 2 °/mm or finer, no fourth sheet for it."""
+def test_an_a3_set_carries_the_pressure_diagram_beside_the_profile():
+    """examples/cam_translating.toml on A3: the third sheet (Table 1 and the notes) stood half blank,
+    then the profile's (61 %, issue 32): the pressure angle's diagram goes under the phase diagram
+    beside the profile at 2 °/mm or finer, Table 1 in GOST 2.304's 3.5 mm letters on the third, no
+    fourth sheet for either."""
     from conftest import example
     from graphplan.sheets.cam import build_cam_sheet
     from graphplan.sheets.compose import SheetOptions
@@ -114,5 +116,5 @@ def test_an_a3_sets_table_sheet_carries_the_pressure_diagram():
     sheet = build_cam_sheet(example("cam_translating"), form("A3"), SheetOptions(lang="uk", sheet="cam"))
     pages = [{p.name: p for p in page.placed} for page in sheet.pages]
     assert len(pages) == 3
-    assert {"table", "notes", "pressure"} <= set(pages[-1])
-    assert pages[-1]["pressure"].record.scales["mu_theta"] <= 2.0
+    assert set(pages[1]) == {"phase", "pressure", "profile"} and set(pages[-1]) == {"table", "notes"}
+    assert pages[1]["pressure"].record.scales["mu_theta"] <= 2.0

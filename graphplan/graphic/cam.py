@@ -45,6 +45,15 @@ def nice(mu: float) -> float:
     return min(m for m in series_around(mu) if m >= mu * (1 - 1e-12))
 
 
+def series_phi(mu_phi: float, rad: bool = True) -> float:
+    """The standard μ_φ (rad/mm) at or coarser than ``mu_phi``: of the series in °/mm (1, 2, 2.5, 4,
+    5·10^k °/mm: 1 °/mm is the lab's μ_φ = 2π/360 mm) and, ``rad``, of the series in rad/mm
+    (0,02 рад/мм) the finer — the abscissa as long as the zone lets it be, its scale one a reader
+    takes off it (the A1 sheet's 1,15 °/mm asked for 2 °/mm in degrees alone, half its length)."""
+    deg = math.radians(nice(math.degrees(mu_phi)))
+    return min(deg, nice(mu_phi)) if rad else deg
+
+
 @dataclass
 class CamConstruction:
     """The drawn construction: the division turns, the drawn ordinates (mm) and what they read."""
@@ -135,7 +144,7 @@ def pole_distance(h: float) -> float:
 def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: float | None = None,
               H2: float | None = None, L: float | None = None, size: float = 1.0,
               profile_size: float = 1.0, height: float | None = None, measure: bool = True,
-              accel: float | None = None, series: bool = False) -> CamConstruction:
+              accel: float | None = None, series: bool | str = False) -> CamConstruction:
     """The graphical construction of ``sol``'s cam with ``n`` intervals a phase (the scene's by default),
     read with a ruler of ``precision`` mm. ``size`` enlarges the diagrams (L, the tallest ordinate and
     the stroke drawn) and ``profile_size`` the profile, each scale then the standard one at or above
@@ -143,7 +152,8 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     (default ``size``) enlarges the ordinates alone, ``accel`` (default ``height``) those of d²s/dφ²
     alone (μ_s kept: the poles move out, ds/dφ grows as its square root). ``measure=False`` leaves R0 unmeasured (NaN):
     a trial of the drawings' sizes. ``series``: the scales a drawing's reader takes off it from the
-    standard series (GOST 2.302; the lab's 1, 2, 2.5, 4, 5·10^k) — μ_φ in °/mm and μ_s —, the poles
+    standard series (GOST 2.302; the lab's 1, 2, 2.5, 4, 5·10^k) — μ_φ in °/mm (``series="rad"``: or in
+    rad/mm, series_phi) and μ_s —, the poles
     whole millimetres and μ_a, μ_v the derived ones (μ_a = μ_s/(μ_φ²·H1·H2), μ_v = μ_a·μ_φ·H1: the
     a-diagram about ``accel``'s height); else μ_a standard and μ_s derived."""
     cam = sol.cam
@@ -154,8 +164,8 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     accel = height if accel is None else accel
     mu_phi = 2 * math.pi / L              # the turn's; the diagrams drawn over the working angle φ_р alone,
     #                                       its abscissa L_р = φ_р/μ_φ (the lab's μ_φ = φ_р/L_р)
-    if series:                            # μ_φ of the series in °/mm, at or coarser than L asks (no longer)
-        mu_phi = math.radians(nice(360.0 / L))
+    if series:                            # μ_φ of the series, at or coarser than L asks (no longer)
+        mu_phi = series_phi(mu_phi, rad=series == "rad")
     fine = np.linspace(0.0, 360.0, 7201)
     _, _, a_fine = motion(cam, fine)
     peak = float(np.max(np.abs(a_fine))) or 1.0
@@ -321,10 +331,16 @@ def close_phases(s_mm: np.ndarray, phase: np.ndarray, stroke_mm: float, precisio
     return out, (errors[0], errors[1])
 
 
-def errors_pct(graphical: np.ndarray, exact: np.ndarray, scale: float) -> list[float | None]:
-    """The lab's percent error, None where the exact value is below 1 % of the quantity's largest."""
+SHORT_DIVISIONS = 2    # an ordinate under this many ruler divisions: δ not judged (errors_pct)
+
+
+def errors_pct(graphical: np.ndarray, exact: np.ndarray, scale: float, least: float = 0.0) -> list[float | None]:
+    """The lab's percent error, None where the exact value is below 1 % of the quantity's largest or
+    below ``least`` — the value whose ordinate is SHORT_DIVISIONS ruler divisions (2·0.5 mm·μ): read
+    to half a division, a 0.4 mm ordinate is 0.5 mm, +25 %, and a 1 mm one ±25 %; a δ there says
+    how short the ordinate is, not how well the construction was drawn, and the table prints "—"."""
     out = []
     for g, e in zip(np.asarray(graphical, float), np.asarray(exact, float)):
-        pct = 100.0 * (g - e) / abs(e) if abs(e) >= 0.01 * scale else None
+        pct = 100.0 * (g - e) / abs(e) if abs(e) >= max(0.01 * scale, least) * (1 - 1e-12) else None
         out.append(None if pct is None else (0.0 if abs(pct) < 1e-9 else float(pct)))   # round-off is 0
     return out

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from graphplan.exact.cam import Solution
-from graphplan.graphic.cam import CamConstruction, errors_pct
+from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, errors_pct
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
@@ -31,8 +31,9 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
     unit = math.degrees(1.0) if cam.rocking else 1.0        # a rocking follower's angles in degrees
     s_scale = cam.stroke
     v_scale = float(np.max(np.abs(sol.at(np.linspace(0, 360, 3601))["v"])))
-    es = errors_pct(g.s, ex["s"], s_scale)
-    ev = errors_pct(g.v, ex["v"], v_scale)
+    # no δ where the exact ordinate is under two ruler divisions (graphic.cam.errors_pct)
+    es = errors_pct(g.s, ex["s"], s_scale, SHORT_DIVISIONS * g.precision * g.mu_s)
+    ev = errors_pct(g.v, ex["v"], v_scale, SHORT_DIVISIONS * g.precision * g.mu_v)
     et = errors_pct(g.theta, ex["theta"], max(cam.allowed))
     positions = []
     for k, phi in enumerate(g.phi):
@@ -271,6 +272,27 @@ def _divisions_uk(k: int) -> str:
     return "поділок"
 
 
+def short_ordinates(doc: dict) -> bool:
+    """Whether Table 1 leaves a δ out ("—") for a value that is not zero: its ordinate shorter than
+    the ruler's SHORT_DIVISIONS divisions (graphic.cam.errors_pct)."""
+    key = "_deg" if doc["follower"] == "rocking" else "_m"
+    return any(p["error_pct"][q] is None and p["exact"][q + key] != 0
+               for p in doc["positions"] for q in ("s", "ds_dphi"))
+
+
+def short_note(doc: dict, lang: str) -> str:
+    """The notes' line saying why a δ is "—": the value zero or its ordinate under two ruler
+    divisions, where half a division read is a quarter of it or more (the lab judges δ against 5 %)."""
+    step = doc.get("precision_mm", 0.5)
+    least = num(SHORT_DIVISIONS * step, lang, 3)
+    half = num(step / 2, lang, 3)
+    if lang == "uk":
+        return (f"«—» у стовпцях δ: значення нульове або його ордината коротша за {SHORT_DIVISIONS} поділки "
+                f"лінійки ({least} мм) — відлік з точністю ±{half} мм дає тут понад 25 %, δ не оцінюється")
+    return (f"“—” in the δ columns: the value is zero or its ordinate is under {SHORT_DIVISIONS} ruler divisions "
+            f"({least} mm) — read to ±{half} mm it errs by over 25 % there, δ is not judged")
+
+
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     """The terminal's report: the data, the base radius exact and measured, the per-division table."""
     w = WORDS[lang]
@@ -289,6 +311,8 @@ def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
     for r in rows:
         lines.append("  ".join(x.rjust(wd) for x, wd in zip(r, widths)).replace("-", "−"))
+    if short_ordinates(doc):
+        lines += ["", plain(short_note(doc, lang))]
     warnings = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
     if warnings:
         lines += ["", w["warn"] + ":"] + [f"  - {x}" for x in warnings]

@@ -13,7 +13,7 @@ from graphplan.exact.cam import solve
 from graphplan.graphic.cam import POLE_MM, closing_warning, construct
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
-from graphplan.report.cam import cam_json, table_columns
+from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       later_keep, note_block)
 from graphplan.sheets.form import Form, table
@@ -76,6 +76,8 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     lines += [("Попередження: " if lang == "uk" else "Warning: ") + escape(x) for x in w]
     cols = table_columns(doc, lang)          # a "*" in Table 1 (δ worked out from its printed values)
     marked = any(c.endswith("*") for c in cols["ds"] + cols["dv"])
+    if short_ordinates(doc):
+        lines.append(short_note(doc, lang))
     if marked:
         lines.append("* — " + ("похибка понад 5 %: коротка ордината (кілька мм) або мало поділок"
                                if lang == "uk" else "an error past 5 %: a short ordinate (a few mm) or few "
@@ -270,8 +272,11 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     ``accel``): the largest common size whose drawings (at the standard scales that size asks) fit the
     sheet in one row above the table and the notes — in both languages —, then the profile, the main
     drawing, then the diagrams' ordinates grown while they fit, then the d²s/dφ² and ds/dφ
-    diagrams alone (μ_s kept) into the height left. When nothing fits one sheet: a set of sheets,
-    each drawing on its own (set_sizes)."""
+    diagrams alone (μ_s kept) into the height left. The scales of the series, as a set's (construct's
+    ``series``; issue 32: the A1 sheet printed μ_s = 0,0002511 м/мм, μ_φ = 0,02014 рад/мм), μ_φ in
+    °/mm or rad/mm (graphic.cam.series_phi: 0,02 рад/мм where 1 °/mm is too long and 2 °/mm half
+    the zone); the tuple's seventh item says so. When nothing fits one sheet: a set of sheets, each
+    drawing on its own (set_sizes)."""
     region = field_of(f)
 
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
@@ -299,7 +304,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False,
              poles: tuple = (None, None)) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
-                      H1=poles[0], H2=poles[1])
+                      H1=poles[0], H2=poles[1], series="rad")
         for lang in ("uk", "en"):
             leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
@@ -309,7 +314,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             return _profile_largest(drawing("profile", profile_drawing, (g.mu_l,), g).bounds(),
                                     drawing("phase", phase_diagram, (g.mu_s, g.mu_l), g).bounds())
         return True
-    g0 = construct(sol, n, precision, measure=False)
+    g0 = construct(sol, n, precision, measure=False, series="rad")
     for lang in ("uk", "en"):              # the table and the notes alone higher than the field: a set
         _, tab, nts, doc = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
@@ -334,52 +339,19 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         # drawn over the working angle only, the diagrams leave their column's width part blank
         longer = [x for x in SIZES if x > k]
         k = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, series="rad")
     h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
-    def room(poles) -> tuple[int, float]:
-        """How much smaller than the largest Table 1 is drawn (_rows_of_8: the index in TABLE_SIZES, the
-        larger of the two languages') and the height (mm) the room under the phase diagram leaves the
-        pressure angle's diagram under the notes (with_pressure), the lesser of the two languages (inf
-        where the notes stand elsewhere)."""
-        g_ = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka,
-                       H1=poles[0], H2=poles[1])
-        least, smaller = math.inf, 0
-        for lang in ("uk", "en"):
-            leaves = [leaf("diagrams", (g_.mu_phi, g_.mu_a, g_.mu_s, g_.H1, g_.H2, g_.mu_l), g_, lang),
-                      leaf("profile", (g_.mu_l,), g_, lang)]
-            laid = _laid(f, leaves, *fixed_[lang], wrapped[lang])
-            if not _one_sheet(laid):
-                return len(TABLE_SIZES), -math.inf
-            for i, tall in enumerate(tables[lang]):        # Table 1 as _rows_of_8 will draw it
-                again = _laid(f, leaves, tall, fixed_[lang][1], wrapped[lang])
-                if _one_sheet(again):
-                    laid, smaller = again, max(smaller, i)
-                    break
-            else:
-                smaller = len(TABLE_SIZES)
-            boxes = {lf.name: b for lf, b in laid[0]}
-            if {"diagrams", "notes"} <= set(boxes) and _in_hole(boxes):
-                least = min(least, boxes["notes"][1] - GAP - boxes["diagrams"][1])
-        return smaller, least
-    if f.name == "A1" and sol.cam.rocking:     # the ψ diagram alone taller by a shorter H_2 (the field's height has room),
-        b1, b2 = (g.H1, g.H2) if h1 is None else (h1, h2)     # the pressure angle's diagram kept legible
-        table_was, room_was = room((h1, h2))       # Table 1 not drawn smaller for it, nor ϑ(φ) below 2 °/mm
-        keep_room = min(room_was, _pressure_height(sol))
-
-        def kept(h: float) -> bool:
-            table, left = room((b1, h))
-            return table <= table_was and left >= keep_room - 1e-9
-        shorter = _shorter_h2(b2, lambda h: fits(k, kp, kh, ka, True, (b1, h)) and kept(h))
-        if shorter is not None:
-            h1, h2 = b1, shorter
+    # (a rocking follower's ψ diagram is not made taller by a shorter H_2: at series scales μ_ψ is
+    # the series' (kh), and a shorter H_2 would only coarsen μ_{dψ/dφ} and μ_{d²ψ/dφ²})
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
     # sheet's language) are measured once more, and the smallest size taken if they do not fit
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2,
+                  series="rad")
     for lang in ("uk", "en"):
         leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
         if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
             return set_sizes(sol, f, n, precision)
-    return k, kp, kh, ka, h1, h2
+    return k, kp, kh, ka, h1, h2, "rad"
 
 
 def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
@@ -397,28 +369,6 @@ def _poles(H1: float, H2: float, fits) -> tuple[float | None, float | None]:
         trials.append((float(h1), h2))
     best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
     return trials[best] if best is not None else (None, None)
-
-
-def _pressure_height(sol) -> float:
-    """The room (mm) the pressure angle's diagram takes at 2 °/mm with its letters and caption
-    (pressure_scales' 18 mm, the caption's two lines 14 mm): under it the diagram reads poorly."""
-    import numpy as np
-    cam = sol.cam
-    rise, far, ret, _ = cam.phases
-    theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
-    span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
-    return span / 2.0 + 18.0 + 14.0
-
-
-def _shorter_h2(H2: float, fits) -> float | None:
-    """The s diagram alone taller where the field's height has room for it (the A1 column of
-    diagrams stood 76 mm short of its field's height, the cam sheet 40 % empty): μ_s = μ_{ds/dφ}·μ_φ·H_2
-    finer by a shorter pole distance H_2 (a whole millimetre, not under the lab's 15 mm), μ_φ, μ_{ds/dφ}
-    and μ_{d²s/dφ²} kept. The shortest H_2 at which the drawings still fit (``fits(H2)``: a translating
-    follower's phase diagram, at μ_s, grows with it), None when none shorter does."""
-    trials = [float(h) for h in range(int(math.ceil(H2)) - 1, int(POLE_MM[0]) - 1, -1)]
-    best = _largest(lambda t: fits(trials[int(t)]), list(range(len(trials))))
-    return trials[best] if best is not None else None
 
 
 def _profile_largest(p: Box, q: Box) -> bool:
@@ -451,7 +401,7 @@ def _taller(k, kp, kh, ka, fits, area) -> tuple[float, float, float]:
 
 def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
     """The area (mm²) of the diagrams with the phase diagram beside them at these sizes."""
-    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka)
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, series="rad")
     d = leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, "en")
     return d.w * d.h
 
@@ -556,7 +506,7 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
         return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         H1=sz[4], H2=sz[5], measure=measure, series=len(sz) > 6 and sz[6])
+                         H1=sz[4], H2=sz[5], measure=measure, series=sz[6] if len(sz) > 6 else False)
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -594,24 +544,24 @@ def notes_alone(page) -> bool:
     return all(leaf.name == "notes" for leaf, _ in page)
 
 
-def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep):
+def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep, later=None):
     """A set's sheets: the drawings, then the table with the notes after it — on one sheet (every
     sheet of a set carries a drawing or a table: the rocking cam's A3 set gave its last sheet to
     ten lines of notes). The notes as laid out where they do not take a sheet alone; else wrapped
     to the width the sheet leaves beside the table (at least the title block's); else under the
-    table, the two one block."""
-    laid = flow([leaves, [tab, nts]], region, keep)
+    table, the two one block. ``later``: the title block of the sheets after the first (flow)."""
+    laid = flow([leaves, [tab, nts]], region, keep, later=later)
     if laid is None or not notes_alone(laid[-1]):
         return laid
     tw = extent(tab)[0]
     width = min(300.0, region[2] - region[0] - tw - GAP)
     if width >= TITLE:
         beside_ = Leaf("notes", record=note_block(lines, width))
-        again = flow([leaves, [tab, beside_]], region, keep)
+        again = flow([leaves, [tab, beside_]], region, keep, later=later)
         if again is not None and not notes_alone(again[-1]) and len(again) <= len(laid):
             return again
     under = Leaf("notes", record=note_block(lines, max(TITLE, tw)))
-    again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep)
+    again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep, later=later)
     return again if again is not None and not notes_alone(again[-1]) else laid
 
 
@@ -698,7 +648,9 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     # the table and the notes as kept_together laid them (the notes may be wrapped to the table's width)
-    last = [leaf for leaf, _ in laid[-1] if leaf.name in ("table", "notes")] or [tab, nts]
+    # (from every sheet: where the notes took a sheet after the table's, the table is not on the last —
+    # taken from the last alone, it was dropped: the reviewer's knife-edge cam's A3 set had no Table 1)
+    last = [leaf for page in laid for leaf, _ in page if leaf.name in ("table", "notes")] or [tab, nts]
     # as tall as the room the table and the notes leave (an A3 set: 70 mm under them; review 9,
     # finding 2 — the trials stopped at 70 % of 130 mm, and ϑ(φ) went nowhere), as wide as the sheet
     # — of the widths tried, the one that draws it tallest (a fine μ_ϑ at a coarse μ_φ over a flat ϑ)
@@ -714,6 +666,42 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
                 best, area = again, (round(leaf.h), leaf.w)
                 break
     return best
+
+
+def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None):
+    """A set's sheets with the pressure angle's diagram ϑ(φ) under the phase diagram, beside the
+    profile, and Table 1 drawn as large as the sheet after them takes (TABLE_SIZES) with the notes:
+    the phase diagram and the profile — the profile at the largest standard scale that fits the
+    sheet alone, the next (1:1 after 1:2) too large — left the profile's sheet 61–65 % empty. The
+    pressure angle read off the phase diagram (R_0 from [ϑ]) is checked over the turn beside it, and
+    the set reads in order: the law's diagrams, the phase diagram with ϑ(φ), the profile, the table.
+    None where that sheet has no room for ϑ(φ) or the set would take a sheet more."""
+    if laid is None or len(leaves) != 3:
+        return None
+    page = next((pg for pg in laid if {"phase", "profile"} <= {leaf.name for leaf, _ in pg}), None)
+    if page is None:
+        return None
+    phase, profile = leaves[1], leaves[2]
+    w = region[2] - region[0] - profile.w - 2 * GAP
+    h = region[3] - region[1] - phase.h - 3 * GAP
+    if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
+        return None
+    lines = notes(doc, lang, cam)
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6):
+        leaf = pressure_leaf(sol, g, lang, w, h * part)
+        if leaf is None:
+            continue
+        drawings = [leaves[0], Stack([phase, leaf]), profile]
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+            tab = Leaf("table", record=positions_table(doc, lang, row, size))
+            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+            again = kept_together(drawings, tab, lines, nts, region, keep, later)
+            if again is None or len(again) > len(laid) or notes_alone(again[-1]):
+                continue
+            where = [{lf.name for lf, _ in pg} for pg in again]
+            if any({"phase", "pressure", "profile"} <= names for names in where):
+                return again
+    return None
 
 
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
@@ -732,7 +720,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        laid = set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f))
+        laid = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f))
+                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
