@@ -700,6 +700,20 @@ class Velocities:
     ratio_bound: float
     record: Record
 
+    @property
+    def mu_omega(self) -> float:
+        """The plan of angular velocities' scale, (rad/s)/mm: μω = μv/(μl·h) (ωi = segment·μω)."""
+        return self.mu_v / (self.mu_l * self.h)
+
+
+MU_OMEGA = {"uk": "μ_ω = μ_v/(μ_l·h) = {v} (рад/с)/мм", "en": "μ_ω = μ_v/(μ_l·h) = {v} (rad/s)/mm"}
+
+
+def mu_omega_text(mu_omega: float, lang: str) -> str:
+    """The plan of angular velocities' scale as the lab writes it under the plan, to four significant
+    figures (a segment of 200 mm × its rounding is within 0,01 %, under the ruler's half-millimetre)."""
+    return MU_OMEGA[lang].format(v=num(mu_omega, lang, 4))
+
 
 def _nice(v: float) -> float:
     from graphplan.graphic.scales import at_least
@@ -779,11 +793,31 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(C, "c", toward=1j)
     pl.label(O, "o", toward=-1j)
     pl.label(complex(X0 + va / 2, yA), "v_A", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    rec.scales.update(mu_l=mu, mu_v=mu_v, h=h)
+    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O_2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    _mu_omega_label(rec, pl, pole, left, right, mu_omega_text(mu_v / (mu * h), lang))
+    rec.scales.update(mu_l=mu, mu_v=mu_v, h=h, mu_omega=mu_v / (mu * h))
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
                      ratio_bound(tr, mu, h, va, precision), rec)
     return out
+
+
+def _mu_omega_label(rec: Record, pl: Placer, pole: complex, left: float, right: float, text: str) -> None:
+    """The plan of angular velocities' scale μω written at the plan's foot (review 10, mark 5), where
+    the lab writes it: on the pole's level beside its letter where no ray or letter is (the picture no
+    taller), else under the plan."""
+    size = 3.5
+    w = text_width(text, size)
+    y = pole.imag - size / 2                                        # the baseline, the text centred on the pole
+    spots = [(pole.real - gap - w, y) for gap in (10.0, 14.0, 20.0, 28.0)] + \
+            [(pole.real + gap, y) for gap in (8.0, 12.0, 18.0, 26.0)]
+    for x, yb in spots:
+        box = Primitive("text", ((x, yb),), text=text, size=size).bounds()
+        if pl.free(box):
+            rec.label((x, yb), text, size=size, layer=LAYER, step="μω")
+            pl._add_box(box)
+            return
+    rec.label(((left + right) / 2, rec.bounds()[1] - 3.0 - size), text, size=size, anchor="middle", layer=LAYER,
+              step="μω")
 
 
 def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float) -> float:

@@ -102,7 +102,7 @@ def train_json(tr, vel) -> dict[str, Any]:
     t = tr.train
     doc: dict[str, Any] = {
         "type": t.kind, "planets": t.planets, "z": list(tr.z), "module_m": t.module,
-        "ratio_required": t.ratio,
+        "ratio_required": t.ratio, "rpm": t.rpm,
         "ratio": {"exact": tr.ratio, "graphical": _fin(vel.ratio) if vel else None,
                   "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None,
                   "outside_bound": outside(vel.ratio, tr.ratio, vel.ratio_bound) if vel else False},

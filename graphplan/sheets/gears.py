@@ -41,7 +41,11 @@ WORDS = {
            "member": "ланка", "mm": "мм",
            "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
-           "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
+           "data": "Вихідні дані передачі: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}, {x}",
+           "data_x": "x_1 = {x1}, x_2 = {x2}", "data_auto": "зміщення x_1, x_2 вибрати за правилом",
+           "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "rpm": "n_1 = {n} об/хв (ω_1 = πn_1/30 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
            "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
                   "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
@@ -74,7 +78,11 @@ WORDS = {
            "member": "member", "mm": "mm",
            "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
-           "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
+           "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}, {x}",
+           "data_x": "x_1 = {x1}, x_2 = {x2}", "data_auto": "shifts x_1, x_2 to be chosen by a rule",
+           "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "rpm": "n_1 = {n} rpm (ω_1 = πn_1/30 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
            "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
                   "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
@@ -201,12 +209,11 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
     out: list[str] = []
     if "pair" in doc:
         p = doc["pair"]
+        out.append(pair_data(p, lang))
         if p["shifts"] == "auto":
             a = p["auto"]
             out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
                                         b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
-        else:
-            out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
         g = p.get("graphical")
@@ -220,6 +227,7 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out = []
     if "planetary" in doc:
         t = doc["planetary"]
+        out.append(train_data(t, lang))
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
@@ -239,6 +247,29 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
     if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def pair_data(p: dict, lang: str) -> str:
+    """The pair's task data as the scene gives them, heading the notes (review 10, mark 2): z1, z2,
+    m, α, h*a, c* and the shifts (or that they are to be chosen)."""
+    w = WORDS[lang]
+    x = (w["data_x"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)) if p["shifts"] == "given"
+         else w["data_auto"])
+    return w["data"].format(z1=p["z"][0], z2=p["z"][1], m=_n(p["module_m"] * 1000, lang), a=_n(p["alpha_deg"], lang),
+                            h=_n(p["addendum"], lang), c=_n(p["clearance"], lang), x=x)
+
+
+def train_data(t: dict, lang: str) -> str:
+    """The planetary train's task data: its type, u1H wanted (or the teeth given), K, m and n1 (or ω1)
+    as the scene gives them."""
+    w = WORDS[lang]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    u = (w["train_u"].format(u=_n(t["ratio_required"], lang)) if t["ratio_required"] is not None
+         else w["train_z"].format(z=", ".join(f"{a} = {b}" for a, b in zip(names, t["z"]))))
+    w1 = t["omega_rad_s"]["1"]
+    speed = (w["rpm"].format(n=_n(t["rpm"], lang), w=_n(w1, lang)) if t.get("rpm") is not None
+             else w["omega1"].format(w=_n(w1, lang)))
+    return w["train_data"].format(t=t["type"], u=u, k=t["planets"], m=_n(t["module_m"] * 1000, lang), w=speed)
 
 
 def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
