@@ -165,7 +165,7 @@ def test_the_sliding_zone_is_sized_to_its_curves_with_the_working_part_heavy_and
     mu, unit = rec.scales["mu_l"] * 1000, 1.0 / rec.scales["mu_lambda"]          # mm of the part a mm, mm a unit
     x0, y0, x1, y1 = rec.bounds()
     assert y1 - y0 <= 0.75 * (x1 - x0)
-    assert 4 * unit <= 0.6 * line / mu + 1e-9
+    assert 4 * unit <= 0.75 * line / mu + 1e-9
     axis = next(it for it in rec.items if it.step == "λ axis").points[0]
     origin = (axis[0] + 4.0, axis[1])                                            # N1 on the λ = 0 axis
     heavy = [it for it in rec.items if it.kind == "polyline" and it.role == "result"]

@@ -54,7 +54,7 @@ WORDS = {
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
                         "±{bp} % від ε_α",
-           "train": "u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
+           "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
                     "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
@@ -91,7 +91,7 @@ WORDS = {
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
                         "±{bp} % of ε_α",
-           "train": "u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
+           "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
                     "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
@@ -467,11 +467,11 @@ def lambda_unit(row_h: float, line_mm: float | None = None) -> float:
     """The λ diagrams' unit, mm: the largest of ``LAMBDA_UNITS`` whose diagram (λ from −3 to 1 and
     the margins, with its two-line caption, about 4.3 units and 40 mm) stands in the row ``row_h``
     mm tall beside the planetary pictures, and — sized to its content, two curves (review 10, mark
-    15: 240 × 190 mm for them) — whose four units of λ are no taller than 0.6 of N1N2 drawn
+    15: 240 × 190 mm for them) — whose four units of λ are no taller than 0.75 of N1N2 drawn
     (``line_mm``)."""
     fits = [u for u in LAMBDA_UNITS if 4.3 * u + 40.0 <= row_h]
     if line_mm is not None:
-        fits = [u for u in fits if 4.0 * u <= 0.6 * line_mm] or fits[:1]
+        fits = [u for u in fits if 4.0 * u <= 0.75 * line_mm] or fits[:1]
     return max(fits or [LAMBDA_UNITS[0]])
 
 
