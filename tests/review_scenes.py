@@ -1284,3 +1284,30 @@ delta = 0.06
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+GEARS_REV10 = '''# Review 10: a shifted gear pair z = 19/31 with unequal shifts (x2 negative) and a type-A planetary train.
+title = "Зубчаста передача і планетарний редуктор (рецензія 10)"
+title_en = "A gear pair and a planetary reducer (review 10)"
+designation = "ТММ.РВ10.04.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент 10"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[gears]
+z = [19, 31]
+module = 0.004
+shifts = [0.35, -0.2]
+pressure_angle_deg = 20
+
+[planetary]
+type = "A"
+ratio = 5.5
+planets = 4
+module = 0.003
+rpm = 1450
+'''

@@ -321,8 +321,8 @@ def test_the_planetary_velocity_names_are_lettered_3_5_mm():
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import build_gears_sheet
     sheet = build_gears_sheet(example("gears"), form("A1"), SheetOptions(sheet="gears"))
-    sizes = {p.text: p.size for p in sheet.record.items if p.kind == "text" and p.text in ("v_A", "v_{O2}")}
-    assert sizes == {"v_A": 3.5, "v_{O2}": 3.5}
+    sizes = {p.text: p.size for p in sheet.record.items if p.kind == "text" and p.text in ("v_A", "v_{O_2}")}
+    assert sizes == {"v_A": 3.5, "v_{O_2}": 3.5}
 
 
 def test_a_crowded_pivots_letter_breaks_only_thin_lines():

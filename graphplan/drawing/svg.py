@@ -13,7 +13,7 @@ from functools import lru_cache
 
 from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, em, kern, kerned, lettering,
                                       plain_width, run_offsets, script_space, sub_kern, vector_arrow)
-from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
+from graphplan.util.markup import SMALL, baseline_shift, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -278,7 +278,7 @@ def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float,
         start = x
         if run.level == 0 and run.text:
             base = (run.text[-1], s)
-        up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
+        up = baseline_shift(run.level, size)
         for part in (p for p in _MISSING.split(run.text) if p):
             pieces = [(part, 0.0)] if part in MISSING else kerned(part, round(s, 6))   # a comma set apart
             for piece, extra in pieces:

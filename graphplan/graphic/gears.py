@@ -645,41 +645,60 @@ def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
 
 def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM) -> Record:
     """λ1 and λ2 over N1N2 drawn horizontally at the meshing's scale, λ at ``unit_mm`` a unit (20 mm
-    unless the sheet grows it; clipped at −3): the ordinates at B1, P, B2 and the working part
-    between B1 and B2."""
+    unless the sheet grows it): the ordinates at B1, P, B2; each curve thin over N1N2 and heavy over
+    the working part B1B2 (the lab draws the working part heavy, review 10 mark 15); cut where it
+    passes λ = −3 (λ1 → −∞ at N1, λ2 at N2) with a break: a short arrow on down and "−∞"."""
     rec = Record("sliding")
-    G = sol.g / mesh.mu_l
-    rho = np.linspace(0.0, G, 401)
-    l1, l2 = sol.sliding(rho * mesh.mu_l)
+    mu = mesh.mu_l
+    G = sol.g / mu
+    z1, z2 = sol.pair.z
+    c = LAMBDA_CLIP
+    # where each curve reaches −c: λ1 = 1 − (G − ρ)/ρ·z1/z2 = −c at ρ = G·z1/(z1 + (1 + c)·z2);
+    # λ2 = 1 − ρ/(G − ρ)·z2/z1 = −c at ρ = G·(1 + c)·z1/((1 + c)·z1 + z2)
+    cut1 = G * z1 / (z1 + (1 + c) * z2)
+    cut2 = G * (1 + c) * z1 / ((1 + c) * z1 + z2)
     k = unit_mm
     rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="construction", width=0.35, layer=LAYER, step="λ axis")   # a diagram's
-    rec.segment((0.0, -LAMBDA_CLIP * k - 3), (0.0, k + 8.0), role="construction", width=0.35, layer=LAYER)  # axes: solid
-    for curve, name in ((l1, "λ_1"), (l2, "λ_2")):
-        ok = np.isfinite(curve) & (np.abs(curve) <= LAMBDA_CLIP)
-        xs, ys = rho[ok], curve[ok] * k
-        rec.add("polyline", list(zip(xs, ys)), role="curve", layer=LAYER, step=f"{name}(ρ)")
+    rec.segment((0.0, -c * k - 3), (0.0, k + 8.0), role="construction", width=0.35, layer=LAYER)  # axes: solid
+    xB1, xB2 = sol.rho_B1 / mu, sol.rho_B2 / mu
+    ends = []
+    for idx, (lo, hi, name) in enumerate(((cut1, G, "λ_1"), (0.0, cut2, "λ_2"))):
+        xs = np.linspace(lo, hi, 401)
+        ys = sol.sliding(xs * mu)[idx] * k
+        ok = np.isfinite(ys)
+        rec.add("polyline", list(zip(xs[ok], ys[ok])), role="curve", layer=LAYER, step=f"{name}(ρ)")
+        a, b = max(lo, xB1), min(hi, xB2)                  # the working part, heavy
+        if b > a:
+            xw = np.linspace(a, b, 201)
+            yw = sol.sliding(xw * mu)[idx] * k
+            okw = np.isfinite(yw)
+            rec.add("polyline", list(zip(xw[okw], yw[okw])), role="result", width=1.0, layer=LAYER,
+                    step=f"{name} on B1B2")
+        ends.append(complex(cut1 if idx == 0 else cut2, -c * k))
     for v in (1.0, -1.0, -2.0, -3.0):
         rec.segment((-1.5, v * k), (1.5, v * k), role="construction", layer=LAYER)
-    marks = {"N_1": 0.0, "B_1": sol.rho_B1 / mesh.mu_l, "P": sol.rho_P / mesh.mu_l, "B_2": sol.rho_B2 / mesh.mu_l,
-             "N_2": G}
+    marks = {"N_1": 0.0, "B_1": xB1, "P": sol.rho_P / mu, "B_2": xB2, "N_2": G}
     for name, x in marks.items():
         if name in ("B_1", "B_2", "P"):
-            rec.segment((x, -LAMBDA_CLIP * k), (x, k + 4.0), role="projection", layer=LAYER, step=name)
-    rec.segment((G, -LAMBDA_CLIP * k), (G, k + 4.0), role="construction", layer=LAYER)
+            rec.segment((x, -c * k), (x, k + 4.0), role="projection", layer=LAYER, step=name)
+    rec.segment((G, -c * k), (G, k + 4.0), role="construction", layer=LAYER)
+    for end in ends:                  # the break: the curve goes on to −∞ (its asymptote N1 or N2)
+        rec.vector(_f(end), _f(end - 6j), role="curve", layer=LAYER, step="λ → −∞")
     pl = Placer(rec)
     for name, x in marks.items():
         pl.label(complex(x, 0), name, size=2.5, toward=-1j, radii=(1.0, 2.0, 3.0, 5.0, 9.0, 13.0))
     for v, t in ((1.0, "1"), (-1.0, "−1"), (-2.0, "−2"), (-3.0, "−3")):
         pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
     pl.label(complex(0.0, k + 8.0), "λ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))     # the ordinate's name
+    for end in ends:                  # "−∞" right of each arrow: off the axis of λ and the ordinate at B2
+        pl.label(end - 4j, "−∞", size=2.5, toward=1 + 0j, radii=(0.8, 1.5, 3.0, 5.0))
     # each curve lettered midway between P (where the two cross, λ = 0) and its own end of N1N2:
     # λ2 over N1P (λ1 runs off to −∞ there), λ1 over PN2 — never at the crossing
-    xP = sol.rho_P / mesh.mu_l
-    j1 = int(np.argmin(np.abs(rho - 0.5 * (xP + G))))
-    j2 = int(np.argmin(np.abs(rho - 0.5 * xP)))
-    pl.label(complex(rho[j1], l1[j1] * k), "λ_1", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
-    pl.label(complex(rho[j2], l2[j2] * k), "λ_2", toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
-    rec.scales.update(mu_lambda=1.0 / k, mu_l=mesh.mu_l)
+    xP = sol.rho_P / mu
+    for idx, x, name in ((0, 0.5 * (xP + G), "λ_1"), (1, 0.5 * xP, "λ_2")):
+        y = float(sol.sliding(x * mu)[idx]) * k
+        pl.label(complex(x, y), name, toward=1j, radii=(1.5, 3.0, 5.0, 8.0, 12.0))
+    rec.scales.update(mu_lambda=1.0 / k, mu_l=mu)
     return rec
 
 
@@ -699,6 +718,20 @@ class Velocities:
     ratio: float
     ratio_bound: float
     record: Record
+
+    @property
+    def mu_omega(self) -> float:
+        """The plan of angular velocities' scale, (rad/s)/mm: μω = μv/(μl·h) (ωi = segment·μω)."""
+        return self.mu_v / (self.mu_l * self.h)
+
+
+MU_OMEGA = {"uk": "μ_ω = μ_v/(μ_l·h) = {v} (рад/с)/мм", "en": "μ_ω = μ_v/(μ_l·h) = {v} (rad/s)/mm"}
+
+
+def mu_omega_text(mu_omega: float, lang: str) -> str:
+    """The plan of angular velocities' scale as the lab writes it under the plan, to four significant
+    figures (a segment of 200 mm × its rounding is within 0,01 %, under the ruler's half-millimetre)."""
+    return MU_OMEGA[lang].format(v=num(mu_omega, lang, 4))
 
 
 def _nice(v: float) -> float:
@@ -779,11 +812,31 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(C, "c", toward=1j)
     pl.label(O, "o", toward=-1j)
     pl.label(complex(X0 + va / 2, yA), "v_A", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
-    rec.scales.update(mu_l=mu, mu_v=mu_v, h=h)
+    pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O_2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
+    _mu_omega_label(rec, pl, pole, left, right, mu_omega_text(mu_v / (mu * h), lang))
+    rec.scales.update(mu_l=mu, mu_v=mu_v, h=h, mu_omega=mu_v / (mu * h))
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
                      ratio_bound(tr, mu, h, va, precision), rec)
     return out
+
+
+def _mu_omega_label(rec: Record, pl: Placer, pole: complex, left: float, right: float, text: str) -> None:
+    """The plan of angular velocities' scale μω written at the plan's foot (review 10, mark 5), where
+    the lab writes it: on the pole's level beside its letter where no ray or letter is (the picture no
+    taller), else under the plan."""
+    size = 3.5
+    w = text_width(text, size)
+    y = pole.imag - size / 2                                        # the baseline, the text centred on the pole
+    spots = [(pole.real - gap - w, y) for gap in (10.0, 14.0, 20.0, 28.0)] + \
+            [(pole.real + gap, y) for gap in (8.0, 12.0, 18.0, 26.0)]
+    for x, yb in spots:
+        box = Primitive("text", ((x, yb),), text=text, size=size).bounds()
+        if pl.free(box):
+            rec.label((x, yb), text, size=size, layer=LAYER, step="μω")
+            pl._add_box(box)
+            return
+    rec.label(((left + right) / 2, rec.bounds()[1] - 3.0 - size), text, size=size, anchor="middle", layer=LAYER,
+              step="μω")
 
 
 def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float) -> float:

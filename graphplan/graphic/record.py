@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, Run, is_plain, runs
+from graphplan.util.markup import SMALL, SUB_SHIFT, Run, baseline_shift, is_plain, runs
 
 Point = tuple[float, float]
 
@@ -449,7 +449,7 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
                 x += script_space(level, r.text, size)
             x0 = start = x
         level = r.level
-        shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
+        shift = baseline_shift(r.level, size)
         if r.level == 0:
             prev = (r.text, s)
         out.append((r, x0, s, shift))

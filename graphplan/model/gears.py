@@ -58,6 +58,7 @@ class Train:
     omega: float
     ratio: float | None = None
     z: tuple[int, ...] | None = None
+    rpm: float | None = None      # n1, rpm, as the scene gives it (``omega`` = π·n1/30); None when ω1 is given
 
 
 @dataclass(frozen=True)
@@ -189,8 +190,8 @@ def _train(t: Any, where: str) -> Train:
     m = _number(t, "planetary", "module", *MODULE, "m", where)
     if "omega" in t and "rpm" in t:
         raise SceneError("planetary.rpm: give omega or rpm, not both", where)
-    omega = _number(t, "planetary", "rpm", 0.01, 1e6, "rpm", where) * math.pi / 30 if "rpm" in t else \
-        _number(t, "planetary", "omega", 1e-3, 1e5, "rad/s", where, 100.0)
+    rpm = _number(t, "planetary", "rpm", 0.01, 1e6, "rpm", where) if "rpm" in t else None
+    omega = rpm * math.pi / 30 if rpm is not None else _number(t, "planetary", "omega", 1e-3, 1e5, "rad/s", where, 100.0)
     if ("ratio" in t) == ("z" in t):
         raise SceneError("planetary: give the ratio wanted (ratio = u1H) or the teeth (z = [...]), one of them",
                          where)
@@ -198,9 +199,9 @@ def _train(t: Any, where: str) -> Train:
         u = _number(t, "planetary", "ratio", *RATIO, "", where)
         if u <= 2.0 and kind == "A":
             raise SceneError(f"planetary.ratio: a type A train has u1H = 1 + z3/z1 > 2, got {u:g}", where)
-        return Train(kind, k, m, omega, ratio=u)
+        return Train(kind, k, m, omega, ratio=u, rpm=rpm)
     z = _teeth(t["z"], "planetary.z", (3,) if kind == "A" else (4,), Z_TRAIN, where)
-    return Train(kind, k, m, omega, z=z)
+    return Train(kind, k, m, omega, z=z, rpm=rpm)
 
 
 def build(data: dict[str, Any], where: str = "<scene>") -> Gears:

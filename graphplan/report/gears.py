@@ -102,7 +102,7 @@ def train_json(tr, vel) -> dict[str, Any]:
     t = tr.train
     doc: dict[str, Any] = {
         "type": t.kind, "planets": t.planets, "z": list(tr.z), "module_m": t.module,
-        "ratio_required": t.ratio,
+        "ratio_required": t.ratio, "rpm": t.rpm,
         "ratio": {"exact": tr.ratio, "graphical": _fin(vel.ratio) if vel else None,
                   "error_pct": err(vel.ratio, tr.ratio) if vel else None, "bound": vel.ratio_bound if vel else None,
                   "outside_bound": outside(vel.ratio, tr.ratio, vel.ratio_bound) if vel else False},
@@ -204,6 +204,20 @@ def contact_ratio_text(exact: float, graphical: float | None, lang: str) -> tupl
     return agreeing(exact, graphical, sig_decimals(exact), lang)
 
 
+DELTA_DECIMALS = 2       # δ % as the lab and the other sheets print it (sheets.compose.percent): 2,50 / −0,87 / 0,14
+
+
+def delta_text(v: float | None, lang: str) -> str:
+    """A percent error δ to ``DELTA_DECIMALS`` places (one count of decimals down a table's δ
+    column: review 10 had 2,5 beside −0,869 and 0,144), "0" where it rounds to nothing, a true
+    minus, "—" for none; the sheet's tables and the terminal print the same text."""
+    if v is None or not math.isfinite(v):
+        return "—"
+    if round(v, DELTA_DECIMALS) == 0:
+        return "0"
+    return f"{v:.{DELTA_DECIMALS}f}".replace(".", "," if lang == "uk" else ".").replace("-", "−")
+
+
 def bare(text: str) -> str:
     """A printed number without trailing zeros ("42,00" → "42", "−37,500" → "−37,5"), as the other
     sheets and the terminal print values where no reading's resolution is the point; the value and
@@ -250,7 +264,7 @@ def pair_lines(d: dict, lang: str) -> list[str]:
                                  dy=n(d["delta_y"]), p=mm(d["pitch_m"]), pb=mm(d["base_pitch_m"])))
     c = d["contact_ratio"]
     ce, cg, cd = contact_ratio_text(c["exact"], c["graphical"], lang)
-    lines.append(w["eps_line"].format(e=ce, g=cg or "—", d=n(cd, 3), b=n(c["bound"], 2),
+    lines.append(w["eps_line"].format(e=ce, g=cg or "—", d=delta_text(cd, lang), b=n(c["bound"], 2),
                                       bp=_share(c["bound"], c["exact"], lang), out=w["out"] if c["outside_bound"] else ""))
     q = d["quality"]
     lines.append(w["quality"].format(u=", ".join(yes(v) for v in q["undercut"]),
@@ -285,7 +299,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
              w["zt"].format(z=", ".join(map(str, d["z"])), u=ue, r=n(d["ratio_required"]),
-                            g=ug, d=n(ud, 3), b=n(r["bound"], 2),
+                            g=ug, d=delta_text(ud, lang), b=n(r["bound"], 2),
                             bp=_share(r["bound"], r["exact"], lang), out=w["out"] if r["outside_bound"] else "")]
     c = d["conditions"]
     lines.append(w["cond"].format(c=ok(c["coaxial"]), a=ok(c["assembly"]), n=ok(c["neighbourhood"]),

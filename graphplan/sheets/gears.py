@@ -15,7 +15,8 @@ from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_me
                                      sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import agreeing, bare, contact_ratio_text, gears_json, sig_decimals, table_decimals
+from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, gears_json, sig_decimals,
+                                    table_decimals)
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
@@ -27,7 +28,7 @@ from graphplan.util.words import fixed, num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів",
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж лінії зачеплення; μ_λ = {mu} 1/мм",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж N_{{1}}N_{{2}}; B_{{1}}B_{{2}} робоча (потовщено); μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
@@ -41,7 +42,11 @@ WORDS = {
            "member": "ланка", "mm": "мм",
            "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
                    "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
-           "given": "Зміщення задано: x_1 = {x1}, x_2 = {x2}",
+           "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
+           "data_x": ", x_1 = {x1}, x_2 = {x2}",
+           "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "rpm": "n_1 = {n} об/хв (ω_1 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
            "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
                   "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
@@ -49,7 +54,7 @@ WORDS = {
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
                         "±{bp} % від ε_α",
-           "train": "Передача типу {t}: K = {k}, u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
+           "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
                     "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
@@ -60,7 +65,7 @@ WORDS = {
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along the line of action; μ_λ = {mu} 1/mm",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along N_{{1}}N_{{2}}; B_{{1}}B_{{2}} working (heavy); μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
@@ -74,7 +79,11 @@ WORDS = {
            "member": "member", "mm": "mm",
            "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
                    "that meet the conditions of Table 2, the one with the least greatest specific sliding",
-           "given": "Shifts given: x_1 = {x1}, x_2 = {x2}",
+           "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
+           "data_x": ", x_1 = {x1}, x_2 = {x2}",
+           "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
            "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
                   "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
@@ -82,7 +91,7 @@ WORDS = {
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
                         "±{bp} % of ε_α",
-           "train": "Type {t} train: K = {k}, u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
+           "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
                     "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
@@ -98,10 +107,19 @@ def _n(v, lang: str, d: int = 4) -> str:
     return "—" if v is None else num(v, lang, d).replace("-", "−")
 
 
-def _pct(v, lang: str) -> str:
-    if v is None:
-        return "—"
-    return num(v, lang, 3).replace("-", "−") + ("*" if abs(v) > LAB_LIMIT else "")
+def _pct(v, suffix: str = "") -> tuple:
+    """A δ % cell, set when its whole column is known (``_pct_cells``)."""
+    return ("δ", v, suffix)
+
+
+def _pct_cells(rows: list[list], lang: str) -> list[list[str]]:
+    """The table's δ % cells (``report.gears.delta_text``: one count of decimals down the column —
+    not 2,5 beside −0,869 and 0,144, review 10 mark 19 — and as the terminal prints them); past the
+    lab's 5 % marked *, "—" where nothing was read."""
+    def text(c) -> str:
+        _, v, suffix = c
+        return delta_text(v, lang) + ("*" if v is not None and abs(v) > LAB_LIMIT else "") + suffix
+    return [[text(c) if isinstance(c, tuple) else c for c in r] for r in rows]
 
 
 def geometry_table(doc: dict, lang: str) -> Record:
@@ -120,17 +138,17 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e, lang) if gr else ""] if gr else [bare(te), "", ""]
+            row += [te, tg, _pct(e)] if gr else [bare(te), "", ""]
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
-    rows.append(["ε_α", te, tg, (_pct(e, lang) + ("!" if c["outside_bound"] else "")) if tg else "", "", "", ""])
+    rows.append(["ε_α", te, tg, _pct(e, "!" if c["outside_bound"] else "") if tg else "", "", "", ""])
     # the terminal's figures (report.gears.pair_lines): αw to six, the rest to four significant figures
     for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, 4),
                       (f"a, {w['mm']}", p["a_m"] * 1000, 4), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
                       (f"p, {w['mm']}", p["pitch_m"] * 1000, 4), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, 4)):
         rows.append([sym, _n(v, lang, k), "", "", "", "", ""])
-    return table(rows, [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
+    return table(_pct_cells(rows, lang), [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
 
 
 def quality_table(doc: dict, lang: str) -> Record:
@@ -167,22 +185,22 @@ def train_table(doc: dict, lang: str) -> Record:
     rows = [[w["qty"], w["ex"], w["gr"], "δ, %"],
             [w["z"], ", ".join(f"{a} = {b}" for a, b in zip(names, t["z"])), "", ""],
             [w["u"].split(":")[0], bare(ue), bare(ug) if ug else "—",
-             _pct(ud, lang) + ("!" if r["outside_bound"] else "")]]
+             _pct(ud, "!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
         req = t["ratio_required"]
         tr_, te_, d_ = agreeing(req, r["exact"], sig_decimals(r["exact"]), lang)
         rows.append([w["u"].split(":")[0] + (" потрібне" if lang == "uk" else " wanted"),
-                     _n(req, lang), "", _pct(d_, lang)])
+                     _n(req, lang), "", _pct(d_)])
     for key in ("1", "2", "H"):
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
         rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), bare(te), bare(tg) if tg else "—",
-                     _pct(e, lang)])
+                     _pct(e)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
-    return table(rows, [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
+    return table(_pct_cells(rows, lang), [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
 
 
 def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
@@ -205,8 +223,6 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
             a = p["auto"]
             out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
                                         b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
-        else:
-            out.append(w["given"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
         g = p.get("graphical")
@@ -241,6 +257,37 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
 
 
+def data_lines(doc: dict, lang: str) -> list[str]:
+    """The task data as the scene gives them (review 10, mark 2: a teacher checks Table 1 against
+    z and m): the pair's, then the train's; at the head of the A1 sheet's notes, a block of their
+    own by the meshing in a set (``_set``)."""
+    return ([pair_data(doc["pair"], lang)] if "pair" in doc else []) + \
+        ([train_data(doc["planetary"], lang)] if "planetary" in doc else [])
+
+
+def pair_data(p: dict, lang: str) -> str:
+    """The pair's task data as the scene gives them, heading the notes (review 10, mark 2): z1, z2,
+    m, α, h*a, c* and the shifts (or that they are to be chosen)."""
+    w = WORDS[lang]
+    x = (w["data_x"].format(x1=_n(p["x"][0], lang), x2=_n(p["x"][1], lang)) if p["shifts"] == "given"
+         else "")                         # (the next line names the rule that chose them)
+    return w["data"].format(z1=p["z"][0], z2=p["z"][1], m=_n(p["module_m"] * 1000, lang), a=_n(p["alpha_deg"], lang),
+                            h=_n(p["addendum"], lang), c=_n(p["clearance"], lang), x=x)
+
+
+def train_data(t: dict, lang: str) -> str:
+    """The planetary train's task data: its type, u1H wanted (or the teeth given), K, m and n1 (or ω1)
+    as the scene gives them."""
+    w = WORDS[lang]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    u = (w["train_u"].format(u=_n(t["ratio_required"], lang)) if t["ratio_required"] is not None
+         else w["train_z"].format(z=", ".join(f"{a} = {b}" for a, b in zip(names, t["z"]))))
+    w1 = t["omega_rad_s"]["1"]
+    speed = (w["rpm"].format(n=_n(t["rpm"], lang), w=_n(w1, lang)) if t.get("rpm") is not None
+             else w["omega1"].format(w=_n(w1, lang)))
+    return w["train_data"].format(t=t["type"], u=u, k=t["planets"], m=_n(t["module_m"] * 1000, lang), w=speed)
+
+
 def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
     """Among the trains weighed (the smallest by D/m), the one whose u1H is nearest the wanted, when
     it is not the one chosen (the rule takes the smallest diameter within ±4 %): what the notes say
@@ -270,6 +317,9 @@ def _plan(vel, lang: str) -> Record:
         l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
 
 
+SHARES = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
+          (0.5, 0.6), (0.5, 0.5))   # (vA, the sun's segment and h) × their sizes: the segment longer where the
+#                                   row is wide, vA and it shorter where too wide
 GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
 # (the ring's radius, vA, the sun's segment)
 H_MIN = 40.0             # mm: the pole distance of a grown plan of angular velocities at least this
@@ -288,9 +338,7 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
     room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
-    shares = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6), (0.5, 0.6),
-              (0.5, 0.5))               # the sun's segment (and h) longer where the row is wide, vA and it
-    #                                 shorter where too wide
+    shares = SHARES
 
     def drawn(k: float, va_share: float, share: float):
         try:
@@ -355,7 +403,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
         else:                             # a set's: as tall as the planetary pictures
             row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h))
+        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mesh.mu_l))
     return mesh, vel, plan
 
 
@@ -415,11 +463,16 @@ def beside(region, mesh) -> bool:
 LAMBDA_UNITS = (20.0, 25.0, 40.0, 50.0)    # mm a unit of λ (μλ = 0.05, 0.04, 0.025, 0.02 1/mm)
 
 
-def lambda_unit(row_h: float) -> float:
+def lambda_unit(row_h: float, line_mm: float | None = None) -> float:
     """The λ diagrams' unit, mm: the largest of ``LAMBDA_UNITS`` whose diagram (λ from −3 to 1 and
-    the margins, with its two-line caption, about 4.3 units and 37 mm) stands in the row ``row_h``
-    mm tall beside the planetary pictures."""
-    return max([u for u in LAMBDA_UNITS if 4.3 * u + 37.0 <= row_h] or [LAMBDA_UNITS[0]])
+    the margins, with its two-line caption, about 4.3 units and 40 mm) stands in the row ``row_h``
+    mm tall beside the planetary pictures, and — sized to its content, two curves (review 10, mark
+    15: 240 × 190 mm for them) — whose four units of λ are no taller than 0.75 of N1N2 drawn
+    (``line_mm``)."""
+    fits = [u for u in LAMBDA_UNITS if 4.3 * u + 40.0 <= row_h]
+    if line_mm is not None:
+        fits = [u for u in fits if 4.0 * u <= 0.75 * line_mm] or fits[:1]
+    return max(fits or [LAMBDA_UNITS[0]])
 
 
 def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
@@ -454,7 +507,8 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
 
 def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
     """The sheet's drawings (the meshing, the λ diagrams, the planetary pictures), its tables and the
-    lines of its notes in their parts (``note_parts``), from the constructions."""
+    lines of its notes in their parts: the task data (``data_lines``), then ``note_parts``, from the
+    constructions."""
     w = WORDS[lang]
     doc = gears_json(sol, mesh, vel, g.source or "")
     drawings: list[Leaf] = []
@@ -467,7 +521,7 @@ def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
         tables.append(Leaf("train", record=train_table(doc, lang)))
-    return drawings, tables, note_parts(doc, lang, mesh, vel)
+    return drawings, tables, [data_lines(doc, lang)] + note_parts(doc, lang, mesh, vel)
 
 
 def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str,
@@ -478,9 +532,12 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
     (the λ diagrams with a longer unit) where their sheet holds it. None when a drawing is larger
     than a sheet."""
     from graphplan.sheets.gearset import set_pages
+    data, parts = parts[0], parts[1:]
     names = ["notes", "train notes"] if len(parts) == 2 else (["notes"] if any(t.name == "geometry" for t in tables)
                                                                else ["train notes"])
     lines = dict(zip(names, parts))
+    lines["data"] = data
+    names = ["data"] + names
     tried = []
     for k in (TABLES, 1.0):
         grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
@@ -505,7 +562,7 @@ def _set_lambda(sol, mesh, f: Form, lang: str) -> Leaf:
     in height (over its title block form 2a), captioned."""
     from graphplan.sheets.gearset import later_keep
     x0, y0, x1, y1 = field_of(f)
-    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP))
+    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP, sol.pair.g / mesh.mu_l))
     w = WORDS[lang]
     return Leaf("sliding", record=captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang))))
 
@@ -516,27 +573,43 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
     ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
     takes fewer sheets)."""
-    sizes = []
-    for k in SET_GROW:
+    def drawn(k: float, va_share: float, share: float):
         try:
-            v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
-                                sun_segment_mm=100.0 * k)
+            v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
+                                sun_segment_mm=100.0 * k * share)
         except GraphplanError:
-            continue
-        p = _plan(v, lang)
-        if v.h > vel.h:
-            sizes.append((v, p))
-    lo, hi, best = 0, len(sizes) - 1, pages
-    while lo <= hi:                       # sizes largest first: the first that keeps the count
-        mid = (lo + hi) // 2
-        v, p = sizes[mid]
+            return None
+        return v, _plan(v, lang)
+
+    def good(v) -> bool:                  # no smaller than the set's first pictures, h as long as A1's least
+        return v.mu_l <= vel.mu_l and v.h >= min(H_MIN, vel.h) and (v.mu_l, -v.h) < (vel.mu_l, -vel.h)
+
+    def kept(v, p):                       # the set with these pictures, when it keeps the count of sheets
         drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
         got = _set(drawings, tables, parts, f, more, lang, lam)
-        if got is not None and len(got) <= len(pages):
-            best, hi = got, mid - 1
+        return got if got is not None and len(got) <= len(pages) else None
+
+    # the largest size (halving SET_GROW: a larger picture never takes fewer sheets) whose narrowest
+    # variant keeps the count, then at it the widest variant that does — the ring's scale the one that
+    # reads best (review 10: A3's train at 1:2 read ω1 +2,5 % where 1:1 fits beside Table 3)
+    lo, hi, got = 0, len(SET_GROW) - 1, None
+    while lo <= hi:
+        mid = (lo + hi) // 2
+        d = drawn(SET_GROW[mid], *SHARES[-1])
+        out = kept(*d) if d is not None and good(d[0]) else None
+        if out is not None:
+            got, hi = (mid, out), mid - 1
         else:
             lo = mid + 1
-    return best
+    if got is None:
+        return pages
+    for va_share, share in SHARES[:-1]:
+        d = drawn(SET_GROW[got[0]], va_share, share)
+        if d is not None and good(d[0]):
+            out = kept(*d)
+            if out is not None:
+                return out
+    return got[1]
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:

@@ -1,5 +1,5 @@
 """The gear sheet's A2/A3 set (``--format A2``/``A3``): the drawings, the tables and the notes in the
-A1 sheet's reading order — the meshing, the λ diagrams, Tables 1 and 2 and the pair's notes, the
+A1 sheet's reading order — the meshing, the task data (review 10, mark 2), the λ diagrams, Tables 1 and 2 and the pair's notes, the
 planetary pictures, Table 3 and the train's notes — cut into consecutive sheets, each composed in zones
 as the A1 sheet is: its drawings on the left (or across the top), its tables and notes in a column by
 the title block (or in a row under the drawings). The fewest sheets win; every sheet holds a drawing
@@ -17,8 +17,8 @@ from graphplan.sheets.form import BLOCK_2A_H, BLOCK_W, Form
 
 Box = tuple[float, float, float, float]
 
-ORDER = ("meshing", "sliding", "geometry", "quality", "notes", "planetary", "train", "train notes")   # reading order
-NOTES = ("notes", "train notes")      # the pair's notes, the train's
+ORDER = ("meshing", "data", "sliding", "geometry", "quality", "notes", "planetary", "train", "train notes")   # reading order
+NOTES = ("data", "notes", "train notes")      # the task data, the pair's notes, the train's
 DRAWINGS = ("meshing", "sliding", "planetary")
 
 

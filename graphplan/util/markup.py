@@ -5,7 +5,9 @@
 comes either a ``{group}``, a run of letters and digits or a single ``*`` (``M^*_с``, the reduced
 quantity's star); ``\\_``, ``\\^``, ``\\{``, ``\\}`` and
 ``\\\\`` are the characters themselves (``escape`` makes any name from a scene literal). A
-superscript directly followed by a subscript (or the other way round) is stacked over it.
+superscript directly followed by a subscript (or the other way round) is stacked over it. A subscript
+group may hold a subscript of its own, the lab's a^n_{BO₂}: ``v_{O_2}`` sets O at level −1 and its 2 at
+level −2 (as small as the index, its baseline lower by the index's own drop).
 
 Renderers read ``runs``; the terminal reads ``plain``. Plain data and tiny functions.
 """
@@ -19,9 +21,16 @@ SUP_SHIFT = 0.45   # how far a superscript's baseline rises, in the text's heigh
 _SPECIAL = "_^{}\\"
 
 
+def baseline_shift(level: int, size: float) -> float:
+    """How far a run's baseline lies above the text's (mm, + up) at letter height ``size``: a
+    subscript SUB_SHIFT down, a superscript SUP_SHIFT up, a subscript's subscript (level −2) lower
+    again by the index's own drop (SUB_SHIFT of its SMALL height)."""
+    return {0: 0.0, -1: -SUB_SHIFT * size, -2: -SUB_SHIFT * (1.0 + SMALL) * size, 1: SUP_SHIFT * size}[level]
+
+
 @dataclass(frozen=True)
 class Run:
-    """A piece of text on one level: 0 the line, −1 a subscript, +1 a superscript. ``stacked``: it
+    """A piece of text on one level: 0 the line, −1 a subscript, −2 a subscript's subscript, +1 a superscript. ``stacked``: it
     starts where the previous run (the other script of the same base) started."""
     text: str
     level: int = 0
@@ -77,7 +86,11 @@ def runs(text: str) -> list[Run]:
             level = -1 if c == "_" else 1
             prev = out[-1] if out else None
             stacked = prev is not None and prev.level == -level and not prev.stacked
-            out.append(Run(body, level, stacked))
+            if level == -1 and "_" in body and not is_plain(body):     # v_{O_2}: O₂ an index's index
+                inner = runs(body)
+                out += [Run(r.text, -2 if r.level < 0 else -1, stacked and k == 0) for k, r in enumerate(inner)]
+            else:
+                out.append(Run(body, level, stacked))
             continue
         base.append(c)
         i += 1
