@@ -71,14 +71,18 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
         sizes: dict = {}
 
         def fits(options: dict, grow: bool = True) -> bool:
-            w0, h0 = sizes.setdefault("first", _block_size(st, first, precision))
+            if "first" not in sizes:            # the first drawing measured once (not at every candidate)
+                sizes["first"] = _block_size(st, first, precision)
+            w0, h0 = sizes["first"]
             w, h = _block_size(st, options, precision)
             g = GROWTH if grow else SAME
             if not (w <= g * w0 + 1e-6 and h <= g * h0 + 1e-6 and (room is None or room_fits(room, w, h))):
                 return False
             if floor <= 0:
                 return True
-            low = sizes.setdefault("first spans", _spans(st, first, precision))
+            if "first spans" not in sizes:
+                sizes["first spans"] = _spans(st, first, precision)
+            low = sizes["first spans"]
             return all(got >= min(floor, was) - 1e-6 for got, was in zip(_spans(st, options, precision), low))
         chosen, done = redraw(st, first, precision, POLES, fixed=fixed, longest=longest, fits=fits, menu=floor > 0)
         _REDRAWN[key] = {**chosen, "redrawn": done}
@@ -91,22 +95,43 @@ GROWTH = 1.25     # a redrawn diagrams' block at most this times the first one's
 SAME = 1.05       # … redrawn for its errors at the positions alone (the first was right): about its size
 
 
+_LAST: list = []      # the last (key, diagrams) drawn for a candidate's size (``_drawn``)
+
+
+def _drawn(st: Study, options: dict, precision: float):
+    """``chord_diagrams(st, precision, **options)`` (Ukrainian), remembered for the last options of
+    plain values: a candidate's block (``_block_size``) and its spans (``_spans``) are measured off
+    one construction, not two (redraw measures some 300 candidates on the shaper's A3 set)."""
+    from graphplan.graphic.diagrams import chord_diagrams
+    plain = (int, float, str, bool, type(None))
+    if not all(isinstance(v, plain) or (isinstance(v, tuple) and all(isinstance(x, plain) for x in v))
+               for v in options.values()):
+        return chord_diagrams(st, precision=precision, **options)
+    key = (id(st), tuple(sorted((k, repr(v)) for k, v in options.items())), precision)
+    if not _LAST or _LAST[0][0] != key:
+        _LAST[:] = [(key, chord_diagrams(st, precision=precision, **options))]     # holds st: its id stays its
+    return _LAST[0][1]
+
+
 def _spans(st: Study, options: dict, precision: float) -> tuple[float, float]:
     """The v and a diagrams drawn with ``options``: each one's height with its axis, mm."""
     import numpy as np
-    from graphplan.graphic.diagrams import chord_diagrams
-    r = chord_diagrams(st, precision=precision, **options).drawn
+    r = _drawn(st, options, precision).drawn
     return tuple(float(np.ptp(np.append(x, 0.0))) for x in (r.v, r.a))
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:
-    """The diagrams' block drawn with ``options`` (the larger of the two languages), mm."""
+    """The diagrams' block drawn with ``options`` (the larger of the two languages), mm. The
+    construction is the language's own in nothing but its ``lang`` (graphic.diagrams): built once,
+    lettered in each language."""
+    from dataclasses import replace
+
     from graphplan.drawing.diagrams import draw
-    from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.util.words import LANGS
+    d = _drawn(st, options, precision)
     sizes = []
     for lang in LANGS:
-        b = captioned(draw(chord_diagrams(st, precision=precision, lang=lang, **options), lang),
+        b = captioned(draw(d if d.lang == lang else replace(d, lang=lang), lang),
                       word("kin diagrams", lang)).bounds()
         sizes.append((b[2] - b[0], b[3] - b[1]))
     return max(w for w, _ in sizes), max(h for _, h in sizes)

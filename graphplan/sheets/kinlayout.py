@@ -718,6 +718,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
     sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
     from graphplan.sheets.compose import keep_out, later_keep
+    from graphplan.sheets.kintrial import trial        # each distinct trial layout once
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
     keep, later = keep_out(f), later_keep(f)
@@ -764,12 +765,11 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 they would take a sheet of their own."""
                 found, sizes = None, own(mu)
                 for nw in wide:
-                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later=later)
-                    if out is None:
+                    tried = trial(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later, sizes)
+                    if tried is None:
                         return None
-                    orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
-                    fill = min(page_fill(page, region, sizes) for page in out)
-                    got = (len(out), orphan, fill, nw)
+                    got = (*tried, nw)
+                    orphan = got[1]
                     # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
                     if found is None or got[0] + got[1] < found[0] + found[1]:
                         found = got
