@@ -13,7 +13,7 @@ from functools import lru_cache
 
 from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, em, kern, kerned, lettering,
                                       plain_width, run_offsets, script_space, sub_kern, vector_arrow)
-from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, is_plain, runs
+from graphplan.util.markup import SHIFT, SMALL, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
@@ -272,13 +272,13 @@ def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float,
         x = start if run.stacked else pen
         if not run.stacked and run.level == 0:
             x += script_space(level, run.text, size)    # the base letters clear of the index before them
-        level = run.level
-        if run.level == -1 and not run.stacked and base[0] and run.text:
+        if run.level == -1 and level == 0 and not run.stacked and base[0] and run.text:
             x += sub_kern(base[0], base[1], run.text[0], s)      # an index beside a P, Г, Т
+        level = run.level
         start = x
         if run.level == 0 and run.text:
             base = (run.text[-1], s)
-        up = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[run.level]
+        up = SHIFT[run.level] * size
         for part in (p for p in _MISSING.split(run.text) if p):
             pieces = [(part, 0.0)] if part in MISSING else kerned(part, round(s, 6))   # a comma set apart
             for piece, extra in pieces:

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 from functools import lru_cache
 
-from graphplan.util.markup import SMALL, SUB_SHIFT, SUP_SHIFT, Run, is_plain, runs
+from graphplan.util.markup import SHIFT, SMALL, SUB_SHIFT, Run, is_plain, runs
 
 Point = tuple[float, float]
 
@@ -443,13 +443,13 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
         if r.stacked:
             x0 = start
         else:
-            if r.level == -1 and prev[0] and r.text:
+            if r.level == -1 and level == 0 and prev[0] and r.text:
                 x += sub_kern(prev[0][-1], prev[1], r.text[0], s)     # an index beside a P, Г, Т
             if r.level == 0:
                 x += script_space(level, r.text, size)
             x0 = start = x
         level = r.level
-        shift = {0: 0.0, -1: -SUB_SHIFT * size, 1: SUP_SHIFT * size}[r.level]
+        shift = SHIFT[r.level] * size
         if r.level == 0:
             prev = (r.text, s)
         out.append((r, x0, s, shift))

@@ -16,6 +16,8 @@ from dataclasses import dataclass
 SMALL = 0.7        # the size of a sub- or superscript relative to its text
 SUB_SHIFT = 0.3    # how far a subscript's baseline drops, in the text's height
 SUP_SHIFT = 0.45   # how far a superscript's baseline rises, in the text's height
+SUB2_SHIFT = 0.5   # how far a subscript's own subscript (the 2 of BO₂) drops, in the text's height
+SHIFT = {0: 0.0, -1: -SUB_SHIFT, -2: -SUB2_SHIFT, 1: SUP_SHIFT}   # baseline shift of each level
 _SPECIAL = "_^{}\\"
 
 
@@ -77,11 +79,32 @@ def runs(text: str) -> list[Run]:
             level = -1 if c == "_" else 1
             prev = out[-1] if out else None
             stacked = prev is not None and prev.level == -level and not prev.stacked
-            out.append(Run(body, level, stacked))
+            if level < 0 and body[:1].isalpha() and any(ch.isdigit() for ch in body):
+                out.extend(_sub_digits(body, stacked))
+            else:
+                out.append(Run(body, level, stacked))
             continue
         base.append(c)
         i += 1
     flush()
+    return out
+
+
+def _sub_digits(body: str, stacked: bool) -> list[Run]:
+    """A subscript that starts with a letter split so its digits after a letter sit one level
+    lower, a subscript inside the subscript as the lab writes it: a^n_BO2 → a^n_{BO₂}, v_S2 →
+    v_{S₂}, l_O1A → l_{O₁A}; an all-digit subscript (R_05, H_1) stays one subscript."""
+    levels = []
+    for k, ch in enumerate(body):
+        levels.append(-2 if ch.isdigit() and k and (body[k - 1].isalpha() or levels[-1] == -2) else -1)
+    out: list[Run] = []
+    k = 0
+    while k < len(body):
+        j = k + 1
+        while j < len(body) and levels[j] == levels[k]:
+            j += 1
+        out.append(Run(body[k:j], levels[k], stacked and not out))
+        k = j
     return out
 
 
@@ -107,14 +130,17 @@ def plain(text: str) -> str:
     if is_plain(text):
         return text
     parts = []
+    level = 0
     for r in runs(text):
         if r.level == 0:
             parts.append(r.text)
         elif r.level < 0:
-            parts.append(r.text.translate(_SUB) if r.text.isdigit() else "_" + r.text)
+            parts.append(r.text.translate(_SUB) if r.text.isdigit() else
+                         ("" if level < 0 else "_") + r.text)
         else:
             ok = all(c in "0123456789nk-*" for c in r.text)
             parts.append(r.text.translate(_SUP) if ok else "^" + r.text)
+        level = r.level
     return "".join(parts)
 
 
