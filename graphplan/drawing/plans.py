@@ -388,12 +388,16 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    # with several thick positions each one's moving points carry its number, the first's too (review
+    # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
     for name, X in pts.items():
         # crowded by thin positions: beside it, the lines broken; nearer it than the point's other
         # positions drawn as dots (a centre of mass is dotted at the thick positions only)
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
                        and any(abs(z - d) < 1e-6 for d in dots))
-        labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
+        text = indexed(name) if len(thick_lays) < 2 or name in mech.frame else \
+            at_position(name, lay.index if lay.index is not None else lay.key)
+        labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
     for other in thick_lays:
         if other.key != lay.key:
@@ -409,8 +413,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
         place_first(rec, alternatives, accept=owners.get(alternatives[0].step))
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
-    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key    # B₈ says 8 there
-                   for name in joints_at(sc, other) if name not in mech.frame}
+    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key or len(thick_lays) > 1
+                   for name in joints_at(sc, other) if name not in mech.frame}          # B₈ says 8 there
     labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)
