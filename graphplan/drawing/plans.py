@@ -193,10 +193,14 @@ def support_outline(X: complex, direction: float) -> list[complex]:
     return [X + c * r for c in (0j, complex(5.0, -5.0), complex(3.2, -6.8), complex(-6.8, -6.8), complex(-5.0, -5.0))]
 
 
-def break_under_supports(rec: Record, outlines: list[list[complex]], clear: float = 0.4) -> None:
+SUPPORT_CLEAR = 1.0   # mm of white round a support's symbol (review 10 #16: at 0,4 mm the crank's O1
+                     # read as a bare bar among its twelve thin lines, its 0,35-mm legs like theirs)
+
+
+def break_under_supports(rec: Record, outlines: list[list[complex]], clear: float = SUPPORT_CLEAR) -> None:
     """The thin lines (``labels.breakable``: the thin positions, trajectories, construction)
-    interrupted where they pass under a support's symbol, as a draftsman draws the support over
-    them: the crank's twelve lines leave its pivot clear of its frame symbol."""
+    interrupted where they pass under a support's symbol and ``clear`` round it, as a draftsman
+    draws the support over them: the crank's twelve lines leave its pivot clear of its frame symbol."""
     if not outlines:
         return
     from dataclasses import replace
