@@ -392,14 +392,16 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
-    # with several thick positions each one's moving points carry its number, the first's too (review
+    joints = {j for link in mech.links.values() for j in link.joints}
+    # with several thick positions each one's moving joints carry its number (as thick_letters'; a
+    # centre of mass, lettered at the first only, keeps its S₂), the first's too (review
     # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
     for name, X in pts.items():
         # crowded by thin positions: beside it, the lines broken; nearer it than the point's other
         # positions drawn as dots (a centre of mass is dotted at the thick positions only)
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
                        and any(abs(z - d) < 1e-6 for d in dots))
-        text = indexed(name) if len(thick_lays) < 2 or name in mech.frame else \
+        text = indexed(name) if len(thick_lays) < 2 or name in mech.frame or name not in joints else \
             at_position(name, lay.index if lay.index is not None else lay.key)
         labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
