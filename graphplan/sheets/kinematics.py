@@ -27,7 +27,7 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        beside_height, room_fits, set_of_sheets, set_rows, size_of, split_leaves, tree)
+                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
 
@@ -423,8 +423,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)
-        rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after,
-                        beside_height(f))
+        rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f))
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")

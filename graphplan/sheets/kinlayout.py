@@ -476,16 +476,8 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
         nat.count["acceleration"] == 0 or readable(nat.families["acceleration"], mu["acceleration"]))
 
 
-def beside_height(f: Form) -> float:
-    """How tall drawings set beside the position plan may be on a set's first sheet: the field's
-    height above the title block and its clearance (``compose.keep_out``)."""
-    from graphplan.sheets.compose import keep_out
-    region, keep = field_of(f), keep_out(f)
-    return (region[3] - region[1]) - (keep[3] - keep[1])
-
-
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
-              notes: float = TITLE, beside: float = math.inf) -> list[list[Leaf]]:
+              notes: float = TITLE) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide)."""
@@ -495,11 +487,11 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
     return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", notes, set_notes_height(nat.notes, notes))], width, after, beside)
+                    + [Leaf("notes", notes, set_notes_height(nat.notes, notes))], width, after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
-             after: bool = False, beside: float = math.inf) -> list[list[Leaf]]:
+             after: bool = False) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams
     side by side where the sheet's width holds both (else the position plan, the velocity plans
     under it, then the diagrams: no sheet holds a position plan alone), the velocity plans as many
@@ -525,10 +517,7 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         first: list[list[Leaf | Grid]] = [[P]]
         if V:
             c = int((width - P.w + 1e-9) // (V[0].w + GAP))
-            # no taller than the room over the title block (``beside``: review 10 #8 — the six-bar's
-            # three rows beside its plan did not clear the block, went whole to sheet 2 and left
-            # sheet 1's right half blank)
-            r = int((min(P.h, beside) + GAP + 1e-9) // (V[0].h + GAP))
+            r = int((P.h + GAP + 1e-9) // (V[0].h + GAP))
             k = min(c * r, len(V)) if c >= 1 and r >= 1 else 0
             if k:
                 c = min(c, k)
@@ -775,8 +764,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 they would take a sheet of their own."""
                 found, sizes = None, own(mu)
                 for nw in wide:
-                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw, beside_height(f)), region, keep,
-                               later=later)
+                    out = flow(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later=later)
                     if out is None:
                         return None
                     orphan = int(all(leaf.name in ("notes", "") for leaf, _ in out[-1]))
@@ -844,7 +832,7 @@ def _laid_again(nat: Natural, p: Plan, dsize, f: Form) -> tuple[int, int] | None
     """A set's pages at the plan's scales with diagrams of ``dsize``: (count, notes alone on the last)."""
     from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
-    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes, beside_height(f)), region,
+    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes), region,
                keep_out(f), later=later_keep(f))
     return None if out is None else (len(out), int(all(leaf.name in ("notes", "") for leaf, _ in out[-1])))
 
