@@ -109,7 +109,7 @@ def test_lab_diagrams_look_like_figure_2_7(lab):
             assert c["error_pct"] == pytest.approx(100 * (c["value"] - c["analytic"]) / c["analytic"])
         assert abs(p["v"]["error_pct"]) < 5
     table = diagrams_table(d, "uk")
-    assert "У двох заданих положеннях" in table and "μ_V = μ_S/(μ_t·H₁) = 0,016" in table
+    assert "У двох заданих положеннях" in table and "μ_vB = μ_sB/(μ_t·H₁) = 0,016" in table
 
 
 def test_lab_values_against_the_closed_form_crank_slider(lab):

@@ -83,9 +83,11 @@ def _check(text: str, mu_l: float | None, accel):
     assert not wrong, f"numbers read as another point's: {wrong}"
     # every position numbered at the crank pin (the numbers at other points may be left out where
     # no room is), and most of the others; a further thick position's points carry its number in
-    # their letters instead (A₅, B₅: the lab crank-slider's accel = [1, 5])
-    first = min(set(plans.accel_keys) or {0})
-    further = [p for p in plans.positions if p.key in set(plans.accel_keys) and p.key != first]
+    # their letters instead (A₅, B₅: the lab crank-slider's accel = [1, 5]); with several, the first's
+    # too (A₁, B₁: review 11 #15 read position 4's plain B beside position 9's B₉)
+    thick = set(plans.accel_keys) or {0}
+    first = min(thick)
+    further = [p for p in plans.positions if p.key in thick and (len(thick) > 1 or p.key != first)]
     texts = {q.text for q in rec.items if q.kind == "text"}
     for p in further:
         for name in _numbered(plans):

@@ -35,19 +35,29 @@ def units(d: Diagrams, lang: str) -> tuple[str, str, str]:
 
 
 def scale_symbols(d: Diagrams) -> tuple[str, str, str]:
-    """The diagrams' scale subscripts, named apart from the plans' μ_v, μ_a as seed 002's lab names
-    them: μ_S, μ_V, μ_A for a sliding output's s, v, a diagrams; μ_φ, μ_ω, μ_ε for a link's angle."""
-    return ("S", "V", "A") if d.unit == "m" else d.symbols
+    """The diagrams' scale subscripts in the lab's lower case, named apart from the plans' μ_v, μ_a
+    by the quantity each diagram draws: μ_{sF}, μ_{vF}, μ_{aF} for a sliding output F's s_F, v_F, a_F
+    (review 10: seed 002's μ_S, μ_V, μ_A read as capitals beside μ_t; μ_A is the dynamics' work
+    scale); μ_φ, μ_ω, μ_ε for a link's angle."""
+    if d.unit != "m":
+        return d.symbols
+    p = d.point
+    return (f"s{p}", f"v{p}", f"a{p}")
+
+
+def mu(sub: str) -> str:
+    """μ with its subscript as markup: μ_t, μ_{vF}."""
+    return f"μ_{sub}" if len(sub) == 1 else f"μ_{{{sub}}}"
 
 
 def scale_lines(d: Diagrams, lang: str) -> list[str]:
     us, uv, ua = units(d, lang)
     s, v, a = scale_symbols(d)
     mm = unit("mm", lang)
-    return [f"μ_{s} = {fmt(d.mu_s, lang)} {us}/{mm}",
+    return [f"{mu(s)} = {fmt(d.mu_s, lang)} {us}/{mm}",
             f"μ_t = T/L = 2π/(ω_1·L) = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}",
-            f"μ_{v} = μ_{s}/(μ_t·H_1) = {fmt(d.mu_v, lang)} ({uv})/{mm},  H_1 = {fmt(d.H1, lang)} {mm}",
-            f"μ_{a} = μ_{v}/(μ_t·H_2) = {fmt(d.mu_a, lang)} ({ua})/{mm},  H_2 = {fmt(d.H2, lang)} {mm}"]
+            f"{mu(v)} = {mu(s)}/(μ_t·H_1) = {fmt(d.mu_v, lang)} ({uv})/{mm},  H_1 = {fmt(d.H1, lang)} {mm}",
+            f"{mu(a)} = {mu(v)}/(μ_t·H_2) = {fmt(d.mu_a, lang)} ({ua})/{mm},  H_2 = {fmt(d.H2, lang)} {mm}"]
 
 
 def fmt(v: float, lang: str = "en", digits: int = 4) -> str:
@@ -106,7 +116,7 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     rec.add("polyline", list(zip(fine, y_s + s_curve)), role="curve", layer=LAYER, step=f"{s_sym}(t)")
     _numbers(rec, d, y_s + s_lo - 4.5)
     rec.label((left, y_s + s_hi), letters[0], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_s + s_hi, [f"μ_{mu_s} = {fmt(d.mu_s, lang)} {us}/{mm}",
+    _caption(rec, L, y_s + s_hi, [f"{mu(mu_s)} = {fmt(d.mu_s, lang)} {us}/{mm}",
                                   f"μ_t = {fmt(d.mu_t, lang)} {unit('s/mm', lang)}"])
 
     # -- v(t): pole P at H1, rays ∥ the chords of s, heights carried to the middles ------------------
@@ -119,14 +129,14 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
             rec.segment((x[k], y_v + r.v_at[k]), (x[k + 1], y_v + r.v_at[k + 1]), role="chord", layer=LAYER,
                         step=f"chord {k}–{k + 1} of {v_sym}(t)")
     rec.label((left, y_v + v_hi), letters[1], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_v + v_hi, [f"μ_{mu_v} = {fmt(d.mu_v, lang)} ({uv})/{mm}", f"H_1 = {fmt(d.H1, lang)} {mm}"])
+    _caption(rec, L, y_v + v_hi, [f"{mu(mu_v)} = {fmt(d.mu_v, lang)} ({uv})/{mm}", f"H_1 = {fmt(d.H1, lang)} {mm}"])
 
     # -- a(t): pole P at H2, rays ∥ the chords of v ------------------------------------------------
     _pole_diagram(rec, d, y_a, a_lo, a_hi, d.H2, r.a_ray, r.a, xm, a_curve, fine, a_sym, "2",
                   source=v_sym)
     _numbers(rec, d, y_a + a_lo - 8.0 - 4.0)
     rec.label((left, y_a + a_hi), letters[2], size=TEXT, layer=LAYER)
-    _caption(rec, L, y_a + a_hi, [f"μ_{mu_a} = {fmt(d.mu_a, lang)} ({ua})/{mm}", f"H_2 = {fmt(d.H2, lang)} {mm}"])
+    _caption(rec, L, y_a + a_hi, [f"{mu(mu_a)} = {fmt(d.mu_a, lang)} ({ua})/{mm}", f"H_2 = {fmt(d.H2, lang)} {mm}"])
     return rec
 
 

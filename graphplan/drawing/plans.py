@@ -201,10 +201,14 @@ def support_outline(X: complex, direction: float) -> list[complex]:
     return [X + c * r for c in (0j, complex(5.0, -5.0), complex(3.2, -6.8), complex(-6.8, -6.8), complex(-5.0, -5.0))]
 
 
-def break_under_supports(rec: Record, outlines: list[list[complex]], clear: float = 0.4) -> None:
+SUPPORT_CLEAR = 1.0   # mm of white round a support's symbol (review 10 #16: at 0,4 mm the crank's O1
+                     # read as a bare bar among its twelve thin lines, its 0,35-mm legs like theirs)
+
+
+def break_under_supports(rec: Record, outlines: list[list[complex]], clear: float = SUPPORT_CLEAR) -> None:
     """The thin lines (``labels.breakable``: the thin positions, trajectories, construction)
-    interrupted where they pass under a support's symbol, as a draftsman draws the support over
-    them: the crank's twelve lines leave its pivot clear of its frame symbol."""
+    interrupted where they pass under a support's symbol and ``clear`` round it, as a draftsman
+    draws the support over them: the crank's twelve lines leave its pivot clear of its frame symbol."""
     if not outlines:
         return
     from dataclasses import replace
@@ -402,12 +406,18 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     pts = joints_at(sc, lay)
     centre = sum(pts.values(), 0j) / len(pts)
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    joints = {j for link in mech.links.values() for j in link.joints}
+    # with several thick positions each one's moving joints carry its number (as thick_letters'; a
+    # centre of mass, lettered at the first only, keeps its S₂), the first's too (review
+    # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
     for name, X in pts.items():
         # crowded by thin positions: beside it, the lines broken; nearer it than the point's other
         # positions drawn as dots (a centre of mass is dotted at the thick positions only)
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
                        and any(abs(z - d) < 1e-6 for d in dots))
-        labels.append(LabelRequest(X, indexed(name), toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
+        text = indexed(name) if len(thick_lays) < 2 or name in mech.frame or name not in joints else \
+            at_position(name, lay.index if lay.index is not None else lay.key)
+        labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
     for other in thick_lays:
         if other.key != lay.key:
@@ -423,8 +433,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
         place_first(rec, alternatives, accept=owners.get(alternatives[0].step))
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
-    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key    # B₈ says 8 there
-                   for name in joints_at(sc, other) if name not in mech.frame}
+    lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key or len(thick_lays) > 1
+                   for name in joints_at(sc, other) if name not in mech.frame}          # B₈ says 8 there
     labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)

@@ -272,9 +272,9 @@ def typeset(text: str, size: float) -> tuple[list[tuple[str, bool, float, float,
         x = start if run.stacked else pen
         if not run.stacked and run.level == 0:
             x += script_space(level, run.text, size)    # the base letters clear of the index before them
-        level = run.level
-        if run.level == -1 and not run.stacked and base[0] and run.text:
+        if run.level == -1 and level == 0 and not run.stacked and base[0] and run.text:
             x += sub_kern(base[0], base[1], run.text[0], s)      # an index beside a P, Г, Т
+        level = run.level
         start = x
         if run.level == 0 and run.text:
             base = (run.text[-1], s)

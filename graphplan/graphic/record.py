@@ -443,7 +443,7 @@ def run_offsets(text: str, size: float) -> list[tuple[Run, float, float, float]]
         if r.stacked:
             x0 = start
         else:
-            if r.level == -1 and prev[0] and r.text:
+            if r.level == -1 and level == 0 and prev[0] and r.text:
                 x += sub_kern(prev[0][-1], prev[1], r.text[0], s)     # an index beside a P, Г, Т
             if r.level == 0:
                 x += script_space(level, r.text, size)

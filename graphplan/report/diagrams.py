@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from graphplan.drawing.diagrams import fmt, method_words, scale_lines, scale_symbols, units  # noqa: F401
+from graphplan.drawing.diagrams import fmt, method_words, mu, scale_lines, scale_symbols, units  # noqa: F401
 from graphplan.graphic.diagrams import judged_pct
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, num, pct, unit, word
@@ -213,9 +213,9 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
                 continue            # the allowance changed, not the drawing: μs as first chosen
             s0 = f"{d.symbols[0]}_{{{d.sub}}}"
             up = was is None or value > was
-            parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}"
+            parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}"
                          if uk else f"the {s0} diagram {'taller' if up else 'lower'}: "
-                                    f"μ_{{{scale_symbols(d)[0]}}} = {fmt(d.mu_s, lang)}")
+                                    f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":

@@ -10,7 +10,7 @@ from graphplan.graphic.record import Record
 from graphplan.graphic.plans import NEAR_ZERO, SMALL_ANGLE_DEG, VANISH, Entry, Plan, Plans, PositionPlans
 from graphplan.graphic.scales import UNITS, format_scale
 from graphplan.util.markup import plain
-from graphplan.util.words import fixed, num, pct, unit, word
+from graphplan.util.words import column_decimals, fixed, num, pct, unit, word
 
 KIND_ORDER = {"point": 0, "relative": 1, "normal": 2, "tangential": 3, "coriolis": 4,
               "omega": 5, "epsilon": 6}
@@ -149,7 +149,9 @@ def places(values, longest_mm: float | None, precision: float, mu: float | None 
     d = figs - 1 - math.floor(math.log10(max(vals)))
     if mu and precision > 0:
         d = min(d, step_decimals(mu * precision))
-    return max(0, d)
+    # at least three figures for the column's typical value (review 10: v_B 0,08 beside v_S2 0,126;
+    # 4,0 mm × μv 0,02 = 0,080 is as read — the product written out, a trailing figure not invented)
+    return max(0, d, column_decimals(vals, typical=True))
 
 
 def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0.5) -> list[str]:
@@ -181,7 +183,8 @@ def acceleration_cells(pos: dict[str, Any], lang: str, precision: float = 0.5) -
     the vector was read as 0 mm or the printed exact value is 0). The vectors' decimals, one count
     for them all: the figures of the longest drawn vector (``places``), one more where the ruler's
     step times μ_a still writes it exactly (69,5 mm × 0,5 = 34,75 beside 34,74, not 34,8 beside
-    34,74); ε each to the figures of the a^τ it is read from (one more likewise: 132,1 from a^τ 27,75)."""
+    34,74); the ε rows one count of decimals, three figures for the smallest and at most four for the
+    largest (review 10: −62,55 / −13,49 / 1,42, not −62,548 / −13,49 / 1,42)."""
     items = list(pos.get("acceleration", {}).items())
     vectors = [e for _, e in items if e.get("sense") is None]
     mu = pos.get("mu_a")
@@ -189,6 +192,10 @@ def acceleration_cells(pos: dict[str, Any], lang: str, precision: float = 0.5) -
     vec = places([e.get("value") for e in vectors], longest, precision, mu)
     finer = int(bool(mu and precision > 0 and step_decimals(mu * precision) > vec))
     vec += finer
+    # the ε rows one count of decimals (review 10: ε2 −62,548 beside ε3 −13,49 beside ε4 1,42):
+    # three figures for the smallest, four at most for the largest (util.words.column_decimals)
+    rates = [e for _, e in items if e.get("sense") is not None]
+    eps = column_decimals([_signed_json(e) for e in rates] + [_signed_json(e, "analytic") for e in rates])
 
     def text(v: float | None, d: int) -> str:
         if v is None:
@@ -196,7 +203,7 @@ def acceleration_cells(pos: dict[str, Any], lang: str, precision: float = 0.5) -
         return "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")
     out = {}
     for key, e in items:
-        d = vec if e.get("sense") is None else places([_signed_json(e)], e.get("from_mm"), precision) + finer
+        d = vec if e.get("sense") is None else eps
         g = "0" if e.get("value") == 0 else text(_signed_json(e), d)
         x = text(_signed_json(e, "analytic"), d)
         judged = e.get("error_pct") is not None and e.get("value") not in (0, None)

@@ -88,9 +88,11 @@ def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
 def force_position(st: Study, phi: float, lang: str) -> str:
     """The force position as the scene assigns it: the crank's turn from position 0
     (``positions.force_phi_deg``, in the crank's sense) with the crank angle from the x axis —
-    "φ = 200° від положення 0 (кут кривошипа 45,71°)"."""
+    "φ = 200° від положення 0 (кут кривошипа 45,7° від осі x)": the crank angle as the kinematics
+    sheet gives position 0's (``kintables.phi_convention``: from the x axis, one decimal; review 10
+    read 285,50° here against 75,5° there as two conventions)."""
     turn = round(float(st.from_position0(phi)), 9) % 360.0
-    text = word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi, lang, 2))
+    text = word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi % 360.0, lang, 1))
     return text + idle_words(st, phi, lang)
 
 

@@ -85,6 +85,36 @@ def wrap(text: str, width: float, size: float) -> list[str]:
     return lines or [""]
 
 
+def balanced_wrap(text: str, width: float, size: float) -> list[str]:
+    """``wrap``'s count of lines, broken as a draftsman breaks a name: never inside a parenthesis
+    where a break outside it fits (review 10 #20: «… сита (рецензія» / «10)» → «… сита» /
+    «(рецензія 10)»), before one where it fits, the lines as even in width as these allow."""
+    from itertools import combinations
+
+    from graphplan.util.markup import split
+    words = split(text)
+    greedy = wrap(text, width, size)
+    k = len(greedy)
+    if k < 2 or len(words) > 24:
+        return greedy
+    depth, inside = 0, []           # whether a break before each word falls inside a parenthesis
+    for w in words:
+        inside.append(depth > 0)
+        depth = max(0, depth + w.count("(") - w.count(")"))
+    best, best_cost = greedy, None
+    for cuts in combinations(range(1, len(words)), k - 1):
+        bounds = (0,) + cuts + (len(words),)
+        lines = [" ".join(words[a:b]) for a, b in zip(bounds, bounds[1:])]
+        widths = [text_width(line, size) for line in lines]
+        if max(widths) > width:
+            continue
+        before = any(words[c].startswith("(") for c in cuts)      # «… сита» / «(рецензія 10)»
+        cost = (sum(inside[c] for c in cuts), not before and "(" in text, max(widths) - min(widths))
+        if best_cost is None or cost < best_cost:
+            best, best_cost = lines, cost
+    return best
+
+
 def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     """Title block form 1 (185×55 mm) in the frame's bottom-right corner, filled from ``fields``:
     designation, title, student, teacher, organisation, scale, sheet, sheets, letter, mass."""
@@ -185,7 +215,7 @@ def _block_text(rec: Record, text: str, x: float, y: float, w: float, h: float, 
     if not text:
         return
     for size in sizes:
-        lines = wrap(text, w / SLACK, size)
+        lines = balanced_wrap(text, w / SLACK, size)
         if len(lines) * line_pitch(size) <= h and all(SLACK * text_width(s, size) <= w for s in lines):
             break
     step = line_pitch(size)

@@ -89,12 +89,32 @@ def runs(text: str) -> list[Run]:
             if level == -1 and "_" in body and not is_plain(body):     # v_{O_2}: O₂ an index's index
                 inner = runs(body)
                 out += [Run(r.text, -2 if r.level < 0 else -1, stacked and k == 0) for k, r in enumerate(inner)]
+            elif level < 0 and body[:1].isalpha() and any(ch.isdigit() for ch in body):
+                out.extend(_sub_digits(body, stacked))
             else:
                 out.append(Run(body, level, stacked))
             continue
         base.append(c)
         i += 1
     flush()
+    return out
+
+
+def _sub_digits(body: str, stacked: bool) -> list[Run]:
+    """A subscript that starts with a letter split so its digits after a letter sit one level
+    lower, a subscript inside the subscript as the lab writes it: a^n_BO2 → a^n_{BO₂}, v_S2 →
+    v_{S₂}, l_O1A → l_{O₁A}; an all-digit subscript (R_05, H_1) stays one subscript."""
+    levels = []
+    for k, ch in enumerate(body):
+        levels.append(-2 if ch.isdigit() and k and (body[k - 1].isalpha() or levels[-1] == -2) else -1)
+    out: list[Run] = []
+    k = 0
+    while k < len(body):
+        j = k + 1
+        while j < len(body) and levels[j] == levels[k]:
+            j += 1
+        out.append(Run(body[k:j], levels[k], stacked and not out))
+        k = j
     return out
 
 
@@ -120,14 +140,17 @@ def plain(text: str) -> str:
     if is_plain(text):
         return text
     parts = []
+    level = 0
     for r in runs(text):
         if r.level == 0:
             parts.append(r.text)
         elif r.level < 0:
-            parts.append(r.text.translate(_SUB) if r.text.isdigit() else "_" + r.text)
+            parts.append(r.text.translate(_SUB) if r.text.isdigit() else
+                         ("" if level < 0 else "_") + r.text)
         else:
             ok = all(c in "0123456789nk-*" for c in r.text)
             parts.append(r.text.translate(_SUP) if ok else "^" + r.text)
+        level = r.level
     return "".join(parts)
 
 

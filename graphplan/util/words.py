@@ -141,16 +141,21 @@ MOST_FIGURES = 4    # … unless its largest would then show more than these (DI
 
 
 def column_decimals(values, least: int = LEAST_FIGURES, most: int = MOST_FIGURES,
-                    meaningful: float = MEANINGFUL) -> int:
+                    meaningful: float = MEANINGFUL, typical: bool = False) -> int:
     """One count of decimals for a table's column (or for the columns of one quantity, graphical
     beside exact): enough that the smallest value at least ``meaningful`` of the largest keeps
     ``least`` significant figures, no more than leave the largest ``most`` (ΔT 60,93 / −38,08 /
-    −323,7 → one decimal: 60,9 / −38,1 / −323,7; A_c 22,85 … 1021 → none: 23 … 1021)."""
+    −323,7 → one decimal: 60,9 / −38,1 / −323,7; A_c 22,85 … 1021 → none: 23 … 1021). ``typical``:
+    the figures are set by the column's median meaningful |value| instead of its smallest, so a
+    column's typical values keep ``least`` figures and the few near zero (a dead centre's v 0,004
+    among 0,080 … 0,160) are written to the same decimals with fewer — not the column's decimals
+    raised for them."""
     vals = [abs(float(v)) for v in values if v is not None and math.isfinite(float(v)) and v != 0]
     if not vals:
         return 0
     big = max(vals)
-    small = min(v for v in vals if v >= meaningful * big)
+    kept = sorted(v for v in vals if v >= meaningful * big)
+    small = kept[(len(kept) - 1) // 2] if typical else kept[0]
     order = lambda v: math.floor(math.log10(float(f"{v:.{least - 1}e}")))     # noqa: E731  after rounding (9.996 → 10.0)
     return max(0, min(least - 1 - order(small), most - 1 - order(big)))
 
@@ -639,8 +644,8 @@ WORDS: dict[str, tuple[str, str]] = {
                         "і на важелі; ε, M^Φ: + проти год. стрілки",
                         "a_S, ε from the exact analysis; the same Φ = m·a_S (directed against a_S) and M^Φ = −I_S·ε act on the force "
                         "plans and the lever; ε, M^Φ: + counter-clockwise"),
-    "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}°)",
-                    "φ = {turn}° from position 0 (crank angle {phi}°)"),
+    "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}° від осі x)",
+                    "φ = {turn}° from position 0 (crank angle {phi}° from the x axis)"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
