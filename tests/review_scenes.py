@@ -1210,3 +1210,244 @@ delta = 0.06
 efficiency = 0.92
 synchronous_rpm = 1000
 '''
+
+
+SIXBAR10 = '''# Review 10: a six-bar of a sieve (grader) drive — crank-rocker four-bar O1ABO2 whose coupler plate ABE
+# drives through rod EF a slider F on an inclined guide (60°); crank turning clockwise.
+# Structural formula I(0-1) -> II(2-3) RRR -> II(4-5) RRP.
+title = "Шестиланковий важільний механізм привода сита (рецензія 10)"
+title_en = "Six-bar linkage of a sieve drive (review 10)"
+designation = "ТММ.РВ10.01.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент 10"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.22, -0.05]
+
+[frame.guides]
+f = { through = [0.10, 0.30], angle_deg = 60, title_uk = "сита", title_en = "of the sieve" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+shape = { E = [0.12, 0.08] }
+points = { S2 = [0.12, 0.03] }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.5 }
+
+[[link]]
+name = "EF"
+number = 4
+joints = ["E", "F"]
+length = 0.26
+points = { S4 = 0.5 }
+
+[[link]]
+name = "F"
+number = 5
+joints = ["F"]
+slides_on = "f"
+mass = 18
+
+[branch]
+B = 1
+F = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [4]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+mass_per_length = 40
+inertia_factor = 0.12
+
+[[force]]
+point = "F"
+magnitude = 650
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.3], [0.02, 1], [0.05, 1], [0.06, 0.5]]
+
+[dynamics]
+delta = 0.06
+efficiency = 0.85
+synchronous_rpm = 1000
+'''
+
+
+COMPRESSOR11 = '''# Review 11 (a): a horizontal offset crank-slider of a single-acting air compressor, crank clockwise,
+# positive offset; the gas force from an indicator diagram on the compression stroke (toward the crank).
+title = "Кривошипно-повзунний механізм компресора (рецензія 11)"
+title_en = "Offset crank-slider of an air compressor (review 11)"
+designation = "TMM.RV11.01.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer 11"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP of Ukraine"
+
+[params]
+r = 0.045
+l = 0.180
+e = 0.012
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, "e"], angle_deg = 0, title_uk = "поршня", title_en = "of the piston" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 720
+direction = "cw"
+points = { S1 = 0.25 }
+mass = 2.4
+inertia = 0.0025
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+points = { S2 = 0.32 }
+mass = 1.6
+inertia = 0.0062
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 2.1
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [4, 9]
+force_phi_deg = 130
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 3200
+stroke = "working"
+direction = "oppose"
+# indicator diagram: compression rises slowly, discharge at full pressure over the last quarter
+profile = [[0, 0.03], [0.03, 0.12], [0.05, 0.3], [0.065, 0.7], [0.07, 1], [0.09, 1]]
+
+[dynamics]
+delta = 0.03
+efficiency = 0.85
+synchronous_rpm = 1500
+motor = "4АМ90L4"
+'''
+
+
+REVIEW11_B = '''# Review 11 (b): a Scotch-yoke pump (sinus mechanism) with an inclined slot: the block at the crank pin A
+# slides in the yoke's slot at 75° to the yoke's guide; the yoke's rod D pumps against a pressure force.
+title = "Кулісний (синусний) механізм насоса з похилою кулісою (рецензія 11)"
+title_en = "Scotch-yoke pump with an inclined slot (review 11)"
+designation = "TMM.RV11.02.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer 11"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP of Ukraine"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+rod = { through = [0, 0], angle_deg = 0, title_uk = "штока", title_en = "of the rod" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.08
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3.5
+inertia = 0.006
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "yoke"
+mass = 0.8
+
+[[link]]
+name = "yoke"
+number = 3
+joints = []
+ref = "D"
+slides_on = "rod"
+guide = { through = [-0.02, 0], angle_deg = 75 }
+points = { S3 = [0.06, 0.0] }
+mass = 6.0
+inertia = 0.03
+
+[positions]
+count = 12
+start = "max"
+accel = [2, 8]
+force_phi_deg = 60
+output = "D"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 1800
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [0.02, 1], [0.14, 1], [0.16, 0.2]]
+
+[dynamics]
+delta = 0.06
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -13,6 +13,7 @@ import numpy as np
 from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
+from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
@@ -75,6 +76,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "scales": {"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "mu_T": f.mu_A, "mu_I": f.mu_I},
         "work_resistance": c.work, "moment_driving": md, "moment_driving_graphical": f.driving,
         "positions": positions,
+        "equal_area_intervals": [int(k) for k in f.equal_area],
         "flywheel": {
             "needed": dyn.needs_flywheel,
             "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
@@ -122,7 +124,46 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     out.update(work_resistance=decimals_column(a_c, lang, d), work_driving=decimals_column(a_d, lang, d),
                energy_graphical=decimals_column(d_t, lang, d),
                energy=decimals_column([p["energy"] for p in ps], lang, d))
+    out["energy_error"] = [fixed(e, lang, 1, plus=e != 0).replace("-", "−") + ("*" if abs(round(e, 1)) > LAB_LIMIT else "")
+                           for e in energy_errors(doc)]
     return out
+
+
+def energy_errors(doc: dict[str, Any]) -> list[float]:
+    """Table 1's δ of ΔT гр., %: (ΔT гр. − ΔT)/(ΔT_max − ΔT_min)·100, the printed values (so a reader
+    recomputes the printed δ) over the exact ΔT's range — the span the flywheel is sized by (a row's
+    own ΔT passes through 0, where its own percent says nothing); past the lab's 5 % marked *."""
+    d = energy_decimals(doc)
+    ps = doc["positions"]
+    gr = [round(p["graphical"]["energy"], d) for p in ps]
+    ex = [round(p["energy"], d) for p in ps]
+    span = max(ex) - min(ex)
+    return [100.0 * (g - e) / span if span > 0 else 0.0 for g, e in zip(gr, ex)]
+
+
+def chords_note(doc: dict[str, Any], lang: str) -> str:
+    """The notes' line on the chords' heights and Table 1's δ of ΔT: which intervals took the
+    equal-area mean ordinate (graphic.flywheel.mean_ordinates) instead of the middle one, and what
+    δ is a percent of."""
+    ks = doc.get("equal_area_intervals") or []
+    n = doc["divisions"]
+    where = ", ".join(f"{k}–{k + 1}" for k in ks)
+    uk = lang == "uk"
+    if not ks:
+        head = ("Висоти хорд: ордината в середині кожного інтервалу" if uk else
+                "Chord heights: each interval's middle ordinate")
+    elif len(ks) < n:
+        head = ("Висоти хорд: ордината в середині інтервалу, а в інтервалах " + where +
+                " (там M^*_с спадає чи згинається, або ордината в середині відходить від середньої більше за поділку лінійки) — середня ордината рівних площ (A_с(φ_{k+1}) − A_с(φ_k))/Δφ"
+                if uk else "Chord heights: the middle ordinate, but in intervals " + where +
+                " (there M^*_c drops or bends, or the middle ordinate misses the mean by more than the ruler's division) the equal-area mean ordinate (A_c(φ_{k+1}) − A_c(φ_k))/Δφ")
+    else:
+        head = ("Висоти хорд: середня ордината рівних площ кожного інтервалу (A_с(φ_{k+1}) − A_с(φ_k))/Δφ "
+                "(ордината в середині відхиляється від неї більше за поділку лінійки)" if uk else
+                "Chord heights: each interval's equal-area mean ordinate (A_c(φ_{k+1}) − A_c(φ_k))/Δφ (the middle "
+                "ordinate misses it by more than the ruler's division)")
+    return head + ("; δ ΔT гр. — у % від ΔT_{max} − ΔT_{min} (точно), * — понад 5 %" if uk else
+                   "; δ of ΔT gr. in % of the exact ΔT_{max} − ΔT_{min}, * past 5 %")
 
 
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
@@ -211,14 +252,15 @@ def dynamics_table(f, lang: str = "uk") -> str:
     out.append(w["turn"])
     cols = table_columns(doc, lang)
     keys = ("phi", "turn", "inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance",
-            "work_driving", "energy_graphical", "energy")
+            "work_driving", "energy_graphical", "energy", "energy_error")
     names = ("φ, °", turn, "I*m", "dI*/dφ", "M*c", "Md*", "Ac гр." if lang == "uk" else "Ac gr.",
-             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT")
+             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT", "δ, %")
     # the sheet's Table 1 cell for cell (table_columns), each column as wide as its widest entry
     widths = [max(len(n), *(len(c) for c in cols[k])) for n, k in zip(names, keys)]
     out.append(f"{'№':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
     for j, p in enumerate(doc["positions"]):
         out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
+    out.append(f"  {_term(chords_note(doc, lang))}")
     fw = doc["flywheel"]
     fd = flywheel_decimals(doc)              # Table 2's one count of decimals
     exact = f"{flywheel_text(fw['exact'], 'en', fd):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
@@ -237,7 +279,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
-                                             tangents_note(f, lang), approximate_note(doc, lang, formula=True)) if line]
+                                             tangents_note(f, lang), approximate_note(doc, lang, formula=True),
+                                             design_note(doc, lang)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
@@ -429,6 +472,35 @@ def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ"
     without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
     return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
             f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+
+
+def design_note(doc: dict[str, Any], lang: str) -> str | None:
+    """One sentence on which flywheel the design fits where Table 2 gives two answers (review 11's
+    Scotch yoke: 10,09 kg·m² exact for a constant M*_d, and none with the motor): the motor's — the
+    equation of motion solved with the chosen motor's characteristic, whose moment falls as the
+    speed rises and so takes up part of the fluctuation of ΔT that a constant M*_d leaves to the
+    inertia; the constant-M*_d flywheel is the course's model of an ideal drive, larger and on the
+    safe side. None where the two agree (none needed by either, or one value)."""
+    fw = doc["flywheel"]
+    if not fw["needed"]:
+        return None
+    uk = lang == "uk"
+    J = "кг·м²" if uk else "kg·m²"
+    d = flywheel_decimals(doc)
+    exact = flywheel_text(fw["exact"], lang, d)
+    md = "M^*_д" if uk else "M^*_d"
+    if fw["motor"] > 0:
+        answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J}, розрахований з двигуном" if uk else
+                  f"the flywheel of {flywheel_text(fw['motor'], lang, d)} {J} found with the motor")
+    else:
+        dm = f"{motor_delta(lang)} = {num(doc['motor']['motion']['delta'], lang, 3)} < {num(doc['delta'], lang)}"
+        answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
+    if uk:
+        return (f"Відповідь проєкту — {answer}: характеристика двигуна M(ω) спадає зі швидкістю і сама гасить "
+                f"частину коливань ΔT; {exact} {J} при сталому {md} — курсова модель ідеального привода, з запасом")
+    return (f"The design's answer is {answer}: the motor's moment M(ω) falls as the speed rises and itself takes up "
+            f"part of the fluctuation of ΔT; the {exact} {J} for a constant {md} is the course's model of an ideal "
+            f"drive, on the safe side")
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------

@@ -19,7 +19,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+from graphplan.report.dynamics import (approximate_note, chords_note, design_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
                                        flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
                                        redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
@@ -112,14 +112,14 @@ def positions_table(doc: dict, lang: str) -> Record:
     head = [w["n"], "φ, °", "I^*_м, кг·м²" if uk else "I^*_m, kg·m²", "dI^*_м/dφ, кг·м²" if uk else "dI^*_m/dφ, kg·m²",
             "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m",
             "A_с гр., Дж" if uk else "A_c gr., J", "A_д гр., Дж" if uk else "A_d gr., J",
-            "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J"]
+            "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J", "δ, %"]
     cols = table_columns(doc, lang)         # the terminal's Table 1, cell for cell
     keys = ("inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance", "work_driving",
-            "energy_graphical", "energy")
+            "energy_graphical", "energy", "energy_error")
     rows = [head]
     for k, p in enumerate(doc["positions"]):
         rows.append([str(p["index"]), cols["turn"][k]] + [cols[c][k] for c in keys])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
+    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0, 13.0], row_h=ROW, size=2.5,
                  title=w["positions"])
 
 
@@ -212,6 +212,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
+             chords_note(doc, lang),
              wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
@@ -227,7 +228,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
         if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
             said.append(w["mark"] + w[why].format(e=error_text(errs[key], lang), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
-    said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
+    said += [line for line in (redrawn_note(f, lang), design_note(doc, lang)) if line]   # redrawn, or why not; which flywheel
     if short is not None:
         said.append(short_note(short, lang))
     m = doc["motor"]
