@@ -197,6 +197,9 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
                 rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
             rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+        if k in f.equal_area:                # the equal-area mean ordinate: its horizontal over the interval
+            rec.segment((float(f.x[k]), yk), (float(f.x[k + 1]), yk), role="construction", layer=LAYER,
+                        step=f"equal-area mean of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     _numbers(rec, row)
