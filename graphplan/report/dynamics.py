@@ -142,28 +142,28 @@ def energy_errors(doc: dict[str, Any]) -> list[float]:
 
 
 def chords_note(doc: dict[str, Any], lang: str) -> str:
-    """The notes' line on the chords' heights and Table 1's δ of ΔT: which intervals took the
-    equal-area mean ordinate (graphic.flywheel.mean_ordinates) instead of the middle one, and what
-    δ is a percent of."""
-    ks = doc.get("equal_area_intervals") or []
+    """The notes' line on the chords' heights and Table 1's δ of ΔT (markup): the intervals that took
+    the equal-area mean ordinate (graphic.flywheel.mean_ordinates: M*_c drops or bends inside, or
+    the middle ordinate misses the mean by more than the ruler's division) — those kept at the
+    middle ordinate where they are fewer — and what δ is a percent of."""
+    ks = list(doc.get("equal_area_intervals") or [])
     n = doc["divisions"]
-    where = ", ".join(f"{k}–{k + 1}" for k in ks)
     uk = lang == "uk"
+    spans = lambda idx: ", ".join(f"{k}–{k + 1}" for k in idx)   # noqa: E731
+    rest = [k for k in range(n) if k not in ks]
     if not ks:
-        head = ("Висоти хорд: ордината в середині кожного інтервалу" if uk else
-                "Chord heights: each interval's middle ordinate")
-    elif len(ks) < n:
-        head = ("Висоти хорд: ордината в середині інтервалу, а в інтервалах " + where +
-                " (там M^*_с спадає чи згинається, або ордината в середині відходить від середньої більше за поділку лінійки) — середня ордината рівних площ (A_с(φ_{k+1}) − A_с(φ_k))/Δφ"
-                if uk else "Chord heights: the middle ordinate, but in intervals " + where +
-                " (there M^*_c drops or bends, or the middle ordinate misses the mean by more than the ruler's division) the equal-area mean ordinate (A_c(φ_{k+1}) − A_c(φ_k))/Δφ")
+        where = "ордината в середині кожного інтервалу" if uk else "each interval's middle ordinate"
+    elif not rest:
+        where = ("середня ордината рівних площ у кожному інтервалі" if uk else
+                 "each interval's equal-area mean ordinate")
+    elif len(rest) < len(ks):
+        where = (f"середня ордината рівних площ, крім {spans(rest)} (там — у середині)" if uk else
+                 f"the equal-area mean ordinate, but the middle one in {spans(rest)}")
     else:
-        head = ("Висоти хорд: середня ордината рівних площ кожного інтервалу (A_с(φ_{k+1}) − A_с(φ_k))/Δφ "
-                "(ордината в середині відхиляється від неї більше за поділку лінійки)" if uk else
-                "Chord heights: each interval's equal-area mean ordinate (A_c(φ_{k+1}) − A_c(φ_k))/Δφ (the middle "
-                "ordinate misses it by more than the ruler's division)")
-    return head + ("; δ ΔT гр. — у % від ΔT_{max} − ΔT_{min} (точно), * — понад 5 %" if uk else
-                   "; δ of ΔT gr. in % of the exact ΔT_{max} − ΔT_{min}, * past 5 %")
+        where = (f"ордината в середині, у {spans(ks)} — середня рівних площ" if uk else
+                 f"the middle ordinate, the equal-area mean in {spans(ks)}")
+    return (f"Висоти хорд: {where}; δ ΔT — % від ΔT_{{max}} − ΔT_{{min}}" if uk else
+            f"Chord heights: {where}; δ of ΔT: % of ΔT_{{max}} − ΔT_{{min}}")
 
 
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
@@ -480,27 +480,28 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
     equation of motion solved with the chosen motor's characteristic, whose moment falls as the
     speed rises and so takes up part of the fluctuation of ΔT that a constant M*_d leaves to the
     inertia; the constant-M*_d flywheel is the course's model of an ideal drive, larger and on the
-    safe side. None where the two agree (none needed by either, or one value)."""
+    safe side. None where the two agree (none needed by either, or within the lab's 5 %)."""
     fw = doc["flywheel"]
-    if not fw["needed"]:
-        return None
+    if not fw["needed"] or (fw["motor"] > 0 and abs(fw["motor"] - fw["exact"]) <= LAB_LIMIT / 100 * fw["exact"]):
+        return None                         # one answer, or two within the lab's 5 % of each other
     uk = lang == "uk"
     J = "кг·м²" if uk else "kg·m²"
     d = flywheel_decimals(doc)
     exact = flywheel_text(fw["exact"], lang, d)
     md = "M^*_д" if uk else "M^*_d"
     if fw["motor"] > 0:
-        answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J}, розрахований з двигуном" if uk else
-                  f"the flywheel of {flywheel_text(fw['motor'], lang, d)} {J} found with the motor")
+        answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J} (з двигуном)" if uk else
+                  f"the motor's flywheel, {flywheel_text(fw['motor'], lang, d)} {J}")
     else:
         dm = f"{motor_delta(lang)} = {num(doc['motor']['motion']['delta'], lang, 3)} < {num(doc['delta'], lang)}"
         answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
+    safe = fw["motor"] < fw["exact"]         # the constant-M*_d flywheel the larger: on the safe side
     if uk:
-        return (f"Відповідь проєкту — {answer}: характеристика двигуна M(ω) спадає зі швидкістю і сама гасить "
-                f"частину коливань ΔT; {exact} {J} при сталому {md} — курсова модель ідеального привода, з запасом")
-    return (f"The design's answer is {answer}: the motor's moment M(ω) falls as the speed rises and itself takes up "
-            f"part of the fluctuation of ΔT; the {exact} {J} for a constant {md} is the course's model of an ideal "
-            f"drive, on the safe side")
+        return (f"Відповідь проєкту — {answer}: M(ω) двигуна спадає зі швидкістю і гасить частину коливань; "
+                f"{exact} {J} — для сталого {md}" + (", із запасом" if safe else ", курсова модель"))
+    return (f"The design's answer is {answer}: the motor's M(ω) falls with speed and takes up part of the "
+            f"fluctuation; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
+                                                                    ", the course's model"))
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------

@@ -119,8 +119,13 @@ def positions_table(doc: dict, lang: str) -> Record:
     rows = [head]
     for k, p in enumerate(doc["positions"]):
         rows.append([str(p["index"]), cols["turn"][k]] + [cols[c][k] for c in keys])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0, 13.0], row_h=ROW, size=2.5,
-                 title=w["positions"])
+    rec = table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0, 11.0], row_h=ROW, size=2.5,
+                title=w["positions"])
+    x0, y0, x1, _ = rec.bounds()            # under the table: the chords' heights and what δ is of
+    for k, part in enumerate(wrap_markup(chords_note(doc, lang), x1 - x0 - 4.0, 2.5)):
+        rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                  step="chord heights")
+    return rec
 
 
 def flywheel_table(doc: dict, lang: str) -> Record:
@@ -151,9 +156,16 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
     # under the table, the approximate row's arithmetic: its printed numbers give its printed value
     x0, y0, x1, _ = rec.bounds()
-    for k, part in enumerate(wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)):
+    parts = wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)
+    for k, part in enumerate(parts):
         rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
                   step="approximate arithmetic")
+    said = design_note(doc, lang)           # which of the two answers the design fits (review 11)
+    if said:
+        top = y0 - 4.2 - (len(parts) + 0.3) * line_pitch(2.5)
+        for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
+            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                      step="design answer")
     return rec
 
 
@@ -212,7 +224,6 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
              f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
              f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
-             chords_note(doc, lang),
              wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
@@ -228,7 +239,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
         if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
             said.append(w["mark"] + w[why].format(e=error_text(errs[key], lang), n=doc["divisions"],
                                                   p=num(doc["precision_mm"], lang)))
-    said += [line for line in (redrawn_note(f, lang), design_note(doc, lang)) if line]   # redrawn, or why not; which flywheel
+    said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     if short is not None:
         said.append(short_note(short, lang))
     m = doc["motor"]
