@@ -1479,3 +1479,76 @@ efficiency = 0.85
 synchronous_rpm = 1500
 motor = "4АМ90L4"
 '''
+
+
+REVIEW11_B = '''# Review 11 (b): a Scotch-yoke pump (sinus mechanism) with an inclined slot: the block at the crank pin A
+# slides in the yoke's slot at 75° to the yoke's guide; the yoke's rod D pumps against a pressure force.
+title = "Кулісний (синусний) механізм насоса з похилою кулісою (рецензія 11)"
+title_en = "Scotch-yoke pump with an inclined slot (review 11)"
+designation = "TMM.RV11.02.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer 11"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP of Ukraine"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+rod = { through = [0, 0], angle_deg = 0, title_uk = "штока", title_en = "of the rod" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.08
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3.5
+inertia = 0.006
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "yoke"
+mass = 0.8
+
+[[link]]
+name = "yoke"
+number = 3
+joints = []
+ref = "D"
+slides_on = "rod"
+guide = { through = [-0.02, 0], angle_deg = 75 }
+points = { S3 = [0.06, 0.0] }
+mass = 6.0
+inertia = 0.03
+
+[positions]
+count = 12
+start = "max"
+accel = [2, 8]
+force_phi_deg = 60
+output = "D"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 1800
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [0.02, 1], [0.14, 1], [0.16, 0.2]]
+
+[dynamics]
+delta = 0.06
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

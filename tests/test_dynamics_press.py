@@ -79,7 +79,8 @@ def test_the_inertia_axis_is_graduated_at_its_scale(built):
     steps = np.diff([v for _, v in marks])
     assert np.allclose(steps, steps[0]) and steps[0] / f.mu_I >= 8.0 - 1e-9
     assert marks[0][1] == pytest.approx(steps[0])
-    top = float(np.max(f.inertia_exact))
+    top = float(np.max(f.dyn.cycle.samples.inertia))   # the exact largest, between divisions too (the press's
+    #                                                   12 divisions read 0,467 of its 0,532)
     assert marks[-1][1] <= top * (1 + 1e-9) + f.precision * f.mu_I and marks[-1][1] + steps[0] > top - f.precision * f.mu_I
     assert any(p.kind == "text" and p.text.startswith("μ_I = ") for p in rec.items)
 

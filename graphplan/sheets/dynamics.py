@@ -19,7 +19,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+from graphplan.report.dynamics import (approximate_note, chords_note, design_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
                                        flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
                                        redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
@@ -112,15 +112,20 @@ def positions_table(doc: dict, lang: str) -> Record:
     head = [w["n"], "φ, °", "I^*_м, кг·м²" if uk else "I^*_m, kg·m²", "dI^*_м/dφ, кг·м²" if uk else "dI^*_m/dφ, kg·m²",
             "M^*_с, Н·м" if uk else "M^*_c, N·m", "M^*_д, Н·м" if uk else "M^*_d, N·m",
             "A_с гр., Дж" if uk else "A_c gr., J", "A_д гр., Дж" if uk else "A_d gr., J",
-            "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J"]
+            "ΔT гр., Дж" if uk else "ΔT gr., J", "ΔT, Дж" if uk else "ΔT, J", "δ, %"]
     cols = table_columns(doc, lang)         # the terminal's Table 1, cell for cell
     keys = ("inertia", "d_inertia", "moment_resistance", "moment_driving", "work_resistance", "work_driving",
-            "energy_graphical", "energy")
+            "energy_graphical", "energy", "energy_error")
     rows = [head]
     for k, p in enumerate(doc["positions"]):
         rows.append([str(p["index"]), cols["turn"][k]] + [cols[c][k] for c in keys])
-    return table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0], row_h=ROW, size=2.5,
-                 title=w["positions"])
+    rec = table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0, 11.0], row_h=ROW, size=2.5,
+                title=w["positions"])
+    x0, y0, x1, _ = rec.bounds()            # under the table: the chords' heights and what δ is of
+    for k, part in enumerate(wrap_markup(chords_note(doc, lang), x1 - x0 - 4.0, 2.5)):
+        rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                  step="chord heights")
+    return rec
 
 
 def flywheel_table(doc: dict, lang: str) -> Record:
@@ -151,9 +156,16 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
     # under the table, the approximate row's arithmetic: its printed numbers give its printed value
     x0, y0, x1, _ = rec.bounds()
-    for k, part in enumerate(wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)):
+    parts = wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)
+    for k, part in enumerate(parts):
         rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
                   step="approximate arithmetic")
+    said = design_note(doc, lang)           # which of the two answers the design fits (review 11)
+    if said:
+        top = y0 - 4.2 - (len(parts) + 0.3) * line_pitch(2.5)
+        for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
+            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                      step="design answer")
     return rec
 
 

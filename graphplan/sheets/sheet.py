@@ -107,20 +107,27 @@ def kinds_of(scene, kind: str) -> tuple[str, ...]:
 _PAGES: dict[tuple, int] = {}
 
 
+def _key(kind: str, scene, f, options) -> tuple:
+    opts = options_of(options)
+    return (kind, repr(getattr(scene, "mech", scene)), f.name, opts.positions, tuple(opts.accel or ()),
+            opts.precision, opts.lang or "uk")
+
+
 def pages_of(kind: str, scene, f, options) -> int:
     """How many sheets the kind's document takes on the format ``f``: one on A1 (every kind
-    composes on one A1 sheet), else counted by composing it (remembered per scene, format and
-    options; the language changes no composition)."""
+    composes on one A1 sheet), else counted by composing it in the sheet's own language (remembered
+    per scene, format, options and language: the English notes may wrap to more lines and flow a
+    document onto one more sheet — review 11's compressor: dynamics 3 A3 sheets in Ukrainian, 4 in
+    English, so the set printed "Sheets 11" on kinematics and forces, "of 12" on dynamics)."""
     if f.name == "A1":
         return 1
-    opts = options_of(options)
-    key = (kind, repr(getattr(scene, "mech", scene)), f.name, opts.positions, tuple(opts.accel or ()),
-           opts.precision)
+    key = _key(kind, scene, f, options)
     if key not in _PAGES:
+        opts = options_of(options)
         if len(_PAGES) >= 64:
             _PAGES.pop(next(iter(_PAGES)))
-        _PAGES[key] = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk",
-                                                           kind)).pages)
+        _PAGES[key] = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision,
+                                                           opts.lang or "uk", kind)).pages)
     return _PAGES[key]
 
 
@@ -133,6 +140,8 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
     @functools.wraps(build)
     def wrapper(scene, f, options) -> Sheet:
         sheet = build(scene, f, options)
+        if f.name != "A1":                   # the count the other documents' sheets read: this one's own
+            _PAGES[_key(kind, scene, f, options)] = len(sheet.pages)
         kinds = kinds_of(scene, kind)
         first, total = 1, 0
         for k in kinds:
