@@ -212,6 +212,25 @@ class ForceDrafter:
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
         return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu)), make)
 
+    def hodograph_cells(self, mu_h: float) -> list[tuple[float, float]]:
+        """The hodographs drawn (lettered and captioned, both languages) at the size factor
+        1/``mu_h``, each cell the largest of them as the sheet sets them (``build_forces_sheet``).
+        Drawn, not scaled from the family's model: μR steps along its series and the note under a
+        hodograph, not its curve, set the width where it was measured (the compressor's at 1.6
+        drawn 94.6 mm wide where the model, fitted at 1 and 0.5, said 99.7 — and kept them at 1.4)."""
+        from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+        from graphplan.util.words import LANGS
+
+        def make():
+            sizes = [_wh(captioned(hodograph_record(self.turn, k, HODOGRAPH_MM / mu_h, lang=lang),
+                                   _caption(f"hodograph {k}", lang), size=SMALL_CAPTION["hodographs"]))
+                     for lang in LANGS for k in self.turn.revolute]
+            if not sizes:
+                return []
+            cell = (max(w for w, _ in sizes), max(h for _, h in sizes))
+            return [cell] * len(self.turn.revolute)
+        return self._once(("hodograph cells", round(mu_h, 12)), make)
+
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
         plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
@@ -1011,7 +1030,8 @@ def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         nxt = Family.finer(fam, mu)
         if nxt is None or fam.rel(nxt) > limit + 1e-9:
             break
-        trial = {**leaves, "hodographs": [fam.leaf(nxt, x.name, i) for i, x in enumerate(leaves["hodographs"])]}
+        trial = {**leaves, "hodographs": [Leaf(x.name, *cell) for x, cell in
+                                          zip(leaves["hodographs"], dr.hodograph_cells(nxt))]}
         if not _fits(nat, f, p, trial):
             break
         mu = nxt
