@@ -1481,74 +1481,82 @@ motor = "4АМ90L4"
 '''
 
 
-REVIEW11_B = '''# Review 11 (b): a Scotch-yoke pump (sinus mechanism) with an inclined slot: the block at the crank pin A
-# slides in the yoke's slot at 75° to the yoke's guide; the yoke's rod D pumps against a pressure force.
-title = "Кулісний (синусний) механізм насоса з похилою кулісою (рецензія 11)"
-title_en = "Scotch-yoke pump with an inclined slot (review 11)"
-designation = "TMM.RV11.02.000"
+# Review 11 (b), the Scotch-yoke pump: the same scene as YOKE11 (test_dynamics_review10 names it so)
+REVIEW11_B = YOKE11
+
+
+# Review 11 (a): a horizontal offset crank-slider air compressor, crank clockwise (out/a.toml of branch rev11,
+# its [sheet] left out): P_B and Φ3 at B on one line in opposite senses (#12), its A3 set's scheme (#13)
+REV11_A = '''# Review 11 (a): a horizontal offset crank-slider of a single-acting air compressor, crank clockwise,
+# positive offset; the gas force from an indicator diagram on the compression stroke (toward the crank).
+title = "Кривошипно-повзунний механізм компресора (рецензія 11)"
+title_en = "Offset crank-slider of an air compressor (review 11)"
+designation = "TMM.RV11.01.000"
 lang = "en"
 
-[sheet]
-student = "Reviewer 11"
-teacher = "Teacher"
-group = "MB-41"
-organisation = "NUBiP of Ukraine"
+
+[params]
+r = 0.045
+l = 0.180
+e = 0.012
 
 [frame.points]
 O = [0, 0]
 
 [frame.guides]
-rod = { through = [0, 0], angle_deg = 0, title_uk = "штока", title_en = "of the rod" }
+x = { through = [0, "e"], angle_deg = 0, title_uk = "поршня", title_en = "of the piston" }
 
 [crank]
 name = "OA"
 pivot = "O"
 pin = "A"
-length = 0.08
-rpm = 150
-direction = "ccw"
-points = { S1 = 0.5 }
-mass = 3.5
-inertia = 0.006
+length = "r"
+rpm = 720
+direction = "cw"
+points = { S1 = 0.25 }
+mass = 2.4
+inertia = 0.0025
 
 [[link]]
-name = "2"
+name = "AB"
 number = 2
-joints = ["A"]
-slides_on = "yoke"
-mass = 0.8
+joints = ["A", "B"]
+length = "l"
+points = { S2 = 0.32 }
+mass = 1.6
+inertia = 0.0062
 
 [[link]]
-name = "yoke"
+name = "B"
 number = 3
-joints = []
-ref = "D"
-slides_on = "rod"
-guide = { through = [-0.02, 0], angle_deg = 75 }
-points = { S3 = [0.06, 0.0] }
-mass = 6.0
-inertia = 0.03
+joints = ["B"]
+slides_on = "x"
+mass = 2.1
+
+[branch]
+B = 1
 
 [positions]
 count = 12
-start = "max"
-accel = [2, 8]
-force_phi_deg = 60
-output = "D"
-working_stroke = "to_max"
+start = "outer"
+accel = [4, 9]
+force_phi_deg = 130
+working_stroke = "to_min"
 
 [loads]
 g = 9.81
 
 [[force]]
-point = "D"
-magnitude = 1800
+point = "B"
+magnitude = 3200
 stroke = "working"
 direction = "oppose"
-profile = [[0, 0.2], [0.02, 1], [0.14, 1], [0.16, 0.2]]
+# indicator diagram: compression rises slowly, discharge at full pressure over the last quarter
+profile = [[0, 0.03], [0.03, 0.12], [0.05, 0.3], [0.065, 0.7], [0.07, 1], [0.09, 1]]
 
 [dynamics]
-delta = 0.06
-efficiency = 0.9
-synchronous_rpm = 1000
+delta = 0.03
+efficiency = 0.85
+synchronous_rpm = 1500
+motor = "4АМ90L4"
 '''

@@ -456,10 +456,12 @@ def _lead_far(rec: Record, since: int, asked: list[LabelRequest], step: str) -> 
             continue
         if any(_crosses_line(a, b, ln) for ln in lines):
             continue
+        if any(_crosses_line(a, b, ld) for ld in led):       # nor another number's leader (an X)
+            continue
         if any(box_to_segment(o.ink(), a, b) < CLEAR + 0.3 for o in rec.items            # nor by another
                if o.kind == "text" and o is not q):                                       # number (9 by 10–11's)
             continue
-        rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=step)
+        led.append(rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=step))
 
 
 def _crosses_line(a: complex, b: complex, q: Primitive) -> bool:

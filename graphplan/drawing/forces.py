@@ -174,6 +174,18 @@ def _overlap(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -
     return min(hi, abs(b - a)) - max(lo, 0.0) > tol
 
 
+def _one_arrow(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
+    """Whether two arrows a→b and c→d read as one: on one line (within ``tol`` mm), sharing more
+    than ``tol`` of it (``_overlap``) or meeting end to end (review 11 #12: Φ3 and P_B left the same
+    point above B in opposite senses, one double-headed arrow; the seeds draw such forces apart)."""
+    if _overlap(a, b, c, d, tol):
+        return True
+    u = _unit(b - a)
+    if abs(((c - a).conjugate() * u).imag) > tol or abs(((d - a).conjugate() * u).imag) > tol:
+        return False
+    return any(abs(p - q) <= tol for p in (a, b) for q in (c, d))
+
+
 def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bool:
     """Whether the arrow a→b crosses a drawn link's line (their segments meet, not just touch at an
     end within 0.3 mm)."""
@@ -238,6 +250,7 @@ def _block(rec: Record, z: complex, g: complex, step: str) -> None:
 
 
 GUIDE_MM = 25.0    # a slider's fixed guide drawn this far either side of the block
+HATCH_BAND_MM = BLOCK_HALF + 1.0 + LANE_MM + 0.5   # the guide's hatching on the side with fewer lines this near
 
 
 def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, complex]], step: str) -> None:
@@ -248,8 +261,8 @@ def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, compl
     u = _unit(g)
 
     def ink(n: complex) -> int:          # samples of the lines inside the hatching's band on side n
-        return sum(1 for a, b in lines for k in range(41)
-                   if 0.1 <= dot(a + (b - a) * k / 40 - z, n) <= 3.0
+        return sum(1 for a, b in lines for k in range(41)           # (and the arrows' lanes by the block)
+                   if 0.1 <= dot(a + (b - a) * k / 40 - z, n) <= HATCH_BAND_MM
                    and 6.0 <= abs(dot(a + (b - a) * k / 40 - z, u)) <= GUIDE_MM)
     normal = -1j * u
     if ink(normal) > ink(-normal):
@@ -343,6 +356,21 @@ def _support_direction(z: complex, links: list[tuple[complex, complex]],
     return best[1], best[2]
 
 
+def _longest_first(forces: list, biggest: float) -> list:
+    """The forces in their order, but of those on one line at one point the longest arrow first:
+    it takes the lane by the point, the shorter one the next lane out, its letter clear of the
+    longer's shaft (Φ3 laid first, P_B over it, left Φ3's letter on a leader)."""
+    def line(f) -> tuple:
+        d = _unit(f.force)
+        if d.real < -1e-9 or (abs(d.real) <= 1e-9 and d.imag < 0):
+            d = -d
+        return (round(f.at.real, 6), round(f.at.imag, 6), round(d.real, 6), round(d.imag, 6))
+    first = {}
+    for k, f in enumerate(forces):
+        first.setdefault(line(f), k)
+    return sorted(forces, key=lambda f: (first[line(f)], -_arrow_length(abs(f.force), biggest)))
+
+
 def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: complex | None = None) -> Record:
     """A group drawn at μl: its links, every force acting on it (loads, the reactions handed over by
     the later groups, the reactions found here) and the arms of the moment equations; with
@@ -426,6 +454,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     drawn: list[tuple[complex, complex, complex]] = []     # (point, tail, head) of each arrow drawn
     guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
     lanes: dict[str, complex] = {}     # a force set aside from its line of action: by how much (mm)
+    set_aside: list[tuple[complex, complex, complex, complex]] = []   # … (its point, that, its direction, middle)
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
@@ -438,7 +467,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         # inside a link's line, or along one from its end (Φ5 at D along the rod CD where P_D
         # leaves D the other way): either hides in the link
         inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
-        over = any(abs(w - z) < 0.5 and _overlap(a, b, t, h) for w, t, h in drawn)
+        over = any(abs(w - z) < 0.5 and _one_arrow(a, b, t, h) for w, t, h in drawn)
         if inside and name in armed:
             # an arm is drawn to its line: the arrow beside the link in a lane, its own length
             # (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line
@@ -450,7 +479,20 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                        if abs(e - z) > 0.5 and _on_segment(z, s, e)
                        and abs((_unit(e - z).conjugate() * u).imag) > math.sin(math.radians(ALONG_DEG))]
             n = 1j * u
-            if sum(max(0.0, dot(n, v)) for v in others) > sum(max(0.0, dot(-n, v)) for v in others):
+            here, there = sum(max(0.0, dot(n, v)) for v in others), sum(max(0.0, dot(-n, v)) for v in others)
+            if abs(here - there) <= 1e-9:
+                # either side as free: the side away from the arrows already drawn at the point
+                # (G3 down from B, R03 up not yet set: Φ3 and P_B above the block, not over G3;
+                # R03 then beside the block away from them)
+                laid = [_unit((t + h) / 2 - z) for w, t, h in drawn if abs(w - z) < 0.5 and abs(h - t) > 1e-9
+                        and abs((t + h) / 2 - z) > 1e-9]
+                here, there = sum(max(0.0, dot(n, v)) for v in laid), sum(max(0.0, dot(-n, v)) for v in laid)
+            # a force on the line of one already set aside at its point (Φ3 and P_B at B): its lane
+            # on the same side, where the others leave either free — the two parallel, a lane
+            # apart, the other side left to the guide's hatching (review 11 #12)
+            mate, mid = next(((v, m) for w, v, d, m in set_aside
+                              if abs(w - z) < 0.5 and abs((d.conjugate() * u).imag) < 1e-6), (None, None))
+            if here > there + 1e-9 or (abs(here - there) <= 1e-9 and mate is not None and dot(n, mate) < 0):
                 n = -n
             # a force a few degrees off its link's line (G3 at S3, the rocker 8° from vertical) on
             # the side it turns away to, so that its head does not come back onto the link
@@ -470,8 +512,15 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             first = BLOCK_HALF + 1.0 if block else LANE_MM
             offs = ((first, first + LANE_MM, first + 2 * LANE_MM, -first, -first - LANE_MM) if away else
                     (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM))
-            cands = [(z + off * n, z + off * n + length * u, off) for off in offs]
-            free = [c for c in cands if not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
+            if block and mate is not None:      # at a slider's block: the mate's side, the next lane out
+                side = 1.0 if dot(n, mate) > 0 else -1.0
+                offs = tuple(side * o for o in (first, first + LANE_MM, first + 2 * LANE_MM)) + \
+                    tuple(-side * o for o in (first, first + LANE_MM))
+            # … and over the same stretch of the line as it, pushing toward the point where the
+            # mate pulls from it (the seeds' pair: P_B arriving at B's level beside Φ3 leaving it)
+            back = length * u if mid is not None and dot(mid - z, u) < 0 else 0.0
+            cands = [(z + off * n - back, z + off * n + length * u - back, off) for off in offs]
+            free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
             a, b, off = free[0] if free else cands[-1]
             if block and _crosses(a, b, drawn_links):
                 # beside a slider's block, a lane across no link: leaving the block's level, else
@@ -479,9 +528,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 ends = [(z + o * n + k * length * u, z + o * n + (k + 1) * length * u, o)
                         for o in offs for k in (0, -1)]
                 a, b, off = next((c for c in ends if not _crosses(c[0], c[1], drawn_links)
-                                  and not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)),
+                                  and not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)),
                                  (a, b, off))
             lanes[name] = off * n
+            set_aside.append((z, off * n, u, (a + b) / 2))
         drawn.append((z, a, b))
         return a, b
 
@@ -501,12 +551,12 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         t0, t1 = (z, z + length * u) if dot(u, d) > 0 else (z - length * u, z)
         n = 1j * d
         cands = [(t0 + k * n, t1 + k * n) for k in (LANE_MM, -LANE_MM, 2 * LANE_MM, -2 * LANE_MM)]
-        ca, cb = next((c for c in cands if not any(_overlap(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)
+        ca, cb = next((c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)
                        and not _crosses(c[0], c[1], drawn_links)), cands[0])
         drawn.append((z, ca, cb))
         return ca, cb
 
-    for f in forces:
+    for f in _longest_first(forces, biggest):
         z = f.at / mu
         u = _unit(f.force)
         a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))

@@ -231,6 +231,25 @@ class ForceDrafter:
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
         return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu)), make)
 
+    def hodograph_cells(self, mu_h: float) -> list[tuple[float, float]]:
+        """The hodographs drawn (lettered and captioned, both languages) at the size factor
+        1/``mu_h``, each cell the largest of them as the sheet sets them (``build_forces_sheet``).
+        Drawn, not scaled from the family's model: μR steps along its series and the note under a
+        hodograph, not its curve, set the width where it was measured (the compressor's at 1.6
+        drawn 94.6 mm wide where the model, fitted at 1 and 0.5, said 99.7 — and kept them at 1.4)."""
+        from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+        from graphplan.util.words import LANGS
+
+        def make():
+            sizes = [_wh(captioned(hodograph_record(self.turn, k, HODOGRAPH_MM / mu_h, lang=lang),
+                                   _caption(f"hodograph {k}", lang), size=SMALL_CAPTION["hodographs"]))
+                     for lang in LANGS for k in self.turn.revolute]
+            if not sizes:
+                return []
+            cell = (max(w for w, _ in sizes), max(h for _, h in sizes))
+            return [cell] * len(self.turn.revolute)
+        return self._once(("hodograph cells", round(mu_h, 12)), make)
+
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
         plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
@@ -830,7 +849,8 @@ def _set(nat: Natural, f: Form) -> Plan:
         tables = {n for n, _, _ in nat.tables[factor]}
         grown = _levels(nat.families, lambda m: sheets_of(m) == where, FAMILIES,
                         lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9
-                        and (name != "scheme" or m >= smallest * (1 - 1e-9)), start=mu)
+                        and (name != "scheme" or m >= smallest * (1 - 1e-9) or _scheme_aside(nat, f, m)),
+                        start=mu)
         mu = grown if grown is not None and sheets_of(grown) == where else mu
         # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
         key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
@@ -841,6 +861,20 @@ def _set(nat: Natural, f: Form) -> Plan:
     if best is None:
         return _set_flowed(nat, f)
     return best[1]
+
+
+SCHEME_ROOM = 0.25    # a set's scheme drawn larger than its groups while its cell takes at most this share of a sheet
+
+
+def _scheme_aside(nat: Natural, f: Form, mu: float, size: tuple[float, float] | None = None) -> bool:
+    """Whether a set's scheme at μl ``mu`` (its cell ``size``, else the family's model) takes at most
+    ``SCHEME_ROOM`` of a sheet's field, so that it may be drawn larger than the groups cut from it:
+    review 6 #4 sent back a scheme at 1:1 over two-thirds of an A2 sheet beside groups at 1:2;
+    review 11 #13 one at 1:2 on an A3 sheet (its crank 22 mm, the support's hatching over S1) where
+    1:1, the A1 sheet's scale, takes 16 % of the sheet beside the acceleration plan."""
+    x0, y0, x1, y1 = field_of(f)
+    w, h = size if size is not None else nat.families["scheme"].size(mu)
+    return w * h <= SCHEME_ROOM * (x1 - x0) * (y1 - y0) + 1e-9
 
 
 def _no_smaller(nat: Natural, mu: dict[str, float], than: dict[str, float]) -> bool:
@@ -876,16 +910,20 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     dr = ForceDrafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
     nat = measure(dr)
     hod = nat.families["hodographs"]
+    legible = _legible_factor(dr, hod)
     for _ in range(4):
         hod.floor = 0.0
         free = _one_sheet(nat, f)
         floored = None
-        if free is None or hod.rel(free[1].mu["hodographs"]) < HODOGRAPHS_FLOOR - 1e-9:
-            hod.floor = HODOGRAPHS_FLOOR
+        if free is None or hod.rel(free[1].mu["hodographs"]) < legible - 1e-9:
+            hod.floor = legible
             floored = _one_sheet(nat, f)
+            if floored is None and legible > HODOGRAPHS_FLOOR:
+                hod.floor = HODOGRAPHS_FLOOR
+                floored = _one_sheet(nat, f)
         # the hodographs at their legible size where that costs no main drawing a step it needs
         one = floored if floored is not None and (free is None or _costs_nothing(nat, floored[1], free[1])) else free
-        hod.floor = HODOGRAPHS_FLOOR if one is floored and one is not None else 0.0
+        hod.floor = hod.floor if one is floored and one is not None else 0.0
         one = one[1] if one is not None else None
         fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
                                        for n in ("scheme", "groups", "forces"))
@@ -904,6 +942,19 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
     counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
     return (filled if counts[0] <= counts[1] else plain), nat, dr
+
+
+def _legible_factor(dr: ForceDrafter, hod: Family) -> float:
+    """The hodographs' least size factor on one sheet: ``HODOGRAPHS_FLOOR``, or the first larger
+    one (within their growth's reach) at which no two of a hodograph's points share a number — the
+    compressor's at factor 1 merged "0–2" and "10–11" (75 N/mm) once its groups took the room,
+    where 1.4 numbers each point by its dot."""
+    from graphplan.sheets.compose import FACTORS
+    reach = getattr(hod, "cap", math.inf) * HODOGRAPHS_ROOM
+    for k in sorted(x for x in FACTORS if HODOGRAPHS_FLOOR - 1e-9 <= x <= reach + 1e-9):
+        if not _hodographs_share(dr, 1.0 / k):
+            return k
+    return HODOGRAPHS_FLOOR
 
 
 def _drawn_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> int:
@@ -997,9 +1048,11 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 base = mu.get(key, mu[fam])
                 nxt = fams[fam].finer(base) if fams[fam].factors else (
                     next_length(base) if fam in ("scheme", "groups") else next_round(base))
-                # the scheme never larger than the groups cut from it (review 6 #4)
+                # the scheme never larger than the groups cut from it where it would take much
+                # of its sheet (review 6 #4, ``_scheme_aside``)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
-                        or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)):
+                        or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)
+                            and (one or not _scheme_aside(nat, f, nxt, dr.scheme_size(mu, nxt, fams["scheme"].caption)))):
                     growing.remove((fam, i))
                     continue
                 trial_mu = {**mu, key: nxt}
@@ -1042,7 +1095,8 @@ def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         nxt = Family.finer(fam, mu)
         if nxt is None or fam.rel(nxt) > limit + 1e-9:
             break
-        trial = {**leaves, "hodographs": [fam.leaf(nxt, x.name, i) for i, x in enumerate(leaves["hodographs"])]}
+        trial = {**leaves, "hodographs": [Leaf(x.name, *cell) for x, cell in
+                                          zip(leaves["hodographs"], dr.hodograph_cells(nxt))]}
         if not _fits(nat, f, p, trial):
             break
         mu = nxt

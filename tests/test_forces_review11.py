@@ -1,0 +1,102 @@
+"""The eleventh review's force sheets (review 11 #12, #13; the compressor's hodographs): two forces
+at one point on one line never drawn end to end (one double-headed arrow: Φ3 and P_B left the same
+point above B in opposite senses); the hodographs grown by their cells as drawn at the size tried,
+not by a model fitted where a note decides their width; an A3 set's scheme at a larger series scale
+than its groups where it takes little of its sheet."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import scene_study
+from review_scenes import COMPRESSOR, REV11_A
+
+
+def _vectors(rec) -> list[tuple[str, complex, complex]]:
+    return [(p.text, complex(*p.points[0]), complex(*p.points[1])) for p in rec.items if p.kind == "vector"]
+
+
+def _read_as_one(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
+    """Two arrows a→b, c→d on one line (both ends of c→d within ``tol`` mm of a→b's line) whose
+    stretches of it overlap or meet (no gap between them along the line)."""
+    u = (b - a) / abs(b - a)
+    off = lambda z: abs(((z - a) * u.conjugate()).imag)  # noqa: E731
+    if off(c) > tol or off(d) > tol:
+        return False
+    along = sorted(((z - a) * u.conjugate()).real for z in (c, d))
+    return along[0] <= abs(b - a) + tol and along[1] >= -tol
+
+
+@pytest.mark.parametrize("text", [REV11_A, COMPRESSOR], ids=["rev11_a", "compressor"])
+def test_no_two_forces_on_one_line_read_as_one_arrow(text):
+    """Review 11 #12: every pair of force arrows on the scheme and on each group's drawing either
+    leaves the other's line or keeps a gap along it — Φ3 and P_B at B (collinear, opposite) a lane
+    apart, pushing toward B beside P_B pulling from it; R03 up and G3 down at B likewise."""
+    from graphplan.drawing.forces import group_record, mechanism_record
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    st = scene_study(text)
+    phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
+    fp = forceplans.construct(st, phi, precision=0.5)
+    recs = [mechanism_record(fp, "en")] + [group_record(fp, gp, "en") for gp in fp.groups]
+    for rec in recs:
+        vs = _vectors(rec)
+        assert vs, rec.title
+        for i, (n1, a, b) in enumerate(vs):
+            for n2, c, d in vs[i + 1:]:
+                assert not _read_as_one(a, b, c, d), (rec.title, n1, n2, a, b, c, d)
+    # the pair at B on the review's compressor: both drawn, parallel, in opposite senses
+    if text is REV11_A:
+        for rec in recs[:2]:
+            arrows = {n: (a, b) for n, a, b in _vectors(rec)}
+            (a1, b1), (a2, b2) = arrows["Φ3"], arrows["P_B"]
+            assert abs((b1 - a1).imag) < 1e-6 and abs((b2 - a2).imag) < 1e-6
+            assert (b1 - a1).real < 0 < (b2 - a2).real
+            assert abs(a1.imag - a2.imag) >= 2.0       # a lane apart
+
+
+def test_the_compressors_hodographs_take_the_size_their_drawings_fit():
+    """The compressor's A1 hodographs (R12, R01 at 50 N/mm, factor 1.4) were refused the next size:
+    the family's model, fitted at factors 1 and 0.5 where the note under a hodograph set its width,
+    said 99.7 mm at 1.6 where they are drawn 94.6 mm. Grown by their cells as drawn, the plan takes
+    factor 1.6 or more, and each cell is the drawing's own (both languages, captioned)."""
+    from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+    from graphplan.sheets.compose import SheetOptions, captioned
+    from graphplan.sheets.forces import SMALL_CAPTION, _caption, _wh, plan
+    from graphplan.sheets.form import form
+    st = scene_study(COMPRESSOR)
+    p, nat, dr = plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+    k = 1.0 / p.mu["hodographs"]
+    assert k >= 1.6 - 1e-9
+    cells = dr.hodograph_cells(p.mu["hodographs"])
+    for key, cell in zip(dr.turn.revolute, cells):
+        for lang in ("uk", "en"):
+            w, h = _wh(captioned(hodograph_record(dr.turn, key, HODOGRAPH_MM * k, lang=lang),
+                                 _caption(f"hodograph {key}", lang), size=SMALL_CAPTION["hodographs"]))
+            assert w <= cell[0] + 1e-9 and h <= cell[1] + 1e-9
+    # the model over-reads this size: the drawn cell is the smaller (what the refusal came from)
+    assert max(c[0] for c in cells) < nat.families["hodographs"].size(p.mu["hodographs"])[0]
+    # μR of R12 and R01 a series step finer than at 1.4 (50 → 40 N/mm)
+    assert all(hodograph_record(dr.turn, key, HODOGRAPH_MM * k, lang="en").scales["mu_R"] <= 40.0 + 1e-9
+               for key in dr.turn.revolute)
+
+
+@pytest.mark.slow
+def test_an_a3_sets_scheme_is_drawn_larger_than_its_groups_where_it_takes_little_room():
+    """Review 11 #13: the compressor's A3 set drew its scheme at 1:2, as its groups (its crank
+    22 mm, the support's hatching over S1, G1 on a leader) where A1 draws 1:1, the sheet's right
+    half holding only the acceleration plan. The scheme is drawn at a larger series scale than the
+    groups, its cell within a quarter of the sheet (review 6 #4: never over two-thirds of it), on
+    as many sheets."""
+    from graphplan.sheets.compose import SheetOptions, field_of
+    from graphplan.sheets.forces import SCHEME_ROOM, plan
+    from graphplan.sheets.form import form
+    st = scene_study(REV11_A)
+    f = form("A3")
+    p, nat, dr = plan(st, f, SheetOptions(precision=0.5, sheet="forces"))
+    assert p.shape == "set" and p.sheets == 3
+    assert p.mu["scheme"] < p.mu["groups"] * (1 - 1e-9)
+    assert 0.045 / p.mu["scheme"] >= 30.0 - 1e-9        # the crank r = 45 mm drawn at least 30 mm
+    x0, y0, x1, y1 = field_of(f)
+    w, h = dr.scheme_size(p.mu, p.mu["scheme"], nat.families["scheme"].caption)
+    assert w * h <= SCHEME_ROOM * (x1 - x0) * (y1 - y0)
