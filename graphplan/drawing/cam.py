@@ -659,6 +659,29 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
     rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
+    _stroke(rec, cam, C0, r, h, labels)
+
+
+def _stroke(rec: Record, cam, C0: complex, r: float, h: float, labels: list[LabelRequest]) -> None:
+    """The stroke h dimensioned along the follower's axis (GOST 2.307), as the lab's task states it: the
+    roller (or the knife-edge's point) in its top position dashed, extension lines square to the
+    axis from its start and top centres, the dimension line between them with arrowheads, h lettered —
+    on the side of the near dwell, where the profile stays on the base circle (the inversion turns the
+    dwell's last positions by +σ from the axis: left of it for ccw, right for cw)."""
+    from graphplan.graphic.gears import dimension
+    top = C0 + h * 1j
+    if r:
+        rec.circle(_pt(top), r, role="projection", layer=LAYER, step="stroke h")
+    else:
+        for dx in (-1.5, 1.5):
+            rec.segment(_pt(top), _pt(top + complex(dx, 3.0)), role="projection", layer=LAYER, step="stroke h")
+    side = -1.0 if cam.sense > 0 else 1.0
+    near, far = (r + 1.0 if r else 2.5), (r + 7.0 if r else 8.5)
+    for y in (C0, top):
+        rec.segment(_pt(y + side * near), _pt(y + side * far), role="construction", layer=LAYER, step="stroke h")
+    x = side * (far - 2.0)
+    dimension(rec, C0 + x, top + x, "stroke h")
+    labels.append(LabelRequest(C0 + x + h / 2 * 1j, "h", toward=side, size=TEXT, step="stroke h"))
 
 
 def allowed_text(value: float, lang: str) -> str:
@@ -742,7 +765,7 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
         xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
         band = cam.allowed[ph] / mu_theta
         for sign in (1.0, -1.0):
-            rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
+            rec.segment((xa, sign * band), (xb, sign * band), role="projection", layer=LAYER, step=f"[ϑ] {ph}")  # dashed
         labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
                                    toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
         labels.append(LabelRequest(complex((xa + xb) / 2, -band - 1.0), "−" + allowed_text(-cam.allowed[ph], lang)
