@@ -569,14 +569,64 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
             # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
             # and out: its 0 left of the support's hatching, below it, a row under O_1's letters and on
             # the other side (beside them on one line it read "0 O_1"), off the pivots' circle
-            rec.label((tip.real - 8.0, tip.imag - 7.0 - NUMBER), text, size=NUMBER, anchor="end", layer=LAYER,
-                      step="division 0")
+            # — placed at once, clear of every line drawn (position 1's arm ran under a fixed spot: review 11),
+            # the others then placed round it
+            _zero_by_support(rec, tip, text, feet)
             continue
         labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_l=mu)
     return rec
+
+
+def _zero_by_support(rec: Record, A: complex, text: str, feet) -> None:
+    """The start's number at a rocking follower's pivot O_1 (``A``), below and left of the support as
+    docs/cams.md asks: the first spot, turning from below-left (225°) out to the left and down and
+    stepping out from 5 to 16 mm, whose lettering keeps 0.6 mm off every line and dot drawn so far
+    (position 1's arm and the pivots' circle pass there for a ccw cam: review 11 found the 0 set on
+    the arm) and stands at least 1 mm nearer O_1 than any other pivot; else the spot farthest from
+    the lines."""
+    from shapely.geometry import LineString, Point, box as shp_box
+    from shapely.strtree import STRtree
+    from graphplan.drawing.labels import _box_gap
+    shapes = []
+    for q in rec.items:
+        if q.kind in ("segment", "vector", "polyline") and len(q.points) > 1:
+            shapes.append(LineString(q.points))
+        elif q.kind == "polygon" and len(q.points) > 2:
+            shapes.append(LineString(list(q.points) + [q.points[0]]))
+        elif q.kind in ("circle", "arc"):
+            a0, a1 = q.angles if q.kind == "arc" else (0.0, 360.0)
+            t = np.radians(np.linspace(a0, a1 if a1 > a0 else a1 + 360.0, 181))
+            c = q.points[0]
+            shapes.append(LineString(list(zip(c[0] + q.radius * np.cos(t), c[1] + q.radius * np.sin(t)))))
+        elif q.kind == "point":
+            shapes.append(Point(q.points[0]).buffer(0.8))
+    tree = STRtree(shapes)
+    others = [complex(z) for z in feet if abs(complex(z) - A) > 0.5]
+    best, clear_best = None, -math.inf
+    for r in np.arange(5.0, 16.5, 1.0):
+        for turn in (0, 15, -15, 30, -30, 45, -45, 60):
+            u = cmath.exp(1j * math.radians(225.0 + turn))
+            z = A + r * u
+            trial = rec.label((z.real, z.imag - NUMBER / 2), text, size=NUMBER, anchor="middle", layer=LAYER,
+                              step="division 0")
+            rec.items.pop()
+            ink = trial.ink()
+            own = _box_gap(ink, A)
+            if others and min(_box_gap(ink, w) for w in others) < own + 1.0:
+                continue
+            area = shp_box(*ink)
+            near = [shapes[i] for i in tree.query(area.buffer(2.0))]
+            clear = min((area.distance(g) for g in near), default=2.0)
+            if clear >= 0.6:
+                rec.items.append(trial)
+                return
+            if clear > clear_best:
+                best, clear_best = trial, clear
+    if best is not None:
+        rec.items.append(best)
 
 
 def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
