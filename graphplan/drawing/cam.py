@@ -444,6 +444,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                         step=f"ds/dφ {k}")
         rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
     O = 0j
+    ends: list[complex] = []
     for ph in (0, 1):
         # the boundary of the allowed region: through the drawn point seen from O at the largest angle
         # to the follower's motion, at [ϑ] to it, down past O; O joined to that point
@@ -455,6 +456,12 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         d = -u[k] * complex(math.cos(turn), math.sin(turn))
         length = abs(O - K[k]) * 1.15 + 8.0
         end = K[k] + d * length
+        # the two lines cross near O: each lettered at its own end, the ends drawn 14 mm apart at least
+        # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
+        while ends and abs(end - ends[0]) < 14.0 and length < abs(O - K[k]) * 1.15 + 40.0:
+            length += 2.0
+            end = K[k] + d * length
+        ends.append(end)
         rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
         labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),

@@ -94,8 +94,8 @@ WORDS = {
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
-           "stroke": "хід штовхача h = {h} мм", "swing": "кут розмаху коромисла ψ_{{max}} = {h}°",
-           "omega": "{x}; кутова швидкість кулачка ω = {w} рад/с, обертання {d}",
+           "stroke": "хід h = {h} мм", "swing": "кут розмаху ψ_{{max}} = {h}°",
+           "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
@@ -125,8 +125,8 @@ WORDS = {
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
-           "stroke": "the follower's stroke h = {h} mm", "swing": "the arm's swing ψ_{{max}} = {h}°",
-           "omega": "{x}; the cam's speed ω = {w} rad/s, turning {d}",
+           "stroke": "stroke h = {h} mm", "swing": "swing ψ_{{max}} = {h}°",
+           "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
@@ -213,12 +213,13 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     w = WORDS[lang]
     n = lambda x, d=4: num(x, lang, d).replace("-", "−") if x is not None else "—"      # noqa: E731  a true minus
     rocking = doc["follower"] == "rocking"
-    lines = [w[doc["follower"]] + "; " + w["law"].format(
+    # the task as the lab states it (review 10): the stroke with the follower, ω and its sense with the phases
+    stroke = w["swing"].format(h=n(doc["swing_deg"])) if rocking else w["stroke"].format(h=n(doc["stroke_m"] * 1000))
+    lines = [w[doc["follower"]] + ", " + stroke + "; " + w["law"].format(
         r=w["laws"][doc["laws"]["rise"]], t=w["laws"][doc["laws"]["return"]]),
         w["phases"].format(a=n(doc["phases_deg"]["rise"]), b=n(doc["phases_deg"]["dwell_far"]),
                            c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
-    stroke = w["swing"].format(h=n(doc["swing_deg"])) if rocking else w["stroke"].format(h=n(doc["stroke_m"] * 1000))
-    lines.append(w["omega"].format(x=stroke, w=n(doc["omega_rad_s"]), d=w["sense"][doc["sense"]]))
+    lines[-1] += "; " + w["omega"].format(w=n(doc["omega_rad_s"]), d=w["sense"][doc["sense"]])
     lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
                                  p=n(doc["arm_angle_deg"])) if rocking else w["offset"].format(e=n(doc["offset_m"] * 1000)))
     g = doc["base_radius_graphical_m"]

@@ -610,9 +610,15 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
         again = flow([leaves, [tab, beside_]], region, keep)
         if again is not None and not notes_alone(again[-1]) and len(again) <= len(laid):
             return again
-    under = Leaf("notes", record=note_block(lines, max(TITLE, tw)))
-    again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep)
-    return again if again is not None and not notes_alone(again[-1]) else laid
+    # under the table at its width; else wider, up to the sheet's field (review 10's A3 set: at the
+    # table's 195 mm its notes took one line more than the sheet had under it, and went alone)
+    for wide in sorted({max(TITLE, tw), max(TITLE, tw, min(300.0, region[2] - region[0])),
+                        max(TITLE, tw, region[2] - region[0])}):
+        under = Leaf("notes", record=note_block(lines, wide))
+        again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep)
+        if again is not None and not notes_alone(again[-1]):
+            return again
+    return laid
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
@@ -698,7 +704,9 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     if laid is None:
         return laid
     # the table and the notes as kept_together laid them (the notes may be wrapped to the table's width)
-    last = [leaf for leaf, _ in laid[-1] if leaf.name in ("table", "notes")] or [tab, nts]
+    # — from every sheet: where they stand on two (the notes alone after the table), both go on (review
+    # 10's A3 set dropped Table 1, laid[-1] holding the notes only)
+    last = [leaf for page in laid for leaf, _ in page if leaf.name in ("table", "notes")] or [tab, nts]
     # as tall as the room the table and the notes leave (an A3 set: 70 mm under them; review 9,
     # finding 2 — the trials stopped at 70 % of 130 mm, and ϑ(φ) went nowhere), as wide as the sheet
     # — of the widths tried, the one that draws it tallest (a fine μ_ϑ at a coarse μ_φ over a flat ϑ)
