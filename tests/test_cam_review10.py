@@ -131,3 +131,32 @@ def test_the_rocking_start_number_keeps_off_every_line_a1():
 def test_the_rocking_start_number_keeps_off_every_line(which, fmt):
     data = _scene(CAM_REV11) if which == "rev11" else tomllib.loads((ROOT / "examples" / "cam_rocking.toml").read_text())
     _zero_clear(data, fmt)
+
+
+def test_the_phase_diagrams_allowed_lines_are_lettered_apart():
+    """Review 11 #16: the two [ϑ] lines cross by O; each is lettered by its own end, the ends at least
+    14 mm apart, each letter nearer its own line's end than the other's."""
+    from graphplan.drawing.cam import phase_diagram
+    sol, g = _construct(_scene(CAM_REV11))
+    rec = phase_diagram(sol, g, "en")
+    ends = [complex(*next(p for p in rec.items if p.step == f"[ϑ] line {ph}").points[1]) for ph in (0, 1)]
+    assert abs(ends[0] - ends[1]) >= 14.0 - 1e-9
+    allowed = [round(a) for a in sol.cam.allowed]
+    for ph in (0, 1):
+        text = next(p for p in rec.items if p.kind == "text" and p.text == f"[ϑ] = {allowed[ph]}°")
+        ink = text.ink()
+        mid = complex((ink[0] + ink[2]) / 2, (ink[1] + ink[3]) / 2)
+        assert abs(mid - ends[ph]) < abs(mid - ends[1 - ph])
+
+
+@pytest.mark.slow
+def test_a_sets_table_is_never_dropped():
+    """Review 10's A3 set: its notes, one line longer at the table's width, stood alone after Table 1 and
+    the pressure diagram's pass kept the notes only — every set carries Table 1 and ϑ(φ)."""
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    cam = build(_scene(CAM_REV10), "<scene>")
+    sheet = build_cam_sheet(cam, form("A3"), SheetOptions(lang="uk", sheet="cam"))
+    texts = " ".join(p.text for s in sheet.pages for p in s.record.items if p.kind == "text")
+    assert len(sheet.pages) == 3 and "Таблиця 1" in texts and "Кут тиску" in texts
