@@ -1560,3 +1560,58 @@ efficiency = 0.85
 synchronous_rpm = 1500
 motor = "4АМ90L4"
 '''
+
+
+CAM_REV10 = '''
+# Review 10: a disc cam turning clockwise with an offset translating roller follower;
+# parabolic (uniform acceleration–deceleration) rise, linear (constant velocity) return.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (рецензія 10)"
+title_en = "Disc cam with a translating roller follower (review 10)"
+designation = "ТММ.РВ10.05.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент 10"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.030
+offset = 0.010
+roller_radius = 0.012
+phases_deg = { rise = 150, dwell_far = 20, return = 110, dwell_near = 80 }
+laws = { rise = "parabolic", return = "linear" }
+pressure_angle_deg = { rise = 28, return = 35 }
+omega = 15
+direction = "cw"
+'''
+
+
+CAM_REV11 = '''
+# Review 11 (c): a disc cam with a rocking knife-edge follower, the cam turning counter-clockwise;
+# parabolic rise, cosine return, long far dwell.
+title = "Кулачковий механізм з коромисловим загостреним штовхачем (рецензія 11)"
+title_en = "Disc cam with a rocking knife-edge follower (review 11)"
+designation = "TMM.RV11.05.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer 11"
+teacher = "Teacher"
+group = "MB-41"
+organisation = "NUBiP of Ukraine"
+
+[cam]
+follower = "rocking"
+swing_deg = 18
+arm = 0.085
+centre_distance = 0.11
+roller_radius = 0
+phases_deg = { rise = 110, dwell_far = 60, return = 90, dwell_near = 100 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 35, return = 45 }
+rpm = 200
+direction = "ccw"
+'''

@@ -187,7 +187,7 @@ def test_cam_tables_and_drawings(tmp_path):
     assert "R₀" in out and "ds/dφ" in out
     assert sorted(p.name for p in tmp_path.iterdir()) == ["diagrams.svg", "phase.svg", "profile.svg"]
     code, out, _ = run(["cam", str(ROCKING), "--lang", "en"])
-    assert code == 0 and "Rocking follower;" in out          # the notes capitalised (review 2)
+    assert code == 0 and "Rocking follower, " in out         # the notes capitalised (review 2)
 
 
 BASE = TRANSLATING.read_text(encoding="utf-8")

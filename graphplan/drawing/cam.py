@@ -444,6 +444,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                         step=f"ds/dφ {k}")
         rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
     O = 0j
+    ends: list[complex] = []
     for ph in (0, 1):
         # the boundary of the allowed region: through the drawn point seen from O at the largest angle
         # to the follower's motion, at [ϑ] to it, down past O; O joined to that point
@@ -455,6 +456,12 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         d = -u[k] * complex(math.cos(turn), math.sin(turn))
         length = abs(O - K[k]) * 1.15 + 8.0
         end = K[k] + d * length
+        # the two lines cross near O: each lettered at its own end, the ends drawn 14 mm apart at least
+        # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
+        while ends and abs(end - ends[0]) < 14.0 and length < abs(O - K[k]) * 1.15 + 40.0:
+            length += 2.0
+            end = K[k] + d * length
+        ends.append(end)
         rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
         labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),
@@ -569,14 +576,64 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
             # the start's pivot is O_1 (on +x, the arm up to the left, the support under it), lettered up
             # and out: its 0 left of the support's hatching, below it, a row under O_1's letters and on
             # the other side (beside them on one line it read "0 O_1"), off the pivots' circle
-            rec.label((tip.real - 8.0, tip.imag - 7.0 - NUMBER), text, size=NUMBER, anchor="end", layer=LAYER,
-                      step="division 0")
+            # — placed at once, clear of every line drawn (position 1's arm ran under a fixed spot: review 11),
+            # the others then placed round it
+            _zero_by_support(rec, tip, text, feet)
             continue
         labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_l=mu)
     return rec
+
+
+def _zero_by_support(rec: Record, A: complex, text: str, feet) -> None:
+    """The start's number at a rocking follower's pivot O_1 (``A``), below and left of the support as
+    docs/cams.md asks: the first spot, turning from below-left (225°) out to the left and down and
+    stepping out from 5 to 16 mm, whose lettering keeps 0.6 mm off every line and dot drawn so far
+    (position 1's arm and the pivots' circle pass there for a ccw cam: review 11 found the 0 set on
+    the arm) and stands at least 1 mm nearer O_1 than any other pivot; else the spot farthest from
+    the lines."""
+    from shapely.geometry import LineString, Point, box as shp_box
+    from shapely.strtree import STRtree
+    from graphplan.drawing.labels import _box_gap
+    shapes = []
+    for q in rec.items:
+        if q.kind in ("segment", "vector", "polyline") and len(q.points) > 1:
+            shapes.append(LineString(q.points))
+        elif q.kind == "polygon" and len(q.points) > 2:
+            shapes.append(LineString(list(q.points) + [q.points[0]]))
+        elif q.kind in ("circle", "arc"):
+            a0, a1 = q.angles if q.kind == "arc" else (0.0, 360.0)
+            t = np.radians(np.linspace(a0, a1 if a1 > a0 else a1 + 360.0, 181))
+            c = q.points[0]
+            shapes.append(LineString(list(zip(c[0] + q.radius * np.cos(t), c[1] + q.radius * np.sin(t)))))
+        elif q.kind == "point":
+            shapes.append(Point(q.points[0]).buffer(0.8))
+    tree = STRtree(shapes)
+    others = [complex(z) for z in feet if abs(complex(z) - A) > 0.5]
+    best, clear_best = None, -math.inf
+    for r in np.arange(5.0, 16.5, 1.0):
+        for turn in (0, 15, -15, 30, -30, 45, -45, 60):
+            u = cmath.exp(1j * math.radians(225.0 + turn))
+            z = A + r * u
+            trial = rec.label((z.real, z.imag - NUMBER / 2), text, size=NUMBER, anchor="middle", layer=LAYER,
+                              step="division 0")
+            rec.items.pop()
+            ink = trial.ink()
+            own = _box_gap(ink, A)
+            if others and min(_box_gap(ink, w) for w in others) < own + 1.0:
+                continue
+            area = shp_box(*ink)
+            near = [shapes[i] for i in tree.query(area.buffer(2.0))]
+            clear = min((area.distance(g) for g in near), default=2.0)
+            if clear >= 0.6:
+                rec.items.append(trial)
+                return
+            if clear > clear_best:
+                best, clear_best = trial, clear
+    if best is not None:
+        rec.items.append(best)
 
 
 def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
@@ -659,6 +716,29 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
     rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
+    _stroke(rec, cam, C0, r, h, labels)
+
+
+def _stroke(rec: Record, cam, C0: complex, r: float, h: float, labels: list[LabelRequest]) -> None:
+    """The stroke h dimensioned along the follower's axis (GOST 2.307), as the lab's task states it: the
+    roller (or the knife-edge's point) in its top position dashed, extension lines square to the
+    axis from its start and top centres, the dimension line between them with arrowheads, h lettered —
+    on the side of the near dwell, where the profile stays on the base circle (the inversion turns the
+    dwell's last positions by +σ from the axis: left of it for ccw, right for cw)."""
+    from graphplan.graphic.gears import dimension
+    top = C0 + h * 1j
+    if r:
+        rec.circle(_pt(top), r, role="projection", layer=LAYER, step="stroke h")
+    else:
+        for dx in (-1.5, 1.5):
+            rec.segment(_pt(top), _pt(top + complex(dx, 3.0)), role="projection", layer=LAYER, step="stroke h")
+    side = -1.0 if cam.sense > 0 else 1.0
+    near, far = (r + 1.0 if r else 2.5), (r + 7.0 if r else 8.5)
+    for y in (C0, top):
+        rec.segment(_pt(y + side * near), _pt(y + side * far), role="construction", layer=LAYER, step="stroke h")
+    x = side * (far - 2.0)
+    dimension(rec, C0 + x, top + x, "stroke h")
+    labels.append(LabelRequest(C0 + x + h / 2 * 1j, "h", toward=side, size=TEXT, step="stroke h"))
 
 
 def allowed_text(value: float, lang: str) -> str:
@@ -742,7 +822,7 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
         xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
         band = cam.allowed[ph] / mu_theta
         for sign in (1.0, -1.0):
-            rec.segment((xa, sign * band), (xb, sign * band), role="direction", layer=LAYER, step=f"[ϑ] {ph}")
+            rec.segment((xa, sign * band), (xb, sign * band), role="projection", layer=LAYER, step=f"[ϑ] {ph}")  # dashed
         labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
                                    toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
         labels.append(LabelRequest(complex((xa + xb) / 2, -band - 1.0), "−" + allowed_text(-cam.allowed[ph], lang)

@@ -188,21 +188,30 @@ def _grid(cam: Cam, n: int = 7200) -> Array:
 
 
 def phase_maxima(cam: Cam, g: Geometry) -> tuple[float, float]:
-    """Each active phase's largest |ϑ| (deg) over the continuous phase: the 0.05° grid's largest,
-    refined by a bounded search between its neighbours (the divisions' values may lie below it)."""
+    """Each active phase's largest |ϑ| (deg) over the continuous phase (phase_extremes' magnitudes)."""
+    rise, ret = phase_extremes(cam, g)
+    return abs(rise), abs(ret)
+
+
+def phase_extremes(cam: Cam, g: Geometry) -> tuple[float, float]:
+    """Each active phase's pressure angle of largest magnitude (deg), signed as Table 1 signs ϑ: the
+    0.05° grid's largest |ϑ|, refined by a bounded search between its neighbours (the divisions'
+    values may lie below it)."""
     from scipy.optimize import minimize_scalar
     grid = _grid(cam)
     out = []
     for k in (0, 1):
         sel = grid[phase_of(cam, grid) == k]
-        th = np.abs(profile(cam, g, sel)["theta"])
+        signed = profile(cam, g, sel)["theta"]
+        th = np.abs(signed)
         j = int(np.argmax(th))
         lo, hi = sel[max(j - 1, 0)], sel[min(j + 1, len(sel) - 1)]
-        best = float(th[j])
+        best = float(signed[j])
         if hi > lo:
             r = minimize_scalar(lambda x: -abs(float(profile(cam, g, np.array([x]))["theta"][0])),
                                 bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
-            best = max(best, -float(r.fun))
+            if -float(r.fun) > abs(best):
+                best = float(profile(cam, g, np.array([float(r.x)]))["theta"][0])
         out.append(best)
     return out[0], out[1]
 
@@ -309,9 +318,14 @@ class Solution:
 
     def pressure_maxima(self) -> tuple[float, float]:
         """Each active phase's largest |ϑ| over the continuous phase (phase_maxima), once."""
-        if "maxima" not in self.cache:
-            self.cache["maxima"] = phase_maxima(self.cam, self.geometry)
-        return self.cache["maxima"]
+        rise, ret = self.pressure_extremes()
+        return abs(rise), abs(ret)
+
+    def pressure_extremes(self) -> tuple[float, float]:
+        """Each active phase's pressure angle of largest magnitude, signed (phase_extremes), once."""
+        if "extremes" not in self.cache:
+            self.cache["extremes"] = phase_extremes(self.cam, self.geometry)
+        return self.cache["extremes"]
 
     def at(self, phi_deg: Array, phase: Array | None = None) -> dict[str, Array]:
         s, v, a = motion(self.cam, phi_deg, phase)

@@ -67,6 +67,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "base_radius_graphical_m": _f(g.R0_min),
         "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
         "pressure_angle_max_deg": dict(zip(("rise", "return"), sol.pressure_maxima())),
+        "pressure_angle_extreme_deg": dict(zip(("rise", "return"), sol.pressure_extremes())),
         "curvature_min_m": _f(sol.curvature_min()),
         "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
                              "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
@@ -94,6 +95,9 @@ WORDS = {
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
+           "stroke": "хід h = {h} мм", "swing": "кут розмаху ψ_{{max}} = {h}°",
+           "omega": "кулачок обертається {d}, ω = {w} рад/с",
+           "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
@@ -122,6 +126,9 @@ WORDS = {
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
+           "stroke": "stroke h = {h} mm", "swing": "swing ψ_{{max}} = {h}°",
+           "omega": "the cam turning {d}, ω = {w} rad/s",
+           "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
@@ -207,18 +214,22 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     w = WORDS[lang]
     n = lambda x, d=4: num(x, lang, d).replace("-", "−") if x is not None else "—"      # noqa: E731  a true minus
     rocking = doc["follower"] == "rocking"
-    lines = [w[doc["follower"]] + "; " + w["law"].format(
+    # the task as the lab states it (review 10): the stroke with the follower, ω and its sense with the phases
+    stroke = w["swing"].format(h=n(doc["swing_deg"])) if rocking else w["stroke"].format(h=n(doc["stroke_m"] * 1000))
+    lines = [w[doc["follower"]] + ", " + stroke + "; " + w["law"].format(
         r=w["laws"][doc["laws"]["rise"]], t=w["laws"][doc["laws"]["return"]]),
         w["phases"].format(a=n(doc["phases_deg"]["rise"]), b=n(doc["phases_deg"]["dwell_far"]),
                            c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
+    lines[-1] += "; " + w["omega"].format(w=n(doc["omega_rad_s"]), d=w["sense"][doc["sense"]])
     lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
                                  p=n(doc["arm_angle_deg"])) if rocking else w["offset"].format(e=n(doc["offset_m"] * 1000)))
     g = doc["base_radius_graphical_m"]
     lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     e=n(doc["base_radius_error_pct"], 3).replace("-", "−"),
                                     r=n(doc["base_radius_m"] * 1000)))
-    ang = lambda x: fixed(x, lang, 2)                 # noqa: E731  both maxima to 0.01°, one style
-    lines.append(w["angles"].format(r=ang(doc["pressure_angle_max_deg"]["rise"]), t=ang(doc["pressure_angle_max_deg"]["return"]),
+    ang = lambda x: fixed(x, lang, 2).replace("-", "−")       # noqa: E731  both to 0.01°, signed as Table 1
+    top = doc.get("pressure_angle_extreme_deg") or doc["pressure_angle_max_deg"]
+    lines.append(w["angles"].format(r=ang(top["rise"]), t=ang(top["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     c = doc["curvature_min_m"]

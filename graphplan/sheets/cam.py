@@ -560,9 +560,15 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
         again = flow([leaves, [tab, beside_]], region, keep, later=later)
         if again is not None and not notes_alone(again[-1]) and len(again) <= len(laid):
             return again
-    under = Leaf("notes", record=note_block(lines, max(TITLE, tw)))
-    again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep, later=later)
-    return again if again is not None and not notes_alone(again[-1]) else laid
+    # under the table at its width; else wider, up to the sheet's field (review 10's A3 set: at the
+    # table's 195 mm its notes took one line more than the sheet had under it, and went alone)
+    for wide in sorted({max(TITLE, tw), max(TITLE, tw, min(300.0, region[2] - region[0])),
+                        max(TITLE, tw, region[2] - region[0])}):
+        under = Leaf("notes", record=note_block(lines, wide))
+        again = flow([leaves, [Stack([tab, under], flush=True)]], region, keep, later=later)
+        if again is not None and not notes_alone(again[-1]):
+            return again
+    return laid
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it

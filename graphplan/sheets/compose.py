@@ -17,7 +17,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from graphplan.drawing.layout import GAP, Placed
-from graphplan.graphic.record import Record, line_pitch, text_width
+from graphplan.graphic.record import Record, left_bearing, line_pitch, text_width
 from graphplan.sheets.form import Form, frame, title_block, title_block_box
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num
@@ -318,12 +318,14 @@ NOTE_STEP = line_pitch(NOTE)   # mm from one line's baseline to the next
 
 
 def note_block(lines: Sequence[str], width: float, title: str = "notes") -> Record:
-    """Lines of notes wrapped to ``width`` mm, one under another (a continued line indented)."""
+    """Lines of notes wrapped to ``width`` mm, one under another (a continued line indented), each
+    line's ink flush with the margin (its first glyph's side bearing taken off: review 10's «R₀ …»
+    line stood 0.7 mm in, osifont's R)."""
     rec = Record(title)
     y = 0.0
     for line in lines:
         for k, part in enumerate(wrap_markup(line, width - 5.0, NOTE)):
-            rec.label((5.0 if k else 0.0, y), part, size=NOTE, layer="labels", step="notes")
+            rec.label(((5.0 if k else 0.0) - left_bearing(part, NOTE), y), part, size=NOTE, layer="labels", step="notes")
             y -= NOTE_STEP
     return rec
 
