@@ -77,7 +77,9 @@ def test_the_press_sheets_rows_check():
     sheet = BUILDERS["dynamics"](st, form("A1"), args)
     texts = {p.name: [i.text for i in p.record.items if i.kind == "text"] for p in sheet.placed}
     notes = " ".join(plain(t) for t in texts["notes"])
-    assert "побудовано заново" not in notes and "середня ордината рівних площ" in notes   # equal-area heights
+    assert "побудовано заново" not in notes
+    chords = " ".join(plain(t) for t in texts["positions table"])          # under Table 1: the chords' heights
+    assert "Висоти хорд: середня ордината рівних площ" in chords           # equal-area heights
     assert "відтинають k" in notes                        # the tangents by their slope, not a protractor
     flywheel = [plain(t) for t in texts["flywheel table"]]
     assert "не потрібен (δ_дв = 0,0236 < 0,03)" in flywheel  # with the motor: none needed, its own δ

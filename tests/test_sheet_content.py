@@ -179,9 +179,9 @@ def test_dynamics_sheets_typeset_every_symbol(slotter_dynamics, shaper_dynamics)
         for plain_symbol in ("Iм", "I*м", "Mс*", "Mд*", "ωm", "μM", "Iрот", "ψmax"):
             assert plain_symbol not in joined, plain_symbol    # only as markup (I_мах, I^*_м, M^*_с …)
     lines = texts(shaper_dynamics)
-    head = lines.index("ΔT гр., Дж")                              # Table 1's last two heads (the axes
-    assert lines[head + 1] == "ΔT, Дж"                             # are lettered "ΔT, Дж" too)
-    first = lines[head + 2:][:9]                                   # position 0: a dead centre of the ram
+    head = lines.index("ΔT гр., Дж")                              # Table 1's last three heads (the axes
+    assert lines[head + 1:head + 3] == ["ΔT, Дж", "δ, %"]          # are lettered "ΔT, Дж" too)
+    first = lines[head + 3:][:11]                                  # position 0: a dead centre of the ram
     assert first[:2] == ["0", "0,0"] and first[3] == "0", first
 
 
@@ -231,8 +231,10 @@ def test_clockwise_crank_derivative_follows_the_printed_phi():
     assert st.mech.omega1 < 0
     doc = dynamics_json(construct(analyse(st), divisions=24))
     lines = record_texts(positions_table(doc, "uk"))
-    start = lines.index("ΔT, Дж") + 1
-    rows = [lines[start + 10 * k: start + 10 * (k + 1)] for k in range(24)]   # 10 columns: A_д гр. added
+    start = lines.index("δ, %") + 1                                  # the last head: δ of ΔT
+    width = start - lines.index("№")                                 # the heads, № … δ: a row's cells
+    assert width == 11                                               # 11 columns: A_д гр., then δ added
+    rows = [lines[start + width * k: start + width * (k + 1)] for k in range(24)]
     val = lambda s: float(s.replace("−", "-").replace(",", "."))  # noqa: E731
     phi = [val(r[1]) for r in rows]
     inertia = [val(r[2]) for r in rows]
