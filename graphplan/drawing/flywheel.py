@@ -497,11 +497,15 @@ def _free_boxes(rec: Record, breaking: bool = False):
     texts = [(box(*p.ink()), NUMBERS_APART if is_number(p.text) else APART)
              for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
+    reach = GRADUATION_CLEAR + (max(halves) if halves else 0.0)
+
     def free(bx: tuple[float, float, float, float]) -> bool:
         g = box(*bx)
-        if tree is not None:
-            for i in tree.query(g.buffer(GRADUATION_CLEAR + 0.5)):
-                if segs[i].distance(g) < GRADUATION_CLEAR + halves[i]:
+        if tree is not None:     # the box grown along x and y, as the sheet's check grows it
+            x0, y0, x1, y1 = bx  # (labels.collisions): a slanted line by a corner is nearer than the
+            for i in tree.query(box(x0 - reach, y0 - reach, x1 + reach, y1 + reach)):   # distance says
+                d = GRADUATION_CLEAR + halves[i]
+                if segs[i].intersects(box(x0 - d, y0 - d, x1 + d, y1 + d)):
                     return False
         return all(t.distance(g) >= apart for t, apart in texts)
     return free
