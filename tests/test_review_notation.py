@@ -97,14 +97,16 @@ def _texts(sheet) -> list:
 
 
 def _paragraph(sheet, start: str) -> str:
-    """The notes' line that begins with ``start`` with its continued lines (indented 5 mm) joined."""
+    """The notes' line that begins with ``start`` with its continued lines (indented 5 mm) joined; a
+    line's start may sit up to a letter's side bearing (under 0.8 mm) off the margin, since the notes
+    set each line's ink flush (graphic.record: a lower-case letter's bearing taken off)."""
     first = next(p for p in _texts(sheet) if p.text.startswith(start))
     x, y = first.points[0]
     below = sorted((p for p in _texts(sheet) if p.size == first.size and p.points[0][1] < y - 1e-9
-                    and abs(p.points[0][0] - x) < 5.01), key=lambda p: -p.points[0][1])
+                    and abs(p.points[0][0] - x) < 5.8), key=lambda p: -p.points[0][1])
     text = first.text
     for p in below:
-        if abs(p.points[0][0] - (x + 5.0)) > 0.01:
+        if abs(p.points[0][0] - (x + 5.0)) > 0.8:
             break
         text += " " + p.text
     return text
