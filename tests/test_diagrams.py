@@ -268,3 +268,32 @@ def test_command_json_svg_and_errors(tmp_path, capsys):
         assert main(["diagrams", scene, *bad]) == 2
         _, err = capsys.readouterr()
         assert len(err.strip().splitlines()) == 1 and err.startswith("graphplan: ")
+
+
+def test_the_v_curve_passes_through_zero_at_the_dead_centres(lab):
+    # seed 002: v = 0 where s has its extremum; the lab draws the French curve of v through the
+    # middles' ordinates AND through 0 at an extreme position (an added point, not a changed reading)
+    from review_scenes import REV11_A
+    from conftest import scene_study
+    from graphplan.graphic.chords import periodic_spline
+    from graphplan.graphic.diagrams import v_knots
+    st = scene_study(REV11_A)
+    r, l, e = 0.045, 0.180, 0.012
+    outer = math.degrees(math.asin(e / (r + l)))              # crank and rod in line: sin φ = e/(r + l)
+    inner = 180.0 + math.degrees(math.asin(e / (l - r)))      # folded: sin(φ − 180°) = e/(l − r)
+    d = chord_diagrams(st, H1=44, H2=32, precision=0.5)
+    assert d.phi[0] == pytest.approx(outer, abs=1e-6)
+    inner_turn = (outer - inner) % 360.0                      # clockwise crank: turn = φ0 − φ
+    assert np.min(np.abs(d.turn - inner_turn)) > 1.0          # the inner one lies between ordinates
+    assert list(d.drawn.v_zeros) == [0.0] and list(d.exact.v_zeros) == [0.0]
+    curve = periodic_spline(*v_knots(d.x_mid, d.drawn.v, d.drawn.v_zeros), d.L)
+    assert abs(float(curve(np.array([0.0]))[0])) < 1e-12
+    assert d.drawn.v_at[0] == 0.0 and d.drawn.v_at[-1] == 0.0  # review 11: read −1.0 mm (−0.13 m/s) before
+    assert d.values()["v_at"][0] == 0.0
+    # the readings themselves are unchanged: still the chords' heights read with the ruler
+    assert np.allclose(d.drawn.v, np.round(d.drawn.v_ray / 0.5) * 0.5)
+    # a centric crank-slider stops at 0 and 180° (closed form), both on the 12 ordinates
+    c = chord_diagrams(lab, divisions=12, H1=25, H2=25, precision=0.5)
+    assert np.allclose(c.drawn.v_zeros, [0.0, c.L / 2])
+    assert np.allclose(np.mod(c.phi[[0, 6]], 180.0), 0.0, atol=1e-6)
+    assert c.drawn.v_at[0] == c.drawn.v_at[6] == 0.0

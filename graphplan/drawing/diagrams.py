@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.graphic.chords import periodic_spline
+from graphplan.graphic.diagrams import v_knots
 from graphplan.graphic.record import Record, line_pitch
 from graphplan.util.words import num, unit, word
 
@@ -77,7 +78,7 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
     fine = np.linspace(0.0, L, int(round(4 * L)) + 1)
     trend = r.s[-1] - r.s[0]
     s_curve = periodic_spline(x[:-1], r.s[:-1] - trend * x[:-1] / L, L)(fine) + trend * fine / L
-    v_curve = periodic_spline(xm, r.v, L)(fine)
+    v_curve = periodic_spline(*v_knots(xm, r.v, getattr(r, "v_zeros", np.zeros(0))), L)(fine)
     a_curve = periodic_spline(xm, r.a, L)(fine)
     s_lo, s_hi = _extent(s_curve, r.s)
     v_lo, v_hi = _extent(v_curve, r.v, r.v_ray, r.v_at)

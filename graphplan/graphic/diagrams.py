@@ -58,21 +58,48 @@ class Reading:
     v_int: np.ndarray    # integration a → v (chords), at the division ordinates, n + 1
     s_int: np.ndarray    # … then v → s, at the division ordinates, n + 1
     s_int_v: np.ndarray  # integration of the v ordinates straight back to s, n + 1
+    v_zeros: np.ndarray = field(default_factory=lambda: np.zeros(0))  # abscissae (mm) where the v curve is drawn through 0
+
+
+STOPS = 1e-9            # |exact v| at a division ordinate below this share of the cycle's max: the output stops there
+
+
+def stops(x: np.ndarray, v_exact: np.ndarray, v_max: float) -> np.ndarray:
+    """The abscissae (mm, in [0, L)) of the division ordinates where the output stops — an extreme
+    position of s (a dead centre), which the position analysis and the velocity plan give exactly:
+    v = 0 there. The lab draws the v curve through zero at them (the chord's tangent is horizontal at
+    an extremum of s); ``x`` and ``v_exact`` at the n + 1 division ordinates."""
+    if v_max <= 0:
+        return np.zeros(0)
+    return np.asarray(x[:-1], dtype=float)[np.abs(np.asarray(v_exact[:-1])) <= STOPS * v_max]
+
+
+def v_knots(xm: np.ndarray, v: np.ndarray, zeros: np.ndarray = np.zeros(0)) -> tuple[np.ndarray, np.ndarray]:
+    """The points the French curve of v passes through: the ordinates read at the middles of the
+    intervals and a 0 at every extreme position in ``zeros`` (an added point, not a changed
+    reading), sorted along the abscissa."""
+    if len(zeros) == 0:
+        return np.asarray(xm, dtype=float), np.asarray(v, dtype=float)
+    knots = np.concatenate((xm, zeros))
+    values = np.concatenate((v, np.zeros(len(zeros))))
+    order = np.argsort(knots, kind="stable")
+    return knots[order], values[order]
 
 
 def differentiate(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float, precision: float,
-                  correct: bool = False) -> tuple[np.ndarray, ...]:
+                  correct: bool = False, zeros: np.ndarray = np.zeros(0)) -> tuple[np.ndarray, ...]:
     """The two differentiations by chords (seed 002, fig. 2.5), in mm: s read, the rays' heights and
     the v read at the middles, the v curve read at the division ordinates, the same for a.
     ``correct``: the lab's area correction of each French curve (graphic.correction), v and a then
-    read on it. Returns (s, v_ray, v, v_at, a_ray, a)."""
+    read on it. ``zeros``: the extreme positions' abscissae (``stops``), where the v curve is drawn
+    through 0 (seed 002: v = 0 where s has its extremum). Returns (s, v_ray, v, v_at, a_ray, a)."""
     xm = midpoints(x)
     s = read(s_mm, precision)
     v_ray = pole_heights(x, s, H1)
     v = read(v_ray, precision)
     if correct:
         v = read(area_correction(x, v, L, precision).points, precision)
-    v_curve = periodic_spline(xm, v, L)
+    v_curve = periodic_spline(*v_knots(xm, v, zeros), L)
     v_at = read(v_curve(x), precision)
     a_ray = pole_heights(x, v_at, H2)
     a = read(a_ray, precision)
@@ -82,18 +109,20 @@ def differentiate(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: floa
 
 
 def construct(x: np.ndarray, s_mm: np.ndarray, L: float, H1: float, H2: float,
-              precision: float, correct: bool = False) -> Reading:
-    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm: ``differentiate``,
-    the a curve read at the division ordinates, and the graphical integration back."""
+              precision: float, correct: bool = False, zeros: np.ndarray = np.zeros(0)) -> Reading:
+    """The draftsman's sequence on one sheet (seed 002, figs. 2.5 and 2.7), in mm: ``differentiate``
+    (the v curve through 0 at ``zeros``), the a curve read at the division ordinates, and the
+    graphical integration back."""
     xm = midpoints(x)
-    s, v_ray, v, v_at, a_ray, a = differentiate(x, s_mm, L, H1, H2, precision, correct)
+    s, v_ray, v, v_at, a_ray, a = differentiate(x, s_mm, L, H1, H2, precision, correct, zeros)
     a_at = read(periodic_spline(xm, a, L)(x), precision)
     # graphical integration, the reverse construction: a → v from v(0), then v → s from s(0)
     v_int = integrate_by_chords(x, a, H2, v_at[0])
     v_int_mid = read(periodic_spline(x[:-1], v_int[:-1], L)(xm), precision)
     s_int = read(integrate_by_chords(x, v_int_mid, H1, s[0]), precision)
     s_int_v = read(integrate_by_chords(x, v, H1, s[0]), precision)
-    return Reading(s, v_ray, v, v_at, a_ray, a, a_at, read(v_int, precision), s_int, s_int_v)
+    return Reading(s, v_ray, v, v_at, a_ray, a, a_at, read(v_int, precision), s_int, s_int_v,
+                   np.asarray(zeros, dtype=float))
 
 
 @dataclass
@@ -538,8 +567,9 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
         drawn = construct_tangents(x, s_mm, L, H1, H2, precision, angle_error_deg, seed)
         exact = construct_tangents(x, s_mm, L, H1, H2, 0.0, 0.0, seed)
     else:
-        drawn = construct(x, s_mm, L, H1, H2, precision, correct)
-        exact = construct(x, s_mm, L, H1, H2, 0.0, correct)
+        zeros = stops(x, v_at_t, maxima["v"])
+        drawn = construct(x, s_mm, L, H1, H2, precision, correct, zeros)
+        exact = construct(x, s_mm, L, H1, H2, 0.0, correct, zeros)
 
     on_grid = {round(float(u), 9): k for k, u in enumerate(uniform[:-1])}
     position = [on_grid.get(round(float(u), 9)) for u in turns[:-1]] + [0]

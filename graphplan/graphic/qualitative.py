@@ -216,13 +216,19 @@ def check(d: Any, samples: int = 720) -> list[dict[str, Any]]:
     _, v, a = exact_motion(d.study, d.output, turn)
     window, visible = window_of(d.turn), max(VISIBLE_MM, d.precision)
     out: list[dict[str, Any]] = []
+    from graphplan.graphic.diagrams import v_knots
     for sym, key, exact, mu in ((d.symbols[1], "v", v, d.mu_v), (d.symbols[2], "a", a, d.mu_a)):
         truth = d.sign * exact / mu
-        verdict = of_ordinates(turn, d.x_mid, getattr(d.drawn, key), d.L, truth, window, visible)
+
+        def curve(r: Any) -> tuple[np.ndarray, np.ndarray]:
+            # the v curve passes through 0 at the extreme positions as drawn (graphic.diagrams.stops)
+            zeros = getattr(r, "v_zeros", np.zeros(0)) if key == "v" else np.zeros(0)
+            return v_knots(d.x_mid, getattr(r, key), zeros)
+        verdict = of_ordinates(turn, *curve(d.drawn), d.L, truth, window, visible)
         if not verdict.wrong:
             continue
         # the cause: the method's own error if the exact drawing is wrong too, else the drafting's
-        own = of_ordinates(turn, d.x_mid, getattr(d.exact, key), d.L, truth, window, visible).wrong
+        own = of_ordinates(turn, *curve(d.exact), d.L, truth, window, visible).wrong
         diagram = key
         entry: dict[str, Any] = {"kind": "qualitative", "diagram": sym, "method": d.method,
                                  "cause": "method" if own else "drafting"}

@@ -23,7 +23,8 @@ import numpy as np
 from graphplan.exact.positions import exact_motion
 from graphplan.graphic import qualitative
 from graphplan.graphic.chords import midpoints, periodic_spline, read
-from graphplan.graphic.diagrams import CYCLE, drawing_sign, choose_mu_s, differentiate, division_turns, judged_pct, LAB_LIMIT, refine, resolve_output
+from graphplan.graphic.diagrams import (CYCLE, drawing_sign, choose_mu_s, differentiate, division_turns, judged_pct,
+                                        LAB_LIMIT, refine, resolve_output, stops, v_knots)
 
 LAB_POLES = (15.0, 50.0)    # mm: the pole distances H1, H2 the lab manual allows
 POLE_STEP = 5.0             # mm: a pole distance is tried larger in these steps
@@ -114,23 +115,25 @@ class Probe:
             if len(turns) != len(self.turns):
                 s = exact_motion(self.st, self.out, turns)[0]
         x = L * turns / 360.0
-        s_r, _, v, v_at, _, a = differentiate(x, self.sign * s / mu_s, L, H1, H2, self.precision, correct)
+        v_pos = self.v_pos if len(turns) == len(self.turns) else exact_motion(self.st, self.out, turns)[1]
+        zeros = stops(x, v_pos, self.max_v)
+        s_r, _, v, v_at, _, a = differentiate(x, self.sign * s / mu_s, L, H1, H2, self.precision, correct, zeros)
         mu_t = 2 * math.pi / (self.omega * L)
         mu_v = mu_s / (mu_t * H1)
         mu_a = mu_v / (mu_t * H2)
-        return turns, x, mu_s, mu_v, mu_a, v, a, v_at, s_r
+        return turns, x, mu_s, mu_v, mu_a, v, a, v_at, s_r, zeros
 
     def wrong(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
               tolerance: float = 0.5, height: float | None = None, all_of: bool = True) -> tuple[str, ...]:
         """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
         ``chord_diagrams`` would report them (the same construction, ruler and comparison);
         ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
-        turns, x, _, mu_v, mu_a, v, a, _, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+        turns, x, _, mu_v, mu_a, v, a, _, _, zeros = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         window, visible = qualitative.window_of(turns), max(qualitative.VISIBLE_MM, self.precision)
         xm = midpoints(x)
         wrong = []
-        for key, ordinates, exact, mu in (("v", v, self.v, mu_v), ("a", a, self.a, mu_a)):
-            if qualitative.of_ordinates(self.sample, xm, ordinates, L, self.sign * exact / mu, window, visible).wrong:
+        for key, knots, exact, mu in (("v", v_knots(xm, v, zeros), self.v, mu_v), ("a", (xm, a), self.a, mu_a)):
+            if qualitative.of_ordinates(self.sample, *knots, L, self.sign * exact / mu, window, visible).wrong:
                 wrong.append(key)
                 if not all_of:
                     break
@@ -140,7 +143,7 @@ class Probe:
             tolerance: float = 0.5, height: float | None = None) -> float:
         """The largest |δ|, % of s, v, a read at the mechanism's positions off a drawing with these
         options, judged as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
-        turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+        turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         at = np.isin(np.round(turns[:-1], 9), np.round(self.turns[:-1], 9))
         a_at = read(periodic_spline(midpoints(x), a, L)(x), self.precision)
         worst = 0.0
@@ -154,7 +157,7 @@ class Probe:
               tolerance: float = 0.5, height: float | None = None) -> tuple[float, float, float]:
         """The drawing's largest ordinates, mm: |v| and |a| read at the middles, and the s diagram's
         height (its range)."""
-        _, _, _, _, _, v, a, _, s_r = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+        _, _, _, _, _, v, a, _, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         return float(np.max(np.abs(v))), float(np.max(np.abs(a))), float(np.ptp(s_r))
 
 
