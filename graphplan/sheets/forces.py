@@ -85,14 +85,16 @@ def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
     return footnoted(rec, [w('inertia note')])
 
 
-def force_position(st: Study, phi: float, lang: str) -> str:
+def force_position(st: Study, phi: float, lang: str, short: bool = False) -> str:
     """The force position as the scene assigns it: the crank's turn from position 0
     (``positions.force_phi_deg``, in the crank's sense) with the crank angle from the x axis —
     "φ = 200° від положення 0 (кут кривошипа 45,7° від осі x)": the crank angle as the kinematics
     sheet gives position 0's (``kintables.phi_convention``: from the x axis, one decimal; review 10
-    read 285,50° here against 75,5° there as two conventions)."""
+    read 285,50° here against 75,5° there as two conventions). ``short``: a caption's form, the
+    angle without "crank angle" ("φ = 200° від положення 0 (45,7° від осі x)"), as wide as the
+    caption was before the axis was named — the notes say it in full."""
     turn = round(float(st.from_position0(phi)), 9) % 360.0
-    text = word("fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi % 360.0, lang, 1))
+    text = word("fs force position short" if short else "fs force position", lang, turn=num(turn, lang, 4), phi=fixed(phi % 360.0, lang, 1))
     return text + idle_words(st, phi, lang)
 
 
@@ -312,7 +314,9 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
     from graphplan.graphic.scales import format_scale
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
     names = dr.names()
-    at = force_position(dr.st, dr.phi, lang)
+    # the captions' short form: the full one widened the scheme's and the acceleration plan's cells by
+    # ~20 mm, and the sieve's A1 force sheet lost its grown crank group (1:2 → the family's 1:4)
+    at = force_position(dr.st, dr.phi, lang, short=True)
     moment_only = not any(ld.kind == "external" and ld.point is not None for ld in dr.turn.ks.loads)
     out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
            "groups": [(_caption(n, lang), format_scale('mu_l', gp.mu_l or mu['groups'], lang))

@@ -646,6 +646,8 @@ WORDS: dict[str, tuple[str, str]] = {
                         "plans and the lever; ε, M^Φ: + counter-clockwise"),
     "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}° від осі x)",
                     "φ = {turn}° from position 0 (crank angle {phi}° from the x axis)"),
+    "fs force position short": ("φ = {turn}° від положення 0 ({phi}° від осі x)",
+                                "φ = {turn}° from position 0 ({phi}° from the x axis)"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
