@@ -44,6 +44,36 @@ def test_velocity_plans_fill_the_row_beside_a_wide_position_plan():
     assert sum(1 for n in first if n.startswith("velocity")) > 4      # and the rows under it go on
 
 
+def test_plans_beside_a_position_plan_reaching_by_the_title_block():
+    """Review 10 #8: the six-bar's A3 position plan (146 × 224.6 mm) reached 3.6 mm below the title
+    block's top, so ``flow`` gave its whole row only the 199 mm left of the title block and the
+    velocity grid beside it (172 mm) went to sheet 2, sheet 1's right half blank. Judged item by
+    item (``ragged``), the grid stands beside the plan above the title block: the first four plans
+    on sheet 1, none in the title block's clearance, the plans in order, none overlapping."""
+    f = form("A3")
+    region, keep = field_of(f), keep_out(f)
+    width = region[2] - region[0]
+    P, D = Leaf("position plan", 146.0, 224.6), Leaf("diagrams", 370.0, 253.0)
+    V = [Leaf(f"velocity plan {i}", 83.0, 83.0) for i in range(12)]
+    rows = set_rows(P, D, V, [], [Leaf("notes", 185.0, 60.0)], width)
+    assert region[3] - P.h < keep[3]                  # the plan's foot is below the title block's top
+    whole = flow(rows, region, keep, later=later_keep(f))
+    assert not any(leaf.name.startswith("velocity") for leaf, _ in whole[0])      # the old rule
+    pages = flow(rows, region, keep, later=later_keep(f), ragged=True)
+    first = [leaf.name for leaf, _ in pages[0] if leaf.name]
+    assert first == ["position plan"] + [f"velocity plan {i}" for i in range(4)], first
+    assert len(pages) < len(whole)
+    order = [leaf.name for page in pages for leaf, _ in page if leaf.name.startswith("velocity plan")]
+    assert order == [f"velocity plan {i}" for i in range(12)]
+    for n, page in enumerate(pages):
+        k = keep if n == 0 else later_keep(f)
+        boxes = [b for leaf, b in page if leaf.name]
+        for i, a in enumerate(boxes):
+            assert not (a[2] > k[0] + 1e-6 and a[1] < k[3] - 1e-6), a        # clear of the title block
+            for b in boxes[i + 1:]:
+                assert not (a[0] < b[2] - 1e-6 and b[0] < a[2] - 1e-6 and a[1] < b[3] - 1e-6 and b[1] < a[3] - 1e-6)
+
+
 def test_position_plan_too_tall_for_plans_beside_it_keeps_its_row():
     """Where no velocity plan fits beside the position plan (a row lower than a cell), the plans
     start under it as before."""

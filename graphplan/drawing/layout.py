@@ -309,14 +309,16 @@ def boxes_apart(items: Sequence[Placed], gap: float = 0.0) -> list[tuple[str, st
     return out
 
 
-def _prefix(items: list[Node], y: float, bottom: float, room, width) -> tuple[list[Node], float]:
+def _prefix(items: list[Node], y: float, bottom: float, room, width, over=None) -> tuple[list[Node], float]:
     """The longest run of ``items`` from the first that fits side by side under ``y`` (above
-    ``bottom``, within ``room``), and its height: what of a row fills the rest of a sheet."""
+    ``bottom``, within ``room``, or where ``over(items, y, h)`` is false), and its height: what of a
+    row fills the rest of a sheet."""
     fit: list[Node] = []
     height = 0.0
     for item in items:
         h = max(height, extent(item)[1])
-        if y - h < bottom - 1e-9 or width(fit + [item]) > room(y, h) + 1e-9:
+        if y - h < bottom - 1e-9 or (over(fit + [item], y, h) if over is not None
+                                     else width(fit + [item]) > room(y, h) + 1e-9):
             break
         fit.append(item)
         height = h
@@ -324,13 +326,17 @@ def _prefix(items: list[Node], y: float, bottom: float, room, width) -> tuple[li
 
 
 def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP,
-         later: Box | None = None) -> list[list[tuple[Leaf, Box]]] | None:
+         later: Box | None = None, ragged: bool = False) -> list[list[tuple[Leaf, Box]]] | None:
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
     while they fit across (the rest wrap to the next row), rows one under another, a new sheet when
     the next row does not fit below. Near the foot a row keeps clear of ``keep`` (the title block).
     The spare room of each row is shared out across it, a sheet's spare height between its rows
     (where no row then meets the title block). None when one item is larger than a sheet. ``later``:
-    the title block kept clear of on the sheets after the first (a set's smaller form 2a), else ``keep``."""
+    the title block kept clear of on the sheets after the first (a set's smaller form 2a), else ``keep``.
+    ``ragged``: the room beside the title block is judged item by item, not by the row's tallest —
+    an item whose own foot clears the title block may stand above it (the six-bar's A3 position plan,
+    224.6 mm tall, reached 3.6 mm below the title block's top, so its row held 199 mm, not the 385 mm
+    across, and the four velocity plans beside it went to the next sheet, leaving sheet 1 half blank)."""
     rx0, ry0, rx1, ry1 = region
     pages: list[list[tuple[float, float, list[Node]]]] = []      # per sheet: (top, height, items) of each row
     page: list[tuple[float, float, list[Node]]] = []
@@ -348,6 +354,51 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
     def width(items: list[Node]) -> float:
         return sum(extent(t)[0] for t in items) + gap * (len(items) - 1)
 
+    def _packed(items: list[Node], top: float) -> float:
+        """``ragged``: the room items packed from the left need — their width where each item that
+        reaches below the title block's top ends left of it, else more than any sheet has."""
+        k = keep if (sheet[0] == 0 or later is None) else later
+        at = rx0
+        for t in items:
+            w, h = extent(t)
+            at += w
+            if k is not None and top - h < k[3] + 1e-9 and at > min(k[0], rx1) + 1e-9:
+                return math.inf
+            at += gap
+        return width(items)
+
+    if ragged:
+        def over(items: list[Node], top: float, h: float) -> bool:
+            return _packed(items, top) > rx1 - rx0 + 1e-9
+    else:
+        def over(items: list[Node], top: float, h: float) -> bool:
+            return width(items) > room(top, h) + 1e-9
+
+    def spans_of(items: list[Node], top: float, h: float) -> list[tuple[float, float]]:
+        """Each item's span across: the row's spare width shared out, or (``ragged``, where that
+        would push an item reaching below the title block's top over it) packed from the left."""
+        sizes = [extent(t)[0] for t in items]
+        if not ragged:
+            return _shares(sizes, room(top, h), gap)
+        k = keep if (sheet[0] == 0 or later is None) else later
+        for spans in (_shares(sizes, rx1 - rx0, gap), _shares(sizes, rx1 - rx0, gap, flush=True)):
+            if k is None or all(not (top - extent(t)[1] < k[3] + 1e-9 and rx0 + at + w > min(k[0], rx1) + 1e-9)
+                                for t, (at, w) in zip(items, spans)):
+                return spans
+        out, at = [], 0.0
+        for w in sizes:
+            out.append((at, w))
+            at += w + gap
+        return out
+
+    def box_of(item: Node, x0: float, w: float, top: float, h: float) -> Box:
+        """The item's box in its row: the row's height, or (``ragged``) its own where the row's
+        would take it into the title block."""
+        k = keep if (sheet[0] == 0 or later is None) else later
+        if ragged and k is not None and top - h < k[3] + 1e-9 and x0 + w > k[0] + 1e-9:
+            h = extent(item)[1]
+        return (x0, top - h, x0 + w, top)
+
     for row in rows:
         queue = list(row)
         while queue:
@@ -355,12 +406,12 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             height = 0.0
             for item in queue:
                 w, h = extent(item)
-                if taken and width(taken + [item]) > room(y, max(height, h)) + 1e-9:
+                if taken and over(taken + [item], y, max(height, h)):
                     break
                 taken.append(item)
                 height = max(height, h)
-            if width(taken) > room(y, height) + 1e-9 or y - height < ry0 - 1e-9:
-                fit, low = _prefix(taken, y, ry0, room, width) if page else ([], 0.0)
+            if over(taken, y, height) or y - height < ry0 - 1e-9:
+                fit, low = _prefix(taken, y, ry0, room, width, over if ragged else None) if page else ([], 0.0)
                 if fit:                        # the first items fit below: the sheet is filled first
                     page.append((y, low, fit))
                     y -= low + gap
@@ -385,12 +436,12 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
         spare = (rows_[-1][0] - rows_[-1][1]) - ry0
         extra = spare / len(rows_) if rows_ else 0.0
         shifted = [(top - extra * (k + 0.5), h, items) for k, (top, h, items) in enumerate(rows_)]
-        if any(width(items) > room(top, h) + 1e-9 for top, h, items in shifted):
+        if any(over(items, top, h) for top, h, items in shifted):
             shifted = rows_                    # spreading would push a row into the title block
         placed_ = []
         for top, h, items in shifted:
-            spans = _shares([extent(t)[0] for t in items], room(top, h), gap)
+            spans = spans_of(items, top, h)
             for item, (at, w) in zip(items, spans):
-                placed_.extend(arrange(item, (rx0 + at, top - h, rx0 + at + w, top)))
+                placed_.extend(arrange(item, box_of(item, rx0 + at, w, top, h)))
         out.append(placed_)
     return out

@@ -449,7 +449,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     else:
         notes_rec = set_notes(d["notes"], p.notes)
         rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
-        laid = flow(rows, region, keep_out(f), later=later_keep(f))
+        laid = flow(rows, region, keep_out(f), later=later_keep(f), ragged=True)
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]

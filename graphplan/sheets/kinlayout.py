@@ -833,7 +833,7 @@ def _laid_again(nat: Natural, p: Plan, dsize, f: Form) -> tuple[int, int] | None
     from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
     out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes), region,
-               keep_out(f), later=later_keep(f))
+               keep_out(f), later=later_keep(f), ragged=True)
     return None if out is None else (len(out), int(all(leaf.name in ("notes", "") for leaf, _ in out[-1])))
 
 

@@ -31,7 +31,7 @@ def trial(rows, region: Box, keep: Box | None, later: Box | None,
            tuple(sorted(sizes.items())))
     if key in _TRIALS:
         return _TRIALS[key]
-    out = flow(rows, region, keep, later=later)
+    out = flow(rows, region, keep, later=later, ragged=True)
     got = None if out is None else (len(out), int(all(leaf.name in ("notes", "") for leaf, _ in out[-1])),
                                     min(page_fill(page, region, sizes) for page in out))
     if len(_TRIALS) >= LIMIT:
