@@ -16,10 +16,12 @@ from graphplan.exact.kinetostatics import Kinetostatics, Load
 
 PLAN_MM = 120.0        # the fastest point's velocity vector on the lever
 # a link's image shorter than this carries its inertia couple as a moment, not as a force pair:
-# a pair's two arrows tails, their two names (2.5 mm letters, 1 mm apart) and the two images'
-# letters (3.5 mm) need about 10 mm of segment to stand apart (review 10 #6: a, b, e, s2 within
-# 5 mm, seven forces and their names knotted there)
-READABLE_MM = 10.0
+# the pair's two arrows (⊥ xy, at x and y) must stand apart with their two names (M^Φ', M^Φ'':
+# 3.5 mm letters with a superscript and a subscript, ~5 mm tall) and the two images' letters
+# (3.5 mm) between them, each 1 mm from the next — ~15 mm. Review 10 #6: at φ = 150° the
+# six-bar's a, b lie 7 mm apart at μv = 0.01 and 11 mm at the A1 sheet's 0.00628; both drew
+# seven forces and their names knotted round a, b, e, s2 and two long dashed arms to the pair
+READABLE_MM = 15.0
 
 
 @dataclass
