@@ -672,9 +672,11 @@ def flat(dr: Drafter, k) -> int:
     return int(min(dr.drawn(k)[1:]) < DIAGRAM_MM - 1e-6)
 
 
-SPARSE = 0.2       # of as many sheets, a set none of whose sheets is drawn on less than this share of its
+SPARSE = 0.25      # of as many sheets, a set none of whose sheets is drawn on less than this share of its
                    # field (the crank-slider's A3 acceleration plan, 145 mm, moved to the tables' sheet and
-                   # left five velocity plans on 16 % of sheet 2; at 130 mm it shares their sheet)
+                   # left five velocity plans on 16 % of sheet 2; at 130 mm it shares their sheet; the
+                   # shaper's A2 velocity plans at p_v a 75 mm, the acceleration plan on the tables' sheet,
+                   # drew sheet 2 on 23 % where 0.2 let them: at 85 mm with it, 54 %)
 SHORT_MM = 3.0     # a table's value read off a vector shorter than this reads poorly (0.5 mm of 2.5 is 20 %)
 
 
