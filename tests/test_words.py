@@ -24,8 +24,9 @@ from graphplan.util.errors import GraphplanError
 LATIN_WORD = re.compile(r"[A-Za-z]{3,}")
 CYRILLIC = re.compile(r"[А-Яа-яІіЇїЄєҐґ]")
 # a Latin unit: mm, rad, rpm, kg anywhere; m, N, s as part of a compound (m/s, N·m, (m/s)/mm) or after a number
+# — not a subscripted point's name after another's index (the gear sheet's N₁N₂, read "N 1 N 2")
 LATIN_UNIT = re.compile(r"(?<![A-Za-z_])(?:mm|rad|rpm|kg)(?![A-Za-z])|(?<![A-Za-z_])(?:m|N|s)/|N·m|\(m/"
-                        r"|\d\s?(?:m|s|N)(?![A-Za-z0-9_])")
+                        r"|\d\s?(?:m|s|N)(?![A-Za-z0-9_])(?!\s\d)")
 SYMBOLS = {"max", "min", "graphplan", "Tab"}          # the lab's subscripts; the program's name
 FIELDS = re.compile(r"\{[^{}]*\}")
 
