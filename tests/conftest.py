@@ -46,11 +46,11 @@ THINNED = {
     "test_new_mechanisms_print_no_word_over_another": 1,
     "test_the_page_reads_well_at_every_width": 1,
     "test_a_few_cams_end_with_an_answer_or_one_line": 1,
-    "test_a_set_holds_a_drawing_or_a_table_on_every_sheet_the_tables_whole_and_in_order": 2,
+    "test_a_set_holds_a_drawing_or_a_table_on_every_sheet_the_tables_whole_and_in_order": 1,
     "test_notes_largest_error_is_the_tables": 1,
     "test_lettering_reads_as_words_wherever_it_stands": 1,
     "test_forces_json_contract": 1,
-    "test_every_force_on_a_group_is_named_from_its_source_to_the_group": 2,
+    "test_every_force_on_a_group_is_named_from_its_source_to_the_group": 1,
     "test_the_cam_page_is_one_offline_deterministic_file": 0,
     # the heaviest single checks (sets and a moment-loaded dynamics sheet, 10–42 s each): slow suite
     "test_every_format_draws_quick": 0,
@@ -79,7 +79,16 @@ THINNED = {
     "test_sheets_of_new_mechanisms_have_no_defects": lambda case: case.endswith(("crank_slider", "slotter")),
     "test_dxf_is_cad_ready": 1,
     "test_ukrainian_output_of_every_command": lambda case: case.endswith("-shaper"),     # each command once
-    "test_the_phase_diagram_draws_the_printed_pressure_angles": 2,
+    "test_the_phase_diagram_draws_the_printed_pressure_angles": 1,
+    # stop 43: the gear sets' cases past the first repeat one behaviour on another pair; the rest as named
+    "test_the_set_draws_the_meshing_at_the_largest_band_scale_that_fits_its_first_sheet": 1,
+    "test_a_set_carries_form_1_then_form_2a": 1,
+    "test_the_terminal_reads_the_sheet_of_its_format": 1,
+    "test_the_meshing_is_the_largest_drawing_of_the_a1_sheet": 3,
+    "test_the_gear_sheet_is_composed_and_clean": 1,
+    "test_the_lever_is_as_large_as_its_cell_allows": 1,
+    "test_shared_divisions_are_numbered_once_and_no_two_numbers_overlap": 4,
+    "test_blocks_and_labels_do_not_overlap": 4,
 }
 
 
