@@ -1485,81 +1485,8 @@ motor = "4АМ90L4"
 REVIEW11_B = YOKE11
 
 
-# Review 11 (a): a horizontal offset crank-slider air compressor, crank clockwise (out/a.toml of branch rev11,
-# its [sheet] left out): P_B and Φ3 at B on one line in opposite senses (#12), its A3 set's scheme (#13)
-REV11_A = '''# Review 11 (a): a horizontal offset crank-slider of a single-acting air compressor, crank clockwise,
-# positive offset; the gas force from an indicator diagram on the compression stroke (toward the crank).
-title = "Кривошипно-повзунний механізм компресора (рецензія 11)"
-title_en = "Offset crank-slider of an air compressor (review 11)"
-designation = "TMM.RV11.01.000"
-lang = "en"
-
-
-[params]
-r = 0.045
-l = 0.180
-e = 0.012
-
-[frame.points]
-O = [0, 0]
-
-[frame.guides]
-x = { through = [0, "e"], angle_deg = 0, title_uk = "поршня", title_en = "of the piston" }
-
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = "r"
-rpm = 720
-direction = "cw"
-points = { S1 = 0.25 }
-mass = 2.4
-inertia = 0.0025
-
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = "l"
-points = { S2 = 0.32 }
-mass = 1.6
-inertia = 0.0062
-
-[[link]]
-name = "B"
-number = 3
-joints = ["B"]
-slides_on = "x"
-mass = 2.1
-
-[branch]
-B = 1
-
-[positions]
-count = 12
-start = "outer"
-accel = [4, 9]
-force_phi_deg = 130
-working_stroke = "to_min"
-
-[loads]
-g = 9.81
-
-[[force]]
-point = "B"
-magnitude = 3200
-stroke = "working"
-direction = "oppose"
-# indicator diagram: compression rises slowly, discharge at full pressure over the last quarter
-profile = [[0, 0.03], [0.03, 0.12], [0.05, 0.3], [0.065, 0.7], [0.07, 1], [0.09, 1]]
-
-[dynamics]
-delta = 0.03
-efficiency = 0.85
-synchronous_rpm = 1500
-motor = "4АМ90L4"
-'''
+# Review 11 (a) as test_forces_review11 reads it: COMPRESSOR11 without its title block's [sheet] fields
+REV11_A = COMPRESSOR11.replace(COMPRESSOR11[COMPRESSOR11.index('[sheet]\n'):COMPRESSOR11.index('\n\n', COMPRESSOR11.index('[sheet]\n')) + 1], '', 1)
 
 
 CAM_REV10 = '''
