@@ -12,6 +12,7 @@ import math
 import pytest
 
 from conftest import scene_study
+from review_scenes import ROCKER9
 
 # review 9's pump (m1: a vertical offset crank-slider, crank clockwise) and loom (m2: a crank-rocker
 # with a resistance moment on the rocker), their [sheet] and [dynamics] left out
@@ -68,54 +69,7 @@ direction = "oppose"
 profile = [[0, 0.1], [0.02, 1], [0.085, 1], [0.11, 0.1]]
 '''
 
-LOOM = '''title = "Шарнірний чотириланковий механізм з моментом опору на коромислі (рецензія 9)"
-title_en = "Crank-rocker four-bar with a resistance moment on the rocker (review 9)"
-lang = "en"
-[frame.points]
-O1 = [0, 0]
-O2 = [0.27, -0.05]
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.075
-rpm = 150
-direction = "ccw"
-points = { S1 = 0.5 }
-mass = 1.8
-inertia = 0.0015
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.29
-points = { S2 = 0.5 }
-mass = 3.4
-inertia = 0.025
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.19
-points = { S3 = 0.45 }
-mass = 2.8
-inertia = 0.012
-[branch]
-B = 1
-[positions]
-count = 12
-start = "working"
-accel = [3, 9]
-force_phi_deg = 90
-[loads]
-g = 9.81
-[[moment]]
-link = 3
-magnitude = 95
-stroke = "working"
-direction = "oppose"
-profile = [[0, 0.3], [15, 1], [40, 1]]
-'''
+LOOM = ROCKER9      # review 9's crank-rocker loaded by a moment on its rocker (tests/review_scenes.py)
 
 
 def _fp(text: str):
