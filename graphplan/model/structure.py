@@ -70,15 +70,48 @@ class Structure:
     p5: int
     p4: int
     dyads: tuple[Dyad, ...]
+    crank: str = ""
+
+    @property
+    def formula(self) -> str:
+        return self.written(self.crank)
 
     @property
     def mobility(self) -> int:
         """Chebyshev: W = 3n − 2p5 − p4."""
         return 3 * self.n - 2 * self.p5 - self.p4
 
-    @property
-    def formula(self) -> str:
-        return " → ".join(["I(0-1)"] + [d.label for d in self.dyads])
+    def parents(self, crank: str) -> list[int]:
+        """For each dyad, the group it is attached to: the latest of the groups holding the links
+        its outer pairs join (−1: the input mechanism I(0-1); the frame attaches nothing)."""
+        owner = {crank: -1}
+        out: list[int] = []
+        for k, d in enumerate(self.dyads):
+            joined = {d.outer_a.other(d.a), d.outer_b.other(d.b)}
+            out.append(max((owner[b] for b in joined if b in owner), default=-1))
+            owner[d.a] = owner[d.b] = k
+        return out
+
+    def paths(self, crank: str) -> list[list[int]]:
+        """The formula's chains: each group with no group attached to it, traced back to I(0-1)
+        through the group it hangs on — one chain for a serial mechanism, one per branch where
+        groups hang on the crank side by side (a V-engine's two pistons)."""
+        parent = self.parents(crank)
+        leaves = [k for k in range(len(self.dyads)) if k not in parent]
+        chains = []
+        for leaf in leaves:
+            chain, k = [], leaf
+            while k >= 0:
+                chain.append(k)
+                k = parent[k]
+            chains.append(chain[::-1])
+        return chains or [[]]
+
+    def written(self, crank: str, name=lambda d: d.label) -> str:
+        """The structural formula as the textbook writes it: I(0-1) → II(2-3) → II(4-5), branches
+        separated by "; " (I(0-1) → II(2-3); I(0-1) → II(4-5))."""
+        return "; ".join(" → ".join(["I(0-1)"] + [name(self.dyads[k]) for k in chain])
+                         for chain in self.paths(crank))
 
 
 def pairs_of(mech: Mechanism) -> list[Pair]:
@@ -128,7 +161,7 @@ def analyse(mech: Mechanism) -> Structure:
         dyads.append(found)
         known |= {found.a, found.b}
         todo = [t for t in todo if t not in (found.a, found.b)]
-    return Structure(n=n, p5=structure_p5, p4=0, dyads=tuple(dyads))
+    return Structure(n=n, p5=structure_p5, p4=0, dyads=tuple(dyads), crank=crank)
 
 
 def _next_dyad(mech: Mechanism, pairs: list[Pair], known: set[str], todo: list[str]) -> Dyad | None:

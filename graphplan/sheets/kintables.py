@@ -546,7 +546,7 @@ def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
     s = st.structure
     lines = [f"{w('mobility')}: W = 3n − 2p_5 − p_4 = 3·{s.n} − 2·{s.p5} − {s.p4} = {s.mobility}",
              f"{w('structure')}: "     # each group once, with its kind: I(0-1) → II(2-3) ВВВ
-             + " → ".join(["I(0-1)"] + [f"{d.label} {pair_kind(d.kind, lang)}" for d in s.dyads]),
+             + s.written(s.crank, lambda d: f"{d.label} {pair_kind(d.kind, lang)}"),
              f"{w('scales')}: " + "; ".join(scales), phi_convention(st.phi0, lang)] + extra
     rec = Record("notes")
     for k, line in enumerate(lines):
