@@ -1542,3 +1542,107 @@ pressure_angle_deg = { rise = 35, return = 45 }
 rpm = 200
 direction = "ccw"
 '''
+
+
+# Review 13 (a): a V-twin compressor, both rods on the one crank pin (two dyads on the crank).
+VTWIN13 = """# Review 13 (a): a V-twin (90°) single-acting compressor: both connecting rods on the one crank pin A;
+# piston B on a guide at 45°, piston C on a guide at 135° offset 30 mm (I(0-1) -> II(2-3) RRP, I(0-1) -> II(4-5) RRP).
+title = "V-подібний двоциліндровий компресор (варіант рецензента 13)"
+title_en = "V-twin compressor with two rods on one crank pin (review 13)"
+designation = "TMM.RV13.01.000"
+lang = "en"
+
+[sheet]
+student = "A. Reviewer"
+teacher = "Strict Teacher"
+group = "MB-41"
+organisation = "NULES of Ukraine"
+
+[params]
+r = 0.055
+l = 0.22
+e = 0.03
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+left = { through = [0, 0], angle_deg = 45, title_uk = "поршня 3", title_en = "of piston 3" }
+right = { through = [0, "e"], angle_deg = 135, title_uk = "поршня 5", title_en = "of piston 5" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = "r"
+rpm = 360
+direction = "ccw"
+mass = 6
+inertia = 0.025
+points = { S1 = 0.25 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = "l"
+mass = 2.8
+inertia = 0.016
+points = { S2 = 0.3 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "left"
+mass = 3.5
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = "l"
+mass = 2.8
+inertia = 0.016
+points = { S4 = 0.3 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "right"
+mass = 3.5
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [2, 7]
+output = "C"
+force_phi_deg = 150
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 2600
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.04, 0.15], [0.07, 0.45], [0.09, 1], [0.11, 1]]
+
+[[force]]
+point = "B"
+magnitude = 900
+stroke = "both"
+direction = 225
+
+[dynamics]
+delta = 0.035
+efficiency = 0.88
+synchronous_rpm = 750
+"""

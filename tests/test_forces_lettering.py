@@ -165,3 +165,16 @@ def test_no_leader_on_the_scheme_or_groups_runs_far_or_through_a_joint():
                     assert abs(z - (a + t * d)) >= 0.9, (rec.title, z)
             crossed = [q.text for q in texts if box_to_segment(q.ink(), a + 0.1 * d, a + 0.9 * d) < 0.2]
             assert not crossed, (rec.title, crossed)
+
+
+def test_a_hodographs_jump_names_only_the_load_that_switches():
+    """Review 13 #10: the V-twin's R14, R45 and R01 said "the jump due to P_C, P_B" where P_B
+    (constant, on the other piston) never jumps. The caption names the loads switched on or off
+    where the reaction jumps: P_C alone."""
+    from graphplan.drawing.charts import hodograph_record, turn
+    from review_scenes import VTWIN13
+    t = turn(scene_study(VTWIN13))
+    for key in ("R45", "R01"):
+        said = [q.text for q in hodograph_record(t, key, 60.0, lang="en").items
+                if q.kind == "text" and "jump" in q.text]
+        assert said and all("P_{C}" in s and "P_{B}" not in s for s in said), said

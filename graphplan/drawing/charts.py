@@ -410,6 +410,24 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
     return jumps
 
 
+def _switching(t: Turn, f: np.ndarray, lang: str) -> list[str]:
+    """The external loads a reaction's jump is due to: those switched on or off (zero on one side,
+    not on the other) at a stroke's change where the reaction itself jumps — not a load constant over
+    the turn, nor one on a piston the reaction does not carry (review 13: a V-twin's constant P_B
+    named under R45's jump from P_C). Where no load switches there, every external one is named."""
+    work = t.ks.working
+    n = len(work)
+    cuts = [k for k in range(n) if work[k] != work[k - 1]]
+    step = np.abs(np.diff(np.r_[f, f[:1]]))
+    typical = float(np.median(step)) if len(step) else 0.0
+    jumps = [k for k in cuts if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
+    ext = [ld for ld in t.ks.loads if ld.kind == "external"]
+    def on(ld) -> np.ndarray:
+        return (np.abs(np.broadcast_to(ld.force, (n,))) + np.abs(np.broadcast_to(ld.couple, (n,)))) > 0.0
+    named = [ld for ld in ext if any(on(ld)[k] != on(ld)[k - 1] for k in jumps)]
+    return list(dict.fromkeys(force_symbol(ld.name, lang) for ld in (named or ext)))
+
+
 def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre: complex = 0j) -> list[str]:
     """Each position's point and its number beside it, on the side away from ``centre`` (the pole;
     a detail's middle), on a leader where crowded; points the ruler's 0.5 mm cannot tell apart
@@ -582,8 +600,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
     # the field the hodograph already takes: its axes' extent, as wide as the lettering under it
     under = [f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}"]
     if say_jump and len(_pieces(t, f)) > 1:
-        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
-        under.append(word("fs jump", lang, what=", ".join(ext)))
+        under.append(word("fs jump", lang, what=", ".join(_switching(t, f, lang))))
     wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
     field = (x0, y0, max(x1, x0 + wide), y1)
     # a flat hodograph (a sliver of a cell) may take its detail beside it (``beside``) — only where it would
@@ -633,8 +650,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
               size=2.5, step=step)
     notes = []
     if jumps and say_jump:      # said under every hodograph that draws a jump
-        ext = dict.fromkeys(force_symbol(ld.name, lang) for ld in t.ks.loads if ld.kind == "external")
-        notes.append(word("fs jump", lang, what=", ".join(ext)))
+        notes.append(word("fs jump", lang, what=", ".join(_switching(t, f, lang))))
     rec.scales["shared numbers"] = float(len(shared))    # said once in the sheet's notes ("fs coincide")
     for k, text in enumerate(notes, 1):
         rec.label((x0, y - 5.0 * k), text, size=2.5, step=step)
