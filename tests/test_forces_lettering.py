@@ -178,3 +178,15 @@ def test_a_hodographs_jump_names_only_the_load_that_switches():
         said = [q.text for q in hodograph_record(t, key, 60.0, lang="en").items
                 if q.kind == "text" and "jump" in q.text]
         assert said and all("P_{C}" in s and "P_{B}" not in s for s in said), said
+
+
+def test_the_resistance_chart_draws_the_outputs_own_force():
+    """Review 13 #1: the V-twin's chart drew |P_C + P_B| (900 N on the idle stroke, 2751 at the top),
+    forces on two pistons summed. It draws P_C over s_C: its profile's 2600 N at the top, 0 idle."""
+    from graphplan.drawing.charts import resistance_record, turn
+    from review_scenes import VTWIN13
+    rec = resistance_record(turn(scene_study(VTWIN13)), lang="en")
+    curve = next(q for q in rec.items if q.kind == "polyline")
+    heights = [y * rec.scales["mu_P"] for _, y in curve.points]
+    assert abs(max(heights) - 2600.0) < 1e-6 and min(heights) == 0.0
+    assert "P_{C}, N" in [q.text for q in rec.items if q.kind == "text"]

@@ -782,7 +782,8 @@ def path_travelled(t: Turn) -> np.ndarray:
 
 
 def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
-    """Seed 000's diagram of the resistance force: |P| of the external forces along the output's path
+    """Seed 000's diagram of the resistance force: |P| of the output's external force (else of the
+    external forces) along the output's path
     over the cycle from position 0 (the stroke out, then back), so the working stroke carries the
     force and the idle stroke lies on the axis — each position numbered once, under its own stroke
     (the scene's ``positions.working_stroke``); None when the scene has no external force."""
@@ -791,8 +792,11 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
         return None
     forces = [ld for ld in ext if ld.point is not None]
     couple = not forces                  # a resistance moment alone (on a rocker): M(φ) of the output
-    ext = forces or ext
     st = t.ks.st
+    # the output's own force where it has one: forces on two pistons are not summed (review 13: a
+    # V-twin's chart drew |P_C + P_B|, P_B constant on the other piston)
+    forces = [ld for ld in forces if ld.point == st.output.name] or forces
+    ext = forces or ext
     path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
     # a slide's path s with μ_s; a rocking output's angle φ_3 from position 0 (the kinematics sheet's
