@@ -95,6 +95,7 @@ def test_lab_symbols():
     assert pair_kind("RPR", "en") == "RPR"
     assert force_symbol("R34τ", "uk") == "R^{τ}_{34}" and force_symbol("R34n", "en") == "R^{n}_{34}"
     assert force_symbol("M_b", "uk") == "M_зр" and force_symbol("P_b", "uk") == "P_зр"
+    assert force_symbol("P_b", "en") == "P_bal"      # not P_b beside a point B's P_B (review 13 #4)
     assert force_symbol("M_b", "en") == "M_b" and force_symbol("G2", "uk") == "G_{2}"
     assert force_symbol("MΦ3''", "uk") == "M^{Φ}_{3}''"
 

@@ -74,7 +74,8 @@ _FORCE = re.compile(r"^(MΦ|Φ|G|R|P_|M_)([0-9]+(?:-[0-9]+)?|[A-Za-z][A-Za-z0-9]
 
 def force_symbol(name: str, lang: str) -> str:
     """A force's name as the lab writes it (markup): G2 → G_2, Φ2 → Φ_2, MΦ3 → M^Φ_3, R12 → R_12,
-    R34τ → R^τ_34, R34n → R^n_34, R34^⊥ → R^⊥_34, P_b and M_b → P_зр, M_зр in Ukrainian."""
+    R34τ → R^τ_34, R34n → R^n_34, R34^⊥ → R^⊥_34, P_b and M_b → P_зр, M_зр in Ukrainian, P_bal
+    and M_b in English (P_b would read as a point B's P_B)."""
     if name in ("M_b", "P_b"):
         return word(name, lang)
     m = _FORCE.match(name)
@@ -274,7 +275,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin signs_link": ('Знаки φ_{{{n}}} (кут ланки {link} від положення 0), ω_{{{n}}}, ε_{{{n}}} (таблиці, діаграми): + проти годинникової стрілки', 'Signs of φ_{{{n}}} (the angle of link {link} from position 0), ω_{{{n}}}, ε_{{{n}}} (tables, diagrams): + counter-clockwise'),
     "kin flipped_link": ('; діаграми φ_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} побудовано дзеркально (вгору −φ_{{{n}}})', '; the φ_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} diagrams are drawn mirrored (up = −φ_{{{n}}})'),
     "lever unreadable": ("  pa читається як 0 мм при цьому μ_v: важіль не дає P_зр (візьміть точнішу --precision)",
-                         "  pa reads 0 mm at this μv: the lever gives no P_b (choose a finer --precision)"),
+                         "  pa reads 0 mm at this μv: the lever gives no P_bal (choose a finer --precision)"),
     "sheet page written": ("{path} ({form} {size}, аркуш {k} з {m}, {blocks}: {n})",
                            "{path} ({form} {size}, sheet {k} of {m}, {n} {blocks})"),
     "sheet written": ("{path} ({form} {size}, {blocks}: {n})", "{path} ({form} {size}, {n} {blocks})"),
@@ -434,10 +435,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "lever sum": ("  ΣF·h = {s} {N·mm} (h + проти годинникової стрілки відносно полюса)",
                   "  ΣF·h = {s} {N·mm} (h + counter-clockwise about the pole)"),
     "lever result": ("  P_зр = ΣF·h / pa = {p} {N};  M_зр = P_зр·l_OA = {m} {N·m}",
-                     "  P_b = ΣF·h / pa = {p} {N};  M_b = P_b·l_OA = {m} {N·m}"),
+                     "  P_bal = ΣF·h / pa = {p} {N};  M_b = P_bal·l_OA = {m} {N·m}"),
     "balancing head": ("Зрівноважувальний момент на кривошипі M_зр ({N·m}, + проти годинникової стрілки):",
                        "Balancing moment on the crank M_b ({N·m}, + counter-clockwise):"),
-    "M_b": ("M_зр", "M_b"), "P_b": ("P_зр", "P_b"),
+    "M_b": ("M_зр", "M_b"), "P_b": ("P_зр", "P_bal"),   # not P_b beside a point B's P_B (review 13 #4)
     # keys, grading, bench
     "variant": ("варіант", "variant"), "student": ("студент", "student"), "status": ("стан", "status"),
     "ok": ("готово", "ok"), "skipped": ("пропущено", "skipped"),
