@@ -10,7 +10,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.drawing.diagrams import fmt
-from graphplan.graphic.chords import periodic_spline
 from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
@@ -143,8 +142,8 @@ def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndar
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
     if positive:
         return fine, inertia_curve(f.x, y, f.L, fine)
-    trend = y[-1] - y[0]
-    return fine, periodic_spline(f.x[:-1], y[:-1] - trend * f.x[:-1] / f.L, f.L)(fine) + trend * fine / f.L
+    from graphplan.graphic.flywheel import energy_curve
+    return fine, energy_curve(f.x, y, f.L, fine)
 
 
 ORDINATE_LEAST = 1.0   # mm: an ordinate shorter than this is neither projected to the M axis nor rayed to P (a

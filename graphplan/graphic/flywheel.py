@@ -86,9 +86,24 @@ class Flywheel:
         return max(self.total - self.dyn.constant, 0.0)
 
     @property
+    def energy_extremes(self) -> dict[str, float]:
+        """ΔT_max and ΔT_min as the approximate method reads them: off the drawn ΔT(φ) curve (the
+        French curve through the division ordinates, ``energy_curve``) at its highest and lowest
+        points, with the ruler — not at the divisions (review 13: the V-twin's ΔT peaked at 64,9 J
+        between positions 2 and 3 where the table's ordinates give 61,3). mm, and the points' φ in
+        degrees of the crank's turn from position 0."""
+        fine = np.linspace(0.0, self.L, 4 * int(self.L) + 1)
+        y = energy_curve(self.x, self.dT, self.L, fine)
+        hi, lo = int(np.argmax(y)), int(np.argmin(y))
+        return {"max": float(read(y[hi], self.precision)), "min": float(read(y[lo], self.precision)),
+                "max_deg": float(fine[hi] / self.L * 360.0), "min_deg": float(fine[lo] / self.L * 360.0)}
+
+    @property
     def approximate_total(self) -> float:
-        """J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean from the readings."""
-        span = (float(np.max(self.dT)) - float(np.min(self.dT))) * self.mu_A
+        """J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean: ΔT_max,min off the drawn curve
+        (``energy_extremes``), I*_mean the divisions' readings' mean."""
+        e = self.energy_extremes
+        span = (e["max"] - e["min"]) * self.mu_A
         mean = float(np.mean(self.I[:-1])) * self.mu_I
         return span / (self.omega_mean ** 2 * self.dyn.delta) - mean
 
@@ -120,6 +135,15 @@ class Flywheel:
     def curve(self) -> tuple[np.ndarray, np.ndarray]:
         """The Wittenbauer curve as the French curve through (I_k, ΔT_k): X, Y in mm."""
         return _curve(self.x, self.I, self.dT, self.L)
+
+
+def energy_curve(x: np.ndarray, y_mm: np.ndarray, L: float, at: np.ndarray) -> np.ndarray:
+    """The French curve of a periodic diagram that may not close exactly (ΔT read: A_d − A_c at the
+    end may miss 0 by the ruler) through its division ordinates at the abscissae ``at``: the periodic
+    cubic spline of the ordinates less their linear trend, the trend added back."""
+    at = np.asarray(at, dtype=float)
+    trend = y_mm[-1] - y_mm[0]
+    return periodic_spline(x[:-1], y_mm[:-1] - trend * x[:-1] / L, L)(at) + trend * at / L
 
 
 def inertia_curve(x: np.ndarray, i_mm: np.ndarray, L: float, at: np.ndarray) -> np.ndarray:

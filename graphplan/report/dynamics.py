@@ -81,6 +81,7 @@ def dynamics_json(f) -> dict[str, Any]:
             "needed": dyn.needs_flywheel,
             "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
             "approximate": f.approximate, "approximate_error_pct": pct(f.approximate),
+            "approximate_energy": {k: (v * f.mu_A if k in ("max", "min") else v) for k, v in f.energy_extremes.items()},
             "merkalov": f.merkalov, "merkalov_error_pct": pct(f.merkalov),
             "total_exact": dyn.flywheel_total, "total_graphical": f.total,
             "rotor_reduced": dr.rotor_reduced, "reducer_reduced": dr.reducer_reduced,
@@ -566,20 +567,22 @@ def wittenbauer_note(f, lang: str, decimals: int | None = None) -> str:
 
 def approximate_parts(doc: dict) -> dict[str, float]:
     """The approximate method's inputs as read (graphic.flywheel ``approximate_total``), from the
-    ``dynamics --json`` document: ΔT_max and ΔT_min of the graphical ΔT (Table 1's column), I*_m's
-    graphical mean over the divisions, ω_m, δ, and J = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean."""
-    dt = [p["graphical"]["energy"] for p in doc["positions"]]
+    ``dynamics --json`` document: ΔT_max and ΔT_min read off the drawn ΔT(φ) curve at its extremes
+    (``approximate_energy``, J, with their φ), I*_m's graphical mean over the divisions, ω_m, δ,
+    and J = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean."""
+    e = doc["flywheel"]["approximate_energy"]
     mean = float(np.mean([p["graphical"]["inertia"] for p in doc["positions"]]))
     wm, d = doc["omega_mean"], doc["delta"]
-    return {"dt_max": max(dt), "dt_min": min(dt), "i_mean": mean, "omega_mean": wm, "delta": d,
-            "total": (max(dt) - min(dt)) / (wm ** 2 * d) - mean}
+    return {"dt_max": e["max"], "dt_min": e["min"], "max_deg": e["max_deg"], "min_deg": e["min_deg"],
+            "i_mean": mean, "omega_mean": wm, "delta": d,
+            "total": (e["max"] - e["min"]) / (wm ** 2 * d) - mean}
 
 
 def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     """The approximate flywheel's arithmetic (markup), every input printed in the order of Table 2's
-    row, I_мах = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_м сер − I_рот·i² (− I*_ред): ΔT_max,min Table 1's
-    graphical ΔT, so the printed numbers give the printed value; ``formula``: the symbols first (the
-    terminal, which has no Table 2 row beside it)."""
+    row, I_мах = (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_м сер − I_рот·i² (− I*_ред): ΔT_max,min read off the
+    drawn ΔT(φ) curve (where, said after), so the printed numbers give the printed value; ``formula``:
+    the symbols first (the terminal, which has no Table 2 row beside it)."""
     uk = lang == "uk"
     p = approximate_parts(doc)
     fw = doc["flywheel"]
@@ -591,7 +594,9 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
-            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang, flywheel_decimals(doc))}")
+            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang, flywheel_decimals(doc))}"
+            + (f" (ΔT_{{max}}, ΔT_{{min}} {'з кривої ΔT(φ) при φ' if uk else 'off the ΔT(φ) curve at φ'}{NB}"
+               f"{fixed(p['max_deg'], lang, 0)}°, {fixed(p['min_deg'], lang, 0)}°)"))
 
 
 def error_text(v: float, lang: str) -> str:
