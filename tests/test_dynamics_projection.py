@@ -179,3 +179,22 @@ def test_close_projections_draw_no_striped_band():
     assert min(gaps) >= CROWDED - 1e-9, f"projections drawn through {min(gaps):.2f} mm apart"
     close = [j for j, c in enumerate(curve) if any(abs(c[1] - d[1]) < CROWDED for i, d in enumerate(curve) if i != j)]
     assert len(close) >= 4          # the band there was: 16–22 (4 close since the chords integrate equal-area means)
+
+
+
+def test_the_band_states_its_own_phi_scale(sheet):
+    """Review 13 #11: ΔT(φ) spans a turn over the band's length (88 mm on the V-twin), not the
+    moments' L, and printed no μ_φ. The line under its caption states μ_φ = 2π/l, l the span the
+    ΔT(φ) points are drawn over (position 0 to position N)."""
+    import math
+    import re
+    from graphplan.util.markup import plain
+    rec = _placed(sheet, "energy")
+    xs = [p[0] for p in _points(rec, "ΔT read")]
+    said = [plain(p.text) for p in rec.items if p.kind == "text" and p.step == "caption scale"]
+    assert len(said) == 1, said
+    m = re.fullmatch(r"μ_?φ = 2π/([0-9.,]+) = ([0-9.,]+) (?:rad|рад)/(?:mm|мм)", said[0].replace(",", "."))
+    assert m, said
+    span = max(xs) - min(xs)
+    assert float(m.group(1)) == pytest.approx(span, abs=0.06)
+    assert float(m.group(2)) == pytest.approx(2 * math.pi / span, rel=6e-4)

@@ -280,10 +280,12 @@ def _body(rec: Record) -> tuple[float, float, float, float]:
     return Record(items=[p for p in rec.items if p.role != "projection"]).bounds()
 
 
-def _caption(rec: Record, title: str, above: bool = False, left: float | None = None) -> Record:
+def _caption(rec: Record, title: str, above: bool = False, left: float | None = None,
+             scale: str | None = None) -> Record:
     """``captioned``, centred on the drawing without its projection lines; ``above`` it for the
     energy–mass diagram, whose foot the I* projections cross (and no further left than ``left``,
-    ΔT(φ)'s side)."""
+    ΔT(φ)'s side); ``scale``: a line under the caption stating the drawing's own scale (ΔT(φ)'s
+    μ_φ, drawn over the band's length, not the moments' L: review 13 #11)."""
     x0, y0, x1, y1 = _body(rec)
     out = Record(rec.title, list(rec.items), dict(rec.scales))
     y = y1 + CAPTION_GAP if above else y0 - CAPTION_GAP - CAPTION
@@ -291,7 +293,15 @@ def _caption(rec: Record, title: str, above: bool = False, left: float | None = 
     if left is not None:
         mid = max(mid, left + text_width(title, CAPTION) / 2 + 1.0)
     out.label((mid, y), title, size=CAPTION, anchor="middle", layer="labels", step="caption")
+    if scale:
+        out.label((mid, y - CAPTION - 2.0), scale, size=2.5, anchor="middle", layer="labels", step="caption scale")
     return out
+
+
+def band_scale(length: float, lang: str) -> str:
+    """ΔT(φ)'s and the turned I*(φ)'s φ scale: one turn over the band's ``length`` mm."""
+    return (f"μ_φ = 2π/{num(length, lang)} = {num(2 * math.pi / length, lang)} "
+            f"{'рад/мм' if lang == 'uk' else 'rad/mm'}")
 
 
 CAPTION_APART = 8.0    # mm: ΔT(φ)'s caption from the energy–mass diagram's lettering on its line (|kl|)
@@ -317,10 +327,12 @@ def _caption_apart(energy: Record, witt: Record) -> Record:
     dx = min(b[0] for b in row) - CAPTION_APART - cx1           # ≤ 0: leftward
     if cx0 + dx >= left - 1e-9 and all(b[2] + CAPTION_APART <= cx0 + dx or b[0] - CAPTION_APART >= cx1 + dx
                                         for b in row):
-        moved = cap.moved(dx, 0.0)
+        shift = (dx, 0.0)
     else:
-        moved = cap.moved(0.0, min(b[1] for b in row) - CAPTION_GAP - cy1)
-    return Record(energy.title, [moved if p is cap else p for p in energy.items], dict(energy.scales))
+        shift = (0.0, min(b[1] for b in row) - CAPTION_GAP - cy1)
+    # the caption and its scale's line under it move together
+    return Record(energy.title, [p.moved(*shift) if p.kind == "text" and p.step in ("caption", "caption scale") else p
+                                 for p in energy.items], dict(energy.scales))
 
 
 def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict[str, tuple]]:
@@ -341,10 +353,10 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
     turned = _caption(inertia_turned(f, lang, length, 0.0), w["inertia"])
     for attempt in range(6):                           # the lettering keeps off the lines: where it moves
         reach = length + 24.0                          # past the side or the foot, they go farther
-        energy = _caption(energy_projected(f, lang, length, reach), w["energy"])
+        energy = _caption(energy_projected(f, lang, length, reach), w["energy"], scale=band_scale(length, lang))
         if energy.bounds()[2] > reach:                 # ΔT(φ)'s lines run past its φ and its caption
             reach = energy.bounds()[2]
-            energy = _caption(energy_projected(f, lang, length, reach), w["energy"])
+            energy = _caption(energy_projected(f, lang, length, reach), w["energy"], scale=band_scale(length, lang))
         energy = energy.moved(side - reach, 0.0)
         if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
             foot = min(foot, energy.bounds()[1] - 2.0)
