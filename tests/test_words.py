@@ -332,3 +332,46 @@ def test_ukrainian_counts_agree_with_their_number():
         assert uk_count(n, *forms) == forms[k], n
     assert word("divisions count", "uk", n=24) == "24 поділки"
     assert word("divisions count", "en", n=24) == "24 divisions"
+
+
+
+def test_every_sheet_word_has_its_glyphs():
+    """Review 13 #6: a cam note's English quotes “—” drew as empty boxes — osifont lacks U+201C/D.
+    Every catalogue word, every drawing or sheet module's own WORDS and the cam's δ-dash note, as
+    drawn (``lettering`` replaces what the GOST font lacks), use only characters the packaged fonts
+    have."""
+    import importlib
+    import pkgutil
+    from pathlib import Path
+
+    from fontTools.ttLib import TTFont
+
+    import graphplan
+    from graphplan.graphic.record import FONTS, lettering
+    from graphplan.report.cam import short_note
+    from graphplan.util.words import WORDS
+    fonts = Path(graphplan.__file__).parent / "data" / "fonts"
+    have: set[int] = set()
+    for name in FONTS:
+        with TTFont(str(fonts / name)) as f:
+            have |= set(f.getBestCmap())
+
+    def strings(v):
+        if isinstance(v, str):
+            yield v
+        elif isinstance(v, dict):
+            for w in v.values():
+                yield from strings(w)
+        elif isinstance(v, (tuple, list)):
+            for w in v:
+                yield from strings(w)
+
+    texts = list(strings(WORDS))
+    for room in ("drawing", "sheets"):
+        pkg = importlib.import_module(f"graphplan.{room}")
+        for info in pkgutil.iter_modules(pkg.__path__):
+            texts += list(strings(getattr(importlib.import_module(f"graphplan.{room}.{info.name}"), "WORDS", {})))
+    texts += [short_note({"precision_mm": 0.5}, lang) for lang in ("uk", "en")]
+    assert len(texts) > 500
+    missing = {c for t in texts for c in lettering(t) if ord(c) >= 32 and ord(c) not in have}
+    assert not missing, sorted(missing)

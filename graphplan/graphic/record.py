@@ -95,7 +95,8 @@ class Primitive:
 
 # characters osifont lacks, replaced on the drawing (records keep the real text)
 LETTERING = {"−": "-", "→": "->", "∑": "Σ", "√": "sqrt", "∆": "Δ", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t",
-             "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9"}
+             "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
+             "“": '"', "”": '"', "„": '"'}     # English quotes: osifont has « » only (review 13: boxes on a cam's notes)
 _LETTERING = str.maketrans(LETTERING)
 
 
