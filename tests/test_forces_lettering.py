@@ -190,3 +190,22 @@ def test_the_resistance_chart_draws_the_outputs_own_force():
     heights = [y * rec.scales["mu_P"] for _, y in curve.points]
     assert abs(max(heights) - 2600.0) < 1e-6 and min(heights) == 0.0
     assert "P_{C}, N" in [q.text for q in rec.items if q.kind == "text"]
+
+
+def test_centres_of_mass_are_dots_and_pairs_are_rings():
+    """Review 13 #13: the V-twin's scheme drew S1, S2, S4 as hollow rings, the same as the hinge A;
+    the position plan draws a centre of mass as a dot. On the scheme and the groups each load's
+    centre of mass is a dot, each pair's point (a link's joint) a ring."""
+    from graphplan.drawing.forces import group_record, mechanism_record
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from review_scenes import VTWIN13
+    st = scene_study(VTWIN13)
+    fp = sf.ForceDrafter(st, SheetOptions(precision=0.5, sheet="forces")).fp()
+    for k, rec in enumerate([mechanism_record(fp, "en")] + [group_record(fp, gp, "en") for gp in fp.groups]):
+        rings = [complex(*q.points[0]) for q in rec.items if q.kind == "point" and q.role == "joint"]
+        dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point" and q.role == "dot"]
+        for z in dots:                                    # no dot on a pair's ring
+            assert all(abs(z - w) > 0.5 for w in rings), (rec.title, z)
+        if k == 0:      # the scheme: S1, S2, S4 (the pistons' masses act at their pairs B and C)
+            assert len(dots) == 3 and len(rings) >= 4, (len(dots), len(rings))

@@ -422,9 +422,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     supports.append(z)
             if all(n != p for _, n in names):
                 names.append((z, p))
-        for p in extra_points(lk):          # its other points (D where P_D acts), each by its name
-            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu
-            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+        for p in extra_points(lk):          # its other points (D where P_D acts), each by its name:
+            z = complex(kin.bodies[link].at(lk.local[p])[0][0]) / mu     # a dot, not a hinge's ring
+            hinge = any(p in other.joints for other in mech.links.values())   # another link's pair there
+            rec.point(_pt(z), role="joint" if hinge else "dot", layer="mechanism", step=step)
             if all(n != p for _, n in names):
                 names.append((z, p))
     forces = [f for f in gp.forces if f.force != 0]
@@ -565,7 +566,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
             centres.append((z, _point_name(fp, f.link, z, mu)))
-            rec.point(_pt(z), role="joint", layer="mechanism", step=step)
+            # a dot as the position plan draws it (review 13 #13: S1, S2, S4 drawn as hinges' rings)
+            rec.point(_pt(z), role="dot", layer="mechanism", step=step)
     # each frame pivot's support on the side free of the links and the arrows (as the kinematics
     # sheet puts it), the crank's leaving room for ω1's arc
     support_at: dict[complex, float] = {}
