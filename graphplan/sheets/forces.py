@@ -187,6 +187,10 @@ class ForceDrafter:
         self.ks = kinetostatics.analyse(self.st, [self.phi])
         self.turn = forcecharts.turn(self.st)
         self.memo: dict = {}
+        # μa of the acceleration plan whose readings load the force plans (Φ = m·a_S, M^Φ = −I_S·ε):
+        # None while the sheet is composed (the plan at its own μa: a force plan's size then does not
+        # move with the acceleration plan's scale as that grows), the sheet's μa once it is (``plan``)
+        self.accel_mu: float | None = None
 
     def _once(self, key, make):
         if key not in self.memo:
@@ -197,8 +201,9 @@ class ForceDrafter:
            group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = (),
            mu_a: float | None = None):
         """The force plans at these scales, their inertia loads read off the acceleration plan the
-        sheet draws at ``mu_a`` (``plans``: its Table 1)."""
+        sheet draws at ``mu_a`` (default ``accel_mu``; ``plans``: its Table 1)."""
         from graphplan.graphic import forceplans
+        mu_a = self.accel_mu if mu_a is None else mu_a
         return self._once(("fp", mu_l, mu_F, mu_v, group_mu, plan_mu, mu_a), lambda: forceplans.construct(
             self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
             group_mu=dict(group_mu), group_mu_F=dict(plan_mu), accel=self.plans(mu_a)))
@@ -215,11 +220,11 @@ class ForceDrafter:
             base = self.groups_fp(mu)
             label = base.groups[i].label
             own = tuple(sorted({**dict(group_scales(mu)), label: mu_l}.items()))
-            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], own, plan_scales(mu), mu.get("acceleration"))
+            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], own, plan_scales(mu))
             wh = [_wh(forcedraw.group_record(fp, fp.groups[i], lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
         return self._once(("group size", i, mu_l, mu["groups"], mu["forces"], mu["lever"], plan_scales(mu),
-                           mu.get("acceleration")), make)
+                           self.accel_mu), make)
 
     def scheme_size(self, mu: dict[str, float], mu_l: float, caption: tuple[float, float]) -> tuple[float, float]:
         """The scheme drawn (lettered, both languages) at μl ``mu_l``: its cell with the caption —
@@ -228,10 +233,10 @@ class ForceDrafter:
         from graphplan.util.words import LANGS
 
         def make():
-            fp = self.fp(mu_l, mu["forces"], mu["lever"], mu_a=mu.get("acceleration"))
+            fp = self.fp(mu_l, mu["forces"], mu["lever"])
             wh = [_wh(forcedraw.mechanism_record(fp, lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
-        return self._once(("scheme size", mu_l, mu["forces"], mu.get("acceleration")), make)
+        return self._once(("scheme size", mu_l, mu["forces"], self.accel_mu), make)
 
     def plan_size(self, mu: dict[str, float], i: int, mu_F: float, caption: tuple[float, float]) -> tuple[float, float]:
         """Group i's force plan drawn (lettered, both languages) at its own μF ``mu_F``: its cell
@@ -244,11 +249,11 @@ class ForceDrafter:
             base = self.groups_fp(mu)
             label = base.groups[i].label
             own = tuple(sorted({**dict(plan_scales(mu)), label: mu_F}.items()))
-            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), own, mu.get("acceleration"))
+            fp = self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), own)
             wh = [_wh(forcedraw.polygon_record(fp, fp.groups[i], lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
         return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
-                           mu.get("acceleration")), make)
+                           self.accel_mu), make)
 
     def hodograph_cells(self, mu_h: float) -> list[tuple[float, float]]:
         """The hodographs drawn (lettered and captioned, both languages) at the size factor
@@ -272,9 +277,8 @@ class ForceDrafter:
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
         plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
-        (``mu["plan <label>"]``); the inertia loads the acceleration plan's at ``mu["acceleration"]``."""
-        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), plan_scales(mu),
-                       mu.get("acceleration"))
+        (``mu["plan <label>"]``); the inertia loads the acceleration plan's at ``accel_mu``."""
+        return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), plan_scales(mu))
 
     def plans(self, mu_a: float | None = None):
         from graphplan.graphic.forceplans import acceleration_plan      # only the plans drawn
@@ -296,7 +300,7 @@ class ForceDrafter:
             from graphplan.drawing import forces as forcedraw
             from graphplan.drawing.plans import acceleration_records
             fp = self.groups_fp(mu)
-            scheme = self.fp(mu["scheme"], mu["forces"], mu["lever"], mu_a=mu["acceleration"])
+            scheme = self.fp(mu["scheme"], mu["forces"], mu["lever"])
             plans = self.plans(mu["acceleration"])
             q = next(x for x in plans.positions if x.acceleration is not None)
             charts = forcecharts.records(self.turn, 1.0 / mu["charts"], lang, 1.0 / mu["hodographs"])
@@ -308,7 +312,7 @@ class ForceDrafter:
                     "lever": [forcedraw.lever_record(fp, lang)],
                     "charts": [charts[n] for n in names["charts"]],
                     "hodographs": [charts[n] for n in names["hodographs"]]}
-        return self._once(("drawings", lang, lettered) + tuple(sorted(mu.items())), make)
+        return self._once(("drawings", lang, lettered, self.accel_mu) + tuple(sorted(mu.items())), make)
 
     def names(self) -> dict[str, list[str]]:
         """The drawings' names per family, in order (for captions and boxes), as
@@ -352,7 +356,7 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
     """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
     key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
-           plan_scales(mu))
+           plan_scales(mu), dr.accel_mu)
     return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
 
 
@@ -958,12 +962,20 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
     if filled.shape != "set" or filled.mu == p.mu:
-        return filled, nat, dr
+        return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
     # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
     plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
     counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
-    return (filled if counts[0] <= counts[1] else plain), nat, dr
+    return _loaded(filled if counts[0] <= counts[1] else plain, dr), nat, dr
+
+
+def _loaded(p: Plan, dr: ForceDrafter) -> Plan:
+    """The composed sheet's force plans, lever and Table 2 loaded with the inertia loads of the
+    acceleration plan it draws (at its μa, Table 1); composed with the plan at its own μa, whose
+    readings differ from these by the ruler's rounding only (review 10 #14)."""
+    dr.accel_mu = p.mu["acceleration"]
+    return p
 
 
 def _legible_factor(dr: ForceDrafter, hod: Family) -> float:

@@ -418,7 +418,7 @@ WORDS: dict[str, tuple[str, str]] = {
               "Loads: G = m·g, Φ = −m·a_S, M^Φ = −I_S·ε (+ counter-clockwise), external forces"),
     "loads from plan": ("  a_S, ε — з плану прискорень (μ_a = {ma} {(m/s²)/mm}), як у планах сил і на важелі; «точно» — аналітично",
                         "  a_S, ε from the acceleration plan (μ_a = {ma} {(m/s²)/mm}), as the force plans and the lever take "
-                        "them; “exact”: the analytic solution"),
+                        "them; \"exact\": the analytic solution"),
     "no loads": ("немає: у сцені немає ні мас, ні сил, тож усі реакції нульові",
                  "none: the scene gives no masses and no forces, so every reaction is zero"),
     "load": ("навантаження", "load"), "link": ("ланка", "link"), "value": ("значення", "value"),
@@ -646,7 +646,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs inertia note": ("a_S, ε — з плану прискорень (табл. {n}); Φ = m·a_S (напрям проти a_S на плані) і M^Φ = −I_S·ε "
                         "з них діють у планах сил і на важелі; «точно» — з аналітичного розв'язку; ε, M^Φ: + проти год. стрілки",
                         "a_S, ε from the acceleration plan (Table {n}); Φ = m·a_S (directed against a_S as drawn) and "
-                        "M^Φ = −I_S·ε from them act on the force plans and the lever; “exact”: the analytic solution; "
+                        "M^Φ = −I_S·ε from them act on the force plans and the lever; \"exact\": the analytic solution; "
                         "ε, M^Φ: + counter-clockwise"),
     "fs inertia exact rows": ("ланки {links}: a_S, ε не побудовані на плані — з аналітичного розв'язку",
                               "links {links}: a_S, ε not constructed on the plan, from the analytic solution"),
