@@ -14,6 +14,9 @@ turned 90° counter-clockwise; each force is carried to its point's image (a cou
 M/l at its link's joints); Σ F·h about the pole, with h read off the lever, balances the force P_b
 at the crank pin's image: P_b·pa = ΣF·h, M_b = P_b·l_OA.
 
+The inertia loads are the draftsman's own: Φ = −m·a_S and M^Φ = −I_S·ε with a_S (π s × μa, against π s
+as drawn) and ε read off the force position's acceleration plan (``plan_inertia``), as the lab takes them.
+
 With precision 0 nothing is rounded and every result equals the closed form (kinetostatics.py).
 """
 from __future__ import annotations
