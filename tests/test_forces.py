@@ -79,6 +79,40 @@ def test_drafting_precision_within_the_labs_five_percent(name):
     assert max(errors) > 0.01
 
 
+def test_inertia_loads_are_read_off_the_acceleration_plan():
+    """Review 10 #14: the draftsman's Φ = m·(πs)·μa, against π s as drawn, and M^Φ = −I_S·ε with ε
+    of his own acceleration plan load the force plans and the lever (not the closed form's); at
+    precision 0 they are the closed form's m·a_S, −I_S·ε."""
+    from graphplan.graphic.forceplans import acceleration_plan
+    st = example("shaper")
+    phi = at_scene_angle(st)
+    accel = acceleration_plan(st, phi, precision=0.5)
+    plan = next(q.acceleration for q in accel.positions if q.acceleration is not None)
+    fp = construct(st, phi, precision=0.5, accel=accel)
+    kin = st.solve([phi])
+    loaded = {f.name: f for gp in fp.groups for f in gp.forces}
+    lever = {t.name: t for t in fp.lever.terms}
+    assert set(fp.inertia) == {n for n, l in st.mech.links.items() if l.mass or l.inertia}
+    for name, i in fp.inertia.items():
+        link = st.mech.links[name]
+        e = plan.entries[link.com or next(iter(link.local))]
+        assert abs(abs(i.force) - link.mass * e.mm * accel.mu_a) <= 1e-9 * abs(i.force)     # ruler mm × μa × m
+        assert abs(i.force / abs(i.force) + e.vector / abs(e.vector)) < 1e-12                # against π s as drawn
+        assert i.couple == -(link.inertia or 0.0) * plan.rates[name]
+        phi_n = f"Φ{link.number}"
+        assert loaded[phi_n].force == i.force and lever[phi_n].vector == i.force
+        exact = abs(kin.bodies[name].at(link.local[link.com or next(iter(link.local))])[2][0]) * link.mass
+        assert 0 < abs(abs(i.force) - exact) <= 0.05 * exact                                # realistic, not exact
+    exact_fp = construct(st, phi, precision=0)
+    for name, i in exact_fp.inertia.items():
+        assert abs(i.force - i.exact_force) <= 1e-9 * abs(i.exact_force)
+        assert abs(i.couple - i.exact_couple) <= 1e-9 * max(abs(i.exact_couple), 1.0)
+        b = kin.bodies[name]
+        link = st.mech.links[name]
+        assert abs(i.exact_force + link.mass * b.at(link.local[link.com or next(iter(link.local))])[2][0]) < 1e-9
+        assert i.exact_couple == pytest.approx(-(link.inertia or 0) * float(b.eps[0]), abs=1e-12)
+
+
 @pytest.mark.parametrize("name", LOADED)
 def test_every_link_is_in_equilibrium_over_the_turn(name):
     ks = full_turn(example(name), 72)

@@ -84,25 +84,37 @@ def shaper_forces():
     return build("shaper", "forces")
 
 
-def test_table5_has_the_force_plans_inertia_loads(shaper_forces):
-    """Table 5 gives the inertia loads the group tables and ``forces`` use (the exact kinetostatics;
-    it used the plan's a_S: Φ3 = 1124 N beside 1110 N, M_Φ3 = +88,8 beside −89,87 N·m)."""
-    from graphplan.exact.kinetostatics import analyse, at_scene_angle
+def test_table2_takes_the_inertia_loads_off_the_sheets_own_plan(shaper_forces):
+    """Review 10 #14: Φ = m·a_S and M^Φ = −I_S·ε come from the acceleration plan the sheet draws
+    (Table 1's graphical a_S, ε), the very loads the groups' tables carry, each beside the closed
+    form's (m·|a_S| of the exact kinematics) with δ (it printed the closed form's alone, «з точного
+    аналізу»)."""
+    from graphplan.exact.kinetostatics import at_scene_angle
     from graphplan.sheets.compose import number
+    from graphplan.util.words import pct
     st = example("shaper")
-    ks = analyse(st, [at_scene_angle(st)])
-    inertia = ks.inertia()
+    kin = st.solve([at_scene_angle(st)])
     lines = texts(shaper_forces)
+    value = lambda cell: float(cell.replace(",", ".").replace("−", "-"))  # noqa: E731
     groups = [lines[k + 1:k + 12] for k, t in enumerate(lines) if t.startswith("значення, Н")]   # the groups' value rows
-    for link, com, key in (("3", "S3", "S3"), ("5", "C", "S5")):      # the ram's loads act at C
-        row = row_after(lines, f"{link} ({com})", 8)
-        force = number(float(inertia[key]["force"][0]))
-        moment = number(float(inertia[key]["moment"][0]))
-        assert row[6] == force and row[7] == moment, (row, force, moment)
-        if float(inertia[key]["moment"][0]):
-            assert any(moment in g for g in groups), moment
-        assert any(force in g for g in groups), force
-    assert number(float(inertia["S3"]["moment"][0])).startswith("−")     # one sign convention: −I_S·ε
+    for name, com, eps in (("OB", "S3", "ε_{3}"), ("BC", "S4", "ε_{4}"), ("C", "C", None)):   # the ram's at C
+        link = st.mech.links[name]
+        row = row_after(lines, f"{link.number} ({com})", 12)
+        a_plan = value(row_after(lines, f"a_{{{com}}}", 4)[2])           # Table 1: mm, graphical, analytic
+        a_exact = abs(kin.bodies[name].at(link.local[com])[2][0])
+        assert row[3] == number(a_plan) and row[6] == number(link.mass * a_plan), (row, a_plan)
+        assert row[7] == number(link.mass * a_exact), (row, a_exact)
+        assert row[8] == pct(100 * (a_plan - a_exact) / a_exact, "uk").replace("-", "−"), row
+        assert any(row[6] in g for g in groups), (row[6], groups)
+        if eps is not None:                                              # ε printed to 3 figures in Table 1
+            e_plan = value(row[4])
+            assert abs(e_plan - value(row_after(lines, eps, 3)[2])) <= 0.05 + 1e-9, (row, eps)
+            assert abs(value(row[9]) + link.inertia * e_plan) <= 0.01 * abs(value(row[9])), row
+            assert any(row[9] in g for g in groups), (row[9], groups)
+            e_exact = float(kin.bodies[name].eps[0])
+            assert row[10] == number(-link.inertia * e_exact), (row, e_exact)
+    assert row_after(lines, "3 (S3)", 12)[9].startswith("−")            # one sign convention: −I_S·ε
+    assert any("з плану прискорень (табл. 1)" in t for t in lines)
 
 
 def test_force_position_is_named_in_the_scenes_convention(shaper_forces):

@@ -453,16 +453,23 @@ def test_slider_reaction_chart_plots_the_exact_reaction(name):
 
 def test_force_sheet_draws_the_mechanism_with_every_load():
     """The scheme the groups are taken from: every nonzero weight, inertia force and resistance of the
-    exact analysis drawn once, along its exact direction, and the balancing moment on the crank."""
+    exact analysis drawn once — a weight and the resistance along their exact direction, an inertia
+    force Φ against a_S as the acceleration plan draws it (the force plans' Φ, review 10 #14) — and
+    the balancing moment on the crank."""
     from graphplan.drawing.forces import mechanism_record
     from graphplan.exact.kinetostatics import analyse, at_scene_angle
-    from graphplan.graphic.forceplans import construct
+    from graphplan.graphic.forceplans import acceleration_plan, construct
     st = example("shaper")
     phi = float(np.atleast_1d(at_scene_angle(st))[0])
     ks = analyse(st, [phi])
-    rec = mechanism_record(construct(st, phi))
+    accel = acceleration_plan(st, phi)
+    plan = next(q.acceleration for q in accel.positions if q.acceleration is not None)
+    rec = mechanism_record(construct(st, phi, accel=accel))
     drawn = {p.text: p.points for p in rec.items if p.kind == "vector" and p.text}
     loads = {ld.name: complex(ld.force[0]) for ld in ks.loads if abs(ld.force[0]) > 1e-9}
+    for ld in ks.loads:
+        if ld.kind == "inertia" and ld.name in loads:        # against π s on the plan
+            loads[ld.name] = -plan.entries[ld.point].vector
     assert drawn.pop("M_b", None) is not None       # the balancing moment's arc ends in its arrowhead
     assert set(drawn) == set(loads)
     for name, f in loads.items():

@@ -14,6 +14,9 @@ turned 90° counter-clockwise; each force is carried to its point's image (a cou
 M/l at its link's joints); Σ F·h about the pole, with h read off the lever, balances the force P_b
 at the crank pin's image: P_b·pa = ΣF·h, M_b = P_b·l_OA.
 
+The inertia loads are the draftsman's own: Φ = −m·a_S and M^Φ = −I_S·ε with a_S (π s × μa, against π s
+as drawn) and ε read off the force position's acceleration plan (``plan_inertia``), as the lab takes them.
+
 With precision 0 nothing is rounded and every result equals the closed form (kinetostatics.py).
 """
 from __future__ import annotations
@@ -135,8 +138,47 @@ class GroupPlan:
 
 
 @dataclass
+class Inertia:
+    """One link's inertia loads as the draftsman takes them (seed 000 §2.5, table 2.3): a_S and ε read
+    off the force position's acceleration plan — π s (mm, ruler) × μa along the drawn vector, ε from
+    its relative tangential vector, as its Table 1 prints them — and Φ = −m·a_S (against the drawn
+    π s), M^Φ = −I_S·ε (+ counter-clockwise); beside them the closed form's (``exact_*``).
+    ``source`` is "plan", or "exact" where the plan has no such reading (a centre of mass it does
+    not construct)."""
+    link: str
+    point: str                       # the centre of mass (a link without one: its first point)
+    mass: float                      # kg
+    inertia: float                   # I_S, kg·m²
+    a_mm: float | None               # π s as read, mm (None: not read off the plan)
+    a: complex                       # a_S as read, m/s²
+    eps: float                       # ε as read, rad/s², + counter-clockwise
+    exact_a: complex
+    exact_eps: float
+    source: str = "plan"
+
+    @property
+    def force(self) -> complex:
+        """Φ = −m·a_S, N."""
+        return -self.mass * self.a + 0j
+
+    @property
+    def couple(self) -> float:
+        """M^Φ = −I_S·ε, N·m (+ counter-clockwise)."""
+        return -self.inertia * self.eps + 0.0
+
+    @property
+    def exact_force(self) -> complex:
+        return -self.mass * self.exact_a + 0j
+
+    @property
+    def exact_couple(self) -> float:
+        return -self.inertia * self.exact_eps + 0.0
+
+
+@dataclass
 class ForcePlans:
-    """The whole graphical force analysis at one crank angle."""
+    """The whole graphical force analysis at one crank angle. Its inertia loads are the acceleration
+    plan's (``inertia``, ``loads``); ``ks`` is the closed form every reading is compared with."""
     ks: Kinetostatics
     phi_deg: float
     precision: float
@@ -147,6 +189,9 @@ class ForcePlans:
     balancing_arm_mm: float
     lever: Lever
     warnings: list[str] = field(default_factory=list)
+    inertia: dict[str, Inertia] = field(default_factory=dict)   # link → its Φ, M^Φ from the plan
+    loads: list = field(default_factory=list)                   # the loads the plans and the lever take
+    mu_a: float = 0.0                # the acceleration plan's scale the inertia loads were read at
 
     @property
     def analytic(self) -> float:
@@ -168,11 +213,11 @@ class ForcePlans:
 class _Draftsman:
     """Draws at μl and μF and reads lengths to the precision."""
 
-    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float):
+    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float, loads: list | None = None):
         self.ks, self.mech, self.kin = ks, ks.mech, ks.kin
         self.p, self.mu_l, self.mu_F = precision, mu_l, mu_F
         self.known: dict[str, list[GForce]] = {name: [] for name in self.mech.links}
-        for ld in ks.loads:
+        for ld in (ks.loads if loads is None else loads):
             f, c = complex(ld.force[0]), float(ld.couple[0])
             if f == 0 and c == 0:
                 continue
@@ -282,8 +327,8 @@ def _orient(mech, frm: str, on: str, force: complex) -> complex:
 
 
 class _Plans:
-    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float):
-        self.d = _Draftsman(ks, precision, mu_l, mu_F)
+    def __init__(self, ks: Kinetostatics, precision: float, mu_l: float, mu_F: float, loads: list | None = None):
+        self.d = _Draftsman(ks, precision, mu_l, mu_F, loads)
         self.ks, self.mech = ks, ks.mech
         self.groups: list[GroupPlan] = []
 
@@ -534,20 +579,72 @@ def force_scale(ks: Kinetostatics, target_mm: float = POLYGON_MM) -> float:
     return standard_scale(biggest / target_mm) if biggest > 0 else 1.0
 
 
+def plan_inertia(ks: Kinetostatics, accel) -> dict[str, Inertia]:
+    """Each loaded link's a_S and ε read off the acceleration plan ``accel`` (a ``graphic.plans.Plans``
+    holding the plan of ``ks``'s angle, as ``acceleration_plan`` draws it): π s read with the ruler ×
+    μa along the vector as drawn, ε the plan's (its Table 1 values) — Φ = −m·a_S, M^Φ = −I_S·ε (seed
+    000: "Φ = m·a_S = m·(πs)·μa"). With precision 0 they are the closed form's to ~1e-9."""
+    mech, kin = ks.mech, ks.kin
+    plan = next(q.acceleration for q in accel.positions if q.acceleration is not None)
+    out: dict[str, Inertia] = {}
+    for name, link in mech.links.items():
+        m, inertia = link.mass or 0.0, link.inertia or 0.0
+        if not m and not inertia:
+            continue
+        com = link.com or next(iter(link.local))
+        body = kin.bodies[name]
+        exact_a, exact_eps = complex(body.at(link.local[com])[2][0]), float(body.eps[0])
+        e = plan.entries.get(com)
+        read = e is not None and e.kind == "point"
+        if read:
+            a = e.value * e.vector / abs(e.vector) if e.value and e.vector else 0j
+        else:
+            a = exact_a
+        eps = plan.rates.get(name)
+        out[name] = Inertia(name, com, m, inertia, e.mm if read else None, complex(a),
+                            float(exact_eps if eps is None else eps), exact_a, exact_eps,
+                            "plan" if read and eps is not None else "exact")
+    return out
+
+
+def drawn_loads(ks: Kinetostatics, inertia: dict[str, Inertia]) -> list:
+    """``ks``'s loads with each inertia force and couple the plan's (``plan_inertia``); the weights and
+    the external forces as they are."""
+    from dataclasses import replace
+    out = []
+    for ld in ks.loads:
+        i = inertia.get(ld.link)
+        if i is not None and ld.kind == "inertia":
+            ld = replace(ld, force=np.array([i.force]))
+        elif i is not None and ld.kind == "couple":
+            ld = replace(ld, couple=np.array([i.couple]))
+        out.append(ld)
+    return out
+
+
 def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
               mu_l: float | None = None, mu_F: float | None = None,
               mu_v: float | None = None, group_mu: dict[str, float] | None = None,
-              group_mu_F: dict[str, float] | None = None) -> ForcePlans:
+              group_mu_F: dict[str, float] | None = None, mu_a: float | None = None,
+              count: int | None = None, accel=None) -> ForcePlans:
     """The force plans of every group, the crank's balancing moment and the lever at one angle.
     Every group is drawn (and its arms measured) at ``mu_l``, a group named in ``group_mu`` (label →
     m/mm) at its own scale — the force sheet draws a small group (the crank's) larger where its cell
     has room (sheets.forces); likewise each force plan at ``mu_F`` or its own ``group_mu_F`` (label →
-    N/mm: a group whose forces are small drawn at a finer μF where its cell has room)."""
+    N/mm: a group whose forces are small drawn at a finer μF where its cell has room).
+    The inertia loads Φ = −m·a_S and M^Φ = −I_S·ε are read off the force position's acceleration
+    plan (``accel``, else drawn here as the force sheet draws it: ``acceleration_plan`` at ``mu_a``
+    over ``count`` positions) — the draftsman's own, as the lab takes them; the closed form
+    (``ks``) is the truth they and every reaction are compared with."""
     phi = float(phi_deg) % 360.0
     ks = analyse(st, [phi])
     mu_l = mu_l or mechanism_scale(st)
     mu_F = mu_F or force_scale(ks)
-    plans = _Plans(ks, precision, mu_l, mu_F)
+    if accel is None:
+        accel = acceleration_plan(st, phi, count, precision, mu_a)
+    inertia = plan_inertia(ks, accel)
+    loads = drawn_loads(ks, inertia)
+    plans = _Plans(ks, precision, mu_l, mu_F, loads)
     scales = dict(group_mu or {})
     forces = dict(group_mu_F or {})
     for gf in ks.groups:
@@ -558,7 +655,8 @@ def construct(st: Study, phi_deg: float, precision: float = DEFAULT_PRECISION,
     plans.d.mu_l = scales.get(CRANK_LABEL, mu_l)
     plans.d.mu_F = forces.get(CRANK_LABEL, mu_F)
     m_b, arm = plans.crank()
-    return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v))
+    return ForcePlans(ks, phi, precision, mu_l, mu_F, plans.groups, m_b, arm, lever(ks, precision, mu_v, loads),
+                      inertia=inertia, loads=loads, mu_a=accel.mu_a)
 
 
 

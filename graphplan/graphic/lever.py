@@ -46,8 +46,9 @@ def velocity_scale(ks: Kinetostatics, target_mm: float = PLAN_MM) -> float:
     return standard_scale(max(fastest, 1e-12) / target_mm)
 
 
-def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None) -> Lever:
-    """The Zhukovsky lever at the (single) angle of ``ks``."""
+def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None, loads: list[Load] | None = None) -> Lever:
+    """The Zhukovsky lever at the (single) angle of ``ks``, loaded by ``loads`` (default ``ks``'s; the
+    force plans pass theirs: the inertia loads read off the acceleration plan)."""
     mech, kin = ks.mech, ks.kin
     mu_v = mu_v or velocity_scale(ks)
     images: dict[str, complex] = {}
@@ -70,7 +71,7 @@ def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None) -> Lev
         h = math.copysign(measure(abs(arm), precision), arm)
         terms.append(LeverTerm(name, abs(force), h, abs(force) * h, point, force))
 
-    for ld in ks.loads:
+    for ld in (ks.loads if loads is None else loads):
         f, c = complex(ld.force[0]), float(ld.couple[0])
         if f != 0:
             add(ld.name, ld.link, ld.point, f)

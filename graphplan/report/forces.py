@@ -48,11 +48,19 @@ def forces_json(fp) -> dict[str, Any]:
         reactions[arm.key]["arm"] = {"value": arm.value, "analytic": arm.analytic, "mm": arm.h_mm,
                                      "error_pct": arm.error_pct}
     inertia = {}
+    drawn = {i.link: i for i in fp.inertia.values()}
     for key, item in ks.inertia().items():
         inertia[key] = {"force": float(item["force"][0]), "moment": float(item["moment"][0]),
                         "force_angle_deg": angle_deg(complex(math.cos(float(item["angle"][0])),
                                                              math.sin(float(item["angle"][0])))),
                         "link": item["link"]}
+        i = drawn.get(item["link"])
+        if i is not None:           # what the force plans and the lever take: read off the acceleration plan
+            inertia[key]["plan"] = {"a_S": abs(i.a), "a_S_mm": i.a_mm, "epsilon": i.eps, "force": abs(i.force),
+                                    "force_angle_deg": angle_deg(i.force), "moment": i.couple,
+                                    "error_pct": {"force": _pct(abs(i.force), abs(i.exact_force), abs(i.exact_force)),
+                                                  "moment": _pct(i.couple, i.exact_couple, abs(i.exact_couple))},
+                                    "source": i.source}
     return _clean({
         "scene": st.mech.title,
         "phi_deg": fp.phi_deg,
@@ -62,6 +70,7 @@ def forces_json(fp) -> dict[str, Any]:
         "mu_l": fp.mu_l,
         "mu_F": fp.mu_F,
         "mu_v": fp.lever.mu_v,
+        "mu_a": fp.mu_a,
         "balancing_moment": moments,
         "error_pct": {k: _pct(v, a, scale) for k, v in moments.items() if k != "analytic"},
         # P_b in the crank's sense, as the analytic one (M_b = P_b·l_OA): the lever's own P_b is signed
@@ -104,16 +113,23 @@ def forces_table(fp, lang: str = "uk") -> str:
              plain(w("loads"))]
     if not ks.loads:
         lines.append("  " + w("no loads"))
-    wd = [8, 6, 11, 9]
+    wd = [8, 6, 11, 9, 11, 8]
+    drawn = fp.loads or ks.loads        # the inertia loads read off the acceleration plan (forceplans.construct)
+    if fp.inertia:
+        lines.append(plain(w("loads from plan", ma=n(fp.mu_a))))
     if ks.loads:
-        lines.append(_row([w("load"), w("link"), w("value"), w("angle deg")], wd))
-    for ld in ks.loads:
+        lines.append(_row([w("load"), w("link"), w("value"), w("angle deg"), w("exact"), "δ, %"], wd))
+    for ld, exact in zip(drawn, ks.loads):
         f, c = complex(ld.force[0]), float(ld.couple[0])
+        fx, cx = complex(exact.force[0]), float(exact.couple[0])
+        plan = ld.kind in ("inertia", "couple") and ld.link in fp.inertia
         if ld.point is None:            # a couple: the inertia couple M^Φ or an external moment
-            lines.append(_row([sym(ld.name), ld.link, f"{n(c + 0.0)} {unit('N·m', lang)}", ""], wd))
+            tail = [f"{n(cx + 0.0)} {unit('N·m', lang)}", pct(_pct(c, cx, abs(cx)), lang)] if plan else []
+            lines.append(_row([sym(ld.name), ld.link, f"{n(c + 0.0)} {unit('N·m', lang)}", ""] + tail, wd))
         else:
+            tail = [f"{n(abs(fx))} {unit('N', lang)}", pct(_pct(abs(f), abs(fx), abs(fx)), lang)] if plan else []
             lines.append(_row([sym(ld.name), ld.link, f"{n(abs(f))} {unit('N', lang)}",
-                               fixed(math.degrees(math.atan2(f.imag, f.real)) % 360, lang, 1) if f else ""], wd))
+                               fixed(math.degrees(math.atan2(f.imag, f.real)) % 360, lang, 1) if f else ""] + tail, wd))
     for gp in fp.groups:
         kind = pair_kind(gp.kind, lang) if gp.kind != "crank" else w("crank group")
         lines += ["", w("group line", label=gp.label, kind=kind, links=", ".join(gp.links))]

@@ -52,37 +52,49 @@ def has_loads(st: Study) -> bool:
     return bool(mech.forces) or any((l.mass or 0) > 0 or (l.inertia or 0) > 0 for l in mech.links.values())
 
 
-def inertia_table(st: Study, ks, acc_doc: dict | None, lang: str) -> Record:
-    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε, G = m·g,
-    Φ = m·a_S and M^Φ = −I_S·ε — one computation and one sign convention with the force plans, the
-    groups' tables, the lever and ``forces``: the inertia loads of the exact kinetostatics (``ks``;
-    ε and M^Φ + counter-clockwise); the plan's own a_S beside the exact ones is Table 2's business.
-    ``acc_doc`` is not read (kept for the callers)."""
-    w = lambda key: word(f"fs {key}", lang)  # noqa: E731
+def inertia_table(st: Study, fp, lang: str, table_no: int = 1) -> Record:
+    """Seed 000's table 2.3: per link m, I_S, the acceleration of its centre of mass and its ε read
+    off the force position's acceleration plan (Table ``table_no``, the sheet's: π s × μa, ε), G = m·g,
+    Φ = m·a_S and M^Φ = −I_S·ε from them — the very loads the force plans, the groups' tables and
+    the lever take (``fp.inertia``, ``forceplans.plan_inertia``; ε and M^Φ + counter-clockwise) —
+    each beside the closed form's with δ, % as the sheet's other tables give it (review 10 #14:
+    the exact values alone were not the plan the sheet draws)."""
+    from graphplan.graphic.forceplans import error_pct
+    from graphplan.util.words import pct
+    _pct = lambda v, lang: pct(v, lang).replace("-", "−")  # noqa: E731  (δ as the results table signs it)
+    from graphplan.graphic.record import text_width
+    w = lambda key, **f: word(f"fs {key}", lang, **f)  # noqa: E731
     mech = st.mech
-    kin = ks.kin
-    rows = [[w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}", f"a_S, {unit('m/s²', lang)}",
-             f"ε, {unit('rad/s²', lang)}", f"G, {unit('N', lang)}", f"Φ, {unit('N', lang)}",
-             f"M^Φ, {unit('N·m', lang)}"]]
-    loads = {(ld.link, ld.kind): ld for ld in ks.loads}
-    for name, link in mech.links.items():
-        m, inertia = link.mass or 0.0, link.inertia or 0.0
-        if not m and not inertia:
-            continue
-        com = link.com or next(iter(link.local))
-        body = kin.bodies[name]
-        a_s = float(abs(body.at(link.local[com])[2][0]))
-        eps = float(body.eps[0])
-        force = loads.get((name, "inertia"))
-        couple = loads.get((name, "couple"))
-        rows.append([f"{link.number} ({com})", number(m, 4, lang), number(inertia, 4, lang), number(a_s, 4, lang),
-                     number(eps, 4, lang), number(m * mech.g, 4, lang),
-                     number(float(abs(force.force[0])) if force else 0.0, 4, lang),
-                     number(float(couple.couple[0]) if couple else 0.0, 4, lang)])
-    rec = table(rows, [20.0, 14.0, 20.0, 18.0, 18.0, 16.0, 18.0, 18.0], row_h=6.0, size=2.5,
-                title=w('inertia'))
+    exact = word("exact", lang)
+    head = [w('link'), f"m, {unit('kg', lang)}", f"I_S, {unit('kg·m²', lang)}", f"a_S, {unit('m/s²', lang)}",
+            f"ε, {unit('rad/s²', lang)}", f"G, {unit('N', lang)}", f"Φ, {unit('N', lang)}",
+            f"{exact}, {unit('N', lang)}", "δ, %", f"M^Φ, {unit('N·m', lang)}", f"{exact}, {unit('N·m', lang)}", "δ, %"]
+    rows = [head]
+    forces = [abs(i.exact_force) for i in fp.inertia.values()] + [1.0]
+    couples = [abs(i.exact_couple) for i in fp.inertia.values()] + [1e-9]
+    fallback = []
+    for name, i in fp.inertia.items():
+        link = mech.links[name]
+        if i.source != "plan":
+            fallback.append(str(link.number))
+        f, fx = number(abs(i.force), 4, lang), number(abs(i.exact_force), 4, lang)
+        m, mx = number(i.couple, 4, lang), number(i.exact_couple, 4, lang)
+        # δ of the loads themselves (δΦ = δa_S of Table 1: the 4 figures printed here would move it, 0,18 → 0,22 %)
+        df = error_pct(abs(i.force), abs(i.exact_force), max(forces))
+        dm = error_pct(i.couple, i.exact_couple, max(couples))
+        rows.append([f"{link.number} ({i.point})", number(i.mass, 4, lang), number(i.inertia, 4, lang),
+                     number(abs(i.a), 4, lang), number(i.eps, 4, lang), number(i.mass * mech.g, 4, lang),
+                     f, fx, _pct(df, lang) if i.mass else "—", m, mx, _pct(dm, lang) if i.inertia else "—"])
+    # each column as wide as its widest cell (the head's markup read as set: I_S, M^Φ) and 3 mm
+    widths = [max(text_width(str(r[k]).replace("_", "").replace("^", ""), 2.5) for r in rows) + 3.0
+              for k in range(len(head))]
+    widths = [max(x, 12.0) for x in widths]
+    rec = table(rows, widths, row_h=6.0, size=2.5, title=w('inertia'))
     from graphplan.sheets.kinematics import footnoted
-    return footnoted(rec, [w('inertia note')])
+    notes = [w('inertia note', n=table_no)]
+    if fallback:
+        notes.append(w('inertia exact rows', links=", ".join(fallback)))
+    return footnoted(rec, notes)
 
 
 def force_position(st: Study, phi: float, lang: str, short: bool = False) -> str:
@@ -175,6 +187,10 @@ class ForceDrafter:
         self.ks = kinetostatics.analyse(self.st, [self.phi])
         self.turn = forcecharts.turn(self.st)
         self.memo: dict = {}
+        # μa of the acceleration plan whose readings load the force plans (Φ = m·a_S, M^Φ = −I_S·ε):
+        # None while the sheet is composed (the plan at its own μa: a force plan's size then does not
+        # move with the acceleration plan's scale as that grows), the sheet's μa once it is (``plan``)
+        self.accel_mu: float | None = None
 
     def _once(self, key, make):
         if key not in self.memo:
@@ -182,11 +198,15 @@ class ForceDrafter:
         return self.memo[key]
 
     def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None,
-           group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = ()):
+           group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = (),
+           mu_a: float | None = None):
+        """The force plans at these scales, their inertia loads read off the acceleration plan the
+        sheet draws at ``mu_a`` (default ``accel_mu``; ``plans``: its Table 1)."""
         from graphplan.graphic import forceplans
-        return self._once(("fp", mu_l, mu_F, mu_v, group_mu, plan_mu), lambda: forceplans.construct(
+        mu_a = self.accel_mu if mu_a is None else mu_a
+        return self._once(("fp", mu_l, mu_F, mu_v, group_mu, plan_mu, mu_a), lambda: forceplans.construct(
             self.st, self.phi, precision=self.opts.precision, mu_l=mu_l, mu_F=mu_F, mu_v=mu_v,
-            group_mu=dict(group_mu), group_mu_F=dict(plan_mu)))
+            group_mu=dict(group_mu), group_mu_F=dict(plan_mu), accel=self.plans(mu_a)))
 
     def group_size(self, mu: dict[str, float], i: int, mu_l: float, caption: tuple[float, float]) -> tuple[float, float]:
         """Group i drawn (lettered, both languages) at its own μl ``mu_l``, the others as ``mu``:
@@ -203,7 +223,8 @@ class ForceDrafter:
             fp = self.fp(mu["groups"], mu["forces"], mu["lever"], own, plan_scales(mu))
             wh = [_wh(forcedraw.group_record(fp, fp.groups[i], lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
-        return self._once(("group size", i, mu_l, mu["groups"], mu["forces"], mu["lever"], plan_scales(mu)), make)
+        return self._once(("group size", i, mu_l, mu["groups"], mu["forces"], mu["lever"], plan_scales(mu),
+                           self.accel_mu), make)
 
     def scheme_size(self, mu: dict[str, float], mu_l: float, caption: tuple[float, float]) -> tuple[float, float]:
         """The scheme drawn (lettered, both languages) at μl ``mu_l``: its cell with the caption —
@@ -215,7 +236,7 @@ class ForceDrafter:
             fp = self.fp(mu_l, mu["forces"], mu["lever"])
             wh = [_wh(forcedraw.mechanism_record(fp, lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
-        return self._once(("scheme size", mu_l, mu["forces"]), make)
+        return self._once(("scheme size", mu_l, mu["forces"], self.accel_mu), make)
 
     def plan_size(self, mu: dict[str, float], i: int, mu_F: float, caption: tuple[float, float]) -> tuple[float, float]:
         """Group i's force plan drawn (lettered, both languages) at its own μF ``mu_F``: its cell
@@ -231,7 +252,8 @@ class ForceDrafter:
             fp = self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), own)
             wh = [_wh(forcedraw.polygon_record(fp, fp.groups[i], lang)) for lang in LANGS]
             return max(max(w for w, _ in wh), caption[0]), max(h for _, h in wh) + caption[1]
-        return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu)), make)
+        return self._once(("plan size", i, mu_F, mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
+                           self.accel_mu), make)
 
     def hodograph_cells(self, mu_h: float) -> list[tuple[float, float]]:
         """The hodographs drawn (lettered and captioned, both languages) at the size factor
@@ -255,7 +277,7 @@ class ForceDrafter:
     def groups_fp(self, mu: dict[str, float]):
         """The groups' force plans at the sheet's scales: μl, μF, μv, a group's own μl where the
         plan draws it larger (``mu["group <label>"]``) and a force plan's own μF
-        (``mu["plan <label>"]``)."""
+        (``mu["plan <label>"]``); the inertia loads the acceleration plan's at ``accel_mu``."""
         return self.fp(mu["groups"], mu["forces"], mu["lever"], group_scales(mu), plan_scales(mu))
 
     def plans(self, mu_a: float | None = None):
@@ -290,7 +312,7 @@ class ForceDrafter:
                     "lever": [forcedraw.lever_record(fp, lang)],
                     "charts": [charts[n] for n in names["charts"]],
                     "hodographs": [charts[n] for n in names["hodographs"]]}
-        return self._once(("drawings", lang, lettered) + tuple(sorted(mu.items())), make)
+        return self._once(("drawings", lang, lettered, self.accel_mu) + tuple(sorted(mu.items())), make)
 
     def names(self) -> dict[str, list[str]]:
         """The drawings' names per family, in order (for captions and boxes), as
@@ -334,7 +356,7 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:
     """The sheet's tables in reading order, lettered ``factor`` × 2.5 mm (``_tables_at``)."""
     key = ("tables", lang, mu["acceleration"], mu["groups"], mu["forces"], mu["lever"], group_scales(mu),
-           plan_scales(mu))
+           plan_scales(mu), dr.accel_mu)
     return [(name, enlarged(rec, factor)) for name, rec in dr._once(key, lambda: _tables_at(dr, mu, lang))]
 
 
@@ -350,7 +372,7 @@ def _tables_at(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[tuple[
     fp = dr.groups_fp(mu)
     # numbered 1, 2, 3 … in reading order on this sheet (not the kinematics sheet's 2.n, nor a fixed 5)
     out = [("acceleration table", _renumbered(acceleration_table(acc_doc, n, lang, p), 1)),
-           ("inertia table", _renumbered(inertia_table(st, dr.ks, acc_doc, lang), 2))]
+           ("inertia table", _renumbered(inertia_table(st, fp, lang, 1), 2))]
     for k, gp in enumerate(fp.groups, 3):
         rec = forcedraw.group_table_record(fp, gp, lang)
         title = forcedraw.table_title(k, f"{_caption(f'table {gp.label}', lang)}, {unit('N', lang)}", lang)
@@ -940,12 +962,20 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
     if filled.shape != "set" or filled.mu == p.mu:
-        return filled, nat, dr
+        return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
     # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
     plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
     counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
-    return (filled if counts[0] <= counts[1] else plain), nat, dr
+    return _loaded(filled if counts[0] <= counts[1] else plain, dr), nat, dr
+
+
+def _loaded(p: Plan, dr: ForceDrafter) -> Plan:
+    """The composed sheet's force plans, lever and Table 2 loaded with the inertia loads of the
+    acceleration plan it draws (at its μa, Table 1); composed with the plan at its own μa, whose
+    readings differ from these by the ruler's rounding only (review 10 #14)."""
+    dr.accel_mu = p.mu["acceleration"]
+    return p
 
 
 def _legible_factor(dr: ForceDrafter, hod: Family) -> float:
@@ -1311,10 +1341,11 @@ def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dic
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
     """μl (of the groups) and μF of the force sheet of ``format`` — for ``forces --format``; no sheet
-    is built."""
+    is built. With them μa of its acceleration plan, the inertia loads' (``forceplans.construct``)."""
     p, _, _ = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     return {"mu_l": p.mu["groups"], "mu_F": p.mu["forces"], "mu_v": p.mu["lever"],
-            "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu))}
+            "group_mu": dict(group_scales(p.mu)), "group_mu_F": dict(plan_scales(p.mu)),
+            "mu_a": p.mu["acceleration"]}
 
 
 def _arranged(tree, region):

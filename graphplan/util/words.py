@@ -417,6 +417,9 @@ WORDS: dict[str, tuple[str, str]] = {
                       "μ_F = {mf} {N/mm}, μ_v = {mv} {(m/s)/mm}"),
     "loads": ("Навантаження: G = m·g, Φ = −m·a_S, M^Φ = −I_S·ε (+ проти годинникової стрілки), зовнішні сили",
               "Loads: G = m·g, Φ = −m·a_S, M^Φ = −I_S·ε (+ counter-clockwise), external forces"),
+    "loads from plan": ("  a_S, ε — з плану прискорень (μ_a = {ma} {(m/s²)/mm}), як у планах сил і на важелі; «точно» — аналітично",
+                        "  a_S, ε from the acceleration plan (μ_a = {ma} {(m/s²)/mm}), as the force plans and the lever take "
+                        "them; \"exact\": the analytic solution"),
     "no loads": ("немає: у сцені немає ні мас, ні сил, тож усі реакції нульові",
                  "none: the scene gives no masses and no forces, so every reaction is zero"),
     "load": ("навантаження", "load"), "link": ("ланка", "link"), "value": ("значення", "value"),
@@ -641,10 +644,13 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
                          "The ordinates, mm, carry the value's sign along the guide (the diagrams are drawn mirrored)"),
     "kin group": ("гр.\u00a0{g}", "group\u00a0{g}"),
-    "fs inertia note": ("a_S, ε — з точного аналізу; ті самі Φ = m·a_S (напрям проти a_S) і M^Φ = −I_S·ε діють у планах сил "
-                        "і на важелі; ε, M^Φ: + проти год. стрілки",
-                        "a_S, ε from the exact analysis; the same Φ = m·a_S (directed against a_S) and M^Φ = −I_S·ε act on the force "
-                        "plans and the lever; ε, M^Φ: + counter-clockwise"),
+    "fs inertia note": ("a_S, ε — з плану прискорень (табл. {n}); Φ = m·a_S (напрям проти a_S на плані) і M^Φ = −I_S·ε "
+                        "з них діють у планах сил і на важелі; «точно» — з аналітичного розв'язку; ε, M^Φ: + проти год. стрілки",
+                        "a_S, ε from the acceleration plan (Table {n}); Φ = m·a_S (directed against a_S as drawn) and "
+                        "M^Φ = −I_S·ε from them act on the force plans and the lever; \"exact\": the analytic solution; "
+                        "ε, M^Φ: + counter-clockwise"),
+    "fs inertia exact rows": ("ланки {links}: a_S, ε не побудовані на плані — з аналітичного розв'язку",
+                              "links {links}: a_S, ε not constructed on the plan, from the analytic solution"),
     "fs force position": ("φ = {turn}° від положення 0 (кут кривошипа {phi}° від осі x)",
                     "φ = {turn}° from position 0 (crank angle {phi}° from the x axis)"),
     "fs force position short": ("φ = {turn}° від положення 0 ({phi}° від осі x)",
