@@ -92,11 +92,18 @@ class Flywheel:
         points, with the ruler — not at the divisions (review 13: the V-twin's ΔT peaked at 64,9 J
         between positions 2 and 3 where the table's ordinates give 61,3). mm, and the points' φ in
         degrees of the crank's turn from position 0."""
-        fine = np.linspace(0.0, self.L, 4 * int(self.L) + 1)
+        fine = np.linspace(0.0, self.L, 4 * int(self.L) + 1)[:-1]      # one turn: 2π is 0 again
         y = energy_curve(self.x, self.dT, self.L, fine)
-        hi, lo = int(np.argmax(y)), int(np.argmin(y))
-        return {"max": float(read(y[hi], self.precision)), "min": float(read(y[lo], self.precision)),
-                "max_deg": float(fine[hi] / self.L * 360.0), "min_deg": float(fine[lo] / self.L * 360.0)}
+        out = {}
+        for key, k in (("max", int(np.argmax(y))), ("min", int(np.argmin(y)))):
+            value, at = float(read(y[k], self.precision)), float(fine[k])
+            # where the curve's extreme reads no more than a division's ordinate it is that ordinate
+            # (ΔT = 0 at position 0, not "at 359°" where the ruler's residual lifts the curve's end)
+            same = [j for j in range(self.divisions) if abs(float(self.dT[j]) - value) <= 1e-9]
+            if same:
+                at = float(self.x[same[0]])
+            out[key], out[f"{key}_deg"] = value, at / self.L * 360.0
+        return out
 
     @property
     def approximate_total(self) -> float:
