@@ -96,8 +96,10 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     num_ = lambda x: num(x, lang, 4)                                             # noqa: E731
     first = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_1 = {num_(g.H1)} {mm}, H_2 = {num_(g.H2)} {mm}"
     if cam.rocking:
-        phase = (f"{scale_text('mu_l', g.mu_l, True, lang)} "
-                 + ("(коромисло і дуги l·ψ)" if lang == "uk" else "(the arm and the arcs l·ψ)"))
+        mu_ph = g.mu_phase or g.mu_l
+        phase = (f"{scale_text('mu_l', mu_ph, True, lang)} "
+                 + ("(коромисло і дуги l·ψ" if lang == "uk" else "(the arm and the arcs l·ψ")
+                 + (f", M {drawing_scale(mu_ph, lang)})" if g.mu_phase else ")"))
     else:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
@@ -106,14 +108,46 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
             "profile": (w["profile"], profile)}
 
 
-def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False) -> Record:
+PRESSURE_PART = 0.6     # ϑ(φ)'s span (its curve and the bands ±[ϑ]) at most this part of the stroke drawn
+
+
+def pressure_below(sol, g, lang: str) -> Record:
+    """The pressure angle's diagram ϑ(φ) captioned, at the diagrams' μ_φ (review 11, mark 16: drawn
+    at its own 2.5 °/mm beside the diagrams' 0.79 °/mm, its divisions did not line up with theirs),
+    its φ origin at theirs (x = 0 in both records), ϑ at the finest standard μ_ϑ whose span is at most
+    PRESSURE_PART of the stroke drawn (so it grows and shrinks with the diagrams the sizing tries)."""
+    import numpy as np
+
+    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
+    mm = "мм" if lang == "uk" else "mm"
+    stroke = float(np.max(np.abs(g.s_mm))) if len(g.s_mm) else 40.0
+    _, mu_t = pressure_scales(sol, 240.0, PRESSURE_PART * stroke + 18.0)     # 18 mm: pressure_scales' letters
+    second = f"{scale_text('mu_phi', g.mu_phi, sol.cam.rocking, lang)}; μ_ϑ = {num(mu_t, lang, 4)} °/{mm}"
+    return captioned(pressure_diagram(sol, g, lang, g.mu_phi, mu_t), PRESSURE_NAMES[lang], second)
+
+
+def with_theta(diagrams: Record, pressure: Record | None) -> Record:
+    """The captioned diagrams with ϑ(φ) (pressure_below, captioned) under them, a GAP clear, their φ
+    origins on one vertical (the same μ_φ: a division reads straight down); ``theta_at``: the index of
+    ϑ(φ)'s first item (apart places it as its own drawing)."""
+    if pressure is None:
+        return diagrams
+    dy = diagrams.bounds()[1] - GAP - pressure.bounds()[3]
+    out = Record(diagrams.title, list(diagrams.items) + pressure.moved(0.0, dy).items, dict(diagrams.scales))
+    out.scales.update({k: v for k, v in pressure.scales.items() if k != "mu_phi"})
+    out.theta_at = len(diagrams.items)
+    return out
+
+
+def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False, pressure: Record | None = None
+           ) -> Record:
     """The diagrams and, to their right, the phase diagram at the same height — its s axis lined up
     with the s diagram's (both at μ_s: the point C0 of s = 0 level with the s diagram's φ axis, so a
     value of s reads straight across) —, each with its caption: one drawing on the sheet. A rocking
     follower's phase diagram is drawn at the profile's μ_l (drawing.cam.phase_scale), not at μ_ψ: no
     value reads across, and it stands level with the diagrams' top, the room under it (hole) to the
     notes and the pressure angle's diagram (it hung from the ψ axis over a blank 100 mm high)."""
-    left = captioned(diagrams, *caps["diagrams"])
+    left = with_theta(captioned(diagrams, *caps["diagrams"]), pressure)
     right = captioned(phase, *caps["phase"])
     axis = next(q for q in diagrams.items if q.step == "axis s")
     start = next(q for q in phase.items if q.step == "R0")
@@ -125,14 +159,26 @@ def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False) -
     out.scales.update(phase.scales)
     out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
     out.parts = len(left.items)                                          # see apart()
+    out.theta_at = getattr(left, "theta_at", None)
     return out
 
 
-def apart(name: str, rec: Record, box: Box, page, n: int | None = None) -> list[Placed]:
+def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at: int | None = None
+          ) -> list[Placed]:
     """A placed leaf; the diagrams with a leaf laid in the room under their phase diagram (hole) as
     two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
     boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
     ``rec``'s items are the diagrams' (beside)."""
+    if name == "diagrams" and theta_at is not None:      # ϑ(φ) under the diagrams (with_theta): its own box
+        end = len(rec.items) if n is None else n
+        theta = Record("pressure angle", rec.items[theta_at:end], {})
+        rest = Record(rec.title, rec.items[:theta_at] + rec.items[end:], dict(rec.scales))
+        tb = theta.bounds()
+        below = (tb[0] - GAP / 2, tb[1] - GAP / 2, tb[2] + GAP / 2, tb[3] + GAP / 2)
+        parts = apart(name, rest, box, page, None if n is None else theta_at)
+        b0 = parts[0].box
+        parts[0] = Placed(name, parts[0].record, (b0[0], max(b0[1], below[3]), b0[2], b0[3]))
+        return parts + [Placed("pressure", theta, below)]
     inside = [b for other, b in page if other.name != name and box[0] <= b[0] and b[2] <= box[2]
               and box[1] <= b[1] and b[3] <= box[3]]
     if name != "diagrams" or n is None or not inside:
@@ -176,7 +222,8 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     if drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
     elif drawn:
-        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking)),
+        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
+                                                 pressure_below(sol, g, lang))),
                   Leaf("profile", record=captioned(drawn["profile"], *caps["profile"]))]
     tab = Leaf("table", record=positions_table(doc, lang))
     table_w = tab.record.bounds()[2] - tab.record.bounds()[0]
@@ -294,8 +341,10 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         if (name, key, lang) not in memo:
             caps = _captions(g, sol.cam, lang)
             if name == "diagrams":
+                if ("pressure", key[:3], lang) not in memo:
+                    memo[("pressure", key[:3], lang)] = pressure_below(sol, g, lang)
                 rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g),
-                             caps, sol.cam.rocking)
+                             caps, sol.cam.rocking, memo[("pressure", key[:3], lang)])
             else:
                 rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
             memo[(name, key, lang)] = Leaf(name, record=rec)
@@ -628,13 +677,17 @@ def with_pressure(laid, sol, g, lang: str):
     return laid if leaf is None else [laid[0] + [(leaf, room)]] + laid[1:]
 
 
-def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
+def pressure_leaf(sol, g, lang: str, w: float, h: float, same: bool = True) -> Leaf | None:
     """The pressure angle's diagram captioned, at the finest standard μ_ϑ that puts it in ``w`` × ``h``
-    mm (None when none of the trials does)."""
+    mm (None when none of the trials does): ``same``, at the diagrams' μ_φ (review 11, mark 16: its
+    divisions line up with theirs); else at the standard μ_φ that fits ``w`` (a set whose sheets have
+    no room as wide as the diagrams' abscissa)."""
     from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
     mm = "мм" if lang == "uk" else "mm"
     for shrink in (1.0, 0.9, 0.8, 0.7):
         mu_phi, mu_t = pressure_scales(sol, w * shrink, h * shrink)
+        if same:
+            mu_phi = g.mu_phi
         second = (f"{scale_text('mu_phi', mu_phi, sol.cam.rocking, lang)}; "
                   f"μ_ϑ = {num(mu_t, lang, 4)} °/{mm}")
         leaf = Leaf("pressure", record=captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t),
@@ -647,7 +700,8 @@ def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
 SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
 
 
-def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None):
+def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None,
+                      same: bool = True):
     """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
     on the sheets there are (no further sheet for it): the table's sheet of an A2 or A3 set stands
     mostly blank. Else ``laid`` as it is."""
@@ -664,7 +718,7 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     for w in (region[2] - region[0] - 2 * GAP, SET_PRESSURE[0], 180.0, 150.0):
         for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5, 0.45, 0.4):
             h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
-            leaf = pressure_leaf(sol, g, lang, w, h)
+            leaf = pressure_leaf(sol, g, lang, w, h, same)
             if leaf is None or (round(leaf.h), leaf.w) <= area:
                 continue
             again = flow([leaves, last + [leaf]], region, keep, later=later)
@@ -674,7 +728,31 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     return best
 
 
-def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None):
+def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
+                      later=None) -> list | None:
+    """A set's sheets with ϑ(φ) at the diagrams' μ_φ after Table 1 and the notes on the table's sheet,
+    the table's rows as low as TABLE_SIZES and 6 mm allow (review 11, mark 16: on the A3 set's sheet of
+    the phase diagram and the profile ϑ(φ) has room only at 2 °/mm, beside the diagrams' 1 °/mm). None
+    where it would take a sheet more."""
+    if laid is None:
+        return None
+    lines = notes(doc, lang, cam)
+    w = region[2] - region[0] - 2 * GAP
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4):
+        leaf = pressure_leaf(sol, g, lang, w, min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part, True)
+        if leaf is None:
+            continue
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+            tab = Leaf("table", record=positions_table(doc, lang, row, size))
+            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+            again = flow([leaves, [tab, nts, leaf]], region, keep, later=later)
+            if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
+                return again
+    return None
+
+
+def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None,
+                      same: bool = True):
     """A set's sheets with the pressure angle's diagram ϑ(φ) under the phase diagram, beside the
     profile, and Table 1 drawn as large as the sheet after them takes (TABLE_SIZES) with the notes:
     the phase diagram and the profile — the profile at the largest standard scale that fits the
@@ -694,7 +772,7 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         return None
     lines = notes(doc, lang, cam)
     for part in (1.0, 0.9, 0.8, 0.7, 0.6):
-        leaf = pressure_leaf(sol, g, lang, w, h * part)
+        leaf = pressure_leaf(sol, g, lang, w, h * part, same)
         if leaf is None:
             continue
         drawings = [leaves[0], Stack([phase, leaf]), profile]
@@ -710,6 +788,49 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     return None
 
 
+PHASE_ENLARGED = (5.0, 4.0, 2.5, 2.0)      # GOST 2.302's enlarging scales 5:1 … 2:1
+
+
+def _phase_enlarged(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
+    """A rocking follower's phase diagram (drawn at the profile's μ_l) at the largest enlarging scale
+    that keeps the A1 sheet's layout — one sheet, the notes under the phase diagram (review 11, mark
+    16: at 1:1 it was 120 × 65 mm beside 300 mm of blank, its numbers, R_0 and [ϑ] crowded by O).
+    ``as_is``: the leaves, table, notes, doc and layout at μ_l, returned with ``g`` where none fits."""
+    import dataclasses
+    if not sol.cam.rocking:
+        return (g, *as_is)
+    for k in PHASE_ENLARGED:
+        g2 = dataclasses.replace(g, mu_phase=g.mu_l / k)
+        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang)
+        laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))
+        if _one_sheet(laid) and _in_hole({leaf.name: b for leaf, b in laid[0]}):
+            return g2, leaves, tab, nts, doc, laid
+    return (g, *as_is)
+
+
+def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
+    """A set's rocking phase diagram at the largest enlarging scale that keeps the set's sheets and
+    leaves it on the profile's sheet (review 11: ≈ 45 mm at 1:2 on the A3 set, illegible)."""
+    import dataclasses
+    laid = as_is[-1]
+    if not sol.cam.rocking or laid is None:
+        return (g, *as_is)
+    for k in PHASE_ENLARGED:
+        g2 = dataclasses.replace(g, mu_phase=g.mu_l / k)
+        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True)
+        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
+        if (again is not None and len(again) == len(laid)
+                and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
+            return g2, leaves, tab, nts, doc, again
+    return (g, *as_is)
+
+
+def _names(node) -> set[str]:
+    """The names of the leaves in a layout node (a Leaf, or a Stack of them)."""
+    kids = getattr(node, "children", None)
+    return set().union(*map(_names, kids)) if kids is not None else {getattr(node, "name", "")}
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -721,20 +842,28 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
     laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
     if f.name == "A1" and _one_sheet(laid):
+        g, leaves, tab, nts, doc, laid = _phase_enlarged(sol, g, f, lang, (leaves, tab, nts, doc, laid))
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
-        laid = with_pressure(laid, sol, g, lang)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        laid = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f))
-                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
+        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
+        for same in (True, False):     # ϑ(φ) at the diagrams' μ_φ where a sheet has room for it
+            again = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), same)
+                     or (pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f))
+                         if same else None)
+                     or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), same))
+            if again is not None and any("pressure" in _names(leaf) for page in again for leaf, _ in page):
+                laid = again
+                break
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
     def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
         return (at_top if f.name == "A1" and leaf.name in ("profile", "diagrams") else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None
-              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None))]
+              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None),
+                             getattr(leaf.record, "theta_at", None))]
              for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
