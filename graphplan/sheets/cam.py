@@ -155,7 +155,7 @@ def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False, p
     if rocking:
         dy = left.bounds()[3] - right.bounds()[3]
     dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
-    out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
+    out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(left.scales))
     out.scales.update(phase.scales)
     out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
     out.parts = len(left.items)                                          # see apart()
@@ -171,7 +171,8 @@ def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at
     ``rec``'s items are the diagrams' (beside)."""
     if name == "diagrams" and theta_at is not None:      # ϑ(φ) under the diagrams (with_theta): its own box
         end = len(rec.items) if n is None else n
-        theta = Record("pressure angle", rec.items[theta_at:end], {})
+        theta = Record("pressure angle", rec.items[theta_at:end],
+                       {k: rec.scales[k] for k in ("mu_phi", "mu_theta") if k in rec.scales})
         rest = Record(rec.title, rec.items[:theta_at] + rec.items[end:], dict(rec.scales))
         tb = theta.bounds()
         below = (tb[0] - GAP / 2, tb[1] - GAP / 2, tb[2] + GAP / 2, tb[3] + GAP / 2)
@@ -729,11 +730,11 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
 
 
 def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
-                      later=None) -> list | None:
-    """A set's sheets with ϑ(φ) at the diagrams' μ_φ after Table 1 and the notes on the table's sheet,
-    the table's rows as low as TABLE_SIZES and 6 mm allow (review 11, mark 16: on the A3 set's sheet of
-    the phase diagram and the profile ϑ(φ) has room only at 2 °/mm, beside the diagrams' 1 °/mm). None
-    where it would take a sheet more."""
+                      later=None, most: int | None = None) -> list | None:
+    """A set's sheets with ϑ(φ) at the diagrams' μ_φ across the sheet under the phase diagram and the
+    profile, else after Table 1 and the notes on the table's sheet, the table's rows as low as
+    TABLE_SIZES and 6 mm allow (review 11, mark 16: beside the profile ϑ(φ) had room only at 2 °/mm,
+    beside the diagrams' 1 °/mm). None where it would take more sheets than ``most`` (the set's own)."""
     if laid is None:
         return None
     lines = notes(doc, lang, cam)
@@ -745,9 +746,10 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         for size, row in TABLE_SIZES + ((2.5, 6.0),):
             tab = Leaf("table", record=positions_table(doc, lang, row, size))
             nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
-            again = flow([leaves, [tab, nts, leaf]], region, keep, later=later)
-            if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
-                return again
+            for again in (kept_together(leaves + [leaf], tab, lines, nts, region, keep, later),  # under the profile
+                          flow([leaves, [tab, nts, leaf]], region, keep, later=later)):          # after the table
+                if again is not None and len(again) <= (most or len(laid)) and not notes_alone(again[-1]):
+                    return again
     return None
 
 
@@ -848,14 +850,17 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
         g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
-        for same in (True, False):     # ϑ(φ) at the diagrams' μ_φ where a sheet has room for it
-            again = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), same)
-                     or (pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f))
-                         if same else None)
-                     or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), same))
-            if again is not None and any("pressure" in _names(leaf) for page in again for leaf, _ in page):
-                laid = again
-                break
+        # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
+        def placed(t) -> bool:
+            return t is not None and any("pressure" in _names(leaf) for pg in t for leaf, _ in pg)
+        own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
+               or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
+        most = len(own) if placed(own) else len(laid)
+        same = [t for t in (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+                            pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
+                            set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
+                if placed(t) and len(t) <= most]
+        laid = same[0] if same else (own if placed(own) else laid)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
