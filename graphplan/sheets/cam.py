@@ -707,25 +707,6 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
 PRESSURE_ROOM = (120.0, 50.0)    # mm: the least room (width, height) the pressure angle's diagram takes (ϑ at 2.5 °/mm at most over ±50°)
 
 
-def with_pressure(laid, sol, g, lang: str):
-    """The A1 sheet's layout with the pressure angle's diagram ϑ(φ) (drawing.cam.pressure_diagram) in
-    the room the notes leave under the phase diagram, at the finest standard μ_ϑ that fits it
-    (review 4, item 19; issue 32, item 1: that room stood blank, the sheet 40 % empty), when the
-    room is at least PRESSURE_ROOM; else ``laid`` as it is."""
-    boxes = {leaf.name: b for leaf, b in laid[0]}
-    if not {"diagrams", "notes"} <= set(boxes):
-        return laid
-    if not _in_hole(boxes):
-        return laid
-    d, nb = boxes["diagrams"], boxes["notes"]
-    room = (nb[0], d[1], d[2], nb[1] - GAP)
-    w, h = room[2] - room[0], room[3] - room[1]
-    if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
-        return laid
-    leaf = pressure_leaf(sol, g, lang, w, h)
-    return laid if leaf is None else [laid[0] + [(leaf, room)]] + laid[1:]
-
-
 def pressure_leaf(sol, g, lang: str, w: float, h: float, same: bool = True) -> Leaf | None:
     """The pressure angle's diagram captioned, at the finest standard μ_ϑ that puts it in ``w`` × ``h``
     mm (None when none of the trials does): ``same``, at the diagrams' μ_φ (review 11, mark 16: its
