@@ -93,10 +93,13 @@ def test_the_knife_edge_cams_a1_sheet_is_filled_and_its_pressure_diagram_draws_t
 @pytest.mark.parametrize("scene", ["examples/cam_translating.toml", "examples/cam_rocking.toml", "CAM_TR", "CAM_KN"])
 def test_every_test_scenes_a1_cam_sheet_is_filled(tmp_path, scene, lang):
     """The examples (translating roller, rocking) and the reviews' scenes (counter-clockwise roller
-    with the trapezoidal law, clockwise knife-edge), both languages: under 36 % of the cells empty
-    (44–47 % before), nothing a teacher sends back."""
+    with the trapezoidal law, clockwise knife-edge), both languages: under 37 % of the cells empty
+    (44–47 % before; under 36 % until ϑ(φ) took the diagrams' μ_φ — review 11, mark 16 —, for which
+    the diagrams go a step coarser along φ, 0,025 rad/mm for 0,02, to leave it room under the notes:
+    36.2 and 36.6 % for the translating example in English and CAM_KN in Ukrainian), nothing a
+    teacher sends back."""
     text = {"CAM_TR": CAM_TR, "CAM_KN": CAM_KN}.get(scene, ROOT / scene)
     sheet = _sheet(tmp_path, text, lang)
     assert defects(sheet) == []
     share, _ = empty_share(sheet)
-    assert share < 0.36, share
+    assert share < 0.37, share
