@@ -32,7 +32,8 @@ def test_the_knife_edge_cams_a1_sheet_is_filled_and_its_pressure_diagram_draws_t
     """The reviewer's clockwise knife-edge cam (offset −6 mm): at most 37 % of the field's cells
     empty (45 % before; 30.5 % measured, 33.5 % since ϑ(φ) takes a series 2 °/mm, 36.4 % since the
     diagrams take a series μ_φ = 0,02 rad/mm, 18 mm shorter than at 0,0187), nothing a teacher sends back, the five drawings and the
-    table on one sheet; on the pressure angle's diagram each division's ordinate is Table 1's
+    table on one sheet; ϑ(φ) at the diagrams' μ_φ (review 11, mark 16: at its own 2.5 °/mm its
+    divisions did not line up with theirs); on the pressure angle's diagram each division's ordinate is Table 1's
     «ϑ гр.» at the diagram's μ_ϑ, each phase's band ±[ϑ] spans that phase, and the exact curve
     reaches the phase's largest pressure angle the notes print (within a sampling step)."""
     from graphplan.exact.cam import solve
@@ -48,6 +49,14 @@ def test_the_knife_edge_cams_a1_sheet_is_filled_and_its_pressure_diagram_draws_t
     mu_phi, mu_t = rec.scales["mu_phi"], rec.scales["mu_theta"]
     axis = next(q for q in rec.items if q.step == "axis ϑ")
     x0, y0 = axis.points[0]
+    dia = placed["diagrams"]
+    assert mu_phi == dia.scales["mu_phi"]
+    # the abscissas as long from the ordinate axis: a division of ϑ(φ) as far from its origin as the
+    # diagrams' (ϑ(φ) under the notes, beside the phase diagram, in the room the sizing kept for it)
+    lengths = {round(next(q for q in dia.items if q.step == f"axis {key}").points[1][0]
+                     - next(q for q in dia.items if q.step == f"ordinate {key}").points[0][0], 6) for key in "sva"}
+    assert lengths == {round(axis.points[1][0] - x0, 6)}
+    assert rec.bounds()[3] <= placed["notes"].bounds()[1] and rec.bounds()[0] >= dia.bounds()[2]
     path = tmp_path / "cam.toml"
     cam = load(path)
     sol = solve(cam)
@@ -84,10 +93,13 @@ def test_the_knife_edge_cams_a1_sheet_is_filled_and_its_pressure_diagram_draws_t
 @pytest.mark.parametrize("scene", ["examples/cam_translating.toml", "examples/cam_rocking.toml", "CAM_TR", "CAM_KN"])
 def test_every_test_scenes_a1_cam_sheet_is_filled(tmp_path, scene, lang):
     """The examples (translating roller, rocking) and the reviews' scenes (counter-clockwise roller
-    with the trapezoidal law, clockwise knife-edge), both languages: under 36 % of the cells empty
-    (44–47 % before), nothing a teacher sends back."""
+    with the trapezoidal law, clockwise knife-edge), both languages: under 37 % of the cells empty
+    (44–47 % before; under 36 % until ϑ(φ) took the diagrams' μ_φ — review 11, mark 16 —, for which
+    the diagrams go a step coarser along φ, 0,025 rad/mm for 0,02, to leave it room under the notes:
+    36.2 and 36.6 % for the translating example in English and CAM_KN in Ukrainian), nothing a
+    teacher sends back."""
     text = {"CAM_TR": CAM_TR, "CAM_KN": CAM_KN}.get(scene, ROOT / scene)
     sheet = _sheet(tmp_path, text, lang)
     assert defects(sheet) == []
     share, _ = empty_share(sheet)
-    assert share < 0.36, share
+    assert share < 0.37, share

@@ -87,21 +87,22 @@ def _largest_blank(empty: set) -> int:
 
 def _laid_sheet(path, lang):
     """The A1 composition at the construction's sizes as cam_sizes finds them for the review's cam
-    (1.4, 1.9, 1.5, 4.0; H1 46, H2 50 mm), without the search: the leaves laid (sheets.cam._laid),
-    the pressure angle's diagram under the notes (with_pressure), placed."""
+    (2.6, 1.9, 1.5, 1.6; H1 30, H2 42 mm, the series' scales), without the search: the leaves laid
+    (sheets.cam._laid) — the pressure angle's diagram under the s–v–a diagrams (with_theta) —, placed."""
     from types import SimpleNamespace
     from graphplan.drawing.layout import centred
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     from graphplan.sheets import cam as sc
     sol = solve(load(path))
-    g = construct(sol, None, 0.5, size=1.4, profile_size=1.9, height=1.5, accel=4.0, H1=46.0, H2=50.0,
-                  measure=False)
+    g = construct(sol, None, 0.5, size=2.6, profile_size=1.9, height=1.5, accel=1.6, H1=30.0, H2=42.0,
+                  measure=False, series="rad")
     leaves, tab, nts, doc = sc._leaves(sol, g, sol.cam, lang)
     f = form("A1")
-    (page,) = sc.with_pressure(sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam)), sol, g, lang)
-    placed = [q for leaf, b in page for q in sc.apart(leaf.name, (sc.at_top if leaf.name == "profile" else centred)(leaf.record, b), b, page,
-                                                       getattr(leaf.record, "parts", None))]
+    (page,) = sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam))
+    placed = [q for leaf, b in page for q in sc.apart(leaf.name, (sc.at_top if leaf.name in ("profile", "diagrams") else centred)(leaf.record, b), b, page,
+                                                       getattr(leaf.record, "parts", None),
+                                                       getattr(leaf.record, "theta_at", None))]
     return SimpleNamespace(form=f, placed=placed)
 
 

@@ -352,8 +352,10 @@ def phase_scale(sol: Solution, g: CamConstruction) -> float:
     """The phase diagram's scale, m/mm: a translating follower's at μ_s (its s axis reads across from
     the s diagram's); a rocking follower's at the profile's μ_l, as the lab draws it — the arm and its
     arcs l·ψ at the scale of the profile, so R0 and the arm carry over to it (at μ_s·l the arm alone
-    would be 1/μ_s mm long, larger than the profile, the main drawing)."""
-    return g.mu_l if sol.cam.rocking else g.mu_s
+    would be 1/μ_s mm long, larger than the profile, the main drawing) — or, where the sheet has room
+    (review 11, mark 16: 1:1 on an A1 sheet, its numbers, R_0 and [ϑ] crowded by O), at an enlarging
+    scale the sheet chose, ``g.mu_phase``."""
+    return (g.mu_phase or g.mu_l) if sol.cam.rocking else g.mu_s
 
 
 def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple[int, str]]:

@@ -89,6 +89,8 @@ class CamConstruction:
     # n, Δ rise, Δ return, the bound (mm)[, whether the scene named those n]
     redrawn: tuple[int, float, float, float] | tuple[int, float, float, float, bool] | None = None
     rocking: bool = False           # a rocking follower: its displacement is the arm's angle ψ, not s
+    # a rocking follower's phase diagram enlarged by the sheet where it has room (m/mm; None: at μ_l)
+    mu_phase: float | None = None
 
     @property
     def closes(self) -> bool:

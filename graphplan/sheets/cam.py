@@ -96,8 +96,10 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     num_ = lambda x: num(x, lang, 4)                                             # noqa: E731
     first = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_1 = {num_(g.H1)} {mm}, H_2 = {num_(g.H2)} {mm}"
     if cam.rocking:
-        phase = (f"{scale_text('mu_l', g.mu_l, True, lang)} "
-                 + ("(коромисло і дуги l·ψ)" if lang == "uk" else "(the arm and the arcs l·ψ)"))
+        mu_ph = g.mu_phase or g.mu_l
+        phase = (f"{scale_text('mu_l', mu_ph, True, lang)} "
+                 + ("(коромисло і дуги l·ψ" if lang == "uk" else "(the arm and the arcs l·ψ")
+                 + (f", M {drawing_scale(mu_ph, lang)})" if g.mu_phase else ")"))
     else:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
@@ -106,14 +108,50 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
             "profile": (w["profile"], profile)}
 
 
-def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False) -> Record:
+PRESSURE_PART = 0.6     # ϑ(φ)'s span (its curve and the bands ±[ϑ]) at most this part of the stroke drawn
+
+
+def pressure_below(sol, g, lang: str, mu_theta: float | None = None) -> Record:
+    """The pressure angle's diagram ϑ(φ) captioned, at the diagrams' μ_φ (review 11, mark 16: drawn
+    at its own 2.5 °/mm beside the diagrams' 0.79 °/mm, its divisions did not line up with theirs),
+    its φ origin at theirs (x = 0 in both records), ϑ at the finest standard μ_ϑ whose span is at most
+    PRESSURE_PART of the stroke drawn (so it grows and shrinks with the diagrams the sizing tries), or
+    at ``mu_theta`` (°/mm)."""
+    import numpy as np
+
+    from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
+    mm = "мм" if lang == "uk" else "mm"
+    stroke = float(np.max(np.abs(g.s_mm))) if len(g.s_mm) else 40.0
+    _, mu_t = pressure_scales(sol, 240.0, PRESSURE_PART * stroke + 18.0)     # 18 mm: pressure_scales' letters
+    mu_t = mu_theta or mu_t
+    second = f"{scale_text('mu_phi', g.mu_phi, sol.cam.rocking, lang)}; μ_ϑ = {num(mu_t, lang, 4)} °/{mm}"
+    return captioned(pressure_diagram(sol, g, lang, g.mu_phi, mu_t), PRESSURE_NAMES[lang], second)
+
+
+def with_theta(diagrams: Record, pressure: Record | None, flush: bool = False) -> Record:
+    """The captioned diagrams with ϑ(φ) (pressure_below, captioned) under them, a GAP clear, their φ
+    origins on one vertical (the same μ_φ: a division reads straight down); ``flush``: ϑ(φ)'s left
+    edge at the record's (the notes with ϑ(φ) under them); ``theta_at``: the index of ϑ(φ)'s first
+    item (apart places it as its own drawing)."""
+    if pressure is None:
+        return diagrams
+    dy = diagrams.bounds()[1] - GAP - pressure.bounds()[3]
+    dx = diagrams.bounds()[0] - pressure.bounds()[0] if flush else 0.0
+    out = Record(diagrams.title, list(diagrams.items) + pressure.moved(dx, dy).items, dict(diagrams.scales))
+    out.scales.update({k: v for k, v in pressure.scales.items() if k not in out.scales})   # the same μ_φ
+    out.theta_at = len(diagrams.items)
+    return out
+
+
+def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False, pressure: Record | None = None
+           ) -> Record:
     """The diagrams and, to their right, the phase diagram at the same height — its s axis lined up
     with the s diagram's (both at μ_s: the point C0 of s = 0 level with the s diagram's φ axis, so a
     value of s reads straight across) —, each with its caption: one drawing on the sheet. A rocking
     follower's phase diagram is drawn at the profile's μ_l (drawing.cam.phase_scale), not at μ_ψ: no
     value reads across, and it stands level with the diagrams' top, the room under it (hole) to the
     notes and the pressure angle's diagram (it hung from the ψ axis over a blank 100 mm high)."""
-    left = captioned(diagrams, *caps["diagrams"])
+    left = with_theta(captioned(diagrams, *caps["diagrams"]), pressure)
     right = captioned(phase, *caps["phase"])
     axis = next(q for q in diagrams.items if q.step == "axis s")
     start = next(q for q in phase.items if q.step == "R0")
@@ -121,18 +159,31 @@ def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False) -
     if rocking:
         dy = left.bounds()[3] - right.bounds()[3]
     dx = left.bounds()[2] + 2 * GAP - right.bounds()[0]
-    out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(diagrams.scales))
+    out = Record("cam diagrams", list(left.items) + right.moved(dx, dy).items, dict(left.scales))
     out.scales.update(phase.scales)
     out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
     out.parts = len(left.items)                                          # see apart()
+    out.theta_at = getattr(left, "theta_at", None)
     return out
 
 
-def apart(name: str, rec: Record, box: Box, page, n: int | None = None) -> list[Placed]:
+def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at: int | None = None
+          ) -> list[Placed]:
     """A placed leaf; the diagrams with a leaf laid in the room under their phase diagram (hole) as
     two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
     boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
     ``rec``'s items are the diagrams' (beside)."""
+    if name in ("diagrams", "notes") and theta_at is not None:    # ϑ(φ) under them (with_theta): its own box
+        end = len(rec.items) if n is None else n
+        theta = Record("pressure angle", rec.items[theta_at:end],
+                       {k: rec.scales[k] for k in ("mu_phi", "mu_theta") if k in rec.scales})
+        rest = Record(rec.title, rec.items[:theta_at] + rec.items[end:], dict(rec.scales))
+        tb = theta.bounds()
+        below = (tb[0] - GAP / 2, tb[1] - GAP / 2, tb[2] + GAP / 2, tb[3] + GAP / 2)
+        parts = apart(name, rest, box, page, None if n is None else theta_at)
+        b0 = parts[0].box
+        parts[0] = Placed(name, parts[0].record, (b0[0], max(b0[1], below[3]), b0[2], b0[3]))
+        return parts + [Placed("pressure", theta, below)]
     inside = [b for other, b in page if other.name != name and box[0] <= b[0] and b[2] <= box[2]
               and box[1] <= b[1] and b[3] <= box[3]]
     if name != "diagrams" or n is None or not inside:
@@ -165,10 +216,11 @@ def hole(dia: Leaf, box: Box) -> Box | None:
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
-def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False
+def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False, column: bool = True
             ) -> tuple[list[Leaf], Leaf, Leaf, dict]:
     """The captioned drawings (none when ``drawn`` is {}): the diagrams with the phase diagram beside
-    them (``split``, a set of sheets: each on its own), the profile; the table and the notes."""
+    them (``split``, a set of sheets: each on its own) — ``column``: ϑ(φ) under the diagrams —, the
+    profile; the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
     drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
@@ -176,7 +228,8 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     if drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
     elif drawn:
-        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking)),
+        leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
+                                                 pressure_below(sol, g, lang) if column else None)),
                   Leaf("profile", record=captioned(drawn["profile"], *caps["profile"]))]
     tab = Leaf("table", record=positions_table(doc, lang))
     table_w = tab.record.bounds()[2] - tab.record.bounds()[0]
@@ -227,24 +280,51 @@ def _notes_under(dia: Leaf, prof: Leaf, tab: Leaf, notes_at, left: Box, right: B
     if room is None or room[2] - room[0] < 120.0:
         return None
     nts = notes_at(room[2] - room[0])
-    if nts.h > room[3] - room[1] + 1e-9 or tab.h + GAP + prof.h > right[3] - right[1] + 1e-9:
+    if nts.h > room[3] - room[1] + 1e-9 or nts.w > room[2] - room[0] + 1e-9 or tab.h + GAP + prof.h > right[3] - right[1] + 1e-9:
         return None
     tb = (right[0], right[1], right[0] + tab.w, right[1] + tab.h)
     nb = (room[0], room[3] - nts.h, room[0] + nts.w, room[3])
     return [[(dia, left), (prof, (right[0], tb[3] + GAP, right[2], right[3])), (tab, tb), (nts, nb)]]
 
 
-def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None):
-    """The notes' leaf wrapped to a width (columns), remembered by the width to 1 mm."""
+def _notes_at(doc: dict, lang: str, cam: Cam, memo: dict | None = None, theta: Record | None = None):
+    """The notes' leaf wrapped to a width (columns), remembered by the width to 1 mm; with ``theta``
+    (pressure_below) ϑ(φ) under them (with_theta: one leaf, placed as two drawings)."""
     memo = {} if memo is None else memo
     lines = notes(doc, lang, cam)
 
     def at(width: float) -> Leaf:
-        key = (lang, math.floor(width + 1e-9))      # never wider than asked (the box holds it)
+        key = (lang, math.floor(width + 1e-9), id(theta))      # never wider than asked (the box holds it)
         if key not in memo:
-            memo[key] = Leaf("notes", record=note_block(lines, float(key[1])))
+            memo[key] = Leaf("notes", record=with_theta(note_block(lines, float(key[1])), theta, flush=True))
         return memo[key]
     return at
+
+
+def _theta_in_hole(laid) -> bool:
+    """Whether a laid-out A1 sheet has ϑ(φ) with the notes in the room under the phase diagram."""
+    if not _one_sheet(laid):
+        return False
+    boxes = {leaf.name: b for leaf, b in laid[0]}
+    notes_ = next((leaf for leaf, _ in laid[0] if leaf.name == "notes"), None)
+    return (notes_ is not None and getattr(notes_.record, "theta_at", None) is not None
+            and {"diagrams", "notes"} <= set(boxes) and _in_hole(boxes))
+
+
+def _arranged(sol, g, cam: Cam, lang: str, f: Form, hole: bool = True) -> tuple:
+    """(leaves, table, notes, doc, layout, notes_at) of the sheet: on A1 ϑ(φ) at the diagrams' μ_φ
+    under the notes in the room under the phase diagram where it fits there (``hole``; the room stood
+    blank with ϑ(φ) under the diagrams: review 11's A1 46 % empty); else under the diagrams, their φ
+    origins on one vertical (with_theta)."""
+    if hole and f.name == "A1":
+        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, column=False)
+        notes_at = _notes_at(doc, lang, cam, theta=pressure_below(sol, g, lang))
+        laid = _laid(f, leaves, tab, nts, notes_at)
+        if _theta_in_hole(laid):
+            return leaves, tab, nts, doc, laid, notes_at
+    leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
+    notes_at = _notes_at(doc, lang, cam)
+    return leaves, tab, nts, doc, _laid(f, leaves, tab, nts, notes_at), notes_at
 
 
 def _laid(f: Form, leaves: list[Leaf], tab: Leaf, nts: Leaf, notes_at=None):
@@ -290,16 +370,31 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
             memo[(name, key)] = draw(sol, g, "en")   # the longer phase names
         return memo[(name, key)]
 
+    hole = [f.name == "A1"]                # ϑ(φ) under the notes (_arranged) while the sizes allow it
+
+    def theta(g, lang):
+        if ("pressure", g.mu_phi, g.mu_s, lang) not in memo:
+            memo[("pressure", g.mu_phi, g.mu_s, lang)] = pressure_below(sol, g, lang)
+        return memo[("pressure", g.mu_phi, g.mu_s, lang)]
+
     def leaf(name, key, g, lang):
-        if (name, key, lang) not in memo:
+        column = not hole[0]
+        if (name, key, lang, column) not in memo:
             caps = _captions(g, sol.cam, lang)
             if name == "diagrams":
                 rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g),
-                             caps, sol.cam.rocking)
+                             caps, sol.cam.rocking, theta(g, lang) if column else None)
             else:
                 rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
-            memo[(name, key, lang)] = Leaf(name, record=rec)
-        return memo[(name, key, lang)]
+            memo[(name, key, lang, column)] = Leaf(name, record=rec)
+        return memo[(name, key, lang, column)]
+
+    def notes_at(g, lang):
+        if not hole[0]:
+            return wrapped[lang]
+        if ("notes", g.mu_phi, g.mu_s, lang) not in memo:
+            memo[("notes", g.mu_phi, g.mu_s, lang)] = _notes_at(docs[lang], lang, sol.cam, theta=theta(g, lang))
+        return memo[("notes", g.mu_phi, g.mu_s, lang)]
 
     def fits(size: float, prof: float, height: float, accel: float | None = None, largest: bool = False,
              poles: tuple = (None, None)) -> bool:
@@ -308,21 +403,26 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         for lang in ("uk", "en"):
             leaves = [leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, lang),
                       leaf("profile", (g.mu_l,), g, lang)]
-            if not _one_sheet(_laid(f, leaves, *fixed_[lang], wrapped[lang])):
+            laid = _laid(f, leaves, *fixed_[lang], notes_at(g, lang))
+            if not (_theta_in_hole(laid) if hole[0] else _one_sheet(laid)):
                 return False
         if largest and f.name == "A1":     # the columns give the phase diagram room to outgrow the profile: it may not
             return _profile_largest(drawing("profile", profile_drawing, (g.mu_l,), g).bounds(),
                                     drawing("phase", phase_diagram, (g.mu_s, g.mu_l), g).bounds())
         return True
     g0 = construct(sol, n, precision, measure=False, series="rad")
+    docs: dict = {}
     for lang in ("uk", "en"):              # the table and the notes alone higher than the field: a set
         _, tab, nts, doc = _leaves(sol, g0, sol.cam, lang, {})
         fixed_[lang] = [Leaf("table", *extent(tab)), Leaf("notes", *extent(nts))]
         tables[lang] = [Leaf("table", *extent(Leaf("table", record=positions_table(doc, lang, row, size))))
                         for size, row in TABLE_SIZES]
         wrapped[lang] = _notes_at(doc, lang, sol.cam)
+        docs[lang] = doc
         if max(leaf.h for leaf in fixed_[lang]) > region[3] - region[1]:
             return set_sizes(sol, f, n, precision)
+    if hole[0] and not fits(1.0, 1.0, 1.0):
+        hole[0] = False                    # no room for ϑ(φ) under the notes: under the diagrams
     if not fits(1.0, 1.0, 1.0):
         return set_sizes(sol, f, n, precision)
     k = _largest(lambda x: fits(x, x, x), list(SIZES)) or 1.0
@@ -348,8 +448,7 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=h1, H2=h2,
                   series="rad")
     for lang in ("uk", "en"):
-        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
-        if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
+        if not _one_sheet(_arranged(sol, g, sol.cam, lang, f, hole[0])[4]):
             return set_sizes(sol, f, n, precision)
     return k, kp, kh, ka, h1, h2, "rad"
 
@@ -533,8 +632,7 @@ def _one_sheet_still(sol, f: Form, g) -> bool:
     """Whether the drawings at ``g``'s scales with the table of ``g``'s divisions still share one sheet
     of ``f`` in both languages (a redrawing's longer table may not leave them room)."""
     for lang in ("uk", "en"):
-        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang)
-        if not _one_sheet(_laid(f, leaves, tab, nts, _notes_at(doc, lang, sol.cam))):
+        if not _one_sheet(_arranged(sol, g, sol.cam, lang, f)[4]):
             return False
     return True
 
@@ -583,7 +681,7 @@ def _in_hole(boxes: dict) -> bool:
     return d[0] < nb[0] and nb[2] <= d[2] + 1e-9 and d[1] <= nb[1]
 
 
-def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form):
+def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form, notes_at=None):
     """The A1 sheet's layout with Table 1 drawn larger (TABLE_SIZES: its lettering 3.5 mm, its rows
     10 mm, down to 2.5 mm letters in rows of TABLE_ROW mm) when that leaves the drawings and the notes
     where they were and the profile its room — the column under the profile otherwise stands part
@@ -593,7 +691,7 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
     for size, row in TABLE_SIZES:
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
-        again = _laid(f, leaves, tall, nts, _notes_at(doc, lang, cam))
+        again = _laid(f, leaves, tall, nts, notes_at or _notes_at(doc, lang, cam))
         if not _one_sheet(again):
             continue
         after = {leaf.name: b for leaf, b in again[0] if leaf.name in ("diagrams", "notes")}
@@ -609,32 +707,17 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
 PRESSURE_ROOM = (120.0, 50.0)    # mm: the least room (width, height) the pressure angle's diagram takes (ϑ at 2.5 °/mm at most over ±50°)
 
 
-def with_pressure(laid, sol, g, lang: str):
-    """The A1 sheet's layout with the pressure angle's diagram ϑ(φ) (drawing.cam.pressure_diagram) in
-    the room the notes leave under the phase diagram, at the finest standard μ_ϑ that fits it
-    (review 4, item 19; issue 32, item 1: that room stood blank, the sheet 40 % empty), when the
-    room is at least PRESSURE_ROOM; else ``laid`` as it is."""
-    boxes = {leaf.name: b for leaf, b in laid[0]}
-    if not {"diagrams", "notes"} <= set(boxes):
-        return laid
-    if not _in_hole(boxes):
-        return laid
-    d, nb = boxes["diagrams"], boxes["notes"]
-    room = (nb[0], d[1], d[2], nb[1] - GAP)
-    w, h = room[2] - room[0], room[3] - room[1]
-    if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
-        return laid
-    leaf = pressure_leaf(sol, g, lang, w, h)
-    return laid if leaf is None else [laid[0] + [(leaf, room)]] + laid[1:]
-
-
-def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
+def pressure_leaf(sol, g, lang: str, w: float, h: float, same: bool = True) -> Leaf | None:
     """The pressure angle's diagram captioned, at the finest standard μ_ϑ that puts it in ``w`` × ``h``
-    mm (None when none of the trials does)."""
+    mm (None when none of the trials does): ``same``, at the diagrams' μ_φ (review 11, mark 16: its
+    divisions line up with theirs); else at the standard μ_φ that fits ``w`` (a set whose sheets have
+    no room as wide as the diagrams' abscissa)."""
     from graphplan.drawing.cam import PRESSURE_NAMES, pressure_diagram, pressure_scales
     mm = "мм" if lang == "uk" else "mm"
     for shrink in (1.0, 0.9, 0.8, 0.7):
         mu_phi, mu_t = pressure_scales(sol, w * shrink, h * shrink)
+        if same:
+            mu_phi = g.mu_phi
         second = (f"{scale_text('mu_phi', mu_phi, sol.cam.rocking, lang)}; "
                   f"μ_ϑ = {num(mu_t, lang, 4)} °/{mm}")
         leaf = Leaf("pressure", record=captioned(pressure_diagram(sol, g, lang, mu_phi, mu_t),
@@ -647,7 +730,8 @@ def pressure_leaf(sol, g, lang: str, w: float, h: float) -> Leaf | None:
 SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
 
 
-def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None):
+def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None,
+                      same: bool = True):
     """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
     on the sheets there are (no further sheet for it): the table's sheet of an A2 or A3 set stands
     mostly blank. Else ``laid`` as it is."""
@@ -664,7 +748,7 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     for w in (region[2] - region[0] - 2 * GAP, SET_PRESSURE[0], 180.0, 150.0):
         for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5, 0.45, 0.4):
             h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
-            leaf = pressure_leaf(sol, g, lang, w, h)
+            leaf = pressure_leaf(sol, g, lang, w, h, same)
             if leaf is None or (round(leaf.h), leaf.w) <= area:
                 continue
             again = flow([leaves, last + [leaf]], region, keep, later=later)
@@ -674,7 +758,32 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     return best
 
 
-def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None):
+def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
+                      later=None, most: int | None = None) -> list | None:
+    """A set's sheets with ϑ(φ) at the diagrams' μ_φ across the sheet under the phase diagram and the
+    profile, else after Table 1 and the notes on the table's sheet, the table's rows as low as
+    TABLE_SIZES and 6 mm allow (review 11, mark 16: beside the profile ϑ(φ) had room only at 2 °/mm,
+    beside the diagrams' 1 °/mm). None where it would take more sheets than ``most`` (the set's own)."""
+    if laid is None:
+        return None
+    lines = notes(doc, lang, cam)
+    w = region[2] - region[0] - 2 * GAP
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4):
+        leaf = pressure_leaf(sol, g, lang, w, min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part, True)
+        if leaf is None:
+            continue
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+            tab = Leaf("table", record=positions_table(doc, lang, row, size))
+            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+            for again in (kept_together(leaves + [leaf], tab, lines, nts, region, keep, later),  # under the profile
+                          flow([leaves, [tab, nts, leaf]], region, keep, later=later)):          # after the table
+                if again is not None and len(again) <= (most or len(laid)) and not notes_alone(again[-1]):
+                    return again
+    return None
+
+
+def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None,
+                      same: bool = True):
     """A set's sheets with the pressure angle's diagram ϑ(φ) under the phase diagram, beside the
     profile, and Table 1 drawn as large as the sheet after them takes (TABLE_SIZES) with the notes:
     the phase diagram and the profile — the profile at the largest standard scale that fits the
@@ -694,7 +803,7 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         return None
     lines = notes(doc, lang, cam)
     for part in (1.0, 0.9, 0.8, 0.7, 0.6):
-        leaf = pressure_leaf(sol, g, lang, w, h * part)
+        leaf = pressure_leaf(sol, g, lang, w, h * part, same)
         if leaf is None:
             continue
         drawings = [leaves[0], Stack([phase, leaf]), profile]
@@ -710,6 +819,79 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     return None
 
 
+PHASE_SCALES = (0.0002, 0.00025, 0.0004, 0.0005, 0.001, 0.002, 0.0025, 0.004)   # m/mm: GOST 2.302's 5:1 … 1:4
+
+
+def _phase_scales(sol, g, lang: str):
+    """The rocking phase diagram's scales finer than the profile's μ_l, the finest first, at which the
+    profile stays the sheet's largest drawing (LAYOUT.md's cam sheet; _profile_largest)."""
+    import dataclasses
+
+    from graphplan.drawing.cam import phase_diagram, profile_drawing
+    if not sol.cam.rocking:
+        return
+    prof = profile_drawing(sol, g, lang).bounds()
+    for mu in PHASE_SCALES:
+        if mu < g.mu_l * (1 - 1e-9):
+            g2 = dataclasses.replace(g, mu_phase=mu)
+            if _profile_largest(prof, phase_diagram(sol, g2, lang).bounds()):
+                yield g2
+
+
+def _phase_enlarged(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
+    """A rocking follower's phase diagram (drawn at the profile's μ_l) at the finest standard scale
+    (_phase_scales) that keeps the A1 sheet's layout — one sheet, the notes under the phase diagram (review 11, mark
+    16: at 1:1 it was 120 × 65 mm beside 300 mm of blank, its numbers, R_0 and [ϑ] crowded by O).
+    ``as_is``: the leaves, table, notes, doc and layout at μ_l, returned with ``g`` where none fits."""
+    hole = _theta_in_hole(as_is[4])
+    for g2 in _phase_scales(sol, g, lang):
+        again = _arranged(sol, g2, sol.cam, lang, f, hole)
+        if _one_sheet(again[4]) and _in_hole({leaf.name: b for leaf, b in again[4][0]}) and (
+                not hole or _theta_in_hole(again[4])):
+            return (g2, *again)
+    return (g, *as_is)
+
+
+def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
+    """A set's rocking phase diagram at the finest standard scale (_phase_scales) that keeps the set's sheets and
+    leaves it on the profile's sheet (review 11: ≈ 45 mm at 1:2 on the A3 set, illegible)."""
+    laid = as_is[-1]
+    if laid is None:
+        return (g, *as_is)
+    for g2 in _phase_scales(sol, g, lang):
+        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True)
+        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
+        if (again is not None and len(again) == len(laid)
+                and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
+            return g2, leaves, tab, nts, doc, again
+    return (g, *as_is)
+
+
+THETA_SCALES = (0.25, 0.4, 0.5, 1.0, 2.0)     # °/mm: μ_ϑ finer than the stroke's rule, the finest first
+
+
+def _theta_grown(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
+    """ϑ(φ) under the notes (_arranged) at the finest standard μ_ϑ at which it still stands in the room
+    under the phase diagram, the rest of the layout as it was (the room under it stood blank)."""
+    leaves, tab, nts, doc, laid, notes_at = as_is
+    if not _theta_in_hole(laid):
+        return as_is
+    boxes = {leaf.name: b for leaf, b in laid[0] if leaf.name != "notes"}
+    now = next(leaf for leaf, _ in laid[0] if leaf.name == "notes").record.scales.get("mu_theta", 0.0)
+    for mu in (m for m in THETA_SCALES if m < now - 1e-12):
+        at = _notes_at(doc, lang, sol.cam, theta=pressure_below(sol, g, lang, mu))
+        again = _laid(f, leaves, tab, nts, at)
+        if _theta_in_hole(again) and {leaf.name: b for leaf, b in again[0] if leaf.name != "notes"} == boxes:
+            return leaves, tab, nts, doc, again, at
+    return as_is
+
+
+def _names(node) -> set[str]:
+    """The names of the leaves in a layout node (a Leaf, or a Stack of them)."""
+    kids = getattr(node, "children", None)
+    return set().union(*map(_names, kids)) if kids is not None else {getattr(node, "name", "")}
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -718,23 +900,35 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     sol = solve(cam)
     g = construct_on(sol, f, None, args.precision)
     region, keep = field_of(f), keep_out(f)
-    leaves, tab, nts, doc = _leaves(sol, g, cam, lang)
-    laid = _laid(f, leaves, tab, nts, _notes_at(doc, lang, cam))
+    leaves, tab, nts, doc, laid, notes_at = _arranged(sol, g, cam, lang, f)
     if f.name == "A1" and _one_sheet(laid):
-        laid = _rows_of_8(laid, leaves, doc, lang, cam, f)
-        laid = with_pressure(laid, sol, g, lang)
+        g, leaves, tab, nts, doc, laid, notes_at = _phase_enlarged(sol, g, f, lang,
+                                                                    (leaves, tab, nts, doc, laid, notes_at))
+        leaves, tab, nts, doc, laid, notes_at = _theta_grown(sol, g, f, lang, (leaves, tab, nts, doc, laid, notes_at))
+        laid = _rows_of_8(laid, leaves, doc, lang, cam, f, notes_at)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        laid = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f))
-                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
+        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
+        # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
+        def placed(t) -> bool:
+            return t is not None and any("pressure" in _names(leaf) for pg in t for leaf, _ in pg)
+        own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
+               or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
+        most = len(own) if placed(own) else len(laid)
+        same = [t for t in (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+                            pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
+                            set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
+                if placed(t) and len(t) <= most]
+        laid = same[0] if same else (own if placed(own) else laid)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
     def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
         return (at_top if f.name == "A1" and leaf.name in ("profile", "diagrams") else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None
-              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None))]
+              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None),
+                             getattr(leaf.record, "theta_at", None))]
              for page in laid]
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
