@@ -1450,10 +1450,11 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             # along a line of the lever that runs on from its image (P_D at d along d–s4): drawn
             # on its own line pushing, its head at the image, so that the arm still ends on it
             tail, tip = z - length * u, z
-        if (any(abs(w - z) < 0.5 and _overlap(tail, tip, a, b) for w, a, b in drawn)
+        if (any(abs(w - z) < 0.5 and _one_arrow(tail, tip, a, b) for w, a, b in drawn)
                 or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)
                 or _run_along(tail, tip, lines) > 1.0):
-            # on the line of a force drawn at the same image (Φ5 with P_D at d), along a line of
+            # on the line of a force drawn at the same image (Φ5 with P_D at d; Φ3 and P_B leaving
+            # b in opposite senses read as one double-headed arrow, review 11 #12), along a line of
             # the lever through its point (Φ1 along p_v s1; P_D along d–s4 where Φ5 shares its
             # line): set aside, parallel, away from the pole — a lane farther where the first is
             # taken; the arm to their one line serves both
@@ -1492,6 +1493,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
         labels.append((a + 0.55 * (tip - a), "P_b", side))
     lab = Labeler(rec)
+    _lever_couples(rec, lab, lv, turned, lines + list(span.values()), step, lang)
     # the pole lettered with the images it is, as the lab does: "p_v, o1, o2" — the fixed pivots
     # have no velocity, and the couples' forces at o2 act there
     still = sorted(indexed(name.lower()) for name, z in turned.items() if abs(z) <= 0.1)
@@ -1547,6 +1549,46 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
+
+
+COUPLE_R_MM = (7.0, 9.0, 11.0)     # a couple's arc on the lever: round its link's short image
+COUPLE_SPANS = (120.0, 90.0, 60.0)  # … as long as the lines round it leave free (clear by 2 mm)
+
+
+def _lever_couples(rec: Record, lab: Labeler, lv, turned: dict[str, complex],
+                   lines: list[tuple[complex, complex]], step: str, lang: str) -> None:
+    """Each inertia couple carried onto the lever as a moment (its link's image shorter than
+    READABLE_MM: M·l_xy/l_XY, review 10 #6) drawn as a 120° arc round the image's middle, in the
+    moment's sense, where the fewest lines pass, named with its value in N·mm."""
+    for t in lv.terms:
+        if t.vector or not t.moment:
+            continue
+        pts = [turned[p] for p in (t.pair or (t.image,)) if p in turned]
+        if not pts:
+            continue
+        z = sum(pts) / len(pts)
+        knot = max(abs(p - z) for p in pts)
+        ink = [a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))]
+               for k in range(n + 1)]
+        best = None
+        for r in COUPLE_R_MM:
+            r = max(r, knot + 4.0)
+            for span in COUPLE_SPANS:
+                # the sector freest of the lines: the arc (its head included) clear of every arrow
+                away = max((math.radians(5.0 * k) for k in range(72)),
+                           key=lambda a, r=r, span=span: _arc_near(z, r, a, span + 10.0, ink))
+                clear = min(_arc_near(z, r, away, span + 10.0, ink), 2.0)
+                if best is None or clear > best[0] + 1e-9:
+                    best = (clear, r, span, away)
+        _, r, span, away = best
+        mid = _moment_arc(rec, z, t.moment, away, step, r=r, span=span, name="")
+        if t.pair:
+            x, y = t.pair
+            text = (f"{force_symbol(t.name, lang)}·l_{{{x.lower()}{y.lower()}}}/l_{{{x}{y}}}"
+                    f" = {num(abs(t.moment), lang)} {unit('N·mm', lang)}")
+        else:
+            text = f"{force_symbol(t.name, lang)}: {num(abs(t.moment), lang)} {unit('N·mm', lang)}"
+        lab.place(mid, text, LETTER, mid - z, step)
 
 
 # -- tables ------------------------------------------------------------------------------------
