@@ -1555,6 +1555,25 @@ COUPLE_R_MM = (7.0, 9.0, 11.0)     # a couple's arc on the lever: round its link
 COUPLE_SPANS = (120.0, 90.0, 60.0)  # … as long as the lines round it leave free (clear by 2 mm)
 
 
+def _circle_near(z: complex, r: float, ink):
+    """The least distance (mm) from each point of the circle of radius ``r`` about ``z`` at every
+    5° (72, from 0°) to the points ``ink`` (a numpy array): ``_arc_near`` for every arc at once."""
+    import numpy as np
+    circle = z + r * np.exp(1j * np.radians(5.0 * np.arange(72)))
+    return np.abs(circle[:, None] - ink[None, :]).min(axis=1)
+
+
+def _freest_sector(near, span: float) -> tuple[int, float]:
+    """The arc of ``span``° (a multiple of 10°) centred on 5°·k whose points (every 5°, as
+    ``_arc_near`` samples them) stand farthest from the ink: (k, that least distance), the first
+    such k."""
+    import numpy as np
+    half = int(round(span / 10.0))
+    worst = np.min([np.roll(near, -m) for m in range(-half, half + 1)], axis=0)
+    k = int(np.argmax(worst))
+    return k, float(worst[k])
+
+
 def _lever_couples(rec: Record, lab: Labeler, lv, turned: dict[str, complex],
                    lines: list[tuple[complex, complex]], step: str, lang: str) -> None:
     """Each inertia couple carried onto the lever as a moment (its link's image shorter than
@@ -1568,16 +1587,18 @@ def _lever_couples(rec: Record, lab: Labeler, lv, turned: dict[str, complex],
             continue
         z = sum(pts) / len(pts)
         knot = max(abs(p - z) for p in pts)
-        ink = [a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))]
-               for k in range(n + 1)]
+        import numpy as np
+        ink = np.array([a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))]
+                        for k in range(n + 1)] or [complex(math.inf)])
         best = None
         for r in COUPLE_R_MM:
             r = max(r, knot + 4.0)
+            near = _circle_near(z, r, ink)
             for span in COUPLE_SPANS:
                 # the sector freest of the lines: the arc (its head included) clear of every arrow
-                away = max((math.radians(5.0 * k) for k in range(72)),
-                           key=lambda a, r=r, span=span: _arc_near(z, r, a, span + 10.0, ink))
-                clear = min(_arc_near(z, r, away, span + 10.0, ink), 2.0)
+                k, far = _freest_sector(near, span + 10.0)
+                away = math.radians(5.0 * k)
+                clear = min(far, 2.0)
                 if best is None or clear > best[0] + 1e-9:
                     best = (clear, r, span, away)
         _, r, span, away = best
