@@ -599,15 +599,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
-            away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links,
-                                                        BALANCING_R_MM))
+            # … and clear of the other pivots' supports (the slotter's at 1:4: the other pivot's
+            # hatching 10 mm off, M_зр's arc 0.24 mm from it)
+            lines_by = [(p, q) for _, p, q in drawn] + drawn_links
+            propped = [ab for w, d_ in support_at.items() if abs(w - z) >= 0.5 for ab in support_strokes(w, d_)]
+            away = _free_direction_clear(taken + _near_arrows(z, lines_by, BALANCING_R_MM), z,
+                                         BALANCING_R_MM, 80.0, propped)
             r = BALANCING_R_MM
             ends = [e for _, p, q in drawn for e in (p, q) if abs(e - z) > 1.0]     # the arrows' ends by it
             if omega_at is not None and abs(omega_at - z) < 0.5 and (
                     abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
                     or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
-                away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, r))
+                away = _free_direction_clear(taken + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
@@ -887,6 +891,18 @@ def _free_direction(taken: list[float]) -> float:
     def gap(a: float) -> float:
         return min(abs((a - t + math.pi) % (2 * math.pi) - math.pi) for t in taken) if taken else math.pi
     return max((math.radians(15.0 * k) for k in range(24)), key=gap)
+
+
+def _free_direction_clear(taken: list[float], z: complex, r: float, span: float,
+                          lines: list[tuple[complex, complex]], clear: float = 1.0) -> float:
+    """``_free_direction``, but of the 24 directions (farthest from ``taken`` first) the first whose
+    arc of radius ``r`` and ``span``° about ``z`` (its head included) keeps ``clear`` mm off
+    ``lines`` (another pivot's support); none: ``_free_direction``'s."""
+    def gap(a: float) -> float:
+        return min(abs((a - t + math.pi) % (2 * math.pi) - math.pi) for t in taken) if taken else math.pi
+    ink = [a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))] for k in range(n + 1)]
+    dirs = sorted((math.radians(15.0 * k) for k in range(24)), key=gap, reverse=True)
+    return next((a for a in dirs if _arc_near(z, r, a, span + 10.0, ink) >= clear), dirs[0])
 
 
 def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, r: float = 6.0,
