@@ -95,6 +95,20 @@ def test_the_press_groups_at_least_at_the_schemes_scale(press):
         assert min(arms) >= 2.0, (gp.label, arms)
 
 
+@pytest.mark.parametrize("name", ["SIXBAR10", "COMPRESSOR", "SIXBAR"])
+def test_the_one_sheet_composition_never_draws_the_groups_smaller_than_the_scheme(name):
+    """Review 4's rule on every scene, not only the press: the A1 composition's scales (before the
+    drawings are drawn) put no group at a coarser μl than the scheme. Its families grown one after
+    another left SIXBAR10's scheme at 1:2 beside groups at 1:4, the compressor's at 1:1 beside 1:2."""
+    import review_scenes
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    dr = sf.ForceDrafter(scene_study(getattr(review_scenes, name)), SheetOptions(precision=0.5, sheet="forces"))
+    _, p = sf._one_sheet(sf.measure(dr), form("A1"))
+    assert p.mu["groups"] <= p.mu["scheme"] * (1 + 1e-9), (p.mu["scheme"], p.mu["groups"])
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["shaper", "slotter"])
 def test_the_examples_sheets_letter_each_force_at_its_own_arrow(name):

@@ -601,15 +601,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             taken += [cmath.phase(m.acting) for m in outer if m.acting]   # R01 from the pivot
             taken += [cmath.phase(t.foot - z) for eq in gp.equations for t in eq.terms   # the arms
                       if abs(t.arm_mm) >= 1.0 and not t.couple]
-            away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links,
-                                                        BALANCING_R_MM))
+            # … and clear of the other pivots' supports (the slotter's at 1:4: the other pivot's
+            # hatching 10 mm off, M_зр's arc 0.24 mm from it)
+            lines_by = [(p, q) for _, p, q in drawn] + drawn_links
+            propped = [ab for w, d_ in support_at.items() if abs(w - z) >= 0.5 for ab in support_strokes(w, d_)]
+            away = _free_direction_clear(taken + _near_arrows(z, lines_by, BALANCING_R_MM), z,
+                                         BALANCING_R_MM, 80.0, propped)
             r = BALANCING_R_MM
             ends = [e for _, p, q in drawn for e in (p, q) if abs(e - z) > 1.0]     # the arrows' ends by it
             if omega_at is not None and abs(omega_at - z) < 0.5 and (
                     abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
                     or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
-                away = _free_direction(taken + _near_arrows(z, [(p, q) for _, p, q in drawn] + drawn_links, r))
+                away = _free_direction_clear(taken + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
@@ -889,6 +893,18 @@ def _free_direction(taken: list[float]) -> float:
     def gap(a: float) -> float:
         return min(abs((a - t + math.pi) % (2 * math.pi) - math.pi) for t in taken) if taken else math.pi
     return max((math.radians(15.0 * k) for k in range(24)), key=gap)
+
+
+def _free_direction_clear(taken: list[float], z: complex, r: float, span: float,
+                          lines: list[tuple[complex, complex]], clear: float = 1.0) -> float:
+    """``_free_direction``, but of the 24 directions (farthest from ``taken`` first) the first whose
+    arc of radius ``r`` and ``span``° about ``z`` (its head included) keeps ``clear`` mm off
+    ``lines`` (another pivot's support); none: ``_free_direction``'s."""
+    def gap(a: float) -> float:
+        return min(abs((a - t + math.pi) % (2 * math.pi) - math.pi) for t in taken) if taken else math.pi
+    ink = [a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))] for k in range(n + 1)]
+    dirs = sorted((math.radians(15.0 * k) for k in range(24)), key=gap, reverse=True)
+    return next((a for a in dirs if _arc_near(z, r, a, span + 10.0, ink) >= clear), dirs[0])
 
 
 def _moment_arc(rec: Record, z: complex, couple: float, away: float, step: str, r: float = 6.0,
@@ -1452,10 +1468,11 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             # along a line of the lever that runs on from its image (P_D at d along d–s4): drawn
             # on its own line pushing, its head at the image, so that the arm still ends on it
             tail, tip = z - length * u, z
-        if (any(abs(w - z) < 0.5 and _overlap(tail, tip, a, b) for w, a, b in drawn)
+        if (any(abs(w - z) < 0.5 and _one_arrow(tail, tip, a, b) for w, a, b in drawn)
                 or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)
                 or _run_along(tail, tip, lines) > 1.0):
-            # on the line of a force drawn at the same image (Φ5 with P_D at d), along a line of
+            # on the line of a force drawn at the same image (Φ5 with P_D at d; Φ3 and P_B leaving
+            # b in opposite senses read as one double-headed arrow, review 11 #12), along a line of
             # the lever through its point (Φ1 along p_v s1; P_D along d–s4 where Φ5 shares its
             # line): set aside, parallel, away from the pole — a lane farther where the first is
             # taken; the arm to their one line serves both
@@ -1494,6 +1511,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
         labels.append((a + 0.55 * (tip - a), "P_b", side))
     lab = Labeler(rec)
+    _lever_couples(rec, lab, lv, turned, lines + list(span.values()), step, lang)
     # the pole lettered with the images it is, as the lab does: "p_v, o1, o2" — the fixed pivots
     # have no velocity, and the couples' forces at o2 act there
     still = sorted(indexed(name.lower()) for name, z in turned.items() if abs(z) <= 0.1)
@@ -1549,6 +1567,67 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     x0, y0, _, _ = rec.bounds()
     rec.label((x0, y0 - 6.0), f"μ_v = {num(lv.mu_v, lang)} {unit('(m/s)/mm', lang)}", size=3.5, step=step)
     return rec
+
+
+COUPLE_R_MM = (7.0, 9.0, 11.0)     # a couple's arc on the lever: round its link's short image
+COUPLE_SPANS = (120.0, 90.0, 60.0)  # … as long as the lines round it leave free (clear by 2 mm)
+
+
+def _circle_near(z: complex, r: float, ink):
+    """The least distance (mm) from each point of the circle of radius ``r`` about ``z`` at every
+    5° (72, from 0°) to the points ``ink`` (a numpy array): ``_arc_near`` for every arc at once."""
+    import numpy as np
+    circle = z + r * np.exp(1j * np.radians(5.0 * np.arange(72)))
+    return np.abs(circle[:, None] - ink[None, :]).min(axis=1)
+
+
+def _freest_sector(near, span: float) -> tuple[int, float]:
+    """The arc of ``span``° (a multiple of 10°) centred on 5°·k whose points (every 5°, as
+    ``_arc_near`` samples them) stand farthest from the ink: (k, that least distance), the first
+    such k."""
+    import numpy as np
+    half = int(round(span / 10.0))
+    worst = np.min([np.roll(near, -m) for m in range(-half, half + 1)], axis=0)
+    k = int(np.argmax(worst))
+    return k, float(worst[k])
+
+
+def _lever_couples(rec: Record, lab: Labeler, lv, turned: dict[str, complex],
+                   lines: list[tuple[complex, complex]], step: str, lang: str) -> None:
+    """Each inertia couple carried onto the lever as a moment (its link's image shorter than
+    READABLE_MM: M·l_xy/l_XY, review 10 #6) drawn as a 120° arc round the image's middle, in the
+    moment's sense, where the fewest lines pass, named with its value in N·mm."""
+    for t in lv.terms:
+        if t.vector or not t.moment:
+            continue
+        pts = [turned[p] for p in (t.pair or (t.image,)) if p in turned]
+        if not pts:
+            continue
+        z = sum(pts) / len(pts)
+        knot = max(abs(p - z) for p in pts)
+        import numpy as np
+        ink = np.array([a + (b - a) * k / n for a, b in lines for n in [max(2, int(abs(b - a) / 0.5))]
+                        for k in range(n + 1)] or [complex(math.inf)])
+        best = None
+        for r in COUPLE_R_MM:
+            r = max(r, knot + 4.0)
+            near = _circle_near(z, r, ink)
+            for span in COUPLE_SPANS:
+                # the sector freest of the lines: the arc (its head included) clear of every arrow
+                k, far = _freest_sector(near, span + 10.0)
+                away = math.radians(5.0 * k)
+                clear = min(far, 2.0)
+                if best is None or clear > best[0] + 1e-9:
+                    best = (clear, r, span, away)
+        _, r, span, away = best
+        mid = _moment_arc(rec, z, t.moment, away, step, r=r, span=span, name="")
+        if t.pair:
+            x, y = t.pair
+            text = (f"{force_symbol(t.name, lang)}·l_{{{x.lower()}{y.lower()}}}/l_{{{x}{y}}}"
+                    f" = {num(abs(t.moment), lang)} {unit('N·mm', lang)}")
+        else:
+            text = f"{force_symbol(t.name, lang)}: {num(abs(t.moment), lang)} {unit('N·mm', lang)}"
+        lab.place(mid, text, LETTER, mid - z, step)
 
 
 # -- tables ------------------------------------------------------------------------------------

@@ -15,6 +15,13 @@ from graphplan.exact.kinematics import cross
 from graphplan.exact.kinetostatics import Kinetostatics, Load
 
 PLAN_MM = 120.0        # the fastest point's velocity vector on the lever
+# a link's image shorter than this carries its inertia couple as a moment, not as a force pair:
+# the pair's two arrows (⊥ xy, at x and y) must stand apart with their two names (M^Φ', M^Φ'':
+# 3.5 mm letters with a superscript and a subscript, ~5 mm tall) and the two images' letters
+# (3.5 mm) between them, each 1 mm from the next — ~15 mm. Review 10 #6: at φ = 150° the
+# six-bar's a, b lie 7 mm apart at μv = 0.01 and 11 mm at the A1 sheet's 0.00628; both drew
+# seven forces and their names knotted round a, b, e, s2 and two long dashed arms to the pair
+READABLE_MM = 15.0
 
 
 @dataclass
@@ -25,6 +32,8 @@ class LeverTerm:
     moment: float        # N·mm
     image: str           # the point's image it acts at
     vector: complex      # the force (N), for drawing
+    pair: tuple[str, str] = ()       # a couple carried as a moment: its link's two points X, Y
+    ratio: float = 0.0               # … and l_xy (mm, measured on the lever) / l_XY (m)
 
 
 @dataclass
@@ -75,7 +84,7 @@ def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None, loads:
         f, c = complex(ld.force[0]), float(ld.couple[0])
         if f != 0:
             add(ld.name, ld.link, ld.point, f)
-        if c != 0 and not _couple_pair(ld, c, ks, add):
+        if c != 0 and not _couple_pair(ld, c, ks, add, image, precision, terms):
             # a link with a single point (a block on a turning guide): the couple's moment on the
             # lever is −M·ω/μv, the moment of its force pair at the images of any two of its points
             omega = float(ld.omega[0])
@@ -94,8 +103,12 @@ def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None, loads:
     return Lever(mu_v, images, segs, terms, pa, total, p_b, m_b)
 
 
-def _couple_pair(ld: Load, c: float, ks: Kinetostatics, add) -> bool:
-    """A couple M on a link as two forces M/l ⊥ XY at two of its points X, Y (seed 000: P' = M/l)."""
+def _couple_pair(ld: Load, c: float, ks: Kinetostatics, add, image, precision: float,
+                 terms: list[LeverTerm]) -> bool:
+    """A couple M on a link as two forces M/l ⊥ XY at two of its points X, Y (seed 000: P' = M/l);
+    where the image xy is shorter than READABLE_MM, as the couple's own moment on the lever,
+    M·l_xy/l_XY (the couple's transfer rule: the pair M/l_XY at x, y has the arm l_xy; its sense
+    the couple's, −M·ω/μv with ω = v_XY/l_XY = l_xy·μv/l_XY)."""
     link = ks.mech.links[ld.link]
     names = list(link.joints) + [p for p in link.local if p not in link.joints]
     body = ks.kin.bodies[ld.link]
@@ -106,6 +119,13 @@ def _couple_pair(ld: Load, c: float, ks: Kinetostatics, add) -> bool:
         return False
     x, y = pair
     length = abs(pos[y] - pos[x])
+    shown = image(ld.link, y) - image(ld.link, x)
+    if abs(shown) < READABLE_MM:
+        # ω's sense from the image: v_Y − v_X ⊥ XY, counter-clockwise when cross(XY, xy) > 0
+        sense = math.copysign(1.0, cross(pos[y] - pos[x], shown)) if shown else 0.0
+        ratio = measure(abs(shown), precision) / length
+        terms.append(LeverTerm(ld.name, abs(c), 0.0, -c * sense * ratio, x, 0j, (x, y), ratio))
+        return True
     f = c / length * 1j * (pos[y] - pos[x]) / length       # cross(Y − X, f) = M
     add(f"{ld.name}'", ld.link, y, f)
     add(f"{ld.name}''", ld.link, x, -f)

@@ -187,6 +187,9 @@ def forces_table(fp, lang: str = "uk") -> str:
     lines.append("  " + _row([w("force"), w("image"), f"F, {unit('N', lang)}", f"h, {unit('mm', lang)}",
                               f"F·h, {unit('N·mm', lang)}"], lw))
     for t in lv.terms:
+        if t.pair:      # a couple carried as its moment M·l_xy/l_XY (its link's image too short for a pair)
+            lines.append("  " + _row([sym(t.name), "".join(t.pair).lower(), "—", "—", n(t.moment + 0.0, 6)], lw))
+            continue
         lines.append("  " + _row([sym(t.name), t.image.lower(), n(t.force, 5), n(t.arm_mm + 0.0),
                                   n(t.moment + 0.0, 6)], lw))
     lines.append(w("lever sum", s=n(lv.total, 6)))

@@ -632,10 +632,13 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     return Stack(rows, ROWS_GAP, flush=True)
 
 
-def _levels(families: dict[str, Family], fits, order, largest=None, start=None) -> dict[str, float] | None:
+def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
+            led: dict[str, str] | None = None) -> dict[str, float] | None:
     """``compose.choose_levels`` where a family may offer smaller steps when its whole one does not
     fit (``LeverFamily.steps``): the largest common size factor that fits (or ``start``), then the
-    families in ``order`` each grown by the first of its steps that still fits, round after round."""
+    families in ``order`` each grown by the first of its steps that still fits, round after round.
+    ``led``: a family grown takes another along at least to its scale ({"scheme": "groups"}: the
+    groups never at a smaller scale than the scheme, ``_one_sheet``)."""
     from graphplan.sheets.compose import FACTORS
     mu = start if start is not None and fits(start) else \
         next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
@@ -651,6 +654,9 @@ def _levels(families: dict[str, Family], fits, order, largest=None, start=None) 
                 if bigger is None or (largest is not None and not largest(name, bigger)):
                     continue
                 trial = {**mu, name: bigger}
+                other = (led or {}).get(name)
+                if other in trial and trial[other] > bigger * (1 + 1e-9):
+                    trial[other] = bigger
                 if fits(trial):
                     mu = trial
                     break
@@ -711,12 +717,26 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
-            mu = _levels(nat.families, lambda m, s=shape: arranged(m, s, True) is not None, order)
+            fits = lambda m, s=shape: arranged(m, s, True) is not None       # noqa: E731
+            mu = _levels(nat.families, fits, order)
             if mu is None:
                 continue
+            if mu["scheme"] < mu["groups"] * (1 - 1e-9):
+                # the groups never at a smaller scale than the scheme on one sheet (review 4 #8: the
+                # groups at 1:10 beside a 1:4 scheme; the press's II(2-3) at 1:5 beside its 1:4
+                # scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
+                # 1:2.5): the scheme at the groups' scale, the room it leaves grown into by the rest
+                mu = _levels(nat.families, fits, order, start={**mu, "scheme": mu["groups"]},
+                             led={"scheme": "groups"})
+                if mu is None:
+                    continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
-            score = (round(min(rel), 6), round(sum(math.log(r) for r in rel), 6), factor == TABLES,
-                     -SHAPES.index(shape))
+            # the smallest against its target, then those under their targets as large as may be
+            # (a drawing beyond its target gains the sheet less than one under it loses: the
+            # shaper's acceleration plan at 1.8 times its target scored its scheme and groups at
+            # 1:5 above both at 1:4), then all
+            score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
+                     round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
             _, hc, parts, hrow = arranged(mu, shape)
             counts = tuple(len(g) for g in split(tabs, parts))
             cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
