@@ -98,6 +98,8 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bo
         return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
     if len(pts) < 2:
         return pts
+    if extras:          # a slotted lever's own points past its block (review 12: O3E's end E drawn apart)
+        pts += extras
     axis = _unit(pts[1] - pts[0])
     proj = sorted(pts, key=lambda z: dot(z - pts[0], axis))
     return [proj[0], proj[-1]]
