@@ -1505,13 +1505,20 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     a = turned.get(crank.pin, 0j)
     if lv.balancing_force and abs(a) > 0:
         u = -1j * _unit(a) * math.copysign(1.0, lv.balancing_force)
-        tip = a + _arrow_length(abs(lv.balancing_force), biggest) * u
-        rec.vector(_pt(a), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
-        span["P_b"] = (a, tip)
+        length = _arrow_length(abs(lv.balancing_force), biggest)
+        # pushing from a (its tail there) or pulling into a (its head there), whichever runs along
+        # no line of the lever and meets no arrow there (review 12: at ab ∥ P_зр its shaft ran along
+        # a–s2–b, its head past b: it read as applied at b)
+        ways = [(a, a + length * u), (a - length * u, a)]
+        tail, tip = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
+                                             sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
+                                             w[0] != a))
+        rec.vector(_pt(tail), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
+        span["P_b"] = (tail, tip)
         # named beside its shaft, on the side away from the pole: at the head it met the letters
         # of the images the arrow points at (s3 on the coulisse's lever)
         side = 1j * u if dot(1j * u, a) >= 0 else -1j * u
-        labels.append((a + 0.55 * (tip - a), "P_b", side))
+        labels.append((tail + 0.55 * (tip - tail), "P_b", side))
     lab = Labeler(rec)
     _lever_couples(rec, lab, lv, turned, lines + list(span.values()), step, lang)
     # the pole lettered with the images it is, as the lab does: "p_v, o1, o2" — the fixed pivots
