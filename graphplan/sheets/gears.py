@@ -9,14 +9,14 @@ from __future__ import annotations
 import math
 
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
-from graphplan.exact.gears import solve
+from graphplan.exact.gears import CONTACT_MIN, solve
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, most_teeth,
                                      sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.model.gears import Gears
-from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, gears_json, sig_decimals,
-                                    table_decimals)
+from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
+                                    length_decimals, sig_decimals, table_decimals)
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
@@ -36,7 +36,8 @@ WORDS = {
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
            "cond": "умова", "bound": "межа", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
            "under": "без підрізання: x ≥ x_{min}", "point": "без загострення: s_a/m ≥ 0,25",
-           "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2", "lam": "найбільше |λ|",
+           "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2 за формулою",
+           "eps_gr": "ε_α ≥ 1,2 з креслення (±{b})", "within": "у межах похибки", "lam": "найбільше |λ|",
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм",
@@ -61,6 +62,10 @@ WORDS = {
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
                      "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
+           "judged": "Умови таблиці 2 оцінено за формулами, як проєктують передачу; ε_α з креслення "
+                     "(B_{{1}}B_{{2}}/p_b = {g}) — перевірка креслення: {v}",
+           "judged_ok": "теж не менше 1,2", "judged_in": "менше 1,2 на {d}, у межах похибки ±{b}",
+           "judged_out": "менше 1,2 на {d}, поза межею похибки ±{b}",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
@@ -73,7 +78,8 @@ WORDS = {
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
            "cond": "condition", "bound": "bound", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "under": "no undercut: x ≥ x_{min}", "point": "not pointed: s_a/m ≥ 0.25",
-           "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2", "lam": "largest |λ|",
+           "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2 by the formula",
+           "eps_gr": "ε_α ≥ 1.2 off the drawing (±{b})", "within": "within its bound", "lam": "largest |λ|",
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm",
@@ -98,6 +104,10 @@ WORDS = {
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
+           "judged": "Table 2's conditions are judged by the formulas, as the pair is designed; ε_α off the "
+                     "drawing (B_{{1}}B_{{2}}/p_b = {g}) checks the drawing: {v}",
+           "judged_ok": "also at least 1.2", "judged_in": "short of 1.2 by {d}, within its bound ±{b}",
+           "judged_out": "short of 1.2 by {d}, outside its bound ±{b}",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
            "past": "! — a reading outside its bound from the drafting precision"},
 }
@@ -138,16 +148,19 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e)] if gr else [bare(te), "", ""]
+            row += [te, tg, _pct(e)] if gr else [te, "", ""]     # one count of decimals down the column
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
     rows.append(["ε_α", te, tg, _pct(e, "!" if c["outside_bound"] else "") if tg else "", "", "", ""])
-    # the terminal's figures (report.gears.pair_lines): αw to six, the rest to four significant figures
-    for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, 4),
-                      (f"a, {w['mm']}", p["a_m"] * 1000, 4), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
-                      (f"p, {w['mm']}", p["pitch_m"] * 1000, 4), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, 4)):
-        rows.append([sym, _n(v, lang, k), "", "", "", "", ""])
+    # the terminal's figures (report.gears.pair_lines): αw to six significant figures, y and Δy to
+    # four, the lengths to the column's decimals and at least 0,01 mm (the lab prints aw so: the centre
+    # distance is machined; review 12 had «110» for 109,977)
+    ld = length_decimals(dec)
+    for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, -ld),
+                      (f"a, {w['mm']}", p["a_m"] * 1000, -ld), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
+                      (f"p, {w['mm']}", p["pitch_m"] * 1000, -ld), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, -ld)):
+        rows.append([sym, _n(v, lang, k) if k > 0 else fixed(v, lang, -k).replace("-", "−"), "", "", "", "", ""])
     return table(_pct_cells(rows, lang), [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
 
 
@@ -168,9 +181,17 @@ def quality_table(doc: dict, lang: str) -> Record:
     rows.append([w["interf"], f"{_n(rho[0] * 1000, lang)} ≥ {_n(lim[0] * 1000, lang)}",
                  f"{_n(rho[1] * 1000, lang)} ≥ {_n(lim[1] * 1000, lang)}",
                  " / ".join(yes(not v) for v in q["interference"])])
-    rows.append([w["eps"], _n(p["contact_ratio"]["exact"], lang), "", yes(q["contact_ratio_ok"])])
+    # εα judged by the formula, as the pair is designed, and apart from it on the value read off the
+    # drawing against its bound (review 12, mark 12: 1,2033 by the formula «met» beside 1,196 read)
+    c = p["contact_ratio"]
+    te, tg, _ = contact_ratio_text(c["exact"], c["graphical"], lang)
+    rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
+    if tg:
+        v = eps_read_verdict(c)
+        rows.append([w["eps_gr"].format(b=_n(c["bound"], lang, 2)), tg, "",
+                     w["within"] if v == "within" else yes(v == "ok")])
     rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
-    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
+    return table(rows, [52.0, 24.0, 24.0, 26.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -231,6 +252,14 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
+        c = p["contact_ratio"]
+        if c["graphical"] is not None and mesh.precision > 0:
+            v = eps_read_verdict(c)
+            k = sig_decimals(c["exact"])                 # the shortfall from the printed reading
+            d = fixed(CONTACT_MIN - round(c["graphical"], k), lang, k)
+            out.append(w["judged"].format(g=contact_ratio_text(c["exact"], c["graphical"], lang)[1], v=w[
+                {"ok": "judged_ok", "within": "judged_in", "fail": "judged_out"}[v]].format(
+                d=d, b=_n(c["bound"], lang, 2))))
         out += [w["warn"] + x for x in p[key]]
         parts.append(out)
         out = []
