@@ -191,7 +191,7 @@ def quality_table(doc: dict, lang: str) -> Record:
     else:
         rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
-    return table(rows, [50.0, 24.0, 24.0, 28.0], row_h=6.0, size=2.5, title=w["t2"])
+    return table(rows, [50.0, 24.0, 24.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -362,7 +362,7 @@ SCHEME_SHARES = (1.4, 1.0, 0.65)   # vA × its size tried with each scale of the
 
 
 def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w: float, room_h: float,
-           h_min: float):
+           h_min: float, memo: dict | None = None):
     """The planetary pictures with the scheme at the scale ``ring_mm`` gives and vA about ``va_mm``, the
     plan of angular velocities as large as the zone ``room_w`` × ``room_h`` (the pictures with their
     caption) takes — by arithmetic on the zone's size (review 12 mark 11, review 13 mark 9: ωH read off
@@ -370,16 +370,22 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
     times ωi/ω1 and h = S·yA/vA, so the plan's span grows as S·(1 + |ω2|/ω1) and its height as
     S·yA/vA; S is the largest the zone's spare width and height allow, measured on the pictures drawn
     at a first S, then checked on the pictures drawn (a few per cent less while labels push them out).
-    (velocities, captioned record), or None when none fits or h would be under ``h_min``."""
+    (velocities, captioned record), or None when none fits or h would be under ``h_min``. ``memo``: the
+    pictures drawn, kept across calls for the same train (a set tries several heights)."""
     om = tr.omega
     span = 1.0 + max((abs(om[k]) for k in om if k != "1" and om[k] < 0), default=0.0) / abs(om["1"])
 
+    memo = {} if memo is None else memo
+
     def at(S: float):
-        try:
-            v = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=S)
-        except GraphplanError:
-            return None
-        return v, _plan(v, lang)
+        key = (round(ring_mm, 6), round(va_mm, 6), round(S, 3))
+        if key not in memo:
+            try:
+                v = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=S)
+                memo[key] = v, _plan(v, lang)
+            except GraphplanError:
+                memo[key] = None
+        return memo[key]
 
     def fits(d) -> bool:
         w_, h_ = _size(d[1])
@@ -705,14 +711,18 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     h0 = _size(_plan(v0, lang))[1]
     full = y1 - later_keep(f)[3] - GAP
     ring = sol.train.radii["3"] / v0.mu_l * (1 + 1e-9)
-    for room_h in (full, h0 + 0.6 * (full - h0), h0 + 0.3 * (full - h0), h0):   # the sheet's height, then less
-        for va_share in (2.0,) + SCHEME_SHARES:       # (the longest vA first: at a given height the longest plan)
+    memo: dict = {}
+    tried = set()
+    for room_h in (full, 0.5 * (full + h0), h0):      # the sheet's height, then less
+        for va_share in (2.0, 1.0):       # (the longest vA first: at a given height the longest plan)
             d = filled(sol.train, precision, lang, ring, 60.0 * ring / 80.0 * va_share, x1 - x0, room_h,
-                       min(H_MIN, vel.h))
+                       min(H_MIN, vel.h), memo)
             if d is not None and d[0].ratio_bound < v0.ratio_bound - 1e-12:
-                out = kept(*d)
-                if out is not None:
-                    return out
+                if id(d) not in tried:    # (a set tried once)
+                    tried.add(id(d))
+                    out = kept(*d)
+                    if out is not None:
+                        return out
                 break                     # (a shorter vA only makes it taller)
     return pages
 
