@@ -418,10 +418,11 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
     meshing, the sheet's main drawing — neither wider nor taller than it with its caption: for each
     scale of the scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) and vA
-    (``SCHEME_SHARES``), the plan of angular velocities filling the zone (``filled``); of those, the one
-    whose u1H reads best — the least bound of its error from the drafting precision (the heights r1,
-    aw, r3 laid off and the sun's and the carrier's segments read: a larger scheme and longer segments
-    both lower it) —, the larger scheme of two as good. The pictures as they were when none fits."""
+    (``SCHEME_SHARES``), the plan of angular velocities filling the zone (``filled``): the largest scheme
+    with which the plan fits, the plan then as long as the zone allows (the heights r1, aw, r3 laid off
+    longer and the segments read longer both lower the bound of u1H's error: review 12's 1:1 reads
+    within ±0,94 where 1:2 with a 1 mm longer ωH reads within ±1,53). The pictures as they were when
+    none fits."""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
@@ -430,7 +431,6 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     r3 = r["3"]
     top = max(r3, r["H"] + max(r["2"], r.get("2'", 0.0)))      # the scheme's top: the ring or the planet over it
     scales = sorted({at_least(r3 / (80.0 * k)) for k in GROW})     # the scheme's scales, the largest drawing first
-    best = None
     for mu in scales:
         ring = r3 / mu * (1 + 1e-9)                              # (``construct_train`` takes μl = this scale)
         if top / mu + 26.0 + min(H_MIN, vel.h) + 20.0 > room_h:   # the scheme, the plan under it, its labels
@@ -438,10 +438,8 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                if best is None or d[0].ratio_bound < best[0].ratio_bound - 1e-12:
-                    best = d
-                break
-    return best if best is not None else (vel, plan)
+                return d
+    return vel, plan
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
