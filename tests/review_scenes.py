@@ -1646,3 +1646,63 @@ delta = 0.035
 efficiency = 0.88
 synchronous_rpm = 750
 """
+
+
+# Review 12 (c): the pair 13/29 with "auto" shifts (εα = 1,2033 by the formula, 1,196 read at 5:1) and a
+# type-B train for u = 16; review 13 (c): 23/48 with shifts +0.45/−0.25 and a type-B train for u = 27.
+GEARS_REV12 = '''# Review 12 (c): a pair with a small pinion z1 = 13 and shifts "auto", and a two-row planetary
+# train (type B) given by its teeth.
+title = "Зубчаста передача 13/29 і дворядний планетарний редуктор (рецензія 12)"
+title_en = "Gear pair 13/29 and a two-row planetary reducer (review 12)"
+designation = "ТММ.РВ12.04.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент 12"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[gears]
+z = [13, 29]
+module = 0.005
+shifts = "auto"
+pressure_angle_deg = 20
+addendum = 1.0
+clearance = 0.25
+
+[planetary]
+type = "B"
+ratio = 16.0
+planets = 3
+module = 0.0025
+omega = 152.0
+'''
+
+
+GEARS_REV13 = '''# Review 13 (c): a shifted pair z = 23/48 with unequal explicit shifts (x2 negative) and a two-row
+# planetary reducer (type B) for a large ratio.
+title = "Зубчаста передача 23/48 і дворядний планетарний редуктор (варіант рецензента 13)"
+title_en = "A gear pair 23/48 and a two-row planetary reducer (review 13)"
+designation = "TMM.RV13.04.000"
+lang = "en"
+
+[sheet]
+student = "A. Reviewer"
+teacher = "Strict Teacher"
+group = "MB-41"
+organisation = "NULES of Ukraine"
+
+[gears]
+z = [23, 48]
+module = 0.005
+shifts = [0.45, -0.25]
+pressure_angle_deg = 20
+
+[planetary]
+type = "B"
+ratio = 27.0
+planets = 3
+module = 0.0025
+rpm = 1440
+'''

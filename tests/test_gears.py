@@ -756,8 +756,9 @@ def test_the_ratio_read_on_generated_trains_is_within_the_worst_case(kind, u, K,
 @pytest.mark.parametrize("name", SCENES_DELTA + ["review12"])
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_the_tables_print_no_trailing_zero_but_where_a_reading_is_and_eps_delta_is_the_true_one(name, lang, tmp_path):
-    """Table 3's u1H and ω and Table 1's exact-only lengths carry no trailing zero ("6.0000", "150.00",
-    "42.00" were printed); only the rows read off the drawing keep the ruler's decimals, which the notes
+    """Table 3's u1H and ω and Table 1's quantities without a unit carry no trailing zero ("6.0000", "150.00",
+    "42.00" were printed); Table 1's lengths carry the read rows' decimals down the column (review 12:
+    «69» among two-decimal numbers, a_w «110»); only the rows read off the drawing keep the ruler's decimals, which the notes
     say. ε_α to four significant figures (the drawing's bound is ±0.03) and its δ the one worked out
     from the two printed values, as the terminal prints them."""
     import re
@@ -774,9 +775,18 @@ def test_the_tables_print_no_trailing_zero_but_where_a_reading_is_and_eps_delta_
         _one_count_of_decimals([r[-1] for r in rows[2:] if len(r) == 4])      # δ: one count of decimals (review 10)
     if mesh is not None:
         read = ("r_w", "s,", "s_a", "δ")
+        unit = "мм" if lang == "uk" else "mm"
         for row in _table_rows(geometry_table(doc, lang))[2:]:
-            if not row[0].startswith(read):
+            if unit in row[0]:
+                # the lengths: one count of decimals down the column, as the read rows carry (review 12:
+                # r_f2 «69» among two-decimal numbers, a_w «110» for 109,977), at least 0,01 mm
+                dec = {len(c.split("," if lang == "uk" else ".")[1]) for k, c in enumerate(row[1:], 1)
+                       if k in (1, 2, 4, 5) and c}
+                assert len(dec) == 1 and dec.pop() >= 2, row
+            elif not row[0].startswith(read):
                 assert not any(trailing.match(c) for k, c in enumerate(row[1:], 1) if k not in (3, 6)), row
+            if row[0].startswith("a_w"):
+                assert abs(_value(row[1]) - doc["pair"]["a_w_m"] * 1000) <= _last_digit(row[1]) / 2 + 1e-9, row
             if row[0] == "ε_α":
                 # four significant figures at most (review 5: 1,20269562 against a bound of ±0,032),
                 # the exact one within half its last digit, δ the one worked out from the printed two

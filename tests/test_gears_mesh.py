@@ -263,6 +263,6 @@ def test_the_sliding_curves_are_lettered_apart_from_their_crossing(z, x):
     rec = sliding_diagram(sol, mesh)
     texts = {p.text: complex(*p.points[0]) for p in rec.items if p.kind == "text"}
     assert "λ" in texts
-    xP = sol.rho_P / mesh.mu_l
+    xP = sol.rho_P / rec.scales["mu_l"]          # (the abscissa at its own scale, review 12 mark 22)
     for name in ("λ_1", "λ_2"):
         assert abs(texts[name].real - xP) > 10.0, (name, texts[name], xP)

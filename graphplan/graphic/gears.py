@@ -643,13 +643,28 @@ def eps_bound(sol: PairSolution, mu: float, precision: float) -> float:
     return max(first, worst)
 
 
-def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM) -> Record:
-    """λ1 and λ2 over N1N2 drawn horizontally at the meshing's scale, λ at ``unit_mm`` a unit (20 mm
+LAMBDA_LINE = 200.0            # mm: N1N2 drawn at most this long under the λ diagrams (two curves)
+
+
+def lambda_mu(sol: PairSolution, mu_l: float) -> float:
+    """The λ diagrams' abscissa scale, m/mm: the meshing's ``mu_l`` where N1N2 drawn at it is at most
+    ``LAMBDA_LINE``, else the largest GOST 2.302 scale at which it is (review 12, mark 22: N1N2 =
+    48,58 mm at the meshing's 5:1 made a 300 × 220 mm zone for two curves; at 4:1 it is 194 mm). The
+    caption states it, as the meshing's: the abscissa is a length along N1N2 of the part."""
+    if sol.g / mu_l <= LAMBDA_LINE + 1e-9:
+        return mu_l
+    fit = [k for k in ENLARGE + REDUCE if sol.g * 1000.0 * k <= LAMBDA_LINE + 1e-9]
+    return 0.001 / max(fit) if fit else mu_l
+
+
+def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM, mu_x: float | None = None) -> Record:
+    """λ1 and λ2 over N1N2 drawn horizontally at ``mu_x`` m/mm (``lambda_mu``: the meshing's scale, or a
+    smaller standard one where N1N2 would be longer than ``LAMBDA_LINE``), λ at ``unit_mm`` a unit (20 mm
     unless the sheet grows it): the ordinates at B1, P, B2; each curve thin over N1N2 and heavy over
     the working part B1B2 (the lab draws the working part heavy, review 10 mark 15); cut where it
     passes λ = −3 (λ1 → −∞ at N1, λ2 at N2) with a break: a short arrow on down and "−∞"."""
     rec = Record("sliding")
-    mu = mesh.mu_l
+    mu = mu_x if mu_x is not None else lambda_mu(sol, mesh.mu_l)
     G = sol.g / mu
     z1, z2 = sol.pair.z
     c = LAMBDA_CLIP

@@ -7,7 +7,7 @@ import math
 from typing import Any
 
 from graphplan.exact.gears import CONTACT_MIN, POINTED, Solution
-from graphplan.util.words import num
+from graphplan.util.words import fixed, num
 from graphplan.util.words import num as _num
 
 
@@ -141,7 +141,8 @@ WORDS = {
            "eps_line": "коефіцієнт перекриття εα = {e} (графічно B1B2/pb = {g}, похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "data": "z = {z}, m = {m} мм, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} мм, aw = {w} мм, y = {y}, Δy = {dy}, p = {p} мм, pb = {pb} мм",
-           "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e}; "
+           "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e} (за формулою; "
+                      "з креслення {g}: {gv}); "
                       "найбільше питоме ковзання λ1 = {l1}, λ2 = {l2}",
            "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
            "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
@@ -152,14 +153,15 @@ WORDS = {
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
-           "warn": "Попередження", "member": "ланка", "out": " — ПОЗА МЕЖЕЮ"},
+           "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
            "eps_line": "contact ratio εα = {e} (graphically B1B2/pb = {g}, error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "data": "z = {z}, m = {m} mm, α = {a}°, h*a = {h}, c* = {c}, x = {x}",
            "geo": "αw = {aw}°, a = {a} mm, aw = {w} mm, y = {y}, Δy = {dy}, p = {p} mm, pb = {pb} mm",
-           "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e}; "
+           "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e} (by the formula; "
+                      "off the drawing {g}: {gv}); "
                       "greatest specific sliding λ1 = {l1}, λ2 = {l2}",
            "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
@@ -180,6 +182,29 @@ def table_decimals(g: dict[str, Any]) -> int:
     from the printed values is the lab's error and not the rounding's; four at precision 0."""
     res = g["precision_mm"] * g["mu_l_m_mm"] * 1000.0
     return 4 if res <= 0 else max(0, math.ceil(-math.log10(res) - 1e-9)) + 1
+
+
+def eps_read_verdict(c: dict[str, Any]) -> str:
+    """The condition εα ≥ 1.2 judged on the value read off the drawing (B1B2/pb) — a check of the
+    drawing, not the design's verdict, which is the formula's (REFERENCE §12: the quality indices are
+    computed; the graphical εα is "measured with the ruler and compared"): "ok" when the reading meets
+    1.2, "within" when it falls short by no more than its bound from the drafting precision (review 12:
+    εα = 1,2033 by the formula, 1,196 read, bound ±0,031), "fail" past that (the reading then also
+    lies outside its bound unless the exact value fails too)."""
+    g = c.get("graphical")
+    if g is None:
+        return "fail"
+    if g >= CONTACT_MIN:
+        return "ok"
+    bound = c.get("bound")
+    return "within" if bound is not None and g + bound >= CONTACT_MIN else "fail"
+
+
+def length_decimals(dec: int) -> int:
+    """The decimals of Table 1's lengths that are not read off the drawing (aw, a, p, pb): the
+    column's ``table_decimals`` and at least two — the lab prints aw to 0,01 mm, the centre distance
+    being machined (review 12: «110» for 109,977)."""
+    return max(dec, 2)
 
 
 def agreeing(exact: float, graphical: float | None, decimals: int, lang: str
@@ -209,12 +234,12 @@ DELTA_DECIMALS = 2       # δ % as the lab and the other sheets print it (sheets
 
 def delta_text(v: float | None, lang: str) -> str:
     """A percent error δ to ``DELTA_DECIMALS`` places (one count of decimals down a table's δ
-    column: review 10 had 2,5 beside −0,869 and 0,144), "0" where it rounds to nothing, a true
-    minus, "—" for none; the sheet's tables and the terminal print the same text."""
+    column: review 10 had 2,5 beside −0,869 and 0,144), a true
+    minus, "—" for none; "0,00" where it rounds to nothing (review 12: «0» beside «0,40»); the sheet's
+    tables and the terminal print the same text."""
     if v is None or not math.isfinite(v):
         return "—"
-    if round(v, DELTA_DECIMALS) == 0:
-        return "0"
+    v = round(v, DELTA_DECIMALS) + 0.0                   # (no "−0,00")
     return f"{v:.{DELTA_DECIMALS}f}".replace(".", "," if lang == "uk" else ".").replace("-", "−")
 
 
@@ -253,13 +278,15 @@ def _table(rows: list[list[str]]) -> list[str]:
 def pair_lines(d: dict, lang: str) -> list[str]:
     w = WORDS[lang]
     n = lambda x, k=4: "—" if x is None else num(x, lang, k).replace("-", "−")   # noqa: E731
-    mm = lambda v: n(v * 1000)                                                     # noqa: E731
     yes = lambda b: w["yes"] if b else w["no"]                                      # noqa: E731
     lines = [w["pair"] + ":", w["data"].format(z=", ".join(map(str, d["z"])), m=n(d["module_m"] * 1000),
                                                 a=n(d["alpha_deg"]), h=n(d["addendum"]), c=n(d["clearance"]),
                                                 x=", ".join(n(v) for v in d["x"]))]
     if d["shifts"] == "auto":
         lines.append(w["auto"].format(rule=d["auto"]["rule_uk" if lang == "uk" else "rule"]))
+    g = d.get("graphical")
+    ld = length_decimals(table_decimals(g) if g else 4)        # as Table 1: aw to 0,01 mm at least
+    mm = lambda v: fixed(v * 1000, lang, ld).replace("-", "−")                      # noqa: E731
     lines.append(w["geo"].format(aw=n(d["alpha_w_deg"], 6), a=mm(d["a_m"]), w=mm(d["a_w_m"]), y=n(d["y"]),
                                  dy=n(d["delta_y"]), p=mm(d["pitch_m"]), pb=mm(d["base_pitch_m"])))
     c = d["contact_ratio"]
@@ -270,7 +297,8 @@ def pair_lines(d: dict, lang: str) -> list[str]:
     lines.append(w["quality"].format(u=", ".join(yes(v) for v in q["undercut"]),
                                      s=", ".join(yes(v) for v in q["pointed"]),
                                      i=", ".join(yes(v) for v in q["interference"]),
-                                     e=w["ok"] if q["contact_ratio_ok"] else w["fail"],
+                                     e=w["ok"] if q["contact_ratio_ok"] else w["fail"], g=cg or "—",
+                                     gv=w[eps_read_verdict(c)] if cg else "—",
                                      l1=n(q["sliding_max"][0]), l2=n(q["sliding_max"][1])))
     g = d.get("graphical")
     if g:
@@ -283,7 +311,7 @@ def pair_lines(d: dict, lang: str) -> list[str]:
         row = [w["rows"][key].replace("_", "")]
         for k in (0, 1):
             te, tg, e = agreeing(ex[k] * 1000, None if gr is None else gr[k] * 1000, dec, lang)
-            row += [te, tg, "" if e is None else n(e, 3)] if gr is not None else [bare(te), "", ""]
+            row += [te, tg, delta_text(e, lang) if e is not None else ""] if gr is not None else [te, "", ""]
         rows.append(row)
     lines += [""] + _table(rows)
     return lines
@@ -312,7 +340,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"
         te, tg, e = agreeing(d["omega_rad_s"][k], g["omega_rad_s"][k] if g else None,
                              sig_decimals(d["omega_rad_s"][k]), lang)
-        rows.append([name, bare(te), bare(tg) if tg else tg, "" if e is None else n(e, 3)])
+        rows.append([name, bare(te), bare(tg) if tg else tg, "" if e is None else delta_text(e, lang)])
     lines += _table(rows)
     if d["candidates"]:
         lines += ["", w["cands"].format(n=d["candidates_passing"])]

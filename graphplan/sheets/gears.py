@@ -11,12 +11,13 @@ import math
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, most_teeth,
-                                     sliding_diagram)
+from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, lambda_mu,
+                                     most_teeth, sliding_diagram)
 from graphplan.graphic.record import Record
+from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
-from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, gears_json, sig_decimals,
-                                    table_decimals)
+from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
+                                    length_decimals, sig_decimals, table_decimals)
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
@@ -28,15 +29,17 @@ from graphplan.util.words import fixed, num
 WORDS = {
     "uk": {"subtitle": "Синтез зубчастих механізмів",
            "meshing": "Евольвентне зачеплення, М {scale} (μ_l = {mu} м/мм)",
-           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "уздовж N_{{1}}N_{{2}}; B_{{1}}B_{{2}} робоча (потовщено); μ_λ = {mu} 1/мм",
+           "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "абсциса ρ уздовж N_{{1}}N_{{2}}, М {scale} (μ_l = {mul} м/мм); B_{{1}}B_{{2}} робоча (потовщено); "
+                       "μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
-           "t3": "Таблиця 3. Планетарна передача: числа зубців, умови, кутові швидкості",
+           "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
            "cond": "умова", "bound": "межа", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
            "under": "без підрізання: x ≥ x_{min}", "point": "без загострення: s_a/m ≥ 0,25",
-           "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2", "lam": "найбільше |λ|",
+           "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2 за формулою",
+           "eps_both": "ε_α ≥ 1,2: формула / креслення", "within": "у межах", "lam": "найбільше |λ|",
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм",
@@ -61,19 +64,23 @@ WORDS = {
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
                      "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
+           "judged": "Умови таблиці 2 — за формулами; ε_α з креслення {g} < 1,2 {v}",
+           "judged_in": "у межах похибки ±{b}", "judged_out": "поза межею похибки ±{b}",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
            "past": "! — прочитане поза межею похибки від точності креслення"},
     "en": {"subtitle": "Gear synthesis",
            "meshing": "Involute meshing, scale {scale} (μ_l = {mu} m/mm)",
-           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "along N_{{1}}N_{{2}}; B_{{1}}B_{{2}} working (heavy); μ_λ = {mu} 1/mm",
+           "sliding": "Specific sliding λ_1, λ_2", "sliding2": "abscissa ρ along N_{{1}}N_{{2}}, scale {scale} (μ_l = {mul} m/mm); B_{{1}}B_{{2}} working "
+                       "(heavy); μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
-           "t3": "Table 3. Planetary train: teeth, conditions, angular velocities",
+           "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
            "cond": "condition", "bound": "bound", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "under": "no undercut: x ≥ x_{min}", "point": "not pointed: s_a/m ≥ 0.25",
-           "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2", "lam": "largest |λ|",
+           "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2 by the formula",
+           "eps_both": "ε_α ≥ 1.2: formula / drawing", "within": "within", "lam": "largest |λ|",
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm",
@@ -98,6 +105,8 @@ WORDS = {
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
+           "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
+           "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
            "past": "! — a reading outside its bound from the drafting precision"},
 }
@@ -138,16 +147,19 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e)] if gr else [bare(te), "", ""]
+            row += [te, tg, _pct(e)] if gr else [te, "", ""]     # one count of decimals down the column
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
     rows.append(["ε_α", te, tg, _pct(e, "!" if c["outside_bound"] else "") if tg else "", "", "", ""])
-    # the terminal's figures (report.gears.pair_lines): αw to six, the rest to four significant figures
-    for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, 4),
-                      (f"a, {w['mm']}", p["a_m"] * 1000, 4), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
-                      (f"p, {w['mm']}", p["pitch_m"] * 1000, 4), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, 4)):
-        rows.append([sym, _n(v, lang, k), "", "", "", "", ""])
+    # the terminal's figures (report.gears.pair_lines): αw to six significant figures, y and Δy to
+    # four, the lengths to the column's decimals and at least 0,01 mm (the lab prints aw so: the centre
+    # distance is machined; review 12 had «110» for 109,977)
+    ld = length_decimals(dec)
+    for sym, v, k in (("α_w, °", p["alpha_w_deg"], 6), (f"a_w, {w['mm']}", p["a_w_m"] * 1000, -ld),
+                      (f"a, {w['mm']}", p["a_m"] * 1000, -ld), ("y", p["y"], 4), ("Δy", p["delta_y"], 4),
+                      (f"p, {w['mm']}", p["pitch_m"] * 1000, -ld), (f"p_b, {w['mm']}", p["base_pitch_m"] * 1000, -ld)):
+        rows.append([sym, _n(v, lang, k) if k > 0 else fixed(v, lang, -k).replace("-", "−"), "", "", "", "", ""])
     return table(_pct_cells(rows, lang), [22.0, 17.0, 17.0, 13.0, 17.0, 17.0, 13.0], row_h=6.0, size=2.5, title=w["t1"])
 
 
@@ -168,9 +180,18 @@ def quality_table(doc: dict, lang: str) -> Record:
     rows.append([w["interf"], f"{_n(rho[0] * 1000, lang)} ≥ {_n(lim[0] * 1000, lang)}",
                  f"{_n(rho[1] * 1000, lang)} ≥ {_n(lim[1] * 1000, lang)}",
                  " / ".join(yes(not v) for v in q["interference"])])
-    rows.append([w["eps"], _n(p["contact_ratio"]["exact"], lang), "", yes(q["contact_ratio_ok"])])
+    # εα judged by the formula, as the pair is designed, and apart from it on the value read off the
+    # drawing against its bound (review 12, mark 12: 1,2033 by the formula «met» beside 1,196 read)
+    c = p["contact_ratio"]
+    te, tg, _ = contact_ratio_text(c["exact"], c["graphical"], lang)
+    if tg:                                # by the formula / off the drawing, each judged
+        v = eps_read_verdict(c)
+        rows.append([w["eps_both"], f"{te} / {tg}", "",
+                     f"{yes(q['contact_ratio_ok'])} / " + (w["within"] if v == "within" else yes(v == "ok"))])
+    else:
+        rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
-    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
+    return table(rows, [50.0, 24.0, 24.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -231,6 +252,11 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
+        c = p["contact_ratio"]
+        v = eps_read_verdict(c) if c["graphical"] is not None and mesh.precision > 0 else "ok"
+        if v != "ok":                     # (review 12: 1,203 by the formula, 1,196 read)
+            out.append(w["judged"].format(g=contact_ratio_text(c["exact"], c["graphical"], lang)[1], v=w[
+                "judged_in" if v == "within" else "judged_out"].format(b=_n(c["bound"], lang, 2))))
         out += [w["warn"] + x for x in p[key]]
         parts.append(out)
         out = []
@@ -321,50 +347,98 @@ SHARES = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0
           (0.5, 0.6), (0.5, 0.5))   # (vA, the sun's segment and h) × their sizes: the segment longer where the
 #                                   row is wide, vA and it shorter where too wide
 GROW = (4.0, 3.5, 3.0, 2.5, 2.2, 2.0, 1.8, 1.6, 1.5, 1.4, 1.3, 1.2, 1.1, 1.0)   # the planetary pictures' sizes tried, × (80, 60, 100) mm
-# (the ring's radius, vA, the sun's segment)
+# (the ring's radius, vA, the sun's segment): a set's (``_set_grown``); the A1 sheet takes the scheme's scales
+# they give (``_grown``)
 H_MIN = 40.0             # mm: the pole distance of a grown plan of angular velocities at least this
+
+
+def _size(r: Record) -> tuple[float, float]:
+    b = r.bounds()
+    return b[2] - b[0], b[3] - b[1]
+
+
+SCHEME_SHARES = (1.4, 1.0, 0.65)   # vA × its size tried with each scale of the scheme, the longest first
+#                                       (vA and h cancel in every ω: a longer vA makes the plan no taller for its S)
+
+
+def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w: float, room_h: float,
+           h_min: float, memo: dict | None = None):
+    """The planetary pictures with the scheme at the scale ``ring_mm`` gives and vA about ``va_mm``, the
+    plan of angular velocities as large as the zone ``room_w`` × ``room_h`` (the pictures with their
+    caption) takes — by arithmetic on the zone's size (review 12 mark 11, review 13 mark 9: ωH read off
+    a 3,8–9 mm segment while the zone was two thirds empty): every segment of the plan is the sun's S
+    times ωi/ω1 and h = S·yA/vA, so the plan's span grows as S·(1 + |ω2|/ω1) and its height as
+    S·yA/vA; S is the largest the zone's spare width and height allow, measured on the pictures drawn
+    at a first S, then checked on the pictures drawn (a few per cent less while labels push them out).
+    (velocities, captioned record), or None when none fits or h would be under ``h_min``. ``memo``: the
+    pictures drawn, kept across calls for the same train (a set tries several heights)."""
+    om = tr.omega
+    span = 1.0 + max((abs(om[k]) for k in om if k != "1" and om[k] < 0), default=0.0) / abs(om["1"])
+
+    memo = {} if memo is None else memo
+
+    def at(S: float):
+        key = (round(ring_mm, 6), round(va_mm, 6), round(S, 3))
+        if key not in memo:
+            try:
+                v = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=S)
+                memo[key] = v, _plan(v, lang)
+            except GraphplanError:
+                memo[key] = None
+        return memo[key]
+
+    def fits(d) -> bool:
+        w_, h_ = _size(d[1])
+        return w_ <= room_w and h_ <= room_h and d[0].h >= h_min
+
+    S = 100.0
+    d = at(S)
+    if d is None:
+        return None
+    got = d if fits(d) else None
+    for _ in range(2):                    # from the pictures at S, the S that fills the zone; once more from it
+        w_, h_ = _size(d[1])
+        tall = d[0].heights["A"] / d[0].va_mm     # h per mm of the sun's segment
+        target = min(S + min((room_w - w_) / span, (room_h - h_) / tall), 150.0 / tall)   # h ≤ 150 mm
+        if abs(target - S) < 0.5:
+            break
+        for _ in range(5):                # labels may push the pictures out: a little less
+            e = at(target)
+            if e is not None and fits(e):
+                break
+            target = S + 0.8 * (target - S)
+        else:
+            break
+        S, d, got = target, e, e
+    return got
 
 
 def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
     λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
-    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: the ring's
-    radius, vA and the sun's segment grown together, μl and μv the round values of the series, the
-    first (largest) that fits; the pictures as they were when none fits."""
-    def size(r: Record) -> tuple[float, float]:
-        b = r.bounds()
-        return b[2] - b[0], b[3] - b[1]
-    mesh_w, mesh_h = size(meshing_leaf(mesh, lang))               # the meshing with its caption
-    lam_w = 0.0 if beside(region, mesh) else size(mesh.lam)[0] + GAP
+    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: for each
+    scale of the scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) and vA
+    (``SCHEME_SHARES``), the plan of angular velocities filling the zone (``filled``): the largest scheme
+    with which the plan fits, the plan then as long as the zone allows (the heights r1, aw, r3 laid off
+    longer and the segments read longer both lower the bound of u1H's error: review 12's 1:1 reads
+    within ±0,94 where 1:2 with a 1 mm longer ωH reads within ±1,53). The pictures as they were when
+    none fits."""
+    mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
+    lam_w = 0.0 if beside(region, mesh) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
     room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
-    shares = SHARES
-
-    def drawn(k: float, va_share: float, share: float):
-        try:
-            v = construct_train(tr, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
-                                sun_segment_mm=100.0 * k * share)
-        except GraphplanError:
-            return None
-        p = _plan(v, lang)
-        w_, h_ = size(p)
-        return (v, p) if h_ <= room_h and w_ <= room_w and v.h >= min(H_MIN, vel.h) else None
-
-    # the largest size whose narrowest variant fits (halving the list of sizes: the pictures grow
-    # with k), then at that size the widest variant that fits
-    lo, hi, got = 0, len(GROW) - 1, None
-    while lo <= hi:
-        mid = (lo + hi) // 2
-        if drawn(GROW[mid], *shares[-1]) is not None:
-            got, hi = mid, mid - 1
-        else:
-            lo = mid + 1
-    if got is None:
-        return vel, plan
-    for va_share, share in shares:
-        found = drawn(GROW[got], va_share, share)
-        if found is not None:
-            return found
+    r = tr.radii
+    r3 = r["3"]
+    top = max(r3, r["H"] + max(r["2"], r.get("2'", 0.0)))      # the scheme's top: the ring or the planet over it
+    scales = sorted({at_least(r3 / (80.0 * k)) for k in GROW})     # the scheme's scales, the largest drawing first
+    for mu in scales:
+        ring = r3 / mu * (1 + 1e-9)                              # (``construct_train`` takes μl = this scale)
+        if top / mu + 26.0 + min(H_MIN, vel.h) + 20.0 > room_h:   # the scheme, the plan under it, its labels
+            continue
+        for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
+            d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
+            if d is not None:
+                return d
     return vel, plan
 
 
@@ -403,7 +477,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
         else:                             # a set's: as tall as the planetary pictures
             row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mesh.mu_l))
+        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
     return mesh, vel, plan
 
 
@@ -515,8 +589,7 @@ def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list
     tables: list[Leaf] = []
     if mesh is not None:
         drawings.append(Leaf("meshing", record=meshing_leaf(mesh, lang)))
-        drawings.append(Leaf("sliding", record=captioned(mesh.lam, w["sliding"], w["sliding2"].format(
-            mu=_n(mesh.lam.scales["mu_lambda"], lang)))))
+        drawings.append(Leaf("sliding", record=sliding_leaf(mesh.lam, lang)))
         tables += [Leaf("geometry", record=geometry_table(doc, lang)), Leaf("quality", record=quality_table(doc, lang))]
     if plan is not None:
         drawings.append(Leaf("planetary", record=plan))
@@ -562,9 +635,19 @@ def _set_lambda(sol, mesh, f: Form, lang: str) -> Leaf:
     in height (over its title block form 2a), captioned."""
     from graphplan.sheets.gearset import later_keep
     x0, y0, x1, y1 = field_of(f)
-    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP, sol.pair.g / mesh.mu_l))
+    rec = sliding_diagram(sol.pair, mesh, lambda_unit(y1 - later_keep(f)[3] - GAP,
+                                                    sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
+    return Leaf("sliding", record=sliding_leaf(rec, lang))
+
+
+def sliding_leaf(rec: Record, lang: str) -> Record:
+    """The λ diagrams captioned: the name, then the abscissa's scale — a length along N1N2 of the part,
+    as GOST 2.302's scale and μl (review 12, mark 22: only «уздовж N1N2» was printed) —, the working
+    part heavy, and μλ."""
     w = WORDS[lang]
-    return Leaf("sliding", record=captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang))))
+    mu = rec.scales["mu_l"]
+    return captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang), mul=_n(mu, lang),
+                                                             scale=drawing_scale(mu, lang)))
 
 
 def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None):
@@ -598,18 +681,48 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
         d = drawn(SET_GROW[mid], *SHARES[-1])
         out = kept(*d) if d is not None and good(d[0]) else None
         if out is not None:
-            got, hi = (mid, out), mid - 1
+            got, hi = (mid, out, d), mid - 1
         else:
             lo = mid + 1
     if got is None:
-        return pages
-    for va_share, share in SHARES[:-1]:
-        d = drawn(SET_GROW[got[0]], va_share, share)
-        if d is not None and good(d[0]):
-            out = kept(*d)
-            if out is not None:
-                return out
-    return got[1]
+        chosen = (vel, pages)
+    else:
+        chosen = (got[2][0], got[1])
+        for va_share, share in SHARES[:-1]:
+            d = drawn(SET_GROW[got[0]], va_share, share)
+            if d is not None and good(d[0]):
+                out = kept(*d)
+                if out is not None:
+                    chosen = (d[0], out)
+                    break
+    return _set_filled(sol, f, precision, lang, chosen, vel, kept)
+
+
+def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
+    """A set's planetary pictures at their scheme's scale with the plan of angular velocities filling
+    the sheet's width at the pictures' height (``filled``; review 12 mark 11: the A3 set's ωH was a
+    6-mm segment on a sheet two thirds empty), where that keeps the set's count of sheets and reads
+    u1H better (its bound smaller); the pages of ``chosen`` (velocities, pages) else."""
+    from graphplan.sheets.gearset import later_keep
+    v0, pages = chosen
+    x0, y0, x1, y1 = field_of(f)
+    h0 = _size(_plan(v0, lang))[1]
+    full = y1 - later_keep(f)[3] - GAP
+    ring = sol.train.radii["3"] / v0.mu_l * (1 + 1e-9)
+    memo: dict = {}
+    tried = set()
+    for room_h in (full, 0.5 * (full + h0), h0):      # the sheet's height, then less
+        for va_share in (2.0, 1.0):       # (the longest vA first: at a given height the longest plan)
+            d = filled(sol.train, precision, lang, ring, 60.0 * ring / 80.0 * va_share, x1 - x0, room_h,
+                       min(H_MIN, vel.h), memo)
+            if d is not None and d[0].ratio_bound < v0.ratio_bound - 1e-12:
+                if id(d) not in tried:    # (a set tried once)
+                    tried.add(id(d))
+                    out = kept(*d)
+                    if out is not None:
+                        return out
+                break                     # (a shorter vA only makes it taller)
+    return pages
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
