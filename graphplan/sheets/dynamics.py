@@ -979,7 +979,7 @@ def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
 
 
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None,
-              lead: Leaf | None = None):
+              lead: Leaf | None = None, rewrapped=None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
     the drawings' ``rows``, then the tables and the notes in one row — the last drawing (ω) in its
     row or leading the tables' —, in the order of the work; where the first drawing does not fit
@@ -998,8 +998,14 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
         if order != "drawings" and tried and tried[0][1] == 0:
             break                          # the order of the work lays out: taken as before
         ends = tables if order in ("drawings", "tables") else tables[1:]
-        for tail in ([ends + [notes]], [ends[:-1] + [Stack([ends[-1], notes])]],
-                     [ends[:-1] + [Row([ends[-1], notes])]]):     # the last drawing (ω) goes with the tables
+        # the notes beside the last table also set as wide as the rest of its row (``rewrapped``):
+        # fewer lines, so that ω(φ) still goes under them with the tables (the compressor's notes at
+        # the title block's width, 81 mm high, left ω 0.8 mm short of its sheet: it took one alone)
+        wide = region[2] - region[0] - ends[-1].w - GAP
+        beside = ([[ends[:-1] + [Row([ends[-1], rewrapped(wide)])]]]
+                  if rewrapped is not None and ends and wide > notes.w + 1e-9 else [])
+        for tail in [[ends + [notes]], [ends[:-1] + [Stack([ends[-1], notes])]],
+                     [ends[:-1] + [Row([ends[-1], notes])]]] + beside:     # the last drawing (ω) goes with the tables
             if order == "drawings":        # in the order of the work: ω beside the band, or leading the tables' row
                 ways = [rows + tail, rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]]
             elif order == "data":          # the table of the positions first, the results' tables last
@@ -1095,7 +1101,7 @@ def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Lea
     lead = Leaf(tables[0].name, record=enlarged(tables[0].record, TABLES)) if factor == 1.0 else None
     speed, laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
         [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, field_of(f), keep_out(f), _later_keep(f),
-        lead=lead))
+        lead=lead, rewrapped=None if nook is not None else (lambda w: Leaf("notes", record=note_block(note_lines, w)))))
     return laid, nook, speed
 
 
