@@ -936,7 +936,7 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
         return plain
     x0, y0, x1, y1 = plain.bounds()
-    half = max(x1 - x0, text_width(f"{word('force plan of group', lang)} {gp.label}", CAPTION_MM)) / 2
+    half = max(x1 - x0, _caption_across(gp.label)) / 2
     room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
     beside = gp.kind == "crank"
     out = _polygon(fp, gp, lang, detail=True, beside=beside)
@@ -1028,6 +1028,16 @@ DETAIL_GAP = 8.0         # mm between the crank group's plan and its detail set 
 CAPTION_MM = 5.0         # the sheet's caption under a plan (sheets.compose.CAPTION)
 
 
+def _caption_across(label: str) -> float:
+    """How wide the sheet's caption under group ``label``'s force plan is (5 mm lettering,
+    centred) in the wider of its languages ("Force plan of group I(0-1)", not "План сил групи
+    I(0-1)"): the plan's cell is sized for both (``sheets.forces.ForceDrafter.plan_size``), so the
+    Ukrainian drawing has that room too (measured by its own caption, the slotter's crank detail
+    found no corner and went under the sliver, 36 mm down: its A3 set took a sixth sheet)."""
+    from graphplan.util.words import LANGS
+    return max(text_width(f"{word('force plan of group', lang)} {label}", CAPTION_MM) for lang in LANGS)
+
+
 @dataclass
 class PlanDetail:
     """Where a force plan's short sides crowd (the crank group's G1 and Φ1 at the tip of a sliver
@@ -1112,9 +1122,9 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     ink = unary_union([_ink_of(rec)] + [shapely_box(*q.ink()).buffer(DETAIL_CLEAR)
                                         for q in rec.items if q.kind == "text"])
     rb = rec.bounds()
-    # the plan's room: as wide as the sheet's caption under it ("План сил групи I(0-1)", 5 mm,
-    # centred), which a sliver's cell takes anyway
-    half = max(rb[2] - rb[0], text_width(f"{word('force plan of group', lang)} {gp_label}", CAPTION_MM)) / 2
+    # the plan's room: as wide as the sheet's caption under it (``_caption_across``), which a
+    # sliver's cell takes anyway
+    half = max(rb[2] - rb[0], _caption_across(gp_label)) / 2
     mid = (rb[0] + rb[2]) / 2
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
     for mu, out in tries:

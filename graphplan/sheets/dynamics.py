@@ -5,7 +5,7 @@ position, the flywheel by each method with its error and the motor."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -763,9 +763,53 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                 if len(_SHORT) >= 64:
                     _SHORT.pop(next(iter(_SHORT)))
                 _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
-    length = next((g for g in _lengths(L) if on_a_page(Leaf("band", *band_least(built(L, size), g)))
-                   and on_a_page(band_leaf(L, size, g))), _lengths(L)[-1])
-    return L, size, 1.0, "set", 1, length, False
+    def band_length(L_: float, size_: float) -> float:     # the band's longest φ axis a later sheet holds
+        return next((g for g in _lengths(L_) if on_a_page(Leaf("band", *band_least(built(L_, size_), g)))
+                     and on_a_page(band_leaf(L_, size_, g))), _lengths(L_)[-1])
+
+    def sheets(L_: float, size_: float) -> tuple[int, int]:
+        """The set laid out at (L_, size_) as the sheet lays it (``_set_laid``), the worse language:
+        its sheets that hold no drawing (tables and notes only), then its count of sheets."""
+        fw_, g = built(L_, size_), band_length(L_, size_)
+        short_ = _SHORT.get(key)
+        short_ = replace(short_, kl=kl(L_, size_)) if short_ is not None else None
+        bw = [_band_size(band(fw_, other, g)[1]) for other in LANGS]
+        worst = (0, 0)
+        for lang in LANGS:
+            _, drawn = _drawn(dyn, args, L_, size_, lang, fw_)
+            doc = dynamics_json(fw_)
+            leaves_ = {"moments": Leaf("moments", record=drawn["moments"]),
+                       "band": Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw),
+                                    record=_union(band(fw_, lang, g)[0]))}
+            tables_ = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, 1.0)]
+            laid = _set_laid(f, fw_, doc, lang, leaves_, tables_, 1.0, g, lines_of(notes(fw_, doc, lang, short_)))[0]
+            if laid is None:
+                return (10 ** 6, 10 ** 6)
+            bare = sum(1 for page in laid if not {leaf.name for leaf, _ in page if leaf.record is not None} & SET_DRAWN)
+            worst = max(worst, (bare, len(laid)))
+        return worst
+    # judged by its sheets: where the set leaves a sheet with only tables and notes (the compressor's
+    # A3 set at L 300: the English notes no longer fit under the band, Tables 2–3 and the notes alone
+    # on a fourth sheet), the next shorter L (``SET_PATIENCE`` of them) at the same size that every
+    # sheet of the set holds as the search required and that reads the flywheel as the search did
+    # (|kl| the A1 sheet's where it reached it, else to ``ORDERED_READ``) and lays no such sheet
+    key = _construction_key(st, dyn, f, args)
+    at = sheets(L, size)
+    if at[0] > 0:
+        first = fits(L, size, True)
+        floor = target if target is not None and kl(L, size) >= target - 1e-9 else args.precision / ORDERED_READ
+        low = min(L_ for L_, _ in sizes)
+        for step in range(1, SET_PATIENCE + 1):
+            L_ = L - SET_L_STEP * step
+            if L_ < low - 1e-9 or kl(L_, size) < floor - 1e-9 or not fits(L_, size, first):
+                continue
+            got = sheets(L_, size)
+            if got[0] == 0 and got[1] <= at[1]:
+                L = L_
+                if key in _SHORT:
+                    _SHORT[key] = replace(_SHORT[key], kl=kl(L, size))
+                break
+    return L, size, 1.0, "set", 1, band_length(L, size), False
 
 
 ORDERED_READ = 0.02      # a set out of the order of the work (its tables first) only where in order |kl| would
@@ -774,6 +818,7 @@ ORDERED_READ = 0.02      # a set out of the order of the work (its tables first)
 SET_SIZES = (1.5, 1.3, 1.2, 1.15, 1.1, 1.05, 1.0, 0.9, 0.8, 0.7, 0.6, 0.55, 0.5, 0.45, 0.4, 0.35, 0.3)
 SET_L_STEP = 10.0        # mm: the set's abscissae L tried, from the longest down
 SET_PATIENCE = 3         # L tried past the largest |kl| found before a set settles for it
+SET_DRAWN = {"moments", "band", "speed"}    # a set's drawings: each of its sheets holds one
 
 
 def _later_keep(f: Form) -> tuple[float, float, float, float]:
@@ -947,7 +992,7 @@ def _set_speed(f: Form, fw: Flywheel, lang: str, lay) -> tuple[Leaf, list]:
 
 
 def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, keep, later=None,
-              lead: Leaf | None = None):
+              lead: Leaf | None = None, rewrapped=None):
     """A set's sheets (drawing.layout.flow, the later sheets kept clear of their form 2a ``later``):
     the drawings' ``rows``, then the tables and the notes in one row — the last drawing (ω) in its
     row or leading the tables' —, in the order of the work; where the first drawing does not fit
@@ -966,8 +1011,14 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
         if order != "drawings" and tried and tried[0][1] == 0:
             break                          # the order of the work lays out: taken as before
         ends = tables if order in ("drawings", "tables") else tables[1:]
-        for tail in ([ends + [notes]], [ends[:-1] + [Stack([ends[-1], notes])]],
-                     [ends[:-1] + [Row([ends[-1], notes])]]):     # the last drawing (ω) goes with the tables
+        # the notes beside the last table also set as wide as the rest of its row (``rewrapped``):
+        # fewer lines, so that ω(φ) still goes under them with the tables (the compressor's notes at
+        # the title block's width, 81 mm high, left ω 0.8 mm short of its sheet: it took one alone)
+        wide = region[2] - region[0] - ends[-1].w - GAP
+        beside = ([[ends[:-1] + [Row([ends[-1], rewrapped(wide)])]]]
+                  if rewrapped is not None and ends and wide > notes.w + 1e-9 else [])
+        for tail in [[ends + [notes]], [ends[:-1] + [Stack([ends[-1], notes])]],
+                     [ends[:-1] + [Row([ends[-1], notes])]]] + beside:     # the last drawing (ω) goes with the tables
             if order == "drawings":        # in the order of the work: ω beside the band, or leading the tables' row
                 ways = [rows + tail, rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]]
             elif order == "data":          # the table of the positions first, the results' tables last
@@ -1048,6 +1099,25 @@ def _analysed(st: Study, delta: float | None):
     return _ANALYSED[key]
 
 
+def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Leaf], tables: list[Leaf],
+              factor: float, length: float, note_lines: list[str]):
+    """A set's sheets in ``lang`` (``_set_flow``, ω(φ) grown by ``_set_speed``): the notes in the
+    band's nook where they fit it in both languages (the same sheets in either), else with the
+    tables. Returns the laid sheets (None where a drawing is larger than a sheet), the nook (or
+    None) and ω(φ)'s leaf. ``leaves``: the moments and the band (with records)."""
+    boxes = band(fw, lang, length)[1]
+    nook = nook_for(boxes, note_lines)
+    if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
+                                for other in LANGS if other != lang):
+        nook = None                      # the same sheets in either language
+    nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
+    lead = Leaf(tables[0].name, record=enlarged(tables[0].record, TABLES)) if factor == 1.0 else None
+    speed, laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
+        [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, field_of(f), keep_out(f), _later_keep(f),
+        lead=lead, rewrapped=None if nook is not None else (lambda w: Leaf("notes", record=note_block(note_lines, w)))))
+    return laid, nook, speed
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
@@ -1086,16 +1156,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     if shape == "set":
         # the notes in the band's nook where they fit it, as on the A1 sheet (the band's sheet not half
         # empty); else with the tables. The set reads in the order of the work: the moments on the
-        # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_flow``)
-        nook = nook_for(boxes, note_lines)
-        if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
-                                    for other in LANGS if other != lang):
-            nook = None                      # the same sheets in either language
-        nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
-        lead = Leaf(tables[0].name, record=enlarged(tables[0].record, TABLES)) if factor == 1.0 else None
-        leaves["speed"], laid = _set_speed(f, fw, lang, lambda speed: _set_flow(
-            [[leaves["moments"]], [leaves["band"], speed]], tables, nleaf, region, keep_out(f), _later_keep(f),
-            lead=lead))
+        # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_laid``)
+        laid, nook, leaves["speed"] = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
         if laid is None:
             raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = [[q for leaf, b in page if leaf.record is not None
