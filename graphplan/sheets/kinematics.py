@@ -27,7 +27,7 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, tree)
+                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place, tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
 
@@ -339,6 +339,10 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
         again = choose()
         if again != p and _checked(dr, nat, again):
             p = again
+    else:       # one sheet's diagrams drawn shorter for the room across get their height back where it is
+        tall = taller_in_place(dr, nat, f, p)
+        if tall != p and _checked(dr, nat, tall):
+            p = tall
     return p, nat, dr
 
 

@@ -217,6 +217,42 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
 
 
+def composed_fits(nat: Natural, f: Form, p: Plan, D: Leaf) -> bool:
+    """Whether one sheet's composition ``p`` (its scales, shape, grids and table columns as chosen)
+    holds the diagrams' leaf ``D`` (``one_sheet_at``'s arithmetic)."""
+    x0, y0, x1, y1 = field_of(f)
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
+    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts)[0]
+    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts)[:2]
+    P = nat.leaf("position", p.mu["position"])
+    V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
+    A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
+    vg = Grid(V, p.vcols, fitted=True) if V else None
+    ag = Grid(A, p.acols, fitted=True) if A else None
+    tw, th = extent(tree(p.shape, P, D, vg, ag, C, halves))
+    return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
+
+
+def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """One sheet's diagrams, drawn shorter for the room across, given back their height where the
+    composition has it (the same scales, shape and columns): the tallest height factor up to 1 in
+    ``HEIGHT_STEP`` that still fits, is right (graphic.redraw) and no flatter — review 12: the A1
+    drew its diagrams at 0.5 (L 120 mm) beside a 301-mm column of tables, φ5 29 mm high at
+    μφ 0,01 рад/мм where the A3 set draws it 72 mm; at (0.5, 1) φ5 is 71 mm (μφ 0,004)."""
+    long_, tall = factors(p.diagrams)
+    if tall >= 1.0 - 1e-9:
+        return p
+
+    # tallest first; not by bisection: a pair's poles follow its height allowance (``first_options``),
+    # so its block's height is not monotonic in the factor (0.6 drew 239 mm, 0.7 232 mm here)
+    for j in range(int(round((1.0 - tall) / HEIGHT_STEP)), 0, -1):
+        k = (long_, round(tall + j * HEIGHT_STEP, 6))
+        if composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) and dr.diagrams_right(k) \
+                and flat(dr, k) <= flat(dr, p.diagrams) and drawn_share(dr, k) >= drawn_share(dr, p.diagrams) - 1e-9:
+            return Plan(p.mu, k, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets, p.counts, p.after, p.notes)
+    return p
+
+
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
 KEPT = 0.9        # … where every other plan keeps at least this share of its size
 GAIN = 2.0        # … and the position plan is drawn at least this many times as large
