@@ -67,6 +67,16 @@ def test_the_block_past_the_short_levers_end_is_warned_of_in_one_line():
     assert not any("past the end" in w for w in scene_study(SIXBAR12).warnings)
 
 
+def test_the_sheets_notes_carry_the_warning_with_subscripts():
+    """Mark 9 on the sheet: the kinematics notes say the warning, the link O₃E and |O₃C| in markup."""
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.sheets.kintables import notes_lines
+    st = scene_study(SIXBAR12_SHORT)
+    lines = notes_lines(st, build_plans(st), chord_diagrams(st, precision=0.5), "en", 0.5)
+    said = [line for line in lines if "past the end E of the link O_{3}E" in line]
+    assert len(said) == 1 and "|O_{3}C| up to 421.5 mm" in said[0]
+
+
 def test_analyze_prints_the_warning(capsys):
     """Mark 9: `analyze` says it (the terminal's warnings), in the scene's language."""
     import tempfile

@@ -235,22 +235,34 @@ def composed_fits(nat: Natural, f: Form, p: Plan, D: Leaf) -> bool:
 
 def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     """One sheet's diagrams, drawn shorter for the room across, given back their height where the
-    composition has it (the same scales, shape and columns): the tallest height factor up to 1 in
-    ``HEIGHT_STEP`` that still fits, is right (graphic.redraw) and no flatter — review 12: the A1
-    drew its diagrams at 0.5 (L 120 mm) beside a 301-mm column of tables, φ5 29 mm high at
-    μφ 0,01 рад/мм where the A3 set draws it 72 mm; at (0.5, 1) φ5 is 71 mm (μφ 0,004)."""
+    composition has it (the same scales, shape and columns): of the height factors up to 1 in
+    ``HEIGHT_STEP`` that still fit, are right (graphic.redraw) and no flatter, the one read closest
+    to the exact values at the positions (redraw's largest |δ|, what Table 5 prints), then drawn
+    largest — as a set's diagrams are grown (``taller``); kept where none reads better. Review 12:
+    the A1 drew φ5 29 mm high (L 120 mm, μφ 0,01 рад/мм) beside a 301-mm column of tables; there
+    the chords' own error rules ε5 (17.5 % at 0.5, 22.7–38 % at the taller heights), so it stays."""
+    from graphplan.sheets.kinematics import diagram_options
     long_, tall = factors(p.diagrams)
     if tall >= 1.0 - 1e-9:
         return p
+    o = dr.opts
 
-    # tallest first; not by bisection: a pair's poles follow its height allowance (``first_options``),
-    # so its block's height is not monotonic in the factor (0.6 drew 239 mm, 0.7 232 mm here)
+    def judged(k) -> tuple[float, float]:
+        r = diagram_options(dr.st, k, o.positions, o.precision, dr.room, dr.floor)["redrawn"]
+        return (round(r.off_after, 1) if r.off_after is not None else math.inf, -round(drawn_share(dr, k), 6))
+    best, score = p.diagrams, judged(p.diagrams)
+    # not by bisection: a pair's poles follow its height allowance (``first_options``), so its
+    # block's height is not monotonic in the factor (0.6 drew 239 mm, 0.7 232 mm here)
     for j in range(int(round((1.0 - tall) / HEIGHT_STEP)), 0, -1):
         k = (long_, round(tall + j * HEIGHT_STEP, 6))
-        if composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) and dr.diagrams_right(k) \
-                and flat(dr, k) <= flat(dr, p.diagrams) and drawn_share(dr, k) >= drawn_share(dr, p.diagrams) - 1e-9:
-            return Plan(p.mu, k, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets, p.counts, p.after, p.notes)
-    return p
+        if not (composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) and dr.diagrams_right(k)
+                and flat(dr, k) <= flat(dr, p.diagrams)):
+            continue
+        got = judged(k)
+        if got < score:
+            best, score = k, got
+    return p if best == p.diagrams else Plan(p.mu, best, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets,
+                                             p.counts, p.after, p.notes)
 
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan

@@ -734,5 +734,5 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
         extra.append(w('swing', link=subscripted(st.output.name), deg=fixed(psi, lang, 2),
                        rad=fixed(math.radians(psi), lang, 4), a=primed(out, 1), b=primed(out, 2)))
     # the study's warnings (a block past its slotted link's end, a group near locking), as `analyze` says them
-    extra += [f"{word('warnings', lang)}: {text}" for text in st.says(lang)]
+    extra += [f"{word('warnings', lang)}: {subscripted(text)}" for text in st.says(lang)]   # O₃C, O₃E
     return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag)), lang))
