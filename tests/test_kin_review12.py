@@ -147,3 +147,41 @@ def test_epsilon_rows_follow_the_link_numbers():
             assert numbers == sorted(numbers)
             seen += plan == "acceleration" and numbers == [2, 3, 4, 5]
     assert seen == 1
+
+
+def test_the_last_wide_table_goes_under_the_columns_in_reading_order():
+    """Mark 4's cause: the six-bar's tables T1, T2 | T3, T4, T5 were set 413 mm wide (T5, the
+    diagrams' readings, 175 mm, in the second column); under the columns T1, T2 | T3, T4 they are
+    328 mm wide and no taller. The boxes placed: inside the block, apart, read down each column,
+    then the last under them at the block's left."""
+    from graphplan.drawing.layout import GAP, Leaf
+    from graphplan.sheets.kinlayout import place_tables, table_groups, tables_size
+    tabs = [Leaf("T1", 232.0, 84.1), Leaf("T2", 90.0, 151.5), Leaf("T3", 90.0, 151.5), Leaf("T4", 77.0, 89.2),
+            Leaf("T5", 175.0, 51.2)]
+    flat_ = table_groups(tabs, 2)
+    under = table_groups(tabs, 2, under=True)
+    assert [[t.name for t in g] for g in under] == [["T1", "T2"], ["T3", "T4"], ["T5"]]
+    w0, h0 = tables_size(flat_)
+    w1, h1 = tables_size(under, True)
+    assert w0 == pytest.approx(232 + GAP + 175) and w1 == pytest.approx(232 + GAP + 90)
+    assert h1 == pytest.approx(max(84.1 + GAP + 151.5, 151.5 + GAP + 89.2) + GAP + 51.2) and h1 <= h0 + 1e-9
+    placed = place_tables(under, 500.0, 400.0, True)
+    boxes = {q.name: q.box for q in placed}
+    assert list(boxes) == ["T1", "T2", "T3", "T4", "T5"]
+    for name, (x0, y0, x1, y1) in boxes.items():
+        assert 500.0 - w1 - 1e-9 <= x0 and x1 <= 500.0 + 1e-9 and 400.0 - h1 - 1e-9 <= y0 and y1 <= 400.0 + 1e-9, name
+    names = list(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            p, q = boxes[a], boxes[b]
+            assert p[2] <= q[0] + 1e-9 or q[2] <= p[0] + 1e-9 or p[3] <= q[1] + 1e-9 or q[3] <= p[1] + 1e-9, (a, b)
+    assert boxes["T5"][0] == pytest.approx(500.0 - w1) and boxes["T5"][3] < min(boxes[n][1] for n in names[:4])
+
+
+@pytest.mark.slow
+def test_the_a1_gives_the_position_plan_its_room():
+    """Mark 4: the A1 draws the six-bar's position plan at 1:4 or larger (GOST 2.302's series; the
+    A3 set's 1:2.5), no longer 1:5 beside a 413-mm block of tables."""
+    from graphplan.sheets.kinematics import sheet_scales
+    st = scene_study(SIXBAR12)
+    assert sheet_scales(st, "A1")["mu_l"] <= 0.004 + 1e-12

@@ -27,7 +27,8 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place, tree)
+                                        place_tables, room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place,
+                                        tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
 
@@ -429,8 +430,8 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         def high(w: float) -> float:
             b = note_block(d["notes"], w).bounds()
             return b[3] - b[1]
-        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts)
-        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts)
+        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under)
+        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under)
         if p.shape == "split":
             groups, width = groups_, TITLE
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
@@ -448,7 +449,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         foot = keep_out(f)[3]
         notes_box = (notes_at - width, foot, notes_at, foot + nb[3] - nb[1])
         items.append(Placed("notes", top_left(notes_rec, notes_box), notes_box))
-        items += set_columns(groups, tab_box[2] - column_size(groups)[0], tab_box[3])
+        items += place_tables(groups, tab_box[2], tab_box[3], p.under)
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)
