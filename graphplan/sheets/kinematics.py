@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, cells, centred, column_size, flow, set_columns, top_left
+from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, cells, centred, flow, top_left
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, grown,
