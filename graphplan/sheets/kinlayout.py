@@ -374,11 +374,10 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     for factor in (TABLES, 1.0):
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         # the tables in 1–3 columns; or the last (the diagrams' readings, 12 positions across: review
-        # 12's 175 mm) across under 2–3 columns of the others, where it is the widest — the six-bar's
-        # columns T1, T2 | T3, T4, T5 drew 413 mm wide beside a 1:5 position plan; T5 under them, 328
+        # 12's 175 mm) across under 2–3 columns of the others — the six-bar's columns T1, T2 | T3,
+        # T4, T5 drew 413 mm wide beside a 1:5 position plan; T5 under them, 328
         ways = [(parts, False) for parts in (1, 2, 3)][:max(1, len(tabs))]
-        if tabs and tabs[-1].w >= max(t.w for t in tabs[:-1] or [tabs[-1]]) * 0.5:
-            ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1]
+        ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1]
         cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under)[0] for parts, under in ways]
         halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under)[:2] for parts, under in ways]
 
