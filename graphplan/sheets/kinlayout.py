@@ -185,14 +185,15 @@ def tables_size(groups: list[list], under: bool = False) -> tuple[float, float]:
 
 def place_tables(groups: list[list], right: float, top: float, under: bool = False) -> list:
     """The tables placed from the block's top right corner (``set_columns``): in reading order, down
-    each column, then the next; the last group under them, at the block's left, where ``under``."""
+    each column, then the next; the last group under them, at the block's right, where ``under`` —
+    wider than the last column, it runs on under the one before: read after them all."""
     from graphplan.drawing.layout import Placed, set_columns, top_left
     w, _ = tables_size(groups, under)
     if not under or len(groups) < 2:
         return set_columns(groups, right - w, top)
     _, ch = column_size(groups[:-1])
     t = groups[-1][0]
-    b = (right - w, top - ch - GAP - t.h, right - w + t.w, top - ch - GAP)
+    b = (right - t.w, top - ch - GAP - t.h, right, top - ch - GAP)
     return set_columns(groups[:-1], right - w, top) + [
         Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)]
 
@@ -377,7 +378,10 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
         # 12's 175 mm) across under 2–3 columns of the others — the six-bar's columns T1, T2 | T3,
         # T4, T5 drew 413 mm wide beside a 1:5 position plan; T5 under them, 328
         ways = [(parts, False) for parts in (1, 2, 3)][:max(1, len(tabs))]
-        ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1]
+        # (only where it is wider than the last column: set at the block's right it then runs on under
+        # the column before — read after them all, not as the foot of one column)
+        ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1
+                 and tabs[-1].w > max(t.w for t in split(tabs[:-1], parts)[-1]) + GAP]
         cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under)[0] for parts, under in ways]
         halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under)[:2] for parts, under in ways]
 
