@@ -356,13 +356,24 @@ def table_numbers(sheet) -> list[str]:
             out += [n for _, _, n in sorted(titles, key=row)]
             continue
         titles.sort()
+
+        def box_of(t):
+            return next((pl.box for pl in page.placed if pl.box[0] - 1 <= t[0] <= pl.box[2] + 1
+                         and pl.box[1] - 1 <= -t[1] <= pl.box[3] + 1), None)
+        # a table across under the columns (the last, wide one): its box runs past a column to its
+        # right that stands above it — read after the columns
+        across = [t for t in titles if (b := box_of(t)) is not None
+                  and any(u[0] - t[0] >= 20.0 and u[0] < b[2] - 1 and -u[1] > b[3] for u in titles)]
         columns: list[list[tuple]] = []
         for t in titles:
+            if t in across:
+                continue
             if columns and t[0] - columns[-1][0][0] < 20.0:
                 columns[-1].append(t)
             else:
                 columns.append([t])
         out += [n for col in columns for _, _, n in sorted(col, key=lambda t: t[1])]
+        out += [n for _, _, n in sorted(across, key=lambda t: t[1])]
     return out
 
 

@@ -181,5 +181,7 @@ def test_a_dimensions_name_sets_only_the_pivots_number_low(case):
     from graphplan.util.markup import runs
     st, plans, doc, lang = case
     for name in (r[0] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]):
+        if name.startswith(("x_", "y_")):         # a frame pivot's coordinate: x_{O2}, the pivot as the subscript
+            continue
         for run in runs(name):
             assert run.level == 0 or run.text.isdigit(), (name, runs(name))

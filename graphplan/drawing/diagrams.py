@@ -11,6 +11,7 @@ import numpy as np
 from graphplan.graphic.chords import periodic_spline
 from graphplan.graphic.diagrams import v_knots
 from graphplan.graphic.record import Record, line_pitch
+from graphplan.util.markup import subscripted
 from graphplan.util.words import num, unit, word
 
 if TYPE_CHECKING:
@@ -86,8 +87,7 @@ def draw(d: Diagrams, lang: str = "uk") -> Record:
 
     s_sym, v_sym, a_sym = d.symbols
     mu_s, mu_v, mu_a = scale_symbols(d)
-    what = f"{d.point}"
-    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + " " + what
+    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + " " + subscripted(d.point)
     rec = Record(title=word("diagrams title", lang, what=what, how=method_words(d, lang)),
                  scales={"mu_s": d.mu_s, "mu_t": d.mu_t, "mu_v": d.mu_v, "mu_a": d.mu_a,
                          "H1_mm": d.H1, "H2_mm": d.H2, "L_mm": d.L})

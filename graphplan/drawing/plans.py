@@ -342,13 +342,35 @@ def catmull_rom(points: list[complex], closed: bool = True, per: int = 12) -> li
 
 def output_point(plans: Plans) -> str:
     """The point whose extreme positions are marked: the output slide's point, or the output
-    rocker's far joint."""
+    rocker's far joint — a slotted lever pivoted at its only joint (O3E) its farthest point from the
+    pivot, the end E (review 12: E′, E″ and the position numbers were lettered at the pivot O3)."""
     st = plans.study
     if st.output.kind == "slide":
         return st.output.name
     link = st.mech.links[st.output.name]
     moving = [j for j in link.joints if j not in st.mech.frame]
-    return moving[-1] if moving else link.joints[-1]
+    if moving:
+        return moving[-1]
+    pivot = link.joints[-1]
+    ends = [p for p in link.local if p != link.com and abs(link.local[p] - link.local[pivot]) > 1e-9]
+    return max(ends, key=lambda p: abs(link.local[p] - link.local[pivot]), default=pivot)
+
+
+def swing(plans: Plans) -> float | None:
+    """The output rocker's swing ψ_max between its extreme positions, degrees (None for a slider, a
+    link turning round or fewer than two extremes)."""
+    st = plans.study
+    if st.output.kind != "link" or len(plans.extremes) < 2:
+        return None
+    sc = plans.scheme
+    link = st.mech.links[st.output.name]
+    pivot = next((j for j in link.joints if j in st.mech.frame), None)
+    out = output_point(plans)
+    if pivot is None or out == pivot:
+        return None
+    P = [where(sc, lay, FRAME, pivot) for lay in plans.extremes[:2]][0]
+    a, b = (where(sc, lay, sc.body_of(out), out) - P for lay in plans.extremes[:2])
+    return abs(math.degrees(cmath.phase(b / a)))
 
 
 def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Record:
@@ -627,6 +649,8 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
     2.307), and a crank-slider's offset e from the crank's pivot to the path — each lettered with its
     real size in mm (``H = 250``, ``e = 30``), as a kinematic scheme gives them. None for a rocker."""
     st = plans.study
+    if st.output.kind == "link":
+        return swing_dimension(rec, plans, lang)
     if st.output.kind != "slide" or len(plans.extremes) < 2:
         return []
     sc = plans.scheme
@@ -663,6 +687,40 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
         rec.vector(_pt(c), _pt(b), role="construction", layer="construction", step=step)
         labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm, lang)}", toward=back, size=3.5, step=step))
     return labels
+
+
+SWING_PAST = 8.0    # mm: the swing's dimension arc this far beyond the rocker's end point (E′, E″)
+
+
+def swing_dimension(rec: Record, plans: Plans, lang: str = "uk") -> list[LabelRequest]:
+    """The output rocker's swing between its extreme positions (E′, E″) dimensioned as an angle
+    (GOST 2.307): extension lines from the pivot's rays past E′ and E″, an arc about the pivot
+    ``SWING_PAST`` mm beyond them with arrows at both ends, lettered ψ_max = 16,47° (review 12 #8)."""
+    from graphplan.util.words import fixed
+    psi = swing(plans)
+    if psi is None or psi < 0.5:
+        return []
+    st, sc = plans.study, plans.scheme
+    link = st.mech.links[st.output.name]
+    pivot = next(j for j in link.joints if j in st.mech.frame)
+    out = output_point(plans)
+    P = where(sc, plans.extremes[0], FRAME, pivot)
+    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in plans.extremes[:2])
+    R = max(abs(X1 - P), abs(X2 - P)) + SWING_PAST
+    step = "dimensions"
+    for X in (X1, X2):
+        u = (X - P) / abs(X - P)
+        rec.segment(_pt(X + u * 1.5), _pt(P + u * (R + 2.0)), role="construction", layer="construction", step=step)
+    a1, a2 = (math.degrees(cmath.phase(X - P)) for X in (X1, X2))
+    if (a2 - a1) % 360.0 > 180.0:                  # a1 → a2 counter-clockwise, the short way
+        a1, a2 = a2, a1
+    a2 = a1 + (a2 - a1) % 360.0
+    rec.arc(_pt(P), R, a1, a2, role="construction", layer="construction", step=step)
+    for end, sense in ((a1, -1), (a2, 1)):          # the arrows at both ends, pointing outward along the arc
+        tail, tip = arc_head(P, R, end, sense)
+        rec.vector(tail, tip, role="construction", layer="construction", step=step)
+    mid = P + R * cmath.exp(1j * math.radians(0.5 * (a1 + a2)))
+    return [LabelRequest(mid, f"ψ_max = {fixed(psi, lang, 2)}°", toward=mid - P, size=3.5, step=step)]
 
 
 def _real_mm(v: float, lang: str = "uk") -> str:

@@ -117,8 +117,114 @@ def study(mech: Mechanism) -> Study:
     extremes = find_extremes(mech, structure, output, grid)
     phi0 = choose_start(mech, structure, output, extremes)
     kin0 = solve(mech, structure, [phi0])
+    said_ += past_slot_end(mech, structure, grid, phi0)
     return Study(mech, structure, output, phi0, extremes, {k: float(s.t[0]) for k, s in kin0.slides.items()},
                  [s["en"] for s in said_], [s["uk"] for s in said_])
+
+
+SLOT_MM = 0.05   # a block whose centre runs past its slotted link's drawn end by more than this (mm) is warned of
+
+
+def slot_extent(mech: Mechanism, slider: str) -> tuple[str, float, str, float] | None:
+    """The drawn extent of the slot a block ``slider`` slides in, when a moving link carries it: the
+    link's points projected on the guide line u = Re((p − through)·e^(−iα)) in the carrier's frame, as
+    (the nearest end's point, its u, the farthest end's point, its u); None for a frame guide, a
+    yoke (no joint of its own) or a carrier drawn with no length along its guide (a single point)."""
+    link = mech.links[slider]
+    if link.slides_on is None:
+        return None
+    guide = mech.guides[link.slides_on]
+    carrier = mech.links.get(guide.body)
+    if carrier is None or not carrier.joints:        # the frame's guide; a yoke (its slot spans its block's travel)
+        return None
+    turn = complex(math.cos(guide.angle), -math.sin(guide.angle))
+    u = {name: ((p - guide.through) * turn).real for name, p in carrier.local.items()}
+    lo, hi = min(u, key=u.get), max(u, key=u.get)
+    if u[hi] - u[lo] < 1e-9:
+        return None
+    return lo, u[lo], hi, u[hi]
+
+
+def past_slot_end(mech: Mechanism, structure: Structure, kin: Kinematics, phi0: float) -> list[dict[str, str]]:
+    """A block that runs past the free end of its slotted link (a rocking slotted lever O3E, E its
+    end point, shorter than the block's greatest distance from O3): the mechanism still moves
+    kinematically (the slot's line goes on), but the block leaves the link the scene gives — warned
+    of in one line naming the link, how far (mm, with the block's greatest distance from the pivot),
+    the crank angles (the grid's, 0.25°) and the positions 0 … N−1 it happens at. An end that is a
+    joint is not a free end: a slot runs on through its pivot (the slotter's rotating coulisse) or past
+    the rod's pin (the shaper's coulisse O…B, drawn by ``linkshape.slot_line`` out to its block).
+    ``kin``: the mechanism on the GRID."""
+    out = []
+    grid = np.asarray(kin.phi_deg)
+    n = mech.task.count
+    angles = np.mod(phi0 + 360.0 / n * np.sign(mech.omega1) * np.arange(n), 360.0)
+    for dyad in structure.dyads:
+        for name in (dyad.a, dyad.b):
+            ext = slot_extent(mech, name)
+            if ext is None:
+                continue
+            lo_name, lo, hi_name, hi = ext
+            u = _along(kin, mech, name)
+            joints = mech.links[mech.guides[mech.links[name].slides_on].body].joints
+            past_hi = (u - hi) * 1000.0 if hi_name not in joints else np.full(u.shape, -np.inf)
+            past_lo = (lo - u) * 1000.0 if lo_name not in joints else np.full(u.shape, -np.inf)
+            beyond = np.maximum(past_hi, past_lo)          # mm past a free end (E), never past a joint
+            if not np.any(beyond > SLOT_MM):
+                continue
+            k = int(np.nanargmax(beyond))
+            end, end_u = (hi_name, hi) if u[k] > hi else (lo_name, lo)
+            guide = mech.guides[mech.links[name].slides_on]
+            carrier = mech.links[guide.body]
+            pivot = carrier.joints[0]          # O3: what |O3C| is measured from
+            u0 = ((carrier.local[pivot] - guide.through) * complex(math.cos(guide.angle), -math.sin(guide.angle))).real
+            reach, length = abs(u[k] - u0) * 1000.0, abs(end_u - u0) * 1000.0
+            ua = _along(solve(mech, structure, angles), mech, name)
+            positions = [i for i in range(n) if (ua[i] - end_u) * (1 if end == hi_name else -1) * 1000.0 > SLOT_MM]
+            ranges = _runs(grid, beyond > SLOT_MM)
+            out.append(said("warn past slot end", dyad=_named(dyad), block=next(iter(mech.links[name].local)),
+                            link=guide.body, end=end, mm=Fixed(float(beyond[k]), 1), pivot=pivot,
+                            reach=Fixed(reach, 1), length=Fixed(length, 1),
+                            ranges=lambda lang, r=ranges: ", ".join(f"{deg(a, 1, lang)}–{deg(b, 1, lang)}"
+                                                                    for a, b in r),
+                            positions=lambda lang, q=positions: _positions_said(q, lang)))
+    return out
+
+
+def _positions_said(q: list[int], lang: str) -> str:
+    """The lab positions a warning names: "position 0", "positions 11, 0, 1", "no lab position"."""
+    if not q:
+        return "жодне з положень" if lang == "uk" else "at no lab position"
+    return ("положення " if lang == "uk" else "position " if len(q) == 1 else "positions ") + ", ".join(map(str, q))
+
+
+def _along(kin: Kinematics, mech: Mechanism, slider: str) -> np.ndarray:
+    """The block's point on its guide line, u in the carrier's frame (m; ``slot_extent``'s measure)."""
+    link = mech.links[slider]
+    guide = mech.guides[link.slides_on]
+    body = kin.bodies[guide.body]
+    x = kin.point(next(iter(link.local)))[0]
+    with np.errstate(all="ignore"):
+        return (((x - body.origin) / body.turn - guide.through)
+                * complex(math.cos(guide.angle), -math.sin(guide.angle))).real
+
+
+def _runs(grid: np.ndarray, bad: np.ndarray) -> list[tuple[float, float]]:
+    """The runs of ``bad`` grid angles (wrapping round 360°) as (first, last) crank angles, deg."""
+    n = len(grid)
+    if np.all(bad):
+        return [(0.0, float(grid[-1]))]
+    start = int(np.argmin(bad))          # a good angle: every bad run is whole from here
+    runs, k = [], 0
+    while k < n:
+        i = (start + k) % n
+        if bad[i]:
+            j = k
+            while j < n and bad[(start + j) % n]:
+                j += 1
+            runs.append((float(grid[i]), float(grid[(start + j - 1) % n])))
+            k = j
+        k += 1
+    return runs
 
 
 def check_assembly(mech: Mechanism, structure: Structure, kin: Kinematics | None = None) -> list[dict[str, str]]:

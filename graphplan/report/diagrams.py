@@ -8,7 +8,7 @@ import numpy as np
 
 from graphplan.drawing.diagrams import fmt, method_words, mu, scale_lines, scale_symbols, units  # noqa: F401
 from graphplan.graphic.diagrams import judged_pct
-from graphplan.util.markup import plain
+from graphplan.util.markup import plain, subscripted
 from graphplan.util.words import fixed, num, pct, unit, word
 
 if TYPE_CHECKING:
@@ -94,7 +94,7 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
 def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
     """The lines a sheet's notes give the diagrams: which method drew them, and what they get
     qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
-    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {d.point}"
+    what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {subscripted(d.point)}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
     said = redrawn_note(d, lang)

@@ -167,8 +167,8 @@ def scheme_data(st: Study, plans: Plans) -> dict[str, Any]:
     pivots = sorted({j for link in mech.links.values() for j in link.joints if j in mech.frame})
     frame = {name: [mm(z.real / plans.mu_l), mm(z.imag / plans.mu_l)] for name, z in mech.frame.items()}
     out = st.output
-    output_point = out.name if out.kind == "slide" else next(
-        (j for j in reversed(mech.links[out.name].joints) if j not in mech.frame), out.name)
+    from graphplan.drawing.plans import output_point as marked
+    output_point = marked(plans)        # the sheets' own: a slotted lever O3E's end E, not its name
     paths = list(dict.fromkeys([mech.crank.pin, output_point] + list(plans.trajectories)))
     return {"frame": frame, "pivots": pivots, "links": links, "guides": guides,
             "crank": {"link": mech.crank.link, "pivot": mech.crank.pivot, "pin": mech.crank.pin},

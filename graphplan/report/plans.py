@@ -17,12 +17,17 @@ KIND_ORDER = {"point": 0, "relative": 1, "normal": 2, "tangential": 3, "coriolis
 
 def ordered(plan: Plan) -> list[Entry]:
     """The mechanism's points in the scene's order, then the coincident points (A3), relative
-    vectors, components, and ω or ε last (each in drawing order)."""
+    vectors, components (each in drawing order), and ω or ε last by link number: ε2, ε3, ε4, ε5 (review
+    12: the block's ε4 = ε5 is found after the slotted link's, but the lab numbers the rows)."""
     names = plan.sc.mech.point_names()
+    mech = plan.sc.mech
 
     def key(e: Entry) -> tuple[int, int]:
         if e.kind == "point":
             return (0, names.index(e.key)) if e.key in names else (1, 0)
+        if e.kind in ("omega", "epsilon"):
+            n = link_number(mech, e.key)
+            return (KIND_ORDER[e.kind] + 1, n if n is not None else 10 ** 6)
         return (KIND_ORDER[e.kind] + 1, 0)
     return sorted(plan.entries.values(), key=key)
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, cells, centred, column_size, flow, set_columns, top_left
+from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, cells, centred, flow, top_left
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, grown,
@@ -27,7 +27,8 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        room_fits, set_of_sheets, set_rows, size_of, split_leaves, tree)
+                                        place_tables, room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place,
+                                        tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
 
@@ -339,6 +340,10 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
         again = choose()
         if again != p and _checked(dr, nat, again):
             p = again
+    else:       # one sheet's diagrams drawn shorter for the room across get their height back where it is
+        tall = taller_in_place(dr, nat, f, p)
+        if tall != p and _checked(dr, nat, tall):
+            p = tall
     return p, nat, dr
 
 
@@ -425,8 +430,8 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         def high(w: float) -> float:
             b = note_block(d["notes"], w).bounds()
             return b[3] - b[1]
-        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts)
-        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts)
+        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under)
+        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under)
         if p.shape == "split":
             groups, width = groups_, TITLE
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
@@ -444,7 +449,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         foot = keep_out(f)[3]
         notes_box = (notes_at - width, foot, notes_at, foot + nb[3] - nb[1])
         items.append(Placed("notes", top_left(notes_rec, notes_box), notes_box))
-        items += set_columns(groups, tab_box[2] - column_size(groups)[0], tab_box[3])
+        items += place_tables(groups, tab_box[2], tab_box[3], p.under)
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)

@@ -138,6 +138,7 @@ class Plan:
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     after: bool = False              # a set: the diagrams after the acceleration plans (else before)
     notes: float = 185.0             # a set: the notes' width, mm (the title block's, ``TITLE``, or wider)
+    under: bool = False              # one sheet: the last table across under the columns of the others
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -163,27 +164,62 @@ def set_notes_height(notes: list[list[str]], width: float) -> float:
     return max(notes_height([half], TITLE) for lines in notes for half in note_halves(lines))
 
 
-def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
-                ) -> tuple[Leaf, list[list[Leaf]], float]:
-    """The tables in ``parts`` columns (``counts`` tables each, where the plan found them) with the
-    notes under them and the title block's room at the foot, as one leaf for the composition; its
-    table groups and its width."""
+def table_groups(tables: list, parts: int, counts: tuple[int, ...] = (), under: bool = False) -> list[list]:
+    """The tables in ``parts`` columns (``counts`` tables each, where the plan found them); ``under``:
+    the last one set across under the columns of the others, its own group last (``tables_size``,
+    ``place_tables``)."""
+    if under and len(tables) > parts:
+        return split(tables[:-1], parts, counts=counts) + [[tables[-1]]]
+    return split(tables, parts, counts=counts)
+
+
+def tables_size(groups: list[list], under: bool = False) -> tuple[float, float]:
+    """The tables' block (``table_groups``): columns side by side, the last group under them where
+    ``under``."""
+    if not under or len(groups) < 2:
+        return column_size(groups)
+    cw, ch = column_size(groups[:-1])
+    last = groups[-1][0]
+    return max(cw, last.w), ch + GAP + last.h
+
+
+def place_tables(groups: list[list], right: float, top: float, under: bool = False) -> list:
+    """The tables placed from the block's top right corner (``set_columns``): in reading order, down
+    each column, then the next; the last group under them, at the block's right, where ``under`` —
+    wider than the last column, it runs on under the one before: read after them all."""
+    from graphplan.drawing.layout import Placed, set_columns, top_left
+    w, _ = tables_size(groups, under)
+    if not under or len(groups) < 2:
+        return set_columns(groups, right - w, top)
+    _, ch = column_size(groups[:-1])
+    t = groups[-1][0]
+    b = (right - t.w, top - ch - GAP - t.h, right, top - ch - GAP)
+    return set_columns(groups[:-1], right - w, top) + [
+        Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)]
+
+
+def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
+                under: bool = False) -> tuple[Leaf, list[list[Leaf]], float]:
+    """The tables in ``parts`` columns (``counts`` tables each, where the plan found them; ``under``:
+    the last across under the others) with the notes under them and the title block's room at the
+    foot, as one leaf for the composition; its table groups and its width."""
     from graphplan.sheets.compose import keep_out
-    groups = split(tables, parts, counts=counts)
-    cw, ch = column_size(groups)
+    groups = table_groups(tables, parts, counts, under)
+    cw, ch = tables_size(groups, under)
     width = max(cw, TITLE)
     foot = keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
 
 
-def split_leaves(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = ()
-                 ) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
-    """The column split in two (``tree``'s "split"): the tables in ``parts`` columns, and the notes
-    at the title block's width over the title block's room; and the tables' groups."""
+def split_leaves(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
+                 under: bool = False) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
+    """The column split in two (``tree``'s "split"): the tables in ``parts`` columns (``under``: the
+    last across under the others), and the notes at the title block's width over the title block's
+    room; and the tables' groups."""
     from graphplan.sheets.compose import keep_out
-    groups = split(tables, parts, counts=counts)
+    groups = table_groups(tables, parts, counts, under)
     foot = keep_out(f)[3] - field_of(f)[1]
-    return Leaf("tables", *column_size(groups)), Leaf("notes", TITLE, notes_height(TITLE) + GAP + foot), groups
+    return Leaf("tables", *tables_size(groups, under)), Leaf("notes", TITLE, notes_height(TITLE) + GAP + foot), groups
 
 
 def _grids(n: int) -> list[int]:
@@ -215,6 +251,60 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
         return full[1] if full is not None else None
     shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k, True)) is not None]
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
+
+
+def composed_fits(nat: Natural, f: Form, p: Plan, D: Leaf) -> bool:
+    """Whether one sheet's composition ``p`` (its scales, shape, grids and table columns as chosen)
+    holds the diagrams' leaf ``D`` (``one_sheet_at``'s arithmetic)."""
+    x0, y0, x1, y1 = field_of(f)
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
+    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under)[0]
+    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under)[:2]
+    P = nat.leaf("position", p.mu["position"])
+    V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
+    A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
+    vg = Grid(V, p.vcols, fitted=True) if V else None
+    ag = Grid(A, p.acols, fitted=True) if A else None
+    tw, th = extent(tree(p.shape, P, D, vg, ag, C, halves))
+    return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
+
+
+def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
+    """One sheet's diagrams, drawn shorter for the room across, given back their height where the
+    composition has it (the same scales, shape and columns): of the height factors up to 1 in
+    ``HEIGHT_STEP`` that still fit, are right (graphic.redraw) and no flatter, the one read closest
+    to the exact values at the positions (redraw's largest |δ|, what Table 5 prints), then drawn
+    largest — as a set's diagrams are grown (``taller``); kept where none reads better. Review 12:
+    the A1 drew φ5 29 mm high (L 120 mm, μφ 0,01 рад/мм) beside a 301-mm column of tables; there
+    the chords' own error rules ε5 (17.5 % at 0.5, 22.7–38 % at the taller heights), so it stays."""
+    from graphplan.sheets.kinematics import diagram_options
+    long_, tall = factors(p.diagrams)
+    if tall >= 1.0 - 1e-9 and long_ >= 1.0 - 1e-9:
+        return p
+    o = dr.opts
+
+    def judged(k) -> tuple[float, float]:
+        r = diagram_options(dr.st, k, o.positions, o.precision, dr.room, dr.floor)["redrawn"]
+        return (round(r.off_after, 1) if r.off_after is not None else math.inf, -round(drawn_share(dr, k), 6))
+    best, score = p.diagrams, judged(p.diagrams)
+    # not by bisection: a pair's poles follow its height allowance (``first_options``), so its
+    # block's height is not monotonic in the factor (0.6 drew 239 mm, 0.7 232 mm here). Longer too
+    # where the zone is wider than the diagrams (a stacked position plan 300 mm across over them):
+    # the lengths of ``DIAGRAMS_SHRUNK`` above the chosen one, their heights in steps of 0.1
+    heights = {long_: [round(tall + j * HEIGHT_STEP, 6) for j in range(int(round((1.0 - tall) / HEIGHT_STEP)), 0, -1)]}
+    for length in (x for x in DIAGRAMS_SHRUNK if x > long_ + 1e-9):
+        heights[length] = [round(1.0 - 0.1 * j, 6) for j in range(int(round((1.0 - length) / 0.1)) + 1)]
+    for length, ts in heights.items():
+        for t in ts:
+            k = (length, t)
+            if not (composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) and dr.diagrams_right(k)
+                    and flat(dr, k) <= flat(dr, p.diagrams)):
+                continue
+            got = judged(k)
+            if got < score:
+                best, score = k, got
+    from dataclasses import replace
+    return p if best == p.diagrams else replace(p, diagrams=best)
 
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
@@ -284,8 +374,16 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 -SHAPES.index(shape))
     for factor in (TABLES, 1.0):
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-        cols = [column_leaf(f, tabs, parts, nat.notes_height)[0] for parts in (1, 2, 3)][:max(1, len(tabs))]
-        halves = [split_leaves(f, tabs, parts, nat.notes_height)[:2] for parts in (1, 2, 3)][:max(1, len(tabs))]
+        # the tables in 1–3 columns; or the last (the diagrams' readings, 12 positions across: review
+        # 12's 175 mm) across under 2–3 columns of the others — the six-bar's columns T1, T2 | T3,
+        # T4, T5 drew 413 mm wide beside a 1:5 position plan; T5 under them, 328
+        ways = [(parts, False) for parts in (1, 2, 3)][:max(1, len(tabs))]
+        # (only where it is wider than the last column: set at the block's right it then runs on under
+        # the column before — read after them all, not as the foot of one column)
+        ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1
+                 and tabs[-1].w > max(t.w for t in split(tabs[:-1], parts)[-1]) + GAP]
+        cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under)[0] for parts, under in ways]
+        halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under)[:2] for parts, under in ways]
 
         def arranged(mu, shape, best_fill=False, D=D):
             P = nat.leaf("position", mu["position"])
@@ -296,14 +394,14 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             found = None
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
-                    for parts, C in enumerate(cols, 1):
-                        tw, th = extent(tree(shape, P, D, vg, ag, C, halves[parts - 1]))
+                    for way, C in enumerate(cols):
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, halves[way]))
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             if not best_fill:
-                                return (0.0, vc, ac, parts)
+                                return (0.0, vc, ac, way)
                             fill = min(W / tw, H / th)
                             if found is None or fill > found[0] + 1e-9:
-                                found = (fill, vc, ac, parts)
+                                found = (fill, vc, ac, way)
             return found
 
         for shape in SHAPES:
@@ -335,10 +433,11 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 first = score_of(mu, k_d, factor, shape)
                 before = sizes_of(nat, mu, k_d)
                 mu = into_room(nat, mu, lambda m, s=shape, d=D_k: arranged(m, s, D=d) is not None)
-                _, vc, ac, parts = arranged(mu, shape, best_fill=True, D=D_k)
-                counts = tuple(len(g) for g in split(tabs, parts))
+                _, vc, ac, way = arranged(mu, shape, best_fill=True, D=D_k)
+                parts, under = ways[way]
+                counts = tuple(len(g) for g in split(tabs[:-1] if under else tabs, parts))
                 cands.append((first, before, score_of(mu, k_d, factor, shape, True),
-                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts)))
+                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, under=under)))
     if not cands:
         return None
     # the composition chosen by the series' steps; then, the room given out (``into_room``), the best

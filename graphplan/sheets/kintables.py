@@ -11,7 +11,7 @@ from graphplan.graphic.record import Record, text_width
 from graphplan.report.plans import acceleration_cells, places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
 from graphplan.sheets.form import enlarged, table
-from graphplan.util.markup import escape
+from graphplan.util.markup import escape, subscripted
 from graphplan.util.words import fixed, num, pair_kind, unit, word
 
 SHORT_MM = 20.0    # the notes' second figure: errors of vectors drawn at least this long
@@ -243,16 +243,74 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
             pairs = [(a, b) for i, a in enumerate(pts) for b in pts[i + 1:]]
         else:
             pairs = list(zip(pts, pts[1:]))
+        end = free_end(link, pivot, pts)
+        if end is not None:           # the slotted lever O3E: its end E carries the output, no joint there
+            pairs.append((pivot, end))
         for a, b in pairs:
             d = abs(link.local[a] - link.local[b])
             if d > 0:
                 out.append((named(a, b), d))
+        if link.com is not None and link.com in link.local:   # the centre of mass off its link's middle
+            ref = pivot if pivot is not None else (pts[0] if pts else None)
+            d = abs(link.local[link.com] - link.local[ref]) if ref is not None else 0.0
+            if d > 1e-12 and not any(abs(link.local[link.com] - (link.local[a] + link.local[b]) / 2) < 1e-12
+                                     for a, b in pairs):
+                out.append((named(ref, link.com), d))
     frame = [p for p in mech.frame if any(p in l.joints for l in mech.links.values())]
     for a, b in zip(frame, frame[1:]):
         d = abs(mech.frame[a] - mech.frame[b])
         if d > 0:
             out.append((named(a, b), d))
+    out.extend(frame_coordinates(st))
     out.extend((label, d) for label, d, _, _ in guide_distances(st))
+    return out
+
+
+def free_end(link, pivot: str | None, pts: list[str]) -> str | None:
+    """A pivoted link's free end: its point farthest from the pivot, farther than every joint and not
+    its centre of mass (the slotted lever O3E's E, the link's given length), else None."""
+    if pivot is None:
+        return None
+    reach = max((abs(link.local[p] - link.local[pivot]) for p in pts), default=0.0)
+    ends = [p for p in link.local if p not in pts and p != link.com
+            and abs(link.local[p] - link.local[pivot]) > reach + 1e-12]
+    return max(ends, key=lambda p: abs(link.local[p] - link.local[pivot]), default=None)
+
+
+def frame_coordinates(st: Study) -> list[tuple[str, float]]:
+    """The frame pivots the distances alone do not place (review 12: O2 at (0,26; −0,02), O3 at
+    (0,52; 0,16)): x and y from the crank's pivot of each other pivot off both axes through it —
+    signed, as the scene gives them (a pivot on an axis is placed by its distance and the drawing)."""
+    mech = st.mech
+    origin = mech.frame.get(mech.crank.pivot)
+    if origin is None:
+        return []
+    out = []
+    for p, z in mech.frame.items():
+        if p == mech.crank.pivot or not any(p in l.joints for l in mech.links.values()):
+            continue
+        d = z - origin
+        if abs(d.real) > 1e-9 and abs(d.imag) > 1e-9:
+            head = p.rstrip("0123456789")
+            sub = f"{head}{p[len(head):]}" if head and head != p else p
+            out += [(f"x_{{{sub}}}", d.real), (f"y_{{{sub}}}", d.imag)]
+    return out
+
+
+def middle_centres(st: Study) -> list[str]:
+    """The centres of mass at the middle of a length Table 4 gives (S2 of AB, S5 of O3E), as the
+    table's footnote names them (the others have their own rows: O2S3)."""
+    from graphplan.util.markup import indexed
+    out = []
+    for name, link in st.mech.links.items():
+        if link.com is None or link.com not in link.local:
+            continue
+        pts = [p for p in link.local if p in link.joints or p in st.mech.frame]
+        pivot = next((p for p in pts if p in st.mech.frame), None)
+        ends = pts + [e for e in [free_end(link, pivot, pts)] if e is not None]
+        if any(abs(link.local[link.com] - (link.local[a] + link.local[b]) / 2) < 1e-12 and a != b
+               for a in ends for b in ends):
+            out.append(indexed(link.com))
     return out
 
 
@@ -336,6 +394,9 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
             rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         notes.append(w('dims yoke', n=yoke.strip("{}")))
+    middles = middle_centres(st)
+    if middles:
+        notes.append(w('dims middles', names=", ".join(middles)))
     rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
     return footnoted(rec, notes)
 
@@ -592,7 +653,7 @@ def sign_note(st: Study, diag, lang: str) -> str:
         said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
         return said + (w('flipped') if diag.sign < 0 else "")
     n = diag.sub
-    return w('signs_link', link=escape(out.name), n=n) + (w('flipped_link', n=n) if diag.sign < 0 else "")
+    return w('signs_link', link=subscripted(out.name), n=n) + (w('flipped_link', n=n) if diag.sign < 0 else "")
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
@@ -665,4 +726,13 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
                      + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
     extra.append(w('dash'))
     extra.append(sign_note(st, diag, lang))
+    from graphplan.drawing.plans import output_point, primed, swing
+    psi = swing(plans)
+    if psi is not None:                  # the rocker's swing, dimensioned on the position plan (review 12 #8)
+        import math
+        out = output_point(plans)
+        extra.append(w('swing', link=subscripted(st.output.name), deg=fixed(psi, lang, 2),
+                       rad=fixed(math.radians(psi), lang, 4), a=primed(out, 1), b=primed(out, 2)))
+    # the study's warnings (a block past its slotted link's end, a group near locking), as `analyze` says them
+    extra += [f"{word('warnings', lang)}: {subscripted(text)}" for text in st.says(lang)]   # O₃C, O₃E
     return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag)), lang))

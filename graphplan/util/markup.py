@@ -124,6 +124,15 @@ def indexed(name: str) -> str:
     return f"{escape(head)}_{name[len(head):]}" if head and head != name else escape(name)
 
 
+def subscripted(name: str) -> str:
+    """A link's or a segment's name with each number after a letter as a subscript, as the
+    drawing letters its points: O3E → O_{3}E, O2B → O_{2}B, AB → AB, 4 → 4 (review 12: the notes
+    wrote «O3E» where Table 4 writes O₃E)."""
+    import re
+    parts = re.split(r"(?<=[A-Za-z])(\d+)", name)
+    return "".join(escape(p) if k % 2 == 0 else f"_{{{p}}}" for k, p in enumerate(parts))
+
+
 def is_plain(text: str) -> bool:
     """No markup at all (the renderers' fast path)."""
     return not any(c in text for c in _SPECIAL)

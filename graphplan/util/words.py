@@ -257,6 +257,9 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin dims yoke": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока; e_{{{n}}} — від D до осі паза вздовж штока",
                       "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide; e_{{{n}}}: from D to the slot's line along the rod"),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
+    "kin swing": ('Кут розмаху ланки {link} між крайніми положеннями {a} і {b}: ψ_max = {deg}° = {rad} рад',
+                  'Swing of link {link} between its extreme positions {a} and {b}: ψ_max = {deg}° = {rad} rad'),
+    "kin dims middles": ('{names} — посередині ланок', '{names}: at the middles of their links'),
     "kin link": ('ланка', 'link'),
     "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
     "kin real": ('l, м', 'l, m'),
@@ -389,6 +392,12 @@ WORDS: dict[str, tuple[str, str]] = {
                               "кута кривошипа {phi}°; ω куліси сягає {w} рад/с",
                               "{dyad}: the block {block} passes within {mm} mm of the pivot {pivot} near "
                               "crank angle {phi}°; the slotted link's ω reaches {w} rad/s"),
+    "warn past slot end": ("{dyad}: повзун {block} виходить за кінець {end} ланки {link} на {mm} мм "
+                           "(|{pivot}{block}| до {reach} мм при {pivot}{end} = {length} мм) при кутах кривошипа "
+                           "{ranges} ({positions}); подовжте ланку {link}",
+                           "{dyad}: the block {block} runs {mm} mm past the end {end} of the link {link} "
+                           "(|{pivot}{block}| up to {reach} mm against {pivot}{end} = {length} mm) at crank angles "
+                           "{ranges} ({positions}); lengthen the link {link}"),
     "ccw": ("проти годинникової стрілки", "counter-clockwise"),
     "cw": ("за годинниковою стрілкою", "clockwise"),
     "dyad line": ("  {label}: {kind}, ланки {a} і {b}", "  {label}: {kind}, links {a} and {b}"),
