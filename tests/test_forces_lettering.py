@@ -209,3 +209,42 @@ def test_centres_of_mass_are_dots_and_pairs_are_rings():
             assert all(abs(z - w) > 0.5 for w in rings), (rec.title, z)
         if k == 0:      # the scheme: S1, S2, S4 (the pistons' masses act at their pairs B and C)
             assert len(dots) == 3 and len(rings) >= 4, (len(dots), len(rings))
+
+
+def _sixbar12_plans():
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from review_scenes import SIXBAR12
+    return sf.ForceDrafter(scene_study(SIXBAR12), SheetOptions(precision=0.5, sheet="forces")).fp()
+
+
+def test_a_slotted_lever_is_drawn_on_to_its_end():
+    """Review 12's six-bar: the slotted lever O3E stopped at its block C on the scheme and group
+    II(4-5), its end E a dot standing apart. The lever's line reaches E's dot."""
+    from graphplan.drawing.forces import group_record, mechanism_record
+    fp = _sixbar12_plans()
+    for rec in (mechanism_record(fp, "uk"), group_record(fp, fp.groups[0], "uk")):
+        texts = [q for q in rec.items if q.kind == "text" and q.text == "E"]
+        assert texts, rec.title
+        dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point" and q.role == "dot"]
+        e = min(dots, key=lambda z: abs(z - complex(*texts[0].points[0])))
+        ends = [complex(*p) for q in rec.items if q.kind in ("segment", "polyline") and q.layer == "mechanism"
+                for p in (q.points[0], q.points[-1])]
+        assert min(abs(e - w) for w in ends) < 0.1, rec.title
+
+
+def test_the_balancing_force_never_runs_along_the_lever():
+    """Review 12 #6: at this position ab ∥ P_зр, and the arrow pushed from a ran along a–s2–b, its head
+    past b (read as applied at b). It is drawn pulling into a instead: its head at a's image, its
+    shaft along no line of the lever."""
+    from graphplan.drawing.forces import lever_record
+    rec = lever_record(_sixbar12_plans(), "uk")
+    p = next(q for q in rec.items if q.kind == "vector" and q.text == "P_b")
+    a, b = complex(*p.points[0]), complex(*p.points[1])
+    u = (b - a) / abs(b - a)
+    for q in rec.items:
+        if q.kind == "segment" and q.role == "relative":
+            c, d = complex(*q.points[0]), complex(*q.points[1])
+            off = max(abs(((c - a) * u.conjugate()).imag), abs(((d - a) * u.conjugate()).imag))
+            lo, hi = sorted((((c - a) * u.conjugate()).real, ((d - a) * u.conjugate()).real))
+            assert off > 0.5 or min(hi, abs(b - a)) - max(lo, 0.0) <= 1.0, (q.points, p.points)
