@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import io
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -30,6 +30,7 @@ class Turn:
     ks: Kinetostatics
     turn_deg: np.ndarray
     count: int                      # the scene's number of positions (marked on the charts)
+    memo: dict = field(default_factory=dict, repr=False, compare=False)   # drawings of this turn (hodograph_record)
 
     @property
     def revolute(self) -> list[str]:
@@ -554,6 +555,18 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
 
 def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True,
                      beside: bool = False) -> Record:
+    """One reaction's hodograph (``_hodograph_record``), remembered per turn: the force sheet draws
+    each at the size it measures its cells at, then again on the sheet (a copy is returned: its
+    primitives are immutable, its list and scales the caller's)."""
+    from graphplan.drawing.labels import _SKETCH
+    memo_key = ("hodograph", key, size, lang, say_jump, beside, _SKETCH[-1])
+    rec = t.memo.get(memo_key)
+    if rec is None:
+        rec = t.memo[memo_key] = _hodograph_record(t, key, size, lang, say_jump, beside)
+    return Record(rec.title, list(rec.items), dict(rec.scales))
+
+
+def _hodograph_record(t: Turn, key: str, size: float, lang: str, say_jump: bool, beside: bool) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
@@ -703,10 +716,22 @@ def _shape(q: Primitive):
 
 
 def _ink_of(rec: Record):
-    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely)."""
-    from shapely.ops import unary_union
-    return unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
-                       ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
+    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely), remembered by their
+    geometry (the buffer is most of a hodograph's cost; its two languages and the sheet's trial
+    sizes ask for the same ink)."""
+    key = tuple((q.kind, q.points, q.radius) for q in rec.items if q.kind != "text")
+    ink = _INKS.get(key)
+    if ink is None:
+        from shapely.ops import unary_union
+        ink = unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
+                          ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
+        if len(_INKS) >= 128:
+            _INKS.pop(next(iter(_INKS)))
+        _INKS[key] = ink
+    return ink
+
+
+_INKS: dict[tuple, object] = {}     # geometry → its grown ink (shapely geometries are immutable)
 
 
 def _corner(ink, det: Record, ring: tuple[complex, float],
