@@ -55,9 +55,9 @@ def turn(st: Study, samples: int = SAMPLES) -> Turn:
 def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """Split a closed curve where the working stroke starts or ends (an external force switches
     on or off, so the reactions jump): (indices, values) pieces, closed over the turn."""
-    work = t.ks.working
+    work = np.asarray(t.ks.working)
     n = len(work)
-    cuts = [k for k in range(n) if work[k] != work[k - 1]]
+    cuts = np.flatnonzero(work != np.roll(work, 1)).tolist()      # k where work[k] != work[k − 1]
     if not cuts:
         idx = np.r_[np.arange(n), 0]
         return [(idx, values[idx])]
@@ -381,7 +381,7 @@ def _clipped(z: np.ndarray, box: tuple[float, float, float, float]) -> list[list
     from shapely.geometry import LineString, box as shapely_box
     if len(z) < 2:
         return []
-    cut = LineString([(float(w.real), float(w.imag)) for w in z]).intersection(shapely_box(*box))
+    cut = LineString(np.column_stack([z.real, z.imag]).astype(float)).intersection(shapely_box(*box))
     parts = getattr(cut, "geoms", [cut])
     return [list(g.coords) for g in parts if g.geom_type == "LineString" and len(g.coords) >= 2]
 
@@ -392,7 +392,7 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
     resistance switches on or off; returns the count of jumps drawn."""
     pieces = _pieces(t, f)
     for _, z in pieces:
-        for part in ([[(float(w.real / mu), float(w.imag / mu)) for w in z]] if box is None
+        for part in ([list(zip((z.real / mu).tolist(), (z.imag / mu).tolist()))] if box is None
                      else _clipped(z / mu, box)):
             rec.add("polyline", part, role="curve", layer="diagrams", step=step)
     jumps = 0
