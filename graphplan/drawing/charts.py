@@ -615,7 +615,7 @@ def _hodograph_record(t: Turn, key: str, size: float, lang: str, say_jump: bool,
         c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
         if ink is None:
-            ink = _ink_of(rec)
+            ink = _InkOf(rec.items)       # grown only where a corner asks (most details do not fit the field)
         if share is not None:           # the sketch first: where it finds no room, neither does the lettered one
             from graphplan.drawing.labels import sketched
             with sketched():
@@ -734,6 +734,18 @@ def _ink_of(rec: Record):
 _INKS: dict[tuple, object] = {}     # geometry → its grown ink (shapely geometries are immutable)
 
 
+class _InkOf:
+    """``_ink_of`` of the primitives as they are now, grown when first asked (``_corner``)."""
+
+    def __init__(self, items: list[Primitive]) -> None:
+        self.items, self.ink = list(items), None
+
+    def geometry(self):
+        if self.ink is None:
+            self.ink = _ink_of(Record("", self.items))
+        return self.ink
+
+
 def _corner(ink, det: Record, ring: tuple[complex, float],
             field: tuple[float, float, float, float], grow: float = 0.0) -> Record | None:
     """``det`` moved into a corner of the hodograph's ``field`` (its axes' extent, mm) where it
@@ -749,7 +761,7 @@ def _corner(ink, det: Record, ring: tuple[complex, float],
         return None
     for cx, cy in ((x1 - w, y1 - h), (x0, y1 - h), (x1 - w, y0), (x0, y0)):
         spot = box(cx, cy, cx + w, cy + h)
-        if not spot.intersects(ringed) and not spot.intersects(ink):
+        if not spot.intersects(ringed) and not spot.intersects(ink.geometry() if isinstance(ink, _InkOf) else ink):
             return det.moved(cx - d0, cy - e0)
     return None
 

@@ -1087,12 +1087,20 @@ class Leads:
         return None
 
 
-def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR) -> Leads:
+def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR, worth=None) -> Leads:
     """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it),
-    on the ``rings`` (``FAR``, or its nearer ones)."""
+    on the ``rings`` (``FAR``, or its nearer ones); ``worth(lengths)``, where given, the candidates
+    worth asking by their leaders' lengths (the others are not free: a caller that takes none of
+    them saves counting them — each candidate is counted on its own, so the rest count the same)."""
     boxes, starts = _candidates(req, ink, rings, FAR_DIRECTIONS)
     a, b = _led_all(req.at, boxes)
-    base = _counts(ob, boxes, number=_number(req)) == 0
+    if worth is None:
+        base = _counts(ob, boxes, number=_number(req)) == 0
+    else:
+        base = np.asarray(worth(np.abs(b - a)), dtype=bool)
+        asked = np.nonzero(base)[0]
+        if len(asked):
+            base[asked] = _counts(ob, boxes[asked], number=_number(req)) == 0
     if ob.boxes:
         q = np.asarray(ob.boxes, dtype=float)
         idx = np.nonzero(base)[0]
@@ -1242,10 +1250,11 @@ def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex]
     n = 2 * DIRECTIONS
     found = [_candidates(replace(req, at=z), ink, gaps, n) for z in anchors]
     local = ob.near(0.5 * (a0 + b0), 0.5 * span + NEAR[-1] + reach)
-    counts = [_counts(local, boxes, number=_number(req)) for boxes, _ in found]
-    for r in range(len(gaps)):
-        for (boxes, starts), c in zip(found, counts):
-            for k in (np.nonzero(c[r * n:(r + 1) * n] == 0)[0] + r * n).tolist():
+    for r in range(len(gaps) if found else 0):
+        # ring by ring, all the anchors' candidates on it counted at once (most names stand on the first)
+        ring = _counts(local, np.concatenate([boxes[r * n:(r + 1) * n] for boxes, _ in found]), number=_number(req))
+        for i, (boxes, starts) in enumerate(found):
+            for k in (np.nonzero(ring[i * n:(i + 1) * n] == 0)[0] + r * n).tolist():
                 box = tuple(float(v) for v in boxes[k])
                 if (box_to_segment(box, a0, b0) <= beside and own(box)
                         and (accept is None or accept(box))):
@@ -1256,7 +1265,10 @@ def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex]
     for i, z in enumerate(anchors if longest > 0 else ()):
         sub = ob.near(z, min(FAR[-1], longest) + reach)
         # (a ring g out gives leaders at least g − 2 mm long: the farther rings are not asked)
-        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0))
+        # only the leaders that could be taken: no longer than ``longest``, shorter than the best so far
+        bound = best[0] - 1e-9 if best is not None else math.inf
+        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0),
+                     worth=lambda lengths, bound=bound: (lengths <= longest) & (lengths < bound))
         length = np.abs(cand.b - cand.a)
         ok = cand.base & (length <= longest)
         idx = np.nonzero(ok)[0]
