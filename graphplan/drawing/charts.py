@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import io
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -30,6 +30,7 @@ class Turn:
     ks: Kinetostatics
     turn_deg: np.ndarray
     count: int                      # the scene's number of positions (marked on the charts)
+    memo: dict = field(default_factory=dict, repr=False, compare=False)   # drawings of this turn (hodograph_record)
 
     @property
     def revolute(self) -> list[str]:
@@ -54,9 +55,9 @@ def turn(st: Study, samples: int = SAMPLES) -> Turn:
 def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """Split a closed curve where the working stroke starts or ends (an external force switches
     on or off, so the reactions jump): (indices, values) pieces, closed over the turn."""
-    work = t.ks.working
+    work = np.asarray(t.ks.working)
     n = len(work)
-    cuts = [k for k in range(n) if work[k] != work[k - 1]]
+    cuts = np.flatnonzero(work != np.roll(work, 1)).tolist()      # k where work[k] != work[k − 1]
     if not cuts:
         idx = np.r_[np.arange(n), 0]
         return [(idx, values[idx])]
@@ -380,7 +381,7 @@ def _clipped(z: np.ndarray, box: tuple[float, float, float, float]) -> list[list
     from shapely.geometry import LineString, box as shapely_box
     if len(z) < 2:
         return []
-    cut = LineString([(float(w.real), float(w.imag)) for w in z]).intersection(shapely_box(*box))
+    cut = LineString(np.column_stack([z.real, z.imag]).astype(float)).intersection(shapely_box(*box))
     parts = getattr(cut, "geoms", [cut])
     return [list(g.coords) for g in parts if g.geom_type == "LineString" and len(g.coords) >= 2]
 
@@ -391,7 +392,7 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
     resistance switches on or off; returns the count of jumps drawn."""
     pieces = _pieces(t, f)
     for _, z in pieces:
-        for part in ([[(float(w.real / mu), float(w.imag / mu)) for w in z]] if box is None
+        for part in ([list(zip((z.real / mu).tolist(), (z.imag / mu).tolist()))] if box is None
                      else _clipped(z / mu, box)):
             rec.add("polyline", part, role="curve", layer="diagrams", step=step)
     jumps = 0
@@ -572,6 +573,18 @@ def _fanned(rec: Record, points: list[tuple[int, complex]], step: str) -> list[s
 
 def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = "uk", say_jump: bool = True,
                      beside: bool = False) -> Record:
+    """One reaction's hodograph (``_hodograph_record``), remembered per turn: the force sheet draws
+    each at the size it measures its cells at, then again on the sheet (a copy is returned: its
+    primitives are immutable, its list and scales the caller's)."""
+    from graphplan.drawing.labels import _SKETCH
+    memo_key = ("hodograph", key, size, lang, say_jump, beside, _SKETCH[-1])
+    rec = t.memo.get(memo_key)
+    if rec is None:
+        rec = t.memo[memo_key] = _hodograph_record(t, key, size, lang, say_jump, beside)
+    return Record(rec.title, list(rec.items), dict(rec.scales))
+
+
+def _hodograph_record(t: Turn, key: str, size: float, lang: str, say_jump: bool, beside: bool) -> Record:
     """One reaction's hodograph: the tip of R over the turn at μR (N/mm), positions numbered. The
     axes through the origin reach just past the curve: μR draws the curve and the origin together
     ``size`` mm across (``hodograph_scale``; a reaction that keeps its direction draws its loop
@@ -619,7 +632,7 @@ def hodograph_record(t: Turn, key: str, size: float = HODOGRAPH_MM, lang: str = 
         c = complex(bx0 + bx1, by0 + by1) / 2 / mu_r          # the spot ringed on the hodograph and named
         r = abs(complex(bx1 - bx0, by1 - by0)) / 2 / mu_r + 1.5
         if ink is None:
-            ink = _ink_of(rec)
+            ink = _InkOf(rec.items)       # grown only where a corner asks (most details do not fit the field)
         if share is not None:           # the sketch first: where it finds no room, neither does the lettered one
             from graphplan.drawing.labels import sketched
             with sketched():
@@ -719,10 +732,34 @@ def _shape(q: Primitive):
 
 
 def _ink_of(rec: Record):
-    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely)."""
-    from shapely.ops import unary_union
-    return unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
-                       ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
+    """The record's lines and points grown by ``DETAIL_CLEAR`` (shapely), remembered by their
+    geometry (the buffer is most of a hodograph's cost; its two languages and the sheet's trial
+    sizes ask for the same ink)."""
+    key = tuple((q.kind, q.points, q.radius) for q in rec.items if q.kind != "text")
+    ink = _INKS.get(key)
+    if ink is None:
+        from shapely.ops import unary_union
+        ink = unary_union([g for g in (_shape(q) for q in rec.items) if g is not None]
+                          ).simplify(0.1).buffer(DETAIL_CLEAR, quad_segs=4)
+        if len(_INKS) >= 128:
+            _INKS.pop(next(iter(_INKS)))
+        _INKS[key] = ink
+    return ink
+
+
+_INKS: dict[tuple, object] = {}     # geometry → its grown ink (shapely geometries are immutable)
+
+
+class _InkOf:
+    """``_ink_of`` of the primitives as they are now, grown when first asked (``_corner``)."""
+
+    def __init__(self, items: list[Primitive]) -> None:
+        self.items, self.ink = list(items), None
+
+    def geometry(self):
+        if self.ink is None:
+            self.ink = _ink_of(Record("", self.items))
+        return self.ink
 
 
 def _corner(ink, det: Record, ring: tuple[complex, float],
@@ -740,7 +777,7 @@ def _corner(ink, det: Record, ring: tuple[complex, float],
         return None
     for cx, cy in ((x1 - w, y1 - h), (x0, y1 - h), (x1 - w, y0), (x0, y0)):
         spot = box(cx, cy, cx + w, cy + h)
-        if not spot.intersects(ringed) and not spot.intersects(ink):
+        if not spot.intersects(ringed) and not spot.intersects(ink.geometry() if isinstance(ink, _InkOf) else ink):
             return det.moved(cx - d0, cy - e0)
     return None
 

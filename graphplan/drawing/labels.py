@@ -327,6 +327,58 @@ def _candidates(req: LabelRequest, ink: Box, gaps, n: int) -> tuple[np.ndarray, 
 _SKETCH = [False]
 
 
+# -- placements remembered ------------------------------------------------------------------------
+# A placement is a function of the record's primitives and what is asked: a force sheet draws its
+# hodographs and lever in both languages and at the scales it tries, each asking the same labels of
+# the same lines again. The primitives placed are kept (they are immutable) and set again.
+
+_PLACED: dict[tuple, tuple] = {}
+_PLACED_KEPT = 512
+_SAME = object()     # the placement returned its record
+
+
+def _asked(x):
+    """A hashable image of a placement's argument (its value, not its identity): a request by its
+    fields, a callable (``accept``) by its code and its closure's values, an array by its bytes;
+    TypeError for anything else mutable."""
+    if isinstance(x, (str, int, float, complex, bool, type(None))):
+        return x
+    if isinstance(x, (list, tuple)):
+        return tuple(_asked(v) for v in x)
+    if isinstance(x, LabelRequest):
+        return (LabelRequest,) + tuple(_asked(v) for v in x.__dict__.values())
+    if isinstance(x, np.ndarray):
+        return (x.dtype.str, x.shape, x.tobytes())
+    if callable(x) and hasattr(x, "__code__") and not getattr(x, "__defaults__", None):
+        return (x.__code__,) + tuple(_asked(c.cell_contents) for c in (x.__closure__ or ()))
+    raise TypeError(f"not remembered: {type(x).__name__}")
+
+
+def _remembered(place):
+    """``place`` (record, …) remembered by the record's primitives and its arguments' values."""
+    import functools
+
+    @functools.wraps(place)
+    def wrapper(record: Record, *args, **kw):
+        if _SKETCH[-1]:
+            return place(record, *args, **kw)
+        try:
+            key = (place.__name__, tuple(record.items), _asked(args), _asked(tuple(sorted(kw.items()))))
+            hash(key)
+        except TypeError:
+            return place(record, *args, **kw)
+        hit = _PLACED.get(key)
+        if hit is not None:
+            record.items[:] = hit[0]
+            return record if hit[1] is _SAME else hit[1]
+        out = place(record, *args, **kw)
+        if len(_PLACED) >= _PLACED_KEPT:
+            _PLACED.pop(next(iter(_PLACED)))
+        _PLACED[key] = (tuple(record.items), _SAME if out is record else out)
+        return out
+    return wrapper
+
+
 @contextmanager
 def sketched():
     """Inside it, drawings are sketched: their labels are asked for but not placed — what a
@@ -339,6 +391,7 @@ def sketched():
         _SKETCH.pop()
 
 
+@_remembered
 def place_labels(record: Record, requests: list[LabelRequest], layer: str = "labels") -> Record:
     """Add the labels to ``record`` where they overprint nothing (see the module's docstring);
     returns the record."""
@@ -762,6 +815,7 @@ def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -
     return [p.moved(ux * best, uy * best) for p in row]
 
 
+@_remembered
 def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels",
                 accept=None) -> Record:
     """One label asked at several anchors in order of preference (a link's number at the middle of
@@ -802,6 +856,7 @@ def _box_gap(box, z: complex) -> float:
     return abs(complex(max(box[0] - z.real, 0.0, z.real - box[2]), max(box[1] - z.imag, 0.0, z.imag - box[3])))
 
 
+@_remembered
 def place_owned(record: Record, requests: list[LabelRequest], layer: str = "labels") -> Record:
     """Labels of points that crowd one another (a plan's a, b and s2 within 4 mm): each is placed
     as ``place_labels`` places it, but only where its box is at most half as far from its own
@@ -876,6 +931,7 @@ def owns_line(box: Box, mine: tuple[complex, complex], others: list[tuple[comple
     return all(box_to_segment(box, *o) >= max(d + margin, 1.5 * d) for o in others)
 
 
+@_remembered
 def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tuple[complex, complex],
                      others: list[tuple[complex, complex]], layer: str = "labels") -> Record:
     """A force's letter that must read as its own arrow's where other arrows pass near (Φ4 and P_E
@@ -1031,12 +1087,20 @@ class Leads:
         return None
 
 
-def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR) -> Leads:
+def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR, worth=None) -> Leads:
     """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it),
-    on the ``rings`` (``FAR``, or its nearer ones)."""
+    on the ``rings`` (``FAR``, or its nearer ones); ``worth(lengths)``, where given, the candidates
+    worth asking by their leaders' lengths (the others are not free: a caller that takes none of
+    them saves counting them — each candidate is counted on its own, so the rest count the same)."""
     boxes, starts = _candidates(req, ink, rings, FAR_DIRECTIONS)
     a, b = _led_all(req.at, boxes)
-    base = _counts(ob, boxes, number=_number(req)) == 0
+    if worth is None:
+        base = _counts(ob, boxes, number=_number(req)) == 0
+    else:
+        base = np.asarray(worth(np.abs(b - a)), dtype=bool)
+        asked = np.nonzero(base)[0]
+        if len(asked):
+            base[asked] = _counts(ob, boxes[asked], number=_number(req)) == 0
     if ob.boxes:
         q = np.asarray(ob.boxes, dtype=float)
         idx = np.nonzero(base)[0]
@@ -1062,6 +1126,7 @@ def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] =
     return Leads(boxes, starts, a, b, base, strict, loose, ob, {})
 
 
+@_remembered
 def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels", beside: float = BESIDE_MM,
                  avoid: np.ndarray | None = None, keep_whole: tuple[str, ...] = ()) -> str:
     """Place one label near its point with a checked leader — a diagram's numbered point among its
@@ -1142,6 +1207,7 @@ ALONG_APART = 1.0        # mm more than ``APART`` between two names set along li
                          # closer than their height read as one another's)
 
 
+@_remembered
 def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex],
                 others: list[tuple[complex, complex]], fractions: tuple[float, ...] = (1.0, 0.75, 0.5, 0.25),
                 beside: float = BESIDE_MM, longest: float = ALONG_LEADER_MM, apart: float = ALONG_APART,
@@ -1184,10 +1250,11 @@ def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex]
     n = 2 * DIRECTIONS
     found = [_candidates(replace(req, at=z), ink, gaps, n) for z in anchors]
     local = ob.near(0.5 * (a0 + b0), 0.5 * span + NEAR[-1] + reach)
-    counts = [_counts(local, boxes, number=_number(req)) for boxes, _ in found]
-    for r in range(len(gaps)):
-        for (boxes, starts), c in zip(found, counts):
-            for k in (np.nonzero(c[r * n:(r + 1) * n] == 0)[0] + r * n).tolist():
+    for r in range(len(gaps) if found else 0):
+        # ring by ring, all the anchors' candidates on it counted at once (most names stand on the first)
+        ring = _counts(local, np.concatenate([boxes[r * n:(r + 1) * n] for boxes, _ in found]), number=_number(req))
+        for i, (boxes, starts) in enumerate(found):
+            for k in (np.nonzero(ring[i * n:(i + 1) * n] == 0)[0] + r * n).tolist():
                 box = tuple(float(v) for v in boxes[k])
                 if (box_to_segment(box, a0, b0) <= beside and own(box)
                         and (accept is None or accept(box))):
@@ -1198,7 +1265,10 @@ def place_along(record: Record, req: LabelRequest, mine: tuple[complex, complex]
     for i, z in enumerate(anchors if longest > 0 else ()):
         sub = ob.near(z, min(FAR[-1], longest) + reach)
         # (a ring g out gives leaders at least g − 2 mm long: the farther rings are not asked)
-        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0))
+        # only the leaders that could be taken: no longer than ``longest``, shorter than the best so far
+        bound = best[0] - 1e-9 if best is not None else math.inf
+        cand = leads(sub, replace(req, at=z, across=False), ink, tuple(g for g in FAR if g <= longest + 2.0),
+                     worth=lambda lengths, bound=bound: (lengths <= longest) & (lengths < bound))
         length = np.abs(cand.b - cand.a)
         ok = cand.base & (length <= longest)
         idx = np.nonzero(ok)[0]

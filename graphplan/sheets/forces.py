@@ -696,7 +696,16 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         cols = [_column(f, tabs, parts, lambda w: notes_height(nat.notes, w))[0] for parts in (1, 2, 3)]
 
+        tried: dict[tuple, tuple | None] = {}
+
         def arranged(mu, shape, first=False):
+            """``_arranged``, remembered: the shapes' two orders of growth try the same sizes."""
+            key = (shape, first, tuple(sorted(mu.items())))
+            if key not in tried:
+                tried[key] = _arranged(mu, shape, first)
+            return tried[key]
+
+        def _arranged(mu, shape, first=False):
             """(fill, hodographs' columns, the column's parts, the hodographs' row) of the best
             arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
