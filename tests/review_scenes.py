@@ -1542,3 +1542,97 @@ pressure_angle_deg = { rise = 35, return = 45 }
 rpm = 200
 direction = "ccw"
 '''
+
+
+SIXBAR12 = '''# Review 12 (a), its O3E 0.42 m as the review drew it (the block runs 1.5 mm past E at positions
+# 11, 0, 1; 0.46 would hold it): a six-bar of a press-feed lever — crank-rocker four-bar O1ABO2 (RRR) whose rocker's
+# extension carries a pin C with a sliding block in the slot of an oscillating slotted lever O3E (RPR,
+# the 3rd kind, as the second group). Crank clockwise; a resistance moment on the slotted lever with a profile.
+title = "Шестиланковий механізм з кулісою, що коливається (рецензія 12)"
+title_en = "Six-bar with an oscillating slotted lever (review 12)"
+designation = "ТММ.РВ12.01.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент 12"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, -0.02]
+O3 = [0.52, 0.16]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 1.8
+inertia = 0.0012
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.27
+points = { S2 = 0.5 }
+mass = 3.2
+inertia = 0.021
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { C = 1.35, S3 = 0.6 }
+mass = 4.0
+inertia = 0.035
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "O3E"
+mass = 0.8
+
+[[link]]
+name = "O3E"
+number = 5
+joints = ["O3"]
+length = 0.42
+points = { E = 1.0, S5 = 0.5 }
+mass = 5.5
+inertia = 0.09
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [3, 8]
+output = "O3E"
+force_phi_deg = 110
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 95
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [6, 1], [14, 1], [20, 0.4]]
+
+[dynamics]
+delta = 0.05
+efficiency = 0.88
+synchronous_rpm = 1000
+'''
