@@ -103,17 +103,18 @@ def _texts(rec) -> list[str]:
     return [p.text for p in rec.items if p.kind == "text"]
 
 
-def test_a_rockers_resistance_chart_names_its_angle_phi3(rocker_turn):
-    """"s, °" and μ_s named the rocker's angle: a rocking output's path is φ3 with μ_φ; a slider's
-    stays s with μ_s."""
+def test_a_rockers_resistance_chart_names_its_angle_psi3(rocker_turn):
+    """"s, °" and μ_s named the rocker's angle: a rocking output's path is ψ3 with μ_ψ, the
+    textbook's letter for a rocker's angle as the kinematics sheet writes it (review 12 #18: φ5); a
+    slider's stays s with μ_s."""
     from graphplan.drawing.charts import resistance_record, turn
     texts = _texts(resistance_record(rocker_turn, lang="en"))
-    assert "φ_{3}, °" in texts
-    assert not any(t.startswith("s,") or "μ_s" in t for t in texts), texts
-    assert any("μ_φ = " in t and "φ_{3}" in t for t in texts), texts
+    assert "ψ_{3}, °" in texts
+    assert not any(t.startswith("s,") or "μ_s" in t or "φ" in t for t in texts), texts
+    assert any("μ_ψ = " in t and "ψ_{3}" in t for t in texts), texts
     slider = _texts(resistance_record(turn(example("shaper")), lang="en"))
     assert any(t.startswith("s, ") for t in slider) and any("μ_s = " in t for t in slider)
-    assert not any("μ_φ" in t for t in slider)
+    assert not any("μ_ψ" in t for t in slider)
 
 
 ROUND = {1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5}
