@@ -13,7 +13,7 @@ import numpy as np
 
 from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
-from graphplan.drawing.labels import place_labels
+from graphplan.drawing.labels import NUMBERS_APART, place_labels
 from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
@@ -825,15 +825,16 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     # (0 and 1, 6 and 7, 11 and 12 by a rocker's extremes, where the path hardly grows) each is set
     # aside just enough, on a short leader from its tick (review 12 #18: three rows under the axis)
     xs = [X(k) for k, _ in marks]
-    halves = [0.5 * (lambda i: i[2] - i[0])(Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5,
-                                                        anchor="middle").ink()) for _, pos in marks]
-    at = spread_apart(xs, halves, NUMBER_GAP_MM)
-    moved = any(abs(a - x) > 0.3 for a, x in zip(at, xs))
-    low = -6.5 if moved else -5.0
-    for (k, pos), x, a in zip(marks, xs, at):
+    inks = [Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink() for _, pos in marks]
+    mids = [0.5 * (i[0] + i[2]) for i in inks]            # a number's ink is not centred on its x ("1")
+    at = [c - m for c, m in zip(spread_apart([x + m for x, m in zip(xs, mids)],
+                                             [0.5 * (i[2] - i[0]) for i in inks], NUMBER_GAP_MM), mids)]
+    moved = any(abs(a - x) > 1e-6 for a, x in zip(at, xs))
+    low = -7.0 if moved else -5.0          # room for the leaders: 2 mm from the tick, 1 mm off the ink
+    for (k, pos), x, a, ink, m in zip(marks, xs, at, inks, mids):
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
-        if abs(a - x) > 0.3:
-            rec.segment((x, -1.5), (a, low + 2.9), role="label", layer="labels", step=step)
+        if abs(a - x) > 1e-6:
+            rec.segment((x, -1.5), (a + m, low + ink[3] + 1.0), role="label", layer="labels", step=step)
         rec.label((a, low), str(pos), size=2.5, anchor="middle", step=step)
     low = _path_values(rec, reach, mu_s, low, lang, step)
     for a, b in zip(cuts, cuts[1:]):
@@ -855,7 +856,7 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
 
 
 VALUE_GAP_MM = 20.0    # the path axis's values at least this far apart
-NUMBER_GAP_MM = 1.0    # paper between two positions' numbers in their row
+NUMBER_GAP_MM = NUMBERS_APART    # paper between two positions' numbers in their row ("11 12", not "1112")
 
 
 def spread_apart(xs: Sequence[float], halves: Sequence[float], gap: float) -> list[float]:
