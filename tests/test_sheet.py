@@ -93,6 +93,8 @@ def test_formats_by_suffix(tmp_path):
 def test_force_sheet_renders():
     s = build("shaper", kind="forces")
     assert defects(s) == []
+    from svgboxes import off_field
+    assert off_field(s.svg(), s.form) == []          # every element in the field, read off the SVG
     texts = " ".join(p.text for p in s.record.items if p.kind == "text")
     assert "Важіль Жуковського" in texts and "План сил групи II(4-5)" in texts
 
