@@ -50,6 +50,7 @@ THINNED = {
     "test_notes_largest_error_is_the_tables": 1,
     "test_lettering_reads_as_words_wherever_it_stands": 1,
     "test_forces_json_contract": 1,
+    "test_a_force_sheet_keeps_every_element_in_its_field": 0,      # 4–15 s each (the shaper's in test_sheet)
     "test_every_force_on_a_group_is_named_from_its_source_to_the_group": 1,
     "test_the_cam_page_is_one_offline_deterministic_file": 0,
     # the heaviest single checks (sets and a moment-loaded dynamics sheet, 10–42 s each): slow suite

@@ -44,6 +44,8 @@ def test_the_cam_sheet_reads_as_lettered(cam, lang):
         assert any(must in w for w in words), must
     assert not defects(sheet)
     assert overprinted(svg) == []
+    from svgboxes import off_field
+    assert off_field(svg, sheet.form) == []        # every element in the field, read off the SVG
     # the drawings fill the field: their boxes span its width and more than half its height
     x0, y0, x1, y1 = field_of(sheet.form)
     # (the phase diagram placed apart from the s–v–a diagrams when the notes stand under it)

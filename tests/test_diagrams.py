@@ -188,11 +188,12 @@ def test_adaptive_refines_the_quick_return(shaper):
 
 def test_rocking_and_turning_outputs():
     four = chord_diagrams(example("four_bar"), precision=0, divisions=48)
-    assert four.unit == "rad" and four.symbols == ("φ", "ω", "ε")
+    assert four.unit == "rad" and four.symbols == ("ψ", "ω", "ε")       # a rocker's angle: ψ
     assert np.max(np.abs(four.errors_of_max("v_mid"))) < 0.5
     slotter = example("slotter")
     d = chord_diagrams(slotter, point="BC", divisions=48, precision=0)  # the rotating slotted link
     assert abs(abs(d.truth["s"][-1]) - 2 * math.pi) < 1e-9 and d.sign * d.truth["s"][-1] > 0
+    assert d.symbols[0] == "φ"            # a link turning round keeps φ (ψ is a rocker's)
     slopes, v = chord_slopes(diagrams_json(d))
     assert np.allclose(v, slopes, rtol=1e-9)
     assert np.max(np.abs(d.errors_of_max("a_mid"))) < 1.0

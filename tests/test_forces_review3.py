@@ -103,17 +103,63 @@ def _texts(rec) -> list[str]:
     return [p.text for p in rec.items if p.kind == "text"]
 
 
-def test_a_rockers_resistance_chart_names_its_angle_phi3(rocker_turn):
-    """"s, °" and μ_s named the rocker's angle: a rocking output's path is φ3 with μ_φ; a slider's
-    stays s with μ_s."""
+def test_the_resistance_charts_positions_read_in_one_row(rocker_turn):
+    """Review 12 #18: by a rocker's extremes the path hardly grows, and 0/1, 6/7, 11/12 were split
+    over two rows above the degree scale. Now one row: every position's number at one height, each
+    3 mm of paper from the next (the font's ink), at its tick or set aside on a leader from that
+    very tick, within 4 mm of it."""
+    from graphplan.drawing.charts import resistance_record
+    from graphplan.graphic.record import Primitive
+    t = rocker_turn
+    rec = resistance_record(t, lang="uk")
+    count = t.ks.st.mech.task.count
+    nums = [q for q in rec.items if q.kind == "text" and q.text.isdigit() and q.points[0][1] < 0
+            and q.anchor == "middle" and int(q.text) <= count]
+    rows = sorted({round(q.points[0][1], 6) for q in nums})
+    top = [q for q in nums if round(q.points[0][1], 6) == rows[-1]]
+    assert sorted(int(q.text) for q in top) == list(range(count + 1))        # 0 … 12 in the top row
+    ticks = {x for q in rec.items if q.kind == "segment" and q.layer == "diagrams"
+             for (x, y0), (_, y1) in [q.points] if y0 == -1.5 and y1 == 1.5}
+    leaders = [q.points for q in rec.items if q.kind == "segment" and q.layer == "labels"]
+    boxes = []
+    for q in sorted(top, key=lambda q: q.points[0][0]):
+        x = q.points[0][0]
+        ink = Primitive("text", ((x, 0.0),), text=q.text, size=q.size, anchor="middle").ink()
+        boxes.append((ink[0], ink[2]))
+        tick = next((a[0] for a, b in leaders if abs(b[0] - x) < 2.0 and 0 < b[1] - q.points[0][1] < 4.5), x)
+        assert min(abs(tick - s) for s in ticks) < 1e-6 and abs(tick - x) < 4.0, q.text   # at its tick, or led
+    # 3 mm of paper between two numbers (labels.NUMBERS_APART: "11 12" closer reads "1112")
+    assert all(b[0] - a[1] >= 3.0 - 1e-6 for a, b in zip(boxes, boxes[1:])), boxes
+    assert leaders                      # this rocker's 11 and 12 (and 0, 1) crowd: some set aside
+
+
+@pytest.mark.parametrize("xs, halves", [([0.0, 0.9, 5.0, 10.0, 10.5, 30.0, 30.3], [0.7] * 7),
+                                        ([3.0, 1.0, 2.0], [1.5, 0.5, 0.5]), ([0.0, 20.0], [1.0, 1.0])])
+def test_numbers_crowding_in_a_row_are_set_apart_about_their_places(xs, halves):
+    """Each number as near its place as its neighbours leave it: apart by 1 mm of paper at least,
+    in their order, a run of crowding numbers centred on their places' mean; alone, at its place."""
+    from graphplan.drawing.charts import spread_apart
+    at = spread_apart(xs, halves, 1.0)
+    order = sorted(range(len(xs)), key=lambda i: xs[i])
+    for i, j in zip(order, order[1:]):
+        assert at[j] - at[i] >= halves[i] + halves[j] + 1.0 - 1e-9
+    for i in order:
+        alone = all(abs(xs[i] - xs[j]) >= halves[i] + halves[j] + 1.0 for j in order if j != i)
+        assert not alone or at[i] == pytest.approx(xs[i])
+
+
+def test_a_rockers_resistance_chart_names_its_angle_psi3(rocker_turn):
+    """"s, °" and μ_s named the rocker's angle: a rocking output's path is ψ3 with μ_ψ, the
+    textbook's letter for a rocker's angle as the kinematics sheet writes it (review 12 #18: φ5); a
+    slider's stays s with μ_s."""
     from graphplan.drawing.charts import resistance_record, turn
     texts = _texts(resistance_record(rocker_turn, lang="en"))
-    assert "φ_{3}, °" in texts
-    assert not any(t.startswith("s,") or "μ_s" in t for t in texts), texts
-    assert any("μ_φ = " in t and "φ_{3}" in t for t in texts), texts
+    assert "ψ_{3}, °" in texts
+    assert not any(t.startswith("s,") or "μ_s" in t or "φ" in t for t in texts), texts
+    assert any("μ_ψ = " in t and "ψ_{3}" in t for t in texts), texts
     slider = _texts(resistance_record(turn(example("shaper")), lang="en"))
     assert any(t.startswith("s, ") for t in slider) and any("μ_s = " in t for t in slider)
-    assert not any("μ_φ" in t for t in slider)
+    assert not any("μ_ψ" in t for t in slider)
 
 
 ROUND = {1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5}

@@ -154,7 +154,10 @@ def test_the_resistance_charts_force_axis_is_graduated(press_turn):
     assert values[0][0] == 0 and top - s < values[-1][0] <= top + 1e-9
     end = path_travelled(press_turn)[-1] / rec.scales["mu_s"]
     twelve = [q for q in rec.items if q.kind == "text" and q.text == "12"]
-    assert twelve and twelve[0].points[0][0] == pytest.approx(end)
+    # at its tick, or set aside from it on a leader where 11 crowds it (one row, review 12 #18)
+    led = [a[0] for a, b in (q.points for q in rec.items if q.kind == "segment" and q.layer == "labels")
+           if twelve and abs(b[0] - twelve[0].points[0][0]) < 2.0 and 0 < b[1] - twelve[0].points[0][1] < 4.5]
+    assert twelve and (led or [twelve[0].points[0][0]])[0] == pytest.approx(end)
 
 
 def test_flat_hodographs_grow_where_the_sheet_has_room(press_turn):

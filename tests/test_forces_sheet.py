@@ -204,7 +204,11 @@ def test_force_sheets_have_no_overprint(name, tmp_path):
     from inkcheck import overprinted
     from graphplan.drawing.fonts import register
     register()                                    # the packaged font, as a browser loads it
-    assert overprinted(out.read_text(encoding="utf-8")) == []
+    svg = out.read_text(encoding="utf-8")
+    assert overprinted(svg) == []
+    from svgboxes import off_field
+    from graphplan.sheets.form import form
+    assert off_field(svg, form("A1")) == []
 
 
 def _shaft(v):

@@ -641,8 +641,11 @@ def test_the_gear_sheet_has_no_overprinted_word(tmp_path, name, lang, fmt):
     from inkcheck import overprinted
     from graphplan.drawing.fonts import register
     register()                                    # the packaged font, as a browser loads it
+    from svgboxes import off_field
     for n, page in enumerate(sheet.pages, 1):
-        assert overprinted(page.svg()) == [], f"sheet {n}"
+        svg = page.svg()
+        assert overprinted(svg) == [], f"sheet {n}"
+        assert off_field(svg, page.form, later=n > 1) == [], f"sheet {n}"
 
 
 def test_the_sheet_command_writes_the_gear_sheet(tmp_path):

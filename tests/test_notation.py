@@ -45,7 +45,7 @@ def test_the_diagrams_scales_are_named_apart_from_the_plans():
     assert not re.search(r"μ_\{?[SVA]\b", said)
     assert "μ_v" not in said and "μ_a" not in said
     rocker = chord_diagrams(example("four_bar"), divisions=12)
-    assert "μ_ω = μ_φ/(μ_t·H_1)" in " ".join(scale_lines(rocker, "uk"))
+    assert "μ_ω = μ_ψ/(μ_t·H_1)" in " ".join(scale_lines(rocker, "uk"))      # a rocker's angle ψ
 
 
 @pytest.mark.parametrize("mm, figs", [(2.0, 2), (23.0, 3), (23.4, 3), (61.5, 3), (123.5, 4), (123.0, 4),

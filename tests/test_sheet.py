@@ -39,6 +39,8 @@ def test_sheet_is_a1_in_mm_with_layers(sheet):
     for layer in ("frame", "mechanism", "vectors", "labels", "diagrams", "tables"):
         assert f'inkscape:label="{layer}"' in svg, layer
     assert re.search(r'<polygon[^>]*points="20,589 836,589 836,5 20,5"', svg)
+    from svgboxes import off_field
+    assert off_field(svg, sheet.form) == []        # every element in the field, read off the SVG
 
 
 def test_blocks_and_labels_do_not_overlap(sheet):
@@ -91,6 +93,8 @@ def test_formats_by_suffix(tmp_path):
 def test_force_sheet_renders():
     s = build("shaper", kind="forces")
     assert defects(s) == []
+    from svgboxes import off_field
+    assert off_field(s.svg(), s.form) == []          # every element in the field, read off the SVG
     texts = " ".join(p.text for p in s.record.items if p.kind == "text")
     assert "Важіль Жуковського" in texts and "План сил групи II(4-5)" in texts
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import io
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -12,7 +13,7 @@ import numpy as np
 
 from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
-from graphplan.drawing.labels import place_labels
+from graphplan.drawing.labels import NUMBERS_APART, place_labels
 from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
@@ -843,13 +844,15 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     ext = forces or ext
     path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
-    # a slide's path s with μ_s; a rocking output's angle φ_3 from position 0 (the kinematics sheet's
-    # name for the rocker's angle) with μ_φ
+    # a slide's path s with μ_s; a rocking output's angle ψ_5 from position 0 (the kinematics sheet's
+    # letter for a rocker's angle, graphic.diagrams.angle_symbol) with μ_ψ
     if st.output.kind == "slide":
         sym, what, mu_sym = "s", f"s_{{{st.output.name}}}", "μ_s"
     else:
-        sym = what = f"φ_{{{st.mech.links[st.output.name].number}}}"
-        mu_sym = "μ_φ"
+        from graphplan.graphic.diagrams import angle_symbol
+        letter = angle_symbol(st, st.output.name)
+        sym = what = f"{letter}_{{{st.mech.links[st.output.name].number}}}"
+        mu_sym = f"μ_{letter}"
     force = np.abs(sum(ld.couple for ld in ext)) if couple else np.abs(sum(ld.force for ld in ext))
     f_unit, f_mu = (unit("N·m", lang), "μ_M") if couple else (unit("N", lang), "μ_P")
     work = np.asarray(t.ks.working, dtype=bool)
@@ -879,21 +882,24 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
             rec.segment((X(k), 0.0), (X(k), float(force[k] / mu_p)), role="hatch", layer="diagrams", step=step)
     # each stroke named under the axis, across its span
     cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]
-    low = -5.0
-    seen: list[tuple[float, float, int]] = []    # (x, half the number's ink width, its row) set so far
     marks = t.position_index()
     if marks:        # the cycle closes at position 0 again: the lab numbers its end 12
         marks = marks + [(n, t.count)]
-    for k, pos in marks:
-        x = X(k)
+    # the positions' numbers in one row under their ticks: where two stand closer than their ink
+    # (0 and 1, 6 and 7, 11 and 12 by a rocker's extremes, where the path hardly grows) each is set
+    # aside just enough, on a short leader from its tick (review 12 #18: three rows under the axis)
+    xs = [X(k) for k, _ in marks]
+    inks = [Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink() for _, pos in marks]
+    mids = [0.5 * (i[0] + i[2]) for i in inks]            # a number's ink is not centred on its x ("1")
+    at = [c - m for c, m in zip(spread_apart([x + m for x, m in zip(xs, mids)],
+                                             [0.5 * (i[2] - i[0]) for i in inks], NUMBER_GAP_MM), mids)]
+    moved = any(abs(a - x) > 1e-6 for a, x in zip(at, xs))
+    low = -7.0 if moved else -5.0          # room for the leaders: 2 mm from the tick, 1 mm off the ink
+    for (k, pos), x, a, ink, m in zip(marks, xs, at, inks, mids):
         rec.segment((x, -1.5), (x, 1.5), role="construction", layer="diagrams", step=step)
-        ink = Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink()
-        half = 0.5 * (ink[2] - ink[0])
-        taken = {row for s_, h_, row in seen if abs(s_ - x) < half + h_ + 1.0}   # 1 mm of paper between numbers
-        below = min(r for r in range(len(taken) + 1) if r not in taken)          # the first free row down
-        seen.append((x, half, below))
-        rec.label((x, -5.0 - 3.5 * below), str(pos), size=2.5, anchor="middle", step=step)
-        low = min(low, -5.0 - 3.5 * below)
+        if abs(a - x) > 1e-6:
+            rec.segment((x, -1.5), (a + m, low + ink[3] + 1.0), role="label", layer="labels", step=step)
+        rec.label((a, low), str(pos), size=2.5, anchor="middle", step=step)
     low = _path_values(rec, reach, mu_s, low, lang, step)
     for a, b in zip(cuts, cuts[1:]):
         xa, xb = X(a), X(b)
@@ -914,6 +920,37 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
 
 
 VALUE_GAP_MM = 20.0    # the path axis's values at least this far apart
+NUMBER_GAP_MM = NUMBERS_APART    # paper between two positions' numbers in their row ("11 12", not "1112")
+
+
+def spread_apart(xs: Sequence[float], halves: Sequence[float], gap: float) -> list[float]:
+    """Centres for labels of half widths ``halves`` wanted at ``xs`` in one row: each as near its
+    own as may be, neighbours ``gap`` apart at least — runs that would meet set side by side about
+    their wanted centres' mean (a 1-D cluster placement)."""
+    order = sorted(range(len(xs)), key=lambda i: xs[i])
+    runs: list[tuple[list[int], float]] = []        # (members in order, the run's left edge)
+
+    def width(members: list[int]) -> float:
+        return sum(2.0 * halves[i] for i in members) + gap * (len(members) - 1)
+
+    def left_of(members: list[int]) -> float:
+        off, wanted = 0.0, []
+        for i in members:
+            wanted.append(xs[i] - (off + halves[i]))
+            off += 2.0 * halves[i] + gap
+        return sum(wanted) / len(wanted)
+
+    for i in order:
+        runs.append(([i], xs[i] - halves[i]))
+        while len(runs) > 1 and runs[-2][1] + width(runs[-2][0]) + gap > runs[-1][1] + 1e-9:
+            members = runs[-2][0] + runs[-1][0]
+            runs[-2:] = [(members, left_of(members))]
+    out = [0.0] * len(xs)
+    for members, left in runs:
+        for i in members:
+            out[i] = left + halves[i]
+            left += 2.0 * halves[i] + gap
+    return out
 
 
 def _path_values(rec: Record, reach: float, mu_s: float, low: float, lang: str, step: str) -> float:

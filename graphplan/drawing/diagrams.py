@@ -40,7 +40,7 @@ def scale_symbols(d: Diagrams) -> tuple[str, str, str]:
     """The diagrams' scale subscripts in the lab's lower case, named apart from the plans' μ_v, μ_a
     by the quantity each diagram draws: μ_{sF}, μ_{vF}, μ_{aF} for a sliding output F's s_F, v_F, a_F
     (review 10: seed 002's μ_S, μ_V, μ_A read as capitals beside μ_t; μ_A is the dynamics' work
-    scale); μ_φ, μ_ω, μ_ε for a link's angle."""
+    scale); μ_φ, μ_ω, μ_ε for a link's angle (μ_ψ for a rocker's, ``graphic.diagrams.angle_symbol``)."""
     if d.unit != "m":
         return d.symbols
     p = d.point

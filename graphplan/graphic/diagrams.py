@@ -430,7 +430,19 @@ def resolve_output(st: Study, point: str | None) -> tuple[Output, str, tuple[str
                              "line and two constants; name a sliding point or another link", mech.source)
     if out.kind == "slide":
         return out, out.name, ("s", "v", "a"), out.name, "m"
-    return out, out.name, ("φ", "ω", "ε"), str(mech.links[out.name].number), "rad"
+    return out, out.name, (angle_symbol(st, out.name), "ω", "ε"), str(mech.links[out.name].number), "rad"
+
+
+def angle_symbol(st: Study, link: str) -> str:
+    """The letter of a link's angle as the textbook writes it: ψ for a rocker's (a link pivoted on the
+    frame that swings, never turning round: O2B of a crank-rocker, a rocking slotted lever; review
+    12 #18), φ for any other (a crank, a slotted link turning round, a coupler)."""
+    mech = st.mech
+    lk = mech.links[link]
+    if link == mech.crank.link or not any(j in mech.frame for j in lk.joints):
+        return "φ"
+    turn = np.unwrap(st.solve(np.linspace(0.0, 360.0, 73)).bodies[link].theta)
+    return "ψ" if float(np.ptp(turn)) < 2.0 * math.pi - 1e-6 else "φ"
 
 
 def division_turns(divisions: int | Sequence[float], where: str = "divisions",

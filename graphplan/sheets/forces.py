@@ -956,6 +956,48 @@ def _checked(dr: ForceDrafter, nat: Natural, p: Plan) -> bool:
     return ok
 
 
+# compositions tried at most, each with the sizes the one before came out drawn at: review 12's six-bar
+# took 7 (its lever's arms lettered 40–70 mm out at some μv, not at others); after 4 it kept the 4th,
+# drawn 852 × 581 mm on a field of 806 × 574 (Table 3, the notes and a hodograph's caption off the frame)
+ROUNDS = 8
+
+
+def _holds(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> bool:
+    """Whether the plan's composition holds its drawings at the sizes they came out drawn at
+    (``_checked`` took them into ``nat``)."""
+    return _fits(nat, f, p, _placed_leaves(dr, nat, p.mu))
+
+
+def _drawn_leaves(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, list[Leaf]]:
+    """The drawings at the scales ``mu`` as the sheet places them: each captioned, the hodographs in
+    equal cells."""
+    recs, caps, names = dr.drawings(mu, lang), _captions(dr, mu, lang), dr.names()
+    leaves = {fam: [Leaf(names[fam][i], record=captioned(r, *caps[fam][i], size=SMALL_CAPTION.get(fam, 5.0)))
+                    for i, r in enumerate(rs)] for fam, rs in recs.items()}
+    if leaves.get("hodographs"):
+        cw, ch = max(x.w for x in leaves["hodographs"]), max(x.h for x in leaves["hodographs"])
+        leaves["hodographs"] = [Leaf(x.name, cw, ch, x.record) for x in leaves["hodographs"]]
+    return leaves
+
+
+def _within(dr: ForceDrafter, f: Form, p: Plan) -> bool:
+    """Whether the one-sheet composition holds its drawings, tables and notes as they come out drawn
+    at the plan's scales, as ``build_forces_sheet`` sets them: the field's bounds checked, not assumed
+    from the families' models. In the plan's language (its drawings are the sheet's, drawn once);
+    the tables and notes in both (``measure`` took the larger)."""
+    from graphplan.util.words import LANGS
+    x0, y0, x1, y1 = field_of(f)
+    leaves = _drawn_leaves(dr, p.mu, dr.opts.lang)
+    for lang in LANGS:
+        tables = [Leaf(name, record=rec) for name, rec in _tables(dr, p.mu, lang, p.tables)]
+        lines = _notes_lines(dr, p.mu, lang)
+        C = _column(f, tables, p.parts, lambda wd: _wh(note_block(lines, wd))[1], p.counts)[0]
+        tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow))
+        if tw > x1 - x0 + 1e-6 or th > y1 - y0 + 1e-6:
+            return False
+    return True
+
+
 @remembered
 def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDrafter]:
     """The force sheet's composition, once per scene, format and options (not the language): one
@@ -966,7 +1008,8 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
     nat = measure(dr)
     hod = nat.families["hodographs"]
     legible = _legible_factor(dr, hod)
-    for _ in range(4):
+    tried: list[Plan] = []
+    for _ in range(ROUNDS):
         hod.floor = 0.0
         free = _one_sheet(nat, f)
         floored = None
@@ -988,9 +1031,19 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = one
         if _checked(dr, nat, p):
             break
+        tried.append(p)
+    else:
+        # no composition came out drawn as measured: the latest that holds its drawings as they
+        # came out (each measured at its scales by ``_checked``), never one that runs off the field
+        p = next((q for q in reversed(tried) if _holds(dr, nat, f, q)), p)
+    base = p
     p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
-    if filled.shape != "set" or filled.mu == p.mu:
+    if filled.shape != "set":
+        # grown drawings sized by their families' models: the sheet as they come out drawn, else the
+        # composition before them (the field's bounds are a hard rule, the growth a nicety)
+        return _loaded(next((q for q in (filled, p) if _within(dr, f, q)), base), dr), nat, dr
+    if filled.mu == p.mu:
         return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
     # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
@@ -1400,15 +1453,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     p, nat, dr = plan(st, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
     lang = opts.lang
     w = lambda key: word(f"fs {key}", lang)  # noqa: E731
-    recs = dr.drawings(p.mu, lang)
-    caps = _captions(dr, p.mu, lang)
-    names = dr.names()
-    leaves = {fam: [Leaf(names[fam][i], record=captioned(r, *caps[fam][i], size=SMALL_CAPTION.get(fam, 5.0)))
-                    for i, r in enumerate(rs)] for fam, rs in recs.items()}
-    for fam in ("hodographs",):
-        if leaves[fam]:
-            cw, ch = max(x.w for x in leaves[fam]), max(x.h for x in leaves[fam])
-            leaves[fam] = [Leaf(x.name, cw, ch, x.record) for x in leaves[fam]]
+    leaves = _drawn_leaves(dr, p.mu, lang)
     tables = [Leaf(name, record=rec) for name, rec in _tables(dr, p.mu, lang, p.tables)]
     note_lines = _notes_lines(dr, p.mu, lang)
     region = field_of(f)

@@ -652,8 +652,8 @@ def sign_note(st: Study, diag, lang: str) -> str:
         guide = st.mech.guides[slider.slides_on]
         said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
         return said + (w('flipped') if diag.sign < 0 else "")
-    n = diag.sub
-    return w('signs_link', link=subscripted(out.name), n=n) + (w('flipped_link', n=n) if diag.sign < 0 else "")
+    n, s = diag.sub, diag.symbols[0]          # φ, or ψ for a rocker's angle
+    return w('signs_link', link=subscripted(out.name), n=n, sym=s) + (w('flipped_link', n=n, sym=s) if diag.sign < 0 else "")
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
