@@ -12,12 +12,12 @@ import pytest
 
 from graphplan.model.cam import build
 
-# review 12's scene b: a knife-edge, offset "auto", trapezoidal rise, cosine return, clockwise
+# review 12's scene b: a knife-edge, trapezoidal rise, cosine return, clockwise
 KNIFE_REV12 = '''
 [cam]
 follower = "translating"
 stroke = 0.025
-offset = "auto"
+offset = 0.0073              # "auto" in the review: the exact optimum 7.304 mm rounded to 0.1 mm
 roller_radius = 0
 phases_deg = { rise = 100, dwell_far = 40, return = 130, dwell_near = 90 }
 laws = { rise = "trapezoidal", return = "cosine" }
