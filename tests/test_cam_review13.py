@@ -8,6 +8,7 @@ import itertools
 import math
 import tomllib
 
+import numpy as np
 import pytest
 
 from graphplan.model.cam import build
@@ -98,7 +99,8 @@ def _close_numbers(rec) -> list:
 def test_no_two_division_numbers_closer_than_a_millimetre():
     """Review 13's rocking cam at its A3 set's sizes, redrawn with 16 divisions (the return's are
     4.69 mm apart at 1 °/mm): "24", moved left off the jump line at 25, stood 0.8 mm from "23" on
-    the d²ψ/dφ² axis (and "24", "25" 0.97 mm apart under ψ) — no two numbers now within 1 mm."""
+    the d²ψ/dφ² axis (and "24", "25" 0.97 mm apart under ψ) — no two numbers now within 1 mm, nor
+    one on the jump's vertical."""
     from graphplan.drawing.cam import diagrams
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
@@ -107,7 +109,15 @@ def test_no_two_division_numbers_closer_than_a_millimetre():
     assert g.mu_phi == pytest.approx(math.radians(1.0))
     rec = diagrams(sol, g, "en")
     assert _close_numbers(rec) == []
-    assert {"0", "32"} <= {q.text for q in rec.items if q.kind == "text" and q.step.startswith("division a")}
+    numbers = [q for q in rec.items if q.kind == "text" and q.step.startswith("division a")]
+    assert {"0", "24", "33"} <= {q.text for q in numbers} and "32" not in {q.text for q in numbers}
+    # nor on a jump of the curve: "24" (4.46 mm of ink right of its division) touched the vertical at 25
+    curve = np.array(next(q for q in rec.items if q.step == "a(φ) exact").points)
+    for q in numbers:
+        x0, y0, x1, y1 = q.ink()
+        for (ax, ay), (bx, by) in zip(curve[:-1], curve[1:]):
+            if abs(ax - bx) < 1e-6 and x0 - 0.3 < ax < x1 + 0.3:
+                assert max(ay, by) < y0 - 0.3 or min(ay, by) > y1 + 0.3, (q.text, ax)
 
 
 def test_the_chords_of_a_phase_that_missed_its_closing_are_dashed_and_thinner(knife):
