@@ -36,7 +36,9 @@ def test_the_chords_of_s_that_miss_the_closing_are_thin_construction(cam_tr):
     v_chords = [q for q in rec.items if q.step.startswith("chord v ")]
     curve = next(q for q in rec.items if q.step == "s(φ) exact")
     assert s_chords and v_chords
-    assert all(q.line_width <= THIN < curve.line_width for q in s_chords)
+    # (a phase that closed keeps its chords' weight: they are its traverse; review 13 #16 dashed the others)
+    missed = [q for q in s_chords if abs(g.closing[int(q.step.split()[2])]) > 0]
+    assert missed and all(q.line_width <= THIN < curve.line_width for q in missed)
     assert all(q.line_width == ROLES["chord"] for q in v_chords)
     # the last chord of the rise misses the stroke drawn by the closing error: it is the uncorrected one
     top = max(q.points[1][1] for q in s_chords if q.step.startswith("chord s 0 "))

@@ -87,8 +87,9 @@ def test_shared_divisions_are_numbered_once_and_no_two_numbers_overlap(case, lan
 def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pressure_diagram(lang):
     """examples/cam_rocking.toml on A1: the phase diagram (nothing reads across from ψ) level with the
     ψ diagram's top — it hung from the ψ axis over a blank 100 mm high —, the pressure angle's diagram under the diagrams
-    at their μ_φ and 2 °/mm or finer, the sheet under a third empty (35.3 / 34.3 % before; 32.0 / 29.7 %
-    with ϑ(φ) under the notes)."""
+    at their μ_φ and 2 °/mm or finer, the sheet under 37 % empty (35.3 / 34.3 % before; 32.0 / 29.7 %
+    with ϑ(φ) under the notes; 35.4 % (uk) since ϑ(φ) takes the diagrams' μ_φ, review 11 #16, and
+    36.1 / 35.6 % since the phase diagram draws no unlettered ray from O, review 12 #16)."""
     from conftest import example
     from graphplan.sheets.cam import build_cam_sheet
     from graphplan.sheets.compose import SheetOptions, defects
@@ -101,7 +102,7 @@ def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pr
     assert abs(dia.bounds()[3] - phase.bounds()[3]) < 1.0
     assert placed["pressure"].record.scales["mu_theta"] <= 2.0
     assert placed["pressure"].record.scales["mu_phi"] == dia.scales["mu_phi"]
-    assert empty_share(sheet) < 0.33
+    assert empty_share(sheet) < 0.37
 
 
 @pytest.mark.slow

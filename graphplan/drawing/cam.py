@@ -23,6 +23,9 @@ TEXT = 3.5
 NUMBER = 2.5          # the division numbers
 BELOW = 1.0           # a number under its axis: its baseline this many letter heights lower (1.2 mm clear
                       # with the font; a viewer's wider fallback font (DejaVu) reaches 0.27 letter higher)
+NUMBER_NEAR = 0.3     # mm: a number's nearest start to its division where NUMBER_OFF leaves no room
+NUMBER_GAP = 1.0      # mm: the least room between two division numbers on one axis
+UNCLOSED_W = 0.18     # mm: the s diagram's chords before its closing (a dashed first traverse)
 NUMBER_OFF = 0.8      # mm a diagram's division number starts right of its division (clear of a bold phase line)
 PHASE_NAMES = {"uk": ("φ_п", "φ_вв", "φ_с", "φ_бв"), "en": ("φ_{rise}", "φ_{far}", "φ_{return}", "φ_{near}")}
 
@@ -75,11 +78,17 @@ def _pt(z: complex) -> tuple[float, float]:
 def numbered(n_points: int, spacing: float, size: float = NUMBER) -> list[int]:
     """The division numbers that are lettered where the divisions lie ``spacing`` mm apart: every
     one, or every second, fifth … so that two numbers' widths fit between neighbours (the first
-    and the last always)."""
-    width = 0.7 * size * len(str(n_points - 1)) + 1.0
+    and the last always): the widest number's ink and NUMBER_GAP between neighbours, with 0.2 mm for
+    the glyphs' uneven side bearings (review 13 #5: at 4.69 mm a division "24" and "25" stood 0.98 mm
+    apart, the old estimate 0.7·h a digit being short of osifont's 1.8·h/2.5)."""
+    from graphplan.graphic.record import Primitive
+    ink = Primitive("text", ((0.0, 0.0),), text="8" * len(str(n_points - 1)), size=size).ink()
+    width = ink[2] - ink[0] + NUMBER_GAP + 0.2
     every = next(k for k in (1, 2, 4, 5, 10, 20, 50, 100) if k * spacing >= width or k == 100)
     keep = [k for k in range(n_points) if k % every == 0]
     if keep[-1] != n_points - 1:
+        if len(keep) > 1 and (n_points - 1 - keep[-1]) * spacing < width:
+            keep.pop()              # the last always: not one beside it ("32 33" 1 mm apart)
         keep.append(n_points - 1)
     return keep
 
@@ -183,15 +192,17 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
             rec.segment((x[k], y0), (x[k], y0 + drawn[k]), role="construction", layer=LAYER, step=f"{key} at {k}")
         if key in ("v", "s"):     # the chords of the integral, parallel to the rays below
             chord = g.v_chord if key == "v" else g.s_chord
-            # s closed by the correction (close_phases): its chords, which miss the closing, are a
-            # thin construction under the corrected ordinates and the curve (the lab erases them)
-            role = "construction" if key == "s" and any(abs(c) > 0 for c in g.closing) else "chord"
+            # s closed by the correction (close_phases): the chords of a phase that missed its closing
+            # are the first traverse, drawn dashed and thinner than any line kept (the lab erases them;
+            # review 13 #16: kept thin but solid 2 mm over ψ_max at the rise's end, they read as ink)
             for ph in (0, 1):
+                first = key == "s" and abs(g.closing[ph]) > 0
+                role, width = ("projection", UNCLOSED_W) if first else ("chord", None)
                 sel = np.flatnonzero(g.phase == ph)
                 for j in range(len(sel) - 1):
                     p, q = sel[j], sel[j + 1]
                     rec.segment((x[p], y0 + chord[p]), (x[q], y0 + chord[q]), role=role, layer=LAYER,
-                                step=f"chord {key} {ph} {j}")
+                                width=width, step=f"chord {key} {ph} {j}")
         if pole:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
                   key, labels)
@@ -276,6 +287,14 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                 out.append(q)
         return out
 
+    taken: list[tuple] = []    # the numbers lettered on this axis so far (their ink boxes)
+
+    def crowded(box) -> bool:
+        """Whether a number's box comes within NUMBER_GAP of one already lettered (review 13 #5: "24",
+        moved left off the jump line at 25, stood 0.8 mm from "23", one read over the other)."""
+        return any(box[0] < b[2] + NUMBER_GAP and b[0] < box[2] + NUMBER_GAP
+                   and box[1] < b[3] + NUMBER_GAP and b[1] < box[3] + NUMBER_GAP for b in taken)
+
     for ks, text in marks:     # a shared spot ("6; 7"): the curve leaving it is its last division's
         k = ks[-1]
         right = drawn.get(k + 1, 0.0)
@@ -288,15 +307,20 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         everything = [q for q in rec.items if q.kind in ("segment", "polyline", "vector")]
         # right of the division on either side of the axis; where the curve crosses the axis there
         # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
-        for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF)):
+        # (then nearer the division, 0.3 mm off it: between a jump's vertical and a neighbour's
+        # number, review 13's A3 "24" had 4.46 mm of ink in 4.69 mm)
+        for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF),
+                          ("start", x[k] + NUMBER_NEAR), ("end", x[k] - NUMBER_NEAR)):
             for side in ((1, -1) if up else (-1, 1)):
                 y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
                 box = Primitive("text", ((sx, y),), text=text, size=NUMBER, anchor=where).ink()
+                if crowded(box):
+                    continue
                 crossed = hits(box, lines if where == "start" else everything)
                 if not crossed:
                     best, anchor, xs = (y, box, []), where, sx
                     break
-                if best is None and where == "start" and all(q.step.startswith(f"mean {key}") for q in crossed):
+                if best is None and sx == x[k] + NUMBER_OFF and all(q.step.startswith(f"mean {key}") for q in crossed):
                     best = (y, box, crossed)
             if best is not None and not best[2]:
                 break
@@ -313,7 +337,8 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                 continue                         # as the axis itself; its ray from P still shows it
             pieces = [((lo, ay), (box[0] - 1.5, ay)), ((box[2] + 1.5, ay), (hi, ay))]
             rec.items[at:at + 1] = [dataclasses.replace(q, points=pc) for pc in pieces if pc[1][0] - pc[0][0] > 0.3]
-        rec.label((xs, y), text, size=NUMBER, anchor=anchor, layer=LAYER, step=f"division {key} {ks[0]}")
+        placed = rec.label((xs, y), text, size=NUMBER, anchor=anchor, layer=LAYER, step=f"division {key} {ks[0]}")
+        taken.append(placed.ink())
 
 
 def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
@@ -405,8 +430,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     arm's arcs l·ψ at the profile's μ_l, phase_scale): the follower's axis (rocking: the arc of the roller's centre and the arm's
     lines toward its pivot), the drawn ds/dφ laid off from each position of the roller's centre turned
     by 90° in the sense of ω, the lines at [ϑ] to the follower's motion through the points seen at the
-    largest angle, bounding the region of the cam's centre, and the centre O chosen in it, joined to
-    those points: the angles drawn at O's lines are the pressure angles."""
+    largest angle, bounding the region of the cam's centre (hatched along them), and the centre O
+    chosen in it: the angle at O between OK and the follower's motion is a division's pressure angle."""
     cam = sol.cam
     rec = Record("phase diagram")
     labels: list[LabelRequest] = []
@@ -447,6 +472,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
     O = 0j
     ends: list[complex] = []
+    bounds: list[tuple[complex, complex, complex]] = []
     for ph in (0, 1):
         # the boundary of the allowed region: through the drawn point seen from O at the largest angle
         # to the follower's motion, at [ϑ] to it, down past O; O joined to that point
@@ -468,7 +494,11 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                     step=f"[ϑ] line {ph}")
         labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),
                                    toward=d * 1j * (1 if turn > 0 else -1), size=TEXT, step=f"[ϑ] {ph}"))
-        rec.segment((K[k].real, K[k].imag), (O.real, O.imag), role="construction", layer=LAYER, step=f"OK {ph}")
+        bounds.append((K[k], end, d))
+    # no ray from O to those points: at R0 a little over the smallest it runs 1–2 mm beside its [ϑ]
+    # line, unlettered, and reads as that line drawn twice (review 12 #16, review 13 #15); the region
+    # of O hatched along both lines below their crossing instead, as the lab draws it
+    _hatch_region(rec, bounds, O)
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
@@ -505,6 +535,38 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
+
+
+HATCH_STEP, HATCH_LEN = 3.0, 2.5     # mm: the strokes along a boundary line, on the region's side
+HATCH_CLEAR = 6.0                    # mm: the first stroke past O (its letter, R0 and e stand there)
+
+
+def _hatch_region(rec: Record, bounds: list[tuple[complex, complex, complex]], O: complex) -> None:
+    """The region of the cam's centre (where no drawn point is seen at more than [ϑ]) hatched along
+    its two boundaries: short thin strokes at 45° on O's side of each [ϑ] line (``bounds``: its drawn
+    point K, its end and its direction), from HATCH_CLEAR past O to the line's end — the wedge O is
+    chosen in, below the lines' crossing. Nothing where the lines do not cross between their points and their ends."""
+    if len(bounds) != 2:
+        return
+    (k0, e0, d0), (k1, e1, d1) = bounds
+    den = (d0.conjugate() * d1).imag
+    if abs(den) < 1e-9:
+        return
+    t0 = ((k1 - k0).conjugate() * d1).imag / den           # k0 + t0·d0 = k1 + t1·d1
+    t1 = ((k1 - k0).conjugate() * d0).imag / den
+    for k, e, d, t in ((k0, e0, d0, t0), (k1, e1, d1, t1)):
+        length = abs(e - k)
+        if not 0.0 < t < length:
+            return
+    for j, (k, e, d, t) in enumerate(((k0, e0, d0, t0), (k1, e1, d1, t1))):
+        n = d * 1j if ((O - k) * d.conjugate()).imag > 0 else d * -1j     # toward O's side
+        out = (n + d) / abs(n + d) * HATCH_LEN
+        # from past O (its letter and the e line stand by the crossing) to the line's end
+        at = max(t, ((O - k) * d.conjugate()).real) + HATCH_CLEAR
+        while at <= abs(e - k) - 1.0:
+            p = k + d * at
+            rec.segment(_pt(p), _pt(p + out), role="hatch", layer=LAYER, step=f"region {j}")
+            at += HATCH_STEP
 
 
 def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
