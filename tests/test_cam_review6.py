@@ -163,13 +163,14 @@ def test_the_notes_write_a_negative_number_with_the_true_minus(lang):
 
 
 def test_both_pressure_bands_are_lettered():
-    """Each active phase's ±[ϑ] lines lettered: [ϑ] = 40° over the upper, −[ϑ] = −40° under the lower."""
+    """Each active phase's ±[ϑ] lines lettered: [ϑ] = 40° over the upper, −40° under the lower (review 12
+    #15: "−[ϑ] = −40°" read as a double minus)."""
     sol, g = _solved(ROCK)
     mu_t = 2.0
     rec = pressure_diagram(sol, g, "en", 0.02, mu_t)
     texts = {q.text: q for q in rec.items if q.kind == "text"}
     for allowed in (40, 50):
-        up, down = texts[f"[ϑ] = {allowed}°"], texts[f"−[ϑ] = −{allowed}°"]
+        up, down = texts[f"[ϑ] = {allowed}°"], texts[f"−{allowed}°"]
         assert up.ink()[1] > allowed / mu_t - 0.5 and down.ink()[3] < -allowed / mu_t + 0.5
 
 

@@ -889,8 +889,10 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
             rec.segment((xa, sign * band), (xb, sign * band), role="projection", layer=LAYER, step=f"[ϑ] {ph}")  # dashed
         labels.append(LabelRequest(complex((xa + xb) / 2, band + 1.0), allowed_text(cam.allowed[ph], lang),
                                    toward=1j, size=TEXT, step=f"[ϑ] {ph}"))   # 1 mm more: a fallback font's bracket
-        labels.append(LabelRequest(complex((xa + xb) / 2, -band - 1.0), "−" + allowed_text(-cam.allowed[ph], lang)
-                                   .replace("-", "−"), toward=-1j, size=TEXT, step=f"−[ϑ] {ph}"))  # the lower band too
+        # the lower band by its value alone: "−[ϑ] = −30°" read as a double minus (review 12 #15)
+        labels.append(LabelRequest(complex((xa + xb) / 2, -band - 1.0),
+                                   "−" + allowed_text(cam.allowed[ph], lang).split(" = ", 1)[1],
+                                   toward=-1j, size=TEXT, step=f"−[ϑ] {ph}"))
     rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
     for k in range(len(x)):
         y = float(g.theta[k]) / mu_theta
