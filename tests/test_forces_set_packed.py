@@ -84,3 +84,22 @@ def test_a_packed_set_takes_no_more_sheets_and_draws_nothing_smaller_than_the_ro
             if n.startswith("group "):
                 assert "polygon " + n.split()[1] in page, (n, page)
     assert defects(sheet) == []
+
+
+@pytest.mark.slow
+def test_a_sets_acceleration_plan_takes_the_series_step_its_sheets_hold():
+    """Review 12 #13: the six-bar's A3 force set drew the force position's acceleration plan at
+    0.1 (m/s²)/mm, half its target (πa 62 mm, a 25 mm sliver), where a plan one GOST step larger
+    (0.075) goes beside its group's drawing on the next sheet, the set no longer; Table 1 read
+    a^n_BA off a 1 mm vector, +25 %."""
+    from graphplan.sheets.forces import _leaves, _set_pages, plan
+    from review_scenes import SIXBAR12
+    st = scene_study(SIXBAR12)
+    p, nat, _ = plan(st, form("A3"), SheetOptions(precision=0.5, sheet="forces"))
+    fam = nat.families["acceleration"]
+    assert p.mu["acceleration"] <= 0.075 + 1e-12, p.mu
+    # the coarser plan's set (the same drawings, the plan at 0.1) takes no fewer sheets
+    coarse = _leaves(nat, {**p.mu, "acceleration": 0.1})
+    pages = _set_pages(nat, form("A3"), coarse, p.tables, p.plan_first, p.gap)
+    assert pages is not None and p.sheets <= len(pages)
+    assert fam.drawn(p.mu["acceleration"]) >= 1.3 * fam.drawn(0.1)   # πa a third longer at least

@@ -888,10 +888,10 @@ def _set(nat: Natural, f: Form) -> Plan:
             fl = {n: (nat.families[n].start(1.0) if t and n in later else m) for n, m in (capped if cap else flowed).items()}
             if all(fl != f0 for f0, _ in floors):
                 floors.append((fl, cap or fl["scheme"] >= fl["groups"] * (1 - 1e-9)))
-    best = None
-    # the drawings ``SPACE`` apart (review 7 #18), else ``GAP`` where that takes fewer sheets
-    for (floor, cap), factor, plan_first, gap in [(fl, fa, pf, g) for g in (SPACE, GAP) for fl in floors
-                                                  for pf in (True, False) for fa in (TABLES, 1.0)]:
+
+    def tried(floor: dict, cap: bool, factor: float, plan_first: bool, gap: float):
+        """The set from this floor grown while each drawing stays on its sheet: (its key, its
+        plan), None where a drawing is larger than a sheet."""
         smallest = floor["groups"] if cap else 0.0
         def sheets_of(mu):
             """Which drawings stand on which sheet: the growth keeps it (a drawing grown until
@@ -900,7 +900,7 @@ def _set(nat: Natural, f: Form) -> Plan:
         mu = dict(floor)
         where = sheets_of(mu)
         if where is None:
-            continue
+            return None
         tables = {n for n, _, _ in nat.tables[factor]}
         grown = _levels(nat.families, lambda m: sheets_of(m) == where, FAMILIES,
                         lambda name, m: nat.families[name].rel(m) <= _set_largest(nat, name) + 1e-9
@@ -910,12 +910,43 @@ def _set(nat: Natural, f: Form) -> Plan:
         # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
         key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
                -gap, -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap), f), 3))
-        if best is None or key < best[0]:
-            best = (key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
-                              plan_first=plan_first, gap=gap))
+        return key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
+                         plan_first=plan_first, gap=gap)
+
+    best = None
+    # the drawings ``SPACE`` apart (review 7 #18), else ``GAP`` where that takes fewer sheets
+    for (floor, cap), factor, plan_first, gap in [(fl, fa, pf, g) for g in (SPACE, GAP) for fl in floors
+                                                  for pf in (True, False) for fa in (TABLES, 1.0)]:
+        got = tried(floor, cap, factor, plan_first, gap)
+        if got is not None and (best is None or got[0] < best[0]):
+            best = (*got, floor, cap)
     if best is None:
         return _set_flowed(nat, f)
-    return best[1]
+    return _plan_grown(nat, best, tried)
+
+
+def _plan_grown(nat: Natural, best: tuple, tried) -> Plan:
+    """The set's acceleration plan, below its target, started a series step larger in turn (either
+    before the groups or after them) while the set keeps its count of sheets, its tables' sheets,
+    its scheme's cap and its gap, up to the size a set grows it to (``_set_largest``): growth keeps
+    each drawing on its sheet, so a plan the flow's common factor drew at half its target stayed so
+    where one step larger went onto the next sheet, the same sheets in all (review 12 #13: the
+    six-bar's A3 set drew it at 0.1 (m/s²)/mm, πa 62 mm in a band under its scheme, Table 1 reading
+    a^n_BA off a 1 mm vector, +25 %; A1 draws it at 0.05). The larger plan of the two is kept."""
+    key, p, floor, cap = best
+    fam = nat.families["acceleration"]
+    m = floor["acceleration"]
+    while fam.rel(m) < 1.0 - 1e-9:
+        m = next_round(m)          # the series' next step or GOST 2.302's 1.5, 7.5 between (0.1 → 0.075)
+        if m is None or fam.rel(m) > _set_largest(nat, "acceleration") + 1e-9:
+            break                  # (no larger than a set grows it: the shaper's 0.75 → 0.5 drew it 1.45 times)
+        trials = [tried({**floor, "acceleration": m}, cap, p.tables, pf, p.gap) for pf in (True, False)]
+        ok = [t for t in trials if t is not None and t[0][:4] == key[:4]]
+        if ok:
+            got = min(ok, key=lambda t: t[0])
+            if fam.rel(got[1].mu["acceleration"]) > fam.rel(p.mu["acceleration"]) + 1e-9:
+                key, p = got
+    return p
 
 
 SCHEME_ROOM = 0.25    # a set's scheme drawn larger than its groups while its cell takes at most this share of a sheet
