@@ -104,7 +104,7 @@ def test_a_rocker_is_drawn_with_the_tables_sign(rocker):
             signs += 1
     assert signs >= 8
     text = " ".join(notes_lines(rocker, plans, d, "uk", 0.5))
-    assert "ψ_{3} (кут ланки O2B від положення 0), ω_{3}, ε_{3}" in text      # a rocker's angle: ψ
+    assert "ψ_{3} (кут ланки O_{2}B від положення 0), ω_{3}, ε_{3}" in text      # a rocker's angle: ψ, its link O₂B
     assert "s, v, a" not in text and "−s" not in text
 
 

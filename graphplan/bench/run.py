@@ -77,10 +77,11 @@ def _scene_crank_slider(ratio: float) -> str:
 
 def _scene_slotted(ratio: float) -> str:
     """Crank 0.1 about O, the rocker pivoted at (0.1·ratio, 0): ratio → 1 brings the pivot onto the
-    crank circle, where the slot's direction jumps."""
+    crank circle, where the slot's direction jumps; Q 0.4 m out, past the block's farthest reach
+    (0.1·ratio + 0.1 ≤ 0.3 m: no block off the slot's end, which is warned of)."""
     return ("[frame.points]\nO = [0, 0]\nP = [" + f"{0.1 * ratio}" + ", 0]\n[crank]\npivot = \"O\"\n"
             "pin = \"A\"\nlength = 0.1\nrpm = 60\n[[link]]\nname = \"2\"\njoints = [\"A\"]\n"
-            "slides_on = \"PQ\"\n[[link]]\nname = \"PQ\"\njoints = [\"P\"]\npoints = { Q = [0.2, 0] }\n"
+            "slides_on = \"PQ\"\n[[link]]\nname = \"PQ\"\njoints = [\"P\"]\npoints = { Q = [0.4, 0] }\n"
             "[positions]\nstart = 0\n")
 
 
