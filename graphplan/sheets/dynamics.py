@@ -729,12 +729,16 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
         return _fits_later(f, b)
 
+    moments_at: dict = {}
+
     def moments_leaf(L: float, size: float) -> Leaf:      # the moments and the work alone, both languages
         if (L, size) in drawn_at:
             return measured(L, size, 1.0)[0]["moments"]
-        fw = built(L, size)
-        wh = [_wh(captioned(moments_record(fw, lang), WORDS[lang]["moments"])) for lang in LANGS]
-        return Leaf("moments", max(a[0] for a in wh), max(a[1] for a in wh))
+        if (L, size) not in moments_at:      # once per size: both searches (``_set_scales``) ask for it
+            fw = built(L, size)
+            wh = [_wh(captioned(moments_record(fw, lang), WORDS[lang]["moments"])) for lang in LANGS]
+            moments_at[(L, size)] = (max(a[0] for a in wh), max(a[1] for a in wh))
+        return Leaf("moments", *moments_at[(L, size)])
 
     def fits(L: float, size: float, first: bool = False) -> bool:   # the moments, then the band: only
         fw, length = built(L, size), _lengths(L)[-1]   # what decides, each drawn only where its least box fits

@@ -586,17 +586,22 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
 
 
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
-              notes: float = TITLE) -> list[list[Leaf]]:
+              notes: float = TITLE, sized=None) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
-    plans likewise, the tables and the notes (rows wrap where too wide)."""
+    plans likewise, the tables and the notes (rows wrap where too wide). ``sized``: where given,
+    (family, μ) → the cell's (w, h) and width → the notes' height, remembered by the caller (the
+    same answers as ``nat``'s; ``set_of_sheets`` asks them some 10 000 times)."""
+    cell_of, notes_of = sized or ((lambda fam, m: nat.families[fam].size(m)),
+                                  (lambda w: set_notes_height(nat.notes, w)))
     grids = {}
+    count = nat.count
     for fam in ("velocity", "acceleration"):
-        cell = nat.leaf(fam, mu[fam])
-        grids[fam] = [Leaf(f"{fam} {i}", cell.w, cell.h) for i in range(nat.count[fam])]
-    return set_rows(nat.leaf("position", mu["position"]), Leaf("diagrams", *dsize), grids["velocity"],
+        w, h = cell_of(fam, mu[fam])
+        grids[fam] = [Leaf(f"{fam} {i}", w, h) for i in range(count[fam])]
+    return set_rows(Leaf("position", *cell_of("position", mu["position"])), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", notes, set_notes_height(nat.notes, notes))], width, after)
+                    + [Leaf("notes", notes, notes_of(notes))], width, after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
@@ -867,16 +872,49 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
     # the notes' widths: the title block's, the room beside it, two columns of the title block's
     wide = tuple(sorted({TITLE, max(TITLE, r[2])})) + ((TWO_COLUMNS,) if TWO_COLUMNS <= width + 1e-9 else ())
+    # each layout's answer once per call (the scene's sizes do not change within it: ``_checked``
+    # corrects them between calls), keyed on the few numbers it is laid from — the shaper's A3 set
+    # asked for the same layout again in about half of its 16 000 ``laid`` calls
+    laid_memo: dict[tuple, tuple | None] = {}
+    cells_memo: dict[tuple, tuple[float, float]] = {}
+    notes_memo: dict[float, float] = {}
+
+    def cell_of(fam: str, mu: float) -> tuple[float, float]:
+        if (fam, mu) not in cells_memo:
+            cells_memo[fam, mu] = fams[fam].size(mu)
+        return cells_memo[fam, mu]
+
+    own_memo: dict[tuple, dict[str, tuple[float, float]]] = {}
+    counts = nat.count
+
+    def own(mu) -> dict[str, tuple[float, float]]:
+        """Each velocity and acceleration plan's own size at ``mu`` (its cell is the largest's)."""
+        key = (mu["velocity"], mu["acceleration"])
+        if key not in own_memo:
+            own_memo[key] = {f"{fam} {i}": fams[fam].size(mu[fam], i) for fam in ("velocity", "acceleration")
+                             for i in range(counts[fam])}
+        return own_memo[key]
+
+    def notes_of(w: float) -> float:
+        if w not in notes_memo:
+            notes_memo[w] = set_notes_height(nat.notes, w)
+        return notes_memo[w]
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
         for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
-            def laid(mu, factor=factor, after=after):
+            def laid(mu, factor=factor, after=after, dsize=dsize):
+                key = (mu["position"], mu["velocity"], mu["acceleration"], dsize, factor, after)
+                if key not in laid_memo:
+                    laid_memo[key] = _laid(mu, factor, after, dsize)
+                return laid_memo[key]
+
+            def _laid(mu, factor, after, dsize):
                 """The set's pages at ``mu``: (count, notes alone on the last sheet, the emptiest
                 sheet's fill, the notes' width) — the notes wider where at the title block's width
                 they would take a sheet of their own."""
                 found, sizes = None, own(mu)
                 for nw in wide:
-                    tried = trial(_set_rows(nat, mu, dsize, factor, width, after, nw), region, keep, later, sizes)
+                    tried = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep, later, sizes)
                     if tried is None:
                         return None
                     got = (*tried, nw)
@@ -887,11 +925,6 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     if not orphan and nw == wide[0]:
                         break
                 return found
-
-            def own(mu) -> dict[str, tuple[float, float]]:
-                """Each velocity and acceleration plan's own size at ``mu`` (its cell is the largest's)."""
-                return {f"{fam} {i}": (c.w, c.h) for fam in ("velocity", "acceleration")
-                        for i in range(nat.count[fam]) for c in [fams[fam].leaf(mu[fam], "", i)]}
 
             def pages(mu):
                 got = laid(mu)
