@@ -113,47 +113,12 @@ def test_api_terminal_and_sheet_use_one_set_of_scales(name, capsys):
     assert en["mu_l"] == doc["mu_l"] and en["positions"][0]["mu_v"] == doc["positions"][0]["mu_v"]
 
 
-def test_the_structural_formula_branches_where_groups_hang_side_by_side(tmp_path):
+def test_the_structural_formula_branches_where_groups_hang_side_by_side():
     """A V-engine's two dyads both hang on the crank: the formula writes two chains from I(0-1), not
     one chain through both (review 13 #8); a shaper's rod-and-ram group hangs on the rocker's group:
     one chain."""
-    v = tmp_path / "v.toml"
-    v.write_text("""
-[frame.points]
-O = [0, 0]
-[frame.guides]
-left = { through = [0, 0], angle_deg = 45 }
-right = { through = [0, 0.03], angle_deg = 135 }
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = 0.055
-rpm = 360
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.22
-[[link]]
-name = "B"
-number = 3
-joints = ["B"]
-slides_on = "left"
-[[link]]
-name = "AC"
-number = 4
-joints = ["A", "C"]
-length = 0.22
-[[link]]
-name = "C"
-number = 5
-joints = ["C"]
-slides_on = "right"
-[branch]
-B = 1
-C = 1
-""", encoding="utf-8")
-    assert graphplan.study(graphplan.load(v)).structure.formula == "I(0-1) → II(2-3); I(0-1) → II(4-5)"
+    from conftest import scene_study
+    from review_scenes import VTWIN13
+    assert scene_study(VTWIN13).structure.formula == "I(0-1) → II(2-3); I(0-1) → II(4-5)"
     shaper = Path(__file__).parent.parent / "examples" / "shaper.toml"
     assert graphplan.study(graphplan.load(shaper)).structure.formula == "I(0-1) → II(2-3) → II(4-5)"

@@ -13,6 +13,7 @@ import pytest
 
 from conftest import scene_study
 from review_scenes import REV11_A, SIXBAR10
+from test_forces_review11 import _read_as_one  # two arrows on one line read as one
 
 
 def _fp(text: str, precision: float):
@@ -90,15 +91,6 @@ def test_the_moment_is_drawn_as_an_arc_named_with_its_value(sixbar):
     assert any(p.kind == "arc" for p in rec.items)
     assert not any(p.kind == "vector" and p.text.startswith("MΦ2") for p in rec.items)
 
-
-def _read_as_one(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
-    """Two arrows on one line (within ``tol``) whose stretches overlap or meet end to end."""
-    u = (b - a) / abs(b - a)
-    off = lambda z: abs(((z - a) * u.conjugate()).imag)  # noqa: E731
-    if off(c) > tol or off(d) > tol:
-        return False
-    along = sorted(((z - a) * u.conjugate()).real for z in (c, d))
-    return along[0] <= abs(b - a) + tol and along[1] >= -tol
 
 
 def test_the_compressors_lever_draws_phi3_and_p_b_apart():
