@@ -162,9 +162,15 @@ def _ink_points(p) -> list[tuple[float, float]]:
     if p.kind in ("segment", "vector", "polyline", "polygon"):
         pts = list(p.points) + ([p.points[0]] if p.kind == "polygon" else [])
         out = []
+        half = 0.5 * p.line_width if p.line_width > 0.75 else 0.0   # a line heavier than THICK: its edges
         for a, b in zip(pts[:-1], pts[1:]):
-            n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / step))
-            out += [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
+            d = math.hypot(b[0] - a[0], b[1] - a[1])
+            n = max(1, int(d / step))
+            line = [(a[0] + (b[0] - a[0]) * t / n, a[1] + (b[1] - a[1]) * t / n) for t in range(n + 1)]
+            out += line
+            if half and d > 0:    # (λ1's 1-mm working part: its label 0.8 mm off the middle touched the edge)
+                nx, ny = -(b[1] - a[1]) / d * half, (b[0] - a[0]) / d * half
+                out += [(x + sx * nx, y + sx * ny) for x, y in line for sx in (-1.0, 1.0)]
         if p.kind == "vector":                # the arrowhead's filled triangle, wider than the line
             from graphplan.graphic.record import vector_arrow
             tri, _ = vector_arrow(p.points[0], p.points[1], p.line_width, p.role == "head")

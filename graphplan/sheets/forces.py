@@ -1429,7 +1429,10 @@ def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             continue
         best, s = None, finer(base)
         while s is not None and e * base / s <= largest + 1e-9:
-            w, h = fam.size(s, i)
+            # the plan as drawn at s, not the family's model alone: a plan's lettering and small
+            # forces do not scale with it (SIEVE's I(0-1) at 2.5 N/mm came out 179 × 33 mm where
+            # the model said 93 × 39, and the A2 set planned on 2 sheets was drawn on 3)
+            w, h = (max(a, b) for a, b in zip(fam.size(s, i), dr.plan_size(mu, i, s, fam.caption)))
             trial = {**leaves, "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name,
                                                                        w + GROW_MARGIN, h + GROW_MARGIN),
                                           *leaves["forces"][i + 1:]]}

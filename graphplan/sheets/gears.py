@@ -424,7 +424,7 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     within ±0,94 where 1:2 with a 1 mm longer ωH reads within ±1,53). The pictures as they were when
     none fits."""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
-    lam_w = 0.0 if beside(region, mesh) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
+    lam_w = 0.0 if beside(region, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
     room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
     room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
     r = tr.radii
@@ -470,7 +470,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
-        if beside(region, mesh):          # beside the meshing, as tall as it with its caption
+        if beside(region, mesh, lang):    # beside the meshing, as tall as it with its caption
             row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
         elif f.name == "A1":              # in the row under it, beside the planetary pictures: as tall
             top = meshing_leaf(mesh, lang).bounds()   # as the row's room, within the meshing's height
@@ -525,13 +525,17 @@ def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
     return None
 
 
-def beside(region, mesh) -> bool:
+def beside(region, mesh, lang: str) -> bool:
     """Whether the λ diagrams stand beside the meshing (the zone under it then the planetary
-    pictures' alone): when the two fit across the drawings' zone, the field less the tables'
-    column."""
-    b, lam = mesh.record.bounds(), mesh.lam.bounds()
+    pictures' alone): when the two, captioned as ``zones`` sets them, fit across the drawings' zone,
+    the field less the tables' column. (Measured bare, the λ diagrams of z = 10/25 were 127 mm wide
+    where their caption with the abscissa's scale makes them 212: the planetary pictures were sized
+    for the row under the meshing alone, the λ diagrams came into that row and the A1 sheet became
+    two.)"""
+    mesh_w = _size(meshing_leaf(mesh, lang))[0]
+    lam_w = _size(sliding_leaf(mesh.lam, lang))[0]
     zone_w = region[2] - region[0] - max(TITLE, 150.0) - GAP
-    return (b[2] - b[0]) + GAP + (lam[2] - lam[0]) <= zone_w
+    return mesh_w + GAP + lam_w <= zone_w
 
 
 LAMBDA_UNITS = (20.0, 25.0, 40.0, 50.0)    # mm a unit of λ (μλ = 0.05, 0.04, 0.025, 0.02 1/mm)
