@@ -67,6 +67,8 @@ THINNED = {
     "test_the_force_sheet_draws_the_same_number_of_plans_at_any_count": 0,
     "test_a_tall_narrow_mechanisms_force_set_packs_its_drawings": 0,
     "test_flat_hodographs_grow_where_the_sheet_has_room": 0,
+    "test_replay_pictures_for_the_docs": 0,           # the docs' screenshots (GRAPHPLAN_SHOTS)
+    "test_sheets_of_random_mechanisms": 0,            # a fuzz run
     # the heaviest single checks (sets and a moment-loaded dynamics sheet, 10–42 s each): slow suite
     "test_every_format_draws_quick": 0,
     "test_the_force_sheet_draws_and_names_the_moment": 0,
