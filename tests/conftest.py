@@ -69,6 +69,8 @@ THINNED = {
     "test_flat_hodographs_grow_where_the_sheet_has_room": 0,
     "test_replay_pictures_for_the_docs": 0,           # the docs' screenshots (GRAPHPLAN_SHOTS)
     "test_sheets_of_random_mechanisms": 0,            # a fuzz run
+    "test_forces_table_and_files": 0,                 # the slotter's forces --svg --charts (5.6 s)
+    "test_every_result_displays_itself": 0,           # every API result's display (3.4 s)
     # the heaviest single checks (sets and a moment-loaded dynamics sheet, 10–42 s each): slow suite
     "test_every_format_draws_quick": 0,
     "test_the_force_sheet_draws_and_names_the_moment": 0,
