@@ -53,12 +53,17 @@ def turn(st: Study, samples: int = SAMPLES) -> Turn:
     return Turn(ks, np.arange(samples) * 360.0 / samples, st.mech.task.count)
 
 
+def _cuts(t: Turn) -> list[int]:
+    """The samples k where a stroke starts (working[k] ≠ working[k − 1], over the closed turn)."""
+    work = np.asarray(t.ks.working)
+    return np.flatnonzero(work != np.roll(work, 1)).tolist()
+
+
 def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """Split a closed curve where the working stroke starts or ends (an external force switches
     on or off, so the reactions jump): (indices, values) pieces, closed over the turn."""
-    work = np.asarray(t.ks.working)
-    n = len(work)
-    cuts = np.flatnonzero(work != np.roll(work, 1)).tolist()      # k where work[k] != work[k − 1]
+    n = len(t.ks.working)
+    cuts = _cuts(t)
     if not cuts:
         idx = np.r_[np.arange(n), 0]
         return [(idx, values[idx])]
@@ -417,16 +422,14 @@ def _switching(t: Turn, f: np.ndarray, lang: str) -> list[str]:
     not on the other) at a stroke's change where the reaction itself jumps — not a load constant over
     the turn, nor one on a piston the reaction does not carry (review 13: a V-twin's constant P_B
     named under R45's jump from P_C). Where no load switches there, every external one is named."""
-    work = t.ks.working
-    n = len(work)
-    cuts = [k for k in range(n) if work[k] != work[k - 1]]
+    n = len(t.ks.working)
     step = np.abs(np.diff(np.r_[f, f[:1]]))
     typical = float(np.median(step)) if len(step) else 0.0
-    jumps = [k for k in cuts if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
+    jumps = [k for k in _cuts(t) if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
-    def on(ld) -> np.ndarray:
-        return (np.abs(np.broadcast_to(ld.force, (n,))) + np.abs(np.broadcast_to(ld.couple, (n,)))) > 0.0
-    named = [ld for ld in ext if any(on(ld)[k] != on(ld)[k - 1] for k in jumps)]
+    on = {id(ld): (np.abs(np.broadcast_to(ld.force, (n,))) + np.abs(np.broadcast_to(ld.couple, (n,)))) > 0.0
+          for ld in ext}                                   # each load acting or not, sample by sample
+    named = [ld for ld in ext if any(on[id(ld)][k] != on[id(ld)][k - 1] for k in jumps)]
     return list(dict.fromkeys(force_symbol(ld.name, lang) for ld in (named or ext)))
 
 
