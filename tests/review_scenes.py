@@ -1805,3 +1805,101 @@ synchronous_rpm = 1000
 
 # Review 12 (a) as the reviewer drew it: O3E = 0.42 m, so the block runs 1.5 mm past E (mark 9's warning)
 SIXBAR12_SHORT = SIXBAR12.replace('length = 0.46\npoints = { E = 1.0', 'length = 0.42\npoints = { E = 1.0', 1)
+
+
+PUMP45 = """# Lead's check, stop 45: a crank-slider whose connecting rod's point C drives a rocker O2D
+# (I(0-1) -> II(2-3) RRP -> II(4-5) RRR): a pump's crank train with a rocking valve arm.
+title = "Шестиланковий механізм насоса з коромислом від шатунної точки (перевірка 45)"
+title_en = "Pump six-bar: a crank-slider whose coupler point drives a rocker (check 45)"
+designation = "ТММ.НС.45.000"
+
+[sheet]
+student = "Перевірка"
+teacher = "Викладач"
+group = "МБ-45"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O2 = [0.16, 0.30]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0, title_uk = "плунжера", title_en = "of the plunger" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.07
+rpm = 180
+direction = "cw"
+points = { S1 = 0.3 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "ABC"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+shape = { C = [0.12, 0.08] }
+points = { S2 = [0.13, 0.025] }
+mass = 4.5
+inertia = 0.035
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 6
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.20
+points = { S4 = 0.5 }
+mass = 2
+inertia = 0.008
+
+[[link]]
+name = "O2D"
+number = 5
+joints = ["O2", "D"]
+length = 0.16
+points = { S5 = 0.5 }
+mass = 3
+inertia = 0.007
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+output = "B"
+start = "max"
+accel = [3]
+force_phi_deg = 210
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 1800
+stroke = "working"
+direction = "oppose"
+
+[[moment]]
+link = 5
+magnitude = 25
+stroke = "both"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+"""

@@ -660,19 +660,22 @@ def sign_note(st: Study, diag, lang: str) -> str:
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:
-    """Every |δ| the tables 1 and 2 print (velocities; accelerations the ruler read), of vectors at
-    least ``shortest`` mm long — ω and ε by the relative vector they are read from."""
+    """Every |δ| the tables 1 and 2 print (velocities; accelerations the ruler read, δ from the
+    printed pair as Table 2 gives it), of vectors at least ``shortest`` mm long — ω and ε by the
+    relative vector they are read from."""
     out = []
     keys = velocity_columns(doc, precision)
     for pos in doc["positions"]:
         e = row_error(pos, keys, shortest)
         if e is not None:
             out.append(e)
-        for a in pos.get("acceleration", {}).values():
+        cells = acceleration_cells(pos, "en", precision) if pos.get("acceleration") else {}
+        for key, a in pos.get("acceleration", {}).items():
             mm = _length(a)
             if not judged(a) or (mm is not None and (mm < precision or mm < shortest)):
                 continue
-            out.append(abs(a["error_pct"]))
+            printed = cells[key][2]      # δ as Table 2 prints it, from the printed pair (a reader's check)
+            out.append(abs(printed if printed is not None else a["error_pct"]))
     return out
 
 

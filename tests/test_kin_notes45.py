@@ -1,0 +1,25 @@
+"""The kinematics sheet's notes cite the tables' own numbers (stop 45): the largest error "in
+tables 1, 2" is a δ the tables print, worked out from the printed pair as Table 2 does — a reader
+who recomputes 1,512 against 1,597 gets −5,32 %, and the note must not say 5,35 %."""
+from __future__ import annotations
+
+import re
+
+from conftest import scene_study
+from graphplan.sheets.compose import SheetOptions
+from graphplan.sheets.form import form
+from graphplan.sheets.sheet import BUILDERS
+from review_scenes import PUMP45
+
+PERCENT = re.compile(r"^[−-]?\d+,\d\d\*?$")
+
+
+def test_the_notes_largest_error_is_one_the_tables_print():
+    sheet = BUILDERS["kinematics"](scene_study(PUMP45), form("A1"), SheetOptions(lang="uk", sheet="kinematics"))
+    words = [p.text for page in sheet.pages for p in page.record.items if p.kind == "text"]
+    note = next(t for t in words if t.startswith("Найбільша похибка в таблицях"))
+    largest = float(re.search(r": (\d+,\d\d) %", note).group(1).replace(",", "."))
+    printed = {abs(float(t.rstrip("*").replace("−", "-").replace(",", "."))) for t in words if PERCENT.match(t)}
+    assert largest in printed, (note, sorted(printed)[-5:])
+    # and the tables' largest δ of a vector read at all is the one the note cites
+    assert largest >= 5.0          # this scene's a^n_DO2 (7 mm) reads −5,32 %: the note must cite it
