@@ -90,3 +90,12 @@ def test_the_note_sets_each_failing_reading_beside_its_exact_ruler_and_ruler_on_
     uk = limit_note(chord_diagrams(st, precision=0.5, L=120.0, H1=34.0, H2=17.0, height=52.0, correct=True,
                                    lang="uk"), "uk", 5)
     assert "з точною лінійкою" in uk and "лише з відліком ψ_{5}" in uk and not re.search(r"\d\.\d", uk)   # decimal commas
+
+
+def test_a_tangents_note_names_the_tangents_own_error():
+    """The method of tangents has no chords and no ruler-on-s share (its v is read off tangents)."""
+    st = scene_study(review_scenes.SIXBAR12)
+    d = chord_diagrams(st, precision=0.5, L=240.0, H1=30.0, H2=30.0, height=80.0, method="tangents", lang="en")
+    note = limit_note(d, "en", 5)
+    assert d.worst_pct() > 5.0 and note is not None
+    assert "the tangents' own error" in note and "chords' own" not in note and "alone" not in note

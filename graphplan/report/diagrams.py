@@ -146,8 +146,9 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
     if sharp and not d.adaptive:
         step = num(360.0 / n, lang, 3)
         bend = f"; згин, крутий для кроку {step}°" if uk else f"; a bend sharp for the {step}° step"
-    why = (f" — з точною лінійкою (власна похибка хорд{bend}): {'; '.join(owns)}" if uk else
-           f" — with an exact ruler (the chords' own error{bend}): {'; '.join(owns)}")
+    own_of = ("дотичних" if uk else "tangents'") if d.method == "tangents" else ("хорд" if uk else "chords'")
+    why = (f" — з точною лінійкою (власна похибка {own_of}{bend}): {'; '.join(owns)}" if uk else
+           f" — with an exact ruler (the {own_of} own error{bend}): {'; '.join(owns)}")
     if s_only:
         s0 = f"{d.symbols[0]}_{{{d.sub}}}"
         why += (f"; лише з відліком {s0} лінійкою {p} мм (не залежить від H_{{1}}, H_{{2}} і L): {'; '.join(s_only)}"
