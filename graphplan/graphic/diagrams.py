@@ -285,6 +285,37 @@ def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> 
     return out[0], out[1]
 
 
+def subdivided(turns: np.ndarray, factor: int) -> np.ndarray:
+    """The division ordinates ``turns`` (deg, n + 1) with each interval cut into ``factor`` equal
+    parts (the positions kept as every factor-th ordinate)."""
+    if factor == 1:
+        return np.asarray(turns, dtype=float)
+    parts = [np.linspace(a, b, factor + 1)[:-1] for a, b in zip(turns[:-1], turns[1:])]
+    return np.append(np.concatenate(parts), turns[-1])
+
+
+def ruler_on_s(d: Diagrams, factor: int = 1) -> dict[str, np.ndarray] | None:
+    """δ, % (judged_pct) of v and a at the positions (keys "v_at", "a_at", as ``position_errors``)
+    where the ruler reads the s ordinates alone: the s diagram at its μs read with the drafting
+    precision, every later step (rays, French curves, the correction if drawn, the readings of v and
+    a) exact, over the drawing's divisions cut ``factor`` times finer. The construction after s is
+    then linear in the s ordinates and its values (mm × μ) do not depend on L, H1 or H2 (y_v =
+    H1·Δs/Δx, y_a = H2·Δy_v/Δx; μv = μs/(μt·H1), μa = μv/(μt·H2), μt = T/L): no pole distance or
+    abscissa changes this share of the error, only a finer μs (a taller s) or other divisions; it
+    holds the chords' own error at those divisions. None for tangents, an exact ruler or no
+    positions."""
+    if d.method != "chords" or d.precision == 0 or not d.at_positions:
+        return None
+    turns = subdivided(d.turn, factor)
+    x = d.L * turns / 360.0
+    s_mm = read(d.sign * exact_motion(d.study, d.output, turns)[0] / d.mu_s, d.precision)
+    k = d.at_positions
+    idx = np.searchsorted(np.round(turns, 9), np.round(d.turn[k], 9))
+    r = construct(x, s_mm, d.L, d.H1, d.H2, 0.0, d.correct, getattr(d.drawn, "v_zeros", np.zeros(0)))
+    return {key: judged_pct(d.sign * got[idx] * mu, d.truth[key][k], d.maxima[key[0]])
+            for key, got, mu in (("v_at", r.v_at, d.mu_v), ("a_at", r.a_at, d.mu_a))}
+
+
 def try_alternatives(d: Diagrams) -> list[Trial]:
     """What a student would try where the values read at the positions miss the lab's 5 %, each
     drawn on the exact s at the same scales and read with the same ruler (a few ms, no sheet):

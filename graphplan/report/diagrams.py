@@ -105,6 +105,9 @@ def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
     return lines
 
 
+NAMED = 2     # the worst readings a note names a diagram, and a third where the chords' own error is past 5 %
+
+
 def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
     """Where the values read off the diagrams at the positions miss the lab's 5 % (δ of the exact
     value; of the cycle's |max| where the value is below ``MEANINGFUL`` of it): which, by how much,
@@ -112,35 +115,53 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
     needed) or the ruler's half division amplified by the differentiations — and, where
     graphic.redraw searched, that nothing the lab allows reaches it. None where all are within."""
     from graphplan.graphic.diagrams import LAB_LIMIT
-    errs, own = d.position_errors(), d.position_errors(d.exact)
+    from graphplan.graphic.diagrams import ruler_on_s
+    errs, own, on_s = d.position_errors(), d.position_errors(d.exact), ruler_on_s(d)
     idx = d.at_positions
-    parts, chords = [], False
+    uk = lang == "uk"
+    parts, owns, s_only, sharp = [], [], [], False
     for key, sym in (("s", d.symbols[0]), ("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
-        bad = [i for i in np.argsort(-np.abs(errs[key])) if abs(errs[key][i]) > LAB_LIMIT]
-        if not bad:
+        past = [i for i in np.argsort(-np.abs(errs[key])) if abs(errs[key][i]) > LAB_LIMIT]
+        if not past:
             continue
-        chords |= any(abs(own[key][i]) > LAB_LIMIT for i in bad)
-        cells = ", ".join(f"{d.position[idx[i]]} ({fixed(errs[key][i], lang, 2, plus=True).replace('-', '−')} %)"
-                          for i in bad[:3])
-        parts.append(f"{sym}_{{{d.sub}}} {cells}" + (" …" if len(bad) > 3 else ""))
+        # the worst, and one where the chords' own error is past 5 % too (the cause differs there)
+        bad = past[:NAMED] + [i for i in past[NAMED:] if abs(own[key][i]) > LAB_LIMIT][:1]
+        name = f"{sym}_{{{d.sub}}}"
+        more = " …" if len(past) > len(bad) else ""   # Table 5 marks every one
+        parts.append(f"{name} " + ", ".join(f"{d.position[idx[i]]} ({_signed(errs[key][i], lang, 2)} %)"
+                                            for i in bad) + more)
+        owns.append(f"{name} " + ", ".join(_signed(own[key][i], lang, 1) for i in bad) + " %")
+        sharp |= any(abs(own[key][i]) > LAB_LIMIT for i in bad)
+        if on_s is not None and key in on_s:
+            s_only.append(f"{name} " + ", ".join(_signed(on_s[key][i], lang, 1) for i in bad) + " %")
     if not parts:
         return None
-    uk = lang == "uk"
     where = "; ".join(parts)
     ref = (f" (табл. {table})" if uk else f" (Table {table})") if table else ""
-    p = num(d.precision, lang)
-    n = d.divisions
-    if chords:
-        own = fixed(d.worst_pct(d.exact), lang, 1)
-        bend = ((f": згин, крутий для кроку {num(360.0 / n, lang, 3)}°" if uk else
-                 f": a bend sharp for the {num(360.0 / n, lang, 3)}° step") if not d.adaptive else "")
-        why = (f"власна похибка хорд при {n} поділках ({own} % з точною лінійкою{bend})" if uk else
-               f"the chords' own error at {n} divisions ({own} % with an exact ruler{bend})")
-    else:
-        why = (f"похибка відліку {p} мм, підсилена двома диференціюваннями" if uk else
-               f"the ruler's {p} mm amplified by the two differentiations")
-    return (f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where} — {why}" if uk else
-            f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where} — {why}") + _tried(d, lang)
+    n, p = d.divisions, num(d.precision, lang)
+    # each reading beside the same construction with an exact ruler (the chords' own error) and with
+    # the ruler on s alone (what no H1, H2 or L changes): review 12's six-bar read ε5 +16.25 % at 2,
+    # the chords' own −0.5 % there — the note blamed the chords
+    bend = ""
+    if sharp and not d.adaptive:
+        step = num(360.0 / n, lang, 3)
+        bend = f"; згин, крутий для кроку {step}°" if uk else f"; a bend sharp for the {step}° step"
+    own_of = ("дотичних" if uk else "tangents'") if d.method == "tangents" else ("хорд" if uk else "chords'")
+    why = (f" — з точною лінійкою (власна похибка {own_of}{bend}): {'; '.join(owns)}" if uk else
+           f" — with an exact ruler (the {own_of} own error{bend}): {'; '.join(owns)}")
+    if s_only:
+        s0 = f"{d.symbols[0]}_{{{d.sub}}}"
+        why += (f"; лише з відліком {s0} лінійкою {p} мм (не залежить від H_{{1}}, H_{{2}} і L): {'; '.join(s_only)}"
+                if uk else f"; with the {p}-mm ruler on {s0} alone (independent of H_{{1}}, H_{{2}} and L): "
+                           f"{'; '.join(s_only)}")
+    return ((f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where}" if uk else
+             f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where}")
+            + why + _tried(d, lang))
+
+
+def _signed(value: float, lang: str, places: int) -> str:
+    """A signed percent as the notes print it (the minus sign typeset)."""
+    return fixed(value, lang, places, plus=True).replace("-", "−")
 
 
 SHORT = {"adaptive": ("smaller intervals", "менші інтервали"), "double": ("{n} divisions", "{n} {many}"),
