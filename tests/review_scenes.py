@@ -1903,3 +1903,77 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 """
+
+
+COMPRESSOR45 = '''# Stop 45 (crank45's teacher look, A1 forces): an offset single-cylinder air compressor (crank-slider, offset e = 18 mm),
+# the crank turning clockwise, gas pressure on the piston over the compression stroke (a profile).
+title = "Одноциліндровий компресор з дезаксіальним кривошипно-повзунним механізмом"
+title_en = "Single-cylinder compressor with an offset crank-slider"
+designation = "TMM.C45.01.000"
+lang = "en"
+
+[sheet]
+student = "C. Helper"
+teacher = "Strict Teacher"
+group = "MB-42"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0.018], angle_deg = 0, title_uk = "поршня", title_en = "of the piston" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.05
+rpm = 480
+direction = "cw"
+mass = 4.2
+inertia = 0.012
+points = { S1 = 0.35 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.2
+mass = 2.4
+inertia = 0.011
+points = { S2 = 0.32 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 3.1
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [2, 8]
+output = "B"
+force_phi_deg = 130
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 3200
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.04], [0.03, 0.1], [0.06, 0.3], [0.08, 0.65], [0.09, 1], [0.103, 1]]
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

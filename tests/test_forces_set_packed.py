@@ -103,3 +103,27 @@ def test_a_sets_acceleration_plan_takes_the_series_step_its_sheets_hold():
     pages = _set_pages(nat, form("A3"), coarse, p.tables, p.plan_first, p.gap)
     assert pages is not None and p.sheets <= len(pages)
     assert fam.drawn(p.mu["acceleration"]) >= 1.3 * fam.drawn(0.1)   # πa a third longer at least
+
+
+@pytest.mark.slow
+def test_a_sets_first_sheet_holds_more_than_its_scheme():
+    """Review 12 #13 and the lead's note: the six-bar's A3 force set drew its scheme alone on sheet 1
+    (47 % of the field in its cell, the rest blank) and the acceleration plan under group II(4-5) on
+    sheet 2 — 105 mm of plan wanting room where 92 was left under the scheme at the groups' 1:2. No
+    sheet now holds a single drawing alone on a field it leaves more than half empty; the set takes
+    no more sheets (6), the plan keeps its 0.075 (m/s²)/mm and the scheme is no larger than the
+    groups (review 6 #4)."""
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.forces import _leaves, _names, _set_pages, plan
+    from review_scenes import SIXBAR12
+    f = form("A3")
+    p, nat, _ = plan(scene_study(SIXBAR12), f, SheetOptions(precision=0.5, sheet="forces"))
+    pages = _set_pages(nat, f, _leaves(nat, p.mu), p.tables, p.plan_first, p.gap)
+    x0, y0, x1, y1 = field_of(f)
+    assert len(pages) <= 6 and p.mu["acceleration"] <= 0.075 + 1e-12 and p.mu["scheme"] >= p.mu["groups"]
+    for page in pages:
+        names = [n for s in page for n in _names(s.node)]
+        drawings = [n for n in names if not n.endswith(("table", "results", "notes")) and not n.startswith("table")]
+        cells = sum(s.w * s.h for s in page) / ((x1 - x0) * (y1 - y0))
+        assert len(drawings) != 1 or cells >= 0.5, (names, cells)
+    assert {"scheme 0", "acceleration 0"} <= set(_names(pages[0][0].node) + _names(pages[0][1].node))

@@ -342,7 +342,11 @@ def _support_direction(z: complex, links: list[tuple[complex, complex]],
         return False
 
     best = (-1e9, -90.0, None)
-    for d in SUPPORT_DIRS:
+    # a direction whose strokes an arrow or another link runs through is taken only where none is
+    # clear (review 12 #17: G1 ran down from S1 through O1's bar and hatching, the support below
+    # having 110° of room)
+    order = sorted(SUPPORT_DIRS, key=touches)
+    for d in order:
         # the bar's ends stand 45° off the axis, 7 mm out: 15° more keeps them 1.8 mm off a link
         room = free(d, SUPPORT_HALF_DEG) - SUPPORT_SPARE_DEG - (20.0 if touches(d) else 0.0)
         arc = None
@@ -524,6 +528,16 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             back = length * u if mid is not None and dot(mid - z, u) < 0 else 0.0
             cands = [(z + off * n - back, z + off * n + length * u - back, off) for off in offs]
             free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
+            if not block:
+                # a lane whose arrow neither crosses another link nor runs by another arrow from
+                # the point first (review 12 #17: Φ1 beside the crank crossed the rod AB at A, the
+                # two lines and the rod read as one knot; the V-twin's G1 then ran by Φ1)
+                mine = [(t, h) for w, t, h in drawn if abs(w - z) < 0.5]
+
+                def by(c) -> bool:
+                    return any(_on_segment(c[0] + (c[1] - c[0]) * k / 10, t, h, 0.8 * LANE_MM)
+                               for k in range(3, 11) for t, h in mine)
+                free.sort(key=lambda c: int(_crosses(c[0], c[1], drawn_links)) + int(by(c)))
             a, b, off = free[0] if free else cands[-1]
             if block and _crosses(a, b, drawn_links):
                 # beside a slider's block, a lane across no link: leaving the block's level, else
@@ -564,6 +578,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(f.force)
         a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
+        if f.name in lanes and f.name not in armed:
+            # set a lane aside from its point (Φ1 inside the crank): a thin stroke across from the
+            # point to its arrow's end there, so that it reads as applied at the point and not as a
+            # second line of the link (review 12 #17)
+            end = next((e for e in (a, b) if abs(dot(e - z, u)) < 0.5), None)
+            if end is not None:
+                rec.segment(_pt(z), _pt(end), role="projection", layer="construction", step=step)
         labels.append((a, f.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, f.name, u))   # an arrow ending at its point: named at its tail
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked

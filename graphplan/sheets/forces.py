@@ -815,6 +815,20 @@ def _set_pages(nat: Natural, f: Form, leaves: dict[str, list[Leaf]], factor: flo
                 later_keep(f), gap)
 
 
+def _lonely(pages, f: Form) -> int:
+    """How many of a set's sheets hold one drawing alone (its tables and notes aside) on a field it
+    leaves mostly empty (``forceset.FILL_SHARE``): review 12's six-bar drew its scheme alone on sheet
+    1 of its A3 set, about half of it blank."""
+    x0, y0, x1, y1 = field_of(f)
+    out = 0
+    for page in pages:
+        drawn = [n for s in page for n in _names(s.node)
+                 if n.partition(" ")[0] in FAMILIES and not n.endswith("table")]
+        if len(drawn) == 1 and sum(s.w * s.h for s in page) < forceset.FILL_SHARE * (x1 - x0) * (y1 - y0):
+            out += 1
+    return out
+
+
 def _least_share(pages, f: Form) -> float:
     """The least share of a sheet's field its drawings take (their boxes' areas), of a set's sheets."""
     x0, y0, x1, y1 = field_of(f)
@@ -907,9 +921,11 @@ def _set(nat: Natural, f: Form) -> Plan:
                         and (name != "scheme" or m >= smallest * (1 - 1e-9) or _scheme_aside(nat, f, m)),
                         start=mu)
         mu = grown if grown is not None and sheets_of(grown) == where else mu
-        # the fewest sheets, then the tables whole on one of them, then the emptiest sheet fullest
+        # the fewest sheets, then the tables whole on one of them, then the fewest sheets with one
+        # drawing alone on them, then the emptiest sheet fullest
+        pages = _set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap)
         key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
-               -gap, -round(_least_share(_set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap), f), 3))
+               -gap, _lonely(pages, f), -round(_least_share(pages, f), 3))
         return key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
                          plan_first=plan_first, gap=gap)
 
@@ -922,6 +938,17 @@ def _set(nat: Natural, f: Form) -> Plan:
             best = (*got, floor, cap)
     if best is None:
         return _set_flowed(nat, f)
+    if best[0][4]:
+        # a drawing alone on a mostly empty sheet (the six-bar's scheme, grown to the groups' 1:2 on
+        # sheet 1 of its A3 set, 105 mm of acceleration plan wanting room under it where 92 was
+        # left): the scheme a step smaller than the groups, so that a drawing that reads on its own
+        # joins it (``forceset.pack``), where that takes no more sheets
+        key, p = best[:2]
+        floor = {**best[2], "scheme": coarser(max(best[2]["scheme"], best[2]["groups"]))}
+        for pf in (True, False):
+            got = tried(floor, True, p.tables, pf, p.gap)
+            if got is not None and got[0][:2] <= key[:2] and got[0][4] < best[0][4]:
+                best = (*got, floor, True)
     return _plan_grown(nat, best, tried)
 
 
@@ -941,7 +968,7 @@ def _plan_grown(nat: Natural, best: tuple, tried) -> Plan:
         if m is None or fam.rel(m) > _set_largest(nat, "acceleration") + 1e-9:
             break                  # (no larger than a set grows it: the shaper's 0.75 → 0.5 drew it 1.45 times)
         trials = [tried({**floor, "acceleration": m}, cap, p.tables, pf, p.gap) for pf in (True, False)]
-        ok = [t for t in trials if t is not None and t[0][:4] == key[:4]]
+        ok = [t for t in trials if t is not None and t[0][:5] == key[:5]]
         if ok:
             got = min(ok, key=lambda t: t[0])
             if fam.rel(got[1].mu["acceleration"]) > fam.rel(p.mu["acceleration"]) + 1e-9:
