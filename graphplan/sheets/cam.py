@@ -25,11 +25,15 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма {s}({v}), найменший R_0",
-           "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
+           "profile": "Профіль кулачка (метод обернення руху)",
+           "av": "Діаграми {a}, {v} (графічне інтегрування методом хорд)",
+           "s": "Діаграма {s} (хорди паралельні променям з полюса P_2 діаграми {v})", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№"},
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams {a}, {v}, {s} (graphical integration by "
            "chords)", "phase": "Phase diagram {s}({v}), smallest R_0",
-           "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
+           "profile": "Cam profile (by inversion)",
+           "av": "Diagrams {a}, {v} (graphical integration by chords)",
+           "s": "Diagram {s} (its chords parallel to the rays from the pole P_2 of {v})", "table": "Table 1. Displacement, velocity analogue and "
            "pressure angle at the divisions", "n": "No"},
 }
 
@@ -104,8 +108,9 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
     q = symbols(cam.rocking)
+    second = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_2 = {num_(g.H2)} {mm}"
     return {"diagrams": (w["diagrams"].format(**q), first), "phase": (w["phase"].format(**q), phase),
-            "profile": (w["profile"], profile)}
+            "profile": (w["profile"], profile), "av": (w["av"].format(**q), first), "s": (w["s"].format(**q), second)}
 
 
 PRESSURE_PART = 0.6     # ϑ(φ)'s span (its curve and the bands ±[ϑ]) at most this part of the stroke drawn
@@ -227,6 +232,10 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     leaves = []
     if drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
+        if g.split:             # s on a sheet of its own, after d²s/dφ² and ds/dφ (set_sizes)
+            from graphplan.drawing.cam import diagrams
+            leaves[:1] = [Leaf("diagrams", record=captioned(diagrams(sol, g, lang, ("a", "v")), *caps["av"])),
+                          Leaf("displacement", record=captioned(diagrams(sol, g, lang, ("s",)), *caps["s"]))]
     elif drawn:
         leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
                                                  pressure_below(sol, g, lang) if column else None)),
@@ -508,7 +517,34 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
+LEGIBLE_MM = 25.0    # mm: the least tallest ordinate of s and of each phase's ds/dφ on a set's sheets
+
+
+def _smallest_peak(sol, n: int | None, precision: float, sz: tuple) -> float:
+    """The shortest of the read diagrams' tallest ordinates at the sizes ``sz`` (mm): the stroke drawn
+    on s and each phase's extreme of ds/dφ — the ordinates Table 1 reads to half a ruler division."""
+    import numpy as np
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
+                  H2=sz[5], measure=False, series=sz[6])
+    return min(float(np.max(np.abs(g.s_mm))),
+               *(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1)))
+
+
 def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple:
+    """A set's sizes (_set_sizes): the three diagrams on one sheet, or — where that draws s or a
+    phase's ds/dφ under LEGIBLE_MM (50 ruler divisions: half a division 1 % of it; review 13 #7: the
+    A3 set's rise of dψ/dφ 12.5 mm tall beside the A1's 52, Table 1 starring five errors the A1 sheet
+    has not, while a set has sheets to spare) — d²s/dφ² and ds/dφ on one sheet and s on the next,
+    where that draws them taller; the tuple's eighth item says which (True: apart)."""
+    joint = _set_sizes(sol, f, n, precision)
+    least = _smallest_peak(sol, n, precision, joint)
+    if least >= LEGIBLE_MM:
+        return joint + (False,)
+    apart_ = _set_sizes(sol, f, n, precision, split=True)
+    return apart_ + (True,) if _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+
+
+def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split: bool = False) -> tuple:
     """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
@@ -521,9 +557,9 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     memo: dict = {}
 
     def alone(name: str, g) -> bool:
-        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing}[name]
-        key = {"diagrams": (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), "phase": (g.mu_s, g.mu_l),
-               "profile": (g.mu_l,)}[name]
+        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
+                "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
+        key = {"phase": (g.mu_s, g.mu_l), "profile": (g.mu_l,)}.get(name, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2))
         if (name, key) not in memo:
             ok = True
             for lang in ("uk", "en"):
@@ -537,7 +573,7 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
                       series=True)
         return all(alone(name, g) for name in names)
-    both = ("diagrams", "phase")
+    both = ("av", "s", "phase") if split else ("diagrams", "phase")
     sizes = list(SET_SIZES)
     k = _largest(lambda x: fits(x, x, x, None, both), sizes) or sizes[0]
     # then s (and ds/dφ) alone taller, d²s/dφ² as it is: the s ordinates, the ones the table's δ_s
@@ -604,8 +640,10 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     sizes = cam_sizes(sol, f, first_n, precision)
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
-        return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         H1=sz[4], H2=sz[5], measure=measure, series=sz[6] if len(sz) > 6 else False)
+        g = construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                      H1=sz[4], H2=sz[5], measure=measure, series=sz[6] if len(sz) > 6 else False)
+        g.split = len(sz) > 7 and bool(sz[7])           # s on a sheet of its own (set_sizes)
+        return g
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -782,6 +820,37 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     return None
 
 
+def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
+                             later=None) -> list | None:
+    """A set whose s diagram has a sheet of its own (set_sizes): ϑ(φ) under it at its μ_φ, each
+    division's ϑ straight under its s (review 11, mark 16), as tall as that sheet leaves, and Table 1
+    as large as its sheet takes (TABLE_SIZES). None where that takes more sheets than ``laid``."""
+    names = [leaf.name for leaf in leaves]
+    if laid is None or "displacement" not in names:
+        return None
+    at = names.index("displacement")
+    disp = leaves[at]
+    lines = notes(doc, lang, cam)
+    w = region[2] - region[0] - 2 * GAP
+    h = region[3] - (later or keep)[3] - disp.h - 3 * GAP      # above the later sheets' title block
+    if h < PRESSURE_ROOM[1]:
+        return None
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6):
+        leaf = pressure_leaf(sol, g, lang, w, min(h, SET_PRESSURE[1]) * part, True)
+        if leaf is None:
+            continue
+        drawings = leaves[:at] + [Stack([disp, leaf])] + leaves[at + 1:]
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+            tab = Leaf("table", record=positions_table(doc, lang, row, size))
+            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+            again = kept_together(drawings, tab, lines, nts, region, keep, later)
+            if again is None or len(again) > len(laid) or notes_alone(again[-1]):
+                continue
+            if any({"displacement", "pressure"} <= {lf.name for lf, _ in pg} for pg in again):
+                return again
+    return None
+
+
 def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None,
                       same: bool = True):
     """A set's sheets with the pressure angle's diagram ϑ(φ) under the phase diagram, beside the
@@ -916,7 +985,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
         most = len(own) if placed(own) else len(laid)
-        same = [t for t in (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+        same = [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+                            pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
                 if placed(t) and len(t) <= most]
