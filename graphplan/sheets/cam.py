@@ -178,7 +178,7 @@ def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at
     two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
     boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
     ``rec``'s items are the diagrams' (beside)."""
-    if name in ("diagrams", "notes") and theta_at is not None:    # ϑ(φ) under them (with_theta): its own box
+    if name in ("diagrams", "notes", "displacement") and theta_at is not None:   # ϑ(φ) under them (with_theta): its own box
         end = len(rec.items) if n is None else n
         theta = Record("pressure angle", rec.items[theta_at:end],
                        {k: rec.scales[k] for k in ("mu_phi", "mu_theta") if k in rec.scales})
@@ -569,9 +569,10 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
             memo[(name, key)] = ok
         return memo[(name, key)]
 
-    def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...]) -> bool:
+    def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...],
+             poles: tuple = (None, None)) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
-                      series=True)
+                      series=True, H1=poles[0], H2=poles[1])
         return all(alone(name, g) for name in names)
     both = ("av", "s", "phase") if split else ("diagrams", "phase")
     sizes = list(SET_SIZES)
@@ -605,7 +606,28 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
         # blank: s as tall as keeps the two on one sheet
         ks = next(x for x in reversed([x for x in sizes if k <= x < ks]) if shared(kl, kp, x, ka))
         ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
-    return kl, kp, ks, ka, None, None, True
+    h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
+        if split else (None, None)
+    return kl, kp, ks, ka, h1, h2, True
+
+
+def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | None, float | None]:
+    """d²s/dφ² and ds/dφ on a sheet of their own: where a phase's ds/dφ is drawn under LEGIBLE_MM, the
+    shortest whole-millimetre H_2 that draws it so tall (its ordinates grow as H_2, μ_s kept), with
+    the longest H_1 at which the two still fit their sheet (``fits((H1, H2))``; d²s/dφ², which Table 1
+    does not read, gives up the height: μ_{d²s/dφ²} = μ_s/(μ_φ²·H_1·H_2)). (None, None): as they are."""
+    import numpy as np
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], measure=False,
+                  series=True)
+    peak = min(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1))
+    if peak >= LEGIBLE_MM or peak <= 0:
+        return None, None
+    lo, hi = POLE_MM
+    h2 = float(math.ceil(g.H2 * LEGIBLE_MM / peak - 1e-9))
+    if h2 > hi:
+        return None, None
+    h1 = _largest(lambda h: fits((h, h2)), [float(h) for h in range(int(lo), int(hi) + 1)])
+    return (h1, h2) if h1 is not None else (None, None)
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -839,15 +861,15 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
         leaf = pressure_leaf(sol, g, lang, w, min(h, SET_PRESSURE[1]) * part, True)
         if leaf is None:
             continue
-        drawings = leaves[:at] + [Stack([disp, leaf])] + leaves[at + 1:]
+        # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
+        drawings = leaves[:at] + [Leaf("displacement", record=with_theta(disp.record, leaf.record))] + leaves[at + 1:]
         for size, row in TABLE_SIZES + ((2.5, 6.0),):
             tab = Leaf("table", record=positions_table(doc, lang, row, size))
             nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
             again = kept_together(drawings, tab, lines, nts, region, keep, later)
             if again is None or len(again) > len(laid) or notes_alone(again[-1]):
                 continue
-            if any({"displacement", "pressure"} <= {lf.name for lf, _ in pg} for pg in again):
-                return again
+            return again
     return None
 
 
@@ -981,7 +1003,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
         # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
         def placed(t) -> bool:
-            return t is not None and any("pressure" in _names(leaf) for pg in t for leaf, _ in pg)
+            return t is not None and any("pressure" in _names(leaf) or getattr(getattr(leaf, "record", None), "theta_at", None)
+                                         is not None for pg in t for leaf, _ in pg)
         own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
         most = len(own) if placed(own) else len(laid)
