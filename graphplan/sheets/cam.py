@@ -221,8 +221,22 @@ def hole(dia: Leaf, box: Box) -> Box | None:
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
-def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False, column: bool = True
-            ) -> tuple[list[Leaf], Leaf, Leaf, dict]:
+def own_sheet(leaf: Leaf, room: tuple[float, float] | None) -> Leaf:
+    """``leaf`` as large as ``region`` (a set's field, above a later sheet's title block): nothing is
+    flowed beside or under it — s keeps its sheet for ϑ(φ) and the phase diagram goes to the
+    profile's (beside s it stood at 1:2, 40 mm, the profile alone on the next sheet)."""
+    if room is None:
+        return leaf
+    return Leaf(leaf.name, max(room[0], leaf.w), max(room[1], leaf.h), leaf.record)
+
+
+def sheet_room(region: Box, keep: Box) -> tuple[float, float]:
+    """A set's field across and above the first sheet's title block (own_sheet), less a GAP."""
+    return region[2] - region[0], region[3] - keep[3] - GAP
+
+
+def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False, column: bool = True,
+            row: tuple[float, float] | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
     """The captioned drawings (none when ``drawn`` is {}): the diagrams with the phase diagram beside
     them (``split``, a set of sheets: each on its own) — ``column``: ϑ(φ) under the diagrams —, the
     profile; the table and the notes."""
@@ -235,7 +249,8 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
         if g.split:             # s on a sheet of its own, after d²s/dφ² and ds/dφ (set_sizes)
             from graphplan.drawing.cam import diagrams
             leaves[:1] = [Leaf("diagrams", record=captioned(diagrams(sol, g, lang, ("a", "v")), *caps["av"])),
-                          Leaf("displacement", record=captioned(diagrams(sol, g, lang, ("s",)), *caps["s"]))]
+                          own_sheet(Leaf("displacement", record=captioned(diagrams(sol, g, lang, ("s",)), *caps["s"])),
+                                    row)]
     elif drawn:
         leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
                                                  pressure_below(sol, g, lang) if column else None)),
@@ -597,13 +612,15 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
             pair = [Leaf(name, *extent(Leaf(name, record=captioned(draw(sol, g, lang),
                                                                     *_captions(g, sol.cam, lang)[name]))))
                     for name, draw in (("phase", phase_diagram), ("profile", profile_drawing))]
-            laid = flow([pair], region, keep)
+            laid = flow([pair], region, later_keep(f))      # a later sheet's (the diagrams take the first)
             if laid is None or len(laid) != 1:
                 return False
         return True
     if ks > k and not shared(kl, kp, ks, ka) and shared(kl, kp, k, ka):
         # a finer μ_s would give the phase diagram a sheet of its own, and the set a sheet more, half
-        # blank: s as tall as keeps the two on one sheet
+        # blank: s as tall as keeps the two on one sheet (on a later sheet, under its form 2a — judged
+        # under the first's title block, the two never shared one: review 44's knife cam's A2 set drew
+        # its phase diagram alone on sheet 2, 78 % blank, 4 sheets)
         ks = next(x for x in reversed([x for x in sizes if k <= x < ks]) if shared(kl, kp, x, ka))
         ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
     h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
@@ -854,7 +871,8 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
     disp = leaves[at]
     lines = notes(doc, lang, cam)
     w = region[2] - region[0] - 2 * GAP
-    h = region[3] - (later or keep)[3] - disp.h - 3 * GAP      # above the later sheets' title block
+    b = disp.record.bounds()
+    h = region[3] - (later or keep)[3] - (b[3] - b[1]) - 3 * GAP      # above the later sheets' title block
     if h < PRESSURE_ROOM[1]:
         return None
     for part in (1.0, 0.9, 0.8, 0.7, 0.6):
@@ -862,7 +880,8 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
         if leaf is None:
             continue
         # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
-        drawings = leaves[:at] + [Leaf("displacement", record=with_theta(disp.record, leaf.record))] + leaves[at + 1:]
+        both = own_sheet(Leaf("displacement", record=with_theta(disp.record, leaf.record)), sheet_room(region, keep))
+        drawings = leaves[:at] + [both] + leaves[at + 1:]
         for size, row in TABLE_SIZES + ((2.5, 6.0),):
             tab = Leaf("table", record=positions_table(doc, lang, row, size))
             nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
@@ -950,7 +969,7 @@ def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
     if laid is None:
         return (g, *as_is)
     for g2 in _phase_scales(sol, g, lang):
-        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True)
+        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True, row=sheet_room(region, keep))
         again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
         if (again is not None and len(again) == len(laid)
                 and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
@@ -998,7 +1017,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         leaves, tab, nts, doc, laid, notes_at = _theta_grown(sol, g, f, lang, (leaves, tab, nts, doc, laid, notes_at))
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f, notes_at)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
-        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
+        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True, row=sheet_room(region, keep))
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
         g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
         # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
