@@ -241,16 +241,19 @@ def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool 
     them (``split``, a set of sheets: each on its own) — ``column``: ϑ(φ) under the diagrams —, the
     profile; the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
+    if drawn is None and split and g.split:     # s on a sheet of its own, after d²s/dφ² and ds/dφ (set_sizes)
+        from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
+        drawn = {"av": diagrams(sol, g, lang, ("a", "v")), "s": diagrams(sol, g, lang, ("s",)),
+                 "phase": phase_diagram(sol, g, lang), "profile": profile_drawing(sol, g, lang)}
     drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
     leaves = []
-    if drawn and split:
+    if drawn and split and "av" in drawn:
+        leaves = [Leaf("diagrams", record=captioned(drawn["av"], *caps["av"])),
+                  own_sheet(Leaf("displacement", record=captioned(drawn["s"], *caps["s"])), row)] + [
+                  Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("phase", "profile")]
+    elif drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
-        if g.split:             # s on a sheet of its own, after d²s/dφ² and ds/dφ (set_sizes)
-            from graphplan.drawing.cam import diagrams
-            leaves[:1] = [Leaf("diagrams", record=captioned(diagrams(sol, g, lang, ("a", "v")), *caps["av"])),
-                          own_sheet(Leaf("displacement", record=captioned(diagrams(sol, g, lang, ("s",)), *caps["s"])),
-                                    row)]
     elif drawn:
         leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
                                                  pressure_below(sol, g, lang) if column else None)),
