@@ -116,3 +116,31 @@ def test_review_13s_a3_set_draws_psi_on_its_own_sheet_with_theta_under_it():
     g = construct_on(sol, form("A3"))
     assert g.split
     assert abs(g.R0_min - sol.R0_min) / sol.R0_min < 0.02
+
+
+KNIFE_S44 = '''
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = -0.006
+roller_radius = 0
+phases_deg = { rise = 130, dwell_far = 40, return = 110, dwell_near = 80 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 40 }
+omega = 15
+direction = "cw"
+'''
+
+
+@pytest.mark.slow
+def test_a_knife_cams_a2_set_keeps_its_phase_diagram_with_the_profile():
+    """Stop 44's knife-edge cam on A2: the phase diagram (at μ_s) and the 2:1 profile were judged to
+    share a sheet under the first sheet's title block, never did, and the phase diagram took sheet 2
+    alone (78 % of its cells blank, four sheets): they share a later sheet, s as tall as lets them."""
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.form import form
+    sheet = build_cam_sheet(build(tomllib.loads(KNIFE_S44), "<s44>"), form("A2"), SheetOptions(lang="uk", sheet="cam"))
+    assert defects(sheet) == []
+    names = [{p.name for p in page.placed} for page in sheet.pages]
+    assert len(names) == 3 and {"phase", "profile"} <= names[1] and "table" in names[2]
