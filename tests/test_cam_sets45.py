@@ -144,3 +144,17 @@ def test_a_knife_cams_a2_set_keeps_its_phase_diagram_with_the_profile():
     assert defects(sheet) == []
     names = [{p.name for p in page.placed} for page in sheet.pages]
     assert len(names) == 3 and {"phase", "profile"} <= names[1] and "table" in names[2]
+
+
+def test_a_cam_too_large_for_a4_is_one_line_and_exit_2(tmp_path, capsys):
+    """Review 13's cam on A4 (its profile larger than an A4 field even at half size): one clear line
+    on stderr and exit 2, no file — it was an internal TypeError (the set's ϑ(φ) pass counted the
+    sheets of a layout that did not exist)."""
+    from graphplan.cli.main import main
+    scene = tmp_path / "b.toml"
+    scene.write_text(ROCKING_REV13, encoding="utf-8")
+    out = tmp_path / "x.svg"
+    assert main(["sheet", str(scene), "--sheet", "cam", "--format", "A4", "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "A4" in err[0] and "internal" not in err[0]
+    assert not list(tmp_path.glob("x*.svg"))

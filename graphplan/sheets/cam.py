@@ -1029,8 +1029,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                                          is not None for pg in t for leaf, _ in pg)
         own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
-        most = len(own) if placed(own) else len(laid)
-        same = [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+        most = len(own) if placed(own) else len(laid or [])
+        same = [] if laid is None else [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
