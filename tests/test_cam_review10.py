@@ -159,4 +159,4 @@ def test_a_sets_table_is_never_dropped():
     cam = build(_scene(CAM_REV10), "<scene>")
     sheet = build_cam_sheet(cam, form("A3"), SheetOptions(lang="uk", sheet="cam"))
     texts = " ".join(p.text for s in sheet.pages for p in s.record.items if p.kind == "text")
-    assert len(sheet.pages) == 3 and "Таблиця 1" in texts and "Кут тиску" in texts
+    assert len(sheet.pages) == 4 and "Таблиця 1" in texts and "Кут тиску" in texts     # s on a sheet of its own

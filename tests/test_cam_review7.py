@@ -94,8 +94,9 @@ def test_each_phase_diagram_number_reads_as_its_own_dot(scene):
 @pytest.mark.slow
 def test_the_rocking_a3_set_draws_the_pressure_angle_beside_the_profile(tmp_path):
     """Review 9, finding 2: the A3 set of the reviewer's rocking cam carries ϑ(φ) as the A1 does, in
-    three sheets — under the phase diagram, beside the profile (issue 32: that sheet stood 63 %
-    empty), Table 1 and the notes on the last."""
+    four sheets — under ψ, which has a sheet of its own (review 13 #7: on one sheet with d²ψ/dφ² and
+    dψ/dφ a phase's dψ/dφ was drawn under LEGIBLE_MM; before, ϑ(φ) stood under the phase diagram
+    beside the profile), the phase diagram with the profile, Table 1 and the notes on the last."""
     from graphplan.cli.main import main
     scene = tmp_path / "m3.toml"
     scene.write_text("\n".join([f'title = "{M3["title"]}"', f'title_en = "{M3["title_en"]}"', 'lang = "en"', "[cam]",
@@ -106,9 +107,9 @@ def test_the_rocking_a3_set_draws_the_pressure_angle_beside_the_profile(tmp_path
                                 "pressure_angle_deg = { rise = 40, return = 50 }", "rpm = 100", 'direction = "ccw"']),
                      encoding="utf-8")
     assert main(["sheet", str(scene), "--format", "A3", "-o", str(tmp_path / "s.svg")]) == 0
-    sheets = [tmp_path / name for name in ("s.svg", "s-2.svg", "s-3.svg")]
+    sheets = [tmp_path / name for name in ("s.svg", "s-2.svg", "s-3.svg", "s-4.svg")]
     assert sorted(tmp_path.glob("s*.svg")) == sorted(sheets)
     texts = [p.read_text(encoding="utf-8") for p in sheets]
     holding = [k for k, t in enumerate(texts) if "Pressure angle" in t]
-    assert holding == [1] and "Phase diagram" in texts[1] and "Cam profile" in texts[1]
-    assert "Table 1" in texts[2] and "Table 1" not in texts[1]
+    assert holding == [1] and "Diagram ψ" in texts[1] and "Phase diagram" in texts[2] and "Cam profile" in texts[2]
+    assert "Table 1" in texts[3] and "Table 1" not in texts[2]

@@ -125,10 +125,9 @@ def test_an_exact_ruler_judges_every_ordinate():
 def test_the_knife_edge_cams_a3_set_reads_in_order_with_table_1(lang):
     """The reviewer's knife-edge cam (tests/review_scenes.CAM_KN) on A3, redrawn with 14 divisions: its
     set had lost Table 1 (the notes had taken a sheet after the table's, and the pressure angle's
-    diagram was laid with the last sheet's leaves only). Every drawing, Table 1 and the notes in three
-    sheets, in reading order: the diagrams; the phase diagram, ϑ(φ) and the profile; the table. (In
-    English the notes run longer than Table 1's 30 rows leave them: the table has a sheet of its own
-    and the notes go with ϑ(φ) on a fourth — every one of them still there.)"""
+    diagram was laid with the last sheet's leaves only). Every drawing, Table 1 and the notes in reading
+    order: d²s/dφ² and ds/dφ; s with ϑ(φ) under it (review 13 #7: the three on one A3 sheet drew a
+    phase's ds/dφ under LEGIBLE_MM); the phase diagram and the profile; Table 1 with the notes."""
     import tomllib
     from review_scenes import CAM_KN
     from graphplan.sheets.cam import build_cam_sheet
@@ -136,8 +135,7 @@ def test_the_knife_edge_cams_a3_set_reads_in_order_with_table_1(lang):
     from graphplan.sheets.form import form
     sheet = build_cam_sheet(build(tomllib.loads(CAM_KN), "<kn>"), form("A3"), SheetOptions(lang=lang, sheet="cam"))
     names = [[p.name for p in page.placed] for page in sheet.pages]
-    want = ([{"diagrams"}, {"phase", "pressure", "profile"}, {"table", "notes"}] if lang == "uk" else
-            [{"diagrams"}, {"phase", "profile"}, {"table"}, {"notes", "pressure"}])
+    want = [{"diagrams"}, {"displacement", "pressure"}, {"phase", "profile"}, {"table", "notes"}]
     assert [set(n) for n in names] == want, names
     # the set checked as one (each sheet against its own title block); the first sheet, the diagrams
     # at 14 divisions, has its own open finding: two division numbers (12, 13) touch

@@ -108,16 +108,17 @@ def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pr
 @pytest.mark.slow
 def test_an_a3_set_carries_the_pressure_diagram_beside_the_profile():
     """examples/cam_translating.toml on A3: the third sheet (Table 1 and the notes) stood half blank,
-    then the profile's (61 %, issue 32): the pressure angle's diagram goes on the profile's sheet or
-    the table's at the diagrams' μ_φ (review 11, mark 16) and 2 °/mm or finer, no fourth sheet."""
+    then the profile's (61 %, issue 32): the pressure angle's diagram goes on a drawing's sheet at
+    the diagrams' μ_φ (review 11, mark 16) and 2 °/mm or finer — under s, which has a sheet of its
+    own (review 13 #7: one sheet drew a phase's ds/dφ under LEGIBLE_MM) —, no fifth sheet."""
     from conftest import example
     from graphplan.sheets.cam import build_cam_sheet
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
     sheet = build_cam_sheet(example("cam_translating"), form("A3"), SheetOptions(lang="uk", sheet="cam"))
     pages = [{p.name: p for p in page.placed} for page in sheet.pages]
-    assert len(pages) == 3
-    assert {"phase", "profile"} <= set(pages[1]) and {"table", "notes"} <= set(pages[-1])
+    assert len(pages) == 4
+    assert {"phase", "profile"} <= set(pages[2]) and {"table", "notes"} <= set(pages[-1])
     (pressure,) = [page["pressure"] for page in pages[1:] if "pressure" in page]
     assert pressure.record.scales["mu_theta"] <= 2.0
     assert pressure.record.scales["mu_phi"] == pages[0]["diagrams"].record.scales["mu_phi"]

@@ -137,13 +137,15 @@ def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spa
     return [(groups[i], text[i]) for i in out]
 
 
-def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
+def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...] = ("a", "v", "s")) -> Record:
     """d²s/dφ², ds/dφ and s over the turn (L mm), one above another on one φ axis (s on top, where the
     phase diagram stands beside it), integrated upward by chords: on the d²s/dφ² diagram's axis the
     pole P1 at H1 left of the origin, each interval's mean ordinate carried across to the ordinate
     axis and joined to P1 by a ray, the chords of ds/dφ laid parallel to the rays; the same with P2 at
     H2 on the ds/dφ diagram for the chords of s. The drawn ordinates at the divisions, the divisions
-    numbered under the s diagram as in the table and on the profile."""
+    numbered under the s diagram as in the table and on the profile. ``keys``: the diagrams drawn
+    (a set of sheets too small for the three at a legible size: ("a", "v") on one sheet, ("s",) on
+    the next — its chords parallel to the rays from P2 on the first, sheets.cam.set_sizes)."""
     cam = sol.cam
     rec = Record("cam diagrams")
     work = math.degrees(working_angle(cam))
@@ -162,6 +164,8 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
     for key, curve, drawn, letter, pole in (("a", a / g.mu_a, g.a_mm, sym["a"], g.H1),
                                              ("v", v / g.mu_v, g.v_mm, sym["v"], g.H2),
                                              ("s", s / g.mu_s, g.s_mm, sym["s"], 0.0)):
+        if key not in keys:
+            continue
         lo, hi = min(float(np.min(curve)), 0.0), max(float(np.max(curve)), 0.0)
         reach = SHOCK_LEAST
         if key == "a" and shocks:      # room for the rigid shocks' arrows to ±∞ and their ∞
@@ -208,13 +212,14 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str) -> Record:
                   key, labels)
         y = y0 + hi + 20.0
     marks = spots(x, lang)       # one label where two divisions meet (no far dwell: "6; 7")
-    y_s = bands["s"]
-    for ks, text in marks:      # s: under the axis, and under a chord ending below it (a closing error)
+    y_s = bands.get("s", 0.0)
+    for ks, text in (marks if "s" in keys else []):   # s: under the axis, and under a chord ending below it
         low = min([0.0] + [float(g.s_chord[k]) for k in ks if len(g.s_chord)] + [float(g.s_mm[k]) for k in ks])
         rec.label((x[ks[0]], y_s + low - 2.0 - NUMBER), text, size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {ks[0]}")
     for key in ("v", "a"):
-        _division_numbers(rec, x, bands[key], marks, key)
+        if key in keys:
+            _division_numbers(rec, x, bands[key], marks, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec

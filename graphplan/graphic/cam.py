@@ -91,6 +91,9 @@ class CamConstruction:
     rocking: bool = False           # a rocking follower: its displacement is the arm's angle ψ, not s
     # a rocking follower's phase diagram enlarged by the sheet where it has room (m/mm; None: at μ_l)
     mu_phase: float | None = None
+    # a set of sheets draws s on a sheet of its own, d²s/dφ² and ds/dφ on the one before
+    # (sheets.cam.set_sizes: the three on one sheet below the legibility minimum)
+    split: bool = False
 
     @property
     def closes(self) -> bool:

@@ -25,11 +25,15 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма {s}({v}), найменший R_0",
-           "profile": "Профіль кулачка (метод обернення руху)", "table": "Таблиця 1. Переміщення, аналог "
+           "profile": "Профіль кулачка (метод обернення руху)",
+           "av": "Діаграми {a}, {v} (графічне інтегрування методом хорд)",
+           "s": "Діаграма {s} (хорди паралельні променям з полюса P_2 діаграми {v})", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№"},
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams {a}, {v}, {s} (graphical integration by "
            "chords)", "phase": "Phase diagram {s}({v}), smallest R_0",
-           "profile": "Cam profile (by inversion)", "table": "Table 1. Displacement, velocity analogue and "
+           "profile": "Cam profile (by inversion)",
+           "av": "Diagrams {a}, {v} (graphical integration by chords)",
+           "s": "Diagram {s} (its chords parallel to the rays from the pole P_2 of {v})", "table": "Table 1. Displacement, velocity analogue and "
            "pressure angle at the divisions", "n": "No"},
 }
 
@@ -104,8 +108,9 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
         phase = scale_text("mu_s", g.mu_s, False, lang)
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
     q = symbols(cam.rocking)
+    second = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_2 = {num_(g.H2)} {mm}"
     return {"diagrams": (w["diagrams"].format(**q), first), "phase": (w["phase"].format(**q), phase),
-            "profile": (w["profile"], profile)}
+            "profile": (w["profile"], profile), "av": (w["av"].format(**q), first), "s": (w["s"].format(**q), second)}
 
 
 PRESSURE_PART = 0.6     # ϑ(φ)'s span (its curve and the bands ±[ϑ]) at most this part of the stroke drawn
@@ -173,7 +178,7 @@ def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at
     two drawings — the s, ds/dφ, d²s/dφ² diagrams and the phase diagram — each in its own box, the
     boxes a GAP apart and clear of the room's leaf (no box holds another drawing); ``n``: how many of
     ``rec``'s items are the diagrams' (beside)."""
-    if name in ("diagrams", "notes") and theta_at is not None:    # ϑ(φ) under them (with_theta): its own box
+    if name in ("diagrams", "notes", "displacement") and theta_at is not None:   # ϑ(φ) under them (with_theta): its own box
         end = len(rec.items) if n is None else n
         theta = Record("pressure angle", rec.items[theta_at:end],
                        {k: rec.scales[k] for k in ("mu_phi", "mu_theta") if k in rec.scales})
@@ -216,16 +221,38 @@ def hole(dia: Leaf, box: Box) -> Box | None:
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
-def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False, column: bool = True
-            ) -> tuple[list[Leaf], Leaf, Leaf, dict]:
+def own_sheet(leaf: Leaf, room: tuple[float, float] | None) -> Leaf:
+    """``leaf`` as large as ``region`` (a set's field, above a later sheet's title block): nothing is
+    flowed beside or under it — s keeps its sheet for ϑ(φ) and the phase diagram goes to the
+    profile's (beside s it stood at 1:2, 40 mm, the profile alone on the next sheet)."""
+    if room is None:
+        return leaf
+    return Leaf(leaf.name, max(room[0], leaf.w), max(room[1], leaf.h), leaf.record)
+
+
+def sheet_room(region: Box, keep: Box) -> tuple[float, float]:
+    """A set's field across and above the first sheet's title block (own_sheet), less a GAP."""
+    return region[2] - region[0], region[3] - keep[3] - GAP
+
+
+def _leaves(sol, g, cam: Cam, lang: str, drawn: dict | None = None, split: bool = False, column: bool = True,
+            row: tuple[float, float] | None = None) -> tuple[list[Leaf], Leaf, Leaf, dict]:
     """The captioned drawings (none when ``drawn`` is {}): the diagrams with the phase diagram beside
     them (``split``, a set of sheets: each on its own) — ``column``: ϑ(φ) under the diagrams —, the
     profile; the table and the notes."""
     doc = cam_json(sol, g, cam.source or "")
+    if drawn is None and split and g.split:     # s on a sheet of its own, after d²s/dφ² and ds/dφ (set_sizes)
+        from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
+        drawn = {"av": diagrams(sol, g, lang, ("a", "v")), "s": diagrams(sol, g, lang, ("s",)),
+                 "phase": phase_diagram(sol, g, lang), "profile": profile_drawing(sol, g, lang)}
     drawn = records(sol, g, lang) if drawn is None else drawn
     caps = _captions(g, cam, lang)
     leaves = []
-    if drawn and split:
+    if drawn and split and "av" in drawn:
+        leaves = [Leaf("diagrams", record=captioned(drawn["av"], *caps["av"])),
+                  own_sheet(Leaf("displacement", record=captioned(drawn["s"], *caps["s"])), row)] + [
+                  Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("phase", "profile")]
+    elif drawn and split:
         leaves = [Leaf(name, record=captioned(drawn[name], *caps[name])) for name in ("diagrams", "phase", "profile")]
     elif drawn:
         leaves = [Leaf("diagrams", record=beside(drawn["diagrams"], drawn["phase"], caps, cam.rocking,
@@ -508,7 +535,34 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
+LEGIBLE_MM = 25.0    # mm: the least tallest ordinate of s and of each phase's ds/dφ on a set's sheets
+
+
+def _smallest_peak(sol, n: int | None, precision: float, sz: tuple) -> float:
+    """The shortest of the read diagrams' tallest ordinates at the sizes ``sz`` (mm): the stroke drawn
+    on s and each phase's extreme of ds/dφ — the ordinates Table 1 reads to half a ruler division."""
+    import numpy as np
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
+                  H2=sz[5], measure=False, series=sz[6])
+    return min(float(np.max(np.abs(g.s_mm))),
+               *(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1)))
+
+
 def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tuple:
+    """A set's sizes (_set_sizes): the three diagrams on one sheet, or — where that draws s or a
+    phase's ds/dφ under LEGIBLE_MM (50 ruler divisions: half a division 1 % of it; review 13 #7: the
+    A3 set's rise of dψ/dφ 12.5 mm tall beside the A1's 52, Table 1 starring five errors the A1 sheet
+    has not, while a set has sheets to spare) — d²s/dφ² and ds/dφ on one sheet and s on the next,
+    where that draws them taller; the tuple's eighth item says which (True: apart)."""
+    joint = _set_sizes(sol, f, n, precision)
+    least = _smallest_peak(sol, n, precision, joint)
+    if least >= LEGIBLE_MM:
+        return joint + (False,)
+    apart_ = _set_sizes(sol, f, n, precision, split=True)
+    return apart_ + (True,) if _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+
+
+def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split: bool = False) -> tuple:
     """The construction's sizes when its drawings do not share one sheet of ``f`` (a set of sheets,
     the drawings each on its own — build_cam_sheet): the largest common size at which the diagrams and
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
@@ -521,9 +575,9 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     memo: dict = {}
 
     def alone(name: str, g) -> bool:
-        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing}[name]
-        key = {"diagrams": (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2), "phase": (g.mu_s, g.mu_l),
-               "profile": (g.mu_l,)}[name]
+        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
+                "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
+        key = {"phase": (g.mu_s, g.mu_l), "profile": (g.mu_l,)}.get(name, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2))
         if (name, key) not in memo:
             ok = True
             for lang in ("uk", "en"):
@@ -533,11 +587,12 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
             memo[(name, key)] = ok
         return memo[(name, key)]
 
-    def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...]) -> bool:
+    def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...],
+             poles: tuple = (None, None)) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
-                      series=True)
+                      series=True, H1=poles[0], H2=poles[1])
         return all(alone(name, g) for name in names)
-    both = ("diagrams", "phase")
+    both = ("av", "s", "phase") if split else ("diagrams", "phase")
     sizes = list(SET_SIZES)
     k = _largest(lambda x: fits(x, x, x, None, both), sizes) or sizes[0]
     # then s (and ds/dφ) alone taller, d²s/dφ² as it is: the s ordinates, the ones the table's δ_s
@@ -560,16 +615,39 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
             pair = [Leaf(name, *extent(Leaf(name, record=captioned(draw(sol, g, lang),
                                                                     *_captions(g, sol.cam, lang)[name]))))
                     for name, draw in (("phase", phase_diagram), ("profile", profile_drawing))]
-            laid = flow([pair], region, keep)
+            laid = flow([pair], region, later_keep(f))      # a later sheet's (the diagrams take the first)
             if laid is None or len(laid) != 1:
                 return False
         return True
     if ks > k and not shared(kl, kp, ks, ka) and shared(kl, kp, k, ka):
         # a finer μ_s would give the phase diagram a sheet of its own, and the set a sheet more, half
-        # blank: s as tall as keeps the two on one sheet
+        # blank: s as tall as keeps the two on one sheet (on a later sheet, under its form 2a — judged
+        # under the first's title block, the two never shared one: review 44's knife cam's A2 set drew
+        # its phase diagram alone on sheet 2, 78 % blank, 4 sheets)
         ks = next(x for x in reversed([x for x in sizes if k <= x < ks]) if shared(kl, kp, x, ka))
         ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
-    return kl, kp, ks, ka, None, None, True
+    h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
+        if split else (None, None)
+    return kl, kp, ks, ka, h1, h2, True
+
+
+def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | None, float | None]:
+    """d²s/dφ² and ds/dφ on a sheet of their own: where a phase's ds/dφ is drawn under LEGIBLE_MM, the
+    shortest whole-millimetre H_2 that draws it so tall (its ordinates grow as H_2, μ_s kept), with
+    the longest H_1 at which the two still fit their sheet (``fits((H1, H2))``; d²s/dφ², which Table 1
+    does not read, gives up the height: μ_{d²s/dφ²} = μ_s/(μ_φ²·H_1·H_2)). (None, None): as they are."""
+    import numpy as np
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], measure=False,
+                  series=True)
+    peak = min(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1))
+    if peak >= LEGIBLE_MM or peak <= 0:
+        return None, None
+    lo, hi = POLE_MM
+    h2 = float(math.ceil(g.H2 * LEGIBLE_MM / peak - 1e-9))
+    if h2 > hi:
+        return None, None
+    h1 = _largest(lambda h: fits((h, h2)), [float(h) for h in range(int(lo), int(hi) + 1)])
+    return (h1, h2) if h1 is not None else (None, None)
 
 
 def _largest(ok, sizes: list[float]) -> float | None:
@@ -604,8 +682,10 @@ def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     sizes = cam_sizes(sol, f, first_n, precision)
 
     def make(m: int, sz, measure: bool = False):      # measured (R0 off the phase diagram) once, at the end
-        return construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
-                         H1=sz[4], H2=sz[5], measure=measure, series=sz[6] if len(sz) > 6 else False)
+        g = construct(sol, m, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                      H1=sz[4], H2=sz[5], measure=measure, series=sz[6] if len(sz) > 6 else False)
+        g.split = len(sz) > 7 and bool(sz[7])           # s on a sheet of its own (set_sizes)
+        return g
 
     def kept(better: int | None):
         g = make(first_n, sizes, True)
@@ -782,6 +862,39 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     return None
 
 
+def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
+                             later=None) -> list | None:
+    """A set whose s diagram has a sheet of its own (set_sizes): ϑ(φ) under it at its μ_φ, each
+    division's ϑ straight under its s (review 11, mark 16), as tall as that sheet leaves, and Table 1
+    as large as its sheet takes (TABLE_SIZES). None where that takes more sheets than ``laid``."""
+    names = [leaf.name for leaf in leaves]
+    if laid is None or "displacement" not in names:
+        return None
+    at = names.index("displacement")
+    disp = leaves[at]
+    lines = notes(doc, lang, cam)
+    w = region[2] - region[0] - 2 * GAP
+    b = disp.record.bounds()
+    h = region[3] - (later or keep)[3] - (b[3] - b[1]) - 3 * GAP      # above the later sheets' title block
+    if h < PRESSURE_ROOM[1]:
+        return None
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6):
+        leaf = pressure_leaf(sol, g, lang, w, min(h, SET_PRESSURE[1]) * part, True)
+        if leaf is None:
+            continue
+        # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
+        both = own_sheet(Leaf("displacement", record=with_theta(disp.record, leaf.record)), sheet_room(region, keep))
+        drawings = leaves[:at] + [both] + leaves[at + 1:]
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+            tab = Leaf("table", record=positions_table(doc, lang, row, size))
+            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+            again = kept_together(drawings, tab, lines, nts, region, keep, later)
+            if again is None or len(again) > len(laid) or notes_alone(again[-1]):
+                continue
+            return again
+    return None
+
+
 def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None,
                       same: bool = True):
     """A set's sheets with the pressure angle's diagram ϑ(φ) under the phase diagram, beside the
@@ -859,7 +972,7 @@ def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
     if laid is None:
         return (g, *as_is)
     for g2 in _phase_scales(sol, g, lang):
-        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True)
+        leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True, row=sheet_room(region, keep))
         again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
         if (again is not None and len(again) == len(laid)
                 and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
@@ -907,16 +1020,18 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         leaves, tab, nts, doc, laid, notes_at = _theta_grown(sol, g, f, lang, (leaves, tab, nts, doc, laid, notes_at))
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f, notes_at)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
-        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True)
+        leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True, row=sheet_room(region, keep))
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
         g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
         # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
         def placed(t) -> bool:
-            return t is not None and any("pressure" in _names(leaf) for pg in t for leaf, _ in pg)
+            return t is not None and any("pressure" in _names(leaf) or getattr(getattr(leaf, "record", None), "theta_at", None)
+                                         is not None for pg in t for leaf, _ in pg)
         own = (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), False)
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
-        most = len(own) if placed(own) else len(laid)
-        same = [t for t in (pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+        most = len(own) if placed(own) else len(laid or [])
+        same = [] if laid is None else [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+                            pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
                 if placed(t) and len(t) <= most]
