@@ -450,7 +450,38 @@ class Natural:
 
 
 @dataclass
-class LeverFamily(Family):
+class Crowded(Family):
+    """A family whose drawings' lettering is assumed to stick out no further at a larger drawing
+    than at a smaller one: at a scale where drawing i was not drawn, what its lettering added at
+    the scales drawing it as large or larger (and as measured first), not the most it added
+    anywhere (``Family.lettering``). Labels placed round a small, crowded drawing go out on long
+    leaders (the pump six-bar's lever at μv 0.0239: a 48 mm figure lettered 165 × 175 mm); taken
+    for every scale, that margin shrank the lever's row and, through it, the scheme and the groups,
+    whose own lettering at 1:10 (labels pushed round a 7 mm crank) then barred 1:4 — the sheet
+    ended at 1:10 with the A1 field a third empty (review 45 #1)."""
+
+    def lettering(self, mu: float, i: int) -> tuple[float, float]:
+        got = self.seen.get((round(mu, 12), i))
+        if got is not None:
+            return got
+        larger = [v for (m, j), v in self.seen.items() if j == i and m <= mu * (1 + 1e-9)]
+        lw, lh = self.sizes[i][2:]
+        return max([lw] + [v[0] for v in larger]), max([lh] + [v[1] for v in larger])
+
+    def allow(self, mu: float, w: float, h: float, i: int) -> bool:
+        """Drawn at μ, drawing i came out w × h (without its caption): what its lettering adds
+        there is remembered for that scale and the smaller drawings (``lettering``). Whether the
+        assumption held."""
+        k = self.mu0 / mu
+        gw, gh = self.sizes[i][:2]
+        need = (w - gw * (k if self.across else 1.0), h - gh * (k if self.up else 1.0))
+        was = self.lettering(mu, i)
+        self.seen[(round(mu, 12), i)] = need
+        return need[0] <= was[0] + 1e-6 and need[1] <= was[1] + 1e-6
+
+
+@dataclass
+class LeverFamily(Crowded):
     """The lever's family, grown in finer steps than the series' (up to twice as large — seldom
     room for it in the lever's row): the next of the velocity plans' choices (graphic.scales.
     larger_choices: the round values, GOST's 1.5, 7.5 × 10^k between the series' steps, then p_v a
@@ -490,7 +521,7 @@ class LeverFamily(Family):
 
 
 @dataclass
-class Floored(Family):
+class Floored(Crowded):
     """A family of size factors never started below ``floor`` (the hodographs: a teacher reads one
     whose larger extent is ~60 mm on A1; the sheet's other drawings give way first)."""
     floor: float = 0.0
@@ -541,6 +572,7 @@ def measure(dr: ForceDrafter) -> Natural:
                                        principal=principal[fam], target=TARGETS[fam],
                                        factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
                                        lettering=LETTERING)
+    families = {fam: Crowded(**vars(x)) for fam, x in families.items()}
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
     # flat hodographs (the press's, 8000 N down and 300 N across: 60 × 15 mm slivers) grow to the
@@ -665,6 +697,28 @@ def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
     return mu
 
 
+def _review4(families: dict[str, Family], fits, order) -> list[dict[str, float]]:
+    """The one-sheet scales of an order of growth with the groups never at a smaller scale than
+    the scheme (review 4 #8: the groups at 1:10 beside a 1:4 scheme; the press's II(2-3) at 1:5
+    beside its 1:4 scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
+    1:2.5): grown from the common size factor with the scheme taking the groups along
+    (``_levels``' ``led``) — and, where the families grown freely left the scheme larger than the
+    groups, the scheme put back at the groups' scale and the room it leaves grown into by the rest.
+    Both kept for the score to choose: the second alone, the others already grown into the room
+    the scheme took, left the pump six-bar's scheme and groups at 1:10 (review 45 #1)."""
+    out = []
+    free = _levels(families, fits, order)
+    if free is None:
+        return out
+    if free["scheme"] >= free["groups"] * (1 - 1e-9):
+        return [free]
+    for mu in (_levels(families, fits, order, led={"scheme": "groups"}),
+               _levels(families, fits, order, start={**free, "scheme": free["groups"]}, led={"scheme": "groups"})):
+        if mu is not None and mu not in out:
+            out.append(mu)
+    return out
+
+
 @dataclass
 class Plan:
     mu: dict[str, float]
@@ -727,30 +781,19 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
             fits = lambda m, s=shape: arranged(m, s, True) is not None       # noqa: E731
-            mu = _levels(nat.families, fits, order)
-            if mu is None:
-                continue
-            if mu["scheme"] < mu["groups"] * (1 - 1e-9):
-                # the groups never at a smaller scale than the scheme on one sheet (review 4 #8: the
-                # groups at 1:10 beside a 1:4 scheme; the press's II(2-3) at 1:5 beside its 1:4
-                # scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
-                # 1:2.5): the scheme at the groups' scale, the room it leaves grown into by the rest
-                mu = _levels(nat.families, fits, order, start={**mu, "scheme": mu["groups"]},
-                             led={"scheme": "groups"})
-                if mu is None:
-                    continue
-            rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
-            # the smallest against its target, then those under their targets as large as may be
-            # (a drawing beyond its target gains the sheet less than one under it loses: the
-            # shaper's acceleration plan at 1.8 times its target scored its scheme and groups at
-            # 1:5 above both at 1:4), then all
-            score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
-                     round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
-            _, hc, parts, hrow = arranged(mu, shape)
-            counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
-            if best is None or cand[0] > best[0]:
-                best = cand
+            for mu in _review4(nat.families, fits, order):
+                rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
+                # the smallest against its target, then those under their targets as large as may be
+                # (a drawing beyond its target gains the sheet less than one under it loses: the
+                # shaper's acceleration plan at 1.8 times its target scored its scheme and groups at
+                # 1:5 above both at 1:4), then all
+                score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
+                         round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
+                _, hc, parts, hrow = arranged(mu, shape)
+                counts = tuple(len(g) for g in split(tabs, parts))
+                cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
+                if best is None or cand[0] > best[0]:
+                    best = cand
     return best
 
 
@@ -1068,7 +1111,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         # came out (each measured at its scales by ``_checked``), never one that runs off the field
         p = next((q for q in reversed(tried) if _holds(dr, nat, f, q)), p)
     base = p
-    p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
+    p = _grown_groups(dr, nat, f, p)
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
     if filled.shape != "set":
         # grown drawings sized by their families' models: the sheet as they come out drawn, else the
@@ -1277,42 +1320,79 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
 
 
 def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
-    """LAYOUT.md's rule for each group: the largest standard scale that fits its cell. A group
-    smaller than the largest (the crank's, a short dyad) is drawn at a finer standard μl than the
-    family's — no larger than the largest group's drawing — while the composition still fits the
-    sheet at every other scale unchanged (the crank group of a long-rocker shaper at 1:2, not 1:5
-    with G1 and Φ1 crowding its 20 mm). The grown scales go into ``mu`` as "group <label>"."""
+    """LAYOUT.md's rule for each group and each force plan: the largest standard scale that fits
+    its cell, every other drawing as planned. A group smaller than the largest (the crank's, a
+    short dyad) is drawn at a finer standard μl than the family's — no larger than the largest
+    group's drawing, or up to the scheme's scale, which every group takes where the sheet has room
+    (review 4: the groups at 1:10 beside a 1:4 scheme) — the crank group of a long-rocker shaper at
+    1:2, not 1:5 with G1 and Φ1 crowding its 20 mm. A force plan whose forces are small beside the
+    largest plan's (the coulisse's outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer
+    μF, its largest vector no longer than the largest plan's (II(4-5) at 20 N/mm instead of 40:
+    R34 87 mm, not 43). Grown a step at a time, the smallest against the largest of its family
+    first: the groups grown whole before the plans left the pump six-bar's II(4-5) plan at
+    20 N/mm, six of its nine forces under 2 mm, beside its group at 1:2 (review 45 #1). The grown
+    scales go into ``mu`` as "group <label>" and "plan <label>", printed under each drawing and in
+    the notes. Each size as drawn, not the family's model alone: a plan's lettering and small
+    forces do not scale with it (SIEVE's I(0-1) at 2.5 N/mm came out 179 × 33 mm where the model
+    said 93 × 39, and the A2 set planned on 2 sheets was drawn on 3)."""
     from graphplan.graphic.forceplans import group_extent
     from graphplan.sheets.compose import finer
-    fam = nat.families["groups"]
+    fams = nat.families
     mu = dict(p.mu)
-    base = mu["groups"]
-    fp = dr.fp(base, mu["forces"], mu["lever"])
+    base_l, base_F = mu["groups"], mu["forces"]
+    fp = dr.groups_fp(mu)
     extents = {gf.label: group_extent(dr.ks, gf.links) for gf in dr.ks.groups}
-    largest = max(list(extents.values()) + [0.0])
-    if largest <= 0:
-        return p
-    leaves = _leaves(nat, mu)
-    for i in reversed(range(len(fp.groups))):          # the crank first: the smallest, solved last
-        label = fp.groups[i].label
-        e = extents.get(label, 0.0)
-        if e <= 0:
-            continue
-        best, s = None, finer(base)
-        # no larger than the largest group's drawing — or than the scheme's scale, which every
-        # group takes where the sheet has room (review4: the groups at 1:10 beside a 1:4 scheme)
-        while s is not None and (e / s <= largest / base + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)):
-            w, h = dr.group_size(mu, i, s, fam.caption)
-            trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
-                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
-                                          *leaves["groups"][i + 1:]]}
-            if not _fits(nat, f, p, trial):
+    largest_e = max(list(extents.values()) + [0.0])
+    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
+    largest_F = max(list(longest.values()) + [0.0])
+    labels = [gp.label for gp in fp.groups]
+    leaves = _placed_leaves(dr, nat, mu)
+
+    def key_of(fam: str, i: int) -> str:
+        return (GROUP if fam == "groups" else PLAN) + labels[i]
+
+    def share(step: tuple[str, int]) -> float:
+        """The drawing against the largest of its family (1: as large)."""
+        fam, i = step
+        m = mu.get(key_of(fam, i), mu[fam])
+        if fam == "groups":
+            return extents[labels[i]] / m / (largest_e / base_l)
+        return longest[labels[i]] * base_F / m / largest_F
+
+    def allowed(fam: str, i: int, s: float) -> bool:
+        if fam == "groups":
+            return extents[labels[i]] / s <= largest_e / base_l + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)
+        return longest[labels[i]] * base_F / s <= largest_F + 1e-9
+
+    growing = [("groups", i) for i in range(len(labels)) if largest_e > 0 and extents.get(labels[i], 0.0) > 0]
+    growing += [("forces", i) for i in range(len(labels)) if largest_F > 0 and longest[labels[i]] > 0]
+    while growing:
+        fam, i = step = min(growing, key=share)
+        # the next step, a plan's next three: its note of the short forces shortens as they lengthen
+        # (the pump's II(4-5) plan drawn 107 mm wide at 15 N/mm, 98 at 10 — its group's cell 104)
+        steps, s = [], mu.get(key_of(fam, i), mu[fam])
+        while len(steps) < (1 if fam == "groups" else PLAN_TRIES):
+            s = finer(s)
+            if s is None or not allowed(fam, i, s):
                 break
-            best, s = (s, trial), finer(s)
-        if best is not None:
-            mu[GROUP + label] = best[0]
-            leaves = best[1]
+            steps.append(s)
+        for s in steps:
+            if fam == "groups":
+                w, h = dr.group_size(mu, i, s, fams["groups"].caption)
+            else:
+                w, h = dr.plan_size(mu, i, s, fams["forces"].caption)   # as drawn, in both languages
+            trial = {**leaves, fam: [*leaves[fam][:i], Leaf(leaves[fam][i].name, w + GROW_MARGIN, h + GROW_MARGIN),
+                                     *leaves[fam][i + 1:]]}
+            if _fits(nat, f, p, trial):
+                mu[key_of(fam, i)] = s
+                leaves = trial
+                break
+        else:
+            growing.remove(step)
     return replace(p, mu=mu)
+
+
+PLAN_TRIES = 3     # a force plan's next steps tried in turn where the first does not fit (``_grown_groups``)
 
 
 def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -1342,13 +1422,14 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
 
 
 def _plan_cell(dr: ForceDrafter, mu: dict[str, float], fam: Family, mu_F: float, i: int) -> tuple[float, float]:
-    """A force plan's cell at its own μF: the family's model, or as drawn where it was
-    (``ForceDrafter.plan_size``), the larger."""
-    w, h = fam.size(mu_F, i)
-    for key, drawn in dr.memo.items():
-        if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"]):    # (not μv's)
-            w, h = max(w, drawn[0]), max(h, drawn[1])
-    return w, h
+    """A force plan's cell at its own μF: as drawn where it was (``ForceDrafter.plan_size``, both
+    languages, the largest of the drawings at the groups' scales), else the family's model (whose
+    lettering, the short forces' note of a coarser plan, overstates a finer one's)."""
+    drawn = [d for key, d in dr.memo.items()
+             if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"])]    # (not μv's)
+    if drawn:
+        return max(d[0] for d in drawn), max(d[1] for d in drawn)
+    return fam.size(mu_F, i)
 
 
 def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Plan) -> bool:
@@ -1399,49 +1480,6 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if _lettering_kept(dr, nat, trial, p) and fits(m):
             mu = trial
             break
-    return replace(p, mu=mu)
-
-
-def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
-    """LAYOUT.md's rule for each force plan: its own μF from the standard series, the finest at
-    which it still fits its cell. A group whose forces are small beside the crank's (the coulisse's
-    outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer μF than the family's — its largest
-    vector no longer than the largest plan's — while the composition still fits at every other
-    scale unchanged (II(4-5) at 20 N/mm instead of 40: R34 87 mm, not 43). The grown scales go into
-    ``mu`` as "plan <label>" and are printed under each plan and in the notes."""
-    from graphplan.sheets.compose import finer
-    fam = nat.families["forces"]
-    mu = dict(p.mu)
-    base = mu["forces"]
-    fp = dr.groups_fp(mu)
-    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
-    largest = max(list(longest.values()) + [0.0])
-    if largest <= 0:
-        return p
-    leaves = _leaves(nat, mu)
-    for i, gp in enumerate(fp.groups):      # the groups as _grown_groups drew them
-        if GROUP + gp.label in mu:
-            w, h = dr.group_size(mu, i, mu[GROUP + gp.label], nat.families["groups"].caption)
-            leaves["groups"][i] = Leaf(leaves["groups"][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
-    for i, gp in enumerate(fp.groups):
-        e = longest[gp.label]
-        if e <= 0:
-            continue
-        best, s = None, finer(base)
-        while s is not None and e * base / s <= largest + 1e-9:
-            # the plan as drawn at s, not the family's model alone: a plan's lettering and small
-            # forces do not scale with it (SIEVE's I(0-1) at 2.5 N/mm came out 179 × 33 mm where
-            # the model said 93 × 39, and the A2 set planned on 2 sheets was drawn on 3)
-            w, h = (max(a, b) for a, b in zip(fam.size(s, i), dr.plan_size(mu, i, s, fam.caption)))
-            trial = {**leaves, "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name,
-                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
-                                          *leaves["forces"][i + 1:]]}
-            if not _fits(nat, f, p, trial):
-                break
-            best, s = (s, trial), finer(s)
-        if best is not None:
-            mu[PLAN + gp.label] = best[0]
-            leaves = best[1]
     return replace(p, mu=mu)
 
 
