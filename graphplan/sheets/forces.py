@@ -697,28 +697,6 @@ def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
     return mu
 
 
-def _review4(families: dict[str, Family], fits, order) -> list[dict[str, float]]:
-    """The one-sheet scales of an order of growth with the groups never at a smaller scale than
-    the scheme (review 4 #8: the groups at 1:10 beside a 1:4 scheme; the press's II(2-3) at 1:5
-    beside its 1:4 scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
-    1:2.5): grown from the common size factor with the scheme taking the groups along
-    (``_levels``' ``led``) — and, where the families grown freely left the scheme larger than the
-    groups, the scheme put back at the groups' scale and the room it leaves grown into by the rest.
-    Both kept for the score to choose: the second alone, the others already grown into the room
-    the scheme took, left the pump six-bar's scheme and groups at 1:10 (review 45 #1)."""
-    out = []
-    free = _levels(families, fits, order)
-    if free is None:
-        return out
-    if free["scheme"] >= free["groups"] * (1 - 1e-9):
-        return [free]
-    for mu in (_levels(families, fits, order, led={"scheme": "groups"}),
-               _levels(families, fits, order, start={**free, "scheme": free["groups"]}, led={"scheme": "groups"})):
-        if mu is not None and mu not in out:
-            out.append(mu)
-    return out
-
-
 @dataclass
 class Plan:
     mu: dict[str, float]
@@ -781,19 +759,30 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
             fits = lambda m, s=shape: arranged(m, s, True) is not None       # noqa: E731
-            for mu in _review4(nat.families, fits, order):
-                rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
-                # the smallest against its target, then those under their targets as large as may be
-                # (a drawing beyond its target gains the sheet less than one under it loses: the
-                # shaper's acceleration plan at 1.8 times its target scored its scheme and groups at
-                # 1:5 above both at 1:4), then all
-                score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
-                         round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
-                _, hc, parts, hrow = arranged(mu, shape)
-                counts = tuple(len(g) for g in split(tabs, parts))
-                cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
-                if best is None or cand[0] > best[0]:
-                    best = cand
+            mu = _levels(nat.families, fits, order)
+            if mu is None:
+                continue
+            if mu["scheme"] < mu["groups"] * (1 - 1e-9):
+                # the groups never at a smaller scale than the scheme on one sheet (review 4 #8: the
+                # groups at 1:10 beside a 1:4 scheme; the press's II(2-3) at 1:5 beside its 1:4
+                # scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
+                # 1:2.5): the scheme at the groups' scale, the room it leaves grown into by the rest
+                mu = _levels(nat.families, fits, order, start={**mu, "scheme": mu["groups"]},
+                             led={"scheme": "groups"})
+                if mu is None:
+                    continue
+            rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
+            # the smallest against its target, then those under their targets as large as may be
+            # (a drawing beyond its target gains the sheet less than one under it loses: the
+            # shaper's acceleration plan at 1.8 times its target scored its scheme and groups at
+            # 1:5 above both at 1:4), then all
+            score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
+                     round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
+            _, hc, parts, hrow = arranged(mu, shape)
+            counts = tuple(len(g) for g in split(tabs, parts))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
+            if best is None or cand[0] > best[0]:
+                best = cand
     return best
 
 
