@@ -59,3 +59,6 @@ def test_the_pump_sheet_draws_its_scheme_and_groups_at_readable_scales():
         assert (gp.mu_l or p.mu["groups"]) <= p.mu["scheme"] * (1 + 1e-9), (gp.label, gp.mu_l, p.mu)
         biggest = exact[gp.label] / (gp.mu_F or p.mu["forces"])      # the exact solver's reactions, mm
         assert biggest >= 50.0, (gp.label, biggest, gp.mu_F)
+    # review 45 #2: the lever (19 loads, their arms lettered) grown into the room left — p_v a = ω1·r / μv
+    # at least 120 mm (the lead's sheet drew it at μv 0.0175: 75 mm, its arms' labels on long leaders)
+    assert abs(st.mech.omega1) * crank / p.mu["lever"] >= 120.0, p.mu["lever"]

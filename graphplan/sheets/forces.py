@@ -155,6 +155,9 @@ TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
 LEVER_STEP = 1.25     # the lever grown in the composition's rounds by at least this factor a step
 LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
+# … and into the room the composed sheet leaves it, its last growth (``_grown_lever``): the pump six-bar's
+# 19 loads with their arms at 150 mm went out on long leaders round a 114 mm figure (review 45 #2)
+LEVER_ROOM_MM = 200.0
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -494,14 +497,14 @@ class LeverFamily(Crowded):
         """The drawing's lines across at μ, mm."""
         return self.figure / mu + self.arrows
 
-    def choices(self, mu: float) -> list[tuple[float, bool]]:
-        """(μ, round?) that draw the lever larger than μ and at most ``LEVER_MM`` across, the
+    def choices(self, mu: float, most: float = LEVER_MM) -> list[tuple[float, bool]]:
+        """(μ, round?) that draw the lever larger than μ and at most ``most`` mm across, the
         smallest drawing first."""
         from graphplan.graphic.scales import larger_choices
         if self.figure <= 0:
             return []
-        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * LEVER_MM / self.figure)
-                if self.lines_across(m) <= LEVER_MM + 1e-9]
+        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * most / self.figure)
+                if self.lines_across(m) <= most + 1e-9]
 
     def finer(self, mu: float) -> float | None:
         steps = self.steps(mu)
@@ -1101,11 +1104,16 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         p = next((q for q in reversed(tried) if _holds(dr, nat, f, q)), p)
     base = p
     p = _grown_groups(dr, nat, f, p)
-    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
+    room = _filled_sheets(dr, nat, f, p)
+    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, room))
     if filled.shape != "set":
-        # grown drawings sized by their families' models: the sheet as they come out drawn, else the
-        # composition before them (the field's bounds are a hard rule, the growth a nicety)
-        return _loaded(next((q for q in (filled, p) if _within(dr, f, q)), base), dr), nat, dr
+        # grown drawings sized by their families' models: the sheet as they come out drawn, else
+        # without the lever's growth (its arms' lettering at a new μv is the least foreseeable: the
+        # shaper's lever grown into 200 mm of room came out over the field, and the sheet fell back
+        # to its plans at the family's μF), else the composition before them (the field's bounds
+        # are a hard rule, the growth a nicety)
+        tries = (q() for q in (lambda: filled, lambda: _grown_hodographs(dr, nat, f, room), lambda: p))
+        return _loaded(next((q for q in tries if _within(dr, f, q)), base), dr), nat, dr
     if filled.mu == p.mu:
         return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
@@ -1438,7 +1446,8 @@ def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Pla
 def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     """The Zhukovsky lever as large as its cell allows (LAYOUT.md: the largest scale that fits its
     zone), every other drawing as planned — the lever's μv grown in the plans' steps
-    (``LeverFamily``) while the composition fits — then a round μv (the series, GOST's 1.5, 7.5 ×
+    (``LeverFamily``) while the composition fits, up to ``LEVER_ROOM_MM`` across (the room left
+    is no other drawing's: the lever and then the hodographs take it last) — then a round μv (the series, GOST's 1.5, 7.5 ×
     10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
     5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
     off the lever to the ruler's 0.5 mm, so a larger lever reads P_зр closer to the exact."""
@@ -1456,12 +1465,12 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
     for _ in range(3):
         fitting = [(mu["lever"], on_round(mu["lever"]))]
-        for m, rnd in fam.choices(mu["lever"]):       # the smallest drawing first: stop at the first too large
+        for m, rnd in fam.choices(mu["lever"], LEVER_ROOM_MM):      # the smallest first: stop at the first too large
             if not fits(m):
                 break
             fitting.append((m, rnd))
         largest = fitting[-1][0]
-        rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
+        rounds = [r for r, _ in fam.choices(largest * 2.0, LEVER_ROOM_MM) if on_round(r) and r >= largest * (1 - 1e-9)]
         m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
         if m == p.mu["lever"]:
             break
