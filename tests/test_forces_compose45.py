@@ -49,6 +49,7 @@ def test_the_pump_sheet_draws_its_scheme_and_groups_at_readable_scales():
     from graphplan.sheets import forces as sf
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
+    assert "force_phi_deg = 210" in PUMP45
     st = scene_study(PUMP45.replace("force_phi_deg = 210", "force_phi_deg = 120"))
     p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
     crank = st.mech.crank.length
