@@ -60,6 +60,12 @@ def test_the_pump_sheet_draws_its_scheme_and_groups_at_readable_scales():
         assert (gp.mu_l or p.mu["groups"]) <= p.mu["scheme"] * (1 + 1e-9), (gp.label, gp.mu_l, p.mu)
         biggest = exact[gp.label] / (gp.mu_F or p.mu["forces"])      # the exact solver's reactions, mm
         assert biggest >= 50.0, (gp.label, biggest, gp.mu_F)
+    # the crank group no larger than the largest other group (its 70 mm crank was drawn 140 mm at 2:1
+    # beside groups at 1:4): its crank drawn no longer than their longest link drawn
+    own = {gp.label: gp.mu_l or p.mu["groups"] for gp in fp.groups}
+    others = [(st.mech.links[n].length or 0.0) / own[g.label] for g in dr.ks.groups if g.label != "I(0-1)"
+              for n in g.links]
+    assert crank / own["I(0-1)"] <= max(others) + 1e-6, (own, max(others))
     # review 45 #2: the lever (19 loads, their arms lettered) grown into the room left — p_v a = ω1·r / μv
     # at least 120 mm (the lead's sheet drew it at μv 0.0175: 75 mm, its arms' labels on long leaders)
     assert abs(st.mech.omega1) * crank / p.mu["lever"] >= 120.0, p.mu["lever"]

@@ -1238,6 +1238,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 # the scheme never larger than the groups cut from it where it would take much
                 # of its sheet (review 6 #4, ``_scheme_aside``)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
+                        or (one and fam == "groups" and not _group_allowed(dr, mu, labels[i], nxt)) \
                         or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)
                             and (one or not _scheme_aside(nat, f, nxt, dr.scheme_size(mu, nxt, fams["scheme"].caption)))):
                     growing.remove((fam, i))
@@ -1390,6 +1391,18 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
 
 PLAN_TRIES = 3     # a force plan's next steps tried in turn where the first does not fit (``_grown_groups``)
+
+
+def _group_allowed(dr: ForceDrafter, mu: dict[str, float], label: str, mu_l: float) -> bool:
+    """Whether group ``label`` may be drawn at μl ``mu_l`` on one sheet: no larger than the largest
+    group's drawing at the groups' scale, or at the scheme's scale (``_grown_groups``' rule, the
+    fill's too: the pump six-bar's crank group grew to 2:1, a 140 mm crank beside groups and a
+    scheme at 1:4, review 45 #1)."""
+    from graphplan.graphic.forceplans import group_extent
+    extents = {gf.label: group_extent(dr.ks, gf.links) for gf in dr.ks.groups}
+    largest = max(list(extents.values()) + [0.0])
+    return (extents.get(label, 0.0) / mu_l <= largest / mu["groups"] + 1e-9
+            or mu_l >= mu["scheme"] * (1 - 1e-9))
 
 
 def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
