@@ -53,17 +53,51 @@ def turn(st: Study, samples: int = SAMPLES) -> Turn:
     return Turn(ks, np.arange(samples) * 360.0 / samples, st.mech.task.count)
 
 
-def _cuts(t: Turn) -> list[int]:
+def _stroke_starts(t: Turn) -> list[int]:
     """The samples k where a stroke starts (working[k] ≠ working[k − 1], over the closed turn)."""
     work = np.asarray(t.ks.working)
     return np.flatnonzero(work != np.roll(work, 1)).tolist()
 
 
-def _pieces(t: Turn, values: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-    """Split a closed curve where the working stroke starts or ends (an external force switches
-    on or off, so the reactions jump): (indices, values) pieces, closed over the turn."""
+def _load_changes(t: Turn) -> dict[int, list]:
+    """The samples k where an external load changes at once between k − 1 and k (over the closed
+    turn), each with those loads: switched on or off (acting on one side, nil on the other — a
+    working-stroke force at the stroke's change) or reversed (acting on both sides, its direction
+    turned by more than a right angle in one step that is no step of a load varying smoothly
+    through nought — an "oppose" moment on a rocker at its extremes, where ω changes sign: the
+    pump six-bar's M5 = 25 N·m). Found once per turn."""
+    def make() -> dict[int, list]:
+        n = len(t.ks.working)
+        out: dict[int, list] = {}
+        for ld in (x for x in t.ks.loads if x.kind == "external"):
+            force = np.broadcast_to(np.asarray(ld.force, dtype=complex), (n,))
+            couple = np.broadcast_to(np.asarray(ld.couple, dtype=float), (n,))
+            size = np.abs(force) + np.abs(couple)
+            on = size > 0.0
+            before_f, before_c = np.roll(force, 1), np.roll(couple, 1)
+            step = np.abs(force - before_f) + np.abs(couple - before_c)
+            typical = float(np.median(step))
+            turned = (force * np.conj(before_f)).real + couple * before_c < 0.0
+            reversed_ = on & np.roll(on, 1) & turned & (step > 3.0 * typical + 1e-9 * (1.0 + float(np.max(size))))
+            for k in np.flatnonzero((on != np.roll(on, 1)) | reversed_).tolist():
+                out.setdefault(k, []).append(ld)
+        return dict(sorted(out.items()))
+    if "load changes" not in t.memo:
+        t.memo["load changes"] = make()
+    return t.memo["load changes"]
+
+
+def _cuts(t: Turn) -> list[int]:
+    """The samples k where the reactions may jump: an external load switched on or off, or
+    reversed, between k − 1 and k (``_load_changes``)."""
+    return list(_load_changes(t))
+
+
+def _pieces(t: Turn, values: np.ndarray, cuts: list[int] | None = None) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Split a closed curve where an external load switches on or off or reverses (the reactions
+    jump; ``_cuts``), or at ``cuts``: (indices, values) pieces, closed over the turn."""
     n = len(t.ks.working)
-    cuts = _cuts(t)
+    cuts = _cuts(t) if cuts is None else cuts
     if not cuts:
         idx = np.r_[np.arange(n), 0]
         return [(idx, values[idx])]
@@ -100,7 +134,7 @@ def moment_figure(t: Turn, title: str = "", lang: str = "uk"):
     ax.plot(x[::every], ks.power()[::every], "o", ms=3, mfc="none", color="black",
             label=word("by power", lang))
     work = ks.working
-    for idx, _ in _pieces(t, work.astype(float)):
+    for idx, _ in _pieces(t, work.astype(float), _stroke_starts(t)):
         if work[idx[0]]:
             ax.axvspan(x[idx[0]], x[idx[0]] + len(idx) * (x[1] - x[0]), color="0.9", lw=0)
     ax.axhline(0.0, color="0.5", lw=0.6)
@@ -418,18 +452,19 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
 
 
 def _switching(t: Turn, f: np.ndarray, lang: str) -> list[str]:
-    """The external loads a reaction's jump is due to: those switched on or off (zero on one side,
-    not on the other) at a stroke's change where the reaction itself jumps — not a load constant over
-    the turn, nor one on a piston the reaction does not carry (review 13: a V-twin's constant P_B
-    named under R45's jump from P_C). Where no load switches there, every external one is named."""
-    n = len(t.ks.working)
+    """The external loads a reaction's jump is due to: those switched on or off, or reversed, where
+    the reaction itself jumps (``_load_changes``) — not a load constant over the turn, nor one on a
+    piston the reaction does not carry (review 13: a V-twin's constant P_B named under R45's jump
+    from P_C); the pump six-bar's R12 jumps from P_B at the strokes' changes and from M5 at the
+    rocker's extremes (review 45 #3). Where no load changes there, every external one is named."""
     step = np.abs(np.diff(np.r_[f, f[:1]]))
     typical = float(np.median(step)) if len(step) else 0.0
-    jumps = [k for k in _cuts(t) if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
+    changes = _load_changes(t)
+    jumps = [k for k in changes if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
+    named = [ld for k in jumps for ld in changes[k]]
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
-    on = {id(ld): (np.abs(np.broadcast_to(ld.force, (n,))) + np.abs(np.broadcast_to(ld.couple, (n,)))) > 0.0
-          for ld in ext}                                   # each load acting or not, sample by sample
-    named = [ld for ld in ext if any(on[id(ld)][k] != on[id(ld)][k - 1] for k in jumps)]
+    order = {id(ld): i for i, ld in enumerate(ext)}          # in the scene's order
+    named = sorted({id(ld): ld for ld in named}.values(), key=lambda ld: order[id(ld)])
     return list(dict.fromkeys(force_symbol(ld.name, lang) for ld in (named or ext)))
 
 

@@ -155,6 +155,9 @@ TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
 LEVER_STEP = 1.25     # the lever grown in the composition's rounds by at least this factor a step
 LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
+# … and into the room the composed sheet leaves it, its last growth (``_grown_lever``): the pump six-bar's
+# 19 loads with their arms at 150 mm went out on long leaders round a 114 mm figure (review 45 #2)
+LEVER_ROOM_MM = 200.0
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -450,7 +453,38 @@ class Natural:
 
 
 @dataclass
-class LeverFamily(Family):
+class Crowded(Family):
+    """A family whose drawings' lettering is assumed to stick out no further at a larger drawing
+    than at a smaller one: at a scale where drawing i was not drawn, what its lettering added at
+    the scales drawing it as large or larger (and as measured first), not the most it added
+    anywhere (``Family.lettering``). Labels placed round a small, crowded drawing go out on long
+    leaders (the pump six-bar's lever at μv 0.0239: a 48 mm figure lettered 165 × 175 mm); taken
+    for every scale, that margin shrank the lever's row and, through it, the scheme and the groups,
+    whose own lettering at 1:10 (labels pushed round a 7 mm crank) then barred 1:4 — the sheet
+    ended at 1:10 with the A1 field a third empty (review 45 #1)."""
+
+    def lettering(self, mu: float, i: int) -> tuple[float, float]:
+        got = self.seen.get((round(mu, 12), i))
+        if got is not None:
+            return got
+        larger = [v for (m, j), v in self.seen.items() if j == i and m <= mu * (1 + 1e-9)]
+        lw, lh = self.sizes[i][2:]
+        return max([lw] + [v[0] for v in larger]), max([lh] + [v[1] for v in larger])
+
+    def allow(self, mu: float, w: float, h: float, i: int) -> bool:
+        """Drawn at μ, drawing i came out w × h (without its caption): what its lettering adds
+        there is remembered for that scale and the smaller drawings (``lettering``). Whether the
+        assumption held."""
+        k = self.mu0 / mu
+        gw, gh = self.sizes[i][:2]
+        need = (w - gw * (k if self.across else 1.0), h - gh * (k if self.up else 1.0))
+        was = self.lettering(mu, i)
+        self.seen[(round(mu, 12), i)] = need
+        return need[0] <= was[0] + 1e-6 and need[1] <= was[1] + 1e-6
+
+
+@dataclass
+class LeverFamily(Crowded):
     """The lever's family, grown in finer steps than the series' (up to twice as large — seldom
     room for it in the lever's row): the next of the velocity plans' choices (graphic.scales.
     larger_choices: the round values, GOST's 1.5, 7.5 × 10^k between the series' steps, then p_v a
@@ -463,14 +497,14 @@ class LeverFamily(Family):
         """The drawing's lines across at μ, mm."""
         return self.figure / mu + self.arrows
 
-    def choices(self, mu: float) -> list[tuple[float, bool]]:
-        """(μ, round?) that draw the lever larger than μ and at most ``LEVER_MM`` across, the
+    def choices(self, mu: float, most: float = LEVER_MM) -> list[tuple[float, bool]]:
+        """(μ, round?) that draw the lever larger than μ and at most ``most`` mm across, the
         smallest drawing first."""
         from graphplan.graphic.scales import larger_choices
         if self.figure <= 0:
             return []
-        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * LEVER_MM / self.figure)
-                if self.lines_across(m) <= LEVER_MM + 1e-9]
+        return [(m, rnd) for m, rnd in larger_choices(self.principal, mu, self.principal * most / self.figure)
+                if self.lines_across(m) <= most + 1e-9]
 
     def finer(self, mu: float) -> float | None:
         steps = self.steps(mu)
@@ -490,7 +524,7 @@ class LeverFamily(Family):
 
 
 @dataclass
-class Floored(Family):
+class Floored(Crowded):
     """A family of size factors never started below ``floor`` (the hodographs: a teacher reads one
     whose larger extent is ~60 mm on A1; the sheet's other drawings give way first)."""
     floor: float = 0.0
@@ -541,6 +575,7 @@ def measure(dr: ForceDrafter) -> Natural:
                                        principal=principal[fam], target=TARGETS[fam],
                                        factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
                                        lettering=LETTERING)
+    families = {fam: Crowded(**vars(x)) for fam, x in families.items()}
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
     # flat hodographs (the press's, 8000 N down and 300 N across: 60 × 15 mm slivers) grow to the
@@ -1095,12 +1130,17 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         # came out (each measured at its scales by ``_checked``), never one that runs off the field
         p = next((q for q in reversed(tried) if _holds(dr, nat, f, q)), p)
     base = p
-    p = _grown_plans(dr, nat, f, _grown_groups(dr, nat, f, p))
-    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, _filled_sheets(dr, nat, f, p)))
+    p = _grown_groups(dr, nat, f, p)
+    room = _filled_sheets(dr, nat, f, p)
+    filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, room))
     if filled.shape != "set":
-        # grown drawings sized by their families' models: the sheet as they come out drawn, else the
-        # composition before them (the field's bounds are a hard rule, the growth a nicety)
-        return _loaded(next((q for q in (filled, p) if _within(dr, f, q)), base), dr), nat, dr
+        # grown drawings sized by their families' models: the sheet as they come out drawn, else
+        # without the lever's growth (its arms' lettering at a new μv is the least foreseeable: the
+        # shaper's lever grown into 200 mm of room came out over the field, and the sheet fell back
+        # to its plans at the family's μF), else the composition before them (the field's bounds
+        # are a hard rule, the growth a nicety)
+        tries = (q() for q in (lambda: filled, lambda: _grown_hodographs(dr, nat, f, room), lambda: p))
+        return _loaded(next((q for q in tries if _within(dr, f, q)), base), dr), nat, dr
     if filled.mu == p.mu:
         return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
@@ -1225,6 +1265,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 # the scheme never larger than the groups cut from it where it would take much
                 # of its sheet (review 6 #4, ``_scheme_aside``)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \
+                        or (one and fam == "groups" and not _group_allowed(dr, mu, labels[i], nxt)) \
                         or (fam == "scheme" and nxt < mu["groups"] * (1 - 1e-9)
                             and (one or not _scheme_aside(nat, f, nxt, dr.scheme_size(mu, nxt, fams["scheme"].caption)))):
                     growing.remove((fam, i))
@@ -1304,42 +1345,91 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
 
 
 def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
-    """LAYOUT.md's rule for each group: the largest standard scale that fits its cell. A group
-    smaller than the largest (the crank's, a short dyad) is drawn at a finer standard μl than the
-    family's — no larger than the largest group's drawing — while the composition still fits the
-    sheet at every other scale unchanged (the crank group of a long-rocker shaper at 1:2, not 1:5
-    with G1 and Φ1 crowding its 20 mm). The grown scales go into ``mu`` as "group <label>"."""
+    """LAYOUT.md's rule for each group and each force plan: the largest standard scale that fits
+    its cell, every other drawing as planned. A group smaller than the largest (the crank's, a
+    short dyad) is drawn at a finer standard μl than the family's — no larger than the largest
+    group's drawing, or up to the scheme's scale, which every group takes where the sheet has room
+    (review 4: the groups at 1:10 beside a 1:4 scheme) — the crank group of a long-rocker shaper at
+    1:2, not 1:5 with G1 and Φ1 crowding its 20 mm. A force plan whose forces are small beside the
+    largest plan's (the coulisse's outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer
+    μF, its largest vector no longer than the largest plan's (II(4-5) at 20 N/mm instead of 40:
+    R34 87 mm, not 43). Grown a step at a time, the smallest against the largest of its family
+    first: the groups grown whole before the plans left the pump six-bar's II(4-5) plan at
+    20 N/mm, six of its nine forces under 2 mm, beside its group at 1:2 (review 45 #1). The grown
+    scales go into ``mu`` as "group <label>" and "plan <label>", printed under each drawing and in
+    the notes. Each size as drawn, not the family's model alone: a plan's lettering and small
+    forces do not scale with it (SIEVE's I(0-1) at 2.5 N/mm came out 179 × 33 mm where the model
+    said 93 × 39, and the A2 set planned on 2 sheets was drawn on 3)."""
     from graphplan.graphic.forceplans import group_extent
     from graphplan.sheets.compose import finer
-    fam = nat.families["groups"]
+    fams = nat.families
     mu = dict(p.mu)
-    base = mu["groups"]
-    fp = dr.fp(base, mu["forces"], mu["lever"])
+    base_l, base_F = mu["groups"], mu["forces"]
+    fp = dr.groups_fp(mu)
+    extents = {gf.label: group_extent(dr.ks, gf.links) for gf in dr.ks.groups}
+    largest_e = max(list(extents.values()) + [0.0])
+    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
+    largest_F = max(list(longest.values()) + [0.0])
+    labels = [gp.label for gp in fp.groups]
+    leaves = _placed_leaves(dr, nat, mu)
+
+    def key_of(fam: str, i: int) -> str:
+        return (GROUP if fam == "groups" else PLAN) + labels[i]
+
+    def share(step: tuple[str, int]) -> float:
+        """The drawing against the largest of its family (1: as large)."""
+        fam, i = step
+        m = mu.get(key_of(fam, i), mu[fam])
+        if fam == "groups":
+            return extents[labels[i]] / m / (largest_e / base_l)
+        return longest[labels[i]] * base_F / m / largest_F
+
+    def allowed(fam: str, i: int, s: float) -> bool:
+        if fam == "groups":
+            return extents[labels[i]] / s <= largest_e / base_l + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)
+        return longest[labels[i]] * base_F / s <= largest_F + 1e-9
+
+    growing = [("groups", i) for i in range(len(labels)) if largest_e > 0 and extents.get(labels[i], 0.0) > 0]
+    growing += [("forces", i) for i in range(len(labels)) if largest_F > 0 and longest[labels[i]] > 0]
+    while growing:
+        fam, i = step = min(growing, key=share)
+        # the next step, a plan's next three: its note of the short forces shortens as they lengthen
+        # (the pump's II(4-5) plan drawn 107 mm wide at 15 N/mm, 98 at 10 — its group's cell 104)
+        steps, s = [], mu.get(key_of(fam, i), mu[fam])
+        while len(steps) < (1 if fam == "groups" else PLAN_TRIES):
+            s = finer(s)
+            if s is None or not allowed(fam, i, s):
+                break
+            steps.append(s)
+        for s in steps:
+            if fam == "groups":
+                w, h = dr.group_size(mu, i, s, fams["groups"].caption)
+            else:
+                w, h = dr.plan_size(mu, i, s, fams["forces"].caption)   # as drawn, in both languages
+            trial = {**leaves, fam: [*leaves[fam][:i], Leaf(leaves[fam][i].name, w + GROW_MARGIN, h + GROW_MARGIN),
+                                     *leaves[fam][i + 1:]]}
+            if _fits(nat, f, p, trial):
+                mu[key_of(fam, i)] = s
+                leaves = trial
+                break
+        else:
+            growing.remove(step)
+    return replace(p, mu=mu)
+
+
+PLAN_TRIES = 3     # a force plan's next steps tried in turn where the first does not fit (``_grown_groups``)
+
+
+def _group_allowed(dr: ForceDrafter, mu: dict[str, float], label: str, mu_l: float) -> bool:
+    """Whether group ``label`` may be drawn at μl ``mu_l`` on one sheet: no larger than the largest
+    group's drawing at the groups' scale, or at the scheme's scale (``_grown_groups``' rule, the
+    fill's too: the pump six-bar's crank group grew to 2:1, a 140 mm crank beside groups and a
+    scheme at 1:4, review 45 #1)."""
+    from graphplan.graphic.forceplans import group_extent
     extents = {gf.label: group_extent(dr.ks, gf.links) for gf in dr.ks.groups}
     largest = max(list(extents.values()) + [0.0])
-    if largest <= 0:
-        return p
-    leaves = _leaves(nat, mu)
-    for i in reversed(range(len(fp.groups))):          # the crank first: the smallest, solved last
-        label = fp.groups[i].label
-        e = extents.get(label, 0.0)
-        if e <= 0:
-            continue
-        best, s = None, finer(base)
-        # no larger than the largest group's drawing — or than the scheme's scale, which every
-        # group takes where the sheet has room (review4: the groups at 1:10 beside a 1:4 scheme)
-        while s is not None and (e / s <= largest / base + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)):
-            w, h = dr.group_size(mu, i, s, fam.caption)
-            trial = {**leaves, "groups": [*leaves["groups"][:i], Leaf(leaves["groups"][i].name,
-                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
-                                          *leaves["groups"][i + 1:]]}
-            if not _fits(nat, f, p, trial):
-                break
-            best, s = (s, trial), finer(s)
-        if best is not None:
-            mu[GROUP + label] = best[0]
-            leaves = best[1]
-    return replace(p, mu=mu)
+    return (extents.get(label, 0.0) / mu_l <= largest / mu["groups"] + 1e-9
+            or mu_l >= mu["scheme"] * (1 - 1e-9))
 
 
 def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -1369,13 +1459,14 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
 
 
 def _plan_cell(dr: ForceDrafter, mu: dict[str, float], fam: Family, mu_F: float, i: int) -> tuple[float, float]:
-    """A force plan's cell at its own μF: the family's model, or as drawn where it was
-    (``ForceDrafter.plan_size``), the larger."""
-    w, h = fam.size(mu_F, i)
-    for key, drawn in dr.memo.items():
-        if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"]):    # (not μv's)
-            w, h = max(w, drawn[0]), max(h, drawn[1])
-    return w, h
+    """A force plan's cell at its own μF: as drawn where it was (``ForceDrafter.plan_size``, both
+    languages, the largest of the drawings at the groups' scales), else the family's model (whose
+    lettering, the short forces' note of a coarser plan, overstates a finer one's)."""
+    drawn = [d for key, d in dr.memo.items()
+             if key[:3] == ("plan size", i, mu_F) and key[3:5] == (mu["groups"], mu["forces"])]    # (not μv's)
+    if drawn:
+        return max(d[0] for d in drawn), max(d[1] for d in drawn)
+    return fam.size(mu_F, i)
 
 
 def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Plan) -> bool:
@@ -1395,7 +1486,8 @@ def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Pla
 def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     """The Zhukovsky lever as large as its cell allows (LAYOUT.md: the largest scale that fits its
     zone), every other drawing as planned — the lever's μv grown in the plans' steps
-    (``LeverFamily``) while the composition fits — then a round μv (the series, GOST's 1.5, 7.5 ×
+    (``LeverFamily``) while the composition fits, up to ``LEVER_ROOM_MM`` across (the room left
+    is no other drawing's: the lever and then the hodographs take it last) — then a round μv (the series, GOST's 1.5, 7.5 ×
     10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
     5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
     off the lever to the ruler's 0.5 mm, so a larger lever reads P_зр closer to the exact."""
@@ -1413,12 +1505,12 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
     for _ in range(3):
         fitting = [(mu["lever"], on_round(mu["lever"]))]
-        for m, rnd in fam.choices(mu["lever"]):       # the smallest drawing first: stop at the first too large
+        for m, rnd in fam.choices(mu["lever"], LEVER_ROOM_MM):      # the smallest first: stop at the first too large
             if not fits(m):
                 break
             fitting.append((m, rnd))
         largest = fitting[-1][0]
-        rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
+        rounds = [r for r, _ in fam.choices(largest * 2.0, LEVER_ROOM_MM) if on_round(r) and r >= largest * (1 - 1e-9)]
         m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
         if m == p.mu["lever"]:
             break
@@ -1426,49 +1518,6 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         if _lettering_kept(dr, nat, trial, p) and fits(m):
             mu = trial
             break
-    return replace(p, mu=mu)
-
-
-def _grown_plans(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
-    """LAYOUT.md's rule for each force plan: its own μF from the standard series, the finest at
-    which it still fits its cell. A group whose forces are small beside the crank's (the coulisse's
-    outer dyad: R34 1740 N against R12 5140 N) is drawn at a finer μF than the family's — its largest
-    vector no longer than the largest plan's — while the composition still fits at every other
-    scale unchanged (II(4-5) at 20 N/mm instead of 40: R34 87 mm, not 43). The grown scales go into
-    ``mu`` as "plan <label>" and are printed under each plan and in the notes."""
-    from graphplan.sheets.compose import finer
-    fam = nat.families["forces"]
-    mu = dict(p.mu)
-    base = mu["forces"]
-    fp = dr.groups_fp(mu)
-    longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
-    largest = max(list(longest.values()) + [0.0])
-    if largest <= 0:
-        return p
-    leaves = _leaves(nat, mu)
-    for i, gp in enumerate(fp.groups):      # the groups as _grown_groups drew them
-        if GROUP + gp.label in mu:
-            w, h = dr.group_size(mu, i, mu[GROUP + gp.label], nat.families["groups"].caption)
-            leaves["groups"][i] = Leaf(leaves["groups"][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
-    for i, gp in enumerate(fp.groups):
-        e = longest[gp.label]
-        if e <= 0:
-            continue
-        best, s = None, finer(base)
-        while s is not None and e * base / s <= largest + 1e-9:
-            # the plan as drawn at s, not the family's model alone: a plan's lettering and small
-            # forces do not scale with it (SIEVE's I(0-1) at 2.5 N/mm came out 179 × 33 mm where
-            # the model said 93 × 39, and the A2 set planned on 2 sheets was drawn on 3)
-            w, h = (max(a, b) for a, b in zip(fam.size(s, i), dr.plan_size(mu, i, s, fam.caption)))
-            trial = {**leaves, "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name,
-                                                                       w + GROW_MARGIN, h + GROW_MARGIN),
-                                          *leaves["forces"][i + 1:]]}
-            if not _fits(nat, f, p, trial):
-                break
-            best, s = (s, trial), finer(s)
-        if best is not None:
-            mu[PLAN + gp.label] = best[0]
-            leaves = best[1]
     return replace(p, mu=mu)
 
 
