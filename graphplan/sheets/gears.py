@@ -557,10 +557,22 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
     tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
     format too small flows them over further sheets of the set in reading order (sheets/gearset.py),
-    the planetary pictures there grown while the set keeps its count of sheets."""
+    the planetary pictures there grown while the set keeps its count of sheets (``on_sheet``)."""
     lang = args.lang
     sol = solve(g)
-    mesh, vel, plan = construct_on(sol, f, args.precision, lang)
+    mesh, vel, pages = on_sheet(g, sol, f, args.precision, lang)
+    w = WORDS[lang]
+    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
+                   f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
+    """The gear sheet's constructions as the sheet (or the set) on ``f`` ends up drawing and reading
+    them, and its pages: (mesh, velocities, pages). What `graphplan gears --format F`, graphplan.gears()
+    and the web page print, so that the terminal's readings are the sheet's tables' (an A3 set grows
+    its planetary pictures after composing: ``construct_on`` alone gave the first, smaller pictures —
+    u1H read off h = 33 mm where the set's sheet drew h = 69 mm)."""
+    mesh, vel, plan = construct_on(sol, f, precision, lang)
     drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
     lines = [x for part in parts for x in part]
     pages = None
@@ -570,17 +582,15 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
-        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
+        more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
         lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
         pages = _set(drawings, tables, parts, f, more, lang, lam)
         if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
         if vel is not None:
-            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages, lam)
-    w = WORDS[lang]
-    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
-                   f"{g.title_in(lang)} — {w['subtitle']}")
+            vel, pages = _set_grown(g, sol, mesh, more, vel, f, precision, lang, pages, lam)
+    return mesh, vel, pages
 
 
 def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
@@ -658,7 +668,7 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
     ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
     meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
-    ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
+    (velocities, pages): ``vel`` and ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
     takes fewer sheets)."""
     def drawn(k: float, va_share: float, share: float):
         try:
@@ -706,7 +716,7 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     """A set's planetary pictures at their scheme's scale with the plan of angular velocities filling
     the sheet's width at the pictures' height (``filled``; review 12 mark 11: the A3 set's ωH was a
     6-mm segment on a sheet two thirds empty), where that keeps the set's count of sheets and reads
-    u1H better (its bound smaller); the pages of ``chosen`` (velocities, pages) else."""
+    u1H better (its bound smaller): (velocities, pages), ``chosen`` else."""
     from graphplan.sheets.gearset import later_keep
     v0, pages = chosen
     x0, y0, x1, y1 = field_of(f)
@@ -724,9 +734,9 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
                     tried.add(id(d))
                     out = kept(*d)
                     if out is not None:
-                        return out
+                        return d[0], out
                 break                     # (a shorter vA only makes it taller)
-    return pages
+    return v0, pages
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
