@@ -151,9 +151,11 @@ def test_the_terminal_reads_the_train_off_the_set_as_grown(name, fmt, capsys):
     plan = next(p.record for page in s.pages for p in page.placed if p.name == "planetary")
     h = next(q for q in plan.items if q.step == "h")
     assert abs(abs(h.points[0][1] - h.points[1][1]) - g["h_mm"]) < 1e-6
+    hH = g["h_carrier_mm"] or g["h_mm"]                   # the carrier's own pole where it has one
     for k, seg in g["segments_mm"].items():
-        assert g["omega_rad_s"][k] == pytest.approx(seg * g["mu_v_mm"] / (g["mu_l_m_mm"] * g["h_mm"]), abs=1e-9)
-    assert t["ratio"]["graphical"] == pytest.approx(g["segments_mm"]["1"] / g["segments_mm"]["H"])
+        d = hH if k == "H" else g["h_mm"]
+        assert g["omega_rad_s"][k] == pytest.approx(seg * g["mu_v_mm"] / (g["mu_l_m_mm"] * d), abs=1e-9)
+    assert t["ratio"]["graphical"] == pytest.approx(g["segments_mm"]["1"] / g["h_mm"] / (g["segments_mm"]["H"] / hH))
     table = next(p.record for page in s.pages for p in page.placed if p.name == "train")
     cells = [q.text for q in table.items if getattr(q, "text", None)]
     lang = s.lang

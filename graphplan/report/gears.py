@@ -119,6 +119,7 @@ def train_json(tr, vel) -> dict[str, Any]:
         doc["graphical"] = {
             "mu_l_m_mm": vel.mu_l, "mu_v_mm": vel.mu_v, "h_mm": vel.h, "precision_mm": vel.precision,
             "va_mm": vel.va_mm, "heights_mm": dict(vel.heights), "segments_mm": dict(vel.segments),
+            "h_carrier_mm": vel.h_carrier,
             "omega_rad_s": dict(vel.omega),
             "error_pct": {k: err(vel.omega[k], tr.omega[k]) for k in tr.omega}}
     return doc
@@ -151,6 +152,7 @@ WORDS = {
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
            "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
+           "h_H": ", водило — свій полюс, hH = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
            "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
@@ -170,6 +172,7 @@ WORDS = {
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
            "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
+           "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
            "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
@@ -334,7 +337,8 @@ def train_lines(d: dict, lang: str) -> list[str]:
                                   u=ok(c["no_undercut"])))
     g = d.get("graphical")
     if g:
-        lines.append(w["vel"].format(l=n(g["mu_l_m_mm"]), v=n(g["mu_v_mm"]), h=n(g["h_mm"])))
+        lines.append(w["vel"].format(l=n(g["mu_l_m_mm"]), v=n(g["mu_v_mm"]), h=n(g["h_mm"]))
+                     + (w["h_H"].format(h=n(g["h_carrier_mm"])) if g.get("h_carrier_mm") else ""))
     rows = [[w["member"], f"ω {w['exact']}", f"ω {w['graph']}", "δ, %"]]
     for k in ("1", "2", "3", "H"):
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"

@@ -11,8 +11,8 @@ import math
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, lambda_mu,
-                                     most_teeth, sliding_diagram)
+from graphplan.graphic.gears import (MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
+                                     lambda_mu, most_teeth, sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
@@ -32,7 +32,7 @@ WORDS = {
            "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "абсциса ρ уздовж N_{{1}}N_{{2}}, М {scale} (μ_l = {mul} м/мм); B_{{1}}B_{{2}} робоча (потовщено); "
                        "μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
-           "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
+           "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм", "plan_h_H": ", h_H = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
@@ -60,6 +60,11 @@ WORDS = {
            "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
                     "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
+           "own_pole": "Відрізок ω_H на плані з полюсом p_ω був би {s} мм (ω_H = ω_1/{u}): водило має свій полюс p'_ω "
+                       "на продовженні h, h_H = {hH} мм, його відрізок {sH} мм; ω_H = відрізок·μ'_ω, "
+                       "u_{{1H}} = (відрізок 1/h)/(відрізок H/h_H)",
+           "short": "Відрізок ω_H на плані лише {s} мм (ω_H = ω_1/{u}): півподілки лінійки — {e} % від нього; "
+                    "звідси межа похибки u_{{1H}}",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
@@ -73,7 +78,7 @@ WORDS = {
            "sliding": "Specific sliding λ_1, λ_2", "sliding2": "abscissa ρ along N_{{1}}N_{{2}}, scale {scale} (μ_l = {mul} m/mm); B_{{1}}B_{{2}} working "
                        "(heavy); μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
-           "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
+           "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm", "plan_h_H": ", h_H = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
@@ -101,6 +106,11 @@ WORDS = {
            "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
                     "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
+           "own_pole": "The segment of ω_H off the pole p_ω would be {s} mm (ω_H = ω_1/{u}): the carrier has a pole "
+                       "p'_ω of its own on h produced, h_H = {hH} mm, its segment {sH} mm; ω_H = segment·μ'_ω, "
+                       "u_{{1H}} = (segment 1/h)/(segment H/h_H)",
+           "short": "The segment of ω_H on the plan is only {s} mm (ω_H = ω_1/{u}): the ruler's half division is {e} % "
+                    "of it; hence the bound of u_{{1H}}",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
@@ -265,6 +275,14 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
+        if vel.h_carrier:                 # the carrier's own pole (review 13 #9)
+            sH = abs(vel.segments["H"])
+            out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),
+                                            hH=_n(vel.h_carrier, lang), sH=_n(sH, lang)))
+        elif vel.precision > 0 and 0 < abs(vel.segments["H"]) < SEGMENT_MIN:
+            sH = abs(vel.segments["H"])
+            out.append(w["short"].format(s=_n(sH, lang), u=_n(t["ratio"]["exact"], lang),
+                                         e=_n(100 * vel.precision / 2 / sH, lang, 2)))
         if t["candidates"]:
             out.append(w["synth"].format(n=t["candidates_passing"]))
             pair = nearer_candidate(t)
@@ -340,7 +358,8 @@ def _plan(vel, lang: str) -> Record:
     """The planetary pictures captioned: the name, what they are, their scales μl, μv and h."""
     w = WORDS[lang]
     return captioned(vel.record, w["planetary"], w["planetary2"] + "; " + w["plan_scales"].format(
-        l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
+        l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)) + (
+        w["plan_h_H"].format(h=_n(vel.h_carrier, lang)) if vel.h_carrier else ""))
 
 
 SHARES = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
@@ -387,6 +406,14 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
                 memo[key] = None
         return memo[key]
 
+    def at_h(hH: float, k: float = 1.0):  # the pictures at k × the last S with the carrier's own pole h_H
+        try:
+            c = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=k * S,
+                                h_carrier=hH)
+        except GraphplanError:
+            return None
+        return (c, _plan(c, lang)) if c.h >= h_min else None
+
     def fits(d) -> bool:
         w_, h_ = _size(d[1])
         return w_ <= room_w and h_ <= room_h and d[0].h >= h_min
@@ -410,6 +437,39 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
         else:
             break
         S, d, got = target, e, e
+    return carried(got, at_h, room_w, room_h) if got is not None else None
+
+
+def carried(got, at_h, room_w: float, room_h: float):
+    """The pictures ``got`` (velocities, captioned record) with the carrier's ray from a pole of its own
+    (``construct_train``'s ``h_carrier``) where its segment on the plan is shorter than
+    ``SEGMENT_MIN`` — review 13 #9: ωH read off 3,8 mm, +5,54 %; u = 26…40 leave it 5–9 mm on A1 and
+    2,5–8 mm on A3 whatever the sun's segment, the width taken —: h_H the one that makes it
+    ``SEGMENT_MIN`` (at most 200 mm), or the longest the zone's spare height ``room_h`` holds, when
+    that is at least 1,5·h — else the plan's h halved of the longest h_H the zone holds (the sun's
+    segment shorter, still the longest) — either taken where the carrier's segment is 1,5 times as
+    long and u1H's bound no wider; ``got`` else (the notes then say the segment's length).
+    ``at_h(h_H, k)``: the pictures drawn with it at k times the sun's segment."""
+    v, rec = got
+    if abs(v.segments["H"]) >= SEGMENT_MIN or not v.segments["H"]:
+        return got
+    slope = abs(v.segments["H"]) / v.h                       # (about: the segment as read)
+    _, h_ = _size(rec)
+    tallest = v.h + room_h - h_ - 2.0                        # h_H the zone's spare height holds
+    want = min(200.0, math.ceil(SEGMENT_MIN / slope), tallest)
+    tries = [(1.0, want)]
+    if want < 1.5 * v.h:                  # too little spare height: the plan's h (and the sun's segment)
+        tries.append((0.5 * tallest / v.h, tallest))         # halved of h_H — the carrier's the longest
+    for k, hH in tries:
+        for _ in range(6):                # the labels may push the pictures out: a little shorter
+            if hH < 1.5 * k * v.h or k < 0.4:
+                break
+            e = at_h(hH, k)
+            if e is not None and _size(e[1])[0] <= room_w and _size(e[1])[1] <= room_h:
+                if e[0].ratio_bound <= v.ratio_bound and abs(e[0].segments["H"]) >= 1.5 * abs(v.segments["H"]):
+                    return e      # (u1H no worse bounded: s1 shorter and h, h_H laid off weigh in too)
+                break
+            hH = k * v.h + 0.8 * (hH - k * v.h)
     return got
 
 
@@ -589,7 +649,14 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
         if vel is not None:
-            vel, pages = _set_grown(g, sol, mesh, more, vel, f, precision, lang, pages, lam)
+            first = pages
+            vel0 = vel
+            vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
+            short = abs(vel.segments["H"])
+            if precision > 0 and 0 < short < SEGMENT_MIN / 2:      # one more sheet where it reads ωH
+                v1, p1 = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam, extra=1)
+                if abs(v1.segments["H"]) >= max(2 * short, SEGMENT_MIN / 2):
+                    vel, pages = v1, p1
     return mesh, vel, pages
 
 
@@ -664,12 +731,14 @@ def sliding_leaf(rec: Record, lang: str) -> Record:
                                                              scale=drawing_scale(mu, lang)))
 
 
-def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None):
+def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None,
+               extra: int = 0):
     """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
     ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
     meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
     (velocities, pages): ``vel`` and ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
-    takes fewer sheets)."""
+    takes fewer sheets). ``extra``: sheets the set may take beyond its count (review 13 #9: a set whose
+    plan reads ωH off 2,5–4 mm takes one more sheet where the plan grows to read it off twice that)."""
     def drawn(k: float, va_share: float, share: float):
         try:
             v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
@@ -684,7 +753,7 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     def kept(v, p):                       # the set with these pictures, when it keeps the count of sheets
         drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
         got = _set(drawings, tables, parts, f, more, lang, lam)
-        return got if got is not None and len(got) <= len(pages) else None
+        return got if got is not None and len(got) <= len(pages) + extra else None
 
     # the largest size (halving SET_GROW: a larger picture never takes fewer sheets) whose narrowest
     # variant keeps the count, then at it the widest variant that does — the ring's scale the one that
