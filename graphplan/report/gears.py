@@ -148,14 +148,14 @@ WORDS = {
            "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
            "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
-           "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
+           "zt": "числа зубців z = {z}; u1H = {u}{r}, графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
            "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
            "h_H": ", водило — свій полюс, hH = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
-           "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
+           "wanted": " (потрібно {r})", "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
@@ -168,14 +168,14 @@ WORDS = {
            "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
            "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",
-           "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
+           "zt": "teeth z = {z}; u1H = {u}{r}, graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
            "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
            "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
-           "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
+           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
 }
 
 
@@ -329,7 +329,8 @@ def train_lines(d: dict, lang: str) -> list[str]:
     ue, ug = bare(ue), bare(ug) if ug else "—"
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
-             w["zt"].format(z=", ".join(map(str, d["z"])), u=ue, r=n(d["ratio_required"]),
+             w["zt"].format(z=", ".join(map(str, d["z"])), u=ue,
+                            r=w["wanted"].format(r=n(d["ratio_required"])) if d["ratio_required"] is not None else "",
                             g=ug, d=delta_text(ud, lang), b=n(r["bound"], 2),
                             bp=_share(r["bound"], r["exact"], lang), out=w["out"] if r["outside_bound"] else "")]
     c = d["conditions"]
