@@ -92,7 +92,7 @@ def test_a_short_carrier_segment_is_said_with_its_share_of_the_ruler():
     _, sol = _train(40.0, "uk")
     mesh, vel, _ = construct_on(sol, form("A1"), 0.5, "uk")
     s = abs(vel.segments["H"])
-    assert vel.h_carrier is None and 0 < s < 20.0
+    assert vel.h_carrier is None and 0 < s < 10.0
     notes = " ".join(note_parts(gears_json(sol, mesh, vel, ""), "uk", mesh, vel)[-1])
     said = re.search(r"Відрізок ω_H на плані лише ([\d,]+) мм \(ω_H = ω_1/([\d,]+)\): півподілки лінійки — "
                      r"([\d,]+) % від нього", notes)

@@ -48,7 +48,7 @@ WORDS = {
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
-           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} об/хв (ω_1 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
            "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
@@ -94,7 +94,7 @@ WORDS = {
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
-           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
            "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
@@ -279,7 +279,7 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
             sH = abs(vel.segments["H"])
             out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),
                                             hH=_n(vel.h_carrier, lang), sH=_n(sH, lang)))
-        elif vel.precision > 0 and 0 < abs(vel.segments["H"]) < SEGMENT_MIN:
+        elif vel.precision > 0 and 0 < abs(vel.segments["H"]) < SEGMENT_MIN / 2:   # the half division past 2,5 %
             sH = abs(vel.segments["H"])
             out.append(w["short"].format(s=_n(sH, lang), u=_n(t["ratio"]["exact"], lang),
                                          e=_n(100 * vel.precision / 2 / sH, lang, 2)))
