@@ -214,6 +214,35 @@ class Mesh:
     lam: Record
     points: dict[str, complex] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    sa_bound: tuple[float, float] = (0.0, 0.0)      # m: the bound of each sa read, from the precision
+
+
+def _inv_at(R: float, rho: float) -> float:
+    """inv α at the radius ρ of the involute of the base circle R: tg α − α, cos α = R/ρ."""
+    a = math.acos(min(1.0, R / rho))
+    return math.tan(a) - a
+
+
+def tip_chord(R: float, r: float, ra: float, chord: float) -> float:
+    """The chord across a tooth's tip as the draftsman gets it: the flanks the involutes of the base
+    circle R through the ends of the chord ``chord`` laid off on the pitch circle r, cut by the tip
+    circle ra — 2·ra·sin(asin(chord/2r) + inv α(r) − inv α(ra)) (the tooth's half angle at the tip)."""
+    return 2 * ra * math.sin(math.asin(min(1.0, chord / (2 * r))) + _inv_at(R, r) - _inv_at(R, ra))
+
+
+def sa_bound(sol: PairSolution, k: int, mu: float, precision: float) -> float:
+    """The bound of |sa(graphical) − sa| of wheel k (m) from the drafting precision p: rb, r, ra and
+    the chord s laid off and the tip's chord read, each within p/2 (drawing mm), through
+    ``tip_chord`` — its worst corner of the four laid-off lengths at ± p/2 plus p/2 read (a thin tip
+    of a few teeth moves by a fraction of a millimetre as rb or ra does: review 45's 11-tooth pinion
+    with x = 0,6 reads sa +9,8 % off an 8,2-mm chord)."""
+    h = precision / 2
+    R, r, ra = sol.rb[k] / mu, sol.r[k] / mu, sol.ra[k] / mu
+    chord = 2 * r * math.sin(sol.s[k] / (2 * sol.r[k]))
+    exact = tip_chord(R, r, ra, chord)
+    worst = max(abs(tip_chord(R + a, r + b, ra + c, chord + d) - exact)
+                for a, b, c, d in itertools.product((-h, h), repeat=4))
+    return (worst + h) * mu
 
 
 def _extent(sol: PairSolution, md: float, teeth: int = TEETH) -> tuple[float, float, float]:
@@ -541,7 +570,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     read.update(s1=s_read[0], s2=s_read[1], sa1=sa_read[0], sa2=sa_read[1])
     mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
-                {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P})
+                {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P},
+                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)))
     if 2.25 * md < DEPTH_MM[0]:
         mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",

@@ -79,7 +79,7 @@ def pair_json(sol, mesh) -> dict[str, Any]:
         doc["graphical"] = {
             "mu_l_m_mm": mesh.mu_l, "module_mm": mesh.module_mm, "precision_mm": mesh.precision,
             "drawn_mm": dict(mesh.drawn), "read_mm": dict(mesh.read),
-            "rw_m": list(mesh.rw), "s_m": list(mesh.s), "sa_m": list(mesh.sa),
+            "rw_m": list(mesh.rw), "s_m": list(mesh.s), "sa_m": list(mesh.sa), "sa_bound_m": list(mesh.sa_bound),
             "error_pct": {"rw": [err(mesh.rw[k], sol.rw[k]) for k in (0, 1)],
                           "s": [err(mesh.s[k], sol.s[k]) for k in (0, 1)],
                           "sa": [err(mesh.sa[k], sol.sa[k]) for k in (0, 1)]}}

@@ -69,6 +69,8 @@ WORDS = {
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
                      "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
+           "tip": "; s_{{a{k}}} з хорди {c} мм: межа похибки від точності креслення ±{b} % {v}",
+           "tip_in": "(у межах)", "tip_out": "(поза межею)",
            "judged": "Умови таблиці 2 — за формулами; ε_α з креслення {g} < 1,2 {v}",
            "judged_in": "у межах похибки ±{b}", "judged_out": "поза межею похибки ±{b}",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
@@ -115,6 +117,8 @@ WORDS = {
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
+           "tip": "; s_{{a{k}}} off a {c}-mm chord: bound from the drafting precision ±{b} % {v}",
+           "tip_in": "(within)", "tip_out": "(outside)",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
            "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
@@ -157,7 +161,8 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e)] if gr else [te, "", ""]     # one count of decimals down the column
+            past = key == "sa" and gr and abs(gr[k] - p["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12
+            row += [te, tg, _pct(e, "!" if past else "")] if gr else [te, "", ""]   # one count of decimals down the column
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
@@ -295,10 +300,32 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out += [w["warn"] + x for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
-    last.append(w["mark"])
-    if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
+    last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
+    g = doc.get("pair", {}).get("graphical")
+    tip_out = bool(g) and any(abs(g["sa_m"][k] - doc["pair"]["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12 for k in (0, 1))
+    if tip_out or any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio"))
+                      if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def tips(doc: dict, lang: str, mesh) -> list[str]:
+    """The starred sa of Table 1 explained in the marks' legend by its bound from the drafting
+    precision (``graphic.gears.sa_bound``: a thin tip of few teeth — review 45's 11-tooth pinion with
+    x = 0,6 read sa +9,76 % within ±18 %), each "; s_a1 …" (none where no sa is starred)."""
+    w = WORDS[lang]
+    p = doc.get("pair")
+    g = p.get("graphical") if p else None
+    out = []
+    if not g or mesh is None or mesh.precision <= 0:
+        return out
+    for k in (0, 1):
+        e = agreeing(p["sa_m"][k] * 1000, g["sa_m"][k] * 1000, table_decimals(g), lang)[2]   # Table 1's δ
+        if e is not None and abs(e) > LAB_LIMIT:
+            b = g["sa_bound_m"][k]
+            out.append(w["tip"].format(k=k + 1, c=_n(mesh.read[f"sa{k + 1}"], lang), b=_n(100 * b / p["sa_m"][k], lang, 2),
+                                       v=w["tip_in" if abs(g["sa_m"][k] - p["sa_m"][k]) <= b + 1e-12 else "tip_out"]))
+    return out
 
 
 def data_lines(doc: dict, lang: str) -> list[str]:
