@@ -895,7 +895,7 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     _mu_omega_label(rec, pl, pole, left, right, mu_omega_text(mu_v / (mu * h), lang))
     rec.scales.update(mu_l=mu, mu_v=mu_v, h=h, mu_omega=mu_v / (mu * h))
     if hH:
-        _mu_omega_label(rec, pl, poles["H"] + 5.0, xd - 2.0, right,       # (clear of p'_ω's letter)
+        _mu_omega_label(rec, pl, poles["H"] + 10.0, xd - 2.0, right,      # (clear of p'_ω's letter)
                         MU_OMEGA_H[lang].format(v=num(mu_v / (mu * hH), lang, 4)))
         rec.scales.update(h_H=hH, mu_omega_H=mu_v / (mu * hH))
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
