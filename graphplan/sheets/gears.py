@@ -450,10 +450,14 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
     if d is None:
         return None
     got = d if fits(d) else None
-    for _ in range(2):                    # from the pictures at S, the S that fills the zone; once more from it
+    for _ in range(3):                    # from the pictures at S, the S that fills the zone; again from it
         w_, h_ = _size(d[1])
         tall = d[0].heights["A"] / d[0].va_mm     # h per mm of the sun's segment
-        target = min(S + min((room_w - w_) / span, (room_h - h_) / tall), 150.0 / tall)   # h ≤ 150 mm
+        # the plan grows from under the scheme: its right end, not the pictures', meets the zone's
+        line = next(q for q in d[0].record.items if q.step == "plan of ω")
+        reach = max(q[0] for q in line.points) - d[1].bounds()[0]
+        wide = (room_w - max(w_, reach)) / span + (max(w_, reach) - reach) / span
+        target = min(S + min(wide, (room_h - h_) / tall), 150.0 / tall)   # h ≤ 150 mm
         if abs(target - S) < 0.5:
             break
         for _ in range(5):                # labels may push the pictures out: a little less
@@ -682,7 +686,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             short = abs(vel.segments["H"])
             if precision > 0 and 0 < short < SEGMENT_MIN / 2:      # one more sheet where it reads ωH
                 v1, p1 = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam, extra=1)
-                if abs(v1.segments["H"]) >= max(2 * short, SEGMENT_MIN / 2):
+                if abs(v1.segments["H"]) >= 2 * short:                   # (it doubles: review 13 #9's 3,8 mm)
                     vel, pages = v1, p1
     return mesh, vel, pages
 
