@@ -320,10 +320,10 @@ def gears(scene, precision: float = 0.5, lang: str = "uk", fmt: str = "A1") -> G
     from graphplan.exact.gears import solve
     from graphplan.model.gears import load
     from graphplan.sheets.form import form
-    from graphplan.sheets.gears import construct_on
+    from graphplan.sheets.gears import on_sheet
     g = load(scene)
     sol = solve(g)
-    mesh, vel, _ = construct_on(sol, form(fmt), precision, lang)     # that sheet's readings
+    mesh, vel, _ = on_sheet(g, sol, form(fmt), precision, lang)     # that sheet's (set's) readings
     return Gears((g, sol, mesh, vel), lang)
 
 

@@ -103,6 +103,7 @@ THINNED = {
     "test_the_set_draws_the_meshing_at_the_largest_band_scale_that_fits_its_first_sheet": 1,
     "test_a_set_carries_form_1_then_form_2a": 1,
     "test_the_terminal_reads_the_sheet_of_its_format": 1,
+    "test_the_terminal_reads_the_train_off_the_set_as_grown": 1,      # the A3 set is the fixture's (cached)
     "test_the_meshing_is_the_largest_drawing_of_the_a1_sheet": 3,
     "test_the_gear_sheet_is_composed_and_clean": 1,
     "test_the_lever_is_as_large_as_its_cell_allows": 1,

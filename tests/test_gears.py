@@ -133,7 +133,7 @@ def test_the_contracts_example_pair():
 def test_a_shift_that_points_the_tooth_is_refused_in_one_line(tmp_path):
     path = tmp_path / "g.toml"
     path.write_text("[gears]\nz = [10, 40]\nmodule = 0.004\nshifts = [1.6, 0.0]\n", encoding="utf-8")
-    code, out, err = run(["gears", str(path)])
+    code, out, err = run(["gears", str(path), "--lang", "en"])     # (a scene without lang speaks Ukrainian)
     check_run(["gears"], code, out, err)
     assert code == 2 and "gears.shifts[0]" in err and "points the tooth" in err
 
@@ -581,7 +581,7 @@ def test_gears_json_and_tables():
 def test_bad_gear_scenes_are_one_line_naming_the_key(tmp_path, text, words):
     path = tmp_path / "g.toml"
     path.write_text(text, encoding="utf-8")
-    code, out, err = run(["gears", str(path)])
+    code, out, err = run(["gears", str(path), "--lang", "en"])     # (a scene without lang speaks Ukrainian)
     check_run(["gears"], code, out, err)
     assert code == 2 and out == ""
     for w in words + [str(path)]:

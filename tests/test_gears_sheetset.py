@@ -132,6 +132,40 @@ def test_the_terminal_reads_the_sheet_of_its_format(fmt, capsys):
     assert any(graphical in t for t in texts), (graphical, sorted(t for t in texts if t[:1].isdigit())[:40])
 
 
+@pytest.mark.parametrize("name, fmt", [("gears", "A3"), ("gears_b", "A2")])
+def test_the_terminal_reads_the_train_off_the_set_as_grown(name, fmt, capsys):
+    """`graphplan gears --format A2/A3` prints the set's own readings of the train (issue 32): the
+    set grows its planetary pictures after composing, and the terminal printed those of the first,
+    smaller pictures (examples/gears_b.toml A2: h 25 mm, u1H 11,53 where the set drew h 67 mm and
+    read 11,75). The JSON's pole distance is the drawn plan's — h measured on the record, the pole's
+    foot to the pole —, every ω is its segment·μv/(μl·h) and u1H the sun's segment over the carrier's
+    (the plan's rule); Table 3 of the set prints the JSON's u1H and ω in its figures."""
+    import json
+
+    from graphplan.cli.main import main
+    from graphplan.report.gears import agreeing, bare, sig_decimals
+    assert main(["gears", str(ROOT / "examples" / f"{name}.toml"), "--format", fmt, "--json"]) == 0
+    t = json.loads(capsys.readouterr().out)["planetary"]
+    g = t["graphical"]
+    s = sheet(name, fmt)
+    plan = next(p.record for page in s.pages for p in page.placed if p.name == "planetary")
+    h = next(q for q in plan.items if q.step == "h")
+    assert abs(abs(h.points[0][1] - h.points[1][1]) - g["h_mm"]) < 1e-6
+    hH = g["h_carrier_mm"] or g["h_mm"]                   # the carrier's own pole where it has one
+    for k, seg in g["segments_mm"].items():
+        d = hH if k == "H" else g["h_mm"]
+        assert g["omega_rad_s"][k] == pytest.approx(seg * g["mu_v_mm"] / (g["mu_l_m_mm"] * d), abs=1e-9)
+    assert t["ratio"]["graphical"] == pytest.approx(g["segments_mm"]["1"] / g["h_mm"] / (g["segments_mm"]["H"] / hH))
+    table = next(p.record for page in s.pages for p in page.placed if p.name == "train")
+    cells = [q.text for q in table.items if getattr(q, "text", None)]
+    lang = s.lang
+    u = t["ratio"]
+    assert bare(agreeing(u["exact"], u["graphical"], sig_decimals(u["exact"]), lang)[1]) in cells
+    for k in ("1", "2", "H"):
+        e = t["omega_rad_s"][k]
+        assert bare(agreeing(e, g["omega_rad_s"][k], sig_decimals(e), lang)[1]) in cells, (k, cells)
+
+
 def test_table_1_prints_the_pairs_constants_as_the_terminal_does(capsys):
     """αw, aw, a, y, Δy, p and pb in Table 1 are the terminal's figures (rev7 #14, rev8 #12: the sheet
     printed y = 0,72366 and Δy = 0,076345 where `graphplan gears` prints 0,7237 and 0,07634)."""

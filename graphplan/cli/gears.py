@@ -40,11 +40,11 @@ def cmd_gears(args: argparse.Namespace) -> int:
     from graphplan.exact.gears import solve
     from graphplan.model.gears import load
     from graphplan.sheets.form import form
-    from graphplan.sheets.gears import construct_on
+    from graphplan.sheets.gears import on_sheet
     gears = load(args.scene)
     lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
     sol = solve(gears)
-    mesh, vel, _ = construct_on(sol, form(args.format), args.precision, lang)    # that sheet's readings
+    mesh, vel, _ = on_sheet(gears, sol, form(args.format), args.precision, lang)    # that sheet's (set's) readings
     if args.svg:
         write_svg(mesh, vel, args.svg)
     doc = gears_json(sol, mesh, vel, args.scene)

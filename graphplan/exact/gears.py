@@ -123,14 +123,27 @@ class PairSolution:
                             float(abs(l2)) if math.isfinite(l2) else None]}
 
 
+def _error(en: str, uk: str) -> GraphplanError:
+    """A gear scene's geometry error in both languages (``solve`` gives it the scene's language; issue
+    32 item 8: a Ukrainian scene's refusal was English)."""
+    return GraphplanError(en, said={"en": en, "uk": uk})
+
+
+def _uk(v: float, fmt: str = "g") -> str:
+    """A number as the Ukrainian text writes it (a decimal comma, a true minus)."""
+    return format(v, fmt).replace(".", ",").replace("-", "−")
+
+
 def pair_geometry(pair: Pair, x: tuple[float, float]) -> PairSolution:
     """The closed forms of the module docstring for the shifts ``x``."""
     (z1, z2), m, al = pair.z, pair.module, pair.alpha
     ha, c = pair.addendum, pair.clearance
     target = 2 * (x[0] + x[1]) * math.tan(al) / (z1 + z2) + float(inv(al))
     if not target > 1e-9:
-        raise GraphplanError(f"gears.shifts: x1 + x2 = {x[0] + x[1]:g} is too negative for z1 + z2 = {z1 + z2}: "
-                             "inv αw ≤ 0, the wheels cannot mesh")
+        raise _error(f"gears.shifts: x1 + x2 = {x[0] + x[1]:g} is too negative for z1 + z2 = {z1 + z2}: "
+                     "inv αw ≤ 0, the wheels cannot mesh",
+                     f"gears.shifts: x1 + x2 = {_uk(x[0] + x[1])} надто від'ємне для z1 + z2 = {z1 + z2}: "
+                     "inv αw ≤ 0, колеса не можуть зачепитися")
     aw_ = float(inv_inverse(target))
     a = m * (z1 + z2) / 2
     aw = a * math.cos(al) / math.cos(aw_)
@@ -143,8 +156,10 @@ def pair_geometry(pair: Pair, x: tuple[float, float]) -> PairSolution:
     ra = tuple(m * (z / 2 + ha + xk - dy) for z, xk in zip((z1, z2), x))
     for k in (0, 1):
         if ra[k] <= rb[k]:
-            raise GraphplanError(f"gears.shifts[{k}]: the tip circle of wheel {k + 1} (ra = {ra[k]:.6g} m) lies inside "
-                                 f"its base circle (rb = {rb[k]:.6g} m): no involute to mesh with")
+            raise _error(f"gears.shifts[{k}]: the tip circle of wheel {k + 1} (ra = {ra[k]:.6g} m) lies inside "
+                         f"its base circle (rb = {rb[k]:.6g} m): no involute to mesh with",
+                         f"gears.shifts[{k}]: коло вершин колеса {k + 1} (ra = {_uk(ra[k], '.6g')} м) лежить усередині "
+                         f"його основного кола (rb = {_uk(rb[k], '.6g')} м): немає евольвенти для зачеплення")
     s = tuple(m * (math.pi / 2 + 2 * xk * math.tan(al)) for xk in x)
     sa = []
     for k in (0, 1):
@@ -152,8 +167,10 @@ def pair_geometry(pair: Pair, x: tuple[float, float]) -> PairSolution:
         sa.append(2 * ra[k] * (s[k] / (2 * r[k]) + float(inv(al)) - float(inv(aa))))
     for k in (0, 1):
         if sa[k] <= 0:
-            raise GraphplanError(f"gears.shifts[{k}]: x{k + 1} = {x[k]:g} points the tooth of wheel {k + 1} below its "
-                                 f"tip circle (sa = {sa[k] * 1000:.3g} mm ≤ 0)")
+            raise _error(f"gears.shifts[{k}]: x{k + 1} = {x[k]:g} points the tooth of wheel {k + 1} below its "
+                         f"tip circle (sa = {sa[k] * 1000:.3g} mm ≤ 0)",
+                         f"gears.shifts[{k}]: x{k + 1} = {_uk(x[k])} загострює зуб колеса {k + 1} нижче його кола "
+                         f"вершин (sa = {_uk(sa[k] * 1000, '.3g')} мм ≤ 0)")
     p = math.pi * m
     pb = p * math.cos(al)
     g = aw * math.sin(aw_)
@@ -215,6 +232,7 @@ def auto_shifts(pair: Pair) -> PairSolution:
     best, key_best = None, None
     failing: dict[str, int] = {}
     names = ("no undercut", "sa ≥ 0.25m", "εα ≥ 1.2", "no interference")
+    names_uk = dict(zip(names, ("без підрізання", "sa ≥ 0,25m", "εα ≥ 1,2", "без заклинювання")))
     tried = passing = 0
     for x1, x2 in product(grid, grid):
         try:
@@ -235,8 +253,11 @@ def auto_shifts(pair: Pair) -> PairSolution:
             best, key_best = sol, key
     if best is None:
         blocking = sorted(failing, key=lambda k: -failing[k]) or list(names)
-        raise GraphplanError(f'gears.shifts: "auto" found no shifts x1, x2 from {lo:g} to {hi:g} (step {step:g}) '
-                             f"for z = [{pair.z[0]}, {pair.z[1]}]: the zone is closed by {' and '.join(blocking)}")
+        raise _error(f'gears.shifts: "auto" found no shifts x1, x2 from {lo:g} to {hi:g} (step {step:g}) '
+                     f"for z = [{pair.z[0]}, {pair.z[1]}]: the zone is closed by {' and '.join(blocking)}",
+                     f'gears.shifts: "auto" не знайшло зміщень x1, x2 від {_uk(lo)} до {_uk(hi)} (крок {_uk(step)}) '
+                     f"для z = [{pair.z[0]}, {pair.z[1]}]: зону закривають умови "
+                     f"{' і '.join(names_uk[b] for b in blocking)}")
     q = best.quality()
     best.auto = {"rule": AUTO_RULE, "rule_uk": AUTO_RULE_UK, "grid": [lo, hi, step], "tried": tried, "passing": passing,
                  "sliding_max": q["sliding_max"]}
@@ -375,14 +396,23 @@ def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> t
     if not found:
         if blocked["ratio"] == 0:
             why = f"no teeth without undercut reach u1H = {u:g} within ±4 %"
+            why_uk = f"жоден набір зубців без підрізання не дає u1H = {_uk(u)} у межах ±4 %"
         elif blocked["neighbourhood"] == 0:
             why = f"the neighbourhood condition fails for K = {K} planets on every set within ±4 % of u1H = {u:g}"
+            why_uk = f"умова сусідства для K = {K} сателітів не виконується на жодному наборі в межах ±4 % від " \
+                     f"u1H = {_uk(u)}"
         elif blocked["assembly"] == 0:
             why = f"the assembly condition fails for K = {K} planets on every set within ±4 % of u1H = {u:g}"
+            why_uk = f"умова складання для K = {K} сателітів не виконується на жодному наборі в межах ±4 % від " \
+                     f"u1H = {_uk(u)}"
         else:
             why = (f"no set within ±4 % of u1H = {u:g} meets both the assembly and the neighbourhood conditions "
                    f"for K = {K} planets")
-        raise GraphplanError(f"planetary.ratio: type {kind}: {why} (teeth tried up to {Z_SEARCH if kind == 'A' else 120})")
+            why_uk = (f"жоден набір у межах ±4 % від u1H = {_uk(u)} не задовольняє водночас умов складання й "
+                      f"сусідства для K = {K} сателітів")
+        top = Z_SEARCH if kind == "A" else 120
+        raise _error(f"planetary.ratio: type {kind}: {why} (teeth tried up to {top})",
+                     f"planetary.ratio: тип {kind}: {why_uk} (перебрано зубці до {top})")
     cands = [{"z": list(z), "diameter_modules": d, "ratio": ratio_of(kind, z),
               "error_pct": 100.0 * (ratio_of(kind, z) - u) / u} for d, _, _, z in found[:keep]]
     return found[0][3], cands, len(found)
@@ -401,7 +431,9 @@ def solve_train(train: Train) -> TrainSolution:
         if not cond["coaxial"]:
             want = (f"z3 = z1 + 2·z2 = {z[0] + 2 * z[1]}, got {z[2]}" if train.kind == "A" else
                     f"z1 + z2 = z3 − z2' needs z3 = {z[0] + z[1] + z[2]}, got {z[3]}")
-            raise GraphplanError(f"planetary.z: the wheels are not coaxial (equal modules): {want}")
+            raise _error(f"planetary.z: the wheels are not coaxial (equal modules): {want}",
+                         f"planetary.z: колеса не співвісні (модулі рівні): {want.replace('got', 'задано')}"
+                         .replace("needs", "потребує"))
     u = ratio_of(train.kind, z)
     w1 = train.omega
     wH = w1 / u
@@ -437,6 +469,6 @@ def solve(gears: Gears) -> Solution:
     try:
         pair = solve_pair(gears.pair) if gears.pair is not None else None
         train = solve_train(gears.train) if gears.train is not None else None
-    except GraphplanError as exc:
-        raise GraphplanError(str(exc), exc.where or gears.source) from None
+    except GraphplanError as exc:                    # in the scene's language where it says itself in both
+        raise GraphplanError(str(exc), exc.where or gears.source, exc.said, dict(gears.meta).get("lang")) from None
     return Solution(gears, pair, train)

@@ -214,6 +214,35 @@ class Mesh:
     lam: Record
     points: dict[str, complex] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    sa_bound: tuple[float, float] = (0.0, 0.0)      # m: the bound of each sa read, from the precision
+
+
+def _inv_at(R: float, rho: float) -> float:
+    """inv α at the radius ρ of the involute of the base circle R: tg α − α, cos α = R/ρ."""
+    a = math.acos(min(1.0, R / rho))
+    return math.tan(a) - a
+
+
+def tip_chord(R: float, r: float, ra: float, chord: float) -> float:
+    """The chord across a tooth's tip as the draftsman gets it: the flanks the involutes of the base
+    circle R through the ends of the chord ``chord`` laid off on the pitch circle r, cut by the tip
+    circle ra — 2·ra·sin(asin(chord/2r) + inv α(r) − inv α(ra)) (the tooth's half angle at the tip)."""
+    return 2 * ra * math.sin(math.asin(min(1.0, chord / (2 * r))) + _inv_at(R, r) - _inv_at(R, ra))
+
+
+def sa_bound(sol: PairSolution, k: int, mu: float, precision: float) -> float:
+    """The bound of |sa(graphical) − sa| of wheel k (m) from the drafting precision p: rb, r, ra and
+    the chord s laid off and the tip's chord read, each within p/2 (drawing mm), through
+    ``tip_chord`` — its worst corner of the four laid-off lengths at ± p/2 plus p/2 read (a thin tip
+    of a few teeth moves by a fraction of a millimetre as rb or ra does: review 45's 11-tooth pinion
+    with x = 0,6 reads sa +9,8 % off an 8,2-mm chord)."""
+    h = precision / 2
+    R, r, ra = sol.rb[k] / mu, sol.r[k] / mu, sol.ra[k] / mu
+    chord = 2 * r * math.sin(sol.s[k] / (2 * sol.r[k]))
+    exact = tip_chord(R, r, ra, chord)
+    worst = max(abs(tip_chord(R + a, r + b, ra + c, chord + d) - exact)
+                for a, b, c, d in itertools.product((-h, h), repeat=4))
+    return (worst + h) * mu
 
 
 def _extent(sol: PairSolution, md: float, teeth: int = TEETH) -> tuple[float, float, float]:
@@ -541,7 +570,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     read.update(s1=s_read[0], s2=s_read[1], sa1=sa_read[0], sa2=sa_read[1])
     mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
-                {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P})
+                {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P},
+                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)))
     if 2.25 * md < DEPTH_MM[0]:
         mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",
@@ -739,14 +769,22 @@ class Velocities:
     ratio: float
     ratio_bound: float
     record: Record
+    h_carrier: float | None = None  # the carrier's own pole distance h_H, mm (its ray from p'_ω), or None
 
     @property
     def mu_omega(self) -> float:
         """The plan of angular velocities' scale, (rad/s)/mm: μω = μv/(μl·h) (ωi = segment·μω)."""
         return self.mu_v / (self.mu_l * self.h)
 
+    @property
+    def mu_omega_carrier(self) -> float:
+        """The carrier's scale, (rad/s)/mm: μv/(μl·h_H) where it has its own pole, else μω."""
+        return self.mu_v / (self.mu_l * (self.h_carrier or self.h))
+
 
 MU_OMEGA = {"uk": "μ_ω = μ_v/(μ_l·h) = {v} (рад/с)/мм", "en": "μ_ω = μ_v/(μ_l·h) = {v} (rad/s)/mm"}
+MU_OMEGA_H = {"uk": "μ'_ω = μ_v/(μ_l·h_H) = {v} (рад/с)/мм", "en": "μ'_ω = μ_v/(μ_l·h_H) = {v} (rad/s)/mm"}
+SEGMENT_MIN = 20.0      # mm: a plan's segment shorter than this reads worse than ±1,25 % (the ruler's 0,25 mm)
 
 
 def mu_omega_text(mu_omega: float, lang: str) -> str:
@@ -761,10 +799,15 @@ def _nice(v: float) -> float:
 
 
 def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0,
-                    sun_segment_mm: float = 100.0, va_mm: float = 60.0) -> Velocities:
+                    sun_segment_mm: float = 100.0, va_mm: float = 60.0, h_carrier: float | None = None) -> Velocities:
     """The scheme at μl (the ring's radius about ``ring_mm``, μl the next round value of the series
     1, 2, 2.5, 4, 5·10ⁿ), the velocity picture with vA about ``va_mm`` (μv round likewise), the plan of
-    angular velocities with h chosen so the sun's segment is about ``sun_segment_mm``."""
+    angular velocities with h chosen so the sun's segment is about ``sun_segment_mm``.
+    ``h_carrier`` (mm, longer than h): the carrier's ray drawn from a pole p'_ω of its own on h
+    produced, h_H below the plan's line — as any pole distance serves a plan of angular velocities
+    (ω = segment·μv/(μl·h)), the slow carrier of a large ratio gets one that makes its segment
+    readable (review 13 #9: ωH off 3,8 mm, +5,54 %) while the sun's ray keeps the sheet's width;
+    then ωH = segment·μv/(μl·h_H) and u1H = (s1/h)/(sH/h_H)."""
     rad = tr.radii
     kind = tr.train.kind
     mu = _nice(rad["3"] / ring_mm)                          # m/mm
@@ -779,11 +822,13 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     mu_v = _nice(vA / va_mm)
     va = lay_off(vA / mu_v, precision)
     h = float(min(150.0, max(20.0, round(sun_segment_mm * yA / va))))
+    hH = float(round(h_carrier)) if h_carrier is not None and round(h_carrier) > h else None
     v_o2 = va * (yC - yO2) / (yC - yA)                       # on the planet's line, at the axis' height
     slopes = {"1": va / yA, "2": va / (yA - yC), "H": v_o2 / yO2, "3": 0.0}
-    seg = {k: measure(h * s, precision) for k, s in slopes.items()}
-    omega = {k: seg[k] * mu_v / (mu * h) for k in seg}
-    ratio = seg["1"] / seg["H"] if seg["H"] else math.nan
+    dist = {k: (hH if k == "H" and hH else h) for k in slopes}     # each ray's pole distance
+    seg = {k: measure(dist[k] * s, precision) for k, s in slopes.items()}
+    omega = {k: seg[k] * mu_v / (mu * dist[k]) for k in seg}
+    ratio = (seg["1"] / h) / (seg["H"] / dist["H"]) if seg["H"] else math.nan
     rec = Record("planetary")
     starts = _scheme(rec, tr, mu, yA, yO2, yC)
     # the velocity picture: the radii on one vertical line right of the scheme
@@ -807,24 +852,37 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     for q in (a, o2, C, O):
         rec.point(_f(q), role="pole", layer=LAYER)
     # the plan of angular velocities below: a horizontal, the pole h under it
-    xs = [h * s for s in slopes.values()]
+    xs = [dist[k] * s for k, s in slopes.items()]
     y0 = -26.0
-    xp = X0 - min(0.0, min(xs)) + 4.0
+    # the plan under the scheme and the velocity picture from the scheme's left end (not from the
+    # picture's axis: the sun's segment then takes the pictures' whole width — review 13 #9, an A3
+    # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm)
+    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0
     left, right = xp + min(xs + [0.0]) - 6.0, xp + max(xs + [0.0]) + 6.0
-    rec.segment((left, y0), (right, y0), role="construction", layer=LAYER, step="plan of ω")
+    xd = left - 4.0                       # h_H's dimension line, left of the plan
+    rec.segment((xd - 2.0 if hH else left, y0), (right, y0), role="construction", layer=LAYER, step="plan of ω")
     pole = complex(xp, y0 - h)
+    poles = {k: (complex(xp, y0 - hH) if hH and k == "H" else pole) for k in slopes}
     rec.point(_f(pole), role="pole", layer=LAYER)
     rec.segment(_f(pole), (xp, y0), role="construction", layer=LAYER, step="h")
+    if hH:                                # h produced to the carrier's pole, its length dimensioned
+        rec.segment(_f(poles["H"]), _f(pole), role="construction", layer=LAYER, step="h_H")
+        rec.point(_f(poles["H"]), role="pole", layer=LAYER)
+        rec.segment(_f(poles["H"]), (xd - 2.0, y0 - hH), role="construction", layer=LAYER, step="h_H extension")
+        dimension(rec, complex(xd, y0), complex(xd, y0 - hH), "h_H dimension")
     for k, s in slopes.items():
         if k != "3":      # the fixed ring's ray (ω3 = 0) is h itself: its point the foot of h
-            rec.segment(_f(pole), (xp + h * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
-        rec.point((xp + h * s, y0), role="pole", layer=LAYER, step=f"point {k}")
+            rec.segment(_f(poles[k]), (xp + dist[k] * s, y0), role="ray", layer=LAYER, step=f"ray {k}")
+        rec.point((xp + dist[k] * s, y0), role="pole", layer=LAYER, step=f"point {k}")
     pl = Placer(rec)
     names = {"1": "1", "2": "2" if kind == "A" else "2, 2'", "H": "H", "3": "3"}
     for k, s in slopes.items():      # every point lettered, the ring's 3 (ω = 0) too
-        pl.label(complex(xp + h * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
+        pl.label(complex(xp + dist[k] * s, y0), names[k], size=TEXT, toward=1j, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0))
     pl.label(pole, "p_ω", toward=-1 + 0j)
     pl.label(complex(xp, y0 - h / 2), "h", toward=1 + 0j, radii=(1.0, 2.0, 3.0, 6.0))
+    if hH:
+        pl.label(poles["H"], "p'_ω", toward=1 + 0j)
+        pl.label(complex(xd, y0 - hH / 2), "h_H", toward=-1 + 0j, radii=(1.0, 2.0, 3.0))
     pl.label(end1, "1", toward=end1 - a, radii=(1.0, 2.0, 3.5, 5.5))     # the lines' numbers at their ends,
     pl.label(low, names["2"], toward=low - a, radii=(1.0, 2.0, 3.5, 5.5))  # far from a's letter
     pl.label(endH, "H", toward=endH - o2, radii=(1.0, 2.0, 3.5, 5.5))
@@ -836,8 +894,12 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     pl.label(complex(X0 + v_o2 / 2, yO2), "v_{O_2}", size=3.5, toward=1j, radii=(0.8, 1.5, 3.0, 5.0, 9.0))
     _mu_omega_label(rec, pl, pole, left, right, mu_omega_text(mu_v / (mu * h), lang))
     rec.scales.update(mu_l=mu, mu_v=mu_v, h=h, mu_omega=mu_v / (mu * h))
+    if hH:
+        _mu_omega_label(rec, pl, poles["H"] + 10.0, xd - 2.0, right,      # (clear of p'_ω's letter)
+                        MU_OMEGA_H[lang].format(v=num(mu_v / (mu * hH), lang, 4)))
+        rec.scales.update(h_H=hH, mu_omega_H=mu_v / (mu * hH))
     out = Velocities(mu, mu_v, h, precision, {"A": yA, "O2": yO2, "C": yC}, va, seg, omega, ratio,
-                     ratio_bound(tr, mu, h, va, precision), rec)
+                     ratio_bound(tr, mu, h, va, precision, hH), rec, hH)
     return out
 
 
@@ -860,7 +922,8 @@ def _mu_omega_label(rec: Record, pl: Placer, pole: complex, left: float, right: 
               step="μω")
 
 
-def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float) -> float:
+def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float,
+                h_carrier: float | None = None) -> float:
     """The bound of |u1H(graphical) − u1H| (absolute, u1H has no unit) from the drafting precision p:
     the heights yA = r1, yO2 = aw, yC = r3 laid off and the segments s1, sH read, each within p/2
     (drawing mm), through u1H = s1/sH with s1 = h·vA/yA, sH = h·vA·(yC − yO2)/((yC − yA)·yO2)
@@ -869,24 +932,28 @@ def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: fl
     First order: (p/2)·u·[1/s1 + 1/sH + 1/yA + 1/(yC − yA) + 1/yO2 + 1/(yC − yO2)
     + |1/(yC − yA) − 1/(yC − yO2)|]; the margin: the formula at every corner of the five lengths at
     ± p/2 (monotone in each, so the worst corner is the worst case to every order); the larger of
-    the two is stated."""
+    the two is stated.
+    ``h_carrier``: the carrier's ray from its own pole (``construct_train``): sH = h_H·vA·(…), u1H =
+    (s1/h)/(sH/h_H), and h, h_H — no longer cancelling — laid off within p/2 too: + 1/h + 1/h_H."""
     rad = tr.radii
     yA, yO2, yC = rad["1"] / mu, rad["H"] / mu, rad["3"] / mu
     u = tr.ratio
+    hH = h_carrier or h
     s1 = h * va / yA
-    sH = s1 / u
+    sH = hH / h * s1 / u
     terms = (1 / s1 + 1 / sH + 1 / yA + 1 / (yC - yA) + 1 / yO2 + 1 / (yC - yO2)
-             + abs(1 / (yC - yA) - 1 / (yC - yO2)))
+             + abs(1 / (yC - yA) - 1 / (yC - yO2)) + ((1 / h + 1 / hH) if h_carrier else 0.0))
     hp = precision / 2
     first = hp * u * terms
     worst = 0.0
-    for sg in itertools.product((-hp, hp), repeat=5):
+    for sg in itertools.product((-hp, hp), repeat=7 if h_carrier else 5):
         a, o, c = yA + sg[0], yO2 + sg[1], yC + sg[2]
-        g1 = h * va / a + sg[3]
-        gH = h * va * (c - o) / ((c - a) * o) + sg[4]
+        k1, kH = (h + sg[5], hH + sg[6]) if h_carrier else (h, h)       # the pole distances as laid off
+        g1 = k1 * va / a + sg[3]
+        gH = kH * va * (c - o) / ((c - a) * o) + sg[4]
         if min(a, o - a, c - o, g1, gH) <= 0:
             return math.inf                 # the precision as coarse as the drawing: no bound
-        worst = max(worst, abs(g1 / gH - u))
+        worst = max(worst, abs((g1 / h) / (gH / hH) - u))
     return max(first, worst)
 
 

@@ -79,7 +79,7 @@ def pair_json(sol, mesh) -> dict[str, Any]:
         doc["graphical"] = {
             "mu_l_m_mm": mesh.mu_l, "module_mm": mesh.module_mm, "precision_mm": mesh.precision,
             "drawn_mm": dict(mesh.drawn), "read_mm": dict(mesh.read),
-            "rw_m": list(mesh.rw), "s_m": list(mesh.s), "sa_m": list(mesh.sa),
+            "rw_m": list(mesh.rw), "s_m": list(mesh.s), "sa_m": list(mesh.sa), "sa_bound_m": list(mesh.sa_bound),
             "error_pct": {"rw": [err(mesh.rw[k], sol.rw[k]) for k in (0, 1)],
                           "s": [err(mesh.s[k], sol.s[k]) for k in (0, 1)],
                           "sa": [err(mesh.sa[k], sol.sa[k]) for k in (0, 1)]}}
@@ -119,6 +119,7 @@ def train_json(tr, vel) -> dict[str, Any]:
         doc["graphical"] = {
             "mu_l_m_mm": vel.mu_l, "mu_v_mm": vel.mu_v, "h_mm": vel.h, "precision_mm": vel.precision,
             "va_mm": vel.va_mm, "heights_mm": dict(vel.heights), "segments_mm": dict(vel.segments),
+            "h_carrier_mm": vel.h_carrier,
             "omega_rad_s": dict(vel.omega),
             "error_pct": {k: err(vel.omega[k], tr.omega[k]) for k in tr.omega}}
     return doc
@@ -147,13 +148,14 @@ WORDS = {
            "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
            "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
-           "zt": "числа зубців z = {z}; u1H = {u} (потрібно {r}), графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
+           "zt": "числа зубців z = {z}; u1H = {u}{r}, графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
            "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
+           "h_H": ", водило — свій полюс, hH = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
-           "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
+           "wanted": " (потрібно {r})", "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
@@ -166,13 +168,14 @@ WORDS = {
            "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
            "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",
-           "zt": "teeth z = {z}; u1H = {u} (wanted {r}), graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
+           "zt": "teeth z = {z}; u1H = {u}{r}, graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
            "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
+           "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
-           "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
+           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
 }
 
 
@@ -326,7 +329,8 @@ def train_lines(d: dict, lang: str) -> list[str]:
     ue, ug = bare(ue), bare(ug) if ug else "—"
     lines = [w["train"] + ":", w["type"].format(t=d["type"], k=d["planets"], m=n(d["module_m"] * 1000),
                                                  w=n(d["omega_rad_s"]["1"])),
-             w["zt"].format(z=", ".join(map(str, d["z"])), u=ue, r=n(d["ratio_required"]),
+             w["zt"].format(z=", ".join(map(str, d["z"])), u=ue,
+                            r=w["wanted"].format(r=n(d["ratio_required"])) if d["ratio_required"] is not None else "",
                             g=ug, d=delta_text(ud, lang), b=n(r["bound"], 2),
                             bp=_share(r["bound"], r["exact"], lang), out=w["out"] if r["outside_bound"] else "")]
     c = d["conditions"]
@@ -334,7 +338,8 @@ def train_lines(d: dict, lang: str) -> list[str]:
                                   u=ok(c["no_undercut"])))
     g = d.get("graphical")
     if g:
-        lines.append(w["vel"].format(l=n(g["mu_l_m_mm"]), v=n(g["mu_v_mm"]), h=n(g["h_mm"])))
+        lines.append(w["vel"].format(l=n(g["mu_l_m_mm"]), v=n(g["mu_v_mm"]), h=n(g["h_mm"]))
+                     + (w["h_H"].format(h=n(g["h_carrier_mm"])) if g.get("h_carrier_mm") else ""))
     rows = [[w["member"], f"ω {w['exact']}", f"ω {w['graph']}", "δ, %"]]
     for k in ("1", "2", "3", "H"):
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"

@@ -11,8 +11,8 @@ import math
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import (MORE_TEETH, TEETH, TEETH_SPAN, construct_mesh, construct_train, lambda_mu,
-                                     most_teeth, sliding_diagram)
+from graphplan.graphic.gears import (MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
+                                     lambda_mu, most_teeth, sliding_diagram)
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
@@ -32,7 +32,7 @@ WORDS = {
            "sliding": "Питоме ковзання λ_1, λ_2", "sliding2": "абсциса ρ уздовж N_{{1}}N_{{2}}, М {scale} (μ_l = {mul} м/мм); B_{{1}}B_{{2}} робоча (потовщено); "
                        "μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
-           "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм",
+           "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм", "plan_h_H": ", h_H = {h} мм",
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
@@ -48,7 +48,7 @@ WORDS = {
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
-           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} об/хв (ω_1 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
            "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
@@ -60,10 +60,17 @@ WORDS = {
            "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
                     "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
+           "own_pole": "Відрізок ω_H на плані з полюсом p_ω був би {s} мм (ω_H = ω_1/{u}): водило має свій полюс p'_ω "
+                       "на продовженні h, h_H = {hH} мм, його відрізок {sH} мм; ω_H = відрізок·μ'_ω, "
+                       "u_{{1H}} = (відрізок 1/h)/(відрізок H/h_H)",
+           "short": "Відрізок ω_H на плані лише {s} мм (ω_H = ω_1/{u}): півподілки лінійки — {e} % від нього; "
+                    "звідси межа похибки u_{{1H}}",
            "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
            "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
                      "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
+           "tip": "; s_{{a{k}}} з хорди {c} мм: межа похибки від точності креслення ±{b} % {v}",
+           "tip_in": "(у межах)", "tip_out": "(поза межею)",
            "judged": "Умови таблиці 2 — за формулами; ε_α з креслення {g} < 1,2 {v}",
            "judged_in": "у межах похибки ±{b}", "judged_out": "поза межею похибки ±{b}",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
@@ -73,7 +80,7 @@ WORDS = {
            "sliding": "Specific sliding λ_1, λ_2", "sliding2": "abscissa ρ along N_{{1}}N_{{2}}, scale {scale} (μ_l = {mul} m/mm); B_{{1}}B_{{2}} working "
                        "(heavy); μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
-           "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm",
+           "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm", "plan_h_H": ", h_H = {h} mm",
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
@@ -89,7 +96,7 @@ WORDS = {
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
-           "train_u": "u_{{1H}} = {u}", "train_z": "z = {z}",
+           "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
            "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
@@ -101,10 +108,17 @@ WORDS = {
            "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
                     "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
+           "own_pole": "The segment of ω_H off the pole p_ω would be {s} mm (ω_H = ω_1/{u}): the carrier has a pole "
+                       "p'_ω of its own on h produced, h_H = {hH} mm, its segment {sH} mm; ω_H = segment·μ'_ω, "
+                       "u_{{1H}} = (segment 1/h)/(segment H/h_H)",
+           "short": "The segment of ω_H on the plan is only {s} mm (ω_H = ω_1/{u}): the ruler's half division is {e} % "
+                    "of it; hence the bound of u_{{1H}}",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
+           "tip": "; s_{{a{k}}} off a {c}-mm chord: bound from the drafting precision ±{b} % {v}",
+           "tip_in": "(within)", "tip_out": "(outside)",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
            "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
@@ -147,7 +161,8 @@ def geometry_table(doc: dict, lang: str) -> Record:
         for k in (0, 1):
             gr = g.get(f"{key}_m")
             te, tg, e = agreeing(p[f"{key}_m"][k] * 1000, gr[k] * 1000 if gr else None, dec, lang)
-            row += [te, tg, _pct(e)] if gr else [te, "", ""]     # one count of decimals down the column
+            past = key == "sa" and gr and abs(gr[k] - p["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12
+            row += [te, tg, _pct(e, "!" if past else "")] if gr else [te, "", ""]   # one count of decimals down the column
         rows.append(row)
     c = p["contact_ratio"]
     te, tg, e = contact_ratio_text(c["exact"], c["graphical"], lang)
@@ -265,6 +280,14 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
+        if vel.h_carrier:                 # the carrier's own pole (review 13 #9)
+            sH = abs(vel.segments["H"])
+            out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),
+                                            hH=_n(vel.h_carrier, lang), sH=_n(sH, lang)))
+        elif vel.precision > 0 and 0 < abs(vel.segments["H"]) < SEGMENT_MIN / 2:   # the half division past 2,5 %
+            sH = abs(vel.segments["H"])
+            out.append(w["short"].format(s=_n(sH, lang), u=_n(t["ratio"]["exact"], lang),
+                                         e=_n(100 * vel.precision / 2 / sH, lang, 2)))
         if t["candidates"]:
             out.append(w["synth"].format(n=t["candidates_passing"]))
             pair = nearer_candidate(t)
@@ -277,10 +300,32 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out += [w["warn"] + x for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
-    last.append(w["mark"])
-    if any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio")) if k in doc):
+    last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
+    g = doc.get("pair", {}).get("graphical")
+    tip_out = bool(g) and any(abs(g["sa_m"][k] - doc["pair"]["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12 for k in (0, 1))
+    if tip_out or any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio"))
+                      if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def tips(doc: dict, lang: str, mesh) -> list[str]:
+    """The starred sa of Table 1 explained in the marks' legend by its bound from the drafting
+    precision (``graphic.gears.sa_bound``: a thin tip of few teeth — review 45's 11-tooth pinion with
+    x = 0,6 read sa +9,76 % within ±18 %), each "; s_a1 …" (none where no sa is starred)."""
+    w = WORDS[lang]
+    p = doc.get("pair")
+    g = p.get("graphical") if p else None
+    out = []
+    if not g or mesh is None or mesh.precision <= 0:
+        return out
+    for k in (0, 1):
+        e = agreeing(p["sa_m"][k] * 1000, g["sa_m"][k] * 1000, table_decimals(g), lang)[2]   # Table 1's δ
+        if e is not None and abs(e) > LAB_LIMIT:
+            b = g["sa_bound_m"][k]
+            out.append(w["tip"].format(k=k + 1, c=_n(mesh.read[f"sa{k + 1}"], lang), b=_n(100 * b / p["sa_m"][k], lang, 2),
+                                       v=w["tip_in" if abs(g["sa_m"][k] - p["sa_m"][k]) <= b + 1e-12 else "tip_out"]))
+    return out
 
 
 def data_lines(doc: dict, lang: str) -> list[str]:
@@ -340,7 +385,8 @@ def _plan(vel, lang: str) -> Record:
     """The planetary pictures captioned: the name, what they are, their scales μl, μv and h."""
     w = WORDS[lang]
     return captioned(vel.record, w["planetary"], w["planetary2"] + "; " + w["plan_scales"].format(
-        l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)))
+        l=_n(vel.mu_l, lang), v=_n(vel.mu_v, lang), h=_n(vel.h, lang)) + (
+        w["plan_h_H"].format(h=_n(vel.h_carrier, lang)) if vel.h_carrier else ""))
 
 
 SHARES = ((1.0, 1.5), (1.0, 1.25), (1.0, 1.0), (1.0, 0.85), (0.8, 0.85), (0.8, 0.7), (0.65, 0.7), (0.65, 0.6),
@@ -387,6 +433,14 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
                 memo[key] = None
         return memo[key]
 
+    def at_h(hH: float, k: float = 1.0):  # the pictures at k × the last S with the carrier's own pole h_H
+        try:
+            c = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=k * S,
+                                h_carrier=hH)
+        except GraphplanError:
+            return None
+        return (c, _plan(c, lang)) if c.h >= h_min else None
+
     def fits(d) -> bool:
         w_, h_ = _size(d[1])
         return w_ <= room_w and h_ <= room_h and d[0].h >= h_min
@@ -396,10 +450,14 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
     if d is None:
         return None
     got = d if fits(d) else None
-    for _ in range(2):                    # from the pictures at S, the S that fills the zone; once more from it
+    for _ in range(3):                    # from the pictures at S, the S that fills the zone; again from it
         w_, h_ = _size(d[1])
         tall = d[0].heights["A"] / d[0].va_mm     # h per mm of the sun's segment
-        target = min(S + min((room_w - w_) / span, (room_h - h_) / tall), 150.0 / tall)   # h ≤ 150 mm
+        # the plan grows from under the scheme: its right end, not the pictures', meets the zone's
+        line = next(q for q in d[0].record.items if q.step == "plan of ω")
+        reach = max(q[0] for q in line.points) - d[1].bounds()[0]
+        wide = (room_w - max(w_, reach)) / span + (max(w_, reach) - reach) / span
+        target = min(S + min(wide, (room_h - h_) / tall), 150.0 / tall)   # h ≤ 150 mm
         if abs(target - S) < 0.5:
             break
         for _ in range(5):                # labels may push the pictures out: a little less
@@ -410,6 +468,39 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
         else:
             break
         S, d, got = target, e, e
+    return carried(got, at_h, room_w, room_h) if got is not None else None
+
+
+def carried(got, at_h, room_w: float, room_h: float):
+    """The pictures ``got`` (velocities, captioned record) with the carrier's ray from a pole of its own
+    (``construct_train``'s ``h_carrier``) where its segment on the plan is shorter than
+    ``SEGMENT_MIN`` — review 13 #9: ωH read off 3,8 mm, +5,54 %; u = 26…40 leave it 5–9 mm on A1 and
+    2,5–8 mm on A3 whatever the sun's segment, the width taken —: h_H the one that makes it
+    ``SEGMENT_MIN`` (at most 200 mm), or the longest the zone's spare height ``room_h`` holds, when
+    that is at least 1,5·h — else the plan's h halved of the longest h_H the zone holds (the sun's
+    segment shorter, still the longest) — either taken where the carrier's segment is 1,5 times as
+    long and u1H's bound no wider; ``got`` else (the notes then say the segment's length).
+    ``at_h(h_H, k)``: the pictures drawn with it at k times the sun's segment."""
+    v, rec = got
+    if abs(v.segments["H"]) >= SEGMENT_MIN or not v.segments["H"]:
+        return got
+    slope = abs(v.segments["H"]) / v.h                       # (about: the segment as read)
+    _, h_ = _size(rec)
+    tallest = v.h + room_h - h_ - 2.0                        # h_H the zone's spare height holds
+    want = min(200.0, math.ceil(SEGMENT_MIN / slope), tallest)
+    tries = [(1.0, want)]
+    if want < 1.5 * v.h:                  # too little spare height: the plan's h (and the sun's segment)
+        tries.append((0.5 * tallest / v.h, tallest))         # halved of h_H — the carrier's the longest
+    for k, hH in tries:
+        for _ in range(6):                # the labels may push the pictures out: a little shorter
+            if hH < 1.5 * k * v.h or k < 0.4:
+                break
+            e = at_h(hH, k)
+            if e is not None and _size(e[1])[0] <= room_w and _size(e[1])[1] <= room_h:
+                if e[0].ratio_bound <= v.ratio_bound and abs(e[0].segments["H"]) >= 1.5 * abs(v.segments["H"]):
+                    return e      # (u1H no worse bounded: s1 shorter and h, h_H laid off weigh in too)
+                break
+            hH = k * v.h + 0.8 * (hH - k * v.h)
     return got
 
 
@@ -557,10 +648,22 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
     """The gear sheet: the meshing with the λ diagrams under it, the planetary pictures, the three
     tables and the notes, in zones (the meshing at the largest standard scale its zone takes); a
     format too small flows them over further sheets of the set in reading order (sheets/gearset.py),
-    the planetary pictures there grown while the set keeps its count of sheets."""
+    the planetary pictures there grown while the set keeps its count of sheets (``on_sheet``)."""
     lang = args.lang
     sol = solve(g)
-    mesh, vel, plan = construct_on(sol, f, args.precision, lang)
+    mesh, vel, pages = on_sheet(g, sol, f, args.precision, lang)
+    w = WORDS[lang]
+    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
+                   f"{g.title_in(lang)} — {w['subtitle']}")
+
+
+def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
+    """The gear sheet's constructions as the sheet (or the set) on ``f`` ends up drawing and reading
+    them, and its pages: (mesh, velocities, pages). What `graphplan gears --format F`, graphplan.gears()
+    and the web page print, so that the terminal's readings are the sheet's tables' (an A3 set grows
+    its planetary pictures after composing: ``construct_on`` alone gave the first, smaller pictures —
+    u1H read off h = 33 mm where the set's sheet drew h = 69 mm)."""
+    mesh, vel, plan = construct_on(sol, f, precision, lang)
     drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
     lines = [x for part in parts for x in part]
     pages = None
@@ -570,17 +673,22 @@ def build_gears_sheet(g: Gears, f: Form, args: SheetOptions) -> Sheet:
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
-        more = _more_teeth(sol.pair, mesh, f, args.precision, lang) if mesh is not None else None
+        more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
         lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
         pages = _set(drawings, tables, parts, f, more, lang, lam)
         if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
         if vel is not None:
-            pages = _set_grown(g, sol, mesh, more, vel, f, args.precision, lang, pages, lam)
-    w = WORDS[lang]
-    return compose(f, pages, _fields(g, lang, mesh.mu_l if mesh else (vel.mu_l if vel else None)), lang,
-                   f"{g.title_in(lang)} — {w['subtitle']}")
+            first = pages
+            vel0 = vel
+            vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
+            short = abs(vel.segments["H"])
+            if precision > 0 and 0 < short < SEGMENT_MIN / 2:      # one more sheet where it reads ωH
+                v1, p1 = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam, extra=1)
+                if abs(v1.segments["H"]) >= 2 * short:                   # (it doubles: review 13 #9's 3,8 mm)
+                    vel, pages = v1, p1
+    return mesh, vel, pages
 
 
 def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
@@ -654,12 +762,14 @@ def sliding_leaf(rec: Record, lang: str) -> Record:
                                                              scale=drawing_scale(mu, lang)))
 
 
-def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None):
+def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None,
+               extra: int = 0):
     """A set's planetary pictures grown (the ring's radius, vA and the sun's segment together,
     ``SET_GROW``) to the largest that keeps the set's count of sheets (on a later sheet than the
     meshing they are that sheet's main drawing): the pictures read with a longer h and segments.
-    ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
-    takes fewer sheets)."""
+    (velocities, pages): ``vel`` and ``pages`` as they were when none does. The sizes are tried by halving (a larger picture never
+    takes fewer sheets). ``extra``: sheets the set may take beyond its count (review 13 #9: a set whose
+    plan reads ωH off 2,5–4 mm takes one more sheet where the plan grows to read it off twice that)."""
     def drawn(k: float, va_share: float, share: float):
         try:
             v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k * va_share,
@@ -674,7 +784,7 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     def kept(v, p):                       # the set with these pictures, when it keeps the count of sheets
         drawings, tables, parts = _blocks(g, sol, mesh, v, p, lang)
         got = _set(drawings, tables, parts, f, more, lang, lam)
-        return got if got is not None and len(got) <= len(pages) else None
+        return got if got is not None and len(got) <= len(pages) + extra else None
 
     # the largest size (halving SET_GROW: a larger picture never takes fewer sheets) whose narrowest
     # variant keeps the count, then at it the widest variant that does — the ring's scale the one that
@@ -706,7 +816,7 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     """A set's planetary pictures at their scheme's scale with the plan of angular velocities filling
     the sheet's width at the pictures' height (``filled``; review 12 mark 11: the A3 set's ωH was a
     6-mm segment on a sheet two thirds empty), where that keeps the set's count of sheets and reads
-    u1H better (its bound smaller); the pages of ``chosen`` (velocities, pages) else."""
+    u1H better (its bound smaller): (velocities, pages), ``chosen`` else."""
     from graphplan.sheets.gearset import later_keep
     v0, pages = chosen
     x0, y0, x1, y1 = field_of(f)
@@ -724,9 +834,9 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
                     tried.add(id(d))
                     out = kept(*d)
                     if out is not None:
-                        return out
+                        return d[0], out
                 break                     # (a shorter vA only makes it taller)
-    return pages
+    return v0, pages
 
 
 def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:

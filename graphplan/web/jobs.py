@@ -85,13 +85,13 @@ def _cam_or_study(tree: dict[str, Any]):
 
 
 def _gears_solved(gears, precision: float = 0.5, lang: str = "uk"):
-    """(solution, mesh, velocities) as `graphplan gears` makes them (sheets.gears.construct_on: the
-    A1 sheet's scales)."""
+    """(solution, mesh, velocities) as `graphplan gears` makes them (sheets.gears.on_sheet: the
+    A1 sheet's scales and readings)."""
     from graphplan.exact.gears import solve
     from graphplan.sheets.form import form
-    from graphplan.sheets.gears import construct_on
+    from graphplan.sheets.gears import on_sheet
     sol = solve(gears)
-    mesh, vel, _ = construct_on(sol, form("A1"), precision, lang)
+    mesh, vel, _ = on_sheet(gears, sol, form("A1"), precision, lang)
     return sol, mesh, vel
 
 
