@@ -512,8 +512,9 @@ def _plan_value(doc_pos: dict | None, key: str, truth: float) -> float | None:
 def diagram_readings(diag, doc: dict) -> list[dict]:
     """Seed 002's step 11: s, v, a read off the diagrams at each position of the plans (the
     values the diagrams' ordinates give, as ``Diagrams.values``), beside the plans' v (Table 1) and
-    a (the acceleration plans, where drawn), and δ, % of the diagrams' readings against the exact
-    values as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
+    a (the acceleration plans, where drawn), the exact s, v, a (the analytic solver's, the truth δ is
+    of) and δ, % of the diagrams' readings against them as the lab's 5 % judges them
+    (graphic.diagrams.judged_pct)."""
     vals, errs = diag.values(), diag.position_errors()
     out_kind, name = diag.output.kind, diag.output.name
     vkey, akey = (name, name) if out_kind == "slide" else (f"omega_{name}", f"epsilon_{name}")
@@ -524,6 +525,8 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
         pos = by_index.get(n, {})
         rows.append({"position": n, "s": float(vals["s"][k]), "v": float(vals["v_at"][k]),
                      "a": float(vals["a_at"][k]),
+                     "s_exact": float(diag.truth["s"][k]), "v_exact": float(diag.truth["v_at"][k]),
+                     "a_exact": float(diag.truth["a_at"][k]),
                      "v_plan": _plan_value(pos.get("velocity"), vkey, float(diag.truth["v_at"][k])),
                      "a_plan": _plan_value(pos.get("acceleration"), akey, float(diag.truth["a_at"][k])),
                      "delta_s": float(errs["s"][i]), "delta_v": float(errs["v_at"][i]),
@@ -536,16 +539,18 @@ READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: th
 
 def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
     """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
-    v and a under them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why). The
+    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
+    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the exact;
+    a δ past the lab's 5 % marked (the notes say why). The
     positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
     ``READINGS_COLUMNS`` a block, the blocks one under another."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
     units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
     us, uv, ua = (unit(u, lang) for u in units)
-    plans = w('readings_plan')
-    heads = [w('no'), f"{s_}, {us}", f"{v_}, {uv}", plans, f"δ_{{{diag.symbols[1]}}}, %", f"{a_}, {ua}", plans,
-             f"δ_{{{diag.symbols[2]}}}, %"]
+    plans, exact = w('readings_plan'), w('readings_exact')
+    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
     def pct(e: float) -> str:
@@ -570,6 +575,8 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     for plan, own in (("v_plan", "v"), ("a_plan", "a")):
         if any(r[plan] for r in read):
             d[plan] = d[own] = min(d[plan], d[own])
+    for own in ("s", "v", "a"):          # the exact row to its reading's decimals: like with like
+        d[f"{own}_exact"] = d[own]
 
     def cell(r: dict, key: str) -> str:
         """A reading in its row's decimals — a 0 mm ordinate too (0,0 beside −10,6, not a bare 0:
@@ -579,8 +586,9 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         if round(r[key], d[key]) == 0:
             return fixed(0.0, lang, d[key])
         return written(r[key], d[key], lang)
-    cols = [[str(r["position"]), cell(r, "s"), cell(r, "v"), cell(r, "v_plan"), pct(r["delta_v"]),
-             cell(r, "a"), cell(r, "a_plan"), pct(r["delta_a"])] for r in read]
+    cols = [[str(r["position"]), cell(r, "s"), cell(r, "s_exact"), cell(r, "v"), cell(r, "v_plan"),
+             cell(r, "v_exact"), pct(r["delta_v"]), cell(r, "a"), cell(r, "a_plan"), cell(r, "a_exact"),
+             pct(r["delta_a"])] for r in read]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):

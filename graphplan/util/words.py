@@ -268,6 +268,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin no": ('№', '№'),
     "kin readings": ('Таблиця {n}. Діаграми в положеннях поруч з планами', 'Table {n}. Diagrams read at the positions, beside the plans'),
     "kin readings_plan": ('план', 'plan'),
+    "kin readings_exact": ('точно', 'exact'),
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
