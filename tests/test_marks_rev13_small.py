@@ -149,3 +149,39 @@ def test_the_motor_table_says_why_a_flywheel_beside_a_motor_sized_by_the_peak(pr
             assert ("no flywheel" if lang == "en" else "маховик не потрібен") in said
         printed = " ".join(q.text for q in motor_table(doc, lang).items if q.kind == "text")
         assert ("Why a flywheel" if lang == "en" else "Чому маховик") in printed
+
+
+def test_the_slotted_levers_epsilon_misses_5_percent_by_the_method_and_says_why():
+    """The lead's check of SIXBAR12's A3 set (μa 0.075, φ 110° from position 0): ε4 = ε5 read +11,48 %.
+    The plan is exact without the ruler (precision 0: 1e-9, the analytic ε5 the closed form of
+    θ5 = arg(C − O3)); with it, ε5 = a^τ_C5O3 / l_O3C (its error is the closing vector's: drawn 5.8 mm where the exact is 5.3 — two half
+    divisions of the ruler, a^k = 2ω4·v_C5C4 among the vectors before it); the footnote quotes the
+    length Table 1's a^τ_C5O3 row reads (6,0 mm, not the exact's 5,5), half a division's share of it
+    and why, once for ε4 and ε5."""
+    from review_scenes import SIXBAR12
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic.forceplans import acceleration_plan
+    from graphplan.report.plans import plans_json
+    from graphplan.sheets.kintables import acceleration_table
+    st = scene_study(SIXBAR12)
+    phi = float(np.atleast_1d(kinetostatics.at_scene_angle(st))[0])
+    exact = plans_json(acceleration_plan(st, phi, precision=0.0, mu_a=0.075))["positions"][0]["acceleration"]
+    assert abs(exact["epsilon_O3E"]["error_pct"]) < 1e-9
+    pos = plans_json(acceleration_plan(st, phi, precision=0.5, mu_a=0.075))["positions"][0]
+    acc = pos["acceleration"]
+    c, vc, ac = (complex(v[0]) for v in st.solve(np.array([phi])).point("C"))
+    r = c - st.mech.frame["O3"]             # the slot runs through O3: θ5 = arg(C − O3), ε5 = θ5''
+    w5 = (vc * r.conjugate()).imag / abs(r) ** 2
+    e5 = ((ac * r.conjugate()).imag - 2.0 * w5 * (vc * r.conjugate()).real) / abs(r) ** 2
+    t, eps = acc["t_C5O3"], acc["epsilon_O3E"]
+    assert eps["analytic"] == pytest.approx(abs(e5), rel=1e-9)
+    assert t["value"] / eps["value"] == pytest.approx(abs(r), abs=0.001)   # l_O3C off the position plan (0.5 mm)
+    assert eps["error_pct"] > 5.0 and t["error_pct"] == pytest.approx(eps["error_pct"], abs=0.2)
+    assert t["mm"] == 6.0 and abs(t["mm"] - eps["from_mm"]) <= 0.25     # the table's reading of the drawn vector
+    assert abs(t["analytic"] / 0.075 - eps["from_mm"]) > 0.25            # … not the exact length
+    for lang, head in (("uk", "ε_{4}, ε_{5}: прочитано з короткого вектора (6,0 мм)"),
+                       ("en", "ε_{4}, ε_{5}: read from a short vector (6.0 mm)")):
+        text = " ".join(q.text for q in acceleration_table(pos, 1, lang).items if q.kind == "text")
+        assert head in text, text
+        assert text.count(head.split(": ")[1]) == 1
+        assert (f"4{',' if lang == 'uk' else '.'}2 %") in text           # 0.25 mm of 6.0

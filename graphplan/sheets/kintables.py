@@ -115,7 +115,13 @@ def why(e: dict, sym: str, pos: dict, plan: str, lang: str, precision: float = 0
     if mm is not None and mm < SHORT_MM:
         read = measure(mm, precision)
         text = written(read, step_decimals(precision), lang) if precision > 0 else num(mm, lang, 3)
-        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=text)
+        if e.get("mm") is not None:
+            return w('why_short', sym=sym, mm=text)
+        # ω or ε read from a relative vector: the lab's why — the ruler's half division is a large share
+        # of it, and the intersection it is found by closes the errors of the vectors laid before it
+        # (SIXBAR12's ε4 = ε5 +11,48 % off a^τ_C5O3 drawn 5.9 mm where the exact is 5.3)
+        share = fixed(100.0 * 0.5 * precision / read, lang, 1) if precision > 0 and read > 0 else "—"
+        return w('why_short_from', sym=sym, mm=text, share=share)
     angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
     if angles:
         return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))
@@ -195,16 +201,20 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
     rows = [[w('quantity'), unit("mm", lang), w('graphical'), w('analytic'), w('error')]]
     items = list(pos.get("acceleration", {}).items())
     cells = acceleration_cells(pos, lang, precision)    # the terminal's, cell for cell; δ from the printed pair
-    notes = []
+    notes: dict = {}
     ruler = step_decimals(precision) if precision > 0 else 2
     for key, e in items:
         value, truth, delta = cells[key]
         cell = percent(delta, lang=lang)
         if delta is not None and abs(round(delta, 2)) > LAB_LIMIT:     # the printed δ past 5 %
             cell += MARK
-            notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang, precision)))
+            # one footnote for the quantities one reason covers (ε4 = ε5 of a slider and its slotted
+            # lever, read off the one a^τ: "ε₄, ε₅: …", not the reason twice)
+            said = why(e, "\x00", pos, "acceleration", lang, precision)
+            notes.setdefault(said, []).append(_symbol(key, "a", e))
         rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
                      value, truth, cell])
+    notes = [w('mark_cell', why=said.replace("\x00", ", ".join(syms))) for said, syms in notes.items()]
     if pos["index"] is not None:
         where = pos["index"]
     else:

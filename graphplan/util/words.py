@@ -641,7 +641,10 @@ WORDS: dict[str, tuple[str, str]] = {
                   "from the x axis"),
     "kin turn_at": ("φ = {turn}° від положення 0", "φ = {turn}° from position 0"),
     "kin why_short": ("{sym}: короткий вектор ({mm} мм)", "{sym}: a short vector ({mm} mm)"),
-    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм)", "{sym}: read from a short vector ({mm} mm)"),
+    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм): пів поділки лінійки — {share} % його, "
+                           "а знайдений перетином, він несе похибки векторів перед ним",
+                           "{sym}: read from a short vector ({mm} mm): half a ruler division is {share} % of it, "
+                           "and found by the intersection it carries the errors of the vectors before it"),
     "kin why_angle": ("{sym}: напрямні лінії перетинаються під малим кутом ({angle}°)",
                       "{sym}: the direction lines cross at a small angle ({angle}°)"),
     "kin why_ruler": ("{sym}: точність лінійки", "{sym}: the ruler's precision"),
