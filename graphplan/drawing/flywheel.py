@@ -563,6 +563,18 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     return shown
 
 
+def whole_run(values: list[float], shown: list[float]) -> bool:
+    """Whether the lettered ``shown`` of an axis's ``values`` (``graduate_axis``) are a whole run —
+    every value, or every 2nd, 5th or 10th tick's along the whole axis (a draftsman letters the major
+    ticks) — and not a stretch with a tick left bare among or before the lettered ones (0,04 and 0,06
+    beside 0,02's bare tick reads as a value forgotten)."""
+    unit = graduation_step(values) or (abs(values[0]) if values else 0.0)
+    if not shown or unit <= 0.0:
+        return False
+    runs = ([v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6] for every in (1, 2, 5, 10))
+    return any(len(run) >= 2 and run == list(shown) for run in runs)
+
+
 BREAK_CLEAR = 1.2    # mm: a thin line broken under a value this far from its ink
 
 
@@ -691,24 +703,21 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     y_kl = 0.5 * (k + l) - 1.2 if projections is None else l - 5.5    # the ΔT projections pass between k and l
     rec.label((xd - 1.5, y_kl), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
-    place_labels(rec, labels[:1], layer=LAYER)
-    curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
-    for asked in numbers:        # a point's number beside it with no line between them where it can be (a
-        # number across a projection reads as that line's), else on a leader that crosses no branch of
-        # the French curve where one can (it would read as a point of that branch): drawing.labels
-        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
-    place_labels(rec, labels[1:], layer=LAYER)
-    # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them)
+    # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them), before
+    # any number or letter is placed (review 12 #23: point 2's number stood where I*'s 0,02 goes, the tick
+    # left bare): a tick keeps its value, the numbers and letters move
     before = len(rec.items)
     i_values = graduation(x_hi - 8.0, f.mu_I)
     shown = graduate_axis(rec, i_values, f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
                           step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
                           letter=not constant_inertia(f))   # a constant I*: ticks only (its value on I*(φ), point
     #                                                         0's number on the axis read as the next value)
-    if not constant_inertia(f) and len(shown) < 2 <= len(i_values):
+    if not constant_inertia(f) and len(i_values) >= 2 and not whole_run(i_values, shown):
         # the French curve crosses the I* axis all along it (ΔT changes sign at most divisions: review
-        # 10's six-bar on A3 lettered one value, 0,025): the axis keeps its ticks, and the values go on
-        # a scale line parallel to it at the diagram's foot, from the ΔT axis's end, as a chart's frame
+        # 10's six-bar on A3 lettered one value, 0,025), or by a value the run needs (review 12 #23: the
+        # branch from point 1 to 2 ran where 0,02 goes, 0,04 and 0,06 lettered beside a bare tick): the
+        # axis keeps its ticks, and the values go on a scale line parallel to it at the diagram's foot,
+        # from the ΔT axis's end, as a chart's frame
         del rec.items[before:]
         _ticks_only = Record("ticks")
         graduate_axis(_ticks_only, i_values, f.mu_I, lang, vertical=False, sides=(1.0,), step="I* axis ticks",
@@ -722,6 +731,13 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
     graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
         graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")
+    place_labels(rec, labels[:1], layer=LAYER)
+    curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
+    for asked in numbers:        # a point's number beside it with no line between them where it can be (a
+        # number across a projection reads as that line's), else on a leader that crosses no branch of
+        # the French curve where one can (it would read as a point of that branch): drawing.labels
+        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
+    place_labels(rec, labels[1:], layer=LAYER)
     return rec
 
 

@@ -38,6 +38,7 @@ class Entry:
     basis: float
     sense: str | None = None
     error_pct: float | None = None
+    drawn: float | None = None    # ω, ε: the drawn length (mm) of the relative vector read (the ruler's)
 
 
 @dataclass
@@ -148,6 +149,7 @@ class Plan:
         self.images: dict[str, Image] = {FRAME: Image(0j, 0j, 0j)}
         self.rates: dict[str, float] = {FRAME: 0.0}
         self.basis: dict[str, float] = {FRAME: 0.0}
+        self.read_mm: dict[str, float | None] = {FRAME: None}   # each body's ``Entry.drawn``
         self.entries: dict[str, Entry] = {}
         self.record = Record()
         self.labels: list[LabelRequest] = []
@@ -206,19 +208,20 @@ class Plan:
             value = abs(exact)          # laid off as computed: its round-off is no error (not "−0,00 %")
         self.entries[key] = Entry(key, kind, mm, value, abs(exact), vec_mm * self.mu, exact, abs(exact))
 
-    def rate(self, link: str, value: float, exact: float, basis: float) -> None:
-        """ω (or ε) of a link: its measured signed value beside the exact one."""
-        self.rates[link], self.basis[link] = value, basis
+    def rate(self, link: str, value: float, exact: float, basis: float, drawn: float | None = None) -> None:
+        """ω (or ε) of a link: its measured signed value beside the exact one; ``drawn`` the length
+        (mm) of the plan's relative vector it was read from, as drawn."""
+        self.rates[link], self.basis[link], self.read_mm[link] = value, basis, drawn
         if self.sc.rotating.get(link) and link != self.sc.mech.crank.link:
             sense = None if value == 0 else ("ccw" if value > 0 else "cw")
             key = f"{self.rate_kind}_{link}"
             self.entries[key] = Entry(key, self.rate_kind, None, abs(value), abs(exact), value, exact,
-                                      basis, sense)
+                                      basis, sense, drawn=drawn)
 
     def inherit(self, link: str, carrier: str) -> None:
         """A slider turns with the body that carries its guide: the same ω and ε."""
         exact = self.exact.omega(link) if self.kind == "velocity" else self.exact.eps(link)
-        self.rate(link, self.rates[carrier], exact, self.basis[carrier])
+        self.rate(link, self.rates[carrier], exact, self.basis[carrier], self.read_mm.get(carrier))
 
     def turn_rate(self, link: str, X: complex, C: complex, rel_mm: complex, length: float,
                   exact_rel: complex) -> None:
@@ -226,7 +229,7 @@ class Plan:
         _, value = self.read(rel_mm)
         signed = math.copysign(value / length, cross(C - X, rel_mm)) if value else 0.0
         exact = self.exact.omega(link) if self.kind == "velocity" else self.exact.eps(link)
-        self.rate(link, signed, exact, abs(exact_rel))
+        self.rate(link, signed, exact, abs(exact_rel), abs(rel_mm))
 
     # drawing -----------------------------------------------------------------------------------------
     def vector(self, a: complex, b: complex, role: str, step: str) -> int | None:

@@ -281,7 +281,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
     out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
                                              tangents_note(f, lang), approximate_note(doc, lang, formula=True),
-                                             design_note(doc, lang)) if line]
+                                             design_note(doc, lang), motor_note(doc, lang)) if line]
     m = doc["motor"]
     ratio = "i = nн/n₁" if lang == "uk" else "i = nn/n₁"
     out += ["", f"{w['motor']}: {m['name'] if lang == 'uk' else latin(m['name'])} ({w['chosen'] if m['chosen'] else w['given']}), {m['power_kW']:g} {u['kW']}, "
@@ -503,6 +503,43 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
     return (f"The design's answer is {answer}: the motor's M(ω) falls with speed and takes up part of the "
             f"fluctuation; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
                                                                     ", the course's model"))
+
+
+def motor_note(doc: dict[str, Any], lang: str) -> str | None:
+    """One sentence on why a flywheel where the motor is sized by the peak (review 13 #18: "why a
+    2,65 kg·m² flywheel when the 5,5 kW motor carries the peak anyway?"). Seed 003's power rule,
+    P = M*_c max·ω_1/η, lets the motor carry the cycle's peak load (the mean power is M*_d·ω_m); how
+    evenly the crank turns is set by the inertia — on its working branch M = Aω + B (A < 0) the
+    motor's moment grows only as ω falls —, so the equation of motion with this motor still asks
+    for its flywheel (Table 2's last row), or, where it keeps δ_дв < δ alone, none. None where no
+    method needs a flywheel (nothing to ask)."""
+    fw, m = doc["flywheel"], doc["motor"]
+    if not fw["needed"]:
+        return None
+    uk = lang == "uk"
+    kw = "кВт" if uk else "kW"
+    peak, mean = sig(m["power_needed_kW"], lang), sig(doc["moment_driving"] * doc["omega_mean"] / 1000.0, lang)
+    md, mc = ("M^*_д", "M^*_{с max}") if uk else ("M^*_d", "M^*_{c max}")
+    rule = f"P = {mc}·ω_1/η = {peak} {kw}"
+    d = num(doc["delta"], lang)
+    if fw["motor"] > 0:
+        J = flywheel_text(fw["motor"], lang, flywheel_decimals(doc))
+        if uk:
+            return (f"Чому маховик, коли двигун вибрано за піком: правило {rule} (середня {md}·ω_m = {mean} {kw}) "
+                    f"лише дає двигуну подолати пікове навантаження, а нерівномірність ходу визначає інерція — момент "
+                    f"двигуна M(ω) зростає лише зі спадом ω — тож для δ = {d} і з цим двигуном потрібен маховик "
+                    f"{J} кг·м²")
+        return (f"Why a flywheel when the motor is sized by the peak: the rule {rule} (the mean {md}·ω_m = {mean} {kw}) "
+                f"only lets the motor carry the peak load, while how evenly the crank turns is set by the inertia — the "
+                f"motor's M(ω) grows only as ω falls — so δ = {d} still needs a {J} kg·m² flywheel with this motor")
+    dm = f"{motor_delta(lang)} = {num(m['motion']['delta'], lang, 3)} < {d}"
+    if uk:
+        return (f"Чому маховик, коли двигун вибрано за піком: правило {rule} (середня {md}·ω_m = {mean} {kw}) дає "
+                f"двигуна, чий M(ω) круто зростає зі спадом ω, тож він сам тримає {dm} — з ним маховик не потрібен; "
+                f"маховик таблиці 2 — для сталого {md}")
+    return (f"Why a flywheel when the motor is sized by the peak: the rule {rule} (the mean {md}·ω_m = {mean} {kw}) "
+            f"gives a motor whose M(ω) grows steeply as ω falls, so it holds {dm} alone — no flywheel with it; "
+            f"Table 2's flywheel is for a constant {md}")
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------

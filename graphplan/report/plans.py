@@ -35,7 +35,8 @@ def ordered(plan: Plan) -> list[Entry]:
 def entry_json(e: Entry, mu: float | None = None) -> dict[str, Any]:
     """One entry: mm, value, analytic, error_pct; ω and ε add their sense and ``from_mm``, the
     drawn length of the plan vector they are read from (v_BA for ω_AB, a^τ_BA for ε_AB) — the
-    length a short-vector rule judges them by."""
+    length a short-vector rule judges them by, the one the table's row of that vector reads (a
+    closing a^τ drawn 5.9 mm where the exact is 5.3: "6,0 мм", not "5,5")."""
     out: dict[str, Any] = {}
     if e.mm is not None:
         out["mm"] = e.mm
@@ -44,7 +45,9 @@ def entry_json(e: Entry, mu: float | None = None) -> dict[str, Any]:
     out["error_pct"] = e.error_pct
     if e.kind in ("omega", "epsilon"):
         out["sense"] = e.sense
-        if mu:
+        if e.drawn is not None:
+            out["from_mm"] = e.drawn
+        elif mu:
             out["from_mm"] = e.basis / mu
     return out
 

@@ -19,7 +19,7 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, chords_note, design_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+from graphplan.report.dynamics import (approximate_note, chords_note, design_note, motor_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
                                        flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
                                        redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
@@ -192,7 +192,17 @@ def motor_table(doc: dict, lang: str) -> Record:
              f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             # the motor shaft's (review 13 #18: "on the cycle" did not say which shaft)
             ["M_{max} на валу двигуна, Н·м" if uk else "M_{max} on motor shaft, N·m", fmt(m["moment_peak"], lang)]]
-    return table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
+    rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
+    said = motor_note(doc, lang)            # why a flywheel beside a motor sized by the peak (review 13 #18)
+    if said:
+        x0, y0, x1, _ = rec.bounds()
+        for k, part in enumerate(wrap_markup(said, MOTOR_NOTE_W, 2.5)):
+            rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                      step="motor and flywheel")
+    return rec
+
+
+MOTOR_NOTE_W = 116.0    # mm: the motor's note wrapped as wide as Table 2's over it (its 120 mm less the indent)
 
 
 CLOSURE_FLOOR = 1e-9

@@ -115,7 +115,13 @@ def why(e: dict, sym: str, pos: dict, plan: str, lang: str, precision: float = 0
     if mm is not None and mm < SHORT_MM:
         read = measure(mm, precision)
         text = written(read, step_decimals(precision), lang) if precision > 0 else num(mm, lang, 3)
-        return w('why_short' if e.get("mm") is not None else 'why_short_from', sym=sym, mm=text)
+        if e.get("mm") is not None:
+            return w('why_short', sym=sym, mm=text)
+        # ω or ε read from a relative vector: the lab's why — the ruler's half division is a large share
+        # of it, and the intersection it is found by closes the errors of the vectors laid before it
+        # (SIXBAR12's ε4 = ε5 +11,48 % off a^τ_C5O3 drawn 5.9 mm where the exact is 5.3)
+        share = fixed(100.0 * 0.5 * precision / read, lang, 1) if precision > 0 and read > 0 else "—"
+        return w('why_short_from', sym=sym, mm=text, share=share)
     angles = [a["angle_deg"] for a in pos.get("warning_angles", []) if a["plan"] == plan and a["kind"] == "lines"]
     if angles:
         return w('why_angle', sym=sym, angle=fixed(min(angles), lang, 1))
@@ -195,16 +201,20 @@ def acceleration_table(pos: dict, n: int, lang: str, precision: float = 0.5) -> 
     rows = [[w('quantity'), unit("mm", lang), w('graphical'), w('analytic'), w('error')]]
     items = list(pos.get("acceleration", {}).items())
     cells = acceleration_cells(pos, lang, precision)    # the terminal's, cell for cell; δ from the printed pair
-    notes = []
+    notes: dict = {}
     ruler = step_decimals(precision) if precision > 0 else 2
     for key, e in items:
         value, truth, delta = cells[key]
         cell = percent(delta, lang=lang)
         if delta is not None and abs(round(delta, 2)) > LAB_LIMIT:     # the printed δ past 5 %
             cell += MARK
-            notes.append(w('mark_cell', why=why(e, _symbol(key, "a", e), pos, "acceleration", lang, precision)))
+            # one footnote for the quantities one reason covers (ε4 = ε5 of a slider and its slotted
+            # lever, read off the one a^τ: "ε₄, ε₅: …", not the reason twice)
+            said = why(e, "\x00", pos, "acceleration", lang, precision)
+            notes.setdefault(said, []).append(_symbol(key, "a", e))
         rows.append([_symbol(key, "a", e), "—" if e.get("mm") is None else written(e["mm"], ruler, lang),
                      value, truth, cell])
+    notes = [w('mark_cell', why=said.replace("\x00", ", ".join(syms))) for said, syms in notes.items()]
     if pos["index"] is not None:
         where = pos["index"]
     else:
@@ -512,8 +522,9 @@ def _plan_value(doc_pos: dict | None, key: str, truth: float) -> float | None:
 def diagram_readings(diag, doc: dict) -> list[dict]:
     """Seed 002's step 11: s, v, a read off the diagrams at each position of the plans (the
     values the diagrams' ordinates give, as ``Diagrams.values``), beside the plans' v (Table 1) and
-    a (the acceleration plans, where drawn), and δ, % of the diagrams' readings against the exact
-    values as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
+    a (the acceleration plans, where drawn), the exact s, v, a (the analytic solver's, the truth δ is
+    of) and δ, % of the diagrams' readings against them as the lab's 5 % judges them
+    (graphic.diagrams.judged_pct)."""
     vals, errs = diag.values(), diag.position_errors()
     out_kind, name = diag.output.kind, diag.output.name
     vkey, akey = (name, name) if out_kind == "slide" else (f"omega_{name}", f"epsilon_{name}")
@@ -524,6 +535,8 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
         pos = by_index.get(n, {})
         rows.append({"position": n, "s": float(vals["s"][k]), "v": float(vals["v_at"][k]),
                      "a": float(vals["a_at"][k]),
+                     "s_exact": float(diag.truth["s"][k]), "v_exact": float(diag.truth["v_at"][k]),
+                     "a_exact": float(diag.truth["a_at"][k]),
                      "v_plan": _plan_value(pos.get("velocity"), vkey, float(diag.truth["v_at"][k])),
                      "a_plan": _plan_value(pos.get("acceleration"), akey, float(diag.truth["a_at"][k])),
                      "delta_s": float(errs["s"][i]), "delta_v": float(errs["v_at"][i]),
@@ -536,16 +549,18 @@ READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: th
 
 def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
     """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
-    v and a under them, δ, % of the exact; a δ past the lab's 5 % marked (the notes say why). The
+    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
+    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the exact;
+    a δ past the lab's 5 % marked (the notes say why). The
     positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
     ``READINGS_COLUMNS`` a block, the blocks one under another."""
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
     units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
     us, uv, ua = (unit(u, lang) for u in units)
-    plans = w('readings_plan')
-    heads = [w('no'), f"{s_}, {us}", f"{v_}, {uv}", plans, f"δ_{{{diag.symbols[1]}}}, %", f"{a_}, {ua}", plans,
-             f"δ_{{{diag.symbols[2]}}}, %"]
+    plans, exact = w('readings_plan'), w('readings_exact')
+    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
     def pct(e: float) -> str:
@@ -570,6 +585,8 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     for plan, own in (("v_plan", "v"), ("a_plan", "a")):
         if any(r[plan] for r in read):
             d[plan] = d[own] = min(d[plan], d[own])
+    for own in ("s", "v", "a"):          # the exact row to its reading's decimals: like with like
+        d[f"{own}_exact"] = d[own]
 
     def cell(r: dict, key: str) -> str:
         """A reading in its row's decimals — a 0 mm ordinate too (0,0 beside −10,6, not a bare 0:
@@ -579,8 +596,9 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         if round(r[key], d[key]) == 0:
             return fixed(0.0, lang, d[key])
         return written(r[key], d[key], lang)
-    cols = [[str(r["position"]), cell(r, "s"), cell(r, "v"), cell(r, "v_plan"), pct(r["delta_v"]),
-             cell(r, "a"), cell(r, "a_plan"), pct(r["delta_a"])] for r in read]
+    cols = [[str(r["position"]), cell(r, "s"), cell(r, "s_exact"), cell(r, "v"), cell(r, "v_plan"),
+             cell(r, "v_exact"), pct(r["delta_v"]), cell(r, "a"), cell(r, "a_plan"), cell(r, "a_exact"),
+             pct(r["delta_a"])] for r in read]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):

@@ -268,6 +268,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin no": ('№', '№'),
     "kin readings": ('Таблиця {n}. Діаграми в положеннях поруч з планами', 'Table {n}. Diagrams read at the positions, beside the plans'),
     "kin readings_plan": ('план', 'plan'),
+    "kin readings_exact": ('точно', 'exact'),
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
@@ -640,7 +641,10 @@ WORDS: dict[str, tuple[str, str]] = {
                   "from the x axis"),
     "kin turn_at": ("φ = {turn}° від положення 0", "φ = {turn}° from position 0"),
     "kin why_short": ("{sym}: короткий вектор ({mm} мм)", "{sym}: a short vector ({mm} mm)"),
-    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм)", "{sym}: read from a short vector ({mm} mm)"),
+    "kin why_short_from": ("{sym}: прочитано з короткого вектора ({mm} мм): пів поділки лінійки — {share} % його, "
+                           "а знайдений перетином, він несе похибки векторів перед ним",
+                           "{sym}: read from a short vector ({mm} mm): half a ruler division is {share} % of it, "
+                           "and found by the intersection it carries the errors of the vectors before it"),
     "kin why_angle": ("{sym}: напрямні лінії перетинаються під малим кутом ({angle}°)",
                       "{sym}: the direction lines cross at a small angle ({angle}°)"),
     "kin why_ruler": ("{sym}: точність лінійки", "{sym}: the ruler's precision"),
