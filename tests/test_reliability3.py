@@ -286,10 +286,12 @@ def test_batched_search_finds_the_angles_one_search_finds(tmp_path, keys):
 
 @pytest.mark.slow
 def test_a_faculty_table_of_100000_rows_is_graded_in_seconds(tmp_path, keys):
+    """The check's own work (this process's CPU time; the grading runs in it, one process) stays under
+    30 s: wall time measured the machine's load (40 s on two cores shared by seven runs, stop 45)."""
     path = student(tmp_path, big_table(100_000))
-    t = time.perf_counter()
+    t = time.process_time()
     code, out, err = run(["check", str(keys), str(path), "--json"])
-    took = time.perf_counter() - t
+    took = time.process_time() - t
     assert code == 0, err
     assert len(json.loads(out)["rows"]) == 100_000
     assert took < 30, took
