@@ -717,7 +717,15 @@ class Plan:
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
-    return {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
+    """The drawings' cells by their families' models at the scales ``mu``; the hodographs each in
+    the largest one's cell, as the sheet sets them (``_drawn_leaves``: a PUMP45 A2 set planned its
+    six hodographs, 41–97 mm tall, under the charts of sheet 2, drew them in 75 × 96 mm cells that
+    did not fit there, and took a fourth sheet for them alone, 80 % blank)."""
+    out = {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
+    if out.get("hodographs"):
+        cw, ch = max(x.w for x in out["hodographs"]), max(x.h for x in out["hodographs"])
+        out["hodographs"] = [Leaf(x.name, cw, ch) for x in out["hodographs"]]
+    return out
 
 
 def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
@@ -1260,7 +1268,11 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             for fam, i in sorted(growing, key=lambda s: fams[s[0]].rel(mu.get(key_of(*s), mu[s[0]]))):
                 key = key_of(fam, i)
                 base = mu.get(key, mu[fam])
-                nxt = fams[fam].finer(base) if fams[fam].factors else (
+                # (a set's hodographs past their one-sheet cap: a sheet they leave mostly empty
+                # draws them larger, FILL_LARGEST at most — PUMP45's A2 set drew six 40 mm
+                # hodographs in a row across an otherwise empty sheet)
+                nxt = Family.finer(fams[fam], base) if fam == "hodographs" else fams[fam].finer(base) \
+                    if fams[fam].factors else (
                     next_length(base) if fam in ("scheme", "groups") else next_round(base))
                 # the scheme never larger than the groups cut from it where it would take much
                 # of its sheet (review 6 #4, ``_scheme_aside``)
@@ -1272,7 +1284,9 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                     continue
                 trial_mu = {**mu, key: nxt}
                 trial = {k: list(v) for k, v in leaves.items()}
-                if fam in ("acceleration", "charts", "hodographs"):       # one scale: its model's cells
+                if fam == "hodographs":            # as drawn, each in the largest one's cell
+                    trial[fam] = [Leaf(x.name, *cell) for x, cell in zip(trial[fam], dr.hodograph_cells(nxt))]
+                elif fam in ("acceleration", "charts"):       # one scale: its model's cells
                     trial[fam] = [Leaf(x.name, *(v + GROW_MARGIN * (fam == "acceleration")
                                                  for v in fams[fam].size(nxt, j)))
                                   for j, x in enumerate(trial[fam])]
