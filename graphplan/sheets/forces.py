@@ -717,7 +717,15 @@ class Plan:
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
-    return {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
+    """The drawings' cells by their families' models at the scales ``mu``; the hodographs each in
+    the largest one's cell, as the sheet sets them (``_drawn_leaves``: a PUMP45 A2 set planned its
+    six hodographs, 41–97 mm tall, under the charts of sheet 2, drew them in 75 × 96 mm cells that
+    did not fit there, and took a fourth sheet for them alone, 80 % blank)."""
+    out = {fam: [f.leaf(mu[fam], f"{fam} {i}", i) for i in range(len(f.sizes))] for fam, f in nat.families.items()}
+    if out.get("hodographs"):
+        cw, ch = max(x.w for x in out["hodographs"]), max(x.h for x in out["hodographs"])
+        out["hodographs"] = [Leaf(x.name, cw, ch) for x in out["hodographs"]]
+    return out
 
 
 def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
@@ -1145,9 +1153,13 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         return _loaded(filled, dr), nat, dr
     # the set's sheets as its drawings come out drawn: the fill kept where it takes no more sheets
     # than without it (a six-bar's A2 set grew its plans to 7.5 N/mm and took a third sheet)
+    # — and the lever's growth kept where it takes no more sheets than without it, the first of the
+    # fewest (SIXBAR12's A2 set grew its lever to 153 × 212 mm where 129 × 189 was planned: the resistance chart went on
+    # to sheet 3 with the hodographs, the tables to a fourth sheet)
     plain = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, p))
-    counts = [_drawn_sheets(dr, nat, f, q) for q in (filled, plain)]
-    return _loaded(filled if counts[0] <= counts[1] else plain, dr), nat, dr
+    tries = [filled, plain, _grown_hodographs(dr, nat, f, room), p]
+    counts = [_drawn_sheets(dr, nat, f, q) for q in tries]
+    return _loaded(tries[counts.index(min(counts))], dr), nat, dr
 
 
 def _loaded(p: Plan, dr: ForceDrafter) -> Plan:
@@ -1272,7 +1284,9 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                     continue
                 trial_mu = {**mu, key: nxt}
                 trial = {k: list(v) for k, v in leaves.items()}
-                if fam in ("acceleration", "charts", "hodographs"):       # one scale: its model's cells
+                if fam == "hodographs":            # as drawn, each in the largest one's cell
+                    trial[fam] = [Leaf(x.name, *cell) for x, cell in zip(trial[fam], dr.hodograph_cells(nxt))]
+                elif fam in ("acceleration", "charts"):       # one scale: its model's cells
                     trial[fam] = [Leaf(x.name, *(v + GROW_MARGIN * (fam == "acceleration")
                                                  for v in fams[fam].size(nxt, j)))
                                   for j, x in enumerate(trial[fam])]
@@ -1296,26 +1310,46 @@ HODOGRAPHS_ROOM = 1.6     # a one-sheet composition's hodographs grown into the 
 
 
 def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
-    """A one-sheet composition's hodographs grown, every other drawing as planned, while the sheet
-    still holds them — at most ``HODOGRAPHS_ROOM`` times their cap (review 7 #9: 16 × 48 mm slivers
+    """A one-sheet composition's hodographs (or a set's, on a sheet they leave mostly empty) grown,
+    every other drawing as planned, while the sheet still holds them (a set: each drawing on its sheet) — at most ``HODOGRAPHS_ROOM`` times their cap (review 7 #9: 16 × 48 mm slivers
     whose numbers merge, in a column of a sheet left with a 600 × 60 mm empty band, review 6 #12)."""
     fam = nat.families["hodographs"]
-    if p.shape == "set" or not fam.sizes:
+    if not fam.sizes:
         return p
     leaves = _placed_leaves(dr, nat, p.mu)
     mu = p.mu["hodographs"]
     limit = fam.rel(mu) * HODOGRAPHS_ROOM if not math.isfinite(getattr(fam, "cap", math.inf)) \
         else fam.cap * HODOGRAPHS_ROOM
+    if p.shape == "set":
+        # a set's sheet the hodographs leave mostly empty (``FILL_SHARE``) draws them larger, every
+        # drawing kept on its sheet, the last to take the room (PUMP45's A2 set drew six 40 mm
+        # hodographs in a row across an otherwise empty sheet)
+        page = next((names for names in p.where if "hodographs 0" in names), ()) if p.where else ()
+        if not page or _sheet_share(_placed_leaves(dr, nat, p.mu), page, f) >= FILL_SHARE:
+            return p
+        limit = FILL_LARGEST["hodographs"]
     while True:
         nxt = Family.finer(fam, mu)
         if nxt is None or fam.rel(nxt) > limit + 1e-9:
             break
         trial = {**leaves, "hodographs": [Leaf(x.name, *cell) for x, cell in
                                           zip(leaves["hodographs"], dr.hodograph_cells(nxt))]}
-        if not _fits(nat, f, p, trial):
+        if not (_drawings_kept(nat, f, p, trial) if p.shape == "set" else _fits(nat, f, p, trial)):
             break
         mu = nxt
     return replace(p, mu={**p.mu, "hodographs": mu}) if mu != p.mu["hodographs"] else p
+
+
+def _drawings_kept(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool:
+    """Whether a set with these drawings' sizes takes no more sheets and keeps every drawing on its
+    sheet (the tables and notes may move on: PUMP45's A3 set planned Table 1 beside the hodographs
+    and drew it with the other tables on the last sheet, the hodographs alone)."""
+    out = _where(_set_pages(nat, f, leaves, p.tables, p.plan_first, p.gap))
+    if out is None or len(out) > len(p.where):
+        return False
+    drawn = lambda where: [tuple(n for n in page if n.partition(" ")[0] in FAMILIES and not n.endswith("table"))
+                             for page in where]  # noqa: E731
+    return drawn(out) == drawn(p.where)[:len(out)] and all(not page for page in drawn(p.where)[len(out):])
 
 
 MAIN = ("scheme", "groups", "forces", "acceleration", "lever")
