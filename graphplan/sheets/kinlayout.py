@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
+from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
@@ -271,7 +271,7 @@ def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
     notes' room left its acceleration plan 40 mm, not 71)."""
     near: list[dict[str, float]] = []
     first = composed(dr, nat, f, False, near)
-    if first is not None and not any(trial_score(nat, mu) > plan_score(nat, first)[:3] for mu in near):
+    if not near or first is not None and not any(trial_score(nat, mu) > plan_score(nat, first)[:3] for mu in near):
         return first         # no trial the wider notes hold would draw the plans larger
     wider = composed(dr, nat, f, True)
     if wider is not None and (first is None or plan_score(nat, wider) > plan_score(nat, first)):
@@ -735,13 +735,13 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
                 c = min(c, k)
                 first, V = [[P, Grid(V[:k], c)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
-            return first + grid(V) + grid(A) + [[D], tail]
+            return first + grid(V) + grid(A) + [[D], Shelf(tail)]
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
         rows[-1] = [c for c in rows[-1] if c.name] + tail
     else:
-        rows.append(tail)
+        rows.append(Shelf(tail))        # the tables and notes a row of their own: broken to fill the sheet
     return rows
 
 
