@@ -175,3 +175,32 @@ def test_a_sets_notes_in_two_columns_hold_every_line_once_and_are_lower():
     assert min(xs) == 0.0 and any(x >= TITLE for x in xs)
     words = " ".join(lines_of(rec)).split()
     assert sorted(words) == sorted(" ".join(lines).split())
+
+
+def test_a_sets_tables_fill_their_sheet_in_order():
+    """Review 12 #20: the six-bar's A3 set put Tables 1 and 2 side by side on sheet 4 (a row as high
+    as Table 2, 187 mm), the top 40 % of the sheet blank, Tables 3–5 and the notes on sheet 5. The
+    tables and notes (their sizes on that set, mm) now break into the lines that put the most of them
+    on the sheet: Table 1 over Tables 2, 3, 4 — all inside the field, clear of the title block, in
+    reading order — and Table 5 with the notes on the next; as many sheets."""
+    from graphplan.drawing.layout import Shelf
+    f = form("A3")
+    region, keep, later = field_of(f), keep_out(f), later_keep(f)
+    sizes = [("velocity table", 232.0, 84.0), ("acceleration table 1", 90.0, 187.0),
+             ("acceleration table 2", 90.0, 151.0), ("dimensions table", 77.0, 89.0),
+             ("diagram readings table", 175.0, 51.0), ("notes", 376.0, 99.0)]
+    tail = [Leaf(n, w, h) for n, w, h in sizes]
+    before = flow([[Leaf("diagrams", 380.0, 200.0)], list(tail)], region, keep, later=later, ragged=True)
+    after = flow([[Leaf("diagrams", 380.0, 200.0)], Shelf(tail)], region, keep, later=later, ragged=True)
+    assert [[leaf.name for leaf, _ in page] for page in before][1] == ["velocity table", "acceleration table 1"]
+    names = [[leaf.name for leaf, _ in page] for page in after]
+    assert len(after) == len(before) == 3
+    assert names[1] == [n for n, _, _ in sizes[:4]] and names[2] == [n for n, _, _ in sizes[4:]]
+    boxes = dict((leaf.name, b) for leaf, b in after[1])
+    t1 = boxes["velocity table"]
+    for name in names[1][1:]:
+        b = boxes[name]
+        assert b[3] <= t1[1] + 1e-9 and region[1] - 1e-9 <= b[1]          # under Table 1, inside
+        assert b[1] >= later[3] - 1e-9 or b[2] <= later[0] + 1e-9          # clear of the title block
+    lefts = [boxes[n][0] for n in names[1][1:]]
+    assert lefts == sorted(lefts)

@@ -53,6 +53,45 @@ def test_the_position_plan_is_the_a1_sheets_main_drawing(name):
             assert main > area(*nat.families[fam].size(p.mu[fam])), (name, fam)
 
 
+def taller(nat, mm: float, lines: int = 0):
+    """The sizes ``nat`` with Table 3 (the dimensions, its footnotes under it) ``mm`` taller and
+    ``lines`` long lines more of notes in each language."""
+    from dataclasses import replace
+    tables = {k: [(n, w, h + (mm if n.startswith("dimensions") else 0.0)) for n, w, h in v]
+              for k, v in nat.tables.items()}
+    return replace(nat, tables=tables, notes=[list(ls) + ["Centres of mass S at the middles " * 3] * lines
+                                              for ls in nat.notes])
+
+
+@pytest.mark.parametrize("mm, lines", [(6.0, 0), pytest.param(12.0, 0, marks=pytest.mark.slow),
+                                       pytest.param(0.0, 2, marks=pytest.mark.slow)])
+def test_a_line_more_of_notes_keeps_the_position_plans_scale(mm, lines):
+    """The lead's stop 44: a 4-mm footnote under Table 3 took the coulisse's A1 position plan from
+    1:2.5 to 1:5 (its stacked composition 1.1 mm too tall by the tables' column beside 37.7 mm spare
+    across). Its tables 6–12 mm taller, or two long lines more of notes in each language, keep the
+    scale and the plans legible (a footnote's 6 mm: every drawing at least 0.9 as large) — the notes
+    wrapped wider where the sheet has the room across."""
+    from graphplan.sheets.kinlayout import legible, one_sheet, sizes_of
+    f = form("A1")
+    p, nat, dr = plan(study_of("COULISSE"), f, SheetOptions(sheet="kinematics"))
+    assert p.mu["position"] == pytest.approx(0.0025)
+    more = taller(nat, mm, lines)
+    q = one_sheet(dr, more, f)
+    assert q.mu["position"] == p.mu["position"] and legible(more, q.mu), q
+    if mm <= 6.0 and not lines:
+        assert all(a >= 0.9 * b for a, b in zip(sizes_of(more, q.mu, q.diagrams), sizes_of(nat, p.mu, p.diagrams)))
+
+
+@pytest.mark.slow
+def test_the_notes_kept_at_the_columns_width_were_the_cliff():
+    """The same 6 mm composed with the notes at the column's width only: the position plan 1:5 —
+    what the test above guards against (it can fail)."""
+    from graphplan.sheets.kinlayout import composed
+    f = form("A1")
+    p, nat, dr = plan(study_of("COULISSE"), f, SheetOptions(sheet="kinematics"))
+    assert composed(dr, taller(nat, 6.0), f).mu["position"] >= 2 * p.mu["position"]
+
+
 @pytest.mark.parametrize("name, fmt", [("crank_slider", "A3"), ("crank_slider", "A2"), ("shaper", "A2")])
 def test_a_sets_diagrams_are_drawn_readably_high(name, fmt):
     """The crank-slider's A3 and A2 sets and the shaper's A2 set (s 25 mm before): each of s, v, a

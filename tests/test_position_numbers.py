@@ -131,3 +131,33 @@ def test_examples_numbers_at_their_points(name):
 @pytest.mark.parametrize("name", ["shaper", "slotter"])
 def test_more_examples_numbers_at_their_points(name):
     _check((EXAMPLES / f"{name}.toml").read_text(encoding="utf-8"), None, None)
+
+
+def test_a_pivots_letter_leaves_a_small_crank_circles_numbers_their_room():
+    """Issue 32 (a generated four-bar's A2 set, hypothesis): the crank 24.3 mm long at 1:4 draws its
+    circle 12 mm across; O₁ went out on a leader 1.3 mm from the pin's position 8, whose number then
+    found no spot but on a leader through that O₁ (sheet 1: 'O_1' ↔ line). Now the pivot's letter
+    keeps clear of the pin's positions as a letter keeps clear of its rivals: no label touches a line
+    or a label, in either language, O₁ reads as O1's and every number drawn as its own point's."""
+    import math
+
+    from coursework_scenes import four_bar
+    from graphplan.drawing.labels import collisions
+    d, beta = math.hypot(0.0968, 0.0092), math.degrees(math.atan2(0.0092, 0.0968))
+    text = four_bar(0.0243, d, 0.0914, 0.1032, 100.0, 50.0, beta, False, (1.024, 0.1174), 1000.0)
+    plans = build_plans(scene_study(text), mu_l=0.004)
+    sc = plans.scheme
+    pins = [where(sc, p.layout, sc.body_of("A"), "A") for p in plans.positions]
+    for lang in ("uk", "en"):
+        rec = position_record(plans, lang=lang)
+        assert collisions(rec) == [], lang
+        letter = next(q for q in rec.items if q.kind == "text" and q.text == "O_1")
+        box = letter.ink()
+        led = [s for s in rec.items if s.kind == "segment" and s.role == "label"
+               and min(_gap(box, complex(*e)) for e in s.points) < 1.2]
+        start = min((complex(*e) for s in led for e in s.points), key=abs) if led else None
+        assert (abs(start) < 1.5) if led else _gap(box, 0j) < min(_gap(box, z) for z in pins), lang
+        readings = _read(rec, plans)
+        assert not [(n, seen[0]) for n, mine, seen, _ in readings
+                    if min(abs(seen[1] - m) for m in mine) > (SAME if seen[0] == n else ONE_DOT)]
+        assert len(readings) >= len(pins)          # the pin's twelve at least (B's may be left out)

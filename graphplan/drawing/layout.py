@@ -325,6 +325,65 @@ def _prefix(items: list[Node], y: float, bottom: float, room, width, over=None) 
     return fit, height
 
 
+class Shelf(list):
+    """A row of ``flow`` whose items (a set's tables and notes, in order) are broken into lines
+    where that puts the most of them on the sheet being filled, not wherever the next one no longer
+    fits across: the six-bar's A3 set put Tables 1 and 2 side by side (a row 187 mm high) with the
+    top 40 % of its sheet blank and Tables 3–5 on the next; Table 1 alone over Tables 2, 3, 4 fills
+    it."""
+
+
+SHELF_MOST = 8     # a shelf of more items than this is broken as any row (2^7 ways to break 8)
+
+
+def _shelf_lines(items: list, y: float, bottom: float, gap: float, over) -> tuple[list, float]:
+    """``Shelf``'s lines on the sheet from ``y`` down: the lines any row is broken into where they
+    hold every item above ``bottom`` (not ``over`` the room); else, of the ways to break ``items``
+    into lines in order, one that puts the most of them on the sheet, in the least height (lines
+    ``L[j]`` ending before item j, in O(n²)); ((top, height, line) of each, the next line's top)."""
+    n = len(items)
+    heights = [extent(t)[1] for t in items]
+
+    def laid(breaks: list[int]) -> tuple[list, float]:
+        used, top = [], y
+        for a, b in zip(breaks, breaks[1:]):
+            h = max(heights[a:b])
+            used.append((top, h, items[a:b]))
+            top -= h + gap
+        return used, top
+    greedy, start, top = [0], 0, y      # first as any row breaks them: kept where they hold all
+    for i in range(1, n + 1):
+        h = max(heights[start:i])
+        if i < n and not over(items[start:i + 1], top, max(h, heights[i])):
+            continue
+        if top - h < bottom - 1e-9 or over(items[start:i], top, h):
+            break
+        greedy.append(i)
+        top -= h + gap
+        start = i
+    if greedy[-1] == n:
+        return laid(greedy)
+    inf = math.inf
+    least = [0.0] + [inf] * n           # the least height that lays items[:j] in lines
+    before = [0] * (n + 1)
+    for j in range(1, n + 1):
+        for i in range(j):
+            if least[i] == inf:
+                continue
+            top = y - least[i] - (gap if i else 0.0)
+            h = max(heights[i:j])
+            if top - h < bottom - 1e-9 or over(items[i:j], top, h):
+                continue
+            if top - h > y - least[j] + 1e-9:
+                least[j] = y - (top - h)
+                before[j] = i
+    j = max(k for k in range(n + 1) if least[k] < inf)
+    breaks = [j]
+    while breaks[-1] > 0:
+        breaks.append(before[breaks[-1]])
+    return laid(breaks[::-1]) if j else ([], y)
+
+
 def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP,
          later: Box | None = None, ragged: bool = False) -> list[list[tuple[Leaf, Box]]] | None:
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
@@ -401,6 +460,19 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
 
     for row in rows:
         queue = list(row)
+        while isinstance(row, Shelf) and 1 < len(queue) <= SHELF_MOST:
+            used, top = _shelf_lines(queue, y, ry0, gap, over)
+            if used:
+                page.extend(used)
+                y = top
+                queue = queue[sum(len(u[2]) for u in used):]
+            if not queue:
+                break
+            if not page:                       # alone on an empty sheet and still too large
+                return None
+            pages.append(page)
+            page, y = [], ry1
+            sheet[0] += 1
         while queue:
             taken: list[Node] = []
             height = 0.0

@@ -429,6 +429,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     centre = sum(pts.values(), 0j) / len(pts)
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
     joints = {j for link in mech.links.values() for j in link.joints}
+    pins = [joints_at(sc, l).get(crank.pin) for l in every]
+    pins = [z for z in pins if z is not None]
     # with several thick positions each one's moving joints carry its number (as thick_letters'; a
     # centre of mass, lettered at the first only, keeps its S₂), the first's too (review
     # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
@@ -437,6 +439,11 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
         # positions drawn as dots (a centre of mass is dotted at the thick positions only)
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
                        and any(abs(z - d) < 1e-6 for d in dots))
+        if name in mech.frame:
+            # a pivot's letter read as none of the crank pin's positions, which are numbered after
+            # it: a four-bar's crank circle 12 mm across had its O₁ set 1.3 mm from the pin's
+            # position 8, whose number then found no spot but on a leader through that O₁
+            rivals = tuple(z for z in pins if SAME_DOT < abs(z - X) < PIVOT_RIVALS)
         text = indexed(name) if len(thick_lays) < 2 or name in mech.frame or name not in joints else \
             at_position(name, lay.index if lay.index is not None else lay.key)
         labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
@@ -555,6 +562,7 @@ def _beside(path: list[complex], i: int, O: complex) -> complex:
     return normal if (away * normal.conjugate()).real >= 0 else -normal
 
 
+PIVOT_RIVALS = 12.0    # mm: the drawn points a fixed pivot's letter is kept from (``position_record``)
 RIVALS_WITHIN = 30.0   # mm: the other points a position number is kept from (farther ones cannot be confused)
 SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that point (an extreme on a dead centre)
 

@@ -304,7 +304,7 @@ def _checked(dr: Drafter, nat: Natural, p: Plan) -> bool:
     ok = not grown(nat.tables[p.tables], [[(n, *size_of(r)) for n, r in sheet_tables(
         dr.st, plans, dr.diagrams(p.diagrams, lang), lang, prec, p.tables)] for lang in LANGS])
     drawn = [notes_lines(dr.st, plans, dr.diagrams(p.diagrams, lang), lang, prec) for lang in LANGS]
-    if notes_height(drawn, TITLE) > notes_height(nat.notes, TITLE) + 1e-6:
+    if any(notes_height(drawn, w) > notes_height(nat.notes, w) + 1e-6 for w in {TITLE, p.notes}):
         nat.notes += drawn
         ok = False
     for fam, recs in dr.records(p.mu).items():
@@ -430,10 +430,10 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         def high(w: float) -> float:
             b = note_block(d["notes"], w).bounds()
             return b[3] - b[1]
-        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under)
-        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under)
+        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under, p.notes)
+        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under, p.notes)
         if p.shape == "split":
-            groups, width = groups_, TITLE
+            groups, width = groups_, N.w
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
                       Grid(A, p.acols, fitted=True) if A else None, C, (T, N))
         items, tab_box, notes_at = [], None, None

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Stack, column_size, extent, flow, split
+from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
@@ -66,7 +66,15 @@ class Natural:
         return self.families[family].drawn(mu)
 
     def notes_height(self, width: float) -> float:
-        return notes_height(self.notes, width)
+        """The notes' height wrapped to ``width`` (remembered while the notes are the same: a
+        composition's search asks it for each width a column is widened to)."""
+        seen, memo = self.__dict__.get("_notes_memo", (None, {}))
+        if seen != self.notes:
+            seen, memo = [list(lines) for lines in self.notes], {}
+            self.__dict__["_notes_memo"] = (seen, memo)
+        if width not in memo:
+            memo[width] = notes_height(self.notes, width)
+        return memo[width]
 
 
 def factors(k: float | tuple[float, float]) -> tuple[float, float]:
@@ -137,7 +145,7 @@ class Plan:
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     after: bool = False              # a set: the diagrams after the acceleration plans (else before)
-    notes: float = 185.0             # a set: the notes' width, mm (the title block's, ``TITLE``, or wider)
+    notes: float = 185.0             # the notes' width, mm (the title block's, ``TITLE``, or wider: ``widened``)
     under: bool = False              # one sheet: the last table across under the columns of the others
 
 
@@ -199,27 +207,43 @@ def place_tables(groups: list[list], right: float, top: float, under: bool = Fal
 
 
 def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
-                under: bool = False) -> tuple[Leaf, list[list[Leaf]], float]:
+                under: bool = False, notes: float = TITLE) -> tuple[Leaf, list[list[Leaf]], float]:
     """The tables in ``parts`` columns (``counts`` tables each, where the plan found them; ``under``:
-    the last across under the others) with the notes under them and the title block's room at the
-    foot, as one leaf for the composition; its table groups and its width."""
+    the last across under the others) with the notes under them — wrapped to the column's width, or
+    to ``notes`` mm where that is wider (``widened``) — and the title block's room at the foot, as
+    one leaf for the composition; its table groups and its width."""
     from graphplan.sheets.compose import keep_out
     groups = table_groups(tables, parts, counts, under)
     cw, ch = tables_size(groups, under)
-    width = max(cw, TITLE)
+    width = max(cw, TITLE, notes)
     foot = keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
 
 
 def split_leaves(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
-                 under: bool = False) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
+                 under: bool = False, notes: float = TITLE) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
     """The column split in two (``tree``'s "split"): the tables in ``parts`` columns (``under``: the
-    last across under the others), and the notes at the title block's width over the title block's
-    room; and the tables' groups."""
+    last across under the others), and the notes at the title block's width (or ``notes`` mm where
+    wider: ``widened``) over the title block's room; and the tables' groups."""
     from graphplan.sheets.compose import keep_out
     groups = table_groups(tables, parts, counts, under)
     foot = keep_out(f)[3] - field_of(f)[1]
-    return Leaf("tables", *tables_size(groups, under)), Leaf("notes", TITLE, notes_height(TITLE) + GAP + foot), groups
+    width = max(TITLE, notes)
+    return Leaf("tables", *tables_size(groups, under)), Leaf("notes", width, notes_height(width) + GAP + foot), groups
+
+
+NOTES_STEP = 5.0    # mm: a column widened for its notes in these steps (``widened``)
+
+
+def widened(width: float, spare: float) -> float | None:
+    """The notes' width where a composition is too tall by its column (or its notes' leaf) and has
+    ``spare`` mm across: the column ``width`` mm wide widened by the spare room, in whole
+    ``NOTES_STEP`` — its notes wrapped wider, fewer lines. The notes are the one block of a sheet
+    whose size is not a scale's step: a line more of them (the coulisse's Table 4 footnote, 4 mm)
+    made its stacked composition 1.1 mm too tall beside 37.7 mm spare across, and the position plan
+    went from 1:2.5 to 1:5. None where there is not a step to spare."""
+    wide = width + math.floor(spare / NOTES_STEP + 1e-9) * NOTES_STEP
+    return wide if wide > width + 1e-9 else None
 
 
 def _grids(n: int) -> list[int]:
@@ -238,18 +262,55 @@ DIAGRAMS_SHRUNK = (1.0, 0.8, 0.64, 0.5)   # the diagrams' size factors a sheet t
 
 
 def one_sheet(dr: Drafter, nat: Natural, f: Form) -> Plan | None:
-    """The best one-sheet composition (``one_sheet_at``) with the diagrams at their full size, else
-    at the smaller factor of ``DIAGRAMS_SHRUNK`` whose plans come out largest: a six-bar press's twelve
-    tall velocity plans, 347 × 268 mm of diagrams and four tables hold no A1 sheet at full size,
-    and A1 is one sheet. None where none holds even then."""
-    full = one_sheet_at(dr, nat, f, DIAGRAMS_SHRUNK[0])
+    """The best one-sheet composition (``composed``) with the notes at the column's width; where
+    wrapping them wider (``widened``) would have made the room for an arrangement that did not fit,
+    composed so too, and that one where it draws the plans larger (``plan_score``): a line more of
+    notes (the coulisse's Table 4 footnote, 4 mm) took its A1 position plan from 1:2.5 to 1:5. Not
+    always wider: the series' steps grow the families greedily, and more room at one trial can end
+    in a sheet worse by the same measure (a sieve's velocity plans grown 40.4 → 45.2 mm into the
+    notes' room left its acceleration plan 40 mm, not 71)."""
+    near: list[dict[str, float]] = []
+    first = composed(dr, nat, f, False, near)
+    if not near or first is not None and not any(trial_score(nat, mu) > plan_score(nat, first)[:3] for mu in near):
+        return first         # no trial the wider notes hold would draw the plans larger
+    wider = composed(dr, nat, f, True)
+    if wider is not None and (first is None or plan_score(nat, wider) > plan_score(nat, first)):
+        return wider
+    return first
+
+
+def trial_score(nat: Natural, mu: dict[str, float]) -> tuple:
+    """``plan_score``'s first three: (legible, the position plan's share, the smallest family's)."""
+    fams = [fam for fam in FAMILIES if fam != "acceleration" or nat.count["acceleration"] > 0]
+    return legible(nat, mu), main_rel(nat, mu), round(min(nat.families[fam].rel(mu[fam]) for fam in fams), 6)
+
+
+def plan_score(nat: Natural, p: Plan) -> tuple:
+    """How large a one-sheet composition draws: (legible, the position plan against its target up to
+    ``MAIN``, the smallest family's, the families' log sizes counted per drawing, the diagrams' size
+    factor) — ``one_sheet_at``'s order."""
+    fams = [fam for fam in FAMILIES if fam != "acceleration" or nat.count["acceleration"] > 0]
+    rel = [nat.families[fam].rel(p.mu[fam]) for fam in fams]
+    weight = [max(1, nat.count[fam]) for fam in fams]
+    return (legible(nat, p.mu), main_rel(nat, p.mu), round(min(rel), 6),
+            round(sum(w * math.log(r) for w, r in zip(weight, rel)), 6), min(factors(p.diagrams)))
+
+
+def composed(dr: Drafter, nat: Natural, f: Form, wide: bool = False, near: list | None = None) -> Plan | None:
+    """The best one-sheet composition (``one_sheet_at``; ``wide``, ``near``: its notes wrapped wider)
+    with the diagrams at their full size, else at the smaller factor of ``DIAGRAMS_SHRUNK`` whose
+    plans come out largest: a six-bar press's twelve tall velocity plans, 347 × 268 mm of diagrams
+    and four tables hold no A1 sheet at full size, and A1 is one sheet. None where none holds even
+    then."""
+    full = one_sheet_at(dr, nat, f, DIAGRAMS_SHRUNK[0], wide=wide, near=near)
     if full is not None and f.name in ONE_SHEET:
-        main = main_larger(dr, nat, f, full[1])
+        main = main_larger(dr, nat, f, full[1], wide, near)
         if main is not None:
             return main
     if full is not None or f.name not in ONE_SHEET:       # a smaller format makes a set instead
         return full[1] if full is not None else None
-    shrunk = [got for k in DIAGRAMS_SHRUNK[1:] if (got := one_sheet_at(dr, nat, f, k, True)) is not None]
+    shrunk = [got for k in DIAGRAMS_SHRUNK[1:]
+              if (got := one_sheet_at(dr, nat, f, k, True, wide=wide, near=near)) is not None]
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
 
 
@@ -258,8 +319,8 @@ def composed_fits(nat: Natural, f: Form, p: Plan, D: Leaf) -> bool:
     holds the diagrams' leaf ``D`` (``one_sheet_at``'s arithmetic)."""
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
-    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under)[0]
-    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under)[:2]
+    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes)[0]
+    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes)[:2]
     P = nat.leaf("position", p.mu["position"])
     V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
     A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
@@ -312,7 +373,8 @@ KEPT = 0.9        # … where every other plan keeps at least this share of its 
 GAIN = 2.0        # … and the position plan is drawn at least this many times as large
 
 
-def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
+def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False, near: list | None = None
+                ) -> Plan | None:
     """Where the sheet's main drawing, the position plan, is drawn with its crank under ``CRANK_MM``
     (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
     height kept): of those whose composition draws the position plan at least ``GAIN`` times as
@@ -326,7 +388,7 @@ def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
     was = sizes_of(nat, p.mu, p.diagrams)[:len(FAMILIES)]
     best: tuple[float, Plan] | None = None
     for k in SHORTER:
-        got = one_sheet_at(dr, nat, f, (k, 1.0))
+        got = one_sheet_at(dr, nat, f, (k, 1.0), wide=wide, near=near)
         if got is None:
             continue
         now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
@@ -345,8 +407,8 @@ def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan | None:
     return best[1] if best else None
 
 
-def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False
-                 ) -> tuple[tuple, Plan] | None:
+def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False,
+                 wide: bool = False, near: list | None = None) -> tuple[tuple, Plan] | None:
     """The best one-sheet composition with the diagrams at size factor ``k_diagrams``: for each
     lettering of the tables, each shape and each order of growth, the scales by ``choose_levels``
     (all families grown together, and ``position_first``); the legible one whose position plan is
@@ -354,7 +416,10 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     then the product of the principal segments), 3.5 mm tables where they cost no drawing a step —
     with its score. ``even``: where no arrangement is legible (the diagrams already shrunk), the
     smallest plan drawn largest first, the position plan after it — a press's position plan grown
-    first left its twelve velocity plans at p_v a = 19 mm, their letters crowding."""
+    first left its twelve velocity plans at p_v a = 19 mm, their letters crowding. ``wide``: an
+    arrangement too tall by its column with room across has the notes wrapped wider (``widened``);
+    else the scales of each trial that would then fit are noted in ``near``."""
+    near = [] if near is None else near
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     has_a = nat.count["acceleration"] > 0
@@ -405,14 +470,47 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
                     for way, C in enumerate(cols):
-                        tw, th = extent(tree(shape, P, D, vg, ag, C, halves[way]))
+                        half = halves[way]
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
+                        notes_w = TITLE
+                        if th > H + 1e-9 and tw < W - NOTES_STEP:
+                            # too tall, room across: the notes wrapped wider (``widened``) — or,
+                            # not ``wide``, only noted where that would make the room
+                            w_ = widened(half[1].w if shape == "split" else C.w, W - tw)
+                            # the tree no lower than by what its column (notes' leaf) loses: first
+                            # at the field's width (once a table arrangement), then at ``w_``
+                            C_, half_ = widen(way, W)
+                            if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
+                                C_, half_ = widen(way, w_)
+                            if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
+                                tw_, th_ = extent(tree(shape, P, D, vg, ag, C_, half_))
+                                if not wide:
+                                    if th_ <= H + 1e-9:
+                                        near.append(dict(mu))
+                                else:
+                                    C, half, tw, th, notes_w = C_, half_, tw_, th_, w_
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             if not best_fill:
-                                return (0.0, vc, ac, way)
+                                return (0.0, vc, ac, way, notes_w)
                             fill = min(W / tw, H / th)
                             if found is None or fill > found[0] + 1e-9:
-                                found = (fill, vc, ac, way)
+                                found = (fill, vc, ac, way, notes_w)
             return found
+
+        widths: dict[tuple, tuple] = {}
+
+        def lowered(shape: str, C: Leaf, half, C_: Leaf, half_) -> float:
+            """How much lower the column (the split's notes) is widened."""
+            return (half[1].h - half_[1].h) if shape == "split" else C.h - C_.h
+
+        def widen(way: int, wide: float) -> tuple[Leaf, tuple[Leaf, Leaf]]:
+            """The column and the split's halves of table arrangement ``way`` with the notes
+            ``wide`` mm wide (remembered)."""
+            if (way, wide) not in widths:
+                parts, under = ways[way]
+                widths[way, wide] = (column_leaf(f, tabs, parts, nat.notes_height, under=under, notes=wide)[0],
+                                     split_leaves(f, tabs, parts, nat.notes_height, under=under, notes=wide)[:2])
+            return widths[way, wide]
 
         for shape in SHAPES:
             current: dict[str, float] = {}
@@ -443,11 +541,11 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 first = score_of(mu, k_d, factor, shape)
                 before = sizes_of(nat, mu, k_d)
                 mu = into_room(nat, mu, lambda m, s=shape, d=D_k: arranged(m, s, D=d) is not None)
-                _, vc, ac, way = arranged(mu, shape, best_fill=True, D=D_k)
+                _, vc, ac, way, notes_w = arranged(mu, shape, best_fill=True, D=D_k)
                 parts, under = ways[way]
                 counts = tuple(len(g) for g in split(tabs[:-1] if under else tabs, parts))
                 cands.append((first, before, score_of(mu, k_d, factor, shape, True),
-                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, under=under)))
+                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, notes=notes_w, under=under)))
     if not cands:
         return None
     # the composition chosen by the series' steps; then, the room given out (``into_room``), the best
@@ -637,13 +735,13 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
                 c = min(c, k)
                 first, V = [[P, Grid(V[:k], c)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
-            return first + grid(V) + grid(A) + [[D], tail]
+            return first + grid(V) + grid(A) + [[D], Shelf(tail)]
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
         rows[-1] = [c for c in rows[-1] if c.name] + tail
     else:
-        rows.append(tail)
+        rows.append(Shelf(tail))        # the tables and notes a row of their own: broken to fill the sheet
     return rows
 
 

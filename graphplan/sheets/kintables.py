@@ -405,8 +405,7 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         notes.append(w('dims yoke', n=yoke.strip("{}")))
     # the centres at their links' middles said only beside one that has its own row (review 12's O2S3):
-    # where every centre is at its middle (the lab's default) the line costs the sheet its composition
-    # (the coulisse's A1 drew its position plan at 1:5 for the 4 mm of this footnote)
+    # where every centre is at its middle (the lab's default) the line says nothing a reader needs
     middles = middle_centres(st)
     if middles and any("S" in name for name, _ in lengths):
         notes.append(w('dims middles', names=", ".join(middles)))

@@ -29,8 +29,9 @@ def trial(rows, region: Box, keep: Box | None, later: Box | None,
     from graphplan.sheets.kinlayout import page_fill
     # a leaf's signature written out in place (most cells are leaves; a call per cell cost the lab
     # crank-slider's A3 set a quarter of its time); the sizes in the order ``own`` made them
-    key = (tuple(tuple((n.name, n.w, n.h, n.record is None) if n.__class__ is Leaf else _signature(n)
-                       for n in row) for row in rows), region, keep, later, tuple(sizes.items()))
+    key = (tuple((row.__class__.__name__,) + tuple((n.name, n.w, n.h, n.record is None) if n.__class__ is Leaf
+                                                   else _signature(n) for n in row) for row in rows),
+           region, keep, later, tuple(sizes.items()))
     if key in _TRIALS:
         return _TRIALS[key]
     out = flow(rows, region, keep, later=later, ragged=True)
