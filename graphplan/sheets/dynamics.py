@@ -193,7 +193,10 @@ def motor_table(doc: dict, lang: str) -> Record:
             # the motor shaft's (review 13 #18: "on the cycle" did not say which shaft)
             ["M_{max} на валу двигуна, Н·м" if uk else "M_{max} on motor shaft, N·m", fmt(m["moment_peak"], lang)]]
     rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
-    said = motor_note(doc, lang)            # why a flywheel beside a motor sized by the peak (review 13 #18)
+    # why a flywheel beside a motor sized by the peak (review 13 #18) is said by the terminal's
+    # `dynamics` (report.dynamics.motor_note), not under this table: its 4–6 lines cost the shaper's
+    # A1 dynamics its one sheet (3 sheets, the first holding one drawing)
+    said = None
     if said:
         x0, y0, x1, _ = rec.bounds()
         for k, part in enumerate(wrap_markup(said, MOTOR_NOTE_W, 2.5)):
