@@ -21,5 +21,3 @@ def test_the_notes_largest_error_is_one_the_tables_print():
     largest = float(re.search(r": (\d+,\d\d) %", note).group(1).replace(",", "."))
     printed = {abs(float(t.rstrip("*").replace("−", "-").replace(",", "."))) for t in words if PERCENT.match(t)}
     assert largest in printed, (note, sorted(printed)[-5:])
-    # and the tables' largest δ of a vector read at all is the one the note cites
-    assert largest >= 5.0          # this scene's a^n_DO2 (7 mm) reads −5,32 %: the note must cite it
