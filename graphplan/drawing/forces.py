@@ -321,17 +321,42 @@ def _support_direction(z: complex, links: list[tuple[complex, complex]],
     def free(d: float, half: float) -> float:
         return min([_gap_deg(d, a) for a in leaving] + [180.0]) - half
 
+    import numpy as np
+    near_all = others + [(a, b) for a, b in links if (a, b) not in others]
+
+    def segments(pairs: list[tuple[complex, complex]]) -> tuple:
+        return np.array([a for a, _ in pairs], dtype=complex), np.array([b for _, b in pairs], dtype=complex)
+    sides, every = segments(others), segments(near_all)
+
+    def near(w: np.ndarray, seg: tuple, tol: float) -> bool:
+        """Whether any point of ``w`` lies within ``tol`` of a segment (``_on_segment``, at once)."""
+        a, b = seg
+        if not len(w) or not len(a):
+            return False
+        d = b - a
+        l2 = np.abs(d) ** 2
+        t = np.clip(((w[:, None] - a[None, :]) * np.conj(d)[None, :]).real / np.where(l2 < 1e-18, 1.0, l2), 0.0, 1.0)
+        t = np.where(l2 < 1e-18, 0.0, t)
+        return bool(np.any(np.abs(w[:, None] - (a + t * d)[None, :]) <= tol))
+
+    samples = np.arange(9) / 8.0
+    memo: dict[float, bool] = {}
+
     def touches(d: float) -> bool:
+        if d in memo:
+            return memo[d]
         strokes = support_strokes(z, d)
-        for i, (p, q) in enumerate(strokes):
-            # the triangle's sides leave the pivot with the links (kept apart by angle, ``free``);
-            # the bar and the hatching clear of every line, those leaving the pivot too
-            near = others if i < 2 else others + [(a, b) for a, b in links if (a, b) not in others]
-            for k in range(9):
-                w = p + (q - p) * k / 8
-                if abs(w - z) > 1.0 and any(_on_segment(w, a, b, SUPPORT_CLEAR_MM) for a, b in near):
-                    return True
-        return False
+        # the triangle's sides leave the pivot with the links (kept apart by angle, ``free``);
+        # the bar and the hatching clear of every line, those leaving the pivot too
+        out = False
+        for group, seg in ((strokes[:2], sides), (strokes[2:], every)):
+            w = np.concatenate([p + (q - p) * samples for p, q in group])
+            w = w[np.abs(w - z) > 1.0]
+            if near(w, seg, SUPPORT_CLEAR_MM):
+                out = True
+                break
+        memo[d] = out
+        return out
 
     def arc_touches(m: float) -> bool:
         """ω1's arc (r = ``OMEGA_R_MM``, 90° about ``m``, its head 2 mm wide) near a line not at the pivot."""
