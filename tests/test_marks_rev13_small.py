@@ -15,15 +15,7 @@ from conftest import ROOT, derivative, scene_study
 from graphplan.drawing.flywheel import whole_run
 
 
-def _rows(rec) -> list[list[str]]:
-    """A table record's rows of cells (texts on one baseline, left to right), the full-width ones."""
-    rows: dict[float, list] = {}
-    for q in rec.items:
-        if q.kind == "text":
-            rows.setdefault(round(q.points[0][1], 1), []).append(q)
-    grid = [[t.text for t in sorted(r, key=lambda t: t.points[0][0])] for _, r in sorted(rows.items(), reverse=True)]
-    width = max(len(r) for r in grid)
-    return [r for r in grid if len(r) == width]
+from test_kin_marks import _table_rows as _rows  # noqa: E402  (one reader of a table's rows)
 
 
 def _number(cell: str) -> float:
