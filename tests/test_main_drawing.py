@@ -68,7 +68,7 @@ TALLER_TABLE5 = pytest.mark.xfail(strict=False, reason=(
     "15 mm taller; 6 mm more now takes its position plan 1:2.5 → 1:4 (one step, not to 1:5): open"))
 
 
-@pytest.mark.parametrize("mm, lines", [pytest.param(6.0, 0, marks=TALLER_TABLE5),
+@pytest.mark.parametrize("mm, lines", [pytest.param(6.0, 0, marks=[pytest.mark.slow, TALLER_TABLE5]),
                                        pytest.param(12.0, 0, marks=[pytest.mark.slow, TALLER_TABLE5]),
                                        pytest.param(0.0, 2, marks=[pytest.mark.slow, TALLER_TABLE5])])
 def test_a_line_more_of_notes_keeps_the_position_plans_scale(mm, lines):
