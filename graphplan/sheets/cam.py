@@ -885,14 +885,21 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
         # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
         both = own_sheet(Leaf("displacement", record=with_theta(disp.record, leaf.record)), sheet_room(region, keep))
         drawings = leaves[:at] + [both] + leaves[at + 1:]
-        for size, row in TABLE_SIZES + ((2.5, 6.0),):
-            tab = Leaf("table", record=positions_table(doc, lang, row, size))
-            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
-            again = kept_together(drawings, tab, lines, nts, region, keep, later)
-            if again is None or len(again) > len(laid) or notes_alone(again[-1]):
-                continue
+        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
             return again
     return None
+
+
+def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid):
+    """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
+    first) and the notes kept with it — each arrangement taking no more sheets than ``laid`` and
+    leaving no sheet to the notes alone, in that order."""
+    for size, row in TABLE_SIZES + ((2.5, 6.0),):
+        tab = Leaf("table", record=positions_table(doc, lang, row, size))
+        nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
+        again = kept_together(drawings, tab, lines, nts, region, keep, later)
+        if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
+            yield again
 
 
 def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep, later=None,
@@ -920,12 +927,7 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         if leaf is None:
             continue
         drawings = [leaves[0], Stack([phase, leaf]), profile]
-        for size, row in TABLE_SIZES + ((2.5, 6.0),):
-            tab = Leaf("table", record=positions_table(doc, lang, row, size))
-            nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
-            again = kept_together(drawings, tab, lines, nts, region, keep, later)
-            if again is None or len(again) > len(laid) or notes_alone(again[-1]):
-                continue
+        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
             where = [{lf.name for lf, _ in pg} for pg in again]
             if any({"phase", "pressure", "profile"} <= names for names in where):
                 return again
