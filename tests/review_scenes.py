@@ -1977,3 +1977,36 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+CAM_ROCKING46 = '''# Stop 46 (the lead's check): a rocking roller follower, the cam counter-clockwise, a parabolic rise
+# 120° and a cosine return 90°, a long far dwell, 8 divisions
+[cam]
+follower = "rocking"
+swing_deg = 24
+arm = 0.09
+centre_distance = 0.11
+roller_radius = 0.01
+phases_deg = { rise = 120, dwell_far = 60, return = 90, dwell_near = 90 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 40, return = 50 }
+rpm = 90
+direction = "ccw"
+divisions = 8
+'''
+
+CAM_TRANSLATING46 = '''# Stop 46 (cam46's second look): a translating roller follower, the cam clockwise, a negative
+# offset, a trapezoidal rise and a cycloidal return: the return's [ϑ] line through the point seen at the
+# largest angle (16) cut the phase curve, a hatched place of O seeing 17 at 32.4° > [ϑ] = 32°
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = -0.006
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 40, return = 130, dwell_near = 90 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 28, return = 32 }
+omega = 12
+direction = "cw"
+divisions = 10
+'''

@@ -479,19 +479,17 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     ends: list[complex] = []
     bounds: list[tuple[complex, complex, complex]] = []
     for ph in (0, 1):
-        # the boundary of the allowed region: through the drawn point seen from O at the largest angle
-        # to the follower's motion, at [ϑ] to it, down past O; O joined to that point
-        idx = np.flatnonzero(g.phase == ph)
-        seen = [abs(float(np.angle((O - K[k]) / -u[k]))) for k in idx]
-        k = int(idx[int(np.argmax(seen))])
-        beta = float(np.angle((O - K[k]) / -u[k]))
-        turn = math.radians(cam.allowed[ph]) * (1.0 if beta >= 0 else -1.0)
-        d = -u[k] * complex(math.cos(turn), math.sin(turn))
-        length = abs(O - K[k]) * 1.15 + 8.0
+        # the boundary of the allowed region: of the lines at ±[ϑ] to the follower's motion through the
+        # phase's drawn points, the one O is nearest (allowed_line: the textbook's tangent at [ϑ], not the
+        # line through the point seen at the largest angle, which cut the curve where that phase does not
+        # bind), drawn from its point to a little past O's foot on it
+        k, turn, d = allowed_line(K, u, np.flatnonzero(g.phase == ph), math.radians(cam.allowed[ph]), O)
+        foot = max(float(((O - K[k]) * d.conjugate()).real), 0.0)
+        length = foot + PAST_O
         end = K[k] + d * length
         # the two lines cross near O: each lettered at its own end, the ends drawn 14 mm apart at least
         # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
-        while ends and abs(end - ends[0]) < 14.0 and length < abs(O - K[k]) * 1.15 + 40.0:
+        while ends and abs(end - ends[0]) < 14.0 and length < foot + PAST_O + 32.0:
             length += 2.0
             end = K[k] + d * length
         ends.append(end)
@@ -542,6 +540,28 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
+
+
+def allowed_line(K: np.ndarray, u: np.ndarray, idx: np.ndarray, allowed: float, O: complex = 0j
+                 ) -> tuple[int, float, complex]:
+    """A phase's boundary of the region of the cam's centre: the line through a drawn point K_k at
+    ±[ϑ] (``allowed``, rad) to the follower's motion −u_k, of all the phase's points and both signs the
+    one O lies nearest inside (the smallest margin: O's signed distance from it, + on the side where
+    the line's point sees O at |ϑ| ≤ [ϑ]). For a translating follower the lines of one sign are
+    parallel and the nearest is the curve's tangent at [ϑ] (the textbook's construction); the point
+    seen at the largest angle from a chosen O is that tangent's point only where the phase binds.
+    Returns k, the signed turn from −u_k and the line's direction."""
+    best = None
+    for k in idx:
+        for sign in (1.0, -1.0):
+            d = -u[k] * cmath.exp(1j * sign * allowed)
+            margin = -sign * float(((O - K[k]) * d.conjugate()).imag)
+            if best is None or margin < best[0] - 1e-9:
+                best = (margin, int(k), sign * allowed, d)
+    return best[1], best[2], best[3]
+
+
 HATCH_STEP, HATCH_LEN = 3.0, 2.5     # mm: the strokes along a boundary line, on the region's side
 HATCH_CLEAR = 6.0                    # mm: the first stroke past O (its letter, R0 and e stand there)
 
@@ -550,28 +570,34 @@ def _hatch_region(rec: Record, bounds: list[tuple[complex, complex, complex]], O
     """The region of the cam's centre (where no drawn point is seen at more than [ϑ]) hatched along
     its two boundaries: short thin strokes at 45° on O's side of each [ϑ] line (``bounds``: its drawn
     point K, its end and its direction), from HATCH_CLEAR past O to the line's end — the wedge O is
-    chosen in, below the lines' crossing. Nothing where the lines do not cross between their points and their ends."""
+    chosen in, below the lines' crossing; where they do not cross between their points and their ends,
+    each from HATCH_CLEAR past O's foot on it to its end — in either case only where the stroke
+    stands on O's side of the other line too (the region is the two half-planes' intersection)."""
     if len(bounds) != 2:
         return
     (k0, e0, d0), (k1, e1, d1) = bounds
     den = (d0.conjugate() * d1).imag
-    if abs(den) < 1e-9:
-        return
-    t0 = ((k1 - k0).conjugate() * d1).imag / den           # k0 + t0·d0 = k1 + t1·d1
-    t1 = ((k1 - k0).conjugate() * d0).imag / den
-    for k, e, d, t in ((k0, e0, d0, t0), (k1, e1, d1, t1)):
-        length = abs(e - k)
-        if not 0.0 < t < length:
-            return
+    t0 = t1 = -1.0                                          # parallel: no crossing
+    if abs(den) > 1e-9:
+        t0 = ((k1 - k0).conjugate() * d1).imag / den       # k0 + t0·d0 = k1 + t1·d1
+        t1 = ((k1 - k0).conjugate() * d0).imag / den
+    cross = all(0.0 < t < abs(e - k) for k, e, t in ((k0, e0, t0), (k1, e1, t1)))
     for j, (k, e, d, t) in enumerate(((k0, e0, d0, t0), (k1, e1, d1, t1))):
         n = d * 1j if ((O - k) * d.conjugate()).imag > 0 else d * -1j     # toward O's side
         out = (n + d) / abs(n + d) * HATCH_LEN
-        # from past O (its letter and the e line stand by the crossing) to the line's end
-        at = max(t, ((O - k) * d.conjugate()).real) + HATCH_CLEAR
+        # from past O (its letter and the e line stand by the crossing) to the line's end; where the
+        # lines do not cross on the drawing (a rocking follower's, one phase far from binding), each
+        # from past O's foot on it
+        foot = ((O - k) * d.conjugate()).real
+        at = (max(t, foot) if cross else foot) + HATCH_CLEAR
+        ok, oe, od = bounds[1 - j]
+        inside = ((O - ok) * od.conjugate()).imag       # O's side of the other line
         while at <= abs(e - k) - 1.0:
             p = k + d * at
-            rec.segment(_pt(p), _pt(p + out), role="hatch", layer=LAYER, step=f"region {j}")
             at += HATCH_STEP
+            if abs(p - O) < HATCH_CLEAR / 2 or any(((z - ok) * od.conjugate()).imag * inside <= 0 for z in (p, p + out)):
+                continue        # by O's dot, or past the other line: not the region
+            rec.segment(_pt(p), _pt(p + out), role="hatch", layer=LAYER, step=f"region {j}")
 
 
 def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:

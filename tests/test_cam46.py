@@ -1,0 +1,68 @@
+"""Stop 46 on the cam sheet, checked on the drawing itself: the phase diagram's region of O (hatched
+along the [ϑ] lines) holds only places from which no drawn point is seen at more than its phase's
+[ϑ] — the angles measured off the record (the points K, the follower's axis or the arms' lines), not
+taken from the code that chose the lines; the notes' closing of s says what was laid back."""
+from __future__ import annotations
+
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+from graphplan.model.cam import build
+from tests.review_scenes import CAM_ROCKING46, CAM_TRANSLATING46
+from tests.test_cam_review13 import KNIFE_REV12, ROCKING_REV13
+
+
+def _construct(text: str):
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    sol = solve(build(tomllib.loads(text), "<scene>"))
+    return sol, construct(sol, None, 0.5, measure=False)
+
+
+def _steps(rec, prefix: str) -> list:
+    return [q for q in rec.items if q.step and q.step.startswith(prefix)]
+
+
+def _motion_lines(rec, n: int) -> list[complex]:
+    """The line of each division's follower motion, read off the drawing: a translating follower's
+    axis; a rocking follower's square to its arm's line (the velocity of the roller's centre)."""
+    axis = _steps(rec, "follower axis")
+    if axis:
+        a, b = (complex(*p) for p in axis[0].points)
+        return [(b - a) / abs(b - a)] * n
+    out = []
+    for k in range(n):
+        a, b = (complex(*p) for p in _steps(rec, f"arm {k}")[0].points)
+        out.append(1j * (b - a) / abs(b - a))
+    return out
+
+
+def _acute(z: complex, w: complex) -> float:
+    """The acute angle (°) between the lines along z and w."""
+    t = abs(math.degrees(np.angle(z / w)))
+    return min(t, 180.0 - t)
+
+
+@pytest.mark.parametrize("scene", [CAM_TRANSLATING46, CAM_ROCKING46, KNIFE_REV12, ROCKING_REV13])
+def test_every_hatched_place_of_O_sees_no_point_past_the_allowed_angle(scene):
+    from graphplan.drawing.cam import phase_diagram
+    sol, g = _construct(scene)
+    rec = phase_diagram(sol, g, "en")
+    K = {int(q.step.split()[1]): complex(*q.points[0]) for q in _steps(rec, "K ")}
+    n = len(K)
+    motion = _motion_lines(rec, n)
+    O = complex(*_steps(rec, "O")[0].points[0])
+    # O itself sees each point at its printed (protractor) angle's size
+    for k in range(n):
+        assert _acute(K[k] - O, motion[k]) == pytest.approx(abs(g.theta[k]), abs=0.5)
+    strokes = _steps(rec, "region ")
+    assert len(strokes) >= 6
+    worst = 0.0
+    for q in strokes:
+        tip = complex(*q.points[1])            # a place of O inside the hatched region
+        for k in range(n):
+            worst = max(worst, _acute(K[k] - tip, motion[k]) - sol.cam.allowed[int(g.phase[k])])
+    assert worst <= 0.3, worst
