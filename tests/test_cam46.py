@@ -66,3 +66,22 @@ def test_every_hatched_place_of_O_sees_no_point_past_the_allowed_angle(scene):
         for k in range(n):
             worst = max(worst, _acute(K[k] - tip, motion[k]) - sol.cam.allowed[int(g.phase[k])])
     assert worst <= 0.3, worst
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_closing_note_lays_back_only_the_errors_there_are(lang):
+    """Review of stop 46: «похибку замикання підйому Δ = 0 мм … розподілено» — a zero error laid
+    back. The note names each phase's non-zero Δ as laid back and a phase with Δ = 0 as closed."""
+    from graphplan.report.cam import WORDS, closing_line
+    from graphplan.util.words import num
+    n = lambda x, d=4: num(x, lang, d)          # noqa: E731
+    w = WORDS[lang]
+    rise, ret = ("підйом", "опускан") if lang == "uk" else ("rise", "return")
+    one = closing_line(w, "ψ", 0.0, 1.0, n)
+    assert "Δ = 1 " in one and one.count("Δ = 0)") == 1
+    laid, closed = one.split(";")                 # what was laid back; what closed as drawn
+    assert ret in laid and rise not in laid and rise in closed and "Δ = 0)" in closed
+    both = closing_line(w, "s", -1.0, 0.5, n)
+    assert "Δ = −1 " in both.replace("-", "−") and "Δ = 0)" not in both and rise in both and ret in both
+    none = closing_line(w, "s", 0.0, 0.0, n)
+    assert "Δ·k/n" not in none and "Δ = 0 " in none

@@ -110,8 +110,13 @@ WORDS = {
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
            "sharp": "штовхач із вістрям натрапляє на гострий злам",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
-           "closing": "графічне {q} замкнуто: похибку замикання підйому Δ = {r} мм (опускання {t} мм) "
-                      "розподілено по поділках пропорційно куту: y_k − Δ·k/n",
+           "closing": "графік {q} замкнуто: {which} розподілено по поділках пропорційно "
+                      "куту, y′_k = y_k − Δ·k/n{tail}",
+           "closing_one": ("похибку замикання підйому Δ = {d} мм", "похибку замикання опускання Δ = {d} мм"),
+           "closing_tail": ("; підйом замкнувся без поправки (Δ = 0)", "; опускання замкнулося без поправки (Δ = 0)"),
+           "closing_two": "похибки замикання підйому Δ = {r} мм і опускання Δ = {t} мм",
+           "closed": "графік {q} замкнувся без поправки: похибка замикання підйому й опускання Δ = 0 "
+                     "(з точністю лінійки)",
            "redrawn": "діаграми перебудовано з {n} поділками замість {f}: при {f} {q} не замкнулося на Δ = {r} мм "
                       "(підйом), {t} мм (опускання) — правило: {q} замикається в межах 2\u00a0% ходу на кресленні й "
                       "половини поділки лінійки ({b} мм)",
@@ -141,8 +146,13 @@ WORDS = {
            "concave": "concave: the working profile there an arc of radius r about it",
            "sharp": "a knife-edge follower meets a sharp corner",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
-           "closing": "the graphical {q} closed: the rise's closing error Δ = {r} mm (the return's {t} mm) laid "
-                      "back over the divisions in proportion to the turn: y_k − Δ·k/n",
+           "closing": "the graphical {q} closed: {which} laid back over the divisions in proportion to the "
+                      "turn, y′_k = y_k − Δ·k/n{tail}",
+           "closing_one": ("the rise's closing error Δ = {d} mm", "the return's closing error Δ = {d} mm"),
+           "closing_tail": ("; the rise closed as drawn (Δ = 0)", "; the return closed as drawn (Δ = 0)"),
+           "closing_two": "the closing errors Δ = {r} mm (rise) and Δ = {t} mm (return)",
+           "closed": "the graphical {q} closed as drawn: the closing error of the rise and of the return "
+                     "Δ = 0 (to the ruler)",
            "redrawn": "the diagrams redrawn with {n} divisions instead of {f}: at {f} {q} missed its closing by "
                       "Δ = {r} mm (rise), {t} mm (return) — the rule: {q} closes within 2\u00a0% of the stroke drawn "
                       "and the ruler's half division ({b} mm)",
@@ -256,8 +266,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     h1=n(sc["H1_mm"]), h2=n(sc["H2_mm"])))
     close = doc.get("closing_mm")
     if close:
-        lines.append(w["closing"].format(q=symbols(rocking)["s"], r=n(close["rise"], 3).replace("-", "−"),
-                                         t=n(close["return"], 3).replace("-", "−")))
+        lines.append(closing_line(w, symbols(rocking)["s"], close["rise"], close["return"], n))
     again = doc.get("redrawn")
     if again and again.get("divisions_first_given"):
         first = again["closing_mm_first"]
@@ -272,6 +281,21 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
     return [x[:1].upper() + x[1:] for x in lines]       # each a sentence: a capital first letter
+
+
+def closing_line(w: dict, q: str, rise: float, ret: float, n) -> str:
+    """The notes' line on the closing of s: the phases whose error Δ was laid back, each with its Δ,
+    and a phase that closed as drawn said to have (Δ = 0, nothing laid back — not «its error Δ = 0
+    laid back»); ``n`` formats a number."""
+    sign = lambda x: n(x, 3).replace("-", "−")              # noqa: E731
+    missed = [ph for ph, d in enumerate((rise, ret)) if d != 0]
+    if not missed:
+        return w["closed"].format(q=q)
+    if len(missed) == 1:
+        ph = missed[0]
+        return w["closing"].format(q=q, which=w["closing_one"][ph].format(d=sign((rise, ret)[ph])),
+                                   tail=w["closing_tail"][1 - ph])
+    return w["closing"].format(q=q, which=w["closing_two"].format(r=sign(rise), t=sign(ret)), tail="")
 
 
 def _divisions_uk(k: int) -> str:
