@@ -46,7 +46,8 @@ def _acute(z: complex, w: complex) -> float:
     return min(t, 180.0 - t)
 
 
-@pytest.mark.parametrize("scene", [CAM_TRANSLATING46, CAM_ROCKING46, KNIFE_REV12, ROCKING_REV13])
+@pytest.mark.parametrize("scene", [CAM_TRANSLATING46, CAM_ROCKING46, KNIFE_REV12, ROCKING_REV13],
+                         ids=["translating46", "rocking46", "knife_rev12", "rocking_rev13"])
 def test_every_hatched_place_of_O_sees_no_point_past_the_allowed_angle(scene):
     from graphplan.drawing.cam import phase_diagram
     sol, g = _construct(scene)
@@ -85,3 +86,19 @@ def test_the_closing_note_lays_back_only_the_errors_there_are(lang):
     assert "Δ = −1 " in both.replace("-", "−") and "Δ = 0)" not in both and rise in both and ret in both
     none = closing_line(w, "s", 0.0, 0.0, n)
     assert "Δ·k/n" not in none and "Δ = 0 " in none
+
+
+def test_the_smallest_base_radius_is_read_where_it_is_drawn():
+    """R0 is measured as |OC₀| on the phase diagram — a translating follower's drawn at μ_s — so its
+    reading is the drawn value to the ruler's half division there (0.5 mm at μ_s), not at the
+    profile's coarser μ_l (stop 46: 65.897 mm printed «графічно 65,5», −0.6 %, of a drawn 65.6)."""
+    from graphplan.drawing.cam import phase_scale
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import _phase_diagram_radius, construct
+    sol = solve(build(tomllib.loads(CAM_TRANSLATING46), "<scene>"))
+    g = construct(sol, None, 0.5)
+    mu = phase_scale(sol, g)
+    assert mu == g.mu_s < g.mu_l
+    drawn = _phase_diagram_radius(sol, g.phi, g.phase, g.s, g.v)       # the drawn points' own R0
+    assert abs(g.R0_min - drawn) <= 0.25 * mu + 1e-12
+    assert (g.R0_min / mu / 0.5) == pytest.approx(round(g.R0_min / mu / 0.5), abs=1e-6)

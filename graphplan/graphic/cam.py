@@ -226,7 +226,12 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     # the profile about 200 mm across: its largest radius 100 mm at a standard μ_l
     largest = float(np.max(np.abs(profile(cam, sol.geometry, np.linspace(0.0, 360.0, 721))["P"])))
     mu_l = nice(largest / (PROFILE_MM * profile_size))
-    R0_min = float(read(R0_min / mu_l, precision)) * mu_l
+    # R0 is measured where it is drawn: |OC₀| on the phase diagram, a translating follower's at μ_s (its s
+    # axis reads across from the s diagram's), a rocking follower's at the profile's μ_l (phase_scale;
+    # the sheet may draw it larger, the reading kept the terminal's). Stop 46: read at μ_l, the
+    # translating phase diagram's 164.74 mm (65.897 mm at μ_s = 0.4 mm/mm) was printed 65.5 mm, −0.6 %
+    mu_read = mu_l if cam.rocking else mu_s
+    R0_min = float(read(R0_min / mu_read, precision)) * mu_read
     prof = profile(cam, sol.geometry, phi, s_g, v_g, np.zeros_like(phi))
     radius_mm = read(prof["radius"] / mu_l, precision)
     theta = np.round(prof["theta"] * 2) / 2 if precision > 0 else prof["theta"]   # a protractor's ½°
