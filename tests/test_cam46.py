@@ -102,3 +102,23 @@ def test_the_smallest_base_radius_is_read_where_it_is_drawn():
     drawn = _phase_diagram_radius(sol, g.phi, g.phase, g.s, g.v)       # the drawn points' own R0
     assert abs(g.R0_min - drawn) <= 0.25 * mu + 1e-12
     assert (g.R0_min / mu / 0.5) == pytest.approx(round(g.R0_min / mu / 0.5), abs=1e-6)
+
+
+@pytest.mark.parametrize("scene", [CAM_ROCKING46, ROCKING_REV13], ids=["rocking46", "rocking_rev13"])
+def test_a_rocking_phase_diagram_draws_O_on_its_arc_about_the_pivot(scene):
+    """With a given, O is chosen on the arc of radius a about the arm's pivot: the arc drawn through O
+    is centred where the drawn arms' lines meet (the pivot, off the drawing), its radius |O₁O| = a at
+    the diagram's scale."""
+    from graphplan.drawing.cam import phase_diagram
+    sol, g = _construct(scene)
+    rec = phase_diagram(sol, g, "en")
+    (a0, a1), (b0, b1) = ([complex(*p) for p in _steps(rec, f"arm {k}")[0].points] for k in (1, len(g.phi) - 3))
+    da, db = a1 - a0, b1 - b0
+    t = ((b0 - a0).conjugate() * db).imag / (da.conjugate() * db).imag
+    pivot = a0 + t * da                                     # the arms' lines meet at the pivot
+    O = complex(*_steps(rec, "O")[0].points[0])
+    arc = [complex(*p) for p in _steps(rec, "O locus")[0].points]
+    mu = rec.scales["mu_phase"]
+    assert abs(O - pivot) == pytest.approx(sol.cam.centre_distance / mu, rel=1e-3)
+    assert min(abs(z - O) for z in arc) < 0.5
+    assert max(abs(abs(z - pivot) - abs(O - pivot)) for z in arc) < 0.1

@@ -502,6 +502,16 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # line, unlettered, and reads as that line drawn twice (review 12 #16, review 13 #15); the region
     # of O hatched along both lines below their crossing instead, as the lab draws it
     _hatch_region(rec, bounds, O)
+    if cam.rocking:
+        # O's locus: the arc of radius a about the arm's pivot (off the drawing), on which O is chosen in
+        # the region — turning O about the pivot turns the arm's start ψ0 and leaves every angle drawn
+        # (the textbook's construction where a is given); dash-dot as a centre's path, lettered a
+        A = cam.centre_distance / mu
+        span = LOCUS_MM / abs(A)
+        t = math.pi + np.linspace(-span, span, 41)
+        arc = A + abs(A) * np.exp(1j * t)
+        rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
+        labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
@@ -540,6 +550,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
 
 
