@@ -26,6 +26,11 @@ def _steps(rec, prefix: str) -> list:
     return [q for q in rec.items if q.step and q.step.startswith(prefix)]
 
 
+def _O(rec) -> complex:
+    """The cam's centre O as the phase diagram draws it (its dot)."""
+    return complex(*next(q for q in rec.items if q.step == "O" and q.kind == "point").points[0])
+
+
 def _motion_lines(rec, n: int) -> list[complex]:
     """The line of each division's follower motion, read off the drawing: a translating follower's
     axis; a rocking follower's square to its arm's line (the velocity of the roller's centre)."""
@@ -35,7 +40,7 @@ def _motion_lines(rec, n: int) -> list[complex]:
         return [(b - a) / abs(b - a)] * n
     out = []
     for k in range(n):
-        a, b = (complex(*p) for p in _steps(rec, f"arm {k}")[0].points)
+        a, b = (complex(*p) for p in next(q for q in rec.items if q.step == f"arm {k}").points)
         out.append(1j * (b - a) / abs(b - a))
     return out
 
@@ -55,7 +60,7 @@ def test_every_hatched_place_of_O_sees_no_point_past_the_allowed_angle(scene):
     K = {int(q.step.split()[1]): complex(*q.points[0]) for q in _steps(rec, "K ")}
     n = len(K)
     motion = _motion_lines(rec, n)
-    O = complex(*_steps(rec, "O")[0].points[0])
+    O = _O(rec)
     # O itself sees each point at its printed (protractor) angle's size
     for k in range(n):
         assert _acute(K[k] - O, motion[k]) == pytest.approx(abs(g.theta[k]), abs=0.5)
@@ -112,13 +117,33 @@ def test_a_rocking_phase_diagram_draws_O_on_its_arc_about_the_pivot(scene):
     from graphplan.drawing.cam import phase_diagram
     sol, g = _construct(scene)
     rec = phase_diagram(sol, g, "en")
-    (a0, a1), (b0, b1) = ([complex(*p) for p in _steps(rec, f"arm {k}")[0].points] for k in (1, len(g.phi) - 3))
+    (a0, a1), (b0, b1) = ([complex(*p) for p in next(q for q in rec.items if q.step == f"arm {k}").points] for k in (1, len(g.phi) - 3))
     da, db = a1 - a0, b1 - b0
     t = ((b0 - a0).conjugate() * db).imag / (da.conjugate() * db).imag
     pivot = a0 + t * da                                     # the arms' lines meet at the pivot
-    O = complex(*_steps(rec, "O")[0].points[0])
+    O = _O(rec)
     arc = [complex(*p) for p in _steps(rec, "O locus")[0].points]
     mu = rec.scales["mu_phase"]
     assert abs(O - pivot) == pytest.approx(sol.cam.centre_distance / mu, rel=1e-3)
     assert min(abs(z - O) for z in arc) < 0.5
     assert max(abs(abs(z - pivot) - abs(O - pivot)) for z in arc) < 0.1
+
+
+@pytest.mark.parametrize("scene", [CAM_TRANSLATING46, KNIFE_REV12], ids=["translating46", "knife_rev12"])
+def test_the_offset_is_noted_with_the_side_it_is_drawn_on_and_its_effect(scene):
+    """«e = −6 мм» said neither side nor sense: the note now names the side of O the follower's axis
+    stands on — as the profile draws the offset line e from O — and whether e lowers or raises the
+    rise's pressure angle, against the same cam without an offset."""
+    from graphplan.drawing.cam import profile_drawing
+    from graphplan.exact.cam import solve
+    from graphplan.report.cam import cam_json, cam_lines
+    sol, g = _construct(scene)
+    line = next(x for x in cam_lines(cam_json(sol, g, "x"), "en") if x.startswith("Offset"))
+    rec = profile_drawing(sol, g, "en")
+    x = complex(*_steps(rec, "offset e")[0].points[1]).real      # the axis' foot, from O at 0
+    assert ("right of O" if x > 0 else "left of O") in line
+    data = tomllib.loads(scene)
+    data["cam"].update(offset=0.0, base_radius=sol.geometry.R0)       # the same R0, no offset
+    plain = solve(build(data, "<e = 0>"))
+    lower = sol.pressure_maxima()[0] < plain.pressure_maxima()[0]
+    assert ("lowering" if lower else "raising") in line

@@ -487,17 +487,22 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         foot = max(float(((O - K[k]) * d.conjugate()).real), 0.0)
         length = foot + PAST_O
         end = K[k] + d * length
-        # the two lines cross near O: each lettered at its own end, the ends drawn 14 mm apart at least
+        # the two lines cross near O: each lettered at its own end, the ends drawn ENDS_APART apart at least
         # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
-        while ends and abs(end - ends[0]) < 14.0 and length < foot + PAST_O + 32.0:
+        while ends and abs(end - ends[0]) < ENDS_APART and length < foot + PAST_O + 40.0:
             length += 2.0
             end = K[k] + d * length
         ends.append(end)
         rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
-        labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),
-                                   toward=d * 1j * (1 if turn > 0 else -1), size=TEXT, step=f"[ϑ] {ph}"))
         bounds.append((K[k], end, d))
+    for ph, (_, end, d) in enumerate(bounds):
+        # lettered by its end on the side away from the other line's end (between the two ends a
+        # letter read as either line's: review 11)
+        other = bounds[1 - ph][1]
+        side = d * 1j if ((other - end) * (d * 1j).conjugate()).real < 0 else d * -1j
+        labels.append(LabelRequest(end - d * 4.0, allowed_text(cam.allowed[ph], lang),
+                                   toward=side, size=TEXT, step=f"[ϑ] {ph}"))
     # no ray from O to those points: at R0 a little over the smallest it runs 1–2 mm beside its [ϑ]
     # line, unlettered, and reads as that line drawn twice (review 12 #16, review 13 #15); the region
     # of O hatched along both lines below their crossing instead, as the lab draws it
@@ -551,6 +556,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
 
 
 LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
+ENDS_APART = 24.0    # mm: the two [ϑ] lines' ends at least this far apart (a letter is ~19 mm long)
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
 
 

@@ -98,7 +98,9 @@ WORDS = {
            "stroke": "хід h = {h} мм", "swing": "кут розмаху ψ_{{max}} = {h}°",
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
-           "offset": "ексцентриситет e = {e} мм", "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
+           "offset": "ексцентриситет e = {e} мм",
+           "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
+           "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
@@ -111,7 +113,7 @@ WORDS = {
            "sharp": "штовхач із вістрям натрапляє на гострий злам",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
            "closing": "графік {q} замкнуто: {which} розподілено по поділках пропорційно "
-                      "куту, y′_k = y_k − Δ·k/n{tail}",
+                      "куту (ординату y_k зменшено на Δ·k/n){tail}",
            "closing_one": ("похибку замикання підйому Δ = {d} мм", "похибку замикання опускання Δ = {d} мм"),
            "closing_tail": ("; підйом замкнувся без поправки (Δ = 0)", "; опускання замкнулося без поправки (Δ = 0)"),
            "closing_two": "похибки замикання підйому Δ = {r} мм і опускання Δ = {t} мм",
@@ -134,7 +136,9 @@ WORDS = {
            "stroke": "stroke h = {h} mm", "swing": "swing ψ_{{max}} = {h}°",
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
-           "offset": "offset e = {e} mm", "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
+           "offset": "offset e = {e} mm",
+           "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
+           "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
@@ -147,7 +151,7 @@ WORDS = {
            "sharp": "a knife-edge follower meets a sharp corner",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical {q} closed: {which} laid back over the divisions in proportion to the "
-                      "turn, y′_k = y_k − Δ·k/n{tail}",
+                      "turn (the ordinate y_k lowered by Δ·k/n){tail}",
            "closing_one": ("the rise's closing error Δ = {d} mm", "the return's closing error Δ = {d} mm"),
            "closing_tail": ("; the rise closed as drawn (Δ = 0)", "; the return closed as drawn (Δ = 0)"),
            "closing_two": "the closing errors Δ = {r} mm (rise) and Δ = {t} mm (return)",
@@ -232,7 +236,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                            c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
     lines[-1] += "; " + w["omega"].format(w=n(doc["omega_rad_s"]), d=w["sense"][doc["sense"]])
     lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
-                                 p=n(doc["arm_angle_deg"])) if rocking else w["offset"].format(e=n(doc["offset_m"] * 1000)))
+                                 p=n(doc["arm_angle_deg"])) if rocking else offset_line(w, doc, n))
     g = doc["base_radius_graphical_m"]
     lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     e=n(doc["base_radius_error_pct"], 3).replace("-", "−"),
@@ -281,6 +285,19 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                          t=n(again["closing_mm_first"]["return"], 3).replace("-", "−"),
                                          b=n(again["closing_bound_mm_first"], 3)))
     return [x[:1].upper() + x[1:] for x in lines]       # each a sentence: a capital first letter
+
+
+def offset_line(w: dict, doc: dict, n) -> str:
+    """The offset e with its side as drawn: the follower's axis stands at x = σe from O (σ = +1 for a
+    cam turning counter-clockwise; exact.cam) — right of O for σe > 0 — and e > 0 lowers the rise's
+    pressure angle, tg ϑ = (ds/dφ − e)/(s0 + s) (stop 46: «e = −6 мм» said neither)."""
+    e = doc["offset_m"] * 1000
+    text = w["offset"].format(e=n(e))
+    if abs(e) < 1e-9:
+        return text
+    x = e * (1 if doc["sense"] == "ccw" else -1)
+    return text + w["offset_side"].format(d=n(abs(e)), side=w["side"][0 if x > 0 else 1],
+                                          effect=w["effect"][0 if e > 0 else 1])
 
 
 def closing_line(w: dict, q: str, rise: float, ret: float, n) -> str:
