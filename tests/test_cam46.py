@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from graphplan.model.cam import build
+from graphplan.util.words import num
 from tests.review_scenes import CAM_ROCKING46, CAM_TRANSLATING46
 from tests.test_cam_review13 import KNIFE_REV12, ROCKING_REV13
 
@@ -147,3 +148,19 @@ def test_the_offset_is_noted_with_the_side_it_is_drawn_on_and_its_effect(scene):
     plain = solve(build(data, "<e = 0>"))
     lower = sol.pressure_maxima()[0] < plain.pressure_maxima()[0]
     assert ("lowering" if lower else "raising") in line
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_a_rocking_followers_pressure_angle_on_the_dwell_is_explained_and_is_the_triangles(lang):
+    """Table 1's ϑ = −29,3° at division 0 of the lead's rocking cam is no error: on the dwell the
+    profile is an arc about O, the normal is CO, the roller centre moves square to the arm O₁C, so
+    |ϑ| = |∠OCO₁ − 90°| of the triangle with sides a, l, R0 (law of cosines); the notes say so."""
+    from graphplan.report.cam import cam_json, cam_lines
+    sol, g = _construct(CAM_ROCKING46)
+    doc = cam_json(sol, g, "x")
+    a, l, R0 = sol.cam.centre_distance, sol.cam.arm, sol.geometry.R0
+    at_C = math.degrees(math.acos((l * l + R0 * R0 - a * a) / (2 * l * R0)))
+    for p in (doc["positions"][0], doc["positions"][-1]):
+        assert abs(p["exact"]["pressure_angle_deg"]) == pytest.approx(abs(at_C - 90.0), abs=1e-6)
+    line = [x for x in cam_lines(doc, lang) if "O_{1}C" in x]
+    assert len(line) == 1 and num(abs(doc["positions"][0]["exact"]["pressure_angle_deg"]), lang, 4) in line[0]

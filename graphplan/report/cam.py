@@ -99,6 +99,8 @@ WORDS = {
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм",
+           "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль іде "
+                    "через O, а центр ролика C рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
@@ -137,6 +139,8 @@ WORDS = {
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm",
+           "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal passes through "
+                    "O, and the roller centre C moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
@@ -246,6 +250,9 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     lines.append(w["angles"].format(r=ang(top["rise"]), t=ang(top["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
+    start = doc["positions"][0]["exact"]["pressure_angle_deg"]
+    if rocking and abs(start) >= 0.5:       # a rocking follower's ϑ ≠ 0 where it rests (stop 46: "−29,3 at 0?")
+        lines.append(w["dwell"].format(t=ang(start)))
     c = doc["curvature_min_m"]
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))
