@@ -4,6 +4,7 @@ along the [ϑ] lines) holds only places from which no drawn point is seen at mor
 taken from the code that chose the lines; the notes' closing of s says what was laid back."""
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
 
@@ -16,7 +17,9 @@ from tests.review_scenes import CAM_ROCKING46, CAM_TRANSLATING46
 from tests.test_cam_review13 import KNIFE_REV12, ROCKING_REV13
 
 
+@functools.lru_cache(maxsize=None)
 def _construct(text: str):
+    """The scene solved and constructed at the default scales (measure=False), once a module."""
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     sol = solve(build(tomllib.loads(text), "<scene>"))
