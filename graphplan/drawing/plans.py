@@ -356,11 +356,26 @@ def output_point(plans: Plans) -> str:
     return max(ends, key=lambda p: abs(link.local[p] - link.local[pivot]), default=pivot)
 
 
+def stroke_ends(plans: Plans) -> list[Layout]:
+    """The output's two extreme positions that bound its stroke (or swing): where it stops at its
+    largest and its smallest value, in the study's order. An output may stop more than twice a
+    turn (a six-bar's slider driven through its rod's dead centre: 355.7°, 18.6°, 42.9°, 201.5°,
+    the middle two a 0.3-mm dip), and the stroke H is between the largest and the smallest, not the
+    first two stops (review 46: it dimensioned H = 1 between 355.7° and 18.6°)."""
+    lays = list(plans.extremes)
+    if len(lays) <= 2:
+        return lays
+    values = plans.study.output.value(plans.study.solve([lay.phi for lay in lays]))
+    hi, lo = int(max(range(len(lays)), key=lambda i: values[i])), int(min(range(len(lays)), key=lambda i: values[i]))
+    return [lays[i] for i in sorted({hi, lo})]
+
+
 def swing(plans: Plans) -> float | None:
     """The output rocker's swing ψ_max between its extreme positions, degrees (None for a slider, a
     link turning round or fewer than two extremes)."""
     st = plans.study
-    if st.output.kind != "link" or len(plans.extremes) < 2:
+    ends = stroke_ends(plans)
+    if st.output.kind != "link" or len(ends) < 2:
         return None
     sc = plans.scheme
     link = st.mech.links[st.output.name]
@@ -368,8 +383,8 @@ def swing(plans: Plans) -> float | None:
     out = output_point(plans)
     if pivot is None or out == pivot:
         return None
-    P = [where(sc, lay, FRAME, pivot) for lay in plans.extremes[:2]][0]
-    a, b = (where(sc, lay, sc.body_of(out), out) - P for lay in plans.extremes[:2])
+    P = where(sc, ends[0], FRAME, pivot)
+    a, b = (where(sc, lay, sc.body_of(out), out) - P for lay in ends)
     return abs(math.degrees(cmath.phase(b / a)))
 
 
@@ -406,7 +421,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
             rec.add("polyline", [_pt(c) for c in catmull_rom(path)], role="trajectory",
                     layer="construction", step=f"trajectory of {name}")
     out = output_point(plans)
-    extremes = [lay for lay in plans.extremes
+    extremes = [lay for lay in stroke_ends(plans)
                 if all(abs((lay.phi - p.phi + 180.0) % 360.0 - 180.0) > 1e-6 for p in plans.positions)]
     for lay in extremes:
         draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position", yokes=yokes)
@@ -509,9 +524,10 @@ def extreme_order(plans: Plans) -> list[Layout]:
     """The extreme positions in the order the crank reaches them from position 0 (the first ′, the
     second ″): position 0 itself first where it is one."""
     st = plans.study
-    turn = [float(st.from_position0(lay.phi)) for lay in plans.extremes]
+    ends = stroke_ends(plans)
+    turn = [float(st.from_position0(lay.phi)) for lay in ends]
     turn = [0.0 if t > 360.0 - 1e-6 else t for t in turn]
-    return [lay for _, lay in sorted(zip(turn, plans.extremes), key=lambda t: t[0])]
+    return [lay for _, lay in sorted(zip(turn, ends), key=lambda t: t[0])]
 
 
 def extreme_letters(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]:
@@ -659,11 +675,12 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
     st = plans.study
     if st.output.kind == "link":
         return swing_dimension(rec, plans, lang)
-    if st.output.kind != "slide" or len(plans.extremes) < 2:
+    ends = stroke_ends(plans)
+    if st.output.kind != "slide" or len(ends) < 2:
         return []
     sc = plans.scheme
     out = output_point(plans)
-    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in plans.extremes[:2])
+    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in ends)
     if abs(X2 - X1) < 1e-6:
         return []
     u = (X2 - X1) / abs(X2 - X1)
@@ -712,8 +729,9 @@ def swing_dimension(rec: Record, plans: Plans, lang: str = "uk") -> list[LabelRe
     link = st.mech.links[st.output.name]
     pivot = next(j for j in link.joints if j in st.mech.frame)
     out = output_point(plans)
-    P = where(sc, plans.extremes[0], FRAME, pivot)
-    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in plans.extremes[:2])
+    ends = stroke_ends(plans)
+    P = where(sc, ends[0], FRAME, pivot)
+    X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in ends)
     R = max(abs(X1 - P), abs(X2 - P)) + SWING_PAST
     step = "dimensions"
     for X in (X1, X2):

@@ -430,8 +430,8 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         def high(w: float) -> float:
             b = note_block(d["notes"], w).bounds()
             return b[3] - b[1]
-        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under, p.notes)
-        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under, p.notes)
+        C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under, p.notes, p.over)
+        T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under, p.notes, p.over)
         if p.shape == "split":
             groups, width = groups_, N.w
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
@@ -449,7 +449,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         foot = keep_out(f)[3]
         notes_box = (notes_at - width, foot, notes_at, foot + nb[3] - nb[1])
         items.append(Placed("notes", top_left(notes_rec, notes_box), notes_box))
-        items += place_tables(groups, tab_box[2], tab_box[3], p.under)
+        items += place_tables(groups, tab_box[2], tab_box[3], p.under, p.over)
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)

@@ -147,6 +147,7 @@ class Plan:
     after: bool = False              # a set: the diagrams after the acceleration plans (else before)
     notes: float = 185.0             # the notes' width, mm (the title block's, ``TITLE``, or wider: ``widened``)
     under: bool = False              # one sheet: the last table across under the columns of the others
+    over: bool = False               # one sheet: the first table across over the columns of the others
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -172,18 +173,26 @@ def set_notes_height(notes: list[list[str]], width: float) -> float:
     return max(notes_height([half], TITLE) for lines in notes for half in note_halves(lines))
 
 
-def table_groups(tables: list, parts: int, counts: tuple[int, ...] = (), under: bool = False) -> list[list]:
+def table_groups(tables: list, parts: int, counts: tuple[int, ...] = (), under: bool = False,
+                 over: bool = False) -> list[list]:
     """The tables in ``parts`` columns (``counts`` tables each, where the plan found them); ``under``:
     the last one set across under the columns of the others, its own group last (``tables_size``,
-    ``place_tables``)."""
+    ``place_tables``); ``over``: the first one across over the columns of the others, its own group
+    first."""
+    if over and len(tables) > parts:
+        return [[tables[0]]] + split(tables[1:], parts, counts=counts)
     if under and len(tables) > parts:
         return split(tables[:-1], parts, counts=counts) + [[tables[-1]]]
     return split(tables, parts, counts=counts)
 
 
-def tables_size(groups: list[list], under: bool = False) -> tuple[float, float]:
+def tables_size(groups: list[list], under: bool = False, over: bool = False) -> tuple[float, float]:
     """The tables' block (``table_groups``): columns side by side, the last group under them where
-    ``under``."""
+    ``under``, the first over them where ``over``."""
+    if over and len(groups) >= 2:
+        cw, ch = column_size(groups[1:])
+        first = groups[0][0]
+        return max(cw, first.w), first.h + GAP + ch
     if not under or len(groups) < 2:
         return column_size(groups)
     cw, ch = column_size(groups[:-1])
@@ -191,12 +200,18 @@ def tables_size(groups: list[list], under: bool = False) -> tuple[float, float]:
     return max(cw, last.w), ch + GAP + last.h
 
 
-def place_tables(groups: list[list], right: float, top: float, under: bool = False) -> list:
+def place_tables(groups: list[list], right: float, top: float, under: bool = False, over: bool = False) -> list:
     """The tables placed from the block's top right corner (``set_columns``): in reading order, down
     each column, then the next; the last group under them, at the block's right, where ``under`` —
     wider than the last column, it runs on under the one before: read after them all."""
     from graphplan.drawing.layout import Placed, set_columns, top_left
-    w, _ = tables_size(groups, under)
+    w, _ = tables_size(groups, under, over)
+    if over and len(groups) >= 2:
+        # the first across the block's top at its left (read first), the others' columns under it
+        t = groups[0][0]
+        b = (right - w, top - t.h, right - w + t.w, top)
+        return [Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)] + set_columns(
+            groups[1:], right - w, top - t.h - GAP)
     if not under or len(groups) < 2:
         return set_columns(groups, right - w, top)
     _, ch = column_size(groups[:-1])
@@ -207,29 +222,29 @@ def place_tables(groups: list[list], right: float, top: float, under: bool = Fal
 
 
 def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
-                under: bool = False, notes: float = TITLE) -> tuple[Leaf, list[list[Leaf]], float]:
+                under: bool = False, notes: float = TITLE, over: bool = False) -> tuple[Leaf, list[list[Leaf]], float]:
     """The tables in ``parts`` columns (``counts`` tables each, where the plan found them; ``under``:
     the last across under the others) with the notes under them — wrapped to the column's width, or
     to ``notes`` mm where that is wider (``widened``) — and the title block's room at the foot, as
     one leaf for the composition; its table groups and its width."""
     from graphplan.sheets.compose import keep_out
-    groups = table_groups(tables, parts, counts, under)
-    cw, ch = tables_size(groups, under)
+    groups = table_groups(tables, parts, counts, under, over)
+    cw, ch = tables_size(groups, under, over)
     width = max(cw, TITLE, notes)
     foot = keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + GAP + notes_height(width) + GAP + foot), groups, width
 
 
 def split_leaves(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
-                 under: bool = False, notes: float = TITLE) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
+                 under: bool = False, notes: float = TITLE, over: bool = False) -> tuple[Leaf, Leaf, list[list[Leaf]]]:
     """The column split in two (``tree``'s "split"): the tables in ``parts`` columns (``under``: the
     last across under the others), and the notes at the title block's width (or ``notes`` mm where
     wider: ``widened``) over the title block's room; and the tables' groups."""
     from graphplan.sheets.compose import keep_out
-    groups = table_groups(tables, parts, counts, under)
+    groups = table_groups(tables, parts, counts, under, over)
     foot = keep_out(f)[3] - field_of(f)[1]
     width = max(TITLE, notes)
-    return Leaf("tables", *tables_size(groups, under)), Leaf("notes", width, notes_height(width) + GAP + foot), groups
+    return Leaf("tables", *tables_size(groups, under, over)), Leaf("notes", width, notes_height(width) + GAP + foot), groups
 
 
 NOTES_STEP = 5.0    # mm: a column widened for its notes in these steps (``widened``)
@@ -307,6 +322,9 @@ def composed(dr: Drafter, nat: Natural, f: Form, wide: bool = False, near: list 
         main = main_larger(dr, nat, f, full[1], wide, near)
         if main is not None:
             return main
+        smaller = main_in_smaller(dr, nat, f, full[1], wide, near)
+        if smaller is not None:
+            return smaller
     if full is not None or f.name not in ONE_SHEET:       # a smaller format makes a set instead
         return full[1] if full is not None else None
     shrunk = [got for k in DIAGRAMS_SHRUNK[1:]
@@ -314,13 +332,37 @@ def composed(dr: Drafter, nat: Natural, f: Form, wide: bool = False, near: list 
     return max(shrunk, key=lambda c: c[0])[1] if shrunk else None
 
 
+def main_in_smaller(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False, near: list | None = None
+                    ) -> Plan | None:
+    """Where the full-size diagrams leave the position plan crowded (its crank under ``CRANK_MM``):
+    the first smaller size factor of ``DIAGRAMS_SHRUNK`` (right, ``diagrams_right``) whose
+    composition draws the position plan larger and every other plan no smaller — the diagrams'
+    size is ``plan_score``'s last criterion, the main drawing's its first after legibility. Review
+    46: the six-bar's A1 kept its diagrams at 0.8 with the position plan at 1:2.5 (crank 26 mm),
+    p_v a 40 mm and π a 80 mm, where at 0.64 another arrangement draws 1:2, 55 mm and 115 mm. None
+    where no smaller size does."""
+    if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
+        return None
+    was = sizes_of(nat, p.mu, p.diagrams)
+    for k in DIAGRAMS_SHRUNK[1:]:
+        if k >= min(factors(p.diagrams)) - 1e-9 or not dr.diagrams_right(k):
+            continue
+        got = one_sheet_at(dr, nat, f, k, True, wide=wide, near=near)
+        if got is None:
+            continue
+        now = sizes_of(nat, got[1].mu, got[1].diagrams)
+        if now[0] > was[0] + 1e-9 and all(a >= b - 1e-9 for a, b in zip(now[1:len(FAMILIES)], was[1:len(FAMILIES)])):
+            return got[1]
+    return None
+
+
 def composed_fits(nat: Natural, f: Form, p: Plan, D: Leaf) -> bool:
     """Whether one sheet's composition ``p`` (its scales, shape, grids and table columns as chosen)
     holds the diagrams' leaf ``D`` (``one_sheet_at``'s arithmetic)."""
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
-    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes)[0]
-    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes)[:2]
+    C = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)[0]
+    halves = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)[:2]
     P = nat.leaf("position", p.mu["position"])
     V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
     A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
@@ -442,13 +484,23 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
         # the tables in 1–3 columns; or the last (the diagrams' readings, 12 positions across: review
         # 12's 175 mm) across under 2–3 columns of the others — the six-bar's columns T1, T2 | T3,
         # T4, T5 drew 413 mm wide beside a 1:5 position plan; T5 under them, 328
-        ways = [(parts, False) for parts in (1, 2, 3)][:max(1, len(tabs))]
+        ways = [(parts, False, False) for parts in (1, 2, 3)][:max(1, len(tabs))]
         # (only where it is wider than the last column: set at the block's right it then runs on under
         # the column before — read after them all, not as the foot of one column)
-        ways += [(parts, True) for parts in (2, 3) if len(tabs) > parts + 1
+        ways += [(parts, True, False) for parts in (2, 3) if len(tabs) > parts + 1
                  and tabs[-1].w > max(t.w for t in split(tabs[:-1], parts)[-1]) + GAP]
-        cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under)[0] for parts, under in ways]
-        halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under)[:2] for parts, under in ways]
+        # or the first (the velocities, 12 positions' columns) across over 2–3 columns of the others:
+        # the six-bar's T1 alone in a column beside T2, T3 left 218 × 127 mm blank under it; over
+        # [T2 | T3, T4] the block is narrower and lower, read in order (review 46)
+        ways += [(parts, False, True) for parts in (2, 3) if len(tabs) > parts
+                 and tabs[0].w > max(t.w for t in split(tabs[1:], parts)[0]) + GAP]
+        cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under, over=over)[0] for parts, under, over in ways]
+        halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under, over=over)[:2]
+                  for parts, under, over in ways]
+        # the blank a table arrangement leaves in its block (a tie between arrangements goes to the
+        # one leaving less: its columns' heights alike)
+        waste = [(lambda g, u, o: math.prod(tables_size(g, u, o)) - sum(t.w * t.h for t in tabs))(
+            table_groups(tabs, parts, (), under, over), under, over) for parts, under, over in ways]
 
         tried: dict[tuple, tuple | None] = {}
 
@@ -493,7 +545,8 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             if not best_fill:
                                 return (0.0, vc, ac, way, notes_w)
                             fill = min(W / tw, H / th)
-                            if found is None or fill > found[0] + 1e-9:
+                            if found is None or fill > found[0] + 1e-9 or (
+                                    fill > found[0] - 1e-9 and waste[way] < waste[found[3]] - 1.0):
                                 found = (fill, vc, ac, way, notes_w)
             return found
 
@@ -507,9 +560,9 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             """The column and the split's halves of table arrangement ``way`` with the notes
             ``wide`` mm wide (remembered)."""
             if (way, wide) not in widths:
-                parts, under = ways[way]
-                widths[way, wide] = (column_leaf(f, tabs, parts, nat.notes_height, under=under, notes=wide)[0],
-                                     split_leaves(f, tabs, parts, nat.notes_height, under=under, notes=wide)[:2])
+                parts, under, over = ways[way]
+                widths[way, wide] = (column_leaf(f, tabs, parts, nat.notes_height, under=under, notes=wide, over=over)[0],
+                                     split_leaves(f, tabs, parts, nat.notes_height, under=under, notes=wide, over=over)[:2])
             return widths[way, wide]
 
         for shape in SHAPES:
@@ -542,10 +595,11 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 before = sizes_of(nat, mu, k_d)
                 mu = into_room(nat, mu, lambda m, s=shape, d=D_k: arranged(m, s, D=d) is not None)
                 _, vc, ac, way, notes_w = arranged(mu, shape, best_fill=True, D=D_k)
-                parts, under = ways[way]
-                counts = tuple(len(g) for g in split(tabs[:-1] if under else tabs, parts))
+                parts, under, over = ways[way]
+                counts = tuple(len(g) for g in split(tabs[:-1] if under else tabs[1:] if over else tabs, parts))
                 cands.append((first, before, score_of(mu, k_d, factor, shape, True),
-                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, notes=notes_w, under=under)))
+                              Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, notes=notes_w, under=under,
+                                   over=over)))
     if not cands:
         return None
     # the composition chosen by the series' steps; then, the room given out (``into_room``), the best
