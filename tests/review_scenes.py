@@ -2009,6 +2009,8 @@ pressure_angle_deg = { rise = 28, return = 32 }
 omega = 12
 direction = "cw"
 divisions = 10
+'''
+
 ROCKER46 = '''# Lead's check, stop 46: a crank-rocker four-bar O1ABO2 whose rocker's arm O2C drives a vertical slider D
 # through the rod CD (I(0-1) -> II(2-3) RRR -> II(4-5) RRP): a vertical feed mechanism, the crank ccw.
 title = "Шестиланковий механізм подачі з вертикальним повзуном"
