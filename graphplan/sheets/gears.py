@@ -13,12 +13,12 @@ from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
                                      lambda_mu, most_teeth, sliding_diagram)
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
 from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
                                     length_decimals, sig_decimals, table_decimals)
-from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
+from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.sheets.kinematics import TITLE
@@ -758,8 +758,19 @@ def sliding_leaf(rec: Record, lang: str) -> Record:
     part heavy, and μλ."""
     w = WORDS[lang]
     mu = rec.scales["mu_l"]
-    return captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang), mul=_n(mu, lang),
-                                                             scale=drawing_scale(mu, lang)))
+    second = w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang), mul=_n(mu, lang), scale=drawing_scale(mu, lang))
+    b = rec.bounds()
+    head, _, rest = second.partition("; ")
+    if not rest or text_width(second, CAPTION_2) <= b[2] - b[0]:
+        return captioned(rec, w["sliding"], second)
+    # a caption wider than the diagrams in two lines, the abscissa's scale, then the working part and
+    # μλ (stop 46: the one line made the leaf 214 mm for a 196-mm diagram, 6 mm too wide to stand
+    # beside a 5:1 meshing of 11/29 — the A1 sheet then left a third of its drawings' zone empty)
+    out = captioned(rec, w["sliding"], head + ";")
+    y = min(q.points[0][1] for q in out.items if q.kind == "text" and q.step == "caption")
+    out.label(((b[0] + b[2]) / 2, y - line_pitch(CAPTION_2) - 1.0), rest, size=CAPTION_2, anchor="middle",
+              layer="labels", step="caption")
+    return out
 
 
 def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None,
