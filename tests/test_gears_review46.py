@@ -56,3 +56,52 @@ def _centre_distance(sol) -> tuple[float, float]:
     inv = lambda t: math.tan(t) - t                                           # noqa: E731
     a_w = brentq(lambda t: inv(t) - (2 * (x1 + x2) * math.tan(al) / (z1 + z2) + inv(al)), 0.05, 1.2, xtol=1e-14)
     return m * (z1 + z2) / 2 * math.cos(al) / math.cos(a_w), a_w
+
+
+def _texts(rec) -> list[str]:
+    return [q.text for q in rec.items if q.kind == "text"]
+
+
+def _rows(rec) -> list[list[str]]:
+    rows: dict[float, list] = {}
+    for q in rec.items:
+        if q.kind == "text":
+            rows.setdefault(round(q.points[0][1], 3), []).append((q.points[0][0], q.text))
+    return [[t for _, t in sorted(r)] for _, r in sorted(rows.items(), key=lambda kv: -kv[0])]
+
+
+def test_the_dimension_aw_is_table_1s_value_and_the_lab_s_notation_is_typeset(sheet46):
+    """The dimension a_w said 104,4 mm beside Table 1's 104,37: it now prints Table 1's value (aw to
+    0,01 mm, of the part, without the unit as GOST 2.307 dimensions), the closed form's aw to those
+    decimals. Table 3's z2′ set the prime inside the subscript (a speck after a small 2): the prime
+    now stands at full size on z, the 2 under it. The λ diagrams' abscissa is lettered ρ at its end."""
+    from graphplan.util.markup import runs
+    g, sol, sheet = sheet46
+    aw, _ = _centre_distance(sol)
+    dim = [t for t in _texts(_placed(sheet, "meshing").record) if t.startswith("a_w = ")]
+    row = next(r for r in _rows(_placed(sheet, "geometry").record) if r[0] == "a_w, mm")
+    assert dim == [f"a_w = {row[1]}"] and row[1] == f"{aw * 1000:.2f}"
+    teeth = next(r for r in _rows(_placed(sheet, "train").record) if r[0] == "teeth")[1]
+    primed = [r for r in runs(teeth) if "'" in r.text]
+    assert primed and all(r.level == 0 for r in primed)
+    z1, z2, z2b, z3 = sol.train.z
+    assert z1 + z2 == z3 - z2b                                                 # coaxial (type B)
+    lam = _placed(sheet, "sliding").record
+    end = next(q for q in lam.items if q.step == "λ axis").points[1]
+    rho = next(q for q in lam.items if q.kind == "text" and q.text == "ρ").bounds()
+    assert rho[0] - 3 <= end[0] <= rho[2] + 3 and (rho[1] + rho[3]) / 2 > end[1]     # over the axis's end
+
+
+def test_the_notes_name_the_shifts_chosen_and_give_every_scale_its_value_and_unit(sheet46):
+    """"0,5 mm · μ_l = 0,1 mm" named μl without its value or unit and the rule's note said the rule
+    twice without the shifts it chose: the shifts now head the rule's note, and the ruler's resolution
+    on the part is the product written out, precision × μl, true as arithmetic."""
+    import re
+    g, sol, sheet = sheet46
+    notes = " ".join(_texts(_placed(sheet, "notes").record))
+    x1, x2 = sol.pair.x
+    assert f"x_1 = {x1:g}, x_2 = {x2:g} chosen" in notes
+    m = re.search(r"([\d.]+) mm · ([\d.]+) m/mm = ([\d.]+) mm", notes)
+    assert m and float(m.group(1)) * float(m.group(2)) * 1000 == pytest.approx(float(m.group(3)))
+    for q in re.finditer(r"μ_\w+", notes):                                   # every μ with "= value unit"
+        assert re.match(r"μ_\w+ = [\d.]+ \(?[a-z/]+\)?/mm", notes[q.start():]), notes[q.start():q.start() + 40]

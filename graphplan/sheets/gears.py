@@ -43,16 +43,16 @@ WORDS = {
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм",
-           "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
-                   "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
+           "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
+                   "{s}; умови таблиці 2 задовольняють {n} пар)",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
            "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} об/хв (ω_1 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
-           "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
-                  "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
+           "res": "Довжини таблиці 1 (прочитані r_w, s, s_a і їхні точні значення) — до {d} мм, на розряд точніше "
+                  "за роздільність лінійки на деталі: {p} мм · {mu} м/мм = {r} мм",
            "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
@@ -91,16 +91,16 @@ WORDS = {
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm",
-           "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
-                   "that meet the conditions of Table 2, the one with the least greatest specific sliding",
+           "rule": "Shifts x_1 = {x1}, x_2 = {x2} chosen by the rule: {rule} (a grid of x from {a} to {b} by {s}; "
+                   "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
            "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
-           "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
-                  "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
+           "res": "Table 1's lengths (r_w, s, s_a read off and their exact values) to {d} mm, a digit finer than the "
+                  "ruler's resolution on the part: {p} mm · {mu} m/mm = {r} mm",
            "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
@@ -117,7 +117,7 @@ WORDS = {
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
-           "tip": "; s_{{a{k}}} off a {c}-mm chord: bound from the drafting precision ±{b} % {v}",
+           "tip": "; s_{{a{k}}} read off a chord of {c} mm: its bound from the drafting precision ±{b} % {v}",
            "tip_in": "(within)", "tip_out": "(outside)",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
            "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
@@ -213,7 +213,7 @@ def train_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     t = doc["planetary"]
     ok = lambda b: w["ok"] if b else w["fail"]                            # noqa: E731
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     r = t["ratio"]
     g = t.get("graphical", {})
     # the values to five significant figures, δ from the printed values (report.gears.agreeing)
@@ -257,13 +257,15 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         p = doc["pair"]
         if p["shifts"] == "auto":
             a = p["auto"]
-            out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
+            out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], x1=_n(p["x"][0], lang),
+                                        x2=_n(p["x"][1], lang), a=_n(a["grid"][0], lang),
                                         b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
         g = p.get("graphical")
         if g and mesh.precision > 0:
             out.append(w["res"].format(d=num(10.0 ** -table_decimals(g), lang), p=_n(mesh.precision, lang),
+                                       mu=_n(mesh.mu_l, lang),
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
@@ -350,7 +352,7 @@ def train_data(t: dict, lang: str) -> str:
     """The planetary train's task data: its type, u1H wanted (or the teeth given), K, m and n1 (or ω1)
     as the scene gives them."""
     w = WORDS[lang]
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     u = (w["train_u"].format(u=_n(t["ratio_required"], lang)) if t["ratio_required"] is not None
          else w["train_z"].format(z=", ".join(f"{a} = {b}" for a, b in zip(names, t["z"]))))
     w1 = t["omega_rad_s"]["1"]
