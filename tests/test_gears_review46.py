@@ -24,6 +24,17 @@ def sheet46(tmp_path_factory):
     return g, solve(g), build_gears_sheet(g, form("A1"), SheetOptions(lang="en"))
 
 
+@pytest.fixture(scope="module")
+def doc46(sheet46):
+    """The sheet's JSON (the constructions as the A1 sheet draws them)."""
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    g, sol, _ = sheet46
+    mesh, vel, _ = on_sheet(g, sol, form("A1"), 0.5, "en")
+    return gears_json(sol, mesh, vel, ""), mesh, vel
+
+
 def _placed(sheet, name: str):
     return next(p for page in sheet.pages for p in page.placed if p.name == name)
 
@@ -105,3 +116,24 @@ def test_the_notes_name_the_shifts_chosen_and_give_every_scale_its_value_and_uni
     assert m and float(m.group(1)) * float(m.group(2)) * 1000 == pytest.approx(float(m.group(3)))
     for q in re.finditer(r"μ_\w+", notes):                                   # every μ with "= value unit"
         assert re.match(r"μ_\w+ = [\d.]+ \(?[a-z/]+\)?/mm", notes[q.start():]), notes[q.start():q.start() + 40]
+
+
+def test_the_marks_legend_stands_only_under_tables_that_mark_a_delta(doc46):
+    """"* — an error past 5 %" closed the notes of every gear sheet, also under tables with no * (the
+    scene of 21/34 and a type A train: every δ within 1,3 %). The sheet's sa1 reads 1,80 against 1,92 mm
+    (past 5 %): the legend stands; the same sheet with every reading equal to its exact value has none."""
+    import copy
+    from graphplan.sheets.gears import geometry_table, note_parts
+    doc, mesh, vel = doc46
+    sa, sa_read = doc["pair"]["sa_m"][0], doc["pair"]["graphical"]["sa_m"][0]
+    assert abs(sa_read - sa) / sa > 0.05
+    assert any(q.text.endswith("*") for q in geometry_table(doc, "en").items if q.kind == "text")
+    assert note_parts(doc, "en", mesh, vel)[-1][-1].startswith("* — an error past 5 %")
+    exact = copy.deepcopy(doc)
+    p, t = exact["pair"], exact["planetary"]
+    for key in ("rw_m", "s_m", "sa_m"):
+        p["graphical"][key] = list(p[key])
+    p["contact_ratio"]["graphical"] = p["contact_ratio"]["exact"]
+    t["ratio"]["graphical"] = t["ratio"]["exact"]
+    t["graphical"]["omega_rad_s"] = dict(t["omega_rad_s"])
+    assert not any(x.startswith("* —") for part in note_parts(exact, "en", mesh, vel) for x in part)

@@ -302,13 +302,21 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out += [w["warn"] + x for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
-    last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
+    if starred(doc, lang):                # (stop 46: the legend stood under tables with no * in them)
+        last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
     g = doc.get("pair", {}).get("graphical")
     tip_out = bool(g) and any(abs(g["sa_m"][k] - doc["pair"]["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12 for k in (0, 1))
     if tip_out or any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio"))
                       if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def starred(doc: dict, lang: str) -> bool:
+    """Whether Table 1 or Table 3 marks a δ past the lab's 5 % with * (the marks' legend is then due)."""
+    recs = ([geometry_table(doc, lang)] if "pair" in doc else []) + ([train_table(doc, lang)] if "planetary" in doc
+                                                                    else [])
+    return any(q.kind == "text" and q.text.rstrip("!").endswith("*") for r in recs for q in r.items)
 
 
 def tips(doc: dict, lang: str, mesh) -> list[str]:
@@ -531,8 +539,22 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                return d
+                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d)
     return vel, plan
+
+
+LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
+
+
+def longer(tr, precision: float, lang: str, ring: float, room_w: float, room_h: float, h_min: float, d):
+    """The pictures ``d`` or, where vA ``LONGER_VA`` times its size fits the zone and reads u1H within
+    a narrower bound with the carrier's ray from the same pole as ``d`` — a plan height-bound by the
+    meshing's height is longer for its h with a longer vA (stop 46: 11/29 with its λ diagrams beside the
+    meshing left the planetary pictures 305 mm of a 400-mm row, u1H within ±0,39) —, those."""
+    e = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * LONGER_VA, room_w, room_h, h_min)
+    if e is None or (e[0].h_carrier is None) != (d[0].h_carrier is None):
+        return d
+    return e if e[0].ratio_bound < d[0].ratio_bound - 1e-12 else d
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
