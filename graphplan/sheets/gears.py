@@ -539,22 +539,40 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d)
+                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
     return vel, plan
 
 
 LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
 
 
-def longer(tr, precision: float, lang: str, ring: float, room_w: float, room_h: float, h_min: float, d):
-    """The pictures ``d`` or, where vA ``LONGER_VA`` times its size fits the zone and reads u1H within
-    a narrower bound with the carrier's ray from the same pole as ``d`` — a plan height-bound by the
-    meshing's height is longer for its h with a longer vA (stop 46: 11/29 with its λ diagrams beside the
-    meshing left the planetary pictures 305 mm of a 400-mm row, u1H within ±0,39) —, those."""
-    e = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * LONGER_VA, room_w, room_h, h_min)
-    if e is None or (e[0].h_carrier is None) != (d[0].h_carrier is None):
+def longer(tr, precision: float, lang: str, ring: float, room_w: float, room_h: float, h_min: float, d,
+           share: float):
+    """The pictures ``d`` (drawn with vA ``share`` times its size) or, where they are held by the zone's
+    height with 30 mm of its width spare, the pictures with vA ``LONGER_VA`` times its size and the sun's
+    segment as much longer — the plan no taller for it (h = S·yA/vA), longer — where they fit and read
+    u1H within a narrower bound (stop 46: 11/29 with its λ diagrams beside the meshing left the
+    planetary pictures 305 mm of a 400-mm row, u1H within ±0,39). Few drawings (the μv rounded
+    may make the plan a little taller: then the segment that gives the first pictures' h; three at most)."""
+    v, rec = d
+    w_, h_ = _size(rec)
+    if v.h_carrier is not None or h_ < room_h - 5.0 or w_ > room_w - 30.0 or share >= LONGER_VA:
         return d
-    return e if e[0].ratio_bound < d[0].ratio_bound - 1e-12 else d
+    S = abs(v.segments["1"]) * LONGER_VA / share
+    for _ in range(3):
+        try:
+            e = construct_train(tr, precision, lang, ring_mm=ring, va_mm=60.0 * ring / 80.0 * LONGER_VA,
+                                sun_segment_mm=S)
+        except GraphplanError:
+            return d
+        pe = _plan(e, lang)
+        w2, h2 = _size(pe)
+        if w2 <= room_w and h2 <= room_h and e.h >= h_min:
+            ok = e.ratio_bound < v.ratio_bound - 1e-12 and abs(e.segments["H"]) >= abs(v.segments["H"])
+            return (e, pe) if ok else d
+        # (h = S·yA/vA with vA as drawn, μv rounded: back to the first pictures' h, and within the width)
+        S *= min(0.97, v.h / e.h if h2 > room_h else 1.0, room_w / w2)
+    return d
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
