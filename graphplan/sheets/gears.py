@@ -943,7 +943,10 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
         x = x0 + spare_x
         for d in row:
             box = (x, y - row_h, x + d.w, y)
-            out.append(Placed(d.name, centred(d.record, box), box))
+            rec = centred(d.record, box)
+            if d.name == "sliding":       # the λ diagrams, shorter than the planetary pictures, at the row's
+                rec = rec.moved(0.0, box[3] - rec.bounds()[3])   # top under the meshing they are read off
+            out.append(Placed(d.name, rec, box))          # (stop 46: centred, they left a hole over them)
             x = box[2] + spare_x + GAP
     y = y1
     tabs = [t for t in side if t.name != "notes"]
