@@ -152,3 +152,15 @@ def test_the_planetary_pictures_under_the_meshing_read_u1h_within_their_bound(sh
     assert abs(u - 9.0) / 9.0 <= 0.04 and abs(vel.ratio - u) <= vel.ratio_bound
     plan, mesh = _placed(sheet, "planetary").record.bounds(), _placed(sheet, "meshing").record.bounds()
     assert plan[2] - plan[0] <= mesh[2] - mesh[0] + 1e-9 and plan[3] - plan[1] <= mesh[3] - mesh[1] + 1e-9
+
+
+def test_the_terminal_prints_a_contact_ratio_read_short_of_1_2_within_its_bound_in_english(doc46):
+    """`graphplan gears gears.toml` (lang en) stopped on an internal error (KeyError 'within'): εα read
+    1,196 < 1,2 within its bound had its verdict in Ukrainian only. Both languages now say it, as Table 2
+    does: the reading under 1,2 by no more than its bound."""
+    from graphplan.report.gears import gears_table
+    doc, _, _ = doc46
+    c = doc["pair"]["contact_ratio"]
+    assert c["graphical"] < 1.2 <= c["graphical"] + c["bound"]
+    assert f"off the drawing {c['graphical']:.4g}: within the drafting error" in gears_table({"scene": "", "pair": doc["pair"]}, "en", "x")
+    assert "у межах похибки креслення" in gears_table({"scene": "", "pair": doc["pair"]}, "uk", "x")
