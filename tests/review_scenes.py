@@ -2101,3 +2101,30 @@ delta = 0.06
 efficiency = 0.85
 synchronous_rpm = 750
 '''
+
+
+GEARS46 = '''# Stop 46's check: an external pair 11/29 (the pinion under 17 teeth: shifts "auto"), m = 5 mm, and a
+# two-row planetary train of type B for a ratio of 9, in English (the lead's /work/wt/gears.toml).
+title = "Зубчаста передача 11/29 і дворядний планетарний редуктор (перевірка 46)"
+title_en = "A gear pair 11/29 and a two-row planetary reducer (check 46)"
+designation = "TMM.GR.46.000"
+lang = "en"
+
+[sheet]
+student = "Check N."
+teacher = "Teacher T."
+group = "MB-46"
+organisation = "NULES of Ukraine"
+
+[gears]
+z = [11, 29]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 9.0
+planets = 3
+module = 0.0025
+omega = 120.0
+'''

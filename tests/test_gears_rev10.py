@@ -163,7 +163,9 @@ def test_the_sliding_zone_is_sized_to_its_curves_with_the_working_part_heavy_and
     line, b1, b2, lam1, lam2 = _pair_closed_forms()
     rec = next(p for page in a1.pages for p in page.placed if p.name == "sliding").record
     mu, unit = rec.scales["mu_l"] * 1000, 1.0 / rec.scales["mu_lambda"]          # mm of the part a mm, mm a unit
-    x0, y0, x1, y1 = rec.bounds()
+    drawn = [q.bounds() for q in rec.items if q.step != "caption"]      # the diagrams, their caption apart
+    x0, y0 = min(b[0] for b in drawn), min(b[1] for b in drawn)
+    x1, y1 = max(b[2] for b in drawn), max(b[3] for b in drawn)
     assert y1 - y0 <= 0.75 * (x1 - x0)
     assert 4 * unit <= 0.75 * line / mu + 1e-9
     axis = next(it for it in rec.items if it.step == "λ axis").points[0]

@@ -182,3 +182,19 @@ def test_table_1_prints_the_pairs_constants_as_the_terminal_does(capsys):
                      ("p, мм", "p"), ("p_b, мм", "pb")):
         i = texts.index(sym)
         assert texts[i + 1] == said[key], (sym, texts[i + 1], said[key])
+
+
+@pytest.mark.parametrize("name", ["gears_b"])
+def test_the_sliding_diagrams_stand_at_the_top_of_their_row_under_the_meshing(name):
+    """Stop 46: the λ diagrams, shorter than the planetary pictures beside them, stood centred in the row's
+    height with a hole over them under the meshing (the lead's "empty left middle"). In the row they now
+    stand at its top, right under the meshing they are read off; beside the meshing, at its top."""
+    s = sheet(name, "A1")
+    placed = {p.name: p for p in s.placed if p.name in DRAWINGS}
+    lam, mesh, plan = placed["sliding"], placed["meshing"], placed["planetary"]
+    top = lam.record.bounds()[3]
+    if lam.box[3] == pytest.approx(mesh.box[3]):                                 # beside the meshing
+        assert lam.box[0] >= mesh.box[2]
+    else:                                                                        # in the row under it
+        assert top == pytest.approx(lam.box[3]) and lam.box[3] == pytest.approx(plan.box[3])
+        assert lam.record.bounds()[1] > plan.record.bounds()[1] + 10.0       # (shorter: the room under it)

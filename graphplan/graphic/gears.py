@@ -33,7 +33,7 @@ import numpy as np
 from graphplan.exact.gears import PairSolution, TrainSolution
 from graphplan.graphic.draftsman import circle_line, lay_off, measure
 from graphplan.graphic.record import Primitive, Record, text_width
-from graphplan.util.words import num
+from graphplan.util.words import fixed, num
 
 LAYER = "gears"
 TEXT = 3.5
@@ -392,6 +392,15 @@ def _wrap(a: float) -> float:
     return (a + math.pi) % (2 * math.pi) - math.pi
 
 
+def aw_decimals(precision: float, mu_l: float) -> int:
+    """The decimals of the dimension aw, mm, as Table 1 prints aw (report.gears.length_decimals of
+    table_decimals): one past the ruler's resolution on the part, precision·μl, and at least two — the
+    lab prints aw to 0,01 mm (stop 46: the dimension said 104,4 mm beside Table 1's 104,37); four at
+    precision 0."""
+    res = precision * mu_l * 1000.0
+    return max(2, 4 if res <= 0 else max(0, math.ceil(-math.log10(res) - 1e-9)) + 1)
+
+
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                    height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0,
                    line_mm: float | None = None, teeth: int = TEETH) -> Mesh:
@@ -449,7 +458,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         rec.segment((xd - 2.0, whi + 6.0), (-8.0, whi + 6.0), role="construction", layer=LAYER, step="aw")
         rec.vector((xd, ymid - 12.0), (xd, wlo - 6.0), role="construction", layer=LAYER, step="aw")
         rec.vector((xd, ymid + 12.0), (xd, whi + 6.0), role="construction", layer=LAYER, step="aw")
-        aw_text = f"a_w = {num(sol.aw * 1000.0, lang, 4)} " + ("мм" if lang == "uk" else "mm")
+        aw_text = f"a_w = {fixed(sol.aw * 1000.0, lang, aw_decimals(precision, mu))}"   # mm of the part, no unit (GOST 2.307)
         for y, name, toward in ((wlo - 6.0, "O_1", -1j), (whi + 6.0, "O_2", 1j)):
             rec.vector((3.0, y + (4.0 if toward == -1j else -4.0)), (3.0, y + (-6.0 if toward == -1j else 6.0)),
                        role="construction", layer=LAYER, step=f"to {name}")
@@ -741,6 +750,7 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM, m
     for v, t in ((1.0, "1"), (-1.0, "−1"), (-2.0, "−2"), (-3.0, "−3")):
         pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
     pl.label(complex(0.0, k + 8.0), "λ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))     # the ordinate's name
+    pl.label(complex(G + 8.0, 0.0), "ρ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))   # the abscissa's (stop 46)
     for end in ends:                  # "−∞" right of each arrow: off the axis of λ and the ordinate at B2
         pl.label(end - 4j, "−∞", size=2.5, toward=1 + 0j, radii=(0.8, 1.5, 3.0, 5.0))
     # each curve lettered midway between P (where the two cross, λ = 0) and its own end of N1N2:

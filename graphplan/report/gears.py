@@ -175,7 +175,8 @@ WORDS = {
            "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
-           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member", "out": " — OUTSIDE ITS BOUND"},
+           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member",
+           "within": "within the drafting error", "out": " — OUTSIDE ITS BOUND"},
 }
 
 

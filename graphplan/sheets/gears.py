@@ -13,12 +13,12 @@ from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
                                      lambda_mu, most_teeth, sliding_diagram)
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
 from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
                                     length_decimals, sig_decimals, table_decimals)
-from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
+from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.sheets.kinematics import TITLE
@@ -43,16 +43,16 @@ WORDS = {
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм",
-           "rule": "Зміщення вибрано за правилом: {rule}. Сітка x від {a} до {b} з кроком {s}; з усіх "
-                   "{n} пар, що задовольняють умови таблиці 2, взято ту, де найбільше питоме ковзання найменше",
+           "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
+                   "{s}; умови таблиці 2 задовольняють {n} пар)",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
            "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} об/хв (ω_1 = {w} рад/с)", "omega1": "ω_1 = {w} рад/с",
            "scale": "Зачеплення: модуль на кресленні {md} мм, висота зуба 2,25·m = {h} мм; точність креслення {p} мм",
-           "res": "У таблиці 1 прочитані довжини (r_w, s, s_a) і їхні точні значення — до {d} мм: на розряд точніше "
-                  "за роздільність лінійки на деталі ({p} мм · μ_l = {r} мм)",
+           "res": "Довжини таблиці 1 (прочитані r_w, s, s_a і їхні точні значення) — до {d} мм, на розряд точніше "
+                  "за роздільність лінійки на деталі: {p} мм · {mu} м/мм = {r} мм",
            "bound_eps": "Межа похибки ε_α від точності креслення (відкладені a_w, радіуси основних і вершинних кіл, "
                         "p_b і прочитане "
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
@@ -91,16 +91,16 @@ WORDS = {
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm",
-           "rule": "Shifts chosen by the rule: {rule}. A grid of x from {a} to {b} by {s}; of the {n} pairs "
-                   "that meet the conditions of Table 2, the one with the least greatest specific sliding",
+           "rule": "Shifts x_1 = {x1}, x_2 = {x2} chosen by the rule: {rule} (a grid of x from {a} to {b} by {s}; "
+                   "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
            "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
-           "res": "In Table 1 the lengths read off (r_w, s, s_a) and their exact values are to {d} mm: a digit finer "
-                  "than the ruler's resolution on the part ({p} mm · μ_l = {r} mm)",
+           "res": "Table 1's lengths (r_w, s, s_a read off and their exact values) to {d} mm, a digit finer than the "
+                  "ruler's resolution on the part: {p} mm · {mu} m/mm = {r} mm",
            "bound_eps": "Bound of the error of ε_α from the drafting precision (a_w, the base and tip radii, p_b "
                         "laid off and "
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
@@ -117,7 +117,7 @@ WORDS = {
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
            "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
-           "tip": "; s_{{a{k}}} off a {c}-mm chord: bound from the drafting precision ±{b} % {v}",
+           "tip": "; s_{{a{k}}} read off a chord of {c} mm: its bound from the drafting precision ±{b} % {v}",
            "tip_in": "(within)", "tip_out": "(outside)",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
            "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
@@ -213,7 +213,7 @@ def train_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     t = doc["planetary"]
     ok = lambda b: w["ok"] if b else w["fail"]                            # noqa: E731
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     r = t["ratio"]
     g = t.get("graphical", {})
     # the values to five significant figures, δ from the printed values (report.gears.agreeing)
@@ -257,13 +257,15 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         p = doc["pair"]
         if p["shifts"] == "auto":
             a = p["auto"]
-            out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], a=_n(a["grid"][0], lang),
+            out.append(w["rule"].format(rule=a["rule_uk" if lang == "uk" else "rule"], x1=_n(p["x"][0], lang),
+                                        x2=_n(p["x"][1], lang), a=_n(a["grid"][0], lang),
                                         b=_n(a["grid"][1], lang), s=_n(a["grid"][2], lang), n=a["passing"]))
         out.append(w["scale"].format(md=_n(mesh.module_mm, lang), h=_n(2.25 * mesh.module_mm, lang),
                                      p=_n(mesh.precision, lang)))
         g = p.get("graphical")
         if g and mesh.precision > 0:
             out.append(w["res"].format(d=num(10.0 ** -table_decimals(g), lang), p=_n(mesh.precision, lang),
+                                       mu=_n(mesh.mu_l, lang),
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
@@ -300,13 +302,21 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out += [w["warn"] + x for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
-    last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
+    if starred(doc, lang):                # (stop 46: the legend stood under tables with no * in them)
+        last.append(w["mark"] + "".join(tips(doc, lang, mesh)))
     g = doc.get("pair", {}).get("graphical")
     tip_out = bool(g) and any(abs(g["sa_m"][k] - doc["pair"]["sa_m"][k]) > g["sa_bound_m"][k] + 1e-12 for k in (0, 1))
     if tip_out or any(doc[k][c]["outside_bound"] for k, c in (("pair", "contact_ratio"), ("planetary", "ratio"))
                       if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def starred(doc: dict, lang: str) -> bool:
+    """Whether Table 1 or Table 3 marks a δ past the lab's 5 % with * (the marks' legend is then due)."""
+    recs = ([geometry_table(doc, lang)] if "pair" in doc else []) + ([train_table(doc, lang)] if "planetary" in doc
+                                                                    else [])
+    return any(q.kind == "text" and q.text.rstrip("!").endswith("*") for r in recs for q in r.items)
 
 
 def tips(doc: dict, lang: str, mesh) -> list[str]:
@@ -350,7 +360,7 @@ def train_data(t: dict, lang: str) -> str:
     """The planetary train's task data: its type, u1H wanted (or the teeth given), K, m and n1 (or ω1)
     as the scene gives them."""
     w = WORDS[lang]
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_2'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     u = (w["train_u"].format(u=_n(t["ratio_required"], lang)) if t["ratio_required"] is not None
          else w["train_z"].format(z=", ".join(f"{a} = {b}" for a, b in zip(names, t["z"]))))
     w1 = t["omega_rad_s"]["1"]
@@ -529,8 +539,40 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                return d
+                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
     return vel, plan
+
+
+LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
+
+
+def longer(tr, precision: float, lang: str, ring: float, room_w: float, room_h: float, h_min: float, d,
+           share: float):
+    """The pictures ``d`` (drawn with vA ``share`` times its size) or, where they are held by the zone's
+    height with 30 mm of its width spare, the pictures with vA ``LONGER_VA`` times its size and the sun's
+    segment as much longer — the plan no taller for it (h = S·yA/vA), longer — where they fit and read
+    u1H within a narrower bound (stop 46: 11/29 with its λ diagrams beside the meshing left the
+    planetary pictures 305 mm of a 400-mm row, u1H within ±0,39). Few drawings (the μv rounded
+    may make the plan a little taller: then the segment that gives the first pictures' h; three at most)."""
+    v, rec = d
+    w_, h_ = _size(rec)
+    if v.h_carrier is not None or h_ < room_h - 5.0 or w_ > room_w - 30.0 or share >= LONGER_VA:
+        return d
+    S = abs(v.segments["1"]) * LONGER_VA / share
+    for _ in range(3):
+        try:
+            e = construct_train(tr, precision, lang, ring_mm=ring, va_mm=60.0 * ring / 80.0 * LONGER_VA,
+                                sun_segment_mm=S)
+        except GraphplanError:
+            return d
+        pe = _plan(e, lang)
+        w2, h2 = _size(pe)
+        if w2 <= room_w and h2 <= room_h and e.h >= h_min:
+            ok = e.ratio_bound < v.ratio_bound - 1e-12 and abs(e.segments["H"]) >= abs(v.segments["H"])
+            return (e, pe) if ok else d
+        # (h = S·yA/vA with vA as drawn, μv rounded: back to the first pictures' h, and within the width)
+        S *= min(0.97, v.h / e.h if h2 > room_h else 1.0, room_w / w2)
+    return d
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
@@ -758,8 +800,19 @@ def sliding_leaf(rec: Record, lang: str) -> Record:
     part heavy, and μλ."""
     w = WORDS[lang]
     mu = rec.scales["mu_l"]
-    return captioned(rec, w["sliding"], w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang), mul=_n(mu, lang),
-                                                             scale=drawing_scale(mu, lang)))
+    second = w["sliding2"].format(mu=_n(rec.scales["mu_lambda"], lang), mul=_n(mu, lang), scale=drawing_scale(mu, lang))
+    b = rec.bounds()
+    head, _, rest = second.partition("; ")
+    if not rest or text_width(second, CAPTION_2) <= b[2] - b[0]:
+        return captioned(rec, w["sliding"], second)
+    # a caption wider than the diagrams in two lines, the abscissa's scale, then the working part and
+    # μλ (stop 46: the one line made the leaf 214 mm for a 196-mm diagram, 6 mm too wide to stand
+    # beside a 5:1 meshing of 11/29 — the A1 sheet then left a third of its drawings' zone empty)
+    out = captioned(rec, w["sliding"], head + ";")
+    y = min(q.points[0][1] for q in out.items if q.kind == "text" and q.step == "caption")
+    out.label(((b[0] + b[2]) / 2, y - line_pitch(CAPTION_2) - 1.0), rest, size=CAPTION_2, anchor="middle",
+              layer="labels", step="caption")
+    return out
 
 
 def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: str, pages, lam=None,
@@ -890,7 +943,10 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
         x = x0 + spare_x
         for d in row:
             box = (x, y - row_h, x + d.w, y)
-            out.append(Placed(d.name, centred(d.record, box), box))
+            rec = centred(d.record, box)
+            if d.name == "sliding":       # the λ diagrams, shorter than the planetary pictures, at the row's
+                rec = rec.moved(0.0, box[3] - rec.bounds()[3])   # top under the meshing they are read off
+            out.append(Placed(d.name, rec, box))          # (stop 46: centred, they left a hole over them)
             x = box[2] + spare_x + GAP
     y = y1
     tabs = [t for t in side if t.name != "notes"]
