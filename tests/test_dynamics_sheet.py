@@ -400,3 +400,36 @@ def test_the_english_sheet_writes_the_motor_in_latin(sheets):
         return [c for row in rows(sheets["sixbar", lang], "motor table") for c in row if c.startswith("4")]
     assert len(names("en")) == 1 and re.fullmatch(r"4AM\d+[A-Z]\d", names("en")[0])
     assert len(names("uk")) == 1 and re.fullmatch(r"4АМ\d+[A-ZА-Я]\d", names("uk")[0])
+
+
+def _number(text: str) -> float:
+    return float(text.replace(",", ".").replace("−", "-"))
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_omega_m_and_the_extremes_are_drawn_where_the_axis_reads_them(sheets, key):
+    """Stop 46 (the rocker's ω(φ): three ticks, its extremes between them, no ω_m): the ordinate axis
+    graduated at least five times, each mean speed a dash-dot line at the height the ticks give its
+    legend's value, and ω_max, ω_min lettered at the solid curve's highest and lowest points, their
+    printed values giving the printed δ = (ω_max − ω_min)/ω_m to the rounding of the figures."""
+    rec = next(p.record for p in sheets[key].placed if p.name == "speed")
+    texts = [it for it in rec.items if it.kind == "text"]
+    ticks = sorted((_number(it.text), it.points[0][1] + 1.0) for it in texts if it.step == "ω ticks" and it.text != "0")
+    assert len(ticks) >= 5
+    a, b = np.polyfit([v for v, _ in ticks], [y for _, y in ticks], 1)
+    value = lambda y: (y - b) / a                                   # noqa: E731  the drawn height → ω
+    legends = [plain(it.text) for it in texts if "рад/с" in it.text and ":" in it.text]
+    means = {m.group(1): _number(m.group(2)) for t in legends for m in re.finditer(r"(ω_m(?: дв)?) = (\d+(?:,\d+)?)", t)}
+    assert set(means) == {"ω_m", "ω_m дв"}
+    for sym, wm in means.items():
+        line = next(it for it in rec.items if it.kind == "segment" and it.role == "axis" and plain(it.step) == f"{sym} line")
+        assert value(line.points[0][1]) == pytest.approx(wm, abs=0.006)
+    solid = np.array(next(it for it in rec.items if it.kind == "polyline" and it.role == "curve").points)
+    got = {}
+    for name, pick in (("max", np.max), ("min", np.min)):
+        label = next(it for it in texts if it.step == f"ω_{name}")
+        got[name] = _number(plain(label.text).split("= ")[1].split()[0])
+        assert got[name] == pytest.approx(value(pick(solid[:, 1])), abs=0.01)
+    delta = (got["max"] - got["min"]) / means["ω_m"]
+    given = _number(re.search(r"δ = (\d+(?:,\d+)?)", legends[0]).group(1))
+    assert delta == pytest.approx(given, rel=0.02)
