@@ -433,3 +433,22 @@ def test_omega_m_and_the_extremes_are_drawn_where_the_axis_reads_them(sheets, ke
     delta = (got["max"] - got["min"]) / means["ω_m"]
     given = _number(re.search(r"δ = (\d+(?:,\d+)?)", legends[0]).group(1))
     assert delta == pytest.approx(given, rel=0.02)
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_table_1s_delta_is_the_printed_pairs_over_the_printed_span(sheets, key):
+    """Stop 46: a reader recomputes Table 1's δ from the printed ΔT гр. and ΔT and the range the note
+    under the table prints (ΔT_max − ΔT_min = a − (b) = c): c is the printed difference, a and b the
+    exact column's extremes, and every row's δ that pair's (g − e)/c to the printed decimal."""
+    table = [r for r in rows(sheets[key], "positions table") if len(r) == 11]
+    head, body = table[0], [[c.rstrip("*") for c in r] for r in table[1:]]
+    assert head[8].startswith("ΔT") and head[9].startswith("ΔT") and head[10] == "δ, %"
+    text = " ".join(plain(it.text) for p in sheets[key].placed if p.name == "positions table"
+                    for it in p.record.items if it.kind == "text" and it.step == "chord heights")
+    m = re.search(r"ΔT_max − ΔT_min = ([−\d,.]+) − \(?([−\d,.]+)\)? = ([\d,.]+)", text.replace("\u00a0", " "))
+    assert m, text
+    hi, lo, span = (_number(g) for g in m.groups())
+    exact = [_number(r[9]) for r in body]
+    assert (hi, lo) == (max(exact), min(exact)) and span == pytest.approx(hi - lo, abs=1e-9)
+    for r in body:
+        assert _number(r[10]) == pytest.approx(round(100 * (_number(r[8]) - _number(r[9])) / span, 1), abs=1e-9), r

@@ -784,7 +784,7 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         yy = float(y(v))
         rec.segment((0.0, yy), (L, yy), role="grid", layer=LAYER, step="ω grid")
         rec.segment((-1.5, yy), (0.0, yy), role="construction", layer=LAYER, step="ω ticks")
-        rec.label((-2.0, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+        rec.label((-3.0, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
         v += step
     for deg in range(0, 361, 30):
         xx = L * deg / 360.0

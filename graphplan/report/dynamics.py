@@ -162,9 +162,25 @@ def chords_note(doc: dict[str, Any], lang: str) -> str:
                  f"the equal-area mean ordinate, but the middle one in {spans(rest)}")
     else:
         where = (f"ордината в середині, у {spans(ks)} — середня рівних площ" if uk else
-                 f"the middle ordinate, the equal-area mean in {spans(ks)}")
-    return (f"Висоти хорд: {where}; δ ΔT — % від ΔT_{{max}} − ΔT_{{min}}" if uk else
-            f"Chord heights: {where}; δ of ΔT: % of ΔT_{{max}} − ΔT_{{min}}")
+                 f"middle ordinates, in {spans(ks)} the equal-area mean")
+    hi, lo, span = energy_span(doc, lang)
+    # the arithmetic kept on one line (a reader checks it as one): non-breaking spaces
+    arith = NB.join(("=", hi, "−", _paren(lo), "=", span, "Дж" if uk else "J"))
+    return (f"Висоти хорд: {where}; δ — % від ΔT_{{max}} − ΔT_{{min}} {arith}" if uk else
+            f"Chord heights: {where}; δ, % of ΔT_{{max}} − ΔT_{{min}} {arith}")
+
+
+def _paren(text: str) -> str:
+    """A printed negative value in brackets where it is subtracted: − (−43,2)."""
+    return f"({text})" if text.startswith(("−", "-")) else text
+
+
+def energy_span(doc: dict[str, Any], lang: str) -> tuple[str, str, str]:
+    """Table 1's δ's denominator as printed: the largest and the smallest exact ΔT of the table's
+    column and their difference, to the column's decimals (``energy_errors`` divides by it)."""
+    d = energy_decimals(doc)
+    ex = [round(p["energy"], d) for p in doc["positions"]]
+    return tuple(fixed(v, lang, d).replace("-", "−") for v in (max(ex), min(ex), max(ex) - min(ex)))
 
 
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
