@@ -651,7 +651,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     lo, hi = _extent(Y, f.dT, [k, l])
     rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
-    _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
+    _text(rec, (x_hi + 7.5, -1.2), f"{w['Im']}, {w['kgm2']}", step="axes")     # its unit, as I*(φ)'s axis
     labels = [LabelRequest(complex(0.0, hi + 10.0), f"ΔT, {w['J']}", 1 + 0j, TEXT, step="axes")]
     numbers: list[list[LabelRequest]] = []
     rec.add("polyline", drawn(X, Y), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")

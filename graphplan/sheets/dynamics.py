@@ -191,7 +191,8 @@ def motor_table(doc: dict, lang: str) -> Record:
             [f"{motor_omega(lang)}, {'рад/с' if uk else 'rad/s'}; {motor_delta(lang)}",
              f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             # the motor shaft's (review 13 #18: "on the cycle" did not say which shaft)
-            ["M_{max} на валу двигуна, Н·м" if uk else "M_{max} on motor shaft, N·m", fmt(m["moment_peak"], lang)]]
+            # (not M_max: that is the catalogue's, two rows up — stop 46)
+            ["M_{дв} найбільший у циклі, Н·м" if uk else "M_{mot} peak in the cycle, N·m", fmt(m["moment_peak"], lang)]]
     rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
     # why a flywheel beside a motor sized by the peak (review 13 #18) is said by the terminal's
     # `dynamics` (report.dynamics.motor_note), not under this table: its 4–6 lines cost the shaper's
