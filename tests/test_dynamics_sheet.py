@@ -452,3 +452,39 @@ def test_table_1s_delta_is_the_printed_pairs_over_the_printed_span(sheets, key):
     assert (hi, lo) == (max(exact), min(exact)) and span == pytest.approx(hi - lo, abs=1e-9)
     for r in body:
         assert _number(r[10]) == pytest.approx(round(100 * (_number(r[8]) - _number(r[9])) / span, 1), abs=1e-9), r
+
+
+def _decimals(text: str) -> int:
+    return len(text.split(",")[1]) if "," in text else 0
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_the_flywheels_arithmetic_gives_table_2s_values_from_its_printed_numbers(sheets, key):
+    """Stop 46 (the rocker: J = 0,952·68,5/(14,66²·0,06) = 5,057 and I_мах = J − 0,3231 printed
+    4,733, the printed numbers giving 4,734; the approximate (21,9 − (−44,7))/(14,66²·0,06) − 0,05746
+    − 0,3231 printed 4,787, giving 4,784): a reader working each chain from its printed numbers gets
+    its printed result, and Table 2's graphical and approximate rows are those results."""
+    sheet = sheets[key]
+    lines = [plain(t).replace("\u00a0", " ") for t in note_lines(sheet)]
+    j_line = " ".join(lines)
+    n = r"(−?\d+(?:,\d+)?)"
+    m = re.search(rf"= {n}·{n}/\({n}²·{n}\) = {n} кг·м²; I_мах = J − I_рот·i² = {n}", j_line)
+    assert m, j_line
+    mu, kl, w, d, J = (_number(m.group(k)) for k in range(1, 6))
+    assert round(mu * kl / (w * w * d), _decimals(m.group(5))) == pytest.approx(J, abs=1e-9)
+    rotor = next(r[1] for r in rows(sheet, "motor table") if r[0].startswith("I_рот"))   # Table 3's I_рот·i²
+    subtracted = _number(rotor)
+    graphical = m.group(6)
+    assert round(J - subtracted, _decimals(graphical)) == pytest.approx(_number(graphical), abs=1e-9)
+    rec = next(p.record for p in sheet.placed if p.name == "flywheel table")
+    approx = " ".join(plain(it.text).replace("\u00a0", " ") for it in rec.items
+                      if it.kind == "text" and it.step == "approximate arithmetic")
+    m = re.search(rf"= \({n} − \(?{n}\)?\)/\({n}²·{n}\)((?: − {n})+) = {n} кг·м²", approx)
+    assert m, approx
+    hi, lo, w, d = (_number(m.group(k)) for k in range(1, 5))
+    subtracted = sum(_number(v) for v in re.findall(n, m.group(5)))
+    value = m.group(7)
+    assert round((hi - lo) / (w * w * d) - subtracted, _decimals(value)) == pytest.approx(_number(value), abs=1e-9)
+    table = {r[0]: r[1] for r in rows(sheet, "flywheel table") if len(r) == 3}
+    assert next(v for k, v in table.items() if k.startswith("графічно")) == graphical
+    assert next(v for k, v in table.items() if k.startswith("наближено: (")) == value
