@@ -63,7 +63,7 @@ def dynamics_json(f) -> dict[str, Any]:
             "energy": float(exact_dt[k])})
     exact = dyn.flywheel
     pct = lambda v: 100.0 * (v - exact) / exact if exact > 0 else None  # noqa: E731
-    graphical = graphical_chain(f)[1]        # as the notes' printed arithmetic gives it (stop 46)
+    graphical = max(graphical_chain(f)[1], 0.0)   # as the notes' printed arithmetic gives it (stop 46); never < 0
     tg = f.tangent
     every = (len(dyn.motion.turn) - 1) // 360
     m = dr.motor
@@ -104,7 +104,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "warnings": [en for en, _ in dyn.warnings],
     }
     # Table 2's approximate row: what the note's printed arithmetic gives (stop 46), as the graphical one
-    approx = approximate_chain(doc) if f.approximate is not None else None
+    approx = max(approximate_chain(doc), 0.0) if f.approximate is not None else None
     doc["flywheel"].update(approximate=approx, approximate_error_pct=None if approx is None else pct(approx))
     return _clean(doc)
 
