@@ -400,3 +400,91 @@ def test_the_english_sheet_writes_the_motor_in_latin(sheets):
         return [c for row in rows(sheets["sixbar", lang], "motor table") for c in row if c.startswith("4")]
     assert len(names("en")) == 1 and re.fullmatch(r"4AM\d+[A-Z]\d", names("en")[0])
     assert len(names("uk")) == 1 and re.fullmatch(r"4АМ\d+[A-ZА-Я]\d", names("uk")[0])
+
+
+def _number(text: str) -> float:
+    return float(text.replace(",", ".").replace("−", "-"))
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_omega_m_and_the_extremes_are_drawn_where_the_axis_reads_them(sheets, key):
+    """Stop 46 (the rocker's ω(φ): three ticks, its extremes between them, no ω_m): the ordinate axis
+    graduated at least five times, each mean speed a dash-dot line at the height the ticks give its
+    legend's value, and ω_max, ω_min lettered at the solid curve's highest and lowest points, their
+    printed values giving the printed δ = (ω_max − ω_min)/ω_m to the rounding of the figures."""
+    rec = next(p.record for p in sheets[key].placed if p.name == "speed")
+    texts = [it for it in rec.items if it.kind == "text"]
+    ticks = sorted((_number(it.text), it.points[0][1] + 1.0) for it in texts if it.step == "ω ticks" and it.text != "0")
+    assert len(ticks) >= 5
+    a, b = np.polyfit([v for v, _ in ticks], [y for _, y in ticks], 1)
+    value = lambda y: (y - b) / a                                   # noqa: E731  the drawn height → ω
+    legends = [plain(it.text) for it in texts if "рад/с" in it.text and ":" in it.text]
+    means = {m.group(1): _number(m.group(2)) for t in legends for m in re.finditer(r"(ω_m(?: дв)?) = (\d+(?:,\d+)?)", t)}
+    assert set(means) == {"ω_m", "ω_m дв"}
+    for sym, wm in means.items():
+        line = next(it for it in rec.items if it.kind == "segment" and it.role == "axis" and plain(it.step) == f"{sym} line")
+        assert value(line.points[0][1]) == pytest.approx(wm, abs=0.006)
+    solid = np.array(next(it for it in rec.items if it.kind == "polyline" and it.role == "curve").points)
+    got = {}
+    for name, pick in (("max", np.max), ("min", np.min)):
+        label = next(it for it in texts if it.step == f"ω_{name}")
+        got[name] = _number(plain(label.text).split("= ")[1].split()[0])
+        assert got[name] == pytest.approx(value(pick(solid[:, 1])), abs=0.01)
+    delta = (got["max"] - got["min"]) / means["ω_m"]
+    given = _number(re.search(r"δ = (\d+(?:,\d+)?)", legends[0]).group(1))
+    assert delta == pytest.approx(given, rel=0.02)
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en"), ("offset", "uk")])
+def test_table_1s_delta_is_the_printed_pairs_over_the_printed_span(sheets, key):
+    """Stop 46: a reader recomputes Table 1's δ from the printed ΔT гр. and ΔT and the range the note
+    under the table prints (ΔT_max − ΔT_min = a − (b) = c): c is the printed difference, a and b the
+    exact column's extremes, and every row's δ that pair's (g − e)/c to the printed decimal."""
+    table = [r for r in rows(sheets[key], "positions table") if len(r) == 11]
+    head, body = table[0], [[c.rstrip("*") for c in r] for r in table[1:]]
+    assert head[8].startswith("ΔT") and head[9].startswith("ΔT") and head[10] == "δ, %"
+    text = " ".join(plain(it.text) for p in sheets[key].placed if p.name == "positions table"
+                    for it in p.record.items if it.kind == "text" and it.step == "chord heights")
+    m = re.search(r"ΔT_max − ΔT_min = ([−\d,.]+) − \(?([−\d,.]+)\)? = ([\d,.]+)", text.replace("\u00a0", " "))
+    assert m, text
+    hi, lo, span = (_number(g) for g in m.groups())
+    exact = [_number(r[9]) for r in body]
+    assert (hi, lo) == (max(exact), min(exact)) and span == pytest.approx(hi - lo, abs=1e-9)
+    for r in body:
+        assert _number(r[10]) == pytest.approx(round(100 * (_number(r[8]) - _number(r[9])) / span, 1), abs=1e-9), r
+
+
+def _decimals(text: str) -> int:
+    return len(text.split(",")[1]) if "," in text else 0
+
+
+@pytest.mark.parametrize("key", [("sixbar", "uk"), ("offset", "uk")])
+def test_the_flywheels_arithmetic_gives_table_2s_values_from_its_printed_numbers(sheets, key):
+    """Stop 46 (the rocker: J = 0,952·68,5/(14,66²·0,06) = 5,057 and I_мах = J − 0,3231 printed
+    4,733, the printed numbers giving 4,734; the approximate (21,9 − (−44,7))/(14,66²·0,06) − 0,05746
+    − 0,3231 printed 4,787, giving 4,784): a reader working each chain from its printed numbers gets
+    its printed result, and Table 2's graphical and approximate rows are those results."""
+    sheet = sheets[key]
+    lines = [plain(t).replace("\u00a0", " ") for t in note_lines(sheet)]
+    j_line = " ".join(lines)
+    n = r"(−?\d+(?:,\d+)?)"
+    m = re.search(rf"= {n}·{n}/\({n}²·{n}\) = {n} кг·м²; I_мах = J − I_рот·i² = {n}", j_line)
+    assert m, j_line
+    mu, kl, w, d, J = (_number(m.group(k)) for k in range(1, 6))
+    assert round(mu * kl / (w * w * d), _decimals(m.group(5))) == pytest.approx(J, abs=1e-9)
+    rotor = next(r[1] for r in rows(sheet, "motor table") if r[0].startswith("I_рот"))   # Table 3's I_рот·i²
+    subtracted = _number(rotor)
+    graphical = m.group(6)
+    assert round(J - subtracted, _decimals(graphical)) == pytest.approx(_number(graphical), abs=1e-9)
+    rec = next(p.record for p in sheet.placed if p.name == "flywheel table")
+    approx = " ".join(plain(it.text).replace("\u00a0", " ") for it in rec.items
+                      if it.kind == "text" and it.step == "approximate arithmetic")
+    m = re.search(rf"= \({n} − \(?{n}\)?\)/\({n}²·{n}\)((?: − {n})+) = {n} кг·м²", approx)
+    assert m, approx
+    hi, lo, w, d = (_number(m.group(k)) for k in range(1, 5))
+    subtracted = sum(_number(v) for v in re.findall(n, m.group(5)))
+    value = m.group(7)
+    assert round((hi - lo) / (w * w * d) - subtracted, _decimals(value)) == pytest.approx(_number(value), abs=1e-9)
+    table = {r[0]: r[1] for r in rows(sheet, "flywheel table") if len(r) == 3}
+    assert next(v for k, v in table.items() if k.startswith("графічно")) == graphical
+    assert next(v for k, v in table.items() if k.startswith("наближено: (")) == value

@@ -13,7 +13,7 @@ from graphplan.drawing.diagrams import fmt
 from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
-from graphplan.util.words import num
+from graphplan.util.words import fixed, num
 
 if TYPE_CHECKING:
     from graphplan.graphic.flywheel import Flywheel
@@ -651,7 +651,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     lo, hi = _extent(Y, f.dT, [k, l])
     rec.vector((0.0, lo - 6.0), (0.0, hi + 10.0), role="construction", width=AXIS_W, layer=LAYER, step="ΔT axis")
     rec.vector((-3.0, 0.0), (x_hi + 6.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="I* axis")
-    _text(rec, (x_hi + 7.5, -1.2), w["Im"], step="axes")
+    _text(rec, (x_hi + 7.5, -1.2), f"{w['Im']}, {w['kgm2']}", step="axes")     # its unit, as I*(φ)'s axis
     labels = [LabelRequest(complex(0.0, hi + 10.0), f"ΔT, {w['J']}", 1 + 0j, TEXT, step="axes")]
     numbers: list[list[LabelRequest]] = []
     rec.add("polyline", drawn(X, Y), role="curve", layer=LAYER, step="ΔT(I*): φ eliminated")
@@ -778,17 +778,19 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     rec.label((-1.5, -1.0), "0", size=NUM, anchor="end", layer=LAYER, step="ω ticks")
     _text(rec, (1.8, top + 5.0), f"ω, {w['rad']}/{w['s']}", step="axes ω")
     rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
-    step = _nice((hi - lo) / 5)
-    v = math.ceil(lo / step) * step
-    while v <= hi:
+    step = _nice((hi - lo) / SPEED_TICKS)
+    v = math.ceil(lo / step - 1e-9) * step
+    while v <= hi + 1e-9 * step:
         yy = float(y(v))
         rec.segment((0.0, yy), (L, yy), role="grid", layer=LAYER, step="ω grid")
-        rec.label((-1.5, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+        rec.segment((-1.5, yy), (0.0, yy), role="construction", layer=LAYER, step="ω ticks")
+        rec.label((-3.0, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
         v += step
     for deg in range(0, 361, 30):
         xx = L * deg / 360.0
         rec.segment((xx, 0.0), (xx, -1.5), role="construction", layer=LAYER, step="φ ticks")
         rec.label((xx, -5.0), f"{deg}°", size=NUM, anchor="middle", layer=LAYER, step="φ ticks")
+    means: list[LabelRequest] = []
     for k, (m, role, text, sym, dsym) in enumerate(curves):
         xs = m.turn / (2 * math.pi) * L
         rec.add("polyline", list(zip(xs[::10], y(m.omega[::10]))), role=role, layer=LAYER, step=text,
@@ -797,7 +799,26 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         rec.segment((0.0, yl + 1.0), (10.0, yl + 1.0), role=role, layer=LAYER, step=text, width=0.5 if k == 0 else 0.35)
         rec.label((12.0, yl), f"{text}: {dsym} = {achieved(m.delta, dyn.delta, lang)}, {sym} = {fmt(m.mean, lang)} "
                               f"{w['rad']}/{w['s']}", size=NUM, layer=LAYER)
+        # each mean speed a dash-dot line across the turn, named at its right end (the textbook's ω_m
+        # about which ω(φ) swings)
+        ym = float(y(m.mean))
+        rec.segment((0.0, ym), (L, ym), role="axis", layer=LAYER, step=f"{sym} line")
+        means.append(LabelRequest(complex(L, ym), sym, 1 + 0j, NUM, step=f"{sym} line"))
+    place_labels(rec, means, layer=LAYER)
+    # the flywheel's curve's extremes, from which δ = (ω_max − ω_min)/ω_m is read
+    m = dyn.motion
+    asked = []
+    places = max(3 - math.floor(math.log10(abs(m.mean))), 0) if m.mean else 2    # ω_m's four figures, both the same
+    for name, j, toward in (("max", int(np.argmax(m.omega)), 1j), ("min", int(np.argmin(m.omega)), -1j)):
+        at = (float(m.turn[j] / (2 * math.pi) * L), float(y(m.omega[j])))
+        rec.point(at, role="joint", layer=LAYER, step=f"ω_{name}")
+        asked.append(LabelRequest(complex(*at), f"ω_{{{name}}} = {fixed(float(m.omega[j]), lang, places)} {w['rad']}/{w['s']}", toward, NUM,
+                                  step=f"ω_{name}"))
+    place_labels(rec, asked, layer=LAYER)
     return rec
+
+
+SPEED_TICKS = 8      # about this many graduations of ω over the plot's height (5 left its extremes between ticks)
 
 
 SPEED_MIN = (150.0, 50.0)     # mm: the smallest ω(φ) plot (abscissa × height) that still reads

@@ -63,11 +63,12 @@ def dynamics_json(f) -> dict[str, Any]:
             "energy": float(exact_dt[k])})
     exact = dyn.flywheel
     pct = lambda v: 100.0 * (v - exact) / exact if exact > 0 else None  # noqa: E731
+    graphical = max(graphical_chain(f)[1], 0.0)   # as the notes' printed arithmetic gives it (stop 46); never < 0
     tg = f.tangent
     every = (len(dyn.motion.turn) - 1) // 360
     m = dr.motor
     a, b = m.line
-    return _clean({
+    doc = {
         "scene": st.mech.title,
         "delta": dyn.delta,
         "omega_mean": dyn.omega_mean,
@@ -79,7 +80,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "equal_area_intervals": [int(k) for k in f.equal_area],
         "flywheel": {
             "needed": dyn.needs_flywheel,
-            "exact": exact, "graphical": f.flywheel, "error_pct": pct(f.flywheel),
+            "exact": exact, "graphical": graphical, "error_pct": pct(graphical),
             "approximate": f.approximate, "approximate_error_pct": pct(f.approximate),
             "approximate_energy": {k: (v * f.mu_A if k in ("max", "min") else v) for k, v in f.energy_extremes.items()},
             "merkalov": f.merkalov, "merkalov_error_pct": pct(f.merkalov),
@@ -101,7 +102,11 @@ def dynamics_json(f) -> dict[str, Any]:
                   "moment_peak": float(np.max(dyn.motor_motion.driving)) / (dr.ratio * dr.efficiency),
                   "motion": _motion(dyn.motor_motion, every)},
         "warnings": [en for en, _ in dyn.warnings],
-    })
+    }
+    # Table 2's approximate row: what the note's printed arithmetic gives (stop 46), as the graphical one
+    approx = max(approximate_chain(doc), 0.0) if f.approximate is not None else None
+    doc["flywheel"].update(approximate=approx, approximate_error_pct=None if approx is None else pct(approx))
+    return _clean(doc)
 
 
 def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
@@ -162,9 +167,25 @@ def chords_note(doc: dict[str, Any], lang: str) -> str:
                  f"the equal-area mean ordinate, but the middle one in {spans(rest)}")
     else:
         where = (f"ордината в середині, у {spans(ks)} — середня рівних площ" if uk else
-                 f"the middle ordinate, the equal-area mean in {spans(ks)}")
-    return (f"Висоти хорд: {where}; δ ΔT — % від ΔT_{{max}} − ΔT_{{min}}" if uk else
-            f"Chord heights: {where}; δ of ΔT: % of ΔT_{{max}} − ΔT_{{min}}")
+                 f"middle ordinates, in {spans(ks)} the equal-area mean")
+    hi, lo, span = energy_span(doc, lang)
+    # the arithmetic kept on one line (a reader checks it as one): non-breaking spaces
+    arith = NB.join(("=", hi, "−", _paren(lo), "=", span, "Дж" if uk else "J"))
+    return (f"Висоти хорд: {where}; δ — % від ΔT_{{max}} − ΔT_{{min}} {arith}" if uk else
+            f"Chord heights: {where}; δ, % of ΔT_{{max}} − ΔT_{{min}} {arith}")
+
+
+def _paren(text: str) -> str:
+    """A printed negative value in brackets where it is subtracted: − (−43,2)."""
+    return f"({text})" if text.startswith(("−", "-")) else text
+
+
+def energy_span(doc: dict[str, Any], lang: str) -> tuple[str, str, str]:
+    """Table 1's δ's denominator as printed: the largest and the smallest exact ΔT of the table's
+    column and their difference, to the column's decimals (``energy_errors`` divides by it)."""
+    d = energy_decimals(doc)
+    ex = [round(p["energy"], d) for p in doc["positions"]]
+    return tuple(fixed(v, lang, d).replace("-", "−") for v in (max(ex), min(ex), max(ex) - min(ex)))
 
 
 FLYWHEEL_METHODS = ("error_pct", "graphical"), ("approximate_error_pct", "approximate"), ("merkalov_error_pct", "merkalov")
@@ -598,8 +619,41 @@ def wittenbauer_note(f, lang: str, decimals: int | None = None) -> str:
     kgm2 = "кг·м²" if uk else "kg·m²"
     wm, d = f.dyn.omega_mean, f.dyn.delta
     # each "numbers = result unit" on one line (no-break spaces): a result never wrapped off its arithmetic
+    total, flywheel = graphical_chain(f)
     return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
-            f"{NB}={NB}{sig(f.total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(f.total - f.dyn.constant, lang, decimals)}")
+            f"{NB}={NB}{sig(total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(flywheel, lang, decimals)}")
+
+
+def _read(text: str) -> float:
+    """A printed number read back (the reader's value): decimal comma or point, true minus."""
+    return float(text.replace("−", "-").replace(",", ".").replace(NB, ""))
+
+
+def _constant_printed(rotor: float, reducer: float) -> float:
+    """I_рот·i² (+ I*_ред) as ``constant_terms`` prints them, read back."""
+    return _read(sig(rotor, "en")) + (_read(sig(reducer, "en")) if reducer > 0 else 0.0)
+
+
+def graphical_chain(f) -> tuple[float, float]:
+    """The graphical flywheel as a reader works it out from ``wittenbauer_note``'s printed numbers
+    (stop 46: 5,057 − 0,3231 printed = 4,733 where the printed numbers give 4,734): J =
+    μ_T·|kl|/(ω_m²·δ) from the printed μ_T, |kl|, ω_m and δ, printed to four figures, and
+    I_мах = J − I_рот·i² (− I*_ред) from that printed J; (J, I_мах) — Table 2's graphical row is this I."""
+    wm, d = f.dyn.omega_mean, f.dyn.delta
+    total = _read(num(f.mu_A, "en")) * _read(num(f.kl, "en")) / (_read(sig(wm, "en")) ** 2 * _read(num(d, "en")))
+    total = _read(sig(total, "en"))
+    return total, total - _constant_printed(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced)
+
+
+def approximate_chain(doc: dict) -> float:
+    """The approximate flywheel as a reader works it out from ``approximate_note``'s printed numbers
+    (stop 46: (21,9 − (−44,7))/(14,66²·0,06) − 0,05746 − 0,3231 printed = 4,787 where they give
+    4,784): ΔT_max, ΔT_min to Table 1's decimals, ω_m and I*_м сер to four figures, δ as given."""
+    p = approximate_parts(doc)
+    hi, lo = (_read(t) for t in decimals_column([p["dt_max"], p["dt_min"]], "en", energy_decimals(doc)))
+    fw = doc["flywheel"]
+    return ((hi - lo) / (_read(sig(p["omega_mean"], "en")) ** 2 * _read(num(p["delta"], "en")))
+            - _read(sig(p["i_mean"], "en")) - _constant_printed(fw["rotor_reduced"], fw["reducer_reduced"]))
 
 
 def approximate_parts(doc: dict) -> dict[str, float]:
@@ -631,7 +685,7 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
-            f"{_fl(p['total'] - fw['rotor_reduced'] - fw['reducer_reduced'], lang, flywheel_decimals(doc))}"
+            f"{_fl(approximate_chain(doc), lang, flywheel_decimals(doc))}"
             + (f" (ΔT_{{max}}, ΔT_{{min}} {'з кривої ΔT(φ) при φ' if uk else 'off the ΔT(φ) curve at φ'}{NB}"
                f"{fixed(p['max_deg'], lang, 0)}°, {fixed(p['min_deg'], lang, 0)}°)"))
 

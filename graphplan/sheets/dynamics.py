@@ -191,8 +191,11 @@ def motor_table(doc: dict, lang: str) -> Record:
             [f"{motor_omega(lang)}, {'рад/с' if uk else 'rad/s'}; {motor_delta(lang)}",
              f"{fmt(m['motion']['omega_mean'], lang)}; {achieved(m['motion']['delta'], doc['delta'], lang)}"],
             # the motor shaft's (review 13 #18: "on the cycle" did not say which shaft)
-            ["M_{max} на валу двигуна, Н·м" if uk else "M_{max} on motor shaft, N·m", fmt(m["moment_peak"], lang)]]
-    rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"])
+            # (not M_max: that is the catalogue's, two rows up — stop 46)
+            ["M_{дв} найбільший у циклі, Н·м" if uk else "M_{mot} peak in the cycle, N·m", fmt(m["moment_peak"], lang)]]
+    # every value right-aligned, pairs and the characteristic too (stop 46: 1,5 at the right under
+    # 750 / 698 centred read as two columns)
+    rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"], align=["middle", "end"])
     # why a flywheel beside a motor sized by the peak (review 13 #18) is said by the terminal's
     # `dynamics` (report.dynamics.motor_note), not under this table: its 4–6 lines cost the shaper's
     # A1 dynamics its one sheet (3 sheets, the first holding one drawing)
