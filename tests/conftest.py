@@ -63,7 +63,6 @@ THINNED = {
     "test_the_task_data_are_printed_as_the_scene_gives_them": lambda case: case != "a3",
     "test_mu_omega_times_the_measured_segment_is_table_3s_omega": lambda case: case != "a3",
     "test_the_a3_sets_train_is_drawn_at_full_size_where_its_sheet_has_room": 0,
-    "test_sheets_of_new_mechanisms_have_no_defects": lambda case: case != "forces-slotter",
     "test_the_force_sheet_draws_the_same_number_of_plans_at_any_count": 0,
     "test_a_tall_narrow_mechanisms_force_set_packs_its_drawings": 0,
     "test_flat_hodographs_grow_where_the_sheet_has_room": 0,
@@ -95,7 +94,9 @@ THINNED = {
     # stop 42's merges took the default run from 163 to 205 s: the cases that repeat a behaviour another
     # case of the same test shows (a four-bar and a shaper beside the crank-slider and the slotter; the A2
     # DXF beside the A1; the rocking phase diagram, 5.7 s, beside the two translating ones): slow suite
-    "test_sheets_of_new_mechanisms_have_no_defects": lambda case: case.endswith(("crank_slider", "slotter")),
+    # (with stop 44's: the generated slotter's force sheet, 10 s, slow — a second key had dropped it)
+    "test_sheets_of_new_mechanisms_have_no_defects":
+        lambda case: case.endswith(("crank_slider", "slotter")) and case != "forces-slotter",
     "test_dxf_is_cad_ready": 1,
     "test_ukrainian_output_of_every_command": lambda case: case.endswith("-shaper"),     # each command once
     "test_the_phase_diagram_draws_the_printed_pressure_angles": 1,

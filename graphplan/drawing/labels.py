@@ -606,18 +606,18 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
     order = ([(p, r) for p in passes for r in rings] if is_number(req.text)
              else [(p, r) for r in rings for p in passes])
     counted: dict[int, np.ndarray] = {}
+    led: dict[int, list] = {}
     for (strict, apart), ring in order:
         if ring not in counted:               # ring by ring, nearest first: counted lazily
             counted[ring] = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
         counts = counted[ring]
-        for k in np.nonzero(counts == 0)[0] + ring * n:
-            box = tuple(boxes[k])
+        free = np.nonzero(counts == 0)[0] + ring * n
+        if ring not in led:                   # the free spots' leaders, and which meet a label or a leader
+            led[ring] = _led_blocked(ob, req.at, [tuple(boxes[k]) for k in free])
+        for k, (box, (a, b), meets, crosses) in zip(free, led[ring]):
             if ok is not None and not ok(box):
                 continue
-            a, b = _leader(req.at, box)
-            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
-                continue
-            if any(_cross(a, b, c, d) for c, d in ob.leaders or []):   # two leaders crossing read as an X
+            if meets or crosses:    # through a label, or across a drawn leader (two crossing read as an X)
                 continue
             if not req.across and _crosses_thick(ob, a, b):   # nor across a link or an arrow, where asked
                 continue
@@ -625,6 +625,34 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
                 continue
             return box, complex(starts[k]), (a, b)
     return None
+
+
+def _led_blocked(ob: Obstacles, at: complex, boxes: list[Box]) -> list[tuple[Box, tuple[complex, complex], bool, bool]]:
+    """Each box with its ``_leader`` from ``at``, whether that leader meets a label's box grown by
+    0.7 mm (``_segment_meets_box``) and whether it properly crosses a drawn leader (``_cross``) —
+    every box against every label and leader at once, the same arithmetic as those tests one by one."""
+    leads = [_leader(at, box) for box in boxes]
+    if not leads:
+        return []
+    a = np.asarray([p for p, _ in leads], dtype=complex)
+    b = np.asarray([q for _, q in leads], dtype=complex)
+    meets = np.zeros(len(leads), dtype=bool)
+    crosses = np.zeros(len(leads), dtype=bool)
+    if ob.boxes:
+        q = np.asarray(ob.boxes, dtype=float)
+        A, B = a[:, None], b[:, None]
+        meets = np.any(_clip_all(A.real, A.imag, B.real, B.imag, q[None, :, 0] - 0.7, q[None, :, 1] - 0.7,
+                                  q[None, :, 2] + 0.7, q[None, :, 3] + 0.7), axis=1)
+    if ob.leaders:
+        c = np.asarray([c for c, _ in ob.leaders], dtype=complex)[None, :]
+        d = np.asarray([d for _, d in ob.leaders], dtype=complex)[None, :]
+        A, B = a[:, None], b[:, None]
+
+        def side(p, q, r):          # ((q − p)* · (r − p)).imag in real arithmetic, as CPython's complex product
+            ux, uy = q.real - p.real, q.imag - p.imag
+            return ux * (r.imag - p.imag) - uy * (r.real - p.real)
+        crosses = np.any((side(A, B, c) * side(A, B, d) < 0) & (side(c, d, A) * side(c, d, B) < 0), axis=1)
+    return [(box, lead, bool(m), bool(x)) for box, lead, m, x in zip(boxes, leads, meets, crosses)]
 
 
 def _cross(a: complex, b: complex, c: complex, d: complex) -> bool:
@@ -736,14 +764,20 @@ def _outside(ob: Obstacles, record: Record, req: LabelRequest, ink: Box):
             touched.extend(_counts(ob, np.asarray(boxes[len(touched):len(touched) + OUTSIDE_CHUNK]),
                                    number=_number(req)).tolist())
         return touched[i]
+    led: list = []                    # the spots' leaders, whether each meets a label, crosses a leader
+
+    def leader(i: int):
+        while len(led) <= i:
+            led.extend(_led_blocked(ob, at, boxes[len(led):len(led) + OUTSIDE_CHUNK]))
+        return led[i]
     for strict in (True, False):      # first a leader that crosses no other and is not long
         for i, box in enumerate(boxes):
             if hits(i):
                 continue
-            a, b = _leader(at, box)
-            if any(_segment_meets_box(a, b, (q[0] - 0.7, q[1] - 0.7, q[2] + 0.7, q[3] + 0.7)) for q in ob.boxes):
+            _, (a, b), meets, crosses = leader(i)
+            if meets:
                 continue
-            if strict and (abs(b - a) > OUTSIDE_LEADER_MM or any(_cross(a, b, c_, d) for c_, d in ob.leaders or [])):
+            if strict and (abs(b - a) > OUTSIDE_LEADER_MM or crosses):
                 continue
             return box, complex(box[0] - ink[0], box[1] - ink[1]), (a, b)
     return None
