@@ -1977,3 +1977,95 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+ROCKER46 = """# Lead's check, stop 46: a crank-rocker four-bar O1ABO2 whose rocker's arm O2C drives a vertical slider D
+# through the rod CD (I(0-1) -> II(2-3) RRR -> II(4-5) RRP): a vertical feed mechanism, the crank ccw.
+title = "Шестиланковий механізм подачі з вертикальним повзуном"
+title_en = "Six-bar feed mechanism with a vertical slider"
+designation = "ТММ.ПД.46.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-46"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, -0.05]
+
+[frame.guides]
+y = { through = [0.32, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.065
+rpm = 140
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.02
+
+[[link]]
+name = "O2BC"
+number = 3
+joints = ["O2", "B"]
+length = 0.15
+shape = { C = [0.2, 0.0] }
+points = { S3 = 0.5 }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2
+inertia = 0.009
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "y"
+mass = 8
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+output = "D"
+start = "max"
+accel = [4]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.06
+efficiency = 0.85
+synchronous_rpm = 750
+"""
