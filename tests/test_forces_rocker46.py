@@ -49,3 +49,22 @@ def test_the_crank_groups_force_plan_draws_its_loads_long_enough_to_read(rocker)
     assert loads and min(loads.values()) >= 6.5, crank
     others = max(max(d.values()) for label, d in drawn.items() if label != "I(0-1)")
     assert max(crank.values()) <= 1.5 * others + 1e-6, (crank, others)
+
+
+def test_a_plans_detail_rings_the_knot_of_short_sides_not_a_short_side_far_off():
+    """A sliver 90 mm tall: four short loads (0.5–4.5 mm) knotted at its foot, a 3.5 mm component at
+    its head. The detail's window holds the knot (and is at most 30 mm across, so a μF of at least
+    twice the plan's size is left to draw it at); the far component is no part of it."""
+    from graphplan.drawing.forces import DETAIL_MOST_MM, plan_detail
+    from graphplan.graphic.forceplans import Side
+    foot = [Side("R12τ", 0j, 0.5j, "component"), Side("G2", 0.5j, 0.5j - 4j, "known"),
+            Side("Φ2", -3.5j, -3.5j + 4.5, "known"), Side("Φ3", 4.5 - 3.5j, 7.0 - 3.5j, "known")]
+    head = [Side("R43", 7.0 - 3.5j, 10.0 + 86j, "reaction"), Side("R03τ", 10.0 + 86j, 13.5 + 86j, "component"),
+            Side("R03", 13.5 + 86j, 0j, "reaction")]
+    d = plan_detail(foot + head, 10.0)
+    assert d is not None and d.choices and all(10.0 / m >= 2.0 for m in d.choices)
+    x0, y0, x1, y1 = d.box
+    assert max(x1 - x0, y1 - y0) <= DETAIL_MOST_MM
+    for s in foot:
+        assert all(x0 <= z.real <= x1 and y0 <= z.imag <= y1 for z in (s.start, s.end)), s.name
+    assert y1 < 86.0

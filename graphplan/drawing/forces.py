@@ -981,14 +981,12 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     plain = _polygon(fp, gp, lang, detail=False)
     if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
         return plain
-    x0, y0, x1, y1 = plain.bounds()
-    half = max(x1 - x0, _caption_across(gp.label)) / 2
-    room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
-    beside = gp.kind == "crank"
-    out = _polygon(fp, gp, lang, detail=True, beside=beside)
-    a0, b0, a1, b1 = out.bounds()
-    inside = room[0] <= a0 and room[1] <= b0 and a1 <= room[2] and b1 <= room[3]
-    return out if (inside or beside) and "mu_F detail" in out.scales else plain
+    # its detail in a free corner of the plan's room, else beside it: the crank's under its sliver,
+    # another group's to the right of its plan (the rocker six-bar's II(2-3) at 10 N/mm lettered G2,
+    # R12, G3, Φ2, R23 in a 10 mm knot at the foot of a 30 mm wide sliver, R^τ12 0.5 mm and Φ3
+    # 2.5 mm named only under it)
+    out = _polygon(fp, gp, lang, detail=True, beside=True)
+    return out if "mu_F detail" in out.scales else plain
 
 
 def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
@@ -1045,7 +1043,8 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     # the long letter first, its twin after it on the line's other side
     order = sorted(range(len(asked)), key=lambda k: k in choices)
     _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
-    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside):
+    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside,
+                                                  right=gp.kind != "crank"):
         return _polygon(fp, gp, lang, detail=False)      # no room for it: the plan as it was
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
@@ -1102,7 +1101,7 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     ≤ μF/2); None where no side is too short to carry its name (``TINY_MM``: named only under the
     plan, "G1, Φ1 < 3 mm"), or no value is left."""
     from graphplan.drawing.charts import _series_below, hodograph_scale
-    short = [s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM]
+    short = _knot([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM])
     if not any(s.mm < TINY_MM for s in short):      # each side long enough to carry its name: none
         return None
     zs = [z for s in short for z in (s.start, s.end)]
@@ -1113,6 +1112,25 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     choices = dict.fromkeys(m for m in (max(_series_below(mu_F * smallest / least), cap) for least in DETAIL_LEAST_MM)
                             if mu_F / m >= 2.0 - 1e-9)
     return PlanDetail((x0, y0, x1, y1), tuple(choices)) if choices else None
+
+
+def _knot(short: list) -> list:
+    """Of a plan's short sides, those crowding one spot: the sides within ``DETAIL_MOST_MM`` / 2 of
+    each other (end to end, chained), the knot with the most sides too short to carry their names
+    (``TINY_MM``), then the most sides. A short side at the plan's other end is no part of its
+    detail (the rocker six-bar's II(2-3): R^τ03 3.5 mm at R43's head, 90 mm from the knot of R^τ12,
+    G2, Φ2, Φ3 at its foot, made the window 90 mm tall and left the knot without a detail)."""
+    near = DETAIL_MOST_MM / 2
+    knots: list[list] = []
+    for s in short:
+        joined = [k for k in knots if any(min(abs(p - q) for p in (s.start, s.end) for q in (o.start, o.end)) <= near
+                                          for o in k)]
+        merged = [s] + [o for k in joined for o in k]
+        knots = [k for k in knots if all(k is not j for j in joined)] + [merged]
+    if not knots:
+        return []
+    best = max(knots, key=lambda k: (sum(o.mm < TINY_MM for o in k), len(k)))
+    return [s for s in short if any(s is o for o in best)]
 
 
 def _inside(a: complex, b: complex, box) -> tuple[float, float] | None:
@@ -1152,7 +1170,7 @@ def _detail_ring(rec: Record, sides: list, mu_F: float, step: str) -> PlanDetail
 
 
 def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str, gp_label: str = "", beside: bool = False) -> bool:
+                    step: str, gp_label: str = "", beside: bool = False, right: bool = False) -> bool:
     """The ringed spot (``_detail_ring``) drawn again at the detail's μF, every side through the
     window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its lengths as the
     ruler read them, times μF/μF_I), as the hodographs' details — in a corner of the plan's room
@@ -1175,7 +1193,12 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
     for mu, out in tries:
         det = _detail_drawing(d, mu, sides, same, mu_F, lang, step)
-        if out:                 # under the plan, at its middle
+        if out and right:       # right of the plan, level with its ring (within the plan's height)
+            e0, e1, e2, e3 = det.bounds()
+            dy = c.imag - (e1 + e3) / 2
+            dy = max(min(dy, rb[3] - e3), rb[1] - e1)
+            moved = det.moved(rb[2] + DETAIL_GAP - e0, dy)
+        elif out:               # under the plan, at its middle
             e0, _, e2, e3 = det.bounds()
             moved = det.moved((rb[0] + rb[2]) / 2 - (e0 + e2) / 2, rb[1] - DETAIL_GAP - e3)
         else:
