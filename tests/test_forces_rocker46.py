@@ -68,3 +68,39 @@ def test_a_plans_detail_rings_the_knot_of_short_sides_not_a_short_side_far_off()
     for s in foot:
         assert all(x0 <= z.real <= x1 and y0 <= z.imag <= y1 for z in (s.start, s.end)), s.name
     assert y1 < 86.0
+
+
+@pytest.mark.parametrize("xs, halves", [([0.0, 0.9, 3.5, 7.0, 40.0], [0.7] * 5),
+                                        ([0.0, 30.0, 59.0, 59.6, 60.0], [0.7] * 5)])
+def test_numbers_crowding_at_a_rows_ends_stay_within_it(xs, halves):
+    """A run crowding at the row's start (0, 1, 2, 3 by a slider's extreme) or end (11, 12) is set
+    apart within the row's span (``lo`` … ``hi``): the first number's ink no further left than at
+    its own place, the last's no further right; 1 mm of paper between neighbours, in order."""
+    from graphplan.drawing.charts import spread_apart
+    lo, hi = xs[0] - halves[0], xs[-1] + halves[-1]
+    at = spread_apart(xs, halves, 1.0, lo, hi)
+    assert all(a - h >= lo - 1e-9 and a + h <= hi + 1e-9 for a, h in zip(at, halves)), at
+    assert all(b - a >= 2 * 0.7 + 1.0 - 1e-9 for a, b in zip(at, at[1:])), at
+
+
+@pytest.fixture(scope="module")
+def rocker_turn():
+    from graphplan.drawing.charts import turn
+    return turn(scene_study(ROCKER46))
+
+
+def test_the_resistance_charts_numbers_stand_right_of_its_force_axis(rocker_turn):
+    """The P_D chart over the slider's path: position 0 at the force axis (s = 0), 1 about 1 mm from
+    it — no number's ink left of the axis, where the axis's own values stand ("0" was pushed
+    4 mm left, under the force scale's 0)."""
+    from graphplan.drawing.charts import resistance_record
+    rec = resistance_record(rocker_turn, lang="uk")
+    count = rocker_turn.ks.st.mech.task.count
+    nums = [q for q in rec.items if q.kind == "text" and q.text.isdigit() and q.anchor == "middle"
+            and q.points[0][1] < 0 and int(q.text) <= count]
+    top = max(round(q.points[0][1], 6) for q in nums)
+    row = [q for q in nums if round(q.points[0][1], 6) == top]
+    assert len(row) == count + 1
+    zero = next(q for q in row if q.text == "0")
+    assert abs(zero.points[0][0]) < 0.5, zero.points          # at its tick, s = 0
+    assert all(q.ink()[0] > zero.ink()[2] for q in row if q is not zero), sorted((q.ink()[0], q.text) for q in row)[:3]
