@@ -12,8 +12,10 @@ from review_scenes import ROCKER46
 
 
 def test_a_plan_grows_past_the_largest_only_while_its_own_loads_are_short():
-    """``plan_may_grow``: no longer than the largest plan's longest side, or, while the plan's
-    shortest load is drawn under 10 mm, up to 1.5 times it — and no further."""
+    """``plan_may_grow`` (the lengths at the scale tried): no longer than the largest plan's longest
+    side, or, while the plan's shortest load is drawn no longer than 10 mm, up to 1.5 times it —
+    and no further: the step that makes the shortest load read, not one past it (an A2 set's crank
+    plan grew on from 2 N/mm, Φ1 8.75 mm, to 1 N/mm, its R01 238 mm long)."""
     from graphplan.sheets.forces import PLAN_BEYOND, SHORT_FORCE_MM, plan_may_grow
     assert plan_may_grow(90.0, 2.0, 91.5)                          # within the largest: always
     assert plan_may_grow(93.0, SHORT_FORCE_MM - 3.0, 91.5)         # a short load: a step beyond

@@ -1424,8 +1424,7 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     def allowed(fam: str, i: int, s: float) -> bool:
         if fam == "groups":
             return extents[labels[i]] / s <= largest_e / base_l + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)
-        now = mu.get(key_of(fam, i), mu[fam])
-        return plan_may_grow(longest[labels[i]] * base_F / s, shortest[labels[i]] * base_F / now, largest_F)
+        return plan_may_grow(longest[labels[i]] * base_F / s, shortest[labels[i]] * base_F / s, largest_F)
 
     growing = [("groups", i) for i in range(len(labels)) if largest_e > 0 and extents.get(labels[i], 0.0) > 0]
     growing += [("forces", i) for i in range(len(labels)) if largest_F > 0 and longest[labels[i]] > 0]
@@ -1461,16 +1460,16 @@ PLAN_BEYOND = 1.5
 
 
 def plan_may_grow(longest_mm: float, shortest_mm: float, largest_mm: float) -> bool:
-    """Whether a group's force plan may be drawn with its longest side ``longest_mm`` long: no
-    longer than the largest plan's longest side (``largest_mm``) — or, while its shortest load
-    (G, Φ) is drawn under ``SHORT_FORCE_MM`` (``shortest_mm``, at the plan's present μF), up to
-    ``PLAN_BEYOND`` times that: a group is drawn at a scale where its smallest force reads
-    (issue 32 #3). The rocker six-bar's crank group at 4 N/mm — G1 6 mm, Φ1 4.5 mm, the polygon
-    58 mm beside 100 mm of empty room — barred from 2.5 N/mm because its R01 came out 93 mm
-    against II(4-5)'s 91.5."""
+    """Whether a group's force plan may be drawn with its longest side ``longest_mm`` and its
+    shortest load (G, Φ) ``shortest_mm`` long: no longer than the largest plan's longest side
+    (``largest_mm``) — or, past it, up to ``PLAN_BEYOND`` times that while the shortest load is
+    drawn no longer than ``SHORT_FORCE_MM`` (the step that brings it to read, no step further): a
+    group is drawn at a scale where its smallest force reads (issue 32 #3). The rocker six-bar's
+    crank group at 4 N/mm — G1 6 mm, Φ1 4.5 mm, the polygon 58 mm beside 100 mm of empty room —
+    barred from 2.5 N/mm because its R01 came out 93 mm against II(4-5)'s 91.5."""
     if longest_mm <= largest_mm + 1e-9:
         return True
-    return shortest_mm < SHORT_FORCE_MM - 1e-9 and longest_mm <= PLAN_BEYOND * largest_mm + 1e-9
+    return shortest_mm <= SHORT_FORCE_MM + 1e-9 and longest_mm <= PLAN_BEYOND * largest_mm + 1e-9
 
 
 def _group_allowed(dr: ForceDrafter, mu: dict[str, float], label: str, mu_l: float) -> bool:
