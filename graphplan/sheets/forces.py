@@ -1577,10 +1577,15 @@ def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dic
     """Every drawing of the force sheet of ``format`` with the scales it is drawn at (the scheme's
     and the groups' μl, μF, μa, μv, the charts' and hodographs' μ) — for ``forces --json``: the
     terminal reports the construction the sheet draws."""
+    from graphplan.drawing.forces import polygon_record
     p, _, dr = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     names = dr.names()
+    drawn = dr.drawings(p.mu, lettered=False)
+    # the force plans as the sheet draws them: a plan's detail ("I (μF = 25 N/mm)") is no sketch's
+    fp = dr.groups_fp(p.mu)
+    drawn = {**drawn, "forces": [polygon_record(fp, gp, "uk") for gp in fp.groups]}
     return {names[fam][i]: {k: v for k, v in r.scales.items() if k.startswith("mu_")}    # the scales alone
-            for fam, recs in dr.drawings(p.mu, lettered=False).items() for i, r in enumerate(recs)}
+            for fam, recs in drawn.items() for i, r in enumerate(recs)}
 
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
