@@ -981,12 +981,14 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     plain = _polygon(fp, gp, lang, detail=False)
     if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
         return plain
-    # its detail in a free corner of the plan's room, else beside it: the crank's under its sliver,
-    # another group's to the right of its plan (the rocker six-bar's II(2-3) at 10 N/mm lettered G2,
-    # R12, G3, Φ2, R23 in a 10 mm knot at the foot of a 30 mm wide sliver, R^τ12 0.5 mm and Φ3
-    # 2.5 mm named only under it)
-    out = _polygon(fp, gp, lang, detail=True, beside=True)
-    return out if "mu_F detail" in out.scales else plain
+    x0, y0, x1, y1 = plain.bounds()
+    half = max(x1 - x0, _caption_across(gp.label)) / 2
+    room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
+    beside = gp.kind == "crank"
+    out = _polygon(fp, gp, lang, detail=True, beside=beside)
+    a0, b0, a1, b1 = out.bounds()
+    inside = room[0] <= a0 and room[1] <= b0 and a1 <= room[2] and b1 <= room[3]
+    return out if (inside or beside) and "mu_F detail" in out.scales else plain
 
 
 def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
@@ -1043,8 +1045,7 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     # the long letter first, its twin after it on the line's other side
     order = sorted(range(len(asked)), key=lambda k: k in choices)
     _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
-    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside,
-                                                  right=gp.kind != "crank"):
+    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside):
         return _polygon(fp, gp, lang, detail=False)      # no room for it: the plan as it was
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
@@ -1170,7 +1171,7 @@ def _detail_ring(rec: Record, sides: list, mu_F: float, step: str) -> PlanDetail
 
 
 def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str, gp_label: str = "", beside: bool = False, right: bool = False) -> bool:
+                    step: str, gp_label: str = "", beside: bool = False) -> bool:
     """The ringed spot (``_detail_ring``) drawn again at the detail's μF, every side through the
     window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its lengths as the
     ruler read them, times μF/μF_I), as the hodographs' details — in a corner of the plan's room
@@ -1193,12 +1194,7 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
     for mu, out in tries:
         det = _detail_drawing(d, mu, sides, same, mu_F, lang, step)
-        if out and right:       # right of the plan, level with its ring (within the plan's height)
-            e0, e1, e2, e3 = det.bounds()
-            dy = c.imag - (e1 + e3) / 2
-            dy = max(min(dy, rb[3] - e3), rb[1] - e1)
-            moved = det.moved(rb[2] + DETAIL_GAP - e0, dy)
-        elif out:               # under the plan, at its middle
+        if out:                 # under the plan, at its middle
             e0, _, e2, e3 = det.bounds()
             moved = det.moved((rb[0] + rb[2]) / 2 - (e0 + e2) / 2, rb[1] - DETAIL_GAP - e3)
         else:
