@@ -981,14 +981,11 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     plain = _polygon(fp, gp, lang, detail=False)
     if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
         return plain
-    x0, y0, x1, y1 = plain.bounds()
-    half = max(x1 - x0, _caption_across(gp.label)) / 2
-    room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
-    beside = gp.kind == "crank"
-    out = _polygon(fp, gp, lang, detail=True, beside=beside)
-    a0, b0, a1, b1 = out.bounds()
-    inside = room[0] <= a0 and room[1] <= b0 and a1 <= room[2] and b1 <= room[3]
-    return out if (inside or beside) and "mu_F detail" in out.scales else plain
+    # the detail in a free corner of the plan's room (``_polygon_detail``, within the plan's lettered
+    # extent widened to its caption: the rocker six-bar's II(2-3) knot, whose room measured off the
+    # unlettered plan refused it by a hair), or, the crank's, under its sliver
+    out = _polygon(fp, gp, lang, detail=True, beside=gp.kind == "crank")
+    return out if "mu_F detail" in out.scales else plain
 
 
 def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
