@@ -497,7 +497,7 @@ def test_every_scale_on_the_force_sheet_is_the_terminals(shaper_forces, capsys):
     reported: dict[str, set[float]] = {}
     for scales in doc["sheet"]["drawings"].values():
         for key, value in scales.items():
-            sym = {"mu_phi": "φ"}.get(key, key.removeprefix("mu_"))
+            sym = {"mu_phi": "φ", "mu_F detail": "F"}.get(key, key.removeprefix("mu_"))   # a plan's detail: a μF
             reported.setdefault(sym, set()).add(value)
     assert doc["mu_l"] in reported["l"] and doc["mu_F"] in reported["F"] and doc["mu_v"] in reported["v"]
     _same(printed_scales(shaper_forces), reported)

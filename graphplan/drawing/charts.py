@@ -929,8 +929,12 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     xs = [X(k) for k, _ in marks]
     inks = [Primitive("text", ((0.0, 0.0),), text=str(pos), size=2.5, anchor="middle").ink() for _, pos in marks]
     mids = [0.5 * (i[0] + i[2]) for i in inks]            # a number's ink is not centred on its x ("1")
-    at = [c - m for c, m in zip(spread_apart([x + m for x, m in zip(xs, mids)],
-                                             [0.5 * (i[2] - i[0]) for i in inks], NUMBER_GAP_MM), mids)]
+    # … "0" not pushed left past the force axis (the rocker six-bar's "0" stood 4 mm left of it, by
+    # the axis's own 0, its 1, 2, 3 fanned on leaders): a run at the start set apart rightwards
+    halves = [0.5 * (i[2] - i[0]) for i in inks]
+    centres = [x + m for x, m in zip(xs, mids)]
+    lo = centres[0] - halves[0] if xs else -math.inf
+    at = [c - m for c, m in zip(spread_apart(centres, halves, NUMBER_GAP_MM, lo), mids)]
     moved = any(abs(a - x) > 1e-6 for a, x in zip(at, xs))
     low = -7.0 if moved else -5.0          # room for the leaders: 2 mm from the tick, 1 mm off the ink
     for (k, pos), x, a, ink, m in zip(marks, xs, at, inks, mids):
@@ -961,10 +965,12 @@ VALUE_GAP_MM = 20.0    # the path axis's values at least this far apart
 NUMBER_GAP_MM = NUMBERS_APART    # paper between two positions' numbers in their row ("11 12", not "1112")
 
 
-def spread_apart(xs: Sequence[float], halves: Sequence[float], gap: float) -> list[float]:
+def spread_apart(xs: Sequence[float], halves: Sequence[float], gap: float,
+                 lo: float = -math.inf, hi: float = math.inf) -> list[float]:
     """Centres for labels of half widths ``halves`` wanted at ``xs`` in one row: each as near its
     own as may be, neighbours ``gap`` apart at least — runs that would meet set side by side about
-    their wanted centres' mean (a 1-D cluster placement)."""
+    their wanted centres' mean (a 1-D cluster placement), each run's ink kept within ``lo`` … ``hi``
+    where the row is wide enough (a diagram's numbers not pushed out past its axes)."""
     order = sorted(range(len(xs)), key=lambda i: xs[i])
     runs: list[tuple[list[int], float]] = []        # (members in order, the run's left edge)
 
@@ -976,10 +982,10 @@ def spread_apart(xs: Sequence[float], halves: Sequence[float], gap: float) -> li
         for i in members:
             wanted.append(xs[i] - (off + halves[i]))
             off += 2.0 * halves[i] + gap
-        return sum(wanted) / len(wanted)
+        return max(lo, min(sum(wanted) / len(wanted), hi - width(members)))
 
     for i in order:
-        runs.append(([i], xs[i] - halves[i]))
+        runs.append(([i], left_of([i])))
         while len(runs) > 1 and runs[-2][1] + width(runs[-2][0]) + gap > runs[-1][1] + 1e-9:
             members = runs[-2][0] + runs[-1][0]
             runs[-2:] = [(members, left_of(members))]

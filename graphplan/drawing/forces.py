@@ -981,14 +981,11 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     plain = _polygon(fp, gp, lang, detail=False)
     if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
         return plain
-    x0, y0, x1, y1 = plain.bounds()
-    half = max(x1 - x0, _caption_across(gp.label)) / 2
-    room = ((x0 + x1) / 2 - half - 1e-6, y0 - 1e-6, (x0 + x1) / 2 + half + 1e-6, y1 + 1e-6)
-    beside = gp.kind == "crank"
-    out = _polygon(fp, gp, lang, detail=True, beside=beside)
-    a0, b0, a1, b1 = out.bounds()
-    inside = room[0] <= a0 and room[1] <= b0 and a1 <= room[2] and b1 <= room[3]
-    return out if (inside or beside) and "mu_F detail" in out.scales else plain
+    # the detail in a free corner of the plan's room (``_polygon_detail``, within the plan's lettered
+    # extent widened to its caption: the rocker six-bar's II(2-3) knot, whose room measured off the
+    # unlettered plan refused it by a hair), or, the crank's, under its sliver
+    out = _polygon(fp, gp, lang, detail=True, beside=gp.kind == "crank")
+    return out if "mu_F detail" in out.scales else plain
 
 
 def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
@@ -1102,7 +1099,7 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     ≤ μF/2); None where no side is too short to carry its name (``TINY_MM``: named only under the
     plan, "G1, Φ1 < 3 mm"), or no value is left."""
     from graphplan.drawing.charts import _series_below, hodograph_scale
-    short = [s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM]
+    short = _knot([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM])
     if not any(s.mm < TINY_MM for s in short):      # each side long enough to carry its name: none
         return None
     zs = [z for s in short for z in (s.start, s.end)]
@@ -1113,6 +1110,25 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     choices = dict.fromkeys(m for m in (max(_series_below(mu_F * smallest / least), cap) for least in DETAIL_LEAST_MM)
                             if mu_F / m >= 2.0 - 1e-9)
     return PlanDetail((x0, y0, x1, y1), tuple(choices)) if choices else None
+
+
+def _knot(short: list) -> list:
+    """Of a plan's short sides, those crowding one spot: the sides within ``DETAIL_MOST_MM`` / 2 of
+    each other (end to end, chained), the knot with the most sides too short to carry their names
+    (``TINY_MM``), then the most sides. A short side at the plan's other end is no part of its
+    detail (the rocker six-bar's II(2-3): R^τ03 3.5 mm at R43's head, 90 mm from the knot of R^τ12,
+    G2, Φ2, Φ3 at its foot, made the window 90 mm tall and left the knot without a detail)."""
+    near = DETAIL_MOST_MM / 2
+    knots: list[list] = []
+    for s in short:
+        joined = [k for k in knots if any(min(abs(p - q) for p in (s.start, s.end) for q in (o.start, o.end)) <= near
+                                          for o in k)]
+        merged = [s] + [o for k in joined for o in k]
+        knots = [k for k in knots if all(k is not j for j in joined)] + [merged]
+    if not knots:
+        return []
+    best = max(knots, key=lambda k: (sum(o.mm < TINY_MM for o in k), len(k)))
+    return [s for s in short if any(s is o for o in best)]
 
 
 def _inside(a: complex, b: complex, box) -> tuple[float, float] | None:

@@ -60,6 +60,12 @@ class Primitive:
     def bounds(self) -> tuple[float, float, float, float]:
         if len(self.points) == 2 and self.kind not in ("circle", "arc", "text"):     # a segment, a vector
             (ax, ay), (bx, by) = self.points
+            if self.kind == "vector":
+                # the arrowhead's corners stand out of the shaft's box by up to its half width (a
+                # horizontal vector's head 0.6 mm over the field of PUMP45's A3 force set)
+                tri, _ = vector_arrow(self.points[0], self.points[1], self.line_width, self.role == "head")
+                xs, ys = (ax, bx, tri[1][0], tri[2][0]), (ay, by, tri[1][1], tri[2][1])
+                return min(xs), min(ys), max(xs), max(ys)
             return min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)
         xs = [p[0] for p in self.points]
         ys = [p[1] for p in self.points]

@@ -1404,6 +1404,9 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     largest_e = max(list(extents.values()) + [0.0])
     longest = {gp.label: max([s.mm for s in gp.sides] + [0.0]) for gp in fp.groups}
     largest_F = max(list(longest.values()) + [0.0])
+    # each plan's shortest load (G, Φ, a resistance: the sides laid as known) at the family's μF
+    shortest = {gp.label: min([s.mm for s in gp.sides if s.role == "known" and s.mm > 1e-9] + [math.inf])
+                for gp in fp.groups}
     labels = [gp.label for gp in fp.groups]
     leaves = _placed_leaves(dr, nat, mu)
 
@@ -1421,7 +1424,7 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     def allowed(fam: str, i: int, s: float) -> bool:
         if fam == "groups":
             return extents[labels[i]] / s <= largest_e / base_l + 1e-9 or s >= mu["scheme"] * (1 - 1e-9)
-        return longest[labels[i]] * base_F / s <= largest_F + 1e-9
+        return plan_may_grow(longest[labels[i]] * base_F / s, shortest[labels[i]] * base_F / s, largest_F)
 
     growing = [("groups", i) for i in range(len(labels)) if largest_e > 0 and extents.get(labels[i], 0.0) > 0]
     growing += [("forces", i) for i in range(len(labels)) if largest_F > 0 and longest[labels[i]] > 0]
@@ -1452,6 +1455,21 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
 
 PLAN_TRIES = 3     # a force plan's next steps tried in turn where the first does not fit (``_grown_groups``)
+# how much longer than the largest plan's longest side a plan whose own loads are short grows (``plan_may_grow``)
+PLAN_BEYOND = 1.5
+
+
+def plan_may_grow(longest_mm: float, shortest_mm: float, largest_mm: float) -> bool:
+    """Whether a group's force plan may be drawn with its longest side ``longest_mm`` and its
+    shortest load (G, Φ) ``shortest_mm`` long: no longer than the largest plan's longest side
+    (``largest_mm``) — or, past it, up to ``PLAN_BEYOND`` times that while the shortest load is
+    drawn no longer than ``SHORT_FORCE_MM`` (the step that brings it to read, no step further): a
+    group is drawn at a scale where its smallest force reads (issue 32 #3). The rocker six-bar's
+    crank group at 4 N/mm — G1 6 mm, Φ1 4.5 mm, the polygon 58 mm beside 100 mm of empty room —
+    barred from 2.5 N/mm because its R01 came out 93 mm against II(4-5)'s 91.5."""
+    if longest_mm <= largest_mm + 1e-9:
+        return True
+    return shortest_mm <= SHORT_FORCE_MM + 1e-9 and longest_mm <= PLAN_BEYOND * largest_mm + 1e-9
 
 
 def _group_allowed(dr: ForceDrafter, mu: dict[str, float], label: str, mu_l: float) -> bool:
@@ -1559,10 +1577,15 @@ def drawing_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dic
     """Every drawing of the force sheet of ``format`` with the scales it is drawn at (the scheme's
     and the groups' μl, μF, μa, μv, the charts' and hodographs' μ) — for ``forces --json``: the
     terminal reports the construction the sheet draws."""
+    from graphplan.drawing.forces import polygon_record
     p, _, dr = plan(st, form(format), SheetOptions(precision=precision, sheet="forces"))
     names = dr.names()
+    drawn = dr.drawings(p.mu, lettered=False)
+    # the force plans as the sheet draws them: a plan's detail ("I (μF = 25 N/mm)") is no sketch's
+    fp = dr.groups_fp(p.mu)
+    drawn = {**drawn, "forces": [polygon_record(fp, gp, "uk") for gp in fp.groups]}
     return {names[fam][i]: {k: v for k, v in r.scales.items() if k.startswith("mu_")}    # the scales alone
-            for fam, recs in dr.drawings(p.mu, lettered=False).items() for i, r in enumerate(recs)}
+            for fam, recs in drawn.items() for i, r in enumerate(recs)}
 
 
 def force_scales(st: Study, format: str = "A1", precision: float = 0.5) -> dict[str, float]:
