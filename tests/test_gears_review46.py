@@ -9,6 +9,7 @@ import math
 import pytest
 
 from review_scenes import GEARS46
+from test_gears_rev12 import _rows
 
 
 @pytest.fixture(scope="module")
@@ -71,14 +72,6 @@ def _centre_distance(sol) -> tuple[float, float]:
 
 def _texts(rec) -> list[str]:
     return [q.text for q in rec.items if q.kind == "text"]
-
-
-def _rows(rec) -> list[list[str]]:
-    rows: dict[float, list] = {}
-    for q in rec.items:
-        if q.kind == "text":
-            rows.setdefault(round(q.points[0][1], 3), []).append((q.points[0][0], q.text))
-    return [[t for _, t in sorted(r)] for _, r in sorted(rows.items(), key=lambda kv: -kv[0])]
 
 
 def test_the_dimension_aw_is_table_1s_value_and_the_lab_s_notation_is_typeset(sheet46):
