@@ -644,14 +644,8 @@ def _led_blocked(ob: Obstacles, at: complex, boxes: list[Box]) -> list[tuple[Box
         meets = np.any(_clip_all(A.real, A.imag, B.real, B.imag, q[None, :, 0] - 0.7, q[None, :, 1] - 0.7,
                                   q[None, :, 2] + 0.7, q[None, :, 3] + 0.7), axis=1)
     if ob.leaders:
-        c = np.asarray([c for c, _ in ob.leaders], dtype=complex)[None, :]
-        d = np.asarray([d for _, d in ob.leaders], dtype=complex)[None, :]
-        A, B = a[:, None], b[:, None]
-
-        def side(p, q, r):          # ((q − p)* · (r − p)).imag in real arithmetic, as CPython's complex product
-            ux, uy = q.real - p.real, q.imag - p.imag
-            return ux * (r.imag - p.imag) - uy * (r.real - p.real)
-        crosses = np.any((side(A, B, c) * side(A, B, d) < 0) & (side(c, d, A) * side(c, d, B) < 0), axis=1)
+        crosses = _crosses_all(a, b, np.asarray([c for c, _ in ob.leaders], dtype=complex),
+                               np.asarray([d for _, d in ob.leaders], dtype=complex))
     return [(box, lead, bool(m), bool(x)) for box, lead, m, x in zip(boxes, leads, meets, crosses)]
 
 
