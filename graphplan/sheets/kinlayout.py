@@ -221,6 +221,13 @@ def place_tables(groups: list[list], right: float, top: float, under: bool = Fal
         Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)]
 
 
+def tables_blank(tables: list, parts: int, under: bool = False, over: bool = False) -> float:
+    """The blank (mm²) the tables leave in their block arranged as ``table_groups`` sets them: the
+    block's area less the tables' own."""
+    size = tables_size(table_groups(tables, parts, (), under, over), under, over)
+    return math.prod(size) - sum(t.w * t.h for t in tables)
+
+
 def column_leaf(f: Form, tables: list[Leaf], parts: int, notes_height, counts: tuple[int, ...] = (),
                 under: bool = False, notes: float = TITLE, over: bool = False) -> tuple[Leaf, list[list[Leaf]], float]:
     """The tables in ``parts`` columns (``counts`` tables each, where the plan found them; ``under``:
@@ -499,8 +506,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                   for parts, under, over in ways]
         # the blank a table arrangement leaves in its block (a tie between arrangements goes to the
         # one leaving less: its columns' heights alike)
-        waste = [(lambda g, u, o: math.prod(tables_size(g, u, o)) - sum(t.w * t.h for t in tabs))(
-            table_groups(tabs, parts, (), under, over), under, over) for parts, under, over in ways]
+        waste = [tables_blank(tabs, parts, under, over) for parts, under, over in ways]
 
         tried: dict[tuple, tuple | None] = {}
 
