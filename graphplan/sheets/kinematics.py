@@ -26,7 +26,7 @@ from graphplan.sheets.form import TABLES, Form, form
 from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, lab_table, notes,  # noqa: F401
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
-                                        PlansUndrawable, factors, column_leaf, grid_rows, legible, one_sheet, room,
+                                        PlansUndrawable, SPLIT, factors, column_leaf, grid_rows, legible, one_sheet, room,
                                         place_tables, room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place,
                                         tree)
 from graphplan.util.errors import GraphplanError
@@ -432,7 +432,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
             return b[3] - b[1]
         C, groups, width = column_leaf(f, tables, p.parts, high, p.counts, p.under, p.notes, p.over)
         T, N, groups_ = split_leaves(f, tables, p.parts, high, p.counts, p.under, p.notes, p.over)
-        if p.shape == "split":
+        if p.shape in SPLIT:
             groups, width = groups_, N.w
         layout = tree(p.shape, P, D, Grid(V, p.vcols, fitted=True) if V else None,
                       Grid(A, p.acols, fitted=True) if A else None, C, (T, N))

@@ -106,12 +106,20 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     the notes over the title block's room): the position plan, the diagrams and the tables across
     the top, under them the velocity plans, the acceleration plans and the notes over the title
     block (the coulisse's tables, 258 mm high in two columns 361 mm wide, left a full-height column
-    150 mm empty under them while its velocity plans were drawn at p_v a 26.7 mm)."""
+    150 mm empty under them while its velocity plans were drawn at p_v a 26.7 mm); "tables-accel" —
+    the position plan over the diagrams, beside them the velocity plans the sheet's full height, then
+    the column split (``split_column``): the tables over the acceleration plans beside the notes over
+    the title block's room (stop 47's six-bar: "stacked" left 290 × 170 mm blank under its four tables, its column 554 mm
+    high for 385 mm of tables, notes and title block, while the acceleration plan under the
+    velocity plans held them at p_v a 40 mm)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
     if shape == "split":
         T, N = split_column
         return Stack([Row([P, D, T], flush=True), Row(vg + ag + [N], flush=True)], flush=True)
+    if shape == "tables-accel":
+        T, N = split_column
+        return Row([Stack([P, D])] + vg + [Stack([T, Row(ag + [N], flush=True)], flush=True)], flush=True)
     if shape == "bands":
         return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
     if shape == "column":
@@ -125,7 +133,10 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
 
 
-SHAPES = ("bands", "column", "accel", "sides", "stacked", "stacked-bands", "split")
+# (the order breaks ties of the scales: "tables-accel" before "stacked", whose acceleration plans under
+# the velocity plans leave the column's blank under its tables in one piece)
+SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split")
+SPLIT = ("split", "tables-accel")     # the shapes whose column is split (``split_leaves``)
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -534,7 +545,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
-                            w_ = widened(half[1].w if shape == "split" else C.w, W - tw)
+                            w_ = widened(half[1].w if shape in SPLIT else C.w, W - tw)
                             # the tree no lower than by what its column (notes' leaf) loses: first
                             # at the field's width (once a table arrangement), then at ``w_``
                             C_, half_ = widen(way, W)
@@ -560,7 +571,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
 
         def lowered(shape: str, C: Leaf, half, C_: Leaf, half_) -> float:
             """How much lower the column (the split's notes) is widened."""
-            return (half[1].h - half_[1].h) if shape == "split" else C.h - C_.h
+            return (half[1].h - half_[1].h) if shape in SPLIT else C.h - C_.h
 
         def widen(way: int, wide: float) -> tuple[Leaf, tuple[Leaf, Leaf]]:
             """The column and the split's halves of table arrangement ``way`` with the notes
