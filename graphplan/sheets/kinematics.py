@@ -212,8 +212,15 @@ class Drafter:
                                                    precision=o.precision, **kw))
 
     def diagrams(self, k: float, lang: str = "uk"):
+        """The diagrams at size ``k`` in ``lang``: constructed once (Ukrainian), the other language
+        the same construction with its ``lang`` (graphic.diagrams: a Diagrams is the language's own in
+        nothing else, its warnings carry both; ``_block_size`` measures so too)."""
+        from dataclasses import replace
+
         from graphplan.graphic.diagrams import chord_diagrams
         o = self.opts
+        if lang != "uk":
+            return self._once(("diag", k, lang), lambda: replace(self.diagrams(k, "uk"), lang=lang))
         return self._once(("diag", k, lang), lambda: chord_diagrams(
             self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
                                                                          self.room, self.floor)))
