@@ -79,3 +79,26 @@ def test_link47_a1_leaves_no_blank_that_holds_its_acceleration_plan():
     assert accel is not None
     w, h = (int(np.ceil((accel[2] - accel[0] + 10.0) / cell)), int(np.ceil((accel[3] - accel[1] + 10.0) / cell)))
     assert not _holds(free, w, h)
+
+
+def test_the_coupler_points_positions_are_dotted_and_numbered_on_its_path():
+    """The four-bar's coupler point E (off its coupler AB): a dot at each of its twelve positions,
+    where the exact solution puts E (relative to position 0, at μl), and each position's number
+    nearer its own dot than any other of E's (a number read off the loop, as the joints' are);
+    it drew the loop bare."""
+    from graphplan.drawing.plans import position_record
+    from graphplan.graphic.plans import build_plans
+    from review_scenes import COUPLER47
+    st = scene_study(COUPLER47)
+    plans = build_plans(st, mu_l=0.002)
+    rec = position_record(plans, lang="uk")
+    dots = np.array([complex(*p.points[0]) for p in rec.items if p.kind == "point" and p.step == "trajectory of E"])
+    regular = [p for p in plans.positions if p.index is not None]
+    E = st.solve(np.array([p.phi for p in regular])).point("E")[0]
+    assert len(dots) == len(regular) == 12
+    assert np.abs((dots - dots[0]) - (E - E[0]) / plans.mu_l).max() < 0.01
+    numbers = [(p.text, complex(*p.points[0])) for p in rec.items if p.kind == "text" and p.text.isdigit()]
+    for k, q in enumerate(regular):
+        near = [z for t, z in numbers if t == str(q.index) and abs(z - dots[k]) < 8.0
+                and abs(z - dots[k]) <= np.abs(z - np.delete(dots, k)).min()]
+        assert near, f"position {q.index}: no number by E"

@@ -29,10 +29,14 @@ def _gap(box, z: complex) -> float:
 
 def _numbered(plans) -> list[str]:
     """The points the lab numbers at every position: the crank pin, the output (the last link's
-    joint) and the inner joint of each group."""
+    joint), the inner joint of each group and a coupler point whose path is traced (neither a joint
+    nor a centre of mass: review 47, the four-bar's E)."""
     mech = plans.scheme.mech
     names = [mech.crank.pin]
     names += [d.inner.point for d in plans.study.structure.dyads]
+    joints = {j for link in mech.links.values() for j in link.joints}
+    coms = {link.com for link in mech.links.values()}
+    names += [n for n in plans.trajectories if n not in joints and n not in coms and n not in mech.frame]
     return list(dict.fromkeys(names))
 
 

@@ -412,6 +412,13 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
             curve = catmull_rom(path)
             rec.add("polyline", [_pt(c) for c in curve], role="trajectory", layer="construction",
                     step=f"trajectory of {name}")
+    # a coupler point's path (not a centre of mass's) is read position by position, as the joints'
+    # are: a dot at each, numbered (``_numbered``) — the four-bar's E drew a bare loop under its
+    # twelve thin coupler triangles, none of its corners marked, while Table 1 gives v_E at each
+    for name in coupler_points(plans):
+        for lay in regular:
+            rec.point(_pt(where(sc, lay, sc.body_of(name), name)), role="dot", layer="mechanism",
+                      step=f"trajectory of {name}")
     traced = set(plans.trajectories)
     for name in sheet_points(plans):
         if name in traced:
@@ -554,12 +561,23 @@ def extreme_letters(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]
     return labels
 
 
+def coupler_points(plans: Plans) -> list[str]:
+    """The traced points that are neither a joint nor a centre of mass: a coupler point (the
+    four-bar's E off its coupler AB), whose path is the construction's own result."""
+    mech = plans.scheme.mech
+    coms = {link.com for link in mech.links.values()}
+    joints = {j for link in mech.links.values() for j in link.joints}
+    return [n for n in plans.trajectories if n not in coms and n not in joints and n not in mech.frame]
+
+
 def _numbered(plans: Plans) -> list[tuple[str, bool]]:
     """The points whose positions are numbered: the crank pin (always lettered) and the output
-    point and the groups' inner joints (left out where no room is)."""
+    point, the groups' inner joints and the coupler points (``coupler_points``; left out where no
+    room is)."""
     crank = plans.scheme.mech.crank
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
-    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner) if n != crank.pin]
+    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner + coupler_points(plans))
+                                   if n != crank.pin]
 
 
 def _beside(path: list[complex], i: int, O: complex) -> complex:
