@@ -161,3 +161,57 @@ def test_the_phases_are_named_on_the_s_diagrams_phi_axis(lead, lang, names):
         y = arrows[0].points[0][1]
         assert all(y < q.ink()[1] for q in numbers_s)
         assert label.ink()[1] > v_top
+
+
+def test_a_rocking_r0_is_read_at_the_scale_its_phase_diagram_is_drawn_at(rocking, lead):
+    """The rocking phase diagram the sheet enlarges (2.5:1 beside a 1:1 profile) gives R0 at its own
+    scale: the reading |OC₀|/μ a whole number of the ruler's half millimetres at the μ the drawn
+    diagram states (its record's scale), within a quarter millimetre there of |OC₀| before reading —
+    finer than the profile's μ_l gave it. A translating cam's reading (at μ_s) is left as it was."""
+    from graphplan.drawing.cam import phase_diagram
+    from graphplan.sheets.cam import phase_scale_of
+    g = construct(rocking, series="rad")
+    g2 = phase_scale_of(rocking, g)
+    mu = phase_diagram(rocking, g2, "uk").scales["mu_phase"]
+    assert mu == g2.mu_phase and mu < g.mu_l
+    mm = g2.R0_min / mu
+    assert mm / 0.5 == pytest.approx(round(mm / 0.5), abs=1e-9)
+    assert abs(g2.R0_min - g.R0_drawn) <= 0.25 * mu + 1e-12
+    t = construct(lead, measure=True, series="rad")
+    assert phase_scale_of(lead, t) is t
+
+
+@pytest.mark.slow
+def test_the_rocking_sheet_and_the_terminal_print_one_r0(tmp_path):
+    """The A1 sheet's notes and `graphplan cam --json` (construct_on) give the same graphical R0, read
+    at the phase diagram's drawn scale (the caption's M 2,5:1)."""
+    import re
+
+    from graphplan.sheets.cam import build_cam_sheet, construct_on
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    path = tmp_path / "rk.toml"
+    path.write_text(CAM_ROCKING_CW47, encoding="utf-8")
+    cam = load(path)
+    sheet = build_cam_sheet(cam, form("A1"), SheetOptions(lang="en", sheet="cam"))
+    svg = sheet.svg()
+    printed = float(re.search(r"graphically ([0-9.]+) mm", svg).group(1))
+    g = construct_on(solve(cam), form("A1"))
+    assert printed == pytest.approx(g.R0_min * 1000, abs=1e-9)
+    assert f"M {round(0.001 / g.mu_phase, 2):g}:1" in svg
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_notes_give_r0s_error_to_a_hundredth_of_a_percent(rocking, lang):
+    """«похибка 0,10 %», not «0,0954 %» (3 significant digits of a difference of two readings read as
+    false precision; Table 1's δ are to 0.01 %): the printed error is 100·(graphical − exact)/exact of
+    the JSON's values to two decimals."""
+    from graphplan.report.cam import cam_json, cam_lines
+    g = construct(rocking, series="rad")
+    doc = cam_json(rocking, g, "x")
+    e = 100 * (doc["base_radius_graphical_m"] - doc["base_radius_min_m"]) / doc["base_radius_min_m"]
+    want = f"{e:.2f}".replace("-", "−")
+    if lang == "uk":
+        want = want.replace(".", ",")
+    line = next(t for t in cam_lines(doc, lang) if "R_0" in t and "%" in t)
+    assert (f"похибка {want} %" if lang == "uk" else f"error {want} %") in line.replace("\u00a0", " "), line
