@@ -2266,3 +2266,41 @@ count = 12
 start = "max"
 accel = [2]
 '''
+
+
+CAM47 = '''# Stop 47 (the lead's check): a translating roller follower, the cam counter-clockwise, the offset chosen
+# by the program, a trapezoidal rise 100° and a cycloidal return 110°, 12 divisions
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 47)"
+title_en = "Cam with a translating roller follower (check 47)"
+designation = "ТММ.КМ.47.100"
+[cam]
+follower = "translating"
+stroke = 0.035
+offset = "auto"
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 40, return = 110, dwell_near = 110 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 120
+direction = "ccw"
+divisions = 12
+'''
+
+
+CAM_ROCKING_CW47 = '''# Stop 47 (cam47's own look): a rocking roller follower, the cam clockwise, a trapezoidal rise 110° and
+# a parabolic return 90° (its d²ψ/dφ² steps), a short far dwell, 10 divisions
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 47)"
+title_en = "Cam with a rocking roller follower (check 47)"
+[cam]
+follower = "rocking"
+swing_deg = 20
+arm = 0.1
+centre_distance = 0.12
+roller_radius = 0.009
+phases_deg = { rise = 110, dwell_far = 20, return = 90, dwell_near = 140 }
+laws = { rise = "trapezoidal", return = "parabolic" }
+pressure_angle_deg = { rise = 35, return = 45 }
+rpm = 150
+direction = "cw"
+divisions = 10
+'''

@@ -154,8 +154,10 @@ def test_the_construction_converges_to_the_exact_solution(path):
         errs.append((float(np.max(np.abs(g.s - s))) / cam.stroke,
                      float(np.max(np.abs(g.v - v))) / float(np.max(np.abs(v))),
                      abs(g.R0_min - sol.R0_min) / sol.R0_min))
-    for k in range(2):
-        assert errs[0][k] > errs[1][k] > errs[2][k]
+    assert errs[0][0] > errs[1][0] > errs[2][0]
+    # ds/dφ at the divisions is exact at any divisions: each interval's step is its mean ordinate, of
+    # the area ∫d²s/dφ² dφ = Δ(ds/dφ) (stop 47; it fell with the divisions while the middle ordinate was taken)
+    assert max(e[1] for e in errs) < 1e-12
     assert max(errs[2]) < 5e-4
     g = construct(sol, 8, 0.5)
     assert 0 < abs(g.R0_min - sol.R0_min) / sol.R0_min < 0.05

@@ -154,8 +154,8 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
-    # the intervals' middles, rise then return (as the mean ordinates are kept)
-    xm = np.concatenate([0.5 * (x[g.phase == ph][:-1] + x[g.phase == ph][1:]) for ph in (0, 1)])
+    # the intervals' ends, rise then return (as the mean ordinates are kept)
+    xe = np.concatenate([np.column_stack((x[g.phase == ph][:-1], x[g.phase == ph][1:])) for ph in (0, 1)])
     bands = {}
     labels: list[LabelRequest] = []
     y = 0.0
@@ -174,6 +174,8 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
                 hi = max(hi, reach + 6.0)
             if any(sg < 0 for _, sg in shocks):
                 lo = min(lo, -reach - 6.0)
+        if key == "s" and bands:       # room under s's numbers for its phases' dimensions (_phase_spans)
+            y += PHASE_ROOM
         y0 = y - lo
         bands[key] = y0
         left = -pole - 4.0 if pole else 0.0
@@ -208,7 +210,7 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
                     rec.segment((x[p], y0 + chord[p]), (x[q], y0 + chord[q]), role=role, layer=LAYER,
                                 width=width, step=f"chord {key} {ph} {j}")
         if pole:
-            _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xm, "1" if key == "a" else "2",
+            _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xe, "1" if key == "a" else "2",
                   key, labels)
         y = y0 + hi + 20.0
     marks = spots(x, lang)       # one label where two divisions meet (no far dwell: "6; 7")
@@ -217,12 +219,39 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
         low = min([0.0] + [float(g.s_chord[k]) for k in ks if len(g.s_chord)] + [float(g.s_mm[k]) for k in ks])
         rec.label((x[ks[0]], y_s + low - 2.0 - NUMBER), text, size=NUMBER, anchor="middle", layer=LAYER,
                   step=f"division {ks[0]}")
+    if "s" in keys:
+        low = min([0.0] + [float(v) for v in g.s_chord] + [float(v) for v in g.s_mm])
+        _phase_spans(rec, sol, g.mu_phi, y_s + low - 2.0 - NUMBER - PHASE_BELOW, lang)
     for key in ("v", "a"):
         if key in keys:
             _division_numbers(rec, x, bands[key], marks, key)
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=g.mu_phi, mu_a=g.mu_a, mu_v=g.mu_v, mu_s=g.mu_s, H1=g.H1, H2=g.H2)
     return rec
+
+
+PHASE_BELOW = 3.0      # mm: the phases' dimension line under the s diagram's division numbers
+PHASE_ROOM = 9.0       # mm added between ds/dφ and s for that line and its names
+
+
+def _phase_spans(rec: Record, sol: Solution, mu_phi: float, y: float, lang: str) -> None:
+    """The phases named on the φ axis, as the lab's s diagram names them: under the division numbers a
+    dimension line across each phase of the working angle (φ_п, φ_вв, φ_с; the near dwell, left off
+    the abscissa, not), its arrowheads at the phase's ends (x = φ/μ_φ), its name under its middle,
+    and a thin extension line up from each phase's end to the line."""
+    rise, far, ret, _ = sol.cam.phases
+    ends = np.radians(np.cumsum([0.0, rise, far, ret])) / mu_phi
+    for j, name in enumerate(PHASE_NAMES[lang][:3]):
+        xa, xb = float(ends[j]), float(ends[j + 1])
+        if xb - xa < 1e-6:
+            continue
+        m = 0.5 * (xa + xb)
+        rec.vector((m, y), (xa, y), role="construction", layer=LAYER, step=f"phase span {j}")
+        rec.vector((m, y), (xb, y), role="construction", layer=LAYER, step=f"phase span {j}")
+        rec.label((m, y - 1.5 - TEXT), name, size=TEXT, anchor="middle", layer=LAYER, step=f"phase span {j}")
+    for xe in ends:
+        rec.segment((float(xe), y - 1.5), (float(xe), y + 1.5), role="construction", layer=LAYER,
+                    step="phase span end")
 
 
 SHOCK_LEAST = 12.0     # mm: the shortest arrow of a rigid shock on the d²s/dφ² diagram
@@ -346,19 +375,26 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         taken.append(placed.ink())
 
 
-def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, xm: np.ndarray, index: str, key: str,
+def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, ends: np.ndarray, index: str, key: str,
           labels: list[LabelRequest]) -> None:
-    """The pole P at ``H`` left of the origin on the axis of the diagram integrated, each interval's
-    mean ordinate (at its middle) carried across to the ordinate axis and joined to P by a ray (the
-    direction of the integral's chord over that interval), and H dimensioned under the axis."""
+    """The pole P at ``H`` left of the origin on the axis of the diagram integrated; over each interval
+    (``ends``: its abscissas) the step of its mean ordinate — the chord method's step of equal area,
+    drawn across the interval (not in the division numbers' row by the axis, where it would read as
+    the axis and thread the numbers), its middle marked —, carried across to the ordinate axis and joined to
+    P by a ray (the direction of the integral's chord over that interval); H dimensioned under the axis."""
     pole = (-H, y0)
     rec.point(pole, role="pole", layer=LAYER, step=f"pole P{index}")
     labels.append(LabelRequest(complex(-H, y0), f"P_{index}", toward=-0.6 + 1j, size=TEXT))
-    for j, (h, xj) in enumerate(zip(mid, xm)):
+    carried: set[float] = set()       # a level carried across once (equal steps of a symmetric law share it)
+    for j, (h, (xa, xb)) in enumerate(zip(mid, ends)):
         if not np.isfinite(h):        # a linear law's ds/dφ: drawn directly, no ray
             continue
-        rec.segment((xj, y0 + h), (0.0, y0 + h), role="projection", layer=LAYER, step=f"mean {key} {j}")
-        rec.point((xj, y0 + h), role="construction", layer=LAYER, step=f"mean {key} {j}")
+        if abs(h) > NUMBER + 2.0:     # in the division numbers' row a step would read as the axis
+            rec.segment((xa, y0 + h), (xb, y0 + h), role="construction", layer=LAYER, step=f"mean {key} {j} step")
+        if round(float(h), 6) not in carried:
+            carried.add(round(float(h), 6))
+            rec.segment((xa, y0 + h), (0.0, y0 + h), role="projection", layer=LAYER, step=f"mean {key} {j}")
+        rec.point((0.5 * (xa + xb), y0 + h), role="construction", layer=LAYER, step=f"mean {key} {j}")
         rec.segment(pole, (0.0, y0 + h), role="ray", layer=LAYER, step=f"ray P{index} {j}")
     yd = y0 + lo - 4.0
     rec.segment((-H, y0), (-H, yd - 1.5), role="construction", layer=LAYER, step=f"H{index}")

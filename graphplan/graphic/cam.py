@@ -3,8 +3,9 @@ every length read with the ruler of the drafting precision:
 
 1. the analogue-acceleration diagram d²s/dφ² over the rise and the return, divided into ``n`` equal
    intervals each (abscissa: φ at μ_φ = 2π/L rad/mm);
-2. its graphical integration by chords with the pole distance H1 — each interval's middle ordinate
-   carried to the ordinate axis and joined to the pole gives its chord's slope — to ds/dφ, then with
+2. its graphical integration by chords with the pole distance H1 — each interval's mean ordinate (the
+   step of equal area, mean_ordinates; its middle ordinate where the curve is smooth over it) carried
+   to the ordinate axis and joined to the pole gives its chord's slope — to ds/dφ, then with
    H2 to s (μ_v = μ_a·μ_φ·H1, μ_s = μ_v·μ_φ·H2; a phase of the linear law has no finite acceleration:
    its ds/dφ, a constant, is drawn directly and integrated once);
 3. the phase diagram: ds/dφ laid off along the follower's normal at the scale of s; the lines at the
@@ -94,6 +95,7 @@ class CamConstruction:
     # a set of sheets draws s on a sheet of its own, d²s/dφ² and ds/dφ on the one before
     # (sheets.cam.set_sizes: the three on one sheet below the legibility minimum)
     split: bool = False
+    R0_drawn: float = math.nan      # |OC₀| as drawn on the phase diagram (m), before it is read (R0_min)
 
     @property
     def closes(self) -> bool:
@@ -138,6 +140,20 @@ def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float,
     mid = read(mid, precision)
     chord = integrate_by_chords(x_mm, mid, pole, y0)
     return read(chord, precision), mid, chord
+
+
+def mean_ordinates(cam, phi_deg: np.ndarray, phase: np.ndarray) -> np.ndarray:
+    """Each interval's mean ordinate of d²s/dφ² (per rad²): the height of the step of equal area the
+    chord method lays over the interval (Артоболевський, graphical integration: the curve replaced by
+    steps, the areas cut off above and below the step equal), in closed form
+    ā_k = (1/Δφ)∫ d²s/dφ² dφ = (ds/dφ(φ_{k+1}) − ds/dφ(φ_k))/Δφ. Where the curve is smooth over the
+    interval this is its middle ordinate to within Δφ²·a''/24; where a law's corner falls inside it
+    (the trapezoidal law's at 1/8, 3/8, 5/8, 7/8 of the phase: at 12 divisions the middles of
+    intervals 2, 5, 8, 11) the middle ordinate is the corner's and overstates the step by up to
+    1/12 of the peak, the error the second integration heaps up to ≈ peak·Δφ² — 3.4 % of the stroke
+    at 12 divisions, more than the closing rule allows (stop 47)."""
+    _, v, _ = motion(cam, phi_deg, phase)
+    return np.diff(v) / np.radians(np.diff(np.asarray(phi_deg, dtype=float)))
 
 
 def pole_distance(h: float) -> float:
@@ -212,9 +228,10 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
             v_chord[sel] = v_mm[sel]
             a_mid.append(np.full(len(x) - 1, np.nan))
         else:
-            # the middle ordinate of each interval read off the drawn curve of the analogue acceleration
-            mid_phi = 0.5 * (phi[sel][:-1] + phi[sel][1:])
-            _, _, a_m = motion(cam, mid_phi)
+            # each interval's mean ordinate of the drawn analogue acceleration (mean_ordinates: the
+            # step of equal area the chord method lays over the interval, its middle ordinate where the
+            # curve is straight or gently curved, not where a law's corner lies inside the interval)
+            a_m = mean_ordinates(cam, phi[sel], phase[sel])
             v_mm[sel], mid, v_chord[sel] = _integrate_phase(x, a_mm[sel], H1, 0.0, precision, mid=a_m / mu_a)
             a_mid.append(mid)
         s_mm[sel], mid, s_chord[sel] = _integrate_phase(x, v_mm[sel], H2, start, precision)
@@ -227,10 +244,12 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     largest = float(np.max(np.abs(profile(cam, sol.geometry, np.linspace(0.0, 360.0, 721))["P"])))
     mu_l = nice(largest / (PROFILE_MM * profile_size))
     # R0 is measured where it is drawn: |OC₀| on the phase diagram, a translating follower's at μ_s (its s
-    # axis reads across from the s diagram's), a rocking follower's at the profile's μ_l (phase_scale;
-    # the sheet may draw it larger, the reading kept the terminal's). Stop 46: read at μ_l, the
+    # axis reads across from the s diagram's), a rocking follower's at the profile's μ_l here and
+    # again at the scale the sheet draws it at (phase_drawn_at: sheets.cam.construct_on for the terminal
+    # and the JSON, the sheet's own choice on the sheet; stop 47). Stop 46: read at μ_l, the
     # translating phase diagram's 164.74 mm (65.897 mm at μ_s = 0.4 mm/mm) was printed 65.5 mm, −0.6 %
     mu_read = mu_l if cam.rocking else mu_s
+    R0_drawn = R0_min
     R0_min = float(read(R0_min / mu_read, precision)) * mu_read
     prof = profile(cam, sol.geometry, phi, s_g, v_g, np.zeros_like(phi))
     radius_mm = read(prof["radius"] / mu_l, precision)
@@ -238,11 +257,25 @@ def construct(sol: Solution, n: int | None = None, precision: float = 0.5, H1: f
     out = CamConstruction(phi, phase, mu_phi, mu_a, mu_v, mu_s, H1, H2, precision, a_mm, v_mm, s_mm, R0_min,
                           sol.geometry.R0, radius_mm, theta, mu_l, closing=closing, a_mid=np.concatenate(a_mid),
                           v_mid=np.concatenate(v_mid), v_chord=v_chord, s_chord=s_chord)
+    out.R0_drawn = R0_drawn
     out.closing_bound = closing_bound(cam.stroke / mu_s, precision)
     out.rocking = cam.rocking
     if not out.closes:
         out.warnings.append(closing_warning(out))
     return out
+
+
+def phase_drawn_at(g: CamConstruction, mu: float | None) -> CamConstruction:
+    """``g`` with a rocking follower's phase diagram drawn at ``mu`` (m/mm; None: at the profile's
+    μ_l) and R0 read off it there, with the ruler of ``g``'s precision: |OC₀|/μ mm read, times μ — the
+    sheet's enlarged diagram (2.5:1) gives R0 to 0.2 mm where 1:1 gave it to 0.5 (stop 47: the sheet
+    drew 2.5:1 and printed the 1:1 reading)."""
+    import dataclasses
+    if not g.rocking:                 # a translating follower's phase diagram stands at μ_s, read there
+        return g
+    at = mu or g.mu_l
+    R0 = g.R0_min if not math.isfinite(g.R0_drawn) else float(read(g.R0_drawn / at, g.precision)) * at
+    return dataclasses.replace(g, mu_phase=mu, R0_min=R0)
 
 
 def _phase_diagram_radius(sol: Solution, phi, phase, s_g, v_g) -> float:

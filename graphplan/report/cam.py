@@ -243,7 +243,9 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                  p=n(doc["arm_angle_deg"])) if rocking else offset_line(w, doc, n))
     g = doc["base_radius_graphical_m"]
     lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
-                                    e=n(doc["base_radius_error_pct"], 3).replace("-", "−"),
+                                    # to 0.01 %, as Table 1's δ (a teacher reads "−0,00805 %" as false precision)
+                                    e=("—" if doc["base_radius_error_pct"] is None
+                                       else fixed(doc["base_radius_error_pct"], lang, 2).replace("-", "−")),
                                     r=n(doc["base_radius_m"] * 1000)))
     ang = lambda x: fixed(x, lang, 2).replace("-", "−")       # noqa: E731  both to 0.01°, signed as Table 1
     top = doc.get("pressure_angle_extreme_deg") or doc["pressure_angle_max_deg"]

@@ -10,7 +10,7 @@ import math
 from graphplan.drawing.cam import records, scale_text, symbols
 from graphplan.drawing.layout import GAP, Box, Leaf, Placed, Stack, centred, extent, flow
 from graphplan.exact.cam import solve
-from graphplan.graphic.cam import POLE_MM, closing_warning, construct
+from graphplan.graphic.cam import POLE_MM, closing_warning, construct, phase_drawn_at
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
 from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns
@@ -666,6 +666,12 @@ MOST_DIVISIONS = 48      # the most intervals a phase a redrawing tries (four ti
 
 
 def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
+    """The construction at the scales of the cam sheet on ``f`` (_construct_on), a rocking follower's
+    phase diagram at the scale the sheet draws it at and R0 read there (phase_scale_of)."""
+    return phase_scale_of(sol, _construct_on(sol, f, n, precision))
+
+
+def _construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
     """The construction at the scales of the cam sheet on ``f`` (cam_sizes): what `graphplan cam`,
     the explorer, graphplan.cam() and the sheet itself measure, so that they print the same numbers.
 
@@ -940,17 +946,24 @@ PHASE_SCALES = (0.0002, 0.00025, 0.0004, 0.0005, 0.001, 0.002, 0.0025, 0.004)   
 def _phase_scales(sol, g, lang: str):
     """The rocking phase diagram's scales finer than the profile's μ_l, the finest first, at which the
     profile stays the sheet's largest drawing (LAYOUT.md's cam sheet; _profile_largest)."""
-    import dataclasses
-
     from graphplan.drawing.cam import phase_diagram, profile_drawing
     if not sol.cam.rocking:
         return
     prof = profile_drawing(sol, g, lang).bounds()
     for mu in PHASE_SCALES:
         if mu < g.mu_l * (1 - 1e-9):
-            g2 = dataclasses.replace(g, mu_phase=mu)
+            g2 = phase_drawn_at(g, mu)              # R0 read at the scale it is drawn at
             if _profile_largest(prof, phase_diagram(sol, g2, lang).bounds()):
                 yield g2
+
+
+def phase_scale_of(sol, g):
+    """``g`` with a rocking follower's phase diagram at the scale the sheet first tries for it — the
+    finest standard one at which the profile stays the largest drawing (_phase_scales, by the drawings'
+    extents alone) — and R0 read there: what `graphplan cam`, graphplan.cam() and the JSON print, so
+    that they agree with the sheet, which draws the diagram there where its layout keeps (_phase_enlarged;
+    else at μ_l, R0 then read at μ_l on the sheet). A translating follower's ``g`` as it is."""
+    return next(_phase_scales(sol, g, "uk"), g)
 
 
 def _phase_enlarged(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
@@ -1013,7 +1026,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     each drawing at the largest standard scale that fits its zone (cam_sizes)."""
     lang = args.lang
     sol = solve(cam)
-    g = construct_on(sol, f, None, args.precision)
+    # laid out with the phase diagram at the profile's μ_l; enlarged where the layout keeps (_phase_enlarged)
+    g = _construct_on(sol, f, None, args.precision)
     region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, doc, laid, notes_at = _arranged(sol, g, cam, lang, f)
     if f.name == "A1" and _one_sheet(laid):
