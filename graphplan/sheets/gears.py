@@ -603,15 +603,23 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
-        if beside(region, mesh, lang):    # beside the meshing, as tall as it with its caption
-            row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
-        elif f.name == "A1":              # in the row under it, beside the planetary pictures: as tall
-            top = meshing_leaf(mesh, lang).bounds()   # as the row's room, within the meshing's height
-            row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
-        else:                             # a set's: as tall as the planetary pictures
-            row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
+        _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
+
+
+def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
+    """The meshing's λ diagrams (``mesh.lam``) with the unit their place takes: beside the meshing, as
+    tall as it with its caption; on A1 in the row under it beside the planetary pictures, as tall as the
+    row's room within the meshing's height; in a set, as tall as the planetary pictures."""
+    region = field_of(f)
+    if beside(region, mesh, lang):
+        row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
+    elif f.name == "A1":
+        top = meshing_leaf(mesh, lang).bounds()
+        row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+    else:
+        row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
+    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
 
 
 def meshing_leaf(mesh, lang: str) -> Record:
@@ -715,6 +723,12 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
+        if mesh is not None:              # its meshing at the set's scale (``set_mesh``), not at the one the
+            head = set_mesh(sol.pair, f, precision, lang)  # one-sheet zones took (stop 47: A2 drew 14/35
+            if head.module_mm != mesh.module_mm:           # at 2,5:1, the depth 22,5 mm, s_a2 +5,96 %, while
+                mesh = head                                # 5:1 fits the set's first sheet)
+                _slide(sol, mesh, f, plan, lang)
+                drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
         more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
         lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
         pages = _set(drawings, tables, parts, f, more, lang, lam)

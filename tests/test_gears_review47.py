@@ -1,0 +1,47 @@
+"""Stop 47's gear sheets (the lead's 14/35 pair with given shifts at m = 4 mm and a type-A train for
+u1H = 7; and gear47's own 21/50 pair at m = 8 mm with a type-B train of given teeth), graded as a
+teacher grades them: the meshing of a set drawn at the scale the set's first sheet takes, the
+planetary pictures read as drawn — each checked against the closed forms or the drawn geometry."""
+from __future__ import annotations
+
+import pytest
+
+from review_scenes import GEARS47
+
+
+def _scene(tmp_path_factory, text: str, name: str):
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import load
+    path = tmp_path_factory.mktemp(name) / "gears.toml"
+    path.write_text(text, encoding="utf-8")
+    g = load(path)
+    return g, solve(g)
+
+
+@pytest.mark.slow
+def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_factory):
+    """The A2 set of 14/35 drew the meshing at 2,5:1 — the whole depth 2,25·m = 22,5 mm, a warning on
+    the sheet and s_a2 read +5,96 % (starred) — because the scale was chosen for the one-sheet zones
+    (the λ diagrams' N1N2 beside the planetary pictures) before the sheet became a set. A set's
+    meshing heads its first sheet (``set_mesh``): 5:1 draws the depth 45 mm, within REFERENCE's
+    40–60 mm, and its drawing with its caption stands on the first sheet within the field, over the
+    title block; the λ diagrams' abscissa is the meshing's N1N2 = aw·sin αw at that scale."""
+    import math
+
+    from graphplan.sheets.compose import SheetOptions, field_of
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import build_gears_sheet, on_sheet
+    g, sol = _scene(tmp_path_factory, GEARS47, "g47a2")
+    f = form("A2")
+    mesh, _, pages = on_sheet(g, sol, f, 0.5, "uk")
+    m = sol.pair.pair.module * 1000.0
+    k = mesh.module_mm / m                                            # the drawing's scale
+    assert 40.0 <= 2.25 * m * k <= 60.0 and not mesh.warnings
+    sheet = build_gears_sheet(g, f, SheetOptions(lang="uk"))
+    placed = next(p for p in sheet.pages[0].placed if p.name == "meshing")
+    x0, y0, x1, y1 = field_of(f)
+    b = placed.record.bounds()
+    assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6
+    axis = next(q for q in mesh.lam.items if q.step == "λ axis").points
+    g_mm = (axis[1][0] - axis[0][0] - 12.0) * mesh.lam.scales["mu_l"] * 1000.0
+    assert g_mm == pytest.approx(sol.pair.aw * 1000.0 * math.sin(sol.pair.alpha_w), rel=1e-9)
