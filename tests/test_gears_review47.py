@@ -45,3 +45,41 @@ def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_f
     axis = next(q for q in mesh.lam.items if q.step == "λ axis").points
     g_mm = (axis[1][0] - axis[0][0] - 12.0) * mesh.lam.scales["mu_l"] * 1000.0
     assert g_mm == pytest.approx(sol.pair.aw * 1000.0 * math.sin(sol.pair.alpha_w), rel=1e-9)
+
+
+def test_a_set_s_first_sheet_holds_the_sliding_diagrams_under_the_meshing_beside_the_data(tmp_path_factory):
+    """11/29's A2 set (GEARS46) drew the 5:1 meshing and the two lines of task data on its first sheet,
+    45 % of it empty, and the λ diagrams on the next: 223 + 6 + 146 mm of drawings stood in the field's
+    400 only with the λ diagrams reaching down by the title block, which no arrangement of the sheet
+    had. The meshing across the top with the λ diagrams and the data side by side under it, left of the
+    title block, is one: the three stand on the first sheet, inside the field, clear of each other and
+    of the title block, the λ diagrams under the meshing."""
+    from graphplan.drawing.layout import GAP, Leaf
+    from graphplan.graphic.gears import sliding_diagram
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.compose import field_of, keep_out, note_block
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import data_lines, meshing_leaf, set_mesh, sliding_leaf
+    from graphplan.sheets.gearset import set_pages
+    from review_scenes import GEARS46
+    g, sol = _scene(tmp_path_factory, GEARS46, "g46a2")
+    f = form("A2")
+    mesh = set_mesh(sol.pair, f, 0.5, "en")
+    lines = data_lines(gears_json(sol, mesh, None, ""), "en")
+    leaves = [Leaf("meshing", record=meshing_leaf(mesh, "en")), Leaf("data", record=note_block(lines, 185.0)),
+              Leaf("sliding", record=sliding_leaf(sliding_diagram(sol.pair, mesh, 20.0), "en"))]
+    pages = set_pages(leaves, f, lambda n, w: Leaf(n, record=note_block(lines, w)))
+    assert pages is not None and len(pages) == 1
+    got = {p.name: p.record.bounds() for p in pages[0]}
+    x0, y0, x1, y1 = field_of(f)
+    keep = keep_out(f)
+
+    def apart(a, b) -> bool:
+        return a[2] <= b[0] + 1e-6 or b[2] <= a[0] + 1e-6 or a[3] <= b[1] + 1e-6 or b[3] <= a[1] + 1e-6
+
+    for name, b in got.items():
+        assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6
+        assert apart(b, keep), name
+    names = sorted(got)
+    assert all(apart(got[a], got[b]) for i, a in enumerate(names) for b in names[i + 1:])
+    assert got["sliding"][3] <= got["meshing"][1] - GAP + 1e-6

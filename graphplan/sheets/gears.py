@@ -727,8 +727,11 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             head = set_mesh(sol.pair, f, precision, lang)  # one-sheet zones took (stop 47: A2 drew 14/35
             if head.module_mm != mesh.module_mm:           # at 2,5:1, the depth 22,5 mm, s_a2 +5,96 %, while
                 mesh = head                                # 5:1 fits the set's first sheet)
-                _slide(sol, mesh, f, plan, lang)
-                drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
+            # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
+            # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
+            # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
+            mesh.lam = sliding_diagram(sol.pair, mesh, LAMBDA_UNITS[0])
+            drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
         more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
         lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
         pages = _set(drawings, tables, parts, f, more, lang, lam)
