@@ -83,3 +83,44 @@ def test_a_set_s_first_sheet_holds_the_sliding_diagrams_under_the_meshing_beside
     names = sorted(got)
     assert all(apart(got[a], got[b]) for i, a in enumerate(names) for b in names[i + 1:])
     assert got["sliding"][3] <= got["meshing"][1] - GAP + 1e-6
+
+
+@pytest.mark.slow
+def test_the_lead_s_a1_planetary_pictures_read_u1h_as_drawn_within_the_stated_bound(tmp_path_factory):
+    """The lead's A1 (14/35 and a type-A train for u1H = 7): Table 3 prints u1H graphical 6,918 against
+    Willis' 1 + z3/z1 = 7,059 (−2 %). Read off the drawn pictures with a ruler, as a teacher checks
+    them: the scheme's radii are the closed forms' r1, rO2, r3 at μl within half the drafting precision
+    (r1 = 12,75 mm laid off 13 mm: the −2 %), vA is ω1·r1 at μv, the plan's segments from the pole's
+    foot give ω = segment·μv/(μl·h) and u1H = segment 1 / segment H — the sheet's graphical value —,
+    and u1H = (r1 + r3)/r1 of the drawn radii; Willis' value lies within the bound the notes state."""
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    g, sol = _scene(tmp_path_factory, GEARS47, "g47a1")
+    _, vel, _ = on_sheet(g, sol, form("A1"), 0.5, "uk")
+    doc = gears_json(sol, None, vel, "")["planetary"]
+    z1, z2, z3 = sol.train.z
+    m = sol.train.train.module
+    u = 1 + z3 / z1
+    rec = vel.record
+    pt = {q.step: q.points[0] for q in rec.items if q.kind == "point" and q.step.startswith("point ")}
+    pole = next(q.points[0] for q in rec.items if q.step == "h")
+    line_y = next(q.points[1] for q in rec.items if q.step == "h")[1]
+    h = abs(line_y - pole[1])
+    seg = {k: pt[f"point {k}"][0] - pole[0] for k in ("1", "2", "H")}
+    mu_omega = vel.mu_v / (vel.mu_l * h)
+    half = 0.5 * vel.precision
+    for k in ("1", "2", "H"):            # each segment read to the ruler's division, ω = segment·μω
+        assert abs(vel.segments[k] - seg[k]) <= half + 1e-9
+        assert vel.omega[k] == pytest.approx(vel.segments[k] * mu_omega, rel=1e-9)
+    assert doc["ratio"]["graphical"] == pytest.approx(vel.segments["1"] / vel.segments["H"], rel=1e-9)
+    read = seg["1"] / seg["H"]
+    assert abs(read - doc["ratio"]["graphical"]) <= half * read * (1 / seg["1"] + 1 / seg["H"])
+    r = {k: m * zk / 2 / vel.mu_l for k, zk in (("1", z1), ("3", z3))}
+    r["O2"] = m * (z1 + z2) / 2 / vel.mu_l
+    drawn = {k: vel.heights[k] for k in ("A", "O2", "C")}
+    assert abs(drawn["A"] - r["1"]) <= half and abs(drawn["C"] - r["3"]) <= half and abs(drawn["O2"] - r["O2"]) <= half
+    va = next(q.points for q in rec.items if q.step == "vA = ω1·r1")
+    assert abs(va[1][0] - va[0][0]) == pytest.approx(sol.train.omega["1"] * m * z1 / 2 / vel.mu_v, abs=half)
+    assert read == pytest.approx((drawn["A"] + drawn["C"]) / drawn["A"], abs=2 * half * u / seg["H"])
+    assert abs(read - u) <= doc["ratio"]["bound"] and doc["ratio"]["bound"] == pytest.approx(vel.ratio_bound)
