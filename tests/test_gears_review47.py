@@ -33,7 +33,7 @@ def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_f
     from graphplan.sheets.gears import build_gears_sheet, on_sheet
     g, sol = _scene(tmp_path_factory, GEARS47, "g47a2")
     f = form("A2")
-    mesh, _, pages = on_sheet(g, sol, f, 0.5, "uk")
+    mesh, vel, pages = on_sheet(g, sol, f, 0.5, "uk")
     m = sol.pair.pair.module * 1000.0
     k = mesh.module_mm / m                                            # the drawing's scale
     assert 40.0 <= 2.25 * m * k <= 60.0 and not mesh.warnings
@@ -45,6 +45,16 @@ def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_f
     axis = next(q for q in mesh.lam.items if q.step == "λ axis").points
     g_mm = (axis[1][0] - axis[0][0] - 12.0) * mesh.lam.scales["mu_l"] * 1000.0
     assert g_mm == pytest.approx(sol.pair.aw * 1000.0 * math.sin(sol.pair.alpha_w), rel=1e-9)
+    # the planetary pictures, the main drawing of the set's second sheet, at 1:1: the halving over the
+    # pictures' sizes skipped 1,6 × (h 27 mm, under the first pictures' 34) toward the smaller ones and
+    # drew them at 1:2 (u1H within ±0,33); at 1:1 the ring's radius is r3 = m·z3/2 laid off at 1 mm/mm and
+    # Willis' 1 + z3/z1 is read within the narrower bound the notes state, the set still two sheets
+    z1, _, z3 = sol.train.z
+    assert len(pages) == 2 and vel.mu_l == pytest.approx(0.001)
+    assert abs(vel.heights["C"] - sol.train.train.module * z3 / 2 / 0.001) <= 0.25
+    assert abs(vel.ratio - (1 + z3 / z1)) <= vel.ratio_bound < 0.2
+    pic = next(p for p in sheet.pages[1].placed if p.name == "planetary").record.bounds()
+    assert x0 - 1e-6 <= pic[0] and pic[2] <= x1 + 1e-6 and y0 - 1e-6 <= pic[1] and pic[3] <= y1 + 1e-6
 
 
 def test_a_set_s_first_sheet_holds_the_sliding_diagrams_under_the_meshing_beside_the_data(tmp_path_factory):
