@@ -213,7 +213,7 @@ def train_table(doc: dict, lang: str) -> Record:
     w = WORDS[lang]
     t = doc["planetary"]
     ok = lambda b: w["ok"] if b else w["fail"]                            # noqa: E731
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_{2}'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     r = t["ratio"]
     g = t.get("graphical", {})
     # the values to five significant figures, δ from the printed values (report.gears.agreeing)
@@ -360,7 +360,7 @@ def train_data(t: dict, lang: str) -> str:
     """The planetary train's task data: its type, u1H wanted (or the teeth given), K, m and n1 (or ω1)
     as the scene gives them."""
     w = WORDS[lang]
-    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z_{2}'", "z_3"]
+    names = ["z_1", "z_2", "z_3"] if t["type"] == "A" else ["z_1", "z_2", "z'_2", "z_3"]
     u = (w["train_u"].format(u=_n(t["ratio_required"], lang)) if t["ratio_required"] is not None
          else w["train_z"].format(z=", ".join(f"{a} = {b}" for a, b in zip(names, t["z"]))))
     w1 = t["omega_rad_s"]["1"]
