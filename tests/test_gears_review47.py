@@ -28,7 +28,7 @@ def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_f
     title block; the λ diagrams' abscissa is the meshing's N1N2 = aw·sin αw at that scale."""
     import math
 
-    from graphplan.sheets.compose import SheetOptions, field_of
+    from graphplan.sheets.compose import SheetOptions, field_of, keep_out
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import build_gears_sheet, on_sheet
     g, sol = _scene(tmp_path_factory, GEARS47, "g47a2")
@@ -42,6 +42,8 @@ def test_an_a2_set_draws_the_meshing_with_the_whole_depth_40_to_60_mm(tmp_path_f
     x0, y0, x1, y1 = field_of(f)
     b = placed.record.bounds()
     assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6
+    keep = keep_out(f)
+    assert b[1] >= keep[3] - 1e-6 or b[2] <= keep[0] + 1e-6                # clear of the title block
     axis = next(q for q in mesh.lam.items if q.step == "λ axis").points
     g_mm = (axis[1][0] - axis[0][0] - 12.0) * mesh.lam.scales["mu_l"] * 1000.0
     assert g_mm == pytest.approx(sol.pair.aw * 1000.0 * math.sin(sol.pair.alpha_w), rel=1e-9)
