@@ -2304,3 +2304,57 @@ rpm = 150
 direction = "cw"
 divisions = 10
 '''
+
+
+GEARS47 = '''# Stop 47 (the lead's check): an external pair 14/35 with given shifts, m = 4 mm, and a one-row
+# planetary train of type A for a ratio of 7 with three planets (/work/lead/s47/gears.toml).
+title = "Зубчаста передача 14/35 і планетарний редуктор (перевірка 47)"
+title_en = "A gear pair 14/35 and a planetary reducer (check 47)"
+designation = "ТММ.ЗП.47.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-47"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 35]
+module = 0.004
+shifts = [0.35, 0.1]
+
+[planetary]
+type = "A"
+ratio = 7.0
+planets = 3
+module = 0.003
+omega = 150.0
+'''
+
+
+GEARS_B47 = '''# Stop 47's own check (gear47): an external pair 21/50 with given shifts 0.5/0.2, m = 8 mm (a larger
+# module: the meshing at 2.5:1 with seven teeth), and a two-row planetary train of type B with given
+# teeth 20/40 - 40/100 (u1H = 6), three planets, n1 = 1450 rpm, in English.
+title = "Зубчаста передача 21/50 і дворядний планетарний редуктор (перевірка 47)"
+title_en = "A gear pair 21/50 and a two-row planetary reducer (check 47)"
+designation = "TMM.GR.47.001"
+lang = "en"
+
+[sheet]
+student = "Check N."
+teacher = "Teacher T."
+group = "MB-47"
+organisation = "NULES of Ukraine"
+
+[gears]
+z = [21, 50]
+module = 0.008
+shifts = [0.5, 0.2]
+
+[planetary]
+type = "B"
+z = [20, 40, 40, 100]
+planets = 3
+module = 0.004
+rpm = 1450
+'''

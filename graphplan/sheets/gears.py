@@ -603,15 +603,23 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
-        if beside(region, mesh, lang):    # beside the meshing, as tall as it with its caption
-            row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
-        elif f.name == "A1":              # in the row under it, beside the planetary pictures: as tall
-            top = meshing_leaf(mesh, lang).bounds()   # as the row's room, within the meshing's height
-            row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
-        else:                             # a set's: as tall as the planetary pictures
-            row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
+        _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
+
+
+def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
+    """The meshing's λ diagrams (``mesh.lam``) with the unit their place takes: beside the meshing, as
+    tall as it with its caption; on A1 in the row under it beside the planetary pictures, as tall as the
+    row's room within the meshing's height; in a set, as tall as the planetary pictures."""
+    region = field_of(f)
+    if beside(region, mesh, lang):
+        row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
+    elif f.name == "A1":
+        top = meshing_leaf(mesh, lang).bounds()
+        row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+    else:
+        row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
+    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
 
 
 def meshing_leaf(mesh, lang: str) -> Record:
@@ -715,6 +723,15 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
+        if mesh is not None:              # its meshing at the set's scale (``set_mesh``), not at the one the
+            head = set_mesh(sol.pair, f, precision, lang)  # one-sheet zones took (stop 47: A2 drew 14/35
+            if head.module_mm != mesh.module_mm:           # at 2,5:1, the depth 22,5 mm, s_a2 +5,96 %, while
+                mesh = head                                # 5:1 fits the set's first sheet)
+            # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
+            # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
+            # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
+            mesh.lam = sliding_diagram(sol.pair, mesh, LAMBDA_UNITS[0])
+            drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
         more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
         lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
         pages = _set(drawings, tables, parts, f, more, lang, lam)
@@ -842,13 +859,16 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     # the largest size (halving SET_GROW: a larger picture never takes fewer sheets) whose narrowest
     # variant keeps the count, then at it the widest variant that does — the ring's scale the one that
     # reads best (review 10: A3's train at 1:2 read ω1 +2,5 % where 1:1 fits beside Table 3)
-    lo, hi, got = 0, len(SET_GROW) - 1, None
+    # (halving over the sizes whose pictures are good: h is not monotonic in the size — μv rounded —, and a
+    # size left out for its h sent the halving to the smaller ones; stop 47: A2's 14/35 train drawn at
+    # 1:2, u1H within ±0,33, where 1:1 kept the set's two sheets and reads it within ±0,18)
+    sizes = [(k, d) for k in SET_GROW for d in [drawn(k, *SHARES[-1])] if d is not None and good(d[0])]
+    lo, hi, got = 0, len(sizes) - 1, None
     while lo <= hi:
         mid = (lo + hi) // 2
-        d = drawn(SET_GROW[mid], *SHARES[-1])
-        out = kept(*d) if d is not None and good(d[0]) else None
+        out = kept(*sizes[mid][1])
         if out is not None:
-            got, hi = (mid, out, d), mid - 1
+            got, hi = (sizes[mid][0], out, sizes[mid][1]), mid - 1
         else:
             lo = mid + 1
     if got is None:
@@ -856,7 +876,7 @@ def _set_grown(g: Gears, sol, mesh, more, vel, f: Form, precision: float, lang: 
     else:
         chosen = (got[2][0], got[1])
         for va_share, share in SHARES[:-1]:
-            d = drawn(SET_GROW[got[0]], va_share, share)
+            d = drawn(got[0], va_share, share)
             if d is not None and good(d[0]):
                 out = kept(*d)
                 if out is not None:

@@ -128,6 +128,17 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
             for ug in _groupings(under) or [None]:
                 node = dg if ug is None else (ug if dg is None else Stack([dg, ug]))
                 lefts += [(node, c) for c in _groupings(rest) or [None]]
+    if len(drawings) >= 2 and side:       # the first drawing across the top, the others with the tables and
+        top, under = drawings[0], Row(list(drawings[1:]) + side)      # notes beside them under it, left of
+        tw, th = _extent(top)                                         # the title block (stop 47: 11/29's
+        uw, uh = _extent(under)                                       # A2 set left its first sheet 45 %
+        spare = y1 - y0 - th - GAP - uh                               # empty, the λ diagrams on the next)
+        split = y1 - th - spare / 2                                   # the top's foot
+        if tw <= x1 - x0 + 1e-9 and uw <= keep[0] - x0 + 1e-9 and spare >= -1e-9 and \
+                (split >= low - 1e-9 or tw <= keep[0] - x0 + 1e-9):
+            take(min(spare / 2, x1 - x0 - tw, keep[0] - x0 - uw),
+                 lambda top=top, under=under, a=(x0, split, x1, y1), b=(x0, y0, keep[0], split - GAP):
+                 _placed(top, a, texts) + _placed(under, b, texts))
     for d, c in lefts:
         dw, dh = _extent(d) if d is not None else (0.0, 0.0)
         cw, ch = _extent(c) if c is not None else (0.0, 0.0)
