@@ -31,3 +31,35 @@ def test_the_six_bars_a2_numbers_are_its_real_sets_sheets_composed_or_read_back(
     monkeypatch.setitem(S.RAW, "kinematics", None)             # composing now would fail
     monkeypatch.setitem(S.RAW, "forces", None)
     assert numbers(S.BUILDERS["dynamics"](st, f, opts)) == cold
+
+
+@pytest.fixture(scope="module")
+def pump():
+    """Stop 45's pump: its Wittenbauer construction at 12 divisions and the ruler's 0.5 mm."""
+    from review_scenes import PUMP45
+
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import construct
+    return construct(analyse(scene_study(PUMP45), None), 12, 0.5)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_k_and_l_are_printed_as_the_ruler_reads_them_k_less_l_the_kl_printed(pump, lang):
+    """The tangents' note prints k, l and |kl| consistently (stop 45's pump printed k = 0,715 mm,
+    l = −65,1 mm, |kl| = 66 mm): k − l equals |kl| as printed, |kl| is the construction's (J's),
+    and k and l lie within a ruler's step of where the tangents cut the ΔT axis (graphic.flywheel
+    ``tangents``: the lines' intercepts)."""
+    import re
+
+    from graphplan.report.dynamics import tangents_note
+    note = tangents_note(pump, lang)
+    assert note is not None
+    value = r"(−?[\d.,]+)"
+    m = re.search(rf"k = {value} (?:мм|mm) (?:і|and) l = {value} (?:мм|mm), \|kl\| = {value}",
+                  note.replace("\u00a0", " "))
+    assert m, note
+    k, l, kl = (float(g.replace("−", "-").replace(",", ".")) for g in m.groups())
+    assert k - l == pytest.approx(kl, abs=1e-9)
+    assert kl == pytest.approx(pump.kl, abs=1e-9)
+    assert abs(k - pump.tangent["k"]) <= 0.25 + 1e-9
+    assert abs(l - pump.tangent["l"]) <= 0.5 + 1e-9

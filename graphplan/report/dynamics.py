@@ -14,6 +14,7 @@ from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
+from graphplan.graphic.chords import read
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
@@ -449,6 +450,15 @@ PROTRACTOR_DEG = 5.0      # °: a tangent angle below this is laid off by its sl
 RUN_MM = 100.0            # mm: the run along the I* axis over which the slope's rise is given
 
 
+def kl_read(f) -> tuple[float, float, float]:
+    """k, l and |kl| in mm as one ruler of ``f.precision`` reads them on the ΔT axis: |kl| read whole
+    (``f.kl``, what J = μ_T·|kl|/(ω_m²·δ) takes), k read from the I* axis, and l laid off |kl| below
+    it — so the printed k − l is the printed |kl| (stop 45's pump printed k = 0,715 and l = −65,1 mm
+    with |kl| = 66 mm, each rounded its own way); each within a ruler's step of the drawing's."""
+    k = float(read(f.tangent["k"], f.precision))
+    return k, k - f.kl, f.kl
+
+
 def tangents_note(f, lang: str) -> str | None:
     """How the Wittenbauer tangents are drawn where ψ is too small for a protractor (below
     ``PROTRACTOR_DEG``): by their slope tg ψ — the rise over ``RUN_MM`` of the I* axis — moved
@@ -460,8 +470,7 @@ def tangents_note(f, lang: str) -> str | None:
     mm = NB + ("мм" if uk else "mm")
     run = num(RUN_MM, lang)
     hi, lo = (num(RUN_MM * tg[key], lang, 3).replace("-", "−") for key in ("s_max", "s_min"))
-    k, l = (num(tg[key], lang, 3).replace("-", "−") for key in ("k", "l"))
-    kl = num(f.kl, lang)
+    k, l, kl = (num(v, lang).replace("-", "−") for v in kl_read(f))
     im = "I^*_м" if uk else "I^*_m"
     if uk:
         return (f"ψ замалі для транспортира: дотичні проводять за tg ψ (на {run}{mm} осі {im} підйом {hi}{mm} при "
