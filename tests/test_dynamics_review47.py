@@ -63,3 +63,24 @@ def test_k_and_l_are_printed_as_the_ruler_reads_them_k_less_l_the_kl_printed(pum
     assert kl == pytest.approx(pump.kl, abs=1e-9)
     assert abs(k - pump.tangent["k"]) <= 0.25 + 1e-9
     assert abs(l - pump.tangent["l"]) <= 0.5 + 1e-9
+
+
+@pytest.mark.parametrize("projections", [None, (-20.0, -10.0)])
+def test_k_and_l_stand_clear_of_the_axis_and_the_dimension_line_each_by_the_line_it_names(pump, projections):
+    """Stop 47: the letter l (one upright stroke) stood 2 mm beside the ΔT axis and read as a third
+    line along it. Measured on the drawing: each letter's ink at least 3 mm from the ΔT axis (x = 0)
+    and from the |kl| dimension line (the vertical arrows' x), between them, and nearer the level it
+    names (k over the line through k, l under the line through l) than the other; the |kl| reading
+    clear under the letter l."""
+    from graphplan.drawing.flywheel import wittenbauer_record
+    rec = wittenbauer_record(pump, "uk", projections=projections)
+    xd = next(p for p in rec.items if p.step == "kl" and p.kind == "vector").points[0][0]
+    k, l = pump.tangent["k"], pump.tangent["l"]
+    for name, level, other, above in (("k", k, l, True), ("l", l, k, False)):
+        x0, y0, x1, y1 = next(p for p in rec.items if p.kind == "text" and p.text == name).ink()
+        assert xd + 3.0 <= x0 and x1 <= -3.0, (name, x0, x1, xd)
+        assert (y0 >= level) if above else (y1 <= level), (name, y0, y1, level)
+        assert abs((y0 + y1) / 2 - level) < abs((y0 + y1) / 2 - other)
+    ly0 = next(p for p in rec.items if p.kind == "text" and p.text == "l").ink()[1]
+    kl = next(p for p in rec.items if p.kind == "text" and p.text.startswith("|kl|")).ink()
+    assert kl[3] <= ly0 or kl[2] <= xd, kl            # under the letter l, or left of the dimension line
