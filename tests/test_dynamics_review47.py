@@ -84,3 +84,33 @@ def test_k_and_l_stand_clear_of_the_axis_and_the_dimension_line_each_by_the_line
     ly0 = next(p for p in rec.items if p.kind == "text" and p.text == "l").ink()[1]
     kl = next(p for p in rec.items if p.kind == "text" and p.text.startswith("|kl|")).ink()
     assert kl[3] <= ly0 or kl[2] <= xd, kl            # under the letter l, or left of the dimension line
+
+
+@pytest.mark.slow                     # one A1 dynamics sheet: ~6 s of CPU
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_six_bars_a1_sheet_says_why_a_flywheel_beside_the_motor_in_the_room_under_the_notes(lang):
+    """Stop 47: ~200 × 75 mm stood empty under the notes beside I*(φ) while the sentence on why a
+    flywheel though the motor is sized by the peak was the terminal's only. It is on the sheet,
+    as the terminal words it, every line of the notes inside the field, nothing over the band."""
+    from graphplan.util.markup import plain
+    from graphplan.report.dynamics import dynamics_json, motor_note
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.dynamics import _analysed, _drawn, construction
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import RAW
+    st, f = scene_study(LINK47), form("A1")
+    opts = SheetOptions(lang=lang, sheet="dynamics")
+    sheet = RAW["dynamics"](st, f, opts)
+    notes = next(p for p in sheet.placed if p.name == "notes")
+    text = " ".join(plain(it.text) for it in notes.record.items if it.kind == "text")
+    dyn = _analysed(st, None)
+    L, size = construction(st, dyn, f, opts)[:2]
+    said = plain(motor_note(dynamics_json(_drawn(dyn, opts, L, size, lang)[0]), lang))
+    assert " ".join(said.replace("\u00a0", " ").split()) in " ".join(text.replace("\u00a0", " ").split())
+    x0, y0, x1, y1 = field_of(f)
+    nx0, ny0, nx1, ny1 = notes.record.bounds()
+    assert x0 <= nx0 and y0 <= ny0 and nx1 <= x1 and ny1 <= y1
+    for p in sheet.placed:
+        if p.name in ("energy", "wittenbauer", "inertia"):
+            bx0, by0, bx1, by1 = p.record.bounds()
+            assert nx1 <= bx0 or bx1 <= nx0 or ny1 <= by0 or by1 <= ny0, p.name
