@@ -22,9 +22,18 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 def pytest_configure(config):
-    """Tests and benchmarks run with the allocator as the program sets it (graphplan.util.memory)."""
+    """Tests and benchmarks run with the allocator as the program sets it (graphplan.util.memory),
+    and keep the sets' sheet counts (sheets/sheet.py ``pages_of``) in a folder of this run only —
+    shared by its workers (they inherit the variable), never a count of an earlier run."""
     from graphplan.util.memory import keep_freed_memory
     keep_freed_memory()
+    if "GRAPHPLAN_CACHE" not in os.environ:
+        import atexit
+        import shutil
+        import tempfile
+        folder = tempfile.mkdtemp(prefix="graphplan-test-cache-")
+        os.environ["GRAPHPLAN_CACHE"] = folder
+        atexit.register(shutil.rmtree, folder, True)
 
 
 # Parametrized tests whose every case runs in the slow suite while the default run keeps the first

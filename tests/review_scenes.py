@@ -2358,3 +2358,96 @@ planets = 3
 module = 0.004
 rpm = 1450
 '''
+
+
+SIEVE47 = '''# Stop 47 (helper dyn47's own check): a sieve drive — a crank-rocker O1-A-B-O2 whose rocker's point C
+# drives a vertical slider D (the sieve) through CD (I(0-1) -> II(2-3) RRR -> II(4-5) RRP), the crank
+# counter-clockwise; a resisting force on D on its upward stroke; dynamics to a 1500-rpm motor.
+title = "Механізм привода сита"
+title_en = "Sieve drive mechanism"
+designation = "ТММ.КП.47.000"
+
+[sheet]
+student = "Перевірка Д. Д."
+teacher = "Викладач В. В."
+group = "МБ-47"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.04]
+
+[frame.guides]
+y = { through = [0.2, 0], angle_deg = 90, title_uk = "сита", title_en = "of the sieve" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 6
+inertia = 0.05
+
+[[link]]
+name = "O2BC"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+shape = { C = [0.28, 0.0] }
+points = { S3 = 0.5 }
+mass = 5
+inertia = 0.04
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2
+inertia = 0.01
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "y"
+mass = 12
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+output = "D"
+start = "max"
+accel = [4]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

@@ -66,7 +66,7 @@ def test_the_design_answer_is_said_in_one_sentence():
 
 
 @pytest.mark.slow
-def test_an_a3_sets_dynamics_is_counted_in_its_own_language():
+def test_an_a3_sets_dynamics_is_counted_in_its_own_language(monkeypatch):
     """Review 11's compressor (English) at A3: the dynamics flows onto one sheet more in English
     than in Ukrainian (4 against 3); the count the kinematics' and forces' sheets read
     (``pages_of``) is the English sheets' own, so every sheet prints one total (it printed 11 there
@@ -76,6 +76,7 @@ def test_an_a3_sets_dynamics_is_counted_in_its_own_language():
     from graphplan.sheets.sheet import _PAGES, RAW, pages_of
     st = scene_study(COMPRESSOR11)
     opts = SheetOptions(None, None, 0.5, "en", "dynamics")
+    monkeypatch.setenv("GRAPHPLAN_CACHE", "off")     # composed here, not read back
     _PAGES.clear()
     counted = pages_of("dynamics", st, form("A3"), opts)       # as kinematics' and forces' sheets count it
     assert counted == len(RAW["dynamics"](st, form("A3"), opts).pages)

@@ -188,3 +188,38 @@ def test_the_shapers_a3_set_reads_the_a1_kl_or_its_notes_say_why_not():
     assert room == pytest.approx(y1 - y0)
     drawn = max(_band_size(band(f1, lang, 50.0)[1])[1] for lang in ("uk", "en"))
     assert drawn >= need > room, (drawn, need, room)
+
+
+@pytest.mark.slow                     # the compressor's A3 sets composed: ~40 s of CPU
+def test_the_sets_numbers_are_the_real_kinematics_and_forces_sets_sheets(compressor):
+    """Stop 47: the dynamics set's "Sheet"/"Sheets" read the kinematics' and forces' sheet counts
+    (``pages_of``, kept on disk): they equal the counts of those sets composed whole (RAW builders,
+    unnumbered)."""
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import RAW
+    st, _, sheet = compressor
+    real = {k: len(RAW[k](st, form("A3"), SimpleNamespace(**{**vars(_args()), "sheet": k})).pages)
+            for k in ("kinematics", "forces")}
+    first = real["kinematics"] + real["forces"] + 1
+    assert [p.fields["sheet"] for p in sheet.pages] == [str(first + i) for i in range(len(sheet.pages))]
+    assert {p.fields["sheets"] for p in sheet.pages} == {str(first - 1 + len(sheet.pages))}
+
+
+def test_a_count_kept_on_disk_is_read_back_only_by_the_same_code(tmp_path, monkeypatch):
+    """``pages_of``'s disk cache: a count written is read back in a process that forgot it, never
+    under another digest of the package (changed code composes again), and an unwritable folder
+    is no error."""
+    from graphplan.sheets import sheet as S
+    monkeypatch.setenv("GRAPHPLAN_CACHE", str(tmp_path))
+    key = ("kinematics", "a scene", "A3", None, (), 0.5, "uk")
+    S.remember_pages(key, 7)
+    monkeypatch.setattr(S, "_PAGES", {})
+    assert S._read_disk(key) == 7
+    monkeypatch.setattr(S, "_DIGEST", "another code")
+    assert S._read_disk(key) is None
+    monkeypatch.setenv("GRAPHPLAN_CACHE", "off")
+    assert S._read_disk(key) is None
+    blocked = tmp_path / "file"
+    blocked.write_text("")
+    monkeypatch.setenv("GRAPHPLAN_CACHE", str(blocked))
+    S.remember_pages(("forces",) + key[1:], 2)            # no error: composed again next time

@@ -107,7 +107,7 @@ def test_the_press_sheets_rows_check():
 def test_the_terminal_writes_the_tangents_note_in_plain_text(lang, want):
     """The review's four-bar (ψ 4.4°/4.0°): `dynamics` printed "осі I*_м … при ψ_max"; the terminal
     writes its neighbours' ψmax, I*м (util.markup.inline), the sheet keeps the markup."""
-    f = SimpleNamespace(tangent={"s_max": 0.0765, "s_min": 0.0693, "k": 51.8, "l": -13.8}, kl=65.5)
+    f = SimpleNamespace(tangent={"s_max": 0.0765, "s_min": 0.0693, "k": 51.8, "l": -13.8}, kl=65.5, precision=0.5)
     note = tangents_note(f, lang)
     assert "ψ_{max}" in note                                 # the sheet's markup …
     text = inline(note)                                      # … the terminal's plain text

@@ -692,15 +692,18 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
                                    step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
-    side = 1.0 if projections is None else -1.0          # the projections cross x > 0 between k and l
-    labels += [LabelRequest(complex(0.0, k), "k", side - 1j * side, TEXT, step="k"),
-               LabelRequest(complex(0.0, l), "l", side + 1j * side, TEXT, step="l")]
     xd = -9.0
+    # k over its extension line, l under its own, each halfway between the dimension line and the ΔT
+    # axis: "l" is one upright stroke, and set 2 mm beside the axis it read as a third line along
+    # it (stop 47); halfway, under the line it names, it reads as that line's letter, as k over its own
+    labels += [LabelRequest(complex(0.5 * xd, k), "k", 1j, TEXT, step="k"),
+               LabelRequest(complex(0.5 * xd, l), "l", -1j, TEXT, step="l")]
     rec.vector((xd, 0.5 * (k + l)), (xd, k), role="construction", layer=LAYER, step="kl")
     rec.vector((xd, 0.5 * (k + l)), (xd, l), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, k), (0.0, k), role="construction", layer=LAYER, step="kl")
     rec.segment((xd - 1.5, l), (0.0, l), role="construction", layer=LAYER, step="kl")
-    y_kl = 0.5 * (k + l) - 1.2 if projections is None else l - 5.5    # the ΔT projections pass between k and l
+    y_kl = 0.5 * (k + l) - 1.2 if projections is None else l - 8.5    # the ΔT projections pass between k and l;
+    #                                                               under the row of the letter l (stop 47)
     rec.label((xd - 1.5, y_kl), w["kl"].format(kl=num(f.kl, lang)), size=TEXT, anchor="end", layer=LAYER,
               step="kl read")
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them), before

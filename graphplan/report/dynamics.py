@@ -14,6 +14,7 @@ from graphplan.drawing.flywheel import motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
+from graphplan.graphic.chords import read
 from graphplan.graphic.flywheel import over
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
@@ -449,6 +450,15 @@ PROTRACTOR_DEG = 5.0      # °: a tangent angle below this is laid off by its sl
 RUN_MM = 100.0            # mm: the run along the I* axis over which the slope's rise is given
 
 
+def kl_read(f) -> tuple[float, float, float]:
+    """k, l and |kl| in mm as one ruler of ``f.precision`` reads them on the ΔT axis: |kl| read whole
+    (``f.kl``, what J = μ_T·|kl|/(ω_m²·δ) takes), k read from the I* axis, and l laid off |kl| below
+    it — so the printed k − l is the printed |kl| (stop 45's pump printed k = 0,715 and l = −65,1 mm
+    with |kl| = 66 mm, each rounded its own way); each within a ruler's step of the drawing's."""
+    k = float(read(f.tangent["k"], f.precision))
+    return k, k - f.kl, f.kl
+
+
 def tangents_note(f, lang: str) -> str | None:
     """How the Wittenbauer tangents are drawn where ψ is too small for a protractor (below
     ``PROTRACTOR_DEG``): by their slope tg ψ — the rise over ``RUN_MM`` of the I* axis — moved
@@ -460,15 +470,14 @@ def tangents_note(f, lang: str) -> str | None:
     mm = NB + ("мм" if uk else "mm")
     run = num(RUN_MM, lang)
     hi, lo = (num(RUN_MM * tg[key], lang, 3).replace("-", "−") for key in ("s_max", "s_min"))
-    k, l = (num(tg[key], lang, 3).replace("-", "−") for key in ("k", "l"))
-    kl = num(f.kl, lang)
+    k, l, kl = (num(v, lang).replace("-", "−") for v in kl_read(f))
     im = "I^*_м" if uk else "I^*_m"
     if uk:
         return (f"ψ замалі для транспортира: дотичні проводять за tg ψ (на {run}{mm} осі {im} підйом {hi}{mm} при "
                 f"ψ_{{max}}, {lo}{mm} при ψ_{{min}}), переносячи паралельно до дотику з кривою; на осі ΔT вони "
                 f"відтинають k{NB}={NB}{k}{mm} і l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
     return (f"ψ is too small for a protractor: the tangents are drawn by tg ψ (a rise of {hi}{mm} at ψ_{{max}}, {lo}{mm} "
-            f"at ψ_{{min}} over {run}{mm} of the {im} axis), moved parallel until they touch the curve; they cut the "
+            f"at ψ_{{min}} over {run}{mm} of the {im} axis), moved parallel to touch the curve; they cut the "
             f"ΔT axis at k{NB}={NB}{k}{mm} and l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
 
 
@@ -546,21 +555,20 @@ def motor_note(doc: dict[str, Any], lang: str) -> str | None:
     if fw["motor"] > 0:
         J = flywheel_text(fw["motor"], lang, flywheel_decimals(doc))
         if uk:
-            return (f"Чому маховик, коли двигун вибрано за піком: правило {rule} (середня {md}·ω_m = {mean} {kw}) "
-                    f"лише дає двигуну подолати пікове навантаження, а нерівномірність ходу визначає інерція — момент "
-                    f"двигуна M(ω) зростає лише зі спадом ω — тож для δ = {d} і з цим двигуном потрібен маховик "
-                    f"{J} кг·м²")
-        return (f"Why a flywheel when the motor is sized by the peak: the rule {rule} (the mean {md}·ω_m = {mean} {kw}) "
-                f"only lets the motor carry the peak load, while how evenly the crank turns is set by the inertia — the "
-                f"motor's M(ω) grows only as ω falls — so δ = {d} still needs a {J} kg·m² flywheel with this motor")
+            return (f"Чому маховик, коли двигун вибрано за піком: {rule} (середня ω_m·{md} = {mean} {kw}) — лише "
+                    f"для піку навантаження; рівномірність ходу дає інерція (M(ω) двигуна росте лише зі спадом ω): "
+                    f"для δ = {d} з цим двигуном — {J} кг·м²")
+        return (f"Why a flywheel with a motor sized by the peak: {rule} (the mean ω_m·{md} = {mean} {kw}) is for the "
+                f"peak load only; the inertia keeps the speed even (M(ω) grows only as ω falls): δ = {d} needs "
+                f"{J} kg·m² with this motor")
     dm = f"{motor_delta(lang)} = {num(m['motion']['delta'], lang, 3)} < {d}"
     if uk:
-        return (f"Чому маховик, коли двигун вибрано за піком: правило {rule} (середня {md}·ω_m = {mean} {kw}) дає "
-                f"двигуна, чий M(ω) круто зростає зі спадом ω, тож він сам тримає {dm} — з ним маховик не потрібен; "
-                f"маховик таблиці 2 — для сталого {md}")
-    return (f"Why a flywheel when the motor is sized by the peak: the rule {rule} (the mean {md}·ω_m = {mean} {kw}) "
-            f"gives a motor whose M(ω) grows steeply as ω falls, so it holds {dm} alone — no flywheel with it; "
-            f"Table 2's flywheel is for a constant {md}")
+        return (f"Чому маховик, коли двигун вибрано за піком: {rule} (середня ω_m·{md} = {mean} {kw}) дає двигун, "
+                f"чий M(ω) круто росте зі спадом ω: він сам тримає {dm} — з ним маховик не потрібен; маховик "
+                f"таблиці 2 — для сталого {md}")
+    return (f"Why a flywheel when the motor is sized by the peak: {rule} (the mean ω_m·{md} = {mean} {kw}) gives a "
+            f"motor whose M(ω) grows steeply as ω falls: it holds {dm} alone — no flywheel with it; Table 2's "
+            f"flywheel is for a constant {md}")
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------

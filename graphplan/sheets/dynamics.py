@@ -196,9 +196,9 @@ def motor_table(doc: dict, lang: str) -> Record:
     # every value right-aligned, pairs and the characteristic too (stop 46: 1,5 at the right under
     # 750 / 698 centred read as two columns)
     rec = table(rows, [48.0, 40.0], row_h=6.0, size=2.5, title=w["motor"], align=["middle", "end"])
-    # why a flywheel beside a motor sized by the peak (review 13 #18) is said by the terminal's
-    # `dynamics` (report.dynamics.motor_note), not under this table: its 4–6 lines cost the shaper's
-    # A1 dynamics its one sheet (3 sheets, the first holding one drawing)
+    # why a flywheel beside a motor sized by the peak (review 13 #18) is said in the notes where the
+    # band's nook holds it (``with_motor``), not under this table: its 4–6 lines here cost the
+    # shaper's A1 dynamics its one sheet
     said = None
     if said:
         x0, y0, x1, _ = rec.bounds()
@@ -221,10 +221,12 @@ def closure(c: float, lang: str) -> str:
     return "" if abs(c) < CLOSURE_FLOOR else "; " + WORDS[lang]["open"].format(c=num(c, lang, 2))
 
 
-def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> Record:
+def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, motor: bool = False) -> Record:
     """The scales, the construction's numbers with their symbols typeset, the convention of φ, the
     flywheel (0 and why where none is needed), the motor against the power rule and the warnings;
-    in a set whose energy–mass diagram reads |kl| short of the A1 sheet's, why (``short``)."""
+    in a set whose energy–mass diagram reads |kl| short of the A1 sheet's, why (``short``); with
+    ``motor``, why a flywheel beside a motor sized by the peak (report.dynamics ``motor_note``: the
+    sheet says it where the band's nook holds it, ``with_motor``; the terminal always)."""
     w = WORDS[lang]
     uk = lang == "uk"
     mm = "мм" if uk else "mm"
@@ -263,6 +265,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None) -> 
     if m.get("underpowered"):
         said.append(w["mark"] + w["weak"].format(name=m["name"] if uk else latin(m["name"]), p=fmt(m["power_kW"], lang),
                                                  need=fmt(m["power_needed_kW"], lang)))
+    if motor:                              # why a flywheel beside a motor sized by the peak
+        said += [line for line in (motor_note(doc, lang),) if line]
     lines += said                          # each a line the note block wraps to the column (once)
     for en, uk_text in f.dyn.warnings:
         if "no flywheel is needed" in en or "below the power rule" in en:   # said above in full
@@ -445,6 +449,15 @@ def nooks(boxes: dict[str, tuple]) -> list[tuple[float, float, float, float]]:
     out = [(x0, y0, min(ix0, wx0 if ey0 - GAP > wy0 else ix0) - GAP, ey0 - GAP),
            (x0, y0, ix0 - GAP, min(ey0, wy0) - GAP)]
     return [n for k, n in enumerate(out) if n[2] > x0 and n[3] > y0 and n not in out[:k]]
+
+
+def with_motor(lines: list[str], fuller: list[str], height: float, width: float) -> list[str]:
+    """The notes' lines with the motor's sentence (``fuller``: ``notes(…, motor=True)``) where they
+    still fit the nook the notes stand in (``height`` × ``width`` mm: the construction chose it for
+    the notes without that sentence, so the sheet keeps its composition), else ``lines`` — the
+    sentence said where there is room (stop 47's six-bar: ~200 × 75 mm empty under the notes), as
+    the terminal's ``dynamics`` always says it."""
+    return fuller if notes_height([fuller], width) <= height + 1e-9 else lines
 
 
 def nook_for(boxes: dict[str, tuple], lines: list[str], slack: float = 0.0):
@@ -1186,7 +1199,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             at = next(k for k, page in enumerate(laid) if any(leaf.name == "band" for leaf, _ in page))
             band_box = next(b for leaf, b in laid[at] if leaf.name == "band")
             dx, dy = _band_shift(boxes, band_box)
-            (_, _, n1, n3), nw = nook
+            (_, n0, n1, n3), nw = nook
+            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0, nw)
             nrec = note_block(note_lines, nw)
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
             pages[at].append(Placed("notes", top_left(nrec, nb), nb))
@@ -1205,7 +1219,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             got = nook_for(boxes, note_lines, slack)
             if got is None:                          # (``construction`` found it holds them) the lowest
                 got = (nooks(boxes)[-1], nooks(boxes)[-1][2] - nooks(boxes)[-1][0] + max(slack, 0.0))
-            (_, _, n1, n3), nw = got
+            (_, n0, n1, n3), nw = got
+            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0, nw)
             nrec = note_block(note_lines, nw)          # from the left side of the band's box
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
         else:

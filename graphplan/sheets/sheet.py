@@ -113,21 +113,105 @@ def _key(kind: str, scene, f, options) -> tuple:
             opts.precision, opts.lang or "uk")
 
 
+def cache_folder():
+    """Where sheet counts are kept between processes: ``$GRAPHPLAN_CACHE`` (empty, "0" or "off":
+    nowhere), else ``$XDG_CACHE_HOME/graphplan``, else ``~/.cache/graphplan``."""
+    import os
+    from pathlib import Path
+    said = os.environ.get("GRAPHPLAN_CACHE")
+    if said is not None:
+        return None if said.strip().lower() in ("", "0", "off", "no") else Path(said)
+    home = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(home) / "graphplan"
+
+
+def _code_digest() -> str:
+    """A digest of the package as it runs — every file of graphplan/ (the code, the fonts' metrics,
+    the motors' catalogue) and the numeric libraries' versions: a count kept on disk is read back
+    only by the very code that composed it."""
+    global _DIGEST
+    if _DIGEST is None:
+        import hashlib
+        from pathlib import Path
+
+        import numpy
+        import scipy
+        import graphplan
+        h = hashlib.sha256(f"{numpy.__version__} {scipy.__version__}".encode())
+        root = Path(graphplan.__file__).parent
+        for path in sorted(p for p in root.rglob("*") if p.is_file() and "__pycache__" not in p.parts
+                           and p.suffix not in (".pyc", ".pyo")):
+            h.update(str(path.relative_to(root)).encode())
+            h.update(path.read_bytes())
+        _DIGEST = h.hexdigest()
+    return _DIGEST
+
+
+_DIGEST: str | None = None
+
+
+def _disk_path(key: tuple):
+    folder = cache_folder()
+    if folder is None:
+        return None
+    import hashlib
+    return folder / "pages" / (hashlib.sha256(repr((_code_digest(), key)).encode()).hexdigest() + ".txt")
+
+
+def _read_disk(key: tuple) -> int | None:
+    """The count kept on disk for ``key`` by this very code, None when none is (or it cannot be read)."""
+    path = _disk_path(key)
+    try:
+        return int(path.read_text()) if path is not None else None
+    except (OSError, ValueError):
+        return None
+
+
+def _write_disk(key: tuple, n: int) -> None:
+    """Keep the count on disk (written whole, then renamed: a reader never sees half a file); a
+    folder that cannot be written is no error — the count is composed again next time."""
+    import os
+    path = _disk_path(key)
+    if path is None:
+        return
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(str(n))
+        os.replace(tmp, path)
+    except OSError:
+        pass
+
+
+def remember_pages(key: tuple, n: int) -> None:
+    """The kind's sheet count, in this process (a few dozen kept) and on disk."""
+    if key not in _PAGES and len(_PAGES) >= 64:
+        _PAGES.pop(next(iter(_PAGES)))
+    if _PAGES.get(key) != n:
+        _PAGES[key] = n
+        _write_disk(key, n)
+
+
 def pages_of(kind: str, scene, f, options) -> int:
     """How many sheets the kind's document takes on the format ``f``: one on A1 (every kind
     composes on one A1 sheet), else counted by composing it in the sheet's own language (remembered
     per scene, format, options and language: the English notes may wrap to more lines and flow a
     document onto one more sheet — review 11's compressor: dynamics 3 A3 sheets in Ukrainian, 4 in
-    English, so the set printed "Sheets 11" on kinematics and forces, "of 12" on dynamics)."""
+    English, so the set printed "Sheets 11" on kinematics and forces, "of 12" on dynamics).
+    Composing a set takes long (stop 47's six-bar: its kinematics and forces A2 sets ~45 s of CPU,
+    for the dynamics set's numbers only), so the count is also kept on disk (``cache_folder``),
+    read back only by the same code for the same scene: ``graphplan serve``'s workers and later
+    runs number a set without composing the other documents again."""
     if f.name == "A1":
         return 1
     key = _key(kind, scene, f, options)
     if key not in _PAGES:
-        opts = options_of(options)
-        if len(_PAGES) >= 64:
-            _PAGES.pop(next(iter(_PAGES)))
-        _PAGES[key] = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision,
-                                                           opts.lang or "uk", kind)).pages)
+        n = _read_disk(key)
+        if n is None:
+            opts = options_of(options)
+            n = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision,
+                                                     opts.lang or "uk", kind)).pages)
+        remember_pages(key, n)
     return _PAGES[key]
 
 
@@ -141,7 +225,7 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
     def wrapper(scene, f, options) -> Sheet:
         sheet = build(scene, f, options)
         if f.name != "A1":                   # the count the other documents' sheets read: this one's own
-            _PAGES[_key(kind, scene, f, options)] = len(sheet.pages)
+            remember_pages(_key(kind, scene, f, options), len(sheet.pages))
         kinds = kinds_of(scene, kind)
         first, total = 1, 0
         for k in kinds:
