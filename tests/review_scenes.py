@@ -2128,3 +2128,96 @@ planets = 3
 module = 0.0025
 omega = 120.0
 '''
+
+
+LINK47 = '''# Stop 47 (the lead's check): an offset crank-slider O-A-B (a horizontal compressor slider B) whose
+# connecting rod's point C drives a rocker O2D through the rod CD (I(0-1) -> II(2-3) RRP -> II(4-5) RRR),
+# the crank clockwise; dynamics to a 1000-rpm motor.
+title = "Шестиланковий механізм компресора з коромислом"
+title_en = "Six-bar compressor mechanism with a rocker"
+designation = "ТММ.КМ.47.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-47"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O2 = [0.16, 0.22]
+
+[frame.guides]
+x = { through = [0, -0.02], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.06
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "ABC"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+shape = { C = [0.1, 0.05] }
+points = { S2 = 0.4 }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 6
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.18
+points = { S4 = 0.5 }
+mass = 2.5
+inertia = 0.008
+
+[[link]]
+name = "O2D"
+number = 5
+joints = ["O2", "D"]
+length = 0.12
+points = { S5 = 0.5 }
+mass = 3
+inertia = 0.006
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+output = "B"
+start = "max"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.8
+synchronous_rpm = 1000
+'''

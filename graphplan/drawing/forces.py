@@ -131,8 +131,13 @@ COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most thi
 def arm_symbol(name: str) -> str:
     """The arm of a force as the lab letters it (markup): h with the force's name below —
     G2 → h_{G2}, Φ2 → h_{Φ2}, R43 → h_{R43}, a couple's pair force on the lever M^Φ_2' → h_{MΦ2'};
-    the terminal writes the same pair as G₂·h."""
-    return "h_{" + "".join(c for c in name if c not in "_^{}\\") + "}"
+    the terminal writes the same pair as G₂·h. A load named by its point keeps its own index one
+    level lower, P_B → h_{P_B} (h with P_B below, B an index's index: markup.runs), not h_{PB} with
+    B flat beside P as if it were a second letter (stop 47: the lever's "h_{Φ3,PB}")."""
+    flat = "".join(c for c in name if c not in "_^{}\\")
+    if name.startswith("P_") and name != "P_b" and flat[1:].isalnum():
+        return "h_{P_" + flat[1:] + "}"
+    return "h_{" + flat + "}"
 
 
 def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -> tuple[float, float]:

@@ -1,0 +1,82 @@
+"""Stop 47 (the lead's six-bar LINK47: an offset crank-slider O-A-B whose rod's point C drives a
+rocker O2D; I(0-1) -> II(2-3) RRP -> II(4-5) RRR, P_B on the working stroke). The truth here is the
+physics, not the drawing: the outer group II(4-5) is solved before the slider's group, so its
+reactions cannot depend on P_B at all — computed again with P_B three times as large."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import scene_study
+from review_scenes import LINK47
+
+
+SHEET_MM = 110.0    # about the A1 sheet's top row of hodographs (R24 at μR = 1 N/mm)
+
+
+@pytest.fixture(scope="module")
+def turns():
+    from graphplan.drawing import charts
+    heavy = LINK47.replace("magnitude = 1500", "magnitude = 4500", 1)
+    assert heavy != LINK47
+    return charts.turn(scene_study(LINK47)), charts.turn(scene_study(heavy))
+
+
+def _dependence(turns, key: str) -> float:
+    """How far (N, over the turn) the reaction moves when P_B is tripled."""
+    a, b = turns
+    return float(np.max(np.abs(a.ks.reactions[key].force - b.ks.reactions[key].force)))
+
+
+@pytest.mark.parametrize("key", ["R24", "R45", "R05"])
+def test_no_jump_drawn_or_said_where_the_reaction_does_not_carry_pb(turns, key):
+    """R24, R45, R05 do not change with P_B (the physics); their hodographs then draw no dashed
+    "jump" and say none ("пунктир — стрибок від P_B" stood under all three, their ordinary
+    0.4–0.9 N step at the stroke's change drawn dashed), in either language."""
+    from graphplan.drawing import charts
+    assert _dependence(turns, key) < 1e-6
+    for lang in ("uk", "en"):
+        rec = charts.hodograph_record(turns[0], key, size=SHEET_MM, lang=lang)
+        assert not [q for q in rec.items if "jump" in (q.step or "")], (key, lang)
+        words = " ".join(q.text or "" for q in rec.items if q.kind == "text")
+        assert "стрибок" not in words and "jump" not in words, (key, lang, words)
+
+
+@pytest.mark.parametrize("key", ["R12", "R23", "R01"])
+def test_the_jump_drawn_and_said_where_the_reaction_carries_pb(turns, key):
+    """R12, R23, R01 move by P_B's own size where it switches (the physics: tripling P_B moves
+    them by 2 × 1500 N on the working stroke); their hodographs draw the jump dashed and name P_B."""
+    from graphplan.drawing import charts
+    assert _dependence(turns, key) == pytest.approx(3000.0, rel=0.05)
+    rec = charts.hodograph_record(turns[0], key, lang="uk")
+    assert [q for q in rec.items if "jump" in (q.step or "")], key
+    words = " ".join(q.text or "" for q in rec.items if q.kind == "text")
+    assert "стрибок від P_{B}" in words or "стрибок від P_B" in words, words
+
+
+@pytest.fixture(scope="module")
+def lever():
+    from graphplan.drawing.forces import lever_record
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    fp = sf.ForceDrafter(scene_study(LINK47), SheetOptions(precision=0.5, sheet="forces")).fp()
+    return fp, lever_record(fp, "uk")
+
+
+def test_the_slider_loads_arm_keeps_p_bs_index_below_p(lever):
+    """Φ3 and P_B act at b along one line (the slider's guide: both horizontal — the exact
+    directions, read off the lever's terms), so the lever draws one arm for both; its name sets
+    P_B's B as an index of P (a level below P, as Φ3's 3 is below Φ), not flat beside it ("h_{Φ3,PB}"
+    read as a force named PB)."""
+    from graphplan.util.markup import runs
+    fp, rec = lever
+    terms = {t.name: t for t in fp.lever.terms}
+    assert {"Φ3", "P_B"} <= set(terms)
+    names = [q.text for q in rec.items if q.kind == "text" and q.text.startswith("h_{") and "P" in q.text]
+    assert len(names) == 1, names
+    levels = [(r.text, r.level) for r in runs(names[0])]
+    p_at = next(k for k, (t, lv) in enumerate(levels) if t.endswith("P"))
+    assert levels[p_at][1] == -1 and levels[p_at + 1] == ("B", -2), levels
+    if "Φ" in names[0]:
+        phi = next(k for k, (t, _) in enumerate(levels) if t.endswith("Φ"))
+        assert levels[phi + 1] == ("3", -2), levels
