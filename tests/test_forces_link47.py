@@ -80,3 +80,28 @@ def test_the_slider_loads_arm_keeps_p_bs_index_below_p(lever):
     if "Φ" in names[0]:
         phi = next(k for k, (t, _) in enumerate(levels) if t.endswith("Φ"))
         assert levels[phi + 1] == ("3", -2), levels
+
+
+def test_two_arms_the_ruler_cannot_part_get_one_name(lever):
+    """Group II(4-5): G5 and Φ5 both act at S5 (G5 vertical, Φ5 against a_S5), their lines 1–2°
+    apart, so their arms about D — computed here from the points and the loads' directions — are
+    one line to the ruler (feet < 1 mm apart); the group names that line once, with both forces
+    (h_{G5,Φ5}), not twice ("h_{Φ5}" stood 34 mm off on a leader) — and every other arm once."""
+    from graphplan.drawing.forces import group_record
+    fp, _ = lever
+    gp = next(g for g in fp.groups if g.label == "II(4-5)")
+    mu = gp.mu_l
+    d = gp.points["D"]
+    loads = {f.name: f for f in gp.forces if f.name in ("G5", "Φ5")}
+    feet = []
+    for f in loads.values():
+        u = f.force / abs(f.force)
+        s = f.at / mu
+        feet.append(s + ((d - s) * u.conjugate()).real * u)        # the foot of the perpendicular from D
+    assert abs(feet[0] - feet[1]) < 1.0, feet
+    rec = group_record(fp, gp, "uk")
+    names = [q.text for q in rec.items if q.kind == "text" and q.text.startswith("h_{")]
+    parts = [n for q in names for n in q[3:-1].split(",")]
+    assert sorted(parts) == sorted(set(parts)), names                  # each force's arm named once
+    both = [q for q in names if {"G5", "Φ5"} <= set(q[3:-1].split(","))]
+    assert len(both) == 1, names
