@@ -105,3 +105,15 @@ def test_two_arms_the_ruler_cannot_part_get_one_name(lever):
     assert sorted(parts) == sorted(set(parts)), names                  # each force's arm named once
     both = [q for q in names if {"G5", "Φ5"} <= set(q[3:-1].split(","))]
     assert len(both) == 1, names
+
+
+def test_the_lever_names_g5_and_phi5s_one_arm_once(lever):
+    """On the lever G5 and Φ5 (turned with the plan) again leave s5 along lines ~1.4° apart: their
+    arms from the pole end under 1 mm apart (measured on the drawn arm segments), one line to the
+    ruler, named once with both forces."""
+    fp, rec = lever
+    feet = {p.text.rsplit(" to ", 1)[1]: complex(*p.points[1]) for p in rec.items
+            if p.kind == "segment" and p.text.startswith("h_{") and " mm to " in p.text}
+    assert abs(feet["G5"] - feet["Φ5"]) < 1.0, feet
+    names = [q.text for q in rec.items if q.kind == "text" and q.text.startswith("h_{")]
+    assert len([q for q in names if {"G5", "Φ5"} <= set(q[3:-1].split(","))]) == 1, names

@@ -1593,7 +1593,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             # the arm h from the pole to the force's line, lettered as on the groups (h_{G2})
             rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step,
                         text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
-            key = next((k for k in arm_feet if abs(k - foot) < 0.3), foot)
+            key = next((k for k in arm_feet if abs(k - foot) < ONE_ARM_MM), foot)   # one line to the ruler
             arm_feet.setdefault(key, []).append(t.name)
             lo, hi = sorted((dot(tail - z, u), dot(tip - z, u)))
             at = dot(foot - z, u)
