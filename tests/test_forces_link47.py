@@ -117,3 +117,29 @@ def test_the_lever_names_g5_and_phi5s_one_arm_once(lever):
     assert abs(feet["G5"] - feet["Φ5"]) < 1.0, feet
     names = [q.text for q in rec.items if q.kind == "text" and q.text.startswith("h_{")]
     assert len([q for q in names if {"G5", "Φ5"} <= set(q[3:-1].split(","))]) == 1, names
+
+
+def test_no_sheet_for_the_notes_alone():
+    """The set's packer (forceset.pack): where the tables fill their sheet and the notes find no
+    room by its title block, the notes go to an earlier sheet with room for them — not to a sheet
+    of their own (LINK47's A3 set ended with a sheet holding twelve lines of notes and nothing
+    else). Sizes here are boxes (mm), the sheet a real A3 with its title blocks."""
+    from graphplan.drawing.layout import Leaf
+    from graphplan.sheets.compose import field_of, keep_out, later_keep
+    from graphplan.sheets.form import form
+    from graphplan.sheets.forceset import pack
+    f = form("A3")
+    x0, y0, x1, y1 = field_of(f)
+    W, H = x1 - x0, y1 - y0
+    units = [[Leaf("scheme 0", 0.5 * W, 0.4 * H)]]                  # a small drawing: sheet 1 mostly free
+    tables = [Leaf("table 1", W - 1.0, H - 40.0)]                   # the tables fill sheet 2
+    notes = Leaf("notes", 150.0, 60.0)
+    pages = pack(units, tables, notes, field_of(f), keep_out(f), later_keep(f))
+    assert pages is not None and len(pages) == 2, pages
+    where = {s.node.name: k for k, page in enumerate(pages) for s in page}
+    assert where["table 1"] == 1 and where["notes"] == 0, where
+    for page in pages:                                                # nothing overlaps on a sheet
+        for i, a in enumerate(page):
+            for b in page[i + 1:]:
+                assert (a.x + a.w <= b.x + 1e-6 or b.x + b.w <= a.x + 1e-6
+                        or a.d + a.h <= b.d + 1e-6 or b.d + b.h <= a.d + 1e-6), (a.node.name, b.node.name)
