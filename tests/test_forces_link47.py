@@ -143,3 +143,34 @@ def test_no_sheet_for_the_notes_alone():
             for b in page[i + 1:]:
                 assert (a.x + a.w <= b.x + 1e-6 or b.x + b.w <= a.x + 1e-6
                         or a.d + a.h <= b.d + 1e-6 or b.d + b.h <= a.d + 1e-6), (a.node.name, b.node.name)
+
+
+@pytest.mark.parametrize("key", ["R34", "R05", "R12", "R01"])
+def test_watt_reactions_jump_with_m5_and_say_so(key):
+    """WATT47 (frc47's own check: a Watt six-bar, two RRR dyads, no slider; M5 = 60 N·m against
+    the output rocker on its working stroke). M5 acts on the last group, so every reaction carries
+    it (the physics: tripling M5 moves each reaction); each hodograph draws the jump dashed and
+    names M_5 — and no P, there being no force load."""
+    from graphplan.drawing import charts
+    a, b = _watt_turns()
+    moved = float(np.max(np.abs(a.ks.reactions[key].force - b.ks.reactions[key].force)))
+    assert moved > 10.0, moved
+    rec = charts.hodograph_record(a, key, size=SHEET_MM, lang="en")
+    assert [q for q in rec.items if "jump" in (q.step or "")], key
+    words = " ".join(q.text or "" for q in rec.items if q.kind == "text")
+    assert "jump due to M_{5}" in words or "jump due to M_5" in words, words
+    assert "P_" not in words, words
+
+
+_WATT: list = []
+
+
+def _watt_turns():
+    """WATT47's turn, and again with M5 three times as large (computed once per module)."""
+    if not _WATT:
+        from graphplan.drawing import charts
+        from review_scenes import WATT47
+        heavy = WATT47.replace("magnitude = 60", "magnitude = 180", 1)
+        assert heavy != WATT47
+        _WATT.extend([charts.turn(scene_study(WATT47)), charts.turn(scene_study(heavy))])
+    return _WATT
