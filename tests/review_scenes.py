@@ -2451,3 +2451,95 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+WATT47 = '''# Stop 47 (frc47's own check): a Watt six-bar of a swing-feed drive — a crank-rocker four-bar O1ABO2 (RRR)
+# whose rocker's extension O2C drives an output rocker O3D through the rod CD (I(0-1) -> II(2-3) RRR ->
+# II(4-5) RRR, no slider); crank counter-clockwise; a resistance moment on the output rocker on its working stroke.
+title = "Шестиланковий механізм Ватта з двома коромислами"
+title_en = "Watt six-bar with two rockers"
+designation = "ТММ.ВТ.47.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-47"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.21, 0.06]
+O3 = [0.04, 0.46]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.02
+
+[[link]]
+name = "O2BC"
+number = 3
+joints = ["O2", "B"]
+length = 0.14
+points = { C = 1.5, S3 = 0.6 }
+mass = 4.5
+inertia = 0.03
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.20
+points = { S4 = 0.5 }
+mass = 2.5
+inertia = 0.009
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.15
+points = { S5 = 0.5 }
+mass = 3.5
+inertia = 0.012
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+output = "O3D"
+force_phi_deg = 75
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

@@ -98,6 +98,7 @@ def test_the_crank_group_shows_the_balancing_moment_with_its_sense(sheet):
 
 
 def _arms_on_their_lines(records) -> None:
+    from graphplan.drawing.forces import arm_symbol
     for rec in records:
         arms = [p for p in rec.items if p.kind == "segment" and p.text.startswith("h")]
         forces = {v.text: v for v in _vectors(rec)}
@@ -105,7 +106,7 @@ def _arms_on_their_lines(records) -> None:
             m = re.match(r"h_\{(.+)\} = ([0-9.]+) mm to (.+)$", arm.text)
             assert m, arm.text
             h, name = float(m.group(2)), m.group(3)
-            assert m.group(1) == name.replace("_", ""), arm.text     # lettered by its own force: h_{G2}
+            assert m.group(1) == arm_symbol(name)[3:-1], arm.text     # lettered by its own force: h_{G2}
             (ax, ay), (fx, fy) = arm.points
             (px, py), (qx, qy) = forces[name].points
             ux, uy = qx - px, qy - py

@@ -95,7 +95,7 @@ def test_the_moment_is_drawn_as_an_arc_named_with_its_value(sixbar):
 
 def test_the_compressors_lever_draws_phi3_and_p_b_apart():
     """REV11_A: Φ3 and P_B at b are collinear and opposite; on the lever no two arrows read as
-    one, and both keep their one arm h_{Φ3,PB} (its foot on their common line)."""
+    one, and both keep their one arm h_{Φ3,P_B} (its foot on their common line)."""
     from graphplan.drawing.forces import lever_record
     fp = _fp(REV11_A, 0.5)
     rec = lever_record(fp, "en")

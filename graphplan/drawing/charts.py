@@ -93,6 +93,26 @@ def _cuts(t: Turn) -> list[int]:
     return list(_load_changes(t))
 
 
+JUMP_RATIO = 3.0     # a step this many times its neighbours' (and the turn's typical one) is a jump
+
+
+def _jump_samples(t: Turn, f: np.ndarray) -> list[int]:
+    """The load changes' samples k (``_load_changes``) where the reaction ``f`` itself jumps: its
+    step f[k] − f[k − 1] more than ``JUMP_RATIO`` times the larger of its two neighbouring steps
+    and of the turn's median step. A reaction the changed load does not reach (the rocker six-bar's
+    R24, R45, R05 — group II(4-5) is solved before the slider's group carries P_B) steps there as
+    anywhere else: no jump to draw or to caption (stop 47: "dashed — the jump due to P_B" under
+    hodographs with no jump, their ordinary 0.9 mm step drawn dashed)."""
+    n = len(f)
+    if n < 3:
+        return []
+    step = np.abs(f - np.roll(f, 1))
+    typical = float(np.median(step))
+    floor = 1e-9 * (1.0 + float(np.max(np.abs(f))))
+    return [k for k in _load_changes(t)
+            if step[k] > JUMP_RATIO * max(typical, float(step[(k - 1) % n]), float(step[(k + 1) % n])) + floor]
+
+
 def _pieces(t: Turn, values: np.ndarray, cuts: list[int] | None = None) -> list[tuple[np.ndarray, np.ndarray]]:
     """Split a closed curve where an external load switches on or off or reverses (the reactions
     jump; ``_cuts``), or at ``cuts``: (indices, values) pieces, closed over the turn."""
@@ -161,7 +181,7 @@ def hodograph_figure(t: Turn, title: str = "", lang: str = "uk"):
     for n, key in enumerate(keys):
         ax = fig.add_subplot(rows, cols, n + 1)
         f = t.ks.reactions[key].force
-        for idx, z in _pieces(t, f):
+        for idx, z in _pieces(t, f, _jump_samples(t, f)):
             ax.plot(z.real, z.imag, color="black", lw=1.0)
         for k, pos in t.position_index():
             ax.plot(f[k].real, f[k].imag, "o", ms=2.5, color="black")
@@ -430,13 +450,14 @@ def _hodograph_lines(rec: Record, t: Turn, f: np.ndarray, mu: float, step: str,
                      box: tuple[float, float, float, float] | None = None) -> int:
     """The hodograph's curve at μ (within ``box``, mm, where given) and the dashed jumps where the
     resistance switches on or off; returns the count of jumps drawn."""
-    pieces = _pieces(t, f)
+    cuts = _jump_samples(t, f)
+    pieces = _pieces(t, f, cuts)
     for _, z in pieces:
         for part in ([list(zip((z.real / mu).tolist(), (z.imag / mu).tolist()))] if box is None
                      else _clipped(z / mu, box)):
             rec.add("polyline", part, role="curve", layer="diagrams", step=step)
     jumps = 0
-    if len(pieces) > 1:
+    if cuts:                # one jump leaves one piece, open between its ends (a press's P_E ramping up, cut off)
         # where the resistance switches on or off the reaction jumps: the two ends joined by a thin
         # dashed line, so that the gap reads as the jump (the caption says so), not as a curve left open
         for (_, z), (_, z_next) in zip(pieces, pieces[1:] + pieces[:1]):
@@ -457,11 +478,8 @@ def _switching(t: Turn, f: np.ndarray, lang: str) -> list[str]:
     piston the reaction does not carry (review 13: a V-twin's constant P_B named under R45's jump
     from P_C); the pump six-bar's R12 jumps from P_B at the strokes' changes and from M5 at the
     rocker's extremes (review 45 #3). Where no load changes there, every external one is named."""
-    step = np.abs(np.diff(np.r_[f, f[:1]]))
-    typical = float(np.median(step)) if len(step) else 0.0
     changes = _load_changes(t)
-    jumps = [k for k in changes if abs(f[k] - f[k - 1]) > 3.0 * typical + 1e-9 * (1.0 + float(np.max(np.abs(f))))]
-    named = [ld for k in jumps for ld in changes[k]]
+    named = [ld for k in _jump_samples(t, f) for ld in changes[k]]
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
     order = {id(ld): i for i, ld in enumerate(ext)}          # in the scene's order
     named = sorted({id(ld): ld for ld in named}.values(), key=lambda ld: order[id(ld)])
@@ -651,7 +669,7 @@ def _hodograph_record(t: Turn, key: str, size: float, lang: str, say_jump: bool,
     shared: list[str] = []
     # the field the hodograph already takes: its axes' extent, as wide as the lettering under it
     under = [f"{force_symbol(key, lang)}: μ_R = {num(mu_r, lang)} {unit('N/mm', lang)}"]
-    if say_jump and len(_pieces(t, f)) > 1:
+    if say_jump and _jump_samples(t, f):
         under.append(word("fs jump", lang, what=", ".join(_switching(t, f, lang))))
     wide = max(Primitive("text", ((0.0, 0.0),), text=plain(u), size=2.5).ink()[2] for u in under)
     field = (x0, y0, max(x1, x0 + wide), y1)

@@ -131,8 +131,13 @@ COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most thi
 def arm_symbol(name: str) -> str:
     """The arm of a force as the lab letters it (markup): h with the force's name below —
     G2 → h_{G2}, Φ2 → h_{Φ2}, R43 → h_{R43}, a couple's pair force on the lever M^Φ_2' → h_{MΦ2'};
-    the terminal writes the same pair as G₂·h."""
-    return "h_{" + "".join(c for c in name if c not in "_^{}\\") + "}"
+    the terminal writes the same pair as G₂·h. A load named by its point keeps its own index one
+    level lower, P_B → h_{P_B} (h with P_B below, B an index's index: markup.runs), not h_{PB} with
+    B flat beside P as if it were a second letter (stop 47: the lever's "h_{Φ3,PB}")."""
+    flat = "".join(c for c in name if c not in "_^{}\\")
+    if name.startswith("P_") and name != "P_b" and flat[1:].isalnum():
+        return "h_{P_" + flat[1:] + "}"
+    return "h_{" + flat + "}"
 
 
 def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -> tuple[float, float]:
@@ -770,9 +775,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
-    for (about, t, _), shift in zip(arms, shifts):
-        mid = 0.5 * (about + t.foot) + shift
-        lab.place(mid, arm_symbol(t.name), LETTER, 1j * _unit(t.foot - about), step)
+    for mid, text, side in arm_names(arms, shifts):
+        lab.place(mid, text, LETTER, side, step)
     for mark in slide_arms:
         if mark is not None:
             lab.place(mark[0], arm_symbol(mark[1]), LETTER, mark[2], step)
@@ -817,6 +821,29 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 continue
             break
     return rec
+
+
+ONE_ARM_MM = 1.0    # two arms from one point whose feet lie this near (two ruler steps) are drawn as one line
+
+
+def arm_names(arms: list, shifts: list[complex]) -> list[tuple[complex, str, complex]]:
+    """Each arm's name on a group (where, text, side): h_{G2} by the middle of its arm — two arms
+    from one point whose feet the ruler cannot set apart (``ONE_ARM_MM``: the rocker's G5 and Φ5,
+    both at S5, their lines 1.4° apart, arms 29.0 mm about D, feet 0.7 mm apart) read as one line and
+    get one name, both forces in it (h_{G5,Φ5}, as the lever names two forces on one line) — not
+    two names fighting for the room by one line (stop 47: "h_{Φ5}" 34 mm off on a leader)."""
+    out: list[tuple[complex, str, complex, list[complex]]] = []
+    for (about, t, _), shift in zip(arms, shifts):
+        foot = t.foot + shift
+        same = next((k for k, (_, _, _, key) in enumerate(out)
+                     if abs(key[0] - (about + shift)) < 1e-6 and abs(key[1] - foot) <= ONE_ARM_MM), None)
+        if same is None:
+            out.append((0.5 * (about + t.foot) + shift, arm_symbol(t.name), 1j * _unit(t.foot - about),
+                        [about + shift, foot]))
+        else:
+            mid, text, side, key = out[same]
+            out[same] = (mid, text[:-1] + "," + arm_symbol(t.name)[3:], side, key)
+    return [(mid, text, side) for mid, text, side, _ in out]
 
 
 ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
@@ -1566,7 +1593,7 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
             # the arm h from the pole to the force's line, lettered as on the groups (h_{G2})
             rec.segment((0.0, 0.0), _pt(foot), role="construction", layer="construction", step=step,
                         text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
-            key = next((k for k in arm_feet if abs(k - foot) < 0.3), foot)
+            key = next((k for k in arm_feet if abs(k - foot) < ONE_ARM_MM), foot)   # one line to the ruler
             arm_feet.setdefault(key, []).append(t.name)
             lo, hi = sorted((dot(tail - z, u), dot(tip - z, u)))
             at = dot(foot - z, u)

@@ -192,6 +192,10 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
             if rest:
                 pages.append(sheet(len(pages)))
         if notes is not None and not _put_notes(pages[-1], notes):
+            # not a sheet for the notes alone (LINK47's A3 set: sheet 6 of 6 held twelve lines by
+            # its title block): on the latest sheet before that has room for them
+            if any(_put_notes(page, notes) for page in reversed(pages[:-1])):
+                return True
             pages.append(sheet(len(pages)))
             return _put_notes(pages[-1], notes)
         return True

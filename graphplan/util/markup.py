@@ -87,8 +87,11 @@ def runs(text: str) -> list[Run]:
             prev = out[-1] if out else None
             stacked = prev is not None and prev.level == -level and not prev.stacked
             if level == -1 and "_" in body and not is_plain(body):     # v_{O_2}: O₂ an index's index
-                inner = runs(body)
-                out += [Run(r.text, -2 if r.level < 0 else -1, stacked and k == 0) for k, r in enumerate(inner)]
+                for k, r in enumerate(runs(body)):    # h_{Φ3,P_B}: Φ₃'s digit an index's index too
+                    if r.level == 0 and r.text[:1].isalpha() and any(ch.isdigit() for ch in r.text):
+                        out.extend(_sub_digits(r.text, stacked and k == 0))
+                    else:
+                        out.append(Run(r.text, -2 if r.level < 0 else -1, stacked and k == 0))
             elif level < 0 and body[:1].isalpha() and any(ch.isdigit() for ch in body):
                 out.extend(_sub_digits(body, stacked))
             else:
