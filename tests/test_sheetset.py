@@ -63,6 +63,45 @@ def test_a_scene_without_loads_is_a_project_of_one_sheet():
     assert "Аркуш 1" in texts and "Аркушів 1" in texts and "ТММ.03.00.001" in texts
 
 
+def test_a_document_that_flows_onto_a_second_a1_sheet_is_counted_in_the_project(monkeypatch):
+    """On A1 a document may take two sheets (stop 47's six-bar: its force analysis). The other
+    documents' "Аркушів" count it: with a compressor's (COMPRESSOR_DYN) forces stood in by a
+    two-sheet document, its kinematics sheet says 1 of 4 — before stop 47 it said "of 3", A1 being
+    taken as one sheet a document without composing it."""
+    from graphplan.graphic.record import Record
+    from graphplan.sheets import sheet as sheet_mod
+    from graphplan.sheets.compose import Sheet
+    from review_scenes import COMPRESSOR_DYN
+    st = study(loads(COMPRESSOR_DYN))
+
+    def two_sheets(scene, f, options):          # only the count matters to the others' numbers
+        return Sheet(f, Record(), more=[Sheet(f, Record())])
+
+    monkeypatch.setattr(sheet_mod, "_PAGES", {})
+    monkeypatch.setattr(sheet_mod, "RAW", dict(sheet_mod.RAW, forces=two_sheets))
+    monkeypatch.setenv("GRAPHPLAN_CACHE", "off")
+    kinds = sheet_mod.kinds_of(st, "kinematics")
+    assert kinds == ("kinematics", "forces", "dynamics"), kinds
+    kin = BUILDERS["kinematics"](st, form("A1"), SheetOptions(sheet="kinematics"))
+    assert {"Аркуш 1", "Аркушів 4"} <= set(_texts(kin))
+
+
+@pytest.mark.slow
+def test_the_six_bars_a1_sheets_are_numbered_by_their_real_count():
+    """Stop 47's six-bar (LINK47) on A1: its documents' real sheets, counted, are what every title
+    block numbers — forces 2 and 3 when it takes two, the total the sum on every first sheet."""
+    from review_scenes import LINK47
+    st = study(loads(LINK47))
+    docs = {k: BUILDERS[k](st, form("A1"), SheetOptions(sheet=k)) for k in ("kinematics", "forces", "dynamics")}
+    total = sum(len(d.pages) for d in docs.values())
+    first = 1
+    for kind, doc in docs.items():
+        texts = _texts(doc)
+        assert {f"Аркуш {first}", f"Аркушів {total}"} <= set(texts), (kind, [t for t in texts if "Арк" in t])
+        for n, page in enumerate(doc.pages[1:], first + 1):
+            assert str(n) in {p.text for p in _block(page) if p.kind == "text"}
+        first += len(doc.pages)
+
 @pytest.mark.slow
 def test_an_a3_set_continues_the_numbering_on_form_2a():
     """On A3 each document is a set: its first sheet carries form 1 (185×55) with "Аркушів" the

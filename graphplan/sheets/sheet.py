@@ -193,8 +193,10 @@ def remember_pages(key: tuple, n: int) -> None:
 
 
 def pages_of(kind: str, scene, f, options) -> int:
-    """How many sheets the kind's document takes on the format ``f``: one on A1 (every kind
-    composes on one A1 sheet), else counted by composing it in the sheet's own language (remembered
+    """How many sheets the kind's document takes on the format ``f``, counted by composing it in the
+    sheet's own language — on A1 too: a document may flow onto a second A1 sheet (stop 47's six-bar:
+    its force analysis takes two, and the kinematics sheet printed "Аркушів 3" where the forces'
+    printed 4) — remembered
     per scene, format, options and language: the English notes may wrap to more lines and flow a
     document onto one more sheet — review 11's compressor: dynamics 3 A3 sheets in Ukrainian, 4 in
     English, so the set printed "Sheets 11" on kinematics and forces, "of 12" on dynamics).
@@ -202,8 +204,6 @@ def pages_of(kind: str, scene, f, options) -> int:
     for the dynamics set's numbers only), so the count is also kept on disk (``cache_folder``),
     read back only by the same code for the same scene: ``graphplan serve``'s workers and later
     runs number a set without composing the other documents again."""
-    if f.name == "A1":
-        return 1
     key = _key(kind, scene, f, options)
     if key not in _PAGES:
         n = _read_disk(key)
@@ -224,8 +224,7 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
     @functools.wraps(build)
     def wrapper(scene, f, options) -> Sheet:
         sheet = build(scene, f, options)
-        if f.name != "A1":                   # the count the other documents' sheets read: this one's own
-            remember_pages(_key(kind, scene, f, options), len(sheet.pages))
+        remember_pages(_key(kind, scene, f, options), len(sheet.pages))   # what the others' sheets read
         kinds = kinds_of(scene, kind)
         first, total = 1, 0
         for k in kinds:
