@@ -13,7 +13,8 @@ def _mask(svg: str, w: float, h: float, px_per_mm: float):
     channels), laid on white (PIL's ``alpha_composite``) and read as grey (PIL's "L", ITU-R 601-2
     luma) darker than 200 — the same integer arithmetic as writing the PNG and reading it back
     through PIL (bit for bit: tests/test_inkcheck.py), without encoding and decoding a 3364 × 2376
-    pixel PNG twice a sheet."""
+    pixel PNG twice a sheet; read a band of rows at a time (whole-sheet temporaries cost more in
+    page faults than the PNG did)."""
     import numpy as np
     from cairosvg.parser import Tree
     from cairosvg.surface import PNGSurface
@@ -23,27 +24,38 @@ def _mask(svg: str, w: float, h: float, px_per_mm: float):
     image.flush()
     width, height = image.get_width(), image.get_height()
     bgra = np.frombuffer(image.get_data(), np.uint8).reshape(height, image.get_stride() // 4, 4)[:, :width]
-    ink = _grey(bgra) < 200
+    ink = np.empty((height, width), bool)
+    for r in range(0, height, 64):
+        ink[r:r + 64] = _grey(bgra[r:r + 64]) < 200
     surface.finish()                   # frees the pixels: read before
     return ink
 
 
-def _grey(bgra):
-    """Grey levels of premultiplied BGRA pixels laid on white: cairo's ``unpremultiply_data``
-    (c·255 + a/2) / a, PIL's ``alpha_composite`` over opaque white (7 bits of precision, divisions by
-    255 rounded as ((x >> 8) + x) >> 8) and PIL's RGB → L (R·19595 + G·38470 + B·7471 + 2¹⁵) >> 16."""
+def _on_white():
+    """Each premultiplied channel value c of alpha a (table [a, c]) as PIL reads it laid on white:
+    cairo's ``unpremultiply_data`` (c·255 + a/2) / a, then PIL's ``alpha_composite`` over opaque
+    white (7 bits of precision, divisions by 255 rounded as ((x >> 8) + x) >> 8); white where a = 0."""
     import numpy as np
-    a = bgra[..., 3].astype(np.uint32)
-    some = a > 0
-    safe = np.where(some, a, 1)
-    coef1 = a * 128
-    coef2 = 255 * 128 - coef1
+    global _ON_WHITE
+    if _ON_WHITE is None:
+        a, c = np.meshgrid(np.arange(256, dtype=np.uint32), np.arange(256, dtype=np.uint32), indexing="ij")
+        safe = np.maximum(a, 1)
+        c = (c * 255 + safe // 2) // safe
+        t = c * (a * 128) + 255 * (255 * 128 - a * 128) + (0x80 << 7)
+        _ON_WHITE = np.where(a > 0, (((t >> 8) + t) >> 8) >> 7, 255).astype(np.uint32).ravel()
+    return _ON_WHITE
 
-    def over_white(c):
-        c = (bgra[..., c].astype(np.uint32) * 255 + safe // 2) // safe
-        t = c * coef1 + 255 * coef2 + (0x80 << 7)
-        return np.where(some, (((t >> 8) + t) >> 8) >> 7, 255)
-    b, g, r = over_white(0), over_white(1), over_white(2)
+
+_ON_WHITE = None
+
+
+def _grey(bgra):
+    """Grey levels of premultiplied BGRA pixels laid on white (``_on_white``), by PIL's RGB → L
+    (R·19595 + G·38470 + B·7471 + 2¹⁵) >> 16."""
+    import numpy as np
+    table = _on_white()
+    a = bgra[..., 3].astype(np.intp) << 8
+    b, g, r = (table[a | bgra[..., k]] for k in (0, 1, 2))
     return (r * 19595 + g * 38470 + b * 7471 + 0x8000) >> 16
 
 
@@ -53,7 +65,7 @@ def overprinted(svg: str, px_per_mm: float = 4.0) -> list[tuple[float, float]]:
     Word i's ink within a pixel of a line is counted over the whole sheet at once: a pixel next to
     word i's letters lies in word i's dilated blob (a blob holds its letters' neighbours) and so in
     its box — the same count as dilating the word's own letters inside its box. Other words' ink in
-    its box is the lettering's ink in the box (a summed-area table) less its own."""
+    its box is the lettering's ink in the box less its own."""
     import numpy as np
     from scipy import ndimage
     w = float(re.search(r'width="([\d.]+)mm"', svg[:3000]).group(1))
@@ -64,14 +76,11 @@ def overprinted(svg: str, px_per_mm: float = 4.0) -> list[tuple[float, float]]:
     own = np.bincount(words[letters], minlength=n + 1)
     near = lines & ndimage.binary_dilation(letters, iterations=1)
     crossed = np.bincount(words[near], minlength=n + 1)
-    inked = np.zeros((letters.shape[0] + 1, letters.shape[1] + 1), np.int64)
-    inked[1:, 1:] = letters.cumsum(0, dtype=np.int64).cumsum(1)
     out = []
     for i, sl in enumerate(ndimage.find_objects(words), 1):
         if own[i] < 4:
             continue
-        (r0, r1), (c0, c1) = (sl[0].start, sl[0].stop), (sl[1].start, sl[1].stop)
-        others = inked[r1, c1] - inked[r0, c1] - inked[r1, c0] + inked[r0, c0] - own[i]
+        others = letters[sl].sum() - own[i]
         if crossed[i] / own[i] > 0.03 or others / own[i] > 0.03:
             out.append((round(sl[1].start / px_per_mm, 1), round(h - sl[0].stop / px_per_mm, 1)))
     return out
