@@ -210,9 +210,9 @@ def test_a_base_column_reads_only_regular_files(tmp_path):
 def test_too_many_variants_are_refused_up_front(tmp_path):
     rows = "".join(f"{k},0.05,0.2\n" for k in range(100_000))
     path = table(tmp_path, "# base = {base}\nvariant,r,l\n" + rows)
-    t = time.perf_counter()
+    t = time.process_time()
     refused(["key", path, "-o", tmp_path / "keys", "--quiet"], "100000 variants", "at most")
-    assert time.perf_counter() - t < 20
+    assert time.process_time() - t < 20
     assert not (tmp_path / "keys").exists()
 
 
@@ -300,9 +300,9 @@ def test_quoted_decimal_comma_in_a_comma_table_is_read(tmp_path, key_folder):
 def test_a_million_rows_are_refused_up_front(tmp_path, key_folder):
     path = tmp_path / "student.csv"
     path.write_text("variant,position,quantity,value\n" + "01,1,v_B,7.2\n" * 1_000_000, encoding="utf-8")
-    t = time.perf_counter()
+    t = time.process_time()
     refused(["check", key_folder, path], "student table")
-    assert time.perf_counter() - t < 10
+    assert time.process_time() - t < 10
     path.write_text("variant,position,quantity,value\n" + "1,1,v,7\n" * 150_000, encoding="utf-8")
     refused(["check", key_folder, path], "rows", "at most 100000")
 
@@ -310,10 +310,10 @@ def test_a_million_rows_are_refused_up_front(tmp_path, key_folder):
 # -- sizes refused before the work ---------------------------------------------------------------
 
 def test_a_sheet_of_360_positions_is_refused_before_the_work(tmp_path):
-    t = time.perf_counter()
+    t = time.process_time()
     err = refused(["sheet", EXAMPLE, "-o", tmp_path / "s.svg", "--positions", "360"], "--positions 360",
                   "at most")
-    assert time.perf_counter() - t < 5
+    assert time.process_time() - t < 5
     assert err.count("choose fewer positions") == 1
     assert not (tmp_path / "s.svg").exists()
 
