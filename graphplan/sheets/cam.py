@@ -555,11 +555,29 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     has not, while a set has sheets to spare) — d²s/dφ² and ds/dφ on one sheet and s on the next,
     where that draws them taller; the tuple's eighth item says which (True: apart)."""
     joint = _set_sizes(sol, f, n, precision)
+    together = _diagrams_fit_alone(sol, f, n, precision, joint)
     least = _smallest_peak(sol, n, precision, joint)
-    if least >= LEGIBLE_MM:
+    if least >= LEGIBLE_MM and together:
         return joint + (False,)
     apart_ = _set_sizes(sol, f, n, precision, split=True)
-    return apart_ + (True,) if _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+    # the joint sizes where even the smallest left the three diagrams taller than a sheet (the rocking
+    # cam's A3 set: 406 mm at the smallest size, the sheet refused) are no choice: apart
+    return apart_ + (True,) if not together or _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+
+
+def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple) -> bool:
+    """Whether the three diagrams at the sizes ``sz`` (_set_sizes) stand on one sheet of ``f`` by
+    themselves, in both languages."""
+    from graphplan.drawing.cam import diagrams
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
+                  H2=sz[5], measure=False, series=sz[6])
+    region, keep = field_of(f), keep_out(f)
+    for lang in ("uk", "en"):
+        rec = captioned(diagrams(sol, g, lang), *_captions(g, sol.cam, lang)["diagrams"])
+        laid = flow([[Leaf("diagrams", *extent(Leaf("diagrams", record=rec)))]], region, keep)
+        if laid is None or len(laid) != 1:
+            return False
+    return True
 
 
 def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split: bool = False) -> tuple:
