@@ -174,3 +174,45 @@ def _watt_turns():
         assert heavy != WATT47
         _WATT.extend([charts.turn(scene_study(WATT47)), charts.turn(scene_study(heavy))])
     return _WATT
+
+
+def _overlap(a, b) -> float:
+    """The area (mm²) two boxes (x0, y0, x1, y1) share."""
+    return max(0.0, min(a[2], b[2]) - max(a[0], b[0])) * max(0.0, min(a[3], b[3]) - max(a[1], b[1]))
+
+
+@pytest.mark.slow
+def test_a1_set_hodographs_grow_into_their_sheets_room():
+    """LINK47's A1 set: sheet 2 held its six hodographs at the one-sheet series' largest size (the
+    curve's larger extent HODOGRAPH_MM × 2 = 120 mm; R12, R23, R01 110 × 25 mm slivers) over an
+    empty 650 × 170 mm band. Measured on the drawn sheets: still two sheets; no hodograph drawn
+    smaller than at that size, the largest (the grid's cells) larger; each drawing inside its sheet's field; no two drawings overlapping."""
+    from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+    from graphplan.sheets.compose import FACTORS, SheetOptions, field_of
+    from graphplan.sheets.forces import build_forces_sheet
+    from graphplan.sheets.form import form
+    st = scene_study(LINK47)
+    f = form("A1")
+    sheet = build_forces_sheet(st, f, SheetOptions(precision=0.5, lang="uk", sheet="forces"))
+    assert len(sheet.pages) == 2
+    x0, y0, x1, y1 = field_of(f)
+    hods = {pl.name: pl for page in sheet.pages for pl in page.placed if pl.name.startswith("hodograph")}
+    assert len(hods) == 6
+    from graphplan.drawing import charts
+    turn = charts.turn(st)
+    widths = []
+    for key in turn.revolute:
+        one = hodograph_record(turn, key, HODOGRAPH_MM * max(FACTORS), lang="uk").bounds()
+        got = hods[f"hodograph {key}"].record.bounds()
+        # none smaller (μR keeps to its series: R45 and R23 keep theirs, 0.4 and 15 N/mm)
+        assert got[2] - got[0] >= (one[2] - one[0]) - 1e-6, (key, got, one)
+        widths.append((got[2] - got[0], one[2] - one[0]))
+    # the largest, which sets the grid's cells, drawn larger
+    assert max(w for w, _ in widths) > 1.1 * max(w for _, w in widths), widths
+    for page in sheet.pages:
+        boxes = [pl.record.bounds() for pl in page.placed]
+        for b in boxes:
+            assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6, b
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert _overlap(a, b) < 1e-6, (a, b)

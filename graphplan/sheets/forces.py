@@ -1306,6 +1306,20 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     return replace(p, mu=mu) if mu != p.mu else p
 
 
+# a set's sheet the hodographs leave mostly empty draws them past the one-sheet series' largest
+# factor (compose.FACTORS' 2.0), by R10's next steps: LINK47's A1 sheet 2 held its six hodographs
+# at 127 × 126 mm cells (R12, R23, R01 110 × 25 mm slivers) over 650 × 170 mm left empty beneath them
+SET_HODOGRAPHS_FACTORS = (2.5, 3.2, 4.0)
+SET_HODOGRAPHS_LARGEST = SET_HODOGRAPHS_FACTORS[-1]
+
+
+def set_finer(mu: float) -> float | None:
+    """The next larger size factor's μ (1/k) of a set's hodographs beyond compose.FACTORS
+    (``SET_HODOGRAPHS_FACTORS``), None past the last."""
+    bigger = [k for k in SET_HODOGRAPHS_FACTORS if k > 1.0 / mu * (1 + 1e-9)]
+    return 1.0 / min(bigger) if bigger else None
+
+
 HODOGRAPHS_ROOM = 1.6     # a one-sheet composition's hodographs grown into the room left, up to this over their cap
 
 
@@ -1327,9 +1341,9 @@ def _grown_hodographs(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         page = next((names for names in p.where if "hodographs 0" in names), ()) if p.where else ()
         if not page or _sheet_share(_placed_leaves(dr, nat, p.mu), page, f) >= FILL_SHARE:
             return p
-        limit = FILL_LARGEST["hodographs"]
+        limit = SET_HODOGRAPHS_LARGEST
     while True:
-        nxt = Family.finer(fam, mu)
+        nxt = Family.finer(fam, mu) or (set_finer(mu) if p.shape == "set" else None)
         if nxt is None or fam.rel(nxt) > limit + 1e-9:
             break
         trial = {**leaves, "hodographs": [Leaf(x.name, *cell) for x, cell in
