@@ -1535,9 +1535,28 @@ def _arm_pieces(feet: list[complex]) -> dict[complex, tuple[complex, complex]]:
 ARM_LETTER_MM = 5.0   # a lever arm's letter anchored this far from its foot, back toward the pole
 
 
+_LEVERS: dict[tuple, Record] = {}
+_LEVERS_KEPT = 32
+
+
 def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     """The Zhukovsky lever: the velocity plan turned 90° counter-clockwise, each force at its point's
-    image, the arms from the pole, the balancing force P_b at the crank pin's image."""
+    image, the arms from the pole, the balancing force P_b at the crank pin's image. Remembered by
+    what it reads (the lever's value, the crank's pin, the language, whether sketched): a force
+    sheet's composition draws the same lever at the same μv again in its rounds."""
+    from graphplan.drawing.labels import _SKETCH
+    key = (repr(fp.lever), fp.ks.mech.crank.pin, lang, _SKETCH[-1])
+    hit = _LEVERS.get(key)
+    if hit is None:
+        hit = _lever_record(fp, lang)
+        if len(_LEVERS) >= _LEVERS_KEPT:
+            _LEVERS.pop(next(iter(_LEVERS)))
+        _LEVERS[key] = hit
+    return Record(hit.title, list(hit.items), dict(hit.scales))
+
+
+def _lever_record(fp: ForcePlans, lang: str) -> Record:
+    """``lever_record`` drawn."""
     from dataclasses import replace
     lv = fp.lever
     rec = Record(word("lever", lang), scales={"mu_v": lv.mu_v})

@@ -200,6 +200,11 @@ class ForceDrafter:
             self.memo[key] = make()
         return self.memo[key]
 
+    def _kept(self, key, make) -> list[Record]:
+        """``_once`` for a list of records, each handed out as its own copy (its own list of the
+        same immutable primitives): one drawing serves several sets of scales."""
+        return [Record(r.title, list(r.items), dict(r.scales)) for r in self._once(key, make)]
+
     def fp(self, mu_l: float | None = None, mu_F: float | None = None, mu_v: float | None = None,
            group_mu: tuple[tuple[str, float], ...] = (), plan_mu: tuple[tuple[str, float], ...] = (),
            mu_a: float | None = None):
@@ -308,9 +313,17 @@ class ForceDrafter:
             q = next(x for x in plans.positions if x.acceleration is not None)
             charts = forcecharts.records(self.turn, 1.0 / mu["charts"], lang, 1.0 / mu["hodographs"])
             names = self.names()
-            return {"scheme": [forcedraw.mechanism_record(scheme, lang)],
-                    "groups": [forcedraw.group_record(fp, gp, lang) for gp in fp.groups],
-                    "forces": [forcedraw.polygon_record(fp, gp, lang) for gp in fp.groups],
+            # the scheme, the groups and their force plans read no μv (only the lever does): drawn
+            # once for the scales they read, however the lever's scale moves in the rounds
+            from graphplan.drawing.labels import _SKETCH
+            keep = (lang, lettered, _SKETCH[-1], self.accel_mu, mu["forces"])
+            own = (mu["groups"], group_scales(mu), plan_scales(mu))
+            return {"scheme": self._kept(("scheme record", mu["scheme"]) + keep,
+                                         lambda: [forcedraw.mechanism_record(scheme, lang)]),
+                    "groups": self._kept(("group records",) + own + keep,
+                                         lambda: [forcedraw.group_record(fp, gp, lang) for gp in fp.groups]),
+                    "forces": self._kept(("polygon records",) + own + keep,
+                                         lambda: [forcedraw.polygon_record(fp, gp, lang) for gp in fp.groups]),
                     "acceleration": [acceleration_records(plans)[q.key]],
                     "lever": [forcedraw.lever_record(fp, lang)],
                     "charts": [charts[n] for n in names["charts"]],
