@@ -568,13 +568,21 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
 def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple) -> bool:
     """Whether the three diagrams at the sizes ``sz`` (_set_sizes) stand on one sheet of ``f`` by
     themselves, in both languages."""
-    from graphplan.drawing.cam import diagrams
     g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
                   H2=sz[5], measure=False, series=sz[6])
+    return _stands_alone(sol, g, f, "diagrams")
+
+
+def _stands_alone(sol, g, f: Form, name: str) -> bool:
+    """Whether the drawing ``name`` of ``g`` ("diagrams", "phase", "profile"; "av": d²s/dφ² and ds/dφ,
+    "s"), captioned, stands on one sheet of ``f`` by itself, clear of the title block, in both languages."""
+    from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
+    draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
+            "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
     region, keep = field_of(f), keep_out(f)
     for lang in ("uk", "en"):
-        rec = captioned(diagrams(sol, g, lang), *_captions(g, sol.cam, lang)["diagrams"])
-        laid = flow([[Leaf("diagrams", *extent(Leaf("diagrams", record=rec)))]], region, keep)
+        rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
+        laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
         if laid is None or len(laid) != 1:
             return False
     return True
@@ -588,21 +596,14 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large.
     The scales of the series (construct's ``series``: μ_φ in °/mm and μ_s standard, the poles whole
     millimetres); the tuple's seventh item says so."""
-    from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
-    region, keep = field_of(f), keep_out(f)
+    from graphplan.drawing.cam import phase_diagram, profile_drawing
+    region = field_of(f)
     memo: dict = {}
 
     def alone(name: str, g) -> bool:
-        draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
-                "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
         key = {"phase": (g.mu_s, g.mu_l), "profile": (g.mu_l,)}.get(name, (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2))
         if (name, key) not in memo:
-            ok = True
-            for lang in ("uk", "en"):
-                rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
-                laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
-                ok = ok and laid is not None and len(laid) == 1
-            memo[(name, key)] = ok
+            memo[(name, key)] = _stands_alone(sol, g, f, name)
         return memo[(name, key)]
 
     def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...],

@@ -174,13 +174,12 @@ def _write_disk(key: tuple, n: int) -> None:
     path = _disk_path(key)
     if path is None:
         return
-    try:
+    import contextlib
+    with contextlib.suppress(OSError):
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.tmp")
         tmp.write_text(str(n))
         os.replace(tmp, path)
-    except OSError:
-        pass
 
 
 def remember_pages(key: tuple, n: int) -> None:
