@@ -2543,3 +2543,30 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+CAM48 = '''# Stop 48 (the lead's check): a rocking knife-edge follower, the cam counter-clockwise, a cycloidal rise
+# 120° and a cosine return 90°, 8 divisions (/work/lead/s48/cam.toml).
+title = "Кулачковий механізм з коливним загостреним штовхачем (перевірка 48)"
+title_en = "Cam with a rocking knife-edge follower (check 48)"
+designation = "ТММ.КМ.48.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 22
+arm = 0.11
+centre_distance = 0.13
+roller_radius = 0
+phases_deg = { rise = 120, dwell_far = 30, return = 90, dwell_near = 120 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 35, return = 40 }
+rpm = 90
+direction = "ccw"
+divisions = 8
+'''

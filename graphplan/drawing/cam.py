@@ -187,7 +187,13 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
         mu = {"s": g.mu_s, "v": g.mu_v, "a": g.mu_a}[key]
         labels.append(LabelRequest(complex(L, y0 + hi + 4.0), scale_text(f"mu_{key}", mu, cam.rocking, lang),
                                    toward=-0.2 + 1j, size=TEXT))
-        rec.add("polyline", list(zip(xf, y0 + curve)), role="curve", layer=LAYER, step=f"{key}(φ) exact")
+        pts_curve = list(zip(xf, y0 + curve))
+        if key == "a" and abs(curve[-1]) > 0.05:
+            # the return's end a soft shock (the cosine or parabolic law's d²s/dφ² jumps to the near dwell's
+            # 0): drawn down to the axis, as the jump at the return's start is (stop 48: the curve stopped
+            # in the air at the last division)
+            pts_curve.append((float(xf[-1]), y0))
+        rec.add("polyline", pts_curve, role="curve", layer=LAYER, step=f"{key}(φ) exact")
         if key == "a":
             for j, (xs, sg) in enumerate(shocks):     # the rigid shock: d²s/dφ² → ±∞ at the jump of ds/dφ
                 tip = (xs, y0 + sg * reach)
@@ -702,7 +708,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         if cam.roller > 0 and k % 2 == 0:
             rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
-    _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5)
+    _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5, lang=lang)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
     # R_0 drawn in the widest sector free of rays, O and ω in the sector opposite the follower
     angles = np.sort(np.mod(np.angle(np.concatenate([pts, [pts[0] * 3]])), 2 * math.pi))
@@ -817,7 +823,7 @@ ARC_OUT = 18.0       # mm: the phase angles' arcs outside the centre profile (a 
 
 
 def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, labels: list[LabelRequest],
-              clear: float = 0.0) -> None:
+              clear: float = 0.0, lang: str = "uk") -> None:
     """The follower in its start position (φ = 0, the nearest position): a translating one's rod on its
     axis through the roller's centre (or the knife-edge's point), its guide hatched — outside the
     circle of radius ``clear`` about O (the phase angles' arcs, whose arrows meet on the follower's
@@ -841,6 +847,7 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
             rec.segment(_pt(z), _pt(z + complex(-1.8, -1.8)), role="hatch", layer=LAYER)
         rec.point(_pt(A), role="joint", layer=LAYER, step="pivot")
         labels.append(LabelRequest(A, "O_1", toward=1 + 1j, size=TEXT))
+        _swing(rec, sol, A, C0, r, labels, lang)
         return
     up = 1j
     h = cam.stroke / mu
@@ -865,6 +872,37 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
     rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
     _stroke(rec, cam, C0, r, h, labels)
+
+
+SWING_ARC = 0.55      # of the arm: the radius of ψ_max's dimension arc about O_1
+
+
+def _swing(rec: Record, sol: Solution, A: complex, C0: complex, r: float, labels: list[LabelRequest],
+           lang: str) -> None:
+    """A rocking follower's swing, as the task gives it (the translating follower's stroke h, _stroke):
+    the arm in its top position dashed (C = A + l·e^{i(π − ψ0 − ψ_max)}, exact.cam.centre_path), the
+    knife-edge's (the roller centre's) path — its arc of radius l about O_1 from the start to the top
+    position, thin dash-dot — and ψ_max dimensioned as an angle (GOST 2.307: an arc about O_1 between
+    the two arms, arrowheads on them, «ψ_max = 22°» at its middle; stop 48: the profile drew the arm
+    at the start alone, the swing the task names nowhere on it)."""
+    from graphplan.graphic.gears import arc_dimension
+    from graphplan.util.words import num
+    cam = sol.cam
+    l = abs(C0 - A)
+    start = cmath.phase(C0 - A)
+    top = A + (C0 - A) * cmath.exp(-1j * cam.stroke)         # ψ grows clockwise about O_1 (centre_path)
+    d = (top - A) / l
+    rec.segment(_pt(A), _pt(top - r * d if r else top), role="projection", layer=LAYER, step="swing top arm")
+    if r:
+        rec.circle(_pt(top), r, role="projection", layer=LAYER, step="swing top roller")
+    over = min(0.25 * cam.stroke, math.radians(4.0))
+    rec.arc(_pt(A), l, math.degrees(start - cam.stroke - over), math.degrees(start + over), role="trajectory",
+            layer=LAYER, step="swing path")
+    rd = SWING_ARC * l
+    arc_dimension(rec, A, rd, start - cam.stroke, start, "swing psi_max")
+    m = cmath.exp(1j * (start - cam.stroke / 2))
+    labels.append(LabelRequest(A + rd * m, f"ψ_max = {num(math.degrees(cam.stroke), lang, 4)}°",
+                               toward=m, size=TEXT, step="swing psi_max"))
 
 
 def _stroke(rec: Record, cam, C0: complex, r: float, h: float, labels: list[LabelRequest]) -> None:

@@ -100,7 +100,7 @@ WORDS = {
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм",
            "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль іде "
-                    "через O, а центр ролика C рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
+                    "через O, а {c} рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
@@ -128,7 +128,8 @@ WORDS = {
                     "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0мм)",
            "head": ["φ, °", "s, {s}", "s граф.", "δs, %", "ds/dφ, {v}", "ds/dφ граф.", "δ, %", "ϑ, °", "ϑ граф.",
                     "R, мм", "R граф."],
-           "warn": "Попередження"},
+           "warn": "Попередження",
+           "point_c": ("центр ролика C", "вістря C")},
     "en": {"title": "Cam synthesis", "translating": "translating follower", "rocking": "rocking follower",
            "law": "laws: rise {r}, return {t}",
            "laws": {"parabolic": "parabolic", "cosine": "cosine", "cycloidal": "cycloidal (sine)",
@@ -140,7 +141,7 @@ WORDS = {
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm",
            "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal passes through "
-                    "O, and the roller centre C moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
+                    "O, and {c} moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
@@ -168,7 +169,8 @@ WORDS = {
                     "({D}\u00a0=\u00a0{d}\u00a0>\u00a0{b}\u00a0mm)",
            "head": ["φ, °", "s, {s}", "s gr.", "δs, %", "ds/dφ, {v}", "ds/dφ gr.", "δ, %", "ϑ, °", "ϑ gr.",
                     "R, mm", "R gr."],
-           "warn": "Warnings"},
+           "warn": "Warnings",
+           "point_c": ("the roller centre C", "the knife-edge's point C")},
 }
 
 
@@ -254,7 +256,8 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     start = doc["positions"][0]["exact"]["pressure_angle_deg"]
     if rocking and abs(start) >= 0.5:       # a rocking follower's ϑ ≠ 0 where it rests (stop 46: "−29,3 at 0?")
-        lines.append(w["dwell"].format(t=ang(start)))
+        # a knife-edge's point, not a roller's centre (stop 48: the knife-edge cam's note named a roller)
+        lines.append(w["dwell"].format(t=ang(start), c=w["point_c"][doc["roller_radius_m"] <= 0]))
     c = doc["curvature_min_m"]
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))
