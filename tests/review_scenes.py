@@ -2570,3 +2570,29 @@ rpm = 90
 direction = "ccw"
 divisions = 8
 '''
+
+
+CAM_OWN48 = '''# Stop 48 (cam48's own look): a translating roller follower, the cam counter-clockwise, a given negative
+# offset (raising the rise's pressure angle), a parabolic rise 90° and a cosine return 150°, 6 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 48, власна)"
+title_en = "Cam with a translating roller follower (check 48, own)"
+designation = "ТММ.КМ.48.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.025
+offset = -0.008
+roller_radius = 0.01
+phases_deg = { rise = 90, dwell_far = 60, return = 150, dwell_near = 60 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 30 }
+rpm = 300
+direction = "ccw"
+divisions = 6
+'''

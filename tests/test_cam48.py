@@ -158,3 +158,53 @@ def test_the_return_ends_its_soft_shock_on_the_axis(cam48):
     end = math.radians(240.0) / g.mu_phi
     assert curve[-1] == pytest.approx((end, y0), abs=1e-6)
     assert curve[-2][1] - y0 == pytest.approx(jump, rel=0.01)
+
+
+# -- cam48's own cam: a translating roller follower, ccw, a given negative offset, parabolic / cosine --------
+
+def _own_motion(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """s and ds/dφ (m, m/rad) of CAM_OWN48 written out here: h = 25 mm, a parabolic rise over 90°
+    (2hu² to u = ½, then h − 2h(1 − u)²), far dwell to 150°, a cosine return over 150°."""
+    h = 0.025
+    s, v = np.zeros_like(d), np.zeros_like(d)
+    rise, ret = math.radians(90.0), math.radians(150.0)
+    r = d <= 90.0
+    u = d[r] / 90.0
+    s[r] = np.where(u <= 0.5, 2 * h * u ** 2, h - 2 * h * (1 - u) ** 2)
+    v[r] = np.where(u <= 0.5, 4 * h * u / rise, 4 * h * (1 - u) / rise)
+    s[(d > 90.0) & (d <= 150.0)] = h
+    t = (d > 150.0) & (d <= 300.0)
+    w = (d[t] - 150.0) / 150.0
+    s[t] = h * (1 + np.cos(math.pi * w)) / 2
+    v[t] = -h * math.pi / (2 * ret) * np.sin(math.pi * w)
+    return s, v
+
+
+def test_the_own_cams_smallest_base_radius_and_pressure_angles_are_the_closed_forms(tmp_path):
+    """CAM_OWN48 (e = −8 mm raising the rise's pressure angle): the smallest R0 is the root of
+    max|ϑ| = [ϑ] with tg ϑ = (ds/dφ − e)/(s0 + s), s0 = √(R0² − e²), worked out here on a 0.01° grid
+    and brentq (57.053 mm: the rise binds at its middle, 29.66° at the R0 = 58 mm taken); the return's
+    largest |ϑ| at the phase's ends, atan(8/s0) = 7.93°."""
+    from scipy.optimize import brentq
+
+    from review_scenes import CAM_OWN48
+    path = tmp_path / "own.toml"
+    path.write_text(CAM_OWN48, encoding="utf-8")
+    sol = solve(load(path))
+    e = -0.008
+    d = np.linspace(0.0, 360.0, 36001)
+    s, v = _own_motion(d)
+
+    def theta(R0: float) -> np.ndarray:
+        return np.degrees(np.arctan((v - e) / (math.sqrt(R0 ** 2 - e ** 2) + s)))
+    rise, ret = d <= 90.0, (d >= 150.0) & (d <= 300.0)
+    R0 = brentq(lambda R: max(np.max(np.abs(theta(R)[rise])), np.max(np.abs(theta(R)[ret]))) - 30.0, 0.03, 0.1)
+    assert sol.R0_min == pytest.approx(R0, abs=2e-6)
+    assert sol.geometry.R0 == pytest.approx(0.058)
+    g = construct(sol, measure=False)
+    from graphplan.report.cam import cam_json
+    doc = cam_json(sol, g, "")
+    th = theta(0.058)
+    assert doc["pressure_angle_max_deg"]["rise"] == pytest.approx(np.max(np.abs(th[rise])), abs=0.01)
+    assert doc["pressure_angle_max_deg"]["return"] == pytest.approx(np.max(np.abs(th[ret])), abs=0.01)
+    assert doc["pressure_angle_max_deg"]["return"] == pytest.approx(math.degrees(math.atan(0.008 / math.sqrt(0.058 ** 2 - e ** 2))), abs=0.01)
