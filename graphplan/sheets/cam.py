@@ -835,6 +835,14 @@ def pressure_leaf(sol, g, lang: str, w: float, h: float, same: bool = True) -> L
 SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
 
 
+def _pressure_cap(region) -> float:
+    """The tallest ϑ(φ) a set's sheet of the table is tried with: half the field's height, at least
+    SET_PRESSURE's 130 mm (stop 48: capped at 130 mm on A2, ϑ(φ) took 1 °/mm, 100 mm over ±40°,
+    and the sheet of the table stood half blank — at 0.5 °/mm it is 195 mm, beside the table in
+    8 mm rows)."""
+    return max(SET_PRESSURE[1], (region[3] - region[1]) / 2)
+
+
 def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None,
                       same: bool = True):
     """A set's sheets with the pressure angle's diagram after the table and the notes, when it goes
@@ -852,7 +860,7 @@ def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, reg
     best, area = laid, (0.0, 0.0)
     for w in (region[2] - region[0] - 2 * GAP, SET_PRESSURE[0], 180.0, 150.0):
         for part in (1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.55, 0.5, 0.45, 0.4):
-            h = min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part
+            h = _pressure_cap(region) * part
             leaf = pressure_leaf(sol, g, lang, w, h, same)
             if leaf is None or (round(leaf.h), leaf.w) <= area:
                 continue
@@ -874,7 +882,7 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     lines = notes(doc, lang, cam)
     w = region[2] - region[0] - 2 * GAP
     for part in (1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4):
-        leaf = pressure_leaf(sol, g, lang, w, min(SET_PRESSURE[1], (region[3] - region[1]) / 2) * part, True)
+        leaf = pressure_leaf(sol, g, lang, w, _pressure_cap(region) * part, True)
         if leaf is None:
             continue
         for size, row in TABLE_SIZES + ((2.5, 6.0),):
