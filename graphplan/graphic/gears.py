@@ -97,7 +97,7 @@ class Placer:
         return True
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False,
+              radii=(1.5, 2.5, 4.0, 6.0, 7.5, 9.0, 10.5, 12.0, 13.0, 15.0, 18.0, 24.0, 32.0), optional: bool = False,
               near: bool = False) -> bool:
         """``near``: a point's letter (N1, B1, P …) tried first close to its point in 32 directions
         before it is taken farther on a leader (review 5: N1 7 mm off)."""
