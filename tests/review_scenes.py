@@ -2596,3 +2596,56 @@ rpm = 300
 direction = "ccw"
 divisions = 6
 '''
+
+
+GEARS48 = '''# Stop 48 (the lead's check): an external pair 12/31 with the shifts chosen by the rule, m = 5 mm, and a
+# two-row planetary train of type B for a ratio of 16 with three planets (/work/lead/s48/gears.toml).
+title = "Зубчаста передача 12/31 і планетарний редуктор (перевірка 48)"
+title_en = "A gear pair 12/31 and a planetary reducer (check 48)"
+designation = "ТММ.ЗП.48.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[gears]
+z = [12, 31]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 16.0
+planets = 3
+module = 0.0025
+omega = 100.0
+'''
+
+
+GEARS_A48 = '''# Stop 48's own check (gear48): a pair 9/27 — far under 17 teeth, the shifts by the rule — with a
+# large module m = 6 mm, and a one-row planetary train of type A with given teeth 18 - 36 - 90
+# (u1H = 1 + 90/18 = 6; the ring at least 85 teeth), three planets, n1 = 960 rpm.
+title = "Зубчаста передача 9/27 і планетарний редуктор типу A (перевірка 48)"
+title_en = "A gear pair 9/27 and a type A planetary reducer (check 48)"
+designation = "ТММ.ЗП.48.001"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[gears]
+z = [9, 27]
+module = 0.006
+shifts = "auto"
+
+[planetary]
+type = "A"
+z = [18, 36, 90]
+planets = 3
+module = 0.002
+rpm = 960
+'''

@@ -40,25 +40,26 @@ def test_the_carriers_own_pole_reads_willis_and_is_drawn_as_read():
     _, sol = _train()
     tr = sol.train
     u, wH = _willis(tr)
-    exact = construct_train(tr, 0.0, "en", ring_mm=56.5, sun_segment_mm=210.0, h_carrier=150.0)
-    assert exact.h_carrier == 150.0 and exact.ratio == pytest.approx(u, rel=1e-9)
+    exact = construct_train(tr, 0.0, "en", ring_mm=56.5, sun_segment_mm=210.0, h_carrier=160.0)
+    assert exact.h_carrier == 160.0 and exact.ratio == pytest.approx(u, rel=1e-9)
     assert exact.omega["H"] == pytest.approx(wH, rel=1e-9)
-    v = construct_train(tr, 0.5, "en", ring_mm=56.5, sun_segment_mm=210.0, h_carrier=150.0)
+    v = construct_train(tr, 0.5, "en", ring_mm=56.5, sun_segment_mm=210.0, h_carrier=160.0)
+    assert v.mu_v / (v.mu_l * 160.0) == pytest.approx(0.25, rel=1e-12)              # μ'ω round (review 48)
     rec = v.record
     line_y = next(q for q in rec.items if q.step == "plan of ω").points[0][1]
     foot_x = next(q for q in rec.items if q.step == "h").points[1][0]
     ray = next(q for q in rec.items if q.step == "ray H")
-    assert ray.points[0] == pytest.approx((foot_x, line_y - 150.0))                 # from p'_ω
+    assert ray.points[0] == pytest.approx((foot_x, line_y - 160.0))                 # from p'_ω
     assert ray.points[1][1] == pytest.approx(line_y)
     dim = [q for q in rec.items if q.step == "h_H dimension" and q.kind == "segment"]
-    assert len(dim) == 1 and abs(dim[0].points[0][1] - dim[0].points[1][1]) == pytest.approx(150.0)
+    assert len(dim) == 1 and abs(dim[0].points[0][1] - dim[0].points[1][1]) == pytest.approx(160.0)
     seg = ray.points[1][0] - foot_x                                                 # as drawn
     assert abs(seg - v.segments["H"]) <= 0.25 + 1e-9                                # read with the ruler
-    assert v.omega["H"] == pytest.approx(v.segments["H"] * v.mu_v / (v.mu_l * 150.0), rel=1e-12)
+    assert v.omega["H"] == pytest.approx(v.segments["H"] * v.mu_v / (v.mu_l * 160.0), rel=1e-12)
     assert abs(v.segments["H"]) >= 20.0 > abs(construct_train(tr, 0.5, "en", ring_mm=56.5,
                                                               sun_segment_mm=210.0).segments["H"])
     assert abs(v.ratio - u) <= v.ratio_bound
-    assert v.ratio == pytest.approx(v.segments["1"] / v.h / (v.segments["H"] / 150.0), rel=1e-12)
+    assert v.ratio == pytest.approx(v.segments["1"] / v.h / (v.segments["H"] / 160.0), rel=1e-12)
 
 
 def test_review_13s_a1_sheet_reads_the_carrier_off_twenty_millimetres_and_says_how():

@@ -97,7 +97,7 @@ class Placer:
         return True
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
-              radii=(1.5, 2.5, 4.0, 6.0, 9.0, 13.0, 18.0, 24.0, 32.0), optional: bool = False,
+              radii=(1.5, 2.5, 4.0, 6.0, 7.5, 9.0, 10.5, 12.0, 13.0, 15.0, 18.0, 24.0, 32.0), optional: bool = False,
               near: bool = False) -> bool:
         """``near``: a point's letter (N1, B1, P …) tried first close to its point in 32 directions
         before it is taken farther on a leader (review 5: N1 7 mm off)."""
@@ -803,6 +803,31 @@ def mu_omega_text(mu_omega: float, lang: str) -> str:
     return MU_OMEGA[lang].format(v=num(mu_omega, lang, 4))
 
 
+ROUND_OMEGA = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)   # μω's round values × 10^k, (rad/s)/mm
+H_RANGE = (20.0, 150.0)         # mm: the pole distance h of the plan of angular velocities
+H_CARRIER = 200.0               # mm: the carrier's own pole distance h_H at most
+
+
+def pole_distances(ratio: float, least: float = H_RANGE[0], most: float = H_RANGE[1]) -> list[float]:
+    """The pole distances h (mm, ascending, ``least`` … ``most``) whose scale μω = μv/(μl·h) — ``ratio``
+    = μv/μl, (m/s)/m — is a round value (``ROUND_OMEGA`` × 10^k: 0,5 (рад/с)/мм, not the 0,4762 of
+    h = 42 mm) and which the ruler lays off (a whole or half millimetre): h = ratio/μω."""
+    k0 = math.floor(math.log10(ratio / max(most, 1.0))) - 1
+    hs = {ratio / float(f"{m:g}e{k}") for k in range(k0, k0 + 6) for m in ROUND_OMEGA}
+    return sorted(float(round(2.0 * h) / 2.0) for h in hs
+                  if max(least, 1.0) - 1e-9 <= h <= most + 1e-9 and abs(2.0 * h - round(2.0 * h)) < 1e-6)
+
+
+def pole_distance(ratio: float, want: float, least: float = H_RANGE[0], most: float = H_RANGE[1]) -> float:
+    """The longest of ``pole_distances`` not longer than ``want`` (the plan no larger than asked), the
+    shortest where none is; ``want`` itself rounded (μω then not round) where the range holds none."""
+    ok = pole_distances(ratio, least, most)
+    if not ok:
+        return float(min(most, max(least, round(want))))
+    below = [h for h in ok if h <= want + 1e-9]
+    return max(below) if below else ok[0]
+
+
 def _nice(v: float) -> float:
     from graphplan.graphic.scales import at_least
     return at_least(v)
@@ -831,8 +856,9 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     vA = tr.omega["1"] * rad["1"]
     mu_v = _nice(vA / va_mm)
     va = lay_off(vA / mu_v, precision)
-    h = float(min(150.0, max(20.0, round(sun_segment_mm * yA / va))))
-    hH = float(round(h_carrier)) if h_carrier is not None and round(h_carrier) > h else None
+    h = pole_distance(mu_v / mu, sun_segment_mm * yA / va)          # μω = μv/(μl·h) round (review 48)
+    hH = float(round(2.0 * h_carrier) / 2.0) if h_carrier is not None else None   # (the caller's: μ'ω round
+    hH = hH if hH is not None and hH > h else None                                   # where it can be)
     v_o2 = va * (yC - yO2) / (yC - yA)                       # on the planet's line, at the axis' height
     slopes = {"1": va / yA, "2": va / (yA - yC), "H": v_o2 / yO2, "3": 0.0}
     dist = {k: (hH if k == "H" and hH else h) for k in slopes}     # each ray's pole distance

@@ -326,6 +326,7 @@ TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl a
 BOWLED = "PРF"       # … of them those whose bowl or bar ends at about half the height (0.45 in osifont)
 BOWL_TOP = 0.35      # an index reaching higher than this (of the letter height) would meet that bowl (a capital, b, d: 0.4; з 0.30)
 BOWL_GAP = 0.08      # the gap it keeps from the letter's ink then, of the letter height
+PRIMES = "'′″"       # a prime's index stands under it (``sub_kern``)
 
 
 def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
@@ -335,7 +336,13 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     typesetter kerns it — set at the full advance it hangs apart, belonging to neither word. A tall
     letter index (a capital, b, d) after a bowl or a middle bar (P, Р, F) would reach up into it (the D
     of P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink;
-    a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl."""
+    a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl. After a prime
+    (z′₂, p′_ω, μ′_ω) the index stands under the prime, as a typesetter stacks z'_2 (the prime high,
+    the index low, both after the letter): set after the prime's advance it hangs apart from its
+    letter, read as a word of its own beside the primed letter (GEARS_B47's notes)."""
+    if prev in PRIMES:
+        m = _metrics()
+        return -m["advance"].get(prev, m["missing"]) * em(size)
     if prev not in TUCKED:
         return 0.0
     m = _metrics()

@@ -11,8 +11,8 @@ import math
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
 from graphplan.exact.gears import solve
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.gears import (MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
-                                     lambda_mu, most_teeth, sliding_diagram)
+from graphplan.graphic.gears import (H_CARRIER, MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
+                                     lambda_mu, most_teeth, pole_distances, sliding_diagram)
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
@@ -490,18 +490,24 @@ def carried(got, at_h, room_w: float, room_h: float):
     that is at least 1,5·h — else the plan's h halved of the longest h_H the zone holds (the sun's
     segment shorter, still the longest) — either taken where the carrier's segment is 1,5 times as
     long and u1H's bound no wider; ``got`` else (the notes then say the segment's length).
-    ``at_h(h_H, k)``: the pictures drawn with it at k times the sun's segment."""
+    ``at_h(h_H, k)``: the pictures drawn with it at k times the sun's segment. An h_H whose μ'ω =
+    μv/(μl·h_H) is round (``pole_distances``) is tried first where one reaches ``SEGMENT_MIN``, and
+    last where none does; a whole millimetre between (μ'ω then as it falls: stop 13's 26,5-mm
+    segment needs h_H = 87 mm, the round ones 62,5 and 100 mm)."""
     v, rec = got
     if abs(v.segments["H"]) >= SEGMENT_MIN or not v.segments["H"]:
         return got
     slope = abs(v.segments["H"]) / v.h                       # (about: the segment as read)
     _, h_ = _size(rec)
     tallest = v.h + room_h - h_ - 2.0                        # h_H the zone's spare height holds
-    want = min(200.0, math.ceil(SEGMENT_MIN / slope), tallest)
-    tries = [(1.0, want)]
+    need = SEGMENT_MIN / slope
+    hs = [q for q in pole_distances(v.mu_v / v.mu_l, 0.0, min(H_CARRIER, tallest)) if q >= 1.5 * v.h]
+    want = min(H_CARRIER, math.ceil(need), tallest)
+    tries = [(1.0, q, True) for q in hs if q >= need][:1] + [(1.0, want, False)]   # μ'ω round first (review 48)
     if want < 1.5 * v.h:                  # too little spare height: the plan's h (and the sun's segment)
-        tries.append((0.5 * tallest / v.h, tallest))         # halved of h_H — the carrier's the longest
-    for k, hH in tries:
+        tries.append((0.5 * tallest / v.h, tallest, False))  # halved of h_H — the carrier's the longest
+    tries += [(1.0, q, True) for q in hs[-1:] if q < need]    # a round μ'ω short of SEGMENT_MIN, last
+    for k, hH, rnd in tries:
         for _ in range(6):                # the labels may push the pictures out: a little shorter
             if hH < 1.5 * k * v.h or k < 0.4:
                 break
@@ -510,7 +516,10 @@ def carried(got, at_h, room_w: float, room_h: float):
                 if e[0].ratio_bound <= v.ratio_bound and abs(e[0].segments["H"]) >= 1.5 * abs(v.segments["H"]):
                     return e      # (u1H no worse bounded: s1 shorter and h, h_H laid off weigh in too)
                 break
-            hH = k * v.h + 0.8 * (hH - k * v.h)
+            lower = [q for q in hs if q < hH]
+            if rnd and not lower:
+                break
+            hH = lower[-1] if rnd else k * v.h + 0.8 * (hH - k * v.h)
     return got
 
 
