@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from conftest import ROOT
 from coursework_scenes import crank_slider, four_bar, shaper, slotter
 from graphplan.exact.positions import study
+from graphplan.model.mechanism import Drive
 from graphplan.model.scene import loads
 from graphplan.sheets.compose import SheetOptions, defects
 from graphplan.sheets.form import form
@@ -73,7 +74,15 @@ def _sheet(text: str, kind: str, fmt: str = "A1"):
     """The sheet of a generated scene, or a rejected example where the program refuses the scene
     (a mechanism that locks over the turn is refused with one line, as it should be)."""
     try:
-        return BUILDERS[kind](study(loads(text, "<generated>")), form(fmt), SheetOptions(sheet=kind))
+        scene = study(loads(text, "<generated>"))
+        # every sheet of a scene counts its dynamics document's sheets (sheets/sheet.py ``pages_of``):
+        # a cycle no catalogue motor drives (~40 % of the generated crank-sliders) refuses them all —
+        # refused here by the very analysis that sheet makes (remembered for it), not after the
+        # kinematics and force sheets were composed for it (5–7 s an example)
+        from graphplan.sheets.dynamics import _analysed
+        if scene.mech.task.flywheel or scene.mech.drive != Drive():
+            _analysed(scene, None)
+        return BUILDERS[kind](scene, form(fmt), SheetOptions(sheet=kind))
     except GraphplanError:
         assume(False)
 

@@ -423,20 +423,29 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
         return rx1 - rx0
 
     def width(items: list[Node]) -> float:
-        return sum(extent(t)[0] for t in items) + gap * (len(items) - 1)
+        # a leaf's width read in place (a set's search asks ~10⁵ rows of a dozen plans a sheet)
+        return sum(t.w if t.__class__ is Leaf else extent(t)[0] for t in items) + gap * (len(items) - 1)
 
     def _packed(items: list[Node], top: float) -> float:
         """``ragged``: the room items packed from the left need — their width where each item that
-        reaches below the title block's top ends left of it, else more than any sheet has."""
+        reaches below the title block's top ends left of it, else more than any sheet has (the
+        widths summed as ``width`` sums them: the same sum to the bit)."""
         k = keep if (sheet[0] == 0 or later is None) else later
         at = rx0
+        ws = []
+        if k is None:
+            for t in items:
+                ws.append(t.w if t.__class__ is Leaf else extent(t)[0])
+            return sum(ws) + gap * (len(items) - 1)
+        low, right = k[3] + 1e-9, min(k[0], rx1) + 1e-9
         for t in items:
-            w, h = extent(t)
+            w, h = (t.w, t.h) if t.__class__ is Leaf else extent(t)
+            ws.append(w)
             at += w
-            if k is not None and top - h < k[3] + 1e-9 and at > min(k[0], rx1) + 1e-9:
+            if top - h < low and at > right:
                 return math.inf
             at += gap
-        return width(items)
+        return sum(ws) + gap * (len(items) - 1)
 
     if ragged:
         def over(items: list[Node], top: float, h: float) -> bool:
@@ -462,6 +471,43 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             at += w + gap
         return out
 
+    def _run(queue: list[Node], top: float) -> tuple[list[Node], float]:
+        """The items from the first that stand side by side in the row at ``top`` (the first
+        always), and the row's height."""
+        taken: list[Node] = []
+        height = 0.0
+        for item in queue:
+            w, h = extent(item)
+            if taken and over(taken + [item], top, max(height, h)):
+                break
+            taken.append(item)
+            height = max(height, h)
+        return taken, height
+
+    def _ragged_run(queue: list[Node], top: float) -> tuple[list[Node], float]:
+        """``_run`` with ``ragged``'s ``over`` judged item by item as ``_packed`` judges a whole
+        run — the run packed so far kept (its left edge ``at`` summed as ``_packed`` sums it), each
+        next item checked alone against the title block and the run's width summed anew: the same
+        runs as ``_run``, without packing every run again from its first item."""
+        k = keep if (sheet[0] == 0 or later is None) else later
+        low, right = (k[3] + 1e-9, min(k[0], rx1) + 1e-9) if k is not None else (0.0, 0.0)
+        across = rx1 - rx0 + 1e-9
+        taken: list[Node] = []
+        ws: list[float] = []
+        height, at, blocked = 0.0, rx0, False
+        for item in queue:
+            w, h = (item.w, item.h) if item.__class__ is Leaf else extent(item)
+            at_ = at + w
+            tall = k is not None and top - h < low and at_ > right
+            if taken and (blocked or tall or sum(ws + [w]) + gap * len(ws) > across):
+                break
+            blocked = blocked or tall
+            taken.append(item)
+            ws.append(w)
+            at = at_ + gap
+            height = max(height, h)
+        return taken, height
+
     def box_of(item: Node, x0: float, w: float, top: float, h: float) -> Box:
         """The item's box in its row: the row's height, or (``ragged``) its own where the row's
         would take it into the title block."""
@@ -486,14 +532,7 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             page, y = [], ry1
             sheet[0] += 1
         while queue:
-            taken: list[Node] = []
-            height = 0.0
-            for item in queue:
-                w, h = extent(item)
-                if taken and over(taken + [item], y, max(height, h)):
-                    break
-                taken.append(item)
-                height = max(height, h)
+            taken, height = (_ragged_run if ragged else _run)(queue, y)
             if over(taken, y, height) or y - height < ry0 - 1e-9:
                 fit, low = _prefix(taken, y, ry0, room, width, over if ragged else None) if page else ([], 0.0)
                 if fit:                        # the first items fit below: the sheet is filled first
