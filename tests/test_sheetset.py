@@ -86,6 +86,32 @@ def test_a_document_that_flows_onto_a_second_a1_sheet_is_counted_in_the_project(
     assert {"Аркуш 1", "Аркушів 4"} <= set(_texts(kin))
 
 
+def test_a_document_the_scene_cannot_make_does_not_refuse_the_others(monkeypatch):
+    """A cycle needing more than the largest catalogue motor refuses its dynamics sheet with one line;
+    the kinematics sheet, asked alone, is still made (stop 48: it was refused for the dynamics'
+    fault, the numbering having composed the dynamics document) and numbered without it: 1 of 2."""
+    from graphplan.sheets import sheet as sheet_mod
+    from graphplan.util.errors import SceneError
+    from review_scenes import COMPRESSOR_DYN
+    st = study(loads(COMPRESSOR_DYN))
+
+    def refused(scene, f, options):
+        raise SceneError("dynamics: the cycle needs 186 kW, more than the catalogue's largest motor")
+
+    monkeypatch.setattr(sheet_mod, "_PAGES", {})
+    monkeypatch.setattr(sheet_mod, "RAW", dict(sheet_mod.RAW, dynamics=refused,
+                                               forces=lambda scene, f, options: _one_sheet(f)))
+    monkeypatch.setenv("GRAPHPLAN_CACHE", "off")
+    kin = BUILDERS["kinematics"](st, form("A1"), SheetOptions(sheet="kinematics"))
+    assert {"Аркуш 1", "Аркушів 2"} <= set(_texts(kin))
+
+
+def _one_sheet(f):
+    from graphplan.graphic.record import Record
+    from graphplan.sheets.compose import Sheet
+    return Sheet(f, Record())
+
+
 @pytest.mark.slow
 def test_the_six_bars_a1_sheets_are_numbered_by_their_real_count():
     """Stop 47's six-bar (LINK47) on A1: its documents' real sheets, counted, are what every title
