@@ -15,7 +15,7 @@ from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.chords import read
-from graphplan.graphic.flywheel import over
+from graphplan.graphic.flywheel import over, ruler_bound
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
@@ -301,7 +301,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(errs['merkalov_error_pct'])}",
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
+    amp = amplified_note(f, lang, error_text(errs["error_pct"], lang)) if errs["error_pct"] is not None else None
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), amp, wittenbauer_note(f, lang, fd), reducer_note(f, lang),
                                              tangents_note(f, lang), approximate_note(doc, lang, formula=True),
                                              design_note(doc, lang), motor_note(doc, lang)) if line]
     m = doc["motor"]
@@ -337,6 +338,11 @@ def _pct(v: float | None) -> str:
 NB = "\u00a0"     # a no-break space: a number stays on its line with its unit (the notes are wrapped)
 
 
+def signed(v: float, lang: str) -> str:
+    """A percent with its sign, three significant figures ("+6,71", "−0,376")."""
+    return _signed(v, lang)
+
+
 def _signed(v: float, lang: str) -> str:
     text = num(v, lang, 3)
     return text.replace("-", "−") if text.startswith("-") or text in ("0", "—") else "+" + text
@@ -360,7 +366,7 @@ def redrawn_note(f, lang: str) -> str | None:
     within the lab's 5 %: redrawn on more divisions (which, instead of which, the errors before and
     after); the given divisions kept (and which would be right); or nothing within the bound right."""
     rd = f.redrawn
-    if rd is None or not rd.needed:
+    if rd is None or not rd.needed or getattr(rd, "ruler", False):    # the ruler's: ``amplified_note`` says why
         return None
     uk = lang == "uk"
     e0 = _errs(rd.before, lang)
@@ -402,6 +408,47 @@ def redrawn_note(f, lang: str) -> str | None:
             f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
             f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+
+
+def amplified(f) -> dict[str, float] | None:
+    """Where the flywheel is so small a part of J (rotor, reducer and flywheel together: what the
+    energy–mass diagram's |kl| reads) that the ruler's reading of |kl| alone may put it past the
+    lab's 5 % (graphic.flywheel ``ruler_bound``), the numbers that say so: I_fl's share of the exact
+    J, %, the exact J, the ruler's share of J (precision/|kl|), %, the bound on I_fl, %, and J's
+    error by each method, % (the graphical J as the notes print it from |kl| (``graphical_chain``), the approximate and Merkalov's J before
+    I_rotor·i² is subtracted) — each method's error on I_fl is its error on J times J/I_fl. Else
+    None."""
+    exact = f.dyn.flywheel
+    if exact <= 0 or ruler_bound(f) <= LAB_LIMIT:
+        return None
+    J = exact + f.dyn.constant
+    return {"share": 100.0 * exact / J, "J": J, "ruler": 100.0 * f.precision / abs(f.kl), "bound": ruler_bound(f),
+            "graphical": 100.0 * (graphical_chain(f)[0] - J) / J, "approximate": 100.0 * (f.approximate_total - J) / J,
+            "merkalov": 100.0 * (f.merkalov_total - J) / J}
+
+
+def amplified_note(f, lang: str, e: str) -> str | None:
+    """Why the graphical flywheel is ``e`` % off where that is the ruler's reading of |kl| over a
+    flywheel that is a small part of J (``amplified``): the share, the ruler's bound, J's own error —
+    the difference's error, not the drawing's, which more divisions do not reduce (markup)."""
+    a = amplified(f)
+    if a is None:
+        return None
+    uk = lang == "uk"
+    sym, _ = constant_terms(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced, lang)
+    fl, kg, mm = ("I_мах", "кг·м²", "мм") if uk else ("I_fl", "kg·m²", "mm")
+    v = {"e": e, "share": num(a["share"], lang, 2), "J": sig(a["J"], lang), "p": num(f.precision, lang),
+         "kl": num(abs(f.kl), lang), "r": num(a["ruler"], lang, 2), "b": num(a["bound"], lang, 2),
+         "je": _signed(a["graphical"], lang)}
+    if uk:
+        return (f"графічно {v['e']}{NB}%: {fl} = J{sym} — лише {v['share']}{NB}% від J{NB}={NB}{v['J']}{NB}{kg}, "
+                f"тож лінійка {v['p']}{NB}{mm} на |kl|{NB}={NB}{v['kl']}{NB}{mm} ({v['r']}{NB}% J) дає до "
+                f"±{v['b']}{NB}% {fl}; J прочитано з похибкою {v['je']}{NB}% — це похибка різниці, а не побудови "
+                f"(більше поділок її не зменшить)")
+    return (f"graphical {v['e']}{NB}%: {fl} = J{sym} is only {v['share']}{NB}% of J{NB}={NB}{v['J']}{NB}{kg}, so a "
+            f"{v['p']}{NB}{mm} ruler on |kl|{NB}={NB}{v['kl']}{NB}{mm} ({v['r']}{NB}% of J) may put {fl} up to "
+            f"±{v['b']}{NB}% off; J itself is read {v['je']}{NB}% off — the difference's error, not the drawing's "
+            f"(more divisions will not reduce it)")
 
 
 def _inertia_note(f, rd, lang: str) -> str:
