@@ -2633,3 +2633,75 @@ direction = "oppose"
 delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500'''
+
+
+BEATER48 = '''# Stop 48 (helper dyn48's own check): a loom's beater drive — a crank-rocker four-bar O1ABO2, the crank
+# clockwise at 180 rpm, the beater (rocker 3) resisting with a moment that rises over the last part of its
+# forward swing (the beat-up); dynamics to a 1000-rpm motor, δ = 1/30.
+title = "Механізм привода батана ткацького верстата"
+title_en = "Loom beater drive"
+designation = "ТММ.КП.48.100"
+
+[sheet]
+student = "Перевірка Б. Б."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.08]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.4 }
+mass = 14
+inertia = 0.35
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+output = "O2B"
+start = "max"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 3
+magnitude = 260
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [15, 0.4], [25, 1.0], [30, 1.0]]
+
+[dynamics]
+delta = 0.0333
+efficiency = 0.8
+synchronous_rpm = 1000'''

@@ -82,3 +82,21 @@ def test_the_compressors_a1_dynamics_is_one_sheet():
     st = scene_study(LINK48)
     got = construction(st, _analysed(st, None), form("A1"), SheetOptions(precision=0.5, sheet="dynamics"))
     assert got[3] != "set"
+
+
+def test_a_flywheel_that_is_most_of_j_is_judged_as_before_no_amplification_said():
+    """dyn48's own scene, a loom's beater drive (BEATER48: I_fl ≈ 4.0 kg·m² of J ≈ 4.2, the rotor
+    0.197): the ruler's 0.5 mm over |kl| bounds I_fl within the lab's 5 %, so the construction is
+    judged (and redrawn) as before and the notes carry no amplification line; the graphical flywheel
+    is within that bound of the exact one (the equation of motion's)."""
+    from review_scenes import BEATER48
+
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import redrawn
+    from graphplan.report.dynamics import amplified
+    dyn = analyse(scene_study(BEATER48), None)
+    f = redrawn(dyn, None, 0.5, L=330.0, size=1.0)
+    J = dyn.flywheel + dyn.constant
+    bound = 100.0 * f.precision / abs(f.kl) * J / dyn.flywheel
+    assert bound < 5.0 and amplified(f) is None and not f.redrawn.ruler
+    assert abs(f.flywheel - dyn.flywheel) / dyn.flywheel * 100.0 <= bound
