@@ -55,17 +55,20 @@ def test_the_notes_say_the_flywheel_is_a_small_part_of_j_with_numbers_that_give_
     text = " ".join(lines_of(notes(f, doc, lang))).replace("\u00a0", " ")
     n = r"([+−-]?\d+(?:[,.]\d+)?)"
     pat = (rf"{n} %: I_(?:мах|fl) = J − I_(?:рот|rotor)·i² (?:—|is) (?:лише|only) {n} % (?:від|of) J = {n} "
-           rf"(?:кг|kg)·m?м?².*?\|kl\| = {n} (?:мм|mm) \({n} % (?:J|of J)\).*?±{n} %.*?(?:з похибкою|read) {n} %")
+           rf"(?:кг|kg)·m?м?², (?:тож похибка J|so J's error) \({n} %; .*?\|kl\| = {n} (?:мм|mm) "
+           rf"(?:— до|alone up to) {n} %\) (?:в I_мах помножена|is multiplied) (?:на|by) J/I_(?:мах|fl) = {n}(?: in I_fl)?: "
+           rf"(?:від самої лінійки до|up to) ±{n} %")
     m = re.search(pat, text)
     assert m, text
-    e, share, J, kl, ruler, bound, je = (float(g.replace("−", "-").replace(",", ".")) for g in m.groups())
+    e, share, J, je, kl, ruler, times, bound = (float(g.replace("−", "-").replace(",", ".")) for g in m.groups())
     J_exact = dyn.flywheel + dyn.constant
     assert e == pytest.approx(flywheel_errors(doc)["error_pct"], abs=0.006)
     assert share == pytest.approx(100 * dyn.flywheel / J_exact, abs=0.06)
     assert J == pytest.approx(J_exact, rel=5e-4)
     assert kl == abs(f.kl) and ruler == pytest.approx(100 * 0.5 / kl, abs=0.006)
-    assert bound == pytest.approx(ruler * 100 / share, rel=0.05)
-    assert je * 100 / share == pytest.approx(e, rel=0.05)       # J's error × J/I_fl is I_fl's
+    assert times == pytest.approx(J_exact / dyn.flywheel, rel=0.01)
+    assert bound == pytest.approx(ruler * times, rel=0.02)
+    assert je * times == pytest.approx(e, rel=0.05)              # J's error × J/I_fl is I_fl's
     for why in ("approximate_error_pct", "merkalov_error_pct"):
         err = flywheel_errors(doc)[why]
         shown = f"{err:+.2f}".replace(".", "," if lang == "uk" else ".").replace("-", "−").lstrip("+")

@@ -428,9 +428,10 @@ def amplified(f) -> dict[str, float] | None:
 
 
 def amplified_note(f, lang: str, e: str) -> str | None:
-    """Why the graphical flywheel is ``e`` % off where that is the ruler's reading of |kl| over a
-    flywheel that is a small part of J (``amplified``): the share, the ruler's bound, J's own error —
-    the difference's error, not the drawing's, which more divisions do not reduce (markup)."""
+    """Why the graphical flywheel is ``e`` % off where the flywheel is a small part of J
+    (``amplified``): its share of J, J's own error beside what the ruler alone may make of it
+    (precision/|kl|), and both times J/I_fl in I_fl — the ruler's alone past the lab's 5 %, which no
+    more divisions change (markup)."""
     a = amplified(f)
     if a is None:
         return None
@@ -440,15 +441,16 @@ def amplified_note(f, lang: str, e: str) -> str | None:
     v = {"e": e, "share": num(a["share"], lang, 2), "J": sig(a["J"], lang), "p": num(f.precision, lang),
          "kl": num(abs(f.kl), lang), "r": num(a["ruler"], lang, 2), "b": num(a["bound"], lang, 2),
          "je": _signed(a["graphical"], lang)}
+    v["x"] = num(100.0 / a["share"], lang, 2)
     if uk:
         return (f"графічно {v['e']}{NB}%: {fl} = J{sym} — лише {v['share']}{NB}% від J{NB}={NB}{v['J']}{NB}{kg}, "
-                f"тож лінійка {v['p']}{NB}{mm} на |kl|{NB}={NB}{v['kl']}{NB}{mm} ({v['r']}{NB}% J) дає до "
-                f"±{v['b']}{NB}% {fl}; J прочитано з похибкою {v['je']}{NB}% — це похибка різниці, а не побудови "
-                f"(більше поділок її не зменшить)")
-    return (f"graphical {v['e']}{NB}%: {fl} = J{sym} is only {v['share']}{NB}% of J{NB}={NB}{v['J']}{NB}{kg}, so a "
-            f"{v['p']}{NB}{mm} ruler on |kl|{NB}={NB}{v['kl']}{NB}{mm} ({v['r']}{NB}% of J) may put {fl} up to "
-            f"±{v['b']}{NB}% off; J itself is read {v['je']}{NB}% off — the difference's error, not the drawing's "
-            f"(more divisions will not reduce it)")
+                f"тож похибка J ({v['je']}{NB}%; сама лінійка {v['p']}{NB}{mm} на |kl|{NB}={NB}{v['kl']}{NB}{mm} — "
+                f"до {v['r']}{NB}%) в {fl} помножена на J/{fl}{NB}={NB}{v['x']}: від самої лінійки до ±{v['b']}{NB}%, і більше "
+                f"поділок не зведе її в межі 5{NB}%")
+    return (f"graphical {v['e']}{NB}%: {fl} = J{sym} is only {v['share']}{NB}% of J{NB}={NB}{v['J']}{NB}{kg}, so "
+            f"J's error ({v['je']}{NB}%; a {v['p']}{NB}{mm} ruler on |kl|{NB}={NB}{v['kl']}{NB}{mm} alone up to "
+            f"{v['r']}{NB}%) is multiplied by J/{fl}{NB}={NB}{v['x']} in {fl}: up to ±{v['b']}{NB}% from the ruler alone, which no "
+            f"more divisions bring within 5{NB}%")
 
 
 def _inertia_note(f, rd, lang: str) -> str:
