@@ -69,10 +69,14 @@ def test_the_notes_say_the_flywheel_is_a_small_part_of_j_with_numbers_that_give_
     assert times == pytest.approx(J_exact / dyn.flywheel, rel=0.01)
     assert bound == pytest.approx(ruler * times, rel=0.02)
     assert je * times == pytest.approx(e, rel=0.05)              # J's error × J/I_fl is I_fl's
-    for why in ("approximate_error_pct", "merkalov_error_pct"):
+    for why, pattern in (("approximate_error_pct", r" %: J {n} %, (?:помножена на|multiplied by) J/I_(?:мах|fl) = {n}"),
+                         ("merkalov_error_pct", r" % \(J {n} %\)")):
         err = flywheel_errors(doc)[why]
         shown = f"{err:+.2f}".replace(".", "," if lang == "uk" else ".").replace("-", "−").lstrip("+")
-        assert re.search(rf"{re.escape(shown)} % \(J {n} %\)", text), (why, text)
+        got = re.search(re.escape(shown) + pattern.format(n=n), text)
+        assert got, (why, text)
+        j = float(got.group(1).replace("−", "-").replace(",", "."))
+        assert j * J_exact / dyn.flywheel == pytest.approx(err, rel=0.05)      # J's error × J/I_fl
 
 
 @pytest.mark.slow                     # the A1 composition searched over the scales: ~10 s of CPU

@@ -414,17 +414,15 @@ def amplified(f) -> dict[str, float] | None:
     """Where the flywheel is so small a part of J (rotor, reducer and flywheel together: what the
     energy–mass diagram's |kl| reads) that the ruler's reading of |kl| alone may put it past the
     lab's 5 % (graphic.flywheel ``ruler_bound``), the numbers that say so: I_fl's share of the exact
-    J, %, the exact J, the ruler's share of J (precision/|kl|), %, the bound on I_fl, %, and J's
-    error by each method, % (the graphical J as the notes print it from |kl| (``graphical_chain``), the approximate and Merkalov's J before
-    I_rotor·i² is subtracted) — each method's error on I_fl is its error on J times J/I_fl. Else
-    None."""
+    J, %, the exact J, the ruler's share of J (precision/|kl|), %, the bound on I_fl, %, and the
+    graphical J's error, % (J as the notes print it from |kl|: ``graphical_chain``) — a method's error
+    on I_fl is its error on J times J/I_fl. Else None."""
     exact = f.dyn.flywheel
     if exact <= 0 or ruler_bound(f) <= LAB_LIMIT:
         return None
     J = exact + f.dyn.constant
     return {"share": 100.0 * exact / J, "J": J, "ruler": 100.0 * f.precision / abs(f.kl), "bound": ruler_bound(f),
-            "graphical": 100.0 * (graphical_chain(f)[0] - J) / J, "approximate": 100.0 * (f.approximate_total - J) / J,
-            "merkalov": 100.0 * (f.merkalov_total - J) / J}
+            "graphical": 100.0 * (graphical_chain(f)[0] - J) / J}
 
 
 def amplified_note(f, lang: str, e: str) -> str | None:

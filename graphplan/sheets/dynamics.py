@@ -64,6 +64,8 @@ WORDS = {
            "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
            "not": "не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
+           "why_approx_small": "наближено {e} %: J {j} %, помножена на J/I_мах = {x} (метод нехтує зміною I^*_м "
+                               "за цикл, а ΔT_{{max}} − ΔT_{{min}} та I^*_{{м сер}} прочитано лінійкою)",
            "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
            "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
            "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
@@ -88,6 +90,9 @@ WORDS = {
            "open": "closure |ω(2π) − ω(0)|/ω_m = {c}",
            "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler)",
            "not": "not needed",
+           "why_approx_small": "approximate {e} %: J {j} %, multiplied by J/I_fl = {x} (the method neglects the "
+                               "change of I^*_m over the cycle, and ΔT_{{max}} − ΔT_{{min}} and I^*_{{m mean}} are read "
+                               "with the ruler)",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
@@ -261,8 +266,11 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
             line = amplified_note(f, lang, e) if key == "error_pct" else None
             if line is None:
                 line = w[why].format(e=e, n=doc["divisions"], p=num(doc["precision_mm"], lang))
-                if amp is not None:          # the method's own error is J's: said beside I_fl's
-                    j = amp["approximate" if key == "approximate_error_pct" else "merkalov"]
+                j = None if amp is None else errs[key] * amp["share"] / 100.0    # J's error: I_fl's × I_fl/J
+                if amp is not None and key == "approximate_error_pct":
+                    # its J read off ΔT(φ) and I*(φ) by the same ruler: not the method's error alone
+                    line = w["why_approx_small"].format(e=e, j=signed(j, lang), x=num(100.0 / amp["share"], lang, 2))
+                elif amp is not None:        # the method's own error is J's: said beside I_fl's
                     line = line.replace(" %:", f" % (J {signed(j, lang)} %):", 1)
             said.append(w["mark"] + line)
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
