@@ -107,3 +107,15 @@ def test_a_flywheel_that_is_most_of_j_is_judged_as_before_no_amplification_said(
     bound = 100.0 * f.precision / abs(f.kl) * J / dyn.flywheel
     assert bound < 5.0 and amplified(f) is None and not f.redrawn.ruler
     assert abs(f.flywheel - dyn.flywheel) / dyn.flywheel * 100.0 <= bound
+
+
+@pytest.mark.slow                     # an A3 set composed: ~90 s of CPU
+def test_the_compressors_a3_set_keeps_the_constructions_in_their_order_after_the_tables():
+    """LINK48's A3 set leads with its tables (the order that takes the fewest sheets), then the
+    constructions in the order of the work — the moments, the band, ω(φ) last (it read tables, ω(φ),
+    moments, band)."""
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    sheet = BUILDERS["dynamics"](scene_study(LINK48), form("A3"), SheetOptions(lang="uk", sheet="dynamics"))
+    at = {p.name: n for n, page in enumerate(sheet.pages) for p in page.placed}
+    assert at["moments"] < at["wittenbauer"] <= at["speed"], at

@@ -1124,7 +1124,10 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
                 ways += [[[t1]] + rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]
                          for t1 in ([lead] if lead else []) + tables[:1]]
             else:
-                ways = [[tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
+                # the constructions in their order after the tables (ω(φ) last, as it is derived), where that
+                # takes no more sheets than ω(φ) beside the tables (stop 48's compressor: tables, ω(φ), then
+                # the moments and the band)
+                ways = [[tail[0]] + rows, [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
             for first in ways:
                 laid = flow([r for r in first if r], region, keep, later=later)
                 if laid is not None and not _notes_alone(laid[-1]):
