@@ -321,12 +321,6 @@ def ruler_bound(f: Flywheel) -> float:
     return 100.0 * f.precision / abs(f.kl) * (exact + f.dyn.constant) / exact
 
 
-def total_error(f: Flywheel) -> float:
-    """The graphical J (rotor, reducer and flywheel together: what |kl| reads) against the exact, %."""
-    exact = f.dyn.flywheel + f.dyn.constant
-    return 100.0 * (f.total - exact) / exact
-
-
 def over(errs: dict[str, float], limit: float = LAB_LIMIT) -> tuple[str, ...]:
     """The keys of ``errs`` past the lab's limit (NaN is not judged)."""
     return tuple(k for k, v in errs.items() if math.isfinite(v) and abs(v) > limit)
