@@ -2649,3 +2649,165 @@ planets = 3
 module = 0.002
 rpm = 960
 '''
+
+
+LINK48 = '''# Stop 48 (the lead's check): a V-compressor — two connecting rods on the one crank pin A, each driving a
+# piston on its own guide, the guides at ±45° from the vertical (I(0-1) -> II(2-3) RRP and II(4-5) RRP,
+# both groups on the crank); the crank counter-clockwise, the working force on piston B; dynamics to a
+# 1500-rpm motor.
+title = "V-подібний двоциліндровий компресор"
+title_en = "V-type two-cylinder compressor"
+designation = "ТММ.КМ.48.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+b = { through = [0, 0], angle_deg = 45, title_uk = "лівого поршня", title_en = "of the left piston" }
+c = { through = [0, 0], angle_deg = 135, title_uk = "правого поршня", title_en = "of the right piston" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.05
+rpm = 960
+direction = "ccw"
+points = { S1 = 0.3 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.2
+points = { S2 = 0.35 }
+mass = 2.2
+inertia = 0.009
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "b"
+mass = 1.8
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.2
+points = { S4 = 0.35 }
+mass = 2.2
+inertia = 0.009
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "c"
+mass = 1.8
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+output = "B"
+start = "max"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 2400
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500'''
+
+
+BEATER48 = '''# Stop 48 (helper dyn48's own check): a loom's beater drive — a crank-rocker four-bar O1ABO2, the crank
+# clockwise at 180 rpm, the beater (rocker 3) resisting with a moment that rises over the last part of its
+# forward swing (the beat-up); dynamics to a 1000-rpm motor, δ = 1/30.
+title = "Механізм привода батана ткацького верстата"
+title_en = "Loom beater drive"
+designation = "ТММ.КП.48.100"
+
+[sheet]
+student = "Перевірка Б. Б."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.08]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.4 }
+mass = 14
+inertia = 0.35
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+output = "O2B"
+start = "max"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 3
+magnitude = 260
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [15, 0.4], [25, 1.0], [30, 1.0]]
+
+[dynamics]
+delta = 0.0333
+efficiency = 0.8
+synchronous_rpm = 1000'''

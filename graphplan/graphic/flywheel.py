@@ -310,6 +310,17 @@ def errors(f: Flywheel) -> dict[str, float]:
             "inertia": inertia_miss(f)}
 
 
+def ruler_bound(f: Flywheel) -> float:
+    """The most the ruler alone may put the graphical flywheel off, %: k and l each read to half the
+    ruler's step, so |kl| to ``precision`` mm, J = μ_T·|kl|/(ω_m²·δ) to precision/|kl| of itself, and
+    I_fl = J − I_rotor·i² − I_reducer to J/I_fl times that (the exact J and I_fl; inf where no
+    flywheel is needed or |kl| is nil)."""
+    exact = f.dyn.flywheel
+    if exact <= 0 or f.kl <= 0:
+        return math.inf
+    return 100.0 * f.precision / abs(f.kl) * (exact + f.dyn.constant) / exact
+
+
 def over(errs: dict[str, float], limit: float = LAB_LIMIT) -> tuple[str, ...]:
     """The keys of ``errs`` past the lab's limit (NaN is not judged)."""
     return tuple(k for k, v in errs.items() if math.isfinite(v) and abs(v) > limit)
@@ -336,6 +347,7 @@ class Redrawing:
     better: int | None = None
     better_errors: dict[str, float] | None = None
     tried: int = 0
+    ruler: bool = False      # not redrawn: the ruler's reading of |kl| alone may exceed the limit (``ruler_bound``)
 
     @property
     def needed(self) -> bool:
@@ -352,7 +364,7 @@ class Redrawing:
                 "divisions": self.divisions, "given": self.given, "errors_before": dict(self.before),
                 "errors_after": dict(self.after), "better_divisions": self.better,
                 "better_errors": None if self.better_errors is None else dict(self.better_errors),
-                "tried": self.tried}
+                "tried": self.tried, "ruler": self.ruler}
 
 
 def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
@@ -373,6 +385,11 @@ def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5,
     before = errors(first)
     if not over(before):
         first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given)
+        return first
+    if over(before) == ("flywheel",) and ruler_bound(first) > LAB_LIMIT:
+        # the flywheel a small difference J − I_rotor·i²: the ruler's reading of |kl| alone may put it
+        # past the lab's 5 % — more divisions would only change which way the ruler rounds
+        first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given, ruler=True)
         return first
     tried, fallback = 0, None
     for n in finer(first.divisions, DYNAMICS_DIVISIONS[1]):

@@ -15,7 +15,7 @@ from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.chords import read
-from graphplan.graphic.flywheel import over
+from graphplan.graphic.flywheel import over, ruler_bound
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
@@ -301,7 +301,8 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  {w['merk']:54} {val(fw['merkalov'])}  {_pct(errs['merkalov_error_pct'])}",
             f"  {w['motor_fl']:54} {motor}",
             f"  δ = {doc['motion']['delta']:.9f}, |ω(2π) − ω(0)|/ωm = {doc['motion']['closure']:.1e}"]
-    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), wittenbauer_note(f, lang, fd), reducer_note(f, lang),
+    amp = amplified_note(f, lang, error_text(errs["error_pct"], lang)) if errs["error_pct"] is not None else None
+    out += [f"  {_term(line)}" for line in (redrawn_note(f, lang), amp, wittenbauer_note(f, lang, fd), reducer_note(f, lang),
                                              tangents_note(f, lang), approximate_note(doc, lang, formula=True),
                                              design_note(doc, lang), motor_note(doc, lang)) if line]
     m = doc["motor"]
@@ -337,6 +338,11 @@ def _pct(v: float | None) -> str:
 NB = "\u00a0"     # a no-break space: a number stays on its line with its unit (the notes are wrapped)
 
 
+def signed(v: float, lang: str) -> str:
+    """A percent with its sign, three significant figures ("+6,71", "−0,376")."""
+    return _signed(v, lang)
+
+
 def _signed(v: float, lang: str) -> str:
     text = num(v, lang, 3)
     return text.replace("-", "−") if text.startswith("-") or text in ("0", "—") else "+" + text
@@ -360,7 +366,7 @@ def redrawn_note(f, lang: str) -> str | None:
     within the lab's 5 %: redrawn on more divisions (which, instead of which, the errors before and
     after); the given divisions kept (and which would be right); or nothing within the bound right."""
     rd = f.redrawn
-    if rd is None or not rd.needed:
+    if rd is None or not rd.needed or getattr(rd, "ruler", False):    # the ruler's: ``amplified_note`` says why
         return None
     uk = lang == "uk"
     e0 = _errs(rd.before, lang)
@@ -402,6 +408,47 @@ def redrawn_note(f, lang: str) -> str | None:
             f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
             f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+
+
+def amplified(f) -> dict[str, float] | None:
+    """Where the flywheel is so small a part of J (rotor, reducer and flywheel together: what the
+    energy–mass diagram's |kl| reads) that the ruler's reading of |kl| alone may put it past the
+    lab's 5 % (graphic.flywheel ``ruler_bound``), the numbers that say so: I_fl's share of the exact
+    J, %, the exact J, the ruler's share of J (precision/|kl|), %, the bound on I_fl, %, and the
+    graphical J's error, % (J as the notes print it from |kl|: ``graphical_chain``) — a method's error
+    on I_fl is its error on J times J/I_fl. Else None."""
+    exact = f.dyn.flywheel
+    if exact <= 0 or ruler_bound(f) <= LAB_LIMIT:
+        return None
+    J = exact + f.dyn.constant
+    return {"share": 100.0 * exact / J, "J": J, "ruler": 100.0 * f.precision / abs(f.kl), "bound": ruler_bound(f),
+            "graphical": 100.0 * (graphical_chain(f)[0] - J) / J}
+
+
+def amplified_note(f, lang: str, e: str) -> str | None:
+    """Why the graphical flywheel is ``e`` % off where the flywheel is a small part of J
+    (``amplified``): its share of J, J's own error beside what the ruler alone may make of it
+    (precision/|kl|), and both times J/I_fl in I_fl — the ruler's alone past the lab's 5 %, which no
+    more divisions change (markup)."""
+    a = amplified(f)
+    if a is None:
+        return None
+    uk = lang == "uk"
+    sym, _ = constant_terms(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced, lang)
+    fl, kg, mm = ("I_мах", "кг·м²", "мм") if uk else ("I_fl", "kg·m²", "mm")
+    v = {"e": e, "share": num(a["share"], lang, 2), "J": sig(a["J"], lang), "p": num(f.precision, lang),
+         "kl": num(abs(f.kl), lang), "r": num(a["ruler"], lang, 2), "b": num(a["bound"], lang, 2),
+         "je": _signed(a["graphical"], lang)}
+    v["x"] = num(100.0 / a["share"], lang, 2)
+    if uk:
+        return (f"графічно {v['e']}{NB}%: {fl} = J{sym} — лише {v['share']}{NB}% від J{NB}={NB}{v['J']}{NB}{kg}, "
+                f"тож похибка J ({v['je']}{NB}%; сама лінійка {v['p']}{NB}{mm} на |kl|{NB}={NB}{v['kl']}{NB}{mm} — "
+                f"до {v['r']}{NB}%) в {fl} помножена на J/{fl}{NB}={NB}{v['x']}: від самої лінійки до ±{v['b']}{NB}%, і більше "
+                f"поділок не зведе її в межі 5{NB}%")
+    return (f"graphical {v['e']}{NB}%: {fl} = J{sym} is only {v['share']}{NB}% of J{NB}={NB}{v['J']}{NB}{kg}, so "
+            f"J's error ({v['je']}{NB}%; a {v['p']}{NB}{mm} ruler on |kl|{NB}={NB}{v['kl']}{NB}{mm} alone up to "
+            f"{v['r']}{NB}%) is multiplied by J/{fl}{NB}={NB}{v['x']} in {fl}: up to ±{v['b']}{NB}% from the ruler alone, which no "
+            f"more divisions bring within 5{NB}%")
 
 
 def _inertia_note(f, rd, lang: str) -> str:

@@ -19,9 +19,9 @@ from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.flywheel import Flywheel, redrawn
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
-from graphplan.report.dynamics import (approximate_note, chords_note, design_note, motor_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
+from graphplan.report.dynamics import (amplified, amplified_note, approximate_note, chords_note, design_note, motor_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
                                        flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
-                                       redrawn_note, reducer_note, sig, table_columns, tangents_note, wittenbauer_note)
+                                       redrawn_note, reducer_note, sig, signed, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -64,6 +64,8 @@ WORDS = {
            "why_graph": "графічно {e} %: похибка побудови ({n} поділок, лінійка {p} мм)",
            "not": "не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
+           "why_approx_small": "наближено {e} %: J {j} %, помножена на J/I_мах = {x} (метод нехтує зміною I^*_м "
+                               "за цикл, а ΔT_{{max}} − ΔT_{{min}} та I^*_{{м сер}} прочитано лінійкою)",
            "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
            "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
            "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
@@ -88,6 +90,9 @@ WORDS = {
            "open": "closure |ω(2π) − ω(0)|/ω_m = {c}",
            "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler)",
            "not": "not needed",
+           "why_approx_small": "approximate {e} %: J {j} %, multiplied by J/I_fl = {x} (the method neglects the "
+                               "change of I^*_m over the cycle, and ΔT_{{max}} − ΔT_{{min}} and I^*_{{m mean}} are read "
+                               "with the ruler)",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
            "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
@@ -253,11 +258,21 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
     errs = flywheel_errors(doc)              # Table 2's δ
+    amp = amplified(f)                       # the flywheel a small part of J: each error J's times J/I_fl
     for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
                      ("merkalov_error_pct", "why_merk")):
         if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
-            said.append(w["mark"] + w[why].format(e=error_text(errs[key], lang), n=doc["divisions"],
-                                                  p=num(doc["precision_mm"], lang)))
+            e = error_text(errs[key], lang)
+            line = amplified_note(f, lang, e) if key == "error_pct" else None
+            if line is None:
+                line = w[why].format(e=e, n=doc["divisions"], p=num(doc["precision_mm"], lang))
+                j = None if amp is None else errs[key] * amp["share"] / 100.0    # J's error: I_fl's × I_fl/J
+                if amp is not None and key == "approximate_error_pct":
+                    # its J read off ΔT(φ) and I*(φ) by the same ruler: not the method's error alone
+                    line = w["why_approx_small"].format(e=e, j=signed(j, lang), x=num(100.0 / amp["share"], lang, 2))
+                elif amp is not None:        # the method's own error is J's: said beside I_fl's
+                    line = line.replace(" %:", f" % (J {signed(j, lang)} %):", 1)
+            said.append(w["mark"] + line)
     said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
     if short is not None:
         said.append(short_note(short, lang))
@@ -566,11 +581,36 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
 
+ROWED = 0     # ``parts``: the table of the positions over the results' tables side by side
+
+
+def _tables_size(groups: list[list[Leaf]], parts: int) -> tuple[float, float]:
+    """The tables' size: in columns (``column_size``), or ``ROWED`` the first group over the second's
+    tables side by side."""
+    if parts != ROWED:
+        return column_size(groups)
+    (first,), rest = groups
+    return (max(first.w, column_size([[t] for t in rest])[0]),
+            first.h + GAP + max(t.h for t in rest))
+
+
+def _set_tables(groups: list[list[Leaf]], parts: int, right: float, top: float) -> list[Placed]:
+    """The tables placed, their block's right side at ``right`` and top at ``top`` (``set_columns``;
+    ``ROWED``: the first table at the block's left over the others in a row)."""
+    if parts != ROWED:
+        return set_columns(groups, right - column_size(groups)[0], top)
+    left = right - _tables_size(groups, parts)[0]
+    (first,), rest = groups
+    return (set_columns([[first]], left, top)
+            + set_columns([[t] for t in rest], left, top - first.h - GAP))
+
+
 def _column(f: Form, tables: list[Leaf], parts: int, height, shape: str = "") -> tuple[Leaf, list[list[Leaf]], float]:
     """The tables over the notes, over the title block but in "side" (the column at the left);
-    ``height`` None: the notes stand elsewhere (in the band's ``nook``)."""
-    groups = split(tables, parts)
-    cw, ch = column_size(groups)
+    ``height`` None: the notes stand elsewhere (in the band's ``nook``). ``parts``: the tables in
+    that many columns, or ``ROWED``."""
+    groups = [tables[:1], tables[1:]] if parts == ROWED else split(tables, parts)
+    cw, ch = _tables_size(groups, parts)
     width = max(cw, TITLE)
     foot = 0.0 if shape == "side" else GAP + keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + (0.0 if height is None else GAP + height(width)) + foot), groups, width
@@ -682,7 +722,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                                          [(b, w) for b, (w, _) in zip(bx, wh)])
         return banded[(L, size, length)]
 
-    def notes_in_nook(boxes_, per, shape: str, C: Leaf) -> bool:
+    def notes_in_nook(boxes_, per, shape: str, C: Leaf, leaves: dict[str, Leaf]) -> bool:
         """Each language's notes in its band's nook, the band centred in the box the composition
         gives it with that language's drawings (ω(φ) at its smallest: the box only grows)."""
         for (b, bw), p in zip(boxes_, per):
@@ -721,18 +761,22 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         else:
             lo = k + 1
     L, size = found if found is not None else sizes[-1]
-    if found is not None and scales_only:     # the band at its shortest φ axis held by a composition (the
-        shortest = _lengths(L)[-1]            # notes in the column): the search below keeps (L, size)
-        for factor in (TABLES, 1.0):
-            leaves, tables, notes_, _ = measured(L, size, factor)
-            leaves["band"] = band_leaf(L, size, shortest)
-            for shape in SHAPES:
-                for parts in (1, 2, 3):
-                    C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
-                    tw, th = extent(_tree(shape, leaves, C, foot))
-                    if tw <= W + 1e-9 and th <= H + 1e-9:
-                        return L, size
-    if found is not None:                 # the band: its longest φ axis at which the sheet holds it
+
+    def held(L: float, size: float):
+        """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
+        nook where they fit it), or None."""
+        if scales_only:                   # the band at its shortest φ axis (the notes in the column)
+            shortest = _lengths(L)[-1]
+            for factor in (TABLES, 1.0):
+                leaves, tables, notes_, _ = measured(L, size, factor)
+                leaves["band"] = band_leaf(L, size, shortest)
+                for shape in SHAPES:
+                    for parts in (1, 2, 3):
+                        C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
+                        tw, th = extent(_tree(shape, leaves, C, foot))
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            return L, size
+            return None
         for factor in (TABLES, 1.0):
             leaves, tables, notes_, per = measured(L, size, factor)
             for length in _lengths(L):
@@ -751,8 +795,29 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                             tree = _tree(shape, leaves, C, foot)
                             tw, th = extent(tree)
                             if tw <= W + 1e-9 and th <= H + 1e-9 and (
-                                    not in_nook or notes_in_nook(nooks, per, shape, C)):
+                                    not in_nook or notes_in_nook(nooks, per, shape, C, leaves)):
+                                if shape == "speed" and parts == 1 and rowed(leaves, tables, shape, foot, in_nook,
+                                                                            notes_):
+                                    parts = ROWED
                                 return L, size, factor, shape, parts, length, in_nook
+        return None
+    def rowed(leaves, tables, shape: str, foot_: float, in_nook: bool, notes_) -> bool:
+        """ω(φ) over the column beside the moments and the band ("speed") spans the room right of
+        them, the one column of tables only its width: the results' tables side by side under the
+        positions' (``ROWED``) where the sheet still holds it — the column shorter, ω(φ) taller, no
+        strip of paper left of the tables (the compressor: ~140 × 400 mm)."""
+        C = _column(f, tables, ROWED, None if in_nook else lambda w: notes_height(notes_, w), shape)[0]
+        tw, th = extent(_tree(shape, leaves, C, foot_))
+        return tw <= W + 1e-9 and th <= H + 1e-9
+
+    if found is not None:                 # the band: the largest scales from the classical ones down at
+        start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
+        for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
+            if k > start and fit(k) is None:  # its one A1 sheet came out as three)
+                continue
+            got = held(*sizes[k])
+            if got is not None:
+                return got
     # else a set of sheets: each drawing at the scales a sheet of its own holds
 
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
@@ -1059,7 +1124,10 @@ def _set_flow(rows: list[list[Leaf]], tables: list[Leaf], notes: Leaf, region, k
                 ways += [[[t1]] + rows[:-1] + [rows[-1][:-1]] + [rows[-1][-1:] + tail[0]]
                          for t1 in ([lead] if lead else []) + tables[:1]]
             else:
-                ways = [[tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
+                # the constructions in their order after the tables (ω(φ) last, as it is derived), where that
+                # takes no more sheets than ω(φ) beside the tables (stop 48's compressor: tables, ω(φ), then
+                # the moments and the band)
+                ways = [[tail[0]] + rows, [tail[0] + rows[-1][-1:]] + rows[:-1] + [rows[-1][:-1]]]
             for first in ways:
                 laid = flow([r for r in first if r], region, keep, later=later)
                 if laid is not None and not _notes_alone(laid[-1]):
@@ -1228,7 +1296,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
             nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
         items.append(Placed("notes", top_left(nrec, nb), nb))
-        items += set_columns(groups, col_box[2] - column_size(groups)[0], col_box[3])
+        items += _set_tables(groups, parts, col_box[2], col_box[3])
         pages = [items]
     from graphplan.util.words import word
     tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
