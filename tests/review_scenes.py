@@ -2543,3 +2543,97 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+# Stop 48 (the lead's check): a V-compressor, two connecting rods on the one crank pin A, each driving a
+# piston on its own guide at 45° / 135° through O (I(0-1) -> II(2-3) RRP and II(4-5) RRP, both on the crank).
+LINK48 = '''
+# Stop 48 (the lead's check): a V-compressor — two connecting rods on the one crank pin A, each driving a
+# piston on its own guide, the guides at ±45° from the vertical (I(0-1) -> II(2-3) RRP and II(4-5) RRP,
+# both groups on the crank); the crank counter-clockwise, the working force on piston B; dynamics to a
+# 1500-rpm motor.
+title = "V-подібний двоциліндровий компресор"
+title_en = "V-type two-cylinder compressor"
+designation = "ТММ.КМ.48.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-48"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+b = { through = [0, 0], angle_deg = 45, title_uk = "лівого поршня", title_en = "of the left piston" }
+c = { through = [0, 0], angle_deg = 135, title_uk = "правого поршня", title_en = "of the right piston" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.05
+rpm = 960
+direction = "ccw"
+points = { S1 = 0.3 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.2
+points = { S2 = 0.35 }
+mass = 2.2
+inertia = 0.009
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "b"
+mass = 1.8
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.2
+points = { S4 = 0.35 }
+mass = 2.2
+inertia = 0.009
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "c"
+mass = 1.8
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+output = "B"
+start = "max"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 2400
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
