@@ -98,7 +98,7 @@ def test_the_sheet_note_says_what_was_tried(sheet_diagrams, lang):
         worst = int(np.argmax(np.abs(errs[key])))
         assert comma(f"{abs(errs[key][worst]):.2f} %") in note
         chords = abs(own[key][worst]) > LAB_LIMIT
-        cause = own[key][worst] if chords else on_s[key][worst]
+        cause = own[key][worst] if chords or abs(on_s[key][worst]) <= LAB_LIMIT else on_s[key][worst]
         assert comma(f"{abs(cause):.1f} %") in note
         assert (("own error" in note) if lang == "en" else ("власна похибка" in note)) or not chords
     if all(t.worst_pct > LAB_LIMIT for t in d.alternatives()):

@@ -110,7 +110,8 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     readings past the lab's 5 % by symbol — its worst positions with their δ — and, for each symbol,
     its one cause, measured: the chords' (or tangents') own error where the same construction with an
     exact ruler misses 5 % too at the worst of them (that δ given), else the ruler's half division on
-    s amplified by the differentiations (the δ of the ruler on s alone, ``ruler_on_s``); then
+    s amplified by the differentiations where that alone misses 5 % (the δ of the ruler on s alone,
+    ``ruler_on_s``), else the two together (the chords' own δ given); then
     whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
     ``diagrams`` keeps the long form with every number. None where all are within."""
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
@@ -132,8 +133,10 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
             said.append((reading, "", None))
         elif abs(own[key][worst]) > LAB_LIMIT or on_s is None or key not in on_s:
             said.append((reading, "own", float(own[key][worst])))
-        else:
+        elif abs(on_s[key][worst]) > LAB_LIMIT:
             said.append((reading, "ruler", float(on_s[key][worst])))
+        else:           # neither alone past 5 %: the chords' error and the ruler's readings add up
+            said.append((reading, "both", float(own[key][worst])))
     if not said:
         return None
     step = num(360.0 / d.divisions, lang, 3)
@@ -145,7 +148,7 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     else:
         own_what = f"власна похибка хорд при кроці {step}°" if uk else f"the chords' own error at the {step}° step"
     parts = []
-    for cause in ("", "own", "ruler"):      # one cause said once, after the readings it explains
+    for cause in ("", "own", "ruler", "both"):      # one cause said once, after the readings it explains
         group = [x for x in said if x[1] == cause]
         if not group:
             continue
@@ -156,6 +159,10 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
         if cause == "own":
             readings += (f" — {own_what} (з точною лінійкою {values})" if uk else
                          f" — {own_what} ({values} with an exact ruler)")
+        elif cause == "both":
+            readings += (f" — {own_what} ({values} з точною лінійкою) разом із похибками відліків лінійкою {p} мм"
+                         if uk else f" — {own_what} ({values} with an exact ruler) and the {p}-mm ruler's "
+                                    f"readings together")
         elif cause == "ruler":
             readings += (f" — відлік {s0} лінійкою {p} мм, підсилений диференціюванням (лише від нього {values})"
                          if uk else f" — the {p}-mm ruler on {s0}, amplified by the differentiation "
