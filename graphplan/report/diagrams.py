@@ -111,7 +111,7 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     its one cause, measured: the chords' (or tangents') own error where the same construction with an
     exact ruler misses 5 % too at the worst of them (that δ given), else the ruler's half division on
     s amplified by the differentiations where that alone misses 5 % (the δ of the ruler on s alone,
-    ``ruler_on_s``), else the two together (the chords' own δ given); then
+    ``ruler_on_s``), else the ruler's readings all told (the exact ruler's δ given); then
     whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
     ``diagrams`` keeps the long form with every number. None where all are within."""
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
@@ -135,7 +135,7 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
             said.append((reading, "own", float(own[key][worst])))
         elif abs(on_s[key][worst]) > LAB_LIMIT:
             said.append((reading, "ruler", float(on_s[key][worst])))
-        else:           # neither alone past 5 %: the chords' error and the ruler's readings add up
+        else:           # neither alone past 5 %: the ruler's readings (of s, and of v off its diagram)
             said.append((reading, "both", float(own[key][worst])))
     if not said:
         return None
@@ -160,9 +160,8 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
             readings += (f" — {own_what} (з точною лінійкою {values})" if uk else
                          f" — {own_what} ({values} with an exact ruler)")
         elif cause == "both":
-            readings += (f" — {own_what} ({values} з точною лінійкою) разом із похибками відліків лінійкою {p} мм"
-                         if uk else f" — {own_what} ({values} with an exact ruler) and the {p}-mm ruler's "
-                                    f"readings together")
+            readings += (f" — відліки лінійкою {p} мм (з точною лінійкою {values})" if uk else
+                         f" — the {p}-mm ruler's readings ({values} with an exact ruler)")
         elif cause == "ruler":
             readings += (f" — відлік {s0} лінійкою {p} мм, підсилений диференціюванням (лише від нього {values})"
                          if uk else f" — the {p}-mm ruler on {s0}, amplified by the differentiation "
