@@ -913,7 +913,7 @@ def place_owned(record: Record, requests: list[LabelRequest], layer: str = "labe
         boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
         spot = next(((tuple(boxes[k]), complex(starts[k]), None)
                      for k in np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
-                     if own(boxes[k])), None)
+                     if own(boxes[k]) and (not req.sight or _in_sight(local, req.at, boxes[k]))), None)
         if spot is None:
             spot = _far(ob.near(req.at, FAR[-1] + size), req, ink)
         if spot is None:

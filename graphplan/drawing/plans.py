@@ -18,6 +18,7 @@ from graphplan.graphic.position_plan import Arc
 
 ARC_HALF = 5.0       # mm of arc drawn each side of a construction point (a "засічка")
 BLOCK = (9.0, 5.0)   # slider block drawn on the thick positions, mm
+BLOCK_CLEAR = 0.5    # mm the guide's hatching stops short of a block on it
 
 
 def _pt(z: complex) -> tuple[float, float]:
@@ -290,10 +291,15 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
         lo, hi = min(along) - 12.0, max(along) + 12.0
         rec.segment(_pt(base + lo * u), _pt(base + hi * u), role="frame", layer="frame", step=f"guide {gname}")
         normal = -1j * u
+        # the hatching stops at a block drawn on the guide (a thick position's, BLOCK wide): the
+        # block sits on the guide's hatched side, and strokes through it read as drawn over it
+        blocks = [((lay.poses[s].at(mech.links[s].local[next(iter(mech.links[s].local))]) - base)
+                   * u.conjugate()).real for lay in (thick or []) for s in sliders]
         t = lo
         while t <= hi:
-            s = base + t * u + normal * 2.5
-            rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
+            if not any(t - 2.0 < c + BLOCK[0] / 2 + BLOCK_CLEAR and t > c - BLOCK[0] / 2 - BLOCK_CLEAR for c in blocks):
+                s = base + t * u + normal * 2.5
+                rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
             t += 4.0
     return outlines
 

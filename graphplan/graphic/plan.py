@@ -380,7 +380,9 @@ class Plan:
         centre = sum((p for p, _ in groups), 0j) / len(groups)
         for at, names in groups:
             toward = at - centre if abs(at - centre) > 1e-9 else -1j
-            self.labels.append(LabelRequest(at, ", ".join(names), toward=toward, size=3.5))
+            # in sight of its point: s1 at 0.3 of p_v a, set across the line p_v s2 beside it, read
+            # as that line's (stop 48's V-compressor): no line between a letter and its point
+            self.labels.append(LabelRequest(at, ", ".join(names), toward=toward, size=3.5, sight=True))
 
     def percent_errors(self) -> None:
         """error % = 100·(value − analytic)/analytic, left out (None) where the exact vector the

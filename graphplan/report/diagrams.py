@@ -97,12 +97,90 @@ def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {subscripted(d.point)}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
-    said = redrawn_note(d, lang)
+    said = redrawn_note(d, lang, short=True)
     lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
-    said = limit_note(d, lang, table)
+    said = short_limit_note(d, lang, table)
     lines += [said] if said else []
     return lines
+
+
+def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
+    """The sheet's short form of ``limit_note`` (a teacher reads a statement, not the search): the
+    readings past the lab's 5 % by symbol — its worst positions with their δ — and, for each symbol,
+    its one cause, measured: the chords' (or tangents') own error where the same construction with an
+    exact ruler misses 5 % too at the worst of them (that δ given), else the ruler's half division on
+    s amplified by the differentiations where that alone misses 5 % (the δ of the ruler on s alone,
+    ``ruler_on_s``), else the ruler's readings all told (the exact ruler's δ given); then
+    whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
+    ``diagrams`` keeps the long form with every number. None where all are within."""
+    from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
+    errs, own, on_s = d.position_errors(), d.position_errors(d.exact), ruler_on_s(d)
+    idx = d.at_positions
+    uk = lang == "uk"
+    said: list[tuple[str, str, float | None]] = []     # (the readings, the cause, its δ) a symbol
+    for key, sym in (("s", d.symbols[0]), ("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
+        past = [i for i in np.argsort(-np.abs(errs[key])) if abs(errs[key][i]) > LAB_LIMIT]
+        if not past:
+            continue
+        bad = past[:NAMED]
+        name = f"{sym}_{{{d.sub}}}"
+        more = " …" if len(past) > len(bad) else ""
+        where = ", ".join(f"{d.position[idx[i]]} ({_signed(errs[key][i], lang, 2)} %)" for i in sorted(bad)) + more
+        reading = f"{name} у положеннях {where}" if uk else f"{name} at positions {where}"
+        worst = bad[0]
+        if key == "s":
+            said.append((reading, "", None))
+        elif abs(own[key][worst]) > LAB_LIMIT or on_s is None or key not in on_s:
+            said.append((reading, "own", float(own[key][worst])))
+        elif abs(on_s[key][worst]) > LAB_LIMIT:
+            said.append((reading, "ruler", float(on_s[key][worst])))
+        else:           # neither alone past 5 %: the ruler's readings (of s, and of v off its diagram)
+            said.append((reading, "both", float(own[key][worst])))
+    if not said:
+        return None
+    step = num(360.0 / d.divisions, lang, 3)
+    s0, p = f"{d.symbols[0]}_{{{d.sub}}}", num(d.precision, lang)
+    if d.method == "tangents":
+        own_what = "власна похибка дотичних" if uk else "the tangents' own error"
+    elif d.adaptive:
+        own_what = "власна похибка хорд" if uk else "the chords' own error"
+    else:
+        own_what = f"власна похибка хорд при кроці {step}°" if uk else f"the chords' own error at the {step}° step"
+    parts = []
+    for cause in ("", "own", "ruler", "both"):      # one cause said once, after the readings it explains
+        group = [x for x in said if x[1] == cause]
+        if not group:
+            continue
+        readings = "; ".join(x[0] for x in group)
+        named = len(group) > 1          # each cause's δ by its symbol where it explains two
+        values = ", ".join((f"{x[0].split(' ')[0]} " if named else "") + _signed(x[2], lang, 1) + " %"
+                           for x in group if x[2] is not None)
+        if cause == "own":
+            readings += (f" — {own_what} (з точною лінійкою {values})" if uk else
+                         f" — {own_what} ({values} with an exact ruler)")
+        elif cause == "both":
+            readings += (f" — відліки лінійкою {p} мм (з точною лінійкою {values})" if uk else
+                         f" — the {p}-mm ruler's readings ({values} with an exact ruler)")
+        elif cause == "ruler":
+            readings += (f" — відлік {s0} лінійкою {p} мм, підсилений диференціюванням (лише від нього {values})"
+                         if uk else f" — the {p}-mm ruler on {s0}, amplified by the differentiation "
+                                    f"({values} from it alone)")
+        parts.append(readings)
+    if not parts:
+        return None
+    ref = (f" (табл. {table}, *)" if uk else f" (Table {table}, *)") if table else ""
+    trials = [t for t in d.alternatives() if t.key != "adaptive none"]
+    within = [t for t in trials if t.worst_pct <= LAB_LIMIT]
+    if within:
+        names = ", ".join(_short(t, uk) for t in within)
+        tail = f"; у межах 5 % дає: {names}" if uk else f"; within 5 % with: {names}"
+    elif trials or (d.redrawn is not None and d.redrawn.off_after is not None):
+        tail = "; жодна інша випробувана побудова не дає 5 %" if uk else "; no other construction tried reaches 5 %"
+    else:
+        tail = ""
+    return ((f"Значення з діаграм виходять за 5 % лабораторної{ref}: " if uk else
+             f"Values read off the diagrams miss the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
 
 
 NAMED = 2     # the worst readings a note names a diagram, and a third where the chords' own error is past 5 %
@@ -203,11 +281,12 @@ def _tried(d: Diagrams, lang: str) -> str:
     return (f"; випробувано: {', '.join(items)} — {verdict}" if uk else f"; tried: {', '.join(items)} — {verdict}")
 
 
-def redrawn_note(d: Diagrams, lang: str) -> str | None:
+def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
     """What graphic.redraw did, in one line (markup): the options the diagrams were redrawn with so
     that they are qualitatively right, or read closer to the exact at the positions (the largest
-    |δ| before → after), or that nothing the lab allows made them right. None where the first
-    drawing was kept."""
+    |δ| before → after), or that nothing the lab allows made them right. ``short`` (the sheet's):
+    where the first drawing was qualitatively wrong, the why without the δ before → after (Table 4
+    prints the δ drawn). None where the first drawing was kept."""
     rd = d.redrawn
     if rd is None or not (rd.wrong_before or rd.changed):
         return None
@@ -251,7 +330,7 @@ def redrawn_note(d: Diagrams, lang: str) -> str | None:
         return (f"Діаграми побудовано заново: {how} — {off}" if uk else f"Diagrams redrawn: {how} — {off}")
     syms = ", ".join(f"{d.symbols[1 if key == 'v' else 2]}_{{{d.sub}}}" for key in rd.wrong_before)
     many = len(rd.wrong_before) > 1
-    tail = f"; {off}" if off else ""
+    tail = f"; {off}" if off and not short else ""     # the sheet's short form: the why, not the δ (Table 4 has it)
     if uk:
         return (f"Діаграми {syms} побудовано заново: {how} — перші мали екстремуми, нулі чи уступи, яких немає в русі{tail}"
                 if many else

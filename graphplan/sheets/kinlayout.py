@@ -780,7 +780,8 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
     under it, then the diagrams: no sheet holds a position plan alone), the velocity plans as many
     equal cells to a row as the width holds, the acceleration plans likewise, their last row
     (unpadded) followed by the tables and the notes — a lone acceleration plan shares its sheet
-    with the tables instead of taking one for itself."""
+    with the tables instead of taking one for itself; or, where the diagrams stand in a row of
+    their own, the acceleration plans beside them where that row holds them."""
     def grid(cells_: list[Leaf]) -> list[list[Leaf]]:
         """The cells as one row that ``flow`` wraps where the room ends (a row cut short by the title
         block or a sheet's foot goes on in the next line, not as a line of its own: the six-bar's A3
@@ -807,6 +808,10 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
                 first, V = [[P, Grid(V[:k], c)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
             return first + grid(V) + grid(A) + [[D], Shelf(tail)]
+        if A and D.w + sum(GAP + a.w for a in A) <= width + 1e-9 and max(a.h for a in A) <= D.h + 1e-9:
+            # the acceleration plans beside the diagrams where the row holds them, no taller (the
+            # V-compressor's A2 left 230 × 280 mm beside its diagrams empty, the plan on the next sheet)
+            return first + grid(V) + [[D] + list(A), Shelf(tail)]
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:

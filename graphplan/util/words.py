@@ -272,8 +272,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
-    "kin dash": ('— : немає (мм для ε; δ там, де вектор коротший за півподілки лінійки або точне значення ≈ 0)',
-                 '— : none (mm of ε; δ where a vector is under half a ruler division or the exact value is ≈ 0)'),
+    "kin dash": ('«—» у таблицях: мм для ε немає; δ не обчислено, де вектор коротший за півподілки лінійки або '
+                 'точне значення ≈ 0',
+                 '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
+                 'the exact value is ≈ 0'),
     "kin signs": ('Знаки s, v, a (таблиці, діаграми): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, diagrams): + along the guide {guide}'),
     "kin flipped": ('; діаграми s, v, a побудовано дзеркально (вгору −s)', '; the s, v, a diagrams are drawn mirrored (up = −s)'),
     "kin signs_link": ('Знаки {sym}_{{{n}}} (кут ланки {link} від положення 0), ω_{{{n}}}, ε_{{{n}}} (таблиці, діаграми): + проти годинникової стрілки', 'Signs of {sym}_{{{n}}} (the angle of link {link} from position 0), ω_{{{n}}}, ε_{{{n}}} (tables, diagrams): + counter-clockwise'),
