@@ -260,3 +260,33 @@ def test_a1_set_hodographs_fill_their_row_each_in_its_own_cell():
         # its cell: no more than the tallest record of its row (plus the caption's slack)
         row = [q.record.bounds() for q in hods.values() if q.box[3] == pytest.approx(pl.box[3])]
         assert pl.box[3] - pl.box[1] <= max(b[3] - b[1] for b in row) + 1.0
+
+
+def _to_segment(z: complex, a: complex, b: complex) -> float:
+    """The distance (mm) from z to the segment ab."""
+    d = b - a
+    t = 0.0 if abs(d) < 1e-12 else min(1.0, max(0.0, ((z - a) * d.conjugate()).real / abs(d) ** 2))
+    return abs(z - (a + t * d))
+
+
+def test_the_scheme_parts_g5_and_phi5_and_keeps_m5s_arc_off_them(lever):
+    """Review 47 #3: on the scheme G5 and Φ5 both run down from S5 (G5 vertical, Φ5 against a_S5
+    — 1.3° apart), their arrows 2.3 mm apart: the two 2 mm heads read as one arrow, and M^Φ5's
+    arc came down between them. Measured on the drawn scheme: the two shafts at least 4 mm apart
+    along their length; the arc centred at S5 nowhere within 0.5 mm of either shaft."""
+    import cmath
+    import math
+    from graphplan.drawing.forces import mechanism_record
+    fp, _ = lever
+    rec = mechanism_record(fp, "uk")
+    vec = {q.text: [complex(*p) for p in q.points] for q in rec.items if q.kind == "vector" and q.text in ("G5", "Φ5")}
+    g, f = vec["G5"], vec["Φ5"]
+    assert min(_to_segment(z, *g) for z in (f[0], f[1], 0.5 * (f[0] + f[1]))) >= 4.0, (g, f)
+    s5 = g[0] if abs(g[0] - f[0]) < abs(g[1] - f[0]) else g[1]
+    arcs = [q for q in rec.items if q.kind == "arc" and abs(complex(*q.points[0]) - s5) < 0.5]
+    assert len(arcs) == 1
+    q = arcs[0]
+    a0, a1 = q.angles
+    for k in range(41):
+        z = s5 + q.radius * cmath.exp(1j * math.radians(a0 + (a1 - a0) * k / 40))
+        assert _to_segment(z, *g) > 0.5 and _to_segment(z, *f) > 0.5, (k, z)
