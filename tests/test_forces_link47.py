@@ -226,8 +226,11 @@ def test_free_box_widens_a_box_to_its_neighbours_and_the_field():
     from graphplan.sheets.forces import _free_box
     got = _free_box((40, 40, 60, 60), [(0, 0, 20, 100)], (0, 0, 100, 100), (70, 0, 100, 10), 6.0)
     assert got == pytest.approx((26, 16, 100, 100))
-    # nothing to widen into: the box itself
+    # a box already closer than the gap to another drawing (2 mm): none
     assert _free_box((0, 0, 10, 10), [(0, 12, 10, 20), (12, 0, 20, 10)], (0, 0, 20, 20), (30, 30, 40, 40),
+                     6.0) is None
+    # nothing to widen into: the box itself
+    assert _free_box((0, 0, 10, 10), [(0, 16, 20, 20), (16, 0, 20, 16)], (0, 0, 20, 20), (30, 30, 40, 40),
                      6.0) == pytest.approx((0, 0, 10, 10))
 
 

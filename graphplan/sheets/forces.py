@@ -729,12 +729,16 @@ class Plan:
     gap: float = SPACE               # a set: mm between its drawings (``SPACE``, else ``GAP`` where that saves a sheet)
 
 
-def _free_box(inner: Box, others: list[Box], region: Box, keep: Box, gap: float) -> Box:
+def _free_box(inner: Box, others: list[Box], region: Box, keep: Box, gap: float) -> Box | None:
     """The box ``inner`` widened left and right, then up and down, as far as the field goes without
-    coming within ``gap`` of another drawing's box or the title block's ``keep``."""
+    coming within ``gap`` of another drawing's box or the title block's ``keep``; None where
+    ``inner`` itself is not that clear (a set's hodographs beside a chart that stands within their
+    cells' bounding box: the shaper's A3 sheet 4)."""
     def clear(b: Box) -> bool:
         return all(b[2] + gap <= o[0] + 1e-9 or o[2] + gap <= b[0] + 1e-9
                    or b[3] + gap <= o[1] + 1e-9 or o[3] + gap <= b[1] + 1e-9 for o in others + [keep])
+    if not clear(inner):
+        return None
     x0, y0, x1, y1 = inner
     lefts = [o[2] + gap for o in others + [keep] if o[2] <= x0 + 1e-9 and o[1] < y1 and o[3] > y0]
     rights = [o[0] - gap for o in others + [keep] if o[0] >= x1 - 1e-9 and o[1] < y1 and o[3] > y0]
@@ -764,6 +768,8 @@ def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: B
     inner = (min(q.box[0] for q in hod), min(q.box[1] for q in hod), max(q.box[2] for q in hod),
              max(q.box[3] for q in hod))
     room = _free_box(inner, [q.box for q in rest], region, keep, p.gap)
+    if room is None:
+        return items
     keys = [q.name.removeprefix("hodograph ") for q in hod]
     mu0 = p.mu["hodographs"]
     shared = _hodographs_share(dr, mu0)
@@ -779,6 +785,13 @@ def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: B
         return Grid([Leaf(k, w, h, r) for k, (w, h), r in zip(keys, cells, drawn(mu_h, lang))], cols, p.gap,
                     fitted=True)
 
+    def flaws(mu_h: float) -> int:
+        """The lettering touching a line or lettering in the hodographs drawn so (both languages,
+        drawing.labels.collisions): a larger drawing may set a number on its own axis."""
+        from graphplan.drawing.labels import collisions
+        return dr._once(("fitted hodographs' flaws", round(mu_h, 12), tuple(keys)), lambda: sum(
+            len(collisions(r)) for lg in LANGS for r in drawn(mu_h, lg)))
+
     W, H = room[2] - room[0], room[3] - room[1]
     best = None
     factors = sorted({1.0 / mu0} | {k for k in (*FACTORS, *SET_HODOGRAPHS_FACTORS)
@@ -786,6 +799,8 @@ def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: B
     for k in factors:
         mu_h = 1.0 / k
         if _hodographs_share(dr, mu_h) != shared:        # the notes say "0–2" as planned
+            continue
+        if mu_h != mu0 and flaws(mu_h) > flaws(mu0):      # no lettering the planned size had not
             continue
         fitting = [g for g in (grid(mu_h, c) for c in range(1, len(keys) + 1)) if fits(g, W, H)]
         if not fitting:
@@ -800,10 +815,9 @@ def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: B
     # the grid round the planned cells' centre, moved only as far as the room needs
     bx0 = min(max(cx - gw / 2, room[0]), room[2] - gw)
     by0 = min(max(cy - gh / 2, room[1]), room[3] - gh)
-    out = list(rest)
-    for leaf, b in arrange(best, (bx0, by0, bx0 + gw, by0 + gh)):
-        out.append(Placed(f"hodograph {leaf.name}", centred(leaf.record, b), b))
-    return out
+    new = {f"hodograph {leaf.name}": Placed(f"hodograph {leaf.name}", centred(leaf.record, b), b)
+           for leaf, b in arrange(best, (bx0, by0, bx0 + gw, by0 + gh))}
+    return [new.get(q.name, q) for q in items]       # each where it stood in the sheet's reading order
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
