@@ -42,6 +42,26 @@ def test_no_detail_where_every_side_carries_its_name():
     assert plan_detail(sides, 10.0) is None
 
 
+
+def test_a_detail_where_short_sides_are_specks_beside_the_plans_longest():
+    """Review 47 #2: LINK47's crank plan drew G1 (4 mm) and Φ1 (4.5 mm) at the tip of R21's 271 mm
+    sliver — each named, yet 1.5 % of the plan: a speck. Short sides (under 5 mm) under 2 % of the
+    longest side are drawn again in a detail; the same short sides beside a 95 mm side are not."""
+    from graphplan.drawing.forces import plan_detail
+    from graphplan.graphic.forceplans import Side
+    tip = -4j - 4.5
+    sides = [Side("G1", 0j, -4j, "known"), Side("Φ1", -4j, tip, "known"),
+             Side("R21", tip, tip + 271 * complex(math.cos(0.05), math.sin(0.05)), "known")]
+    sides.append(Side("R01", sides[-1].end, 0j, "reaction"))
+    d = plan_detail(sides, 5.0)
+    assert d is not None
+    # the window rings G1 and Φ1 (their spot, 4.5 × 4 mm, padded), not the long sides
+    assert d.box[2] - d.box[0] < 10 and d.box[3] - d.box[1] < 10
+    short = [Side("G1", 0j, -4j, "known"), Side("Φ1", -4j, tip, "known"),
+             Side("R21", tip, 90 + 30j, "known"), Side("R01", 90 + 30j, 0j, "reaction")]
+    assert plan_detail(short, 5.0) is None
+
+
 @pytest.fixture(scope="module")
 def crank_plan():
     from graphplan.drawing.forces import polygon_record

@@ -216,3 +216,80 @@ def test_a1_set_hodographs_grow_into_their_sheets_room():
         for i, a in enumerate(boxes):
             for b in boxes[i + 1:]:
                 assert _overlap(a, b) < 1e-6, (a, b)
+
+
+def test_free_box_widens_a_box_to_its_neighbours_and_the_field():
+    """The free room round a drawing's box (``forces._free_box``): measured by hand on a 100 × 100
+    field with a drawing at its left (x 0–20) and the title block at its bottom right: the box
+    (40, 40, 60, 60) widens to x 26–100 (6 mm clear of the drawing), then up to the field's top
+    and down to 6 mm over the block."""
+    from graphplan.sheets.forces import _free_box
+    got = _free_box((40, 40, 60, 60), [(0, 0, 20, 100)], (0, 0, 100, 100), (70, 0, 100, 10), 6.0)
+    assert got == pytest.approx((26, 16, 100, 100))
+    # a box already closer than the gap to another drawing (2 mm): none
+    assert _free_box((0, 0, 10, 10), [(0, 12, 10, 20), (12, 0, 20, 10)], (0, 0, 20, 20), (30, 30, 40, 40),
+                     6.0) is None
+    # nothing to widen into: the box itself
+    assert _free_box((0, 0, 10, 10), [(0, 16, 20, 20), (16, 0, 20, 16)], (0, 0, 20, 20), (30, 30, 40, 40),
+                     6.0) == pytest.approx((0, 0, 10, 10))
+
+
+@pytest.mark.slow
+def test_a1_set_hodographs_fill_their_row_each_in_its_own_cell():
+    """Review 47 #1: sheet 2 drew each of its six hodographs in the largest one's cell (150 ×
+    160 mm), 190 mm and 170 mm blank either side of the grid, R23 a 15 N/mm sliver 25 mm tall
+    in a row 160 mm tall. Measured on the drawn sheet: the hodographs span at least three
+    quarters of the field's width; each is at least twice as tall as at the one-sheet series'
+    largest size (R23 included); a row is no taller than its tallest hodograph's cell."""
+    from graphplan.drawing import charts
+    from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+    from graphplan.sheets.compose import FACTORS, SheetOptions, field_of
+    from graphplan.sheets.forces import build_forces_sheet
+    from graphplan.sheets.form import form
+    st = scene_study(LINK47)
+    f = form("A1")
+    sheet = build_forces_sheet(st, f, SheetOptions(precision=0.5, lang="en", sheet="forces"))
+    x0, _, x1, _ = field_of(f)
+    hods = {pl.name.removeprefix("hodograph "): pl for page in sheet.pages for pl in page.placed
+            if pl.name.startswith("hodograph")}
+    boxes = [pl.record.bounds() for pl in hods.values()]
+    assert max(b[2] for b in boxes) - min(b[0] for b in boxes) >= 0.75 * (x1 - x0)
+    turn = charts.turn(st)
+    for key, pl in hods.items():
+        one = hodograph_record(turn, key, HODOGRAPH_MM * max(FACTORS), lang="en")
+        h1 = one.bounds()[3] - one.bounds()[1]
+        got = pl.record.bounds()
+        assert got[3] - got[1] >= 2 * h1 * 0.8, (key, got, h1)     # the caption's fixed height aside
+        # its cell: no more than the tallest record of its row (plus the caption's slack)
+        row = [q.record.bounds() for q in hods.values() if q.box[3] == pytest.approx(pl.box[3])]
+        assert pl.box[3] - pl.box[1] <= max(b[3] - b[1] for b in row) + 1.0
+
+
+def _to_segment(z: complex, a: complex, b: complex) -> float:
+    """The distance (mm) from z to the segment ab."""
+    d = b - a
+    t = 0.0 if abs(d) < 1e-12 else min(1.0, max(0.0, ((z - a) * d.conjugate()).real / abs(d) ** 2))
+    return abs(z - (a + t * d))
+
+
+def test_the_scheme_parts_g5_and_phi5_and_keeps_m5s_arc_off_them(lever):
+    """Review 47 #3: on the scheme G5 and Φ5 both run down from S5 (G5 vertical, Φ5 against a_S5
+    — 1.3° apart), their arrows 2.3 mm apart: the two 2 mm heads read as one arrow, and M^Φ5's
+    arc came down between them. Measured on the drawn scheme: the two shafts at least 4 mm apart
+    along their length; the arc centred at S5 nowhere within 0.5 mm of either shaft."""
+    import cmath
+    import math
+    from graphplan.drawing.forces import mechanism_record
+    fp, _ = lever
+    rec = mechanism_record(fp, "uk")
+    vec = {q.text: [complex(*p) for p in q.points] for q in rec.items if q.kind == "vector" and q.text in ("G5", "Φ5")}
+    g, f = vec["G5"], vec["Φ5"]
+    assert min(_to_segment(z, *g) for z in (f[0], f[1], 0.5 * (f[0] + f[1]))) >= 4.0, (g, f)
+    s5 = g[0] if abs(g[0] - f[0]) < abs(g[1] - f[0]) else g[1]
+    arcs = [q for q in rec.items if q.kind == "arc" and abs(complex(*q.points[0]) - s5) < 0.5]
+    assert len(arcs) == 1
+    q = arcs[0]
+    a0, a1 = q.angles
+    for k in range(41):
+        z = s5 + q.radius * cmath.exp(1j * math.radians(a0 + (a1 - a0) * k / 40))
+        assert _to_segment(z, *g) > 0.5 and _to_segment(z, *f) > 0.5, (k, z)

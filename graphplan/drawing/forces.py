@@ -125,6 +125,7 @@ PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, 
 
 SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
 LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
+OVER_LANE_MM = 4.5  # … beside another arrow of its point on the same line: the two heads clear apart
 COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most this long (its value in the table)
 
 
@@ -546,7 +547,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             # a lane farther where the first is taken (P_B and Φ3 at B); at a slider's block the
             # lanes start clear of the block (its half height and a millimetre)
             block = any(abs(w - z) < 0.5 for w, _ in guides)
-            first = BLOCK_HALF + 1.0 if block else LANE_MM
+            # beside another arrow of its point (G5 and Φ5 both down from S5: two 2 mm heads
+            # 2.5 mm apart read as one arrow, review 47 #3) a lane wide enough to part the heads
+            first = BLOCK_HALF + 1.0 if block else (LANE_MM if inside else OVER_LANE_MM)
             offs = ((first, first + LANE_MM, first + 2 * LANE_MM, -first, -first - LANE_MM) if away else
                     (first, -first, first + LANE_MM, -first - LANE_MM, first + 2 * LANE_MM))
             if block and mate is not None:      # at a slider's block: the mate's side, the next lane out
@@ -677,6 +680,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                      if abs(e - z) > 0.5 and _on_segment(z, a, b)]
             taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
             taken += [cmath.phase(-g.force) for g in forces if abs(g.at / mu - z) < 0.5]
+            # an arrow set a lane aside at the point (Φ5 beside G5 at S5): where it runs, not its
+            # line through the point (the arc came down between the two, its head on Φ5's tail)
+            taken += [cmath.phase((p + q) / 2 - z) for w, p, q in drawn
+                      if abs(w - z) < 0.5 and abs((p + q) / 2 - z) > 0.5]
             taken += support_dirs(z)                              # the support at a frame pivot
             if omega_at is not None and abs(omega_at - z) < 0.5:  # ω1's arc, away from the crank
                 ck = mech.crank
@@ -1091,6 +1098,7 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
 
 DETAIL_SHORT_MM = 5.0    # a force plan's side drawn shorter than this is drawn again in the plan's detail
 DETAIL_LEAST_MM = (6.0, 5.0, 4.0, 3.0)    # … the shortest of them drawn at least so long, the first with room
+SPECK_SHARE = 0.02       # … or (short) under this share of the plan's longest side: it reads as a speck
 DETAIL_MOST_MM = 30.0    # … and the detail's window at most this across
 DETAIL_PAD = 1.5         # mm round the short sides' spot on the plan (the ring's room)
 DETAIL_CLEAR = 2.0       # mm a detail set within the plan's room keeps off its letters
@@ -1127,7 +1135,10 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     plan, "G1, Φ1 < 3 mm"), or no value is left."""
     from graphplan.drawing.charts import _series_below, hodograph_scale
     short = _knot([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM])
-    if not any(s.mm < TINY_MM for s in short):      # each side long enough to carry its name: none
+    longest = max((s.mm for s in sides), default=0.0)
+    # each side long enough to carry its name, and none a mere speck beside the plan's longest: none
+    # (LINK47's crank plan: G1 4 mm and Φ1 4.5 mm at the tip of R21's 271 mm sliver, review 47 #2)
+    if not any(s.mm < TINY_MM or s.mm < SPECK_SHARE * longest for s in short):
         return None
     zs = [z for s in short for z in (s.start, s.end)]
     x0, x1 = min(z.real for z in zs) - DETAIL_PAD, max(z.real for z in zs) + DETAIL_PAD

@@ -16,8 +16,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from graphplan.drawing.layout import (GAP, Grid, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent,
-                                      flow, set_columns, split, top_left)
+from graphplan.drawing.layout import (GAP, Box, Grid, Leaf, Placed, Row, Stack, arrange, centred, column_size,
+                                      extent, fits, flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets import forceset
@@ -727,6 +727,97 @@ class Plan:
     where: tuple = ()                # a set: the drawings' names on each sheet (kept as drawings grow)
     plan_first: bool = True          # a set: the acceleration plan before the groups, else after them
     gap: float = SPACE               # a set: mm between its drawings (``SPACE``, else ``GAP`` where that saves a sheet)
+
+
+def _free_box(inner: Box, others: list[Box], region: Box, keep: Box, gap: float) -> Box | None:
+    """The box ``inner`` widened left and right, then up and down, as far as the field goes without
+    coming within ``gap`` of another drawing's box or the title block's ``keep``; None where
+    ``inner`` itself is not that clear (a set's hodographs beside a chart that stands within their
+    cells' bounding box: the shaper's A3 sheet 4)."""
+    def clear(b: Box) -> bool:
+        return all(b[2] + gap <= o[0] + 1e-9 or o[2] + gap <= b[0] + 1e-9
+                   or b[3] + gap <= o[1] + 1e-9 or o[3] + gap <= b[1] + 1e-9 for o in others + [keep])
+    if not clear(inner):
+        return None
+    x0, y0, x1, y1 = inner
+    lefts = [o[2] + gap for o in others + [keep] if o[2] <= x0 + 1e-9 and o[1] < y1 and o[3] > y0]
+    rights = [o[0] - gap for o in others + [keep] if o[0] >= x1 - 1e-9 and o[1] < y1 and o[3] > y0]
+    x0, x1 = min(x0, max(lefts + [region[0]])), max(x1, min(rights + [region[2]]))
+    downs = [o[3] + gap for o in others + [keep] if o[3] <= y0 + 1e-9 and o[0] < x1 and o[2] > x0]
+    ups = [o[1] - gap for o in others + [keep] if o[1] >= y1 - 1e-9 and o[0] < x1 and o[2] > x0]
+    out = (x0, min(y0, max(downs + [region[1]])), x1, max(y1, min(ups + [region[3]])))
+    return out if clear(out) else inner
+
+
+def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: Box, keep: Box,
+                       lang: str) -> list[Placed]:
+    """A set's sheet's hodographs set again, each in its own cell of a grid fitted to them
+    (``Grid.fitted``: a column as wide as its widest, a row as tall as its tallest), at the largest
+    size factor (up to ``SET_HODOGRAPHS_LARGEST``, never smaller than planned) and column count
+    that fit the free room round the equal cells the set planned for them — the sheet's other
+    drawings, their sheets and the notes as planned. LINK47's A1 sheet 2: six hodographs in the
+    largest one's 150 × 160 mm cell, the flat R12, R23, R01 (a 15 N/mm sliver each) a 160 mm tall
+    row, 190 and 170 mm blank either side. Sized in both languages, so that the two sheets agree."""
+    from graphplan.drawing.charts import HODOGRAPH_MM, hodograph_record
+    from graphplan.sheets.compose import FACTORS
+    from graphplan.util.words import LANGS
+    hod = [q for q in items if q.name.startswith("hodograph ")]
+    if not hod:
+        return items
+    rest = [q for q in items if not q.name.startswith("hodograph ")]
+    inner = (min(q.box[0] for q in hod), min(q.box[1] for q in hod), max(q.box[2] for q in hod),
+             max(q.box[3] for q in hod))
+    room = _free_box(inner, [q.box for q in rest], region, keep, p.gap)
+    if room is None:
+        return items
+    keys = [q.name.removeprefix("hodograph ") for q in hod]
+    mu0 = p.mu["hodographs"]
+    shared = _hodographs_share(dr, mu0)
+
+    def drawn(mu_h: float, lg: str) -> list[Record]:
+        return dr._once(("fitted hodographs", round(mu_h, 12), lg, tuple(keys)), lambda: [
+            captioned(hodograph_record(dr.turn, k, HODOGRAPH_MM / mu_h, lang=lg),
+                      _caption(f"hodograph {k}", lg), size=SMALL_CAPTION["hodographs"]) for k in keys])
+
+    def grid(mu_h: float, cols: int) -> Grid:
+        sizes = [[_wh(r) for r in drawn(mu_h, lg)] for lg in LANGS]
+        cells = [(max(s[i][0] for s in sizes), max(s[i][1] for s in sizes)) for i in range(len(keys))]
+        return Grid([Leaf(k, w, h, r) for k, (w, h), r in zip(keys, cells, drawn(mu_h, lang))], cols, p.gap,
+                    fitted=True)
+
+    def flaws(mu_h: float) -> int:
+        """The lettering touching a line or lettering in the hodographs drawn so (both languages,
+        drawing.labels.collisions): a larger drawing may set a number on its own axis."""
+        from graphplan.drawing.labels import collisions
+        return dr._once(("fitted hodographs' flaws", round(mu_h, 12), tuple(keys)), lambda: sum(
+            len(collisions(r)) for lg in LANGS for r in drawn(mu_h, lg)))
+
+    W, H = room[2] - room[0], room[3] - room[1]
+    best = None
+    factors = sorted({1.0 / mu0} | {k for k in (*FACTORS, *SET_HODOGRAPHS_FACTORS)
+                                    if 1.0 / mu0 < k <= SET_HODOGRAPHS_LARGEST + 1e-9})
+    for k in factors:
+        mu_h = 1.0 / k
+        if _hodographs_share(dr, mu_h) != shared:        # the notes say "0–2" as planned
+            continue
+        if mu_h != mu0 and flaws(mu_h) > flaws(mu0):      # no lettering the planned size had not
+            continue
+        fitting = [g for g in (grid(mu_h, c) for c in range(1, len(keys) + 1)) if fits(g, W, H)]
+        if not fitting:
+            continue
+        # the fewest rows that fit, then the least blank
+        g = min(fitting, key=lambda g: (g.rows, -g.cols))
+        best = g
+    if best is None:
+        return items
+    gw, gh = extent(best)
+    cx, cy = (inner[0] + inner[2]) / 2, (inner[1] + inner[3]) / 2
+    # the grid round the planned cells' centre, moved only as far as the room needs
+    bx0 = min(max(cx - gw / 2, room[0]), room[2] - gw)
+    by0 = min(max(cy - gh / 2, room[1]), room[3] - gh)
+    new = {f"hodograph {leaf.name}": Placed(f"hodograph {leaf.name}", centred(leaf.record, b), b)
+           for leaf, b in arrange(best, (bx0, by0, bx0 + gw, by0 + gh))}
+    return [new.get(q.name, q) for q in items]       # each where it stood in the sheet's reading order
 
 
 def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
@@ -1693,5 +1784,6 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             corner = {t.name for t in tables} | {"notes"}          # a table at its column's left
             pages.append([Placed(leaf.name, (top_left if leaf.name in corner else centred)(leaf.record, b), b)
                           for leaf, b in laid(spread(spots, region, keep, p.gap), region) if leaf.record is not None])
+            pages[-1] = _hodographs_fitted(dr, p, pages[-1], region, keep, lang)
     tf = fields(st, lang, drawing_scale(p.mu["scheme"], lang), subtitle=w('subtitle'))
     return compose(f, pages, tf, lang, f"{title_in(st, lang)} — {w('subtitle')}")

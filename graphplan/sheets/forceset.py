@@ -330,22 +330,43 @@ def _tables_right(page: Skyline, tables: Sequence[Leaf], notes: Leaf | None, par
             for right in (True, False):
                 if _block(page, split(items, parts, page.gap), None if with_notes else notes, right):
                     return True
-    return _newspaper(page, tables, notes, False, False) or _rows(page, tables, notes)
+    return (_newspaper(page, tables, notes, False, False) or _rows(page, tables, notes, columns=True)
+            or _rows(page, tables, notes))
 
 
-def _rows(page: Skyline, tables: Sequence[Leaf], notes: Leaf | None) -> bool:
+def _next_in_column(placed: list[Spot], x: float, d: float, w: float, gap: float) -> bool:
+    """Whether a table at (x, d), w wide, reads next after the tables ``placed`` as a newspaper's
+    columns read (left to right, each from its top): under the last one, in its column (not
+    reaching back left of it), or at the top of a new column wholly to the right of every one of
+    them."""
+    if not placed:
+        return True
+    last = placed[-1]
+    under = d >= last.d + last.h + gap - 1e-9 and last.x - 1e-9 <= x < last.x + last.w - 1e-9
+    return under or x >= max(s.x + s.w for s in placed) + gap - 1e-9
+
+
+def _rows(page: Skyline, tables: Sequence[Leaf], notes: Leaf | None, columns: bool = False) -> bool:
     """The tables each at the highest free place in turn (side by side where the width holds two,
-    as a row of text), the notes over the title block; whether they fit (taken then)."""
+    as a row of text), the notes over the title block; whether they fit (taken then). ``columns``:
+    each where it reads next as a newspaper's columns read (``_next_in_column``) — LINK48's A2
+    sheet 3 set Table 5 under Table 1, left of Tables 2–4, and Tables 6 and 7 at the top right."""
     trial = copy.deepcopy(page)
     kd = trial.kd
     for keep_notes in ((True, False) if notes is not None else (False,)):
         trial = copy.deepcopy(page)
         if keep_notes:
             trial.kd = kd - notes.h - trial.gap
+        mine: list[Spot] = []
         for t in tables:
-            at = trial.where(t.w, t.h)
+            if columns:
+                at = next((q for q in trial.places(t.w, t.h)
+                           if _next_in_column(mine, q[0], q[1], t.w, trial.gap)), None)
+            else:
+                at = trial.where(t.w, t.h)
             if at is None:
                 break
+            mine.append(Spot(t, at[0], at[1], t.w, t.h, fixed=True))
             trial.put(Spot(t, at[0], at[1], t.w, t.h, fixed=True))
         else:
             trial.kd = kd
