@@ -167,8 +167,6 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
                          if uk else f" — the {p}-mm ruler on {s0}, amplified by the differentiation "
                                     f"({values} from it alone)")
         parts.append(readings)
-    if not parts:
-        return None
     ref = (f" (табл. {table}, *)" if uk else f" (Table {table}, *)") if table else ""
     trials = [t for t in d.alternatives() if t.key != "adaptive none"]
     within = [t for t in trials if t.worst_pct <= LAB_LIMIT]

@@ -366,7 +366,7 @@ def redrawn_note(f, lang: str) -> str | None:
     within the lab's 5 %: redrawn on more divisions (which, instead of which, the errors before and
     after); the given divisions kept (and which would be right); or nothing within the bound right."""
     rd = f.redrawn
-    if rd is None or not rd.needed or getattr(rd, "ruler", False):    # the ruler's: ``amplified_note`` says why
+    if rd is None or not rd.needed or rd.ruler:    # the ruler's: ``amplified_note`` says why
         return None
     uk = lang == "uk"
     e0 = _errs(rd.before, lang)

@@ -214,7 +214,7 @@ def pages_of(kind: str, scene, f, options) -> int:
     return _PAGES[key]
 
 
-def _pages_or_none(kind: str, scene, f, options) -> int:
+def _pages_or_zero(kind: str, scene, f, options) -> int:
     """``pages_of``, or 0 where the scene cannot make that document (its own sheet refuses it with
     one line, e.g. a cycle needing more than the catalogue's largest motor): asking for the
     kinematics sheet is no reason to refuse it for the dynamics' fault; the project is then numbered
@@ -239,7 +239,7 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
         kinds = kinds_of(scene, kind)
         first, total = 1, 0
         for k in kinds:
-            n = len(sheet.pages) if k == kind else _pages_or_none(k, scene, f, options)
+            n = len(sheet.pages) if k == kind else _pages_or_zero(k, scene, f, options)
             if document_number(k) < document_number(kind):
                 first += n
             total += n
