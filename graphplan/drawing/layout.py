@@ -432,11 +432,9 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
         widths summed as ``width`` sums them: the same sum to the bit)."""
         k = keep if (sheet[0] == 0 or later is None) else later
         at = rx0
-        ws = []
         if k is None:
-            for t in items:
-                ws.append(t.w if t.__class__ is Leaf else extent(t)[0])
-            return sum(ws) + gap * (len(items) - 1)
+            return width(items)
+        ws = []
         low, right = k[3] + 1e-9, min(k[0], rx1) + 1e-9
         for t in items:
             w, h = (t.w, t.h) if t.__class__ is Leaf else extent(t)
