@@ -551,6 +551,27 @@ class Floored(Crowded):
         return m if m is not None and self.rel(m) <= self.cap + 1e-9 else None
 
 
+@dataclass
+class Capped(Crowded):
+    """The force plans' family: never drawn with the analysis' largest force longer than ``cap``
+    times its target (``FORCES_MOST``). A group of the third kind loaded by a moment alone (the
+    rocking coulisse's R12 ≈ R03 ≈ 510 N against G, Φ of 14–90 N) grew into the sheet's room to
+    μF = 1 N/mm: 510 mm slivers 40 mm wide across the sheet, their short sides squeezed at one
+    end (review 49 #2) — seed 000 draws its largest force 162 mm."""
+    cap: float = math.inf
+
+    def start(self, k: float) -> float:
+        return super().start(min(k, self.cap))
+
+    def finer(self, mu: float) -> float | None:
+        m = super().finer(mu)
+        return m if m is not None and self.rel(m) <= self.cap + 1e-9 else None
+
+
+# the longest force of a plan drawn at most this times ``POLYGON_MM`` (225 mm) however much room the sheet has
+FORCES_MOST = 1.5
+
+
 HODOGRAPHS_FLOOR = 1.0    # the hodographs' least size factor on one sheet (drawing.charts.HODOGRAPH_MM)
 HODOGRAPHS_CAP = 1.0      # … and the largest they grow to: the room beyond goes to the lever and the charts
 
@@ -589,6 +610,7 @@ def measure(dr: ForceDrafter) -> Natural:
                                        factors=fam in ("charts", "hodographs"), caption=SMALL_CAPTION.get(fam, 5.0),
                                        lettering=LETTERING)
     families = {fam: Crowded(**vars(x)) for fam, x in families.items()}
+    families["forces"] = Capped(**vars(families["forces"]), cap=FORCES_MOST)
     figure = lever_across(fp.lever)
     lines = Record(items=[q for q in recs["lever"][0].items if q.kind != "text"]).bounds()
     # flat hodographs (the press's, 8000 N down and 300 N across: 60 × 15 mm slivers) grow to the
@@ -1307,7 +1329,7 @@ def _drawn_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> int:
 # the field left a six-bar's group sheet 74 % empty by the reviews' 20 mm cells (thin lines, blank corners)
 FILL_SHARE = 0.75
 # … its drawings grown at most so (against their targets)
-FILL_LARGEST = {"scheme": 4.0, "groups": 4.0, "forces": 2.0, "acceleration": 2.0, "charts": 2.0, "hodographs": 2.0}
+FILL_LARGEST = {"scheme": 4.0, "groups": 4.0, "forces": FORCES_MOST, "acceleration": 2.0, "charts": 2.0, "hodographs": 2.0}
 
 
 def _sheet_share(leaves: dict[str, list[Leaf]], names: tuple[str, ...], f: Form) -> float:
@@ -1584,7 +1606,10 @@ def plan_may_grow(longest_mm: float, shortest_mm: float, largest_mm: float) -> b
     drawn no longer than ``SHORT_FORCE_MM`` (the step that brings it to read, no step further): a
     group is drawn at a scale where its smallest force reads (issue 32 #3). The rocker six-bar's
     crank group at 4 N/mm — G1 6 mm, Φ1 4.5 mm, the polygon 58 mm beside 100 mm of empty room —
-    barred from 2.5 N/mm because its R01 came out 93 mm against II(4-5)'s 91.5."""
+    barred from 2.5 N/mm because its R01 came out 93 mm against II(4-5)'s 91.5. Never longer than
+    ``FORCES_MOST`` × ``POLYGON_MM`` (``Capped``)."""
+    if longest_mm > FORCES_MOST * POLYGON_MM + 1e-9:      # no sliver across the sheet (``Capped``)
+        return False
     if longest_mm <= largest_mm + 1e-9:
         return True
     return shortest_mm <= SHORT_FORCE_MM + 1e-9 and longest_mm <= PLAN_BEYOND * largest_mm + 1e-9
