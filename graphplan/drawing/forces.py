@@ -219,6 +219,39 @@ def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
     return abs(z - (a + t * d)) <= tol
 
 
+def _to_segment(z: complex, a: complex, b: complex) -> float:
+    """The distance from ``z`` to the segment ab, mm."""
+    d = b - a
+    if abs(d) < 1e-9:
+        return abs(z - a)
+    t = min(max(dot(z - a, d) / abs(d) ** 2, 0.0), 1.0)
+    return abs(z - (a + t * d))
+
+
+COUPLE_CROWD_MM = 15.0   # a couple's point with two other points this near: its arc drawn elsewhere on its link
+COUPLE_STEP_MM = 1.0     # … the spots tried along the link this far apart
+
+
+def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[complex],
+                lines: list[tuple[complex, complex]]) -> complex:
+    """Where a couple's arc goes on its link: at its point ``at`` (S3) — unless two other points lie
+    within ``COUPLE_CROWD_MM`` of it, then at the spot of the link's lines ``own`` farthest from
+    every point and every other line (a couple is a free vector: any point of its link carries it).
+    The rocking coulisse's scheme at 1:2.5 put M3's and M^Φ3's arcs round S3, 8 mm from O1 and
+    10 mm from S1, under M_зр's and ω1's arcs: a dozen names in a few mm (review 49 #1)."""
+    near = [p for p in points if 0.5 < abs(p - at) < COUPLE_CROWD_MM]
+    if len(near) < 2 or not own:
+        return at
+
+    def room(z: complex) -> float:
+        return min([abs(z - p) for p in points] + [_to_segment(z, a, b) for a, b in lines] + [math.inf])
+
+    spots = [a + (b - a) * k / n for a, b in own
+             for n in [max(1, int(abs(b - a) / COUPLE_STEP_MM))] for k in range(n + 1)]
+    best = max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
+    return best if room(best) > room(at) + 1e-9 else at
+
+
 def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
                     busy: list[tuple[complex, complex]] = ()) -> tuple[complex, complex]:
     """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
@@ -644,6 +677,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         return [math.radians(d + e) for w, d in support_at.items() if abs(w - z) < 0.5
                 for e in (-40.0, 0.0, 40.0)]
     arcs: dict[complex, list[complex]] = {}      # the couples' arcs drawn at a point (their middles)
+    spots: dict[str, complex] = {}               # where a link's couples are drawn (``couple_spot``)
     for f in gp.forces:
         if f.couple and not f.force and f.kind == "balancing":
             # M_зр at the crank's pivot: an arc arrow in its sense, on the side away from the crank
@@ -674,8 +708,15 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
         elif f.couple and not f.force:
-            # a couple's arc on the side of its point free of the links and forces there
-            z = f.at / mu
+            # a couple's arc on the side of its point free of the links and forces there — at a
+            # free spot of its link where its point is crowded by others (``couple_spot``)
+            own = _pairs(_link_outline(fp, f.link, mu, gp.kind == "mechanism"))
+            others = [(a, b) for link in gp.links if link != f.link
+                      for a, b in _pairs(_link_outline(fp, link, mu, gp.kind == "mechanism"))]
+            z = spots.get(f.link) or couple_spot(f.at / mu, own, [w for w, _ in names] + [w for w, _ in centres],
+                                                 others + [(p, q) for _, p, q in drawn]
+                                                 + [(m_, m_) for ms in arcs.values() for m_ in ms])
+            spots[f.link] = z            # M3 and M^Φ3 on one link: two arcs at one spot
             taken = [cmath.phase(e - z) for a, b in drawn_links for e in (a, b)
                      if abs(e - z) > 0.5 and _on_segment(z, a, b)]
             taken += [cmath.phase(g.force) for g in forces if abs(g.at / mu - z) < 0.5]
