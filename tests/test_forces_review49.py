@@ -130,3 +130,28 @@ def test_link49_a1_force_plans_read_without_slivers():
         mu = sc[key]["mu_F"]
         assert 510.0 / mu <= 225.0
         assert 14.7 / mu >= 5.0         # G2 = 1.5 · 9.81 N, the shortest load
+
+
+def test_a_tall_group_and_its_plan_set_apart_where_no_sheet_holds_them_as_one_box():
+    """LINK49's A3 set: the coulisse's group 81 × 265 mm and its plan 212 × 61 mm make a 302 × 265
+    box no A3 sheet holds beside form 2a (the field 277 mm tall, 262 mm beside the block): the set
+    was refused. Set apart, the group stands at the field's left and its plan beside its top, right
+    of it and clear of the title block's corner — the two drawings measured, not the code's boxes."""
+    from graphplan.drawing.layout import Leaf
+    from graphplan.sheets.compose import field_of, keep_out, later_keep
+    from graphplan.sheets.forceset import pack, units_of
+    from graphplan.sheets.form import form
+    f = form("A3")
+    region = field_of(f)
+    leaves = {"scheme": [], "acceleration": [], "groups": [Leaf("group II(2-3)", 80.6, 264.8)],
+              "forces": [Leaf("polygon II(2-3)", 211.6, 61.4)], "lever": [], "charts": [], "hodographs": []}
+    width = region[2] - region[0]
+    args = ([], None, region, keep_out(f), later_keep(f), 10.0)
+    assert pack(units_of(leaves, width), *args) is None
+    pages = pack(units_of(leaves, width, apart=True), *args)
+    assert pages is not None and len(pages) == 1
+    g, q = pages[0]
+    assert g.d + g.h <= region[3] - region[1] + 1e-9
+    assert q.x >= g.x + g.w and q.d + q.h <= g.d + g.h      # beside the group, not under it
+    kx = keep_out(f)[0] - region[0]
+    assert g.x + g.w <= kx or g.d + g.h <= region[3] - keep_out(f)[3]

@@ -1801,6 +1801,9 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             notes_leaf = Leaf("notes", TITLE, max(_wh(nrec)[1], notes_height(nat.notes, TITLE)), nrec)
             packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap), tables, notes_leaf, region,
                           keep_out(f), later_keep(f), p.gap)
+        if packed is None:       # each group and its plan set apart, where no sheet holds the two as one box
+            packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap, apart=True), tables,
+                          notes_leaf, region, keep_out(f), later_keep(f), p.gap)
         if packed is None:
             raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
         pages = []

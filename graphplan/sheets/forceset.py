@@ -506,10 +506,13 @@ def laid(spots: list[Spot], region: Box) -> list[tuple[Leaf, Box]]:
 
 
 def units_of(leaves: dict[str, list[Leaf]], width: float, plan_first: bool = True,
-             gap: float = SPACE) -> list[list[Node]]:
+             gap: float = SPACE, apart: bool = False) -> list[list[Node]]:
     """The set's drawings in reading order as units (alternatives each): the scheme; the
     acceleration plan; each group beside (or over) its own force plan; the lever; each chart; the hodographs as one
-    grid (kept together), of any width the sheet holds."""
+    grid (kept together), of any width the sheet holds. ``apart``: each group and its force plan
+    two units, the plan set after its group (beside its top where there is room) — where no sheet
+    holds the two as one box (LINK49's A3 set: the coulisse's group 265 mm tall beside its 212 mm
+    plan, a 302 × 265 mm box 3 mm taller than form 2a leaves beside the title block)."""
     # the accelerations the inertia loads come from first, as Tables 1 and 2 give them (and the wide
     # scheme of a six-bar has room under it for the plan, not for a group with its force plan)
     # (``plan_first``; else after the groups, by the lever it is turned into)
@@ -517,7 +520,8 @@ def units_of(leaves: dict[str, list[Leaf]], width: float, plan_first: bool = Tru
     units: list[list[Node]] = [[s] for s in leaves["scheme"]] + (acc if plan_first else [])
     # a group beside its force plan, or over it where the sheet's room beside the last drawing is
     # narrow (a tall scheme's)
-    units += [[Row([g, q], gap), Stack([g, q], gap)] for g, q in zip(leaves["groups"], leaves["forces"])]
+    for g, q in zip(leaves["groups"], leaves["forces"]):
+        units += [[g], [q]] if apart else [[Row([g, q], gap), Stack([g, q], gap)]]
     units += ([] if plan_first else acc) + [[lv] for lv in leaves["lever"]]
     units += [[c] for c in leaves["charts"]]
     hods = leaves["hodographs"]
