@@ -102,7 +102,7 @@ def test_the_couples_leave_the_crowded_centre_for_a_free_stretch_of_their_link(f
 
 def test_couple_spot_keeps_a_free_point_and_moves_from_a_crowded_one():
     """On a 100 mm link along x with points at 0, 100 and a couple's point at 50: kept there (no
-    neighbour within 15 mm); with two more points at 40 and 58, moved to the middle of the longest
+    neighbour within 10 mm); with two more points at 40 and 58, moved to the middle of the longest
     free stretch (the farthest from every point, 79 mm)."""
     from graphplan.drawing.forces import couple_spot
     own = [(0j, 100 + 0j)]

@@ -228,19 +228,20 @@ def _to_segment(z: complex, a: complex, b: complex) -> float:
     return abs(z - (a + t * d))
 
 
-COUPLE_CROWD_MM = 15.0   # a couple's point with two other points this near: its arc drawn elsewhere on its link
+COUPLE_CROWD_MM = 10.0   # a couple's point with another point this near: its arc drawn elsewhere on its link
 COUPLE_STEP_MM = 1.0     # … the spots tried along the link this far apart
 
 
 def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[complex],
                 lines: list[tuple[complex, complex]]) -> complex:
-    """Where a couple's arc goes on its link: at its point ``at`` (S3) — unless two other points lie
+    """Where a couple's arc goes on its link: at its point ``at`` (S3) — unless another point lies
     within ``COUPLE_CROWD_MM`` of it, then at the spot of the link's lines ``own`` farthest from
     every point and every other line (a couple is a free vector: any point of its link carries it).
     The rocking coulisse's scheme at 1:2.5 put M3's and M^Φ3's arcs round S3, 8 mm from O1 and
-    10 mm from S1, under M_зр's and ω1's arcs: a dozen names in a few mm (review 49 #1)."""
+    10 mm from S1, under M_зр's and ω1's arcs: a dozen names in a few mm; a Whitworth coulisse's
+    M^Φ3 round S3 5.9 mm from S1 was named on a 39 mm leader (review 49 #1)."""
     near = [p for p in points if 0.5 < abs(p - at) < COUPLE_CROWD_MM]
-    if len(near) < 2 or not own:
+    if not near or not own:
         return at
 
     def room(z: complex) -> float:
