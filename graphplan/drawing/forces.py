@@ -716,6 +716,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                       for a, b in _pairs(_link_outline(fp, link, mu, gp.kind == "mechanism"))]
             z = spots.get(f.link) or couple_spot(f.at / mu, own, [w for w, _ in names] + [w for w, _ in centres],
                                                  others + [(p, q) for _, p, q in drawn]
+                                                 + [ab for w, d_ in support_at.items() for ab in support_strokes(w, d_)]
                                                  + [(m_, m_) for ms in arcs.values() for m_ in ms])
             spots[f.link] = z            # M3 and M^Φ3 on one link: two arcs at one spot
             taken = [cmath.phase(e - z) for a, b in drawn_links for e in (a, b)
