@@ -2881,3 +2881,93 @@ direction = "oppose"
 delta = 0.04
 efficiency = 0.88
 synchronous_rpm = 1000'''
+
+
+
+WHITWORTH49 = '''# Stop 49 (frc49's own check): a Whitworth quick-return drive — the crank O1A (longer than O1O) turns the
+# coulisse OB fully round O through the stone 2; the rod BC drives the ram C on a horizontal guide through
+# O (I(0-1) -> II(2-3) RPR -> II(4-5) RRP); crank counter-clockwise; a cutting force on the ram on its
+# working stroke; dynamics to a 1500-rpm motor.
+title = "Кулісний механізм з обертовою кулісою (Вітворта) стругального верстата"
+title_en = "Whitworth rotating-coulisse mechanism of a shaper"
+designation = "ТММ.КП.49.100"
+
+[sheet]
+student = "Перевірка Ф. Ф."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O1 = [0, 0.07]
+
+[frame.guides]
+ram = { through = [0, 0], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.14
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 5
+inertia = 0.012
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "OB"
+mass = 2
+
+[[link]]
+name = "OB"
+number = 3
+joints = ["O", "B"]
+length = 0.25
+points = { S3 = 0.5 }
+mass = 4
+inertia = 0.012
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.5
+points = { S4 = 0.5 }
+mass = 8
+inertia = 0.17
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 30
+
+[branch]
+A = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 2200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500'''

@@ -155,3 +155,29 @@ def test_a_tall_group_and_its_plan_set_apart_where_no_sheet_holds_them_as_one_bo
     assert q.x >= g.x + g.w and q.d + q.h <= g.d + g.h      # beside the group, not under it
     kx = keep_out(f)[0] - region[0]
     assert g.x + g.w <= kx or g.d + g.h <= region[3] - keep_out(f)[3]
+
+
+def test_whitworth_inertia_couple_drawn_and_named_on_its_coulisse_clear_of_the_crank():
+    """frc49's own Whitworth drive at 1:4: S3 lies 5.9 mm from S1 (the crank crosses the coulisse),
+    where M^Φ3's arc was named on a 39 mm leader. Its arc is drawn on OB (centre within 0.5 mm of
+    the line) at least 5.5 mm from every point, and its name stands within 8 mm of the arc's centre."""
+    from graphplan.drawing.forces import mechanism_record
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    from review_scenes import WHITWORTH49
+    st = scene_study(WHITWORTH49)
+    mu = 0.004
+    fp = forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=mu, mu_F=15.0)
+    rec = mechanism_record(fp)
+    pts = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
+    b_name = next(complex(*q.points[0]) for q in rec.items if q.kind == "text" and q.text == "B")
+    b = min(pts, key=lambda p: abs(p - b_name))           # the joint its letter names; O at the origin
+    g = b / abs(b)
+    arcs = [complex(*q.points[0]) for q in rec.items if q.kind == "arc" and q.radius < 6.0]
+    o1 = 0.07j / mu
+    couple = [c for c in arcs if abs(c - o1) > 0.5 and abs((c / g).imag) < 0.5]
+    assert len(couple) == 1
+    c = couple[0]
+    assert min(abs(c - p) for p in pts) >= 5.5
+    name = next(complex(*q.points[0]) for q in rec.items if q.kind == "text" and q.text == "M^{Φ}_{3}")
+    assert abs(name - c) <= 8.0
