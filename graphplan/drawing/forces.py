@@ -228,29 +228,36 @@ def _to_segment(z: complex, a: complex, b: complex) -> float:
     return abs(z - (a + t * d))
 
 
-COUPLE_CROWD_MM = 10.0   # a couple's point with another point this near: its arc drawn elsewhere on its link
+COUPLE_CROWD_MM = 12.0   # a couple's arc drawn elsewhere on its link where its point has less room than this
+COUPLE_GAIN_MM = 0.5     # … and the spot found has more, by a ruler step at least
 COUPLE_STEP_MM = 1.0     # … the spots tried along the link this far apart
 
 
 def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[complex],
-                lines: list[tuple[complex, complex]]) -> complex:
-    """Where a couple's arc goes on its link: at its point ``at`` (S3) — unless another point lies
-    within ``COUPLE_CROWD_MM`` of it, then at the spot of the link's lines ``own`` farthest from
-    every point and every other line (a couple is a free vector: any point of its link carries it).
-    The rocking coulisse's scheme at 1:2.5 put M3's and M^Φ3's arcs round S3, 8 mm from O1 and
-    10 mm from S1, under M_зр's and ω1's arcs: a dozen names in a few mm; a Whitworth coulisse's
-    M^Φ3 round S3 5.9 mm from S1 was named on a 39 mm leader (review 49 #1)."""
-    near = [p for p in points if 0.5 < abs(p - at) < COUPLE_CROWD_MM]
-    if not near or not own:
+                arrows: list[tuple[complex, complex, complex]], lines: list[tuple[complex, complex]]) -> complex:
+    """Where a couple's arc goes on its link: at its point ``at`` (S3), whose own arrows it dodges
+    by its side — unless the other points, the arrows of other points (``arrows``: point, tail,
+    head) and the ``lines`` (other links, supports) leave it less than ``COUPLE_CROWD_MM``; then at the spot
+    of the link's lines ``own`` with the most room, where that has ``COUPLE_GAIN_MM`` more (a couple
+    is a free vector: any point of its link carries it). The rocking coulisse's scheme at 1:2.5 put
+    M3's and M^Φ3's arcs round S3, 8 mm from O1 and 10 mm from S1, under M_зр's and ω1's arcs: a
+    dozen names in a few mm; a Whitworth coulisse's M^Φ3 round S3 5.9 mm from S1 was named on a
+    39 mm leader (review 49 #1)."""
+    if not own:
         return at
 
-    def room(z: complex) -> float:
-        return min([abs(z - p) for p in points] + [_to_segment(z, a, b) for a, b in lines] + [math.inf])
+    def room(z: complex, home: bool = False) -> float:
+        pts = [abs(z - p) for p in points if not (home and abs(p - at) < 0.5)]
+        ars = [_to_segment(z, a, b) for w, a, b in arrows if not (home and abs(w - at) < 0.5)]
+        return min(pts + ars + [_to_segment(z, a, b) for a, b in lines] + [math.inf])
 
+    here = room(at, home=True)
+    if here >= COUPLE_CROWD_MM:
+        return at
     spots = [a + (b - a) * k / n for a, b in own
              for n in [max(1, int(abs(b - a) / COUPLE_STEP_MM))] for k in range(n + 1)]
     best = max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
-    return best if room(best) > room(at) + 1e-9 else at
+    return best if room(best) >= here + COUPLE_GAIN_MM else at
 
 
 def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
@@ -714,10 +721,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             own = _pairs(_link_outline(fp, f.link, mu, gp.kind == "mechanism"))
             others = [(a, b) for link in gp.links if link != f.link
                       for a, b in _pairs(_link_outline(fp, link, mu, gp.kind == "mechanism"))]
-            z = spots.get(f.link) or couple_spot(f.at / mu, own, [w for w, _ in names] + [w for w, _ in centres],
-                                                 others + [(p, q) for _, p, q in drawn]
-                                                 + [ab for w, d_ in support_at.items() for ab in support_strokes(w, d_)]
-                                                 + [(m_, m_) for ms in arcs.values() for m_ in ms])
+            z = spots.get(f.link) or couple_spot(
+                f.at / mu, own, [w for w, _ in names] + [w for w, _ in centres], drawn,
+                others + [ab for w, d_ in support_at.items() for ab in support_strokes(w, d_)]
+                + [(m_, m_) for ms in arcs.values() for m_ in ms])
             spots[f.link] = z            # M3 and M^Φ3 on one link: two arcs at one spot
             taken = [cmath.phase(e - z) for a, b in drawn_links for e in (a, b)
                      if abs(e - z) > 0.5 and _on_segment(z, a, b)]
