@@ -7,7 +7,6 @@ from __future__ import annotations
 import cmath
 import math
 
-import numpy as np
 import pytest
 
 from conftest import scene_study
