@@ -525,22 +525,24 @@ def carried(got, at_h, room_w: float, room_h: float):
 
 def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
-    λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
-    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: for each
-    scale of the scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) and vA
-    (``SCHEME_SHARES``), the plan of angular velocities filling the zone (``filled``): the largest scheme
-    with which the plan fits, the plan then as long as the zone allows (the heights r1, aw, r3 laid off
-    longer and the segments read longer both lower the bound of u1H's error: review 12's 1:1 reads
-    within ±0,94 where 1:2 with a 1 mm longer ωH reads within ±1,53). The pictures as they were when
-    none fits."""
+    λ diagrams, the meshing's height and the tables' column off the field): for each scale of the
+    scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) whose scheme leaves the
+    plan its height, and vA (``SCHEME_SHARES``), the plan of angular velocities filling the zone
+    (``filled``); of those, the pictures that read u1H within the narrowest bound (the heights r1, aw,
+    r3 laid off longer and the segments read longer both lower it: review 12's 1:1 reads within ±0,94
+    where 1:2 with a 1 mm longer ωH reads within ±1,53; stop 49's 9/40 + type A, 2:1 ±0,16 with
+    h = 25 mm, 1:1 ±0,13, 1:2 ±0,25). No longer capped by the meshing's size (stop 49: capped, the
+    pictures stood 270 × 190 mm in a 616 × 372 row, a 61-mm band empty over the meshing and under
+    them). The pictures as they were when none fits."""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
-    room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
-    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
+    room_h = region[3] - region[1] - mesh_h - 3 * GAP
     r = tr.radii
     r3 = r["3"]
     top = max(r3, r["H"] + max(r["2"], r.get("2'", 0.0)))      # the scheme's top: the ring or the planet over it
     scales = sorted({at_least(r3 / (80.0 * k)) for k in GROW})     # the scheme's scales, the largest drawing first
+    best = None
     for mu in scales:
         ring = r3 / mu * (1 + 1e-9)                              # (``construct_train`` takes μl = this scale)
         if top / mu + 26.0 + min(H_MIN, vel.h) + 20.0 > room_h:   # the scheme, the plan under it, its labels
@@ -548,8 +550,11 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
-    return vel, plan
+                d = longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
+                if best is None or d[0].ratio_bound < best[0].ratio_bound - 1e-12:
+                    best = d
+                break
+    return best or (vel, plan)
 
 
 LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
