@@ -2811,3 +2811,29 @@ profile = [[0, 0.2], [15, 0.4], [25, 1.0], [30, 1.0]]
 delta = 0.0333
 efficiency = 0.8
 synchronous_rpm = 1000'''
+
+
+GEARS49 = '''# Stop 49 (the lead's check): an external pair 9/40 with the shifts chosen by the rule, m = 4 mm, and a
+# one-row planetary train of type A for a ratio of 5.2 with four planets, the sun at 1450 rpm.
+title = "Зубчаста передача 9/40 і планетарний редуктор (перевірка 49)"
+title_en = "A gear pair 9/40 and a planetary reducer (check 49)"
+designation = "ТММ.ЗП.49.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[gears]
+z = [9, 40]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.2
+planets = 4
+module = 0.003
+rpm = 1450
+'''

@@ -42,7 +42,9 @@ WORDS = {
            "eps_both": "ε_α ≥ 1,2: формула / креслення", "within": "у межах", "lam": "найбільше |λ|",
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
-           "member": "ланка", "mm": "мм",
+           "member": "ланка", "mm": "мм", "given": "(задано)",
+           "check": "ω_1 задано; графічно — відрізок 1 плану кутових швидкостей, помножений на μ_ω: перевірка лінії 1 "
+                    "картини швидкостей (δ — похибка побудови, що входить і в ω_2, ω_H)",
            "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
                    "{s}; умови таблиці 2 задовольняють {n} пар)",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -90,7 +92,9 @@ WORDS = {
            "eps_both": "ε_α ≥ 1.2: formula / drawing", "within": "within", "lam": "largest |λ|",
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
-           "member": "member", "mm": "mm",
+           "member": "member", "mm": "mm", "given": "(given)",
+           "check": "ω_1 is given; graphically — the plan's segment 1 times μ_ω: a check of the velocity picture's "
+                    "line 1 (δ, the construction's error, is in ω_2, ω_H too)",
            "rule": "Shifts x_1 = {x1}, x_2 = {x2} chosen by the rule: {rule} (a grid of x from {a} to {b} by {s}; "
                    "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -231,8 +235,10 @@ def train_table(doc: dict, lang: str) -> Record:
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), bare(te), bare(tg) if tg else "—",
-                     _pct(e)])
+        label = w["omega"].replace("{n}", name)
+        if key == "1":                    # the given speed: its reading off the plan a check (stop 49)
+            label = label.replace(",", " " + w["given"] + ",", 1)
+        rows.append([label, bare(te), bare(tg) if tg else "—", _pct(e)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
@@ -282,6 +288,8 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
+        if t.get("graphical", {}).get("omega_rad_s", {}).get("1") is not None:   # what Table 3's ω1 row reads
+            out.append(w["check"])
         if vel.h_carrier:                 # the carrier's own pole (review 13 #9)
             sH = abs(vel.segments["H"])
             out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),

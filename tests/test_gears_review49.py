@@ -1,0 +1,59 @@
+"""Stop 49's gear-sheet review (helper gear49): the lead's pair 9/40 "auto" + type A u = 5.2, K = 4,
+n1 = 1450 rpm (GEARS49) — checked against the closed forms and the drawn sheet's boxes, not the code's
+own numbers."""
+from __future__ import annotations
+
+import math
+import tomllib
+
+import pytest
+
+from review_scenes import GEARS49
+
+
+@pytest.fixture(scope="module")
+def sheet49():
+    """GEARS49's A1 sheet in English as build_gears_sheet composes it (about 4 s): (solution,
+    velocities, sheet)."""
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    from graphplan.sheets.compose import compose
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import _fields, on_sheet
+    g = build(tomllib.loads(GEARS49), "GEARS49")
+    sol = solve(g)
+    mesh, vel, pages = on_sheet(g, sol, form("A1"), 0.5, "en")
+    return sol, vel, compose(form("A1"), pages, _fields(g, "en", mesh.mu_l), "en", g.title_in("en"))
+
+
+def test_the_drawings_fill_the_field_with_no_empty_band_over_or_under_them(sheet49):
+    """The planetary pictures were capped by the meshing's size: 270 × 190 mm in a 616 × 372-mm row, a
+    61-mm band empty over the meshing and under the pictures. Now the row under the meshing holds them
+    as large as it takes: no band over 35 mm over the meshing or under the pictures, the pictures under
+    the meshing and left of the tables' column."""
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.form import form
+    _, _, s = sheet49
+    x0, y0, x1, y1 = field_of(form("A1"))
+    box = {p.name: p.record.bounds() for p in s.placed}
+    m, p = box["meshing"], box["planetary"]
+    assert y1 - m[3] <= 35.0 and p[1] - y0 <= 35.0, (m, p)
+    assert p[3] <= m[1] and p[2] <= min(box[t][0] for t in ("geometry", "quality", "train"))
+
+
+def test_u1h_is_read_within_its_bound_of_willis_and_omega1_is_the_given_speed(sheet49):
+    """Willis for type A: u1H = 1 + z3/z1 (z3 = z1 + 2·z2, coaxial), here from the chosen teeth; the plan
+    reads it within the stated bound, the bound under 3 % of u1H on the grown pictures. Table 3's ω1
+    row is the given speed, πn/30 = 151,8 rad/s, and says so (its reading off the plan a check, as the
+    notes say), where it read «ω_1, rad/s: 151,8 | 150» as though the given speed were a result."""
+    from test_sheet_content import texts
+    sol, vel, s = sheet49
+    z1, z2, z3 = sol.train.z
+    assert z3 == z1 + 2 * z2 and (z1 + z3) % 4 == 0
+    u = 1 + z3 / z1
+    assert abs(u - 5.2) / 5.2 <= 0.04
+    assert abs(vel.ratio - u) <= vel.ratio_bound <= 0.03 * u
+    words = texts(s)
+    assert "ω_1 (given), rad/s" in words
+    assert f"{math.pi * 1450 / 30:.1f}" in words
+    assert any(t.startswith("ω_1 is given") for t in words)
