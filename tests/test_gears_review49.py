@@ -57,3 +57,42 @@ def test_u1h_is_read_within_its_bound_of_willis_and_omega1_is_the_given_speed(sh
     assert "ω_1 (given), rad/s" in words
     assert f"{math.pi * 1450 / 30:.1f}" in words
     assert any(t.startswith("ω_1 is given") for t in words)
+
+
+def _rw1(z1: int, z2: int, x1: float, x2: float, m: float) -> float:
+    """The pinion's rolling radius, m: inv αw = 2(x1 + x2)·tg α/(z1 + z2) + inv α (Newton), rw = r·cos α/cos αw."""
+    a = math.radians(20.0)
+    inv = 2 * (x1 + x2) * math.tan(a) / (z1 + z2) + math.tan(a) - a
+    w = a
+    for _ in range(50):
+        w -= (math.tan(w) - w - inv) / math.tan(w) ** 2
+    return m * z1 / 2 * math.cos(a) / math.cos(w)
+
+
+@pytest.mark.parametrize("name, md, teeth", [("GEARS49", 20.0, 3), ("GEARS48", 25.0, 5)])   # (their A1 sheets')
+def test_the_pinions_centre_in_reach_is_drawn_not_broken_off(name, md, teeth):
+    """The broken meshing (the wheel's centre O2 far off the drawing) broke the centre line under the
+    window too, with «↓ O_1», though O1 stood 9,5 mm under that break (stop 49's 9/40) or on it (stop 48's
+    12/31). O1 is now drawn: a point rw1/μl under P (rw1 from inv αw, written here), lettered within
+    6 mm, the radius O1N1 drawn to it, and no break mark under P — the one over P stays (O2 off)."""
+    import review_scenes
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.gears import construct_mesh
+    from graphplan.model.gears import build
+    sol = solve(build(tomllib.loads(getattr(review_scenes, name)), name)).pair
+    mesh = construct_mesh(sol, 0.5, "en", module_mm=md, teeth=teeth)
+    rec, mu = mesh.record, mesh.mu_l
+    pts = [q.points[0] for q in rec.items if q.kind == "point" and q.role == "pole"]
+    P = mesh.points["P"]
+    z1, z2 = sol.pair.z
+    rw1 = _rw1(z1, z2, *sol.x, sol.pair.module) / mu
+    o1 = [p for p in pts if abs(p[0]) < 1e-9 and abs(P.imag - p[1] - rw1) <= 0.5]
+    assert o1, (rw1, P, pts)
+    (x, y), = o1[:1]
+    letter = next(q for q in rec.items if q.kind == "text" and q.text == "O_1").bounds()
+    assert math.hypot(max(letter[0] - x, x - letter[2], 0), max(letter[1] - y, y - letter[3], 0)) <= 6.0
+    breaks = [q.points[0][1] for q in rec.items if q.step == "break"]
+    assert breaks and all(b > P.imag for b in breaks)
+    N1 = mesh.points["N1"]
+    assert any(q.kind == "segment" and {tuple(map(lambda v: round(v, 6), e)) for e in q.points}
+               == {(round(N1.real, 6), round(N1.imag, 6)), (round(x, 6), round(y, 6))} for q in rec.items)
