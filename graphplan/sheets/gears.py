@@ -43,8 +43,8 @@ WORDS = {
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
            "member": "ланка", "mm": "мм", "given": "(задано)",
-           "check": "ω_1 задано; графічно — відрізок 1 плану кутових швидкостей, помножений на μ_ω: перевірка лінії 1 "
-                    "картини швидкостей (δ — похибка побудови, що входить і в ω_2, ω_H)",
+           "check": "ω_1 задано; відрізок 1 плану кутових швидкостей ({s} мм при μ_ω = {mu} (рад/с)/мм, тобто {g} рад/с) — "
+                    "перевірка лінії 1 картини швидкостей; δ — похибка побудови, що входить і в ω_2, ω_H",
            "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
                    "{s}; умови таблиці 2 задовольняють {n} пар)",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -93,8 +93,8 @@ WORDS = {
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
            "member": "member", "mm": "mm", "given": "(given)",
-           "check": "ω_1 is given; graphically — the plan's segment 1 times μ_ω: a check of the velocity picture's "
-                    "line 1 (δ, the construction's error, is in ω_2, ω_H too)",
+           "check": "ω_1 is given; the plan's segment 1 ({s} mm at μ_ω = {mu} (rad/s)/mm, i.e. {g} rad/s) checks the "
+                    "velocity picture's line 1; δ is the construction's error, in ω_2, ω_H too",
            "rule": "Shifts x_1 = {x1}, x_2 = {x2} chosen by the rule: {rule} (a grid of x from {a} to {b} by {s}; "
                    "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -288,8 +288,11 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
-        if t.get("graphical", {}).get("omega_rad_s", {}).get("1") is not None:   # what Table 3's ω1 row reads
-            out.append(w["check"])
+        w1g = t.get("graphical", {}).get("omega_rad_s", {}).get("1")
+        if w1g is not None:               # what Table 3's ω1 row reads, and how
+            g1 = agreeing(t["omega_rad_s"]["1"], w1g, sig_decimals(t["omega_rad_s"]["1"]), lang)[1]
+            out.append(w["check"].format(s=_n(abs(vel.segments["1"]), lang), g=bare(g1),
+                                         mu=_n(vel.mu_v / (vel.mu_l * vel.h), lang)))
         if vel.h_carrier:                 # the carrier's own pole (review 13 #9)
             sH = abs(vel.segments["H"])
             out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),
@@ -559,10 +562,17 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
                 d = longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
-                if best is None or d[0].ratio_bound < best[0].ratio_bound - 1e-12:
+                if best is None or _rank(d[0]) < _rank(best[0]):
                     best = d
                 break
     return best or (vel, plan)
+
+
+def _rank(v) -> tuple:
+    """The planetary pictures' order of preference on the A1 sheet: h at least ``H_MIN`` and the carrier's
+    segment at least ``SEGMENT_MIN`` (what a teacher reads with the ruler: review 13's ωH off 3,8 mm), then
+    the narrowest bound of u1H."""
+    return (v.h < H_MIN - 1e-9, abs(v.segments["H"]) < SEGMENT_MIN - 1e-9, v.ratio_bound)
 
 
 LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
