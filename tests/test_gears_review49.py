@@ -96,3 +96,27 @@ def test_the_pinions_centre_in_reach_is_drawn_not_broken_off(name, md, teeth):
     N1 = mesh.points["N1"]
     assert any(q.kind == "segment" and {tuple(map(lambda v: round(v, 6), e)) for e in q.points}
                == {(round(N1.real, 6), round(N1.imag, 6)), (round(x, 6), round(y, 6))} for q in rec.items)
+
+
+def test_a_height_corrected_pair_reads_its_contact_ratio_within_the_bound_of_the_closed_form():
+    """Stop 49's own scene (GEARS_OWN49): 13/52 with x1 = −x2 = 0,3, m = 2,5 mm — a height correction,
+    so αw = α, aw = a = m(z1 + z2)/2, rw = r. Drawn at 10:1 (the whole depth 56,25 mm), rw1 and rw2 are
+    read as r1, r2 within the ruler's half millimetre, O1 is drawn (not broken off), and εα read off the
+    drawing is within its stated bound of the closed form [√(ra1² − rb1²) + √(ra2² − rb2²) − aw·sin α]/pb,
+    ra = m(z/2 + 1 + x), written here."""
+    from graphplan.exact.gears import solve
+    from graphplan.graphic.gears import construct_mesh
+    from graphplan.model.gears import build
+    import review_scenes
+    sol = solve(build(tomllib.loads(review_scenes.GEARS_OWN49), "GEARS_OWN49")).pair
+    mesh = construct_mesh(sol, 0.5, "en", module_mm=25.0, teeth=5)
+    m, z, x, a = 2.5, (13, 52), (0.3, -0.3), math.radians(20.0)
+    r = [m * k / 2 for k in z]
+    rb = [v * math.cos(a) for v in r]
+    ra = [m * (k / 2 + 1 + s) for k, s in zip(z, x)]
+    aw = r[0] + r[1]
+    eps = (sum(math.sqrt(p * p - q * q) for p, q in zip(ra, rb)) - aw * math.sin(a)) / (math.pi * m * math.cos(a))
+    assert abs(mesh.eps - eps) <= mesh.eps_bound
+    for k in (0, 1):
+        assert abs(mesh.rw[k] * 1000 - r[k]) <= 0.25 * mesh.mu_l * 1000 + 1e-9
+    assert not [q for q in mesh.record.items if q.step == "break" and q.points[0][1] < mesh.points["P"].imag]
