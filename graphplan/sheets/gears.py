@@ -36,7 +36,7 @@ WORDS = {
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
-           "cond": "умова", "bound": "межа", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
+           "cond": "умова", "bound": "висновок", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
            "under": "без підрізання: x ≥ x_{min}", "point": "без загострення: s_a/m ≥ 0,25",
            "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2 за формулою",
            "eps_both": "ε_α ≥ 1,2: формула / креслення", "within": "у межах", "lam": "найбільше |λ|",
@@ -86,7 +86,7 @@ WORDS = {
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
-           "cond": "condition", "bound": "bound", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
+           "cond": "condition", "bound": "verdict", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "under": "no undercut: x ≥ x_{min}", "point": "not pointed: s_a/m ≥ 0.25",
            "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2 by the formula",
            "eps_both": "ε_α ≥ 1.2: formula / drawing", "within": "within", "lam": "largest |λ|",
@@ -188,7 +188,7 @@ def quality_table(doc: dict, lang: str) -> Record:
     q = p["quality"]
     m = p["module_m"]
     yes = lambda b: w["ok"] if b else w["fail"]                           # noqa: E731
-    rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]
+    rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]      # (the verdicts, wheel 1 / wheel 2: stop 49 headed them «межа»)
     rows.append([w["under"], f"{_n(p['x'][0], lang)} ≥ {_n(q['x_min'][0], lang)}",
                  f"{_n(p['x'][1], lang)} ≥ {_n(q['x_min'][1], lang)}",
                  " / ".join(yes(not v) for v in q["undercut"])])
