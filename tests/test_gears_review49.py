@@ -120,3 +120,19 @@ def test_a_height_corrected_pair_reads_its_contact_ratio_within_the_bound_of_the
     for k in (0, 1):
         assert abs(mesh.rw[k] * 1000 - r[k]) <= 0.25 * mesh.mu_l * 1000 + 1e-9
     assert not [q for q in mesh.record.items if q.step == "break" and q.points[0][1] < mesh.points["P"].imag]
+
+
+@pytest.mark.slow
+def test_the_pinions_centre_costs_a_set_no_sheet():
+    """Drawing O1 made GEARS49's meshing 10 mm taller: its English A3 set took a fourth sheet holding
+    Table 3 and a few notes (80 % empty). A set draws O1 only where that costs no sheet: three sheets,
+    as with the centre line broken, each holding a drawing or a table (about 20 s)."""
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    g = build(tomllib.loads(GEARS49), "GEARS49")
+    mesh, _, pages = on_sheet(g, solve(g), form("A3"), 0.5, "en")
+    assert len(pages) == 3
+    assert all(any(p.name in ("meshing", "sliding", "planetary", "geometry", "quality", "train") for p in page)
+               for page in pages)

@@ -217,6 +217,7 @@ class Mesh:
     points: dict[str, complex] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
     sa_bound: tuple[float, float] = (0.0, 0.0)      # m: the bound of each sa read, from the precision
+    o1_shown: bool = False          # the pinion's centre drawn under a broken meshing (``centre_shown``)
 
 
 def _inv_at(R: float, rho: float) -> float:
@@ -419,7 +420,7 @@ def aw_decimals(precision: float, mu_l: float) -> int:
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                    height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0,
-                   line_mm: float | None = None, teeth: int = TEETH) -> Mesh:
+                   line_mm: float | None = None, teeth: int = TEETH, o1: bool = True) -> Mesh:
     """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
     drawn ``module_mm`` long (default: ``mesh_scale``), ``teeth`` teeth of each wheel (odd: the
     middle one of wheel 1 in mesh at P)."""
@@ -463,7 +464,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     if cut:          # the centres off the drawing: the centre line broken above and below the window
         wlo = min(N1.imag, min(rad * math.cos(_span(rad, half_w, tau[0], aw_, teeth)) for _, rad in circles[1])) - 8.0
         whi = max(N2.imag, max(D - rad * math.cos(_span(rad, half_w, tau[1], aw_, teeth)) for _, rad in circles[2])) + 8.0
-        show1 = centre_shown(wlo)        # the pinion's centre in reach: drawn, the line broken above only
+        show1 = o1 and centre_shown(wlo)   # the pinion's centre in reach: drawn, the line broken above only
         low = -8.0 if show1 else wlo - 6.0                   # the centre line's lower end
         for y0, y1 in ((low, wlo), (whi, whi + 6.0)):
             rec.segment((0.0, y0), (0.0, y1), role="axis", layer=LAYER, step="O1O2")
@@ -610,7 +611,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
                 {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P},
-                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)))
+                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)), o1_shown=show1)
     if 2.25 * md < DEPTH_MM[0]:
         mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",

@@ -660,7 +660,7 @@ def meshing_leaf(mesh, lang: str) -> Record:
                                                                scale=drawing_scale(mesh.mu_l, lang)))
 
 
-def set_mesh(pair, f: Form, precision: float, lang: str):
+def set_mesh(pair, f: Form, precision: float, lang: str, o1: bool = True):
     """The meshing at the head of an A2/A3 set: the largest GOST 2.302 scale whose whole depth 2.25m
     is 40–60 mm and whose drawing, caption included, fits the first sheet over its title block (or
     beside it); when none in that band does, the fitting one whose depth comes nearest the band (as
@@ -673,15 +673,15 @@ def set_mesh(pair, f: Form, precision: float, lang: str):
     series = sorted(ENLARGE + REDUCE, reverse=True)
     far = lambda k: max(DEPTH_MM[0] / (2.25 * m * k), 2.25 * m * k / DEPTH_MM[1])     # noqa: E731
     for k in sorted(series, key=lambda k: (round(far(k), 9) if far(k) > 1.0 else 0.0, -k)):
-        mesh = construct_mesh(pair, precision, lang, module_mm=m * k)
+        mesh = construct_mesh(pair, precision, lang, module_mm=m * k, o1=o1)
         b = meshing_leaf(mesh, lang).bounds()
         w, h = b[2] - b[0], b[3] - b[1]
         if (w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0):
             return mesh
-    return construct_mesh(pair, precision, lang, module_mm=m * series[-1])
+    return construct_mesh(pair, precision, lang, module_mm=m * series[-1], o1=o1)
 
 
-def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
+def _more_teeth(pair, mesh, f: Form, precision: float, lang: str, o1: bool = True):
     """The set's meshing at its scale with more teeth of each wheel (the most of ``MORE_TEETH`` whose
     outer teeth stay within ``TEETH_SPAN``) whose drawing with its caption still fits the first sheet
     over its title block; else None."""
@@ -690,7 +690,7 @@ def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
     for k in MORE_TEETH:                  # (the drawing measured, not its window estimated)
         if any((k / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in pair.pair.z):
             continue
-        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k)
+        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k, o1=o1)
         b = meshing_leaf(more, lang).bounds()
         if b[2] - b[0] <= room_w and b[3] - b[1] <= room_h:
             more.lam = mesh.lam
@@ -755,18 +755,29 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
-        if mesh is not None:              # its meshing at the set's scale (``set_mesh``), not at the one the
-            head = set_mesh(sol.pair, f, precision, lang)  # one-sheet zones took (stop 47: A2 drew 14/35
-            if head.module_mm != mesh.module_mm:           # at 2,5:1, the depth 22,5 mm, s_a2 +5,96 %, while
-                mesh = head                                # 5:1 fits the set's first sheet)
-            # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
-            # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
-            # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
-            mesh.lam = sliding_diagram(sol.pair, mesh, LAMBDA_UNITS[0])
-            drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
-        more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
-        lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
-        pages = _set(drawings, tables, parts, f, more, lang, lam)
+        one = mesh
+
+        def cut(o1: bool):
+            """The set with the meshing drawn with O1 where in reach (``o1``) or its centre line broken."""
+            m_, d_, t_, p_ = one, drawings, tables, parts
+            if m_ is not None:            # its meshing at the set's scale (``set_mesh``), not at the one the
+                head = set_mesh(sol.pair, f, precision, lang, o1)   # one-sheet zones took (stop 47: A2 drew
+                if head.module_mm != m_.module_mm or not o1:    # 14/35 at 2,5:1, the depth 22,5 mm, s_a2
+                    m_ = head                                    # +5,96 %, while 5:1 fits the set's first sheet)
+                # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
+                # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
+                # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
+                m_.lam = sliding_diagram(sol.pair, m_, LAMBDA_UNITS[0])
+                d_, t_, p_ = _blocks(g, sol, m_, vel, plan, lang)
+            more_ = _more_teeth(sol.pair, m_, f, precision, lang, o1) if m_ is not None else None
+            lam_ = _set_lambda(sol, m_, f, lang) if m_ is not None else None
+            return m_, more_, lam_, _set(d_, t_, p_, f, more_, lang, lam_)
+
+        mesh, more, lam, pages = cut(True)
+        if mesh is not None and mesh.o1_shown and pages is not None:    # O1 drawn where it costs no sheet
+            flat = cut(False)             # (stop 49: 9/40's en A3 set took a 4th sheet, 80 % empty, for it)
+            if flat[3] is not None and len(flat[3]) < len(pages):
+                mesh, more, lam, pages = flat
         if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
