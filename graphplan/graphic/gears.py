@@ -98,7 +98,7 @@ class Placer:
 
     def label(self, at: complex, text: str, size: float = TEXT, toward: complex | None = None,
               radii=(1.5, 2.5, 4.0, 6.0, 7.5, 9.0, 10.5, 12.0, 13.0, 15.0, 18.0, 24.0, 32.0), optional: bool = False,
-              near: bool = False, within=None) -> bool:
+              near: bool = False) -> bool:
         """``near``: a point's letter (N1, B1, P …) tried first close to its point in 32 directions
         before it is taken farther on a leader (review 5: N1 7 mm off)."""
         w = text_width(text, size)
@@ -107,7 +107,7 @@ class Placer:
         if toward is not None and abs(toward) > 0:
             u = toward / abs(toward)
             dirs.sort(key=lambda d: -((d * u.conjugate()).real))
-        far = () if within else tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
+        far = tuple(r for r in (18.0, 24.0, 32.0, 45.0, 60.0) if r > max(radii))
         close = (0.8, 1.2, 1.8, 2.5, 3.5, 4.5, 5.5, 6.5)     # past 3.5 mm on a short leader
         # a near letter's glyphs (its ink, not its advance box) kept NEAR_CLEAR off the lines' middles:
         # less a thick line's half width (0.35 mm) and the sampled lines' 0.4 mm steps (0.2 mm), still
@@ -129,8 +129,6 @@ class Placer:
                         if not ok:
                             continue
                     elif not self.free(box):
-                        continue
-                    if within is not None and not within(box):
                         continue
                     end = None
                     if rad > (3.5 if by_ink else LEADER):   # far from its point: a thin leader to the box
@@ -586,16 +584,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), near=True)
     for at, name, out in arc_ends:
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
-    # αw's letter inside the angle it names, by its arc (stop 49's 13/52: placed under the tangent, outside
-    # the angle, where p_b's dimension crossed the bisector): along the bisector, then as before
-    bis = cmath.exp(1j * (math.pi - aw_ / 2))
-
-    def inside(box) -> bool:              # the box's corners between the tangent at P and the line of action
-        return all(0.0 < cmath.phase((complex(x, y) - P) * cmath.exp(-1j * (math.pi - aw_))) < aw_ - 1e-9
-                   for x in box[::2] for y in box[1::2])
-    if not any(pl.label(P + rad * bis, "α_w", toward=bis, radii=(0.5, 1.0, 2.0), optional=True, within=inside)
-               for rad in (24.0, 28.0, 32.0, 36.0, 40.0)):
-        pl.label(P + 24 * bis, "α_w", toward=-1 + 0j, optional=True)
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
             ang = _span(rad, half_w, tau[k - 1], aw_, teeth)
