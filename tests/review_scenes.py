@@ -2971,3 +2971,56 @@ direction = "oppose"
 delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1500'''
+
+
+GEARS49 = '''# Stop 49 (the lead's check): an external pair 9/40 with the shifts chosen by the rule, m = 4 mm, and a
+# one-row planetary train of type A for a ratio of 5.2 with four planets, the sun at 1450 rpm.
+title = "Зубчаста передача 9/40 і планетарний редуктор (перевірка 49)"
+title_en = "A gear pair 9/40 and a planetary reducer (check 49)"
+designation = "ТММ.ЗП.49.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[gears]
+z = [9, 40]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.2
+planets = 4
+module = 0.003
+rpm = 1450
+'''
+
+
+GEARS_OWN49 = '''# Stop 49's own check (gear49): a pair 13/52 with given equal and opposite shifts x1 = 0,3, x2 = −0,3
+# (a height correction: αw = α, aw = a, y = Δy = 0) and a small module m = 2.5 mm, and a one-row
+# planetary train of type A for a ratio of 6.3 with three planets, the sun at 960 rpm.
+title = "Зубчаста передача 13/52 з рівнозміщеними колесами і планетарний редуктор (перевірка 49)"
+title_en = "A gear pair 13/52 with equal and opposite shifts and a planetary reducer (check 49)"
+designation = "ТММ.ЗП.49.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[gears]
+z = [13, 52]
+module = 0.0025
+shifts = [0.3, -0.3]
+
+[planetary]
+type = "A"
+ratio = 6.3
+planets = 3
+module = 0.002
+rpm = 960
+'''

@@ -82,16 +82,20 @@ def test_review_13s_a1_sheet_reads_the_carrier_off_twenty_millimetres_and_says_h
 
 
 def test_a_short_carrier_segment_is_said_with_its_share_of_the_ruler():
-    """u = 40 on A1: no spare height for the carrier's pole (the plan's height binds: its segment
-    would grow by less than half); the notes say ωH's segment as read and the ruler's half division
-    as a percent of it."""
+    """u = 40: where the carrier reads off its plan's own pole (pictures drawn small: no room for
+    p'_ω), the notes say ωH's segment as read and the ruler's half division as a percent of it. On
+    the A1 sheet the row under the meshing (no longer capped by its height: stop 49) holds the
+    carrier's own pole, its segment over 1,5 times what the plan's pole gives."""
     import re
 
+    from graphplan.graphic.gears import construct_train
     from graphplan.report.gears import gears_json
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import construct_on, note_parts
     _, sol = _train(40.0, "uk")
-    mesh, vel, _ = construct_on(sol, form("A1"), 0.5, "uk")
+    mesh, big, _ = construct_on(sol, form("A1"), 0.5, "uk")
+    assert big.h_carrier and abs(big.segments["H"]) >= 1.5 * abs(big.segments["H"]) * big.h / big.h_carrier
+    vel = construct_train(sol.train, 0.5, "uk")                     # the first, small pictures
     s = abs(vel.segments["H"])
     assert vel.h_carrier is None and 0 < s < 10.0
     notes = " ".join(note_parts(gears_json(sol, mesh, vel, ""), "uk", mesh, vel)[-1])

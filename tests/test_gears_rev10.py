@@ -79,7 +79,7 @@ def _plan_and_table(sheet):
     assert len(mu) == 1 and mu[0]
     rows = {}
     for p in items:
-        m = re.fullmatch(r"ω_(\w), (рад/с|rad/s)", p.text)
+        m = re.fullmatch(r"ω_(\w)(?: \((?:задано|given)\))?, (рад/с|rad/s)", p.text)
         if m:
             y, x = p.points[0][1], p.points[0][0]
             cells = sorted((q for q in items if abs(q.points[0][1] - y) < 0.3 and q.points[0][0] > x + 1),

@@ -134,17 +134,16 @@ def test_the_marks_legend_stands_only_under_tables_that_mark_a_delta(doc46):
 
 def test_the_planetary_pictures_under_the_meshing_read_u1h_within_their_bound(sheet46, doc46):
     """With the λ diagrams beside the meshing the planetary pictures have the row under it; held by the
-    meshing's height (the sheet's main drawing: no taller, no wider) they take a longer vA, so a longer
-    plan for the same h (stop 46: 305 → 358 mm, the bound of u1H ±0,39 → ±0,37). u1H = 1 + z2·z3/(z1·z2′)
-    (Willis, type B, written here) is read within the stated bound, and the pictures stand within the
-    meshing's width and height."""
+    row's height they take a longer vA, so a longer plan for the same h (stop 46: 305 → 358 mm, the
+    bound of u1H ±0,39 → ±0,37). u1H = 1 + z2·z3/(z1·z2′) (Willis, type B, written here) is read within
+    the stated bound, and the pictures stand under the meshing."""
     g, sol, sheet = sheet46
     _, _, vel = doc46
     z1, z2, z2b, z3 = sol.train.z
     u = 1 + z2 * z3 / (z1 * z2b)
     assert abs(u - 9.0) / 9.0 <= 0.04 and abs(vel.ratio - u) <= vel.ratio_bound
     plan, mesh = _placed(sheet, "planetary").record.bounds(), _placed(sheet, "meshing").record.bounds()
-    assert plan[2] - plan[0] <= mesh[2] - mesh[0] + 1e-9 and plan[3] - plan[1] <= mesh[3] - mesh[1] + 1e-9
+    assert plan[3] <= mesh[1] + 1e-9
 
 
 def test_the_terminal_prints_a_contact_ratio_read_short_of_1_2_within_its_bound_in_english(doc46):

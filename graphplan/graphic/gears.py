@@ -215,6 +215,7 @@ class Mesh:
     points: dict[str, complex] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
     sa_bound: tuple[float, float] = (0.0, 0.0)      # m: the bound of each sa read, from the precision
+    o1_shown: bool = False          # the pinion's centre drawn under a broken meshing (``centre_shown``)
 
 
 def _inv_at(R: float, rho: float) -> float:
@@ -245,7 +246,7 @@ def sa_bound(sol: PairSolution, k: int, mu: float, precision: float) -> float:
     return (worst + h) * mu
 
 
-def _extent(sol: PairSolution, md: float, teeth: int = TEETH) -> tuple[float, float, float]:
+def _extent(sol: PairSolution, md: float, teeth: int = TEETH, o1: bool = True) -> tuple[float, float, float]:
     """The meshing's window about P at the module ``md`` mm (width, height, mm) and the centre
     distance drawn, mm: the circles' arcs over the three teeth and the line of action, N1 and N2,
     the λ diagram's length N1N2 below it (about)."""
@@ -263,7 +264,21 @@ def _extent(sol: PairSolution, md: float, teeth: int = TEETH) -> tuple[float, fl
     y_lo = min(low + [rb[0] * math.cos(aw_)]) - 8.0
     y_hi = max(high + [D - rb[1] * math.cos(aw_)]) + 8.0
     g = sol.g * k
+    if o1 and centre_shown(y_lo):     # O1 drawn under the window instead of the lower break (O1 at y = 0)
+        y_lo = min(y_lo, -O1_BELOW)
     return max(2 * half_w + 50.0, g + 30.0), y_hi - y_lo, D       # the letters r_a1 … right, a_w left
+
+
+O1_NEAR = 30.0                 # mm: the pinion's centre drawn where the window's break would stand this near it
+O1_BELOW = 13.0                # mm: the centre line past O1 and its letter
+
+
+def centre_shown(y_lo: float) -> bool:
+    """Whether the broken meshing draws the centre O1 (at y = 0) rather than breaking the centre line
+    under the window whose bottom is ``y_lo`` mm: when the break (6 mm under the window) would stand
+    within ``O1_NEAR`` of it — stop 48's 12/31 put the break and «↓ O_1» on O1 itself, stop 49's 9/40
+    9,5 mm over it: a teacher asks why a centre in reach is broken off."""
+    return y_lo - 6.0 <= O1_NEAR
 
 
 def _half_width(n_x, tau, ra, teeth: int) -> float:
@@ -281,7 +296,7 @@ def most_teeth(sol: PairSolution, md: float, height_mm: float, width_mm: float) 
         if any((n / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in sol.pair.z):
             continue
         w, h, D = _extent(sol, md, n)
-        tall = h + 12.0 if broken(sol, md, n) else max(h, D + 30.0)
+        tall = h + 12.0 if broken(sol, md, n) else max(h, D + 30.0)     # (the upper break's 12 mm: either)
         if tall + 20.0 <= height_mm and w <= width_mm:
             return n
     return TEETH
@@ -291,7 +306,7 @@ def broken(sol: PairSolution, md: float, teeth: int = TEETH) -> bool:
     """Whether the centres are left off the drawing (the centre line broken, aw dimensioned, as the
     textbook draws wheels whose centres lie far from the teeth): when drawing them would make the
     meshing more than 1.4 times as tall as its window about P."""
-    w, h, D = _extent(sol, md, teeth)
+    w, h, D = _extent(sol, md, teeth, o1=False)
     return D + 30.0 > 1.4 * h
 
 
@@ -403,7 +418,7 @@ def aw_decimals(precision: float, mu_l: float) -> int:
 
 def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                    height_mm: float = 480.0, module_mm: float | None = None, width_mm: float = 780.0,
-                   line_mm: float | None = None, teeth: int = TEETH) -> Mesh:
+                   line_mm: float | None = None, teeth: int = TEETH, o1: bool = True) -> Mesh:
     """The meshing of ``sol`` drawn and read with a ruler of ``precision`` mm (0: exact), the module
     drawn ``module_mm`` long (default: ``mesh_scale``), ``teeth`` teeth of each wheel (odd: the
     middle one of wheel 1 in mesh at P)."""
@@ -443,23 +458,27 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             role = "axis" if name == "r" else "construction"      # the pitch circle dash-dot (GOST 2.402)
             rec.arc(_f(centre), rad, mid - span, mid + span, role=role, layer=LAYER, step=f"circle {name}{k}")
     cut = broken(sol, md, teeth)
+    show1 = False
     if cut:          # the centres off the drawing: the centre line broken above and below the window
         wlo = min(N1.imag, min(rad * math.cos(_span(rad, half_w, tau[0], aw_, teeth)) for _, rad in circles[1])) - 8.0
         whi = max(N2.imag, max(D - rad * math.cos(_span(rad, half_w, tau[1], aw_, teeth)) for _, rad in circles[2])) + 8.0
-        for y0, y1 in ((wlo - 6.0, wlo), (whi, whi + 6.0)):
+        show1 = o1 and centre_shown(wlo)   # the pinion's centre in reach: drawn, the line broken above only
+        low = -8.0 if show1 else wlo - 6.0                   # the centre line's lower end
+        for y0, y1 in ((low, wlo), (whi, whi + 6.0)):
             rec.segment((0.0, y0), (0.0, y1), role="axis", layer=LAYER, step="O1O2")
         rec.segment((0.0, wlo), (0.0, whi), role="axis", layer=LAYER, step="O1O2")
-        for y in (wlo - 6.0, whi + 6.0):                     # the break marks (GOST 2.303, a thin zigzag)
+        for y in ((whi + 6.0,) if show1 else (wlo - 6.0, whi + 6.0)):   # the break marks (GOST 2.303, a thin zigzag)
             rec.add("polyline", [(-6.0, y), (-1.5, y), (-0.8, y + 2.0), (0.8, y - 2.0), (1.5, y), (6.0, y)],
                     role="construction", layer=LAYER, step="break")
         xd = -half_w - 4.0                                   # aw dimensioned on a broken dimension line
-        ymid = 0.5 * (wlo + whi)
-        rec.segment((xd - 2.0, wlo - 6.0), (-8.0, wlo - 6.0), role="construction", layer=LAYER, step="aw")
+        foot = 0.0 if show1 else wlo - 6.0                   # the dimension's lower end: O1 or the break
+        ymid = 0.5 * (foot + whi + 6.0)
+        rec.segment((xd - 2.0, foot), (-2.0 if show1 else -8.0, foot), role="construction", layer=LAYER, step="aw")
         rec.segment((xd - 2.0, whi + 6.0), (-8.0, whi + 6.0), role="construction", layer=LAYER, step="aw")
-        rec.vector((xd, ymid - 12.0), (xd, wlo - 6.0), role="construction", layer=LAYER, step="aw")
+        rec.vector((xd, ymid - 12.0), (xd, foot), role="construction", layer=LAYER, step="aw")
         rec.vector((xd, ymid + 12.0), (xd, whi + 6.0), role="construction", layer=LAYER, step="aw")
         aw_text = f"a_w = {fixed(sol.aw * 1000.0, lang, aw_decimals(precision, mu))}"   # mm of the part, no unit (GOST 2.307)
-        for y, name, toward in ((wlo - 6.0, "O_1", -1j), (whi + 6.0, "O_2", 1j)):
+        for y, name, toward in (() if show1 else ((wlo - 6.0, "O_1", -1j),)) + ((whi + 6.0, "O_2", 1j),):
             rec.vector((3.0, y + (4.0 if toward == -1j else -4.0)), (3.0, y + (-6.0 if toward == -1j else 6.0)),
                        role="construction", layer=LAYER, step=f"to {name}")
             rec.label((5.0, y + (-6.0 if toward == -1j else 2.5)), name, size=TEXT, layer=LAYER, step=name)
@@ -470,8 +489,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     rec.segment(_f(P - 30.0), _f(P + 30.0), role="construction", layer=LAYER, step="tangent at P")
     rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
     if cut:          # the radii to N1, N2 (perpendicular to the line of action) as far as the window
-        rec.segment(_f(N1), _f(N1 + (O1 - N1) / abs(O1 - N1) * min(20.0, abs(O1 - N1))), role="construction",
-                    layer=LAYER)
+        rec.segment(_f(N1), _f(O1 if show1 else N1 + (O1 - N1) / abs(O1 - N1) * min(20.0, abs(O1 - N1))),
+                    role="construction", layer=LAYER)
         rec.segment(_f(N2), _f(N2 + (O2 - N2) / abs(O2 - N2) * min(20.0, abs(O2 - N2))), role="construction",
                     layer=LAYER)
     else:
@@ -547,13 +566,14 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
             rec.segment(_f(centre + (rr - 1.5) * e), _f(centre + (rr + 1.5) * e), role="relative", layer=LAYER,
                         step=f"arc of action {k}")
             arc_ends.append((centre + rr * e, f"{name}_{k}", e if k == 1 else -e))
-    for q in (N1, N2, B1, B2, P) + (() if cut else (O1, O2)):
+    for q in (N1, N2, B1, B2, P) + ((O1,) if show1 else () if cut else (O1, O2)):
         rec.point(_f(q), role="pole", layer=LAYER)
     pl = Placer(rec)
     if cut:
         pl.label(complex(xd, ymid), aw_text, toward=-1 + 0j, radii=(1.0, 2.0, 3.5, 5.5))
+    if not cut or show1:
+        pl.label(O1, "O_1", toward=1 + 0j if cut else -1 + 0j)     # (a_w's dimension left of O1 when broken)
     if not cut:
-        pl.label(O1, "O_1", toward=-1 + 0j)
         pl.label(O2, "O_2", toward=-1 + 0j)
     pl.label(P, "P", toward=1 + 0.3j, near=True)
     pl.label(N1, "N_1", toward=1 + 0j, near=True)
@@ -580,7 +600,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
                 {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P},
-                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)))
+                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)), o1_shown=show1)
     if 2.25 * md < DEPTH_MM[0]:
         mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",

@@ -155,7 +155,7 @@ WORDS = {
            "h_H": ", водило — свій полюс, hH = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
                     "s": "s, мм", "sa": "s_a, мм"},
-           "wanted": " (потрібно {r})", "warn": "Попередження", "member": "ланка", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
+           "wanted": " (потрібно {r})", "warn": "Попередження", "member": "ланка", "given_w1": " (задано)", "within": "у межах похибки креслення", "out": " — ПОЗА МЕЖЕЮ"},
     "en": {"title": "Gear synthesis", "pair": "Involute pair", "train": "Planetary train",
            "given": "shifts given", "auto": "shifts chosen by the rule: {rule}",
            "head": ["quantity", "wheel 1", "wheel 2"], "exact": "exact", "graph": "graphical", "eps": "εα",
@@ -175,7 +175,7 @@ WORDS = {
            "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
                     "s": "s, mm", "sa": "s_a, mm"},
-           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member",
+           "wanted": " (wanted {r})", "warn": "Warnings", "member": "member", "given_w1": " (given)",
            "within": "within the drafting error", "out": " — OUTSIDE ITS BOUND"},
 }
 
@@ -344,6 +344,7 @@ def train_lines(d: dict, lang: str) -> list[str]:
     rows = [[w["member"], f"ω {w['exact']}", f"ω {w['graph']}", "δ, %"]]
     for k in ("1", "2", "3", "H"):
         name = k if not (k == "2" and d["type"] == "B") else "2, 2'"
+        name += w["given_w1"] if k == "1" else ""        # (its reading off the plan a check: stop 49)
         te, tg, e = agreeing(d["omega_rad_s"][k], g["omega_rad_s"][k] if g else None,
                              sig_decimals(d["omega_rad_s"][k]), lang)
         rows.append([name, bare(te), bare(tg) if tg else tg, "" if e is None else delta_text(e, lang)])

@@ -36,13 +36,15 @@ WORDS = {
            "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
-           "cond": "умова", "bound": "межа", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
+           "cond": "умова", "bound": "висновок", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
            "under": "без підрізання: x ≥ x_{min}", "point": "без загострення: s_a/m ≥ 0,25",
            "interf": "без заклинювання: ρ(B) ≥ ρ_l, мм", "eps": "ε_α ≥ 1,2 за формулою",
            "eps_both": "ε_α ≥ 1,2: формула / креслення", "within": "у межах", "lam": "найбільше |λ|",
            "z": "числа зубців", "u": "u_{1H}: потрібно / точно / графічно", "coax": "співвісність",
            "asm": "складання", "nb": "сусідство", "nu": "без підрізання", "omega": "ω_{n}, рад/с",
-           "member": "ланка", "mm": "мм",
+           "member": "ланка", "mm": "мм", "given": "(задано)",
+           "check": "ω_1 задано; відрізок 1 плану кутових швидкостей ({s} мм при μ_ω = {mu} (рад/с)/мм, тобто {g} рад/с) — "
+                    "перевірка лінії 1 картини швидкостей; δ — похибка побудови, що входить і в ω_2, ω_H",
            "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
                    "{s}; умови таблиці 2 задовольняють {n} пар)",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -84,13 +86,15 @@ WORDS = {
            "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
-           "cond": "condition", "bound": "bound", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
+           "cond": "condition", "bound": "verdict", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "under": "no undercut: x ≥ x_{min}", "point": "not pointed: s_a/m ≥ 0.25",
            "interf": "no interference: ρ(B) ≥ ρ_l, mm", "eps": "ε_α ≥ 1.2 by the formula",
            "eps_both": "ε_α ≥ 1.2: formula / drawing", "within": "within", "lam": "largest |λ|",
            "z": "teeth", "u": "u_{1H}: wanted / exact / graphical", "coax": "coaxial",
            "asm": "assembly", "nb": "neighbourhood", "nu": "no undercut", "omega": "ω_{n}, rad/s",
-           "member": "member", "mm": "mm",
+           "member": "member", "mm": "mm", "given": "(given)",
+           "check": "ω_1 is given; the plan's segment 1 ({s} mm at μ_ω = {mu} (rad/s)/mm, i.e. {g} rad/s) checks the "
+                    "velocity picture's line 1; δ is the construction's error, in ω_2, ω_H too",
            "rule": "Shifts x_1 = {x1}, x_2 = {x2} chosen by the rule: {rule} (a grid of x from {a} to {b} by {s}; "
                    "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
@@ -184,7 +188,7 @@ def quality_table(doc: dict, lang: str) -> Record:
     q = p["quality"]
     m = p["module_m"]
     yes = lambda b: w["ok"] if b else w["fail"]                           # noqa: E731
-    rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]
+    rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]      # (the verdicts, wheel 1 / wheel 2: stop 49 headed them «межа»)
     rows.append([w["under"], f"{_n(p['x'][0], lang)} ≥ {_n(q['x_min'][0], lang)}",
                  f"{_n(p['x'][1], lang)} ≥ {_n(q['x_min'][1], lang)}",
                  " / ".join(yes(not v) for v in q["undercut"])])
@@ -231,8 +235,10 @@ def train_table(doc: dict, lang: str) -> Record:
         name = key if not (key == "2" and t["type"] == "B") else "2"
         te, tg, e = agreeing(t["omega_rad_s"][key], g.get("omega_rad_s", {}).get(key),
                              sig_decimals(t["omega_rad_s"][key]), lang)
-        rows.append([w["omega"].replace("{n}", name if name != "H" else "H"), bare(te), bare(tg) if tg else "—",
-                     _pct(e)])
+        label = w["omega"].replace("{n}", name)
+        if key == "1":                    # the given speed: its reading off the plan a check (stop 49)
+            label = label.replace(",", " " + w["given"] + ",", 1)
+        rows.append([label, bare(te), bare(tg) if tg else "—", _pct(e)])
     c = t["conditions"]
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         rows.append([w[name], ok(c[key]), "", ""])
@@ -282,6 +288,11 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         out.append(w["train"].format(t=t["type"], k=t["planets"], u=_n(t["ratio"]["exact"], lang), l=_n(vel.mu_l, lang),
                                      v=_n(vel.mu_v, lang), h=_n(vel.h, lang), b=_n(vel.ratio_bound, lang, 2),
                                      bp=_n(100 * vel.ratio_bound / t["ratio"]["exact"], lang, 2)))
+        w1g = t.get("graphical", {}).get("omega_rad_s", {}).get("1")
+        if w1g is not None:               # what Table 3's ω1 row reads, and how
+            g1 = agreeing(t["omega_rad_s"]["1"], w1g, sig_decimals(t["omega_rad_s"]["1"]), lang)[1]
+            out.append(w["check"].format(s=_n(abs(vel.segments["1"]), lang), g=bare(g1),
+                                         mu=_n(vel.mu_v / (vel.mu_l * vel.h), lang)))
         if vel.h_carrier:                 # the carrier's own pole (review 13 #9)
             sH = abs(vel.segments["H"])
             out.append(w["own_pole"].format(s=_n(sH * vel.h / vel.h_carrier, lang, 2), u=_n(t["ratio"]["exact"], lang),
@@ -525,22 +536,24 @@ def carried(got, at_h, room_w: float, room_h: float):
 
 def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
-    λ diagrams, the meshing's height and the tables' column off the field) and no larger than the
-    meshing, the sheet's main drawing — neither wider nor taller than it with its caption: for each
-    scale of the scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) and vA
-    (``SCHEME_SHARES``), the plan of angular velocities filling the zone (``filled``): the largest scheme
-    with which the plan fits, the plan then as long as the zone allows (the heights r1, aw, r3 laid off
-    longer and the segments read longer both lower the bound of u1H's error: review 12's 1:1 reads
-    within ±0,94 where 1:2 with a 1 mm longer ωH reads within ±1,53). The pictures as they were when
-    none fits."""
+    λ diagrams, the meshing's height and the tables' column off the field): for each scale of the
+    scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) whose scheme leaves the
+    plan its height, and vA (``SCHEME_SHARES``), the plan of angular velocities filling the zone
+    (``filled``); of those, the pictures that read u1H within the narrowest bound (the heights r1, aw,
+    r3 laid off longer and the segments read longer both lower it: review 12's 1:1 reads within ±0,94
+    where 1:2 with a 1 mm longer ωH reads within ±1,53; stop 49's 9/40 + type A, 2:1 ±0,16 with
+    h = 25 mm, 1:1 ±0,13, 1:2 ±0,25). No longer capped by the meshing's size (stop 49: capped, the
+    pictures stood 270 × 190 mm in a 616 × 372 row, a 61-mm band empty over the meshing and under
+    them). The pictures as they were when none fits."""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
-    room_w = min(region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP, mesh_w)
-    room_h = min(region[3] - region[1] - mesh_h - 3 * GAP, mesh_h)
+    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
+    room_h = region[3] - region[1] - mesh_h - 3 * GAP
     r = tr.radii
     r3 = r["3"]
     top = max(r3, r["H"] + max(r["2"], r.get("2'", 0.0)))      # the scheme's top: the ring or the planet over it
     scales = sorted({at_least(r3 / (80.0 * k)) for k in GROW})     # the scheme's scales, the largest drawing first
+    best = None
     for mu in scales:
         ring = r3 / mu * (1 + 1e-9)                              # (``construct_train`` takes μl = this scale)
         if top / mu + 26.0 + min(H_MIN, vel.h) + 20.0 > room_h:   # the scheme, the plan under it, its labels
@@ -548,8 +561,18 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                return longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
-    return vel, plan
+                d = longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
+                if best is None or _rank(d[0]) < _rank(best[0]):
+                    best = d
+                break
+    return best or (vel, plan)
+
+
+def _rank(v) -> tuple:
+    """The planetary pictures' order of preference on the A1 sheet: h at least ``H_MIN`` and the carrier's
+    segment at least ``SEGMENT_MIN`` (what a teacher reads with the ruler: review 13's ωH off 3,8 mm), then
+    the narrowest bound of u1H."""
+    return (v.h < H_MIN - 1e-9, abs(v.segments["H"]) < SEGMENT_MIN - 1e-9, v.ratio_bound)
 
 
 LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
@@ -637,7 +660,7 @@ def meshing_leaf(mesh, lang: str) -> Record:
                                                                scale=drawing_scale(mesh.mu_l, lang)))
 
 
-def set_mesh(pair, f: Form, precision: float, lang: str):
+def set_mesh(pair, f: Form, precision: float, lang: str, o1: bool = True):
     """The meshing at the head of an A2/A3 set: the largest GOST 2.302 scale whose whole depth 2.25m
     is 40–60 mm and whose drawing, caption included, fits the first sheet over its title block (or
     beside it); when none in that band does, the fitting one whose depth comes nearest the band (as
@@ -650,15 +673,15 @@ def set_mesh(pair, f: Form, precision: float, lang: str):
     series = sorted(ENLARGE + REDUCE, reverse=True)
     far = lambda k: max(DEPTH_MM[0] / (2.25 * m * k), 2.25 * m * k / DEPTH_MM[1])     # noqa: E731
     for k in sorted(series, key=lambda k: (round(far(k), 9) if far(k) > 1.0 else 0.0, -k)):
-        mesh = construct_mesh(pair, precision, lang, module_mm=m * k)
+        mesh = construct_mesh(pair, precision, lang, module_mm=m * k, o1=o1)
         b = meshing_leaf(mesh, lang).bounds()
         w, h = b[2] - b[0], b[3] - b[1]
         if (w <= x1 - x0 and h <= y1 - keep[3]) or (w <= keep[0] - x0 and h <= y1 - y0):
             return mesh
-    return construct_mesh(pair, precision, lang, module_mm=m * series[-1])
+    return construct_mesh(pair, precision, lang, module_mm=m * series[-1], o1=o1)
 
 
-def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
+def _more_teeth(pair, mesh, f: Form, precision: float, lang: str, o1: bool = True):
     """The set's meshing at its scale with more teeth of each wheel (the most of ``MORE_TEETH`` whose
     outer teeth stay within ``TEETH_SPAN``) whose drawing with its caption still fits the first sheet
     over its title block; else None."""
@@ -667,7 +690,7 @@ def _more_teeth(pair, mesh, f: Form, precision: float, lang: str):
     for k in MORE_TEETH:                  # (the drawing measured, not its window estimated)
         if any((k / 2 + 0.3) * 2 * math.pi / z > TEETH_SPAN for z in pair.pair.z):
             continue
-        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k)
+        more = construct_mesh(pair, precision, lang, module_mm=mesh.module_mm, teeth=k, o1=o1)
         b = meshing_leaf(more, lang).bounds()
         if b[2] - b[0] <= room_w and b[3] - b[1] <= room_h:
             more.lam = mesh.lam
@@ -732,18 +755,29 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         if pages is not None:
             break
     if pages is None:                     # a set of sheets (sheets/gearset.py)
-        if mesh is not None:              # its meshing at the set's scale (``set_mesh``), not at the one the
-            head = set_mesh(sol.pair, f, precision, lang)  # one-sheet zones took (stop 47: A2 drew 14/35
-            if head.module_mm != mesh.module_mm:           # at 2,5:1, the depth 22,5 mm, s_a2 +5,96 %, while
-                mesh = head                                # 5:1 fits the set's first sheet)
-            # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
-            # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
-            # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
-            mesh.lam = sliding_diagram(sol.pair, mesh, LAMBDA_UNITS[0])
-            drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
-        more = _more_teeth(sol.pair, mesh, f, precision, lang) if mesh is not None else None
-        lam = _set_lambda(sol, mesh, f, lang) if mesh is not None else None
-        pages = _set(drawings, tables, parts, f, more, lang, lam)
+        one = mesh
+
+        def cut(o1: bool):
+            """The set with the meshing drawn with O1 where in reach (``o1``) or its centre line broken."""
+            m_, d_, t_, p_ = one, drawings, tables, parts
+            if m_ is not None:            # its meshing at the set's scale (``set_mesh``), not at the one the
+                head = set_mesh(sol.pair, f, precision, lang, o1)   # one-sheet zones took (stop 47: A2 drew
+                if head.module_mm != m_.module_mm or not o1:    # 14/35 at 2,5:1, the depth 22,5 mm, s_a2
+                    m_ = head                                    # +5,96 %, while 5:1 fits the set's first sheet)
+                # the λ diagrams weighed in the set's cut at the least unit (they stand under the meshing where
+                # its sheet holds them so: stop 47, 11/29 on A2 left its first sheet 45 % empty, 151 mm of λ
+                # diagrams for 145 mm under the meshing); the sheet that holds them takes ``lam``'s longer unit
+                m_.lam = sliding_diagram(sol.pair, m_, LAMBDA_UNITS[0])
+                d_, t_, p_ = _blocks(g, sol, m_, vel, plan, lang)
+            more_ = _more_teeth(sol.pair, m_, f, precision, lang, o1) if m_ is not None else None
+            lam_ = _set_lambda(sol, m_, f, lang) if m_ is not None else None
+            return m_, more_, lam_, _set(d_, t_, p_, f, more_, lang, lam_)
+
+        mesh, more, lam, pages = cut(True)
+        if mesh is not None and mesh.o1_shown and pages is not None:    # O1 drawn where it costs no sheet
+            flat = cut(False)             # (stop 49: 9/40's en A3 set took a 4th sheet, 80 % empty, for it)
+            if flat[3] is not None and len(flat[3]) < len(pages):
+                mesh, more, lam, pages = flat
         if pages is None:
             raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
                                  g.source)
