@@ -223,3 +223,20 @@ def test_the_coulisses_a1_sheet_lets_delta_t_take_the_room_beside_the_band():
     right = max(got[n].record.bounds()[2] for n in ("energy", "wittenbauer", "inertia"))
     tables = min(got[n].record.bounds()[0] for n in ("positions table", "flywheel table"))
     assert tables - right <= 2 * GAP + WIDEN_STEP + 10.0
+
+
+def test_the_coulisses_kl_and_motor_follow_from_the_exact_flywheel_and_the_catalogue(coulisse):
+    """|kl| = J·ω_m²·δ/μ_T with the equation of motion's J (flywheel + rotor): the drawn |kl| within
+    the ruler's 0.5 mm of it (Table 2's 0,00 % is the ruler's luck, not a shortcut); and the motor is
+    the smallest of the 1000-rpm line of the catalogue (model/motors.toml) whose P_n covers the rule's
+    P = M*_c max·ω1/η, M*_c max the closed form's peak over the working stroke."""
+    from graphplan.model.motors import catalogue
+    dyn, f, doc = coulisse
+    J = dyn.flywheel + dyn.constant
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_A) <= f.precision
+    phi0 = math.radians(doc["start_phi_deg"])
+    peak = max(closed(phi0, u)[0] for u in np.linspace(0.0, STROKE, 4001))
+    need = peak * doc["omega_mean"] / 0.88 / 1000.0
+    assert doc["motor"]["power_needed_kW"] == pytest.approx(need, rel=1e-3)
+    line = sorted((m.power_kW, m.name) for m in catalogue() if m.rpm_sync == 1000 and m.power_kW >= need)
+    assert doc["motor"]["name"] == line[0][1]
