@@ -3024,3 +3024,96 @@ planets = 3
 module = 0.002
 rpm = 960
 '''
+
+
+SHEARS49 = '''# Stop 49 (helper dyn49's own check): a sheet-shears feed — a crank-rocker four-bar O1ABO2 whose rocker's
+# extension O2C pushes the table D along a horizontal guide through the rod CD (I(0-1) -> II(2-3) RRR ->
+# II(4-5) RRP); the crank counter-clockwise at 80 rpm; the cutting force on D over its working stroke;
+# dynamics to a 1500-rpm motor, δ = 0.03.
+title = "Шестиланковий механізм подачі ножиць"
+title_en = "Six-bar feed drive of shears"
+designation = "ТММ.НЖ.49.100"
+
+[sheet]
+student = "Перевірка Д. Д."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, 0.05]
+
+[frame.guides]
+table = { through = [0, 0.40], angle_deg = 0, title_uk = "столу", title_en = "of the table" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 80
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.5 }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "O2BC"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+points = { C = 1.6, S3 = 0.7 }
+mass = 8
+inertia = 0.06
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.016
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "table"
+mass = 25
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+working_stroke = "to_min"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 2400
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

@@ -119,12 +119,13 @@ def test_the_energy_mass_diagram_letters_every_value_its_ticks_ask(press):
 
 def test_the_motor_table_says_why_a_flywheel_beside_a_motor_sized_by_the_peak(press):
     """Review 13 #18: the motor is chosen by P = M*_c max·ω1/η (seed 003's rule); Table 3 says in one
-    sentence why the flywheel is still designed: the peak power, the mean M*_d·ω_m (M*_d = A_c/2π)
+    sentence why the flywheel is still designed: the peak power, the mean M*_d·ω_m/η (M*_d = A_c/2π)
     and the flywheel the equation of motion asks with this motor — or, where the motor alone keeps δ,
     that none is needed with it — in both languages, no raw markup."""
     from graphplan.report.dynamics import dynamics_json, motor_note
     doc = dynamics_json(press)
-    mean_kw = doc["work_resistance"] / (2 * math.pi) * doc["omega_mean"] / 1000.0
+    # the mean power like the rule's peak, the motor's (through η: stop 49)
+    mean_kw = doc["work_resistance"] / (2 * math.pi) * doc["omega_mean"] / doc["motor"]["efficiency"] / 1000.0
     for lang in ("en", "uk"):
         said = motor_note(doc, lang)
         assert said is not None and said.count(". ") == 0           # one sentence
@@ -140,7 +141,7 @@ def test_the_motor_table_says_why_a_flywheel_beside_a_motor_sized_by_the_peak(pr
             assert ("no flywheel" if lang == "en" else "маховик не потрібен") in said
     from graphplan.report.dynamics import dynamics_table
     for lang in ("en", "uk"):                  # the terminal's `dynamics` says it
-        assert ("Why a flywheel" if lang == "en" else "Чому маховик") in dynamics_table(press, lang)
+        assert ("The motor is sized by the peak" if lang == "en" else "Двигун вибрано за піком") in dynamics_table(press, lang)
 
 
 def test_the_slotted_levers_epsilon_misses_5_percent_by_the_method_and_says_why():

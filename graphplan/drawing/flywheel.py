@@ -13,7 +13,7 @@ from graphplan.drawing.diagrams import fmt
 from graphplan.drawing.labels import place_beside, place_labels, row_clear
 from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
-from graphplan.util.words import fixed, num
+from graphplan.util.words import column_decimals, fixed, num
 
 if TYPE_CHECKING:
     from graphplan.graphic.flywheel import Flywheel
@@ -760,7 +760,8 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     L = width or f.L
     rec = Record(w["speed"])
     name = dyn.drive.motor.name if lang == "uk" else latin(dyn.drive.motor.name)
-    motor = (w["motor"].format(name=name, fl=fmt(dyn.motor_flywheel, lang)) if dyn.motor_flywheel > 0
+    motor = (w["motor"].format(name=name, fl=fixed(dyn.motor_flywheel, lang, _flywheel_places(f)))
+             if dyn.motor_flywheel > 0
              else w["motor_none"].format(name=name))     # δ < the request without one: beside it
     # the flywheel's ω_m is the scene's n_1; the motor's crank turns at its own mean speed (another symbol)
     curves = [(dyn.motion, "curve", w["classical"] if dyn.needs_flywheel else w["classical_none"], "ω_m", "δ"),
@@ -808,17 +809,29 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
         rec.segment((0.0, ym), (L, ym), role="axis", layer=LAYER, step=f"{sym} line")
         means.append(LabelRequest(complex(L, ym), sym, 1 + 0j, NUM, step=f"{sym} line"))
     place_labels(rec, means, layer=LAYER)
-    # the flywheel's curve's extremes, from which δ = (ω_max − ω_min)/ω_m is read
-    m = dyn.motion
+    # each curve's extremes, from which its δ = (ω_max − ω_min)/ω_m is read (the motor's too: its
+    # legend's δ_дв is read off its own curve — stop 49, the dashed curve had none lettered)
     asked = []
-    places = max(3 - math.floor(math.log10(abs(m.mean))), 0) if m.mean else 2    # ω_m's four figures, both the same
-    for name, j, toward in (("max", int(np.argmax(m.omega)), 1j), ("min", int(np.argmin(m.omega)), -1j)):
-        at = (float(m.turn[j] / (2 * math.pi) * L), float(y(m.omega[j])))
-        rec.point(at, role="joint", layer=LAYER, step=f"ω_{name}")
-        asked.append(LabelRequest(complex(*at), f"ω_{{{name}}} = {fixed(float(m.omega[j]), lang, places)} {w['rad']}/{w['s']}", toward, NUM,
-                                  step=f"ω_{name}"))
+    for k, m in enumerate((dyn.motion, dyn.motor_motion)):
+        places = max(3 - math.floor(math.log10(abs(m.mean))), 0) if m.mean else 2    # ω_m's four figures
+        tail = "" if k == 0 else (" дв" if lang == "uk" else " mot")
+        for name, j, toward in (("max", int(np.argmax(m.omega)), 1j), ("min", int(np.argmin(m.omega)), -1j)):
+            at = (float(m.turn[j] / (2 * math.pi) * L), float(y(m.omega[j])))
+            step = f"ω_{name}" + ("" if k == 0 else " motor")
+            rec.point(at, role="joint", layer=LAYER, step=step)
+            asked.append(LabelRequest(complex(*at), f"ω_{{{name}{tail}}} = {fixed(float(m.omega[j]), lang, places)} "
+                                                    f"{w['rad']}/{w['s']}", toward, NUM, step=step))
     place_labels(rec, asked, layer=LAYER)
     return rec
+
+
+def _flywheel_places(f: Flywheel) -> int:
+    """The decimals Table 2 prints its flywheels to (report.dynamics ``flywheel_decimals``: four
+    figures for the smallest, ``column_decimals``), so the legend's motor flywheel reads as Table 2's
+    (9,08, not 9,077 beside it — stop 49)."""
+    dyn = f.dyn
+    values = [v for v in (f.flywheel, f.approximate, f.merkalov, dyn.motor_flywheel) if v > 0]
+    return column_decimals(values + ([dyn.flywheel] if dyn.needs_flywheel else []), least=4)
 
 
 SPEED_TICKS = 8      # about this many graduations of ω over the plot's height (5 left its extremes between ticks)
@@ -826,7 +839,7 @@ SPEED_TICKS = 8      # about this many graduations of ω over the plot's height 
 
 SPEED_MIN = (150.0, 50.0)     # mm: the smallest ω(φ) plot (abscissa × height) that still reads
 SPEED_ASPECT = 0.75           # the plot no taller than ¾ of its abscissa …
-SPEED_TALLEST = 160.0         # … nor than this (mm)
+SPEED_TALLEST = 220.0         # … nor than this (mm; 160 left ~55 mm over the tables of stop 49's coulisse)
 
 
 def speed_fitted(f: Flywheel, lang: str, w: float, h: float) -> Record:
@@ -836,9 +849,20 @@ def speed_fitted(f: Flywheel, lang: str, w: float, h: float) -> Record:
     pw, ph = SPEED_MIN
     probe = speed_record(f, lang, width=pw, height=ph)
     x0, y0, x1, y1 = probe.bounds()
-    pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed
+    pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed …
     ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), SPEED_ASPECT * pw, SPEED_TALLEST))
-    return speed_record(f, lang, width=pw, height=ph)
+    rec = speed_record(f, lang, width=pw, height=ph)
+    # … but for the labels of the extremes, placed clear of the curves at the probe's size and not at
+    # this one (stop 49: the motor's ω_max lettered left of the axis on the small probe cost ω(φ) 25 mm
+    # of its zone): once more with the overhang measured at this size, where the zone still holds it
+    x0, y0, x1, y1 = rec.bounds()
+    more = w - (x1 - x0)
+    if more > 1.0 and pw > SPEED_MIN[0]:
+        wider = speed_record(f, lang, width=pw + more, height=ph)
+        b = wider.bounds()
+        if b[2] - b[0] <= w + 1e-9 and b[3] - b[1] <= max(h, y1 - y0) + 1e-9:
+            return wider
+    return rec
 
 
 def _nice(raw: float) -> float:

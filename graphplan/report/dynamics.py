@@ -585,7 +585,7 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
 def motor_note(doc: dict[str, Any], lang: str) -> str | None:
     """One sentence on why a flywheel where the motor is sized by the peak (review 13 #18: "why a
     2,65 kg·m² flywheel when the 5,5 kW motor carries the peak anyway?"). Seed 003's power rule,
-    P = M*_c max·ω_1/η, lets the motor carry the cycle's peak load (the mean power is M*_d·ω_m); how
+    P = M*_c max·ω_1/η, lets the motor carry the cycle's peak load (the mean is M*_d·ω_m/η); how
     evenly the crank turns is set by the inertia — on its working branch M = Aω + B (A < 0) the
     motor's moment grows only as ω falls —, so the equation of motion with this motor still asks
     for its flywheel (Table 2's last row), or, where it keeps δ_дв < δ alone, none. None where no
@@ -595,27 +595,29 @@ def motor_note(doc: dict[str, Any], lang: str) -> str | None:
         return None
     uk = lang == "uk"
     kw = "кВт" if uk else "kW"
-    peak, mean = sig(m["power_needed_kW"], lang), sig(doc["moment_driving"] * doc["omega_mean"] / 1000.0, lang)
+    # the mean like the peak, the motor's: through η (stop 49: 0,6187 kW beside a crank's 0,2473 kW)
+    peak = sig(m["power_needed_kW"], lang)
+    mean = sig(doc["moment_driving"] * doc["omega_mean"] / m["efficiency"] / 1000.0, lang)
     md, mc = ("M^*_д", "M^*_{с max}") if uk else ("M^*_d", "M^*_{c max}")
     rule = f"P = {mc}·ω_1/η = {peak} {kw}"
+    avg = f"({'середня' if uk else 'the mean'} {md}·ω_m/η = {mean} {kw})"
     d = num(doc["delta"], lang)
+    # a statement, not a question (stop 49: «Чому маховик, коли …» read as a heading on the sheet)
     if fw["motor"] > 0:
         J = flywheel_text(fw["motor"], lang, flywheel_decimals(doc))
         if uk:
-            return (f"Чому маховик, коли двигун вибрано за піком: {rule} (середня ω_m·{md} = {mean} {kw}) — лише "
-                    f"для піку навантаження; рівномірність ходу дає інерція (M(ω) двигуна росте лише зі спадом ω): "
-                    f"для δ = {d} з цим двигуном — {J} кг·м²")
-        return (f"Why a flywheel with a motor sized by the peak: {rule} (the mean ω_m·{md} = {mean} {kw}) is for the "
-                f"peak load only; the inertia keeps the speed even (M(ω) grows only as ω falls): δ = {d} needs "
-                f"{J} kg·m² with this motor")
+            return (f"Двигун вибрано за піком навантаження: {rule} {avg}; рівномірність ходу дає не потужність, "
+                    f"а інерція (M(ω) двигуна росте лише зі спадом ω): для δ = {d} з цим двигуном потрібен "
+                    f"маховик {J} кг·м²")
+        return (f"The motor is sized by the peak load: {rule} {avg}; the speed is kept even not by the power but "
+                f"by the inertia (the motor's M(ω) grows only as ω falls): δ = {d} with this motor needs a "
+                f"{J} kg·m² flywheel")
     dm = f"{motor_delta(lang)} = {num(m['motion']['delta'], lang, 3)} < {d}"
     if uk:
-        return (f"Чому маховик, коли двигун вибрано за піком: {rule} (середня ω_m·{md} = {mean} {kw}) дає двигун, "
-                f"чий M(ω) круто росте зі спадом ω: він сам тримає {dm} — з ним маховик не потрібен; маховик "
-                f"таблиці 2 — для сталого {md}")
-    return (f"Why a flywheel when the motor is sized by the peak: {rule} (the mean ω_m·{md} = {mean} {kw}) gives a "
-            f"motor whose M(ω) grows steeply as ω falls: it holds {dm} alone — no flywheel with it; Table 2's "
-            f"flywheel is for a constant {md}")
+        return (f"Двигун вибрано за піком навантаження: {rule} {avg}; його M(ω) круто росте зі спадом ω, і він "
+                f"сам тримає {dm} — з ним маховик не потрібен; маховик таблиці 2 — для сталого {md}")
+    return (f"The motor is sized by the peak load: {rule} {avg}; its M(ω) grows steeply as ω falls and it holds "
+            f"{dm} alone — no flywheel with it; Table 2's flywheel is for a constant {md}")
 
 
 # -- the flywheel's arithmetic, every term printed ---------------------------------------------------
@@ -741,8 +743,8 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
             f"{_fl(approximate_chain(doc), lang, flywheel_decimals(doc))}"
-            + (f" (ΔT_{{max}}, ΔT_{{min}} {'з кривої ΔT(φ) при φ' if uk else 'off the ΔT(φ) curve at φ'}{NB}"
-               f"{fixed(p['max_deg'], lang, 0)}°, {fixed(p['min_deg'], lang, 0)}°)"))
+            + (f" (ΔT_{{max}}, ΔT_{{min}} {'з кривої ΔT(φ) при' if uk else 'off the ΔT(φ) curve at'} "
+               f"{fixed(p['max_deg'], lang, 0)}°{NB}{'і' if uk else 'and'}{NB}{fixed(p['min_deg'], lang, 0)}°)"))
 
 
 def error_text(v: float, lang: str) -> str:

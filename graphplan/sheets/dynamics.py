@@ -371,12 +371,15 @@ def _caption_apart(energy: Record, witt: Record) -> Record:
                                  for p in energy.items], dict(energy.scales))
 
 
-def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict[str, tuple]]:
+def band(f: Flywheel, lang: str, length: float,
+         energy_length: float | None = None) -> tuple[dict[str, Record], dict[str, tuple]]:
     """The textbook's elimination of φ (REFERENCE §9): ΔT(φ) to the left of the energy–mass
     diagram, its ΔT zero line the diagram's I* axis (the same μ_T), I*(φ) turned by 90° under it,
     its I* axis the diagram's (the same μ_I), φ running down ``length`` mm; a thin horizontal
     projection from each ΔT(φ) point and a thin vertical one from each turned I*(φ) point meet at
-    the diagram's point of that division. Records in one frame (the ΔT axis of the energy–mass
+    the diagram's point of that division. ``energy_length``: ΔT(φ)'s own φ axis where it is longer
+    than I*(φ)'s (the elimination of φ pairs the divisions by number, so each diagram of the
+    projection has its own φ scale — ``widened``), each diagram's μ_φ then stated beside it. Records in one frame (the ΔT axis of the energy–mass
     diagram at x = 0, its I* axis at y = 0), captioned, and the boxes they own (touching where the
     projections cross from one to the other)."""
     from graphplan.drawing.labels import sketched
@@ -386,13 +389,14 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
     px0, py0, _, _ = probe.bounds()
     side = px0 - 3.0                                   # the energy–mass diagram's left side …
     foot = py0 - 2.0                                   # … and its foot
+    el = length if energy_length is None else energy_length
     turned = _caption(inertia_turned(f, lang, length, 0.0), w["inertia"])
     for attempt in range(6):                           # the lettering keeps off the lines: where it moves
-        reach = length + 24.0                          # past the side or the foot, they go farther
-        energy = _caption(energy_projected(f, lang, length, reach), w["energy"], scale=band_scale(length, lang))
+        reach = el + 24.0                              # past the side or the foot, they go farther
+        energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
         if energy.bounds()[2] > reach:                 # ΔT(φ)'s lines run past its φ and its caption
             reach = energy.bounds()[2]
-            energy = _caption(energy_projected(f, lang, length, reach), w["energy"], scale=band_scale(length, lang))
+            energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
         energy = energy.moved(side - reach, 0.0)
         if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
             foot = min(foot, energy.bounds()[1] - 2.0)
@@ -406,6 +410,10 @@ def band(f: Flywheel, lang: str, length: float) -> tuple[dict[str, Record], dict
     ex0, ey0, _, ey1 = energy.bounds()
     dy = foot - 3.0 - turned.bounds()[3]
     inertia = _caption(inertia_turned(f, lang, length, foot - dy), w["inertia"]).moved(0.0, dy)
+    if abs(el - length) > 1e-9:                        # I*(φ)'s own φ scale, under its μ_I
+        mu = next(p for p in inertia.items if p.kind == "text" and p.text.startswith("μ_I ="))
+        inertia.label((mu.points[0][0], mu.points[0][1] - line_pitch(mu.size)),
+                      band_scale(turned_length(f, length), lang), size=mu.size, layer=mu.layer, step="axes I*_m")
     wx0, wy0, wx1, wy1 = witt.bounds()
     ix0, iy0, ix1, _ = inertia.bounds()
     boxes = {"energy": (ex0, ey0, side, ey1), "wittenbauer": (side, foot, wx1, wy1),
@@ -735,6 +743,31 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
     def band_room(tree) -> float:              # the width of the box the composition gives the band
         return next(b[2] - b[0] for leaf, b in arrange(tree, (0.0, 0.0, W, H)) if leaf.name == "band")
 
+    drawn_bands: dict = {}
+
+    def notes_in_widened(L: float, size: float, length: float, shape: str, C: Leaf, leaves: dict[str, Leaf],
+                         per) -> bool:
+        """Each language's notes in the nook of the band the sheet draws with ΔT(φ) widened
+        (``widened``: under the longer ΔT(φ) the nook is wider — stop 49's sieve drive: the notes
+        then leave the tables' column, ~335 × 100 mm empty under ΔT(φ) before)."""
+        fw_ = built(L, size)
+
+        def make(lang: str, el: float):
+            if (L, size, length, lang, el) not in drawn_bands:
+                drawn_bands[(L, size, length, lang, el)] = band(fw_, lang, length, el)
+            return drawn_bands[(L, size, length, lang, el)]
+        zones = [({**{name: Leaf(name, *wh) for name, wh in p[1].items()}, "band": leaves["band"]}, C) for p in per]
+        got = widened(fw_, length, zones, shape, foot, (0.0, 0.0, W, H), make)
+        if got is None:
+            return False
+        for p in per:
+            boxes_ = got[1][p[0]][1]
+            own = {**{name: Leaf(name, *wh) for name, wh in p[1].items()}, "band": got[2]}
+            slack = (band_room(_tree(shape, own, C, foot)) - _band_size(boxes_)[0]) / 2
+            if nook_for(boxes_, p[3], slack) is None:
+                return False
+        return True
+
     foot = keep_out(f)[3] - y0
 
     def fit(k: int):                      # the scales: as the classical composition sets them
@@ -795,7 +828,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                             tree = _tree(shape, leaves, C, foot)
                             tw, th = extent(tree)
                             if tw <= W + 1e-9 and th <= H + 1e-9 and (
-                                    not in_nook or notes_in_nook(nooks, per, shape, C, leaves)):
+                                    not in_nook or notes_in_nook(nooks, per, shape, C, leaves)
+                                    or notes_in_widened(L, size, length, shape, C, leaves, per)):
                                 if shape == "speed" and parts == 1 and rowed(leaves, tables, shape, foot, in_nook,
                                                                             notes_):
                                     parts = ROWED
@@ -1219,6 +1253,50 @@ def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Lea
     return laid, nook, speed
 
 
+WIDEN_STEP = 5.0      # mm: ΔT(φ)'s widened φ axis a multiple of this (the same in either language)
+WIDEN_LEAST = 20.0    # mm: … and widened only by this much or more
+
+
+def widened(fw: Flywheel, length: float, zones: list[tuple[dict[str, Leaf], Leaf]], shape: str, foot: float,
+            region: tuple, make=None) -> tuple[float, dict[str, tuple], Leaf] | None:
+    """The band with ΔT(φ)'s φ axis longer than I*(φ)'s (``band``'s ``energy_length``) as far as the
+    composition holds it in both languages (``zones``: each language's drawings and column; the band
+    as wide as the field lets it beside the others, ω(φ) then grown into what is left) — its height
+    unchanged: the band's φ axis is bounded by the turned I*(φ)'s height, and where the moments over
+    it are wider the band stood centred with paper either side (stop 49's coulisse: ~120 × 280 mm
+    between I*(φ) and the tables, ~70 × 100 left of ΔT(φ)); ΔT(φ) no longer than the moments' L.
+    (ΔT(φ)'s φ axis, each language's (parts, boxes), the band's leaf), or None where it gains less
+    than ``WIDEN_LEAST``. ``make(lang, el)``: the band drawn (``band``; a search passes its memo)."""
+    make = make or (lambda lang, el: band(fw, lang, length, el))
+    W, H = region[2] - region[0], region[3] - region[1]
+    base = zones[0][0]["band"]
+
+    def holds(width: float) -> bool:      # the composition with the band this wide still fits the field,
+        for leaves, C in zones:           # each language's
+            tw, th = extent(_tree(shape, {**leaves, "band": Leaf("band", width, base.h)}, C, foot))
+            if tw > W + 1e-9 or th > H + 1e-9:
+                return False
+        return True
+    if not holds(base.w):
+        return None
+    room, hi = base.w, W                  # the widest band the composition holds (ω(φ) at its smallest:
+    for _ in range(24):                   # it then grows into what is left, ``speed_zone``)
+        mid = (room + hi) / 2
+        room, hi = (mid, hi) if holds(mid) else (room, mid)
+    more = min(room - base.w, fw.L - length)
+    el = length + math.floor(more / WIDEN_STEP) * WIDEN_STEP
+    for _ in range(4):                    # the lettering's overhang may differ: shorter until it holds
+        if el - length < WIDEN_LEAST - 1e-9:
+            return None
+        got = {other: make(other, el) for other in LANGS}
+        wh = [_band_size(b) for _, b in got.values()]
+        bw, bh = max(a[0] for a in wh), max(a[1] for a in wh)
+        if bw <= room + 1e-9 and bh <= base.h + 1e-9:
+            return el, got, Leaf("band", bw, bh)
+        el -= max(WIDEN_STEP, math.ceil((bw - room) / WIDEN_STEP) * WIDEN_STEP)
+    return None
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its
@@ -1248,6 +1326,24 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             rec = rec.moved(0.0, b[3] - rec.bounds()[3])
         return [Placed(leaf.name, rec, b)]
     height = None if in_nook else (lambda w: _wh(note_block(note_lines, w))[1])   # the notes in the column
+    if shape != "set":                       # ΔT(φ) across the band's box where I*(φ)'s height bounds the band
+        zones = []                           # each language's drawings and column: the same band in either
+        for other in LANGS:
+            if other == lang:
+                zones.append((leaves, _column(f, tables, parts, height, shape)[0]))
+                continue
+            _, drawn_ = _drawn(dyn, args, L, size, other, fw)
+            doc_ = dynamics_json(fw)
+            lines_ = lines_of(notes(fw, doc_, other, short))
+            zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
+                           "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
+                          _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor)], parts,
+                                  None if in_nook else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
+        got = widened(fw, length, zones, shape, foot - region[1], region)
+        if got is not None and (not in_nook or nook_for(got[1][lang][1], note_lines) is not None
+                                or nook_for(boxes, note_lines) is None):     # the notes' nook kept
+            parts_, boxes = got[1][lang]
+            leaves["band"] = Leaf("band", got[2].w, got[2].h, record=_union(parts_))
     if shape != "set":                       # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
