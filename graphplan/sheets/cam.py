@@ -13,7 +13,7 @@ from graphplan.exact.cam import solve
 from graphplan.graphic.cam import POLE_MM, closing_warning, construct, phase_drawn_at
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
-from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns
+from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns, table_rows
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       later_keep, note_block)
 from graphplan.sheets.form import Form, table
@@ -66,7 +66,8 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5)
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     cols = table_columns(doc, lang)          # the terminal's table cell for cell (report.cam)
     keys = ("phi", "s", "s_mm", "s_gr", "ds", "v", "v_mm", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
-    rows = [head] + [[str(j)] + [cols[c][j] for c in keys] for j in range(len(doc["positions"]))]
+    ps = doc["positions"]
+    rows = [head] + [[str(ps[j].get("number", j))] + [cols[c][j] for c in keys] for j in table_rows(doc)]
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
     return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
 
