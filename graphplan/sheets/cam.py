@@ -781,6 +781,12 @@ TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the
 TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
 
 
+# where rows of TABLE_ROW are too many for the room under the profile (a cam of 10 divisions and no far
+# dwell: 22 rows want 182 mm where it has 160), the lettering still 3.5 mm in closer rows — wider than
+# the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
+CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
+
+
 def _in_hole(boxes: dict) -> bool:
     """Whether the notes (box) stand in the diagrams' box, under the phase diagram."""
     d, nb = boxes["diagrams"], boxes["notes"]
@@ -795,7 +801,7 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    for size, row in TABLE_SIZES:
+    for size, row in TABLE_SIZES + CLOSER_ROWS:
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
         again = _laid(f, leaves, tall, nts, notes_at or _notes_at(doc, lang, cam))
         if not _one_sheet(again):
