@@ -533,6 +533,10 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
     return d.w * d.h
 
 
+# a set's μ_φ of the series in °/mm or rad/mm, the finer (graphic.cam.series_phi), as the A1 sheet's: in
+# °/mm alone the A2 set's diagrams drew 240° at 1 °/mm, 240 mm of a 564 mm field, a third of their sheet
+# blank beside them, where 0,01 рад/мм draws 419 mm (stop 49)
+SET_SERIES = "rad"
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
@@ -610,7 +614,7 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...],
              poles: tuple = (None, None)) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
-                      series=True, H1=poles[0], H2=poles[1])
+                      series=SET_SERIES, H1=poles[0], H2=poles[1])
         return all(alone(name, g) for name in names)
     both = ("av", "s", "phase") if split else ("diagrams", "phase")
     sizes = list(SET_SIZES)
@@ -630,7 +634,7 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     def shared(size: float, prof: float, height: float, accel: float) -> bool:
         """Whether the phase diagram (a translating follower's at μ_s) and the profile share a sheet."""
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False,
-                      accel=accel, series=True)
+                      accel=accel, series=SET_SERIES)
         for lang in ("uk", "en"):
             pair = [Leaf(name, *extent(Leaf(name, record=captioned(draw(sol, g, lang),
                                                                     *_captions(g, sol.cam, lang)[name]))))
@@ -648,7 +652,7 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
         ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
     h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
         if split else (None, None)
-    return kl, kp, ks, ka, h1, h2, True
+    return kl, kp, ks, ka, h1, h2, SET_SERIES
 
 
 def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | None, float | None]:
@@ -658,7 +662,7 @@ def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | N
     does not read, gives up the height: μ_{d²s/dφ²} = μ_s/(μ_φ²·H_1·H_2)). (None, None): as they are."""
     import numpy as np
     g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], measure=False,
-                  series=True)
+                  series=SET_SERIES)
     peak = min(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1))
     if peak >= LEGIBLE_MM or peak <= 0:
         return None, None
