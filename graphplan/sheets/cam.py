@@ -48,7 +48,8 @@ def _fields(cam: Cam, lang: str) -> dict[str, str]:
             "subtitle": WORDS[lang]["subtitle"]}
 
 
-def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5) -> Record:
+def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5, span: float | None = None
+                    ) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
     graphical values from them, each to its exact value's decimals, with δ worked out from the two
     printed numbers (report.cam ``table_columns``), ϑ exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
@@ -69,7 +70,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5)
     ps = doc["positions"]
     rows = [head] + [[str(ps[j].get("number", j))] + [cols[c][j] for c in keys] for j in table_rows(doc)]
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
-    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
+    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"], span=span)
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -789,6 +790,7 @@ TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
 # dwell: 22 rows want 182 mm where it has 160), the lettering still 3.5 mm in closer rows — wider than
 # the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
 CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
+STRETCH = 1.5        # a table's columns widened at most this much to span its column
 
 
 def _in_hole(boxes: dict) -> bool:
@@ -807,6 +809,11 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
     for size, row in TABLE_SIZES + CLOSER_ROWS:
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
+        # across the profile's column (stop 49: 70 mm of it stood blank beside the table, over the title
+        # block), its columns widened by at most STRETCH
+        wide = min(profile.w, STRETCH * tall.w)
+        if wide > tall.w + 1.0:
+            tall = Leaf("table", record=positions_table(doc, lang, row, size, span=wide))
         again = _laid(f, leaves, tall, nts, notes_at or _notes_at(doc, lang, cam))
         if not _one_sheet(again):
             continue
