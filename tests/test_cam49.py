@@ -126,3 +126,37 @@ def test_the_printed_offset_side_and_pressure_angles_are_the_clockwise_cams(cam4
     printed = sol.pressure_maxima()
     assert largest(x_f) == pytest.approx((abs(printed[0]), abs(printed[1])), abs=0.05)
     assert largest(-x_f)[0] > cam.allowed[0]
+
+
+def test_the_own_rocking_cams_printed_angles_and_curvature_by_brute_force(own49):
+    """CAM_OWN49 (rocking roller follower, cw, cycloidal rise 90° into a trapezoidal return 120°, the
+    trapezoid's ramps an eighth of the phase each) turned clockwise by brute force: the pivot O₁ at
+    (a, 0), the arm at ψ0 + ψ from O₁O (ψ0 from the triangle OO₁C: a, l, R0 — the cosine rule), the
+    roller's centre's locus in the cam's frame; ϑ between its normal and C's velocity (square to
+    the arm); ρ its radius of curvature where convex. The printed ψ0, largest angles and ρ_min."""
+    sol, _ = own49
+    a, l, R0 = sol.cam.centre_distance, sol.cam.arm, sol.geometry.R0
+    Psi, rise, ret = math.radians(18.0), math.radians(90.0), math.radians(120.0)
+    phi = np.linspace(0.0, 2 * math.pi, 36001)
+    x = np.linspace(0.0, 1.0, 4001)            # the trapezoid's d²/du² (ramps 1/8) integrated twice
+    acc = np.interp(x, [0, 1 / 8, 3 / 8, 5 / 8, 7 / 8, 1], [0, 1, 1, -1, -1, 0])
+    v = np.concatenate([[0.0], np.cumsum((acc[1:] + acc[:-1]) / 2 * np.diff(x))])
+    s = np.concatenate([[0.0], np.cumsum((v[1:] + v[:-1]) / 2 * np.diff(x))])
+    u, w = np.clip(phi / rise, 0, 1), np.clip((phi - rise) / ret, 0, 1)
+    psi = np.where(phi <= rise, Psi * (u - np.sin(2 * math.pi * u) / (2 * math.pi)),
+                   np.where(phi <= rise + ret, Psi * (1 - np.interp(w, x, s / s[-1])), 0.0))
+    psi0 = math.acos((a * a + l * l - R0 * R0) / (2 * a * l))
+    ang = math.pi - (psi0 + psi)
+    c, sn = np.cos(phi), np.sin(phi)
+    C = np.stack([a + l * np.cos(ang), l * np.sin(ang)])
+    P = np.stack([c * C[0] - sn * C[1], sn * C[0] + c * C[1]])
+    t = np.gradient(P, phi, axis=1)
+    vel = np.stack([-np.sin(ang), np.cos(ang)])
+    velc = np.stack([c * vel[0] - sn * vel[1], sn * vel[0] + c * vel[1]])
+    theta = np.degrees(np.arcsin(np.clip(np.abs((t / np.linalg.norm(t, axis=0) * velc).sum(axis=0)), 0, 1)))
+    dd = np.gradient(t, phi, axis=1)
+    rho = np.linalg.norm(t, axis=0) ** 3 / (t[0] * dd[1] - t[1] * dd[0])
+    up, down = phi <= rise, (phi > rise) & (phi <= rise + ret)
+    assert sol.geometry.psi0 == pytest.approx(psi0, abs=1e-9)
+    assert (theta[up].max(), theta[down].max()) == pytest.approx(tuple(abs(x) for x in sol.pressure_maxima()), abs=0.05)
+    assert float(rho[rho > 0].min()) == pytest.approx(sol.curvature_min(), rel=2e-3)
