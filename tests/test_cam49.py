@@ -160,3 +160,20 @@ def test_the_own_rocking_cams_printed_angles_and_curvature_by_brute_force(own49)
     assert sol.geometry.psi0 == pytest.approx(psi0, abs=1e-9)
     assert (theta[up].max(), theta[down].max()) == pytest.approx(tuple(abs(x) for x in sol.pressure_maxima()), abs=0.05)
     assert float(rho[rho > 0].min()) == pytest.approx(sol.curvature_min(), rel=2e-3)
+
+
+def test_the_parabolic_returns_jumps_are_drawn_upright(cam49):
+    """The parabolic return's d²s/dφ² is −4h/Φ² over its first half and +4h/Φ² over its second: at its
+    middle (170°) the curve's line goes straight up by 8h/Φ² (drawn at μ_a), and at the rise's end
+    (100°) it steps from the cosine's −hπ²/(2Φ_п²) to −4h/Φ_с², each at one abscissa (it leant over the
+    grid's step)."""
+    sol, g = cam49
+    dia = diagrams(sol, g, "uk", ("a",))
+    pts = np.asarray(next(q for q in dia.items if q.step == "a(φ) exact").points)
+    h, rise, ret = sol.cam.stroke, math.radians(100.0), math.radians(140.0)
+    for at, jump in ((rise + ret / 2, 8 * h / ret ** 2),
+                     (rise, -4 * h / ret ** 2 + h * math.pi ** 2 / (2 * rise ** 2))):
+        x = at / g.mu_phi
+        near = np.flatnonzero(np.abs(pts[:, 0] - x) < 1e-4)         # the points at that abscissa
+        assert len(near) >= 2
+        assert pts[near[-1], 1] - pts[near[0], 1] == pytest.approx(jump / g.mu_a, rel=1e-3)
