@@ -600,8 +600,8 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
     ordinates, then d²s/dφ² alone, then the abscissa alone, and the profile, the main drawing, at the largest standard scale at
     which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large.
-    The scales of the series (construct's ``series``: μ_φ in °/mm and μ_s standard, the poles whole
-    millimetres); the tuple's seventh item says so."""
+    The scales of the series (construct's ``series``: μ_φ in °/mm or rad/mm, the finer — SET_SERIES —,
+    μ_s standard, the poles whole millimetres); the tuple's seventh item says which."""
     from graphplan.drawing.cam import phase_diagram, profile_drawing
     region = field_of(f)
     memo: dict = {}
