@@ -177,3 +177,23 @@ def test_the_parabolic_returns_jumps_are_drawn_upright(cam49):
         near = np.flatnonzero(np.abs(pts[:, 0] - x) < 1e-4)         # the points at that abscissa
         assert len(near) >= 2
         assert pts[near[-1], 1] - pts[near[0], 1] == pytest.approx(jump / g.mu_a, rel=1e-3)
+
+
+@pytest.mark.slow
+def test_the_own_cams_a2_set_draws_its_diagrams_across_the_sheet(tmp_path):
+    """CAM_OWN49 on A2: the three diagrams drew 210° at 1 °/mm over 268 of the 564 mm field (s grown
+    first to the sheet's height), a third of sheet 1 blank beside them; at the next standard μ_φ
+    (0,01 рад/мм), their ordinates shortened to fit, they span at least 70 % of the field's width."""
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions, defects, field_of
+    from graphplan.sheets.form import form
+    path = tmp_path / "own49.toml"
+    path.write_text(CAM_OWN49, encoding="utf-8")
+    f = form("A2")
+    sheet = build_cam_sheet(load(path), f, SheetOptions(lang="uk", sheet="cam"))
+    assert defects(sheet) == []
+    first = {p.name: p for p in sheet.pages[0].placed}
+    b = first["diagrams"].record.bounds()
+    x0, _, x1, _ = field_of(f)
+    assert b[2] - b[0] >= 0.7 * (x1 - x0)
+    assert first["diagrams"].record.scales["mu_phi"] == pytest.approx(0.01)

@@ -630,6 +630,9 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
     up = [x for x in sizes if x > kl]        # the abscissa alone longer (the ordinates as they are)
     kl = (_largest(lambda x: fits(x, k, ks, ka, both), up) if up else None) or kl
+    if not split:
+        kl, ks, ka = _wider(sol, n, precision, sizes, (kl, k, ks, ka),
+                            lambda x, h, a: fits(x, k, h, a, both))
     kp = _largest(lambda x: fits(kl, x, ks, ka, ("profile", "phase")), sizes) or sizes[0]
 
     def shared(size: float, prof: float, height: float, accel: float) -> bool:
@@ -654,6 +657,36 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
         if split else (None, None)
     return kl, kp, ks, ka, h1, h2, SET_SERIES
+
+
+WIDER = 1.15      # the diagrams' drawn area a longer abscissa must gain over the taller ordinates (_wider)
+
+
+def _wider(sol, n, precision: float, sizes: list[float], sz: tuple, fits) -> tuple[float, float, float]:
+    """(abscissa, s, d²s/dφ²) sizes of a set's sheet of the three diagrams: as grown (ordinates first,
+    then the abscissa: ``sz`` = (kl, k, ks, ka)), or — where the next finer standard μ_φ draws them
+    larger by WIDER in area with the ordinates shortened to fit (``fits(size, height, accel)``) — that
+    (stop 49: the own rocking cam's A2 set drew 210° at 1 °/mm over 268 of its 564 mm, s grown to the
+    sheet's height first, a third of sheet 1 blank beside it)."""
+    from graphplan.drawing.cam import diagrams
+    kl, k, ks, ka = sz
+
+    def drawn(size: float, height: float, accel: float) -> tuple[float, float]:
+        g = construct(sol, n, precision, size=size, profile_size=k, height=height, accel=accel, measure=False,
+                      series=SET_SERIES)
+        b = diagrams(sol, g, "en").bounds()
+        return (b[2] - b[0]) * (b[3] - b[1]), g.mu_phi
+    area, mu = drawn(kl, ks, ka)
+    for x in (s for s in sizes if s > kl):
+        if construct(sol, n, precision, size=x, profile_size=k, height=ks, accel=ka, measure=False,
+                     series=SET_SERIES).mu_phi >= mu * (1 - 1e-9):
+            continue                       # the same μ_φ: no longer
+        h = _largest(lambda y: fits(x, y, sizes[0]), [s for s in sizes if s <= ks])
+        if h is None:
+            return kl, ks, ka
+        a = _largest(lambda y: fits(x, h, y), [s for s in sizes if s <= ka]) or sizes[0]
+        return (x, h, a) if drawn(x, h, a)[0] > WIDER * area else (kl, ks, ka)
+    return kl, ks, ka
 
 
 def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | None, float | None]:
