@@ -3117,3 +3117,49 @@ delta = 0.03
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+CAM49 = '''# Stop 49 (the lead's check): a translating knife-edge follower, the cam clockwise, the offset chosen by the
+# rule, a cosine rise of 100° straight into a parabolic return of 140° (no far dwell), 10 divisions.
+title = "Кулачковий механізм з поступальним загостреним штовхачем (перевірка 49)"
+title_en = "Cam with a translating knife-edge follower (check 49)"
+designation = "ТММ.КМ.49.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.028
+offset = "auto"
+roller_radius = 0
+phases_deg = { rise = 100, dwell_far = 0, return = 140, dwell_near = 120 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 150
+direction = "cw"
+divisions = 10
+'''
+
+
+CAM_OWN49 = '''# Stop 49 (cam49's own look): a rocking roller follower, the cam clockwise, a cycloidal rise 90°
+# straight into a trapezoidal return 120° (no far dwell), 8 divisions
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (власний, 49)"
+title_en = "Cam with a rocking roller follower (own, 49)"
+designation = "ТММ.КМ.49.200"
+[cam]
+follower = "rocking"
+swing_deg = 18
+arm = 0.11
+centre_distance = 0.13
+roller_radius = 0.01
+phases_deg = { rise = 90, dwell_far = 0, return = 120, dwell_near = 150 }
+laws = { rise = "cycloidal", return = "trapezoidal" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 120
+direction = "cw"
+divisions = 8
+'''

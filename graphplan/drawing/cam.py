@@ -13,8 +13,8 @@ import math
 import numpy as np
 
 from graphplan.drawing.labels import LabelRequest, place_labels
-from graphplan.exact.cam import Solution, centre_path, motion, profile
-from graphplan.graphic.cam import CamConstruction, working_angle
+from graphplan.exact.cam import Solution, centre_path, jump_points, motion, profile
+from graphplan.graphic.cam import CamConstruction, division_numbers, working_angle
 from graphplan.graphic.record import Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
@@ -93,8 +93,8 @@ def numbered(n_points: int, spacing: float, size: float = NUMBER) -> list[int]:
     return keep
 
 
-def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spacing: float | None = None
-          ) -> list[tuple[list[int], str]]:
+def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spacing: float | None = None,
+          names: list[int] | None = None) -> list[tuple[list[int], str]]:
     """The division numbers lettered, one label a spot (``pos``: the divisions along their axis, mm;
     ``period``: the axis's length where it closes on itself, the profile's circle): divisions at one
     place — the end of the rise and the start of the return where there is no far dwell, on the
@@ -103,7 +103,9 @@ def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spa
     not one drawn over the other. Thinned as ``numbered`` thins them (the first and the last spot
     always); a shared spot's label is always drawn, and a neighbour within its wider lettering and
     1.5 mm of it left out (``spacing``: the spots' spacing ``numbered`` thins by, else their least
-    distance). Each: the divisions, the text."""
+    distance). ``names``: the number each division carries (graphic.cam.division_numbers: with no far
+    dwell the rise's end and the return's start are one point, one number). Each: the divisions, the
+    text."""
     from graphplan.graphic.record import Primitive
     pos = np.asarray(pos, float)
     sep = "; " if lang == "uk" else ", "
@@ -123,8 +125,9 @@ def spots(pos, lang: str, period: float | None = None, size: float = NUMBER, spa
     at = [float(pos[g[0]]) for g in groups]
     gaps = [apart(a, b) for a, b in zip(at, at[1:])]
     keep = numbered(len(groups), spacing or (min(gaps) if gaps else 10.0), size)
-    shared = [i for i, g in enumerate(groups) if len(g) > 1]
-    text = [sep.join(map(str, g)) for g in groups]
+    names = list(range(len(pos))) if names is None else list(names)
+    text = [sep.join(dict.fromkeys(str(names[k]) for k in g)) for g in groups]
+    shared = [i for i, g in enumerate(groups) if sep in text[i]]
 
     def width(i: int) -> float:
         b = Primitive("text", ((0.0, 0.0),), text=text[i], size=size).ink()
@@ -151,6 +154,11 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
     work = math.degrees(working_angle(cam))
     L = math.radians(work) / g.mu_phi          # the abscissa: the working angle φ_р (μ_φ = φ_р/L)
     fine = np.linspace(0.0, work - 1e-9, 721)  # its end the return's end (the near dwell not drawn)
+    # and either side of each jump of d²s/dφ² (a phase's end, a law's knot): its vertical drawn upright,
+    # not slanted over the grid's step (stop 49: the parabolic return's mid jump leant 0.25 mm)
+    knots = jump_points(cam)
+    knots = knots[(knots > 1e-6) & (knots < work - 1e-6)]
+    fine = np.unique(np.concatenate([fine, knots - 1e-7, knots + 1e-7]))
     s, v, a = motion(cam, fine)
     xf = np.radians(fine) / g.mu_phi
     x = np.radians(g.phi) / g.mu_phi
@@ -193,6 +201,11 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
             # 0): drawn down to the axis, as the jump at the return's start is (stop 48: the curve stopped
             # in the air at the last division)
             pts_curve.append((float(xf[-1]), y0))
+        if key == "a" and abs(curve[0]) > 0.05:
+            # and so the rise's start: the near dwell's 0 jumps to the law's first ordinate (the cosine
+            # law's soft shock), drawn up the ordinate axis in the curve's line (stop 49: the curve began
+            # in the air at the axis's top, its jump only the thin axis)
+            pts_curve.insert(0, (0.0, y0))
         rec.add("polyline", pts_curve, role="curve", layer=LAYER, step=f"{key}(φ) exact")
         if key == "a":
             for j, (xs, sg) in enumerate(shocks):     # the rigid shock: d²s/dφ² → ±∞ at the jump of ds/dφ
@@ -219,7 +232,7 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xe, "1" if key == "a" else "2",
                   key, labels)
         y = y0 + hi + 20.0
-    marks = spots(x, lang)       # one label where two divisions meet (no far dwell: "6; 7")
+    marks = spots(x, lang, names=division_numbers(cam.phases, len(x)))   # a point of the cam one number
     y_s = bands.get("s", 0.0)
     for ks, text in (marks if "s" in keys else []):   # s: under the axis, and under a chord ending below it
         low = min([0.0] + [float(g.s_chord[k]) for k in ks if len(g.s_chord)] + [float(g.s_mm[k]) for k in ks])
@@ -349,8 +362,10 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
         # (then nearer the division, 0.3 mm off it: between a jump's vertical and a neighbour's
         # number, review 13's A3 "24" had 4.46 mm of ink in 4.69 mm)
+        # last, over its division (a thinned axis has the room either side: stop 49's upright jump at 25,
+        # 0.5 mm right of "24", left it no other place clear of the line and of "22")
         for where, sx in (("start", x[k] + NUMBER_OFF), ("end", x[k] - NUMBER_OFF),
-                          ("start", x[k] + NUMBER_NEAR), ("end", x[k] - NUMBER_NEAR)):
+                          ("start", x[k] + NUMBER_NEAR), ("end", x[k] - NUMBER_NEAR), ("middle", x[k])):
             for side in ((1, -1) if up else (-1, 1)):
                 y = y0 + 1.2 if side > 0 else y0 - 1.2 - NUMBER * BELOW
                 box = Primitive("text", ((sx, y),), text=text, size=NUMBER, anchor=where).ink()
@@ -430,18 +445,21 @@ def phase_scale(sol: Solution, g: CamConstruction) -> float:
     return (g.mu_phase or g.mu_l) if sol.cam.rocking else g.mu_s
 
 
-def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5) -> list[tuple[int, str]]:
+def coincident_numbers(K: np.ndarray, lang: str, tol: float = 0.5, names: list[int] | None = None
+                       ) -> list[tuple[int, str]]:
     """The division numbers of the points ``K`` (mm), one label a place: points within ``tol`` mm of
     an earlier one share its label, the numbers apart — "0; 21" (uk, where the comma is the decimal
-    sign), "0, 21" (en) —, not two numbers side by side that read as one ("0 21" as 021)."""
+    sign), "0, 21" (en) —, not two numbers side by side that read as one ("0 21" as 021); ``names``:
+    the number each point carries (graphic.cam.division_numbers), one point's number once."""
     sep = "; " if lang == "uk" else ", "
+    names = list(range(len(K))) if names is None else list(names)
     out: list[tuple[int, list[str]]] = []
     for k, z in enumerate(K):
         same = next((o for o in out if abs(K[o[0]] - z) <= tol), None)
         if same is None:
-            out.append((k, [str(k)]))
-        else:
-            same[1].append(str(k))
+            out.append((k, [str(names[k])]))
+        elif str(names[k]) not in same[1]:
+            same[1].append(str(names[k]))
     return [(k, sep.join(names)) for k, names in out]
 
 
@@ -580,7 +598,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # each number by its own dot: nearer it than any other numbered dot, else on a leader to it (review 9,
     # finding 1: the rocking cam's "18" and "0, 19" stood at each other's dots, R0 read as drawn to 18)
     # Those with a rival dot near are set first (before the letters R_0, O, [ϑ] take the room)
-    marked = coincident_numbers(K, lang)
+    marked = coincident_numbers(K, lang, names=division_numbers(cam.phases, len(K)))
     numbers, first = [], []
     for k, text in marked:
         rivals = tuple(complex(K[j]) for j, _ in marked if j != k and abs(K[j] - K[k]) < 25.0)
@@ -723,7 +741,8 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     tips = np.asarray(rays if not cam.rocking else feet)
     reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
     along_ = np.radians(np.mod(g.phi, 360.0)) * reach
-    for ks, text in spots(along_, lang, 2 * math.pi * reach, spacing=2 * math.pi * outer / max(len(pts), 1)):
+    for ks, text in spots(along_, lang, 2 * math.pi * reach, spacing=2 * math.pi * outer / max(len(pts), 1),
+                          names=division_numbers(cam.phases, len(pts))):
         k = ks[0]
         tip = rays[k] if not cam.rocking else feet[k]
         if cam.rocking and k == 0:
@@ -1021,7 +1040,7 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
         if abs(y) > 1e-9:
             rec.segment((x[k], 0.0), (x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
         rec.point((x[k], y), role="construction", layer=LAYER, step=f"ϑ at {k}")
-    for ks, text in spots(x, lang):      # one label where two divisions meet ("6; 7")
+    for ks, text in spots(x, lang, names=division_numbers(cam.phases, len(x))):   # no far dwell: one number
         k = ks[-1]
         side = -1j if g.theta[k] >= 0 else 1j            # the side the ordinate leaves free
         labels.append(LabelRequest(complex(x[k], 0.0), text, toward=side, size=NUMBER, optional=True))

@@ -43,15 +43,18 @@ def title_lines(title: str, width: float, size: float = 3.5) -> list[str]:
 
 
 def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
-          title: str = "", header: int = 1, align: list[str] | None = None) -> Record:
+          title: str = "", header: int = 1, align: list[str] | None = None, span: float | None = None) -> Record:
     """A ruled table; its top-left corner at (0, 0), growing downward (y < 0), its title above it.
     The first ``header`` rows are the header (centred, a thick line under them); in the body numbers
     are right-aligned and text centred, or each column as ``align`` says ("start", "middle",
     "end"). A column is widened to its widest cell: the lettering keeps its height (never under
-    2.5 mm) and stays in its cell, clear of the rules."""
+    2.5 mm) and stays in its cell, clear of the rules. ``span``: the columns widened in proportion to
+    that width where they are narrower (a table across the column of the sheet it stands in)."""
     rec = Record(title)
     widths = [max(w, max((text_width(row[c], size) for row in rows if c < len(row) and row[c]),
                          default=0.0) + 2 * PAD + 0.5) for c, w in enumerate(widths)]
+    if span is not None and span > sum(widths):
+        widths = [w * span / sum(widths) for w in widths]
     x_edges = [0.0]
     for w in widths:
         x_edges.append(x_edges[-1] + w)

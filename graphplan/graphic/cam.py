@@ -130,6 +130,17 @@ def divisions(sol: Solution, n: int) -> tuple[np.ndarray, np.ndarray]:
     return np.concatenate([up, down]), np.concatenate([np.zeros(n + 1, int), np.ones(n + 1, int)])
 
 
+def division_numbers(phases, count: int) -> list[int]:
+    """The number each of the ``count`` division turns (divisions: rise then return, their ends
+    included) carries on the sheet, 0… along the working angle: a point of the cam one number. With a
+    far dwell the rise's end N and the return's start N+1 are two turns; with none (``phases``' far
+    dwell 0) they are one point, numbered N once, and the return goes on N+1…2N (stop 49: "10; 11"
+    on one point read as two, and Table 1 printed the row twice)."""
+    half = count // 2
+    shared = float(phases[1]) <= 0.0
+    return [k if (k < half or not shared) else k - 1 for k in range(count)]
+
+
 def _integrate_phase(x_mm: np.ndarray, y_mm: np.ndarray, pole: float, y0: float, precision: float,
                      mid: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """One phase integrated by chords: the middle ordinates (given, else the chord's middle of the

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from graphplan.exact.cam import Solution
-from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, errors_pct
+from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, division_numbers, errors_pct
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
@@ -36,10 +36,11 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
     ev = errors_pct(g.v, ex["v"], v_scale, SHORT_DIVISIONS * g.precision * g.mu_v)
     et = errors_pct(g.theta, ex["theta"], max(cam.allowed))
     positions = []
+    names = division_numbers(cam.phases, len(g.phi))      # no far dwell: the rise's end and the return's start one point
     for k, phi in enumerate(g.phi):
         P = ex["P"][k]
         positions.append({
-            "phi_deg": float(phi), "phase": "rise" if g.phase[k] == 0 else "return",
+            "number": names[k], "phi_deg": float(phi), "phase": "rise" if g.phase[k] == 0 else "return",
             "exact": {"s" + ("_deg" if cam.rocking else "_m"): float(ex["s"][k] * unit),
                       "ds_dphi" + ("_deg" if cam.rocking else "_m"): float(ex["v"][k] * unit),
                       "d2s_dphi2" + ("_deg" if cam.rocking else "_m"): float(ex["a"][k] * unit),
@@ -357,6 +358,14 @@ def short_note(doc: dict, lang: str) -> str:
             f"({least} mm) — read to ±{half} mm it errs by over 25 % there, δ is not judged")
 
 
+def table_rows(doc: dict[str, Any]) -> list[int]:
+    """The positions Table 1 prints, one row a point of the cam: with no far dwell the rise's end and the
+    return's start are one point (one number, graphic.cam.division_numbers), printed once (stop 49:
+    rows 10 and 11 stood with identical values)."""
+    ps = doc["positions"]
+    return [j for j, p in enumerate(ps) if j == 0 or p.get("number", j) != ps[j - 1].get("number", j - 1)]
+
+
 def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     """The terminal's report: the data, the base radius exact and measured, the per-division table."""
     w = WORDS[lang]
@@ -370,7 +379,7 @@ def cam_table(doc: dict[str, Any], lang: str, title: str) -> str:
     rows = [[(q["s"] + x[1:] if x[:2] in ("s ", "s,") else x).replace("{s}", unit).replace("{v}", per) for x in head]]
     cols = table_columns(doc, lang)          # the sheet's Table 1 cell for cell (its "*" explained there)
     keys = ("phi", "s", "s_gr", "ds", "v", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
-    for j in range(len(doc["positions"])):
+    for j in table_rows(doc):
         rows.append([cols[c][j].rstrip("*") for c in keys])
     widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
     for r in rows:

@@ -13,7 +13,7 @@ from graphplan.exact.cam import solve
 from graphplan.graphic.cam import POLE_MM, closing_warning, construct, phase_drawn_at
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
-from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns
+from graphplan.report.cam import cam_json, short_note, short_ordinates, table_columns, table_rows
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       later_keep, note_block)
 from graphplan.sheets.form import Form, table
@@ -48,7 +48,8 @@ def _fields(cam: Cam, lang: str) -> dict[str, str]:
             "subtitle": WORDS[lang]["subtitle"]}
 
 
-def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5) -> Record:
+def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5, span: float | None = None
+                    ) -> Record:
     """Per division: φ, s and ds/dφ exact, their ordinates y as the ruler reads them (mm) and the
     graphical values from them, each to its exact value's decimals, with δ worked out from the two
     printed numbers (report.cam ``table_columns``), ϑ exact and measured, R exact and measured (mm); ds/dφ per radian of the cam's turn (мм/рад; rocking ψ in ° and dψ/dφ in °/рад, the
@@ -66,9 +67,10 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5)
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     cols = table_columns(doc, lang)          # the terminal's table cell for cell (report.cam)
     keys = ("phi", "s", "s_mm", "s_gr", "ds", "v", "v_mm", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
-    rows = [head] + [[str(j)] + [cols[c][j] for c in keys] for j in range(len(doc["positions"]))]
+    ps = doc["positions"]
+    rows = [head] + [[str(ps[j].get("number", j))] + [cols[c][j] for c in keys] for j in table_rows(doc)]
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
-    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"])
+    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"], span=span)
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -532,6 +534,10 @@ def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
     return d.w * d.h
 
 
+# a set's μ_φ of the series in °/mm or rad/mm, the finer (graphic.cam.series_phi), as the A1 sheet's: in
+# °/mm alone the A2 set's diagrams drew 240° at 1 °/mm, 240 mm of a 564 mm field, a third of their sheet
+# blank beside them, where 0,01 рад/мм draws 419 mm (stop 49)
+SET_SERIES = "rad"
 SET_SIZES = (0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95) + SIZES
 
 
@@ -594,8 +600,8 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     the phase diagram each fit a sheet's field by themselves (clear of the title block), then their
     ordinates, then d²s/dφ² alone, then the abscissa alone, and the profile, the main drawing, at the largest standard scale at
     which it fits a sheet alone — in both languages. (0.5, 0.5, 0.5, 0.5) when even that is too large.
-    The scales of the series (construct's ``series``: μ_φ in °/mm and μ_s standard, the poles whole
-    millimetres); the tuple's seventh item says so."""
+    The scales of the series (construct's ``series``: μ_φ in °/mm or rad/mm, the finer — SET_SERIES —,
+    μ_s standard, the poles whole millimetres); the tuple's seventh item says which."""
     from graphplan.drawing.cam import phase_diagram, profile_drawing
     region = field_of(f)
     memo: dict = {}
@@ -609,7 +615,7 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     def fits(size: float, prof: float, height: float, accel: float | None, names: tuple[str, ...],
              poles: tuple = (None, None)) -> bool:
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False, accel=accel,
-                      series=True, H1=poles[0], H2=poles[1])
+                      series=SET_SERIES, H1=poles[0], H2=poles[1])
         return all(alone(name, g) for name in names)
     both = ("av", "s", "phase") if split else ("diagrams", "phase")
     sizes = list(SET_SIZES)
@@ -624,12 +630,15 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
     ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
     up = [x for x in sizes if x > kl]        # the abscissa alone longer (the ordinates as they are)
     kl = (_largest(lambda x: fits(x, k, ks, ka, both), up) if up else None) or kl
+    if not split:
+        kl, ks, ka = _wider(sol, n, precision, sizes, (kl, k, ks, ka),
+                            lambda x, h, a: fits(x, k, h, a, both))
     kp = _largest(lambda x: fits(kl, x, ks, ka, ("profile", "phase")), sizes) or sizes[0]
 
     def shared(size: float, prof: float, height: float, accel: float) -> bool:
         """Whether the phase diagram (a translating follower's at μ_s) and the profile share a sheet."""
         g = construct(sol, n, precision, size=size, profile_size=prof, height=height, measure=False,
-                      accel=accel, series=True)
+                      accel=accel, series=SET_SERIES)
         for lang in ("uk", "en"):
             pair = [Leaf(name, *extent(Leaf(name, record=captioned(draw(sol, g, lang),
                                                                     *_captions(g, sol.cam, lang)[name]))))
@@ -647,7 +656,37 @@ def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split
         ka = _largest(lambda x: fits(kl, k, ks, x, both), sizes) or sizes[0]
     h1, h2 = _legible_poles(sol, n, precision, (kl, kp, ks, ka), lambda p: fits(kl, kp, ks, ka, ("av",), p)) \
         if split else (None, None)
-    return kl, kp, ks, ka, h1, h2, True
+    return kl, kp, ks, ka, h1, h2, SET_SERIES
+
+
+WIDER = 1.15      # the diagrams' drawn area a longer abscissa must gain over the taller ordinates (_wider)
+
+
+def _wider(sol, n, precision: float, sizes: list[float], sz: tuple, fits) -> tuple[float, float, float]:
+    """(abscissa, s, d²s/dφ²) sizes of a set's sheet of the three diagrams: as grown (ordinates first,
+    then the abscissa: ``sz`` = (kl, k, ks, ka)), or — where the next finer standard μ_φ draws them
+    larger by WIDER in area with the ordinates shortened to fit (``fits(size, height, accel)``) — that
+    (stop 49: the own rocking cam's A2 set drew 210° at 1 °/mm over 268 of its 564 mm, s grown to the
+    sheet's height first, a third of sheet 1 blank beside it)."""
+    from graphplan.drawing.cam import diagrams
+    kl, k, ks, ka = sz
+
+    def drawn(size: float, height: float, accel: float) -> tuple[float, float]:
+        g = construct(sol, n, precision, size=size, profile_size=k, height=height, accel=accel, measure=False,
+                      series=SET_SERIES)
+        b = diagrams(sol, g, "en").bounds()
+        return (b[2] - b[0]) * (b[3] - b[1]), g.mu_phi
+    area, mu = drawn(kl, ks, ka)
+    for x in (s for s in sizes if s > kl):
+        if construct(sol, n, precision, size=x, profile_size=k, height=ks, accel=ka, measure=False,
+                     series=SET_SERIES).mu_phi >= mu * (1 - 1e-9):
+            continue                       # the same μ_φ: no longer
+        h = _largest(lambda y: fits(x, y, sizes[0]), [s for s in sizes if s <= ks])
+        if h is None:
+            return kl, ks, ka
+        a = _largest(lambda y: fits(x, h, y), [s for s in sizes if s <= ka]) or sizes[0]
+        return (x, h, a) if drawn(x, h, a)[0] > WIDER * area else (kl, ks, ka)
+    return kl, ks, ka
 
 
 def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | None, float | None]:
@@ -657,7 +696,7 @@ def _legible_poles(sol, n, precision: float, sz: tuple, fits) -> tuple[float | N
     does not read, gives up the height: μ_{d²s/dφ²} = μ_s/(μ_φ²·H_1·H_2)). (None, None): as they are."""
     import numpy as np
     g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], measure=False,
-                  series=True)
+                  series=SET_SERIES)
     peak = min(float(np.max(np.abs(g.v_mm[g.phase == ph]))) for ph in (0, 1))
     if peak >= LEGIBLE_MM or peak <= 0:
         return None, None
@@ -780,6 +819,13 @@ TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the
 TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, TABLE_ROW))
 
 
+# where rows of TABLE_ROW are too many for the room under the profile (a cam of 10 divisions and no far
+# dwell: 22 rows want 182 mm where it has 160), the lettering still 3.5 mm in closer rows — wider than
+# the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
+CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
+STRETCH = 1.5        # a table's columns widened at most this much to span its column
+
+
 def _in_hole(boxes: dict) -> bool:
     """Whether the notes (box) stand in the diagrams' box, under the phase diagram."""
     d, nb = boxes["diagrams"], boxes["notes"]
@@ -794,8 +840,13 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    for size, row in TABLE_SIZES:
+    for size, row in TABLE_SIZES + CLOSER_ROWS:
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
+        # across the profile's column (stop 49: 70 mm of it stood blank beside the table, over the title
+        # block), its columns widened by at most STRETCH
+        wide = min(profile.w, STRETCH * tall.w)
+        if wide > tall.w + 1.0:
+            tall = Leaf("table", record=positions_table(doc, lang, row, size, span=wide))
         again = _laid(f, leaves, tall, nts, notes_at or _notes_at(doc, lang, cam))
         if not _one_sheet(again):
             continue
