@@ -2811,3 +2811,73 @@ profile = [[0, 0.2], [15, 0.4], [25, 1.0], [30, 1.0]]
 delta = 0.0333
 efficiency = 0.8
 synchronous_rpm = 1000'''
+
+
+LINK49 = '''# Stop 49 (the lead's check): a rocking-coulisse drive of a planing machine's table feed — the crank O1A
+# turns clockwise, its slider stone 2 slides in the coulisse OB, which rocks about O and carries the
+# resistance moment of the working stroke (I(0-1) -> II(2-3), a group of the third kind alone); dynamics to
+# a 1000-rpm motor.
+title = "Кулісний механізм з коливною кулісою і моментом опору"
+title_en = "Rocking-coulisse mechanism with a resistance moment"
+designation = "ТММ.КМ.49.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O1 = [0, 0.22]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.09
+rpm = 110
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 4
+inertia = 0.006
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "OB"
+mass = 1.5
+
+[[link]]
+name = "OB"
+number = 3
+joints = ["O"]
+length = 0.48
+points = { S3 = 0.5, B = 1.0 }
+mass = 9
+inertia = 0.18
+
+[branch]
+A = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 3
+magnitude = 160
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.88
+synchronous_rpm = 1000
+'''

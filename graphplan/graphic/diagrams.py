@@ -425,14 +425,13 @@ def why_not(d: Diagrams, lang: str) -> str:
 
 def drawing_sign(out: Output, s_cycle: np.ndarray) -> int:
     """How the diagram is drawn (value = sign · mm · μ): a turning output's angle grows upward; a
-    rocker's angle (a link that swings) as the tables sign it, + counter-clockwise (ω3 on the
-    diagram with Table 1's sign); a sliding output's s so that the stroke from position 0 rises
-    (the lab's s, for some outputs mirrored)."""
+    swinging one's — a slider's s, a rocker's ψ — is the displacement from the extreme position 0,
+    drawn rising on the way out (seed 002: "відкладаємо … переміщення точки B повзуна від крайнього
+    його положення B_0", the paths travelled, ≥ 0), whichever way along its guide or round its
+    pivot it goes: the sheet then writes it so too (``kintables.drawn_sense``)."""
     growth, span = s_cycle[-1] - s_cycle[0], float(np.ptp(s_cycle))
     if abs(growth) > 1e-9 * max(span, 1e-300):
         return int(np.sign(growth))
-    if out.kind == "link":
-        return 1
     return 1 if np.mean(s_cycle) >= 0 else -1
 
 
