@@ -71,3 +71,26 @@ def test_the_coulisse_swinging_clockwise_has_psi_from_its_extreme_position_posit
                           ("en", "+ clockwise", "+ counter-clockwise")):
         said = sign_note(st, d, lang)
         assert cw in said and ccw in said and said.index(ccw) < said.index(cw)
+
+
+def test_a_rocker_driven_by_a_slider_swings_from_its_extreme_position():
+    """kin49's own six-bar (an offset crank-slider O-A-B driving the rocker O2C through BC): the
+    rocker stops where the slider does (v_B = 0 ⇒ ω4 = ω5 = 0), so position 0 (B's far dead centre)
+    is its extreme too; ψ5 is drawn ≥ 0 from it and peaks at the swing between the two dead
+    centres' C — B at √((l ± r)² − e²) on the guide y = e, C the circles' (B, BC) ∩ (O2, O2C)
+    intersection left of B→O2 (0.4676 rad; the sheet prints ψmax = 26,79°)."""
+    st = scene_study(review_scenes.OWN_SIX49)
+    d = chord_diagrams(st, divisions=12, L=200.0, H1=30.0, H2=25.0, precision=0.0)
+    r, l, e, bc, oc, o2 = 0.08, 0.3, 0.02, 0.22, 0.15, complex(0.35, 0.25)
+
+    def rocker(xb: float) -> float:
+        b = complex(xb, e)
+        dist = abs(o2 - b)
+        along = (bc ** 2 - oc ** 2 + dist ** 2) / (2 * dist)
+        u = (o2 - b) / dist
+        c = b + u * along + 1j * u * math.sqrt(bc ** 2 - along ** 2)    # C left of B→O2 (the drawn branch)
+        return math.atan2(c.imag - o2.imag, c.real - o2.real)
+    swing = abs(rocker(math.sqrt((l + r) ** 2 - e ** 2)) - rocker(math.sqrt((l - r) ** 2 - e ** 2)))
+    assert d.sign == -1                       # it swings clockwise: mirrored against Table 1's sign
+    assert np.all(d.exact.s >= -1e-6)
+    assert float(np.max(d.exact.s)) * d.mu_s == pytest.approx(swing, rel=1e-3)
