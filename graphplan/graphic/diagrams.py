@@ -160,13 +160,22 @@ class Diagrams:
     maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
     chosen: tuple[int, ...]         # the positions of the lab's table
     estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
-    warnings: list[dict[str, Any]] = field(default_factory=list)
+    _warnings: list[dict[str, Any]] | None = field(default=None, repr=False, compare=False)   # ``warnings``, once
     lang: str = "uk"
     method: str = "chords"
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
     _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
+
+    @property
+    def warnings(self) -> list[dict[str, Any]]:
+        """``diagnose``'s warnings, worked out when first asked (they try the lab's other
+        constructions, ``alternatives``: a sheet's composition sizes some hundred drawings it never
+        warns about — the link48 A3 set spent 30 % of its time on them)."""
+        if self._warnings is None:
+            self._warnings = diagnose(self)
+        return self._warnings
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -631,8 +640,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                  chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
                  angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct),
                  redrawn=redrawn)
-    d.warnings = diagnose(d)
-    return d
+    return d               # its warnings (``diagnose``) when first asked
 
 
 def _check_positive(**values: float) -> None:
