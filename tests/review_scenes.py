@@ -3163,3 +3163,95 @@ rpm = 120
 direction = "cw"
 divisions = 8
 '''
+
+
+OWN_SIX49 = '''# Stop 49 (kin49's own): a crank-slider-driven six-bar — an offset crank-slider O-A-B whose slider B
+# drives the rocker O2C through the rod BC (a press feed's swinging arm); I(0-1) -> II(2-3) RRP -> II(4-5) RRR;
+# the crank clockwise.
+title = "Шестиланковий механізм з повзуном і коромислом"
+title_en = "Six-bar linkage: a crank-slider driving a rocker"
+designation = "ТММ.КМ.49.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-49"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O2 = [0.35, 0.25]
+
+[frame.guides]
+g = { through = [0, 0.02], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.08
+rpm = 150
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.3
+points = { S2 = 0.4 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 2.5
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.012
+
+[[link]]
+name = "O2C"
+number = 5
+joints = ["O2", "C"]
+length = 0.15
+points = { S5 = 0.5 }
+mass = 4
+inertia = 0.02
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+output = "O2C"
+start = "max"
+accel = [2]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

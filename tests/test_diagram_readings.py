@@ -59,7 +59,8 @@ def test_the_table_prints_what_the_drawing_shows(coulisse):
         for key, sym, mu in (("s", d.symbols[0], d.mu_s), ("v", d.symbols[1], d.mu_v), ("a", d.symbols[2], d.mu_a)):
             got = d.sign * drawn_ordinate(rec, sym, d.x[k]) * mu
             assert abs(r[key] - got) <= (d.precision / 2 + 0.05) * mu, (key, r["position"])
-            assert printed(r[key], texts), (key, r["position"])
+            # the table writes it as drawn: from the extreme position 0, + the way it grows (stop 49)
+            assert printed(d.sign * r[key], texts), (key, r["position"])
         truth = d.truth["a_at"][k]
         assert r["delta_a"] == pytest.approx(float(judged_pct(r["a"], truth, d.maxima["a"])))
 
@@ -91,21 +92,25 @@ def test_examples_within_five_percent_or_said(name):
         assert worst <= 5.0
 
 
-def test_a_rocker_is_drawn_with_the_tables_sign(rocker):
-    """The four-bar's ω3 on the diagram has Table 1's sign (ω_O2B, + counter-clockwise) at every
-    position where the plan reads it; the notes name φ3, ω3, ε3, not s, v, a."""
+def test_a_rocker_is_drawn_from_its_extreme_position(rocker):
+    """The four-bar's rocker swings clockwise from position 0: ψ3 is drawn rising from the extreme
+    position (seed 002's displacement, stop 49), its ω3 on the diagram opposite Table 1's sign (ω_O2B,
+    + counter-clockwise) at every position where the plan reads it, and the notes say both senses;
+    they name ψ3, ω3, ε3, not s, v, a."""
     plans, d = sheet_parts(rocker, "uk")
-    assert d.output.kind == "link" and d.sign == 1
+    assert d.output.kind == "link" and d.sign == -1
     rec = draw(d, "uk")
     rows = diagram_readings(d, plans_json(plans))
     signs = 0
     for r, k in zip(rows, d.at_positions):
+        assert d.drawn.s[k] >= -d.precision          # the ψ3 ordinate read off the drawing, mm
         if r["v_plan"] and abs(r["v_plan"]) > 0.1 * d.maxima["v"]:
-            assert np.sign(r["v"]) == np.sign(r["v_plan"]) == np.sign(drawn_ordinate(rec, d.symbols[1], d.x[k]))
+            assert np.sign(r["v"]) == np.sign(r["v_plan"]) == -np.sign(drawn_ordinate(rec, d.symbols[1], d.x[k]))
             signs += 1
     assert signs >= 8
     text = " ".join(notes_lines(rocker, plans, d, "uk", 0.5))
-    assert "ψ_{3} (кут ланки O_{2}B від положення 0), ω_{3}, ε_{3}" in text      # a rocker's angle: ψ, its link O₂B
+    assert "ψ_{3} — кут повороту ланки O_{2}B від крайнього положення 0" in text   # a rocker's angle: ψ, its link O₂B
+    assert "+ за годинниковою стрілкою" in text and "+ проти годинникової стрілки" in text
     assert "s, v, a" not in text and "−s" not in text
 
 

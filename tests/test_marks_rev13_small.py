@@ -32,8 +32,9 @@ def _decimals(cell: str, lang: str) -> int:
 def test_the_readings_table_prints_the_exact_values_delta_is_of(lang):
     """examples/crank_slider.toml (r 0.064, l 0.307, centric, ω 293.07 rad/s ccw, position 0 the
     outer dead centre, 12 positions): under s_B, v_B and a_B the table has an "exact" row, each value
-    the closed form x_B(φ) = r cos φ + √(l² − r² sin² φ) (s from position 0, v and a its time
-    derivatives) to the row's own decimals; and δ_v, δ_a of those rows as the lab judges them."""
+    the closed form x_B(φ) = r cos φ + √(l² − r² sin² φ) (s = x_B(0) − x_B(φ), the displacement from
+    the extreme position 0, ≥ 0 as seed 002 draws it; v and a its time derivatives) to the row's own
+    decimals; and δ_v, δ_a of those rows as the lab judges them."""
     from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.graphic.plans import build_plans
     from graphplan.report.plans import plans_json
@@ -50,7 +51,7 @@ def test_the_readings_table_prints_the_exact_values_delta_is_of(lang):
     r, l, w = 0.064, 0.307, 293.07
     x = lambda phi: r * np.cos(np.radians(phi)) + np.sqrt(l ** 2 - (r * np.sin(np.radians(phi))) ** 2)  # noqa: E731
     phis = np.arange(12) * 30.0
-    truth = {"s": x(phis) - x(0.0), "v": derivative(x, phis, w, 1), "a": derivative(x, phis, w, 2)}
+    truth = {"s": x(0.0) - x(phis), "v": -derivative(x, phis, w, 1), "a": -derivative(x, phis, w, 2)}
     for i, key in zip(at, ("s", "v", "a")):
         cells = grid[i][1:]
         assert len(cells) == 12

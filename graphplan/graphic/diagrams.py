@@ -160,13 +160,22 @@ class Diagrams:
     maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
     chosen: tuple[int, ...]         # the positions of the lab's table
     estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
-    warnings: list[dict[str, Any]] = field(default_factory=list)
+    _warnings: list[dict[str, Any]] | None = field(default=None, repr=False, compare=False)   # ``warnings``, once
     lang: str = "uk"
     method: str = "chords"
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
     _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
+
+    @property
+    def warnings(self) -> list[dict[str, Any]]:
+        """``diagnose``'s warnings, worked out when first asked (they try the lab's other
+        constructions, ``alternatives``: a sheet's composition sizes some hundred drawings it never
+        warns about — the link48 A3 set spent 30 % of its time on them)."""
+        if self._warnings is None:
+            self._warnings = diagnose(self)
+        return self._warnings
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -425,14 +434,13 @@ def why_not(d: Diagrams, lang: str) -> str:
 
 def drawing_sign(out: Output, s_cycle: np.ndarray) -> int:
     """How the diagram is drawn (value = sign · mm · μ): a turning output's angle grows upward; a
-    rocker's angle (a link that swings) as the tables sign it, + counter-clockwise (ω3 on the
-    diagram with Table 1's sign); a sliding output's s so that the stroke from position 0 rises
-    (the lab's s, for some outputs mirrored)."""
+    swinging one's — a slider's s, a rocker's ψ — is the displacement from the extreme position 0,
+    drawn rising on the way out (seed 002: "відкладаємо … переміщення точки B повзуна від крайнього
+    його положення B_0", the paths travelled, ≥ 0), whichever way along its guide or round its
+    pivot it goes: the sheet then writes it so too (``kintables.drawn_sense``)."""
     growth, span = s_cycle[-1] - s_cycle[0], float(np.ptp(s_cycle))
     if abs(growth) > 1e-9 * max(span, 1e-300):
         return int(np.sign(growth))
-    if out.kind == "link":
-        return 1
     return 1 if np.mean(s_cycle) >= 0 else -1
 
 
@@ -632,8 +640,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                  chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
                  angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct),
                  redrawn=redrawn)
-    d.warnings = diagnose(d)
-    return d
+    return d               # its warnings (``diagnose``) when first asked
 
 
 def _check_positive(**values: float) -> None:

@@ -471,7 +471,7 @@ def lab_table(diag, lang: str, n: int = 4, precision: float = 0.5) -> Record | N
              f"{a_}, {mm}", f"{a_}, {ua}", f"δ_{a_}, %"]]
     ev, ea = diag.errors_pct("v_at"), diag.errors_pct("a_at")
     own = {"v_at": diag.errors_pct("v_at", diag.exact), "a_at": diag.errors_pct("a_at", diag.exact)}
-    r, k_ = diag.drawn, diag.sign
+    r, k_ = diag.drawn, drawn_sense(diag)
     notes = []
 
     def pct(key: str, errs, k: int, ordinate: float, sym: str) -> str:
@@ -495,14 +495,14 @@ def lab_table(diag, lang: str, n: int = 4, precision: float = 0.5) -> Record | N
          for key, mu in (("s", diag.mu_s), ("v_at", diag.mu_v), ("a_at", diag.mu_a))}
     for k in chosen:
         rows.append([str(diag.position[k]), fixed(float(diag.turn[k]) % 360.0, lang, 1),
-                     written(k_ * r.s[k], ruler, lang), written(vals["s"][k], d["s"], lang),
-                     written(k_ * r.v_at[k], ruler, lang), written(vals["v_at"][k], d["v_at"], lang),
+                     written(r.s[k], ruler, lang), written(k_ * vals["s"][k], d["s"], lang),
+                     written(r.v_at[k], ruler, lang), written(k_ * vals["v_at"][k], d["v_at"], lang),
                      pct("v_at", ev, k, r.v_at[k], v_),
-                     written(k_ * r.a_at[k], ruler, lang), written(vals["a_at"][k], d["a_at"], lang),
+                     written(r.a_at[k], ruler, lang), written(k_ * vals["a_at"][k], d["a_at"], lang),
                      pct("a_at", ea, k, r.a_at[k], a_)])
     rec = table(rows, [9.0, 13.0, 14.0, 16.0, 14.0, 16.0, 14.0, 14.0, 18.0, 14.0], row_h=6.0, size=2.5,
                 title=w('lab', n=n))
-    said = ([w('mark_head')] + notes if notes else []) + ([w('lab_mirrored')] if k_ < 0 else [])
+    said = [w('mark_head')] + notes if notes else []
     return footnoted(rec, said)
 
 
@@ -570,7 +570,9 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
             cell += MARK
         return cell
     import numpy as np
-    read = diagram_readings(diag, doc)
+    k_ = drawn_sense(diag)
+    read = [{key: (k_ * value + 0.0 if key[0] in "sva" and value is not None
+                   else value) for key, value in row.items()} for row in diagram_readings(diag, doc)]
     # one count of decimals a row: the diagram's values by its longest ordinate and its scale, the
     # plans' by their vectors (``decimals``)
     out_kind, name = diag.output.kind, diag.output.name
@@ -658,6 +660,15 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
             "subtitle": subtitle or word("kin subtitle", lang)}
 
 
+def drawn_sense(diag) -> int:
+    """How the sheet writes the diagrams' quantities against the plans' signs: the displacement from
+    the extreme position 0 as the diagram draws it, ≥ 0 on the way out (seed 002's s from B_0; a
+    rocker's ψ likewise), its v, a (ω, ε) + in the sense it grows — ``Diagrams.sign`` times the
+    value signed along the guide (counter-clockwise for an angle), as the diagram's ordinates read
+    (mm · μ). +1 where the two agree."""
+    return diag.sign
+
+
 def sign_note(st: Study, diag, lang: str) -> str:
     """One sign convention, said on the sheet: s, v, a are signed along the output's guide
     everywhere, the diagrams drawn so the stroke from position 0 rises (for some outputs mirrored);
@@ -670,10 +681,10 @@ def sign_note(st: Study, diag, lang: str) -> str:
         slider = next(link for link in st.mech.links.values()
                       if link.slides_on is not None and next(iter(link.local)) == out.name)
         guide = st.mech.guides[slider.slides_on]
-        said = w('signs', guide=f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)")
-        return said + (w('flipped') if diag.sign < 0 else "")
+        said = f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)"
+        return w('signs_back' if drawn_sense(diag) < 0 else 'signs', guide=said)
     n, s = diag.sub, diag.symbols[0]          # φ, or ψ for a rocker's angle
-    return w('signs_link', link=subscripted(out.name), n=n, sym=s) + (w('flipped_link', n=n, sym=s) if diag.sign < 0 else "")
+    return w('signs_link_cw' if drawn_sense(diag) < 0 else 'signs_link', link=subscripted(out.name), n=n, sym=s)
 
 
 def table_errors(doc: dict, precision: float, shortest: float) -> list[float]:

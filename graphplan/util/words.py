@@ -277,9 +277,17 @@ WORDS: dict[str, tuple[str, str]] = {
                  '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
                  'the exact value is ≈ 0'),
     "kin signs": ('Знаки s, v, a (таблиці, діаграми): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, diagrams): + along the guide {guide}'),
-    "kin flipped": ('; діаграми s, v, a побудовано дзеркально (вгору −s)', '; the s, v, a diagrams are drawn mirrored (up = −s)'),
+    "kin signs_back": ('Знаки v, a (таблиці планів): + у напрямку напрямної {guide}; s — переміщення від крайнього '
+                       'положення 0, s, v, a (діаграми, таблиця діаграм): + від положення 0, проти напрямної',
+                       'Signs of v, a (the plans\' tables): + along the guide {guide}; s is the displacement from the '
+                       'extreme position 0, s, v, a (diagrams, the diagrams\' table): + away from position 0, against the guide'),
     "kin signs_link": ('Знаки {sym}_{{{n}}} (кут ланки {link} від положення 0), ω_{{{n}}}, ε_{{{n}}} (таблиці, діаграми): + проти годинникової стрілки', 'Signs of {sym}_{{{n}}} (the angle of link {link} from position 0), ω_{{{n}}}, ε_{{{n}}} (tables, diagrams): + counter-clockwise'),
-    "kin flipped_link": ('; діаграми {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} побудовано дзеркально (вгору −{sym}_{{{n}}})', '; the {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} diagrams are drawn mirrored (up = −{sym}_{{{n}}})'),
+    "kin signs_link_cw": ('Знаки ω_{{{n}}}, ε_{{{n}}} (таблиці планів): + проти годинникової стрілки; {sym}_{{{n}}} — '
+                          'кут повороту ланки {link} від крайнього положення 0, {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} '
+                          '(діаграми, таблиця діаграм): + за годинниковою стрілкою',
+                          'Signs of ω_{{{n}}}, ε_{{{n}}} (the plans\' tables): + counter-clockwise; {sym}_{{{n}}} is '
+                          'the turn of link {link} from the extreme position 0, {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} '
+                          '(diagrams, the diagrams\' table): + clockwise'),
     "lever unreadable": ("  pa читається як 0 мм при цьому μ_v: важіль не дає P_зр (візьміть точнішу --precision)",
                          "  pa reads 0 mm at this μv: the lever gives no P_bal (choose a finer --precision)"),
     "sheet page written": ("{path} ({form} {size}, аркуш {k} з {m}, {blocks}: {n})",
@@ -656,8 +664,6 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin mark_head": ("* — похибка понад 5 % (межа лабораторної роботи):", "* — an error over 5 % (the limit the lab sets):"),
     "kin mark_row": ("положення {n}: {why}", "position {n}: {why}"),
     "kin mark_cell": ("{why}", "{why}"),
-    "kin lab_mirrored": ("Ординати, мм, записано зі знаком величини вздовж напрямної (діаграми накреслено дзеркально)",
-                         "The ordinates, mm, carry the value's sign along the guide (the diagrams are drawn mirrored)"),
     "kin group": ("гр.\u00a0{g}", "group\u00a0{g}"),
     "fs inertia note": ("a_S, ε — з плану прискорень (табл. {n}); Φ = m·a_S (напрям проти a_S на плані) і M^Φ = −I_S·ε "
                         "з них діють у планах сил і на важелі; «точно» — з аналітичного розв'язку; ε, M^Φ: + проти год. стрілки",
