@@ -1008,7 +1008,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
     sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
     from graphplan.sheets.compose import keep_out, later_keep
-    from graphplan.sheets.kintrial import trial        # each distinct trial layout once
+    from graphplan.sheets.kintrial import counted, trial        # each distinct trial layout once
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
     keep, later = keep_out(f), later_keep(f)
@@ -1083,12 +1083,13 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 return laid_memo[key]
 
             def _laid(mu, factor, after, dsize):
-                """The set's pages at ``mu``: (count, notes alone on the last sheet, the emptiest
-                sheet's fill, the notes' width) — the notes wider where at the title block's width
-                they would take a sheet of their own."""
-                found, sizes = None, own(mu)
+                """The set's pages at ``mu``: (count, notes alone on the last sheet, the notes'
+                width) — the notes wider where at the title block's width they would take a sheet
+                of their own."""
+                found = None
                 for nw in wide:
-                    tried = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep, later, sizes)
+                    tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region,
+                                    keep, later)
                     if tried is None:
                         return None
                     got = (*tried, nw)
@@ -1123,7 +1124,9 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     if fams["position"].rel(bigger) > SET_LARGEST or pages({**mu, "position": bigger}) != count:
                         break
                     mu = {**mu, "position": bigger}
-                _, orphan, fill, nw = laid(mu)
+                _, orphan, nw = laid(mu)
+                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep,
+                             later, own(mu))[2]      # the emptiest sheet's fill: laid out in full for the kept
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
