@@ -160,13 +160,28 @@ class Diagrams:
     maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
     chosen: tuple[int, ...]         # the positions of the lab's table
     estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
-    warnings: list[dict[str, Any]] = field(default_factory=list)
     lang: str = "uk"
     method: str = "chords"
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
     _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
+    # ``warnings`` once diagnosed: shared with the copies ``dataclasses.replace`` makes (the other
+    # language's: ``diagnose`` words both) — a drawing only measured (a redrawing's candidate size,
+    # kinematics ``_block_size``) is never diagnosed, its alternatives never tried
+    _diagnosed: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def warnings(self) -> list[dict[str, Any]]:
+        """Warnings (``diagnose``), each with its numbers and messages in both languages; diagnosed
+        on first reading."""
+        if "warnings" not in self._diagnosed:
+            self._diagnosed["warnings"] = diagnose(self)
+        return self._diagnosed["warnings"]
+
+    @warnings.setter
+    def warnings(self, value: list[dict[str, Any]]) -> None:
+        self._diagnosed["warnings"] = value
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -230,7 +245,9 @@ class Diagrams:
     def alternatives(self) -> list[Trial]:
         """The lab's other constructions of these diagrams, each tried once (``try_alternatives``)."""
         if self._trials is None:
-            self._trials = try_alternatives(self)
+            if "trials" not in self._diagnosed:      # shared with the other language's copy, as ``warnings``
+                self._diagnosed["trials"] = try_alternatives(self)
+            self._trials = self._diagnosed["trials"]
         return self._trials
 
 
@@ -632,8 +649,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                  chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
                  angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct),
                  redrawn=redrawn)
-    d.warnings = diagnose(d)
-    return d
+    return d        # its ``warnings`` diagnosed where read
 
 
 def _check_positive(**values: float) -> None:
