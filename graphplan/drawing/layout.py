@@ -397,7 +397,7 @@ def _shelf_lines(items: list, y: float, bottom: float, gap: float, over) -> tupl
 
 
 def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP,
-         later: Box | None = None, ragged: bool = False) -> list[list[tuple[Leaf, Box]]] | None:
+         later: Box | None = None, ragged: bool = False, lines: bool = False) -> list | None:
     """Rows of drawings set down a set of sheets in reading order: each row's items side by side
     while they fit across (the rest wrap to the next row), rows one under another, a new sheet when
     the next row does not fit below. Near the foot a row keeps clear of ``keep`` (the title block).
@@ -407,7 +407,10 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
     ``ragged``: the room beside the title block is judged item by item, not by the row's tallest —
     an item whose own foot clears the title block may stand above it (the six-bar's A3 position plan,
     224.6 mm tall, reached 3.6 mm below the title block's top, so its row held 199 mm, not the 385 mm
-    across, and the four velocity plans beside it went to the next sheet, leaving sheet 1 half blank)."""
+    across, and the four velocity plans beside it went to the next sheet, leaving sheet 1 half blank).
+    ``lines``: only the sheets as broken into rows — per sheet the (top, height, items) of each row,
+    before any spare room is shared out and any drawing placed (what counting the sheets needs: a
+    set's search lays out thousands of trials)."""
     rx0, ry0, rx1, ry1 = region
     pages: list[list[tuple[float, float, list[Node]]]] = []      # per sheet: (top, height, items) of each row
     page: list[tuple[float, float, list[Node]]] = []
@@ -551,6 +554,8 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
                 queue = []                     # a grid's padding cells do not start a row of their own
     if page:
         pages.append(page)
+    if lines:
+        return pages
     out = []
     for n, rows_ in enumerate(pages):
         sheet[0] = n

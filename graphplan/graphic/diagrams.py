@@ -160,22 +160,28 @@ class Diagrams:
     maxima: dict[str, float]        # the cycle's max |s|, |v|, |a| (analytic)
     chosen: tuple[int, ...]         # the positions of the lab's table
     estimate: dict[str, np.ndarray]  # per interval: the chord error a draftsman can estimate, mm
-    _warnings: list[dict[str, Any]] | None = field(default=None, repr=False, compare=False)   # ``warnings``, once
     lang: str = "uk"
     method: str = "chords"
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
     _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
+    # ``warnings`` once diagnosed: shared with the copies ``dataclasses.replace`` makes (the other
+    # language's: ``diagnose`` words both) — a drawing only measured (a redrawing's candidate size,
+    # kinematics ``_block_size``) is never diagnosed, its alternatives never tried
+    _diagnosed: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property
     def warnings(self) -> list[dict[str, Any]]:
-        """``diagnose``'s warnings, worked out when first asked (they try the lab's other
-        constructions, ``alternatives``: a sheet's composition sizes some hundred drawings it never
-        warns about — the link48 A3 set spent 30 % of its time on them)."""
-        if self._warnings is None:
-            self._warnings = diagnose(self)
-        return self._warnings
+        """Warnings (``diagnose``), each with its numbers and messages in both languages; diagnosed
+        on first reading."""
+        if "warnings" not in self._diagnosed:
+            self._diagnosed["warnings"] = diagnose(self)
+        return self._diagnosed["warnings"]
+
+    @warnings.setter
+    def warnings(self, value: list[dict[str, Any]]) -> None:
+        self._diagnosed["warnings"] = value
 
     # -- geometry ------------------------------------------------------------------------------------
     @property
@@ -239,7 +245,9 @@ class Diagrams:
     def alternatives(self) -> list[Trial]:
         """The lab's other constructions of these diagrams, each tried once (``try_alternatives``)."""
         if self._trials is None:
-            self._trials = try_alternatives(self)
+            if "trials" not in self._diagnosed:      # shared with the other language's copy, as ``warnings``
+                self._diagnosed["trials"] = try_alternatives(self)
+            self._trials = self._diagnosed["trials"]
         return self._trials
 
 
@@ -640,7 +648,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                  chosen, {"v_mm": e_v * H1, "a_mm": e_a * H1 * H2}, lang=lang, method=method,
                  angle_error_deg=float(angle_error_deg) if method == "tangents" else 0.0, correct=bool(correct),
                  redrawn=redrawn)
-    return d               # its warnings (``diagnose``) when first asked
+    return d        # its ``warnings`` diagnosed where read
 
 
 def _check_positive(**values: float) -> None:

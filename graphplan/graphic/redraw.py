@@ -75,9 +75,19 @@ class Redrawing:
                 "worst_pct_before": self.off_before, "worst_pct_after": self.off_after}
 
 
+_JUDGED: dict[tuple, Any] = {}     # ``Probe``'s judgments of a drawing, kept across probes of one output
+JUDGED_MOST = 50_000              # judgments kept (some 15 MB at most); past it the memo starts afresh
+
+
 class Probe:
     """The exact motion of one output sampled once — the division ordinates' s and the comparison's
-    v, a — on which drawings of different L, H1, H2, correction and divisions are tried."""
+    v, a — on which drawings of different L, H1, H2, correction and divisions are tried.
+
+    A drawing's judgments (``wrong``, ``off``, ``peaks``) are kept across the probes of the same
+    mechanism, output, divisions and ruler (the module's ``_JUDGED``), keyed on the drawing's options
+    with its s height as the μs it chooses (``choose_mu_s``: the construction reads the height
+    through μs alone) — a set's diagrams' sizes are searched by height factor (kinlayout
+    ``tallest``), each height redrawn with the same menu of pole distances over a few μs."""
 
     def __init__(self, st, point: str | None, divisions, precision: float) -> None:
         self.st = st
@@ -94,6 +104,19 @@ class Probe:
         self.precision = precision
         self.omega = abs(st.mech.omega1)
         self.memo: dict = {}
+        self.mus: dict = {}
+        self.key = (repr(st.mech), point, self.turns.tobytes(), float(precision))
+
+    def _judged(self, what: str, L, H1, H2, correct, adaptive, tolerance, height, make, *extra):
+        """``make()`` for this drawing, once across the probes of this output (``_JUDGED``)."""
+        if height not in self.mus:
+            self.mus[height] = choose_mu_s(self.st, self.unit, self.s_range, height)
+        key = (self.key, what, L, H1, H2, correct, adaptive, tolerance, self.mus[height], *extra)
+        if key not in _JUDGED:
+            if len(_JUDGED) >= JUDGED_MOST:
+                _JUDGED.clear()
+            _JUDGED[key] = make()
+        return _JUDGED[key]
 
     def readings(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
                  tolerance: float = 0.5, height: float | None = None):
@@ -128,6 +151,10 @@ class Probe:
         """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
         ``chord_diagrams`` would report them (the same construction, ruler and comparison);
         ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
+        return self._judged("wrong", L, H1, H2, correct, adaptive, tolerance, height,
+                            lambda: self._wrong(L, H1, H2, correct, adaptive, tolerance, height, all_of), all_of)
+
+    def _wrong(self, L, H1, H2, correct, adaptive, tolerance, height, all_of) -> tuple[str, ...]:
         turns, x, _, mu_v, mu_a, v, a, _, _, zeros = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         window, visible = qualitative.window_of(turns), max(qualitative.VISIBLE_MM, self.precision)
         xm = midpoints(x)
@@ -143,6 +170,10 @@ class Probe:
             tolerance: float = 0.5, height: float | None = None) -> float:
         """The largest |δ|, % of s, v, a read at the mechanism's positions off a drawing with these
         options, judged as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
+        return self._judged("off", L, H1, H2, correct, adaptive, tolerance, height,
+                            lambda: self._off(L, H1, H2, correct, adaptive, tolerance, height))
+
+    def _off(self, L, H1, H2, correct, adaptive, tolerance, height) -> float:
         turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
         at = np.isin(np.round(turns[:-1], 9), np.round(self.turns[:-1], 9))
         a_at = read(periodic_spline(midpoints(x), a, L)(x), self.precision)
@@ -157,8 +188,10 @@ class Probe:
               tolerance: float = 0.5, height: float | None = None) -> tuple[float, float, float]:
         """The drawing's largest ordinates, mm: |v| and |a| read at the middles, and the s diagram's
         height (its range)."""
-        _, _, _, _, _, v, a, _, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
-        return float(np.max(np.abs(v))), float(np.max(np.abs(a))), float(np.ptp(s_r))
+        def make() -> tuple[float, float, float]:
+            _, _, _, _, _, v, a, _, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+            return float(np.max(np.abs(v))), float(np.max(np.abs(a))), float(np.ptp(s_r))
+        return self._judged("peaks", L, H1, H2, correct, adaptive, tolerance, height, make)
 
 
 def readable(peaks: tuple[float, float, float], first: tuple[float, float, float], zone: float,

@@ -418,11 +418,11 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     for length, ts in heights.items():
         for t in ts:
             k = (length, t)
-            if not (composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) and dr.diagrams_right(k)
-                    and flat(dr, k) <= flat(dr, p.diagrams)):
+            if not dr.diagrams_right(k):
                 continue
-            got = judged(k)
-            if got < score:
+            got = judged(k)        # no better read: not drawn in both languages to be measured
+            if got < score and composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) \
+                    and flat(dr, k) <= flat(dr, p.diagrams):
                 best, score = k, got
     from dataclasses import replace
     return p if best == p.diagrams else replace(p, diagrams=best)
@@ -1008,7 +1008,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     diagrams before the acceleration plans, or after them on a sheet of their own); of as many
     sheets, the set whose drawings are larger, then whose emptiest sheet is fuller."""
     from graphplan.sheets.compose import keep_out, later_keep
-    from graphplan.sheets.kintrial import trial        # each distinct trial layout once
+    from graphplan.sheets.kintrial import counted, trial        # each distinct trial layout once
     region = field_of(f)
     width, height = region[2] - region[0], region[3] - region[1]
     keep, later = keep_out(f), later_keep(f)
@@ -1083,12 +1083,13 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 return laid_memo[key]
 
             def _laid(mu, factor, after, dsize):
-                """The set's pages at ``mu``: (count, notes alone on the last sheet, the emptiest
-                sheet's fill, the notes' width) — the notes wider where at the title block's width
-                they would take a sheet of their own."""
-                found, sizes = None, own(mu)
+                """The set's pages at ``mu``: (count, notes alone on the last sheet, the notes'
+                width) — the notes wider where at the title block's width they would take a sheet
+                of their own."""
+                found = None
                 for nw in wide:
-                    tried = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep, later, sizes)
+                    tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region,
+                                    keep, later)
                     if tried is None:
                         return None
                     got = (*tried, nw)
@@ -1123,7 +1124,9 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     if fams["position"].rel(bigger) > SET_LARGEST or pages({**mu, "position": bigger}) != count:
                         break
                     mu = {**mu, "position": bigger}
-                _, orphan, fill, nw = laid(mu)
+                _, orphan, nw = laid(mu)
+                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep,
+                             later, own(mu))[2]      # the emptiest sheet's fill: laid out in full for the kept
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
@@ -1178,11 +1181,13 @@ def taller(dr: Drafter, nat: Natural, p: Plan, laid) -> Plan:
     first = laid(p.diagrams)
     for j in range(1, int(round((HEIGHTS[0] - tall) / HEIGHT_STEP)) + 1):
         k = (long_, round(tall + j * HEIGHT_STEP, 6))
-        if not dr.diagrams_right(k) or flat(dr, k) > flat(dr, p.diagrams) or laid(k) != first:
+        if not dr.diagrams_right(k):
             continue
         got = judged(k)
-        # drawn no smaller, or brought within the lab's 5 % (the crank-slider's A3 set: 5.5 → 4.8 %)
-        if got < score and (got[1] <= first_score[1] + 1e-9 or got[0] <= LAB_LIMIT < first_score[0]):
+        # drawn no smaller, or brought within the lab's 5 % (the crank-slider's A3 set: 5.5 → 4.8 %);
+        # judged before the set is laid out again with it (none better: not laid)
+        if got < score and (got[1] <= first_score[1] + 1e-9 or got[0] <= LAB_LIMIT < first_score[0]) \
+                and flat(dr, k) <= flat(dr, p.diagrams) and laid(k) == first:
             best, score = k, got
     return p if best == p.diagrams else Plan(p.mu, best, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets,
                                              p.counts, p.after, p.notes)
