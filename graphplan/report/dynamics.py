@@ -600,7 +600,8 @@ def motor_note(doc: dict[str, Any], lang: str) -> str | None:
     mean = sig(doc["moment_driving"] * doc["omega_mean"] / m["efficiency"] / 1000.0, lang)
     md, mc = ("M^*_д", "M^*_{с max}") if uk else ("M^*_d", "M^*_{c max}")
     rule = f"P = {mc}·ω_1/η = {peak} {kw}"
-    avg = f"({'середня' if uk else 'the mean'} {md}·ω_m/η = {mean} {kw})"
+    # ω_m first: set as plain text "ωm/η" reads as the unit m/ (tests/test_words.py)
+    avg = f"({'середня' if uk else 'the mean'} ω_m·{md}/η = {mean} {kw})"
     d = num(doc["delta"], lang)
     # a statement, not a question (stop 49: «Чому маховик, коли …» read as a heading on the sheet)
     if fw["motor"] > 0:
