@@ -127,7 +127,9 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
         name = f"{sym}_{{{d.sub}}}"
         more = " …" if len(past) > len(bad) else ""
         where = ", ".join(f"{d.position[idx[i]]} ({_signed(errs[key][i], lang, 2)} %)" for i in sorted(bad)) + more
-        reading = f"{name} у положеннях {where}" if uk else f"{name} at positions {where}"
+        one = len(past) == 1                             # "at position 7", not "at positions 7"
+        reading = (f"{name} у положенн{'і' if one else 'ях'} {where}" if uk
+                   else f"{name} at position{'' if one else 's'} {where}")
         worst = bad[0]
         if key == "s":
             said.append((reading, "", None))
