@@ -53,6 +53,24 @@ def velocity_columns(doc: dict, precision: float) -> list[str]:
     return kept
 
 
+def velocity_twins(doc: dict, precision: float) -> dict[str, list[str]]:
+    """The ω columns ``velocity_columns`` leaves out as equal to a kept one, by the kept key: a
+    block's ω equals its slotted link's (ω4 = ω5 of a stone in a rocking coulisse, as it turns with
+    it), so the kept column is headed by both — the diagrams and Table 2 name the slotted link's
+    (ω5, ε5), the table must not drop it for the stone's."""
+    kept = velocity_columns(doc, precision)
+    cells = lambda key: tuple(_cell(pos["velocity"].get(key), precision) for pos in doc["positions"])  # noqa: E731
+    out: dict[str, list[str]] = {}
+    keys = [k for pos in doc["positions"] for k in pos["velocity"]]
+    for key in dict.fromkeys(keys):
+        if key in kept or not key.startswith("omega_"):
+            continue
+        twin = next((k for k in kept if k.startswith("omega_") and cells(k) == cells(key)), None)
+        if twin is not None and not all(c in ("0", "—") for c in cells(key)):
+            out.setdefault(twin, []).append(key)
+    return out
+
+
 def _cell(e: dict | None, precision: float, lang: str = "en") -> str:
     """A table's graphical value: the plan's reading (a vector read as 0 mm — a dead centre's
     velocity — is the number 0, as the terminal prints it); ω and ε signed by their sense
@@ -151,7 +169,11 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
     w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
     keys = velocity_columns(doc, precision)
     first = {k: next((pos["velocity"][k] for pos in doc["positions"] if k in pos["velocity"]), None) for k in keys}
-    head = [w('no'), "φ, °"] + [_symbol(k, "v", first[k]) for k in keys] + ["δ_{max}, %"]
+    twins = velocity_twins(doc, precision)
+    firsts = lambda k: next((pos["velocity"][k] for pos in doc["positions"] if k in pos["velocity"]), None)  # noqa: E731
+    headed = {k: " = ".join([_symbol(k, "v", first[k])] + [_symbol(t, "v", firsts(t)) for t in twins.get(k, [])])
+              for k in keys}       # ω4 = ω5: the stone's and its coulisse's one column
+    head = [w('no'), "φ, °"] + [headed[k] for k in keys] + ["δ_{max}, %"]
     rows = [head]
     places = {k: decimals([pos["velocity"].get(k) for pos in doc["positions"]], precision) for k in keys}
     notes = []
@@ -166,7 +188,7 @@ def velocity_table(doc: dict, lang: str, precision: float = 0.5) -> Record:
         rows.append([str(pos["index"]), fixed(pos.get("turn_deg", pos["phi_deg"]), lang, 1)]
                     + [written(_signed(pos["velocity"][k]), places[k], lang) if pos["velocity"].get(k) else "—"
                        for k in keys] + [cell])
-    widths = [8.0, 13.0] + [max(14.0, text_width(_symbol(k, "v", first[k]), 2.5) + 3) for k in keys] + [15.0]
+    widths = [8.0, 13.0] + [max(14.0, text_width(headed[k], 2.5) + 3) for k in keys] + [15.0]
     rec = table(rows, widths, row_h=6.0, size=2.5, title=w('vel_table_signed'))
     return footnoted(rec, [w('mark_head')] + notes if notes else [])
 

@@ -1,0 +1,128 @@
+"""Stop 50 (the lead's LINK50: a crank-rocker four-bar O1ABO2 whose rocker carries a pin C, at 0,24 m
+along O2B; a stone 4 on C slides in the coulisse O3D rocking about O3 — I(0-1) → II(2-3) ВВВ →
+II(4-5) ВПВ, the third kind driven by a rocker). The truth here is the closed-form mechanism, worked
+out in this file alone: B the intersection of two circles, C = O2 + 0,24·(B − O2)/|B − O2|, the
+coulisse's angle arg(C − O3) and s = |C − O3|, differentiated numerically; the rocker's extreme
+positions where O1A and AB are collinear (O1B = l2 ± l1)."""
+from __future__ import annotations
+
+import cmath
+import math
+
+import pytest
+
+from conftest import scene_study
+from review_scenes import LINK50
+
+O1, O2, O3 = 0j, 0.30 + 0.03j, 0.52 + 0.26j
+L1, L2, L3, LC, L5 = 0.07, 0.28, 0.16, 0.24, 0.46
+W1 = 75 * 2 * math.pi / 60                  # counter-clockwise
+
+
+def _meet(p: complex, r1: float, q: complex, r2: float) -> complex:
+    """The intersection of circles (p, r1), (q, r2) on the left of p → q (the scene's branch B = 1:
+    B above the line O1O2... chosen so B lies above, as drawn)."""
+    d = abs(q - p)
+    a = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
+    h = math.sqrt(max(r1 * r1 - a * a, 0.0))
+    e = (q - p) / d
+    return p + a * e + 1j * e * h
+
+
+def _state(th: float) -> dict[str, float | complex]:
+    """The closed-form position at the crank's angle θ (from the x axis)."""
+    a = O1 + L1 * cmath.exp(1j * th)
+    b = _meet(a, L2, O2, L3)
+    c = O2 + LC * (b - O2) / L3
+    return {"A": a, "B": b, "C": c, "th5": cmath.phase(c - O3), "s": abs(c - O3),
+            "th2": cmath.phase(b - a), "th3": cmath.phase(b - O2)}
+
+
+def _rates(th: float, h: float = 1e-5) -> dict[str, float]:
+    """ω2, ω3, ω5 (+ ccw), ds/dt of the stone along the coulisse, and their time derivatives."""
+    f = {k: [_state(th + j * h)[k] for j in (-1, 0, 1)] for k in ("th2", "th3", "th5", "s")}
+    out = {}
+    for k, (m, z, p) in f.items():
+        out["d" + k] = (p - m) / (2 * h) * W1
+        out["dd" + k] = (p - 2 * z + m) / (h * h) * W1 * W1
+    return out
+
+
+def _start() -> float:
+    """Position 0: the crank's angle where O1B = l1 + l2 (the rocker's extreme at the start of the
+    working stroke — the coulisse at its smallest angle, as checked below)."""
+    b = _meet(O1, L1 + L2, O2, L3)
+    return cmath.phase(b - O1)
+
+
+@pytest.fixture(scope="module")
+def plans():
+    from graphplan.graphic.plans import build_plans
+    return build_plans(scene_study(LINK50), count=12, accel=[3], precision=0.5)
+
+
+@pytest.fixture(scope="module")
+def doc(plans):
+    from graphplan.report.plans import plans_json
+    return plans_json(plans)
+
+
+def test_table_1_names_the_coulisse_omega_beside_the_stones(doc):
+    """Table 1 held one column ω4 (the stone's) and dropped ω5 as its equal, while the diagrams and
+    Table 4 read ω5 of the coulisse O3D: the column is headed ω4 = ω5, and its values are the
+    closed-form ω5 within the plans' accuracy (the ruler's half division on the vector read)."""
+    from graphplan.sheets.kintables import velocity_table, velocity_twins
+    from graphplan.util.markup import plain
+    twins = velocity_twins(doc, 0.5)
+    assert twins == {"omega_4": ["omega_O3D"]}
+    rec = velocity_table(doc, "uk")
+    heads = [plain(i.text) for i in rec.items if i.kind == "text"]
+    assert "ω₄ = ω₅" in heads, heads
+    th0 = _start()
+    for pos in doc["positions"]:
+        e = pos["velocity"]["omega_4"]
+        value = (e["value"] or 0.0) * (-1 if e.get("sense") == "cw" else 1)
+        w5 = _rates(th0 + math.radians(30 * pos["index"]))["dth5"]
+        # ω5 = v_C5 / l_O3C: half a division (0.5 mm × μv 0.01) on the vector it is read from
+        tol = 0.5 * 0.01 / _state(th0 + math.radians(30 * pos["index"]))["s"] + 0.01
+        assert value == pytest.approx(w5, abs=tol), pos["index"]
+
+
+def test_the_swing_and_position_0_agree_with_the_collinear_extremes(plans):
+    """ψ_max between D′ and D″ equals the closed-form angle between the coulisse's directions at
+    the rocker's two extremes (O1B = l2 + l1 and l2 − l1): 14,71°; position 0 is the first, the crank
+    at 32,9°; the coulisse's angle over a fine turn has no extreme elsewhere."""
+    from graphplan.drawing.plans import swing
+    th_a = _start()
+    b = _meet(O1, L2 - L1, O2, L3)
+    th_b = cmath.phase(b - O1) + math.pi
+    turn = lambda th: cmath.phase((_state(th)["C"] - O3) / (_state(th_a)["C"] - O3))   # noqa: E731  (ψ5, no wrap)
+    psi = abs(math.degrees(turn(th_b)))
+    assert swing(plans) == pytest.approx(psi, abs=0.01)
+    assert psi == pytest.approx(14.705, abs=0.005)
+    assert plans.positions[0].phi % 360 == pytest.approx(math.degrees(th_a) % 360, abs=0.05)
+    fine = [turn(th_a + math.radians(k / 4)) for k in range(0, 1441)]
+    assert min(fine) == pytest.approx(0.0, abs=1e-9)
+    assert max(fine) == pytest.approx(turn(th_b), abs=1e-5)
+
+
+def test_coriolis_of_the_coulisse_on_the_stone(plans):
+    """a^k_C5C4 = 2·ω4·v_C5C4 (ω4 = ω5), drawn as v_C5C4 turned 90° in ω5's sense (the rule): at
+    position 3 the closed form gives ω5 = +1,066 rad/s (ccw), v_C5C4 = −ds/dt = 0,734 m/s from C
+    toward O3's side, |a^k| = 1,564 m/s²; the plan's vector within the ruler's half division × μa and
+    within 2° of that direction. a^r_C5C4 lies along the coulisse, a_C5 = ε5·l ⊥ + ω5²·l toward O3."""
+    q = plans.positions[3]
+    th = _start() + math.radians(90)
+    st, r = _state(th), _rates(th)
+    u = (st["C"] - O3) / st["s"]                 # along the coulisse, O3 → C
+    v_rel = -r["ds"] * u                         # v_C5C4 = v_C5 − v_C4: minus the stone's slide
+    cor = 2 * r["dth5"] * 1j * v_rel             # 2 ω × v, ω ccw: +90°
+    e = q.acceleration.entries["k_C5C4"]
+    mu = plans.mu_a
+    assert abs(e.vector) == pytest.approx(abs(cor), abs=0.5 * mu + 0.01)
+    assert abs(math.degrees(cmath.phase(e.vector / cor))) < 2.0
+    rel = q.acceleration.entries["r_C5C4"]
+    assert abs(math.sin(cmath.phase(rel.vector / u))) < 0.03
+    assert abs(rel.vector) == pytest.approx(abs(r["dds"]), abs=0.5 * mu + 0.02)    # s̈: the slide's own
+    eps5 = q.acceleration.entries["epsilon_O3D"]
+    assert eps5.value * (1 if eps5.sense == "ccw" else -1) == pytest.approx(r["ddth5"], abs=0.1)
