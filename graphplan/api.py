@@ -403,7 +403,7 @@ def diagrams(scene=None, point: str | None = None, divisions: int | None = None,
         options.update({k: drawn[k] for k in ("L", "H1", "H2", "height")})
         if not {"point", "method", "correct", "adaptive", "tolerance"} & set(options) and point is None:
             chosen = drawn["diagrams"]        # redrawn as the sheet redraws it (graphic.redraw)
-            options.update({k: chosen[k] for k in ("correct", "adaptive", "tolerance", "redrawn") if k in chosen})
+            options.update({k: chosen[k] for k in ("correct", "adaptive", "tolerance", "redrawn", "fit") if k in chosen})
     return Diagrams(chord_diagrams(st, point=point, divisions=divisions, precision=precision, lang=lang,
                                    **options), lang)
 

@@ -42,7 +42,7 @@ def test_each_trial_is_what_its_option_draws(sheet_diagrams, rocker):
     """The trials' numbers are those of the drawing the named option makes (independently drawn
     here by ``chord_diagrams`` and judged at the same positions)."""
     d, options = sheet_diagrams
-    base = {k: options[k] for k in ("L", "H1", "H2", "height")}
+    base = {k: options[k] for k in ("L", "H1", "H2", "height", "fit") if k in options}   # fit: μs = s_max/h
     trials = {t.key: t for t in d.alternatives()}
     assert {"double", "tangents"} <= set(trials)
     double = chord_diagrams(rocker, precision=0.5, divisions=2 * d.divisions, correct=d.correct, **base)

@@ -126,3 +126,40 @@ def test_coriolis_of_the_coulisse_on_the_stone(plans):
     assert abs(rel.vector) == pytest.approx(abs(r["dds"]), abs=0.5 * mu + 0.02)    # s̈: the slide's own
     eps5 = q.acceleration.entries["epsilon_O3D"]
     assert eps5.value * (1 if eps5.sense == "ccw" else -1) == pytest.approx(r["ddth5"], abs=0.1)
+
+
+# -- LINK48's A1: the s diagram at the seed's μs = s_max/h ------------------------------------------
+
+def test_a_low_s_diagram_is_fitted_to_its_allowance_not_drawn_flat():
+    """LINK48 (a V-compressor, crank r = 0.05 m, rods 0.2 m, the left piston on a 45° guide through
+    O): the standard μs 0,002 drew its 0.1-m stroke 50 mm high under an 80-mm allowance, its first
+    a diagram wrong, and the redrawing took H1 15 mm: v and a 10 and 12 mm high. Now μs = s_max/h
+    (seed 002, step 5) to two figures rounded up, 0,0013 m/mm (0.1/80 = 0.00125), the s diagram
+    76.9 mm high, the v and a diagrams at least 20 mm high, and the drawn v at the middles and s at
+    the ordinates within the lab's 5 % (of the cycle's largest) of the closed-form piston:
+    x(θ) = r·cos(θ−45°) + √(l² − r²·sin²(θ−45°)) along the guide, s = x_max − x."""
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.sheets.form import form
+    from graphplan.sheets.kinematics import diagram_options
+    from graphplan.sheets.kinlayout import room
+    from review_scenes import LINK48
+    st = scene_study(LINK48)
+    opts = diagram_options(st, 1.0, None, 0.5, room(form("A1")), 0.0)
+    assert opts.get("fit") is True and opts["redrawn"].right
+    d = chord_diagrams(st, precision=0.5, **opts)
+    r, ln, w = 0.05, 0.2, 960 * 2 * math.pi / 60
+    stroke = 2 * r
+    assert d.mu_s == pytest.approx(math.ceil(stroke / opts["height"] * 1e4 - 1e-9) / 1e4)      # 0,0013
+    assert 0.9 * opts["height"] <= stroke / d.mu_s <= opts["height"] + 1e-9
+    assert min(abs(d.drawn.v).max(), abs(d.drawn.a).max()) >= 20.0
+
+    def x(th):
+        u = th - math.pi / 4
+        return r * math.cos(u) + math.sqrt(ln * ln - (r * math.sin(u)) ** 2)
+    phi = [math.radians(p) for p in d.phi]
+    s_true = [abs(x(math.pi / 4) - x(p)) for p in phi]          # from the outer dead centre
+    assert max(abs(abs(s) * d.mu_s - t) for s, t in zip(d.drawn.s, s_true)) <= 0.05 * stroke
+    h = 1e-6
+    v_true = [abs((x(math.radians(p) + h) - x(math.radians(p) - h)) / (2 * h) * w) for p in d.phi_mid]
+    v_max = max(abs((x(k * math.pi / 180 + h) - x(k * math.pi / 180 - h)) / (2 * h) * w) for k in range(360))
+    assert max(abs(abs(v) * d.mu_v - t) for v, t in zip(d.drawn.v, v_true)) <= 0.05 * v_max

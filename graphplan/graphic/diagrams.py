@@ -515,13 +515,23 @@ def division_turns(divisions: int | Sequence[float], where: str = "divisions",
     return np.append(turns, 360.0)
 
 
-def choose_mu_s(st: Study, unit: str, s_range: float, height: float | None) -> float:
+def fitted_scale(value: float) -> float:
+    """μs = s_max / h (seed 002, step 5: μS = l/h, the stroke's segment h chosen on the sheet),
+    written to two significant figures and rounded up so the stroke stays within h mm:
+    0.1 m over 80 mm → 0,00125 → 0,0013 m/mm (76.9 mm)."""
+    e = math.floor(math.log10(value)) - 1
+    return round(math.ceil(value / 10.0 ** e - 1e-9) * 10.0 ** e, 12)
+
+
+def choose_mu_s(st: Study, unit: str, s_range: float, height: float | None, fit: bool = False) -> float:
     """μs = μl by default (the crank 35–70 mm on the position plan, standard series); coarser when
-    the stroke would be taller than 100 mm; fitted to ``height`` mm when given. Angles: fitted to
-    80 mm (or ``height``)."""
+    the stroke would be taller than 100 mm; fitted to ``height`` mm when given — a standard value,
+    or with ``fit`` the seed's μs = s_max/h (``fitted_scale``: the s diagram its allowance's height
+    where the series' next step leaves it little more than half of it). Angles: fitted to 80 mm
+    (or ``height``)."""
     span = max(s_range, 1e-12)
     if height is not None:
-        return standard_scale(span / height)
+        return fitted_scale(span / height) if fit else standard_scale(span / height)
     if unit == "rad":
         return standard_scale(span / ANGLE_HEIGHT)
     mu = standard_scale(st.mech.crank.length / CRANK_MM)
@@ -572,7 +582,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
                    adaptive: bool = False, height: float | None = None, *,
                    tolerance: float = 0.5, chosen: Sequence[int] | None = None,
                    lang: str = "uk", method: str = "chords", angle_error_deg: float = ANGLE_ERROR_DEG,
-                   correct: bool = False, seed: int = SEED, redrawn: Any = None) -> Diagrams:
+                   correct: bool = False, seed: int = SEED, redrawn: Any = None, fit: bool = False) -> Diagrams:
     """The s, v, a diagrams of the output (or ``point``: a sliding point or a link) by chords.
 
     ``divisions``: a number of equal intervals (default: the scene's positions count) or the crank
@@ -581,7 +591,8 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn).
     ``method``: "chords" (``correct``: the lab's area correction) or "tangents" (each tangent off by
     up to ``angle_error_deg``, deterministic from ``seed``; see graphic.tangents). ``redrawn``: what
-    graphic.redraw changed to make these options (kept for the notes and the JSON)."""
+    graphic.redraw changed to make these options (kept for the notes and the JSON). ``fit``: μs =
+    s_max/h to two figures, the s diagram ``height`` mm high (``choose_mu_s``), not a standard value."""
     _check_positive(L=L, H1=H1, H2=H2, tolerance=tolerance)
     if method not in METHODS:
         raise GraphplanError(f"--method must be chords or tangents, got {method!r}")
@@ -605,7 +616,7 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     s_c, v_c, a_c = exact_motion(st, out, cycle_turn)
     s_range = float(np.ptp(s_c))
     sign = drawing_sign(out, s_c)
-    mu_s = choose_mu_s(st, unit, s_range, height)
+    mu_s = choose_mu_s(st, unit, s_range, height, fit and height is not None)
     mu_t = 2 * math.pi / (abs(mech.omega1) * L)     # μt = T/L = 2π/(ω1·L)
     mu_v = mu_s / (mu_t * H1)
     mu_a = mu_v / (mu_t * H2)

@@ -107,11 +107,11 @@ class Probe:
         self.mus: dict = {}
         self.key = (repr(st.mech), point, self.turns.tobytes(), float(precision))
 
-    def _judged(self, what: str, L, H1, H2, correct, adaptive, tolerance, height, make, *extra):
+    def _judged(self, what: str, L, H1, H2, correct, adaptive, tolerance, height, make, *extra, fit: bool = False):
         """``make()`` for this drawing, once across the probes of this output (``_JUDGED``)."""
-        if height not in self.mus:
-            self.mus[height] = choose_mu_s(self.st, self.unit, self.s_range, height)
-        key = (self.key, what, L, H1, H2, correct, adaptive, tolerance, self.mus[height], *extra)
+        if (height, fit) not in self.mus:
+            self.mus[height, fit] = choose_mu_s(self.st, self.unit, self.s_range, height, fit)
+        key = (self.key, what, L, H1, H2, correct, adaptive, tolerance, self.mus[height, fit], *extra)
         if key not in _JUDGED:
             if len(_JUDGED) >= JUDGED_MOST:
                 _JUDGED.clear()
@@ -119,20 +119,20 @@ class Probe:
         return _JUDGED[key]
 
     def readings(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
-                 tolerance: float = 0.5, height: float | None = None):
+                 tolerance: float = 0.5, height: float | None = None, fit: bool = False):
         """The drawing with these options, as ``chord_diagrams`` constructs it: (turns, μs, μv, μa,
         the read v and a at the middles, the v and a curves read at the division ordinates, s read);
         each drawing constructed once (``wrong`` and ``off`` judge the same one)."""
-        key = (L, H1, H2, correct, adaptive, tolerance, height)
+        key = (L, H1, H2, correct, adaptive, tolerance, height, fit)
         if key not in self.memo:
             if len(self.memo) > 4:
                 self.memo.clear()
             self.memo[key] = self._readings(*key)
         return self.memo[key]
 
-    def _readings(self, L, H1, H2, correct, adaptive, tolerance, height):
+    def _readings(self, L, H1, H2, correct, adaptive, tolerance, height, fit=False):
         turns, s = self.turns, self.s
-        mu_s = choose_mu_s(self.st, self.unit, self.s_range, height)
+        mu_s = choose_mu_s(self.st, self.unit, self.s_range, height, fit and height is not None)
         if adaptive:
             turns = refine(self.st, self.out, turns, self.sign, mu_s, L, H1, H2, tolerance, self.precision)
             if len(turns) != len(self.turns):
@@ -147,15 +147,17 @@ class Probe:
         return turns, x, mu_s, mu_v, mu_a, v, a, v_at, s_r, zeros
 
     def wrong(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
-              tolerance: float = 0.5, height: float | None = None, all_of: bool = True) -> tuple[str, ...]:
+              tolerance: float = 0.5, height: float | None = None, all_of: bool = True, fit: bool = False
+              ) -> tuple[str, ...]:
         """The diagrams ("v", "a") a drawing with these options gets qualitatively wrong, as
         ``chord_diagrams`` would report them (the same construction, ruler and comparison);
         ``all_of`` False: the first wrong one only (enough to reject a candidate)."""
         return self._judged("wrong", L, H1, H2, correct, adaptive, tolerance, height,
-                            lambda: self._wrong(L, H1, H2, correct, adaptive, tolerance, height, all_of), all_of)
+                            lambda: self._wrong(L, H1, H2, correct, adaptive, tolerance, height, all_of, fit), all_of,
+                            fit=fit)
 
-    def _wrong(self, L, H1, H2, correct, adaptive, tolerance, height, all_of) -> tuple[str, ...]:
-        turns, x, _, mu_v, mu_a, v, a, _, _, zeros = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+    def _wrong(self, L, H1, H2, correct, adaptive, tolerance, height, all_of, fit=False) -> tuple[str, ...]:
+        turns, x, _, mu_v, mu_a, v, a, _, _, zeros = self.readings(L, H1, H2, correct, adaptive, tolerance, height, fit)
         window, visible = qualitative.window_of(turns), max(qualitative.VISIBLE_MM, self.precision)
         xm = midpoints(x)
         wrong = []
@@ -167,14 +169,15 @@ class Probe:
         return tuple(wrong)
 
     def off(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
-            tolerance: float = 0.5, height: float | None = None) -> float:
+            tolerance: float = 0.5, height: float | None = None, fit: bool = False) -> float:
         """The largest |δ|, % of s, v, a read at the mechanism's positions off a drawing with these
         options, judged as the lab's 5 % judges them (graphic.diagrams.judged_pct)."""
         return self._judged("off", L, H1, H2, correct, adaptive, tolerance, height,
-                            lambda: self._off(L, H1, H2, correct, adaptive, tolerance, height))
+                            lambda: self._off(L, H1, H2, correct, adaptive, tolerance, height, fit), fit=fit)
 
-    def _off(self, L, H1, H2, correct, adaptive, tolerance, height) -> float:
-        turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+    def _off(self, L, H1, H2, correct, adaptive, tolerance, height, fit=False) -> float:
+        turns, x, mu_s, mu_v, mu_a, _, a, v_at, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height,
+                                                                       fit)
         at = np.isin(np.round(turns[:-1], 9), np.round(self.turns[:-1], 9))
         a_at = read(periodic_spline(midpoints(x), a, L)(x), self.precision)
         worst = 0.0
@@ -185,13 +188,13 @@ class Probe:
         return worst
 
     def peaks(self, L: float, H1: float, H2: float, correct: bool = False, adaptive: bool = False,
-              tolerance: float = 0.5, height: float | None = None) -> tuple[float, float, float]:
+              tolerance: float = 0.5, height: float | None = None, fit: bool = False) -> tuple[float, float, float]:
         """The drawing's largest ordinates, mm: |v| and |a| read at the middles, and the s diagram's
         height (its range)."""
         def make() -> tuple[float, float, float]:
-            _, _, _, _, _, v, a, _, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height)
+            _, _, _, _, _, v, a, _, s_r, _ = self.readings(L, H1, H2, correct, adaptive, tolerance, height, fit)
             return float(np.max(np.abs(v))), float(np.max(np.abs(a))), float(np.ptp(s_r))
-        return self._judged("peaks", L, H1, H2, correct, adaptive, tolerance, height, make)
+        return self._judged("peaks", L, H1, H2, correct, adaptive, tolerance, height, make, fit=fit)
 
 
 def readable(peaks: tuple[float, float, float], first: tuple[float, float, float], zone: float,
@@ -316,6 +319,45 @@ def lower(probe: "Probe", base: dict[str, Any], right: list[tuple[float, int, di
     return None
 
 
+FIT_BELOW = 0.7    # a standard μs drawing s lower than this share of its allowance leaves room to fit μs
+
+
+def fitted(probe: "Probe", base: dict[str, Any], first_peaks, zone: float, precision: float, fits, options,
+           fixed: frozenset[str], poles, seen: set) -> tuple[dict[str, Any], float] | None:
+    """A wrong first drawing whose every readable right redrawing outgrew the room, its s diagram
+    drawn by a standard μs at less than ``FIT_BELOW`` of its allowance (the next step of the series
+    would be twice as tall): the seed's μs = s_max/h (``choose_mu_s`` ``fit``: seed 002, step 5),
+    the s diagram as high as allowed, with the first poles, then each pair of the menu nearest them,
+    with and without the correction — of the readable right ones (v and a at least ``READABLE_MM``),
+    the one read closest to the exact at the positions that ``fits``. Review: the V-compressor's A1
+    drew s 50 mm high under an 80-mm allowance (μs 0,002; 0,001 draws 100 mm) and, its first a
+    diagram wrong, took H1 15 mm for a right one: v and a 10 and 12 mm high under a 70-mm band."""
+    height = base.get("height")
+    if height is None or base.get("fit") or first_peaks[2] >= FIT_BELOW * float(height):
+        return None
+    menu = [h for h in POLE_MENU if poles[0] - 1e-9 <= h <= poles[1] + 1e-9]
+    H1, H2 = base["H1"], base["H2"]
+    pairs = [(H1, H2)] + ([] if {"H1", "H2"} & fixed else
+                          sorted(((h1, h2) for h1 in menu for h2 in menu),
+                                 key=lambda p: (abs(p[0] - H1) + abs(p[1] - H2), p)))
+    right: list[tuple[float, int, dict[str, Any]]] = []
+    for order, (h1, h2) in enumerate(pairs):
+        for corr in (False, True):
+            change = {"fit": True, "H1": h1, "H2": h2, "correct": corr}
+            trial = {**base, **change}
+            key = tuple(sorted(trial.items()))
+            if key in seen:
+                continue
+            seen.add(key)
+            if not readable(probe.peaks(**trial), first_peaks, zone, precision) or probe.wrong(**trial, all_of=False):
+                continue
+            right.append((probe.off(**trial), order, {k: v for k, v in change.items() if trial[k] != base[k]}))
+    for off, _, change in sorted(right, key=lambda r: r[:2]):
+        if fits is None or fits({**options, **change}, True):
+            return change, off
+    return None
+
+
 def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longest: float | None = None,
            fixed: frozenset[str] = frozenset(), tallest: float | None = None,
            fits: Callable[[dict[str, Any]], bool] | None = None, menu: bool = False) -> tuple[dict[str, Any], Redrawing]:
@@ -334,7 +376,7 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
     L, H1, H2 = float(options["L"]), float(options["H1"]), float(options["H2"])
     base = {"L": L, "H1": H1, "H2": H2, "correct": bool(options.get("correct", False)),
             "adaptive": bool(options.get("adaptive", False)), "tolerance": float(options.get("tolerance", 0.5)),
-            "height": options.get("height")}
+            "height": options.get("height"), "fit": bool(options.get("fit", False))}
     wrong = probe.wrong(**base)
     off0 = probe.off(**base)
     if not wrong and off0 <= LAB_LIMIT:
@@ -381,6 +423,10 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             break
         if fits is None or fits({**options, **change}, bool(wrong)):
             return done(change, off)
+    if wrong:    # a low s under a tall allowance: μs = s_max/h (seed 002), before a flat drawing
+        found = fitted(probe, base, first_peaks, zone, precision, fits, options, fixed, poles, seen)
+        if found is not None:
+            return done(*found)
     if wrong:    # every readable right one too large for the room: those passed over (or flat), judged
         for order, change, off in sorted(passed, key=lambda r: (r[2], r[0])):   # now (a generated six-bar's
             trial = {**base, **change}                                        # a stayed "wrong" though

@@ -316,6 +316,12 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
             parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}"
                          if uk else f"the {s0} diagram {'taller' if up else 'lower'}: "
                                     f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}")
+        elif key == "fit":      # seed 002: μs = s_max/h, the s diagram its allowance's height
+            s0, top = f"{d.symbols[0]}_{{{d.sub}}}", f"{d.symbols[0]}_{{max}}"
+            per = f"{units(d, lang)[0]}/{mm}"
+            parts.append(f"діаграма {s0} вища: {mu(scale_symbols(d)[0])} = {top}/h = {fmt(d.mu_s, lang)} {per}"
+                         if uk else f"the {s0} diagram taller: {mu(scale_symbols(d)[0])} = {top}/h = "
+                                    f"{fmt(d.mu_s, lang)} {per}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
