@@ -3346,3 +3346,95 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+OWN_SLIDER50 = '''
+# Stop 50 (kin50's own): a crank-rocker four-bar O1ABO2 whose coupler carries a point E off the line AB;
+# the rod EF drives a slider F on a guide inclined at 30° — I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП, the
+# last group driven by a coupler point (a plane-moving link), not by the crank or a rocker.
+title = "Шестиланковий механізм з похилою напрямною"
+title_en = "Six-bar linkage with an inclined guide"
+designation = "ТММ.КМ.50.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.04]
+
+[frame.guides]
+g = { through = [0.10, 0.30], angle_deg = 30, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+shape = { E = [0.15, 0.10] }
+points = { S2 = 0.5 }
+mass = 5
+inertia = 0.04
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+mass = 4
+inertia = 0.02
+
+[[link]]
+name = "EF"
+number = 4
+joints = ["E", "F"]
+length = 0.26
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.02
+
+[[link]]
+name = "F"
+number = 5
+joints = ["F"]
+slides_on = "g"
+mass = 10
+
+[branch]
+B = 1
+F = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "F"
+magnitude = 600
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500
+'''

@@ -163,3 +163,58 @@ def test_a_low_s_diagram_is_fitted_to_its_allowance_not_drawn_flat():
     v_true = [abs((x(math.radians(p) + h) - x(math.radians(p) - h)) / (2 * h) * w) for p in d.phi_mid]
     v_max = max(abs((x(k * math.pi / 180 + h) - x(k * math.pi / 180 - h)) / (2 * h) * w) for k in range(360))
     assert max(abs(abs(v) * d.mu_v - t) for v, t in zip(d.drawn.v, v_true)) <= 0.05 * v_max
+
+
+# -- kin50's own: a slider on a 30° guide driven through a rod from a coupler point ---------------
+
+G0, GD = 0.10 + 0.30j, cmath.exp(1j * math.radians(30))
+E_LOCAL = 0.15 + 0.10j
+
+
+def _own(th: float) -> dict[str, complex]:
+    """The closed form of OWN_SLIDER50: B from two circles (O1A 0.08, AB 0.30, O2B 0.20), E fixed on
+    the coupler (0.15 along AB, 0.10 to its left), F on the guide G0 + t·GD with |F − E| = 0.26 (the
+    root farther along the guide, as the scene's branch F = 1 draws it)."""
+    o2 = 0.32 - 0.04j
+    a = 0.08 * cmath.exp(1j * th)
+    b = _meet(a, 0.30, o2, 0.20)
+    e = a + E_LOCAL * (b - a) / 0.30
+    d = e - G0
+    k = (d * GD.conjugate()).real
+    t = k + math.sqrt(k * k - abs(d) ** 2 + 0.26 ** 2)
+    return {"A": a, "B": b, "E": e, "F": G0 + t * GD, "t": t}
+
+
+@pytest.fixture(scope="module")
+def own_plans():
+    from graphplan.graphic.plans import build_plans
+    from review_scenes import OWN_SLIDER50
+    return build_plans(scene_study(OWN_SLIDER50), count=12, accel=[4], precision=0.5)
+
+
+def test_own_stroke_and_coupler_point_acceleration(own_plans):
+    """The slider's extreme positions F′, F″ are the closed form's: the stroke along the guide
+    0,1863 m (the sheet's H = 186,3); on the acceleration plan of position 4 the coupler point's
+    a_E is the rigid body's a_A + (a_B − a_A)·(E − A)/(B − A) (the similar triangle abe), and a_F the
+    closed form's second derivative — each within a few ruler halves × μa."""
+    from graphplan.drawing.plans import stroke_ends
+    w1 = -120 * 2 * math.pi / 60
+    ts = [_own(math.radians(k / 10))["t"] for k in range(3600)]
+    stroke = max(ts) - min(ts)
+    assert stroke == pytest.approx(0.18631, abs=2e-5)
+    sc = own_plans.scheme
+    from graphplan.graphic.position_plan import where as at
+    ends = stroke_ends(own_plans)
+    f1, f2 = (at(sc, lay, sc.body_of("F"), "F") for lay in ends)
+    assert abs(f2 - f1) * own_plans.mu_l == pytest.approx(stroke, abs=1e-4)    # drawn mm × μl
+    q = own_plans.positions[4]
+    th = math.radians(q.phi)
+    h = 1e-5
+    acc = {k: (_own(th + h)[k] - 2 * _own(th)[k] + _own(th - h)[k]) / (h * h) * w1 * w1 for k in "ABEF"}
+    got = {k: q.acceleration.entries[k].vector for k in "ABEF"}
+    mu = own_plans.mu_a
+    z = _own(th)
+    rigid = got["A"] + (got["B"] - got["A"]) * (z["E"] - z["A"]) / (z["B"] - z["A"])
+    assert abs(got["E"] - rigid) <= 1.0 * mu          # the similar triangle, to a ruler division
+    for k in "ABEF":
+        assert abs(got[k] - acc[k]) <= 3 * 0.5 * mu + 0.01 * abs(acc[k]), k
