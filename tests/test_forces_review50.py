@@ -1,0 +1,190 @@
+"""Stop 50 (the lead's LINK50: a crank-rocker four-bar O1ABO2 whose rocker carries a pin C; the stone 4
+on C slides in the coulisse O3D rocking about O3 under a 120 N·m resistance moment — I(0-1) -> II(2-3)
+ВВВ -> II(4-5) ВПВ). The truth here: the closed-form mechanism (B by intersecting two circles, C on the
+rocker's line, the coulisse along O3C), its power balance, a frictionless sliding pair's reaction normal
+to the guide, and the drawn geometry measured."""
+from __future__ import annotations
+
+import cmath
+import math
+
+import pytest
+
+from conftest import scene_study
+from review_scenes import LINK50
+
+MU_L, MU_F = 0.004, 4.0          # the A1 sheet's groups and force plans (1:4, 4 N/mm)
+CRANK = {"I(0-1)": 0.001}        # … its crank group at 1:1, 2 N/mm
+CRANK_F = {"I(0-1)": 2.0}
+O1, O2, O3 = 0j, 0.30 + 0.03j, 0.52 + 0.26j
+R1, L2, L3, LC, L5 = 0.07, 0.28, 0.16, 0.24, 0.46
+W1 = 75 * 2 * math.pi / 60      # counter-clockwise
+
+
+@pytest.fixture(scope="module")
+def fp():
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    st = scene_study(LINK50)
+    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=MU_L, mu_F=MU_F,
+                                group_mu=CRANK, group_mu_F=CRANK_F)
+
+
+def _group(fp, label: str):
+    return next(g for g in fp.groups if g.label == label)
+
+
+def _circles(p: complex, rp: float, q: complex, rq: float) -> tuple[complex, complex]:
+    """The two points at rp from p and rq from q."""
+    d = abs(q - p)
+    a = (rp * rp - rq * rq + d * d) / (2 * d)
+    h = math.sqrt(rp * rp - a * a)
+    e = (q - p) / d
+    return p + a * e + 1j * h * e, p + a * e - 1j * h * e
+
+
+def _closed_form(fp):
+    """θ1 as drawn (group I(0-1)), B on the branch drawn (group II(2-3)): the positions of the centres
+    of mass and the links' angles as functions of t (the crank turning at ω1)."""
+    pts = _group(fp, "I(0-1)").points
+    theta0 = cmath.phase(pts["A"] - pts["O1"])
+    g23 = _group(fp, "II(2-3)").points
+    b_drawn = (g23["B"] - g23["O2"]) * MU_L + O2
+    a0 = R1 * cmath.exp(1j * theta0)
+    sign = min((0, 1), key=lambda k: abs(_circles(a0, L2, O2, L3)[k] - b_drawn))
+
+    def pos(t: float) -> dict[str, complex | float]:
+        a = R1 * cmath.exp(1j * (theta0 + W1 * t))
+        b = _circles(a, L2, O2, L3)[sign]
+        c = O2 + LC * (b - O2) / L3
+        u5 = (c - O3) / abs(c - O3)
+        return {"S1": a / 2, "S2": (a + b) / 2, "S3": (O2 + b) / 2, "C": c, "S5": O3 + 0.23 * u5,
+                "phi2": cmath.phase(b - a), "phi3": cmath.phase(b - O2), "phi5": cmath.phase(u5)}
+    return pos
+
+
+def _d(pos, key: str, order: int, h: float = 1e-4) -> complex:
+    f = [complex(pos(k * h)[key]) for k in (-2, -1, 0, 1, 2)]
+    if order == 1:
+        return (f[0] - 8 * f[1] + 8 * f[3] - f[4]) / (12 * h)
+    return (-f[0] + 16 * f[1] - 30 * f[2] + 16 * f[3] - f[4]) / (12 * h * h)
+
+
+def test_balancing_moment_agrees_with_the_closed_form_power_balance(fp):
+    """M_зр from the plans equals −ΣP/ω1 of the closed-form six-bar within 1.5 % (the plans' ruler
+    and the acceleration plan's reading), the 120 N·m opposing the coulisse's turning."""
+    pos = _closed_form(fp)
+    g = 9.81
+    power = 0.0
+    for key, m in {"S1": 3.0, "S2": 5.0, "S3": 6.0, "C": 1.2, "S5": 7.0}.items():
+        force = -1j * m * g - m * _d(pos, key, 2)
+        power += (force.conjugate() * _d(pos, key, 1)).real
+    for key, inertia in {"phi2": 0.04, "phi3": 0.05, "phi5": 0.07}.items():
+        power += -inertia * _d(pos, key, 2).real * _d(pos, key, 1).real
+    w5 = _d(pos, "phi5", 1).real
+    power += -120.0 * math.copysign(1.0, w5) * w5
+    closed = -power / W1
+    assert fp.balancing == pytest.approx(closed, rel=0.015)
+    assert fp.ks.balancing[0] == pytest.approx(closed, rel=1e-3)
+
+
+def test_the_coulisse_acts_on_the_stone_normal_to_it(fp):
+    """R54 (the coulisse on the stone, a frictionless sliding pair) is drawn on the plan at 90° to the
+    coulisse O3C within the ruler's 0.5 mm over its 77 mm; its size is the closed form's: the
+    coulisse's ΣM about O3 = 0 (its G5, Φ5, M^Φ5 and the 120 N·m) over |O3C|."""
+    pos = _closed_form(fp)
+    p = pos(0.0)
+    u5 = cmath.exp(1j * p["phi5"])
+    s = {x.name: x.end - x.start for x in _group(fp, "II(4-5)").sides}
+    r54 = s["R54"]
+    assert abs((r54 / u5).real) <= 0.5
+    a5, e5, w5 = _d(pos, "S5", 2), _d(pos, "phi5", 2).real, _d(pos, "phi5", 1).real
+    f5 = -1j * 7.0 * 9.81 - 7.0 * a5
+    moment = ((p["S5"] - O3).conjugate() * f5).imag - 0.07 * e5 - 120.0 * math.copysign(1.0, w5)
+    r45 = -moment / abs(p["C"] - O3)                       # R45 on the coulisse along i·u5
+    assert abs(r54) * MU_F == pytest.approx(abs(r45), rel=0.02)
+    assert ((r54 / u5).imag > 0) == (r45 < 0)               # R54 = −R45
+
+
+def _vectors(rec) -> dict[str, tuple[complex, complex]]:
+    out = {}
+    for q in rec.items:
+        if q.kind == "vector" and q.role != "head" and q.text:
+            (ax, ay), (bx, by) = q.points[:2]
+            out[q.text] = (complex(ax, ay), complex(bx, by))
+    return out
+
+
+def _cross(a: complex, b: complex, c: complex, d: complex) -> bool:
+    def x(p: complex, q: complex) -> float:
+        return p.real * q.imag - p.imag * q.real
+    den = x(b - a, d - c)
+    if abs(den) < 1e-12:
+        return False
+    t, v = x(c - a, d - c) / den, x(c - a, b - a) / den
+    return 0.02 < t < 0.98 and 0.02 < v < 0.98
+
+
+def test_a_component_along_the_rocker_crosses_no_other_arrow(fp):
+    """On group II(2-3) the components of the reactions along their links (R^n03 up the rocker O2B, R^n12
+    along AB) cross no other force's arrow (R^n03 ran through Φ3's head at S3, its name 49 mm away)
+    and pass no other loaded point nearer than a lane (2.5 mm)."""
+    from graphplan.drawing import forces as fd
+    gp = _group(fp, "II(2-3)")
+    vec = _vectors(fd.group_record(fp, gp, "uk"))
+    own = {"R03n": ("R03", "R03τ"), "R12n": ("R12", "R12τ")}
+    for name, mates in own.items():
+        a, b = vec[name]
+        for other, (c, d) in vec.items():
+            if other != name and other not in mates:
+                assert not _cross(a, b, c, d), (name, other)
+        for w in (vec["G2"][0], vec["G3"][0]):            # S2, S3: where G2 and G3 are applied
+            t = max(0.0, min(1.0, ((w - a) / (b - a)).real))
+            assert abs(w - a - (b - a) * t) > 2.5 + 1e-6, (name, w)
+
+
+def test_no_two_arrows_of_one_point_merge_into_one_shaft(fp):
+    """On every group of LINK50 two arrows with an end at one point leave it as rays at least 8° apart
+    (R34, 4° from vertical, left the stone's C beside G4 — two shafts read as one; it now arrives
+    at C from above, as the seeds draw a pushing force)."""
+    from graphplan.drawing import forces as fd
+    for gp in fp.groups:
+        vec = _vectors(fd.group_record(fp, gp, "uk"))
+        rays = []
+        for name, (a, b) in vec.items():
+            for end, other in ((a, b), (b, a)):
+                rays.append((name, end, other - end))
+        for i, (n1, p1, r1) in enumerate(rays):
+            for n2, p2, r2 in rays[i + 1:]:
+                if n1 != n2 and abs(p1 - p2) < 0.5:
+                    angle = abs(cmath.phase(r2 / r1))
+                    assert angle >= math.radians(8.0) - 1e-9, (gp.label, n1, n2, math.degrees(angle))
+
+
+def test_the_plans_detail_names_each_side_by_its_own_line(fp):
+    """In detail I of II(4-5)'s plan (the stone's corner at 1 N/mm) each name is nearer its own side
+    than any other — its letters, or the end of its leader ("R54" stood by R05's line, "Φ4" led
+    across G5)."""
+    from graphplan.drawing import forces as fd
+    from graphplan.drawing.labels import box_to_segment
+    rec = fd.polygon_record(fp, _group(fp, "II(4-5)"), "uk")
+    det = [q for q in rec.items if q.step.endswith(": detail")]
+    lines = {q.text: (complex(*q.points[0]), complex(*q.points[1])) for q in det
+             if q.kind in ("vector", "segment") and q.layer == "vectors" and q.text}
+    assert {"R54", "R05", "G5"} <= set(lines)
+    leaders = [(complex(*q.points[0]), complex(*q.points[1])) for q in det if q.kind == "segment" and q.role == "label"]
+    for q in det:
+        if q.kind != "text" or q.layer != "labels":
+            continue
+        name = q.text.replace("_{", "").replace("}", "")
+        if name not in lines:
+            continue
+        box = q.ink()
+        near = lambda seg: box_to_segment(box, *seg)                      # noqa: E731
+        lead = [ld for ld in leaders if min(box_to_segment(box, p, p) for p in ld) < 1.0]
+        if lead:
+            a, b = lead[0]
+            tip = a if box_to_segment(box, a, a) > box_to_segment(box, b, b) else b
+            near = lambda seg, tip=tip: fd._to_segment(tip, *seg)         # noqa: E731
+        own = near(lines[name])
+        assert all(own < near(seg) for other, seg in lines.items() if other != name), (name, own)
