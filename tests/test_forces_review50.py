@@ -188,3 +188,80 @@ def test_the_plans_detail_names_each_side_by_its_own_line(fp):
             near = lambda seg, tip=tip: fd._to_segment(tip, *seg)         # noqa: E731
         own = near(lines[name])
         assert all(own < near(seg) for other, seg in lines.items() if other != name), (name, own)
+
+
+# -- own mechanism 50: a crank-slider whose slider's pin B carries the stone of a rocking coulisse O3D --
+
+@pytest.fixture(scope="module")
+def own():
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    from review_scenes import SLIDER_COULISSE50
+    st = scene_study(SLIDER_COULISSE50)
+    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=0.0025, mu_F=2.5,
+                                group_mu={"II(2-3)": 0.002, "I(0-1)": 0.0005},
+                                group_mu_F={"II(2-3)": 2.0, "I(0-1)": 2.0})
+
+
+def _arms(rec) -> list[tuple[str, complex, complex]]:
+    """The arms drawn on a group: (force name, from, foot), read off the construction strokes."""
+    out = []
+    for q in rec.items:
+        if q.kind == "segment" and q.role == "construction" and " mm to " in (q.text or ""):
+            out.append((q.text.split(" mm to ")[1], complex(*q.points[0]), complex(*q.points[1])))
+    return out
+
+
+def test_an_arms_name_stands_by_its_own_arm_not_at_anothers_foot(own):
+    """On II(4-5) of the slider-driven coulisse the arms h_Φ4 and h_Φ5 leave O3 2° apart: each name is
+    nearer its own arm than the other's, and farther than 5 mm from the other's foot (its right-angle
+    mark) — "h_Φ4" stood at h_Φ5's foot."""
+    from graphplan.drawing import forces as fd
+    from graphplan.drawing.labels import box_to_segment
+    rec = fd.group_record(own, _group(own, "II(4-5)"), "uk")
+    arms = {n: (a, b) for n, a, b in _arms(rec)}
+    assert {"Φ4", "Φ5"} <= set(arms)
+    for name in ("Φ4", "Φ5"):
+        text = next(q for q in rec.items if q.kind == "text" and q.text == f"h_{{{name}}}")
+        box = text.ink()
+        other = "Φ5" if name == "Φ4" else "Φ4"
+        assert box_to_segment(box, *arms[name]) < box_to_segment(box, *arms[other])
+        assert box_to_segment(box, arms[other][1], arms[other][1]) > 5.0
+
+
+def test_own_no_two_arrows_of_one_point_merge(own):
+    """On every group of the slider-driven coulisse no two arrows leave (or reach) one point within 8°
+    of each other: Φ3 set aside over the slider's block shared a tail with R42, 5° off the guide."""
+    from graphplan.drawing import forces as fd
+    for gp in own.groups:
+        vec = _vectors(fd.group_record(own, gp, "uk"))
+        ends = [(n, e, o - e) for n, (a, b) in vec.items() for e, o in ((a, b), (b, a))]
+        for i, (n1, p1, r1) in enumerate(ends):
+            for n2, p2, r2 in ends[i + 1:]:
+                if n1 != n2 and abs(p1 - p2) < 0.5:
+                    assert abs(cmath.phase(r2 / r1)) >= math.radians(8.0) - 1e-9, (gp.label, n1, n2)
+
+
+def test_own_balancing_moment_agrees_with_the_closed_form(own):
+    """M_зр of the slider-driven coulisse from the plans equals −ΣP/ω1 of its closed form (B = A + the
+    rod's reach to the guide y = −0.02 m, the coulisse along O3B) within 1.5 %."""
+    pts = _group(own, "I(0-1)").points
+    theta0 = cmath.phase(pts["A"] - pts["O"])
+    w1, o3, g = 120 * 2 * math.pi / 60, 0.26 + 0.30j, 9.81
+
+    def pos(t: float) -> dict[str, complex | float]:
+        a = 0.07 * cmath.exp(1j * (theta0 + w1 * t))
+        b = complex(a.real + math.sqrt(0.26 ** 2 - (-0.02 - a.imag) ** 2), -0.02)
+        u5 = (b - o3) / abs(b - o3)
+        return {"S1": a / 2, "S2": a + 0.35 * (b - a), "B": b, "S5": o3 + 0.4 * 0.42 * u5,
+                "phi2": cmath.phase(b - a), "phi5": cmath.phase(u5)}
+    power = 0.0
+    for key, m in {"S1": 2.5, "S2": 4.0, "B": 3.0 + 0.8, "S5": 6.0}.items():
+        force = -1j * m * g - m * _d(pos, key, 2)
+        power += (force.conjugate() * _d(pos, key, 1)).real
+    for key, inertia in {"phi2": 0.025, "phi5": 0.06}.items():
+        power += -inertia * _d(pos, key, 2).real * _d(pos, key, 1).real
+    w5 = _d(pos, "phi5", 1).real
+    power += -80.0 * math.copysign(1.0, w5) * w5
+    closed = -power / w1
+    assert own.balancing == pytest.approx(closed, rel=0.015)

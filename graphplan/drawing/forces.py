@@ -195,6 +195,15 @@ def _one_arrow(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5)
     return any(abs(p - q) <= tol for p in (a, b) for q in (c, d))
 
 
+def _one_shaft(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
+    """Whether two arrows a→b and c→d leave one point (or arrive at one) within ``NEAR_DEG`` of each
+    other's direction: their shafts merge into one near it."""
+    if abs(b - a) < 1e-9 or abs(d - c) < 1e-9:
+        return False
+    same_end = abs(a - c) <= tol or abs(b - d) <= tol
+    return same_end and dot(_unit(b - a), _unit(d - c)) > math.cos(math.radians(NEAR_DEG))
+
+
 def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bool:
     """Whether the arrow a→b crosses a drawn link's line (their segments meet, not just touch at an
     end within 0.3 mm)."""
@@ -620,7 +629,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             # mate pulls from it (the seeds' pair: P_B arriving at B's level beside Φ3 leaving it)
             back = length * u if mid is not None and dot(mid - z, u) < 0 else 0.0
             cands = [(z + off * n - back, z + off * n + length * u - back, off) for off in offs]
-            free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
+            # (nor from the tail of an arrow set there a few degrees off: the stone's R42 set aside
+            # above the slider's block, 5° off its guide, and Φ3 in the same lane left one tail)
+            free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) or _one_shaft(c[0], c[1], t, h)
+                                                for _, t, h in drawn)]
             if not block:
                 # a lane whose arrow neither crosses another link nor runs by another arrow from
                 # the point first (review 12 #17: Φ1 beside the crank crossed the rod AB at A, the
@@ -964,7 +976,25 @@ def arm_names(arms: list, shifts: list[complex]) -> list[tuple[complex, str, com
         else:
             mid, text, side, key = out[same]
             out[same] = (mid, text[:-1] + "," + arm_symbol(t.name)[3:], side, key)
-    return [(mid, text, side) for mid, text, side, _ in out]
+    # a name by the middle of its arm where no other arm ends there; else farther along it, where
+    # the feet of the others are farthest (own mechanism 50: "h_Φ4" by the middle of its 70 mm arm
+    # from O3 stood at h_Φ5's foot, the two arms 2° apart — read as h_Φ5's name)
+    feet = [key[1] for _, _, _, key in out]
+    placed = []
+    for mid, text, side, (s0, foot) in out:
+        # (a foot on this arm's own line is a collinear arm's, h_G5 within h_G4: the two lettered as before)
+        others = [f for f in feet if abs(f - foot) > 1e-9 and _to_segment(f, s0, foot) > 1.0]
+
+        def room(t: float, s0=s0, foot=foot, others=others) -> float:
+            return min((abs(s0 + t * (foot - s0) - f) for f in others), default=math.inf)
+        if room(0.5) < ARM_FOOT_MM:
+            t = max((0.5, 0.4, 0.6, 0.3, 0.7), key=lambda t: (min(room(t), ARM_FOOT_MM), -abs(t - 0.5)))
+            mid = s0 + t * (foot - s0)
+        placed.append((mid, text, side))
+    return placed
+
+
+ARM_FOOT_MM = 8.0    # an arm's name kept this far from the foot of another arm (its right-angle mark)
 
 
 ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
