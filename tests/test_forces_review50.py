@@ -265,3 +265,24 @@ def test_own_balancing_moment_agrees_with_the_closed_form(own):
     power += -80.0 * math.copysign(1.0, w5) * w5
     closed = -power / w1
     assert own.balancing == pytest.approx(closed, rel=0.015)
+
+
+def test_no_arm_lies_along_another(fp):
+    """On LINK50's groups no arm runs along another arm's line for more than a millimetre (h_R43 from
+    B lay within h_G2, R43 and G2 both near vertical: its name went out 30 mm along h_G2's line) —
+    each arm drawn perpendicular to its own force's line, its foot on that line."""
+    from graphplan.drawing import forces as fd
+    for gp in fp.groups:
+        rec = fd.group_record(fp, gp, "uk")
+        arms = _arms(rec)
+        vec = _vectors(rec)
+        for i, (n1, a1, b1) in enumerate(arms):
+            if n1 in vec:                               # perpendicular to its force's line
+                t, h = vec[n1]
+                assert abs(((b1 - a1) / (h - t)).real) <= 1e-6 * abs(b1 - a1) * abs(h - t) + 1e-6
+            for n2, a2, b2 in arms[i + 1:]:
+                u = (b1 - a1) / abs(b1 - a1)
+                off = max(abs(((p - a1) / u).imag) for p in (a2, b2))
+                if off < 0.3:                           # on one line: how much they share
+                    lo, hi = sorted(((p - a1) / u).real for p in (a2, b2))
+                    assert min(hi, abs(b1 - a1)) - max(lo, 0.0) <= 1.0, (gp.label, n1, n2)

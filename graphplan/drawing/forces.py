@@ -841,13 +841,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 continue
             arms.append((about, t, f))
     shifts: list[complex] = []
+    # the longer arms first: a short arm along a longer one's line (LINK50's h_R43 from B within
+    # h_G2, R43 and G2 both near vertical) is set aside from it, so that each has its own line and
+    # name — its name went out 30 mm along h_G2's line
+    arms.sort(key=lambda x: -abs(x[1].foot - x[0]))
+    arm_lines: list[tuple[complex, complex]] = []
     for about, t, f in arms:
         a, b = span[f.name]
         off = lanes.get(f.name, 0j)
         # an arm lying on a drawn arrow or link (h_G2 from B along R03) drawn aside (``arm_aside``)
-        shift = arm_aside(about, t.foot, _unit(f.force), [(p, q) for _, p, q in drawn] + drawn_links,
+        # … or on an arm drawn (not one the ruler cannot set apart from it: those are one line, one name)
+        mates = [(p, q) for p, q in arm_lines if abs(p - about) > 1e-6 or abs(q - t.foot) > ONE_ARM_MM]
+        shift = arm_aside(about, t.foot, _unit(f.force), [(p, q) for _, p, q in drawn] + drawn_links + mates,
                           toward=0.5 * (a + b) - off, outlines=blocks)
         shifts.append(shift)
+        arm_lines.append((about + shift, t.foot + shift))
         s0, foot = about + shift, t.foot + shift
         rec.segment(_pt(s0), _pt(foot), role="construction", layer="construction", step=step,
                     text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
