@@ -34,6 +34,18 @@ def _group(fp, label: str):
     return next(g for g in fp.groups if g.label == label)
 
 
+_RECORDS: dict = {}
+
+
+def _record(fp, gp):
+    """A group's drawing, drawn once for the module (group_record is the slow part of these tests)."""
+    from graphplan.drawing import forces as fd
+    key = (id(fp), gp.label)
+    if key not in _RECORDS:
+        _RECORDS[key] = fd.group_record(fp, gp, "uk")
+    return _RECORDS[key]
+
+
 def _circles(p: complex, rp: float, q: complex, rq: float) -> tuple[complex, complex]:
     """The two points at rp from p and rq from q."""
     d = abs(q - p)
@@ -131,7 +143,7 @@ def test_a_component_along_the_rocker_crosses_no_other_arrow(fp):
     and pass no other loaded point nearer than a lane (2.5 mm)."""
     from graphplan.drawing import forces as fd
     gp = _group(fp, "II(2-3)")
-    vec = _vectors(fd.group_record(fp, gp, "uk"))
+    vec = _vectors(_record(fp, gp))
     own = {"R03n": ("R03", "R03τ"), "R12n": ("R12", "R12τ")}
     for name, mates in own.items():
         a, b = vec[name]
@@ -149,7 +161,7 @@ def test_no_two_arrows_of_one_point_merge_into_one_shaft(fp):
     at C from above, as the seeds draw a pushing force)."""
     from graphplan.drawing import forces as fd
     for gp in fp.groups:
-        vec = _vectors(fd.group_record(fp, gp, "uk"))
+        vec = _vectors(_record(fp, gp))
         rays = []
         for name, (a, b) in vec.items():
             for end, other in ((a, b), (b, a)):
@@ -218,7 +230,7 @@ def test_an_arms_name_stands_by_its_own_arm_not_at_anothers_foot(own):
     mark) — "h_Φ4" stood at h_Φ5's foot."""
     from graphplan.drawing import forces as fd
     from graphplan.drawing.labels import box_to_segment
-    rec = fd.group_record(own, _group(own, "II(4-5)"), "uk")
+    rec = _record(own, _group(own, "II(4-5)"))
     arms = {n: (a, b) for n, a, b in _arms(rec)}
     assert {"Φ4", "Φ5"} <= set(arms)
     for name in ("Φ4", "Φ5"):
@@ -234,7 +246,7 @@ def test_own_no_two_arrows_of_one_point_merge(own):
     of each other: Φ3 set aside over the slider's block shared a tail with R42, 5° off the guide."""
     from graphplan.drawing import forces as fd
     for gp in own.groups:
-        vec = _vectors(fd.group_record(own, gp, "uk"))
+        vec = _vectors(_record(own, gp))
         ends = [(n, e, o - e) for n, (a, b) in vec.items() for e, o in ((a, b), (b, a))]
         for i, (n1, p1, r1) in enumerate(ends):
             for n2, p2, r2 in ends[i + 1:]:
@@ -273,7 +285,7 @@ def test_no_arm_lies_along_another(fp):
     each arm drawn perpendicular to its own force's line, its foot on that line."""
     from graphplan.drawing import forces as fd
     for gp in fp.groups:
-        rec = fd.group_record(fp, gp, "uk")
+        rec = _record(fp, gp)
         arms = _arms(rec)
         vec = _vectors(rec)
         for i, (n1, a1, b1) in enumerate(arms):
