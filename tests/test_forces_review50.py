@@ -298,3 +298,23 @@ def test_no_arm_lies_along_another(fp):
                 if off < 0.3:                           # on one line: how much they share
                     lo, hi = sorted(((p - a1) / u).real for p in (a2, b2))
                     assert min(hi, abs(b1 - a1)) - max(lo, 0.0) <= 1.0, (gp.label, n1, n2)
+
+
+def test_the_reactions_are_named_from_to_as_seed_000(fp):
+    """Seed 000 names R_{10-11} the action of link 10 on link 11 (R<from><to>): the plan's R34 is link 3's
+    force on the stone 4 — the closed form's −(G4 + Φ4 + R54), R54 normal to the coulisse from its ΣM
+    about O3 — within 2 % and 1°; R05, the frame's on the coulisse, balances R45 + G5 + Φ5."""
+    pos = _closed_form(fp)
+    p = pos(0.0)
+    u5 = cmath.exp(1j * p["phi5"])
+    a5, a4 = _d(pos, "S5", 2), _d(pos, "C", 2)
+    e5, w5 = _d(pos, "phi5", 2).real, _d(pos, "phi5", 1).real
+    f5, f4 = -1j * 7.0 * 9.81 - 7.0 * a5, -1j * 1.2 * 9.81 - 1.2 * a4
+    moment = ((p["S5"] - O3).conjugate() * f5).imag - 0.07 * e5 - 120.0 * math.copysign(1.0, w5)
+    r45 = -moment / abs(p["C"] - O3) * 1j * u5           # the stone on the coulisse, normal to it
+    r34 = -(f4 - r45)                                    # the stone: R34 + G4 + Φ4 + R54 = 0, R54 = −R45
+    r05 = -(r45 + f5)
+    s = {x.name: (x.end - x.start) * MU_F for x in _group(fp, "II(4-5)").sides}
+    for name, truth in (("R34", r34), ("R05", r05)):
+        assert abs(s[name]) == pytest.approx(abs(truth), rel=0.02), name
+        assert abs(cmath.phase(s[name] / truth)) < math.radians(1.0), name
