@@ -3438,3 +3438,92 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1500
 '''
+
+
+SLIDER_COULISSE50 = '''# Stop 50 (frc50's own check): a slider-driven rocking coulisse — an offset crank-slider O-A-B whose
+# slider B carries a pin with a stone 4 sliding in the coulisse O3D; the coulisse rocks about O3 above the
+# guide and carries the resistance moment of its working swing (I(0-1) -> II(2-3) ВВП -> II(4-5) ВПВ:
+# a group of the third kind driven by a slider); the crank counter-clockwise; dynamics to a 1000-rpm motor.
+title = "Шестиланковий механізм з повзуном і коливною кулісою"
+title_en = "Six-bar linkage: a crank-slider rocking a coulisse"
+designation = "ТММ.КМ.50.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O3 = [0.26, 0.30]
+
+[frame.guides]
+g = { through = [0, -0.02], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.07
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+points = { S2 = 0.35 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 3
+
+[[link]]
+name = "4"
+number = 4
+joints = ["B"]
+slides_on = "O3D"
+mass = 0.8
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3"]
+length = 0.42
+points = { S5 = 0.4, D = 1.0 }
+mass = 6
+inertia = 0.06
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 80
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.06
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

@@ -125,6 +125,7 @@ PAST_MM = 5.0      # such a force's arrow reaches this far past the link's end, 
 
 SIDE_MM = 1.8      # a force set aside from a link's line or from another force's line, parallel (the lever)
 LANE_MM = 2.5      # … on a group's drawing: clear of the link's line and of the next lane's 2 mm arrowheads
+NEAR_DEG = 8.0     # two arrows leaving one point this near in direction read as one shaft
 OVER_LANE_MM = 4.5  # … beside another arrow of its point on the same line: the two heads clear apart
 COMPONENT_MM = 10.0   # a reaction's component across its link drawn at most this long (its value in the table)
 
@@ -194,6 +195,15 @@ def _one_arrow(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5)
     return any(abs(p - q) <= tol for p in (a, b) for q in (c, d))
 
 
+def _one_shaft(a: complex, b: complex, c: complex, d: complex, tol: float = 0.5) -> bool:
+    """Whether two arrows a→b and c→d leave one point (or arrive at one) within ``NEAR_DEG`` of each
+    other's direction: their shafts merge into one near it."""
+    if abs(b - a) < 1e-9 or abs(d - c) < 1e-9:
+        return False
+    same_end = abs(a - c) <= tol or abs(b - d) <= tol
+    return same_end and dot(_unit(b - a), _unit(d - c)) > math.cos(math.radians(NEAR_DEG))
+
+
 def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bool:
     """Whether the arrow a→b crosses a drawn link's line (their segments meet, not just touch at an
     end within 0.3 mm)."""
@@ -209,6 +219,11 @@ def _crosses(a: complex, b: complex, links: list[tuple[complex, complex]]) -> bo
         if 0.3 / abs(d) < t < 1 - 0.3 / abs(d) and 0.0 <= v <= 1.0:
             return True
     return False
+
+
+def _apart_mm(p: tuple[complex, complex], q: tuple[complex, complex]) -> float:
+    """The least distance between two segments that do not cross, mm (an end's to the other)."""
+    return min(_to_segment(p[0], *q), _to_segment(p[1], *q), _to_segment(q[0], *p), _to_segment(q[1], *p))
 
 
 def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
@@ -542,6 +557,19 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         at D) is set ``SIDE_MM`` aside, parallel, on the side free of the others (a lane farther
         where that is taken) — unless an arm is drawn to its line (the arm ends on the line)."""
         a, b = _clear_of_links(z, u, length, drawn_links, busy)
+        cos_near = math.cos(math.radians(NEAR_DEG))
+        if abs(a - z) < 0.5 and any(abs(w - z) < 0.5 and abs(t - z) < 0.5 and abs(h - t) > 1e-9
+                                    and dot(_unit(h - t), u) > cos_near for w, t, h in drawn):
+            # an arrow of its point already leaves it a few degrees off this one's line (G4 down
+            # from the stone's C, R34 4° from vertical): the two shafts merge into one — this one
+            # drawn arriving at the point instead, where that side is free (the seeds' pushing arrow)
+            a2, b2 = z - length * u, z
+            free = not _crosses(a2, b2, drawn_links) and not _crosses(a2, b2, [(t, h) for _, t, h in drawn]) \
+                and not any(abs(w - z) < 0.5 and dot(v, -u) > cos_near for w, v in busy) \
+                and not any(_one_arrow(a2, b2, t, h) for _, t, h in drawn) \
+                and _run_along(a2, b2, drawn_links + guide_lines) <= 1.0
+            if free:
+                a, b = a2, b2
         ahead, behind = _along_links(z, u, drawn_links)
         # inside a link's line, or along one from its end (Φ5 at D along the rod CD where P_D
         # leaves D the other way): either hides in the link
@@ -601,7 +629,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             # mate pulls from it (the seeds' pair: P_B arriving at B's level beside Φ3 leaving it)
             back = length * u if mid is not None and dot(mid - z, u) < 0 else 0.0
             cands = [(z + off * n - back, z + off * n + length * u - back, off) for off in offs]
-            free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)]
+            # (nor from the tail of an arrow set there a few degrees off: the stone's R42 set aside
+            # above the slider's block, 5° off its guide, and Φ3 in the same lane left one tail)
+            free = [c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) or _one_shaft(c[0], c[1], t, h)
+                                                for _, t, h in drawn)]
             if not block:
                 # a lane whose arrow neither crosses another link nor runs by another arrow from
                 # the point first (review 12 #17: Φ1 beside the crank crossed the rod AB at A, the
@@ -639,11 +670,36 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         far = a_ if abs(a_ - z) > abs(b_ - z) else b_
         d = _unit(far - z)
         length = min(length, 0.6 * abs(far - z))
-        t0, t1 = (z, z + length * u) if dot(u, d) > 0 else (z - length * u, z)
         n = 1j * d
-        cands = [(t0 + k * n, t1 + k * n) for k in (LANE_MM, -LANE_MM, 2 * LANE_MM, -2 * LANE_MM)]
-        ca, cb = next((c for c in cands if not any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for _, t, h in drawn)
-                       and not _crosses(c[0], c[1], drawn_links)), cands[0])
+        arrows = [(t, h) for _, t, h in drawn]
+        cands = []
+        # its own length first, then shorter (not to scale here: the value is in the table), down
+        # to the shortest arrow a group draws — one that crosses no arrow drawn before it: LINK50's
+        # R^n03, 27 mm up the rocker O2B from O2, ran through Φ3's head at S3 and its name went out
+        # on a 49 mm leader
+        for lanes_ in ((LANE_MM, -LANE_MM), (2 * LANE_MM, -2 * LANE_MM)):     # the near lanes first
+            for k_len in (1.0, 0.75, 0.5):
+                ln = max(min(length, 8.0), k_len * length)
+                t0, t1 = (z, z + ln * u) if dot(u, d) > 0 else (z - ln * u, z)
+                cands += [(t0 + k * n, t1 + k * n) for k in lanes_]
+        # … and passes by no other loaded point (S3 with its G3, Φ3 and M^Φ3's arc and names)
+        loaded = {w for w, _, _ in drawn if abs(w - z) > 0.5}
+
+        def clear(c, strict: int) -> bool:
+            if any(_one_arrow(c[0], c[1], t, h, LANE_MM / 2) for t, h in arrows) or _crosses(c[0], c[1], drawn_links):
+                return False
+            return strict < 1 or (not _crosses(c[0], c[1], arrows)
+                                  and (strict < 2 or (all(_to_segment(w, c[0], c[1]) > 2 * LANE_MM for w in loaded)
+                                                      and all(_apart_mm(c, (t, h)) >= LANE_MM for t, h in arrows
+                                                              if abs(t - z) > 0.5 and abs(h - z) > 0.5))))
+        # where none inside the link's span is clear, from the joint outward along the link's line
+        # (the textbook's picture: R^n and R^τ at the joint, R their diagonal) — LINK50's R^n03 at O2
+        out = []
+        for k_len in (1.0, 0.75, 0.5):
+            ln = max(min(length, 8.0), k_len * length)
+            out.append((z, z + ln * u) if dot(u, d) < 0 else (z - ln * u, z))
+        ca, cb = next((c for strict in (2, 1) for c in cands + out if clear(c, strict)),
+                      next((c for c in cands if clear(c, 0)), cands[0]))
         drawn.append((z, ca, cb))
         return ca, cb
 
@@ -785,13 +841,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 continue
             arms.append((about, t, f))
     shifts: list[complex] = []
+    # the longer arms first: a short arm along a longer one's line (LINK50's h_R43 from B within
+    # h_G2, R43 and G2 both near vertical) is set aside from it, so that each has its own line and
+    # name — its name went out 30 mm along h_G2's line
+    arms.sort(key=lambda x: -abs(x[1].foot - x[0]))
+    arm_lines: list[tuple[complex, complex]] = []
     for about, t, f in arms:
         a, b = span[f.name]
         off = lanes.get(f.name, 0j)
         # an arm lying on a drawn arrow or link (h_G2 from B along R03) drawn aside (``arm_aside``)
-        shift = arm_aside(about, t.foot, _unit(f.force), [(p, q) for _, p, q in drawn] + drawn_links,
+        # … or on an arm drawn (not one the ruler cannot set apart from it: those are one line, one name)
+        mates = [(p, q) for p, q in arm_lines if abs(p - about) > 1e-6 or abs(q - t.foot) > ONE_ARM_MM]
+        shift = arm_aside(about, t.foot, _unit(f.force), [(p, q) for _, p, q in drawn] + drawn_links + mates,
                           toward=0.5 * (a + b) - off, outlines=blocks)
         shifts.append(shift)
+        arm_lines.append((about + shift, t.foot + shift))
         s0, foot = about + shift, t.foot + shift
         rec.segment(_pt(s0), _pt(foot), role="construction", layer="construction", step=step,
                     text=f"{arm_symbol(t.name)} = {abs(t.arm_mm):g} mm to {t.name}")
@@ -832,6 +896,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
+    first_arm = len(lab.asked)
     for mid, text, side in arm_names(arms, shifts):
         lab.place(mid, text, LETTER, side, step)
     for mark in slide_arms:
@@ -841,6 +906,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # a couple's name before the forces' (it has only its arc's spot; a force's letter may stand
     # anywhere along its shaft): set after Φ4's and G4's, M^Φ4 hung on a 25 mm leader across the rod
     labels.sort(key=lambda lb: lb[1] in span)
+    first_force = len(lab.asked)
     for tip, name, u in labels:
         if name in span:       # a force's letter: read as its own arrow's, not a neighbour's
             a, b = span[name]
@@ -853,7 +919,25 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     # … nor nearer an arc's arrowhead (M_зр, ω1, M^Φ) than its own arrow: "G1" by M_зр's head on the
     # press's scheme read as the moment's
     heads = [(complex(*q.points[0]), complex(*q.points[1])) for q in rec.items if q.kind == "vector" and q.role == "head"]
+    n0 = len(rec.items)
     _apart(rec, lab.asked, owned, list(span.values()) + heads, across=False)
+    joints = [complex(*q.points[0]) for q in rec.items[:n0] if q.kind == "point"]
+    if _leaders_badly(rec.items[n0:], joints) > 0.0 and first_force > first_arm:
+        # a name on a long leader: the forces' names set before the arms' instead (the arms' in
+        # turn, or the other way round), kept where their leaders are shorter and pass no joint
+        # (LINK50's II(2-3): the 2 mm arm h_Φ3's name took the spot beside Φ3's short arrow, and
+        # "Φ3" went out 30 mm across the rocker)
+        best, score = rec.items[n0:], _leaders_badly(rec.items[n0:], joints)
+        arms_ = list(range(first_arm, first_force))
+        for tail in (arms_, arms_[::-1]):
+            del rec.items[n0:]
+            order = list(range(first_arm)) + list(range(first_force, len(lab.asked))) + tail
+            again = {order.index(i): v for i, v in owned.items()}
+            _apart(rec, [lab.asked[i] for i in order], again, list(span.values()) + heads, across=False)
+            if _leaders_badly(rec.items[n0:], joints) < score - 1e-9:
+                best, score = rec.items[n0:], _leaders_badly(rec.items[n0:], joints)
+        del rec.items[n0:]
+        rec.items.extend(best)
     lost = lost_components(fp, gp, lang, bound=False) if GROUP_NOTE else ""
     if lost:
         # a component the ruler reads as 0 mm is neither drawn here nor on the plan: named on the
@@ -900,7 +984,25 @@ def arm_names(arms: list, shifts: list[complex]) -> list[tuple[complex, str, com
         else:
             mid, text, side, key = out[same]
             out[same] = (mid, text[:-1] + "," + arm_symbol(t.name)[3:], side, key)
-    return [(mid, text, side) for mid, text, side, _ in out]
+    # a name by the middle of its arm where no other arm ends there; else farther along it, where
+    # the feet of the others are farthest (own mechanism 50: "h_Φ4" by the middle of its 70 mm arm
+    # from O3 stood at h_Φ5's foot, the two arms 2° apart — read as h_Φ5's name)
+    feet = [key[1] for _, _, _, key in out]
+    placed = []
+    for mid, text, side, (s0, foot) in out:
+        # (a foot on this arm's own line is a collinear arm's, h_G5 within h_G4: the two lettered as before)
+        others = [f for f in feet if abs(f - foot) > 1e-9 and _to_segment(f, s0, foot) > 1.0]
+
+        def room(t: float, s0=s0, foot=foot, others=others) -> float:
+            return min((abs(s0 + t * (foot - s0) - f) for f in others), default=math.inf)
+        if room(0.5) < ARM_FOOT_MM:
+            t = max((0.5, 0.4, 0.6, 0.3, 0.7), key=lambda t: (min(room(t), ARM_FOOT_MM), -abs(t - 0.5)))
+            mid = s0 + t * (foot - s0)
+        placed.append((mid, text, side))
+    return placed
+
+
+ARM_FOOT_MM = 8.0    # an arm's name kept this far from the foot of another arm (its right-angle mark)
 
 
 ARM_ASIDE_MM = (4.0, -4.0, 7.0, -7.0, 10.0, -10.0)   # an arm on an arrow's line drawn this far aside
@@ -1298,6 +1400,9 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     return False
 
 
+DETAIL_MID_MM = 8.0     # a detail's side shorter than this is named at its middle
+
+
 def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
                     step: str) -> Record:
     """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
@@ -1320,15 +1425,27 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         if abs(B - A) < 1.0:
             continue
         if t[1] >= 1.0 - 1e-9:          # its head within the window: the arrow
-            det.vector(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+            det.vector(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep, text=s.name)
         else:                           # a long side's part: its line, its head out of the window
-            det.segment(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep)
+            det.segment(_pt(A), _pt(B), role=role[s.role], layer="vectors", step=dstep, text=s.name)
         drawn.append(Side(s.name, A, B, s.role))
     if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
         det.point(_pt(-c * k), layer="vectors", step=dstep)
     lettered = [s for s in drawn if s.mm >= TINY_MM and s.name not in same]
-    _apart(det, [LabelRequest(at, _plan_letter(s, same, lang), side, LETTER, step=dstep)
-                 for at, s, side in _plan_anchors(lettered)])
+    # each name nearer its own side than any other (labels.place_owned_line), tried along the side
+    # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
+    # leader across G5
+    anchors = _plan_anchors(lettered)
+    owned = {}
+    for i, (at, s, side) in enumerate(anchors):
+        n = 1j * _unit(s.end - s.start)
+        owned[i] = ((s.start, s.end), [LabelRequest(s.start + t * (s.end - s.start), _plan_letter(s, same, lang),
+                                                    hand, LETTER, step=dstep)
+                                       for t in (0.5, 0.3, 0.7) for hand in (n, -n)])
+    # (a short side's leader, where it needs one, to its middle: not to an end another side shares)
+    _apart(det, [LabelRequest(at if s.mm > DETAIL_MID_MM else 0.5 * (s.start + s.end), _plan_letter(s, same, lang),
+                              side, LETTER, step=dstep) for at, s, side in anchors],
+           owned, [(q.start, q.end) for q in drawn])
     b = det.bounds()
     det.label((b[0], b[3] + 4.0), f"{DETAIL_NAME} (μ_F = {num(mu, lang)} {unit('N/mm', lang)})",
               size=2.5, step=dstep)
@@ -1425,6 +1542,29 @@ def _apart(rec: Record, asked: list[LabelRequest],
 
 
 LONG_LEADER_MM = 12.0   # a label's leader longer than this is set again without the fences
+
+
+def _long_leaders(items: list, long: float = LONG_LEADER_MM) -> float:
+    """How far the labels' leaders among ``items`` run past ``long`` mm, summed (0: none is long)."""
+    return sum(max(0.0, abs(complex(*p.points[1]) - complex(*p.points[0])) - long) for p in items
+               if p.kind == "segment" and p.role == "label")
+
+
+THROUGH_JOINT_MM = 25.0   # a leader through a joint counts as this much leader too long (it reads as the joint's)
+
+
+def _leaders_badly(items: list, joints: list[complex]) -> float:
+    """How badly the labels among ``items`` are led: their leaders' length past ``LONG_LEADER_MM``
+    (``_long_leaders``) and ``THROUGH_JOINT_MM`` for each that passes within 0.9 mm of a joint
+    between its ends."""
+    bad = _long_leaders(items)
+    for p in items:
+        if p.kind == "segment" and p.role == "label":
+            a, b = complex(*p.points[0]), complex(*p.points[1])
+            if abs(b - a) > 1e-9 and any(0.05 < dot(z - a, b - a) / abs(b - a) ** 2 < 0.95
+                                         and _to_segment(z, a, b) < 0.9 for z in joints):
+                bad += THROUGH_JOINT_MM
+    return bad
 
 
 def _leader_mm(items: list) -> float:
