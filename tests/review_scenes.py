@@ -3255,3 +3255,94 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+LINK50 = '''# Stop 50 (the lead's check): a crank-rocker four-bar O1ABO2 whose rocker carries a pin C; a stone 4 on C
+# slides in the coulisse O3D, which rocks about O3 and carries the resistance moment of the working
+# stroke — I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПВ: a group of the third kind driven by a rocker, not by the
+# crank. The crank turns counter-clockwise at 75 rpm; dynamics to a 1500-rpm motor.
+title = "Шестиланковий механізм з коливною кулісою"
+title_en = "Six-bar linkage with a rocking coulisse"
+designation = "ТММ.КМ.50.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.03]
+O3 = [0.52, 0.26]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 75
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+points = { S2 = 0.5 }
+mass = 5
+inertia = 0.04
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+shape = { C = [0.24, 0.0] }
+points = { S3 = 0.5 }
+mass = 6
+inertia = 0.05
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "O3D"
+mass = 1.2
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3"]
+length = 0.46
+points = { S5 = 0.5, D = 1.0 }
+mass = 7
+inertia = 0.07
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 120
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
