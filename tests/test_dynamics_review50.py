@@ -275,3 +275,90 @@ def test_link49s_a2_energy_mass_axis_letters_a_round_step():
     for it in texts:
         x0, _, x1, _ = it.ink()
         assert (x0 + x1) / 2 == pytest.approx(float(it.text.replace(",", ".")) / f.mu_I, abs=1.0)
+
+
+# -- DRAGLINK50: the helper's own mechanism --------------------------------------------------------------
+# A drag-link (double-crank) four-bar O1ABO2 — O1O2 = 0.05 m the shortest, so both cranks turn full
+# circles — whose second crank O2B carries C 0.10 m past O2; the rod CD (0.36 m) drives the ram D on a
+# horizontal guide through O2: O2-C-D a centric crank-slider, the ram's stroke 2·O2C = 0.20 m whatever
+# the four-bar does, so A_c = 1200 N · 0.20 m = 240 J over a cycle (the ram's weight does no work on a
+# level guide, the links' weights none over a cycle).
+
+DO1, DO2 = np.array([0.0, 0.0]), np.array([0.05, 0.0])
+DA, DB, DC, DR, OC = 0.12, 0.14, 0.13, 0.36, 0.10
+D_MASSES = {"S1": 4.0, "S2": 3.0, "S3": 5.0, "S4": 6.0, "D": 25.0}
+D_INERTIAS = {"t1": 0.006, "t2": 0.006, "t3": 0.012, "t4": 0.07}
+
+
+def drag_pose(phi: float) -> dict:
+    a = DO1 + DA * np.array([math.cos(phi), math.sin(phi)])
+    b = _circles(a, DB, DO2, DC)
+    u = (b - DO2) / DC
+    c = DO2 - OC * u                              # C on the line BO2 past O2
+    d = np.array([c[0] + math.sqrt(DR ** 2 - c[1] ** 2), 0.0])     # the ram right of C on y = 0
+    return {"S1": a / 2, "S2": (a + b) / 2, "S3": DO2 + 0.013 * u, "S4": (c + d) / 2, "D": d,
+            "t1": phi, "t2": math.atan2(*(b - a)[::-1]), "t3": math.atan2(u[1], u[0]),
+            "t4": math.atan2(*(d - c)[::-1])}
+
+
+def drag_rates(phi: float, h: float = 1e-6) -> dict:
+    p, q = drag_pose(phi + h), drag_pose(phi - h)
+    out = {}
+    for k in p:
+        d = np.asarray(p[k]) - np.asarray(q[k])
+        if k.startswith("t"):
+            d = (d + math.pi) % (2 * math.pi) - math.pi
+        out[k] = d / (2 * h)
+    return out
+
+
+@pytest.fixture(scope="module")
+def drag():
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import redrawn
+    from graphplan.report.dynamics import dynamics_json
+    from review_scenes import DRAGLINK50
+    dyn = analyse(scene_study(DRAGLINK50), None)
+    f = redrawn(dyn, None, 0.5, L=330.0, size=1.15)
+    return dyn, f, dynamics_json(f)
+
+
+def test_the_drag_links_work_of_resistance_is_the_force_over_twice_o2c(drag):
+    """A_c = 1200·2·O2C = 240 J, M*_d = A_c/2π; position 0 the ram's extreme that starts its slow
+    stroke; M*_c and I*_m at every position the closed forms (the force 1200·|v_D|/ω1 against the ram
+    on the working stroke, gravity Σ m·g·dy_S/dφ, the masses' kinetic energy over ω1²/2)."""
+    _, _, doc = drag
+    assert doc["work_resistance"] == pytest.approx(1200.0 * 2 * OC, rel=1e-6)
+    assert doc["moment_driving"] == pytest.approx(240.0 / (2 * math.pi), rel=1e-6)
+    grid = np.radians(np.arange(0.0, 360.0, 0.1))
+    xd = np.array([drag_pose(p)["D"][0] for p in grid])
+    ends = sorted(float(np.degrees(grid[k])) for k in (int(np.argmin(xd)), int(np.argmax(xd))))
+    phi0 = doc["start_phi_deg"]
+    assert min(abs(phi0 - e) for e in ends) < 0.1
+    other = next(e for e in ends if abs(phi0 - e) >= 0.1)
+    slow = (other - phi0) % 360.0
+    assert slow > 180.0                             # the working stroke the slow one, ccw from position 0
+    for p in doc["positions"]:
+        u = p["turn_deg"]
+        d = drag_rates(math.radians(phi0 + u))
+        force = 1200.0 * abs(d["D"][0]) if u < slow else 0.0
+        gravity = G * sum(m * d[k][1] for k, m in D_MASSES.items())
+        inertia = (sum(m * float(d[k] @ d[k]) for k, m in D_MASSES.items())
+                   + sum(i * d[k] ** 2 for k, i in D_INERTIAS.items()))
+        assert p["moment_resistance"] == pytest.approx(force + gravity, abs=2e-3)
+        assert p["inertia"] == pytest.approx(inertia, rel=1e-5)
+
+
+def test_the_drag_links_kl_reads_the_exact_flywheel_and_its_motor_is_sized_snugly(drag):
+    """|kl| within the ruler's 0.5 mm of J·ω_m²·δ/μ_T; the motor the smallest of the 1000-rpm line
+    over P = M*_c max·ω1/η (0,75 kW for 0,713 kW: not the line's smallest, no catalogue remark)."""
+    from graphplan.model.motors import catalogue
+    from graphplan.report.dynamics import motor_note
+    dyn, f, doc = drag
+    J = dyn.flywheel + dyn.constant
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_A) <= f.precision
+    need = doc["motor"]["power_needed_kW"]
+    line = sorted((c.power_kW, c.name) for c in catalogue() if c.rpm_sync == 1000 and c.power_kW >= need)
+    assert doc["motor"]["name"] == line[0][1]
+    for lang in ("uk", "en"):
+        assert "каталоз" not in motor_note(doc, lang) and "catalogue" not in motor_note(doc, lang)
