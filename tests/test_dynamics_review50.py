@@ -362,3 +362,22 @@ def test_the_drag_links_kl_reads_the_exact_flywheel_and_its_motor_is_sized_snugl
     assert doc["motor"]["name"] == line[0][1]
     for lang in ("uk", "en"):
         assert "каталоз" not in motor_note(doc, lang) and "catalogue" not in motor_note(doc, lang)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_notes_name_the_abscissa_their_mu_phi_divides(six, lang):
+    """"μ_φ = 2π/L" left L unnamed on the sheet (ΔT(φ)'s own μ_φ prints its 258,6): the notes now
+    print L, the drawn M*_c(φ)'s span over the turn, and 2π over it gives the printed μ_φ."""
+    from graphplan.drawing.flywheel import moments_record
+    from graphplan.sheets.compose import lines_of
+    from graphplan.sheets.dynamics import notes
+    from graphplan.util.markup import plain
+    _, f, doc = six
+    text = " ".join(plain(t) for t in lines_of(notes(f, doc, lang))).replace("\u00a0", " ")
+    got = re.search(r"L = (\d+(?:[.,]\d+)?) (?:мм|mm), μ_φ = 2π/L = (\d+[.,]\d+)", text)
+    assert got, text
+    L, mu = (float(g.replace(",", ".")) for g in got.groups())
+    curve = next(it for it in moments_record(f, lang).items if it.kind == "polyline" and it.step == "M*_c(φ)")
+    xs = [x for x, _ in curve.points]
+    assert max(xs) - min(xs) == pytest.approx(L, abs=0.05)
+    assert 2 * math.pi / L == pytest.approx(mu, rel=5e-4)
