@@ -3527,3 +3527,97 @@ delta = 0.06
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+DRAGLINK50 = '''# Stop 50 (helper dyn50's own check): a drag-link quick-return drive of a slotting head — a double-crank
+# four-bar O1ABO2 (the frame O1O2 the shortest link: both cranks turn full circles, the second one
+# unevenly), the crank O2B extended past O2 to C, and the rod CD drives the ram D on a horizontal guide
+# through O2: I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП. The cutting force on the ram's slow stroke; the
+# crank counter-clockwise at 60 rpm; dynamics to a 1000-rpm motor.
+title = "Механізм довбального верстата з подвійним кривошипом"
+title_en = "Drag-link quick-return drive of a slotting machine"
+designation = "ТММ.ДК.50.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.05, 0.0]
+
+[frame.guides]
+ram = { through = [0.05, 0.0], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.12
+rpm = 60
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 4
+inertia = 0.006
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.14
+points = { S2 = 0.5 }
+mass = 3
+inertia = 0.006
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.13
+shape = { C = [-0.10, 0.0] }
+points = { S3 = 0.1 }
+mass = 5
+inertia = 0.012
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.36
+points = { S4 = 0.5 }
+mass = 6
+inertia = 0.07
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "ram"
+mass = 25
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

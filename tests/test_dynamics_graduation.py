@@ -63,7 +63,10 @@ def _check(values, along, mu, origin=0.0, least=2):
         assert abs(v / step - round(v / step)) < 1e-6, (v, step)
     shown = sorted(v for v, _ in values)           # lettered as a draftsman letters major ticks: a run
     gaps = {round(b - a, 9) for a, b in zip(shown, shown[1:])}     # of one step, no value skipped
-    assert len(gaps) == 1 and any(abs(min(gaps) / step - m) < 1e-6 for m in (1, 2, 5, 10)), shown
+    assert len(gaps) == 1 and any(abs(min(gaps) / step - m) < 1e-6 for m in (1, 2, 4, 5, 10)), shown
+    gap = min(gaps)                                # past every 2nd tick the lettered step is round itself
+    ge = 10 ** math.floor(math.log10(gap) + 1e-12)   # (0,1 0,2 over ticks every 0,025, not 0,125 0,25)
+    assert gap / step <= 2 + 1e-6 or any(abs(gap / ge - m) < 1e-6 for m in ROUND), shown
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
@@ -105,3 +108,23 @@ def test_the_moment_and_work_axes_carry_their_units(flywheel):
         texts = [p.text for p in moments_record(flywheel, lang).items if p.kind == "text"
                  and p.step in ("axes M", "axes A")]
         assert any(t.endswith(", " + nm) for t in texts) and any(t.endswith(", " + j) for t in texts), texts
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_speed_extremes_stay_out_of_the_tick_column(flywheel, lang):
+    """Stop 49: the slotter's ω_max (at φ ≈ 5°, the steep motor curve on its right) was lettered left
+    of the ω axis among the ticks' values, where it reads as one of them. Each extreme's label now
+    stands right of the axis — its ink, and its leader's — and the plot still fits the zone it was
+    fitted to (the label not pushed out past the values)."""
+    from graphplan.drawing.flywheel import speed_fitted
+    for w, h in ((312.0, 240.0), (320.0, 250.0), (200.0, 120.0)):
+        rec = speed_fitted(flywheel, lang, w, h)
+        x0, y0, x1, y1 = rec.bounds()
+        assert x1 - x0 <= w + 1e-6 and y1 - y0 <= h + 1e-6
+        labels = [p for p in rec.items if p.kind == "text" and p.step.startswith(("ω_max", "ω_min"))]
+        assert len(labels) == 4
+        for p in labels:
+            assert p.ink()[0] > 0.0, (w, h, p.text, p.ink())
+        for p in rec.items:
+            if p.kind == "segment" and p.role == "label" and p.step.startswith(("ω_max", "ω_min")):
+                assert min(x for x, _ in p.points) >= -1e-9, p.points

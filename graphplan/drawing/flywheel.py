@@ -510,6 +510,18 @@ def _free_boxes(rec: Record, breaking: bool = False):
     return free
 
 
+def lettered_steps(unit: float) -> tuple[int, ...]:
+    """Every how many ticks of step ``unit`` an axis may be lettered: each tick, every 2nd, or every
+    4th, 5th or 10th where that lettered step is itself round — 1, 2, 2,5 or 5 × 10^k (a draftsman
+    letters 0,1 and 0,2 over ticks every 0,025, never 0,125 and 0,25: stop 49's A2 energy–mass axis)."""
+    def round_(v: float) -> bool:
+        if v <= 0.0:
+            return False
+        m = v / 10 ** math.floor(math.log10(v) + 1e-9)
+        return any(abs(m - r) < 1e-6 for r in (1.0, 2.0, 2.5, 5.0, 10.0))
+    return tuple(e for e in (1, 2, 4, 5, 10) if e <= 2 or round_(unit * e))
+
+
 def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
                   sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True
                   ) -> list[float]:
@@ -518,8 +530,8 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     numbers) and the values lettered beside their ticks on one side of the axis (``sides``: −1 left
     of a vertical axis, under a horizontal one; the first preferred) where they keep clear of the
     lines and lettering already drawn (the pole's rays left of the M axis, the projections): every
-    value, else every 2nd, 5th or 10th tick's (a draftsman letters the major ticks) — the finest
-    such run of at least two values that all keep clear on one side; where none does, on one side
+    value, else every 2nd, 4th, 5th or 10th tick's (a draftsman letters the major ticks, at a round
+    step: ``lettered_steps``) — the finest such run of at least two values that all keep clear on one side; where none does, on one side
     among the thin lines, broken under them (``_breaking_run``). ``letter`` False: the ticks alone
     (an axis whose values read across from a diagram beside it). Returns the values lettered."""
     if not values:
@@ -544,7 +556,7 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     side = sides[0]
     if letter:
         unit = graduation_step(values) or abs(values[0])
-        for every in (1, 2, 5, 10):
+        for every in lettered_steps(unit):
             run = [v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6]
             ok = [sd for sd in sides if len(run) >= 2 and all(free(number(v, sd).ink()) for v in run)]
             if ok:
@@ -565,13 +577,13 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
 
 def whole_run(values: list[float], shown: list[float]) -> bool:
     """Whether the lettered ``shown`` of an axis's ``values`` (``graduate_axis``) are a whole run —
-    every value, or every 2nd, 5th or 10th tick's along the whole axis (a draftsman letters the major
+    every value, or every 2nd, 4th, 5th or 10th tick's along the whole axis (a draftsman letters the major
     ticks) — and not a stretch with a tick left bare among or before the lettered ones (0,04 and 0,06
     beside 0,02's bare tick reads as a value forgotten)."""
     unit = graduation_step(values) or (abs(values[0]) if values else 0.0)
     if not shown or unit <= 0.0:
         return False
-    runs = ([v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6] for every in (1, 2, 5, 10))
+    runs = ([v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6] for every in lettered_steps(unit))
     return any(len(run) >= 2 and run == list(shown) for run in runs)
 
 
@@ -582,16 +594,16 @@ def _breaking_run(rec: Record, values: list[float], sides: tuple[float, ...], nu
     """An axis's values where no two keep clear of its lines on either side (the projections and
     rays crowd it): as a draftsman letters them among his construction lines — on one side (the
     one where most are clear of all but the thin lines, the preferred first), every value, else
-    every 2nd, 5th or 10th, clear of the drawing's other lines and lettering, the thin lines
+    every 2nd, 4th, 5th or 10th, clear of the drawing's other lines and lettering, the thin lines
     (``labels.breakable``) broken under each (``labels.break_under``): of the runs of every value,
-    every 2nd, 5th or 10th, the longest stretch of consecutive values that keep clear (one step,
+    every 2nd, 4th, 5th or 10th, the longest stretch of consecutive values that keep clear (one step,
     none skipped: not 0,1 beside 0,125 and 0,225). The values lettered and their side."""
     from graphplan.drawing.labels import break_under, breakable
     free = _free_boxes(rec, breaking=True)
     side = max(sides, key=lambda sd: (sum(free(number(v, sd).ink()) for v in values), -sides.index(sd)))
     unit = graduation_step(values) or abs(values[0])
     shown: list[float] = []
-    for every in (1, 2, 5, 10):           # the longest unbroken stretch of a run, the finest first
+    for every in lettered_steps(unit):           # the longest unbroken stretch of a run, the finest first
         block: list[float] = []
         for v in (v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6):
             block = block + [v] if free(number(v, side).ink()) else []
@@ -821,7 +833,32 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
             rec.point(at, role="joint", layer=LAYER, step=step)
             asked.append(LabelRequest(complex(*at), f"ω_{{{name}{tail}}} = {fixed(float(m.omega[j]), lang, places)} "
                                                     f"{w['rad']}/{w['s']}", toward, NUM, step=step))
-    place_labels(rec, asked, layer=LAYER)
+    return _extremes_lettered(rec, asked, top + 8.0)
+
+
+def tick_column(rec: Record, top: float) -> tuple[float, float, float, float]:
+    """The ordinate axis's column of ω values: from the left of their ink to the axis, from the φ
+    axis up to the axis's arrow (``top``) — the scale's, where no other lettering belongs."""
+    left = min((p.ink()[0] for p in rec.items if p.kind == "text" and p.step == "ω ticks"), default=-3.0)
+    return left - 0.5, 0.0, 0.0, top
+
+
+def _extremes_lettered(rec: Record, asked: list[LabelRequest], top: float) -> Record:
+    """The extremes' labels placed clear of the curves and out of the ordinate axis's column of
+    values (``tick_column``) and the paper left of it (a label there reads as the scale's, or leaves
+    the zone the plot was fitted to): placed on a copy that holds that strip as a closed figure, whose
+    inside ``place_labels`` keeps free — an extreme by the axis (the slotter's ω_max at φ ≈ 5°, the
+    steep motor curve on its right) took the free spot among the ticks' values, read as one of them —
+    and the labels and leaders it adds moved over (the column itself not drawn)."""
+    x0, y0, x1, y1 = tick_column(rec, top)
+    x0 -= max((Primitive("text", ((0.0, 0.0),), text=q.text, size=q.size).ink()[2] for q in asked), default=0.0)
+    probe = Record(rec.title)
+    probe.items = list(rec.items)
+    probe.add("polygon", [(x0, y0), (x1, y0), (x1, y1), (x0, y1)], role="construction", layer=LAYER,
+              step="ω ticks column")
+    start = len(probe.items)
+    place_labels(probe, asked, layer=LAYER)
+    rec.items.extend(probe.items[start:])
     return rec
 
 

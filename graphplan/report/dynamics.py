@@ -16,7 +16,7 @@ from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.chords import read
 from graphplan.graphic.flywheel import over, ruler_bound
-from graphplan.model.motors import latin
+from graphplan.model.motors import catalogue, latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
 
 
@@ -97,6 +97,7 @@ def dynamics_json(f) -> dict[str, Any]:
                   "omega_sync": m.omega_sync, "omega_rated": m.omega_rated, "moment_rated": m.moment_rated,
                   "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
                   "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
+                  "smallest": dr.chosen and smallest_of_line(m),
                   "underpowered": dyn.underpowered,
                   "ratio": dr.ratio, "ratio_given": st.mech.drive.ratio is not None, "efficiency": dr.efficiency, "rotor_reduced": dr.rotor_reduced,
                   "flywheel": dyn.motor_flywheel,
@@ -582,6 +583,29 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
                                                                     ", the course's model"))
 
 
+def smallest_of_line(m) -> bool:
+    """Whether the motor is the catalogue's smallest of its synchronous speed (model/motors.toml)."""
+    line = [c.power_kW for c in catalogue() if c.rpm_sync == m.rpm_sync]
+    return bool(line) and m.power_kW <= min(line) + 1e-12
+
+
+OVERSIZED = 2.0      # P_n over the rule's P past which the note says the line has no smaller motor
+
+
+def catalogue_floor(doc: dict[str, Any], lang: str) -> str:
+    """", the smallest … of the catalogue" after the rule's power where the rule's motor is the
+    smallest of its line and still over ``OVERSIZED`` times the power asked (LINK50: 0,55 kW for
+    0,094 kW — a teacher asks why so large a motor); else nothing."""
+    m = doc["motor"]
+    if not m.get("smallest") or m["power_kW"] < OVERSIZED * m["power_needed_kW"]:
+        return ""
+    name = m["name"] if lang == "uk" else latin(m["name"])
+    rpm = f"{m['rpm_sync']:g}"
+    if lang == "uk":
+        return f"; {name} ({num(m['power_kW'], lang)} кВт) — найменший у каталозі на {rpm} об/хв"
+    return f"; {name} ({num(m['power_kW'], lang)} kW) is the catalogue's smallest at {rpm} rpm"
+
+
 def motor_note(doc: dict[str, Any], lang: str) -> str | None:
     """One sentence on why a flywheel where the motor is sized by the peak (review 13 #18: "why a
     2,65 kg·m² flywheel when the 5,5 kW motor carries the peak anyway?"). Seed 003's power rule,
@@ -601,7 +625,7 @@ def motor_note(doc: dict[str, Any], lang: str) -> str | None:
     md, mc = ("M^*_д", "M^*_{с max}") if uk else ("M^*_d", "M^*_{c max}")
     rule = f"P = {mc}·ω_1/η = {peak} {kw}"
     # ω_m first: set as plain text "ωm/η" reads as the unit m/ (tests/test_words.py)
-    avg = f"({'середня' if uk else 'the mean'} ω_m·{md}/η = {mean} {kw})"
+    avg = f"({'середня' if uk else 'the mean'} ω_m·{md}/η = {mean} {kw}){catalogue_floor(doc, lang)}"
     d = num(doc["delta"], lang)
     # a statement, not a question (stop 49: «Чому маховик, коли …» read as a heading on the sheet)
     if fw["motor"] > 0:

@@ -240,7 +240,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     J, Nm, kgm2 = ("Дж", "Н·м", "кг·м²") if uk else ("J", "N·m", "kg·m²")
     lines = [w["given"].format(d=num(doc["delta"], lang), w=fmt(doc["omega_mean"], lang),
                                n=num(doc["omega_mean"] * 30.0 / math.pi, lang), motor=motor_speed_note(doc, lang)),
-             f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, μ_φ = 2π/L = "
+             # L named with its length: "2π/L" alone left a teacher asking which L (stop 50)
+             f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, L = {num(doc['L_mm'], lang)} {mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
              f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
