@@ -3255,3 +3255,28 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+CAM50 = '''# Stop 50 (the lead's check): a translating roller follower with a given offset, the cam counter-clockwise,
+# a linear (constant-velocity) rise of 90° — hard shocks at its ends — a far dwell of 30°, a cycloidal
+# return of 110°, 8 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 50)"
+title_en = "Cam with a translating roller follower (check 50)"
+designation = "ТММ.КМ.50.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = 0.008
+roller_radius = 0.010
+phases_deg = { rise = 90, dwell_far = 30, return = 110, dwell_near = 130 }
+laws = { rise = "linear", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 120
+direction = "ccw"
+'''

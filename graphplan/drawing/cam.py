@@ -14,7 +14,7 @@ import numpy as np
 
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, jump_points, motion, profile
-from graphplan.graphic.cam import CamConstruction, division_numbers, working_angle
+from graphplan.graphic.cam import CamConstruction, division_numbers, phase_curve, working_angle
 from graphplan.graphic.record import Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
@@ -505,10 +505,9 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     C, K = C / mu, K / mu
     sig = cam.sense
     # the exact curve of K over the active phases, thin
-    fine = np.concatenate([np.linspace(0.0, cam.phases[0], 241),
-                           cam.phases[0] + cam.phases[1] + np.linspace(0.0, cam.phases[2], 241)])
-    s, v, a = motion(cam, fine)
-    Cf, C1f, _, _ = centre_path(cam, sol.geometry, s, v, a)
+    fine, fine_phase = phase_curve(cam)
+    s, v, a = motion(cam, fine, fine_phase)
+    Cf, C1f, _, uf = centre_path(cam, sol.geometry, s, v, a)
     Kf = (Cf + 1j * sig * C1f) / mu
     half = len(fine) // 2
     for part in (Kf[:half], Kf[half:]):
@@ -536,6 +535,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                         step=f"ds/dφ {k}")
         rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
     O = 0j
+    K_all, u_all = np.concatenate([K, Kf]), np.concatenate([u, uf])
+    phase_all = np.concatenate([np.asarray(g.phase), fine_phase])
     ends: list[complex] = []
     bounds: list[tuple[complex, complex, complex]] = []
     for ph in (0, 1):
@@ -543,19 +544,21 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         # phase's drawn points, the one O is nearest (allowed_line: the textbook's tangent at [ϑ], not the
         # line through the point seen at the largest angle, which cut the curve where that phase does not
         # bind), drawn from its point to a little past O's foot on it
-        k, turn, d = allowed_line(K, u, np.flatnonzero(g.phase == ph), math.radians(cam.allowed[ph]), O)
-        foot = max(float(((O - K[k]) * d.conjugate()).real), 0.0)
+        # — of the drawn points and the curve drawn through them: the line touches the curve, never
+        # cuts it between two divisions (stop 50)
+        k, turn, d = allowed_line(K_all, u_all, np.flatnonzero(phase_all == ph), math.radians(cam.allowed[ph]), O)
+        foot = max(float(((O - K_all[k]) * d.conjugate()).real), 0.0)
         length = foot + PAST_O
-        end = K[k] + d * length
+        end = K_all[k] + d * length
         # the two lines cross near O: each lettered at its own end, the ends drawn ENDS_APART apart at least
         # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
         while ends and abs(end - ends[0]) < ENDS_APART and length < foot + PAST_O + 40.0:
             length += 2.0
-            end = K[k] + d * length
+            end = K_all[k] + d * length
         ends.append(end)
-        rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
+        rec.segment((K_all[k].real, K_all[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
-        bounds.append((K[k], end, d))
+        bounds.append((K_all[k], end, d))
     for ph, (_, end, d) in enumerate(bounds):
         # lettered by its end on the side away from the other line's end (between the two ends a
         # letter read as either line's: review 11)
