@@ -148,6 +148,7 @@ def test_the_working_profile_is_the_rollers_envelope_with_its_arc_and_its_edge(c
     turn = np.abs(np.angle(seg[1:] / seg[:-1]))
     j = int(np.argmin(np.abs(W[1:-1] - edge)))
     assert abs(W[j + 1] - edge) < 0.05e-3
+    assert abs(edge - C8) > R          # the centre's arc r about the edge cuts the corner off (the notes)
     assert turn[j] == pytest.approx(want, abs=math.radians(1.0)) and turn[j] > math.radians(10.0)
 
 
@@ -164,3 +165,58 @@ def test_the_linear_rise_draws_its_rigid_shocks_up_at_the_start_and_down_at_the_
     assert a0 == pytest.approx((0.0, y0)) and a1[0] == pytest.approx(0.0) and a1[1] > y0
     assert b0 == pytest.approx((RISE / g.mu_phi, y0)) and b1[0] == pytest.approx(RISE / g.mu_phi) and b1[1] < y0
     assert sum(1 for q in rec.items if q.kind == "text" and q.text == "∞") == 2
+
+
+@pytest.fixture(scope="module")
+def own50(tmp_path_factory):
+    from review_scenes import OWN_CAM50
+    path = tmp_path_factory.mktemp("own50") / "own50.toml"
+    path.write_text(OWN_CAM50, encoding="utf-8")
+    sol = solve(load(path))
+    return sol, construct(sol, series="rad")
+
+
+def test_a_given_base_radius_is_printed_given_and_the_smallest_is_marked_O_min(own50):
+    """OWN_CAM50 gives R0 = 60 mm over a central follower, the cam clockwise. The notes print it as given
+    («задано», "given"), not taken, and e = 0 as the central follower; the phase diagram marks O_min on O's line (the s axis, e = 0) where
+    the region of the cam's centre begins: on one drawn [ϑ] line, on O's side of the other, and
+    |O_min C₀| the smallest R0 the brute force gives — the cam turned clockwise about O (its frame the
+    fixed one turned on by φ), the roller's centre at s0 + s(φ) on the axis (s, ds/dφ of the program's
+    laws), ϑ the angle between the centre profile's normal and the axis, R0 bisected until both
+    phases' largest |ϑ| reach [ϑ] (30°, 35°)."""
+    from scipy.optimize import brentq
+    from graphplan.exact.cam import motion
+    from graphplan.report.cam import cam_json, cam_lines
+    sol, g = own50
+    doc = cam_json(sol, g, "")
+    assert doc["base_radius_m"] == pytest.approx(0.060)
+    uk, en = "\n".join(cam_lines(doc, "uk")), "\n".join(cam_lines(doc, "en"))
+    assert "задано R_0 = 60 мм" in uk and "прийнято" not in uk and "R_0 given = 60 mm" in en
+    assert sol.geometry.e == 0.0 and "центральний штовхач" in uk and "a central follower" in en
+    rise, far, ret, _ = sol.cam.phases
+    turns = np.concatenate([np.linspace(0.0, rise, 6001), rise + far + np.linspace(0.0, ret, 6001)])
+    phase = np.repeat([0, 1], 6001)
+    s, _, _ = motion(sol.cam, turns, phase)
+    phi = np.radians(turns)
+
+    def worst(R0: float) -> float:
+        P = 1j * (R0 + s) * np.exp(1j * phi)
+        t = np.stack([np.gradient(P[phase == k], phi[phase == k]) for k in (0, 1)]).ravel()
+        axis = 1j * np.exp(1j * phi)
+        th = np.degrees(np.arcsin(np.clip(np.abs((t * axis.conjugate()).real) / np.abs(t), 0.0, 1.0)))
+        return max(th[phase == 0].max() / 30.0, th[phase == 1].max() / 35.0) - 1.0
+    R0_min = brentq(worst, 0.02, 0.06, xtol=1e-7)
+    rec = phase_diagram(sol, g, "uk")
+    mu = rec.scales["mu_phase"]
+    (om,) = [complex(*q.points[0]) for q in rec.items if q.step == "O min" and q.kind == "point"]
+    C0 = 1j * 0.060 / mu
+    assert abs(om.real) < 1e-9
+    assert abs(C0 - om) * mu == pytest.approx(R0_min, abs=0.25 * mu + 2e-5)
+    gaps = []
+    for ph in (0, 1):
+        (x0, y0), (x1, y1) = next(q for q in rec.items if q.step == f"[ϑ] line {ph}").points
+        p, d = complex(x0, y0), complex(x1 - x0, y1 - y0) / abs(complex(x1 - x0, y1 - y0))
+        o_side = np.sign(((0j - p) * d.conjugate()).imag)
+        gaps.append(((om - p) * d.conjugate()).imag * o_side)      # + on O's side
+    assert min(gaps) == pytest.approx(0.0, abs=0.3) and max(gaps) > -0.3
+    assert sum(1 for q in rec.items if q.kind == "text" and q.text == "O_{min}") == 1

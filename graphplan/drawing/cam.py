@@ -580,6 +580,15 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         arc = A + abs(A) * np.exp(1j * t)
         rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
         labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
+    if not cam.rocking and math.isfinite(g.R0_drawn) and sol.geometry.R0 > g.R0_drawn:
+        # a given R0 above the smallest: the region's point on O's line nearest C₀, O_min, marked —
+        # |O_min C₀| the smallest R0 the notes print as read off the diagram (stop 50: only the given
+        # R0 was drawn, under a title naming the smallest)
+        e = sol.geometry.e
+        O_min = 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
+        if abs(O_min - O) >= O_MIN_APART:
+            rec.point(_pt(O_min), role="pole", layer=LAYER, step="O min")
+            labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
@@ -618,6 +627,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
 LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
 ENDS_APART = 24.0    # mm: the two [ϑ] lines' ends at least this far apart (a letter is ~19 mm long)
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
