@@ -220,3 +220,24 @@ def test_a_given_base_radius_is_printed_given_and_the_smallest_is_marked_O_min(o
         gaps.append(((om - p) * d.conjugate()).imag * o_side)      # + on O's side
     assert min(gaps) == pytest.approx(0.0, abs=0.3) and max(gaps) > -0.3
     assert sum(1 for q in rec.items if q.kind == "text" and q.text == "O_{min}") == 1
+
+
+def test_the_pressure_angle_curve_is_the_brute_force_one(cam50):
+    """ϑ(φ) as drawn (its curve's ordinates times μ_ϑ, at its abscissae over μ_φ) against the cam turned
+    counter-clockwise by brute force — the angle between the centre profile's normal and the axis —
+    to 0.05° away from the jumps of ds/dφ (0°, 90°): positive over the rise (the axis' offset keeps it
+    under [ϑ] = 30°), negative over the return down to the printed −39.82°."""
+    from graphplan.drawing.cam import pressure_diagram
+    sol, g = cam50
+    mu_phi, mu_theta = g.mu_phi, 0.5
+    rec = pressure_diagram(sol, g, "uk", mu_phi, mu_theta)
+    xy = np.array(next(q for q in rec.items if q.step == "ϑ(φ) exact").points)
+    phi, drawn = xy[:, 0] * mu_phi, xy[:, 1] * mu_theta
+    keep = (np.abs(phi - RISE) > math.radians(0.5)) & (phi > math.radians(0.5))
+    phi, drawn = phi[keep], drawn[keep]
+    dP = (_inverted(sol.geometry.R0, E, phi + 1e-7) - _inverted(sol.geometry.R0, E, phi - 1e-7)) / 2e-7
+    axis = 1j * np.exp(-1j * phi)
+    brute = np.degrees(np.arcsin(np.clip(np.abs((dP * axis.conjugate()).real) / np.abs(dP), 0.0, 1.0)))
+    assert np.allclose(np.abs(drawn), brute, atol=0.05)
+    assert np.all(drawn[phi < RISE] > 0) and np.all(drawn[(phi > RISE + FAR + 0.05) & (phi < RISE + FAR + RET - 0.05)] < 0)
+    assert float(drawn.min()) == pytest.approx(-39.82, abs=0.05) and float(drawn[phi < RISE].max()) < 30.0
