@@ -241,3 +241,27 @@ def test_the_pressure_angle_curve_is_the_brute_force_one(cam50):
     assert np.allclose(np.abs(drawn), brute, atol=0.05)
     assert np.all(drawn[phi < RISE] > 0) and np.all(drawn[(phi > RISE + FAR + 0.05) & (phi < RISE + FAR + RET - 0.05)] < 0)
     assert float(drawn.min()) == pytest.approx(-39.82, abs=0.05) and float(drawn[phi < RISE].max()) < 30.0
+
+
+@pytest.mark.slow
+def test_the_a1_table_takes_rows_of_10_mm_where_its_column_has_room(tmp_path):
+    """CAM50's A1: Table 1 stands under the profile, in its column (the 3.5-mm letters make it wider
+    than the column); in rows of 8 mm it left 120 mm of the column blank over it — now its rows, the
+    rule lines measured on the sheet, 10 mm apart, its foot still over the title block, and the column
+    between the profile's ink and the table's under 90 mm."""
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions, defects, keep_out
+    from graphplan.sheets.form import form
+    path = tmp_path / "cam50.toml"
+    path.write_text(CAM50, encoding="utf-8")
+    f = form("A1")
+    sheet = build_cam_sheet(load(path), f, SheetOptions(lang="uk", sheet="cam"))
+    assert not defects(sheet)
+    placed = {p.name: p.record for p in sheet.placed}
+    box = {k: r.bounds() for k, r in placed.items()}
+    rules = sorted({round(q.points[0][1], 3) for q in placed["table"].items
+                    if q.kind == "segment" and abs(q.points[0][1] - q.points[1][1]) < 1e-9})
+    steps = np.diff(rules)
+    assert np.median(steps) == pytest.approx(10.0, abs=0.05)
+    assert box["table"][1] >= keep_out(f)[3] - 1e-6
+    assert box["profile"][1] - box["table"][3] < 90.0
