@@ -3621,3 +3621,56 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+CAM50 = '''# Stop 50 (the lead's check): a translating roller follower with a given offset, the cam counter-clockwise,
+# a linear (constant-velocity) rise of 90° — hard shocks at its ends — a far dwell of 30°, a cycloidal
+# return of 110°, 8 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 50)"
+title_en = "Cam with a translating roller follower (check 50)"
+designation = "ТММ.КМ.50.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = 0.008
+roller_radius = 0.010
+phases_deg = { rise = 90, dwell_far = 30, return = 110, dwell_near = 130 }
+laws = { rise = "linear", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 120
+direction = "ccw"
+'''
+
+
+OWN_CAM50 = '''# Stop 50 (cam50's own look): a central translating roller follower (e = 0), the cam clockwise, a given
+# base radius R0 = 60 mm above the smallest the pressure angles allow, a cosine rise of 120°, a far dwell
+# of 45°, a trapezoidal return of 100°, a near dwell of 95°, 8 divisions.
+title = "Кулачковий механізм з центральним роликовим штовхачем і заданим R0 (перевірка 50)"
+title_en = "Cam with a central roller follower and a given R0 (check 50)"
+designation = "ТММ.КМ.50.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.040
+offset = 0.0
+roller_radius = 0.012
+base_radius = 0.060
+phases_deg = { rise = 120, dwell_far = 45, return = 100, dwell_near = 95 }
+laws = { rise = "cosine", return = "trapezoidal" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 90
+direction = "cw"
+'''

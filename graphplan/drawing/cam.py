@@ -14,7 +14,7 @@ import numpy as np
 
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, jump_points, motion, profile
-from graphplan.graphic.cam import CamConstruction, division_numbers, working_angle
+from graphplan.graphic.cam import CamConstruction, division_numbers, phase_curve, working_angle
 from graphplan.graphic.record import Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
@@ -505,10 +505,9 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     C, K = C / mu, K / mu
     sig = cam.sense
     # the exact curve of K over the active phases, thin
-    fine = np.concatenate([np.linspace(0.0, cam.phases[0], 241),
-                           cam.phases[0] + cam.phases[1] + np.linspace(0.0, cam.phases[2], 241)])
-    s, v, a = motion(cam, fine)
-    Cf, C1f, _, _ = centre_path(cam, sol.geometry, s, v, a)
+    fine, fine_phase = phase_curve(cam)
+    s, v, a = motion(cam, fine, fine_phase)
+    Cf, C1f, _, uf = centre_path(cam, sol.geometry, s, v, a)
     Kf = (Cf + 1j * sig * C1f) / mu
     half = len(fine) // 2
     for part in (Kf[:half], Kf[half:]):
@@ -536,6 +535,8 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
                         step=f"ds/dφ {k}")
         rec.point((K[k].real, K[k].imag), role="construction", layer=LAYER, step=f"K {k}")
     O = 0j
+    K_all, u_all = np.concatenate([K, Kf]), np.concatenate([u, uf])
+    phase_all = np.concatenate([np.asarray(g.phase), fine_phase])
     ends: list[complex] = []
     bounds: list[tuple[complex, complex, complex]] = []
     for ph in (0, 1):
@@ -543,19 +544,21 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         # phase's drawn points, the one O is nearest (allowed_line: the textbook's tangent at [ϑ], not the
         # line through the point seen at the largest angle, which cut the curve where that phase does not
         # bind), drawn from its point to a little past O's foot on it
-        k, turn, d = allowed_line(K, u, np.flatnonzero(g.phase == ph), math.radians(cam.allowed[ph]), O)
-        foot = max(float(((O - K[k]) * d.conjugate()).real), 0.0)
+        # — of the drawn points and the curve drawn through them: the line touches the curve, never
+        # cuts it between two divisions (stop 50)
+        k, turn, d = allowed_line(K_all, u_all, np.flatnonzero(phase_all == ph), math.radians(cam.allowed[ph]), O)
+        foot = max(float(((O - K_all[k]) * d.conjugate()).real), 0.0)
         length = foot + PAST_O
-        end = K[k] + d * length
+        end = K_all[k] + d * length
         # the two lines cross near O: each lettered at its own end, the ends drawn ENDS_APART apart at least
         # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
         while ends and abs(end - ends[0]) < ENDS_APART and length < foot + PAST_O + 40.0:
             length += 2.0
-            end = K[k] + d * length
+            end = K_all[k] + d * length
         ends.append(end)
-        rec.segment((K[k].real, K[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
+        rec.segment((K_all[k].real, K_all[k].imag), (end.real, end.imag), role="direction", layer=LAYER,
                     step=f"[ϑ] line {ph}")
-        bounds.append((K[k], end, d))
+        bounds.append((K_all[k], end, d))
     for ph, (_, end, d) in enumerate(bounds):
         # lettered by its end on the side away from the other line's end (between the two ends a
         # letter read as either line's: review 11)
@@ -577,6 +580,15 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         arc = A + abs(A) * np.exp(1j * t)
         rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
         labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
+    if not cam.rocking and math.isfinite(g.R0_drawn) and sol.geometry.R0 > g.R0_drawn:
+        # a given R0 above the smallest: the region's point on O's line nearest C₀, O_min, marked —
+        # |O_min C₀| the smallest R0 the notes print as read off the diagram (stop 50: only the given
+        # R0 was drawn, under a title naming the smallest)
+        e = sol.geometry.e
+        O_min = 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
+        if abs(O_min - O) >= O_MIN_APART:
+            rec.point(_pt(O_min), role="pole", layer=LAYER, step="O min")
+            labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
@@ -615,6 +627,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
 LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
 ENDS_APART = 24.0    # mm: the two [ϑ] lines' ends at least this far apart (a letter is ~19 mm long)
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)

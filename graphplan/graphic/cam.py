@@ -303,10 +303,31 @@ def phase_drawn_at(g: CamConstruction, mu: float | None) -> CamConstruction:
     return dataclasses.replace(g, mu_phase=mu, R0_min=R0)
 
 
+PHASE_CURVE_STEPS = 240   # the phase diagram's curve drawn through each active phase in this many steps
+
+
+def phase_curve(cam) -> tuple[np.ndarray, np.ndarray]:
+    """The turns (deg) at which the phase diagram's curve is drawn through the rise and the return, and
+    their phases (0, 1): the curve the [ϑ] lines are laid tangent to (drawing.cam.phase_diagram)."""
+    rise, far, ret, _ = cam.phases
+    t = np.linspace(0.0, 1.0, PHASE_CURVE_STEPS + 1)
+    return (np.concatenate([rise * t, rise + far + ret * t]),
+            np.repeat([0, 1], PHASE_CURVE_STEPS + 1))
+
+
 def _phase_diagram_radius(sol: Solution, phi, phase, s_g, v_g) -> float:
-    """The smallest R0 at which every drawn point (s, ds/dφ) keeps |ϑ| ≤ [ϑ] of its phase."""
+    """The smallest R0 at which no drawn point (s, ds/dφ) and no point of the curve drawn through them
+    is seen at more than [ϑ] of its phase: the [ϑ] lines laid tangent to the curve (REFERENCE §11), not
+    through its nearest drawn point — between two divisions the curve bulges past such a line (stop 50:
+    the linear/cycloidal cam's return line through point 14 cut the curve between 13 and 14, R0 read
+    35.8 mm of the exact 36.70, −2.5 %, a cam that would exceed [ϑ] = 40°)."""
     from scipy.optimize import brentq
     cam = sol.cam
+    fine, fine_phase = phase_curve(cam)
+    s_f, v_f, _ = motion(cam, fine, fine_phase)
+    phi = np.concatenate([np.asarray(phi, dtype=float), fine])
+    phase = np.concatenate([np.asarray(phase), fine_phase])
+    s_g, v_g = np.concatenate([np.asarray(s_g, dtype=float), s_f]), np.concatenate([np.asarray(v_g, dtype=float), v_f])
 
     def worst(R0: float) -> float:
         try:

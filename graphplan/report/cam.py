@@ -61,6 +61,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "laws": {"rise": cam.laws[0], "return": cam.laws[1]},
         "pressure_angle_allowed_deg": {"rise": cam.allowed[0], "return": cam.allowed[1]},
         "base_radius_min_m": sol.R0_min, "base_radius_m": sol.geometry.R0,
+        "base_radius_given": cam.base_radius is not None,
         "divisions": int(len(g.phi) // 2 - 1), "precision_mm": g.precision,
         "scales": {"mu_phi_rad_mm": g.mu_phi, "mu_a_mm": g.mu_a, "mu_v_mm": g.mu_v, "mu_s_mm": g.mu_s,
                    "mu_l_m_mm": g.mu_l, "H1_mm": g.H1, "H2_mm": g.H2},
@@ -96,6 +97,7 @@ WORDS = {
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
+           "radius_given": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм",
            "stroke": "хід h = {h} мм", "swing": "кут розмаху ψ_{{max}} = {h}°",
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
@@ -103,6 +105,7 @@ WORDS = {
            "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль іде "
                     "через O, а {c} рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
+           "central": " (центральний штовхач: його вісь проходить через O)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
@@ -111,7 +114,7 @@ WORDS = {
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
            "corner": "φ = {p}° ({a} → {b} {u}; {k})",
            "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
-                     "огинає злам дугою r",
+                     "іде дугою радіуса r навколо ребра, зрізаючи злам",
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
            "sharp": "штовхач із вістрям натрапляє на гострий злам",
            "scales": "масштаби: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0мм, H_2\u00a0=\u00a0{h2}\u00a0мм",
@@ -137,6 +140,7 @@ WORDS = {
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
+           "radius_given": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm",
            "stroke": "stroke h = {h} mm", "swing": "swing ψ_{{max}} = {h}°",
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
@@ -144,6 +148,7 @@ WORDS = {
            "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal passes through "
                     "O, and {c} moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
+           "central": " (a central follower: its axis passes through O)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
@@ -152,7 +157,7 @@ WORDS = {
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
            "corner": "φ = {p}° ({a} → {b} {u}; {k})",
            "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
-                     "rounding the corner by r",
+                     "cutting the corner on an arc of radius r about the edge",
            "concave": "concave: the working profile there an arc of radius r about it",
            "sharp": "a knife-edge follower meets a sharp corner",
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
@@ -245,7 +250,8 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
                                  p=n(doc["arm_angle_deg"])) if rocking else offset_line(w, doc, n))
     g = doc["base_radius_graphical_m"]
-    lines.append(w["radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
+    # a scene's own R0 is given, not taken (stop 50: «прийнято R_0 = 60 мм» of a given 60 read as chosen)
+    lines.append(w["radius_given" if doc.get("base_radius_given") else "radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     # to 0.01 %, as Table 1's δ (a teacher reads "−0,00805 %" as false precision)
                                     e=("—" if doc["base_radius_error_pct"] is None
                                        else fixed(doc["base_radius_error_pct"], lang, 2).replace("-", "−")),
@@ -306,8 +312,8 @@ def offset_line(w: dict, doc: dict, n) -> str:
     pressure angle, tg ϑ = (ds/dφ − e)/(s0 + s) (stop 46: «e = −6 мм» said neither)."""
     e = doc["offset_m"] * 1000
     text = w["offset"].format(e=n(e))
-    if abs(e) < 1e-9:
-        return text
+    if abs(e) < 1e-9:          # e = 0 said to be the central follower (stop 50: «e = 0 мм» alone)
+        return text + w["central"]
     x = e * (1 if doc["sense"] == "ccw" else -1)
     return text + w["offset_side"].format(d=n(abs(e)), side=w["side"][0 if x > 0 else 1],
                                           effect=w["effect"][0 if e > 0 else 1])
