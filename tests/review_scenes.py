@@ -3255,3 +3255,28 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+GEARS50 = '''# Stop 50 (the lead's check): an external pair 15/45 with unequal given positive shifts (αw > α), m = 5 mm,
+# and a two-row planetary train of type B for a ratio of 12 with three planets, the sun at 960 rpm.
+title = "Зубчаста передача 15/45 і дворядний планетарний редуктор (перевірка 50)"
+title_en = "A gear pair 15/45 and a two-row planetary reducer (check 50)"
+designation = "ТММ.ЗП.50.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[gears]
+z = [15, 45]
+module = 0.005
+shifts = [0.5, 0.2]
+
+[planetary]
+type = "B"
+ratio = 12
+planets = 3
+module = 0.0025
+rpm = 960
+'''
