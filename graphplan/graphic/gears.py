@@ -948,8 +948,16 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     ratio = (seg["1"] / h) / (seg["H"] / dist["H"]) if seg["H"] else math.nan
     rec = Record("planetary")
     starts = _scheme(rec, tr, mu, yA, yO2, yC)
-    # the velocity picture: the radii on one vertical line right of the scheme
+    # the velocity picture: the radii on one vertical line right of the scheme — midway along the room the
+    # plan of angular velocities leaves right of the scheme, where the plan is the wider (stop 50: the
+    # picture stood against the scheme, a 100–200 × 155-mm blank right of it over the plan's long rays)
     X0 = max(60.0, rec.bounds()[2] + 16.0)
+    xs = [dist[k] * s for k, s in slopes.items()]
+    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0     # the plan's pole (as below)
+    tip = lambda p, q: (q + (q - p) / abs(q - p) * 14.0).real           # noqa: E731   a line's end, x
+    wide = max(tip(0j, complex(va, yA)), tip(complex(0.0, yC), complex(va, yA)),
+               tip(0j, complex(v_o2, yO2))) + 10.0                      # the picture's width, its letters too
+    X0 += max(0.0, 0.5 * (xp + max(xs + [0.0]) + 6.0 - (X0 + wide)))
     rec.segment((X0, -4.0), (X0, yC + 8.0), role="axis", layer=LAYER, step="radii")
     for y, x in zip((yA, yO2, yC), starts):     # from the scheme's points A, O2, C across
         rec.segment((x, y), (X0, y), role="projection", layer=LAYER)
@@ -969,12 +977,10 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     for q in (a, o2, C, O):
         rec.point(_f(q), role="pole", layer=LAYER)
     # the plan of angular velocities below: a horizontal, the pole h under it
-    xs = [dist[k] * s for k, s in slopes.items()]
     y0 = -26.0
     # the plan under the scheme and the velocity picture from the scheme's left end (not from the
     # picture's axis: the sun's segment then takes the pictures' whole width — review 13 #9, an A3
-    # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm)
-    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0
+    # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm): ``xp`` above
     left, right = xp + min(xs + [0.0]) - 6.0, xp + max(xs + [0.0]) + 6.0
     xd = left - 4.0                       # h_H's dimension line, left of the plan
     rec.segment((xd - 2.0 if hH else left, y0), (right, y0), role="construction", layer=LAYER, step="plan of ω")
