@@ -665,7 +665,9 @@ def alpha_w_mark(rec: Record, pl: "Placer", P: complex, aw_: float, size: float 
                 rec.label((c.real - w / 2, c.imag - size / 2), "α_w", size=size, layer=LAYER, step="αw")
                 pl._add_box(prim.bounds())
                 return c, side
-    rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
+    arc = rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
+    pl._add(_ink_points(arc))             # (a crowded small meshing, A3's 2,5:1: the letter by its arc, as near
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)   # as it goes — never left out)
     return None
 
 
