@@ -198,3 +198,20 @@ def test_the_lambda_diagrams_fill_the_row_and_read_the_closed_forms(sheet50):
     assert abs(l1_at_B1 - c["lam1_B1"]) * unit <= 0.5 and abs(l2_at_B2 - c["lam2_B2"]) * unit <= 0.5
     xs = [q.points[0][0] for q in lam.items if q.step == "λ_1 on B1B2"]
     assert xs[0] == pytest.approx(c["rho_B1"] / mu_x, abs=0.05)
+
+
+def test_table_3_shows_the_trains_conditions_with_their_numbers(sheet50):
+    """Stop 50: Table 3 printed the train's conditions as «викон.» alone where Table 2 shows the pair's
+    with their numbers. Now each row shows its check: coaxiality z1 + z2 = z3 − z2', assembly
+    (z1·z2' + z2·z3)/(K·gcd(z2, z2')) whole, neighbourhood (z1 + z2)·sin(π/K) > max(z2, z2') + 2 — the
+    numbers computed here from the chosen teeth."""
+    from test_sheet_content import texts
+    sol, _, _, s = sheet50
+    z1, z2, z2b, z3 = sol.train.z
+    K = 3
+    words = texts(s)
+    num, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
+    near = (z1 + z2) * math.sin(math.pi / K)
+    assert f"{z1} + {z2} = {z3} − {z2b}: викон." in words
+    assert f"{num}/{den} = {num // den}: викон." in words and num % den == 0
+    assert f"{near:.2f}".replace(".", ",") + f" > {max(z2, z2b) + 2}: викон." in words

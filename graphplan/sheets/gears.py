@@ -240,9 +240,38 @@ def train_table(doc: dict, lang: str) -> Record:
             label = label.replace(",", " " + w["given"] + ",", 1)
         rows.append([label, bare(te), bare(tg) if tg else "—", _pct(e)])
     c = t["conditions"]
+    shown = condition_numbers(t, lang)
+    room = text_width(rows[1][1], 2.5)    # (the teeth's cell sets the column: a condition's numbers within it)
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
-        rows.append([w[name], ok(c[key]), "", ""])
+        cell = f"{shown[key]}: {ok(c[key])}" if key in shown else ok(c[key])
+        rows.append([w[name], cell if text_width(cell, 2.5) <= room else ok(c[key]), "", ""])
     return table(_pct_cells(rows, lang), [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
+
+
+def condition_numbers(t: dict, lang: str) -> dict[str, str]:
+    """The train's conditions as Table 3 shows them checked — with the numbers, as Table 2 shows the
+    pair's (stop 50: «викон.» alone): coaxiality A z1 + 2·z2 = z3, B z1 + z2 = z3 − z2'; assembly A
+    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')) — whole where met —; neighbourhood
+    (z1 + z2)·sin(π/K) against the planet's tip, max(z2, z2') + 2 (h*a = 1)."""
+    z, K = t["z"], t["planets"]
+    rel = lambda a, b: "=" if a == b else "≠"                            # noqa: E731
+    if t["type"] == "A":
+        z1, z2, z3 = z
+        coax = f"{z1} + 2·{z2} {rel(z1 + 2 * z2, z3)} {z3}"
+        num_, den = z1 + z3, K
+        asm = f"({z1} + {z3})/{K} = {_n(num_ / den, lang, 4)}"
+        tip = z2 + 2
+    else:
+        z1, z2, z2b, z3 = z
+        coax = f"{z1} + {z2} {rel(z1 + z2, z3 - z2b)} {z3} − {z2b}"
+        num_, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
+        asm = f"{num_}/{den} = {_n(num_ / den, lang, 4)}"
+        tip = max(z2, z2b) + 2
+    out = {"coaxial": coax, "assembly": asm}
+    if K > 1:
+        near = (z1 + z2) * math.sin(math.pi / K)
+        out["neighbourhood"] = f"{_n(near, lang, 4)} {'>' if near > tip else '≤'} {tip}"
+    return out
 
 
 def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
