@@ -3674,3 +3674,56 @@ pressure_angle_deg = { rise = 30, return = 35 }
 rpm = 90
 direction = "cw"
 '''
+
+
+GEARS50 = '''# Stop 50 (the lead's check): an external pair 15/45 with unequal given positive shifts (αw > α), m = 5 mm,
+# and a two-row planetary train of type B for a ratio of 12 with three planets, the sun at 960 rpm.
+title = "Зубчаста передача 15/45 і дворядний планетарний редуктор (перевірка 50)"
+title_en = "A gear pair 15/45 and a two-row planetary reducer (check 50)"
+designation = "ТММ.ЗП.50.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[gears]
+z = [15, 45]
+module = 0.005
+shifts = [0.5, 0.2]
+
+[planetary]
+type = "B"
+ratio = 12
+planets = 3
+module = 0.0025
+rpm = 960
+'''
+
+
+GEARS_OWN50 = '''# Stop 50's own check (gear50): a pair 12/33 — the pinion under 17 teeth — with given unequal shifts of
+# opposite signs x1 = 0.4, x2 = −0.15 (x1 + x2 = 0.25 > 0), m = 6 mm; a two-row planetary train of type B
+# with its teeth given, z = 21/42/22/85 and K = 4 planets (the neighbourhood condition within 1 %), ω1 given.
+title = "Зубчаста передача 12/33 і дворядний планетарний редуктор з заданими зубцями (власна перевірка 50)"
+title_en = "A gear pair 12/33 and a two-row planetary reducer with given teeth (own check 50)"
+designation = "ТММ.ЗП.50.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-50"
+organisation = "НУБіП України"
+
+[gears]
+z = [12, 33]
+module = 0.006
+shifts = [0.4, -0.15]
+
+[planetary]
+type = "B"
+z = [21, 42, 22, 85]
+planets = 4
+module = 0.002
+omega = 150
+'''

@@ -42,6 +42,7 @@ ENLARGE = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0, 20.0, 40.0, 50.0, 100.0)   # GOST 2.30
 REDUCE = (0.1, 0.2, 0.25, 0.4, 0.5)                                   # … and reductions, 1:10 … 1:2
 DIVISIONS = 4                  # equal parts of N1P for the involute
 LEADER = 7.0                   # mm: a letter farther than this from its point gets a leader
+SMALL = 2.5                    # mm: GOST 2.304's least letters (s, p, a1 … on the meshing; a crowded point's)
 NEAR_CLEAR = 0.9               # mm: a point's letter's glyphs this far off the lines' middles where placed near
 FILLET = 0.38                  # the rack's fillet radius, ρf = 0.38m
 LAMBDA_MM = 20.0               # the λ diagrams: 1 unit = 20 mm
@@ -112,9 +113,14 @@ class Placer:
         # a near letter's glyphs (its ink, not its advance box) kept NEAR_CLEAR off the lines' middles:
         # less a thick line's half width (0.35 mm) and the sampled lines' 0.4 mm steps (0.2 mm), still
         # more than the check's 0.3 mm
-        passes = ([(True, close, True)] if near else []) + [(True, tuple(radii) + far, False),
-                                                             (False, tuple(radii) + far, False)]
-        for strict, rads, by_ink in passes:   # first with the leader's path clear too, then the box alone
+        # (stop 49: GEARS47's B2 went 16,5 mm off on a leader where 2,5-mm letters — GOST 2.304's least,
+        # the meshing's own for s, p, a1 … — stand beside it: a point's letter tried so before the leader)
+        small = ((True, close, True, SMALL),) if near and size > SMALL else ()
+        passes = ([(True, close, True, size)] if near else []) + list(small) + [
+            (True, tuple(radii) + far, False, size), (False, tuple(radii) + far, False, size)]
+        full = size
+        for strict, rads, by_ink, size in passes:   # first with the leader's path clear too, then the box alone
+            w = text_width(text, size)
             for rad in rads:
                 for d in dirs:
                     # the box's nearest side ``rad`` from the anchor along d
@@ -145,7 +151,7 @@ class Placer:
                     return True
         if optional:                          # a circle's name where five circles crowd: left out
             return False
-        self.rec.label((at.real + 2.0, at.imag + 2.0), text, size=size, layer=LAYER)
+        self.rec.label((at.real + 2.0, at.imag + 2.0), text, size=full, layer=LAYER)
         return False
 
     def _add_box(self, box) -> None:
@@ -487,7 +493,6 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     # the line of action, extended a little past N1 and N2
     rec.segment(_f(N1 - 6 * u), _f(N2 + 6 * u), role="relative", layer=LAYER, step="line of action N1N2")
     rec.segment(_f(P - 30.0), _f(P + 30.0), role="construction", layer=LAYER, step="tangent at P")
-    rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
     if cut:          # the radii to N1, N2 (perpendicular to the line of action) as far as the window
         rec.segment(_f(N1), _f(O1 if show1 else N1 + (O1 - N1) / abs(O1 - N1) * min(20.0, abs(O1 - N1))),
                     role="construction", layer=LAYER)
@@ -584,7 +589,7 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), near=True)
     for at, name, out in arc_ends:
         pl.label(at, name, size=2.5, toward=out, radii=(1.0, 2.0, 3.5, 5.5, 9.0, 13.0), optional=True)
-    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j, optional=True)
+    alpha_w_mark(rec, pl, P, aw_)
     for k, centre in ((1, O1), (2, O2)):
         for name, rad in circles[k]:
             ang = _span(rad, half_w, tau[k - 1], aw_, teeth)
@@ -608,6 +613,62 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                               "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh
+
+
+ALPHA_W_ARC = (8.0, 40.0)       # mm: the radius of αw's arc, least and most
+
+
+def in_angle(q: complex, P: complex, aw_: float, side: int, margin: float) -> bool:
+    """Whether ``q`` lies inside the angle of mesh at P, ``margin`` mm clear of both its sides: left
+    of P between the tangent t–t and the line of action rising to N2 (``side`` 1), or the vertically
+    opposite angle right of P under the tangent (``side`` −1) — the same angle αw."""
+    v = side * (q - P)
+    d = cmath.exp(1j * (math.pi - aw_))                # the line of action's direction toward N2
+    return v.real < 0 and v.imag >= margin and (d.conjugate() * v).imag >= margin
+
+
+def alpha_w_mark(rec: Record, pl: "Placer", P: complex, aw_: float, size: float = TEXT) -> tuple[complex, int] | None:
+    """The angle of mesh αw marked at P as the textbook marks it: an arc between the tangent t–t and the
+    line of action and the letter α_w inside the angle (stop 49: the letter stood outside it, the spots
+    inside crossed by p_b's dimension). The letter at the first spot inside the angle — left of P over
+    the tangent, else the vertically opposite angle right of P under it — whose box, ``pl``'s clearance
+    round it, holds no ink and stays 0.6 mm inside both sides; the arc then just inside the letter (just
+    outside it where that arc would be shorter than ``ALPHA_W_ARC``'s least), clear of every letter.
+    The letter's size ``size``, 2,5 mm (GOST 2.304's least) where no spot holds it. (The letter's centre,
+    the side) or None when no spot is free (the arc alone at 22 mm, left of P)."""
+    for size, side in ((size, 1), (size, -1), (2.5, 1), (2.5, -1)):
+        w = text_width("α_w", size)
+        for rho in np.arange(6.0, 60.0, 1.0):
+            for t in (0.5, 0.4, 0.6, 0.3, 0.7):
+                c = P + side * rho * cmath.exp(1j * (math.pi - t * aw_))
+                prim = Primitive("text", ((c.real - w / 2, c.imag - size / 2),), text="α_w", size=size)
+                x0, y0, x1, y1 = prim.bounds()
+                corners = (complex(x0, y0), complex(x0, y1), complex(x1, y0), complex(x1, y1))
+                if not all(in_angle(q, P, aw_, side, 0.6) for q in corners):
+                    continue
+                keep, pl.clear = pl.clear, NEAR_CLEAR       # the glyphs' ink clear of the lines, as a point's
+                ok = pl.free(prim.ink())                    # letter near it (``Placer.label``'s ``near``)
+                pl.clear = keep
+                if not ok:
+                    continue
+                near, far = min(abs(q - P) for q in corners), max(abs(q - P) for q in corners)
+                radius = near - 1.5 if near - 1.5 >= ALPHA_W_ARC[0] else far + 1.5
+                if radius > ALPHA_W_ARC[1]:
+                    continue
+                a0 = 180.0 - math.degrees(aw_) if side == 1 else 360.0 - math.degrees(aw_)
+                arc = Primitive("arc", (_f(P),), radius=radius, angles=(a0, a0 + math.degrees(aw_)))
+                if not all(pl.free((x, y, x, y), pl.letters) for x, y in _ink_points(arc)):
+                    continue
+                drawn = rec.arc(_f(P), radius, a0, a0 + math.degrees(aw_), role="construction", layer=LAYER,
+                                step="αw")
+                pl._add(_ink_points(drawn))
+                rec.label((c.real - w / 2, c.imag - size / 2), "α_w", size=size, layer=LAYER, step="αw")
+                pl._add_box(prim.bounds())
+                return c, side
+    arc = rec.arc(_f(P), 22.0, 180.0 - math.degrees(aw_), 180.0, role="construction", layer=LAYER, step="αw")
+    pl._add(_ink_points(arc))             # (a crowded small meshing, A3's 2,5:1: the letter by its arc, as near
+    pl.label(P + 24 * cmath.exp(1j * (math.pi - aw_ / 2)), "α_w", toward=-1 + 0j)   # as it goes — never left out)
+    return None
 
 
 def dimension(rec: Record, a: complex, b: complex, step: str) -> None:
@@ -672,13 +733,15 @@ def _readings(rec: Record, teeth_pts: dict, tau, B1: complex, B2: complex, u: co
             arc_dimension(rec, centre, rp, min(a0, a1), max(a0, a1), "p")
             mid = cmath.exp(1j * 0.5 * (a0 + a1))
             out.append((centre + rp * mid, "p", -mid))
-    # pb laid off on N1N2 from B1 toward B2: ticks square to the line, the dimension 4 mm off it
-    n = -1j * u                      # the line's normal on the side away from B1's letter (B1, B2 -n, +n)
+    # pb laid off on N1N2 from B1 toward B2: ticks square to the line, the dimension 6 mm off it on the
+    # side of the angle of mesh right of P under the tangent, so that the angle left of P over it is
+    # clear for αw's letter (stop 49: the dimension crossed it, the letter stood outside its angle)
+    n = -1j * u                      # the line's normal toward the tangent's right half
     E = B1 + pb * u
     for q in (B1, E):
-        rec.segment(_f(q - 1.5 * n), _f(q - 7.5 * n), role="construction", layer=LAYER, step="pb")
-    dimension(rec, B1 - 6.0 * n, E - 6.0 * n, "pb")
-    out.append((B1 + 0.25 * (E - B1) - 6.0 * n, "p_b", -n))      # lettered near B1, clear of P
+        rec.segment(_f(q + 1.5 * n), _f(q + 7.5 * n), role="construction", layer=LAYER, step="pb")
+    dimension(rec, B1 + 6.0 * n, E + 6.0 * n, "pb")
+    out.append((B1 + 0.25 * (E - B1) + 6.0 * n, "p_b", n))      # lettered near B1, clear of P
     rec.segment(_f(B1), _f(B2), role="result", layer=LAYER, step="active part B1B2", width=0.9)
     return out
 
@@ -887,8 +950,16 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     ratio = (seg["1"] / h) / (seg["H"] / dist["H"]) if seg["H"] else math.nan
     rec = Record("planetary")
     starts = _scheme(rec, tr, mu, yA, yO2, yC)
-    # the velocity picture: the radii on one vertical line right of the scheme
+    # the velocity picture: the radii on one vertical line right of the scheme — midway along the room the
+    # plan of angular velocities leaves right of the scheme, where the plan is the wider (stop 50: the
+    # picture stood against the scheme, a 100–200 × 155-mm blank right of it over the plan's long rays)
     X0 = max(60.0, rec.bounds()[2] + 16.0)
+    xs = [dist[k] * s for k, s in slopes.items()]
+    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0     # the plan's pole (as below)
+    tip = lambda p, q: (q + (q - p) / abs(q - p) * 14.0).real           # noqa: E731   a line's end, x
+    wide = max(tip(0j, complex(va, yA)), tip(complex(0.0, yC), complex(va, yA)),
+               tip(0j, complex(v_o2, yO2))) + 10.0                      # the picture's width, its letters too
+    X0 += max(0.0, 0.5 * (xp + max(xs + [0.0]) + 6.0 - (X0 + wide)))
     rec.segment((X0, -4.0), (X0, yC + 8.0), role="axis", layer=LAYER, step="radii")
     for y, x in zip((yA, yO2, yC), starts):     # from the scheme's points A, O2, C across
         rec.segment((x, y), (X0, y), role="projection", layer=LAYER)
@@ -908,12 +979,10 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     for q in (a, o2, C, O):
         rec.point(_f(q), role="pole", layer=LAYER)
     # the plan of angular velocities below: a horizontal, the pole h under it
-    xs = [dist[k] * s for k, s in slopes.items()]
     y0 = -26.0
     # the plan under the scheme and the velocity picture from the scheme's left end (not from the
     # picture's axis: the sun's segment then takes the pictures' whole width — review 13 #9, an A3
-    # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm)
-    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0
+    # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm): ``xp`` above
     left, right = xp + min(xs + [0.0]) - 6.0, xp + max(xs + [0.0]) + 6.0
     xd = left - 4.0                       # h_H's dimension line, left of the plan
     rec.segment((xd - 2.0 if hH else left, y0), (right, y0), role="construction", layer=LAYER, step="plan of ω")

@@ -240,9 +240,38 @@ def train_table(doc: dict, lang: str) -> Record:
             label = label.replace(",", " " + w["given"] + ",", 1)
         rows.append([label, bare(te), bare(tg) if tg else "—", _pct(e)])
     c = t["conditions"]
+    shown = condition_numbers(t, lang)
+    room = text_width(rows[1][1], 2.5)    # (the teeth's cell sets the column: a condition's numbers within it)
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
-        rows.append([w[name], ok(c[key]), "", ""])
+        cell = f"{shown[key]}: {ok(c[key])}" if key in shown else ok(c[key])
+        rows.append([w[name], cell if text_width(cell, 2.5) <= room else ok(c[key]), "", ""])
     return table(_pct_cells(rows, lang), [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
+
+
+def condition_numbers(t: dict, lang: str) -> dict[str, str]:
+    """The train's conditions as Table 3 shows them checked — with the numbers, as Table 2 shows the
+    pair's (stop 50: «викон.» alone): coaxiality A z1 + 2·z2 = z3, B z1 + z2 = z3 − z2'; assembly A
+    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')) — whole where met —; neighbourhood
+    (z1 + z2)·sin(π/K) against the planet's tip, max(z2, z2') + 2 (h*a = 1)."""
+    z, K = t["z"], t["planets"]
+    rel = lambda a, b: "=" if a == b else "≠"                            # noqa: E731
+    if t["type"] == "A":
+        z1, z2, z3 = z
+        coax = f"{z1} + 2·{z2} {rel(z1 + 2 * z2, z3)} {z3}"
+        num_, den = z1 + z3, K
+        asm = f"({z1} + {z3})/{K} = {_n(num_ / den, lang, 4)}"
+        tip = z2 + 2
+    else:
+        z1, z2, z2b, z3 = z
+        coax = f"{z1} + {z2} {rel(z1 + z2, z3 - z2b)} {z3} − {z2b}"
+        num_, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
+        asm = f"{num_}/{den} = {_n(num_ / den, lang, 4)}"
+        tip = max(z2, z2b) + 2
+    out = {"coaxial": coax, "assembly": asm}
+    if K > 1:
+        near = (z1 + z2) * math.sin(math.pi / K)
+        out["neighbourhood"] = f"{_n(near, lang, 4)} {'>' if near > tip else '≤'} {tip}"
+    return out
 
 
 def notes(doc: dict, lang: str, mesh, vel) -> list[str]:
@@ -544,7 +573,10 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     where 1:2 with a 1 mm longer ωH reads within ±1,53; stop 49's 9/40 + type A, 2:1 ±0,16 with
     h = 25 mm, 1:1 ±0,13, 1:2 ±0,25). No longer capped by the meshing's size (stop 49: capped, the
     pictures stood 270 × 190 mm in a 616 × 372 row, a 61-mm band empty over the meshing and under
-    them). The pictures as they were when none fits."""
+    them). The pictures as they were when none fits. (Stop 50: ``longer`` — vA twice as long and the
+    sun's segment with it where the zone's height held the pictures — removed: with μω round (``pole_distance``)
+    the plan's segments are ω/μω whatever vA, the height never held them, and on no scene did it change
+    the pictures.)"""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
     lam_w = 0.0 if beside(region, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
     room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
@@ -561,7 +593,6 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                d = longer(tr, precision, lang, ring, room_w, room_h, min(H_MIN, vel.h), d, va_share)
                 if best is None or _rank(d[0]) < _rank(best[0]):
                     best = d
                 break
@@ -573,38 +604,6 @@ def _rank(v) -> tuple:
     segment at least ``SEGMENT_MIN`` (what a teacher reads with the ruler: review 13's ωH off 3,8 mm), then
     the narrowest bound of u1H."""
     return (v.h < H_MIN - 1e-9, abs(v.segments["H"]) < SEGMENT_MIN - 1e-9, v.ratio_bound)
-
-
-LONGER_VA = 2.0           # vA × its size tried last where the plan fits then reads u1H better (``longer``)
-
-
-def longer(tr, precision: float, lang: str, ring: float, room_w: float, room_h: float, h_min: float, d,
-           share: float):
-    """The pictures ``d`` (drawn with vA ``share`` times its size) or, where they are held by the zone's
-    height with 30 mm of its width spare, the pictures with vA ``LONGER_VA`` times its size and the sun's
-    segment as much longer — the plan no taller for it (h = S·yA/vA), longer — where they fit and read
-    u1H within a narrower bound (stop 46: 11/29 with its λ diagrams beside the meshing left the
-    planetary pictures 305 mm of a 400-mm row, u1H within ±0,39). Few drawings (the μv rounded
-    may make the plan a little taller: then the segment that gives the first pictures' h; three at most)."""
-    v, rec = d
-    w_, h_ = _size(rec)
-    if v.h_carrier is not None or h_ < room_h - 5.0 or w_ > room_w - 30.0 or share >= LONGER_VA:
-        return d
-    S = abs(v.segments["1"]) * LONGER_VA / share
-    for _ in range(3):
-        try:
-            e = construct_train(tr, precision, lang, ring_mm=ring, va_mm=60.0 * ring / 80.0 * LONGER_VA,
-                                sun_segment_mm=S)
-        except GraphplanError:
-            return d
-        pe = _plan(e, lang)
-        w2, h2 = _size(pe)
-        if w2 <= room_w and h2 <= room_h and e.h >= h_min:
-            ok = e.ratio_bound < v.ratio_bound - 1e-12 and abs(e.segments["H"]) >= abs(v.segments["H"])
-            return (e, pe) if ok else d
-        # (h = S·yA/vA with vA as drawn, μv rounded: back to the first pictures' h, and within the width)
-        S *= min(0.97, v.h / e.h if h2 > room_h else 1.0, room_w / w2)
-    return d
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
@@ -754,6 +753,8 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         pages = zones(drawings, side, f, width)
         if pages is not None:
             break
+    if pages is not None and mesh is not None and plan is not None:
+        pages = _lambda_filling(g, sol, mesh, vel, plan, f, lang, pages, k)
     if pages is None:                     # a set of sheets (sheets/gearset.py)
         one = mesh
 
@@ -791,6 +792,38 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
                 if abs(v1.segments["H"]) >= 2 * short:                   # (it doubles: review 13 #9's 3,8 mm)
                     vel, pages = v1, p1
     return mesh, vel, pages
+
+
+def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k: float):
+    """The one-sheet pages with the λ diagrams in the row under the meshing drawn at the largest GOST
+    2.302 scale of N1N2 — no larger than the meshing's — with which the row (the λ diagrams, then the
+    planetary pictures) still fits the drawings' zone, λ's unit grown with it (``lambda_unit``); the
+    sheet composed again and measured (``zones``), ``pages`` as they were where no larger scale fits.
+    Stop 49/50: the planetary pictures' plan of angular velocities is as wide as its round μω allows
+    (the ω1 segment is ω1/μω), and the λ diagrams at 2,5:1 (N1N2 150 mm, 190 × 165 mm) left the row a
+    245 × 108-mm blank under them and 89 mm unused beside the pictures on GEARS50's A1; at 4:1 they
+    take the row's width (N1N2 240 mm, λ 40 mm a unit). ``k``: the tables' size the pages were
+    composed with."""
+    region = field_of(f)
+    if f.name != "A1" or beside(region, mesh, lang):
+        return pages
+    from graphplan.graphic.gears import ENLARGE, REDUCE
+    now = mesh.lam.scales["mu_l"]
+    top = meshing_leaf(mesh, lang).bounds()
+    row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+    old = mesh.lam
+    for scale in sorted(ENLARGE + REDUCE, reverse=True):
+        mu_x = 0.001 / scale
+        if mu_x < mesh.mu_l - 1e-12 or mu_x >= now - 1e-12:
+            continue
+        mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mu_x), mu_x)
+        drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
+        side, width = _column(tables, [x for part in parts for x in part], k)
+        got = zones(drawings, side, f, width)
+        if got is not None:
+            return got
+    mesh.lam = old
+    return pages
 
 
 def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list[Leaf], list[list[str]]]:
