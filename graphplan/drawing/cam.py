@@ -319,28 +319,35 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
                                    np.maximum(ay, by), np.minimum(ay, by))
         return got[1:]
 
+    def bundle(lines) -> tuple:
+        """The lines' segments as one set of arrays, each segment's line by its index: ``hits`` asks
+        of all of them at once (a line at a time, the cam sheet spent a fifth of its time here)."""
+        parts = [segments(q) for q in lines]
+        owner = np.concatenate([np.full(len(p[0]), i) for i, p in enumerate(parts)]) if parts else np.zeros(0, int)
+        return lines, owner, [np.concatenate([p[j] for p in parts]) if parts else np.zeros(0) for j in range(8)]
+
     def hits(box, lines) -> list:
+        """The lines (a ``bundle``) within the check's paper of the box, in their order: a line whose
+        segment near the box is upright, or the part of a segment within the box's x range reaching
+        into its y range."""
         pad = 0.6        # the check's 0.3 mm of paper (labels.CHECK) past a thin line's half width
         x0, y_0, x1, y_1 = box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
-        out = []
-        for q in lines:
-            ax, ay, bx, by, hx, lx, hy, ly = segments(q)
-            near = ~((hx < x0) | (lx > x1) | (hy < y_0) | (ly > y_1))
-            if not near.any():
-                continue
-            ax, ay, bx, by = ax[near], ay[near], bx[near], by[near]
-            if (np.abs(bx - ax) < 1e-9).any():
-                out.append(q)
-                continue
+        qs, owner, (ax, ay, bx, by, hx, lx, hy, ly) = lines
+        near = np.nonzero(~((hx < x0) | (lx > x1) | (hy < y_0) | (ly > y_1)))[0]
+        if not len(near):
+            return []
+        ax, ay, bx, by, own = ax[near], ay[near], bx[near], by[near], owner[near]
+        upright = np.abs(bx - ax) < 1e-9
+        with np.errstate(all="ignore"):      # an upright segment's quotients are not read
             # the part of each segment within the box's x range: does it reach into its y range?
             ua, ub = (x0 - ax) / (bx - ax), (x1 - ax) / (bx - ax)
             u0, u1 = np.maximum(np.minimum(ua, ub), 0.0), np.minimum(np.maximum(ua, ub), 1.0)
             ya, yb = ay + u0 * (by - ay), ay + u1 * (by - ay)
-            if (~((np.maximum(ya, yb) < y_0) | (np.minimum(ya, yb) > y_1))).any():
-                out.append(q)
-        return out
+            reach = ~((np.maximum(ya, yb) < y_0) | (np.minimum(ya, yb) > y_1))
+        return [qs[i] for i in np.unique(own[upright | reach])]
 
     taken: list[tuple] = []    # the numbers lettered on this axis so far (their ink boxes)
+    bundled = None             # (this diagram's lines, every line) as ``bundle``s
 
     def crowded(box) -> bool:
         """Whether a number's box comes within NUMBER_GAP of one already lettered (review 13 #5: "24",
@@ -352,12 +359,14 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
         k = ks[-1]
         right = drawn.get(k + 1, 0.0)
         up = right < -0.25 or (abs(right) <= 0.25 and drawn.get(k, 0.0) < -0.25)
-        lines = [q for q in rec.items if q.kind in ("segment", "polyline")
-                 and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]
+        if bundled is None:      # the lines change only where a number breaks one (below)
+            bundled = (bundle([q for q in rec.items if q.kind in ("segment", "polyline")
+                               and q.step.startswith((f"{key} at", f"{key}(φ)", f"chord {key}", f"mean {key}"))]),
+                       bundle([q for q in rec.items if q.kind in ("segment", "polyline", "vector")]))
+        lines, everything = bundled
         best = None
         anchor, xs = "start", x[k] + NUMBER_OFF
         # left of a division any line counts (the pole's rays end at division 0's ordinate axis)
-        everything = [q for q in rec.items if q.kind in ("segment", "polyline", "vector")]
         # right of the division on either side of the axis; where the curve crosses the axis there
         # (a steep zero of d²s/dφ² mid-phase runs through both), left of it
         # (then nearer the division, 0.3 mm off it: between a jump's vertical and a neighbour's
@@ -383,6 +392,7 @@ def _division_numbers(rec: Record, x: np.ndarray, y0: float, marks: list[tuple[l
             y = y0 + 1.2 if up else y0 - 1.2 - NUMBER * BELOW
             best = (y, None, [])
         y, box, broken = best
+        bundled = None if broken else bundled
         for q in broken:           # a horizontal thin line: two pieces, 1.5 mm clear of the number
             (ax, ay), (bx, by) = q.points
             lo, hi = sorted((ax, bx))

@@ -58,6 +58,15 @@ class Primitive:
                          self.radius * k, self.angles, self.anchor, self.width)
 
     def bounds(self) -> tuple[float, float, float, float]:
+        """The primitive's box (x0, y0, x1, y1), mm: its lines' (an arrowhead's corners included), a
+        text's advance box and ink. Once per primitive (it is frozen): a sheet's layout asks the same
+        drawings' boxes again and again (a cam sheet's search, a tenth of its time)."""
+        got = self.__dict__.get("_bounds")
+        if got is None:
+            got = self.__dict__["_bounds"] = self._bounds()
+        return got
+
+    def _bounds(self) -> tuple[float, float, float, float]:
         if len(self.points) == 2 and self.kind not in ("circle", "arc", "text"):     # a segment, a vector
             (ax, ay), (bx, by) = self.points
             if self.kind == "vector":
@@ -96,7 +105,10 @@ class Primitive:
         Other primitives: their bounds."""
         if self.kind != "text":
             return self.bounds()
-        return _ink(self.text, self.size, self.anchor, self.points[0])
+        got = self.__dict__.get("_ink")
+        if got is None:
+            got = self.__dict__["_ink"] = _ink(self.text, self.size, self.anchor, self.points[0])
+        return got
 
 
 # characters osifont lacks, replaced on the drawing (records keep the real text)

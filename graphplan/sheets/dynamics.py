@@ -1298,6 +1298,18 @@ def widened(fw: Flywheel, length: float, zones: list[tuple[dict[str, Leaf], Leaf
     return None
 
 
+def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
+    """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
+    chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
+    other sheets number by — the analysis and the construction only (the drawing in both
+    languages, the band and the tables were half the time)."""
+    dyn = _analysed(st, getattr(args, "delta", None))
+    _refuse_a_table_taller_than(st, dyn, f, args)
+    if construction(st, dyn, f, args)[3] != "set":
+        return 1
+    return len(build_dynamics_sheet(st, f, args).pages)
+
+
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     """Sheet 3: the flywheel construction at the scales ``construction`` chooses, in zones: the
     moments and the work; the band of the energy–mass diagram built by projection (ΔT(φ) to its

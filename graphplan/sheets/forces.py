@@ -1756,6 +1756,15 @@ def _arranged(tree, region):
     yield from arrange(tree.children[-1], (x0, y0, x1, top))
 
 
+def count_forces_sheets(st: Study, f: Form, options) -> int:
+    """``len(build_forces_sheet(st, f, options).pages)`` without drawing it where ``plan`` makes it one
+    sheet (that builder then lays ``pages = [items]``): what the scene's other sheets number by."""
+    opts = options_of(options)
+    if plan(st, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))[0].sheets == 1:
+        return 1
+    return len(build_forces_sheet(st, f, options).pages)
+
+
 def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 2: the force analysis at the scene's force position, composed in zones (a set of sheets
     where a small format cannot hold it)."""

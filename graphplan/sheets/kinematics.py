@@ -418,6 +418,16 @@ def set_notes(lines: list[str], width: float) -> Record:
     return rec
 
 
+def count_kinematics_sheets(st: Study, f: Form, options) -> int:
+    """``len(build_kinematics_sheet(st, f, options).pages)`` without drawing it where ``plan`` makes it
+    one sheet (that builder then lays ``pages = [items]``): what the scene's other sheets number by."""
+    opts = options_of(options)
+    check_positions(st, opts)
+    if plan(st, f, _options(opts))[0].sheets == 1:
+        return 1
+    return len(build_kinematics_sheet(st, f, options).pages)
+
+
 def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
     """Sheet 1: everything of the kinematic analysis at the scales ``plan`` chose, in the zones of the
     composition (one sheet), or flowing over a set of sheets."""

@@ -47,6 +47,21 @@ def build_gears_sheet(gears, f, options) -> Sheet:
     return build(gears, f, options)
 
 
+def count_kinematics_sheets(st, f, options) -> int:
+    from graphplan.sheets.kinematics import count_kinematics_sheets as count
+    return count(st, f, options)
+
+
+def count_forces_sheets(st, f, options) -> int:
+    from graphplan.sheets.forces import count_forces_sheets as count
+    return count(st, f, options)
+
+
+def count_dynamics_sheets(st, f, options) -> int:
+    from graphplan.sheets.dynamics import count_dynamics_sheets as count
+    return count(st, f, options)
+
+
 BUILDERS: dict[str, Callable[..., Sheet]] = {
     "kinematics": build_kinematics_sheet,
     "forces": build_forces_sheet,
@@ -58,6 +73,14 @@ BUILDERS: dict[str, Callable[..., Sheet]] = {
 # -- the sheets as one project (docs/scenes.md, "The sheets of a scene") -------------------------
 
 RAW = dict(BUILDERS)        # each kind's sheets numbered as their own set (counted by ``pages_of``)
+
+# each kind's sheet count without drawing a document its plan makes one sheet (``pages_of``: the
+# kinematics sheet of a scene composed its forces and dynamics documents whole only to count them)
+COUNTS: dict[tuple[str, Callable[..., Sheet]], Callable[..., int]] = {
+    ("kinematics", build_kinematics_sheet): count_kinematics_sheets,
+    ("forces", build_forces_sheet): count_forces_sheets,
+    ("dynamics", build_dynamics_sheet): count_dynamics_sheets,
+}
 
 ORDER = ("kinematics", "forces", "dynamics", "gears", "cam")   # the course project's documents in order
 
@@ -208,8 +231,9 @@ def pages_of(kind: str, scene, f, options) -> int:
         n = _read_disk(key)
         if n is None:
             opts = options_of(options)
-            n = len(RAW[kind](scene, f, SheetOptions(opts.positions, opts.accel, opts.precision,
-                                                     opts.lang or "uk", kind)).pages)
+            raw = SheetOptions(opts.positions, opts.accel, opts.precision, opts.lang or "uk", kind)
+            count = COUNTS.get((kind, RAW[kind]))        # (a builder stood in for is asked itself)
+            n = count(scene, f, raw) if count is not None else len(RAW[kind](scene, f, raw).pages)
         remember_pages(key, n)
     return _PAGES[key]
 
