@@ -154,6 +154,19 @@ def scene_study(text: str):
     return study(loads(text, "<test>"))
 
 
+def composed(kind: str, scene, f, options):
+    """The kind's sheet (or set) as its builder composes it (``sheets.sheet.RAW``), not numbered in the
+    scene's project: ``BUILDERS`` numbers it by composing every other document of the scene to count
+    its sheets (``pages_of``: a six-bar's force sheet composed for a kinematics sheet's "Аркушів" takes
+    20 s of CPU, three quarters of such a test). For tests that read the drawings, tables and notes;
+    the numbering itself is checked in test_sheetset.py and test_dynamics_review47.py. The count is
+    remembered as ``BUILDERS`` would (a numbered sheet of the scene built later reads it)."""
+    from graphplan.sheets import sheet as S
+    sheet = S.RAW[kind](scene, f, options)
+    S.remember_pages(S._key(kind, scene, f, options), len(sheet.pages))
+    return sheet
+
+
 def derivative(f, phi_deg: np.ndarray, omega: float, order: int = 1, h_deg: float = 0.05):
     """d/dt (order 1) or d²/dt² (order 2) of f(φ) at constant ω, five-point stencils in φ."""
     h = np.radians(h_deg)
