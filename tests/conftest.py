@@ -1,6 +1,7 @@
 """Shared helpers: the examples, a scene builder and finite differences of exact positions."""
 from __future__ import annotations
 
+import functools
 import os
 from pathlib import Path
 
@@ -148,6 +149,18 @@ def example(name: str):
         from graphplan.model.gears import load as load_gears
         return load_gears(ROOT / "examples" / f"{name}.toml")
     return study(load(ROOT / "examples" / f"{name}.toml"))
+
+
+@functools.lru_cache(maxsize=48)
+def example_sheet(name: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk"):
+    """An example's sheet (or set) as ``BUILDERS`` makes it (numbered in its project), built once per
+    worker and shared by every test module that reads it (an example's sheet costs 3–12 s of CPU and
+    a dozen modules read the same ones). Read it, never change it; a test of determinism builds its
+    own second copy."""
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
 
 
 def scene_study(text: str):

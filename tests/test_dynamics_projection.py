@@ -15,11 +15,11 @@ TOL = 0.1      # mm
 
 @pytest.fixture(scope="module", params=[("shaper", "uk"), ("slotter", "en")])
 def sheet(request):
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
+    from dataclasses import replace
+
+    from conftest import example_sheet
     name, lang = request.param
-    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
-    out = BUILDERS["dynamics"](example(name), form("A1"), args)
+    out = replace(example_sheet(name, "dynamics", "A1", lang))   # a copy of the shared sheet, named
     out.name = name
     return out
 
