@@ -1,6 +1,7 @@
 """Shared helpers: the examples, a scene builder and finite differences of exact positions."""
 from __future__ import annotations
 
+import functools
 import os
 from pathlib import Path
 
@@ -157,8 +158,33 @@ def example(name: str):
     return study(load(ROOT / "examples" / f"{name}.toml"))
 
 
+@functools.lru_cache(maxsize=48)
+def example_sheet(name: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk"):
+    """An example's sheet (or set) as ``BUILDERS`` makes it (numbered in its project), built once per
+    worker and shared by every test module that reads it (an example's sheet costs 3–12 s of CPU and
+    a dozen modules read the same ones). Read it, never change it; a test of determinism builds its
+    own second copy."""
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+
+
 def scene_study(text: str):
     return study(loads(text, "<test>"))
+
+
+def composed(kind: str, scene, f, options):
+    """The kind's sheet (or set) as its builder composes it (``sheets.sheet.RAW``), not numbered in the
+    scene's project: ``BUILDERS`` numbers it by composing every other document of the scene to count
+    its sheets (``pages_of``: a six-bar's force sheet composed for a kinematics sheet's "Аркушів" takes
+    20 s of CPU, three quarters of such a test). For tests that read the drawings, tables and notes;
+    the numbering itself is checked in test_sheetset.py and test_dynamics_review47.py. The count is
+    remembered as ``BUILDERS`` would (a numbered sheet of the scene built later reads it)."""
+    from graphplan.sheets import sheet as S
+    sheet = S.RAW[kind](scene, f, options)
+    S.remember_pages(S._key(kind, scene, f, options), len(sheet.pages))
+    return sheet
 
 
 def derivative(f, phi_deg: np.ndarray, omega: float, order: int = 1, h_deg: float = 0.05):

@@ -141,9 +141,10 @@ def test_many_new_mechanisms(mechanism, kind, fmt):
 def test_a_dynamics_sheet_that_cannot_hold_its_diagrams_becomes_a_set():
     """A fast crank-slider with a small resistance: the energy–mass diagram's tangents cut the ΔT
     axis far apart; the diagrams are drawn smaller, else carried over to a second sheet — never
-    past the frame."""
+    past the frame. (Composed alone, ``conftest.composed``: the project's numbering is not read here.)"""
+    from conftest import composed
     text = crank_slider(0.1875, 3.0, 0.0, 448.0, 10.0, 200.0, 1.0)
-    sheet = _sheet(text, "dynamics")
+    sheet = composed("dynamics", study(loads(text, "<generated>")), form("A1"), SheetOptions(sheet="dynamics"))
     assert defects(sheet) == []
 
 

@@ -244,13 +244,9 @@ def test_a_scene_without_resistance_is_refused():
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_the_third_sheet_holds_every_block_and_no_label_overlaps(lang):
-    from types import SimpleNamespace
-
+    from conftest import example_sheet
     from graphplan.sheets.compose import defects
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
-    sheet = BUILDERS["dynamics"](example("slotter"), form("A1"), args)
+    sheet = example_sheet("slotter", "dynamics", "A1", lang)       # shared with the modules that read it
     names = {p.name for p in sheet.placed}
     assert names == {"moments", "wittenbauer", "energy", "inertia", "speed", "positions table",
                      "flywheel table", "motor table", "notes"}

@@ -28,9 +28,10 @@ def _args(lang: str = "uk"):
 
 @pytest.fixture(scope="module")
 def dipping():
+    """Composed alone (``conftest.composed``: no test here reads the project's numbering)."""
+    from conftest import composed
     from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    return BUILDERS["dynamics"](scene_study(DIPPING), form("A1"), _args())
+    return composed("dynamics", scene_study(DIPPING), form("A1"), _args())
 
 
 def _numbers(rec):

@@ -15,11 +15,11 @@ TOL = 0.1      # mm
 
 @pytest.fixture(scope="module", params=[("shaper", "uk"), ("slotter", "en")])
 def sheet(request):
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
+    from dataclasses import replace
+
+    from conftest import example_sheet
     name, lang = request.param
-    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
-    out = BUILDERS["dynamics"](example(name), form("A1"), args)
+    out = replace(example_sheet(name, "dynamics", "A1", lang))   # a copy of the shared sheet, named
     out.name = name
     return out
 
@@ -138,12 +138,11 @@ def test_the_phi_of_delta_t_stands_at_its_arrow_clear_of_the_projections():
     through its box."""
     from shapely.geometry import LineString, box
 
-    from conftest import scene_study
+    from conftest import composed, scene_study
     from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
     from review_scenes import PRESS_EN
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="en", sheet="dynamics")
-    out = BUILDERS["dynamics"](scene_study(PRESS_EN), form("A1"), args)
+    out = composed("dynamics", scene_study(PRESS_EN), form("A1"), args)      # not numbered: not read here
     rec = next(p.record for p in out.placed
                if any(q.step == "axes ΔT" and q.kind == "text" and q.text == "φ" for q in p.record.items))
     phi = next(q for q in rec.items if q.step == "axes ΔT" and q.kind == "text" and q.text == "φ")
@@ -158,12 +157,11 @@ def test_close_projections_draw_no_striped_band():
     """SIXBAR7's ΔT of positions 16–22 lie 0,4–1,7 mm apart: their dashed projections across the gap
     made a striped band. The lines drawn through (from ΔT(φ)'s point to the curve's, or I*(φ)'s up to
     it) stand ≥ CROWDED apart; each other point keeps its short projection at both ends."""
-    from conftest import scene_study
+    from conftest import composed, scene_study
     from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
     from review_scenes import SIXBAR7
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
-    out = BUILDERS["dynamics"](scene_study(SIXBAR7), form("A1"), args)
+    out = composed("dynamics", scene_study(SIXBAR7), form("A1"), args)       # not numbered: not read here
     energy, inertia, witt = (_placed(out, n) for n in ("energy", "inertia", "wittenbauer"))
     dT = _points(energy, "ΔT read")
     n = len(dT) - 1

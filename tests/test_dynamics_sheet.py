@@ -11,7 +11,7 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from conftest import scene_study
+from conftest import composed, scene_study
 from graphplan.util.markup import plain, runs
 
 SIXBAR = """title = "Шестиланковий важільний механізм преса"
@@ -178,14 +178,16 @@ LETTERED = {"notes", "positions table", "flywheel table", "motor table", "speed"
 
 @pytest.fixture(scope="module")
 def sheets():
+    """The three dynamics sheets, each composed alone (``conftest.composed``; no test here reads the
+    project's numbering, which would compose the six-bar's and the crank-slider's kinematics and force
+    sheets to count them: 24 of the fixture's 31 s of CPU)."""
     from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
     out = {}
     for name, text, langs in (("sixbar", SIXBAR, ("uk", "en")), ("offset", OFFSET, ("uk",))):
         st = scene_study(text)
         for lang in langs:
             args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
-            out[name, lang] = BUILDERS["dynamics"](st, form("A1"), args)
+            out[name, lang] = composed("dynamics", st, form("A1"), args)
     return out
 
 

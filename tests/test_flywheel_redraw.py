@@ -70,11 +70,11 @@ def test_given_divisions_are_kept(press):
 
 
 def test_the_press_sheets_rows_check():
+    from conftest import composed
     from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
     st = scene_study(PRESS)
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
-    sheet = BUILDERS["dynamics"](st, form("A1"), args)
+    sheet = composed("dynamics", st, form("A1"), args)        # not numbered (the project's count not read)
     texts = {p.name: [i.text for i in p.record.items if i.kind == "text"] for p in sheet.placed}
     notes = " ".join(plain(t) for t in texts["notes"])
     assert "побудовано заново" not in notes

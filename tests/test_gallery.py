@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, example_sheet
 from graphplan.cli.gallery import available, build_set, file_names
 
 FONT_DATA = re.compile(r"url\(data:font/woff;base64,[A-Za-z0-9+/=]+\)")
@@ -22,7 +22,10 @@ def drawing(svg: str) -> str:
 
 @pytest.mark.parametrize("scene,kind,lang,name,fmt", available())
 def test_gallery_sheet_is_current(scene, kind, lang, name, fmt):
-    pages = build_set(scene, kind, lang, fmt)
+    """(The set as ``build_set`` makes it — ``BUILDERS`` on the example with the default options —
+    built once per worker for every module that reads it: ``conftest.example_sheet``;
+    test_the_gallery_builds_its_sets_as_the_tests_do checks that they are one.)"""
+    pages = [page.svg() for page in example_sheet(scene, kind, fmt, lang).pages]
     for file, text in zip(file_names(name, len(pages)), pages):
         path = ROOT / "drawings" / file
         assert path.exists(), f"drawings/{file} is missing: run python -m graphplan.cli.gallery"
@@ -30,6 +33,12 @@ def test_gallery_sheet_is_current(scene, kind, lang, name, fmt):
             f"drawings/{file} is out of date: run python -m graphplan.cli.gallery"
     stem = name[:-len(".svg")]
     assert not (ROOT / "drawings" / f"{stem}-{len(pages) + 1}.svg").exists(), "a stale sheet of the set"
+
+
+def test_the_gallery_builds_its_sets_as_the_tests_do():
+    """``build_set`` (what `python -m graphplan.cli.gallery` writes) draws the very sheets the tests
+    share (``conftest.example_sheet``), on one of them (the four-bar's kinematics, a few seconds)."""
+    assert build_set("four_bar", "kinematics", "uk", "A1") == [p.svg() for p in example_sheet("four_bar").pages]
 
 
 def test_font_metrics_are_the_fonts():

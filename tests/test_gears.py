@@ -613,11 +613,9 @@ def test_svg_constructions(tmp_path):
 # -- the sheet -------------------------------------------------------------------------------------------
 
 def gear_sheet(name, lang, fmt="A1"):
-    from graphplan.model.gears import load
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    return BUILDERS["gears"](load(ROOT / "examples" / f"{name}.toml"), form(fmt), SheetOptions(lang=lang, sheet="gears"))
+    """The example's gear sheet, shared with the other modules that read it (``conftest.example_sheet``)."""
+    from conftest import example_sheet
+    return example_sheet(name, "gears", fmt, lang)
 
 
 @pytest.mark.parametrize("name, lang, fmt", [("gears", "uk", "A1"), ("gears_b", "en", "A1"), ("gears", "uk", "A3")])

@@ -129,14 +129,9 @@ def test_the_meshing_scale_is_standard(z1, z2, m, x1, x2, height, width):
 
 @pytest.mark.parametrize("name", ["gears", "gears_b"])
 def test_the_sheet_says_its_standard_scale(name):
-    from conftest import ROOT
-    from graphplan.model.gears import load
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    g = load(ROOT / "examples" / f"{name}.toml")
+    from conftest import example_sheet
     lang = "en" if name == "gears_b" else "uk"
-    sheet = BUILDERS["gears"](g, form("A1"), SheetOptions(lang=lang, sheet="gears"))
+    sheet = example_sheet(name, "gears", "A1", lang)      # shared with the modules that read it
     texts = [p.text for p in sheet.record.items if p.kind == "text"]
     m_mm = 4.0 if name == "gears_b" else 5.0
     shown = [g for g in GOST if g >= 1 and 40.0 <= 2.25 * m_mm * g <= 60.0 and f"{g:g}:1" in texts]

@@ -14,15 +14,12 @@ import struct
 import subprocess
 import sys
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from conftest import ROOT, example
+from conftest import ROOT, example_sheet
 from graphplan.drawing.fonts import FAMILY, font_path
-from graphplan.sheets.form import form
-from graphplan.sheets.sheet import BUILDERS
 
 BARE_FONTCONFIG = """<?xml version="1.0"?>
 <!DOCTYPE fontconfig SYSTEM "urn:fontconfig:fonts.dtd">
@@ -31,8 +28,8 @@ BARE_FONTCONFIG = """<?xml version="1.0"?>
 
 
 def sheet(name: str = "crank_slider", fmt: str = "A1", lang: str = "uk"):
-    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="kinematics")
-    return BUILDERS["kinematics"](example(name), form(fmt), args)
+    """The example's kinematics sheet, shared with the other modules that read it (``conftest.example_sheet``)."""
+    return example_sheet(name, "kinematics", fmt, lang)
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,7 @@ import sys
 import pytest
 from shapely.geometry import box
 
-from conftest import EXAMPLES, ROOT, example
+from conftest import EXAMPLES, ROOT, example, example_sheet
 from graphplan.sheets.compose import defects
 from graphplan.sheets.sheet import BUILDERS
 from graphplan.sheets.form import form, title_block_box
@@ -21,6 +21,11 @@ ARGS = dict(positions=None, accel=None, precision=0.5, sheet="kinematics")
 
 
 def build(name: str, kind: str = "kinematics", lang: str = "uk", fmt: str = "A1"):
+    """The example's sheet, shared with the other modules that read it (``conftest.example_sheet``)."""
+    return example_sheet(name, kind, fmt, lang)
+
+
+def build_anew(name: str, kind: str = "kinematics", lang: str = "uk", fmt: str = "A1"):
     return BUILDERS[kind](example(name), form(fmt), argparse.Namespace(**{**ARGS, "lang": lang, "sheet": kind}))
 
 
@@ -65,7 +70,7 @@ def test_sheet_content_and_language():
 
 
 def test_deterministic_bytes():
-    assert build("four_bar").svg() == build("four_bar").svg()
+    assert build("four_bar").svg() == build_anew("four_bar").svg()
 
 
 def test_formats_by_suffix(tmp_path):

@@ -10,17 +10,17 @@ import re
 import numpy as np
 import pytest
 
-from conftest import ROOT, example, scene_study
+from conftest import ROOT, example, example_sheet, scene_study
 from graphplan.cli.gallery import SHEETS
 from graphplan.sheets.compose import SheetOptions
 from graphplan.sheets.form import form
-from graphplan.sheets.sheet import BUILDERS
 from graphplan.util.markup import flat, runs
 from graphplan.util.words import num
 
 
 def build(name: str, kind: str = "kinematics", lang: str = "uk", fmt: str = "A1"):
-    return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+    """The example's sheet, shared with the other modules that read it (``conftest.example_sheet``)."""
+    return example_sheet(name, kind, fmt, lang)
 
 
 def texts(sheet) -> list[str]:

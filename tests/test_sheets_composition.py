@@ -14,7 +14,7 @@ import sys
 import numpy as np
 import pytest
 
-from conftest import EXAMPLES, ROOT, example
+from conftest import EXAMPLES, ROOT, example, example_sheet
 from graphplan.cli.gallery import available, file_names
 from graphplan.cli.main import main
 from graphplan.sheets.compose import SheetOptions, defects
@@ -135,7 +135,7 @@ def test_the_fallback_check_sees_a_caption_set_as_one_piece(tmp_path):
 @pytest.mark.parametrize("scene,kind,lang,name,fmt", available())
 def test_gallery_sets_are_composed_cleanly(scene, kind, lang, name, fmt):
     """Each gallery set as built: no defect a teacher would send back (sheets.compose.defects)."""
-    sheet = BUILDERS[kind](example(scene), form(fmt), SheetOptions(lang=lang, sheet=kind))
+    sheet = example_sheet(scene, kind, fmt, lang)
     assert defects(sheet) == []
 
 
@@ -178,7 +178,8 @@ def _texts(sheet) -> list[str]:
 
 
 def _build(name, kind, fmt):
-    return BUILDERS[kind](example(name), form(fmt), SheetOptions(sheet=kind))
+    """The example's sheet, shared with the other modules that read it (``conftest.example_sheet``)."""
+    return example_sheet(name, kind, fmt)
 
 
 def _check_set(sheet, fmt):
@@ -419,7 +420,7 @@ def test_one_scale_symbol_one_value(name):
     """The plans' μ_v, μ_a and the diagrams' μ_V, μ_A (μ_ω, μ_ε) are named apart: no μ symbol on a
     kinematics sheet carries two values, in either language; the diagrams' velocity scale is on it."""
     for lang in ("uk", "en"):
-        sheet = BUILDERS["kinematics"](example(name), form("A1"), SheetOptions(lang=lang))
+        sheet = example_sheet(name, "kinematics", "A1", lang)
         mus = mu_values(sheet)
         assert {"l", "v", "a", "t"} <= set(mus), mus
         assert len(set(mus) - {"l", "v", "a", "t"}) >= 3, mus      # the diagrams' own s, v, a scales

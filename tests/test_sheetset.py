@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, composed, example_sheet
 from coursework_scenes import crank_slider, shaper
 from graphplan.exact.positions import study
 from graphplan.model.scene import load, loads
@@ -36,8 +36,9 @@ def _block(page) -> list:
 
 @pytest.fixture(scope="module")
 def shaper_a1():
-    st = study(load(EXAMPLES / "shaper.toml"))
-    return {k: BUILDERS[k](st, form("A1"), SheetOptions(sheet=k)) for k in ("kinematics", "forces", "dynamics")}
+    """The shaper's three A1 sheets as numbered in its project, shared with the other modules that
+    read them (``conftest.example_sheet``)."""
+    return {k: example_sheet("shaper", k) for k in ("kinematics", "forces", "dynamics")}
 
 
 def test_a_scenes_sheets_are_numbered_as_one_project(shaper_a1):
@@ -241,12 +242,14 @@ def lettering_of(svg: str) -> list[str]:
 
 
 def _sheets_of(text: str | Path, kind: str, lang: str):
+    """The sheet composed alone (``conftest.composed``: the markup tests read its lettering, not the
+    project's numbering, which would compose the scene's other documents to count them)."""
     if kind == "cam":
         from graphplan.model.cam import load as load_cam
         scene = load_cam(text)
     else:
         scene = study(load(text) if isinstance(text, Path) else loads(text, "<generated>"))
-    return BUILDERS[kind](scene, form("A1"), SheetOptions(sheet=kind, lang=lang))
+    return composed(kind, scene, form("A1"), SheetOptions(sheet=kind, lang=lang))
 
 
 @pytest.mark.parametrize("kind", ["kinematics", "forces", "dynamics"])

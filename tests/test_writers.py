@@ -74,13 +74,8 @@ def test_svg_text_is_byte_for_byte_what_svgwrite_writes(keyset, paths):
 
 
 def test_svg_of_a_gallery_sheet_is_what_svgwrite_writes():
-    from graphplan.exact.positions import study
-    from graphplan.model.scene import load
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    sheet = BUILDERS["kinematics"](study(load(EXAMPLES / "crank_slider.toml")), form("A3"),
-                                   SheetOptions(lang="uk", sheet="kinematics"))
+    from conftest import example_sheet
+    sheet = example_sheet("crank_slider", "kinematics", "A3")     # shared with the modules that read it
     f = sheet.form
     assert render(sheet.record, f.width, f.height, sheet.record.title) == \
         reference_render(sheet.record, f.width, f.height, sheet.record.title)
