@@ -265,3 +265,32 @@ def test_the_a1_table_takes_rows_of_10_mm_where_its_column_has_room(tmp_path):
     assert np.median(steps) == pytest.approx(10.0, abs=0.05)
     assert box["table"][1] >= keep_out(f)[3] - 1e-6
     assert box["profile"][1] - box["table"][3] < 90.0
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_table_1_gives_both_sides_of_the_jumps_of_ds_dphi(cam50, lang):
+    """At the linear rise's ends ds/dφ jumps 0 → h/Φ (φ = 0) and h/Φ → 0 (φ = Φ): Table 1's rows there
+    give both sides in the exact, ruler-ordinate and graphical columns, as the notes write a jump
+    («0 → 20,37»), right-aligned as the column's numbers; the rows between give h/Φ alone."""
+    from graphplan.report.cam import cam_json
+    from graphplan.sheets.cam import positions_table
+    from graphplan.util.markup import plain
+    sol, g = cam50
+    doc = cam_json(sol, g, "cam50")
+    comma = (lambda t: t.replace(".", ",")) if lang == "uk" else (lambda t: t)      # noqa: E731
+    v = H / RISE * 1000                                     # 20.372 mm/rad, the law's closed form
+    y = round(v / 1000 / g.mu_v / 0.5) * 0.5                # the ruler's ordinate, to its 0.5 mm
+    exact, ruler, graphical = (comma(f"{x:.{d}f}") for x, d in ((v, 2), (y, 1), (y * g.mu_v * 1000, 2)))
+    rec = positions_table(doc, lang)
+    rows: dict[float, list] = {}
+    for it in rec.items:
+        if it.kind == "text" and it.size < 3.0:
+            rows.setdefault(round(it.points[0][1], 1), []).append(it)
+    body = [sorted(r, key=lambda i: i.points[0][0]) for _, r in sorted(rows.items(), reverse=True)][1:]
+    by_number = {plain(r[0].text): r for r in body}
+    for number, want in (("0", (f"0 → {exact}", f"{comma('0.0')} → {ruler}", f"0 → {graphical}")),
+                         ("8", (f"{exact} → 0", f"{ruler} → {comma('0.0')}", f"{graphical} → 0")),
+                         ("4", (exact, ruler, graphical))):
+        cells = by_number[number]
+        assert tuple(plain(c.text) for c in cells[6:9]) == want
+        assert all(c.anchor == "end" for c in cells[6:9])

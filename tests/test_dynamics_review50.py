@@ -164,9 +164,10 @@ def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(s
     periodic motion integrated here has δ_дв = 0.0156 < 0.05: Table 2's last row, the note under it
     and the notes' motor sentence all say no flywheel, and the ω(φ) legend prints the same δ_дв."""
     from graphplan.report.dynamics import design_note, motor_note
-    from graphplan.sheets.dynamics import flywheel_table
+    from graphplan.drawing.flywheel import speed_record
+    from graphplan.sheets.dynamics import flywheel_table, motor_table
     from graphplan.util.markup import plain
-    _, _, doc = six
+    _, f, doc = six
     mo = doc["motion"]
     assert (mo["omega_max"] - mo["omega_min"]) / mo["omega_mean"] == pytest.approx(DELTA, rel=1e-6)
     assert mo["omega_mean"] == pytest.approx(W1, rel=1e-9)
@@ -208,6 +209,15 @@ def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(s
         assert ("не потрібен" if lang == "uk" else "no flywheel") in said
         shown = f"{delta:.3g}".replace(".", "," if lang == "uk" else ".")      # δ_дв to 3 figures, 0,0156
         assert said.count(f"{shown} < 0{',' if lang == 'uk' else '.'}05") == 2, said
+        # one value written one way on the whole sheet (stop 50: the ω(φ) legend and Table 3 printed
+        # 0,01559 beside Table 2's and the notes' 0,0156): every δ_дв the sheet prints is ``shown``
+        legend = [plain(it.text) for it in speed_record(f, lang, width=330.0, height=160.0).items
+                  if it.kind == "text" and ("δ_дв" in plain(it.text) or "δ_mot" in plain(it.text))]
+        motor = [plain(it.text) for it in motor_table(doc, lang).items if it.kind == "text"]
+        printed = (re.findall(r"δ_(?:дв|mot) = ([\d,.]+?),? ", " ".join(legend)) +
+                   [motor[k + 1].split("; ")[1] for k, c in enumerate(motor) if re.search(r"; δ_(?:дв|mot)$", c)] +
+                   re.findall(r"δ_(?:дв|mot) = ([\d,.]+) <", " ".join(cells) + " " + said))
+        assert len(printed) >= 5 and set(printed) == {shown}, printed     # legend, Tables 3 and 2, notes
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])

@@ -218,3 +218,31 @@ def test_own_stroke_and_coupler_point_acceleration(own_plans):
     assert abs(got["E"] - rigid) <= 1.0 * mu          # the similar triangle, to a ruler division
     for k in "ABEF":
         assert abs(got[k] - acc[k]) <= 3 * 0.5 * mu + 0.01 * abs(acc[k]), k
+
+
+def test_the_stones_pin_c_is_numbered_at_every_position(plans):
+    """Stone 4 rides on the rocker's pin C (not the crank pin): its positions on C's arc (the closed
+    form's circle of radius l_O2C about O2) are dotted and, as every traced joint's, numbered — a
+    number read as a reader reads it, the numbered point nearest its ink or its leader's end, is C at
+    its own position (stop 50: the arc's twelve dots bare)."""
+    from test_position_numbers import _gap
+    from graphplan.drawing.plans import position_record
+    from graphplan.graphic.plans import where
+    sc = plans.scheme
+    rec = position_record(plans)
+    at = {(str(p.index), n): where(sc, p.layout, sc.body_of(n), n) for p in plans.positions for n in "ABCD"}
+    o2 = where(sc, plans.positions[0].layout, sc.body_of("O2"), "O2")
+    for p in plans.positions:                               # C on its arc: |O2C| = 0.24 m at μ_l
+        assert abs(at[str(p.index), "C"] - o2) == pytest.approx(LC / plans.mu_l, abs=0.05)
+    leaders = [[complex(*e) for e in q.points] for q in rec.items if q.kind == "segment" and q.role == "label"]
+    read = set()
+    for q in rec.items:
+        if q.kind != "text" or q.size > 3.0 or not q.text.isdigit():
+            continue
+        box = q.ink()
+        ends = [e for a, b in leaders for e, f in ((a, b), (b, a)) if _gap(box, f) < 1.2 and _gap(box, e) >= 1.2]
+        spot = (lambda z: abs(z - ends[0])) if ends else (lambda z: _gap(box, z))      # noqa: E731
+        read.add(min(at, key=lambda k: spot(at[k])))
+    thick = {str(p.index) for p in plans.positions if p.layout.key in (set(plans.accel_keys) or {0})}
+    missing = [str(p.index) for p in plans.positions if (str(p.index), "C") not in read and str(p.index) not in thick]
+    assert not missing, missing                             # the thick position's C is lettered, its 3 beside

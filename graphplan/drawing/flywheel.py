@@ -43,11 +43,21 @@ WORDS = {
 }
 
 
+DELTA_DIGITS = 3     # significant figures of every achieved δ on the sheet and in the notes (0,0236 < 0,03)
+
+
+def delta_text(value: float, lang: str) -> str:
+    """An achieved coefficient of unevenness δ = (ω_max − ω_min)/ω_m as the sheet writes it
+    everywhere (legend, Tables 2 and 3, notes): ``DELTA_DIGITS`` significant figures, 0,0156 —
+    one value written one way (stop 50: 0,01559 in the legend beside 0,0156 in Table 2)."""
+    return num(value, lang, DELTA_DIGITS)
+
+
 def achieved(value: float, given: float, lang: str) -> str:
     """The δ a steady state achieves as the lab writes it: the given value as given (0,05, not
-    0,050000) where the two agree to the sheet's 4 significant figures, else the value itself to 4
-    (util.words.num)."""
-    return num(given, lang) if num(value, lang) == num(given, lang) else num(value, lang)
+    0,050000) where the two agree to ``DELTA_DIGITS`` significant figures, else the value itself
+    (``delta_text``)."""
+    return num(given, lang) if delta_text(value, lang) == delta_text(given, lang) else delta_text(value, lang)
 
 
 def motor_omega(lang: str) -> str:

@@ -582,6 +582,11 @@ def _numbered(plans: Plans) -> list[tuple[str, bool]]:
     room is)."""
     crank = plans.scheme.mech.crank
     inner = [d.inner.point for d in plans.study.structure.dyads if d.kind in ("RRR", "RRP", "PRP")]
+    # a slotted link's block pinned to a moving link (LINK50's stone 4 on the rocker's C, not the
+    # crank pin): its pin's positions traced as the joints' are, numbered as theirs (stop 50)
+    frame = plans.scheme.mech.frame
+    blocks = [d.block_parts[2].point for d in plans.study.structure.dyads if d.kind == "RPR"]
+    inner += [n for n in blocks if n not in frame]
     return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner + coupler_points(plans))
                                    if n != crank.pin]
 

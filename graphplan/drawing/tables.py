@@ -84,7 +84,10 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
 
 
 def _is_number(text: str) -> bool:
-    """A number as the tables write it: a true minus, a decimal comma, maybe marked * (over 5 %)."""
+    """A number as the tables write it: a true minus, a decimal comma, maybe marked * (over 5 %);
+    or a jump's two sides, «0 → 20,37» (right-aligned as its column's numbers)."""
+    if " → " in text:
+        return all(_is_number(t) for t in text.split(" → "))
     try:
         float(text.removesuffix("*").replace("−", "-").replace(",", "."))
         return True

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from graphplan.exact.cam import Solution
-from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, division_numbers, errors_pct
+from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, division_numbers, errors_pct, read
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
@@ -225,6 +225,8 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
         out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
                            for v in errs]
+        if name == "v":
+            jumps(out, doc, lang, d, ruler)
     out["theta"] = [fixed(p["exact"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
     out["theta_gr"] = [fixed(p["graphical"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
     ex = [p["exact"]["radius_m"] * 1000 for p in ps]
@@ -232,6 +234,36 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     d = column_decimals(ex + gr)
     out["R"], out["R_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
     return out
+
+
+def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:
+    """Table 1's ds/dφ cells at a jump of ds/dφ (the linear law's ends, ``profile_corners``) as the
+    notes write it, both sides: «0 → 20,37» (exact), «0,0 → 51,0» (the ruler's ordinate) and
+    «0 → 20,40» (graphical) — one side was the row's alone (stop 50). The side the row lacks is read
+    as the drawing reads a linear law's ordinate, ds/dφ/μ to the ruler's ``precision_mm`` (graphic.
+    cam ``read``: a dwell's 0 is 0), with μ the row's own value over its ordinate; δ stays the row's."""
+    rocking = doc["follower"] == "rocking"
+    key, k = ("_deg", 1.0) if rocking else ("_m", 1000.0)
+    precision = doc.get("precision_mm", 0.5)
+    cell = lambda v, d: "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")       # noqa: E731
+    for corner in doc.get("profile_corners") or []:
+        before, after = (corner["ds_dphi_" + side + key] * k for side in ("before", "after"))
+        for j, p in enumerate(doc["positions"]):
+            if abs((p["phi_deg"] - corner["phi_deg"] + 180.0) % 360.0 - 180.0) > 1e-6:
+                continue
+            own, y = p["exact"]["ds_dphi" + key] * k, p["graphical"]["ds_dphi_mm"]
+            mu = p["graphical"]["ds_dphi" + key] * k / y if y else None
+            other = before if abs(own - after) <= abs(own - before) else after
+            y_other = None if mu is None else float(read(np.array(other / mu), precision))
+            sides = {"v": (cell(before, decimals), cell(after, decimals))}
+            if y_other is not None:
+                mine = (out["v_mm"][j], out["v_gr"][j])
+                theirs = (fixed(y_other, lang, ruler).replace("-", "−"), cell(y_other * mu, decimals))
+                first = other == before
+                sides["v_mm"] = (theirs[0], mine[0]) if first else (mine[0], theirs[0])
+                sides["v_gr"] = (theirs[1], mine[1]) if first else (mine[1], theirs[1])
+            for c, (a, b) in sides.items():
+                out[c][j] = f"{a} → {b}"
 
 
 def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:

@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.drawing.flywheel import motor_delta, motor_omega
+from graphplan.drawing.flywheel import delta_text, motor_delta, motor_omega
 from graphplan.exact.dynamics import crank_angle
 from graphplan.util.markup import inline
 from graphplan.graphic.diagrams import LAB_LIMIT
@@ -549,8 +549,8 @@ def motor_speed_note(doc: dict, lang: str) -> str:
 def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ") -> str:
     """"не потрібен (δ = 0,0236 < 0,03)": a flywheel no method needs, with the δ the machine keeps
     without one against the δ asked for (``symbol``: the motor's δ_{дв})."""
-    return (f"не потрібен ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})" if lang == "uk" else
-            f"not needed ({symbol} = {num(delta_without, lang, 3)} < {num(delta, lang)})")
+    return (f"не потрібен ({symbol} = {delta_text(delta_without, lang)} < {num(delta, lang)})" if lang == "uk" else
+            f"not needed ({symbol} = {delta_text(delta_without, lang)} < {num(delta, lang)})")
 
 
 def design_note(doc: dict[str, Any], lang: str) -> str | None:
@@ -572,7 +572,7 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
         answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J} (з двигуном)" if uk else
                   f"the motor's flywheel, {flywheel_text(fw['motor'], lang, d)} {J}")
     else:
-        dm = f"{motor_delta(lang)} = {num(doc['motor']['motion']['delta'], lang, 3)} < {num(doc['delta'], lang)}"
+        dm = f"{motor_delta(lang)} = {delta_text(doc['motor']['motion']['delta'], lang)} < {num(doc['delta'], lang)}"
         answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
     safe = fw["motor"] < fw["exact"]         # the constant-M*_d flywheel the larger: on the safe side
     if uk:
@@ -637,7 +637,7 @@ def motor_note(doc: dict[str, Any], lang: str) -> str | None:
         return (f"The motor is sized by the peak load: {rule} {avg}; the speed is kept even not by the power but "
                 f"by the inertia (the motor's M(ω) grows only as ω falls): δ = {d} with this motor needs a "
                 f"{J} kg·m² flywheel")
-    dm = f"{motor_delta(lang)} = {num(m['motion']['delta'], lang, 3)} < {d}"
+    dm = f"{motor_delta(lang)} = {delta_text(m['motion']['delta'], lang)} < {d}"
     if uk:
         return (f"Двигун вибрано за піком навантаження: {rule} {avg}; його M(ω) круто росте зі спадом ω, і він "
                 f"сам тримає {dm} — з ним маховик не потрібен; маховик таблиці 2 — для сталого {md}")
