@@ -29,12 +29,17 @@ H, E, R = 0.032, 0.008, 0.010
 RISE, FAR, RET = (math.radians(d) for d in (90.0, 30.0, 110.0))
 
 
-@pytest.fixture(scope="module")
-def cam50(tmp_path_factory):
-    path = tmp_path_factory.mktemp("cam50") / "cam50.toml"
-    path.write_text(CAM50, encoding="utf-8")
+def _constructed(tmp_path_factory, name: str, text: str):
+    """The scene's cam solved and constructed (the sheet's own series, in rad)."""
+    path = tmp_path_factory.mktemp(name) / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
     sol = solve(load(path))
     return sol, construct(sol, series="rad")
+
+
+@pytest.fixture(scope="module")
+def cam50(tmp_path_factory):
+    return _constructed(tmp_path_factory, "cam50", CAM50)
 
 
 def _law(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -170,10 +175,7 @@ def test_the_linear_rise_draws_its_rigid_shocks_up_at_the_start_and_down_at_the_
 @pytest.fixture(scope="module")
 def own50(tmp_path_factory):
     from review_scenes import OWN_CAM50
-    path = tmp_path_factory.mktemp("own50") / "own50.toml"
-    path.write_text(OWN_CAM50, encoding="utf-8")
-    sol = solve(load(path))
-    return sol, construct(sol, series="rad")
+    return _constructed(tmp_path_factory, "own50", OWN_CAM50)
 
 
 def test_a_given_base_radius_is_printed_given_and_the_smallest_is_marked_O_min(own50):

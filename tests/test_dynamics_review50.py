@@ -46,9 +46,11 @@ def pose(phi: float) -> dict:
             "t1": phi, "t2": math.atan2(*(b - a)[::-1]), "t3": math.atan2(u[1], u[0]), "t5": t5}
 
 
-def rates(phi: float, h: float = 1e-6) -> dict:
-    """d/dφ of every point and angle (central differences)."""
-    p, q = pose(phi + h), pose(phi - h)
+def rates(phi: float, h: float = 1e-6, of=None) -> dict:
+    """d/dφ of every point and angle of ``of`` (LINK50's ``pose`` unless given; central
+    differences, an angle's difference taken across ±π)."""
+    of = of or pose
+    p, q = of(phi + h), of(phi - h)
     out = {}
     for k in p:
         d = np.asarray(p[k]) - np.asarray(q[k])
@@ -312,14 +314,7 @@ def drag_pose(phi: float) -> dict:
 
 
 def drag_rates(phi: float, h: float = 1e-6) -> dict:
-    p, q = drag_pose(phi + h), drag_pose(phi - h)
-    out = {}
-    for k in p:
-        d = np.asarray(p[k]) - np.asarray(q[k])
-        if k.startswith("t"):
-            d = (d + math.pi) % (2 * math.pi) - math.pi
-        out[k] = d / (2 * h)
-    return out
+    return rates(phi, h, drag_pose)
 
 
 @pytest.fixture(scope="module")
