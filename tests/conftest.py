@@ -175,6 +175,18 @@ def _example_sheet(name: str, kind: str, fmt: str, lang: str):
     return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
 
 
+@functools.lru_cache(maxsize=16)
+def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk"):
+    """An example's sheet (or set) composed alone (``composed``: not numbered in its project), built
+    once per worker and shared read-only — for the tests that read an example's drawings, tables
+    and notes but not the title block's sheet numbers, in a language whose other documents no test
+    of the default run composes (numbering the slotter's English dynamics sheet counted its
+    English kinematics and force sheets: 7 s of CPU). ``example_sheet`` is the numbered one."""
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    return composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+
+
 def scene_study(text: str):
     return study(loads(text, "<test>"))
 
