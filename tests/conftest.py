@@ -158,16 +158,33 @@ def example(name: str):
     return study(load(ROOT / "examples" / f"{name}.toml"))
 
 
-@functools.lru_cache(maxsize=48)
 def example_sheet(name: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk"):
     """An example's sheet (or set) as ``BUILDERS`` makes it (numbered in its project), built once per
     worker and shared by every test module that reads it (an example's sheet costs 3–12 s of CPU and
     a dozen modules read the same ones). Read it, never change it; a test of determinism builds its
-    own second copy."""
+    own second copy. (The arguments passed on in full: ``example_sheet("four_bar")`` and
+    ``example_sheet(name, kind, fmt, lang)`` are one sheet, one entry of the cache.)"""
+    return _example_sheet(name, kind, fmt, lang)
+
+
+@functools.lru_cache(maxsize=48)
+def _example_sheet(name: str, kind: str, fmt: str, lang: str):
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import BUILDERS
     return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+
+
+@functools.lru_cache(maxsize=16)
+def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk"):
+    """An example's sheet (or set) composed alone (``composed``: not numbered in its project), built
+    once per worker and shared read-only — for the tests that read an example's drawings, tables
+    and notes but not the title block's sheet numbers, in a language whose other documents no test
+    of the default run composes (numbering the slotter's English dynamics sheet counted its
+    English kinematics and force sheets: 7 s of CPU). ``example_sheet`` is the numbered one."""
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    return composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
 
 
 def scene_study(text: str):
