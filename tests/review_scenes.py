@@ -3727,3 +3727,55 @@ planets = 4
 module = 0.002
 omega = 150
 '''
+
+
+GEARS51 = '''# Stop 51 (the lead's check): an external pair 14/26 with a large module (8 mm) and the shifts chosen by
+# the rule, and a one-row planetary train of type A for a ratio of 5.6 with four planets, the sun at 1440 rpm.
+title = "Зубчаста передача 14/26 і однорядний планетарний редуктор (перевірка 51)"
+title_en = "A gear pair 14/26 and a one-row planetary reducer (check 51)"
+designation = "ТММ.ЗП.51.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 26]
+module = 0.008
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.6
+planets = 4
+module = 0.003
+rpm = 1440
+'''
+
+
+GEARS_OWN51 = '''# Stop 51's own check (gear51): an unshifted standard pair 18/72 (u = 4, x1 = x2 = 0) with a small module
+# m = 2 mm — drawn at 10:1 with the centres far off the sheet —, and a one-row planetary train of type A
+# for u = 4,2 with five planets, the sun at 2900 rpm.
+title = "Нульова зубчаста передача 18/72 і однорядний планетарний редуктор з п'ятьма сателітами (власна перевірка 51)"
+title_en = "An unshifted gear pair 18/72 and a one-row planetary reducer with five planets (own check 51)"
+designation = "ТММ.ЗП.51.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[gears]
+z = [18, 72]
+module = 0.002
+
+[planetary]
+type = "A"
+ratio = 4.2
+planets = 5
+module = 0.0025
+rpm = 2900
+'''

@@ -214,4 +214,5 @@ def test_table_3_shows_the_trains_conditions_with_their_numbers(sheet50):
     near = (z1 + z2) * math.sin(math.pi / K)
     assert f"{z1} + {z2} = {z3} − {z2b}: викон." in words
     assert f"{num}/{den} = {num // den}: викон." in words and num % den == 0
-    assert f"{near:.2f}".replace(".", ",") + f" > {max(z2, z2b) + 2}: викон." in words
+    # (stop 51: the neighbourhood's formula written out, (z1 + z2)·sin(180°/K) = … > …)
+    assert f"({z1} + {z2})·sin 60° = " + f"{near:.2f}".replace(".", ",") + f" > {max(z2, z2b) + 2}: викон." in words

@@ -32,7 +32,7 @@ def record_texts(rec) -> list[str]:
     return [p.text for p in rec.items if p.kind == "text"]
 
 
-SYMBOLS = {"max", "min"}                      # the lab's subscripts
+SYMBOLS = {"max", "min", "sin"}               # the lab's subscripts; sin in a formula written out (Table 3, stop 51)
 LATIN = re.compile(r"[A-Za-z]{3,}")
 TINY = re.compile(r"10⁻(?:⁹|[¹²³⁴⁵⁶⁷⁸⁹][⁰¹²³⁴⁵⁶⁷⁸⁹]+)")    # a value printed at 10⁻⁹ or smaller
 

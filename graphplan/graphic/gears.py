@@ -222,6 +222,7 @@ class Mesh:
     warnings: list[tuple[str, str]] = field(default_factory=list)
     sa_bound: tuple[float, float] = (0.0, 0.0)      # m: the bound of each sa read, from the precision
     o1_shown: bool = False          # the pinion's centre drawn under a broken meshing (``centre_shown``)
+    lang: str = "uk"                # the lettering's language (the λ diagrams' values: the decimal comma)
 
 
 def _inv_at(R: float, rho: float) -> float:
@@ -605,7 +606,8 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     mesh = Mesh(mu, md, precision, d, read, eps, eps_bound(sol, mu, precision), (s_g[0], s_g[1]), (sa_g[0], sa_g[1]),
                 (read["rw1"] * mu, read["rw2"] * mu), rec, Record("sliding"),
                 {"O1": O1, "O2": O2, "N1": N1, "N2": N2, "B1": B1, "B2": B2, "P": P},
-                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)), o1_shown=show1)
+                sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)), o1_shown=show1,
+                lang=lang)
     if 2.25 * md < DEPTH_MM[0]:
         mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",
@@ -804,6 +806,10 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM, m
     rec.segment((-4.0, 0.0), (G + 8.0, 0.0), role="construction", width=0.35, layer=LAYER, step="λ axis")   # a diagram's
     rec.segment((0.0, -c * k - 3), (0.0, k + 8.0), role="construction", width=0.35, layer=LAYER)  # axes: solid
     xB1, xB2 = sol.rho_B1 / mu, sol.rho_B2 / mu
+    q = {"sliding_ends": (float(sol.sliding(sol.rho_B1)[0]), float(sol.sliding(sol.rho_B2)[1]))}   # λ1(B1), λ2(B2)
+    # (to Table 2's decimals: four significant figures of the smaller, report.gears.alike)
+    q["decimals"] = max([max(0, 3 - math.floor(math.log10(abs(v)))) for v in q["sliding_ends"]
+                         if math.isfinite(v) and v] or [0])
     ends = []
     for idx, (lo, hi, name) in enumerate(((cut1, G, "λ_1"), (0.0, cut2, "λ_2"))):
         xs = np.linspace(lo, hi, 401)
@@ -834,8 +840,13 @@ def sliding_diagram(sol: PairSolution, mesh: Mesh, unit_mm: float = LAMBDA_MM, m
         pl.label(complex(-1.5, v * k), t, size=2.5, toward=-1 + 0j, radii=(0.8, 1.5, 3.0, 6.0))
     pl.label(complex(0.0, k + 8.0), "λ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))     # the ordinate's name
     pl.label(complex(G + 8.0, 0.0), "ρ", size=3.5, toward=1j, radii=(1.0, 2.0, 4.0))   # the abscissa's (stop 46)
-    for end in ends:                  # "−∞" right of each arrow: off the axis of λ and the ordinate at B2
-        pl.label(end - 4j, "−∞", size=2.5, toward=1 + 0j, radii=(0.8, 1.5, 3.0, 5.0))
+    for idx, end in enumerate(ends):  # "−∞" right of each arrow: off the axis of λ and the ordinate at B2 —
+        # or, where the working part itself passes the cut (λ1 at B1 under −3: stop 51's 18/72, −8,27), the
+        # value at its end, λ1(B1) or λ2(B2), which Table 2 prints: the arrow is not −∞ there
+        past = ((xB1 < cut1) if idx == 0 else (xB2 > cut2)) and math.isfinite(q["sliding_ends"][idx])
+        text = (f"λ_{idx + 1}(B_{idx + 1}) = " + fixed(q["sliding_ends"][idx], mesh.lang, q["decimals"]).replace("-", "−")
+                if past else "−∞")
+        pl.label(end - 4j, text, size=2.5, toward=1 + 0j, radii=(0.8, 1.5, 3.0, 5.0, 8.0, 12.0))
     # each curve lettered midway between P (where the two cross, λ = 0) and its own end of N1N2:
     # λ2 over N1P (λ1 runs off to −∞ there), λ1 over PN2 — never at the crossing
     xP = sol.rho_P / mu
@@ -1165,6 +1176,9 @@ def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC
     if kind == "B":
         pl.label(complex(xb + b / 2, yO2 + rad["2'"] / mu * 0.6), "2'", toward=1 + 0j)
     pl.label(complex(xb - b / 2, yC + rim / 2), "3", toward=-1 + 0j)
-    pl.label(complex(xh, yO2 * 0.5), "H", toward=1 + 0j)
+    # the carrier's letter midway up its arm — clear of the sun's pitch line yA, whose projection line runs
+    # right across the arm to the velocity picture (stop 51's 29/31/91: yO2/2 = 37,5 mm, yA 36,25 mm)
+    yH = yO2 * 0.5 if abs(yO2 * 0.5 - yA) >= 5.0 else (0.5 * (yA + yO2) if yO2 - yA > yA else 0.5 * yA)
+    pl.label(complex(xh, yH), "H", toward=1 + 0j)
     pl.label(complex(-46.0, 0.0), "O", toward=1j)
     return x1 + b / 2, xh, xb + b / 2

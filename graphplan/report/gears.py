@@ -269,6 +269,14 @@ def sig_decimals(exact: float, digits: int = READ_DIGITS) -> int:
     return max(0, digits - 1 - math.floor(math.log10(abs(exact)))) if exact else 0
 
 
+def alike(values, lang: str, digits: int = READ_DIGITS) -> list[str]:
+    """Values of one quantity printed side by side (wheel 1's and wheel 2's largest |λ|) to one count
+    of decimals — the one that gives each at least ``digits`` significant figures: «1,351» beside
+    «1,420», not «1,42» (stop 51: Table 2 and the terminal printed a column of 3 and 2 decimals)."""
+    d = max((sig_decimals(v, digits) for v in values if v), default=0)
+    return [fixed(v, lang, d).replace("-", "−") for v in values]
+
+
 def _share(bound: float | None, exact: float, lang: str) -> str:
     """An absolute bound as a percent of the exact value (what the δ % column is compared with)."""
     return "—" if bound is None or not exact else num(100.0 * bound / abs(exact), lang, 2)
@@ -303,7 +311,7 @@ def pair_lines(d: dict, lang: str) -> list[str]:
                                      i=", ".join(yes(v) for v in q["interference"]),
                                      e=w["ok"] if q["contact_ratio_ok"] else w["fail"], g=cg or "—",
                                      gv=w[eps_read_verdict(c)] if cg else "—",
-                                     l1=n(q["sliding_max"][0]), l2=n(q["sliding_max"][1])))
+                                     l1=alike(q["sliding_max"], lang)[0], l2=alike(q["sliding_max"], lang)[1]))
     g = d.get("graphical")
     if g:
         lines.append(w["scale"].format(mu=n(g["mu_l_m_mm"]), md=n(g["module_mm"]), p=n(g["precision_mm"])))

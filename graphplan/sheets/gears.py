@@ -16,7 +16,7 @@ from graphplan.graphic.gears import (H_CARRIER, MORE_TEETH, SEGMENT_MIN, TEETH, 
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.graphic.scales import at_least
 from graphplan.model.gears import Gears
-from graphplan.report.gears import (agreeing, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
+from graphplan.report.gears import (agreeing, alike, bare, contact_ratio_text, delta_text, eps_read_verdict, gears_json,
                                     length_decimals, sig_decimals, table_decimals)
 from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
@@ -196,8 +196,10 @@ def quality_table(doc: dict, lang: str) -> Record:
                  " / ".join(yes(not v) for v in q["pointed"])])
     rho = [p["rho_m"]["B1"], p["line_of_action_m"] - p["rho_m"]["B2"]]
     lim = [max(v, 0.0) for v in q["involute_start_rho_m"]]
-    rows.append([w["interf"], f"{_n(rho[0] * 1000, lang)} ≥ {_n(lim[0] * 1000, lang)}",
-                 f"{_n(rho[1] * 1000, lang)} ≥ {_n(lim[1] * 1000, lang)}",
+    # (millimetres to Table 1's decimals, both sides alike: «13,94 ≥ 9,80», not «13,94 ≥ 9,797» — stop 51)
+    dec = table_decimals(p["graphical"]) if p.get("graphical") else 2
+    mm = lambda v: fixed(v * 1000, lang, dec).replace("-", "−")           # noqa: E731
+    rows.append([w["interf"], f"{mm(rho[0])} ≥ {mm(lim[0])}", f"{mm(rho[1])} ≥ {mm(lim[1])}",
                  " / ".join(yes(not v) for v in q["interference"])])
     # εα judged by the formula, as the pair is designed, and apart from it on the value read off the
     # drawing against its bound (review 12, mark 12: 1,2033 by the formula «met» beside 1,196 read)
@@ -209,7 +211,7 @@ def quality_table(doc: dict, lang: str) -> Record:
                      f"{yes(q['contact_ratio_ok'])} / " + (w["within"] if v == "within" else yes(v == "ok"))])
     else:
         rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
-    rows.append([w["lam"], _n(q["sliding_max"][0], lang), _n(q["sliding_max"][1], lang), ""])
+    rows.append([w["lam"], *alike(q["sliding_max"], lang), ""])    # (one count of decimals: 1,351 / 1,420)
     return table(rows, [50.0, 24.0, 24.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
@@ -241,7 +243,9 @@ def train_table(doc: dict, lang: str) -> Record:
         rows.append([label, bare(te), bare(tg) if tg else "—", _pct(e)])
     c = t["conditions"]
     shown = condition_numbers(t, lang)
-    room = text_width(rows[1][1], 2.5)    # (the teeth's cell sets the column: a condition's numbers within it)
+    # (a condition's numbers within the teeth's cell, or as wide as keeps the table within the title
+    # block's width at the sheets' size: the neighbourhood's formula, stop 51)
+    room = max(text_width(rows[1][1], 2.5), TITLE / TABLES - (34.0 + 20.0 + 14.0) - 3.0)
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         cell = f"{shown[key]}: {ok(c[key])}" if key in shown else ok(c[key])
         rows.append([w[name], cell if text_width(cell, 2.5) <= room else ok(c[key]), "", ""])
@@ -252,7 +256,8 @@ def condition_numbers(t: dict, lang: str) -> dict[str, str]:
     """The train's conditions as Table 3 shows them checked — with the numbers, as Table 2 shows the
     pair's (stop 50: «викон.» alone): coaxiality A z1 + 2·z2 = z3, B z1 + z2 = z3 − z2'; assembly A
     (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')) — whole where met —; neighbourhood
-    (z1 + z2)·sin(π/K) against the planet's tip, max(z2, z2') + 2 (h*a = 1)."""
+    (z1 + z2)·sin(180°/K), the sine's argument written in degrees, against the planet's tip,
+    max(z2, z2') + 2 (h*a = 1)."""
     z, K = t["z"], t["planets"]
     rel = lambda a, b: "=" if a == b else "≠"                            # noqa: E731
     if t["type"] == "A":
@@ -269,8 +274,9 @@ def condition_numbers(t: dict, lang: str) -> dict[str, str]:
         tip = max(z2, z2b) + 2
     out = {"coaxial": coax, "assembly": asm}
     if K > 1:
-        near = (z1 + z2) * math.sin(math.pi / K)
-        out["neighbourhood"] = f"{_n(near, lang, 4)} {'>' if near > tip else '≤'} {tip}"
+        near = (z1 + z2) * math.sin(math.pi / K)     # (z1 + z2)·sin(180°/K) written out (stop 51: «36,77 > 35»)
+        out["neighbourhood"] = (f"({z1} + {z2})·sin {_n(180.0 / K, lang, 4)}° = {_n(near, lang, 4)} "
+                                f"{'>' if near > tip else '≤'} {tip}")
     return out
 
 
@@ -337,7 +343,8 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                 near, chosen = pair
                 out.append(w["nearer"].format(z=", ".join(map(str, near["z"])), r=_n(t["ratio_required"], lang),
                                               u=_n(near["ratio"], lang),
-                                              d=fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−"),
+                                              d=("0" if abs(near["error_pct"]) < 0.05 else     # (not «+0,0 %»)
+                                                 fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−")),
                                               D=near["diameter_modules"], D0=chosen["diameter_modules"]))
         out += [w["warn"] + x for x in t[key]]
         parts.append(out)
@@ -748,7 +755,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
     lines = [x for part in parts for x in part]
     pages = None
-    for k in (TABLES, 1.0):               # the tables as the other sheets draw theirs, else at the ruled size
+    for k in SIZES:                       # the tables as the other sheets draw theirs, in 7-mm rows, else ruled
         side, width = _column(tables, lines, k)
         pages = zones(drawings, side, f, width)
         if pages is not None:
@@ -794,7 +801,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     return mesh, vel, pages
 
 
-def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k: float):
+def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k):
     """The one-sheet pages with the λ diagrams in the row under the meshing drawn at the largest GOST
     2.302 scale of N1N2 — no larger than the meshing's — with which the row (the λ diagrams, then the
     planetary pictures) still fits the drawings' zone, λ's unit grown with it (``lambda_unit``); the
@@ -988,11 +995,36 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     return v0, pages
 
 
-def _column(tables: list[Leaf], lines: list[str], k: float) -> tuple[list[Leaf], float]:
+TIGHT = 7.0 / 6.0        # the A1 column's tables at 3.5 mm letters in 7-mm rows (``tight``), × the ruled 6 mm
+SIZES = (TABLES, (TABLES, TIGHT), 1.0)   # the A1 column's tables tried: 3.5 mm letters and 8.4-mm rows, 7-mm rows, ruled
+
+
+def tight(rec: Record, k: float = TABLES, rows: float = TIGHT) -> Record:
+    """A ruled table drawn ``k`` times wider with its letters ``k`` times taller (GOST 2.304's 3.5 mm
+    from the ruled 2.5) and its rows only ``rows`` times taller: 7-mm rows for 3.5-mm letters — a
+    letter 1 mm under its top rule, a descender 1.3 mm over its bottom one, as GOST 2.104's title block
+    sets 3.5 mm in 5-mm rows. Stop 51: the 8.4-mm rows of ``enlarged`` left gears.toml's three tables and
+    notes 19 mm (en 28) taller than the column over the title block; they fell back to 2.5-mm letters
+    with 35-mm gaps between them."""
+    from graphplan.graphic.record import Primitive
+    big = enlarged(rec, k)
+    f = rows / k
+    return Record(big.title, [Primitive(p.kind, tuple((x, y * f) for x, y in p.points), p.role, p.layer, p.step,
+                                        p.text, p.size, p.radius, p.angles, p.anchor, p.width) for p in big.items],
+                  dict(big.scales))
+
+
+def _sized(rec: Record, k) -> Record:
+    """A table at one of ``SIZES``: ``k`` times its ruled size, or (k, rows) ``tight``."""
+    return tight(rec, *k) if isinstance(k, tuple) else enlarged(rec, k)
+
+
+def _column(tables: list[Leaf], lines: list[str], k) -> tuple[list[Leaf], float]:
     """The tables drawn ``k`` times their ruled size (``TABLES``: as the other sheets draw theirs,
-    3.5 mm letters and 8.4 mm rows) and the notes under them, wrapped to the column's width (the
-    title block's or the widest table's): (the leaves, the width)."""
-    grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
+    3.5 mm letters and 8.4 mm rows; ``(TABLES, TIGHT)``: the letters so in 7-mm rows, ``tight``) and
+    the notes under them, wrapped to the column's width (the title block's or the widest table's):
+    (the leaves, the width)."""
+    grown = [Leaf(t.name, record=_sized(t.record, k)) for t in tables]
     width = max([TITLE] + [t.record.bounds()[2] - t.record.bounds()[0] for t in grown])
     return grown + [Leaf("notes", record=note_block(lines, width))], width
 
