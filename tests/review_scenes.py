@@ -3817,3 +3817,91 @@ delta = 0.06
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+ROCKING_BLOCK51 = '''# Stop 51 (frc51's own check): a rocking-block drive of a slider — the crank O1A turns counter-clockwise,
+# the rod AB slides through the block 3 that rocks about the frame pivot O2; the rod's end B drives the
+# connecting rod BC to the slider C on a horizontal guide under the working stroke's resistance —
+# I(0-1) -> II(2-3) ВПВ (the block on the frame) -> II(4-5) ВВП.
+title = "Механізм з хитним каменем і повзуном"
+title_en = "Rocking-block mechanism driving a slider"
+designation = "ТММ.ХК.51.000"
+
+[sheet]
+student = "Перевірка Ф. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.0]
+
+[frame.guides]
+x = { through = [0, 0.05], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.10
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A"]
+length = 0.55
+points = { S2 = 0.5, B = 1.0 }
+mass = 6
+inertia = 0.15
+
+[[link]]
+name = "3"
+number = 3
+joints = ["O2"]
+slides_on = "AB"
+mass = 1.5
+inertia = 0.002
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.32
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.03
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "x"
+mass = 8
+
+[positions]
+count = 12
+start = "max"
+output = "C"
+accel = [2]
+force_phi_deg = 240
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -164,3 +164,68 @@ def test_the_stones_letters_read_as_their_own(fp):
             near = lambda seg, box=box: box_to_segment(box, *seg)         # noqa: E731
         own = near(arrows[name])
         assert all(own < near(seg) for other, seg in arrows.items() if other != name), (name, own)
+
+
+# -- own mechanism 51: a rocking block at the frame pivot O2 guiding the rod AB, whose end B drives a slider --
+
+P1, P2 = 0j, 0.30 + 0j                  # the crank's pivot O1, the block's pivot O2
+RA, LAB, LBC, YC = 0.10, 0.55, 0.32, 0.05
+W_OWN = 120 * 2 * math.pi / 60          # counter-clockwise
+
+
+@pytest.fixture(scope="module")
+def own():
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    from review_scenes import ROCKING_BLOCK51
+    st = scene_study(ROCKING_BLOCK51)
+    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=0.004, mu_F=10.0,
+                                group_mu={"I(0-1)": 0.002})
+
+
+def _own_closed_form(own):
+    """θ1 as drawn; the rod along A→O2 (through the block), B at 0.55 m from A, C on the guide y = 0.05
+    to the right of B at 0.32 m from it."""
+    pts = _group(own, "I(0-1)").points
+    theta0 = cmath.phase(pts["A"] - pts["O1"])
+
+    def pos(t: float) -> dict[str, complex | float]:
+        a = P1 + RA * cmath.exp(1j * (theta0 + W_OWN * t))
+        u = (P2 - a) / abs(P2 - a)
+        b = a + LAB * u
+        c = complex(b.real + math.sqrt(LBC ** 2 - (YC - b.imag) ** 2), YC)
+        return {"S1": a / 2, "S2": a + 0.5 * LAB * u, "O2": P2, "S4": (b + c) / 2, "C": c,
+                "phi2": cmath.phase(u), "phi4": cmath.phase(c - b)}
+    return pos
+
+
+def test_own_balancing_moment_agrees_with_the_power_balance(own):
+    """M_зр = −ΣP/ω1 of the closed form (the block turns with the rod: I3·ε2; 1500 N against the
+    slider's motion on the working stroke): the exact within 0.1 %, the plans and the lever within 1.5 %."""
+    pos = _own_closed_form(own)
+    power = 0.0
+    for key, m in {"S1": 2.5, "S2": 6.0, "S4": 3.0, "C": 8.0}.items():
+        power += ((-1j * m * 9.81 - m * _d(pos, key, 2)).conjugate() * _d(pos, key, 1)).real
+    for key, inertia in {"phi2": 0.15 + 0.002, "phi4": 0.03}.items():
+        power += -inertia * _d(pos, key, 2).real * _d(pos, key, 1).real
+    vc = _d(pos, "C", 1).real
+    power += -1500.0 * math.copysign(1.0, vc) * vc
+    closed = -power / W_OWN
+    assert own.ks.balancing[0] == pytest.approx(closed, rel=1e-3)
+    assert own.balancing == pytest.approx(closed, rel=0.015)
+    assert own.lever.balancing == pytest.approx(closed, rel=0.015)
+
+
+def test_own_block_acts_on_the_rod_normal_to_it_and_names_by_the_rule(own):
+    """The block 3 (pivoted at O2) on the rod 2: normal to the rod within the ruler's 0.5 mm; the crank
+    group loaded by R21, the rod's group by R42 (the connecting rod 4 on the rod 2 at B), equal and
+    opposite to the outer group's R24."""
+    p = _own_closed_form(own)(0.0)
+    u = cmath.exp(1j * p["phi2"])
+    s = {x.name: x.end - x.start for x in _group(own, "II(2-3)").sides}
+    inner = next(n for n in ("R32", "R23") if n in s)
+    assert abs((s[inner] / u).real) <= 0.5 and abs(s[inner]) > 20.0
+    names = {gp.label: {x.name for x in gp.sides} for gp in own.groups}
+    assert "R21" in names["I(0-1)"] and "R42" in names["II(2-3)"] and "R24" in names["II(4-5)"]
+    s45 = {x.name: x.end - x.start for x in _group(own, "II(4-5)").sides}
+    assert abs(s["R42"] + s45["R24"]) <= 1.0
