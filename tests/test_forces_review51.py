@@ -229,3 +229,45 @@ def test_own_block_acts_on_the_rod_normal_to_it_and_names_by_the_rule(own):
     assert "R21" in names["I(0-1)"] and "R42" in names["II(2-3)"] and "R24" in names["II(4-5)"]
     s45 = {x.name: x.end - x.start for x in _group(own, "II(4-5)").sides}
     assert abs(s["R42"] + s45["R24"]) <= 1.0
+
+
+def _lever_arms_checked(fp) -> int:
+    """Each arm h drawn on the lever (a segment 'h_X = … mm to X' from the pole) ends on the line of
+    X's own arrow, at right angles to it, its length the printed one (to the ruler's 0.5 mm)."""
+    import re
+
+    from graphplan.drawing import forces as fd
+    rec = fd.lever_record(fp, "uk")
+    arrows = {}
+    for q in rec.items:
+        if q.kind == "vector" and q.text and ": h = " in q.text:
+            arrows[q.text.split(": h = ")[0]] = (complex(*q.points[0]), complex(*q.points[1]))
+    pole = 0j                                   # the lever is drawn about its pole at the origin
+    projections = [q for q in rec.items if q.kind == "segment" and q.role == "projection"]
+    n = 0
+    for q in rec.items:
+        m = re.fullmatch(r"h_\{(.+)\} = ([0-9.]+) mm to (.+)", q.text or "")
+        if q.kind != "segment" or m is None:
+            continue
+        name = m.group(3)
+        a, b = complex(*q.points[0]), complex(*q.points[1])
+        t, h = arrows[name]
+        u = (h - t) / abs(h - t)
+        foot = b if abs(b - pole) > abs(a - pole) else a
+        off = abs(((foot - t) * u.conjugate()).imag)
+        # on its line — or, an arrow set a lane aside from its point (M5' beside MΦ5' at d, the two on
+        # one line; Φ4 beside the lever's line b–c), its line of action drawn thin to the foot
+        drawn_line = any(abs(complex(*p.points[k]) - foot) < 0.3
+                         and abs(((complex(*p.points[1 - k]) - foot) * u.conjugate()).imag) < 0.3
+                         for p in projections for k in (0, 1))
+        assert off < 0.3 or (off <= 2.6 and (drawn_line or min(abs(t - foot), abs(h - foot)) <= 2.6)), name
+        assert abs(((foot - pole) * u.conjugate()).real) < 0.3, (name, "not at right angles")
+        assert abs(abs(foot - pole) - float(m.group(2))) <= 0.5, name
+        n += 1
+    return n
+
+
+def test_each_lever_arm_is_drawn_to_its_own_forces_line(fp, own):
+    """LINK51's lever and the own one's: every arm to its own force's line (one sheet drew h1 on Φ5's)."""
+    assert _lever_arms_checked(fp) >= 8
+    assert _lever_arms_checked(own) >= 6
