@@ -3779,3 +3779,181 @@ planets = 5
 module = 0.0025
 rpm = 2900
 '''
+
+
+LINK51 = '''# Stop 51 (the lead's check): a rocking coulisse driving a rocker — the crank O1A turns clockwise, its
+# stone 2 slides in the coulisse O3B, which rocks about O3 below O1; the coulisse's end B drives the rod BD
+# to the rocker O4D, which carries the resistance moment of the working stroke —
+# I(0-1) -> II(2-3) ВПВ -> II(4-5) ВВВ: a group of the second (ВВВ) kind driven by a coulisse.
+title = "Кулісний механізм з коромислом"
+title_en = "Coulisse mechanism driving a rocker"
+designation = "ТММ.КМ.51.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0.20]
+O3 = [0, 0]
+O4 = [0.25, 0.55]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "O3B"
+mass = 1.0
+
+[[link]]
+name = "O3B"
+number = 3
+joints = ["O3"]
+length = 0.40
+points = { S3 = 0.5, B = 1.0 }
+mass = 8
+inertia = 0.11
+
+[[link]]
+name = "BD"
+number = 4
+joints = ["B", "D"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "O4D"
+number = 5
+joints = ["O4", "D"]
+length = 0.16
+points = { S5 = 0.5 }
+mass = 5
+inertia = 0.02
+
+[branch]
+A = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 90
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.06
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
+
+
+ROCKING_BLOCK51 = '''# Stop 51 (frc51's own check): a rocking-block drive of a slider — the crank O1A turns counter-clockwise,
+# the rod AB slides through the block 3 that rocks about the frame pivot O2; the rod's end B drives the
+# connecting rod BC to the slider C on a horizontal guide under the working stroke's resistance —
+# I(0-1) -> II(2-3) ВПВ (the block on the frame) -> II(4-5) ВВП.
+title = "Механізм з хитним каменем і повзуном"
+title_en = "Rocking-block mechanism driving a slider"
+designation = "ТММ.ХК.51.000"
+
+[sheet]
+student = "Перевірка Ф. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.0]
+
+[frame.guides]
+x = { through = [0, 0.05], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.10
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A"]
+length = 0.55
+points = { S2 = 0.5, B = 1.0 }
+mass = 6
+inertia = 0.15
+
+[[link]]
+name = "3"
+number = 3
+joints = ["O2"]
+slides_on = "AB"
+mass = 1.5
+inertia = 0.002
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.32
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.03
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "x"
+mass = 8
+
+[positions]
+count = 12
+start = "max"
+output = "C"
+accel = [2]
+force_phi_deg = 240
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

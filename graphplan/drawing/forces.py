@@ -303,6 +303,32 @@ def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[com
     return z, z + max(length, ahead + PAST_MM) * u
 
 
+def _name_side(z: complex, arrows: list[tuple[complex, complex]], links: list[tuple[complex, complex]]
+               ) -> complex:
+    """The side a point's letter is asked on: lower left (the seeds'), unless two of the point's
+    force arrows bound that sector — their letters go beside their shafts there (LINK51's stone A:
+    G2 down and Φ2 up-left, "A" between them left "G2" a 14 mm leader) — then the middle of the
+    widest sector between the point's arrows and links bounded by at most one arrow."""
+    rays = [(cmath.phase((h if abs(h - z) > abs(t - z) else t) - z), True) for t, h in arrows
+            if max(abs(h - z), abs(t - z)) > 0.5]
+    rays += [(cmath.phase(e - z), False) for a, b in links for e in (a, b)
+             if abs(e - z) > 0.5 and _on_segment(z, a, b)]
+    if len(rays) < 2:
+        return -1 - 1j
+    rays.sort()
+    sectors = [(rays[k][0], (rays[(k + 1) % len(rays)][0] - rays[k][0]) % (2 * math.pi),
+                int(rays[k][1]) + int(rays[(k + 1) % len(rays)][1])) for k in range(len(rays))]
+    home = cmath.phase(-1 - 1j)
+    own = next((s_ for s_ in sectors if (home - s_[0]) % (2 * math.pi) < s_[1]), None)
+    if own is None or own[2] < 2:
+        return -1 - 1j
+    free = [s_ for s_ in sectors if s_[2] < 2 and s_[1] > math.radians(60.0)]
+    if not free:
+        return -1 - 1j
+    start, width, _ = max(free, key=lambda s_: s_[1])
+    return cmath.exp(1j * (start + width / 2))
+
+
 BLOCK_HALF = 2.5   # a slider's block: 8 × 5 mm
 
 
@@ -889,7 +915,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         _omega(rec, lab, omega_at, mech.omega1,
                omega_mid if omega_mid is not None else cmath.phase(omega_at - pin))
     for z, name in names:
-        side = next((v for c, v in clear.items() if abs(c - z) < 0.5), -1 - 1j)
+        side = next((v for c, v in clear.items() if abs(c - z) < 0.5), None)
+        if side is None:
+            side = _name_side(z, [(t, h) for w, t, h in drawn if abs(w - z) < 0.5], drawn_links)
         lab.place(z, indexed(name), 3.5, side, step)
     for z, name in centres:
         lab.place(z, indexed(name), 3.5, -1 - 1j, step)

@@ -939,6 +939,18 @@ def _segments_cross(a: complex, b: complex, c: complex, d: complex) -> bool:
     return d1 * d2 <= 0 and d3 * d4 <= 0 and (d1 != d2 or d3 != d4)
 
 
+LEADER_CLEAR = 0.0   # mm: a force's leader passes no other arrow nearer than this (LINK51's "G2" led along
+                     # the head of Φ3 0.3 mm off read as Φ3's name)
+
+
+def segment_gap(a: complex, b: complex, c: complex, d: complex) -> float:
+    """The distance (mm) between the segments a–b and c–d: 0 where they meet, else the least of each
+    one's ends to the other segment."""
+    if _segments_cross(a, b, c, d):
+        return 0.0
+    return min(_off_segment(a, c, d), _off_segment(b, c, d), _off_segment(c, a, b), _off_segment(d, a, b))
+
+
 def box_to_segment(box: Box, a: complex, b: complex) -> float:
     """The distance (mm) between a box and the segment a–b (0 where they meet): the least of the
     segment's ends to the box and the box's corners to the segment."""
@@ -989,12 +1001,15 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     req = alternatives[0]
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-    def led(box) -> bool:
-        """On a leader from its head: the box clear of the other arrows, the leader across none."""
+    def led(box, clear: float = LEADER_CLEAR) -> bool:
+        """On a leader from its head: the box clear of the other arrows, the leader across none and
+        ``clear`` of them (0: touching is allowed)."""
         a, b = _leader(req.at, box)
-        return (owns_line(box, mine, near) or all(box_to_segment(box, *o) >= LED_CLEAR for o in near)
-                and not any(_segments_cross(a, b, *o) for o in near))
-    spot = _far(ob.near(req.at, FAR[-1] + size), req, ink, led)
+        return ((owns_line(box, mine, near) or all(box_to_segment(box, *o) >= LED_CLEAR for o in near))
+                and not any(_segments_cross(a, b, *o) for o in near)
+                and all(segment_gap(a, b, *o) >= clear for o in near))
+    local = ob.near(req.at, FAR[-1] + size)
+    spot = _far(local, req, ink, led) or _far(local, req, ink, lambda box: led(box, 0.0))
     if spot is None:
         return place_labels(record, [req], layer)
     box, start, (a, b) = spot
