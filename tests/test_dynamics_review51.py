@@ -177,3 +177,55 @@ def test_table_1_the_work_and_the_exact_flywheel_are_the_closed_forms(link, ends
         assert doc["flywheel"][key] == pytest.approx(s["mu_I"] * W1 ** 2 * (1 + sign * DELTA) / (2 * s["mu_T"]),
                                                      rel=1e-9)
     assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_A) <= f.precision
+
+
+def motor_run(link, ends, flywheel: float, turns: int = 4, steps: int = 720) -> np.ndarray:
+    """ω(turn) of the steady run with the 4АМ80А6 from its catalogue line alone (0.75 kW, 1000/916 rpm,
+    rotor 0.0031 kg·m²): M = M_n·(ω_c − ω)/(ω_c − ω_n) at the motor shaft, at the crank ×i·η with
+    ω = i·ω_1, i = 916/90, η = 0.9; d(½Iω²)/dφ = M_d(ω) − M*_c(φ) by RK4 (the closed forms' M*_c and
+    I*_m), the last of ``turns`` turns (the motor's slope damps a disturbance by ~e⁻⁶ a turn)."""
+    start, turns_ = ends
+    grid = np.radians(np.arange(0.0, 360.0 + 1e-9, 0.5))
+    mc, im = np.array([reduced(start, u, math.radians(turns_[1])) for u in grid]).T
+    wc, wn, i, eta = 1000 * math.pi / 30, 916 * math.pi / 30, 916 / 90, 0.9
+    mn = 750.0 / wn
+    const = flywheel + 0.0031 * i * i
+
+    def rhs(u: float, T: float) -> float:
+        u %= 2 * math.pi
+        w = math.sqrt(2 * T / (np.interp(u, grid, im) + const))
+        return mn * (wc - i * w) / (wc - wn) * i * eta - np.interp(u, grid, mc)
+    h = 2 * math.pi / steps
+    T = 0.5 * (im[0] + const) * W1 ** 2
+    out = []
+    for _ in range(turns):
+        out = []
+        for k in range(steps):
+            u = k * h
+            out.append(math.sqrt(2 * T / (np.interp(u, grid, im) + const)))
+            k1 = rhs(u, T)
+            k2 = rhs(u + h / 2, T + h / 2 * k1)
+            k3 = rhs(u + h / 2, T + h / 2 * k2)
+            k4 = rhs(u + h, T + h * k3)
+            T += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return np.array(out)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_design_answer_names_the_motors_faster_crank_as_a_cause(link, ends, lang):
+    """Table 2's answer is the motor's flywheel, 7,30 kg·m² against 10,91 for a constant M*_d: with
+    it the motor's run (integrated here) keeps δ = 0.06 about ω_m дв = 10,09 rad/s, 7,02 % above
+    πn/30 — and the flywheel for a δ goes as 1/ω_m², a factor (9,425/10,09)² = 0,873 of the
+    difference. The note under Table 2 says so beside the motor's falling M(ω)."""
+    import re
+
+    from graphplan.report.dynamics import design_note
+    from graphplan.util.markup import plain
+    _, _, doc = link
+    w = motor_run(link, ends, doc["flywheel"]["motor"])
+    wm = (w.max() + w.min()) / 2
+    assert (w.max() - w.min()) / wm == pytest.approx(DELTA, abs=5e-4)
+    note = plain(design_note(doc, lang))
+    got = re.search(r"(\d+[.,]\d+) % (більша|higher) \(J ~ 1/ω_m²\)", note.replace("\u00a0", " "))
+    assert got, note
+    assert float(got.group(1).replace(",", ".")) == pytest.approx(100 * (wm / W1 - 1), abs=0.01)
