@@ -13,6 +13,7 @@ are equal to one ulp, and which of them ended the working stroke was decided by 
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -229,3 +230,78 @@ def test_the_design_answer_names_the_motors_faster_crank_as_a_cause(link, ends, 
     got = re.search(r"(\d+[.,]\d+) % (більша|higher) \(J ~ 1/ω_m²\)", note.replace("\u00a0", " "))
     assert got, note
     assert float(got.group(1).replace(",", ".")) == pytest.approx(100 * (wm / W1 - 1), abs=0.01)
+
+
+# -- helper dyn51's own mechanism: a Scotch yoke driven by a rocker (YOKE_ROCKER51) ---------------------
+
+Y_O2, Y_R1, Y_L2, Y_L3, Y_LC = np.array([0.20, 0.10]), 0.05, 0.22, 0.15, 0.30
+
+
+def yoke_c(phi: float) -> np.ndarray:
+    """The rocker's end C (the stone in the yoke's horizontal slot) at the crank angle φ: B on the
+    circles (A, 0.22) and (O2, 0.15), left of A→O2 (branch B = 1), C = O2 + 0.30·(B − O2)/0.15."""
+    a = Y_R1 * np.array([math.cos(phi), math.sin(phi)])
+    d = Y_O2 - a
+    dist = math.hypot(*d)
+    x = (Y_L2 * Y_L2 - Y_L3 * Y_L3 + dist * dist) / (2 * dist)
+    b = a + x * d / dist + math.sqrt(Y_L2 * Y_L2 - x * x) * np.array([-d[1], d[0]]) / dist
+    return Y_O2 + Y_LC * (b - Y_O2) / Y_L3
+
+
+def test_the_yoke_whose_slot_runs_through_its_rod_point_draws_its_position_plan():
+    """The yoke's slot through its own point D (the rod starting at the slot): the rod's span before
+    the bushing is 0, and the position plan's link outlines divided by it (ZeroDivisionError on every
+    sheet of the scene, the dynamics sheet too, which counts the kinematics sheet's pages). Position 0
+    (start = "min") is the yoke at its lowest: C's closed-form height least there."""
+    from graphplan.drawing.plans import position_record
+    from graphplan.graphic.plans import build_plans
+    from review_scenes import YOKE_ROCKER51
+    st = scene_study(YOKE_ROCKER51)
+    plans = build_plans(st, precision=0.5)
+    rec = position_record(plans)             # lettered: the links' numbers need their outlines
+    assert rec.items
+    c = yoke_c(math.radians(st.phi0))
+    assert c[1] == pytest.approx(min(yoke_c(math.radians(p))[1] for p in np.arange(0.0, 360.0, 0.05)), abs=1e-6)
+
+
+@pytest.fixture(scope="module")
+def own_sheet():
+    """YOKE_ROCKER51's A1 dynamics sheet (uk) composed alone (``conftest.composed``)."""
+    from types import SimpleNamespace
+
+    from conftest import composed
+    from graphplan.sheets.form import form
+    from review_scenes import YOKE_ROCKER51
+    st = scene_study(YOKE_ROCKER51)
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
+    return composed("dynamics", st, form("A1"), args)
+
+
+@pytest.mark.slow                     # the A1 sheet composed: ~6 s of CPU
+def test_the_yokes_work_of_resistance_is_the_force_over_the_stroke(own_sheet):
+    """A_c = 600 N × the yoke's stroke (gravity does no work over the turn): the stroke from C's
+    closed form, 0.15240 m → 91.44 J; the notes print it."""
+    ys = [yoke_c(math.radians(p))[1] for p in np.arange(0.0, 360.0, 0.05)]
+    work = 600.0 * (max(ys) - min(ys))
+    from graphplan.util.markup import plain
+    notes = " ".join(plain(it.text) for p in own_sheet.placed if p.name == "notes"
+                     for it in p.record.items if it.kind == "text")
+    got = re.search(r"A_с = (\d+,\d+) Дж", notes)
+    assert got and float(got.group(1).replace(",", ".")) == pytest.approx(work, abs=0.01)
+
+
+@pytest.mark.slow                     # the A1 sheet composed: ~6 s of CPU
+def test_the_speed_chart_takes_the_room_beside_the_moments_over_the_band(own_sheet):
+    """ω(φ) stands over the tables' column and ends above the band (ΔT(φ), energy–mass, I*(φ)): it is
+    drawn from the moments' right side (GAP = 6 mm off, 1 mm for centring) to the field's right, not
+    from the band's right side (a 90 × 230 mm strip empty beside the moments before), and overlaps
+    nothing."""
+    from graphplan.drawing.layout import GAP
+    boxes = {p.name: p.record.bounds() for p in own_sheet.placed}
+    moments, speed = boxes["moments"], boxes["speed"]
+    band = [b for name, b in boxes.items() if name in ("energy", "wittenbauer", "inertia")]
+    assert band and speed[1] > max(b[3] for b in band)                 # above the band
+    assert speed[0] <= moments[2] + GAP + 1.0 and speed[0] >= moments[2] + GAP - 1e-6
+    for name, b in boxes.items():
+        if name != "speed" and b[2] > speed[0] and b[0] < speed[2]:
+            assert b[3] <= speed[1] + 1e-6 or b[1] >= speed[3] - 1e-6, name

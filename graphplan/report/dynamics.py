@@ -599,8 +599,8 @@ def speed_share(doc: dict[str, Any], lang: str) -> str:
         return ""
     sym, size = motor_omega(lang), num(abs(pct), lang, 3)
     if lang == "uk":
-        return f", а {sym} на {size}{NB}% {'більша' if pct > 0 else 'менша'} (J{NB}~{NB}1/ω_{{m}}^{{2}})"
-    return f", and {sym} is {size}{NB}% {'higher' if pct > 0 else 'lower'} (J{NB}~{NB}1/ω_{{m}}^{{2}})"
+        return f", а {sym} на{NB}{size}{NB}% {'більша' if pct > 0 else 'менша'}{NB}(J{NB}~{NB}1/ω_{{m}}^{{2}})"
+    return f", and {sym} is{NB}{size}{NB}% {'higher' if pct > 0 else 'lower'}{NB}(J{NB}~{NB}1/ω_{{m}}^{{2}})"
 
 
 def smallest_of_line(m) -> bool:
