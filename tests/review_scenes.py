@@ -3957,3 +3957,98 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+YOKE_ROCKER51 = '''# Stop 51 (helper dyn51's own check): a pump drive — a crank-rocker four-bar O1ABO2 whose rocker's end C
+# carries a stone 4 sliding in the horizontal slot of a yoke 5; the yoke's rod D moves on a vertical
+# guide and pumps against a force on its up-stroke (I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПП: a Scotch yoke
+# driven by a rocker, not by the crank); the crank counter-clockwise at 100 rpm; dynamics to a 750-rpm motor.
+title = "Важільний механізм насоса з кулісою, що рухається поступально"
+title_en = "Rocker-driven Scotch-yoke pump"
+designation = "ТММ.КМ.51.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.20, 0.10]
+
+[frame.guides]
+rod = { through = [0.45, 0], angle_deg = 90, title_uk = "штока", title_en = "of the rod" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 100
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+mass = 3
+inertia = 0.015
+
+[[link]]
+name = "O2C"
+number = 3
+joints = ["O2"]
+length = 0.30
+points = { B = 0.5, S3 = 0.5, C = 1.0 }
+mass = 5
+inertia = 0.04
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "yoke"
+mass = 0.5
+
+[[link]]
+name = "yoke"
+number = 5
+joints = []
+ref = "D"
+slides_on = "rod"
+guide = { through = [0, 0], angle_deg = 90 }
+points = { S5 = [0.0, 0.0] }
+mass = 8
+inertia = 0.05
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "min"
+accel = [2]
+force_phi_deg = 60
+output = "D"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 600
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.85
+synchronous_rpm = 750
+'''

@@ -182,16 +182,27 @@ def working_stroke(st: Study, phi_deg: Array) -> Array:
     if len(st.extremes) < 2:
         return np.ones(phi.shape, dtype=bool)
     kin = solve(st.mech, st.structure, list(st.extremes))
-    values = st.output.value(kin)
-    hi = float(st.extremes[int(np.argmax(values))])
-    lo = float(st.extremes[int(np.argmin(values))])
+    values = np.asarray(st.output.value(kin), dtype=float)
+    # an extreme value the output reaches twice (a rocker driven past its toggle by a coulisse swinging
+    # further: LINK51's O4D at 124,6° at φ = 42,2° and 291,5°, equal to 1 ulp) leaves two ways to split
+    # the turn; argmin chose by round-off. Every tied pair is tried: "fast" takes the shortest working
+    # turn, the others the longest (the slow swing with the wobble between the two visits)
+    tol = 1e-9 * max(1.0, float(np.ptp(values)))
+    his = [float(e) for e, v in zip(st.extremes, values) if v >= values.max() - tol]
+    los = [float(e) for e, v in zip(st.extremes, values) if v <= values.min() + tol]
     sense = np.sign(st.mech.omega1)
-    turn = ((lo - hi) * sense) % 360.0
-    first = ((phi - hi) * sense) % 360.0 < turn          # on the stroke hi → lo (to_min)
     rule = st.mech.working_stroke
-    first_works = {"slow": turn >= 180.0 - 1e-9, "fast": turn < 180.0 - 1e-9,
-                   "to_min": True, "to_max": False}[rule]
-    return first if first_works else ~first
+    best = None
+    for hi in his:
+        for lo in los:
+            turn = ((lo - hi) * sense) % 360.0
+            first_works = {"slow": turn >= 180.0 - 1e-9, "fast": turn < 180.0 - 1e-9,
+                           "to_min": True, "to_max": False}[rule]
+            start, length = (hi, turn) if first_works else (lo, 360.0 - turn)
+            if best is None or (length < best[1] - 1e-9 if rule == "fast" else length > best[1] + 1e-9):
+                best = (start, length)
+    start, length = best
+    return ((phi - start) * sense) % 360.0 < length       # from the stroke's first extreme, its turn
 
 
 def force_link(mech: Mechanism, point: str) -> str:

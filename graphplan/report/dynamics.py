@@ -575,12 +575,32 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
         dm = f"{motor_delta(lang)} = {delta_text(doc['motor']['motion']['delta'], lang)} < {num(doc['delta'], lang)}"
         answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
     safe = fw["motor"] < fw["exact"]         # the constant-M*_d flywheel the larger: on the safe side
+    speed = speed_share(doc, lang)
     if uk:
-        return (f"Відповідь проєкту — {answer}: M(ω) двигуна спадає зі швидкістю і гасить частину коливань; "
+        return (f"Відповідь проєкту — {answer}: M(ω) двигуна спадає зі швидкістю і гасить частину коливань{speed}; "
                 f"{exact} {J} — для сталого {md}" + (", із запасом" if safe else ", курсова модель"))
     return (f"The design's answer is {answer}: the motor's M(ω) falls with speed and takes up part of the "
-            f"fluctuation; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
-                                                                    ", the course's model"))
+            f"fluctuation{speed}; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
+                                                                           ", the course's model"))
+
+
+SPEED_SAID = 1.0     # %: ω_m дв off ω_m by more than this — the design note says it as a cause (stop 51)
+
+
+def speed_share(doc: dict[str, Any], lang: str) -> str:
+    """", а ω_{m дв} на 7,02 % більша (J ~ 1/ω_m²)" (markup): the other cause of the motor's flywheel
+    differing from the constant-M*_d one — the crank turning at the motor's own mean speed (the
+    reducer's i = n_н/n_1 taken at the rated slip), and the flywheel for a δ being inversely as the
+    square of the mean speed, (δ ≈ (ΔT_max − ΔT_min)/(J·ω_m²)); LINK51: +7,02 %, J × 0,873 of the
+    10,91 → 7,30 kg·m². Nothing where the two speeds agree to ``SPEED_SAID``."""
+    w1, wm = doc["omega_mean"], doc["motor"]["motion"]["omega_mean"]
+    pct = 100.0 * (wm / w1 - 1.0)
+    if abs(pct) <= SPEED_SAID:
+        return ""
+    sym, size = motor_omega(lang), num(abs(pct), lang, 3)
+    if lang == "uk":
+        return f", а {sym} на{NB}{size}{NB}% {'більша' if pct > 0 else 'менша'}{NB}(J{NB}~{NB}1/ω_{{m}}^{{2}})"
+    return f", and {sym} is{NB}{size}{NB}% {'higher' if pct > 0 else 'lower'}{NB}(J{NB}~{NB}1/ω_{{m}}^{{2}})"
 
 
 def smallest_of_line(m) -> bool:

@@ -1298,6 +1298,36 @@ def widened(fw: Flywheel, length: float, zones: list[tuple[dict[str, Leaf], Leaf
     return None
 
 
+def _speed_widened(fw: Flywheel, lang: str, items: list[Placed], boxes: dict[str, tuple],
+                   region: tuple) -> list[Placed]:
+    """ω(φ) in "speed" stands over the tables' column right of the moments and of the band below them;
+    where it ends above the band's top (its zone is as tall as the room over the column, the band
+    starts lower) the strip between the moments' right side and the band's right side over the band
+    is its too — drawn across it, wider (stop 51's own mechanism: a 90 × 230 mm strip left empty
+    beside the moments, ω(φ) 260 mm wide). The same height: nothing else moves."""
+    placed = next((p for p in items if p.name == "speed"), None)
+    if placed is None or "moments" not in boxes or "band" not in boxes:
+        return items
+    rx0, ry0, rx1, ry1 = placed.record.bounds()
+    moments = next(p for p in items if p.name == "moments")
+    right = moments.record.bounds()[2]          # the moments' box narrowed to its drawing: the boxes
+    left = right + GAP                          # of two drawings never meet (compose.defects)
+    band_top = max(max(p.box[3], p.record.bounds()[3]) for p in items if p.name not in ("moments", "speed")
+                   and p.box[0] < rx0 - 1e-6)
+    if ry0 < band_top + GAP - 1e-6 or left >= rx0 - 1e-6:
+        return items
+    zone = (region[2] - left, ry1 - ry0)
+    wider = _speed(fw, lang, zone)
+    w, h = _wh(wider)
+    if w <= rx1 - rx0 + 1e-6 or w > zone[0] + 1e-6 or h > zone[1] + 1e-6:
+        return items
+    box = (left, ry0, region[2], ry1)
+    mb = moments.box
+    narrowed = Placed("moments", moments.record, (mb[0], mb[1], min(mb[2], right), mb[3]))
+    return ([narrowed if p is moments else p for p in items if p.name != "speed"]
+            + [Placed("speed", centred(wider, box), box)])
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -1384,12 +1414,16 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     else:
         C, groups, width = _column(f, tables, parts, height, shape)
         items, col_box, band_box = [], None, None
+        boxes_at = {}
         for leaf, b in arrange(_tree(shape, leaves, C, foot - region[1]), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
                 items += placed(leaf, b)
                 band_box = b if leaf.name == "band" else band_box
+                boxes_at[leaf.name] = b
+        if shape == "speed":                 # ω(φ) over the band's reach: across to the moments' side
+            items = _speed_widened(fw, lang, items, boxes_at, region)
         if in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
             dx, dy = _band_shift(boxes, band_box)
             slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2    # the band centred in its box
