@@ -3727,3 +3727,93 @@ planets = 4
 module = 0.002
 omega = 150
 '''
+
+
+LINK51 = '''# Stop 51 (the lead's check): a rocking coulisse driving a rocker — the crank O1A turns clockwise, its
+# stone 2 slides in the coulisse O3B, which rocks about O3 below O1; the coulisse's end B drives the rod BD
+# to the rocker O4D, which carries the resistance moment of the working stroke —
+# I(0-1) -> II(2-3) ВПВ -> II(4-5) ВВВ: a group of the second (ВВВ) kind driven by a coulisse.
+title = "Кулісний механізм з коромислом"
+title_en = "Coulisse mechanism driving a rocker"
+designation = "ТММ.КМ.51.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0.20]
+O3 = [0, 0]
+O4 = [0.25, 0.55]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "O3B"
+mass = 1.0
+
+[[link]]
+name = "O3B"
+number = 3
+joints = ["O3"]
+length = 0.40
+points = { S3 = 0.5, B = 1.0 }
+mass = 8
+inertia = 0.11
+
+[[link]]
+name = "BD"
+number = 4
+joints = ["B", "D"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "O4D"
+number = 5
+joints = ["O4", "D"]
+length = 0.16
+points = { S5 = 0.5 }
+mass = 5
+inertia = 0.02
+
+[branch]
+A = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 90
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.06
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
