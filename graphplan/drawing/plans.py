@@ -627,11 +627,15 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
         path = [where(sc, p.layout, sc.body_of(name), name) for p in plans.positions]
         rows.append((name, optional, path))
     labels = [str(p.index) if p.index is not None else f"{p.phi:g}°" for p in plans.positions]
+    groups = {name: {g[0]: g for g in same_spots(path, [k for k, p in enumerate(plans.positions)
+                                                         if (p.key, name) not in skip])}
+              for name, _, path in rows}
     out = []
-    for name, optional, path in rows:
-        keys = [k for k, p in enumerate(plans.positions) if (p.key, name) not in skip]
-        for group in same_spots(path, keys):
-            k = group[0]
+    for k, p in enumerate(plans.positions):      # in the positions' order (the placing's priority)
+        for name, optional, path in rows:
+            group = groups[name].get(k)
+            if group is None:                     # skipped, or numbered with an earlier position
+                continue
             X = path[k]
             mine = [q[k] for _, _, q in rows]
             others = [q[j] for _, _, q in rows for j in range(len(q)) if j not in group]
