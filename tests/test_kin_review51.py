@@ -136,3 +136,50 @@ def test_a_far_off_diagram_is_redrawn_with_smaller_intervals(study):
     drawn = [(m1 + m2) / 2 for m1, m2, a, b in zip(mids[:-1], mids[1:], v[:-1], v[1:]) if a * b < 0]
     assert len(drawn) == len(zeros), (drawn, zeros)
     assert all(abs(a - b) <= 15.0 for a, b in zip(drawn, zeros)), (drawn, zeros)
+
+
+# -- kin51's own: a rocker driving a Scotch yoke (II(4-5) ВПП), its slot through the yoke's D ----------
+
+Y_R, Y_L2, Y_L3, Y_LC, Y_O2 = 0.06, 0.25, 0.18, 0.30, 0.30 + 0j
+Y_W = -120 * 2 * math.pi / 60
+
+
+def _yoke_c(th: float) -> complex:
+    """OWN_YOKE51's C (the rocker's end, in the yoke's vertical slot) at the crank's angle θ: B from
+    the circles (A, 0,25) and (O2, 0,18) on the left of A → O2, C = O2 + 0,30·(B − O2)/0,18."""
+    a = Y_R * cmath.exp(1j * th)
+    dist = abs(Y_O2 - a)
+    x = (Y_L2 * Y_L2 - Y_L3 * Y_L3 + dist * dist) / (2 * dist)
+    e = (Y_O2 - a) / dist
+    b = a + x * e + 1j * e * math.sqrt(Y_L2 * Y_L2 - x * x)
+    return Y_O2 + Y_LC * (b - Y_O2) / Y_L3
+
+
+def test_own_yoke_driven_by_a_rocker_is_drawn_with_its_slot_through_c():
+    """The yoke's slot passing through its own D (the rod's point) left the rod no length on the
+    plan's outline measure, and the sheet stopped with ZeroDivisionError. Now the plan draws, in
+    either language, at every thin position a slot line through the closed form's C (its x at μl
+    from position 0's), and the stroke between D′ and D″ is the closed form's 2·l_C·…: 166,7 mm."""
+    from graphplan.drawing.plans import joints_at, position_record, stroke_ends
+    from graphplan.graphic.plans import build_plans
+    from review_scenes import OWN_YOKE51
+    plans = build_plans(scene_study(OWN_YOKE51), count=12, accel=[4], precision=0.5, mu_l=0.002)
+    turns = np.radians(np.arange(0.0, 360.0, 0.01))
+    xs = np.array([_yoke_c(t).real for t in turns])
+    ends = stroke_ends(plans)
+    sc = plans.scheme
+    d_ends = [joints_at(sc, lay)["D"] for lay in ends]
+    assert abs(d_ends[0] - d_ends[1]) * plans.mu_l == pytest.approx(np.ptp(xs), abs=1e-4)
+    assert np.ptp(xs) == pytest.approx(0.16667, abs=1e-4)
+    th0 = math.radians(plans.positions[0].phi)
+    assert _yoke_c(th0).real == pytest.approx(xs.max(), abs=1e-6)          # start = "max": D′ at x_max
+    for lang in ("uk", "en"):
+        rec = position_record(plans, lang=lang)
+        d0 = joints_at(sc, plans.positions[0].layout)["D"]
+        for p in plans.positions:
+            if p.key in plans.accel_keys:
+                continue
+            x = d0.real + (_yoke_c(math.radians(p.phi)).real - _yoke_c(th0).real) / plans.mu_l
+            slots = [q for q in rec.items if q.kind == "segment" and q.step == f"position {p.index}"
+                     and abs(q.points[0][0] - q.points[-1][0]) < 1e-6 and abs(q.points[0][1] - q.points[-1][1]) > 20]
+            assert any(abs(q.points[0][0] - x) < 0.05 for q in slots), (lang, p.index, x)

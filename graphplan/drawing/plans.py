@@ -862,7 +862,9 @@ def link_shapes(sc: Scheme, lay: Layout) -> dict[str, list[complex]]:
     for name, link in sc.mech.links.items():
         if yoke_guide(sc.mech, name) is not None:
             a, b, p, q = yoke_parts(sc, lay, name, yoke_spans(sc, [lay], name))
-            x = rod_crossing(p, (q - p) / abs(q - p), a, (b - a) / abs(b - a))
+            # the rod's unit from the yoke's frame: a slot through D itself leaves the rod no length
+            # here (no bushing asked), p = q (kin51's own: the rocker's Scotch yoke, ZeroDivisionError)
+            x = rod_crossing(p, _yoke_frame(sc, lay, name)[1], a, (b - a) / abs(b - a))
             out[name] = [a, b, x, q if abs(q - x) >= abs(p - x) else p]
         elif link.slides_on is not None and len(link.joints) <= 1:
             centre = pts[next(iter(link.local))]
@@ -1060,7 +1062,7 @@ def draw_yoke(rec: Record, sc: Scheme, lay: Layout, name: str, spans: YokeSpans,
         rec.segment(_pt(a), _pt(b), role=role, width=width, layer="mechanism", step=step)
     rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
     pose = lay.poses[name]
-    for f, z in rod_stubs(p, (q - p) / abs(q - p), [pose.at(w) for w in sc.mech.links[name].local.values()]):
+    for f, z in rod_stubs(p, _yoke_frame(sc, lay, name)[1], [pose.at(w) for w in sc.mech.links[name].local.values()]):
         rec.segment(_pt(f), _pt(z), role=role, width=width, layer="mechanism", step=step)
 
 
