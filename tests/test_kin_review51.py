@@ -183,3 +183,20 @@ def test_own_yoke_driven_by_a_rocker_is_drawn_with_its_slot_through_c():
             slots = [q for q in rec.items if q.kind == "segment" and q.step == f"position {p.index}"
                      and abs(q.points[0][0] - q.points[-1][0]) < 1e-6 and abs(q.points[0][1] - q.points[-1][1]) > 20]
             assert any(abs(q.points[0][0] - x) < 0.05 for q in slots), (lang, p.index, x)
+
+
+def test_own_yoke_dimensions_name_the_rockers_pivot_and_only_the_rows_given():
+    """Table 3 gave the yoke's guide as "e = 0,340" (the crank-slider's offset from O1) and its
+    legend explained an e₅ the table did not have (the slot passes through D: no row). The guide
+    driven by the rocker's end is X from the rocker's O2 — its distance from the guide's line
+    y = 0,34 (O2 on y = 0): 0,340 m; the legend says α₅ alone. The Scotch yoke of review 11 (the
+    crank's stone, its slot 0,02 m from D) keeps its row e₃ and the legend naming it."""
+    from graphplan.sheets.kintables import dimensions_table
+    from graphplan.util.markup import plain
+    from review_scenes import OWN_YOKE51, YOKE11
+    texts = [plain(i.text) for i in dimensions_table(scene_study(OWN_YOKE51), 0.002, "uk").items if i.kind == "text"]
+    assert "X від O₂" in texts and texts[texts.index("X від O₂") + 1] == "0,340"
+    assert not any(t.startswith("e") for t in texts)
+    assert "α₅ — кут паза" in " ".join(texts) and "e₅" not in " ".join(texts)
+    texts = [plain(i.text) for i in dimensions_table(scene_study(YOKE11), 0.002, "en").items if i.kind == "text"]
+    assert texts[texts.index("e₃") + 1] == "0.020" and "e₃: from D to the slot" in " ".join(texts)
