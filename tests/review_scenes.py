@@ -4052,3 +4052,99 @@ delta = 0.04
 efficiency = 0.85
 synchronous_rpm = 750
 '''
+
+
+OWN_YOKE51 = '''# Stop 51 (kin51's own): a crank-rocker four-bar O1ABO2 whose rocker O2C carries at its end C a stone 4 that
+# slides in the vertical slot of a yoke 5; the yoke slides on a horizontal guide and carries the working
+# resistance — I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПП: a sinus (Scotch-yoke) group driven by a rocker, not by
+# the crank. The crank turns clockwise at 120 rpm.
+title = "Шестиланковий механізм з кулісою, що рухається поступально"
+title_en = "Six-bar linkage: a rocker driving a Scotch yoke"
+designation = "ТММ.КМ.51.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.0]
+
+[frame.guides]
+rod = { through = [0.30, 0.34], angle_deg = 0, title_uk = "повзуна", title_en = "of the yoke" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+shape = { C = [0.30, 0.0] }
+points = { S3 = 0.5 }
+mass = 6
+inertia = 0.05
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "yoke"
+mass = 0.8
+
+[[link]]
+name = "yoke"
+number = 5
+joints = []
+ref = "D"
+slides_on = "rod"
+guide = { through = [0.0, 0.0], angle_deg = 90 }
+points = { S5 = [0.0, 0.0] }
+mass = 7.0
+inertia = 0.04
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [4]
+force_phi_deg = 60
+output = "D"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500
+'''

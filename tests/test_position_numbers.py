@@ -55,10 +55,11 @@ def _read(rec, plans):
                if q.kind == "segment" and q.role == "label"]
     out = []
     for q in rec.items:
-        if q.kind != "text" or q.text not in at or q.size > 3.0:
+        parts = q.text.split(", ") if q.kind == "text" else []
+        if q.kind != "text" or not all(t in at for t in parts) or q.size > 3.0:
             continue
         box = q.ink()
-        mine = at[q.text]
+        mine = [z for t in parts for z in at[t]]     # "4, 7, 8": one spot numbered once (stop 51)
         led = [(a, b) for a, b in leaders if min(_gap(box, a), _gap(box, b)) < 1.2]
         if led:
             a, b = led[0]
@@ -66,14 +67,14 @@ def _read(rec, plans):
                 a, b = b, a                          # a: the end at the point
             u = (a - b) / abs(a - b)                 # the leader, produced back past its start
             seen = min(every + [("dot", d) for d in dots], key=lambda t: abs(t[1] - (a + 1.2 * u)))
-            out.append((q.text, mine, seen, "leader"))
+            out += [(t, mine, (t, seen[1]) if seen[0] in parts else seen, "leader") for t in parts]
         else:
-            cands = [(lab, z) for lab, z in every if lab != q.text or any(abs(z - m) < 1e-6 for m in mine)]
+            cands = [(lab, z) for lab, z in every if lab not in parts or any(abs(z - m) < 1e-6 for m in mine)]
             cands += [("dot", d) for d in dots if min(abs(d - m) for m in mine) > SAME]
             near = min(_gap(box, z) for z in mine)
-            rival = min((t for t in cands if t[0] != q.text), key=lambda t: _gap(box, t[1]), default=None)
-            seen = (q.text, mine[0]) if rival is None or _gap(box, rival[1]) > near else rival
-            out.append((q.text, mine, seen, "beside"))
+            rival = min((t for t in cands if t[0] not in parts), key=lambda t: _gap(box, t[1]), default=None)
+            seen = ("", mine[0]) if rival is None or _gap(box, rival[1]) > near else rival
+            out += [(t, mine, (t, seen[1]) if seen[0] == "" else seen, "beside") for t in parts]
     return out
 
 

@@ -373,7 +373,17 @@ def guide_distances(st: Study) -> list[tuple[str, float, object, str]]:
 
 def _driver_pivot(mech, guide: str) -> str | None:
     """The frame pivot of the rocker whose rod drives the slider on ``guide`` (None: the crank's rod
-    drives it, or no rocker does)."""
+    drives it, or no rocker does) — or whose own point carries the stone in a yoke's slot on it
+    (kin51's own: a rocker's end C in a Scotch yoke's slot, its guide's distance "e" from O1 given
+    as X from the rocker's O2)."""
+    for yoke in (l for l in mech.links.values() if l.slides_on == guide and not l.joints):
+        for stone in (l for l in mech.links.values() if l.slides_on == yoke.name):
+            for j in stone.joints:
+                for carrier in mech.links.values():
+                    if carrier is not stone and j in carrier.joints and carrier.name != mech.crank.link:
+                        pivot = next((p for p in carrier.joints if p in mech.frame), None)
+                        if pivot is not None:
+                            return pivot
     for slider in (l for l in mech.links.values() if l.slides_on == guide):
         for j in slider.joints:
             for rod in (l for l in mech.links.values() if l is not slider and j in l.joints):
@@ -424,8 +434,10 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
             rows.append([label, deg, deg])
         else:
             rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
+    given = {label for label, _, _ in yoke_dimensions(st)}
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
-        notes.append(w('dims yoke', n=yoke.strip("{}")))
+        k = yoke.strip("{}")     # e_k said only where its row is (a slot through D has none: kin51's own)
+        notes.append(w('dims yoke' if f"e_{{{k}}}" in given else 'dims yoke angle', n=k))
     # the centres at their links' middles said only beside one that has its own row (review 12's O2S3):
     # where every centre is at its middle (the lab's default) the line says nothing a reader needs
     middles = middle_centres(st)

@@ -254,6 +254,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin max_error": ('Найбільша похибка в таблицях {t}', 'Largest error in tables {t}'),
     "kin max_error_20": ('векторів від 20 мм', 'vectors from 20 mm'),
     "kin subtitle": ('Кінематичний аналіз', 'Kinematic analysis'),
+    "kin dims yoke angle": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока",
+                            "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide"),
     "kin dims yoke": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока; e_{{{n}}} — від D до осі паза вздовж штока",
                       "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide; e_{{{n}}}: from D to the slot's line along the rod"),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
