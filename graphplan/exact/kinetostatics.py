@@ -206,13 +206,16 @@ def working_stroke(st: Study, phi_deg: Array) -> Array:
 
 
 def force_link(mech: Mechanism, point: str) -> str:
-    """The link an external force at ``point`` acts on: the last link (in the scene's order)
-    that carries the point — the ram, not the rod, for a force at their common joint."""
+    """The link an external force at ``point`` acts on: the slider that carries the point (one on a
+    frame guide first) — the ram, not the rod, for a force at their common joint, and not the rod of
+    the next group hinged there too — else the last link (in the scene's order) that carries it."""
     holders = [b for b in mech.bodies_of(point) if b != FRAME]
     if not holders:
         raise GraphplanError(f"force.point: {point!r} is a frame point; a force on the frame does "
                              "not load the mechanism", mech.source)
-    return holders[-1]
+    sliders = [b for b in holders if mech.links[b].slides_on is not None]
+    framed = [b for b in sliders if mech.guides[mech.links[b].slides_on].body == FRAME]
+    return (framed or sliders or holders)[-1]
 
 
 def _motion_direction(st: Study, link: str, local: complex, phi: Array, v: Array) -> Array:

@@ -84,7 +84,9 @@ def turns(mech: Mechanism, link: str) -> bool:
 
 
 def default_output(mech: Mechanism, structure: Structure) -> Output:
-    """The scene's ``output``, else the last group's slide on the frame, else its link pinned to the frame."""
+    """The scene's ``output``, else the slide a resistance force acts on (the working member, e.g. a
+    slider that drives a further group), else the last group's slide on the frame, else its link
+    pinned to the frame."""
     if mech.output is not None:
         # a sliding point first: a crank-slider's slider is often named after its point (link "B"
         # carrying the point B), and ``output = "B"`` means the point that slides
@@ -98,6 +100,11 @@ def default_output(mech: Mechanism, structure: Structure) -> Output:
             return Output("link", mech.output)
         raise SceneError(f"positions.output: {mech.output!r} is neither a link nor a sliding point",
                          mech.source)
+    for force in mech.forces:          # the useful resistance's slide: the working member
+        for link in mech.links.values():
+            if (link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
+                    and next(iter(link.local)) == force.point):
+                return Output("slide", force.point)
     for dyad in reversed(structure.dyads):
         for pair in (dyad.outer_b, dyad.outer_a):
             if pair.kind == "P" and FRAME in pair.bodies:
