@@ -2,7 +2,7 @@
 drawing (GOST 2.104-style: a thick outline and header line, thin rules, numbers right-aligned)."""
 from __future__ import annotations
 
-from graphplan.graphic.record import THICK, THIN, Record, line_pitch, text_width
+from graphplan.graphic.record import THICK, THIN, Record, ink_boxes, line_pitch, text_width
 
 LETTERING = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0)   # GOST 2.304 letter heights, mm
 TABLES = 1.4      # the sheets' tables: ruled at 2.5 mm lettering, drawn 1.4 × (3.5 mm letters, 8.4 mm rows)
@@ -72,15 +72,36 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
                     width=THICK if k in (0, len(x_edges) - 1) else THIN)
     for r, row in enumerate(rows):
-        y = top - (r + 1) * row_h + (row_h - size) / 2 + 0.15 * size
+        y_row = top - (r + 1) * row_h + (row_h - size) / 2 + 0.15 * size
         for c, cell in enumerate(row):
             if not cell:
                 continue
+            y = baseline_in_row(cell, size, y_row, top - r * row_h, row_h)
             how = "middle" if r < header else (align[c] if align else ("end" if _is_number(cell) else "middle"))
             x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
                  "end": x_edges[c + 1] - PAD - 0.3}[how]
             rec.label((x, y), cell, size=size, anchor=how, layer="tables")
     return rec
+
+
+RULE_CLEAR = 0.8     # mm from a rule's centre line to a cell's ink: its half width and a reader's gap
+
+
+def baseline_in_row(cell: str, size: float, y: float, row_top: float, row_h: float) -> float:
+    """The cell's baseline: ``y`` (letters of ``size`` centred in the row) unless its ink reaches
+    within ``RULE_CLEAR`` of the row's top rule — a prime or index raised high (z′₂ of a type-B
+    train), a Й, in a row only twice the letters' height — then lowered to keep that clearance, or,
+    where that would bring its descenders as near the bottom rule, its ink centred in the row."""
+    boxes = ink_boxes(cell, size)
+    if not boxes:
+        return y
+    hi, lo = max(b[3] for b in boxes), min(b[1] for b in boxes)
+    if row_top - (y + hi) >= RULE_CLEAR:
+        return y
+    lowered = row_top - RULE_CLEAR - hi
+    if lowered + lo - (row_top - row_h) >= RULE_CLEAR:
+        return lowered
+    return row_top - row_h / 2 - (hi + lo) / 2
 
 
 def _is_number(text: str) -> bool:

@@ -21,6 +21,7 @@ from graphplan.report.gears import (agreeing, alike, bare, contact_ratio_text, d
 from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, keep_out,
                                       note_block)
 from graphplan.sheets.form import TABLES, Form, enlarged, table
+from graphplan.drawing.tables import baseline_in_row
 from graphplan.sheets.kinematics import TITLE
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import escape
@@ -995,6 +996,7 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     return v0, pages
 
 
+RULED_ROW = 6.0          # the gear tables' ruled rows, mm (``table(..., row_h=6.0)``)
 TIGHT = 7.0 / 6.0        # the A1 column's tables at 3.5 mm letters in 7-mm rows (``tight``), × the ruled 6 mm
 SIZES = (TABLES, (TABLES, TIGHT), 1.0)   # the A1 column's tables tried: 3.5 mm letters and 8.4-mm rows, 7-mm rows, ruled
 
@@ -1009,9 +1011,17 @@ def tight(rec: Record, k: float = TABLES, rows: float = TIGHT) -> Record:
     from graphplan.graphic.record import Primitive
     big = enlarged(rec, k)
     f = rows / k
-    return Record(big.title, [Primitive(p.kind, tuple((x, y * f) for x, y in p.points), p.role, p.layer, p.step,
-                                        p.text, p.size, p.radius, p.angles, p.anchor, p.width) for p in big.items],
-                  dict(big.scales))
+    row_h = RULED_ROW * rows
+
+    def placed(p: Primitive) -> Primitive:
+        pts = tuple((x, y * f) for x, y in p.points)
+        if p.kind == "text" and pts[0][1] < 0.0:     # a cell's lettering: its ink clear of the rules
+            # (the prime of z′₂ raised onto the row's top rule in the 7-mm rows, review 51)
+            row_top = -math.floor(-pts[0][1] / row_h) * row_h
+            pts = ((pts[0][0], baseline_in_row(p.text, p.size, pts[0][1], row_top, row_h)),)
+        return Primitive(p.kind, pts, p.role, p.layer, p.step, p.text, p.size, p.radius, p.angles, p.anchor,
+                         p.width)
+    return Record(big.title, [placed(p) for p in big.items], dict(big.scales))
 
 
 def _sized(rec: Record, k) -> Record:
