@@ -70,3 +70,28 @@ def test_the_force_works_over_one_whole_stroke_of_the_slider(st):
     # along the horizontal guide, against the closed form's motion wherever it acts
     assert np.all(np.abs(p_b.force[on].imag) <= 1e-9 * np.abs(p_b.force[on]))
     assert np.all(p_b.force[on].real[3:-3] * xdot[on][3:-3] < 0)
+
+
+@pytest.mark.parametrize("name, offset", [("SLIDER_ROCKER51", 0.0), ("OWN_SIX49", None)])
+def test_a_slider_on_the_cranks_rod_gives_its_guide_from_the_crank(name, offset):
+    """Table 3 gives a guide's distance as the lab does: e from the crank's pivot where the crank's
+    own rod drives the slider — even when the slider's pin drives a further group (the rod BC to a
+    rocker); "X від O₂" of that rocker read as a crank-slider's offset from the wrong pivot. The
+    distance is the crank pivot's from the guide line (the scene's geometry); an axial guide has no row."""
+    import cmath
+
+    import review_scenes
+    from graphplan.sheets.kintables import guide_distances
+    st = scene_study(getattr(review_scenes, name))
+    rows = guide_distances(st)
+    slider = next(link for link in st.mech.links.values() if link.slides_on in st.mech.guides
+                  and any(st.mech.crank.pin in r.joints for r in st.mech.links.values() if link.joints[0] in r.joints))
+    g = st.mech.guides[slider.slides_on]
+    e = abs(((st.mech.frame[st.mech.crank.pivot] - g.through) * cmath.exp(-1j * g.angle)).imag)
+    if offset is not None:
+        assert e == pytest.approx(offset, abs=1e-12)
+    if e < 1e-9:
+        assert rows == []
+    else:
+        assert [(label, pivot) for label, _, _, pivot in rows] == [("e", st.mech.crank.pivot)]
+        assert rows[0][1] == pytest.approx(e, rel=1e-12)

@@ -385,6 +385,10 @@ def _driver_pivot(mech, guide: str) -> str | None:
                         if pivot is not None:
                             return pivot
     for slider in (l for l in mech.links.values() if l.slides_on == guide):
+        rods = [l for j in slider.joints for l in mech.links.values() if l is not slider and j in l.joints]
+        if any(mech.crank.pin in rod.joints for rod in rods):
+            return None      # the crank's own rod drives it (a crank-slider whose slider drives a further
+            #                  group through its pin: review 51's six-bar printed "X від O₂" of the rocker)
         for j in slider.joints:
             for rod in (l for l in mech.links.values() if l is not slider and j in l.joints):
                 for k in rod.joints:
