@@ -3727,3 +3727,30 @@ planets = 4
 module = 0.002
 omega = 150
 '''
+
+
+CAM51 = '''# Stop 51 (the lead's check): a rocking roller follower, the cam counter-clockwise, a parabolic rise of
+# 120° (soft shocks), a short far dwell of 20°, a cosine return of 90°, 6 divisions.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 51)"
+title_en = "Cam with a rocking roller follower (check 51)"
+designation = "ТММ.КМ.51.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 25
+arm = 0.12
+centre_distance = 0.15
+roller_radius = 0.012
+phases_deg = { rise = 120, dwell_far = 20, return = 90, dwell_near = 130 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "ccw"
+divisions = 6
+'''

@@ -102,8 +102,13 @@ WORDS = {
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм",
-           "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль іде "
-                    "через O, а {c} рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
+           "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль — пряма "
+                    "CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож ϑ = 90° − ∠OCO_{{1}} "
+                    "з трикутника OO_{{1}}C (a, l, R_0)",
+           "dwells": "на вистоях ϑ ≠ 0 (ближньому {t}°, віддаленому {u}°): профіль там — дуги кіл з центром O, їх "
+                     "нормаль — пряма CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож "
+                     "ϑ = 90° − ∠OCO_{{1}} з трикутника OO_{{1}}C (a, l і R_0 = {r} мм на ближньому, "
+                     "R_{{max}} = {m} мм на віддаленому)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
            "central": " (центральний штовхач: його вісь проходить через O)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
@@ -145,8 +150,12 @@ WORDS = {
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm",
-           "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal passes through "
-                    "O, and {c} moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
+           "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal the line CO, "
+                    "and {c} moves square to the arm O_{{1}}C, so ϑ = 90° − ∠OCO_{{1}} from the triangle "
+                    "OO_{{1}}C (a, l, R_0)",
+           "dwells": "on the dwells ϑ ≠ 0 (near {t}°, far {u}°): the profile there arcs about O, their normal the "
+                     "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = 90° − ∠OCO_{{1}} from the "
+                     "triangle OO_{{1}}C (a, l and R_0 = {r} mm on the near dwell, R_{{max}} = {m} mm on the far one)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
            "central": " (a central follower: its axis passes through O)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
@@ -178,6 +187,21 @@ WORDS = {
            "warn": "Warnings",
            "point_c": ("the roller centre C", "the knife-edge's point C")},
 }
+
+
+def dwell_pressure_angle(doc: dict, near: float) -> tuple[float, float]:
+    """A rocking follower's pressure angle on the far dwell and |OC| there, R_max, from the triangle
+    OO₁C: the profile an arc about O, its normal CO, C moving square to O₁C, so ϑ = 90° − ∠OCO₁ with
+    cos ∠OCO₁ = (l² + R² − a²)/(2lR), R² = a² + l² − 2al·cos(ψ₀ + ψ_max); signed as the near dwell's
+    ``near`` (the same formula at R₀) is printed."""
+    a, l = doc["centre_distance_m"], doc["arm_m"]
+
+    def theta(psi_deg: float) -> tuple[float, float]:
+        r = math.sqrt(a * a + l * l - 2 * a * l * math.cos(math.radians(psi_deg)))
+        return 90.0 - math.degrees(math.acos((l * l + r * r - a * a) / (2 * l * r))), r
+    t0, _ = theta(doc["arm_angle_deg"])
+    tf, r_max = theta(doc["arm_angle_deg"] + doc["swing_deg"])
+    return (tf if t0 * near >= 0 else -tf), r_max
 
 
 def printed_error(graphical: str, exact: str, judged: bool) -> float | None:
@@ -296,7 +320,13 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     start = doc["positions"][0]["exact"]["pressure_angle_deg"]
     if rocking and abs(start) >= 0.5:       # a rocking follower's ϑ ≠ 0 where it rests (stop 46: "−29,3 at 0?")
         # a knife-edge's point, not a roller's centre (stop 48: the knife-edge cam's note named a roller)
-        lines.append(w["dwell"].format(t=ang(start), c=w["point_c"][doc["roller_radius_m"] <= 0]))
+        c = w["point_c"][doc["roller_radius_m"] <= 0]
+        far, r_max = dwell_pressure_angle(doc, start)
+        if doc["phases_deg"]["dwell_far"] > 0 and abs(far) >= 0.5:      # stop 51: Table 1's 6.4° at the far dwell unexplained
+            lines.append(w["dwells"].format(t=ang(start), u=ang(far), c=c, r=n(doc["base_radius_m"] * 1000),
+                                            m=fixed(r_max * 1000, lang, 2)))
+        else:
+            lines.append(w["dwell"].format(t=ang(start), c=c))
     c = doc["curvature_min_m"]
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))

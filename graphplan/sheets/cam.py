@@ -723,10 +723,15 @@ def _largest(ok, sizes: list[float]) -> float | None:
 MOST_DIVISIONS = 48      # the most intervals a phase a redrawing tries (four times the scene's, at most)
 
 
-def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
+def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5, lang: str = "uk"):
     """The construction at the scales of the cam sheet on ``f`` (_construct_on), a rocking follower's
-    phase diagram at the scale the sheet draws it at and R0 read there (phase_scale_of)."""
-    return phase_scale_of(sol, _construct_on(sol, f, n, precision))
+    phase diagram at the scale the sheet in ``lang`` draws it at and R0 read there (_sheet_layout's
+    choice, the sheet's own: stop 51 found the terminal reading R0 = 52.4 mm at 2.5:1 where the A1 sheet,
+    whose layout had no room for the diagram at 2.5:1, drew it at 1:1 and printed 52.5 mm)."""
+    g = _construct_on(sol, f, n, precision)
+    if not sol.cam.rocking:
+        return g
+    return _sheet_layout(sol, g, sol.cam, f, lang)[0]
 
 
 def _construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
@@ -1100,14 +1105,12 @@ def _names(node) -> set[str]:
     return set().union(*map(_names, kids)) if kids is not None else {getattr(node, "name", "")}
 
 
-def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
-    """The cam sheet: the three constructions captioned with their scales, the table and the notes,
-    flowed over the sheet (and further sheets of the set when the format is small) in reading order,
-    each drawing at the largest standard scale that fits its zone (cam_sizes)."""
-    lang = args.lang
-    sol = solve(cam)
-    # laid out with the phase diagram at the profile's μ_l; enlarged where the layout keeps (_phase_enlarged)
-    g = _construct_on(sol, f, None, args.precision)
+def _sheet_layout(sol, g, cam: Cam, f: Form, lang: str) -> tuple:
+    """(g, leaves, table, notes, doc, layout, notes_at) of the cam sheet on ``f``: the A1 sheet in
+    columns, its rocking phase diagram enlarged where the layout keeps (_phase_enlarged), ϑ(φ) grown,
+    Table 1 larger; else a set, each drawing on its own (set_sizes), the phase diagram enlarged where
+    the set keeps (_set_phase_enlarged). ``g`` with the phase diagram's scale chosen here — the one
+    construction the sheet and `graphplan cam` (construct_on) both read R0 from."""
     region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, doc, laid, notes_at = _arranged(sol, g, cam, lang, f)
     if f.name == "A1" and _one_sheet(laid):
@@ -1119,6 +1122,20 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True, row=sheet_room(region, keep))
         laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
         g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
+    return g, leaves, tab, nts, doc, laid, notes_at
+
+
+def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
+    """The cam sheet: the three constructions captioned with their scales, the table and the notes,
+    flowed over the sheet (and further sheets of the set when the format is small) in reading order,
+    each drawing at the largest standard scale that fits its zone (cam_sizes)."""
+    lang = args.lang
+    sol = solve(cam)
+    # laid out with the phase diagram at the profile's μ_l; enlarged where the layout keeps (_phase_enlarged)
+    g = _construct_on(sol, f, None, args.precision)
+    region, keep = field_of(f), keep_out(f)
+    g, leaves, tab, nts, doc, laid, notes_at = _sheet_layout(sol, g, cam, f, lang)
+    if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
         def placed(t) -> bool:
             return t is not None and any("pressure" in _names(leaf) or getattr(getattr(leaf, "record", None), "theta_at", None)

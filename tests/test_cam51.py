@@ -1,0 +1,146 @@
+"""Stop 51's look at the cam sheet (the lead's CAM51: a rocking roller follower, the cam counter-clockwise,
+ψ_max = 25°, l = 120 mm, a = 150 mm, a parabolic rise of 120°, a far dwell of 20°, a cosine return of
+90°). Each number against the test's own brute force of the inversion — the roller centre C on its arc
+about O₁, the cam turned about O, the pressure angle the angle between the profile's normal and C's
+velocity — or read off what the sheet prints:
+
+- R0, ψ(φ), ϑ(φ) at the divisions and ρ_min of the centre profile are the brute force's;
+- the notes explain ϑ ≠ 0 on both dwells (Table 1 printed 6.4° on the far dwell unexplained) with the
+  triangle OO₁C's values;
+- the A1 sheet and `graphplan cam` print one graphical R0 (the terminal read it at 2.5:1, 52.4 mm, where
+  the sheet, with no room for the phase diagram at 2.5:1, drew it at 1:1 and printed 52.5 mm)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from graphplan.exact.cam import solve
+from graphplan.graphic.cam import construct
+from graphplan.model.cam import load
+from review_scenes import CAM51
+
+A, L, PSI = 0.150, 0.120, math.radians(25.0)
+RISE, FAR, RET = (math.radians(d) for d in (120.0, 20.0, 90.0))
+ALLOWED = (40.0, 45.0)
+
+
+def _psi(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """ψ and dψ/dφ of the scene's laws in closed form: parabolic rise f = 2u², 1 − 2(1 − u)²; cosine
+    return ψ = Ψ(1 + cos πu)/2."""
+    p, d = np.zeros_like(phi), np.zeros_like(phi)
+    r = phi <= RISE
+    u = phi[r] / RISE
+    p[r] = PSI * np.where(u < 0.5, 2 * u * u, 1 - 2 * (1 - u) ** 2)
+    d[r] = PSI / RISE * np.where(u < 0.5, 4 * u, 4 * (1 - u))
+    f = (phi > RISE) & (phi < RISE + FAR)
+    p[f] = PSI
+    t = (phi >= RISE + FAR) & (phi <= RISE + FAR + RET)
+    u = (phi[t] - RISE - FAR) / RET
+    p[t] = PSI * (1 + np.cos(math.pi * u)) / 2
+    d[t] = -PSI * math.pi / (2 * RET) * np.sin(math.pi * u)
+    return p, d
+
+
+def _theta(R0: float, phi: np.ndarray) -> np.ndarray:
+    """The pressure angle by inversion: C = O₁ + l·e^{i(π − ψ0 − ψ)} with O₁ = (a, 0), the profile
+    C·e^{−iφ} (ccw), its tangent turned back to the fixed frame t = C′ − iC, C's velocity along
+    u = ∂C/∂ψ / |∂C/∂ψ|; sin ϑ = Re(t̄u)/|t|, in degrees."""
+    psi0 = math.acos((A * A + L * L - R0 * R0) / (2 * A * L))
+    p, d = _psi(phi)
+    e = np.exp(1j * (math.pi - psi0 - p))
+    C = A + L * e
+    t = -1j * L * e * d - 1j * C
+    return np.degrees(np.arcsin(np.real(np.conj(t) * (-1j * e)) / np.abs(t)))
+
+
+def _allowed(R0: float, n: int) -> bool:
+    rise = np.linspace(0, RISE, n)[1:-1]
+    ret = np.linspace(RISE + FAR, RISE + FAR + RET, n)[1:-1]
+    return np.abs(_theta(R0, rise)).max() <= ALLOWED[0] and np.abs(_theta(R0, ret)).max() <= ALLOWED[1]
+
+
+def _smallest_R0() -> float:
+    """The first allowed radius of a 1 mm scan of the arm's reach, refined by bisection on fine grids."""
+    first = next(R for R in np.arange(A - L + 0.001, A + L, 0.001) if _allowed(R, 1201))
+    lo, hi = first - 0.001, first
+    for _ in range(30):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if _allowed(mid, 12001) else (mid, hi)
+    return hi
+
+
+@pytest.fixture(scope="module")
+def cam51(tmp_path_factory):
+    path = tmp_path_factory.mktemp("cam51") / "cam51.toml"
+    path.write_text(CAM51, encoding="utf-8")
+    sol = solve(load(path))
+    return path, sol, construct(sol, series="rad")
+
+
+def test_r0_psi_theta_and_rho_are_the_brute_force_inversions(cam51):
+    from graphplan.report.cam import cam_json
+    _, sol, g = cam51
+    doc = cam_json(sol, g, "x")
+    assert doc["base_radius_min_m"] == pytest.approx(_smallest_R0(), abs=2e-6)
+    R0 = doc["base_radius_m"]
+    assert R0 == pytest.approx(0.053)
+    phi = np.radians([p["phi_deg"] for p in doc["positions"]])
+    psi, _ = _psi(phi)
+    assert [p["exact"]["s_deg"] for p in doc["positions"]] == pytest.approx(np.degrees(psi), abs=1e-9)
+    assert [p["exact"]["pressure_angle_deg"] for p in doc["positions"]] == pytest.approx(_theta(R0, phi), abs=1e-6)
+    fine_rise = np.linspace(0, RISE, 40001)
+    fine_ret = np.linspace(RISE + FAR, RISE + FAR + RET, 40001)
+    assert doc["pressure_angle_max_deg"]["rise"] == pytest.approx(np.abs(_theta(R0, fine_rise)).max(), abs=1e-3)
+    assert doc["pressure_angle_max_deg"]["return"] == pytest.approx(np.abs(_theta(R0, fine_ret)).max(), abs=1e-3)
+    # ρ of the centre profile P = C·e^{−iφ} by differences on a fine grid: the smallest of its convex
+    # part (P′ × P″ < 0 on a clockwise traversal) — at the parabolic rise's middle, d²ψ/dφ²'s jump
+    phi = np.linspace(0, 2 * math.pi, 400001)[:-1]
+    psi0 = math.acos((A * A + L * L - R0 * R0) / (2 * A * L))
+    p, _ = _psi(phi)
+    P = (A + L * np.exp(1j * (math.pi - psi0 - p))) * np.exp(-1j * phi)
+    d1 = np.gradient(P, phi)
+    d2 = np.gradient(d1, phi)
+    cross = np.imag(np.conj(d1) * d2)
+    rho = np.abs(d1) ** 3 / np.abs(cross)
+    assert doc["curvature_min_m"] == pytest.approx(rho[cross < 0].min(), rel=2e-4)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_notes_explain_both_dwells_pressure_angles_by_the_triangle(cam51, lang):
+    """Table 1 prints ϑ = 6.4° on the far dwell and −24.6° on the near one: the notes give both, each the
+    brute force's at a point of its dwell, with R_max = |OC| at ψ_max."""
+    from graphplan.report.cam import cam_json, cam_lines
+    from graphplan.util.words import fixed
+    _, sol, g = cam51
+    doc = cam_json(sol, g, "x")
+    R0 = doc["base_radius_m"]
+    near, far = _theta(R0, np.radians([300.0, 130.0]))
+    (line,) = [x for x in cam_lines(doc, lang) if "O_{1}C" in x]
+    for want in (near, far):
+        assert fixed(want, lang, 2).replace("-", "−") + "°" in line
+    psi0 = math.acos((A * A + L * L - R0 * R0) / (2 * A * L))
+    r_max = abs(A + L * np.exp(1j * (math.pi - psi0 - PSI)))
+    assert fixed(r_max * 1000, lang, 2) + (" мм" if lang == "uk" else " mm") in line
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("fmt", ["A1", "A2"])
+def test_the_sheet_and_the_terminal_print_one_graphical_r0(cam51, fmt):
+    """The sheet's notes and `graphplan cam --format F` (construct_on) give the same graphical R0, and
+    it is the drawn |OC₀| at the phase diagram's stated scale to the ruler's half millimetre."""
+    import re
+
+    from graphplan.drawing.cam import phase_diagram
+    from graphplan.sheets.cam import build_cam_sheet, construct_on
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    path, sol, _ = cam51
+    sheet = build_cam_sheet(load(path), form(fmt), SheetOptions(lang="en", sheet="cam"))
+    printed = [float(x) for page in sheet.pages for x in re.findall(r"graphically ([0-9.]+) mm", page.svg())]
+    g = construct_on(sol, form(fmt), lang="en")
+    assert printed and all(x == pytest.approx(g.R0_min * 1000, abs=1e-9) for x in printed)
+    mu = phase_diagram(sol, g, "en").scales["mu_phase"]
+    assert g.R0_min / mu / 0.5 == pytest.approx(round(g.R0_min / mu / 0.5), abs=1e-9)
+    assert abs(g.R0_min - g.R0_drawn) <= 0.25 * mu + 1e-12
