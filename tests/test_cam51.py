@@ -144,3 +144,73 @@ def test_the_sheet_and_the_terminal_print_one_graphical_r0(cam51, fmt):
     mu = phase_diagram(sol, g, "en").scales["mu_phase"]
     assert g.R0_min / mu / 0.5 == pytest.approx(round(g.R0_min / mu / 0.5), abs=1e-9)
     assert abs(g.R0_min - g.R0_drawn) <= 0.25 * mu + 1e-12
+
+
+# cam51's own scene: a rocking roller follower, the cam clockwise, a LINEAR rise of 100° (dψ/dφ and ϑ jump
+# at its ends), a far dwell of 40°, a cycloidal return of 110° (OWN_CAM51).
+A2_, L2, PSI2 = 0.140, 0.110, math.radians(20.0)
+
+
+def _theta_own(R0: float, phi_deg: float, side: float) -> float:
+    """The own scene's ϑ by inversion at ``phi_deg`` approached from ``side`` (±1), the cam clockwise:
+    the profile C·e^{+iφ}, its tangent in the fixed frame t = C′ + iC; the linear rise ψ = Ψφ/Φ."""
+    rise, far = 100.0, 40.0
+    phi = phi_deg + side * 1e-7
+    if 0 < phi < rise:
+        p, d = PSI2 * phi / rise, PSI2 / math.radians(rise)
+    elif rise <= phi <= rise + far:
+        p, d = PSI2, 0.0
+    elif phi < 0 or phi > 250.0:
+        p, d = 0.0, 0.0
+    else:
+        raise ValueError(phi)
+    psi0 = math.acos((A2_ * A2_ + L2 * L2 - R0 * R0) / (2 * A2_ * L2))
+    e = np.exp(1j * (math.pi - psi0 - p))
+    C = A2_ + L2 * e
+    t = -1j * L2 * e * d + 1j * C
+    return math.degrees(math.asin(float(np.real(np.conj(t) * (-1j * e))) / abs(t)))
+
+
+@pytest.fixture(scope="module")
+def own51(tmp_path_factory):
+    from graphplan.report.cam import cam_json
+    from review_scenes import OWN_CAM51
+    path = tmp_path_factory.mktemp("own51") / "own51.toml"
+    path.write_text(OWN_CAM51, encoding="utf-8")
+    sol = solve(load(path))
+    return cam_json(sol, construct(sol, series="rad"), "x")
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_table_1_gives_both_sides_of_the_linear_rises_pressure_angle_jumps(own51, lang):
+    """At the linear rise's ends dψ/dφ jumps and ϑ with it: Table 1's ϑ cells there give both sides,
+    «dwell → rise» at 0° and «rise → dwell» at the rise's end, each the brute force's; the graphical
+    cells the same to a protractor's ½°."""
+    from graphplan.report.cam import table_columns
+    from graphplan.util.words import fixed
+    cols = table_columns(own51, lang)
+    R0 = own51["base_radius_m"]
+    rows = {round(p["phi_deg"], 6): j for j, p in enumerate(own51["positions"])}
+
+    def cell(x: float) -> str:
+        return fixed(x, lang, 1).replace("-", "−")
+    for phi in (0.0, 100.0):
+        before, after = _theta_own(R0, phi, -1), _theta_own(R0, phi, +1)
+        assert abs(before - after) > 5.0            # a real jump
+        j = rows[phi]
+        assert cols["theta"][j] == f"{cell(before)} → {cell(after)}"
+        assert cols["theta_gr"][j] == f"{cell(round(before * 2) / 2)} → {cell(round(after * 2) / 2)}"
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_near_dwells_pressure_angle_is_the_dwells_not_the_rises_side(own51, lang):
+    """The note's near-dwell ϑ is the dwell's (the brute force in its middle), not the rise's 34.72° the
+    row at 0° gives after the jump; the far dwell's likewise."""
+    from graphplan.report.cam import cam_lines
+    from graphplan.util.words import fixed
+    R0 = own51["base_radius_m"]
+    near, far = _theta_own(R0, 300.0, 0), _theta_own(R0, 120.0, 0)
+    (line,) = [x for x in cam_lines(own51, lang) if "O_{1}C" in x]
+    assert fixed(near, lang, 2).replace("-", "−") + "°" in line
+    assert fixed(far, lang, 2).replace("-", "−") + "°" in line
+    assert fixed(own51["pressure_angle_max_deg"]["rise"], lang, 2) + "°" not in line

@@ -63,7 +63,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5,
     q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
     mm = "мм" if lang == "uk" else "mm"
     head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{{{q['s']}}}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
-            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", "δ, %",
+            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", f"δ_{{{q['v']}}}, %",   # stop 51: δ_ψ beside a bare δ
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     cols = table_columns(doc, lang)          # the terminal's table cell for cell (report.cam)
     keys = ("phi", "s", "s_mm", "s_gr", "ds", "v", "v_mm", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
