@@ -214,3 +214,31 @@ def test_the_near_dwells_pressure_angle_is_the_dwells_not_the_rises_side(own51, 
     assert fixed(near, lang, 2).replace("-", "−") + "°" in line
     assert fixed(far, lang, 2).replace("-", "−") + "°" in line
     assert fixed(own51["pressure_angle_max_deg"]["rise"], lang, 2) + "°" not in line
+
+
+@pytest.mark.parametrize("which", ["lead", "own"])
+def test_every_number_of_the_phase_diagram_stands_by_its_own_point(cam51, which, tmp_path):
+    """Each division's number on the rocking phase diagram (at the scale the sheet draws it) within 5 mm
+    of its point K and nearer it than any other numbered point — «0; 13» stood 10 mm off C₀ inside the
+    diagram among the arc's ticks, where R0, the [ϑ] lines and the arm's line meet."""
+    from graphplan.drawing.cam import phase_diagram
+    from graphplan.drawing.labels import _box_gap
+    from graphplan.sheets.cam import construct_on
+    from graphplan.sheets.form import form
+    from review_scenes import OWN_CAM51
+    if which == "lead":
+        sol = cam51[1]
+    else:
+        path = tmp_path / "own51.toml"
+        path.write_text(OWN_CAM51, encoding="utf-8")
+        sol = solve(load(path))
+    rec = phase_diagram(sol, construct_on(sol, form("A1")), "uk")
+    K = {q.step.split()[1]: complex(*q.points[0]) for q in rec.items if q.kind == "point" and q.step.startswith("K ")}
+    numbers = [q for q in rec.items if q.kind == "text" and q.step.startswith("number ")]
+    assert len(numbers) >= 12
+    for q in numbers:
+        k = q.step.split()[1]
+        own = _box_gap(q.ink(), K[k])
+        assert own <= 5.0, (q.text, own)
+        named = {j for q2 in numbers for j in [q2.step.split()[1]]}
+        assert all(_box_gap(q.ink(), K[j]) > own for j in named if j != k and abs(K[j] - K[k]) > 1e-6), q.text
