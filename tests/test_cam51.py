@@ -242,3 +242,25 @@ def test_every_number_of_the_phase_diagram_stands_by_its_own_point(cam51, which,
         assert own <= 5.0, (q.text, own)
         named = {j for q2 in numbers for j in [q2.step.split()[1]]}
         assert all(_box_gap(q.ink(), K[j]) > own for j in named if j != k and abs(K[j] - K[k]) > 1e-6), q.text
+
+
+@pytest.mark.parametrize("which", ["lead", "own"])
+def test_the_dwell_notes_formula_gives_the_printed_signs(cam51, own51, which):
+    """The note's formula (90° − ∠OCO₁ or ∠OCO₁ − 90°), evaluated with ∠OCO₁ of the triangle OO₁C by
+    the law of cosines (a, l and |OC| = R0 on the near dwell, R_max on the far), gives both printed
+    values with their signs — for the counter-clockwise lead's cam and the clockwise own one (whose
+    note printed +17.18° beside 90° − 107.18°)."""
+    import re
+
+    from graphplan.report.cam import cam_json, cam_lines
+    doc = cam_json(cam51[1], cam51[2], "x") if which == "lead" else own51
+    a, l = doc["centre_distance_m"], doc["arm_m"]
+    (line,) = [x for x in cam_lines(doc, "en") if "O_{1}C" in x]
+    near, far = (float(x.replace("−", "-")) for x in re.search(r"near (\S+)°, far (\S+)°", line).groups())
+    psi0 = math.radians(doc["arm_angle_deg"])
+    for value, psi in ((near, psi0), (far, psi0 + math.radians(doc["swing_deg"]))):
+        r = math.sqrt(a * a + l * l - 2 * a * l * math.cos(psi))         # |OC| with the arm at ψ0 + ψ
+        gamma = math.degrees(math.acos((l * l + r * r - a * a) / (2 * l * r)))
+        want = 90.0 - gamma if "ϑ = 90° − ∠OCO_{1}" in line else gamma - 90.0
+        assert "ϑ = 90° − ∠OCO_{1}" in line or "ϑ = ∠OCO_{1} − 90°" in line
+        assert value == pytest.approx(want, abs=0.006)

@@ -103,11 +103,11 @@ WORDS = {
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм",
            "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль — пряма "
-                    "CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож ϑ = 90° − ∠OCO_{{1}} "
+                    "CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож ϑ = {f} "
                     "з трикутника OO_{{1}}C (a, l, R_0)",
            "dwells": "на вистоях ϑ ≠ 0 (ближньому {t}°, віддаленому {u}°): профіль там — дуги кіл з центром O, їх "
                      "нормаль — пряма CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож "
-                     "ϑ = 90° − ∠OCO_{{1}} з трикутника OO_{{1}}C (a, l і R_0 = {r} мм на ближньому, "
+                     "ϑ = {f} з трикутника OO_{{1}}C (a, l і R_0 = {r} мм на ближньому, "
                      "R_{{max}} = {m} мм на віддаленому)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
            "central": " (центральний штовхач: його вісь проходить через O)",
@@ -151,10 +151,10 @@ WORDS = {
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm",
            "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal the line CO, "
-                    "and {c} moves square to the arm O_{{1}}C, so ϑ = 90° − ∠OCO_{{1}} from the triangle "
+                    "and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the triangle "
                     "OO_{{1}}C (a, l, R_0)",
            "dwells": "on the dwells ϑ ≠ 0 (near {t}°, far {u}°): the profile there arcs about O, their normal the "
-                     "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = 90° − ∠OCO_{{1}} from the "
+                     "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the "
                      "triangle OO_{{1}}C (a, l and R_0 = {r} mm on the near dwell, R_{{max}} = {m} mm on the far one)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
            "central": " (a central follower: its axis passes through O)",
@@ -187,6 +187,16 @@ WORDS = {
            "warn": "Warnings",
            "point_c": ("the roller centre C", "the knife-edge's point C")},
 }
+
+
+def _dwell_formula(doc: dict[str, Any], near: float) -> str:
+    """ϑ on a rocking follower's dwell from the triangle OO₁C with the sign the table prints it with:
+    «90° − ∠OCO₁» or «∠OCO₁ − 90°» (the sign turns with the cam's sense; stop 51: a clockwise cam's
+    note said 90° − ∠OCO₁ = 90° − 107.18° beside its printed +17.18°), ∠OCO₁ by the law of cosines from
+    a, l and R0: cos ∠OCO₁ = (l² + R0² − a²)/(2·l·R0)."""
+    a, l, r = doc["centre_distance_m"], doc["arm_m"], doc["base_radius_m"]
+    gamma = math.degrees(math.acos(max(-1.0, min(1.0, (l * l + r * r - a * a) / (2 * l * r)))))
+    return "90° − ∠OCO_{1}" if abs((90.0 - gamma) - near) <= abs((gamma - 90.0) - near) else "∠OCO_{1} − 90°"
 
 
 def _sides_theta(sol: Solution, phi: float) -> dict[str, float]:
@@ -337,12 +347,13 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     if rocking and abs(start) >= 0.5:
         # a knife-edge's point, not a roller's centre (stop 48: the knife-edge cam's note named a roller)
         c = w["point_c"][doc["roller_radius_m"] <= 0]
+        f = _dwell_formula(doc, start)
         far = dwell.get("far")
         if far is not None and abs(far) >= 0.5:      # stop 51: Table 1's 6.4° on the far dwell unexplained
-            lines.append(w["dwells"].format(t=ang(start), u=ang(far), c=c, r=n(doc["base_radius_m"] * 1000),
+            lines.append(w["dwells"].format(t=ang(start), u=ang(far), c=c, f=f, r=n(doc["base_radius_m"] * 1000),
                                             m=fixed(doc["dwell_radius_m"]["far"] * 1000, lang, 2)))
         else:
-            lines.append(w["dwell"].format(t=ang(start), c=c))
+            lines.append(w["dwell"].format(t=ang(start), c=c, f=f))
     c = doc["curvature_min_m"]
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))
