@@ -581,11 +581,15 @@ def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple
 
 def _stands_alone(sol, g, f: Form, name: str) -> bool:
     """Whether the drawing ``name`` of ``g`` ("diagrams", "phase", "profile"; "av": d²s/dφ² and ds/dφ,
-    "s"), captioned, stands on one sheet of ``f`` by itself, clear of the title block, in both languages."""
+    "s"), captioned, stands on one sheet of ``f`` by itself, clear of the title block, in both languages:
+    the phase diagram and the profile stand on a later sheet, clear of its form 2a (stop 51: judged under
+    form 1, CAM50's A3 profile was drawn at 1:2 where 1:1 stands on its sheet); the diagrams under form 1
+    (s, on sheet 2, too: grown to that sheet's whole height it left ϑ(φ) no room under it, and ϑ went at
+    4 °/мм under the profile)."""
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
             "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
-    region, keep = field_of(f), keep_out(f)
+    region, keep = field_of(f), (later_keep(f) if name in ("phase", "profile") else keep_out(f))
     for lang in ("uk", "en"):
         rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
         laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
@@ -1065,7 +1069,7 @@ def _phase_enlarged(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
     return (g, *as_is)
 
 
-def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
+def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple, later=None) -> tuple:
     """A set's rocking phase diagram at the finest standard scale (_phase_scales) that keeps the set's sheets and
     leaves it on the profile's sheet (review 11: ≈ 45 mm at 1:2 on the A3 set, illegible)."""
     laid = as_is[-1]
@@ -1073,7 +1077,7 @@ def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
         return (g, *as_is)
     for g2 in _phase_scales(sol, g, lang):
         leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True, row=sheet_room(region, keep))
-        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
+        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later)
         if (again is not None and len(again) == len(laid)
                 and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
             return g2, leaves, tab, nts, doc, again
@@ -1120,8 +1124,10 @@ def _sheet_layout(sol, g, cam: Cam, f: Form, lang: str) -> tuple:
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f, notes_at)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True, row=sheet_room(region, keep))
-        laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
+        # the later sheets clear of their form 2a (stop 51: judged under form 1, as the drawings' sizes were)
+        laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep, later_keep(f))
+        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid),
+                                                             later_keep(f))
     return g, leaves, tab, nts, doc, laid, notes_at
 
 
