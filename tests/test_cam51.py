@@ -266,3 +266,26 @@ def test_the_dwell_notes_formula_gives_the_printed_signs(cam51, own51, which):
         want = 90.0 - gamma if "ϑ = 90° − ∠OCO_{1}" in line else gamma - 90.0
         assert "ϑ = 90° − ∠OCO_{1}" in line or "ϑ = ∠OCO_{1} − 90°" in line
         assert value == pytest.approx(want, abs=0.006)
+
+
+@pytest.mark.slow
+def test_cam50s_a3_profile_is_drawn_at_1_1_on_its_later_sheet(tmp_path):
+    """CAM50's profile (≈ 250 mm across at 1:1) stands on an A3 sheet's field — 420 × 297 mm less the
+    frame (20 mm left, 5 mm elsewhere) — above the later sheets' form 2a (15 mm high): the set draws it
+    at 1:1, not at 1:2 as sized under the first sheet's 55 mm form 1; the drawing, measured, fits."""
+    from graphplan.drawing.cam import profile_drawing
+    from graphplan.sheets.cam import build_cam_sheet, construct_on
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from review_scenes import CAM50
+    path = tmp_path / "cam50.toml"
+    path.write_text(CAM50, encoding="utf-8")
+    cam = load(path)
+    sheet = build_cam_sheet(cam, form("A3"), SheetOptions(lang="en", sheet="cam"))
+    pages = [p.svg() for p in sheet.pages]
+    (profile_page,) = [p for p in pages if "Cam profile" in p]
+    assert "(M 1:1)" in profile_page
+    g = construct_on(solve(cam), form("A3"), lang="en")
+    x0, y0, x1, y1 = profile_drawing(solve(cam), g, "en").bounds()
+    assert g.mu_l == pytest.approx(0.001)
+    assert x1 - x0 < 420 - 25 and y1 - y0 + 15 < 297 - 10 - 15       # its caption's two lines ≈ 15 mm
