@@ -290,7 +290,7 @@ def cam(scene, divisions: int | None = None, precision: float = 0.5, lang: str =
     from graphplan.sheets.cam import construct_on
     from graphplan.sheets.form import form
     sol = solve(load_cam(scene))
-    return Cam((sol, construct_on(sol, form("A1"), divisions, precision)), lang)    # the A1 sheet's scales
+    return Cam((sol, construct_on(sol, form("A1"), divisions, precision, lang)), lang)    # the A1 sheet's scales
 
 
 class Gears(View):

@@ -4238,3 +4238,57 @@ direction = "oppose"
 delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500'''
+
+
+CAM51 = '''# Stop 51 (the lead's check): a rocking roller follower, the cam counter-clockwise, a parabolic rise of
+# 120° (soft shocks), a short far dwell of 20°, a cosine return of 90°, 6 divisions.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 51)"
+title_en = "Cam with a rocking roller follower (check 51)"
+designation = "ТММ.КМ.51.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 25
+arm = 0.12
+centre_distance = 0.15
+roller_radius = 0.012
+phases_deg = { rise = 120, dwell_far = 20, return = 90, dwell_near = 130 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "ccw"
+divisions = 6
+'''
+
+
+OWN_CAM51 = '''# Stop 51 (cam51's own look): a rocking roller follower turned by a clockwise cam, a LINEAR rise of 100°
+# (rigid shocks at its ends: dψ/dφ and ϑ jump there), a far dwell of 40°, a cycloidal return of 110°,
+# the default 8 divisions.
+title = "Кулачковий механізм з коромисловим штовхачем і лінійним підйомом (власна перевірка 51)"
+title_en = "Cam with a rocking follower and a linear rise (own check 51)"
+designation = "ТММ.КМ.51.200"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 20
+arm = 0.11
+centre_distance = 0.14
+roller_radius = 0.01
+phases_deg = { rise = 100, dwell_far = 40, return = 110, dwell_near = 110 }
+laws = { rise = "linear", return = "cycloidal" }
+pressure_angle_deg = { rise = 35, return = 45 }
+rpm = 120
+direction = "cw"
+'''

@@ -47,12 +47,12 @@ def cmd_cam(args: argparse.Namespace) -> int:
     from graphplan.sheets.form import form
     cam = load(args.scene)
     f = form(args.format)
+    lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     try:
         sol = solve(cam)
-        g = construct_on(sol, f, args.divisions, args.precision)
+        g = construct_on(sol, f, args.divisions, args.precision, lang)     # the sheet's in that language
     except GraphplanError as exc:
         raise GraphplanError(str(exc), exc.where or args.scene) from None
-    lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     if args.svg:
         write_svg(sol, g, args.svg, lang)
     doc = cam_json(sol, g, args.scene)

@@ -73,7 +73,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "curvature_min_m": _f(sol.curvature_min()),
         "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
                              "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
-                             "convex": c.convex} for c in sol.corners()],
+                             "convex": c.convex, **_sides_theta(sol, c.phi_deg)} for c in sol.corners()],
         "closing_mm": {"rise": float(g.closing[0]), "return": float(g.closing[1])},
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
@@ -84,7 +84,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "warnings_uk": [uk for _, uk in sol.warnings + g.warnings]}
     if cam.rocking:
         doc.update(swing_deg=math.degrees(cam.stroke), arm_m=cam.arm, centre_distance_m=cam.centre_distance,
-                   arm_angle_deg=math.degrees(sol.geometry.psi0))
+                   arm_angle_deg=math.degrees(sol.geometry.psi0), **_dwells(sol))
     else:
         doc.update(stroke_m=cam.stroke, offset_m=sol.geometry.e)
     return doc
@@ -102,8 +102,13 @@ WORDS = {
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
            "offset": "ексцентриситет e = {e} мм",
-           "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль іде "
-                    "через O, а {c} рухається перпендикулярно до коромисла O_{{1}}C (трикутник OO_{{1}}C: a, l, R_0)",
+           "dwell": "на ближньому вистої ϑ = {t}° ≠ 0: профіль там — дуга кола з центром O, його нормаль — пряма "
+                    "CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож ϑ = {f} "
+                    "з трикутника OO_{{1}}C (a, l, R_0)",
+           "dwells": "на вистоях ϑ ≠ 0 (ближньому {t}°, віддаленому {u}°): профіль там — дуги кіл з центром O, їх "
+                     "нормаль — пряма CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож "
+                     "ϑ = {f} з трикутника OO_{{1}}C (a, l і R_0 = {r} мм на ближньому, "
+                     "R_{{max}} = {m} мм на віддаленому)",
            "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
            "central": " (центральний штовхач: його вісь проходить через O)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
@@ -145,8 +150,12 @@ WORDS = {
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
            "offset": "offset e = {e} mm",
-           "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal passes through "
-                    "O, and {c} moves square to the arm O_{{1}}C (the triangle OO_{{1}}C: a, l, R_0)",
+           "dwell": "on the near dwell ϑ = {t}° ≠ 0: the profile there an arc about O, its normal the line CO, "
+                    "and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the triangle "
+                    "OO_{{1}}C (a, l, R_0)",
+           "dwells": "on the dwells ϑ ≠ 0 (near {t}°, far {u}°): the profile there arcs about O, their normal the "
+                     "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the "
+                     "triangle OO_{{1}}C (a, l and R_0 = {r} mm on the near dwell, R_{{max}} = {m} mm on the far one)",
            "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
            "central": " (a central follower: its axis passes through O)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
@@ -178,6 +187,39 @@ WORDS = {
            "warn": "Warnings",
            "point_c": ("the roller centre C", "the knife-edge's point C")},
 }
+
+
+def _dwell_formula(doc: dict[str, Any], near: float) -> str:
+    """ϑ on a rocking follower's dwell from the triangle OO₁C with the sign the table prints it with:
+    «90° − ∠OCO₁» or «∠OCO₁ − 90°» (the sign turns with the cam's sense; stop 51: a clockwise cam's
+    note said 90° − ∠OCO₁ = 90° − 107.18° beside its printed +17.18°), ∠OCO₁ by the law of cosines from
+    a, l and R0: cos ∠OCO₁ = (l² + R0² − a²)/(2·l·R0)."""
+    a, l, r = doc["centre_distance_m"], doc["arm_m"], doc["base_radius_m"]
+    gamma = math.degrees(math.acos(max(-1.0, min(1.0, (l * l + r * r - a * a) / (2 * l * r)))))
+    return "90° − ∠OCO_{1}" if abs((90.0 - gamma) - near) <= abs((gamma - 90.0) - near) else "∠OCO_{1} − 90°"
+
+
+def _sides_theta(sol: Solution, phi: float) -> dict[str, float]:
+    """The exact pressure angle just before and just after a corner of the centre profile at ``phi``°
+    (ds/dφ jumps there, and ϑ with it: the linear law's ends — stop 51, Table 1 gave one side)."""
+    th = sol.at(np.array([phi - 1e-9, phi + 1e-9]))["theta"]
+    return {"pressure_angle_before_deg": float(th[0]), "pressure_angle_after_deg": float(th[1])}
+
+
+def _dwells(sol: Solution) -> dict[str, Any]:
+    """A rocking follower's pressure angle in the middle of each dwell and |OC| there (R0 on the near
+    dwell, R_max on the far one; None where the dwell is 0°): the profile there an arc about O, its
+    normal CO, C moving square to the arm O₁C, so ϑ = 90° − ∠OCO₁ of the triangle OO₁C — ≠ 0."""
+    rise, far, ret, near = sol.cam.phases
+    mids = {"near": rise + far + ret + near / 2 if near > 0 else None, "far": rise + far / 2 if far > 0 else None}
+    theta, radius = {}, {}
+    for k, phi in mids.items():
+        if phi is None:
+            theta[k] = radius[k] = None
+            continue
+        at = sol.at(np.array([phi % 360.0]))
+        theta[k], radius[k] = float(at["theta"][0]), float(abs(at["P"][0]))
+    return {"dwell_pressure_angle_deg": theta, "dwell_radius_m": radius}
 
 
 def printed_error(graphical: str, exact: str, judged: bool) -> float | None:
@@ -225,10 +267,9 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
         out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
                            for v in errs]
-        if name == "v":
-            jumps(out, doc, lang, d, ruler)
     out["theta"] = [fixed(p["exact"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
     out["theta_gr"] = [fixed(p["graphical"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
+    jumps(out, doc, lang, d, ruler)          # d: the ds/dφ columns' decimals (the loop's last)
     ex = [p["exact"]["radius_m"] * 1000 for p in ps]
     gr = [p["graphical"]["radius_mm"] * doc["scales"]["mu_l_m_mm"] * 1000 for p in ps]
     d = column_decimals(ex + gr)
@@ -262,6 +303,10 @@ def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: i
                 first = other == before
                 sides["v_mm"] = (theirs[0], mine[0]) if first else (mine[0], theirs[0])
                 sides["v_gr"] = (theirs[1], mine[1]) if first else (mine[1], theirs[1])
+            th = (corner.get("pressure_angle_before_deg"), corner.get("pressure_angle_after_deg"))
+            if None not in th:     # ϑ jumps with ds/dφ (stop 51: one side), the protractor's ½° graphically
+                sides["theta"] = tuple(fixed(t, lang, 1).replace("-", "−") for t in th)
+                sides["theta_gr"] = tuple(fixed(round(t * 2) / 2, lang, 1).replace("-", "−") for t in th)
             for c, (a, b) in sides.items():
                 out[c][j] = f"{a} → {b}"
 
@@ -293,10 +338,22 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     lines.append(w["angles"].format(r=ang(top["rise"]), t=ang(top["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
-    start = doc["positions"][0]["exact"]["pressure_angle_deg"]
-    if rocking and abs(start) >= 0.5:       # a rocking follower's ϑ ≠ 0 where it rests (stop 46: "−29,3 at 0?")
+    dwell = doc.get("dwell_pressure_angle_deg") or {}
+    # a rocking follower's ϑ ≠ 0 where it rests (stop 46: "−29,3 at 0?"); the dwell's own, not the row at
+    # 0°, which a linear rise gives its side of the jump (stop 51: «ближньому 34,72°» where the dwell has 17,19°)
+    start = dwell.get("near")
+    if start is None and rocking:
+        start = doc["positions"][0]["exact"]["pressure_angle_deg"]
+    if rocking and abs(start) >= 0.5:
         # a knife-edge's point, not a roller's centre (stop 48: the knife-edge cam's note named a roller)
-        lines.append(w["dwell"].format(t=ang(start), c=w["point_c"][doc["roller_radius_m"] <= 0]))
+        c = w["point_c"][doc["roller_radius_m"] <= 0]
+        f = _dwell_formula(doc, start)
+        far = dwell.get("far")
+        if far is not None and abs(far) >= 0.5:      # stop 51: Table 1's 6.4° on the far dwell unexplained
+            lines.append(w["dwells"].format(t=ang(start), u=ang(far), c=c, f=f, r=n(doc["base_radius_m"] * 1000),
+                                            m=fixed(doc["dwell_radius_m"]["far"] * 1000, lang, 2)))
+        else:
+            lines.append(w["dwell"].format(t=ang(start), c=c, f=f))
     c = doc["curvature_min_m"]
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))

@@ -63,7 +63,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5,
     q = symbols(rocking)                               # rocking: ψ, dψ/dφ (an angle is not s)
     mm = "мм" if lang == "uk" else "mm"
     head = [WORDS[lang]["n"], "φ, °", f"{q['s']}, {unit}", f"y_{{{q['s']}}}, {mm}", f"{q['s']} {gr}", f"δ_{q['s']}, %",
-            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", "δ, %",
+            f"{q['v']}, {per}", f"y_{{{q['v']}}}, {mm}", f"{q['v']} {gr}", f"δ_{{{q['v']}}}, %",   # stop 51: δ_ψ beside a bare δ
             "ϑ, °", f"ϑ {gr}", "R, " + mm, f"R {gr}"]
     cols = table_columns(doc, lang)          # the terminal's table cell for cell (report.cam)
     keys = ("phi", "s", "s_mm", "s_gr", "ds", "v", "v_mm", "v_gr", "dv", "theta", "theta_gr", "R", "R_gr")
@@ -581,11 +581,15 @@ def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple
 
 def _stands_alone(sol, g, f: Form, name: str) -> bool:
     """Whether the drawing ``name`` of ``g`` ("diagrams", "phase", "profile"; "av": d²s/dφ² and ds/dφ,
-    "s"), captioned, stands on one sheet of ``f`` by itself, clear of the title block, in both languages."""
+    "s"), captioned, stands on one sheet of ``f`` by itself, clear of the title block, in both languages:
+    the phase diagram and the profile stand on a later sheet, clear of its form 2a (stop 51: judged under
+    form 1, CAM50's A3 profile was drawn at 1:2 where 1:1 stands on its sheet); the diagrams under form 1
+    (s, on sheet 2, too: grown to that sheet's whole height it left ϑ(φ) no room under it, and ϑ went at
+    4 °/мм under the profile)."""
     from graphplan.drawing.cam import diagrams, phase_diagram, profile_drawing
     draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
             "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
-    region, keep = field_of(f), keep_out(f)
+    region, keep = field_of(f), (later_keep(f) if name in ("phase", "profile") else keep_out(f))
     for lang in ("uk", "en"):
         rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
         laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
@@ -723,10 +727,15 @@ def _largest(ok, sizes: list[float]) -> float | None:
 MOST_DIVISIONS = 48      # the most intervals a phase a redrawing tries (four times the scene's, at most)
 
 
-def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
+def construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5, lang: str = "uk"):
     """The construction at the scales of the cam sheet on ``f`` (_construct_on), a rocking follower's
-    phase diagram at the scale the sheet draws it at and R0 read there (phase_scale_of)."""
-    return phase_scale_of(sol, _construct_on(sol, f, n, precision))
+    phase diagram at the scale the sheet in ``lang`` draws it at and R0 read there (_sheet_layout's
+    choice, the sheet's own: stop 51 found the terminal reading R0 = 52.4 mm at 2.5:1 where the A1 sheet,
+    whose layout had no room for the diagram at 2.5:1, drew it at 1:1 and printed 52.5 mm)."""
+    g = _construct_on(sol, f, n, precision)
+    if not sol.cam.rocking:
+        return g
+    return _sheet_layout(sol, g, sol.cam, f, lang)[0]
 
 
 def _construct_on(sol, f: Form, n: int | None = None, precision: float = 0.5):
@@ -1060,7 +1069,7 @@ def _phase_enlarged(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
     return (g, *as_is)
 
 
-def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
+def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple, later=None) -> tuple:
     """A set's rocking phase diagram at the finest standard scale (_phase_scales) that keeps the set's sheets and
     leaves it on the profile's sheet (review 11: ≈ 45 mm at 1:2 on the A3 set, illegible)."""
     laid = as_is[-1]
@@ -1068,7 +1077,7 @@ def _set_phase_enlarged(sol, g, lang: str, region, keep, as_is: tuple) -> tuple:
         return (g, *as_is)
     for g2 in _phase_scales(sol, g, lang):
         leaves, tab, nts, doc = _leaves(sol, g2, sol.cam, lang, split=True, row=sheet_room(region, keep))
-        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep)
+        again = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later)
         if (again is not None and len(again) == len(laid)
                 and any({"phase", "profile"} <= {leaf.name for leaf, _ in page} for page in again)):
             return g2, leaves, tab, nts, doc, again
@@ -1100,14 +1109,12 @@ def _names(node) -> set[str]:
     return set().union(*map(_names, kids)) if kids is not None else {getattr(node, "name", "")}
 
 
-def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
-    """The cam sheet: the three constructions captioned with their scales, the table and the notes,
-    flowed over the sheet (and further sheets of the set when the format is small) in reading order,
-    each drawing at the largest standard scale that fits its zone (cam_sizes)."""
-    lang = args.lang
-    sol = solve(cam)
-    # laid out with the phase diagram at the profile's μ_l; enlarged where the layout keeps (_phase_enlarged)
-    g = _construct_on(sol, f, None, args.precision)
+def _sheet_layout(sol, g, cam: Cam, f: Form, lang: str) -> tuple:
+    """(g, leaves, table, notes, doc, layout, notes_at) of the cam sheet on ``f``: the A1 sheet in
+    columns, its rocking phase diagram enlarged where the layout keeps (_phase_enlarged), ϑ(φ) grown,
+    Table 1 larger; else a set, each drawing on its own (set_sizes), the phase diagram enlarged where
+    the set keeps (_set_phase_enlarged). ``g`` with the phase diagram's scale chosen here — the one
+    construction the sheet and `graphplan cam` (construct_on) both read R0 from."""
     region, keep = field_of(f), keep_out(f)
     leaves, tab, nts, doc, laid, notes_at = _arranged(sol, g, cam, lang, f)
     if f.name == "A1" and _one_sheet(laid):
@@ -1117,8 +1124,24 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
         laid = _rows_of_8(laid, leaves, doc, lang, cam, f, notes_at)
     if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         leaves, tab, nts, doc = _leaves(sol, g, cam, lang, split=True, row=sheet_room(region, keep))
-        laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep)
-        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid))
+        # the later sheets clear of their form 2a (stop 51: judged under form 1, as the drawings' sizes were)
+        laid = kept_together(leaves, tab, notes(doc, lang, cam), nts, region, keep, later_keep(f))
+        g, leaves, tab, nts, doc, laid = _set_phase_enlarged(sol, g, lang, region, keep, (leaves, tab, nts, doc, laid),
+                                                             later_keep(f))
+    return g, leaves, tab, nts, doc, laid, notes_at
+
+
+def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
+    """The cam sheet: the three constructions captioned with their scales, the table and the notes,
+    flowed over the sheet (and further sheets of the set when the format is small) in reading order,
+    each drawing at the largest standard scale that fits its zone (cam_sizes)."""
+    lang = args.lang
+    sol = solve(cam)
+    # laid out with the phase diagram at the profile's μ_l; enlarged where the layout keeps (_phase_enlarged)
+    g = _construct_on(sol, f, None, args.precision)
+    region, keep = field_of(f), keep_out(f)
+    g, leaves, tab, nts, doc, laid, notes_at = _sheet_layout(sol, g, cam, f, lang)
+    if not _one_sheet(laid):            # a set of sheets: each drawing on its own (set_sizes)
         # ϑ(φ) at the diagrams' μ_φ where the set has room for it without a sheet more than at its own
         def placed(t) -> bool:
             return t is not None and any("pressure" in _names(leaf) or getattr(getattr(leaf, "record", None), "theta_at", None)
