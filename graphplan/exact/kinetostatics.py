@@ -29,7 +29,7 @@ import numpy as np
 from graphplan.util.errors import GraphplanError, SceneError
 from graphplan.exact.kinematics import Kinematics, cross, dot, solve, solve2
 from graphplan.model.mechanism import FRAME, Mechanism
-from graphplan.exact.positions import Study
+from graphplan.exact.positions import Study, working_start
 from graphplan.model.structure import Dyad, Pair
 
 Array = np.ndarray
@@ -182,26 +182,8 @@ def working_stroke(st: Study, phi_deg: Array) -> Array:
     if len(st.extremes) < 2:
         return np.ones(phi.shape, dtype=bool)
     kin = solve(st.mech, st.structure, list(st.extremes))
-    values = np.asarray(st.output.value(kin), dtype=float)
-    # an extreme value the output reaches twice (a rocker driven past its toggle by a coulisse swinging
-    # further: LINK51's O4D at 124,6° at φ = 42,2° and 291,5°, equal to 1 ulp) leaves two ways to split
-    # the turn; argmin chose by round-off. Every tied pair is tried: "fast" takes the shortest working
-    # turn, the others the longest (the slow swing with the wobble between the two visits)
-    tol = 1e-9 * max(1.0, float(np.ptp(values)))
-    his = [float(e) for e, v in zip(st.extremes, values) if v >= values.max() - tol]
-    los = [float(e) for e, v in zip(st.extremes, values) if v <= values.min() + tol]
+    start, length = working_start(st.mech, st.extremes, st.output.value(kin))
     sense = np.sign(st.mech.omega1)
-    rule = st.mech.working_stroke
-    best = None
-    for hi in his:
-        for lo in los:
-            turn = ((lo - hi) * sense) % 360.0
-            first_works = {"slow": turn >= 180.0 - 1e-9, "fast": turn < 180.0 - 1e-9,
-                           "to_min": True, "to_max": False}[rule]
-            start, length = (hi, turn) if first_works else (lo, 360.0 - turn)
-            if best is None or (length < best[1] - 1e-9 if rule == "fast" else length > best[1] + 1e-9):
-                best = (start, length)
-    start, length = best
     return ((phi - start) * sense) % 360.0 < length       # from the stroke's first extreme, its turn
 
 

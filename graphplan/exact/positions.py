@@ -507,13 +507,40 @@ def choose_start(mech: Mechanism, structure: Structure, output: Output,
         return lo
     if mech.start in ("inner", "outer"):
         return dead_centre(mech, output, kin, extremes, mech.start)
-    # the working stroke is the slower one: the longer crank turn between the extremes
+    start, length = working_start(mech, extremes, output.value(kin))
+    if mech.start == "working":
+        return start
+    end = start + np.sign(mech.omega1) * length          # the working stroke's last extreme: starts the idle one
+    return min(extremes, key=lambda e: abs((e - end + 180.0) % 360.0 - 180.0))
+
+
+def working_start(mech: Mechanism, extremes: tuple[float, ...],
+                  values) -> tuple[float, float]:
+    """The crank angle of the extreme that begins the working stroke and the stroke's crank turn (°,
+    in the crank's sense). The extremes split the turn into two strokes; ``positions.working_stroke``
+    names the working one: "slow" (the longer crank turn), "fast", "to_min" or "to_max" (the output
+    moving toward its smallest / largest value: from its largest / smallest). ``values`` are the
+    output's values at ``extremes``. An extreme value reached twice (a rocker driven past its toggle
+    by a coulisse swinging further: LINK51's O4D at 124,6° at φ = 42,2° and 291,5°, equal to 1 ulp)
+    leaves two ways to split the turn; every tied pair is tried: "fast" takes the shortest working
+    turn, the others the longest (the slow swing with the wobble between the two visits)."""
+    values = np.asarray(values, dtype=float)
+    tol = 1e-9 * max(1.0, float(np.ptp(values)))
+    his = [float(e) for e, v in zip(extremes, values) if v >= values.max() - tol]
+    los = [float(e) for e, v in zip(extremes, values) if v <= values.min() + tol]
     sense = np.sign(mech.omega1)
-    turn_from_hi = ((lo - hi) * sense) % 360.0
-    working_from_hi = turn_from_hi >= 180.0 - 1e-9
-    starts_working = hi if working_from_hi else lo
-    starts_idle = lo if working_from_hi else hi
-    return starts_working if mech.start == "working" else starts_idle
+    rule = mech.working_stroke
+    best: tuple[float, float] | None = None
+    for hi in his:
+        for lo in los:
+            turn = float(((lo - hi) * sense) % 360.0)
+            first_works = {"slow": turn >= 180.0 - 1e-9, "fast": turn < 180.0 - 1e-9,
+                           "to_min": True, "to_max": False}[rule]
+            start, length = (hi, turn) if first_works else (lo, 360.0 - turn)
+            if best is None or (length < best[1] - 1e-9 if rule == "fast" else length > best[1] + 1e-9):
+                best = (start, length)
+    assert best is not None
+    return best
 
 
 # -- the output's motion over the turn ------------------------------------------------------------
