@@ -493,15 +493,7 @@ def _own_spot(rec: Record, req: LabelRequest, nearest: bool = False) -> None:
         del rec.items[n0:]
         return _nearest_spot(rec, req)
     best, score = None, -math.inf
-    base = req.toward / abs(req.toward)
-    for j in range(16):
-        trial = dataclasses.replace(rec, items=list(rec.items), scales=dict(rec.scales))   # primitives are frozen
-        turn = cmath.exp(1j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / 8)
-        place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
-        text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
-        if not text:
-            continue
-        box = text[0].ink()
+    for trial, box in _turned_spots(rec, req, 16):
         margin = min(_box_gap(box, z) for z in req.rivals) - _box_gap(box, req.at)
         if margin > score:
             best, score = trial, margin
@@ -511,20 +503,25 @@ def _own_spot(rec: Record, req: LabelRequest, nearest: bool = False) -> None:
         rec.items[:] = best.items
 
 
+def _turned_spots(rec: Record, req: LabelRequest, n: int):
+    """The placer tried on copies of ``rec`` with the preferred side turned by ±k·360°/n (0, +1, −1,
+    +2 … steps): each (trial record, the number's ink box) where it set the number."""
+    base = req.toward / abs(req.toward)
+    for j in range(n):
+        trial = dataclasses.replace(rec, items=list(rec.items), scales=dict(rec.scales))   # primitives are frozen
+        turn = cmath.exp(2j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / n)
+        place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
+        text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
+        if text:
+            yield trial, text[0].ink()
+
+
 def _nearest_spot(rec: Record, req: LabelRequest) -> None:
     """_own_spot's directions, every 45°, all tried: the lettering nearest its own dot among those at least
     1 mm nearer it than any rival's, else the one farthest from the rivals relative to its own."""
     from graphplan.drawing.labels import _box_gap
     best, key = None, (math.inf, math.inf)
-    base = req.toward / abs(req.toward)
-    for j in range(8):                  # every 45° (16 directions cost 0.5 s of an A3 set's sizing)
-        trial = dataclasses.replace(rec, items=list(rec.items), scales=dict(rec.scales))   # primitives are frozen
-        turn = cmath.exp(1j * math.pi * ((j + 1) // 2) * (1 if j % 2 else -1) / 4)
-        place_labels(trial, [dataclasses.replace(req, toward=base * turn, optional=False)], layer=LAYER)
-        text = [p for p in trial.items[len(rec.items):] if p.kind == "text"]
-        if not text:
-            continue
-        box = text[0].ink()
+    for trial, box in _turned_spots(rec, req, 8):     # every 45° (16 directions cost 0.5 s of an A3 set's sizing)
         own = _box_gap(box, req.at)
         margin = min(_box_gap(box, z) for z in req.rivals) - own
         k = (0.0, own) if margin >= 1.0 else (1.0, -margin)
