@@ -4292,3 +4292,95 @@ pressure_angle_deg = { rise = 35, return = 45 }
 rpm = 120
 direction = "cw"
 '''
+
+FORCE_COUPLER51 = '''# Stop 51 (review51's own, for frc51c): crank-rocker four-bar O1ABO2, crank counter-clockwise, heavy rocker; the coupler
+# point E (off the line AB) drives, through the rod EF, a slider F on a guide inclined at 135°.
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП.
+title = "Шестиланковий механізм з похилою напрямною"
+title_en = "Six-bar linkage with a coupler-driven slider on an inclined guide"
+designation = "TMM.KM.51.300"
+lang = "en"
+
+[sheet]
+student = "Check R. R."
+teacher = "Teacher T. T."
+group = "MB-51"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.05]
+
+[frame.guides]
+g = { through = [0.05, 0.32], angle_deg = 135, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 100
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.0
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+shape = { E = [0.13, 0.09] }
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.5 }
+mass = 12
+inertia = 0.08
+
+[[link]]
+name = "EF"
+number = 4
+joints = ["E", "F"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2.5
+inertia = 0.015
+
+[[link]]
+name = "F"
+number = 5
+joints = ["F"]
+slides_on = "g"
+mass = 8
+
+[branch]
+B = 1
+F = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "F"
+magnitude = 500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.88
+synchronous_rpm = 1000
+'''

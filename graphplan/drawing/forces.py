@@ -275,6 +275,41 @@ def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[co
     return best if room(best) >= here + COUPLE_GAIN_MM else at
 
 
+HEAD_CLEAR_MM = 5.0   # two arrowheads of different points at least this far apart (tip to tip)
+
+
+def _heads_meet(z: complex, head: complex, drawn: list[tuple[complex, complex, complex]]) -> bool:
+    """Whether an arrow of the point ``z`` ending at ``head`` ends by the head of an arrow drawn at
+    another point (``drawn``: point, tail, head) — the two tips within ``HEAD_CLEAR_MM`` read as one
+    arrowhead and the name by it as either's (review51: the coupler's P_F, laid along the guide from
+    F, ended on Φ4's head from S4, "Φ4" beside the shared tip)."""
+    return any(abs(w - z) >= 0.5 and abs(h - head) < HEAD_CLEAR_MM for w, _, h in drawn)
+
+
+def _head_clear(z: complex, u: complex, a: complex, b: complex, drawn: list[tuple[complex, complex, complex]],
+                links: list[tuple[complex, complex]], busy: list[tuple[complex, complex]]) -> tuple[complex, complex]:
+    """The arrow a→b of the point ``z`` (direction ``u``) whose head meets another point's
+    (``_heads_meet``) laid again, as the seeds draw two forces that would meet: first the other way
+    along its line — arriving at its point where it left it, or leaving it where it arrived — where
+    that side is free (no link crossed, no force of its point lying that way, no arrow drawn over);
+    else shorter (its length grows with the force, not to scale: 0.8, then 0.65 of it), its end at
+    the point kept; else as it was."""
+    d = b - a
+    at_point = abs(dot(a - z, u)) < 0.5          # leaving its point (its tail at the point's level)
+    flipped = (a - d, a) if at_point else (b, b + d)
+    cos_near = math.cos(math.radians(NEAR_DEG))
+    side = -u if at_point else u                 # the side of the point the flipped arrow lies on
+    arrows = [(t, h) for _, t, h in drawn]
+    cands = []
+    if not _crosses(*flipped, links) and not _crosses(*flipped, arrows) \
+            and not any(abs(w - z) < 0.5 and dot(v, side) > cos_near for w, v in busy) \
+            and not any(_one_arrow(*flipped, t, h) for t, h in arrows):
+        cands.append(flipped)
+    for k in (0.8, 0.65):
+        cands.append((a, a + k * d) if at_point else (b - k * d, b))
+    return next((c for c in cands if not _heads_meet(z, c[1], drawn)), (a, b))
+
+
 def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
                     busy: list[tuple[complex, complex]] = ()) -> tuple[complex, complex]:
     """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
@@ -680,6 +715,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                                  (a, b, off))
             lanes[name] = off * n
             set_aside.append((z, off * n, u, (a + b) / 2))
+        if _heads_meet(z, b, drawn):
+            a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
         drawn.append((z, a, b))
         return a, b
 
