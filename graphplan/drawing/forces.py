@@ -1821,6 +1821,28 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     return Record(hit.title, list(hit.items), dict(hit.scales))
 
 
+SAME_IMAGE_MM = 1.5    # two of the lever's images this near are one spot, lettered together (as the plan of
+                       # velocities letters its points, ``graphic.plan.group_labels``)
+
+
+def _coincident_images(turned: dict[str, complex]) -> list[tuple[complex, list[str]]]:
+    """The lever's images off the pole grouped by spot (within ``SAME_IMAGE_MM``): each spot (the
+    first image's place) with the names there — the joints' first, then the centres of mass
+    ("a, b, s₂") — the spots farthest from the pole first (the order they are lettered in)."""
+    spots: list[tuple[complex, list[str]]] = []
+    for name, z in turned.items():
+        if abs(z) <= 0.1:
+            continue
+        spot = next((s for s in spots if abs(s[0] - z) < SAME_IMAGE_MM), None)
+        if spot is None:
+            spots.append((z, [name]))
+        else:
+            spot[1].append(name)
+    for _, names in spots:
+        names.sort(key=lambda n: (n[:1] == "S" and n[1:].isdigit(), n))
+    return sorted(spots, key=lambda s: -abs(s[0]))
+
+
 def _lever_record(fp: ForcePlans, lang: str) -> Record:
     """``lever_record`` drawn."""
     from dataclasses import replace
@@ -1913,16 +1935,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
     # the names asked for — each image's letter, each force's, each arm's — each with its own
     # line, the others it must not read as, and where along its line it is anchored
     jobs: list[_Name] = []
-    seen: set[tuple[float, float]] = set()
-    for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
+    for z, names in _coincident_images(turned):
         # each image lettered beside it, nearer it than any other image (the six-bar's "b" stood
-        # on a leader across three arrows)
-        key = (round(z.real, 1), round(z.imag, 1))
-        if abs(z) <= 0.1 or key in seen:
-            continue
-        seen.add(key)
-        req = LabelRequest(z, indexed(name.lower()), _unit(z), 3.5, step=step)
-        jobs.append(_Name(req, (z, z), [(w, w) for w in turned.values() if abs(w - z) > 0.05], (0.0,)))
+        # on a leader across three arrows); images at one spot lettered together, "a, b, s₂", as
+        # the plan of velocities letters them (review51: only "s2" where a, b and s2 coincide)
+        req = LabelRequest(z, ", ".join(indexed(n.lower()) for n in names), _unit(z), 3.5, step=step)
+        jobs.append(_Name(req, (z, z), [(w, w) for w in turned.values() if abs(w - z) >= SAME_IMAGE_MM], (0.0,)))
     arrows = list(span.values())
     for tip, name, u in labels:
         # a force's name by its own arrow (the press's lever set "G2" on Φ2's head and "Φ2" by
