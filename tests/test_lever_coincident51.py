@@ -30,3 +30,41 @@ def test_the_coinciding_images_are_lettered_together(lever):
     x0, y0, x1, y1 = q.ink()
     gap = abs(complex(max(x0 - spot.real, 0.0, spot.real - x1), max(y0 - spot.imag, 0.0, spot.imag - y1)))
     assert gap < 4.0, gap                               # beside its spot
+
+
+@pytest.fixture(scope="module")
+def six_lever():
+    from graphplan.drawing.forces import lever_record
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    from conftest import scene_study
+    from review_scenes import SIX_LEVER51
+    st = scene_study(SIX_LEVER51)
+    fp = forceplans.construct(st, float(kinetostatics.at_scene_angle(st)))
+    return fp.lever, lever_record(fp, "uk")
+
+
+def _on_one_line(p: tuple[complex, complex], q: tuple[complex, complex], tol: float = 0.5) -> bool:
+    """Two segments on one line (each end of q within ``tol`` of p's line) sharing more than ``tol``."""
+    (a, b), (c, d) = p, q
+    u = (b - a) / abs(b - a)
+    if any(abs(((e - a) * u.conjugate()).imag) > tol for e in (c, d)):
+        return False
+    s = sorted(((e - a) * u.conjugate()).real for e in (c, d))
+    return min(abs(b - a), s[1]) - max(0.0, s[0]) > tol
+
+
+def test_the_six_bars_coinciding_images_and_the_balancing_force_read_apart(six_lever):
+    """At the sheet's position a, b and s2 coincide: lettered "a, b, s₂"; P_зр applied at a lies
+    on no other force's line there (Φ3 left a along it, its head on P_зр's shaft)."""
+    lv, rec = six_lever
+    a = lv.images["A"]
+    assert abs(lv.images["B"] - a) < 0.05 and abs(lv.images["S2"] - a) < 0.05
+    texts = [q.text for q in rec.items if q.kind == "text"]
+    assert any({t.strip() for t in x.split(",")} == {"a", "b", "s_2"} for x in texts), texts
+    vectors = [q for q in rec.items if q.kind == "vector"]
+    pb = next(q for q in vectors if q.text == "P_b")
+    p = (complex(*pb.points[0]), complex(*pb.points[-1]))
+    assert min(abs(e - 1j * a) for e in p) < 4.0           # applied at a (a lane at most off it)
+    assert not any(_on_one_line(p, (complex(*q.points[0]), complex(*q.points[-1])))
+                   for q in vectors if q is not pb)

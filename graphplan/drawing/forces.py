@@ -1915,10 +1915,15 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         # pushing from a (its tail there) or pulling into a (its head there), whichever runs along
         # no line of the lever and meets no arrow there (review 12: at ab ∥ P_зр its shaft ran along
         # a–s2–b, its head past b: it read as applied at b)
-        ways = [(a, a + length * u), (a - length * u, a)]
-        tail, tip = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
-                                             sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
-                                             w[0] != a))
+        # … and where either way runs on a force's line at a (the six-bar's Φ3 leaving a along
+        # P_зр's line, its head on P_зр's shaft: review51), set aside, parallel, a lane or two off
+        # a (SIDE_MM, as the forces on one line), the lane nearest a line free of them
+        n = 1j * u if dot(1j * u, a) >= 0 else -1j * u
+        ways = [(t + k * SIDE_MM * n, h + k * SIDE_MM * n, k) for k in (0, 1, -1, 2, -2)
+                for t, h in ((a, a + length * u), (a - length * u, a))]
+        tail, tip, _ = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
+                                                sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
+                                                abs(w[2]), abs(w[0] - w[2] * SIDE_MM * n - a) > 1e-9))
         rec.vector(_pt(tail), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
         span["P_b"] = (tail, tip)
         # named beside its shaft, on the side away from the pole: at the head it met the letters
