@@ -4292,3 +4292,184 @@ pressure_angle_deg = { rise = 35, return = 45 }
 rpm = 120
 direction = "cw"
 '''
+
+FORCE_COUPLER51 = '''# Stop 51 (review51's own, for frc51c): crank-rocker four-bar O1ABO2, crank counter-clockwise, heavy rocker; the coupler
+# point E (off the line AB) drives, through the rod EF, a slider F on a guide inclined at 135°.
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП.
+title = "Шестиланковий механізм з похилою напрямною"
+title_en = "Six-bar linkage with a coupler-driven slider on an inclined guide"
+designation = "TMM.KM.51.300"
+lang = "en"
+
+[sheet]
+student = "Check R. R."
+teacher = "Teacher T. T."
+group = "MB-51"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.05]
+
+[frame.guides]
+g = { through = [0.05, 0.32], angle_deg = 135, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 100
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.0
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+shape = { E = [0.13, 0.09] }
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.5 }
+mass = 12
+inertia = 0.08
+
+[[link]]
+name = "EF"
+number = 4
+joints = ["E", "F"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2.5
+inertia = 0.015
+
+[[link]]
+name = "F"
+number = 5
+joints = ["F"]
+slides_on = "g"
+mass = 8
+
+[branch]
+B = 1
+F = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "F"
+magnitude = 500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.88
+synchronous_rpm = 1000
+'''
+
+SIX_LEVER51 = '''# Stop 51 (review51's own six-bar, for frc51c): crank-slider whose slider B drives a rocker O2C through the rod BC
+# I(0-1) -> II(2-3) ВВП -> II(4-5) ВВВ; crank counter-clockwise; force on the slider.
+title = "Шестиланковий механізм з повзуном і коромислом"
+title_en = "Six-bar linkage: slider driving a rocker"
+designation = "ТММ.КМ.51.200"
+
+[sheet]
+student = "Перевірка Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-51"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.45, 0.15]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2.0
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.35 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 6
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.20
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.012
+
+[[link]]
+name = "O2C"
+number = 5
+joints = ["O2", "C"]
+length = 0.14
+points = { S5 = 0.5 }
+mass = 5
+inertia = 0.015
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 800
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

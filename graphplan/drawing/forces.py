@@ -275,6 +275,41 @@ def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[co
     return best if room(best) >= here + COUPLE_GAIN_MM else at
 
 
+HEAD_CLEAR_MM = 5.0   # two arrowheads of different points at least this far apart (tip to tip)
+
+
+def _heads_meet(z: complex, head: complex, drawn: list[tuple[complex, complex, complex]]) -> bool:
+    """Whether an arrow of the point ``z`` ending at ``head`` ends by the head of an arrow drawn at
+    another point (``drawn``: point, tail, head) — the two tips within ``HEAD_CLEAR_MM`` read as one
+    arrowhead and the name by it as either's (review51: the coupler's P_F, laid along the guide from
+    F, ended on Φ4's head from S4, "Φ4" beside the shared tip)."""
+    return any(abs(w - z) >= 0.5 and abs(h - head) < HEAD_CLEAR_MM for w, _, h in drawn)
+
+
+def _head_clear(z: complex, u: complex, a: complex, b: complex, drawn: list[tuple[complex, complex, complex]],
+                links: list[tuple[complex, complex]], busy: list[tuple[complex, complex]]) -> tuple[complex, complex]:
+    """The arrow a→b of the point ``z`` (direction ``u``) whose head meets another point's
+    (``_heads_meet``) laid again, as the seeds draw two forces that would meet: first the other way
+    along its line — arriving at its point where it left it, or leaving it where it arrived — where
+    that side is free (no link crossed, no force of its point lying that way, no arrow drawn over);
+    else shorter (its length grows with the force, not to scale: 0.8, then 0.65 of it), its end at
+    the point kept; else as it was."""
+    d = b - a
+    at_point = abs(dot(a - z, u)) < 0.5          # leaving its point (its tail at the point's level)
+    flipped = (a - d, a) if at_point else (b, b + d)
+    cos_near = math.cos(math.radians(NEAR_DEG))
+    side = -u if at_point else u                 # the side of the point the flipped arrow lies on
+    arrows = [(t, h) for _, t, h in drawn]
+    cands = []
+    if not _crosses(*flipped, links) and not _crosses(*flipped, arrows) \
+            and not any(abs(w - z) < 0.5 and dot(v, side) > cos_near for w, v in busy) \
+            and not any(_one_arrow(*flipped, t, h) for t, h in arrows):
+        cands.append(flipped)
+    for k in (0.8, 0.65):
+        cands.append((a, a + k * d) if at_point else (b - k * d, b))
+    return next((c for c in cands if not _heads_meet(z, c[1], drawn)), (a, b))
+
+
 def _clear_of_links(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
                     busy: list[tuple[complex, complex]] = ()) -> tuple[complex, complex]:
     """Where a force's arrow is drawn (tail, head) on its line of action through ``z``: from ``z``
@@ -680,6 +715,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                                  (a, b, off))
             lanes[name] = off * n
             set_aside.append((z, off * n, u, (a + b) / 2))
+        if _heads_meet(z, b, drawn):
+            a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
         drawn.append((z, a, b))
         return a, b
 
@@ -1784,6 +1821,28 @@ def lever_record(fp: ForcePlans, lang: str = "uk") -> Record:
     return Record(hit.title, list(hit.items), dict(hit.scales))
 
 
+SAME_IMAGE_MM = 1.5    # two of the lever's images this near are one spot, lettered together (as the plan of
+                       # velocities letters its points, ``graphic.plan.group_labels``)
+
+
+def _coincident_images(turned: dict[str, complex]) -> list[tuple[complex, list[str]]]:
+    """The lever's images off the pole grouped by spot (within ``SAME_IMAGE_MM``): each spot (the
+    first image's place) with the names there — the joints' first, then the centres of mass
+    ("a, b, s₂") — the spots farthest from the pole first (the order they are lettered in)."""
+    spots: list[tuple[complex, list[str]]] = []
+    for name, z in turned.items():
+        if abs(z) <= 0.1:
+            continue
+        spot = next((s for s in spots if abs(s[0] - z) < SAME_IMAGE_MM), None)
+        if spot is None:
+            spots.append((z, [name]))
+        else:
+            spot[1].append(name)
+    for _, names in spots:
+        names.sort(key=lambda n: (n[:1] == "S" and n[1:].isdigit(), n))
+    return sorted(spots, key=lambda s: -abs(s[0]))
+
+
 def _lever_record(fp: ForcePlans, lang: str) -> Record:
     """``lever_record`` drawn."""
     from dataclasses import replace
@@ -1856,10 +1915,15 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         # pushing from a (its tail there) or pulling into a (its head there), whichever runs along
         # no line of the lever and meets no arrow there (review 12: at ab ∥ P_зр its shaft ran along
         # a–s2–b, its head past b: it read as applied at b)
-        ways = [(a, a + length * u), (a - length * u, a)]
-        tail, tip = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
-                                             sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
-                                             w[0] != a))
+        # … and where either way runs on a force's line at a (the six-bar's Φ3 leaving a along
+        # P_зр's line, its head on P_зр's shaft: review51), set aside, parallel, a lane or two off
+        # a (SIDE_MM, as the forces on one line), the lane nearest a line free of them
+        n = 1j * u if dot(1j * u, a) >= 0 else -1j * u
+        ways = [(t + k * SIDE_MM * n, h + k * SIDE_MM * n, k) for k in (0, 1, -1, 2, -2)
+                for t, h in ((a, a + length * u), (a - length * u, a))]
+        tail, tip, _ = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
+                                                sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
+                                                abs(w[2]), abs(w[0] - w[2] * SIDE_MM * n - a) > 1e-9))
         rec.vector(_pt(tail), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
         span["P_b"] = (tail, tip)
         # named beside its shaft, on the side away from the pole: at the head it met the letters
@@ -1876,16 +1940,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
     # the names asked for — each image's letter, each force's, each arm's — each with its own
     # line, the others it must not read as, and where along its line it is anchored
     jobs: list[_Name] = []
-    seen: set[tuple[float, float]] = set()
-    for name, z in sorted(turned.items(), key=lambda kv: -abs(kv[1])):
+    for z, names in _coincident_images(turned):
         # each image lettered beside it, nearer it than any other image (the six-bar's "b" stood
-        # on a leader across three arrows)
-        key = (round(z.real, 1), round(z.imag, 1))
-        if abs(z) <= 0.1 or key in seen:
-            continue
-        seen.add(key)
-        req = LabelRequest(z, indexed(name.lower()), _unit(z), 3.5, step=step)
-        jobs.append(_Name(req, (z, z), [(w, w) for w in turned.values() if abs(w - z) > 0.05], (0.0,)))
+        # on a leader across three arrows); images at one spot lettered together, "a, b, s₂", as
+        # the plan of velocities letters them (review51: only "s2" where a, b and s2 coincide)
+        req = LabelRequest(z, ", ".join(indexed(n.lower()) for n in names), _unit(z), 3.5, step=step)
+        jobs.append(_Name(req, (z, z), [(w, w) for w in turned.values() if abs(w - z) >= SAME_IMAGE_MM], (0.0,)))
     arrows = list(span.values())
     for tip, name, u in labels:
         # a force's name by its own arrow (the press's lever set "G2" on Φ2's head and "Φ2" by
