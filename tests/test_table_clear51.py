@@ -40,3 +40,13 @@ def test_an_ordinary_cell_keeps_its_place():
     rec = table([["a", "12,5"]], [20.0, 20.0], row_h=7.0, size=3.5)
     ys = {round(p.points[0][1], 6) for p in rec.items if p.kind == "text"}
     assert ys == {round(-7.0 + (7.0 - 3.5) / 2 + 0.15 * 3.5, 6)}
+
+
+def test_a_lowered_row_keeps_one_baseline():
+    """The cell with the raised prime lowers its whole row: every cell of a row on one baseline (the
+    tables are read by rows)."""
+    from graphplan.drawing.tables import table
+    from graphplan.sheets.gears import tight
+    for rec in (table(ROWS, [40.0, 90.0], row_h=7.0, size=3.5), tight(table(ROWS, [34.0, 60.0], row_h=6.0, size=2.5))):
+        ys = sorted({round(p.points[0][1], 6) for p in rec.items if p.kind == "text"}, reverse=True)
+        assert len(ys) == len(ROWS)

@@ -27,7 +27,7 @@ CYRILLIC = re.compile(r"[А-Яа-яІіЇїЄєҐґ]")
 # — not a subscripted point's name after another's index (the gear sheet's N₁N₂, read "N 1 N 2")
 LATIN_UNIT = re.compile(r"(?<![A-Za-z_])(?:mm|rad|rpm|kg)(?![A-Za-z])|(?<![A-Za-z_])(?:m|N|s)/|N·m|\(m/"
                         r"|\d\s?(?:m|s|N)(?![A-Za-z0-9_])(?!\s\d)")
-SYMBOLS = {"max", "min", "graphplan", "Tab"}          # the lab's subscripts; the program's name
+SYMBOLS = {"max", "min", "graphplan", "Tab", "sin", "cos"}   # the lab's subscripts; the program's name; sin, cos
 FIELDS = re.compile(r"\{[^{}]*\}")
 
 

@@ -73,10 +73,11 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
                     width=THICK if k in (0, len(x_edges) - 1) else THIN)
     for r, row in enumerate(rows):
         y_row = top - (r + 1) * row_h + (row_h - size) / 2 + 0.15 * size
+        # one baseline a row: the lowest any of its cells needs (a raised prime's cell lowers its row)
+        y = min((baseline_in_row(cell, size, y_row, top - r * row_h, row_h) for cell in row if cell), default=y_row)
         for c, cell in enumerate(row):
             if not cell:
                 continue
-            y = baseline_in_row(cell, size, y_row, top - r * row_h, row_h)
             how = "middle" if r < header else (align[c] if align else ("end" if _is_number(cell) else "middle"))
             x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
                  "end": x_edges[c + 1] - PAD - 0.3}[how]

@@ -1013,12 +1013,21 @@ def tight(rec: Record, k: float = TABLES, rows: float = TIGHT) -> Record:
     f = rows / k
     row_h = RULED_ROW * rows
 
+    def row_of(p: Primitive) -> int | None:       # a cell's lettering: the row it stands in (None: not a cell)
+        return math.floor(-p.points[0][1] * f / row_h) if p.kind == "text" and p.points[0][1] < 0.0 else None
+
+    # each row's one baseline: the lowest its cells need to keep their ink clear of the rules (the prime
+    # of z′₂ raised onto the row's top rule in the 7-mm rows, review 51)
+    lines: dict[int, float] = {}
+    for p in big.items:
+        r = row_of(p)
+        if r is not None:
+            y = baseline_in_row(p.text, p.size, p.points[0][1] * f, -r * row_h, row_h)
+            lines[r] = min(lines.get(r, y), y)
+
     def placed(p: Primitive) -> Primitive:
-        pts = tuple((x, y * f) for x, y in p.points)
-        if p.kind == "text" and pts[0][1] < 0.0:     # a cell's lettering: its ink clear of the rules
-            # (the prime of z′₂ raised onto the row's top rule in the 7-mm rows, review 51)
-            row_top = -math.floor(-pts[0][1] / row_h) * row_h
-            pts = ((pts[0][0], baseline_in_row(p.text, p.size, pts[0][1], row_top, row_h)),)
+        r = row_of(p)
+        pts = ((p.points[0][0], lines[r]),) if r is not None else tuple((x, y * f) for x, y in p.points)
         return Primitive(p.kind, pts, p.role, p.layer, p.step, p.text, p.size, p.radius, p.angles, p.anchor,
                          p.width)
     return Record(big.title, [placed(p) for p in big.items], dict(big.scales))
