@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import functools
+import math
 import os
 from pathlib import Path
 
@@ -189,6 +190,29 @@ def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang:
 
 def scene_study(text: str):
     return study(loads(text, "<test>"))
+
+
+def scene_force_plans(text: str, **scales):
+    """A scene's force plans (``forceplans.construct``) at its force analysis's crank angle, at the
+    given scales (mu_l, mu_F, group_mu, group_mu_F)."""
+    from graphplan.exact import kinetostatics
+    from graphplan.graphic import forceplans
+    st = scene_study(text)
+    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), **scales)
+
+
+def group_of(fp, label: str):
+    """The force plans' group lettered ``label`` ("II(2-3)")."""
+    return next(g for g in fp.groups if g.label == label)
+
+
+def circles(p: complex, rp: float, q: complex, rq: float) -> tuple[complex, complex]:
+    """The two points at rp from p and rq from q: p + a·e ± i·h·e, a = (rp² − rq² + d²)/(2d), h = √(rp² − a²)."""
+    d = abs(q - p)
+    a = (rp * rp - rq * rq + d * d) / (2 * d)
+    h = math.sqrt(rp * rp - a * a)
+    e = (q - p) / d
+    return p + a * e + 1j * h * e, p + a * e - 1j * h * e
 
 
 def composed(kind: str, scene, f, options):

@@ -10,7 +10,7 @@ import math
 
 import pytest
 
-from conftest import scene_study
+from conftest import circles, group_of, scene_force_plans, scene_study
 from review_scenes import LINK50
 
 MU_L, MU_F = 0.004, 4.0          # the A1 sheet's groups and force plans (1:4, 4 N/mm)
@@ -23,15 +23,7 @@ W1 = 75 * 2 * math.pi / 60      # counter-clockwise
 
 @pytest.fixture(scope="module")
 def fp():
-    from graphplan.exact import kinetostatics
-    from graphplan.graphic import forceplans
-    st = scene_study(LINK50)
-    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=MU_L, mu_F=MU_F,
-                                group_mu=CRANK, group_mu_F=CRANK_F)
-
-
-def _group(fp, label: str):
-    return next(g for g in fp.groups if g.label == label)
+    return scene_force_plans(LINK50, mu_l=MU_L, mu_F=MU_F, group_mu=CRANK, group_mu_F=CRANK_F)
 
 
 _RECORDS: dict = {}
@@ -46,28 +38,19 @@ def _record(fp, gp):
     return _RECORDS[key]
 
 
-def _circles(p: complex, rp: float, q: complex, rq: float) -> tuple[complex, complex]:
-    """The two points at rp from p and rq from q."""
-    d = abs(q - p)
-    a = (rp * rp - rq * rq + d * d) / (2 * d)
-    h = math.sqrt(rp * rp - a * a)
-    e = (q - p) / d
-    return p + a * e + 1j * h * e, p + a * e - 1j * h * e
-
-
 def _closed_form(fp):
     """θ1 as drawn (group I(0-1)), B on the branch drawn (group II(2-3)): the positions of the centres
     of mass and the links' angles as functions of t (the crank turning at ω1)."""
-    pts = _group(fp, "I(0-1)").points
+    pts = group_of(fp, "I(0-1)").points
     theta0 = cmath.phase(pts["A"] - pts["O1"])
-    g23 = _group(fp, "II(2-3)").points
+    g23 = group_of(fp, "II(2-3)").points
     b_drawn = (g23["B"] - g23["O2"]) * MU_L + O2
     a0 = R1 * cmath.exp(1j * theta0)
-    sign = min((0, 1), key=lambda k: abs(_circles(a0, L2, O2, L3)[k] - b_drawn))
+    sign = min((0, 1), key=lambda k: abs(circles(a0, L2, O2, L3)[k] - b_drawn))
 
     def pos(t: float) -> dict[str, complex | float]:
         a = R1 * cmath.exp(1j * (theta0 + W1 * t))
-        b = _circles(a, L2, O2, L3)[sign]
+        b = circles(a, L2, O2, L3)[sign]
         c = O2 + LC * (b - O2) / L3
         u5 = (c - O3) / abs(c - O3)
         return {"S1": a / 2, "S2": (a + b) / 2, "S3": (O2 + b) / 2, "C": c, "S5": O3 + 0.23 * u5,
@@ -107,7 +90,7 @@ def test_the_coulisse_acts_on_the_stone_normal_to_it(fp):
     pos = _closed_form(fp)
     p = pos(0.0)
     u5 = cmath.exp(1j * p["phi5"])
-    s = {x.name: x.end - x.start for x in _group(fp, "II(4-5)").sides}
+    s = {x.name: x.end - x.start for x in group_of(fp, "II(4-5)").sides}
     r54 = s["R54"]
     assert abs((r54 / u5).real) <= 0.5
     a5, e5, w5 = _d(pos, "S5", 2), _d(pos, "phi5", 2).real, _d(pos, "phi5", 1).real
@@ -142,7 +125,7 @@ def test_a_component_along_the_rocker_crosses_no_other_arrow(fp):
     along AB) cross no other force's arrow (R^n03 ran through Φ3's head at S3, its name 49 mm away)
     and pass no other loaded point nearer than a lane (2.5 mm)."""
     from graphplan.drawing import forces as fd
-    gp = _group(fp, "II(2-3)")
+    gp = group_of(fp, "II(2-3)")
     vec = _vectors(_record(fp, gp))
     own = {"R03n": ("R03", "R03τ"), "R12n": ("R12", "R12τ")}
     for name, mates in own.items():
@@ -179,7 +162,7 @@ def test_the_plans_detail_names_each_side_by_its_own_line(fp):
     across G5)."""
     from graphplan.drawing import forces as fd
     from graphplan.drawing.labels import box_to_segment
-    rec = fd.polygon_record(fp, _group(fp, "II(4-5)"), "uk")
+    rec = fd.polygon_record(fp, group_of(fp, "II(4-5)"), "uk")
     det = [q for q in rec.items if q.step.endswith(": detail")]
     lines = {q.text: (complex(*q.points[0]), complex(*q.points[1])) for q in det
              if q.kind in ("vector", "segment") and q.layer == "vectors" and q.text}
@@ -230,7 +213,7 @@ def test_an_arms_name_stands_by_its_own_arm_not_at_anothers_foot(own):
     mark) — "h_Φ4" stood at h_Φ5's foot."""
     from graphplan.drawing import forces as fd
     from graphplan.drawing.labels import box_to_segment
-    rec = _record(own, _group(own, "II(4-5)"))
+    rec = _record(own, group_of(own, "II(4-5)"))
     arms = {n: (a, b) for n, a, b in _arms(rec)}
     assert {"Φ4", "Φ5"} <= set(arms)
     for name in ("Φ4", "Φ5"):
@@ -257,7 +240,7 @@ def test_own_no_two_arrows_of_one_point_merge(own):
 def test_own_balancing_moment_agrees_with_the_closed_form(own):
     """M_зр of the slider-driven coulisse from the plans equals −ΣP/ω1 of its closed form (B = A + the
     rod's reach to the guide y = −0.02 m, the coulisse along O3B) within 1.5 %."""
-    pts = _group(own, "I(0-1)").points
+    pts = group_of(own, "I(0-1)").points
     theta0 = cmath.phase(pts["A"] - pts["O"])
     w1, o3, g = 120 * 2 * math.pi / 60, 0.26 + 0.30j, 9.81
 
@@ -314,7 +297,7 @@ def test_the_reactions_are_named_from_to_as_seed_000(fp):
     r45 = -moment / abs(p["C"] - O3) * 1j * u5           # the stone on the coulisse, normal to it
     r34 = -(f4 - r45)                                    # the stone: R34 + G4 + Φ4 + R54 = 0, R54 = −R45
     r05 = -(r45 + f5)
-    s = {x.name: (x.end - x.start) * MU_F for x in _group(fp, "II(4-5)").sides}
+    s = {x.name: (x.end - x.start) * MU_F for x in group_of(fp, "II(4-5)").sides}
     for name, truth in (("R34", r34), ("R05", r05)):
         assert abs(s[name]) == pytest.approx(abs(truth), rel=0.02), name
         assert abs(cmath.phase(s[name] / truth)) < math.radians(1.0), name

@@ -10,7 +10,7 @@ import math
 
 import pytest
 
-from conftest import scene_study
+from conftest import circles, group_of, scene_force_plans, scene_study
 from review_scenes import LINK51
 
 MU_L, MU_F = 0.004, 7.5          # the A1 sheet's groups and force plans (1:4, 7.5 N/mm)
@@ -25,38 +25,22 @@ INERTIA = {"phi3": 0.11, "phi4": 0.025, "phi5": 0.02}     # the crank turns unif
 
 @pytest.fixture(scope="module")
 def fp():
-    from graphplan.exact import kinetostatics
-    from graphplan.graphic import forceplans
-    st = scene_study(LINK51)
-    return forceplans.construct(st, float(kinetostatics.at_scene_angle(st)), mu_l=MU_L, mu_F=MU_F,
-                                group_mu=CRANK, group_mu_F=CRANK_F)
-
-
-def _group(fp, label: str):
-    return next(g for g in fp.groups if g.label == label)
-
-
-def _circles(p: complex, rp: float, q: complex, rq: float) -> tuple[complex, complex]:
-    d = abs(q - p)
-    a = (rp * rp - rq * rq + d * d) / (2 * d)
-    h = math.sqrt(rp * rp - a * a)
-    e = (q - p) / d
-    return p + a * e + 1j * h * e, p + a * e - 1j * h * e
+    return scene_force_plans(LINK51, mu_l=MU_L, mu_F=MU_F, group_mu=CRANK, group_mu_F=CRANK_F)
 
 
 def _closed_form(fp):
     """θ1 as drawn (group I(0-1)), D on the branch drawn (group II(4-5)): the points and angles as
     functions of t, the crank turning at ω1."""
-    pts = _group(fp, "I(0-1)").points
+    pts = group_of(fp, "I(0-1)").points
     theta0 = cmath.phase(pts["A"] - pts["O1"])
-    g45 = _group(fp, "II(4-5)").points
+    g45 = group_of(fp, "II(4-5)").points
     d_drawn = (g45["D"] - g45["O4"]) * MU_L + O4
 
     def at(theta: float, sign: int | None = None):
         a = O1 + R1 * cmath.exp(1j * theta)
         u3 = (a - O3) / abs(a - O3)
         b = O3 + L3 * u3
-        return a, u3, b, _circles(b, L4, O4, L5)
+        return a, u3, b, circles(b, L4, O4, L5)
     a0, _, _, ds = at(theta0)
     sign = min((0, 1), key=lambda k: abs(ds[k] - d_drawn))
 
@@ -99,7 +83,7 @@ def test_the_coulisse_acts_on_the_stone_normal_to_it(fp):
     ruler's 0.5 mm over its length; R12 + G2 + Φ2 + R32 = 0 closes the stone's polygon."""
     p = _closed_form(fp)(0.0)
     u3 = cmath.exp(1j * p["phi3"])
-    s = {x.name: x.end - x.start for x in _group(fp, "II(2-3)").sides}
+    s = {x.name: x.end - x.start for x in group_of(fp, "II(2-3)").sides}
     assert abs((s["R32"] / u3).real) <= 0.5
     assert abs(s["R32"]) > 50.0
     stone = s["R12"] + s.get("G2", 0) + s.get("Φ2", 0) + s["R32"]
@@ -114,8 +98,8 @@ def test_the_reactions_are_named_from_to(fp):
     assert "R21" in names["I(0-1)"] and "R12" not in names["I(0-1)"]
     assert "R43" in names["II(2-3)"] and "R12" in names["II(2-3)"]
     assert "R34" in names["II(4-5)"]
-    s23 = {x.name: x.end - x.start for x in _group(fp, "II(2-3)").sides}
-    s45 = {x.name: x.end - x.start for x in _group(fp, "II(4-5)").sides}
+    s23 = {x.name: x.end - x.start for x in group_of(fp, "II(2-3)").sides}
+    s45 = {x.name: x.end - x.start for x in group_of(fp, "II(4-5)").sides}
     assert abs(s23["R43"] + s45["R34"]) <= 1.0
 
 
@@ -136,7 +120,7 @@ def test_the_stones_letters_read_as_their_own(fp):
     arrow than any other."""
     from graphplan.drawing import forces as fd
     from graphplan.drawing.labels import box_to_segment, segment_gap
-    rec = fd.group_record(fp, _group(fp, "II(2-3)"), "uk")
+    rec = fd.group_record(fp, group_of(fp, "II(2-3)"), "uk")
     arrows, texts, leaders = _arrows_and_labels(rec)
     label_a = next(q for q in texts if q.text == "A")
     box = label_a.ink()
@@ -186,7 +170,7 @@ def own():
 def _own_closed_form(own):
     """θ1 as drawn; the rod along A→O2 (through the block), B at 0.55 m from A, C on the guide y = 0.05
     to the right of B at 0.32 m from it."""
-    pts = _group(own, "I(0-1)").points
+    pts = group_of(own, "I(0-1)").points
     theta0 = cmath.phase(pts["A"] - pts["O1"])
 
     def pos(t: float) -> dict[str, complex | float]:
@@ -222,12 +206,12 @@ def test_own_block_acts_on_the_rod_normal_to_it_and_names_by_the_rule(own):
     opposite to the outer group's R24."""
     p = _own_closed_form(own)(0.0)
     u = cmath.exp(1j * p["phi2"])
-    s = {x.name: x.end - x.start for x in _group(own, "II(2-3)").sides}
+    s = {x.name: x.end - x.start for x in group_of(own, "II(2-3)").sides}
     inner = next(n for n in ("R32", "R23") if n in s)
     assert abs((s[inner] / u).real) <= 0.5 and abs(s[inner]) > 20.0
     names = {gp.label: {x.name for x in gp.sides} for gp in own.groups}
     assert "R21" in names["I(0-1)"] and "R42" in names["II(2-3)"] and "R24" in names["II(4-5)"]
-    s45 = {x.name: x.end - x.start for x in _group(own, "II(4-5)").sides}
+    s45 = {x.name: x.end - x.start for x in group_of(own, "II(4-5)").sides}
     assert abs(s["R42"] + s45["R24"]) <= 1.0
 
 
