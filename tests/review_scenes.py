@@ -4386,3 +4386,91 @@ synchronous_rpm = 1000
 '''
 
 SIX_LEVER51 = SLIDER_ROCKER51     # the same six-bar (frc51c's lever tests name it so)
+
+WEDGE52 = '''
+# Stop 52 (a blind grading): a wedge press: offset crank-slider drives a wedge (link 3) whose inclined slot lifts a block 4
+# pinned to the vertical ram 5.  I(0-1) -> II(2-3) RRP (offset) -> II(4-5) PRP.
+title = "Клиновий прес з кривошипно-повзунним приводом"
+title_en = "Wedge press with an offset crank-slider drive"
+designation = "ТММ.КП.52.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, -0.03], angle_deg = 0, title_uk = "клина", title_en = "of the wedge" }
+ram = { through = [0.40, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.05
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.4 }
+mass = 3
+inertia = 0.015
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+guide = { through = [0.14, 0], angle_deg = 150 }
+mass = 12
+
+[[link]]
+name = "C"
+number = 4
+joints = ["C"]
+slides_on = "B"
+mass = 1
+
+[[link]]
+name = "5"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 20
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "min"
+accel = [3]
+force_phi_deg = 150
+output = "C"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 3000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.01, 1], [0.05, 1]]
+
+[dynamics]
+delta = 0.08
+efficiency = 0.85
+'''

@@ -62,6 +62,8 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 a, b = slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle), own,
                                  [pts[p] for p in mech.links[slider].local])
                 rec.segment(_pt(complex(a)), _pt(complex(b)), role=role, width=width, layer="mechanism", step=step)
+                if thick and link.slides_on is not None:
+                    _wedge_sides(rec, [pts[p] for p in joints], complex(a), complex(b), role, step)
         if link.slides_on is not None and len(joints) <= 1:
             if thick:
                 centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
@@ -83,6 +85,20 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 if p not in link.joints and p in pts and not sc.fixed(p) and (
                         p != next(iter(link.local)) or yoke_guide(mech, name) is not None):
                     rec.point(_pt(pts[p]), role="dot", layer="mechanism")
+
+
+WEDGE_OFF_MM = 1.0   # a sliding carrier's joint this far off its slot's line is joined to the slot
+
+
+def _wedge_sides(rec: Record, joints: list[complex], a: complex, b: complex, role: str, step: str) -> None:
+    """A slider that carries a slot off its own joint (a wedge: the block B on the frame's guide, its
+    inclined face the slot the ram's block C rides in) drawn as one rigid body, the triangle of its
+    joint and the slot's ends — not a slot floating apart from its block (review 52)."""
+    u = (b - a) / abs(b - a)
+    for X in joints:
+        if abs(((X - a) * u.conjugate()).imag) > WEDGE_OFF_MM:
+            rec.segment(_pt(X), _pt(a), role=role, layer="mechanism", step=step)
+            rec.segment(_pt(X), _pt(b), role=role, layer="mechanism", step=step)
 
 
 SUPPORT_HALF_DEG = 45.0   # the support's triangle and hatched bar, seen from its pivot: ±45° about its axis

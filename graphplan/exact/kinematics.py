@@ -336,8 +336,11 @@ def _prp(kin: Kinematics, d: Dyad, branch: int) -> None:
     links = kin.mech.links
     kin.bodies[d.a] = place(links[d.a].local[c], xc, vc, acc, g1, b1.omega, b1.eps)
     kin.bodies[d.b] = place(links[d.b].local[c], xc, vc, acc, g2, b2.omega, b2.eps)
-    _slide(kin, c, d.a, k1, t1, tv1, ta1, g1)
-    _slide(kin, c, d.b, k2, t2, tv2, ta2, g2)
+    slides = [(d.a, k1, t1, tv1, ta1, g1), (d.b, k2, t2, tv2, ta2, g2)]
+    if k2 == FRAME != k1:       # the point's own name keys its absolute slide (a wedge press's ram, not
+        slides.reverse()        # the block's slide along the moving wedge: the output, the diagrams)
+    for slider, carrier, t, tv, ta, g in slides:
+        _slide(kin, c, slider, carrier, t, tv, ta, g)
     cond = cross(g1, g2)
     _record(kin, d, np.abs(cond) > 1e-12, cond)
 

@@ -83,6 +83,16 @@ def turns(mech: Mechanism, link: str) -> bool:
                 and mech.guides[body.slides_on].body == FRAME)
 
 
+def point_slider(mech: Mechanism, point: str) -> str | None:
+    """The link whose slide the point ``point`` names: one sliding on a frame guide first (a wedge
+    press's ram, not the block sliding along the moving wedge — the slide the point's own name keys,
+    ``exact.kinematics._prp``), else the first sliding link carrying it; None when none slides."""
+    sliding = [name for name, link in mech.links.items()
+               if link.slides_on is not None and next(iter(link.local)) == point]
+    framed = [name for name in sliding if mech.guides[mech.links[name].slides_on].body == FRAME]
+    return (framed or sliding or [None])[0]
+
+
 def default_output(mech: Mechanism, structure: Structure) -> Output:
     """The scene's ``output``, else the slide a resistance force acts on (the working member, e.g. a
     slider that drives a further group), else the last group's slide on the frame, else its link

@@ -716,9 +716,8 @@ def sign_note(st: Study, diag, lang: str) -> str:
     out = st.output
     if out.kind == "slide":
         import math
-        slider = next(link for link in st.mech.links.values()
-                      if link.slides_on is not None and next(iter(link.local)) == out.name)
-        guide = st.mech.guides[slider.slides_on]
+        from graphplan.exact.positions import point_slider
+        guide = st.mech.guides[st.mech.links[point_slider(st.mech, out.name)].slides_on]
         said = f"{escape(guide.title(lang))} ({num(math.degrees(guide.angle) % 360, lang)}°)"
         return w('signs_back' if drawn_sense(diag) < 0 else 'signs', guide=said)
     n, s = diag.sub, diag.symbols[0]          # φ, or ψ for a rocker's angle
