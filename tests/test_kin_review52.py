@@ -78,15 +78,68 @@ def test_link52_every_moving_joint_numbered_at_every_position(link52):
     assert not missing, missing
 
 
-@pytest.mark.parametrize("scene, point", [("LINK51", "B"), ("FORCE_COUPLER51", "E")])
+@pytest.mark.parametrize("scene, point", [("LINK51", "B"), ("FORCE_COUPLER51", "E"), ("SIX_BELL52", "C")])
 def test_outer_joints_numbered(scene, point):
     """Stop 51's leftovers, the same cause: LINK51's coulisse end B (the rod BD's start) and
-    FORCE_COUPLER51's coupler point E (the rod EF's start) numbered at every position."""
+    FORCE_COUPLER51's coupler point E (the rod EF's start) numbered at every position; and kin52's own
+    Watt six-bar's bell-crank arm C (the plate O2BC's third vertex, the rod CD's start)."""
     st = scene_study(getattr(review_scenes, scene))
-    plans = build_plans(st, mu_l=0.0025 if scene == "LINK51" else None)
+    plans = build_plans(st, mu_l={"LINK51": 0.0025, "SIX_BELL52": 0.002}.get(scene))
     rec = position_record(plans)
     read, wrong = _readings(rec, plans, _numbered(plans))
     assert not wrong, wrong
     thick = {str(p.index) for p in plans.positions if p.layout.key in (set(plans.accel_keys) or {0})}
     missing = [str(p.index) for p in plans.positions if (point, str(p.index)) not in read and str(p.index) not in thick]
     assert not missing, missing
+
+
+def _watt(phi: float, branch_b: int = 1, branch_d: int = 1):
+    """kin52's own Watt six-bar in closed form: B on the circles (A, 0.20) ∩ (O2, 0.12), the bell
+    crank's C = O2 + (0.02 − 0.11i)·(B − O2)/|B − O2|, D on (C, 0.22) ∩ (O3, 0.14); None where a
+    group does not assemble. The branch as the scene's B = 1, D = 1 (left of P→Q)."""
+    def meet(P, a, Q, b, br):
+        d = abs(Q - P)
+        x = (a * a - b * b + d * d) / (2 * d)
+        h2 = a * a - x * x
+        if h2 < 0:
+            return None
+        u = (Q - P) / d
+        return P + u * x + br * 1j * u * h2 ** 0.5
+    O2, O3 = complex(0.18, 0.08), complex(0.36, 0.38)
+    A = 0.05 * cmath.exp(1j * phi)
+    B = meet(A, 0.20, O2, 0.12, branch_b)
+    C = O2 + (B - O2) / abs(B - O2) * complex(0.02, -0.11)
+    return A, B, C, meet(C, 0.22, O3, 0.14, branch_d), O3
+
+
+def test_own_watt_sixbar_drawn_as_the_closed_form_and_its_swing():
+    """kin52's own mechanism: every position's A, B, C, D on the plan are the closed form's (at μl,
+    from O1), and the rocker O3D's extreme positions D′, D″ span the swing ψmax the closed form gives
+    (a 0.01° search), to 0.05°."""
+    import math
+    st = scene_study(review_scenes.SIX_BELL52)
+    plans = build_plans(st, mu_l=0.002)
+    sc, mu = plans.scheme, plans.mu_l
+    # the scene's branch signs against the drawing's: each joint at one position picks the sign
+    first = plans.positions[0]
+    o1 = where(sc, first.layout, sc.body_of("O1"), "O1")
+    phi0 = math.radians(first.phi)
+    signs = []
+    for sb in (1, -1):
+        for sd in (1, -1):
+            pts = _watt(phi0, sb, sd)
+            if pts[3] is not None and abs((where(sc, first.layout, sc.body_of("D"), "D") - o1) * mu - pts[3]) < 1e-6:
+                signs.append((sb, sd))
+    assert len(signs) == 1, signs
+    sb, sd = signs[0]
+    for p in plans.positions:
+        A, B, C, D, _ = _watt(math.radians(p.phi), sb, sd)
+        for name, z in zip("ABCD", (A, B, C, D)):
+            drawn = (where(sc, p.layout, sc.body_of(name), name) - o1) * mu
+            assert abs(drawn - z) < 1e-6, (p.index, name)
+    ref = _watt(0.0, sb, sd)[3] - complex(0.36, 0.38)          # angles from one position: no ±180° wrap
+    angles = [cmath.phase((_watt(math.radians(k / 100), sb, sd)[3] - complex(0.36, 0.38)) / ref) for k in range(36000)]
+    swing = math.degrees(max(angles) - min(angles))
+    from graphplan.drawing.plans import stroke_ends
+    e1, e2 = ((where(sc, lay, sc.body_of("D"), "D") - where(sc, lay, sc.body_of("O3"), "O3")) for lay in stroke_ends(plans))
+    assert math.degrees(abs(cmath.phase(e2 / e1))) == pytest.approx(swing, abs=0.05)
