@@ -143,3 +143,38 @@ def test_own_watt_sixbar_drawn_as_the_closed_form_and_its_swing():
     from graphplan.drawing.plans import stroke_ends
     e1, e2 = ((where(sc, lay, sc.body_of("D"), "D") - where(sc, lay, sc.body_of("O3"), "O3")) for lay in stroke_ends(plans))
     assert math.degrees(abs(cmath.phase(e2 / e1))) == pytest.approx(swing, abs=0.05)
+
+
+def test_a_sets_notes_go_under_the_last_tables_rather_than_alone():
+    """LINK52's A3 set (stop 52): sheet 5 held Table 2 (a column 195 mm high) beside Tables 3 and 4,
+    and the notes, 125 mm high, found no line on it — a shelf's line is as high as its tallest item —
+    so they took sheet 6 alone. Set over the last two tables (``set_tail``), they stand on sheet 5
+    under Tables 3 and 4, in reading order, inside the field and clear of the title block; one
+    sheet fewer. (The sizes are that set's, mm.)"""
+    from graphplan.drawing.layout import Leaf, Shelf, flow
+    from graphplan.sheets.compose import field_of, keep_out, later_keep
+    from graphplan.sheets.form import form
+    from graphplan.sheets.kinlayout import set_tail
+    f = form("A3")
+    region, keep, later = field_of(f), keep_out(f), later_keep(f)
+    tables = [Leaf("velocity table", 300.0, 100.0), Leaf("acceleration table 1", 120.0, 195.0),
+              Leaf("dimensions table", 65.0, 75.0), Leaf("diagram readings table", 160.0, 55.0)]
+    notes = Leaf("notes", 185.0, 125.0)
+    first = [[Leaf("acceleration plan", 300.0, 150.0)]]
+    alone = flow(first + [Shelf(set_tail(tables, notes, 0))], region, keep, later=later, ragged=True)
+    assert [leaf.name for leaf, _ in alone[-1]] == ["notes"]          # the defect, as it was
+    under = flow(first + [Shelf(set_tail(tables, notes, 2))], region, keep, later=later, ragged=True)
+    assert len(under) == len(alone) - 1
+    last = dict((leaf.name, b) for leaf, b in under[-1])
+    assert set(last) == {"acceleration table 1", "dimensions table", "diagram readings table", "notes"}
+    n, t3, t4 = last["notes"], last["dimensions table"], last["diagram readings table"]
+    assert n[3] <= min(t3[1], t4[1]) + 1e-9                             # under both tables
+    assert t3[2] <= t4[0] + 1e-9                                        # Table 3, then Table 4
+    x0, y0, x1, y1 = region
+    for b in last.values():
+        assert x0 - 1e-9 <= b[0] and b[2] <= x1 + 1e-9 and b[3] <= y1 + 1e-9
+        assert b[1] >= later[3] - 1e-9 or b[2] <= later[0] + 1e-9      # clear of the title block
+    # no two boxes overlap
+    bs = list(last.values())
+    assert not any(a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 and b[1] < a[3] - 1e-9
+                   for i, a in enumerate(bs) for b in bs[i + 1:])

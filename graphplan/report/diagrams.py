@@ -181,7 +181,7 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     else:
         tail = ""
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
-             f"Values read off the diagrams exceed the lab's 5 %{ref}: ") + "; ".join(parts) + tail)
+             f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
 
 
 NAMED = 2     # the worst readings a note names a diagram, and a third where the chords' own error is past 5 %
@@ -234,7 +234,7 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
                 if uk else f"; with the {p}-mm ruler on {s0} alone (independent of H_{{1}}, H_{{2}} and L): "
                            f"{'; '.join(s_only)}")
     return ((f"Значення з діаграм у положеннях виходять за межу 5 % лабораторної роботи{ref}: {where}" if uk else
-             f"Values read off the diagrams at the positions exceed the lab's 5 %{ref}: {where}")
+             f"Values read off the diagrams at the positions exceed the 5 % the lab allows{ref}: {where}")
             + why + _tried(d, lang))
 
 
