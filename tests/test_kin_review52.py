@@ -178,3 +178,19 @@ def test_a_sets_notes_go_under_the_last_tables_rather_than_alone():
     bs = list(last.values())
     assert not any(a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 and b[1] < a[3] - 1e-9
                    for i, a in enumerate(bs) for b in bs[i + 1:])
+
+
+def test_position_numbers_stand_apart_from_each_other_lists_too():
+    """FORCE_COUPLER51's E₅ "5" stood 2 mm before B's "1, 9" and read "5 1, 9": a list of positions
+    numbered at one spot is a number too (``labels.is_number``), kept as far from other numbers as
+    any — no two position numbers' inks nearer than 2.5 mm, where they would read as one."""
+    def is_number(text: str) -> bool:
+        return all(part.isdigit() for part in text.split(", "))
+    st = scene_study(review_scenes.FORCE_COUPLER51)
+    rec = position_record(build_plans(st, mu_l=0.0025))
+    boxes = [q.ink() for q in rec.items if q.kind == "text" and q.size <= 3.0 and is_number(q.text)]
+    assert any("," in q.text for q in rec.items if q.kind == "text" and is_number(q.text))
+    def gap(a, b):
+        return abs(complex(max(a[0] - b[2], b[0] - a[2], 0.0), max(a[1] - b[3], b[1] - a[3], 0.0)))
+    near = min(gap(a, b) for i, a in enumerate(boxes) for b in boxes[i + 1:])
+    assert near >= 2.5, near
