@@ -10,6 +10,7 @@ far end) as its own point at its own position."""
 from __future__ import annotations
 
 import cmath
+import functools
 
 import pytest
 
@@ -42,6 +43,14 @@ def _readings(rec, plans, names):
             wrong.append((q.text, name, k))
         read |= {(name, t) for t in parts}
     return read, wrong
+
+
+@functools.lru_cache(maxsize=None)
+def _drawn(scene: str, mu_l: float | None):
+    """A review scene's study, plans and position plan at ``mu_l`` — built once for the module."""
+    st = scene_study(getattr(review_scenes, scene))
+    plans = build_plans(st, mu_l=mu_l)
+    return st, plans, position_record(plans)
 
 
 @pytest.fixture(scope="module")
@@ -83,9 +92,7 @@ def test_outer_joints_numbered(scene, point):
     """Stop 51's leftovers, the same cause: LINK51's coulisse end B (the rod BD's start) and
     FORCE_COUPLER51's coupler point E (the rod EF's start) numbered at every position; and kin52's own
     Watt six-bar's bell-crank arm C (the plate O2BC's third vertex, the rod CD's start)."""
-    st = scene_study(getattr(review_scenes, scene))
-    plans = build_plans(st, mu_l={"LINK51": 0.0025, "SIX_BELL52": 0.002}.get(scene))
-    rec = position_record(plans)
+    st, plans, rec = _drawn(scene, {"LINK51": 0.0025, "FORCE_COUPLER51": 0.0025, "SIX_BELL52": 0.002}[scene])
     read, wrong = _readings(rec, plans, _numbered(plans))
     assert not wrong, wrong
     thick = {str(p.index) for p in plans.positions if p.layout.key in (set(plans.accel_keys) or {0})}
@@ -117,8 +124,7 @@ def test_own_watt_sixbar_drawn_as_the_closed_form_and_its_swing():
     from O1), and the rocker O3D's extreme positions D′, D″ span the swing ψmax the closed form gives
     (a 0.01° search), to 0.05°."""
     import math
-    st = scene_study(review_scenes.SIX_BELL52)
-    plans = build_plans(st, mu_l=0.002)
+    _, plans, _ = _drawn("SIX_BELL52", 0.002)
     sc, mu = plans.scheme, plans.mu_l
     # the scene's branch signs against the drawing's: each joint at one position picks the sign
     first = plans.positions[0]
@@ -186,8 +192,7 @@ def test_position_numbers_stand_apart_from_each_other_lists_too():
     any — no two position numbers' inks nearer than 2.5 mm, where they would read as one."""
     def is_number(text: str) -> bool:
         return all(part.isdigit() for part in text.split(", "))
-    st = scene_study(review_scenes.FORCE_COUPLER51)
-    rec = position_record(build_plans(st, mu_l=0.0025))
+    _, _, rec = _drawn("FORCE_COUPLER51", 0.0025)
     boxes = [q.ink() for q in rec.items if q.kind == "text" and q.size <= 3.0 and is_number(q.text)]
     assert any("," in q.text for q in rec.items if q.kind == "text" and is_number(q.text))
     def gap(a, b):
