@@ -1108,8 +1108,8 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     for nw in wide:
                         tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of),
                                                   stacked), region, keep, later)
-                        if tried is None:
-                            return None if found is None else found
+                        if tried is None:     # a drawing larger than a sheet; a stacked block too large: the others
+                            return found if stacked else None
                         got = (*tried, nw, stacked)
                         orphan = got[1]
                         # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
