@@ -4474,3 +4474,205 @@ profile = [[0, 0], [0.01, 1], [0.05, 1]]
 delta = 0.08
 efficiency = 0.85
 '''
+
+
+LINK52 = '''# Stop 52 (the lead's check): an eight-bar — a crank-rocker four-bar whose rocker's end carries a block
+# sliding in a rocking coulisse; the coulisse's end drives a rod to a slider on a horizontal guide —
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПВ -> II(6-7) ВВП: three groups, a coulisse driven by a rocker.
+title = "Восьмиланковий механізм з кулісою"
+title_en = "Eight-bar mechanism with a coulisse"
+designation = "ТММ.КМ.52.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, 0.04]
+O3 = [0.60, 0.10]
+
+[frame.guides]
+x = { through = [0, 0.42], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.5 }
+mass = 3
+inertia = 0.015
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.14
+points = { S3 = 0.5, C = 1.8 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "O3D"
+mass = 0.8
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3"]
+length = 0.38
+points = { S5 = 0.5, D = 1.0 }
+mass = 6
+inertia = 0.07
+
+[[link]]
+name = "DE"
+number = 6
+joints = ["D", "E"]
+length = 0.30
+points = { S6 = 0.5 }
+mass = 3
+inertia = 0.02
+
+[[link]]
+name = "E"
+number = 7
+joints = ["E"]
+slides_on = "x"
+mass = 10
+
+[branch]
+B = 1
+C = 1
+E = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "E"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
+
+
+SIX_BELL52 = '''# Stop 52 (kin52's own): a Watt six-bar — a crank-rocker four-bar O1ABO2 whose rocker is a bell crank
+# O2BC (a plate: C off the line O2B); its arm C drives, through the rod CD, the output rocker O3D,
+# which carries the resistance moment of the working stroke; the crank turns clockwise —
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВВ: two groups of the second kind, the second driven by a plate.
+title = "Шестиланковий механізм з кутовим важелем"
+title_en = "Six-bar linkage with a bell crank"
+designation = "ТММ.КМ.52.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.18, 0.08]
+O3 = [0.36, 0.38]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 1.5
+inertia = 0.001
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.20
+points = { S2 = 0.5 }
+mass = 2.5
+inertia = 0.01
+
+[[link]]
+name = "O2BC"
+number = 3
+joints = ["O2", "B"]
+length = 0.12
+shape = { C = [0.02, -0.11] }
+points = { S3 = [0.04, 0.04] }
+mass = 4
+inertia = 0.02
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2
+inertia = 0.01
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.14
+points = { S5 = 0.5 }
+mass = 3
+inertia = 0.015
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 40
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

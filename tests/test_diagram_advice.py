@@ -102,7 +102,7 @@ def test_the_sheet_note_says_what_was_tried(sheet_diagrams, lang):
         assert comma(f"{abs(cause):.1f} %") in note
         assert (("own error" in note) if lang == "en" else ("власна похибка" in note)) or not chords
     if all(t.worst_pct > LAB_LIMIT for t in d.alternatives()):
-        assert ("no other construction tried reaches 5 %" in note) if lang == "en" else ("не дає 5 %" in note)
+        assert ("no other construction tried keeps within 5 %" in note) if lang == "en" else ("не вкладається в 5 %" in note)
     assert "_" not in note.replace("_{", "") and "^" not in note
     assert len(note) < 330, note        # about three lines of the notes' column, not six
 

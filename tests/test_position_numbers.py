@@ -29,11 +29,13 @@ def _gap(box, z: complex) -> float:
 
 def _numbered(plans) -> list[str]:
     """The points the lab numbers at every position: the crank pin, the output (the last link's
-    joint), the inner joint of each group and a coupler point whose path is traced (neither a joint
+    joint), the inner joint of each group, every other moving joint and a coupler point whose path is traced (neither a joint
     nor a centre of mass: review 47, the four-bar's E)."""
     mech = plans.scheme.mech
     names = [mech.crank.pin]
     names += [d.inner.point for d in plans.study.structure.dyads]
+    # every moving joint: a group's outer joint on a moving link (stop 52: the coulisse's end D)
+    names += [j for link in mech.links.values() for j in link.joints if j not in mech.frame]
     joints = {j for link in mech.links.values() for j in link.joints}
     coms = {link.com for link in mech.links.values()}
     names += [n for n in plans.trajectories if n not in joints and n not in coms and n not in mech.frame]

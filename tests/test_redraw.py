@@ -46,7 +46,7 @@ def check_sheet_diagrams(st, k: float = 1.0) -> str:
     errs = d.position_errors()
     worst = max(float(np.max(np.abs(e))) for e in errs.values())
     assert rd.off_after == pytest.approx(worst, abs=1e-9)
-    assert ("miss the 5 % the lab allows" in notes) == (worst > 5.0), (worst, notes)
+    assert ("exceed the 5 % the lab allows" in notes) == (worst > 5.0), (worst, notes)
     if rd.changed and not rd.wrong_before:
         # redrawn for its errors at the positions alone: no flatter than READABLE_MM (20 mm: the ruler's
         # 0.5 mm is then 2.5 % of the peak, half the lab's 5 %) or, where the first drawing was lower,

@@ -603,7 +603,12 @@ def _numbered(plans: Plans) -> list[tuple[str, bool]]:
     frame = plans.scheme.mech.frame
     blocks = [d.block_parts[2].point for d in plans.study.structure.dyads if d.kind == "RPR"]
     inner += [n for n in blocks if n not in frame]
-    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner + coupler_points(plans))
+    # every other moving joint too: a group's outer joint on a moving link is constructed at each
+    # position as the inner ones are (stop 52: the coulisse's end D, whose arc the rod DE starts
+    # from, carried twelve bare dots; LINK51's B, FORCE_COUPLER51's coupler point E likewise)
+    joints = [j for link in plans.scheme.mech.links.values() for j in link.joints if j not in frame]
+    return [(crank.pin, False)] + [(n, True) for n in dict.fromkeys([output_point(plans)] + inner + joints
+                                                                    + coupler_points(plans))
                                    if n != crank.pin]
 
 
@@ -653,7 +658,9 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
             if group is None:                     # skipped, or numbered with an earlier position
                 continue
             X = path[k]
-            mine = [q[k] for _, _, q in rows]
+            # the group's own positions' points are no rivals of its number: "5, 7" at D₅ is
+            # D₇'s too (stop 52: D₇'s dot 1.1 mm off barred half the leaders, and the number was lost)
+            mine = [q[j] for _, _, q in rows for j in group]
             others = [q[j] for _, _, q in rows for j in range(len(q)) if j not in group]
             rivals = tuple(z for z in others + [d for d in dots if abs(d - X) > SAME_DOT]
                            if abs(z - X) < RIVALS_WITHIN and min(abs(z - m) for m in mine) > 1e-6)

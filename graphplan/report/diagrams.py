@@ -176,11 +176,12 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
         names = ", ".join(_short(t, uk) for t in within)
         tail = f"; у межах 5 % дає: {names}" if uk else f"; within 5 % with: {names}"
     elif trials or (d.redrawn is not None and d.redrawn.off_after is not None):
-        tail = "; жодна інша випробувана побудова не дає 5 %" if uk else "; no other construction tried reaches 5 %"
+        tail = ("; жодна інша випробувана побудова не вкладається в 5 %" if uk
+                else "; no other construction tried keeps within 5 %")
     else:
         tail = ""
-    return ((f"Значення з діаграм виходять за 5 % лабораторної{ref}: " if uk else
-             f"Values read off the diagrams miss the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
+    return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
+             f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
 
 
 NAMED = 2     # the worst readings a note names a diagram, and a third where the chords' own error is past 5 %
@@ -232,8 +233,8 @@ def limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
         why += (f"; лише з відліком {s0} лінійкою {p} мм (не залежить від H_{{1}}, H_{{2}} і L): {'; '.join(s_only)}"
                 if uk else f"; with the {p}-mm ruler on {s0} alone (independent of H_{{1}}, H_{{2}} and L): "
                            f"{'; '.join(s_only)}")
-    return ((f"Значення з діаграм у положеннях виходять за 5 % лабораторної{ref}: {where}" if uk else
-             f"Values read off the diagrams at the positions miss the 5 % the lab allows{ref}: {where}")
+    return ((f"Значення з діаграм у положеннях виходять за межу 5 % лабораторної роботи{ref}: {where}" if uk else
+             f"Values read off the diagrams at the positions exceed the 5 % the lab allows{ref}: {where}")
             + why + _tried(d, lang))
 
 
@@ -277,7 +278,7 @@ def _tried(d: Diagrams, lang: str) -> str:
         names = ", ".join(_short(t, uk) for t in within)
         verdict = f"у межах 5 %: {names}" if uk else f"within 5 %: {names}"
     else:
-        verdict = "жодна не дає 5 %" if uk else "none reaches 5 %"
+        verdict = "жодна не вкладається в 5 %" if uk else "none keeps within 5 %"
     return (f"; випробувано: {', '.join(items)} — {verdict}" if uk else f"; tried: {', '.join(items)} — {verdict}")
 
 

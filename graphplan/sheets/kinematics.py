@@ -27,7 +27,8 @@ from graphplan.sheets.kintables import (acceleration_table, fields, footnoted, l
                                         notes_lines, sheet_tables, title_in, velocity_columns)
 from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Plan, Natural,  # noqa: F401
                                         PlansUndrawable, SPLIT, factors, column_leaf, grid_rows, legible, one_sheet, room,
-                                        place_tables, room_fits, set_of_sheets, set_rows, size_of, split_leaves, taller_in_place,
+                                        place_tables, room_fits, set_of_sheets, set_rows, set_tail, size_of, split_leaves,
+                                        taller_in_place,
                                         tree)
 from graphplan.util.errors import GraphplanError
 from graphplan.util.words import fixed, num, word
@@ -470,7 +471,8 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)
-        rows = set_rows(P, D, cells(V), cells(A), tables + [Leaf("notes", record=notes_rec)], region[2] - region[0], p.after)
+        rows = set_rows(P, D, cells(V), cells(A), set_tail(tables, Leaf("notes", record=notes_rec), p.stacked),
+                        region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f), ragged=True)
         if laid is None:
             raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")

@@ -159,6 +159,7 @@ class Plan:
     notes: float = 185.0             # the notes' width, mm (the title block's, ``TITLE``, or wider: ``widened``)
     under: bool = False              # one sheet: the last table across under the columns of the others
     over: bool = False               # one sheet: the first table across over the columns of the others
+    stacked: int = 0                 # a set: the last tables this many, side by side, over the notes (``set_tail``)
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -754,8 +755,23 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
         nat.count["acceleration"] == 0 or readable(nat.families["acceleration"], mu["acceleration"]))
 
 
+STACKED = (1, 2)    # a set's last tables tried over the notes where the notes would take a sheet alone
+
+
+def set_tail(tables: list[Leaf], notes: Leaf, stacked: int = 0) -> list:
+    """A set's tables and notes in reading order (``set_rows``' tail): one after another, or the
+    last ``stacked`` tables side by side over the notes as one block — a shelf sets its items in
+    lines each as high as its tallest, so the notes, 125 mm high, found no room under Tables 3 and 4
+    beside Table 2 on the eight-bar's A3 sheet 5 (stop 52) and took sheet 6 alone."""
+    from graphplan.drawing.layout import Row, Stack
+    if stacked <= 0 or stacked > len(tables):
+        return list(tables) + [notes]
+    last = tables[-stacked:]
+    return list(tables[:-stacked]) + [Stack([Row(last) if len(last) > 1 else last[0], notes])]
+
+
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
-              notes: float = TITLE, sized=None) -> list[list[Leaf]]:
+              notes: float = TITLE, sized=None, stacked: int = 0) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide). ``sized``: where given,
@@ -769,8 +785,8 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         w, h = cell_of(fam, mu[fam])
         grids[fam] = [Leaf(f"{fam} {i}", w, h) for i in range(count[fam])]
     return set_rows(Leaf("position", *cell_of("position", mu["position"])), Leaf("diagrams", *dsize), grids["velocity"],
-                    grids["acceleration"], [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
-                    + [Leaf("notes", notes, notes_of(notes))], width, after)
+                    grids["acceleration"], set_tail([Leaf(name, w, h) for name, w, h in nat.tables[factor]],
+                                                    Leaf("notes", notes, notes_of(notes)), stacked), width, after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
@@ -1084,20 +1100,24 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
 
             def _laid(mu, factor, after, dsize):
                 """The set's pages at ``mu``: (count, notes alone on the last sheet, the notes'
-                width) — the notes wider where at the title block's width they would take a sheet
-                of their own."""
+                width, the tables stacked over them) — the notes wider where at the title block's
+                width they would take a sheet of their own; where every width still leaves them
+                alone, the last tables set over them (``set_tail``)."""
                 found = None
-                for nw in wide:
-                    tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region,
-                                    keep, later)
-                    if tried is None:
-                        return None
-                    got = (*tried, nw)
-                    orphan = got[1]
-                    # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
-                    if found is None or got[0] + got[1] < found[0] + found[1]:
-                        found = got
-                    if not orphan and nw == wide[0]:
+                for stacked in (0,) + STACKED:
+                    for nw in wide:
+                        tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of),
+                                                  stacked), region, keep, later)
+                        if tried is None:     # a drawing larger than a sheet; a stacked block too large: the others
+                            return found if stacked else None
+                        got = (*tried, nw, stacked)
+                        orphan = got[1]
+                        # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
+                        if found is None or got[0] + got[1] < found[0] + found[1]:
+                            found = got
+                        if not orphan and nw == wide[0]:
+                            break
+                    if not found[1]:
                         break
                 return found
 
@@ -1124,9 +1144,9 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     if fams["position"].rel(bigger) > SET_LARGEST or pages({**mu, "position": bigger}) != count:
                         break
                     mu = {**mu, "position": bigger}
-                _, orphan, nw = laid(mu)
-                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of)), region, keep,
-                             later, own(mu))[2]      # the emptiest sheet's fill: laid out in full for the kept
+                _, orphan, nw, stacked = laid(mu)
+                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of), stacked), region,
+                             keep, later, own(mu))[2]      # the emptiest sheet's fill: laid out in full for the kept
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
                 # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
                 # right is taken where it costs a sheet at most; so does a crowded position plan
@@ -1142,7 +1162,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                        small, low, int(fill < SPARSE), -(factor == TABLES), -round(rel, 6),
                        -round(fill, 1))
                 if best is None or key < best[0]:
-                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw))
+                    best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw, stacked=stacked))
     if best is None:
         raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
                              "choose a larger --format")
@@ -1153,7 +1173,7 @@ def _laid_again(nat: Natural, p: Plan, dsize, f: Form) -> tuple[int, int] | None
     """A set's pages at the plan's scales with diagrams of ``dsize``: (count, notes alone on the last)."""
     from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
-    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes), region,
+    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes, stacked=p.stacked), region,
                keep_out(f), later=later_keep(f), ragged=True)
     return None if out is None else (len(out), int(all(leaf.name in ("notes", "") for leaf, _ in out[-1])))
 
@@ -1190,4 +1210,4 @@ def taller(dr: Drafter, nat: Natural, p: Plan, laid) -> Plan:
                 and flat(dr, k) <= flat(dr, p.diagrams) and laid(k) == first:
             best, score = k, got
     return p if best == p.diagrams else Plan(p.mu, best, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets,
-                                             p.counts, p.after, p.notes)
+                                             p.counts, p.after, p.notes, stacked=p.stacked)

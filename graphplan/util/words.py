@@ -279,17 +279,19 @@ WORDS: dict[str, tuple[str, str]] = {
                  '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
                  'the exact value is ≈ 0'),
     "kin signs": ('Знаки s, v, a (таблиці, діаграми): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, diagrams): + along the guide {guide}'),
-    "kin signs_back": ('Знаки v, a (таблиці планів): + у напрямку напрямної {guide}; s — переміщення від крайнього '
-                       'положення 0, s, v, a (діаграми, таблиця діаграм): + від положення 0, проти напрямної',
-                       'Signs of v, a (the plans\' tables): + along the guide {guide}; s is the displacement from the '
-                       'extreme position 0, s, v, a (diagrams, the diagrams\' table): + away from position 0, against the guide'),
+    "kin signs_back": ('Знаки v, a в таблицях планів: + у напрямку напрямної {guide}. s — переміщення від крайнього '
+                       'положення 0; знаки s, v, a на діаграмах і в таблиці діаграм: + від положення 0, тобто проти '
+                       'напрямної',
+                       'Signs of v, a in the plans\' tables: + along the guide {guide}. s is the displacement from the '
+                       'extreme position 0; signs of s, v, a on the diagrams and in the diagrams\' table: + away from '
+                       'position 0, i.e. against the guide'),
     "kin signs_link": ('Знаки {sym}_{{{n}}} (кут ланки {link} від положення 0), ω_{{{n}}}, ε_{{{n}}} (таблиці, діаграми): + проти годинникової стрілки', 'Signs of {sym}_{{{n}}} (the angle of link {link} from position 0), ω_{{{n}}}, ε_{{{n}}} (tables, diagrams): + counter-clockwise'),
-    "kin signs_link_cw": ('Знаки ω_{{{n}}}, ε_{{{n}}} (таблиці планів): + проти годинникової стрілки; {sym}_{{{n}}} — '
-                          'кут повороту ланки {link} від крайнього положення 0, {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} '
-                          '(діаграми, таблиця діаграм): + за годинниковою стрілкою',
-                          'Signs of ω_{{{n}}}, ε_{{{n}}} (the plans\' tables): + counter-clockwise; {sym}_{{{n}}} is '
-                          'the turn of link {link} from the extreme position 0, {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} '
-                          '(diagrams, the diagrams\' table): + clockwise'),
+    "kin signs_link_cw": ('Знаки ω_{{{n}}}, ε_{{{n}}} в таблицях планів: + проти годинникової стрілки. {sym}_{{{n}}} — '
+                          'кут повороту ланки {link} від крайнього положення 0; знаки {sym}_{{{n}}}, ω_{{{n}}}, '
+                          'ε_{{{n}}} на діаграмах і в таблиці діаграм: + за годинниковою стрілкою',
+                          'Signs of ω_{{{n}}}, ε_{{{n}}} in the plans\' tables: + counter-clockwise. {sym}_{{{n}}} is '
+                          'the turn of link {link} from the extreme position 0; signs of {sym}_{{{n}}}, ω_{{{n}}}, '
+                          'ε_{{{n}}} on the diagrams and in the diagrams\' table: + clockwise'),
     "lever unreadable": ("  pa читається як 0 мм при цьому μ_v: важіль не дає P_зр (візьміть точнішу --precision)",
                          "  pa reads 0 mm at this μv: the lever gives no P_bal (choose a finer --precision)"),
     "sheet page written": ("{path} ({form} {size}, аркуш {k} з {m}, {blocks}: {n})",
