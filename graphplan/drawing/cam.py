@@ -1079,6 +1079,7 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
     rec.vector((0.0, lo - 3.0), (0.0, hi + 6.0), role="construction", width=AXIS_W, layer=LAYER, step="ordinate ϑ")
     labels.append(LabelRequest(complex(0.0, hi + 6.0), "ϑ, °", toward=1 + 0.3j, size=TEXT))
     labels.append(LabelRequest(complex(L + 6.0, 0.0), "φ", toward=1 - 1j, size=TEXT))
+    _graduate(rec, lo, hi, mu_theta, lang)
     for ph, (a, b) in enumerate(((0.0, rise), (rise + far, work))):
         xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
         band = cam.allowed[ph] / mu_theta
@@ -1103,6 +1104,27 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=mu_phi, mu_theta=mu_theta)
     return rec
+
+
+def theta_ticks(lo: float, hi: float, mu_theta: float) -> list[float]:
+    """The ϑ axis's graduation (degrees): the round step of ``charts.axis_step`` (1, 2 or 5 × 10ⁿ, at
+    least 8 mm apart at ``mu_theta`` °/mm) at every value within the drawn range [lo, hi] mm, 0 left
+    out (the φ axis and division 0 stand there; stop 52: the axis had no graduations at all)."""
+    from graphplan.drawing.charts import axis_step
+    tick = axis_step(mu_theta)
+    first, last = math.ceil(lo * mu_theta / tick - 1e-9), math.floor(hi * mu_theta / tick + 1e-9)
+    return [round(i * tick, 9) for i in range(first, last + 1) if i != 0]
+
+
+def _graduate(rec: Record, lo: float, hi: float, mu_theta: float, lang: str) -> None:
+    """Ticks 1.5 mm left of the ϑ axis at ``theta_ticks`` with their values (2.5 mm, right-aligned
+    1 mm off the tick's end, the minus a true minus)."""
+    from graphplan.util.words import num
+    for v in theta_ticks(lo, hi, mu_theta):
+        y = v / mu_theta
+        rec.segment((-1.5, y), (0.0, y), role="construction", width=AXIS_W, layer=LAYER, step="ϑ graduation")
+        rec.label((-2.5, y - 1.2), num(v, lang).replace("-", "−"), size=NUMBER, anchor="end", layer=LAYER,
+                  step="ϑ graduation")
 
 
 def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:
