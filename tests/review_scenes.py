@@ -4386,3 +4386,29 @@ synchronous_rpm = 1000
 '''
 
 SIX_LEVER51 = SLIDER_ROCKER51     # the same six-bar (frc51c's lever tests name it so)
+
+
+CAM52 = '''# Stop 52 (the lead's check): a translating roller follower with the offset chosen by the program ("auto"),
+# the cam clockwise, a cycloidal rise of 150°, a far dwell of 40°, a trapezoidal return of 100°, 8 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 52)"
+title_en = "Cam with a translating roller follower (check 52)"
+designation = "ТММ.КМ.52.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = "auto"
+roller_radius = 0.009
+phases_deg = { rise = 150, dwell_far = 40, return = 100, dwell_near = 70 }
+laws = { rise = "cycloidal", return = "trapezoidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 200
+direction = "cw"
+divisions = 8
+'''
