@@ -152,3 +152,31 @@ def test_the_pressure_axis_is_graduated_and_reads_the_largest_angles(cam52):
         assert read == pytest.approx(want, abs=0.1)
     labels = [t for t in texts if re.fullmatch(r"−?\d+", t.text)]
     assert len(labels) == len(texts)            # whole degrees, a true minus
+
+
+def test_a_roller_circle_at_every_division_touches_the_working_profile(cam52):
+    """The working profile as the envelope of roller circles (REFERENCE §11): a circle of the roller's
+    radius about every division's centre-profile point (it was drawn at every second one), each
+    tangent to the drawn working profile — its nearest point at r from the centre, to the ruler's
+    0.5 mm the construction's points are laid off with."""
+    from graphplan.drawing.cam import profile_drawing
+    sol, g = cam52
+    rec = profile_drawing(sol, g, "uk")
+    r = sol.cam.roller / g.mu_l
+    pts = {int(q.step.split()[2]): complex(*q.points[0]) for q in rec.items
+           if q.step and q.step.startswith("profile point ")}
+    rollers = {int(q.step.split()[1]): q for q in rec.items if q.step and q.step.startswith("roller ")}
+    assert set(rollers) == set(pts) == set(range(len(g.phi)))
+    W = np.array([complex(*p) for p in next(q for q in rec.items if q.step == "working profile").points])
+    for k, q in rollers.items():
+        assert q.kind == "circle" and q.radius == pytest.approx(r)
+        assert complex(*q.points[0]) == pytest.approx(pts[k], abs=1e-9)
+        # the point is the construction's (s laid off as read, to the ruler's 0.5 mm), the profile exact
+        assert _nearest(W, pts[k]) == pytest.approx(r, abs=0.5)
+
+
+def _nearest(W: np.ndarray, z: complex) -> float:
+    """The distance from z to the polyline W (its segments, not only its vertices)."""
+    a, b = W[:-1], W[1:]
+    t = np.clip(((z - a) * np.conj(b - a)).real / np.maximum(np.abs(b - a) ** 2, 1e-30), 0.0, 1.0)
+    return float(np.min(np.abs(a + t * (b - a) - z)))

@@ -779,8 +779,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         rec.segment(_pt(feet[k]), _pt(rays[k] if not cam.rocking else q), role="construction", layer=LAYER,
                     step=f"ray {k}")
         rec.point(_pt(q), role="construction", layer=LAYER, step=f"profile point {k}")
-        if cam.roller > 0 and k % 2 == 0:
-            rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
+        if cam.roller > 0:     # the roller at every division: the working profile their envelope (stop 52:
+            # at every second one the envelope was drawn past circles never constructed)
+            rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER, step=f"roller {k}")
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
     _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5, lang=lang)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
