@@ -180,3 +180,28 @@ def _nearest(W: np.ndarray, z: complex) -> float:
     a, b = W[:-1], W[1:]
     t = np.clip(((z - a) * np.conj(b - a)).real / np.maximum(np.abs(b - a) ** 2, 1e-30), 0.0, 1.0)
     return float(np.min(np.abs(a + t * (b - a) - z)))
+
+
+def test_the_short_offset_is_dimensioned_from_outside(cam52):
+    """e = 1.8 mm at 1:1 (its letter by a 1.8 mm line among the rays at O was unreadable): the
+    dimension's two arrows end on O's extension line and on the follower's axis, at one level, each
+    coming from outside the span, and e is lettered once, clear of the span."""
+    from graphplan.drawing.cam import profile_drawing
+    sol, g = cam52
+    rec = profile_drawing(sol, g, "uk")
+    (axis,) = [q for q in rec.items if q.step == "follower axis"]
+    x_axis = axis.points[0][0]
+    arrows = [q for q in rec.items if q.kind == "vector" and q.step == "offset e dimension"]
+    assert len(arrows) == 2
+    tips = sorted((q.points[1][0], q.points[0][0], q.points[1][1]) for q in arrows)
+    lo, hi = sorted((0.0, x_axis))
+    assert tips[0][0] == pytest.approx(lo) and tips[1][0] == pytest.approx(hi)
+    assert tips[0][1] < lo and tips[1][1] > hi                       # from outside, pointing in
+    assert tips[0][2] == pytest.approx(tips[1][2])
+    assert min(p[1] for p in axis.points) <= tips[0][2] <= max(p[1] for p in axis.points)
+    (ext,) = [q for q in rec.items if q.step == "offset e extension"]
+    assert {p[0] for p in ext.points} == {0.0}
+    assert min(p[1] for p in ext.points) <= tips[0][2] <= max(p[1] for p in ext.points)
+    (e,) = [q for q in rec.items if q.kind == "text" and q.text == "e"]
+    x0, _, x1, _ = e.ink()
+    assert x0 >= hi or x1 <= lo

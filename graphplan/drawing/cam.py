@@ -943,11 +943,36 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
             z = guide + x + 1j * t
             rec.segment(_pt(z), _pt(z + side * 1.8 + 1.8j), role="hatch", layer=LAYER)
     x_axis = C0.real
-    if abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
+    foot = -3.0
+    if SMALL_OFFSET > abs(x_axis) > 0.5:      # too short to letter between: dimensioned from outside
+        foot = _small_offset(rec, x_axis, labels)
+    elif abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
         rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
-    rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
+    rec.segment((x_axis, foot), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
     _stroke(rec, cam, C0, r, h, labels)
+
+
+SMALL_OFFSET = 6.0    # mm drawn: an offset shorter than this is dimensioned with its arrows outside
+DIM_BELOW = -9.0      # mm: that dimension line this far under O — over it, by the follower's axis, where
+                      # the fewest rays pass (under O the return's rays fan out: its letter went 6 mm off)
+
+
+def _small_offset(rec: Record, x_axis: float, labels: list[LabelRequest]) -> float:
+    """A short offset e (under SMALL_OFFSET drawn — stop 52: e = 1.8 mm at 1:1, its letter by a 1.8 mm
+    line among the rays at O, unreadable) dimensioned as GOST 2.307 gives a small size: an extension
+    line from O and the follower's axis, the dimension line between them at −DIM_BELOW (over O) with
+    the arrows outside, pointing in, and e lettered past the axis' arrow. Returns the axis' foot."""
+    y = -DIM_BELOW
+    sgn = 1.0 if x_axis > 0 else -1.0
+    rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
+    rec.segment((0.0, 0.0), (0.0, y + math.copysign(2.0, y)), role="construction", layer=LAYER,
+                step="offset e extension")
+    rec.segment((0.0, y), (x_axis, y), role="construction", layer=LAYER, step="offset e dimension")
+    rec.vector((-sgn * 5.0, y), (0.0, y), role="construction", layer=LAYER, step="offset e dimension")
+    rec.vector((x_axis + sgn * 5.0, y), (x_axis, y), role="construction", layer=LAYER, step="offset e dimension")
+    labels.append(LabelRequest(complex(x_axis + sgn * 5.0, y), "e", toward=sgn, size=TEXT, step="offset e"))
+    return min(-3.0, y - 2.0)
 
 
 SWING_ARC = 0.55      # of the arm: the radius of ψ_max's dimension arc about O_1
