@@ -4412,3 +4412,29 @@ rpm = 200
 direction = "cw"
 divisions = 8
 '''
+
+
+OWN_CAM52 = '''# Stop 52 (cam52's own look): a translating roller follower, offset "auto", the cam counter-clockwise, a
+# short steep COSINE rise of 80°, a far dwell of 20°, a long PARABOLIC return of 160°, 6 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (власна перевірка 52)"
+title_en = "Cam with a translating roller follower (own check 52)"
+designation = "ТММ.КМ.52.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.025
+offset = "auto"
+roller_radius = 0.007
+phases_deg = { rise = 80, dwell_far = 20, return = 160, dwell_near = 100 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 30, return = 30 }
+rpm = 300
+direction = "ccw"
+divisions = 6
+'''

@@ -205,3 +205,31 @@ def test_the_short_offset_is_dimensioned_from_outside(cam52):
     (e,) = [q for q in rec.items if q.kind == "text" and q.text == "e"]
     x0, _, x1, _ = e.ink()
     assert x0 >= hi or x1 <= lo
+
+
+def test_own_cam52_counter_clockwise_auto_offset_lowers_the_steep_rise(tmp_path):
+    """OWN_CAM52 (cam ccw, a steep cosine rise of 80°, a parabolic return of 160°, [ϑ] = 30° both): the
+    closed forms' scan of e puts the optimum on the side that lowers the rise (e > 0), the program's e
+    is it to 0.1 mm, and the note says the axis is right of O (x = σe, σ = +1), lowering the rise's
+    angle and raising the return's."""
+    from review_scenes import OWN_CAM52
+
+    from graphplan.report.cam import cam_json, cam_lines
+    path = tmp_path / "own52.toml"
+    path.write_text(OWN_CAM52, encoding="utf-8")
+    sol = solve(load(path))
+    h, rise, ret, tg = 25.0, math.radians(80.0), math.radians(160.0), math.tan(math.radians(30.0))
+    u = np.linspace(0.0, 1.0, 4001)
+    s1, v1 = h * (1 - np.cos(np.pi * u)) / 2, h * np.pi / (2 * rise) * np.sin(np.pi * u)
+    s2 = h * (1 - np.where(u < 0.5, 2 * u * u, 1 - 2 * (1 - u) ** 2))
+    v2 = -h / ret * np.where(u < 0.5, 4 * u, 4 * (1 - u))
+
+    def smallest(e: float) -> float:
+        return math.hypot(e, max(np.max(np.abs(v1 - e) / tg - s1), np.max(np.abs(v2 - e) / tg - s2)))
+    es = np.linspace(-10.0, 10.0, 4001)
+    e_best = float(es[np.argmin([smallest(e) for e in es])])
+    assert e_best > 0 and sol.geometry.e * 1000 == pytest.approx(e_best, abs=0.05 + 0.005)
+    assert sol.R0_min * 1000 == pytest.approx(smallest(sol.geometry.e * 1000), abs=0.01)
+    g = construct(sol, measure=False)
+    (line,) = [x for x in cam_lines(cam_json(sol, g, "x"), "uk") if x.startswith("Ексцентриситет")]
+    assert "праворуч від O: зменшує кут тиску на підйомі й збільшує — на опусканні" in line
