@@ -4676,3 +4676,55 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+CAM52 = '''# Stop 52 (the lead's check): a translating roller follower with the offset chosen by the program ("auto"),
+# the cam clockwise, a cycloidal rise of 150°, a far dwell of 40°, a trapezoidal return of 100°, 8 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 52)"
+title_en = "Cam with a translating roller follower (check 52)"
+designation = "ТММ.КМ.52.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = "auto"
+roller_radius = 0.009
+phases_deg = { rise = 150, dwell_far = 40, return = 100, dwell_near = 70 }
+laws = { rise = "cycloidal", return = "trapezoidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 200
+direction = "cw"
+divisions = 8
+'''
+
+
+OWN_CAM52 = '''# Stop 52 (cam52's own look): a translating roller follower, offset "auto", the cam counter-clockwise, a
+# short steep COSINE rise of 80°, a far dwell of 20°, a long PARABOLIC return of 160°, 6 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (власна перевірка 52)"
+title_en = "Cam with a translating roller follower (own check 52)"
+designation = "ТММ.КМ.52.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.025
+offset = "auto"
+roller_radius = 0.007
+phases_deg = { rise = 80, dwell_far = 20, return = 160, dwell_near = 100 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 30, return = 30 }
+rpm = 300
+direction = "ccw"
+divisions = 6
+'''

@@ -43,7 +43,8 @@ CASES = [("translating", 0.008, "ccw", 0.0, 120.0), ("translating", 0.0, "cw", 6
 
 
 def _numbers(rec):
-    return [q for q in rec.items if q.kind == "text" and NUMBER.match(q.text)]
+    """The division numbers (the ϑ axis's graduation values are numbers too, not divisions)."""
+    return [q for q in rec.items if q.kind == "text" and NUMBER.match(q.text) and q.step != "ϑ graduation"]
 
 
 def _divisions(texts) -> set[int]:

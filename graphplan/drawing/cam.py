@@ -779,8 +779,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
         rec.segment(_pt(feet[k]), _pt(rays[k] if not cam.rocking else q), role="construction", layer=LAYER,
                     step=f"ray {k}")
         rec.point(_pt(q), role="construction", layer=LAYER, step=f"profile point {k}")
-        if cam.roller > 0 and k % 2 == 0:
-            rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER)
+        if cam.roller > 0:     # the roller at every division: the working profile their envelope (stop 52:
+            # at every second one the envelope was drawn past circles never constructed)
+            rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER, step=f"roller {k}")
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
     _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5, lang=lang)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
@@ -942,11 +943,36 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
             z = guide + x + 1j * t
             rec.segment(_pt(z), _pt(z + side * 1.8 + 1.8j), role="hatch", layer=LAYER)
     x_axis = C0.real
-    if abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
+    foot = -3.0
+    if SMALL_OFFSET > abs(x_axis) > 0.5:      # too short to letter between: dimensioned from outside
+        foot = _small_offset(rec, x_axis, labels)
+    elif abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
         rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
-    rec.segment((x_axis, -3.0), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
+    rec.segment((x_axis, foot), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
     _stroke(rec, cam, C0, r, h, labels)
+
+
+SMALL_OFFSET = 6.0    # mm drawn: an offset shorter than this is dimensioned with its arrows outside
+DIM_BELOW = -9.0      # mm: that dimension line this far under O — over it, by the follower's axis, where
+                      # the fewest rays pass (under O the return's rays fan out: its letter went 6 mm off)
+
+
+def _small_offset(rec: Record, x_axis: float, labels: list[LabelRequest]) -> float:
+    """A short offset e (under SMALL_OFFSET drawn — stop 52: e = 1.8 mm at 1:1, its letter by a 1.8 mm
+    line among the rays at O, unreadable) dimensioned as GOST 2.307 gives a small size: an extension
+    line from O and the follower's axis, the dimension line between them at −DIM_BELOW (over O) with
+    the arrows outside, pointing in, and e lettered past the axis' arrow. Returns the axis' foot."""
+    y = -DIM_BELOW
+    sgn = 1.0 if x_axis > 0 else -1.0
+    rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
+    rec.segment((0.0, 0.0), (0.0, y + math.copysign(2.0, y)), role="construction", layer=LAYER,
+                step="offset e extension")
+    rec.segment((0.0, y), (x_axis, y), role="construction", layer=LAYER, step="offset e dimension")
+    rec.vector((-sgn * 5.0, y), (0.0, y), role="construction", layer=LAYER, step="offset e dimension")
+    rec.vector((x_axis + sgn * 5.0, y), (x_axis, y), role="construction", layer=LAYER, step="offset e dimension")
+    labels.append(LabelRequest(complex(x_axis + sgn * 5.0, y), "e", toward=sgn, size=TEXT, step="offset e"))
+    return min(-3.0, y - 2.0)
 
 
 SWING_ARC = 0.55      # of the arm: the radius of ψ_max's dimension arc about O_1
@@ -1079,6 +1105,7 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
     rec.vector((0.0, lo - 3.0), (0.0, hi + 6.0), role="construction", width=AXIS_W, layer=LAYER, step="ordinate ϑ")
     labels.append(LabelRequest(complex(0.0, hi + 6.0), "ϑ, °", toward=1 + 0.3j, size=TEXT))
     labels.append(LabelRequest(complex(L + 6.0, 0.0), "φ", toward=1 - 1j, size=TEXT))
+    _graduate(rec, lo, hi, mu_theta, lang)
     for ph, (a, b) in enumerate(((0.0, rise), (rise + far, work))):
         xa, xb = math.radians(a) / mu_phi, math.radians(b) / mu_phi
         band = cam.allowed[ph] / mu_theta
@@ -1103,6 +1130,27 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
     place_labels(rec, labels, layer=LAYER)
     rec.scales.update(mu_phi=mu_phi, mu_theta=mu_theta)
     return rec
+
+
+def theta_ticks(lo: float, hi: float, mu_theta: float) -> list[float]:
+    """The ϑ axis's graduation (degrees): the round step of ``charts.axis_step`` (1, 2 or 5 × 10ⁿ, at
+    least 8 mm apart at ``mu_theta`` °/mm) at every value within the drawn range [lo, hi] mm, 0 left
+    out (the φ axis and division 0 stand there; stop 52: the axis had no graduations at all)."""
+    from graphplan.drawing.charts import axis_step
+    tick = axis_step(mu_theta)
+    first, last = math.ceil(lo * mu_theta / tick - 1e-9), math.floor(hi * mu_theta / tick + 1e-9)
+    return [round(i * tick, 9) for i in range(first, last + 1) if i != 0]
+
+
+def _graduate(rec: Record, lo: float, hi: float, mu_theta: float, lang: str) -> None:
+    """Ticks 1.5 mm left of the ϑ axis at ``theta_ticks`` with their values (2.5 mm, right-aligned
+    1 mm off the tick's end, the minus a true minus)."""
+    from graphplan.util.words import num
+    for v in theta_ticks(lo, hi, mu_theta):
+        y = v / mu_theta
+        rec.segment((-1.5, y), (0.0, y), role="construction", width=AXIS_W, layer=LAYER, step="ϑ graduation")
+        rec.label((-2.5, y - 1.2), num(v, lang).replace("-", "−"), size=NUMBER, anchor="end", layer=LAYER,
+                  step="ϑ graduation")
 
 
 def pressure_scales(sol: Solution, width: float, height: float) -> tuple[float, float]:

@@ -86,7 +86,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         doc.update(swing_deg=math.degrees(cam.stroke), arm_m=cam.arm, centre_distance_m=cam.centre_distance,
                    arm_angle_deg=math.degrees(sol.geometry.psi0), **_dwells(sol))
     else:
-        doc.update(stroke_m=cam.stroke, offset_m=sol.geometry.e)
+        doc.update(stroke_m=cam.stroke, offset_m=sol.geometry.e, offset_auto=cam.offset is None)
     return doc
 
 
@@ -109,9 +109,11 @@ WORDS = {
                      "нормаль — пряма CO, а {c} рухається перпендикулярно до коромисла O_{{1}}C, тож "
                      "ϑ = {f} з трикутника OO_{{1}}C (a, l і R_0 = {r} мм на ближньому, "
                      "R_{{max}} = {m} мм на віддаленому)",
-           "offset_side": " (вісь штовхача на {d} мм {side} від O, {effect} кут тиску на підйомі)",
+           "offset_side": " (вісь штовхача на {d} мм {side} від O: {effect} кут тиску на підйомі й {other} — на "
+                          "опусканні{why})",
+           "offset_auto": "; e обрано так, щоб R_0 був найменшим",
            "central": " (центральний штовхач: його вісь проходить через O)",
-           "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
+           "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "other": ("збільшує", "зменшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
            "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
@@ -156,9 +158,11 @@ WORDS = {
            "dwells": "on the dwells ϑ ≠ 0 (near {t}°, far {u}°): the profile there arcs about O, their normal the "
                      "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the "
                      "triangle OO_{{1}}C (a, l and R_0 = {r} mm on the near dwell, R_{{max}} = {m} mm on the far one)",
-           "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle)",
+           "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle and "
+                          "{other} the return's{why})",
+           "offset_auto": "; e chosen for the smallest R_0",
            "central": " (a central follower: its axis passes through O)",
-           "side": ("right", "left"), "effect": ("lowering", "raising"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
+           "side": ("right", "left"), "effect": ("lowering", "raising"), "other": ("raising", "lowering"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
@@ -398,14 +402,18 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
 def offset_line(w: dict, doc: dict, n) -> str:
     """The offset e with its side as drawn: the follower's axis stands at x = σe from O (σ = +1 for a
     cam turning counter-clockwise; exact.cam) — right of O for σe > 0 — and e > 0 lowers the rise's
-    pressure angle, tg ϑ = (ds/dφ − e)/(s0 + s) (stop 46: «e = −6 мм» said neither)."""
+    pressure angle, tg ϑ = (ds/dφ − e)/(s0 + s) (stop 46: «e = −6 мм» said neither) and, ds/dφ < 0 there,
+    raises the return's — both said (stop 52: «e = −1,8 мм …, збільшує кут тиску на підйомі» alone read as
+    a wrong choice where the return's bound decides); an offset the program chose ("auto") says why."""
     e = doc["offset_m"] * 1000
     text = w["offset"].format(e=n(e))
     if abs(e) < 1e-9:          # e = 0 said to be the central follower (stop 50: «e = 0 мм» alone)
         return text + w["central"]
     x = e * (1 if doc["sense"] == "ccw" else -1)
+    which = 0 if e > 0 else 1
     return text + w["offset_side"].format(d=n(abs(e)), side=w["side"][0 if x > 0 else 1],
-                                          effect=w["effect"][0 if e > 0 else 1])
+                                          effect=w["effect"][which], other=w["other"][which],
+                                          why=w["offset_auto"] if doc.get("offset_auto") else "")
 
 
 def closing_line(w: dict, q: str, rise: float, ret: float, n) -> str:

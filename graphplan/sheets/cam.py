@@ -897,12 +897,17 @@ def pressure_leaf(sol, g, lang: str, w: float, h: float, same: bool = True) -> L
 SET_PRESSURE = (240.0, 130.0)     # mm: the pressure angle's diagram on a set's sheet of the table
 
 
+PRESSURE_SHARE = 0.6      # of the field's height: the tallest ϑ(φ) tried on a set's sheet of the table
+
+
 def _pressure_cap(region) -> float:
-    """The tallest ϑ(φ) a set's sheet of the table is tried with: half the field's height, at least
-    SET_PRESSURE's 130 mm (stop 48: capped at 130 mm on A2, ϑ(φ) took 1 °/mm, 100 mm over ±40°,
+    """The tallest ϑ(φ) a set's sheet of the table is tried with: PRESSURE_SHARE of the field's height,
+    at least SET_PRESSURE's 130 mm (stop 48: capped at 130 mm on A2, ϑ(φ) took 1 °/mm, 100 mm over ±40°,
     and the sheet of the table stood half blank — at 0.5 °/mm it is 195 mm, beside the table in
-    8 mm rows)."""
-    return max(SET_PRESSURE[1], (region[3] - region[1]) / 2)
+    8 mm rows; stop 52: at half the A2 field, 205 mm, CAM51's ϑ(φ) over ±45° missed 0.5 °/mm — 210 mm
+    with its letters and caption — by 5 mm and took 1 °/mm, its sheet 30 % blank). The flow still
+    refuses a ϑ(φ) that would take a sheet more."""
+    return max(SET_PRESSURE[1], (region[3] - region[1]) * PRESSURE_SHARE)
 
 
 def set_with_pressure(laid, leaves, tab: Leaf, nts: Leaf, sol, g, lang: str, region, keep, later=None,
