@@ -105,6 +105,10 @@ class Skyline:
                 continue
             x = max(0.0, x)
             d = max(self.depth(x, w), self.top)
+            if not self.after(x, d, follows):
+                # lowered to read after ``follows`` (LINK52's group II(4-5) had a place under the
+                # scheme 6 mm too high for that, and went right of it over a 200 × 400 mm blank)
+                d = max(d, follows.d + follows.h + self.gap)
             if d + h > self.floor(x, w) + 1e-9 or not self.ordered(x, d) or not self.after(x, d, follows):
                 continue
             found[(round(d, 6), -x if right else x)] = (x, d)
