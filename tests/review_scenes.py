@@ -4531,7 +4531,8 @@ name = "AB"
 number = 2
 joints = ["A", "B"]
 length = 0.26
-points = { S2 = [0.5, 0.0], C = [0.45, -0.12] }
+points = { S2 = [0.133, -0.03] }
+shape = { C = [0.14, -0.09] }
 mass = 4
 inertia = 0.03
 
