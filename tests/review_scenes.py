@@ -4728,3 +4728,95 @@ rpm = 300
 direction = "ccw"
 divisions = 6
 '''
+
+
+OWN_INCLINED52 = '''# Stop 52 (frc52's own check): a crank-slider on a guide inclined at 60° whose connecting rod's point C
+# (off the line AB) drives a rocker O2D through the rod CD — a rocker's shaft loaded by a resistance
+# MOMENT on its working swing: I(0-1) -> II(2-3) ВВП (inclined guide) -> II(4-5) ВВВ from a coupler point.
+title = "Шестиланковий механізм з похилим повзуном"
+title_en = "Six-bar mechanism with an inclined slider"
+designation = "ТММ.КМ.52.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, 0.10]
+
+[frame.guides]
+g = { through = [0, 0], angle_deg = 60 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 150
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+points = { S2 = [0.133, -0.03] }
+shape = { C = [0.14, -0.09] }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 6
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 2.5
+inertia = 0.012
+
+[[link]]
+name = "O2D"
+number = 5
+joints = ["O2", "D"]
+length = 0.16
+points = { S5 = 0.5 }
+mass = 5
+inertia = 0.04
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 150
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -827,18 +827,18 @@ def _hodographs_fitted(dr: ForceDrafter, p: Plan, items: list[Placed], region: B
         fitting = [g for g in (grid(mu_h, c) for c in range(1, len(keys) + 1)) if fits(g, W, H)]
         if not fitting:
             continue
-        # the fewest rows that fit, then the least blank
-        g = min(fitting, key=lambda g: (g.rows, -g.cols))
-        best = g
+        # the fewest rows that fit, then the rows evenly filled (``balanced``: LINK52's eight
+        # hodographs as 4 + 4, not 7 + 1 over a 480 × 120 mm hole)
+        best = min(fitting, key=lambda g: (g.rows, g.cols))
     if best is None:
         return items
     gw, gh = extent(best)
-    cx, cy = (inner[0] + inner[2]) / 2, (inner[1] + inner[3]) / 2
-    # the grid round the planned cells' centre, moved only as far as the room needs
-    bx0 = min(max(cx - gw / 2, room[0]), room[2] - gw)
+    cy = (inner[1] + inner[3]) / 2
+    # the grid round the planned cells' centre, moved only as far as the room needs; its columns
+    # spread over the room's width (``arrange`` shares a fitted grid's spare width evenly)
     by0 = min(max(cy - gh / 2, room[1]), room[3] - gh)
     new = {f"hodograph {leaf.name}": Placed(f"hodograph {leaf.name}", centred(leaf.record, b), b)
-           for leaf, b in arrange(best, (bx0, by0, bx0 + gw, by0 + gh))}
+           for leaf, b in arrange(best, (room[0], by0, max(room[2], room[0] + gw), by0 + gh))}
     return [new.get(q.name, q) for q in items]       # each where it stood in the sheet's reading order
 
 
