@@ -213,7 +213,9 @@ def quality_table(doc: dict, lang: str) -> Record:
     else:
         rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], *alike(q["sliding_max"], lang), ""])    # (one count of decimals: 1,351 / 1,420)
-    return table(rows, [50.0, 24.0, 24.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
+    # (the verdicts' column as wide as its cells: its ruled 30 mm, 42 at 3,5-mm letters, kept GEARS52's
+    # A3 Table 2 off the λ diagrams' sheet by 3 mm — 2,5-mm letters there, stop 52)
+    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -867,16 +869,18 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
     lines["data"] = data
     names = ["data"] + names
     tried = []
-    for k in (TABLES, 1.0):
-        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
-        width = max([TITLE] + [t.w for t in grown])
-        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]
+    for k in SIZES:                       # (stop 52: the set knew only 8,4-mm rows or the ruled 2,5-mm
+        grown = [Leaf(t.name, record=_sized(t.record, k)) for t in tables]      # letters — GEARS52's
+        width = max([TITLE] + [t.w for t in grown])                              # A2 and A3 tables 2,5 mm
+        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]   # beside 3,5-mm notes)
         for m in ([more] if more is not None else []) + [None]:
             d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
                  for t in drawings]
-            larger = {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables} if k != TABLES else {}
-            if lam is not None:
-                larger["sliding"] = lam
+            larger = [{t.name: Leaf(t.name, record=_sized(t.record, b)) for t in tables}
+                      for b in SIZES[:SIZES.index(k)]] or [{}]  # each sheet's tables larger where it holds them
+            for big in larger:
+                if lam is not None:
+                    big["sliding"] = lam
             tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
     tried = [t for t in tried if t is not None]
     return min(tried, key=len) if tried else None
