@@ -141,3 +141,15 @@ def test_the_a3_set_letters_its_tables_at_3_5_mm():
              for p in pl.record.items if p.kind == "text"}
     assert sizes and min(sizes) >= 3.5 - 1e-9
     assert [pl.name for pl in s.pages[0].placed] == ["meshing", "data"]
+
+
+@pytest.mark.parametrize("z, K, gcd", [((17, 55, 20, 92), 3, 5), ((21, 45, 22, 88), 2, 1)], ids=["GEARS52", "GEARS_OWN52"])
+def test_table_3_writes_the_type_b_assembly_condition_out(z, K, gcd):
+    """Table 3 printed «5400/15 = 360» (where from?); now (z1·z2′ + z2·z3)/(K·gcd(z2, z2′)) with its numbers,
+    the gcd left off where it is 1, and the quotient whole: (17·20 + 55·92)/(3·5) = 360, (21·22 + 45·88)/2 = 2211."""
+    from graphplan.sheets.gears import condition_numbers
+    z1, z2, z2b, z3 = z
+    assert math.gcd(z2, z2b) == gcd and (z1 * z2b + z2 * z3) % (K * gcd) == 0
+    den = f"({K}·{gcd})" if gcd > 1 else f"{K}"
+    got = condition_numbers({"z": list(z), "planets": K, "type": "B"}, "uk")["assembly"]
+    assert got == f"({z1}·{z2b} + {z2}·{z3})/{den} = {(z1 * z2b + z2 * z3) // (K * gcd)}"

@@ -258,7 +258,8 @@ def train_table(doc: dict, lang: str) -> Record:
 def condition_numbers(t: dict, lang: str) -> dict[str, str]:
     """The train's conditions as Table 3 shows them checked — with the numbers, as Table 2 shows the
     pair's (stop 50: «викон.» alone): coaxiality A z1 + 2·z2 = z3, B z1 + z2 = z3 − z2'; assembly A
-    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')) — whole where met —; neighbourhood
+    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')), each product written out, gcd = 1 left off — whole
+    where met —; neighbourhood
     (z1 + z2)·sin(180°/K), the sine's argument written in degrees, against the planet's tip,
     max(z2, z2') + 2 (h*a = 1)."""
     z, K = t["z"], t["planets"]
@@ -272,8 +273,9 @@ def condition_numbers(t: dict, lang: str) -> dict[str, str]:
     else:
         z1, z2, z2b, z3 = z
         coax = f"{z1} + {z2} {rel(z1 + z2, z3 - z2b)} {z3} − {z2b}"
-        num_, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
-        asm = f"{num_}/{den} = {_n(num_ / den, lang, 4)}"
+        g = math.gcd(z2, z2b)             # written out as the neighbourhood is (stop 52: «5400/15 = 360»
+        num_, den = z1 * z2b + z2 * z3, K * g     # left the reader to find where 5400 and 15 came from)
+        asm = f"({z1}·{z2b} + {z2}·{z3})/{f'({K}·{g})' if g > 1 else K} = {_n(num_ / den, lang, 4)}"
         tip = max(z2, z2b) + 2
     out = {"coaxial": coax, "assembly": asm}
     if K > 1:
