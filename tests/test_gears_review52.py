@@ -153,3 +153,27 @@ def test_table_3_writes_the_type_b_assembly_condition_out(z, K, gcd):
     den = f"({K}·{gcd})" if gcd > 1 else f"{K}"
     got = condition_numbers({"z": list(z), "planets": K, "type": "B"}, "uk")["assembly"]
     assert got == f"({z1}·{z2b} + {z2}·{z3})/{den} = {(z1 * z2b + z2 * z3) // (K * gcd)}"
+
+
+def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
+    """GEARS51's A1 (stop 51's leftover, «the strip beside the meshing, 2 × 88 mm»): the meshing at 2,5:1 is
+    434 mm wide with its caption, the λ diagrams at its scale 205 mm (N1N2 = aw·sin αw = 74,8 mm of the part,
+    187 mm drawn) — 6 mm too wide for the 615-mm drawings' zone, so the meshing stood centred between two
+    88-mm blank strips. At the next GOST 2.302 scale, 2:1, N1N2 is 150 mm drawn and they stand beside it."""
+    from review_scenes import GEARS51
+    from graphplan.drawing.layout import GAP
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import TITLE, beside, construct_on, meshing_leaf, sliding_diagram, sliding_leaf
+    _, sol = _solved(GEARS51, "GEARS51")
+    f = form("A1")
+    mesh, _, _ = construct_on(sol, f, 0.5, "uk")
+    region = field_of(f)
+    zone = region[2] - region[0] - max(TITLE, 150.0) - GAP
+    w = lambda r: r.bounds()[2] - r.bounds()[0]                 # noqa: E731
+    assert mesh.mu_l == pytest.approx(0.0004)                     # 2,5:1
+    own = sliding_leaf(sliding_diagram(sol.pair, mesh, 25.0, mesh.mu_l), "uk")
+    assert w(meshing_leaf(mesh, "uk")) + GAP + w(own) > zone      # at the meshing's scale: no room beside it
+    assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(region, mesh, "uk")
+    g = sol.pair.aw * math.sin(sol.pair.alpha_w)                  # N1N2 of the part, m
+    assert g / 0.0005 == pytest.approx(149.6, abs=0.1) and g / 0.0005 >= 120.0

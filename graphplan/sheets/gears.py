@@ -643,11 +643,39 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             teeth = most_teeth(sol.pair, mesh.module_mm, zone_h, zone_w)     # more teeth where the zone holds them
             if teeth != TEETH:
                 mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
+    if mesh is not None and sol.pair and f.name == "A1":
+        _beside_smaller(sol, mesh, region, lang)
     if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
         _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
+
+
+LAMBDA_BESIDE_MIN = 120.0   # mm: N1N2 drawn at least this long where the λ diagrams go beside the meshing smaller
+
+
+def _beside_smaller(sol, mesh, region, lang: str) -> None:
+    """The λ diagrams (``mesh.lam``) at the next GOST 2.302 scale below their own where that one step
+    takes them beside the meshing, N1N2 still ``LAMBDA_BESIDE_MIN`` long — the row under the meshing then
+    the planetary pictures' alone, across it. GEARS51 (stop 51/52): N1N2 at the meshing's 2,5:1 made the
+    λ diagrams 205 mm wide, 6 mm too wide to stand beside the 434-mm meshing; the meshing stood centred
+    between two 88-mm blank strips, the λ diagrams in the row beside the pictures; at 2:1 (N1N2 150 mm)
+    they are 167 mm and fill the strips. ``mesh.lam`` as it was where no such step does."""
+    from graphplan.graphic.gears import ENLARGE, REDUCE
+    if beside(region, mesh, lang):
+        return
+    now = mesh.lam.scales["mu_l"]
+    smaller = [0.001 / k for k in ENLARGE + REDUCE if 0.001 / k > now * (1 + 1e-9)]
+    if not smaller:
+        return
+    mu_x = min(smaller)                   # one step down
+    if sol.pair.g / mu_x < LAMBDA_BESIDE_MIN - 1e-9:
+        return
+    old = mesh.lam
+    mesh.lam = sliding_diagram(sol.pair, mesh, 1.0 / old.scales["mu_lambda"], mu_x)
+    if not beside(region, mesh, lang):
+        mesh.lam = old
 
 
 def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
@@ -662,7 +690,8 @@ def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
         row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
     else:
         row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
+    mu_x = mesh.lam.scales["mu_l"] if mesh.lam is not None else lambda_mu(sol.pair, mesh.mu_l)   # (its own:
+    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mu_x), mu_x)   # ``_beside_smaller``)
 
 
 def meshing_leaf(mesh, lang: str) -> Record:
