@@ -165,13 +165,17 @@ def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
     from graphplan.sheets.compose import field_of
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import TITLE, beside, construct_on, meshing_leaf, sliding_diagram, sliding_leaf
-    _, sol = _solved(GEARS51, "GEARS51")
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    scene = tomllib.loads(GEARS51)
+    del scene["planetary"]                # (the pair alone: the same 434-mm meshing, without growing the train)
+    sol = solve(build(scene, "GEARS51"))
     f = form("A1")
     mesh, _, _ = construct_on(sol, f, 0.5, "uk")
     region = field_of(f)
     zone = region[2] - region[0] - max(TITLE, 150.0) - GAP
     w = lambda r: r.bounds()[2] - r.bounds()[0]                 # noqa: E731
-    assert mesh.mu_l == pytest.approx(0.0004)                     # 2,5:1
+    assert mesh.mu_l == pytest.approx(0.0004) and w(meshing_leaf(mesh, "uk")) == pytest.approx(434.3, abs=0.5)
     own = sliding_leaf(sliding_diagram(sol.pair, mesh, 25.0, mesh.mu_l), "uk")
     assert w(meshing_leaf(mesh, "uk")) + GAP + w(own) > zone      # at the meshing's scale: no room beside it
     assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(region, mesh, "uk")
