@@ -112,18 +112,26 @@ def test_a_set_takes_the_tables_second_larger_size_where_its_sheet_holds_only_th
 
 def test_a_long_name_stays_inside_the_title_blocks_cell():
     """GEARS_OWN52's name takes five lines of 2,5-mm letters in the 70 × 25-mm cell (68 mm lettered): at the
-    6-mm pitch they ran 5 mm over its rules (6 words overprinted); the step is tightened to the cell."""
+    6-mm pitch they ran 5 mm over its rules (6 words overprinted). Now the name takes the name fields'
+    last size, 2 mm (four lines at 5,2 mm), and the step is tightened to the cell only past it: every line
+    inside the cell, the lines apart by 1,6 h + 2 mm, the English name too."""
+    from graphplan.graphic.record import line_pitch
     from graphplan.sheets.form import form, title_block, title_block_box
     f = form("A1")
-    title = tomllib.loads(GEARS_OWN52)["title"]
-    rec = title_block(f, {"title": title, "designation": "ТММ.ЗП.52.100"})
     x0, y0, _, _ = title_block_box(f)
-    words = set(title.split())
-    lines = [p for p in rec.items if p.kind == "text" and set(p.text.split()) <= words]
-    assert len(lines) == 5
-    for p in lines:
-        y = p.points[0][1]
-        assert y - 0.3 * p.size >= y0 + 15.0 - 1e-6 and y + p.size <= y0 + 40.0 + 1e-6
+    for key in ("title", "title_en"):
+        title = tomllib.loads(GEARS_OWN52)[key]
+        rec = title_block(f, {"title": title, "designation": "ТММ.ЗП.52.100"})
+        words = set(title.split())
+        lines = sorted((p for p in rec.items if p.kind == "text" and p.text and set(p.text.split()) <= words),
+                       key=lambda p: -p.points[0][1])
+        assert " ".join(p.text for p in lines).split() == title.split()      # the whole name, in order
+        for p in lines:
+            y = p.points[0][1]
+            assert y - 0.3 * p.size >= y0 + 15.0 - 1e-6 and y + p.size <= y0 + 40.0 + 1e-6
+            assert p.size >= 2.0
+        for a, b in zip(lines, lines[1:]):
+            assert a.points[0][1] - b.points[0][1] >= line_pitch(a.size) - 1e-6
 
 
 @pytest.mark.slow

@@ -172,7 +172,8 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     _text(rec, X(176), Y(26), scale, size=_fit(scale, 17, (3.5, 2.5), 1.0))
     designation = fields.get("designation", "")
     _text(rec, X(125), Y(45.5), designation, size=_fit(designation, 116, (7.0, 5.0, 3.5)))
-    _block_text(rec, fields.get("title", ""), X(66), Y(15), 68, 25, (5.0, 3.5, 2.5))
+    _block_text(rec, fields.get("title", ""), X(66), Y(15), 68, 25, (5.0, 3.5, 2.5, 2.0))   # (2.0 as the name
+    # fields' last size: a five-line name at 2.5 mm in 5-mm steps touched without its font, stop 52)
     _block_text(rec, fields.get("organisation", ""), X(136), Y(0), 48, 15, (3.5, 2.5))
     _block_text(rec, fields.get("subtitle", ""), X(66), Y(0), 68, 15, (3.5, 2.5))
     return rec
