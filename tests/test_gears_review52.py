@@ -189,3 +189,28 @@ def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
     assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(region, mesh, "uk")
     g = sol.pair.aw * math.sin(sol.pair.alpha_w)                  # N1N2 of the part, m
     assert g / 0.0005 == pytest.approx(149.6, abs=0.1) and g / 0.0005 >= 120.0
+
+
+def test_table_2_writes_each_value_beside_its_bound_with_the_relation_that_holds():
+    """Table 2 printed «x ≥ x_min» whatever held («0 ≥ 0,2981» beside «не викон.» for an undercut pinion)
+    and sa/m alone; now each cell is value, relation, bound: GEARS52's sa/m = 2,490/6 = 0,415 ≥ 0,25 (the
+    closed form), and an unshifted 12/30 pinion 0 < 1 − 12·sin²20°/2 = 0,2981, its contact past N1."""
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.gears import quality_table
+
+    def cells(z, shifts):
+        scene = tomllib.loads(GEARS52)
+        del scene["planetary"]
+        scene["gears"].update(z=list(z), shifts=list(shifts))
+        rec = quality_table(gears_json(solve(build(scene, "q52")), None, None, ""), "uk")
+        return [p.text for p in rec.items if p.kind == "text"]
+
+    c = pair_closed(11, 23, 0.006, 0.5, 0.3)
+    got = cells((11, 23), (0.5, 0.3))
+    assert f"{c['sa'][0] / 0.006:.3f} ≥ 0,25".replace(".", ",") in got and "0,5 ≥ 0,3566" in got
+    x_min = 1 - 12 * math.sin(math.radians(20)) ** 2 / 2
+    got = cells((12, 30), (0.0, 0.0))
+    assert f"0 < {x_min:.4f}".replace(".", ",") in got and "не викон. / викон." in got
+    assert f"0 ≥ {x_min:.4f}".replace(".", ",") not in got and "0 ≥ −0,7547" in got   # (wheel 2's holds)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
-from graphplan.exact.gears import solve
+from graphplan.exact.gears import POINTED, solve
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (H_CARRIER, MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
                                      lambda_mu, most_teeth, pole_distances, sliding_diagram)
@@ -190,17 +190,21 @@ def quality_table(doc: dict, lang: str) -> Record:
     m = p["module_m"]
     yes = lambda b: w["ok"] if b else w["fail"]                           # noqa: E731
     rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]      # (the verdicts, wheel 1 / wheel 2: stop 49 headed them «межа»)
-    rows.append([w["under"], f"{_n(p['x'][0], lang)} ≥ {_n(q['x_min'][0], lang)}",
-                 f"{_n(p['x'][1], lang)} ≥ {_n(q['x_min'][1], lang)}",
+    # each cell its value beside its bound with the relation that holds — «≥» where met, «<» where not (a
+    # failed condition printed «0,1 ≥ 0,3566» beside «не викон.»); sa/m beside 0,25 too (stop 52: alone)
+    ge = lambda ok: "≥" if ok else "<"                                   # noqa: E731
+    rows.append([w["under"], *(f"{_n(p['x'][k], lang)} {ge(not q['undercut'][k])} {_n(q['x_min'][k], lang)}"
+                               for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["undercut"])])
-    rows.append([w["point"], _n(p["sa_m"][0] / m, lang), _n(p["sa_m"][1] / m, lang),
+    rows.append([w["point"], *(f"{_n(p['sa_m'][k] / m, lang)} {ge(not q['pointed'][k])} {_n(POINTED, lang)}"
+                               for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["pointed"])])
     rho = [p["rho_m"]["B1"], p["line_of_action_m"] - p["rho_m"]["B2"]]
     lim = [max(v, 0.0) for v in q["involute_start_rho_m"]]
     # (millimetres to Table 1's decimals, both sides alike: «13,94 ≥ 9,80», not «13,94 ≥ 9,797» — stop 51)
     dec = table_decimals(p["graphical"]) if p.get("graphical") else 2
     mm = lambda v: fixed(v * 1000, lang, dec).replace("-", "−")           # noqa: E731
-    rows.append([w["interf"], f"{mm(rho[0])} ≥ {mm(lim[0])}", f"{mm(rho[1])} ≥ {mm(lim[1])}",
+    rows.append([w["interf"], *(f"{mm(rho[k])} {ge(not q['interference'][k])} {mm(lim[k])}" for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["interference"])])
     # εα judged by the formula, as the pair is designed, and apart from it on the value read off the
     # drawing against its bound (review 12, mark 12: 1,2033 by the formula «met» beside 1,196 read)
