@@ -4820,3 +4820,56 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+GEARS52 = '''# Stop 52 (the lead's check): an external pair 11/23 (few teeth: the shifts needed against undercut)
+# with a module of 6 mm, x1 = 0.5, x2 = 0.3 given; a two-row planetary train of type B for u = 16, K = 3.
+title = "Зубчаста передача 11/23 і дворядний планетарний редуктор (перевірка 52)"
+title_en = "A gear pair 11/23 and a two-row planetary reducer (check 52)"
+designation = "ТММ.ЗП.52.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[gears]
+z = [11, 23]
+module = 0.006
+shifts = [0.5, 0.3]
+
+[planetary]
+type = "B"
+ratio = 16
+planets = 3
+module = 0.0025
+rpm = 960
+'''
+
+
+GEARS_OWN52 = '''# Stop 52's own check (gear52): a pair 15/37 with a module of 4 mm, a positive shift on the pinion and a
+# negative one on the wheel (x1 = 0.45, x2 = -0.25: x1 + x2 = 0.2), and a two-row planetary train of type B
+# with its teeth given (21, 45, 22, 88: u1H = 9.571) and two planets, the sun at 1450 rpm.
+title = "Зубчаста передача 15/37 з від'ємним зміщенням колеса і дворядний планетарний редуктор із заданими числами зубців (власна перевірка 52)"
+title_en = "A gear pair 15/37 with a negative shift of the wheel and a two-row planetary reducer with given teeth (own check 52)"
+designation = "ТММ.ЗП.52.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[gears]
+z = [15, 37]
+module = 0.004
+shifts = [0.45, -0.25]
+
+[planetary]
+type = "B"
+z = [21, 45, 22, 88]
+planets = 2
+module = 0.002
+rpm = 1450
+'''

@@ -78,6 +78,10 @@ def _plan_and_table(sheet):
     mu = [re.search(r"= ([\d,.]+) \(", p.text) for p in items if p.text.startswith("μ_ω = μ_v/(μ_l·h) =")]
     assert len(mu) == 1 and mu[0]
     rows = {}
+    # Table 3's rows on its own sheet (stop 52: a set's sheets share coordinates, and another sheet's
+    # lettering at a row's height was read as its cell once the tables moved)
+    items = [p for page in sheet.pages if any(q.name == "train" for q in page.placed)
+             for p in page.record.items if p.kind == "text"]
     for p in items:
         m = re.fullmatch(r"ω_(\w)(?: \((?:задано|given)\))?, (рад/с|rad/s)", p.text)
         if m:

@@ -213,6 +213,8 @@ def test_table_3_shows_the_trains_conditions_with_their_numbers(sheet50):
     num, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
     near = (z1 + z2) * math.sin(math.pi / K)
     assert f"{z1} + {z2} = {z3} − {z2b}: викон." in words
-    assert f"{num}/{den} = {num // den}: викон." in words and num % den == 0
+    g = math.gcd(z2, z2b)                 # (stop 52: the products and K·gcd written out)
+    asm = f"({z1}·{z2b} + {z2}·{z3})/" + (f"({K}·{g})" if g > 1 else f"{K}")
+    assert f"{asm} = {num // den}: викон." in words and num % den == 0
     # (stop 51: the neighbourhood's formula written out, (z1 + z2)·sin(180°/K) = … > …)
     assert f"({z1} + {z2})·sin 60° = " + f"{near:.2f}".replace(".", ",") + f" > {max(z2, z2b) + 2}: викон." in words

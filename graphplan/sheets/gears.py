@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
-from graphplan.exact.gears import solve
+from graphplan.exact.gears import POINTED, solve
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (H_CARRIER, MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
                                      lambda_mu, most_teeth, pole_distances, sliding_diagram)
@@ -190,17 +190,21 @@ def quality_table(doc: dict, lang: str) -> Record:
     m = p["module_m"]
     yes = lambda b: w["ok"] if b else w["fail"]                           # noqa: E731
     rows = [[w["cond"], w["w1"], w["w2"], w["bound"]]]      # (the verdicts, wheel 1 / wheel 2: stop 49 headed them «межа»)
-    rows.append([w["under"], f"{_n(p['x'][0], lang)} ≥ {_n(q['x_min'][0], lang)}",
-                 f"{_n(p['x'][1], lang)} ≥ {_n(q['x_min'][1], lang)}",
+    # each cell its value beside its bound with the relation that holds — «≥» where met, «<» where not (a
+    # failed condition printed «0,1 ≥ 0,3566» beside «не викон.»); sa/m beside 0,25 too (stop 52: alone)
+    ge = lambda ok: "≥" if ok else "<"                                   # noqa: E731
+    rows.append([w["under"], *(f"{_n(p['x'][k], lang)} {ge(not q['undercut'][k])} {_n(q['x_min'][k], lang)}"
+                               for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["undercut"])])
-    rows.append([w["point"], _n(p["sa_m"][0] / m, lang), _n(p["sa_m"][1] / m, lang),
+    rows.append([w["point"], *(f"{_n(p['sa_m'][k] / m, lang)} {ge(not q['pointed'][k])} {_n(POINTED, lang)}"
+                               for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["pointed"])])
     rho = [p["rho_m"]["B1"], p["line_of_action_m"] - p["rho_m"]["B2"]]
     lim = [max(v, 0.0) for v in q["involute_start_rho_m"]]
     # (millimetres to Table 1's decimals, both sides alike: «13,94 ≥ 9,80», not «13,94 ≥ 9,797» — stop 51)
     dec = table_decimals(p["graphical"]) if p.get("graphical") else 2
     mm = lambda v: fixed(v * 1000, lang, dec).replace("-", "−")           # noqa: E731
-    rows.append([w["interf"], f"{mm(rho[0])} ≥ {mm(lim[0])}", f"{mm(rho[1])} ≥ {mm(lim[1])}",
+    rows.append([w["interf"], *(f"{mm(rho[k])} {ge(not q['interference'][k])} {mm(lim[k])}" for k in (0, 1)),
                  " / ".join(yes(not v) for v in q["interference"])])
     # εα judged by the formula, as the pair is designed, and apart from it on the value read off the
     # drawing against its bound (review 12, mark 12: 1,2033 by the formula «met» beside 1,196 read)
@@ -213,7 +217,9 @@ def quality_table(doc: dict, lang: str) -> Record:
     else:
         rows.append([w["eps"], te, "", yes(q["contact_ratio_ok"])])
     rows.append([w["lam"], *alike(q["sliding_max"], lang), ""])    # (one count of decimals: 1,351 / 1,420)
-    return table(rows, [50.0, 24.0, 24.0, 30.0], row_h=6.0, size=2.5, title=w["t2"])
+    # (the verdicts' column as wide as its cells: its ruled 30 mm, 42 at 3,5-mm letters, kept GEARS52's
+    # A3 Table 2 off the λ diagrams' sheet by 3 mm — 2,5-mm letters there, stop 52)
+    return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
 def train_table(doc: dict, lang: str) -> Record:
@@ -256,7 +262,8 @@ def train_table(doc: dict, lang: str) -> Record:
 def condition_numbers(t: dict, lang: str) -> dict[str, str]:
     """The train's conditions as Table 3 shows them checked — with the numbers, as Table 2 shows the
     pair's (stop 50: «викон.» alone): coaxiality A z1 + 2·z2 = z3, B z1 + z2 = z3 − z2'; assembly A
-    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')) — whole where met —; neighbourhood
+    (z1 + z3)/K, B (z1·z2' + z2·z3)/(K·gcd(z2, z2')), each product written out, gcd = 1 left off — whole
+    where met —; neighbourhood
     (z1 + z2)·sin(180°/K), the sine's argument written in degrees, against the planet's tip,
     max(z2, z2') + 2 (h*a = 1)."""
     z, K = t["z"], t["planets"]
@@ -270,8 +277,9 @@ def condition_numbers(t: dict, lang: str) -> dict[str, str]:
     else:
         z1, z2, z2b, z3 = z
         coax = f"{z1} + {z2} {rel(z1 + z2, z3 - z2b)} {z3} − {z2b}"
-        num_, den = z1 * z2b + z2 * z3, K * math.gcd(z2, z2b)
-        asm = f"{num_}/{den} = {_n(num_ / den, lang, 4)}"
+        g = math.gcd(z2, z2b)             # written out as the neighbourhood is (stop 52: «5400/15 = 360»
+        num_, den = z1 * z2b + z2 * z3, K * g     # left the reader to find where 5400 and 15 came from)
+        asm = f"({z1}·{z2b} + {z2}·{z3})/{f'({K}·{g})' if g > 1 else K} = {_n(num_ / den, lang, 4)}"
         tip = max(z2, z2b) + 2
     out = {"coaxial": coax, "assembly": asm}
     if K > 1:
@@ -639,11 +647,39 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             teeth = most_teeth(sol.pair, mesh.module_mm, zone_h, zone_w)     # more teeth where the zone holds them
             if teeth != TEETH:
                 mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
+    if mesh is not None and sol.pair and f.name == "A1":
+        _beside_smaller(sol, mesh, region, lang)
     if vel is not None and mesh is not None and f.name == "A1":
         vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
     if mesh is not None and sol.pair:
         _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
+
+
+LAMBDA_BESIDE_MIN = 120.0   # mm: N1N2 drawn at least this long where the λ diagrams go beside the meshing smaller
+
+
+def _beside_smaller(sol, mesh, region, lang: str) -> None:
+    """The λ diagrams (``mesh.lam``) at the next GOST 2.302 scale below their own where that one step
+    takes them beside the meshing, N1N2 still ``LAMBDA_BESIDE_MIN`` long — the row under the meshing then
+    the planetary pictures' alone, across it. GEARS51 (stop 51/52): N1N2 at the meshing's 2,5:1 made the
+    λ diagrams 205 mm wide, 6 mm too wide to stand beside the 434-mm meshing; the meshing stood centred
+    between two 88-mm blank strips, the λ diagrams in the row beside the pictures; at 2:1 (N1N2 150 mm)
+    they are 167 mm and fill the strips. ``mesh.lam`` as it was where no such step does."""
+    from graphplan.graphic.gears import ENLARGE, REDUCE
+    if beside(region, mesh, lang):
+        return
+    now = mesh.lam.scales["mu_l"]
+    smaller = [0.001 / k for k in ENLARGE + REDUCE if 0.001 / k > now * (1 + 1e-9)]
+    if not smaller:
+        return
+    mu_x = min(smaller)                   # one step down
+    if sol.pair.g / mu_x < LAMBDA_BESIDE_MIN - 1e-9:
+        return
+    old = mesh.lam
+    mesh.lam = sliding_diagram(sol.pair, mesh, 1.0 / old.scales["mu_lambda"], mu_x)
+    if not beside(region, mesh, lang):
+        mesh.lam = old
 
 
 def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
@@ -658,7 +694,8 @@ def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
         row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
     else:
         row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
-    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / lambda_mu(sol.pair, mesh.mu_l)))
+    mu_x = mesh.lam.scales["mu_l"] if mesh.lam is not None else lambda_mu(sol.pair, mesh.mu_l)   # (its own:
+    mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mu_x), mu_x)   # ``_beside_smaller``)
 
 
 def meshing_leaf(mesh, lang: str) -> Record:
@@ -867,16 +904,18 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
     lines["data"] = data
     names = ["data"] + names
     tried = []
-    for k in (TABLES, 1.0):
-        grown = [Leaf(t.name, record=enlarged(t.record, k)) for t in tables]
-        width = max([TITLE] + [t.w for t in grown])
-        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]
+    for k in SIZES:                       # (stop 52: the set knew only 8,4-mm rows or the ruled 2,5-mm
+        grown = [Leaf(t.name, record=_sized(t.record, k)) for t in tables]      # letters — GEARS52's
+        width = max([TITLE] + [t.w for t in grown])                              # A2 and A3 tables 2,5 mm
+        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]   # beside 3,5-mm notes)
         for m in ([more] if more is not None else []) + [None]:
             d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
                  for t in drawings]
-            larger = {t.name: Leaf(t.name, record=enlarged(t.record, TABLES)) for t in tables} if k != TABLES else {}
-            if lam is not None:
-                larger["sliding"] = lam
+            larger = [{t.name: Leaf(t.name, record=_sized(t.record, b)) for t in tables}
+                      for b in SIZES[:SIZES.index(k)]] or [{}]  # each sheet's tables larger where it holds them
+            for big in larger:
+                if lam is not None:
+                    big["sliding"] = lam
             tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
     tried = [t for t in tried if t is not None]
     return min(tried, key=len) if tried else None

@@ -167,23 +167,27 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
                 if cw > right - x0 + 1e-9 or spare < -1e-9:
                     continue
                 split = y1 - dh - spare / 2                # the drawings' zone over the row's
-                dright = x1 if split >= low - 1e-9 else keep[0]
-                if dw > dright - x0 + 1e-9:
-                    continue
-                take(min(spare / 2, dright - x0 - dw, right - x0 - cw),
+                if split < low - 1e-9 <= y1 - dh and low - GAP - foot >= ch - 1e-9:
+                    split = low     # the drawings risen over the title block, the row beside it under them
+                dright = x1 if split >= low - 1e-9 else keep[0]     # (stop 52: GEARS52's A3 meshing, 212 mm
+                if dw > dright - x0 + 1e-9:                         # tall, left its task data to the next
+                    continue                                        # sheet: split midway fell 3 mm below it)
+                take(min(y1 - dh - split, split - GAP - foot - ch, dright - x0 - dw, right - x0 - cw),
                      lambda d=d, c=c, a=(x0, split, dright, y1), b=(x0, foot, right, split - GAP):
                      _placed(d, a, texts) + _placed(c, b, texts))
                 break
     return best
 
 
-def set_pages(leaves: list[Leaf], f: Form, notes=None, larger: dict[str, Leaf] | None = None
-              ) -> list[list[Placed]] | None:
+def set_pages(leaves: list[Leaf], f: Form, notes=None,
+              larger: dict[str, Leaf] | list[dict[str, Leaf]] | None = None) -> list[list[Placed]] | None:
     """The set's sheets: ``leaves`` (in ``ORDER``) cut into consecutive runs, each composed by
     ``page``; the fewest sheets, then the first sheets the fullest (the reading order kept), no sheet
     with the notes alone. None when one of them does not fit a whole sheet. ``notes``: as ``page``'s.
     ``larger``: leaves drawn larger (the tables as the other sheets draw theirs, the λ diagrams with a
-    longer unit), taken on each sheet of the chosen cut that still holds them."""
+    longer unit) — or several such, the largest first (the tables' 8,4-mm rows, then 7-mm rows with
+    the same 3,5-mm letters) —, taken on each sheet of the chosen cut that still holds them: all of
+    one, else its tables, for each in turn, else the drawings alone."""
     leaves = sorted(leaves, key=lambda t: ORDER.index(t.name))
     notes = _cached(notes)
     n = len(leaves)
@@ -206,14 +210,19 @@ def set_pages(leaves: list[Leaf], f: Form, notes=None, larger: dict[str, Leaf] |
         if found:
             _, pages, bounds = min(found, key=lambda t: t[0])
             out = []
+            options = [x for x in (larger if isinstance(larger, list) else [larger]) if x]
             for (a, b), place in zip(zip(bounds, bounds[1:]), pages):
                 big = None
                 run = leaves[a:b]
-                names = [t.name for t in run if larger and t.name in larger]
-                # all larger, else the tables larger, else the drawings: the first this sheet holds
-                for some in (names, [n for n in names if n not in DRAWINGS], [n for n in names if n in DRAWINGS]):
+                tries = []                # all larger, else the tables larger (each size in turn), else the
+                for opt in options:       # drawings: the first this sheet holds
+                    names = [t.name for t in run if t.name in opt]
+                    tries += [(opt, names), (opt, [n for n in names if n not in DRAWINGS])]
+                if options:
+                    tries.append((options[0], [t.name for t in run if t.name in options[0] and t.name in DRAWINGS]))
+                for opt, some in tries:
                     if some and big is None:
-                        big = page([larger[t.name] if t.name in some else t for t in run], f, a == 0, notes)
+                        big = page([opt[t.name] if t.name in some else t for t in run], f, a == 0, notes)
                 out.append((big or place)())
             return out
     return None
