@@ -731,7 +731,8 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them), before
     # any number or letter is placed (review 12 #23: point 2's number stood where I*'s 0,02 goes, the tick
     # left bare): a tick keeps its value, the numbers and letters move
-    before = len(rec.items)
+    before = list(rec.items)      # kept whole: the graduation breaks projections under its numbers, which
+    #                               renumbers the items (a count kept dropped the last ones, |kl|'s value: stop 52)
     i_values = graduation(x_hi - 8.0, f.mu_I)
     shown = graduate_axis(rec, i_values, f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
                           step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
@@ -743,7 +744,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         # branch from point 1 to 2 ran where 0,02 goes, 0,04 and 0,06 lettered beside a bare tick): the
         # axis keeps its ticks, and the values go on a scale line parallel to it at the diagram's foot,
         # from the ΔT axis's end, as a chart's frame
-        del rec.items[before:]
+        rec.items[:] = before
         _ticks_only = Record("ticks")
         graduate_axis(_ticks_only, i_values, f.mu_I, lang, vertical=False, sides=(1.0,), step="I* axis ticks",
                       letter=False)
