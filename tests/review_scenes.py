@@ -4386,3 +4386,112 @@ synchronous_rpm = 1000
 '''
 
 SIX_LEVER51 = SLIDER_ROCKER51     # the same six-bar (frc51c's lever tests name it so)
+
+LINK52 = '''
+# Stop 52 (the lead's check): an eight-bar — a crank-rocker four-bar whose rocker's end carries a block
+# sliding in a rocking coulisse; the coulisse's end drives a rod to a slider on a horizontal guide —
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПВ -> II(6-7) ВВП: three groups, a coulisse driven by a rocker.
+title = "Восьмиланковий механізм з кулісою"
+title_en = "Eight-bar mechanism with a coulisse"
+designation = "ТММ.КМ.52.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, 0.04]
+O3 = [0.60, 0.10]
+
+[frame.guides]
+x = { through = [0, 0.42], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.5 }
+mass = 3
+inertia = 0.015
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.14
+points = { S3 = 0.5, C = 1.8 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "O3D"
+mass = 0.8
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3"]
+length = 0.38
+points = { S5 = 0.5, D = 1.0 }
+mass = 6
+inertia = 0.07
+
+[[link]]
+name = "DE"
+number = 6
+joints = ["D", "E"]
+length = 0.30
+points = { S6 = 0.5 }
+mass = 3
+inertia = 0.02
+
+[[link]]
+name = "E"
+number = 7
+joints = ["E"]
+slides_on = "x"
+mass = 10
+
+[branch]
+B = 1
+C = 1
+E = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "E"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
