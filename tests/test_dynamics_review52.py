@@ -70,3 +70,30 @@ def test_the_energy_mass_diagram_in_the_band_letters_kl_as_drawn(link52, lang):
     value = float(re.search(r"(\d+(?:[.,]\d+)?)", said[0]).group(1).replace(",", "."))
     assert value == pytest.approx(abs(k[0] - l_[0]), abs=0.5)      # read with the ruler to 0,5 mm
     assert value == pytest.approx(link52.kl, abs=1e-9)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_each_axis_letters_its_values_to_one_count_of_decimals(link52, lang):
+    """A scale's numbers to one count of decimals: "0,02 … 0,10 0,12" (it lettered 0,1), "12,8
+    13,0 13,2" (it lettered 13) — on every graduated axis of the sheet's diagrams."""
+    from graphplan.drawing.flywheel import moments_record, speed_record
+    from graphplan.sheets.dynamics import band
+    from graphplan.util.markup import plain
+    recs = [moments_record(link52, lang), speed_record(link52, lang), *band(link52, lang, 110.0, 260.0)[0].values()]
+    axes = 0
+    for rec in recs:
+        by_axis: dict[tuple[str, float], list[str]] = {}
+        for p in rec.items:
+            if p.kind == "text" and (p.step.endswith("graduation") or p.step == "ω ticks") and plain(p.text) != "0":
+                x, y = p.points[0]
+                horizontal = p.step.startswith("I*")          # I* runs along x: its numbers share a row
+                key = (p.step, round(y if horizontal else p.ink()[2], 1))
+                by_axis.setdefault(key, []).append(plain(p.text))
+        for key, texts in by_axis.items():
+            if len(texts) < 2:
+                continue
+            axes += 1
+            decimals = {len(t.split("," if lang == "uk" else ".")[1]) if ("," if lang == "uk" else ".") in t else 0
+                        for t in texts}
+            assert len(decimals) == 1, (key, texts)
+    assert axes >= 5
