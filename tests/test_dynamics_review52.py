@@ -11,7 +11,7 @@ import re
 
 import pytest
 from conftest import scene_study
-from review_scenes import LINK52
+from review_scenes import DYN_OWN52, LINK52
 
 
 @pytest.fixture(scope="module")
@@ -39,12 +39,24 @@ def test_the_bands_phi_axes_are_round_lengths(L):
         assert g < L and g % 10.0 == pytest.approx(0.0, abs=1e-9), got
 
 
+@pytest.fixture(scope="module")
+def own52():
+    """DYN_OWN52 (dyn52's own six-bar lifting table, 16 divisions) as its A1 sheet draws it (L = 210
+    mm, heights × 0.8)."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import redrawn
+    return redrawn(analyse(scene_study(DYN_OWN52), None), None, 0.5, L=210.0, size=0.8)
+
+
 @pytest.mark.parametrize("lang", ["uk", "en"])
-def test_each_phi_scale_of_the_band_has_its_own_name_and_is_two_pi_over_its_drawn_axis(link52, lang):
-    """ΔT(φ) widened to 260 mm over the turned I*(φ)'s 110: ΔT(φ) states μ′_φ, I*(φ) μ″_φ, neither
-    the moments' unprimed μ_φ; each value 2π over the span its points are drawn over."""
+@pytest.mark.parametrize("which, length, el", [("link52", 110.0, 260.0), ("own52", 80.0, 210.0)])
+def test_each_phi_scale_of_the_band_has_its_own_name_and_is_two_pi_over_its_drawn_axis(request, which, length,
+                                                                                      el, lang):
+    """ΔT(φ) widened over the turned I*(φ) (LINK52: 260 over 110 mm; the own six-bar's 16 divisions:
+    210 over 80): ΔT(φ) states μ′_φ, I*(φ) μ″_φ, neither the moments' unprimed μ_φ; each value 2π
+    over the span its points are drawn over."""
     from graphplan.sheets.dynamics import band
-    parts, _ = band(link52, lang, 110.0, 260.0)
+    parts, _ = band(request.getfixturevalue(which), lang, length, el)
     for name, step, axis, prime in (("energy", "ΔT read", 0, "′"), ("inertia", "I*_m read", 1, "″")):
         rec = parts[name]
         at = [p.points[0][axis] for p in rec.items if p.kind == "point" and p.step == step]
