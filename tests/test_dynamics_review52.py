@@ -16,7 +16,7 @@ from review_scenes import DYN_OWN52, LINK52
 
 @pytest.fixture(scope="module")
 def link52():
-    """LINK52's construction as its A1 sheet draws it (L = 330 mm, heights × 1)."""
+    """LINK52's construction at L = 330 mm, heights × 1 (one of the scales its A1 sheet tries)."""
     from graphplan.exact.dynamics import analyse
     from graphplan.graphic.flywheel import redrawn
     dyn = analyse(scene_study(LINK52), None)
