@@ -4873,3 +4873,105 @@ planets = 2
 module = 0.002
 rpm = 1450
 '''
+
+
+DYN_OWN52 = '''
+# Stop 52, dyn52's own: a six-bar lifting table — a crank-rocker four-bar whose rocker's extension C
+# drives the rod CD to the table D on a VERTICAL guide; the table's weight and a 900 N load over the
+# lift's middle (a profile), plus a resistance moment on the rocker on both strokes; the crank turns
+# clockwise, 16 divisions, δ = 0.08, a 3000-rpm motor through a two-stage reducer (its shafts given).
+title = "Шестиланковий механізм підйомного столу"
+title_en = "Six-bar mechanism of a lifting table"
+designation = "ТММ.КМ.52.100"
+
+[sheet]
+student = "Помічник Д. Д."
+teacher = "Викладач В. В."
+group = "МБ-52"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.0]
+
+[frame.guides]
+y = { through = [0.36, 0], angle_deg = 90 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.6, C = 1.6 }
+mass = 6
+inertia = 0.06
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.02
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "y"
+mass = 25
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 16
+start = "working"
+accel = [4]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.01, 1], [0.05, 1], [0.06, 0]]
+
+[[moment]]
+link = 3
+magnitude = 15
+stroke = "both"
+direction = "oppose"
+
+[dynamics]
+delta = 0.08
+efficiency = 0.8
+synchronous_rpm = 3000
+reducer_shafts = [0.0004, 0.003, 0.08]
+first_stage_ratio = 5.0
+'''

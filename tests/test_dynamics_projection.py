@@ -193,7 +193,7 @@ def test_the_band_states_its_own_phi_scale(sheet):
     xs = [p[0] for p in _points(rec, "ΔT read")]
     said = [plain(p.text) for p in rec.items if p.kind == "text" and p.step == "caption scale"]
     assert len(said) == 1, said
-    m = re.fullmatch(r"μ_?φ = 2π/([0-9.,]+) = ([0-9.,]+) (?:rad|рад)/(?:mm|мм)", said[0].replace(",", "."))
+    m = re.fullmatch(r"μ′_?φ = 2π/([0-9.,]+) = ([0-9.,]+) (?:rad|рад)/(?:mm|мм)", said[0].replace(",", "."))
     assert m, said
     span = max(xs) - min(xs)
     assert float(m.group(1)) == pytest.approx(span, abs=0.06)

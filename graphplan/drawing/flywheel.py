@@ -532,6 +532,27 @@ def lettered_steps(unit: float) -> tuple[int, ...]:
     return tuple(e for e in (1, 2, 4, 5, 10) if e <= 2 or round_(unit * e))
 
 
+def axis_decimals(values) -> int:
+    """The decimals an axis's lettered ``values`` are all written to: the most any of them needs
+    (0,02 … 0,12 → 2: "0,10", not "0,1" among "0,08" and "0,12"; 12,2 … 13,4 → 1: "13,0") — a
+    scale's numbers to one count of decimals, as a draftsman letters them."""
+    def own(v: float) -> int:
+        for d in range(7):
+            if abs(v * 10 ** d - round(v * 10 ** d)) < 1e-6 * max(1.0, abs(v) * 10 ** d):
+                return d
+        return 6
+    return max((own(float(v)) for v in values), default=0)
+
+
+def axis_value(v: float, decimals: int, lang: str) -> str:
+    """``v`` lettered on an axis to ``decimals`` (``axis_decimals``); 0 as "0", a power of ten as
+    ``num`` writes it."""
+    text = num(v, lang)
+    if v == 0 or "·10" in text:
+        return text
+    return fixed(v, lang, decimals)
+
+
 def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertical: bool = True,
                   sides: tuple[float, ...] = (-1.0, 1.0), step: str = "graduation", letter: bool = True
                   ) -> list[float]:
@@ -550,15 +571,17 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
     from shapely import box as shape_box
     words = [shape_box(*p.ink()) for p in rec.items if p.kind == "text" and (p.text or "").strip()]
 
-    def number(v: float, side: float) -> Primitive:
-        """The value beside its tick, its ink ``TICK`` + 0.6 mm off the axis (a comma's tail too)."""
+    def number(v: float, side: float, decimals: int | None = None) -> Primitive:
+        """The value beside its tick, its ink ``TICK`` + 0.6 mm off the axis (a comma's tail too),
+        to the run's ``decimals`` (``axis_decimals``; all the ticks' where not given)."""
         at = v / mu
+        text = axis_value(v, axis_decimals(values) if decimals is None else decimals, lang)
         if vertical:                     # by its ink, not its advance (a "1" inks past its anchor)
             p = Primitive("text", ((0.0, at - 0.45 * NUM),), role="label", layer=LAYER, step=step,
-                          text=num(v, lang), size=NUM, anchor="end" if side < 0 else "start")
+                          text=text, size=NUM, anchor="end" if side < 0 else "start")
             x0, y0, x1, y1 = p.ink()
             return p.moved((-(TICK + 0.6) - x1) if side < 0 else (TICK + 0.6 - x0), 0.0)
-        p = Primitive("text", ((at, 0.0),), role="label", layer=LAYER, step=step, text=num(v, lang), size=NUM,
+        p = Primitive("text", ((at, 0.0),), role="label", layer=LAYER, step=step, text=text, size=NUM,
                       anchor="middle")
         x0, y0, x1, y1 = p.ink()
         return p.moved(0.0, (TICK + 0.6 - y0) if side > 0 else (-(TICK + 0.6) - y1))
@@ -568,7 +591,8 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
         unit = graduation_step(values) or abs(values[0])
         for every in lettered_steps(unit):
             run = [v for v in values if abs(v / (unit * every) - round(v / (unit * every))) < 1e-6]
-            ok = [sd for sd in sides if len(run) >= 2 and all(free(number(v, sd).ink()) for v in run)]
+            ok = [sd for sd in sides if len(run) >= 2
+                  and all(free(number(v, sd, axis_decimals(run)).ink()) for v in run)]
             if ok:
                 shown, side = run, ok[0]
                 break
@@ -581,7 +605,7 @@ def graduate_axis(rec: Record, values: list[float], mu: float, lang: str, vertic
         if all(wd.distance(tick) >= GRADUATION_CLEAR + AXIS_W / 2 for wd in words):
             rec.segment(a, b, role="construction", width=AXIS_W, layer=LAYER, step=step)
     for v in shown:
-        rec.items.append(number(v, side))
+        rec.items.append(number(v, side, axis_decimals(shown)))
     return shown
 
 
@@ -632,10 +656,11 @@ def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None
     the value under the tick; the scale lettered under the axis's symbol (I^*_м, кг·м²), as the ΔT
     axis's is."""
     w = WORDS[lang]
-    for v in graduation(hi, mu):
+    values = graduation(hi, mu)
+    for v in values:
         x = v / mu
         rec.segment((x, foot), (x, foot - 1.5), role="construction", width=AXIS_W, layer=LAYER, step="I* graduation")
-        rec.label((x, foot - 1.5 - 0.6 - NUM), num(v, lang), size=NUM, anchor="middle", layer=LAYER,
+        rec.label((x, foot - 1.5 - 0.6 - NUM), axis_value(v, axis_decimals(values), lang), size=NUM, anchor="middle", layer=LAYER,
                   step="I* graduation")
     rec.label((hi + 9.5, -1.2 - line_pitch(TEXT)), f"μ_I = {num(mu, lang)} {w['kgm2']}/{w['mm']}",
               size=NUM, layer=LAYER, step="axes I*_m")
@@ -731,7 +756,8 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     # both axes graduated at their own scales (the same μ_T and μ_I as ΔT(φ) and I*(φ) beside them), before
     # any number or letter is placed (review 12 #23: point 2's number stood where I*'s 0,02 goes, the tick
     # left bare): a tick keeps its value, the numbers and letters move
-    before = len(rec.items)
+    before = list(rec.items)      # kept whole: the graduation breaks projections under its numbers, which
+    #                               renumbers the items (a count kept dropped the last ones, |kl|'s value: stop 52)
     i_values = graduation(x_hi - 8.0, f.mu_I)
     shown = graduate_axis(rec, i_values, f.mu_I, lang, vertical=False, sides=(1.0, -1.0),
                           step="I* graduation",   # lettered as on I*(φ)'s foot, the projections broken under them
@@ -743,7 +769,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         # branch from point 1 to 2 ran where 0,02 goes, 0,04 and 0,06 lettered beside a bare tick): the
         # axis keeps its ticks, and the values go on a scale line parallel to it at the diagram's foot,
         # from the ΔT axis's end, as a chart's frame
-        del rec.items[before:]
+        rec.items[:] = before
         _ticks_only = Record("ticks")
         graduate_axis(_ticks_only, i_values, f.mu_I, lang, vertical=False, sides=(1.0,), step="I* axis ticks",
                       letter=False)
@@ -806,11 +832,12 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     rec.label((L + 11.5, -1.2), "φ", size=TEXT, layer=LAYER)
     step = _nice((hi - lo) / SPEED_TICKS)
     v = math.ceil(lo / step - 1e-9) * step
+    decimals = axis_decimals([step])           # 12,8 13,0 13,2: the step's decimals (``axis_decimals``)
     while v <= hi + 1e-9 * step:
         yy = float(y(v))
         rec.segment((0.0, yy), (L, yy), role="grid", layer=LAYER, step="ω grid")
         rec.segment((-1.5, yy), (0.0, yy), role="construction", layer=LAYER, step="ω ticks")
-        rec.label((-3.0, yy - 1.0), fmt(v, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
+        rec.label((-3.0, yy - 1.0), axis_value(v, decimals, lang), size=NUM, anchor="end", layer=LAYER, step="ω ticks")
         v += step
     for deg in range(0, 361, 30):
         xx = L * deg / 360.0

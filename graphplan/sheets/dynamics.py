@@ -335,9 +335,15 @@ def _caption(rec: Record, title: str, above: bool = False, left: float | None = 
     return out
 
 
-def band_scale(length: float, lang: str) -> str:
-    """ΔT(φ)'s and the turned I*(φ)'s φ scale: one turn over the band's ``length`` mm."""
-    return (f"μ_φ = 2π/{num(length, lang)} = {num(2 * math.pi / length, lang)} "
+BAND_PRIME = "′"      # ΔT(φ)'s φ scale μ′_φ (and the turned I*(φ)'s where it shares ΔT(φ)'s axis) …
+TURNED_PRIME = "″"    # … the turned I*(φ)'s μ″_φ where its axis is shorter (``widened``): the moments' μ_φ = 2π/L
+#                       is the notes'; three scales of φ on one sheet, three names (a teacher marks one name for two)
+
+
+def band_scale(length: float, lang: str, prime: str = BAND_PRIME) -> str:
+    """ΔT(φ)'s (or the turned I*(φ)'s) φ scale: one turn over the band's ``length`` mm, named
+    apart from the moments' μ_φ by its ``prime`` (μ′_φ = 2π/260 = 0,02417 рад/мм)."""
+    return (f"μ{prime}_φ = 2π/{num(length, lang)} = {num(2 * math.pi / length, lang)} "
             f"{'рад/мм' if lang == 'uk' else 'rad/mm'}")
 
 
@@ -414,7 +420,7 @@ def band(f: Flywheel, lang: str, length: float,
     if abs(el - length) > 1e-9:                        # I*(φ)'s own φ scale, under its μ_I
         mu = next(p for p in inertia.items if p.kind == "text" and p.text.startswith("μ_I ="))
         inertia.label((mu.points[0][0], mu.points[0][1] - line_pitch(mu.size)),
-                      band_scale(turned_length(f, length), lang), size=mu.size, layer=mu.layer, step="axes I*_m")
+                      band_scale(turned_length(f, length), lang, TURNED_PRIME), size=mu.size, layer=mu.layer, step="axes I*_m")
     wx0, wy0, wx1, wy1 = witt.bounds()
     ix0, iy0, ix1, _ = inertia.bounds()
     boxes = {"energy": (ex0, ey0, side, ey1), "wittenbauer": (side, foot, wx1, wy1),
@@ -1079,10 +1085,19 @@ def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, fl
     return best[1] if best is not None else fallback
 
 
+ROUND_LENGTH = 10.0    # mm: the band's φ axes a multiple of this (2π/115,5 is no scale a student picks: 2π/110)
+
+
+def round_length(length: float, L: float) -> float:
+    """``length`` down to a multiple of ``ROUND_LENGTH`` (L itself, the moments' axis, as it is)."""
+    return length if length >= L - 1e-9 else max(ROUND_LENGTH, math.floor(length / ROUND_LENGTH + 1e-9) * ROUND_LENGTH)
+
+
 def _lengths(L: float) -> tuple[float, ...]:
-    """The φ axes tried for the band's ΔT(φ) and turned I*(φ), longest first (``PROJECTED``)."""
-    return tuple(dict.fromkeys([*(max(k * L, min(L, PROJECTED_MIN)) for k in PROJECTED),
-                                *(min(L, g) for g in (70.0, 60.0, PROJECTED_LEAST))]))
+    """The φ axes tried for the band's ΔT(φ) and turned I*(φ), longest first (``PROJECTED``),
+    each a round length (``round_length``)."""
+    return tuple(dict.fromkeys([*(round_length(max(k * L, min(L, PROJECTED_MIN)), L) for k in PROJECTED),
+                                *(round_length(min(L, g), L) for g in (70.0, 60.0, PROJECTED_LEAST))]))
 
 
 def _wh(rec: Record) -> tuple[float, float]:
@@ -1254,7 +1269,7 @@ def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Lea
     return laid, nook, speed
 
 
-WIDEN_STEP = 5.0      # mm: ΔT(φ)'s widened φ axis a multiple of this (the same in either language)
+WIDEN_STEP = ROUND_LENGTH      # mm: ΔT(φ)'s widened φ axis a multiple of this (the same in either language)
 WIDEN_LEAST = 20.0    # mm: … and widened only by this much or more
 
 
