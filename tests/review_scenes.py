@@ -4975,3 +4975,94 @@ synchronous_rpm = 3000
 reducer_shafts = [0.0004, 0.003, 0.08]
 first_stage_ratio = 5.0
 '''
+
+
+LOOM52 = '''
+title = "Важільний механізм приводу бердильного бруса ткацького верстата"
+title_en = "Lever mechanism of a loom beater (batten) drive"
+designation = "ТММ.КП.52.000"
+
+[sheet]
+student = "Рецензент"
+teacher = "Викладач"
+group = "МБ-41"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.05]
+O3 = [0.52, -0.04]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+points = { S2 = 0.5 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+shape = { C = [0.05, -0.09] }
+points = { S3 = 0.5 }
+mass = 5
+inertia = 0.02
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 3.5
+inertia = 0.028
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.18
+points = { S5 = 0.5, E = 1.6 }
+mass = 9
+inertia = 0.09
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 8]
+force_phi_deg = 120
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
