@@ -146,6 +146,8 @@ def write_metrics() -> Path:
 
 def main(argv: list[str] | None = None) -> int:
     from graphplan.util.files import write_atomic
+    from graphplan.util.memory import collect_less_often
+    collect_less_often()
     parser = argparse.ArgumentParser(prog="python -m graphplan.cli.gallery", description=__doc__)
     parser.add_argument("-o", "--out", default=str(ROOT / "drawings"), help="folder (default: drawings/)")
     args = parser.parse_args(argv)

@@ -44,8 +44,9 @@ COMMAND_MODULES: tuple[str, ...] = (
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    from graphplan.util.memory import keep_freed_memory
+    from graphplan.util.memory import collect_less_often, keep_freed_memory
     keep_freed_memory()
+    collect_less_often()
     args = None
     try:
         args = build_parser().parse_args(argv)

@@ -130,8 +130,13 @@ def extent(node: Node) -> tuple[float, float]:
         if not node.children:
             return 0.0, 0.0
         if isinstance(node, Grid):
-            width = sum(node.widths()) if node.fitted else node.cell()[0] * node.cols
-            return width + node.gap * (node.cols - 1), sum(node.heights()) + node.gap * (node.rows - 1)
+            # once a grid (its children and columns are not changed once it is made: ``heights``);
+            # a kinematics sheet's search asks the same grid under every table arrangement
+            got = node.__dict__.get("_extent")
+            if got is None:
+                width = sum(node.widths()) if node.fitted else node.cell()[0] * node.cols
+                got = node._extent = (width + node.gap * (node.cols - 1), sum(node.heights()) + node.gap * (node.rows - 1))
+            return got
     children = node.children
     if not children:
         return 0.0, 0.0

@@ -76,8 +76,9 @@ def main() -> None:
     out = os.fdopen(os.dup(1), "wb")
     os.dup2(2, 1)                                      # a stray print cannot break the frames
     src = sys.stdin.buffer
-    from graphplan.util.memory import keep_freed_memory
+    from graphplan.util.memory import collect_less_often, keep_freed_memory
     keep_freed_memory()
+    collect_less_often()
     from graphplan.web import jobs
     for module in ("graphplan.exact.positions", "graphplan.model.scene", "graphplan.sheets.sheet",
                    "graphplan.drawing.svg", "graphplan.drawing.plans"):
