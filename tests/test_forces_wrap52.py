@@ -54,3 +54,20 @@ def test_rocking_block_lever_is_drawn_large_on_its_a1_sheet():
         b = boxes[name]
         assert b[3] <= lever[1] or b[1] >= lever[3], (name, b, lever)     # not in the lever's band
     assert defects(sheet) == []
+
+
+def test_a_force_point_off_the_links_points_is_not_lettered_as_its_centre_of_mass():
+    """WEDGE52's wedge 3 (one point, B — its centre of mass, the scene naming none): R03 and R43 act
+    30 mm along the guide from B, a point of no name — not "S3", which would read as the centre of
+    mass; at B the point is B."""
+    from types import SimpleNamespace
+
+    from graphplan.drawing.forces import _point_name
+    link = SimpleNamespace(local={"B": 0j}, com=None, number=3, joints=["B"])
+    body = SimpleNamespace(at=lambda local: [[complex(0.10, 0.02) + local]])
+    fp = SimpleNamespace(ks=SimpleNamespace(mech=SimpleNamespace(links={"3": link}),
+                                            kin=SimpleNamespace(bodies={"3": body})))
+    mu = 0.002
+    b = complex(0.10, 0.02) / mu
+    assert _point_name(fp, "3", b, mu) == "B"
+    assert _point_name(fp, "3", b + 30.0, mu) == ""
