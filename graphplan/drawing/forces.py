@@ -106,13 +106,15 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bo
 
 
 def _point_name(fp: ForcePlans, link: str, z: complex, mu: float) -> str:
-    """The name of the link's point drawn at ``z`` (mm): the point itself (S3, D), else the
-    centre of mass the lab letters S<number>."""
+    """The name of the link's point drawn at ``z`` (mm): the point itself (S3, D; the centre of
+    mass is always one of them — the scene's ``com``, else the link's first point), else "": a
+    force's own point of application, not lettered (WEDGE52: the wedge's R03 and R43 act where the
+    slot's line meets the guide's, lettered "S3" though the wedge's centre of mass is B)."""
     lk = fp.ks.mech.links[link]
     body = fp.ks.kin.bodies[link]
     near = [(abs(complex(body.at(lk.local[p])[0][0]) / mu - z), p) for p in lk.local]
     hit = min(near, default=(1e9, ""))
-    return hit[1] if hit[0] < 0.5 else (lk.com or f"S{lk.number}")
+    return hit[1] if hit[0] < 0.5 else ""
 
 
 def _pairs(points: list[complex]) -> list[tuple[complex, complex]]:
@@ -957,7 +959,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             side = _name_side(z, [(t, h) for w, t, h in drawn if abs(w - z) < 0.5], drawn_links)
         lab.place(z, indexed(name), 3.5, side, step)
     for z, name in centres:
-        lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+        if name:
+            lab.place(z, indexed(name), 3.5, -1 - 1j, step)
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)

@@ -654,6 +654,7 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 
 
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
+CUTS = (-1, 0)        # the charts in the lever's row: the shape's own count, else none (``_tree``)
 SPACE = forceset.SPACE     # mm between two groups, a group and its plan (review 7 #18)
 ROWS_GAP = GAP             # … between the one-sheet composition's other drawings
 
@@ -665,7 +666,8 @@ def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
     return Stack([Row([g, p], SPACE) for g, p in zip(leaves["groups"], leaves["forces"])], SPACE)
 
 
-def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None):
+def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None,
+          cut: int = -1):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
     the sheet's full height at the right; "bands" — the column under the groups' band; "low" — the
@@ -674,7 +676,10 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     — the groups side by side, each over its force plan (a tall, narrow mechanism's groups: the
     slotter's at 1:5 instead of 1:10). The hodographs' grid ends row ``hrow`` (1, 2 or 3): the
     charts' row, or beside the groups or the lever where those leave the room (the slotter's five
-    at 60 mm beside its narrow groups)."""
+    at 60 mm beside its narrow groups). ``cut``: the charts in the lever's row (the rest in the row
+    under it), −1 the shape's own count — the row wraps where the lever would be squeezed by the
+    charts beside it while the row under them is half empty (ROCKING_BLOCK51: its lever 80 × 70 mm
+    between the acceleration plan and the M_зр chart, P_C's and Φ5's heads 2 mm apart)."""
     S = leaves["scheme"][0]
     groups = _groups_node(shape, leaves) if groups is None else groups     # (a leaf of its size: a trial)
     shape = shape.removesuffix(ACROSS)
@@ -683,9 +688,10 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     if H is None:
         H = [Grid(leaves["hodographs"], hcols, ROWS_GAP)] if leaves["hodographs"] else []
     at = {k: H if k == hrow else [] for k in (1, 2, 3)}
+    k = (2 if shape == "bands" else 1) if cut < 0 else cut
     if shape == "column":
-        rows = [Row([S, groups] + at[1], ROWS_GAP), Row([A, L] + charts[:1] + at[2], ROWS_GAP),
-                Row(charts[1:] + at[3], ROWS_GAP)]
+        rows = [Row([S, groups] + at[1], ROWS_GAP), Row([A, L] + charts[:k] + at[2], ROWS_GAP),
+                Row(charts[k:] + at[3], ROWS_GAP)]
         return Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)
     if shape in ("low", "lever up"):
         # the scheme and the groups across the sheet's full width, the column under them at the
@@ -693,12 +699,12 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
         # under them blank while its groups were drawn at 1:10 beside a 1:4 scheme); "lever up" —
         # the lever in the top row too, where the row beside the column leaves it no room
         up = [L] if shape == "lever up" else []
-        rows = [Row([A] + ([] if up else [L]) + charts[:1] + at[2], ROWS_GAP), Row(charts[1:] + at[3], ROWS_GAP)]
+        rows = [Row([A] + ([] if up else [L]) + charts[:k] + at[2], ROWS_GAP), Row(charts[k:] + at[3], ROWS_GAP)]
         return Stack([Row([S, groups] + up + at[1], ROWS_GAP),
                       Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)],
                      ROWS_GAP, flush=True)
-    rows = [Row([S, groups, A] + at[1], ROWS_GAP), Row([L] + charts[:2] + at[2], ROWS_GAP),
-            Row(charts[2:] + at[3] + [C], ROWS_GAP, flush=True)]
+    rows = [Row([S, groups, A] + at[1], ROWS_GAP), Row([L] + charts[:k] + at[2], ROWS_GAP),
+            Row(charts[k:] + at[3] + [C], ROWS_GAP, flush=True)]
     return Stack(rows, ROWS_GAP, flush=True)
 
 
@@ -745,6 +751,7 @@ class Plan:
     sheets: int = 1
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     hrow: int = 3                    # the row the hodographs end (``_tree``)
+    cut: int = -1                    # the charts in the lever's row (``_tree``; −1 the shape's own)
     packed: bool = False             # a set: the drawings' rows side by side where they fit (``_packed``)
     where: tuple = ()                # a set: the drawings' names on each sheet (kept as drawings grow)
     plan_first: bool = True          # a set: the acceleration plan before the groups, else after them
@@ -882,16 +889,17 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
             grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc, ROWS_GAP)))] if nh else []
                      for hc in range(1, max(nh, 1) + 1)}
             found = None
-            for hrow in HROWS if nh else HROWS[:1]:
-                for hc in range(1, max(nh, 1) + 1):
-                    for parts, C in enumerate(cols, 1):
-                        tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc]))
-                        if tw <= W + 1e-9 and th <= H + 1e-9:
-                            fill = min(W / tw, H / th)
-                            if found is None or fill > found[0] + 1e-9:
-                                found = (fill, hc, parts, hrow)
-                            if first:
-                                return found
+            for cut in CUTS:
+                for hrow in HROWS if nh else HROWS[:1]:
+                    for hc in range(1, max(nh, 1) + 1):
+                        for parts, C in enumerate(cols, 1):
+                            tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc], cut))
+                            if tw <= W + 1e-9 and th <= H + 1e-9:
+                                fill = min(W / tw, H / th)
+                                if found is None or fill > found[0] + 1e-9:
+                                    found = (fill, hc, parts, hrow, cut)
+                                if first:
+                                    return found
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
@@ -915,9 +923,9 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
             # 1:5 above both at 1:4), then all
             score = (round(min(rel), 6), round(sum(math.log(min(r, 1.0)) for r in rel), 6),
                      round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
-            _, hc, parts, hrow = arranged(mu, shape)
+            _, hc, parts, hrow, cut = arranged(mu, shape)
             counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow, cut=cut))
             if best is None or cand[0] > best[0]:
                 best = cand
     return best
@@ -1219,7 +1227,7 @@ def _within(dr: ForceDrafter, f: Form, p: Plan) -> bool:
         tables = [Leaf(name, record=rec) for name, rec in _tables(dr, p.mu, lang, p.tables)]
         lines = _notes_lines(dr, p.mu, lang)
         C = _column(f, tables, p.parts, lambda wd: _wh(note_block(lines, wd))[1], p.counts)[0]
-        tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow))
+        tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut))
         if tw > x1 - x0 + 1e-6 or th > y1 - y0 + 1e-6:
             return False
     return True
@@ -1514,7 +1522,7 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
     C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
-    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow))
+    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut))
     return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
 
 
@@ -1779,7 +1787,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow), region):
+        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
