@@ -560,6 +560,11 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     A3 set's rise of dψ/dφ 12.5 mm tall beside the A1's 52, Table 1 starring five errors the A1 sheet
     has not, while a set has sheets to spare) — d²s/dφ² and ds/dφ on one sheet and s on the next,
     where that draws them taller; the tuple's eighth item says which (True: apart)."""
+    return _fewer_sheets(sol, f, n, precision, _set_choice(sol, f, n, precision))
+
+
+def _set_choice(sol, f: Form, n: int | None, precision: float) -> tuple:
+    """set_sizes' choice of the joint or the apart sizes, the profile at its largest scale."""
     joint = _set_sizes(sol, f, n, precision)
     together = _diagrams_fit_alone(sol, f, n, precision, joint)
     least = _smallest_peak(sol, n, precision, joint)
@@ -569,6 +574,42 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     # the joint sizes where even the smallest left the three diagrams taller than a sheet (the rocking
     # cam's A3 set: 406 mm at the smallest size, the sheet refused) are no choice: apart
     return apart_ + (True,) if not together or _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+
+
+def set_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> int:
+    """The number of sheets of ``f`` a set at the sizes ``sz`` (set_sizes) takes — the drawings each
+    on its own, then Table 1 with the notes (kept_together, as _sheet_layout lays them before ϑ(φ),
+    which never adds a sheet) —, the larger of the two languages; a large number where none lays out."""
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
+                  H2=sz[5], measure=False, series=sz[6])
+    g.split = len(sz) > 7 and bool(sz[7])
+    region, keep = field_of(f), keep_out(f)
+    most = 0
+    for lang in ("uk", "en"):
+        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang, split=True, row=sheet_room(region, keep))
+        laid = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later_keep(f))
+        if laid is None:
+            return 1000
+        most = max(most, len(laid))
+    return most
+
+
+def _fewer_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> tuple:
+    """``sz`` with the profile at the next coarser standard μ_l where that takes the set a sheet fewer
+    (set_sheets) — Table 1 and the notes then beside the profile, not on a sheet of their own: at
+    2,5:1 OWN_CAM52's A2 profile left 190 mm beside it where the table needs 202, and the table took
+    sheet 5 alone, 60 % blank (stop 52) —; else ``sz`` as it is. One step only: the profile, the main
+    drawing, stays at the largest scale but one that fits its sheet alone."""
+    mu = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                   measure=False, series=sz[6]).mu_l
+    smaller = [x for x in SET_SIZES if x < sz[1]]
+    coarser = [x for x in smaller
+               if construct(sol, n, precision, size=sz[0], profile_size=x, height=sz[2], accel=sz[3],
+                            measure=False, series=sz[6]).mu_l > mu * (1 + 1e-9)]
+    if not coarser:
+        return sz
+    other = (sz[0], max(coarser), *sz[2:])
+    return other if set_sheets(sol, f, n, precision, other) < set_sheets(sol, f, n, precision, sz) else sz
 
 
 def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple) -> bool:
@@ -802,6 +843,9 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
     to the width the sheet leaves beside the table (at least the title block's); else under the
     table, the two one block. ``later``: the title block of the sheets after the first (flow)."""
     laid = flow([leaves, [tab, nts]], region, keep, later=later)
+    side = beside_last(leaves, tab, lines, region, keep, later)
+    if side is not None and (laid is None or len(side) < len(laid)):
+        return side
     if laid is None or not notes_alone(laid[-1]):
         return laid
     tw = extent(tab)[0]
@@ -820,6 +864,16 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
         if again is not None and not notes_alone(again[-1]):
             return again
     return laid
+
+
+def beside_last(leaves: list[Leaf], tab: Leaf, lines: list[str], region, keep, later=None):
+    """A set's sheets with Table 1 and the notes under it (wrapped to the table's width) in the last
+    drawing's row, beside the profile where the two fit across and the table clears the title block
+    (flow's ``ragged``): as a row of its own under a profile as tall as the sheet they took a sheet
+    alone, 60 % blank (stop 52: OWN_CAM52's A2 set). None where that lays out nothing."""
+    under = Leaf("notes", record=note_block(lines, max(TITLE, extent(tab)[0])))
+    laid = flow([leaves + [Stack([tab, under], flush=True)]], region, keep, later=later, ragged=True)
+    return None if laid is None or notes_alone(laid[-1]) else laid
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
