@@ -231,6 +231,8 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
         if pole:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xe, "1" if key == "a" else "2",
                   key, labels)
+        if key == "s" and "v" not in keys:
+            _pole_carried(rec, y0, g.H2, g.v_mid, labels)
         y = y0 + hi + 20.0
     marks = spots(x, lang, names=division_numbers(cam.phases, len(x)))   # a point of the cam one number
     y_s = bands.get("s", 0.0)
@@ -434,6 +436,36 @@ def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, ends: np
     rec.label((-H / 2, yd - 4.5), f"H_{index}", size=TEXT, anchor="middle", layer=LAYER, step=f"H{index}")
 
 
+CARRIED_AT = -8.0      # mm: the s diagram's own copy of ds/dφ's mean ordinates, left of its ordinate axis
+
+
+def _pole_carried(rec: Record, y0: float, H: float, mid: np.ndarray, labels: list[LabelRequest]) -> None:
+    """On the s diagram of a set's sheet of its own (ds/dφ on the sheet before): ds/dφ's mean ordinates
+    laid off with dividers on a vertical CARRIED_AT left of s's ordinate axis, the pole P2 at H2 left of
+    it on s's φ axis and the rays — the chords of s laid parallel to rays on their own sheet (review 52:
+    integrated with rays from P2 on the sheet before; a draftsman cannot carry a parallel between
+    sheets). Each chord over an interval rises h/H2 per mm, as the ray to its ordinate h does."""
+    h = np.asarray([v for v in mid if np.isfinite(v)], dtype=float)
+    if h.size == 0:
+        return
+    xa = CARRIED_AT
+    pole = (xa - H, y0)
+    lo_, hi_ = min(0.0, float(h.min())), max(0.0, float(h.max()))
+    rec.segment((xa, y0 + lo_ - 2.0), (xa, y0 + hi_ + 2.0), role="construction", layer=LAYER, step="ds/dφ carried")
+    rec.segment((xa - H - 4.0, y0), (0.0, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis s left")
+    rec.point(pole, role="pole", layer=LAYER, step="pole P2")
+    labels.append(LabelRequest(complex(*pole), "P_2", toward=-0.6 + 1j, size=TEXT))
+    for j, v in enumerate(sorted({round(float(v), 6) for v in h})):
+        rec.point((xa, y0 + v), role="construction", layer=LAYER, step=f"mean v carried {j}")
+        rec.segment(pole, (xa, y0 + v), role="ray", layer=LAYER, step=f"ray P2 {j}")
+    yd = y0 + lo_ - 6.0
+    rec.segment((xa - H, y0), (xa - H, yd - 1.5), role="construction", layer=LAYER, step="H2")
+    rec.segment((xa, y0 + lo_ - 2.0), (xa, yd - 1.5), role="construction", layer=LAYER, step="H2")
+    rec.vector((xa - H / 2, yd), (xa - H, yd), role="construction", layer=LAYER, step="H2")
+    rec.vector((xa - H / 2, yd), (xa, yd), role="construction", layer=LAYER, step="H2")
+    rec.label((xa - H / 2, yd - 4.5), "H_2", size=TEXT, anchor="middle", layer=LAYER, step="H2")
+
+
 def phase_points(sol: Solution, g: CamConstruction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The phase diagram's construction in the fixed frame (complex, m; the cam's centre O at 0): at
     each division the roller's centre C from the drawn s, the direction u of its motion as s grows, and
@@ -632,7 +664,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
             labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
-    labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
+    labels.append(LabelRequest(0.5 * (O + C[0]), _chosen_R0(sol, g, lang), toward=1 + 0j, size=TEXT))
     if not cam.rocking and abs(C[0].real) > 0.5:
         rec.segment(_pt(O), (C[0].real, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
@@ -668,6 +700,17 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
+
+
+def _chosen_R0(sol, g, lang: str) -> str:
+    """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
+    where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
+    its vertex (review 52: O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the
+    profile took 39 mm); else «R_0»."""
+    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or sol.geometry.R0 <= g.R0_drawn + 1e-9:
+        return "R_0"
+    from graphplan.util.words import num
+    return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
 
 
 O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
@@ -792,7 +835,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     side = angles[k] + gaps[k] / 3
     along = cmath.exp(1j * side)
     rec.segment((0.0, 0.0), _pt(r0 * along), role="construction", layer=LAYER, step="R0")
-    labels.append(LabelRequest(0.55 * r0 * along, "R_0", toward=along * 1j, size=TEXT))
+    # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
+    # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
+    labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
     _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)
