@@ -609,6 +609,13 @@ def _fewer_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> t
     if not coarser:
         return sz
     other = (sz[0], max(coarser), *sz[2:])
+    # the profile still the largest drawing (LAYOUT.md's cam sheet; _profile_largest): CAM52's A3 set
+    # saved its sheet with the profile at 1:2, 95 mm across beside a phase diagram of several times its area
+    from graphplan.drawing.cam import phase_diagram, profile_drawing
+    g = construct(sol, n, precision, size=other[0], profile_size=other[1], height=other[2], accel=other[3],
+                  H1=other[4], H2=other[5], measure=False, series=other[6])
+    if not _profile_largest(profile_drawing(sol, g, "en").bounds(), phase_diagram(sol, g, "en").bounds()):
+        return sz
     return other if set_sheets(sol, f, n, precision, other) < set_sheets(sol, f, n, precision, sz) else sz
 
 
