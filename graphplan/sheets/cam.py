@@ -587,7 +587,7 @@ def set_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> int:
     most = 0
     for lang in ("uk", "en"):
         leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang, split=True, row=sheet_room(region, keep))
-        laid = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later_keep(f))
+        laid = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later_keep(f), g.split)
         if laid is None:
             return 1000
         most = max(most, len(laid))
@@ -600,6 +600,10 @@ def _fewer_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> t
     2,5:1 OWN_CAM52's A2 profile left 190 mm beside it where the table needs 202, and the table took
     sheet 5 alone, 60 % blank (stop 52) —; else ``sz`` as it is. One step only: the profile, the main
     drawing, stays at the largest scale but one that fits its sheet alone."""
+    if not (len(sz) > 7 and sz[7]):
+        # ϑ(φ) not under s: its place is the table's sheet, and a sheet saved there lost it (stop 44's knife
+        # cam's A2 set: two sheets, no ϑ(φ))
+        return sz
     mu = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
                    measure=False, series=sz[6]).mu_l
     smaller = [x for x in SET_SIZES if x < sz[1]]
@@ -843,16 +847,20 @@ def notes_alone(page) -> bool:
     return all(leaf.name == "notes" for leaf, _ in page)
 
 
-def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep, later=None):
+def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep, later=None,
+                  side: bool = False):
     """A set's sheets: the drawings, then the table with the notes after it — on one sheet (every
     sheet of a set carries a drawing or a table: the rocking cam's A3 set gave its last sheet to
     ten lines of notes). The notes as laid out where they do not take a sheet alone; else wrapped
     to the width the sheet leaves beside the table (at least the title block's); else under the
     table, the two one block. ``later``: the title block of the sheets after the first (flow)."""
     laid = flow([leaves, [tab, nts]], region, keep, later=later)
-    side = beside_last(leaves, tab, lines, region, keep, later)
-    if side is not None and (laid is None or len(side) < len(laid)):
-        return side
+    # ``side``: the table beside the profile where that saves a sheet — only where ϑ(φ) already stands
+    # with s on its sheet (pressure_by_displacement; else the table's sheet is ϑ(φ)'s: the knife cam's
+    # A2 set and review 13's A3 set lost ϑ(φ) to a sheet saved)
+    by = beside_last(leaves, tab, lines, region, keep, later) if side else None
+    if by is not None and (laid is None or len(by) < len(laid)):
+        return by
     if laid is None or not notes_alone(laid[-1]):
         return laid
     tw = extent(tab)[0]
@@ -1046,19 +1054,20 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
         # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
         both = own_sheet(Leaf("displacement", record=with_theta(disp.record, leaf.record)), sheet_room(region, keep))
         drawings = leaves[:at] + [both] + leaves[at + 1:]
-        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
+        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid, True):
             return again
     return None
 
 
-def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid):
+def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid,
+                side: bool = False):
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
     first) and the notes kept with it — each arrangement taking no more sheets than ``laid`` and
     leaving no sheet to the notes alone, in that order."""
     for size, row in TABLE_SIZES + ((2.5, 6.0),):
         tab = Leaf("table", record=positions_table(doc, lang, row, size))
         nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
-        again = kept_together(drawings, tab, lines, nts, region, keep, later)
+        again = kept_together(drawings, tab, lines, nts, region, keep, later, side)
         if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
             yield again
 
