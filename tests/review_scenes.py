@@ -5066,3 +5066,23 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+REVIEW_CAM52 = '''# Stop 52's blind review, scene 3 (review52's s3_cam.toml): a translating roller follower, offset "auto",
+# the cam clockwise, a cycloidal rise, a trapezoidal return; R0 taken 39 mm over the smallest 38.3 mm.
+title = "Кулачковий механізм з поступальним роликовим штовхачем"
+title_en = "Disc cam with a translating roller follower"
+designation = "ТММ.КП.52.000"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = "auto"
+roller_radius = 0.012
+phases_deg = { rise = 100, dwell_far = 50, return = 140, dwell_near = 70 }
+laws = { rise = "cycloidal", return = "trapezoidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 300
+direction = "cw"
+divisions = 10
+'''

@@ -632,7 +632,7 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
             labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
-    labels.append(LabelRequest(0.5 * (O + C[0]), "R_0", toward=1 + 0j, size=TEXT))
+    labels.append(LabelRequest(0.5 * (O + C[0]), _chosen_R0(sol, g, lang), toward=1 + 0j, size=TEXT))
     if not cam.rocking and abs(C[0].real) > 0.5:
         rec.segment(_pt(O), (C[0].real, 0.0), role="construction", layer=LAYER, step="offset e")
         labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
@@ -668,6 +668,17 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     place_labels(rec, labels + [q for q, c in zip(numbers, first) if not c], layer=LAYER)
     rec.scales.update(mu_phase=mu)
     return rec
+
+
+def _chosen_R0(sol, g, lang: str) -> str:
+    """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
+    where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
+    its vertex (review 52: O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the
+    profile took 39 mm); else «R_0»."""
+    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or sol.geometry.R0 <= g.R0_drawn + 1e-9:
+        return "R_0"
+    from graphplan.util.words import num
+    return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
 
 
 O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
@@ -792,7 +803,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     side = angles[k] + gaps[k] / 3
     along = cmath.exp(1j * side)
     rec.segment((0.0, 0.0), _pt(r0 * along), role="construction", layer=LAYER, step="R0")
-    labels.append(LabelRequest(0.55 * r0 * along, "R_0", toward=along * 1j, size=TEXT))
+    # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
+    # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
+    labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
     _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)

@@ -560,6 +560,11 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     A3 set's rise of dψ/dφ 12.5 mm tall beside the A1's 52, Table 1 starring five errors the A1 sheet
     has not, while a set has sheets to spare) — d²s/dφ² and ds/dφ on one sheet and s on the next,
     where that draws them taller; the tuple's eighth item says which (True: apart)."""
+    return _fewer_sheets(sol, f, n, precision, _set_choice(sol, f, n, precision))
+
+
+def _set_choice(sol, f: Form, n: int | None, precision: float) -> tuple:
+    """set_sizes' choice of the joint or the apart sizes, the profile at its largest scale."""
     joint = _set_sizes(sol, f, n, precision)
     together = _diagrams_fit_alone(sol, f, n, precision, joint)
     least = _smallest_peak(sol, n, precision, joint)
@@ -569,6 +574,53 @@ def set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5) -> tup
     # the joint sizes where even the smallest left the three diagrams taller than a sheet (the rocking
     # cam's A3 set: 406 mm at the smallest size, the sheet refused) are no choice: apart
     return apart_ + (True,) if not together or _smallest_peak(sol, n, precision, apart_) > least else joint + (False,)
+
+
+def set_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> int:
+    """The number of sheets of ``f`` a set at the sizes ``sz`` (set_sizes) takes — the drawings each
+    on its own, then Table 1 with the notes (kept_together, as _sheet_layout lays them before ϑ(φ),
+    which never adds a sheet) —, the larger of the two languages; a large number where none lays out."""
+    g = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3], H1=sz[4],
+                  H2=sz[5], measure=False, series=sz[6])
+    g.split = len(sz) > 7 and bool(sz[7])
+    region, keep = field_of(f), keep_out(f)
+    most = 0
+    for lang in ("uk", "en"):
+        leaves, tab, nts, doc = _leaves(sol, g, sol.cam, lang, split=True, row=sheet_room(region, keep))
+        laid = kept_together(leaves, tab, notes(doc, lang, sol.cam), nts, region, keep, later_keep(f), g.split)
+        if laid is None:
+            return 1000
+        most = max(most, len(laid))
+    return most
+
+
+def _fewer_sheets(sol, f: Form, n: int | None, precision: float, sz: tuple) -> tuple:
+    """``sz`` with the profile at the next coarser standard μ_l where that takes the set a sheet fewer
+    (set_sheets) — Table 1 and the notes then beside the profile, not on a sheet of their own: at
+    2,5:1 OWN_CAM52's A2 profile left 190 mm beside it where the table needs 202, and the table took
+    sheet 5 alone, 60 % blank (stop 52) —; else ``sz`` as it is. One step only: the profile, the main
+    drawing, stays at the largest scale but one that fits its sheet alone."""
+    if not (len(sz) > 7 and sz[7]):
+        # ϑ(φ) not under s: its place is the table's sheet, and a sheet saved there lost it (stop 44's knife
+        # cam's A2 set: two sheets, no ϑ(φ))
+        return sz
+    mu = construct(sol, n, precision, size=sz[0], profile_size=sz[1], height=sz[2], accel=sz[3],
+                   measure=False, series=sz[6]).mu_l
+    smaller = [x for x in SET_SIZES if x < sz[1]]
+    coarser = [x for x in smaller
+               if construct(sol, n, precision, size=sz[0], profile_size=x, height=sz[2], accel=sz[3],
+                            measure=False, series=sz[6]).mu_l > mu * (1 + 1e-9)]
+    if not coarser:
+        return sz
+    other = (sz[0], max(coarser), *sz[2:])
+    # the profile still the largest drawing (LAYOUT.md's cam sheet; _profile_largest): CAM52's A3 set
+    # saved its sheet with the profile at 1:2, 95 mm across beside a phase diagram of several times its area
+    from graphplan.drawing.cam import phase_diagram, profile_drawing
+    g = construct(sol, n, precision, size=other[0], profile_size=other[1], height=other[2], accel=other[3],
+                  H1=other[4], H2=other[5], measure=False, series=other[6])
+    if not _profile_largest(profile_drawing(sol, g, "en").bounds(), phase_diagram(sol, g, "en").bounds()):
+        return sz
+    return other if set_sheets(sol, f, n, precision, other) < set_sheets(sol, f, n, precision, sz) else sz
 
 
 def _diagrams_fit_alone(sol, f: Form, n: int | None, precision: float, sz: tuple) -> bool:
@@ -795,13 +847,20 @@ def notes_alone(page) -> bool:
     return all(leaf.name == "notes" for leaf, _ in page)
 
 
-def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep, later=None):
+def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, region, keep, later=None,
+                  side: bool = False):
     """A set's sheets: the drawings, then the table with the notes after it — on one sheet (every
     sheet of a set carries a drawing or a table: the rocking cam's A3 set gave its last sheet to
     ten lines of notes). The notes as laid out where they do not take a sheet alone; else wrapped
     to the width the sheet leaves beside the table (at least the title block's); else under the
     table, the two one block. ``later``: the title block of the sheets after the first (flow)."""
     laid = flow([leaves, [tab, nts]], region, keep, later=later)
+    # ``side``: the table beside the profile where that saves a sheet — only where ϑ(φ) already stands
+    # with s on its sheet (pressure_by_displacement; else the table's sheet is ϑ(φ)'s: the knife cam's
+    # A2 set and review 13's A3 set lost ϑ(φ) to a sheet saved)
+    by = beside_last(leaves, tab, lines, region, keep, later) if side else None
+    if by is not None and (laid is None or len(by) < len(laid)):
+        return by
     if laid is None or not notes_alone(laid[-1]):
         return laid
     tw = extent(tab)[0]
@@ -820,6 +879,16 @@ def kept_together(leaves: list[Leaf], tab: Leaf, lines: list[str], nts: Leaf, re
         if again is not None and not notes_alone(again[-1]):
             return again
     return laid
+
+
+def beside_last(leaves: list[Leaf], tab: Leaf, lines: list[str], region, keep, later=None):
+    """A set's sheets with Table 1 and the notes under it (wrapped to the table's width) in the last
+    drawing's row, beside the profile where the two fit across and the table clears the title block
+    (flow's ``ragged``): as a row of its own under a profile as tall as the sheet they took a sheet
+    alone, 60 % blank (stop 52: OWN_CAM52's A2 set). None where that lays out nothing."""
+    under = Leaf("notes", record=note_block(lines, max(TITLE, extent(tab)[0])))
+    laid = flow([leaves + [Stack([tab, under], flush=True)]], region, keep, later=later, ragged=True)
+    return None if laid is None or notes_alone(laid[-1]) else laid
 
 
 TABLE_ROW = 8.0      # mm: GOST 2.105's least height of a table's row, where the sheet has room for it
@@ -985,19 +1054,20 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
         # one leaf, their φ origins on one vertical (with_theta; apart places them as two drawings)
         both = own_sheet(Leaf("displacement", record=with_theta(disp.record, leaf.record)), sheet_room(region, keep))
         drawings = leaves[:at] + [both] + leaves[at + 1:]
-        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
+        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid, True):
             return again
     return None
 
 
-def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid):
+def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid,
+                side: bool = False):
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
     first) and the notes kept with it — each arrangement taking no more sheets than ``laid`` and
     leaving no sheet to the notes alone, in that order."""
     for size, row in TABLE_SIZES + ((2.5, 6.0),):
         tab = Leaf("table", record=positions_table(doc, lang, row, size))
         nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
-        again = kept_together(drawings, tab, lines, nts, region, keep, later)
+        again = kept_together(drawings, tab, lines, nts, region, keep, later, side)
         if again is not None and len(again) <= len(laid) and not notes_alone(again[-1]):
             yield again
 
