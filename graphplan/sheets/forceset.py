@@ -465,10 +465,8 @@ def spread(spots: list[Spot], region: Box, keep: Box, gap: float = GAP) -> list[
                 return False
             if s.x + s.w > kx + 1e-9 and s.d + s.h > kd + 1e-9:
                 return False
-            for f in fixed:
-                if s.x < f.x + f.w + gap - 1e-9 and f.x < s.x + s.w + gap - 1e-9 \
-                        and s.d < f.d + f.h + gap - 1e-9 and f.d < s.d + s.h + gap - 1e-9:
-                    return False
+            if any(_overlap(s, f, gap) for f in fixed):
+                return False
         return True
 
     def stretched(sx: float, sy: float) -> list[Spot]:
@@ -499,6 +497,12 @@ def spread(spots: list[Spot], region: Box, keep: Box, gap: float = GAP) -> list[
     return _columns_spread(out, W, kx, kd, gap)
 
 
+def _overlap(s: Spot, o: Spot, gap: float) -> bool:
+    """Two spots closer than ``gap`` in both directions (their rectangles grown by the gap meet)."""
+    return (s.x < o.x + o.w + gap - 1e-9 and o.x < s.x + s.w + gap - 1e-9
+            and s.d < o.d + o.h + gap - 1e-9 and o.d < s.d + s.h + gap - 1e-9)
+
+
 def _columns_spread(spots: list[Spot], W: float, kx: float, kd: float, gap: float) -> list[Spot]:
     """The tables' columns set evenly over the width the sheet leaves them, as a newspaper spaces
     its columns: each column's left moved from the block's left by one factor (``x' = x₀ + s·(x −
@@ -515,10 +519,8 @@ def _columns_spread(spots: list[Spot], W: float, kx: float, kd: float, gap: floa
         for s in trial:
             if s.x + s.w > W + 1e-9 or (s.x + s.w > kx + 1e-9 and s.d + s.h > kd + 1e-9):
                 return False
-            for o in others:
-                if s.x < o.x + o.w + gap - 1e-9 and o.x < s.x + s.w + gap - 1e-9 \
-                        and s.d < o.d + o.h + gap - 1e-9 and o.d < s.d + s.h + gap - 1e-9:
-                    return False
+            if any(_overlap(s, o, gap) for o in others):
+                return False
         return True
 
     def stretched(k: float) -> list[Spot]:
