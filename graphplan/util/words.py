@@ -906,6 +906,29 @@ WORDS.update({
     "cm arm reach": ("коромисло {arm} {m} на відстані {centre} {m} від центра кулачка досягає лише радіусів від {lo} "
                      "до {hi} {m}", "the arm {arm} {m} at {centre} {m} from the cam's centre reaches radii from {lo} "
                      "to {hi} {m} only"),
+    # model/gears.py: a gear scene
+    "gr teeth list": ("має бути списком із {n} чисел зубців, задано {got}", "must be a list of {n} numbers of teeth, got {got}"),
+    "gr teeth": ("число зубців має бути цілим від {lo} до {hi}, задано {got}",
+                 "a number of teeth must be a whole number from {lo} to {hi}, got {got}"),
+    "gr z missing": ("відсутній ({z})", "missing ({z})"),
+    "gr shifts": ("має бути {pair} або {auto}, задано {got}", "must be {pair} or {auto}, got {got}"),
+    "gr shift": ("коефіцієнт зміщення має бути від {lo} до {hi}, задано {got}",
+                 "a shift coefficient must be from {lo} to {hi}, got {got}"),
+    "gr type": ("має бути {a} (однорядний) або {b} (дворядний), задано {got}",
+                "must be {a} (one row) or {b} (two rows), got {got}"),
+    "gr planets": ("число сателітів K має бути цілим від {lo} до {hi}, задано {got}",
+                   "K must be a whole number from {lo} to {hi}, got {got}"),
+    "gr ratio or teeth": ("задайте бажане передавальне відношення ({ratio}) або зубці ({z}), одне з двох",
+                          "give the ratio wanted ({ratio}) or the teeth ({z}), one of them"),
+    "gr type A ratio": ("однорядний механізм типу A має u1H = 1 + z3/z1 > 2, задано {got}",
+                        "a type A train has u1H = 1 + z3/z1 > 2, got {got}"),
+    "gr lever scene": ("у сцені немає таблиці {t1} чи {t2}: вона описує важільний механізм ({cmd} читає сцену "
+                       "зубчастого механізму, {doc})", "the scene has no {t1} or {t2} table: it describes a lever "
+                       "mechanism ({cmd} reads a gear scene, {doc})"),
+    "gr cam scene": ("сцена кулачкового механізму не має таблиці {table} (її креслить {cmd}, {doc})",
+                     "a cam scene has no {table} table ({cmd} draws it, {doc})"),
+    "gr unknown top": ("невідомий ключ у сцені зубчастого механізму (дозволені: {allowed})",
+                       "unknown key in a gear scene (allowed: {allowed})"),
     # exact/cam.py: a cam that cannot be built
     "ec arm reach": ("коромисло {arm} {m} на відстані {centre} {m} від центра кулачка не дістає основної шайби "
                      "R0 = {base} {m}", "the arm {arm} {m} at {centre} {m} from the cam's centre cannot reach the "
