@@ -906,6 +906,19 @@ WORDS.update({
     "cm arm reach": ("коромисло {arm} {m} на відстані {centre} {m} від центра кулачка досягає лише радіусів від {lo} "
                      "до {hi} {m}", "the arm {arm} {m} at {centre} {m} from the cam's centre reaches radii from {lo} "
                      "to {hi} {m} only"),
+    # model/structure.py: the structure of a lever mechanism
+    "st crank pivot": ("кривошип {crank} не з'єднаний зі стояком обертальною парою в точці {pivot}",
+                       "the crank {crank} is not pinned to the frame at {pivot}"),
+    "st mobility": ("ступінь рухомості W = 3·{n} − 2·{p5} = {w}, кривошипному механізму потрібен W = 1 "
+                    "(перевірте {joints} і {slides_on} ланок)",
+                    "mobility W = 3·{n} − 2·{p5} = {w}, a crank mechanism needs W = 1 (check the {joints} and "
+                    "{slides_on} of the links)"),
+    "st no groups": ("механізм не розкладається на структурні групи II класу: ланки {links} не утворюють "
+                     "двоповідкову групу на відомих ланках (чи кожен вхід групи приєднано до ланок, знайдених "
+                     "раніше?)", "cannot decompose into class-II groups: links {links} do not form a dyad on "
+                     "the known links (is every input of a dyad joined to links solved before it?)"),
+    "st ppp": ("ланки {x} і {y}: група з трьох поступальних пар не має певного положення",
+               "links {x} and {y}: a group of three sliding pairs has no fixed position"),
     # model/gears.py: a gear scene
     "gr teeth list": ("має бути списком із {n} чисел зубців, задано {got}", "must be a list of {n} numbers of teeth, got {got}"),
     "gr teeth": ("число зубців має бути цілим від {lo} до {hi}, задано {got}",
