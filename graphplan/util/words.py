@@ -919,6 +919,17 @@ WORDS.update({
                      "the known links (is every input of a dyad joined to links solved before it?)"),
     "st ppp": ("ланки {x} і {y}: група з трьох поступальних пар не має певного положення",
                "links {x} and {y}: a group of three sliding pairs has no fixed position"),
+    # model/motors.py: the motor of the dynamics
+    "mo no motor": ("двигуна {name} немає в каталозі ({first} … {last})", "no motor {name} in the catalogue ({first} … {last})"),
+    "mo no line": ("у каталозі немає серії на {speed} {rpm} ({lines})", "the catalogue has no {speed} {rpm} line ({lines})"),
+    "mo too weak": ("циклу потрібно {power} {kW}, більше, ніж дає найбільший двигун каталогу на {speed} {rpm} ({name}, "
+                    "{largest} {kW})", "the cycle needs {power} {kW}, more than the largest {speed} {rpm} motor of the "
+                    "catalogue ({name}, {largest} {kW})"),
+    "mo positive": ("має бути додатним числом до {hi} {unit}, задано {got}", "must be a positive number up to {hi} {unit}, got {got}"),
+    "mo number": ("має бути числом до {hi} {unit}, задано {got}", "must be a number up to {hi} {unit}, got {got}"),
+    "mo missing": ("відсутній (або назвіть двигун з каталогу)", "missing (or name a catalogue motor)"),
+    "mo rated": ("номінальна частота обертання {rated} {rpm} має бути меншою за синхронну {sync} {rpm}",
+                 "the rated speed {rated} {rpm} must be below the synchronous {sync} {rpm}"),
     # model/gears.py: a gear scene
     "gr teeth list": ("має бути списком із {n} чисел зубців, задано {got}", "must be a list of {n} numbers of teeth, got {got}"),
     "gr teeth": ("число зубців має бути цілим від {lo} до {hi}, задано {got}",
