@@ -930,6 +930,13 @@ WORDS.update({
     "mo missing": ("відсутній (або назвіть двигун з каталогу)", "missing (or name a catalogue motor)"),
     "mo rated": ("номінальна частота обертання {rated} {rpm} має бути меншою за синхронну {sync} {rpm}",
                  "the rated speed {rated} {rpm} must be below the synchronous {sync} {rpm}"),
+    # exact/dynamics.py: a cycle the dynamics cannot take
+    "dy no masses": ("сцена не задає мас і моментів інерції ланок ({keys} у {crank} і {link} або {loads}): "
+                     "зведеного моменту інерції немає", "the scene gives no masses or moments of inertia of its links "
+                     "({keys} in {crank} and {link}, or {loads}): there is no reduced moment of inertia"),
+    "dy no work": ("сили опору не виконують роботи за цикл (A_c = {work} {J}); задайте {force}, що опирається "
+                   "руху вихідної ланки", "the resistance does no work over a cycle (A_c = {work} {J}); give a "
+                   "{force} that resists the output's motion"),
     # model/gears.py: a gear scene
     "gr teeth list": ("має бути списком із {n} чисел зубців, задано {got}", "must be a list of {n} numbers of teeth, got {got}"),
     "gr teeth": ("число зубців має бути цілим від {lo} до {hi}, задано {got}",
