@@ -930,6 +930,26 @@ WORDS.update({
     "mo missing": ("відсутній (або назвіть двигун з каталогу)", "missing (or name a catalogue motor)"),
     "mo rated": ("номінальна частота обертання {rated} {rpm} має бути меншою за синхронну {sync} {rpm}",
                  "the rated speed {rated} {rpm} must be below the synchronous {sync} {rpm}"),
+    # exact/positions.py and exact/kinetostatics.py: the output, the start, the loads
+    "ps output slides": ("ланка {name} ковзає вздовж напрямної стояка й не обертається; назвіть її "
+                         "точку, що ковзає, або ланку, що обертається",
+                         "the link {name} slides along a frame guide and never turns; name its "
+                         "sliding point, or a link that turns"),
+    "ps output neither": ("{name} не є ні ланкою, ні точкою, що ковзає",
+                          "{name} is neither a link nor a sliding point"),
+    "ps start inner": ("внутрішнє й зовнішнє мертві положення має повзун; вихідна ланка "
+                       "{name} задана кутом (візьміть {use})",
+                       "inner and outer dead centres belong to a slider; the output "
+                       "{name} is a link's angle (use {use})"),
+    "ps start no extremes": ("вихідна ланка {name} не має крайніх положень (вона "
+                             "обертається повністю); задайте початок кутом кривошипа",
+                             "the output {name} has no extreme positions (it turns "
+                             "fully); give the start as a crank angle"),
+    "ks frame force": ("{name} — точка стояка; сила на стояк не навантажує механізм",
+                       "{name} is a frame point; a force on the frame does not load the mechanism"),
+    "ks not finite": ("група {group}: силовий розрахунок не скінченний при куті кривошипа {phi}° (навантаження чи "
+                      "геометрія поза межами)", "group {group}: the force analysis is not finite at crank angle "
+                      "{phi}° (loads or geometry out of range)"),
     # exact/dynamics.py: a cycle the dynamics cannot take
     "dy no masses": ("сцена не задає мас і моментів інерції ланок ({keys} у {crank} і {link} або {loads}): "
                      "зведеного моменту інерції немає", "the scene gives no masses or moments of inertia of its links "
