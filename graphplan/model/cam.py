@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from graphplan.model import bounds as B
-from graphplan.util.errors import GraphplanError, SceneError, keyed_error, speaking
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
 
 LAWS = ("parabolic", "cosine", "cycloidal", "linear", "trapezoidal")
 KINDS = ("translating", "rocking")
@@ -123,7 +123,7 @@ def _build(data: dict[str, Any], where: str) -> Cam:
 
     follower = cam.get("follower", "translating")
     if follower not in KINDS:
-        raise fail("cam.follower", "sc one of", choices='"translating", "rocking"', got=B.short(repr(follower)))
+        raise fail("cam.follower", "sc one of", choices=either('translating', 'rocking'), got=B.short(repr(follower)))
     phases_raw = cam.get("phases_deg")
     if not isinstance(phases_raw, dict):
         raise fail("cam.phases_deg", "cm phases table", table="{ rise, dwell_far, return, dwell_near }")
@@ -171,7 +171,7 @@ def _build(data: dict[str, Any], where: str) -> Cam:
     omega = number("rpm", 0.01, 1e5, "rpm") * math.pi / 30 if "rpm" in cam else number("omega", 1e-3, 1e4, "rad/s", 10.0)
     direction = cam.get("direction", "ccw")
     if direction not in ("ccw", "cw"):
-        raise fail("cam.direction", "sc one of", choices='"ccw", "cw"', got=B.short(repr(direction)))
+        raise fail("cam.direction", "sc one of", choices=either('ccw', 'cw'), got=B.short(repr(direction)))
     roller = number("roller_radius", 0.0, 1.0, "m", 0.0)
     if 0 < roller < 1e-5:
         raise fail("cam.roller_radius", "cm roller tiny", got=B._g(roller))

@@ -11,7 +11,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError, SceneError, keyed_error, speaking
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
 from graphplan.util.files import read_text
 from graphplan.util.words import word
 from graphplan.model import bounds as B
@@ -275,7 +275,7 @@ class _Reader:
                  else self.number(raw["rpm"], "crank.rpm", positive=True, bounds=B.RPM) * math.pi / 30)
         direction = raw.get("direction", "ccw")
         if direction not in ("ccw", "cw"):
-            raise self.fail("crank.direction", "sc one of", choices='"ccw", "cw"', got=repr(direction))
+            raise self.fail("crank.direction", "sc one of", choices=either('"ccw"', '"cw"'), got=repr(direction))
         omega = speed if direction == "ccw" else -speed
         name = self.name(raw.get("name", pivot + pin), "crank.name")
         if name == FRAME:
@@ -383,13 +383,13 @@ class _Reader:
         if value in ("max", "min", "working", "idle", "inner", "outer"):
             return value
         if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
-            raise self.fail("positions.start", "sc start", choices='"max", "min", "working", "idle", "inner", "outer"',
+            raise self.fail("positions.start", "sc start", choices=either('"max"', '"min"', '"working"', '"idle"', '"inner"', '"outer"'),
                             got=repr(value))
         return self.number(value, "positions.start", bounds=B.ANGLE) % 360.0
 
     def read_working(self, value: Any) -> str:
         if value not in ("slow", "fast", "to_max", "to_min"):
-            raise self.fail("positions.working_stroke", "sc one of", choices='"slow", "fast", "to_max", "to_min"',
+            raise self.fail("positions.working_stroke", "sc one of", choices=either('"slow"', '"fast"', '"to_max"', '"to_min"'),
                             got=repr(value))
         return value
 
@@ -415,7 +415,7 @@ class _Reader:
                     raise self.fail(f"{key}.{need}", "sc missing")
             stroke = f.get("stroke", "working")
             if stroke not in ("working", "idle", "both"):
-                raise self.fail(f"{key}.stroke", "sc one of", choices='"working", "idle", "both"', got=repr(stroke))
+                raise self.fail(f"{key}.stroke", "sc one of", choices=either('"working"', '"idle"', '"both"'), got=repr(stroke))
             direction = f.get("direction", "oppose")
             if direction != "oppose":
                 direction = self.number(direction, f"{key}.direction", bounds=B.ANGLE)
@@ -438,10 +438,10 @@ class _Reader:
                     raise self.fail(f"{key}.{need}", "sc missing")
             stroke = m.get("stroke", "working")
             if stroke not in ("working", "idle", "both"):
-                raise self.fail(f"{key}.stroke", "sc one of", choices='"working", "idle", "both"', got=repr(stroke))
+                raise self.fail(f"{key}.stroke", "sc one of", choices=either('"working"', '"idle"', '"both"'), got=repr(stroke))
             direction = m.get("direction", "oppose")
             if direction not in ("oppose", "ccw", "cw"):
-                raise self.fail(f"{key}.direction", "sc one of", choices='"oppose", "ccw", "cw"', got=repr(direction))
+                raise self.fail(f"{key}.direction", "sc one of", choices=either('"oppose"', '"ccw"', '"cw"'), got=repr(direction))
             link = self.name(m["link"], f"{key}.link")
             numbers = {str(v.number): name for name, v in links.items()}
             if link not in links and link not in numbers:
@@ -480,7 +480,7 @@ class _Reader:
             out["point"] = self.name(raw["point"], "diagrams.point")
         if "method" in raw:
             if raw["method"] not in ("chords", "tangents"):
-                raise self.fail("diagrams.method", "sc one of", choices='"chords", "tangents"', got=repr(raw["method"]))
+                raise self.fail("diagrams.method", "sc one of", choices=either('"chords"', '"tangents"'), got=repr(raw["method"]))
             out["method"] = raw["method"]
         return out
 
@@ -541,7 +541,7 @@ class _Reader:
         meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}
         if "lang" in data:
             if data["lang"] not in ("uk", "en"):
-                raise self.fail("lang", "sc one of", choices='"uk", "en"', got=repr(data["lang"]))
+                raise self.fail("lang", "sc one of", choices=either('"uk"', '"en"'), got=repr(data["lang"]))
             meta["lang"] = data["lang"]
         sheet = data.get("sheet", {})
         if not isinstance(sheet, dict):

@@ -41,6 +41,14 @@ def keyed_error(cls: type[GraphplanError], where: str | None, key: str, word: st
     return cls(texts["en"], where, texts, lang)
 
 
+def either(*options: str) -> object:
+    """Choices for a refusal, "a, b or c" in each language ("a, b або c")."""
+    def text(lang: str) -> str:
+        last = " або " if lang == "uk" else " or "
+        return ", ".join(options[:-1]) + last + options[-1] if len(options) > 1 else options[0]
+    return text
+
+
 def speaking(exc: GraphplanError, lang: object) -> GraphplanError:
     """``exc`` told the scene's language ``lang`` (when it is one, and the error has none yet): a
     loader that read a scene's ``lang`` lets every refusal from inside it speak that language."""
