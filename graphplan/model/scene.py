@@ -383,8 +383,8 @@ class _Reader:
         if value in ("max", "min", "working", "idle", "inner", "outer"):
             return value
         if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
-            raise self.fail("positions.start", "sc start", choices=either('"max"', '"min"', '"working"', '"idle"', '"inner"', '"outer"'),
-                            got=repr(value))
+            raise self.fail("positions.start", "sc start", got=repr(value),
+                            choices='"max", "min", "working", "idle", "inner", "outer"')
         return self.number(value, "positions.start", bounds=B.ANGLE) % 360.0
 
     def read_working(self, value: Any) -> str:
