@@ -214,7 +214,7 @@ def test_bad_cam_scenes_are_one_line_naming_the_key(tmp_path, old, new, words):
     assert old in BASE
     path = tmp_path / "cam.toml"
     path.write_text(BASE.replace(old, new), encoding="utf-8")
-    code, out, err = run(["cam", str(path)])
+    code, out, err = run(["cam", str(path), "--lang", "en"])
     check_run(["cam"], code, out, err)
     assert code == 2
     for w in words + [str(path)]:
@@ -288,8 +288,8 @@ def test_keys_for_cam_variants_are_graded_by_check(tmp_path):
 
 def test_each_kind_of_scene_to_its_commands():
     """A lever command on a cam scene and `cam` on a lever scene each say so in one line."""
-    for argv, words in ((["analyze", str(TRANSLATING)], ["a cam scene", "graphplan cam"]),
-                        (["cam", str(ROOT / "examples" / "shaper.toml")], ["no [cam] table"])):
+    for argv, words in ((["analyze", str(TRANSLATING), "--lang", "en"], ["a cam scene", "graphplan cam"]),
+                        (["cam", str(ROOT / "examples" / "shaper.toml"), "--lang", "en"], ["no [cam] table"])):
         code, out, err = run(argv)
         check_run(argv, code, out, err)
         assert code == 2 and all(w in err for w in words), err

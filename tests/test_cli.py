@@ -114,7 +114,8 @@ def test_bad_input_is_one_line_exit_2(tmp_path, case):
         text = example_text.replace("[branch]\nB = 1", text[1:].strip())
     path = tmp_path / "bad.toml"
     path.write_text(text, encoding="utf-8")
-    proc = subprocess.run([sys.executable, "-m", "graphplan", "analyze", str(path)],
+    lang = [] if case == "assembly" else ["--lang", "en"]       # the English wording; assembly: the scene's (uk)
+    proc = subprocess.run([sys.executable, "-m", "graphplan", "analyze", str(path)] + lang,
                           capture_output=True, text=True, cwd=ROOT)
     assert proc.returncode == 2
     assert proc.stdout == ""

@@ -593,6 +593,7 @@ def test_each_kind_of_scene_to_its_commands():
                         (["cam", str(GEARS)], ["gear mechanism"]),
                         (["gears", str(ROOT / "examples" / "shaper.toml")], ["no [gears] or [planetary]"]),
                         (["gears", str(ROOT / "examples" / "cam_translating.toml")], ["no [gears] or [planetary]"])):
+        argv = argv + ["--lang", "en"]                 # the English wording (the scenes speak Ukrainian)
         code, out, err = run(argv)
         check_run(argv, code, out, err)
         assert code == 2 and all(w in err for w in words), err

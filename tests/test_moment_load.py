@@ -133,7 +133,7 @@ def test_a_bad_moment_is_refused_in_one_line(tmp_path, capsys, bad, words):
     text = "\n".join(bad if line.startswith(key + " = ") else line for line in scene().splitlines())
     path = tmp_path / "bad.toml"
     path.write_text(text, encoding="utf-8")
-    assert main(["forces", str(path)]) == 2
+    assert main(["forces", str(path), "--lang", "en"]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and words in err, err
 

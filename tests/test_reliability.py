@@ -112,15 +112,15 @@ def test_extreme_options_are_refused_with_their_range(argv, words):
 ])
 def test_scene_numbers_and_names_are_checked_with_meaning(tmp_path, old, new, words):
     assert old in BASE
-    refused(["analyze", scene(tmp_path, BASE.replace(old, new, 1)), "--json"], *words)
+    refused(["analyze", scene(tmp_path, BASE.replace(old, new, 1)), "--json", "--lang", "en"], *words)
 
 
 def test_deep_toml_and_big_files_are_refused(tmp_path):
-    refused(["analyze", scene(tmp_path, BASE + "\nx = " + "[" * 3000 + "]" * 3000)], "nested too deeply")
+    refused(["analyze", scene(tmp_path, BASE + "\nx = " + "[" * 3000 + "]" * 3000), "--lang", "en"], "nested too deeply")
     refused(["analyze", scene(tmp_path, BASE + "\nx = " + "{a = " * 500 + "1" + "}" * 500)])
     big = tmp_path / "big.toml"
     big.write_text(BASE + "#" * (2 * 1024 * 1024), encoding="utf-8")
-    refused(["analyze", big], "larger than")
+    refused(["analyze", big, "--lang", "en"], "larger than")
     refused(["analyze", "/dev/zero"], "not a regular file")
     refused(["analyze", tmp_path], "folder")
 
@@ -182,7 +182,7 @@ def test_frame_guides_that_are_not_a_table(tmp_path):
     """Found by the census: `[frame] guides = [[1]]` was an internal TypeError."""
     text = BASE.replace('[frame.guides]\nx = { through = [0, "e"], angle_deg = 0 }', "").replace(
         "[frame.points]", "[frame]\nguides = [[1]]\n[frame.points]")
-    refused(["analyze", scene(tmp_path, text)], "frame.guides", "must be a table")
+    refused(["analyze", scene(tmp_path, text), "--lang", "en"], "frame.guides", "must be a table")
 
 
 # -- key and check --------------------------------------------------------------------------------

@@ -58,7 +58,7 @@ def with_motor(extra: str) -> str:
 @pytest.mark.parametrize("command", ["analyze", "plans", "forces"])
 def test_a_crank_named_like_the_frame_is_refused(tmp_path, command):
     path = scene(tmp_path, CRANK_SLIDER.replace('name = "OA"', 'name = "0"'))
-    ends([command, path], 2, "crank.name", "frame")
+    ends([command, path, "--lang", "en"], 2, "crank.name", "frame")
 
 
 @pytest.mark.parametrize("extra, key", [(', omega_sync = "x"', "omega_sync"), (", omega_rated = [1, 2]", "omega_rated"),
@@ -88,7 +88,7 @@ def test_an_oversized_motor_is_integrated_as_a_stiff_system(tmp_path):
 @pytest.mark.parametrize("command", ["forces", "dynamics"])
 def test_a_subnormal_mass_is_refused(tmp_path, command):
     path = scene(tmp_path, SHAPER.replace("mass = 40", "mass = 5e-324"))
-    ends([command, path], 2, "link C.mass", "0 or from 1e-06")
+    ends([command, path, "--lang", "en"], 2, "link C.mass", "0 or from 1e-06")
 
 
 def test_tangents_at_precision_0_give_null_not_infinity(tmp_path):
@@ -118,7 +118,7 @@ def test_output_naming_the_slider_link_and_its_point_means_the_point(tmp_path):
 
 def test_a_link_that_never_turns_is_no_output(tmp_path):
     text = CRANK_SLIDER.replace('name = "B"', 'name = "slider"').replace("accel = [1]", 'accel = [1]\noutput = "slider"')
-    ends(["analyze", scene(tmp_path, text)], 2, "positions.output", "never turns")
+    ends(["analyze", scene(tmp_path, text), "--lang", "en"], 2, "positions.output", "never turns")
 
 
 def test_a_crank_slider_with_l_equal_r_is_refused_naming_the_angle(tmp_path):

@@ -157,9 +157,9 @@ def test_check_and_refusals_say_the_command_line_s_own_line(client, tmp_path):
     english = refused(client.post("/api/scene/check?lang=en", content=short.encode()))
     assert "crank angles" in english and english == cli_line(tmp_path, short, "analyze", "scene.toml", "--lang", "en")
     bad_key = CRANK.replace("[positions]", "[positions]\nspeed = 3")
-    assert refused(client.post("/api/scene/check", content=bad_key.encode())).startswith(
+    assert refused(client.post("/api/scene/check?lang=en", content=bad_key.encode())).startswith(
         "scene.toml: positions.speed: unknown key")
-    assert refused(client.post("/api/scene/check", content=b"\xff\xfe")) == "scene.toml: the scene is not UTF-8 text"
+    assert refused(client.post("/api/scene/check?lang=en", content=b"\xff\xfe")) == "scene.toml: the scene is not UTF-8 text"
 
 
 def test_every_option_refused_in_one_line(client):

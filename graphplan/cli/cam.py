@@ -52,7 +52,7 @@ def cmd_cam(args: argparse.Namespace) -> int:
         sol = solve(cam)
         g = construct_on(sol, f, args.divisions, args.precision, lang)     # the sheet's in that language
     except GraphplanError as exc:
-        raise GraphplanError(str(exc), exc.where or args.scene) from None
+        raise GraphplanError(str(exc), exc.where or args.scene, exc.said, exc.lang) from None
     if args.svg:
         write_svg(sol, g, args.svg, lang)
     doc = cam_json(sol, g, args.scene)

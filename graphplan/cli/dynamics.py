@@ -53,7 +53,7 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
     try:
         dyn = analyse(st, args.delta)
     except GraphplanError as exc:
-        raise GraphplanError(str(exc), exc.where or args.scene) from None
+        raise GraphplanError(str(exc), exc.where or args.scene, exc.said, exc.lang) from None
     from graphplan.sheets.dynamics import dynamics_scales     # the construction the sheet draws
     # as the sheet draws it: redrawn on more divisions where the first drawing is past the lab's 5 %
     # (graphic.flywheel.redrawn), unless --divisions (or the scene) gives them

@@ -57,7 +57,7 @@ def view_cam(cam, args: argparse.Namespace, out: Path) -> int:
         sol = solve(cam)
         g = construct_on(sol, form("A1"), None, args.precision)    # the numbers of `graphplan cam`
     except GraphplanError as exc:
-        raise GraphplanError(str(exc), exc.where or args.scene) from None
+        raise GraphplanError(str(exc), exc.where or args.scene, exc.said, exc.lang) from None
     write_atomic(out, cam_html(sol, g, step=args.step, lang=lang, scene=args.scene))
     return 0
 

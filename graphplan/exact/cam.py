@@ -23,7 +23,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from graphplan.model.cam import Cam
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, keyed_error
+from graphplan.util.words import Fixed
+
+
+def _refusal(cam: Cam, key: str, word: str, /, **fields: object) -> GraphplanError:
+    """A cam that cannot be built, worded by the catalogue (util.words) in the scene's language."""
+    return keyed_error(GraphplanError, cam.source, key, word, dict(cam.meta).get("lang"), **fields)
 
 Array = np.ndarray
 
@@ -122,19 +128,22 @@ class Geometry:
     psi0: float = 0.0
 
 
+def _g(value: float) -> object:
+    """A value for a refusal written "%g" in each language (a decimal comma in Ukrainian)."""
+    return lambda lang: f"{value:g}".replace(".", ",") if lang == "uk" else f"{value:g}"
+
+
 def geometry(cam: Cam, R0: float, e: float | None = None) -> Geometry:
     e = cam.offset if e is None else e
     if cam.rocking:
         a, l = cam.centre_distance, cam.arm
         c = (a * a + l * l - R0 * R0) / (2 * a * l)
         if not -1 < c < 1:
-            raise GraphplanError(f"the arm {l:g} m at {a:g} m from the cam's centre cannot reach the base "
-                                 f"circle R0 = {R0:g} m", cam.source)
+            raise _refusal(cam, "", "ec arm reach", arm=_g(l), centre=_g(a), base=_g(R0))
         return Geometry(R0, 0.0, math.acos(c))
     e = e or 0.0
     if abs(e) >= R0:
-        raise GraphplanError(f"the offset |e| = {abs(e):g} m must be smaller than the base radius {R0:g} m",
-                             cam.source)
+        raise _refusal(cam, "", "ec offset base", e=_g(abs(e)), base=_g(R0))
     return Geometry(R0, e)
 
 
@@ -235,8 +244,7 @@ def min_base_radius(cam: Cam, e: float | None = None) -> float:
         while _refined_worst(cam, hi, e) > 1:
             hi *= 2
             if hi > 1e4:
-                raise GraphplanError("no base radius keeps the pressure angles within the allowed ones",
-                                     cam.source)
+                raise _refusal(cam, "", "ec no base")
     f = lambda R0: _refined_worst(cam, R0, e) - 1.0          # noqa: E731
     if cam.rocking:
         # the arm's angle changes with R0 and |ϑ| is not monotone in it: the allowed radii are a band;
@@ -277,10 +285,8 @@ def _narrow_band(cam: Cam, e, scan: Array, ratios: list[float], quick, f) -> tup
     rise, ret = phase_maxima(cam, geometry(cam, R, e))
     k = 0 if rise / cam.allowed[0] >= ret / cam.allowed[1] else 1
     name, least = ("rise", rise) if k == 0 else ("return", ret)
-    raise GraphplanError(f"the {name}'s pressure angle stays above its allowed "
-                         f"{cam.allowed[k]:g}° at every base radius the rocking arm reaches (at best "
-                         f"{least:.2f}° at R0 = {R * 1000:.3f} mm); allow a larger angle or change the arm "
-                         "or the centre distance", cam.source)
+    raise _refusal(cam, "", "ec rise pressure" if k == 0 else "ec return pressure", allowed=_g(cam.allowed[k]),
+                   least=Fixed(least, 2), R0=Fixed(R * 1000, 3))
 
 
 def bracketed_root(f, lo: float, hi: float) -> float:
@@ -495,8 +501,7 @@ def solve(cam: Cam) -> Solution:
     elif abs(e) >= R0:
         R0 = math.ceil(abs(e) * 1000 + 1) / 1000
     if cam.roller >= R0:
-        raise GraphplanError(f"cam.roller_radius: the roller ({cam.roller:g} m) must be smaller than the base "
-                             f"circle ({R0:g} m)", cam.source)
+        raise _refusal(cam, "cam.roller_radius", "cm roller base", roller=_g(cam.roller), base=_g(R0))
     sol = Solution(cam, geometry(cam, R0, e), r_min, [])
     for k, name in enumerate(("rise", "return")):
         if cam.laws[k] == "linear":

@@ -33,7 +33,7 @@ from graphplan.exact.kinematics import Kinematics, dot, solve
 from graphplan.exact.kinetostatics import loads, output_distance, working_stroke
 from graphplan.exact.positions import Study
 from graphplan.model.motors import Motor, choose, latin
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, keyed_error, speaking
 from graphplan.util.words import num
 
 Array = np.ndarray
@@ -81,9 +81,8 @@ def masses(st: Study) -> list[tuple[str, complex, float, float]]:
             com = link.com or next(iter(link.local))
             out.append((name, link.local[com], m, i_s))
     if not out:
-        raise GraphplanError("dynamics: the scene gives no masses or moments of inertia of its links "
-                             "(mass, inertia in [crank] and [[link]], or [loads] mass_per_length): "
-                             "there is no reduced moment of inertia", st.mech.source)
+        raise keyed_error(GraphplanError, st.mech.source, "dynamics", "dy no masses", st.mech.task.meta.get("lang"),
+                          keys="mass, inertia", crank="[crank]", link="[[link]]", loads="[loads] mass_per_length")
     return out
 
 
@@ -238,8 +237,8 @@ def cycle(st: Study, step_deg: float = STEP_DEG) -> Cycle:
                       np.concatenate([p.inertia for p in parts]), np.concatenate([p.d_inertia for p in parts]),
                       np.concatenate([p.moment for p in parts]), np.concatenate([p.working for p in parts]))
     if not start > 1e-9 * 2 * math.pi * max(float(np.max(np.abs(samples.moment))), 1e-300):
-        raise GraphplanError(f"dynamics: the resistance does no work over a cycle (A_c = {start:.3g} J); "
-                             "give a [[force]] that resists the output's motion", st.mech.source)
+        raise keyed_error(GraphplanError, st.mech.source, "dynamics", "dy no work", st.mech.task.meta.get("lang"),
+                          work=float(start), force="[[force]]")
     return Cycle(b, pieces, start, samples)
 
 
@@ -446,7 +445,10 @@ def drive(st: Study, c: Cycle) -> Drive:
     d = st.mech.drive
     w1 = abs(st.mech.omega1)
     needed = float(np.max(c.samples.moment)) * w1 / d.efficiency / 1000.0
-    motor = d.motor or choose(needed, d.rpm_sync, st.mech.source)
+    try:
+        motor = d.motor or choose(needed, d.rpm_sync, st.mech.source)
+    except GraphplanError as exc:
+        raise speaking(exc, st.mech.task.meta.get("lang"))
     ratio = d.ratio or motor.omega_rated / w1
     rotor = motor.inertia if d.rotor_inertia is None else d.rotor_inertia
     return Drive(motor, ratio, d.efficiency, rotor * ratio ** 2, d.reducer_inertia + reducer_shafts(d, ratio),

@@ -26,7 +26,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.util.errors import GraphplanError, SceneError, keyed_error, said_error
+from graphplan.util.words import Fixed
 from graphplan.exact.kinematics import Kinematics, cross, dot, solve, solve2
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study, working_start
@@ -193,8 +194,8 @@ def force_link(mech: Mechanism, point: str) -> str:
     the next group hinged there too — else the last link (in the scene's order) that carries it."""
     holders = [b for b in mech.bodies_of(point) if b != FRAME]
     if not holders:
-        raise GraphplanError(f"force.point: {point!r} is a frame point; a force on the frame does "
-                             "not load the mechanism", mech.source)
+        raise keyed_error(GraphplanError, mech.source, "force.point", "ks frame force", mech.task.meta.get("lang"),
+                          name=repr(point))
     sliders = [b for b in holders if mech.links[b].slides_on is not None]
     framed = [b for b in sliders if mech.guides[mech.links[b].slides_on].body == FRAME]
     return (framed or sliders or holders)[-1]
@@ -463,8 +464,8 @@ def _finite(st: Study, phi: Array, group: str, arrays: list[Array]) -> None:
     for arr in arrays:
         ok &= np.isfinite(np.broadcast_to(arr, phi.shape))
     if not np.all(ok):
-        raise SceneError(f"group {group}: the force analysis is not finite at crank angle "
-                         f"{float(phi[~ok][0]):.2f}° (loads or geometry out of range)", st.mech.source)
+        raise said_error(SceneError, "ks not finite", st.mech.source, st.mech.task.meta.get("lang"), group=group,
+                         phi=Fixed(float(phi[~ok][0]), 2))
 
 
 def at_scene_angle(st: Study) -> float:

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from graphplan.util.words import Fixed, pair_kind, said, word
-from graphplan.util.errors import AssemblyError, SceneError, said_error
+from graphplan.util.errors import AssemblyError, SceneError, keyed_error, said_error
 from graphplan.exact.kinematics import REACH, Kinematics, solve
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.model.structure import Structure, analyse
@@ -105,11 +105,11 @@ def default_output(mech: Mechanism, structure: Structure) -> Output:
                 return Output("slide", mech.output)
         if mech.output in mech.links:
             if not turns(mech, mech.output):
-                raise SceneError(f"positions.output: the link {mech.output!r} slides along a frame guide and "
-                                 "never turns; name its sliding point, or a link that turns", mech.source)
+                raise keyed_error(SceneError, mech.source, "positions.output", "ps output slides", _lang(mech),
+                                  name=repr(mech.output))
             return Output("link", mech.output)
-        raise SceneError(f"positions.output: {mech.output!r} is neither a link nor a sliding point",
-                         mech.source)
+        raise keyed_error(SceneError, mech.source, "positions.output", "ps output neither", _lang(mech),
+                          name=repr(mech.output))
     for force in mech.forces:          # the useful resistance's slide: the working member
         for link in mech.links.values():
             if (link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
@@ -492,8 +492,8 @@ def dead_centre(mech: Mechanism, output: Output, kin: Kinematics, extremes: tupl
     """The textbook's dead centres of a slider: the inner one has the slider nearest the crank's
     pivot, the outer one farthest from it."""
     if output.kind != "slide":
-        raise SceneError(f"positions.start = {which!r}: inner and outer dead centres belong to a slider; "
-                         f"the output {output.name} is a link's angle (use \"max\"/\"min\")", mech.source)
+        raise keyed_error(SceneError, mech.source, f"positions.start = {which!r}", "ps start inner", _lang(mech),
+                          name=output.name, use='"max"/"min"')
     reach = np.abs(kin.point(output.name)[0] - mech.frame[mech.crank.pivot])   # the slider's point
     pick = np.argmin(reach) if which == "inner" else np.argmax(reach)
     return float(extremes[int(pick)])
@@ -505,8 +505,8 @@ def choose_start(mech: Mechanism, structure: Structure, output: Output,
     if not isinstance(mech.start, str):
         return float(mech.start)
     if len(extremes) < 2:
-        raise SceneError(f"positions.start = {mech.start!r}: the output {output.name} has no extreme "
-                         "positions (it turns fully); give the start as a crank angle", mech.source)
+        raise keyed_error(SceneError, mech.source, f"positions.start = {mech.start!r}", "ps start no extremes",
+                          _lang(mech), name=output.name)
     kin = solve(mech, structure, list(extremes))
     values = output.value(kin)
     hi = float(extremes[int(np.argmax(values))])

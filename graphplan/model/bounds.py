@@ -16,7 +16,7 @@ import unicodedata
 from dataclasses import dataclass
 from typing import Any
 
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import SceneError, keyed_error
 
 MAX_SCENE_BYTES = 1024 * 1024        # the largest example is 3 kB
 MAX_TOML_DEPTH = 12                  # tables in tables in arrays … (a scene needs 4)
@@ -40,14 +40,27 @@ class Range:
         above = value > self.lo if self.lo_open else value >= self.lo
         return math.isfinite(value) and above and value <= self.hi and not 0.0 < abs(value) < self.floor
 
-    def text(self) -> str:
-        unit = f" {self.unit}" if self.unit else ""
+    def text(self, lang: str = "en") -> str:
+        """The interval as a person reads it, in ``lang`` (the unit too; a decimal comma in Ukrainian)."""
+        uk = lang == "uk"
+        unit = f" {_unit(self.unit, lang)}" if self.unit else ""
+
+        def g(v: float) -> str:
+            return f"{v:g}".replace(".", ",") if uk else f"{v:g}"
         if self.floor:
-            zero = "0 or " if not self.lo_open else ""
-            return f"{zero}from {self.floor:g} to {self.hi:g}{unit}"
+            zero = ("0 або " if uk else "0 or ") if not self.lo_open else ""
+            return f"{zero}{'від' if uk else 'from'} {g(self.floor)} {'до' if uk else 'to'} {g(self.hi)}{unit}"
         if self.lo == -self.hi:
-            return f"|value| ≤ {self.hi:g}{unit}"
-        return f"from {self.lo:g}{' (exclusive)' if self.lo_open else ''} to {self.hi:g}{unit}"
+            return f"|{'значення' if uk else 'value'}| ≤ {g(self.hi)}{unit}"
+        excl = (" (не включно)" if uk else " (exclusive)") if self.lo_open else ""
+        return f"{'від' if uk else 'from'} {g(self.lo)}{excl} {'до' if uk else 'to'} {g(self.hi)}{unit}"
+
+
+def _unit(key: str, lang: str) -> str:
+    """A range's unit in ``lang`` (kg/m is not among the sheets' units)."""
+    from graphplan.util.words import UNITS
+    uk, en = UNITS.get(key, ("кг/м", "kg/m") if key == "kg/m" else (key, key))
+    return uk if lang == "uk" else en
 
 
 LENGTH = Range(1e-5, 1e3, "m")                 # a link, a stroke, a centre distance
@@ -78,7 +91,7 @@ DYNAMICS_DIVISIONS = (4, 360)                        # the flywheel construction
 def check(value: float, bounds: Range, key: str, where: str) -> float:
     """``value`` when it lies within ``bounds``; else the one-line refusal naming the key and range."""
     if not bounds.holds(value):
-        raise SceneError(f"{key}: must be {bounds.text()}, got {value:g}", where)
+        raise keyed_error(SceneError, where, key, "bad range", range=lambda lang: bounds.text(lang), got=_g(value))
     return value
 
 
@@ -86,8 +99,7 @@ def check_count(value: Any, bounds: tuple[int, int], key: str, where: str) -> in
     """A whole number within ``bounds`` (booleans are not numbers)."""
     lo, hi = bounds
     if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise SceneError(f"{key}: must be a whole number from {lo} to {hi}, got {short(repr(value))}",
-                         where)
+        raise keyed_error(SceneError, where, key, "bad count", lo=lo, hi=hi, got=short(repr(value)))
     return value
 
 
@@ -95,8 +107,13 @@ def to_float(value: int | float, key: str, where: str) -> float:
     """A TOML number as a float; integers beyond ±10¹⁵ are refused (they are typos, and 400 digits
     overflow a float)."""
     if isinstance(value, int) and abs(value) > MAX_INT:
-        raise SceneError(f"{key}: the integer is too large (|value| ≤ {MAX_INT:.0e})", where)
+        raise keyed_error(SceneError, where, key, "bad large integer", most=f"{MAX_INT:.0e}")
     return float(value)
+
+
+def _g(value: float) -> object:
+    """A value for a refusal: written "%g" in each language (a decimal comma in Ukrainian)."""
+    return lambda lang: f"{value:g}".replace(".", ",") if lang == "uk" else f"{value:g}"
 
 
 def short(text: str, limit: int = 40) -> str:
@@ -114,26 +131,26 @@ def clean_text(value: Any) -> str:
 
 
 def name_problem(name: str) -> str | None:
-    """Why a point's, link's or guide's name cannot be used, or None when it can."""
+    """Why a point's, link's or guide's name cannot be used (the catalogue's word), or None when it can."""
     if len(name) > MAX_NAME:
-        return f"a name has at most {MAX_NAME} characters"
+        return "bad name long"
     if any(unicodedata.category(c).startswith(("C", "Z")) for c in name):
-        return "a name has no spaces or control characters"
+        return "bad name spaces"
     return None
 
 
 def parse_toml(text: str, where: str) -> dict[str, Any]:
     """The TOML tree of a scene, bounded: size, nesting depth, integers' size."""
     if len(text.encode("utf-8", "surrogatepass")) > MAX_SCENE_BYTES:
-        raise SceneError(f"the scene is larger than {MAX_SCENE_BYTES // 1024} kB", where)
+        raise keyed_error(SceneError, where, "", "bad scene size", kb=MAX_SCENE_BYTES // 1024)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"TOML syntax error: {short(str(exc), 120)}", where) from None
+        raise keyed_error(SceneError, where, "", "bad toml syntax", toml="TOML", why=short(str(exc), 120)) from None
     except RecursionError:
-        raise SceneError(f"TOML nested too deeply (at most {MAX_TOML_DEPTH} levels)", where) from None
+        raise keyed_error(SceneError, where, "", "bad toml depth", toml="TOML", most=MAX_TOML_DEPTH) from None
     except ValueError as exc:          # e.g. an integer of more than 4300 digits
-        raise SceneError(f"TOML value cannot be read: {short(str(exc), 80)}", where) from None
+        raise keyed_error(SceneError, where, "", "bad toml value", toml="TOML", why=short(str(exc), 80)) from None
     check_tree(data, where)
     return data
 
@@ -144,7 +161,7 @@ def check_tree(data: Any, where: str) -> None:
     while stack:
         node, depth = stack.pop()
         if depth > MAX_TOML_DEPTH:
-            raise SceneError(f"TOML nested too deeply (at most {MAX_TOML_DEPTH} levels)", where)
+            raise keyed_error(SceneError, where, "", "bad toml depth", toml="TOML", most=MAX_TOML_DEPTH)
         if isinstance(node, dict):
             stack.extend((v, depth + 1) for v in node.values())
         elif isinstance(node, list):

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from graphplan.model import bounds as B
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
 
 LAWS = ("parabolic", "cosine", "cycloidal", "linear", "trapezoidal")
 KINDS = ("translating", "rocking")
@@ -71,112 +71,119 @@ def load(path: str | Path) -> Cam:
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise SceneError("the scene is not UTF-8 text", where) from None
+        raise keyed_error(SceneError, where, "", "cm not utf8", utf="UTF-8") from None
     return build(B.parse_toml(text, where), where)
 
 
 def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
-    """The checked cam from a parsed scene: one line naming the key for anything wrong."""
-    def fail(key: str, what: str) -> SceneError:
-        return SceneError(f"{key}: {what}", where)
+    """The checked cam from a parsed scene: one line naming the key for anything wrong, in the
+    scene's ``lang`` (unless --lang says otherwise)."""
+    try:
+        return _build(data, where)
+    except GraphplanError as exc:
+        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+
+
+def _build(data: dict[str, Any], where: str) -> Cam:
+    lang = data.get("lang") if isinstance(data, dict) and data.get("lang") in ("uk", "en") else None
+
+    def fail(key: str, word: str, /, **fields: object) -> SceneError:
+        """The refusal of ``key`` worded by the catalogue's ``word`` (util.words) in both languages."""
+        return keyed_error(SceneError, where, key, word, lang, **fields)
 
     if "cam" not in data and ("gears" in data or "planetary" in data):
-        raise SceneError("the scene has no [cam] table: it describes a gear mechanism (graphplan gears and "
-                         "graphplan sheet draw it, docs/gears.md)", where)
+        raise fail("", "cm gear scene", table="[cam]", cmd1="graphplan gears", cmd2="graphplan sheet", doc="docs/gears.md")
     if "cam" not in data:
-        raise SceneError("the scene has no [cam] table: it describes a lever mechanism (graphplan cam reads a "
-                         "cam scene, docs/cams.md)", where)
+        raise fail("", "cm lever scene", table="[cam]", cmd="graphplan cam", doc="docs/cams.md")
     unknown = sorted(set(data) - _TOP)
     if unknown:
-        raise fail(unknown[0], f"unknown key in a cam scene (allowed: {', '.join(sorted(_TOP))})")
+        raise fail(unknown[0], "cm unknown top", allowed=", ".join(sorted(_TOP)))
     cam = data.get("cam")
     if not isinstance(cam, dict):
-        raise fail("cam", "must be a table")
+        raise fail("cam", "sc table")
     unknown = sorted(set(cam) - _CAM)
     if unknown:
-        raise fail(f"cam.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(_CAM))})")
+        raise fail(f"cam.{unknown[0]}", "sc unknown key", allowed=", ".join(sorted(_CAM)))
 
     def number(key: str, lo: float, hi: float, unit: str, default: float | None = None,
                lo_open: bool = False) -> float:
         if key not in cam:
             if default is None:
-                raise fail(f"cam.{key}", "missing")
+                raise fail(f"cam.{key}", "sc missing")
             return default
         v = cam[key]
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise fail(f"cam.{key}", f"must be a number, got {B.short(repr(v))}")
+            raise fail(f"cam.{key}", "cm number", got=B.short(repr(v)))
         v = B.to_float(v, f"cam.{key}", where)
         ok = math.isfinite(v) and (v > lo if lo_open else v >= lo) and v <= hi
         if not ok:
-            raise fail(f"cam.{key}", f"must be from {lo:g}{' (exclusive)' if lo_open else ''} to {hi:g} {unit}, "
-                       f"got {v:g}")
+            span = B.Range(lo, hi, unit, lo_open)
+            raise fail(f"cam.{key}", "bad range", range=lambda lang: span.text(lang), got=B._g(v))
         return v
 
     follower = cam.get("follower", "translating")
     if follower not in KINDS:
-        raise fail("cam.follower", f"must be translating or rocking, got {B.short(repr(follower))}")
+        raise fail("cam.follower", "sc one of", choices=either('translating', 'rocking'), got=B.short(repr(follower)))
     phases_raw = cam.get("phases_deg")
     if not isinstance(phases_raw, dict):
-        raise fail("cam.phases_deg", "must be a table { rise, dwell_far, return, dwell_near } in degrees")
+        raise fail("cam.phases_deg", "cm phases table", table="{ rise, dwell_far, return, dwell_near }")
     extra = sorted(set(phases_raw) - set(_PHASES))
     if extra:
-        raise fail(f"cam.phases_deg.{extra[0]}", f"unknown phase (allowed: {', '.join(_PHASES)})")
+        raise fail(f"cam.phases_deg.{extra[0]}", "cm unknown phase", allowed=", ".join(_PHASES))
     phases = []
     for name in _PHASES:
         v = phases_raw.get(name, None if name in ("rise", "return") else 0.0)
         if v is None:
-            raise fail(f"cam.phases_deg.{name}", "missing")
+            raise fail(f"cam.phases_deg.{name}", "sc missing")
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(float(v)) \
                 or not 0 <= float(v) <= 360:
-            raise fail(f"cam.phases_deg.{name}", f"must be from 0 to 360°, got {B.short(repr(v))}")
+            raise fail(f"cam.phases_deg.{name}", "cm angle", lo=0, hi=360, got=B.short(repr(v)))
         phases.append(float(v))
     if phases[0] < 5 or phases[2] < 5:
-        raise fail("cam.phases_deg", "the rise and the return take at least 5° each")
+        raise fail("cam.phases_deg", "cm short phase")
     if abs(sum(phases) - 360.0) > 1e-9:
-        raise fail("cam.phases_deg", f"the four phases must sum to 360°, they sum to {sum(phases):g}°")
+        raise fail("cam.phases_deg", "cm phases sum", got=B._g(sum(phases)))
     laws_raw = cam.get("laws", {})
     if isinstance(laws_raw, str):
         laws_raw = {"rise": laws_raw, "return": laws_raw}
     if not isinstance(laws_raw, dict):
-        raise fail("cam.laws", "must be a law's name or a table { rise, return }")
+        raise fail("cam.laws", "cm laws table", table="{ rise, return }")
     laws = []
     for name in ("rise", "return"):
         law = laws_raw.get(name, "cosine")
         if law not in LAWS:
-            raise fail(f"cam.laws.{name}", f"unknown law {B.short(repr(law))} (known: {', '.join(LAWS)})")
+            raise fail(f"cam.laws.{name}", "cm unknown law", got=B.short(repr(law)), known=", ".join(LAWS))
         laws.append(law)
     rocking = follower == "rocking"
     allowed_raw = cam.get("pressure_angle_deg", 45.0 if rocking else 30.0)
     if isinstance(allowed_raw, (int, float)) and not isinstance(allowed_raw, bool):
         allowed_raw = {"rise": allowed_raw, "return": allowed_raw}
     if not isinstance(allowed_raw, dict):
-        raise fail("cam.pressure_angle_deg", "must be an angle or a table { rise, return } in degrees")
+        raise fail("cam.pressure_angle_deg", "cm pressure table", table="{ rise, return }")
     allowed = []
     for name in ("rise", "return"):
         v = allowed_raw.get(name, 45.0 if rocking else 30.0)
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not 5 <= float(v) <= 80:
-            raise fail(f"cam.pressure_angle_deg.{name}", f"must be from 5 to 80°, got {B.short(repr(v))}")
+            raise fail(f"cam.pressure_angle_deg.{name}", "cm angle", lo=5, hi=80, got=B.short(repr(v)))
         allowed.append(float(v))
     if "omega" in cam and "rpm" in cam:
-        raise fail("cam.rpm", "give omega or rpm, not both")
+        raise fail("cam.rpm", "cm speed both", omega="omega", rpm="rpm")
     omega = number("rpm", 0.01, 1e5, "rpm") * math.pi / 30 if "rpm" in cam else number("omega", 1e-3, 1e4, "rad/s", 10.0)
     direction = cam.get("direction", "ccw")
     if direction not in ("ccw", "cw"):
-        raise fail("cam.direction", f"must be ccw or cw, got {B.short(repr(direction))}")
+        raise fail("cam.direction", "sc one of", choices=either('ccw', 'cw'), got=B.short(repr(direction)))
     roller = number("roller_radius", 0.0, 1.0, "m", 0.0)
     if 0 < roller < 1e-5:
-        raise fail("cam.roller_radius", f"must be 0 (a knife-edge) or from 1e-05 m, got {roller:g}")
+        raise fail("cam.roller_radius", "cm roller tiny", got=B._g(roller))
     divisions = cam.get("divisions", 8)
     if isinstance(divisions, bool) or not isinstance(divisions, int) or not 2 <= divisions <= 360:
-        raise fail("cam.divisions", f"must be a whole number from 2 to 360 (intervals of each phase), got "
-                                    f"{B.short(repr(divisions))}")
+        raise fail("cam.divisions", "cm divisions", got=B.short(repr(divisions)))
     offset: float | None
     arm = centre = 0.0
     if rocking:
         for key in ("stroke", "offset"):
             if key in cam:
-                raise fail(f"cam.{key}", "is for a translating follower; a rocking one has swing_deg, arm, "
-                                         "centre_distance")
+                raise fail(f"cam.{key}", "cm translating only", keys="swing_deg, arm, centre_distance")
         stroke = math.radians(number("swing_deg", 0.5, 90.0, "deg"))
         arm = number("arm", 1e-4, 10.0, "m")
         centre = number("centre_distance", 1e-4, 10.0, "m")
@@ -184,7 +191,7 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
     else:
         for key in ("swing_deg", "arm", "centre_distance"):
             if key in cam:
-                raise fail(f"cam.{key}", "is for a rocking follower; a translating one has stroke and offset")
+                raise fail(f"cam.{key}", "cm rocking only", keys="stroke, offset")
         stroke = number("stroke", 1e-5, 10.0, "m", lo_open=True)
         if cam.get("offset") == "auto":
             offset = None
@@ -193,18 +200,17 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
     base = number("base_radius", 1e-4, 100.0, "m") if "base_radius" in cam else None
     if base is not None:
         if roller >= base:
-            raise fail("cam.roller_radius", f"the roller ({roller:g} m) must be smaller than the base circle "
-                                            f"({base:g} m)")
+            raise fail("cam.roller_radius", "cm roller base", roller=B._g(roller), base=B._g(base))
         if offset is not None and abs(offset) >= base:
-            raise fail("cam.offset", f"|e| = {abs(offset):g} m must be smaller than the base radius {base:g} m")
+            raise fail("cam.offset", "cm offset base", e=B._g(abs(offset)), base=B._g(base))
     if rocking:
         if base is not None and not abs(centre - arm) < base < centre + arm:
-            raise fail("cam.base_radius", f"the arm {arm:g} m at {centre:g} m from the cam's centre reaches "
-                                          f"radii from {abs(centre - arm):g} to {centre + arm:g} m only")
+            raise fail("cam.base_radius", "cm arm reach", arm=B._g(arm), centre=B._g(centre),
+                       lo=B._g(abs(centre - arm)), hi=B._g(centre + arm))
     meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "lang") if k in data)
     sheet = data.get("sheet", {})
     if not isinstance(sheet, dict):
-        raise fail("sheet", "must be a table")
+        raise fail("sheet", "sc table")
     meta += tuple((f"sheet.{B.clean_text(k)}", B.clean_text(v)) for k, v in sheet.items())
     return Cam(B.clean_text(data.get("title", "Кулачковий механізм")), follower, stroke,
                (phases[0], phases[1], phases[2], phases[3]), (laws[0], laws[1]), (allowed[0], allowed[1]),

@@ -5,7 +5,7 @@ import ast
 import math
 import operator
 
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import SceneError, keyed_error
 
 _BINARY = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
            ast.Div: operator.truediv, ast.Pow: operator.pow}
@@ -21,14 +21,14 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
     from graphplan.model.bounds import MAX_EXPRESSION, MAX_EXPRESSION_DEPTH, short
     shown = repr(short(text))
     if len(text) > MAX_EXPRESSION:
-        raise SceneError(f"the expression {shown} is longer than {MAX_EXPRESSION} characters", where)
+        raise keyed_error(SceneError, where, "", "ex long", text=shown, most=MAX_EXPRESSION)
     try:
         source = text.strip()
         tree = ast.parse(source, mode="eval")
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise SceneError(f"cannot read the expression {shown}", where) from None
+        raise keyed_error(SceneError, where, "", "ex unreadable", text=shown) from None
     if _depth(tree) > MAX_EXPRESSION_DEPTH:
-        raise SceneError(f"the expression {shown} is nested more than {MAX_EXPRESSION_DEPTH} deep", where)
+        raise keyed_error(SceneError, where, "", "ex deep", text=shown, most=MAX_EXPRESSION_DEPTH)
     text = short(text)
 
     def walk(node: ast.AST) -> float:
@@ -37,14 +37,14 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
         if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) \
                 and not isinstance(node.value, bool):
             if "_" in (ast.get_source_segment(source, node) or ""):   # 7_2 is not 72 to a person
-                raise SceneError(f"{text!r}: write numbers without '_'", where)
+                raise keyed_error(SceneError, where, "", "ex underscore", text=repr(text))
             return float(node.value)
         if isinstance(node, ast.Name):
             if node.id in names:
                 return float(names[node.id])
             if node.id in _CONSTS:
                 return _CONSTS[node.id]
-            raise SceneError(f"unknown name {node.id!r} in {text!r}", where)
+            raise keyed_error(SceneError, where, "", "ex unknown name", name=repr(node.id), text=repr(text))
         if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
             result = _BINARY[type(node.op)](walk(node.left), walk(node.right))
             if isinstance(result, complex):            # (-8) ** 0.5
@@ -55,14 +55,14 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
                 and node.func.id in _FUNCS and not node.keywords:
             return float(_FUNCS[node.func.id](*[walk(a) for a in node.args]))
-        raise SceneError(f"only arithmetic is allowed in {text!r}", where)
+        raise keyed_error(SceneError, where, "", "ex arithmetic", text=repr(text))
 
     try:
         value = walk(tree)
     except (ValueError, ZeroDivisionError, OverflowError, TypeError) as exc:
-        raise SceneError(f"cannot evaluate {text!r}: {short(str(exc), 60)}", where) from None
+        raise keyed_error(SceneError, where, "", "ex cannot", text=repr(text), why=short(str(exc), 60)) from None
     if not math.isfinite(value):
-        raise SceneError(f"{text!r} is not a finite number", where)
+        raise keyed_error(SceneError, where, "", "ex infinite", text=repr(text))
     return value
 
 

@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from graphplan.model import bounds as B
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import GraphplanError, SceneError, keyed_error, speaking
 
 _TOP = {"title", "title_en", "designation", "lang", "sheet", "gears", "planetary"}
 _PAIR = {"z", "module", "shifts", "pressure_angle_deg", "addendum", "clearance"}
@@ -88,7 +88,7 @@ def load(path: str | Path) -> Gears:
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise SceneError("the scene is not UTF-8 text", where) from None
+        raise keyed_error(SceneError, where, "", "cm not utf8", utf="UTF-8") from None
     return build(B.parse_toml(text, where), where)
 
 
@@ -96,15 +96,15 @@ def _number(table: dict, prefix: str, key: str, lo: float, hi: float, unit: str,
             default: float | None = None, lo_open: bool = False) -> float:
     if key not in table:
         if default is None:
-            raise SceneError(f"{prefix}.{key}: missing", where)
+            raise keyed_error(SceneError, where, f"{prefix}.{key}", "sc missing")
         return default
     v = table[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise SceneError(f"{prefix}.{key}: must be a number, got {B.short(repr(v))}", where)
+        raise keyed_error(SceneError, where, f"{prefix}.{key}", "cm number", got=B.short(repr(v)))
     v = B.to_float(v, f"{prefix}.{key}", where)
     if not (math.isfinite(v) and (v > lo if lo_open else v >= lo) and v <= hi):
-        raise SceneError(f"{prefix}.{key}: must be from {lo:g}{' (exclusive)' if lo_open else ''} to {hi:g}"
-                         f"{' ' + unit if unit else ''}, got {v:g}", where)
+        span = B.Range(lo, hi, unit, lo_open)
+        raise keyed_error(SceneError, where, f"{prefix}.{key}", "bad range", range=lambda lang: span.text(lang), got=B._g(v))
     return v
 
 
@@ -130,26 +130,25 @@ def _listed(value: Any) -> Any:
 def _teeth(value: Any, key: str, count: tuple[int, ...], bounds: tuple[int, int], where: str) -> tuple[int, ...]:
     value = _listed(value)
     lo, hi = bounds
-    names = " or ".join(str(c) for c in count)
+    names = "/".join(str(c) for c in count)
     if not isinstance(value, list) or len(value) not in count:
-        raise SceneError(f"{key}: must be a list of {names} numbers of teeth, got {B.short(repr(value))}", where)
+        raise keyed_error(SceneError, where, key, "gr teeth list", n=names, got=B.short(repr(value)))
     out = []
     for k, v in enumerate(value):
         if isinstance(v, bool) or not isinstance(v, int) or not lo <= v <= hi:
-            raise SceneError(f"{key}[{k}]: a number of teeth must be a whole number from {lo} to {hi}, got "
-                             f"{B.short(repr(v))}", where)
+            raise keyed_error(SceneError, where, f"{key}[{k}]", "gr teeth", lo=lo, hi=hi, got=B.short(repr(v)))
         out.append(v)
     return tuple(out)
 
 
 def _pair(t: Any, where: str) -> Pair:
     if not isinstance(t, dict):
-        raise SceneError("gears: must be a table", where)
+        raise keyed_error(SceneError, where, "gears", "sc table")
     unknown = sorted(set(t) - _PAIR)
     if unknown:
-        raise SceneError(f"gears.{unknown[0]}: unknown key (allowed: {', '.join(sorted(_PAIR))})", where)
+        raise keyed_error(SceneError, where, f"gears.{unknown[0]}", "sc unknown key", allowed=", ".join(sorted(_PAIR)))
     if "z" not in t:
-        raise SceneError("gears.z: missing (z = [z1, z2])", where)
+        raise keyed_error(SceneError, where, "gears.z", "gr z missing", z="z = [z1, z2]")
     z = _teeth(t["z"], "gears.z", (2,), Z_PAIR, where)
     m = _number(t, "gears", "module", *MODULE, "m", where)
     raw = _listed(t.get("shifts", [0.0, 0.0]))
@@ -158,13 +157,13 @@ def _pair(t: Any, where: str) -> Pair:
         shifts = None
     else:
         if not isinstance(raw, list) or len(raw) != 2:
-            raise SceneError(f'gears.shifts: must be [x1, x2] or "auto", got {B.short(repr(raw))}', where)
+            raise keyed_error(SceneError, where, "gears.shifts", "gr shifts", pair="[x1, x2]", auto='"auto"', got=B.short(repr(raw)))
         xs = []
         for k, v in enumerate(raw):
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(float(v)) \
                     or not SHIFT[0] <= float(v) <= SHIFT[1]:
-                raise SceneError(f"gears.shifts[{k}]: a shift coefficient must be from {SHIFT[0]:g} to "
-                                 f"{SHIFT[1]:g}, got {B.short(repr(v))}", where)
+                raise keyed_error(SceneError, where, f"gears.shifts[{k}]", "gr shift", lo=B._g(SHIFT[0]), hi=B._g(SHIFT[1]),
+                                  got=B.short(repr(v)))
             xs.append(float(v))
         shifts = (xs[0], xs[1])
     alpha = _number(t, "gears", "pressure_angle_deg", *ALPHA, "°", where, 20.0)
@@ -175,50 +174,55 @@ def _pair(t: Any, where: str) -> Pair:
 
 def _train(t: Any, where: str) -> Train:
     if not isinstance(t, dict):
-        raise SceneError("planetary: must be a table", where)
+        raise keyed_error(SceneError, where, "planetary", "sc table")
     unknown = sorted(set(t) - _TRAIN)
     if unknown:
-        raise SceneError(f"planetary.{unknown[0]}: unknown key (allowed: {', '.join(sorted(_TRAIN))})", where)
+        raise keyed_error(SceneError, where, f"planetary.{unknown[0]}", "sc unknown key", allowed=", ".join(sorted(_TRAIN)))
     kind = t.get("type", "A")
     if kind not in ("A", "B"):
-        raise SceneError(f'planetary.type: must be "A" (one row) or "B" (two rows), got {B.short(repr(kind))}',
-                         where)
+        raise keyed_error(SceneError, where, "planetary.type", "gr type", a='"A"', b='"B"', got=B.short(repr(kind)))
     k = t.get("planets", 3)
     if isinstance(k, bool) or not isinstance(k, int) or not PLANETS[0] <= k <= PLANETS[1]:
-        raise SceneError(f"planetary.planets: K must be a whole number from {PLANETS[0]} to {PLANETS[1]}, got "
-                         f"{B.short(repr(k))}", where)
+        raise keyed_error(SceneError, where, "planetary.planets", "gr planets", lo=PLANETS[0], hi=PLANETS[1], got=B.short(repr(k)))
     m = _number(t, "planetary", "module", *MODULE, "m", where)
     if "omega" in t and "rpm" in t:
-        raise SceneError("planetary.rpm: give omega or rpm, not both", where)
+        raise keyed_error(SceneError, where, "planetary.rpm", "cm speed both", omega="omega", rpm="rpm")
     rpm = _number(t, "planetary", "rpm", 0.01, 1e6, "rpm", where) if "rpm" in t else None
     omega = rpm * math.pi / 30 if rpm is not None else _number(t, "planetary", "omega", 1e-3, 1e5, "rad/s", where, 100.0)
     if ("ratio" in t) == ("z" in t):
-        raise SceneError("planetary: give the ratio wanted (ratio = u1H) or the teeth (z = [...]), one of them",
-                         where)
+        raise keyed_error(SceneError, where, "planetary", "gr ratio or teeth", ratio="ratio = u1H", z="z = [...]")
     if "ratio" in t:
         u = _number(t, "planetary", "ratio", *RATIO, "", where)
         if u <= 2.0 and kind == "A":
-            raise SceneError(f"planetary.ratio: a type A train has u1H = 1 + z3/z1 > 2, got {u:g}", where)
+            raise keyed_error(SceneError, where, "planetary.ratio", "gr type A ratio", got=B._g(u))
         return Train(kind, k, m, omega, ratio=u, rpm=rpm)
     z = _teeth(t["z"], "planetary.z", (3,) if kind == "A" else (4,), Z_TRAIN, where)
     return Train(kind, k, m, omega, z=z, rpm=rpm)
 
 
 def build(data: dict[str, Any], where: str = "<scene>") -> Gears:
-    """The checked gear scene from a parsed one: one line naming the key for anything wrong."""
+    """The checked gear scene from a parsed one: one line naming the key for anything wrong, in the
+    scene's ``lang`` (unless --lang says otherwise)."""
+    try:
+        return _build(data, where)
+    except GraphplanError as exc:
+        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+
+
+def _build(data: dict[str, Any], where: str) -> Gears:
     if not is_gears(data):
-        raise SceneError("the scene has no [gears] or [planetary] table: it describes a lever mechanism "
-                         "(graphplan gears reads a gear scene, docs/gears.md)", where)
+        raise keyed_error(SceneError, where, "", "gr lever scene", t1="[gears]", t2="[planetary]", cmd="graphplan gears",
+                          doc="docs/gears.md")
     if "cam" in data:
-        raise SceneError("cam: a cam scene has no [gears] table (graphplan cam draws it, docs/cams.md)", where)
+        raise keyed_error(SceneError, where, "cam", "gr cam scene", table="[gears]", cmd="graphplan cam", doc="docs/cams.md")
     unknown = sorted(set(data) - _TOP)
     if unknown:
-        raise SceneError(f"{unknown[0]}: unknown key in a gear scene (allowed: {', '.join(sorted(_TOP))})", where)
+        raise keyed_error(SceneError, where, unknown[0], "gr unknown top", allowed=", ".join(sorted(_TOP)))
     pair = _pair(data["gears"], where) if "gears" in data else None
     train = _train(data["planetary"], where) if "planetary" in data else None
     meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "lang") if k in data)
     sheet = data.get("sheet", {})
     if not isinstance(sheet, dict):
-        raise SceneError("sheet: must be a table", where)
+        raise keyed_error(SceneError, where, "sheet", "sc table")
     meta += tuple((f"sheet.{B.clean_text(k)}", B.clean_text(v)) for k, v in sheet.items())
     return Gears(B.clean_text(data.get("title", "Зубчастий механізм")), pair, train, where, meta)

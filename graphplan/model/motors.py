@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, keyed_error
 
 CATALOGUE = "motors.toml"
 
@@ -94,13 +94,23 @@ def catalogue() -> tuple[Motor, ...]:
     return tuple(Motor(**m) for m in tomllib.loads(text)["motor"])
 
 
+def _g(value: float) -> object:
+    """A value for a refusal written "%g" in each language (a decimal comma in Ukrainian)."""
+    return lambda lang: f"{value:g}".replace(".", ",") if lang == "uk" else f"{value:g}"
+
+
+def _unit(key: str, lang: str) -> str:
+    from graphplan.util.words import unit
+    return unit(key, lang) if key else ""
+
+
 def find(name: str, where: str | None = None) -> Motor:
     """The catalogue's motor of that name."""
     for m in catalogue():
         if _key(m.name) == _key(name):
             return m
-    raise GraphplanError(f"dynamics.motor: no motor {name!r} in the catalogue "
-                         f"({catalogue()[0].name} … {catalogue()[-1].name})", where)
+    raise keyed_error(GraphplanError, where, "dynamics.motor", "mo no motor", name=repr(name),
+                      first=catalogue()[0].name, last=catalogue()[-1].name)
 
 
 def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
@@ -108,14 +118,13 @@ def choose(power_kW: float, rpm_sync: float, where: str | None = None) -> Motor:
     line = sorted((m for m in catalogue() if m.rpm_sync == rpm_sync), key=lambda m: m.power_kW)
     if not line:
         lines = ", ".join(f"{v:g}" for v in sorted({m.rpm_sync for m in catalogue()}, reverse=True))
-        raise GraphplanError(f"dynamics.synchronous_rpm: the catalogue has no {rpm_sync:g} rpm line "
-                             f"({lines})", where)
+        raise keyed_error(GraphplanError, where, "dynamics.synchronous_rpm", "mo no line", speed=_g(rpm_sync),
+                          lines=lines)
     for m in line:
         if m.power_kW >= power_kW * (1 - 1e-12):
             return m
-    raise GraphplanError(f"dynamics.motor: the cycle needs {power_kW:.3g} kW, more than the largest "
-                         f"{rpm_sync:g} rpm motor of the catalogue ({line[-1].name}, "
-                         f"{line[-1].power_kW:g} kW)", where)
+    raise keyed_error(GraphplanError, where, "dynamics.motor", "mo too weak", power=float(power_kW),
+                      speed=_g(rpm_sync), name=line[-1].name, largest=_g(line[-1].power_kW))
 
 
 # what a motor's data may hold (lowest, highest, unit): the catalogue's motors reach 315 kW and 3000 rpm;
@@ -134,7 +143,8 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
                "omega_sync", "omega_rated"}
     unknown = sorted(set(raw) - allowed)
     if unknown:
-        raise GraphplanError(f"{key}.{unknown[0]}: unknown key (allowed: {', '.join(sorted(allowed))})", where)
+        raise keyed_error(GraphplanError, where, f"{key}.{unknown[0]}", "sc unknown key",
+                          allowed=", ".join(sorted(allowed)))
     base = find(str(raw["name"]), where) if "name" in raw and not ({"power_kW", "rpm_rated"} & set(raw)) else None
     values = dict(base.__dict__) if base else {"name": str(raw.get("name", "motor"))}
     for field in ("power_kW", "rpm_sync", "rpm_rated", "max_ratio", "start_ratio", "inertia",
@@ -144,17 +154,17 @@ def from_data(raw: dict, key: str, where: str | None = None) -> tuple[Motor, lis
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (lo <= v <= hi) \
                     or not math.isfinite(v) or (v == 0 and field != "inertia"):    # a 200-digit int: no float()
                 shown = repr(v) if isinstance(v, (int, float, str)) else type(v).__name__
-                raise GraphplanError(f"{key}.{field}: must be a {'positive ' if field != 'inertia' else ''}"
-                                     f"number up to {hi:g} {unit}, got {shown[:40]}", where)
+                raise keyed_error(GraphplanError, where, f"{key}.{field}",
+                                  "mo number" if field == "inertia" else "mo positive", hi=_g(hi),
+                                  unit=lambda lang, u=unit: _unit(u, lang), got=shown[:40])
             if not field.startswith("omega"):
                 values[field] = float(v)
     for need in ("power_kW", "rpm_sync", "rpm_rated"):
         if need not in values:
-            raise GraphplanError(f"{key}.{need}: missing (or name a catalogue motor)", where)
+            raise keyed_error(GraphplanError, where, f"{key}.{need}", "mo missing")
     motor = Motor(**values)
     if motor.rpm_rated >= motor.rpm_sync:
-        raise GraphplanError(f"{key}: the rated speed {motor.rpm_rated:g} rpm must be below the "
-                             f"synchronous {motor.rpm_sync:g} rpm", where)
+        raise keyed_error(GraphplanError, where, key, "mo rated", rated=_g(motor.rpm_rated), sync=_g(motor.rpm_sync))
     warnings = []
     printed = {k: float(raw[k]) for k in ("omega_sync", "omega_rated") if k in raw}
     computed = {"omega_sync": motor.omega_sync, "omega_rated": motor.omega_rated}

@@ -11,8 +11,9 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
 from graphplan.util.files import read_text
+from graphplan.util.words import word
 from graphplan.model import bounds as B
 from graphplan.model.expressions import evaluate
 from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, Mechanism, Moment, Task
@@ -46,7 +47,7 @@ def load(path: str | Path | None) -> Mechanism:
     try:
         text = read_text(path, "scene file", B.MAX_SCENE_BYTES)
     except GraphplanError as exc:
-        raise SceneError(str(exc), exc.where) from None
+        raise SceneError(str(exc), exc.where, exc.said, exc.lang) from None
     return loads(text, str(path))
 
 
@@ -58,7 +59,10 @@ def loads(text: str, where: str = "<scene>") -> Mechanism:
 def build(data: dict[str, Any], where: str = "<scene>") -> Mechanism:
     """A mechanism from an already parsed scene tree (e.g. a base scene with a variant's overrides)."""
     B.check_tree(data, where)
-    return _Reader(copy.deepcopy(data), where).mechanism()
+    try:
+        return _Reader(copy.deepcopy(data), where).mechanism()
+    except GraphplanError as exc:        # a refusal from below (bounds, expressions) speaks the scene's lang
+        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
 
 
 class _Reader:
@@ -68,94 +72,93 @@ class _Reader:
         self.data = data
         self.where = where
         self.names: dict[str, float] = {}
+        self.lang = data.get("lang") if isinstance(data, dict) and data.get("lang") in ("uk", "en") else None
 
     # -- small checked readers ------------------------------------------------------------
-    def fail(self, key: str, message: str) -> SceneError:
-        return SceneError(f"{key}: {message}", self.where)
+    def fail(self, key: str, word: str, /, **fields: object) -> SceneError:
+        """The refusal of ``key`` worded by the catalogue's ``word`` (util.words) in both languages."""
+        return keyed_error(SceneError, self.where, key, word, self.lang, **fields)
 
     def table(self, value: Any, key: str, allowed: set[str]) -> dict[str, Any]:
         if not isinstance(value, dict):
-            raise self.fail(key, "must be a table")
+            raise self.fail(key, "sc table")
         unknown = sorted(set(value) - allowed)
         if unknown:
-            raise self.fail(f"{key}.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(allowed))})")
+            raise self.fail(f"{key}.{unknown[0]}", "sc unknown key", allowed=", ".join(sorted(allowed)))
         return value
 
     def number(self, value: Any, key: str, positive: bool = False,
                bounds: B.Range | None = None) -> float:
         """A number or an expression; finite, positive if asked, within ``bounds`` if given."""
         if isinstance(value, bool):
-            raise self.fail(key, "must be a number")
+            raise self.fail(key, "sc number")
         if isinstance(value, (int, float)):
             result = B.to_float(value, key, self.where)
         elif isinstance(value, str):
             result = evaluate(value, self.names, f"{self.where}: {key}")
         else:
-            raise self.fail(key, "must be a number or an expression")
+            raise self.fail(key, "sc number or expression")
         if not math.isfinite(result):
-            raise self.fail(key, "must be finite")
+            raise self.fail(key, "sc finite")
         if positive and result <= 0:
-            within = f" ({bounds.text()})" if bounds else ""
-            raise self.fail(key, f"must be positive{within}, got {result:g}")
+            raise self.fail(key, "sc positive", got=B._g(result),
+                            within=lambda lang: f" ({bounds.text(lang)})" if bounds else "")
         return B.check(result, bounds, key, self.where) if bounds else result
 
     def xy(self, value: Any, key: str) -> complex:
         if not isinstance(value, list) or len(value) != 2:
-            raise self.fail(key, "must be a pair [x, y]")
+            raise self.fail(key, "sc pair")
         return complex(self.number(value[0], key, bounds=B.COORDINATE),
                        self.number(value[1], key, bounds=B.COORDINATE))
 
     def name(self, value: Any, key: str) -> str:
         if not isinstance(value, (str, int)) or isinstance(value, bool) or str(value).strip() == "":
-            raise self.fail(key, "must be a name")
+            raise self.fail(key, "sc name")
         if isinstance(value, int) and abs(value) > B.MAX_INT:
-            raise self.fail(key, "must be a name")
+            raise self.fail(key, "sc name")
         name = str(value).strip()
         problem = B.name_problem(name)
         if problem:
-            raise self.fail(key, f"{problem}, got {B.short(repr(name))}")
+            raise self.fail(key, "sc bad name", why=lambda lang: word(problem, lang), got=B.short(repr(name)))
         return name
 
     # -- sections ---------------------------------------------------------------------------
     def mechanism(self) -> Mechanism:
         if isinstance(self.data, dict) and "cam" in self.data:
-            raise self.fail("cam", "a cam scene: graphplan cam and graphplan sheet draw it (docs/cams.md); "
-                                   "this command takes a lever mechanism")
+            raise self.fail("cam", "sc cam scene", cmd1="graphplan cam", cmd2="graphplan sheet", doc="docs/cams.md")
         if isinstance(self.data, dict) and ("gears" in self.data or "planetary" in self.data):
             key = "gears" if "gears" in self.data else "planetary"
-            raise self.fail(key, "a gear scene: graphplan gears and graphplan sheet draw it (docs/gears.md); "
-                                 "this command takes a lever mechanism")
+            raise self.fail(key, "sc gear scene", cmd1="graphplan gears", cmd2="graphplan sheet", doc="docs/gears.md")
         data = self.table(self.data, "scene", _TOP)
         derived = self.read_synthesis(data.get("synthesis"))
         self.read_params(data)
         frame, guides = self.read_frame(data.get("frame"))
         if "crank" not in data:
-            raise self.fail("crank", "missing: a scene needs its input crank")
+            raise self.fail("crank", "sc no crank")
         crank, crank_link, crank_guide = self.read_crank(data["crank"], frame)
         links = {crank_link.name: crank_link}
         if crank_guide:
             guides[crank_guide.name] = crank_guide
         raw_links = data.get("link", [])
         if not isinstance(raw_links, list):
-            raise self.fail("link", "must be an array of tables [[link]]")
+            raise self.fail("link", "sc array", table="[[link]]")
         numbers = {1}
         for k, raw in enumerate(raw_links):
             link, guide = self.read_link(raw, f"link[{k}]", len(links) + 1, frame)
             if link.name in links or link.name in guides and guide is None:
-                raise self.fail(f"link[{k}].name", f"the name {link.name!r} is used twice")
+                raise self.fail(f"link[{k}].name", "sc name twice", name=repr(link.name))
             if link.number in numbers:
-                raise self.fail(f"link[{k}].number", f"link number {link.number} is used twice")
+                raise self.fail(f"link[{k}].number", "sc number twice", number=link.number)
             numbers.add(link.number)
             links[link.name] = link
             if guide:
                 if guide.name in guides:
-                    raise self.fail(f"link[{k}].guide", f"the guide name {guide.name!r} is used twice")
+                    raise self.fail(f"link[{k}].guide", "sc guide twice", name=repr(guide.name))
                 guides[guide.name] = guide
         for name, link in links.items():
             if link.slides_on is not None and link.slides_on not in guides:
-                known = ", ".join(sorted(guides)) or "none"
-                raise self.fail(f"link {name}.slides_on",
-                                f"no guide named {link.slides_on!r} (guides: {known})")
+                known = ", ".join(sorted(guides)) or "—"
+                raise self.fail(f"link {name}.slides_on", "sc no guide", name=repr(link.slides_on), known=known)
         positions = self.table(data.get("positions", {}), "positions", _POSITIONS)
         loads = self.table(data.get("loads", {}), "loads", _LOADS)
         links = self.apply_loads(self.shape_joints(links, frame), loads)
@@ -184,10 +187,10 @@ class _Reader:
     def read_params(self, data: dict[str, Any]) -> None:
         params = data.get("params", {})
         if not isinstance(params, dict):
-            raise self.fail("params", "must be a table")
+            raise self.fail("params", "sc table")
         for key, value in params.items():
             if not key.isidentifier():
-                raise self.fail(f"params.{B.short(key)}", "a parameter's name is a word such as r or l_AB")
+                raise self.fail(f"params.{B.short(key)}", "sc param name", example="l_AB")
             self.names[key] = self.number(value, f"params.{key}", bounds=B.PARAMETER)
 
     def read_synthesis(self, raw: Any) -> dict[str, float]:
@@ -196,13 +199,13 @@ class _Reader:
             return {}
         raw = self.table(raw, "synthesis", _SYNTH)
         if raw.get("type") != "quick_return":
-            raise self.fail("synthesis.type", 'only "quick_return" is known')
+            raise self.fail("synthesis.type", "sc synthesis type", known='"quick_return"')
         for key in ("K", "stroke", "centre_distance"):
             if key not in raw:
-                raise self.fail(f"synthesis.{key}", "missing")
+                raise self.fail(f"synthesis.{key}", "sc missing")
         k = self.number(raw["K"], "synthesis.K", positive=True, bounds=B.TIME_RATIO)
         if k <= 1:
-            raise self.fail("synthesis.K", f"the time-ratio coefficient must exceed 1, got {k:g}")
+            raise self.fail("synthesis.K", "sc time ratio", got=B._g(k))
         stroke = self.number(raw["stroke"], "synthesis.stroke", positive=True, bounds=B.LENGTH)
         centre = self.number(raw["centre_distance"], "synthesis.centre_distance", positive=True,
                              bounds=B.LENGTH)
@@ -215,11 +218,11 @@ class _Reader:
 
     def read_frame(self, raw: Any) -> tuple[dict[str, complex], dict[str, Guide]]:
         if raw is None:
-            raise self.fail("frame", "missing: a scene needs [frame.points]")
+            raise self.fail("frame", "sc no frame", table="[frame.points]")
         raw = self.table(raw, "frame", {"points", "guides"})
         points_raw = raw.get("points", {})
         if not isinstance(points_raw, dict) or not points_raw:
-            raise self.fail("frame.points", "must name at least one fixed point")
+            raise self.fail("frame.points", "sc no fixed point")
         frame = {self.name(k, "frame.points"): self.xy(v, f"frame.points.{k}")
                  for k, v in points_raw.items()}
         guides = {}
@@ -246,14 +249,13 @@ class _Reader:
         for name, value in self.table(raw, key, set(raw) if isinstance(raw, dict) else set()).items():
             name = self.name(name, key)
             if name in local:
-                raise self.fail(f"{key}.{name}", "the point is already defined on this link")
+                raise self.fail(f"{key}.{name}", "sc point twice")
             if isinstance(value, list):
                 local[name] = self.xy(value, f"{key}.{name}")
             else:
                 fraction = self.number(value, f"{key}.{name}")
                 if length is None:
-                    raise self.fail(f"{key}.{name}", "a fraction needs the link's length; "
-                                    "give [along, across] in metres")
+                    raise self.fail(f"{key}.{name}", "sc fraction", pair="[along, across]")
                 B.check(fraction * length, B.COORDINATE, f"{key}.{name} (fraction × length)", self.where)
                 local[name] = complex(fraction * length, 0.0)
 
@@ -261,23 +263,23 @@ class _Reader:
         raw = self.table(raw, "crank", _CRANK)
         for key in ("pivot", "pin", "length"):
             if key not in raw:
-                raise self.fail(f"crank.{key}", "missing")
+                raise self.fail(f"crank.{key}", "sc missing")
         pivot = self.name(raw["pivot"], "crank.pivot")
         pin = self.name(raw["pin"], "crank.pin")
         if pivot not in frame:
-            raise self.fail("crank.pivot", f"{pivot!r} is not a frame point ({', '.join(frame)})")
+            raise self.fail("crank.pivot", "sc not frame point", name=repr(pivot), known=", ".join(frame))
         length = self.number(raw["length"], "crank.length", positive=True, bounds=B.LENGTH)
         if ("omega" in raw) == ("rpm" in raw):
-            raise self.fail("crank", "give the speed as exactly one of omega (rad/s) or rpm")
+            raise self.fail("crank", "sc speed once", omega="omega", rpm="rpm")
         speed = (self.number(raw["omega"], "crank.omega", positive=True, bounds=B.OMEGA) if "omega" in raw
                  else self.number(raw["rpm"], "crank.rpm", positive=True, bounds=B.RPM) * math.pi / 30)
         direction = raw.get("direction", "ccw")
         if direction not in ("ccw", "cw"):
-            raise self.fail("crank.direction", f'must be "ccw" or "cw", got {direction!r}')
+            raise self.fail("crank.direction", "sc one of", choices=either('"ccw"', '"cw"'), got=repr(direction))
         omega = speed if direction == "ccw" else -speed
         name = self.name(raw.get("name", pivot + pin), "crank.name")
         if name == FRAME:
-            raise self.fail("crank.name", f"{FRAME!r} is the frame's name; call the crank otherwise")
+            raise self.fail("crank.name", "sc frame name crank", name=repr(FRAME))
         local = {pivot: 0j, pin: complex(length, 0)}
         self.read_points(raw.get("shape"), "crank.shape", length, local)
         self.read_points(raw.get("points"), "crank.points", length, local)
@@ -294,18 +296,18 @@ class _Reader:
                   frame: dict[str, complex]) -> tuple[Link, Guide | None]:
         raw = self.table(raw, key, _LINK)
         if "joints" not in raw:
-            raise self.fail(f"{key}.joints", "missing")
+            raise self.fail(f"{key}.joints", "sc missing")
         joints_raw = raw["joints"]
         if not isinstance(joints_raw, list):
-            raise self.fail(f"{key}.joints", "must be a list of point names")
+            raise self.fail(f"{key}.joints", "sc point list")
         joints = tuple(self.name(j, f"{key}.joints") for j in joints_raw)
         if len(set(joints)) != len(joints):
-            raise self.fail(f"{key}.joints", "a joint is listed twice")
+            raise self.fail(f"{key}.joints", "sc joint twice")
         number = B.check_count(raw.get("number", number), (1, 999), f"{key}.number", self.where)
         default_name = "".join(joints) if len(joints) >= 2 else str(number)
         name = self.name(raw.get("name", default_name), f"{key}.name")
         if name == FRAME:
-            raise self.fail(f"{key}.name", f"{FRAME!r} is the frame's name; call the link otherwise")
+            raise self.fail(f"{key}.name", "sc frame name link", name=repr(FRAME))
         key = f"link {name}"
         slides_on = self.name(raw["slides_on"], f"{key}.slides_on") if "slides_on" in raw else None
         length = (self.number(raw["length"], f"{key}.length", positive=True, bounds=B.LENGTH)
@@ -313,20 +315,20 @@ class _Reader:
         origin = joints[0] if joints else None
         if origin is None:
             if slides_on is None:
-                raise self.fail(f"{key}.joints", "a link needs at least one joint")
+                raise self.fail(f"{key}.joints", "sc no joint")
             if "ref" not in raw:
-                raise self.fail(f"{key}.ref", "a sliding link without joints needs a reference point")
+                raise self.fail(f"{key}.ref", "sc no ref")
             origin = self.name(raw["ref"], f"{key}.ref")
         local = {origin: 0j}
         if slides_on is None and len(joints) >= 2:
             if length is None:
-                raise self.fail(f"{key}.length", f"missing: the distance {joints[0]}{joints[1]}")
+                raise self.fail(f"{key}.length", "sc no length", dist=f"{joints[0]}{joints[1]}")
             local[joints[1]] = complex(length, 0)
         shape = raw.get("shape", {})
         self.read_points(shape, f"{key}.shape", length, local)
         for j in joints:
             if j not in local:
-                raise self.fail(f"{key}.shape.{j}", f"missing: where the joint {j} lies on the link")
+                raise self.fail(f"{key}.shape.{j}", "sc no shape", joint=j)
         self.read_points(raw.get("points"), f"{key}.points", length, local)
         guide = self.read_guide(raw["guide"], f"{key}.guide", name, name) if "guide" in raw else None
         if guide is None:
@@ -347,7 +349,7 @@ class _Reader:
         if "com" in raw:
             com = self.name(raw["com"], f"{where}.com")
             if com not in local:
-                raise self.fail(f"{where}.com", f"{com!r} is not a point of this link")
+                raise self.fail(f"{where}.com", "sc com", name=repr(com))
             return com
         guess = f"S{number}"
         return guess if guess in local else None
@@ -373,7 +375,7 @@ class _Reader:
         out = {}
         for key, value in raw.items():
             if value not in (1, -1) or isinstance(value, bool):
-                raise self.fail(f"branch.{key}", f"must be +1 or -1, got {value!r}")
+                raise self.fail(f"branch.{key}", "sc branch", got=repr(value))
             out[key] = int(value)
         return out
 
@@ -381,14 +383,14 @@ class _Reader:
         if value in ("max", "min", "working", "idle", "inner", "outer"):
             return value
         if isinstance(value, str) and not value.replace(".", "").replace("-", "").isdigit():
-            raise self.fail("positions.start",
-                            f'must be "max", "min", "working", "idle", "inner", "outer" or a crank angle, got {value!r}')
+            raise self.fail("positions.start", "sc start", got=repr(value),
+                            choices='"max", "min", "working", "idle", "inner", "outer"')
         return self.number(value, "positions.start", bounds=B.ANGLE) % 360.0
 
     def read_working(self, value: Any) -> str:
         if value not in ("slow", "fast", "to_max", "to_min"):
-            raise self.fail("positions.working_stroke",
-                            f'must be "slow", "fast", "to_max" or "to_min", got {value!r}')
+            raise self.fail("positions.working_stroke", "sc one of", choices=either('"slow"', '"fast"', '"to_max"', '"to_min"'),
+                            got=repr(value))
         return value
 
     def read_count(self, value: Any) -> int:
@@ -403,17 +405,17 @@ class _Reader:
 
     def read_forces(self, raw: Any) -> tuple[Force, ...]:
         if not isinstance(raw, list):
-            raise self.fail("force", "must be an array of tables [[force]]")
+            raise self.fail("force", "sc array", table="[[force]]")
         out = []
         for k, f in enumerate(raw):
             key = f"force[{k}]"
             f = self.table(f, key, _FORCE)
             for need in ("point", "magnitude"):
                 if need not in f:
-                    raise self.fail(f"{key}.{need}", "missing")
+                    raise self.fail(f"{key}.{need}", "sc missing")
             stroke = f.get("stroke", "working")
             if stroke not in ("working", "idle", "both"):
-                raise self.fail(f"{key}.stroke", f'must be "working", "idle" or "both", got {stroke!r}')
+                raise self.fail(f"{key}.stroke", "sc one of", choices=either('"working"', '"idle"', '"both"'), got=repr(stroke))
             direction = f.get("direction", "oppose")
             if direction != "oppose":
                 direction = self.number(direction, f"{key}.direction", bounds=B.ANGLE)
@@ -426,25 +428,25 @@ class _Reader:
     def read_moments(self, raw: Any, links: dict[str, Link]) -> tuple[Moment, ...]:
         """[[moment]]: an external couple on a link (given by its name or its number), N·m."""
         if not isinstance(raw, list):
-            raise self.fail("moment", "must be an array of tables [[moment]]")
+            raise self.fail("moment", "sc array", table="[[moment]]")
         out = []
         for k, m in enumerate(raw):
             key = f"moment[{k}]"
             m = self.table(m, key, _MOMENT)
             for need in ("link", "magnitude"):
                 if need not in m:
-                    raise self.fail(f"{key}.{need}", "missing")
+                    raise self.fail(f"{key}.{need}", "sc missing")
             stroke = m.get("stroke", "working")
             if stroke not in ("working", "idle", "both"):
-                raise self.fail(f"{key}.stroke", f'must be "working", "idle" or "both", got {stroke!r}')
+                raise self.fail(f"{key}.stroke", "sc one of", choices=either('"working"', '"idle"', '"both"'), got=repr(stroke))
             direction = m.get("direction", "oppose")
             if direction not in ("oppose", "ccw", "cw"):
-                raise self.fail(f"{key}.direction", f'must be "oppose", "ccw" or "cw", got {direction!r}')
+                raise self.fail(f"{key}.direction", "sc one of", choices=either('"oppose"', '"ccw"', '"cw"'), got=repr(direction))
             link = self.name(m["link"], f"{key}.link")
             numbers = {str(v.number): name for name, v in links.items()}
             if link not in links and link not in numbers:
                 known = ", ".join(f"{name} ({v.number})" for name, v in links.items())
-                raise self.fail(f"{key}.link", f"no link named or numbered {link!r} (links: {known})")
+                raise self.fail(f"{key}.link", "sc no link", name=repr(link), known=known)
             link = link if link in links else numbers[link]
             out.append(Moment(link=link, magnitude=self.number(m["magnitude"], f"{key}.magnitude", bounds=B.MOMENT),
                               stroke=stroke, direction=direction,
@@ -454,15 +456,15 @@ class _Reader:
     def read_profile(self, raw: Any, key: str) -> tuple[tuple[float, float], ...]:
         """[[distance, factor], …] with the distances increasing."""
         if not isinstance(raw, list):
-            raise self.fail(key, "must be a list of [distance, factor] pairs")
+            raise self.fail(key, "sc profile", pair="[distance, factor]")
         pairs = []
         for p in raw:
             if not isinstance(p, list) or len(p) != 2:
-                raise self.fail(key, "must be a list of [distance, factor] pairs")
+                raise self.fail(key, "sc profile", pair="[distance, factor]")
             pairs.append((self.number(p[0], key, bounds=B.PROFILE_DISTANCE),
                           self.number(p[1], key, bounds=B.PROFILE_FACTOR)))
         if any(b[0] <= a[0] for a, b in zip(pairs, pairs[1:])):
-            raise self.fail(key, "the distances must increase")
+            raise self.fail(key, "sc increase")
         return tuple(pairs)
 
     def read_diagram(self, raw: Any) -> dict[str, object]:
@@ -478,7 +480,7 @@ class _Reader:
             out["point"] = self.name(raw["point"], "diagrams.point")
         if "method" in raw:
             if raw["method"] not in ("chords", "tangents"):
-                raise self.fail("diagrams.method", f"must be \"chords\" or \"tangents\", got {raw['method']!r}")
+                raise self.fail("diagrams.method", "sc one of", choices=either('"chords"', '"tangents"'), got=repr(raw["method"]))
             out["method"] = raw["method"]
         return out
 
@@ -491,11 +493,11 @@ class _Reader:
             if key in raw:
                 out[key] = self.number(raw[key], f"dynamics.{key}", positive=True)
         if "delta" in out and not 0 < out["delta"] < 0.5:
-            raise self.fail("dynamics.delta", f"the coefficient of unevenness must lie in (0, 0.5), got {out['delta']:g}")
+            raise self.fail("dynamics.delta", "sc delta", got=B._g(out["delta"]))
         if "divisions" in raw:
             n = raw["divisions"]
             if isinstance(n, bool) or not isinstance(n, int) or not 4 <= n <= 3600:
-                raise self.fail("dynamics.divisions", f"must be a whole number from 4 to 3600, got {n!r}")
+                raise self.fail("dynamics.divisions", "bad count", lo=4, hi=3600, got=repr(n))
             out["divisions"] = n
         return out
 
@@ -512,39 +514,38 @@ class _Reader:
             elif isinstance(value, dict):
                 motor, warnings = motors.from_data(value, "dynamics.motor", self.where)
             else:
-                raise self.fail("dynamics.motor", "must be a catalogue name or a table of the motor's data")
+                raise self.fail("dynamics.motor", "sc motor")
         rpm = self.number(raw.get("synchronous_rpm", 3000), "dynamics.synchronous_rpm", positive=True)
         eta = self.number(raw.get("efficiency", 1.0), "dynamics.efficiency", positive=True)
         if eta > 1:
-            raise self.fail("dynamics.efficiency", f"must lie in (0, 1], got {eta:g}")
+            raise self.fail("dynamics.efficiency", "sc efficiency", got=B._g(eta))
         ratio = self.number(raw["ratio"], "dynamics.ratio", positive=True) if "ratio" in raw else None
         rotor = self.number(raw["rotor_inertia"], "dynamics.rotor_inertia") if "rotor_inertia" in raw else None
         reducer = self.number(raw.get("reducer_inertia", 0.0), "dynamics.reducer_inertia")
         for key, v in (("rotor_inertia", rotor), ("reducer_inertia", reducer)):
             if v is not None and v < 0:
-                raise self.fail(f"dynamics.{key}", f"must be ≥ 0, got {v:g}")
+                raise self.fail(f"dynamics.{key}", "sc nonnegative", got=B._g(v))
         shafts = raw.get("reducer_shafts", [0.0, 0.0, 0.0])
         if not isinstance(shafts, list) or len(shafts) != 3:
-            raise self.fail("dynamics.reducer_shafts", "must be [input, intermediate, output] moments of inertia, kg·m²")
+            raise self.fail("dynamics.reducer_shafts", "sc shafts", list="[input, intermediate, output]")
         shafts = tuple(self.number(v, "dynamics.reducer_shafts") for v in shafts)
         if any(v < 0 for v in shafts):
-            raise self.fail("dynamics.reducer_shafts", "the moments of inertia must be ≥ 0")
+            raise self.fail("dynamics.reducer_shafts", "sc shafts nonnegative")
         first = (self.number(raw["first_stage_ratio"], "dynamics.first_stage_ratio", positive=True)
                  if "first_stage_ratio" in raw else None)
         if shafts[1] > 0 and first is None:
-            raise self.fail("dynamics.first_stage_ratio", "missing: the intermediate shaft's speed needs the "
-                            "first stage's ratio i1 = ω_motor/ω_intermediate")
+            raise self.fail("dynamics.first_stage_ratio", "sc first stage")
         return Drive(motor, rpm, ratio, eta, reducer, rotor, tuple(warnings), shafts, first)
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
         meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}
         if "lang" in data:
             if data["lang"] not in ("uk", "en"):
-                raise self.fail("lang", f"must be \"uk\" or \"en\", got {data['lang']!r}")
+                raise self.fail("lang", "sc one of", choices=either('"uk"', '"en"'), got=repr(data["lang"]))
             meta["lang"] = data["lang"]
         sheet = data.get("sheet", {})
         if not isinstance(sheet, dict):
-            raise self.fail("sheet", "must be a table")
+            raise self.fail("sheet", "sc table")
         meta.update({f"sheet.{B.clean_text(k)}": B.clean_text(v) for k, v in sheet.items()})
         return meta
 
@@ -556,12 +557,10 @@ class _Reader:
                 if p in link.joints:
                     continue
                 if p in mech.frame:
-                    raise self.fail(f"link {name}.points.{p}", f"{p!r} is also a frame point; "
-                                    "names are unique across the frame's and the links' points")
+                    raise self.fail(f"link {name}.points.{p}", "sc also frame", name=repr(p))
                 others = [n for n, other in mech.links.items() if n != name and p in other.local]
                 if others:
-                    raise self.fail(f"link {name}.points.{p}", f"{p!r} is also a point of link "
-                                    f"{others[0]}; give each point its own name")
+                    raise self.fail(f"link {name}.points.{p}", "sc also link", name=repr(p), link=others[0])
 
     @staticmethod
     def shape_joints(links: dict[str, Link], frame: dict[str, complex]) -> dict[str, Link]:
@@ -594,18 +593,17 @@ class _Reader:
             if j == mech.crank.pin and bodies == [mech.crank.link] and mech.crank.link in carries:
                 continue
             if len(bodies) == 1 and j not in mech.frame:
-                raise self.fail(f"link {bodies[0]}.joints",
-                                f"joint {j!r} joins nothing: no other link or frame point has it")
+                raise self.fail(f"link {bodies[0]}.joints", "sc joins nothing", name=repr(j))
         self.check_unique(mech)
         known = set(mech.point_names())
         for key in mech.branches:
             if key not in known:
-                raise self.fail(f"branch.{key}", "no such point")
+                raise self.fail(f"branch.{key}", "sc no point")
         if mech.output is not None and mech.output not in known and mech.output not in mech.links:
-            raise self.fail("positions.output", f"{mech.output!r} is neither a point nor a link")
+            raise self.fail("positions.output", "sc output", name=repr(mech.output))
         for f in mech.forces:
             if f.point not in known:
-                raise self.fail("force.point", f"no point named {f.point!r}")
+                raise self.fail("force.point", "sc no point named", name=repr(f.point))
         if mech.crank.pin in mech.frame:
-            raise self.fail("crank.pin", "the crank pin cannot be a frame point")
+            raise self.fail("crank.pin", "sc pin frame")
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import SceneError, keyed_error
 from graphplan.model.mechanism import FRAME, Mechanism
 
 
@@ -135,6 +135,11 @@ def pairs_of(mech: Mechanism) -> list[Pair]:
     return pairs
 
 
+def _lang(mech: Mechanism) -> str | None:
+    """The scene's language (its ``lang``), what its refusals speak unless --lang says otherwise."""
+    return mech.task.meta.get("lang")
+
+
 def analyse(mech: Mechanism) -> Structure:
     """Mobility and the Assur decomposition; SceneError if W ≠ 1 or no class-II chain exists."""
     pairs = pairs_of(mech)
@@ -145,19 +150,17 @@ def analyse(mech: Mechanism) -> Structure:
     crank = mech.crank.link
     crank_pairs = [p for p in pairs if crank in p.bodies and FRAME in p.bodies]
     if not any(p.kind == "R" and p.point == mech.crank.pivot for p in crank_pairs):
-        raise SceneError(f"the crank {crank} is not pinned to the frame at {mech.crank.pivot}", where)
+        raise keyed_error(SceneError, where, "", "st crank pivot", _lang(mech), crank=crank, pivot=mech.crank.pivot)
     if w != 1:
-        raise SceneError(f"mobility W = 3·{n} − 2·{structure_p5} = {w}, a crank mechanism needs W = 1 "
-                         "(check the joints and slides_on of the links)", where)
+        raise keyed_error(SceneError, where, "", "st mobility", _lang(mech), n=n, p5=structure_p5, w=w,
+                          joints="joints", slides_on="slides_on")
     known = {FRAME, crank}
     todo = [name for name in mech.links if name != crank]
     dyads: list[Dyad] = []
     while todo:
         found = _next_dyad(mech, pairs, known, todo)
         if found is None:
-            raise SceneError("cannot decompose into class-II groups: links " + ", ".join(todo)
-                             + " do not form a dyad on the known links (is every input of a dyad "
-                             "joined to links solved before it?)", where)
+            raise keyed_error(SceneError, where, "", "st no groups", _lang(mech), links=", ".join(todo))
         dyads.append(found)
         known |= {found.a, found.b}
         todo = [t for t in todo if t not in (found.a, found.b)]
@@ -182,8 +185,7 @@ def _canonical(mech: Mechanism, x: str, y: str, ox: Pair, inner: Pair, oy: Pair)
         x, y, ox, oy = y, x, oy, ox
         kind = kind[::-1]
     if kind == "PPP":
-        raise SceneError(f"links {x} and {y}: a group of three sliding pairs has no fixed position",
-                         mech.source)
+        raise keyed_error(SceneError, mech.source, "", "st ppp", _lang(mech), x=x, y=y)
     numbers = sorted((mech.links[x].number, mech.links[y].number))
     return Dyad(kind=kind, a=x, b=y, outer_a=ox, inner=inner, outer_b=oy,
                 numbers=(numbers[0], numbers[1]))

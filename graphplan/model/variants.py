@@ -306,7 +306,7 @@ def read_tree(path: Path) -> dict[str, Any]:
     try:
         text = read_text(path, "base scene", MAX_SCENE_BYTES)
     except GraphplanError as exc:
-        raise SceneError(str(exc), exc.where) from None
+        raise SceneError(str(exc), exc.where, exc.said, exc.lang) from None
     return parse_toml(text, str(path))
 
 

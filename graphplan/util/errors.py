@@ -32,6 +32,31 @@ def said_error(cls: type[GraphplanError], key: str, where: str | None, lang: str
     return cls(texts["en"], where, texts, lang)
 
 
+def keyed_error(cls: type[GraphplanError], where: str | None, key: str, word: str, lang: str | None = None, /,
+                **fields) -> GraphplanError:
+    """An error of ``cls`` about the scene key ``key`` (written as the file has it, in either language),
+    worded by the catalogue's ``word``: "key: text" in both languages."""
+    from graphplan.util.words import said
+    texts = {k: f"{key}: {v}" if key else v for k, v in said(word, **fields).items()}
+    return cls(texts["en"], where, texts, lang)
+
+
+def either(*options: str) -> object:
+    """Choices for a refusal, "a, b or c" in each language ("a, b або c")."""
+    def text(lang: str) -> str:
+        last = " або " if lang == "uk" else " or "
+        return ", ".join(options[:-1]) + last + options[-1] if len(options) > 1 else options[0]
+    return text
+
+
+def speaking(exc: GraphplanError, lang: object) -> GraphplanError:
+    """``exc`` told the scene's language ``lang`` (when it is one, and the error has none yet): a
+    loader that read a scene's ``lang`` lets every refusal from inside it speak that language."""
+    if exc.lang is None and lang in ("uk", "en"):
+        exc.lang = str(lang)
+    return exc
+
+
 class SceneError(GraphplanError):
     """A scene file that is malformed or describes an impossible mechanism."""
 

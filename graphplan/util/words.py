@@ -787,3 +787,238 @@ def said(key: str, /, **fields: object) -> dict[str, str]:
 class _Fields(dict):
     def __missing__(self, key: str) -> str:
         raise KeyError(f"words: no value for {{{key}}}")
+
+
+# -- refusals of a bad scene (util.errors.keyed_error: "key: text", the key as the file writes it) -------------
+# TOML names and the program's words stay as written: they are fields ({omega}, {rpm}), not text.
+WORDS.update({
+    # model/scene.py: a lever mechanism's scene
+    "sc table": ("має бути таблицею", "must be a table"),
+    "sc unknown key": ("невідомий ключ (дозволені: {allowed})", "unknown key (allowed: {allowed})"),
+    "sc number": ("має бути числом", "must be a number"),
+    "sc number or expression": ("має бути числом або виразом", "must be a number or an expression"),
+    "sc finite": ("має бути скінченним числом", "must be finite"),
+    "sc positive": ("має бути додатним{within}, задано {got}", "must be positive{within}, got {got}"),
+    "sc pair": ("має бути парою [x, y]", "must be a pair [x, y]"),
+    "sc name": ("має бути ім'ям", "must be a name"),
+    "sc bad name": ("{why}, задано {got}", "{why}, got {got}"),
+    "sc cam scene": ("це сцена кулачкового механізму: її креслять {cmd1} і {cmd2} ({doc}); ця команда приймає "
+                     "важільний механізм",
+                     "a cam scene: {cmd1} and {cmd2} draw it ({doc}); this command takes a lever mechanism"),
+    "sc gear scene": ("це сцена зубчастої передачі: її креслять {cmd1} і {cmd2} ({doc}); ця команда приймає "
+                      "важільний механізм",
+                      "a gear scene: {cmd1} and {cmd2} draw it ({doc}); this command takes a lever mechanism"),
+    "sc no crank": ("відсутній: сцені потрібен вхідний кривошип", "missing: a scene needs its input crank"),
+    "sc array": ("має бути масивом таблиць {table}", "must be an array of tables {table}"),
+    "sc name twice": ("ім'я {name} використано двічі", "the name {name} is used twice"),
+    "sc number twice": ("номер ланки {number} використано двічі", "link number {number} is used twice"),
+    "sc guide twice": ("ім'я напрямної {name} використано двічі", "the guide name {name} is used twice"),
+    "sc no guide": ("немає напрямної з іменем {name} (напрямні: {known})", "no guide named {name} (guides: {known})"),
+    "sc param name": ("ім'я параметра — слово, як-от r чи {example}",
+                      "a parameter's name is a word such as r or {example}"),
+    "sc synthesis type": ("відомий лише тип {known}", "only {known} is known"),
+    "sc missing": ("відсутній", "missing"),
+    "sc time ratio": ("коефіцієнт зміни середньої швидкості має бути більшим за 1, задано {got}",
+                      "the time-ratio coefficient must exceed 1, got {got}"),
+    "sc no frame": ("відсутній: сцені потрібна таблиця {table}", "missing: a scene needs {table}"),
+    "sc no fixed point": ("має назвати хоча б одну нерухому точку", "must name at least one fixed point"),
+    "sc point twice": ("точку вже задано на цій ланці", "the point is already defined on this link"),
+    "sc fraction": ("частка потребує довжини ланки; задайте {pair} у метрах",
+                    "a fraction needs the link's length; give {pair} in metres"),
+    "sc not frame point": ("{name} не є точкою стояка ({known})", "{name} is not a frame point ({known})"),
+    "sc speed once": ("задайте швидкість рівно одним із {omega} (рад/с) або {rpm} (об/хв)",
+                      "give the speed as exactly one of {omega} (rad/s) or {rpm}"),
+    "sc one of": ("має бути {choices}, задано {got}", "must be {choices}, got {got}"),
+    "sc frame name crank": ("{name} — ім'я стояка; назвіть кривошип інакше",
+                            "{name} is the frame's name; call the crank otherwise"),
+    "sc frame name link": ("{name} — ім'я стояка; назвіть ланку інакше",
+                           "{name} is the frame's name; call the link otherwise"),
+    "sc point list": ("має бути списком імен точок", "must be a list of point names"),
+    "sc joint twice": ("шарнір указано двічі", "a joint is listed twice"),
+    "sc no joint": ("ланці потрібен хоча б один шарнір", "a link needs at least one joint"),
+    "sc no ref": ("ланці, що ковзає без шарнірів, потрібна опорна точка",
+                  "a sliding link without joints needs a reference point"),
+    "sc no length": ("відсутня: відстань {dist}", "missing: the distance {dist}"),
+    "sc no shape": ("відсутнє: де на ланці лежить шарнір {joint}", "missing: where the joint {joint} lies on the link"),
+    "sc com": ("{name} не є точкою цієї ланки", "{name} is not a point of this link"),
+    "sc branch": ("має бути +1 або -1, задано {got}", "must be +1 or -1, got {got}"),
+    "sc start": ("має бути {choices} або кутом кривошипа, задано {got}",
+                 "must be {choices} or a crank angle, got {got}"),
+    "sc no link": ("немає ланки з таким іменем чи номером: {name} (ланки: {known})",
+                   "no link named or numbered {name} (links: {known})"),
+    "sc profile": ("має бути списком пар {pair}", "must be a list of {pair} pairs"),
+    "sc increase": ("відстані мають зростати", "the distances must increase"),
+    "sc delta": ("коефіцієнт нерівномірності руху має лежати в (0; 0,5), задано {got}",
+                 "the coefficient of unevenness must lie in (0, 0.5), got {got}"),
+    "sc motor": ("має бути назвою з каталогу або таблицею даних двигуна",
+                 "must be a catalogue name or a table of the motor's data"),
+    "sc efficiency": ("має лежати в (0; 1], задано {got}", "must lie in (0, 1], got {got}"),
+    "sc nonnegative": ("має бути ≥ 0, задано {got}", "must be ≥ 0, got {got}"),
+    "sc shafts": ("має бути моментами інерції {list}, {kg·m²}", "must be {list} moments of inertia, {kg·m²}"),
+    "sc shafts nonnegative": ("моменти інерції мають бути ≥ 0", "the moments of inertia must be ≥ 0"),
+    "sc first stage": ("відсутнє: швидкість проміжного вала потребує передавального відношення першого ступеня "
+                       "i1 = ω_дв/ω_пр",
+                       "missing: the intermediate shaft's speed needs the first stage's ratio i1 = ω_motor/ω_intermediate"),
+    "sc also frame": ("{name} — також точка стояка; імена точок стояка й ланок неповторні",
+                      "{name} is also a frame point; names are unique across the frame's and the links' points"),
+    "sc also link": ("{name} — також точка ланки {link}; дайте кожній точці своє ім'я",
+                     "{name} is also a point of link {link}; give each point its own name"),
+    "sc joins nothing": ("шарнір {name} нічого не з'єднує: жодна інша ланка чи точка стояка його не має",
+                         "joint {name} joins nothing: no other link or frame point has it"),
+    "sc no point": ("такої точки немає", "no such point"),
+    "sc output": ("{name} не є ні точкою, ні ланкою", "{name} is neither a point nor a link"),
+    "sc no point named": ("немає точки з іменем {name}", "no point named {name}"),
+    "sc pin frame": ("палець кривошипа не може бути точкою стояка", "the crank pin cannot be a frame point"),
+    # model/cam.py: a cam's scene
+    "cm not utf8": ("файл сцени не є текстом {utf}", "the scene is not {utf} text"),
+    "cm gear scene": ("у сцені немає таблиці {table}: вона описує зубчастий механізм (його креслять {cmd1} і "
+                      "{cmd2}, {doc})", "the scene has no {table} table: it describes a gear mechanism ({cmd1} and "
+                      "{cmd2} draw it, {doc})"),
+    "cm lever scene": ("у сцені немає таблиці {table}: вона описує важільний механізм ({cmd} читає сцену "
+                       "кулачкового механізму, {doc})", "the scene has no {table} table: it describes a lever "
+                       "mechanism ({cmd} reads a cam scene, {doc})"),
+    "cm unknown top": ("невідомий ключ у сцені кулачкового механізму (дозволені: {allowed})",
+                       "unknown key in a cam scene (allowed: {allowed})"),
+    "cm number": ("має бути числом, задано {got}", "must be a number, got {got}"),
+    "cm phases table": ("має бути таблицею {table} у градусах", "must be a table {table} in degrees"),
+    "cm unknown phase": ("невідома фаза (дозволені: {allowed})", "unknown phase (allowed: {allowed})"),
+    "cm angle": ("має бути від {lo} до {hi}°, задано {got}", "must be from {lo} to {hi}°, got {got}"),
+    "cm short phase": ("фази підйому й опускання тривають щонайменше по 5°",
+                       "the rise and the return take at least 5° each"),
+    "cm phases sum": ("сума чотирьох фаз має бути 360°, а вона {got}°", "the four phases must sum to 360°, they sum to {got}°"),
+    "cm laws table": ("має бути назвою закону руху або таблицею {table}", "must be a law's name or a table {table}"),
+    "cm unknown law": ("невідомий закон руху {got} (відомі: {known})", "unknown law {got} (known: {known})"),
+    "cm pressure table": ("має бути кутом або таблицею {table} у градусах",
+                          "must be an angle or a table {table} in degrees"),
+    "cm speed both": ("задайте {omega} або {rpm}, не обидва", "give {omega} or {rpm}, not both"),
+    "cm roller tiny": ("має бути 0 (гострий штовхач) або від 1e-05 {m}, задано {got}",
+                       "must be 0 (a knife-edge) or from 1e-05 {m}, got {got}"),
+    "cm divisions": ("має бути цілим числом від 2 до 360 (поділок кожної фази), задано {got}",
+                     "must be a whole number from 2 to 360 (intervals of each phase), got {got}"),
+    "cm translating only": ("стосується поступального штовхача; коромисло має {keys}",
+                            "is for a translating follower; a rocking one has {keys}"),
+    "cm rocking only": ("стосується коромисла; поступальний штовхач має {keys}",
+                        "is for a rocking follower; a translating one has {keys}"),
+    "cm roller base": ("ролик ({roller} {m}) має бути меншим за основну шайбу ({base} {m})",
+                       "the roller ({roller} {m}) must be smaller than the base circle ({base} {m})"),
+    "cm offset base": ("|e| = {e} {m} має бути меншим за радіус основної шайби {base} {m}",
+                       "|e| = {e} {m} must be smaller than the base radius {base} {m}"),
+    "cm arm reach": ("коромисло {arm} {m} на відстані {centre} {m} від центра кулачка досягає лише радіусів від {lo} "
+                     "до {hi} {m}", "the arm {arm} {m} at {centre} {m} from the cam's centre reaches radii from {lo} "
+                     "to {hi} {m} only"),
+    # model/structure.py: the structure of a lever mechanism
+    "st crank pivot": ("кривошип {crank} не з'єднаний зі стояком обертальною парою в точці {pivot}",
+                       "the crank {crank} is not pinned to the frame at {pivot}"),
+    "st mobility": ("ступінь рухомості W = 3·{n} − 2·{p5} = {w}, кривошипному механізму потрібен W = 1 "
+                    "(перевірте {joints} і {slides_on} ланок)",
+                    "mobility W = 3·{n} − 2·{p5} = {w}, a crank mechanism needs W = 1 (check the {joints} and "
+                    "{slides_on} of the links)"),
+    "st no groups": ("механізм не розкладається на структурні групи II класу: ланки {links} не утворюють "
+                     "двоповідкову групу на відомих ланках (чи кожен вхід групи приєднано до ланок, знайдених "
+                     "раніше?)", "cannot decompose into class-II groups: links {links} do not form a dyad on "
+                     "the known links (is every input of a dyad joined to links solved before it?)"),
+    "st ppp": ("ланки {x} і {y}: група з трьох поступальних пар не має певного положення",
+               "links {x} and {y}: a group of three sliding pairs has no fixed position"),
+    # model/motors.py: the motor of the dynamics
+    "mo no motor": ("двигуна {name} немає в каталозі ({first} … {last})", "no motor {name} in the catalogue ({first} … {last})"),
+    "mo no line": ("у каталозі немає серії на {speed} {rpm} ({lines})", "the catalogue has no {speed} {rpm} line ({lines})"),
+    "mo too weak": ("циклу потрібно {power} {kW}, більше, ніж дає найбільший двигун каталогу на {speed} {rpm} ({name}, "
+                    "{largest} {kW})", "the cycle needs {power} {kW}, more than the largest {speed} {rpm} motor of the "
+                    "catalogue ({name}, {largest} {kW})"),
+    "mo positive": ("має бути додатним числом до {hi} {unit}, задано {got}", "must be a positive number up to {hi} {unit}, got {got}"),
+    "mo number": ("має бути числом до {hi} {unit}, задано {got}", "must be a number up to {hi} {unit}, got {got}"),
+    "mo missing": ("відсутній (або назвіть двигун з каталогу)", "missing (or name a catalogue motor)"),
+    "mo rated": ("номінальна частота обертання {rated} {rpm} має бути меншою за синхронну {sync} {rpm}",
+                 "the rated speed {rated} {rpm} must be below the synchronous {sync} {rpm}"),
+    # exact/positions.py and exact/kinetostatics.py: the output, the start, the loads
+    "ps output slides": ("ланка {name} ковзає вздовж напрямної стояка й не обертається; назвіть її "
+                         "точку, що ковзає, або ланку, що обертається",
+                         "the link {name} slides along a frame guide and never turns; name its "
+                         "sliding point, or a link that turns"),
+    "ps output neither": ("{name} не є ні ланкою, ні точкою, що ковзає",
+                          "{name} is neither a link nor a sliding point"),
+    "ps start inner": ("внутрішнє й зовнішнє мертві положення має повзун; вихідна ланка "
+                       "{name} задана кутом (візьміть {use})",
+                       "inner and outer dead centres belong to a slider; the output "
+                       "{name} is a link's angle (use {use})"),
+    "ps start no extremes": ("вихідна ланка {name} не має крайніх положень (вона "
+                             "обертається повністю); задайте початок кутом кривошипа",
+                             "the output {name} has no extreme positions (it turns "
+                             "fully); give the start as a crank angle"),
+    "ks frame force": ("{name} — точка стояка; сила на стояк не навантажує механізм",
+                       "{name} is a frame point; a force on the frame does not load the mechanism"),
+    "ks not finite": ("група {group}: силовий розрахунок не скінченний при куті кривошипа {phi}° (навантаження чи "
+                      "геометрія поза межами)", "group {group}: the force analysis is not finite at crank angle "
+                      "{phi}° (loads or geometry out of range)"),
+    # exact/dynamics.py: a cycle the dynamics cannot take
+    "dy no masses": ("сцена не задає мас і моментів інерції ланок ({keys} у {crank} і {link} або {loads}): "
+                     "зведеного моменту інерції немає", "the scene gives no masses or moments of inertia of its links "
+                     "({keys} in {crank} and {link}, or {loads}): there is no reduced moment of inertia"),
+    "dy no work": ("сили опору не виконують роботи за цикл (A_c = {work} {J}); задайте {force}, що опирається "
+                   "руху вихідної ланки", "the resistance does no work over a cycle (A_c = {work} {J}); give a "
+                   "{force} that resists the output's motion"),
+    # model/gears.py: a gear scene
+    "gr teeth list": ("має бути списком із {n} чисел зубців, задано {got}", "must be a list of {n} numbers of teeth, got {got}"),
+    "gr teeth": ("число зубців має бути цілим від {lo} до {hi}, задано {got}",
+                 "a number of teeth must be a whole number from {lo} to {hi}, got {got}"),
+    "gr z missing": ("відсутній ({z})", "missing ({z})"),
+    "gr shifts": ("має бути {pair} або {auto}, задано {got}", "must be {pair} or {auto}, got {got}"),
+    "gr shift": ("коефіцієнт зміщення має бути від {lo} до {hi}, задано {got}",
+                 "a shift coefficient must be from {lo} to {hi}, got {got}"),
+    "gr type": ("має бути {a} (однорядний) або {b} (дворядний), задано {got}",
+                "must be {a} (one row) or {b} (two rows), got {got}"),
+    "gr planets": ("число сателітів K має бути цілим від {lo} до {hi}, задано {got}",
+                   "K must be a whole number from {lo} to {hi}, got {got}"),
+    "gr ratio or teeth": ("задайте бажане передавальне відношення ({ratio}) або зубці ({z}), одне з двох",
+                          "give the ratio wanted ({ratio}) or the teeth ({z}), one of them"),
+    "gr type A ratio": ("однорядний механізм типу A має u1H = 1 + z3/z1 > 2, задано {got}",
+                        "a type A train has u1H = 1 + z3/z1 > 2, got {got}"),
+    "gr lever scene": ("у сцені немає таблиці {t1} чи {t2}: вона описує важільний механізм ({cmd} читає сцену "
+                       "зубчастого механізму, {doc})", "the scene has no {t1} or {t2} table: it describes a lever "
+                       "mechanism ({cmd} reads a gear scene, {doc})"),
+    "gr cam scene": ("сцена кулачкового механізму не має таблиці {table} (її креслить {cmd}, {doc})",
+                     "a cam scene has no {table} table ({cmd} draws it, {doc})"),
+    "gr unknown top": ("невідомий ключ у сцені зубчастого механізму (дозволені: {allowed})",
+                       "unknown key in a gear scene (allowed: {allowed})"),
+    # exact/cam.py: a cam that cannot be built
+    "ec arm reach": ("коромисло {arm} {m} на відстані {centre} {m} від центра кулачка не дістає основної шайби "
+                     "R0 = {base} {m}", "the arm {arm} {m} at {centre} {m} from the cam's centre cannot reach the "
+                     "base circle R0 = {base} {m}"),
+    "ec offset base": ("ексцентриситет |e| = {e} {m} має бути меншим за радіус основної шайби {base} {m}",
+                       "the offset |e| = {e} {m} must be smaller than the base radius {base} {m}"),
+    "ec no base": ("жоден радіус основної шайби не тримає кути тиску в допустимих межах",
+                   "no base radius keeps the pressure angles within the allowed ones"),
+    "ec rise pressure": ("кут тиску фази підйому лишається більшим за допустимий {allowed}° за кожного радіуса "
+                         "основної шайби, якого досягає коромисло (щонайменше {least}° при R0 = {R0} {mm}); "
+                         "дозвольте більший кут або змініть довжину коромисла чи міжосьову відстань",
+                         "the rise's pressure angle stays above its allowed {allowed}° at every base radius the "
+                         "rocking arm reaches (at best {least}° at R0 = {R0} {mm}); allow a larger angle or change "
+                         "the arm or the centre distance"),
+    "ec return pressure": ("кут тиску фази опускання лишається більшим за допустимий {allowed}° за кожного радіуса "
+                           "основної шайби, якого досягає коромисло (щонайменше {least}° при R0 = {R0} {mm}); "
+                           "дозвольте більший кут або змініть довжину коромисла чи міжосьову відстань",
+                           "the return's pressure angle stays above its allowed {allowed}° at every base radius the "
+                           "rocking arm reaches (at best {least}° at R0 = {R0} {mm}); allow a larger angle or change "
+                           "the arm or the centre distance"),
+    # model/expressions.py: a scene's arithmetic
+    "ex long": ("вираз {text} довший за {most} символів", "the expression {text} is longer than {most} characters"),
+    "ex unreadable": ("не вдається прочитати вираз {text}", "cannot read the expression {text}"),
+    "ex deep": ("вираз {text} вкладено глибше ніж на {most} рівні", "the expression {text} is nested more than {most} deep"),
+    "ex underscore": ("{text}: пишіть числа без «_»", "{text}: write numbers without '_'"),
+    "ex unknown name": ("невідоме ім'я {name} у {text}", "unknown name {name} in {text}"),
+    "ex arithmetic": ("у {text} дозволена лише арифметика", "only arithmetic is allowed in {text}"),
+    "ex cannot": ("не вдається обчислити {text}: {why}", "cannot evaluate {text}: {why}"),
+    "ex infinite": ("{text} не є скінченним числом", "{text} is not a finite number"),
+    # model/bounds.py: the reading's bounds
+    "bad range": ("має бути {range}, задано {got}", "must be {range}, got {got}"),
+    "bad count": ("має бути цілим числом від {lo} до {hi}, задано {got}",
+                  "must be a whole number from {lo} to {hi}, got {got}"),
+    "bad large integer": ("ціле число завелике (|значення| ≤ {most})", "the integer is too large (|value| ≤ {most})"),
+    "bad name long": ("ім'я має щонайбільше 40 символів", "a name has at most 40 characters"),
+    "bad name spaces": ("ім'я без пропусків і керівних символів", "a name has no spaces or control characters"),
+    "bad scene size": ("файл сцени більший за {kb} кБ", "the scene is larger than {kb} kB"),
+    "bad toml syntax": ("синтаксична помилка {toml}: {why}", "{toml} syntax error: {why}"),
+    "bad toml depth": ("{toml} вкладено надто глибоко (щонайбільше {most} рівнів)",
+                       "{toml} nested too deeply (at most {most} levels)"),
+    "bad toml value": ("значення {toml} не читається: {why}", "{toml} value cannot be read: {why}"),
+})
