@@ -105,6 +105,7 @@ def test_mutated_scenes(tmp_path_factory, text):
     _through_commands(tmp_path_factory, text)
 
 
+@pytest.mark.slow      # a long fuzz run; test_mutated_scenes is the default's quick fuzz of bad input
 @settings(**dict(QUICK, max_examples=max(2, QUICK["max_examples"] // 3)))
 @given(mutated(FULL_TREE))
 def test_every_sections_fields_of_the_wrong_type(tmp_path_factory, text):
@@ -157,6 +158,7 @@ def test_sheets_of_random_mechanisms(tmp_path_factory, scene, suffix, kind):
     assert (code == 0) == os.path.exists(out)
 
 
+@pytest.mark.slow      # a long fuzz run (the brief: marked slow); the explorer of every example runs by default
 @settings(**SHEET)
 @given(st.one_of(VALID, NEAR_SINGULAR))
 def test_the_explorer_of_random_mechanisms(tmp_path_factory, scene):
