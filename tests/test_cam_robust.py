@@ -144,7 +144,7 @@ def test_a_rocking_refusal_names_the_phase_and_its_angle(tmp_path):
     path.write_text(ROCKING.read_text(encoding="utf-8").replace(
         "pressure_angle_deg = { rise = 45, return = 45 }", "pressure_angle_deg = { rise = 5, return = 80 }"),
         encoding="utf-8")
-    code, out, err = run(["cam", str(path)])
+    code, out, err = run(["cam", str(path), "--lang", "en"])
     assert code == 2 and len(err.strip().splitlines()) == 1
     assert "the rise's pressure angle" in err and "allowed 5°" in err and "return" not in err.split("(")[0]
 

@@ -35,6 +35,8 @@ def test_the_lever_row_wraps_its_charts_to_the_row_under_it():
 
 
 @pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the wrapped lever row is held back (forces.CUTS): it drew the shaper's "
+                   "lever past LEVER_MM; ROCKING_BLOCK51's lever stays about 80 × 70 mm (an open mark)")
 def test_rocking_block_lever_is_drawn_large_on_its_a1_sheet():
     """ROCKING_BLOCK51's A1 force sheet (one sheet): its lever drawn at least 100 mm across (was
     about 80 × 70 mm beside the M_зр chart), no chart beside it in its row, every drawing clear."""

@@ -98,7 +98,7 @@ def without_loads(text: str) -> str:
 def test_the_shaper_without_loads_and_forces_is_refused_in_one_line(tmp_path):
     path = scene(tmp_path, without_loads(SHAPER))
     assert "[[force]]" not in path.read_text() and "mass = 40" in path.read_text()
-    ends(["dynamics", path, "--json"], 2, "does no work", str(path))
+    ends(["dynamics", path, "--json", "--lang", "en"], 2, "does no work", str(path))
 
 
 def test_a_weight_on_a_level_guide_has_no_resistance_moment(tmp_path):

@@ -654,7 +654,8 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 
 
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
-CUTS = (-1, 0)        # the charts in the lever's row: the shape's own count, else none (``_tree``)
+CUTS = (-1,)          # the charts in the lever's row (``_tree``): the shape's own count. A wrapped row (0:
+                      # none) grew ROCKING_BLOCK51's lever but drew the shaper's past LEVER_MM (172 mm): held back
 SPACE = forceset.SPACE     # mm between two groups, a group and its plan (review 7 #18)
 ROWS_GAP = GAP             # … between the one-sheet composition's other drawings
 
