@@ -194,6 +194,18 @@ def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang:
     return composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
 
 
+def cam_constructed(text: str, tmp_path_factory, name: str = "cam"):
+    """A cam scene's text solved (``exact.cam.solve``) and constructed with no ruler: (solution,
+    construction)."""
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.model.cam import load as load_cam
+    path = tmp_path_factory.mktemp(name) / f"{name}.toml"
+    path.write_text(text, encoding="utf-8")
+    sol = solve(load_cam(path))
+    return sol, construct(sol, measure=False)
+
+
 def scene_study(text: str):
     return study(loads(text, "<test>"))
 

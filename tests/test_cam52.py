@@ -19,6 +19,7 @@ import re
 import numpy as np
 import pytest
 
+from conftest import cam_constructed
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import construct
 from graphplan.model.cam import load
@@ -83,10 +84,7 @@ def _largest(x_axis: float, R0: float) -> tuple[float, float]:
 
 @pytest.fixture(scope="module")
 def cam52(tmp_path_factory):
-    path = tmp_path_factory.mktemp("cam52") / "cam52.toml"
-    path.write_text(CAM52, encoding="utf-8")
-    sol = solve(load(path))
-    return sol, construct(sol, measure=False)
+    return cam_constructed(CAM52, tmp_path_factory, "cam52")
 
 
 def test_the_auto_offset_is_the_scans_smallest_R0(cam52):

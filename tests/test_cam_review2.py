@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, cam_constructed
 from graphplan.drawing.cam import diagrams, phase_diagram
 from graphplan.exact.cam import solve
 from graphplan.graphic.cam import construct
@@ -19,10 +19,7 @@ from review_scenes import CAM_TR
 
 @pytest.fixture(scope="module")
 def cam_tr(tmp_path_factory):
-    path = tmp_path_factory.mktemp("cam") / "cam_tr.toml"
-    path.write_text(CAM_TR, encoding="utf-8")
-    sol = solve(load(path))
-    return sol, construct(sol, measure=False)
+    return cam_constructed(CAM_TR, tmp_path_factory, "cam_tr")
 
 
 def test_the_chords_of_s_that_miss_the_closing_are_thin_construction(cam_tr):
