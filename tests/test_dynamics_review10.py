@@ -53,16 +53,28 @@ def test_graphical_energy_within_the_labs_limit_of_the_exact(sixbar):
 
 
 def test_the_design_answer_is_said_in_one_sentence():
-    """Review 11's yoke: 10,09 kg·m² exact and "not needed" with the motor — one sentence says
-    the motor's is the answer, in both languages."""
+    """Review 11's yoke: 10,09 kg·m² exact and "not needed" with the motor — one sentence gives the
+    course's answer (REFERENCE §9, the third sheet): the flywheel read off Wittenbauer's diagram,
+    μ_T·|kl|/(ω_m²·δ) − I_рот·i², beside the exact one; the motor's run only as a remark, in both
+    languages."""
+    import math
+
     from graphplan.exact.dynamics import analyse
     from graphplan.graphic.flywheel import construct
     from graphplan.report.dynamics import design_note, dynamics_json
+    from graphplan.util.markup import plain
     doc = dynamics_json(construct(analyse(scene_study(REVIEW11_B), None), 12, 0.5))
-    assert doc["flywheel"]["needed"] and doc["flywheel"]["motor"] == 0
-    en, uk = design_note(doc, "en"), design_note(doc, "uk")
-    assert en.startswith("The design's answer is no flywheel") and "10.09" in en and en.count(". ") == 0
-    assert uk.startswith("Відповідь проєкту — без маховика") and "10,09" in uk
+    fw = doc["flywheel"]
+    assert fw["needed"] and fw["motor"] == 0
+    read = doc["scales"]["mu_A"] * fw["kl_mm"] / (doc["omega_mean"] ** 2 * doc["delta"]) - fw["rotor_reduced"]
+    assert fw["graphical"] == pytest.approx(read, rel=5e-4)                   # μ_A printed rounded
+    en, uk = (plain(design_note(doc, lang)).replace("\u00a0", " ") for lang in ("en", "uk"))
+    value = f"{fw['graphical']:.2f}"
+    assert en.startswith(f"The design's answer is a flywheel I_fl = {value}") and "Wittenbauer" in en, en
+    assert uk.startswith(f"Відповідь проєкту — маховик I_мах = {value.replace('.', ',')}") and "Віттенбауера" in uk
+    assert "10.09" in en and "10,09" in uk and en.count(". ") == 0             # the exact one its check
+    assert "remark: with the motor no flywheel is needed" in en and "примітка: з двигуном маховик не потрібен" in uk
+    assert math.isclose(fw["exact"], 10.09, abs_tol=0.005)
 
 
 @pytest.mark.slow

@@ -554,34 +554,55 @@ def not_needed(delta_without: float, delta: float, lang: str, symbol: str = "δ"
 
 
 def design_note(doc: dict[str, Any], lang: str) -> str | None:
-    """One sentence on which flywheel the design fits where Table 2 gives two answers (review 11's
-    Scotch yoke: 10,09 kg·m² exact for a constant M*_d, and none with the motor): the motor's — the
-    equation of motion solved with the chosen motor's characteristic, whose moment falls as the
-    speed rises and so takes up part of the fluctuation of ΔT that a constant M*_d leaves to the
-    inertia; the constant-M*_d flywheel is the course's model of an ideal drive, larger and on the
-    safe side. None where the two agree (none needed by either, or within the lab's 5 %)."""
+    """One sentence giving the project's answer wherever a flywheel is needed: the flywheel by the
+    course's graphical method (REFERENCE §9: Wittenbauer's energy–mass diagram, the tangents at
+    ψ_max/ψ_min, I_fl = μ_T·|kl|/(ω_m²·δ) − I_рот·i², the "third sheet"), with the exact one (the
+    equation of motion for the same constant M*_d) as its check; the motor's own run (seed 003's
+    M = Aω + B through the reducer) only as a remark — its moment falls as the speed rises and takes
+    up part of the fluctuation, and its crank turns at the motor's own mean speed (``speed_share``),
+    so it may need less (or none: review 11's Scotch yoke, 10,09 kg·m² against none). The remark is
+    left out where the motor's flywheel is within the lab's 5 % of the exact. None where no flywheel
+    is needed (Table 2 and the notes say why)."""
     fw = doc["flywheel"]
-    if not fw["needed"] or (fw["motor"] > 0 and abs(fw["motor"] - fw["exact"]) <= LAB_LIMIT / 100 * fw["exact"]):
-        return None                         # one answer, or two within the lab's 5 % of each other
+    if not fw["needed"]:
+        return None
     uk = lang == "uk"
     J = "кг·м²" if uk else "kg·m²"
     d = flywheel_decimals(doc)
+    fl, md = ("I_мах", "M^*_д") if uk else ("I_fl", "M^*_d")
     exact = flywheel_text(fw["exact"], lang, d)
-    md = "M^*_д" if uk else "M^*_d"
-    if fw["motor"] > 0:
-        answer = (f"маховик {flywheel_text(fw['motor'], lang, d)} {J} (з двигуном)" if uk else
-                  f"the motor's flywheel, {flywheel_text(fw['motor'], lang, d)} {J}")
-    else:
-        dm = f"{motor_delta(lang)} = {delta_text(doc['motor']['motion']['delta'], lang)} < {num(doc['delta'], lang)}"
-        answer = (f"без маховика ({dm})" if uk else f"no flywheel ({dm})")
-    safe = fw["motor"] < fw["exact"]         # the constant-M*_d flywheel the larger: on the safe side
-    speed = speed_share(doc, lang)
+    graphical = fw["graphical"] > 0          # the diagram's reading: the answer (else the exact one)
+    value = flywheel_text(fw["graphical"] if graphical else fw["exact"], lang, d)
     if uk:
-        return (f"Відповідь проєкту — {answer}: M(ω) двигуна спадає зі швидкістю і гасить частину коливань{speed}; "
-                f"{exact} {J} — для сталого {md}" + (", із запасом" if safe else ", курсова модель"))
-    return (f"The design's answer is {answer}: the motor's M(ω) falls with speed and takes up part of the "
-            f"fluctuation{speed}; the {exact} {J} is for a constant {md}" + (", on the safe side" if safe else
-                                                                           ", the course's model"))
+        how = (f"графічно, за діаграмою Віттенбауера, для сталого {md}; точно {exact}{NB}{J}" if graphical else
+               f"точно, для сталого {md}")
+        answer = f"Відповідь проєкту — маховик {fl}{NB}={NB}{value}{NB}{J} ({how})"
+    else:
+        how = (f"graphical, by Wittenbauer's diagram, for a constant {md}; exact {exact}{NB}{J}" if graphical else
+               f"exact, for a constant {md}")
+        answer = f"The design's answer is a flywheel {fl}{NB}={NB}{value}{NB}{J} ({how})"
+    if fw["motor"] > 0 and abs(fw["motor"] - fw["exact"]) <= LAB_LIMIT / 100 * fw["exact"]:
+        return answer                        # the motor's run agrees within the lab's 5 %: no remark
+    dm = (f"{motor_delta(lang)}{NB}={NB}{delta_text(doc['motor']['motion']['delta'], lang)}{NB}<{NB}"
+          f"{num(doc['delta'], lang)}")         # kept on one line (no-break spaces)
+    motor = flywheel_text(fw["motor"], lang, d)
+    speed = speed_share(doc, lang)
+    if fw["motor"] <= 0:
+        with_motor = (f"з двигуном маховик не потрібен ({dm})" if uk else f"with the motor no flywheel is needed ({dm})")
+    elif fw["motor"] < fw["exact"]:
+        with_motor = (f"з двигуном досить {motor}{NB}{J}" if uk else f"with the motor {motor}{NB}{J} suffices")
+    else:
+        with_motor = (f"з двигуном потрібен більший, {motor}{NB}{J}" if uk else
+                      f"with the motor a larger one is needed, {motor}{NB}{J}")
+    if fw["motor"] < fw["exact"]:
+        if uk:
+            return (f"{answer}; примітка: {with_motor}, бо M(ω) двигуна спадає зі швидкістю і гасить частину "
+                    f"коливань{speed}; {fl} — із запасом")
+        return (f"{answer}; remark: {with_motor}, as the motor's M(ω) falls with speed and takes up part of the "
+                f"fluctuation{speed}; {fl} is on the safe side")
+    if uk:
+        return f"{answer}; примітка: {with_motor}{speed}"
+    return f"{answer}; remark: {with_motor}{speed}"
 
 
 SPEED_SAID = 1.0     # %: ω_m дв off ω_m by more than this — the design note says it as a cause (stop 51)
