@@ -574,12 +574,10 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
     graphical = fw["graphical"] > 0          # the diagram's reading: the answer (else the exact one)
     value = flywheel_text(fw["graphical"] if graphical else fw["exact"], lang, d)
     if uk:
-        how = (f"графічно, за діаграмою Віттенбауера, для сталого {md}; точно {exact}{NB}{J}" if graphical else
-               f"точно, для сталого {md}")
+        how = f"за діаграмою Віттенбауера; точно {exact}" if graphical else f"точно, для сталого {md}"
         answer = f"Відповідь проєкту — маховик {fl}{NB}={NB}{value}{NB}{J} ({how})"
     else:
-        how = (f"graphical, by Wittenbauer's diagram, for a constant {md}; exact {exact}{NB}{J}" if graphical else
-               f"exact, for a constant {md}")
+        how = f"by Wittenbauer's diagram; exact {exact}" if graphical else f"exact, for a constant {md}"
         answer = f"The design's answer is a flywheel {fl}{NB}={NB}{value}{NB}{J} ({how})"
     if fw["motor"] > 0 and abs(fw["motor"] - fw["exact"]) <= LAB_LIMIT / 100 * fw["exact"]:
         return answer                        # the motor's run agrees within the lab's 5 %: no remark
@@ -588,21 +586,15 @@ def design_note(doc: dict[str, Any], lang: str) -> str | None:
     motor = flywheel_text(fw["motor"], lang, d)
     speed = speed_share(doc, lang)
     if fw["motor"] <= 0:
-        with_motor = (f"з двигуном маховик не потрібен ({dm})" if uk else f"with the motor no flywheel is needed ({dm})")
+        with_motor = f"з двигуном не потрібен ({dm})" if uk else f"with the motor none is needed ({dm})"
     elif fw["motor"] < fw["exact"]:
-        with_motor = (f"з двигуном досить {motor}{NB}{J}" if uk else f"with the motor {motor}{NB}{J} suffices")
+        with_motor = f"з двигуном досить {motor}{NB}{J}" if uk else f"with the motor {motor}{NB}{J} suffices"
     else:
-        with_motor = (f"з двигуном потрібен більший, {motor}{NB}{J}" if uk else
-                      f"with the motor a larger one is needed, {motor}{NB}{J}")
-    if fw["motor"] < fw["exact"]:
-        if uk:
-            return (f"{answer}; примітка: {with_motor}, бо M(ω) двигуна спадає зі швидкістю і гасить частину "
-                    f"коливань{speed}; {fl} — із запасом")
-        return (f"{answer}; remark: {with_motor}, as the motor's M(ω) falls with speed and takes up part of the "
-                f"fluctuation{speed}; {fl} is on the safe side")
-    if uk:
-        return f"{answer}; примітка: {with_motor}{speed}"
-    return f"{answer}; remark: {with_motor}{speed}"
+        with_motor = f"з двигуном потрібен {motor}{NB}{J}" if uk else f"with the motor {motor}{NB}{J} is needed"
+    if fw["motor"] < fw["exact"]:            # the motor's M(ω) falls with speed: it takes up part of ΔT
+        why = "M(ω) спадає зі швидкістю" if uk else "its M(ω) falls with speed"
+        return f"{answer}; {'примітка' if uk else 'remark'}: {with_motor}: {why}{speed}"
+    return f"{answer}; {'примітка' if uk else 'remark'}: {with_motor}{speed}"
 
 
 SPEED_SAID = 1.0     # %: ω_m дв off ω_m by more than this — the design note says it as a cause (stop 51)
