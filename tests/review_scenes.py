@@ -5181,3 +5181,105 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# Helper dyn53's own (stop 53): a rocking screen of a grain cleaner — a crank-rocker whose rocker's arm O2D
+# drives the screen box E on a horizontal guide by the rod DE (I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП); 600 N on
+# both strokes, a damper moment on the rocker's working swing, crank clockwise, a 750-rpm motor through a
+# two-stage reducer given by its shafts (seed 003 eq. 4).
+DYN_OWN53 = '''title = "Механізм коливального решета зерноочисної машини"
+title_en = "Rocking screen of a grain cleaner"
+designation = "ТММ.КМ.53.100"
+
+[sheet]
+student = "Помічник dyn53"
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, 0.14]
+
+[frame.guides]
+e = { through = [0, 0.32], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.5 }
+mass = 2.6
+inertia = 0.014
+
+[[link]]
+name = "O2D"
+number = 3
+joints = ["O2", "B"]
+length = 0.12
+points = { S3 = 0.8 }
+shape = { D = [0.2, 0.0] }
+mass = 3
+inertia = 0.012
+
+[[link]]
+name = "DE"
+number = 4
+joints = ["D", "E"]
+length = 0.22
+points = { S4 = 0.5 }
+mass = 1.8
+inertia = 0.007
+
+[[link]]
+name = "E"
+number = 5
+joints = ["E"]
+slides_on = "e"
+mass = 12
+
+[branch]
+B = 1
+E = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [4]
+force_phi_deg = 120
+output = "E"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "E"
+magnitude = 600
+stroke = "both"
+direction = "oppose"
+
+[[moment]]
+link = 3
+magnitude = 25
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.85
+synchronous_rpm = 750
+reducer_shafts = [0.0006, 0.004, 0.06]
+first_stage_ratio = 3.2
+'''

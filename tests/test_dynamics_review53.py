@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 from conftest import scene_study
-from review_scenes import LINK53
+from review_scenes import DYN_OWN53, LINK53
 
 R, L2, L4, W1 = 0.055, 0.22, 0.17, 360 * math.pi / 30
 EB = np.array([math.cos(math.pi / 3), math.sin(math.pi / 3)])           # guide b at 60° through O1
@@ -106,3 +106,19 @@ def test_the_sheets_answer_is_the_wittenbauer_flywheel_and_the_motor_a_remark(dy
     head, _, tail = note.partition("примітка: " if lang == "uk" else "remark: ")
     assert value in head and ("Віттенбауера" in head if lang == "uk" else "Wittenbauer" in head), note
     assert "0,0282 < 0,04" in tail if lang == "uk" else "0.0282 < 0.04" in tail
+
+
+# -- helper dyn53's own: a rocking screen with a two-stage reducer (DYN_OWN53) ----------------------------
+
+def test_the_screens_reducer_and_rotor_are_subtracted_as_seed_003_reduces_them():
+    """Seed 003 eq. 4: I*_ред = I_1p·i² + I_2p·(i/i1)² + I_3p with i = n_н/n_1 = 698/180 (4АМ100L8's
+    rated speed) and i1 = 3.2; the rotor I_рот·i² (0.0130 kg·m²); the classical J less both is the
+    flywheel — and the screen resists on both strokes: M*_c = 600·|v_E|/ω1 + gravity's, ≥ 0 but for
+    gravity (|M*_c| under 2 N·m where the screen stands still)."""
+    from graphplan.exact.dynamics import analyse
+    dyn = analyse(scene_study(DYN_OWN53), None)
+    i = 698 / 180
+    assert dyn.drive.ratio == pytest.approx(i, rel=1e-9)
+    assert dyn.drive.reducer_reduced == pytest.approx(0.0006 * i * i + 0.004 * (i / 3.2) ** 2 + 0.06, rel=1e-9)
+    assert dyn.drive.rotor_reduced == pytest.approx(0.013 * i * i, rel=1e-9)
+    assert min(dyn.cycle.samples.moment) > -2.0
