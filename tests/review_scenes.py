@@ -5086,3 +5086,32 @@ rpm = 300
 direction = "cw"
 divisions = 10
 '''
+
+
+CAM53 = '''# Stop 53 (the lead's check): a rocking roller follower turned by a counter-clockwise cam, a cosine rise
+# of 120° straight into a parabolic return of 90° (no far dwell), a large swing of 30°, 12 divisions, and a
+# base radius given larger than the smallest allowed.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 53)"
+title_en = "Cam with a rocking roller follower (check 53)"
+designation = "ТММ.КМ.53.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 30
+arm = 0.12
+centre_distance = 0.15
+roller_radius = 0.012
+phases_deg = { rise = 120, dwell_far = 0, return = 90, dwell_near = 150 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 90
+direction = "ccw"
+base_radius = 0.07
+divisions = 12
+'''

@@ -1059,6 +1059,37 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
     return None
 
 
+def pressure_by_rates(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
+                      later=None) -> list | None:
+    """A set whose s diagram has a sheet of its own (set_sizes): ϑ(φ) under d²s/dφ² and ds/dφ on the
+    first sheet at their μ_φ, each division's ϑ straight under theirs, as tall as that sheet leaves over
+    its title block — s's sheet then keeps its own pole P2 and rays (stop 53: CAM53's A2 sheet 1 drew
+    the two diagrams over 184 of 345 mm and ϑ(φ) stood on none of the three sheets). None where that
+    takes more sheets than ``laid``."""
+    names = [leaf.name for leaf in leaves]
+    if laid is None or "displacement" not in names or "diagrams" not in names:
+        return None
+    at = names.index("diagrams")
+    av = leaves[at]
+    room = sheet_room(region, keep)
+    b = av.record.bounds()
+    h = room[1] - (b[3] - b[1]) - 2 * GAP
+    if h < PRESSURE_ROOM[1]:
+        return None
+    lines = notes(doc, lang, cam)
+    for part in (1.0, 0.9, 0.8, 0.7, 0.6):
+        leaf = pressure_leaf(sol, g, lang, room[0] - 2 * GAP, h * part, True)
+        if leaf is None:
+            continue
+        both = own_sheet(Leaf("diagrams", record=with_theta(av.record, leaf.record)), room)
+        if both.w > room[0] + 1e-9 or both.h > room[1] + 1e-9:
+            continue
+        drawings = leaves[:at] + [both] + leaves[at + 1:]
+        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid, True):
+            return again
+    return None
+
+
 def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid,
                 side: bool = False):
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
@@ -1081,12 +1112,14 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     pressure angle read off the phase diagram (R_0 from [ϑ]) is checked over the turn beside it, and
     the set reads in order: the law's diagrams, the phase diagram with ϑ(φ), the profile, the table.
     None where that sheet has no room for ϑ(φ) or the set would take a sheet more."""
-    if laid is None or len(leaves) != 3:
+    names = [leaf.name for leaf in leaves]
+    if laid is None or not {"phase", "profile"} <= set(names):
         return None
     page = next((pg for pg in laid if {"phase", "profile"} <= {leaf.name for leaf, _ in pg}), None)
     if page is None:
         return None
-    phase, profile = leaves[1], leaves[2]
+    at = names.index("phase")           # a split set's too (s on a sheet of its own: four leaves; stop 53's A3 set)
+    phase, profile = leaves[at], leaves[names.index("profile")]
     w = region[2] - region[0] - profile.w - 2 * GAP
     h = region[3] - region[1] - phase.h - 3 * GAP
     if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
@@ -1096,7 +1129,7 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         leaf = pressure_leaf(sol, g, lang, w, h * part, same)
         if leaf is None:
             continue
-        drawings = [leaves[0], Stack([phase, leaf]), profile]
+        drawings = leaves[:at] + [Stack([phase, leaf])] + leaves[at + 1:]
         for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
             where = [{lf.name for lf, _ in pg} for pg in again]
             if any({"phase", "pressure", "profile"} <= names for names in where):
@@ -1225,6 +1258,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
         most = len(own) if placed(own) else len(laid or [])
         same = [] if laid is None else [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
+                            pressure_by_rates(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
