@@ -5115,3 +5115,30 @@ direction = "ccw"
 base_radius = 0.07
 divisions = 12
 '''
+
+
+OWN_CAM53 = '''# Stop 53 (cam53's own look): a translating roller follower, the offset chosen by the program ("auto"),
+# the cam counter-clockwise, a cycloidal rise of 160° and a cosine return of 160° round a far dwell of
+# 40° — NO near dwell (the return runs straight into the next rise) —, 10 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем без ближнього вистою (власний 53)"
+title_en = "Cam with a translating roller follower and no near dwell (own 53)"
+designation = "ТММ.КМ.53.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.04
+offset = "auto"
+roller_radius = 0.01
+phases_deg = { rise = 160, dwell_far = 40, return = 160, dwell_near = 0 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 120
+direction = "ccw"
+divisions = 10
+'''

@@ -140,3 +140,27 @@ def test_cam53s_sets_carry_the_pressure_angle(fmt, lang, tmp_path):
     sheets = sorted(tmp_path.glob("cam*.svg"))
     assert len(sheets) >= 2
     assert sum(caption in p.read_text(encoding="utf-8") for p in sheets) == 1
+
+
+def test_omega_stands_clear_of_the_rays_of_a_cam_with_no_near_dwell():
+    """OWN_CAM53 (a translating roller follower, e = 6.6 mm, R0 = 23 mm, no near dwell): the rays are
+    lines tangent to the offset circle, and ω's arc about O must stand in a sector that none of them
+    crosses at the arc's radius (it was placed by the profile points' angles and drawn over the rays)."""
+    from graphplan.drawing.cam import profile_drawing
+    from review_scenes import OWN_CAM53
+    sol = solve(build(tomllib.loads(OWN_CAM53), "<own53>"))
+    g = construct(sol, measure=False, series="rad")
+    rec = profile_drawing(sol, g, "en")
+    (arc,) = [q for q in rec.items if q.step == "ω" and q.kind == "arc"]
+    c = complex(*arc.points[0])
+    rr = float(arc.radius)
+    assert abs(c) < 1e-9 and rr > 0.0
+    a0, a1 = (float(a) for a in arc.angles)
+    rays = [q for q in rec.items if q.step and q.step.startswith("ray ")]
+    assert len(rays) >= 21
+    for q in rays:
+        p, r = (complex(*pt) for pt in q.points)
+        z = p + np.linspace(0.0, 1.0, 4001) * (r - p)
+        for w in z[np.abs(np.abs(z) - rr) < 0.05]:
+            ang = (math.degrees(math.atan2(w.imag, w.real)) - a0) % 360.0
+            assert not ang <= (a1 - a0) % 360.0, (q.step, ang, a0, a1)

@@ -838,7 +838,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
     # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
     labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
-    _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
+    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side,
+                                 OMEGA_AT * r0, cam.rocking)
+    _omega(rec, r0, cam.sense, toward, room, labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)
     reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
@@ -925,10 +927,35 @@ def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
     return xy[:, 0] + 1j * xy[:, 1]
 
 
+OMEGA_AT = 0.6       # of R_0: the radius of ω's arc
+
+
+def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, rocking: bool) -> tuple[complex, float]:
+    """Where ω's arc goes: a translating follower's rays are lines tangent to the offset circle, so at ω's
+    radius ``rr`` each crosses at atan2 of foot + √(rr² − e²)·(ray's direction), not at its profile
+    point's angle (own cam of stop 53, e = 6.6 mm, R_0 = 23 mm and no near dwell: the arc put 2/3 into the
+    gap between the profile points lay among the rays, the arrow drawn over them) — the widest gap between
+    those crossings and R_0's line ``side``, its middle and width; a rocking follower's arm lines stay
+    outside the base circle: ``at`` and ``room`` (the profile points' gap) as given."""
+    feet = np.asarray(feet, dtype=complex)
+    crossing = []
+    for f, r in zip(feet, np.asarray(rays, dtype=complex)):
+        d = r - f
+        if rocking or abs(d) < 1e-12 or abs(f) >= rr:
+            continue
+        crossing.append(cmath.phase(f + math.sqrt(rr * rr - abs(f) ** 2) * d / abs(d)))
+    if rocking or len(crossing) < 2:
+        return cmath.exp(1j * at), room
+    ang = np.sort(np.mod(np.asarray(crossing + [side]), 2 * math.pi))
+    gaps = np.diff(np.append(ang, ang[0] + 2 * math.pi))
+    j = int(np.argmax(gaps))
+    return cmath.exp(1j * (ang[j] + gaps[j] / 2)), min(float(gaps[j]), 1.2)
+
+
 def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
     """ω's arrow: an arc about O inside the base circle, in the sector free of rays (``room`` rad wide
     about ``toward``), its head in the cam's sense."""
-    rr = 0.6 * r0
+    rr = OMEGA_AT * r0
     mid = math.degrees(cmath.phase(toward))
     half = min(25.0, math.degrees(room) / 4)
     a0, a1 = mid - half, mid + half
