@@ -1059,37 +1059,6 @@ def pressure_by_displacement(laid, leaves: list[Leaf], doc: dict, sol, g, cam: C
     return None
 
 
-def pressure_by_rates(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lang: str, region, keep,
-                      later=None) -> list | None:
-    """A set whose s diagram has a sheet of its own (set_sizes): ϑ(φ) under d²s/dφ² and ds/dφ on the
-    first sheet at their μ_φ, each division's ϑ straight under theirs, as tall as that sheet leaves over
-    its title block — s's sheet then keeps its own pole P2 and rays (stop 53: CAM53's A2 sheet 1 drew
-    the two diagrams over 184 of 345 mm and ϑ(φ) stood on none of the three sheets). None where that
-    takes more sheets than ``laid``."""
-    names = [leaf.name for leaf in leaves]
-    if laid is None or "displacement" not in names or "diagrams" not in names:
-        return None
-    at = names.index("diagrams")
-    av = leaves[at]
-    room = sheet_room(region, keep)
-    b = av.record.bounds()
-    h = room[1] - (b[3] - b[1]) - 2 * GAP
-    if h < PRESSURE_ROOM[1]:
-        return None
-    lines = notes(doc, lang, cam)
-    for part in (1.0, 0.9, 0.8, 0.7, 0.6):
-        leaf = pressure_leaf(sol, g, lang, room[0] - 2 * GAP, h * part, True)
-        if leaf is None:
-            continue
-        both = own_sheet(Leaf("diagrams", record=with_theta(av.record, leaf.record)), room)
-        if both.w > room[0] + 1e-9 or both.h > room[1] + 1e-9:
-            continue
-        drawings = leaves[:at] + [both] + leaves[at + 1:]
-        for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid, True):
-            return again
-    return None
-
-
 def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, keep, later, laid,
                 side: bool = False):
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
@@ -1258,7 +1227,6 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                or set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f), False))
         most = len(own) if placed(own) else len(laid or [])
         same = [] if laid is None else [t for t in (pressure_by_displacement(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
-                            pressure_by_rates(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_phase(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f)),
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
