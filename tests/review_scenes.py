@@ -5283,3 +5283,59 @@ synchronous_rpm = 750
 reducer_shafts = [0.0006, 0.004, 0.06]
 first_stage_ratio = 3.2
 '''
+
+
+CAM53 = '''# Stop 53 (the lead's check): a rocking roller follower turned by a counter-clockwise cam, a cosine rise
+# of 120° straight into a parabolic return of 90° (no far dwell), a large swing of 30°, 12 divisions, and a
+# base radius given larger than the smallest allowed.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 53)"
+title_en = "Cam with a rocking roller follower (check 53)"
+designation = "ТММ.КМ.53.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 30
+arm = 0.12
+centre_distance = 0.15
+roller_radius = 0.012
+phases_deg = { rise = 120, dwell_far = 0, return = 90, dwell_near = 150 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 90
+direction = "ccw"
+base_radius = 0.07
+divisions = 12
+'''
+
+
+OWN_CAM53 = '''# Stop 53 (cam53's own look): a translating roller follower, the offset chosen by the program ("auto"),
+# the cam counter-clockwise, a cycloidal rise of 160° and a cosine return of 160° round a far dwell of
+# 40° — NO near dwell (the return runs straight into the next rise) —, 10 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем без ближнього вистою (власний 53)"
+title_en = "Cam with a translating roller follower and no near dwell (own 53)"
+designation = "ТММ.КМ.53.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.04
+offset = "auto"
+roller_radius = 0.01
+phases_deg = { rise = 160, dwell_far = 40, return = 160, dwell_near = 0 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 120
+direction = "ccw"
+divisions = 10
+'''

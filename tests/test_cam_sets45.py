@@ -72,7 +72,8 @@ def test_the_two_sheets_drawings_hold_the_three_diagrams_apart(split_a3):
     assert "axis s" in steps(s) and not {"axis a", "axis v"} & steps(s)
     n = len(g.phi)
     assert len(_ordinates(s, "s")) == n and len(_ordinates(av, "v")) == n
-    assert not any(q.step.startswith(("chord v", "pole", "ray")) for q in s.items)
+    assert not any(q.step.startswith(("chord v", "pole P1", "ray P1")) for q in s.items)
+    assert "pole P2" in steps(s)         # s integrated from its own sheet's P2 (stop 53: restored with ϑ(φ) kept)
     for rec in (av, s):
         assert rec.scales["mu_phi"] == pytest.approx(math.radians(1.0))
 

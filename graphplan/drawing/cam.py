@@ -231,6 +231,8 @@ def diagrams(sol: Solution, g: CamConstruction, lang: str, keys: tuple[str, ...]
         if pole:
             _pole(rec, y0, lo, pole, g.a_mid if key == "a" else g.v_mid, xe, "1" if key == "a" else "2",
                   key, labels)
+        if key == "s" and "v" not in keys:
+            _pole_carried(rec, y0, g.H2, g.v_mid, labels)
         y = y0 + hi + 20.0
     marks = spots(x, lang, names=division_numbers(cam.phases, len(x)))   # a point of the cam one number
     y_s = bands.get("s", 0.0)
@@ -432,6 +434,36 @@ def _pole(rec: Record, y0: float, lo: float, H: float, mid: np.ndarray, ends: np
     rec.vector((-H / 2, yd), (-H, yd), role="construction", layer=LAYER, step=f"H{index}")
     rec.vector((-H / 2, yd), (0.0, yd), role="construction", layer=LAYER, step=f"H{index}")
     rec.label((-H / 2, yd - 4.5), f"H_{index}", size=TEXT, anchor="middle", layer=LAYER, step=f"H{index}")
+
+
+CARRIED_AT = -8.0      # mm: the s diagram's own copy of ds/dφ's mean ordinates, left of its ordinate axis
+
+
+def _pole_carried(rec: Record, y0: float, H: float, mid: np.ndarray, labels: list[LabelRequest]) -> None:
+    """On the s diagram of a set's sheet of its own (ds/dφ on the sheet before): ds/dφ's mean ordinates
+    laid off with dividers on a vertical CARRIED_AT left of s's ordinate axis, the pole P2 at H2 left of
+    it on s's φ axis and the rays — the chords of s laid parallel to rays on their own sheet (review 52:
+    integrated with rays from P2 on the sheet before; a draftsman cannot carry a parallel between
+    sheets). Each chord over an interval rises h/H2 per mm, as the ray to its ordinate h does."""
+    h = np.asarray([v for v in mid if np.isfinite(v)], dtype=float)
+    if h.size == 0:
+        return
+    xa = CARRIED_AT
+    pole = (xa - H, y0)
+    lo_, hi_ = min(0.0, float(h.min())), max(0.0, float(h.max()))
+    rec.segment((xa, y0 + lo_ - 2.0), (xa, y0 + hi_ + 2.0), role="construction", layer=LAYER, step="ds/dφ carried")
+    rec.segment((xa - H - 4.0, y0), (0.0, y0), role="construction", width=AXIS_W, layer=LAYER, step="axis s left")
+    rec.point(pole, role="pole", layer=LAYER, step="pole P2")
+    labels.append(LabelRequest(complex(*pole), "P_2", toward=-0.6 + 1j, size=TEXT))
+    for j, v in enumerate(sorted({round(float(v), 6) for v in h})):
+        rec.point((xa, y0 + v), role="construction", layer=LAYER, step=f"mean v carried {j}")
+        rec.segment(pole, (xa, y0 + v), role="ray", layer=LAYER, step=f"ray P2 {j}")
+    yd = y0 + lo_ - 6.0
+    rec.segment((xa - H, y0), (xa - H, yd - 1.5), role="construction", layer=LAYER, step="H2")
+    rec.segment((xa, y0 + lo_ - 2.0), (xa, yd - 1.5), role="construction", layer=LAYER, step="H2")
+    rec.vector((xa - H / 2, yd), (xa - H, yd), role="construction", layer=LAYER, step="H2")
+    rec.vector((xa - H / 2, yd), (xa, yd), role="construction", layer=LAYER, step="H2")
+    rec.label((xa - H / 2, yd - 4.5), "H_2", size=TEXT, anchor="middle", layer=LAYER, step="H2")
 
 
 def phase_points(sol: Solution, g: CamConstruction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -806,7 +838,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
     # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
     labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
-    _omega(rec, r0, cam.sense, cmath.exp(1j * (angles[k] + 2 * gaps[k] / 3)), min(gaps[k], 1.2), labels)
+    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side,
+                                 OMEGA_AT * r0, cam.rocking)
+    _omega(rec, r0, cam.sense, toward, room, labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)
     reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
@@ -893,10 +927,35 @@ def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
     return xy[:, 0] + 1j * xy[:, 1]
 
 
+OMEGA_AT = 0.6       # of R_0: the radius of ω's arc
+
+
+def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, rocking: bool) -> tuple[complex, float]:
+    """Where ω's arc goes: a translating follower's rays are lines tangent to the offset circle, so at ω's
+    radius ``rr`` each crosses at atan2 of foot + √(rr² − e²)·(ray's direction), not at its profile
+    point's angle (own cam of stop 53, e = 6.6 mm, R_0 = 23 mm and no near dwell: the arc put 2/3 into the
+    gap between the profile points lay among the rays, the arrow drawn over them) — the widest gap between
+    those crossings and R_0's line ``side``, its middle and width; a rocking follower's arm lines stay
+    outside the base circle: ``at`` and ``room`` (the profile points' gap) as given."""
+    feet = np.asarray(feet, dtype=complex)
+    crossing = []
+    for f, r in zip(feet, np.asarray(rays, dtype=complex)):
+        d = r - f
+        if rocking or abs(d) < 1e-12 or abs(f) >= rr:
+            continue
+        crossing.append(cmath.phase(f + math.sqrt(rr * rr - abs(f) ** 2) * d / abs(d)))
+    if rocking or len(crossing) < 2:
+        return cmath.exp(1j * at), room
+    ang = np.sort(np.mod(np.asarray(crossing + [side]), 2 * math.pi))
+    gaps = np.diff(np.append(ang, ang[0] + 2 * math.pi))
+    j = int(np.argmax(gaps))
+    return cmath.exp(1j * (ang[j] + gaps[j] / 2)), min(float(gaps[j]), 1.2)
+
+
 def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
     """ω's arrow: an arc about O inside the base circle, in the sector free of rays (``room`` rad wide
     about ``toward``), its head in the cam's sense."""
-    rr = 0.6 * r0
+    rr = OMEGA_AT * r0
     mid = math.degrees(cmath.phase(toward))
     half = min(25.0, math.degrees(room) / 4)
     a0, a1 = mid - half, mid + half

@@ -1081,12 +1081,14 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
     pressure angle read off the phase diagram (R_0 from [ϑ]) is checked over the turn beside it, and
     the set reads in order: the law's diagrams, the phase diagram with ϑ(φ), the profile, the table.
     None where that sheet has no room for ϑ(φ) or the set would take a sheet more."""
-    if laid is None or len(leaves) != 3:
+    names = [leaf.name for leaf in leaves]
+    if laid is None or not {"phase", "profile"} <= set(names):
         return None
     page = next((pg for pg in laid if {"phase", "profile"} <= {leaf.name for leaf, _ in pg}), None)
     if page is None:
         return None
-    phase, profile = leaves[1], leaves[2]
+    at = names.index("phase")           # a split set's too (s on a sheet of its own: four leaves; stop 53's A3 set)
+    phase, profile = leaves[at], leaves[names.index("profile")]
     w = region[2] - region[0] - profile.w - 2 * GAP
     h = region[3] - region[1] - phase.h - 3 * GAP
     if w < PRESSURE_ROOM[0] or h < PRESSURE_ROOM[1]:
@@ -1096,7 +1098,7 @@ def pressure_by_phase(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         leaf = pressure_leaf(sol, g, lang, w, h * part, same)
         if leaf is None:
             continue
-        drawings = [leaves[0], Stack([phase, leaf]), profile]
+        drawings = leaves[:at] + [Stack([phase, leaf])] + leaves[at + 1:]
         for again in _with_table(drawings, doc, lang, lines, region, keep, later, laid):
             where = [{lf.name for lf, _ in pg} for pg in again]
             if any({"phase", "pressure", "profile"} <= names for names in where):
