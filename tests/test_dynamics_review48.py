@@ -46,7 +46,7 @@ def test_the_notes_say_the_flywheel_is_a_small_part_of_j_with_numbers_that_give_
     """The notes' line on the graphical error: I_fl's share of J and J (the exact, from the equation
     of motion), the ruler's share of J (0.5 mm over the printed |kl|), and J's own error — which,
     times J/I_fl, gives Table 2's δ of the graphical row as printed (so a reader sees where the −15 %
-    comes from); the approximate and Merkalov rows say their J errors too."""
+    comes from); the approximate and Mertsalov rows say their J errors too."""
     from graphplan.report.dynamics import dynamics_json, flywheel_errors
     from graphplan.sheets.compose import lines_of
     from graphplan.sheets.dynamics import notes

@@ -17,7 +17,7 @@ The draftsman's sequence, in drawing millimetres over an abscissa of L mm for on
    by the French curve — and its two tangents at tg ψ_max,min = μ_I·ω_m²·(1 ± δ)/(2·μ_T), which cut
    the ΔT axis at k and l: the constant reduced inertia J = μ_T·|kl|/(ω_m²·δ) and the flywheel
    I_fl = J − I_rotor·i² − I_reducer;
-7. the approximate method: J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean, and Merkalov's, which takes
+7. the approximate method: J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean, and Mertsalov's, which takes
    the mechanism's own kinetic energy ½·ω_m²·I*_m out of ΔT first.
 The course's slopes drop the δ²/4 of ω²_max,min = ω_m²(1 ± δ/2)²; ``slopes="exact"`` keeps it
 (then the construction converges to the exact flywheel as the divisions grow at precision 0).
@@ -120,7 +120,7 @@ class Flywheel:
 
     @property
     def merkalov_total(self) -> float:
-        """Merkalov's method: the flywheel's own energy change ΔT − ½·ω_m²·I*_m (the mechanism's
+        """Mertsalov's method: the flywheel's own energy change ΔT − ½·ω_m²·I*_m (the mechanism's
         kinetic energy at ω_m taken out): J ≈ (its max − its min)/(ω_m²·δ), from the readings."""
         wm2 = self.omega_mean ** 2
         own = self.dT * self.mu_A - 0.5 * wm2 * self.I * self.mu_I

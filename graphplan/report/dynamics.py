@@ -248,7 +248,7 @@ WORDS = {
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; the works and ΔT graphical, ΔT exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
-           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Merkalov)",
+           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Mertsalov)",
            "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
                    "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",

@@ -78,7 +78,7 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Merkalov's method",
+           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Mertsalov's method",
            "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
            "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
@@ -95,7 +95,7 @@ WORDS = {
                                "with the ruler)",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
-           "why_merk": "Merkalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
+           "why_merk": "Mertsalov {e} %: the method takes the links' energy at the mean speed ω_m (the method's error, "
                        "not the drawing's)",
            "short": "|kl| = {kl} mm ({a1} mm on the A1 sheet): ",
            "short_tall": "at |kl| = {a1} mm the energy–mass diagram with I^*_m(φ) under it would be ≥ {need} mm tall, "
