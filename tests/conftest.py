@@ -4,6 +4,7 @@ from __future__ import annotations
 import functools
 import math
 import os
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +22,18 @@ from hypothesis import settings  # noqa: E402
 settings.register_profile("ci", derandomize=True, database=None)
 settings.register_profile("explore")
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+# The test modules' rewritten code kept between runs (pytest's assertion rewriting writes it to
+# tests/__pycache__ unless bytecode is not to be written): where PYTHONDONTWRITEBYTECODE is set (as on
+# CI's machine) every worker of every run rewrote all the modules' asserts afresh — 62 % of collecting
+# (7–8 s of CPU a worker). Written while the modules are collected; the setting is back after.
+_DONT_WRITE_BYTECODE = sys.dont_write_bytecode
+sys.dont_write_bytecode = False
+
+
+def pytest_collection_finish(session):
+    sys.dont_write_bytecode = _DONT_WRITE_BYTECODE
 
 
 def pytest_configure(config):
@@ -48,6 +61,14 @@ def pytest_configure(config):
         import tempfile
         folder = tempfile.mkdtemp(prefix="graphplan-test-cache-")
         os.environ["GRAPHPLAN_CACHE"] = folder
+        atexit.register(shutil.rmtree, folder, True)
+    if not hasattr(config, "workerinput"):
+        # the examples' sheets shared by the workers of this run (``_shared``): a folder of this run only
+        import atexit
+        import shutil
+        import tempfile
+        folder = tempfile.mkdtemp(prefix="graphplan-test-sheets-")
+        os.environ[SHARED_SHEETS] = folder
         atexit.register(shutil.rmtree, folder, True)
 
 
@@ -174,12 +195,50 @@ def example_sheet(name: str, kind: str = "kinematics", fmt: str = "A1", lang: st
     return _example_sheet(name, kind, fmt, lang)
 
 
+SHARED_SHEETS = "GRAPHPLAN_TEST_SHEETS"
+
+
+def _shared(tag: str, build):
+    """``build()``, composed once per test run and shared by its workers: the first worker to ask
+    composes it (holding a lock: a worker asking meanwhile waits, as composing it itself would take
+    as long) and leaves it pickled in this run's folder (``SHARED_SHEETS``, made in
+    ``pytest_configure``); the others read it back (a few ms against 3–12 s of CPU: under xdist the
+    gallery's modules and the sheet-content modules fall to different workers, and each composed
+    the same examples' sheets). A build that raises leaves nothing behind: the next asker builds
+    (and raises) again. Outside a run that made the folder, ``build()`` itself."""
+    import fcntl
+    import hashlib
+    import pickle
+    folder = os.environ.get(SHARED_SHEETS)
+    if not folder or not os.path.isdir(folder):
+        return build()
+    stem = os.path.join(folder, hashlib.sha1(tag.encode()).hexdigest())
+    with open(stem + ".lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            if os.path.exists(stem + ".pickle"):
+                with open(stem + ".pickle", "rb") as f:
+                    return pickle.load(f)
+            out = build()
+            try:
+                data = pickle.dumps(out, protocol=pickle.HIGHEST_PROTOCOL)
+            except Exception:           # noqa: BLE001 — not picklable: each worker builds its own
+                return out
+            with open(stem + ".part", "wb") as f:
+                f.write(data)
+            os.replace(stem + ".part", stem + ".pickle")
+            return out
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
+
+
 @functools.lru_cache(maxsize=48)
 def _example_sheet(name: str, kind: str, fmt: str, lang: str):
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import BUILDERS
-    return BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+    return _shared(f"numbered {name} {kind} {fmt} {lang}",
+                   lambda: BUILDERS[kind](example(name), form(fmt), SheetOptions(lang=lang, sheet=kind)))
 
 
 @functools.lru_cache(maxsize=16)
@@ -191,7 +250,8 @@ def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang:
     English kinematics and force sheets: 7 s of CPU). ``example_sheet`` is the numbered one."""
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
-    return composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind))
+    return _shared(f"composed {name} {kind} {fmt} {lang}",
+                   lambda: composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind)))
 
 
 def cam_constructed(text: str, tmp_path_factory, name: str = "cam"):

@@ -95,12 +95,10 @@ def test_the_rocking_phase_diagram_stands_at_the_top_and_its_room_goes_to_the_pr
     at their μ_φ and 2 °/mm or finer, the sheet under 37 % empty (35.3 / 34.3 % before; 32.0 / 29.7 %
     with ϑ(φ) under the notes; 35.4 % (uk) since ϑ(φ) takes the diagrams' μ_φ, review 11 #16, and
     36.1 / 35.6 % since the phase diagram draws no unlettered ray from O, review 12 #16)."""
-    from conftest import example
-    from graphplan.sheets.cam import build_cam_sheet
-    from graphplan.sheets.compose import SheetOptions, defects
-    from graphplan.sheets.form import form
+    from conftest import example_sheet
+    from graphplan.sheets.compose import defects
     from sheetfill import empty_share
-    sheet = build_cam_sheet(example("cam_rocking"), form("A1"), SheetOptions(lang=lang, sheet="cam"))
+    sheet = example_sheet("cam_rocking", "cam", "A1", lang)     # the gallery's (shared: conftest)
     assert defects(sheet) == []
     placed = {p.name: p for p in sheet.placed}
     dia, phase = placed["diagrams"].record, placed["phase"].record

@@ -318,11 +318,8 @@ def test_the_inertia_table_heads_its_moment_as_everywhere(sixbar_forces):
 def test_the_planetary_velocity_names_are_lettered_3_5_mm():
     """Correction 18: v_A and v_O2 of the planetary train's velocity picture were lettered 2.5 mm
     (their small v and index about 2 mm high); they are lettered 3.5 mm, the plans' size."""
-    from conftest import example
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import build_gears_sheet
-    sheet = build_gears_sheet(example("gears"), form("A1"), SheetOptions(sheet="gears"))
+    from conftest import example_sheet
+    sheet = example_sheet("gears", "gears", "A1", "uk")      # the gallery's (shared: conftest)
     sizes = {p.text: p.size for p in sheet.record.items if p.kind == "text" and p.text in ("v_A", "v_{O_2}")}
     assert sizes == {"v_A": 3.5, "v_{O_2}": 3.5}
 
