@@ -81,8 +81,8 @@ class Sheet:
         path = Path(path)
         suffix = path.suffix.lower()
         if suffix not in FORMATS_OUT:
-            raise GraphplanError(f"-o {path}: unknown format {suffix or '(none)'!r}; use "
-                                 + ", ".join(FORMATS_OUT))
+            raise keyed_error(GraphplanError, None, f"-o {path}", "op out suffix", None, got=repr(suffix or "(none)"),
+                              formats=either(*FORMATS_OUT))
         for n, page in enumerate(self.pages, 1):
             page._write_one(page_path(path, n), suffix, text_as_paths, dpi)
         return path
