@@ -40,10 +40,10 @@ WORDS = {
 
 def _fields(cam: Cam, lang: str) -> dict[str, str]:
     meta = dict(cam.meta)
-    from graphplan.sheets.compose import organisation
+    from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(cam.title_in(lang)),
-            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": "", "sheet": "1", "sheets": "1",
             "subtitle": WORDS[lang]["subtitle"]}
 

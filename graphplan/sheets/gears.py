@@ -439,10 +439,10 @@ def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
 
 def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
     meta = dict(g.meta)
-    from graphplan.sheets.compose import organisation
+    from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(g.title_in(lang)),
-            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": drawing_scale(mu_l, lang) if mu_l else "", "sheet": "1",
             "sheets": "1", "subtitle": WORDS[lang]["subtitle"]}
 
