@@ -25,7 +25,7 @@ def cmd_analyze(args: argparse.Namespace) -> int:
     import numpy as np
 
     from graphplan.report.analysis import analyze_json, analyze_table
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     phis, indices = _angles(st, args)
     phi = np.asarray(phis)
     if args.json:

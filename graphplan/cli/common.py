@@ -136,11 +136,26 @@ def lang_of(args: argparse.Namespace, st=None) -> str:
     return pick(getattr(args, "lang", None), scene)
 
 
-def load_study(path: str | None):
-    """The scene read and studied (structure, position 0, extremes): what every command starts from."""
+def load_study(path: str | None, lang: str | None = None):
+    """The scene read and studied (structure, position 0, extremes): what every command starts from.
+    The scene's likely slips (model.cautions) are told on stderr first, one line each, in ``lang``
+    (--lang), else the scene's."""
     from graphplan.exact.positions import study
     from graphplan.model.scene import load
-    return study(load(path))
+    mech = load(path)
+    caution(mech, lang)
+    return study(mech)
+
+
+def caution(mech, lang: str | None = None) -> None:
+    """The scene's likely slips (a centre of mass outside its link, a point far beyond it) on stderr:
+    "graphplan: warning: <file>: <what>", one line each, in --lang, else the scene's language."""
+    import sys
+    from graphplan.model.cautions import cautions
+    from graphplan.util.words import pick, word
+    said_ = pick(lang, mech.task.meta.get("lang"))
+    for texts in cautions(mech):
+        print(f"graphplan: {word('caution', said_)}: {mech.source}: {texts[said_]}", file=sys.stderr)
 
 
 _load = load_study   # the name the command modules used before the split

@@ -27,7 +27,7 @@ def cmd_diagrams(args) -> int:
     from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.graphic.tangents import ANGLE_ERROR_DEG
     from graphplan.report.diagrams import diagrams_json, diagrams_table
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731

@@ -49,7 +49,7 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
         check_delta(args.delta)
     if args.divisions is not None:
         check_divisions(args.divisions)
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     try:
         dyn = analyse(st, args.delta)
     except GraphplanError as exc:

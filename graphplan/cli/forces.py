@@ -51,7 +51,7 @@ def cmd_forces(args: argparse.Namespace) -> int:
         raise option_error("--precision", "op precision", got=float(args.precision))
     if args.phi is not None and not math.isfinite(args.phi):
         raise option_error("--phi", "op angle", got=args.phi)
-    st = _load(args.scene)
+    st = _load(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     phi = at_scene_angle(st) if args.phi is None else args.phi % 360.0
     scales, sheet = {}, None

@@ -21,7 +21,7 @@ def _format_arg(text: str) -> str | None:
 def cmd_plans(args: argparse.Namespace) -> int:
     from graphplan.graphic.plans import build_plans
     from graphplan.report.plans import plans_json, plans_table, svg_documents
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     if args.positions is not None and not 2 <= args.positions <= 3600:
         raise option_error("--positions", "op whole", lo=2, hi=3600, got=args.positions)

@@ -5,7 +5,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from graphplan.cli.common import lang_arg, lang_of, option_error
+from graphplan.cli.common import caution, lang_arg, lang_of, option_error
 from graphplan.util.errors import GraphplanError, keyed_error, either
 
 
@@ -62,7 +62,9 @@ def cmd_sheet(args: argparse.Namespace) -> int:
         args.lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     else:
         args.sheet = args.sheet or "kinematics"
-        st = study(load(args.scene))
+        mech = load(args.scene)
+        caution(mech, getattr(args, "lang", None))
+        st = study(mech)
         args.lang = lang_of(args, st)
     f = form(args.format)
     build = BUILDERS.get(args.sheet)

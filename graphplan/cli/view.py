@@ -26,7 +26,7 @@ def cmd_view(args: argparse.Namespace) -> int:
     cam = _cam_scene(args.scene)
     if cam is not None:
         return view_cam(cam, args, out)
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
         raise GraphplanError(word("view step", lang, step=f"{args.step:g}"))

@@ -1105,3 +1105,17 @@ WORDS.update({
     "ap kind int": ("ціле число", "int"),
     "ap kind float": ("число", "float"),
 })
+
+
+# -- cautions: a scene's likely slips, warned on stderr (model.cautions) -----------------------------------
+WORDS.update({
+    "caution": ("попередження", "warning"),
+    "caution com outside": ("ланка {link}: центр мас {point} лежить поза ланкою, за {dist} {m} від шарніра {joint} "
+                            "(найбільша відстань між її шарнірами {span} {m}); частка довжини — від 0 до 1",
+                            "link {link}: the centre of mass {point} lies outside the link, {dist} {m} from the joint "
+                            "{joint} (its joints span {span} {m}); a fraction of the length is from 0 to 1"),
+    "caution far point": ("ланка {link}: точка {point} лежить за {dist} {m} від найближчого шарніра {joint}, далеко "
+                          "поза ланкою (її шарніри — у межах {span} {m}); точку задано в метрах чи часткою довжини?",
+                          "link {link}: the point {point} lies {dist} {m} from the nearest joint {joint}, far beyond "
+                          "the link (its joints span {span} {m}); is it in metres or a fraction of the length?"),
+})
