@@ -10,6 +10,8 @@ from graphplan.util.words import said
 COM_ALONG = 0.02     # a centre of mass past its link's end joints by more than this share of the span …
 COM_ACROSS = 0.3     # … or off their band by more than this share of it (a lug, a plate: a little) is outside the link
 FAR = 2.0            # an extra point farther than this many spans from the nearest joint is "far beyond"
+RATIO = 100.0        # links whose lengths differ more than this many times: some in millimetres?
+LONG = 20.0          # m: a lever mechanism of a machine is smaller; a length above it was meant in mm
 
 
 def _joints(mech: Mechanism, link: Link) -> list[str]:
@@ -26,7 +28,7 @@ def _span(link: Link, joints: list[str]) -> float:
 
 def cautions(mech: Mechanism) -> list[dict[str, str]]:
     """Each likely slip of the scene's points, in both languages (util.words.said)."""
-    out: list[dict[str, str]] = []
+    out: list[dict[str, str]] = _units(mech)
     for link in mech.links.values():
         joints = _joints(mech, link)
         if len(joints) < 2 or link.slides_on is not None:
@@ -62,3 +64,16 @@ def _outside(link: Link, joints: list[str], p: complex, span: float, crank: bool
     off_lo, off_hi = min(z.imag for z in local), max(z.imag for z in local)
     return (q.real < lo - COM_ALONG * span or q.real > hi + COM_ALONG * span
             or q.imag < off_lo - COM_ACROSS * span or q.imag > off_hi + COM_ACROSS * span)
+
+
+def _units(mech: Mechanism) -> list[dict[str, str]]:
+    """Lengths written in millimetres where the scene wants metres: a link longer than LONG, or the
+    longest more than RATIO times the shortest (l = 307 beside r = 0.064)."""
+    lengths = {link.name: float(link.length) for link in mech.links.values() if link.length}
+    if len(lengths) < 1:
+        return []
+    big = max(lengths, key=lengths.get)
+    small = min(lengths, key=lengths.get)
+    if lengths[big] > LONG or lengths[big] > RATIO * lengths[small]:
+        return [said("caution units", long=big, big=lengths[big], short=small, small=lengths[small])]
+    return []

@@ -1006,6 +1006,14 @@ WORDS.update({
     "ex unreadable": ("не вдається прочитати вираз {text}", "cannot read the expression {text}"),
     "ex deep": ("вираз {text} вкладено глибше ніж на {most} рівні", "the expression {text} is nested more than {most} deep"),
     "ex underscore": ("{text}: пишіть числа без «_»", "{text}: write numbers without '_'"),
+    "ex bare word": ("{name} — не число: задайте число або вираз (імена з {params}: {known})",
+                     "{name} is not a number: give a number or an expression (names of {params}: {known})"),
+    "bad toml twice": ("таблицю {t} оголошено двічі (рядок {line}); у сцені вона одна",
+                       "the table {t} is declared twice (line {line}); a scene has one"),
+    "bad toml overwrite": ("ключ задано двічі (рядок {line})", "a key is given twice (line {line})"),
+    "bad toml invalid": ("значення не читається (рядок {line}); текст пишіть у лапках", "invalid value (line {line}); "
+                         "write text in quotes"),
+    "bad toml equals": ("після ключа бракує «=» (рядок {line})", "'=' missing after a key (line {line})"),
     "ex unknown name": ("невідоме ім'я {name} у {text}", "unknown name {name} in {text}"),
     "ex arithmetic": ("у {text} дозволена лише арифметика", "only arithmetic is allowed in {text}"),
     "ex cannot": ("не вдається обчислити {text}: {why}", "cannot evaluate {text}: {why}"),
@@ -1114,6 +1122,10 @@ WORDS.update({
                             "(найбільша відстань між її шарнірами {span} {m}); частка довжини — від 0 до 1",
                             "link {link}: the centre of mass {point} lies outside the link, {dist} {m} from the joint "
                             "{joint} (its joints span {span} {m}); a fraction of the length is from 0 to 1"),
+    "caution units": ("довжина ланки {long} {big} {m}, а ланки {short} — {small} {m}: чи не задано якісь довжини в "
+                      "міліметрах? Сцена задає довжини в метрах",
+                      "the link {long} is {big} {m} long and the link {short} {small} {m}: are some lengths in "
+                      "millimetres? A scene gives lengths in metres"),
     "caution far point": ("ланка {link}: точка {point} лежить за {dist} {m} від найближчого шарніра {joint}, далеко "
                           "поза ланкою (її шарніри — у межах {span} {m}); точку задано в метрах чи часткою довжини?",
                           "link {link}: the point {point} lies {dist} {m} from the nearest joint {joint}, far beyond "
