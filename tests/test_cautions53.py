@@ -57,3 +57,13 @@ def test_the_command_line_warns_once_in_the_scene_s_language(tmp_path, capsys):
     Path(path).write_text('lang = "en"\n' + with_points(rod="S2 = [0.5, 0]"), encoding="utf-8")
     main(["analyze", str(path), "--json"])
     assert "centre of mass S2" in capsys.readouterr().err
+
+
+def test_a_refused_run_stays_one_line(tmp_path, capsys):
+    """A scene with a slip that is then refused (its rod too short to assemble) prints the refusal only."""
+    from graphplan.cli.main import main
+    path = tmp_path / "bad.toml"
+    path.write_text(with_points(rod="S2 = [0.5, 0]").replace("l = 0.307 ", "l = 0.03 ", 1), encoding="utf-8")
+    assert main(["analyze", str(path), "--lang", "en"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "cannot be assembled" in err[0], err

@@ -147,15 +147,29 @@ def load_study(path: str | None, lang: str | None = None):
     return study(mech)
 
 
+CAUTIONS: list[str] = []     # the run's cautions, told (main) once the command has succeeded
+
+
 def caution(mech, lang: str | None = None) -> None:
-    """The scene's likely slips (a centre of mass outside its link, a point far beyond it) on stderr:
-    "graphplan: warning: <file>: <what>", one line each, in --lang, else the scene's language."""
-    import sys
+    """The scene's likely slips (a centre of mass outside its link, a point far beyond it, lengths in
+    millimetres) kept for stderr: "graphplan: warning: <file>: <what>", one line each, in --lang, else
+    the scene's language. main prints them when the command succeeds — a refused run stays one line."""
     from graphplan.model.cautions import cautions
     from graphplan.util.words import pick, word
     said_ = pick(lang, mech.task.meta.get("lang"))
     for texts in cautions(mech):
-        print(f"graphplan: {word('caution', said_)}: {mech.source}: {texts[said_]}", file=sys.stderr)
+        line = f"graphplan: {word('caution', said_)}: {mech.source}: {texts[said_]}"
+        if line not in CAUTIONS:
+            CAUTIONS.append(line)
+
+
+def tell_cautions(told: bool) -> None:
+    """The run's cautions on stderr (``told``: the command succeeded), then forgotten."""
+    import sys
+    if told:
+        for line in CAUTIONS:
+            print(line, file=sys.stderr)
+    CAUTIONS.clear()
 
 
 _load = load_study   # the name the command modules used before the split

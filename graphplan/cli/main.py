@@ -8,7 +8,7 @@ from importlib import import_module
 from collections.abc import Callable, Sequence
 
 from graphplan import __version__
-from graphplan.cli.common import Parser, _load, _scene_arg, check_options, dumps  # noqa: F401
+from graphplan.cli.common import Parser, _load, _scene_arg, check_options, dumps, tell_cautions  # noqa: F401
 from graphplan.util.errors import GraphplanError
 
 Handler = Callable[[argparse.Namespace], int]
@@ -54,7 +54,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             build_parser().print_help()
             return 2
         check_options(args)
-        return args.handler(args)
+        code = args.handler(args)
+        tell_cautions(code == 0)
+        return code
     except GraphplanError as exc:
         print(f"graphplan: {exc.line(told_lang(argv, args, exc))}", file=sys.stderr)
         return 2
@@ -71,6 +73,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"graphplan: internal error: {type(exc).__name__}: {text} "
               "(set GRAPHPLAN_DEBUG=1 for the traceback)", file=sys.stderr)
         return 1
+    finally:
+        tell_cautions(False)             # a run that did not succeed keeps its one line
 
 
 def told_lang(argv: Sequence[str] | None, args: argparse.Namespace | None, exc: GraphplanError | None = None) -> str:
