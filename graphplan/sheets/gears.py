@@ -23,7 +23,7 @@ from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned,
 from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.drawing.tables import baseline_in_row
 from graphplan.sheets.kinematics import TITLE
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num
 
@@ -825,8 +825,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             if flat[3] is not None and len(flat[3]) < len(pages):
                 mesh, more, lam, pages = flat
         if pages is None:
-            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
-                                 g.source)
+            raise said_error(GraphplanError, "sh drawing larger", g.source, None, form=f.name, option="--format")
         if vel is not None:
             first = pages
             vel0 = vel

@@ -1131,3 +1131,18 @@ WORDS.update({
                           "link {link}: the point {point} lies {dist} {m} from the nearest joint {joint}, far beyond "
                           "the link (its joints span {span} {m}); is it in metres or a fraction of the length?"),
 })
+
+
+# -- sheets/: drawings that a format cannot hold --------------------------------------------------------
+WORDS.update({
+    "sh forces fit": ("силові креслення не вміщаються на аркуші {form}; оберіть більший формат ({option})",
+                      "the force drawings do not fit a {form} sheet; choose a larger {option}"),
+    "sh drawing larger": ("креслення більше за цілий аркуш {form}; оберіть більший формат ({option})",
+                          "a drawing is larger than a whole {form} sheet; choose a larger {option}"),
+    "sh kin fit": ("креслення не вміщаються на аркуші {form} навіть у найдрібніших масштабах; оберіть більший "
+                   "формат ({option})", "the drawings do not fit a {form} sheet even at the smallest scales; choose "
+                   "a larger {option}"),
+    "sh cam larger": ("креслення кулачка більше за цілий аркуш {form} навіть у половинному розмірі; оберіть більший "
+                      "формат ({option})", "a cam drawing is larger than a whole {form} sheet even at half its size; "
+                      "choose a larger {option}"),
+})
