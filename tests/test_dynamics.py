@@ -225,12 +225,13 @@ def _bad(tmp_path, capsys, argv, text=None):
 
 def test_bad_inputs_exit_2_with_one_line(tmp_path, capsys):
     slotter = str(ROOT / "examples" / "slotter.toml")
-    assert "(0, 0.5)" in _bad(tmp_path, capsys, [slotter, "--delta", "0.7"])
-    assert "(0, 0.5)" in _bad(tmp_path, capsys, [slotter, "--delta", "0"])
+    assert "(0, 0.5)" in _bad(tmp_path, capsys, [slotter, "--delta", "0.7", "--lang", "en"])
+    assert "(0; 0,5)" in _bad(tmp_path, capsys, [slotter, "--delta", "0"])
     assert "no masses" in _bad(tmp_path, capsys, ["SCENE", "--lang", "en"], NO_MASSES)
     weak = (ROOT / "examples" / "slotter.toml").read_text(encoding="utf-8").replace(
         'power_kW = 1.5, rpm_sync', 'power_kW = 0.2, rpm_sync')
-    assert "cannot drive the cycle" in _bad(tmp_path, capsys, ["SCENE"], weak)
+    assert "cannot drive the cycle" in _bad(tmp_path, capsys, ["SCENE", "--lang", "en"], weak)
+    assert "не може вести цикл" in _bad(tmp_path, capsys, ["SCENE", "--lang", "uk"], weak)
     bad_delta = (ROOT / "examples" / "shaper.toml").read_text(encoding="utf-8").replace(
         "delta = 0.04", "delta = 0.6")
     assert "dynamics.delta" in _bad(tmp_path, capsys, ["SCENE"], bad_delta)

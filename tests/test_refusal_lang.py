@@ -75,7 +75,7 @@ def test_a_refusal_speaks_the_scene_s_language(capsys, tmp_path, case):
 
 # -- every word a refusal is raised with is in the catalogue, in both languages ----------------------------
 
-RAISERS = {"keyed_error": 3, "said_error": 1, "fail": 1, "_refusal": 2}    # the word's argument
+RAISERS = {"keyed_error": 3, "said_error": 1, "fail": 1, "_refusal": 2, "option_error": 1}    # the word's argument
 
 
 def refusal_words() -> set[str]:

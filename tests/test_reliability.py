@@ -30,7 +30,8 @@ def scene(tmp_path: Path, text: str, name: str = "scene.toml") -> str:
 
 
 def refused(argv, *words) -> str:
-    """The run ends in exit 2 with one line holding every word."""
+    """The run ends in exit 2 with one line holding every word (in English unless --lang says)."""
+    argv = [*argv, "--lang", "en"] if "--lang" not in map(str, argv) else argv
     code, out, err = run([str(a) for a in argv])
     check_run([str(a) for a in argv], code, out, err)
     assert code == 2, (argv, out[:200])

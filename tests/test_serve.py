@@ -170,7 +170,7 @@ def test_every_option_refused_in_one_line(client):
     assert "--format" in refused(client.post("/api/sheet?format=A0", content=body))
     assert "unknown format" in refused(client.post("/api/sheet?type=exe", content=body))
     assert "--sheet" in refused(client.post("/api/sheet?kind=../x", content=body))
-    assert refused(client.post("/api/sheet?kind=gears", content=body)) \
+    assert refused(client.post("/api/sheet?kind=gears&lang=en", content=body)) \
         == "scene.toml: --sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)"
     assert "cam" in refused(client.post("/api/sheet?kind=cam", content=body))
     assert refused(client.get("/api/nothing"), 404) == "not found"

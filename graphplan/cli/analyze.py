@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg, option_error
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text
 
@@ -17,7 +17,7 @@ def _angles(st, args) -> tuple[list[float], list[int]]:
         return phis, list(range(len(phis)))
     count = args.positions or st.mech.task.count
     if not 2 <= count <= 36000:
-        raise GraphplanError(f"--positions must be from 2 to 36000, got {count}")
+        raise option_error("--positions", "op whole", lo=2, hi=36000, got=count)
     return [float(v) for v in np.asarray(st.positions(count))], list(range(count))
 
 
@@ -25,7 +25,7 @@ def cmd_analyze(args: argparse.Namespace) -> int:
     import numpy as np
 
     from graphplan.report.analysis import analyze_json, analyze_table
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     phis, indices = _angles(st, args)
     phi = np.asarray(phis)
     if args.json:

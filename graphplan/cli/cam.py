@@ -8,8 +8,8 @@ import argparse
 import math
 import sys
 
-from graphplan.cli.common import lang_arg
-from graphplan.util.errors import GraphplanError
+from graphplan.cli.common import lang_arg, option_error, range_fields
+from graphplan.util.errors import GraphplanError, said_error
 
 
 def register(sub) -> None:
@@ -40,9 +40,9 @@ def cmd_cam(args: argparse.Namespace) -> int:
     from graphplan.report.cam import cam_json, cam_table
     from graphplan.util.words import pick
     if not math.isfinite(args.precision) or not 0 <= args.precision <= 10:
-        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+        raise option_error("--precision", "op range", **range_fields(0, 10, "mm", False, args.precision))
     if args.divisions is not None and not 2 <= args.divisions <= 360:
-        raise GraphplanError(f"--divisions must be a whole number from 2 to 360, got {args.divisions}")
+        raise option_error("--divisions", "op whole", lo=2, hi=360, got=args.divisions)
     from graphplan.sheets.cam import construct_on
     from graphplan.sheets.form import form
     cam = load(args.scene)
@@ -67,7 +67,7 @@ def write_svg(sol, g, folder: str, lang: str) -> None:
     from graphplan.drawing.cam import records
     from graphplan.util.files import write_atomic
     if Path(folder).exists() and not Path(folder).is_dir():
-        raise GraphplanError("--svg needs a folder, this is a file", folder)
+        raise said_error(GraphplanError, "op svg folder", str(folder), None)
     for name, rec in records(sol, g, lang).items():
         page, w, h = svg.page_for(rec)
         write_atomic(Path(folder) / f"{name}.svg", svg.render(page, w, h, rec.title))

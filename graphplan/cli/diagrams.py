@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg, option_error
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import json_text, write_atomic
 
@@ -14,7 +14,7 @@ def _divisions_arg(text: str) -> int | list[float]:
             return [float(v) for v in text.split(",") if v.strip()]
         return int(text)
     except ValueError:
-        raise GraphplanError(f"--divisions: a whole number or comma-separated crank turns, got {text!r}") from None
+        raise option_error("--divisions", "op divisions", got=repr(text)) from None
 
 
 def _format_arg(text: str) -> str | None:
@@ -27,7 +27,7 @@ def cmd_diagrams(args) -> int:
     from graphplan.graphic.diagrams import chord_diagrams
     from graphplan.graphic.tangents import ANGLE_ERROR_DEG
     from graphplan.report.diagrams import diagrams_json, diagrams_table
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     scene = st.mech.task.diagram          # the scene's [diagrams] table gives the defaults
     pick = lambda given, key, default: given if given is not None else scene.get(key, default)  # noqa: E731

@@ -8,7 +8,7 @@ import argparse
 import math
 import sys
 
-from graphplan.cli.common import lang_arg
+from graphplan.cli.common import lang_arg, option_error
 from graphplan.util.errors import GraphplanError
 
 
@@ -44,12 +44,12 @@ def cmd_dynamics(args: argparse.Namespace) -> int:
     from graphplan.graphic.flywheel import redrawn
     from graphplan.report.dynamics import dynamics_json, dynamics_table
     if not math.isfinite(args.precision) or args.precision < 0:
-        raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {args.precision:g}")
+        raise option_error("--precision", "op precision", got=float(args.precision))
     if args.delta is not None:
         check_delta(args.delta)
     if args.divisions is not None:
         check_divisions(args.divisions)
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     try:
         dyn = analyse(st, args.delta)
     except GraphplanError as exc:

@@ -7,7 +7,7 @@ import argparse
 import math
 import sys
 
-from graphplan.cli.common import lang_arg, lang_of
+from graphplan.cli.common import lang_arg, lang_of, option_error
 from graphplan.util.errors import GraphplanError
 
 def register(sub) -> None:
@@ -48,10 +48,10 @@ def cmd_forces(args: argparse.Namespace) -> int:
     from graphplan.graphic.forceplans import construct
     from graphplan.exact.kinetostatics import at_scene_angle
     if not math.isfinite(args.precision) or args.precision < 0:
-        raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {args.precision:g}")
+        raise option_error("--precision", "op precision", got=float(args.precision))
     if args.phi is not None and not math.isfinite(args.phi):
-        raise GraphplanError(f"--phi must be a finite angle in degrees, got {args.phi}")
-    st = _load(args.scene)
+        raise option_error("--phi", "op angle", got=args.phi)
+    st = _load(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     phi = at_scene_angle(st) if args.phi is None else args.phi % 360.0
     scales, sheet = {}, None

@@ -7,8 +7,8 @@ import argparse
 import math
 import sys
 
-from graphplan.cli.common import lang_arg
-from graphplan.util.errors import GraphplanError
+from graphplan.cli.common import lang_arg, option_error, range_fields
+from graphplan.util.errors import GraphplanError, said_error
 
 
 def register(sub) -> None:
@@ -36,7 +36,7 @@ def cmd_gears(args: argparse.Namespace) -> int:
     from graphplan.report.gears import gears_json, gears_table
     from graphplan.util.words import pick
     if not math.isfinite(args.precision) or not 0 <= args.precision <= 10:
-        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+        raise option_error("--precision", "op range", **range_fields(0, 10, "mm", False, args.precision))
     from graphplan.exact.gears import solve
     from graphplan.model.gears import load
     from graphplan.sheets.form import form
@@ -67,7 +67,7 @@ def write_svg(mesh, vel, folder: str) -> None:
     from graphplan.drawing import svg
     from graphplan.util.files import write_atomic
     if Path(folder).exists() and not Path(folder).is_dir():
-        raise GraphplanError("--svg needs a folder, this is a file", folder)
+        raise said_error(GraphplanError, "op svg folder", str(folder), None)
     for name, rec in records(mesh, vel).items():
         page, w, h = svg.page_for(rec)
         write_atomic(Path(folder) / f"{name}.svg", svg.render(page, w, h, rec.title))

@@ -14,10 +14,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TextIO
 
-from graphplan.cli.common import lang_arg, lang_of
+from graphplan.cli.common import lang_arg, lang_of, option_error
 from graphplan.util.markup import escape, plain
 from graphplan.util.progress import Progress
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.files import write_atomic
 
 SUMMARY_FORMAT = "graphplan-keys/1"
@@ -39,11 +39,11 @@ def _parse_tol(items: list[str], tolerance: float | None) -> dict[str, float]:
         except ValueError:
             pct = -1.0
         if not sep or not name.strip() or not 0 < pct <= 100:
-            raise GraphplanError(f"--tol {item!r}: write QUANTITY=PERCENT, e.g. --tol 'a_*=8'")
+            raise option_error("--tol", "op tol", item=repr(item))
         out[name.strip()] = pct
     if tolerance is not None:
         if not 0 < tolerance <= 100:
-            raise GraphplanError(f"--tolerance must be a percentage in (0, 100], got {tolerance:g}")
+            raise option_error("--tolerance", "op tolerance", got=float(tolerance))
         out["*"] = tolerance
     return out
 
@@ -269,12 +269,12 @@ def cmd_key(args: argparse.Namespace) -> int:
     vt.check_columns(table)
     cli_tol = _parse_tol(args.tol, args.tolerance)
     if args.divisions is not None and not 2 <= args.divisions <= 720:
-        raise GraphplanError(f"--divisions must be from 2 to 720, got {args.divisions}")
+        raise option_error("--divisions", "op whole", lo=2, hi=720, got=args.divisions)
     if args.jobs is not None and args.jobs < 1:
-        raise GraphplanError(f"--jobs must be at least 1, got {args.jobs}")
+        raise option_error("--jobs", "op at least", lo=1, got=args.jobs)
     out = Path(args.output)
     if out.exists() and not out.is_dir():
-        raise GraphplanError("the output must be a folder", str(out))
+        raise said_error(GraphplanError, "op output folder", str(out), None)
     jobs = args.jobs or min(os.cpu_count() or 1, 8, len(table.variants))
     progress = Progress(len(table.variants), enabled=not args.quiet and sys.stderr.isatty())
     lang = lang_of(args)

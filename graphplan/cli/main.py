@@ -8,7 +8,7 @@ from importlib import import_module
 from collections.abc import Callable, Sequence
 
 from graphplan import __version__
-from graphplan.cli.common import Parser, _load, _scene_arg, check_options, dumps  # noqa: F401
+from graphplan.cli.common import Parser, _load, _scene_arg, check_options, dumps, tell_cautions  # noqa: F401
 from graphplan.util.errors import GraphplanError
 
 Handler = Callable[[argparse.Namespace], int]
@@ -54,15 +54,17 @@ def main(argv: Sequence[str] | None = None) -> int:
             build_parser().print_help()
             return 2
         check_options(args)
-        return args.handler(args)
+        code = args.handler(args)
+        tell_cautions(code == 0)
+        return code
     except GraphplanError as exc:
-        from graphplan.util.words import pick     # --lang, else the scene's, else Ukrainian
-        print(f"graphplan: {exc.line(pick(getattr(args, 'lang', None), exc.lang))}", file=sys.stderr)
+        print(f"graphplan: {exc.line(told_lang(argv, args, exc))}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return 0
     except KeyboardInterrupt:
-        print("graphplan: interrupted", file=sys.stderr)
+        from graphplan.util.words import word
+        print(f"graphplan: {word('op interrupted', told_lang(argv, args))}", file=sys.stderr)
         return 130
     except Exception as exc:  # an internal error is still one line unless debugging
         if os.environ.get("GRAPHPLAN_DEBUG"):
@@ -71,3 +73,38 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"graphplan: internal error: {type(exc).__name__}: {text} "
               "(set GRAPHPLAN_DEBUG=1 for the traceback)", file=sys.stderr)
         return 1
+    finally:
+        tell_cautions(False)             # a run that did not succeed keeps its one line
+
+
+def told_lang(argv: Sequence[str] | None, args: argparse.Namespace | None, exc: GraphplanError | None = None) -> str:
+    """The language a refusal speaks: --lang (as parsed, or as written when the parse itself failed),
+    else the scene's ``lang`` (the error's, or read from the scene named on the command line), else
+    Ukrainian."""
+    from graphplan.util.words import LANGS, pick
+    words = list(sys.argv[1:] if argv is None else argv)
+    told = getattr(args, "lang", None)
+    for k, item in enumerate(words):
+        if told is None and item == "--lang" and k + 1 < len(words) and words[k + 1] in LANGS:
+            told = words[k + 1]
+        elif told is None and item.startswith("--lang=") and item[7:] in LANGS:
+            told = item[7:]
+    scene = exc.lang if exc is not None else None
+    if told is None and scene is None:
+        path = getattr(args, "scene", None) or next((w for w in words if w.endswith(".toml")), None)
+        scene = _scene_lang(path)
+    return pick(told if told in LANGS else None, scene if scene in LANGS else None)
+
+
+def _scene_lang(path: object) -> str | None:
+    """The ``lang`` of the scene file at ``path``, or None where there is none or it does not read."""
+    if not isinstance(path, str):
+        return None
+    try:
+        from graphplan.model import bounds as B
+        from graphplan.util.files import read_bytes
+        data = B.parse_toml(read_bytes(path, "scene", B.MAX_SCENE_BYTES).decode("utf-8-sig"), path)
+    except (GraphplanError, UnicodeDecodeError, ValueError):
+        return None
+    lang = data.get("lang") if isinstance(data, dict) else None
+    return lang if isinstance(lang, str) else None

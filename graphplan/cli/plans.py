@@ -5,8 +5,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from graphplan.cli.common import lang_arg, lang_of, load_study
-from graphplan.util.errors import GraphplanError
+from graphplan.cli.common import lang_arg, lang_of, load_study, option_error
+from graphplan.util.errors import GraphplanError, said_error, either
 from graphplan.util.files import json_text, write_atomic
 
 def _format_arg(text: str) -> str | None:
@@ -14,17 +14,17 @@ def _format_arg(text: str) -> str | None:
     if text.lower() == "none":
         return None
     if text.upper() not in ("A1", "A2", "A3", "A4"):
-        raise GraphplanError(f"--format: unknown sheet format {text!r} (A1, A2, A3, A4 or none)")
+        raise option_error("--format", "op sheet format", got=repr(text), formats=either("A1", "A2", "A3", "A4", "none"))
     return text.upper()
 
 
 def cmd_plans(args: argparse.Namespace) -> int:
     from graphplan.graphic.plans import build_plans
     from graphplan.report.plans import plans_json, plans_table, svg_documents
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     if args.positions is not None and not 2 <= args.positions <= 3600:
-        raise GraphplanError(f"--positions must be from 2 to 3600, got {args.positions}")
+        raise option_error("--positions", "op whole", lo=2, hi=3600, got=args.positions)
     mu = {"mu_l": args.mu_l, "mu_v": args.mu_v, "mu_a": args.mu_a}
     if args.format and None in mu.values():      # the sheet's scales, unless the user gives them
         from graphplan.sheets.kinematics import sheet_scales
@@ -34,7 +34,7 @@ def cmd_plans(args: argparse.Namespace) -> int:
     if args.svg:
         folder = Path(args.svg)
         if folder.exists() and not folder.is_dir():
-            raise GraphplanError("--svg needs a folder, this is a file", str(folder))
+            raise said_error(GraphplanError, "op svg folder", str(folder), None)
         for name, text in svg_documents(plans, lang).items():
             write_atomic(folder / name, text)
     if args.json:

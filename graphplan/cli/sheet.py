@@ -5,8 +5,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from graphplan.cli.common import lang_arg, lang_of
-from graphplan.util.errors import GraphplanError
+from graphplan.cli.common import caution, lang_arg, lang_of, option_error
+from graphplan.util.errors import GraphplanError, keyed_error, either
 
 
 def register(sub) -> None:
@@ -37,7 +37,7 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     from graphplan.sheets.form import form
     from graphplan.sheets.sheet import BUILDERS, FORMATS_OUT
     if Path(args.output).suffix.lower() not in FORMATS_OUT:
-        raise GraphplanError(f"-o {args.output}: unknown format; use " + ", ".join(FORMATS_OUT))
+        raise option_error(f"-o {args.output}", "op out format", formats=either(*FORMATS_OUT))
     if Path(args.output).suffix.lower() in (".pdf", ".png"):
         from graphplan.drawing.raster import require_cairo
         require_cairo()                  # before the work: one line when the cairo library is missing
@@ -45,29 +45,31 @@ def cmd_sheet(args: argparse.Namespace) -> int:
     cam = _cam_scene(args.scene) if gears is None else None
     if gears is not None or args.sheet == "gears":
         if gears is None:
-            raise GraphplanError("--sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)",
-                                 args.scene)
+            raise keyed_error(GraphplanError, args.scene, "--sheet gears", "op no gears", None, gears="[gears]", planetary="[planetary]",
+                              doc="docs/gears.md")
         if args.sheet not in (None, "gears"):
-            raise GraphplanError(f"--sheet {args.sheet}: a gear scene has the gear sheet only", args.scene)
+            raise keyed_error(GraphplanError, args.scene, f"--sheet {args.sheet}", "op gears only", None, sheet="gears")
         from graphplan.util.words import pick
         args.sheet, st = "gears", gears
         args.lang = pick(getattr(args, "lang", None), dict(gears.meta).get("lang"))
     elif cam is not None or args.sheet == "cam":
         if cam is None:
-            raise GraphplanError("--sheet cam: the scene has no [cam] table (docs/cams.md)", args.scene)
+            raise keyed_error(GraphplanError, args.scene, "--sheet cam", "op no cam", None, cam="[cam]", doc="docs/cams.md")
         if args.sheet not in (None, "cam"):
-            raise GraphplanError(f"--sheet {args.sheet}: a cam scene has the cam sheet only", args.scene)
+            raise keyed_error(GraphplanError, args.scene, f"--sheet {args.sheet}", "op cam only", None, sheet="cam")
         from graphplan.util.words import pick
         args.sheet, st = "cam", cam
         args.lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     else:
         args.sheet = args.sheet or "kinematics"
-        st = study(load(args.scene))
+        mech = load(args.scene)
+        caution(mech, getattr(args, "lang", None))
+        st = study(mech)
         args.lang = lang_of(args, st)
     f = form(args.format)
     build = BUILDERS.get(args.sheet)
     if build is None:
-        raise GraphplanError(f"--sheet {args.sheet}: not available")
+        raise option_error(f"--sheet {args.sheet}", "op not available")
     from graphplan.sheets.compose import SheetOptions, page_path
     from graphplan.util.words import unit, word
     sheet = build(st, f, SheetOptions(positions=args.positions, accel=args.accel, precision=args.precision,

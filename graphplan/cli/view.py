@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg
+from graphplan.cli.common import lang_arg, lang_of, load_study, scene_arg, option_error, range_fields
 from graphplan.util.errors import GraphplanError
 from graphplan.util.files import write_atomic
 
@@ -26,7 +26,7 @@ def cmd_view(args: argparse.Namespace) -> int:
     cam = _cam_scene(args.scene)
     if cam is not None:
         return view_cam(cam, args, out)
-    st = load_study(args.scene)
+    st = load_study(args.scene, getattr(args, "lang", None))
     lang = lang_of(args, st)
     if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
         raise GraphplanError(word("view step", lang, step=f"{args.step:g}"))
@@ -50,9 +50,9 @@ def view_cam(cam, args: argparse.Namespace, out: Path) -> int:
     from graphplan.util.words import pick
     lang = pick(getattr(args, "lang", None), dict(cam.meta).get("lang"))
     if not (math.isfinite(args.step) and 0.05 <= args.step <= 30):
-        raise GraphplanError(f"--step must be from 0.05 to 30 degrees, got {args.step:g}")
+        raise option_error("--step", "op range", **range_fields(0.05, 30, "deg", False, args.step))
     if not (math.isfinite(args.precision) and 0 <= args.precision <= 10):
-        raise GraphplanError(f"--precision must be from 0 to 10 mm, got {args.precision:g}")
+        raise option_error("--precision", "op range", **range_fields(0, 10, "mm", False, args.precision))
     try:
         sol = solve(cam)
         g = construct_on(sol, form("A1"), None, args.precision)    # the numbers of `graphplan cam`

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from graphplan.model.cam import Cam
-from graphplan.util.errors import GraphplanError, keyed_error
+from graphplan.util.errors import GraphplanError, keyed_error, said_error
 from graphplan.util.words import Fixed
 
 
@@ -78,7 +78,7 @@ def law(name: str, u: Array) -> tuple[Array, Array, Array]:
         j = (a[k + 1] - a[k]) / (knots[k + 1] - knots[k])
         return (A * (f[k] + v[k] * t + a[k] * t * t / 2 + j * t ** 3 / 6), A * (v[k] + a[k] * t + j * t * t / 2),
                 A * (a[k] + j * t))
-    raise GraphplanError(f"unknown law {name!r}")
+    raise said_error(GraphplanError, "ec unknown law", None, None, name=repr(name))
 
 
 def motion(cam: Cam, phi_deg: Array, phase: Array | None = None) -> tuple[Array, Array, Array]:
@@ -297,8 +297,7 @@ def bracketed_root(f, lo: float, hi: float) -> float:
     if f_hi == 0:
         return float(hi)
     if not f(lo) > 0 or not f_hi < 0:
-        raise GraphplanError("the smallest base radius could not be bracketed (the allowed pressure "
-                             f"angles are reached neither at {lo * 1000:.3f} mm nor at {hi * 1000:.3f} mm)")
+        raise said_error(GraphplanError, "ec no bracket", None, None, lo=Fixed(lo * 1000, 3), hi=Fixed(hi * 1000, 3))
     return float(brentq(f, lo, hi, xtol=1e-15, rtol=1e-15, maxiter=200))
 
 

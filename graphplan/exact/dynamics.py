@@ -363,8 +363,7 @@ def check_divisions(n, key: str = "--divisions", where: str | None = None) -> in
     from graphplan.model.bounds import DYNAMICS_DIVISIONS
     lo, hi = DYNAMICS_DIVISIONS
     if isinstance(n, bool) or not isinstance(n, int) or not lo <= n <= hi:
-        raise GraphplanError(f"{key} must be a whole number from {lo} to {hi} (the construction divides the "
-                             f"turn into at most {hi} parts, 1° each; a drawing resolves no finer), got {n!r}", where)
+        raise keyed_error(GraphplanError, where, key, "dy divisions", None, lo=lo, hi=hi, got=repr(n))
     return n
 
 
@@ -391,7 +390,7 @@ def bounded(st: Study) -> tuple[Study, list[tuple[str, str]]]:
 
 def check_delta(delta: float) -> None:
     if not (isinstance(delta, (int, float)) and DELTA_RANGE[0] < delta < DELTA_RANGE[1]):
-        raise GraphplanError(f"--delta: the coefficient of unevenness must lie in (0, 0.5), got {delta!r}")
+        raise keyed_error(GraphplanError, None, "--delta", "dy delta", None, got=repr(delta))
 
 
 # -- the motor -----------------------------------------------------------------------------------
@@ -526,9 +525,8 @@ def motor_motion(c: Cycle, dr: Drive, flywheel: float, guess: float | None = Non
     w0 = _periodic_start(c, dr, const, guess)
     if w0 is None or not lo < w0:
         if ret(lo) <= 0:
-            raise GraphplanError(f"dynamics: the motor {latin(dr.motor.name)} ({dr.motor.power_kW:g} kW, i = {dr.ratio:.4g}) "
-                                 "cannot drive the cycle: even at the end of its working branch the crank "
-                                 "slows down over a turn; choose a larger motor", None)
+            raise keyed_error(GraphplanError, None, "dynamics", "dy motor slows", None, name=latin(dr.motor.name),
+                              power=float(dr.motor.power_kW), ratio=float(dr.ratio))
         while ret(hi) > 0:                # above ω_c at position 0: the motor brakes there (generator)
             hi *= 1.05
         w0 = brentq(ret, lo, hi, xtol=PERIODIC * hi, rtol=1e-15, maxiter=200)
@@ -574,10 +572,8 @@ def carries(dr: Drive, m: Motion) -> None:
     branch (above ω_k) all the turn; otherwise one line, exit 2."""
     peak = float(np.max(dr.moment(m.omega)))
     if peak > dr.moment_max or m.omega_min < dr.omega_breakdown:
-        raise GraphplanError(f"dynamics: the motor {latin(dr.motor.name)} cannot drive the cycle: its moment "
-                             f"reaches {peak / (dr.ratio * dr.efficiency):.3g} N·m on its shaft, above "
-                             f"M_max = {dr.motor.moment_max:.3g} N·m (off the working branch); choose a "
-                             "larger motor")
+        raise keyed_error(GraphplanError, None, "dynamics", "dy motor moment", None, name=latin(dr.motor.name),
+                          moment=float(peak / (dr.ratio * dr.efficiency)), max=float(dr.motor.moment_max))
 
 
 # -- the whole exact part ----------------------------------------------------------------------------

@@ -30,7 +30,7 @@ from itertools import product
 import numpy as np
 
 from graphplan.model.gears import Gears, Pair, Train
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 
 POINTED = 0.25              # sa ≥ 0.25·m
 CONTACT_MIN = 1.2           # εα ≥ 1.2
@@ -55,7 +55,7 @@ def inv_inverse(value, tol: float = 1e-12):
     ``tol`` rad (quadratic convergence: a handful of steps), then one more."""
     v = np.asarray(value, dtype=float)
     if np.any(~(v > 0)):
-        raise GraphplanError("inv αw must be positive")
+        raise said_error(GraphplanError, "gr inv", None, None, inv="inv αw")
     a = np.minimum(np.cbrt(3.0 * v), 1.55)
     for _ in range(100):
         step = (inv(a) - v) / np.tan(a) ** 2

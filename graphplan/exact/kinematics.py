@@ -16,7 +16,8 @@ from functools import cached_property
 
 import numpy as np
 
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import SceneError, said_error
+from graphplan.util.words import pair_kind, word
 from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.model.structure import Dyad, Structure
 
@@ -133,7 +134,7 @@ class Kinematics:
     def body_of(self, point: str) -> str:
         holders = self.mech.bodies_of(point)
         if not holders:
-            raise SceneError(f"no point named {point!r}", self.mech.source)
+            raise said_error(SceneError, "kn no point", self.mech.source, self.mech.task.meta.get("lang"), point=point)
         return holders[-1] if holders[0] == FRAME and len(holders) == 1 else holders[0]
 
     def point(self, name: str) -> tuple[Array, Array, Array]:
@@ -263,8 +264,8 @@ def _rrp(kin: Kinematics, d: Dyad, branch: int) -> None:
     p1, c = d.outer_a.point, d.inner.point
     x1, v1, a1 = _known(kin, d.outer_a.other(d.a), p1)
     if d.outer_b.slider != d.b:
-        raise SceneError(f"{d.title}: a known body sliding on the dyad's guide is not supported",
-                         kin.mech.source)
+        raise said_error(SceneError, "kn known slider", kin.mech.source, kin.mech.task.meta.get("lang"),
+                         dyad=_named(d))
     carrier, gx, g, alpha = _line(kin, d.outer_b.guide, d.b, c)
     la = _distance(kin, d.a, p1, c)
     rel = gx - x1
@@ -350,8 +351,7 @@ def _rpp(kin: Kinematics, d: Dyad, branch: int) -> None:
     the block a on the yoke's slot d).
     v: ṫ3·g + ṫ2·d = v_A − v_K(A);  a: ẗ3·g + ẗ2·d = a_A − a_K(A) − 2iω_K(ṫ3·g + ṫ2·d)."""
     if d.inner.slider != d.a:
-        raise SceneError(f"{d.title}: the yoke must carry the slot its block slides in",
-                         kin.mech.source)
+        raise said_error(SceneError, "kn yoke slot", kin.mech.source, kin.mech.task.meta.get("lang"), dyad=_named(d))
     pa = d.outer_a.point
     xa, va, aa = _known(kin, d.outer_a.other(d.a), pa)
     links = kin.mech.links
@@ -380,3 +380,8 @@ def _rpp(kin: Kinematics, d: Dyad, branch: int) -> None:
 
 
 _SOLVERS = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}
+
+
+def _named(d):
+    """A dyad as a refusal names it, in the language asked for (as exact.positions names it)."""
+    return lambda lang: word("dyad title", lang, label=d.label, kind=pair_kind(d.kind, lang), a=d.a, b=d.b)

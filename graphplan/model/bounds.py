@@ -139,6 +139,29 @@ def name_problem(name: str) -> str | None:
     return None
 
 
+# tomllib's commonest complaints, said in the reader's language (the rest stay as tomllib words them)
+_TOML_WHY = ((re.compile(r"^Cannot declare \((?P<t>[^)]*)\) twice \(at line (?P<line>\d+), column \d+\)$"), "bad toml twice"),
+             (re.compile(r"^Cannot overwrite a value \(at line (?P<line>\d+), column \d+\)$"), "bad toml overwrite"),
+             (re.compile(r"^Invalid value \(at line (?P<line>\d+), column \d+\)$"), "bad toml invalid"),
+             (re.compile(r"^Expected '=' after a key in a key/value pair \(at line (?P<line>\d+), column \d+\)$"),
+              "bad toml equals"))
+
+
+def toml_why(message: str):
+    """tomllib's message as the refusal says it: a table declared twice ("[crank] twice, line 31"), a
+    key given twice, a value that is not TOML (text without quotes), a key without '=' — in either
+    language; any other message as tomllib words it (shortened)."""
+    from graphplan.util.words import word
+    for pattern, key in _TOML_WHY:
+        m = pattern.match(message)
+        if m:
+            fields = {k: v for k, v in m.groupdict().items()}
+            if "t" in fields:
+                fields["t"] = "[" + ".".join(x.strip().strip("'\"") for x in fields["t"].split(",") if x.strip()) + "]"
+            return lambda lang: word(key, lang, **fields)
+    return short(message, 120)
+
+
 def parse_toml(text: str, where: str) -> dict[str, Any]:
     """The TOML tree of a scene, bounded: size, nesting depth, integers' size."""
     if len(text.encode("utf-8", "surrogatepass")) > MAX_SCENE_BYTES:
@@ -146,7 +169,7 @@ def parse_toml(text: str, where: str) -> dict[str, Any]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise keyed_error(SceneError, where, "", "bad toml syntax", toml="TOML", why=short(str(exc), 120)) from None
+        raise keyed_error(SceneError, where, "", "bad toml syntax", toml="TOML", why=toml_why(str(exc))) from None
     except RecursionError:
         raise keyed_error(SceneError, where, "", "bad toml depth", toml="TOML", most=MAX_TOML_DEPTH) from None
     except ValueError as exc:          # e.g. an integer of more than 4300 digits

@@ -44,6 +44,9 @@ def evaluate(text: str, names: dict[str, float], where: str) -> float:
                 return float(names[node.id])
             if node.id in _CONSTS:
                 return _CONSTS[node.id]
+            if node.id == text.strip():          # a word where a number is wanted ("horizontal")
+                raise keyed_error(SceneError, where, "", "ex bare word", name=repr(node.id), params="[params]",
+                                  known=", ".join(sorted(names)) or "—")
             raise keyed_error(SceneError, where, "", "ex unknown name", name=repr(node.id), text=repr(text))
         if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
             result = _BINARY[type(node.op)](walk(node.left), walk(node.right))

@@ -18,7 +18,7 @@ from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, d
                                       later_keep, note_block)
 from graphplan.sheets.form import Form, table
 from graphplan.sheets.kinematics import TITLE
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.markup import escape
 from graphplan.util.words import num
 
@@ -40,10 +40,10 @@ WORDS = {
 
 def _fields(cam: Cam, lang: str) -> dict[str, str]:
     meta = dict(cam.meta)
-    from graphplan.sheets.compose import organisation
+    from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(cam.title_in(lang)),
-            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": "", "sheet": "1", "sheets": "1",
             "subtitle": WORDS[lang]["subtitle"]}
 
@@ -1233,8 +1233,7 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                 if placed(t) and len(t) <= most]
         laid = same[0] if same else (own if placed(own) else laid)
     if laid is None:
-        raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
-                             "choose a larger --format")
+        raise said_error(GraphplanError, "sh cam larger", None, None, form=f.name, option="--format")
     def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
         return (at_top if f.name == "A1" and leaf.name in ("profile", "diagrams") else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None

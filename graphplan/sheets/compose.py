@@ -81,8 +81,8 @@ class Sheet:
         path = Path(path)
         suffix = path.suffix.lower()
         if suffix not in FORMATS_OUT:
-            raise GraphplanError(f"-o {path}: unknown format {suffix or '(none)'!r}; use "
-                                 + ", ".join(FORMATS_OUT))
+            raise keyed_error(GraphplanError, None, f"-o {path}", "op out suffix", None, got=repr(suffix or "(none)"),
+                              formats=either(*FORMATS_OUT))
         for n, page in enumerate(self.pages, 1):
             page._write_one(page_path(path, n), suffix, text_as_paths, dpi)
         return path
@@ -299,11 +299,20 @@ def _wrapped(text: str, width: float, size: float) -> tuple[str, ...]:
     return tuple(lines or [""])
 
 
+def sheet_field(meta: dict, name: str, lang: str) -> str:
+    """A [sheet] field (student, teacher, group, organisation …) in the sheet's language: its
+    ``NAME_en`` variant on an English sheet where the scene gives one (as ``title_en``), else the
+    field as written (the Ukrainian), unescaped."""
+    if lang == "en" and meta.get(f"sheet.{name}_en"):
+        return meta[f"sheet.{name}_en"]
+    return meta.get(f"sheet.{name}", "")
+
+
 def organisation(meta: dict, lang: str) -> str:
     """The title block's organisation field: the organisation and the student's group in one word
     on every sheet ("НУБіП України, гр. МБ-21"; "…, group МБ-21"), unescaped."""
     from graphplan.util.words import word
-    org, group = meta.get("sheet.organisation", ""), meta.get("sheet.group", "")
+    org, group = sheet_field(meta, "organisation", lang), sheet_field(meta, "group", lang)
     return ", ".join(x for x in (org, word("kin group", lang, g=group) if group else "") if x)
 
 

@@ -27,7 +27,7 @@ from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions,
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.words import LANGS, num
 
 
@@ -1414,7 +1414,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_laid``)
         laid, nook, leaves["speed"] = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
         if laid is None:
-            raise GraphplanError(f"a dynamics drawing is larger than a whole {f.name} sheet; choose a larger --format")
+            raise said_error(GraphplanError, "sh drawing larger", None, None, form=f.name, option="--format")
         pages = [[q for leaf, b in page if leaf.record is not None
                   for q in placed(leaf, b, leaf.name in _top_aligned(page))] for page in laid]
         if nook is not None:

@@ -27,7 +27,7 @@ from graphplan.sheets.compose import (Family, Sheet, SheetOptions, captioned, co
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import ONE_SHEET, TITLE, acceleration_table, fields, notes
 from graphplan.sheets.kintables import title_in
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.sheets.compose import number
 from graphplan.util.words import fixed, force_symbol, num, unit, word
 
@@ -1055,7 +1055,7 @@ def _set_flowed(nat: Natural, f: Form) -> Plan:
         if best is None or count < best[0] and (not packed or _no_smaller(nat, mu, best[1].mu)):
             best = (count, Plan(mu, factor, "set", 1, 1, count, packed=packed))
     if best is None:
-        raise GraphplanError(f"the force drawings do not fit a {f.name} sheet; choose a larger --format")
+        raise said_error(GraphplanError, "sh forces fit", None, None, form=f.name, option="--format")
     return best[1]
 
 
@@ -1823,7 +1823,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
             packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap, apart=True), tables,
                           notes_leaf, region, keep_out(f), later_keep(f), p.gap)
         if packed is None:
-            raise GraphplanError(f"a force drawing is larger than a whole {f.name} sheet; choose a larger --format")
+            raise said_error(GraphplanError, "sh drawing larger", None, None, form=f.name, option="--format")
         pages = []
         for k, spots in enumerate(packed):
             keep = keep_out(f) if k == 0 else later_keep(f)

@@ -24,10 +24,11 @@ class Form:
 
 
 def form(name: str) -> Form:
-    from graphplan.util.errors import GraphplanError
+    from graphplan.util.errors import GraphplanError, either, keyed_error
     key = name.upper()
     if key not in FORMATS:
-        raise GraphplanError(f"--format: unknown sheet format {name!r} (A1, A2, A3, A4)")
+        raise keyed_error(GraphplanError, None, "--format", "op sheet format", None, got=repr(name),
+                          formats=either("A1", "A2", "A3", "A4"))
     w, h = FORMATS[key]
     return Form(key, w, h)
 

@@ -23,7 +23,7 @@ from graphplan.sheets.compose import (CAPTION_2, Sheet, SheetOptions, captioned,
 from graphplan.sheets.form import TABLES, Form, enlarged, table
 from graphplan.drawing.tables import baseline_in_row
 from graphplan.sheets.kinematics import TITLE
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.markup import escape
 from graphplan.util.words import fixed, num
 
@@ -439,10 +439,10 @@ def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
 
 def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
     meta = dict(g.meta)
-    from graphplan.sheets.compose import organisation
+    from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(g.title_in(lang)),
-            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": drawing_scale(mu_l, lang) if mu_l else "", "sheet": "1",
             "sheets": "1", "subtitle": WORDS[lang]["subtitle"]}
 
@@ -825,8 +825,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             if flat[3] is not None and len(flat[3]) < len(pages):
                 mesh, more, lam, pages = flat
         if pages is None:
-            raise GraphplanError(f"a gear drawing is larger than a whole {f.name} sheet; choose a larger --format",
-                                 g.source)
+            raise said_error(GraphplanError, "sh drawing larger", g.source, None, form=f.name, option="--format")
         if vel is not None:
             first = pages
             vel0 = vel

@@ -30,7 +30,7 @@ from graphplan.sheets.kinlayout import (ONE_SHEET, TARGETS, TITLE, LETTERING, Pl
                                         place_tables, room_fits, set_of_sheets, set_rows, set_tail, size_of, split_leaves,
                                         taller_in_place,
                                         tree)
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.words import fixed, num, word
 
 
@@ -475,7 +475,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
                         region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f), ragged=True)
         if laid is None:
-            raise GraphplanError(f"a drawing is larger than a whole {f.name} sheet; choose a larger --format")
+            raise said_error(GraphplanError, "sh drawing larger", None, None, form=f.name, option="--format")
         pages = [[Placed(leaf.name, centred(leaf.record, b), b) for leaf, b in page if leaf.record is not None]
                  for page in laid]
     tf = fields(st, opts.lang, drawing_scale(p.mu["position"], opts.lang))

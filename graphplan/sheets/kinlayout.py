@@ -15,7 +15,7 @@ from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 
 if TYPE_CHECKING:
     from graphplan.sheets.kinematics import Drafter
@@ -1164,8 +1164,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw, stacked=stacked))
     if best is None:
-        raise GraphplanError(f"the drawings do not fit a {f.name} sheet even at the smallest scales; "
-                             "choose a larger --format")
+        raise said_error(GraphplanError, "sh kin fit", None, None, form=f.name, option="--format")
     return taller(dr, nat, best[1], lambda k: _laid_again(nat, best[1], diagrams_size(dr, nat, k), f))
 
 

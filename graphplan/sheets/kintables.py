@@ -689,10 +689,10 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
     carries the organisation and the student's group ("НУБіП України, гр. МБ-21")."""
     meta = st.mech.task.meta
     title = title_in(st, lang)
-    from graphplan.sheets.compose import organisation
+    from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
     return {"designation": escape(meta.get("designation", "")), "title": escape(title),
-            "student": escape(meta.get("sheet.student", "")), "teacher": escape(meta.get("sheet.teacher", "")),
+            "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org),
             "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),
             "subtitle": subtitle or word("kin subtitle", lang)}

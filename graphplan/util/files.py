@@ -7,7 +7,28 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
+
+# what a file is, as a refusal names it (read_bytes's ``what``): Ukrainian (nominative, genitive)
+WHAT_UK = {"scene": ("сцена", "сцени"), "scene file": ("файл сцени", "файлу сцени"),
+           "variant table": ("таблиця варіантів", "таблиці варіантів"), "base scene": ("базова сцена", "базової сцени"),
+           "key file": ("файл ключа", "файлу ключа"), "table": ("таблиця", "таблиці"),
+           "student table": ("таблиця студента", "таблиці студента"), "file": ("файл", "файлу")}
+
+
+def _what(what: str, case: int = 0):
+    """``what`` in the reader's language (a name the catalogue's ``said`` calls with the language);
+    ``case`` 1: the Ukrainian genitive ("не знайдено файлу сцени")."""
+    return lambda lang: WHAT_UK[what][case] if lang == "uk" and what in WHAT_UK else what
+
+
+def _why(exc: OSError):
+    """An OS error's reason in the reader's language: the common ones worded by the catalogue."""
+    import errno
+    from graphplan.util.words import word
+    key = {errno.EACCES: "fl no permission", errno.EPERM: "fl no permission", errno.ENOENT: "fl no folder"}.get(
+        exc.errno)
+    return lambda lang: word(key, lang) if key else str(exc.strerror or exc)
 
 
 def json_text(doc: Any) -> str:
@@ -27,17 +48,19 @@ def read_bytes(path: str | Path, what: str, limit: int = MAX_INPUT_BYTES) -> byt
     path = Path(path)
     try:
         if not path.exists():
-            raise GraphplanError(f"no such {what}", str(path))
+            raise said_error(GraphplanError, "fl missing", str(path), None, what=_what(what), of=_what(what, 1))
         if path.is_dir():
-            raise GraphplanError(f"the {what} is a folder, not a file", str(path))
+            raise said_error(GraphplanError, "fl folder", str(path), None, what=_what(what))
         if not (path.is_file() or path.is_fifo()):          # a pipe (/dev/stdin, <(…)) ends
-            raise GraphplanError(f"the {what} is not a regular file", str(path))
+            raise said_error(GraphplanError, "fl not regular", str(path), None, what=_what(what))
         with open(path, "rb") as handle:
             data = handle.read(limit + 1)
     except OSError as exc:
-        raise GraphplanError(f"cannot read the {what}: {exc.strerror or exc}", str(path)) from None
+        raise said_error(GraphplanError, "fl cannot read", str(path), None, what=_what(what),
+                         why=_why(exc)) from None
     if len(data) > limit:
-        raise GraphplanError(f"the {what} is larger than {limit // (1024 * 1024)} MB", str(path))
+        raise said_error(GraphplanError, "fl too large", str(path), None, what=_what(what),
+                         mb=limit // (1024 * 1024))
     return data
 
 
@@ -47,8 +70,8 @@ def read_text(path: str | Path, what: str, limit: int = MAX_INPUT_BYTES) -> str:
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
-        raise GraphplanError(f"cannot read the {what}: not UTF-8 text (byte {exc.start})",
-                             str(path)) from None
+        raise said_error(GraphplanError, "fl not utf8", str(path), None, what=_what(what), utf="UTF-8",
+                         byte=exc.start) from None
 
 
 def write_atomic(path: str | Path, data: bytes | str) -> Path:
@@ -57,17 +80,17 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
     payload = data.encode("utf-8") if isinstance(data, str) else data
     folder = path.parent if str(path.parent) else Path(".")
     try:
-        folder.mkdir(parents=True, exist_ok=True)
         if path.is_dir():
-            raise GraphplanError("is a folder; name a file to write", str(path))
-        for parent in (folder, *folder.parents):
+            raise said_error(GraphplanError, "fl write folder", str(path), None)
+        for parent in (folder, *folder.parents):      # the nearest existing ancestor must be a folder
             if parent.exists():
                 if not parent.is_dir():
-                    raise GraphplanError(f"cannot write: {parent} is not a folder", str(path))
+                    raise said_error(GraphplanError, "fl write not folder", str(path), None, parent=parent)
                 break
+        folder.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=folder)
     except OSError as exc:
-        raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None
+        raise said_error(GraphplanError, "fl cannot write", str(path), None, why=_why(exc)) from None
     try:
         with os.fdopen(fd, "wb") as handle:
             handle.write(payload)
@@ -78,7 +101,7 @@ def write_atomic(path: str | Path, data: bytes | str) -> Path:
     except OSError as exc:
         if os.path.exists(tmp):
             os.unlink(tmp)
-        raise GraphplanError(f"cannot write: {exc.strerror or exc}", str(path)) from None
+        raise said_error(GraphplanError, "fl cannot write", str(path), None, why=_why(exc)) from None
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)

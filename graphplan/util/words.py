@@ -21,7 +21,8 @@ def check_lang(lang: str | None) -> str:
     if lang is None:
         return DEFAULT_LANG
     if lang not in LANGS:
-        raise GraphplanError(f"--lang must be uk or en, got {lang!r}")
+        from graphplan.util.errors import keyed_error
+        raise keyed_error(GraphplanError, None, "--lang", "op lang", None, got=repr(lang))
     return lang
 
 
@@ -1005,6 +1006,14 @@ WORDS.update({
     "ex unreadable": ("не вдається прочитати вираз {text}", "cannot read the expression {text}"),
     "ex deep": ("вираз {text} вкладено глибше ніж на {most} рівні", "the expression {text} is nested more than {most} deep"),
     "ex underscore": ("{text}: пишіть числа без «_»", "{text}: write numbers without '_'"),
+    "ex bare word": ("{name} — не число: задайте число або вираз (імена з {params}: {known})",
+                     "{name} is not a number: give a number or an expression (names of {params}: {known})"),
+    "bad toml twice": ("таблицю {t} оголошено двічі (рядок {line}); у сцені вона одна",
+                       "the table {t} is declared twice (line {line}); a scene has one"),
+    "bad toml overwrite": ("ключ задано двічі (рядок {line})", "a key is given twice (line {line})"),
+    "bad toml invalid": ("значення не читається (рядок {line}); текст пишіть у лапках", "invalid value (line {line}); "
+                         "write text in quotes"),
+    "bad toml equals": ("після ключа бракує «=» (рядок {line})", "'=' missing after a key (line {line})"),
     "ex unknown name": ("невідоме ім'я {name} у {text}", "unknown name {name} in {text}"),
     "ex arithmetic": ("у {text} дозволена лише арифметика", "only arithmetic is allowed in {text}"),
     "ex cannot": ("не вдається обчислити {text}: {why}", "cannot evaluate {text}: {why}"),
@@ -1021,4 +1030,119 @@ WORDS.update({
     "bad toml depth": ("{toml} вкладено надто глибоко (щонайбільше {most} рівнів)",
                        "{toml} nested too deeply (at most {most} levels)"),
     "bad toml value": ("значення {toml} не читається: {why}", "{toml} value cannot be read: {why}"),
+})
+
+
+# -- the last English refusals: rare solver ones, files, the command line's options (util.errors.said_error) --
+WORDS.update({
+    # exact/: the solver
+    "kn no point": ("немає точки {point}", "no point named {point}"),
+    "kn known slider": ("{dyad}: ланка, знайдена раніше, що ковзає по напрямній групи, не підтримується",
+                        "{dyad}: a known body sliding on the dyad's guide is not supported"),
+    "kn yoke slot": ("{dyad}: паз, у якому ковзає повзун, має бути на кулісі",
+                     "{dyad}: the yoke must carry the slot its block slides in"),
+    "ec unknown law": ("невідомий закон руху {name}", "unknown law {name}"),
+    "ec no bracket": ("найменший радіус основної шайби не вдається обмежити (допустимі кути тиску не досягнуто ні "
+                      "при {lo} {mm}, ні при {hi} {mm})", "the smallest base radius could not be bracketed (the "
+                      "allowed pressure angles are reached neither at {lo} {mm} nor at {hi} {mm})"),
+    "dy divisions": ("має бути цілим числом від {lo} до {hi} (побудова ділить оберт щонайбільше на {hi} частин, по "
+                     "1°; креслення тонше не розрізняє), задано {got}", "must be a whole number from {lo} to {hi} "
+                     "(the construction divides the turn into at most {hi} parts, 1° each; a drawing resolves no "
+                     "finer), got {got}"),
+    "dy delta": ("коефіцієнт нерівномірності має бути в межах (0; 0,5), задано {got}",
+                 "the coefficient of unevenness must lie in (0, 0.5), got {got}"),
+    "dy motor slows": ("двигун {name} ({power} {kW}, i = {ratio}) не може вести цикл: навіть у кінці робочої гілки "
+                       "характеристики кривошип за оберт сповільнюється; оберіть потужніший двигун",
+                       "the motor {name} ({power} {kW}, i = {ratio}) cannot drive the cycle: even at the end of "
+                       "its working branch the crank slows down over a turn; choose a larger motor"),
+    "dy motor moment": ("двигун {name} не може вести цикл: момент на його валу сягає {moment} {N·m}, більше за "
+                        "M_max = {max} {N·m} (поза робочою гілкою); оберіть потужніший двигун",
+                        "the motor {name} cannot drive the cycle: its moment reaches {moment} {N·m} on its shaft, "
+                        "above M_max = {max} {N·m} (off the working branch); choose a larger motor"),
+    "gr inv": ("{inv} має бути додатним", "{inv} must be positive"),
+    # util/files.py: reading and writing files ({what}: "fl scene", "fl table" …)
+    "fl file": ("файл", "file"),
+    "fl missing": ("не знайдено {of}", "no such {of}"),
+    "fl folder": ("це тека, а не {what}", "the {what} is a folder, not a file"),
+    "fl not regular": ("це не звичайний файл ({what})", "the {what} is not a regular file"),
+    "fl cannot read": ("{what} не читається: {why}", "cannot read the {what}: {why}"),
+    "fl too large": ("файл завеликий: понад {mb} МБ ({what})", "the {what} is larger than {mb} MB"),
+    "fl not utf8": ("{what} не є текстом {utf} (байт {byte}); збережіть файл у кодуванні {utf}",
+                    "cannot read the {what}: not {utf} text (byte {byte}); save the file as {utf}"),
+    "fl write folder": ("це тека; назвіть файл, який записати", "is a folder; name a file to write"),
+    "fl write not folder": ("не вдається записати: {parent} — не тека", "cannot write: {parent} is not a folder"),
+    "fl cannot write": ("не вдається записати: {why}", "cannot write: {why}"),
+    "fl no permission": ("немає дозволу", "permission denied"),
+    "fl no folder": ("такої теки немає", "no such folder"),
+    # cli/: the command line's options
+    "op usage": ("{text} (див. --help)", "{text} (see --help)"),
+    "op many values": ("щонайбільше {most} значень, задано {got}", "at most {most} values, got {got}"),
+    "op range": ("має бути від {lo}{open} до {hi}{unit}, задано {got}", "must be from {lo}{open} to {hi}{unit}, got {got}"),
+    "op exclusive": (" (не включно)", " (exclusive)"),
+    "op divisions": ("ціле число або перелік обертів кривошипа через кому, задано {got}",
+                     "a whole number or comma-separated crank turns, got {got}"),
+    "op precision": ("має бути довжиною ≥ 0 мм, задано {got}", "must be a length ≥ 0 in mm, got {got}"),
+    "op angle": ("має бути скінченним кутом у градусах, задано {got}", "must be a finite angle in degrees, got {got}"),
+    "op whole": ("має бути цілим числом від {lo} до {hi}, задано {got}", "must be a whole number from {lo} to {hi}, got {got}"),
+    "op at least": ("має бути щонайменше {lo}, задано {got}", "must be at least {lo}, got {got}"),
+    "op svg folder": ("потрібна тека, а це файл", "needs a folder, this is a file"),
+    "op output folder": ("вихід має бути текою", "the output must be a folder"),
+    "op out format": ("невідомий формат; використайте {formats}", "unknown format; use {formats}"),
+    "op out suffix": ("невідомий формат {got}; використайте {formats}", "unknown format {got}; use {formats}"),
+    "op sheet format": ("невідомий формат аркуша {got} ({formats})", "unknown sheet format {got} ({formats})"),
+    "op no gears": ("у сцені немає таблиці {gears} чи {planetary} ({doc})", "the scene has no {gears} or {planetary} table ({doc})"),
+    "op gears only": ("сцена зубчастого механізму має лише аркуш {sheet}", "a gear scene has the {sheet} sheet only"),
+    "op no cam": ("у сцені немає таблиці {cam} ({doc})", "the scene has no {cam} table ({doc})"),
+    "op cam only": ("сцена кулачкового механізму має лише аркуш {sheet}", "a cam scene has the {sheet} sheet only"),
+    "op not available": ("недоступний", "not available"),
+    "op lang": ("має бути uk або en, задано {got}", "must be uk or en, got {got}"),
+    "op tol": ("{item}: пишіть ВЕЛИЧИНА=ВІДСОТОК, напр. --tol 'a_*=8'", "{item}: write QUANTITY=PERCENT, e.g. --tol 'a_*=8'"),
+    "op tolerance": ("має бути відсотком у межах (0; 100], задано {got}", "must be a percentage in (0, 100], got {got}"),
+    "op interrupted": ("перервано", "interrupted"),
+    # argparse's own usage errors, translated (cli.common.Parser.error)
+    "ap required": ("бракує аргументів: {names}", "the following arguments are required: {names}"),
+    "ap unrecognized": ("невідомі аргументи: {names}", "unrecognized arguments: {names}"),
+    "ap choice": ("аргумент {arg}: недопустиме значення {got} (оберіть з {choices})",
+                  "argument {arg}: invalid choice: {got} (choose from {choices})"),
+    "ap invalid": ("аргумент {arg}: {got} — не {kind}", "argument {arg}: invalid {kind} value: {got}"),
+    "ap one": ("аргумент {arg}: потрібне одне значення", "argument {arg}: expected one argument"),
+    "ap some": ("аргумент {arg}: потрібне щонайменше одне значення", "argument {arg}: expected at least one argument"),
+    "ap not allowed": ("аргумент {arg}: не можна разом з аргументом {other}", "argument {arg}: not allowed with argument {other}"),
+    "ap ambiguous": ("неоднозначний параметр {got}, підходять {names}", "ambiguous option: {got} could match {names}"),
+    "ap other": ("помилка в параметрах: {text}", "{text}"),
+    "ap kind int": ("ціле число", "int"),
+    "ap kind float": ("число", "float"),
+})
+
+
+# -- cautions: a scene's likely slips, warned on stderr (model.cautions) -----------------------------------
+WORDS.update({
+    "caution": ("попередження", "warning"),
+    "caution com outside": ("ланка {link}: центр мас {point} лежить поза ланкою, за {dist} {m} від шарніра {joint} "
+                            "(найбільша відстань між її шарнірами {span} {m}); частка довжини — від 0 до 1",
+                            "link {link}: the centre of mass {point} lies outside the link, {dist} {m} from the joint "
+                            "{joint} (its joints span {span} {m}); a fraction of the length is from 0 to 1"),
+    "caution units": ("довжина ланки {long} {big} {m}, а ланки {short} — {small} {m}: чи не задано якісь довжини в "
+                      "міліметрах? Сцена задає довжини в метрах",
+                      "the link {long} is {big} {m} long and the link {short} {small} {m}: are some lengths in "
+                      "millimetres? A scene gives lengths in metres"),
+    "caution far point": ("ланка {link}: точка {point} лежить за {dist} {m} від найближчого шарніра {joint}, далеко "
+                          "поза ланкою (її шарніри — у межах {span} {m}); точку задано в метрах чи часткою довжини?",
+                          "link {link}: the point {point} lies {dist} {m} from the nearest joint {joint}, far beyond "
+                          "the link (its joints span {span} {m}); is it in metres or a fraction of the length?"),
+})
+
+
+# -- sheets/: drawings that a format cannot hold --------------------------------------------------------
+WORDS.update({
+    "sh forces fit": ("силові креслення не вміщаються на аркуші {form}; оберіть більший формат ({option})",
+                      "the force drawings do not fit a {form} sheet; choose a larger {option}"),
+    "sh drawing larger": ("креслення більше за цілий аркуш {form}; оберіть більший формат ({option})",
+                          "a drawing is larger than a whole {form} sheet; choose a larger {option}"),
+    "sh kin fit": ("креслення не вміщаються на аркуші {form} навіть у найдрібніших масштабах; оберіть більший "
+                   "формат ({option})", "the drawings do not fit a {form} sheet even at the smallest scales; choose "
+                   "a larger {option}"),
+    "sh cam larger": ("креслення кулачка більше за цілий аркуш {form} навіть у половинному розмірі; оберіть більший "
+                      "формат ({option})", "a cam drawing is larger than a whole {form} sheet even at half its size; "
+                      "choose a larger {option}"),
 })

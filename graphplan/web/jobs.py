@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, keyed_error
 
 SCENE = "scene.toml"
 KINDS = ("kinematics", "forces", "dynamics", "cam", "gears")
@@ -150,16 +150,16 @@ def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str
     for kind in kinds:
         build = BUILDERS.get(kind)
         if build is None:
-            raise GraphplanError(f"--sheet {kind}: not available")
+            raise keyed_error(GraphplanError, None, f"--sheet {kind}", "op not available")
         if scene_kind == "gears" and kind != "gears":             # cli/sheet.py's lines
-            raise GraphplanError(f"--sheet {kind}: a gear scene has the gear sheet only", SCENE)
+            raise keyed_error(GraphplanError, SCENE, f"--sheet {kind}", "op gears only", None, sheet="gears")
         if scene_kind != "gears" and kind == "gears":
-            raise GraphplanError("--sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)",
-                                 SCENE)
+            raise keyed_error(GraphplanError, SCENE, "--sheet gears", "op no gears", None, gears="[gears]", planetary="[planetary]",
+                              doc="docs/gears.md")
         if scene_kind == "cam" and kind != "cam":
-            raise GraphplanError(f"--sheet {kind}: a cam scene has the cam sheet only", SCENE)
+            raise keyed_error(GraphplanError, SCENE, f"--sheet {kind}", "op cam only", None, sheet="cam")
         if scene_kind != "cam" and kind == "cam":
-            raise GraphplanError("--sheet cam: the scene has no [cam] table (docs/cams.md)", SCENE)
+            raise keyed_error(GraphplanError, SCENE, "--sheet cam", "op no cam", None, cam="[cam]", doc="docs/cams.md")
         made = build(obj, f, SheetOptions(lang=lang, sheet=kind))
         out = folder / f"{kind}-{f.name}.{kind_of_file}"
         made.write(out, False, dpi)
