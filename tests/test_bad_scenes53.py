@@ -74,3 +74,14 @@ def test_lengths_in_millimetres_are_warned(tmp_path, capsys):
         code = main(["analyze", str(path), "--json", "--lang", lang])
         err = capsys.readouterr().err.strip().splitlines()
         assert code == 0 and len(err) == 1 and all(w in err[0] for w in words), err
+
+
+@pytest.mark.parametrize("command, scene, uk, en", [
+    ("gears", CAM, "кулачкового", "cam scene"),         # not "a lever mechanism" (the blind review, stop 53)
+    ("gears", LEVER, "важільний", "lever"),
+    ("cam", LEVER, "важільний", "lever"),
+])
+def test_the_wrong_command_names_the_scene_s_kind(command, scene, uk, en, tmp_path, capsys):
+    """A scene given to the command of another kind says what the scene is, in both languages."""
+    assert uk in refusal(capsys, tmp_path, scene, command, "uk")
+    assert en in refusal(capsys, tmp_path, scene, command, "en")

@@ -210,11 +210,11 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Gears:
 
 
 def _build(data: dict[str, Any], where: str) -> Gears:
+    if "cam" in data:         # a cam's scene first: it is not a lever mechanism either
+        raise keyed_error(SceneError, where, "cam", "gr cam scene", table="[gears]", cmd="graphplan cam", doc="docs/cams.md")
     if not is_gears(data):
         raise keyed_error(SceneError, where, "", "gr lever scene", t1="[gears]", t2="[planetary]", cmd="graphplan gears",
                           doc="docs/gears.md")
-    if "cam" in data:
-        raise keyed_error(SceneError, where, "cam", "gr cam scene", table="[gears]", cmd="graphplan cam", doc="docs/cams.md")
     unknown = sorted(set(data) - _TOP)
     if unknown:
         raise keyed_error(SceneError, where, unknown[0], "gr unknown top", allowed=", ".join(sorted(_TOP)))
