@@ -186,7 +186,7 @@ def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
     assert mesh.mu_l == pytest.approx(0.0004) and w(meshing_leaf(mesh, "uk")) == pytest.approx(434.3, abs=0.5)
     own = sliding_leaf(sliding_diagram(sol.pair, mesh, 25.0, mesh.mu_l), "uk")
     assert w(meshing_leaf(mesh, "uk")) + GAP + w(own) > zone      # at the meshing's scale: no room beside it
-    assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(region, mesh, "uk")
+    assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(f, mesh, "uk")
     g = sol.pair.aw * math.sin(sol.pair.alpha_w)                  # N1N2 of the part, m
     assert g / 0.0005 == pytest.approx(149.6, abs=0.1) and g / 0.0005 >= 120.0
 
