@@ -1084,7 +1084,28 @@ def tight(rec: Record, k: float = TABLES, rows: float = TIGHT) -> Record:
 
 def _sized(rec: Record, k) -> Record:
     """A table at one of ``SIZES``: ``k`` times its ruled size, or (k, rows) ``tight``."""
+    rec = _title_rewrapped(rec, k[0] if isinstance(k, tuple) else k)
     return tight(rec, *k) if isinstance(k, tuple) else enlarged(rec, k)
+
+
+def _title_rewrapped(rec: Record, k: float) -> Record:
+    """The ruled table's title (3.5-mm lines over its top rule, ``table``) wrapped anew for its drawing
+    ``k`` times larger: its letters then take the nearest GOST 2.304 height (3.5·1.4 = 4.9 → 5 mm), wider
+    than ``k`` times, so the lines are wrapped to the table's width × 3.5k/that height (stop 52/53: the en
+    Table 1's title, wrapped for the ruled table, overhung the enlarged one by 3 mm)."""
+    from graphplan.drawing.tables import LETTERING, TITLE_MM, title_lines
+    from graphplan.graphic.record import line_pitch
+    titles = [p for p in rec.items if p.kind == "text" and p.size == 3.5 and p.points[0][1] > 0.0]
+    if k == 1.0 or not titles or not rec.title:
+        return rec
+    snap = min(LETTERING, key=lambda h: abs(h - 3.5 * k))
+    width = max(x for p in rec.items if p.kind == "segment" for x, _ in p.points)
+    lines = title_lines(rec.title, max(width, TITLE_MM) * 3.5 * k / snap)
+    kept = [p for p in rec.items if not any(p is t for t in titles)]
+    out = Record(rec.title, kept, dict(rec.scales))
+    for i, line in enumerate(lines):
+        out.label((0.0, 2.2 + line_pitch(3.5) * (len(lines) - 1 - i)), line, size=3.5, layer="tables")
+    return out
 
 
 def _column(tables: list[Leaf], lines: list[str], k) -> tuple[list[Leaf], float]:
