@@ -4,6 +4,8 @@ type-A train for u = 3,6 with K = 6 (GEARS_OWN53) — the closed forms written o
 a_w dimension's number written along its dimension line (GOST 2.307), measured on the drawn record."""
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
 import tomllib
 
@@ -13,13 +15,16 @@ from review_scenes import GEARS53, GEARS_OWN53
 from test_gears_review50 import pair_closed
 
 
+@functools.lru_cache(maxsize=None)
 def _solved(text: str, name: str, train: bool = True):
+    """The scene solved once for the module (the shifts' rule "auto" weighs ~1000 pairs); ``train``
+    False: the same solution without its train (what the meshing's zone is sized by alone)."""
     from graphplan.exact.gears import solve
     from graphplan.model.gears import build
-    scene = tomllib.loads(text)
     if not train:
-        del scene["planetary"]
-    g = build(scene, name)
+        g, sol = _solved(text, name)
+        return g, dataclasses.replace(sol, train=None)
+    g = build(tomllib.loads(text), name)
     return g, solve(g)
 
 
@@ -32,7 +37,7 @@ def _solved(text: str, name: str, train: bool = True):
     (GEARS_OWN53, "GEARS_OWN53", (32, 41), 0.005, ((0.95, 1.1), 26.3322, 191.349, 1.2127)),
 ], ids=["GEARS53", "GEARS_OWN53"])
 def test_the_pairs_are_the_closed_forms(text, name, z, m, published):
-    _, sol = _solved(text, name, train=False)
+    _, sol = _solved(text, name)
     p = sol.pair
     x, a_w, aw_mm, eps = published
     assert tuple(p.x) == pytest.approx(x, abs=1e-12)
@@ -70,7 +75,17 @@ def test_the_type_a_trains_meet_the_conditions_and_willis(text, name, z, rpm):
     assert t.omega["2"] == pytest.approx(w1 / u - (w1 - w1 / u) * z1 / z2, rel=1e-12)
 
 
-def test_the_aw_dimension_reads_along_its_unbroken_line():
+@pytest.fixture(scope="module")
+def meshed53():
+    """GEARS53's pair (no train) solved and drawn as the A1 sheet draws it: (sol, mesh)."""
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on
+    _, sol = _solved(GEARS53, "GEARS53", train=False)
+    mesh, _, _ = construct_on(sol, form("A1"), 0.5, "uk")
+    return sol, mesh
+
+
+def test_the_aw_dimension_reads_along_its_unbroken_line(meshed53):
     """GOST 2.307: a linear dimension's number stands over its dimension line (left of a vertical one), parallel
     to it, read from the right, near its middle; the line is not broken for it. Measured on the drawn meshing
     of GEARS53 (its centres off the drawing: the a_w dimension drawn): the number turned 90°, its ink left of
@@ -78,10 +93,7 @@ def test_the_aw_dimension_reads_along_its_unbroken_line():
     the SVG the lettering is turned about its anchor."""
     from graphplan.drawing.svg import render
     from graphplan.graphic.record import Record
-    from graphplan.sheets.form import form
-    from graphplan.sheets.gears import construct_on
-    _, sol = _solved(GEARS53, "GEARS53", train=False)
-    mesh, _, _ = construct_on(sol, form("A1"), 0.5, "uk")
+    sol, mesh = meshed53
     items = mesh.record.items
     (num,) = [q for q in items if q.kind == "text" and q.text.startswith("a_w = ")]
     arrows = [q for q in items if q.kind == "vector" and q.step == "aw"]
@@ -94,3 +106,22 @@ def test_the_aw_dimension_reads_along_its_unbroken_line():
     assert (y0 + y1) / 2 == pytest.approx(mid, abs=1.5) and y1 - y0 > 4 * (x1 - x0)     # along it, at its middle
     svg = render(Record("aw", [num]), 841.0, 594.0)
     assert 'transform="rotate(-90 ' in svg
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_an_enlarged_tables_title_stays_over_the_table(meshed53, lang):
+    """The gear tables are ruled with 2,5-mm cells and a 3,5-mm title, then drawn 1,4 times larger for the
+    A1 column: the title's letters take GOST's 5 mm (not 4,9), so a title wrapped for the ruled table ran
+    past the enlarged table's right rule (the en Table 1, by 3 mm). At every size the column tries, every
+    title line's ink ends within the table's outer rule and the lines read the whole title in order."""
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.gears import SIZES, _sized, geometry_table
+    sol, mesh = meshed53
+    rec = geometry_table(gears_json(sol, mesh, None, ""), lang)
+    for k in SIZES:
+        big = _sized(rec, k)
+        right = max(x for q in big.items if q.kind == "segment" for x, _ in q.points)
+        top = max(y for q in big.items if q.kind == "segment" for _, y in q.points)
+        title = sorted((q for q in big.items if q.kind == "text" and q.points[0][1] > top), key=lambda q: -q.points[0][1])
+        assert title and " ".join(q.text for q in title) == rec.title
+        assert all(q.ink()[2] <= right + 1e-6 for q in title), (k, [q.ink()[2] for q in title], right)
