@@ -5339,3 +5339,57 @@ rpm = 120
 direction = "ccw"
 divisions = 10
 '''
+
+
+GEARS53 = '''# Stop 53 (the lead's check): an external pair 16/21 — a small ratio, a large module (10 mm) — with the
+# shifts chosen by the rule ("auto"), and a one-row planetary train of type A for u = 4.2 with K = 5
+# satellites.
+title = "Зубчаста передача 16/21 і однорядний планетарний редуктор (перевірка 53)"
+title_en = "A gear pair 16/21 and a one-row planetary reducer (check 53)"
+designation = "ТММ.ЗП.53.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[gears]
+z = [16, 21]
+module = 0.010
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 4.2
+planets = 5
+module = 0.003
+rpm = 1450
+'''
+
+
+GEARS_OWN53 = '''# Stop 53's own check (gear53): a pair of many teeth, 32/41 with a module of 5 mm and the shifts chosen by the
+# rule ("auto"), and a one-row planetary train of type A for u = 3.6 with six satellites (K = 6: the
+# neighbourhood bounds u below 4), the sun at 960 rpm.
+title = "Зубчаста передача 32/41 і однорядний планетарний редуктор із шістьма сателітами (власна перевірка 53)"
+title_en = "A gear pair 32/41 and a one-row planetary reducer with six planets (own check 53)"
+designation = "ТММ.ЗП.53.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[gears]
+z = [32, 41]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 3.6
+planets = 6
+module = 0.002
+rpm = 960
+'''

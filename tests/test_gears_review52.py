@@ -164,8 +164,8 @@ def test_table_3_writes_the_type_b_assembly_condition_out(z, K, gcd):
 
 
 def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
-    """GEARS51's A1 (stop 51's leftover, «the strip beside the meshing, 2 × 88 mm»): the meshing at 2,5:1 is
-    434 mm wide with its caption, the λ diagrams at its scale 205 mm (N1N2 = aw·sin αw = 74,8 mm of the part,
+    """GEARS51's A1 (stop 51's leftover, «the strip beside the meshing, 2 × 88 mm»): the meshing at 2,5:1 was
+    434 mm wide with its caption (412 since stop 53: the a_w dimension's number along its line, GOST 2.307), the λ diagrams at its scale 205 mm (N1N2 = aw·sin αw = 74,8 mm of the part,
     187 mm drawn) — 6 mm too wide for the 615-mm drawings' zone, so the meshing stood centred between two
     88-mm blank strips. At the next GOST 2.302 scale, 2:1, N1N2 is 150 mm drawn and they stand beside it."""
     from review_scenes import GEARS51
@@ -183,10 +183,10 @@ def test_the_lambda_diagrams_go_beside_the_meshing_one_gost_step_smaller():
     region = field_of(f)
     zone = region[2] - region[0] - max(TITLE, 150.0) - GAP
     w = lambda r: r.bounds()[2] - r.bounds()[0]                 # noqa: E731
-    assert mesh.mu_l == pytest.approx(0.0004) and w(meshing_leaf(mesh, "uk")) == pytest.approx(434.3, abs=0.5)
+    assert mesh.mu_l == pytest.approx(0.0004) and w(meshing_leaf(mesh, "uk")) == pytest.approx(412.0, abs=0.5)
     own = sliding_leaf(sliding_diagram(sol.pair, mesh, 25.0, mesh.mu_l), "uk")
     assert w(meshing_leaf(mesh, "uk")) + GAP + w(own) > zone      # at the meshing's scale: no room beside it
-    assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(region, mesh, "uk")
+    assert mesh.lam.scales["mu_l"] == pytest.approx(0.0005) and beside(f, mesh, "uk")
     g = sol.pair.aw * math.sin(sol.pair.alpha_w)                  # N1N2 of the part, m
     assert g / 0.0005 == pytest.approx(149.6, abs=0.1) and g / 0.0005 >= 120.0
 

@@ -9,6 +9,7 @@ are Standard (required) and GOST, nothing else; the bytes do not depend on PYTHO
 from __future__ import annotations
 
 import io
+import math
 
 from graphplan.graphic.record import (DASHED_ROLES, LAYERS, Primitive, Record, vector_arrow, lettering, run_offsets,
                                       text_width)
@@ -96,7 +97,7 @@ def _to_dxf(record: Record, width: float, height: float) -> bytes:
         elif k == "text":
             if is_plain(prim.text):
                 text = msp.add_text(lettering(prim.text), height=prim.size,
-                                    dxfattribs={"layer": prim.layer, "style": STYLE})
+                                    dxfattribs={"layer": prim.layer, "style": STYLE, "rotation": prim.turn})
                 text.set_placement(prim.points[0], align=align[prim.anchor])
             else:
                 _scripted(msp, prim)
@@ -151,7 +152,11 @@ def _scripted(msp, prim: Primitive) -> None:
     width = text_width(prim.text, prim.size)
     x0 = prim.points[0][0] - {"start": 0.0, "middle": width / 2, "end": width}[prim.anchor]
     y0 = prim.points[0][1]
+    ax, ay = prim.points[0]
+    c, s = math.cos(math.radians(prim.turn)), math.sin(math.radians(prim.turn))
     for run, dx, size, up in placed:
-        if run.text.strip():
+        if run.text.strip():          # each run's start turned about the anchor with the text
+            px, py = x0 + dx - ax, y0 + up - ay
             msp.add_text(lettering(run.text), height=size,
-                         dxfattribs={"layer": prim.layer, "style": STYLE, "insert": (x0 + dx, y0 + up)})
+                         dxfattribs={"layer": prim.layer, "style": STYLE, "rotation": prim.turn,
+                                     "insert": (ax + c * px - s * py, ay + s * px + c * py)})

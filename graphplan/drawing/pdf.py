@@ -167,11 +167,19 @@ class _Pen:
             return
         pieces, x_start = placed(prim)
         size = em(prim.size)
+        if prim.turn:                     # turned about the anchor (the page's y runs down)
+            ctx.save()
+            ax, ay = self.xy(prim.points[0])
+            ctx.translate(ax, ay)
+            ctx.rotate(-math.radians(prim.turn))
+            ctx.translate(-ax, -ay)
         for piece, small, x0, up, _advance in pieces:
             missing = piece in MISSING
             self.use_font(_SYMBOLS if missing else _FAMILY, size * SMALL if small else size)
             ctx.move_to(*self.xy((x_start + x0, prim.points[0][1] + up)))
             ctx.show_text(piece if missing else lettering(piece))
+        if prim.turn:
+            ctx.restore()
 
     def outline(self, prim: Primitive) -> None:
         """The lettering as filled outlines of the font's glyphs (svg.text_outline's polygons,

@@ -122,7 +122,7 @@ def _elements(prim: Primitive, h: float, chars: list[str]) -> list[str]:
     element's attributes in sorted order, as svgwrite writes them."""
     k = prim.kind
     if k == "text":
-        return [_text(prim, h, chars)]
+        return [_turned_text(_text(prim, h, chars), prim, h)]
     stroke = _stroke(prim.line_width, prim.role)
     if k == "segment":
         (x1, y1), (x2, y2) = (_xy(p, h) for p in prim.points)
@@ -205,6 +205,15 @@ def _kept_spaces(drawn: str) -> str:
             c = "\u00a0"
         out.append(c)
     return "".join(out)
+
+
+def _turned_text(element: str, prim: Primitive, h: float) -> str:
+    """A text element turned ``prim.turn`` degrees counter-clockwise about its anchor (SVG's y runs
+    down: rotate by minus the angle)."""
+    if not prim.turn:
+        return element
+    x, y = _xy(prim.points[0], h)
+    return element.replace("<text ", f'<text transform="rotate({_f(-prim.turn)} {x} {y})" ', 1)
 
 
 def _text(prim: Primitive, h: float, chars: list[str]) -> str:
@@ -359,6 +368,9 @@ def text_outline(prim: Primitive, height: float) -> str:
     for tp, dx, up in pieces:
         for poly in tp.to_polygons(closed_only=True):
             pts = [(x0 + x + dx + shift, y0 + y + up) for x, y in poly]
+            if prim.turn:        # turned about the anchor, counter-clockwise
+                c, sn = math.cos(math.radians(prim.turn)), math.sin(math.radians(prim.turn))
+                pts = [(x0 + c * (x - x0) - sn * (y - y0), y0 + sn * (x - x0) + c * (y - y0)) for x, y in pts]
             if len(pts) < 3:
                 continue
             parts.append("M" + " L".join(f"{_f(x)},{_f(height - y)}" for x, y in pts) + " Z")

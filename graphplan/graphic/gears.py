@@ -482,9 +482,13 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
         ymid = 0.5 * (foot + whi + 6.0)
         rec.segment((xd - 2.0, foot), (-2.0 if show1 else -8.0, foot), role="construction", layer=LAYER, step="aw")
         rec.segment((xd - 2.0, whi + 6.0), (-8.0, whi + 6.0), role="construction", layer=LAYER, step="aw")
-        rec.vector((xd, ymid - 12.0), (xd, foot), role="construction", layer=LAYER, step="aw")
-        rec.vector((xd, ymid + 12.0), (xd, whi + 6.0), role="construction", layer=LAYER, step="aw")
-        aw_text = f"a_w = {fixed(sol.aw * 1000.0, lang, aw_decimals(precision, mu))}"   # mm of the part, no unit (GOST 2.307)
+        rec.vector((xd, ymid), (xd, foot), role="construction", layer=LAYER, step="aw")     # one unbroken line
+        rec.vector((xd, ymid), (xd, whi + 6.0), role="construction", layer=LAYER, step="aw")
+        # the number along the line, over it (left of a vertical line), read from the right (GOST 2.307):
+        # mm of the part, no unit
+        aw_text = f"a_w = {fixed(sol.aw * 1000.0, lang, aw_decimals(precision, mu))}"
+        below = min(0.0, Primitive("text", ((0.0, 0.0),), text=aw_text, size=TEXT).ink()[1])   # w's depth
+        rec.label((xd - 1.0 + below, ymid), aw_text, size=TEXT, anchor="middle", layer=LAYER, step="aw", turn=90.0)
         for y, name, toward in (() if show1 else ((wlo - 6.0, "O_1", -1j),)) + ((whi + 6.0, "O_2", 1j),):
             rec.vector((3.0, y + (4.0 if toward == -1j else -4.0)), (3.0, y + (-6.0 if toward == -1j else 6.0)),
                        role="construction", layer=LAYER, step=f"to {name}")
@@ -575,8 +579,6 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
     for q in (N1, N2, B1, B2, P) + ((O1,) if show1 else () if cut else (O1, O2)):
         rec.point(_f(q), role="pole", layer=LAYER)
     pl = Placer(rec)
-    if cut:
-        pl.label(complex(xd, ymid), aw_text, toward=-1 + 0j, radii=(1.0, 2.0, 3.5, 5.5))
     if not cut or show1:
         pl.label(O1, "O_1", toward=1 + 0j if cut else -1 + 0j)     # (a_w's dimension left of O1 when broken)
     if not cut:

@@ -44,6 +44,8 @@ class Primitive:
     angles: tuple[float, float] = (0.0, 360.0)
     anchor: str = "start"        # text: start, middle, end
     width: float | None = None   # line width override, mm
+    turn: float = 0.0            # text: degrees counter-clockwise about its anchor point (a vertical
+    #                              dimension's number reads along its line, GOST 2.307: 90)
 
     @property
     def line_width(self) -> float:
@@ -55,7 +57,7 @@ class Primitive:
         # every field by position: dataclasses.replace() took five times as long (a key sheet moves
         # 400 table primitives)
         return Primitive(self.kind, pts, self.role, self.layer, self.step, self.text, self.size,
-                         self.radius * k, self.angles, self.anchor, self.width)
+                         self.radius * k, self.angles, self.anchor, self.width, self.turn)
 
     def bounds(self) -> tuple[float, float, float, float]:
         """The primitive's box (x0, y0, x1, y1), mm: its lines' (an arrowhead's corners included), a
@@ -95,8 +97,8 @@ class Primitive:
             x, y = self.points[0]
             w = text_width(self.text, self.size)
             x0 = x - {"start": 0.0, "middle": w / 2, "end": w}[self.anchor]
-            _, lo, _, hi = self.ink()
-            return x0, min(y, lo), x0 + w, max(y + self.size, hi)
+            _, lo, _, hi = _ink(self.text, self.size, self.anchor, self.points[0])
+            return turned((x0, min(y, lo), x0 + w, max(y + self.size, hi)), self.points[0], self.turn)
         return min(xs), min(ys), max(xs), max(ys)
 
     def ink(self) -> tuple[float, float, float, float]:
@@ -107,8 +109,23 @@ class Primitive:
             return self.bounds()
         got = self.__dict__.get("_ink")
         if got is None:
-            got = self.__dict__["_ink"] = _ink(self.text, self.size, self.anchor, self.points[0])
+            got = self.__dict__["_ink"] = turned(_ink(self.text, self.size, self.anchor, self.points[0]),
+                                                 self.points[0], self.turn)
         return got
+
+
+def turned(box: tuple[float, float, float, float], at: Point, turn: float) -> tuple[float, float, float, float]:
+    """The box (x0, y0, x1, y1) turned ``turn`` degrees counter-clockwise about ``at``: the box of its
+    four corners turned (the turned box itself for the quarter turns lettering uses)."""
+    if not turn:
+        return box
+    c, s = math.cos(math.radians(turn)), math.sin(math.radians(turn))
+    xs, ys = [], []
+    for x, y in ((box[0], box[1]), (box[2], box[1]), (box[0], box[3]), (box[2], box[3])):
+        dx, dy = x - at[0], y - at[1]
+        xs.append(at[0] + c * dx - s * dy)
+        ys.append(at[1] + s * dx + c * dy)
+    return min(xs), min(ys), max(xs), max(ys)
 
 
 # characters osifont lacks, replaced on the drawing (records keep the real text)

@@ -579,7 +579,7 @@ def carried(got, at_h, room_w: float, room_h: float):
     return got
 
 
-def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
+def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
     λ diagrams, the meshing's height and the tables' column off the field): for each scale of the
     scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) whose scheme leaves the
@@ -594,8 +594,9 @@ def _grown(tr, precision: float, lang: str, region, mesh, plan: Record, vel):
     the plan's segments are ω/μω whatever vA, the height never held them, and on no scene did it change
     the pictures.)"""
     mesh_w, mesh_h = _size(meshing_leaf(mesh, lang))               # the meshing with its caption
-    lam_w = 0.0 if beside(region, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
-    room_w = region[2] - region[0] - max(TITLE, 150.0) - GAP - lam_w - 2 * GAP
+    lam_w = 0.0 if beside(f, mesh, lang) else _size(sliding_leaf(mesh.lam, lang))[0] + GAP   # with its caption
+    region = field_of(f)
+    room_w = drawings_room(f) - lam_w - 2 * GAP
     room_h = region[3] - region[1] - mesh_h - 3 * GAP
     r = tr.radii
     r3 = r["3"]
@@ -648,9 +649,9 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             if teeth != TEETH:
                 mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
     if mesh is not None and sol.pair and f.name == "A1":
-        _beside_smaller(sol, mesh, region, lang)
+        _beside_smaller(sol, mesh, f, lang)
     if vel is not None and mesh is not None and f.name == "A1":
-        vel, plan = _grown(sol.train, precision, lang, region, mesh, plan, vel)
+        vel, plan = _grown(sol.train, precision, lang, f, mesh, plan, vel)
     if mesh is not None and sol.pair:
         _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
@@ -659,7 +660,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
 LAMBDA_BESIDE_MIN = 120.0   # mm: N1N2 drawn at least this long where the λ diagrams go beside the meshing smaller
 
 
-def _beside_smaller(sol, mesh, region, lang: str) -> None:
+def _beside_smaller(sol, mesh, f: Form, lang: str) -> None:
     """The λ diagrams (``mesh.lam``) at the next GOST 2.302 scale below their own where that one step
     takes them beside the meshing, N1N2 still ``LAMBDA_BESIDE_MIN`` long — the row under the meshing then
     the planetary pictures' alone, across it. GEARS51 (stop 51/52): N1N2 at the meshing's 2,5:1 made the
@@ -667,7 +668,7 @@ def _beside_smaller(sol, mesh, region, lang: str) -> None:
     between two 88-mm blank strips, the λ diagrams in the row beside the pictures; at 2:1 (N1N2 150 mm)
     they are 167 mm and fill the strips. ``mesh.lam`` as it was where no such step does."""
     from graphplan.graphic.gears import ENLARGE, REDUCE
-    if beside(region, mesh, lang):
+    if beside(f, mesh, lang):
         return
     now = mesh.lam.scales["mu_l"]
     smaller = [0.001 / k for k in ENLARGE + REDUCE if 0.001 / k > now * (1 + 1e-9)]
@@ -678,7 +679,7 @@ def _beside_smaller(sol, mesh, region, lang: str) -> None:
         return
     old = mesh.lam
     mesh.lam = sliding_diagram(sol.pair, mesh, 1.0 / old.scales["mu_lambda"], mu_x)
-    if not beside(region, mesh, lang):
+    if not beside(f, mesh, lang):
         mesh.lam = old
 
 
@@ -687,7 +688,7 @@ def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
     tall as it with its caption; on A1 in the row under it beside the planetary pictures, as tall as the
     row's room within the meshing's height; in a set, as tall as the planetary pictures."""
     region = field_of(f)
-    if beside(region, mesh, lang):
+    if beside(f, mesh, lang):
         row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
     elif f.name == "A1":
         top = meshing_leaf(mesh, lang).bounds()
@@ -742,7 +743,7 @@ def _more_teeth(pair, mesh, f: Form, precision: float, lang: str, o1: bool = Tru
     return None
 
 
-def beside(region, mesh, lang: str) -> bool:
+def beside(f: Form, mesh, lang: str) -> bool:
     """Whether the λ diagrams stand beside the meshing (the zone under it then the planetary
     pictures' alone): when the two, captioned as ``zones`` sets them, fit across the drawings' zone,
     the field less the tables' column. (Measured bare, the λ diagrams of z = 10/25 were 127 mm wide
@@ -751,8 +752,17 @@ def beside(region, mesh, lang: str) -> bool:
     two.)"""
     mesh_w = _size(meshing_leaf(mesh, lang))[0]
     lam_w = _size(sliding_leaf(mesh.lam, lang))[0]
-    zone_w = region[2] - region[0] - max(TITLE, 150.0) - GAP
-    return mesh_w + GAP + lam_w <= zone_w
+    return mesh_w + GAP + lam_w <= drawings_room(f)
+
+
+def drawings_room(f: Form, width: float = TITLE) -> float:
+    """The drawings' width on one sheet ``f``: the field less the tables' column (``width``, at least
+    the title block's reach with its clearance, ``keep_out``) and a gap — what ``zones`` lays the
+    meshing and the λ diagrams across. (``beside`` asked the field less TITLE, 1 mm more than ``zones``
+    gave: GEARS12's λ diagrams were judged beside its 434-mm meshing, ``zones`` put them under it with
+    the planetary pictures grown for the whole row, and the A1 sheet became two.)"""
+    x0, _, x1, _ = field_of(f)
+    return x1 - x0 - max(width, x1 - keep_out(f)[0]) - GAP
 
 
 LAMBDA_UNITS = (20.0, 25.0, 40.0, 50.0)    # mm a unit of λ (μλ = 0.05, 0.04, 0.025, 0.02 1/mm)
@@ -849,7 +859,7 @@ def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k
     take the row's width (N1N2 240 mm, λ 40 mm a unit). ``k``: the tables' size the pages were
     composed with."""
     region = field_of(f)
-    if f.name != "A1" or beside(region, mesh, lang):
+    if f.name != "A1" or beside(f, mesh, lang):
         return pages
     from graphplan.graphic.gears import ENLARGE, REDUCE
     now = mesh.lam.scales["mu_l"]
@@ -1067,13 +1077,34 @@ def tight(rec: Record, k: float = TABLES, rows: float = TIGHT) -> Record:
         r = row_of(p)
         pts = ((p.points[0][0], lines[r]),) if r is not None else tuple((x, y * f) for x, y in p.points)
         return Primitive(p.kind, pts, p.role, p.layer, p.step, p.text, p.size, p.radius, p.angles, p.anchor,
-                         p.width)
+                         p.width, p.turn)
     return Record(big.title, [placed(p) for p in big.items], dict(big.scales))
 
 
 def _sized(rec: Record, k) -> Record:
     """A table at one of ``SIZES``: ``k`` times its ruled size, or (k, rows) ``tight``."""
+    rec = _title_rewrapped(rec, k[0] if isinstance(k, tuple) else k)
     return tight(rec, *k) if isinstance(k, tuple) else enlarged(rec, k)
+
+
+def _title_rewrapped(rec: Record, k: float) -> Record:
+    """The ruled table's title (3.5-mm lines over its top rule, ``table``) wrapped anew for its drawing
+    ``k`` times larger: its letters then take the nearest GOST 2.304 height (3.5·1.4 = 4.9 → 5 mm), wider
+    than ``k`` times, so the lines are wrapped to the table's width × 3.5k/that height (stop 52/53: the en
+    Table 1's title, wrapped for the ruled table, overhung the enlarged one by 3 mm)."""
+    from graphplan.drawing.tables import LETTERING, TITLE_MM, title_lines
+    from graphplan.graphic.record import line_pitch
+    titles = [p for p in rec.items if p.kind == "text" and p.size == 3.5 and p.points[0][1] > 0.0]
+    if k == 1.0 or not titles or not rec.title:
+        return rec
+    snap = min(LETTERING, key=lambda h: abs(h - 3.5 * k))
+    width = max(x for p in rec.items if p.kind == "segment" for x, _ in p.points)
+    lines = title_lines(rec.title, max(width, TITLE_MM) * 3.5 * k / snap)
+    kept = [p for p in rec.items if not any(p is t for t in titles)]
+    out = Record(rec.title, kept, dict(rec.scales))
+    for i, line in enumerate(lines):
+        out.label((0.0, 2.2 + line_pitch(3.5) * (len(lines) - 1 - i)), line, size=3.5, layer="tables")
+    return out
 
 
 def _column(tables: list[Leaf], lines: list[str], k) -> tuple[list[Leaf], float]:
@@ -1100,7 +1131,7 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
     need = sum(t.h for t in side) + GAP * (len(side) - 1)
     if need > y1 - keep[3] - GAP:
         return None
-    room = x1 - x0 - right - GAP
+    room = drawings_room(f, width)
     mesh_w = sum(d.w for d in drawings if d.name == "meshing")
     up = ("meshing", "sliding") if any(d.name == "sliding" and mesh_w + GAP + d.w <= room for d in drawings) \
         else ("meshing",)                 # the λ diagrams beside the meshing where the two fit across
