@@ -654,8 +654,8 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 
 
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
-CUTS = (-1,)          # the charts in the lever's row (``_tree``): the shape's own count. A wrapped row (0:
-                      # none) grew ROCKING_BLOCK51's lever but drew the shaper's past LEVER_MM (172 mm): held back
+CUTS = (-1, 0)        # the charts in the lever's row (``_tree``): the shape's own count, else none (the row
+                      # wrapped: ROCKING_BLOCK51's lever 80 × 70 mm beside the M_зр chart over a half-empty row)
 SPACE = forceset.SPACE     # mm between two groups, a group and its plan (review 7 #18)
 ROWS_GAP = GAP             # … between the one-sheet composition's other drawings
 
@@ -1702,6 +1702,7 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         return p
     leaves = _placed_leaves(dr, nat, mu)
     name = leaves["lever"][0].name
+    most = LEVER_MM
 
     def fits(m: float) -> bool:
         w, h = fam.size(m, 0)
@@ -1709,12 +1710,12 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
     for _ in range(3):
         fitting = [(mu["lever"], on_round(mu["lever"]))]
-        for m, rnd in fam.choices(mu["lever"], LEVER_ROOM_MM):      # the smallest first: stop at the first too large
+        for m, rnd in fam.choices(mu["lever"], most):      # the smallest first: stop at the first too large
             if not fits(m):
                 break
             fitting.append((m, rnd))
         largest = fitting[-1][0]
-        rounds = [r for r, _ in fam.choices(largest * 2.0, LEVER_ROOM_MM) if on_round(r) and r >= largest * (1 - 1e-9)]
+        rounds = [r for r, _ in fam.choices(largest * 2.0, most) if on_round(r) and r >= largest * (1 - 1e-9)]
         m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
         if m == p.mu["lever"]:
             break
