@@ -236,6 +236,25 @@ def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
     return abs(z - (a + t * d)) <= tol
 
 
+HEADS_MM = 3.0     # two arrows' heads nearer than this read as one point (the lever's forces)
+
+
+def _ends_on(z: complex, tail: complex, tip: complex, drawn: list[tuple[complex, complex, complex]],
+             images: list[complex]) -> bool:
+    """Whether the lever's arrow tail → tip of the image ``z`` ends on another's: its head within
+    ``HEADS_MM`` of another drawn arrow's head (``drawn``: image, tail, head), or — the arrow of
+    another image — 1 mm of its shaft or its head within 1 mm of this one's shaft away from its own
+    image, or its head within ``HEADS_MM`` of another image (it reads as applied there)."""
+    for w, a, b in drawn:
+        if abs(tip - b) < HEADS_MM:
+            return True
+        if abs(w - z) < 0.5:          # of the same image: its lines are the lanes' (set aside below)
+            continue
+        if _to_segment(tip, a, b) < 1.0 or (abs(b - z) > 1.0 and _to_segment(b, tail, tip) < 1.0):
+            return True
+    return any(abs(w - z) > 0.5 and abs(tip - w) < HEADS_MM for w in images)
+
+
 def _to_segment(z: complex, a: complex, b: complex) -> float:
     """The distance from ``z`` to the segment ab, mm."""
     d = b - a
@@ -1867,6 +1886,7 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
     span: dict[str, tuple[complex, complex]] = {}      # each force's arrow, tail → head
     drawn: list[tuple[complex, complex, complex]] = []
     lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
+    images = list(turned.values()) + [0j]
     for t in lv.terms:
         if not t.vector:
             continue
@@ -1878,6 +1898,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         if abs(t.arm_mm) >= 1.0 and ahead > 0.5 and behind <= 0.5:
             # along a line of the lever that runs on from its image (P_D at d along d–s4): drawn
             # on its own line pushing, its head at the image, so that the arm still ends on it
+            tail, tip = z - length * u, z
+        elif (_ends_on(z, tail, tip, drawn, images)
+              and not _ends_on(z, z - length * u, z, drawn, images)):
+            # its head on another force's head or shaft, or on another image (LINK53's lever:
+            # M^Φ2'' leaving a and M^Φ4'' leaving k met head to head, their two names between
+            # them for either): drawn pushing, its head at its image
             tail, tip = z - length * u, z
         if (any(abs(w - z) < 0.5 and _one_arrow(tail, tip, a, b) for w, a, b in drawn)
                 or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)
