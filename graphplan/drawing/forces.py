@@ -75,6 +75,33 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
     return gp.mu_F or fp.mu_F
 
 
+def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+    """A slider that carries a guide off its own joint — the wedge press's wedge B on the frame's
+    guide, its inclined face the slot the ram's block C rides in — drawn as the kinematics sheet
+    draws it (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
+    (``linkshape.slot_line``) and the triangle of the joint and the slot's ends, one rigid body (mm);
+    none for any other link (review 52: the wedge drawn as a bar from B to C, its face missing)."""
+    import numpy as np
+    from graphplan.drawing.plans import WEDGE_OFF_MM
+    from graphplan.model.linkshape import slot_line
+    mech, kin = fp.ks.mech, fp.ks.kin
+    lk = mech.links[link]
+    riders = [r for r, other in mech.links.items()
+              if other.slides_on is not None and mech.guides[other.slides_on].body == link]
+    if lk.slides_on is None or len(lk.joints) != 1 or not riders:
+        return []
+    body = kin.bodies[link]
+    g = mech.guides[mech.links[riders[0]].slides_on]
+    base = complex(body.at(g.through)[0][0]) / mu
+    u = complex(np.exp(1j * (body.theta[0] + g.angle)))
+    x = complex(body.at(lk.local[lk.joints[0]])[0][0]) / mu
+    blocks = [complex(kin.bodies[r].at(z)[0][0]) / mu for r in riders for z in mech.links[r].local.values()]
+    a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
+    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:
+        return [a, b]
+    return [a, x, b, a]
+
+
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it
     (a yoke: its slot and rod, ``framed``: the rod reaching its bushing)."""
@@ -83,6 +110,9 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bo
     from graphplan.model.linkshape import yoke_guide
     if yoke_guide(mech, link) is not None:
         return yoke_lines(fp, link, mu, framed)
+    wedge = _wedge_outline(fp, link, mu)
+    if wedge:
+        return wedge
     lk = mech.links[link]
     body = kin.bodies[link]
     pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
