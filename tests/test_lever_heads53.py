@@ -49,3 +49,22 @@ def test_no_two_lever_arrows_meet_head_to_head(lever_arrows):
         assert abs(b1 - b2) >= 3.0, ((a1, b1), (a2, b2))
         assert _to_segment(b1, a2, b2) >= 1.0 or abs(b1 - a2) < 1.0, ((a1, b1), (a2, b2))
         assert _to_segment(b2, a1, b1) >= 1.0 or abs(b2 - a1) < 1.0, ((a1, b1), (a2, b2))
+
+
+def test_the_balancing_force_passes_over_no_other_image():
+    """LINK53 at φ = 240° (the working stroke, P_B = 1800 N): a and k lie on one vertical of the
+    lever and P_зр, ⊥ p_v a, ran up from a through k (the arrows at k and s2 ending on its shaft).
+    It is drawn the other way, into a: no image but a within 3 mm of its arrow."""
+    import review_scenes
+    from graphplan.drawing.forces import lever_record
+    text = review_scenes.LINK53.replace("force_phi_deg = 60", "force_phi_deg = 240")
+    assert text != review_scenes.LINK53
+    fp = scene_force_plans(text)
+    lv = fp.lever
+    rec = lever_record(fp, "uk")
+    tail, tip = next((complex(*q.points[0]), complex(*q.points[1])) for q in rec.items
+                     if q.kind == "vector" and q.role == "result")
+    a = 1j * lv.images[fp.ks.mech.crank.pin]
+    assert min(abs(tail - a), abs(tip - a)) < 2.0 * 1.8 + 1e-6        # at a (or a lane or two off)
+    others = [1j * z for name, z in lv.images.items() if abs(1j * z - a) > 0.5 and abs(z) > 0.1]
+    assert all(_to_segment(z, tail, tip) >= 3.0 for z in others), (tail, tip, others)

@@ -1980,8 +1980,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         n = 1j * u if dot(1j * u, a) >= 0 else -1j * u
         ways = [(t + k * SIDE_MM * n, h + k * SIDE_MM * n, k) for k in (0, 1, -1, 2, -2)
                 for t, h in ((a, a + length * u), (a - length * u, a))]
+        # … and where one way passes over another image (LINK53 at φ 240°: P_зр up from a through
+        # k, k's and s2's arrows ending on its shaft), the other
+        others = [w for w in images if abs(w - a) > 0.5]
         tail, tip, _ = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
                                                 sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
+                                                any(_to_segment(z, w[0], w[1]) < HEADS_MM for z in others),
                                                 abs(w[2]), abs(w[0] - w[2] * SIDE_MM * n - a) > 1e-9))
         rec.vector(_pt(tail), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
         span["P_b"] = (tail, tip)
