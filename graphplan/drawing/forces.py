@@ -75,6 +75,33 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
     return gp.mu_F or fp.mu_F
 
 
+def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
+    """A slider that carries a guide off its own joint — the wedge press's wedge B on the frame's
+    guide, its inclined face the slot the ram's block C rides in — drawn as the kinematics sheet
+    draws it (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
+    (``linkshape.slot_line``) and the triangle of the joint and the slot's ends, one rigid body (mm);
+    none for any other link (review 52: the wedge drawn as a bar from B to C, its face missing)."""
+    import numpy as np
+    from graphplan.drawing.plans import WEDGE_OFF_MM
+    from graphplan.model.linkshape import slot_line
+    mech, kin = fp.ks.mech, fp.ks.kin
+    lk = mech.links[link]
+    riders = [r for r, other in mech.links.items()
+              if other.slides_on is not None and mech.guides[other.slides_on].body == link]
+    if lk.slides_on is None or len(lk.joints) != 1 or not riders:
+        return []
+    body = kin.bodies[link]
+    g = mech.guides[mech.links[riders[0]].slides_on]
+    base = complex(body.at(g.through)[0][0]) / mu
+    u = complex(np.exp(1j * (body.theta[0] + g.angle)))
+    x = complex(body.at(lk.local[lk.joints[0]])[0][0]) / mu
+    blocks = [complex(kin.bodies[r].at(z)[0][0]) / mu for r in riders for z in mech.links[r].local.values()]
+    a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
+    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:
+        return [a, b]
+    return [a, x, b, a]
+
+
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
     """The drawn line of a link (mm): its joints, stretched along its axis to any block riding on it
     (a yoke: its slot and rod, ``framed``: the rod reaching its bushing)."""
@@ -83,6 +110,9 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bo
     from graphplan.model.linkshape import yoke_guide
     if yoke_guide(mech, link) is not None:
         return yoke_lines(fp, link, mu, framed)
+    wedge = _wedge_outline(fp, link, mu)
+    if wedge:
+        return wedge
     lk = mech.links[link]
     body = kin.bodies[link]
     pos = {p: complex(body.at(lk.local[p])[0][0]) / mu for p in lk.joints}
@@ -234,6 +264,25 @@ def _on_segment(z: complex, a: complex, b: complex, tol: float = 0.5) -> bool:
         return abs(z - a) <= tol
     t = min(max(dot(z - a, d) / abs(d) ** 2, 0.0), 1.0)
     return abs(z - (a + t * d)) <= tol
+
+
+HEADS_MM = 3.0     # two arrows' heads nearer than this read as one point (the lever's forces)
+
+
+def _ends_on(z: complex, tail: complex, tip: complex, drawn: list[tuple[complex, complex, complex]],
+             images: list[complex]) -> bool:
+    """Whether the lever's arrow tail → tip of the image ``z`` ends on another's: its head within
+    ``HEADS_MM`` of another drawn arrow's head (``drawn``: image, tail, head), or — the arrow of
+    another image — 1 mm of its shaft or its head within 1 mm of this one's shaft away from its own
+    image, or its head within ``HEADS_MM`` of another image (it reads as applied there)."""
+    for w, a, b in drawn:
+        if abs(tip - b) < HEADS_MM:
+            return True
+        if abs(w - z) < 0.5:          # of the same image: its lines are the lanes' (set aside below)
+            continue
+        if _to_segment(tip, a, b) < 1.0 or (abs(b - z) > 1.0 and _to_segment(b, tail, tip) < 1.0):
+            return True
+    return any(abs(w - z) > 0.5 and abs(tip - w) < HEADS_MM for w in images)
 
 
 def _to_segment(z: complex, a: complex, b: complex) -> float:
@@ -1867,6 +1916,7 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
     span: dict[str, tuple[complex, complex]] = {}      # each force's arrow, tail → head
     drawn: list[tuple[complex, complex, complex]] = []
     lines = [(turned[a], turned[b]) for a, b in lv.links] + [(0j, z) for z in turned.values()]
+    images = list(turned.values()) + [0j]
     for t in lv.terms:
         if not t.vector:
             continue
@@ -1878,6 +1928,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         if abs(t.arm_mm) >= 1.0 and ahead > 0.5 and behind <= 0.5:
             # along a line of the lever that runs on from its image (P_D at d along d–s4): drawn
             # on its own line pushing, its head at the image, so that the arm still ends on it
+            tail, tip = z - length * u, z
+        elif (_ends_on(z, tail, tip, drawn, images)
+              and not _ends_on(z, z - length * u, z, drawn, images)):
+            # its head on another force's head or shaft, or on another image (LINK53's lever:
+            # M^Φ2'' leaving a and M^Φ4'' leaving k met head to head, their two names between
+            # them for either): drawn pushing, its head at its image
             tail, tip = z - length * u, z
         if (any(abs(w - z) < 0.5 and _one_arrow(tail, tip, a, b) for w, a, b in drawn)
                 or (max(ahead, behind) > 0.5 and abs(t.arm_mm) < 1.0)
@@ -1924,8 +1980,12 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         n = 1j * u if dot(1j * u, a) >= 0 else -1j * u
         ways = [(t + k * SIDE_MM * n, h + k * SIDE_MM * n, k) for k in (0, 1, -1, 2, -2)
                 for t, h in ((a, a + length * u), (a - length * u, a))]
+        # … and where one way passes over another image (LINK53 at φ 240°: P_зр up from a through
+        # k, k's and s2's arrows ending on its shaft), the other
+        others = [w for w in images if abs(w - a) > 0.5]
         tail, tip, _ = min(ways, key=lambda w: (_run_along(w[0], w[1], lines) > 1.0,
                                                 sum(_one_arrow(w[0], w[1], c, d) for _, c, d in drawn),
+                                                any(_to_segment(z, w[0], w[1]) < HEADS_MM for z in others),
                                                 abs(w[2]), abs(w[0] - w[2] * SIDE_MM * n - a) > 1e-9))
         rec.vector(_pt(tail), _pt(tip), role="result", layer="vectors", step=step, text="P_b")
         span["P_b"] = (tail, tip)

@@ -154,10 +154,10 @@ TARGETS = {"scheme": 250.0, "groups": 250.0, "forces": POLYGON_MM, "acceleration
            "charts": 1.0, "hodographs": 1.0}
 SMALL_CAPTION = {"hodographs": 3.5}       # the caption's letter height under a small drawing
 LEVER_STEP = 1.25     # the lever grown in the composition's rounds by at least this factor a step
-LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm)
-# … and into the room the composed sheet leaves it, its last growth (``_grown_lever``): the pump six-bar's
-# 19 loads with their arms at 150 mm went out on long leaders round a 114 mm figure (review 45 #2)
-LEVER_ROOM_MM = 200.0
+LEVER_MM = 150.0      # the lever grown at most this across, forces included (seed 000's: p_v a = 55, p_v c 102 mm),
+# in the composition's rounds and into the room the composed sheet leaves it (``_grown_lever``; it grew
+# up to 200 mm there for the pump six-bar's 19 loads, review 45 #2, and drew the shaper's 172 mm where the
+# lever's row wrapped — the pump's lever is lettered by its arms within 150 mm now)
 LETTERING = 10.0      # mm a drawing's lettering is assumed to add across and up before it is placed
 
 
@@ -654,8 +654,8 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
 
 
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
-CUTS = (-1,)          # the charts in the lever's row (``_tree``): the shape's own count. A wrapped row (0:
-                      # none) grew ROCKING_BLOCK51's lever but drew the shaper's past LEVER_MM (172 mm): held back
+CUTS = (-1, 0)        # the charts in the lever's row (``_tree``): the shape's own count, else none (the row
+                      # wrapped: ROCKING_BLOCK51's lever 80 × 70 mm beside the M_зр chart over a half-empty row)
 SPACE = forceset.SPACE     # mm between two groups, a group and its plan (review 7 #18)
 ROWS_GAP = GAP             # … between the one-sheet composition's other drawings
 
@@ -1690,7 +1690,7 @@ def _lettering_kept(dr: ForceDrafter, nat: Natural, mu: dict[str, float], p: Pla
 def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
     """The Zhukovsky lever as large as its cell allows (LAYOUT.md: the largest scale that fits its
     zone), every other drawing as planned — the lever's μv grown in the plans' steps
-    (``LeverFamily``) while the composition fits, up to ``LEVER_ROOM_MM`` across (the room left
+    (``LeverFamily``) while the composition fits, up to ``LEVER_MM`` across (the room left
     is no other drawing's: the lever and then the hodographs take it last) — then a round μv (the series, GOST's 1.5, 7.5 ×
     10^k) where it draws the lever at least ``ROUND_SHARE`` of that, else p_v a chosen (a multiple of
     5 mm) and μv = v_A / p_v a at three figures, as the kinematics sheet's plans. The arms h are read
@@ -1709,12 +1709,12 @@ def _grown_lever(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
     for _ in range(3):
         fitting = [(mu["lever"], on_round(mu["lever"]))]
-        for m, rnd in fam.choices(mu["lever"], LEVER_ROOM_MM):      # the smallest first: stop at the first too large
+        for m, rnd in fam.choices(mu["lever"]):      # the smallest first: stop at the first too large
             if not fits(m):
                 break
             fitting.append((m, rnd))
         largest = fitting[-1][0]
-        rounds = [r for r, _ in fam.choices(largest * 2.0, LEVER_ROOM_MM) if on_round(r) and r >= largest * (1 - 1e-9)]
+        rounds = [r for r, _ in fam.choices(largest * 2.0) if on_round(r) and r >= largest * (1 - 1e-9)]
         m = next((r for r in reversed(rounds) if largest / r >= ROUND_SHARE - 1e-9), largest)
         if m == p.mu["lever"]:
             break
