@@ -5086,3 +5086,96 @@ rpm = 300
 direction = "cw"
 divisions = 10
 '''
+
+
+LINK53 = '''# Stop 53 (the lead's check): a two-cylinder compressor with an articulated (master-and-slave) rod —
+# the crank O1A turns clockwise; the master rod AKB, a plate, drives the piston B on a guide at 60°;
+# the slave rod KC, pinned to the master rod's lug K off its axis, drives the piston C on a guide at 120°
+# — I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП: the second group hangs on a point of the first group's rod.
+title = "Двоциліндровий компресор з причіпним шатуном"
+title_en = "Two-cylinder compressor with an articulated connecting rod"
+designation = "ТММ.КМ.53.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+b = { through = [0, 0], angle_deg = 60 }
+c = { through = [0, 0], angle_deg = 120 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.055
+rpm = 360
+direction = "cw"
+points = { S1 = 0.3 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.3 }
+shape = { K = [0.045, 0.04] }
+mass = 2.5
+inertia = 0.012
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "b"
+mass = 2
+
+[[link]]
+name = "KC"
+number = 4
+joints = ["K", "C"]
+length = 0.17
+points = { S4 = 0.5 }
+mass = 1.6
+inertia = 0.005
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "c"
+mass = 2
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [2]
+force_phi_deg = 60
+working_stroke = "to_max"
+output = "B"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 1800
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
