@@ -81,3 +81,41 @@ def test_the_first_table_over_and_the_last_under_the_columns_between():
     assert boxes["T4"][3] <= min(boxes["T2"][1], boxes["T3"][1])                           # T4 under both
     one = tables_size(table_groups(tabs, 1), False, False)
     assert one[1] - h == pytest.approx(53 + GAP)
+
+
+# -- SLOTTED_CRANK53 (kin53's own): the block 2 slides in the slot of the crank 1 -----------------------
+
+@pytest.fixture(scope="module")
+def slotted_plans():
+    from graphplan.graphic.plans import build_plans
+    from review_scenes import SLOTTED_CRANK53
+    return build_plans(scene_study(SLOTTED_CRANK53), accel=[3])
+
+
+def _arm_angle(phi: float) -> float:
+    """The arm O2B's angle where the crank's slot (the line through O1 at φ) meets the circle
+    |B − O2| = 0.10 (the scene's numbers): B = λ·e^{iφ}, λ = O2·e + √((O2·e)² − |O2|² + R²)."""
+    O2, R = complex(0.04, -0.03), 0.10
+    e = complex(math.cos(phi), math.sin(phi))
+    p = (O2.conjugate() * e).real
+    lam = p + math.sqrt(p * p - abs(O2) ** 2 + R * R)
+    return math.atan2((lam * e - O2).imag, (lam * e - O2).real)
+
+
+def test_a_block_in_the_cranks_slot_has_no_omega_or_epsilon_entry(slotted_plans):
+    """The block turns with the crank (ω2 = ω1, ε2 = ε1 = 0: given, not read off a plan): the plans
+    carry no ω2, ε2 of it (Table 1 printed −10,5 at every position, Table 2 ε2 = 0); the arm's ω3 is
+    the closed form's dψ/dφ · ω1 (ψ by ``_arm_angle``, central difference), its ε3 the same of ω3."""
+    w1 = -2 * math.pi * 100 / 60
+    for p in slotted_plans.positions:
+        keys = set(p.velocity.entries)
+        assert "omega_2" not in keys and "omega_O2B" in keys
+        phi, h = math.radians(p.phi), 1e-5
+        dpsi = (_arm_angle(phi + h) - _arm_angle(phi - h)) / (2 * h)
+        omega3 = p.velocity.entries["omega_O2B"].exact.real
+        assert omega3 == pytest.approx(dpsi * w1, rel=1e-5)
+        if p.acceleration is not None:
+            assert "epsilon_2" not in p.acceleration.entries
+            d2 = (_arm_angle(phi + h) - 2 * _arm_angle(phi) + _arm_angle(phi - h)) / h ** 2
+            eps3 = p.acceleration.entries["epsilon_O2B"].exact.real
+            assert eps3 == pytest.approx(d2 * w1 ** 2, rel=1e-3)

@@ -61,11 +61,12 @@ DERIVED = {"theta_deg": ("θ, °", "θ, °"), "crank": ("довжина крив
 
 
 def _translates(mech, name: str) -> bool:
-    """A link sliding on a guide the frame carries (a piston, a ram): it does not turn, its ω and ε
-    are 0 by the pair itself, so the tables of ω and ε leave it out (a block on a rocking guide turns
-    with the guide and stays)."""
+    """A link whose ω and ε its sliding pair gives: on a guide the frame carries (a piston, a ram) it
+    does not turn (ω = ε = 0), on the crank's guide (a slotted crank's block) it turns with the crank
+    (ω1, ε1, given) — the tables of ω and ε leave it out (a block on a rocking guide turns with the
+    guide, unknown till solved, and stays)."""
     guide = mech.links[name].slides_on
-    return guide is not None and mech.guides[guide].body == FRAME
+    return guide is not None and mech.guides[guide].body in (FRAME, mech.crank.link)
 
 
 def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str = "uk") -> str:
