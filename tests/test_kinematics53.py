@@ -119,3 +119,12 @@ def test_a_block_in_the_cranks_slot_has_no_omega_or_epsilon_entry(slotted_plans)
             d2 = (_arm_angle(phi + h) - 2 * _arm_angle(phi) + _arm_angle(phi - h)) / h ** 2
             eps3 = p.acceleration.entries["epsilon_O2B"].exact.real
             assert eps3 == pytest.approx(d2 * w1 ** 2, rel=1e-3)
+
+
+def test_one_centre_at_its_middle_is_said_in_the_singular(link53):
+    """Table 3's footnote: the one centre S4 at its link's middle — "S₄: at the middle of its link",
+    "S₄ — посередині ланки" (it said "at the middles of their links" of the one point)."""
+    from graphplan.sheets.kintables import dimensions_table
+    for lang, one, many in (("en", "at the middle of its link", "middles"), ("uk", "посередині ланки", "посередині ланок")):
+        texts = " ".join(q.text for q in dimensions_table(link53, 0.001, lang).items if q.kind == "text")
+        assert one in texts and many not in texts
