@@ -79,6 +79,7 @@ def test_the_first_table_over_and_the_last_under_the_columns_between():
             assert u0 >= x1 - 1e-9 or u1 <= x0 + 1e-9 or v0 >= y1 - 1e-9 or v1 <= y0 + 1e-9, (a, b)
     assert boxes["T1"][1] >= boxes["T2"][3] and boxes["T3"][0] >= boxes["T2"][2]          # T1 over, T2 | T3
     assert boxes["T4"][3] <= min(boxes["T2"][1], boxes["T3"][1])                           # T4 under both
+    assert boxes["T1"][0] == boxes["T2"][0] == boxes["T4"][0] == 0.0                        # one left edge
     one = tables_size(table_groups(tabs, 1), False, False)
     assert one[1] - h == pytest.approx(53 + GAP)
 

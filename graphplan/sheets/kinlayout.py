@@ -230,7 +230,8 @@ def place_tables(groups: list[list], right: float, top: float, under: bool = Fal
         t, u = groups[0][0], groups[-1][0]
         _, ch = column_size(groups[1:-1])
         b = (right - w, top - t.h, right - w + t.w, top)
-        bu = (right - u.w, top - t.h - GAP - ch - GAP - u.h, right, top - t.h - GAP - ch - GAP)
+        # the last at the block's left, as the first and the columns' first: one left edge
+        bu = (right - w, top - t.h - GAP - ch - GAP - u.h, right - w + u.w, top - t.h - GAP - ch - GAP)
         return ([Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)]
                 + set_columns(groups[1:-1], right - w, top - t.h - GAP)
                 + [Placed(u.name, top_left(u.record, bu) if u.record is not None else Record(), bu)])
