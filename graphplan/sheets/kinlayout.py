@@ -559,9 +559,22 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             vgrids = {vc: Grid(V, vc, fitted=True) for vc in _grids(nv)} if V else {1: None}
             agrids = {ac: Grid(A, ac, fitted=True) for ac in _grids(na)} if A else {1: None}
             found = None
+            # the over-and-under ways only where no other arrangement holds these scales: their block
+            # is lower, but a column's freed height is blank all the same (the crank-slider's column
+            # held 194 × 160 mm blank under its tables where in one column the blank was a 58-mm band)
+            for both in (False, True):
+                if found is not None:
+                    break
+                found = _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both)
+            return found
+
+        def _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both):
+            found = None
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
                     for way, C in enumerate(cols):
+                        if (ways[way][1] and ways[way][2]) != both:
+                            continue
                         half = halves[way]
                         tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         notes_w = TITLE
