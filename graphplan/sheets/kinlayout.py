@@ -505,16 +505,18 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     nv, na = nat.count["velocity"], nat.count["acceleration"]
     cands: list[tuple] = []     # (score as chosen, sizes as chosen, score with the room given out, plan)
 
-    def score_of(mu, k_d, factor, shape, weighed: bool = False) -> tuple:
+    def score_of(mu, k_d, factor, shape, weighed: bool = False, plain: bool = True) -> tuple:
         """(legible, main, smallest, product of the principal segments, …); ``weighed``: each
         family's log counted once a drawing (twelve velocity plans weigh more than two
-        acceleration plans: the drawn area)."""
+        acceleration plans: the drawn area); ``plain``: not the over-and-under tables, which win
+        no tie (the slotter's "column" held by them, at the scales "split" drew too, opened a
+        66 × 328 mm strip beside its position plan)."""
         fams = [fam for fam in FAMILIES if fam != "acceleration" or has_a]
         rel = [nat.families[fam].rel(mu[fam]) for fam in fams]
         weight = [max(1, nat.count[fam]) if weighed else 1 for fam in fams]
         return (legible(nat, mu), main_rel(nat, mu), round(min(rel), 6),
                 round(sum(w * math.log(r) for w, r in zip(weight, rel)), 6), k_d, factor == TABLES,
-                -SHAPES.index(shape))
+                plain, -SHAPES.index(shape))
     for factor in (TABLES, 1.0):
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         # the tables in 1–3 columns; or the last (the diagrams' readings, 12 positions across: review
@@ -651,7 +653,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 parts, under, over = ways[way]
                 counts = tuple(len(g) for g in split(tabs[1:-1] if under and over else tabs[:-1] if under
                                                      else tabs[1:] if over else tabs, parts))
-                cands.append((first, before, score_of(mu, k_d, factor, shape, True),
+                cands.append((first, before, score_of(mu, k_d, factor, shape, True, not (under and over)),
                               Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, notes=notes_w, under=under,
                                    over=over)))
     if not cands:
