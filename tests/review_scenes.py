@@ -5393,3 +5393,96 @@ planets = 6
 module = 0.002
 rpm = 960
 '''
+
+
+SLOTTED_CRANK53 = '''# Stop 53 (kin53's own): a slotted crank driving a rotating arm — the crank 1 turns clockwise about O1 and
+# carries a slot along itself; the block 2 slides in it, pinned at B to the arm O2B, which turns fully round
+# O2 (O1O2 shorter than O2B) with a varying speed; the arm's end B drives the rod BC to the slider C on a
+# horizontal guide — I(0-1) -> II(2-3) ВВП (the prismatic pair outer, on the crank) -> II(4-5) ВВП.
+title = "Механізм з кулісним кривошипом і повзуном"
+title_en = "Slotted-crank drive of a slider"
+designation = "ТММ.КМ.53.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.04, -0.03]
+
+[frame.guides]
+x = { through = [0, -0.03], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.16
+rpm = 100
+direction = "cw"
+guide = { through = [0, 0], angle_deg = 0 }
+points = { S1 = 0.3 }
+mass = 4
+inertia = 0.01
+
+[[link]]
+name = "2"
+number = 2
+joints = ["B"]
+slides_on = "O1A"
+mass = 0.5
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.10
+points = { S3 = 0.5 }
+mass = 2
+inertia = 0.004
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 3
+inertia = 0.02
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "x"
+mass = 6
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "outer"
+accel = [3]
+force_phi_deg = 60
+output = "C"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "C"
+magnitude = 500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

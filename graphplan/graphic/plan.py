@@ -219,8 +219,14 @@ class Plan:
                                       basis, sense, drawn=drawn)
 
     def inherit(self, link: str, carrier: str) -> None:
-        """A slider turns with the body that carries its guide: the same ω and ε."""
+        """A slider turns with the body that carries its guide: the same ω and ε. On the crank's
+        guide (a slotted crank) that is ω1, ε1, given, not read off the plan: kept for the plan's
+        later steps, no entry of its own (the table's column of −10,5 at every position, struck out)."""
         exact = self.exact.omega(link) if self.kind == "velocity" else self.exact.eps(link)
+        if carrier == self.sc.mech.crank.link:
+            self.rates[link], self.basis[link] = self.rates[carrier], self.basis[carrier]
+            self.read_mm[link] = self.read_mm.get(carrier)
+            return
         self.rate(link, self.rates[carrier], exact, self.basis[carrier], self.read_mm.get(carrier))
 
     def turn_rate(self, link: str, X: complex, C: complex, rel_mm: complex, length: float,

@@ -60,6 +60,15 @@ DERIVED = {"theta_deg": ("θ, °", "θ, °"), "crank": ("довжина крив
            "rocker": ("довжина куліси, м", "rocker length, m")}
 
 
+def _translates(mech, name: str) -> bool:
+    """A link whose ω and ε its sliding pair gives: on a guide the frame carries (a piston, a ram) it
+    does not turn (ω = ε = 0), on the crank's guide (a slotted crank's block) it turns with the crank
+    (ω1, ε1, given) — the tables of ω and ε leave it out (a block on a rocking guide turns with the
+    guide, unknown till solved, and stays)."""
+    guide = mech.links[name].slides_on
+    return guide is not None and mech.guides[guide].body in (FRAME, mech.crank.link)
+
+
 def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str = "uk") -> str:
     """Readable tables: velocities and accelerations of the points, ω and ε, the slides; in ``lang``."""
     mech = st.mech
@@ -97,11 +106,12 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str 
     count = len(phi_deg)
     table(w("point velocities"), [f"v_{p}" for p in moving], [[q[k] for q in vel] for k in range(count)])
     table(w("point accelerations"), [f"a_{p}" for p in moving], [[q[k] for q in acc] for k in range(count)])
-    links = [name for name in mech.links if name != mech.crank.link]
-    table(w("angular velocities"), [f"ω_{n_}" for n_ in links],
-          [[kin.bodies[n_].omega[k] for n_ in links] for k in range(count)])
-    table(w("angular accelerations"), [f"ε_{n_}" for n_ in links],
-          [[kin.bodies[n_].eps[k] for n_ in links] for k in range(count)])
+    links = [name for name in mech.links if name != mech.crank.link and not _translates(mech, name)]
+    if links:
+        table(w("angular velocities"), [f"ω_{n_}" for n_ in links],
+              [[kin.bodies[n_].omega[k] for n_ in links] for k in range(count)])
+        table(w("angular accelerations"), [f"ε_{n_}" for n_ in links],
+              [[kin.bodies[n_].eps[k] for n_ in links] for k in range(count)])
     for key, sl in kin.slides.items():
         table(w("slide table", key=key, slider=sl.slider, carrier=sl.carrier if sl.carrier != FRAME else w("the frame")),
               ["s", "v", "a", "a_k"],

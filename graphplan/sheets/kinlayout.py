@@ -190,7 +190,11 @@ def table_groups(tables: list, parts: int, counts: tuple[int, ...] = (), under: 
     """The tables in ``parts`` columns (``counts`` tables each, where the plan found them); ``under``:
     the last one set across under the columns of the others, its own group last (``tables_size``,
     ``place_tables``); ``over``: the first one across over the columns of the others, its own group
-    first."""
+    first; both: the first over and the last under the columns of those between (the compressor's
+    Table 1 over Tables 2 | 3, Table 4 under them: in one column Table 3 stood under Table 2 beside
+    a 100 × 178 mm blank)."""
+    if over and under and len(tables) > parts + 1:
+        return [[tables[0]]] + split(tables[1:-1], parts, counts=counts) + [[tables[-1]]]
     if over and len(tables) > parts:
         return [[tables[0]]] + split(tables[1:], parts, counts=counts)
     if under and len(tables) > parts:
@@ -200,7 +204,11 @@ def table_groups(tables: list, parts: int, counts: tuple[int, ...] = (), under: 
 
 def tables_size(groups: list[list], under: bool = False, over: bool = False) -> tuple[float, float]:
     """The tables' block (``table_groups``): columns side by side, the last group under them where
-    ``under``, the first over them where ``over``."""
+    ``under``, the first over them where ``over`` (both: the first over, the last under them)."""
+    if over and under and len(groups) >= 3:
+        cw, ch = column_size(groups[1:-1])
+        first, last = groups[0][0], groups[-1][0]
+        return max(cw, first.w, last.w), first.h + GAP + ch + GAP + last.h
     if over and len(groups) >= 2:
         cw, ch = column_size(groups[1:])
         first = groups[0][0]
@@ -218,6 +226,15 @@ def place_tables(groups: list[list], right: float, top: float, under: bool = Fal
     wider than the last column, it runs on under the one before: read after them all."""
     from graphplan.drawing.layout import Placed, set_columns, top_left
     w, _ = tables_size(groups, under, over)
+    if over and under and len(groups) >= 3:
+        t, u = groups[0][0], groups[-1][0]
+        _, ch = column_size(groups[1:-1])
+        b = (right - w, top - t.h, right - w + t.w, top)
+        # the last at the block's left, as the first and the columns' first: one left edge
+        bu = (right - w, top - t.h - GAP - ch - GAP - u.h, right - w + u.w, top - t.h - GAP - ch - GAP)
+        return ([Placed(t.name, top_left(t.record, b) if t.record is not None else Record(), b)]
+                + set_columns(groups[1:-1], right - w, top - t.h - GAP)
+                + [Placed(u.name, top_left(u.record, bu) if u.record is not None else Record(), bu)])
     if over and len(groups) >= 2:
         # the first across the block's top at its left (read first), the others' columns under it
         t = groups[0][0]
@@ -488,16 +505,18 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     nv, na = nat.count["velocity"], nat.count["acceleration"]
     cands: list[tuple] = []     # (score as chosen, sizes as chosen, score with the room given out, plan)
 
-    def score_of(mu, k_d, factor, shape, weighed: bool = False) -> tuple:
+    def score_of(mu, k_d, factor, shape, weighed: bool = False, plain: bool = True) -> tuple:
         """(legible, main, smallest, product of the principal segments, …); ``weighed``: each
         family's log counted once a drawing (twelve velocity plans weigh more than two
-        acceleration plans: the drawn area)."""
+        acceleration plans: the drawn area); ``plain``: not the over-and-under tables, which win
+        no tie (the slotter's "column" held by them, at the scales "split" drew too, opened a
+        66 × 328 mm strip beside its position plan)."""
         fams = [fam for fam in FAMILIES if fam != "acceleration" or has_a]
         rel = [nat.families[fam].rel(mu[fam]) for fam in fams]
         weight = [max(1, nat.count[fam]) if weighed else 1 for fam in fams]
         return (legible(nat, mu), main_rel(nat, mu), round(min(rel), 6),
                 round(sum(w * math.log(r) for w, r in zip(weight, rel)), 6), k_d, factor == TABLES,
-                -SHAPES.index(shape))
+                plain, -SHAPES.index(shape))
     for factor in (TABLES, 1.0):
         tabs = [Leaf(name, w, h) for name, w, h in nat.tables[factor]]
         # the tables in 1–3 columns; or the last (the diagrams' readings, 12 positions across: review
@@ -513,6 +532,11 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
         # [T2 | T3, T4] the block is narrower and lower, read in order (review 46)
         ways += [(parts, False, True) for parts in (2, 3) if len(tabs) > parts
                  and tabs[0].w > max(t.w for t in split(tabs[1:], parts)[0]) + GAP]
+        # or both: the first over and the last under the columns of those between (the compressor's
+        # T1 over T2 | T3, T4 under: in one column T3 stood under T2 beside 100 × 178 mm blank)
+        ways += [(parts, True, True) for parts in (2, 3) if len(tabs) > parts + 1
+                 and tabs[0].w > max(t.w for t in split(tabs[1:-1], parts)[0]) + GAP
+                 and tabs[-1].w > max(t.w for t in split(tabs[1:-1], parts)[-1]) + GAP]
         cols = [column_leaf(f, tabs, parts, nat.notes_height, under=under, over=over)[0] for parts, under, over in ways]
         halves = [split_leaves(f, tabs, parts, nat.notes_height, under=under, over=over)[:2]
                   for parts, under, over in ways]
@@ -537,9 +561,22 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
             vgrids = {vc: Grid(V, vc, fitted=True) for vc in _grids(nv)} if V else {1: None}
             agrids = {ac: Grid(A, ac, fitted=True) for ac in _grids(na)} if A else {1: None}
             found = None
+            # the over-and-under ways only where no other arrangement holds these scales: their block
+            # is lower, but a column's freed height is blank all the same (the crank-slider's column
+            # held 194 × 160 mm blank under its tables where in one column the blank was a 58-mm band)
+            for both in (False, True):
+                if found is not None:
+                    break
+                found = _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both)
+            return found
+
+        def _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both):
+            found = None
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
                     for way, C in enumerate(cols):
+                        if (ways[way][1] and ways[way][2]) != both:
+                            continue
                         half = halves[way]
                         tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         notes_w = TITLE
@@ -614,8 +651,9 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 mu = into_room(nat, mu, lambda m, s=shape, d=D_k: arranged(m, s, D=d) is not None)
                 _, vc, ac, way, notes_w = arranged(mu, shape, best_fill=True, D=D_k)
                 parts, under, over = ways[way]
-                counts = tuple(len(g) for g in split(tabs[:-1] if under else tabs[1:] if over else tabs, parts))
-                cands.append((first, before, score_of(mu, k_d, factor, shape, True),
+                counts = tuple(len(g) for g in split(tabs[1:-1] if under and over else tabs[:-1] if under
+                                                     else tabs[1:] if over else tabs, parts))
+                cands.append((first, before, score_of(mu, k_d, factor, shape, True, not (under and over)),
                               Plan(mu, k_d, factor, shape, vc, ac, parts, 1, counts, notes=notes_w, under=under,
                                    over=over)))
     if not cands:

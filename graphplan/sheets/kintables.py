@@ -446,7 +446,7 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     # where every centre is at its middle (the lab's default) the line says nothing a reader needs
     middles = middle_centres(st)
     if middles and any("S" in name for name, _ in lengths):
-        notes.append(w('dims middles', names=", ".join(middles)))
+        notes.append(w('dims middles' if len(middles) > 1 else 'dims middle', names=", ".join(middles)))
     rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
     return footnoted(rec, notes)
 

@@ -263,6 +263,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin swing": ('Кут розмаху ланки {link} між крайніми положеннями {a} і {b}: ψ_max = {deg}° = {rad} рад',
                   'Swing of link {link} between its extreme positions {a} and {b}: ψ_max = {deg}° = {rad} rad'),
     "kin dims middles": ('{names} — посередині ланок', '{names}: at the middles of their links'),
+    "kin dims middle": ('{names} — посередині ланки', '{names}: at the middle of its link'),
     "kin link": ('ланка', 'link'),
     "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
     "kin real": ('l, м', 'l, m'),
