@@ -111,19 +111,39 @@ def force_position(st: Study, phi: float, lang: str, short: bool = False) -> str
 
 
 def idle_words(st: Study, phi: float, lang: str) -> str:
-    """On the idle stroke, the terminal's words and the resistance that is then nil (review 11 #17):
-    ", idle stroke: P_D = 0"; nothing on the working stroke or without a stroke-bound force."""
+    """The stroke-bound loads acting at the force position, by the stroke it lies on (review 11 #17;
+    review 53 #1: two moments on one lever, one per stroke, were said "M_3 = 0" on the idle stroke
+    while its 260 N·m acted): ", idle stroke: P_D = 0", ", idle stroke: M_3 = 260 N·m". Each
+    ``[[force]]``/``[[moment]]`` bound to a stroke is named once by its symbol with the value it
+    has at the position (``kinetostatics.loads``: its magnitude on its own stroke, its profile's
+    factor, 0 on the other stroke; loads of one symbol summed). Nothing when no load is
+    stroke-bound, nor on the working stroke when every stroke-bound load is the working stroke's
+    (the tables give it)."""
     import numpy as np
 
-    from graphplan.exact.kinetostatics import working_stroke
+    from graphplan.exact.kinetostatics import loads, working_stroke
     from graphplan.util.words import force_symbol
     mech = st.mech
-    nil = [f"{force_symbol('P_' + f.point, lang)} = 0" for f in mech.forces if f.stroke == "working"]
-    nil += [f"M_{{{mech.links[m.link].number}}} = 0" for m in mech.moments if m.stroke == "working"]
-    if not nil or bool(np.atleast_1d(working_stroke(st, np.atleast_1d(float(phi))))[0]):
+    bound = [f"P_{f.point}" for f in mech.forces if f.stroke != "both"]
+    bound += [f"M_{mech.links[m.link].number}" for m in mech.moments if m.stroke != "both"]
+    if not bound:
         return ""
-    nil = ", ".join(nil)
-    return f", {word('fs idle', lang)}: {nil}"
+    at = np.atleast_1d(float(phi))
+    working = np.atleast_1d(working_stroke(st, at))
+    on_work = bool(working[0])
+    if on_work and all(f.stroke == "working" for f in mech.forces if f.stroke != "both") and all(
+            m.stroke == "working" for m in mech.moments if m.stroke != "both"):
+        return ""
+    acting = [ld for ld in loads(st, st.solve(at), working) if ld.kind == "external"]
+    said = []
+    for name in dict.fromkeys(bound):
+        mine = [ld for ld in acting if ld.name == name]
+        couple = name.startswith("M_")
+        value = abs(sum(float(np.atleast_1d(ld.couple)[0]) for ld in mine)) if couple else \
+            abs(sum(complex(np.atleast_1d(ld.force)[0]) for ld in mine))
+        sym = force_symbol(name, lang)
+        said.append(f"{sym} = 0" if value < 1e-9 else f"{sym} = {num(value, lang, 4)} {unit('N·m' if couple else 'N', lang)}")
+    return f", {word('fs working' if on_work else 'fs idle', lang)}: {', '.join(said)}"
 
 
 SHORT_FORCE_MM = 10.0
