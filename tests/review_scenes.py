@@ -5561,3 +5561,77 @@ delta = 0.03
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+OWN_SPRING_PRESS53 = '''# Stop 53's own check (frc53b): a vertical crank-slider (a press) whose slider carries TWO forces, one per
+# stroke: 2400 N against its motion on the working stroke (down) and a return spring's 350 N against
+# its motion on the idle stroke; the force position on the idle stroke. I(0-1) -> II(2-3) RRP.
+title = "Кривошипно-повзунний прес із пружиною повернення (власна перевірка 53)"
+title_en = "Crank press with a return spring (own check 53)"
+designation = "ТММ.КП.53.700"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+g = { through = [0.02, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.07
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.4 }
+mass = 3
+inertia = 0.025
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 6
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 270
+output = "B"
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 2400
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "B"
+magnitude = 350
+stroke = "idle"
+direction = "oppose"
+'''

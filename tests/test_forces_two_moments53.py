@@ -49,3 +49,23 @@ def test_the_resistance_chart_names_the_lever_once_and_hatches_both_strokes(st):
     heights = {round(abs(q.points[1][1] - q.points[0][1]) * mu, 6) for q in rec.items if q.role == "hatch"}
     given = _by_stroke(st)
     assert sorted(heights) == pytest.approx(sorted(given.values())), heights
+
+
+def test_two_forces_on_one_slider_one_per_stroke():
+    """OWN_SPRING_PRESS53: 2400 N on the press's working stroke, a return spring's 350 N on its idle
+    stroke, both on B. The force position (idle) names P_B = 350 N; the chart names P_B once and
+    hatches both strokes, each as high as its stroke's given force."""
+    from graphplan.drawing.charts import resistance_record, turn
+    from graphplan.exact.kinetostatics import at_scene_angle
+    from graphplan.sheets.forces import force_position
+    from tests.review_scenes import OWN_SPRING_PRESS53
+    st = scene_study(OWN_SPRING_PRESS53)
+    given = {f.stroke: f.magnitude for f in st.mech.forces}
+    phi = float(at_scene_angle(st))
+    assert force_position(st, phi, "uk").endswith(f"холостий хід: P_{{B}} = {given['idle']:g} Н")
+    assert force_position(st, phi + 180.0, "en").endswith(f"working stroke: P_{{B}} = {given['working']:g} N")
+    rec = resistance_record(turn(st), lang="en")
+    assert [q.text for q in rec.items if q.kind == "text" and q.text.endswith(", N")] == ["P_{B}, N"]
+    mu = rec.scales["mu_P"]
+    heights = {round(abs(q.points[1][1] - q.points[0][1]) * mu, 6) for q in rec.items if q.role == "hatch"}
+    assert sorted(heights) == pytest.approx(sorted(given.values())), heights
