@@ -5486,3 +5486,245 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+TWO_MOMENTS53 = '''# review53: a rocking-coulisse (slotted-lever) pump drive in English: the crank O1A's block A slides in
+# the lever O2D's slot; a LARGE resistance moment on the lever on its IDLE stroke (a return spring/pump),
+# a small one on the working stroke.  I(0-1) -> II(2-3) RPR.
+title = "Кулісний привод насоса"
+title_en = "Slotted-lever pump drive"
+designation = "TMM.CP.53.600"
+lang = "en"
+
+[sheet]
+student = "Reviewer R."
+teacher = "Teacher T."
+group = "MB-53"
+organisation = "NUBiP of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0, -0.30]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.11
+rpm = 75
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.006
+
+[[link]]
+name = "A"
+number = 2
+joints = ["A"]
+slides_on = "O2D"
+mass = 0.8
+
+[[link]]
+name = "O2D"
+number = 3
+joints = ["O2"]
+length = 0.5
+points = { D = 1.0, S3 = 0.5 }
+mass = 7
+inertia = 0.15
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 240
+output = "O2D"
+working_stroke = "slow"
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 3
+magnitude = 40
+stroke = "working"
+direction = "oppose"
+
+[[moment]]
+link = 3
+magnitude = 260
+stroke = "idle"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.88
+synchronous_rpm = 1500
+'''
+
+
+INCLINED_ROCKER53 = '''# review53: a crank-slider whose slider B runs on an INCLINED guide (20°) that does not pass through the
+# crank's pivot; the slider's pin B drives a rod BC and a rocker O3C (RRR hung on the slider).
+# I(0-1) -> II(2-3) RRP -> II(4-5) RRR; crank clockwise.
+title = "Кривошипно-повзунний механізм з похилою напрямною і коромислом"
+title_en = "Crank-slider with an inclined guide and a rocker"
+designation = "ТММ.КП.53.300"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O3 = [0.36, 0.20]
+
+[frame.guides]
+g = { through = [0.05, -0.04], angle_deg = 20, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.06
+rpm = 240
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 1.5
+inertia = 0.001
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.35 }
+mass = 2.4
+inertia = 0.014
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 5
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.20
+points = { S4 = 0.5 }
+mass = 1.8
+inertia = 0.007
+
+[[link]]
+name = "O3C"
+number = 5
+joints = ["O3", "C"]
+length = 0.14
+points = { S5 = 0.5 }
+mass = 2.2
+inertia = 0.005
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 8]
+force_phi_deg = 90
+output = "B"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
+
+
+OWN_SPRING_PRESS53 = '''# Stop 53's own check (frc53b): a vertical crank-slider (a press) whose slider carries TWO forces, one per
+# stroke: 2400 N against its motion on the working stroke (down) and a return spring's 350 N against
+# its motion on the idle stroke; the force position on the idle stroke. I(0-1) -> II(2-3) RRP.
+title = "Кривошипно-повзунний прес із пружиною повернення (власна перевірка 53)"
+title_en = "Crank press with a return spring (own check 53)"
+designation = "ТММ.КП.53.700"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-53"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+g = { through = [0.02, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.07
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.5 }
+mass = 2
+inertia = 0.002
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.4 }
+mass = 3
+inertia = 0.025
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "g"
+mass = 6
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 270
+output = "B"
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 2400
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "B"
+magnitude = 350
+stroke = "idle"
+direction = "oppose"
+'''

@@ -886,7 +886,7 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     """Seed 000's diagram of the resistance force: |P| of the output's external force (else of the
     external forces) along the output's path
     over the cycle from position 0 (the stroke out, then back), so the working stroke carries the
-    force and the idle stroke lies on the axis — each position numbered once, under its own stroke
+    force and the idle stroke lies on the axis (unless a load acts on it too), the loaded spans hatched — each position numbered once, under its own stroke
     (the scene's ``positions.working_stroke``); None when the scene has no external force."""
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
     if not ext:
@@ -917,7 +917,8 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     mu_s = standard_scale(reach / width)
     top = float(np.max(force)) or 1.0
     mu_p = standard_scale(top / height)
-    name = ", ".join(ld.name for ld in ext)
+    # each symbol once: two [[moment]]s on one lever (one per stroke) are one M_3 (review 53 #4: "M₃, M₃")
+    name = ", ".join(dict.fromkeys(ld.name for ld in ext))
     rec = Record(f"resistance {name}")
     rec.scales.update({"mu_s": mu_s, "mu_P": mu_p})
     step = f"{name}(s)"
@@ -933,8 +934,10 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
         pts.append((X(k), y))
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
     every = max(1, n // 48)
-    for k in range(0, n, every):                      # the loaded stroke hatched down to the axis
-        if work[k] and force[k] > 0:
+    # the resistance hatched down to the axis where it acts, on either stroke (review 53 #4: a lever's
+    # 260 N·m on the idle stroke was left blank beside the working stroke's hatched 40 N·m)
+    for k in range(0, n, every):
+        if force[k] > 0:
             rec.segment((X(k), 0.0), (X(k), float(force[k] / mu_p)), role="hatch", layer="diagrams", step=step)
     # each stroke named under the axis, across its span
     cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]

@@ -111,19 +111,39 @@ def force_position(st: Study, phi: float, lang: str, short: bool = False) -> str
 
 
 def idle_words(st: Study, phi: float, lang: str) -> str:
-    """On the idle stroke, the terminal's words and the resistance that is then nil (review 11 #17):
-    ", idle stroke: P_D = 0"; nothing on the working stroke or without a stroke-bound force."""
+    """The stroke-bound loads acting at the force position, by the stroke it lies on (review 11 #17;
+    review 53 #1: two moments on one lever, one per stroke, were said "M_3 = 0" on the idle stroke
+    while its 260 N·m acted): ", idle stroke: P_D = 0", ", idle stroke: M_3 = 260 N·m". Each
+    ``[[force]]``/``[[moment]]`` bound to a stroke is named once by its symbol with the value it
+    has at the position (``kinetostatics.loads``: its magnitude on its own stroke, its profile's
+    factor, 0 on the other stroke; loads of one symbol summed). Nothing when no load is
+    stroke-bound, nor on the working stroke when every stroke-bound load is the working stroke's
+    (the tables give it)."""
     import numpy as np
 
-    from graphplan.exact.kinetostatics import working_stroke
+    from graphplan.exact.kinetostatics import loads, working_stroke
     from graphplan.util.words import force_symbol
     mech = st.mech
-    nil = [f"{force_symbol('P_' + f.point, lang)} = 0" for f in mech.forces if f.stroke == "working"]
-    nil += [f"M_{{{mech.links[m.link].number}}} = 0" for m in mech.moments if m.stroke == "working"]
-    if not nil or bool(np.atleast_1d(working_stroke(st, np.atleast_1d(float(phi))))[0]):
+    bound = [f"P_{f.point}" for f in mech.forces if f.stroke != "both"]
+    bound += [f"M_{mech.links[m.link].number}" for m in mech.moments if m.stroke != "both"]
+    if not bound:
         return ""
-    nil = ", ".join(nil)
-    return f", {word('fs idle', lang)}: {nil}"
+    at = np.atleast_1d(float(phi))
+    working = np.atleast_1d(working_stroke(st, at))
+    on_work = bool(working[0])
+    if on_work and all(f.stroke == "working" for f in mech.forces if f.stroke != "both") and all(
+            m.stroke == "working" for m in mech.moments if m.stroke != "both"):
+        return ""
+    acting = [ld for ld in loads(st, st.solve(at), working) if ld.kind == "external"]
+    said = []
+    for name in dict.fromkeys(bound):
+        mine = [ld for ld in acting if ld.name == name]
+        couple = name.startswith("M_")
+        value = abs(sum(float(np.atleast_1d(ld.couple)[0]) for ld in mine)) if couple else \
+            abs(sum(complex(np.atleast_1d(ld.force)[0]) for ld in mine))
+        sym = force_symbol(name, lang)
+        said.append(f"{sym} = 0" if value < 1e-9 else f"{sym} = {num(value, lang, 4)} {unit('N·m' if couple else 'N', lang)}")
+    return f", {word('fs working' if on_work else 'fs idle', lang)}: {', '.join(said)}"
 
 
 SHORT_FORCE_MM = 10.0
@@ -667,8 +687,18 @@ def _groups_node(shape: str, leaves: dict[str, list[Leaf]]):
     return Stack([Row([g, p], SPACE) for g, p in zip(leaves["groups"], leaves["forces"])], SPACE)
 
 
+def _chart_rows(charts: list, tail: list, wrap: int = 0) -> list[list]:
+    """The charts' row under the lever's (``tail`` at its end: the hodographs, the tables' column),
+    wrapped after every ``wrap`` charts (0: one row)."""
+    if wrap <= 0 or len(charts) <= wrap:
+        return [list(charts) + list(tail)]
+    rows = [list(charts[i:i + wrap]) for i in range(0, len(charts), wrap)]
+    rows[-1] += list(tail)
+    return rows
+
+
 def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: int = 3, groups=None, H=None,
-          cut: int = -1):
+          cut: int = -1, wrap: int = 0):
     """The force sheet's composition: the scheme beside the groups (each group a row: its drawing,
     its force plan), the acceleration plan and the lever, the charts; "column" — the tables' column
     the sheet's full height at the right; "bands" — the column under the groups' band; "low" — the
@@ -680,7 +710,10 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     at 60 mm beside its narrow groups). ``cut``: the charts in the lever's row (the rest in the row
     under it), −1 the shape's own count — the row wraps where the lever would be squeezed by the
     charts beside it while the row under them is half empty (ROCKING_BLOCK51: its lever 80 × 70 mm
-    between the acceleration plan and the M_зр chart, P_C's and Φ5's heads 2 mm apart)."""
+    between the acceleration plan and the M_зр chart, P_C's and Φ5's heads 2 mm apart). ``wrap``: at
+    most this many charts to a row under the lever's (0: one row; ``_one_sheet``: INCLINED_ROCKER53's
+    three charts, each at least 138 mm wide by its lettering, beside the 381 mm tables' column ran
+    6 mm over the A1 field at every scale, and the sheet became a set of two A1 sheets)."""
     S = leaves["scheme"][0]
     groups = _groups_node(shape, leaves) if groups is None else groups     # (a leaf of its size: a trial)
     shape = shape.removesuffix(ACROSS)
@@ -691,8 +724,8 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
     at = {k: H if k == hrow else [] for k in (1, 2, 3)}
     k = (2 if shape == "bands" else 1) if cut < 0 else cut
     if shape == "column":
-        rows = [Row([S, groups] + at[1], ROWS_GAP), Row([A, L] + charts[:k] + at[2], ROWS_GAP),
-                Row(charts[k:] + at[3], ROWS_GAP)]
+        rows = [Row([S, groups] + at[1], ROWS_GAP), Row([A, L] + charts[:k] + at[2], ROWS_GAP)] + [
+            Row(r, ROWS_GAP) for r in _chart_rows(charts[k:], at[3], wrap)]
         return Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)
     if shape in ("low", "lever up"):
         # the scheme and the groups across the sheet's full width, the column under them at the
@@ -700,12 +733,14 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
         # under them blank while its groups were drawn at 1:10 beside a 1:4 scheme); "lever up" —
         # the lever in the top row too, where the row beside the column leaves it no room
         up = [L] if shape == "lever up" else []
-        rows = [Row([A] + ([] if up else [L]) + charts[:k] + at[2], ROWS_GAP), Row(charts[k:] + at[3], ROWS_GAP)]
+        rows = [Row([A] + ([] if up else [L]) + charts[:k] + at[2], ROWS_GAP)] + [
+            Row(r, ROWS_GAP) for r in _chart_rows(charts[k:], at[3], wrap)]
         return Stack([Row([S, groups] + up + at[1], ROWS_GAP),
                       Row([Stack([r for r in rows if r.children], ROWS_GAP), C], ROWS_GAP, flush=True)],
                      ROWS_GAP, flush=True)
-    rows = [Row([S, groups, A] + at[1], ROWS_GAP), Row([L] + charts[:k] + at[2], ROWS_GAP),
-            Row(charts[k:] + at[3] + [C], ROWS_GAP, flush=True)]
+    low = _chart_rows(charts[k:], at[3] + [C], wrap)
+    rows = [Row([S, groups, A] + at[1], ROWS_GAP), Row([L] + charts[:k] + at[2], ROWS_GAP)] + [
+        Row(r, ROWS_GAP, flush=r is low[-1]) for r in low]
     return Stack(rows, ROWS_GAP, flush=True)
 
 
@@ -753,6 +788,7 @@ class Plan:
     counts: tuple[int, ...] = ()     # the tables in each of the column's parts, in reading order
     hrow: int = 3                    # the row the hodographs end (``_tree``)
     cut: int = -1                    # the charts in the lever's row (``_tree``; −1 the shape's own)
+    wrap: int = 0                    # at most this many charts to a row under the lever's (``_tree``; 0: one row)
     packed: bool = False             # a set: the drawings' rows side by side where they fit (``_packed``)
     where: tuple = ()                # a set: the drawings' names on each sheet (kept as drawings grow)
     plan_first: bool = True          # a set: the acceleration plan before the groups, else after them
@@ -862,9 +898,22 @@ def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
     return out
 
 
+CHARTS_WRAP = 2     # the charts two to a row where in one row no one-sheet composition fits (``_tree``)
+
+
 def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
+    """The best one-sheet composition (``_one_sheet_at``): the charts in one row, else — where none
+    fits so and the sheet has more charts than ``CHARTS_WRAP`` — wrapped ``CHARTS_WRAP`` to a row (A1
+    is one sheet: INCLINED_ROCKER53's three charts in a row beside its tables ran 6 mm over the field)."""
+    best = _one_sheet_at(nat, f)
+    if best is None and len(nat.families["charts"].sizes) > CHARTS_WRAP:
+        best = _one_sheet_at(nat, f, CHARTS_WRAP)
+    return best
+
+
+def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | None:
     """The best one-sheet composition (its score: the smallest of the main drawings' sizes against
-    their targets first), or None where none fits."""
+    their targets first), or None where none fits; ``wrap``: the charts' row wrapped (``_tree``)."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     nh = len(nat.families["hodographs"].sizes)
@@ -894,7 +943,7 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
                 for hrow in HROWS if nh else HROWS[:1]:
                     for hc in range(1, max(nh, 1) + 1):
                         for parts, C in enumerate(cols, 1):
-                            tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc], cut))
+                            tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc], cut, wrap))
                             if tw <= W + 1e-9 and th <= H + 1e-9:
                                 fill = min(W / tw, H / th)
                                 if found is None or fill > found[0] + 1e-9:
@@ -926,7 +975,7 @@ def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
                      round(sum(math.log(r) for r in rel), 6), factor == TABLES, -SHAPES.index(shape))
             _, hc, parts, hrow, cut = arranged(mu, shape)
             counts = tuple(len(g) for g in split(tabs, parts))
-            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow, cut=cut))
+            cand = (score, Plan(mu, factor, shape, hc, parts, 1, counts, hrow, cut=cut, wrap=wrap))
             if best is None or cand[0] > best[0]:
                 best = cand
     return best
@@ -1228,7 +1277,7 @@ def _within(dr: ForceDrafter, f: Form, p: Plan) -> bool:
         tables = [Leaf(name, record=rec) for name, rec in _tables(dr, p.mu, lang, p.tables)]
         lines = _notes_lines(dr, p.mu, lang)
         C = _column(f, tables, p.parts, lambda wd: _wh(note_block(lines, wd))[1], p.counts)[0]
-        tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut))
+        tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut, wrap=p.wrap))
         if tw > x1 - x0 + 1e-6 or th > y1 - y0 + 1e-6:
             return False
     return True
@@ -1523,7 +1572,7 @@ def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool
     x0, y0, x1, y1 = field_of(f)
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
     C = _column(f, tabs, p.parts, lambda w: notes_height(nat.notes, w))[0]
-    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut))
+    tw, th = extent(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut, wrap=p.wrap))
     return tw <= x1 - x0 + 1e-9 and th <= y1 - y0 + 1e-9
 
 
@@ -1788,7 +1837,7 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
     if p.sheets == 1:
         C, groups, width = _column(f, tables, p.parts, lambda wd: _wh(note_block(note_lines, wd))[1], p.counts)
         items, col_box = [], None
-        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut), region):
+        for leaf, b in _arranged(_tree(p.shape, leaves, p.hcols, C, p.hrow, cut=p.cut, wrap=p.wrap), region):
             if leaf is C:
                 col_box = b
             elif leaf.record is not None:
