@@ -67,3 +67,29 @@ def test_one_sign_convention_said_per_table_and_both_agree_with_the_closed_form(
 def test_english_tables_head_their_position_column_no(tables):
     assert tables["en"][0][1][0] == "No." and tables["en"][1][1][0] == "No."
     assert tables["uk"][0][1][0] == "№" and tables["uk"][1][1][0] == "№"
+
+
+def test_a_slider_drawn_against_its_guide_says_so_under_table_4():
+    """COMPRESSOR11: the piston's diagrams drawn + away from position 0, i.e. against its guide
+    (``drawn_sense`` −1): Table 4 says so under itself, and its "plan" and "exact" rows carry that
+    sign."""
+    import review_scenes
+
+    from conftest import scene_study
+    from graphplan.graphic.diagrams import chord_diagrams
+    from graphplan.graphic.plans import build_plans
+    st = scene_study(review_scenes.COMPRESSOR11)
+    d = chord_diagrams(st, divisions=12, L=200.0, H1=25.0, H2=30.0)
+    assert d.sign == -1
+    doc = plans_json(build_plans(st))
+    t4 = _cells(readings_table(d, doc, "en", 4, 0.5))
+    said = " ".join(r[0] for r in t4 if len(r) == 1).replace("\xa0", " ")
+    assert "+ away from position 0, against the guide" in said and "+ along the guide" in said
+    plan = next(r for r in t4 if r[0] == "plan")
+    exact = t4[t4.index(plan) + 1]
+    assert exact[0] == "exact"
+    for k, (p_, e_) in enumerate(zip(plan[1:], exact[1:])):      # the plan's v in the table's own sign
+        if p_ != "—" and abs(_value(e_)) > 0.05:
+            assert math.copysign(1, _value(p_)) == math.copysign(1, _value(e_)), k
+            # … which is the diagram's: + against the guide (the solver's v along it, turned)
+            assert math.copysign(1, _value(e_)) == -math.copysign(1, float(d.truth["v_at"][d.at_positions[k]])), k
