@@ -155,7 +155,7 @@ def test_table_1_gives_the_rulers_reading_and_the_value_to_three_figures(tmp_pat
         if q.kind == "text":
             rows.setdefault(round(q.points[0][1], 3), []).append(q)
     body = sorted(([q.text for q in sorted(r, key=lambda q: q.points[0][0])] for r in rows.values() if len(r) == 14),
-                  key=lambda r: r[0] != ("№" if lang == "uk" else "No"))
+                  key=lambda r: r[0] != ("№" if lang == "uk" else "No."))
     head = body.pop(0)
     assert len(body) == len(doc["positions"])            # a row per division
     body.sort(key=lambda r: int(r[0]))

@@ -223,7 +223,7 @@ def test_omega_and_epsilon_are_the_same_figures_on_the_sheet_and_in_the_terminal
     head = sheet[0]
     cols = [i for i, h in enumerate(head) if h.startswith("ω")]
     term = plans_table(plans, lang)
-    rows = _terminal_rows(term, "No" if lang == "en" else "№")
+    rows = _terminal_rows(term, "No." if lang == "en" else "№")
     assert len(cols) == 3                                   # ω2, ω3, ω4: the terminal's last three columns
     for r in sheet[1:]:
         mine = [r[i].replace("−", "-").rstrip("*") for i in cols]

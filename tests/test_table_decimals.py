@@ -102,7 +102,7 @@ def test_dynamics_table_1_one_count_a_column_and_the_terminals_cells(dynamics):
     m_c, m_d = head.index("M*_с, Н·м" if lang == "uk" else "M*_c, N·m"), head.index("M*_д, Н·м" if lang == "uk" else "M*_d, N·m")
     assert one_count([r[m_c] for r in body]) == one_count([r[m_d] for r in body])
     term = dynamics_table(f, lang).splitlines()
-    start = next(k for k, line in enumerate(term) if line.split()[:1] == ["№"])
+    start = next(k for k, line in enumerate(term) if line.split()[:1] == ["№" if lang == "uk" else "No."])
     for r, line in zip(body, term[start + 1:]):
         cells = line.split()
         assert cells[0] == r[0] and cells[2:] == r[1:], (cells, r)

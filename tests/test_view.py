@@ -304,7 +304,7 @@ def analyze_shown(phis: list[float], scene: Path = SHAPER, lang: str = "uk") -> 
     header: list[str] = []
     for line in r.stdout.splitlines():
         cells = line.split()
-        if cells[:2] in (["No", "φ,"], ["№", "φ,"]):
+        if cells[:2] in (["No.", "φ,"], ["№", "φ,"]):
             header = cells[3:]
         elif header and len(cells) == len(header) + 2 and cells[0].isdigit():
             out[phis[int(cells[0])]].update(zip(header, cells[2:]))

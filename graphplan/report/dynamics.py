@@ -281,7 +281,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
              "Aд гр." if lang == "uk" else "Ad gr.", gr, "ΔT", "δ, %")
     # the sheet's Table 1 cell for cell (table_columns), each column as wide as its widest entry
     widths = [max(len(n), *(len(c) for c in cols[k])) for n, k in zip(names, keys)]
-    out.append(f"{'№':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
+    out.append(f"{'№' if lang == 'uk' else 'No.':>3} " + " ".join(f"{n:>{wd}}" for n, wd in zip(names, widths)))
     for j, p in enumerate(doc["positions"]):
         out.append(f"{p['index']:>3} " + " ".join(f"{cols[k][j]:>{wd}}" for k, wd in zip(keys, widths)))
     out.append(f"  {_term(chords_note(doc, lang))}")

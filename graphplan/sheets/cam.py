@@ -34,7 +34,7 @@ WORDS = {
            "profile": "Cam profile (by inversion)",
            "av": "Diagrams {a}, {v} (graphical integration by chords)",
            "s": "Diagram {s} (its chords parallel to the rays from the pole P_2 of {v})", "table": "Table 1. Displacement, velocity analogue and "
-           "pressure angle at the divisions", "n": "No"},
+           "pressure angle at the divisions", "n": "No."},
 }
 
 

@@ -80,7 +80,7 @@ WORDS = {
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
            "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Mertsalov's method",
            "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
-           "n": "No", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
+           "n": "No.", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
            "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I^*_red = {c} kg·m²) already keep "

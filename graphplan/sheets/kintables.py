@@ -600,8 +600,12 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
              f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
-    def pct(e: float) -> str:
+    def pct(e: float, exact: str) -> str:
+        """δ, % of a reading — "—" where the exact value is printed as zero (the sheet's rule, as
+        Tables 1–2: δ of a zero is not computed; an extreme position's v = 0, review 53 #9)."""
         nonlocal marked
+        if exact == "—" or float(exact.replace(",", ".").replace("−", "-")) == 0.0:
+            return "—"
         cell = percent(e, lang=lang)
         if abs(e) > LAB_LIMIT:
             marked = True
@@ -636,8 +640,8 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
             return fixed(0.0, lang, d[key])
         return written(r[key], d[key], lang)
     cols = [[str(r["position"]), cell(r, "s"), cell(r, "s_exact"), cell(r, "v"), cell(r, "v_plan"),
-             cell(r, "v_exact"), pct(r["delta_v"]), cell(r, "a"), cell(r, "a_plan"), cell(r, "a_exact"),
-             pct(r["delta_a"])] for r in read]
+             cell(r, "v_exact"), pct(r["delta_v"], cell(r, "v_exact")), cell(r, "a"), cell(r, "a_plan"),
+             cell(r, "a_exact"), pct(r["delta_a"], cell(r, "a_exact"))] for r in read]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):
@@ -651,7 +655,13 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
             b, top = rec.bounds(), part.bounds()[3]
             rec.extend(part.moved(0.0, b[1] - 3.0 - top))
     assert rec is not None
-    return footnoted(rec, [w('readings_delta') + (w('readings_mark') if marked else "")])
+    said = [w('readings_delta') + (w('readings_mark') if marked else "")]
+    if k_ < 0:     # the diagrams' sense against the plans' (review 53 #10: ω5 −1,38 in Table 1, +1,38 here)
+        m = sum(1 for pos in doc["positions"] if pos.get("acceleration"))
+        t = "1" if m == 0 else "1,\u00a02" if m == 1 else f"1–{1 + m}"
+        said.append(w('readings_signs_back', t=t) if out_kind == "slide"
+                    else w('readings_signs_cw', sym=diag.symbols[0], n=diag.sub, t=t))
+    return footnoted(rec, said)
 
 
 def phi_convention(phi0: float, lang: str) -> str:

@@ -106,7 +106,7 @@ def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
     k = 1.0 if rocking else 1000.0
     from graphplan.drawing.cam import symbols
     q = symbols(rocking)                    # rocking: ψ, dψ/dφ per radian of the cam's turn, as on the sheet
-    header = [["№", "φ, °", f"{q['s']}, {unit}", f"{q['v']}, {unit}/{'рад' if uk else 'rad'}", "ϑ, °", f"R, {mm}"]]
+    header = [["№" if uk else "No.", "φ, °", f"{q['s']}, {unit}", f"{q['v']}, {unit}/{'рад' if uk else 'rad'}", "ϑ, °", f"R, {mm}"]]
     rows = [[str(p["index"]), fixed(p["phi_deg"], lang, 1), num(p["values"]["s"] * k, lang),
              num(p["values"]["ds_dphi"] * k, lang), fixed(p["values"]["theta"], lang, 2),
              fixed(p["values"]["R"] * 1000, lang, 2)] for p in key["positions"]]

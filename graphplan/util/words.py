@@ -269,13 +269,21 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin real": ('l, м', 'l, m'),
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
-    "kin no": ('№', '№'),
+    "kin no": ('№', 'No.'),      # review 53 #11: "№" is not an English sign
     "kin readings": ('Таблиця {n}. Діаграми в положеннях поруч з планами', 'Table {n}. Diagrams read at the positions, beside the plans'),
     "kin readings_plan": ('план', 'plan'),
     "kin readings_exact": ('точно', 'exact'),
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
+    "kin readings_signs_cw": ('Знаки {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} тут (і рядки «план»): +\u00a0за годинниковою стрілкою, '
+                              'як на діаграмах; у таблицях {t}: +\u00a0проти годинникової стрілки',
+                              'Signs of {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} here (the "plan" rows too): +\u00a0clockwise, as '
+                              'on the diagrams; in Tables {t}: +\u00a0counter-clockwise'),
+    "kin readings_signs_back": ('Знаки s, v, a тут (і рядки «план»): +\u00a0від положення 0, проти напрямної, як на '
+                                'діаграмах; у таблицях {t}: +\u00a0у напрямку напрямної',
+                                'Signs of s, v, a here (the "plan" rows too): +\u00a0away from position 0, against the '
+                                'guide, as on the diagrams; in Tables {t}: +\u00a0along the guide'),
     "kin dash": ('«—» у таблицях: мм для ε немає; δ не обчислено, де вектор коротший за півподілки лінійки або '
                  'точне значення ≈ 0',
                  '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
@@ -351,7 +359,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "chord ordinates": ("Ординати методу хорд (посередині інтервалів)",
                         "The chords' ordinates (at the middles of the intervals)"),
     "chosen": ("У двох заданих положеннях", "At the two chosen positions"),
-    "no": ("№", "No"), "interval": ("інт.", "int."), "graph short": ("графічно", "graph."),
+    "no": ("№", "No."), "interval": ("інт.", "int."), "graph short": ("графічно", "graph."),
     "exact": ("точно", "exact"), "error pct": ("δ, %", "δ, %"),
     "integration": ("Графічне інтегрування (зворотна побудова)",
                     "Graphical integration (the reverse construction)"),
