@@ -232,6 +232,14 @@ def _shared(tag: str, build):
             fcntl.flock(lock, fcntl.LOCK_UN)
 
 
+def shared(tag: str, build):
+    """``build()`` made once per test run and shared by its workers (``_shared``) — for a module
+    fixture's costly value: under ``--dist worksteal`` a file's tests fall to both workers, and each
+    built the module's fixtures (a force sheet's plan 3–16 s of CPU). ``tag`` names it in the run:
+    the module, the fixture and its parameter. Read it, never change it."""
+    return _shared(tag, build)
+
+
 @functools.lru_cache(maxsize=48)
 def _example_sheet(name: str, kind: str, fmt: str, lang: str):
     from graphplan.sheets.compose import SheetOptions
@@ -252,6 +260,72 @@ def example_composed(name: str, kind: str = "kinematics", fmt: str = "A1", lang:
     from graphplan.sheets.form import form
     return _shared(f"composed {name} {kind} {fmt} {lang}",
                    lambda: composed(kind, example(name), form(fmt), SheetOptions(lang=lang, sheet=kind)))
+
+
+def scene_sheet(text: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk", numbered: bool = False,
+                **options):
+    """A scene's sheet (or set) given as its text (tests/review_scenes.py), composed once per test run
+    and shared by every test and module that asks with the same arguments (in-process, and across the
+    workers through ``_shared``): ``composed`` (not numbered) unless ``numbered``, then as ``BUILDERS``
+    numbers it. ``options``: the rest of ``SheetOptions`` (positions, accel, precision). The same
+    review scenes' sheets were composed again in a dozen files (1–12 s of CPU each). Read it, never
+    change it: a test that changes a sheet, or checks the build itself (its time, the warnings it
+    emits), builds its own."""
+    return _scene_sheet(text, kind, fmt, lang, numbered,
+                        tuple(sorted((k, tuple(v) if isinstance(v, list) else v) for k, v in options.items())))
+
+
+@functools.lru_cache(maxsize=32)
+def _scene_sheet(text: str, kind: str, fmt: str, lang: str, numbered: bool, options: tuple):
+    import hashlib
+
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+
+    def build():
+        opts = SheetOptions(lang=lang, sheet=kind,
+                            **{k: list(v) if isinstance(v, tuple) else v for k, v in options})
+        scene = scene_study(text)
+        return (BUILDERS[kind] if numbered else functools.partial(composed, kind))(scene, form(fmt), opts)
+    digest = hashlib.sha1(text.encode()).hexdigest()
+    return _shared(f"scene {digest} {kind} {fmt} {lang} {numbered} {options!r}", build)
+
+
+def scene_plan(text: str, kind: str = "kinematics", fmt: str = "A1", lang: str = "uk", **options):
+    """A scene's (text's) sheet plan — ``sheets.kinematics.plan`` or ``sheets.forces.plan``: (Plan,
+    Natural, Drafter) — made once per test run and shared like ``scene_sheet`` (a force plan is
+    2–5 s of CPU, and the same scenes' plans were made again in a dozen files). Read it, never
+    change it."""
+    return _scene_plan(text, kind, fmt, lang,
+                       tuple(sorted((k, tuple(v) if isinstance(v, list) else v) for k, v in options.items())))
+
+
+@functools.lru_cache(maxsize=32)
+def _scene_plan(text: str, kind: str, fmt: str, lang: str, options: tuple):
+    import hashlib
+    import importlib
+
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    opts = SheetOptions(lang=lang, sheet=kind, **{k: list(v) if isinstance(v, tuple) else v for k, v in options})
+    plan = importlib.import_module(f"graphplan.sheets.{kind}").plan
+    digest = hashlib.sha1(text.encode()).hexdigest()
+    return _shared(f"plan {digest} {fmt} {opts!r}", lambda: plan(scene_study(text), form(fmt), opts))
+
+
+def cli(*argv: str) -> tuple[int, str, str]:
+    """``fuzz_scenes.run(argv)`` — a command that writes no file, run once per test run and shared
+    by the tests that ask for the same command line (``graphplan cam X --json`` repeats the A1 sheet's
+    scale search, 2–3 s of CPU): (exit code, stdout, stderr with every warning the run raised).
+    A test of what a command writes, or of how long it takes, runs it itself."""
+    return _cli(tuple(str(a) for a in argv))
+
+
+@functools.lru_cache(maxsize=16)
+def _cli(argv: tuple[str, ...]) -> tuple[int, str, str]:
+    from fuzz_scenes import run
+    return _shared("cli " + "\0".join(argv), lambda: run(list(argv)))
 
 
 def cam_constructed(text: str, tmp_path_factory, name: str = "cam"):

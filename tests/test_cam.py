@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, cli
 from fuzz_scenes import check_run, run
 from graphplan.exact import cam as X
 from graphplan.graphic.cam import construct
@@ -170,7 +170,7 @@ def test_the_construction_converges_to_the_exact_solution(path):
 # -- the command ---------------------------------------------------------------------------------------------
 
 def test_cam_json_holds_the_contracts_fields():
-    code, out, err = run(["cam", str(TRANSLATING), "--json"])
+    code, out, err = cli("cam", TRANSLATING, "--json")
     doc = check_run(["cam", "--json"], code, out, err)
     for key in ("scene", "follower", "roller_radius_m", "omega_rad_s", "stroke_m", "phases_deg", "laws",
                 "pressure_angle_allowed_deg", "base_radius_min_m", "base_radius_m", "offset_m", "positions",
@@ -182,7 +182,7 @@ def test_cam_json_holds_the_contracts_fields():
     assert set(p["error_pct"]) == {"s", "ds_dphi", "pressure_angle"}
     assert doc["base_radius_m"] >= doc["base_radius_min_m"]
     assert doc["positions"][0]["exact"]["radius_m"] == pytest.approx(doc["base_radius_m"])
-    code, out, err = run(["cam", str(ROCKING), "--json"])
+    code, out, err = cli("cam", ROCKING, "--json")
     doc = check_run(["cam", "--json"], code, out, err)
     assert {"swing_deg", "arm_m", "centre_distance_m"} <= set(doc)
 

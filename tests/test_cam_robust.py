@@ -8,7 +8,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import ROOT
+from conftest import ROOT, cli
 from fuzz_scenes import check_run, run
 from graphplan.exact import cam as X
 from graphplan.model.cam import build
@@ -233,7 +233,7 @@ def test_the_largest_pressure_angle_is_the_phases_maximum():
     """cam_translating.toml: the rise's cosine law peaks between divisions — the JSON's largest pressure
     angle is the maximum over the continuous phase (tg ϑ = (ds/dφ − e)/(s0 + s) on a 1e-5° grid here),
     above the divisions' largest, which the table keeps."""
-    code, out, err = run(["cam", str(ROOT / "examples" / "cam_translating.toml"), "--json"])
+    code, out, err = cli("cam", ROOT / "examples" / "cam_translating.toml", "--json")
     doc = check_run(["cam", "--json"], code, out, err)
     R0, e, h = doc["base_radius_m"], doc["offset_m"], doc["stroke_m"]
     s0 = math.sqrt(R0 * R0 - e * e)

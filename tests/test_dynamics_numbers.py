@@ -29,9 +29,8 @@ def _args(lang: str = "uk"):
 @pytest.fixture(scope="module")
 def dipping():
     """Composed alone (``conftest.composed``: no test here reads the project's numbering)."""
-    from conftest import composed
-    from graphplan.sheets.form import form
-    return composed("dynamics", scene_study(DIPPING), form("A1"), _args())
+    from conftest import scene_sheet
+    return scene_sheet(DIPPING, "dynamics", "A1", _args().lang)
 
 
 def _numbers(rec):

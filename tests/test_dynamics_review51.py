@@ -267,14 +267,9 @@ def test_the_yoke_whose_slot_runs_through_its_rod_point_draws_its_position_plan(
 @pytest.fixture(scope="module")
 def own_sheet():
     """YOKE_ROCKER51's A1 dynamics sheet (uk) composed alone (``conftest.composed``)."""
-    from types import SimpleNamespace
-
-    from conftest import composed
-    from graphplan.sheets.form import form
+    from conftest import scene_sheet
     from review_scenes import YOKE_ROCKER51
-    st = scene_study(YOKE_ROCKER51)
-    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
-    return composed("dynamics", st, form("A1"), args)
+    return scene_sheet(YOKE_ROCKER51, "dynamics", "A1", "uk", precision=0.5)
 
 
 @pytest.mark.slow                     # the A1 sheet composed: ~6 s of CPU

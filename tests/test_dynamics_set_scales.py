@@ -70,11 +70,10 @@ def _args():
 
 @pytest.fixture(scope="module")
 def compressor():
+    from conftest import scene_sheet
     from graphplan.exact.dynamics import analyse
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
     st = scene_study(COMPRESSOR)
-    return st, analyse(st, None), BUILDERS["dynamics"](st, form("A3"), _args())
+    return st, analyse(st, None), scene_sheet(COMPRESSOR, "dynamics", "A3", _args().lang, numbered=True)
 
 
 @pytest.fixture(scope="module")

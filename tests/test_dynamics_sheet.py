@@ -6,12 +6,11 @@ from __future__ import annotations
 
 import math
 import re
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from conftest import composed, scene_study
+from conftest import scene_sheet
 from graphplan.util.markup import plain, runs
 
 SIXBAR = """title = "Шестиланковий важільний механізм преса"
@@ -181,13 +180,10 @@ def sheets():
     """The three dynamics sheets, each composed alone (``conftest.composed``; no test here reads the
     project's numbering, which would compose the six-bar's and the crank-slider's kinematics and force
     sheets to count them: 24 of the fixture's 31 s of CPU)."""
-    from graphplan.sheets.form import form
     out = {}
     for name, text, langs in (("sixbar", SIXBAR, ("uk", "en")), ("offset", OFFSET, ("uk",))):
-        st = scene_study(text)
         for lang in langs:
-            args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang=lang, sheet="dynamics")
-            out[name, lang] = composed("dynamics", st, form("A1"), args)
+            out[name, lang] = scene_sheet(text, "dynamics", "A1", lang, precision=0.5)
     return out
 
 

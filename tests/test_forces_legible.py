@@ -22,9 +22,13 @@ def coulisse():
 
 @pytest.fixture(scope="module")
 def a1(coulisse):
+    from conftest import shared
     from graphplan.sheets import forces
-    p, nat, dr = forces.plan(coulisse, form("A1"), SheetOptions(sheet="forces"))
-    return p, dr, dr.drawings(p.mu, "en")
+
+    def build():
+        p, nat, dr = forces.plan(coulisse, form("A1"), SheetOptions(sheet="forces"))
+        return p, dr, dr.drawings(p.mu, "en")
+    return shared("test_forces_legible.a1", build)
 
 
 def _arrows(rec):

@@ -12,12 +12,9 @@ from review_scenes import PRESS4 as PRESS     # the fourth review's six-bar pres
 @pytest.fixture(scope="module")
 def press():
     """The press's A1 force sheet: its plan and its drafter."""
-    from graphplan.sheets import forces as sf
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    st = scene_study(PRESS)
-    p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return st, p, dr
+    from conftest import scene_plan
+    p, nat, dr = scene_plan(PRESS, "forces", "A1", precision=0.5)
+    return scene_study(PRESS), p, dr
 
 
 def _strays(rec, lang: str) -> list:

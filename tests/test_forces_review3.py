@@ -80,12 +80,9 @@ synchronous_rpm = 1000
 @pytest.fixture(scope="module")
 def loom_a1():
     """The loom's A1 force sheet: its plan and drawings."""
-    from graphplan.sheets import forces as sf
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    st = scene_study(LOOM)
-    p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return st, p, dr, dr.drawings(p.mu, "uk")
+    from conftest import scene_plan, shared
+    p, nat, dr = scene_plan(LOOM, "forces", "A1", precision=0.5)
+    return scene_study(LOOM), p, dr, shared("test_forces_review3.loom_a1", lambda: dr.drawings(p.mu, "uk"))
 
 
 @pytest.fixture(scope="module")

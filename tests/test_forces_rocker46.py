@@ -28,9 +28,13 @@ def rocker():
     from graphplan.sheets import forces as sf
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
-    st = scene_study(ROCKER46)
-    p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return {"st": st, "p": p, "dr": dr, "fp": dr.groups_fp(p.mu), "drawings": dr.drawings(p.mu, "uk")}
+    from conftest import shared
+
+    def build():
+        st = scene_study(ROCKER46)
+        p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+        return {"st": st, "p": p, "dr": dr, "fp": dr.groups_fp(p.mu), "drawings": dr.drawings(p.mu, "uk")}
+    return shared("test_forces_rocker46.rocker", build)
 
 
 def _loads_mm(rec) -> dict[str, float]:

@@ -34,10 +34,14 @@ def sheet(request):
     from graphplan.sheets import forces as sf
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
-    st = _study(request.param)
-    p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return {"st": st, "fp": dr.groups_fp(p.mu), "drawings": dr.drawings(p.mu, "uk"),
-            "tables": sf._tables(dr, p.mu, "uk", p.tables), "name": request.param}
+    from conftest import shared
+
+    def build():
+        st = _study(request.param)
+        p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+        return {"st": st, "fp": dr.groups_fp(p.mu), "drawings": dr.drawings(p.mu, "uk"),
+                "tables": sf._tables(dr, p.mu, "uk", p.tables), "name": request.param}
+    return shared(f"test_forces_sheet.sheet[{request.param}]", build)
 
 
 def _numbers(mech, links) -> set[int]:

@@ -19,10 +19,11 @@ def sheet46(tmp_path_factory):
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import build_gears_sheet
+    from conftest import shared
     path = tmp_path_factory.mktemp("g46") / "gears.toml"
     path.write_text(GEARS46, encoding="utf-8")
     g = load(path)
-    return g, solve(g), build_gears_sheet(g, form("A1"), SheetOptions(lang="en"))
+    return g, solve(g), shared("test_gears_review46.sheet46", lambda: build_gears_sheet(g, form("A1"), SheetOptions(lang="en")))
 
 
 @pytest.fixture(scope="module")

@@ -38,11 +38,15 @@ def planned(request):
     from graphplan.sheets import forces as sf
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
-    st = _study(request.param)
-    f = form("A1")
-    p, nat, dr = sf.plan(st, f, SheetOptions(precision=0.5, sheet="forces"))
-    return {"name": request.param, "st": st, "f": f, "plan": p, "nat": nat, "dr": dr,
-            "drawings": dr.drawings(p.mu, "uk")}
+    from conftest import shared
+
+    def build():
+        st = _study(request.param)
+        f = form("A1")
+        p, nat, dr = sf.plan(st, f, SheetOptions(precision=0.5, sheet="forces"))
+        return {"name": request.param, "st": st, "f": f, "plan": p, "nat": nat, "dr": dr,
+                "drawings": dr.drawings(p.mu, "uk")}
+    return shared(f"test_lever_hodographs.planned[{request.param}]", build)
 
 
 def test_the_lever_is_as_large_as_its_cell_allows(planned):

@@ -36,12 +36,9 @@ def _gap(text, z: complex) -> float:
 
 @pytest.fixture(scope="module")
 def force_drawings():
-    from graphplan.sheets import forces as sf
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    st = scene_study(FOURBAR)
-    p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return dr.groups_fp(p.mu), dr.drawings(p.mu, "uk")
+    from conftest import scene_plan, shared
+    p, _, dr = scene_plan(FOURBAR, "forces", "A1", precision=0.5)
+    return shared("test_link_points.force_drawings", lambda: (dr.groups_fp(p.mu), dr.drawings(p.mu, "uk")))
 
 
 @pytest.mark.parametrize("which", ["scheme", "groups"])

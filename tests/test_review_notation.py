@@ -23,10 +23,14 @@ def sixbar_forces():
     from graphplan.sheets import forces as sf
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
-    st = scene_study(SIXBAR)
-    p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
-    return {"st": st, "fp": dr.groups_fp(p.mu), "dr": dr, "mu": p.mu,
-            "tables": dict(sf._tables(dr, p.mu, "uk", p.tables))}
+    from conftest import shared
+
+    def build():
+        st = scene_study(SIXBAR)
+        p, _, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+        return {"st": st, "fp": dr.groups_fp(p.mu), "dr": dr, "mu": p.mu,
+                "tables": dict(sf._tables(dr, p.mu, "uk", p.tables))}
+    return shared("test_review_notation.sixbar_forces", build)
 
 
 def _row(rec, first: str) -> list[str]:
@@ -80,16 +84,9 @@ def test_a_tangential_component_is_tabulated_as_seed_000_does(sixbar_forces):
 @pytest.fixture(scope="module")
 def offset_sheets():
     """The offset press's three A1 sheets in both languages (the crank turning clockwise)."""
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import build_dynamics_sheet, build_forces_sheet, build_kinematics_sheet
-    st = scene_study(OFFSET_SLIDER)
-    out = {}
-    for lang in ("uk", "en"):
-        for name, build in (("kinematics", build_kinematics_sheet), ("forces", build_forces_sheet),
-                            ("dynamics", build_dynamics_sheet)):
-            out[name, lang] = build(st, form("A1"), SheetOptions(precision=0.5, sheet=name, lang=lang))
-    return out
+    from conftest import scene_sheet
+    return {(name, lang): scene_sheet(OFFSET_SLIDER, name, "A1", lang, precision=0.5)
+            for lang in ("uk", "en") for name in ("kinematics", "forces", "dynamics")}
 
 
 def _texts(sheet) -> list:
