@@ -62,3 +62,18 @@ def test_gears53s_a3_set_letters_all_three_tables_3_5_mm(lang):
     assert set(got) == set(TABLES)
     for name, sizes in got.items():
         assert sizes == {3.5}, (name, sizes)
+
+
+@pytest.mark.parametrize("text", ["r_a", "r_b", "r_w", "r_f", "r_{w1}"])
+def test_an_index_after_r_stands_under_its_arm(text):
+    """GEARS50's en A3 Table 1: the a of r_a set at r's full advance hung 0,6 mm right of the arm's end and
+    1,7 mm off the stem — a word apart from its letter (the overprint checker read r and a as two words
+    whose boxes overlapped). The index's ink now starts at the arm's end (not further right), right of the
+    stem's middle (not tucked into a ligature "ra"), and stays under the arm (its top, a tall b or f too,
+    under 0,6 of r's height: the arm's curve comes down to about 0,75 of it), measured on the drawn ink at
+    3,5 mm."""
+    from graphplan.graphic.record import ink_boxes
+    r, index = ink_boxes(text, 3.5)[:2]
+    assert index[0] <= r[2] + 0.05
+    assert index[0] >= (r[0] + r[2]) / 2
+    assert index[3] < 0.6 * r[3]
