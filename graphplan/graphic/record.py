@@ -356,6 +356,7 @@ BOWLED = "PРF"       # … of them those whose bowl or bar ends at about half t
 BOWL_TOP = 0.35      # an index reaching higher than this (of the letter height) would meet that bowl (a capital, b, d: 0.4; з 0.30)
 BOWL_GAP = 0.08      # the gap it keeps from the letter's ink then, of the letter height
 PRIMES = "'′″"       # a prime's index stands under it (``sub_kern``)
+ARMED = "r"          # lowercase letters open below an arm at their top: the index starts under the arm's end
 
 
 def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
@@ -368,10 +369,19 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl. After a prime
     (z′₂, p′_ω, μ′_ω) the index stands under the prime, as a typesetter stacks z'_2 (the prime high,
     the index low, both after the letter): set after the prime's advance it hangs apart from its
-    letter, read as a word of its own beside the primed letter (GEARS_B47's notes)."""
+    letter, read as a word of its own beside the primed letter (GEARS_B47's notes). After a lowercase
+    r (``ARMED``: open below its arm, at the x-height) the index's ink starts under the arm's end, not
+    tucked further (r_a would read as a ligature "ra")."""
     if prev in PRIMES:
         m = _metrics()
         return -m["advance"].get(prev, m["missing"]) * em(size)
+    if prev in ARMED:             # (stop 53: the a of r_a at the full advance hung 0,6 mm right of the
+        m = _metrics()            # arm, 1,7 mm off the stem, read as a word apart — a short index
+        box, cb = m["boxes"].get(prev), m["boxes"].get(c)     # after an open r, as P's once)
+        if box is None or cb is None:
+            return 0.0
+        adv = m["advance"].get(prev, m["missing"])
+        return min(0.0, box[2] * em(size) - (adv * em(size) + cb[0] * em(sub)))
     if prev not in TUCKED:
         return 0.0
     m = _metrics()

@@ -900,8 +900,8 @@ def _blocks(g: Gears, sol, mesh, vel, plan, lang: str) -> tuple[list[Leaf], list
 
 def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, more, lang: str,
          lam: Leaf | None = None):
-    """The set's sheets: the fewest of the tables as the other sheets draw theirs or at the ruled
-    size, the meshing with ``more`` teeth or its three — the larger tables, then more teeth, where
+    """The set's sheets: the fewest with the tables as the other sheets draw theirs (at the ruled
+    size only where no set holds those), the meshing with ``more`` teeth or its three — the larger tables, then more teeth, where
     that costs no sheet —, each part of the notes by its tables (the pair's, the train's), ``lam``
     (the λ diagrams with a longer unit) where their sheet holds it. None when a drawing is larger
     than a sheet."""
@@ -912,11 +912,18 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
     lines = dict(zip(names, parts))
     lines["data"] = data
     names = ["data"] + names
+    # the tables as the other sheets draw theirs (3,5-mm letters in 8,4- or 7-mm rows), the ruled 2,5-mm
+    # letters only where no set holds those: a set one sheet longer with readable tables rather (stop 52:
+    # the set knew only 8,4-mm rows or the ruled size — GEARS52's A2 and A3 tables 2,5 mm beside 3,5-mm
+    # notes; stop 53: the fewest sheets still took the ruled tables for GEARS53's A3, GEARS52's A2 and
+    # GEARS51's A3 sets, one sheet saved)
     tried = []
-    for k in SIZES:                       # (stop 52: the set knew only 8,4-mm rows or the ruled 2,5-mm
-        grown = [Leaf(t.name, record=_sized(t.record, k)) for t in tables]      # letters — GEARS52's
-        width = max([TITLE] + [t.w for t in grown])                              # A2 and A3 tables 2,5 mm
-        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]   # beside 3,5-mm notes)
+    for k in SIZES:
+        if k == 1.0 and any(t is not None for t in tried):
+            break
+        grown = [Leaf(t.name, record=_sized(t.record, k)) for t in tables]
+        width = max([TITLE] + [t.w for t in grown])
+        side = grown + [Leaf(n, record=note_block(lines[n], width)) for n in names]
         for m in ([more] if more is not None else []) + [None]:
             d = [Leaf("meshing", record=meshing_leaf(m, lang)) if (m is not None and t.name == "meshing") else t
                  for t in drawings]
