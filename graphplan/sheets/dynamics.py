@@ -243,7 +243,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
              # L named with its length: "2π/L" alone left a teacher asking which L (stop 50)
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, L = {num(doc['L_mm'], lang)} {mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
-             f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
+             energy_scales_note(s, lang) + f", μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
@@ -292,6 +292,17 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def energy_scales_note(s: dict, lang: str) -> str:
+    """μ_A = μ_M·μ_φ·H, and ΔT's μ_T: the same, or its own where ΔT(φ) is redrawn larger
+    (graphic.flywheel ``own_energy_scale``: a small ΔT read between the work diagrams)."""
+    J, mm = ("Дж", "мм") if lang == "uk" else ("J", "mm")
+    if s["mu_T"] == s["mu_A"]:
+        return f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}"
+    own = "ΔT(φ) перенесено у власному масштабі" if lang == "uk" else "ΔT(φ) redrawn at its own scale"
+    return (f"μ_A = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_T = {num(s['mu_T'], lang)} {J}/{mm} "
+            f"({own})")
 
 
 def short_note(short: Shortfall, lang: str) -> str:
