@@ -862,11 +862,14 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         tw, th = extent(_tree(shape, leaves, C, foot_))
         return tw <= W + 1e-9 and th <= H + 1e-9
 
+    floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
         for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
             if k > start and fit(k) is None:  # its one A1 sheet came out as three)
                 continue
+            if abs(built(*sizes[k]).kl) < floor - 1e-9:   # shrunk below reading: a set of sheets instead
+                break
             got = held(*sizes[k])
             if got is not None:
                 return got
@@ -991,6 +994,18 @@ def _fits_first(f: Form, b: Leaf) -> bool:
     x0, y0, x1, y1 = field_of(f)
     k = keep_out(f)
     return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
+
+
+def one_sheet_floor(st: Study, dyn, f: Form, args) -> float:
+    """The least |kl| (mm) a sheet smaller than A1 may read the flywheel off where it holds the whole
+    analysis on one sheet: a set's floor (the ruler's ``precision`` over ``ORDERED_READ``: I_fl ∝ |kl|
+    read to 2 %), never more than the A1 sheet's own |kl|; 0 on A1. LAYOUT.md: "a drawing shrunk below
+    its legibility minimum to fit is not (use a set of sheets then)" — LINK53's one A2 sheet read
+    |kl| = 18 mm, its energy–mass diagram 11 mm wide, against 74 mm on A1."""
+    target = _a1_kl(st, dyn, f, args)
+    if target is None:
+        return 0.0
+    return min(target, args.precision / ORDERED_READ)
 
 
 def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
