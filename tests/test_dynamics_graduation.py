@@ -78,16 +78,16 @@ def test_every_ordinate_axis_is_graduated_in_round_values_where_mu_puts_them(fly
     a_axis = [p for p in m.items if p.kind == "vector" and p.step == "axes A"
               and abs(p.points[0][1] - p.points[1][1]) < 1e-9][0]      # the work diagram's φ axis
     _check(*_axis(m, "A graduation"), f.mu_A, origin=a_axis.points[0][1])
-    _check(*_axis(recs["energy"], "ΔT graduation"), f.mu_A)
+    _check(*_axis(recs["energy"], "ΔT graduation"), f.mu_T)
     w = recs["wittenbauer"]
     # the energy–mass diagram's axes lettered too (review 8: its I* axis had ticks and no values), among
     # its projections where they crowd it (broken under the values)
     _check(*_axis(w, "I* graduation", vertical=False), f.mu_I)
     # its ΔT axis ticked at ΔT(φ)'s values (the same μ_T, the same heights) and lettered
     lettered, ticks = _axis(w, "ΔT graduation")
-    _check(lettered, ticks, f.mu_A)
-    beside = [at * f.mu_A for _, at in _axis(recs["energy"], "ΔT graduation")[0]]
-    assert len(ticks) >= 2 and {round(t * f.mu_A, 6) for t in ticks} >= {round(v, 6) for v in beside}
+    _check(lettered, ticks, f.mu_T)
+    beside = [at * f.mu_T for _, at in _axis(recs["energy"], "ΔT graduation")[0]]
+    assert len(ticks) >= 2 and {round(t * f.mu_T, 6) for t in ticks} >= {round(v, 6) for v in beside}
     i_values = [(_value(p.text), p.points[0][0]) for p in recs["inertia"].items
                 if p.kind == "text" and p.step == "I* graduation"]
     assert len(i_values) >= 2 and all(v == pytest.approx(x * f.mu_I) for v, x in i_values)

@@ -58,7 +58,7 @@ def test_the_approximate_rows_numbers_give_its_value(built):
     # lower (higher) than the highest (lowest) ordinate the curve passes through, and near the exact
     # ΔT(φ) = M*_d·φ − A_c(φ)'s extremes — within 3 % of its span (the chords' and the ruler's error)
     gr = [p["graphical"]["energy"] for p in doc["positions"]]
-    step = 0.5 * f.mu_A * max(f.precision, 1e-9)
+    step = 0.5 * f.mu_T * max(f.precision, 1e-9)
     assert hi >= max(gr) - step - 1e-3 * abs(hi) and lo <= min(gr) + step + 1e-3 * abs(lo)
     phi = np.linspace(0.0, 2 * np.pi, 2881)
     exact = f.dyn.cycle.driving * phi - f.dyn.cycle.resistance_work(phi)

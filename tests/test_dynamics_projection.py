@@ -125,7 +125,7 @@ def test_the_projections_carry_the_constructions_ordinates(sheet):
     L, size, *_ = construction(st, dyn, form("A1"), args)
     f = _built(dyn, args, L, size)
     energy, inertia, witt = (_placed(sheet, n) for n in ("energy", "inertia", "wittenbauer"))
-    assert energy.scales["mu_T"] == witt.scales["mu_T"] == f.mu_A and inertia.scales["mu_I"] == witt.scales["mu_I"]
+    assert energy.scales["mu_T"] == witt.scales["mu_T"] == f.mu_T and inertia.scales["mu_I"] == witt.scales["mu_I"]
     axis = [p.points for p in witt.items if p.kind == "vector" and p.step == "ΔT axis"][0]
     dT, inert = _points(energy, "ΔT read"), _points(inertia, "I*_m read")
     for j in range(f.divisions):

@@ -66,7 +66,7 @@ def test_the_design_answer_is_said_in_one_sentence():
     doc = dynamics_json(construct(analyse(scene_study(REVIEW11_B), None), 12, 0.5))
     fw = doc["flywheel"]
     assert fw["needed"] and fw["motor"] == 0
-    read = doc["scales"]["mu_A"] * fw["kl_mm"] / (doc["omega_mean"] ** 2 * doc["delta"]) - fw["rotor_reduced"]
+    read = doc["scales"]["mu_T"] * fw["kl_mm"] / (doc["omega_mean"] ** 2 * doc["delta"]) - fw["rotor_reduced"]
     assert fw["graphical"] == pytest.approx(read, rel=5e-4)                   # μ_A printed rounded
     en, uk = (plain(design_note(doc, lang)).replace("\u00a0", " ") for lang in ("en", "uk"))
     value = f"{fw['graphical']:.2f}"

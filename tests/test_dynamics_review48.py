@@ -33,7 +33,7 @@ def test_the_ruler_alone_may_put_the_compressors_flywheel_past_5_percent_so_it_i
     none is tried (stop 48 tried 29 redrawings, up to 360 divisions, each as far off)."""
     _, dyn, f = compressor
     J = dyn.flywheel + dyn.constant
-    kl_exact = J * dyn.omega_mean ** 2 * dyn.delta / f.mu_A
+    kl_exact = J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T
     assert abs(abs(f.kl) - kl_exact) <= f.precision
     assert 40.0 < J / dyn.flywheel < 50.0                  # the rotor: 98 % of J
     bound = 100.0 * f.precision / abs(f.kl) * J / dyn.flywheel

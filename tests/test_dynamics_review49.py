@@ -234,7 +234,7 @@ def test_the_coulisses_kl_and_motor_follow_from_the_exact_flywheel_and_the_catal
     from graphplan.model.motors import catalogue
     dyn, f, doc = coulisse
     J = dyn.flywheel + dyn.constant
-    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_A) <= f.precision
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= f.precision
     phi0 = math.radians(doc["start_phi_deg"])
     peak = max(closed(phi0, u)[0] for u in np.linspace(0.0, STROKE, 4001))
     need = peak * doc["omega_mean"] / 0.88 / 1000.0

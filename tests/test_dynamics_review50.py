@@ -157,7 +157,7 @@ def test_the_tangents_and_kl_follow_from_the_exact_flywheel(six):
         assert doc["flywheel"][key] == pytest.approx(s["mu_I"] * W1 ** 2 * (1 + sign * DELTA) / (2 * s["mu_T"]),
                                                      rel=1e-9)
     J = dyn.flywheel + dyn.constant
-    assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_A) <= f.precision
+    assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_T) <= f.precision
 
 
 def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(six, cycle):
@@ -361,7 +361,7 @@ def test_the_drag_links_kl_reads_the_exact_flywheel_and_its_motor_is_sized_snugl
     from graphplan.report.dynamics import motor_note
     dyn, f, doc = drag
     J = dyn.flywheel + dyn.constant
-    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_A) <= f.precision
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= f.precision
     need = doc["motor"]["power_needed_kW"]
     line = sorted((c.power_kW, c.name) for c in catalogue() if c.rpm_sync == 1000 and c.power_kW >= need)
     assert doc["motor"]["name"] == line[0][1]

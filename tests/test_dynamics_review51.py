@@ -177,7 +177,7 @@ def test_table_1_the_work_and_the_exact_flywheel_are_the_closed_forms(link, ends
     for key, sign in (("tg_psi_max", 1), ("tg_psi_min", -1)):
         assert doc["flywheel"][key] == pytest.approx(s["mu_I"] * W1 ** 2 * (1 + sign * DELTA) / (2 * s["mu_T"]),
                                                      rel=1e-9)
-    assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_A) <= f.precision
+    assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_T) <= f.precision
 
 
 def motor_run(link, ends, flywheel: float, turns: int = 4, steps: int = 720) -> np.ndarray:

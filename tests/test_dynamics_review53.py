@@ -99,7 +99,7 @@ def test_the_sheets_answer_is_the_wittenbauer_flywheel_and_the_motor_a_remark(dy
     from graphplan.util.markup import plain
     doc = dynamics_json(construct(dyn, 12, 0.5))
     fw = doc["flywheel"]
-    read = doc["scales"]["mu_A"] * fw["kl_mm"] / (doc["omega_mean"] ** 2 * doc["delta"]) - fw["rotor_reduced"]
+    read = doc["scales"]["mu_T"] * fw["kl_mm"] / (doc["omega_mean"] ** 2 * doc["delta"]) - fw["rotor_reduced"]
     assert fw["graphical"] == pytest.approx(read, rel=5e-4)
     note = plain(design_note(doc, lang)).replace("\u00a0", " ")
     value = f"{fw['graphical']:.3f}".replace(".", "," if lang == "uk" else ".")
@@ -110,15 +110,43 @@ def test_the_sheets_answer_is_the_wittenbauer_flywheel_and_the_motor_a_remark(dy
 
 # -- helper dyn53's own: a rocking screen with a two-stage reducer (DYN_OWN53) ----------------------------
 
-def test_the_screens_reducer_and_rotor_are_subtracted_as_seed_003_reduces_them():
+@pytest.fixture(scope="module")
+def screen():
+    from graphplan.exact.dynamics import analyse
+    return analyse(scene_study(DYN_OWN53), None)
+
+
+def test_the_screens_reducer_and_rotor_are_subtracted_as_seed_003_reduces_them(screen):
     """Seed 003 eq. 4: I*_ред = I_1p·i² + I_2p·(i/i1)² + I_3p with i = n_н/n_1 = 698/180 (4АМ100L8's
     rated speed) and i1 = 3.2; the rotor I_рот·i² (0.0130 kg·m²); the classical J less both is the
     flywheel — and the screen resists on both strokes: M*_c = 600·|v_E|/ω1 + gravity's, ≥ 0 but for
     gravity (|M*_c| under 2 N·m where the screen stands still)."""
-    from graphplan.exact.dynamics import analyse
-    dyn = analyse(scene_study(DYN_OWN53), None)
+    dyn = screen
     i = 698 / 180
     assert dyn.drive.ratio == pytest.approx(i, rel=1e-9)
     assert dyn.drive.reducer_reduced == pytest.approx(0.0006 * i * i + 0.004 * (i / 3.2) ** 2 + 0.06, rel=1e-9)
     assert dyn.drive.rotor_reduced == pytest.approx(0.013 * i * i, rel=1e-9)
     assert min(dyn.cycle.samples.moment) > -2.0
+
+
+def test_the_screens_small_energy_change_is_drawn_at_its_own_scale(screen):
+    """ΔT spans ~31 J against A_c = 252 J: read between the work diagrams at μ_A = μ_M·μ_φ·H it would be
+    a flat curve (< 30 mm) and |kl| short; the draftsman redraws it at its own μ_T (REFERENCE §9 names μ_T
+    apart: tg ψ = μ_I·ω_m²(1 ± δ)/(2μ_T), I_fl = μ_T·|kl|/(ω_m²·δ)), a value of the series, finer than
+    μ_A, the finest that draws the exact span no higher than 60 mm (so ≥ 30: the series steps by ≤ ×2);
+    the flywheel read with it within the lab's 5 %."""
+    from graphplan.graphic.flywheel import construct
+    from graphplan.graphic.scales import SERIES
+    f = construct(screen, 12, 0.5)
+    phi = np.linspace(0.0, 2 * math.pi, 4001)
+    span = float(np.ptp(screen.cycle.driving * phi - screen.cycle.resistance_work(phi)))
+    assert f.mu_A == pytest.approx(f.mu_M * f.mu_phi * f.H)
+    assert span / f.mu_A < 30.0 and f.mu_T < f.mu_A
+    mantissa = f.mu_T / 10 ** math.floor(math.log10(f.mu_T) + 1e-12)
+    assert any(abs(mantissa - m) < 1e-9 for m in SERIES), f.mu_T
+    assert 30.0 <= span / f.mu_T <= 60.0 and abs(float(np.ptp(f.dT)) - span / f.mu_T) <= 0.06 * span / f.mu_T
+    wm2, d = screen.omega_mean ** 2, screen.delta
+    assert f.tangent["s_max"] == pytest.approx(f.mu_I * wm2 * (1 + d) / (2 * f.mu_T))
+    assert f.tangent["s_min"] == pytest.approx(f.mu_I * wm2 * (1 - d) / (2 * f.mu_T))
+    graphical = f.mu_T * abs(f.kl) / (wm2 * d) - screen.constant
+    assert abs(graphical - screen.flywheel) <= 0.05 * screen.flywheel

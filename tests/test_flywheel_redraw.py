@@ -34,7 +34,7 @@ def errors_of(f, dyn) -> tuple[float, float, float]:
     """The graphical flywheel's and M*_d's errors, % — from the readings (|kl| through J, the ray's
     height on the moment diagram) against the exact flywheel and A_c/2π —, and the I* diagram's
     largest against the exact largest I* (sampled here every 0,05°; NaN for a constant I*)."""
-    J = f.mu_A * f.kl / (dyn.omega_mean ** 2 * dyn.delta)
+    J = f.mu_T * f.kl / (dyn.omega_mean ** 2 * dyn.delta)
     fl = max(J - dyn.drive.rotor_reduced - dyn.drive.reducer_reduced, 0.0)
     e_fl = 100.0 * (fl - dyn.flywheel) / dyn.flywheel if dyn.flywheel > 0 else math.nan
     md = dyn.cycle.work / (2 * math.pi)

@@ -280,12 +280,12 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
 def energy_axis(f: Flywheel, lang: str) -> str:
     """The ΔT axis's lettering: the quantity, its unit and its scale ("ΔT, Дж; μ_T = 0,6093 Дж/мм")."""
     w = WORDS[lang]
-    return f"ΔT, {w['J']}; μ_T = {num(f.mu_A, lang)} {w['J']}/{w['mm']}"
+    return f"ΔT, {w['J']}; μ_T = {num(f.mu_T, lang)} {w['J']}/{w['mm']}"
 
 
 def energy_record(f: Flywheel, lang: str = "uk") -> Record:
     """ΔT(φ) = A_d − A_c, read between the lines of the work diagram (μ_T = μ_A)."""
-    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_A}, f.dT, energy_axis(f, lang), "ΔT", lang)
+    return _read_diagram(f, WORDS[lang]["energy"], {"mu_T": f.mu_T}, f.dT, energy_axis(f, lang), "ΔT", lang)
 
 
 def inertia_record(f: Flywheel, lang: str = "uk") -> Record:
@@ -352,7 +352,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     ΔT_k at μ_T = μ_A over a φ axis ``length`` mm long, and from each division point a thin
     horizontal projection line to x = ``reach`` (the energy–mass diagram's side, same height)."""
     w = WORDS[lang]
-    rec = Record(w["energy"], scales={"mu_T": f.mu_A})
+    rec = Record(w["energy"], scales={"mu_T": f.mu_T})
     xs = projected_x(f, length)
     lo, hi = _extent(f.dT)
     n = f.divisions
@@ -375,7 +375,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
         _projection(rec, (float(xs[j]), float(f.dT[j])), (reach, float(f.dT[j])), j in short,
                     f"projection of ΔT at {j}")
     _numbers(rec, row)
-    graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo), f.mu_A, lang, step="ΔT graduation")
+    graduate_axis(rec, graduation(hi, f.mu_T, bottom_mm=lo), f.mu_T, lang, step="ΔT graduation")
     place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
                                     breaks=True)], layer=LAYER)   # at its arrow, the projections broken under it
     return _cleared(rec, "axes ΔT", "φ")
@@ -477,8 +477,13 @@ def graduation(top_mm: float, mu: float, least: tuple[float, ...] = GRADUATION, 
 
 
 def graduation_step(values: list[float]) -> float | None:
-    """The step of a graduation (``graduation``), None where it has fewer than two values."""
-    return min(abs(b - a) for a, b in zip(values, values[1:])) if len(values) > 1 else None
+    """The step of a graduation (``graduation``), None where it has fewer than two values; zero, left
+    out of the values (the origin's own number), counted among them (−10 and 10 step by 10, not 20:
+    no multiple of 20 among them, the axis was left unlettered — stop 53's screen)."""
+    if len(values) < 2:
+        return None
+    ticks = sorted({*values, 0.0}) if min(values) < 0.0 < max(values) else list(values)
+    return min(abs(b - a) for a, b in zip(ticks, ticks[1:]))
 
 
 GRADUATION_CLEAR = 0.5   # mm of paper between a graduation's value and any line (labels.CLEAR)
@@ -690,7 +695,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     from the left meets the vertical projection of the turned I*(φ)'s point i from below (the
     lettering then keeps off the lines: k, l to the left of the ΔT axis, |kl| under l)."""
     w = WORDS[lang]
-    rec = Record(w["witt"], scales={"mu_I": f.mu_I, "mu_T": f.mu_A})
+    rec = Record(w["witt"], scales={"mu_I": f.mu_I, "mu_T": f.mu_T})
     X, Y = f.curve()
     tg = f.tangent
     k, l = tg["k"], tg["l"]
@@ -780,8 +785,8 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         graduate_axis(low, i_values, f.mu_I, lang, vertical=False, sides=(-1.0,), step="I* graduation")
         rec.items[:] = low.moved(0.0, foot).items
     dt_lo, dt_hi = _extent(f.dT)                   # ΔT(φ)'s step, ticked at its heights beside
-    graduate_axis(rec, graduation(hi, f.mu_A, bottom_mm=lo, step=graduation_step(
-        graduation(dt_hi, f.mu_A, bottom_mm=dt_lo))), f.mu_A, lang, sides=(-1.0, 1.0), step="ΔT graduation")
+    graduate_axis(rec, graduation(hi, f.mu_T, bottom_mm=lo, step=graduation_step(
+        graduation(dt_hi, f.mu_T, bottom_mm=dt_lo))), f.mu_T, lang, sides=(-1.0, 1.0), step="ΔT graduation")
     place_labels(rec, labels[:1], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
     for asked in numbers:        # a point's number beside it with no line between them where it can be (a

@@ -36,6 +36,8 @@ from graphplan.graphic.chords import integrate_by_chords, midpoints, periodic_pc
 M_HEIGHT = 100.0      # mm: the largest |M*_c| drawn about this high
 A_HEIGHT = 120.0      # mm: the pole distance H is picked so A_c(2π) is drawn about this high
 I_WIDTH = 140.0       # mm: the largest I*_m drawn about this long
+ENERGY_SMALL = 0.25   # ΔT(φ) drawn at its own scale μ_T only where its span at μ_A is below this share of A_HEIGHT …
+ENERGY_HEIGHT = 60.0  # mm: … then its span drawn about this high (μ_T the series' value at or above span/this)
 CURVE = 40            # samples of the French curve per interval
 
 
@@ -50,7 +52,7 @@ class Flywheel:
     slopes: str                 # "course" (1 ± δ) or "exact" ((1 ± δ/2)²)
     mu_M: float                 # N·m/mm
     mu_phi: float               # rad/mm
-    mu_A: float                 # J/mm (= μ_T)
+    mu_A: float                 # J/mm: the work diagrams'
     mu_I: float                 # kg·m²/mm
     x: np.ndarray               # division ordinates, mm (N + 1)
     turn: np.ndarray            # crank turns there, rad
@@ -68,6 +70,12 @@ class Flywheel:
     kl: float                   # |kl| read, mm
     redrawn: Any = field(default=None)   # Redrawing: how ``redrawn`` chose the divisions (None: not asked)
     equal_area: tuple[int, ...] = ()     # intervals whose height is the equal-area mean (``mean_ordinates``)
+    energy_scale: float | None = None    # J/mm: ΔT's own μ_T where it is finer than μ_A (``energy_scale``)
+
+    @property
+    def mu_T(self) -> float:
+        """ΔT(φ)'s and the energy–mass diagram's scale, J/mm: μ_A, or its own where ΔT is small."""
+        return self.energy_scale or self.mu_A
 
     # -- results ----------------------------------------------------------------------------------
     @property
@@ -77,7 +85,7 @@ class Flywheel:
     @property
     def total(self) -> float:
         """J = μ_T·|kl|/(ω_m²·δ): rotor, reducer and flywheel together, kg·m²."""
-        return self.mu_A * self.kl / (self.omega_mean ** 2 * self.dyn.delta)
+        return self.mu_T * self.kl / (self.omega_mean ** 2 * self.dyn.delta)
 
     @property
     def flywheel(self) -> float:
@@ -110,7 +118,7 @@ class Flywheel:
         """J ≈ (ΔT_max − ΔT_min)/(ω_m²·δ) − I*_mean: ΔT_max,min off the drawn curve
         (``energy_extremes``), I*_mean the divisions' readings' mean."""
         e = self.energy_extremes
-        span = (e["max"] - e["min"]) * self.mu_A
+        span = (e["max"] - e["min"]) * self.mu_T
         mean = float(np.mean(self.I[:-1])) * self.mu_I
         return span / (self.omega_mean ** 2 * self.dyn.delta) - mean
 
@@ -123,7 +131,7 @@ class Flywheel:
         """Mertsalov's method: the flywheel's own energy change ΔT − ½·ω_m²·I*_m (the mechanism's
         kinetic energy at ω_m taken out): J ≈ (its max − its min)/(ω_m²·δ), from the readings."""
         wm2 = self.omega_mean ** 2
-        own = self.dT * self.mu_A - 0.5 * wm2 * self.I * self.mu_I
+        own = self.dT * self.mu_T - 0.5 * wm2 * self.I * self.mu_I
         return (float(np.max(own)) - float(np.min(own))) / (wm2 * self.dyn.delta)
 
     @property
@@ -271,14 +279,29 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     A_drawn = integrate_by_chords(x, M_mid, H, 0.0)
     A = read(A_drawn, precision)
     dT = read(A_drawn[-1] * x / L, precision) - A        # A_d and A_c read at each division, subtracted
+    mu_T = own_energy_scale(float(np.ptp(dT)) * mu_A, mu_A, size)
+    if mu_T != mu_A:                                       # … and redrawn at ΔT's own scale
+        dT = read(dT * mu_A / mu_T, precision)
     I = read(at.inertia / mu_I, precision)
     wm, d = dyn.omega_mean, dyn.delta
     hi, lo = ((1 + d), (1 - d)) if slopes == "course" else ((1 + d / 2) ** 2, (1 - d / 2) ** 2)
-    tg = tangents(*_curve(x, I, dT, L), mu_I * wm ** 2 * hi / (2 * mu_A), mu_I * wm ** 2 * lo / (2 * mu_A))
+    tg = tangents(*_curve(x, I, dT, L), mu_I * wm ** 2 * hi / (2 * mu_T), mu_I * wm ** 2 * lo / (2 * mu_T))
     kl = float(read(tg["k"] - tg["l"], precision))
     return Flywheel(dyn, n, L, H, precision, slopes, mu_M, mu_phi, mu_A, mu_I, x, turn, at.moment, at.inertia,
                     at.d_inertia, M, M_mid, A_drawn, A, float(read(A_drawn[-1] * H / L, precision)), dT, I, tg, kl,
-                    equal_area=equal_area)
+                    equal_area=equal_area, energy_scale=mu_T if mu_T != mu_A else None)
+
+
+def own_energy_scale(span: float, mu_A: float, size: float = 1.0) -> float:
+    """ΔT(φ)'s scale μ_T, J/mm. ΔT = A_d − A_c is read between the work diagrams at μ_A; where its span
+    (J) there is small (below ENERGY_SMALL·A_HEIGHT·size mm: a flat curve, and a short |kl| to read the
+    flywheel off) the draftsman redraws it at its own finer scale, the series' value at or above
+    span/(ENERGY_HEIGHT·size) (REFERENCE §9 names μ_T apart from μ_A: tg ψ = μ_I·ω_m²·(1 ± δ)/(2μ_T),
+    I_fl = μ_T·|kl|/(ω_m²·δ)); otherwise μ_T = μ_A."""
+    if span <= 0.0 or span / mu_A >= ENERGY_SMALL * A_HEIGHT * size:
+        return mu_A
+    own = standard_scale(span / (ENERGY_HEIGHT * size))
+    return own if own < mu_A else mu_A
 
 
 # -- redrawn with more divisions until right ------------------------------------------------------

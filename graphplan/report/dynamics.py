@@ -60,7 +60,7 @@ def dynamics_json(f) -> dict[str, Any]:
             "moment_motor": float(motor_md[k]),
             "work_resistance": float(c.resistance_work(f.turn[k])),
             "graphical": {"inertia": float(f.I[k] * f.mu_I), "moment_resistance": float(f.M[k] * f.mu_M),
-                          "work_resistance": float(f.A[k] * f.mu_A), "energy": float(f.dT[k] * f.mu_A)},
+                          "work_resistance": float(f.A[k] * f.mu_A), "energy": float(f.dT[k] * f.mu_T)},
             "energy": float(exact_dt[k])})
     exact = dyn.flywheel
     pct = lambda v: 100.0 * (v - exact) / exact if exact > 0 else None  # noqa: E731
@@ -75,7 +75,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "omega_mean": dyn.omega_mean,
         "start_phi_deg": st.phi0,
         "divisions": f.divisions, "precision_mm": f.precision, "L_mm": f.L, "H_mm": f.H,
-        "scales": {"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "mu_T": f.mu_A, "mu_I": f.mu_I},
+        "scales": {"mu_M": f.mu_M, "mu_phi": f.mu_phi, "mu_A": f.mu_A, "mu_T": f.mu_T, "mu_I": f.mu_I},
         "work_resistance": c.work, "moment_driving": md, "moment_driving_graphical": f.driving,
         "positions": positions,
         "equal_area_intervals": [int(k) for k in f.equal_area],
@@ -83,7 +83,7 @@ def dynamics_json(f) -> dict[str, Any]:
             "needed": dyn.needs_flywheel,
             "exact": exact, "graphical": graphical, "error_pct": pct(graphical),
             "approximate": f.approximate, "approximate_error_pct": pct(f.approximate),
-            "approximate_energy": {k: (v * f.mu_A if k in ("max", "min") else v) for k, v in f.energy_extremes.items()},
+            "approximate_energy": {k: (v * f.mu_T if k in ("max", "min") else v) for k, v in f.energy_extremes.items()},
             "merkalov": f.merkalov, "merkalov_error_pct": pct(f.merkalov),
             "total_exact": dyn.flywheel_total, "total_graphical": f.total,
             "rotor_reduced": dr.rotor_reduced, "reducer_reduced": dr.reducer_reduced,
@@ -267,7 +267,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
     s = doc["scales"]
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "
-               f"H = {doc['H_mm']:g} {u['mm']}, μA = μT = {s['mu_A']:.5g} {u['J']}/{u['mm']}, "
+               f"H = {doc['H_mm']:g} {u['mm']}, {energy_scales(s['mu_A'], s['mu_T'])} {u['J']}/{u['mm']}, "
                f"μI = {s['mu_I']:g} {u['kgm2']}/{u['mm']}; Ac = {sig(doc['work_resistance'], 'en')} {u['J']}, "
                f"Md* = {sig(doc['moment_driving'], 'en')} {u['Nm']}")       # four figures, as the sheet's notes
     out += ["", w["pos"]]
@@ -735,8 +735,15 @@ def wittenbauer_note(f, lang: str, decimals: int | None = None) -> str:
     wm, d = f.dyn.omega_mean, f.dyn.delta
     # each "numbers = result unit" on one line (no-break spaces): a result never wrapped off its arithmetic
     total, flywheel = graphical_chain(f)
-    return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_A, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
+    return (f"J = μ_T·|kl|/(ω_{{m}}^{{2}}·δ) = {num(f.mu_T, lang)}·{num(f.kl, lang)}/({sig(wm, lang)}²·{num(d, lang)})"
             f"{NB}={NB}{sig(total, lang)}{NB}{kgm2}; {fl} = J{sym}{NB}={NB}{_fl(flywheel, lang, decimals)}")
+
+
+def energy_scales(mu_A: float, mu_T: float) -> str:
+    """The terminal's μA and μT: one value where ΔT is drawn at the work diagrams' scale, else both."""
+    if mu_T == mu_A:
+        return f"μA = μT = {mu_A:.5g}"
+    return f"μA = {mu_A:.5g}, μT = {mu_T:.5g}"
 
 
 def _read(text: str) -> float:
@@ -755,7 +762,7 @@ def graphical_chain(f) -> tuple[float, float]:
     μ_T·|kl|/(ω_m²·δ) from the printed μ_T, |kl|, ω_m and δ, printed to four figures, and
     I_мах = J − I_рот·i² (− I*_ред) from that printed J; (J, I_мах) — Table 2's graphical row is this I."""
     wm, d = f.dyn.omega_mean, f.dyn.delta
-    total = _read(num(f.mu_A, "en")) * _read(num(f.kl, "en")) / (_read(sig(wm, "en")) ** 2 * _read(num(d, "en")))
+    total = _read(num(f.mu_T, "en")) * _read(num(f.kl, "en")) / (_read(sig(wm, "en")) ** 2 * _read(num(d, "en")))
     total = _read(sig(total, "en"))
     return total, total - _constant_printed(f.dyn.drive.rotor_reduced, f.dyn.drive.reducer_reduced)
 

@@ -243,7 +243,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
              # L named with its length: "2π/L" alone left a teacher asking which L (stop 50)
              f"{w['scales']}: μ_M = {num(s['mu_M'], lang)} {Nm}/{mm}, L = {num(doc['L_mm'], lang)} {mm}, μ_φ = 2π/L = "
              f"{num(s['mu_phi'], lang)} {'рад' if uk else 'rad'}/{mm}, H = {num(f.H, lang)} {mm}",
-             f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
+             energy_scales_note(s, lang) + f", μ_I = {num(s['mu_I'], lang)} {kgm2}/{mm}",
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
@@ -292,6 +292,17 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def energy_scales_note(s: dict, lang: str) -> str:
+    """μ_A = μ_M·μ_φ·H, and ΔT's μ_T: the same, or its own where ΔT(φ) is redrawn larger
+    (graphic.flywheel ``own_energy_scale``: a small ΔT read between the work diagrams)."""
+    J, mm = ("Дж", "мм") if lang == "uk" else ("J", "mm")
+    if s["mu_T"] == s["mu_A"]:
+        return f"μ_A = μ_T = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}"
+    own = "ΔT(φ) перенесено у власному масштабі" if lang == "uk" else "ΔT(φ) redrawn at its own scale"
+    return (f"μ_A = μ_M·μ_φ·H = {num(s['mu_A'], lang)} {J}/{mm}, μ_T = {num(s['mu_T'], lang)} {J}/{mm} "
+            f"({own})")
 
 
 def short_note(short: Shortfall, lang: str) -> str:
@@ -851,11 +862,14 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         tw, th = extent(_tree(shape, leaves, C, foot_))
         return tw <= W + 1e-9 and th <= H + 1e-9
 
+    floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
         for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
             if k > start and fit(k) is None:  # its one A1 sheet came out as three)
                 continue
+            if abs(built(*sizes[k]).kl) < floor - 1e-9:   # shrunk below reading: a set of sheets instead
+                break
             got = held(*sizes[k])
             if got is not None:
                 return got
@@ -980,6 +994,18 @@ def _fits_first(f: Form, b: Leaf) -> bool:
     x0, y0, x1, y1 = field_of(f)
     k = keep_out(f)
     return b.w <= x1 - x0 + 1e-9 and (b.h <= y1 - k[3] + 1e-9 or (b.w <= k[0] - x0 + 1e-9 and b.h <= y1 - y0 + 1e-9))
+
+
+def one_sheet_floor(st: Study, dyn, f: Form, args) -> float:
+    """The least |kl| (mm) a sheet smaller than A1 may read the flywheel off where it holds the whole
+    analysis on one sheet: a set's floor (the ruler's ``precision`` over ``ORDERED_READ``: I_fl ∝ |kl|
+    read to 2 %), never more than the A1 sheet's own |kl|; 0 on A1. LAYOUT.md: "a drawing shrunk below
+    its legibility minimum to fit is not (use a set of sheets then)" — LINK53's one A2 sheet read
+    |kl| = 18 mm, its energy–mass diagram 11 mm wide, against 74 mm on A1."""
+    target = _a1_kl(st, dyn, f, args)
+    if target is None:
+        return 0.0
+    return min(target, args.precision / ORDERED_READ)
 
 
 def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
