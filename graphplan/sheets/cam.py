@@ -904,6 +904,10 @@ TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, 10.0), (2.5, 9.0
 # the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
 CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
 STRETCH = 1.5        # a table's columns widened at most this much to span its column
+# last, the table's own size (positions_table: 2.5-mm letters in 6-mm rows) across the profile's column: a
+# profile tall enough to leave no room for closer rows kept it 196 mm wide in a column of 344, a blank of
+# 147 × 162 mm beside it over the title block (stop 53: CAM53's A1 sheet)
+BASE_TABLE = (2.5, 6.0)
 
 
 def _in_hole(boxes: dict) -> bool:
@@ -920,7 +924,7 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    for size, row in TABLE_SIZES + CLOSER_ROWS:
+    for size, row in TABLE_SIZES + CLOSER_ROWS + (BASE_TABLE,):
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
         # across the profile's column (stop 49: 70 mm of it stood blank beside the table, over the title
         # block), its columns widened by at most STRETCH
