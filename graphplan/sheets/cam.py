@@ -1184,6 +1184,17 @@ def _theta_grown(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
     return as_is
 
 
+def _theta_mu(laid) -> float:
+    """μ_ϑ (°/mm) of the pressure angle's diagram on a set's sheets — the finer, the taller ϑ(φ) reads
+    —; infinity where none is drawn."""
+    def records(node):
+        kids = getattr(node, "children", None)
+        return [r for k in kids for r in records(k)] if kids is not None else [getattr(node, "record", None)]
+    mus = [rec.scales["mu_theta"] for page in laid for node, _ in page for rec in records(node)
+           if rec is not None and "mu_theta" in rec.scales]
+    return min(mus, default=math.inf)
+
+
 def _names(node) -> set[str]:
     """The names of the leaves in a layout node (a Leaf, or a Stack of them)."""
     kids = getattr(node, "children", None)
@@ -1235,7 +1246,11 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
                 if placed(t) and len(t) <= most]
-        laid = same[0] if same else (own if placed(own) else laid)
+        # of those, the one that reads ϑ finest (μ_ϑ: the tallest ϑ(φ)) on no more sheets than the first
+        # (stop 53: CAM48's A3 set drew ϑ(φ) at 5 °/мм under s where the table's sheet takes it at 2 °/мм);
+        # at the diagrams' μ_φ still (review 11, mark 16), not at its own
+        laid = min(((_theta_mu(t), k, t) for k, t in enumerate(same) if len(t) <= len(same[0])),
+                   key=lambda c: c[:2])[2] if same else (own if placed(own) else laid)
     if laid is None:
         raise GraphplanError(f"a cam drawing is larger than a whole {f.name} sheet even at half its size; "
                              "choose a larger --format")
