@@ -289,14 +289,16 @@ def cells(values, lang: str, decimals: int) -> list[str]:
 
 def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:
     """Table 1's ds/dφ cells at a jump of ds/dφ (the linear law's ends, ``profile_corners``) as the
-    notes write it, both sides: «0,00 → 20,37» (exact), «0,0 → 51,0» (the ruler's ordinate) and
-    «0,00 → 20,40» (graphical) — one side was the row's alone (stop 50). The side the row lacks is read
+    notes write it, both sides: «0 → 20,37» (exact), «0,0 → 51,0» (the ruler's ordinate) and
+    «0 → 20,40» (graphical) — one side was the row's alone (stop 50). The side the row lacks is read
     as the drawing reads a linear law's ordinate, ds/dφ/μ to the ruler's ``precision_mm`` (graphic.
     cam ``read``: a dwell's 0 is 0), with μ the row's own value over its ordinate; δ stays the row's."""
     rocking = doc["follower"] == "rocking"
     key, k = ("_deg", 1.0) if rocking else ("_m", 1000.0)
     precision = doc.get("precision_mm", 0.5)
-    cell = lambda v, d: fixed(v, lang, d).replace("-", "−")       # noqa: E731  (a zero to the column's decimals)
+    # a jump's zero side the bare 0, as the notes write it («φ = 0° (0 → 20,37 мм/рад)»): "0,00 → 20,37" widened
+    # the 3.5-mm table's column past the A1 sheet's right column (stop 53: CAM50's diagrams a μ_φ coarser)
+    cell = lambda v, d: "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")       # noqa: E731
     for corner in doc.get("profile_corners") or []:
         before, after = (corner["ds_dphi_" + side + key] * k for side in ("before", "after"))
         for j, p in enumerate(doc["positions"]):
