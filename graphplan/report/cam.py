@@ -12,7 +12,7 @@ from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, division_num
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.drawing.cam import scale_text, symbols
 from graphplan.util.markup import plain
-from graphplan.util.words import column_decimals, decimals_column, fixed, num
+from graphplan.util.words import column_decimals, fixed, num
 
 
 def _f(x) -> float | None:
@@ -265,7 +265,7 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
         ex = [p["exact"][q + key] * k for p in ps]
         gr = [p["graphical"][q + key] * k for p in ps]
         d = min(column_decimals(ex + gr), ruler_decimals(gr, [p["graphical"][q + "_mm"] for p in ps], precision))
-        out[name], out[name + "_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
+        out[name], out[name + "_gr"] = cells(ex, lang, d), cells(gr, lang, d)
         out[name + "_mm"] = [fixed(p["graphical"][q + "_mm"], lang, ruler).replace("-", "−") for p in ps]
         errs = [printed_error(g, e, p["error_pct"][q] is not None)
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
@@ -277,8 +277,14 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     ex = [p["exact"]["radius_m"] * 1000 for p in ps]
     gr = [p["graphical"]["radius_mm"] * doc["scales"]["mu_l_m_mm"] * 1000 for p in ps]
     d = column_decimals(ex + gr)
-    out["R"], out["R_gr"] = decimals_column(ex, lang, d), decimals_column(gr, lang, d)
+    out["R"], out["R_gr"] = cells(ex, lang, d), cells(gr, lang, d)
     return out
+
+
+def cells(values, lang: str, decimals: int) -> list[str]:
+    """A column of Table 1 to one count of decimals, its zeros too — a dwell's s, ds/dφ at 0,00 beside
+    the rise's 12,22 (stop 53: the bare "0" read as a column of another precision); a true minus."""
+    return [fixed(v, lang, decimals).replace("-", "−") for v in values]
 
 
 def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:
@@ -290,6 +296,8 @@ def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: i
     rocking = doc["follower"] == "rocking"
     key, k = ("_deg", 1.0) if rocking else ("_m", 1000.0)
     precision = doc.get("precision_mm", 0.5)
+    # a jump's zero side the bare 0, as the notes write it («φ = 0° (0 → 20,37 мм/рад)»): "0,00 → 20,37" widened
+    # the 3.5-mm table's column past the A1 sheet's right column (stop 53: CAM50's diagrams a μ_φ coarser)
     cell = lambda v, d: "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")       # noqa: E731
     for corner in doc.get("profile_corners") or []:
         before, after = (corner["ds_dphi_" + side + key] * k for side in ("before", "after"))

@@ -904,6 +904,10 @@ TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, 10.0), (2.5, 9.0
 # the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
 CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
 STRETCH = 1.5        # a table's columns widened at most this much to span its column
+# last, the table's own size (positions_table: 2.5-mm letters in 6-mm rows) across the profile's column: a
+# profile tall enough to leave no room for closer rows kept it 196 mm wide in a column of 344, a blank of
+# 147 × 162 mm beside it over the title block (stop 53: CAM53's A1 sheet)
+BASE_TABLE = (2.5, 6.0)
 
 
 def _in_hole(boxes: dict) -> bool:
@@ -920,7 +924,7 @@ def _rows_of_8(laid, leaves: list[Leaf], doc: dict, lang: str, cam: Cam, f: Form
     nts = next(leaf for leaf, _ in laid[0] if leaf.name == "notes")
     before = {leaf.name: b for leaf, b in laid[0] if leaf.name in ("diagrams", "notes")}
     profile = next(leaf for leaf, _ in laid[0] if leaf.name == "profile")
-    for size, row in TABLE_SIZES + CLOSER_ROWS:
+    for size, row in TABLE_SIZES + CLOSER_ROWS + (BASE_TABLE,):
         tall = Leaf("table", record=positions_table(doc, lang, row, size))
         # across the profile's column (stop 49: 70 mm of it stood blank beside the table, over the title
         # block), its columns widened by at most STRETCH
@@ -1180,6 +1184,17 @@ def _theta_grown(sol, g, f: Form, lang: str, as_is: tuple) -> tuple:
     return as_is
 
 
+def _theta_mu(laid) -> float:
+    """μ_ϑ (°/mm) of the pressure angle's diagram on a set's sheets — the finer, the taller ϑ(φ) reads
+    —; infinity where none is drawn."""
+    def records(node):
+        kids = getattr(node, "children", None)
+        return [r for k in kids for r in records(k)] if kids is not None else [getattr(node, "record", None)]
+    mus = [rec.scales["mu_theta"] for page in laid for node, _ in page for rec in records(node)
+           if rec is not None and "mu_theta" in rec.scales]
+    return min(mus, default=math.inf)
+
+
 def _names(node) -> set[str]:
     """The names of the leaves in a layout node (a Leaf, or a Stack of them)."""
     kids = getattr(node, "children", None)
@@ -1231,7 +1246,11 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                             pressure_by_table(laid, leaves, doc, sol, g, cam, lang, region, keep, later_keep(f), most),
                             set_with_pressure(laid, leaves, tab, nts, sol, g, lang, region, keep, later_keep(f)))
                 if placed(t) and len(t) <= most]
-        laid = same[0] if same else (own if placed(own) else laid)
+        # of those, the one that reads ϑ finest (μ_ϑ: the tallest ϑ(φ)) on no more sheets than the first
+        # (stop 53: CAM48's A3 set drew ϑ(φ) at 5 °/мм under s where the table's sheet takes it at 2 °/мм);
+        # at the diagrams' μ_φ still (review 11, mark 16), not at its own
+        laid = min(((_theta_mu(t), k, t) for k, t in enumerate(same) if len(t) <= len(same[0])),
+                   key=lambda c: c[:2])[2] if same else (own if placed(own) else laid)
     if laid is None:
         raise said_error(GraphplanError, "sh cam larger", None, None, form=f.name, option="--format")
     def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
