@@ -47,3 +47,14 @@ def test_inclined_rocker_forces_fit_one_a1_sheet():
     names = {q.name for q in sheet.pages[0].placed}
     assert {"moment", "resistance", "reaction R03", "lever"} <= names, names
     assert defects(sheet) == []
+    # frc53b #7: the outer dyad's force plan (the one with R05, the frame's reaction on rocker 5)
+    # is drawn to read: its group one step coarser gave it the height (``_plan_over_group``). At
+    # 2 N/mm its polygon was 3 × 13 mm, three of its sides under 3 mm named under it.
+    plan = next(q.record for q in sheet.pages[0].placed
+                if any(t.kind == "vector" and (t.text or "").startswith("R05") for t in q.record.items)
+                and any(t.kind == "text" and t.text.startswith("μ_F") for t in q.record.items))
+    ends = [complex(*z) for t in plan.items if t.kind == "vector" for z in t.points]
+    assert max(z.imag for z in ends) - min(z.imag for z in ends) >= 40.0
+    note = next(t.text for t in plan.items if t.kind == "text" and t.text.startswith("μ_F"))
+    short = [part.split("<")[0] for part in note.split("; ")[1:] if "<" in part]
+    assert sum(len(part.split(", ")) for part in short) <= 1, note     # at most one short side named

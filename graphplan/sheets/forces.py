@@ -1649,7 +1649,51 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 break
         else:
             growing.remove(step)
-    return replace(p, mu=mu)
+    return replace(p, mu=_plan_over_group(dr, nat, f, p, mu, leaves, allowed))
+
+
+def _plan_over_group(dr: ForceDrafter, nat: Natural, f: Form, p: Plan, mu: dict[str, float],
+                     leaves: dict[str, list[Leaf]], allowed) -> dict[str, float]:
+    """A force plan left with sides too short to draw (under ``forces.TINY_MM``, named under it)
+    that cannot grow in its cell takes the room of its group's drawing: the group one standard step
+    coarser (one step only), the plan at the finest step that then fits — taken where it names
+    fewer short sides than before. INCLINED_ROCKER53's II(4-5): its group at 1:2 (169 mm tall over
+    its plan) left the plan at 2 N/mm, a 3 × 13 mm polygon with R24τ, R05n and R45 under 3 mm; its
+    group at 1:2.5 lets it grow to 0.5 N/mm (review 53, frc53b #7)."""
+    from graphplan.drawing.forces import TINY_MM
+    from graphplan.sheets.compose import coarser, finer
+    fams = nat.families
+    labels = [gp.label for gp in dr.groups_fp(mu).groups]
+
+    def tiny(m: dict[str, float], i: int) -> int:
+        return sum(1e-9 < s.mm < TINY_MM for s in dr.groups_fp(m).groups[i].sides)
+
+    for i, label in enumerate(labels):
+        g_key, p_key = GROUP + label, PLAN + label
+        short = tiny(mu, i)
+        if not short or p.shape == "set":
+            continue
+        g = coarser(mu.get(g_key, mu["groups"]))
+        gw, gh = dr.group_size(mu, i, g, fams["groups"].caption)
+        trial_mu = {**mu, g_key: g}
+        group_leaf = Leaf(leaves["groups"][i].name, gw + GROW_MARGIN, gh + GROW_MARGIN)
+        best, s = None, mu.get(p_key, mu["forces"])
+        while True:
+            s = finer(s)
+            if s is None or not allowed("forces", i, s):
+                break
+            w, h = dr.plan_size(trial_mu, i, s, fams["forces"].caption)
+            trial = {**leaves,
+                     "groups": [*leaves["groups"][:i], group_leaf, *leaves["groups"][i + 1:]],
+                     "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name, w + GROW_MARGIN, h + GROW_MARGIN),
+                                *leaves["forces"][i + 1:]]}
+            if not _fits(nat, f, p, trial):
+                break
+            best = (s, trial)
+        if best is not None and tiny({**trial_mu, p_key: best[0]}, i) < short:
+            mu = {**trial_mu, p_key: best[0]}
+            leaves = best[1]
+    return mu
 
 
 PLAN_TRIES = 3     # a force plan's next steps tried in turn where the first does not fit (``_grown_groups``)
