@@ -110,6 +110,8 @@ def test_review_13s_a3_set_draws_psi_on_its_own_sheet_with_theta_under_it():
     pages = [{p.name: p.record for p in page.placed} for page in sheet.pages]
     assert "diagrams" in pages[0] and {"displacement", "pressure"} <= set(pages[1])
     assert pages[1]["pressure"].scales["mu_phi"] == pages[1]["displacement"].scales["mu_phi"]
+    b = pages[1]["pressure"].bounds()      # legible: stop 53 drew it 16 mm tall (4 °/mm) on sheet 4
+    assert b[3] - b[1] >= 60.0
     x0 = lambda rec, step: next(q for q in rec.items if q.step == step and q.kind == "segment").points[0][0]  # noqa: E731
     for k in (0, 5, 15):
         assert x0(pages[1]["displacement"], f"s at {k}") == pytest.approx(x0(pages[1]["pressure"], f"ϑ at {k}"), abs=1e-6)

@@ -642,12 +642,32 @@ def _stands_alone(sol, g, f: Form, name: str) -> bool:
     draw = {"diagrams": diagrams, "phase": phase_diagram, "profile": profile_drawing,
             "av": lambda *a: diagrams(*a, ("a", "v")), "s": lambda *a: diagrams(*a, ("s",))}[name]
     region, keep = field_of(f), (later_keep(f) if name in ("phase", "profile") else keep_out(f))
+    if name == "s":     # on its later sheet over ϑ(φ) at least PRESSURE_ROOM tall (pressure_by_displacement;
+        # stop 53: with its own pole P2's ordinates under its axis, s judged under form 1 took the sheet
+        # and ϑ(φ) went at 4 °/мм to the table's sheet)
+        low = later_keep(f)
+        keep = (low[0], low[1], low[2], max(keep[3], low[3] + _theta_room(sol) + 2 * GAP))
     for lang in ("uk", "en"):
         rec = captioned(draw(sol, g, lang), *_captions(g, sol.cam, lang)[name])
         laid = flow([[Leaf(name, *extent(Leaf(name, record=rec)))]], region, keep)
         if laid is None or len(laid) != 1:
             return False
     return True
+
+
+UNDER_S_MU = 2.0      # °/mm: the μ_ϑ a set's s sheet leaves ϑ(φ) room for under s (the table's sheet's, CAM48 A3)
+THETA_LETTERS = 32.0  # mm: ϑ(φ)'s letters above and below its range (pressure_scales' 18) and its two-line caption
+
+
+def _theta_room(sol) -> float:
+    """The height (mm) ϑ(φ) takes at UNDER_S_MU over its range and the bands ±[ϑ] (pressure_scales), at
+    least PRESSURE_ROOM's."""
+    import numpy as np
+    cam = sol.cam
+    rise, far, ret, _ = cam.phases
+    theta = sol.at(np.linspace(0.0, rise + far + ret, 721))["theta"]
+    span = max(float(np.max(theta)), max(cam.allowed)) - min(float(np.min(theta)), -max(cam.allowed))
+    return max(PRESSURE_ROOM[1], span / UNDER_S_MU + THETA_LETTERS)
 
 
 def _set_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5, split: bool = False) -> tuple:
