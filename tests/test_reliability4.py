@@ -180,12 +180,12 @@ def test_dynamics_divides_the_turn_into_at_most_360_parts(tmp_path):
 ])
 def test_more_divisions_than_the_construction_takes_are_refused_before_the_work(tmp_path, argv, words):
     path = scene(tmp_path, crank_slider(0.1, 0.4, 0.03, count=3600))
-    ends(["dynamics", path, *argv], 2, *words, limit=3.0)
+    ends(["dynamics", path, *argv, "--lang", "en"], 2, *words, limit=3.0)
 
 
 def test_a_scenes_dynamics_divisions_above_the_bound_are_refused_before_the_work(tmp_path):
     path = scene(tmp_path, SLOTTER.replace("[dynamics]", "[dynamics]\ndivisions = 3600"))
-    ends(["dynamics", path, "--json"], 2, "dynamics.divisions", "from 4 to 360", str(path), limit=5.0)
+    ends(["dynamics", path, "--json", "--lang", "en"], 2, "dynamics.divisions", "from 4 to 360", str(path), limit=5.0)
     ends(["sheet", path, "--sheet", "dynamics", "-o", tmp_path / "s.svg"], 2, "dynamics.divisions", str(path), limit=5.0)
     assert not (tmp_path / "s.svg").exists()
 

@@ -305,12 +305,13 @@ def test_the_dynamics_tables_graphical_columns_check_by_subtraction(shaper_a1):
     texts = [p for p in rec.items if p.kind == "text"]
     heads = {p.text: p.points[0][0] for p in texts if p.text in ("A_с гр., Дж", "A_д гр., Дж", "ΔT гр., Дж")}
     assert len(heads) == 3
+    top = min(p.points[0][1] for p in texts if p.text in heads)     # y up: a diagram's division numbers stand above
 
     def value(t: str) -> float:
         return float(t.replace("−", "-").replace(",", "."))
     rows: dict[float, dict[str, float]] = {}
     for p in texts:
-        if re.fullmatch(r"−?[\d,]+", p.text):
+        if re.fullmatch(r"−?[\d,]+", p.text) and p.points[0][1] < top:     # the rows under the head
             for name, x in heads.items():
                 if abs(p.points[0][0] - x) < 19.0 and p.points[0][0] > x:       # right-aligned in its cell
                     rows.setdefault(round(p.points[0][1], 1), {})[name] = value(p.text)
