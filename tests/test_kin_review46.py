@@ -53,6 +53,16 @@ def _boxes(over: bool, under: bool):
     return tabs, (w, h), {p.name: p.box for p in place_tables(groups, w, 0.0, under, over)}
 
 
+def inside_and_apart(names, boxes, w: float, h: float) -> None:
+    """Each table's box (x0, y0, x1, y1; y down from 0) inside the w × h block, no two meeting."""
+    for i, a in enumerate(names):
+        x0, y0, x1, y1 = boxes[a]
+        assert -1e-9 <= x0 and x1 <= w + 1e-9 and -h - 1e-9 <= y0 and y1 <= 1e-9
+        for b in names[i + 1:]:
+            u0, v0, u1, v1 = boxes[b]
+            assert u0 >= x1 - 1e-9 or u1 <= x0 + 1e-9 or v0 >= y1 - 1e-9 or v1 <= y0 + 1e-9, (a, b)
+
+
 def test_the_first_table_across_over_the_others_reads_in_order_and_leaves_less_blank():
     """The velocities' table (12 rows, 16 columns: the widest) across the top, the others in columns
     under it: no two tables meet, each inside the block, read in order (each next one to the right
@@ -60,12 +70,11 @@ def test_the_first_table_across_over_the_others_reads_in_order_and_leaves_less_b
     the others (which left 218 × 127 mm blank under Table 1 on the six-bar's A1)."""
     tabs, (w, h), boxes = _boxes(over=True, under=False)
     names = [t.name for t in tabs]
+    inside_and_apart(names, boxes, w, h)
     for i, a in enumerate(names):
         x0, y0, x1, y1 = boxes[a]
-        assert -1e-9 <= x0 and x1 <= w + 1e-9 and -h - 1e-9 <= y0 and y1 <= 1e-9
         for b in names[i + 1:]:
             u0, v0, u1, v1 = boxes[b]
-            assert u0 >= x1 - 1e-9 or u1 <= x0 + 1e-9 or v0 >= y1 - 1e-9 or v1 <= y0 + 1e-9, (a, b)
             assert u0 >= x1 - 1e-9 or v1 <= y0 + 1e-9 or (u0 >= x0 - 1e-9 and v1 <= y1 + 1e-9), (a, b)
     blank = w * h - sum(t.w * t.h for t in tabs)
     _, (w2, h2), _ = _boxes(over=False, under=True)

@@ -70,13 +70,8 @@ def test_the_first_table_over_and_the_last_under_the_columns_between():
     w, h = tables_size(groups, True, True)
     assert (w, h) == (190, 95 + GAP + 110 + GAP + 66)
     boxes = {p.name: p.box for p in place_tables(groups, w, 0.0, True, True)}
-    names = [t.name for t in tabs]
-    for i, a in enumerate(names):
-        x0, y0, x1, y1 = boxes[a]
-        assert -1e-9 <= x0 and x1 <= w + 1e-9 and -h - 1e-9 <= y0 and y1 <= 1e-9
-        for b in names[i + 1:]:
-            u0, v0, u1, v1 = boxes[b]
-            assert u0 >= x1 - 1e-9 or u1 <= x0 + 1e-9 or v0 >= y1 - 1e-9 or v1 <= y0 + 1e-9, (a, b)
+    from test_kin_review46 import inside_and_apart
+    inside_and_apart([t.name for t in tabs], boxes, w, h)
     assert boxes["T1"][1] >= boxes["T2"][3] and boxes["T3"][0] >= boxes["T2"][2]          # T1 over, T2 | T3
     assert boxes["T4"][3] <= min(boxes["T2"][1], boxes["T3"][1])                           # T4 under both
     assert boxes["T1"][0] == boxes["T2"][0] == boxes["T4"][0] == 0.0                        # one left edge
