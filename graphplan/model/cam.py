@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from graphplan.model import bounds as B
-from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, scenes_speaking
 
 LAWS = ("parabolic", "cosine", "cycloidal", "linear", "trapezoidal")
 KINDS = ("translating", "rocking")
@@ -81,7 +81,7 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Cam:
     try:
         return _build(data, where)
     except GraphplanError as exc:
-        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+        raise scenes_speaking(exc, data)
 
 
 def _build(data: dict[str, Any], where: str) -> Cam:

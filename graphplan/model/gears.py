@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from graphplan.model import bounds as B
-from graphplan.util.errors import GraphplanError, SceneError, keyed_error, speaking
+from graphplan.util.errors import GraphplanError, SceneError, keyed_error, scenes_speaking
 
 _TOP = {"title", "title_en", "designation", "lang", "sheet", "gears", "planetary"}
 _PAIR = {"z", "module", "shifts", "pressure_angle_deg", "addendum", "clearance"}
@@ -206,7 +206,7 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Gears:
     try:
         return _build(data, where)
     except GraphplanError as exc:
-        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+        raise scenes_speaking(exc, data)
 
 
 def _build(data: dict[str, Any], where: str) -> Gears:

@@ -11,7 +11,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, speaking
+from graphplan.util.errors import GraphplanError, SceneError, either, keyed_error, scenes_speaking
 from graphplan.util.files import read_text
 from graphplan.util.words import word
 from graphplan.model import bounds as B
@@ -62,7 +62,7 @@ def build(data: dict[str, Any], where: str = "<scene>") -> Mechanism:
     try:
         return _Reader(copy.deepcopy(data), where).mechanism()
     except GraphplanError as exc:        # a refusal from below (bounds, expressions) speaks the scene's lang
-        raise speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+        raise scenes_speaking(exc, data)
 
 
 class _Reader:

@@ -57,6 +57,12 @@ def speaking(exc: GraphplanError, lang: object) -> GraphplanError:
     return exc
 
 
+def scenes_speaking(exc: GraphplanError, data: object) -> GraphplanError:
+    """``exc`` told the language of the parsed scene ``data`` (its ``lang``; a tree that is not a
+    table has none): what a scene's loader raises from inside it (``speaking``)."""
+    return speaking(exc, data.get("lang") if isinstance(data, dict) else None)
+
+
 class SceneError(GraphplanError):
     """A scene file that is malformed or describes an impossible mechanism."""
 
