@@ -17,7 +17,8 @@ from typing import Any, TextIO
 from graphplan.cli.common import lang_arg, lang_of, option_error
 from graphplan.util.markup import escape, plain
 from graphplan.util.progress import Progress
-from graphplan.util.errors import GraphplanError, said_error
+from graphplan.util.errors import GraphplanError, said_error, speaking
+from graphplan.util.words import word
 from graphplan.util.files import write_atomic
 
 SUMMARY_FORMAT = "graphplan-keys/1"
@@ -198,15 +199,24 @@ def _variant_job(index: int) -> dict[str, Any]:
                            scene=tree, divisions=v.divisions or opt.divisions,
                            tolerances=[v.tolerances, opt.tolerances, table.tolerances])
     except GraphplanError as exc:
-        note, prefix = exc.line(), v.where(table.path)
-        if note.startswith(prefix):
-            note = note[len(prefix):].lstrip(": ")
+        note, said_note = _note(exc, v.where(table.path), "en"), _note(exc, v.where(table.path), opt.lang)
+        where = v.where(table.path)
         return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note}, "units": {},
-                "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": note},
-                "message": f"graphplan: {v.where(table.path)}: skipped: {note}"}
+                "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": said_note},
+                "message": "graphplan: " + word("ky skipped", opt.lang, where=where.said.get(opt.lang, where)
+                                                if hasattr(where, "said") else where, note=said_note)}
     write_key(opt.out / v.id, key, pdf=opt.pdf, lang=opt.lang)
     return {"entry": {"variant": v.id, "status": "ok", "key": f"{v.id}/key.json", "note": ""},
             "row": summary_row(key), "units": summary_units(key), "message": None}
+
+
+def _note(exc: GraphplanError, where: str, lang: str) -> str:
+    """Why a variant was skipped, in ``lang``, without its place (the variant) in front."""
+    note = exc.line(lang)
+    for prefix in {where, *getattr(where, "said", {}).values()}:
+        if note.startswith(prefix):
+            return note[len(prefix):].lstrip(": ")
+    return note
 
 
 def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[dict[str, Any]]:
@@ -217,7 +227,7 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
     if jobs <= 1 or n <= 1:
         _init_job(table, options)
         for k in range(n):
-            progress.step(f"variant {table.variants[k].id}")
+            progress.step(f"{word('variant', options.lang)} {table.variants[k].id}")
             results.append(_variant_job(k))
             _report(results[-1], progress)
         return results
@@ -231,12 +241,12 @@ def run_jobs(table, options: KeyOptions, jobs: int, progress: Progress) -> list[
     try:
         with multiprocessing.get_context(method).Pool(jobs, initializer=_init_job,
                                                       initargs=(table, options, os.getpid())) as pool:
-            progress.step(f"variant {table.variants[0].id}")
+            progress.step(f"{word('variant', options.lang)} {table.variants[0].id}")
             for k, result in enumerate(pool.imap(_variant_job, range(n), chunksize=1 if n < 64 else 4)):
                 results.append(result)
                 _report(result, progress)
                 if k + 1 < n:
-                    progress.step(f"variant {table.variants[k + 1].id}")
+                    progress.step(f"{word('variant', options.lang)} {table.variants[k + 1].id}")
     finally:
         if previous is not None:
             import signal
@@ -277,7 +287,7 @@ def cmd_key(args: argparse.Namespace) -> int:
         raise said_error(GraphplanError, "op output folder", str(out), None)
     jobs = args.jobs or min(os.cpu_count() or 1, 8, len(table.variants))
     progress = Progress(len(table.variants), enabled=not args.quiet and sys.stderr.isatty())
-    lang = lang_of(args)
+    lang = lang_of(args) if args.lang else _table_lang(table)
     final, out = out, staging(out)
     try:
         results = run_jobs(table, KeyOptions(out, cli_tol, args.divisions, not args.no_pdf, lang), jobs, progress)
@@ -332,9 +342,10 @@ def _summary(args, table, results, out: Path, lang: str) -> tuple[str, dict]:
     entries = [r["entry"] for r in results]
     skipped = [r["message"] for r in results if r["message"]]
     if skipped and not any(e["status"] == "ok" for e in entries):
-        more = f" (and {len(skipped) - 1} more)" if len(skipped) > 1 else ""
-        raise GraphplanError(f"no variant could be built, nothing written: "
-                             f"{skipped[0].removeprefix('graphplan: ')}{more}")
+        from graphplan.util.words import word as said_word
+        more = (lambda lang: said_word("ky more", lang, n=len(skipped) - 1)) if len(skipped) > 1 else ""
+        raise said_error(GraphplanError, "ky none built", None, lang, first=skipped[0].removeprefix("graphplan: "),
+                         more=more)
     for line in skipped:                  # written keys and skipped variants: a line for each skip
         print(line, file=sys.stderr)
     rows = [r["row"] for r in results]
@@ -381,13 +392,29 @@ def _override_columns(table) -> set[str]:
 def cmd_check(args: argparse.Namespace) -> int:
     from graphplan.teach.grading import grade, load_keys, read_student, write_json, write_table
     keys = load_keys(args.key)
-    rows = read_student(args.student)
+    try:
+        rows = read_student(args.student)
+    except GraphplanError as exc:                 # without --lang: the keys' scenes' language
+        raise speaking(exc, keys_lang(keys)) from None
     graded = grade(keys, rows, signed=args.signed)
     if args.json:
         write_json(sys.stdout, graded, args.key, args.student, args.signed)
     else:
         write_table(sys.stdout, graded, args.key, args.student, lang_of(args))
     return 0
+
+
+def _table_lang(table) -> str:
+    """The language of a run without --lang: its first variant's base scene's ``lang``, else Ukrainian."""
+    from graphplan.util.words import pick
+    lang = table.base_tree(table.variants[0].base).get("lang") if table.variants else None
+    return pick(None, lang if lang in ("uk", "en") else None)
+
+
+def keys_lang(keys: dict[str, dict[str, Any]]) -> str | None:
+    """The ``lang`` of the keys' scenes, where they agree on one."""
+    langs = {k.get("scene", {}).get("lang") for k in keys.values() if isinstance(k.get("scene"), dict)}
+    return langs.pop() if len(langs) == 1 and langs <= {"uk", "en"} else None
 
 
 def register(sub: argparse._SubParsersAction) -> None:

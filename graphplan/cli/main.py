@@ -69,9 +69,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # an internal error is still one line unless debugging
         if os.environ.get("GRAPHPLAN_DEBUG"):
             raise
+        from graphplan.util.words import word
         text = " ".join(str(exc).split())[:300]           # one line, whatever the exception holds
-        print(f"graphplan: internal error: {type(exc).__name__}: {text} "
-              "(set GRAPHPLAN_DEBUG=1 for the traceback)", file=sys.stderr)
+        print(f"graphplan: {word('op internal', told_lang(argv, args), name=type(exc).__name__, text=text)}",
+              file=sys.stderr)
         return 1
     finally:
         tell_cautions(False)             # a run that did not succeed keeps its one line

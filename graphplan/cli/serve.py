@@ -8,12 +8,14 @@ from __future__ import annotations
 import argparse
 import ipaddress
 import json
+import math
 import os
 import secrets
 import sys
 
-from graphplan.cli.common import lang_arg
-from graphplan.util.errors import GraphplanError
+from graphplan.cli.common import lang_arg, lang_of, option_error, range_fields
+from graphplan.util.errors import GraphplanError, said_error
+from graphplan.util.words import word
 
 APP = "graphplan.web.app:from_env"
 ENV = "GRAPHPLAN_SERVE_CONFIG"
@@ -48,13 +50,13 @@ def cmd_serve(args: argparse.Namespace) -> int:
         import starlette  # noqa: F401
         import multipart  # noqa: F401
     except ImportError as exc:
-        raise GraphplanError(f"graphplan serve needs {exc.name}: pip install starlette uvicorn python-multipart") from None
+        raise said_error(GraphplanError, "sv needs", None, None, name=exc.name) from None
     if not 1 <= args.port <= 65535:
-        raise GraphplanError(f"--port must be from 1 to 65535, got {args.port}")
+        raise option_error("--port", "op whole", lo=1, hi=65535, got=args.port)
     if not 1 <= args.workers <= 16:
-        raise GraphplanError(f"--workers must be from 1 to 16, got {args.workers}")
-    if not 1 <= args.timeout <= 3600:
-        raise GraphplanError(f"--timeout must be from 1 to 3600 s, got {args.timeout:g}")
+        raise option_error("--workers", "op whole", lo=1, hi=16, got=args.workers)
+    if not (math.isfinite(args.timeout) and 1 <= args.timeout <= 3600):
+        raise option_error("--timeout", "op range", **range_fields(1, 3600, "s", False, args.timeout))
     local = is_loopback(args.host)
     token = None if local else secrets.token_urlsafe(24)
     shown = _reachable(args.host)
@@ -66,8 +68,8 @@ def cmd_serve(args: argparse.Namespace) -> int:
               "timeout": args.timeout, "lang": args.lang,
               "allowed_hosts": ["127.0.0.1", "localhost", "::1"] if local else []}
     os.environ[ENV] = json.dumps(config)
-    print(f"graphplan serve: {url}" + ("" if local else "  (the token is asked of every visitor; share this "
-                                       "address with the class)") + "  — Ctrl-C stops it", file=sys.stderr,
+    lang = lang_of(args)
+    print(word("sv started", lang, url=url, shared="" if local else word("sv shared", lang)), file=sys.stderr,
           flush=True)
     if args.open:
         import threading

@@ -16,7 +16,7 @@ import unicodedata
 from dataclasses import dataclass
 from typing import Any
 
-from graphplan.util.errors import SceneError, keyed_error
+from graphplan.util.errors import SaidValueError, SceneError, keyed_error, reason
 
 MAX_SCENE_BYTES = 1024 * 1024        # the largest example is 3 kB
 MAX_TOML_DEPTH = 12                  # tables in tables in arrays … (a scene needs 4)
@@ -233,34 +233,33 @@ def read_number(text: str, delimiter: str) -> int | float:
     |value| > 10¹², and a value that underflows to 0 (1e-400)."""
     s = _normal(text)
     if _RADIX.match(s):
-        raise ValueError("a hexadecimal, octal or binary literal: write the number in decimal digits")
+        raise SaidValueError("nb radix")
     if "_" in s:
-        raise ValueError("write numbers without '_' (7_2 is not 72)")
+        raise SaidValueError("nb underscore")
     if _WORDS.match(s):
-        raise ValueError("not a finite number")
+        raise SaidValueError("nb not finite")
     if any(c in s for c in _GROUPING):
         s = re.sub(f"[{_GROUPING}]", " ", s)
         if not _GROUPED.match(s):
-            raise ValueError("spaces only between groups of three digits (5 346,1)")
+            raise SaidValueError("nb spaces")
         s = s.replace(" ", "")
     if "," in s:
         if "." in s:
-            raise ValueError("both a decimal point and a comma: write 5346.1 or 5346,1")
+            raise SaidValueError("nb point and comma")
         if delimiter == "," and _THOUSANDS_COMMA.match(s):
-            raise ValueError("is the comma a decimal comma or between thousands? write 1.234 or 1234")
+            raise SaidValueError("nb comma thousands")
         if s.count(",") > 1:
-            raise ValueError("more than one decimal comma")
+            raise SaidValueError("nb two commas")
         s = s.replace(",", ".")
     elif delimiter in (";", "\t") and _THOUSANDS_DOT.match(s):
-        raise ValueError("is the dot a decimal point or between thousands? in a ';' or tab-separated "
-                         "table write 5,351 or 5351")
+        raise SaidValueError("nb dot thousands")
     if not _PLAIN.match(s):
-        raise ValueError("not a number")
+        raise SaidValueError("nb not number")
     value = float(s)
     if not abs(value) <= MAX_CELL_VALUE:
-        raise ValueError(f"|value| ≤ {MAX_CELL_VALUE:g}")
+        raise SaidValueError("nb too large", most=f"{MAX_CELL_VALUE:g}")
     if value == 0.0 and re.search(r"[1-9]", s.split("e")[0].split("E")[0]):
-        raise ValueError("too small: it underflows to 0")
+        raise SaidValueError("nb underflow")
     return int(s) if re.fullmatch(r"[+-]?\d+", s) else value
 
 
@@ -272,4 +271,4 @@ def check_numbers_in(text: str, delimiter: str) -> None:
         try:
             read_number(token, ",")           # the cell's own commas separate its items
         except ValueError as exc:
-            raise ValueError(f"{token[:30]!r}: {exc}") from None
+            raise SaidValueError("nb in cell", text=repr(token[:30]), why=reason(exc)) from None

@@ -19,11 +19,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.util.errors import GraphplanError, SaidValueError, SceneError, reason, said_error, speaking, where_said
 from graphplan.model.mechanism import Mechanism
 from graphplan.util.files import read_text
 from graphplan.model.bounds import clean_text
 from graphplan.model.scene import build
+from graphplan.util.words import word
 
 DEFAULT_TOLERANCE = 5.0   # percent, the lab's criterion (REFERENCE §1.6)
 
@@ -50,7 +51,8 @@ class Variant:
     row: int = 0                                                   # line in the file (CSV) or index
 
     def where(self, table: Path) -> str:
-        return f"{table}: variant {self.id}"
+        """The place a refusal about this row names: "TABLE: variant ID" in each language."""
+        return where_said("vt where", table=table, id=self.id)
 
 
 @dataclass
@@ -94,11 +96,11 @@ def parse_cell(text: str, delimiter: str = ";") -> Any:
         try:
             return read_number(text, delimiter)
         except ValueError as exc:
-            raise ValueError(f"{text[:30]!r}: {exc}") from None
+            raise SaidValueError("nb in cell", text=repr(text[:30]), why=reason(exc)) from None
     try:
         check_numbers_in(text, delimiter)
     except ValueError as exc:
-        raise ValueError(f"{text[:30]!r}: {exc}") from None
+        raise SaidValueError("nb in cell", text=repr(text[:30]), why=reason(exc)) from None
     try:
         return tomllib.loads(f"v = {text}")["v"]
     except (tomllib.TOMLDecodeError, RecursionError, ValueError):
@@ -108,12 +110,39 @@ def parse_cell(text: str, delimiter: str = ";") -> Any:
 def read(path: str | Path) -> VariantTable:
     """Read a variant table (CSV, or TOML by the ``.toml`` suffix)."""
     path = Path(path)
-    text = read_text(path, "variant table")
-    if path.suffix.lower() == ".toml":
-        rows, directives = _toml_rows(text, path)
-    else:
-        rows, directives = _csv_rows(text, path)
-    return _table(path, rows, directives)
+    try:
+        text = read_text(path, "variant table")
+    except GraphplanError as exc:            # not UTF-8, say: the base scene's language still told
+        from graphplan.util.files import read_bytes
+        try:
+            seen = read_bytes(path, "variant table").decode("utf-8", "replace")
+        except GraphplanError:
+            raise exc from None
+        raise speaking(exc, base_lang(path, seen)) from None
+    try:
+        if path.suffix.lower() == ".toml":
+            rows, directives = _toml_rows(text, path)
+        else:
+            rows, directives = _csv_rows(text, path)
+        return _table(path, rows, directives)
+    except GraphplanError as exc:
+        raise speaking(exc, base_lang(path, text)) from None
+
+
+def base_lang(path: Path, text: str) -> str | None:
+    """The ``lang`` of the table's base scene (its ``base`` directive), the language a refusal of
+    the table speaks without --lang; None where there is none or it does not read."""
+    m = re.search(r"(?m)^\s*#?\s*base\s*=\s*(.+?)\s*$", text)
+    if not m:
+        return None
+    name = m.group(1).strip().strip("'\"")
+    base = Path(name) if Path(name).is_absolute() else path.parent / name
+    try:
+        from graphplan.model.bounds import MAX_SCENE_BYTES, parse_toml
+        lang = parse_toml(read_text(base, "base scene", MAX_SCENE_BYTES), str(base)).get("lang")
+    except (GraphplanError, OSError, ValueError):
+        return None
+    return lang if lang in ("uk", "en") else None
 
 
 def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], dict[str, Any]]:
@@ -130,12 +159,12 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
                 try:
                     directives[m.group(1)] = parse_cell(m.group(2), ";")
                 except ValueError as exc:
-                    raise GraphplanError(f"line {n + 1}: {exc}", str(path)) from None
+                    raise said_error(GraphplanError, "vt line", str(path), None, line=n + 1, why=reason(exc)) from None
             continue
         header_at = n
         break
     if header_at is None:
-        raise GraphplanError("the table has no header row (a 'variant' column and the overrides)", str(path))
+        raise said_error(GraphplanError, "vt no header", str(path), None)
     header_line = lines[header_at]
     delimiter = ";" if ";" in header_line else "\t" if "\t" in header_line else ","
     body = [(n + 1, line) for n, line in enumerate(lines) if n >= header_at
@@ -145,11 +174,13 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
     header = [h.strip() for h in records[0]]
     if len(set(header)) != len(header):
         dup = next(h for h in header if header.count(h) > 1)
-        raise GraphplanError(f"column {dup!r} appears twice", str(path))
+        raise said_error(GraphplanError, "vt column twice", str(path), None, name=repr(dup))
     rows = []
     for (line_no, _), cells in zip(body[1:], records[1:]):
         if len(cells) > len(header):
-            raise GraphplanError(f"line {line_no}: {len(cells)} cells for {len(header)} columns", str(path))
+            hint = (lambda lang: word("st comma hint", lang)) if delimiter == "," else ""
+            raise said_error(GraphplanError, "vt cells", str(path), None, line=line_no, n=len(cells),
+                             width=len(header), hint=hint)
         row: dict[str, Any] = {}
         for name, cell in zip(header, cells):
             if cell.strip() == "":
@@ -160,13 +191,14 @@ def _csv_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], 
             try:
                 row[name] = parse_cell(cell, delimiter)
             except ValueError as exc:
-                raise GraphplanError(f"line {line_no}, column {name}: {exc}", str(path)) from None
+                raise said_error(GraphplanError, "vt cell", str(path), None, line=line_no, column=name,
+                                 why=reason(exc)) from None
         rows.append((line_no, row))
     for name in header:
         if name == "":
-            raise GraphplanError("a column has no name", str(path))
+            raise said_error(GraphplanError, "vt no name", str(path), None)
     if "variant" not in header:
-        raise GraphplanError("the table needs a 'variant' column", str(path))
+        raise said_error(GraphplanError, "vt no variant column", str(path), None)
     return rows, directives
 
 
@@ -182,14 +214,20 @@ def _flatten(tree: dict[str, Any], prefix: str = "") -> dict[str, Any]:
 
 
 def _toml_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]], dict[str, Any]]:
+    from graphplan.model.bounds import MAX_TOML_DEPTH, check_tree, toml_why
+    from graphplan.util.errors import keyed_error
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise GraphplanError(f"TOML syntax error: {exc}", str(path)) from None
+        raise keyed_error(GraphplanError, str(path), "", "bad toml syntax", None, toml="TOML",
+                          why=toml_why(str(exc))) from None
+    except (RecursionError, ValueError):
+        raise keyed_error(GraphplanError, str(path), "", "bad toml depth", None, toml="TOML", most=MAX_TOML_DEPTH) from None
+    check_tree(data, str(path))
     _toml_numbers(text, path)
     raw = data.pop("variant", None)
     if not isinstance(raw, list) or not raw:
-        raise GraphplanError("the table needs [[variant]] entries", str(path))
+        raise said_error(GraphplanError, "vt no entries", str(path), None)
     directives = {}
     for key, value in data.items():
         if key == "tolerance" and isinstance(value, dict):
@@ -199,7 +237,7 @@ def _toml_rows(text: str, path: Path) -> tuple[list[tuple[int, dict[str, Any]]],
     rows = []
     for k, entry in enumerate(raw):
         if not isinstance(entry, dict):
-            raise GraphplanError(f"variant[{k}] must be a table", str(path))
+            raise said_error(GraphplanError, "vt entry table", str(path), None, k=k)
         row = _flatten({key: value for key, value in entry.items() if key != "tolerance"})
         tol = entry.get("tolerance")
         if isinstance(tol, dict):
@@ -227,32 +265,35 @@ def _toml_numbers(text: str, path: Path) -> None:
         key, value = line.split("=", 1) if "=" in line else ("", line)
         try:
             if _TOML_WORDS.search(value):
-                raise ValueError(f"{_TOML_WORDS.search(value).group(0).strip()!r}: not a finite number")
+                raise SaidValueError("nb in cell", text=repr(_TOML_WORDS.search(value).group(0).strip()),
+                                     why=lambda lang: word("nb not finite", lang))
             check_numbers_in(value, ",")
         except ValueError as exc:
             where = f", {key.strip()}" if key.strip() else ""
-            raise GraphplanError(f"line {n}{where}: {exc}", str(path)) from None
+            raise said_error(GraphplanError, "vt toml line", str(path), None, line=n, key=where,
+                             why=reason(exc)) from None
 
 
-def _percent(value: Any, where: str, path: Path) -> float:
+def _percent(value: Any, at: object, key: str, path: Path) -> float:
+    """A tolerance, % in (0, 100]; ``at`` the row's place ("line 3: ", a language's text) or ""."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 < value <= 100:
-        raise GraphplanError(f"{where}: a tolerance must be a percentage in (0, 100], got {value!r}", str(path))
+        raise said_error(GraphplanError, "vt tolerance", str(path), None, at=at, key=key, got=repr(value))
     return float(value)
 
 
-def _split_tolerances(row: dict[str, Any], where: str, path: Path) -> dict[str, float]:
+def _split_tolerances(row: dict[str, Any], at: object, path: Path) -> dict[str, float]:
     out = {}
     for key in list(row):
         if key == "tolerance":
-            out["*"] = _percent(row.pop(key), f"{where}tolerance", path)
+            out["*"] = _percent(row.pop(key), at, key, path)
         elif key.startswith("tolerance."):
-            out[key[len("tolerance."):]] = _percent(row.pop(key), f"{where}{key}", path)
+            out[key[len("tolerance."):]] = _percent(row.pop(key), at, key, path)
     return out
 
 
-def _divisions(value: Any, where: str, path: Path) -> int:
+def _divisions(value: Any, at: object, path: Path) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or not 2 <= value <= 720:
-        raise GraphplanError(f"{where}divisions must be a whole number from 2 to 720, got {value!r}", str(path))
+        raise said_error(GraphplanError, "vt divisions", str(path), None, at=at, got=repr(value))
     return value
 
 
@@ -260,34 +301,31 @@ def _table(path: Path, rows: list[tuple[int, dict[str, Any]]], directives: dict[
     known = {"base", "divisions", "tolerance", "title"}
     for key in directives:
         if key not in known and not key.startswith("tolerance."):
-            raise GraphplanError(f"unknown directive {key!r} (known: base, divisions, tolerance, "
-                                 "tolerance.<quantity>)", str(path))
+            raise said_error(GraphplanError, "vt directive", str(path), None, key=repr(key))
     file_tol = _split_tolerances(dict(directives), "", path)
     default_div = _divisions(directives["divisions"], "", path) if "divisions" in directives else None
     if not rows:
-        raise GraphplanError("the table has no variants", str(path))
+        raise said_error(GraphplanError, "vt no variants", str(path), None)
     if len(rows) > MAX_VARIANTS:
-        raise GraphplanError(f"{len(rows)} variants; a table holds at most {MAX_VARIANTS} "
-                             "(split the group's table)", str(path))
+        raise said_error(GraphplanError, "vt too many", str(path), None, n=len(rows), most=MAX_VARIANTS)
     variants, seen = [], set()
     for line_no, row in rows:
         row = dict(row)
-        where = f"line {line_no}: " if path.suffix.lower() != ".toml" else f"variant[{line_no}]: "
+        where = ((lambda lang, n=line_no: word("vt at line", lang, line=n)) if path.suffix.lower() != ".toml"
+                 else f"variant[{line_no}]: ")
         vid = str(row.pop("variant", "")).strip()
         if not vid:
-            raise GraphplanError(f"{where}the variant has no id", str(path))
+            raise said_error(GraphplanError, "vt no id", str(path), None, at=where)
         if not _ID.match(vid):
-            raise GraphplanError(f"{where}variant id {vid!r}: use letters, digits, '.', '_' or '-'", str(path))
+            raise said_error(GraphplanError, "vt bad id", str(path), None, at=where, id=repr(vid))
         if vid.lower().startswith("summary.") or vid.strip(".") == "":
-            raise GraphplanError(f"{where}variant id {vid!r} is the name of a summary file; "
-                                 "call the variant otherwise", str(path))
+            raise said_error(GraphplanError, "vt summary id", str(path), None, at=where, id=repr(vid))
         if vid in seen:
-            raise GraphplanError(f"{where}variant {vid!r} appears twice", str(path))
+            raise said_error(GraphplanError, "vt id twice", str(path), None, at=where, id=repr(vid))
         seen.add(vid)
         base_text = row.pop("base", directives.get("base"))
         if base_text is None:
-            raise GraphplanError(f"{where}no base scene: add '# base = SCENE.toml' or a 'base' column",
-                                 str(path))
+            raise said_error(GraphplanError, "vt no base", str(path), None, at=where)
         base = Path(str(base_text))
         if not base.is_absolute():
             base = path.parent / base
@@ -357,8 +395,8 @@ def apply(tree: dict[str, Any], overrides: dict[str, Any], where: str) -> dict[s
     for column, value in overrides.items():
         path = target(tree, column)
         if path is None:
-            raise SceneError(f"column {column!r}: not a [params] name, a shorthand "
-                             f"({', '.join(sorted(SHORTHAND))}) or a path in the base scene", where)
+            raise said_error(SceneError, "vt unknown column", where, None, column=repr(column),
+                             short=", ".join(sorted(SHORTHAND)))
         node: Any = tree
         for part in path[:-1]:
             if isinstance(node, dict):
@@ -381,7 +419,7 @@ def _accel(value: Any, where: str) -> list[int]:
         return [value]
     parts = [p for p in re.split(r"[;\s|/]+", str(value).strip()) if p]
     if not parts or not all(re.fullmatch(r"\d+", p) for p in parts):
-        raise SceneError(f"accel: position numbers separated by ';' or spaces, got {value!r}", where)
+        raise said_error(SceneError, "vt accel", where, None, got=repr(value))
     return [int(p) for p in parts]
 
 
@@ -393,9 +431,9 @@ def check_columns(table: VariantTable) -> None:
             if column in RESERVED:
                 continue
             if target(tree, column) is None:
-                raise GraphplanError(f"column {column!r} (variant {v.id}): not a [params] name of "
-                                     f"{v.base.name}, a shorthand ({', '.join(sorted(SHORTHAND))}) "
-                                     "or a dotted path in it", str(table.path))
+                raise speaking(said_error(GraphplanError, "vt unknown column in", str(table.path), None,
+                                          column=repr(column), id=v.id, base=v.base.name,
+                                          short=", ".join(sorted(SHORTHAND))), tree.get("lang"))
 
 
 def scene_tree(table: VariantTable, variant: Variant) -> dict[str, Any]:

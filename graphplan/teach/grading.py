@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from graphplan.util.words import Fixed, fixed, num, said, word
-from graphplan.util.errors import GraphplanError, SceneError
+from graphplan.util.errors import GraphplanError, SceneError, reason, said_error
 from graphplan.teach.keys import FORMAT, Quantity, diagram_phi, quantities
 from graphplan.util.files import read_text
 from graphplan.exact.positions import Study, study
@@ -88,8 +88,7 @@ def read_student(path: str | Path) -> list[Row]:
         return _wide(records, header, delimiter, path)
     for need in ("position", "value"):
         if need not in header:
-            raise GraphplanError(f"the student table needs the columns variant, position, quantity, value "
-                                 f"(missing {need!r})", str(path))
+            raise said_error(GraphplanError, "st columns", str(path), None, need=repr(need))
     col = {name: header.index(name) for name in ("variant", "position", "quantity", "value") if name in header}
     rows = []
     one: dict[str, str] = {}         # a table's variants, positions and quantities repeat: one string each
@@ -115,9 +114,8 @@ def read_student(path: str | Path) -> list[Row]:
 def _no_twice(header: list[str], path: Path) -> None:
     for name in ("variant", "position", "quantity", "value"):
         if header.count(name) > 1:
-            raise GraphplanError(f"line 1: the column {name!r} appears twice (columns "
-                                 f"{', '.join(str(k + 1) for k, h in enumerate(header) if h == name)}); "
-                                 "keep one", str(path))
+            raise said_error(GraphplanError, "st column twice", str(path), None, name=repr(name),
+                             cols=", ".join(str(k + 1) for k, h in enumerate(header) if h == name))
 
 
 def _number(text: str, delimiter: str, line_no: int, path: Path, column: str = "value",
@@ -128,11 +126,13 @@ def _number(text: str, delimiter: str, line_no: int, path: Path, column: str = "
     try:
         return number(text, delimiter)
     except ValueError as exc:
-        raise GraphplanError(f"line {line_no}: {column} {text[:30]!r}{_at(k)}: {exc}", str(path)) from None
+        raise said_error(GraphplanError, "st cell", str(path), None, line=line_no, column=column,
+                         text=repr(text[:30]), at=_at(k), why=reason(exc)) from None
 
 
-def _at(k: int | None) -> str:
-    return f" (column {k + 1})" if k is not None else ""
+def _at(k: int | None) -> object:
+    """" (column k)" in each language (the 1-based column), or nothing."""
+    return (lambda lang: word("st at column", lang, k=k + 1)) if k is not None else ""
 
 
 def _position_number(text: str, delimiter: str, line_no: int, path: Path, k: int | None = None) -> None:
@@ -144,15 +144,13 @@ def _position_number(text: str, delimiter: str, line_no: int, path: Path, k: int
         try:
             read_number(bare, delimiter)
         except ValueError as exc:
-            raise GraphplanError(f"line {line_no}: position {text[:30]!r}{_at(k)}: {exc}",
-                                 str(path)) from None
+            raise said_error(GraphplanError, "st cell", str(path), None, line=line_no, column="position",
+                             text=repr(text[:30]), at=_at(k), why=reason(exc)) from None
 
 
 def _split(cells: list[str], k: int, line_no: int, path: Path) -> None:
-    raise GraphplanError(f"line {line_no}: {cells[k].strip()!r} and then {cells[k + 1].strip()[:12]!r} (columns {k + 1} "
-                         f"and {k + 2}) — a decimal "
-                         "comma split across cells? Write the number with a point, quote it (\"11,09\") or "
-                         "separate the table with ';'", str(path))
+    raise said_error(GraphplanError, "st split", str(path), None, line=line_no, a=repr(cells[k].strip()),
+                     b=repr(cells[k + 1].strip()[:12]), k1=k + 1, k2=k + 2)
 
 
 def _wide(records, header, delimiter, path: Path) -> list[Row]:
@@ -164,8 +162,7 @@ def _wide(records, header, delimiter, path: Path) -> list[Row]:
     if "position" in header:
         pos = header.index("position")
     elif var == 0:
-        raise GraphplanError("line 1: the table has no position column (its first column is the variant): "
-                             "name the positions' column 'position'", str(path))
+        raise said_error(GraphplanError, "st no position", str(path), None)
     else:
         pos = 0
     from graphplan.teach.tables import split_comma
@@ -201,13 +198,13 @@ def load_keys(path: str | Path) -> dict[str, dict[str, Any]]:
                 if entry.get("status") == "ok":
                     out[entry["variant"]] = _key(path / entry["key"])
             if not out:
-                raise GraphplanError("the key folder holds no written variants", str(summary))
+                raise said_error(GraphplanError, "ky no written", str(summary), None)
             return out
         single = path / "key.json"
         if single.exists():
             key = _key(single)
             return {key["variant"]: key}
-        raise GraphplanError("not a key folder (no summary.json or key.json)", str(path))
+        raise said_error(GraphplanError, "ky not folder", str(path), None)
     key = _key(path)
     return {key["variant"]: key}
 
@@ -217,16 +214,16 @@ def _json(path: Path) -> dict[str, Any]:
     try:
         doc = json.loads(text)
     except (json.JSONDecodeError, RecursionError) as exc:
-        raise GraphplanError(f"cannot read the key: {str(exc)[:80]}", str(path)) from None
+        raise said_error(GraphplanError, "ky cannot read", str(path), None, why=str(exc)[:80]) from None
     if not isinstance(doc, dict):
-        raise GraphplanError("not a graphplan key (not a JSON object)", str(path))
+        raise said_error(GraphplanError, "ky not object", str(path), None)
     return doc
 
 
 def _key(path: Path) -> dict[str, Any]:
     doc = _json(path)
     if doc.get("format") != FORMAT:
-        raise GraphplanError(f"not a graphplan key (format {doc.get('format')!r}, expected {FORMAT!r})", str(path))
+        raise said_error(GraphplanError, "ky format", str(path), None, got=repr(doc.get("format")), want=repr(FORMAT))
     doc["_path"] = str(path)
     return doc
 

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from graphplan.util.errors import SceneError
+from graphplan.util.errors import SceneError, said_error
 from graphplan.exact.kinematics import Kinematics
 from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
@@ -193,8 +193,8 @@ def make_key(st: Study, *, variant: str = "", student: str = "", base: str = "",
     accel = sorted(set(mech.task.accel))
     for p in accel:
         if p >= count:
-            raise SceneError(f"positions.accel: position {p} does not exist ({count} positions, 0–{count - 1})",
-                             mech.source)
+            raise said_error(SceneError, "ky accel", mech.source, mech.task.meta.get("lang"), p=p, count=count,
+                             last=count - 1)
     divisions = divisions or count
     grid = st.solve(np.arange(SCAN) * 360.0 / SCAN)
     scales = {name: float(np.max(np.abs(q(grid)))) for name, q in qs.items()}

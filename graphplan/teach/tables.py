@@ -15,8 +15,9 @@ import csv
 import re
 from pathlib import Path
 
-from graphplan.util.errors import GraphplanError
-from graphplan.util.files import read_bytes
+from graphplan.util.errors import GraphplanError, said_error
+from graphplan.util.files import read_bytes, what_said
+from graphplan.util.words import word
 
 MAX_TABLE_BYTES = 8 * 1024 * 1024     # ~300 000 rows
 MAX_ROWS = 100_000                    # a group's tables are a few thousand rows
@@ -45,8 +46,7 @@ def _decode(data: bytes, encoding: str, where: str) -> str:
     try:
         return data.decode(encoding)
     except UnicodeDecodeError as exc:
-        raise GraphplanError(f"cannot read the table as {encoding} text (byte {exc.start}); "
-                             "save it as CSV UTF-8", where) from None
+        raise said_error(GraphplanError, "st encoding", where, None, encoding=encoding, byte=exc.start) from None
 
 
 def read_rows(path: str | Path, what: str = "student table") -> tuple[Records, str]:
@@ -59,17 +59,17 @@ def read_rows(path: str | Path, what: str = "student table") -> tuple[Records, s
     where = str(path)
     text = decode(data, where)
     if "\x00" in text:
-        raise GraphplanError(f"the {what} is not text (it holds zero bytes)", where)
+        raise said_error(GraphplanError, "st zero bytes", where, None, what=what_said(what))
     # lines end as a file's lines do (\n, \r\n, \r): str.splitlines would also break at U+2028, a
     # form feed or U+0085 and number the lines past the file's end; those stay in their cells
     lines = _LINES.split(text)
     del data, text
     kept = [n for n, line in enumerate(lines) if line.strip() and not line.lstrip().startswith("#")]
     if not kept:
-        raise GraphplanError(f"the {what} is empty", where)
+        raise said_error(GraphplanError, "st empty", where, None, what=what_said(what))
     if len(kept) > MAX_ROWS + 1:
-        raise GraphplanError(f"the {what} has {len(kept) - 1} rows; at most {MAX_ROWS} are graded "
-                             "at once (split the table)", where)
+        raise said_error(GraphplanError, "st too many rows", where, None, what=what_said(what), n=len(kept) - 1,
+                         most=MAX_ROWS)
     header = lines[kept[0]]
     delimiter = ";" if ";" in header else "\t" if "\t" in header else ","
     records = Records(lines, kept, delimiter)
@@ -78,15 +78,14 @@ def read_rows(path: str | Path, what: str = "student table") -> tuple[Records, s
         try:
             count = len(records[k][1])
         except csv.Error:
-            raise GraphplanError(f"line {kept[k] + 1}: a quote is not closed", where) from None
+            raise said_error(GraphplanError, "st quote", where, None, line=kept[k] + 1) from None
         if width is None:
             width = count
         elif count > width and wide is None:
             wide = (kept[k] + 1, count)
     if wide is not None:
-        hint = (" — a decimal comma in a comma-separated table? Separate with ';' or write 7.2"
-                if delimiter == "," else "")
-        raise GraphplanError(f"line {wide[0]}: {wide[1]} cells for {width} columns{hint}", where)
+        hint = (lambda lang: word("st comma hint", lang)) if delimiter == "," else ""
+        raise said_error(GraphplanError, "vt cells", where, None, line=wide[0], n=wide[1], width=width, hint=hint)
     return records, delimiter
 
 

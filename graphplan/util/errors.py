@@ -21,7 +21,29 @@ class GraphplanError(Exception):
         and without ``lang``, its message as raised)."""
         text = self.said.get(lang, str(self)) if lang else str(self)
         text = " ".join(text.split())
-        return f"{self.where}: {text}" if self.where else text
+        where = self.where.said.get(lang, self.where) if isinstance(self.where, Where) and lang else self.where
+        return f"{where}: {text}" if where else text
+
+
+class Where(str):
+    """A refusal's place that says itself in each language ("variants.csv: variant v3" — "…: варіант
+    v3"): a ``str`` (its English) wherever a place is used as text, ``said`` for ``line``."""
+
+    said: dict[str, str]
+
+    def __new__(cls, texts: dict[str, str]):
+        obj = super().__new__(cls, texts["en"])
+        obj.said = dict(texts)
+        return obj
+
+    def __reduce__(self):
+        return (Where, (self.said,))
+
+
+def where_said(key: str, /, **fields: object) -> Where:
+    """A place worded by the catalogue (util.words ``key``) in both languages."""
+    from graphplan.util.words import said
+    return Where(said(key, **fields))
 
 
 def said_error(cls: type[GraphplanError], key: str, where: str | None, lang: str | None, /, **fields) -> GraphplanError:
@@ -39,6 +61,28 @@ def keyed_error(cls: type[GraphplanError], where: str | None, key: str, word: st
     from graphplan.util.words import said
     texts = {k: f"{key}: {v}" if key else v for k, v in said(word, **fields).items()}
     return cls(texts["en"], where, texts, lang)
+
+
+class SaidValueError(ValueError):
+    """A reason (a number that cannot be read, a bad cell) worded by the catalogue in both languages:
+    ``str`` its English, ``said`` every language — what a caller puts into its own one line."""
+
+    def __init__(self, key: str, /, **fields: object):
+        from graphplan.util.words import said
+        self.said = said(key, **fields)
+        super().__init__(self.said["en"])
+
+
+def reason(exc: BaseException) -> object:
+    """``exc``'s text as a catalogue field: in each language where it says itself in both
+    (SaidValueError, GraphplanError), else as it is."""
+    texts = getattr(exc, "said", None) or {}
+
+    def text(lang: str) -> str:
+        if isinstance(exc, GraphplanError):
+            return exc.line(lang)
+        return texts.get(lang, str(exc))
+    return text
 
 
 def either(*options: str) -> object:

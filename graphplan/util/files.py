@@ -22,6 +22,9 @@ def _what(what: str, case: int = 0):
     return lambda lang: WHAT_UK[what][case] if lang == "uk" and what in WHAT_UK else what
 
 
+what_said = _what       # the name other rooms use
+
+
 def _why(exc: OSError):
     """An OS error's reason in the reader's language: the common ones worded by the catalogue."""
     import errno

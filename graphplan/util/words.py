@@ -743,6 +743,20 @@ WORDS: dict[str, tuple[str, str]] = {
 }
 
 
+# the program's own words inside a text: a file's column and key names, formats, commands (a "{@name}"
+# field, filled in every language alike: the Ukrainian text names them as the file and the program do)
+LITERALS: dict[str, str] = {
+    "variant": "variant", "base": "base", "position": "position", "quantity": "quantity", "value": "value",
+    "divisions": "divisions", "tolerance": "tolerance", "accel": "accel", "positions_accel": "positions.accel",
+    "params": "params", "values": "values", "branch": "branch", "key": "key", "gears": "gears", "serve": "serve",
+    "gears_md": "docs/gears.md", "summary_json": "summary.json", "key_json": "key.json",
+    "SCENE_toml": "SCENE.toml", "JSON": "JSON", "CSV": "CSV", "UTF-8": "UTF-8", "zip": "zip", "dpi": "dpi",
+    "multipart": "multipart/form-data", "token": "…/?token=…", "bearer": "Authorization: Bearer TOKEN",
+    "GRAPHPLAN_DEBUG=1": "GRAPHPLAN_DEBUG=1", "Ctrl-C": "Ctrl-C",
+    "pip": "pip install starlette uvicorn python-multipart",
+}
+
+
 def word(key: str, lang: str, /, **fields: object) -> str:
     """The catalogue's text for ``key`` in ``lang``; {m/s}-style fields are units in that language,
     other {fields} are filled from ``fields``."""
@@ -751,6 +765,8 @@ def word(key: str, lang: str, /, **fields: object) -> str:
     if "{" not in text:
         return text
     units = {k: unit(k, lang) for k in UNITS}
+    if "{@" in text:
+        units.update({"@" + k: v for k, v in LITERALS.items()})
     if "{n_divisions}" in text:           # the noun agreeing with its number
         try:
             n = int(str(fields.get("n")))
@@ -1154,4 +1170,174 @@ WORDS.update({
     "sh cam larger": ("креслення кулачка більше за цілий аркуш {form} навіть у половинному розмірі; оберіть більший "
                       "формат ({option})", "a cam drawing is larger than a whole {form} sheet even at half its size; "
                       "choose a larger {option}"),
+})
+
+
+# -- tables a person writes: numbers, variant tables, students' tables, keys (model.variants, teach/) -------
+# column, directive and TOML names stay as the file writes them ({column}, variant, base …)
+WORDS.update({
+    # model/bounds.py: one reader of every table's numbers (util.errors.SaidValueError)
+    "nb radix": ("шістнадцятковий, вісімковий чи двійковий запис: пишіть число десятковими цифрами",
+                 "a hexadecimal, octal or binary literal: write the number in decimal digits"),
+    "nb underscore": ("пишіть числа без «_» (7_2 — не 72)", "write numbers without '_' (7_2 is not 72)"),
+    "nb not finite": ("не скінченне число", "not a finite number"),
+    "nb spaces": ("пробіли — лише між групами з трьох цифр (5 346,1)",
+                  "spaces only between groups of three digits (5 346,1)"),
+    "nb point and comma": ("і десяткова крапка, і кома: пишіть 5346.1 або 5346,1",
+                           "both a decimal point and a comma: write 5346.1 or 5346,1"),
+    "nb comma thousands": ("кома десяткова чи між тисячами? Пишіть 1.234 або 1234",
+                           "is the comma a decimal comma or between thousands? write 1.234 or 1234"),
+    "nb two commas": ("більше ніж одна десяткова кома", "more than one decimal comma"),
+    "nb dot thousands": ("крапка десяткова чи між тисячами? У таблиці, розділеній «;» чи табуляцією, пишіть 5,351 "
+                         "або 5351", "is the dot a decimal point or between thousands? in a ';' or tab-separated "
+                         "table write 5,351 or 5351"),
+    "nb not number": ("не число", "not a number"),
+    "nb too large": ("|значення| ≤ {most}", "|value| ≤ {most}"),
+    "nb underflow": ("замале: воно перетворюється на 0", "too small: it underflows to 0"),
+    "nb in cell": ("{text}: {why}", "{text}: {why}"),
+    # model/variants.py: a group's variant table (docs/keys.md)
+    "vt where": ("{table}: варіант {id}", "{table}: variant {id}"),
+    "vt at line": ("рядок {line}: ", "line {line}: "),
+    "vt line": ("рядок {line}: {why}", "line {line}: {why}"),
+    "vt toml line": ("рядок {line}{key}: {why}", "line {line}{key}: {why}"),
+    "vt no header": ("у таблиці немає рядка заголовків (стовпець {@variant} і стовпці, що змінюють базову сцену)",
+                     "the table has no header row (a '{@variant}' column and the overrides)"),
+    "vt column twice": ("стовпець {name} записано двічі", "column {name} appears twice"),
+    "vt cells": ("рядок {line}: {n} клітинок на {width} стовпців{hint}", "line {line}: {n} cells for {width} columns{hint}"),
+    "vt cell": ("рядок {line}, стовпець {column}: {why}", "line {line}, column {column}: {why}"),
+    "vt no name": ("стовпець без назви", "a column has no name"),
+    "vt no variant column": ("таблиці потрібен стовпець {@variant}", "the table needs a '{@variant}' column"),
+    "vt no entries": ("таблиці потрібні записи [[{@variant}]]", "the table needs [[{@variant}]] entries"),
+    "vt entry table": ("{@variant}[{k}] має бути таблицею", "{@variant}[{k}] must be a table"),
+    "vt tolerance": ("{at}{key}: допуск має бути відсотком у межах (0; 100], задано {got}",
+                     "{at}{key}: a tolerance must be a percentage in (0, 100], got {got}"),
+    "vt divisions": ("{at}{@divisions}: кількість поділок має бути цілим числом від 2 до 720, задано {got}",
+                     "{at}{@divisions} must be a whole number from 2 to 720, got {got}"),
+    "vt directive": ("невідома директива {key} (відомі: {@base}, {@divisions}, {@tolerance}, {@tolerance}.<величина>)",
+                     "unknown directive {key} (known: {@base}, {@divisions}, {@tolerance}, {@tolerance}.<quantity>)"),
+    "vt no variants": ("у таблиці немає варіантів", "the table has no variants"),
+    "vt too many": ("варіантів {n}; таблиця вміщує щонайбільше {most} (розділіть таблицю групи)",
+                    "{n} variants; a table holds at most {most} (split the group's table)"),
+    "vt no id": ("{at}варіант без позначення (стовпець {@variant} порожній)", "{at}the variant has no id (its {@variant} is empty)"),
+    "vt bad id": ("{at}позначення варіанта {id}: лише літери, цифри, «.», «_» або «-»",
+                  "{at}variant id {id}: use letters, digits, '.', '_' or '-'"),
+    "vt summary id": ("{at}позначення варіанта {id} — це ім'я файла зведення; назвіть варіант інакше",
+                      "{at}variant id {id} is the name of a summary file; call the variant otherwise"),
+    "vt id twice": ("{at}варіант {id} записано двічі", "{at}variant {id} appears twice"),
+    "vt no base": ("{at}немає базової сцени: додайте рядок «# {@base} = {@SCENE_toml}» або стовпець {@base}",
+                   "{at}no base scene: add '# {@base} = {@SCENE_toml}' or a '{@base}' column"),
+    "vt unknown column": ("стовпець {column}: це не ім'я з [{@params}], не скорочення ({short}) і не шлях у базовій сцені",
+                          "column {column}: not a [{@params}] name, a shorthand ({short}) or a path in the base scene"),
+    "vt unknown column in": ("стовпець {column} (варіант {id}): це не ім'я з [{@params}] сцени {base}, не скорочення "
+                             "({short}) і не шлях через крапку в ній",
+                             "column {column} (variant {id}): not a [{@params}] name of {base}, a shorthand ({short}) "
+                             "or a dotted path in it"),
+    "vt accel": ("{@accel}: номери положень через «;» або пробіл, задано {got}",
+                 "{@accel}: position numbers separated by ';' or spaces, got {got}"),
+    # teach/tables.py, teach/grading.py: a student's table
+    "st encoding": ("таблиця не читається як текст {encoding} (байт {byte}); збережіть її як {@CSV} {@UTF-8}",
+                    "cannot read the table as {encoding} text (byte {byte}); save it as {@CSV} {@UTF-8}"),
+    "st zero bytes": ("{what} — не текст (містить нульові байти)", "the {what} is not text (it holds zero bytes)"),
+    "st empty": ("{what} порожня", "the {what} is empty"),
+    "st too many rows": ("{what}: рядків {n}; за раз оцінюється щонайбільше {most} (розділіть таблицю)",
+                         "the {what} has {n} rows; at most {most} are graded at once (split the table)"),
+    "st quote": ("рядок {line}: лапки не закрито", "line {line}: a quote is not closed"),
+    "st comma hint": (" — десяткова кома в таблиці, розділеній комами? Розділяйте «;» або пишіть 7.2",
+                      " — a decimal comma in a comma-separated table? Separate with ';' or write 7.2"),
+    "st columns": ("таблиці студента потрібні стовпці {@variant}, {@position}, {@quantity}, {@value} (бракує {need})",
+                   "the student table needs the columns {@variant}, {@position}, {@quantity}, {@value} (missing {need})"),
+    "st column twice": ("рядок 1: стовпець {name} записано двічі (стовпці {cols}); залиште один",
+                        "line 1: the column {name} appears twice (columns {cols}); keep one"),
+    "st cell": ("рядок {line}: {column} {text}{at}: {why}", "line {line}: {column} {text}{at}: {why}"),
+    "st at column": (" (стовпець {k})", " (column {k})"),
+    "st split": ("рядок {line}: {a}, а далі {b} (стовпці {k1} і {k2}) — десяткову кому розбито на дві клітинки? "
+                 "Запишіть число з крапкою, візьміть його в лапки (\"11,09\") або розділяйте таблицю «;»",
+                 "line {line}: {a} and then {b} (columns {k1} and {k2}) — a decimal comma split across cells? "
+                 "Write the number with a point, quote it (\"11,09\") or separate the table with ';'"),
+    "st no position": ("рядок 1: у таблиці немає стовпця положень (її перший стовпець — варіант): назвіть стовпець "
+                       "положень {@position}", "line 1: the table has no position column (its first column is the "
+                       "variant): name the positions' column {@position}"),
+    # teach/grading.py, teach/keys.py, cli/key.py: keys
+    "ky no written": ("у теці ключів немає жодного записаного варіанта", "the key folder holds no written variants"),
+    "ky not folder": ("це не тека ключів (немає {@summary_json} чи {@key_json})", "not a key folder (no {@summary_json} or {@key_json})"),
+    "ky cannot read": ("ключ не читається: {why}", "cannot read the key: {why}"),
+    "ky not object": ("це не ключ graphplan (не об'єкт {@JSON})", "not a graphplan key (not a {@JSON} object)"),
+    "ky format": ("це не ключ graphplan (формат {got}, потрібен {want})",
+                  "not a graphplan key (format {got}, expected {want})"),
+    "ky accel": ("{@positions_accel}: положення {p} немає (положень {count}: 0–{last})",
+                 "{@positions_accel}: position {p} does not exist ({count} positions, 0–{last})"),
+    "ky none built": ("жоден варіант не вдалося побудувати, нічого не записано: {first}{more}",
+                      "no variant could be built, nothing written: {first}{more}"),
+    "ky more": (" (і ще {n})", " (and {n} more)"),
+    "ky skipped": ("{where}: пропущено: {note}", "{where}: skipped: {note}"),
+    "op internal": ("внутрішня помилка: {name}: {text} (задайте {@GRAPHPLAN_DEBUG=1}, щоб побачити трасування)",
+                    "internal error: {name}: {text} (set {@GRAPHPLAN_DEBUG=1} for the traceback)"),
+})
+
+
+# -- web/ and cli/serve.py: the page's server (its HTTP errors speak the request's ?lang=) -----------------
+WORDS.update({
+    "wb scene not utf8": ("сцена не є текстом {@UTF-8}; збережіть файл у кодуванні {@UTF-8}",
+                          "the scene is not {@UTF-8} text; save the file as {@UTF-8}"),
+    "wb table not utf8": ("таблиця не є текстом {@UTF-8}; збережіть її як {@CSV} {@UTF-8}",
+                          "the table is not {@UTF-8} text; save it as {@CSV} {@UTF-8}"),
+    "wb scene large": ("сцена більша за {kb} кБ", "the scene is larger than {kb} kB"),
+    "wb table large": ("таблиця більша за {kb} кБ", "the table is larger than {kb} kB"),
+    "wb busy": ("сервер зайнятий: усі обчислювальні процеси працюють; спробуйте ще раз за мить",
+                "the server is busy: every worker is computing; try again in a moment"),
+    "wb timeout": ("обчислення тривало довше за {s} с і його зупинено (з меншою кількістю положень чи поділок "
+                   "креслення будується швидше)", "the work took longer than {s} s and was stopped (fewer positions "
+                   "or divisions draw faster)"),
+    "wb worker died": ("внутрішня помилка: процес, що це обчислював, несподівано завершився; наступний запит "
+                       "візьме новий", "internal error: the worker computing this ended unexpectedly; a fresh one "
+                       "takes the next request"),
+    "wb kind twice": ("вид аркуша задано двічі", "a kind is asked twice"),
+    "wb multipart": ("тіло запиту має бути {@multipart} з частинами {names}",
+                     "the body must be {@multipart} with {names}"),
+    "wb form unreadable": ("форма не читається: {why}", "cannot read the form: {why}"),
+    "wb no part": ("у формі немає частини {name} ({what})", "the form has no {name} part ({what})"),
+    "wb base column": ("стовпець {@base} називає файли на сервері; завантажте базову сцену окремим файлом ({@base})",
+                       "a '{@base}' column names files on the server; upload the base scene as '{@base}' instead"),
+    "wb keys busy": ("сервер зайнятий ключами іншого викладача; спробуйте ще раз за хвилину",
+                     "the server is busy with a teacher's batch of keys; try again in a minute"),
+    "wb keys timeout": ("ключі складалися довше за {s} с, і їх зупинено", "the keys took longer than {s} s and were stopped"),
+    "wb key ended": ("graphplan {@key} завершився з кодом {code}", "graphplan {@key} ended with {code}"),
+    "wb no batch": ("такого набору ключів немає (його вже завантажено, або строк зберігання минув)",
+                    "no such batch of keys (downloaded already, or expired)"),
+    "wb not ready": ("ключі ще не готові", "the keys are not ready yet"),
+    "wb host": ("{host} — не ім'я цього сервера", "host {host} is not this server's name"),
+    "wb other site": ("запит з іншого сайту відхилено", "a request from another site is refused"),
+    "wb token": ("цей сервер вимагає свій токен: відкрийте адресу, яку він надрукував під час запуску "
+                 "({@token}), або надішліть «{@bearer}»",
+                 "this server asks for its token: open the address it printed at start ({@token}) or send "
+                 "'{@bearer}'"),
+    "wb not found": ("не знайдено", "not found"),
+    "wb not allowed": ("метод не дозволено", "method not allowed"),
+    "wb refused": ("відхилено", "refused"),
+    "wb form json": ("не об'єкт {@JSON}", "not a {@JSON} object"),
+    "wb form object": ("форма має бути об'єктом {@JSON}", "the form must be a {@JSON} object"),
+    "wb template": ("шаблон {got}: оберіть один з {known}", "template {got}: use one of {known}"),
+    "wb values": ("{@values}: має бути об'єктом {@JSON}", "{@values}: must be a {@JSON} object"),
+    "wb choice": ("{key}: {got} — не одне з {choices}", "{key}: {got} is not one of {choices}"),
+    "wb not number": ("{key}: {got} — не число", "{key}: {got} is not a number"),
+    "wb not finite": ("{key}: {got} — не скінченне число", "{key}: {got} is not a finite number"),
+    "wb branch": ("{@branch}: таблиця імен точок зі значеннями +1 або -1", "{@branch}: a table of point names with +1 or -1"),
+    "wb explorer gears": ("інтерактивна сторінка показує важільні й кулачкові механізми; сцену зубчастого механізму "
+                          "креслять graphplan {@gears} і його аркуш ({@gears_md})",
+                          "the explorer shows lever mechanisms and cams; a gear scene has graphplan {@gears} and its "
+                          "sheet ({@gears_md})"),
+    "wb zip": ("{@zip} ключів не читається: {why}", "cannot read the key's {@zip}: {why}"),
+    "wb zip files": ("{@zip} ключів містить {n} файлів (щонайбільше {most})", "the key's {@zip} holds {n} files (at most {most})"),
+    "wb zip size": ("{@zip} ключів розпаковується в понад {mb} МБ", "the key's {@zip} unpacks to more than {mb} MB"),
+    "wb nested": ("вкладено надто глибоко", "nested too deeply"),
+    "wb memory": ("обчисленню потрібно більше пам'яті, ніж має обчислювальний процес ({gb} ГБ); оберіть менший "
+                  "формат чи {@dpi}, менше положень", "the work needs more memory than a worker has ({gb} GB); a "
+                  "smaller format or {@dpi}, fewer positions"),
+    "wb internal": ("внутрішня помилка: {name}: {text}", "internal error: {name}: {text}"),
+    "wb assembly": ("складання", "assembly"),
+    "sv needs": ("graphplan {@serve} потребує {name}: {@pip}",
+                 "graphplan {@serve} needs {name}: {@pip}"),
+    "sv started": ("graphplan {@serve}: {url}{shared} — {@Ctrl-C} зупиняє сервер", "graphplan {@serve}: {url}{shared} — {@Ctrl-C} stops it"),
+    "sv shared": ("  (токен запитується в кожного відвідувача; дайте цю адресу групі)",
+                  "  (the token is asked of every visitor; share this address with the class)"),
 })

@@ -30,6 +30,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from graphplan.util.errors import GraphplanError
+from graphplan.util.words import word
 from graphplan.web.pool import Busy, Pool, TimedOut, WorkerDied
 
 STATIC = Path(__file__).parent / "static"
@@ -56,9 +57,51 @@ class Config:
 
 
 class Refused(Exception):
-    def __init__(self, status: int, line: str, headers: dict[str, str] | None = None):
-        super().__init__(line)
-        self.status, self.line, self.headers = status, line, headers or {}
+    """A request refused with ``status`` and one line: ``line`` as given (a text, or the text in each
+    language — util.words.said — of which the answer speaks the request's, ``told``); ``lang`` the
+    scene's language, spoken when the request names none."""
+
+    def __init__(self, status: int, line: str | dict[str, str], headers: dict[str, str] | None = None,
+                 lang: str | None = None):
+        self.said = dict(line) if isinstance(line, dict) else {}
+        text = self.said.get("en", "") if self.said else str(line)
+        super().__init__(text)
+        self.status, self.line, self.headers, self.lang = status, text, headers or {}, lang
+
+    def told(self, lang: str) -> str:
+        """The line in ``lang`` (as given where it says itself in one language only)."""
+        return self.said.get(lang, self.line)
+
+
+def refusal(status: int, key: str, /, where: str = "", headers: dict[str, str] | None = None,
+            **fields: object) -> Refused:
+    """A refusal worded by the catalogue (util.words ``key``), "where: text" in each language."""
+    from graphplan.util.words import said
+    texts = {lang: f"{where}: {text}" if where else text for lang, text in said(key, **fields).items()}
+    return Refused(status, texts, headers)
+
+
+def refused_error(status: int, exc: GraphplanError, folder: Path | None = None) -> Refused:
+    """A GraphplanError as a refusal in both languages (its scene's language kept), without the
+    request's folder."""
+    from graphplan.util.words import LANGS
+    texts = {}
+    for lang in LANGS:
+        text = exc.line(lang)
+        if folder is not None:
+            text = text.replace(f"{folder}/", "").replace(str(folder), ".")
+        texts[lang] = text
+    return Refused(status, texts, lang=exc.lang)
+
+
+def told_lang(request: Request, scene: str | None = None) -> str:
+    """The language an answer's line speaks: the request's ``?lang=``, else the scene's, else the
+    server's --lang, else Ukrainian."""
+    from graphplan.util.words import pick
+    asked = request.query_params.get("lang")
+    config = getattr(request.app.state, "config", None)
+    return pick(asked if asked in ("uk", "en") else None, scene if scene in ("uk", "en") else None,
+                getattr(config, "lang", None) if getattr(config, "lang", None) in ("uk", "en") else None)
 
 
 def safe_json(doc: Any) -> bytes:
@@ -81,29 +124,29 @@ async def body(request: Request, limit: int, what: str) -> bytes:
     """The body, refused with 413 past ``limit`` bytes (before reading it when Content-Length says so)."""
     declared = request.headers.get("content-length")
     if declared and declared.isdigit() and int(declared) > limit:
-        raise Refused(413, too_large(what, limit))
+        raise too_large(what, limit)
     chunks, size = [], 0
     async for chunk in request.stream():
         size += len(chunk)
         if size > limit:
-            raise Refused(413, too_large(what, limit))
+            raise too_large(what, limit)
         chunks.append(chunk)
     data = b"".join(chunks)
     request._body = data                     # the form parser reads it again
     return data
 
 
-def too_large(what: str, limit: int) -> str:
+def too_large(what: str, limit: int) -> Refused:
     if what == "scene":
-        return f"scene.toml: the scene is larger than {limit // 1024} kB"
-    return f"{what}: the table is larger than {limit // 1024} kB"
+        return refusal(413, "wb scene large", where="scene.toml", kb=limit // 1024)
+    return refusal(413, "wb table large", where=what, kb=limit // 1024)
 
 
 def scene_text(data: bytes) -> str:
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise Refused(422, "scene.toml: the scene is not UTF-8 text") from None
+        raise refusal(422, "wb scene not utf8", where="scene.toml") from None
 
 
 def lang_of(request: Request) -> str | None:
@@ -111,7 +154,7 @@ def lang_of(request: Request) -> str | None:
     if lang in (None, ""):
         return None
     if lang not in ("uk", "en"):
-        raise Refused(422, f"--lang: invalid choice: {lang[:20]!r} (choose from 'uk', 'en')")
+        raise refusal(422, "ap choice", arg="--lang", got=repr(lang[:20]), choices="'uk', 'en'")
     return lang
 
 
@@ -119,13 +162,19 @@ def number(request: Request, name: str, default: float, lo: float, hi: float, un
     raw = request.query_params.get(name)
     if raw in (None, ""):
         return default
+    from graphplan.util.words import WORDS, unit as unit_in
     try:
         v = float(raw)
     except ValueError:
-        raise Refused(422, f"--{name}: invalid float value: {raw[:20]!r}") from None
+        raise refusal(422, "ap invalid", arg=f"--{name}", got=repr(raw[:20]),
+                      kind=lambda lang: WORDS["ap kind float"][0 if lang == "uk" else 1]) from None
     import math
     if not (math.isfinite(v) and lo <= v <= hi):
-        raise Refused(422, f"--{name} must be from {lo:g} to {hi:g}{' ' + unit if unit else ''}, got {v:g}")
+        def said_unit(lang: str) -> str:
+            text = unit_in(unit, lang) if unit else ""
+            return text if text in ("", "°") else " " + text
+        raise refusal(422, "op range", where=f"--{name}", lo=f"{lo:g}", open="", hi=f"{hi:g}", unit=said_unit,
+                      got=f"{v:g}")
     return v
 
 
@@ -135,14 +184,11 @@ async def in_worker(request: Request, name: str, *args: Any) -> Response:
     try:
         answer = await pool.run(name, *args)
     except Busy as exc:
-        raise Refused(503, "the server is busy: every worker is computing; try again in a moment",
-                      {"Retry-After": str(exc.retry_after)}) from None
+        raise refusal(503, "wb busy", headers={"Retry-After": str(exc.retry_after)}) from None
     except TimedOut:
-        raise Refused(422, f"the work took longer than {pool.timeout:g} s and was stopped "
-                           "(fewer positions or divisions draw faster)") from None
+        raise refusal(422, "wb timeout", s=f"{pool.timeout:g}") from None
     except WorkerDied:
-        raise Refused(500, "internal error: the worker computing this ended unexpectedly; "
-                           "a fresh one takes the next request") from None
+        raise refusal(500, "wb worker died") from None
     if answer.status != 200:
         return error(answer.status, answer.line)
     return Response(answer.body, 200, headers=answer.headers, media_type=answer.media)
@@ -166,14 +212,15 @@ async def toml_(request: Request) -> Response:
     """The form's values (JSON) → the scene's TOML (web/templates.py)."""
     from graphplan.web.templates import scene_toml
     data = await body(request, SCENE_LIMIT, "scene")
+    lang_of(request)
     try:
         doc = json.loads(data.decode("utf-8"))
     except (UnicodeDecodeError, json.JSONDecodeError, RecursionError):
-        raise Refused(422, "form: not a JSON object") from None
+        raise refusal(422, "wb form json", where="form") from None
     try:
         text = scene_toml(doc)
     except GraphplanError as exc:
-        raise Refused(422, exc.line()) from None
+        raise refused_error(422, exc) from None
     return Response(text, media_type="text/plain; charset=utf-8")
 
 
@@ -196,9 +243,9 @@ def _kinds(request: Request) -> list[str]:
     kinds = [k.strip() for k in raw.split(",") if k.strip()]
     for k in kinds:
         if k not in KINDS:
-            raise Refused(422, f"--sheet: invalid choice: {k[:20]!r} (choose from {', '.join(KINDS)})")
+            raise refusal(422, "ap choice", arg="--sheet", got=repr(k[:20]), choices=", ".join(KINDS))
     if len(set(kinds)) != len(kinds):
-        raise Refused(422, "--sheet: a kind is asked twice")
+        raise refusal(422, "wb kind twice", where="--sheet")
     return kinds
 
 
@@ -207,10 +254,10 @@ async def sheet(request: Request) -> Response:
     kinds = _kinds(request)
     fmt = request.query_params.get("format", "A1")
     if fmt.upper() not in ("A1", "A2", "A3", "A4"):
-        raise Refused(422, f"--format: unknown sheet format {fmt[:20]!r} (A1, A2, A3, A4)")
+        raise refusal(422, "op sheet format", where="--format", got=repr(fmt[:20]), formats="A1, A2, A3, A4")
     kind_of_file = request.query_params.get("type", "svg").lower()
     if kind_of_file not in TYPES:
-        raise Refused(422, f"-o sheet.{kind_of_file[:10]}: unknown format; use .svg, .pdf, .png, .dxf")
+        raise refusal(422, "op out format", where=f"-o sheet.{kind_of_file[:10]}", formats=".svg, .pdf, .png, .dxf")
     dpi = number(request, "dpi", 300.0, 30.0, 600.0)
     lang = lang_of(request)
     text = scene_text(await body(request, SCENE_LIMIT, "scene"))
@@ -250,28 +297,29 @@ async def form_files(request: Request, names: dict[str, tuple[int, str]]) -> dic
     await body(request, sum(limit for limit, _ in names.values()) + 64 * 1024, "upload")
     ctype = request.headers.get("content-type", "")
     if not ctype.startswith("multipart/form-data"):
-        raise Refused(422, f"the body must be multipart/form-data with {', '.join(names)}")
+        raise refusal(422, "wb multipart", names=", ".join(names))
     try:
         form = await request.form(max_files=len(names) + 2, max_fields=20)
     except Exception as exc:                 # the parser's own refusal (a malformed body)
-        raise Refused(422, f"cannot read the form: {' '.join(str(exc).split())[:120]}") from None
+        raise refusal(422, "wb form unreadable", why=" ".join(str(exc).split())[:120]) from None
     out: dict[str, bytes] = {}
     for name, (limit, what) in names.items():
         part = form.get(name)
         if part is None:
-            raise Refused(422, f"the form has no {name!r} part ({what})")
+            raise refusal(422, "wb no part", name=repr(name), what=what)
         data = await part.read() if hasattr(part, "read") else str(part).encode("utf-8")
         if len(data) > limit:
-            raise Refused(413, too_large("scene" if limit == SCENE_LIMIT else what, limit))
+            raise too_large("scene" if limit == SCENE_LIMIT else what, limit)
         out[name] = data
     await form.close()
     return out
 
 
 async def check_students(request: Request) -> Response:
+    lang = lang_of(request)
     parts = await form_files(request, {"key": (TABLE_LIMIT, "key.json"), "student": (TABLE_LIMIT, "student.csv")})
     signed = request.query_params.get("signed") in ("1", "true", "yes")
-    answer = await in_worker(request, "grade", parts["key"], parts["student"], signed)
+    answer = await in_worker(request, "grade", parts["key"], parts["student"], signed, lang)
     if answer.status_code == 200 and request.query_params.get("format") == "csv":
         return Response(grades_csv(json.loads(answer.body)), media_type="text/csv; charset=utf-8",
                         headers={"Content-Disposition": 'attachment; filename="grades.csv"'})
@@ -314,7 +362,8 @@ class Batch:
     total: int
     started: float
     state: str = "running"           # running, done, failed
-    error: str = ""
+    error: str = ""                  # why it failed, in ``lang``
+    lang: str = "uk"
     ended: float = 0.0
     proc: Any = None
 
@@ -337,13 +386,12 @@ def variants_text(data: bytes) -> str:
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise Refused(422, "variants.csv: the table is not UTF-8 text") from None
+        raise refusal(422, "wb table not utf8", where="variants.csv") from None
     lines = [ln for ln in text.splitlines() if not _BASE_DIRECTIVE.match(ln)]
     header = next((ln for ln in lines if ln.strip() and not ln.strip().startswith("#")), "")
     delim = ";" if ";" in header else "\t" if "\t" in header else ","
     if "base" in [h.strip().strip('"') for h in header.split(delim)]:
-        raise Refused(422, "variants.csv: a 'base' column names files on the server; upload the base scene "
-                           "as 'base' instead")
+        raise refusal(422, "wb base column", where="variants.csv")
     return "# base = base.toml\n" + "\n".join(lines) + "\n"
 
 
@@ -363,8 +411,7 @@ async def start_batch(request: Request) -> Batch:
     table = variants_text(parts["variants"])
     running = [b for b in state.batches.values() if b.state == "running"]
     if len(running) >= state.config.batches:
-        raise Refused(503, "the server is busy with a teacher's batch of keys; try again in a minute",
-                      {"Retry-After": "30"})
+        raise refusal(503, "wb keys busy", headers={"Retry-After": "30"})
     folder = state.pool.root / ("key-" + secrets.token_hex(8))
     folder.mkdir()
     (folder / "variants.csv").write_text(table, encoding="utf-8")
@@ -373,8 +420,9 @@ async def start_batch(request: Request) -> Batch:
         total = len((await asyncio.to_thread(vt.read, folder / "variants.csv")).variants)
     except GraphplanError as exc:
         shutil.rmtree(folder, ignore_errors=True)
-        raise Refused(422, _strip(exc.line(), folder)) from None
-    batch = Batch(secrets.token_hex(12), folder, total, time.monotonic())
+        raise refused_error(422, exc, folder) from None
+    batch = Batch(secrets.token_hex(12), folder, total, time.monotonic(),
+                  lang=told_lang(request, vt.base_lang(folder / "variants.csv", table)))
     state.batches[batch.id] = batch
     args = [sys.executable, "-m", "graphplan", "key", "variants.csv", "-o", "keys", "--quiet",
             "--jobs", str(state.config.key_jobs)]
@@ -408,7 +456,7 @@ async def finish_batch(batch: Batch, bound: float) -> None:
         _, err = await asyncio.wait_for(batch.proc.communicate(), bound)
     except asyncio.TimeoutError:
         kill(batch)
-        batch.state, batch.error = "failed", f"the keys took longer than {bound:g} s and were stopped"
+        batch.state, batch.error = "failed", word("wb keys timeout", batch.lang, s=f"{bound:g}")
         batch.ended = time.monotonic()
         shutil.rmtree(batch.folder, ignore_errors=True)
         return
@@ -418,7 +466,8 @@ async def finish_batch(batch: Batch, bound: float) -> None:
     lines = [ln for ln in err.decode("utf-8", "replace").splitlines() if ln.strip()]
     if batch.proc.returncode != 0:
         batch.state = "failed"
-        batch.error = _strip(lines[-1], batch.folder) if lines else f"graphplan key ended with {batch.proc.returncode}"
+        batch.error = (_strip(lines[-1], batch.folder) if lines
+                       else word("wb key ended", batch.lang, code=batch.proc.returncode))
         shutil.rmtree(batch.folder, ignore_errors=True)
     else:
         await asyncio.to_thread(zip_folder, batch.folder / "keys", batch.folder / "keys.zip")
@@ -479,7 +528,7 @@ def _batch(request: Request) -> Batch:
     expire(request.app.state)
     b = request.app.state.batches.get(request.path_params["job"])
     if b is None:
-        raise Refused(404, "no such batch of keys (downloaded already, or expired)")
+        raise refusal(404, "wb no batch")
     return b
 
 
@@ -490,7 +539,7 @@ async def key_status(request: Request) -> Response:
 async def key_zip(request: Request) -> Response:
     b = _batch(request)
     if b.state == "running":
-        raise Refused(409, "the keys are not ready yet")
+        raise refusal(409, "wb not ready")
     if b.state == "failed":
         request.app.state.batches.pop(b.id, None)
         return error(422, b.error)
@@ -515,7 +564,7 @@ class Guard(BaseHTTPMiddleware):
         try:
             response = await self.guarded(request, call_next, cfg)
         except Refused as exc:
-            response = error(exc.status, exc.line, exc.headers)
+            response = error(exc.status, exc.told(told_lang(request, exc.lang)), exc.headers)
         response.headers.setdefault("Content-Security-Policy", CSP)
         response.headers["X-Content-Type-Options"] = "nosniff"
         response.headers["Referrer-Policy"] = "no-referrer"
@@ -527,10 +576,10 @@ class Guard(BaseHTTPMiddleware):
     async def guarded(self, request: Request, call_next, cfg: Config):
         host = (request.headers.get("host") or "").rsplit(":", 1)[0].strip("[]")
         if cfg.allowed_hosts and host not in cfg.allowed_hosts:
-            raise Refused(421, f"host {host[:60]!r} is not this server's name")
+            raise refusal(421, "wb host", host=repr(host[:60]))
         origin = request.headers.get("origin")
         if origin and origin != "null" and origin.split("://", 1)[-1] != request.headers.get("host"):
-            raise Refused(403, "a request from another site is refused")
+            raise refusal(403, "wb other site")
         if cfg.token:
             given = request.headers.get("authorization", "")
             bearer = given[7:] if given.lower().startswith("bearer ") else ""
@@ -541,22 +590,23 @@ class Guard(BaseHTTPMiddleware):
                     r = RedirectResponse("/", 303)
                     r.set_cookie(COOKIE, cfg.token, httponly=True, samesite="strict")
                     return r
-                raise Refused(401, "this server asks for its token: open the address it printed at start "
-                                   "(…/?token=…) or send 'Authorization: Bearer TOKEN'")
+                raise refusal(401, "wb token")
         try:
             return await call_next(request)
         except Refused as exc:
-            return error(exc.status, exc.line, exc.headers)
+            return error(exc.status, exc.told(told_lang(request, exc.lang)), exc.headers)
 
 
 async def refused_handler(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, Refused)
-    return error(exc.status, exc.line, exc.headers)
+    return error(exc.status, exc.told(told_lang(request, exc.lang)), exc.headers)
 
 
 async def not_found(request: Request, exc: Exception) -> Response:
+    from graphplan.util.words import word
     status = getattr(exc, "status_code", 404)
-    return error(status, "not found" if status == 404 else "method not allowed" if status == 405 else "refused")
+    key = "wb not found" if status == 404 else "wb not allowed" if status == 405 else "wb refused"
+    return error(status, word(key, told_lang(request)))
 
 
 def create_app(config: Config | None = None, pool: Pool | None = None) -> Starlette:

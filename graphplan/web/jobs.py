@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from graphplan.util.errors import GraphplanError, keyed_error
+from graphplan.util.errors import GraphplanError, keyed_error, said_error
+from graphplan.util.words import word
 
 SCENE = "scene.toml"
 KINDS = ("kinematics", "forces", "dynamics", "cam", "gears")
@@ -184,8 +185,7 @@ def view(folder: Path, text: str, lang: str | None) -> Answer:
     kind, obj = _cam_or_study(tree)
     lang = _lang(lang, tree)
     if kind == "gears":
-        raise GraphplanError("the explorer shows lever mechanisms and cams; a gear scene has graphplan gears "
-                             "and its sheet (docs/gears.md)", SCENE)
+        raise said_error(GraphplanError, "wb explorer gears", SCENE, lang)
     if kind == "cam":
         from graphplan.exact.cam import solve
         from graphplan.report.camview import cam_html
@@ -309,7 +309,7 @@ def gears_tables(doc: dict[str, Any]) -> list[tuple[str, bytes]]:
     return files
 
 
-def grade(folder: Path, key: bytes, student: bytes, signed: bool) -> Answer:
+def grade(folder: Path, key: bytes, student: bytes, signed: bool, lang: str | None = None) -> Answer:
     """`graphplan check KEY STUDENT.csv --json`: the key a key.json, or the zip /api/key answers."""
     import json
     from graphplan.teach.grading import grade as grade_rows
@@ -323,7 +323,14 @@ def grade(folder: Path, key: bytes, student: bytes, signed: bool) -> Answer:
         key_name = "key.json"
     student_path = folder / "student.csv"
     student_path.write_bytes(student)
-    graded = grade_rows(load_keys(key_path), read_student(student_path), signed=signed)
+    keys = load_keys(key_path)
+    try:
+        rows = read_student(student_path)
+    except GraphplanError as exc:                 # without ?lang=: the keys' scenes' language
+        from graphplan.util.errors import speaking
+        langs = {k.get("scene", {}).get("lang") for k in keys.values() if isinstance(k.get("scene"), dict)}
+        raise speaking(exc, langs.pop() if len(langs) == 1 else None) from None
+    graded = grade_rows(keys, rows, signed=signed)
     doc = report_json(graded, key_name, "student.csv", signed)
     for row, g in zip(doc["rows"], graded):        # the note in Ukrainian too, for the Ukrainian page
         row["note_uk"] = g.note_uk
@@ -342,9 +349,9 @@ def _unzip_keys(data: bytes, into: Path) -> Path:
         z = zipfile.ZipFile(io.BytesIO(data))
         infos = z.infolist()
     except (zipfile.BadZipFile, ValueError) as exc:
-        raise GraphplanError(f"cannot read the key's zip: {exc}", "key") from None
+        raise said_error(GraphplanError, "wb zip", "key", None, why=str(exc)) from None
     if len(infos) > MAX_KEY_FILES:
-        raise GraphplanError(f"the key's zip holds {len(infos)} files (at most {MAX_KEY_FILES})", "key")
+        raise said_error(GraphplanError, "wb zip files", "key", None, n=len(infos), most=MAX_KEY_FILES)
     into.mkdir()
     total = 0
     for info in infos:
@@ -353,7 +360,7 @@ def _unzip_keys(data: bytes, into: Path) -> Path:
             continue
         total += info.file_size
         if total > 64 * 1024 * 1024:
-            raise GraphplanError("the key's zip unpacks to more than 64 MB", "key")
+            raise said_error(GraphplanError, "wb zip size", "key", None, mb=64)
         target = into / name
         target.parent.mkdir(exist_ok=True)
         target.write_bytes(z.read(info))
@@ -424,7 +431,7 @@ def _at(st, phi: float, lang: str):
     from graphplan.graphic.record import Record
     from graphplan.util.markup import indexed
     if not math.isfinite(phi):
-        raise GraphplanError(f"--phi must be a number of degrees, got {phi}")
+        raise keyed_error(GraphplanError, None, "--phi", "op angle", lang, got=phi)
     sc = Scheme(st)
     angles = [float(a) for a in np.arange(TURN) * 360.0 / TURN]
     probe = [construct_position(sc, a, 1.0) for a in angles]
@@ -468,7 +475,7 @@ def _side_by_side(drawings, lang: str) -> str:
     for k, (chosen, drawn, error) in enumerate(drawings):
         x = k * (w + 10)
         said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '-1'}" for n, v in chosen.items())
-        caption = (("складання" if lang == "uk" else "assembly") + f" {k + 1}: [branch] {said}") if said else ""
+        caption = f"{word('wb assembly', lang)} {k + 1}: [branch] {said}" if said else ""
         parts = [f'<g class="assembly" transform="translate({x:.3f},0)">',
                  f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
                  'stroke-width="0.3"/>']
@@ -544,16 +551,16 @@ def run(name: str, folder: str, *args: Any) -> Answer:
     where = Path(folder)
     where.mkdir(parents=True, exist_ok=True)
     job = JOBS[name]
+    from graphplan.util.words import pick
+    asked = dict(zip(list(inspect.signature(job).parameters)[1:], args)).get("lang")
     try:
         return job(where, *args)
     except GraphplanError as exc:
-        names = list(inspect.signature(job).parameters)[1:]
-        return refused(exc, where, dict(zip(names, args)).get("lang"))
+        return refused(exc, where, asked)
     except RecursionError:
-        return Answer(422, line=f"{SCENE}: nested too deeply")
+        return Answer(422, line=f"{SCENE}: {word('wb nested', pick(asked))}")
     except MemoryError:
-        return Answer(422, line="the work needs more memory than a worker has (4 GB); a smaller format or dpi, "
-                                "fewer positions")
+        return Answer(422, line=word("wb memory", pick(asked), gb=4))
     except Exception as exc:   # an internal error is one line too (as the command line says it)
         text = " ".join(str(exc).split())[:300].replace(f"{where}/", "")
-        return Answer(500, line=f"internal error: {type(exc).__name__}: {text}")
+        return Answer(500, line=word("wb internal", pick(asked), name=type(exc).__name__, text=text))

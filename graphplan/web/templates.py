@@ -10,7 +10,7 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any, Callable
 
-from graphplan.util.errors import GraphplanError
+from graphplan.util.errors import GraphplanError, said_error
 
 
 @dataclass(frozen=True)
@@ -340,31 +340,33 @@ def scene_toml(doc: Any) -> str:
     """The scene of ``{"template": id, "values": {...}, "branch": {"B": 1}}``; one line naming the
     field for anything that is not a value of it."""
     if not isinstance(doc, dict):
-        raise GraphplanError("the form must be a JSON object")
+        raise said_error(GraphplanError, "wb form object", None, None)
     t = TEMPLATES.get(str(doc.get("template", "")))
     if t is None:
-        raise GraphplanError(f"template {str(doc.get('template'))[:40]!r}: use one of {', '.join(TEMPLATES)}")
+        raise said_error(GraphplanError, "wb template", None, None, got=repr(str(doc.get("template"))[:40]),
+                         known=", ".join(TEMPLATES))
     given = doc.get("values") or {}
     if not isinstance(given, dict):
-        raise GraphplanError("values: must be a JSON object")
+        raise said_error(GraphplanError, "wb values", None, None)
     values: dict[str, Any] = {}
     for f in t.fields:
         raw = given.get(f.key, f.default)
         if isinstance(f.default, str):
             text = " ".join(str(raw).split())[:200]
             if f.choices and text not in f.choices:
-                raise GraphplanError(f"{f.key}: {text[:40]!r} is not one of {', '.join(f.choices)}", "form")
+                raise said_error(GraphplanError, "wb choice", "form", None, key=f.key, got=repr(text[:40]),
+                                 choices=", ".join(f.choices))
             values[f.key] = text
             continue
         try:
             x = float(str(raw).replace(",", ".").strip())
         except ValueError:
-            raise GraphplanError(f"{f.key}: {str(raw)[:40]!r} is not a number", "form") from None
+            raise said_error(GraphplanError, "wb not number", "form", None, key=f.key, got=repr(str(raw)[:40])) from None
         if not math.isfinite(x) or abs(x) > 1e12:
-            raise GraphplanError(f"{f.key}: {str(raw)[:40]!r} is not a finite number", "form")
+            raise said_error(GraphplanError, "wb not finite", "form", None, key=f.key, got=repr(str(raw)[:40]))
         values[f.key] = x
     branch = doc.get("branch") or {}
     if not isinstance(branch, dict) or any(v not in (1, -1) for v in branch.values()) \
             or any(not isinstance(k, str) or not k.isalnum() or len(k) > 40 for k in branch):
-        raise GraphplanError("branch: a table of point names with +1 or -1", "form")
+        raise said_error(GraphplanError, "wb branch", "form", None)
     return t.build(values, branch)
