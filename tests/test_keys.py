@@ -127,7 +127,7 @@ def test_example_tables_are_sensible():
     ("# base = @EX/crank_slider.toml\nvariant,r\n../x,0.05\n", ["variant id '../x'"]),
 ])
 def test_bad_tables_are_one_line(capsys, tmp_path, text, words):
-    code, out, err = run(capsys, "key", table(tmp_path, text), "-o", tmp_path / "keys", "--quiet")
+    code, out, err = run(capsys, "key", table(tmp_path, text), "-o", tmp_path / "keys", "--quiet", "--lang", "en")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert all(w in err for w in words), err
     assert not (tmp_path / "keys").exists()
@@ -155,7 +155,7 @@ def test_key_writes_every_file_skips_the_impossible_one_and_is_byte_identical(ca
     code, out, err = run(capsys, "key", path, "-o", tmp_path / "k1", "--jobs", "1")
     assert code == 0
     lines = err.strip().splitlines()
-    assert len(lines) == 1 and "variant 03" in lines[0] and "skipped" in lines[0] and "II(2-3)" in lines[0]
+    assert len(lines) == 1 and "варіант 03" in lines[0] and "пропущено" in lines[0] and "II(2-3)" in lines[0]
     assert "03" in out and "пропущено" in out
     for v in ("01", "02"):
         for f in ("key.json", "key.csv", "key.svg", "key.pdf"):

@@ -112,9 +112,11 @@ def test_the_form_s_values_reach_the_scene_and_a_bad_one_is_named(client):
     assert tree["crank"]["length"] == 0.12 and tree["link"][0]["length"] == 0.4 and tree["branch"] == {"B": -1}
     assert tree["dynamics"]["delta"] == 0.05 and tree["force"][0]["stroke"] == "idle"
     assert "stroke" in refused(client.post("/api/toml", json={"template": "four_bar", "values": {"stroke": "x"}}))
-    assert refused(client.post("/api/toml", json={"template": "four_bar", "values": {"l2": "abc"}})) \
+    assert refused(client.post("/api/toml?lang=en", json={"template": "four_bar", "values": {"l2": "abc"}})) \
         == "form: l2: 'abc' is not a number"
-    assert "template" in refused(client.post("/api/toml", json={"template": "../../etc/passwd"}))
+    assert refused(client.post("/api/toml?lang=uk", json={"template": "four_bar", "values": {"l2": "abc"}})) \
+        == "form: l2: 'abc' — не число"
+    assert "шаблон" in refused(client.post("/api/toml", json={"template": "../../etc/passwd"}))
     refused(client.post("/api/toml", content=b"{not json"))
 
 
@@ -159,7 +161,8 @@ def test_check_and_refusals_say_the_command_line_s_own_line(client, tmp_path):
     bad_key = CRANK.replace("[positions]", "[positions]\nspeed = 3")
     assert refused(client.post("/api/scene/check?lang=en", content=bad_key.encode())).startswith(
         "scene.toml: positions.speed: unknown key")
-    assert refused(client.post("/api/scene/check?lang=en", content=b"\xff\xfe")) == "scene.toml: the scene is not UTF-8 text"
+    assert refused(client.post("/api/scene/check?lang=en", content=b"\xff\xfe")) \
+        == "scene.toml: the scene is not UTF-8 text; save the file as UTF-8"
 
 
 def test_every_option_refused_in_one_line(client):
@@ -168,22 +171,25 @@ def test_every_option_refused_in_one_line(client):
     assert "--phi" in refused(client.post("/api/scene/preview?phi=nan", content=body))
     assert "--phi" in refused(client.post("/api/scene/preview?phi=1e9", content=body))
     assert "--format" in refused(client.post("/api/sheet?format=A0", content=body))
-    assert "unknown format" in refused(client.post("/api/sheet?type=exe", content=body))
+    assert "unknown format" in refused(client.post("/api/sheet?type=exe&lang=en", content=body))
+    assert "невідомий формат" in refused(client.post("/api/sheet?type=exe", content=body))
     assert "--sheet" in refused(client.post("/api/sheet?kind=../x", content=body))
     assert refused(client.post("/api/sheet?kind=gears&lang=en", content=body)) \
         == "scene.toml: --sheet gears: the scene has no [gears] or [planetary] table (docs/gears.md)"
     assert "cam" in refused(client.post("/api/sheet?kind=cam", content=body))
-    assert refused(client.get("/api/nothing"), 404) == "not found"
+    assert refused(client.get("/api/nothing?lang=en"), 404) == "not found"
+    assert refused(client.get("/api/nothing"), 404) == "не знайдено"
     assert refused(client.get("/api/sheet"), 405)
 
 
 def test_bodies_over_the_limits_are_413(client):
     big = b"#" * (1024 * 1024 + 1)
-    assert refused(client.post("/api/scene/check", content=big), 413) == "scene.toml: the scene is larger than 1024 kB"
+    assert refused(client.post("/api/scene/check?lang=en", content=big), 413) == "scene.toml: the scene is larger than 1024 kB"
+    assert refused(client.post("/api/scene/check", content=big), 413) == "scene.toml: сцена більша за 1024 кБ"
     table = b"variant,r\n" + b"01,0.05\n" * (10 * 1024 * 1024 // 8 + 10)
-    line = refused(client.post("/api/check", files={"key": ("k.json", b"{}"), "student": ("s.csv", table)}), 413)
+    line = refused(client.post("/api/check?lang=en", files={"key": ("k.json", b"{}"), "student": ("s.csv", table)}), 413)
     assert "larger than" in line
-    line = refused(client.post("/api/key", files={"variants": ("v.csv", b"variant\n01\n"), "base": ("b.toml", big)}), 413)
+    line = refused(client.post("/api/key?lang=en", files={"variants": ("v.csv", b"variant\n01\n"), "base": ("b.toml", big)}), 413)
     assert line == "scene.toml: the scene is larger than 1024 kB"
 
 
@@ -192,13 +198,13 @@ def test_at_the_bound_of_work_503_with_retry_after_and_past_the_time_bound_the_w
     idle, pool.idle, busy, queue_wait = pool.idle, [], pool.busy, pool.queue_wait
     pool.busy, pool.queue_wait = pool.size, 0.2          # every worker busy, a short wait in the queue
     try:
-        r = client.post("/api/scene/check", content=CRANK.encode())
+        r = client.post("/api/scene/check?lang=en", content=CRANK.encode())
         assert "busy" in refused(r, 503) and int(r.headers["retry-after"]) > 0
     finally:
         pool.idle, pool.busy, pool.queue_wait = idle, busy, queue_wait
     pool.timeout, bound = 0.05, pool.timeout
     try:
-        line = refused(client.post("/api/sheet?kind=kinematics&format=A1", content=CRANK.encode()))
+        line = refused(client.post("/api/sheet?kind=kinematics&format=A1&lang=en", content=CRANK.encode()))
         assert "longer than" in line
     finally:
         pool.timeout = bound
@@ -375,7 +381,7 @@ def test_keys_then_grades_from_the_key_zip_and_as_csv(client):
     rows = list(csv.DictReader(io.StringIO(client.post("/api/check?format=csv", files={
         "key": ("key.json", z.read("01/key.json")), "student": ("s.csv", formula)}).text)))
     assert rows[-1]["quantity"].startswith("'=")                        # kept as text in a spreadsheet
-    assert "student.csv: line 2: value 'x' (column 4): not a number" == refused(client.post("/api/check", files={"key": ("k.json", z.read("01/key.json")),
+    assert "student.csv: line 2: value 'x' (column 4): not a number" == refused(client.post("/api/check?lang=en", files={"key": ("k.json", z.read("01/key.json")),
                                                              "student": ("s.csv", "variant,position,quantity,value\n01,1,v_B,x\n")}))
 
 
@@ -386,7 +392,7 @@ def test_a_batch_with_progress_is_removed_once_downloaded(client):
     assert r.status_code == 202
     job = r.json()
     assert job["total"] == 1 and re.fullmatch(r"[0-9a-f]{24}", job["job"])
-    busy = client.post("/api/key?wait=0", files={"variants": ("v.csv", VARIANTS), "base": ("b.toml", CRANK)})
+    busy = client.post("/api/key?wait=0&lang=en", files={"variants": ("v.csv", VARIANTS), "base": ("b.toml", CRANK)})
     assert "busy" in refused(busy, 503) and busy.headers["retry-after"]
     deadline = time.monotonic() + 600        # a generous bound: a loaded machine runs the batch slowly
     while True:
@@ -406,7 +412,7 @@ def test_path_like_input_never_becomes_a_path(client, tmp_path):
     base_col = "variant,base,r\n01,../../../etc/passwd,0.05\n"
     assert "base" in refused(client.post("/api/key", files={"variants": ("v.csv", base_col), "base": ("b.toml", CRANK)}))
     bad_id = "variant,r\n../x,0.05\n"
-    assert "variant id" in refused(client.post("/api/key", files={"variants": ("v.csv", bad_id), "base": ("b.toml", CRANK)}))
+    assert "variant id" in refused(client.post("/api/key?lang=en", files={"variants": ("v.csv", bad_id), "base": ("b.toml", CRANK)}))
     target = tmp_path / "escaped"
     evil = io.BytesIO()
     with zipfile.ZipFile(evil, "w") as z:
@@ -496,7 +502,7 @@ def test_a_worker_killed_mid_job_is_an_error_and_the_next_request_is_answered(cl
     t = threading.Thread(target=kill_busy_worker)
     t.start()
     try:
-        r = client.post("/api/sheet?kind=dynamics&format=A1&type=pdf", content=(EXAMPLES / "shaper.toml").read_bytes())
+        r = client.post("/api/sheet?kind=dynamics&format=A1&type=pdf&lang=en", content=(EXAMPLES / "shaper.toml").read_bytes())
     finally:
         answered.set()
         t.join()

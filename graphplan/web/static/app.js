@@ -20,6 +20,7 @@ const WORDS = {
     "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
     passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
     "assembly pick": "Обрати складання", uploaded_mode: "сцена з файла — поля шаблону не діють",
+    retry: "повторіть за", s: "с",
   },
   en: {
     title: "graphplan — graphical methods of TMM", student: "Student", teacher: "Teacher", language: "Language",
@@ -38,6 +39,7 @@ const WORDS = {
     "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
     passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
     "assembly pick": "Choose assembly", uploaded_mode: "scene from a file — the template's fields do not apply",
+    retry: "try again in", s: "s",
   },
 };
 
@@ -206,7 +208,7 @@ function showError(line) {
 async function sceneText() {
   if (state.mode === "toml") return withBranch($("toml").value);
   const body = JSON.stringify({ template: state.template.id, values: state.values, branch: state.branch });
-  const r = await post("/api/toml", body, "application/json");
+  const r = await post(`/api/toml?lang=${state.lang}`, body, "application/json");
   const text = await r.text();
   $("toml").value = text;
   return text;
@@ -317,7 +319,7 @@ async function download(path, fallback, button) {
     $("dl-status").textContent = t("ready") + name;
   } catch (e) {
     $("dl-status").textContent = "";
-    $("dl-error").textContent = e.message + (e.retry ? ` (Retry-After: ${e.retry} s)` : "");
+    $("dl-error").textContent = e.message + (e.retry ? ` (${t("retry")} ${e.retry} ${t("s")})` : "");
   } finally {
     button.disabled = false;
   }
