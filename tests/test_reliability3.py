@@ -237,7 +237,7 @@ def student(tmp_path: Path, text: str, name: str = "student.csv") -> Path:
 ])
 def test_student_tables_that_cannot_be_read_for_sure_are_refused(tmp_path, keys, text, words):
     path = student(tmp_path, text)
-    code, out, err = run(["check", str(keys), str(path)])
+    code, out, err = run(["check", str(keys), str(path), "--lang", "en"])
     check_run(["check"], code, out, err)
     assert code == 2, out
     for w in words:
@@ -258,7 +258,7 @@ def test_line_numbers_are_the_files_lines_whatever_the_unicode_breaks(tmp_path, 
     (they used to be numbered past the file's end)."""
     vb = exact_vb(keys)
     text = f"variant,position,quantity,value\n01,1,v_B,{vb:.3f}\u2028\n01,1,v_B,{vb:.3f}\f\n01,1,v_B,oops\n"
-    code, _, err = run(["check", str(keys), str(student(tmp_path, text))])
+    code, _, err = run(["check", str(keys), str(student(tmp_path, text)), "--lang", "en"])
     assert code == 2 and "line 4:" in err, err
     assert text.count("\n") == 4
 
@@ -323,6 +323,6 @@ def test_a_key_set_appears_under_its_name_only_when_whole(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text(f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\nvariant,r,l\n01,0.5,0.1\n",
                    encoding="utf-8")
-    code, _, err = run(["key", str(bad), "-o", str(tmp_path / "none"), "--quiet", "--no-pdf", "--jobs", "1"])
+    code, _, err = run(["key", str(bad), "-o", str(tmp_path / "none"), "--quiet", "--no-pdf", "--jobs", "1", "--lang", "en"])
     assert code == 2 and "nothing written" in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.csv", "keys", "v.csv"]

@@ -397,7 +397,7 @@ BASE = f"# base = {ROOT / 'examples' / 'crank_slider.toml'}\n"
 def test_variant_tables_read_numbers_as_check_does(tmp_path, table, words):
     path = tmp_path / ("v.toml" if table.startswith("base =") else "v.csv")
     path.write_text(table, encoding="utf-8")
-    ends(["key", path, "-o", tmp_path / "keys", "--quiet", "--no-pdf", "--jobs", "1"], 2, str(path), *words)
+    ends(["key", path, "-o", tmp_path / "keys", "--quiet", "--no-pdf", "--jobs", "1", "--lang", "en"], 2, str(path), *words)
     assert not (tmp_path / "keys" / "01").exists()
 
 
@@ -447,7 +447,7 @@ def exact_vb(keys: Path, variant: str = "01", position: int = 1) -> float:
 def test_student_tables_read_every_number_by_one_rule(tmp_path, keys, text, words):
     path = tmp_path / "student.csv"
     path.write_text(text, encoding="utf-8")
-    ends(["check", keys, path], 2, str(path), *words)
+    ends(["check", keys, path, "--lang", "en"], 2, str(path), *words)
 
 
 @pytest.mark.parametrize("header, row", [
