@@ -593,6 +593,11 @@ class _Reader:
             if j == mech.crank.pin and bodies == [mech.crank.link] and mech.crank.link in carries:
                 continue
             if len(bodies) == 1 and j not in mech.frame:
+                sliding = [n for n, link in mech.links.items() if n != bodies[0] and j in link.local
+                           and j not in link.joints and link.slides_on is not None]
+                if sliding:           # a point of a slider or a yoke: it joins another link only as its joint
+                    raise self.fail(f"link {bodies[0]}.joints", "sc joint on sliding", name=repr(j), link=sliding[0],
+                                    joints=f'joints = ["{j}"]', ref="ref", through="guide.through")
                 raise self.fail(f"link {bodies[0]}.joints", "sc joins nothing", name=repr(j))
         self.check_unique(mech)
         known = set(mech.point_names())

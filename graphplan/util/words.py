@@ -889,6 +889,14 @@ WORDS.update({
                       "{name} is also a frame point; names are unique across the frame's and the links' points"),
     "sc also link": ("{name} — також точка ланки {link}; дайте кожній точці своє ім'я",
                      "{name} is also a point of link {link}; give each point its own name"),
+    "sc joint on sliding": ("шарнір {name} нічого не з'єднує: це точка ланки {link}, що ковзає по напрямній, а не її "
+                            "шарнір; шарніром іншої ланки точка такої ланки буває лише як її власний шарнір — запишіть "
+                            "у ланці {link} {joints} (її початок, замість {ref} та точки) і розмістіть її прорізи через "
+                            "{through} відносно нього",
+                            "joint {name} joins nothing: it is a point of the link {link}, which slides on a guide, not "
+                            "its joint; a sliding link's point joins another link only as its own joint — write "
+                            "{joints} in link {link} (its origin, in place of {ref} and the point) and place its slots "
+                            "by {through} relative to it"),
     "sc joins nothing": ("шарнір {name} нічого не з'єднує: жодна інша ланка чи точка стояка його не має",
                          "joint {name} joins nothing: no other link or frame point has it"),
     "sc no point": ("такої точки немає", "no such point"),
