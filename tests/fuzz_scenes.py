@@ -67,7 +67,7 @@ def check_run(argv: list[str], code: int, out: str, err: str) -> dict | None:
     """The contract of every run: exit 0 or 2; on 2 exactly one line on stderr, never an internal
     error; no warning on stderr; JSON without NaN/Infinity. Returns the JSON document if any."""
     assert code in (0, 2), f"exit {code} for {argv}: {err!r}"
-    assert "internal error" not in err, f"{argv}: {err!r}"
+    assert "internal error" not in err and "внутрішня помилка" not in err, f"{argv}: {err!r}"
     assert "Warning" not in err, f"{argv}: {err!r}"
     if code == 2:
         lines = err.splitlines()
@@ -362,7 +362,7 @@ def extras_census(progress: str | None = None) -> dict:
                 if took > 30:
                     tally["over_30s"] += 1
                     problem = f"{took:.0f} s"
-                if "internal error" in err:
+                if "internal error" in err or "внутрішня помилка" in err:
                     tally["internal"] += 1
                     tally["by_family"][family]["internal"] += 1
                     problem = "internal"
@@ -445,7 +445,7 @@ def census(count: int, seed: int = 0, progress: str | None = None) -> dict:
             if took > 30:
                 tally["over_30s"] += 1
                 problem = f"{took:.0f} s"
-            if "internal error" in err:
+            if "internal error" in err or "внутрішня помилка" in err:
                 tally["internal"] += 1
                 problem = "internal"
             elif code not in (0, 2):
