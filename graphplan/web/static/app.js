@@ -113,7 +113,7 @@ const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°",
                 en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m", "rad/s": "rad/s" } };
 
 const CHOICES = {
-  uk: { ccw: "проти годинникової стрілки", cw: "за годинниковою стрілкою", cosine: "косинусний",
+  uk: { ccw: "проти год. стрілки", cw: "за год. стрілкою", cosine: "косинусний",
         cycloidal: "синусний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецієвидний",
         linear: "лінійний", working: "робочий", idle: "холостий", both: "обидва" },
   en: { ccw: "counter-clockwise", cw: "clockwise", cosine: "cosine", cycloidal: "cycloidal (sine)",
@@ -178,7 +178,11 @@ function renderFields() {
     const unit = document.createElement("span");
     unit.className = "unit";
     unit.textContent = (UNITS[state.lang] || {})[f.unit] || f.unit;
-    row.append(label, input, unit, err);
+    if (f.choices && f.choices.length) {                                    // a choice takes the unit's column too
+      row.classList.add("choice");
+      row.append(label, input, err);
+    }
+    else row.append(label, input, unit, err);
     box.appendChild(row);
   });
   box.disabled = state.mode !== "template";
@@ -339,6 +343,12 @@ async function readFile(input) {
   return f;
 }
 
+function named(line, fixed, input) {
+  // "variants.csv: …" → "<the teacher's file>: …" (the server names the uploaded copies by fixed names)
+  const f = input.files && input.files[0];
+  return f && line.startsWith(fixed + ":") ? f.name + line.slice(fixed.length) : line;
+}
+
 async function makeKeys() {
   $("key-error").textContent = "";
   $("key-status").textContent = "";
@@ -373,7 +383,8 @@ async function makeKeys() {
     save(await z.blob(), "keys.zip");
     $("key-status").textContent = t("keys done");
   } catch (e) {
-    $("key-error").textContent = e.message;
+    const line = named(e.message, "variants.csv", $("variants"));
+    $("key-error").textContent = $("base-current").checked ? line : named(line, "base.toml", $("base"));
   } finally {
     button.disabled = false;
   }
@@ -393,7 +404,7 @@ async function grade() {
     const r = await post(`/api/check?lang=${state.lang}`, await gradeForm());
     showGrades(await r.json());
   } catch (e) {
-    $("grade-error").textContent = e.message;
+    $("grade-error").textContent = named(named(e.message, "student.csv", $("students")), "key.json", $("keyfile"));
   }
 }
 
@@ -403,7 +414,7 @@ async function gradesCsv() {
     const r = await post(`/api/check?format=csv&lang=${state.lang}`, await gradeForm());
     save(await r.blob(), "grades.csv");
   } catch (e) {
-    $("grade-error").textContent = e.message;
+    $("grade-error").textContent = named(named(e.message, "student.csv", $("students")), "key.json", $("keyfile"));
   }
 }
 
