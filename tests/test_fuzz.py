@@ -238,7 +238,7 @@ def test_student_tables_in_every_column_order(tmp_path_factory, key_folder, orde
     cells = {"variant": "01", "position": "1", "quantity": "v_B", "value": value}
     path = tmp_path_factory.mktemp("order") / "student.csv"
     path.write_text(sep.join(order) + "\n" + sep.join(cells[c] for c in order) + "\n", encoding="utf-8")
-    argv = ["check", str(key_folder), str(path), "--json"]
+    argv = ["check", str(key_folder), str(path), "--json", "--lang", "en"]
     code, out, err = run(argv)
     doc = check_run(argv, code, out, err)
     if code == 2:
