@@ -337,7 +337,7 @@ def test_check_table_output(tmp_path, capsys):
     assert code == 0 and err == ""
     assert "FAIL" in out and "fits position 5" in out and "3 rows: 2 passed, 1 failed" in out
     code, out, err = run(capsys, "check", folder / "01", student)
-    assert "НЕ ЗАРАХ." in out and "відповідає положенню 5" in out and "3 рядків: зараховано 2" in out
+    assert "НЕ ЗАРАХ." in out and "відповідає положенню 5" in out and "3 рядки: зараховано 2" in out
 
 
 def test_quantities_cover_the_plans():

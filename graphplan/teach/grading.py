@@ -111,6 +111,13 @@ def read_student(path: str | Path) -> list[Row]:
     return rows
 
 
+def _rows(n: int, lang: str, key: str = "rows") -> str:
+    """"n rows" with the noun (and verb) agreeing with n: 1 рядок, 2 рядки, 5 рядків; 1 row, 2 rows."""
+    from graphplan.util.words import uk_count
+    form = uk_count(n, "one", "few", "many") if lang == "uk" else ("one" if n == 1 else "many")
+    return word(f"{key} {form}", lang, n=n)
+
+
 def _no_twice(header: list[str], path: Path) -> None:
     for name in ("variant", "position", "quantity", "value"):
         if header.count(name) > 1:
@@ -636,8 +643,8 @@ def write_table(out, graded: list[Graded], key_path: str, student_path: str, lan
     s = summary(graded)
     rate = f"{num(s['pass_pct'], lang)} %" if s["pass_pct"] is not None else "—"
     lines = [""]
-    lines.append(word("grade summary", lang, rows=s["rows"], passed=s["passed"], failed=s["failed"],
-                      unknown=s["unknown"], rate=rate, other=s["other_position"]))
+    lines.append(word("grade summary", lang, rows=_rows(s["rows"], lang), passed=s["passed"], failed=s["failed"],
+                      unknown=s["unknown"], rate=rate, other=_rows(s["other_position"], lang, "rows fit")))
     if len(s["variants"]) > 1:
         for v, c in s["variants"].items():
             rate = f"{num(c['pass_pct'], lang)} %" if c["pass_pct"] is not None else "—"

@@ -645,10 +645,14 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade head": ("рядок|варіант|пол.|величина|значення|точно|похибка %|допуск %|результат|примітка",
                    "line|variant|pos|quantity|value|exact|error %|tol %|result|note"),
     "pass": ("зарах.", "pass"), "fail": ("НЕ ЗАРАХ.", "FAIL"),
-    "grade summary": ("{rows} рядків: зараховано {passed}, не зараховано {failed}, не оцінено {unknown}; "
-                      "частка зарахованих {rate}; {other} рядків відповідають іншому положенню",
-                      "{rows} rows: {passed} passed, {failed} failed, {unknown} not graded; "
-                      "pass rate {rate}; {other} rows fit another position"),
+    "grade summary": ("{rows}: зараховано {passed}, не зараховано {failed}, не оцінено {unknown}; "
+                      "частка зарахованих {rate}; {other} іншому положенню",
+                      "{rows}: {passed} passed, {failed} failed, {unknown} not graded; "
+                      "pass rate {rate}; {other} another position"),
+    # the rows counted, the noun and the verb agreeing with the number (uk_count): 1 рядок, 2 рядки, 5 рядків
+    "rows one": ("{n} рядок", "{n} row"), "rows few": ("{n} рядки", "{n} rows"), "rows many": ("{n} рядків", "{n} rows"),
+    "rows fit one": ("{n} рядок відповідає", "{n} row fits"), "rows fit few": ("{n} рядки відповідають", "{n} rows fit"),
+    "rows fit many": ("{n} рядків відповідають", "{n} rows fit"),
     "grade variant": ("  варіант {v}: зараховано {passed}/{total} ({rate})", "  variant {v}: {passed}/{total} passed ({rate})"),
     "grade variant unknown": (", не оцінено {n}", ", {n} not graded"),
     "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
