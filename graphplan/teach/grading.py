@@ -220,8 +220,11 @@ def _json(path: Path) -> dict[str, Any]:
     text = read_text(path, "key file", MAX_KEY_BYTES)
     try:
         doc = json.loads(text)
-    except (json.JSONDecodeError, RecursionError) as exc:
-        raise said_error(GraphplanError, "ky cannot read", str(path), None, why=str(exc)[:80]) from None
+    except json.JSONDecodeError as exc:
+        raise said_error(GraphplanError, "ky not json", str(path), None, line=exc.lineno, col=exc.colno) from None
+    except RecursionError:
+        raise said_error(GraphplanError, "ky cannot read", str(path), None,
+                         why=lambda lang: word("wb nested", lang)) from None
     if not isinstance(doc, dict):
         raise said_error(GraphplanError, "ky not object", str(path), None)
     return doc

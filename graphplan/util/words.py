@@ -1272,6 +1272,10 @@ WORDS.update({
     # teach/grading.py, teach/keys.py, cli/key.py: keys
     "ky no written": ("у теці ключів немає жодного записаного варіанта", "the key folder holds no written variants"),
     "ky not folder": ("це не тека ключів (немає {@summary_json} чи {@key_json})", "not a key folder (no {@summary_json} or {@key_json})"),
+    "ky not json": ("ключ не читається: це не {@JSON} (рядок {line}, позиція {col}); дайте теку ключів, "
+                    "яку записала команда graphplan {@key}, або {@key_json} варіанта",
+                    "cannot read the key: not {@JSON} (line {line}, column {col}); give the key folder graphplan "
+                    "{@key} wrote or a variant's {@key_json}"),
     "ky cannot read": ("ключ не читається: {why}", "cannot read the key: {why}"),
     "ky not object": ("це не ключ graphplan (не об'єкт {@JSON})", "not a graphplan key (not a {@JSON} object)"),
     "ky format": ("це не ключ graphplan (формат {got}, потрібен {want})",
