@@ -228,3 +228,15 @@ def test_a_teacher_s_bad_tables_over_http_speak_the_base_scene_s_language(client
     line = refusal(client.post("/api/check", files={"key": ("key.json", key), "student": ("s.csv", "variant,position\n01,1\n01,x,3\n")}))
     assert line.startswith("student.csv: ") and ("рядок 3" in line if lang == "uk" else "line 3" in line), line
     speaks(line.removeprefix("student.csv: "), lang)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_serve_on_a_port_in_use_is_one_line_before_it_prints_an_address(lang):
+    import socket
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        port = s.getsockname()[1]
+        line = one_line(["serve", "--port", str(port), "--lang", lang])
+    assert f"127.0.0.1:{port}" in line and "--port" in line and "http://" not in line, line
+    speaks(line, lang)

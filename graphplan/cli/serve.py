@@ -13,7 +13,7 @@ import os
 import secrets
 import sys
 
-from graphplan.cli.common import lang_arg, lang_of, option_error, range_fields
+from graphplan.cli.common import lang_of, option_error, range_fields
 from graphplan.util.errors import GraphplanError, said_error
 from graphplan.util.words import word
 
@@ -44,6 +44,28 @@ def _reachable(host: str) -> str:
         return socket.gethostname()
 
 
+def can_listen(host: str, port: int) -> None:
+    """The address can be listened on (bound once here, then let go): else one line — a host that is
+    no address of this machine, a port in use or not allowed — before anything is printed."""
+    import errno
+    import socket
+    try:
+        infos = socket.getaddrinfo(host or None, port, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
+    except (socket.gaierror, UnicodeError):
+        raise said_error(GraphplanError, "sv cannot listen", None, None, host=host, port=port,
+                         why=lambda lang: word("sv no such host", lang)) from None
+    family, kind, proto, _, address = infos[0]
+    try:
+        with socket.socket(family, kind, proto) as s:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)        # as uvicorn binds
+            s.bind(address)
+    except OSError as exc:
+        key = {errno.EADDRINUSE: "sv port in use", errno.EACCES: "sv port denied",
+               errno.EADDRNOTAVAIL: "sv no such host"}.get(exc.errno)
+        raise said_error(GraphplanError, "sv cannot listen", None, None, host=host, port=port,
+                         why=(lambda lang: word(key, lang)) if key else str(exc.strerror or exc)) from None
+
+
 def cmd_serve(args: argparse.Namespace) -> int:
     try:
         import uvicorn
@@ -57,6 +79,7 @@ def cmd_serve(args: argparse.Namespace) -> int:
         raise option_error("--workers", "op whole", lo=1, hi=16, got=args.workers)
     if not (math.isfinite(args.timeout) and 1 <= args.timeout <= 3600):
         raise option_error("--timeout", "op range", **range_fields(1, 3600, "s", False, args.timeout))
+    can_listen(args.host, args.port)
     local = is_loopback(args.host)
     token = None if local else secrets.token_urlsafe(24)
     shown = _reachable(args.host)
@@ -93,5 +116,7 @@ def register(sub) -> None:
     p.add_argument("--workers", type=int, default=2, help="worker processes computing at once (default 2)")
     p.add_argument("--timeout", type=float, default=120.0, metavar="S",
                    help="time bound of one sheet, explorer or grading, seconds (default 120)")
-    lang_arg(p)
+    p.add_argument("--lang", choices=("uk", "en"), default=None,
+                   help="the page's first language and of this command's messages: uk or en (default: the "
+                        "browser's, else uk; messages uk)")
     p.set_defaults(handler=cmd_serve)

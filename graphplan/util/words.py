@@ -1354,6 +1354,12 @@ WORDS.update({
     "sv needs": ("graphplan {@serve} потребує {name}: {@pip}",
                  "graphplan {@serve} needs {name}: {@pip}"),
     "sv started": ("graphplan {@serve}: {url}{shared} — {@Ctrl-C} зупиняє сервер", "graphplan {@serve}: {url}{shared} — {@Ctrl-C} stops it"),
+    "sv cannot listen": ("не вдається слухати {host}:{port}: {why}", "cannot listen on {host}:{port}: {why}"),
+    "sv port in use": ("порт уже зайнятий (інший сервер?); оберіть інший --port",
+                       "the port is in use (another server?); choose another --port"),
+    "sv port denied": ("немає дозволу на цей порт (порти до 1024 — лише для адміністратора); оберіть інший --port",
+                       "this port is not allowed (ports below 1024 need root); choose another --port"),
+    "sv no such host": ("такої адреси на цьому комп'ютері немає (--host)", "no such address on this machine (--host)"),
     "sv shared": ("  (токен запитується в кожного відвідувача; дайте цю адресу групі)",
                   "  (the token is asked of every visitor; share this address with the class)"),
 })
