@@ -400,7 +400,8 @@ def cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         write_json(sys.stdout, graded, args.key, args.student, args.signed)
     else:
-        write_table(sys.stdout, graded, args.key, args.student, lang_of(args))
+        from graphplan.util.words import pick
+        write_table(sys.stdout, graded, args.key, args.student, pick(args.lang, keys_lang(keys)))
     return 0
 
 
