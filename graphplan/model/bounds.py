@@ -144,7 +144,8 @@ _TOML_WHY = ((re.compile(r"^Cannot declare \((?P<t>[^)]*)\) twice \(at line (?P<
              (re.compile(r"^Cannot overwrite a value \(at line (?P<line>\d+), column \d+\)$"), "bad toml overwrite"),
              (re.compile(r"^Invalid value \(at line (?P<line>\d+), column \d+\)$"), "bad toml invalid"),
              (re.compile(r"^Expected '=' after a key in a key/value pair \(at line (?P<line>\d+), column \d+\)$"),
-              "bad toml equals"))
+              "bad toml equals"),
+             (re.compile(r"^.* \(at end of document\)$"), "bad toml end"))
 
 
 def toml_why(message: str):

@@ -1050,6 +1050,8 @@ WORDS.update({
     "bad toml overwrite": ("ключ задано двічі (рядок {line})", "a key is given twice (line {line})"),
     "bad toml invalid": ("значення не читається (рядок {line}); текст пишіть у лапках", "invalid value (line {line}); "
                          "write text in quotes"),
+    "bad toml end": ("файл уривається посеред значення: чи закрито дужки й лапки?",
+                     "the file ends inside a value: are the brackets and quotes closed?"),
     "bad toml equals": ("після ключа бракує «=» (рядок {line})", "'=' missing after a key (line {line})"),
     "ex unknown name": ("невідоме ім'я {name} у {text}", "unknown name {name} in {text}"),
     "ex arithmetic": ("у {text} дозволена лише арифметика", "only arithmetic is allowed in {text}"),
