@@ -121,3 +121,17 @@ def test_the_resistance_diagram_is_hatched_evenly_under_the_moment(st):
     curve = next(q for q in rec.items if q.role == "curve")
     top = [p[0] for p in curve.points if abs(p[1] * mu - 900.0) < 1e-6]
     assert xs[0] > 0 and xs[-1] <= max(top) + 1e-9
+
+
+def test_a_path_axis_of_a_hardly_moving_output_has_a_few_ticks():
+    """The resistance diagram's path axis over a reach of 4e-14 m (a ram assembled on its fixed
+    pivot: the scene's other branch) ticks at its round steps only — a handful of them, not the
+    million an absolute 1e-9 m tolerance against a 1e-15 m step set (the sheet ran out of memory)."""
+    from graphplan.drawing.charts import VALUE_GAP_MM, _path_values
+    from graphplan.graphic.record import Record
+    rec = Record("path")
+    reach, mu_s = 3.95e-14, 2.5e-16
+    _path_values(rec, reach, mu_s, -5.0, "en", "s")
+    ticks = [q for q in rec.items if q.kind == "segment"]
+    assert 1 <= len(ticks) <= 1 + reach / (VALUE_GAP_MM * mu_s)     # no closer than their gap
+    assert max(q.points[0][0] for q in ticks) * mu_s <= reach * (1 + 1e-9)

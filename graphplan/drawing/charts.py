@@ -1052,10 +1052,12 @@ def _path_values(rec: Record, reach: float, mu_s: float, low: float, lang: str, 
         return low
     lo = VALUE_GAP_MM * mu_s
     step_v = min(m * 10.0 ** e for e in range(math.floor(math.log10(lo)) - 1, math.floor(math.log10(lo)) + 2)
-                 for m in (1.0, 2.0, 5.0) if m * 10.0 ** e >= lo - 1e-12)
+                 for m in (1.0, 2.0, 5.0) if m * 10.0 ** e >= lo * (1 - 1e-9))
     y = low - 4.5
     k = 0
-    while k * step_v <= reach + 1e-9:
+    # (the tolerance relative to the step: an absolute 1e-9 m against a step of 1e-15 m — an output
+    # that hardly moves, a toggle's ram assembled on its fixed pivot — set a million ticks)
+    while k * step_v <= reach + 1e-9 * step_v:
         x = k * step_v / mu_s
         rec.segment((x, 0.0), (x, 2.5), role="construction", layer="diagrams", step=step)
         rec.label((x, y), num(round(k * step_v, 9), lang), size=2.5, anchor="middle", step=step)
