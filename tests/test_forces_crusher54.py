@@ -135,3 +135,78 @@ def test_a_path_axis_of_a_hardly_moving_output_has_a_few_ticks():
     ticks = [q for q in rec.items if q.kind == "segment"]
     assert 1 <= len(ticks) <= 1 + reach / (VALUE_GAP_MM * mu_s)     # no closer than their gap
     assert max(q.points[0][0] for q in ticks) * mu_s <= reach * (1 + 1e-9)
+
+
+def knee_press(th: float) -> dict:
+    """OWN_KNEE_PRESS54 solved independently at crank angle th: the crank O1A (60 mm, 90 rpm ccw),
+    the coupler AB, the toggle O2B–BC, the ram C on the vertical guide x = 0.40 m, 15 kN against the
+    ram on its stroke down. Unknowns: R01, R21, R03, R42, R23, R45 (x, y), the guide's normal force
+    N05 and its couple, M_b — fifteen, from the five links' three equations each."""
+    o2, xg, r1, l2, l3, l4 = 0.40 + 0.30j, 0.40, 0.06, 0.47, 0.30, 0.30
+    mass, inertia, w1 = (8, 15, 10, 10, 40), (0.02, 0.3, 0.08, 0.08, 0.0), 90 * 2 * math.pi / 60
+
+    def frame(t: float):
+        a = r1 * complex(math.cos(t), math.sin(t))
+        b = _circles(a, l2, o2, l3, -1)
+        c = complex(xg, b.imag - math.sqrt(l4 ** 2 - (xg - b.real) ** 2))     # the ram below the knee
+        return a, b, c, [0j, (a + b) / 2, (o2 + b) / 2, (b + c) / 2, c], \
+            np.array([t, np.angle(b - a), np.angle(b - o2), np.angle(c - b), 0.0])
+
+    h = 1e-4
+    f0, fp, fm = frame(th), frame(th + h), frame(th - h)
+    a, b, c, s, _ = f0
+    v = [(fp[3][i] - fm[3][i]) / (2 * h) * w1 for i in range(5)]
+    acc = [(fp[3][i] - 2 * s[i] + fm[3][i]) / h ** 2 * w1 ** 2 for i in range(5)]
+    om = [_unwrap(fp[4][i] - fm[4][i]) / (2 * h) * w1 for i in range(5)]
+    eps = [(_unwrap(fp[4][i] - f0[4][i]) - _unwrap(f0[4][i] - fm[4][i])) / h ** 2 * w1 ** 2 for i in range(5)]
+    force = [-1j * mass[i] * G - mass[i] * acc[i] for i in range(5)]
+    couple = [-inertia[i] * eps[i] for i in range(5)]
+    force[0] = -1j * mass[0] * G
+    if v[4].imag < 0:                                    # the stroke down: the press's force up
+        force[4] += 15000j
+    col = {"R01": 0, "R21": 2, "R03": 4, "R42": 6, "R23": 8, "R45": 10}
+    m, rhs = np.zeros((15, 15)), np.zeros(15)
+
+    def put(row: int, key: str, sign: float, at: complex, about: complex) -> None:
+        j, r = col[key], at - about
+        m[row, j] += sign
+        m[row + 1, j + 1] += sign
+        m[row + 2, j] += -sign * r.imag
+        m[row + 2, j + 1] += sign * r.real
+
+    def given(row: int, i: int, about: complex) -> None:
+        r, f = s[i] - about, force[i]
+        rhs[row] -= f.real
+        rhs[row + 1] -= f.imag
+        rhs[row + 2] -= r.real * f.imag - r.imag * f.real + couple[i]
+
+    put(0, "R01", 1, 0j, 0j), put(0, "R21", 1, a, 0j), given(0, 0, 0j)
+    m[2, 14] = 1.0
+    put(3, "R21", -1, a, a), put(3, "R23", -1, b, a), put(3, "R42", 1, b, a), given(3, 1, a)
+    put(6, "R03", 1, o2, o2), put(6, "R23", 1, b, o2), given(6, 2, o2)
+    put(9, "R42", -1, b, b), put(9, "R45", -1, c, b), given(9, 3, b)
+    put(12, "R45", 1, c, c), given(12, 4, c)
+    m[12, 12] = 1.0                                      # the guide's normal force, across it (x)
+    m[14, 13] = 1.0                                      # … and its couple
+    x = np.linalg.solve(m, rhs)
+    r = {k: complex(x[j], x[j + 1]) for k, j in col.items()}
+    out = {"R01": r["R01"], "R12": -r["R21"], "R03": r["R03"], "R24": -r["R42"], "R23": r["R23"],
+           "R45": r["R45"], "R05": complex(x[12], 0.0), "Mb": x[14]}
+    out["Mb_power"] = -sum((force[i].conjugate() * v[i]).real + couple[i] * om[i] for i in range(5)) / w1
+    return out
+
+
+def test_the_knee_presss_reactions_and_balancing_moment_agree_with_an_independent_solution():
+    """OWN_KNEE_PRESS54 at its force position (120° past the ram's top, on the stroke down): every
+    reaction and M_b within 0.1 % of the independent solution, whose M_b the power balance gives."""
+    from graphplan.exact.kinetostatics import analyse, at_scene_angle
+    from tests.review_scenes import OWN_KNEE_PRESS54
+    st = scene_study(OWN_KNEE_PRESS54)
+    phi = at_scene_angle(st)
+    ks = analyse(st, phi)
+    mine = knee_press(math.radians(phi))
+    assert mine["Mb_power"] == pytest.approx(mine["Mb"], rel=1e-3)
+    assert float(np.atleast_1d(ks.balancing)[0]) == pytest.approx(mine["Mb"], rel=1e-3)
+    for key in ("R01", "R12", "R03", "R23", "R24", "R45", "R05"):
+        got = complex(np.atleast_1d(ks.reactions[key].force)[0])
+        assert abs(got - mine[key]) <= 1e-3 * abs(mine[key]), (key, got, mine[key])
