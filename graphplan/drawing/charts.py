@@ -882,6 +882,31 @@ def path_travelled(t: Turn) -> np.ndarray:
     return np.r_[0.0, np.cumsum(steps)]
 
 
+HATCH_PITCH_MM = 2.5    # the resistance diagram's hatching: one line every this many mm of its path axis
+
+
+def hatch_lines(curve: list[tuple[float, float]], pitch: float) -> list[tuple[float, float]]:
+    """Hatch lines (x, height) under a curve drawn as a polyline whose x never decreases (a jump is a
+    vertical step): one every ``pitch`` mm from x = pitch/2, each as high as the curve there (linear
+    between its vertices), only where that height is above the axis."""
+    out: list[tuple[float, float]] = []
+    if not curve:
+        return out
+    x_end = max(x for x, _ in curve)
+    x = 0.5 * pitch + min(x for x, _ in curve)
+    pieces = [(a, b) for a, b in zip(curve, curve[1:]) if b[0] - a[0] > 1e-9]
+    i = 0
+    while x < x_end and pieces:
+        while i < len(pieces) - 1 and x > pieces[i][1][0]:
+            i += 1
+        (x0, y0), (x1, y1) = pieces[i]
+        y = y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+        if y > 1e-6:
+            out.append((x, y))
+        x += pitch
+    return out
+
+
 def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
     """Seed 000's diagram of the resistance force: |P| of the output's external force (else of the
     external forces) along the output's path
@@ -933,12 +958,12 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
             pts.append((X(k), float(force[k - 1] / mu_p)))
         pts.append((X(k), y))
     rec.add("polyline", pts, role="curve", layer="diagrams", step=step)
-    every = max(1, n // 48)
     # the resistance hatched down to the axis where it acts, on either stroke (review 53 #4: a lever's
-    # 260 N·m on the idle stroke was left blank beside the working stroke's hatched 40 N·m)
-    for k in range(0, n, every):
-        if force[k] > 0:
-            rec.segment((X(k), 0.0), (X(k), float(force[k] / mu_p)), role="hatch", layer="diagrams", step=step)
+    # 260 N·m on the idle stroke was left blank beside the working stroke's hatched 40 N·m) — at an
+    # even pitch along the path, as a draftsman hatches an area (stop 54: hatched at every 48th of the
+    # turn, the jaw crusher's lines crowded into a black bar by the extreme, where the path hardly grows)
+    for x, y in hatch_lines(pts, HATCH_PITCH_MM):
+        rec.segment((x, 0.0), (x, y), role="hatch", layer="diagrams", step=step)
     # each stroke named under the axis, across its span
     cuts = [0] + [k for k in range(1, n) if work[k] != work[k - 1]] + [n]
     marks = t.position_index()
@@ -1027,10 +1052,12 @@ def _path_values(rec: Record, reach: float, mu_s: float, low: float, lang: str, 
         return low
     lo = VALUE_GAP_MM * mu_s
     step_v = min(m * 10.0 ** e for e in range(math.floor(math.log10(lo)) - 1, math.floor(math.log10(lo)) + 2)
-                 for m in (1.0, 2.0, 5.0) if m * 10.0 ** e >= lo - 1e-12)
+                 for m in (1.0, 2.0, 5.0) if m * 10.0 ** e >= lo * (1 - 1e-9))
     y = low - 4.5
     k = 0
-    while k * step_v <= reach + 1e-9:
+    # (the tolerance relative to the step: an absolute 1e-9 m against a step of 1e-15 m — an output
+    # that hardly moves, a toggle's ram assembled on its fixed pivot — set a million ticks)
+    while k * step_v <= reach + 1e-9 * step_v:
         x = k * step_v / mu_s
         rec.segment((x, 0.0), (x, 2.5), role="construction", layer="diagrams", step=step)
         rec.label((x, y), num(round(k * step_v, 9), lang), size=2.5, anchor="middle", step=step)
