@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from graphplan.drawing.layout import GAP, Leaf, Placed, centred
-from graphplan.exact.gears import POINTED, solve
+from graphplan.exact.gears import POINTED, solve, undercut_limits
 from graphplan.graphic.diagrams import LAB_LIMIT
 from graphplan.graphic.gears import (H_CARRIER, MORE_TEETH, SEGMENT_MIN, TEETH, TEETH_SPAN, construct_mesh, construct_train,
                                      lambda_mu, most_teeth, pole_distances, sliding_diagram)
@@ -281,11 +281,44 @@ def condition_numbers(t: dict, lang: str) -> dict[str, str]:
         num_, den = z1 * z2b + z2 * z3, K * g     # left the reader to find where 5400 and 15 came from)
         asm = f"({z1}·{z2b} + {z2}·{z3})/{f'({K}·{g})' if g > 1 else K} = {_n(num_ / den, lang, 4)}"
         tip = max(z2, z2b) + 2
-    out = {"coaxial": coax, "assembly": asm}
+    out = {"coaxial": coax, "assembly": asm, "no_undercut": undercut_cell(t["type"], z)}
     if K > 1:
         near = (z1 + z2) * math.sin(math.pi / K)     # (z1 + z2)·sin(180°/K) written out (stop 51: «36,77 > 35»)
         out["neighbourhood"] = (f"({z1} + {z2})·sin {_n(180.0 / K, lang, 4)}° = {_n(near, lang, 4)} "
                                 f"{'>' if near > tip else '≤'} {tip}")
+    return out
+
+
+MARKED = {"z1": "z_1", "z2": "z_2", "z2'": "z'_2", "z3": "z_3", "z3 − z2": "z_3 − z_2", "z3 − z2'": "z_3 − z'_2"}
+
+
+def undercut_cell(kind: str, z) -> str:
+    """Table 3's no-undercut condition with its numbers (``exact.gears.undercut_limits``): where missed,
+    each missed limit with its value — «z_3 = 74 < 85», which wheel and by how much (stop 54: «не викон.»
+    alone for z = 18/36/20/74) —; where met, the limits themselves (A «z_1 ≥ 17, z_2 ≥ 20, z_3 ≥ 85,
+    z_3 − z_2 ≥ 8»), the teeth being in the row above."""
+    limits = undercut_limits(kind, z)
+    missed = [(n, v, lo) for n, v, lo in limits if v < lo]
+    if missed:
+        return ", ".join(f"{MARKED[n]} = {v} < {lo}" for n, v, lo in missed)
+    if kind == "B":                       # (z1 and z2 share their limit)
+        return f"z_1, z_2 ≥ {limits[0][2]}, " + ", ".join(f"{MARKED[n]} ≥ {lo}" for n, _, lo in limits[2:])
+    return ", ".join(f"{MARKED[n]} ≥ {lo}" for n, _, lo in limits)
+
+
+_SYMBOLS = ((r"\bB1B2/pb\b", r"B_1B_2/p_b"), (r"\bz([123])'", r"z'_\1"), (r"\b([xz])([123])\b", r"\1_\2"), (r"\bsa([12])\b", r"s_{a\1}"),
+            (r"h\*a", r"h^*_a"), (r"ρ([12])", r"ρ_\1"), (r"\bB([12])\b", r"B_\1"), (r"εα", r"ε_α"),
+            (r"αw", r"α_w"), (r"\bu1H\b", r"u_{1H}"), (r"ω([12H])\b", r"ω_\1"))
+
+
+def typeset(text: str) -> str:
+    """A warning of the solution (plain text, as the terminal and the JSON say it: «x1 = 0.1», «z3 = 74
+    < 85», «h*a») in the sheet's markup, its symbols lettered as the tables letter them (x_1, z_3, z'_2,
+    s_{a1}, h^*_a, ρ_1, B_1, ε_α, u_{1H}) — stop 54: the notes printed z3 and h*a under Table 3's z₃."""
+    import re
+    out = escape(text)
+    for pattern, repl in _SYMBOLS:
+        out = re.sub(pattern, repl, out)
     return out
 
 
@@ -324,7 +357,7 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
         if v != "ok":                     # (review 12: 1,203 by the formula, 1,196 read)
             out.append(w["judged"].format(g=contact_ratio_text(c["exact"], c["graphical"], lang)[1], v=w[
                 "judged_in" if v == "within" else "judged_out"].format(b=_n(c["bound"], lang, 2))))
-        out += [w["warn"] + x for x in p[key]]
+        out += [w["warn"] + typeset(x) for x in p[key]]
         parts.append(out)
         out = []
     if "planetary" in doc:
@@ -355,7 +388,7 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                                               d=("0" if abs(near["error_pct"]) < 0.05 else     # (not «+0,0 %»)
                                                  fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−")),
                                               D=near["diameter_modules"], D0=chosen["diameter_modules"]))
-        out += [w["warn"] + x for x in t[key]]
+        out += [w["warn"] + typeset(x) for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
     if starred(doc, lang):                # (stop 46: the legend stood under tables with no * in them)
