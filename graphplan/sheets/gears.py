@@ -1079,7 +1079,9 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     memo: dict = {}
     tried = set()
     for room_h in (full, 0.5 * (full + h0), h0):      # the sheet's height, then less
-        for va_share in (2.0, 1.0):       # (the longest vA first: at a given height the longest plan)
+        for va_share in (4.0, 3.0, 2.0, 1.0):   # (the longest vA first: at a given height the longest plan —
+            #                                   stop 54: with 2 the longest, GEARS_OWN54's A3 plan kept h = 25 mm
+            #                                   and a 76-mm segment 1 over a sheet a third empty; 4 draws it 190 mm)
             d = filled(sol.train, precision, lang, ring, 60.0 * ring / 80.0 * va_share, x1 - x0, room_h,
                        min(H_MIN, vel.h), memo)
             if d is not None and d[0].ratio_bound < v0.ratio_bound - 1e-12:
