@@ -161,3 +161,19 @@ def test_the_a3_set_reads_u1h_within_the_labs_five_percent(lead):
     assert abs(vel.ratio - 8.4) / 8.4 <= 0.05
     names = [[p.name for p in page] for page in pages]
     assert any({"geometry", "quality", "notes"} <= set(n) for n in names)      # the pair's notes by its tables
+
+
+@pytest.mark.slow
+def test_the_own_a3_sets_plan_fills_its_sheet():
+    """GEARS_OWN54 on A3 (three sheets): the plan of angular velocities drew segment 1 76 mm long under a
+    velocity picture with vA 2× its size at most, the sheet a third empty; with vA up to 4× it is read off
+    at least 150 mm, u1H within its bound of Willis' 1 + 86/22 (about 30 s)."""
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    g = build(tomllib.loads(GEARS_OWN54), "GEARS_OWN54")
+    _, vel, pages = on_sheet(g, solve(g), form("A3"), 0.5, "en")
+    u = 1 + 86 / 22
+    assert len(pages) == 3 and abs(vel.segments["1"]) >= 150.0
+    assert abs(vel.ratio - u) <= vel.ratio_bound and vel.ratio_bound < 0.05 * u
