@@ -5911,3 +5911,57 @@ magnitude = 15000
 stroke = "working"
 direction = "oppose"
 '''
+
+
+GEARS54 = '''# Stop 54 (the lead's check): a pair 12/29 with a small pinion and shifts GIVEN by hand (x1 = 0.45,
+# x2 = -0.15: an unequal, not-zero-sum pair), the pressure angle 20°, and a two-row planetary train of
+# type B with its teeth GIVEN (z1 = 18, z2 = 36, z2' = 20, z3 = 74), 3 satellites, 960 rpm.
+title = "Зубчаста передача 12/29 і дворядний планетарний редуктор (перевірка 54)"
+title_en = "A gear pair 12/29 and a two-row planetary reducer (check 54)"
+designation = "ТММ.ЗП.54.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[gears]
+z = [12, 29]
+module = 0.005
+shifts = [0.45, -0.15]
+
+[planetary]
+type = "B"
+z = [18, 36, 20, 74]
+planets = 3
+module = 0.0025
+rpm = 960
+'''
+
+
+GEARS_OWN54 = '''# Stop 54's own check (gears54): a pair of equal wheels 20/20 (u = 1) with equal positive shifts
+# x1 = x2 = 0.3 given, m = 4 mm, and a one-row planetary train of type A with its teeth given
+# (z = 22, 32, 86: u1H = 4.909), four planets, the sun at 1450 rpm.
+title = "Зубчаста передача 20/20 з рівними зміщеннями і однорядний планетарний редуктор із заданими числами зубців (власна перевірка 54)"
+title_en = "A gear pair 20/20 with equal shifts and a one-row planetary reducer with given teeth (own check 54)"
+designation = "ТММ.ЗП.54.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[gears]
+z = [20, 20]
+module = 0.004
+shifts = [0.3, 0.3]
+
+[planetary]
+type = "A"
+z = [22, 32, 86]
+planets = 4
+module = 0.002
+rpm = 1450
+'''

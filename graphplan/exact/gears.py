@@ -187,31 +187,36 @@ def pair_geometry(pair: Pair, x: tuple[float, float]) -> PairSolution:
 
 
 def pair_warnings(sol: PairSolution) -> list[tuple[str, str]]:
-    """What the quality conditions say, in English and Ukrainian."""
+    """What the quality conditions say, in English and Ukrainian — each number with a true minus, the
+    Ukrainian with a decimal comma (``_uk``; stop 54: «x1 = -0.15», «0.2981» in the Ukrainian notes)."""
     q = sol.quality()
     out = []
     m = sol.pair.module
+    en = lambda v, fmt: format(v, fmt).replace("-", "−")                  # noqa: E731
     for k in (0, 1):
         if q["undercut"][k]:
-            out.append((f"wheel {k + 1} is undercut: x{k + 1} = {sol.x[k]:.4g} < h*a − z·sin²α/2 = {q['x_min'][k]:.4g}",
-                        f"колесо {k + 1} підрізане: x{k + 1} = {sol.x[k]:.4g} < h*a − z·sin²α/2 = {q['x_min'][k]:.4g}"))
+            x, lim = sol.x[k], q["x_min"][k]
+            out.append((f"wheel {k + 1} is undercut: x{k + 1} = {en(x, '.4g')} < h*a − z·sin²α/2 = {en(lim, '.4g')}",
+                        f"колесо {k + 1} підрізане: x{k + 1} = {_uk(x, '.4g')} < h*a − z·sin²α/2 = {_uk(lim, '.4g')}"))
         if q["pointed"][k]:
-            out.append((f"the tooth of wheel {k + 1} is near pointed: sa{k + 1} = {sol.sa[k] / m:.3g}·m < 0.25·m",
-                        f"зуб колеса {k + 1} майже загострений: sa{k + 1} = {sol.sa[k] / m:.3g}·m < 0,25·m"))
+            v = sol.sa[k] / m
+            out.append((f"the tooth of wheel {k + 1} is near pointed: sa{k + 1} = {en(v, '.3g')}·m < 0.25·m",
+                        f"зуб колеса {k + 1} майже загострений: sa{k + 1} = {_uk(v, '.3g')}·m < 0,25·m"))
     if q["interference"][0]:
+        a, b = sol.rho_B1 * 1000, max(sol.rho_limit[0], 0.0) * 1000
         out.append(("interference: the tip of wheel 2 reaches below where wheel 1's involute begins "
-                    f"(ρ1 at B1 = {sol.rho_B1 * 1000:.4g} mm < {max(sol.rho_limit[0], 0.0) * 1000:.4g} mm)",
+                    f"(ρ1 at B1 = {en(a, '.4g')} mm < {en(b, '.4g')} mm)",
                     "заклинювання: вершина колеса 2 заходить нижче початку евольвенти колеса 1 "
-                    f"(ρ1 у B1 = {sol.rho_B1 * 1000:.4g} мм < {max(sol.rho_limit[0], 0.0) * 1000:.4g} мм)"))
+                    f"(ρ1 у B1 = {_uk(a, '.4g')} мм < {_uk(b, '.4g')} мм)"))
     if q["interference"][1]:
-        rho2 = sol.g - sol.rho_B2
+        a, b = (sol.g - sol.rho_B2) * 1000, max(sol.rho_limit[1], 0.0) * 1000
         out.append(("interference: the tip of wheel 1 reaches below where wheel 2's involute begins "
-                    f"(ρ2 at B2 = {rho2 * 1000:.4g} mm < {max(sol.rho_limit[1], 0.0) * 1000:.4g} mm)",
+                    f"(ρ2 at B2 = {en(a, '.4g')} mm < {en(b, '.4g')} mm)",
                     "заклинювання: вершина колеса 1 заходить нижче початку евольвенти колеса 2 "
-                    f"(ρ2 у B2 = {rho2 * 1000:.4g} мм < {max(sol.rho_limit[1], 0.0) * 1000:.4g} мм)"))
+                    f"(ρ2 у B2 = {_uk(a, '.4g')} мм < {_uk(b, '.4g')} мм)"))
     if not q["contact_ratio_ok"]:
-        out.append((f"the contact ratio εα = {sol.eps:.4g} is below 1.2",
-                    f"коефіцієнт перекриття εα = {sol.eps:.4g} менший за 1,2"))
+        out.append((f"the contact ratio εα = {en(sol.eps, '.4g')} is below 1.2",
+                    f"коефіцієнт перекриття εα = {_uk(sol.eps, '.4g')} менший за 1,2"))
     return out
 
 
@@ -303,6 +308,55 @@ def ratio_of(kind: str, z) -> float:
     return 1.0 + z[1] * z[3] / (z[0] * z[2])
 
 
+def undercut_limits(kind: str, z) -> list[tuple[str, int, int]]:
+    """The train's limits against undercut and interference (docs/gears.md, h*a = 1, α = 20°) as
+    (the quantity, its value, its least): A z1 ≥ 17, z2 ≥ 20, z3 ≥ 85, z3 − z2 ≥ 8; B z1, z2 ≥ 17,
+    z2' ≥ 20, z3 ≥ 85, z3 − z2' ≥ 8 — each one checked, so that a failure names the wheel (stop 54: the
+    notes said only «a wheel has fewer teeth than the limits», z = [18, 36, 20, 74] printed as a list)."""
+    if kind == "A":
+        z1, z2, z3 = z
+        return [("z1", z1, Z_EXTERNAL_MIN), ("z2", z2, Z_PLANET_INTERNAL_MIN), ("z3", z3, Z_RING_MIN),
+                ("z3 − z2", z3 - z2, RING_PLANET_DIFF)]
+    z1, z2, z2b, z3 = z
+    return [("z1", z1, Z_EXTERNAL_MIN), ("z2", z2, Z_EXTERNAL_MIN), ("z2'", z2b, Z_PLANET_INTERNAL_MIN),
+            ("z3", z3, Z_RING_MIN), ("z3 − z2'", z3 - z2b, RING_PLANET_DIFF)]
+
+
+# why each limit of ``undercut_limits`` is there, (en, uk), a missed one's warning
+LIMIT_WHY = {
+    "z1": ("the sun 1 (external teeth) is undercut when cut without shift: 2h*a/sin²α = 17.1",
+           "центральне колесо 1 (зовнішні зубці), нарізане без зміщення, підрізається: 2h*a/sin²α = 17,1"),
+    "z2 B": ("the planet 2 (external teeth) is undercut when cut without shift: 2h*a/sin²α = 17.1",
+             "сателіт 2 (зовнішні зубці), нарізаний без зміщення, підрізається: 2h*a/sin²α = 17,1"),
+    "planet": ("the planet {p} meshes the ring: with fewer teeth the internal pair interferes",
+               "сателіт {p} зачіплюється з коронним колесом: з меншим числом зубців внутрішнє зачеплення "
+               "заклинюється"),
+    "z3": ("the ring 3 (internal teeth) is cut by a shaper cutter without undercut and interference only "
+           "from 85 teeth (h*a = 1, α = 20°)",
+           "коронне колесо 3 (внутрішні зубці) довбяк нарізає без підрізання й заклинювання лише від 85 зубців "
+           "(h*a = 1, α = 20°)"),
+    "diff": ("the tips of the internal pair {p}–3 interfere",
+             "вершини зубців внутрішньої пари {p}–3 заклинюються"),
+}
+
+
+def limit_warning(kind: str, name: str, value: int, least: int) -> tuple[str, str]:
+    """A missed limit of ``undercut_limits`` said in English and Ukrainian: the quantity, its value
+    and its least, then why (``LIMIT_WHY``)."""
+    planet = "2" if kind == "A" else "2'"
+    key = ("z1" if name == "z1" else "z2 B" if name == "z2" and kind == "B" else "z3" if name == "z3"
+           else "diff" if "−" in name else "planet")
+    en, uk = LIMIT_WHY[key]
+    return (f"the no-undercut condition is not met: {name} = {value} < {least} — " + en.format(p=planet),
+            f"умову без підрізання не виконано: {name} = {value} < {least} — " + uk.format(p=planet))
+
+
+def teeth_text(kind: str, z, K: int) -> str:
+    """The train's teeth and planets as the notes name them: «z1 = 18, z2 = 36, z2' = 20, z3 = 74, K = 3»."""
+    names = ("z1", "z2", "z3") if kind == "A" else ("z1", "z2", "z2'", "z3")
+    return ", ".join(f"{a} = {b}" for a, b in zip(names, z)) + f", K = {K}"
+
+
 def conditions(kind: str, z, K: int, ha: float = 1.0) -> dict[str, bool]:
     """Coaxiality, assembly, neighbourhood and no undercut (docs/gears.md):
     A: z3 = z1 + 2z2; (z1 + z3)/K whole; (z1 + z2)·sin(π/K) > z2 + 2h*a;
@@ -313,14 +367,12 @@ def conditions(kind: str, z, K: int, ha: float = 1.0) -> dict[str, bool]:
         coax = z3 == z1 + 2 * z2
         assembly = (z1 + z3) % K == 0
         neigh = (z1 + z2) * math.sin(math.pi / K) > z2 + 2 * ha if K > 1 else True
-        under = z1 >= Z_EXTERNAL_MIN and z2 >= Z_PLANET_INTERNAL_MIN and z3 >= Z_RING_MIN and z3 - z2 >= RING_PLANET_DIFF
     else:
         z1, z2, z2b, z3 = z
         coax = z1 + z2 == z3 - z2b
         assembly = (z1 * z2b + z2 * z3) % (K * math.gcd(z2, z2b)) == 0
         neigh = (z1 + z2) * math.sin(math.pi / K) > max(z2, z2b) + 2 * ha if K > 1 else True
-        under = (z1 >= Z_EXTERNAL_MIN and z2 >= Z_EXTERNAL_MIN and z2b >= Z_PLANET_INTERNAL_MIN and z3 >= Z_RING_MIN
-                 and z3 - z2b >= RING_PLANET_DIFF)
+    under = all(v >= least for _, v, least in undercut_limits(kind, z))
     return {"coaxial": bool(coax), "assembly": bool(assembly), "neighbourhood": bool(neigh), "no_undercut": bool(under)}
 
 
@@ -443,16 +495,17 @@ def solve_train(train: Train) -> TrainSolution:
     sol = TrainSolution(train, tuple(z), u, omega, cond, cands, weighed=count)
     names = {"coaxial": ("the coaxiality condition fails", "не виконано умову співвісності"),
              "assembly": ("the assembly condition fails", "не виконано умову складання"),
-             "neighbourhood": ("the neighbourhood condition fails", "не виконано умову сусідства"),
-             "no_undercut": ("a wheel has fewer teeth than the limits against undercut and interference",
-                             "число зубців колеса менше за межі підрізання й заклинювання")}
+             "neighbourhood": ("the neighbourhood condition fails", "не виконано умову сусідства")}
+    teeth = teeth_text(train.kind, z, train.planets)
     for key, ok in cond.items():
-        if not ok:
+        if not ok and key in names:
             en, uk = names[key]
-            sol.warnings.append((f"{en} (z = {list(z)}, K = {train.planets})", f"{uk} (z = {list(z)}, K = {train.planets})"))
+            sol.warnings.append((f"{en} ({teeth})", f"{uk} ({teeth})"))
+    sol.warnings += [limit_warning(train.kind, name, v, least) for name, v, least in undercut_limits(train.kind, z)
+                     if v < least]
     if train.ratio is not None and abs(u - train.ratio) > RATIO_TOLERANCE * train.ratio:
         sol.warnings.append((f"u1H = {u:.4g} is more than 4 % from {train.ratio:g}",
-                             f"u1H = {u:.4g} відрізняється від {train.ratio:g} більш як на 4 %"))
+                             f"u1H = {_uk(u, '.4g')} відрізняється від {_uk(train.ratio)} більш як на 4 %"))
     return sol
 
 

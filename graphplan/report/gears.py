@@ -144,7 +144,7 @@ WORDS = {
            "geo": "αw = {aw}°, a = {a} мм, aw = {w} мм, y = {y}, Δy = {dy}, p = {p} мм, pb = {pb} мм",
            "quality": "якість: підрізання {u}; загострення (sa ≥ 0,25m) {s}; заклинювання {i}; εα ≥ 1,2 {e} (за формулою; "
                       "з креслення {g}: {gv}); "
-                      "найбільше питоме ковзання λ1 = {l1}, λ2 = {l2}",
+                      "найбільше питоме ковзання |λ1| = {l1}, |λ2| = {l2}",
            "yes": "так", "no": "ні", "ok": "виконано", "fail": "не виконано",
            "scale": "масштаб зачеплення μl = {mu} м/мм (модуль {md} мм на кресленні), точність {p} мм",
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
@@ -164,7 +164,7 @@ WORDS = {
            "geo": "αw = {aw}°, a = {a} mm, aw = {w} mm, y = {y}, Δy = {dy}, p = {p} mm, pb = {pb} mm",
            "quality": "quality: undercut {u}; pointed (sa ≥ 0.25m) {s}; interference {i}; εα ≥ 1.2 {e} (by the formula; "
                       "off the drawing {g}: {gv}); "
-                      "greatest specific sliding λ1 = {l1}, λ2 = {l2}",
+                      "greatest specific sliding |λ1| = {l1}, |λ2| = {l2}",
            "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
            "scale": "meshing scale μl = {mu} m/mm (module drawn {md} mm), precision {p} mm",
            "type": "type {t}, K = {k} planets, module {m} mm, ω1 = {w} rad/s",

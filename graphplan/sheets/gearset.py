@@ -66,16 +66,46 @@ def _placed(node, box: Box, top: set[str] = frozenset()) -> list[Placed]:
     return out
 
 
+OWN = {"notes": ("geometry", "quality"), "train notes": ("train",)}    # the tables each part of the notes explains
+
+
+def _foreign(last: Leaf, others: list[Leaf]) -> bool:
+    """Whether the notes ``last``, set beside the column of ``others`` at its top, would stand by a table
+    they do not explain (stop 54: GEARS_OWN53's A2 sheet 2 put the train's notes at the top right, beside
+    Tables 1 and 2 and read before Table 3 at the foot of the column)."""
+    own = OWN.get(last.name)
+    return own is not None and any(t.name not in own and t.name not in NOTES + DRAWINGS for t in others)
+
+
+def _at_foot(notes: Leaf, height: float):
+    """The notes at the foot of a column ``height`` tall (a blank over them), beside the foot of the
+    column of tables left of them — by the table they explain, its last."""
+    blank = height - notes.h - GAP
+    return Stack([Leaf("blank", w=notes.w, h=blank), notes], flush=True) if blank > 0 else notes
+
+
 def _groupings(items: list[Leaf]) -> list:
     """The ways a sheet's drawings (or its tables) stand together: side by side, one under another,
-    and (three or more) the first over the others side by side."""
+    and (three or more) the first over the others side by side, or in two columns — the first i one
+    under another, the rest beside them — where the second column's head is not notes beside tables
+    they do not explain (stop 54: only the last beside the others was tried, so Table 1 could not stand
+    beside Table 2 with the pair's notes under it — the lead's A3 set sent those notes to the planetary
+    sheet —, and GEARS_OWN53's A2 sheet 2 put the train's notes at the top right, by Tables 1 and 2,
+    Table 3 at the foot of the column)."""
     if not items:
         return []
     if len(items) == 1:
         return [items[0]]
     out = [Row(list(items)), Stack(list(items))]
     if len(items) >= 3:
-        out += [Stack([items[0], Row(list(items[1:]))]), Row([Stack(list(items[:-1])), items[-1]])]
+        out.append(Stack([items[0], Row(list(items[1:]))]))
+        for i in range(1, len(items)):    # two columns: the first i, then the rest
+            left, right = items[:i], items[i:]
+            first = left[0] if i == 1 else Stack(list(left))
+            if len(right) == 1 and right[0].name in OWN and left[-1].name in OWN[right[0].name]:
+                out.append(Row([first, _at_foot(right[0], _extent(first)[1])]))   # by its table, at the foot
+            elif not _foreign(right[0], left):
+                out.append(Row([first, right[0] if len(right) == 1 else Stack(list(right))]))
     return out
 
 
