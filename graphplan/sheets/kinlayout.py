@@ -120,6 +120,9 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     if shape == "tables-accel":
         T, N = split_column
         return Row([Stack([P, D])] + vg + [Stack([T, Row(ag + [N], flush=True)], flush=True)], flush=True)
+    if shape == "accel-column":
+        T, N = split_column
+        return Row([Stack([P, D])] + vg + [Stack(ag + [T, N], flush=True)], flush=True)
     if shape == "bands":
         return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
     if shape == "column":
@@ -135,8 +138,8 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
 
 # (the order breaks ties of the scales: "tables-accel" before "stacked", whose acceleration plans under
 # the velocity plans leave the column's blank under its tables in one piece)
-SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split")
-SPLIT = ("split", "tables-accel")     # the shapes whose column is split (``split_leaves``)
+SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split", "accel-column")
+SPLIT = ("split", "tables-accel", "accel-column")     # the shapes whose column is split (``split_leaves``)
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -578,8 +581,12 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                         if (ways[way][1] and ways[way][2]) != both:
                             continue
                         half = halves[way]
-                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         notes_w = TITLE
+                        if shape == "accel-column" and half[0].w > TITLE + NOTES_STEP:
+                            # the notes under the tables as wide as they are (the column's width)
+                            notes_w = math.floor(half[0].w / NOTES_STEP) * NOTES_STEP
+                            C, half = widen(way, notes_w)
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
@@ -665,7 +672,62 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     better = [(c[2], -i, c[3]) for i, c in enumerate(cands)
               if all(a >= b - 1e-9 for a, b in zip(sizes_of(nat, c[3].mu, c[3].diagrams), least))]
     score, _, plan_ = max(better, key=lambda c: (_order(c[0], even), c[1]))
+    # LAYOUT.md: no big empty areas. Where the chosen composition leaves a blank zone (a stacked
+    # column's tables over its notes: the jaw crusher's 249 × 90 mm), one whose blank is less than
+    # half as large wins where it draws the position plan and the smallest family no smaller and
+    # the drawings larger counted per drawing — the crusher's acceleration plan moved over its
+    # tables, its twelve velocity plans took the middle's full height: p_v a 40 → 65 mm, π a 90 →
+    # 55 mm (the series' guard above, every drawing at least as large, is for compositions that
+    # leave no such blank: the shaper's)
+    D_of = lambda p_: Leaf("diagrams", *diagrams_size(dr, nat, p_.diagrams))    # noqa: E731
+    blank = largest_blank(nat, f, plan_, D_of(plan_))
+    if blank > 0.0:
+        roomier = [(c[2], -i, c[3]) for i, c in enumerate(cands)
+                   if all(a >= b - 1e-9 for a, b in zip(c[2][:4], score[:4]))
+                   and largest_blank(nat, f, c[3], D_of(c[3])) < BLANK_SHARE * blank]
+        if roomier:
+            score, _, plan_ = max(roomier, key=lambda c: (_order(c[0], even), c[1]))
     return score, plan_
+
+
+BLANK_MM = 50.0       # a zone's blank counts where both its sides are at least this long (a teacher sees it)
+BLANK_SHARE = 0.5     # another composition replaces one with a blank where its own is under this share
+
+
+def _blank_rect(w: float, h: float) -> float:
+    """The area of a blank rectangle w × h mm, counted where both its sides reach ``BLANK_MM``."""
+    return w * h if min(w, h) >= BLANK_MM - 1e-9 else 0.0
+
+
+def largest_blank(nat: Natural, f: Form, p: Plan, D: Leaf) -> float:
+    """The largest blank rectangle (mm², ``_blank_rect``) one sheet's composition ``p`` leaves in
+    its tables' column, by the arithmetic of ``tree`` and ``arrange``: the column's height between
+    its tables and its notes, a split column's tables' and notes' boxes beyond them, the blank under
+    a table column shorter than its neighbours. The column is the one zone with no scale to grow
+    into its room (a drawing's box beyond it is the series' step, LAYOUT.md: fine); its blank is
+    room the drawings did not get."""
+    from graphplan.drawing.layout import arrange
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
+    C, groups, _ = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    T, N, _ = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    P = nat.leaf("position", p.mu["position"])
+    V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
+    A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
+    vg = Grid(V, p.vcols, fitted=True) if V else None
+    ag = Grid(A, p.acols, fitted=True) if A else None
+    best = 0.0
+    for leaf, (x0, y0, x1, y1) in arrange(tree(p.shape, P, D, vg, ag, C, (T, N)), field_of(f)):
+        bw, bh = x1 - x0, y1 - y0
+        if leaf is C:                  # tables at the top, the notes over the title block: one blank between
+            best = max(best, _blank_rect(bw, bh - C.h))
+        elif leaf is T or leaf is N:   # set at a corner of their box: the rest in one piece
+            best = max(best, _blank_rect(bw - leaf.w, bh), _blank_rect(bw, bh - leaf.h))
+    cols = groups[1 if p.over and len(groups) >= 2 else 0:len(groups) - 1 if p.under and len(groups) >= 2 else None]
+    _, ch = column_size(cols)
+    for g in cols:
+        if g:
+            best = max(best, _blank_rect(max(t.w for t in g), ch - sum(t.h for t in g) - GAP * (len(g) - 1)))
+    return best
 
 
 def sizes_of(nat: Natural, mu: dict[str, float], k_diagrams) -> tuple[float, ...]:
