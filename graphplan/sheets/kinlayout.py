@@ -715,18 +715,31 @@ def largest_blank(nat: Natural, f: Form, p: Plan, D: Leaf) -> float:
     A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
     vg = Grid(V, p.vcols, fitted=True) if V else None
     ag = Grid(A, p.acols, fitted=True) if A else None
-    best = 0.0
+    best, across = 0.0, 0.0
     for leaf, (x0, y0, x1, y1) in arrange(tree(p.shape, P, D, vg, ag, C, (T, N)), field_of(f)):
         bw, bh = x1 - x0, y1 - y0
         if leaf is C:                  # tables at the top, the notes over the title block: one blank between
-            best = max(best, _blank_rect(bw, bh - C.h))
+            best, across = max(best, _blank_rect(bw, bh - C.h)), bw
         elif leaf is T or leaf is N:   # set at a corner of their box: the rest in one piece
             best = max(best, _blank_rect(bw - leaf.w, bh), _blank_rect(bw, bh - leaf.h))
+            across = bw if leaf is T else across
     cols = groups[1 if p.over and len(groups) >= 2 else 0:len(groups) - 1 if p.under and len(groups) >= 2 else None]
     _, ch = column_size(cols)
+    singles = [g[0] for g in groups if g and g not in cols]
+    for t in singles:                  # a table across over or under the columns: beside it
+        best = max(best, _blank_rect(across - t.w, t.h))
     for g in cols:
-        if g:
-            best = max(best, _blank_rect(max(t.w for t in g), ch - sum(t.h for t in g) - GAP * (len(g) - 1)))
+        if not g:
+            continue
+        best = max(best, _blank_rect(max(t.w for t in g), ch - sum(t.h for t in g) - GAP * (len(g) - 1)))
+        # beside a run of narrower tables in one column (the compressor's Tables 2, 3 under Table 1:
+        # 100 × 178 mm); a single column is as wide as the column's box
+        wide = across if len(cols) == 1 else max(t.w for t in g)
+        for i in range(len(g)):
+            for j in range(i, len(g)):
+                run = g[i:j + 1]
+                best = max(best, _blank_rect(wide - max(t.w for t in run),
+                                             sum(t.h for t in run) + GAP * (len(run) - 1)))
     return best
 
 
