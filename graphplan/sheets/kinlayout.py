@@ -111,7 +111,10 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     the column split (``split_column``): the tables over the acceleration plans beside the notes over
     the title block's room (stop 47's six-bar: "stacked" left 290 × 170 mm blank under its four tables, its column 554 mm
     high for 385 mm of tables, notes and title block, while the acceleration plan under the
-    velocity plans held them at p_v a 40 mm)."""
+    velocity plans held them at p_v a 40 mm); "accel-column" — the position plan over the diagrams,
+    beside them the velocity plans the sheet's full height, then the column split (``split_column``)
+    in reading order: the acceleration plans, the tables, the notes over the title block's room (the
+    jaw crusher's "stacked" column left 250 × 92 mm blank between its tables and its notes)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
     if shape == "split":
