@@ -675,26 +675,23 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     better = [(c[2], -i, c[3]) for i, c in enumerate(cands)
               if all(a >= b - 1e-9 for a, b in zip(sizes_of(nat, c[3].mu, c[3].diagrams), least))]
     score, _, plan_ = max(better, key=lambda c: (_order(c[0], even), c[1]))
-    # LAYOUT.md: no big empty areas. Where the chosen composition leaves a blank zone (a stacked
-    # column's tables over its notes: the jaw crusher's 249 × 90 mm), one whose blank is less than
-    # half as large wins where it draws the position plan and the smallest family no smaller and
-    # the drawings larger counted per drawing — the crusher's acceleration plan moved over its
-    # tables, its twelve velocity plans took the middle's full height: p_v a 40 → 65 mm, π a 90 →
-    # 55 mm (the series' guard above, every drawing at least as large, is for compositions that
-    # leave no such blank: the shaper's)
+    # LAYOUT.md: no big empty areas. Where the chosen composition leaves a blank in its tables'
+    # column (``largest_blank``: the jaw crusher's "stacked" column, 250 × 92 mm between its tables
+    # and its notes), another whose blank there is smaller by a 50-mm square or more wins where it
+    # draws the position plan, the smallest family and the drawings counted per drawing no smaller
+    # (the series' guard above, every drawing at least as large, still holds for the others)
     D_of = lambda p_: Leaf("diagrams", *diagrams_size(dr, nat, p_.diagrams))    # noqa: E731
     blank = largest_blank(nat, f, plan_, D_of(plan_))
     if blank > 0.0:
         roomier = [(c[2], -i, c[3]) for i, c in enumerate(cands)
                    if all(a >= b - 1e-9 for a, b in zip(c[2][:4], score[:4]))
-                   and largest_blank(nat, f, c[3], D_of(c[3])) < BLANK_SHARE * blank]
+                   and largest_blank(nat, f, c[3], D_of(c[3])) < blank - BLANK_MM ** 2]
         if roomier:
             score, _, plan_ = max(roomier, key=lambda c: (_order(c[0], even), c[1]))
     return score, plan_
 
 
 BLANK_MM = 50.0       # a zone's blank counts where both its sides are at least this long (a teacher sees it)
-BLANK_SHARE = 0.5     # another composition replaces one with a blank where its own is under this share
 
 
 def _blank_rect(w: float, h: float) -> float:
@@ -703,46 +700,73 @@ def _blank_rect(w: float, h: float) -> float:
 
 
 def largest_blank(nat: Natural, f: Form, p: Plan, D: Leaf) -> float:
-    """The largest blank rectangle (mm², ``_blank_rect``) one sheet's composition ``p`` leaves in
-    its tables' column, by the arithmetic of ``tree`` and ``arrange``: the column's height between
-    its tables and its notes, a split column's tables' and notes' boxes beyond them, the blank under
-    a table column shorter than its neighbours. The column is the one zone with no scale to grow
-    into its room (a drawing's box beyond it is the series' step, LAYOUT.md: fine); its blank is
-    room the drawings did not get."""
+    """The largest blank rectangle (mm², ``_blank_rect``) one sheet's composition ``p`` leaves in the
+    region of its tables' column (the boxes of the column, or of the split column's tables and
+    notes), by the arithmetic of ``tree``, ``arrange`` and ``place_tables``: the region less the
+    tables as placed, the notes over the title block, the title block and any drawing centred in a
+    box there — so a blank that runs from under a shorter column of tables into the room over the
+    notes counts whole (the eight-bar's 202 × 104 mm beside its acceleration plan). The column is
+    the one zone with no scale to grow into its room; a drawing's box beyond the drawing elsewhere
+    is the series' step (LAYOUT.md: fine) and is not counted."""
     from graphplan.drawing.layout import arrange
+    from graphplan.sheets.compose import keep_out
     tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
-    C, groups, _ = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
-    T, N, _ = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    C, groups, width = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    T, N, groups_ = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    split_ = p.shape in SPLIT
+    if split_:
+        groups, width = groups_, N.w
     P = nat.leaf("position", p.mu["position"])
     V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
     A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
     vg = Grid(V, p.vcols, fitted=True) if V else None
     ag = Grid(A, p.acols, fitted=True) if A else None
-    best, across = 0.0, 0.0
-    for leaf, (x0, y0, x1, y1) in arrange(tree(p.shape, P, D, vg, ag, C, (T, N)), field_of(f)):
-        bw, bh = x1 - x0, y1 - y0
-        if leaf is C:                  # tables at the top, the notes over the title block: one blank between
-            best, across = max(best, _blank_rect(bw, bh - C.h)), bw
-        elif leaf is T or leaf is N:   # set at a corner of their box: the rest in one piece
-            best = max(best, _blank_rect(bw - leaf.w, bh), _blank_rect(bw, bh - leaf.h))
-            across = bw if leaf is T else across
-    cols = groups[1 if p.over and len(groups) >= 2 else 0:len(groups) - 1 if p.under and len(groups) >= 2 else None]
-    _, ch = column_size(cols)
-    singles = [g[0] for g in groups if g and g not in cols]
-    for t in singles:                  # a table across over or under the columns: beside it
-        best = max(best, _blank_rect(across - t.w, t.h))
-    for g in cols:
-        if not g:
+    boxes = list(arrange(tree(p.shape, P, D, vg, ag, C, (T, N)), field_of(f)))
+    own = [b for leaf, b in boxes if leaf is C or leaf is T or leaf is N]
+    if not own:
+        return 0.0
+    region = (min(b[0] for b in own), min(b[1] for b in own), max(b[2] for b in own), max(b[3] for b in own))
+    tab_box = next(b for leaf, b in boxes if leaf is (T if split_ else C))
+    notes_at = next(b for leaf, b in boxes if leaf is (N if split_ else C))[2]
+    foot = keep_out(f)
+    ink = [q.box for q in place_tables(groups, tab_box[2], tab_box[3], p.under, p.over)]
+    ink += [(notes_at - width, foot[3], notes_at, foot[3] + nat.notes_height(width)), foot]
+    for leaf, (x0, y0, x1, y1) in boxes:         # drawings in the region (an acceleration plan beside the notes)
+        if leaf not in (C, T, N):
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            ink.append((cx - leaf.w / 2, cy - leaf.h / 2, cx + leaf.w / 2, cy + leaf.h / 2))
+    return _empty_rect(region, ink)
+
+
+BLANK_CELL = 5.0      # mm: the grid a blank is measured on
+
+
+def _empty_rect(region, ink) -> float:
+    """The largest rectangle (mm², ``_blank_rect``) of ``region`` that meets none of the ``ink``
+    boxes, on a ``BLANK_CELL`` grid (the histogram method: each row's run of free cells above)."""
+    x0, y0, x1, y1 = region
+    nx, ny = int((x1 - x0) // BLANK_CELL), int((y1 - y0) // BLANK_CELL)
+    if nx <= 0 or ny <= 0:
+        return 0.0
+    free = [[True] * nx for _ in range(ny)]
+    for b in ink:
+        i0, i1 = max(0, int((b[0] - x0) // BLANK_CELL)), min(nx, int(math.ceil((b[2] - x0) / BLANK_CELL)))
+        j0, j1 = max(0, int((b[1] - y0) // BLANK_CELL)), min(ny, int(math.ceil((b[3] - y0) / BLANK_CELL)))
+        if i1 <= i0:
             continue
-        best = max(best, _blank_rect(max(t.w for t in g), ch - sum(t.h for t in g) - GAP * (len(g) - 1)))
-        # beside a run of narrower tables in one column (the compressor's Tables 2, 3 under Table 1:
-        # 100 × 178 mm); a single column is as wide as the column's box
-        wide = across if len(cols) == 1 else max(t.w for t in g)
-        for i in range(len(g)):
-            for j in range(i, len(g)):
-                run = g[i:j + 1]
-                best = max(best, _blank_rect(wide - max(t.w for t in run),
-                                             sum(t.h for t in run) + GAP * (len(run) - 1)))
+        for j in range(j0, j1):
+            free[j][i0:i1] = [False] * (i1 - i0)
+    best, h = 0.0, [0] * nx
+    for row in free:
+        h = [hh + 1 if f_ else 0 for hh, f_ in zip(h, row)]
+        stack: list[tuple[int, int]] = []
+        for i in range(nx + 1):
+            cur, start = (h[i] if i < nx else 0), i
+            while stack and stack[-1][1] >= cur:
+                s0, hh = stack.pop()
+                best = max(best, _blank_rect((i - s0) * BLANK_CELL, hh * BLANK_CELL))
+                start = s0
+            stack.append((start, cur))
     return best
 
 
