@@ -111,7 +111,10 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     the column split (``split_column``): the tables over the acceleration plans beside the notes over
     the title block's room (stop 47's six-bar: "stacked" left 290 × 170 mm blank under its four tables, its column 554 mm
     high for 385 mm of tables, notes and title block, while the acceleration plan under the
-    velocity plans held them at p_v a 40 mm)."""
+    velocity plans held them at p_v a 40 mm); "accel-column" — the position plan over the diagrams,
+    beside them the velocity plans the sheet's full height, then the column split (``split_column``)
+    in reading order: the acceleration plans, the tables, the notes over the title block's room (the
+    jaw crusher's "stacked" column left 250 × 92 mm blank between its tables and its notes)."""
     vg = [vgrid] if vgrid is not None else []
     ag = [agrid] if agrid is not None else []
     if shape == "split":
@@ -120,6 +123,9 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     if shape == "tables-accel":
         T, N = split_column
         return Row([Stack([P, D])] + vg + [Stack([T, Row(ag + [N], flush=True)], flush=True)], flush=True)
+    if shape == "accel-column":
+        T, N = split_column
+        return Row([Stack([P, D])] + vg + [Stack(ag + [T, N], flush=True)], flush=True)
     if shape == "bands":
         return Stack([Row([P, D]), Row(vg + ag + [C], flush=True)], flush=True)
     if shape == "column":
@@ -135,8 +141,8 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
 
 # (the order breaks ties of the scales: "tables-accel" before "stacked", whose acceleration plans under
 # the velocity plans leave the column's blank under its tables in one piece)
-SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split")
-SPLIT = ("split", "tables-accel")     # the shapes whose column is split (``split_leaves``)
+SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split", "accel-column")
+SPLIT = ("split", "tables-accel", "accel-column")     # the shapes whose column is split (``split_leaves``)
 BALANCE = 2.0      # a family drawn past its target at most this times the least-grown one's share
 LETTERING = 14.0     # mm a plan's lettering is assumed to add across and up before it is placed
 
@@ -578,8 +584,12 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                         if (ways[way][1] and ways[way][2]) != both:
                             continue
                         half = halves[way]
-                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         notes_w = TITLE
+                        if shape == "accel-column" and half[0].w > TITLE + NOTES_STEP:
+                            # the notes under the tables as wide as they are (the column's width)
+                            notes_w = math.floor(half[0].w / NOTES_STEP) * NOTES_STEP
+                            C, half = widen(way, notes_w)
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
@@ -665,7 +675,99 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
     better = [(c[2], -i, c[3]) for i, c in enumerate(cands)
               if all(a >= b - 1e-9 for a, b in zip(sizes_of(nat, c[3].mu, c[3].diagrams), least))]
     score, _, plan_ = max(better, key=lambda c: (_order(c[0], even), c[1]))
+    # LAYOUT.md: no big empty areas. Where the chosen composition leaves a blank in its tables'
+    # column (``largest_blank``: the jaw crusher's "stacked" column, 250 × 92 mm between its tables
+    # and its notes), another whose blank there is smaller by a 50-mm square or more wins where it
+    # draws the position plan, the smallest family and the drawings counted per drawing no smaller
+    # (the series' guard above, every drawing at least as large, still holds for the others)
+    D_of = lambda p_: Leaf("diagrams", *diagrams_size(dr, nat, p_.diagrams))    # noqa: E731
+    blank = largest_blank(nat, f, plan_, D_of(plan_))
+    if blank > 0.0:
+        roomier = [(c[2], -i, c[3]) for i, c in enumerate(cands)
+                   if all(a >= b - 1e-9 for a, b in zip(c[2][:4], score[:4]))
+                   and largest_blank(nat, f, c[3], D_of(c[3])) < blank - BLANK_MM ** 2]
+        if roomier:
+            score, _, plan_ = max(roomier, key=lambda c: (_order(c[0], even), c[1]))
     return score, plan_
+
+
+BLANK_MM = 50.0       # a zone's blank counts where both its sides are at least this long (a teacher sees it)
+
+
+def _blank_rect(w: float, h: float) -> float:
+    """The area of a blank rectangle w × h mm, counted where both its sides reach ``BLANK_MM``."""
+    return w * h if min(w, h) >= BLANK_MM - 1e-9 else 0.0
+
+
+def largest_blank(nat: Natural, f: Form, p: Plan, D: Leaf) -> float:
+    """The largest blank rectangle (mm², ``_blank_rect``) one sheet's composition ``p`` leaves in the
+    region of its tables' column (the boxes of the column, or of the split column's tables and
+    notes), by the arithmetic of ``tree``, ``arrange`` and ``place_tables``: the region less the
+    tables as placed, the notes over the title block, the title block and any drawing centred in a
+    box there — so a blank that runs from under a shorter column of tables into the room over the
+    notes counts whole (the eight-bar's 202 × 104 mm beside its acceleration plan). The column is
+    the one zone with no scale to grow into its room; a drawing's box beyond the drawing elsewhere
+    is the series' step (LAYOUT.md: fine) and is not counted."""
+    from graphplan.drawing.layout import arrange
+    from graphplan.sheets.compose import keep_out
+    tabs = [Leaf(name, w, h) for name, w, h in nat.tables[p.tables]]
+    C, groups, width = column_leaf(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    T, N, groups_ = split_leaves(f, tabs, p.parts, nat.notes_height, p.counts, p.under, p.notes, p.over)
+    split_ = p.shape in SPLIT
+    if split_:
+        groups, width = groups_, N.w
+    P = nat.leaf("position", p.mu["position"])
+    V = [nat.families["velocity"].leaf(p.mu["velocity"], "", i) for i in range(nat.count["velocity"])]
+    A = [nat.families["acceleration"].leaf(p.mu["acceleration"], "", i) for i in range(nat.count["acceleration"])]
+    vg = Grid(V, p.vcols, fitted=True) if V else None
+    ag = Grid(A, p.acols, fitted=True) if A else None
+    boxes = list(arrange(tree(p.shape, P, D, vg, ag, C, (T, N)), field_of(f)))
+    own = [b for leaf, b in boxes if leaf is C or leaf is T or leaf is N]
+    if not own:
+        return 0.0
+    region = (min(b[0] for b in own), min(b[1] for b in own), max(b[2] for b in own), max(b[3] for b in own))
+    tab_box = next(b for leaf, b in boxes if leaf is (T if split_ else C))
+    notes_at = next(b for leaf, b in boxes if leaf is (N if split_ else C))[2]
+    foot = keep_out(f)
+    ink = [q.box for q in place_tables(groups, tab_box[2], tab_box[3], p.under, p.over)]
+    ink += [(notes_at - width, foot[3], notes_at, foot[3] + nat.notes_height(width)), foot]
+    for leaf, (x0, y0, x1, y1) in boxes:         # drawings in the region (an acceleration plan beside the notes)
+        if leaf not in (C, T, N):
+            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+            ink.append((cx - leaf.w / 2, cy - leaf.h / 2, cx + leaf.w / 2, cy + leaf.h / 2))
+    return _empty_rect(region, ink)
+
+
+BLANK_CELL = 5.0      # mm: the grid a blank is measured on
+
+
+def _empty_rect(region, ink) -> float:
+    """The largest rectangle (mm², ``_blank_rect``) of ``region`` that meets none of the ``ink``
+    boxes, on a ``BLANK_CELL`` grid (the histogram method: each row's run of free cells above)."""
+    x0, y0, x1, y1 = region
+    nx, ny = int((x1 - x0) // BLANK_CELL), int((y1 - y0) // BLANK_CELL)
+    if nx <= 0 or ny <= 0:
+        return 0.0
+    free = [[True] * nx for _ in range(ny)]
+    for b in ink:
+        i0, i1 = max(0, int((b[0] - x0) // BLANK_CELL)), min(nx, int(math.ceil((b[2] - x0) / BLANK_CELL)))
+        j0, j1 = max(0, int((b[1] - y0) // BLANK_CELL)), min(ny, int(math.ceil((b[3] - y0) / BLANK_CELL)))
+        if i1 <= i0:
+            continue
+        for j in range(j0, j1):
+            free[j][i0:i1] = [False] * (i1 - i0)
+    best, h = 0.0, [0] * nx
+    for row in free:
+        h = [hh + 1 if f_ else 0 for hh, f_ in zip(h, row)]
+        stack: list[tuple[int, int]] = []
+        for i in range(nx + 1):
+            cur, start = (h[i] if i < nx else 0), i
+            while stack and stack[-1][1] >= cur:
+                s0, hh = stack.pop()
+                best = max(best, _blank_rect((i - s0) * BLANK_CELL, hh * BLANK_CELL))
+                start = s0
+            stack.append((start, cur))
+    return best
 
 
 def sizes_of(nat: Natural, mu: dict[str, float], k_diagrams) -> tuple[float, ...]:
