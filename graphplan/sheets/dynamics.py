@@ -512,6 +512,26 @@ def nook_for(boxes: dict[str, tuple], lines: list[str], slack: float = 0.0):
     return None
 
 
+def speed_nook(boxes: dict[str, tuple], speed: Leaf, lines: list[str]) -> tuple[tuple, float] | None:
+    """The band's nook (``nooks``, its frame) that "nook" sets ω(φ) in with the notes' ``lines``
+    under it, and its width: the largest by area that holds ``speed`` (ω(φ) at its smallest, no
+    narrower than ``NOOK_SPEED``) over the notes set in its width — under a tall energy–mass
+    diagram (the shaper's: l 330 mm under its I* axis) the room under ΔT(φ) was ~210 × 470 mm of
+    paper while ω(φ) and the notes stood squeezed beside the tables — or None."""
+    fit = []
+    for n in nooks(boxes):
+        w, h = n[2] - n[0], n[3] - n[1]
+        if w >= max(NOOK_SPEED, speed.w) - 1e-9 and h >= speed.h + GAP + notes_height([lines], w) - 1e-9:
+            fit.append((n, w))
+    return max(fit, key=lambda m: (m[0][2] - m[0][0]) * (m[0][3] - m[0][1])) if fit else None
+
+
+def speed_in_nook(per_lang, speed: Leaf, lines: list[list[str]]) -> bool:
+    """Each language's band (``per_lang``: (boxes, width) pairs) has a nook that holds ω(φ) over
+    that language's notes (``lines``, in the same order)."""
+    return all(speed_nook(b, speed, ls) is not None for (b, _), ls in zip(per_lang, lines))
+
+
 NOOK_NOTES = 120.0       # mm: the least width the notes are set in under ΔT(φ) (the column's: TITLE)
 
 
@@ -586,7 +606,9 @@ def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
 
-SHAPES = ("bands", "column", "speed", "side")
+SHAPES = ("bands", "column", "speed", "nook", "side")
+NOOKED = ("nook", "side")     # the band at the right over the title block, the column at the left under the moments
+NOOK_SPEED = 160.0            # mm: the least width of the nook "nook" sets ω(φ) and the notes in
 
 
 def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
@@ -595,7 +617,8 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
     column with the notes over the title block. "bands": those one under another, the column beside
     ω(φ); "column": the column the sheet's full height; "speed": ω(φ) over the column, beside the
     moments and the band; "side": the band at the right over the title block (``foot`` mm kept
-    for it), the column and ω(φ) under the moments."""
+    for it), the column and ω(φ) under the moments; "nook": as "side", ω(φ) in the band's nook
+    under ΔT(φ) (``speed_nook``), the column alone under the moments."""
     middle = d["band"]
     if shape == "bands":
         return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
@@ -603,6 +626,9 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
         return Row([Stack([d["moments"], middle]), Stack([d["speed"], C], flush=True)], flush=True)
     if shape == "side":
         return Row([Stack([d["moments"], Row([C, d["speed"]])], flush=True),
+                    Stack([middle, Leaf("title block", 0.0, foot)], flush=True)], flush=True)
+    if shape == "nook":
+        return Row([Stack([d["moments"], C], flush=True),
                     Stack([middle, Leaf("title block", 0.0, foot)], flush=True)], flush=True)
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
@@ -638,7 +664,7 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, shape: str = "") ->
     groups = [tables[:1], tables[1:]] if parts == ROWED else split(tables, parts)
     cw, ch = _tables_size(groups, parts)
     width = max(cw, TITLE)
-    foot = 0.0 if shape == "side" else GAP + keep_out(f)[3] - field_of(f)[1]
+    foot = 0.0 if shape in NOOKED else GAP + keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + (0.0 if height is None else GAP + height(width)) + foot), groups, width
 
 
@@ -822,8 +848,12 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                 leaves, tables, notes_, _ = measured(L, size, factor)
                 leaves["band"] = band_leaf(L, size, shortest)
                 for shape in SHAPES:
+                    if shape == "nook" and not speed_in_nook(band_and_nooks(L, size, shortest)[1], leaves["speed"],
+                                                             notes_):
+                        continue
                     for parts in (1, 2, 3):
-                        C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
+                        C = _column(f, tables, parts, None if shape == "nook" else lambda w: notes_height(notes_, w),
+                                    shape)[0]
                         tw, th = extent(_tree(shape, leaves, C, foot))
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             return L, size
@@ -838,11 +868,13 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
                 for in_nook in (True, False):
                     for shape in SHAPES:
-                        if in_nook and shape == "side":     # the band at the right: no nook under ΔT(φ)
-                            continue
+                        if in_nook and shape in NOOKED:     # the band at the right: no nook under ΔT(φ)
+                            continue                        # for the notes (or ω(φ) holds it: "nook")
+                        if shape == "nook" and not speed_in_nook(nooks, leaves["speed"], notes_):
+                            continue                        # ω(φ) over the notes in the band's nook
                         for parts in (1, 2, 3):
-                            C = _column(f, tables, parts, None if in_nook else lambda w: notes_height(notes_, w),
-                                        shape)[0]
+                            C = _column(f, tables, parts, None if in_nook or shape == "nook"
+                                        else lambda w: notes_height(notes_, w), shape)[0]
                             tree = _tree(shape, leaves, C, foot)
                             tw, th = extent(tree)
                             if tw <= W + 1e-9 and th <= H + 1e-9 and (
@@ -857,8 +889,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         """ω(φ) over the column beside the moments and the band ("speed") spans the room right of
         them, the one column of tables only its width: the results' tables side by side under the
         positions' (``ROWED``) where the sheet still holds it — the column shorter, ω(φ) taller, no
-        strip of paper left of the tables (the compressor: ~140 × 400 mm)."""
-        C = _column(f, tables, ROWED, None if in_nook else lambda w: notes_height(notes_, w), shape)[0]
+        strip of paper left of the tables (the compressor: ~140 × 400 mm); so too the column alone
+        under the moments ("nook": the shaper's Tables 2 and 3 left ~150 × 200 mm beside them)."""
+        C = _column(f, tables, ROWED, None if in_nook or shape == "nook" else lambda w: notes_height(notes_, w),
+                    shape)[0]
         tw, th = extent(_tree(shape, leaves, C, foot_))
         return tw <= W + 1e-9 and th <= H + 1e-9
 
@@ -1369,6 +1403,32 @@ def _speed_widened(fw: Flywheel, lang: str, items: list[Placed], boxes: dict[str
             + [Placed("speed", centred(wider, box), box)])
 
 
+def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tuple, small: Leaf,
+                  lines: list[str], fuller: list[str], region: tuple, keep: tuple) -> list[Placed]:
+    """ω(φ) over the notes in the band's nook (``speed_nook``; the band stands centred in
+    ``band_box``), the nook down to the field's foot where it ends left of the title block
+    (``keep``: the band stands over the title block, the paper under the nook is no one's — the
+    shaper's ~235 × 100 mm): ω(φ) grown into what the notes leave of it, the two one under another
+    with the spare height shared between them; the motor's sentence with the notes where it still
+    fits."""
+    dx, dy = _band_shift(boxes, band_box)
+    got = speed_nook(boxes, small, lines)
+    n, w = got if got is not None else (nooks(boxes)[0], nooks(boxes)[0][2] - nooks(boxes)[0][0])
+    box = (n[0] + dx, n[1] + dy, n[0] + dx + w, n[3] + dy)
+    if box[2] <= keep[0] + 1e-9:
+        box = (box[0], region[1], box[2], box[3])
+    room = box[3] - box[1] - GAP
+    lines = with_motor(lines, fuller, room - small.h, w)
+    nrec = note_block(lines, w)
+    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]))
+    if _wh(rec)[0] > w + 1e-6 or _wh(rec)[1] > room - _wh(nrec)[1] + 1e-6:
+        rec = small.record
+    out = []
+    for leaf, b in arrange(Stack([Leaf("speed", record=rec), Leaf("notes", record=nrec)]), box):
+        out.append(Placed(leaf.name, centred(rec, b) if leaf.name == "speed" else top_left(nrec, b), b))
+    return out
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -1409,7 +1469,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if top:                                  # at the top of its box (``_top_aligned``)
             rec = rec.moved(0.0, b[3] - rec.bounds()[3])
         return [Placed(leaf.name, rec, b)]
-    height = None if in_nook else (lambda w: _wh(note_block(note_lines, w))[1])   # the notes in the column
+    height = (None if in_nook or shape == "nook"                  # the notes in the column
+              else (lambda w: _wh(note_block(note_lines, w))[1]))
     if shape != "set":                       # ΔT(φ) across the band's box where I*(φ)'s height bounds the band
         zones = []                           # each language's drawings and column: the same band in either
         for other in LANGS:
@@ -1422,13 +1483,14 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
                            "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
                           _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor)], parts,
-                                  None if in_nook else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
+                                  None if in_nook or shape == "nook"
+                                  else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
         got = widened(fw, length, zones, shape, foot - region[1], region)
         if got is not None and (not in_nook or nook_for(got[1][lang][1], note_lines) is not None
                                 or nook_for(boxes, note_lines) is None):     # the notes' nook kept
             parts_, boxes = got[1][lang]
             leaves["band"] = Leaf("band", got[2].w, got[2].h, record=_union(parts_))
-    if shape != "set":                       # ω(φ) grows into the room the other zones leave it
+    if shape not in ("set", "nook"):         # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
         speed = _speed(fw, lang, zone)
@@ -1465,7 +1527,10 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
                 boxes_at[leaf.name] = b
         if shape == "speed":                 # ω(φ) over the band's reach: across to the moments' side
             items = _speed_widened(fw, lang, items, boxes_at, region)
-        if in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
+        if shape == "nook":                  # ω(φ) over the notes in the band's nook under ΔT(φ)
+            items += _speed_nooked(fw, lang, boxes, band_box, leaves["speed"], note_lines,
+                                   lines_of(notes(fw, doc, lang, short, motor=True)), region, keep_out(f))
+        elif in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
             dx, dy = _band_shift(boxes, band_box)
             slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2    # the band centred in its box
             got = nook_for(boxes, note_lines, slack)
@@ -1477,9 +1542,10 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
         else:
             nrec = note_block(note_lines, width)
-            bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
+            bottom = col_box[1] if shape in NOOKED else foot      # over the title block, or the column's foot
             nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
-        items.append(Placed("notes", top_left(nrec, nb), nb))
+        if shape != "nook":
+            items.append(Placed("notes", top_left(nrec, nb), nb))
         items += _set_tables(groups, parts, col_box[2], col_box[3])
         pages = [items]
     from graphplan.util.words import word
