@@ -10,7 +10,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least, turned_length,
-                                       moments_record, records, speed_fitted, wittenbauer_record)
+                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
+                                       PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
@@ -28,7 +29,7 @@ from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError, said_error
-from graphplan.util.words import LANGS, num
+from graphplan.util.words import LANGS, fixed, num
 
 
 def fmt(v: float | None, lang: str, digits: int = 4) -> str:
@@ -247,8 +248,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
-             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
-             f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
+             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, PSI_DECIMALS)}°, "
+             f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, PSI_DECIMALS)}°",
              wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
@@ -570,12 +571,13 @@ def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = Non
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
 
-def _speed(f: Flywheel, lang: str, zone: tuple[float, float]) -> Record:
-    """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds."""
+def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT) -> Record:
+    """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds, no taller than
+    ``aspect`` of its abscissa (``speed_fitted``)."""
     w, h = zone
     probe = speed_fitted(f, lang, w, 0.0)
     h -= _wh(captioned(probe, WORDS[lang]["speed"]))[1] - _wh(probe)[1]   # the caption's height comes off
-    return captioned(speed_fitted(f, lang, w, h), WORDS[lang]["speed"])
+    return captioned(speed_fitted(f, lang, w, h, aspect), WORDS[lang]["speed"])
 
 
 def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
@@ -609,6 +611,8 @@ def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
 SHAPES = ("bands", "column", "speed", "nook", "side")
 NOOKED = ("nook", "side")     # the band at the right over the title block, the column at the left under the moments
 NOOK_SPEED = 160.0            # mm: the least width of the nook "nook" sets ω(φ) and the notes in
+NOOK_ASPECT = 1.0             # ω(φ) there as tall as its abscissa (the nook is narrow and tall: at ¾ the
+#                               shaper's left ~90 mm of it empty between ω(φ) and the notes)
 
 
 def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
@@ -1409,8 +1413,8 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     ``band_box``), the nook down to the field's foot where it ends left of the title block
     (``keep``: the band stands over the title block, the paper under the nook is no one's — the
     shaper's ~235 × 100 mm): ω(φ) grown into what the notes leave of it, the two one under another
-    with the spare height shared between them; the motor's sentence with the notes where it still
-    fits."""
+    with the spare height in three equal parts over, between and under them; the motor's sentence
+    with the notes where it still fits."""
     dx, dy = _band_shift(boxes, band_box)
     got = speed_nook(boxes, small, lines)
     n, w = got if got is not None else (nooks(boxes)[0], nooks(boxes)[0][2] - nooks(boxes)[0][0])
@@ -1420,13 +1424,14 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     room = box[3] - box[1] - GAP
     lines = with_motor(lines, fuller, room - small.h, w)
     nrec = note_block(lines, w)
-    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]))
+    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]), NOOK_ASPECT)
     if _wh(rec)[0] > w + 1e-6 or _wh(rec)[1] > room - _wh(nrec)[1] + 1e-6:
         rec = small.record
-    out = []
-    for leaf, b in arrange(Stack([Leaf("speed", record=rec), Leaf("notes", record=nrec)]), box):
-        out.append(Placed(leaf.name, centred(rec, b) if leaf.name == "speed" else top_left(nrec, b), b))
-    return out
+    sh, nh = _wh(rec)[1], _wh(nrec)[1]
+    third = max(0.0, box[3] - box[1] - sh - nh) / 3        # the spare height: over, between and under them
+    sb = (box[0], box[3] - third - sh, box[2], box[3] - third)
+    nb = (box[0], sb[1] - third - nh, box[2], sb[1] - third)
+    return [Placed("speed", centred(rec, sb), sb), Placed("notes", top_left(nrec, nb), nb)]
 
 
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
