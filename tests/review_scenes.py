@@ -5728,3 +5728,97 @@ magnitude = 350
 stroke = "idle"
 direction = "oppose"
 '''
+
+
+LINK54 = '''# Stop 54 (the lead's check): a Blake jaw crusher — the crank O1A turns counter-clockwise at 250 rpm; the
+# pitman AB hangs the toggle plates O2B and BC; the plate BC pushes the swing jaw O3C about its top pivot
+# O3 — I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВВ, two all-revolute groups in a row, the toggle near its dead
+# centres; a crushing moment on the jaw on its stroke towards the fixed jaw.
+title = "Щокова дробарка з простим рухом щоки"
+title_en = "Blake jaw crusher"
+designation = "ТММ.КМ.54.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.17, -0.29]
+O3 = [-0.24, 0.10]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.04
+rpm = 250
+direction = "ccw"
+points = { S1 = 0.0 }
+mass = 12
+inertia = 0.08
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.36
+points = { S2 = 0.5 }
+mass = 20
+inertia = 0.25
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.5 }
+mass = 6
+inertia = 0.02
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.20
+points = { S4 = 0.5 }
+mass = 6
+inertia = 0.025
+
+[[link]]
+name = "O3C"
+number = 5
+joints = ["O3", "C"]
+length = 0.40
+points = { S5 = 0.5 }
+mass = 40
+inertia = 0.9
+
+[branch]
+B = -1
+C = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [3]
+force_phi_deg = 90
+working_stroke = "to_min"
+output = "O3C"
+
+[loads]
+g = 9.81
+
+[[moment]]
+link = 5
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 750
+'''
