@@ -1551,7 +1551,11 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
         if shape != "nook":
             items.append(Placed("notes", top_left(nrec, nb), nb))
-        items += _set_tables(groups, parts, col_box[2], col_box[3])
+        right = col_box[2]
+        if shape == "nook":                  # the tables alone under the moments: centred under them, the
+            spare = col_box[2] - col_box[0] - _tables_size(groups, parts)[0]   # spare width either side (the
+            right -= max(spare, 0.0) / 2     # shaper's ~90 × 350 mm strip left of them, right-aligned)
+        items += _set_tables(groups, parts, right, col_box[3])
         pages = [items]
     from graphplan.util.words import word
     tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
