@@ -201,3 +201,35 @@ def test_the_shapers_psi_are_lettered_to_one_count_of_decimals(shaper):
         for m in said:
             if m[0] == name:
                 assert float(f"{m[1]}.{m[2]}") == pytest.approx(want, abs=0.006), (name, m)
+
+
+@pytest.mark.slow
+def test_the_crushers_a3_set_draws_delta_t_longer_than_the_turned_inertia():
+    """LINK54's A3 set: the band's sheet held I*(φ) turned over 70 mm and ΔT(φ) over the same 70 mm
+    (12 divisions 5.8 mm apart) with ~70 mm of the sheet empty beside it; ΔT(φ) is now drawn over a
+    longer φ axis than I*(φ) (each stating its own μ_φ), the band still inside the sheet's field."""
+    import re
+    from types import SimpleNamespace
+
+    from conftest import scene_study
+    from review_scenes import LINK54
+
+    from graphplan.sheets.compose import field_of
+    from graphplan.sheets.form import form
+    from graphplan.sheets.sheet import BUILDERS
+    from graphplan.util.markup import plain
+    args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
+    sheet = BUILDERS["dynamics"](scene_study(LINK54), form("A3"), args)
+    page = next(pg for pg in sheet.pages if any(p.name == "energy" for p in pg.placed))
+    by = {p.name: p.record for p in page.placed}
+    spans = {}
+    for name, step, axis in (("energy", "ΔT read", 0), ("inertia", "I*_m read", 1)):
+        at = [p.points[0][axis] for p in by[name].items if p.kind == "point" and p.step == step]
+        spans[name] = max(at) - min(at)
+        said = [plain(p.text) for p in by[name].items if p.kind == "text" and "_φ = 2π/" in plain(p.text)]
+        assert len(said) == 1 and float(re.search(r"2π/(\d+)", said[0]).group(1)) == pytest.approx(spans[name])
+    assert spans["energy"] >= spans["inertia"] + 20.0 - 1e-6, spans
+    x0, y0, x1, y1 = field_of(page.form)
+    for name in ("energy", "wittenbauer", "inertia"):
+        b = by[name].bounds()
+        assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6, name

@@ -1314,15 +1314,63 @@ def _analysed(st: Study, delta: float | None):
     return _ANALYSED[key]
 
 
+def set_energy_length(fw: Flywheel, length: float, f: Form) -> float | None:
+    """ΔT(φ)'s φ axis in a set's band sheet longer than the turned I*(φ)'s (``band``'s
+    ``energy_length``, as ``widened`` does on one sheet): as long as a later sheet holds the band in
+    both languages, no longer than the moments' L, in whole ``WIDEN_STEP``; None where that gains
+    less than ``WIDEN_LEAST`` (the crusher's A3 set drew ΔT(φ) over 70 mm, 12 divisions 5.8 mm
+    apart, with ~70 mm of its sheet empty beside it)."""
+    if fw.L - length < WIDEN_LEAST - 1e-9:
+        return None
+    x0, _, x1, y1 = field_of(f)
+    k = _later_keep(f)
+
+    def size(el: float | None) -> tuple[float, float]:
+        wh = [_band_size(band(fw, other, length, el)[1]) for other in LANGS]
+        return max(a[0] for a in wh), max(a[1] for a in wh)
+    bw, bh = size(None)
+    room = (x1 - x0) if bh <= y1 - k[3] + 1e-9 else (k[0] - x0)
+    el = length + math.floor(min(room - bw, fw.L - length) / WIDEN_STEP) * WIDEN_STEP
+    for _ in range(4):
+        if el - length < WIDEN_LEAST - 1e-9:
+            return None
+        w, h = size(el)
+        if _fits_later(f, Leaf("band", w, h)) and h <= bh + 1e-9:
+            return el
+        el -= max(WIDEN_STEP, math.ceil((w - room) / WIDEN_STEP) * WIDEN_STEP)
+    return None
+
+
 def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Leaf], tables: list[Leaf],
               factor: float, length: float, note_lines: list[str]):
+    """``_set_laid_at`` with the band as given, or with ΔT(φ) widened (``set_energy_length``) where
+    that lays the set on no more sheets and leaves no more of them without a drawing. Returns
+    ``_set_laid_at``'s three and ΔT(φ)'s φ axis (None: the band as given)."""
+    base = _set_laid_at(f, fw, doc, lang, leaves, tables, factor, length, note_lines, None)
+    el = set_energy_length(fw, length, f) if base[0] is not None else None
+    if el is None:
+        return (*base, None)
+    wh = [_band_size(band(fw, other, length, el)[1]) for other in LANGS]
+    wide = {**leaves, "band": Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh),
+                                   record=_union(band(fw, lang, length, el)[0]))}
+    got = _set_laid_at(f, fw, doc, lang, wide, tables, factor, length, note_lines, el)
+
+    def bare(laid) -> int:
+        return sum(1 for page in laid if not {leaf.name for leaf, _ in page if leaf.record is not None} & SET_DRAWN)
+    if got[0] is not None and (len(got[0]), bare(got[0])) <= (len(base[0]), bare(base[0])):
+        return (*got, el)
+    return (*base, None)
+
+
+def _set_laid_at(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Leaf], tables: list[Leaf],
+                 factor: float, length: float, note_lines: list[str], el: float | None):
     """A set's sheets in ``lang`` (``_set_flow``, ω(φ) grown by ``_set_speed``): the notes in the
     band's nook where they fit it in both languages (the same sheets in either), else with the
     tables. Returns the laid sheets (None where a drawing is larger than a sheet), the nook (or
-    None) and ω(φ)'s leaf. ``leaves``: the moments and the band (with records)."""
-    boxes = band(fw, lang, length)[1]
+    None) and ω(φ)'s leaf. ``leaves``: the moments and the band (with records; ΔT(φ) over ``el``)."""
+    boxes = band(fw, lang, length, el)[1]
     nook = nook_for(boxes, note_lines)
-    if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
+    if nook is not None and any(nook_for(band(fw, other, length, el)[1], lines_of(notes(fw, doc, other))) is None
                                 for other in LANGS if other != lang):
         nook = None                      # the same sheets in either language
     nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
@@ -1505,7 +1553,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         # the notes in the band's nook where they fit it, as on the A1 sheet (the band's sheet not half
         # empty); else with the tables. The set reads in the order of the work: the moments on the
         # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_laid``)
-        laid, nook, leaves["speed"] = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
+        laid, nook, leaves["speed"], el = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
+        if el is not None:                   # ΔT(φ) widened on the band's sheet
+            parts_, boxes = band(fw, lang, length, el)
         if laid is None:
             raise said_error(GraphplanError, "sh drawing larger", None, None, form=f.name, option="--format")
         pages = [[q for leaf, b in page if leaf.record is not None
