@@ -740,7 +740,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
-        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ_{{{name}}} = {num(psi, lang)}°", 1 + 0j, TEXT,
+        labels.append(LabelRequest(complex(x_end, b + s * x_end), f"ψ_{{{name}}} = {fixed(psi, lang, PSI_DECIMALS)}°", 1 + 0j, TEXT,
                                    step=f"ψ_{name}"))
     rec.point((0.0, k), role="joint", layer=LAYER, step="k")
     rec.point((0.0, l), role="joint", layer=LAYER, step="l")
@@ -921,15 +921,18 @@ SPEED_ASPECT = 0.75           # the plot no taller than ¾ of its abscissa …
 SPEED_TALLEST = 220.0         # … nor than this (mm; 160 left ~55 mm over the tables of stop 49's coulisse)
 
 
-def speed_fitted(f: Flywheel, lang: str, w: float, h: float) -> Record:
+PSI_DECIMALS = 2     # ψ_max and ψ_min to one count of decimals (the shaper's "59,06°" beside "57°")
+
+
+def speed_fitted(f: Flywheel, lang: str, w: float, h: float, aspect: float = SPEED_ASPECT) -> Record:
     """ω(φ) drawn as large as a zone of w × h mm holds (its lettering included): ω has no standard
     scale — its ticks are read off the ordinate axis —, so the plot takes the zone, no taller than
-    ``SPEED_ASPECT`` of its abscissa or ``SPEED_TALLEST``; never below ``SPEED_MIN``."""
+    ``aspect`` (``SPEED_ASPECT``) of its abscissa or ``SPEED_TALLEST``; never below ``SPEED_MIN``."""
     pw, ph = SPEED_MIN
     probe = speed_record(f, lang, width=pw, height=ph)
     x0, y0, x1, y1 = probe.bounds()
     pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed …
-    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), SPEED_ASPECT * pw, SPEED_TALLEST))
+    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), aspect * pw, SPEED_TALLEST))
     rec = speed_record(f, lang, width=pw, height=ph)
     # … but for the labels of the extremes, placed clear of the curves at the probe's size and not at
     # this one (stop 49: the motor's ω_max lettered left of the axis on the small probe cost ω(φ) 25 mm

@@ -10,7 +10,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least, turned_length,
-                                       moments_record, records, speed_fitted, wittenbauer_record)
+                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
+                                       PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
 from graphplan.exact.dynamics import analyse
@@ -28,7 +29,7 @@ from graphplan.sheets.form import TABLES, Form, enlarged, form, table
 from graphplan.sheets.kinematics import TITLE, fields
 from graphplan.sheets.kintables import phi_convention, title_in
 from graphplan.util.errors import GraphplanError, said_error
-from graphplan.util.words import LANGS, num
+from graphplan.util.words import LANGS, fixed, num
 
 
 def fmt(v: float | None, lang: str, digits: int = 4) -> str:
@@ -247,8 +248,8 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
-             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {num(fw['psi_max_deg'], lang)}°, "
-             f"ψ_{{min}} = {num(fw['psi_min_deg'], lang)}°",
+             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, PSI_DECIMALS)}°, "
+             f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, PSI_DECIMALS)}°",
              wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
              w["achieved"].format(d=achieved(doc["motion"]["delta"], doc["delta"], lang),
@@ -512,6 +513,26 @@ def nook_for(boxes: dict[str, tuple], lines: list[str], slack: float = 0.0):
     return None
 
 
+def speed_nook(boxes: dict[str, tuple], speed: Leaf, lines: list[str]) -> tuple[tuple, float] | None:
+    """The band's nook (``nooks``, its frame) that "nook" sets ω(φ) in with the notes' ``lines``
+    under it, and its width: the largest by area that holds ``speed`` (ω(φ) at its smallest, no
+    narrower than ``NOOK_SPEED``) over the notes set in its width — under a tall energy–mass
+    diagram (the shaper's: l 330 mm under its I* axis) the room under ΔT(φ) was ~210 × 470 mm of
+    paper while ω(φ) and the notes stood squeezed beside the tables — or None."""
+    fit = []
+    for n in nooks(boxes):
+        w, h = n[2] - n[0], n[3] - n[1]
+        if w >= max(NOOK_SPEED, speed.w) - 1e-9 and h >= speed.h + GAP + notes_height([lines], w) - 1e-9:
+            fit.append((n, w))
+    return max(fit, key=lambda m: (m[0][2] - m[0][0]) * (m[0][3] - m[0][1])) if fit else None
+
+
+def speed_in_nook(per_lang, speed: Leaf, lines: list[list[str]]) -> bool:
+    """Each language's band (``per_lang``: (boxes, width) pairs) has a nook that holds ω(φ) over
+    that language's notes (``lines``, in the same order)."""
+    return all(speed_nook(b, speed, ls) is not None for (b, _), ls in zip(per_lang, lines))
+
+
 NOOK_NOTES = 120.0       # mm: the least width the notes are set in under ΔT(φ) (the column's: TITLE)
 
 
@@ -550,12 +571,13 @@ def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = Non
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
 
-def _speed(f: Flywheel, lang: str, zone: tuple[float, float]) -> Record:
-    """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds."""
+def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT) -> Record:
+    """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds, no taller than
+    ``aspect`` of its abscissa (``speed_fitted``)."""
     w, h = zone
     probe = speed_fitted(f, lang, w, 0.0)
     h -= _wh(captioned(probe, WORDS[lang]["speed"]))[1] - _wh(probe)[1]   # the caption's height comes off
-    return captioned(speed_fitted(f, lang, w, h), WORDS[lang]["speed"])
+    return captioned(speed_fitted(f, lang, w, h, aspect), WORDS[lang]["speed"])
 
 
 def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
@@ -586,7 +608,11 @@ def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
 
-SHAPES = ("bands", "column", "speed", "side")
+SHAPES = ("bands", "column", "speed", "nook", "side")
+NOOKED = ("nook", "side")     # the band at the right over the title block, the column at the left under the moments
+NOOK_SPEED = 160.0            # mm: the least width of the nook "nook" sets ω(φ) and the notes in
+NOOK_ASPECT = 1.0             # ω(φ) there as tall as its abscissa (the nook is narrow and tall: at ¾ the
+#                               shaper's left ~90 mm of it empty between ω(φ) and the notes)
 
 
 def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
@@ -595,7 +621,8 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
     column with the notes over the title block. "bands": those one under another, the column beside
     ω(φ); "column": the column the sheet's full height; "speed": ω(φ) over the column, beside the
     moments and the band; "side": the band at the right over the title block (``foot`` mm kept
-    for it), the column and ω(φ) under the moments."""
+    for it), the column and ω(φ) under the moments; "nook": as "side", ω(φ) in the band's nook
+    under ΔT(φ) (``speed_nook``), the column alone under the moments."""
     middle = d["band"]
     if shape == "bands":
         return Stack([Row([d["moments"]]), middle, Row([d["speed"], C], flush=True)], flush=True)
@@ -603,6 +630,9 @@ def _tree(shape: str, d: dict[str, Leaf], C: Leaf, foot: float = 0.0):
         return Row([Stack([d["moments"], middle]), Stack([d["speed"], C], flush=True)], flush=True)
     if shape == "side":
         return Row([Stack([d["moments"], Row([C, d["speed"]])], flush=True),
+                    Stack([middle, Leaf("title block", 0.0, foot)], flush=True)], flush=True)
+    if shape == "nook":
+        return Row([Stack([d["moments"], C], flush=True),
                     Stack([middle, Leaf("title block", 0.0, foot)], flush=True)], flush=True)
     return Row([Stack([d["moments"], middle, d["speed"]]), C], flush=True)
 
@@ -638,7 +668,7 @@ def _column(f: Form, tables: list[Leaf], parts: int, height, shape: str = "") ->
     groups = [tables[:1], tables[1:]] if parts == ROWED else split(tables, parts)
     cw, ch = _tables_size(groups, parts)
     width = max(cw, TITLE)
-    foot = 0.0 if shape == "side" else GAP + keep_out(f)[3] - field_of(f)[1]
+    foot = 0.0 if shape in NOOKED else GAP + keep_out(f)[3] - field_of(f)[1]
     return Leaf("column", width, ch + (0.0 if height is None else GAP + height(width)) + foot), groups, width
 
 
@@ -822,8 +852,12 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                 leaves, tables, notes_, _ = measured(L, size, factor)
                 leaves["band"] = band_leaf(L, size, shortest)
                 for shape in SHAPES:
+                    if shape == "nook" and not speed_in_nook(band_and_nooks(L, size, shortest)[1], leaves["speed"],
+                                                             notes_):
+                        continue
                     for parts in (1, 2, 3):
-                        C = _column(f, tables, parts, lambda w: notes_height(notes_, w), shape)[0]
+                        C = _column(f, tables, parts, None if shape == "nook" else lambda w: notes_height(notes_, w),
+                                    shape)[0]
                         tw, th = extent(_tree(shape, leaves, C, foot))
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             return L, size
@@ -838,11 +872,13 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
                 for in_nook in (True, False):
                     for shape in SHAPES:
-                        if in_nook and shape == "side":     # the band at the right: no nook under ΔT(φ)
-                            continue
+                        if in_nook and shape in NOOKED:     # the band at the right: no nook under ΔT(φ)
+                            continue                        # for the notes (or ω(φ) holds it: "nook")
+                        if shape == "nook" and not speed_in_nook(nooks, leaves["speed"], notes_):
+                            continue                        # ω(φ) over the notes in the band's nook
                         for parts in (1, 2, 3):
-                            C = _column(f, tables, parts, None if in_nook else lambda w: notes_height(notes_, w),
-                                        shape)[0]
+                            C = _column(f, tables, parts, None if in_nook or shape == "nook"
+                                        else lambda w: notes_height(notes_, w), shape)[0]
                             tree = _tree(shape, leaves, C, foot)
                             tw, th = extent(tree)
                             if tw <= W + 1e-9 and th <= H + 1e-9 and (
@@ -857,8 +893,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         """ω(φ) over the column beside the moments and the band ("speed") spans the room right of
         them, the one column of tables only its width: the results' tables side by side under the
         positions' (``ROWED``) where the sheet still holds it — the column shorter, ω(φ) taller, no
-        strip of paper left of the tables (the compressor: ~140 × 400 mm)."""
-        C = _column(f, tables, ROWED, None if in_nook else lambda w: notes_height(notes_, w), shape)[0]
+        strip of paper left of the tables (the compressor: ~140 × 400 mm); so too the column alone
+        under the moments ("nook": the shaper's Tables 2 and 3 left ~150 × 200 mm beside them)."""
+        C = _column(f, tables, ROWED, None if in_nook or shape == "nook" else lambda w: notes_height(notes_, w),
+                    shape)[0]
         tw, th = extent(_tree(shape, leaves, C, foot_))
         return tw <= W + 1e-9 and th <= H + 1e-9
 
@@ -1276,15 +1314,63 @@ def _analysed(st: Study, delta: float | None):
     return _ANALYSED[key]
 
 
+def set_energy_length(fw: Flywheel, length: float, f: Form) -> float | None:
+    """ΔT(φ)'s φ axis in a set's band sheet longer than the turned I*(φ)'s (``band``'s
+    ``energy_length``, as ``widened`` does on one sheet): as long as a later sheet holds the band in
+    both languages, no longer than the moments' L, in whole ``WIDEN_STEP``; None where that gains
+    less than ``WIDEN_LEAST`` (the crusher's A3 set drew ΔT(φ) over 70 mm, 12 divisions 5.8 mm
+    apart, with ~70 mm of its sheet empty beside it)."""
+    if fw.L - length < WIDEN_LEAST - 1e-9:
+        return None
+    x0, _, x1, y1 = field_of(f)
+    k = _later_keep(f)
+
+    def size(el: float | None) -> tuple[float, float]:
+        wh = [_band_size(band(fw, other, length, el)[1]) for other in LANGS]
+        return max(a[0] for a in wh), max(a[1] for a in wh)
+    bw, bh = size(None)
+    room = (x1 - x0) if bh <= y1 - k[3] + 1e-9 else (k[0] - x0)
+    el = length + math.floor(min(room - bw, fw.L - length) / WIDEN_STEP) * WIDEN_STEP
+    for _ in range(4):
+        if el - length < WIDEN_LEAST - 1e-9:
+            return None
+        w, h = size(el)
+        if _fits_later(f, Leaf("band", w, h)) and h <= bh + 1e-9:
+            return el
+        el -= max(WIDEN_STEP, math.ceil((w - room) / WIDEN_STEP) * WIDEN_STEP)
+    return None
+
+
 def _set_laid(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Leaf], tables: list[Leaf],
               factor: float, length: float, note_lines: list[str]):
+    """``_set_laid_at`` with the band as given, or with ΔT(φ) widened (``set_energy_length``) where
+    that lays the set on no more sheets and leaves no more of them without a drawing. Returns
+    ``_set_laid_at``'s three and ΔT(φ)'s φ axis (None: the band as given)."""
+    base = _set_laid_at(f, fw, doc, lang, leaves, tables, factor, length, note_lines, None)
+    el = set_energy_length(fw, length, f) if base[0] is not None else None
+    if el is None:
+        return (*base, None)
+    wh = [_band_size(band(fw, other, length, el)[1]) for other in LANGS]
+    wide = {**leaves, "band": Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh),
+                                   record=_union(band(fw, lang, length, el)[0]))}
+    got = _set_laid_at(f, fw, doc, lang, wide, tables, factor, length, note_lines, el)
+
+    def bare(laid) -> int:
+        return sum(1 for page in laid if not {leaf.name for leaf, _ in page if leaf.record is not None} & SET_DRAWN)
+    if got[0] is not None and (len(got[0]), bare(got[0])) <= (len(base[0]), bare(base[0])):
+        return (*got, el)
+    return (*base, None)
+
+
+def _set_laid_at(f: Form, fw: Flywheel, doc: dict, lang: str, leaves: dict[str, Leaf], tables: list[Leaf],
+                 factor: float, length: float, note_lines: list[str], el: float | None):
     """A set's sheets in ``lang`` (``_set_flow``, ω(φ) grown by ``_set_speed``): the notes in the
     band's nook where they fit it in both languages (the same sheets in either), else with the
     tables. Returns the laid sheets (None where a drawing is larger than a sheet), the nook (or
-    None) and ω(φ)'s leaf. ``leaves``: the moments and the band (with records)."""
-    boxes = band(fw, lang, length)[1]
+    None) and ω(φ)'s leaf. ``leaves``: the moments and the band (with records; ΔT(φ) over ``el``)."""
+    boxes = band(fw, lang, length, el)[1]
     nook = nook_for(boxes, note_lines)
-    if nook is not None and any(nook_for(band(fw, other, length)[1], lines_of(notes(fw, doc, other))) is None
+    if nook is not None and any(nook_for(band(fw, other, length, el)[1], lines_of(notes(fw, doc, other))) is None
                                 for other in LANGS if other != lang):
         nook = None                      # the same sheets in either language
     nleaf = (Leaf("notes", 0.0, 0.0) if nook is not None else Leaf("notes", record=note_block(note_lines, TITLE)))
@@ -1369,6 +1455,33 @@ def _speed_widened(fw: Flywheel, lang: str, items: list[Placed], boxes: dict[str
             + [Placed("speed", centred(wider, box), box)])
 
 
+def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tuple, small: Leaf,
+                  lines: list[str], fuller: list[str], region: tuple, keep: tuple) -> list[Placed]:
+    """ω(φ) over the notes in the band's nook (``speed_nook``; the band stands centred in
+    ``band_box``), the nook down to the field's foot where it ends left of the title block
+    (``keep``: the band stands over the title block, the paper under the nook is no one's — the
+    shaper's ~235 × 100 mm): ω(φ) grown into what the notes leave of it, the two one under another
+    with the spare height in three equal parts over, between and under them; the motor's sentence
+    with the notes where it still fits."""
+    dx, dy = _band_shift(boxes, band_box)
+    got = speed_nook(boxes, small, lines)
+    n, w = got if got is not None else (nooks(boxes)[0], nooks(boxes)[0][2] - nooks(boxes)[0][0])
+    box = (n[0] + dx, n[1] + dy, n[0] + dx + w, n[3] + dy)
+    if box[2] <= keep[0] + 1e-9:
+        box = (box[0], region[1], box[2], box[3])
+    room = box[3] - box[1] - GAP
+    lines = with_motor(lines, fuller, room - small.h, w)
+    nrec = note_block(lines, w)
+    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]), NOOK_ASPECT)
+    if _wh(rec)[0] > w + 1e-6 or _wh(rec)[1] > room - _wh(nrec)[1] + 1e-6:
+        rec = small.record
+    sh, nh = _wh(rec)[1], _wh(nrec)[1]
+    third = max(0.0, box[3] - box[1] - sh - nh) / 3        # the spare height: over, between and under them
+    sb = (box[0], box[3] - third - sh, box[2], box[3] - third)
+    nb = (box[0], sb[1] - third - nh, box[2], sb[1] - third)
+    return [Placed("speed", centred(rec, sb), sb), Placed("notes", top_left(nrec, nb), nb)]
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -1409,7 +1522,8 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         if top:                                  # at the top of its box (``_top_aligned``)
             rec = rec.moved(0.0, b[3] - rec.bounds()[3])
         return [Placed(leaf.name, rec, b)]
-    height = None if in_nook else (lambda w: _wh(note_block(note_lines, w))[1])   # the notes in the column
+    height = (None if in_nook or shape == "nook"                  # the notes in the column
+              else (lambda w: _wh(note_block(note_lines, w))[1]))
     if shape != "set":                       # ΔT(φ) across the band's box where I*(φ)'s height bounds the band
         zones = []                           # each language's drawings and column: the same band in either
         for other in LANGS:
@@ -1422,13 +1536,14 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
                            "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
                           _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor)], parts,
-                                  None if in_nook else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
+                                  None if in_nook or shape == "nook"
+                                  else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
         got = widened(fw, length, zones, shape, foot - region[1], region)
         if got is not None and (not in_nook or nook_for(got[1][lang][1], note_lines) is not None
                                 or nook_for(boxes, note_lines) is None):     # the notes' nook kept
             parts_, boxes = got[1][lang]
             leaves["band"] = Leaf("band", got[2].w, got[2].h, record=_union(parts_))
-    if shape != "set":                       # ω(φ) grows into the room the other zones leave it
+    if shape not in ("set", "nook"):         # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
         speed = _speed(fw, lang, zone)
@@ -1438,7 +1553,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         # the notes in the band's nook where they fit it, as on the A1 sheet (the band's sheet not half
         # empty); else with the tables. The set reads in the order of the work: the moments on the
         # first sheet, the band, ω(φ), the tables by the last sheet's title block (``_set_laid``)
-        laid, nook, leaves["speed"] = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
+        laid, nook, leaves["speed"], el = _set_laid(f, fw, doc, lang, leaves, tables, factor, length, note_lines)
+        if el is not None:                   # ΔT(φ) widened on the band's sheet
+            parts_, boxes = band(fw, lang, length, el)
         if laid is None:
             raise said_error(GraphplanError, "sh drawing larger", None, None, form=f.name, option="--format")
         pages = [[q for leaf, b in page if leaf.record is not None
@@ -1465,7 +1582,10 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
                 boxes_at[leaf.name] = b
         if shape == "speed":                 # ω(φ) over the band's reach: across to the moments' side
             items = _speed_widened(fw, lang, items, boxes_at, region)
-        if in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
+        if shape == "nook":                  # ω(φ) over the notes in the band's nook under ΔT(φ)
+            items += _speed_nooked(fw, lang, boxes, band_box, leaves["speed"], note_lines,
+                                   lines_of(notes(fw, doc, lang, short, motor=True)), region, keep_out(f))
+        elif in_nook:                          # under ΔT(φ), left of the turned I*(φ): the band's nook
             dx, dy = _band_shift(boxes, band_box)
             slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2    # the band centred in its box
             got = nook_for(boxes, note_lines, slack)
@@ -1477,10 +1597,15 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
         else:
             nrec = note_block(note_lines, width)
-            bottom = col_box[1] if shape == "side" else foot      # over the title block, or the column's foot
+            bottom = col_box[1] if shape in NOOKED else foot      # over the title block, or the column's foot
             nb = (col_box[2] - width, bottom, col_box[2], bottom + _wh(nrec)[1])
-        items.append(Placed("notes", top_left(nrec, nb), nb))
-        items += _set_tables(groups, parts, col_box[2], col_box[3])
+        if shape != "nook":
+            items.append(Placed("notes", top_left(nrec, nb), nb))
+        right = col_box[2]
+        if shape == "nook":                  # the tables alone under the moments: centred under them, the
+            spare = col_box[2] - col_box[0] - _tables_size(groups, parts)[0]   # spare width either side (the
+            right -= max(spare, 0.0) / 2     # shaper's ~90 × 350 mm strip left of them, right-aligned)
+        items += _set_tables(groups, parts, right, col_box[3])
         pages = [items]
     from graphplan.util.words import word
     tf = fields(st, lang, word("tb no scale", lang))   # diagrams: no drawing scale (their μ are in the notes)
