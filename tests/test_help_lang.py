@@ -95,10 +95,12 @@ def test_ukrainian_help_has_no_english_and_the_english_no_cyrillic(capsys, colum
     assert uk.startswith("використання: graphplan") and "параметри:" in uk
     for line in uk.splitlines():
         assert not latin_words(bare(line), names), f"{command}: English in {line!r}"
+        assert not re.search(r"\w-$", line), f"{command}: a hyphenated word broken at {line!r}"
     assert uk == help_of(capsys, *head, "--lang", "uk", "--help")
     en = help_of(capsys, *head, "--lang", "en", "--help")
     assert en.startswith("usage: graphplan") and "options:" in en
     assert not CYRILLIC.search(en), f"{command}: Cyrillic in {en!r}"
+    assert not re.search(r"\w-$", en, re.M), f"{command}: a hyphenated word broken"
 
 
 @pytest.mark.parametrize("command", COMMANDS)

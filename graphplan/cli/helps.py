@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import shutil
+import textwrap
 
 from graphplan.util.helpwords import HELPS, METAVARS, help_text
 
@@ -16,12 +17,20 @@ MOST_COLUMNS = 100       # argparse wraps at the terminal's width, never wider t
 
 
 def formatter(lang: str) -> type[argparse.HelpFormatter]:
-    """argparse's formatter speaking ``lang``: its "usage:" from the catalogue, lines ≤ MOST_COLUMNS."""
+    """argparse's formatter speaking ``lang``: its "usage:" from the catalogue, lines ≤ MOST_COLUMNS,
+    a hyphenated word never broken («кривошипно-повзунний», "crank-slider")."""
     class Formatter(argparse.HelpFormatter):
         def __init__(self, prog: str, indent_increment: int = 2, max_help_position: int = 24,
                      width: int | None = None) -> None:
             width = min(width or shutil.get_terminal_size().columns - 2, MOST_COLUMNS)
             super().__init__(prog, indent_increment, max_help_position, width)
+
+        def _split_lines(self, text: str, width: int) -> list[str]:
+            return textwrap.wrap(self._whitespace_matcher.sub(" ", text).strip(), width, break_on_hyphens=False)
+
+        def _fill_text(self, text: str, width: int, indent: str) -> str:
+            return textwrap.fill(self._whitespace_matcher.sub(" ", text).strip(), width, initial_indent=indent,
+                                 subsequent_indent=indent, break_on_hyphens=False)
 
         def add_usage(self, usage, actions, groups, prefix=None) -> None:
             super().add_usage(usage, actions, groups, help_text("@ usage", lang) if prefix is None else prefix)
