@@ -47,6 +47,9 @@ def speak(parser: argparse.ArgumentParser, lang: str, command: str = "graphplan"
         parser.description = help_text(f"{command} desc", lang)
     parser._positionals.title = help_text("@ positional", lang)
     parser._optionals.title = help_text("@ options", lang)
+    for group in parser._action_groups:
+        if any(isinstance(a, argparse._SubParsersAction) for a in group._group_actions):
+            group.title = help_text("@ commands", lang)
     for action in parser._actions:
         if isinstance(action, argparse._HelpAction):
             action.help = help_text("@ help", lang)

@@ -20,7 +20,7 @@ def build_parser(lang: str = "uk") -> argparse.ArgumentParser:
     parser = Parser(prog="graphplan")
     parser.add_argument("--version", action="version", version=f"graphplan {__version__}")
     parser.add_argument("--lang", dest="lang_before", choices=("uk", "en"), default=None)
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser, title="commands")
     for module in COMMAND_MODULES:
         import_module(module).register(sub)
     speak(parser, lang)

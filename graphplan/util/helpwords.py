@@ -15,6 +15,7 @@ HELPS: dict[str, tuple[str, str]] = {
     "@ usage": ("використання: ", "usage: "),
     "@ positional": ("позиційні аргументи", "positional arguments"),
     "@ options": ("параметри", "options"),
+    "@ commands": ("команди", "commands"),
     "@ help": ("показати цю довідку та вийти", "show this help message and exit"),
     "@ version": ("показати версію програми та вийти", "show program's version number and exit"),
 
