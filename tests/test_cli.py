@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -145,6 +146,9 @@ def test_usage_error_is_one_line():
 
 
 def test_help_works():
+    """The one subprocess run of --help (the others are in-process, tests/test_help_lang.py): Ukrainian
+    without --lang, whatever the environment's LANG."""
     proc = subprocess.run([sys.executable, "-m", "graphplan", "analyze", "--help"],
-                          capture_output=True, text=True, cwd=ROOT)
+                          capture_output=True, text=True, cwd=ROOT, env={**os.environ, "LANG": "en_US.UTF-8"})
     assert proc.returncode == 0 and "--positions" in proc.stdout
+    assert proc.stdout.startswith("використання: graphplan analyze") and "кількість положень" in proc.stdout

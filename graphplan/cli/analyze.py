@@ -36,12 +36,10 @@ def cmd_analyze(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("analyze", help="exact (analytic) kinematics: positions, velocities, accelerations",
-                       description="Exact kinematics of every point, link and sliding pair.")
+    p = sub.add_parser("analyze")
     scene_arg(p, optional=True)
-    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
-    p.add_argument("--phi", type=float, nargs="+", metavar="DEG",
-                   help="crank angles instead of positions (deg from +x, counter-clockwise)")
-    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
+    p.add_argument("--positions", type=int, metavar="N")
+    p.add_argument("--phi", type=float, nargs="+", metavar="DEG")
+    p.add_argument("--json", action="store_true")
     lang_arg(p)
     p.set_defaults(handler=cmd_analyze)

@@ -22,14 +22,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("bench", help="speed–accuracy–stability study: DIR/bench.json plus charts",
-                       description="Times and errors of the analytic solver, the graphical plans and the "
-                                   "chord diagrams; sweeps toward the mechanisms' failures.")
-    p.add_argument("-o", "--out", default="bench", metavar="DIR", help="output folder (default: bench)")
-    p.add_argument("--quick", action="store_true", help="a short run (under a minute)")
-    p.add_argument("--section", action="append", metavar="NAME",
-                   help="run only this section (repeatable): speed, chords, differentiation, plans, stability, "
-                        "sheet, external, flywheel, cam, gears, or processes (whole commands against the bare import of "
-                        "numpy, shapely and svgwrite; only when asked for)")
+    p = sub.add_parser("bench")
+    p.add_argument("-o", "--out", default="bench", metavar="DIR")
+    p.add_argument("--quick", action="store_true")
+    p.add_argument("--section", action="append", metavar="NAME")
     lang_arg(p)
     p.set_defaults(handler=cmd_bench)

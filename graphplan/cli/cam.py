@@ -13,22 +13,13 @@ from graphplan.util.errors import GraphplanError, said_error
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "cam", help="cam synthesis by graphical methods, compared with the exact solution",
-        description="A cam mechanism (a [cam] scene, docs/cams.md): the follower's law, its analogue "
-                    "acceleration integrated twice by chords, the smallest base radius from the phase "
-                    "diagram and the allowed pressure angles, the profile by inversion — every value "
-                    "measured with the ruler beside the exact one with the percent error.")
-    p.add_argument("scene", help="a cam scene file (TOML with a [cam] table; examples/cam_translating.toml)")
-    p.add_argument("--divisions", type=int, metavar="N",
-                   help="intervals of the rise and of the return (default: the scene's, else 8)")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
-    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
-    p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (diagrams, phase, profile .svg)")
-    p.add_argument("--format", default="A1", metavar="A1|A2|A3",
-                   help="the sheet whose scales the construction takes (default A1: the numbers are the cam "
-                        "sheet's)")
+    p = sub.add_parser("cam")
+    p.add_argument("scene")
+    p.add_argument("--divisions", type=int, metavar="N")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--svg", metavar="DIR")
+    p.add_argument("--format", default="A1", metavar="A1|A2|A3")
     lang_arg(p)
     p.set_defaults(handler=cmd_cam)
 

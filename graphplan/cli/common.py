@@ -113,20 +113,18 @@ def dumps(doc: Any) -> str:
 
 
 def scene_arg(p: argparse.ArgumentParser, optional: bool = False) -> None:
-    """The SCENE positional: a TOML file; optional ones fall back to the built-in crank-slider."""
-    help_ = "scene file (TOML, see docs/scenes.md)"
+    """The SCENE positional: a TOML file; optional ones fall back to the built-in crank-slider (the help:
+    util.helpwords "* scene")."""
     if optional:
-        p.add_argument("scene", nargs="?", help=help_ + "; the built-in crank-slider when omitted")
+        p.add_argument("scene", nargs="?")
     else:
-        p.add_argument("scene", help=help_)
+        p.add_argument("scene")
 
 
 def lang_arg(p: argparse.ArgumentParser) -> None:
     """--lang uk|en: one option and one default for every command (the scene's ``lang``, else
     Ukrainian)."""
-    p.add_argument("--lang", choices=("uk", "en"), default=None,
-                   help="language of tables, captions and messages: uk or en (default: the scene's "
-                        "lang, else uk)")
+    p.add_argument("--lang", choices=("uk", "en"), default=None)
 
 
 def lang_of(args: argparse.Namespace, st=None) -> str:

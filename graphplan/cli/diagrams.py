@@ -73,40 +73,24 @@ def cmd_diagrams(args) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "diagrams", help="s–v–a diagrams by the method of chords, measured and compared",
-        description="Kinematic diagrams of the output (displacement from position 0, velocity, "
-                    "acceleration) by graphical differentiation with chords and pole distances H1, H2; "
-                    "graphical integration back; every ordinate read with the drafting precision and "
-                    "compared with the analytic solver.")
+    p = sub.add_parser("diagrams")
     scene_arg(p, optional=True)
-    p.add_argument("--point", metavar="P", help="a sliding point or a link (default: the scene's output)")
-    p.add_argument("--divisions", type=_divisions_arg, metavar="N",
-                   help="equal intervals (default: the scene's positions count), or comma-separated crank "
-                        "turns from position 0 in degrees for unequal ones")
-    p.add_argument("--h1", type=float, metavar="MM", help="pole distance of the v diagram (the scene's, else 30)")
-    p.add_argument("--h2", type=float, metavar="MM", help="pole distance of the a diagram (the scene's, else 30)")
-    p.add_argument("--L", type=float, metavar="MM", help="abscissa of one crank period (the scene's, else 240)")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every reading (0.5; 0 = exact)")
-    p.add_argument("--adaptive", action="store_true",
-                   help="split intervals where the chord error estimate is large (extrema, sharp bends)")
-    p.add_argument("--tolerance", type=float, default=0.5, metavar="MM",
-                   help="the adaptive mode's chord error estimate limit on the v and a diagrams (0.5)")
-    p.add_argument("--method", choices=("chords", "tangents"),
-                   help="graphical differentiation: chords (the scene's, else chords) or tangents by the mirror")
-    p.add_argument("--angle-error", type=float, metavar="DEG",
-                   help="tangents: each tangent's direction off by up to ± this many degrees (default: the "
-                        "mirror's bound, docs/diagrams.md; 0 = exact tangents; deterministic)")
-    p.add_argument("--correct", action="store_true",
-                   help="chords: the lab's area correction of the v and a curves (off: the plain method)")
-    p.add_argument("--height", type=float, metavar="MM", help="fit the s diagram to this height (μs from the series)")
-    p.add_argument("--at", type=int, nargs="+", metavar="K", help="positions of the lab's table (default 1 and N/2+1)")
+    p.add_argument("--point", metavar="P")
+    p.add_argument("--divisions", type=_divisions_arg, metavar="N")
+    p.add_argument("--h1", type=float, metavar="MM")
+    p.add_argument("--h2", type=float, metavar="MM")
+    p.add_argument("--L", type=float, metavar="MM")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--adaptive", action="store_true")
+    p.add_argument("--tolerance", type=float, default=0.5, metavar="MM")
+    p.add_argument("--method", choices=("chords", "tangents"))
+    p.add_argument("--angle-error", type=float, metavar="DEG")
+    p.add_argument("--correct", action="store_true")
+    p.add_argument("--height", type=float, metavar="MM")
+    p.add_argument("--at", type=int, nargs="+", metavar="K")
     lang_arg(p)
-    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
-                   help="L, the s height and H1, H2 as the kinematics sheet of this format draws them: A1 "
-                        "(default), A2, A3, A4; none = the scene's [diagrams] table")
-    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
-    p.add_argument("--svg", metavar="FILE", help="write the three diagrams with their pole constructions")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--svg", metavar="FILE")
     p.set_defaults(handler=cmd_diagrams)
 

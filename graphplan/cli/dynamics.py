@@ -13,27 +13,14 @@ from graphplan.util.errors import GraphplanError
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "dynamics", help="reduced inertia and moments, equation of motion with the motor, flywheel",
-        description="Dynamics of the machine reduced to the crank (seed 003): I*(φ), M*(φ), the "
-                    "steady state of the equation of motion with a constant driving moment and with "
-                    "the motor, and the flywheel for a coefficient of unevenness δ by the graphical "
-                    "energy–mass (Wittenbauer) construction, measured to the drafting precision, "
-                    "against the exact one.")
-    p.add_argument("scene", help="scene file (TOML, see docs/scenes.md and docs/dynamics.md)")
-    p.add_argument("--delta", type=float, metavar="D",
-                   help="coefficient of unevenness δ in (0, 0.5); default: the scene's [dynamics] delta, else 0.04")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
-    p.add_argument("--divisions", type=int, metavar="N",
-                   help="divisions of the turn on the diagrams, 4 to 360 (default: the scene's [dynamics] "
-                        "divisions, else its number of positions, at most 360)")
-    p.add_argument("--format", default="A1", metavar="A1",
-                   help="report the construction (L, scales, H) the dynamics sheet of this format draws: "
-                        "A1 (default), A2, A3")
-    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
-    p.add_argument("--svg", metavar="DIR", help="write the diagrams to DIR (moments, energy, inertia, "
-                                                "wittenbauer, speed .svg)")
+    p = sub.add_parser("dynamics")
+    p.add_argument("scene")
+    p.add_argument("--delta", type=float, metavar="D")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--divisions", type=int, metavar="N")
+    p.add_argument("--format", default="A1", metavar="A1")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--svg", metavar="DIR")
     lang_arg(p)
     p.set_defaults(handler=cmd_dynamics)
 

@@ -11,28 +11,15 @@ from graphplan.cli.common import lang_arg, lang_of, option_error
 from graphplan.util.errors import GraphplanError
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "forces", help="kinetostatics: force plans, balancing moment, Zhukovsky lever",
-        description="Force analysis at one crank angle, group by group from the last Assur group to "
-                    "the crank: the reactions read off force plans (measured to the drafting "
-                    "precision) against the closed form, and the balancing moment on the crank by "
-                    "the closed form, the force plans, the Zhukovsky lever and power balance.")
-    p.add_argument("scene", help="scene file (TOML, see docs/scenes.md)")
-    p.add_argument("--phi", type=float, metavar="DEG",
-                   help="crank angle (deg from +x, counter-clockwise); default: the scene's "
-                        "positions.force_phi_deg from position 0, else position 1")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every drawn and measured length, mm (0 = exact; "
-                        "default 0.5)")
-    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
-                   help="μl and μF as the force sheet of this format draws them (at the scene's force "
-                        "position): A1 (default), A2, A3, A4; none = the force plans' own scales")
-    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
+    p = sub.add_parser("forces")
+    p.add_argument("scene")
+    p.add_argument("--phi", type=float, metavar="DEG")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1")
+    p.add_argument("--json", action="store_true")
     lang_arg(p)
-    p.add_argument("--svg", metavar="DIR", help="write DIR/forces.svg (groups, force plans, lever)")
-    p.add_argument("--charts", metavar="DIR",
-                   help="write the balancing moment over a turn and the reactions' hodographs to "
-                        "DIR (balancing_moment.png/.svg, hodographs.png/.svg)")
+    p.add_argument("--svg", metavar="DIR")
+    p.add_argument("--charts", metavar="DIR")
     p.set_defaults(handler=cmd_forces)
 
 

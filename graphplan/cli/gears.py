@@ -12,21 +12,12 @@ from graphplan.util.errors import GraphplanError, said_error
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "gears", help="gear synthesis: the involute pair and the planetary train, graphical vs closed forms",
-        description="A gear scene ([gears] and/or [planetary], docs/gears.md): the shifted involute pair's "
-                    "geometry and quality (shifts given or \"auto\"), drawn in mesh with εα measured off the "
-                    "drawing; the planetary train by Willis' formula (z's given or chosen for the ratio) and "
-                    "by its velocity picture and plan of angular velocities — every reading beside the exact "
-                    "value with the percent error.")
-    p.add_argument("scene", help="a gear scene file (TOML with [gears] and/or [planetary]; examples/gears.toml)")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every drawn and measured length, mm (0 = exact; default 0.5)")
-    p.add_argument("--json", action="store_true", help="the contract's JSON instead of tables")
-    p.add_argument("--svg", metavar="DIR", help="write the constructions to DIR (meshing, sliding, planetary .svg)")
-    p.add_argument("--format", default="A1", metavar="A1|A2|A3",
-                   help="the sheet whose scales the construction takes (default A1: the numbers are the gear "
-                        "sheet's; A2/A3: the set's)")
+    p = sub.add_parser("gears")
+    p.add_argument("scene")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--svg", metavar="DIR")
+    p.add_argument("--format", default="A1", metavar="A1|A2|A3")
     lang_arg(p)
     p.set_defaults(handler=cmd_gears)
 

@@ -419,37 +419,23 @@ def keys_lang(keys: dict[str, dict[str, Any]]) -> str | None:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "key", help="teachers' answer keys for a group's variants (JSON, CSV, A4 key sheets, a summary)",
-        description="Exact answers for every variant of a table over a base scene (docs/keys.md): "
-                    "velocities at every position, accelerations at the acceleration-plan positions, "
-                    "the output's s, v, a at the diagram's divisions, with tolerances.")
-    p.add_argument("variants", help="the variant table: CSV (or .toml), one row per variant")
-    p.add_argument("-o", "--output", required=True, metavar="DIR", help="folder for the keys")
-    p.add_argument("--tolerance", type=float, metavar="PCT",
-                   help="the tolerance, %%, of every quantity without a setting of its own (default: the "
-                        "table's, else 5)")
-    p.add_argument("--tol", action="append", default=[], metavar="QUANTITY=PCT",
-                   help="a quantity's tolerance, %%; shell-style patterns: --tol 'a_*=8' (repeatable)")
-    p.add_argument("--divisions", type=int, metavar="N",
-                   help="the diagram's divisions (default: the table's, else the scene's positions)")
-    p.add_argument("--no-pdf", action="store_true", help="write the SVG key sheets only")
-    p.add_argument("--jobs", type=int, metavar="N",
-                   help="variants built in N processes at once (default: the processors, at most 8)")
-    p.add_argument("--quiet", action="store_true", help="no progress bar")
-    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p = sub.add_parser("key")
+    p.add_argument("variants")
+    p.add_argument("-o", "--output", required=True, metavar="DIR")
+    p.add_argument("--tolerance", type=float, metavar="PCT")
+    p.add_argument("--tol", action="append", default=[], metavar="QUANTITY=PCT")
+    p.add_argument("--divisions", type=int, metavar="N")
+    p.add_argument("--no-pdf", action="store_true")
+    p.add_argument("--jobs", type=int, metavar="N")
+    p.add_argument("--quiet", action="store_true")
+    p.add_argument("--json", action="store_true")
     lang_arg(p)
     p.set_defaults(handler=cmd_key)
 
-    c = sub.add_parser(
-        "check", help="grade a student's long table (variant, position, quantity, value) against a key",
-        description="Per row the exact value, the percent error and pass/fail by the key's tolerance; "
-                    "a failing row is searched over the turn and, when it fits another position, "
-                    "that position is named. Then a summary.")
-    c.add_argument("key", help="a key folder written by 'graphplan key', a variant's folder or its key.json")
-    c.add_argument("student", help="the student's table: CSV with position, quantity, value (and variant)")
-    c.add_argument("--json", action="store_true", help="the graded rows and the summary as JSON")
+    c = sub.add_parser("check")
+    c.add_argument("key")
+    c.add_argument("student")
+    c.add_argument("--json", action="store_true")
     lang_arg(c)
-    c.add_argument("--signed", action="store_true",
-                   help="compare signs of signed quantities (ω, ε, s, v, a) instead of magnitudes")
+    c.add_argument("--signed", action="store_true")
     c.set_defaults(handler=cmd_check)

@@ -14,16 +14,31 @@ from graphplan.util.errors import GraphplanError
 Handler = Callable[[argparse.Namespace], int]
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = Parser(prog="graphplan", description=(
-        "Graphical methods of the theory of machines and mechanisms: plans of positions, velocities "
-        "and accelerations, kinematic diagrams by chords and force plans, measured like a student "
-        "and compared with the exact analytic solution."))
+def build_parser(lang: str = "uk") -> argparse.ArgumentParser:
+    """The command line, its help in ``lang`` (the catalogue's, cli.helps)."""
+    from graphplan.cli.helps import speak
+    parser = Parser(prog="graphplan")
     parser.add_argument("--version", action="version", version=f"graphplan {__version__}")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
+    parser.add_argument("--lang", dest="lang_before", choices=("uk", "en"), default=None)
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser, title="commands")
     for module in COMMAND_MODULES:
         import_module(module).register(sub)
+    speak(parser, lang)
     return parser
+
+
+def help_lang(argv: Sequence[str] | None) -> str:
+    """The language the parser (its help, its usage errors' names) speaks: --lang as written, else — when
+    the help is asked for — the scene's ``lang`` (main.told_lang), else Ukrainian."""
+    words = list(sys.argv[1:] if argv is None else argv)
+    if not words or "-h" in words or "--help" in words:
+        return told_lang(words, None)
+    for k, item in enumerate(words):
+        if item == "--lang" and k + 1 < len(words) and words[k + 1] in ("uk", "en"):
+            return words[k + 1]
+        if item in ("--lang=uk", "--lang=en"):
+            return item[7:]
+    return "uk"
 
 
 # Each module registers its subcommand with ``register(subparsers)`` and imports heavy parts lazily.
@@ -49,9 +64,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     collect_less_often()
     args = None
     try:
-        args = build_parser().parse_args(argv)
+        lang = help_lang(argv)
+        args = build_parser(lang).parse_args(argv)
+        if getattr(args, "lang", None) is None and getattr(args, "lang_before", None):
+            args.lang = args.lang_before                  # graphplan --lang en COMMAND …
         if not getattr(args, "handler", None):
-            build_parser().print_help()
+            build_parser(lang).print_help()
             return 2
         check_options(args)
         code = args.handler(args)

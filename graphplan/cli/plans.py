@@ -45,26 +45,16 @@ def cmd_plans(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "plans", help="the graphical plans (positions, velocities, accelerations), measured and compared",
-        description="Position plan, velocity plans of every position and acceleration plans, "
-                    "constructed graphically in drawing millimetres, read with a ruler of the given "
-                    "precision and compared with the exact solution.")
-    p.add_argument("scene", nargs="?", help="scene file (TOML, see docs/scenes.md); the built-in "
-                   "crank-slider when omitted")
-    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
-    p.add_argument("--accel", nargs="+", metavar="AT",
-                   help="acceleration plans at these crank angles (deg) or position indices like #3 "
-                        "(default: the scene's, else position 1)")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of every reading, mm (default 0.5; 0 = exact)")
-    p.add_argument("--mu-l", type=float, metavar="M_PER_MM", help="fix the length scale μl, m/mm")
-    p.add_argument("--mu-v", type=float, metavar="V_PER_MM", help="fix the velocity scale μv, (m/s)/mm")
-    p.add_argument("--mu-a", type=float, metavar="A_PER_MM", help="fix the acceleration scale μa, (m/s²)/mm")
-    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
-                   help="draw at the scales the kinematics sheet of this format uses: A1 (default), A2, "
-                        "A3, A4; none = the plans' own scales")
-    p.add_argument("--json", action="store_true", help="the JSON of the contract instead of tables")
-    p.add_argument("--svg", metavar="DIR", help="write each plan as an SVG in true millimetres into DIR")
+    p = sub.add_parser("plans")
+    p.add_argument("scene", nargs="?")
+    p.add_argument("--positions", type=int, metavar="N")
+    p.add_argument("--accel", nargs="+", metavar="AT")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--mu-l", type=float, metavar="M_PER_MM")
+    p.add_argument("--mu-v", type=float, metavar="V_PER_MM")
+    p.add_argument("--mu-a", type=float, metavar="A_PER_MM")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1")
+    p.add_argument("--json", action="store_true")
+    p.add_argument("--svg", metavar="DIR")
     lang_arg(p)
     p.set_defaults(handler=cmd_plans)

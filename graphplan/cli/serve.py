@@ -104,19 +104,11 @@ def cmd_serve(args: argparse.Namespace) -> int:
 
 
 def register(sub) -> None:
-    p = sub.add_parser("serve", help="the lab's web page on this machine (loopback by default)",
-                       description="A web page for students (a template filled in or a TOML uploaded, the "
-                                   "mechanism previewed, the sheets, the explorer and the tables downloaded) "
-                                   "and teachers (variants → keys, students' tables → grades). Loopback by "
-                                   "default; any other --host asks every visitor for the token printed at "
-                                   "start (docs/serve.md).")
-    p.add_argument("--host", default="127.0.0.1", help="address to listen on (default 127.0.0.1)")
-    p.add_argument("--port", type=int, default=8000, help="port (default 8000)")
-    p.add_argument("--open", action="store_true", help="open the page in the browser")
-    p.add_argument("--workers", type=int, default=2, help="worker processes computing at once (default 2)")
-    p.add_argument("--timeout", type=float, default=120.0, metavar="S",
-                   help="time bound of one sheet, explorer or grading, seconds (default 120)")
-    p.add_argument("--lang", choices=("uk", "en"), default=None,
-                   help="the page's first language and of this command's messages: uk or en (default: the "
-                        "browser's, else uk; messages uk)")
+    p = sub.add_parser("serve")
+    p.add_argument("--host", default="127.0.0.1")
+    p.add_argument("--port", type=int, default=8000)
+    p.add_argument("--open", action="store_true")
+    p.add_argument("--workers", type=int, default=2)
+    p.add_argument("--timeout", type=float, default=120.0, metavar="S")
+    p.add_argument("--lang", choices=("uk", "en"), default=None)
     p.set_defaults(handler=cmd_serve)

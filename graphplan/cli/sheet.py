@@ -10,24 +10,17 @@ from graphplan.util.errors import GraphplanError, keyed_error, either
 
 
 def register(sub) -> None:
-    p = sub.add_parser("sheet", help="the drawing sheet (SVG, PDF, PNG or DXF by the suffix)",
-                       description="Lay out the drawing sheet: frame, title block, plans, diagrams and "
-                                   "tables. Without SCENE the built-in crank-slider is drawn.")
-    p.add_argument("scene", nargs="?", help="scene file (TOML); the built-in crank-slider when omitted")
-    p.add_argument("-o", "--output", required=True, metavar="FILE",
-                   help="output file: .svg, .pdf, .png or .dxf")
-    p.add_argument("--format", default="A1", help="sheet format: A1 (default), A2, A3; what does not fit "
-                   "goes to further sheets of the set (FILE-2, FILE-3 …)")
+    p = sub.add_parser("sheet")
+    p.add_argument("scene", nargs="?")
+    p.add_argument("-o", "--output", required=True, metavar="FILE")
+    p.add_argument("--format", default="A1")
     lang_arg(p)
-    p.add_argument("--sheet", default=None, choices=["kinematics", "forces", "dynamics", "cam", "gears"],
-                   help="which sheet: kinematics (the default of a lever mechanism), forces, dynamics, "
-                        "cam (the default of a [cam] scene, docs/cams.md), or gears (the default of a "
-                        "[gears]/[planetary] scene, docs/gears.md)")
-    p.add_argument("--positions", type=int, metavar="N", help="number of positions (default: the scene's)")
-    p.add_argument("--accel", nargs="+", metavar="AT", help="acceleration plans: degrees or #index")
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM", help="drafting precision (0 = exact)")
-    p.add_argument("--text-as-paths", action="store_true", help="write lettering as outlines (SVG/PDF/PNG)")
-    p.add_argument("--dpi", type=float, default=300, help="PNG resolution in dots per inch (default 300, to print)")
+    p.add_argument("--sheet", default=None, choices=["kinematics", "forces", "dynamics", "cam", "gears"])
+    p.add_argument("--positions", type=int, metavar="N")
+    p.add_argument("--accel", nargs="+", metavar="AT")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
+    p.add_argument("--text-as-paths", action="store_true")
+    p.add_argument("--dpi", type=float, default=300)
     p.set_defaults(handler=cmd_sheet)
 
 

@@ -74,22 +74,12 @@ def sheet_plans(st, format: str | None, precision: float):
 
 
 def register(sub) -> None:
-    p = sub.add_parser(
-        "view", help="the offline interactive explorer (one HTML file)",
-        description="One self-contained HTML page: the mechanism moving with a crank-angle slider, "
-                    "the velocity and acceleration plans of the current angle with the table of "
-                    "values (graphical at the lab's positions, exact, percent error), each "
-                    "construction replayed step by step, the s–v–a diagrams and the warnings. "
-                    "Open it in any browser; it makes no network request.")
+    p = sub.add_parser("view")
     scene_arg(p, optional=True)
-    p.add_argument("-o", "--output", required=True, metavar="FILE.html", help="the page to write")
+    p.add_argument("-o", "--output", required=True, metavar="FILE.html")
     lang_arg(p)
-    p.add_argument("--precision", type=float, default=0.5, metavar="MM",
-                   help="drafting precision of the plans' readings, mm (default 0.5; 0 = exact)")
+    p.add_argument("--precision", type=float, default=0.5, metavar="MM")
     from graphplan.cli.plans import _format_arg
-    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1",
-                   help="the plans at the scales the kinematics sheet of this format uses: A1 (default), A2, "
-                        "A3, A4; none = the plans' own scales")
-    p.add_argument("--step", type=float, default=1.0, metavar="DEG",
-                   help="the crank-angle grid of the exact solution, degrees (default 1)")
+    p.add_argument("--format", default="A1", type=_format_arg, metavar="A1")
+    p.add_argument("--step", type=float, default=1.0, metavar="DEG")
     p.set_defaults(handler=cmd_view)
