@@ -72,6 +72,30 @@ def pytest_configure(config):
         atexit.register(shutil.rmtree, folder, True)
 
 
+# Each test's CPU time, where ``GRAPHPLAN_TEST_CPU`` names a file: a line per phase (node id, phase,
+# the process's CPU seconds, the worker's pid) appended to it. ``--durations`` gives wall time, which
+# on a shared machine is mostly waiting (stop 54: 2 cores, load 15–17; a 7 s composition read 60 s);
+# CPU time ranks the suite's costs the same under any load. Sum by file:
+#   awk -F'\t' '{split($1,a,"::"); s[a[1]]+=$3} END {for (k in s) print s[k], k}' FILE | sort -gr
+CPU_LOG = os.environ.get("GRAPHPLAN_TEST_CPU")
+
+if CPU_LOG:
+    import time as _time
+
+    def _cpu_logged(phase: str):
+        @pytest.hookimpl(hookwrapper=True)
+        def hook(item):
+            t = _time.process_time()
+            yield
+            with open(CPU_LOG, "a", encoding="utf-8") as out:
+                out.write(f"{item.nodeid}\t{phase}\t{_time.process_time() - t:.3f}\t{os.getpid()}\n")
+        return hook
+
+    pytest_runtest_setup = _cpu_logged("setup")
+    pytest_runtest_call = _cpu_logged("call")
+    pytest_runtest_teardown = _cpu_logged("teardown")
+
+
 # Parametrized tests whose every case runs in the slow suite while the default run keeps the first
 # few — each case checks the same behaviour on another example or format, the first ones exercise it
 # (the default suite stays within 3 minutes on two cores): test → how many cases the default keeps,
