@@ -630,6 +630,11 @@ def create_app(config: Config | None = None, pool: Pool | None = None) -> Starle
             sweeper.cancel()
             for b in list(app.state.batches.values()):
                 kill(b)
+                if b.proc is not None:             # reaped while the loop runs: no pipe left to a closed loop
+                    try:
+                        await asyncio.wait_for(b.proc.wait(), 2)
+                    except (asyncio.TimeoutError, ProcessLookupError):
+                        pass
             await app.state.pool.close()
 
     routes = [

@@ -135,6 +135,10 @@ class Worker:
             await asyncio.wait_for(self.proc.wait(), 2)
         except (asyncio.TimeoutError, OSError, RuntimeError):
             self.kill()
+            try:                                   # reaped while the loop runs (no pipe left to a closed loop)
+                await asyncio.wait_for(self.proc.wait(), 5)
+            except (asyncio.TimeoutError, OSError, RuntimeError):
+                pass
 
 
 def clean_stale(root: Path | None = None) -> list[Path]:
@@ -171,6 +175,7 @@ class Pool:
         clean_stale(root)
         self.root = Path(tempfile.mkdtemp(prefix=f"{PREFIX}{os.getpid()}-", dir=root))
         self.idle: list[Worker] = []
+        self.dead: list[Worker] = []               # killed mid-job: reaped on close (their pipes closed in the loop)
         self.busy = 0
 
     async def warm(self) -> None:
@@ -238,13 +243,15 @@ class Pool:
                 self.idle.append(worker)
             else:                  # stopped mid-job (time bound, a cancelled request): a fresh one later
                 worker.kill()
+                self.dead = [w for w in self.dead if w.proc.returncode is None] + [worker]
                 shutil.rmtree(folder, ignore_errors=True)
             self._release()
 
     async def close(self) -> None:
-        for w in self.idle:
+        for w in self.idle + self.dead:
             await w.stop()
         self.idle.clear()
+        self.dead.clear()
         shutil.rmtree(self.root, ignore_errors=True)
 
 
