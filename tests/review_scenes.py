@@ -5728,3 +5728,30 @@ magnitude = 350
 stroke = "idle"
 direction = "oppose"
 '''
+
+
+CAM54 = '''# Stop 54 (the lead's check): a translating roller follower, the cam turning CLOCKWISE, the offset set
+# NEGATIVE (to the side that raises the rise's pressure angle), a trapezoidal rise of 100° and a cycloidal
+# return of 140° with a short far dwell of 20°, 10 divisions, R0 from the pressure-angle condition.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 54)"
+title_en = "Cam with a translating roller follower (check 54)"
+designation = "ТММ.КМ.54.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = -0.008
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 20, return = 140, dwell_near = 100 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 120
+direction = "cw"
+divisions = 10
+'''

@@ -1279,6 +1279,10 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
               for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None),
                              getattr(leaf.record, "theta_at", None))]
              for page in laid]
+    if f.name == "A1" and len(pages) == 1:          # the given data in the room under the profile (camgiven)
+        from graphplan.sheets.camgiven import with_given
+        pages[0] = with_given(pages[0], cam, doc, lang,
+                              lambda row, size, span: positions_table(doc, lang, row, size, span=span))
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")
