@@ -5755,3 +5755,29 @@ rpm = 120
 direction = "cw"
 divisions = 10
 '''
+
+
+OWN_CAM54 = '''# Stop 54 (cam54's own look): a ROCKING KNIFE-EDGE follower turned by a CLOCKWISE cam, a trapezoidal rise
+# of 90°, a far dwell of 30°, a parabolic return of 120°, a near dwell of 120°, 12 divisions.
+title = "Кулачковий механізм з коромисловим загостреним штовхачем (власна перевірка 54)"
+title_en = "Cam with a rocking knife-edge follower (own check 54)"
+designation = "ТММ.КМ.54.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 18
+arm = 0.09
+centre_distance = 0.11
+phases_deg = { rise = 90, dwell_far = 30, return = 120, dwell_near = 120 }
+laws = { rise = "trapezoidal", return = "parabolic" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 90
+direction = "cw"
+divisions = 12
+'''

@@ -163,3 +163,76 @@ def test_the_given_table_takes_the_room_under_the_profile():
     low = [Placed("profile", prof, (555.0, 206.0, 836.0, 589.0)),
            Placed("table", tab.moved(0.0, 90.0), (560.0, 150.0, 800.0, 295.0))]
     assert with_given(low, cam, doc, "uk", None) is low
+
+
+# -- cam54's own: a rocking knife-edge follower turned by a clockwise cam -----------------------------
+
+def _rocking_theta(phi, R0, a=0.11, l=0.09, swing=math.radians(18.0), d=1e-3):
+    """OWN_CAM54's pressure angle (deg, signed as Table 1) by brute force: the arm's angle at the
+    nearest position from the triangle O O1 C (|OC| = R0), the tip carried round the clockwise cam's
+    centre by +φ, the tangent of that path by central differences, sin ϑ = the tip's velocity
+    (square to the arm) along the tangent."""
+    rise, far, ret = 90.0, 30.0, 120.0
+
+    def psi(p):
+        p = np.asarray(p, float)
+        u = np.clip(p / rise, 0, 1)
+        v = np.clip((p - rise - far) / ret, 0, 1)
+        par = np.where(v <= 0.5, 2 * v * v, 1 - 2 * (1 - v) ** 2)
+        return swing * np.where(p <= rise, _trapezoid(u), np.where(p < rise + far, 1.0, 1 - par))
+
+    psi0 = math.acos((a * a + l * l - R0 * R0) / (2 * a * l))
+
+    def tip(p):
+        ang = math.pi - psi0 - psi(p)
+        x, y, t = a + l * np.cos(ang), l * np.sin(ang), np.radians(p)
+        return x * np.cos(t) - y * np.sin(t), x * np.sin(t) + y * np.cos(t), ang
+    (xa, ya, _), (xb, yb, _), (_, _, ang) = tip(phi - d), tip(phi + d), tip(phi)
+    t = -np.radians(phi)
+    tx, ty = (xb - xa) * np.cos(t) - (yb - ya) * np.sin(t), (xb - xa) * np.sin(t) + (yb - ya) * np.cos(t)
+    return np.degrees(np.arcsin((tx * np.sin(ang) - ty * np.cos(ang)) / np.hypot(tx, ty)))
+
+
+def test_own_cam54_rocking_knife_edge_by_brute_force():
+    """OWN_CAM54 (R0 40.997 mm, [ϑ] 40°/45°): at the R0 the program finds the brute force's largest
+    rise angle is the allowed 40° (the bound reached), 1 % under R0 it is past it; at the R0 taken
+    (41 mm) each phase's largest angle and the dwells' (18.31° near, −3.48° far) as the JSON says;
+    the drawn phase diagram's angles from O the printed ones within 1°."""
+    from graphplan.drawing.cam import phase_diagram
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.report.cam import cam_json
+    from review_scenes import OWN_CAM54
+    from test_cam_robust import drawn_angles
+    cam = build(tomllib.loads(OWN_CAM54), "<own54>")
+    sol = solve(cam)
+    g = construct(sol, 12, 0.5)
+    doc = cam_json(sol, g, "")
+    rise, ret = np.linspace(0.01, 89.99, 8001), np.linspace(120.01, 239.99, 8001)
+    R0 = doc["base_radius_min_m"]
+    assert np.abs(_rocking_theta(rise, R0)).max() == pytest.approx(40.0, abs=0.01)
+    assert np.abs(_rocking_theta(rise, R0 * 0.99)).max() > 40.2
+    taken = doc["base_radius_m"]
+    signed = doc["pressure_angle_extreme_deg"]
+    for k, grid in (("rise", rise), ("return", ret)):
+        th = _rocking_theta(grid, taken)
+        assert signed[k] == pytest.approx(th[np.argmax(np.abs(th))], abs=0.01)
+    near, far = _rocking_theta(np.array([300.0, 105.0]), taken)
+    assert near == pytest.approx(18.31, abs=0.01) and far == pytest.approx(-3.48, abs=0.01)
+    angles = drawn_angles(phase_diagram(sol, g, "uk"), True)
+    assert max(abs(angles[k] - abs(p["graphical"]["pressure_angle_deg"])) for k, p in enumerate(doc["positions"])) < 1.0
+
+
+@pytest.mark.slow
+def test_a_sets_sheet_of_table_1_alone_draws_it_large():
+    """OWN_CAM54's A3 set: the sheet that holds Table 1 alone letters it 3.5 mm (its body's median
+    letter height), within the field, no defects."""
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.camgiven import tab_size
+    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.form import form
+    from review_scenes import OWN_CAM54
+    sheet = build_cam_sheet(build(tomllib.loads(OWN_CAM54), "<own54>"), form("A3"), SheetOptions(lang="uk", sheet="cam"))
+    assert not defects(sheet)
+    alone = [p for page in sheet.pages for p in page.placed if [q.name for q in page.placed] == ["table"]]
+    assert alone and tab_size(alone[0].record) == pytest.approx(3.5)
