@@ -68,7 +68,11 @@ def given_rows(cam: Cam, doc: dict, lang: str) -> list[list[str]]:
 def given_table(cam: Cam, doc: dict, lang: str, size: float, row_h: float, number: int = 1) -> Record:
     """The given data ruled as the sheet's tables are (form.table): the quantity's words from the left,
     the symbols centred, the values from the left (words and numbers mixed)."""
-    return table(given_rows(cam, doc, lang), WIDTHS, row_h=row_h, size=size,
+    from graphplan.graphic.record import text_width
+    rows = given_rows(cam, doc, lang)
+    # a left-aligned column a reader's gap wider than its widest cell (a lowered index, «R₀», by the rule)
+    widths = [max(w, max(text_width(r[c], size) for r in rows) + 4.0) for c, w in enumerate(WIDTHS)]
+    return table(rows, widths, row_h=row_h, size=size,
                  title=WORDS[lang]["title"].format(n=number), align=["start", "middle", "start"])
 
 
