@@ -6,6 +6,7 @@ profile and Table 1 (CAM50's and CAM52's 239 × 90 mm blank under a 1:1 profile)
 sheet's table lettering; it is read first, so it is Table 1 and the table of the divisions Table 2."""
 from __future__ import annotations
 
+from graphplan.drawing.labels import collisions
 from graphplan.drawing.layout import GAP, Placed
 from graphplan.graphic.record import Record
 from graphplan.model.cam import Cam
@@ -117,7 +118,7 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
         if row2 is not None:
             table2 = rebuild(row2, size, tb[2] - tb[0])
             b2 = table2.bounds()
-            if b2[2] - b2[0] > x1 - x0 + 1e-9:
+            if b2[2] - b2[0] > x1 - x0 + 1e-9 or collisions(table2):     # a lowered index on a closer rule
                 continue
             table2 = table2.moved(tb[0] - b2[0], tb[1] - b2[1])       # its foot where it stood
         t2 = table2.bounds()
@@ -125,7 +126,7 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
         rec = given_table(cam, doc, lang, s, row)
         b = rec.bounds()
         w, h = b[2] - b[0], b[3] - b[1]
-        if w > x1 - x0 + 1e-9 or h > top - floor + 1e-9:
+        if w > x1 - x0 + 1e-9 or h > top - floor + 1e-9 or collisions(rec):
             continue
         rec = rec.moved(x0 - b[0], floor - b[1])
         box = (x0, floor - GAP / 2, x0 + w, floor + h + GAP / 2)
