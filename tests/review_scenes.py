@@ -5965,3 +5965,56 @@ planets = 4
 module = 0.002
 rpm = 1450
 '''
+
+
+CAM54 = '''# Stop 54 (the lead's check): a translating roller follower, the cam turning CLOCKWISE, the offset set
+# NEGATIVE (to the side that raises the rise's pressure angle), a trapezoidal rise of 100° and a cycloidal
+# return of 140° with a short far dwell of 20°, 10 divisions, R0 from the pressure-angle condition.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 54)"
+title_en = "Cam with a translating roller follower (check 54)"
+designation = "ТММ.КМ.54.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = -0.008
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 20, return = 140, dwell_near = 100 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 120
+direction = "cw"
+divisions = 10
+'''
+
+
+OWN_CAM54 = '''# Stop 54 (cam54's own look): a ROCKING KNIFE-EDGE follower turned by a CLOCKWISE cam, a trapezoidal rise
+# of 90°, a far dwell of 30°, a parabolic return of 120°, a near dwell of 120°, 12 divisions.
+title = "Кулачковий механізм з коромисловим загостреним штовхачем (власна перевірка 54)"
+title_en = "Cam with a rocking knife-edge follower (own check 54)"
+designation = "ТММ.КМ.54.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-54"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 18
+arm = 0.09
+centre_distance = 0.11
+phases_deg = { rise = 90, dwell_far = 30, return = 120, dwell_near = 120 }
+laws = { rise = "trapezoidal", return = "parabolic" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 90
+direction = "cw"
+divisions = 12
+'''

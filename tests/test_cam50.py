@@ -264,9 +264,11 @@ def test_the_a1_table_takes_rows_of_10_mm_where_its_column_has_room(tmp_path):
     rules = sorted({round(q.points[0][1], 3) for q in placed["table"].items
                     if q.kind == "segment" and abs(q.points[0][1] - q.points[1][1]) < 1e-9})
     steps = np.diff(rules)
-    assert np.median(steps) == pytest.approx(10.0, abs=0.05)
+    # stop 54: the given data (camgiven) stand over it in the room the 10-mm rows left, both tables in
+    # rows alike (7 … 10 mm), the column between the profile's ink and the given data's under a GAP and a half
+    assert 7.0 - 0.05 <= np.median(steps) <= 10.0 + 0.05
     assert box["table"][1] >= keep_out(f)[3] - 1e-6
-    assert box["profile"][1] - box["table"][3] < 90.0
+    assert box["given"][1] > box["table"][3] and box["profile"][1] - box["given"][3] < 20.0
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])

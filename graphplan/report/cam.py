@@ -93,7 +93,7 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
 WORDS = {
     "uk": {"title": "Синтез кулачкового механізму", "translating": "поступальний штовхач",
            "rocking": "коромисловий штовхач", "law": "закони: підйом — {r}, опускання — {t}",
-           "laws": {"parabolic": "параболічний", "cosine": "косинусний", "cycloidal": "синусний (циклоїдальний)",
+           "laws": {"parabolic": "параболічний", "cosine": "косинусоїдальний", "cycloidal": "синусоїдальний (циклоїдальний)",
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
@@ -143,7 +143,7 @@ WORDS = {
            "point_c": ("центр ролика C", "вістря C")},
     "en": {"title": "Cam synthesis", "translating": "translating follower", "rocking": "rocking follower",
            "law": "laws: rise {r}, return {t}",
-           "laws": {"parabolic": "parabolic", "cosine": "cosine", "cycloidal": "cycloidal (sine)",
+           "laws": {"parabolic": "parabolic", "cosine": "cosine (harmonic)", "cycloidal": "cycloidal (sine)",
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
@@ -260,19 +260,21 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
     ps = doc["positions"]
     precision = doc.get("precision_mm", 0.5)
     ruler = 1 if precision >= 0.1 or precision == 0 else 2
-    out: dict[str, list[str]] = {"phi": [fixed(p["phi_deg"], lang, 1) for p in ps]}
+    turns = [p["phi_deg"] for p in ps]
+    whole = all(abs(x - round(x)) < 1e-9 for x in turns)      # 10 divisions of 100°: 10, not 10,0
+    out: dict[str, list[str]] = {"phi": cells(turns, lang, 0 if whole else 1)}
     for name, q in (("s", "s"), ("v", "ds_dphi")):
         ex = [p["exact"][q + key] * k for p in ps]
         gr = [p["graphical"][q + key] * k for p in ps]
         d = min(column_decimals(ex + gr), ruler_decimals(gr, [p["graphical"][q + "_mm"] for p in ps], precision))
         out[name], out[name + "_gr"] = cells(ex, lang, d), cells(gr, lang, d)
-        out[name + "_mm"] = [fixed(p["graphical"][q + "_mm"], lang, ruler).replace("-", "−") for p in ps]
+        out[name + "_mm"] = cells([p["graphical"][q + "_mm"] for p in ps], lang, ruler)
         errs = [printed_error(g, e, p["error_pct"][q] is not None)
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
-        out["d" + name] = ["—" if v is None else fixed(v, lang, 2).replace("-", "−") + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
+        out["d" + name] = ["—" if v is None else cells([v], lang, 2)[0] + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
                            for v in errs]
-    out["theta"] = [fixed(p["exact"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
-    out["theta_gr"] = [fixed(p["graphical"]["pressure_angle_deg"], lang, 1).replace("-", "−") for p in ps]
+    out["theta"] = cells([p["exact"]["pressure_angle_deg"] for p in ps], lang, 1)
+    out["theta_gr"] = cells([p["graphical"]["pressure_angle_deg"] for p in ps], lang, 1)
     jumps(out, doc, lang, d, ruler)          # d: the ds/dφ columns' decimals (the loop's last)
     ex = [p["exact"]["radius_m"] * 1000 for p in ps]
     gr = [p["graphical"]["radius_mm"] * doc["scales"]["mu_l_m_mm"] * 1000 for p in ps]
@@ -282,9 +284,11 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
 
 
 def cells(values, lang: str, decimals: int) -> list[str]:
-    """A column of Table 1 to one count of decimals, its zeros too — a dwell's s, ds/dφ at 0,00 beside
-    the rise's 12,22 (stop 53: the bare "0" read as a column of another precision); a true minus."""
-    return [fixed(v, lang, decimals).replace("-", "−") for v in values]
+    """A column of Table 1 to one count of decimals, a true minus; a value that prints as zero the bare
+    number 0, as the seeds' tables write it (seed 000's Tables 2.2–2.3: 0 beside 1,4 and 23,5; seed
+    004's Table 3: 0 beside −18,75) and the kinematics and dynamics tables do (``util.words.
+    decimals_column``) — stop 54 took the seeds' rule over stop 53's 0,00."""
+    return ["0" if round(float(v), decimals) == 0 else fixed(v, lang, decimals).replace("-", "−") for v in values]
 
 
 def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:

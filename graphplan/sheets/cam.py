@@ -1243,6 +1243,23 @@ def _sheet_layout(sol, g, cam: Cam, f: Form, lang: str) -> tuple:
     return g, leaves, tab, nts, doc, laid, notes_at
 
 
+def _table_alone(page: list[Placed], doc: dict, lang: str, f: Form, k: int) -> list[Placed]:
+    """A set's sheet that holds Table 1 alone: the table as large as the sheet's field takes it (the
+    first of TABLE_SIZES and CLOSER_ROWS that fits, centred) — at 2.5-mm letters in 6-mm rows it stood
+    198 × 168 mm on an A3 sheet of 385 × 255 (stop 54: the rocking knife-edge cam's set)."""
+    if [p.name for p in page] != ["table"]:
+        return page
+    x0, y0, x1, y1 = field_of(f)
+    floor = (later_keep(f) if k else keep_out(f))[3] + GAP / 2
+    for size, row in TABLE_SIZES + CLOSER_ROWS:
+        rec = positions_table(doc, lang, row, size)
+        b = rec.bounds()
+        if b[2] - b[0] <= x1 - x0 + 1e-9 and b[3] - b[1] <= y1 - floor + 1e-9:
+            rec = rec.moved((x0 + x1) / 2 - (b[0] + b[2]) / 2, (floor + y1) / 2 - (b[1] + b[3]) / 2)
+            return [Placed("table", rec, rec.bounds())]
+    return page
+
+
 def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
     """The cam sheet: the three constructions captioned with their scales, the table and the notes,
     flowed over the sheet (and further sheets of the set when the format is small) in reading order,
@@ -1279,6 +1296,12 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
               for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None),
                              getattr(leaf.record, "theta_at", None))]
              for page in laid]
+    if len(pages) > 1:
+        pages = [_table_alone(page, doc, lang, f, k) for k, page in enumerate(pages)]
+    if f.name == "A1" and len(pages) == 1:          # the given data in the room under the profile (camgiven)
+        from graphplan.sheets.camgiven import with_given
+        pages[0] = with_given(pages[0], cam, doc, lang,
+                              lambda row, size, span: positions_table(doc, lang, row, size, span=span))
     fields = _fields(cam, lang)
     fields["scale"] = drawing_scale(g.mu_l, lang)
     return compose(f, pages, fields, lang, f"{cam.title_in(lang)} — {WORDS[lang]['subtitle']}")

@@ -113,8 +113,8 @@ const UNITS = { uk: { m: "м", rpm: "об/хв", kg: "кг", N: "Н", deg: "°",
                 en: { m: "m", rpm: "rpm", kg: "kg", N: "N", deg: "°", "kg/m": "kg/m", "rad/s": "rad/s" } };
 
 const CHOICES = {
-  uk: { ccw: "проти год. стрілки", cw: "за год. стрілкою", cosine: "косинусний",
-        cycloidal: "синусний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецієвидний",
+  uk: { ccw: "проти год. стрілки", cw: "за год. стрілкою", cosine: "косинусоїдальний",
+        cycloidal: "синусоїдальний (циклоїдальний)", parabolic: "параболічний", trapezoidal: "трапецеїдальний",
         linear: "лінійний", working: "робочий", idle: "холостий", both: "обидва" },
   en: { ccw: "counter-clockwise", cw: "clockwise", cosine: "cosine", cycloidal: "cycloidal (sine)",
         parabolic: "parabolic", trapezoidal: "trapezoidal", linear: "linear", working: "working", idle: "idle",
