@@ -105,6 +105,18 @@ def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
     return lines
 
 
+def as_drawn(d: Diagrams, errs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """δ, % at the positions (``Diagrams.position_errors``' keys, signed along the guide) as the
+    sheet's readings table prints them, beside s, v, a times the diagrams' sense ``d.sign``: δ of its
+    own exact value, 100·(g − e)/e, is the same in either frame; δ of |max| (|exact| < ``MEANINGFUL``
+    of it), 100·(g − e)/|max|, changes its sign with the pair (review 54 #1: the note and the table
+    must agree with the numbers printed beside them)."""
+    from graphplan.graphic.diagrams import MEANINGFUL
+    k = d.at_positions
+    return {key: np.where(np.abs(d.truth[key][k]) >= MEANINGFUL * max(float(d.maxima[key[0]]), 1e-300), e, d.sign * e)
+            for key, e in errs.items()}
+
+
 def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
     """The sheet's short form of ``limit_note`` (a teacher reads a statement, not the search): the
     readings past the lab's 5 % by symbol — its worst positions with their δ — and, for each symbol,
@@ -115,7 +127,9 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
     ``diagrams`` keeps the long form with every number. None where all are within."""
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
-    errs, own, on_s = d.position_errors(), d.position_errors(d.exact), ruler_on_s(d)
+    on_s = ruler_on_s(d)
+    errs, own = as_drawn(d, d.position_errors()), as_drawn(d, d.position_errors(d.exact))
+    on_s = None if on_s is None else as_drawn(d, on_s)
     idx = d.at_positions
     uk = lang == "uk"
     said: list[tuple[str, str, float | None]] = []     # (the readings, the cause, its δ) a symbol

@@ -7,6 +7,7 @@ composition that places them is sheets/kinematics.py (sheets/kinlayout.py the ar
 from __future__ import annotations
 
 from graphplan.exact.positions import Study
+from graphplan.graphic.diagrams import judged_pct
 from graphplan.graphic.record import Record, text_width
 from graphplan.report.plans import acceleration_cells, places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
@@ -581,6 +582,19 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
     return rows
 
 
+def printed_frame(row: dict, k: int, maxima: dict) -> dict:
+    """A row of ``diagram_readings`` as Table 4 prints it: s, v, a (the diagram's, the plans', the
+    exact) times the diagrams' sense ``k`` (``drawn_sense``), and δ judged again of the printed
+    pair (``judged_pct``). δ of its own exact value, 100·(g − e)/e, is the same in either frame;
+    δ of |max|, 100·(g − e)/|max|, changes its sign with the pair (review 54 #1: a_E −1,30 vs
+    −0,75 was printed +3,68 — the plans' frame's δ beside the diagrams' values)."""
+    out = {key: (k * value + 0.0 if key[0] in "sva" and value is not None else value)
+           for key, value in row.items()}
+    for q, big in (("s", "s"), ("v", "v"), ("a", "a")):
+        out[f"delta_{q}"] = float(judged_pct(out[q], out[f"{q}_exact"], maxima[big]))
+    return out
+
+
 READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
 
 
@@ -613,8 +627,7 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         return cell
     import numpy as np
     k_ = drawn_sense(diag)
-    read = [{key: (k_ * value + 0.0 if key[0] in "sva" and value is not None
-                   else value) for key, value in row.items()} for row in diagram_readings(diag, doc)]
+    read = [printed_frame(row, k_, diag.maxima) for row in diagram_readings(diag, doc)]
     # one count of decimals a row: the diagram's values by its longest ordinate and its scale, the
     # plans' by their vectors (``decimals``)
     out_kind, name = diag.output.kind, diag.output.name

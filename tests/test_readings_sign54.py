@@ -1,0 +1,97 @@
+"""Review 54 #1 and #10: the kinematics sheet's readings table (s, v, a read off the diagrams beside the
+plans and the exact values) prints s, v, a in the diagrams' sense — mirrored where the diagrams are
+drawn against the guide — and each δ beside them must be the δ of the pair it stands under:
+δ = 100·(g − e)/e, or 100·(g − e)/|max| where |e| < 10 % of |max| (the note under the table says so).
+The δ of |max| kept the guide's sign: a_E −1,30 vs −0,75 was printed +3,68 (should be ≈ −3,7).
+
+Truth here is the printed table itself (a reader's check): the cells are parsed from the table's
+record, δ recomputed from the printed pair with its rounding, and the cycle's |max| of the exact
+motion; the sheet's note naming the readings past 5 % must quote the same δ as the table."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import review_scenes
+from conftest import scene_study
+from test_kin_marks import _table_rows
+from graphplan.graphic.diagrams import MEANINGFUL, chord_diagrams
+from graphplan.graphic.plans import build_plans
+from graphplan.report.diagrams import as_drawn, short_limit_note
+from graphplan.report.plans import plans_json
+from graphplan.sheets.kintables import readings_table
+
+# (scene, H1 = H2): the short poles of the last one put a δ of |max| past 5 % (a_D at 3) in the note
+SCENES = [("CYLINDER_REVIEW54", 25), ("COUPLER_SLIDER_REVIEW54", 25), ("LINK53", 25), ("INCLINED_ROCKER53", 25),
+          ("COUPLER_SLIDER_REVIEW54", 10)]
+
+
+def _number(cell: str) -> float:
+    return float(cell.rstrip("*").replace("−", "-").replace(",", "."))
+
+
+def _half(cell: str) -> float:
+    """Half a unit of the last decimal a cell is printed to (its rounding)."""
+    c = cell.rstrip("*").replace(",", ".")
+    return 0.5 * 10.0 ** -(len(c.split(".")[1]) if "." in c else 0)
+
+
+@pytest.fixture(scope="module", params=SCENES, ids=lambda p: f"{p[0]}-H{p[1]}")
+def table(request):
+    """A scene's diagrams (12 chords, as the sheet's first drawing) and its readings table's rows."""
+    name, h = request.param
+    st = scene_study(getattr(review_scenes, name))
+    plans = build_plans(st)
+    d = chord_diagrams(st, divisions=12, L=240, H1=h, H2=h)
+    return f"{name}-H{h}", d, _table_rows(readings_table(d, plans_json(plans), "en", 4, plans.precision))
+
+
+def _deltas(grid: list[list[str]], sym: str) -> list[tuple[int, str, str, str]]:
+    """(position, reading, exact, δ) of one quantity: its rows are reading, plan, exact, δ."""
+    at = next(i for i, r in enumerate(grid) if r[0].startswith(f"δ_{{{sym}}}"))
+    return list(zip((int(c) for c in grid[0][1:]), grid[at - 3][1:], grid[at - 1][1:], grid[at][1:]))
+
+
+def test_every_printed_delta_is_of_the_printed_pair(table):
+    """sign(δ) = sign((g − e)/ref) with the printed signs, and |δ − 100·(g − e)/ref| within the two
+    cells' rounding (ref = e, or |max| of the exact cycle where |e| < 10 % of it; near that border
+    either); the table's signs are the diagrams' (mirrored for three of the scenes)."""
+    name, d, grid = table
+    checked = 0
+    for sym, key in ((d.symbols[1], "v"), (d.symbols[2], "a")):
+        big = float(d.maxima[key])
+        for n, gc, ec, dc in _deltas(grid, sym):
+            if dc == "—":
+                continue
+            g, e, delta = _number(gc), _number(ec), _number(dc)
+            slack = _half(gc) + _half(ec)
+            refs = [r for r, ok in ((e, abs(e) + _half(ec) >= MEANINGFUL * big),
+                                    (big, abs(e) - _half(ec) < MEANINGFUL * big)) if ok and r != 0]
+            fits = [r for r in refs if abs(delta - 100 * (g - e) / r) <= 100 * slack / abs(r) + 0.006]
+            assert fits, (name, sym, n, gc, ec, dc, big)
+            if g != e:
+                assert any((delta > 0) == ((g - e) / r > 0) or delta == 0 for r in fits), (name, sym, n, gc, ec, dc)
+            checked += 1
+    assert checked >= 12, (name, checked)
+
+
+def test_the_note_quotes_the_tables_delta(table):
+    """The sheet's note on readings past the lab's 5 % ("… at positions 10 (−15.52 %)") gives each the
+    δ its table prints at that position (the δ it draws from, ``as_drawn``, is the table's at every
+    position: a δ of |max| past 5 % is named in the table's sign)."""
+    name, d, grid = table
+    said = as_drawn(d, d.position_errors())        # what the note quotes from, at every position
+    for sym, key in ((d.symbols[1], "v_at"), (d.symbols[2], "a_at")):
+        for (n, _, _, dc), e in zip(_deltas(grid, sym), said[key]):
+            assert dc == "—" or abs(_number(dc) - e) < 0.006, (name, sym, n, dc, e)
+    note = short_limit_note(d, "en", 4)
+    if note is None:
+        pytest.skip(f"{name}: every reading within 5 %")
+    for sym in (d.symbols[1], d.symbols[2]):
+        printed = {n: dc.rstrip("*") for n, _, _, dc in _deltas(grid, sym)}
+        said = re.search(rf"{sym}_\{{{d.sub}\}} at positions? ([^;—]*)", note)
+        if said is None:
+            continue
+        for n, value in re.findall(r"(\d+) \(([+−][\d.]+) %\)", said.group(1)):
+            assert printed[int(n)] == value.lstrip("+"), (name, sym, n, value, printed[int(n)], note)
