@@ -95,3 +95,21 @@ def test_the_note_quotes_the_tables_delta(table):
             continue
         for n, value in re.findall(r"(\d+) \(([+−][\d.]+) %\)", said.group(1)):
             assert printed[int(n)] == value.lstrip("+"), (name, sym, n, value, printed[int(n)], note)
+
+
+@pytest.mark.parametrize("lang", ["en", "uk"])
+def test_the_terminal_says_when_its_mm_and_values_differ_in_sign(table, lang):
+    """`diagrams` prints the ordinates as drawn (mm) beside the values signed along the guide; where the
+    diagrams are mirrored a row's s = −mm·μ_s (read off the printed columns) and the terminal says so
+    once, and that the sheet's δ of |max| has the other sign; unmirrored, s = +mm·μ_s and no such line."""
+    from graphplan.report.diagrams import diagrams_table
+    name, d, _ = table
+    text = diagrams_table(d, lang)
+    said = [line for line in text.splitlines() if ("mirrored" if lang == "en" else "дзеркально") in line]
+    assert len(said) == (1 if d.sign < 0 else 0), (name, said)
+    rows = text.split("\n\n")[2].splitlines()[2:]        # the block at the division ordinates
+    for row in rows[:12]:
+        cells = row.split()
+        mm, s = _number(cells[3]), _number(cells[4])
+        if abs(mm) > 1.0:
+            assert s / (mm * d.mu_s) == pytest.approx(-1.0 if d.sign < 0 else 1.0, abs=0.02), (name, row)

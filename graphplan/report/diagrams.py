@@ -382,6 +382,29 @@ def _pct(p, lang: str = "en") -> str:
     return pct(p, lang)
 
 
+def mirrored_note(d: Diagrams, lang: str) -> str | None:
+    """Where the diagrams are drawn mirrored (``d.sign`` < 0: + against the guide, or clockwise for an
+    angle), what the terminal's columns mean: the mm are the ordinates as drawn, the values signed
+    along the guide (counter-clockwise), value = −mm·μ; the sheet's table writes s, v, a as drawn, so
+    a δ of |max| there has the opposite sign to the one here (δ = 100·(g − e)/|max|, review 54 #1).
+    None for diagrams drawn in the values' sense."""
+    if d.sign >= 0:
+        return None
+    uk = lang == "uk"
+    if d.output.kind == "slide":
+        how = "проти напрямної" if uk else "against the guide"
+        own = "уздовж напрямної" if uk else "along the guide"
+    else:
+        how = "за годинниковою стрілкою" if uk else "clockwise"
+        own = "проти годинникової стрілки" if uk else "counter-clockwise"
+    if uk:
+        return (f"Діаграми накреслено дзеркально (+ {how}): мм — ординати як на кресленні, значення — «+ {own}» "
+                "(значення = −мм·μ); таблиця аркуша пише s, v, a як на діаграмах, тож δ від |max| там має протилежний знак")
+    return (f"The diagrams are drawn mirrored (+ {how}): mm are the ordinates as drawn, the values + {own} "
+            "(value = −mm·μ); the sheet's table writes s, v, a as the diagrams do, so a δ of |max| there has the "
+            "opposite sign")
+
+
 def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
     s_, v_, a_ = d.symbols
@@ -431,6 +454,8 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
             w("error pct"), f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")]
     block(w("at ordinates"), head, [row_at(k) for k in range(d.divisions)])
     lines.append(w("judged note"))
+    said = mirrored_note(d, lang)
+    lines += [said] if said else []
     chosen = [k for k in range(d.divisions) if d.position[k] in d.chosen]
     if chosen:
         block(w("chosen"), head, [row_at(k) for k in chosen])
