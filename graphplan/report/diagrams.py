@@ -91,16 +91,18 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     }
 
 
-def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
+def sheet_notes(d: Diagrams, lang: str, table: int | None = None,
+                printed: dict[str, np.ndarray] | None = None) -> list[str]:
     """The lines a sheet's notes give the diagrams: which method drew them, and what they get
-    qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
+    qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle); the
+    readings past 5 % by the δ the table prints (``printed``, see ``short_limit_note``)."""
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {subscripted(d.point)}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
     said = redrawn_note(d, lang, short=True)
     lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
-    said = short_limit_note(d, lang, table)
+    said = short_limit_note(d, lang, table, printed)
     lines += [said] if said else []
     return lines
 
@@ -117,7 +119,8 @@ def as_drawn(d: Diagrams, errs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
             for key, e in errs.items()}
 
 
-def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
+def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
+                     printed: dict[str, np.ndarray] | None = None) -> str | None:
     """The sheet's short form of ``limit_note`` (a teacher reads a statement, not the search): the
     readings past the lab's 5 % by symbol — its worst positions with their δ — and, for each symbol,
     its one cause, measured: the chords' (or tangents') own error where the same construction with an
@@ -125,10 +128,14 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     s amplified by the differentiations where that alone misses 5 % (the δ of the ruler on s alone,
     ``ruler_on_s``), else the ruler's readings all told (the exact ruler's δ given); then
     whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
-    ``diagrams`` keeps the long form with every number. None where all are within."""
+    ``diagrams`` keeps the long form with every number. None where all are within. ``printed``: δ
+    of v and a (keys "v_at", "a_at", NaN where none is printed) as the sheet's table prints them,
+    of its printed pair (sheets.kintables.printed_readings); else δ in the table's frame
+    (``as_drawn``)."""
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
     on_s = ruler_on_s(d)
     errs, own = as_drawn(d, d.position_errors()), as_drawn(d, d.position_errors(d.exact))
+    errs |= {key: np.nan_to_num(np.asarray(e, dtype=float), nan=0.0) for key, e in (printed or {}).items()}
     on_s = None if on_s is None else as_drawn(d, on_s)
     idx = d.at_positions
     uk = lang == "uk"

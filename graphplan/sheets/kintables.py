@@ -598,34 +598,15 @@ def printed_frame(row: dict, k: int, maxima: dict) -> dict:
 READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
 
 
-def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
-    """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
-    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
-    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the exact;
-    a δ past the lab's 5 % marked (the notes say why). The
-    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
-    ``READINGS_COLUMNS`` a block, the blocks one under another."""
-    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
-    s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
-    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
-    us, uv, ua = (unit(u, lang) for u in units)
-    plans, exact = w('readings_plan'), w('readings_exact')
-    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
-             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
-    marked = False
-
-    def pct(e: float, exact: str) -> str:
-        """δ, % of a reading — "—" where the exact value is printed as zero (the sheet's rule, as
-        Tables 1–2: δ of a zero is not computed; an extreme position's v = 0, review 53 #9)."""
-        nonlocal marked
-        if exact == "—" or float(exact.replace(",", ".").replace("−", "-")) == 0.0:
-            return "—"
-        cell = percent(e, lang=lang)
-        if abs(e) > LAB_LIMIT:
-            marked = True
-            cell += MARK
-        return cell
+def printed_readings(diag, doc: dict, lang: str, precision: float = 0.5) -> list[dict]:
+    """Table n's columns as printed: a position's cells (keys of ``diagram_readings``, in the
+    diagrams' sense, ``printed_frame``) written to their row's decimals, and δ_v, δ_a (floats; None
+    where the exact value prints as zero: "—") of the PRINTED pair, as Tables 1–2 give theirs (a
+    reader's check, review 54 #1): 100·(g − e)/e, or 100·(g − e)/|max| where |exact| < 10 % of
+    the cycle's |max| (``judged_pct``'s choice, of the unrounded exact value)."""
     import numpy as np
+
+    from graphplan.graphic.diagrams import MEANINGFUL
     k_ = drawn_sense(diag)
     read = [printed_frame(row, k_, diag.maxima) for row in diagram_readings(diag, doc)]
     # one count of decimals a row: the diagram's values by its longest ordinate and its scale, the
@@ -652,9 +633,57 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         if round(r[key], d[key]) == 0:
             return fixed(0.0, lang, d[key])
         return written(r[key], d[key], lang)
-    cols = [[str(r["position"]), cell(r, "s"), cell(r, "s_exact"), cell(r, "v"), cell(r, "v_plan"),
-             cell(r, "v_exact"), pct(r["delta_v"], cell(r, "v_exact")), cell(r, "a"), cell(r, "a_plan"),
-             cell(r, "a_exact"), pct(r["delta_a"], cell(r, "a_exact"))] for r in read]
+
+    def value(c: str) -> float:
+        return float(c.replace(",", ".").replace("−", "-"))
+
+    out = []
+    for r in read:
+        row = {"position": r["position"]} | {key: cell(r, key) for key in
+                                             ("s", "s_exact", "v", "v_plan", "v_exact", "a", "a_plan", "a_exact")}
+        for q in ("v", "a"):
+            g, e = row[q], row[f"{q}_exact"]
+            if e == "—" or value(e) == 0.0:       # δ of a zero is not computed (review 53 #9)
+                row[f"delta_{q}"] = None
+                continue
+            big = float(diag.maxima[q])
+            ref = value(e) if abs(r[f"{q}_exact"]) >= MEANINGFUL * big else big
+            row[f"delta_{q}"] = 100.0 * (value(g) - value(e)) / ref + 0.0
+        out.append(row)
+    return out
+
+
+def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
+    """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
+    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
+    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the
+    printed pair (``printed_readings``); a δ past the lab's 5 % marked (the notes say why). The
+    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
+    ``READINGS_COLUMNS`` a block, the blocks one under another."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
+    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
+    us, uv, ua = (unit(u, lang) for u in units)
+    plans, exact = w('readings_plan'), w('readings_exact')
+    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
+    marked = False
+
+    def pct(e: float | None) -> str:
+        """δ, % of a reading — "—" where the exact value is printed as zero (the sheet's rule, as
+        Tables 1–2: δ of a zero is not computed; an extreme position's v = 0, review 53 #9)."""
+        nonlocal marked
+        if e is None:
+            return "—"
+        cell = percent(e, lang=lang)
+        if abs(round(e, 2)) > LAB_LIMIT:       # the printed δ past 5 %
+            marked = True
+            cell += MARK
+        return cell
+    k_ = drawn_sense(diag)
+    out_kind = diag.output.kind
+    cols = [[str(r["position"]), r["s"], r["s_exact"], r["v"], r["v_plan"], r["v_exact"], pct(r["delta_v"]),
+             r["a"], r["a_plan"], r["a_exact"], pct(r["delta_a"])] for r in printed_readings(diag, doc, lang, precision)]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):
@@ -829,4 +858,9 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
                        rad=fixed(math.radians(psi), lang, 4), a=primed(out, 1), b=primed(out, 2)))
     # the study's warnings (a block past its slotted link's end, a group near locking), as `analyze` says them
     extra += [f"{word('warnings', lang)}: {subscripted(text)}" for text in st.says(lang)]   # O₃C, O₃E
-    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag)), lang))
+    import numpy as np
+    rows = printed_readings(diag, doc, lang, p)      # the note names the δ Table n prints
+    printed = {f"{q}_at": np.array([np.nan if r[f"delta_{q}"] is None else r[f"delta_{q}"] for r in rows])
+               for q in ("v", "a")}
+    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag), printed),
+                          lang))
