@@ -43,8 +43,9 @@ def table(request):
     st = scene_study(getattr(review_scenes, name))
     plans = build_plans(st)
     d = chord_diagrams(st, divisions=12, L=240, H1=h, H2=h)
-    return (f"{name}-H{h}", d, _table_rows(readings_table(d, plans_json(plans), "en", 4, plans.precision)),
-            (st, plans))
+    rec = readings_table(d, plans_json(plans), "en", 4, plans.precision)
+    texts = " ".join(q.text for q in rec.items if q.kind == "text")
+    return f"{name}-H{h}", d, _table_rows(rec), (st, plans, texts)
 
 
 def _deltas(grid: list[list[str]], sym: str) -> list[tuple[int, str, str, str]]:
@@ -57,7 +58,7 @@ def test_every_printed_delta_is_of_the_printed_pair(table):
     """δ = 100·(g − e)/ref of the printed cells, to δ's two decimals (ref = e, or |max| of the exact
     cycle where |e| < 10 % of it; near that border either), so sign(δ) = sign((g − e)/ref) with the
     printed signs; the table's signs are the diagrams' (mirrored for four of the cases)."""
-    name, d, grid, _ = table
+    name, d, grid, (_, _, texts) = table
     checked = 0
     for sym, key in ((d.symbols[1], "v"), (d.symbols[2], "a")):
         big = float(d.maxima[key])
@@ -73,6 +74,12 @@ def test_every_printed_delta_is_of_the_printed_pair(table):
             if g != e:
                 assert any((delta > 0) == ((g - e) / r > 0) or delta == 0 for r in fits), (name, sym, n, gc, ec, dc)
             checked += 1
+            if abs(e) - _half(ec) >= MEANINGFUL * big or abs(e) + _half(ec) < MEANINGFUL * big:
+                of_max = abs(e) < MEANINGFUL * big         # clear of the border: the footnote's |max|
+                top = re.search(rf"{sym}_\{{{d.sub}\}}: (\d+\.\d+) ", texts)
+                assert (top is not None) >= of_max, (name, sym, n, texts)
+                if of_max:
+                    assert float(top.group(1)) == pytest.approx(big, abs=_half(top.group(1))), (name, top.group(1), big)
     assert checked >= 12, (name, checked)
 
 
@@ -80,7 +87,7 @@ def test_the_note_quotes_the_tables_delta(table):
     """The sheet's note on readings past the lab's 5 % ("… at positions 10 (−15.52 %)") gives each the
     δ its table prints at that position, and names only readings the table marks past 5 %."""
     from graphplan.sheets.kintables import notes_lines
-    name, d, grid, (st, plans) = table
+    name, d, grid, (st, plans, _) = table
     said_all = [line for line in notes_lines(st, plans, d, "en", plans.precision) if "exceed the 5 %" in line]
     if not said_all:
         assert not any(c.endswith("*") for r in grid for c in r[1:] if r[0].startswith("δ")), (name, grid)

@@ -647,8 +647,11 @@ def printed_readings(diag, doc: dict, lang: str, precision: float = 0.5) -> list
                 row[f"delta_{q}"] = None
                 continue
             big = float(diag.maxima[q])
-            ref = value(e) if abs(r[f"{q}_exact"]) >= MEANINGFUL * big else big
+            own = abs(r[f"{q}_exact"]) >= MEANINGFUL * big
+            ref = value(e) if own else big
             row[f"delta_{q}"] = 100.0 * (value(g) - value(e)) / ref + 0.0
+            if not own:       # the |max| it is of, to the row's decimals (the footnote gives it)
+                row[f"max_{q}"] = fixed(big, lang, d[q])
         out.append(row)
     return out
 
@@ -682,8 +685,12 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         return cell
     k_ = drawn_sense(diag)
     out_kind = diag.output.kind
+    got = printed_readings(diag, doc, lang, precision)
     cols = [[str(r["position"]), r["s"], r["s_exact"], r["v"], r["v_plan"], r["v_exact"], pct(r["delta_v"]),
-             r["a"], r["a_plan"], r["a_exact"], pct(r["delta_a"])] for r in printed_readings(diag, doc, lang, precision)]
+             r["a"], r["a_plan"], r["a_exact"], pct(r["delta_a"])] for r in got]
+    # the |max| a δ is of where one is (review 54 #1: δ of |max| checkable from the sheet)
+    tops = [f"{sym}_{{{diag.sub}}}: {top} {u}" for q, sym, u in (("v", diag.symbols[1], uv), ("a", diag.symbols[2], ua))
+            if (top := next((r[f"max_{q}"] for r in got if f"max_{q}" in r), None))]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):
@@ -697,7 +704,8 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
             b, top = rec.bounds(), part.bounds()[3]
             rec.extend(part.moved(0.0, b[1] - 3.0 - top))
     assert rec is not None
-    said = [w('readings_delta') + (w('readings_mark') if marked else "")]
+    said = [w('readings_delta') + (w('readings_max', tops=", ".join(tops)) if tops else "")
+            + (w('readings_mark') if marked else "")]
     if k_ < 0:     # the diagrams' sense against the plans' (review 53 #10: ω5 −1,38 in Table 1, +1,38 here)
         m = sum(1 for pos in doc["positions"] if pos.get("acceleration"))
         t = "1" if m == 0 else "1,\u00a02" if m == 1 else f"1–{1 + m}"
