@@ -6018,3 +6018,185 @@ rpm = 90
 direction = "cw"
 divisions = 12
 '''
+
+
+CYLINDER_REVIEW54 = '''# Stop 54's blind review, scene 1 (review54's s1_cylinder.toml): a slider E driven through an oscillating
+# cylinder; the sheet draws s, v, a mirrored (+ away from position 0, against the guide).
+# Кривошипний механізм з коливним циліндром (гідроциліндр): кривошип OA, шток AD ковзає в циліндрі,
+# що хитається навколо C; кінець штока D через шатун DE рухає повзун E вертикальною напрямною.
+title = "Кривошипно-кулісний механізм з коливним циліндром"
+title_en = "Crank mechanism with an oscillating cylinder"
+designation = "ТММ.КП.54.000"
+
+[sheet]
+student = "Петренко І. В."
+teacher = "Коваль О. М."
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+C = [0.22, 0.05]
+
+[frame.guides]
+v = { through = [0.40, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.07
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+mass = 3
+inertia = 0.004
+
+[[link]]
+name = "AD"          # шток, ковзає в циліндрі 3
+number = 2
+joints = ["A", "D"]
+length = 0.38
+points = { S2 = 0.5 }
+mass = 6
+inertia = 0.08
+
+[[link]]
+name = "3"           # циліндр, хитається навколо C
+number = 3
+joints = ["C"]
+slides_on = "AD"
+mass = 10
+inertia = 0.05
+
+[[link]]
+name = "DE"
+number = 4
+joints = ["D", "E"]
+length = 0.25
+points = { S4 = 0.5 }
+mass = 4
+inertia = 0.025
+
+[[link]]
+name = "E"
+number = 5
+joints = ["E"]
+slides_on = "v"
+mass = 15
+
+[branch]
+E = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [2]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "E"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500
+'''
+
+
+COUPLER_SLIDER_REVIEW54 = '''# Stop 54's blind review, scene 2 (review54's s2_coupler_slider.toml); mirrored diagrams too.
+# A crank-rocker four-bar whose coupler point C drives a slider D on an offset horizontal guide
+# through the rod CD (a six-bar: I(0-1) -> II(2-3) -> II(4-5)); press feed drive.
+title = "Шестиланковий механізм подачі з шатунною точкою"
+title_en = "Six-bar feed mechanism driven by a coupler point"
+designation = "TMM.CP.54.000"
+lang = "en"
+
+[sheet]
+student = "O. Hnatiuk"
+teacher = "V. Melnyk"
+group = "ME-32"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, -0.04]
+
+[frame.guides]
+feed = { through = [0, 0.22], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 150
+points = { S1 = 0.0 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+shape = { C = [0.13, 0.09] }
+points = { S2 = [0.11, 0.03] }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+points = { S3 = 0.5 }
+mass = 3
+inertia = 0.008
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.27
+points = { S4 = 0.5 }
+mass = 3.5
+inertia = 0.021
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "feed"
+mass = 12
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 650
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.95
+synchronous_rpm = 1000
+'''

@@ -19,7 +19,7 @@ from graphplan.report.plans import plans_json
 from graphplan.sheets.compose import SheetOptions
 from graphplan.sheets.form import form
 from graphplan.sheets.kinematics import plan
-from graphplan.sheets.kintables import diagram_readings, notes_lines, readings_table
+from graphplan.sheets.kintables import diagram_readings, notes_lines, printed_frame, printed_readings, readings_table
 
 
 def sheet_parts(st, lang="en"):
@@ -150,10 +150,13 @@ def test_the_notes_percents_are_the_tables():
         p, nat, dr = plan(st, form("A1"), SheetOptions(sheet="kinematics", lang=lang))
         diag = dr.diagrams(p.diagrams, lang)
         doc = plans_json(dr.plans(p.mu))
-        cells = set()
-        for r in diagram_readings(diag, doc):
-            for key in ("delta_s", "delta_v", "delta_a"):
-                cells.add(f"{r[key]:+.2f}".replace("-", "−"))
+        cells = set()       # δ as the table prints it: of the printed pair, in the diagrams' sense (review 54 #1)
+        for r in printed_readings(diag, doc, lang, 0.5):
+            for key in ("delta_v", "delta_a"):
+                if r[key] is not None:
+                    cells.add(f"{r[key]:+.2f}".replace("-", "−"))
+        for r in diagram_readings(diag, doc):   # s: no δ column; the note's s in the table's sense
+            cells.add(f"{printed_frame(r, diag.sign, diag.maxima)['delta_s']:+.2f}".replace("-", "−"))
         notes = " ".join(notes_lines(st, dr.plans(p.mu), diag, lang, 0.5))
         said = re.findall(r"\(([−+]\d+[.,]\d+) %\)", notes)
         assert said, notes

@@ -91,21 +91,36 @@ def diagrams_json(d: Diagrams) -> dict[str, Any]:
     }
 
 
-def sheet_notes(d: Diagrams, lang: str, table: int | None = None) -> list[str]:
+def sheet_notes(d: Diagrams, lang: str, table: int | None = None,
+                printed: dict[str, np.ndarray] | None = None) -> list[str]:
     """The lines a sheet's notes give the diagrams: which method drew them, and what they get
-    qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle)."""
+    qualitatively wrong (spurious or missed extrema and zero crossings, by crank angle); the
+    readings past 5 % by the δ the table prints (``printed``, see ``short_limit_note``)."""
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {subscripted(d.point)}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
     said = redrawn_note(d, lang, short=True)
     lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
-    said = short_limit_note(d, lang, table)
+    said = short_limit_note(d, lang, table, printed)
     lines += [said] if said else []
     return lines
 
 
-def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | None:
+def as_drawn(d: Diagrams, errs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """δ, % at the positions (``Diagrams.position_errors``' keys, signed along the guide) as the
+    sheet's readings table prints them, beside s, v, a times the diagrams' sense ``d.sign``: δ of its
+    own exact value, 100·(g − e)/e, is the same in either frame; δ of |max| (|exact| < ``MEANINGFUL``
+    of it), 100·(g − e)/|max|, changes its sign with the pair (review 54 #1: the note and the table
+    must agree with the numbers printed beside them)."""
+    from graphplan.graphic.diagrams import MEANINGFUL
+    k = d.at_positions
+    return {key: np.where(np.abs(d.truth[key][k]) >= MEANINGFUL * max(float(d.maxima[key[0]]), 1e-300), e, d.sign * e)
+            for key, e in errs.items()}
+
+
+def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
+                     printed: dict[str, np.ndarray] | None = None) -> str | None:
     """The sheet's short form of ``limit_note`` (a teacher reads a statement, not the search): the
     readings past the lab's 5 % by symbol — its worst positions with their δ — and, for each symbol,
     its one cause, measured: the chords' (or tangents') own error where the same construction with an
@@ -113,9 +128,15 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
     s amplified by the differentiations where that alone misses 5 % (the δ of the ruler on s alone,
     ``ruler_on_s``), else the ruler's readings all told (the exact ruler's δ given); then
     whether another construction the lab allows reaches 5 % (named) or none does. The terminal's
-    ``diagrams`` keeps the long form with every number. None where all are within."""
+    ``diagrams`` keeps the long form with every number. None where all are within. ``printed``: δ
+    of v and a (keys "v_at", "a_at", NaN where none is printed) as the sheet's table prints them,
+    of its printed pair (sheets.kintables.printed_readings); else δ in the table's frame
+    (``as_drawn``)."""
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
-    errs, own, on_s = d.position_errors(), d.position_errors(d.exact), ruler_on_s(d)
+    on_s = ruler_on_s(d)
+    errs, own = as_drawn(d, d.position_errors()), as_drawn(d, d.position_errors(d.exact))
+    errs |= {key: np.nan_to_num(np.asarray(e, dtype=float), nan=0.0) for key, e in (printed or {}).items()}
+    on_s = None if on_s is None else as_drawn(d, on_s)
     idx = d.at_positions
     uk = lang == "uk"
     said: list[tuple[str, str, float | None]] = []     # (the readings, the cause, its δ) a symbol
@@ -368,6 +389,29 @@ def _pct(p, lang: str = "en") -> str:
     return pct(p, lang)
 
 
+def mirrored_note(d: Diagrams, lang: str) -> str | None:
+    """Where the diagrams are drawn mirrored (``d.sign`` < 0: + against the guide, or clockwise for an
+    angle), what the terminal's columns mean: the mm are the ordinates as drawn, the values signed
+    along the guide (counter-clockwise), value = −mm·μ; the sheet's table writes s, v, a as drawn, so
+    a δ of |max| there has the opposite sign to the one here (δ = 100·(g − e)/|max|, review 54 #1).
+    None for diagrams drawn in the values' sense."""
+    if d.sign >= 0:
+        return None
+    uk = lang == "uk"
+    if d.output.kind == "slide":
+        how = "проти напрямної" if uk else "against the guide"
+        own = "уздовж напрямної" if uk else "along the guide"
+    else:
+        how = "за годинниковою стрілкою" if uk else "clockwise"
+        own = "проти годинникової стрілки" if uk else "counter-clockwise"
+    if uk:
+        return (f"Діаграми накреслено дзеркально (+ {how}): мм — ординати як на кресленні, значення — «+ {own}» "
+                "(значення = −мм·μ); таблиця аркуша пише s, v, a як на діаграмах, тож δ від |max| там має протилежний знак")
+    return (f"The diagrams are drawn mirrored (+ {how}): mm are the ordinates as drawn, the values + {own} "
+            "(value = −mm·μ); the sheet's table writes s, v, a as the diagrams do, so a δ of |max| there has the "
+            "opposite sign")
+
+
 def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
     s_, v_, a_ = d.symbols
@@ -417,6 +461,8 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
             w("error pct"), f"{a_}, {mm}", f"{a_}, {ua}", w("exact"), w("error pct")]
     block(w("at ordinates"), head, [row_at(k) for k in range(d.divisions)])
     lines.append(w("judged note"))
+    said = mirrored_note(d, lang)
+    lines += [said] if said else []
     chosen = [k for k in range(d.divisions) if d.position[k] in d.chosen]
     if chosen:
         block(w("chosen"), head, [row_at(k) for k in chosen])

@@ -7,6 +7,7 @@ composition that places them is sheets/kinematics.py (sheets/kinlayout.py the ar
 from __future__ import annotations
 
 from graphplan.exact.positions import Study
+from graphplan.graphic.diagrams import judged_pct
 from graphplan.graphic.record import Record, text_width
 from graphplan.report.plans import acceleration_cells, places, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
@@ -581,40 +582,33 @@ def diagram_readings(diag, doc: dict) -> list[dict]:
     return rows
 
 
+def printed_frame(row: dict, k: int, maxima: dict) -> dict:
+    """A row of ``diagram_readings`` as Table 4 prints it: s, v, a (the diagram's, the plans', the
+    exact) times the diagrams' sense ``k`` (``drawn_sense``), and δ judged again of the printed
+    pair (``judged_pct``). δ of its own exact value, 100·(g − e)/e, is the same in either frame;
+    δ of |max|, 100·(g − e)/|max|, changes its sign with the pair (review 54 #1: a_E −1,30 vs
+    −0,75 was printed +3,68 — the plans' frame's δ beside the diagrams' values)."""
+    out = {key: (k * value + 0.0 if key[0] in "sva" and value is not None else value)
+           for key, value in row.items()}
+    for q, big in (("s", "s"), ("v", "v"), ("a", "a")):
+        out[f"delta_{q}"] = float(judged_pct(out[q], out[f"{q}_exact"], maxima[big]))
+    return out
+
+
 READINGS_COLUMNS = 12    # positions a row of the readings table holds (more: the next rows under it)
 
 
-def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
-    """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
-    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
-    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the exact;
-    a δ past the lab's 5 % marked (the notes say why). The
-    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
-    ``READINGS_COLUMNS`` a block, the blocks one under another."""
-    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
-    s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
-    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
-    us, uv, ua = (unit(u, lang) for u in units)
-    plans, exact = w('readings_plan'), w('readings_exact')
-    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
-             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
-    marked = False
-
-    def pct(e: float, exact: str) -> str:
-        """δ, % of a reading — "—" where the exact value is printed as zero (the sheet's rule, as
-        Tables 1–2: δ of a zero is not computed; an extreme position's v = 0, review 53 #9)."""
-        nonlocal marked
-        if exact == "—" or float(exact.replace(",", ".").replace("−", "-")) == 0.0:
-            return "—"
-        cell = percent(e, lang=lang)
-        if abs(e) > LAB_LIMIT:
-            marked = True
-            cell += MARK
-        return cell
+def printed_readings(diag, doc: dict, lang: str, precision: float = 0.5) -> list[dict]:
+    """Table n's columns as printed: a position's cells (keys of ``diagram_readings``, in the
+    diagrams' sense, ``printed_frame``) written to their row's decimals, and δ_v, δ_a (floats; None
+    where the exact value prints as zero: "—") of the PRINTED pair, as Tables 1–2 give theirs (a
+    reader's check, review 54 #1): 100·(g − e)/e, or 100·(g − e)/|max| where |exact| < 10 % of
+    the cycle's |max| (``judged_pct``'s choice, of the unrounded exact value)."""
     import numpy as np
+
+    from graphplan.graphic.diagrams import MEANINGFUL
     k_ = drawn_sense(diag)
-    read = [{key: (k_ * value + 0.0 if key[0] in "sva" and value is not None
-                   else value) for key, value in row.items()} for row in diagram_readings(diag, doc)]
+    read = [printed_frame(row, k_, diag.maxima) for row in diagram_readings(diag, doc)]
     # one count of decimals a row: the diagram's values by its longest ordinate and its scale, the
     # plans' by their vectors (``decimals``)
     out_kind, name = diag.output.kind, diag.output.name
@@ -639,9 +633,64 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
         if round(r[key], d[key]) == 0:
             return fixed(0.0, lang, d[key])
         return written(r[key], d[key], lang)
-    cols = [[str(r["position"]), cell(r, "s"), cell(r, "s_exact"), cell(r, "v"), cell(r, "v_plan"),
-             cell(r, "v_exact"), pct(r["delta_v"], cell(r, "v_exact")), cell(r, "a"), cell(r, "a_plan"),
-             cell(r, "a_exact"), pct(r["delta_a"], cell(r, "a_exact"))] for r in read]
+
+    def value(c: str) -> float:
+        return float(c.replace(",", ".").replace("−", "-"))
+
+    out = []
+    for r in read:
+        row = {"position": r["position"]} | {key: cell(r, key) for key in
+                                             ("s", "s_exact", "v", "v_plan", "v_exact", "a", "a_plan", "a_exact")}
+        for q in ("v", "a"):
+            g, e = row[q], row[f"{q}_exact"]
+            if e == "—" or value(e) == 0.0:       # δ of a zero is not computed (review 53 #9)
+                row[f"delta_{q}"] = None
+                continue
+            big = float(diag.maxima[q])
+            own = abs(r[f"{q}_exact"]) >= MEANINGFUL * big
+            ref = value(e) if own else big
+            row[f"delta_{q}"] = 100.0 * (value(g) - value(e)) / ref + 0.0
+            if not own:       # the |max| it is of, to the row's decimals (the footnote gives it)
+                row[f"max_{q}"] = fixed(big, lang, d[q])
+        out.append(row)
+    return out
+
+
+def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -> Record:
+    """Table n: s, v, a read off the diagrams at the positions (``diagram_readings``), the plans'
+    v and a under them, the exact values under each quantity (review 13 #17: δ "of the exact value"
+    must be checkable from the sheet, as Tables 2–3 print their analytic column), δ, % of the
+    printed pair (``printed_readings``); a δ past the lab's 5 % marked (the notes say why). The
+    positions run across (as the lab's protocol tables do: short, to stand in the tables' column),
+    ``READINGS_COLUMNS`` a block, the blocks one under another."""
+    w = lambda key, **f: word(f"kin {key}", lang, **f)  # noqa: E731
+    s_, v_, a_ = (f"{sym}_{{{diag.sub}}}" for sym in diag.symbols)
+    units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
+    us, uv, ua = (unit(u, lang) for u in units)
+    plans, exact = w('readings_plan'), w('readings_exact')
+    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
+    marked = False
+
+    def pct(e: float | None) -> str:
+        """δ, % of a reading — "—" where the exact value is printed as zero (the sheet's rule, as
+        Tables 1–2: δ of a zero is not computed; an extreme position's v = 0, review 53 #9)."""
+        nonlocal marked
+        if e is None:
+            return "—"
+        cell = percent(e, lang=lang)
+        if abs(round(e, 2)) > LAB_LIMIT:       # the printed δ past 5 %
+            marked = True
+            cell += MARK
+        return cell
+    k_ = drawn_sense(diag)
+    out_kind = diag.output.kind
+    got = printed_readings(diag, doc, lang, precision)
+    cols = [[str(r["position"]), r["s"], r["s_exact"], r["v"], r["v_plan"], r["v_exact"], pct(r["delta_v"]),
+             r["a"], r["a_plan"], r["a_exact"], pct(r["delta_a"])] for r in got]
+    # the |max| a δ is of where one is (review 54 #1: δ of |max| checkable from the sheet)
+    tops = [f"{sym}_{{{diag.sub}}}: {top} {u}" for q, sym, u in (("v", diag.symbols[1], uv), ("a", diag.symbols[2], ua))
+            if (top := next((r[f"max_{q}"] for r in got if f"max_{q}" in r), None))]
     rec: Record | None = None
     y = 0.0
     for start in range(0, len(cols), READINGS_COLUMNS):
@@ -655,7 +704,8 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
             b, top = rec.bounds(), part.bounds()[3]
             rec.extend(part.moved(0.0, b[1] - 3.0 - top))
     assert rec is not None
-    said = [w('readings_delta') + (w('readings_mark') if marked else "")]
+    said = [w('readings_delta') + (w('readings_max', tops=", ".join(tops)) if tops else "")
+            + (w('readings_mark') if marked else "")]
     if k_ < 0:     # the diagrams' sense against the plans' (review 53 #10: ω5 −1,38 in Table 1, +1,38 here)
         m = sum(1 for pos in doc["positions"] if pos.get("acceleration"))
         t = "1" if m == 0 else "1,\u00a02" if m == 1 else f"1–{1 + m}"
@@ -816,4 +866,9 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
                        rad=fixed(math.radians(psi), lang, 4), a=primed(out, 1), b=primed(out, 2)))
     # the study's warnings (a block past its slotted link's end, a group near locking), as `analyze` says them
     extra += [f"{word('warnings', lang)}: {subscripted(text)}" for text in st.says(lang)]   # O₃C, O₃E
-    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag)), lang))
+    import numpy as np
+    rows = printed_readings(diag, doc, lang, p)      # the note names the δ Table n prints
+    printed = {f"{q}_at": np.array([np.nan if r[f"delta_{q}"] is None else r[f"delta_{q}"] for r in rows])
+               for q in ("v", "a")}
+    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag), printed),
+                          lang))

@@ -275,6 +275,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin readings_exact": ('точно', 'exact'),
     "kin readings_delta": ('δ — від точного (від |max|, де |значення| < 10 % |max|)',
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
+    "kin readings_max": ('; |max| {tops}', '; |max| {tops}'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
     "kin readings_signs_cw": ('Знаки {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} тут (і рядки «план»): +\u00a0за годинниковою стрілкою, '
                               'як на діаграмах; у таблицях {t}: +\u00a0проти годинникової стрілки',
