@@ -1,0 +1,28 @@
+"""Stop 54 (forces54b): a force's letter set by its own arrow (labels.place_owned_line) never across a
+line from its anchor — "Φ2" beside its head but beyond the link AC read as the side's name."""
+from __future__ import annotations
+
+from graphplan.graphic.record import LabelRequest, Record
+
+
+def _crosses(a: complex, b: complex, c: complex, d: complex) -> bool:
+    """Whether the segments ab and cd cross (strictly)."""
+    def side(p, q, r):
+        return ((q - p).conjugate() * (r - p)).imag
+    return side(a, b, c) * side(a, b, d) < 0 and side(c, d, a) * side(c, d, b) < 0
+
+
+def test_a_forces_letter_is_not_set_across_a_link_from_its_arrow():
+    """An arrow up to (0, 10) under a thick link along y = 11.5: the letter asked above the head has
+    free room only beyond the link (3 mm out) or beside the head below it; it stands where the
+    straight line from the head to its nearest ink crosses no line of the drawing."""
+    from graphplan.drawing.labels import place_owned_line
+    rec = Record("group")
+    rec.segment((-30.0, 11.5), (30.0, 11.5), role="link", width=0.7)
+    rec.vector((0.0, 0.0), (0.0, 10.0), role="force", width=0.5)
+    place_owned_line(rec, [LabelRequest(10j, "Φ_2", 1j, 3.5)], (0j, 10j), [])
+    text = next(q for q in rec.items if q.kind == "text")
+    x0, y0, x1, y1 = text.ink()
+    near = complex(min(max(0.0, x0), x1), min(max(10.0, y0), y1))
+    assert not _crosses(10j, near, -30 + 11.5j, 30 + 11.5j)
+    assert y1 < 11.5 - 0.3
