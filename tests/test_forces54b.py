@@ -26,3 +26,20 @@ def test_a_forces_letter_is_not_set_across_a_link_from_its_arrow():
     near = complex(min(max(0.0, x0), x1), min(max(10.0, y0), y1))
     assert not _crosses(10j, near, -30 + 11.5j, 30 + 11.5j)
     assert y1 < 11.5 - 0.3
+
+
+def test_a_scene_whose_output_never_moves_is_refused_in_one_line(capsys, tmp_path):
+    """OWN_KNEE_PRESS54 with the other branch of C: BC = O2B = 0.30 m and O2 on the ram's guide, so
+    the circle about B through O2 meets the guide at O2 itself — the ram sits on the fixed pivot for
+    the whole turn. Refused with exit 2 in one line, in the language asked for, naming the output
+    and [branch] (not a sheet whose path axis ran out of memory)."""
+    from graphplan.cli.main import main
+    from tests.review_scenes import OWN_KNEE_PRESS54
+    assert "O2 = [0.40, 0.30]" in OWN_KNEE_PRESS54 and "through = [0.40, -0.30], angle_deg = 90" in OWN_KNEE_PRESS54
+    path = tmp_path / "still.toml"
+    path.write_text(OWN_KNEE_PRESS54.replace("\nC = -1\n", "\nC = 1\n"), encoding="utf-8")
+    for lang, words in (("en", "the output C does not move"), ("uk", "вихідна ланка C не рухається")):
+        code = main(["analyze", str(path), "--lang", lang])
+        out, err = capsys.readouterr()
+        assert code == 2
+        assert len(err.strip().splitlines()) == 1 and words in err and "[branch]" in err, err
