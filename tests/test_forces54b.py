@@ -43,3 +43,33 @@ def test_a_scene_whose_output_never_moves_is_refused_in_one_line(capsys, tmp_pat
         out, err = capsys.readouterr()
         assert code == 2
         assert len(err.strip().splitlines()) == 1 and words in err and "[branch]" in err, err
+
+
+def test_a_sets_drawings_stand_on_the_sheets_the_plan_put_them_on():
+    """A set's build keeps each drawing on the sheet its plan chose (``Plan.where``): a hodograph the
+    plan set on sheet 2 with the tables, which the first sheet would still hold beside the scheme,
+    stands on sheet 2 — LINK53's A2 hodographs were packed under sheet 2's charts while the plan put
+    them on sheet 3, which held the tables alone spread across its width."""
+    from types import SimpleNamespace
+
+    from graphplan.drawing.layout import Leaf
+    from graphplan.sheets.forces import _as_planned, _packed_as_planned, _where
+    from graphplan.sheets.forceset import pack, units_of
+    from graphplan.sheets.compose import later_keep
+    from graphplan.sheets.form import form
+    from graphplan.sheets.forces import field_of, keep_out
+    f = form("A2")
+    leaves = {fam: [] for fam in ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs")}
+    leaves["scheme"] = [Leaf("mechanism", 150.0, 120.0)]
+    leaves["hodographs"] = [Leaf("hodograph R12", 60.0, 60.0), Leaf("hodograph R01", 60.0, 60.0)]
+    tables = [Leaf("results", 120.0, 60.0)]
+    notes = Leaf("notes", 185.0, 30.0)
+    p = SimpleNamespace(where=(("scheme 0",), ("hodographs 0", "hodographs 1", "results", "notes")),
+                        plan_first=True, gap=10.0, sheets=2)
+    region = field_of(f)
+    free = pack(units_of(leaves, region[2] - region[0]), tables, notes, region, keep_out(f), later_keep(f), 10.0)
+    assert len(free) == 1 and not _as_planned(free, p, leaves)       # one sheet holds all: not as planned
+    pages = _packed_as_planned(p, leaves, tables, notes, f)
+    assert pages is not None and _as_planned(pages, p, leaves)
+    assert [sorted(n for n in page) for page in _where(pages)] == [
+        ["mechanism"], sorted(["hodograph R12", "hodograph R01", "results", "notes"])]
