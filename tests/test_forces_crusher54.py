@@ -210,3 +210,22 @@ def test_the_knee_presss_reactions_and_balancing_moment_agree_with_an_independen
     for key in ("R01", "R12", "R03", "R23", "R24", "R45", "R05"):
         got = complex(np.atleast_1d(ks.reactions[key].force)[0])
         assert abs(got - mine[key]) <= 1e-3 * abs(mine[key]), (key, got, mine[key])
+
+
+def test_the_strokes_bar_is_ticked_where_the_working_stroke_gives_way_to_the_idle_one(st):
+    """The bar «робочий хід | холостий хід» under the resistance diagram's path axis has a tick at
+    each end and one where the strokes meet — at the jaw's whole swing from position 0 (its extreme
+    "max"), ψ5's range over a turn of the independent kinematics (``_frame``), within 0.5 %."""
+    from graphplan.drawing.charts import resistance_record, turn
+    rec = resistance_record(turn(st), lang="en")
+    mu = rec.scales["mu_s"]
+    low = min(q.points[0][1] for q in rec.items if q.kind == "segment" and q.role == "construction"
+              and abs(q.points[0][1] - q.points[1][1]) < 1e-9 and q.points[1][0] - q.points[0][0] > 5.0)
+    ticks = sorted(q.points[0][0] for q in rec.items if q.kind == "segment" and
+                   abs(q.points[0][0] - q.points[1][0]) < 1e-9 and
+                   min(q.points[0][1], q.points[1][1]) < low < max(q.points[0][1], q.points[1][1]))
+    swing = np.ptp(np.unwrap([_frame(t)[4][4] for t in np.linspace(0, 2 * math.pi, 20001)]))
+    assert len(ticks) == 3
+    assert ticks[0] == pytest.approx(0.0, abs=1e-9)
+    assert ticks[1] * mu == pytest.approx(math.degrees(swing), rel=5e-3)
+    assert ticks[2] * mu == pytest.approx(2 * math.degrees(swing), rel=5e-3)

@@ -992,6 +992,12 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     for a, b in zip(cuts, cuts[1:]):
         xa, xb = X(a), X(b)
         rec.segment((xa, low - 4.0), (xb, low - 4.0), role="construction", layer="diagrams", step=step)
+    # the strokes' bar ticked at its ends and where one stroke gives way to the other, so each
+    # name reads under its own span (stop 54: «робочий хід | холостий хід» under one unbroken line)
+    for k in cuts:
+        rec.segment((X(k), low - 5.5), (X(k), low - 2.5), role="construction", layer="diagrams", step=step)
+    for a, b in zip(cuts, cuts[1:]):
+        xa, xb = X(a), X(b)
         rec.label((0.5 * (xa + xb), low - 8.5), word("fs working" if work[a] else "fs idle", lang), size=2.5,
                   anchor="middle", step=step)
     rec.label((x_end + 9.0, -1.0), f"{sym}, {dist_unit}", size=3.5, step=step)

@@ -131,6 +131,7 @@ def study(mech: Mechanism) -> Study:
     grid = solve(mech, structure, np.arange(GRID) * 360.0 / GRID)     # every 0.25°, for both searches
     said_ = check_assembly(mech, structure, grid)
     output = default_output(mech, structure)
+    still(mech, output, grid)
     extremes = find_extremes(mech, structure, output, grid)
     phi0 = choose_start(mech, structure, output, extremes)
     kin0 = solve(mech, structure, [phi0])
@@ -431,6 +432,25 @@ def _bad_ranges(mech, structure, label, grid, ok) -> list[tuple[float, float]]:
             k = j
         k += 1
     return ranges
+
+
+STILL = 1e-6    # an output travelling less than this over a turn (of the crank's length; radians) stands still
+
+
+def still(mech: Mechanism, output: Output, kin: Kinematics) -> None:
+    """Refuse, in one line, an output that does not move over the crank's turn (``kin``: the
+    mechanism on the GRID): a slide whose travel is under ``STILL`` of the crank's length, a link
+    turning through less than ``STILL`` rad — a group assembled the other way round (a knee press's
+    ram put on the toggle's fixed pivot O2 by the other branch of C), whose positions, extremes and
+    force charts would be noise (the path axis of a 4e-14 m stroke ran the forces sheet out of memory)."""
+    travel = float(np.ptp(output.value(kin)))
+    slide = output.kind == "slide"
+    if travel >= (STILL * mech.crank.length if slide else STILL):
+        return
+    reach = f"{travel * 1000 if slide else math.degrees(travel):.1e}"
+    raise keyed_error(SceneError, mech.source, "", "ps output still" if slide else "ps output still turn",
+                      _lang(mech), name=output.name, table="branch",
+                      reach=lambda lang: reach.replace(".", ",") if lang == "uk" else reach)
 
 
 def find_extremes(mech: Mechanism, structure: Structure, output: Output,

@@ -1067,6 +1067,41 @@ def _where(pages) -> tuple | None:
     return None if pages is None else tuple(tuple(n for s in page for n in _names(s.node)) for page in pages)
 
 
+def _planned_names(leaves: dict[str, list[Leaf]]) -> dict[str, str]:
+    """The drawn leaves' names → the plan's names for them ("hodograph R24" → "hodographs 0")."""
+    return {x.name: f"{fam} {i}" for fam, xs in leaves.items() for i, x in enumerate(xs)}
+
+
+def _as_planned(packed, p: Plan, leaves: dict[str, list[Leaf]]) -> bool:
+    """Whether a set's sheets as packed (``forceset.pack``) hold each drawing on the sheet the plan
+    put it on (``Plan.where``; the tables and notes aside): True where the plan names none."""
+    if not p.where:
+        return True
+    names = _planned_names(leaves)
+    mine = [sorted(names[n] for n in page if n in names) for page in _where(packed)]
+    planned = [sorted(n for n in page if n in names.values()) for page in p.where]
+    return mine == planned
+
+
+def _packed_as_planned(p: Plan, leaves: dict[str, list[Leaf]], tables: list[Leaf], notes: Leaf, f: Form):
+    """A set's sheets with each drawing, table and the notes on the sheet the plan put it on
+    (``Plan.where``), each sheet packed on its own (``forceset.pack``); None where a sheet does not
+    hold its share."""
+    from graphplan.sheets.compose import later_keep
+    from graphplan.sheets.forceset import pack, units_of
+    region = field_of(f)
+    pages = []
+    for k, page in enumerate(p.where or ()):
+        mine = {fam: [x for i, x in enumerate(xs) if f"{fam} {i}" in page] for fam, xs in leaves.items()}
+        keep = keep_out(f) if k == 0 else later_keep(f)
+        out = pack(units_of(mine, region[2] - region[0], p.plan_first, p.gap), [t for t in tables if t.name in page],
+                   notes if "notes" in page else None, region, keep, later_keep(f), p.gap)
+        if out is None or len(out) != 1:
+            return None
+        pages.append(out[0])
+    return pages or None
+
+
 def _names(node) -> tuple[str, ...]:
     """The drawings' names in a node of the set's composition."""
     if isinstance(node, Leaf):
@@ -1899,6 +1934,11 @@ def build_forces_sheet(st: Study, f: Form, options) -> Sheet:
         notes_leaf = Leaf("notes", record=nrec)
         packed = pack(units_of(leaves, region[2] - region[0], p.plan_first, p.gap), tables, notes_leaf, region,
                       keep_out(f), later_keep(f), p.gap)
+        if packed is not None and not _as_planned(packed, p, leaves):
+            # each drawing on the sheet the plan put it on, where each sheet holds its share: LINK53's
+            # A2 hodographs packed into sheet 2's bottom row where the plan set them on sheet 3 with
+            # the tables (stop 54), which stood there alone, spread across the width
+            packed = _packed_as_planned(p, leaves, tables, notes_leaf, f) or packed
         if packed is None or len(packed) > p.sheets:
             # each drawing in the cell the plan sized: the set's sheets as the plan counted them
             planned = _placed_leaves(dr, nat, p.mu)

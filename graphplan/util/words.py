@@ -974,6 +974,14 @@ WORDS.update({
                          "точку, що ковзає, або ланку, що обертається",
                          "the link {name} slides along a frame guide and never turns; name its "
                          "sliding point, or a link that turns"),
+    "ps output still": ("вихідна ланка {name} не рухається за оберт кривошипа (її хід {reach} мм): "
+                        "група зібрана в іншу збірку — змініть знак її точки в [{table}]",
+                        "the output {name} does not move over the crank's turn (its travel {reach} mm): "
+                        "a group is assembled the other way — change the sign of its point in [{table}]"),
+    "ps output still turn": ("вихідна ланка {name} не повертається за оберт кривошипа (її хід {reach}°): "
+                             "група зібрана в іншу збірку — змініть знак її точки в [{table}]",
+                             "the output {name} does not turn over the crank's turn (its swing {reach}°): "
+                             "a group is assembled the other way — change the sign of its point in [{table}]"),
     "ps output neither": ("{name} не є ні ланкою, ні точкою, що ковзає",
                           "{name} is neither a link nor a sliding point"),
     "ps start inner": ("внутрішнє й зовнішнє мертві положення має повзун; вихідна ланка "
