@@ -120,7 +120,7 @@ def test_the_notes_say_in_one_sentence_why_twice_the_divisions_are_not_drawn():
     worse = max(float(np.max(np.abs(e[::2]))) for e in d24.position_errors().values())
     assert worse > d.worst_pct() > LAB_LIMIT
     en, uk = short_limit_note(d, "en"), short_limit_note(d, "uk")
-    assert "on 24 divisions the largest |δ| is larger" in en and "→" not in en
-    said = float(en.split("is larger, ")[1].split(" %")[0])
+    assert "24 divisions read " in en and "the ruler errs more" in en and "→" not in en
+    said = float(en.split("24 divisions read ")[1].split(" %")[0])
     assert said == pytest.approx(worse, abs=0.6)
-    assert "на 24 поділках найбільша |δ| більша" in uk
+    assert "24 поділки дають " in uk and "похибка лінійки" in uk

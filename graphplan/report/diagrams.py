@@ -188,18 +188,22 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None) -> str | 
 def _finer_worse(d: Diagrams, trials, lang: str) -> str:
     """Why the sheet keeps its divisions where twice as many read worse (a trial "double" past the
     drawing's largest |δ| while its own exact drawing reads closer): in one sentence a student accepts —
-    the ruler's half division on s over a smaller step (docs/diagrams.md: σ·μs/(h²·μt²) on a). Empty
+    the ruler's half division on s over a smaller step (docs/diagrams.md: σ·μs/(h²·μt²) on a); where
+    they read closer but still past 5 %, their |δ| (the trial a student would make first). Empty
     otherwise. (The dynamics sheet draws more divisions where they read within the lab's 5 %:
     graphic.flywheel.redrawn; this sheet's diagrams keep the plans' positions as divisions.)"""
+    from graphplan.graphic.diagrams import LAB_LIMIT
     from graphplan.util.words import uk_count
     uk = lang == "uk"
     for t in trials:
         if t.key == "double" and t.exact_pct < t.worst_pct and t.worst_pct > d.worst_pct():
             n, e = t.divisions, fixed(t.worst_pct, lang, 1)
-            return (f"; на {n} {uk_count(n, 'поділці', 'поділках', 'поділках')} найбільша |δ| більша, {e} %: на "
-                    f"вдвічі меншому кроці відлік лінійкою помиляється більше" if uk else
-                    f"; on {n} divisions the largest |δ| is larger, {e} %: at half the step the ruler's "
-                    f"readings err more")
+            return (f"; {n} {uk_count(n, 'поділка', 'поділки', 'поділок')} дають {e} %: на меншому кроці більша "
+                    f"похибка лінійки" if uk else f"; {n} divisions read {e} %: the ruler errs more at the smaller step")
+        if t.key == "double" and t.worst_pct > LAB_LIMIT:     # closer, still past 5 %: not worth 24 columns
+            n, e = t.divisions, fixed(t.worst_pct, lang, 1)
+            return (f"; {n} {uk_count(n, 'поділка', 'поділки', 'поділок')} дають {e} %, теж понад 5 %"
+                    if uk else f"; {n} divisions read {e} %, past 5 % too")
     return ""
 
 
