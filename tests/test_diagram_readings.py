@@ -79,8 +79,9 @@ def test_the_coulisse_a_diagram_no_longer_contradicts_its_plan_silently(coulisse
             if abs(r[key]) > 5.0 and abs(r[key]) >= sorted(abs(q[key]) for q in rows.values())[-NAMED]:
                 assert f" {n} (" in notes, (n, key, notes)
     assert "exceed the 5 % the lab allows" in notes
-    rd = d.redrawn           # the δ before → after where the first drawing was right (a wrong one: the why)
-    assert (f"{rd.off_before:.2f} % → " in notes) == (not rd.wrong_before)
+    rd = d.redrawn           # the sheet states the drawing's largest |δ| (not the search's before → after)
+    assert "→" not in notes
+    assert (f"largest |δ| {rd.off_after:.2f} %" in notes) == (not rd.wrong_before)
 
 
 @pytest.mark.parametrize("name", ["crank_slider", "four_bar", "lab_crank_slider"])

@@ -78,6 +78,10 @@ def test_the_i_star_peak_is_drawn_within_the_lab_or_redrawn():
     uk, en = plain(redrawn_note(f, "uk")), plain(redrawn_note(f, "en"))
     assert f"на {f.divisions} поділках замість 8" in uk and "найбільше I" in uk and "5,293" in uk
     assert f"redrawn on {f.divisions} divisions, not 8" in en and "largest I" in en
+    # the sheet states what it drew and why (review 54 #3): no "instead of", no "— −"
+    uk, en = plain(redrawn_note(f, "uk", sheet=True)), plain(redrawn_note(f, "en", sheet=True))
+    assert uk.startswith(f"Діаграми побудовано на {f.divisions}") and "замість" not in uk and "— −" not in uk
+    assert en.startswith(f"Diagrams drawn on {f.divisions}") and "not 8" not in en and "— −" not in en
 
 
 @pytest.mark.slow

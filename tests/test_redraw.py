@@ -60,7 +60,7 @@ def check_sheet_diagrams(st, k: float = 1.0) -> str:
         if rd.wrong_before:                       # the first drawing was wrong: say what changed
             first = first_options(st, k)
             assert wrong(chord_diagrams(st, precision=0.5, **first)), "the first drawing was right"
-            assert "redrawn" in notes and rd.changed
+            assert "chosen so that" in notes and rd.changed and "(not " not in notes
             for key, value in rd.changed.items():
                 assert options[key] == value and first.get(key, False) != value
             return "redrawn"

@@ -478,7 +478,10 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     # with several thick positions each one's moving joints carry its number (as thick_letters'; a
     # centre of mass, lettered at the first only, keeps its S₂), the first's too (review
     # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
+    together = coinciding(pts)
     for name, X in pts.items():
+        if name not in together:
+            continue                      # lettered with the point it coincides with (O₁, S₁)
         # crowded by thin positions: beside it, the lines broken; nearer it than the point's other
         # positions drawn as dots (a centre of mass is dotted at the thick positions only)
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None and abs(z - X) > 1e-6
@@ -488,8 +491,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
             # it: a four-bar's crank circle 12 mm across had its O₁ set 1.3 mm from the pin's
             # position 8, whose number then found no spot but on a leader through that O₁
             rivals = tuple(z for z in pins if SAME_DOT < abs(z - X) < PIVOT_RIVALS)
-        text = indexed(name) if len(thick_lays) < 2 or name in mech.frame or name not in joints else \
-            at_position(name, lay.index if lay.index is not None else lay.key)
+        text = ", ".join(indexed(n) if len(thick_lays) < 2 or n in mech.frame or n not in joints else
+                         at_position(n, lay.index if lay.index is not None else lay.key) for n in together[name])
         labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
     for other in thick_lays:
@@ -511,6 +514,28 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)
+
+
+SAME_POINT = 0.05     # mm drawn: two named points this near are one point (a centre of mass on its pivot, S₁ = 0)
+
+
+def coinciding(pts: dict[str, complex]) -> dict[str, list[str]]:
+    """The named points grouped where they coincide, each group keyed by the name that letters it:
+    a frame pivot first, then a joint, then a centre of mass (``pts``' order within each). One
+    label for the group ("O₁, S₁", as the velocity plan letters the points at its pole "p_v, s₁"):
+    review 54 #12 — the crank's S₁ = 0 was lettered up and left of O₁ on the crank's line, as if a
+    point of its own."""
+    def rank(name: str) -> int:
+        return 0 if not name.startswith("S") or name[1:2].isalpha() else 1
+    order = sorted(pts, key=lambda n: (rank(n), list(pts).index(n)))
+    out: dict[str, list[str]] = {}
+    for name in order:
+        host = next((h for h in out if abs(pts[h] - pts[name]) <= SAME_POINT), None)
+        if host is None:
+            out[name] = [name]
+        else:
+            out[host].append(name)
+    return out
 
 
 def at_position(name: str, k: int | str) -> str:

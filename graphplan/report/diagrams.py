@@ -201,8 +201,31 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
                 else "; no other construction tried keeps within 5 %")
     else:
         tail = ""
+    tail = _finer_worse(d, trials, lang) + tail
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
              f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
+
+
+def _finer_worse(d: Diagrams, trials, lang: str) -> str:
+    """Why the sheet keeps its divisions where twice as many read worse (a trial "double" past the
+    drawing's largest |δ| while its own exact drawing reads closer): in one sentence a student accepts —
+    the ruler's half division on s over a smaller step (docs/diagrams.md: σ·μs/(h²·μt²) on a); where
+    they read closer but still past 5 %, their |δ| (the trial a student would make first). Empty
+    otherwise. (The dynamics sheet draws more divisions where they read within the lab's 5 %:
+    graphic.flywheel.redrawn; this sheet's diagrams keep the plans' positions as divisions.)"""
+    from graphplan.graphic.diagrams import LAB_LIMIT
+    from graphplan.util.words import uk_count
+    uk = lang == "uk"
+    for t in trials:
+        if t.key == "double" and t.exact_pct < t.worst_pct and t.worst_pct > d.worst_pct():
+            n, e = t.divisions, fixed(t.worst_pct, lang, 1)
+            return (f"; {n} {uk_count(n, 'поділка', 'поділки', 'поділок')} дають {e} %: на меншому кроці більша "
+                    f"похибка лінійки" if uk else f"; {n} divisions read {e} %: the ruler errs more at the smaller step")
+        if t.key == "double" and t.worst_pct > LAB_LIMIT:     # closer, still past 5 %: not worth 24 columns
+            n, e = t.divisions, fixed(t.worst_pct, lang, 1)
+            return (f"; {n} {uk_count(n, 'поділка', 'поділки', 'поділок')} дають {e} %, теж понад 5 %"
+                    if uk else f"; {n} divisions read {e} %, past 5 % too")
+    return ""
 
 
 NAMED = 2     # the worst readings a note names a diagram, and a third where the chords' own error is past 5 %
@@ -328,6 +351,12 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
         was = rd.first.get(key)
         if key in ("H1", "H2", "L"):
             name = {"H1": "H_{1}", "H2": "H_{2}", "L": "L"}[key]
+            given = _given(d, key)
+            if short:           # the sheet states the value drawn; a departure only from the scene's own
+                parts.append(f"{name} = {num(value, lang, 3)} {mm}" + (
+                    "" if given is None or abs(given - value) < 1e-9 else
+                    f" (у сцені {num(given, lang, 3)})" if uk else f" (the scene's {num(given, lang, 3)})"))
+                continue
             parts.append(f"{name} = {num(value, lang, 3)} {mm} " + (f"(не {num(was, lang, 3)})" if uk else
                                                                     f"(not {num(was, lang, 3)})"))
         elif key == "height":
@@ -335,21 +364,31 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
                 continue            # the allowance changed, not the drawing: μs as first chosen
             s0 = f"{d.symbols[0]}_{{{d.sub}}}"
             up = was is None or value > was
+            if short:
+                parts.append(f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)} {units(d, lang)[0]}/{mm}")
+                continue
             parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}"
                          if uk else f"the {s0} diagram {'taller' if up else 'lower'}: "
                                     f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}")
         elif key == "fit":      # seed 002: μs = s_max/h, the s diagram its allowance's height
             s0, top = f"{d.symbols[0]}_{{{d.sub}}}", f"{d.symbols[0]}_{{max}}"
             per = f"{units(d, lang)[0]}/{mm}"
+            if short:
+                parts.append(f"{mu(scale_symbols(d)[0])} = {top}/h = {fmt(d.mu_s, lang)} {per}")
+                continue
             parts.append(f"діаграма {s0} вища: {mu(scale_symbols(d)[0])} = {top}/h = {fmt(d.mu_s, lang)} {per}"
                          if uk else f"the {s0} diagram taller: {mu(scale_symbols(d)[0])} = {top}/h = "
                                     f"{fmt(d.mu_s, lang)} {per}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
-            parts.append(f"менші інтервали там, де крива згинається ({d.divisions} поділок)" if uk else
+            from graphplan.util.words import uk_count
+            many = uk_count(d.divisions, "поділка", "поділки", "поділок")
+            parts.append(f"менші інтервали там, де крива згинається ({d.divisions} {many})" if uk else
                          f"smaller intervals where the curve bends ({d.divisions} divisions)")
     how = ", ".join(parts)
+    if short:
+        return _chosen_note(d, rd, how, lang)
     off = ""
     if rd.off_before is not None and rd.off_after is not None:
         a, b = fixed(rd.off_before, lang, 2), fixed(rd.off_after, lang, 2)     # as Table 5's δ, two decimals
@@ -365,6 +404,45 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
                 f"Діаграму {syms} побудовано заново: {how} — перша мала екстремуми, нулі чи уступи, яких немає в русі{tail}")
     return (f"Diagram{'s' if many else ''} {syms} redrawn: {how} — the first had extrema, zero crossings or "
             f"shoulders the motion lacks{tail}")
+
+
+def _given(d: Diagrams, key: str) -> float | None:
+    """The scene's own value of a drawing option (its [diagrams] ``H1_mm``, ``H2_mm``, ``L_mm``), or None."""
+    dg = getattr(getattr(getattr(d.study, "mech", None), "task", None), "diagram", None) or {}
+    value = dg.get(f"{key}_mm")
+    return None if value is None else float(value)
+
+
+def _chosen_note(d: Diagrams, rd, how: str, lang: str) -> str | None:
+    """The sheet's line for a redrawing (``redrawn_note`` short): what was drawn and why it was chosen —
+    a statement, not the search: the options drawn (``how``, the values on the sheet), and either that
+    they make the diagrams qualitatively right (the options first taken gave extrema, zero crossings or
+    shoulders the motion lacks) or that of the redrawings the lab allows and the sheet holds this one
+    reads closest to the exact at the positions (its largest |δ|, as Table 5 prints δ: two decimals).
+    Review 54 #3: «H₁ = 20 мм (не 25) … 32,19 % → 15,52 %» named values the student never chose."""
+    uk = lang == "uk"
+    if not how:
+        return None                 # nothing the sheet draws differs from the options first taken
+    head = f"Діаграми: {how} — " if uk else f"Diagrams: {how} — "
+    if rd.wrong_before:
+        syms = ", ".join(f"{d.symbols[1 if key == 'v' else 2]}_{{{d.sub}}}" for key in rd.wrong_before)
+        many = len(rd.wrong_before) > 1
+        return head + (f"обрано, щоб діаграм{'и' if many else 'а'} {syms} не мал{'и' if many else 'а'} екстремумів, "
+                       f"нулів чи уступів, яких немає в русі" if uk else
+                       f"chosen so that the {syms} diagram{'s' if many else ''} "
+                       f"{'have' if many else 'has'} no extrema, zero crossings or shoulders the motion lacks")
+    if rd.off_after is None:
+        return head.rstrip(" —")
+    off = fixed(rd.off_after, lang, 2)
+    if rd.within:
+        return head + (f"обрано, щоб значення з діаграм у положеннях вкладалися в 5 % лабораторної "
+                       f"(найбільша |δ| {off} %)" if uk else
+                       f"chosen so that the values read off the diagrams at the positions keep within the lab's "
+                       f"5 % (the largest |δ| {off} %)")
+    return head + (f"з побудов, які дозволяє лабораторна і вміщує аркуш, найточніша в положеннях "
+                   f"(найбільша |δ| {off} %)" if uk else
+                   f"of the constructions the lab allows and the sheet holds, the one read closest to the exact "
+                   f"at the positions (the largest |δ| {off} %)")
 
 
 def _mu_s_at(d: Diagrams, height: float) -> float:

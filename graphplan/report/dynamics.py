@@ -362,17 +362,19 @@ def _errs(e: dict[str, float], lang: str) -> str:
     return parts[0] if parts else "—"
 
 
-def redrawn_note(f, lang: str) -> str | None:
+def redrawn_note(f, lang: str, sheet: bool = False) -> str | None:
     """What graphic.flywheel.redrawn did, in one line (markup), or None where the first drawing was
     within the lab's 5 %: redrawn on more divisions (which, instead of which, the errors before and
-    after); the given divisions kept (and which would be right); or nothing within the bound right."""
+    after); the given divisions kept (and which would be right); or nothing within the bound right.
+    ``sheet``: the sheet's form states what is drawn and why (the divisions drawn and their error,
+    the error the first count would give as the reason), not the search (review 54 #3)."""
     rd = f.redrawn
     if rd is None or not rd.needed or rd.ruler:    # the ruler's: ``amplified_note`` says why
         return None
     uk = lang == "uk"
     e0 = _errs(rd.before, lang)
     if not {"flywheel", "driving"} & set(over(rd.before)):     # the flywheel right, I*'s peak between divisions
-        return _inertia_note(f, rd, lang)
+        return _inertia_note(f, rd, lang, sheet)
     if rd.divisions != rd.first:
         # M*_d off: the chords' middle ordinates missed how M*_c changes inside an interval (its work);
         # else the curves ΔT(φ), I*(φ) the Wittenbauer diagram joins change inside one
@@ -380,8 +382,16 @@ def redrawn_note(f, lang: str) -> str | None:
         why = (("M^*_с змінюється всередині інтервалу" if moment else "ΔT(φ) та I^*_м(φ) змінюються всередині інтервалу")
                if uk else ("M^*_c changes inside an interval" if moment else
                            "ΔT(φ) and I^*_m(φ) change inside an interval"))
+        if sheet:
+            n = _divisions(rd.divisions, lang)
+            return (f"Діаграми побудовано на {n}: похибка графічного маховика {_errs(rd.after, lang)}; на "
+                    f"{_divisions(rd.first, lang)} вона була б {e0} — понад 5{NB}% лабораторної, бо {why}"
+                    f"{_short(f, lang)}" if uk else
+                    f"Diagrams drawn on {n}: the graphical flywheel's error {_errs(rd.after, lang)}; on "
+                    f"{_divisions(rd.first, lang)} it would be {e0}, over the 5{NB}% the lab accepts, as {why}"
+                    f"{_short(f, lang)}")
         return (f"Діаграми побудовано заново на {rd.divisions} поділках замість {rd.first}: з {rd.first} графічний "
-                f"маховик відхилявся на {e0} — понад 5{NB}% лабораторної, бо {why}; з {rd.divisions} — "
+                f"маховик відхилявся на {e0} — понад 5{NB}% лабораторної, бо {why}; з {rd.divisions} — на "
                 f"{_errs(rd.after, lang)}{_short(f, lang)}" if uk else
                 f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the graphical flywheel "
                 f"was {e0} off — over the 5{NB}% the lab accepts, as {why}; with {rd.divisions}, {_errs(rd.after, lang)}"
@@ -452,7 +462,15 @@ def amplified_note(f, lang: str, e: str) -> str | None:
             f"more divisions bring within 5{NB}%")
 
 
-def _inertia_note(f, rd, lang: str) -> str:
+def _divisions(n: int, lang: str) -> str:
+    """"24 поділках" / "24 divisions": a count as "на …" / "on …" takes it (markup)."""
+    if lang != "uk":
+        return f"{n}{NB}divisions"
+    from graphplan.util.words import uk_count
+    return f"{n}{NB}{uk_count(n, 'поділці', 'поділках', 'поділках')}"
+
+
+def _inertia_note(f, rd, lang: str, sheet: bool = False) -> str:
     """The drawing redrawn (or not) because the diagram's largest I*_m missed the exact largest by
     more than the lab's 5 % (graphic.flywheel.inertia_miss): its peak lies between two divisions,
     where the French curve through them guesses it wrong (markup)."""
@@ -463,9 +481,16 @@ def _inertia_note(f, rd, lang: str) -> str:
     unit = NB + ("кг·м²" if uk else "kg·m²")
     if rd.divisions != rd.first:
         e1 = f"{_signed(rd.after['inertia'], lang)}{NB}%"
+        if sheet:
+            return (f"Діаграми побудовано на {_divisions(rd.divisions, lang)}: найбільше {im} діаграми відхиляється "
+                    f"від точного {exact}{unit} на {e1}; на {_divisions(rd.first, lang)} — на {e0}, понад 5{NB}% "
+                    f"лабораторної (вершина між поділками)" if uk else
+                    f"Diagrams drawn on {_divisions(rd.divisions, lang)}: the diagram's largest {im} misses the exact "
+                    f"{exact}{unit} by {e1}; on {_divisions(rd.first, lang)}, by {e0}, over the lab's 5{NB}% (the "
+                    f"peak lies between divisions)")
         return (f"Діаграми побудовано заново на {rd.divisions} поділках замість {rd.first}: з {rd.first} найбільше "
                 f"{im} діаграми відхилялося від точного найбільшого {im} = {exact}{unit} на {e0} (понад 5{NB}% "
-                f"лабораторної: вершина між поділками); з {rd.divisions} — {e1}" if uk else
+                f"лабораторної: вершина між поділками); з {rd.divisions} — на {e1}" if uk else
                 f"Diagrams redrawn on {rd.divisions} divisions, not {rd.first}: with {rd.first} the diagram's largest "
                 f"{im} missed the exact largest {im} = {exact}{unit} by {e0} (over the lab's 5{NB}%: the peak "
                 f"lies between divisions); with {rd.divisions}, {e1}")

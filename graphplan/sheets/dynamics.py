@@ -275,7 +275,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
                 elif amp is not None:        # the method's own error is J's: said beside I_fl's
                     line = line.replace(" %:", f" % (J {signed(j, lang)} %):", 1)
             said.append(w["mark"] + line)
-    said += [line for line in (redrawn_note(f, lang),) if line]     # redrawn on more divisions, or why not
+    said += [line for line in (redrawn_note(f, lang, sheet=True),) if line]     # redrawn on more divisions, or why not
     if short is not None:
         said.append(short_note(short, lang))
     m = doc["motor"]
