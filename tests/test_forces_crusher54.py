@@ -42,6 +42,28 @@ def _unwrap(x: float) -> float:
     return (x + math.pi) % (2 * math.pi) - math.pi
 
 
+def _equations(col: dict, s: list, force: list, couple: list):
+    """The 15 equilibrium equations of five links, three a link (ΣX, ΣY, ΣM about a point), as a
+    matrix and right side filled row by row: ``put`` a reaction (its unknown x, y at ``col[key]``)
+    acting at ``at``, ``given`` link i's own loads (weight, inertia force at S, couple)."""
+    m, rhs = np.zeros((15, 15)), np.zeros(15)
+
+    def put(row: int, key: str, sign: float, at: complex, about: complex) -> None:
+        j, r = col[key], at - about
+        m[row, j] += sign
+        m[row + 1, j + 1] += sign
+        m[row + 2, j] += -sign * r.imag
+        m[row + 2, j + 1] += sign * r.real
+
+    def given(row: int, i: int, about: complex) -> None:
+        r, f = s[i] - about, force[i]
+        rhs[row] -= f.real
+        rhs[row + 1] -= f.imag
+        rhs[row + 2] -= r.real * f.imag - r.imag * f.real + couple[i]
+
+    return m, rhs, put, given
+
+
 def independent(th: float) -> dict:
     """Reactions (on the link named second: R12 of 1 on 2), M_b and the power balance's M_b."""
     h = 1e-4
@@ -57,20 +79,7 @@ def independent(th: float) -> dict:
     couple[4] += -math.copysign(900.0, om[4])           # against the jaw's motion
     # unknowns (x, y): R01, R21 (2 on 1), R03, R42 (4 on 2, the pin B carried by 2), R23, R45, R05; M_b
     col = {"R01": 0, "R21": 2, "R03": 4, "R42": 6, "R23": 8, "R45": 10, "R05": 12}
-    m, rhs = np.zeros((15, 15)), np.zeros(15)
-
-    def put(row: int, key: str, sign: float, at: complex, about: complex) -> None:
-        j, r = col[key], at - about
-        m[row, j] += sign
-        m[row + 1, j + 1] += sign
-        m[row + 2, j] += -sign * r.imag
-        m[row + 2, j + 1] += sign * r.real
-
-    def given(row: int, i: int, about: complex) -> None:
-        r, f = s[i] - about, force[i]
-        rhs[row] -= f.real
-        rhs[row + 1] -= f.imag
-        rhs[row + 2] -= r.real * f.imag - r.imag * f.real + couple[i]
+    m, rhs, put, given = _equations(col, s, force, couple)
 
     put(0, "R01", 1, O1, O1), put(0, "R21", 1, a, O1), given(0, 0, O1)
     m[2, 14] = 1.0
@@ -165,20 +174,7 @@ def knee_press(th: float) -> dict:
     if v[4].imag < 0:                                    # the stroke down: the press's force up
         force[4] += 15000j
     col = {"R01": 0, "R21": 2, "R03": 4, "R42": 6, "R23": 8, "R45": 10}
-    m, rhs = np.zeros((15, 15)), np.zeros(15)
-
-    def put(row: int, key: str, sign: float, at: complex, about: complex) -> None:
-        j, r = col[key], at - about
-        m[row, j] += sign
-        m[row + 1, j + 1] += sign
-        m[row + 2, j] += -sign * r.imag
-        m[row + 2, j + 1] += sign * r.real
-
-    def given(row: int, i: int, about: complex) -> None:
-        r, f = s[i] - about, force[i]
-        rhs[row] -= f.real
-        rhs[row + 1] -= f.imag
-        rhs[row + 2] -= r.real * f.imag - r.imag * f.real + couple[i]
+    m, rhs, put, given = _equations(col, s, force, couple)
 
     put(0, "R01", 1, 0j, 0j), put(0, "R21", 1, a, 0j), given(0, 0, 0j)
     m[2, 14] = 1.0
