@@ -97,6 +97,10 @@ def _groupings(items: list[Leaf]) -> list:
     if len(items) == 1:
         return [items[0]]
     out = [Row(list(items)), Stack(list(items))]
+    if len(items) == 2 and items[1].name in OWN and items[0].name in OWN[items[1].name]:
+        # a table and the notes that explain it one under another: kept together, the spare room round
+        # them (review 54: GEARS53/54's A3 last sheet stood Table 3 at its top, its notes 80 mm lower)
+        out[1] = Stack([Stack(list(items), flush=True)])
     if len(items) >= 3:
         out.append(Stack([items[0], Row(list(items[1:]))]))
         for i in range(1, len(items)):    # two columns: the first i, then the rest
