@@ -74,3 +74,22 @@ def test_the_a1_lambda_diagrams_take_the_room_under_the_meshing(scene):
     line = aw * math.sin(lo) * 5.0                                        # N1N2 drawn, mm (≈ 281)
     want = max(u for u in (20.0, 25.0, 40.0, 50.0) if 4 * u <= 0.75 * line)
     assert 1.0 / mesh.lam.scales["mu_lambda"] == pytest.approx(want) == 50.0
+
+
+@pytest.mark.slow
+def test_the_a3_set_keeps_the_notes_by_their_tables_in_three_sheets(scene):
+    """Review 54, items 21: the A3 set of 11/53 took four sheets — the pair's notes under the planetary
+    pictures, a sheet away from Tables 1 and 2, and a last sheet with Table 3 and its notes alone. With the
+    λ diagrams and the tables side by side, the notes under them, it is three: every part of the notes
+    on the sheet of the tables it explains, each sheet with a drawing, u1H read within the lab's 5 % of
+    Willis' 104/19 (about 10 s)."""
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    g, sol = scene
+    _, vel, pages = on_sheet(g, sol, form("A3"), 0.5, "en")
+    names = [{p.name for p in page} for page in pages]
+    assert len(pages) == 3
+    assert all(n & {"meshing", "sliding", "planetary"} for n in names)
+    assert any({"geometry", "quality", "notes"} <= n for n in names)
+    assert any({"train", "train notes"} <= n for n in names)
+    assert abs(vel.ratio - 104 / 19) / (104 / 19) <= 0.05

@@ -979,7 +979,20 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
                     big["sliding"] = lam
             tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
     tried = [t for t in tried if t is not None]
-    return min(tried, key=len) if tried else None
+    # the fewest sheets, then the notes on the sheet of the tables they explain (review 54: the 11/53 A3 set
+    # took the 8,4-mm rows and sent the pair's notes to the planetary sheet, under the train's pictures,
+    # where the 7-mm rows keep them by Tables 1 and 2 — the same count of sheets), then the larger tables
+    return min(tried, key=lambda t: (len(t), _notes_apart(t))) if tried else None
+
+
+def _notes_apart(pages) -> int:
+    """How many parts of a set's notes stand on a sheet without a table they explain (gearset ``OWN``)."""
+    from graphplan.sheets.gearset import OWN
+    out = 0
+    for page in pages:
+        names = {p.name for p in page}
+        out += sum(1 for n, own in OWN.items() if n in names and not names & set(own))
+    return out
 
 
 SET_GROW = (3.0, 2.5, 2.0, 1.8, 1.6, 1.4, 1.3, 1.2, 1.1)    # a set's planetary pictures, × (80, 60, 100) mm, tried
