@@ -6200,3 +6200,29 @@ delta = 0.03
 efficiency = 0.95
 synchronous_rpm = 1000
 '''
+
+
+GEARS11_53_54 = '''# Stop 54 (the blind reviewer's scene 4): a pair 11/53 — a large ratio, shifts "auto", m = 4 mm — and a
+# one-row planetary train of type A, u1H = 5.5, K = 4.
+title = "Зубчаста передача z1 = 11, z2 = 53 і планетарний редуктор"
+title_en = "A gear pair 11/53 and a planetary reducer"
+designation = "ТММ.КП.54.400"
+
+[sheet]
+student = "Бондар Т. С."
+teacher = "Коваль О. М."
+group = "МБ-31"
+organisation = "НУБіП України"
+
+[gears]
+z = [11, 53]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.5
+planets = 4
+module = 0.0025
+omega = 120.0
+'''

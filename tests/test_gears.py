@@ -160,7 +160,7 @@ def check_auto(z1, z2):
     ex = pair_closed(z1, z2, 0.004, *sol.x)
     assert ex is not None
     assert not any(ex["undercut"]) and not any(ex["pointed"]) and not any(ex["interference"]) and ex["eps"] >= 1.2
-    assert sol.auto["rule"] == "blocking-contour zone, least greatest specific sliding"
+    assert sol.auto["rule"] == "blocking-contour zone, the smallest maximum specific sliding"
 
 
 # -- the train --------------------------------------------------------------------------------------
@@ -479,7 +479,7 @@ def test_the_notes_say_which_train_nearer_the_ratio_lost_and_why(tmp_path):
     doc = gears_json(sol, mesh, vel, "")
     cands = doc["planetary"]["candidates"]
     nearest = min(cands, key=lambda c: abs(c["error_pct"])) if cands else None
-    said = [x for x in notes(doc, "en", mesh, vel) if "lost" in x]
+    said = [x for x in notes(doc, "en", mesh, vel) if "rejected" in x]
     assert bool(said) == (nearest is not None and list(nearest["z"]) != list(doc["planetary"]["z"])
                           and abs(nearest["error_pct"]) < abs(cands[0]["error_pct"]))
 
@@ -557,7 +557,7 @@ def test_gears_json_and_tables():
     assert abs(t["ratio"]["exact"] - 6.0) <= 0.24 and t["candidates"]
     code, out, err = run(["gears", str(GEARS_B), "--precision", "0", "--json"])
     doc = check_run(["gears", "--json"], code, out, err)
-    assert doc["pair"]["shifts"] == "auto" and "least greatest" in doc["pair"]["auto"]["rule"]
+    assert doc["pair"]["shifts"] == "auto" and "smallest maximum" in doc["pair"]["auto"]["rule"]
     assert abs(doc["pair"]["contact_ratio"]["error_pct"]) < 1e-7 and abs(doc["planetary"]["ratio"]["error_pct"]) < 1e-7
     code, uk, _ = run(["gears", str(GEARS)])
     code2, en, _ = run(["gears", str(GEARS_B)])

@@ -134,7 +134,7 @@ def test_table_2_prints_both_largest_slidings_to_one_count_of_decimals(sheet51):
     assert all(len(side.strip().split(",")[1]) == 2 for side in row.split("≥")), row
     sol, mesh, vel, _ = sheet51           # the terminal's lines of the same constructions
     text = "\n".join(pair_lines(gears_json(sol, mesh, vel, "")["pair"], "uk"))
-    assert "λ1 = 1,351, λ2 = 1,420" in text
+    assert "|λ1| = 1,351, |λ2| = 1,420" in text      # (their magnitudes: λ1(B1) < 0)
 
 
 def test_table_3_writes_the_neighbourhood_condition_out(sheet51):

@@ -36,8 +36,8 @@ POINTED = 0.25              # sa ≥ 0.25·m
 CONTACT_MIN = 1.2           # εα ≥ 1.2
 RATIO_TOLERANCE = 0.04      # the train's ratio within ±4 %
 AUTO_GRID = (-0.5, 1.2, 0.05)   # the "auto" rule's shifts: from, to, step
-AUTO_RULE = "blocking-contour zone, least greatest specific sliding"
-AUTO_RULE_UK = "зона блокувального контуру, найменше найбільше питоме ковзання"
+AUTO_RULE = "blocking-contour zone, the smallest maximum specific sliding"
+AUTO_RULE_UK = "зона блокувального контуру, найменше з найбільших питомих ковзань"
 Z_EXTERNAL_MIN = 17         # an external wheel of a train cut without shift (2h*a/sin²α = 17.1 at 20°)
 Z_PLANET_INTERNAL_MIN = 20  # a planet meshing with the ring
 Z_RING_MIN = 85             # the ring (internal) wheel cut by a shaper cutter without interference
@@ -229,7 +229,7 @@ def passes(sol: PairSolution) -> bool:
 def auto_shifts(pair: Pair) -> PairSolution:
     """The "auto" rule: the blocking contour's zone of the pair — every (x1, x2) on a 0.05 grid from
     −0.5 to 1.2 where there is no undercut, sa ≥ 0.25m, εα ≥ 1.2 and no interference — and in it the
-    shifts with the least greatest specific sliding max(|λ1(B1)|, |λ2(B2)|) (the sliding made as
+    shifts with the smallest maximum specific sliding max(|λ1(B1)|, |λ2(B2)|) (the sliding made as
     equal as the zone allows); ties to the larger εα, then the smaller x1, x2. One line naming the
     conditions that close the zone when no grid point passes."""
     lo, hi, step = AUTO_GRID

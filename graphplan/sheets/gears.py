@@ -120,7 +120,7 @@ WORDS = {
                     "of it; hence the bound of u_{{1H}}",
            "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
                     "with u_{{1H}} within ±4 %: the smallest outer diameter",
-           "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), lost: D/m = {D} against "
+           "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), rejected: D/m = {D} against "
                      "{D0} — the rule takes the smaller train, ±4 % being allowed",
            "tip": "; s_{{a{k}}} read off a chord of {c} mm: its bound from the drafting precision ±{b} % {v}",
            "tip_in": "(within)", "tip_out": "(outside)",
@@ -236,8 +236,11 @@ def train_table(doc: dict, lang: str) -> Record:
             [w["u"].split(":")[0], bare(ue), bare(ug) if ug else "—",
              _pct(ud, "!" if r["outside_bound"] else "")]]
     if t["ratio_required"] is not None:
+        # the chosen train's deviation from the task's ratio, a design quantity of the synthesis (not a
+        # reading): from the unrounded ratios, as the terminal's list of sets and the notes give it
+        # (review 54, item 22: 5,474 printed gave −0,47 where 104/19 against 5,5 is −0,4785 %)
         req = t["ratio_required"]
-        tr_, te_, d_ = agreeing(req, r["exact"], sig_decimals(r["exact"]), lang)
+        d_ = r.get("required_error_pct", 100.0 * (r["exact"] - req) / req)
         rows.append([w["u"].split(":")[0] + (" потрібне" if lang == "uk" else " wanted"),
                      _n(req, lang), "", _pct(d_)])
     for key in ("1", "2", "H"):
@@ -385,8 +388,8 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                 near, chosen = pair
                 out.append(w["nearer"].format(z=", ".join(map(str, near["z"])), r=_n(t["ratio_required"], lang),
                                               u=_n(near["ratio"], lang),
-                                              d=("0" if abs(near["error_pct"]) < 0.05 else     # (not «+0,0 %»)
-                                                 fixed(near["error_pct"], lang, 1, plus=True).replace("-", "−")),
+                                              d=("0" if abs(near["error_pct"]) < 0.005 else    # (not «+0,00 %»)
+                                                 fixed(near["error_pct"], lang, 2, plus=True).replace("-", "−")),
                                               D=near["diameter_modules"], D0=chosen["diameter_modules"]))
         out += [w["warn"] + typeset(x) for x in t[key]]
         parts.append(out)
@@ -719,13 +722,14 @@ def _beside_smaller(sol, mesh, f: Form, lang: str) -> None:
 def _slide(sol, mesh, f: Form, plan: Record | None, lang: str) -> None:
     """The meshing's λ diagrams (``mesh.lam``) with the unit their place takes: beside the meshing, as
     tall as it with its caption; on A1 in the row under it beside the planetary pictures, as tall as the
-    row's room within the meshing's height; in a set, as tall as the planetary pictures."""
+    row's room under the meshing; in a set, as tall as the planetary pictures."""
     region = field_of(f)
     if beside(f, mesh, lang):
         row_h = mesh.record.bounds()[3] - mesh.record.bounds()[1] + 12.0
-    elif f.name == "A1":
-        top = meshing_leaf(mesh, lang).bounds()
-        row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+    elif f.name == "A1":                  # the row's whole room under the meshing (review 54, item 23: capped
+        top = meshing_leaf(mesh, lang).bounds()     # at the meshing's 223 mm, 11/53's λ stood at 40 mm a unit
+        row_h = max(SLIDING_H, region[3] - region[1] - (top[3] - top[1]) - 2 * GAP)   # over a 320 × 130-mm
+        #                                           blank; ``lambda_unit`` keeps four units within 0.75 N1N2)
     else:
         row_h = max(SLIDING_H, plan.bounds()[3] - plan.bounds()[1] if plan else 0.0)
     mu_x = mesh.lam.scales["mu_l"] if mesh.lam is not None else lambda_mu(sol.pair, mesh.mu_l)   # (its own:
@@ -905,7 +909,7 @@ def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k
     from graphplan.graphic.gears import ENLARGE, REDUCE
     now = mesh.lam.scales["mu_l"]
     top = meshing_leaf(mesh, lang).bounds()
-    row_h = max(SLIDING_H, min(region[3] - region[1] - (top[3] - top[1]) - 2 * GAP, top[3] - top[1]))
+    row_h = max(SLIDING_H, region[3] - region[1] - (top[3] - top[1]) - 2 * GAP)     # (as ``_slide``)
     old = mesh.lam
     for scale in sorted(ENLARGE + REDUCE, reverse=True):
         mu_x = 0.001 / scale
@@ -975,7 +979,20 @@ def _set(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Fo
                     big["sliding"] = lam
             tried.append(set_pages(d + side, f, lambda n, w: Leaf(n, record=note_block(lines[n], w)), larger))
     tried = [t for t in tried if t is not None]
-    return min(tried, key=len) if tried else None
+    # the fewest sheets, then the notes on the sheet of the tables they explain (review 54: the 11/53 A3 set
+    # took the 8,4-mm rows and sent the pair's notes to the planetary sheet, under the train's pictures,
+    # where the 7-mm rows keep them by Tables 1 and 2 — the same count of sheets), then the larger tables
+    return min(tried, key=lambda t: (len(t), _notes_apart(t))) if tried else None
+
+
+def _notes_apart(pages) -> int:
+    """How many parts of a set's notes stand on a sheet without a table they explain (gearset ``OWN``)."""
+    from graphplan.sheets.gearset import OWN
+    out = 0
+    for page in pages:
+        names = {p.name for p in page}
+        out += sum(1 for n, own in OWN.items() if n in names and not names & set(own))
+    return out
 
 
 SET_GROW = (3.0, 2.5, 2.0, 1.8, 1.6, 1.4, 1.3, 1.2, 1.1)    # a set's planetary pictures, × (80, 60, 100) mm, tried

@@ -97,6 +97,10 @@ def _groupings(items: list[Leaf]) -> list:
     if len(items) == 1:
         return [items[0]]
     out = [Row(list(items)), Stack(list(items))]
+    if len(items) == 2 and items[1].name in OWN and items[0].name in OWN[items[1].name]:
+        # a table and the notes that explain it one under another: kept together, the spare room round
+        # them (review 54: GEARS53/54's A3 last sheet stood Table 3 at its top, its notes 80 mm lower)
+        out[1] = Stack([Stack(list(items), flush=True)])
     if len(items) >= 3:
         out.append(Stack([items[0], Row(list(items[1:]))]))
         for i in range(1, len(items)):    # two columns: the first i, then the rest
@@ -158,6 +162,13 @@ def _page(leaves: list[Leaf], f: Form, first: bool):
             for ug in _groupings(under) or [None]:
                 node = dg if ug is None else (ug if dg is None else Stack([dg, ug]))
                 lefts += [(node, c) for c in _groupings(rest) or [None]]
+    tabs = [t for t in side if t.name not in NOTES]
+    tail = side[len(tabs):]
+    if len(drawings) == 1 and tabs and tail and side[:len(tabs)] == tabs and all(t.name in NOTES for t in tail):
+        # the drawing and its tables side by side, the notes under them (review 54: the 11/53 A3 set's λ
+        # diagrams, Tables 1 and 2 in a column and the pair's notes did not share a sheet one under
+        # another; the notes went under the planetary pictures, a sheet away from the tables they explain)
+        lefts += [(Row([drawings[0], tg]), c) for tg in _groupings(tabs) for c in _groupings(tail)]
     if len(drawings) >= 2 and side:       # the first drawing across the top, the others with the tables and
         top, under = drawings[0], Row(list(drawings[1:]) + side)      # notes beside them under it, left of
         tw, th = _extent(top)                                         # the title block (stop 47: 11/29's
