@@ -611,6 +611,7 @@ def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
 SHAPES = ("bands", "column", "speed", "nook", "side")
 UPWARD = 2                    # the larger sizes tried for the energy–mass diagram (``larger``) …
 UPWARD_L = 3                  # … each at the classical L and the next shorter ones of the series
+UPWARD_SPARE = 60.0           # mm of the field's height left bare under the moments that a larger diagram may cost
 NOOKED = ("nook", "side")     # the band at the right over the title block, the column at the left under the moments
 NOOK_SPEED = 160.0            # mm: the least width of the nook "nook" sets ω(φ) and the notes in
 NOOK_ASPECT = 1.0             # ω(φ) there as tall as its abscissa (the nook is narrow and tall: at ¾ the
@@ -895,8 +896,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
         """The sheet's main construction first (LAYOUT.md): the energy–mass diagram (its scales μ_I, μ_T
         set by ``size`` alone) at the next larger sizes (``UPWARD``), the moments' abscissa L as long as
         the classical composition's or shorter (``UPWARD_L`` steps of the series), where a composition
-        holds the band there with a φ axis no shorter than at the classical scales — ω(φ), a secondary
-        chart, in the room that remains. The classical composition stacks the diagram under the moments
+        holds the band there with a φ axis no shorter than at the classical scales at the right beside the
+        moments ("nook", "side": ω(φ), a secondary chart, in the room that remains under ΔT(φ) or the
+        moments — in "speed" it would take the whole room right of them again: s1_cylinder at 1.15,
+        ~430 × 250 mm) and leaves no more than ``UPWARD_SPARE`` mm bare under the moments (``adrift``). The classical composition stacks the diagram under the moments
         and ends height-bound at L 330 (the crusher: the diagram ~100 × 190 mm, ω(φ) ~380 × 260 beside
         it; review 54 #15), where the band at the right beside shorter moments holds it larger."""
         base = held(*found_, quick=False)
@@ -908,9 +911,23 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
             for L_ in Ls:
                 if may_hold(L_, size_):
                     got = held(L_, size_, quick=False)
-                    if got is not None and got[5] >= base[5] - 1e-9:
+                    if got is not None and got[3] in NOOKED and got[5] >= base[5] - 1e-9 and not adrift(got):
                         return got
         return base
+
+    def adrift(got) -> bool:
+        """The band at the right ("nook", "side") leaves more than ``UPWARD_SPARE`` mm of the field's
+        height empty under the moments and the column there (s1_cylinder at 1.5: the tables 2.5 mm
+        high ~150 mm under the short moments, ~600 × 150 mm of bare paper): the larger diagram then
+        costs the sheet more than it gains."""
+        L_, size_, factor, shape, parts, _, in_nook = got
+        if shape not in NOOKED:
+            return False
+        leaves, tables, notes_, _ = measured(L_, size_, factor)
+        C = _column(f, tables, parts, None if in_nook or shape == "nook" else lambda w: notes_height(notes_, w),
+                    shape)[0]
+        under = C.h if shape == "nook" else max(C.h, leaves["speed"].h)
+        return H - (leaves["moments"].h + GAP + under) > UPWARD_SPARE + 1e-9
 
     def may_hold(L: float, size: float) -> bool:
         """The moments' and the band's least boxes (at its shortest φ axis) fit the field in some
