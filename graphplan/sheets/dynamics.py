@@ -737,7 +737,7 @@ def _construction_key(st: Study, dyn, f: Form, args) -> tuple:
     return (repr(st.mech), dyn.delta, f.name, f.width, f.height, getattr(args, "divisions", None), args.precision)
 
 
-def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> tuple:
+def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upward: bool = True) -> tuple:
     """``construction`` computed (its table of the positions known to fit a sheet); ``scales_only``:
     (L, size) as soon as they are known to stand (``construction_scales``)."""
     x0, y0, x1, y1 = field_of(f)
@@ -952,7 +952,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
     floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
-        got = larger(found) if abs(built(*found).kl) >= floor - 1e-9 else None   # (the energy–mass
+        got = larger(found) if upward and abs(built(*found).kl) >= floor - 1e-9 else None   # (the energy–mass
         if got is not None:                                                       # diagram first)
             return got[:2] if scales_only else got
         for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
@@ -1103,8 +1103,22 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
     the ruler's 0.5 mm over |kl|), or None on A1 itself."""
     if f.name == "A1":
         return None
-    L, size = construction_scales(st, dyn, form("A1"), args)
+    L, size = _classical_scales(st, dyn, form("A1"), args)
     return abs(_built(dyn, args, L, size).kl)
+
+
+def _classical_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
+    """``construction_scales`` without the larger energy–mass diagram (``larger``): the scales the set's
+    target |kl| is read at (the slotter's A2 set aimed at the A1 sheet's |kl| at 1.5 no longer held
+    its moments on the first sheet: its tables came first)."""
+    if _table_overflow(st, dyn, f, args):
+        return _sizes(st)[-1]
+    key = ("classical",) + _construction_key(st, dyn, f, args)
+    if key not in _SCALES:
+        if len(_SCALES) >= 64:
+            _SCALES.pop(next(iter(_SCALES)))
+        _SCALES[key] = _construction(st, dyn, f, args, scales_only=True, upward=False)[:2]
+    return _SCALES[key]
 
 
 @dataclass(frozen=True)
