@@ -6226,3 +6226,94 @@ planets = 4
 module = 0.0025
 omega = 120.0
 '''
+
+
+COUPLER_SLIDER54 = '''# A crank-rocker four-bar whose coupler point C drives a slider D on an offset horizontal guide
+# through the rod CD (a six-bar: I(0-1) -> II(2-3) -> II(4-5)); press feed drive.
+title = "Шестиланковий механізм подачі з шатунною точкою"
+title_en = "Six-bar feed mechanism driven by a coupler point"
+designation = "TMM.CP.54.000"
+lang = "en"
+
+[sheet]
+student = "O. Hnatiuk"
+teacher = "V. Melnyk"
+group = "ME-32"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.26, -0.04]
+
+[frame.guides]
+feed = { through = [0, 0.22], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 150
+points = { S1 = 0.0 }
+mass = 2.5
+inertia = 0.003
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+shape = { C = [0.13, 0.09] }
+points = { S2 = [0.11, 0.03] }
+mass = 5
+inertia = 0.03
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+points = { S3 = 0.5 }
+mass = 3
+inertia = 0.008
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.27
+points = { S4 = 0.5 }
+mass = 3.5
+inertia = 0.021
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "feed"
+mass = 12
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "max"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 650
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.95
+synchronous_rpm = 1000
+'''

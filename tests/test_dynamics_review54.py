@@ -233,3 +233,42 @@ def test_the_crushers_a3_set_draws_delta_t_longer_than_the_turned_inertia():
     for name in ("energy", "wittenbauer", "inertia"):
         b = by[name].bounds()
         assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6, name
+
+
+def test_the_shapers_point_numbers_stand_clear_of_the_projections(shaper):
+    """Each point number of the energy–mass diagram set beside its point (no leader) keeps ≥ 1 mm of
+    paper from every projection line (stop 54: the shaper's "2" stood ~0.5 mm right of its vertical
+    projection and read as "12") — measured on the drawn ink."""
+    from shapely.geometry import LineString, box
+    seen = 0
+    for q in shaper.placed:
+        items = q.record.items
+        lines = [(LineString(p.points), p.line_width / 2) for p in items
+                 if p.kind == "segment" and p.role == "projection"]
+        led = {p.step for p in items if p.kind == "segment" and p.role == "label"}
+        for p in items:
+            if p.kind != "text" or not (p.step or "").startswith("point ") or not p.text.isdigit() or p.step in led:
+                continue
+            ink = box(*p.ink())
+            seen += 1
+            for line, half in lines:
+                assert ink.distance(line) - half >= 1.0 - 1e-6, (p.text, round(ink.distance(line) - half, 2))
+    assert seen >= 6
+
+
+@pytest.mark.slow
+def test_the_energy_mass_diagram_outweighs_the_speed_chart():
+    """Review 54 #15 (the coupler-slider six-bar, A1 en): the secondary ω(φ) chart (with its legend)
+    no longer dwarfs the energy–mass diagram, the sheet's main construction (its axes and curve): at
+    most twice its box's area — it was ~6 times (ω(φ) ~334 × 244 mm beside the diagram's ~130 × 99);
+    measured on the placed drawings."""
+    from conftest import scene_sheet
+    from review_scenes import COUPLER_SLIDER54
+    sheet = scene_sheet(COUPLER_SLIDER54, "dynamics", "A1", "en")
+    by = {p.name: p for p in sheet.placed}
+    band = next(q for q in sheet.placed if q.name in ("band", "wittenbauer"))
+    witt = [p for p in band.record.items if (p.step or "").startswith(("ΔT(I*)", "I* axis", "ΔT axis"))]
+    xs = [x for p in witt for x, _ in p.points]
+    ys = [y for p in witt for _, y in p.points]
+    sx0, sy0, sx1, sy1 = by["speed"].record.bounds()
+    assert (sx1 - sx0) * (sy1 - sy0) <= 2.0 * (max(xs) - min(xs)) * (max(ys) - min(ys))

@@ -26,6 +26,8 @@ from graphplan.graphic.record import LabelRequest, Primitive, Record, vector_arr
 Box = tuple[float, float, float, float]
 
 CLEAR = 0.5          # mm of paper between a label's ink and a line's ink when placing
+NUMBER_LINE_CLEAR = 1.2   # … a diagram's point number set beside its point (``place_beside``): 0.5 mm
+#                      from a projection line the shaper's "2" read as "12" (the line a one's stroke)
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
 APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d")
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
@@ -461,7 +463,7 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
     return record
 
 
-def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
+def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None, clear: float = CLEAR):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     # the first free spot in order of preference: the nearer rings counted first (most labels find
@@ -470,7 +472,7 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
     for lo, hi in ((0, rings), (rings, len(boxes))):
         if lo >= hi:
             continue
-        free = np.nonzero(_counts(ob, boxes[lo:hi], number=_number(req)) == 0)[0] + lo
+        free = np.nonzero(_counts(ob, boxes[lo:hi], clear, number=_number(req)) == 0)[0] + lo
         for k in free.tolist():
             if req.sight and not _in_sight(ob, req.at, boxes[k]):
                 continue
@@ -1229,7 +1231,8 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     for req in asked:
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink)
+        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink,
+                     clear=NUMBER_LINE_CLEAR if is_number(req.text) else CLEAR)
         if spot is not None and _box_gap(spot[0], req.at) <= beside:
             record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
                          layer=layer)

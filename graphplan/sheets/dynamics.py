@@ -609,6 +609,9 @@ def _classical(shape: str, d: dict[str, Leaf], C: Leaf):
 
 
 SHAPES = ("bands", "column", "speed", "nook", "side")
+UPWARD = 2                    # the larger sizes tried for the energy–mass diagram (``larger``) …
+UPWARD_L = 3                  # … each at the classical L and the next shorter ones of the series
+UPWARD_SPARE = 60.0           # mm of the field's height left bare under the moments that a larger diagram may cost
 NOOKED = ("nook", "side")     # the band at the right over the title block, the column at the left under the moments
 NOOK_SPEED = 160.0            # mm: the least width of the nook "nook" sets ω(φ) and the notes in
 NOOK_ASPECT = 1.0             # ω(φ) there as tall as its abscissa (the nook is narrow and tall: at ¾ the
@@ -734,7 +737,7 @@ def _construction_key(st: Study, dyn, f: Form, args) -> tuple:
     return (repr(st.mech), dyn.delta, f.name, f.width, f.height, getattr(args, "divisions", None), args.precision)
 
 
-def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> tuple:
+def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upward: bool = True) -> tuple:
     """``construction`` computed (its table of the positions known to fit a sheet); ``scales_only``:
     (L, size) as soon as they are known to stand (``construction_scales``)."""
     x0, y0, x1, y1 = field_of(f)
@@ -843,10 +846,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
             lo = k + 1
     L, size = found if found is not None else sizes[-1]
 
-    def held(L: float, size: float):
+    def held(L: float, size: float, quick: bool = scales_only):
         """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
-        nook where they fit it), or None."""
-        if scales_only:                   # the band at its shortest φ axis (the notes in the column)
+        nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest."""
+        if quick:                         # the band at its shortest φ axis (the notes in the column)
             shortest = _lengths(L)[-1]
             for factor in (TABLES, 1.0):
                 leaves, tables, notes_, _ = measured(L, size, factor)
@@ -889,6 +892,52 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
                                     parts = ROWED
                                 return L, size, factor, shape, parts, length, in_nook
         return None
+    def larger(found_: tuple[float, float]):
+        """The sheet's main construction first (LAYOUT.md): the energy–mass diagram (its scales μ_I, μ_T
+        set by ``size`` alone) at the next larger sizes (``UPWARD``), the moments' abscissa L as long as
+        the classical composition's or shorter (``UPWARD_L`` steps of the series), where a composition
+        holds the band there with a φ axis no shorter than at the classical scales at the right beside the
+        moments ("nook", "side": ω(φ), a secondary chart, in the room that remains under ΔT(φ) or the
+        moments — in "speed" it would take the whole room right of them again: s1_cylinder at 1.15,
+        ~430 × 250 mm) and leaves no more than ``UPWARD_SPARE`` mm bare under the moments (``adrift``). The classical composition stacks the diagram under the moments
+        and ends height-bound at L 330 (the crusher: the diagram ~100 × 190 mm, ω(φ) ~380 × 260 beside
+        it; review 54 #15), where the band at the right beside shorter moments holds it larger."""
+        base = held(*found_, quick=False)
+        if base is None:
+            return None
+        ups = sorted({k for _, k in sizes if k > found_[1] + 1e-9})[:UPWARD]
+        Ls = sorted({L_ for L_, _ in sizes if L_ <= found_[0] + 1e-9}, reverse=True)[:UPWARD_L]
+        for size_ in reversed(ups):
+            for L_ in Ls:
+                if may_hold(L_, size_):
+                    got = held(L_, size_, quick=False)
+                    if got is not None and got[3] in NOOKED and got[5] >= base[5] - 1e-9 and not adrift(got):
+                        return got
+        return base
+
+    def adrift(got) -> bool:
+        """The band at the right ("nook", "side") leaves more than ``UPWARD_SPARE`` mm of the field's
+        height empty under the moments and the column there (s1_cylinder at 1.5: the tables 2.5 mm
+        high ~150 mm under the short moments, ~600 × 150 mm of bare paper): the larger diagram then
+        costs the sheet more than it gains."""
+        L_, size_, factor, shape, parts, _, in_nook = got
+        if shape not in NOOKED:
+            return False
+        leaves, tables, notes_, _ = measured(L_, size_, factor)
+        C = _column(f, tables, parts, None if in_nook or shape == "nook" else lambda w: notes_height(notes_, w),
+                    shape)[0]
+        under = C.h if shape == "nook" else max(C.h, leaves["speed"].h)
+        return H - (leaves["moments"].h + GAP + under) > UPWARD_SPARE + 1e-9
+
+    def may_hold(L: float, size: float) -> bool:
+        """The moments' and the band's least boxes (at its shortest φ axis) fit the field in some
+        composition: the band under the moments, or at the right beside them over the title block —
+        nothing drawn where they do not (``held`` draws every drawing in both languages)."""
+        fw = built(L, size)
+        (mw, mh), (bw, bh) = moments_least(fw), band_least(fw, _lengths(L)[-1])
+        return ((max(mw, bw) <= W + 1e-9 and mh + bh <= H + 1e-9)
+                or (mw + bw <= W + 1e-9 and bh + foot <= H + 1e-9))
+
     def rowed(leaves, tables, shape: str, foot_: float, in_nook: bool, notes_) -> bool:
         """ω(φ) over the column beside the moments and the band ("speed") spans the room right of
         them, the one column of tables only its width: the results' tables side by side under the
@@ -903,6 +952,9 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False) -> t
     floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
+        got = larger(found) if upward and abs(built(*found).kl) >= floor - 1e-9 else None   # (the energy–mass
+        if got is not None:                                                       # diagram first)
+            return got[:2] if scales_only else got
         for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
             if k > start and fit(k) is None:  # its one A1 sheet came out as three)
                 continue
@@ -1051,8 +1103,22 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
     the ruler's 0.5 mm over |kl|), or None on A1 itself."""
     if f.name == "A1":
         return None
-    L, size = construction_scales(st, dyn, form("A1"), args)
+    L, size = _classical_scales(st, dyn, form("A1"), args)
     return abs(_built(dyn, args, L, size).kl)
+
+
+def _classical_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
+    """``construction_scales`` without the larger energy–mass diagram (``larger``): the scales the set's
+    target |kl| is read at (the slotter's A2 set aimed at the A1 sheet's |kl| at 1.5 no longer held
+    its moments on the first sheet: its tables came first)."""
+    if _table_overflow(st, dyn, f, args):
+        return _sizes(st)[-1]
+    key = ("classical",) + _construction_key(st, dyn, f, args)
+    if key not in _SCALES:
+        if len(_SCALES) >= 64:
+            _SCALES.pop(next(iter(_SCALES)))
+        _SCALES[key] = _construction(st, dyn, f, args, scales_only=True, upward=False)[:2]
+    return _SCALES[key]
 
 
 @dataclass(frozen=True)
