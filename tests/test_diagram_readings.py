@@ -163,3 +163,29 @@ def test_the_notes_percents_are_the_tables():
         assert said, notes
         assert all(s.replace(",", ".") in cells for s in said), (said, notes)
         assert not re.search(r"(positions|положеннях) \d+[.,]\d+ →", notes), notes
+        largest = max(abs(float(c.replace("−", "-"))) for c in cells if c.lstrip("+−") != "nan")
+        for quoted in re.findall(r"\|δ\| (\d+[.,]\d+) %", notes):   # the redrawing's line: the table's figure
+            assert float(quoted.replace(",", ".")) == pytest.approx(largest, abs=0.005), (quoted, largest, notes)
+
+
+def test_the_largest_printed_delta_skips_what_the_table_does_not_print():
+    """The redrawing's line quotes the largest |δ| of v and a as the table prints them (NaN where it
+    prints none; s has no δ column): the crusher's ε₅ −7,66 in Table 4 was quoted 7,67 (the search's
+    unrounded figure) in the line above the one quoting the table."""
+    from graphplan.report.diagrams import _largest_printed
+    got = _largest_printed({"v_at": np.array([1.0, np.nan, -2.5]), "a_at": np.array([np.nan, -7.66, 3.0])})
+    assert got == pytest.approx(7.66)
+    assert _largest_printed({"v_at": np.array([np.nan])}) is None and _largest_printed(None) is None
+
+
+@pytest.mark.slow
+def test_the_crushers_redrawing_line_quotes_table_4s_largest_delta():
+    """LINK54 (review 54): the notes' «найбільша |δ| X %» is Table 4's largest printed |δ| (7,66)."""
+    st = scene_study(review_scenes.LINK54)
+    p, _, dr = plan(st, form("A1"), SheetOptions(sheet="kinematics", lang="uk"))
+    diag = dr.diagrams(p.diagrams, "uk")
+    cells = [abs(r[k]) for r in printed_readings(diag, plans_json(dr.plans(p.mu)), "uk", 0.5)
+             for k in ("delta_v", "delta_a") if r[k] is not None]
+    notes = " ".join(notes_lines(st, dr.plans(p.mu), diag, "uk", 0.5))
+    quoted = re.findall(r"\|δ\| (\d+,\d+) %", notes)
+    assert quoted and all(float(q.replace(",", ".")) == pytest.approx(max(cells), abs=0.005) for q in quoted), notes

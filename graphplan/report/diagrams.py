@@ -99,12 +99,21 @@ def sheet_notes(d: Diagrams, lang: str, table: int | None = None,
     what = word("sliding output" if d.output.kind == "slide" else "rotating output", lang) + f" {subscripted(d.point)}"
     lines = [word("diagrams title", lang, what=what, how=method_words(d, lang))
              + ", " + word("divisions count", lang, n=d.divisions)]
-    said = redrawn_note(d, lang, short=True)
+    said = redrawn_note(d, lang, short=True, largest=_largest_printed(printed))
     lines += [said] if said else []
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
     said = short_limit_note(d, lang, table, printed)
     lines += [said] if said else []
     return lines
+
+
+def _largest_printed(printed: dict[str, np.ndarray] | None) -> float | None:
+    """The largest |δ| of v and a as the sheet's table prints them (NaN where it prints none), so the
+    redrawing's line quotes the table's figure (not the search's unrounded one: 7,67 beside 7,66)."""
+    vals = [np.abs(np.asarray(printed[k], dtype=float)) for k in ("v_at", "a_at") if printed and k in printed]
+    vals = [v[np.isfinite(v)] for v in vals]
+    vals = [v for v in vals if v.size]
+    return float(max(v.max() for v in vals)) if vals else None
 
 
 def as_drawn(d: Diagrams, errs: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -326,7 +335,7 @@ def _tried(d: Diagrams, lang: str) -> str:
     return (f"; випробувано: {', '.join(items)} — {verdict}" if uk else f"; tried: {', '.join(items)} — {verdict}")
 
 
-def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
+def redrawn_note(d: Diagrams, lang: str, short: bool = False, largest: float | None = None) -> str | None:
     """What graphic.redraw did, in one line (markup): the options the diagrams were redrawn with so
     that they are qualitatively right, or read closer to the exact at the positions (the largest
     |δ| before → after), or that nothing the lab allows made them right. ``short`` (the sheet's):
@@ -388,7 +397,7 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False) -> str | None:
                          f"smaller intervals where the curve bends ({d.divisions} divisions)")
     how = ", ".join(parts)
     if short:
-        return _chosen_note(d, rd, how, lang)
+        return _chosen_note(d, rd, how, lang, largest)
     off = ""
     if rd.off_before is not None and rd.off_after is not None:
         a, b = fixed(rd.off_before, lang, 2), fixed(rd.off_after, lang, 2)     # as Table 5's δ, two decimals
@@ -413,7 +422,7 @@ def _given(d: Diagrams, key: str) -> float | None:
     return None if value is None else float(value)
 
 
-def _chosen_note(d: Diagrams, rd, how: str, lang: str) -> str | None:
+def _chosen_note(d: Diagrams, rd, how: str, lang: str, largest: float | None = None) -> str | None:
     """The sheet's line for a redrawing (``redrawn_note`` short): what was drawn and why it was chosen —
     a statement, not the search: the options drawn (``how``, the values on the sheet), and either that
     they make the diagrams qualitatively right (the options first taken gave extrema, zero crossings or
@@ -433,7 +442,7 @@ def _chosen_note(d: Diagrams, rd, how: str, lang: str) -> str | None:
                        f"{'have' if many else 'has'} no extrema, zero crossings or shoulders the motion lacks")
     if rd.off_after is None:
         return head.rstrip(" —")
-    off = fixed(rd.off_after, lang, 2)
+    off = fixed(rd.off_after if largest is None else largest, lang, 2)     # the table's figure where it prints one
     if rd.within:
         return head + (f"обрано, щоб значення з діаграм у положеннях вкладалися в 5 % лабораторної "
                        f"(найбільша |δ| {off} %)" if uk else
