@@ -26,8 +26,6 @@ from graphplan.graphic.record import LabelRequest, Primitive, Record, vector_arr
 Box = tuple[float, float, float, float]
 
 CLEAR = 0.5          # mm of paper between a label's ink and a line's ink when placing
-NUMBER_LINE_CLEAR = 1.2   # … a diagram's point number set beside its point (``place_beside``): 0.5 mm
-#                      from a projection line the shaper's "2" read as "12" (the line a one's stroke)
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
 APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d")
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
@@ -463,7 +461,7 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
     return record
 
 
-def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None, clear: float = CLEAR):
+def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
     gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     # the first free spot in order of preference: the nearer rings counted first (most labels find
@@ -472,7 +470,7 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None, clear: float 
     for lo, hi in ((0, rings), (rings, len(boxes))):
         if lo >= hi:
             continue
-        free = np.nonzero(_counts(ob, boxes[lo:hi], clear, number=_number(req)) == 0)[0] + lo
+        free = np.nonzero(_counts(ob, boxes[lo:hi], number=_number(req)) == 0)[0] + lo
         for k in free.tolist():
             if req.sight and not _in_sight(ob, req.at, boxes[k]):
                 continue
@@ -1010,8 +1008,7 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
                      others: list[tuple[complex, complex]], layer: str = "labels") -> Record:
     """A force's letter that must read as its own arrow's where other arrows pass near (Φ4 and P_E
     side by side at the press's ram): the first free spot beside the first of its anchors (its
-    head, then along its shaft) that ``owns_line`` with no line between it and the anchor
-    (``_in_sight``); else farther out, on a leader, where the box
+    head, then along its shaft) that ``owns_line``; else farther out, on a leader, where the box
     still does; else as ``place_labels`` places any label."""
     if _SKETCH[-1] or not alternatives:
         return record
@@ -1024,10 +1021,8 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
         gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
         local = ob.near(req.at, NEAR[-1] + size)
         boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
-        # … and no line between the letter and its anchor (stop 54: "Φ2" beside its head but across
-        # the link AC, 4.5 mm out, read as the side AC's name)
         k = next((k for k in np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
-                  if owns_line(tuple(boxes[k]), mine, near) and _in_sight(local, req.at, boxes[k])), None)
+                  if owns_line(tuple(boxes[k]), mine, near)), None)
         if k is not None:
             record.label((starts[k].real, starts[k].imag), req.text, size=req.size, anchor="start",
                          step=req.step, layer=layer)
@@ -1231,8 +1226,7 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     for req in asked:
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink,
-                     clear=NUMBER_LINE_CLEAR if is_number(req.text) else CLEAR)
+        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink)
         if spot is not None and _box_gap(spot[0], req.at) <= beside:
             record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
                          layer=layer)
