@@ -1008,7 +1008,8 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
                      others: list[tuple[complex, complex]], layer: str = "labels") -> Record:
     """A force's letter that must read as its own arrow's where other arrows pass near (Φ4 and P_E
     side by side at the press's ram): the first free spot beside the first of its anchors (its
-    head, then along its shaft) that ``owns_line``; else farther out, on a leader, where the box
+    head, then along its shaft) that ``owns_line`` with no line between it and the anchor
+    (``_in_sight``); else farther out, on a leader, where the box
     still does; else as ``place_labels`` places any label."""
     if _SKETCH[-1] or not alternatives:
         return record
@@ -1021,8 +1022,10 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
         gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
         local = ob.near(req.at, NEAR[-1] + size)
         boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
+        # … and no line between the letter and its anchor (stop 54: "Φ2" beside its head but across
+        # the link AC, 4.5 mm out, read as the side AC's name)
         k = next((k for k in np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
-                  if owns_line(tuple(boxes[k]), mine, near)), None)
+                  if owns_line(tuple(boxes[k]), mine, near) and _in_sight(local, req.at, boxes[k])), None)
         if k is not None:
             record.label((starts[k].real, starts[k].imag), req.text, size=req.size, anchor="start",
                          step=req.step, layer=layer)
