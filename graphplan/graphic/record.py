@@ -8,6 +8,7 @@ a sheet: "v_B = v_A + v_BA") and the layer it is drawn on.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -128,15 +129,28 @@ def turned(box: tuple[float, float, float, float], at: Point, turn: float) -> tu
     return min(xs), min(ys), max(xs), max(ys)
 
 
-# characters osifont lacks, replaced on the drawing (records keep the real text)
-LETTERING = {"−": "-", "→": "->", "∑": "Σ", "√": "sqrt", "∆": "Δ", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t",
+# characters osifont lacks, replaced on the drawing (records keep the real text). The minus sign
+# (U+2212, which osifont lacks) is drawn as the en dash: in osifont a bar as long as the plus's
+# (0.40 em against its 0.37) at the plus's height, and in the font a viewer falls back to when it
+# ignores the sheet's @font-face (DejaVu Sans) a 0.40-em bar that fits the same advance — where its
+# hyphen is a short dash (0.26 em) and its own minus (0.63 em) runs into the next figure, set at
+# osifont's advances (docs/language.md, "The minus sign")
+LETTERING = {"−": "–", "→": "->", "∑": "Σ", "√": "sqrt", "∆": "Δ", "ᵏ": "k", "ⁿ": "n", "ᵗ": "t",
              "₀": "0", "₁": "1", "₂": "2", "₃": "3", "₄": "4", "₅": "5", "₆": "6", "₇": "7", "₈": "8", "₉": "9",
              "“": '"', "”": '"', "„": '"'}     # English quotes: osifont has « » only (review 13: boxes on a cam's notes)
 _LETTERING = str.maketrans(LETTERING)
 
 
+# a hyphen-minus that begins a number — at the text's start or after a space, a bracket or "=" —
+# is a sign typed as a hyphen ("-10" on an axis): drawn as the minus
+_SIGN = re.compile(r"(?<![^\s(\[{=/;:])-(?=[0-9]|[.,][0-9])")
+
+
 def lettering(text: str) -> str:
-    """The text as drawn with the GOST font (osifont): missing characters replaced."""
+    """The text as drawn with the GOST font (osifont): missing characters replaced, the minus sign
+    (typed as U+2212 or as a hyphen before a number) as the en dash (``LETTERING``)."""
+    if "-" in text:
+        text = _SIGN.sub("−", text)
     return text.translate(_LETTERING)
 
 
