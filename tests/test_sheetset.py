@@ -161,11 +161,13 @@ def test_the_designation_ends_in_the_documents_number(base, kind, expected):
 
 
 @pytest.mark.parametrize("base,kind,expected", [
-    ("ТММ.КП.08.400", "cam", "ТММ.КП.08.400"), ("ТММ.КП.08.000", "cam", "ТММ.КП.08.005"),
-    ("ТММ.КП.08.300", "gears", "ТММ.КП.08.300"), ("ТММ", "gears", "ТММ.4")])
+    ("ТММ.КП.08.400", "cam", "ТММ.КП.08.400"), ("ТММ.КП.08.000", "cam", "ТММ.КП.08.000"),
+    ("ТММ.КП.08.300", "gears", "ТММ.КП.08.300"), ("ТММ.ЗП.54.000", "gears", "ТММ.ЗП.54.000"),
+    ("ТММ", "gears", "ТММ"), ("", "cam", "")])
 def test_a_scenes_one_document_keeps_the_number_its_student_gave(base, kind, expected):
-    """A cam or gear scene is one document: its own number stands (review 8: ТММ.КП.08.400 printed as
-    .005); a group of zeros is the project's base, numbered by kind."""
+    """A cam or gear scene is one document, a project of its own ("Аркуш 1, Аркушів 1"): its
+    designation stands as written (review 8: ТММ.КП.08.400 printed as .005; stop 54: GEARS54's
+    ТММ.ЗП.54.000 printed as .004 — document 4 of a project without documents 1–3)."""
     assert designation(base, kind, alone=True) == expected
 
 
@@ -402,3 +404,15 @@ def test_an_assembly_error_speaks_the_scenes_language(tmp_path, capsys, lang, op
     assert main(["analyze", str(path), *option]) == 2
     lines = capsys.readouterr().err.strip().splitlines()
     assert len(lines) == 1 and words in lines[0] and str(path) in lines[0]
+
+
+@pytest.mark.slow
+def test_a_gear_scenes_sheet_carries_its_designation_as_written():
+    """The gallery's gear sheet (examples/gears.toml, "ТММ.03.00.000"), numbered as BUILDERS numbers
+    it: its title block prints the scene's designation unchanged, sheet 1 of 1 (stop 54's GEARS54
+    printed ТММ.ЗП.54.000 as .004)."""
+    from conftest import example_sheet
+    sheet = example_sheet("gears", "gears", "A1", "uk")
+    texts = _texts(sheet)
+    assert "ТММ.03.00.000" in texts and "ТММ.03.00.004" not in texts
+    assert "Аркуш 1" in texts and "Аркушів 1" in texts

@@ -95,17 +95,16 @@ def designation(base: str, kind: str, alone: bool = False) -> str:
     """The designation of the kind's document: the scene's ``base`` with its last group of digits
     replaced by the document's number, as wide as that group ("ТММ.КП.00.000" → "ТММ.КП.00.003"
     for the dynamics); a base not ending in digits gets ".N" appended; none stays none. The one
-    document of a scene (``alone``: a cam's or a gear pair's) keeps a number the student gave it
-    ("ТММ.КП.08.400" stays; only a group of zeros is the project's base)."""
+    document of a scene (``alone``: a cam's or a gear pair's) is a project of its own ("Аркуш 1,
+    Аркушів 1"): it carries the designation as the student wrote it — "ТММ.ЗП.54.000" stays, where
+    ".004" would name document 4 of a project that has no documents 1–3."""
     import re
-    if not base:
+    if not base or alone:
         return base
     n = document_number(kind)
     m = re.search(r"(\d+)$", base)
     if m is None:
         return f"{base}.{n}"
-    if alone and m.group(1).strip("0"):
-        return base
     return base[:m.start()] + str(n).zfill(len(m.group(1)))
 
 
