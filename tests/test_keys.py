@@ -5,6 +5,7 @@ from __future__ import annotations
 import io
 import json
 import math
+import re
 import tomllib
 from pathlib import Path
 
@@ -133,6 +134,15 @@ def test_bad_tables_are_one_line(capsys, tmp_path, text, words):
     assert not (tmp_path / "keys").exists()
 
 
+def test_a_skipped_variants_note_in_english_with_lang_en(capsys, tmp_path):
+    """``--lang en``: summary.json's note of the skipped variant is English, with no Cyrillic."""
+    path = table(tmp_path, SMALL)
+    code, _, _ = run(capsys, "key", path, "-o", tmp_path / "k", "--jobs", "1", "--quiet", "--no-pdf", "--lang", "en")
+    summary = json.loads((tmp_path / "k" / "summary.json").read_text())
+    note = summary["variants"][2]["note"]
+    assert code == 0 and "assembled" in note and not re.search("[А-Яа-яІіЇїЄє]", note), note
+
+
 def test_dotted_paths_and_link_names(tmp_path):
     path = table(tmp_path, "# base = @EX/crank_slider.toml\nvariant,link.AB.points.S2,crank.points.S1,omega\n"
                            "1,0.5,0.25,100\n")
@@ -163,6 +173,10 @@ def test_key_writes_every_file_skips_the_impossible_one_and_is_byte_identical(ca
     assert not (tmp_path / "k1" / "03").exists()
     summary = json.loads((tmp_path / "k1" / "summary.json").read_text())
     assert [e["status"] for e in summary["variants"]] == ["ok", "ok", "skipped"]
+    # the skipped variant's note in the run's language (Ukrainian here), as its row's (stop 55: it was English)
+    note = summary["variants"][2]["note"]
+    assert "II(2-3)" in note and "не" in note and not re.search("[A-Za-z]{4,}", note.replace("II(2-3)", "")), note
+    assert note == summary["rows"][2]["note"]
     code, _, _ = run(capsys, "key", path, "-o", tmp_path / "k2", "--jobs", "2", "--quiet")
     files = sorted(p.relative_to(tmp_path / "k1") for p in (tmp_path / "k1").rglob("*") if p.is_file())
     assert files == sorted(p.relative_to(tmp_path / "k2") for p in (tmp_path / "k2").rglob("*") if p.is_file())

@@ -199,9 +199,9 @@ def _variant_job(index: int) -> dict[str, Any]:
                            scene=tree, divisions=v.divisions or opt.divisions,
                            tolerances=[v.tolerances, opt.tolerances, table.tolerances])
     except GraphplanError as exc:
-        note, said_note = _note(exc, v.where(table.path), "en"), _note(exc, v.where(table.path), opt.lang)
+        said_note = _note(exc, v.where(table.path), opt.lang)     # in the run's language, as the rows'
         where = v.where(table.path)
-        return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": note}, "units": {},
+        return {"entry": {"variant": v.id, "status": "skipped", "key": None, "note": said_note}, "units": {},
                 "row": {"variant": v.id, "student": v.student, "status": "skipped", **v.overrides, "note": said_note},
                 "message": "graphplan: " + word("ky skipped", opt.lang, where=where.said.get(opt.lang, where)
                                                 if hasattr(where, "said") else where, note=said_note)}
