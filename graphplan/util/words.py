@@ -1312,9 +1312,9 @@ WORDS.update({
     "wb table large": ("таблиця більша за {kb} кБ", "the table is larger than {kb} kB"),
     "wb busy": ("сервер зайнятий: усі обчислювальні процеси працюють; спробуйте ще раз за мить",
                 "the server is busy: every worker is computing; try again in a moment"),
-    "wb timeout": ("обчислення тривало довше за {s} с і його зупинено (з меншою кількістю положень чи поділок "
-                   "креслення будується швидше)", "the work took longer than {s} s and was stopped (fewer positions "
-                   "or divisions draw faster)"),
+    "wb timeout": ("обчислення тривало довше за {s} с процесорного часу і його зупинено (з меншою кількістю "
+                   "положень чи поділок креслення будується швидше)", "the work took longer than {s} s of "
+                   "processor time and was stopped (fewer positions or divisions draw faster)"),
     "wb worker died": ("внутрішня помилка: процес, що це обчислював, несподівано завершився; наступний запит "
                        "візьме новий", "internal error: the worker computing this ended unexpectedly; a fresh one "
                        "takes the next request"),
