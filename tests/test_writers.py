@@ -14,6 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from graphplan.graphic.record import lettering
+
 from conftest import ROOT
 from svgwrite_reference import reference_render
 from graphplan.cli.main import main
@@ -149,6 +151,7 @@ def test_pdf_letters_each_word_where_the_record_puts_it(tmp_path, keyset):
             continue
         x, y = p.points[0]
         word, side = (words[0], 0) if p.anchor == "start" else (words[-1], 2)
+        word = lettering(word)                     # as drawn: a sign's hyphen the minus (the en dash)
         baseline = A4_PORTRAIT[1] - y
         near = [b for b in boxes.get(word, []) if abs(b[side] - x) < 1.0 and b[1] < baseline < b[3] + 0.5]
         assert near, p.text
