@@ -145,7 +145,8 @@ _TOML_WHY = ((re.compile(r"^Cannot declare \((?P<t>[^)]*)\) twice \(at line (?P<
              (re.compile(r"^Invalid value \(at line (?P<line>\d+), column \d+\)$"), "bad toml invalid"),
              (re.compile(r"^Expected '=' after a key in a key/value pair \(at line (?P<line>\d+), column \d+\)$"),
               "bad toml equals"),
-             (re.compile(r"^.* \(at end of document\)$"), "bad toml end"))
+             (re.compile(r"^.* \(at end of document\)$"), "bad toml end"),
+             (re.compile(r"^(?P<what>.+) \(at line (?P<line>\d+), column (?P<col>\d+)\)$"), "bad toml at"))
 
 
 def toml_why(message: str):
@@ -159,6 +160,12 @@ def toml_why(message: str):
             fields = {k: v for k, v in m.groupdict().items()}
             if "t" in fields:
                 fields["t"] = "[" + ".".join(x.strip().strip("'\"") for x in fields["t"].split(",") if x.strip()) + "]"
+            if "what" in fields:          # tomllib's words, in Ukrainian where the catalogue has them
+                from graphplan.util.words import TOML_SAID
+                what = fields.pop("what")
+                said = TOML_SAID.get(what) or (what.replace("Illegal character", "недопустимий символ", 1)
+                                               if what.startswith("Illegal character") else short(what, 100))
+                return lambda lang: word(key, lang, what=said if lang == "uk" else short(what, 100), **fields)
             return lambda lang: word(key, lang, **fields)
     return short(message, 120)
 

@@ -193,6 +193,24 @@ def scale_text(symbol: str, mu: float, unit_key: str, lang: str) -> str:
 
 # -- the catalogue ----------------------------------------------------------------------------------
 # key → (Ukrainian, English). Keys name the idea; a value may hold {fields} for str.format.
+# tomllib's own messages (Python 3.11–3.13) in Ukrainian: a scene's syntax error said in one language
+# ("bad toml at"; model.bounds.toml_why) — an unknown one stays as tomllib words it
+TOML_SAID = {
+    "Escaped character is not a Unicode scalar value": "екранований символ не є скалярним значенням Юнікоду",
+    "Expected ']' at the end of a table declaration": "бракує «]» наприкінці назви таблиці",
+    "Expected ']]' at the end of an array declaration": "бракує «]]» наприкінці назви масиву таблиць",
+    "Expected newline or end of document after a statement": "після значення очікувався кінець рядка",
+    "Invalid date or datetime": "недійсна дата чи час",
+    "Invalid hex value": "недійсне шістнадцяткове значення",
+    "Invalid initial character for a key part": "недійсний перший символ ключа",
+    "Invalid statement": "недійсний рядок сцени",
+    "Unclosed array": "незакритий масив (бракує «]»)",
+    "Unclosed inline table": "незакрита таблиця в рядку (бракує «}»)",
+    "Unescaped '\\' in a string": "неекранований «\\» у тексті",
+    "Unterminated string": "незакриті лапки",
+}
+
+
 WORDS: dict[str, tuple[str, str]] = {
     # sheets: captions and tables
     "position plan": ("План положень", "Position plan"),
@@ -1062,6 +1080,7 @@ WORDS.update({
     "bad toml end": ("файл уривається посеред значення: чи закрито дужки й лапки?",
                      "the file ends inside a value: are the brackets and quotes closed?"),
     "bad toml equals": ("після ключа бракує «=» (рядок {line})", "'=' missing after a key (line {line})"),
+    "bad toml at": ("{what} (рядок {line}, стовпець {col})", "{what} (at line {line}, column {col})"),
     "ex unknown name": ("невідоме ім'я {name} у {text}", "unknown name {name} in {text}"),
     "ex arithmetic": ("у {text} дозволена лише арифметика", "only arithmetic is allowed in {text}"),
     "ex cannot": ("не вдається обчислити {text}: {why}", "cannot evaluate {text}: {why}"),
