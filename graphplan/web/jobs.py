@@ -413,10 +413,21 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
     svg = _side_by_side(drawings, lang)
-    headers = {"X-Scene-Kind": "lever", "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
+    headers = {"X-Scene-Kind": "lever", "X-Sheet-Kinds": ",".join(sheet_kinds(mech)),
+               "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
                "X-Assemblies": quote(json.dumps([{"branch": c, "error": e} for c, _, e in drawings],
                                                 ensure_ascii=False))}
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml", headers=headers)
+
+
+def sheet_kinds(mech) -> list[str]:
+    """The sheets a lever mechanism's scene makes, in the project's order (sheets.sheet.kinds_of): the
+    kinematics, the forces where it loads a link, the dynamics where it has a [dynamics] table — what
+    the page offers to download (the preview's X-Sheet-Kinds)."""
+    from types import SimpleNamespace
+
+    from graphplan.sheets.sheet import kinds_of
+    return list(kinds_of(SimpleNamespace(mech=mech), "kinematics"))
 
 
 def _at(st, phi: float, lang: str):
@@ -518,7 +529,7 @@ def _cam_preview(tree: dict[str, Any], lang: str) -> Answer:
     sol = solve(build_cam(tree, SCENE))
     svg = _page(profile_drawing(sol, construct(sol, None, 0.5), lang))
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
-                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "cam"})
+                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "cam", "X-Sheet-Kinds": "cam"})
 
 
 def _gears_preview(tree: dict[str, Any], lang: str) -> Answer:
@@ -540,7 +551,7 @@ def _gears_preview(tree: dict[str, Any], lang: str) -> Answer:
     page, w, h = page_for(both)
     svg = render(page, w, h, both.title, embed_font=False)
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml",
-                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "gears"})
+                  headers={"X-Branch-Keys": "%5B%5D", "X-Scene-Kind": "gears", "X-Sheet-Kinds": "gears"})
 
 
 JOBS = {"check": check, "sheet": sheet, "view": view, "tables": tables, "grade": grade, "preview": preview}

@@ -16,11 +16,14 @@ const WORDS = {
     "make keys": "Скласти ключі", grading: "Оцінювання", "key file": "Ключ (key.json або zip ключів)",
     students: "Таблиця студента (CSV)", grade: "Оцінити", "grades csv": "Оцінки CSV",
     footer: "Усі обчислення — той самий graphplan, що й у командному рядку.",
-    chosen: "Обране складання", working: "Обчислюється…", ready: "Готово: ", uploaded: "Сцену завантажено з файла",
+    chosen: "Обране складання", working: "Обчислення:", ready: "Готово: ", uploaded: "Сцена з файла",
     "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
     passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
-    "assembly pick": "Обрати складання", uploaded_mode: "сцена з файла — поля шаблону не діють",
-    retry: "повторіть за", s: "с",
+    "assembly pick": "Обрати складання",
+    uploaded_mode: "поля шаблону до неї не застосовуються; щоб повернутися до них, оберіть схему",
+    retry: "повторіть за", s: "с", "sheet of": "аркуш", "sheets of": "аркуші", explorer: "інтерактивна сторінка",
+    tables: "таблиці CSV", "slow hint": "аркуш креслиться до хвилини, коли сервер зайнятий — довше",
+    "lang uk": "українська", "lang en": "English",
   },
   en: {
     title: "graphplan — graphical methods of TMM", student: "Student", teacher: "Teacher", language: "Language",
@@ -35,11 +38,14 @@ const WORDS = {
     "make keys": "Make the keys", grading: "Grading", "key file": "Key (key.json or the keys' zip)",
     students: "Student's table (CSV)", grade: "Grade", "grades csv": "Grades CSV",
     footer: "Every number is the same graphplan as on the command line.",
-    chosen: "Assembly chosen", working: "Working…", ready: "Ready: ", uploaded: "Scene loaded from the file",
+    chosen: "Assembly chosen", working: "Working on", ready: "Ready: ", uploaded: "The scene from",
     "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
     passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
-    "assembly pick": "Choose assembly", uploaded_mode: "scene from a file — the template's fields do not apply",
-    retry: "try again in", s: "s",
+    "assembly pick": "Choose assembly",
+    uploaded_mode: "the template's fields do not apply to it; choose a scheme to return to them",
+    retry: "try again in", s: "s", explorer: "the explorer",
+    tables: "the tables CSV", "slow hint": "a sheet takes up to a minute, longer when the server is busy",
+    "lang uk": "українська", "lang en": "English",
   },
 };
 
@@ -55,7 +61,21 @@ function translate() {
   document.documentElement.lang = state.lang;
   document.querySelectorAll("[data-t]").forEach((el) => { el.textContent = t(el.dataset.t); });
   document.title = t("title");
+  $("sheet-lang").querySelectorAll("option").forEach((o) => { o.textContent = t("lang " + o.value); });
   renderTemplates();
+  sayUploaded();
+  $("dl-status").textContent = "";               // said in the other language: not left mixed
+  $("dl-error").textContent = "";
+  if (state.grades) showGrades(state.grades);
+}
+
+function sayUploaded() {
+  // an uploaded scene: its name where the template's fields were, and how to return to them
+  const said = $("upload-said");
+  said.hidden = state.mode === "template";
+  said.textContent = state.mode === "template" ? "" :
+    `${t("uploaded")} ${state.uploaded || "TOML"}: ${t("uploaded_mode")}.`;
+  $("fields").hidden = state.mode !== "template";
 }
 
 // -- requests ---------------------------------------------------------------------------------------
@@ -186,6 +206,7 @@ function renderFields() {
     box.appendChild(row);
   });
   box.disabled = state.mode !== "template";
+  box.hidden = state.mode !== "template";
 }
 
 function clearFieldErrors() {
@@ -194,8 +215,15 @@ function clearFieldErrors() {
   $("scene-error").textContent = "";
 }
 
+function asUploaded(line) {
+  // "scene.toml: …" → "<the student's file>: …" (the server names the scene it was sent by a fixed name)
+  return state.mode === "toml" && state.uploaded && line.startsWith("scene.toml:")
+    ? state.uploaded + line.slice("scene.toml".length) : line;
+}
+
 function showError(line) {
   // "form: r: ... is not a number" → beside the field r; the rest (assembly ranges …) above the preview
+  line = asUploaded(line);
   const m = /^form: (\w+):/.exec(line);
   const input = m && $("f-" + m[1]);
   if (input) {
@@ -267,11 +295,14 @@ async function draw(seq) {
       : (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
     $("preview").classList.remove("stale");
     $("phi-row").hidden = kind !== "lever";          // a cam's profile, a gear's meshing: no crank angle
-    if (kind !== state.kind) defaultKinds(kind);     // a scene of another kind: its own sheet ticked
+    const offered = (r.headers.get("X-Sheet-Kinds") || (kind === "lever" ? "kinematics" : kind)).split(",");
+    offerKinds(offered, kind !== state.kind);        // only the sheets this scene makes; another kind: its first ticked
+    state.kind = kind;
     showAssemblies(keys, asm);
   } catch (e) {
     if (seq !== state.seq) return;
     showError(e.message);
+    if (e.status === 422) guessKinds(text);
     if (e.status === 503) setTimeout(changed, 1000 * Number(e.retry || 5));   // busy: ask again
   }
 }
@@ -311,22 +342,44 @@ function sayBranch() {
 
 // -- downloads ------------------------------------------------------------------------------------
 
-async function download(path, fallback, button) {
+async function download(path, fallback, button, what) {
+  // the file asked for; meanwhile what is being made and the seconds it has taken, every second
   $("dl-error").textContent = "";
-  $("dl-status").textContent = t("working");
   button.disabled = true;
+  const t0 = Date.now();
+  const seconds = () => Math.round((Date.now() - t0) / 1000);
+  const tick = () => {
+    const s = seconds();
+    $("dl-status").textContent = `${t("working")} ${what()}… ${s} ${t("s")}` + (s >= 15 ? ` (${t("slow hint")})` : "");
+  };
+  tick();
+  const clock = setInterval(tick, 1000);
+  $("dl-status").dataset.busy = "1";
   try {
     const text = await sceneText();
     const r = await post(path, text, "text/plain; charset=utf-8");
     const name = filename(r, fallback);
     save(await r.blob(), name);
-    $("dl-status").textContent = t("ready") + name;
+    clearInterval(clock);
+    $("dl-status").textContent = `${t("ready")}${name} (${seconds()} ${t("s")})`;
   } catch (e) {
+    clearInterval(clock);
     $("dl-status").textContent = "";
-    $("dl-error").textContent = e.message + (e.retry ? ` (${t("retry")} ${e.retry} ${t("s")})` : "");
+    $("dl-error").textContent = asUploaded(e.message) + (e.retry ? ` (${t("retry")} ${e.retry} ${t("s")})` : "");
   } finally {
+    clearInterval(clock);
+    delete $("dl-status").dataset.busy;
     button.disabled = false;
   }
+}
+
+function sheetsSaid() {
+  // "the sheet kinematics, A1, PDF" in the page's words
+  const kinds = [...document.querySelectorAll("input[name=kind]:checked")].map((c) => t(c.value));
+  const which = state.lang === "uk"
+    ? `${t(kinds.length > 1 ? "sheets of" : "sheet of")} «${kinds.join(", ")}»`
+    : `the ${kinds.join(", ")} ${kinds.length > 1 ? "sheets" : "sheet"}`;
+  return `${which}, ${$("format").value}, ${$("type").value.toUpperCase()}`;
 }
 
 function sheetPath() {
@@ -419,6 +472,7 @@ async function gradesCsv() {
 }
 
 function showGrades(doc) {
+  state.grades = doc;
   const cols = ["line", "variant", "position", "quantity", "value", "exact", "error_pct", "tolerance_pct", "status", "note"];
   const heads = state.lang === "uk"
     ? ["рядок", "варіант", "положення", "величина", "значення", "точне", "похибка, %", "допуск, %", "оцінка", "примітка"]
@@ -454,7 +508,9 @@ function chooseTemplate(id) {
   state.values = {};
   state.branch = {};
   state.mode = "template";
+  state.uploaded = "";
   renderFields();
+  sayUploaded();
   sayBranch();
   const chosen = state.template.id;
   defaultKinds(chosen.startsWith("cam") ? "cam" : chosen.startsWith("gears") ? "gears" : "lever");
@@ -463,9 +519,29 @@ function chooseTemplate(id) {
 
 function defaultKinds(kind) {
   // the sheet a scene of this kind has by default (graphplan sheet: kinematics, cam or gears)
+  offerKinds([kind === "lever" ? "kinematics" : kind], true);
   state.kind = kind;
-  const first = kind === "lever" ? "kinematics" : kind;
-  document.querySelectorAll("input[name=kind]").forEach((c) => { c.checked = c.value === first; });
+}
+
+function guessKinds(text) {
+  // a scene the server refused: its sheets guessed from its tables (a [cam], a [gears] or [planetary],
+  // else a lever mechanism's kinematics), so that a download says the scene's own fault, not "no [gears]"
+  if (typeof text !== "string") return;
+  const kind = /^\s*\[cam\]/m.test(text) ? "cam" : /^\s*\[(gears|planetary)\]/m.test(text) ? "gears" : "lever";
+  if (kind !== state.kind) defaultKinds(kind);
+}
+
+function offerKinds(kinds, fresh) {
+  // the sheets' boxes of the kinds the scene makes (the preview's X-Sheet-Kinds), the others hidden
+  // and unticked; the first ticked when none is (or the scene is of another kind)
+  const boxes = [...document.querySelectorAll("input[name=kind]")];
+  boxes.forEach((c) => {
+    const shown = kinds.includes(c.value);
+    c.closest("label").hidden = !shown;
+    if (!shown || fresh) c.checked = false;
+  });
+  const shown = boxes.filter((c) => kinds.includes(c.value));
+  if (shown.length && !shown.some((c) => c.checked)) shown[0].checked = true;
 }
 
 function showPart(which) {
@@ -492,22 +568,29 @@ async function start() {
     if (!f) return;
     $("toml").value = await f.text();
     state.mode = "toml";
+    state.uploaded = f.name;
     state.branch = {};
     $("template").selectedIndex = -1;             // no template: choosing one goes back to the form
     $("fields").disabled = true;
     $("toml-box").open = true;
     $("scene-error").textContent = "";
-    $("dl-status").textContent = t("uploaded") + " — " + t("uploaded_mode");
+    sayUploaded();                                // the template's fields hidden: their values are not the scene's
     changed();
   });
-  $("toml").addEventListener("input", () => { state.mode = "toml"; $("fields").disabled = true; changed(); });
+  $("toml").addEventListener("input", () => {
+    if (state.mode === "template") { state.mode = "toml"; state.uploaded = ""; sayUploaded(); }
+    $("fields").disabled = true;
+    changed();
+  });
   const phi = $("phi"), num = $("phi-num");
   phi.addEventListener("input", () => { num.value = phi.value; changed(); });
   num.addEventListener("input", () => { phi.value = num.value; changed(); });
   $("branch-reset").addEventListener("click", () => { state.branch = {}; sayBranch(); changed(); });
-  $("dl-sheet").addEventListener("click", (e) => download(sheetPath(), "sheet", e.currentTarget));
-  $("dl-view").addEventListener("click", (e) => download(`/api/view?lang=${$("sheet-lang").value}`, "explorer.html", e.currentTarget));
-  $("dl-tables").addEventListener("click", (e) => download(`/api/tables?lang=${$("sheet-lang").value}`, "tables.zip", e.currentTarget));
+  $("dl-sheet").addEventListener("click", (e) => download(sheetPath(), "sheet", e.currentTarget, sheetsSaid));
+  $("dl-view").addEventListener("click", (e) => download(`/api/view?lang=${$("sheet-lang").value}`, "explorer.html",
+                                                         e.currentTarget, () => t("explorer")));
+  $("dl-tables").addEventListener("click", (e) => download(`/api/tables?lang=${$("sheet-lang").value}`, "tables.zip",
+                                                           e.currentTarget, () => t("tables")));
   $("dl-toml").addEventListener("click", async () => {
     try { save(new Blob([await sceneText()], { type: "text/plain" }), "scene.toml"); } catch (e) { $("dl-error").textContent = e.message; }
   });
