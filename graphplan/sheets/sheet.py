@@ -95,7 +95,7 @@ def designation(base: str, kind: str, alone: bool = False) -> str:
     """The designation of the kind's document: the scene's ``base`` with its last group of digits
     replaced by the document's number, as wide as that group ("ТММ.КП.00.000" → "ТММ.КП.00.003"
     for the dynamics); a base not ending in digits gets ".N" appended; none stays none. The one
-    document of a scene (``alone``: a cam's or a gear pair's) is a project of its own ("Аркуш 1,
+    document of a cam or gear scene (``alone``) is a project of its own ("Аркуш 1,
     Аркушів 1"): it carries the designation as the student wrote it — "ТММ.ЗП.54.000" stays, where
     ".004" would name document 4 of a project that has no documents 1–3."""
     import re
@@ -266,8 +266,8 @@ def numbered(kind: str, build: Callable[..., Sheet]) -> Callable[..., Sheet]:
             if document_number(k) < document_number(kind):
                 first += n
             total += n
-        return sheet.number(first, total, designation(sheet.fields.get("designation", ""), kind,
-                                                      alone=len(kinds) == 1))
+        alone = kinds == (kind,) and kind in ("cam", "gears")     # a lever scene's documents: by kind
+        return sheet.number(first, total, designation(sheet.fields.get("designation", ""), kind, alone=alone))
     return wrapper
 
 
