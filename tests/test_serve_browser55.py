@@ -118,6 +118,7 @@ def test_a_broken_scene_file_says_its_line_and_no_sheet_comes(driver, server, do
     wait(d, lambda: preview_src(d), what="the first preview")
     _upload(d, ROOT / "examples" / "gears.toml")
     wait(d, lambda: _offered(d) == {"gears": True}, what="the gears' sheet")
+    d.execute_script("document.getElementById('dl-status').textContent = 'Ready: gears-A1.pdf (9 s)'")
     bad = tmp_path / "broken.toml"
     bad.write_text('title = "broken"\n[crank\nlength = 0.1\n', encoding="utf-8")
     d.find_element(By.ID, "upload").send_keys(str(bad))
@@ -125,6 +126,7 @@ def test_a_broken_scene_file_says_its_line_and_no_sheet_comes(driver, server, do
     line = d.find_element(By.ID, "scene-error").text
     assert line.startswith("broken.toml: ") and "line 2" in line, line       # the student's file, not scene.toml
     assert "broken.toml" in d.find_element(By.ID, "upload-said").text
+    assert d.find_element(By.ID, "dl-status").text == ""        # the previous scene's "Ready" not left
     assert _offered(d) == {"kinematics": True}          # a lever scene's (no [gears]): its fault said on download
     before = set(os.listdir(downloads))
     d.find_element(By.ID, "dl-sheet").click()

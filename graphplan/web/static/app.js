@@ -509,6 +509,8 @@ function chooseTemplate(id) {
   state.branch = {};
   state.mode = "template";
   state.uploaded = "";
+  $("dl-status").textContent = "";                 // the previous scene's download said nothing of this one
+  $("dl-error").textContent = "";
   renderFields();
   sayUploaded();
   sayBranch();
@@ -574,6 +576,8 @@ async function start() {
     $("fields").disabled = true;
     $("toml-box").open = true;
     $("scene-error").textContent = "";
+    $("dl-status").textContent = "";              // "Ready: gears-A1.pdf" was the previous scene's
+    $("dl-error").textContent = "";
     sayUploaded();                                // the template's fields hidden: their values are not the scene's
     changed();
   });
