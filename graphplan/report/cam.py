@@ -119,7 +119,7 @@ WORDS = {
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "smooth": "на гладких ділянках",
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
-           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "corner": "φ = {p}° ({a}\u00a0→\u00a0{b}\u00a0{u}; {k})",
            "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
                      "іде дугою радіуса r навколо ребра, зрізаючи злам",
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
@@ -168,7 +168,7 @@ WORDS = {
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
-           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "corner": "φ = {p}° ({a}\u00a0→\u00a0{b}\u00a0{u}; {k})",
            "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
                      "cutting the corner on an arc of radius r about the edge",
            "concave": "concave: the working profile there an arc of radius r about it",
@@ -206,7 +206,10 @@ def _dwell_formula(doc: dict[str, Any], near: float) -> str:
 def _sides_theta(sol: Solution, phi: float) -> dict[str, float]:
     """The exact pressure angle just before and just after a corner of the centre profile at ``phi``°
     (ds/dφ jumps there, and ϑ with it: the linear law's ends — stop 51, Table 1 gave one side)."""
-    th = sol.at(np.array([phi - 1e-9, phi + 1e-9]))["theta"]
+    from graphplan.exact.cam import profile, sides
+    before, after = sides(sol.cam, phi)          # the law's own values at the phase's ends (stop 55)
+    s, v, a = (np.array([x, y]) for x, y in zip(before, after))
+    th = profile(sol.cam, sol.geometry, np.array([phi, phi]), s, v, a)["theta"]
     return {"pressure_angle_before_deg": float(th[0]), "pressure_angle_after_deg": float(th[1])}
 
 
@@ -303,19 +306,25 @@ def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: i
     # a jump's zero side the bare 0, as the notes write it («φ = 0° (0 → 20,37 мм/рад)»): "0,00 → 20,37" widened
     # the 3.5-mm table's column past the A1 sheet's right column (stop 53: CAM50's diagrams a μ_φ coarser)
     cell = lambda v, d: "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")       # noqa: E731
+    # μ of the ds/dφ diagram from the rows whose ordinate is not 0 (one scale for all): a row whose own side is 0
+    # (a parabolic rise's end into a linear return, stop 55) read the other side through μ too — it had none,
+    # and printed «0» for the ruler's ordinate and the graphical value where the exact cell says «0 → −28,65»
+    mus = [p["graphical"]["ds_dphi" + key] * k / p["graphical"]["ds_dphi_mm"] for p in doc["positions"]
+           if p["graphical"]["ds_dphi_mm"]]
+    mu_all = float(np.median(mus)) if mus else None
     for corner in doc.get("profile_corners") or []:
         before, after = (corner["ds_dphi_" + side + key] * k for side in ("before", "after"))
         for j, p in enumerate(doc["positions"]):
             if abs((p["phi_deg"] - corner["phi_deg"] + 180.0) % 360.0 - 180.0) > 1e-6:
                 continue
             own, y = p["exact"]["ds_dphi" + key] * k, p["graphical"]["ds_dphi_mm"]
-            mu = p["graphical"]["ds_dphi" + key] * k / y if y else None
+            mu = p["graphical"]["ds_dphi" + key] * k / y if y else mu_all
             other = before if abs(own - after) <= abs(own - before) else after
             y_other = None if mu is None else float(read(np.array(other / mu), precision))
             sides = {"v": (cell(before, decimals), cell(after, decimals))}
             if y_other is not None:
                 mine = (out["v_mm"][j], out["v_gr"][j])
-                theirs = (fixed(y_other, lang, ruler).replace("-", "−"), cell(y_other * mu, decimals))
+                theirs = (cell(y_other, ruler), cell(y_other * mu, decimals))       # a zero the bare 0, as the column
                 first = other == before
                 sides["v_mm"] = (theirs[0], mine[0]) if first else (mine[0], theirs[0])
                 sides["v_gr"] = (theirs[1], mine[1]) if first else (mine[1], theirs[1])
