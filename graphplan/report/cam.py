@@ -470,16 +470,24 @@ def short_ordinates(doc: dict) -> bool:
 
 
 def short_note(doc: dict, lang: str) -> str:
-    """The notes' line saying why a δ is "—": the value zero or its ordinate under two ruler
-    divisions, where half a division read is a quarter of it or more (the lab judges δ against 5 %)."""
+    """The notes' line saying why a δ is "—": the value zero, under 1 % of the largest, or its exact
+    ordinate under two ruler divisions, where half a division read is a quarter of it or more (the lab
+    judges δ against 5 %) — the rule errors_pct applies, word for word. The bound is the EXACT value's
+    ordinate and is not itself short: OWN_CAM54's ψ = 0,25° at μ = 0,2 °/мм (1.25 mm, read 1,0 mm) keeps
+    its δ = −20,00* — half a division of 1.25 mm, judged and starred as the rule says (stop 55 decided
+    LEFT54's «— may read better» by the rule's own logic: ±0.25 mm is 20 % there, under the 25 % it
+    excludes); the drawn ordinate is not the test, or a construction gone wrong to a short ordinate
+    would hide its error behind «—»."""
     step = doc.get("precision_mm", 0.5)
     least = num(SHORT_DIVISIONS * step, lang, 3)
     half = num(step / 2, lang, 3)
     if lang == "uk":
-        return (f"«—» у стовпцях δ: значення нульове або його ордината коротша за {SHORT_DIVISIONS} поділки "
-                f"лінійки ({least} мм) — відлік з точністю ±{half} мм дає тут понад 25 %, δ не оцінюється")
-    return (f"“—” in the δ columns: the value is zero or its ordinate is under {SHORT_DIVISIONS} ruler divisions "
-            f"({least} mm) — read to ±{half} mm it errs by over 25 % there, δ is not judged")
+        return (f"«—» у стовпцях δ: значення нульове, менше за 1 % найбільшого або його точна ордината (значення/μ) "
+                f"коротша за {SHORT_DIVISIONS} поділки лінійки ({least} мм) — відлік з точністю ±{half} мм дає тут "
+                "понад 25 %, δ не оцінюється")
+    return (f"“—” in the δ columns: the value is zero, under 1 % of the largest, or its exact ordinate (value/μ) "
+            f"is under {SHORT_DIVISIONS} ruler divisions ({least} mm) — read to ±{half} mm it errs by over 25 % "
+            "there, δ is not judged")
 
 
 def table_rows(doc: dict[str, Any]) -> list[int]:
