@@ -358,3 +358,21 @@ def _dashes_as_said(cam, doc) -> None:
             small = value == 0 or ordinate < 1.0 - 1e-9 or abs(p["exact"][q + "_deg"]) < 0.01 * (
                 math.degrees(cam.stroke) if q == "s" else big[q]) * (1 - 1e-12)
             assert dash == small, (j, q, ordinate, cols[c][j])
+
+
+def test_own_cam55_phase_diagram_draws_the_printed_angles():
+    """The rocking follower's phase diagram: the angles at the drawn O between its lines to the drawn
+    points and the perpendiculars of the drawn arms are the table's graphical ϑ within 1°."""
+    from graphplan.drawing.cam import phase_diagram
+    from graphplan.exact.cam import solve
+    from graphplan.graphic.cam import construct
+    from graphplan.report.cam import cam_json
+    from test_cam_robust import drawn_angles
+    cam = build(tomllib.loads(OWN_CAM55), "<own55>")
+    sol = solve(cam)
+    g = construct(sol, 10, 0.5)
+    doc = cam_json(sol, g, "")
+    angles = drawn_angles(phase_diagram(sol, g, "uk"), True)
+    assert len(angles) == len(doc["positions"])
+    for k, p in enumerate(doc["positions"]):
+        assert abs(angles[k] - abs(p["graphical"]["pressure_angle_deg"])) < 1.0, (k, angles[k])

@@ -296,7 +296,7 @@ def cells(values, lang: str, decimals: int) -> list[str]:
 
 def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:
     """Table 1's ds/dφ cells at a jump of ds/dφ (the linear law's ends, ``profile_corners``) as the
-    notes write it, both sides: «0 → 20,37» (exact), «0,0 → 51,0» (the ruler's ordinate) and
+    notes write it, both sides: «0 → 20,37» (exact), «0 → 51,0» (the ruler's ordinate) and
     «0 → 20,40» (graphical) — one side was the row's alone (stop 50). The side the row lacks is read
     as the drawing reads a linear law's ordinate, ds/dφ/μ to the ruler's ``precision_mm`` (graphic.
     cam ``read``: a dwell's 0 is 0), with μ the row's own value over its ordinate; δ stays the row's."""
