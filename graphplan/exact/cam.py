@@ -68,7 +68,9 @@ def _snapped(u: Array) -> Array:
 def _sinpi(x: Array) -> Array:
     """sin πx, exact where 2x is a whole number (sin π is 1.2·10⁻¹⁶ in floating point, not 0)."""
     k = np.round(2 * x)
-    return np.where(k == 2 * x, np.array([0.0, 1.0, 0.0, -1.0])[np.mod(k, 4).astype(int)], np.sin(np.pi * x))
+    exact = k == 2 * x                                   # False for a NaN: it stays NaN
+    quarter = np.mod(np.where(exact, k, 0.0), 4).astype(int)
+    return np.where(exact, np.array([0.0, 1.0, 0.0, -1.0])[quarter], np.sin(np.pi * x))
 
 
 def _cospi(x: Array) -> Array:
