@@ -119,7 +119,7 @@ WORDS = {
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "smooth": "на гладких ділянках",
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
-           "corner": "φ = {p}° ({a}\u00a0→\u00a0{b}\u00a0{u}; {k})",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
            "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
                      "іде дугою радіуса r навколо ребра, зрізаючи злам",
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
@@ -168,7 +168,7 @@ WORDS = {
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
-           "corner": "φ = {p}° ({a}\u00a0→\u00a0{b}\u00a0{u}; {k})",
+           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
            "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
                      "cutting the corner on an arc of radius r about the edge",
            "concave": "concave: the working profile there an arc of radius r about it",
