@@ -70,6 +70,7 @@ divisions = 6
 """
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("rise_law,ret_law", [(a, b) for a, b in itertools.product(LAWS, LAWS)
                                                if "linear" in (a, b) and a != b])
 def test_a_corners_sides_are_the_laws_own_values(rise_law, ret_law):
@@ -318,6 +319,7 @@ def test_own_cam55_rocking_by_brute_force():
 
 # -- the short-ordinate rule at its bound (LEFT54: OWN_CAM54's δψ = −20,00*) ------------------------------------
 
+@pytest.mark.slow
 def test_short_ordinate_rule_judges_by_the_exact_ordinate_at_its_bound():
     """errors_pct leaves δ out below SHORT_DIVISIONS ruler divisions of the EXACT ordinate and judges it
     at the bound and above; OWN_CAM54's ψ = 0,25° (μ_ψ = 0,2 °/мм: 1.25 mm, read 1,0 mm) keeps δ = −20,00*
