@@ -6230,3 +6230,57 @@ omega = 120.0
 
 COUPLER_SLIDER54 = COUPLER_SLIDER_REVIEW54.split('\n', 1)[1]     # the same scene, without its first comment line
 
+
+
+CAM55 = '''# Stop 55 (the lead's check; cam55): a translating roller follower, the cam turning CLOCKWISE, the offset "auto",
+# a parabolic rise of 150° straight into a LINEAR return of 90° (no far dwell: rigid shocks at the return's ends,
+# corners on the centre profile), a near dwell of 120°, 8 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем і лінійним поверненням (перевірка 55)"
+title_en = "Cam with a translating roller follower and a linear return (check 55)"
+designation = "ТММ.КМ.55.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-55"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.045
+offset = "auto"
+roller_radius = 0.01
+phases_deg = { rise = 150, dwell_far = 0, return = 90, dwell_near = 120 }
+laws = { rise = "parabolic", return = "linear" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 90
+direction = "cw"
+divisions = 8
+'''
+
+
+OWN_CAM55 = '''# Stop 55 (cam55's own look): a ROCKING roller follower turned by a COUNTER-CLOCKWISE cam, a cosine rise of
+# 110° (soft shocks at its ends), a far dwell of 30°, a cycloidal return of 120°, a near dwell of 100°, 10 divisions.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (косинусоїдальний підйом, циклоїдальне опускання)"
+title_en = "Cam with a rocking roller follower (cosine rise, cycloidal return)"
+designation = "ТММ.КМ.55.200"
+
+[sheet]
+student = "Кулачковий К. К."
+teacher = "Викладач В. В."
+group = "МБ-55"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 22
+arm = 0.11
+centre_distance = 0.13
+roller_radius = 0.01
+phases_deg = { rise = 110, dwell_far = 30, return = 120, dwell_near = 100 }
+laws = { rise = "cosine", return = "cycloidal" }
+pressure_angle_deg = { rise = 40, return = 40 }
+rpm = 100
+direction = "ccw"
+divisions = 10
+'''

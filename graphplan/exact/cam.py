@@ -55,20 +55,44 @@ def _trapezoid_knots() -> tuple[Array, Array, Array, Array, float]:
 _TRAP = _trapezoid_knots()
 
 
+EXACT_U = 1e-12     # a phase's share u this close to 0, ½ or 1 is that point (φ/Φ of a division is off by an ulp)
+
+
+def _snapped(u: Array) -> Array:
+    """u with the phase's start, middle and end made exact (within ``EXACT_U``): where the laws' values
+    are exact numbers (0, ½, 1) the law gives them, not the turn's rounding."""
+    half = np.round(2 * u) / 2
+    return np.where(np.abs(u - half) <= EXACT_U, half, u)
+
+
+def _sinpi(x: Array) -> Array:
+    """sin πx, exact where 2x is a whole number (sin π is 1.2·10⁻¹⁶ in floating point, not 0)."""
+    k = np.round(2 * x)
+    exact = k == 2 * x                                   # False for a NaN: it stays NaN
+    quarter = np.mod(np.where(exact, k, 0.0), 4).astype(int)
+    return np.where(exact, np.array([0.0, 1.0, 0.0, -1.0])[quarter], np.sin(np.pi * x))
+
+
+def _cospi(x: Array) -> Array:
+    """cos πx, exact where 2x is a whole number (cos π/2 is 6.1·10⁻¹⁷ in floating point, not 0)."""
+    return _sinpi(x + 0.5)
+
+
 def law(name: str, u: Array) -> tuple[Array, Array, Array]:
     """The normalised law f(u) and its derivatives f′, f″ (u = φ/Φ of the phase):
     parabolic f = 2u² (u ≤ ½), 1 − 2(1 − u)²; cosine f = (1 − cos πu)/2; cycloidal f = u − sin(2πu)/2π;
-    linear f = u; trapezoidal: the acceleration above."""
-    u = np.clip(np.asarray(u, dtype=float), 0.0, 1.0)
+    linear f = u; trapezoidal: the acceleration above. At the phase's start, middle and end (u = 0, ½,
+    1 within ``EXACT_U``) the values are the law's exact ones: a cosine's f′(1) = (π/2)·sin π is 0, not
+    1.9·10⁻¹⁶ — a zero of the law prints 0 wherever it is printed (stop 55)."""
+    u = _snapped(np.clip(np.asarray(u, dtype=float), 0.0, 1.0))
     if name == "parabolic":
         first = u <= 0.5
         f = np.where(first, 2 * u * u, 1 - 2 * (1 - u) ** 2)
         return f, np.where(first, 4 * u, 4 * (1 - u)), np.where(first, 4.0, -4.0)
     if name == "cosine":
-        return (1 - np.cos(np.pi * u)) / 2, np.pi / 2 * np.sin(np.pi * u), np.pi ** 2 / 2 * np.cos(np.pi * u)
+        return (1 - _cospi(u)) / 2, np.pi / 2 * _sinpi(u), np.pi ** 2 / 2 * _cospi(u)
     if name == "cycloidal":
-        w = 2 * np.pi * u
-        return u - np.sin(w) / (2 * np.pi), 1 - np.cos(w), 2 * np.pi * np.sin(w)
+        return u - _sinpi(2 * u) / (2 * np.pi), 1 - _cospi(2 * u), 2 * np.pi * _sinpi(2 * u)
     if name == "linear":
         return u.copy(), np.ones_like(u), np.zeros_like(u)
     if name == "trapezoidal":
@@ -108,6 +132,39 @@ def motion(cam: Cam, phi_deg: Array, phase: Array | None = None) -> tuple[Array,
     f, f1, f2 = law(cam.laws[1], (phi[down] - rise - far) / ret)
     s[down], v[down], a[down] = h * (1 - f), -h * f1 / T, -h * f2 / T ** 2
     return s, v, a
+
+
+def sides(cam: Cam, phi_deg: float) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+    """s, ds/dφ, d²s/dφ² just before and just after the turn ``phi_deg``: the phase that ends there at
+    its own end (u = 1) and the phase that starts there at its start (u = 0), by the law — its exact
+    values, not the law a hair either side (stop 55: a parabolic rise's ds/dφ at its end printed
+    4,584·10⁻¹⁰ mm/rad where it is 0). Inside a phase both are that phase's value."""
+    rise, far, ret, near = cam.phases
+    h = cam.stroke
+    R, T = math.radians(rise), math.radians(ret)
+    spans = [(0.0, rise, 0), (rise, far, -2), (rise + far, ret, 1), (rise + far + ret, near, -1)]
+    spans = [sp for sp in spans if sp[1] > 0]
+    tol = 1e-9
+    phi = float(phi_deg) % 360.0
+
+    def value(start: float, length: float, kind: int, at: float) -> tuple[float, float, float]:
+        if kind == -2:
+            return h, 0.0, 0.0
+        if kind == -1:
+            return 0.0, 0.0, 0.0
+        f, f1, f2 = (float(x[0]) for x in law(cam.laws[kind], np.array([(at - start) / length])))
+        if kind == 0:
+            return h * f, h * f1 / R, h * f2 / R ** 2
+        return h * (1 - f), -h * f1 / T, -h * f2 / T ** 2
+
+    def side(after: bool) -> tuple[float, float, float]:
+        for at in (phi, phi + 360.0):          # the near dwell's end is 360°, the rise's start 0°
+            for start, length, kind in spans:
+                end = start + length
+                if (start - tol <= at < end - tol) if after else (start + tol < at <= end + tol):
+                    return value(start, length, kind, min(max(at, start), end))
+        return value(*spans[0], 0.0)
+    return side(False), side(True)
 
 
 def phase_of(cam: Cam, phi_deg: Array) -> Array:
@@ -460,14 +517,13 @@ def profile_corners(cam: Cam, g: Geometry) -> list[Corner]:
     area = float(np.sum((np.conj(P[:-1]) * P[1:]).imag))       # twice the signed area
     out = []
     for phi in ends:
-        _, vb, _ = motion(cam, np.array([phi - 1e-9]))
-        _, va, _ = motion(cam, np.array([phi + 1e-9]))
-        if abs(va[0] - vb[0]) <= 1e-9 * big:
+        (_, vb, _), (_, va, _) = sides(cam, phi)        # the law's own values at the phase's ends
+        if abs(va - vb) <= 1e-9 * big:
             continue
         d = 1e-3
         q = profile(cam, g, np.array([phi - d, phi, phi + d]))["P"]
         turn = float((np.conj(q[1] - q[0]) * (q[2] - q[1])).imag)
-        out.append(Corner(float(phi % 360.0), float(vb[0]), float(va[0]), turn * area > 0))
+        out.append(Corner(float(phi % 360.0), float(vb), float(va), turn * area > 0))
     return out
 
 

@@ -206,7 +206,10 @@ def _dwell_formula(doc: dict[str, Any], near: float) -> str:
 def _sides_theta(sol: Solution, phi: float) -> dict[str, float]:
     """The exact pressure angle just before and just after a corner of the centre profile at ``phi``°
     (ds/dφ jumps there, and ϑ with it: the linear law's ends — stop 51, Table 1 gave one side)."""
-    th = sol.at(np.array([phi - 1e-9, phi + 1e-9]))["theta"]
+    from graphplan.exact.cam import profile, sides
+    before, after = sides(sol.cam, phi)          # the law's own values at the phase's ends (stop 55)
+    s, v, a = (np.array([x, y]) for x, y in zip(before, after))
+    th = profile(sol.cam, sol.geometry, np.array([phi, phi]), s, v, a)["theta"]
     return {"pressure_angle_before_deg": float(th[0]), "pressure_angle_after_deg": float(th[1])}
 
 
@@ -293,7 +296,7 @@ def cells(values, lang: str, decimals: int) -> list[str]:
 
 def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: int, ruler: int) -> None:
     """Table 1's ds/dφ cells at a jump of ds/dφ (the linear law's ends, ``profile_corners``) as the
-    notes write it, both sides: «0 → 20,37» (exact), «0,0 → 51,0» (the ruler's ordinate) and
+    notes write it, both sides: «0 → 20,37» (exact), «0 → 51,0» (the ruler's ordinate) and
     «0 → 20,40» (graphical) — one side was the row's alone (stop 50). The side the row lacks is read
     as the drawing reads a linear law's ordinate, ds/dφ/μ to the ruler's ``precision_mm`` (graphic.
     cam ``read``: a dwell's 0 is 0), with μ the row's own value over its ordinate; δ stays the row's."""
@@ -303,19 +306,25 @@ def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: i
     # a jump's zero side the bare 0, as the notes write it («φ = 0° (0 → 20,37 мм/рад)»): "0,00 → 20,37" widened
     # the 3.5-mm table's column past the A1 sheet's right column (stop 53: CAM50's diagrams a μ_φ coarser)
     cell = lambda v, d: "0" if round(v, d) == 0 else fixed(v, lang, d).replace("-", "−")       # noqa: E731
+    # μ of the ds/dφ diagram from the rows whose ordinate is not 0 (one scale for all): a row whose own side is 0
+    # (a parabolic rise's end into a linear return, stop 55) read the other side through μ too — it had none,
+    # and printed «0» for the ruler's ordinate and the graphical value where the exact cell says «0 → −28,65»
+    mus = [p["graphical"]["ds_dphi" + key] * k / p["graphical"]["ds_dphi_mm"] for p in doc["positions"]
+           if p["graphical"]["ds_dphi_mm"]]
+    mu_all = float(np.median(mus)) if mus else None
     for corner in doc.get("profile_corners") or []:
         before, after = (corner["ds_dphi_" + side + key] * k for side in ("before", "after"))
         for j, p in enumerate(doc["positions"]):
             if abs((p["phi_deg"] - corner["phi_deg"] + 180.0) % 360.0 - 180.0) > 1e-6:
                 continue
             own, y = p["exact"]["ds_dphi" + key] * k, p["graphical"]["ds_dphi_mm"]
-            mu = p["graphical"]["ds_dphi" + key] * k / y if y else None
+            mu = p["graphical"]["ds_dphi" + key] * k / y if y else mu_all
             other = before if abs(own - after) <= abs(own - before) else after
             y_other = None if mu is None else float(read(np.array(other / mu), precision))
             sides = {"v": (cell(before, decimals), cell(after, decimals))}
             if y_other is not None:
                 mine = (out["v_mm"][j], out["v_gr"][j])
-                theirs = (fixed(y_other, lang, ruler).replace("-", "−"), cell(y_other * mu, decimals))
+                theirs = (cell(y_other, ruler), cell(y_other * mu, decimals))       # a zero the bare 0, as the column
                 first = other == before
                 sides["v_mm"] = (theirs[0], mine[0]) if first else (mine[0], theirs[0])
                 sides["v_gr"] = (theirs[1], mine[1]) if first else (mine[1], theirs[1])
@@ -461,16 +470,24 @@ def short_ordinates(doc: dict) -> bool:
 
 
 def short_note(doc: dict, lang: str) -> str:
-    """The notes' line saying why a δ is "—": the value zero or its ordinate under two ruler
-    divisions, where half a division read is a quarter of it or more (the lab judges δ against 5 %)."""
+    """The notes' line saying why a δ is "—": the value zero, under 1 % of the largest, or its exact
+    ordinate under two ruler divisions, where half a division read is a quarter of it or more (the lab
+    judges δ against 5 %) — the rule errors_pct applies, word for word. The bound is the EXACT value's
+    ordinate and is not itself short: OWN_CAM54's ψ = 0,25° at μ = 0,2 °/мм (1.25 mm, read 1,0 mm) keeps
+    its δ = −20,00* — half a division of 1.25 mm, judged and starred as the rule says (stop 55 decided
+    LEFT54's «— may read better» by the rule's own logic: ±0.25 mm is 20 % there, under the 25 % it
+    excludes); the drawn ordinate is not the test, or a construction gone wrong to a short ordinate
+    would hide its error behind «—»."""
     step = doc.get("precision_mm", 0.5)
     least = num(SHORT_DIVISIONS * step, lang, 3)
     half = num(step / 2, lang, 3)
     if lang == "uk":
-        return (f"«—» у стовпцях δ: значення нульове або його ордината коротша за {SHORT_DIVISIONS} поділки "
-                f"лінійки ({least} мм) — відлік з точністю ±{half} мм дає тут понад 25 %, δ не оцінюється")
-    return (f"“—” in the δ columns: the value is zero or its ordinate is under {SHORT_DIVISIONS} ruler divisions "
-            f"({least} mm) — read to ±{half} mm it errs by over 25 % there, δ is not judged")
+        return (f"«—» у стовпцях δ: значення нульове, менше за 1 % найбільшого або його точна ордината (значення/μ) "
+                f"коротша за {SHORT_DIVISIONS} поділки лінійки ({least} мм) — відлік з точністю ±{half} мм дає тут "
+                "понад 25 %, δ не оцінюється")
+    return (f"“—” in the δ columns: the value is zero, under 1 % of the largest, or its exact ordinate (value/μ) "
+            f"is under {SHORT_DIVISIONS} ruler divisions ({least} mm) — read to ±{half} mm it errs by over 25 % "
+            "there, δ is not judged")
 
 
 def table_rows(doc: dict[str, Any]) -> list[int]:
