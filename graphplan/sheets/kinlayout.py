@@ -922,7 +922,22 @@ def set_tail(tables: list[Leaf], notes: Leaf, stacked: int = 0, beside: tuple[in
         for k in beside:
             lines.append(Row(list(out[at:at + k])) if k > 1 else out[at])
             at += k
-        out = [Stack(lines)] + out[at:]
+        block = Stack(lines)
+        block.beside = True          # ``set_rows`` opens it again where the tail is a shelf of its own
+        out = [block] + out[at:]
+    return out
+
+
+def _opened(tail: list) -> list:
+    """The tail with ``set_tail``'s block beside the plan opened into its tables: a shelf breaks a
+    row of its own into lines itself, and the block is for the last plan's row only."""
+    out = []
+    for item in tail:
+        if getattr(item, "beside", False):
+            for line in item.children:
+                out.extend(line.children if isinstance(line, Row) else [line])
+        else:
+            out.append(item)
     return out
 
 
@@ -980,17 +995,17 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
                 c = min(c, k)
                 first, V = [[P, Grid(V[:k], c)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
-            return first + grid(V) + grid(A) + [[D], Shelf(tail)]
+            return first + grid(V) + grid(A) + [[D], Shelf(_opened(tail))]
         if A and D.w + sum(GAP + a.w for a in A) <= width + 1e-9 and max(a.h for a in A) <= D.h + 1e-9:
             # the acceleration plans beside the diagrams where the row holds them, no taller (the
             # V-compressor's A2 left 230 × 280 mm beside its diagrams empty, the plan on the next sheet)
-            return first + grid(V) + [[D] + list(A), Shelf(tail)]
+            return first + grid(V) + [[D] + list(A), Shelf(_opened(tail))]
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
         rows[-1] = [c for c in rows[-1] if c.name] + tail
     else:
-        rows.append(Shelf(tail))        # the tables and notes a row of their own: broken to fill the sheet
+        rows.append(Shelf(_opened(tail)))     # the tables and notes a row of their own: broken to fill the sheet
     return rows
 
 
