@@ -140,3 +140,19 @@ def test_a_lever_with_one_joint_has_its_number_by_its_bar_not_by_its_pivot():
     o3 = [z for t, z, s in texts if t == "O_3"]
     assert len(five) == 1 and len(o3) == 1
     assert abs(five[0] - o3[0]) > 20.0
+
+
+def test_a_shelf_of_its_own_opens_the_block_into_its_tables():
+    """The block is for the last acceleration plan's row: where the tables are a shelf of their own
+    (the diagrams after the plans), the shelf gets the tables one by one, in order, and breaks them
+    into lines itself."""
+    from graphplan.drawing.layout import Shelf
+    f = form("A3")
+    region = field_of(f)
+    P, D = Leaf("position", 300.0, 200.0), Leaf("diagrams", 300.0, 200.0)
+    A = [Leaf("acceleration 0", 150.0, 240.0)]
+    tabs = [Leaf(f"t{i}", 100.0, 50.0) for i in range(1, 4)]
+    rows = set_rows(P, D, [], A, set_tail(tabs, Leaf("notes", 185.0, 60.0), 0, (1, 1)), region[2] - region[0],
+                    after=True)
+    shelf = rows[-1]
+    assert isinstance(shelf, Shelf) and [t.name for t in shelf] == ["t1", "t2", "t3", "notes"]
