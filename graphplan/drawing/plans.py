@@ -889,6 +889,13 @@ def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex], along: bool =
     out = []
     for name, link in mech.links.items():
         joints = [pts[j] for j in link.joints if j in pts]
+        if len(joints) == 1 and link.slides_on is None:
+            # a bar with one joint and its own points (a slotted lever O3E pivoted at O3 with E at its
+            # end): from the joint to its farthest point — at the pivot alone "5" stood by O₃ and read
+            # "O₃5" (stop 55's dosing drive)
+            far = max((pts[q] for q in link.local if q in pts), key=lambda z: abs(z - joints[0]), default=joints[0])
+            if abs(far - joints[0]) > 1e-9:
+                joints = [joints[0], far]
         if len(joints) >= 2:
             d = joints[1] - joints[0]
             normal = 1j * d / abs(d) if abs(d) > 1e-9 else 1j

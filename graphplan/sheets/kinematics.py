@@ -471,7 +471,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)
-        rows = set_rows(P, D, cells(V), cells(A), set_tail(tables, Leaf("notes", record=notes_rec), p.stacked),
+        rows = set_rows(P, D, cells(V), cells(A), set_tail(tables, Leaf("notes", record=notes_rec), p.stacked, p.beside),
                         region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f), ragged=True)
         if laid is None:

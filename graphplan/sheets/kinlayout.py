@@ -7,7 +7,7 @@ here: the drawings come from sheets/kinematics.py's Drafter."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
@@ -166,6 +166,7 @@ class Plan:
     under: bool = False              # one sheet: the last table across under the columns of the others
     over: bool = False               # one sheet: the first table across over the columns of the others
     stacked: int = 0                 # a set: the last tables this many, side by side, over the notes (``set_tail``)
+    beside: tuple[int, ...] = ()     # a set: the first tables as one block beside the last plan, lines of these counts (``set_tail``)
 
 
 TITLE = 185.0     # the title block's width: the column is at least this wide
@@ -898,20 +899,50 @@ def legible(nat: Natural, mu: dict[str, float]) -> bool:
 STACKED = (1, 2)    # a set's last tables tried over the notes where the notes would take a sheet alone
 
 
-def set_tail(tables: list[Leaf], notes: Leaf, stacked: int = 0) -> list:
+def set_tail(tables: list[Leaf], notes: Leaf, stacked: int = 0, beside: tuple[int, ...] = ()) -> list:
     """A set's tables and notes in reading order (``set_rows``' tail): one after another, or the
     last ``stacked`` tables side by side over the notes as one block — a shelf sets its items in
     lines each as high as its tallest, so the notes, 125 mm high, found no room under Tables 3 and 4
-    beside Table 2 on the eight-bar's A3 sheet 5 (stop 52) and took sheet 6 alone."""
+    beside Table 2 on the eight-bar's A3 sheet 5 (stop 52) and took sheet 6 alone — and the first
+    tables as one block in lines of ``beside``'s counts, one line over another (``(1, 1)``: Table 1
+    over Table 2), which stands beside the last acceleration plan as one item of its row: the row
+    is as high as the plan or the block, so Table 2 goes under Table 1 beside the plan, not on the
+    next sheet (the blind review's A3 coupler-slider set: sheet 4 held its plan and Table 1 over an
+    empty lower half; ``beside_tables`` decides). The order is kept: the block's lines read left to
+    right, top to bottom, and the rest follows it."""
     from graphplan.drawing.layout import Row, Stack
-    if stacked <= 0 or stacked > len(tables):
-        return list(tables) + [notes]
-    last = tables[-stacked:]
-    return list(tables[:-stacked]) + [Stack([Row(last) if len(last) > 1 else last[0], notes])]
+    out = list(tables) + [notes]
+    free = len(tables)
+    if 0 < stacked <= len(tables):
+        last = tables[-stacked:]
+        out = list(tables[:-stacked]) + [Stack([Row(last) if len(last) > 1 else last[0], notes])]
+        free -= stacked
+    if len(beside) > 1 and all(k > 0 for k in beside) and sum(beside) <= free:
+        lines, at = [], 0
+        for k in beside:
+            lines.append(Row(list(out[at:at + k])) if k > 1 else out[at])
+            at += k
+        block = Stack(lines)
+        block.beside = True          # ``set_rows`` opens it again where the tail is a shelf of its own
+        out = [block] + out[at:]
+    return out
+
+
+def _opened(tail: list) -> list:
+    """The tail with ``set_tail``'s block beside the plan opened into its tables: a shelf breaks a
+    row of its own into lines itself, and the block is for the last plan's row only."""
+    out = []
+    for item in tail:
+        if getattr(item, "beside", False):
+            for line in item.children:
+                out.extend(line.children if isinstance(line, Row) else [line])
+        else:
+            out.append(item)
+    return out
 
 
 def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: float, after: bool = False,
-              notes: float = TITLE, sized=None, stacked: int = 0) -> list[list[Leaf]]:
+              notes: float = TITLE, sized=None, stacked: int = 0, beside: tuple[int, ...] = ()) -> list[list[Leaf]]:
     """A set's drawings and tables as rows in reading order: the position plan and the diagrams,
     the velocity plans as many equal cells to a row as the sheet's width holds, the acceleration
     plans likewise, the tables and the notes (rows wrap where too wide). ``sized``: where given,
@@ -926,7 +957,8 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
         grids[fam] = [Leaf(f"{fam} {i}", w, h) for i in range(count[fam])]
     return set_rows(Leaf("position", *cell_of("position", mu["position"])), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], set_tail([Leaf(name, w, h) for name, w, h in nat.tables[factor]],
-                                                    Leaf("notes", notes, notes_of(notes)), stacked), width, after)
+                                                    Leaf("notes", notes, notes_of(notes)), stacked, beside), width,
+                    after)
 
 
 def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], width: float,
@@ -963,17 +995,17 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
                 c = min(c, k)
                 first, V = [[P, Grid(V[:k], c)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
-            return first + grid(V) + grid(A) + [[D], Shelf(tail)]
+            return first + grid(V) + grid(A) + [[D], Shelf(_opened(tail))]
         if A and D.w + sum(GAP + a.w for a in A) <= width + 1e-9 and max(a.h for a in A) <= D.h + 1e-9:
             # the acceleration plans beside the diagrams where the row holds them, no taller (the
             # V-compressor's A2 left 230 × 280 mm beside its diagrams empty, the plan on the next sheet)
-            return first + grid(V) + [[D] + list(A), Shelf(tail)]
+            return first + grid(V) + [[D] + list(A), Shelf(_opened(tail))]
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
         rows[-1] = [c for c in rows[-1] if c.name] + tail
     else:
-        rows.append(Shelf(tail))        # the tables and notes a row of their own: broken to fill the sheet
+        rows.append(Shelf(_opened(tail)))     # the tables and notes a row of their own: broken to fill the sheet
     return rows
 
 
@@ -1305,14 +1337,103 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw, stacked=stacked))
     if best is None:
         raise said_error(GraphplanError, "sh kin fit", None, None, form=f.name, option="--format")
-    return taller(dr, nat, best[1], lambda k: _laid_again(nat, best[1], diagrams_size(dr, nat, k), f))
+    chosen = best[1]
+    b = beside_tables(nat, chosen, diagrams_size(dr, nat, chosen.diagrams), f, own(chosen.mu))
+    if b:
+        chosen = replace(chosen, beside=b)
+    return taller(dr, nat, chosen, lambda k: _laid_again(nat, chosen, diagrams_size(dr, nat, k), f))
+
+
+BESIDE_MOST = 4      # a set's first tables tried as one column beside the last acceleration plan: 2 … this many
+
+
+def set_pages(nat: Natural, p: Plan, dsize, f: Form, beside: tuple[int, ...] | None = None) -> list | None:
+    """The set's sheets as ``flow`` lays them at the plan's scales with diagrams of ``dsize`` (each a
+    list of (leaf, box)); ``beside``: the plan's own unless given."""
+    from graphplan.sheets.compose import keep_out, later_keep
+    region = field_of(f)
+    return flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes, stacked=p.stacked,
+                          beside=p.beside if beside is None else beside),
+                region, keep_out(f), later=later_keep(f), ragged=True)
+
+
+def page_blank(page, region, keep, sizes: dict[str, tuple[float, float]] | None = None) -> float:
+    """The largest blank rectangle (mm², ``_empty_rect``: both sides at least ``BLANK_MM``) of a laid
+    sheet's field: off each drawing's and table's own size centred in its box (``sizes``: a plan's own
+    size where its cell is the family's largest) and off the title block (``keep``)."""
+    sizes = sizes or {}
+    ink = [keep]
+    for leaf, (x0, y0, x1, y1) in page:
+        if not leaf.name:
+            continue
+        w, h = sizes.get(leaf.name, (leaf.w, leaf.h))
+        w, h = min(w, x1 - x0), min(h, y1 - y0)
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        ink.append((cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2))
+    return _empty_rect(region, ink)
+
+
+def set_blanks(pages, f: Form, sizes: dict[str, tuple[float, float]] | None = None) -> list[float]:
+    """``page_blank`` of each sheet of a laid set (form 1's title block on the first, 2a's on the
+    later ones)."""
+    from graphplan.sheets.compose import keep_out, later_keep
+    return [page_blank(page, field_of(f), keep_out(f) if n == 0 else later_keep(f), sizes)
+            for n, page in enumerate(pages)]
+
+
+def _lines(n: int, most: int):
+    """The ways to set the first 2 … ``most`` of ``n`` items in two or more lines, in order: the
+    lines' counts (``(1, 1)``, ``(2, 1)``, ``(1, 2)``, ``(1, 1, 1)`` …)."""
+    def parts(m: int):
+        if m == 0:
+            yield ()
+            return
+        for k in range(1, m + 1):
+            for rest in parts(m - k):
+                yield (k,) + rest
+    for m in range(2, min(most, n) + 1):
+        yield from (c for c in parts(m) if len(c) > 1)
+
+
+def beside_tables(nat: Natural, p: Plan, dsize, f: Form, sizes: dict[str, tuple[float, float]] | None = None
+                  ) -> tuple[int, ...]:
+    """The set's first tables as one block beside the last acceleration plan (``set_tail``): none
+    (each an item of the row, as before), or the lines whose sheets — as many, no sheet of the notes
+    alone — leave the smallest largest blank on a sheet before the last: the last sheet holds what
+    is left, an earlier one half empty is room a table could have taken (the blind review's A3
+    coupler-slider: sheet 4 held its acceleration plan and Table 1 over an empty lower half, Table 2
+    on sheet 5; the crusher's A2 sheet 3 a 380 × 80 mm band). Taken where that blank is smaller by
+    a ``BLANK_MM`` square or more; of as good, the fewest tables in the block."""
+    n = len(nat.tables[p.tables]) - (p.stacked if 0 < p.stacked <= len(nat.tables[p.tables]) else 0)
+    if not nat.count["acceleration"]:
+        return ()
+
+    def judged(b: tuple[int, ...]):
+        pages = set_pages(nat, p, dsize, f, b)
+        if pages is None:
+            return None
+        orphan = int(all(leaf.name in ("notes", "") for leaf, _ in pages[-1]))
+        blanks = set_blanks(pages, f, sizes)
+        return len(pages), orphan, max(blanks[:-1], default=0.0)
+    first = judged(())
+    if first is None or first[0] < 2:
+        return ()
+    best, got = (), first
+    for b in _lines(n, BESIDE_MOST):
+        tried = judged(b)
+        if tried is None or tried[0] > first[0] or tried[1] > first[1]:
+            continue
+        if tried[2] <= got[2] - (BLANK_MM ** 2 if not best else 1.0):
+            best, got = b, tried
+    return best
 
 
 def _laid_again(nat: Natural, p: Plan, dsize, f: Form) -> tuple[int, int] | None:
     """A set's pages at the plan's scales with diagrams of ``dsize``: (count, notes alone on the last)."""
     from graphplan.sheets.compose import keep_out, later_keep
     region = field_of(f)
-    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes, stacked=p.stacked), region,
+    out = flow(_set_rows(nat, p.mu, dsize, p.tables, region[2] - region[0], p.after, p.notes, stacked=p.stacked,
+                         beside=p.beside), region,
                keep_out(f), later=later_keep(f), ragged=True)
     return None if out is None else (len(out), int(all(leaf.name in ("notes", "") for leaf, _ in out[-1])))
 
@@ -1349,4 +1470,4 @@ def taller(dr: Drafter, nat: Natural, p: Plan, laid) -> Plan:
                 and flat(dr, k) <= flat(dr, p.diagrams) and laid(k) == first:
             best, score = k, got
     return p if best == p.diagrams else Plan(p.mu, best, p.tables, p.shape, p.vcols, p.acols, p.parts, p.sheets,
-                                             p.counts, p.after, p.notes, stacked=p.stacked)
+                                             p.counts, p.after, p.notes, stacked=p.stacked, beside=p.beside)
