@@ -1270,6 +1270,12 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     4. "leader": as 2. with the label merely ``RIVAL_BOX`` clear of the rivals;
     5. "leader": on any leader ``_far`` allows; 6. "placed": as ``place_labels`` places it.
 
+    In 2. a leader across ``avoid`` is tried only after 3. and 4. found none that keeps off it (stop 55:
+    a number beside its point with a thin line broken under it, or on a looser leader, reads as its
+    point's; one across the curve reads as a point of the branch it crosses). A number keeps
+    ``STEEP_CLEAR`` sideways from steep lines (beside or on a leader) and, beside, ``beside`` mm of
+    its point at most (``NUMBER_NEAR``'s rings).
+
     Returns which ("" when sketched: nothing placed). A number reads as its own point's: beside it
     with nothing between, or at the end of a leader that says whose it is."""
     if _SKETCH[-1] or not asked:
@@ -1296,7 +1302,7 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
                 cand.a[k:k + 1], cand.b[k:k + 1], avoid[:-1], avoid[1:])[0])
         return crossing[k]
     k = None
-    for stage in ("off", "on", "broken", "off loose", "on loose", "any"):
+    for stage in ("off", "broken", "off loose", "on", "on loose", "any"):
         if stage == "broken":
             if _break_beside(record, req, ink, layer, beside, keep_whole):
                 return "broken"
