@@ -468,9 +468,9 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
 
 def _steep_counts(ob: Obstacles, boxes: np.ndarray, clear: float) -> np.ndarray:
     """For each candidate box (m, 4): how many steep lines (``STEEP``) pass within ``clear`` + half
-    their width of its left or right side — the box grown by ``clear`` sideways, by ``CLEAR`` up and
-    down (a steep line over or under a number does not read as its "1"); with ``clear`` = ``CLEAR``
-    those that meet the box grown by ``CLEAR`` all round."""
+    their width of it — beside it, or ending over or under it (a tick, the stub of a line broken
+    under it): either reads as a "1" by the digit. A steep line cannot pass over a number without
+    passing beside it, so only its ends are kept that far above and below."""
     if not len(ob.segs) or not len(boxes):
         return np.zeros(len(boxes), dtype=int)
     dx = np.abs(ob.segs[:, 2] - ob.segs[:, 0])
@@ -481,8 +481,8 @@ def _steep_counts(ob: Obstacles, boxes: np.ndarray, clear: float) -> np.ndarray:
     sub = Obstacles(ob.segs[steep], ob.half[steep], [], [], [], [], None,
                     (ob.lo_x[steep], ob.hi_x[steep], ob.lo_y[steep], ob.hi_y[steep]))
     wide = boxes.copy()
-    wide[:, 0] -= clear - CLEAR
-    wide[:, 2] += clear - CLEAR
+    wide[:, :2] -= clear - CLEAR
+    wide[:, 2:] += clear - CLEAR
     return _counts(sub, wide, CLEAR)
 
 
@@ -565,11 +565,10 @@ def _breaking(record: Record, req: LabelRequest, ink: Box, accept=None, steep: f
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     count = _counts(local, boxes, number=_number(req))
     if steep > CLEAR and is_number(req.text):
-        # the lines kept whole that far; a thin one within CLEAR is broken under the number, one
-        # between CLEAR and ``steep`` stays whole beside it (a "1" again)
+        # no steep line, thin or not, that near: one broken under a number leaves its stub over the digit,
+        # which reads "|7" as a whole one beside it does (stop 55: LINK55's 7, 4, 8 on their projections)
         thin = obstacles([p for p in record.items if breakable(p)]).near(req.at, NEAR[-1] + text_size)
-        count = (count + _steep_counts(local, boxes, steep) + _steep_counts(thin, boxes, steep)
-                 - _steep_counts(thin, boxes, CLEAR))
+        count = count + _steep_counts(local, boxes, steep) + _steep_counts(thin, boxes, steep)
     free = np.nonzero(count == 0)[0]
     if req.rivals:
         free = [k for k in list(free) if owned(req, boxes[k])]
@@ -1311,6 +1310,9 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
                        off_lines=stage != "any", reject=crosses if stage.startswith("off") else None)
         if k is not None:
             break
+    if k is None and is_number(req.text):     # the last resort still on a leader that says whose it is,
+        cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink)      # near a steep line where no spot
+        k = cand.first(req, None, off_lines=False)                    # keeps clear (a crowded diagram)
     if k is None:
         place_labels(record, asked[:1], layer=layer)
         return "placed"
