@@ -234,3 +234,21 @@ def test_the_crushers_a3_set_draws_delta_t_longer_than_the_turned_inertia():
         b = by[name].bounds()
         assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6, name
 
+
+
+@pytest.mark.slow
+def test_the_energy_mass_diagram_outweighs_the_speed_chart():
+    """Review 54 #15 (the coupler-slider six-bar, A1 en): the secondary ω(φ) chart (with its legend)
+    no longer dwarfs the energy–mass diagram, the sheet's main construction (its axes and curve): at
+    most twice its box's area — it was ~6 times (ω(φ) ~334 × 244 mm beside the diagram's ~130 × 99);
+    measured on the placed drawings. (Added in 9ac95c5, lost with cc1263e's revert of another test.)"""
+    from conftest import scene_sheet
+    from review_scenes import COUPLER_SLIDER54
+    sheet = scene_sheet(COUPLER_SLIDER54, "dynamics", "A1", "en")
+    by = {p.name: p for p in sheet.placed}
+    band = next(q for q in sheet.placed if q.name in ("band", "wittenbauer"))
+    witt = [p for p in band.record.items if (p.step or "").startswith(("ΔT(I*)", "I* axis", "ΔT axis"))]
+    xs = [x for p in witt for x, _ in p.points]
+    ys = [y for p in witt for _, y in p.points]
+    sx0, sy0, sx1, sy1 = by["speed"].record.bounds()
+    assert (sx1 - sx0) * (sy1 - sy0) <= 2.0 * (max(xs) - min(xs)) * (max(ys) - min(ys))

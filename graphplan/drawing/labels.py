@@ -26,6 +26,11 @@ from graphplan.graphic.record import LabelRequest, Primitive, Record, vector_arr
 Box = tuple[float, float, float, float]
 
 CLEAR = 0.5          # mm of paper between a label's ink and a line's ink when placing
+STEEP_CLEAR = 1.2    # … beside a diagram's point number (``place_beside``), from a steep line at either side of it:
+#                      a near-vertical stroke 0.5 mm from a digit reads as a "1" (the shaper's "2" by its vertical
+#                      projection read "12"); only sideways and only steep lines — a uniform 1.2 mm pushed point 0,
+#                      on its own (horizontal) axis, 3.9 mm off its point (stop 54)
+STEEP = math.tan(math.radians(30.0))   # a line within 30° of the vertical is steep (|dx| ≤ STEEP·|dy|)
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
 APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d")
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
@@ -461,8 +466,31 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
     return record
 
 
-def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
-    gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+def _steep_counts(ob: Obstacles, boxes: np.ndarray, clear: float) -> np.ndarray:
+    """For each candidate box (m, 4): how many steep lines (``STEEP``) pass within ``clear`` + half
+    their width of it — beside it, or ending over or under it (a tick, the stub of a line broken
+    under it): either reads as a "1" by the digit. A steep line cannot pass over a number without
+    passing beside it, so only its ends are kept that far above and below."""
+    if not len(ob.segs) or not len(boxes):
+        return np.zeros(len(boxes), dtype=int)
+    dx = np.abs(ob.segs[:, 2] - ob.segs[:, 0])
+    dy = np.abs(ob.segs[:, 3] - ob.segs[:, 1])
+    steep = np.nonzero((dx <= STEEP * dy) & (dy > 1e-9))[0]
+    if not len(steep):
+        return np.zeros(len(boxes), dtype=int)
+    sub = Obstacles(ob.segs[steep], ob.half[steep], [], [], [], [], None,
+                    (ob.lo_x[steep], ob.hi_x[steep], ob.lo_y[steep], ob.hi_y[steep]))
+    wide = boxes.copy()
+    wide[:, :2] -= clear - CLEAR
+    wide[:, 2:] += clear - CLEAR
+    return _counts(sub, wide, CLEAR)
+
+
+def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None, steep: float = 0.0,
+          rings: tuple[float, ...] = NEAR):
+    """The first free spot beside the point (the ``rings``), or None; ``steep`` > 0 keeps a
+    number that far from a steep line at either side of it (``_steep_counts``)."""
+    gaps = (max(req.gap, rings[0]),) + tuple(g for g in rings[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
     # the first free spot in order of preference: the nearer rings counted first (most labels find
     # their spot there), the sight line, the rivals and ``accept`` tried only up to the first that passes
@@ -470,7 +498,10 @@ def _near(ob: Obstacles, req: LabelRequest, ink: Box, accept=None):
     for lo, hi in ((0, rings), (rings, len(boxes))):
         if lo >= hi:
             continue
-        free = np.nonzero(_counts(ob, boxes[lo:hi], number=_number(req)) == 0)[0] + lo
+        count = _counts(ob, boxes[lo:hi], number=_number(req))
+        if steep > CLEAR and is_number(req.text):
+            count = count + _steep_counts(ob, boxes[lo:hi], steep)
+        free = np.nonzero(count == 0)[0] + lo
         for k in free.tolist():
             if req.sight and not _in_sight(ob, req.at, boxes[k]):
                 continue
@@ -520,17 +551,25 @@ def breakable(p: Primitive) -> bool:
             and p.role in BREAK_ROLES and p.layer != "frame")
 
 
-def _breaking(record: Record, req: LabelRequest, ink: Box, accept=None):
+def _breaking(record: Record, req: LabelRequest, ink: Box, accept=None, steep: float = 0.0,
+              rings: tuple[float, ...] = NEAR):
     """A joint's letter where the point is crowded by thin lines (the crank's pivot, where twelve
     positions meet): the nearest spot beside the point (within ``NEAR``) that meets no line but
     breakable ones (``breakable``) and no label; the thin lines under it are broken there, each
-    piece keeping its role, layer, step and width. None where even that finds no spot."""
+    piece keeping its role, layer, step and width. None where even that finds no spot. ``steep``, ``rings``:
+    as ``_near`` (a number kept that far from the steep lines not broken, the curve's)."""
     hard = obstacles([p for p in record.items if not breakable(p)])
     text_size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
     local = hard.near(req.at, NEAR[-1] + text_size)
-    gaps = (max(req.gap, NEAR[0]),) + tuple(g for g in NEAR[1:] if g > req.gap)
+    gaps = (max(req.gap, rings[0]),) + tuple(g for g in rings[1:] if g > req.gap)
     boxes, starts = _candidates(req, ink, gaps, 2 * DIRECTIONS)
-    free = np.nonzero(_counts(local, boxes, number=_number(req)) == 0)[0]
+    count = _counts(local, boxes, number=_number(req))
+    if steep > CLEAR and is_number(req.text):
+        # no steep line, thin or not, that near: one broken under a number leaves its stub over the digit,
+        # which reads "|7" as a whole one beside it does (stop 55: LINK55's 7, 4, 8 on their projections)
+        thin = obstacles([p for p in record.items if breakable(p)]).near(req.at, NEAR[-1] + text_size)
+        count = count + _steep_counts(local, boxes, steep) + _steep_counts(thin, boxes, steep)
+    free = np.nonzero(count == 0)[0]
     if req.rivals:
         free = [k for k in list(free) if owned(req, boxes[k])]
     if accept is not None:
@@ -1051,6 +1090,9 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
 
 
 BESIDE_MM = 4.3     # mm: a label set beside its point with no leader no farther from it (farther reads as nobody's)
+NUMBER_BESIDE = 3.0                 # … a diagram's point number (``place_beside``): review 4 asks ≤ 3 mm of paper
+NUMBER_NEAR = (0.8, 1.5, 2.0, 2.5)  # the rings it tries (along a diagonal a ring's gap is √2 times: 2.5 → 3.5 mm,
+#                                     which ``beside`` refuses); 2 and 2.5 where 1.5 mm is too near a steep line
 
 
 def _led_all(at: complex, boxes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -1165,11 +1207,13 @@ class Leads:
         return None
 
 
-def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR, worth=None) -> Leads:
+def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] = FAR, worth=None,
+          steep: float = 0.0) -> Leads:
     """Every leader candidate of a label (``Leads``) against the obstacles ``ob`` (those near it),
     on the ``rings`` (``FAR``, or its nearer ones); ``worth(lengths)``, where given, the candidates
     worth asking by their leaders' lengths (the others are not free: a caller that takes none of
-    them saves counting them — each candidate is counted on its own, so the rest count the same)."""
+    them saves counting them — each candidate is counted on its own, so the rest count the same);
+    ``steep``: a number's box that far from a steep line at either side (``_steep_counts``)."""
     boxes, starts = _candidates(req, ink, rings, FAR_DIRECTIONS)
     a, b = _led_all(req.at, boxes)
     if worth is None:
@@ -1179,6 +1223,10 @@ def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] =
         asked = np.nonzero(base)[0]
         if len(asked):
             base[asked] = _counts(ob, boxes[asked], number=_number(req)) == 0
+    if steep > CLEAR and is_number(req.text):
+        idx = np.nonzero(base)[0]
+        if len(idx):
+            base[idx[_steep_counts(ob, boxes[idx], steep) > 0]] = False
     if ob.boxes:
         q = np.asarray(ob.boxes, dtype=float)
         idx = np.nonzero(base)[0]
@@ -1205,7 +1253,7 @@ def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] =
 
 
 @_remembered
-def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels", beside: float = BESIDE_MM,
+def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels", beside: float = NUMBER_BESIDE,
                  avoid: np.ndarray | None = None, keep_whole: tuple[str, ...] = ()) -> str:
     """Place one label near its point with a checked leader — a diagram's numbered point among its
     ``rivals`` (the other points: ``LabelRequest.rivals``). ``asked``: the same label asked in order
@@ -1221,6 +1269,12 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     4. "leader": as 2. with the label merely ``RIVAL_BOX`` clear of the rivals;
     5. "leader": on any leader ``_far`` allows; 6. "placed": as ``place_labels`` places it.
 
+    In 2. a leader across ``avoid`` is tried only after 3. and 4. found none that keeps off it (stop 55:
+    a number beside its point with a thin line broken under it, or on a looser leader, reads as its
+    point's; one across the curve reads as a point of the branch it crosses). A number keeps
+    ``STEEP_CLEAR`` sideways from steep lines (beside or on a leader) and, beside, ``beside`` mm of
+    its point at most (``NUMBER_NEAR``'s rings).
+
     Returns which ("" when sketched: nothing placed). A number reads as its own point's: beside it
     with nothing between, or at the end of a leader that says whose it is."""
     if _SKETCH[-1] or not asked:
@@ -1229,7 +1283,8 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     for req in asked:
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink)
+        spot = _near(ob.near(req.at, NEAR[-1] + reach), req, ink, steep=STEEP_CLEAR, rings=NUMBER_NEAR,
+                     accept=lambda box, at=req.at: _box_gap(box, at) <= beside)
         if spot is not None and _box_gap(spot[0], req.at) <= beside:
             record.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
                          layer=layer)
@@ -1237,7 +1292,7 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     req = asked[-1]
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     reach = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-    cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink)
+    cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink, steep=STEEP_CLEAR)
     crossing: dict[int, bool] = {}
 
     def crosses(k: int) -> bool:             # the leader across the ``avoid`` polyline (asked lazily)
@@ -1246,7 +1301,7 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
                 cand.a[k:k + 1], cand.b[k:k + 1], avoid[:-1], avoid[1:])[0])
         return crossing[k]
     k = None
-    for stage in ("off", "on", "broken", "off loose", "on loose", "any"):
+    for stage in ("off", "broken", "off loose", "on", "on loose", "any"):
         if stage == "broken":
             if _break_beside(record, req, ink, layer, beside, keep_whole):
                 return "broken"
@@ -1255,6 +1310,9 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
                        off_lines=stage != "any", reject=crosses if stage.startswith("off") else None)
         if k is not None:
             break
+    if k is None and is_number(req.text):     # the last resort still on a leader that says whose it is,
+        cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink)      # near a steep line where no spot
+        k = cand.first(req, None, off_lines=False)                    # keeps clear (a crowded diagram)
     if k is None:
         place_labels(record, asked[:1], layer=layer)
         return "placed"
@@ -1270,7 +1328,8 @@ def _break_beside(record: Record, req: LabelRequest, ink: Box, layer: str, besid
     thin lines are in the way — broken under it (``_breaking``); no line of a ``keep_whole`` step
     broken. Whether it was (the record unchanged where not)."""
     before = list(record.items)
-    spot = _breaking(record, req, ink)
+    spot = _breaking(record, req, ink, accept=lambda box: _box_gap(box, req.at) <= beside, steep=STEEP_CLEAR,
+                     rings=NUMBER_NEAR)
     whole = {id(p) for p in record.items}
     if spot is None or _box_gap(spot[0], req.at) > beside or any(
             p.step in keep_whole and id(p) not in whole for p in before):
