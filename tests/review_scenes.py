@@ -6288,91 +6288,7 @@ divisions = 10
 
 # kin55: stop 55's new six-bar (the lead's /work/lead/s55/link55.toml), a crank-rocker whose rocker extension D
 # swings a block in an oscillating slotted lever O3E pivoted at O3 (a link with one joint and its own points).
-KIN55_DOSING = '''# Stop 55 (the lead's check): a six-bar whose crank-rocker four-bar O1ABO2 swings, through the rocker's
-# extension D, a block in the slot of a second, oscillating slotted lever O3E (a dosing drive's shutter):
-# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПВ; the crank turns clockwise; a resistance moment on the lever.
-title = "Шестиланковий механізм привода дозатора з кулісою"
-title_en = "Six-bar dosing drive with a slotted lever"
-designation = "ТММ.КП.55.000"
 
-[sheet]
-student = "Перевірка Н. Н."
-teacher = "Викладач В. В."
-group = "МБ-55"
-organisation = "НУБіП України"
-
-[frame.points]
-O1 = [0, 0]
-O2 = [0.20, 0.04]
-O3 = [0.30, 0.26]
-
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.05
-rpm = 140
-direction = "cw"
-points = { S1 = 0.0 }
-mass = 2
-inertia = 0.004
-
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.18
-points = { S2 = 0.5 }
-mass = 3
-inertia = 0.01
-
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.12
-points = { D = 1.6, S3 = 0.6 }
-mass = 4
-inertia = 0.02
-
-[[link]]
-name = "D"
-number = 4
-joints = ["D"]
-slides_on = "O3E"
-mass = 1
-
-[[link]]
-name = "O3E"
-number = 5
-joints = ["O3"]
-length = 0.30
-points = { E = 1.0, S5 = 0.5 }
-mass = 6
-inertia = 0.06
-
-[positions]
-count = 12
-start = "working"
-accel = [4]
-force_phi_deg = 120
-output = "O3E"
-working_stroke = "slow"
-
-[loads]
-g = 9.81
-
-[[moment]]
-link = 5
-magnitude = 60
-stroke = "working"
-direction = "oppose"
-
-[dynamics]
-delta = 0.06
-efficiency = 0.85
-synchronous_rpm = 1000
-'''
 
 
 LINK55 = '''# Stop 55 (the lead's check): a six-bar whose crank-rocker four-bar O1ABO2 swings, through the rocker's
@@ -6460,3 +6376,6 @@ delta = 0.06
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+KIN55_DOSING = LINK55     # kin55's name for the lead's six-bar
