@@ -898,6 +898,12 @@ def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
     return out
 
 
+# ``_one_sheet_at``'s arrangements by the cells' sizes (``plan`` asks the same sizes again in its next
+# round and with the hodographs floored or not): the latest ``ARRANGED_KEPT`` kept
+_ARRANGED: dict[tuple, tuple | None] = {}
+ARRANGED_KEPT = 20000
+
+
 CHARTS_WRAP = 2     # the charts two to a row where in one row no one-sheet composition fits (``_tree``)
 
 
@@ -935,6 +941,17 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
             """(fill, hodographs' columns, the column's parts, the hodographs' row) of the best
             arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
+            # the same cells arranged again (``plan``'s next round, the hodographs' floor changed or
+            # not: the same sizes): once per sizes, as extents add up nothing but the cells' sizes
+            key = (W, H, wrap, shape, first, tuple((c.w, c.h) for c in cols),
+                   tuple((fam, tuple((x.w, x.h) for x in xs)) for fam, xs in leaves.items()))
+            if key not in _ARRANGED:
+                if len(_ARRANGED) >= ARRANGED_KEPT:
+                    _ARRANGED.pop(next(iter(_ARRANGED)))
+                _ARRANGED[key] = _arranged_at(leaves, shape, first)
+            return _ARRANGED[key]
+
+        def _arranged_at(leaves, shape, first):
             groups = Leaf("groups", *extent(_groups_node(shape, leaves)))      # sizes only: one extent each
             grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc, ROWS_GAP)))] if nh else []
                      for hc in range(1, max(nh, 1) + 1)}
