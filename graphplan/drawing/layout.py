@@ -157,6 +157,52 @@ def extent(node: Node) -> tuple[float, float]:
     return max(ws), sum(hs) + node.gap * (len(hs) - 1)
 
 
+def extent_with(node: Node, slots: Sequence[Leaf | None]):
+    """``extent(node)`` as a function of the sizes of the leaves ``slots`` (each in the tree as
+    itself, in no ``Grid``; None: none): ``f(sizes)`` — a (w, h) a slot, or None for a None slot —
+    is the same sums and maxima, to the bit, as ``extent`` of the tree with those leaves of those
+    sizes, the subtrees that hold no slot added up once (a composition's search tries one tree with
+    each of its tables' columns and its plans' grids: the one-sheet force sheet ~70 trees a trial)."""
+    ids = [id(s) if s is not None else None for s in slots]
+    path: set[int] = set()
+
+    def holds(n) -> bool:
+        got = id(n) in ids
+        if not got:
+            for c in getattr(n, "children", ()):
+                got = holds(c) or got
+            if got:
+                if not isinstance(n, (Row, Stack)):
+                    raise ValueError("a slot inside a grid")
+                path.add(id(n))
+        return got
+    holds(node)
+    fixed: dict[int, tuple[float, float]] = {}
+
+    def ext(n, at: dict) -> tuple[float, float]:
+        i = id(n)
+        if i in at:
+            return at[i]
+        if i not in path:
+            got = fixed.get(i)
+            if got is None:
+                got = fixed[i] = extent(n)
+            return got
+        ws: list[float] = []
+        hs: list[float] = []
+        for c in n.children:
+            w, h = ext(c, at)
+            ws.append(w)
+            hs.append(h)
+        if n.__class__ is Row or (n.__class__ is not Stack and isinstance(n, Row)):
+            return sum(ws) + n.gap * (len(ws) - 1), max(hs)
+        return max(ws), sum(hs) + n.gap * (len(hs) - 1)
+
+    def sized(sizes: Sequence[tuple[float, float] | None]) -> tuple[float, float]:
+        return ext(node, {i: tuple(z) for i, z in zip(ids, sizes) if i is not None})
+    return sized
+
+
 def fits(node: Node, w: float, h: float) -> bool:
     """Whether the node's extent fits a box w × h (mm)."""
     nw, nh = extent(node)

@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from graphplan.drawing.layout import (GAP, Box, Grid, Leaf, Placed, Row, Stack, arrange, centred, column_size,
-                                      extent, fits, flow, set_columns, split, top_left)
+                                      extent, extent_with, fits, flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets import forceset
@@ -956,17 +956,21 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
             grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc, ROWS_GAP)))] if nh else []
                      for hc in range(1, max(nh, 1) + 1)}
             found = None
+            # one tree a cut and a row of the hodographs, its hodographs' grid and tables' column
+            # slots of each size in turn (``extent_with``: the sums of each tree, to the bit)
+            slots = [Leaf("column", cols[0].w, cols[0].h)] + [Leaf("hodographs", grids[1][0].w, grids[1][0].h)] * bool(nh)
+            tries = [(hc, parts) for hc in range(1, max(nh, 1) + 1) for parts in range(1, len(cols) + 1)]
             for cut in CUTS:
                 for hrow in HROWS if nh else HROWS[:1]:
-                    for hc in range(1, max(nh, 1) + 1):
-                        for parts, C in enumerate(cols, 1):
-                            tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc], cut, wrap))
-                            if tw <= W + 1e-9 and th <= H + 1e-9:
-                                fill = min(W / tw, H / th)
-                                if found is None or fill > found[0] + 1e-9:
-                                    found = (fill, hc, parts, hrow, cut)
-                                if first:
-                                    return found
+                    sized = extent_with(_tree(shape, leaves, 1, slots[0], hrow, groups, slots[1:], cut, wrap), slots)
+                    for hc, parts in tries:
+                        tw, th = sized([(cols[parts - 1].w, cols[parts - 1].h)] + [(g.w, g.h) for g in grids[hc]])
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, hc, parts, hrow, cut)
+                            if first:
+                                return found
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
