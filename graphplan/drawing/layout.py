@@ -163,43 +163,51 @@ def extent_with(node: Node, slots: Sequence[Leaf | None]):
     is the same sums and maxima, to the bit, as ``extent`` of the tree with those leaves of those
     sizes, the subtrees that hold no slot added up once (a composition's search tries one tree with
     each of its tables' columns and its plans' grids: the one-sheet force sheet ~70 trees a trial)."""
-    ids = [id(s) if s is not None else None for s in slots]
-    path: set[int] = set()
+    at = {id(s): k for k, s in enumerate(slots) if s is not None}
+    # the rows and stacks on a path from a slot to the root, children before parents: each its
+    # children's sizes with the constant ones filled in, and where a slot's or such a node's go
+    program: list[tuple[bool, float, list[float], list[float], list[tuple[int, bool, int]]]] = []
 
-    def holds(n) -> bool:
-        got = id(n) in ids
-        if not got:
-            for c in getattr(n, "children", ()):
-                got = holds(c) or got
-            if got:
-                if not isinstance(n, (Row, Stack)):
-                    raise ValueError("a slot inside a grid")
-                path.add(id(n))
-        return got
-    holds(node)
-    fixed: dict[int, tuple[float, float]] = {}
-
-    def ext(n, at: dict) -> tuple[float, float]:
-        i = id(n)
-        if i in at:
-            return at[i]
-        if i not in path:
-            got = fixed.get(i)
-            if got is None:
-                got = fixed[i] = extent(n)
-            return got
+    def compiled(n) -> tuple[bool, int] | None:
+        """(a slot?, its index) — a slot, or a node on a slot's path — or None: constant."""
+        if id(n) in at:
+            return True, at[id(n)]
+        kids = getattr(n, "children", None)
+        if not kids:
+            return None
+        refs = [compiled(c) for c in kids]
+        if all(r is None for r in refs):
+            return None
+        if not isinstance(n, (Row, Stack)):
+            raise ValueError("a slot inside a grid")
         ws: list[float] = []
         hs: list[float] = []
-        for c in n.children:
-            w, h = ext(c, at)
+        subs = []
+        for j, (c, r) in enumerate(zip(kids, refs)):
+            w, h = extent(c) if r is None else (0.0, 0.0)
             ws.append(w)
             hs.append(h)
-        if n.__class__ is Row or (n.__class__ is not Stack and isinstance(n, Row)):
-            return sum(ws) + n.gap * (len(ws) - 1), max(hs)
-        return max(ws), sum(hs) + n.gap * (len(hs) - 1)
+            if r is not None:
+                subs.append((j, *r))
+        row = n.__class__ is Row or (n.__class__ is not Stack and isinstance(n, Row))
+        program.append((row, n.gap, ws, hs, subs))
+        return False, len(program) - 1
+    root = compiled(node)
+    whole = extent(node) if root is None else None
 
     def sized(sizes: Sequence[tuple[float, float] | None]) -> tuple[float, float]:
-        return ext(node, {i: tuple(z) for i, z in zip(ids, sizes) if i is not None})
+        if root is None:
+            return whole
+        if root[0]:
+            return tuple(sizes[root[1]])
+        vals: list[tuple[float, float]] = []
+        for row, gap, ws0, hs0, subs in program:
+            ws, hs = ws0[:], hs0[:]
+            for j, slot, k in subs:
+                ws[j], hs[j] = sizes[k] if slot else vals[k]
+            vals.append((sum(ws) + gap * (len(ws) - 1), max(hs)) if row
+                        else (max(ws), sum(hs) + gap * (len(hs) - 1)))
+        return vals[-1]
     return sized
 
 
