@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, extent_with, flow, split
+from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
@@ -578,16 +578,6 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
 
         def _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both):
             found = None
-            # one tree of the shape, its plans' grids and tables' column slots of each size in turn
-            # (``extent_with``: the same sums, to the bit, as each tree's ``extent``)
-            slots = [None if None in vgrids.values() else Leaf("velocity"),
-                     None if None in agrids.values() else Leaf("acceleration"),
-                     Leaf("column"), Leaf("tables"), Leaf("notes")]
-            sized_ = extent_with(tree(shape, P, D, slots[0], slots[1], slots[2], tuple(slots[3:])), slots)
-
-            def sized(vg, ag, C, half) -> tuple[float, float]:
-                return sized_([None if vg is None else extent(vg), None if ag is None else extent(ag), (C.w, C.h),
-                               (half[0].w, half[0].h), (half[1].w, half[1].h)])
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
                     for way, C in enumerate(cols):
@@ -599,7 +589,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             # the notes under the tables as wide as they are (the column's width)
                             notes_w = math.floor(half[0].w / NOTES_STEP) * NOTES_STEP
                             C, half = widen(way, notes_w)
-                        tw, th = sized(vg, ag, C, half)
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
@@ -610,7 +600,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
                                 C_, half_ = widen(way, w_)
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
-                                tw_, th_ = sized(vg, ag, C_, half_)
+                                tw_, th_ = extent(tree(shape, P, D, vg, ag, C_, half_))
                                 if not wide:
                                     if th_ <= H + 1e-9:
                                         near.append(dict(mu))
