@@ -11,6 +11,7 @@ nests in another and no lettering of one runs into another.
 """
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
@@ -156,6 +157,60 @@ def extent(node: Node) -> tuple[float, float]:
     return max(ws), sum(hs) + node.gap * (len(hs) - 1)
 
 
+def extent_with(node: Node, slots: Sequence[Leaf | None]):
+    """``extent(node)`` as a function of the sizes of the leaves ``slots`` (each in the tree as
+    itself, in no ``Grid``; None: none): ``f(sizes)`` — a (w, h) a slot, or None for a None slot —
+    is the same sums and maxima, to the bit, as ``extent`` of the tree with those leaves of those
+    sizes, the subtrees that hold no slot added up once (a composition's search tries one tree with
+    each of its tables' columns and its plans' grids: the one-sheet force sheet ~70 trees a trial)."""
+    at = {id(s): k for k, s in enumerate(slots) if s is not None}
+    # the rows and stacks on a path from a slot to the root, children before parents: each its
+    # children's sizes with the constant ones filled in, and where a slot's or such a node's go
+    program: list[tuple[bool, float, list[float], list[float], list[tuple[int, bool, int]]]] = []
+
+    def compiled(n) -> tuple[bool, int] | None:
+        """(a slot?, its index) — a slot, or a node on a slot's path — or None: constant."""
+        if id(n) in at:
+            return True, at[id(n)]
+        kids = getattr(n, "children", None)
+        if not kids:
+            return None
+        refs = [compiled(c) for c in kids]
+        if all(r is None for r in refs):
+            return None
+        if not isinstance(n, (Row, Stack)):
+            raise ValueError("a slot inside a grid")
+        ws: list[float] = []
+        hs: list[float] = []
+        subs = []
+        for j, (c, r) in enumerate(zip(kids, refs)):
+            w, h = extent(c) if r is None else (0.0, 0.0)
+            ws.append(w)
+            hs.append(h)
+            if r is not None:
+                subs.append((j, *r))
+        row = n.__class__ is Row or (n.__class__ is not Stack and isinstance(n, Row))
+        program.append((row, n.gap, ws, hs, subs))
+        return False, len(program) - 1
+    root = compiled(node)
+    whole = extent(node) if root is None else None
+
+    def sized(sizes: Sequence[tuple[float, float] | None]) -> tuple[float, float]:
+        if root is None:
+            return whole
+        if root[0]:
+            return tuple(sizes[root[1]])
+        vals: list[tuple[float, float]] = []
+        for row, gap, ws0, hs0, subs in program:
+            ws, hs = ws0[:], hs0[:]
+            for j, slot, k in subs:
+                ws[j], hs[j] = sizes[k] if slot else vals[k]
+            vals.append((sum(ws) + gap * (len(ws) - 1), max(hs)) if row
+                        else (max(ws), sum(hs) + gap * (len(hs) - 1)))
+        return vals[-1]
+    return sized
+
+
 def fits(node: Node, w: float, h: float) -> bool:
     """Whether the node's extent fits a box w × h (mm)."""
     nw, nh = extent(node)
@@ -270,23 +325,32 @@ def split(items: Sequence[Leaf], parts: int, gap: float = GAP, counts: Sequence[
             ends.append(ends[-1] + c)
         return [list(items[a:b]) for a, b in zip(ends[:-1], ends[1:])]
     parts = max(1, min(parts, n))
+    return [list(items[a:b]) for a, b in _split_bounds(tuple(t.h for t in items), parts, gap)]
+
+
+@functools.lru_cache(maxsize=4096)
+def _split_bounds(heights: tuple[float, ...], parts: int, gap: float) -> tuple[tuple[int, int], ...]:
+    """``split``'s groups as (start, end) of each, by the items' heights alone (the search tries
+    every way to cut them — once per heights: a force set's search asked the same tables' column
+    ~30 000 times, a fifth of its CPU)."""
+    n = len(heights)
     best = None
 
-    def height(group):
-        return sum(t.h for t in group) + gap * (len(group) - 1)
+    def height(a: int, b: int) -> float:
+        return sum(heights[a:b]) + gap * (b - a - 1)
 
     def cuts(start: int, left: int):
         if left == 1:
-            yield [list(items[start:])]
+            yield [(start, n)]
             return
         for end in range(start + 1, n - left + 2):
             for rest in cuts(end, left - 1):
-                yield [list(items[start:end])] + rest
+                yield [(start, end)] + rest
     for groups in cuts(0, parts):
-        tallest = max(height(g) for g in groups)
+        tallest = max(height(a, b) for a, b in groups)
         if best is None or tallest < best[0] - 1e-9:
             best = (tallest, groups)
-    return best[1] if best else [[]]
+    return tuple(best[1]) if best else ((0, 0),)
 
 
 def column_size(groups: list[list[Leaf]], gap: float = GAP) -> tuple[float, float]:

@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from graphplan.drawing.layout import (GAP, Box, Grid, Leaf, Placed, Row, Stack, arrange, centred, column_size,
-                                      extent, fits, flow, set_columns, split, top_left)
+                                      extent, extent_with, fits, flow, set_columns, split, top_left)
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets import forceset
@@ -898,6 +898,12 @@ def _leaves(nat: Natural, mu: dict[str, float]) -> dict[str, list[Leaf]]:
     return out
 
 
+# ``_one_sheet_at``'s arrangements by the cells' sizes (``plan`` asks the same sizes again in its next
+# round and with the hodographs floored or not): the latest ``ARRANGED_KEPT`` kept
+_ARRANGED: dict[tuple, tuple | None] = {}
+ARRANGED_KEPT = 20000
+
+
 CHARTS_WRAP = 2     # the charts two to a row where in one row no one-sheet composition fits (``_tree``)
 
 
@@ -935,21 +941,36 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
             """(fill, hodographs' columns, the column's parts, the hodographs' row) of the best
             arrangement that fits; ``first``: the first that fits (whether any does)."""
             leaves = _leaves(nat, mu)
+            # the same cells arranged again (``plan``'s next round, the hodographs' floor changed or
+            # not: the same sizes): once per sizes, as extents add up nothing but the cells' sizes
+            key = (W, H, wrap, shape, first, tuple((c.w, c.h) for c in cols),
+                   tuple((fam, tuple((x.w, x.h) for x in xs)) for fam, xs in leaves.items()))
+            if key not in _ARRANGED:
+                if len(_ARRANGED) >= ARRANGED_KEPT:
+                    _ARRANGED.pop(next(iter(_ARRANGED)))
+                _ARRANGED[key] = _arranged_at(leaves, shape, first)
+            return _ARRANGED[key]
+
+        def _arranged_at(leaves, shape, first):
             groups = Leaf("groups", *extent(_groups_node(shape, leaves)))      # sizes only: one extent each
             grids = {hc: [Leaf("hodographs", *extent(Grid(leaves["hodographs"], hc, ROWS_GAP)))] if nh else []
                      for hc in range(1, max(nh, 1) + 1)}
             found = None
+            # one tree a cut and a row of the hodographs, its hodographs' grid and tables' column
+            # slots of each size in turn (``extent_with``: the sums of each tree, to the bit)
+            slots = [Leaf("column", cols[0].w, cols[0].h)] + [Leaf("hodographs", grids[1][0].w, grids[1][0].h)] * bool(nh)
+            tries = [(hc, parts) for hc in range(1, max(nh, 1) + 1) for parts in range(1, len(cols) + 1)]
             for cut in CUTS:
                 for hrow in HROWS if nh else HROWS[:1]:
-                    for hc in range(1, max(nh, 1) + 1):
-                        for parts, C in enumerate(cols, 1):
-                            tw, th = extent(_tree(shape, leaves, hc, C, hrow, groups, grids[hc], cut, wrap))
-                            if tw <= W + 1e-9 and th <= H + 1e-9:
-                                fill = min(W / tw, H / th)
-                                if found is None or fill > found[0] + 1e-9:
-                                    found = (fill, hc, parts, hrow, cut)
-                                if first:
-                                    return found
+                    sized = extent_with(_tree(shape, leaves, 1, slots[0], hrow, groups, slots[1:], cut, wrap), slots)
+                    for hc, parts in tries:
+                        tw, th = sized([(cols[parts - 1].w, cols[parts - 1].h)] + [(g.w, g.h) for g in grids[hc]])
+                        if tw <= W + 1e-9 and th <= H + 1e-9:
+                            fill = min(W / tw, H / th)
+                            if found is None or fill > found[0] + 1e-9:
+                                found = (fill, hc, parts, hrow, cut)
+                            if first:
+                                return found
             return found
 
         for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
