@@ -166,16 +166,19 @@ def _mantissa(v: float) -> float:
     return round(v / 10.0 ** math.floor(math.log10(v) + 1e-12), 9)
 
 
-@pytest.mark.parametrize("width", [252.0, 180.0, 160.0, 300.0])
+@pytest.mark.parametrize("width", [252.0, 180.0, 160.0, 300.0, 110.0, 115.0, 130.0])
 def test_the_balancing_moment_chart_takes_a_round_mu_phi_and_values_its_axis(rocker_turn, width):
     """μφ = 1.786 °/mm was no series value and the M axis read only 0 and 40 under a peak of 83:
-    μφ is a round value whose turn fills 80–100 % of the length, and the ordinate's values at one
-    round step, each at its tick's height times μM, reach past the exact peak and below the trough."""
+    μφ is the finest round value whose turn fits the length (the crusher's 3.273 °/mm = 360°/110 mm,
+    stop 54, was none: 4 °/mm, 90 mm), and the ordinate's values at one round step, each at its
+    tick's height times μM, reach past the exact peak and below the trough."""
     from graphplan.drawing.charts import moment_record
     rec = moment_record(rocker_turn, width, 70.0, "en")
     mu_phi, mu = rec.scales["mu_phi"], rec.scales["mu_M"]
     assert _mantissa(mu_phi) in ROUND, mu_phi
-    assert 0.8 * width - 1e-9 <= 360.0 / mu_phi <= width + 1e-9
+    assert 360.0 / mu_phi <= width + 1e-9
+    finer = max(m * 10.0 ** k for m in ROUND for k in range(-2, 3) if m * 10.0 ** k < mu_phi - 1e-9)
+    assert 360.0 / finer > width, (mu_phi, finer)          # the finest that fits
     curve = next(p for p in rec.items if p.kind == "polyline")
     assert max(x for x, _ in curve.points) == pytest.approx(360.0 / mu_phi)
     values = sorted((float(p.text.replace("−", "-")), p.points[0][1] + 1.2) for p in rec.items

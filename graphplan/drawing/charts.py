@@ -213,21 +213,16 @@ def write_charts(t: Turn, folder: str | Path, title: str = "", lang: str = "uk")
 
 # -- records for the sheet ---------------------------------------------------------------------
 
-TURN_FILL = 0.8       # a round μφ is taken when its turn, 360°/μφ, fills at least this much of the length
-
-
 def turn_scale(width: float) -> float:
     """μφ (°/mm) of a chart over the turn in ``width`` mm: the finest value of the round series
     (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10ⁿ: graphic.scales' series with GOST 2.302's 1.5, 7.5) whose
-    turn 360°/μφ fits the length and fills ≥ ``TURN_FILL`` of it (252 mm → 1.5 °/mm, 240 mm); where
-    none does, the lab's μφ = 360°/L with L the length rounded down to 10 mm."""
+    turn 360°/μφ fits the length — the chart's length follows from it (252 mm → 1.5 °/mm, 240 mm;
+    115 mm → 4 °/mm, 90 mm). A teacher expects μ from the series: the lab's μφ = 360°/L drew the
+    crusher's charts at 3.273 °/mm (110 mm), a scale no ruler reads."""
     need = 360.0 / width
     k0 = math.floor(math.log10(need))
     rounds = sorted(series_value(m, k) for k in (k0, k0 + 1) for m in SERIES + GOST_BETWEEN)
-    mu = next(m for m in rounds if m >= need * (1 - 1e-12))
-    if 360.0 / mu >= TURN_FILL * width:
-        return mu
-    return 360.0 / max(10.0, 10.0 * math.floor(width / 10.0 + 1e-9))
+    return next(m for m in rounds if m >= need * (1 - 1e-12))
 
 
 TICK_MM = 8.0         # an ordinate axis's round values at least this far apart

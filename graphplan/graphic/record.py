@@ -369,6 +369,11 @@ TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl a
 BOWLED = "PРF"       # … of them those whose bowl or bar ends at about half the height (0.45 in osifont)
 BOWL_TOP = 0.35      # an index reaching higher than this (of the letter height) would meet that bowl (a capital, b, d: 0.4; з 0.30)
 BOWL_GAP = 0.08      # the gap it keeps from the letter's ink then, of the letter height
+TUCK_MORE = {**dict.fromkeys("COGQS", 0.06), **dict.fromkeys("AА", 0.25)}
+#  capitals whose ink nearest a bowl lies off their box's top-left corner — round ones (their curve), A (its
+#  slant, the box's corner is its foot's) — tuck this much more (of the letter height): set by the box, P_C's C
+#  stood 0.89 mm from the bowl (P_D's D 0.59) and, in a viewer without our font hinted at 4 px/mm, read as a
+#  word of its own under the P's box (stop 54's knee press); tucked, 0.73 mm
 PRIMES = "'′″"       # a prime's index stands under it (``sub_kern``)
 ARMED = "r"          # lowercase letters open below an arm at their top: the index starts under the arm's end
 
@@ -379,8 +384,9 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     its bowl or bar, its ink starting 0.15 of the letter height inside the letter's box, as a
     typesetter kerns it — set at the full advance it hangs apart, belonging to neither word. A tall
     letter index (a capital, b, d) after a bowl or a middle bar (P, Р, F) would reach up into it (the D
-    of P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink;
-    a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl. After a prime
+    of P_D touched the P's bowl): it keeps ``BOWL_GAP`` of the letter height clear of the letter's ink
+    box — a round capital or an A (``TUCK_MORE``) tucked further, its curved or slanted top-left keeping
+    about as near the bowl as a D's flat one, in our font and in the fallback; a digit (P₁ of the cam's pole) tucks in as before, its flag clear of the bowl. After a prime
     (z′₂, p′_ω, μ′_ω) the index stands under the prime, as a typesetter stacks z'_2 (the prime high,
     the index low, both after the letter): set after the prime's advance it hangs apart from its
     letter, read as a word of its own beside the primed letter (GEARS_B47's notes). After a lowercase
@@ -406,6 +412,7 @@ def sub_kern(prev: str, size: float, c: str, sub: float) -> float:
     inside = -0.15 * size
     if prev in BOWLED and c.isalpha() and cb[3] * em(sub) - SUB_SHIFT * size > BOWL_TOP * size:
         inside = BOWL_GAP * size
+        inside -= TUCK_MORE.get(c, 0.0) * size      # a round capital's curved top-left, A's slant
     return min(0.0, (box[2] * em(size) + inside) - (adv * em(size) + cb[0] * em(sub)))
 
 
