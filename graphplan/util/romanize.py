@@ -114,12 +114,10 @@ def in_latin(text: str, lang: str) -> str:
 def scene_text(meta: dict, key: str, lang: str, default: str = "") -> str:
     """A scene's own text (``title``, ``designation``, ``sheet.student`` …) in the sheet's language:
     on an English sheet its ``KEY_en`` variant where the scene gives one, else the text romanised
-    (``romanize``); on a Ukrainian sheet the text as written."""
+    (``romanize``; a Cyrillic letter typed into the ``_en`` variant is romanised too: nothing on an
+    English sheet is Cyrillic); on a Ukrainian sheet the text as written."""
     if lang == "en":
-        en = meta.get(f"{key}_en")
-        if en:
-            return en
-        return romanize(meta.get(key, default) or default)
+        return romanize(meta.get(f"{key}_en") or meta.get(key, default) or default)
     return meta.get(key, default) or default
 
 
@@ -127,5 +125,5 @@ def scene_title(meta: dict, title: str, lang: str) -> str:
     """A scene's ``title`` in ``lang`` (the terminal's and the JSON's words as the sheets'): on an
     English sheet ``title_en`` where the scene gives it, else the title romanised."""
     if lang == "en":
-        return meta.get("title_en") or romanize(title)
+        return romanize(meta.get("title_en") or title)
     return title
