@@ -98,6 +98,25 @@ def test_loaders_take_designation_en_and_name_it_when_refusing(tmp_path, text, l
 
 # -- the sheets ------------------------------------------------------------------------------------------
 
+def _scene(text: str, kind: str, tmp_path):
+    """What the kind's builder takes: a lever scene studied, a cam or a gear scene loaded."""
+    from conftest import scene_study
+    if kind in ("cam", "gears"):
+        import importlib
+        path = tmp_path / f"{kind}.toml"
+        path.write_text(text, encoding="utf-8")
+        return importlib.import_module(f"graphplan.model.{kind}").load(path)
+    return scene_study(text)
+
+
+def _sheet(text: str, kind: str, lang: str, tmp_path):
+    if kind in ("cam", "gears"):            # cheap (1–3 s): built here
+        from conftest import composed
+        from graphplan.sheets.compose import SheetOptions
+        from graphplan.sheets.form import form
+        return composed(kind, _scene(text, kind, tmp_path), form("A1"), SheetOptions(lang=lang, sheet=kind))
+    return scene_sheet(text, kind, "A1", lang)
+
 def lettering(sheet) -> list[str]:
     """Every text of the set's SVGs: the <title> and each <text> with its tspans."""
     out = []
@@ -118,9 +137,9 @@ SHEETS = [(R.FOURBAR, "kinematics"), (R.FOURBAR, "forces"), (R.FOURBAR, "dynamic
 
 @pytest.mark.slow
 @pytest.mark.parametrize("text,kind", SHEETS, ids=[f"{k}-{i}" for i, (_, k) in enumerate(SHEETS)])
-def test_english_sheet_of_a_ukrainian_scene_letters_no_cyrillic(text, kind):
+def test_english_sheet_of_a_ukrainian_scene_letters_no_cyrillic(text, kind, tmp_path):
     scene = _strip_en(text)
-    texts = lettering(scene_sheet(scene, kind, "A1", "en"))
+    texts = lettering(_sheet(scene, kind, "en", tmp_path))
     bad = [t for t in texts if has_cyrillic(t)]
     assert not bad, f"Cyrillic on the English {kind} sheet: {bad[:5]}"
     designation = re.search(r'^designation = "([^"]*)"', scene, re.M).group(1)
@@ -131,20 +150,21 @@ def test_english_sheet_of_a_ukrainian_scene_letters_no_cyrillic(text, kind):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("text,kind", [(R.FOURBAR, "kinematics"), (R.CAM_KN, "cam"), (R.GEARS_17_40, "gears")])
-def test_ukrainian_sheet_letters_the_scene_as_written(monkeypatch, text, kind):
+@pytest.mark.parametrize("text,kind", [(R.FOURBAR, "kinematics"), (R.CAM_KN, "cam"), (R.GEARS_17_40, "gears")],
+                         ids=["kinematics", "cam", "gears"])
+def test_ukrainian_sheet_letters_the_scene_as_written(monkeypatch, text, kind, tmp_path):
     """A Ukrainian sheet never romanises: built with the romaniser broken it letters the scene's
     designation, student and organisation as the scene writes them, Cyrillic."""
     import graphplan.util.romanize as rz
 
     def refuse(_text):
         raise AssertionError("a Ukrainian sheet romanised its text")
-    from conftest import composed, scene_study
+    from conftest import composed
     from graphplan.sheets.compose import SheetOptions
     from graphplan.sheets.form import form
     scene = _strip_en(text)
     monkeypatch.setattr(rz, "romanize", refuse)
-    sheet = composed(kind, scene_study(scene), form("A1"), SheetOptions(lang="uk", sheet=kind))
+    sheet = composed(kind, _scene(scene, kind, tmp_path), form("A1"), SheetOptions(lang="uk", sheet=kind))
     joined = " ".join(lettering(sheet))
     for key in ("designation", "student"):
         assert re.search(rf'^{key} = "([^"]*)"', scene, re.M).group(1) in joined
@@ -152,9 +172,9 @@ def test_ukrainian_sheet_letters_the_scene_as_written(monkeypatch, text, kind):
 
 
 @pytest.mark.slow
-def test_english_sheet_takes_designation_en():
+def test_english_sheet_takes_designation_en(tmp_path):
     scene = 'designation_en = "TMM.CP.41.000"\n' + _strip_en(R.CAM_KN)
-    joined = " ".join(lettering(scene_sheet(scene, "cam", "A1", "en")))
+    joined = " ".join(lettering(_sheet(scene, "cam", "en", tmp_path)))
     assert "TMM.CP.41.000" in joined and "TMM.KM" not in joined
 
 
