@@ -272,7 +272,7 @@ def test_english_sheets_are_titled_in_english(offset_sheets):
         assert (re.search("[А-Яа-яІіЇїЄєҐґ]", title) is None) == (lang == "en"), (name, lang, title)
 
 
-@pytest.mark.parametrize("lang, said", [("uk", "гр.\u00a0МБ-21"), ("en", "group\u00a0МБ-21")])
+@pytest.mark.parametrize("lang, said", [("uk", "гр.\u00a0МБ-21"), ("en", "group\u00a0MB-21")])   # romanised (stop 55)
 def test_the_group_is_one_word_on_every_sheet(lang, said):
     """Correction 17: the title block's organisation field names the student's group in one word on
     the lever, cam and gear sheets ("group МБ-21" beside "gr. МБ-21" before)."""

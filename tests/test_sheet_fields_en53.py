@@ -1,5 +1,5 @@
 """The title block's [sheet] fields in the sheet's language: ``student_en`` … on an English sheet, as
-``title_en`` is; the Ukrainian as written where no English is given, and on a Ukrainian sheet."""
+``title_en`` is; where no English is given romanised (util/romanize.py), on a Ukrainian sheet as written."""
 from __future__ import annotations
 
 from conftest import ROOT
@@ -13,7 +13,8 @@ META = {"sheet.student": "Іваненко І. І.", "sheet.student_en": "I. I. 
 def test_english_variants_on_an_english_sheet_only():
     assert sheet_field(META, "student", "en") == "I. I. Ivanenko"
     assert sheet_field(META, "student", "uk") == "Іваненко І. І."
-    assert sheet_field(META, "teacher", "en") == "Петренко П. П."          # no teacher_en: as written
+    assert sheet_field(META, "teacher", "en") == "Petrenko P. P."          # no teacher_en: romanised (stop 55)
+    assert sheet_field(META, "teacher", "uk") == "Петренко П. П."
     assert sheet_field(META, "nothing", "en") == ""
     assert organisation(META, "en") == "NULES of Ukraine, group\u00a0MB-21"
     assert organisation(META, "uk") == "НУБіП України, гр.\u00a0МБ-21"

@@ -9,6 +9,7 @@ import sys
 
 from graphplan.cli.common import lang_arg, lang_of, option_error
 from graphplan.util.errors import GraphplanError
+from graphplan.util.romanize import scene_title
 
 def register(sub) -> None:
     p = sub.add_parser("forces")
@@ -53,8 +54,7 @@ def cmd_forces(args: argparse.Namespace) -> int:
         write_svg(fp, args.svg, lang)
     if args.charts:
         from graphplan.drawing.charts import turn, write_charts
-        write_charts(turn(st), args.charts, st.mech.title if lang == "uk" else
-                     st.mech.task.meta.get("title_en", st.mech.title), lang)
+        write_charts(turn(st), args.charts, scene_title(st.mech.task.meta, st.mech.title, lang), lang)
     if args.json:
         doc = forces_json(fp)
         if sheet is not None:

@@ -21,7 +21,7 @@ from graphplan.util.errors import GraphplanError, SceneError, either, keyed_erro
 
 LAWS = ("parabolic", "cosine", "cycloidal", "linear", "trapezoidal")
 KINDS = ("translating", "rocking")
-_TOP = {"title", "title_en", "designation", "lang", "sheet", "cam", "diagrams"}
+_TOP = {"title", "title_en", "designation", "designation_en", "lang", "sheet", "cam", "diagrams"}
 _CAM = {"follower", "roller_radius", "offset", "stroke", "swing_deg", "arm", "centre_distance", "phases_deg",
         "laws", "pressure_angle_deg", "omega", "rpm", "direction", "base_radius", "divisions"}
 _PHASES = ("rise", "dwell_far", "return", "dwell_near")
@@ -54,8 +54,13 @@ class Cam:
         return self.follower == "rocking"
 
     def title_in(self, lang: str) -> str:
+        """The title in ``lang``: ``title_en`` on an English sheet where the scene gives it, else the
+        title romanised (util/romanize.py; the default title "Кулачковий механізм": "Cam mechanism")."""
+        from graphplan.util.romanize import scene_text
         d = dict(self.meta)
-        return d.get("title_en", self.title) if lang == "en" else self.title
+        if lang == "en" and not d.get("title_en") and self.title == "Кулачковий механізм":
+            return "Cam mechanism"
+        return scene_text({**d, "title": self.title}, "title", lang, self.title)
 
 
 def is_cam(data: dict[str, Any]) -> bool:
@@ -207,7 +212,8 @@ def _build(data: dict[str, Any], where: str) -> Cam:
         if base is not None and not abs(centre - arm) < base < centre + arm:
             raise fail("cam.base_radius", "cm arm reach", arm=B._g(arm), centre=B._g(centre),
                        lo=B._g(abs(centre - arm)), hi=B._g(centre + arm))
-    meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "lang") if k in data)
+    meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "designation_en", "lang")
+                  if k in data)
     sheet = data.get("sheet", {})
     if not isinstance(sheet, dict):
         raise fail("sheet", "sc table")

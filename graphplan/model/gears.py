@@ -19,7 +19,7 @@ from typing import Any
 from graphplan.model import bounds as B
 from graphplan.util.errors import GraphplanError, SceneError, keyed_error, scenes_speaking
 
-_TOP = {"title", "title_en", "designation", "lang", "sheet", "gears", "planetary"}
+_TOP = {"title", "title_en", "designation", "designation_en", "lang", "sheet", "gears", "planetary"}
 _PAIR = {"z", "module", "shifts", "pressure_angle_deg", "addendum", "clearance"}
 _TRAIN = {"type", "ratio", "z", "planets", "module", "omega", "rpm"}
 Z_PAIR = (5, 300)              # teeth of a pair's wheel
@@ -71,8 +71,13 @@ class Gears:
     meta: tuple[tuple[str, str], ...] = ()
 
     def title_in(self, lang: str) -> str:
+        """The title in ``lang``: ``title_en`` on an English sheet where the scene gives it, else the
+        title romanised (util/romanize.py; the default title "Зубчастий механізм": "Gear mechanism")."""
+        from graphplan.util.romanize import scene_text
         d = dict(self.meta)
-        return d.get("title_en", self.title) if lang == "en" else self.title
+        if lang == "en" and not d.get("title_en") and self.title == "Зубчастий механізм":
+            return "Gear mechanism"
+        return scene_text({**d, "title": self.title}, "title", lang, self.title)
 
 
 def is_gears(data: dict[str, Any]) -> bool:
@@ -220,7 +225,8 @@ def _build(data: dict[str, Any], where: str) -> Gears:
         raise keyed_error(SceneError, where, unknown[0], "gr unknown top", allowed=", ".join(sorted(_TOP)))
     pair = _pair(data["gears"], where) if "gears" in data else None
     train = _train(data["planetary"], where) if "planetary" in data else None
-    meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "lang") if k in data)
+    meta = tuple((k, B.clean_text(data[k])) for k in ("title_en", "designation", "designation_en", "lang")
+                  if k in data)
     sheet = data.get("sheet", {})
     if not isinstance(sheet, dict):
         raise keyed_error(SceneError, where, "sheet", "sc table")

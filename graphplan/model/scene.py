@@ -20,8 +20,8 @@ from graphplan.model.mechanism import FRAME, Crank, Drive, Force, Guide, Link, M
 
 BUILTIN = "crank_slider.toml"
 
-_TOP = {"diagrams", "title", "title_en", "designation", "lang", "sheet", "params", "synthesis", "frame", "crank",
-        "link", "branch", "positions", "loads", "force", "moment", "dynamics"}
+_TOP = {"diagrams", "title", "title_en", "designation", "designation_en", "lang", "sheet", "params", "synthesis", "frame",
+        "crank", "link", "branch", "positions", "loads", "force", "moment", "dynamics"}
 _CRANK = {"name", "pivot", "pin", "length", "omega", "rpm", "direction", "epsilon", "points",
           "shape", "guide", "mass", "inertia", "com"}
 _LINK = {"name", "number", "joints", "length", "shape", "points", "slides_on", "guide", "ref",
@@ -538,7 +538,8 @@ class _Reader:
         return Drive(motor, rpm, ratio, eta, reducer, rotor, tuple(warnings), shafts, first)
 
     def read_meta(self, data: dict[str, Any]) -> dict[str, str]:
-        meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation") if k in data}
+        meta = {k: B.clean_text(data[k]) for k in ("title", "title_en", "designation", "designation_en")
+                if k in data}
         if "lang" in data:
             if data["lang"] not in ("uk", "en"):
                 raise self.fail("lang", "sc one of", choices=either('"uk"', '"en"'), got=repr(data["lang"]))

@@ -11,6 +11,7 @@ from graphplan.model.mechanism import FRAME
 from graphplan.exact.positions import Study
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, num, pair_kind, unit, word
+from graphplan.util.romanize import scene_title
 
 
 def analyze_json(st: Study, phi_deg: np.ndarray, indices: list[int]) -> dict[str, Any]:
@@ -76,7 +77,7 @@ def analyze_table(st: Study, phi_deg: np.ndarray, indices: list[int], lang: str 
     s = st.structure
     w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
     n = lambda v: num(v, lang)  # noqa: E731
-    title = mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title)
+    title = scene_title(mech.task.meta, mech.title, lang)
     lines = [title,
              f"ω₁ = {n(mech.omega1)} {unit('rad/s', lang)} ({n(abs(mech.omega1) * 30 / math.pi)} {unit('rpm', lang)}, "
              f"{w('ccw') if mech.omega1 > 0 else w('cw')}), ε₁ = {n(mech.crank.epsilon)} {unit('rad/s²', lang)}",

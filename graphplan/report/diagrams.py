@@ -10,6 +10,7 @@ from graphplan.drawing.diagrams import fmt, method_words, mu, scale_lines, scale
 from graphplan.graphic.diagrams import judged_pct
 from graphplan.util.markup import plain, subscripted
 from graphplan.util.words import fixed, num, pct, unit, word
+from graphplan.util.romanize import scene_title
 
 if TYPE_CHECKING:
     from graphplan.graphic.diagrams import Diagrams
@@ -505,7 +506,7 @@ def diagrams_table(d: Diagrams, lang: str = "uk") -> str:
     us, uv, ua = units(d, lang)
     what = f"{w('sliding output' if d.output.kind == 'slide' else 'rotating output')} {d.point}"
     mech = d.study.mech
-    lines = [mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title),
+    lines = [scene_title(mech.task.meta, mech.title, lang),
              w("diagrams title", what=what, how=method_words(d, lang)),
              w("period", T=num(mech.period, lang), L=num(d.L, lang)), f"{w('scales')}:"]
     lines += ["  " + plain(t) for t in scale_lines(d, lang)]

@@ -18,6 +18,7 @@ from graphplan.graphic.chords import read
 from graphplan.graphic.flywheel import over, ruler_bound
 from graphplan.model.motors import catalogue, latin
 from graphplan.util.words import column_decimals, decimals_column, fixed, num
+from graphplan.util.romanize import scene_title
 
 
 def _clean(doc: Any) -> Any:
@@ -263,7 +264,7 @@ def dynamics_table(f, lang: str = "uk") -> str:
     doc = dynamics_json(f)
     w = WORDS[lang]
     mech = f.dyn.study.mech
-    out = [w["title"].format(scene=mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title)), ""]
+    out = [w["title"].format(scene=scene_title(mech.task.meta, mech.title, lang)), ""]
     s = doc["scales"]
     u = w["u"]
     out.append(f"{w['scales']}: μM = {s['mu_M']:g} {u['Nm']}/{u['mm']}, μφ = {s['mu_phi']:.5g} {u['rad']}/{u['mm']}, "

@@ -35,6 +35,7 @@ from graphplan.model.mechanism import FRAME
 from graphplan.util.errors import GraphplanError
 from graphplan.util.markup import indexed
 from graphplan.util.words import LANGS
+from graphplan.util.romanize import scene_title
 
 DIGITS = 9          # significant digits kept of every exact value (the page shows 4)
 
@@ -348,7 +349,7 @@ def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
     # a rocker pivoted at its only joint (a slotted link) has no moving joint: its path is its points'
     scheme["trajectories"] = [name for name in scheme["trajectories"] if name in grid["points"]]
     return {
-        "title": {"uk": mech.title, "en": meta.get("title_en") or mech.title}, "lang": lang,
+        "title": {"uk": mech.title, "en": scene_title(meta, mech.title, "en")}, "lang": lang,
         "precision": plans.precision, "step": step,
         "omega1": mech.omega1,
         "structure": st.structure.formula,

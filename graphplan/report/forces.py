@@ -7,6 +7,7 @@ from typing import Any
 
 from graphplan.util.markup import plain
 from graphplan.util.words import fixed, force_symbol, num, pair_kind, pct, unit, word
+from graphplan.util.romanize import scene_title
 
 NULL_BELOW = 1e-6   # error_pct is null where |analytic| < 1e-6 × the largest force (moment) around
 
@@ -105,7 +106,7 @@ def forces_table(fp, lang: str = "uk") -> str:
     w = lambda k_, **kw: word(k_, lang, **kw)  # noqa: E731
     n = lambda v, digits=4: num(v, lang, digits)  # noqa: E731
     sym = lambda name: plain(force_symbol(name, lang))  # noqa: E731
-    lines = [mech.title if lang == "uk" else mech.task.meta.get("title_en", mech.title),
+    lines = [scene_title(mech.task.meta, mech.title, lang),
              w("forces at", phi=fixed(fp.phi_deg, lang, 3), turn=fixed(float(st.from_position0(fp.phi_deg)), lang, 3),
                stroke=w("working stroke" if ks.working[0] else "idle stroke")),
              plain(w("forces scales", w=n(mech.omega1, 5), p=n(fp.precision), ml=n(fp.mu_l), mf=n(fp.mu_F),

@@ -11,6 +11,7 @@ from graphplan.graphic.plans import NEAR_ZERO, SMALL_ANGLE_DEG, VANISH, Entry, P
 from graphplan.graphic.scales import UNITS, format_scale
 from graphplan.util.markup import plain
 from graphplan.util.words import column_decimals, fixed, num, pct, unit, word
+from graphplan.util.romanize import scene_title
 
 KIND_ORDER = {"point": 0, "relative": 1, "normal": 2, "tangential": 3, "coriolis": 4,
               "omega": 5, "epsilon": 6}
@@ -227,7 +228,7 @@ def plans_table(plans: Plans, lang: str = "uk") -> str:
     w = lambda k_, **kw: plain(word(k_, lang, **kw))  # noqa: E731
     n = lambda v: num(v, lang)  # noqa: E731
     st = plans.study
-    title = st.mech.task.meta.get("title_en", st.mech.title) if lang == "en" else st.mech.title
+    title = scene_title(st.mech.task.meta, st.mech.title, lang)
     lines = [f"{title} — {w('plans title')}",
              f"{w('structure')}: {st.structure.formula};  {w('ruler')} {n(plans.precision)} {unit('mm', lang)}",
              "; ".join(plain(format_scale(k, v, lang)) for k, v in plans.scales.items()), ""]

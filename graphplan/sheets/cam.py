@@ -42,7 +42,8 @@ def _fields(cam: Cam, lang: str) -> dict[str, str]:
     meta = dict(cam.meta)
     from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
-    return {"designation": escape(meta.get("designation", "")), "title": escape(cam.title_in(lang)),
+    from graphplan.util.romanize import scene_text
+    return {"designation": escape(scene_text(meta, "designation", lang)), "title": escape(cam.title_in(lang)),
             "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": "", "sheet": "1", "sheets": "1",
             "subtitle": WORDS[lang]["subtitle"]}

@@ -301,11 +301,11 @@ def _wrapped(text: str, width: float, size: float) -> tuple[str, ...]:
 
 def sheet_field(meta: dict, name: str, lang: str) -> str:
     """A [sheet] field (student, teacher, group, organisation …) in the sheet's language: its
-    ``NAME_en`` variant on an English sheet where the scene gives one (as ``title_en``), else the
-    field as written (the Ukrainian), unescaped."""
-    if lang == "en" and meta.get(f"sheet.{name}_en"):
-        return meta[f"sheet.{name}_en"]
-    return meta.get(f"sheet.{name}", "")
+    ``NAME_en`` variant on an English sheet where the scene gives one (as ``title_en``), else on an
+    English sheet the field romanised (util/romanize.py: «Рецензент Р. Р.» → «Retsenzent R. R.»), on a
+    Ukrainian sheet as written; unescaped."""
+    from graphplan.util.romanize import scene_text
+    return scene_text(meta, f"sheet.{name}", lang)
 
 
 def organisation(meta: dict, lang: str) -> str:

@@ -150,7 +150,9 @@ def title_block(f: Form, fields: dict[str, str], lang: str = "uk") -> Record:
     for k, (role, name) in enumerate(zip(roles, names)):
         y = Y(30 - 5 * (k + 1))
         _text(rec, X(1), y, role, size=_fit(role, 15.5, (2.5, 2.0), 1.0), anchor="start", row=True)
-        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0), 1.0), anchor="start", row=True)
+        # a name too long for 2 mm (a romanised one is longer: «Retsenzent R. R.» 22.4 mm against
+        # «Рецензент Р. Р.» 19.6) takes GOST 2.304's smallest height, 1.8 mm, before it meets the rule
+        _text(rec, X(18), y, name, size=_fit(name, 21.5, (2.5, 2.0, 1.8), 1.0), anchor="start", row=True)
     # right part: designation 120×15, name 70×25 over 70×15, the 50 mm column
     _line(rec, (X(65), Y(40)), (X(185), Y(40)), True)
     _line(rec, (X(135), Y(0)), (X(135), Y(40)), True)

@@ -477,7 +477,8 @@ def _fields(g: Gears, lang: str, mu_l: float | None) -> dict[str, str]:
     meta = dict(g.meta)
     from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
-    return {"designation": escape(meta.get("designation", "")), "title": escape(g.title_in(lang)),
+    from graphplan.util.romanize import scene_text
+    return {"designation": escape(scene_text(meta, "designation", lang)), "title": escape(g.title_in(lang)),
             "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org), "scale": drawing_scale(mu_l, lang) if mu_l else "", "sheet": "1",
             "sheets": "1", "subtitle": WORDS[lang]["subtitle"]}

@@ -737,10 +737,11 @@ def notes(st: Study, scales: list[str], extra: list[str], lang: str) -> Record:
 
 def title_in(st: Study, lang: str) -> str:
     """The scene's title in the sheet's language: ``title_en`` on an English sheet where the scene
-    gives it (the title block and the SVG's <title> alike), else ``title``."""
+    gives it (the title block and the SVG's <title> alike), else ``title`` (romanised on an English
+    sheet: util/romanize.py)."""
+    from graphplan.util.romanize import scene_text
     meta = st.mech.task.meta
-    title = meta.get("title", st.mech.title)
-    return meta.get("title_en", title) if lang == "en" else title
+    return scene_text(meta, "title", lang, st.mech.title)
 
 
 def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
@@ -751,7 +752,8 @@ def fields(st: Study, lang: str, scale: str, sheet_no: int = 1, sheets: int = 1,
     title = title_in(st, lang)
     from graphplan.sheets.compose import organisation, sheet_field
     org = organisation(meta, lang)
-    return {"designation": escape(meta.get("designation", "")), "title": escape(title),
+    from graphplan.util.romanize import scene_text
+    return {"designation": escape(scene_text(meta, "designation", lang)), "title": escape(title),
             "student": escape(sheet_field(meta, "student", lang)), "teacher": escape(sheet_field(meta, "teacher", lang)),
             "organisation": escape(org),
             "scale": scale, "sheet": str(sheet_no), "sheets": str(sheets),

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from graphplan.util.markup import escape
+from graphplan.util.romanize import in_latin, romanize
 from graphplan.util.words import UNITS, fixed, num, unit, word
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.teach.keys import fmt
@@ -71,10 +72,11 @@ def heading(key: dict[str, Any], lang: str = "uk") -> tuple[Record, float, float
     rec.label((x0, y), ("Ключ відповідей, варіант " if uk else "Answer key, variant ") + escape(key["variant"]),
               size=5.0)
     y -= 7.0
-    rec.label((x0, y), escape(key["title"] if uk else (key.get("title_en") or key["title"])), size=MEDIUM)
+    rec.label((x0, y), escape(key["title"] if uk else (key.get("title_en") or romanize(key["title"]))), size=MEDIUM)
     if key.get("student"):
         y -= 5.5
-        rec.label((x0, y), ("студент: " if uk else "student: ") + escape(key["student"]), size=MEDIUM)
+        rec.label((x0, y), ("студент: " if uk else "student: ") + escape(in_latin(key["student"], "uk" if uk else "en")),
+                  size=MEDIUM)
     return rec, x0, y
 
 
@@ -175,14 +177,14 @@ def key_sheet(key: dict[str, Any], lang: str = "uk") -> Record:
     y = H - EDGE - 3.0
     rec.label((W - EDGE - INSET, y - SMALL), f"graphplan · {escape(key['base'])}", size=SMALL, anchor="end")
     y = _heading(rec, x0, y, w("key heading", variant=escape(key["variant"])), LARGE) - 0.5
-    title = key.get("title_en") or key.get("title", "")
+    title = key.get("title_en") or romanize(key.get("title", ""))
     if lang == "uk":
         title = key.get("title") or title
     elif key.get("title") and key.get("title_en"):
         title = f"{key['title_en']} ({key['title']})"
     y = _paragraph(rec, x0, y, escape(title), MEDIUM, room)
     if key.get("student"):
-        y = _paragraph(rec, x0, y, f"{w('student cap')}: {escape(key['student'])}", MEDIUM, room)
+        y = _paragraph(rec, x0, y, f"{w('student cap')}: {escape(in_latin(key['student'], lang))}", MEDIUM, room)
     quantities = key["quantities"]
     if key["overrides"]:
         data = ", ".join(f"{escape(k)} = {_value_text(key, v, lang)}" for k, v in key["overrides"].items())

@@ -46,7 +46,10 @@ def _s(v: Any) -> str:
 
 def _head(v: dict[str, Any], uk: str, en: str, designation: str) -> str:
     title = v.get("title") or ""
-    lines = [f"title = {_s(title or uk)}", f"title_en = {_s(title or en)}", f"designation = {_s(designation)}"]
+    # a title typed on the page names the mechanism in its own words: no title_en (an English sheet
+    # romanises a Ukrainian one, util/romanize.py); the template's own title has both
+    lines = ([f"title = {_s(title)}"] if title else [f"title = {_s(uk)}", f"title_en = {_s(en)}"]) \
+        + [f"designation = {_s(designation)}"]
     sheet = {k: v[k] for k in ("student", "group") if v.get(k)}
     if sheet:
         lines.append("\n[sheet]")
