@@ -33,3 +33,18 @@ def test_a_scene_s_english_fields_reach_the_title_block(tmp_path):
     en, uk = fields(st, "en", "1:1"), fields(st, "uk", "1:1")
     assert (en["student"], en["teacher"]) == ("Student", "Teacher") and en["organisation"].startswith("NULES")
     assert (uk["student"], uk["teacher"]) == ("Студент", "Викладач") and uk["organisation"].startswith("НУБіП")
+
+
+def test_a_scene_without_a_title_is_titled_in_the_sheet_s_language(tmp_path):
+    """A scene that gives no title: «Механізм» on a Ukrainian sheet, "Mechanism" on an English one (the
+    loader's default word "mechanism" was lettered on both)."""
+    import re as _re
+    from graphplan.exact.positions import study
+    from graphplan.model.scene import load
+    from graphplan.sheets.kintables import title_in
+    text = (ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8")
+    text = _re.sub(r'(?m)^title(_en)? = .*\n', '', text)
+    path = tmp_path / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    st = study(load(path))
+    assert (title_in(st, "uk"), title_in(st, "en")) == ("Механізм", "Mechanism")

@@ -741,6 +741,8 @@ def title_in(st: Study, lang: str) -> str:
     sheet: util/romanize.py)."""
     from graphplan.util.romanize import scene_text
     meta = st.mech.task.meta
+    if "title" not in meta and "title_en" not in meta:           # a scene without a title: the word in the sheet's language
+        return "Механізм" if lang == "uk" else "Mechanism"
     return scene_text(meta, "title", lang, st.mech.title)
 
 
