@@ -655,7 +655,10 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel):
             if d is not None:
                 if best is None or _rank(d[0]) < _rank(best[0]):
                     best = d
-                break
+                if d[0].h >= H_MIN - 1e-9:
+                    break         # (else a shorter vA may still give h ≥ H_MIN: stop 55, the lead's 14/56 in
+                #                   English at 1:1 was 1 mm too wide with h = 50 mm — μω is round, so the pictures'
+                #                   width jumps — and fell to h = 25 mm, which ranked under 1:2 read within ±7,1 %)
     return best or (vel, plan)
 
 
