@@ -6379,3 +6379,55 @@ synchronous_rpm = 1000
 
 
 KIN55_DOSING = LINK55     # kin55's name for the lead's six-bar
+
+
+# gears55: the lead's stop-55 check — a pair 14/56 with shifts "auto" (x = 0.65, 1.05), m = 6 mm, and a one-row
+# train of type A chosen for u1H = 7.2 with K = 3 (17/43/103, −1.96 %; 20/52/124 gives 7.2 exactly), 1450 rpm.
+GEARS55 = '''title = "Зубчаста передача 14/56 і однорядний планетарний редуктор (перевірка 55)"
+title_en = "A gear pair 14/56 and a one-row planetary reducer (check 55)"
+designation = "ТММ.ЗП.55.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-55"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 56]
+module = 0.006
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 7.2
+planets = 3
+module = 0.002
+rpm = 1450
+'''
+
+
+# gears55's own check: a pair 16/44 with given unequal positive shifts 0.25/0.1, m = 4 mm, and a two-row
+# train of type B chosen for u1H = 20 with K = 3 (17/64/20/101, +0.06 %; 18/72/24/114 gives 20 exactly), 960 rpm.
+GEARS_OWN55 = '''title = "Зубчаста передача 16/44 і дворядний планетарний редуктор (власна перевірка 55)"
+title_en = "A gear pair 16/44 and a two-row planetary reducer (own check 55)"
+designation = "ТММ.ЗП.55.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-55"
+organisation = "НУБіП України"
+
+[gears]
+z = [16, 44]
+module = 0.004
+shifts = [0.25, 0.1]
+
+[planetary]
+type = "B"
+ratio = 20
+planets = 3
+module = 0.002
+rpm = 960
+'''

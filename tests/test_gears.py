@@ -466,22 +466,38 @@ def test_the_notes_say_which_train_nearer_the_ratio_lost_and_why(tmp_path):
     path.write_text(GEARS_REVIEW, encoding="utf-8")
     _, sol, mesh, vel = solved(path)
     doc = gears_json(sol, mesh, vel, "")
-    chosen, near = (17, 47, 22, 86), (18, 48, 21, 87)
+    # stop 55: the set named is the nearest of ALL the sets weighed, not of the eight listed — here one
+    # giving 12 exactly: 1 + 54·99/(18·27) = 12, coaxial 18 + 54 = 99 − 27, assembly (18·27 + 54·99)/(3·27)
+    # = 72, neighbourhood 72·sin 60° = 62,35 > 56, D/m = max(18 + 108, 99) = 126; none smaller is exact
+    chosen, near = (17, 47, 22, 86), (18, 54, 27, 99)
     assert tuple(doc["planetary"]["z"]) == chosen
     u = 1 + near[1] * near[3] / (near[0] * near[2])
+    assert u == 12.0 and near[0] + near[1] == near[3] - near[2]
+    assert (near[0] * near[2] + near[1] * near[3]) % (3 * math.gcd(near[1], near[2])) == 0
+    assert (near[0] + near[1]) * math.sin(math.pi / 3) > max(near[1], near[2]) + 2
     d_near, d_chosen = max(near[0] + 2 * near[1], near[3]), max(chosen[0] + 2 * chosen[1], chosen[3])
+    for z1 in range(17, 126):              # every exact set with D/m < 126 fails a condition
+        for z2 in range(17, (125 - z1) // 2 + 1):
+            for z2b in range(20, 126 - z1 - z2):
+                z3 = z1 + z2 + z2b
+                if z3 >= 126 or z2 * z3 != 11 * z1 * z2b or z3 < 85 or z3 - z2b < 8:
+                    continue
+                assert ((z1 * z2b + z2 * z3) % (3 * math.gcd(z2, z2b)) != 0
+                        or (z1 + z2) * math.sin(math.pi / 3) <= max(z2, z2b) + 2), (z1, z2, z2b, z3)
+    assert doc["planetary"]["nearest"]["z"] == list(near)
     for lang in ("uk", "en"):
-        line = [x for x in notes(doc, lang, mesh, vel) if "18, 48, 21, 87" in x]
+        line = [x for x in notes(doc, lang, mesh, vel) if "18, 54, 27, 99" in x]
         assert len(line) == 1, lang
         assert num(u, lang) in line[0] and f"{d_near} " in line[0] and f" {d_chosen}" in line[0], line
+        assert ("точно" if lang == "uk" else "exactly") in line[0] and "14 %" in line[0], line
     # a train chosen that is also the nearest: no such line (gears.toml's u = 5 … type A)
     _, sol, mesh, vel = solved(GEARS)
     doc = gears_json(sol, mesh, vel, "")
-    cands = doc["planetary"]["candidates"]
-    nearest = min(cands, key=lambda c: abs(c["error_pct"])) if cands else None
-    said = [x for x in notes(doc, "en", mesh, vel) if "rejected" in x]
-    assert bool(said) == (nearest is not None and list(nearest["z"]) != list(doc["planetary"]["z"])
-                          and abs(nearest["error_pct"]) < abs(cands[0]["error_pct"]))
+    t = doc["planetary"]
+    said = [x for x in notes(doc, "en", mesh, vel) if "the rule takes the smaller" in x]
+    assert bool(said) == (t["nearest"] is not None and t["ratio_required"] is not None)
+    if t["nearest"] is not None:
+        assert abs(t["nearest"]["error_pct"]) < abs(t["ratio"]["required_error_pct"])
 
 
 def test_the_planetary_scheme_draws_each_wheel_as_gost_2770_does():

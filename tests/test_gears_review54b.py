@@ -40,14 +40,20 @@ def test_the_wanted_ratios_delta_is_willis_against_the_task(scene):
 
 
 def test_the_notes_say_the_smallest_maximum_sliding_and_rejected(scene):
-    """Review 54, item 24: «least greatest specific sliding» and «… lost: D/m = 95 against 85»."""
+    """Review 54, item 24: «least greatest specific sliding» and «… lost: D/m = 95 against 85». Stop 55:
+    the set named is the nearest of all weighed, u1H = 5,5 exactly: 1 + z3/z1 = 5,5 → z3 = 4,5·z1, z1 even;
+    z1 = 20 (z2 = 35, (20 + 90)/4 not whole) and 22 (z2 = 38,5) fail, 24, 42, 108 passes ((24 + 108)/4 = 33,
+    66·sin 45° = 46,67 > 44): D/m = 108 against 85."""
     from graphplan.graphic.gears import construct_mesh, construct_train
     from graphplan.report.gears import gears_json
     from graphplan.sheets.gears import notes
     _, sol = scene
     mesh = construct_mesh(sol.pair, 0.5, "en", module_mm=20.0)
-    for lang, rule, nearer in (("en", "the smallest maximum specific sliding", "rejected: D/m = 95 against 85"),
-                               ("uk", "найменше з найбільших питомих ковзань", "відкинуто: D/m = 95 проти 85")):
+    assert (24 + 108) % 4 == 0 and 66 * math.sin(math.pi / 4) > 42 + 2 and 1 + 108 / 24 == 5.5
+    for lang, rule, nearer in (("en", "the smallest maximum specific sliding",
+                                "z = 24, 42, 108 gives u_{1H} = 5.5 (exactly) but D/m = 108 against 85"),
+                               ("uk", "найменше з найбільших питомих ковзань",
+                                "z = 24, 42, 108 дає u_{1H} = 5,5 (точно), але D/m = 108 проти 85")):
         vel = construct_train(sol.train, 0.5, lang)
         said = " ".join(notes(gears_json(sol, mesh, vel, ""), lang, mesh, vel))
         assert rule in said and nearer in said and "least greatest" not in said and " lost" not in said

@@ -289,6 +289,7 @@ class TrainSolution:
     candidates: list[dict] = field(default_factory=list)
     warnings: list[tuple[str, str]] = field(default_factory=list)
     weighed: int = 0              # how many sets met every condition (the candidates are the first of them)
+    nearest: dict | None = None   # of those, the one nearest the wanted u1H (``synthesise``), when not the chosen
 
     @property
     def radii(self) -> dict[str, float]:
@@ -405,8 +406,12 @@ def _ranked(kind: str, zs: np.ndarray, u: float) -> list[tuple]:
 def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> tuple[tuple[int, ...], list[dict], int]:
     """The z's for the ratio ``u`` with K planets: every set meeting coaxiality, assembly, neighbourhood
     and no undercut with the ratio within ±4 %, the smallest train by its outer diameter (in modules;
-    ties: the ratio nearest, then the fewest teeth). Returns the chosen z's and the first ``keep``
-    candidates weighed. One line naming the condition that fails when none passes."""
+    ties: the ratio nearest, then the fewest teeth). Returns the chosen z's, the first ``keep``
+    candidates weighed, how many passed, and the passing set nearest ``u`` — u exactly where some set
+    gives it —, the smallest of those by D/m: what the sheet names beside the chosen smallest train (stop
+    55: u1H = 7,2 with K = 3 took 17, 43, 103, −1,96 %, D/m = 103; 20, 52, 124 gives 7,2 exactly, D/m = 124 —
+    the notes named it only because it was among the first eight by D/m). One line naming the condition
+    that fails when none passes."""
     sK = math.sin(math.pi / K) if K > 1 else 1.0
     found: list[tuple] = []
     blocked = {"ratio": 0, "assembly": 0, "neighbourhood": 0}
@@ -465,9 +470,15 @@ def synthesise(kind: str, u: float, K: int, ha: float = 1.0, keep: int = 8) -> t
         top = Z_SEARCH if kind == "A" else 120
         raise _error(f"planetary.ratio: type {kind}: {why} (teeth tried up to {top})",
                      f"planetary.ratio: тип {kind}: {why_uk} (перебрано зубці до {top})")
-    cands = [{"z": list(z), "diameter_modules": d, "ratio": ratio_of(kind, z),
-              "error_pct": 100.0 * (ratio_of(kind, z) - u) / u} for d, _, _, z in found[:keep]]
-    return found[0][3], cands, len(found)
+    cands = [_candidate(kind, z, d, u) for d, _, _, z in found[:keep]]
+    d, _, _, z = min(found, key=lambda t: (t[1], t[0], t[2], t[3]))     # the nearest u, then the smallest
+    return found[0][3], cands, len(found), _candidate(kind, z, d, u)
+
+
+def _candidate(kind: str, z, d: int, u: float) -> dict:
+    """One weighed set as the JSON and the notes name it: its z's, D/m, u1H and its error from ``u``, %."""
+    return {"z": list(z), "diameter_modules": d, "ratio": ratio_of(kind, z),
+            "error_pct": 100.0 * (ratio_of(kind, z) - u) / u}
 
 
 def solve_train(train: Train) -> TrainSolution:
@@ -476,7 +487,7 @@ def solve_train(train: Train) -> TrainSolution:
     count = 0
     if train.z is None:
         assert train.ratio is not None
-        z, cands, count = synthesise(train.kind, train.ratio, train.planets)
+        z, cands, count, near = synthesise(train.kind, train.ratio, train.planets)
     else:
         z = train.z
         cond = conditions(train.kind, z, train.planets)
@@ -493,6 +504,9 @@ def solve_train(train: Train) -> TrainSolution:
     omega = {"1": w1, "2": w2, "3": 0.0, "H": wH}
     cond = conditions(train.kind, z, train.planets)
     sol = TrainSolution(train, tuple(z), u, omega, cond, cands, weighed=count)
+    if train.z is None and near["z"] != list(z) and abs(near["error_pct"]) < abs(100.0 * (u - train.ratio)
+                                                                                  / train.ratio) - 1e-9:
+        sol.nearest = near
     names = {"coaxial": ("the coaxiality condition fails", "не виконано умову співвісності"),
              "assembly": ("the assembly condition fails", "не виконано умову складання"),
              "neighbourhood": ("the neighbourhood condition fails", "не виконано умову сусідства")}

@@ -611,9 +611,9 @@ def construct_mesh(sol: PairSolution, precision: float = 0.5, lang: str = "uk",
                 sa_bound=(sa_bound(sol, 0, mu, precision), sa_bound(sol, 1, mu, precision)), o1_shown=show1,
                 lang=lang)
     if 2.25 * md < DEPTH_MM[0]:
-        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.3g} mm (no standard scale "
+        mesh.warnings.append((f"the meshing is drawn with the whole depth {2.25 * md:.4g} mm (no standard scale "
                               "that fits the zone draws it 40–60 mm tall)",
-                              f"зачеплення накреслено з висотою зуба {2.25 * md:.3g} мм (жоден стандартний масштаб, "
+                              f"зачеплення накреслено з висотою зуба {format(2.25 * md, '.4g').replace('.', ',')} мм (жоден стандартний масштаб, "
                               "що вміщується в зону, не дає 40–60 мм)"))
     mesh.lam = sliding_diagram(sol, mesh)
     return mesh

@@ -109,7 +109,7 @@ def train_json(tr, vel) -> dict[str, Any]:
         "omega_rad_s": dict(tr.omega),
         "radii_m": tr.radii,
         "conditions": dict(tr.conditions),
-        "candidates": tr.candidates, "candidates_passing": tr.weighed,
+        "candidates": tr.candidates, "candidates_passing": tr.weighed, "nearest": tr.nearest,
         "warnings": [en for en, _ in tr.warnings], "warnings_uk": [uk for _, uk in tr.warnings]}
     if doc["ratio"]["outside_bound"]:
         _flag(doc, "u1H", vel.ratio, tr.ratio, vel.ratio_bound)
@@ -150,7 +150,8 @@ WORDS = {
            "type": "тип {t}, сателітів K = {k}, модуль {m} мм, ω1 = {w} рад/с",
            "zt": "числа зубців z = {z}; u1H = {u}{r}, графічно {g} (похибка {d} %; межа похибки від точності креслення ±{b} абсолютна, ±{bp} %{out})",
            "cond": "умови: співвісність {c}, складання {a}, сусідство {n}, без підрізання {u}",
-           "cands": "з {n} наборів, що задовольняють усі умови, перші за найменшим зовнішнім діаметром у модулях D/m:",
+           "cands": "набори, що задовольняють усі умови (їх {n}), перші за найменшим зовнішнім діаметром у модулях D/m:",
+           "nearest": "найближчий до потрібного u1H (найменший з таких): z = {z}: D/m = {D}, u1H = {u} ({e} %)",
            "omega": "ω, рад/с", "vel": "масштаби: μl = {l} м/мм, μv = {v} (м/с)/мм, h = {h} мм",
            "h_H": ", водило — свій полюс, hH = {h} мм",
            "rows": {"r": "r, мм", "rb": "r_b, мм", "rw": "r_w, мм", "ra": "r_a, мм", "rf": "r_f, мм",
@@ -171,6 +172,7 @@ WORDS = {
            "zt": "teeth z = {z}; u1H = {u}{r}, graphically {g} (error {d} %; bound of the error from the drafting precision ±{b} absolute, ±{bp} %{out})",
            "cond": "conditions: coaxial {c}, assembly {a}, neighbourhood {n}, no undercut {u}",
            "cands": "of {n} sets meeting every condition, the first by the smallest outer diameter in modules D/m:",
+           "nearest": "the nearest the wanted u1H (the smallest such): z = {z}: D/m = {D}, u1H = {u} ({e} %)",
            "omega": "ω, rad/s", "vel": "scales: μl = {l} m/mm, μv = {v} (m/s)/mm, h = {h} mm",
            "h_H": ", the carrier's own pole hH = {h} mm",
            "rows": {"r": "r, mm", "rb": "r_b, mm", "rw": "r_w, mm", "ra": "r_a, mm", "rf": "r_f, mm",
@@ -362,6 +364,10 @@ def train_lines(d: dict, lang: str) -> list[str]:
         for cnd in d["candidates"]:
             lines.append(f"  z = {', '.join(map(str, cnd['z']))}: D/m = {cnd['diameter_modules']}, u1H = "
                          f"{n(cnd['ratio'])} ({n(cnd['error_pct'], 3)} %)")
+        near = d.get("nearest")
+        if near and near["z"] not in [c["z"] for c in d["candidates"]]:
+            lines.append(w["nearest"].format(z=", ".join(map(str, near["z"])), D=near["diameter_modules"],
+                                             u=n(near["ratio"]), e=n(near["error_pct"], 3)))
     return lines
 
 

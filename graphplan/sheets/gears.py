@@ -47,7 +47,7 @@ WORDS = {
            "check": "ω_1 задано; відрізок 1 плану кутових швидкостей ({s} мм при μ_ω = {mu} (рад/с)/мм, тобто {g} рад/с) — "
                     "перевірка лінії 1 картини швидкостей; δ — похибка побудови, що входить і в ω_2, ω_H",
            "rule": "Зміщення x_1 = {x1}, x_2 = {x2} вибрано за правилом: {rule} (сітка x від {a} до {b} з кроком "
-                   "{s}; умови таблиці 2 задовольняють {n} пар)",
+                   "{s}; пар, що задовольняють умови таблиці 2: {n})",
            "data": "Вихідні дані пари: z_1 = {z1}, z_2 = {z2}, m = {m} мм, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
            "train_data": "Вихідні дані планетарної передачі: тип {t}, {u}, K = {k}, m = {m} мм, {w}",
@@ -68,10 +68,12 @@ WORDS = {
                        "u_{{1H}} = (відрізок 1/h)/(відрізок H/h_H)",
            "short": "Відрізок ω_H на плані лише {s} мм (ω_H = ω_1/{u}): півподілки лінійки — {e} % від нього; "
                     "звідси межа похибки u_{{1H}}",
-           "synth": "Числа зубців вибрано з {n} наборів, що задовольняють умови співвісності, складання, "
-                    "сусідства й непідрізання при u_{{1H}} у межах ±4 %: найменший зовнішній діаметр",
-           "nearer": "Ближче до u_{{1H}} = {r} набір z = {z} (u_{{1H}} = {u}, {d} %) відкинуто: D/m = {D} проти "
-                     "{D0} — за правилом вибирають менший редуктор, бо ±4 % допустимо",
+           "synth": "Числа зубців вибрано з наборів, що задовольняють умови співвісності, складання, "
+                    "сусідства й непідрізання при u_{{1H}} у межах ±4 % від потрібного (їх {n}): найменший зовнішній "
+                    "діаметр, D/m = {D0}",
+           "nearer": "Набір z = {z} дає u_{{1H}} = {u} ({d}), але D/m = {D} проти {D0} (редуктор на {g} % більший); "
+                     "за правилом узято менший: його відхилення {d0} % у межах ±4 %",
+           "exactly": "точно",
            "tip": "; s_{{a{k}}} з хорди {c} мм: межа похибки від точності креслення ±{b} % {v}",
            "tip_in": "(у межах)", "tip_out": "(поза межею)",
            "judged": "Умови таблиці 2 — за формулами; ε_α з креслення {g} < 1,2 {v}",
@@ -118,10 +120,11 @@ WORDS = {
                        "u_{{1H}} = (segment 1/h)/(segment H/h_H)",
            "short": "The segment of ω_H on the plan is only {s} mm (ω_H = ω_1/{u}): the ruler's half division is {e} % "
                     "of it; hence the bound of u_{{1H}}",
-           "synth": "The teeth chosen from {n} sets meeting coaxiality, assembly, neighbourhood and no undercut "
-                    "with u_{{1H}} within ±4 %: the smallest outer diameter",
-           "nearer": "The set z = {z}, nearer to u_{{1H}} = {r} (u_{{1H}} = {u}, {d} %), rejected: D/m = {D} against "
-                     "{D0} — the rule takes the smaller train, ±4 % being allowed",
+           "synth": "The teeth chosen from the sets meeting coaxiality, assembly, neighbourhood and no undercut "
+                    "with u_{{1H}} within ±4 % of the wanted ({n} sets): the smallest outer diameter, D/m = {D0}",
+           "nearer": "The set z = {z} gives u_{{1H}} = {u} ({d}) but D/m = {D} against {D0} (a train {g} % larger); "
+                     "the rule takes the smaller, its error {d0} % being within ±4 %",
+           "exactly": "exactly",
            "tip": "; s_{{a{k}}} read off a chord of {c} mm: its bound from the drafting precision ±{b} % {v}",
            "tip_in": "(within)", "tip_out": "(outside)",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
@@ -382,15 +385,19 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
             out.append(w["short"].format(s=_n(sH, lang), u=_n(t["ratio"]["exact"], lang),
                                          e=_n(100 * vel.precision / 2 / sH, lang, 2)))
         if t["candidates"]:
-            out.append(w["synth"].format(n=t["candidates_passing"]))
+            chosen = next((c for c in t["candidates"] if list(c["z"]) == list(t["z"])), t["candidates"][0])
+            out.append(w["synth"].format(n=t["candidates_passing"], D0=chosen["diameter_modules"]))
             pair = nearer_candidate(t)
             if pair:
                 near, chosen = pair
-                out.append(w["nearer"].format(z=", ".join(map(str, near["z"])), r=_n(t["ratio_required"], lang),
-                                              u=_n(near["ratio"], lang),
-                                              d=("0" if abs(near["error_pct"]) < 0.005 else    # (not «+0,00 %»)
-                                                 fixed(near["error_pct"], lang, 2, plus=True).replace("-", "−")),
-                                              D=near["diameter_modules"], D0=chosen["diameter_modules"]))
+                pct = lambda e: fixed(e, lang, 2, plus=True).replace("-", "−")     # noqa: E731
+                exact = abs(near["error_pct"]) < 0.005          # (not «+0,00 %»: stop 55, «точно»)
+                out.append(w["nearer"].format(z=", ".join(map(str, near["z"])), u=_n(near["ratio"], lang),
+                                              d=w["exactly"] if exact else pct(near["error_pct"]) + " %",
+                                              D=near["diameter_modules"], D0=chosen["diameter_modules"],
+                                              g=_n(round(100.0 * (near["diameter_modules"] / chosen["diameter_modules"]
+                                                                  - 1.0)), lang),
+                                              d0=pct(chosen["error_pct"])))
         out += [w["warn"] + typeset(x) for x in t[key]]
         parts.append(out)
     last = parts[-1] if parts else out
@@ -462,13 +469,13 @@ def train_data(t: dict, lang: str) -> str:
 
 
 def nearer_candidate(t: dict) -> tuple[dict, dict] | None:
-    """Among the trains weighed (the smallest by D/m), the one whose u1H is nearest the wanted, when
-    it is not the one chosen (the rule takes the smallest diameter within ±4 %): what the notes say
+    """Of every train weighed, the one whose u1H is nearest the wanted (``exact.gears.synthesise``, the
+    JSON's ``nearest``; else the nearest of the candidates listed), when it is not the one chosen (the rule takes the smallest diameter within ±4 %): what the notes say
     lost and why, with the chosen. None when the chosen train is also the nearest."""
     cands = t.get("candidates") or []
     if not cands or t.get("ratio_required") is None:
         return None
-    near = min(cands, key=lambda c: (abs(c["error_pct"]), c["diameter_modules"]))
+    near = t.get("nearest") or min(cands, key=lambda c: (abs(c["error_pct"]), c["diameter_modules"]))
     chosen = next((c for c in cands if list(c["z"]) == list(t["z"])), cands[0])
     return None if near["z"] == chosen["z"] or abs(near["error_pct"]) >= abs(chosen["error_pct"]) else (near, chosen)
 
@@ -649,7 +656,10 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel):
             if d is not None:
                 if best is None or _rank(d[0]) < _rank(best[0]):
                     best = d
-                break
+                if d[0].h >= H_MIN - 1e-9:
+                    break         # (else a shorter vA may still give h ≥ H_MIN: stop 55, the lead's 14/56 in
+                #                   English at 1:1 was 1 mm too wide with h = 50 mm — μω is round, so the pictures'
+                #                   width jumps — and fell to h = 25 mm, which ranked under 1:2 read within ±7,1 %)
     return best or (vel, plan)
 
 
@@ -682,6 +692,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             mesh = set_mesh(sol.pair, f, precision, lang)
         else:
             mesh = construct_mesh(sol.pair, precision, lang, height_mm=zone_h, width_mm=zone_w, line_mm=line)
+            mesh = _into_band(sol.pair, mesh, zone_w, zone_h, line, precision, lang)
             teeth = most_teeth(sol.pair, mesh.module_mm, zone_h, zone_w)     # more teeth where the zone holds them
             if teeth != TEETH:
                 mesh = construct_mesh(sol.pair, precision, lang, module_mm=mesh.module_mm, teeth=teeth)
@@ -692,6 +703,31 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if mesh is not None and sol.pair:
         _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
+
+
+def _into_band(pair, mesh, zone_w: float, zone_h: float, line: float, precision: float, lang: str):
+    """The A1 meshing drawn at the largest GOST 2.302 scale whose whole depth is 40–60 mm where
+    ``mesh_scale`` (which judges a window a few mm wider and taller than the drawing) kept a smaller one
+    outside the band: each such scale built and its drawing with its caption measured against the zone
+    ``zone_w`` × ``zone_h``, the λ diagrams' N1N2 (at their own scale, ``lambda_mu``) within ``line``.
+    Stop 55: the lead's 14/56, m = 6 mm, was drawn at 2,5:1, the teeth 33,75 mm deep with a warning, its
+    window at 4:1 judged 621 mm wide in a 611-mm zone — the drawing is 586 mm; ``mesh`` as it was where no
+    scale in the band fits."""
+    from graphplan.graphic.gears import DEPTH_MM, ENLARGE, REDUCE, lambda_mu
+    m = pair.pair.module * 1000.0
+    if DEPTH_MM[0] <= 2.25 * mesh.module_mm <= DEPTH_MM[1]:
+        return mesh
+    for k in sorted(ENLARGE + REDUCE, reverse=True):
+        md = m * k
+        if not DEPTH_MM[0] <= 2.25 * md <= DEPTH_MM[1] or md <= mesh.module_mm * (1 + 1e-9):
+            continue
+        if pair.g / lambda_mu(pair, pair.pair.module / md) > line + 1e-9:
+            continue
+        got = construct_mesh(pair, precision, lang, module_mm=md)
+        w, h = _size(meshing_leaf(got, lang))
+        if w <= zone_w + 1e-9 and h <= zone_h + 1e-9:
+            return got
+    return mesh
 
 
 LAMBDA_BESIDE_MIN = 120.0   # mm: N1N2 drawn at least this long where the λ diagrams go beside the meshing smaller
