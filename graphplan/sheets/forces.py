@@ -458,6 +458,14 @@ def _notes_lines(dr: ForceDrafter, mu: dict[str, float], lang: str) -> list[str]
     lines = [f"{w('position').capitalize()}: {force_position(dr.st, dr.phi, lang)}"] + ([w('small') + "; ".join(small)] if small else [])
     if _hodographs_share(dr, mu["hodographs"]):      # the hodographs' "0–2", said once
         lines.append(w('coincide'))
+    # an inertia couple carried onto the lever as a moment beside others as pairs of forces: why
+    # (graphic.lever.READABLE_MM; review 55 #7: the lab's seed 000 writes P' = M/l for every couple)
+    from graphplan.graphic.lever import READABLE_MM
+    couples = [t for t in dr.fp(mu["scheme"], mu["forces"], mu["lever"]).lever.terms if t.pair and not t.vector]
+    if couples:
+        lines.append(word("fs couple", lang, what=", ".join(force_symbol(t.name, lang) for t in couples),
+                          seg=", ".join(f"{t.pair[0].lower()}{t.pair[1].lower()}" for t in couples),
+                          mm=num(READABLE_MM, lang)))
     scales = [format_scale("mu_l", mu["scheme"], lang)]
     by_scale: dict[float, list[str]] = {}
     for gp in fp.groups:                  # each group at its own scale (forceplans.group_scales)
@@ -673,6 +681,7 @@ ORDERS = (("scheme", "forces", "groups", "acceleration", "lever", "charts", "hod
           ("scheme", "groups", "forces", "acceleration", "lever", "charts", "hodographs"))
 
 
+SCHEME_FIRST = ("scheme first",)     # ``_one_sheet_at``: the scheme and the groups grown first (``_scheme_first``)
 HROWS = (3, 1, 2)     # the rows the hodographs' grid may end (the charts' row first)
 CUTS = (-1, 0)        # the charts in the lever's row (``_tree``): the shape's own count, else none (the row
                       # wrapped: ROCKING_BLOCK51's lever 80 × 70 mm beside the M_зр chart over a half-empty row)
@@ -775,6 +784,49 @@ def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
             else:
                 growing.remove(name)
     return mu
+
+
+def _next_coarser(fam: Family, mu: float) -> float:
+    """The family's next smaller drawing's μ: the standard series' step; the lever's by its own
+    choices (``LeverFamily``: p_v a in 5 mm steps between the round values)."""
+    if isinstance(fam, LeverFamily) and fam.principal > 0:
+        from graphplan.graphic.scales import larger_choices
+        got = [m for m, _ in larger_choices(fam.principal, mu * 2.5, fam.principal / mu) if m > mu * (1 + 1e-9)]
+        if got:
+            return min(got)
+    return coarser(mu)
+
+
+def _scheme_first(families: dict[str, Family], fits, mu: dict[str, float] | None) -> dict[str, float] | None:
+    """The scheme and the groups (at one scale) grown a step at a time from ``mu`` while the sheet
+    holds them, each step paid for by the acceleration plan or the lever, whichever is drawn larger
+    against its target (a step coarser; the force plans', charts' and hodographs' sizes kept: the
+    force plans' lettering is modelled no narrower at a coarser μF, ``Crowded``) while that drawing stays larger against its
+    target than the smallest main drawing was before the step — the room taken from the richest for the poorest; then every
+    family grown in turn (``_levels``). None where the scheme cannot grow so."""
+    if mu is None:
+        return None
+    s = max(mu["scheme"], mu["groups"])
+    cur, grew = {**mu, "scheme": s, "groups": s}, False
+    while True:
+        s1 = families["scheme"].finer(cur["scheme"])
+        if s1 is None:
+            break
+        trial = {**cur, "scheme": s1, "groups": s1}
+        need = min(families[n].rel(cur[n]) for n in MAIN)      # the smallest now: it must come out larger
+        while not fits(trial):
+            payers = [n for n in ("acceleration", "lever")
+                      if families[n].rel(_next_coarser(families[n], trial[n])) > need * (1 + 1e-9)]
+            if not payers:
+                break
+            rich = max(payers, key=lambda n: families[n].rel(trial[n]))
+            trial = {**trial, rich: _next_coarser(families[rich], trial[rich])}
+        if not fits(trial):
+            break
+        cur, grew = trial, True
+    if not grew:
+        return None
+    return _levels(families, fits, ORDERS[1], start=cur, led={"scheme": "groups"})
 
 
 @dataclass
@@ -973,9 +1025,18 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
                                 return found
             return found
 
-        for shape, order in [(sh, o) for sh in SHAPES for o in ORDERS]:
+        for shape, order in [(sh, o) for sh in SHAPES for o in (*ORDERS, SCHEME_FIRST)]:
             fits = lambda m, s=shape: arranged(m, s, True) is not None       # noqa: E731
-            mu = _levels(nat.families, fits, order)
+            if order is SCHEME_FIRST:
+                # the scheme and the groups with it grown first, paid for by the drawings drawn larger
+                # against their targets (LAYOUT.md: the scheme left, large): the families grown in
+                # turn from a common start gave the beam pump's lever, lettered 80 mm out on its arms,
+                # the top row's room, and its scheme and groups stayed at 1:10 beside ~180 × 85 mm
+                # blank where its A2 set draws them at 1:2 (review 55 #1); the score below keeps
+                # whichever composition leaves its smallest drawing the larger
+                mu = _levels(nat.families, fits, ORDERS[1])
+            else:
+                mu = _levels(nat.families, fits, order)
             if mu is None:
                 continue
             if mu["scheme"] < mu["groups"] * (1 - 1e-9):
@@ -985,6 +1046,10 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
                 # 1:2.5): the scheme at the groups' scale, the room it leaves grown into by the rest
                 mu = _levels(nat.families, fits, order, start={**mu, "scheme": mu["groups"]},
                              led={"scheme": "groups"})
+                if mu is None:
+                    continue
+            if order is SCHEME_FIRST:
+                mu = _scheme_first(nat.families, fits, mu)
                 if mu is None:
                     continue
             rel = [nat.families[fam].rel(mu[fam]) for fam in ("scheme", "groups", "forces", "acceleration", "lever")]
