@@ -6284,3 +6284,98 @@ rpm = 100
 direction = "ccw"
 divisions = 10
 '''
+
+# kin55b: review55's walking-beam pump (scene a of /work/wt/report_review55.md, #3): its A1 drew the stroke 44 mm
+# high (μs 0,004) in an 85-mm band, a_D 32.8 % off at a position.
+BEAM_PUMP55 = '''
+# review55 (a): a beam (walking-beam) pump drive: crank-rocker four-bar O1ABO2 whose balancer O2 sits
+# between its pins B and C (a lever of the first kind); C drives the rod CD to the vertical plunger D.
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП; resistance force on the plunger's upward (delivery) stroke.
+title = "Балансирний механізм привода поршневого насоса"
+title_en = "Walking-beam drive of a reciprocating pump"
+designation = "ТММ.КП.77.000"
+lang = "uk"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-77"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [-0.25, 0.35]
+
+[frame.guides]
+pl = { through = [-0.50, 0], angle_deg = 90, title_uk = "плунжера", title_en = "of the plunger" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 120
+direction = "ccw"
+points = { S1 = 0.0 }
+mass = 3
+inertia = 0.006
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.36
+points = { S2 = 0.5 }
+mass = 5
+inertia = 0.055
+
+[[link]]
+name = "BC"
+number = 3
+joints = ["B", "O2"]
+length = 0.20
+points = { C = 2.25, S3 = 1.0 }
+mass = 8
+inertia = 0.12
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.30
+points = { S4 = 0.5 }
+mass = 4
+inertia = 0.03
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "pl"
+mass = 10
+
+[branch]
+B = -1
+D = -1
+
+[positions]
+count = 12
+start = "min"
+working_stroke = "to_max"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "D"
+magnitude = 1800
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1500
+'''
