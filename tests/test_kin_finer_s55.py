@@ -16,8 +16,6 @@ import pytest
 from conftest import scene_study
 from review_scenes import BEAM_PUMP55, COULISSE8, SIXBAR7
 
-pytestmark = pytest.mark.slow
-
 SERIES = (1.0, 2.0, 2.5, 4.0, 5.0)
 
 
@@ -37,6 +35,7 @@ def _sheet(text):
     return st, f, p, nat, dr, diagram_options(st, p.diagrams, None, 0.5, dr.room, dr.floor)["redrawn"]
 
 
+@pytest.mark.slow
 def test_beam_pump_draws_its_stroke_at_0_0025_and_reads_a_closer():
     st, f, p, nat, dr, r = _sheet(BEAM_PUMP55)
     d = dr.diagrams(p.diagrams)
@@ -48,6 +47,7 @@ def test_beam_pump_draws_its_stroke_at_0_0025_and_reads_a_closer():
     assert r.off_after < 15.0                                      # was 32.8 % at position 3
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["BEAM_PUMP55", "COULISSE8", "SIXBAR7"])
 def test_s_diagram_at_the_finest_standard_mu_the_band_holds(name):
     from graphplan.drawing.layout import Leaf
@@ -72,3 +72,34 @@ def test_s_diagram_at_the_finest_standard_mu_the_band_holds(name):
     # 0.1 % redraw's largest |δ| is compared at) or the finer one does not fit the band
     assert (not holds) or (not other.right) or round(other.off_after, 1) >= round(r.off_after, 1) - 1e-9 \
         or math.isinf(other.off_after or math.inf), (name, p.diagrams, d.mu_s, other.off_after, r.off_after)
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_omega_columns_no_finer_than_the_rulers_division(lang):
+    """Review 55 #9: Table 1 printed ω4 = v_DC/l_CD as 0,733 (0,22/0,30) beside ω2, ω3 to two
+    decimals. One ruler division (0.5 mm × μv 0,02 = 0,01 m/s) changes ω4 by 0,01/0,30 = 0,033
+    rad/s: the column is written to its first figure's place, two decimals — as ω2 (0,01/0,36) and
+    ω3 (0,01/0,20) are."""
+    from graphplan.graphic.plans import build_plans
+    from graphplan.report.plans import plans_json
+    from graphplan.sheets.kintables import velocity_table
+    st = scene_study(BEAM_PUMP55)
+    pl = build_plans(st, mu_l=0.002, mu_v=0.02, mu_a=0.1)         # the A1 sheet's scales
+    texts = [(round(p.points[0][1], 1), p.points[0][0], p.text) for p in velocity_table(plans_json(pl), lang, 0.5).items
+             if p.kind == "text"]
+    rows: dict = {}
+    for y, x, t in texts:
+        rows.setdefault(y, []).append((x, t))
+    body = [[t for _, t in sorted(r)] for _, r in sorted(rows.items(), reverse=True)]
+    head = next(r for r in body if any(c.startswith("ω") for c in r))
+    sep = "," if lang == "uk" else "."
+    for sym, length in (("ω_{2}", 0.36), ("ω_{3}", 0.20), ("ω_{4}", 0.30)):
+        j = head.index(sym)
+        step = 0.5 * 0.02 / length
+        want = -math.floor(math.log10(step))
+        cells = [r[j] for r in body[body.index(head) + 1:] if len(r) == len(head)]
+        assert len(cells) == 12
+        for c in cells:
+            if c in ("0", "—"):
+                continue
+            assert len(c.split(sep)[1]) == want == 2, (sym, c)

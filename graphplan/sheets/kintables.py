@@ -684,8 +684,11 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     # a link drawn + clockwise (``drawn_sense`` −1) against the tables' + counter-clockwise: its rows
     # headed −φ5, −ω5, −ε5, so the table reads right on its own beside Tables 1–3 (review 55 #5: ω5
     # −2,36 in Table 1 and 2,36 here, a note apart)
+    # (ψ, the turn from the extreme position, is the diagrams' own — no table of the plans gives it;
+    # a link turning round keeps the notes' −φ)
     neg = "−" if drawn_sense(diag) < 0 and diag.output.kind != "slide" else ""
-    heads = [w('no'), f"{neg}{s_}, {us}", exact, f"{neg}{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+    neg_s = neg if diag.symbols[0] != "ψ" else ""
+    heads = [w('no'), f"{neg_s}{s_}, {us}", exact, f"{neg}{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
              f"{neg}{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
@@ -726,8 +729,9 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     if k_ < 0:     # the diagrams' sense against the plans' (review 53 #10: ω5 −1,38 in Table 1, +1,38 here)
         m = sum(1 for pos in doc["positions"] if pos.get("acceleration"))
         t = "1" if m == 0 else "1,\u00a02" if m == 1 else f"1–{1 + m}"
+        sym = diag.symbols[0] if diag.symbols[0] == "ψ" else f"−{diag.symbols[0]}"
         said.append(w('readings_signs_back', t=t) if out_kind == "slide"
-                    else w('readings_signs_cw', sym=diag.symbols[0], n=diag.sub, t=t))
+                    else w('readings_signs_cw', sym=sym, n=diag.sub, t=t))
     return footnoted(rec, said)
 
 

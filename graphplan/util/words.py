@@ -296,10 +296,10 @@ WORDS: dict[str, tuple[str, str]] = {
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_max": ('; |max| {tops}', '; |max| {tops}'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
-    "kin readings_signs_cw": ('Тут −{sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (і рядки «план»): +\u00a0за годинниковою стрілкою, '
-                              'як на діаграмах; {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} у таблицях {t}: +\u00a0проти годинникової стрілки',
-                              'Here −{sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (the "plan" rows too): +\u00a0clockwise, as '
-                              'on the diagrams; {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} in Tables {t}: +\u00a0counter-clockwise'),
+    "kin readings_signs_cw": ('Тут {sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (і рядки «план»): +\u00a0за годинниковою стрілкою, '
+                              'як на діаграмах; ω_{{{n}}}, ε_{{{n}}} у таблицях {t}: +\u00a0проти годинникової стрілки',
+                              'Here {sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (the "plan" rows too): +\u00a0clockwise, as '
+                              'on the diagrams; ω_{{{n}}}, ε_{{{n}}} in Tables {t}: +\u00a0counter-clockwise'),
     "kin readings_signs_back": ('Знаки s, v, a тут (і рядки «план»): +\u00a0від положення 0, проти напрямної, як на '
                                 'діаграмах; у таблицях {t}: +\u00a0у напрямку напрямної',
                                 'Signs of s, v, a here (the "plan" rows too): +\u00a0away from position 0, against the '
