@@ -6527,3 +6527,5 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1500
 """
+# (kin55b's check of review 55 #3 uses the same scene: the stroke drawn 44 mm high in an 85-mm band)
+

@@ -64,7 +64,7 @@ def test_the_coulisse_swinging_clockwise_has_psi_from_its_extreme_position_posit
     assert np.all(d.drawn.s >= -0.5)
     assert float(np.max(d.drawn.s)) * d.mu_s == pytest.approx(2 * math.asin(0.09 / 0.22), rel=0.02)
     # ω3 on the way out (positions 1–7) is + in the sense ψ3 grows, as the diagram draws it
-    omega = next(r for r in rows if r[0].startswith("ω"))
+    omega = next(r for r in rows if r[0].startswith("−ω"))     # −ω3: + clockwise (review 55 #5)
     assert all(_value(c) > 0 for c in omega[2:8])
     # and the notes say which sense that is (clockwise), the plans' tables keeping + counter-clockwise
     for lang, cw, ccw in (("uk", "+ за годинниковою стрілкою", "+ проти годинникової стрілки"),

@@ -127,13 +127,13 @@ def test_the_coulisses_a3_a_diagram_is_redrawn_without_its_shoulder():
 
 def test_table_4_names_the_rams_guide_x_from_the_rockers_pivot():
     """Review 8: Table 4 printed "e = 0,320 м", the ram guide's distance from O1, unexplained. Seed 000
-    gives X from O, the rocker's pivot: the row "X від O" (en "X from O") = 0.62 m, drawn 155 mm at
-    1:4; an offset crank-slider keeps its e."""
+    gives X from O, the rocker's pivot: the row "X: O — напрямна C" (en "X: O to guide C"; review 55
+    #10: the ram's point named) = 0.62 m, drawn 155 mm at 1:4; an offset crank-slider keeps its e."""
     from graphplan.sheets.kintables import dimensions_table, link_lengths
     st = scene_study(COULISSE8)
     sizes = dict(link_lengths(st))
     assert "e" not in sizes and sizes["X"] == pytest.approx(0.62)
-    for lang, words in (("uk", "X від O"), ("en", "X from O")):
+    for lang, words in (("uk", "X: O — напрямна C"), ("en", "X: O to guide C")):
         texts = [q.text for q in dimensions_table(st, 0.004, lang).items if q.kind == "text"]
         assert texts[texts.index(words) + 1] == ("0,620" if lang == "uk" else "0.620"), texts
         assert texts[texts.index(words) + 2] == ("155,0" if lang == "uk" else "155.0"), texts

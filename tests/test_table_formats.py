@@ -159,7 +159,8 @@ def test_dimensions_table_names_the_drawings_letters(case):
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         # the ram's guide x = 0.50 m from O1 is driven by the rocker O2D: X from O2 = 0.50 − 0.28 m
         # (seed 000 gives X from the rocker's pivot), the row naming the pivot
-        assert rows.get("X від O_{2}") in ("0,22", "0,220"), rows
+        x = next(v for k, v in rows.items() if k.startswith("X: O_{2} — напрямна"))    # review 55 #10: the guide named
+        assert x in ("0,22", "0,220"), rows
     else:
         rows = {r[0]: r[1] for r in _grid(dimensions_table(st, plans.mu_l, lang))[1:]}
         assert rows.get("e") in ("0.06", "0.060"), rows                # the offset e = 60 mm

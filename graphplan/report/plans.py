@@ -144,7 +144,8 @@ def step_decimals(step: float) -> int:
     return 6
 
 
-def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4) -> int:
+def places(values, longest_mm: float | None, precision: float, mu: float | None = None, most: int = 4,
+           step: float | None = None) -> int:
     """One count of decimals for a column of values read off drawn lengths: the figures of the
     longest drawn length ``longest_mm`` they are read from (``figures``) at the largest |value|, no
     finer than the ruler's step times the scale ``mu``. The sheet's tables (sheets.kintables) and
@@ -160,7 +161,25 @@ def places(values, longest_mm: float | None, precision: float, mu: float | None 
         d = min(d, step_decimals(mu * precision))
     # at least three figures for the column's typical value (review 10: v_B 0,08 beside v_S2 0,126;
     # 4,0 mm × μv 0,02 = 0,080 is as read — the product written out, a trailing figure not invented)
-    return max(0, d, column_decimals(vals, typical=True))
+    d = max(0, d, column_decimals(vals, typical=True))
+    # a quotient (ω = v_BA/l, ε = a^τ/l) is no product of the ruler's step: written no finer than
+    # the place of its step's first figure (review 55 #9: ω4 = 0,22/0,30 printed 0,733 where the
+    # ruler's division gives ±0,033 — 0,73, two decimals like ω2, ω3 beside it)
+    return min(d, rate_decimals(step)) if step else d
+
+
+def rate_decimals(step: float) -> int:
+    """The decimals of a quotient read off the ruler whose division changes it by ``step``: the place
+    of the step's first significant figure (0,033 → 2, 0,05 → 2, 0,2 → 1, 1,5 → 0)."""
+    return max(0, -math.floor(math.log10(step) + 1e-12))
+
+
+def rate_step(values_mm, precision: float) -> float | None:
+    """The finest change one ruler division makes to a column of ω (or ε): precision × |ω| / the mm
+    of the vector each is read from (ω = v/l: the reading's division is μ·precision/l), the smallest
+    over the column's (value, mm) pairs; None where no pair has both."""
+    steps = [precision * abs(v) / mm for v, mm in values_mm if v and mm and precision > 0]
+    return min(steps) if steps else None
 
 
 def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0.5) -> list[str]:
@@ -168,7 +187,9 @@ def rate_column(entries: list[Entry], mu: float, lang: str, precision: float = 0
     column (``places``: the figures of its longest vector at its largest value), 0 where the vector
     was read as 0 mm."""
     longest = max((e.basis / mu for e in entries if mu and e.basis), default=None)
-    d = places([signed(e) for e in entries], longest, precision)
+    step = rate_step([(signed(e), (e.drawn if e.drawn is not None else e.basis / mu if mu else None)) for e in entries],
+                     precision)
+    d = places([signed(e) for e in entries], longest, precision, step=step)
     return ["0" if e.value == 0 else fixed(signed(e), lang, d) for e in entries]
 
 

@@ -139,10 +139,11 @@ def _block_size(st: Study, options: dict, precision: float) -> tuple[float, floa
     return max(w for w, _ in sizes), max(h for _, h in sizes)
 
 
-def first_options(st: Study, k: float | tuple[float, float] = 1.0, positions: int | None = None) -> dict:
+def first_options(st: Study, k: float | tuple[float, ...] = 1.0, positions: int | None = None) -> dict:
     """The diagrams' first L, s height and pole distances: the scene's L (× k where a small sheet needs it),
     the s diagram at most ``S_HEIGHT`` × k high (k a pair: L × its first, the height × its second —
-    a set's diagrams as tall as their sheet holds, ``kinlayout.set_of_sheets``); H1, H2 the scene's
+    a set's diagrams as tall as their sheet holds, ``kinlayout.set_of_sheets``; a triple: the poles
+    as the pair of its first and third chose them, so only s is taller); H1, H2 the scene's
     where it gives them, else chosen (whole mm, within the lab's 15–50 mm) so the v or a peak is
     about ``SHARE`` of the s diagram — of the height allowed it, for a pair: μs is a standard value,
     so s takes 0.4–1 of its allowance and the v and a diagrams take up the rest (heights are
@@ -160,6 +161,14 @@ def first_options(st: Study, k: float | tuple[float, float] = 1.0, positions: in
     s_mm = float(max(abs(probe.exact.s.max() - probe.exact.s.min()), 1e-9))
     if not isinstance(k, (int, float)):
         s_mm = max(s_mm, out["height"])
+    if not isinstance(k, (int, float)) and len(k) > 2:
+        # a triple (length, height, poles' height): the s diagram as tall as the second factor's μs
+        # draws it, the poles chosen as the pair (length, third) chose them — so the v and a peaks
+        # stay as high as that pair's (v_mm = SHARE·s_mm: the poles scale with μs) and only the s
+        # diagram grows, at a finer μs (``kinlayout.taller_in_place``: review 55 #3, the beam pump's
+        # stroke 44 mm high at μs 0,004 in an 85-mm band; at 0,0025 it is 71 mm)
+        base = chord_diagrams(st, precision=0.0, **{**out, "height": S_HEIGHT * float(k[2])})
+        s_mm = max(float(max(abs(base.exact.s.max() - base.exact.s.min()), 1e-9)), S_HEIGHT * float(k[2]))
 
     def pole(peak: float, mu_before: float) -> float:
         if peak <= 0:

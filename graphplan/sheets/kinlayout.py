@@ -422,7 +422,8 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     to the exact values at the positions (redraw's largest |δ|, what Table 5 prints), then drawn
     largest — as a set's diagrams are grown (``taller``); kept where none reads better. Review 12:
     the A1 drew φ5 29 mm high (L 120 mm, μφ 0,01 рад/мм) beside a 301-mm column of tables; there
-    the chords' own error rules ε5 (17.5 % at 0.5, 22.7–38 % at the taller heights), so it stays."""
+    the chords' own error rules ε5 (17.5 % at 0.5, 22.7–38 % at the taller heights), so it stays.
+    Also the s diagram alone taller at a finer μs (``finer_s``), the v and a diagrams as high."""
     from graphplan.sheets.kinematics import diagram_options
     long_, tall = factors(p.diagrams)
     if tall >= 1.0 - 1e-9 and long_ >= 1.0 - 1e-9:
@@ -440,17 +441,42 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     heights = {long_: [round(tall + j * HEIGHT_STEP, 6) for j in range(int(round((1.0 - tall) / HEIGHT_STEP)), 0, -1)]}
     for length in (x for x in DIAGRAMS_SHRUNK if x > long_ + 1e-9):
         heights[length] = [round(1.0 - 0.1 * j, 6) for j in range(int(round((1.0 - length) / 0.1)) + 1)]
-    for length, ts in heights.items():
-        for t in ts:
-            k = (length, t)
-            if not dr.diagrams_right(k):
-                continue
-            got = judged(k)        # no better read: not drawn in both languages to be measured
-            if got < score and composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) \
-                    and flat(dr, k) <= flat(dr, p.diagrams):
-                best, score = k, got
+    ks = [(length, t) for length, ts in heights.items() for t in ts] + finer_s(dr, p.diagrams)
+    for k in ks:
+        if not dr.diagrams_right(k):
+            continue
+        got = judged(k)        # no better read: not drawn in both languages to be measured
+        if got < score and composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) \
+                and flat(dr, k) <= flat(dr, p.diagrams):
+            best, score = k, got
     from dataclasses import replace
     return p if best == p.diagrams else replace(p, diagrams=best)
+
+
+def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
+    """One sheet's diagrams at size ``k`` with their s diagram drawn taller at each finer standard μs
+    the height allowance up to ``S_HEIGHT`` (80 mm) holds, the v and a diagrams as high as at ``k``
+    (``first_options``' triple: the poles lower in proportion): (length, the smallest height factor
+    in ``HEIGHT_STEP`` that draws at that μs, ``k``'s height) — ``taller_in_place`` takes one where
+    the composition's band holds it and it reads closer to the exact values. The short s ordinates
+    are what the ruler's half millimetre amplifies in v and a: review 55 #3's beam pump drew its
+    stroke 44 mm high (μs 0,004) in an 85-mm band, a_D 32.8 % off at a position; at 0,0025 it is
+    71 mm high."""
+    from graphplan.sheets.kinematics import first_options, _drawn
+    long_, tall = factors(k)
+    if tall >= 1.0 - 1e-9:
+        return []
+    o = dr.opts
+    mu = dr.diagrams(k).mu_s
+    out, seen = [], {mu}
+    for j in range(1, int(round((1.0 - tall) / HEIGHT_STEP)) + 1):
+        t = round(min(1.0, tall + j * HEIGHT_STEP), 6)
+        k3 = (long_, t, tall)
+        mu_t = _drawn(dr.st, first_options(dr.st, k3, o.positions), 0.0).mu_s
+        if mu_t < mu - 1e-12 and mu_t not in seen:
+            seen.add(mu_t)
+            out.append(k3)
+    return out
 
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan

@@ -9,7 +9,7 @@ from __future__ import annotations
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import judged_pct
 from graphplan.graphic.record import Record, text_width
-from graphplan.report.plans import acceleration_cells, places, step_decimals  # noqa: F401  (the terminal's own, one rule)
+from graphplan.report.plans import acceleration_cells, places, rate_step, step_decimals  # noqa: F401  (the terminal's own, one rule)
 from graphplan.sheets.compose import lines_of, number, percent
 from graphplan.sheets.form import enlarged, table
 from graphplan.util.markup import escape, subscripted
@@ -104,7 +104,8 @@ def decimals(entries: list[dict | None], precision: float, most: int = 4) -> int
     values = [_signed(e) for e in entries if e]
     mms = [_length(e) for e in entries if e and _length(e)]
     mus = [abs(e["value"] / e["mm"]) for e in entries if e and e.get("sense") is None and e.get("mm") and e.get("value")]
-    return places(values, max(mms, default=None), precision, mus[0] if mus else None, most)
+    step = rate_step([(e.get("value"), e.get("from_mm")) for e in entries if e and e.get("sense") is not None], precision)
+    return places(values, max(mms, default=None), precision, mus[0] if mus else None, most, step=step)
 
 
 def written(value: float | None, d: int, lang: str) -> str:
@@ -372,6 +373,15 @@ def guide_distances(st: Study) -> list[tuple[str, float, object, str]]:
     return out
 
 
+def _guide_point(mech, g) -> str | None:
+    """The point of the slider on the fixed guide ``g`` (the plunger's D), as the position plan letters
+    it; None where only a yoke (no joint of its own) slides on it."""
+    for link in mech.links.values():
+        if link.slides_on == g.name and link.joints:
+            return link.joints[0]
+    return None
+
+
 def _driver_pivot(mech, guide: str) -> str | None:
     """The frame pivot of the rocker whose rod drives the slider on ``guide`` (None: the crank's rod
     drives it, or no rocker does) — or whose own point carries the stone in a yoke's slot on it
@@ -427,8 +437,11 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     real = 4 if tenths else 3        # a given 12.5 mm; a derived 286.36 mm stays to the millimetre
     # a rocker-driven ram's guide: X named with the pivot it is measured from ("X від O"), no footnote
     # (a line more under the table cost a press its full-size diagrams)
-    froms = {label: w('dims from', symbol=label, pivot=_pivot_name(pivot))
-             for label, _, _, pivot in guide_distances(st) if label.startswith("X")}
+    # … and with the slider's point whose guide it is, as the scheme letters it (review 55 #10: a bare
+    # "X від O₂" of the beam pump's plunger guide read as an unexplained Latin capital)
+    froms = {label: (w('dims from point', symbol=label, pivot=_pivot_name(pivot), point=_pivot_name(point))
+                     if (point := _guide_point(st.mech, g)) else w('dims from', symbol=label, pivot=_pivot_name(pivot)))
+             for label, _, g, pivot in guide_distances(st) if label.startswith("X")}
     for name, length in lengths:
         rows.append([froms.get(name, name), written(length, real, lang),
                      written(lay_off(length / mu_l, precision), ruler, lang)])
@@ -668,8 +681,15 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     units = ("m", "m/s", "m/s²") if diag.unit == "m" else ("rad", "rad/s", "rad/s²")
     us, uv, ua = (unit(u, lang) for u in units)
     plans, exact = w('readings_plan'), w('readings_exact')
-    heads = [w('no'), f"{s_}, {us}", exact, f"{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
-             f"{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
+    # a link drawn + clockwise (``drawn_sense`` −1) against the tables' + counter-clockwise: its rows
+    # headed −φ5, −ω5, −ε5, so the table reads right on its own beside Tables 1–3 (review 55 #5: ω5
+    # −2,36 in Table 1 and 2,36 here, a note apart)
+    # (ψ, the turn from the extreme position, is the diagrams' own — no table of the plans gives it;
+    # a link turning round keeps the notes' −φ)
+    neg = "−" if drawn_sense(diag) < 0 and diag.output.kind != "slide" else ""
+    neg_s = neg if diag.symbols[0] != "ψ" else ""
+    heads = [w('no'), f"{neg_s}{s_}, {us}", exact, f"{neg}{v_}, {uv}", plans, exact, f"δ_{{{diag.symbols[1]}}}, %",
+             f"{neg}{a_}, {ua}", plans, exact, f"δ_{{{diag.symbols[2]}}}, %"]
     marked = False
 
     def pct(e: float | None) -> str:
@@ -709,8 +729,9 @@ def readings_table(diag, doc: dict, lang: str, n: int, precision: float = 0.5) -
     if k_ < 0:     # the diagrams' sense against the plans' (review 53 #10: ω5 −1,38 in Table 1, +1,38 here)
         m = sum(1 for pos in doc["positions"] if pos.get("acceleration"))
         t = "1" if m == 0 else "1,\u00a02" if m == 1 else f"1–{1 + m}"
+        sym = diag.symbols[0] if diag.symbols[0] == "ψ" else f"−{diag.symbols[0]}"
         said.append(w('readings_signs_back', t=t) if out_kind == "slide"
-                    else w('readings_signs_cw', sym=diag.symbols[0], n=diag.sub, t=t))
+                    else w('readings_signs_cw', sym=sym, n=diag.sub, t=t))
     return footnoted(rec, said)
 
 

@@ -286,6 +286,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin dims middle": ('{names} — посередині ланки', '{names}: at the middle of its link'),
     "kin link": ('ланка', 'link'),
     "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
+    "kin dims from point": ('{symbol}: {pivot} — напрямна {point}', '{symbol}: {pivot} to guide {point}'),
     "kin real": ('l, м', 'l, m'),
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
@@ -297,10 +298,10 @@ WORDS: dict[str, tuple[str, str]] = {
                            'δ: of the exact value (of |max| where |value| < 10 % of it)'),
     "kin readings_max": ('; |max| {tops}', '; |max| {tops}'),
     "kin readings_mark": ('; * — понад 5 %', "; * — over 5 %"),
-    "kin readings_signs_cw": ('Знаки {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} тут (і рядки «план»): +\u00a0за годинниковою стрілкою, '
-                              'як на діаграмах; у таблицях {t}: +\u00a0проти годинникової стрілки',
-                              'Signs of {sym}_{{{n}}}, ω_{{{n}}}, ε_{{{n}}} here (the "plan" rows too): +\u00a0clockwise, as '
-                              'on the diagrams; in Tables {t}: +\u00a0counter-clockwise'),
+    "kin readings_signs_cw": ('Тут {sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (і рядки «план»): +\u00a0за годинниковою стрілкою, '
+                              'як на діаграмах; ω_{{{n}}}, ε_{{{n}}} у таблицях {t}: +\u00a0проти годинникової стрілки',
+                              'Here {sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (the "plan" rows too): +\u00a0clockwise, as '
+                              'on the diagrams; ω_{{{n}}}, ε_{{{n}}} in Tables {t}: +\u00a0counter-clockwise'),
     "kin readings_signs_back": ('Знаки s, v, a тут (і рядки «план»): +\u00a0від положення 0, проти напрямної, як на '
                                 'діаграмах; у таблицях {t}: +\u00a0у напрямку напрямної',
                                 'Signs of s, v, a here (the "plan" rows too): +\u00a0away from position 0, against the '
