@@ -458,6 +458,9 @@ class Solution:
             self.cache["corners"] = profile_corners(self.cam, self.geometry)
         return self.cache["corners"]
 
+    def shocks(self) -> list["Shock"]:
+        return shocks(self.cam)
+
     def curvature_min(self) -> float:
         """The smallest radius of curvature of the centre profile where it is convex, m: a 0.025° grid's
         smallest refined by a bounded search, and at every point where d²s/dφ² (or ds/dφ) jumps — the
@@ -537,6 +540,52 @@ def jump_points(cam: Cam) -> Array:
     pts += [rise * u for u in _LAW_KNOTS.get(cam.laws[0], ())]
     pts += [rise + far + ret * u for u in _LAW_KNOTS.get(cam.laws[1], ())]
     return np.array(sorted(set(pts)))
+
+
+@dataclass(frozen=True)
+class Shock:
+    """A jump of the follower's motion at the cam turn ``phi_deg``: "rigid" where ds/dφ jumps (the
+    acceleration is infinite), "soft" where only d²s/dφ² jumps (a finite jump of acceleration)."""
+    phi_deg: float
+    kind: str
+
+
+def _law_sides(name: str, u: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """f′, f″ of a law just before and just after a knot ``u`` inside its phase (a hair either side:
+    the laws are polynomials or trigonometric between their knots, so the hair's error is ~1e-9·f‴)."""
+    d = 1e-9
+    lo, hi = (law(name, np.array([x])) for x in (u - d, u + d))
+    return (float(lo[1][0]), float(lo[2][0])), (float(hi[1][0]), float(hi[2][0]))
+
+
+def shocks(cam: Cam) -> list[Shock]:
+    """The shocks of the cycle, by the one-sided values of ds/dφ and d²s/dφ² at the phases' ends
+    (``sides``: where two phases meet without a dwell both are judged) and at the laws' knots inside a
+    phase (the parabolic law's middle, the trapezoidal's ramps): a jump of ds/dφ is a rigid shock, one
+    of d²s/dφ² alone a soft one — from the values, not the law's name (a cosine rise into a cosine
+    return of the same angle has none at the join)."""
+    rise, far, ret, _ = cam.phases
+    h = cam.stroke
+    spans = [(0.0, rise), (rise + far, ret)]
+    v_big = max(h / math.radians(x) for _, x in spans)
+    a_big = max(h / math.radians(x) ** 2 for _, x in spans)
+    tol = 1e-6
+    out = []
+    for phi in sorted({e % 360.0 for e in (0.0, rise, rise + far, rise + far + ret)}):
+        (_, vb, ab), (_, va, aa) = sides(cam, phi)
+        if abs(va - vb) > tol * v_big:
+            out.append(Shock(float(phi), "rigid"))
+        elif abs(aa - ab) > tol * a_big:
+            out.append(Shock(float(phi), "soft"))
+    for k, (start, length) in enumerate(spans):
+        scale = h / math.radians(length)
+        for u in _LAW_KNOTS.get(cam.laws[k], ()):
+            (vb, ab), (va, aa) = _law_sides(cam.laws[k], u)
+            if abs(va - vb) * scale > tol * v_big:
+                out.append(Shock(float(start + length * u), "rigid"))
+            elif abs(aa - ab) * scale / math.radians(length) > tol * a_big:
+                out.append(Shock(float(start + length * u), "soft"))
+    return sorted(out, key=lambda x: x.phi_deg)
 
 
 def solve(cam: Cam) -> Solution:

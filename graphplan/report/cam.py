@@ -74,6 +74,8 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
                              "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
                              "convex": c.convex, **_sides_theta(sol, c.phi_deg)} for c in sol.corners()],
+        # the shocks by kind, from the one-sided ds/dφ, d²s/dφ² (exact.cam.shocks), not the law's name
+        "shocks": [{"phi_deg": x.phi_deg, "kind": x.kind} for x in sol.shocks()],
         "closing_mm": {"rise": float(g.closing[0]), "return": float(g.closing[1])},
         "redrawn": None if g.redrawn is None else {
             "divisions_first": int(g.redrawn[0]),
@@ -120,6 +122,8 @@ WORDS = {
            "smooth": "на гладких ділянках",
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
            "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "shocks": "удари: {l}", "no_shocks": "ударів немає ({v}, {a} неперервні)",
+           "shock": {"rigid": "жорсткі (стрибок {v}) при φ = {p}", "soft": "м’які (стрибок {a}) при φ = {p}"},
            "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
                      "іде дугою радіуса r навколо ребра, зрізаючи злам",
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
@@ -169,6 +173,8 @@ WORDS = {
            "smooth": "over the smooth parts",
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
            "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "shocks": "shocks: {l}", "no_shocks": "no shocks ({v}, {a} continuous)",
+           "shock": {"rigid": "rigid (a jump of {v}) at φ = {p}", "soft": "soft (a jump of {a}) at φ = {p}"},
            "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
                      "cutting the corner on an arc of radius r about the edge",
            "concave": "concave: the working profile there an arc of radius r about it",
@@ -349,6 +355,12 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         w["phases"].format(a=n(doc["phases_deg"]["rise"]), b=n(doc["phases_deg"]["dwell_far"]),
                            c=n(doc["phases_deg"]["return"]), d=n(doc["phases_deg"]["dwell_near"]))]
     lines[-1] += "; " + w["omega"].format(w=n(doc["omega_rad_s"]), d=w["sense"][doc["sense"]])
+    if "shocks" in doc:            # every law's shocks (a TMM teacher asks them), after the laws and phases they follow from
+        kinds = [(k, [x["phi_deg"] for x in doc["shocks"] if x["kind"] == k]) for k in ("rigid", "soft")]
+        a2 = symbols(rocking)["a"]
+        said = [w["shock"][k].format(v=symbols(rocking)["v"], a=a2, p=", ".join(n(p) + "°" for p in at))
+                for k, at in kinds if at]
+        lines.append(w["shocks"].format(l="; ".join(said)) if said else w["no_shocks"].format(v=symbols(rocking)["v"], a=a2))
     lines.append(w["arm"].format(l=n(doc["arm_m"] * 1000), a=n(doc["centre_distance_m"] * 1000),
                                  p=n(doc["arm_angle_deg"])) if rocking else offset_line(w, doc, n))
     g = doc["base_radius_graphical_m"]
