@@ -12,6 +12,12 @@ from graphplan.cli.main import main
 
 CYRILLIC = re.compile(r"[А-Яа-яІіЇїЄєҐґ]")
 LEVER = (ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8")
+
+
+def _line(text: str, what: str) -> int:
+    """The 1-based line of ``text`` holding ``what`` (where TOML's parser stops on a bare word)."""
+    return text[:text.index(what)].count("\n") + 1
+
 CAM = (ROOT / "examples" / "cam_translating.toml").read_text(encoding="utf-8")
 FORCE = '\n[[force]]\npoint = "Z"\nmagnitude = 1000\nstroke = "working"\ndirection = "oppose"\n'
 SECOND_CRANK = '[crank]\npivot = "O"\npin = "C"\nlength = 0.1\nomega = 10\n\n[[link]]\nname = "AB"'
@@ -31,7 +37,8 @@ CASES = {
     "guide angle as text": (LEVER, "angle_deg = 0 }", 'angle_deg = "horizontal" }', "analyze",
                             "frame.guides.x.angle_deg", ["не число", "'horizontal'"], ["not a number", "'horizontal'"]),
     "angle without quotes": (LEVER, "angle_deg = 0 }", "angle_deg = horizontal }", "analyze", "TOML",
-                             ["рядок 21", "лапках"], ["line 21", "quotes"]),
+                             [f"рядок {_line(LEVER, 'angle_deg = 0 }')}", "лапках"],
+                             [f"line {_line(LEVER, 'angle_deg = 0 }')}", "quotes"]),
     "two cranks": (LEVER, '[[link]]\nname = "AB"', SECOND_CRANK, "analyze", "[crank]", ["двічі", "рядок"],
                    ["twice", "line"]),
     "force on an unknown point": (LEVER, "accel = [1]", "accel = [1]" + FORCE, "analyze", "force.point",
