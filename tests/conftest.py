@@ -13,6 +13,15 @@ import pytest
 from graphplan.exact.positions import study
 from graphplan.model.scene import load, loads
 
+# The packaged fonts registered with fontconfig before any test renders: cairo keeps, for the life of a
+# process, the face it first matched to a family, so a test that rasterised an SVG lettered "osifont"
+# with cairosvg before anything had registered the font left the worker's later PDFs and PNGs in the
+# fallback (DejaVu): stop 55's CI, 8 PDF/PNG tests failing by the order xdist dealt them. A browser
+# loads the sheet's font before it draws; so do the tests.
+from graphplan.drawing.fonts import register as _register_fonts  # noqa: E402
+
+_register_fonts()
+
 ROOT = Path(__file__).resolve().parent.parent
 
 # Property tests draw the same examples on every run (CI: a green main stays green; a failure is

@@ -67,6 +67,7 @@ function translate() {
   $("dl-status").textContent = "";               // said in the other language: not left mixed
   $("dl-error").textContent = "";
   if (state.grades) showGrades(state.grades);
+  if (state.assemblies && state.assemblies.length === 2) showAssemblies(null, state.assemblies);   // the buttons' words too
 }
 
 function sayUploaded() {
