@@ -6529,3 +6529,217 @@ synchronous_rpm = 1500
 """
 # (kin55b's check of review 55 #3 uses the same scene: the stroke drawn 44 mm high in an 85-mm band)
 
+
+# Stop 56: the blind reviewer's toggle press of stop 56: a 12 kN pressing force over the last 14 mm of the down stroke (profile), crank clockwise, 1000-rpm motor
+TOGGLE_PRESS56 = """
+# review56 (a): a knee-lever (toggle) press: crank O1A drives the rod AB to the knee B, where the upper
+# toggle lever O2B and the lower toggle rod BC meet (B a joint of three links); C the ram on a VERTICAL
+# guide under O2. I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП; the crank turns CLOCKWISE; the pressing force acts
+# only over the last 14 mm of the ram's downward (working) stroke (a profile), with [dynamics].
+title = "Колінно-важільний механізм преса"
+title_en = "Knee-lever (toggle) press mechanism"
+designation = "ТММ.КП.56.200"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0.28, 0.22]      # crank pivot
+O2 = [0, 0.40]         # upper toggle pivot
+
+[frame.guides]
+ram = { through = [0, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.04
+rpm = 90
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.23
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.20
+points = { S4 = 0.5 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 40
+
+[branch]
+B = 1
+C = -1
+
+[positions]
+count = 12
+start = "max"              # position 0: the ram at its top
+working_stroke = "to_min"  # pressing on the way down
+accel = [4]
+force_phi_deg = 150
+output = "C"
+
+[loads]
+g = 9.81
+mass_per_length = 40
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 12000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.026, 0], [0.030, 1], [0.06, 1]]
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+"""
+
+# Stop 56: the blind reviewer's oscillating slotted lever of stop 56, in English, a 45 N·m resistance moment, dynamics
+SLOTTED_LEVER_EN56 = """
+# review56 (b): an oscillating slotted-lever (кулісний) four-link mechanism, in English: the crank O1A
+# carries a block A sliding in the slot of the lever O2E that swings about O2 below it (a loom's beater /
+# a feed pawl's lever). I(0-1) -> II(2-3) RPR; crank counter-clockwise; a resistance moment of 45 N·m on
+# the lever's working (slow) swing, masses by length plus the block's own, and [dynamics].
+title = "Кулісний механізм з коливною кулісою"
+title_en = "Oscillating slotted-lever mechanism of a beater"
+designation = "TMM.CW.56.300"
+lang = "en"
+
+[sheet]
+student = "Reviewer R."
+teacher = "Teacher T."
+group = "MB-56"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O2 = [0, 0]
+O1 = [0, 0.15]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 100
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "O2E"
+mass = 1.5
+
+[[link]]
+name = "O2E"
+number = 3
+joints = ["O2"]
+length = 0.32
+points = { E = 1.0, S3 = 0.5 }
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 8]
+force_phi_deg = 60
+output = "O2E"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = 3
+magnitude = 45
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.03
+efficiency = 0.9
+synchronous_rpm = 1500
+"""
+
+# Stop 56: the blind reviewer's translating knife-edge cam of stop 56: e = 6 mm, given R0 = 48 mm, cam clockwise, trapezoidal/cosine
+KNIFE_CAM56 = """
+# review56 (c): a translating KNIFE-EDGE follower with a given offset e = 6 mm and a given base radius, the
+# cam turning CLOCKWISE; trapezoidal-acceleration rise of 110°, far dwell 40°, cosine return 90°,
+# near dwell 120°; [ϑ] 30° on the rise and 35° on the return; 10 divisions.
+title = "Кулачковий механізм з поступальним загостреним штовхачем (рецензія 56)"
+title_en = "Disc cam with an offset translating knife-edge follower (review 56)"
+designation = "ТММ.КМ.56.500"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = 0.006
+roller_radius = 0
+phases_deg = { rise = 110, dwell_far = 40, return = 90, dwell_near = 120 }
+laws = { rise = "trapezoidal", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 200
+direction = "cw"
+base_radius = 0.048
+divisions = 10
+"""
+
+# Stop 56: the blind reviewer's 13/22 pair with given shifts and a type-A train with given teeth 18/27/72 (stop 56)
+GEARS_REVIEW56 = """
+# review56 (d): a pair 13/22 with GIVEN shifts x1 = 0.35, x2 = 0.25, m = 4 mm, and a one-row planetary train
+# of type A with GIVEN teeth 18/27/72 (u1H = 5), K = 3 planets, 1440 rpm.
+title = "Зубчаста передача 13/22 із заданими зміщеннями і однорядний планетарний редуктор (рецензія 56)"
+title_en = "A gear pair 13/22 with given shifts and a one-row planetary reducer (review 56)"
+designation = "ТММ.ЗП.56.600"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[gears]
+z = [13, 22]
+module = 0.004
+shifts = [0.35, 0.25]
+
+[planetary]
+type = "A"
+z = [18, 27, 72]
+planets = 3
+module = 0.003
+rpm = 1440
+"""
