@@ -32,9 +32,15 @@ def lettering(svg: str) -> list[str]:
 @pytest.mark.parametrize("cam, lang", [
     pytest.param(lambda: load(ROOT / "examples" / "cam_translating.toml"), "uk", id="translating-uk"),
     pytest.param(lambda: build(ROCKING_CCW, "<rocking ccw>"), "en", id="rocking-ccw-en", marks=pytest.mark.slow)])
-def test_the_cam_sheet_reads_as_lettered(cam, lang):
+def test_the_cam_sheet_reads_as_lettered(cam, lang, request):
     from inkcheck import overprinted
-    sheet = build_cam_sheet(cam(), form("A1"), SheetOptions(lang=lang, sheet="cam"))
+    if request.node.callspec.id == "translating-uk":
+        # the example's: the gallery's shared sheet (a cam alone is numbered 1 of 1: its SVG is this
+        # builder's, byte for byte — stop 56 compared them), not composed a second time
+        from conftest import example_sheet
+        sheet = example_sheet("cam_translating", "cam", "A1", "uk")
+    else:
+        sheet = build_cam_sheet(cam(), form("A1"), SheetOptions(lang=lang, sheet="cam"))
     svg = sheet.svg()
     words = lettering(svg)
     assert len(words) > 200

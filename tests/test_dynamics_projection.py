@@ -13,7 +13,9 @@ from conftest import example
 TOL = 0.1      # mm
 
 
-@pytest.fixture(scope="module", params=[("shaper", "uk"), ("slotter", "en")])
+# the slotter in English: slow (its English dynamics sheet, 7 s of CPU, no other test of the default run
+# composes; the default run draws the same projections on the shaper's Ukrainian sheet)
+@pytest.fixture(scope="module", params=[("shaper", "uk"), pytest.param(("slotter", "en"), marks=pytest.mark.slow)])
 def sheet(request):
     from dataclasses import replace
 

@@ -38,7 +38,9 @@ def sheet(request):
 
     def build():
         st = _study(request.param)
-        p, nat, dr = sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces"))
+        # the plan shared with test_lever_hodographs (the same scene, format and options: one search)
+        p, nat, dr = shared(f"force plan A1 0.5 {request.param}",
+                            lambda: sf.plan(st, form("A1"), SheetOptions(precision=0.5, sheet="forces")))
         return {"st": st, "fp": dr.groups_fp(p.mu), "drawings": dr.drawings(p.mu, "uk"),
                 "tables": sf._tables(dr, p.mu, "uk", p.tables), "name": request.param}
     return shared(f"test_forces_sheet.sheet[{request.param}]", build)

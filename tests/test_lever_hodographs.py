@@ -43,7 +43,9 @@ def planned(request):
     def build():
         st = _study(request.param)
         f = form("A1")
-        p, nat, dr = sf.plan(st, f, SheetOptions(precision=0.5, sheet="forces"))
+        # the plan shared with test_forces_sheet (the same scene, format and options: one search)
+        p, nat, dr = shared(f"force plan A1 0.5 {request.param}",
+                            lambda: sf.plan(st, f, SheetOptions(precision=0.5, sheet="forces")))
         return {"name": request.param, "st": st, "f": f, "plan": p, "nat": nat, "dr": dr,
                 "drawings": dr.drawings(p.mu, "uk")}
     return shared(f"test_lever_hodographs.planned[{request.param}]", build)

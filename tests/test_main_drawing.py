@@ -30,7 +30,9 @@ def study_of(name: str):
     return scene_study(getattr(review_scenes, name)) if name.isupper() else example(name)
 
 
-@pytest.mark.parametrize("name", ["COULISSE", "OFFSET_SLIDER", "crank_slider"])
+# the offset press and the crank-slider: slow (the same rule; the default run keeps the coulisse, the
+# most demanding: its plan takes the most of the three)
+@pytest.mark.parametrize("name", ["COULISSE"] + [pytest.param(n, marks=pytest.mark.slow) for n in ("OFFSET_SLIDER", "crank_slider")])
 def test_the_position_plan_is_the_a1_sheets_main_drawing(name):
     """On A1 the position plan's lines span at least ``ZONE_SHARE`` of the field's height (the μl
     that draws it so is computed here from the plan's own extent), its crank at least ``CRANK_MM``,

@@ -355,7 +355,8 @@ def test_each_motor_runs_at_its_poles_synchronous_speed():
         assert all(a["inertia"] <= b["inertia"] for a, b in zip(line, line[1:]))
 
 
-@pytest.mark.parametrize("sync", [1000, 750])
+# the 750 rpm line: slow (the same rule on another line of the catalogue, the slotter's dynamics again: 5 s)
+@pytest.mark.parametrize("sync", [1000, pytest.param(750, marks=pytest.mark.slow)])
 def test_a_scene_asking_1000_or_750_rpm_gets_the_next_size_up(tmp_path, capsys, sync):
     """Seed 003's rule on the new lines: the smallest motor of the line whose power is at least
     P = max M*_c·ω1/η (found here by scanning the catalogue file)."""

@@ -311,7 +311,8 @@ def test_every_command_takes_lang():
         assert p.get_default("lang") is None                # one default for all: the scene's, else uk
 
 
-@pytest.mark.parametrize("scene", ["shaper", "slotter"])
+# the shaper: slow (the same words; the default run keeps the slotter, the longer of the two runs)
+@pytest.mark.parametrize("scene", [pytest.param("shaper", marks=pytest.mark.slow), "slotter"])
 def test_ukrainian_output_of_dynamics(capsys, scene):
     """The dynamics' tables in Ukrainian (decimal comma, Ukrainian units), and Ukrainian by default."""
     path = ROOT / "examples" / f"{scene}.toml"
