@@ -6743,3 +6743,128 @@ planets = 3
 module = 0.003
 rpm = 1440
 """
+
+
+# kin56's (stop 56): review 55's Stephenson III six-bar feeder, whose English kinematics sheet lettered «n₄» 1.6 mm
+# over «n₂, a» in position 9's acceleration plan (read as one word without the font: labels.APART 2.0 mm)
+KIN56_STEPHENSON = '''# review55 (b): a Stephenson III six-bar of a feeder: crank-rocker four-bar O1ABO2 whose coupler plate
+# ABC carries C off the line AB; C drives the rod CD to the output rocker O3D (I(0-1) -> II(2-3) RRR ->
+# II(4-5) RRR); the crank turns clockwise; a resistance moment on the output rocker's working swing.
+title = "Шестиланковий механізм подавача з шатунною точкою і коромислом"
+title_en = "Stephenson six-bar feeder: a coupler point driving an output rocker"
+designation = "TMM.CP.78.000"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-78"
+organisation = "NUBiP of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, -0.05]
+O3 = [0.05, 0.38]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 180
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "ABC"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+shape = { C = [0.14, 0.10] }
+points = { S2 = [0.14, 0.035] }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.26
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.18
+points = { S5 = 0.5 }
+
+[positions]
+count = 12
+start = "working"
+accel = [3, 9]
+force_phi_deg = 150
+output = "O3D"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = 5
+magnitude = 45
+stroke = "working"
+direction = "oppose"
+'''
+
+# kin56's own (stop 56): a windscreen-wiper crank-rocker four-bar, the rocker's arm O2C swinging 71.7°
+KIN56_WIPER = '''# Stop 56 (kin56's own): a windscreen-wiper drive — a crank-rocker four-bar O1ABO2 (Grashof, the crank
+# the shortest link) whose rocker O2B swings the wiper arm O2C; a motor crank at 60 rpm, counter-clockwise.
+title = "Чотириланковий механізм привода склоочисника"
+title_en = "Windscreen-wiper four-bar drive"
+designation = "ТММ.КП.56.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.16, 0.06]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.04
+rpm = 60
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.15
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.07
+points = { C = -1.5, S3 = 0.0 }
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 8]
+output = "O2B"
+'''
