@@ -6868,3 +6868,167 @@ start = "working"
 accel = [2, 8]
 output = "O2B"
 '''
+
+
+# frc56: the lead's stop-56 six-bar (a crank-rocker whose rocker point C drives a rod CD and a slider D on a guide at 30°), on which the hodographs' numbers were checked
+FRC56_PUSHER = '''# Stop 56 (the lead's check): a six-bar whose crank-rocker four-bar O1ABO2 swings, through the rocker's
+# point C, a connecting rod CD and a slider D on a guide INCLINED at 30° (a charging conveyor's pusher):
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП; the crank turns clockwise; a pushing resistance on the slider.
+title = "Шестиланковий механізм штовхача з похилою напрямною"
+title_en = "Six-bar pusher drive with an inclined guide"
+designation = "ТММ.КП.56.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.25, 0.0]
+
+[frame.guides]
+slide = { through = [0.45, 0.05], angle_deg = 30, title_uk = "штовхача", title_en = "of the pusher" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.15
+points = { C = 0.7, S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "slide"
+mass = 15
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 100
+output = "D"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 2000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.8
+synchronous_rpm = 1500
+'''
+
+# frc56: own textbook mechanism — a two-plunger pump (central crank-slider, its rod's midpoint C driving a rod CD and a vertical plunger D); forces sheet judged at φ = 60°, M_зр 48.038 N·m checked by virtual power
+FRC56_PUMP = '''# frc56's own: a two-plunger pump — a central crank-slider O1AB with a horizontal plunger B, whose
+# connecting rod's point C drives a rod CD and a second, vertical plunger D (I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП)
+title = "Двоплунжерний насос з кривошипно-повзунним приводом"
+title_en = "Two-plunger pump with a crank-slider drive"
+designation = "ТММ.КП.56.001"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+horiz = { through = [0.0, 0.0], angle_deg = 0, title_uk = "плунжера 3", title_en = "of plunger 3" }
+vert = { through = [0.12, 0.0], angle_deg = 90, title_uk = "плунжера 5", title_en = "of plunger 5" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 200
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.20
+points = { S2 = 0.35, C = 0.5 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "horiz"
+mass = 4
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.15
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "vert"
+mass = 3
+
+[positions]
+count = 12
+start = "working"
+force_phi_deg = 60
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 800
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "D"
+magnitude = 400
+stroke = "working"
+direction = "oppose"
+'''

@@ -6,14 +6,14 @@ from __future__ import annotations
 import io
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from graphplan.util.markup import plain
 from graphplan.util.words import force_symbol, num, unit, word
-from graphplan.drawing.labels import NUMBERS_APART, place_labels
+from graphplan.drawing.labels import NUMBERS_APART, place_beside, place_labels
 from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
@@ -498,7 +498,34 @@ def _numbered(rec: Record, points: list[tuple[int, complex]], step: str, centre:
     place_labels(rec, numbers)      # each position's number by its point, clear of the curve and the
                                     # other numbers (on a leader where its point is crowded)
     _lead_far(rec, n, numbers, step)
+    # … and one still past LEAD_FROM_MM of its point with no leader (``_lead_far``'s would pass by
+    # another number or cross a line) set again as a diagram's number (labels.place_beside: beside
+    # its own point within LEAD_FROM_MM and nearer it than any other point, else on a leader that
+    # says whose it is) — review55 #14: the beam pump's R34 "4" 6 mm from its point, its leader
+    # passing by "3"
+    stray = [req for req in numbers if _stray(rec.items[n:], req)]
+    if stray:
+        spots = [w for _, _, w in _clusters(points)]
+        rec.items[n:] = [q for q in rec.items[n:] if not (q.kind == "text" and any(q.text == r.text for r in stray))]
+        for req in stray:
+            place_beside(rec, [replace(req, rivals=tuple(z for z in spots if abs(z - req.at) > 1e-9))],
+                         beside=LEAD_FROM_MM)
     return shared
+
+
+def _stray(added: list, req: LabelRequest) -> bool:
+    """Whether a position's number (``req``) the placer set among ``added`` stands past
+    ``LEAD_FROM_MM`` of its point with no leader from it."""
+    from graphplan.drawing.labels import _box_gap
+    q = next((q for q in added if q.kind == "text" and q.text == req.text), None)
+    if q is None:
+        return False
+    box = q.ink()
+    if _box_gap(box, req.at) <= LEAD_FROM_MM + 1e-9:
+        return False
+    return not any(q2.kind == "segment" and q2.role == "label"
+                   and min(abs(complex(*e) - req.at) for e in q2.points) < 1.3
+                   and min(_box_gap(box, complex(*e)) for e in q2.points) < 1.5 for q2 in added)
 
 
 LEAD_FROM_MM = 2.5   # a number standing farther than this from its point gets a leader to it
