@@ -61,7 +61,7 @@ WORDS = {
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
                         "±{bp} % від ε_α",
            "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
-                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
+                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення (r_1, a_w, r_3 відкладені з округленням лінійки, відрізки прочитані в межах половини точності): ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "own_pole": "Відрізок ω_H на плані з полюсом p_ω був би {s} мм (ω_H = ω_1/{u}): водило має свій полюс p'_ω "
                        "на продовженні h, h_H = {hH} мм, його відрізок {sH} мм; ω_H = відрізок·μ'_ω, "
@@ -113,7 +113,7 @@ WORDS = {
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
                         "±{bp} % of ε_α",
            "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
-                    "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
+                    "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision (r_1, a_w, r_3 laid off as the ruler rounds them, the segments read within half the precision): ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "own_pole": "The segment of ω_H off the pole p_ω would be {s} mm (ω_H = ω_1/{u}): the carrier has a pole "
                        "p'_ω of its own on h produced, h_H = {hH} mm, its segment {sH} mm; ω_H = segment·μ'_ω, "
