@@ -97,3 +97,41 @@ def test_the_field_check_reads_a_turned_number_where_it_is_drawn():
     # turned a quarter counter-clockwise about (30, 100), read upward: the line's x = 10 … ≈17 stands at
     # y = 120 … ≈113 (its start lowest), the glyphs' height (baseline y = 100, ink above) at x ≈ 26.5 … 30
     assert 25.0 < x0 < x1 < 30.5 and 110.0 < y0 < y1 < 120.5
+
+
+def test_a_broken_cell_takes_two_lines_in_a_taller_row_inside_its_rules():
+    """The shared table builder with a cell broken onto two lines: that row one line pitch taller, both
+    lines inside the cell's rules and one pitch apart; the rows of one-line cells as tall as before."""
+    from graphplan.drawing.tables import table
+    from graphplan.graphic.record import line_pitch
+    one = table([["a", "b"], ["x", "1,5"], ["y", "2,5"]], [20.0, 20.0], row_h=6.0, size=2.5)
+    two = table([["a", "b"], ["x", "first line\nsecond"], ["y", "2,5"]], [20.0, 20.0], row_h=6.0, size=2.5)
+    rules = lambda rec: sorted({round(q.points[0][1], 6) for q in rec.items      # noqa: E731
+                                if q.kind != "text" and q.points[0][1] == q.points[-1][1]})
+    assert rules(one) == [-18.0, -12.0, -6.0, 0.0]
+    assert rules(two) == [-18.0 - line_pitch(2.5), -12.0 - line_pitch(2.5), -6.0, 0.0]
+    texts = {q.text: q.points[0][1] for q in two.items if q.kind == "text"}
+    assert texts["first line"] - texts["second"] == pytest.approx(line_pitch(2.5))
+    assert -12.0 - line_pitch(2.5) < texts["second"] < texts["first line"] + 2.5 < -6.0
+    assert [q.text for q in one.items if q.kind == "text"] == ["a", "b", "x", "1,5", "y", "2,5"]
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_narrow_table_3_is_under_141_mm_and_says_the_same(lang):
+    """Table 3 with its long values broken (a set's): at most 141 mm at the sets' 1.4 × (beside the
+    smallest pictures on an A3 field, LEFT55), every line within its column, and the same words as the
+    one-line table (a formula broken at «=» repeats the sign on the new line)."""
+    from graphplan.drawing.tables import enlarged
+    from graphplan.report.gears import gears_json
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import construct_on, train_table
+    g, sol = _scene(GEARS56, "s56")
+    mesh, vel, _ = construct_on(sol, form("A3"), 0.5, lang)
+    doc = gears_json(sol, mesh, vel, "")
+    wide, narrow = train_table(doc, lang), enlarged(train_table(doc, lang, narrow=True))
+    x0, _, x1, _ = narrow.bounds()
+    assert x1 - x0 <= 141.0
+    words = lambda rec: [q.text for q in rec.items if q.kind == "text"]          # noqa: E731
+    joined = " ".join(words(narrow)).replace("= = ", "= ").replace(":  ", ": ")
+    assert joined == " ".join(words(wide))
+    assert any("=" == q.text.split()[0] for q in narrow.items if q.kind == "text")   # «= 1407: …»
