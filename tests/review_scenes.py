@@ -7032,3 +7032,55 @@ magnitude = 400
 stroke = "working"
 direction = "oppose"
 '''
+
+
+# gears56: the lead's stop-56 check — a pair 10/31 "auto" (a 10-tooth pinion shifted against undercut),
+# m = 5 mm, and a two-row type-B train chosen for u1H = 11, K = 3, 960 rpm
+GEARS56 = '''title = "Зубчаста передача 10/31 і дворядний планетарний редуктор (перевірка 56)"
+title_en = "A gear pair 10/31 and a two-row planetary reducer (check 56)"
+designation = "ТММ.ЗП.56.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[gears]
+z = [10, 31]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 11
+planets = 3
+module = 0.0025
+rpm = 960
+'''
+
+
+# gears56's own: a textbook reducer stage — a pair 13/27 "auto", m = 6 mm, and a one-row type-A train
+# for u1H = 5,6 with K = 4 planets (the neighbourhood tight: 36,77 > 35), 1440 rpm
+GEARS_OWN56 = '''title = "Зубчаста передача 13/27 і однорядний планетарний редуктор (власна перевірка 56)"
+title_en = "A gear pair 13/27 and a one-row planetary reducer (own check 56)"
+designation = "ТММ.ЗП.56.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[gears]
+z = [13, 27]
+module = 0.006
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.6
+planets = 4
+module = 0.003
+rpm = 1440
+'''

@@ -248,11 +248,15 @@ def eps_worst(sol, mu, p):
 
 
 def ratio_worst(tr, vel, p):
+    """Every corner of the heights r1, aw, r3 off by what the drawing laid off (``vel.heights`` against
+    the radii at μl: the ruler's rounding, none on a mark) and of the segments s1, sH read at ± p/2."""
     rad = tr.radii
     base = [rad["1"] / vel.mu_l, rad["H"] / vel.mu_l, rad["3"] / vel.mu_l]
+    off = [abs(vel.heights[k] - b) for k, b in zip(("A", "O2", "C"), base)]
+    assert all(d <= p / 2 + 1e-9 for d in off)                  # the ruler rounds each within p/2
     worst = 0.0
     for signs in itertools.product((-1, 1), repeat=5):
-        yA, yO2, yC = (v + s * p / 2 for v, s in zip(base, signs))
+        yA, yO2, yC = (v + s * d for v, s, d in zip(base, signs, off))
         s1 = vel.h * vel.va_mm / yA
         sH = vel.h * vel.va_mm * (yC - yO2) / ((yC - yA) * yO2)
         worst = max(worst, abs((s1 + signs[3] * p / 2) / (sH + signs[4] * p / 2) - tr.ratio))

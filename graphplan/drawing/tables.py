@@ -49,9 +49,13 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
     are right-aligned and text centred, or each column as ``align`` says ("start", "middle",
     "end"). A column is widened to its widest cell: the lettering keeps its height (never under
     2.5 mm) and stays in its cell, clear of the rules. ``span``: the columns widened in proportion to
-    that width where they are narrower (a table across the column of the sheet it stands in)."""
+    that width where they are narrower (a table across the column of the sheet it stands in).
+    A cell may hold lines broken as a drafter breaks a long value or header («\\n» between them): its
+    row grows by a line pitch for each line past the first, its lines centred in the row one under
+    another; a table of one-line cells is ruled as before."""
     rec = Record(title)
-    widths = [max(w, max((text_width(row[c], size) for row in rows if c < len(row) and row[c]),
+    lines_of = lambda cell: cell.split("\n")                      # noqa: E731
+    widths = [max(w, max((text_width(q, size) for row in rows if c < len(row) and row[c] for q in lines_of(row[c])),
                          default=0.0) + 2 * PAD + 0.5) for c, w in enumerate(widths)]
     if span is not None and span > sum(widths):
         widths = [w * span / sum(widths) for w in widths]
@@ -64,24 +68,37 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         for k, line in enumerate(lines):
             rec.label((0.0, 2.2 + line_pitch(3.5) * (len(lines) - 1 - k)), line, size=3.5, layer="tables")
     n = len(rows)
+    pitch = line_pitch(size)
+    heights = [row_h + pitch * (max((len(lines_of(c)) for c in row if c), default=1) - 1) for row in rows]
+    tops = [top]
+    for h_ in heights:
+        tops.append(tops[-1] - h_)
     for k in range(n + 1):
-        y = top - k * row_h
+        y = tops[k]
         rec.segment((0.0, y), (x_edges[-1], y), role="table", layer="tables",
                     width=THICK if k in (0, header, n) else THIN)
     for k, x in enumerate(x_edges):
-        rec.segment((x, top), (x, top - n * row_h), role="table", layer="tables",
+        rec.segment((x, top), (x, tops[n]), role="table", layer="tables",
                     width=THICK if k in (0, len(x_edges) - 1) else THIN)
     for r, row in enumerate(rows):
-        y_row = top - (r + 1) * row_h + (row_h - size) / 2 + 0.15 * size
+        y_row = tops[r + 1] + (row_h - size) / 2 + 0.15 * size
         # one baseline a row: the lowest any of its cells needs (a raised prime's cell lowers its row)
-        y = min((baseline_in_row(cell, size, y_row, top - r * row_h, row_h) for cell in row if cell), default=y_row)
+        y = min((baseline_in_row(q, size, y_row, tops[r] - (len(lines_of(cell)) - 1) * 0.0, row_h)
+                 for cell in row if cell for q in lines_of(cell)[:1]), default=y_row)
         for c, cell in enumerate(row):
             if not cell:
                 continue
-            how = "middle" if r < header else (align[c] if align else ("end" if _is_number(cell) else "middle"))
+            parts = lines_of(cell)
+            how = "middle" if r < header else (align[c] if align else ("end" if _is_number(parts[-1]) else "middle"))
             x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
                  "end": x_edges[c + 1] - PAD - 0.3}[how]
-            rec.label((x, y), cell, size=size, anchor=how, layer="tables")
+            if len(parts) == 1 and heights[r] == row_h:
+                rec.label((x, y), cell, size=size, anchor=how, layer="tables")
+                continue
+            # lines one pitch apart, the block centred in the row (the one-line cell's place shifted)
+            first = y + (heights[r] - row_h) / 2 + pitch * (len(parts) - 1) / 2
+            for k, q in enumerate(parts):
+                rec.label((x, first - k * pitch), q, size=size, anchor=how, layer="tables")
     return rec
 
 

@@ -1062,33 +1062,39 @@ def _mu_omega_label(rec: Record, pl: Placer, pole: complex, left: float, right: 
 
 def ratio_bound(tr: TrainSolution, mu: float, h: float, va: float, precision: float,
                 h_carrier: float | None = None) -> float:
-    """The bound of |u1H(graphical) − u1H| (absolute, u1H has no unit) from the drafting precision p:
-    the heights yA = r1, yO2 = aw, yC = r3 laid off and the segments s1, sH read, each within p/2
-    (drawing mm), through u1H = s1/sH with s1 = h·vA/yA, sH = h·vA·(yC − yO2)/((yC − yA)·yO2)
-    (vA and h cancel).
+    """The bound of |u1H(graphical) − u1H| (absolute, u1H has no unit) from the drafting precision p,
+    through u1H = s1/sH with s1 = h·vA/yA, sH = h·vA·(yC − yO2)/((yC − yA)·yO2) (vA and h cancel):
 
-    First order: (p/2)·u·[1/s1 + 1/sH + 1/yA + 1/(yC − yA) + 1/yO2 + 1/(yC − yO2)
-    + |1/(yC − yA) − 1/(yC − yO2)|]; the margin: the formula at every corner of the five lengths at
-    ± p/2 (monotone in each, so the worst corner is the worst case to every order); the larger of
-    the two is stated.
+    - the heights yA = r1, yO2 = aw, yC = r3 laid off at μl from the computed radii, each off by what
+      the ruler's rounding made of it, |lay_off(y) − y| (at most p/2; none where the radius falls on a
+      mark of the ruler — stop 56: GEARS_OWN55's r1, aw, r3 are 17, 81 and 101 mm at 1:1, laid off
+      exactly, yet the bound took p/2 on each and stated ±6,7 % where the reading was +0,55 %);
+    - the segments s1, sH read off the plan, each within p/2 (where the reading falls is not known).
+
+    First order: Σ δy·|∂u/∂y| over the heights (∂ln u/∂yA = −1/yA − 1/(yC − yA), ∂ln u/∂yO2 = 1/yO2
+    + 1/(yC − yO2), ∂ln u/∂yC = 1/(yC − yA) − 1/(yC − yO2)) + (p/2)·u·(1/s1 + 1/sH); the margin: u at
+    every corner of the lengths at ± their bounds (monotone in each, so the worst corner is the worst
+    case to every order); the larger of the two is stated.
     ``h_carrier``: the carrier's ray from its own pole (``construct_train``): sH = h_H·vA·(…), u1H =
-    (s1/h)/(sH/h_H), and h, h_H — no longer cancelling — laid off within p/2 too: + 1/h + 1/h_H."""
+    (s1/h)/(sH/h_H), and h, h_H — no longer cancelling — laid off too, each off by its rounding."""
     rad = tr.radii
     yA, yO2, yC = rad["1"] / mu, rad["H"] / mu, rad["3"] / mu
     u = tr.ratio
     hH = h_carrier or h
     s1 = h * va / yA
     sH = hH / h * s1 / u
-    terms = (1 / s1 + 1 / sH + 1 / yA + 1 / (yC - yA) + 1 / yO2 + 1 / (yC - yO2)
-             + abs(1 / (yC - yA) - 1 / (yC - yO2)) + ((1 / h + 1 / hH) if h_carrier else 0.0))
     hp = precision / 2
-    first = hp * u * terms
+    off = lambda y: abs(lay_off(y, precision) - y)               # noqa: E731   a laid-off length's rounding
+    dA, dO, dC = off(yA), off(yO2), off(yC)
+    dh, dhH = (off(h), off(hH)) if h_carrier else (0.0, 0.0)
+    first = u * (dA * (1 / yA + 1 / (yC - yA)) + dO * (1 / yO2 + 1 / (yC - yO2))
+                 + dC * abs(1 / (yC - yA) - 1 / (yC - yO2)) + hp * (1 / s1 + 1 / sH) + dh / h + dhH / hH)
     worst = 0.0
-    for sg in itertools.product((-hp, hp), repeat=7 if h_carrier else 5):
-        a, o, c = yA + sg[0], yO2 + sg[1], yC + sg[2]
-        k1, kH = (h + sg[5], hH + sg[6]) if h_carrier else (h, h)       # the pole distances as laid off
-        g1 = k1 * va / a + sg[3]
-        gH = kH * va * (c - o) / ((c - a) * o) + sg[4]
+    for sg in itertools.product((-1.0, 1.0), repeat=7):
+        a, o, c = yA + sg[0] * dA, yO2 + sg[1] * dO, yC + sg[2] * dC
+        k1, kH = h + sg[5] * dh, hH + sg[6] * dhH                   # the pole distances as laid off
+        g1 = k1 * va / a + sg[3] * hp
+        gH = kH * va * (c - o) / ((c - a) * o) + sg[4] * hp
         if min(a, o - a, c - o, g1, gH) <= 0:
             return math.inf                 # the precision as coarse as the drawing: no bound
         worst = max(worst, abs((g1 / h) / (gH / hH) - u))

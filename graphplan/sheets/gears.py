@@ -61,7 +61,7 @@ WORDS = {
                         "B_{{1}}B_{{2}} — кожне в межах половини точності): ±{b} абсолютна (ε_α без одиниці), "
                         "±{bp} % від ε_α",
            "train": "Планетарна передача: u_{{1H}} = {u} (за Віллісом); масштаби μ_l = {l} м/мм, "
-                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення: ±{b} "
+                    "μ_v = {v} (м/с)/мм, полюсна відстань h = {h} мм; межа похибки u_{{1H}} від точності креслення (r_1, a_w, r_3 відкладені з округленням лінійки, відрізки прочитані в межах половини точності): ±{b} "
                     "(абсолютна, u_{{1H}} без одиниці; ±{bp} % від u_{{1H}})",
            "own_pole": "Відрізок ω_H на плані з полюсом p_ω був би {s} мм (ω_H = ω_1/{u}): водило має свій полюс p'_ω "
                        "на продовженні h, h_H = {hH} мм, його відрізок {sH} мм; ω_H = відрізок·μ'_ω, "
@@ -113,7 +113,7 @@ WORDS = {
                         "B_{{1}}B_{{2}} read, each within half the precision): ±{b} absolute (ε_α has no unit), "
                         "±{bp} % of ε_α",
            "train": "Planetary train: u_{{1H}} = {u} (Willis); scales μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, "
-                    "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision: ±{b} (absolute, "
+                    "pole distance h = {h} mm; bound of the error of u_{{1H}} from the drafting precision (r_1, a_w, r_3 laid off as the ruler rounds them, the segments read within half the precision): ±{b} (absolute, "
                     "u_{{1H}} has no unit; ±{bp} % of u_{{1H}})",
            "own_pole": "The segment of ω_H off the pole p_ω would be {s} mm (ω_H = ω_1/{u}): the carrier has a pole "
                        "p'_ω of its own on h produced, h_H = {hH} mm, its segment {sH} mm; ω_H = segment·μ'_ω, "
@@ -225,7 +225,39 @@ def quality_table(doc: dict, lang: str) -> Record:
     return table(rows, [50.0, 24.0, 24.0, 24.0], row_h=6.0, size=2.5, title=w["t2"])
 
 
-def train_table(doc: dict, lang: str) -> Record:
+NARROW_CELL = 32.0   # mm at 2,5-mm letters: a value cell of the narrow Table 3 broken onto two lines past this
+
+
+def broken(cell: str, room: float = NARROW_CELL, size: float = 2.5) -> str:
+    """A value cell broken as a drafter breaks it onto two lines where it is wider than ``room``: a
+    condition before its verdict («18 + 45 = 85 − 22:» / «викон.»), else a formula at its last «=»,
+    the sign repeated on the new line («(18·22 + 45·85)/3 =» / «= 1407: викон.»), else a list after the
+    comma nearest its middle («z₁ = 18, z₂ = 45,» / «z′₂ = 22, z₃ = 85»); the cell as it was where no
+    break makes both lines fit."""
+    if text_width(cell, size) <= room:
+        return cell
+    tries = []
+    head, sep, tail = cell.rpartition(": ")
+    if sep:
+        tries.append((head + ":", tail))
+    head, sep, tail = cell.rpartition(" = ")
+    if sep:
+        tries.append((head + " =", "= " + tail))
+    commas = [k for k in range(len(cell)) if cell.startswith(", ", k)]
+    for k in sorted(commas, key=lambda k: abs(k - len(cell) / 2)):
+        tries.append((cell[:k + 1], cell[k + 2:]))
+    for a, b in tries:
+        if text_width(a, size) <= room and text_width(b, size) <= room:
+            return a + "\n" + b
+    return cell
+
+
+def train_table(doc: dict, lang: str, narrow: bool = False) -> Record:
+    """Table 3: the teeth, u1H (exact, read, δ) and the wanted u1H, ω1, ω2, ωH, the conditions with
+    their numbers. ``narrow``: its long values broken onto two lines (``broken``): 133–135 mm wide at
+    the sets' 3,5-mm letters, not 177–182 (stop 56). Not yet taken by a set: GEARS55's A3 still ends
+    with Table 3 alone with it — its third sheet holds the pictures (≥ 234 mm wide) and the pair's notes
+    across the field, leaving no 135 × 134-mm place (measured; the pictures would have to shrink)."""
     w = WORDS[lang]
     t = doc["planetary"]
     ok = lambda b: w["ok"] if b else w["fail"]                            # noqa: E731
@@ -261,7 +293,15 @@ def train_table(doc: dict, lang: str) -> Record:
     room = max(text_width(rows[1][1], 2.5), TITLE / TABLES - (34.0 + 20.0 + 14.0) - 3.0)
     for key, name in (("coaxial", "coax"), ("assembly", "asm"), ("neighbourhood", "nb"), ("no_undercut", "nu")):
         cell = f"{shown[key]}: {ok(c[key])}" if key in shown else ok(c[key])
-        rows.append([w[name], cell if text_width(cell, 2.5) <= room else ok(c[key]), "", ""])
+        if narrow:
+            cell = broken(cell)
+            rows.append([w[name], cell if max(text_width(q, 2.5) for q in cell.split("\n")) <= NARROW_CELL
+                         else ok(c[key]), "", ""])
+        else:
+            rows.append([w[name], cell if text_width(cell, 2.5) <= room else ok(c[key]), "", ""])
+    if narrow:
+        rows[1][1] = broken(rows[1][1])
+        return table(_pct_cells(rows, lang), [24.0, 30.0, 14.0, 10.0], row_h=6.0, size=2.5, title=w["t3"])
     return table(_pct_cells(rows, lang), [34.0, 40.0, 20.0, 14.0], row_h=6.0, size=2.5, title=w["t3"])
 
 
