@@ -160,11 +160,26 @@ def test_the_tangents_and_kl_follow_from_the_exact_flywheel(six):
     assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_T) <= f.precision
 
 
-def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(six, cycle):
+@pytest.fixture(scope="module")
+def six_given():
+    """LINK50 with the scene giving the motor the rule chose until stop 56, 4АМ71А4 (0,55 kW: the 1500-rpm
+    line then began there); the rule now picks 4АА56А4 (0,12 kW), whose softer, lighter run needs a
+    flywheel (δ_дв 0,079 > 0,05 alone) — the path "the motor alone keeps δ" is kept on the given motor."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import redrawn
+    from graphplan.report.dynamics import dynamics_json
+    text = LINK50.replace("[dynamics]\n", '[dynamics]\nmotor = "4АМ71А4"\n', 1)
+    dyn = analyse(scene_study(text), None)
+    f = redrawn(dyn, None, 0.5, L=330.0, size=1.15)
+    return dyn, f, dynamics_json(f)
+
+
+def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(six_given, cycle):
     """ω(φ) with the flywheel: (ω_max − ω_min)/ω_m = 0.05, (ω_max + ω_min)/2 = πn/30; with the
     motor alone (its rotor I·i² the only addition, its line M = i·η·(A·i·ω + B) at the crank) the
     periodic motion integrated here has δ_дв = 0.0156 < 0.05: Table 2's last row, the note under it
     and the notes' motor sentence all say no flywheel, and the ω(φ) legend prints the same δ_дв."""
+    six = six_given
     from graphplan.report.dynamics import design_note, motor_note
     from graphplan.drawing.flywheel import speed_record
     from graphplan.sheets.dynamics import flywheel_table, motor_table
