@@ -7084,3 +7084,157 @@ planets = 4
 module = 0.003
 rpm = 1440
 '''
+
+
+# dyn56's own check (stop 56): the textbook frame saw — an upright centred crank-slider whose saw frame (150 kg) cuts on
+# its stroke down and is lifted against its weight; 1000-rpm motor, δ = 1/30. Its dynamics sheet (A1) is sent back:
+# J = 267.7 kg·m² ≫ I*_m ≤ 19.5, so the energy–mass diagram's tangents stand at 78° and |kl| = 211.5 mm runs far
+# below a small curve; a 197 × 433 mm blank beside the band (report_dyn56.md).
+SAW_DYN56 = '''title = "Кривошипно-повзунний механізм лісопильної рами"
+title_en = "Crank-slider mechanism of a frame saw"
+designation = "ТММ.КП.56.300"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+frame = { through = [0, 0], angle_deg = 90, title_uk = "пильної рамки", title_en = "of the saw frame" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.3
+rpm = 200
+direction = "ccw"
+points = { S1 = 0.0 }
+mass = 40
+inertia = 0.6
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 1.5
+points = { S2 = 0.4 }
+mass = 60
+inertia = 11.25
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "frame"
+mass = 150
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "max"
+working_stroke = "to_min"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+
+[[force]]
+point = "B"
+magnitude = 2000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.0333
+efficiency = 0.85
+synchronous_rpm = 1000
+'''
+
+# dyn56 (stop 56): the lead's LINK56 (/work/lead/s56/link56.toml) as dyn56 checked its dynamics sheet — a six-bar
+# pusher with a 30° guide; I*_m, M*_c, ΔT, the flywheel (16.016 kg·m²) and the motor's steady state (ω_m = 13.027,
+# δ = 0.0392) equal an independent integration of the equation of motion (dyn56-scratch/indep56.py).
+LINK_DYN56 = '''title = "Шестиланковий механізм штовхача з похилою напрямною"
+title_en = "Six-bar pusher drive with an inclined guide"
+designation = "ТММ.КП.56.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.25, 0.0]
+
+[frame.guides]
+slide = { through = [0.45, 0.05], angle_deg = 30, title_uk = "штовхача", title_en = "of the pusher" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.15
+points = { C = 0.7, S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "slide"
+mass = 15
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 100
+output = "D"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 2000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.8
+synchronous_rpm = 1500
+'''

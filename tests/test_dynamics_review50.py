@@ -160,11 +160,26 @@ def test_the_tangents_and_kl_follow_from_the_exact_flywheel(six):
     assert abs(abs(f.kl) - J * W1 ** 2 * DELTA / f.mu_T) <= f.precision
 
 
-def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(six, cycle):
+@pytest.fixture(scope="module")
+def six_given():
+    """LINK50 with the scene giving the motor the rule chose until stop 56, 4АМ71А4 (0,55 kW: the 1500-rpm
+    line then began there); the rule now picks 4АА56А4 (0,12 kW), whose softer, lighter run needs a
+    flywheel (δ_дв 0,079 > 0,05 alone) — the path "the motor alone keeps δ" is kept on the given motor."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import redrawn
+    from graphplan.report.dynamics import dynamics_json
+    text = LINK50.replace("[dynamics]\n", '[dynamics]\nmotor = "4АМ71А4"\n', 1)
+    dyn = analyse(scene_study(text), None)
+    f = redrawn(dyn, None, 0.5, L=330.0, size=1.15)
+    return dyn, f, dynamics_json(f)
+
+
+def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(six_given, cycle):
     """ω(φ) with the flywheel: (ω_max − ω_min)/ω_m = 0.05, (ω_max + ω_min)/2 = πn/30; with the
     motor alone (its rotor I·i² the only addition, its line M = i·η·(A·i·ω + B) at the crank) the
     periodic motion integrated here has δ_дв = 0.0156 < 0.05: Table 2's last row, the note under it
     and the notes' motor sentence all say no flywheel, and the ω(φ) legend prints the same δ_дв."""
+    six = six_given
     from graphplan.report.dynamics import design_note, motor_note
     from graphplan.drawing.flywheel import speed_record
     from graphplan.sheets.dynamics import flywheel_table, motor_table
@@ -223,10 +238,12 @@ def test_the_speed_extremes_give_delta_and_the_motor_holds_its_own_delta_alone(s
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
-def test_the_motor_is_the_lines_smallest_and_the_note_says_so(six, cycle, lang):
-    """P = M*_c max·ω1/η (the closed form's peak, 94.1 W) is far under the 1500-rpm line's smallest
-    motor of the catalogue (4АМ71А4, 0,55 kW): the rule picks it, and the motor's sentence says it
-    is the catalogue's smallest — a teacher asks why a motor six times the power otherwise."""
+def test_the_motor_is_the_next_size_up_and_the_note_says_so_only_when_smallest(six, cycle, lang):
+    """P = M*_c max·ω1/η (the closed form's peak, 94.1 W): the rule takes the 1500-rpm line's next size up.
+    Until stop 56 the catalogue began at 0,55 kW (4АМ71А4, six times the power asked: the note called it
+    the catalogue's smallest); the line now runs down to the series' smallest, 4АА50А4 (0,06 kW), so the
+    rule's motor is 4АА56А4 (0,12 kW) and the note says nothing about the smallest. The same sentence
+    with the motor marked the line's smallest and oversized says it (a teacher asks why so large)."""
     from graphplan.model.motors import catalogue
     from graphplan.report.dynamics import motor_note
     from graphplan.util.markup import plain
@@ -236,8 +253,11 @@ def test_the_motor_is_the_lines_smallest_and_the_note_says_so(six, cycle, lang):
     m = doc["motor"]
     assert m["power_needed_kW"] == pytest.approx(need, rel=1e-3)
     line = sorted((c.power_kW, c.name) for c in catalogue() if c.rpm_sync == 1500)
-    assert m["name"] == line[0][1] and line[0][0] > 2 * need
+    assert m["name"] == next(name for p, name in line if p >= need) == "4АА56А4"
     said = plain(motor_note(doc, lang)).replace("\u00a0", " ")
+    assert "найменший" not in said and "smallest" not in said, said
+    big = {**doc, "motor": {**m, "name": "4АМ71А4", "power_kW": 0.55, "smallest": True}}
+    said = plain(motor_note(big, lang)).replace("\u00a0", " ")
     assert re.search(r"найменший у каталозі на 1500 об/хв" if lang == "uk" else
                      r"the catalogue's smallest at 1500 rpm", said), said
 

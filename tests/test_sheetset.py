@@ -342,12 +342,13 @@ def _catalogue() -> list[dict]:
 
 def test_each_motor_runs_at_its_poles_synchronous_speed():
     """A 4А name ends in its number of poles 2p: n_c = 60·50/p (3000, 1500, 1000, 750 rpm); the
-    rated speed lies a slip of 1–11 % below it; within a line, more power on a larger rotor."""
+    rated speed lies a slip of 1–12 % below it (the 4АА63А6: 11,5 %); within a line, more power on a larger
+    rotor."""
     lines: dict[float, list[dict]] = {}
     for m in _catalogue():
         poles = int(m["name"][-1])
         assert m["rpm_sync"] == 6000 / poles, m["name"]
-        assert 0.01 <= 1 - m["rpm_rated"] / m["rpm_sync"] <= 0.11, m["name"]
+        assert 0.01 <= 1 - m["rpm_rated"] / m["rpm_sync"] <= 0.12, m["name"]
         lines.setdefault(m["rpm_sync"], []).append(m)
     assert set(lines) == {3000, 1500, 1000, 750}
     for line in lines.values():

@@ -9,7 +9,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from graphplan.drawing.flywheel import (achieved, energy_projected, inertia_turned, moments_least, turned_length,
+from graphplan.drawing.flywheel import (BREAK_CLEAR, achieved, energy_projected, inertia_turned, moments_least, turned_length,
                                        moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
                                        PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
@@ -390,6 +390,19 @@ def _caption_apart(energy: Record, witt: Record) -> Record:
                                  for p in energy.items], dict(energy.scales))
 
 
+# mm: the energy–mass diagram's lettering keeps this far above the foot, where the turned I*(φ)'s
+# projections end — a projection broken under a value (drawing.flywheel.BREAK_CLEAR) must not run on up to
+# 0.4 mm under it from the drawing below (the shaper's «2,5», «10,0», stop 56), plus the line's half width
+FOOT_CLEAR = BREAK_CLEAR + 0.2
+
+
+def lettering_foot(witt: Record, side: float) -> float:
+    """The lowest ink of the energy–mass diagram's lettering right of its side (where the turned I*(φ)'s
+    vertical projections come up to the foot); +inf where none."""
+    inks = [p.ink() for p in witt.items if p.kind == "text" and p.text.strip()]
+    return min((b[1] for b in inks if b[2] > side), default=float("inf"))
+
+
 def band(f: Flywheel, lang: str, length: float,
          energy_length: float | None = None) -> tuple[dict[str, Record], dict[str, tuple]]:
     """The textbook's elimination of φ (REFERENCE §9): ΔT(φ) to the left of the energy–mass
@@ -422,9 +435,10 @@ def band(f: Flywheel, lang: str, length: float,
         witt = _caption(wittenbauer_record(f, lang, projections=(side, foot)), w["wittenbauer"], above=True,
                         left=side)
         wx0, wy0, _, _ = witt.bounds()
-        if (wx0 >= side - 1e-9 and wy0 >= foot - 1e-9) or attempt == 5:
+        low = lettering_foot(witt, side)
+        if (wx0 >= side - 1e-9 and wy0 >= foot - 1e-9 and low >= foot + FOOT_CLEAR - 1e-9) or attempt == 5:
             break
-        side, foot = min(side, wx0 - 1.0), min(foot, wy0 - 1.0)
+        side, foot = min(side, wx0 - 1.0), min(foot, wy0 - 1.0, low - FOOT_CLEAR)
     energy = _caption_apart(energy, witt)
     ex0, ey0, _, ey1 = energy.bounds()
     dy = foot - 3.0 - turned.bounds()[3]
