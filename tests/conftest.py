@@ -195,12 +195,22 @@ THINNED = {
 }
 
 
+# The tests measured costliest, left to the slow suite so that the default run keeps within the
+# brief's three minutes on two cores (``tests/costly.py`` picks them from a log of each test's cost;
+# every module keeps its cheapest test in the default run).
+COSTLY = frozenset((Path(__file__).with_name("costly.txt")).read_text(encoding="utf-8").split())
+
+
 @pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(config, items):
-    """``THINNED``: the cases past those the default run keeps are marked slow (before ``-m``)."""
+    """``THINNED``: the cases past those the default run keeps are marked slow (before ``-m``);
+    ``COSTLY``: the measured costliest tests are slow."""
     from collections import Counter
     seen: Counter = Counter()
     for item in items:
+        if item.nodeid in COSTLY:
+            item.add_marker(pytest.mark.slow)
+            continue
         keep = THINNED.get(getattr(item, "originalname", item.name))
         if keep is None:
             continue
