@@ -7238,3 +7238,57 @@ delta = 0.04
 efficiency = 0.8
 synchronous_rpm = 1500
 '''
+
+
+CAM56 = '''# Stop 56 (the lead's check, cam56's look): a ROCKING roller follower, the cam counter-clockwise, a parabolic
+# rise of 120° into a far dwell of 30°, a cycloidal return of 110°, a near dwell of 100°, 9 divisions
+# (/work/lead/s56/cam56.toml).
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 56)"
+title_en = "Cam with a rocking roller follower (check 56)"
+designation = "ТММ.КМ.56.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 24
+arm = 0.11
+centre_distance = 0.14
+roller_radius = 0.009
+phases_deg = { rise = 120, dwell_far = 30, return = 110, dwell_near = 100 }
+laws = { rise = "parabolic", return = "cycloidal" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "ccw"
+divisions = 9
+'''
+
+OWN_CAM56 = '''# Stop 56 (cam56's own look): the textbook's symmetric cam — a CENTRAL translating roller follower (e = 0),
+# the cam clockwise, a cosine rise of 120°, a far dwell of 60°, a cosine return of 120°, a near dwell of
+# 60°, 8 divisions.
+title = "Кулачковий механізм з центральним роликовим штовхачем (власний 56)"
+title_en = "Cam with a central translating roller follower (own 56)"
+designation = "ТММ.КМ.56.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = 0
+roller_radius = 0.008
+phases_deg = { rise = 120, dwell_far = 60, return = 120, dwell_near = 60 }
+laws = { rise = "cosine", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 30 }
+rpm = 120
+direction = "cw"
+divisions = 8
+'''

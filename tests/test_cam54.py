@@ -12,6 +12,7 @@ import tomllib
 import numpy as np
 import pytest
 
+from camfixtures import cam_fixture
 from graphplan.model.cam import build
 from review_scenes import CAM52, CAM54
 
@@ -67,15 +68,7 @@ def _brute_R0() -> float:
     return hi
 
 
-@pytest.fixture(scope="module")
-def cam54():
-    from graphplan.exact.cam import solve
-    from graphplan.graphic.cam import construct
-    from graphplan.report.cam import cam_json
-    cam = build(tomllib.loads(CAM54), "<cam54>")
-    sol = solve(cam)
-    g = construct(sol, 10, 0.5)
-    return cam, sol, g, cam_json(sol, g, "")
+cam54 = cam_fixture("cam54", CAM54, 10)
 
 
 def test_cam54_base_radius_phase_maxima_and_curvature_by_brute_force(cam54):

@@ -15,6 +15,7 @@ import tomllib
 import numpy as np
 import pytest
 
+from camfixtures import cam_fixture
 from graphplan.model.cam import build
 from review_scenes import CAM55, OWN_CAM55
 
@@ -147,15 +148,7 @@ def _brute_R0(x: float) -> float:
     return hi
 
 
-@pytest.fixture(scope="module")
-def cam55():
-    from graphplan.exact.cam import solve
-    from graphplan.graphic.cam import construct
-    from graphplan.report.cam import cam_json
-    cam = build(tomllib.loads(CAM55), "<cam55>")
-    sol = solve(cam)
-    g = construct(sol, 8, 0.5)
-    return cam, sol, g, cam_json(sol, g, "")
+cam55 = cam_fixture("cam55", CAM55, 8)
 
 
 @pytest.mark.slow

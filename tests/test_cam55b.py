@@ -98,7 +98,7 @@ def test_the_notes_line(lang, tmp_path_factory):
     rigid = f"φ = {num(r)}°, {num(t)}°"
     soft = f"φ = 0°, {num(rise / 2)}°"
     if lang == "uk":
-        assert line == f"Удари: жорсткі (стрибок ds/dφ) при {rigid}; нежорсткі (стрибок d^{{2}}s/dφ^{{2}}) при {soft}"
+        assert line == f"Удари: жорсткі (стрибок ds/dφ) при {rigid}; м’які (стрибок d^{{2}}s/dφ^{{2}}) при {soft}"
     else:
         assert line == f"Shocks: rigid (a jump of ds/dφ) at {rigid}; soft (a jump of d^{{2}}s/dφ^{{2}}) at {soft}"
     assert ("ds/dφ) " + ("при " if lang == "uk" else "at ") + rigid) in cam_table(doc, lang, "T")

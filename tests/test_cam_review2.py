@@ -85,7 +85,8 @@ def test_table_1_gives_ds_dphi_per_radian_and_the_scales_their_own_names(cam_tr)
         # the notes: each a sentence with a capital, the two largest pressure angles to one digit count
         assert all(x[0].isupper() or not x[0].isalpha() for x in lines), [x[:12] for x in lines]
         angles = next(x for x in lines if "[ϑ]" in x)
-        found = re.findall(r"([0-9]+[.,]([0-9]+))°", angles.split("(")[0])
+        # (each angle followed by the turn it falls at, stop 56: the angles read after the phases' names)
+        found = re.findall(r"(?:підйом|опускання|rise|return) [−-]?([0-9]+[.,]([0-9]+))°", angles)
         assert len(found) == 2 and len({len(d) for _, d in found}) == 1, angles
         th = doc["pressure_angle_max_deg"]
         for (text, _), v in zip(found, (th["rise"], th["return"])):

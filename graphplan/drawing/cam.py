@@ -776,6 +776,14 @@ def _hatch_region(rec: Record, bounds: list[tuple[complex, complex, complex]], O
             rec.segment(_pt(p), _pt(p + out), role="hatch", layer=LAYER, step=f"region {j}")
 
 
+CORNER_MARK = 0.8      # mm: the radius of the ring that marks a corner of the centre profile
+
+
+def corner_name(j: int) -> str:
+    """The letter of the centre profile's j-th corner (from 1, by φ), on the profile and in the notes."""
+    return f"K_{j}"
+
+
 def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     """The profile by inversion at μ_l: the base circle and R_0, the follower's axis at each division
     turned against ω (numbered 0…N as in the table), the drawn s laid off, the centre profile through
@@ -826,6 +834,13 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
             # at every second one the envelope was drawn past circles never constructed)
             rec.circle(_pt(q), cam.roller / mu, role="construction", layer=LAYER, step=f"roller {k}")
     rec.point((0.0, 0.0), role="pole", layer=LAYER, step="O")
+    # the centre profile's corners (the notes' K_1, K_2, …: ds/dφ jumps there) marked and lettered where
+    # they are, inside the cam by the point (stop 56: named in the notes, not found on the profile)
+    for j, c in enumerate(sorted(corners, key=lambda c: c.phi_deg), 1):
+        q = complex(sol.at(np.array([c.phi_deg]))["P"][0]) / mu
+        rec.circle(_pt(q), CORNER_MARK, role="link", layer=LAYER, step=f"corner {j}")
+        labels.append(LabelRequest(q, corner_name(j), toward=-q / abs(q) if abs(q) else 1j, size=TEXT,
+                                   breaks=True))
     _follower(rec, sol, g, pts[0], labels, clear=outer + ARC_OUT + 1.5, lang=lang)
     _phase_arcs(rec, sol, g, feet, rays, outer, lang, labels)
     # R_0 drawn in the widest sector free of rays, O and ω in the sector opposite the follower

@@ -263,6 +263,14 @@ def phase_extremes(cam: Cam, g: Geometry) -> tuple[float, float]:
     """Each active phase's pressure angle of largest magnitude (deg), signed as Table 1 signs ϑ: the
     0.05° grid's largest |ϑ|, refined by a bounded search between its neighbours (the divisions'
     values may lie below it)."""
+    (_, rise), (_, ret) = phase_extreme_points(cam, g)
+    return rise, ret
+
+
+def phase_extreme_points(cam: Cam, g: Geometry) -> tuple[tuple[float, float], tuple[float, float]]:
+    """``phase_extremes`` with where each falls: ((φ°, ϑ°) of the rise, (φ°, ϑ°) of the return). A
+    rocking follower's largest |ϑ| may fall at a phase's end, where the arm still rests (stop 56: the
+    rise's −27,04° at φ = 0°): the notes say where."""
     from scipy.optimize import minimize_scalar
     grid = _grid(cam)
     out = []
@@ -272,13 +280,13 @@ def phase_extremes(cam: Cam, g: Geometry) -> tuple[float, float]:
         th = np.abs(signed)
         j = int(np.argmax(th))
         lo, hi = sel[max(j - 1, 0)], sel[min(j + 1, len(sel) - 1)]
-        best = float(signed[j])
+        best, at = float(signed[j]), float(sel[j])
         if hi > lo:
             r = minimize_scalar(lambda x: -abs(float(profile(cam, g, np.array([x]))["theta"][0])),
                                 bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
             if -float(r.fun) > abs(best):
-                best = float(profile(cam, g, np.array([float(r.x)]))["theta"][0])
-        out.append(best)
+                best, at = float(profile(cam, g, np.array([float(r.x)]))["theta"][0]), float(r.x)
+        out.append((at, best))
     return out[0], out[1]
 
 
@@ -442,8 +450,13 @@ class Solution:
 
     def pressure_extremes(self) -> tuple[float, float]:
         """Each active phase's pressure angle of largest magnitude, signed (phase_extremes), once."""
+        (_, rise), (_, ret) = self.pressure_extreme_points()
+        return rise, ret
+
+    def pressure_extreme_points(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """(φ°, ϑ°) of each active phase's largest |ϑ| (phase_extreme_points), once."""
         if "extremes" not in self.cache:
-            self.cache["extremes"] = phase_extremes(self.cam, self.geometry)
+            self.cache["extremes"] = phase_extreme_points(self.cam, self.geometry)
         return self.cache["extremes"]
 
     def at(self, phi_deg: Array, phase: Array | None = None) -> dict[str, Array]:

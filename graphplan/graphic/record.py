@@ -346,6 +346,8 @@ def kern(prev: str, c: str, size: float) -> float:
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
     advances)."""
+    if APOSTROPHE in (prev, c) and prev.isalpha() != c.isalpha():
+        return _apostrophe_kern(prev, c, size)
     if prev and c in UNDER and prev in BARRED:
         m = _metrics()
         bar, ink = m["boxes"][prev], m["boxes"].get(c)
@@ -363,6 +365,29 @@ def kern(prev: str, c: str, size: float) -> float:
         return 0.0
     gap = (adv - box[2] + cb[0]) * e
     return 0.0 if gap >= ENOUGH else APART - gap
+
+
+APOSTROPHE = "\u2019"   # the Ukrainian apostrophe (м’які, п’ять): set close to its letters …
+APOSTROPHE_GAP = 0.03    # ems: … its ink this far across from a small letter's on either side. osifont's
+#  side bearings (0.13 em from м's ink, 0.08 em to я's) left it, high above the x-height, 1.3 mm across the
+#  diagonal from both at 4.7-mm letters: a reader's eye (and overprint.py's 0.8-mm closing) took it for
+#  a mark of its own inside the word's box (stop 55 lettered «нежорсткі» instead; stop 56: tucked in —
+#  at 0.05 em it still stood apart at 10 of 75 placings on the 4-px/mm grid, at 0.04 and less at none)
+
+
+def _apostrophe_kern(prev: str, c: str, size: float) -> float:
+    """``kern`` of an apostrophe after a letter or of a letter after it: tucked in (negative) until the
+    two inks stand APOSTROPHE_GAP apart across — where the letter's ink stays under the apostrophe's
+    (a small letter; a capital or an ascender's top would meet it: left as set)."""
+    m = _metrics()
+    a, b = m["boxes"].get(prev), m["boxes"].get(c)
+    if a is None or b is None:
+        return 0.0
+    mark, letter = (b, a) if c == APOSTROPHE else (a, b)
+    if letter[3] >= mark[1]:
+        return 0.0
+    gap = m["advance"].get(prev, m["missing"]) - a[2] + b[0]
+    return -max(gap - APOSTROPHE_GAP, 0.0) * em(size)
 
 
 TUCKED = "PРГТT7F"   # letters whose right side is open below a bar or bowl at half height or more

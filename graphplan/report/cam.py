@@ -10,7 +10,7 @@ import numpy as np
 from graphplan.exact.cam import Solution
 from graphplan.graphic.cam import SHORT_DIVISIONS, CamConstruction, division_numbers, errors_pct, read
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.drawing.cam import scale_text, symbols
+from graphplan.drawing.cam import corner_name, scale_text, symbols
 from graphplan.util.markup import plain
 from graphplan.util.words import column_decimals, fixed, num
 
@@ -70,6 +70,8 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         "base_radius_error_pct": None if not math.isfinite(g.R0_min) else 100.0 * (g.R0_min - sol.R0_min) / sol.R0_min,
         "pressure_angle_max_deg": dict(zip(("rise", "return"), sol.pressure_maxima())),
         "pressure_angle_extreme_deg": dict(zip(("rise", "return"), sol.pressure_extremes())),
+        # where each phase's largest |ϑ| falls (stop 56: a rocking arm's rise has it at φ = 0°, where it rests)
+        "pressure_angle_extreme_phi_deg": dict(zip(("rise", "return"), (p for p, _ in sol.pressure_extreme_points()))),
         "curvature_min_m": _f(sol.curvature_min()),
         "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
                              "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
@@ -116,14 +118,15 @@ WORDS = {
            "offset_auto": "; e обрано так, щоб R_0 був найменшим",
            "central": " (центральний штовхач: його вісь проходить через O)",
            "side": ("праворуч", "ліворуч"), "effect": ("зменшує", "збільшує"), "other": ("збільшує", "зменшує"), "arm": "коромисло l = {l} мм, a = {a} мм, ψ_0 = {p}°",
-           "angles": "найбільший кут тиску на фазі: підйом {r}°, опускання {t}° (допустимо [ϑ] = {ar}°, {at}°)",
+           "angles": "найбільший кут тиску на фазі: підйом {r}, опускання {t} (допустимо [ϑ] = {ar}°, {at}°)",
+           "angle_at": "{a}° при φ = {p}°", "angle_end": ("на початку фази", "в кінці фази"),
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "smooth": "на гладких ділянках",
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
-           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "corner": "{n} при φ = {p}° ({a} → {b} {u}; {k})",
            "shocks": "удари: {l}", "no_shocks": "ударів немає ({v}, {a} неперервні)",
-           "shock": {"rigid": "жорсткі (стрибок {v}) при φ = {p}", "soft": "нежорсткі (стрибок {a}) при φ = {p}"},
+           "shock": {"rigid": "жорсткі (стрибок {v}) при φ = {p}", "soft": "м’які (стрибок {a}) при φ = {p}"},
            "convex": "опуклий: на робочому профілі гостре ребро, ролик перекочується через нього, його центр "
                      "іде дугою радіуса r навколо ребра, зрізаючи злам",
            "concave": "угнутий: робочий профіль тут — дуга радіуса r навколо зламу",
@@ -167,12 +170,13 @@ WORDS = {
            "offset_auto": "; e chosen for the smallest R_0",
            "central": " (a central follower: its axis passes through O)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "other": ("raising", "lowering"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
-           "angles": "largest pressure angle over the phase: rise {r}°, return {t}° (allowed [ϑ] = {ar}°, {at}°)",
+           "angles": "largest pressure angle over the phase: rise {r}, return {t} (allowed [ϑ] = {ar}°, {at}°)",
+           "angle_at": "{a}° at φ = {p}°", "angle_end": ("the phase's start", "the phase's end"),
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
-           "corner": "φ = {p}° ({a} → {b} {u}; {k})",
+           "corner": "{n} at φ = {p}° ({a} → {b} {u}; {k})",
            "shocks": "shocks: {l}", "no_shocks": "no shocks ({v}, {a} continuous)",
            "shock": {"rigid": "rigid (a jump of {v}) at φ = {p}", "soft": "soft (a jump of {a}) at φ = {p}"},
            "convex": "convex: a sharp edge on the working profile, which the roller rolls over, its centre "
@@ -342,6 +346,12 @@ def jumps(out: dict[str, list[str]], doc: dict[str, Any], lang: str, decimals: i
                 out[c][j] = f"{a} → {b}"
 
 
+def _tenth(x: float, lang: str) -> str:
+    """An angle to 0.1°, a whole one without its ",0" (φ = 0°, not 0,0°)."""
+    t = fixed(round(x, 1), lang, 1).replace("-", "−")
+    return t[:-2] if t[-2:] in (",0", ".0") else t
+
+
 def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     """The data, the base radius exact and measured, the largest pressure angles, ρ_min, the scales
     and the closing of s, in the lab's notation (markup: the sheet's notes typeset it)."""
@@ -372,7 +382,21 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                     r=n(doc["base_radius_m"] * 1000)))
     ang = lambda x: fixed(x, lang, 2).replace("-", "−")       # noqa: E731  both to 0.01°, signed as Table 1
     top = doc.get("pressure_angle_extreme_deg") or doc["pressure_angle_max_deg"]
-    lines.append(w["angles"].format(r=ang(top["rise"]), t=ang(top["return"]),
+    where = doc.get("pressure_angle_extreme_phi_deg")
+
+    def at(k: str, first: float, length: float) -> str:
+        """The phase's largest ϑ with the φ it falls at and, at an end, which (stop 56: the rocking
+        arm's rise printed −27,04° with nothing saying it is the start, where the arm still rests)."""
+        if where is None:
+            return ang(top[k]) + "°"
+        p = where[k]
+        said = w["angle_at"].format(a=ang(top[k]), p=_tenth(p, lang))
+        ends = [abs(p - first) < 1e-3, abs(p - first - length) < 1e-3]
+        if any(ends):
+            said += " (" + w["angle_end"][ends.index(True)] + ")"
+        return said
+    ph = doc["phases_deg"]
+    lines.append(w["angles"].format(r=at("rise", 0.0, ph["rise"]), t=at("return", ph["rise"] + ph["dwell_far"], ph["return"]),
                                     ar=n(doc["pressure_angle_allowed_deg"]["rise"]),
                                     at=n(doc["pressure_angle_allowed_deg"]["return"])))
     dwell = doc.get("dwell_pressure_angle_deg") or {}
@@ -403,10 +427,11 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     k = 1.0 if rocking else 1000.0
     unit = ("°/рад" if lang == "uk" else "°/rad") if rocking else ("мм/рад" if lang == "uk" else "mm/rad")
     if corners:
-        each = [w["corner"].format(p=n(cn["phi_deg"]), a=n(cn["ds_dphi_before" + key] * k),
+        order = sorted(range(len(corners)), key=lambda j: corners[j]["phi_deg"])
+        each = [w["corner"].format(n=corner_name(order.index(j) + 1), p=n(cn["phi_deg"]), a=n(cn["ds_dphi_before" + key] * k),
                                    b=n(cn["ds_dphi_after" + key] * k), u=unit,
                                    k=w["sharp" if not roller else "convex" if cn["convex"] else "concave"])
-                for cn in corners]
+                for j, cn in enumerate(corners)]
         lines.append(w["corners"].format(v=q["v"], c=", ".join(each)))
     sc = doc["scales"]
     mu = {k: scale_text(k, sc[f"{k}_mm" if k != "mu_phi" else "mu_phi_rad_mm"] if k != "mu_l" else sc["mu_l_m_mm"],
