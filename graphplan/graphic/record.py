@@ -338,6 +338,26 @@ def script_space(level: int, text: str, size: float) -> float:
     return SCRIPT_SPACE * (2.0 if level == 1 and text[0] in LOW else 1.0) * em(size)
 
 
+SIGNS = "+=±×"
+SIGN_GAP = 0.04     # ems: the least paper between a sign's ink and a letter's beside it, in either font
+
+
+def sign_gap(prev: str, c: str) -> float:
+    """Extra space (ems) between a sign (+ = ± ×) and a letter it touches (no blank between), so
+    that a viewer without our font keeps ``SIGN_GAP`` of paper between their ink: DejaVu Sans (the
+    fallback, ``FALLBACK``) draws these signs 0.63 em wide where osifont advances 0.47 em, and each
+    letter stands at osifont's x (drawing.svg) — "+5", "=–0,23" ran into each other there. Viewers
+    such as cairosvg letter with the family list's first name only, so no second font can help:
+    the space is kept in both; osifont's own gap grows by as much (0.25 em after "+" before "5")."""
+    if not (prev in SIGNS or c in SIGNS) or not prev.strip() or not c.strip():
+        return 0.0
+    m, fb = _metrics(), _fallback()
+    left, right = fb.get(c), fb.get(prev)
+    if left is None or right is None:
+        return 0.0
+    return max(0.0, SIGN_GAP - (m["advance"].get(prev, m["missing"]) - right[2] + left[0]))
+
+
 @lru_cache(maxsize=65536)
 def kern(prev: str, c: str, size: float) -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
@@ -345,7 +365,9 @@ def kern(prev: str, c: str, size: float) -> float:
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
-    advances)."""
+    advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it."""
+    if prev in SIGNS or c in SIGNS:
+        return sign_gap(prev, c) * em(size)
     if prev and c in UNDER and prev in BARRED:
         m = _metrics()
         bar, ink = m["boxes"][prev], m["boxes"].get(c)
