@@ -10,6 +10,7 @@ import warnings
 from pathlib import Path
 from urllib.parse import unquote
 
+import numpy as np
 import pytest
 
 from review_scenes import MISC56
@@ -49,7 +50,7 @@ def test_the_default_assembly_is_the_one_the_sheet_draws_without_branch(client, 
     assert said[0]["branch"] == {keys[0]: 1}
     plus = text + "\n[branch]\n" + "".join(f"{k} = 1\n" for k in keys)
     minus = text + "\n[branch]\n" + "".join(f"{k} = {-1 if i == 0 else 1}\n" for i, k in enumerate(keys))
-    at = lambda s: complex(scene_study(s).solve(30.0).point(keys[0])[0])      # noqa: E731
+    at = lambda s: complex(np.ravel(scene_study(s).solve(30.0).point(keys[0])[0])[0])      # noqa: E731
     assert abs(at(text) - at(plus)) < 1e-12 and abs(at(text) - at(minus)) > 1e-3
     en = _captions(r.content)
     assert en[0].endswith("(the default)") and "default" not in en[1]
