@@ -344,18 +344,25 @@ SIGN_GAP = 0.04     # ems: the least paper between a sign's ink and a letter's b
 
 def sign_gap(prev: str, c: str) -> float:
     """Extra space (ems) between a sign (+ = ± ×) and a letter it touches (no blank between), so
-    that a viewer without our font keeps ``SIGN_GAP`` of paper between their ink: DejaVu Sans (the
-    fallback, ``FALLBACK``) draws these signs 0.63 em wide where osifont advances 0.47 em, and each
-    letter stands at osifont's x (drawing.svg) — "+5", "=–0,23" ran into each other there. Viewers
-    such as cairosvg letter with the family list's first name only, so no second font can help:
-    the space is kept in both; osifont's own gap grows by as much (0.25 em after "+" before "5")."""
+    that a viewer without our font keeps ``SIGN_GAP`` of paper between their ink. Such a sign is
+    drawn centred on its osifont advance (drawing.svg): osifont's glyph exactly where its advance
+    puts it, DejaVu Sans' (the fallback, ``FALLBACK``: 0.63 em wide on osifont's 0.47 em advance,
+    symmetric in its own advance) overhanging it by 0.08 em each side — where, set from the same
+    start, it ran 0.27 em into the next letter ("+5", "=–0,23")."""
     if not (prev in SIGNS or c in SIGNS) or not prev.strip() or not c.strip():
         return 0.0
     m, fb = _metrics(), _fallback()
-    left, right = fb.get(c), fb.get(prev)
-    if left is None or right is None:
+    if fb.get(c) is None or fb.get(prev) is None:
         return 0.0
-    return max(0.0, SIGN_GAP - (m["advance"].get(prev, m["missing"]) - right[2] + left[0]))
+    adv = m["advance"].get(prev, m["missing"])
+
+    def ink(ch: str) -> tuple[float, float]:       # its fallback ink from its osifont slot's start
+        box = fb[ch]
+        if ch not in SIGNS:
+            return box[0], box[2]
+        half, mid = (box[2] - box[0]) / 2, m["advance"].get(ch, m["missing"]) / 2
+        return mid - half, mid + half
+    return max(0.0, SIGN_GAP - (adv - ink(prev)[1] + ink(c)[0]))
 
 
 @lru_cache(maxsize=65536)
