@@ -7292,3 +7292,88 @@ rpm = 120
 direction = "cw"
 divisions = 8
 '''
+
+
+# misc56: the lead's stop-56 six-bar (/work/lead/s56/link56.toml): a crank-rocker four-bar whose rocker point C
+# drives a rod CD and a slider D on a guide inclined at 30°, crank clockwise — the explorer and the page on it
+MISC56 = r"""
+# Stop 56 (the lead's check): a six-bar whose crank-rocker four-bar O1ABO2 swings, through the rocker's
+# point C, a connecting rod CD and a slider D on a guide INCLINED at 30° (a charging conveyor's pusher):
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП; the crank turns clockwise; a pushing resistance on the slider.
+title = "Шестиланковий механізм штовхача з похилою напрямною"
+title_en = "Six-bar pusher drive with an inclined guide"
+designation = "ТММ.КП.56.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-56"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.25, 0.0]
+
+[frame.guides]
+slide = { through = [0.45, 0.05], angle_deg = 30, title_uk = "штовхача", title_en = "of the pusher" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.15
+points = { C = 0.7, S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "slide"
+mass = 15
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 100
+output = "D"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 2000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.8
+synchronous_rpm = 1500
+"""

@@ -15,6 +15,10 @@ from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, e
 from graphplan.util.markup import SMALL, is_plain
 
 _MISSING = re.compile(f"([{MISSING}])")
+SIGNS = "+=±×"
+# a sign touching a letter (no blank beside it): painted by a text of its own centred on its advance,
+# unpainted in the lettering (drawing.svg's _signed_text, graphic.record.sign_gap)
+_SIGN = re.compile(r"(?<=\S)([+=±×])|([+=±×])(?=\S)")
 
 
 def reference_render(record: Record, width: float, height: float, title: str = "", text_as_paths: bool = False,
@@ -94,7 +98,7 @@ def _elements(dwg, prim: Primitive, h: float):
                  "stroke_width": _f(0.35)}
         yield dwg.circle(_xy(prim.points[0], h), _f(r), **style)
     elif k == "text":
-        yield _text(dwg, prim, h)
+        yield from _text(dwg, prim, h)
 
 
 
@@ -107,9 +111,28 @@ def _text(dwg, prim: Primitive, h: float):
         drawn = lettering(prim.text)
         x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
             plain_width(prim.text, prim.size)
-        el = dwg.text(_nbsp(drawn), x=[_xs(drawn, prim.size, x0) or _f(x0)], y=[_xy(prim.points[0], h)[1]],
+        y = _xy(prim.points[0], h)[1]
+        if _SIGN.search(drawn):
+            kept = _nbsp(drawn)
+            xs = _xs(drawn, prim.size, x0).split()
+            el = dwg.text("", x=[xs[0]], y=[y], font_size=_f(em(prim.size)), font_family=FONT,
+                          text_anchor="start", fill="black")
+            signs, start = [], 0
+            for i in (m.start() for m in _SIGN.finditer(kept)):
+                if i > start:
+                    el.add(dwg.tspan(kept[start:i], x=[" ".join(xs[start:i])]))
+                el.add(dwg.tspan(kept[i], x=[xs[i]], fill="none"))
+                left = x0 + plain_width(drawn[:i + 1], prim.size) - plain_width(drawn[i], prim.size)
+                signs.append(dwg.text(kept[i], x=[_f(left + plain_width(drawn[i], prim.size) / 2)], y=[y],
+                                      font_size=_f(em(prim.size)), font_family=FONT, text_anchor="middle",
+                                      fill="black"))
+                start = i + 1
+            if start < len(kept):
+                el.add(dwg.tspan(kept[start:], x=[" ".join(xs[start:])]))
+            return [el] + signs
+        el = dwg.text(_nbsp(drawn), x=[_xs(drawn, prim.size, x0) or _f(x0)], y=[y],
                       font_size=_f(em(prim.size)), font_family=FONT, text_anchor="start", fill="black")
-        return el
+        return [el]
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
     pieces, total = _set(prim.text, prim.size)
@@ -129,7 +152,7 @@ def _text(dwg, prim: Primitive, h: float):
         kw["x"] = [_xs(drawn, prim.size * SMALL if small else prim.size, x_start + x0)]
         el.add(dwg.tspan(_nbsp(drawn), **kw))
         shift = up
-    return el
+    return [el]
 
 
 def _xs(drawn: str, size: float, x0: float) -> str:

@@ -447,6 +447,9 @@ def test_the_page_replays_every_plan_in_textbook_order(driver, scene, tmp_path):
     path = tmp_path / f"{scene}.html"
     assert graphplan("view", str(ROOT / "examples" / f"{scene}.toml"), "-o", str(path), "--lang", "en").returncode == 0
     open_page(driver, path)
+    # the walk over every step of every plan is one script: selenium's 30-s default cut the slotter's
+    # (the most steps) at load 20 on two cores (stop 56's slow run); the walk, not its speed, is tested
+    driver.set_script_timeout(600)
     walked = driver.execute_script(REPLAY_WALK)
     records = page_data(path)["records"]
     assert len(walked) == len(records)

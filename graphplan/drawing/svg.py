@@ -11,11 +11,14 @@ import math
 import re
 from functools import lru_cache
 
-from graphplan.graphic.record import (LAYERS, DASHED_ROLES, Primitive, Record, em, kern, kerned, lettering,
-                                      plain_width, run_offsets, script_space, sub_kern, vector_arrow)
+from graphplan.graphic.record import (LAYERS, DASHED_ROLES, SIGNS, Primitive, Record, em, kern, kerned,
+                                      lettering, plain_width, run_offsets, script_space, sub_kern, vector_arrow)
 from graphplan.util.markup import SMALL, baseline_shift, is_plain, runs
 
 FONT = "osifont, 'DejaVu Sans', sans-serif"
+# a sign touching a letter (+5, =–0,23): drawn by a text of its own centred on its osifont advance
+# (graphic.record.sign_gap), the lettering's own copy of it unpainted (still read and searched)
+_SIGN = re.compile(f"(?<=[^\\s])([{re.escape(SIGNS)}])|([{re.escape(SIGNS)}])(?=[^\\s])")
 DASHES = {"dashdot": "12,3,1.5,3", "dashed": "4,2"}
 
 
@@ -213,7 +216,7 @@ def _turned_text(element: str, prim: Primitive, h: float) -> str:
     if not prim.turn:
         return element
     x, y = _xy(prim.points[0], h)
-    return element.replace("<text ", f'<text transform="rotate({_f(-prim.turn)} {x} {y})" ', 1)
+    return element.replace("<text ", f'<text transform="rotate({_f(-prim.turn)} {x} {y})" ')
 
 
 def _text(prim: Primitive, h: float, chars: list[str]) -> str:
@@ -233,9 +236,12 @@ def _text(prim: Primitive, h: float, chars: list[str]) -> str:
         x0 = prim.points[0][0] - {"start": 0.0, "middle": 0.5, "end": 1.0}[prim.anchor] * \
             plain_width(prim.text, prim.size)
         _, y = _xy(prim.points[0], h)
+        xs = glyph_xs(drawn, prim.size, x0)
+        if _SIGN.search(drawn):
+            return _signed_text(drawn, xs, prim.size, y)
         inner = _text_escape(_kept_spaces(drawn))
         head = (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(prim.size)}" '
-                f'text-anchor="start" x="{_xs_attr(glyph_xs(drawn, prim.size, x0)) or _f(x0)}" y="{y}"')
+                f'text-anchor="start" x="{_xs_attr(xs) or _f(x0)}" y="{y}"')
         return f"{head}>{inner}</text>" if inner else f"{head} />"
     # anchored at its start by the font's own advances: cairosvg (PDF, PNG) misplaces the <tspan>s
     # of a centred or right-aligned text
@@ -259,6 +265,28 @@ def _text(prim: Primitive, h: float, chars: list[str]) -> str:
         shift = up
     return _tag("text", {"x": x, "y": y, "font-size": _f(em(prim.size)), "font-family": FONT, "fill": "black"},
                 "".join(spans))
+
+
+def _signed_text(drawn: str, xs: list[float], size: float, y: str) -> str:
+    """A plain lettering with a sign touching a letter: the lettering in tspans at its letters' own
+    x, each such sign unpainted in it, and painted by a text of its own centred on its osifont
+    advance — with osifont exactly where it stood; in a viewer without it DejaVu Sans' wider sign
+    overhangs both sides alike, into the space ``kern`` keeps (graphic.record.sign_gap)."""
+    drawn = _kept_spaces(drawn)
+    advance, box = _advances_em()
+    spans, signs, start = [], [], 0
+    for i in (m.start() for m in _SIGN.finditer(drawn)):
+        if i > start:
+            spans.append(_tag("tspan", {"x": _xs_attr(xs[start:i])}, _text_escape(drawn[start:i])))
+        spans.append(_tag("tspan", {"fill": "none", "x": _f(xs[i])}, _text_escape(drawn[i])))
+        mid = xs[i] + em(size) * advance.get(drawn[i], box) / 2
+        signs.append(f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(size)}" '
+                     f'text-anchor="middle" x="{_f(mid)}" y="{y}">{_text_escape(drawn[i])}</text>')
+        start = i + 1
+    if start < len(drawn):
+        spans.append(_tag("tspan", {"x": _xs_attr(xs[start:])}, _text_escape(drawn[start:])))
+    return (f'<text fill="black" font-family="{_FONT_ATTR}" font-size="{_em_text(size)}" text-anchor="start" '
+            f'x="{_f(xs[0])}" y="{y}">' + "".join(spans) + "</text>" + "".join(signs))
 
 
 def placed(prim: Primitive) -> tuple[list[tuple[str, bool, float, float, float]], float]:

@@ -338,6 +338,33 @@ def script_space(level: int, text: str, size: float) -> float:
     return SCRIPT_SPACE * (2.0 if level == 1 and text[0] in LOW else 1.0) * em(size)
 
 
+SIGNS = "+=±×"
+SIGN_GAP = 0.04     # ems: the least paper between a sign's ink and a letter's beside it, in either font
+
+
+def sign_gap(prev: str, c: str) -> float:
+    """Extra space (ems) between a sign (+ = ± ×) and a letter it touches (no blank between), so
+    that a viewer without our font keeps ``SIGN_GAP`` of paper between their ink. Such a sign is
+    drawn centred on its osifont advance (drawing.svg): osifont's glyph exactly where its advance
+    puts it, DejaVu Sans' (the fallback, ``FALLBACK``: 0.63 em wide on osifont's 0.47 em advance,
+    symmetric in its own advance) overhanging it by 0.08 em each side — where, set from the same
+    start, it ran 0.27 em into the next letter ("+5", "=–0,23")."""
+    if not (prev in SIGNS or c in SIGNS) or not prev.strip() or not c.strip():
+        return 0.0
+    m, fb = _metrics(), _fallback()
+    if fb.get(c) is None or fb.get(prev) is None:
+        return 0.0
+    adv = m["advance"].get(prev, m["missing"])
+
+    def ink(ch: str) -> tuple[float, float]:       # its fallback ink from its osifont slot's start
+        box = fb[ch]
+        if ch not in SIGNS:
+            return box[0], box[2]
+        half, mid = (box[2] - box[0]) / 2, m["advance"].get(ch, m["missing"]) / 2
+        return mid - half, mid + half
+    return max(0.0, SIGN_GAP - (adv - ink(prev)[1] + ink(c)[0]))
+
+
 @lru_cache(maxsize=65536)
 def kern(prev: str, c: str, size: float) -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
@@ -345,9 +372,11 @@ def kern(prev: str, c: str, size: float) -> float:
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
-    advances)."""
+    advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it."""
     if APOSTROPHE in (prev, c) and prev.isalpha() != c.isalpha():
         return _apostrophe_kern(prev, c, size)
+    if prev in SIGNS or c in SIGNS:
+        return sign_gap(prev, c) * em(size)
     if prev and c in UNDER and prev in BARRED:
         m = _metrics()
         bar, ink = m["boxes"][prev], m["boxes"].get(c)

@@ -206,6 +206,8 @@ def table_rows(st: Study, plans: Plans, grid: dict[str, Any]) -> list[dict[str, 
         rows.append({"q": f"omega_{n}", "plan": "velocity", "source": "omega", "name": n, "unit": "rad/s",
                      "entry": f"omega_{n}"})
     for key, s in sorted(grid["slides"].items()):
+        if s["fixed"] and s["point"] in pts:
+            continue        # a slider on the frame's guide: its velocity is the point's own row (v_D twice)
         rows.append({"q": f"vrel_{key}", "plan": "velocity", "source": "slide_v", "name": key, "unit": "m/s",
                      "entry": s["point"] if s["fixed"] else None, "point": s["point"]})
     for p in pts:

@@ -320,6 +320,11 @@ class Replay:
         n, plan, cr = self.n, self.plan, self.n.mech.crank
         a = sub(cr.pin)
         v = self.value(cr.pin) or {"mm": {"uk": "—", "en": "—"}, "value": {"uk": "—", "en": "—"}}
+        e = plan.entries.get(cr.pin)
+        if e is not None and e.mm is not None:
+            # ω_1·l, ω_1²·l computed, as the scale's step wrote it (the plan's reading, 70,5 mm × μ,
+            # differs in the last figure: "ω_1^2·l_{O1A} = 9,473" beside a_A = 9,475 one step before)
+            v["value"] = {lang: num(e.analytic, lang) for lang in LANGS}
         units = both(lambda lang: unit(n.unit, lang))
         arm = f"{cr.pivot}{cr.pin}"
         said = {m.group(1) for g in plan.solved

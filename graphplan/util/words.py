@@ -1384,6 +1384,7 @@ WORDS.update({
                   "smaller format or {@dpi}, fewer positions"),
     "wb internal": ("внутрішня помилка: {name}: {text}", "internal error: {name}: {text}"),
     "wb assembly": ("складання", "assembly"),
+    "wb default": ("типове", "the default"),
     "sv needs": ("graphplan {@serve} потребує {name}: {@pip}",
                  "graphplan {@serve} needs {name}: {@pip}"),
     "sv started": ("graphplan {@serve}: {url}{shared} — {@Ctrl-C} зупиняє сервер", "graphplan {@serve}: {url}{shared} — {@Ctrl-C} stops it"),

@@ -394,10 +394,10 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
     lang = _lang(lang, tree)
     structure = analyse(mech)
     open_keys = [k for k in _branch_keys(mech, structure) if k not in mech.branches]
-    drawings, first_error = [], None
+    drawings, first_error, defaults = [], None, []
     for sign in ((+1, -1) if open_keys else (0,)):
         chosen = {open_keys[0]: sign} if sign else {}
-        drawn, error = None, None
+        drawn, error, default = None, None, False
         for rest in itertools.islice(itertools.product((1, -1), repeat=max(len(open_keys) - 1, 0)), 8):
             branches = {**mech.branches, **chosen, **dict(zip(open_keys[1:], rest))}
             try:
@@ -406,16 +406,20 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
                 error = error or exc
                 continue
             drawn = _at(st, phi, lang)
+            # the scene's default: what a sheet draws with no [branch] for the open groups (+1 each)
+            default = sign > 0 and all(s > 0 for s in rest)
             break
         if drawn is None:
             first_error = first_error or error
         drawings.append((chosen, drawn, "" if drawn is not None else refused(error, folder, lang).line))
+        defaults.append(default)
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
-    svg = _side_by_side(drawings, lang)
+    svg = _side_by_side(drawings, lang, defaults)
     headers = {"X-Scene-Kind": "lever", "X-Sheet-Kinds": ",".join(sheet_kinds(mech)),
                "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
-               "X-Assemblies": quote(json.dumps([{"branch": c, "error": e} for c, _, e in drawings],
+               "X-Assemblies": quote(json.dumps([{"branch": c, "error": e, "default": f}
+                                                 for (c, _, e), f in zip(drawings, defaults)],
                                                 ensure_ascii=False))}
     return Answer(body=svg.encode("utf-8"), media="image/svg+xml", headers=headers)
 
@@ -473,8 +477,9 @@ def _at(st, phi: float, lang: str):
     return rec, (x0, y0, x1, y1)
 
 
-def _side_by_side(drawings, lang: str) -> str:
-    """One SVG: the drawings in equal cells left to right, each captioned with its [branch] values."""
+def _side_by_side(drawings, lang: str, defaults=()) -> str:
+    """One SVG: the drawings in equal cells left to right, each captioned with its [branch] values,
+    the scene's default (the one a sheet draws when [branch] leaves the group open) said so."""
     from graphplan.drawing.svg import render
     from graphplan.util.markup import plain
     from xml.sax.saxutils import escape
@@ -485,8 +490,10 @@ def _side_by_side(drawings, lang: str) -> str:
     cap = max(9.0, w / 30)
     for k, (chosen, drawn, error) in enumerate(drawings):
         x = k * (w + 10)
-        said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '-1'}" for n, v in chosen.items())
-        caption = f"{word('wb assembly', lang)} {k + 1}: [branch] {said}" if said else ""
+        said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '−1'}" for n, v in chosen.items())
+        default = k < len(defaults) and defaults[k]
+        caption = (f"{word('wb assembly', lang)} {k + 1}: [branch] {said}"
+                   + (f" ({word('wb default', lang)})" if default else "")) if said else ""
         parts = [f'<g class="assembly" transform="translate({x:.3f},0)">',
                  f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
                  'stroke-width="0.3"/>']

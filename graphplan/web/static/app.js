@@ -19,7 +19,9 @@ const WORDS = {
     chosen: "Обране складання", working: "Обчислення:", ready: "Готово: ", uploaded: "Сцена з файла",
     "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
     passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
-    "assembly pick": "Обрати складання",
+    "assembly pick": "Обрати складання", default: "типове",
+    "default said": "Не обрано, тож аркуші креслять типове",
+    "no default": "Типове складання (без [branch]: усі +1) не складається — оберіть складання",
     uploaded_mode: "поля шаблону до неї не застосовуються; щоб повернутися до них, оберіть схему",
     retry: "повторіть за", s: "с", "sheet of": "аркуш", "sheets of": "аркуші", explorer: "інтерактивна сторінка",
     tables: "таблиці CSV", "slow hint": "аркуш креслиться до хвилини, коли сервер зайнятий — довше",
@@ -41,7 +43,9 @@ const WORDS = {
     chosen: "Assembly chosen", working: "Working on", ready: "Ready: ", uploaded: "The scene from",
     "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
     passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
-    "assembly pick": "Choose assembly",
+    "assembly pick": "Choose assembly", default: "the default",
+    "default said": "None chosen, so the sheets draw the default,",
+    "no default": "The default assembly (no [branch]: all +1) does not assemble — choose one",
     uploaded_mode: "the template's fields do not apply to it; choose a scheme to return to them",
     retry: "try again in", s: "s", explorer: "the explorer",
     tables: "the tables CSV", "slow hint": "a sheet takes up to a minute, longer when the server is busy",
@@ -296,6 +300,7 @@ async function draw(seq) {
       : (state.lang === "uk" ? "Механізм при φ1 = " : "The mechanism at φ1 = ") + phi + "°";
     $("preview").classList.remove("stale");
     $("phi-row").hidden = kind !== "lever";          // a cam's profile, a gear's meshing: no crank angle
+    $("dl-view").hidden = kind === "gears";          // the explorer shows levers and cams: a gear scene's was refused after the click
     const offered = (r.headers.get("X-Sheet-Kinds") || (kind === "lever" ? "kinematics" : kind)).split(",");
     offerKinds(offered, kind !== state.kind);        // only the sheets this scene makes; another kind: its first ticked
     state.kind = kind;
@@ -321,8 +326,10 @@ function showAssemblies(keys, asm) {
     b.className = "assembly" + (a.error ? " broken" : "");
     b.id = "assembly-" + (k + 1);
     const said = Object.entries(a.branch).map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ");
-    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}` + (a.error ? ` — ${a.error}` : ""));
-    b.textContent = `${t("assembly")} ${k + 1}`;
+    const dflt = a.default ? ` (${t("default")})` : "";
+    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}${dflt}` + (a.error ? ` — ${a.error}` : ""));
+    b.textContent = `${t("assembly")} ${k + 1}${dflt}`;
+    if (a.default) b.classList.add("default");
     if (a.error) b.disabled = true;
     b.addEventListener("click", () => {
       Object.assign(state.branch, a.branch);
@@ -336,8 +343,14 @@ function showAssemblies(keys, asm) {
 
 function sayBranch() {
   const entries = Object.entries(state.branch);
-  $("branch-said").textContent = entries.length
-    ? `${t("chosen")}: [branch] ` + entries.map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ") : "";
+  const said = (pairs) => pairs.map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ");
+  const asm = state.assemblies || [];
+  const k = asm.findIndex((a) => a.default);
+  // none chosen while two are drawn: which one the sheets take (the scene's default, [branch] +1)
+  $("branch-said").textContent = entries.length ? `${t("chosen")}: [branch] ` + said(entries)
+    : asm.length !== 2 ? ""
+    : k >= 0 ? `${t("default said")} ${t("assembly")} ${k + 1} ([branch] ${said(Object.entries(asm[k].branch))}).`
+    : `${t("no default")}.`;
   $("branch-reset").hidden = !entries.length;
 }
 
