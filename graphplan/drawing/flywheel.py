@@ -291,7 +291,7 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
             for j in f.added:
                 rec.segment((float(xa[j]), 0.0), (float(xa[j]), float(ya[j])), role="grid", layer=LAYER,
                             step="added ordinates")
-                rec.point((float(xa[j]), float(ya[j])), role="construction", layer=LAYER, step=f"{name} read")
+                rec.point((float(xa[j]), float(ya[j])), role="construction", layer=LAYER, step=f"{name} at an added point")
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
     mu = next(iter(scales.values()))
@@ -395,7 +395,7 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     for j in f.added:                          # the added points (where M*_c bends): their ordinates drawn
         xj = float(xa[j]) * (length / f.L)
         rec.segment((xj, 0.0), (xj, float(ya[j])), role="grid", layer=LAYER, step="added ordinates")
-        rec.point((xj, float(ya[j])), role="construction", layer=LAYER, step="ΔT read")
+        rec.point((xj, float(ya[j])), role="construction", layer=LAYER, step="ΔT at an added point")
     rec.add("polyline", list(zip(fine * (length / f.L), curve)), role="curve", layer=LAYER, step="ΔT(φ)")
     short = crowded(f.dT, projected(n))
     for j in projected(n):
