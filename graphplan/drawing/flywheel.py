@@ -150,10 +150,16 @@ def _smooth(f: Flywheel, y: np.ndarray, positive: bool = False) -> tuple[np.ndar
     diagram and the Wittenbauer curve beside it are one I*."""
     from graphplan.graphic.flywheel import inertia_curve
     fine = np.linspace(0.0, f.L, 4 * int(f.L) + 1)
+    x, corners = f.x, ()
+    for name in ("dT", "I", "A_drawn"):          # the divisions' ordinates: the curve passes every constructed
+        if y is getattr(f, name):                # point, the added ones (where M*_c bends) too
+            x, y = f.points(name)
+            corners = f.corners if name == "dT" else ()
+            fine = np.union1d(fine, x)
     if positive:
-        return fine, inertia_curve(f.x, y, f.L, fine)
+        return fine, inertia_curve(x, y, f.L, fine)
     from graphplan.graphic.flywheel import energy_curve
-    return fine, energy_curve(f.x, y, f.L, fine)
+    return fine, energy_curve(x, y, f.L, fine, corners)
 
 
 ORDINATE_LEAST = 1.0   # mm: an ordinate shorter than this is neither projected to the M axis nor rayed to P (a
@@ -195,7 +201,12 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="M*_c(φ)")
     for xk, yk in zip(f.x, f.M):
         rec.point((xk, yk), role="construction", layer=LAYER, step="M*_c at the divisions")
-    xm = 0.5 * (f.x[:-1] + f.x[1:])
+    xa = f.points("M")[0]                      # the intervals: between divisions and added points
+    for j in f.added:
+        rec.point((float(xa[j]), float(f.M_all[j])), role="construction", layer=LAYER, step="M*_c at the added points")
+        rec.segment((float(xa[j]), 0.0), (float(xa[j]), float(f.M_all[j])), role="grid", layer=LAYER,
+                    step="added ordinates")
+    xm = 0.5 * (xa[:-1] + xa[1:])
     pole = (-f.H, 0.0)
     rec.point(pole, role="joint", layer=LAYER, step="pole P")
     rec.label((-f.H - 1.8, 1.2), "P", size=TEXT, anchor="end", layer=LAYER, step="pole P")
@@ -206,8 +217,8 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
                 rec.segment((xk, yk), (0.0, yk), role="projection", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
             rec.segment(pole, (0.0, yk), role="ray", layer=LAYER, step=f"ray P–{k + 1}")
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"M at the middle of {k}–{k + 1}")
-        if k in f.equal_area:                # the equal-area mean ordinate: its horizontal over the interval
-            rec.segment((float(f.x[k]), yk), (float(f.x[k + 1]), yk), role="construction", layer=LAYER,
+        if k in (f.equal_area_all if f.added else f.equal_area):   # the equal-area mean: its horizontal
+            rec.segment((float(xa[k]), yk), (float(xa[k + 1]), yk), role="construction", layer=LAYER,
                         step=f"equal-area mean of {k}–{k + 1}")
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
@@ -238,10 +249,14 @@ def _work(f: Flywheel, w: dict, lang: str) -> Record:
     lo, hi = _extent(f.A_drawn)
     _axes(rec, lo, hi, -3.0, f.L, f"{w['Ac']}, {w['Ad']}, {w['J']}", step="A")
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
-    for k in range(f.divisions):
-        rec.segment((f.x[k], f.A_drawn[k]), (f.x[k + 1], f.A_drawn[k + 1]), role="chord", layer=LAYER,
+    xa, ya = f.points("A_drawn")               # the chords: over the divisions and the added points
+    for k in range(len(xa) - 1):
+        rec.segment((xa[k], ya[k]), (xa[k + 1], ya[k + 1]), role="chord", layer=LAYER,
                     step=f"chord {k}–{k + 1} ∥ ray P–{k + 1}")
-        rec.point((f.x[k + 1], f.A_drawn[k + 1]), role="construction", layer=LAYER, step=f"A_c at {k + 1}")
+        rec.point((xa[k + 1], ya[k + 1]), role="construction", layer=LAYER, step=f"A_c at {k + 1}")
+    for j in f.added:
+        rec.segment((float(xa[j]), 0.0), (float(xa[j]), float(ya[j])), role="grid", layer=LAYER,
+                    step="added ordinates")
     fine, curve = _smooth(f, f.A_drawn)
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step="A_c(φ)")
     rec.segment((0.0, 0.0), (f.L, float(f.A_drawn[-1])), role="result", layer=LAYER, step="A_d (constant M_d)")
@@ -270,6 +285,13 @@ def _read_diagram(f: Flywheel, title: str, scales: dict[str, float], values: np.
     row = _ordinates(rec, f, lo, hi, lo - 5.0)
     for xk, yk in zip(f.x, values):
         rec.point((xk, yk), role="construction", layer=LAYER, step=f"{name} read")
+    for nm in ("dT", "I"):
+        if values is getattr(f, nm):
+            xa, ya = f.points(nm)
+            for j in f.added:
+                rec.segment((float(xa[j]), 0.0), (float(xa[j]), float(ya[j])), role="grid", layer=LAYER,
+                            step="added ordinates")
+                rec.point((float(xa[j]), float(ya[j])), role="construction", layer=LAYER, step=f"{name} at an added point")
     rec.add("polyline", list(zip(fine, curve)), role="curve", layer=LAYER, step=f"{name}(φ)")
     _numbers(rec, row)
     mu = next(iter(scales.values()))
@@ -354,7 +376,8 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
     w = WORDS[lang]
     rec = Record(w["energy"], scales={"mu_T": f.mu_T})
     xs = projected_x(f, length)
-    lo, hi = _extent(f.dT)
+    fine, curve = _smooth(f, f.dT)
+    lo, hi = _extent(f.dT, curve)              # the axis title over the curve's highest point, not through it
     n = f.divisions
     rec.vector((0.0, lo - 1.0), (0.0, hi + 8.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
     rec.vector((-3.0, 0.0), (length + 10.0, 0.0), role="construction", width=AXIS_W, layer=LAYER, step="axes ΔT")
@@ -368,7 +391,11 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
             row.append(_number((float(xk), lo - 5.0), k))
     for xk, yk in zip(xs, f.dT):
         rec.point((xk, yk), role="construction", layer=LAYER, step="ΔT read")
-    fine, curve = _smooth(f, f.dT)
+    xa, ya = f.points("dT")
+    for j in f.added:                          # the added points (where M*_c bends): their ordinates drawn
+        xj = float(xa[j]) * (length / f.L)
+        rec.segment((xj, 0.0), (xj, float(ya[j])), role="grid", layer=LAYER, step="added ordinates")
+        rec.point((xj, float(ya[j])), role="construction", layer=LAYER, step="ΔT at an added point")
     rec.add("polyline", list(zip(fine * (length / f.L), curve)), role="curve", layer=LAYER, step="ΔT(φ)")
     short = crowded(f.dT, projected(n))
     for j in projected(n):
@@ -720,6 +747,8 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         every *= 2
     dots = [complex(float(f.I[j]), float(f.dT[j])) for j in range(n)]
     middle = complex(float(np.mean(X)), float(np.mean(Y)))
+    for j in f.added:                          # the added points (where M*_c bends): on the curve, dotted
+        rec.point((float(f.I_all[j]), float(f.dT_all[j])), role="construction", layer=LAYER, step="added point")
     for j in range(n):
         rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
         if j % every == 0:

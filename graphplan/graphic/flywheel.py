@@ -71,6 +71,31 @@ class Flywheel:
     redrawn: Any = field(default=None)   # Redrawing: how ``redrawn`` chose the divisions (None: not asked)
     equal_area: tuple[int, ...] = ()     # intervals whose height is the equal-area mean (``mean_ordinates``)
     energy_scale: float | None = None    # J/mm: ΔT's own μ_T where it is finer than μ_A (``energy_scale``)
+    # the construction's points: the divisions and, between them, the points added where M*_c jumps
+    # or bends (exact.dynamics' ``breaks``: a load switching at a dead centre, a force profile's corner —
+    # the lab divides where the curve bends, so ΔT's extremum there is constructed, not interpolated);
+    # None: only the divisions. ``M_mid`` and ``equal_area_all`` are over these points' intervals
+    x_all: np.ndarray | None = None
+    turn_all: np.ndarray | None = None
+    M_all: np.ndarray | None = None
+    A_drawn_all: np.ndarray | None = None
+    dT_all: np.ndarray | None = None
+    I_all: np.ndarray | None = None
+    added: tuple[int, ...] = ()          # indices into the ``*_all`` arrays of the added points
+    equal_area_all: tuple[int, ...] = ()
+
+    def points(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """(x, ordinates) of every constructed point of ``name`` ("dT", "I", "A_drawn", "M")."""
+        y = getattr(self, f"{name}_all")
+        return (self.x, getattr(self, name)) if y is None else (self.x_all, y)
+
+    def added_label(self, j: int) -> str:
+        """An added point lettered as the draftsman letters it: the division before it primed
+        (2′, a second in the same interval 2″)."""
+        xs = self.x_all
+        k = int(np.searchsorted(self.x, xs[j], side="right")) - 1
+        primes = sum(1 for i in self.added if self.x[k] < xs[i] <= xs[j])
+        return f"{k}" + "′" * primes if primes < 3 else f"{k}({primes})"
 
     @property
     def mu_T(self) -> float:
@@ -101,15 +126,17 @@ class Flywheel:
         between positions 2 and 3 where the table's ordinates give 61,3). mm, and the points' φ in
         degrees of the crank's turn from position 0."""
         fine = np.linspace(0.0, self.L, 4 * int(self.L) + 1)[:-1]      # one turn: 2π is 0 again
-        y = energy_curve(self.x, self.dT, self.L, fine)
+        xs, ys = self.points("dT")
+        fine = np.union1d(fine, xs[:-1])                                  # the constructed points themselves
+        y = energy_curve(xs, ys, self.L, fine, self.corners)
         out = {}
         for key, k in (("max", int(np.argmax(y))), ("min", int(np.argmin(y)))):
             value, at = float(read(y[k], self.precision)), float(fine[k])
             # where the curve's extreme reads no more than a division's ordinate it is that ordinate
             # (ΔT = 0 at position 0, not "at 359°" where the ruler's residual lifts the curve's end)
-            same = [j for j in range(self.divisions) if abs(float(self.dT[j]) - value) <= 1e-9]
+            same = [j for j in range(len(xs) - 1) if abs(float(ys[j]) - value) <= 1e-9]
             if same:
-                at = float(self.x[same[0]])
+                at = float(xs[min(same, key=lambda j: abs(float(xs[j]) - at))])
             out[key], out[f"{key}_deg"] = value, at / self.L * 360.0
         return out
 
@@ -131,7 +158,7 @@ class Flywheel:
         """Mertsalov's method: the flywheel's own energy change ΔT − ½·ω_m²·I*_m (the mechanism's
         kinetic energy at ω_m taken out): J ≈ (its max − its min)/(ω_m²·δ), from the readings."""
         wm2 = self.omega_mean ** 2
-        own = self.dT * self.mu_T - 0.5 * wm2 * self.I * self.mu_I
+        own = self.points("dT")[1] * self.mu_T - 0.5 * wm2 * self.points("I")[1] * self.mu_I
         return (float(np.max(own)) - float(np.min(own))) / (wm2 * self.dyn.delta)
 
     @property
@@ -149,16 +176,41 @@ class Flywheel:
 
     def curve(self) -> tuple[np.ndarray, np.ndarray]:
         """The Wittenbauer curve as the French curve through (I_k, ΔT_k): X, Y in mm."""
-        return _curve(self.x, self.I, self.dT, self.L)
+        return _curve(self.points("I")[0], self.points("I")[1], self.points("dT")[1], self.L, self.corners)
+
+    @property
+    def corners(self) -> tuple[int, ...]:
+        """The points (indices into ``points``) where M*_c jumps or bends: ΔT's slope turns there."""
+        return self.added
 
 
-def energy_curve(x: np.ndarray, y_mm: np.ndarray, L: float, at: np.ndarray) -> np.ndarray:
+def _corner_swap(x: np.ndarray, L: float, corners, at: np.ndarray) -> np.ndarray:
+    """Which abscissae ``at`` lie in an interval next to one of the ``corners`` (indices into x)."""
+    n = len(x) - 1
+    k = np.clip(np.searchsorted(x, np.mod(at, L), side="right") - 1, 0, n - 1)
+    near = set()
+    for c in corners:
+        near.update({(c - 1) % n, c % n})
+    return np.isin(k, sorted(near))
+
+
+def energy_curve(x: np.ndarray, y_mm: np.ndarray, L: float, at: np.ndarray, corners=(), trend: bool = True) -> np.ndarray:
     """The French curve of a periodic diagram that may not close exactly (ΔT read: A_d − A_c at the
     end may miss 0 by the ruler) through its division ordinates at the abscissae ``at``: the periodic
-    cubic spline of the ordinates less their linear trend, the trend added back."""
+    cubic spline of the ordinates less their linear trend, the trend added back. Next to a point
+    where M*_c jumps or bends (``corners``: indices into x) the curve has a corner the spline would
+    swing past (the toggle press's ΔT peaked at 50 J between 38,1 and 41,3 by the spline alone, review
+    56): there the shape-preserving cubic (never beyond its two ordinates), so the extremum drawn is
+    the point constructed."""
     at = np.asarray(at, dtype=float)
-    trend = y_mm[-1] - y_mm[0]
-    return periodic_spline(x[:-1], y_mm[:-1] - trend * x[:-1] / L, L)(at) + trend * at / L
+    trend = float(y_mm[-1] - y_mm[0]) if trend else 0.0
+    base = y_mm[:-1] - trend * x[:-1] / L
+    y = periodic_spline(x[:-1], base, L)(at)
+    if len(corners):
+        swap = _corner_swap(x, L, corners, at)
+        if swap.any():
+            y = np.where(swap, periodic_pchip(x[:-1], base, L)(at), y)
+    return y + trend * at / L
 
 
 def inertia_curve(x: np.ndarray, i_mm: np.ndarray, L: float, at: np.ndarray) -> np.ndarray:
@@ -176,18 +228,18 @@ def inertia_curve(x: np.ndarray, i_mm: np.ndarray, L: float, at: np.ndarray) -> 
     probe = np.linspace(0.0, L, CURVE * n + 1)          # each interval's dip, at the curve's own samples
     dips = probe[spline(probe) < 0.0]
     if dips.size:
-        bad = np.unique(np.minimum((dips / (L / n)).astype(int), n - 1))
-        k = np.minimum((np.mod(at, L) / (L / n)).astype(int), n - 1)
+        bad = np.unique(np.clip(np.searchsorted(x, dips, side="right") - 1, 0, n - 1))
+        k = np.clip(np.searchsorted(x, np.mod(at, L), side="right") - 1, 0, n - 1)
         swap = np.isin(k, bad)
         if swap.any():
             y = np.where(swap, periodic_pchip(x[:-1], i_mm[:-1], L)(at), y)
     return y
 
 
-def _curve(x: np.ndarray, i_mm: np.ndarray, dt_mm: np.ndarray, L: float) -> tuple[np.ndarray, np.ndarray]:
+def _curve(x: np.ndarray, i_mm: np.ndarray, dt_mm: np.ndarray, L: float, corners=()) -> tuple[np.ndarray, np.ndarray]:
     n = len(x) - 1
-    fine = np.linspace(0.0, L, CURVE * n + 1)
-    return inertia_curve(x, i_mm, L, fine), periodic_spline(x[:-1], dt_mm[:-1], L)(fine)
+    fine = np.union1d(np.linspace(0.0, L, CURVE * n + 1), x)
+    return inertia_curve(x, i_mm, L, fine), energy_curve(x, dt_mm, L, fine, corners, trend=False)
 
 
 def tangents(X: np.ndarray, Y: np.ndarray, s_max: float, s_min: float) -> dict[str, float]:
@@ -205,14 +257,15 @@ def tangents(X: np.ndarray, Y: np.ndarray, s_max: float, s_min: float) -> dict[s
 _REDUCED: dict[tuple[int, int], tuple] = {}
 
 
-def _reduced(st, n: int):
+def _reduced(st, n: int, turn: np.ndarray | None = None):
     """I*_m, dI*_m/dφ and M*_c at the ``n`` divisions of the turn and at their middles (exact.dynamics
     ``reduce``): the same whatever L and size the construction is drawn at, so solved once per study
     and divisions (a sheet tries a few hundred scales of one construction). The study is kept with
     them: a study made later at the same address is not taken for it."""
-    hit = _REDUCED.get((id(st), n))
+    turn = np.linspace(0.0, 2 * math.pi, n + 1) if turn is None else np.asarray(turn, dtype=float)
+    key = (id(st), n, tuple(np.round(turn, 12)))
+    hit = _REDUCED.get(key)
     if hit is None or hit[0] is not st:
-        turn = np.linspace(0.0, 2 * math.pi, n + 1)
         hit = (st, reduce(st, turn), reduce(st, midpoints(turn)))
         for r in hit[1:]:                     # shared by every construction: nobody writes into them
             for v in vars(r).values():
@@ -220,7 +273,7 @@ def _reduced(st, n: int):
                     v.flags.writeable = False
         if len(_REDUCED) >= 16:
             _REDUCED.pop(next(iter(_REDUCED)))
-        _REDUCED[(id(st), n)] = hit
+        _REDUCED[key] = hit
     return hit[1], hit[2]
 
 
@@ -264,9 +317,12 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     if not (math.isfinite(precision) and precision >= 0):
         raise GraphplanError(f"--precision must be a length ≥ 0 in mm, got {precision:g}")
     L = float(L or settings.get("L_mm", 240.0))
-    x = np.linspace(0.0, L, n + 1)
-    turn = np.linspace(0.0, 2 * math.pi, n + 1)
-    at, mid = _reduced(st, n)
+    turn_u = np.linspace(0.0, 2 * math.pi, n + 1)
+    turn = division_points(dyn, n)
+    uni = np.searchsorted(turn, turn_u - 1e-12)         # the divisions among the points
+    added = tuple(int(j) for j in np.setdiff1d(np.arange(len(turn)), uni))
+    x = turn / (2 * math.pi) * L
+    at, mid = _reduced(st, n, turn)
     mu_M = standard_scale(float(np.max(np.abs(at.moment))) / (M_HEIGHT * size))
     mu_phi = 2 * math.pi / L
     if H is None:
@@ -278,18 +334,41 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     M_mid = read(heights / mu_M, precision)
     A_drawn = integrate_by_chords(x, M_mid, H, 0.0)
     A = read(A_drawn, precision)
-    dT = read(A_drawn[-1] * x / L, precision) - A        # A_d and A_c read at each division, subtracted
+    dT = read(A_drawn[-1] * x / L, precision) - A        # A_d and A_c read at each point, subtracted
     mu_T = own_energy_scale(float(np.ptp(dT)) * mu_A, mu_A, size)
     if mu_T != mu_A:                                       # … and redrawn at ΔT's own scale
         dT = read(dT * mu_A / mu_T, precision)
     I = read(at.inertia / mu_I, precision)
     wm, d = dyn.omega_mean, dyn.delta
     hi, lo = ((1 + d), (1 - d)) if slopes == "course" else ((1 + d / 2) ** 2, (1 - d / 2) ** 2)
-    tg = tangents(*_curve(x, I, dT, L), mu_I * wm ** 2 * hi / (2 * mu_T), mu_I * wm ** 2 * lo / (2 * mu_T))
+    tg = tangents(*_curve(x, I, dT, L, added), mu_I * wm ** 2 * hi / (2 * mu_T), mu_I * wm ** 2 * lo / (2 * mu_T))
     kl = float(read(tg["k"] - tg["l"], precision))
-    return Flywheel(dyn, n, L, H, precision, slopes, mu_M, mu_phi, mu_A, mu_I, x, turn, at.moment, at.inertia,
-                    at.d_inertia, M, M_mid, A_drawn, A, float(read(A_drawn[-1] * H / L, precision)), dT, I, tg, kl,
-                    equal_area=equal_area, energy_scale=mu_T if mu_T != mu_A else None)
+    # the divisions' own intervals an equal-area mean was taken in (the notes number them so)
+    eq_u = tuple(sorted({int(np.searchsorted(uni, j, side="right")) - 1 for j in equal_area}))
+    mine = {"x_all": x, "turn_all": turn, "M_all": M, "A_drawn_all": A_drawn, "dT_all": dT, "I_all": I,
+            "added": added, "equal_area_all": tuple(equal_area)} if added else {}
+    return Flywheel(dyn, n, L, H, precision, slopes, mu_M, mu_phi, mu_A, mu_I, x[uni], turn_u, at.moment[uni],
+                    at.inertia[uni], at.d_inertia[uni], M[uni], M_mid, A_drawn[uni], A[uni],
+                    float(read(A_drawn[-1] * H / L, precision)), dT[uni], I[uni], tg, kl,
+                    equal_area=eq_u if added else equal_area, energy_scale=mu_T if mu_T != mu_A else None, **mine)
+
+
+ADDED_LEAST = 0.05    # of an interval: a break nearer a division than this is that division (no point added)
+
+
+def division_points(dyn: Dynamics, n: int) -> np.ndarray:
+    """The construction's points, crank turns: the ``n`` equal divisions and, between them, the turns
+    where M*_c jumps or bends (exact.dynamics ``breaks``: the output's dead centres, where a load
+    switches; a force profile's corners) — the lab divides where the curve bends, as the kinematic
+    diagrams subdivide, so an extremum of ΔT there is a constructed point, not the French curve's
+    guess between two divisions (review 56: the toggle press's force sets in at 81,5° inside 60–90°,
+    the exact ΔT_max 53,67 J at 82,75°; the spline through 38,1 and 41,3 gave 50,0)."""
+    step = 2 * math.pi / n
+    turn = list(np.linspace(0.0, 2 * math.pi, n + 1))
+    for b in np.asarray(dyn.cycle.breaks, dtype=float)[1:-1]:
+        if abs(b / step - round(b / step)) > ADDED_LEAST:
+            turn.append(float(b))
+    return np.array(sorted(turn))
 
 
 def own_energy_scale(span: float, mu_A: float, size: float = 1.0) -> float:

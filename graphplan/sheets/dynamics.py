@@ -9,7 +9,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from graphplan.drawing.flywheel import (BREAK_CLEAR, achieved, energy_projected, inertia_turned, moments_least, turned_length,
+from graphplan.drawing.flywheel import (BREAK_CLEAR, _cleared, achieved, energy_projected, inertia_turned, moments_least,
+                                        turned_length,
                                        moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
                                        PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
@@ -432,13 +433,15 @@ def band(f: Flywheel, lang: str, length: float,
         energy = energy.moved(side - reach, 0.0)
         if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
             foot = min(foot, energy.bounds()[1] - 2.0)
-        witt = _caption(wittenbauer_record(f, lang, projections=(side, foot)), w["wittenbauer"], above=True,
-                        left=side)
+        # captioned under the drawing, as every other (review 56 #8: above it the caption stood close under
+        # A(φ)'s and read as its second line); the I* projections that run down past it broken under it
+        witt = _caption(wittenbauer_record(f, lang, projections=(side, foot)), w["wittenbauer"], left=side)
         wx0, wy0, _, _ = witt.bounds()
         low = lettering_foot(witt, side)
         if (wx0 >= side - 1e-9 and wy0 >= foot - 1e-9 and low >= foot + FOOT_CLEAR - 1e-9) or attempt == 5:
             break
         side, foot = min(side, wx0 - 1.0), min(foot, wy0 - 1.0, low - FOOT_CLEAR)
+    witt = _cleared(witt, "caption", w["wittenbauer"])
     energy = _caption_apart(energy, witt)
     ex0, ey0, _, ey1 = energy.bounds()
     dy = foot - 3.0 - turned.bounds()[3]
