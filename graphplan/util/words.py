@@ -685,8 +685,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
     # issue 24 (one set of numbers, the lab's notation, every check said on the sheet)
     # the sign's parenthesis with no-break spaces: a title wraps before it, never inside it
-    "kin vel_table_signed": ("Таблиця 1. Швидкості |v|, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стрілки)",
-                             "Table 1. Velocities |v|, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
+    "kin vel_table_signed": ("Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стр.)",
+                             "Table 1. Velocities: |v|, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
     "kin acc_table_signed": ("Таблиця {n}. Прискорення |a|, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стрілки), "
                              "положення\u00a0{i}",
                              "Table {n}. Accelerations |a|, m/s²; ε, rad/s² (+\u00a0counter-clockwise), position\u00a0{i}"),
