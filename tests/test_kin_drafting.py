@@ -293,7 +293,7 @@ count = 12
 """
 
 
-@pytest.mark.parametrize("lang, text", [("uk", "e = 12,5"), ("en", "e = 12.5")])
+@pytest.mark.parametrize("lang, text", [("uk", "e = 12,5 мм"), ("en", "e = 12.5 mm")])
 def test_the_offset_is_lettered_with_its_real_size(lang, text):
     """A guide through (−25, 0) mm at 150° passes 25·sin 30° = 12.5 mm from O: the scheme letters
     e = 12,5 (Table 4's value), not a rounded "12"; a whole stroke keeps whole millimetres."""
@@ -303,6 +303,6 @@ def test_the_offset_is_lettered_with_its_real_size(lang, text):
     plans = build_plans(st, mu_l=0.001)
     words = [p.text for p in position_record(plans, lang=lang).items if p.kind == "text"]
     assert text in words
-    H = float(next(w for w in words if w.startswith("H = "))[4:].replace(",", "."))
+    H = float(next(w for w in words if w.startswith("H = ")).split()[2].replace(",", "."))
     r, l, e = 65.0, 260.0, 12.5                   # mm at μl = 0.001 m/mm
     assert abs(H - (math.sqrt((l + r) ** 2 - e ** 2) - math.sqrt((l - r) ** 2 - e ** 2))) <= 0.05

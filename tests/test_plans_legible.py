@@ -102,11 +102,11 @@ def test_a_slider_stroke_and_offset_are_dimensioned(r, ratio, offset):
     l, e = ratio * r, abs(offset) * r
     H = math.sqrt((l + r) ** 2 - e ** 2) - math.sqrt((l - r) ** 2 - e ** 2)
     def mm(t: str) -> float:
-        return float(t[4:].replace(",", "."))
+        return float(t.split()[2].replace(",", "."))
     # whole millimetres where the length is whole, else to its tenth (drawing.plans._real_mm)
-    found = [t for t in texts if re.fullmatch(r"H = \d+(,\d)?", t)]
+    found = [t for t in texts if re.fullmatch(r"H = \d+(,\d)? мм", t)]
     assert found and abs(mm(found[0]) - 1000 * H) <= 0.05 + 1e-9, (found, 1000 * H)
-    es = [t for t in texts if re.fullmatch(r"e = \d+(,\d)?", t)]
+    es = [t for t in texts if re.fullmatch(r"e = \d+(,\d)? мм", t)]
     if e:
         assert es and abs(mm(es[0]) - 1000 * e) <= 0.05 + 1e-9, es
     else:

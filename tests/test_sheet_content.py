@@ -272,7 +272,7 @@ def lab_sheet():
 def test_dead_centre_velocity_is_the_number_zero(lab_sheet):
     """v_B at the dead centres (positions 0 and 4) reads 0, as the terminal prints it (it was "—")."""
     lines = texts(lab_sheet)
-    k = title_at(lines, "Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)")
+    k = title_at(lines, "Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+ проти год. стр.)")
     head = lines[k + 1:k + 8]
     assert head == ["№", "φ, °", "v_{A}", "v_{B}", "v_{BA}", "ω_{2}", "δ_{max}, %"]
     rows = [lines[k + 8 + 7 * n: k + 15 + 7 * n] for n in range(8)]
@@ -284,7 +284,7 @@ def test_omega_is_signed_by_its_sense(lab_sheet):
     """ω_AB printed with its sign (+ counter-clockwise, the title says so), as the exact analysis."""
     st = example("lab_crank_slider")
     lines = texts(lab_sheet)
-    k = title_at(lines, "Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)")
+    k = title_at(lines, "Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+ проти год. стр.)")
     rows = [lines[k + 8 + 7 * n: k + 15 + 7 * n] for n in range(8)]
     kin = st.solve(st.positions())
     for n, r in enumerate(rows):
@@ -373,7 +373,7 @@ def test_velocity_errors_past_the_limit_are_marked(shaper_sheet):
     """Every δ_max of Table 1 over 5 % carries a mark and a footnote naming its position, and no
     other does."""
     lines = texts(shaper_sheet)
-    k = title_at(lines, "Таблиця 1. Швидкості, м/с; ω, рад/с (+ проти год. стрілки)")
+    k = title_at(lines, "Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+ проти год. стр.)")
     width = lines.index("δ_{max}, %", k) - k
     rows = [lines[k + width + 1 + width * n: k + 2 * width + 1 + width * n] for n in range(12)]
     for r in rows:

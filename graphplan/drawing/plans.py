@@ -479,6 +479,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     # centre of mass, lettered at the first only, keeps its S₂), the first's too (review
     # 11 #15: position 4's slider a plain B beside position 9's A₉, B₉); one thick position is the plan
     together = coinciding(pts)
+    paired = coulisse_points(mech)
     for name, X in pts.items():
         if name not in together:
             continue                      # lettered with the point it coincides with (O₁, S₁)
@@ -491,7 +492,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
             # it: a four-bar's crank circle 12 mm across had its O₁ set 1.3 mm from the pin's
             # position 8, whose number then found no spot but on a leader through that O₁
             rivals = tuple(z for z in pins if SAME_DOT < abs(z - X) < PIVOT_RIVALS)
-        text = ", ".join(indexed(n) if len(thick_lays) < 2 or n in mech.frame or n not in joints else
+        text = ", ".join(indexed(n) if len(thick_lays) < 2 or n in mech.frame or n not in joints or n in paired else
                          at_position(n, lay.index if lay.index is not None else lay.key) for n in together[name])
         labels.append(LabelRequest(X, text, toward=X - centre if abs(X - centre) > 1e-9 else 1j, size=3.5,
                                    breaks=True, rivals=rivals))
@@ -510,7 +511,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
         place_first(rec, alternatives, accept=owners.get(alternatives[0].step))
     dots = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]     # with the extremes'
     lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key or len(thick_lays) > 1
-                   for name in joints_at(sc, other) if name not in mech.frame}          # B₈ says 8 there
+                   for name in joints_at(sc, other) if name not in mech.frame
+                   and name not in paired}          # B₈ says 8 there (a coulisse's A: its number beside it)
     labels = position_numbers(plans, O, dots, skip=lettered_at)
     labels += late
     return place_labels(rec, labels)
@@ -547,6 +549,16 @@ def at_position(name: str, k: int | str) -> str:
     return f"{escape(name)}_{{{k}}}"
 
 
+def coulisse_points(mech) -> set[str]:
+    """The joints a block carries along a moving link's guide (a coulisse's A): the sheet writes
+    A₂, A₃ for that point of the block and of the slotted link (v_A3A2, a^k_A3A2), so a further
+    thick position's A₈ (or the first's A₂) would read as a link's point (review 56 #4) — there
+    the position is said by its number only, as at every thin position, and the letter stays
+    plain."""
+    return {j for link in mech.links.values() if link.slides_on is not None
+            and mech.guides[link.slides_on].body != FRAME for j in link.joints}
+
+
 def thick_letters(sc: Scheme, lay: Layout, every: list[Layout], dots: list[complex]) -> list[LabelRequest]:
     """The moving joints of a thick (acceleration) position other than the first, lettered with the
     position's number (B₈, C₈, D₈: review 6 #11 — position 8's hollow joints had no letters while
@@ -556,8 +568,9 @@ def thick_letters(sc: Scheme, lay: Layout, every: list[Layout], dots: list[compl
     joints = {j for link in mech.links.values() for j in link.joints}
     centre = sum(pts.values(), 0j) / len(pts)
     out = []
+    paired = coulisse_points(mech)
     for name, X in pts.items():
-        if name in mech.frame or name not in joints:
+        if name in mech.frame or name not in joints or name in paired:
             continue
         rivals = tuple(z for z in (joints_at(sc, l).get(name) for l in every) if z is not None
                        and abs(z - X) > 1e-6 and any(abs(z - d) < 1e-6 for d in dots))
@@ -795,7 +808,7 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
     rec.vector(_pt(mid), _pt(a), role="construction", layer="construction", step=step)
     rec.vector(_pt(mid), _pt(b), role="construction", layer="construction", step=step)
     mm = 1000.0 * plans.mu_l
-    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm, lang)}", toward=away, size=3.5, step=step)]
+    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm, lang)} {_MM.get(lang, 'mm')}", toward=away, size=3.5, step=step)]
     if len(st.structure.dyads) == 1 and abs(side) * mm >= 0.5:      # a crank-slider's offset
         # beside the crank's circle, on the side away from the slider: O's line and the path carried
         # there parallel to the path, the dimension line across them
@@ -809,7 +822,7 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
         c = 0.5 * (a + b)
         rec.vector(_pt(c), _pt(a), role="construction", layer="construction", step=step)
         rec.vector(_pt(c), _pt(b), role="construction", layer="construction", step=step)
-        labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm, lang)}", toward=back, size=3.5, step=step))
+        labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm, lang)} {_MM.get(lang, 'mm')}", toward=back, size=3.5, step=step))
     return labels
 
 
@@ -846,6 +859,9 @@ def swing_dimension(rec: Record, plans: Plans, lang: str = "uk") -> list[LabelRe
         rec.vector(tail, tip, role="construction", layer="construction", step=step)
     mid = P + R * cmath.exp(1j * math.radians(0.5 * (a1 + a2)))
     return [LabelRequest(mid, f"ψ_max = {fixed(psi, lang, 2)}°", toward=mid - P, size=3.5, step=step)]
+
+
+_MM = {"uk": "мм", "en": "mm"}     # a scheme's dimension with its unit (review 56 #6: "H = 42,2" read bare)
 
 
 def _real_mm(v: float, lang: str = "uk") -> str:

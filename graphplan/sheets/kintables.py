@@ -6,6 +6,8 @@ and the notes' lines (mobility, structure, scales, precision, the largest errors
 composition that places them is sheets/kinematics.py (sheets/kinlayout.py the arithmetic)."""
 from __future__ import annotations
 
+import re
+
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import judged_pct
 from graphplan.graphic.record import Record, text_width
@@ -34,6 +36,9 @@ def _symbol(key: str, letter: str = "v", e: dict | None = None) -> str:
 
 # -- tables ------------------------------------------------------------------------------------
 
+RELATIVE = re.compile(r"[A-Z][a-z0-9_]*[A-Z][a-z0-9_]*")    # a relative velocity's key: "CB", "A3A2"
+
+
 def velocity_columns(doc: dict, precision: float) -> list[str]:
     """The velocity table's columns: every quantity once — a column equal to an earlier one (ω of a
     block riding its rocker: ω2 = ωOB) or zero at every position (a centre of mass on a fixed
@@ -47,7 +52,9 @@ def velocity_columns(doc: dict, precision: float) -> list[str]:
     seen: list[tuple[str, ...]] = []
     for key in keys:
         cells = tuple(_cell(pos["velocity"].get(key), precision) for pos in doc["positions"])
-        if all(c in ("0", "—") for c in cells) or cells in seen:
+        # a relative velocity is kept though its column equals a point's (review 56 #6: a toggle's
+        # v_CB = v_B at every position, O2B = BC, was left out while ω4 stood in the table)
+        if all(c in ("0", "—") for c in cells) or (cells in seen and not RELATIVE.fullmatch(key)):
             continue
         seen.append(cells)
         kept.append(key)
@@ -364,11 +371,17 @@ def guide_distances(st: Study) -> list[tuple[str, float, object, str]]:
               if g.body == FRAME and any(l.slides_on == g.name for l in mech.links.values())]
     out = []
     for g in guides:
-        pivot = _driver_pivot(mech, g.name) or mech.crank.pivot
+        driver = _driver_pivot(mech, g.name)
+        pivot = driver or mech.crank.pivot
         u = cmath.exp(1j * g.angle)
         d = abs(((mech.frame[pivot] - g.through) * u.conjugate()).imag)   # the pivot's distance from the line
+        if d <= 1e-9 and pivot != mech.crank.pivot:
+            # a ram's guide through its rocker's pivot (a toggle press's ram under O2): the line is
+            # still an input of the scheme — X from the crank's pivot (review 56 #6)
+            pivot = mech.crank.pivot
+            d = abs(((mech.frame[pivot] - g.through) * u.conjugate()).imag)
         if d > 1e-9:                                                     # an axial slider: no offset to give
-            symbol = "e" if pivot == mech.crank.pivot else "X"
+            symbol = "e" if driver is None else "X"
             out.append((symbol if len(guides) == 1 else f"{symbol}_{{{g.name}}}", d, g, pivot))
     return out
 
@@ -865,6 +878,38 @@ def plan_tables(plans) -> str:
     return "1" if m == 0 else "1, 2" if m == 1 else f"1–{1 + m}"
 
 
+def short_poles(st: Study, doc: dict, lang: str, precision: float) -> list[str]:
+    """Where the crank pin's p_v a (π a) is drawn under LEGIBLE_MM because a plan's longest vector is
+    already ``kinlayout.PLAN_MM`` long (the plans read by their size: a rocker's end swinging fast
+    beside a short crank), the note says so — which plan bounds the scale and how long its vector
+    would be at p_v a = 40 mm (review 56 #5: an A3 set drew p_v a = 35 mm, p_v e of plan 10 160 mm,
+    where docs/scenes.md promises 40 mm wherever the sheet has the room)."""
+    from graphplan.graphic.draftsman import measure
+    from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS
+    from graphplan.report.replay import seg
+    from graphplan.sheets.kinlayout import PLAN_MM
+    from graphplan.util.markup import indexed
+    pin = st.mech.crank.pin
+    out = []
+    for kind, pole, kind_w in (("velocity", "p_v", ("швидкостей", "velocity")),
+                               ("acceleration", "π", ("прискорень", "acceleration"))):
+        rows = [(pos["index"], pos[kind]) for pos in doc["positions"] if pos.get(kind)]
+        pins = [e[pin]["mm"] for _, e in rows if e.get(pin, {}).get("mm")]
+        if not pins or pins[0] >= LEGIBLE_MM - LEGIBLE_READS:
+            continue
+        n, key, longest = max(((i, k, e["mm"]) for i, ents in rows for k, e in ents.items()
+                               if e.get("mm") is not None and e.get("sense") is None and not RELATIVE.fullmatch(k)),
+                              key=lambda t: t[2])
+        if longest < PLAN_MM:
+            continue
+        at = longest * LEGIBLE_MM / pins[0]
+        ruler = step_decimals(precision) if precision > 0 else 1
+        out.append(word("kin short_pole", lang, seg=seg(pole, indexed(pin.lower())), mm=fixed(pins[0], lang, ruler),
+                        least=num(LEGIBLE_MM, lang), kind=kind_w[lang != "uk"], vec=seg(pole, indexed(key.lower())),
+                        n=n, long=fixed(longest, lang, ruler), at=fixed(measure(at, precision), lang, ruler)))
+    return out
+
+
 def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
     """The notes' lines: mobility, structure, scales, precision, the largest errors, the signs."""
     from graphplan.graphic.scales import format_scale
@@ -882,6 +927,7 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
                      + (f" ({w('max_error_20')}: {fixed(max(long_), lang, 2)} %)" if long_ else ""))
     extra.append(w('dash'))
     extra.append(sign_note(st, diag, lang))
+    extra += short_poles(st, doc, lang, p)
     from graphplan.drawing.plans import output_point, primed, swing
     psi = swing(plans)
     if psi is not None:                  # the rocker's swing, dimensioned on the position plan (review 12 #8)

@@ -280,6 +280,10 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin dims yoke": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока; e_{{{n}}} — від D до осі паза вздовж штока",
                       "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide; e_{{{n}}}: from D to the slot's line along the rod"),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
+    "kin short_pole": ('{seg} = {mm} мм (менше {least} мм): найдовший вектор планів {kind} — {vec} плану {n}, {long} мм; '
+                       'за {seg} = {least} мм він мав би {at} мм',
+                       '{seg} = {mm} mm (under {least} mm): the longest vector of the {kind} plans is plan {n}\'s {vec}, '
+                       '{long} mm; at {seg} = {least} mm it would be {at} mm'),
     "kin swing": ('Кут розмаху ланки {link} між крайніми положеннями {a} і {b}: ψ_max = {deg}° = {rad} рад',
                   'Swing of link {link} between its extreme positions {a} and {b}: ψ_max = {deg}° = {rad} rad'),
     "kin dims middles": ('{names} — посередині ланок', '{names}: at the middles of their links'),
@@ -303,20 +307,21 @@ WORDS: dict[str, tuple[str, str]] = {
                               'Here {sym}_{{{n}}}, −ω_{{{n}}}, −ε_{{{n}}} (the "plan" rows too): +\u00a0clockwise, as '
                               'on the diagrams; ω_{{{n}}}, ε_{{{n}}} in Tables {t}: +\u00a0counter-clockwise'),
     "kin readings_signs_back": ('Знаки s, v, a тут (і рядки «план»): +\u00a0від положення 0, проти напрямної, як на '
-                                'діаграмах; у таблицях {t}: +\u00a0у напрямку напрямної',
+                                'діаграмах; таблиці {t} дають модулі |v|, |a| (довжина вектора × μ)',
                                 'Signs of s, v, a here (the "plan" rows too): +\u00a0away from position 0, against the '
-                                'guide, as on the diagrams; in Tables {t}: +\u00a0along the guide'),
+                                'guide, as on the diagrams; Tables {t} give the magnitudes |v|, |a| (a vector\'s length × μ)'),
     "kin dash": ('«—» у таблицях: мм для ε немає; δ не обчислено, де вектор коротший за півподілки лінійки або '
                  'точне значення ≈ 0',
                  '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
                  'the exact value is ≈ 0'),
-    "kin signs": ('Знаки s, v, a (таблиці, діаграми): + у напрямку напрямної {guide}', 'Signs of s, v, a (tables, diagrams): + along the guide {guide}'),
-    "kin signs_back": ('Знаки v, a в таблицях планів: + у напрямку напрямної {guide}. s — переміщення від крайнього '
+    "kin signs": ('Знаки s, v, a (діаграми, таблиця діаграм): + у напрямку напрямної {guide}; таблиці планів дають модулі |v|, |a|',
+                  'Signs of s, v, a (diagrams, the diagrams\' table): + along the guide {guide}; the plans\' tables give the magnitudes |v|, |a|'),
+    "kin signs_back": ('Таблиці планів дають модулі |v|, |a| (довжина вектора × μ). s — переміщення від крайнього '
                        'положення 0; знаки s, v, a на діаграмах і в таблиці діаграм: + від положення 0, тобто проти '
-                       'напрямної',
-                       'Signs of v, a in the plans\' tables: + along the guide {guide}. s is the displacement from the '
-                       'extreme position 0; signs of s, v, a on the diagrams and in the diagrams\' table: + away from '
-                       'position 0, i.e. against the guide'),
+                       'напрямної {guide}',
+                       'The plans\' tables give the magnitudes |v|, |a| (a vector\'s length × μ). s is the displacement '
+                       'from the extreme position 0; signs of s, v, a on the diagrams and in the diagrams\' table: + away '
+                       'from position 0, i.e. against the guide {guide}'),
     "kin signs_link": ('Знаки {sym}_{{{n}}} (кут ланки {link} від положення 0), ω_{{{n}}}, ε_{{{n}}} (таблиці, діаграми): + проти годинникової стрілки', 'Signs of {sym}_{{{n}}} (the angle of link {link} from position 0), ω_{{{n}}}, ε_{{{n}}} (tables, diagrams): + counter-clockwise'),
     "kin signs_link_cw": ('Знаки ω_{{{n}}}, ε_{{{n}}} в таблицях планів: + проти годинникової стрілки. {sym}_{{{n}}} — '
                           'кут повороту ланки {link} від крайнього положення 0; знаки {sym}_{{{n}}}, ω_{{{n}}}, '
@@ -680,11 +685,11 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade variant other": (", {n} відповідають іншому положенню", ", {n} fit another position"),
     # issue 24 (one set of numbers, the lab's notation, every check said on the sheet)
     # the sign's parenthesis with no-break spaces: a title wraps before it, never inside it
-    "kin vel_table_signed": ("Таблиця 1. Швидкості, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стрілки)",
-                             "Table 1. Velocities, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
-    "kin acc_table_signed": ("Таблиця {n}. Прискорення, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стрілки), "
+    "kin vel_table_signed": ("Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стр.)",
+                             "Table 1. Velocities: |v|, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
+    "kin acc_table_signed": ("Таблиця {n}. Прискорення |a|, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стрілки), "
                              "положення\u00a0{i}",
-                             "Table {n}. Accelerations, m/s²; ε, rad/s² (+\u00a0counter-clockwise), position\u00a0{i}"),
+                             "Table {n}. Accelerations |a|, m/s²; ε, rad/s² (+\u00a0counter-clockwise), position\u00a0{i}"),
     "sheet phi": ("φ — поворот кривошипа від положення 0 у бік його обертання; положення 0: кут кривошипа {phi0}° "
                   "від осі x",
                   "φ: the crank's turn from position 0 in its sense of rotation; position 0: crank angle {phi0}° "
