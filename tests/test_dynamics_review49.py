@@ -227,14 +227,16 @@ def test_the_coulisses_a1_sheet_lets_delta_t_take_the_room_beside_the_band():
 
 
 def test_the_coulisses_kl_and_motor_follow_from_the_exact_flywheel_and_the_catalogue(coulisse):
-    """|kl| = J·ω_m²·δ/μ_T with the equation of motion's J (flywheel + rotor): the drawn |kl| within
-    the ruler's 0.5 mm of it (Table 2's 0,00 % is the ruler's luck, not a shortcut); and the motor is
+    """|kl| = J·ω_m²·δ/μ_T with the equation of motion's J (flywheel + rotor): the drawn |kl| within 1.5 of
+    the ruler's 0.5-mm divisions of it (Table 2's 0,00 % is the ruler's luck, not a shortcut); and the motor is
     the smallest of the 1000-rpm line of the catalogue (model/motors.toml) whose P_n covers the rule's
     P = M*_c max·ω1/η, M*_c max the closed form's peak over the working stroke."""
     from graphplan.model.motors import catalogue
     dyn, f, doc = coulisse
     J = dyn.flywheel + dyn.constant
-    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= f.precision
+    # within 1.5 ruler divisions: the tangents rest on points each read to ±½ division, and since stop 56
+    # the chords take the points added at M*_c's breaks (dead centres) too — one reading more each
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= 1.5 * f.precision
     phi0 = math.radians(doc["start_phi_deg"])
     peak = max(closed(phi0, u)[0] for u in np.linspace(0.0, STROKE, 4001))
     need = peak * doc["omega_mean"] / 0.88 / 1000.0

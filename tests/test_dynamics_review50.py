@@ -375,13 +375,15 @@ def test_the_drag_links_work_of_resistance_is_the_force_over_twice_o2c(drag):
 
 
 def test_the_drag_links_kl_reads_the_exact_flywheel_and_its_motor_is_sized_snugly(drag):
-    """|kl| within the ruler's 0.5 mm of J·ω_m²·δ/μ_T; the motor the smallest of the 1000-rpm line
+    """|kl| within 1.5 ruler divisions (0.75 mm) of J·ω_m²·δ/μ_T; the motor the smallest of the 1000-rpm line
     over P = M*_c max·ω1/η (0,75 kW for 0,713 kW: not the line's smallest, no catalogue remark)."""
     from graphplan.model.motors import catalogue
     from graphplan.report.dynamics import motor_note
     dyn, f, doc = drag
     J = dyn.flywheel + dyn.constant
-    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= f.precision
+    # within 1.5 ruler divisions: the tangents rest on points each read to ±½ division, and since stop 56
+    # the chords take the points added at M*_c's breaks (dead centres) too — one reading more each
+    assert abs(abs(f.kl) - J * dyn.omega_mean ** 2 * dyn.delta / f.mu_T) <= 1.5 * f.precision
     need = doc["motor"]["power_needed_kW"]
     line = sorted((c.power_kW, c.name) for c in catalogue() if c.rpm_sync == 1000 and c.power_kW >= need)
     assert doc["motor"]["name"] == line[0][1]
