@@ -2249,11 +2249,14 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
         if m.error_pct is not None and abs(m.error_pct) > LAB_LIMIT:
             err += "*"
             why.append(reaction_why(fp, m.key, lang))
+        # the exact direction beside the drawn one, as ``forces`` prints it: a reaction's angle read
+        # off its polygon is where an error of M_b by the plans starts (review 56 #1: R12 read 1.6°
+        # off put M_b at +4.4 % while its magnitude was within 0.05 %)
         rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
-                     num(m.analytic, lang), err])
+                     num(m.analytic, lang), fixed(m.analytic_angle_deg, lang, 1), err])
     bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
-                                             word("exact N", lang), "δ, %"], rows,
-                    [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
+                                             word("exact N", lang), word("exact deg", lang), "δ, %"], rows,
+                    [12.0, 12.0, 16.0, 14.0, 16.0, 14.0, 12.0], step)
     from graphplan.graphic.forceplans import slide_arms
     arms = [slide_arm_text(a, lang) for a in slide_arms(fp)]
     if why or arms:
