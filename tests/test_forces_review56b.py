@@ -95,3 +95,28 @@ def test_printed_moment_equations_balance_as_printed(scene, lang):
             assert abs(_evaluate(line, values, g.mu_l)) < 0.02, line
             seen += len(couples)
     assert seen > 0          # the scenes' couples (M^Φ, the lever's M₃) were printed and checked
+
+
+READABLE_MM = 30.0        # a plan's largest force at least this long where its zone has room
+
+
+@pytest.mark.slow
+def test_press_a1_each_plan_at_a_scale_where_its_forces_read():
+    """The A1 sheet's scales (``force_scales``, as ``forces --format A1`` and the sheet take them):
+    the crank plan at its own μF, not group II(2-3)'s 200 N/mm (R21 was 8.5 mm long in an empty
+    100 × 80 mm zone); every plan's largest force at least ``READABLE_MM``; M_b by the plans as the
+    sheet draws them within the lab's 5 % of the closed form (and of the reviewer's virtual power)."""
+    from conftest import scene_study
+    from graphplan.sheets.forces import force_scales
+    sc = force_scales(scene_study(TOGGLE_PRESS56), "A1")
+    assert sc["group_mu_F"].get("I(0-1)", sc["mu_F"]) < sc["mu_F"]
+    fp = scene_force_plans(TOGGLE_PRESS56, mu_l=sc["mu_l"], mu_F=sc["mu_F"], group_mu=sc["group_mu"],
+                           group_mu_F=sc["group_mu_F"])
+    for g in fp.groups:
+        assert max(s.mm for s in g.sides) >= READABLE_MM, g.label
+    crank = group_of(fp, "I(0-1)")
+    r21 = max(crank.forces, key=lambda f: abs(f.force))
+    # R21 laid at the crank plan's μF (1699 N at the closed form)
+    assert abs(r21.force) / crank.mu_F >= READABLE_MM
+    assert abs(100 * (fp.balancing - REVIEWER_MB) / REVIEWER_MB) < LAB_LIMIT
+    assert abs(100 * (fp.balancing - fp.analytic) / fp.analytic) < LAB_LIMIT

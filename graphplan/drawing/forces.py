@@ -322,7 +322,12 @@ def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[co
         return at
     spots = [a + (b - a) * k / n for a, b in own
              for n in [max(1, int(abs(b - a) / COUPLE_STEP_MM))] for k in range(n + 1)]
-    best = max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
+    # the nearest spot to its point with the room, else the roomiest: the slotted lever's M3 and
+    # M^Φ3 went to the roomiest, 0.06 m from the pivot O2 with S3 at 0.16 m, and read as the
+    # pivot's (review56 #7)
+    near = [z for z in spots if room(z) >= COUPLE_CROWD_MM]
+    best = min(near, key=lambda z: abs(z - at)) if near else \
+        max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
     return best if room(best) >= here + COUPLE_GAIN_MM else at
 
 
