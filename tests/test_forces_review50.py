@@ -66,8 +66,10 @@ def _d(pos, key: str, order: int, h: float = 1e-4) -> complex:
 
 
 def test_balancing_moment_agrees_with_the_closed_form_power_balance(fp):
-    """M_зр from the plans equals −ΣP/ω1 of the closed-form six-bar within 1.5 % (the plans' ruler
-    and the acceleration plan's reading), the 120 N·m opposing the coulisse's turning."""
+    """M_зр from the plans equals −ΣP/ω1 of the closed-form six-bar within 2.5 % (the plans' ruler
+    and the acceleration plan's reading), the 120 N·m opposing the coulisse's turning. (R12 is the
+    textbook's R^τ12 + R^n12 since review56 #1: its direction 0.05° off, its R^n12 read 37.5 mm at
+    4 N/mm where the closing side read 38.5 — a ruler's step of 2.6 % either way, −2.1 % here.)"""
     pos = _closed_form(fp)
     g = 9.81
     power = 0.0
@@ -79,7 +81,7 @@ def test_balancing_moment_agrees_with_the_closed_form_power_balance(fp):
     w5 = _d(pos, "phi5", 1).real
     power += -120.0 * math.copysign(1.0, w5) * w5
     closed = -power / W1
-    assert fp.balancing == pytest.approx(closed, rel=0.015)
+    assert fp.balancing == pytest.approx(closed, rel=0.025)
     assert fp.ks.balancing[0] == pytest.approx(closed, rel=1e-3)
 
 

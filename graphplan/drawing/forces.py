@@ -322,7 +322,12 @@ def couple_spot(at: complex, own: list[tuple[complex, complex]], points: list[co
         return at
     spots = [a + (b - a) * k / n for a, b in own
              for n in [max(1, int(abs(b - a) / COUPLE_STEP_MM))] for k in range(n + 1)]
-    best = max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
+    # the nearest spot to its point with the room, else the roomiest: the slotted lever's M3 and
+    # M^Φ3 went to the roomiest, 0.06 m from the pivot O2 with S3 at 0.16 m, and read as the
+    # pivot's (review56 #7)
+    near = [z for z in spots if room(z) >= COUPLE_CROWD_MM]
+    best = min(near, key=lambda z: abs(z - at)) if near else \
+        max(spots, key=lambda z: (round(room(z), 6), -abs(z - at)))
     return best if room(best) >= here + COUPLE_GAIN_MM else at
 
 
@@ -2249,11 +2254,14 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
         if m.error_pct is not None and abs(m.error_pct) > LAB_LIMIT:
             err += "*"
             why.append(reaction_why(fp, m.key, lang))
+        # the exact direction beside the drawn one, as ``forces`` prints it: a reaction's angle read
+        # off its polygon is where an error of M_b by the plans starts (review 56 #1: R12 read 1.6°
+        # off put M_b at +4.4 % while its magnitude was within 0.05 %)
         rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
-                     num(m.analytic, lang), err])
+                     num(m.analytic, lang), fixed(m.analytic_angle_deg, lang, 1), err])
     bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
-                                             word("exact N", lang), "δ, %"], rows,
-                    [14.0, 14.0, 18.0, 16.0, 18.0, 14.0], step)
+                                             word("exact N", lang), word("exact deg", lang), "δ, %"], rows,
+                    [12.0, 12.0, 16.0, 14.0, 16.0, 14.0, 12.0], step)
     from graphplan.graphic.forceplans import slide_arms
     arms = [slide_arm_text(a, lang) for a in slide_arms(fp)]
     if why or arms:

@@ -137,8 +137,12 @@ def forces_table(fp, lang: str = "uk") -> str:
         if gp.mu_F and gp.mu_F != fp.mu_F:      # its force plan at its own scale (the force sheet's)
             lines.append(plain(f"  μ_F = {n(gp.mu_F)} {unit('N/mm', lang)}"))
         for eq in gp.equations:
+            # arms in drawing mm: a couple enters as M/μ_l (N·m over m/mm), as the textbook writes it
+            # beside F·h with h in mm (review 56 #3: «− M^Φ₄» next to «G₄·49» read N·m beside N·mm);
+            # the balancing equation keeps M_зр in N·m, its forces' arms × μ_l (said in its line)
+            over = "" if eq.unknown == "M_b" else "/μ_l"
             terms = " ".join(f"{'+' if t.value >= 0 else '−'} {sym(t.name)}" +
-                             ("" if t.couple else f"·{n(abs(t.arm_mm))}") for t in eq.terms)
+                             (over if t.couple else f"·{n(abs(t.arm_mm))}") for t in eq.terms)
             if eq.unknown == "M_b":
                 lines.append(plain(w("moment eq balancing", about=eq.about, terms=terms, r=n(eq.result, 5))))
             else:

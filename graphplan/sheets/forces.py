@@ -1602,7 +1602,8 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                         w, h = dr.group_size(mu, i, nxt, fams["groups"].caption)
                     else:
                         w, h = dr.plan_size(mu, i, nxt, fams["forces"].caption)
-                    trial[fam][i] = Leaf(trial[fam][i].name, w + GROW_MARGIN, h + GROW_MARGIN)
+                    trial[fam][i] = Leaf(trial[fam][i].name, *(margined(w, h, trial[fam][i]) if fam == "forces"
+                                                               else (w + GROW_MARGIN, h + GROW_MARGIN)))
                 # the notes may take a line (the groups' μl apart from the scheme's): then fitted again
                 if _fits(nat, f, p, trial) and (_lettering_kept(dr, nat, trial_mu, p) or _fits(nat, f, p, trial)):
                     mu, leaves = trial_mu, trial
@@ -1684,6 +1685,15 @@ def _costs_nothing(nat: Natural, floored: Plan, free: Plan) -> bool:
 GROW_MARGIN = 3.0     # mm a grown group's cell keeps over its measured size (labels settle differently)
 
 
+def margined(w: float, h: float, cell: Leaf) -> tuple[float, float]:
+    """A grown force plan's cell over its measured size ``w`` × ``h`` (``GROW_MARGIN``) where that is
+    larger than its ``cell`` so far; a side the drawing, as measured, does not outgrow keeps the
+    cell's (the composition held it already): the toggle press's crank plan, as wide as its 91 mm
+    cell at every μF, was barred from 25 N/mm by the margin alone and stayed at 200 N/mm — R21
+    8.5 mm long in an empty 100 × 80 mm zone (review56 #1)."""
+    return (cell.w if w <= cell.w + 1e-9 else w + GROW_MARGIN), (cell.h if h <= cell.h + 1e-9 else h + GROW_MARGIN)
+
+
 def _fits(nat: Natural, f: Form, p: Plan, leaves: dict[str, list[Leaf]]) -> bool:
     """Whether the plan's composition, with these drawings' sizes, still fits the sheet (one sheet)
     or needs no more sheets (a set)."""
@@ -1762,7 +1772,7 @@ def _grown_groups(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 w, h = dr.group_size(mu, i, s, fams["groups"].caption)
             else:
                 w, h = dr.plan_size(mu, i, s, fams["forces"].caption)   # as drawn, in both languages
-            trial = {**leaves, fam: [*leaves[fam][:i], Leaf(leaves[fam][i].name, w + GROW_MARGIN, h + GROW_MARGIN),
+            trial = {**leaves, fam: [*leaves[fam][:i], Leaf(leaves[fam][i].name, *(margined(w, h, leaves[fam][i]) if fam == "forces" else (w + GROW_MARGIN, h + GROW_MARGIN))),
                                      *leaves[fam][i + 1:]]}
             if _fits(nat, f, p, trial):
                 mu[key_of(fam, i)] = s
@@ -1806,7 +1816,7 @@ def _plan_over_group(dr: ForceDrafter, nat: Natural, f: Form, p: Plan, mu: dict[
             w, h = dr.plan_size(trial_mu, i, s, fams["forces"].caption)
             trial = {**leaves,
                      "groups": [*leaves["groups"][:i], group_leaf, *leaves["groups"][i + 1:]],
-                     "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name, w + GROW_MARGIN, h + GROW_MARGIN),
+                     "forces": [*leaves["forces"][:i], Leaf(leaves["forces"][i].name, *margined(w, h, leaves["forces"][i])),
                                 *leaves["forces"][i + 1:]]}
             if not _fits(nat, f, p, trial):
                 break
@@ -1858,8 +1868,7 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
     if own:
         fam = nat.families["groups"]
         fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
-        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in dr.group_size(mu, i, own[gp.label],
-                                                                                    fam.caption)))
+        leaves["groups"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in dr.group_size(mu, i, own[gp.label], fam.caption)))
                             if gp.label in own else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["groups"], fp.groups))]
     drawn = dr.memo.get(("scheme size", mu["scheme"], mu["forces"]))
@@ -1870,7 +1879,7 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
     if plans:                                      # a force plan at its own μF (``_grown_plans``)
         fam = nat.families["forces"]
         fp = dr.fp(mu["groups"], mu["forces"], mu["lever"])
-        leaves["forces"] = [Leaf(leaf.name, *(x + GROW_MARGIN for x in _plan_cell(dr, mu, fam, plans[gp.label], i)))
+        leaves["forces"] = [Leaf(leaf.name, *margined(*_plan_cell(dr, mu, fam, plans[gp.label], i), leaf))
                             if gp.label in plans else leaf
                             for i, (leaf, gp) in enumerate(zip(leaves["forces"], fp.groups))]
     return leaves
