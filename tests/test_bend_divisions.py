@@ -5,7 +5,6 @@ divisions read, and gives each small value's error as a share of |max| too."""
 from __future__ import annotations
 
 import numpy as np
-import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st_
 
@@ -108,32 +107,3 @@ def test_link55_note_says_what_extra_divisions_read_and_which_values_are_small()
             assert pct in note, (p, pct, note)
         assert ("у 3 це відсоток малого числа" if lang == "uk" else "at 3 a percent of a small number") in note
         assert "у 3, 6 це" not in note and "at 3, 6 a" not in note
-
-
-READER_MM = 2 * 0.8 + 0.25    # overprint.py closes 0.8 mm round each word's ink, and a 4-px/mm edge pixel more
-
-
-def _gap(a, b) -> float:
-    """The distance (mm) between two boxes (x0, y0, x1, y1): 0 where they meet."""
-    dx = max(a[0] - b[2], b[0] - a[2], 0.0)
-    dy = max(a[1] - b[3], b[1] - a[3], 0.0)
-    return (dx * dx + dy * dy) ** 0.5
-
-
-@pytest.mark.slow
-def test_stephenson_acceleration_plan_labels_do_not_read_as_one_word():
-    """Review 55's Stephenson six-bar in English at its A1 sheet's scales: position 9's acceleration
-    plan lettered «n₄» 1.6 mm over «n₂, a» — without the font (the fallback's glyphs fill the ink
-    boxes) the reader closed them into one word. Every two labels of both acceleration plans now
-    stand farther apart than the reader's closing (their ink boxes, the union of both fonts')."""
-    from graphplan.api import study
-    from graphplan.drawing.plans import acceleration_records
-    from graphplan.graphic.plans import build_plans
-    from graphplan.model.scene import loads
-    st = study(loads(R.KIN56_STEPHENSON, "<test>"), lang="en")
-    pl = build_plans(st, count=12, accel=[3, 9], precision=0.5, mu_l=0.0025, mu_v=0.025, mu_a=0.213)
-    for k, rec in acceleration_records(pl).items():
-        boxes = [(p.text, p.ink()) for p in rec.items if p.kind == "text"]
-        for i, (ta, a) in enumerate(boxes):
-            for tb, b in boxes[i + 1:]:
-                assert _gap(a, b) > READER_MM, (k, ta, tb, _gap(a, b))
