@@ -32,10 +32,7 @@ STEEP_CLEAR = 1.2    # … beside a diagram's point number (``place_beside``), f
 #                      on its own (horizontal) axis, 3.9 mm off its point (stop 54)
 STEEP = math.tan(math.radians(30.0))   # a line within 30° of the vertical is steep (|dx| ≤ STEEP·|dy|)
 CHECK = 0.3          # … the least the check accepts (a reader sees 0.25 mm as touching)
-APART = 2.0          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d"; the reader
-                     # (overprint.py) closes 0.8 mm round each word and an edge pixel more: the Stephenson's
-                     # «n₄» 1.6 mm over «n₂, a» read as one word with its «a» where a viewer letters with the
-                     # fallback font, whose glyphs fill the ink boxes (the union of both fonts') to their edge)
+APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words read as one: "s4d")
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
 LINK_APART = 6.0     # … where one is a link's number (5 mm high: "2" 3 mm from "1" still reads "2 1")
 LINK_SIZE = 5.0      # mm: the height of a link's number (drawing.plans.link_numbers)

@@ -105,8 +105,6 @@ def sheet_notes(d: Diagrams, lang: str, table: int | None = None,
     lines += [item["note_uk" if lang == "uk" else "note"] for item in d.warnings if item["kind"] == "qualitative"]
     said = short_limit_note(d, lang, table, printed)
     lines += [said] if said else []
-    said = small_values_note(d, lang, printed) if said else None
-    lines += [said] if said else []
     return lines
 
 
@@ -174,6 +172,7 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
             said.append((reading, "both", float(own[key][worst])))
     if not said:
         return None
+    small = _small_values(d, errs, lang)
     step = num(360.0 / d.divisions, lang, 3)
     s0, p = f"{d.symbols[0]}_{{{d.sub}}}", num(d.precision, lang)
     if d.method == "tangents":
@@ -217,24 +216,12 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
     if bend is not None:        # the extra divisions where the curve bends, measured (issue 32, item 2)
         tail = (f"; {_short(bend, uk)} дають {fixed(bend.worst_pct, lang, 1)} %" if uk else
                 f"; {_short(bend, uk)} read {fixed(bend.worst_pct, lang, 1)} %") + tail
-    tail = _finer_worse(d, trials, lang) + tail
+    tail = _finer_worse(d, trials, lang) + tail + small
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
              f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
 
 
 SMALL = 0.25    # a value under this share of its cycle's |max| is small: its reading's δ is a share of a small number
-
-
-def small_values_note(d: Diagrams, lang: str, printed: dict[str, np.ndarray] | None = None) -> str | None:
-    """The sheet's line after ``short_limit_note`` on the readings past 5 % that are of small values
-    (``_small_values``), their δ as the sheet's table prints them; None where there is none."""
-    errs = as_drawn(d, d.position_errors())
-    errs |= {key: np.nan_to_num(np.asarray(e, dtype=float), nan=0.0) for key, e in (printed or {}).items()}
-    said = _small_values(d, errs, lang)
-    if not said:
-        return None
-    return ("Малі значення (δ понад 5 % від малого числа): " if lang == "uk" else
-            "Small values (δ past 5 % of a small number): ") + said[2:]
 
 
 def _small_values(d: Diagrams, errs: dict[str, np.ndarray], lang: str) -> str:
