@@ -333,32 +333,6 @@ def ruler_on_s(d: Diagrams, factor: int = 1) -> dict[str, np.ndarray] | None:
             for key, got, mu in (("v_at", r.v_at, d.mu_v), ("a_at", r.a_at, d.mu_a))}
 
 
-def bend_turns(d: Diagrams) -> np.ndarray | None:
-    """The division ordinates a student adds where the curve bends (issue 32, item 2): the drawing's
-    ordinates with each interval either side of a position whose v or a the same construction with
-    an exact ruler reads past the lab's 5 % (the chords' own error: a bend sharp for the step)
-    halved — the positions kept, the rest of the cycle as drawn. None where no position's own error
-    is past 5 % (the ruler, not the step, is then what misses) or where every interval would be
-    halved (that is "double")."""
-    if not d.at_positions or d.method != "chords":
-        return None
-    own = d.position_errors(d.exact)
-    k = np.asarray(d.at_positions)
-    bad = np.zeros(len(k), dtype=bool)
-    for key in ("v_at", "a_at"):
-        bad |= np.abs(np.asarray(own[key], dtype=float)) > LAB_LIMIT
-    if not bad.any():
-        return None
-    n = len(d.turn) - 1
-    halve = np.zeros(n, dtype=bool)
-    for j in k[bad]:
-        halve[(j - 1) % n] = True       # the intervals either side of the ordinate j
-        halve[j % n] = True
-    if halve.all() or n + int(halve.sum()) > MAX_DIVISIONS:
-        return None
-    return np.sort(np.concatenate((d.turn, midpoints(d.turn)[halve])))
-
-
 def try_alternatives(d: Diagrams) -> list[Trial]:
     """What a student would try where the values read at the positions miss the lab's 5 %, each
     drawn on the exact s at the same scales and read with the same ruler (a few ms, no sheet):
@@ -376,10 +350,6 @@ def try_alternatives(d: Diagrams) -> list[Trial]:
             trials.append(Trial("adaptive", len(fine) - 1, "--adaptive", *_trial_worst(d, fine, "chords", d.correct)))
         else:       # no interval where halving pays (the ruler's error would grow more than the chords' falls)
             trials.append(Trial("adaptive none", n, "", d.worst_pct(), d.worst_pct(d.exact)))
-    bend = bend_turns(d)
-    if bend is not None:
-        trials.append(Trial("bend", len(bend) - 1, "--divisions " + ",".join(f"{u:g}" for u in bend[1:-1]),
-                            *_trial_worst(d, bend, d.method, d.correct)))
     if 2 * n <= MAX_DIVISIONS:
         double = np.sort(np.concatenate((d.turn, midpoints(d.turn))))
         trials.append(Trial("double", 2 * n, f"--divisions {2 * n}" if uniform or d.method == "tangents" else "",
@@ -398,8 +368,6 @@ TRIAL_WORDS = {"adaptive": ("smaller intervals where the curve bends, {n} divisi
                "adaptive none": ("the adaptive mode, which finds no interval worth halving",
                                  "адаптивний поділ, що не знаходить інтервалу, який варто поділити"),
                "double": ("{n} divisions", "{n} {many}"),
-               "bend": ("extra divisions where the curve bends, {n} in all",
-                        "додаткові поділки там, де крива згинається, {n} усього"),
                "correct": ("the area correction", "корекція площ"),
                "tangents": ("the method of tangents", "метод дотичних"),
                "chords": ("the method of chords", "метод хорд")}

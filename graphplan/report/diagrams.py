@@ -172,7 +172,6 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
             said.append((reading, "both", float(own[key][worst])))
     if not said:
         return None
-    small = _small_values(d, errs, lang)
     step = num(360.0 / d.divisions, lang, 3)
     s0, p = f"{d.symbols[0]}_{{{d.sub}}}", num(d.precision, lang)
     if d.method == "tangents":
@@ -212,54 +211,9 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
                 else "; no other construction tried keeps within 5 %")
     else:
         tail = ""
-    bend = next((t for t in trials if t.key == "bend" and t.worst_pct > LAB_LIMIT), None)
-    if bend is not None:        # the extra divisions where the curve bends, measured (issue 32, item 2)
-        tail = (f"; {_short(bend, uk)} дають {fixed(bend.worst_pct, lang, 1)} %" if uk else
-                f"; {_short(bend, uk)} read {fixed(bend.worst_pct, lang, 1)} %") + tail
-    tail = _finer_worse(d, trials, lang) + tail + small
+    tail = _finer_worse(d, trials, lang) + tail
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
              f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
-
-
-SMALL = 0.25    # a value under this share of its cycle's |max| is small: its reading's δ is a share of a small number
-
-
-def _small_values(d: Diagrams, errs: dict[str, np.ndarray], lang: str) -> str:
-    """Where a reading past the lab's 5 % is of a small value (|exact| under ``SMALL`` of the cycle's
-    |max|, near a zero or in a notch of the curve — LINK55's ε5 of 5,6 rad/s² at 6 where the lever
-    nearly dwells, its |max| 35,9): the same reading's error as a share of |max|, so the note says
-    honestly which are the drawing's failure (past 5 % of |max| too) and which only a percent of a
-    small number. Empty where no reading past 5 % is of a small value."""
-    from graphplan.graphic.diagrams import LAB_LIMIT, MEANINGFUL
-    uk = lang == "uk"
-    idx = d.at_positions
-    out = []
-    for key, sym in (("v_at", d.symbols[1]), ("a_at", d.symbols[2])):
-        big = float(d.maxima[key[0]])
-        if big <= 0:
-            continue
-        truth = np.asarray(d.truth[key][idx], dtype=float)
-        e = np.asarray(errs[key], dtype=float)
-        rows = [i for i in range(len(idx)) if abs(e[i]) > LAB_LIMIT and MEANINGFUL * big <= abs(truth[i]) < SMALL * big]
-        if not rows:
-            continue
-        name = f"{sym}_{{{d.sub}}}"
-        of_max = [e[i] * abs(truth[i]) / big for i in rows]
-        ps_all = ", ".join(str(d.position[idx[i]]) for i in rows)
-        shares = ", ".join(fixed(100.0 * abs(truth[i]) / big, lang, 0) for i in rows)
-        offs = ", ".join(_signed(m, lang, 1) for m in of_max)
-        fine = [d.position[idx[i]] for i, m in zip(rows, of_max) if abs(m) <= LAB_LIMIT]
-        verdict = ""
-        if fine:
-            ps = ", ".join(str(p) for p in fine)
-            verdict = (f" — у {ps} це відсоток малого числа, не вада креслення" if uk else
-                       f" — at {ps} a percent of a small number, not a failure of the drawing")
-        one = len(rows) == 1
-        out.append((f"; {name} у {ps_all} мал{'е' if one else 'і'} ({shares} % |{name}|_{{max}}): похибка від "
-                    f"|{name}|_{{max}} {offs} %" if uk else
-                    f"; {name} at {ps_all} {'is' if one else 'are'} small ({shares} % of |{name}|_{{max}}): "
-                    f"the error of |{name}|_{{max}} {offs} %") + verdict)
-    return "".join(out)
 
 
 def _finer_worse(d: Diagrams, trials, lang: str) -> str:
@@ -344,7 +298,6 @@ def _signed(value: float, lang: str, places: int) -> str:
 
 
 SHORT = {"adaptive": ("smaller intervals", "менші інтервали"), "double": ("{n} divisions", "{n} {many}"),
-         "bend": ("extra divisions at the bends ({n})", "додаткові поділки на згинах ({n})"),
          "correct": ("the correction", "корекція площ"), "tangents": ("tangents", "дотичні"), "chords": ("chords", "хорди")}
 
 
