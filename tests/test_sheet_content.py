@@ -165,12 +165,12 @@ def test_reaction_past_the_lab_limit_is_marked_and_explained():
     lines = record_texts(results_record(fp))
     r05 = fp.reactions()["R05"]
     assert abs(r05.error_pct) > 5 and r05.mm < 20
-    row = row_after(lines, "R_{05}", 6)
+    row = row_after(lines, "R_{05}", 7)      # R, mm, N, angle, exact N, exact angle, δ
     assert row[-1].endswith("*") and row[-1].startswith("−")
     assert any("R_{05}" in t and "короткий вектор" in t for t in lines)
     for m in fp.reactions().values():            # every other δ unmarked
         if abs(m.error_pct or 0) <= 5:
-            cell = row_after(lines, m.key.replace("R", "R_{") + "}", 6)[-1]
+            cell = row_after(lines, m.key.replace("R", "R_{") + "}", 7)[-1]
             assert not cell.endswith("*")
 
 
