@@ -929,22 +929,36 @@ def hatch_lines(curve: list[tuple[float, float]], pitch: float) -> list[tuple[fl
     return out
 
 
+def resistance_loads(t: Turn) -> tuple[list, bool]:
+    """The loads the resistance diagram draws, and whether they are moments: the output's own —
+    the forces at its point (forces on two pistons are not summed, review 13: a V-twin's chart drew
+    |P_C + P_B|, P_B constant on the other piston), else the moments on an output link that turns
+    (stop 57: the kneading machine's rocker carries its 70 N·m working moment, the slider it is
+    driven through 300 N on both strokes — the chart drew that constant 300 N over the rocker's
+    angle ψ₅, a hatched rectangle with no stroke in it, and left out the rocker's own resistance) —
+    else every external force, else every external moment. ([], False) without an external load."""
+    ext = [ld for ld in t.ks.loads if ld.kind == "external"]
+    out = t.ks.st.output
+    forces = [ld for ld in ext if ld.point is not None]
+    own = [ld for ld in forces if ld.point == out.name]
+    moments = [ld for ld in ext if ld.point is None and out.kind != "slide" and ld.link == out.name]
+    if own:
+        return own, False
+    if moments:
+        return moments, True
+    return (forces, False) if forces else (ext, bool(ext))
+
+
 def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
     """Seed 000's diagram of the resistance force: |P| of the output's external force (else of the
     external forces) along the output's path
     over the cycle from position 0 (the stroke out, then back), so the working stroke carries the
     force and the idle stroke lies on the axis (unless a load acts on it too), the loaded spans hatched — each position numbered once, under its own stroke
     (the scene's ``positions.working_stroke``); None when the scene has no external force."""
-    ext = [ld for ld in t.ks.loads if ld.kind == "external"]
+    ext, couple = resistance_loads(t)
     if not ext:
         return None
-    forces = [ld for ld in ext if ld.point is not None]
-    couple = not forces                  # a resistance moment alone (on a rocker): M(φ) of the output
     st = t.ks.st
-    # the output's own force where it has one: forces on two pistons are not summed (review 13: a
-    # V-twin's chart drew |P_C + P_B|, P_B constant on the other piston)
-    forces = [ld for ld in forces if ld.point == st.output.name] or forces
-    ext = forces or ext
     path = path_travelled(t)
     dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
     # a slide's path s with μ_s; a rocking output's angle ψ_5 from position 0 (the kinematics sheet's

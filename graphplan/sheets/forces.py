@@ -375,7 +375,8 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
     # the captions' short form: the full one widened the scheme's and the acceleration plan's cells by
     # ~20 mm, and the sieve's A1 force sheet lost its grown crank group (1:2 → the family's 1:4)
     at = force_position(dr.st, dr.phi, lang, short=True)
-    moment_only = not any(ld.kind == "external" and ld.point is not None for ld in dr.turn.ks.loads)
+    from graphplan.drawing.charts import resistance_loads
+    moment_only = resistance_loads(dr.turn)[1]     # the chart's load: the output's own
     out = {"scheme": [(w('mechanism'), f"{format_scale('mu_l', mu['scheme'], lang)},  {at}")],
            "groups": [(_caption(n, lang), format_scale('mu_l', gp.mu_l or mu['groups'], lang))
                       for n, gp in zip(names["groups"], dr.groups_fp(mu).groups)],
