@@ -131,7 +131,7 @@ def test_given_rows_say_the_scene(lang):
 
 def test_the_given_table_takes_the_room_under_the_profile():
     """with_given on a page whose profile stands 120 mm over Table 1: the given data between them, a GAP
-    clear of both, Table 1 renumbered 2 under it, the profile's box narrowed to its ink; with no room
+    clear of both, as wide as Table 1 (renumbered 2) under it, the profile's box narrowed to its ink; with no room
     (the profile down to the table) the page as it was."""
     from graphplan.drawing.layout import GAP, Placed
     from graphplan.graphic.record import Record
@@ -150,6 +150,8 @@ def test_the_given_table_takes_the_room_under_the_profile():
     gb, tb, pb = (names[k].record.bounds() for k in ("given", "table", "profile"))
     assert gb[1] >= tb[3] + GAP - 1e-6 and gb[3] <= pb[1] - GAP + 1e-6
     assert names["profile"].box[1] >= names["given"].box[3] - 1e-9
+    # as wide as Table 2 under it (stop 57: 162 mm over 248 left a blank over the title block)
+    assert gb[2] - gb[0] == pytest.approx(tb[2] - tb[0], abs=0.5) and gb[0] == pytest.approx(tb[0], abs=0.5)
     texts = [p.text for p in names["table"].record.items if p.kind == "text"]
     assert texts[0].startswith("Таблиця 2.")
     assert any(p.text == "Таблиця 1. Вихідні дані" for p in names["given"].record.items if p.kind == "text")
