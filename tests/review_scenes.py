@@ -7313,3 +7313,41 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+# cam57: the lead's stop-57 cam (/work/lead/s57/cam57.toml): a translating roller follower, offset "auto", the cam
+# clockwise, a trapezoidal rise of 100°, a far dwell of 40°, a cosine return of 130°, 8 divisions, [ϑ] 30°/40°
+CAM57 = """title = "Кулачковий механізм з поступальним роликовим штовхачем (перевірка 57)"
+title_en = "Cam with a translating roller follower (check 57)"
+designation = "ТММ.КМ.57.100"
+[cam]
+follower = "translating"
+stroke = 0.032
+offset = "auto"
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 40, return = 130, dwell_near = 90 }
+laws = { rise = "trapezoidal", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 200
+direction = "cw"
+divisions = 8
+"""
+
+# cam57: the blind reviewer's stop-57 cam (/work/wt/review57-scratch/c_cam.toml): e = +8 mm and R0 = 50 mm GIVEN,
+# below the smallest 50.4 mm (ϑ_max 25.14° > [ϑ] 25°), the cam clockwise, parabolic rise 90°, cycloidal return 110°
+CAM57_SMALL_R0 = """title = "Кулачковий механізм з дезаксіальним роликовим штовхачем (рецензія 57)"
+title_en = "Disc cam with an offset translating roller follower (review 57)"
+designation = "ТММ.КМ.57.500"
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = 0.008
+base_radius = 0.05
+roller_radius = 0.01
+phases_deg = { rise = 90, dwell_far = 60, return = 110, dwell_near = 100 }
+laws = { rise = "parabolic", return = "cycloidal" }
+pressure_angle_deg = { rise = 25, return = 35 }
+rpm = 150
+direction = "cw"
+divisions = 9
+"""

@@ -131,7 +131,7 @@ def test_given_rows_say_the_scene(lang):
 
 def test_the_given_table_takes_the_room_under_the_profile():
     """with_given on a page whose profile stands 120 mm over Table 1: the given data between them, a GAP
-    clear of both, Table 1 renumbered 2 under it, the profile's box narrowed to its ink; with no room
+    clear of both, as wide as Table 1 (renumbered 2) under it, the profile's box narrowed to its ink; with no room
     (the profile down to the table) the page as it was."""
     from graphplan.drawing.layout import GAP, Placed
     from graphplan.graphic.record import Record
@@ -150,6 +150,8 @@ def test_the_given_table_takes_the_room_under_the_profile():
     gb, tb, pb = (names[k].record.bounds() for k in ("given", "table", "profile"))
     assert gb[1] >= tb[3] + GAP - 1e-6 and gb[3] <= pb[1] - GAP + 1e-6
     assert names["profile"].box[1] >= names["given"].box[3] - 1e-9
+    # as wide as Table 2 under it (stop 57: 162 mm over 248 left a blank over the title block)
+    assert gb[2] - gb[0] == pytest.approx(tb[2] - tb[0], abs=0.5) and gb[0] == pytest.approx(tb[0], abs=0.5)
     texts = [p.text for p in names["table"].record.items if p.kind == "text"]
     assert texts[0].startswith("Таблиця 2.")
     assert any(p.text == "Таблиця 1. Вихідні дані" for p in names["given"].record.items if p.kind == "text")
@@ -216,16 +218,48 @@ def test_own_cam54_rocking_knife_edge_by_brute_force():
     assert max(abs(angles[k] - abs(p["graphical"]["pressure_angle_deg"])) for k, p in enumerate(doc["positions"])) < 1.0
 
 
+def test_a_sets_sheet_of_table_1_alone_draws_it_large(cam54):
+    """_table_alone on a set's sheet that holds Table 1 alone (CAM54's table of 10 divisions on an A3
+    continuation sheet): lettered 3.5 mm (its body's median letter height), centred in the field over
+    form 2a; a sheet holding the table and the notes stays as it is. (Stop 57: OWN_CAM54's A3 set, which
+    this test built, no longer has such a sheet — its notes now share the table's sheet, a better use
+    of it —, so the rule is tested on the page itself.)"""
+    from graphplan.drawing.layout import Placed
+    from graphplan.sheets.cam import _table_alone, positions_table
+    from graphplan.sheets.camgiven import tab_size
+    from graphplan.sheets.compose import field_of, later_keep
+    from graphplan.sheets.form import form
+    doc = cam54[3]
+    f = form("A3")
+    small = positions_table(doc, "uk")                          # 2.5-mm letters in 6-mm rows
+    page = [Placed("table", small, small.bounds())]
+    out = _table_alone(page, doc, "uk", f, 1)
+    assert [p.name for p in out] == ["table"] and tab_size(small) == pytest.approx(2.5)
+    assert tab_size(out[0].record) == pytest.approx(3.5)
+    b, (x0, _, x1, y1), floor = out[0].record.bounds(), field_of(f), later_keep(f)[3]
+    assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and floor <= b[1] and b[3] <= y1 + 1e-6
+    assert (b[0] + b[2]) / 2 == pytest.approx((x0 + x1) / 2, abs=0.01)
+    shared = page + [Placed("notes", small.moved(0.0, -100.0), small.bounds())]
+    assert _table_alone(shared, doc, "uk", f, 1) is shared
+
+
 @pytest.mark.slow
-def test_a_sets_sheet_of_table_1_alone_draws_it_large():
-    """OWN_CAM54's A3 set: the sheet that holds Table 1 alone letters it 3.5 mm (its body's median
-    letter height), within the field, no defects."""
+def test_own_cam54s_a3_set_keeps_table_1_with_the_notes_at_most():
+    """OWN_CAM54's A3 set: no defects; Table 1 on a sheet of its own (then lettered 3.5 mm) or with the
+    notes alone, within the field."""
     from graphplan.sheets.cam import build_cam_sheet
     from graphplan.sheets.camgiven import tab_size
-    from graphplan.sheets.compose import SheetOptions, defects
+    from graphplan.sheets.compose import SheetOptions, defects, field_of
     from graphplan.sheets.form import form
     from review_scenes import OWN_CAM54
     sheet = build_cam_sheet(build(tomllib.loads(OWN_CAM54), "<own54>"), form("A3"), SheetOptions(lang="uk", sheet="cam"))
     assert not defects(sheet)
-    alone = [p for page in sheet.pages for p in page.placed if [q.name for q in page.placed] == ["table"]]
-    assert alone and tab_size(alone[0].record) == pytest.approx(3.5)
+    holding = [page for page in sheet.pages if any(p.name == "table" for p in page.placed)]
+    assert len(holding) == 1
+    names = [p.name for p in holding[0].placed]
+    assert sorted(names) in (["table"], ["notes", "table"])
+    tab = next(p for p in holding[0].placed if p.name == "table")
+    if names == ["table"]:
+        assert tab_size(tab.record) == pytest.approx(3.5)
+    b, (x0, y0, x1, y1) = tab.record.bounds(), field_of(sheet.form)
+    assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6

@@ -111,5 +111,13 @@ def test_the_rocking_a3_set_draws_the_pressure_angle_beside_the_profile(tmp_path
     assert sorted(tmp_path.glob("s*.svg")) == sorted(sheets)
     texts = [p.read_text(encoding="utf-8") for p in sheets]
     holding = [k for k, t in enumerate(texts) if "Pressure angle" in t]
-    assert holding == [1] and "Diagram ψ" in texts[1] and "Phase diagram" in texts[2] and "Cam profile" in texts[2]
+    assert "Diagram ψ" in texts[1] and "Phase diagram" in texts[2] and "Cam profile" in texts[2]
     assert "Table 1" in texts[3] and "Table 1" not in texts[2]
+    # ϑ(φ) once, never on the sheet of d²ψ/dφ² and dψ/dφ (review 13 #7), at their μ_φ (review 11, mark 16),
+    # under ψ or beside the profile — where it reads finest (stop 53's rule): stop 57, ψ's sheet leaves
+    # 4 °/mm under it, the profile's sheet 2.5 °/mm
+    import re
+    assert holding in ([1], [2])
+    mu_phi = re.findall(r'">\s*=\s*([\d.]+ rad/mm)', texts[1])          # ψ's caption: μ_φ = 0.01745 rad/mm …
+    mu_theta = re.findall(r'>ϑ</tspan><tspan[^>]*>\s*=\s*([\d.]+) °/mm<', texts[holding[0]])  # … μ_ϑ = 2.5 °/mm
+    assert mu_phi and mu_phi[0] in texts[holding[0]] and mu_theta and float(mu_theta[0]) <= 2.5

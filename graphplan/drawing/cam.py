@@ -1205,6 +1205,15 @@ def pressure_diagram(sol: Solution, g: CamConstruction, lang: str, mu_phi: float
                                    "−" + allowed_text(cam.allowed[ph], lang).split(" = ", 1)[1],
                                    toward=-1j, size=TEXT, step=f"−[ϑ] {ph}"))
     rec.add("polyline", list(zip(xf, theta / mu_theta)), role="curve", layer=LAYER, step="ϑ(φ) exact")
+    # a phase whose largest |ϑ| exceeds its [ϑ] (a given R0 below the smallest): that extreme marked and
+    # lettered with «*», as the notes print it (review 57: the curve crossed the 25° line unmarked)
+    from graphplan.util.words import fixed
+    for ph, (p_deg, t_deg) in enumerate(sol.pressure_extreme_points()):
+        if abs(t_deg) > cam.allowed[ph] + 1e-9:
+            spot = complex(math.radians(p_deg) / mu_phi, t_deg / mu_theta)
+            rec.point((spot.real, spot.imag), role="pole", layer=LAYER, step=f"ϑ over [ϑ] {ph}")
+            labels.append(LabelRequest(spot, fixed(t_deg, lang, 2).replace("-", "−") + "°*",
+                                       toward=(1j if t_deg > 0 else -1j) + 0.6, size=TEXT, step=f"ϑ over [ϑ] {ph}"))
     for k in range(len(x)):
         y = float(g.theta[k]) / mu_theta
         if abs(y) > 1e-9:

@@ -628,11 +628,14 @@ def solve(cam: Cam) -> Solution:
                                  f"лінійний закон {'підйому' if k == 0 else 'опускання'}: жорсткі удари на "
                                  f"кінцях фази (прискорення там нескінченне); {v} будується прямо, без "
                                  "інтегрування"))
+    comma = lambda x: x.replace(".", ",")          # noqa: E731  the Ukrainian decimal comma (review 57)
     if R0 < r_min * (1 - 1e-9):
+        take = math.ceil(r_min * 1000 - 1e-9)           # the whole millimetre the program itself would take
         sol.warnings.append((f"the base radius {R0 * 1000:.1f} mm is below the smallest allowed "
-                             f"{r_min * 1000:.2f} mm: the pressure angle exceeds the allowed one",
-                             f"радіус основної шайби {R0 * 1000:.1f} мм менший за найменший допустимий "
-                             f"{r_min * 1000:.2f} мм: кут тиску перевищує допустимий"))
+                             f"{r_min * 1000:.2f} mm: the pressure angle exceeds the allowed one; take R₀ ≥ {take} mm",
+                             f"радіус основної шайби {comma(f'{R0 * 1000:.1f}')} мм менший за найменший допустимий "
+                             f"{comma(f'{r_min * 1000:.2f}')} мм: кут тиску перевищує допустимий; слід прийняти "
+                             f"R₀ ≥ {take} мм"))
     if cam.roller > 0:
         rho = sol.curvature_min()
         if rho <= cam.roller:
@@ -640,6 +643,7 @@ def solve(cam: Cam) -> Solution:
                                  f"{rho * 1000:.2f} mm is not larger than the roller's {cam.roller * 1000:g} mm; "
                                  "take a smaller roller or a larger base circle",
                                  f"підрізання: найменший радіус кривини опуклої ділянки центрового профілю "
-                                 f"{rho * 1000:.2f} мм не більший за радіус ролика {cam.roller * 1000:g} мм; "
+                                 f"{comma(f'{rho * 1000:.2f}')} мм не більший за радіус ролика "
+                                 f"{comma(f'{cam.roller * 1000:g}')} мм; "
                                  "візьміть менший ролик або більшу основну шайбу"))
     return sol

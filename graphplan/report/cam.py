@@ -102,6 +102,8 @@ WORDS = {
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
            "radius_given": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм",
+           "radius_small": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм — менший "
+                           "за найменший: кут тиску перевищує допустимий (*), слід прийняти R_0 ≥ {k} мм",
            "stroke": "хід h = {h} мм", "swing": "кут розмаху ψ_{{max}} = {h}°",
            "omega": "кулачок обертається {d}, ω = {w} рад/с",
            "sense": {"cw": "за годинниковою стрілкою", "ccw": "проти годинникової стрілки"},
@@ -155,6 +157,8 @@ WORDS = {
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
            "radius_given": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm",
+           "radius_small": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm — below the "
+                           "smallest: the pressure angle exceeds the allowed one (*); take R_0 ≥ {k} mm",
            "stroke": "stroke h = {h} mm", "swing": "swing ψ_{{max}} = {h}°",
            "omega": "the cam turning {d}, ω = {w} rad/s",
            "sense": {"cw": "clockwise", "ccw": "counter-clockwise"},
@@ -375,7 +379,11 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
                                  p=n(doc["arm_angle_deg"])) if rocking else offset_line(w, doc, n))
     g = doc["base_radius_graphical_m"]
     # a scene's own R0 is given, not taken (stop 50: «прийнято R_0 = 60 мм» of a given 60 read as chosen)
-    lines.append(w["radius_given" if doc.get("base_radius_given") else "radius"].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
+    # a given R0 below the smallest said plainly, with the radius to take (review 57: a warning alone)
+    small = doc.get("base_radius_given") and doc["base_radius_m"] < doc["base_radius_min_m"] * (1 - 1e-9)
+    key = "radius_small" if small else "radius_given" if doc.get("base_radius_given") else "radius"
+    lines.append(w[key].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
+                                    k=math.ceil(doc["base_radius_min_m"] * 1000 - 1e-9),
                                     # to 0.01 %, as Table 1's δ (a teacher reads "−0,00805 %" as false precision)
                                     e=("—" if doc["base_radius_error_pct"] is None
                                        else fixed(doc["base_radius_error_pct"], lang, 2).replace("-", "−")),
@@ -387,10 +395,12 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     def at(k: str, first: float, length: float) -> str:
         """The phase's largest ϑ with the φ it falls at and, at an end, which (stop 56: the rocking
         arm's rise printed −27,04° with nothing saying it is the start, where the arm still rests)."""
+        # «*» where the phase's largest exceeds its allowed angle (review 57: 25,14° over 25° unmarked)
+        over = "*" if abs(top[k]) > doc["pressure_angle_allowed_deg"][k] + 1e-9 else ""
         if where is None:
-            return ang(top[k]) + "°"
+            return ang(top[k]) + "°" + over
         p = where[k]
-        said = w["angle_at"].format(a=ang(top[k]), p=_tenth(p, lang))
+        said = w["angle_at"].format(a=ang(top[k]), p=_tenth(p, lang)).replace("°", "°" + over, 1)
         ends = [abs(p - first) < 1e-3, abs(p - first - length) < 1e-3]
         if any(ends):
             said += " (" + w["angle_end"][ends.index(True)] + ")"

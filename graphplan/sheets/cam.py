@@ -25,12 +25,14 @@ from graphplan.util.words import num
 WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма {s}({v}), найменший R_0",
+           "phase_given": "Фазова діаграма {s}({v}), найменший і заданий R_0",
            "profile": "Профіль кулачка (метод обернення руху)",
            "av": "Діаграми {a}, {v} (графічне інтегрування методом хорд)",
            "s": "Діаграма {s} (хорди паралельні променям з полюса P_2 діаграми {v})", "table": "Таблиця 1. Переміщення, аналог "
            "швидкості й кут тиску в точках поділу", "n": "№"},
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams {a}, {v}, {s} (graphical integration by "
            "chords)", "phase": "Phase diagram {s}({v}), smallest R_0",
+           "phase_given": "Phase diagram {s}({v}), smallest and given R_0",
            "profile": "Cam profile (by inversion)",
            "av": "Diagrams {a}, {v} (graphical integration by chords)",
            "s": "Diagram {s} (its chords parallel to the rays from the pole P_2 of {v})", "table": "Table 1. Displacement, velocity analogue and "
@@ -80,6 +82,8 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     from graphplan.report.cam import cam_lines
     lines = cam_lines(doc, lang)
     w = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
+    # a given R0 below the smallest: the R0 line says it with the radius to take (radius_small), not twice
+    w = [x for x in w if not (doc.get("base_radius_given") and x.startswith(("радіус основної шайби", "the base radius")))]
     lines += [("Попередження: " if lang == "uk" else "Warning: ") + escape(x) for x in w]
     cols = table_columns(doc, lang)          # a "*" in Table 1 (δ worked out from its printed values)
     marked = any(c.endswith("*") for c in cols["ds"] + cols["dv"])
@@ -112,7 +116,9 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     profile = f"{scale_text('mu_l', g.mu_l, cam.rocking, lang)} (M {drawing_scale(g.mu_l, lang)})"
     q = symbols(cam.rocking)
     second = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_2 = {num_(g.H2)} {mm}"
-    return {"diagrams": (w["diagrams"].format(**q), first), "phase": (w["phase"].format(**q), phase),
+    # a given R0: O is drawn at it, not at the smallest (review 57: the caption named the smallest alone)
+    phase_cap = w["phase_given" if cam.base_radius is not None else "phase"].format(**q)
+    return {"diagrams": (w["diagrams"].format(**q), first), "phase": (phase_cap, phase),
             "profile": (w["profile"], profile), "av": (w["av"].format(**q), first), "s": (w["s"].format(**q), second)}
 
 

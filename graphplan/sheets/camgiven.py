@@ -66,15 +66,17 @@ def given_rows(cam: Cam, doc: dict, lang: str) -> list[list[str]]:
     return rows
 
 
-def given_table(cam: Cam, doc: dict, lang: str, size: float, row_h: float, number: int = 1) -> Record:
+def given_table(cam: Cam, doc: dict, lang: str, size: float, row_h: float, number: int = 1,
+                span: float | None = None) -> Record:
     """The given data ruled as the sheet's tables are (form.table): the quantity's words from the left,
-    the symbols centred, the values from the left (words and numbers mixed)."""
+    the symbols centred, the values from the left (words and numbers mixed); ``span``: its columns
+    widened in proportion to that width (the width of the table of the divisions under it)."""
     from graphplan.graphic.record import text_width
     rows = given_rows(cam, doc, lang)
     # a left-aligned column a reader's gap wider than its widest cell (a lowered index, «R₀», by the rule)
     widths = [max(w, max(text_width(r[c], size) for r in rows) + 4.0) for c, w in enumerate(WIDTHS)]
     return table(rows, widths, row_h=row_h, size=size,
-                 title=WORDS[lang]["title"].format(n=number), align=["start", "middle", "start"])
+                 title=WORDS[lang]["title"].format(n=number), align=["start", "middle", "start"], span=span)
 
 
 def renumbered(rec: Record, lang: str, old: int, new: int) -> Record:
@@ -123,7 +125,9 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
             table2 = table2.moved(tb[0] - b2[0], tb[1] - b2[1])       # its foot where it stood
         t2 = table2.bounds()
         top, floor = pb[1] - GAP, t2[3] + GAP      # the room: under the profile's ink, over Table 2's title
-        rec = given_table(cam, doc, lang, s, row)
+        # as wide as Table 2 under it (stop 57: 162 mm over a 248-mm Table 2 left 86 × 108 mm blank
+        # in the profile's column, over the title block)
+        rec = given_table(cam, doc, lang, s, row, span=min(t2[2] - t2[0], x1 - x0))
         b = rec.bounds()
         w, h = b[2] - b[0], b[3] - b[1]
         if w > x1 - x0 + 1e-9 or h > top - floor + 1e-9 or collisions(rec):

@@ -1,0 +1,142 @@
+"""Stop 57's cam sheet: the lead's CAM57 (a translating roller follower, offset "auto", the cam clockwise,
+a trapezoidal rise, a cosine return) against a brute force written apart from the code (the laws integrated
+numerically, tg ϑ = (ds/dφ − e)/(s0 + s), the centre profile turned point by point); and the blind
+reviewer's CAM57_SMALL_R0 (R0 GIVEN below the smallest): the notes say so with the radius to take, the
+phase's largest angle over [ϑ] flagged «*» there and on ϑ(φ), the phase diagram's caption names the given
+R0, the Ukrainian warning in decimal commas."""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from camfixtures import cam_fixture
+from review_scenes import CAM57, CAM57_SMALL_R0
+
+cam57 = cam_fixture("cam57", CAM57, 8)
+small = cam_fixture("small", CAM57_SMALL_R0, 9)
+
+
+def _trapezoidal(u):
+    """The trapezoidal-acceleration law's s/h on ``u`` ∈ [0, 1]: the acceleration's trapezoids (ramps over
+    the first and last eighths and the middle quarter) integrated twice numerically, scaled to 1 at u = 1."""
+    grid = np.linspace(0.0, 1.0, 200001)
+    a = np.interp(grid, [0, 1 / 8, 3 / 8, 5 / 8, 7 / 8, 1], [0, 1, 1, -1, -1, 0])
+    v = np.concatenate([[0.0], np.cumsum((a[1:] + a[:-1]) / 2 * np.diff(grid))])
+    s = np.concatenate([[0.0], np.cumsum((v[1:] + v[:-1]) / 2 * np.diff(grid))])
+    return np.interp(u, grid, s / s[-1])
+
+
+def _laws(phi, h, rise, far, ret, f_rise, f_ret):
+    """s(φ) (m) over a whole turn, φ in degrees: the rise by f_rise(u), the far dwell, the return by
+    1 − f_ret(u), the near dwell; ds/dφ by central differences of 1e-4°."""
+    def s_of(p):
+        p = np.asarray(p, float)
+        out = np.zeros_like(p)
+        m = p <= rise
+        out[m] = h * f_rise(p[m] / rise)
+        out[(p > rise) & (p <= rise + far)] = h
+        m = (p > rise + far) & (p <= rise + far + ret)
+        out[m] = h * (1.0 - f_ret((p[m] - rise - far) / ret))
+        return out
+    d = 1e-4
+    v = (s_of(phi + d) - s_of(phi - d)) / math.radians(2 * d)
+    return s_of(phi), v
+
+
+def _theta(s, v, e, R0):
+    """The pressure angle (deg) of a translating follower offset by e: tg ϑ = (ds/dφ − e)/(s0 + s)."""
+    s0 = math.sqrt(R0 ** 2 - e ** 2)
+    return np.degrees(np.arctan((v - e) / (s0 + s)))
+
+
+def _r0_min(s, v, e, phases, allowed):
+    """The smallest R0 at offset e: s0 ≥ |ds/dφ − e|/tg[ϑ] − s over each phase."""
+    s0 = max(float(np.max(np.abs(v[m] - e) / math.tan(math.radians(a)) - s[m])) for m, a in zip(phases, allowed))
+    return math.hypot(e, s0)
+
+
+@pytest.mark.slow
+def test_cam57_offset_base_radius_angles_and_curvature_by_brute_force(cam57):
+    """CAM57: e «auto» within 0.05 mm of the offset that minimises R0 by a scan; R0 min at the program's
+    e to 0.01 mm; each phase's largest |ϑ| at R0 = 32 mm to 0.02° and its φ to 0.2°; ρ_min of the convex
+    centre profile (the cam clockwise: P = C·e^{iφ}) to 0.02 mm."""
+    cam, sol, g, doc = cam57
+    phi = np.linspace(0.0, 360.0, 72001)
+    s, v = _laws(phi, 0.032, 100.0, 40.0, 130.0, _trapezoidal, lambda u: (1 - np.cos(np.pi * u)) / 2)
+    phases = [phi <= 100.0, (phi >= 140.0) & (phi <= 270.0)]
+    coarse = np.linspace(0.0, 0.03, 301)
+    fine = np.linspace(-0.0002, 0.0002, 401) + coarse[np.argmin([_r0_min(s, v, e, phases, (30, 40)) for e in coarse])]
+    e_best = fine[np.argmin([_r0_min(s, v, e, phases, (30, 40)) for e in fine])]
+    e = sol.geometry.e
+    assert abs(e - e_best) < 5e-5
+    assert sol.R0_min == pytest.approx(_r0_min(s, v, e, phases, (30, 40)), abs=1e-5)
+    assert sol.geometry.R0 == pytest.approx(0.032)
+    theta = _theta(s, v, e, 0.032)
+    for (p_deg, t_deg), m in zip(sol.pressure_extreme_points(), phases):
+        k = int(np.argmax(np.abs(theta[m])))
+        assert t_deg == pytest.approx(theta[m][k], abs=0.02) and p_deg == pytest.approx(phi[m][k], abs=0.2)
+    # the centre profile turned point by point: C = (σe, s0 + s) in the fixed frame, σ = −1 (clockwise)
+    s0 = math.sqrt(0.032 ** 2 - e ** 2)
+    P = (-e + 1j * (s0 + s)) * np.exp(1j * np.radians(phi))
+    d1, d2 = np.gradient(P, phi), np.gradient(np.gradient(P, phi), phi)
+    cross = (np.conj(d1) * d2).imag
+    rho = np.abs(d1) ** 3 / cross                   # traversed counter-clockwise: convex where > 0
+    inner = slice(10, -10)
+    assert sol.curvature_min() == pytest.approx(float(np.min(rho[inner][rho[inner] > 0])), abs=2e-5)
+
+
+def test_a_given_base_radius_below_the_smallest_is_said_plainly(small):
+    """CAM57_SMALL_R0 (e = 8 mm, R0 = 50 mm given): the brute force's smallest R0 (50.40 mm) is over the
+    given, its largest rise angle at R0 = 50 mm over 25°. The notes' R0 line says the given radius is
+    below the smallest and to take the next whole millimetre; the rise's angle printed with «*», the
+    return's (under 35°) without; the Ukrainian warning in decimal commas and said once on the sheet."""
+    from graphplan.report.cam import cam_lines
+    from graphplan.sheets.cam import notes
+    cam, sol, g, doc = small
+    phi = np.linspace(0.0, 360.0, 72001)
+    s, v = _laws(phi, 0.03, 90.0, 60.0, 110.0, lambda u: np.where(u <= 0.5, 2 * u ** 2, 1 - 2 * (1 - u) ** 2),
+                 lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi))
+    phases = [phi <= 90.0, (phi >= 150.0) & (phi <= 260.0)]
+    r0 = _r0_min(s, v, 0.008, phases, (25, 35))
+    assert 0.05 < r0 < 0.051 and sol.R0_min == pytest.approx(r0, abs=1e-5)
+    theta = _theta(s, v, 0.008, 0.05)
+    rise = float(np.max(np.abs(theta[phases[0]])))
+    ret = float(np.max(np.abs(theta[phases[1]])))
+    assert rise > 25.0 and ret < 35.0
+    take = math.ceil(r0 * 1000)
+    uk, en = cam_lines(doc, "uk"), cam_lines(doc, "en")
+    assert any("задано R_0 = 50 мм — менший за найменший" in x and f"R_0 ≥ {take} мм" in x for x in uk)
+    assert any("R_0 given = 50 mm — below the smallest" in x and f"take R_0 ≥ {take} mm" in x for x in en)
+    angles = next(x for x in uk if x.startswith("Найбільший кут тиску"))
+    assert f"підйом {rise:.2f}°*".replace(".", ",") in angles
+    assert f"−{ret:.2f}° при".replace(".", ",") in angles
+    warning = next(x for x in doc["warnings_uk"] if x.startswith("радіус основної шайби"))
+    assert "50,0 мм" in warning and f"{r0 * 1000:.2f}".replace(".", ",") in warning and "." not in warning
+    lines = notes(doc, "uk", cam)
+    assert sum("менший за найменший" in x for x in lines) == 1
+
+
+def test_the_excess_is_marked_on_the_pressure_angle_diagram(small):
+    """ϑ(φ) of CAM57_SMALL_R0: a point at the rise's largest ϑ (φ, ϑ as the solution's extreme) lettered
+    with it and «*»; none on the return (within [ϑ])."""
+    from graphplan.drawing.cam import pressure_diagram
+    cam, sol, g, doc = small
+    rec = pressure_diagram(sol, g, "uk", g.mu_phi, 1.0)
+    marks = [p for p in rec.items if p.kind == "point" and p.step.startswith("ϑ over [ϑ]")]
+    (p_deg, t_deg), _ = sol.pressure_extreme_points()
+    assert [p.step for p in marks] == ["ϑ over [ϑ] 0"]
+    assert marks[0].points[0] == pytest.approx((math.radians(p_deg) / g.mu_phi, t_deg))
+    assert any(p.kind == "text" and p.text == f"{t_deg:.2f}°*".replace(".", ",") for p in rec.items)
+
+
+def test_the_phase_diagrams_caption_names_a_given_radius(small):
+    """A given R0: the phase diagram's caption names the smallest and the given R0 (O is drawn at the
+    given one); a chosen R0 keeps «найменший R_0»."""
+    from graphplan.sheets.cam import _captions
+    assert _captions(small[2], small[0], "uk")["phase"][0].endswith("найменший і заданий R_0")
+    assert _captions(small[2], small[0], "en")["phase"][0].endswith("smallest and given R_0")
+    chosen = dataclasses.replace(small[0], base_radius=None)
+    assert _captions(small[2], chosen, "uk")["phase"][0].endswith("), найменший R_0")
