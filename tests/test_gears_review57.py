@@ -111,3 +111,25 @@ def test_the_lead_s_57_a1_draws_the_whole_scheme_within_the_lab_s_limit():
     u = sol.train.ratio
     assert vel.ratio_bound / u < 0.05
     assert abs(vel.ratio - u) <= vel.ratio_bound + 1e-9
+
+
+@pytest.mark.slow
+def test_gears56_a3_draws_its_scheme_where_the_radii_fall_on_the_ruler():
+    """GEARS56's A3 set drew its train at 1:2 — r1, aw, r3 = 22,5, 78,75, 106,25 mm laid off as 11, 39,5
+    and 53 mm — and read u1H +4,78 % within ±6,1 %, the rounding of the radii most of it. The set now tries
+    the scheme one and two GOST steps smaller where the bound is over 2,5 %: at 1:2,5 the radii are 9,
+    31,5 and 42,5 mm (on the ruler's marks), the set keeps its three sheets and reads u1H within a bound
+    under 2,5 %, the reading within it (about 70 s)."""
+    from graphplan.sheets.form import form
+    from graphplan.sheets.gears import on_sheet
+    from review_scenes import GEARS56
+    g, sol = _scene(GEARS56, "g56")
+    _, vel, pages = on_sheet(g, sol, form("A3"), 0.5, "uk")
+    assert len(pages) == 3
+    assert vel.mu_l == pytest.approx(0.0025)
+    r = sol.train.radii
+    assert [vel.heights[k] for k in ("A", "O2", "C")] == pytest.approx([r["1"] / 0.0025, r["H"] / 0.0025,
+                                                                         r["3"] / 0.0025])
+    assert [vel.heights[k] for k in ("A", "O2", "C")] == pytest.approx([9.0, 31.5, 42.5])
+    u = 1 + 45 * 85 / (18 * 22)
+    assert vel.ratio_bound / u < 0.025 and abs(vel.ratio - u) <= vel.ratio_bound + 1e-9
