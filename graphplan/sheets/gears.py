@@ -727,13 +727,14 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
                 #                   width jumps — and fell to h = 25 mm, which ranked under 1:2 read within ±7,1 %)
     if best is None:
         return vel, plan
-    # the scheme over and under the axis (``_whole``) leaving the λ diagrams the room they grow into up to
-    # the meshing's scale (``_lambda_filling``; 11/53's stood at 5:1 beside the half at 2:1, at 2,5:1 beside
-    # the whole at 1:1 filling the row), or as wide as the half-section's pictures
-    grow = 0.0
-    if lam_w and pair is not None and mesh.lam is not None:
-        grow = max(0.0, pair.g / mesh.mu_l - pair.g / mesh.lam.scales["mu_l"])
-    wide = min(room_w, max(_size(best[1])[0], room_w - grow))
+    # the scheme over and under the axis (``_whole``) only where the λ diagrams in the row already stand at
+    # the meshing's scale: elsewhere they grow into the room the pictures leave (``_lambda_filling``), and the
+    # whole scheme, a scale smaller and filling the row, left them at theirs (11/53's stood at 5:1 beside the
+    # half at 2:1, at 2,5:1 beside the whole at 1:1; drawn no wider than the half, the whole left review 13's
+    # row 40 mm short and its λ did not grow)
+    if lam_w and pair is not None and mesh.lam is not None and mesh.lam.scales["mu_l"] > mesh.mu_l * (1 + 1e-9):
+        return best
+    wide = room_w
     whole = None
     for mu in scales:
         ring = r3 / mu * (1 + 1e-9)
