@@ -7351,3 +7351,29 @@ rpm = 150
 direction = "cw"
 divisions = 9
 """
+
+
+# gears57 (stop 57): the lead's check, /work/lead/s57/gears57.toml — a pair 14/25 with GIVEN shifts 0.3/0.1,
+# m = 6 mm, and a single-row type-A train chosen for u1H = 5.5, K = 4, 1450 rpm.
+GEARS57 = '''title = "Зубчаста передача 14/25 і однорядний планетарний редуктор (перевірка 57)"
+title_en = "A gear pair 14/25 and a single-row planetary reducer (check 57)"
+designation = "ТММ.ЗП.57.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-57"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 25]
+module = 0.006
+shifts = [0.3, 0.1]
+
+[planetary]
+type = "A"
+ratio = 5.5
+planets = 4
+module = 0.003
+rpm = 1450
+'''

@@ -930,7 +930,8 @@ def _nice(v: float) -> float:
 
 
 def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk", ring_mm: float = 80.0,
-                    sun_segment_mm: float = 100.0, va_mm: float = 60.0, h_carrier: float | None = None) -> Velocities:
+                    sun_segment_mm: float = 100.0, va_mm: float = 60.0, h_carrier: float | None = None,
+                    full: bool = False) -> Velocities:
     """The scheme at μl (the ring's radius about ``ring_mm``, μl the next round value of the series
     1, 2, 2.5, 4, 5·10ⁿ), the velocity picture with vA about ``va_mm`` (μv round likewise), the plan of
     angular velocities with h chosen so the sun's segment is about ``sun_segment_mm``.
@@ -938,7 +939,11 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     produced, h_H below the plan's line — as any pole distance serves a plan of angular velocities
     (ω = segment·μv/(μl·h)), the slow carrier of a large ratio gets one that makes its segment
     readable (review 13 #9: ωH off 3,8 mm, +5,54 %) while the sun's ray keeps the sheet's width;
-    then ωH = segment·μv/(μl·h_H) and u1H = (s1/h)/(sH/h_H)."""
+    then ωH = segment·μv/(μl·h_H) and u1H = (s1/h)/(sH/h_H).
+    ``full``: the scheme over and under the central axis (both planets, the carrier across them, the
+    ring's frame on both sides), the plan of angular velocities then under the velocity picture, right
+    of the scheme's lower half; else the scheme over the axis alone (the half-section), the plan under
+    it from its left end (stop 57: the full scheme where the sheet holds it at the same scale)."""
     rad = tr.radii
     kind = tr.train.kind
     mu = _nice(rad["3"] / ring_mm)                          # m/mm
@@ -962,13 +967,14 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
     omega = {k: seg[k] * mu_v / (mu * dist[k]) for k in seg}
     ratio = (seg["1"] / h) / (seg["H"] / dist["H"]) if seg["H"] else math.nan
     rec = Record("planetary")
-    starts = _scheme(rec, tr, mu, yA, yO2, yC)
+    starts = _scheme(rec, tr, mu, yA, yO2, yC, full)
     # the velocity picture: the radii on one vertical line right of the scheme — midway along the room the
     # plan of angular velocities leaves right of the scheme, where the plan is the wider (stop 50: the
     # picture stood against the scheme, a 100–200 × 155-mm blank right of it over the plan's long rays)
     X0 = max(60.0, rec.bounds()[2] + 16.0)
     xs = [dist[k] * s for k, s in slopes.items()]
-    xp = min(X0, rec.bounds()[0] + 6.0) - min(0.0, min(xs)) + 4.0     # the plan's pole (as below)
+    xp = min(X0, (under_axis_right(rec) + 10.0) if full else (rec.bounds()[0] + 6.0)) - min(0.0, min(xs)) + 4.0
+    #                                     (the plan's pole, as below)
     tip = lambda p, q: (q + (q - p) / abs(q - p) * 14.0).real           # noqa: E731   a line's end, x
     wide = max(tip(0j, complex(va, yA)), tip(complex(0.0, yC), complex(va, yA)),
                tip(0j, complex(v_o2, yO2))) + 10.0                      # the picture's width, its letters too
@@ -993,7 +999,8 @@ def construct_train(tr: TrainSolution, precision: float = 0.5, lang: str = "uk",
         rec.point(_f(q), role="pole", layer=LAYER)
     # the plan of angular velocities below: a horizontal, the pole h under it
     y0 = -26.0
-    # the plan under the scheme and the velocity picture from the scheme's left end (not from the
+    # the plan under the scheme and the velocity picture from the scheme's left end (``full``: from the right
+    # of the scheme's half under the axis, under the velocity picture), not from the
     # picture's axis: the sun's segment then takes the pictures' whole width — review 13 #9, an A3
     # set's plan 90 mm wide under a 230-mm picture read ωH off 2,5 mm): ``xp`` above
     left, right = xp + min(xs + [0.0]) - 6.0, xp + max(xs + [0.0]) + 6.0
@@ -1125,23 +1132,29 @@ def _bearing(rec: Record, x: float, y: float, frame: bool = False, half: float =
             rec.segment((x0 + 2.0, yb - 1.2), (x0, yb - 3.2), role="hatch", layer=LAYER, step="frame")
 
 
-def _frame_over(rec: Record, x0: float, x1: float, y: float) -> None:
-    """The frame (the housing) as a thick line with hatching above it."""
+def _frame_over(rec: Record, x0: float, x1: float, y: float, down: bool = False) -> None:
+    """The frame (the housing) as a thick line with hatching above it (``down``: below it)."""
     rec.segment((x0, y), (x1, y), role="link", layer=LAYER, step="frame")
     n = max(2, int((x1 - x0) / 2.5))
+    d = -2.5 if down else 2.5
     for k in range(n):
         x = x0 + (x1 - x0) * k / n
-        rec.segment((x, y), (x + 2.5, y + 2.5), role="hatch", layer=LAYER, step="frame")
+        rec.segment((x, y), (x + 2.5, y + d), role="hatch", layer=LAYER, step="frame")
 
 
-def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float) -> tuple[float, float, float]:
-    """The kinematic scheme in half-section over the central axis, as the textbook draws a 2K-H train
-    (GOST 2.770; review 5, item 17): each wheel a rectangle of its face width whose edge toward its
-    mate is its pitch circle (at μl: r1, aw ± r2, r3) — the sun's rim on a web from the input shaft,
-    the planet whole on its axle (its axis dash-dotted) turning in a bearing, the ring's rim on a web
-    into the frame, hatched —; the carrier H from the planet's axle to the output shaft; the shafts
-    in bearings set in the frame; the members numbered 1, 2 (2'), 3, H. Returns where the velocity
-    picture's projections start at the heights of A, O2 and C (the scheme's points)."""
+def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC: float,
+            full: bool = True) -> tuple[float, float, float]:
+    """The kinematic scheme over and under the central axis, as the textbook draws a 2K-H train
+    (GOST 2.770; review 5, item 17; stop 57: the half over the axis alone looked sparse — the lead
+    asked for both planets, the carrier across them, the fixed ring hatched on both sides) — or, not
+    ``full``, its half over the axis (the half-section: the velocity picture needs no more): each wheel
+    a rectangle of its face width whose edge toward its mate is its pitch circle (at μl: ±r1, ±(aw ± r2),
+    ±r3) — the sun's rim on a web from the input shaft, a planet whole on its axle over the axis and
+    one under it (their axes dash-dotted) turning in bearings, the ring's rim on webs into the frame,
+    hatched, over and under —; the carrier H across both planets' axles to the output shaft; the shafts
+    in bearings set in the frame; the members numbered 1, 2 (2'), 3, H once, over the axis (where the
+    velocity picture is drawn). Returns where the velocity picture's projections start at the heights
+    of A, O2 and C (the scheme's points)."""
     kind = tr.train.kind
     rad = tr.radii
     b = min(16.0, max(8.0, 0.18 * yC))       # a wheel's face width drawn
@@ -1155,27 +1168,30 @@ def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC
     def box(xc: float, y0: float, y1: float, step: str) -> None:
         rec.add("polygon", [(xc - b / 2, y0), (xc + b / 2, y0), (xc + b / 2, y1), (xc - b / 2, y1)],
                 role="link", layer=LAYER, step=step)
-    # the input shaft 1 in its bearing, the sun's web and rim (its pitch circle the rim's top edge)
+    # the input shaft 1 in its bearing, the sun's web across the axis and its rim (its pitch circle the
+    # rim's outer edge) over and under it
     rec.segment((-42.0, 0.0), (x1, 0.0), role="link", layer=LAYER, step="shaft 1")
     _bearing(rec, -30.0, 0.0, frame=True)
-    rec.segment((x1, 0.0), (x1, yA - rim), role="link", layer=LAYER, step="1 web")
-    box(x1, yA - rim, yA, "1")
-    # the planet 2 (block 2–2'), whole, its axis dash-dotted, on the axle
+    rec.segment((x1, -(yA - rim) if full else 0.0), (x1, yA - rim), role="link", layer=LAYER, step="1 web")
     r2 = rad["2"] / mu
-    box(x1, yO2 - r2, yO2 + r2, "2")
-    if kind == "B":
-        r2b = rad["2'"] / mu
-        box(xb, yO2 - r2b, yO2 + r2b, "2'")
-    rec.segment((x1 - b / 2 - 4.0, yO2), (xb + b / 2 + 4.0, yO2), role="axis", layer=LAYER, step="planet axis")
-    rec.segment((x1 - b / 2 - 2.0, yO2), (xh, yO2), role="link", layer=LAYER, step="H axle")
-    _bearing(rec, xb + b / 2 + 3.0, yO2, half=1.5)
-    # the ring 3: its rim (the pitch circle its lower edge, the teeth inside), the web into the frame
-    box(xb, yC, yC + rim, "3")
-    top = yC + rim + 5.0
-    rec.segment((xb, yC + rim), (xb, top), role="link", layer=LAYER, step="3 web")
-    _frame_over(rec, xb - b / 2 - 4.0, xb + b / 2 + 4.0, top)
-    # the carrier H: its arm from the planet's axle down to the output shaft, in its bearing
-    rec.segment((xh, yO2), (xh, 0.0), role="link", layer=LAYER, step="H")
+    r2b = rad["2'"] / mu if kind == "B" else 0.0
+    for sg in ((1.0, -1.0) if full else (1.0,)):      # the half over the axis, then its mirror under it
+        box(x1, sg * (yA - rim), sg * yA, "1")
+        # a planet 2 (block 2–2'), whole, its axis dash-dotted, on its axle
+        box(x1, sg * (yO2 - r2), sg * (yO2 + r2), "2")
+        if kind == "B":
+            box(xb, sg * (yO2 - r2b), sg * (yO2 + r2b), "2'")
+        rec.segment((x1 - b / 2 - 4.0, sg * yO2), (xb + b / 2 + 4.0, sg * yO2), role="axis", layer=LAYER,
+                    step="planet axis")
+        rec.segment((x1 - b / 2 - 2.0, sg * yO2), (xh, sg * yO2), role="link", layer=LAYER, step="H axle")
+        _bearing(rec, xb + b / 2 + 3.0, sg * yO2, half=1.5)
+        # the ring 3: its rim (the pitch circle its inner edge, the teeth inside), the web into the frame
+        box(xb, sg * yC, sg * (yC + rim), "3")
+        top = yC + rim + 5.0
+        rec.segment((xb, sg * (yC + rim)), (xb, sg * top), role="link", layer=LAYER, step="3 web")
+        _frame_over(rec, xb - b / 2 - 4.0, xb + b / 2 + 4.0, sg * top, down=sg < 0)
+    # the carrier H: its arm across both planets' axles, the output shaft from it in its bearing
+    rec.segment((xh, yO2), (xh, -yO2 if full else 0.0), role="link", layer=LAYER, step="H")
     rec.segment((xh, 0.0), (end, 0.0), role="link", layer=LAYER, step="shaft H")
     _bearing(rec, xh + 13.0, 0.0, frame=True)
     pl = Placer(rec)
@@ -1190,3 +1206,11 @@ def _scheme(rec: Record, tr: TrainSolution, mu: float, yA: float, yO2: float, yC
     pl.label(complex(xh, yH), "H", toward=1 + 0j)
     pl.label(complex(-46.0, 0.0), "O", toward=1j)
     return x1 + b / 2, xh, xb + b / 2
+
+
+def under_axis_right(rec: Record, below: float = -8.0) -> float:
+    """The right end of the scheme's half under the central axis (what stands lower than ``below``,
+    mm: the shafts' bearings and their frames on the axis left out) — the plan of angular velocities,
+    under the velocity picture, starts right of it."""
+    return max((x for p in rec.items if p.points and max(y for _, y in p.points) < below for x, _ in p.points),
+               default=rec.bounds()[0])

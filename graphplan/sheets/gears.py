@@ -34,7 +34,7 @@ WORDS = {
                        "μ_λ = {mu} 1/мм",
            "planetary": "Планетарна передача", "planetary2": "схема, картина швидкостей, план кутових швидкостей",
            "plan_scales": "μ_l = {l} м/мм, μ_v = {v} (м/с)/мм, h = {h} мм", "plan_h_H": ", h_H = {h} мм",
-           "t1": "Таблиця 1. Геометрія передачі: точно, графічно, похибка", "t2": "Таблиця 2. Показники якості",
+           "t1": "Таблиця 1. Геометрія передачі: точно, графічно, δ", "t2": "Таблиця 2. Показники якості",
            "t3": "Таблиця 3. Планетарна передача: z, умови, ω",
            "qty": "величина", "ex": "точно", "gr": "графічно", "w1": "колесо 1", "w2": "колесо 2",
            "cond": "умова", "bound": "висновок", "yes": "так", "no": "ні", "ok": "викон.", "fail": "не викон.",
@@ -76,6 +76,9 @@ WORDS = {
            "exactly": "точно",
            "tip": "; s_{{a{k}}} з хорди {c} мм: межа похибки від точності креслення ±{b} % {v}",
            "tip_in": "(у межах)", "tip_out": "(поза межею)",
+           "x_min": "Таблиця 2: x_{{min}} = h^*_a − z·sin²α/2 = h^*_a·(z_{{min}} − z)/z_{{min}}, "
+                    "z_{{min}} = 2h^*_a/sin²α = {zm}{r}",
+           "x_min17": " (наближена формула (17 − z)/17 дала б для z_1 = {z} значення {x})",
            "judged": "Умови таблиці 2 — за формулами; ε_α з креслення {g} < 1,2 {v}",
            "judged_in": "у межах похибки ±{b}", "judged_out": "поза межею похибки ±{b}",
            "warn": "Попередження: ", "mark": "* — похибка понад 5 %",
@@ -86,7 +89,7 @@ WORDS = {
                        "(heavy); μ_λ = {mu} 1/mm",
            "planetary": "Planetary train", "planetary2": "scheme, velocity picture, plan of angular velocities",
            "plan_scales": "μ_l = {l} m/mm, μ_v = {v} (m/s)/mm, h = {h} mm", "plan_h_H": ", h_H = {h} mm",
-           "t1": "Table 1. The pair's geometry: exact, graphical, error", "t2": "Table 2. Quality indices",
+           "t1": "Table 1. Pair geometry: exact, graphical, δ", "t2": "Table 2. Quality indices",
            "t3": "Table 3. Planetary train: z, conditions, ω",
            "qty": "quantity", "ex": "exact", "gr": "graphical", "w1": "wheel 1", "w2": "wheel 2",
            "cond": "condition", "bound": "verdict", "yes": "yes", "no": "no", "ok": "met", "fail": "not met",
@@ -127,6 +130,9 @@ WORDS = {
            "exactly": "exactly",
            "tip": "; s_{{a{k}}} read off a chord of {c} mm: its bound from the drafting precision ±{b} % {v}",
            "tip_in": "(within)", "tip_out": "(outside)",
+           "x_min": "Table 2: x_{{min}} = h^*_a − z·sin²α/2 = h^*_a·(z_{{min}} − z)/z_{{min}}, "
+                    "z_{{min}} = 2h^*_a/sin²α = {zm}{r}",
+           "x_min17": " (the approximate (17 − z)/17 would give {x} for z_1 = {z})",
            "judged": "Table 2's conditions are judged by the formulas; ε_α off the drawing {g} < 1.2 {v}",
            "judged_in": "within its bound ±{b}", "judged_out": "outside its bound ±{b}",
            "warn": "Warning: ", "mark": "* — an error past 5 %",
@@ -398,6 +404,7 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                                        r=_n(mesh.precision * mesh.mu_l * 1000.0, lang)))
         out.append(w["bound_eps"].format(b=_n(mesh.eps_bound, lang, 2),
                                          bp=_n(100 * mesh.eps_bound / p["contact_ratio"]["exact"], lang, 2)))
+        out.append(x_min_note(p, lang))
         c = p["contact_ratio"]
         v = eps_read_verdict(c) if c["graphical"] is not None and mesh.precision > 0 else "ok"
         if v != "ok":                     # (review 12: 1,203 by the formula, 1,196 read)
@@ -449,6 +456,23 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                       if k in doc):
         last.append(w["past"])
     return [[escape(x) if "_" not in x else x for x in part] for part in (parts or [out])]
+
+
+def x_min_note(p: dict, lang: str) -> str:
+    """Table 2's x_min named with its formula (stop 56: the sheet printed x_min = 0,4151 for z = 10, the
+    exact h*a − z·sin²α/2 of REFERENCE §12, where a teacher who reckons (17 − z)/17 gets 0,4118 and asks
+    where it comes from): z_min = 2h*a/sin²α is 17,1 at α = 20°, h*a = 1, and the textbook's 17 rounds it;
+    where wheel 1's two values differ in the printed decimals the rounded one is given beside."""
+    w = WORDS[lang]
+    ha, a = p["addendum"], math.radians(p["alpha_deg"])
+    zm = 2 * ha / math.sin(a) ** 2
+    z1 = p["z"][0]
+    r = ""
+    if abs(ha - 1.0) < 1e-9 and abs(p["alpha_deg"] - 20.0) < 1e-9 and z1 < 17:
+        approx = (17 - z1) / 17
+        if _n(approx, lang) != _n(p["quality"]["x_min"][0], lang):
+            r = w["x_min17"].format(x=_n(approx, lang), z=z1)
+    return w["x_min"].format(zm=_n(zm, lang, 3), r=r)
 
 
 def starred(doc: dict, lang: str) -> bool:
@@ -558,7 +582,7 @@ SCHEME_SHARES = (1.4, 1.0, 0.65)   # vA × its size tried with each scale of the
 
 
 def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w: float, room_h: float,
-           h_min: float, memo: dict | None = None):
+           h_min: float, memo: dict | None = None, full: bool = False):
     """The planetary pictures with the scheme at the scale ``ring_mm`` gives and vA about ``va_mm``, the
     plan of angular velocities as large as the zone ``room_w`` × ``room_h`` (the pictures with their
     caption) takes — by arithmetic on the zone's size (review 12 mark 11, review 13 mark 9: ωH read off
@@ -567,17 +591,18 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
     S·yA/vA; S is the largest the zone's spare width and height allow, measured on the pictures drawn
     at a first S, then checked on the pictures drawn (a few per cent less while labels push them out).
     (velocities, captioned record), or None when none fits or h would be under ``h_min``. ``memo``: the
-    pictures drawn, kept across calls for the same train (a set tries several heights)."""
+    pictures drawn, kept across calls for the same train (a set tries several heights). ``full``: the
+    scheme over and under the axis (``construct_train``)."""
     om = tr.omega
     span = 1.0 + max((abs(om[k]) for k in om if k != "1" and om[k] < 0), default=0.0) / abs(om["1"])
 
     memo = {} if memo is None else memo
 
     def at(S: float):
-        key = (round(ring_mm, 6), round(va_mm, 6), round(S, 3))
+        key = (round(ring_mm, 6), round(va_mm, 6), round(S, 3), full)
         if key not in memo:
             try:
-                v = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=S)
+                v = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=S, full=full)
                 memo[key] = v, _plan(v, lang)
             except GraphplanError:
                 memo[key] = None
@@ -586,7 +611,7 @@ def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w
     def at_h(hH: float, k: float = 1.0):  # the pictures at k × the last S with the carrier's own pole h_H
         try:
             c = construct_train(tr, precision, lang, ring_mm=ring_mm, va_mm=va_mm, sun_segment_mm=k * S,
-                                h_carrier=hH)
+                                h_carrier=hH, full=full)
         except GraphplanError:
             return None
         return (c, _plan(c, lang)) if c.h >= h_min else None
@@ -663,7 +688,7 @@ def carried(got, at_h, room_w: float, room_h: float):
     return got
 
 
-def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel):
+def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pair=None):
     """The planetary pictures as large as their place in the row under the meshing takes (beside the
     λ diagrams, the meshing's height and the tables' column off the field): for each scale of the
     scheme (GOST 2.302, the ring's radius at most ``GROW``'s largest × 80 mm) whose scheme leaves the
@@ -700,7 +725,42 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel):
                     break         # (else a shorter vA may still give h ≥ H_MIN: stop 55, the lead's 14/56 in
                 #                   English at 1:1 was 1 mm too wide with h = 50 mm — μω is round, so the pictures'
                 #                   width jumps — and fell to h = 25 mm, which ranked under 1:2 read within ±7,1 %)
-    return best or (vel, plan)
+    if best is None:
+        return vel, plan
+    # the scheme over and under the axis (``_whole``) only where the λ diagrams in the row already stand at
+    # the meshing's scale: elsewhere they grow into the room the pictures leave (``_lambda_filling``), and the
+    # whole scheme, a scale smaller and filling the row, left them at theirs (11/53's stood at 5:1 beside the
+    # half at 2:1, at 2,5:1 beside the whole at 1:1; drawn no wider than the half, the whole left review 13's
+    # row 40 mm short and its λ did not grow)
+    if lam_w and pair is not None and mesh.lam is not None and mesh.lam.scales["mu_l"] > mesh.mu_l * (1 + 1e-9):
+        return best
+    wide = room_w
+    whole = None
+    for mu in scales:
+        ring = r3 / mu * (1 + 1e-9)
+        if 2.0 * top / mu + 13.0 + 20.0 > room_h:                # both halves of the scheme, its caption
+            continue
+        for va_share in SCHEME_SHARES:
+            d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, wide, room_h, min(H_MIN, vel.h),
+                       full=True)
+            if d is not None and (whole is None or _rank(d[0]) < _rank(whole[0])):
+                whole = d
+        if whole is not None and whole[0].h >= H_MIN - 1e-9:
+            break                         # (the largest scale that holds it: a smaller one reads no better)
+    return _whole(best, whole, tr.ratio)
+
+
+def _whole(best, whole, u: float):
+    """The planetary pictures: ``whole`` — the scheme over and under the central axis, both planets, the
+    carrier across them, the ring's frame on both sides, as the textbook draws a 2K-H train (stop 57: the
+    lead found the half over the axis sparse), the plan of angular velocities under the velocity picture —
+    where it keeps what ``_rank`` asks first (h, the carrier's segment) and reads u1H within a bound under
+    the lab's 5 % (a reading then within the lab's limit whatever the ruler does); else ``best``, the
+    half-section at its larger scale. The whole scheme is as tall again under the axis: the lead's 57
+    (ring 127,5 mm) is whole at 1:2, u1H within ±3,7 %, where its half stood at 1:1 within ±0,86 %."""
+    if whole is None or _rank(whole[0])[:2] > _rank(best[0])[:2] or 100.0 * whole[0].ratio_bound / u > LAB_LIMIT:
+        return best
+    return whole
 
 
 def _rank(v) -> tuple:
@@ -739,7 +799,7 @@ def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     if mesh is not None and sol.pair and f.name == "A1":
         _beside_smaller(sol, mesh, f, lang)
     if vel is not None and mesh is not None and f.name == "A1":
-        vel, plan = _grown(sol.train, precision, lang, f, mesh, plan, vel)
+        vel, plan = _grown(sol.train, precision, lang, f, mesh, plan, vel, sol.pair)
     if mesh is not None and sol.pair:
         _slide(sol, mesh, f, plan, lang)
     return mesh, vel, plan
@@ -1163,29 +1223,45 @@ def _set_filled(sol, f: Form, precision: float, lang: str, chosen, vel, kept):
     """A set's planetary pictures at their scheme's scale with the plan of angular velocities filling
     the sheet's width at the pictures' height (``filled``; review 12 mark 11: the A3 set's ωH was a
     6-mm segment on a sheet two thirds empty), where that keeps the set's count of sheets and reads
-    u1H better (its bound smaller): (velocities, pages), ``chosen`` else."""
+    u1H better (its bound smaller): (velocities, pages), ``chosen`` else. Where the pictures so read u1H
+    within a bound wider than half the lab's 5 %, the scheme one and two GOST 2.302 steps smaller is
+    tried too, and the narrowest bound taken: the bound is mostly the radii r1, aw, r3 rounded to the
+    ruler as laid off, which a smaller scale may put on its marks (stop 57: GEARS56's A3 drew 22,5, 78,75 and
+    106,25 mm at 1:2 as 11, 39,5 and 53 mm, u1H read +4,78 % within ±6,1 % whatever the plan's size —
+    S 128 → 257 mm took the bound only from ±7,4 to ±6,1 % —; at 1:2,5 they are 9, 31,5 and 42,5 mm, on
+    the marks)."""
+    from graphplan.graphic.gears import ENLARGE, REDUCE
     from graphplan.sheets.gearset import later_keep
     v0, pages = chosen
     x0, y0, x1, y1 = field_of(f)
     h0 = _size(_plan(v0, lang))[1]
     full = y1 - later_keep(f)[3] - GAP
-    ring = sol.train.radii["3"] / v0.mu_l * (1 + 1e-9)
     memo: dict = {}
     tried = set()
-    for room_h in (full, 0.5 * (full + h0), h0):      # the sheet's height, then less
-        for va_share in (4.0, 3.0, 2.0, 1.0):   # (the longest vA first: at a given height the longest plan —
-            #                                   stop 54: with 2 the longest, GEARS_OWN54's A3 plan kept h = 25 mm
-            #                                   and a 76-mm segment 1 over a sheet a third empty; 4 draws it 190 mm)
-            d = filled(sol.train, precision, lang, ring, 60.0 * ring / 80.0 * va_share, x1 - x0, room_h,
-                       min(H_MIN, vel.h), memo)
-            if d is not None and d[0].ratio_bound < v0.ratio_bound - 1e-12:
-                if id(d) not in tried:    # (a set tried once)
-                    tried.add(id(d))
-                    out = kept(*d)
-                    if out is not None:
-                        return d[0], out
-                break                     # (a shorter vA only makes it taller)
-    return v0, pages
+
+    def at(mu: float, bound: float):      # the first pictures at the scheme's scale ``mu`` reading u1H within
+        ring = sol.train.radii["3"] / mu * (1 + 1e-9)                     # a narrower bound that keep the count
+        for room_h in (full, 0.5 * (full + h0), h0):      # the sheet's height, then less
+            for va_share in (4.0, 3.0, 2.0, 1.0):   # (the longest vA first: at a given height the longest plan —
+                #                                   stop 54: with 2 the longest, GEARS_OWN54's A3 plan kept h = 25 mm
+                #                                   and a 76-mm segment 1 over a sheet a third empty; 4 draws it 190 mm)
+                d = filled(sol.train, precision, lang, ring, 60.0 * ring / 80.0 * va_share, x1 - x0, room_h,
+                           min(H_MIN, vel.h), memo)
+                if d is not None and d[0].ratio_bound < bound - 1e-12:
+                    if id(d) not in tried:    # (a set tried once)
+                        tried.add(id(d))
+                        out = kept(*d)
+                        if out is not None:
+                            return d[0], out
+                    break                     # (a shorter vA only makes it taller)
+        return None
+
+    best = at(v0.mu_l, v0.ratio_bound) or (v0, pages)
+    if 100.0 * best[0].ratio_bound / sol.train.ratio > LAB_LIMIT / 2:
+        for mu in sorted(0.001 / q for q in ENLARGE + REDUCE if 0.001 / q > v0.mu_l * (1 + 1e-9))[:2]:
+            got = at(mu, best[0].ratio_bound)
+            best = got or best
+    return best
 
 
 RULED_ROW = 6.0          # the gear tables' ruled rows, mm (``table(..., row_h=6.0)``)
