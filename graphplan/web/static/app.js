@@ -95,6 +95,7 @@ async function post(path, body, type) {
     const err = new Error(line);
     err.status = r.status;
     err.retry = r.headers.get("Retry-After");
+    err.stem = r.headers.get("X-File-Stem");
     throw err;
   }
   return r;
@@ -288,6 +289,7 @@ async function draw(seq) {
     const r = await post(`/api/scene/preview?phi=${encodeURIComponent(phi)}&lang=${state.lang}`, text, "text/plain; charset=utf-8");
     const blob = await r.blob();
     if (seq !== state.seq) return;
+    state.stem = [text, r.headers.get("X-File-Stem")];   // the downloads' name: the scene's designation and its fingerprint
     const keys = JSON.parse(decodeURIComponent(r.headers.get("X-Branch-Keys") || "%5B%5D"));
     const asm = JSON.parse(decodeURIComponent(r.headers.get("X-Assemblies") || "%5B%5D"));
     const img = $("preview-img");
@@ -307,6 +309,7 @@ async function draw(seq) {
     showAssemblies(keys, asm);
   } catch (e) {
     if (seq !== state.seq) return;
+    if (e.stem) state.stem = [text, e.stem];
     showError(e.message);
     if (e.status === 422) guessKinds(text);
     if (e.status === 503) setTimeout(changed, 1000 * Number(e.retry || 5));   // busy: ask again
@@ -610,7 +613,11 @@ async function start() {
   $("dl-tables").addEventListener("click", (e) => download(`/api/tables?lang=${$("sheet-lang").value}`, "tables.zip",
                                                            e.currentTarget, () => t("tables")));
   $("dl-toml").addEventListener("click", async () => {
-    try { save(new Blob([await sceneText()], { type: "text/plain" }), "scene.toml"); } catch (e) { $("dl-error").textContent = e.message; }
+    try {
+      const text = await sceneText();
+      const stem = state.stem && state.stem[0] === text && state.stem[1];
+      save(new Blob([text], { type: "text/plain" }), (stem || "scene") + ".toml");
+    } catch (e) { $("dl-error").textContent = e.message; }
   });
   $("tab-student").addEventListener("click", () => showPart("student"));
   $("tab-teacher").addEventListener("click", () => showPart("teacher"));
