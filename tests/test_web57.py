@@ -103,28 +103,48 @@ def _named(r) -> str:
     return re.fullmatch(r'attachment; filename="([^"]+)"', r.headers["content-disposition"]).group(1)
 
 
-def test_two_variants_of_one_template_download_under_two_names(client):
-    """Two crank-sliders filled in on the page share the template's designation ТММ.01.00.000: their
-    explorers, tables, and the TOML the page saves (the preview's X-File-Stem), are named apart; the
-    same scene twice is named alike."""
+def _variants(client) -> list[str]:
     texts = [client.post("/api/toml", json={"template": "crank_slider", "values": {"r": r}}).text
              for r in ("0,1", "0,12")]
     assert ["\nr = 0.1\n" in t for t in texts] == [True, False]
-    assert texts[0] != texts[1] and all('designation = "ТММ.01.00.000"' in t for t in texts)
-    stems = []
-    for text in texts:
-        preview = client.post("/api/scene/preview?phi=30", content=text.encode())
-        stem = preview.headers["x-file-stem"]
-        assert re.fullmatch(r"TMM\.01\.00\.000-[0-9a-f]{6}", stem)
-        tables = client.post("/api/tables?lang=en", content=text.encode())
-        assert _named(tables) == f"{stem}-tables.zip"
-        assert zipfile.ZipFile(io.BytesIO(tables.content)).namelist() == ["analyze.csv", "plans.csv"]
-        stems.append(stem)
-    assert stems[0] != stems[1]
+    assert all('designation = "ТММ.01.00.000"' in t for t in texts)
+    return texts
+
+
+def test_two_variants_of_one_template_download_under_two_names(client):
+    """Two crank-sliders filled in on the page share the template's designation ТММ.01.00.000: the
+    TOML the page saves (the preview's X-File-Stem) and the files the server sends are named apart; the same scene
+    twice is named alike; a scene that does not assemble keeps its name (the page saves its TOML all
+    the same)."""
+    texts = _variants(client)
+    stems = [client.post("/api/scene/preview?phi=30", content=t.encode()).headers["x-file-stem"] for t in texts]
+    assert all(re.fullmatch(r"TMM\.01\.00\.000-[0-9a-f]{6}", s) for s in stems) and stems[0] != stems[1]
     assert client.post("/api/scene/preview?phi=30", content=texts[0].encode()).headers["x-file-stem"] == stems[0]
-    view = client.post("/api/view?lang=en", content=texts[0].encode())
-    assert _named(view) == f"{stems[0]}-explorer.html"
-    # a scene that does not assemble keeps its name (the page saves its TOML all the same)
     broken = texts[0].replace("\nr = 0.1\n", "\nr = 0.5\n", 1)
     bad = client.post("/api/scene/preview?phi=30", content=broken.encode())
     assert bad.status_code == 422 and bad.headers["x-file-stem"].startswith("TMM.01.00.000-")
+
+
+@pytest.mark.slow
+def test_the_explorer_and_the_tables_download_under_the_scene_s_name(client):
+    text = _variants(client)[1]
+    stem = client.post("/api/scene/preview?phi=30", content=text.encode()).headers["x-file-stem"]
+    tables = client.post("/api/tables?lang=en", content=text.encode())
+    assert _named(tables) == f"{stem}-tables.zip"
+    assert zipfile.ZipFile(io.BytesIO(tables.content)).namelist() == ["analyze.csv", "plans.csv"]
+    assert _named(client.post("/api/view?lang=en", content=text.encode())) == f"{stem}-explorer.html"
+
+
+def test_an_assembly_that_cannot_exist_says_why_in_its_box_without_the_server_s_file_name(client):
+    """The box of an assembly that does not exist wrote «scene.toml: група II(4-5) … не складається …»
+    — the server's name for the scene, where the student had uploaded link57.toml: the box says the
+    line without it (the header keeps the command line's whole line; the page names the student's file)."""
+    import json
+    import urllib.parse
+    import xml.etree.ElementTree as ET
+    shaper = re.sub(r"\[branch\]\n(.+\n)+", "", (ROOT / "examples" / "shaper.toml").read_text(encoding="utf-8"))
+    r = client.post("/api/scene/preview?phi=30&lang=uk", content=shaper.encode())
+    said = json.loads(urllib.parse.unquote(r.headers["x-assemblies"]))
+    assert said[1]["error"].startswith("scene.toml: ") and "не складається" in said[1]["error"]
+    words = " ".join(" ".join(ET.fromstring(r.content).itertext()).split())
+    assert "не складається за жодного кута кривошипа" in words and "scene.toml" not in words

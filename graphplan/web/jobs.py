@@ -531,7 +531,9 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
             inner = head.replace("<svg ", f'<svg x="0" y="{cap:.3f}" ', 1) + ">" + body
             parts.append(inner)
         else:
-            lines = _wrap(error, 60)          # already in the reader's language (refused)
+            # already in the reader's language (refused); without the server's name for the scene
+            # ("scene.toml: …"): the box is the assembly's own, and a student's file has a name of its own
+            lines = _wrap(error.removeprefix(f"{SCENE}: "), 60)
             size = max(4.0, w / 60)
             for j, line in enumerate(lines):
                 parts.append(f'<text x="4" y="{cap + 2 * size + 1.5 * size * j:.3f}" font-size="{size:.3f}" fill="#a00" '

@@ -330,7 +330,7 @@ function showAssemblies(keys, asm) {
     b.id = "assembly-" + (k + 1);
     const said = Object.entries(a.branch).map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ");
     const dflt = a.default ? ` (${t("default")})` : "";
-    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}${dflt}` + (a.error ? ` — ${a.error}` : ""));
+    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}${dflt}` + (a.error ? ` — ${asUploaded(a.error)}` : ""));
     b.textContent = `${t("assembly")} ${k + 1}${dflt}`;
     if (a.default) b.classList.add("default");
     if (a.error) b.disabled = true;
