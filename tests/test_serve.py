@@ -362,6 +362,10 @@ VARIANTS = "# base = /etc/passwd\nvariant,r,l\n01,0.064,0.307\n02,0.05,0.2\n"
 def test_keys_then_grades_from_the_key_zip_and_as_csv(client):
     r = client.post("/api/key?lang=en", files={"variants": ("../../v.csv", VARIANTS), "base": ("/etc/b.toml", CRANK)})
     assert r.status_code == 200 and r.headers["content-type"] == "application/zip"
+    # named after the base scene and a fingerprint of it and the table (the client's names unused)
+    from graphplan.web.jobs import file_stem
+    assert r.headers["content-disposition"] == f'attachment; filename="{file_stem(CRANK, VARIANTS)}-keys.zip"'
+    assert file_stem(CRANK, VARIANTS).startswith("TMM.01.00.000-") and file_stem(CRANK, VARIANTS) != file_stem(CRANK)
     z = zipfile.ZipFile(io.BytesIO(r.content))
     assert {"01/key.json", "02/key.json", "summary.json", "summary.csv"} <= set(z.namelist())
     key = json.loads(z.read("01/key.json"))

@@ -57,12 +57,13 @@ def zipped(files: list[tuple[str, bytes]]) -> bytes:
     return buf.getvalue()
 
 
-def file_stem(text: str) -> str:
+def file_stem(text: str, *more: str) -> str:
     """The downloads' name for the scene ``text``: its designation (else its title) in Latin letters,
     and the first six hex digits of the text's SHA-256 — the same scene, the same name, another
     variant another name (a template's designation is the same for every variant: two variants'
     sheets overwrote each other in a student's Downloads folder). ASCII only, so it travels in a
-    Content-Disposition header and through every file system unchanged."""
+    Content-Disposition header and through every file system unchanged. ``more``: other texts the
+    file is made of (a teacher's variants table beside the base scene), in the fingerprint too."""
     import hashlib
     import re
     import tomllib
@@ -74,7 +75,10 @@ def file_stem(text: str) -> str:
     name = next((v for k in ("designation", "designation_en", "title_en", "title")
                  if isinstance(v := tree.get(k), str) and v.strip()), "scene")
     slug = re.sub(r"[^A-Za-z0-9.]+", "-", romanize(name)).strip("-.")[:48].strip("-.") or "scene"
-    return f"{slug}-{hashlib.sha256(text.encode('utf-8', 'surrogatepass')).hexdigest()[:6]}"
+    digest = hashlib.sha256(text.encode("utf-8", "surrogatepass"))
+    for part in more:
+        digest.update(b"\0" + part.encode("utf-8", "surrogatepass"))
+    return f"{slug}-{digest.hexdigest()[:6]}"
 
 
 def _tree(text: str) -> dict[str, Any]:

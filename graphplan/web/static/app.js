@@ -17,7 +17,7 @@ const WORDS = {
     students: "Таблиця студента (CSV)", grade: "Оцінити", "grades csv": "Оцінки CSV",
     footer: "Усі обчислення — той самий graphplan, що й у командному рядку.",
     chosen: "Обране складання", working: "Обчислення:", ready: "Готово: ", uploaded: "Сцена з файла",
-    "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
+    "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: ",
     passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
     "assembly pick": "Обрати складання", default: "типове",
     "default said": "Не обрано, тож аркуші креслять типове",
@@ -41,7 +41,7 @@ const WORDS = {
     students: "Student's table (CSV)", grade: "Grade", "grades csv": "Grades CSV",
     footer: "Every number is the same graphplan as on the command line.",
     chosen: "Assembly chosen", working: "Working on", ready: "Ready: ", uploaded: "The scene from",
-    "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
+    "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: ",
     passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
     "assembly pick": "Choose assembly", default: "the default",
     "default said": "None chosen, so the sheets draw the default,",
@@ -450,8 +450,9 @@ async function makeKeys() {
     bar.value = job.total;
     const z = await fetch(`/api/key/${encodeURIComponent(job.job)}/zip`, { credentials: "same-origin" });
     if (!z.ok) throw new Error((await z.json()).error);
-    save(await z.blob(), "keys.zip");
-    $("key-status").textContent = t("keys done");
+    const name = filename(z, "keys.zip");      // the base scene's designation and a fingerprint
+    save(await z.blob(), name);
+    $("key-status").textContent = t("keys done") + name;
   } catch (e) {
     const line = named(e.message, "variants.csv", $("variants"));
     $("key-error").textContent = $("base-current").checked ? line : named(line, "base.toml", $("base"));
