@@ -68,8 +68,11 @@ def file_stem(text: str, *more: str) -> str:
     import re
     import tomllib
     from graphplan.util.romanize import romanize
+    # the top-level keys come before the first [table]: only that head is read (the server calls this
+    # in its own process, where a megabyte of TOML would hold every other request)
+    head = re.split(r"^[ \t]*\[", text[:65536], maxsplit=1, flags=re.M)[0]
     try:
-        tree = tomllib.loads(text)
+        tree = tomllib.loads(head)
     except Exception:                          # noqa: BLE001 — a scene that does not read is named "scene"
         tree = {}
     name = next((v for k in ("designation", "designation_en", "title_en", "title")
