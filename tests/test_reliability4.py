@@ -359,14 +359,30 @@ def test_the_peak_measured_is_the_commands_not_the_test_process():
 
 
 @pytest.mark.slow
-def test_check_of_100000_rows_half_failing_within_30_s_and_bounded_memory(tmp_path, thirty_keys):
+def test_check_of_100000_rows_half_failing_grows_linearly_and_bounded_memory(tmp_path, thirty_keys):
+    """100 000 rows over 30 variants, about half failing (each searched): the check's peak memory is
+    bounded, and its processor time (the child's, from getrusage) is at most 20 times that of 12 500
+    such rows — linear is 8 at most (each variant's search is paid by both). A wall bound of 30 s
+    measured the machine's other load instead (the 100 000 rows of test_reliability3 took 42 s of CPU
+    at load 25 where they take 7–10 s alone, stop 57)."""
+    import resource
+
+    def child_cpu(argv: list[str]) -> tuple[float, float]:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        _, peak_mb = child_peak_mb(argv)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, peak_mb
+
+    small = tmp_path / "small.csv"
+    small.write_text(students(thirty_keys, 12_500), encoding="utf-8")
     path = tmp_path / "students.csv"
     path.write_text(students(thirty_keys, 100_000), encoding="utf-8")
     for extra in ([], ["--json"]):
-        t = time.perf_counter()
-        _, peak_mb = child_peak_mb(["check", str(thirty_keys), str(path), *extra])
-        took = time.perf_counter() - t
-        assert took < 30, took
+        little, _ = child_cpu(["check", str(thirty_keys), str(small), *extra])
+        took, peak_mb = child_cpu(["check", str(thirty_keys), str(path), *extra])
+        print(f"\ncheck {' '.join(extra)}: 12 500 rows {little:.1f} s of CPU, 100 000 rows {took:.1f} s "
+              f"({took / little:.1f}×), peak {peak_mb:.0f} MB")
+        assert took < 20 * little, (extra, little, took)
         assert peak_mb < 600, (extra, peak_mb)   # 143 MB (table) and 146 MB (--json); 262 and 174
                                                  # before the table was written line by line
 

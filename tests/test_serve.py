@@ -216,7 +216,7 @@ def test_at_the_bound_of_work_503_with_retry_after_and_past_the_time_bound_the_w
 def test_sheet_one_file_in_either_language_and_a_set_as_a_zip(client):
     en = client.post("/api/sheet?kind=kinematics&format=A1&type=svg&lang=en", content=FOUR_BAR.encode())
     assert en.status_code == 200 and en.headers["content-type"] == "image/svg+xml"
-    assert 'filename="kinematics-A1.svg"' in en.headers["content-disposition"]
+    assert re.search(r'filename="TMM\.03\.00\.000-[0-9a-f]{6}-kinematics-A1\.svg"', en.headers["content-disposition"])
     root = ET.fromstring(en.content)
     assert root.get("width") == "841mm"
     words = " ".join(root.itertext())
@@ -230,7 +230,10 @@ def test_sheet_one_file_in_either_language_and_a_set_as_a_zip(client):
     three = client.post("/api/sheet?kind=kinematics&format=A3&type=svg&lang=uk", content=lab)
     assert three.headers["content-type"] == "application/zip"
     names = zipfile.ZipFile(io.BytesIO(three.content)).namelist()
-    assert names[0] == "kinematics-A3.svg" and names[1:] == [f"kinematics-A3-{k}.svg" for k in range(2, len(names) + 1)]
+    stem = re.match(r'attachment; filename="(TMM\.LR2\.00\.000-[0-9a-f]{6})-kinematics-A3-svg\.zip"',
+                    three.headers["content-disposition"]).group(1)
+    assert names[0] == f"{stem}-kinematics-A3.svg"
+    assert names[1:] == [f"{stem}-kinematics-A3-{k}.svg" for k in range(2, len(names) + 1)]
     again = client.post("/api/sheet?kind=kinematics&format=A3&type=svg&lang=uk", content=lab)
     assert again.content == three.content           # the same input, the same bytes
 
@@ -285,7 +288,8 @@ def test_a_gear_template_s_scene_draws_the_gear_sheet_the_command_line_draws(cli
     assert tree["gears"]["z"] == [13, 30] and tree["gears"]["shifts"] == [0.4, 0.3]
     assert tree["planetary"] == {"type": "A", "ratio": 5, "planets": 3, "module": 0.004, "omega": 150}
     r = client.post("/api/sheet?format=A1&type=svg", content=text.encode())        # no kind: the gear sheet
-    assert r.status_code == 200 and 'filename="gears-A1.svg"' in r.headers["content-disposition"]
+    assert r.status_code == 200 and re.search(r'filename="TMM\.03\.00\.000-[0-9a-f]{6}-gears-A1\.svg"',
+                                              r.headers["content-disposition"]), r.headers["content-disposition"]
     assert cli(monkeypatch, capsys, tmp_path, text, "sheet", "scene.toml", "-o", "x.svg")[0] == 0
     assert r.content == (tmp_path / "x.svg").read_bytes()
     hostile = client.post("/api/toml", json={"template": "gears_b", "values": {"title": HOSTILE}}).text
@@ -358,6 +362,10 @@ VARIANTS = "# base = /etc/passwd\nvariant,r,l\n01,0.064,0.307\n02,0.05,0.2\n"
 def test_keys_then_grades_from_the_key_zip_and_as_csv(client):
     r = client.post("/api/key?lang=en", files={"variants": ("../../v.csv", VARIANTS), "base": ("/etc/b.toml", CRANK)})
     assert r.status_code == 200 and r.headers["content-type"] == "application/zip"
+    # named after the base scene and a fingerprint of it and the table (the client's names unused)
+    from graphplan.web.jobs import file_stem
+    assert r.headers["content-disposition"] == f'attachment; filename="{file_stem(CRANK, VARIANTS)}-keys.zip"'
+    assert file_stem(CRANK, VARIANTS).startswith("TMM.01.00.000-") and file_stem(CRANK, VARIANTS) != file_stem(CRANK)
     z = zipfile.ZipFile(io.BytesIO(r.content))
     assert {"01/key.json", "02/key.json", "summary.json", "summary.csv"} <= set(z.namelist())
     key = json.loads(z.read("01/key.json"))

@@ -357,6 +357,7 @@ def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
         "structure": st.structure.formula,
         "scales": {"mu_l": plans.mu_l, "mu_v": plans.mu_v, "mu_a": plans.mu_a},
         "phi0": round(st.phi0, 6),
+        "open": opening(st, plans),
         "positions": [{"key": p.key, "index": p.index, "phi": round(p.phi, 6),
                        "accel": p.acceleration is not None} for p in plans.positions],
         "scheme": scheme,
@@ -368,6 +369,23 @@ def explorer_data(st: Study, precision: float = 0.5, step: float = 1.0, lang: st
         "diagrams": diagrams_data(st, plans.precision, phi),
         "warnings": warnings_data(st, plans),
     }
+
+
+def opening(st: Study, plans: Plans) -> dict[str, Any]:
+    """Where the page opens: the first position with an acceleration plan (the scene's ``accel``,
+    whose plans the sheet draws and reads), else position 1 when position 0 is an extreme position
+    (the output stands still there: most velocities are 0 — a six-bar's dead position shows a plan
+    shrunk to a point), else position 0. ``why``: "accel", "still" or "" (position 0); ``still0``:
+    whether position 0 is an extreme position (the page says so)."""
+    still0 = any(abs((st.phi0 - e + 180.0) % 360.0 - 180.0) < 1e-6 for e in st.extremes)
+    first = plans.positions[0]
+    pick, why = first, ""
+    accel = [p for p in plans.positions if p.acceleration is not None]
+    if accel and accel[0].key != first.key:
+        pick, why = accel[0], "accel"
+    elif not accel and still0 and len(plans.positions) > 1:
+        pick, why = plans.positions[1], "still"
+    return {"key": pick.key, "index": pick.index, "phi": round(pick.phi, 6), "why": why, "still0": still0}
 
 
 def _asset(name: str) -> str:

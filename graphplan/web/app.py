@@ -228,7 +228,10 @@ async def preview(request: Request) -> Response:
     phi = number(request, "phi", 0.0, -1e6, 1e6, "deg")
     lang = lang_of(request)
     text = scene_text(await body(request, SCENE_LIMIT, "scene"))
-    return await in_worker(request, "preview", text, phi, lang)
+    answer = await in_worker(request, "preview", text, phi, lang)
+    from graphplan.web.jobs import file_stem
+    answer.headers["X-File-Stem"] = file_stem(text)      # the page names the TOML it saves so
+    return answer
 
 
 async def check(request: Request) -> Response:
@@ -366,6 +369,7 @@ class Batch:
     lang: str = "uk"
     ended: float = 0.0
     proc: Any = None
+    stem: str = "keys"               # the zip's name: the base scene's designation and a fingerprint
 
     def done_count(self) -> int:
         if self.state == "done":
@@ -421,8 +425,11 @@ async def start_batch(request: Request) -> Batch:
     except GraphplanError as exc:
         shutil.rmtree(folder, ignore_errors=True)
         raise refused_error(422, exc, folder) from None
+    from graphplan.web.jobs import file_stem
+    base = parts["base"].decode("utf-8-sig", "replace")
     batch = Batch(secrets.token_hex(12), folder, total, time.monotonic(),
-                  lang=told_lang(request, vt.base_lang(folder / "variants.csv", table)))
+                  lang=told_lang(request, vt.base_lang(folder / "variants.csv", table)),
+                  stem=file_stem(base, parts["variants"].decode("utf-8-sig", "replace")) + "-keys")
     state.batches[batch.id] = batch
     args = [sys.executable, "-m", "graphplan", "key", "variants.csv", "-o", "keys", "--quiet",
             "--jobs", str(state.config.key_jobs)]
@@ -505,7 +512,7 @@ def take_zip(state, batch: Batch) -> Response:
     shutil.rmtree(batch.folder, ignore_errors=True)
     state.batches.pop(batch.id, None)
     return Response(data, media_type="application/zip",
-                    headers={"Content-Disposition": 'attachment; filename="keys.zip"'})
+                    headers={"Content-Disposition": f'attachment; filename="{batch.stem}.zip"'})
 
 
 async def key(request: Request) -> Response:

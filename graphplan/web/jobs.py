@@ -57,6 +57,33 @@ def zipped(files: list[tuple[str, bytes]]) -> bytes:
     return buf.getvalue()
 
 
+def file_stem(text: str, *more: str) -> str:
+    """The downloads' name for the scene ``text``: its designation (else its title) in Latin letters,
+    and the first six hex digits of the text's SHA-256 — the same scene, the same name, another
+    variant another name (a template's designation is the same for every variant: two variants'
+    sheets overwrote each other in a student's Downloads folder). ASCII only, so it travels in a
+    Content-Disposition header and through every file system unchanged. ``more``: other texts the
+    file is made of (a teacher's variants table beside the base scene), in the fingerprint too."""
+    import hashlib
+    import re
+    import tomllib
+    from graphplan.util.romanize import romanize
+    # the top-level keys come before the first [table]: only that head is read (the server calls this
+    # in its own process, where a megabyte of TOML would hold every other request)
+    head = re.split(r"^[ \t]*\[", text[:65536], maxsplit=1, flags=re.M)[0]
+    try:
+        tree = tomllib.loads(head)
+    except Exception:                          # noqa: BLE001 — a scene that does not read is named "scene"
+        tree = {}
+    name = next((v for k in ("designation", "designation_en", "title_en", "title")
+                 if isinstance(v := tree.get(k), str) and v.strip()), "scene")
+    slug = re.sub(r"[^A-Za-z0-9.]+", "-", romanize(name)).strip("-.")[:48].strip("-.") or "scene"
+    digest = hashlib.sha256(text.encode("utf-8", "surrogatepass"))
+    for part in more:
+        digest.update(b"\0" + part.encode("utf-8", "surrogatepass"))
+    return f"{slug}-{digest.hexdigest()[:6]}"
+
+
 def _tree(text: str) -> dict[str, Any]:
     from graphplan.model import bounds as B
     return B.parse_toml(text, SCENE)
@@ -147,6 +174,7 @@ def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str
     lang = _lang(lang, tree)
     if not kinds:
         kinds = [scene_kind if scene_kind in ("cam", "gears") else "kinematics"]
+    stem = file_stem(text)
     files: list[tuple[str, bytes]] = []
     for kind in kinds:
         build = BUILDERS.get(kind)
@@ -166,14 +194,14 @@ def sheet(folder: Path, text: str, kinds: list[str], fmt: str, kind_of_file: str
         made.write(out, False, dpi)
         for n in range(1, len(made.pages) + 1):
             p = page_path(out, n)
-            files.append((p.name, p.read_bytes()))
+            files.append((f"{stem}-{p.name}", p.read_bytes()))
     if len(files) == 1:
         name, data = files[0]
         return Answer(body=data, media=TYPES[kind_of_file],
                       headers={"Content-Disposition": f'attachment; filename="{name}"'})
-    stem = "-".join(kinds)
+    what = "-".join(kinds)
     return Answer(body=zipped(files), media="application/zip",
-                  headers={"Content-Disposition": f'attachment; filename="{stem}-{f.name}-{kind_of_file}.zip"'})
+                  headers={"Content-Disposition": f'attachment; filename="{stem}-{what}-{f.name}-{kind_of_file}.zip"'})
 
 
 def view(folder: Path, text: str, lang: str | None) -> Answer:
@@ -198,7 +226,7 @@ def view(folder: Path, text: str, lang: str | None) -> Answer:
         plans = api.plans(st, precision=0.5, format="A1").value
         page = explorer_html(st, precision=0.5, step=1.0, lang=lang, plans=plans)
     return Answer(body=page.encode("utf-8"), media="text/html; charset=utf-8",
-                  headers={"Content-Disposition": 'attachment; filename="explorer.html"'})
+                  headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-explorer.html"'})
 
 
 def tables(folder: Path, text: str, lang: str | None) -> Answer:
@@ -225,11 +253,11 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
                 w.writerow([p["phi_deg"], q, p["exact"][q], p["graphical"][q], "" if err is None else err])
         files.append(("cam.csv", buf.getvalue().encode()))
         return Answer(body=zipped(files), media="application/zip",
-                      headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+                      headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-tables.zip"'})
     if kind == "gears":
         files = gears_tables(_gears_doc(obj))
         return Answer(body=zipped(files), media="application/zip",
-                      headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+                      headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-tables.zip"'})
     st = obj
     exact = api.study(st).to_json()
     buf = io.StringIO()
@@ -255,7 +283,7 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
                             "" if e.get("error_pct") is None else e["error_pct"]])
     files.append(("plans.csv", buf.getvalue().encode()))
     return Answer(body=zipped(files), media="application/zip",
-                  headers={"Content-Disposition": 'attachment; filename="tables.zip"'})
+                  headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-tables.zip"'})
 
 
 def _csv(rows: list[list[Any]]) -> bytes:
@@ -510,7 +538,9 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
             inner = head.replace("<svg ", f'<svg x="0" y="{cap:.3f}" ', 1) + ">" + body
             parts.append(inner)
         else:
-            lines = _wrap(error, 60)          # already in the reader's language (refused)
+            # already in the reader's language (refused); without the server's name for the scene
+            # ("scene.toml: …"): the box is the assembly's own, and a student's file has a name of its own
+            lines = _wrap(error.removeprefix(f"{SCENE}: "), 60)
             size = max(4.0, w / 60)
             for j, line in enumerate(lines):
                 parts.append(f'<text x="4" y="{cap + 2 * size + 1.5 * size * j:.3f}" font-size="{size:.3f}" fill="#a00" '

@@ -40,6 +40,10 @@
       footer: "graphplan explorer: one offline file, no network access; the values are computed by graphplan's exact "
         + "solver and its graphical constructions.",
       langs: "language",
+      openAccel: "The page opened at {at}, where the sheet draws the acceleration plan{still}. The button 0 returns to position 0.",
+      openStill: "The page opened at {at}{still}. The button 0 returns to position 0.",
+      still0: " (position 0 is an extreme position: the output stands still there and most velocities are zero)",
+      atPosition: "position {k}",
       symbols: [["p_v, π", "the poles of the velocity and acceleration plans"], ["μ_l, μ_v, μ_a", "the scales: m, m/s, m/s² per mm"],
         ["a^n_{BA}", "normal acceleration of B about A, v^2_{BA}/l_{BA}, toward A"],
         ["a^τ_{BA}", "tangential acceleration of B about A, ⊥ BA"], ["a^k", "Coriolis acceleration 2·ω·v_r"],
@@ -82,6 +86,10 @@
       footer: "graphplan explorer: один офлайн-файл, без мережі; значення обчислені точним розв'язувачем graphplan і "
         + "його графічними побудовами.",
       langs: "мова",
+      openAccel: "Сторінка відкрилася в {at}, для якого аркуш будує план прискорень{still}. Кнопка 0 повертає в положення 0.",
+      openStill: "Сторінка відкрилася в {at}{still}. Кнопка 0 повертає в положення 0.",
+      still0: " (положення 0 крайнє: вихідна ланка в ньому стоїть, і більшість швидкостей нульові)",
+      atPosition: "положенні {k}",
       symbols: [["p_v, π", "полюси плану швидкостей і плану прискорень"], ["μ_l, μ_v, μ_a", "масштаби: м, м/с, м/с² в 1 мм"],
         ["a^n_{BA}", "нормальне прискорення B відносно A, v^2_{BA}/l_{BA}, до A"],
         ["a^τ_{BA}", "тангенціальне прискорення B відносно A, ⊥ BA"], ["a^k", "прискорення Коріоліса 2·ω·v_r"],
@@ -373,7 +381,7 @@
 
   // -- the mechanism ---------------------------------------------------------------------------------------
   const mechSvg = $("mech");
-  let index = nearest(D.phi0);
+  let index = nearest(D.open ? D.open.phi : D.phi0);     // where the plans read (explorer.py opening)
   const mechZ = Zoomable(mechSvg, () => drawMechanism(index));
   const mechBox = [1e9, 1e9, -1e9, -1e9];
   Object.values(S.frame).forEach((p) => grow(mechBox, p));
@@ -1131,6 +1139,11 @@
     $("cap-diagrams").textContent = w.diagrams;
     $("diagrams").setAttribute("aria-label", w.diagrams);
     $("footer").textContent = w.footer;
+    const o = D.open || {};
+    const at = o.index !== null && o.index !== undefined ? fill(w.atPosition, { k: String(o.index) }) : "φ = " + fx(o.phi || 0, 1) + "°";
+    $("open-note").textContent = o.why === "accel" ? fill(w.openAccel, { at: at, still: o.still0 ? w.still0 : "" })
+      : o.why === "still" ? fill(w.openStill, { at: at, still: w.still0 }) : "";
+    $("open-note").hidden = !o.why;
   }
   function setLanguage(l) {
     lang = l;

@@ -17,7 +17,7 @@ const WORDS = {
     students: "Таблиця студента (CSV)", grade: "Оцінити", "grades csv": "Оцінки CSV",
     footer: "Усі обчислення — той самий graphplan, що й у командному рядку.",
     chosen: "Обране складання", working: "Обчислення:", ready: "Готово: ", uploaded: "Сцена з файла",
-    "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: keys.zip",
+    "no file": "Оберіть файл", "keys progress": "Варіантів готово: ", "keys done": "Ключі готові: ",
     passed: "зараховано", failed: "не зараховано", rows: "рядків", assembly: "складання",
     "assembly pick": "Обрати складання", default: "типове",
     "default said": "Не обрано, тож аркуші креслять типове",
@@ -41,7 +41,7 @@ const WORDS = {
     students: "Student's table (CSV)", grade: "Grade", "grades csv": "Grades CSV",
     footer: "Every number is the same graphplan as on the command line.",
     chosen: "Assembly chosen", working: "Working on", ready: "Ready: ", uploaded: "The scene from",
-    "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: keys.zip",
+    "no file": "Choose a file", "keys progress": "Variants done: ", "keys done": "The keys are ready: ",
     passed: "passed", failed: "failed", rows: "rows", assembly: "assembly",
     "assembly pick": "Choose assembly", default: "the default",
     "default said": "None chosen, so the sheets draw the default,",
@@ -95,6 +95,7 @@ async function post(path, body, type) {
     const err = new Error(line);
     err.status = r.status;
     err.retry = r.headers.get("Retry-After");
+    err.stem = r.headers.get("X-File-Stem");
     throw err;
   }
   return r;
@@ -288,6 +289,7 @@ async function draw(seq) {
     const r = await post(`/api/scene/preview?phi=${encodeURIComponent(phi)}&lang=${state.lang}`, text, "text/plain; charset=utf-8");
     const blob = await r.blob();
     if (seq !== state.seq) return;
+    state.stem = [text, r.headers.get("X-File-Stem")];   // the downloads' name: the scene's designation and its fingerprint
     const keys = JSON.parse(decodeURIComponent(r.headers.get("X-Branch-Keys") || "%5B%5D"));
     const asm = JSON.parse(decodeURIComponent(r.headers.get("X-Assemblies") || "%5B%5D"));
     const img = $("preview-img");
@@ -307,6 +309,7 @@ async function draw(seq) {
     showAssemblies(keys, asm);
   } catch (e) {
     if (seq !== state.seq) return;
+    if (e.stem) state.stem = [text, e.stem];
     showError(e.message);
     if (e.status === 422) guessKinds(text);
     if (e.status === 503) setTimeout(changed, 1000 * Number(e.retry || 5));   // busy: ask again
@@ -327,7 +330,7 @@ function showAssemblies(keys, asm) {
     b.id = "assembly-" + (k + 1);
     const said = Object.entries(a.branch).map(([p, s]) => `${p} = ${s > 0 ? "+1" : "−1"}`).join(", ");
     const dflt = a.default ? ` (${t("default")})` : "";
-    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}${dflt}` + (a.error ? ` — ${a.error}` : ""));
+    b.setAttribute("aria-label", `${t("assembly pick")} ${k + 1}: [branch] ${said}${dflt}` + (a.error ? ` — ${asUploaded(a.error)}` : ""));
     b.textContent = `${t("assembly")} ${k + 1}${dflt}`;
     if (a.default) b.classList.add("default");
     if (a.error) b.disabled = true;
@@ -447,8 +450,9 @@ async function makeKeys() {
     bar.value = job.total;
     const z = await fetch(`/api/key/${encodeURIComponent(job.job)}/zip`, { credentials: "same-origin" });
     if (!z.ok) throw new Error((await z.json()).error);
-    save(await z.blob(), "keys.zip");
-    $("key-status").textContent = t("keys done");
+    const name = filename(z, "keys.zip");      // the base scene's designation and a fingerprint
+    save(await z.blob(), name);
+    $("key-status").textContent = t("keys done") + name;
   } catch (e) {
     const line = named(e.message, "variants.csv", $("variants"));
     $("key-error").textContent = $("base-current").checked ? line : named(line, "base.toml", $("base"));
@@ -610,7 +614,11 @@ async function start() {
   $("dl-tables").addEventListener("click", (e) => download(`/api/tables?lang=${$("sheet-lang").value}`, "tables.zip",
                                                            e.currentTarget, () => t("tables")));
   $("dl-toml").addEventListener("click", async () => {
-    try { save(new Blob([await sceneText()], { type: "text/plain" }), "scene.toml"); } catch (e) { $("dl-error").textContent = e.message; }
+    try {
+      const text = await sceneText();
+      const stem = state.stem && state.stem[0] === text && state.stem[1];
+      save(new Blob([text], { type: "text/plain" }), (stem || "scene") + ".toml");
+    } catch (e) { $("dl-error").textContent = e.message; }
   });
   $("tab-student").addEventListener("click", () => showPart("student"));
   $("tab-teacher").addEventListener("click", () => showPart("teacher"));
