@@ -7377,3 +7377,99 @@ planets = 4
 module = 0.003
 rpm = 1450
 '''
+
+
+# Stop 57, the blind reviewer's (b): an English crank-rocker four-bar of a walking-beam conveyor, its coupler
+# plate ABE carrying the pusher's point E off AB (600 N at E on the slow swing); its check in test_review57.
+CONVEYOR_EN57 = '''# review57 (b): in ENGLISH, a crank-rocker four-bar of a walking-beam conveyor: the crank O1A turns CLOCKWISE,
+# the coupler plate ABE carries the pusher's point E off the line AB; a 600 N resistance force at E on the
+# rocker's working (slow) swing, opposing E's motion; masses by length, and [dynamics].
+title = "Шарнірний чотириланковий механізм крокуючого конвеєра"
+title_en = "Crank-rocker four-bar of a walking-beam conveyor"
+designation = "TMM.KP.57.800"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-57"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.06]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.09
+rpm = 75
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = [0.15, 0.03], E = [0.16, 0.09] }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 100
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "E"
+magnitude = 600
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.92
+synchronous_rpm = 1500
+'''
+
+# Stop 57, the blind reviewer's (d): a pair 15/28 "auto" and a type-B train with given teeth 17/40/20/77.
+GEARS_REVIEW57 = '''# review57 (d): a pair 15/28 with the shifts chosen by the rule ("auto"), m = 5 mm, and a two-row planetary
+# train of type B with GIVEN teeth 17/40/20/77 (u1H = 1 + 40·77/(17·20) = 10.0588), K = 3, 960 rpm.
+title = "Зубчаста передача 15/28 і дворядний планетарний редуктор (рецензія 57)"
+title_en = "A gear pair 15/28 and a two-row planetary reducer (review 57)"
+designation = "ТММ.ЗП.57.600"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-57"
+organisation = "НУБіП України"
+
+[gears]
+z = [15, 28]
+module = 0.005
+shifts = "auto"
+
+[planetary]
+type = "B"
+z = [17, 40, 20, 77]
+planets = 3
+module = 0.0025
+rpm = 960
+'''
