@@ -2364,7 +2364,13 @@ def yoke_at(fp: ForcePlans, link: str, mu: float, framed: bool = True):
     if guide.body == FRAME and framed:
         line = (guide.through / mu, complex(np.exp(1j * guide.angle)))
         O = mech.frame[mech.crank.pivot] / mu
-    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu)
+    # the frame's reaction on the rod (R03) acts where ΣM = 0 puts it: the rod is drawn on past it
+    # (the exact line and the one the group's construction drew)
+    keys = [k for k, r in fp.ks.reactions.items() if r.guide is not None and {r.on, r.frm} == {link, FRAME}]
+    reach = [complex(fp.ks.reactions[k].line_point()[0]) / mu for k in keys]
+    reach += [complex(m.line) / mu for g in fp.groups for k, m in g.reactions.items()
+              if k in keys and m.line is not None]
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu, reach)
     return (*yoke_shape(*frames[-1], slot, rod), bushing)
 
 
