@@ -98,6 +98,8 @@ def test_table_4_gives_the_slots_angle_and_distance_from_c(st):
     assert texts[at["α₃"] + 1] == "90°" and texts[at["α₃"] + 2] == "90°"
     assert texts[at["e₃"] + 1] == "0,250" and texts[at["e₃"] + 2] == "125,0"
     assert texts.count("CS₃") == 1 and texts[at["CS₃"] + 1] == f"{CS3:.3f}".replace(".", ",")
+    # e3 said measured from the yoke's joint C (its own point; a yoke with no joint says D)
+    assert "від C до осі паза" in " ".join(texts) and "від D" not in " ".join(texts)
 
 
 def test_r03_acts_on_the_drawn_rod(st):

@@ -475,7 +475,9 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     given = {label for label, _, _ in yoke_dimensions(st)}
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         k = yoke.strip("{}")     # e_k said only where its row is (a slot through D has none: kin51's own)
-        notes.append(w('dims yoke' if f"e_{{{k}}}" in given else 'dims yoke angle', n=k))
+        # e_k measured from the yoke's own point: D of a yoke with no joint, C of one pinned there (review 57)
+        ref = next((next(iter(lk.local)) for lk in st.mech.links.values() if str(lk.number) == k), "D")
+        notes.append(w('dims yoke' if f"e_{{{k}}}" in given else 'dims yoke angle', n=k, d=_pivot_name(ref)))
     # the centres at their links' middles said only beside one that has its own row (review 12's O2S3):
     # where every centre is at its middle (the lab's default) the line says nothing a reader needs
     middles = middle_centres(st)
