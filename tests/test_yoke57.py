@@ -78,7 +78,9 @@ def test_the_position_plan_draws_one_rigid_yoke_at_every_thick_position(st, plan
                 if i.kind == "segment" and i.role == "link" and i.step == f"position {k}"]
         on_rod = [s for s in segs if abs(s[0].imag) < 1e-9 and abs(s[1].imag) < 1e-9]
         rod, = on_rod
-        assert sorted((rod[0].real, rod[1].real)) == pytest.approx([A.real, C.real], abs=1e-6)
+        # … from the slot's side nearer C (not across the block's path inside the slot) to C
+        side = max(s1[0].real, s2[0].real)
+        assert sorted((rod[0].real, rod[1].real)) == pytest.approx([side, C.real], abs=1e-6)
         rods.append(abs(rod[1] - rod[0]))
         # the other lines: the crank O–A, the rod C–E, the rocker O3–E — none from the slot's ends
         ends = [s1[0], s1[1], s2[0], s2[1]]

@@ -2390,10 +2390,10 @@ def yoke_lines(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> lis
 
 def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str, framed: bool = True) -> None:
     """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
-    from graphplan.model.linkshape import rod_stubs, slot_outline
+    from graphplan.model.linkshape import rod_from_slot, rod_stubs, slot_outline
     a, b, p, q = yoke_mm(fp, link, mu, framed)
     rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
-    rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
+    rec.segment(*(_pt(z) for z in rod_from_slot(a, b, p, q)), role="link", layer="mechanism", step=step)
     body = fp.ks.kin.bodies[link]
     own = [complex(body.at(w)[0][0]) / mu for w in fp.ks.mech.links[link].local.values()]
     for f, z in rod_stubs(p, _unit(q - p), own):

@@ -181,6 +181,26 @@ def slot_outline(a: complex, b: complex, half: float = SLOT_HALF_MM) -> list[com
     return [a - n, b - n, b + n, a + n, a - n]
 
 
+def rod_from_slot(a: complex, b: complex, p: complex, q: complex,
+                  half: float = SLOT_HALF_MM) -> tuple[complex, complex]:
+    """A yoke's rod ``p``–``q`` as drawn beside its slot ``a``–``b`` drawn as its two sides: an end of
+    the rod on the slot's line starts at the slot's side instead (``half`` mm off the line, along the
+    rod), not across the block's path inside the slot (review 57)."""
+    if abs(q - p) < 1e-9 or abs(b - a) < 1e-9:
+        return p, q
+    ur, us = (q - p) / abs(q - p), (b - a) / abs(b - a)
+    sin = abs((us.conjugate() * ur).imag)
+    if sin < 0.05:
+        return p, q
+    x = rod_crossing(p, ur, a, us)
+    step = half / sin
+    if abs(p - x) < 1e-6 and abs(q - p) > step:
+        return p + step * ur, q
+    if abs(q - x) < 1e-6 and abs(q - p) > step:
+        return p, q - step * ur
+    return p, q
+
+
 def rod_stubs(ref: complex, u_rod: complex, points: list[complex]) -> list[tuple[complex, complex]]:
     """A yoke's points off its rod's axis (a centre of mass set aside) joined to the rod: from each
     one's foot on the axis to it — so that the body stays one piece."""
