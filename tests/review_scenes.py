@@ -7473,3 +7473,96 @@ planets = 3
 module = 0.0025
 rpm = 960
 '''
+
+
+# Stop 57, the blind reviewer's scene a: a Scotch yoke whose rod end C (its joint, off the slot) drives a rocker O3E (test_yoke57)
+YOKE_REVIEW57 = '''
+# review57 (a): a Scotch-yoke drive of a rocker (a pump's beam): the crank OA turns CLOCKWISE, its block 2 at A
+# slides in the vertical slot of the yoke 3, which runs on a horizontal guide through O; the yoke's rod end C (on the guide line)
+# drives, through the rod CE, the rocker O3E. I(0-1) -> II(2-3) RPP -> II(4-5) RRR; a 40 N·m resistance moment
+# on the rocker's working (slow) swing, masses by length, the yoke 6 kg, and [dynamics].
+title = "Кулісний (синусний) механізм привода коромисла насоса"
+title_en = "Scotch-yoke drive of a pump's rocker"
+designation = "ТММ.КП.57.700"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-57"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O3 = [0.50, 0.20]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0, title_uk = "куліси", title_en = "of the yoke" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "3"
+mass = 1.5
+inertia = 0.0005
+
+[[link]]
+name = "3"
+number = 3
+joints = ["C"]
+slides_on = "x"
+guide = { through = [-0.25, 0], angle_deg = 90 }
+points = { S3 = [-0.11, 0.0] }
+mass = 6
+inertia = 0.04
+
+[[link]]
+name = "CE"
+number = 4
+joints = ["C", "E"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O3E"
+number = 5
+joints = ["O3", "E"]
+length = 0.18
+points = { S5 = 0.5 }
+
+[branch]
+E = -1
+
+[positions]
+count = 12
+start = "working"
+working_stroke = "to_max"
+output = "O3E"
+accel = [2, 8]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[moment]]
+link = "O3E"
+magnitude = 40
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -2364,7 +2364,13 @@ def yoke_at(fp: ForcePlans, link: str, mu: float, framed: bool = True):
     if guide.body == FRAME and framed:
         line = (guide.through / mu, complex(np.exp(1j * guide.angle)))
         O = mech.frame[mech.crank.pivot] / mu
-    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu)
+    # the frame's reaction on the rod (R03) acts where ΣM = 0 puts it: the rod is drawn on past it
+    # (the exact line and the one the group's construction drew)
+    keys = [k for k, r in fp.ks.reactions.items() if r.guide is not None and {r.on, r.frm} == {link, FRAME}]
+    reach = [complex(fp.ks.reactions[k].line_point()[0]) / mu for k in keys]
+    reach += [complex(m.line) / mu for g in fp.groups for k, m in g.reactions.items()
+              if k in keys and m.line is not None]
+    slot, rod, bushing = yoke_body(frames, blocks, own, line, O, mech.crank.length / mu, reach)
     return (*yoke_shape(*frames[-1], slot, rod), bushing)
 
 
@@ -2384,10 +2390,10 @@ def yoke_lines(fp: ForcePlans, link: str, mu: float, framed: bool = True) -> lis
 
 def draw_yoke(rec: Record, fp: ForcePlans, link: str, mu: float, step: str, framed: bool = True) -> None:
     """The yoke as one body: its slot (its two sides, closed) and its rod from the slot through D."""
-    from graphplan.model.linkshape import rod_stubs, slot_outline
+    from graphplan.model.linkshape import rod_from_slot, rod_stubs, slot_outline
     a, b, p, q = yoke_mm(fp, link, mu, framed)
     rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role="link", layer="mechanism", step=step)
-    rec.segment(_pt(p), _pt(q), role="link", layer="mechanism", step=step)
+    rec.segment(*(_pt(z) for z in rod_from_slot(a, b, p, q)), role="link", layer="mechanism", step=step)
     body = fp.ks.kin.bodies[link]
     own = [complex(body.at(w)[0][0]) / mu for w in fp.ks.mech.links[link].local.values()]
     for f, z in rod_stubs(p, _unit(q - p), own):

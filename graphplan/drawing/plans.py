@@ -11,7 +11,7 @@ from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from graphplan.model.linkshape import (BUSH_GAP_MM, BUSH_HALF_MM, extra_points, outline_names, rod_crossing,
-                                        rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
+                                        rod_from_slot, rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -1129,9 +1129,11 @@ def draw_yoke(rec: Record, sc: Scheme, lay: Layout, name: str, spans: YokeSpans,
     width = None if thick else 0.3
     if thick:
         rec.add("polyline", [_pt(z) for z in slot_outline(a, b)], role=role, layer="mechanism", step=step)
+        p_, q_ = rod_from_slot(a, b, p, q)       # the rod from the slot's side, not across its inside
     else:
         rec.segment(_pt(a), _pt(b), role=role, width=width, layer="mechanism", step=step)
-    rec.segment(_pt(p), _pt(q), role=role, width=width, layer="mechanism", step=step)
+        p_, q_ = p, q
+    rec.segment(_pt(p_), _pt(q_), role=role, width=width, layer="mechanism", step=step)
     pose = lay.poses[name]
     for f, z in rod_stubs(p, _yoke_frame(sc, lay, name)[1], [pose.at(w) for w in sc.mech.links[name].local.values()]):
         rec.segment(_pt(f), _pt(z), role=role, width=width, layer="mechanism", step=step)

@@ -119,18 +119,26 @@ SLOT_HALF_MM = 3.5    # a yoke's slot drawn as its two sides this far either sid
 SLOT_END_MM = 7.0     # … running this far beyond the block's centre at either end of its travel
 
 
+YOKE_SLOT_MIN_DEG = 45.0   # a slider's slot this steep to its rod or steeper: a yoke; shallower: a wedge's face
+
+
 def yoke_guide(mech, name: str):
-    """A yoke: a link with no revolute joint of its own that slides along a guide (the rod in its
-    bushings) and carries a guide a block slides in (its slot) — the Scotch yoke's slotted
-    crosshead. Its carried guide (model.mechanism.Guide), or None for any other link."""
+    """A yoke: a link that slides along a guide (the rod in its bushings) and carries a guide a
+    block slides in (its slot) — the Scotch yoke's slotted crosshead. With no revolute joint of its
+    own, or with joints (the rod's end C pinned to a further rod, review 57) and its slot at
+    ``YOKE_SLOT_MIN_DEG`` or more to the rod: a slot at a shallow angle is a wedge's inclined face
+    (``drawing.plans._wedge_sides``), not a yoke. Its carried guide (model.mechanism.Guide), or
+    None for any other link."""
+    import math
     link = mech.links[name]
-    if link.joints or link.slides_on is None:
+    if link.slides_on is None:
         return None
     for other in mech.links.values():
         if other.slides_on is not None:
             g = mech.guides[other.slides_on]
             if g.body == name:
-                return g
+                steep = abs(math.sin(g.angle)) >= math.sin(math.radians(YOKE_SLOT_MIN_DEG)) - 1e-9
+                return g if not link.joints or steep else None
     return None
 
 
@@ -173,6 +181,26 @@ def slot_outline(a: complex, b: complex, half: float = SLOT_HALF_MM) -> list[com
     return [a - n, b - n, b + n, a + n, a - n]
 
 
+def rod_from_slot(a: complex, b: complex, p: complex, q: complex,
+                  half: float = SLOT_HALF_MM) -> tuple[complex, complex]:
+    """A yoke's rod ``p``–``q`` as drawn beside its slot ``a``–``b`` drawn as its two sides: an end of
+    the rod on the slot's line starts at the slot's side instead (``half`` mm off the line, along the
+    rod), not across the block's path inside the slot (review 57)."""
+    if abs(q - p) < 1e-9 or abs(b - a) < 1e-9:
+        return p, q
+    ur, us = (q - p) / abs(q - p), (b - a) / abs(b - a)
+    sin = abs((us.conjugate() * ur).imag)
+    if sin < 0.05:
+        return p, q
+    x = rod_crossing(p, ur, a, us)
+    step = half / sin
+    if abs(p - x) < 1e-6 and abs(q - p) > step:
+        return p + step * ur, q
+    if abs(q - x) < 1e-6 and abs(q - p) > step:
+        return p, q - step * ur
+    return p, q
+
+
 def rod_stubs(ref: complex, u_rod: complex, points: list[complex]) -> list[tuple[complex, complex]]:
     """A yoke's points off its rod's axis (a centre of mass set aside) joined to the rod: from each
     one's foot on the axis to it — so that the body stays one piece."""
@@ -192,15 +220,17 @@ ROD_PAST_MM = 3.0      # the rod reaches this far past its bushing's far end
 
 def yoke_body(frames: list[tuple[complex, complex, complex, complex]], blocks: list[list[complex]],
               own: list[list[complex]], guide: tuple[complex, complex] | None = None,
-              O: complex | None = None, r: float = 0.0):
+              O: complex | None = None, r: float = 0.0, reach: list[complex] = ()):
     """A yoke's constant spans over the positions it is drawn at (mm), one rigid body: at each
     position its frame ``frames[i]`` = (D, the rod's unit, the slot guide's point, the slot's unit),
     the blocks' points in its slot ``blocks[i]`` and its own points ``own[i]``. The slot over every
     block position and the rod's crossing (``yoke_spans``); with the frame's ``guide`` line (point,
     unit) its rod's bushing on that line on the side of its own points, clear of the crank pin's
     circle (about ``O``, radius ``r``), of the slot's sweep and of a point off the rod, the rod long
-    enough to stay in it at every position. Returns (slot span, rod span, bushing (middle, unit) or
-    None)."""
+    enough to stay in it at every position; the rod drawn on ``ROD_PAST_MM`` past every point of
+    ``reach`` at the last frame (where the frame's reaction R03 acts on it at the force position,
+    review 57 #4: not in empty space beyond the rod's end). Returns (slot span, rod span, bushing
+    (middle, unit) or None)."""
     import math
 
     def along(z: complex, base: complex, u: complex) -> float:
@@ -212,9 +242,17 @@ def yoke_body(frames: list[tuple[complex, complex, complex, complex]], blocks: l
         slot_at += [along(x, base, us)] + [along(z, base, us) for z in bl]
         own_at += [along(z, ref, ur) for z in ow]
         feet.append((x, abs((us.conjugate() * ur).imag)))
+    last_ref, last_ur = frames[-1][0], frames[-1][1]
+    past = [along(z, last_ref, last_ur) for z in reach]
+
+    def on_past(span: tuple[float, float]) -> tuple[float, float]:
+        lo, hi = span
+        for t in past:
+            lo, hi = min(lo, t - ROD_PAST_MM), max(hi, t + ROD_PAST_MM)
+        return lo, hi
     slot, rod = yoke_spans(slot_at, cross_rod, own_at)
     if guide is None or O is None:
-        return slot, rod, None
+        return slot, on_past(rod), None
     gb, ug = guide
     ur0 = frames[0][1]
     side = 1.0 if (max(own_at) - cross_rod) * along(gb + ur0, gb, ug) >= 0 else -1.0
@@ -228,4 +266,4 @@ def yoke_body(frames: list[tuple[complex, complex, complex, complex]], blocks: l
     mid = gb + side * (near + BUSH_HALF_MM) * ug
     far = mid + side * (BUSH_HALF_MM + ROD_PAST_MM) * ug
     _, rod = yoke_spans(slot_at, cross_rod, own_at, [along(far, ref, ur) for ref, ur, _, _ in frames])
-    return slot, rod, (mid, ug)
+    return slot, on_past(rod), (mid, ug)

@@ -37,6 +37,7 @@ def _symbol(key: str, letter: str = "v", e: dict | None = None) -> str:
 # -- tables ------------------------------------------------------------------------------------
 
 RELATIVE = re.compile(r"[A-Z][a-z0-9_]*[A-Z][a-z0-9_]*")    # a relative velocity's key: "CB", "A3A2"
+CENTRE = re.compile(r"S\d*")      # a centre of mass's key: "S3"
 
 
 def velocity_columns(doc: dict, precision: float) -> list[str]:
@@ -65,15 +66,19 @@ def velocity_twins(doc: dict, precision: float) -> dict[str, list[str]]:
     """The ω columns ``velocity_columns`` leaves out as equal to a kept one, by the kept key: a
     block's ω equals its slotted link's (ω4 = ω5 of a stone in a rocking coulisse, as it turns with
     it), so the kept column is headed by both — the diagrams and Table 2 name the slotted link's
-    (ω5, ε5), the table must not drop it for the stone's."""
+    (ω5, ε5), the table must not drop it for the stone's. So too a centre of mass whose velocity
+    equals a kept point's (v_C = v_S3 of a yoke, which translates: review 57 #5 — Tables 2/3 give
+    a_S3 and the force sheet uses it, Table 1 must not drop it)."""
     kept = velocity_columns(doc, precision)
     cells = lambda key: tuple(_cell(pos["velocity"].get(key), precision) for pos in doc["positions"])  # noqa: E731
     out: dict[str, list[str]] = {}
     keys = [k for pos in doc["positions"] for k in pos["velocity"]]
+    point = lambda k: not k.startswith("omega_") and not RELATIVE.fullmatch(k)   # noqa: E731
     for key in dict.fromkeys(keys):
-        if key in kept or not key.startswith("omega_"):
+        if key in kept or not (key.startswith("omega_") or CENTRE.fullmatch(key)):
             continue
-        twin = next((k for k in kept if k.startswith("omega_") and cells(k) == cells(key)), None)
+        kin = (lambda k: k.startswith("omega_")) if key.startswith("omega_") else point
+        twin = next((k for k in kept if kin(k) and cells(k) == cells(key)), None)
         if twin is not None and not all(c in ("0", "—") for c in cells(key)):
             out.setdefault(twin, []).append(key)
     return out
@@ -460,6 +465,8 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
                      written(lay_off(length / mu_l, precision), ruler, lang)])
     notes = []
     for label, value, kind in yoke_dimensions(st):     # a yoke's slot and its points (review 11 #2)
+        if label in dict(lengths):      # a yoke with a joint: CS3 is already a link's length (review 57)
+            continue
         if kind == "angle":
             deg = f"{num(value, lang)}°"
             rows.append([label, deg, deg])
@@ -468,7 +475,9 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
     given = {label for label, _, _ in yoke_dimensions(st)}
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         k = yoke.strip("{}")     # e_k said only where its row is (a slot through D has none: kin51's own)
-        notes.append(w('dims yoke' if f"e_{{{k}}}" in given else 'dims yoke angle', n=k))
+        # e_k measured from the yoke's own point: D of a yoke with no joint, C of one pinned there (review 57)
+        ref = next((next(iter(lk.local)) for lk in st.mech.links.values() if str(lk.number) == k), "D")
+        notes.append(w('dims yoke' if f"e_{{{k}}}" in given else 'dims yoke angle', n=k, d=_pivot_name(ref)))
     # the centres at their links' middles said only beside one that has its own row (review 12's O2S3):
     # where every centre is at its middle (the lab's default) the line says nothing a reader needs
     middles = middle_centres(st)
