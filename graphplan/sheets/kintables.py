@@ -465,6 +465,8 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
             rows.append([label, deg, deg])
         else:
             rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
+    for point, deg in guide_angles(st):     # an inclined guide's angle: an input of the scheme as its distance is
+        rows.append([w('dims guide angle', point=_pivot_name(point)), f"{num(deg, lang)}°", f"{num(deg, lang)}°"])
     given = {label for label, _, _ in yoke_dimensions(st)}
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         k = yoke.strip("{}")     # e_k said only where its row is (a slot through D has none: kin51's own)
@@ -476,6 +478,26 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
         notes.append(w('dims middles' if len(middles) > 1 else 'dims middle', names=", ".join(middles)))
     rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
     return footnoted(rec, notes)
+
+
+def guide_angles(st: Study) -> list[tuple[str, float]]:
+    """Each fixed guide a slider's point slides on that is neither horizontal nor vertical: (that
+    point, the guide's angle to the x axis, deg in (0, 180), to 0.01°) — the scheme's input Table 3
+    gives beside the guide's distance (review of stop 56: LINK56's 30° guide of D given only by
+    its 0,057 m from O₂)."""
+    import math
+
+    from graphplan.model.mechanism import FRAME
+    out = []
+    for g in st.mech.guides.values():
+        if g.body != FRAME:
+            continue
+        point = _guide_point(st.mech, g)
+        deg = round(math.degrees(g.angle) % 180.0, 2)
+        if point is None or min(deg % 90.0, 90.0 - deg % 90.0) < 1e-6:
+            continue
+        out.append((point, deg))
+    return out
 
 
 def yoke_dimensions(st: Study) -> list[tuple[str, float, str]]:
