@@ -36,8 +36,8 @@ APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words 
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
 LINK_APART = 6.0     # … where one is a link's number (5 mm high: "2" 3 mm from "1" still reads "2 1")
 LINK_SIZE = 5.0      # mm: the height of a link's number (drawing.plans.link_numbers)
-SUFFIX_APART = 6.0   # mm across between a label ending in an index (S₃, O₁) and a number after it on its
-                     # line: closer, the lever's «S₃ 1» (position 1's number 5 mm on) reads S₃₁ (issue 32 #4)
+SUFFIX_APART = 10.0  # mm across between a label ending in an index (S₃, O₁) and a number after it on its
+                     # line: closer, the lever's «S₃ 1» (position 1's number 6.7 mm on, its dot between) reads S₃₁ (issue 32 #4)
 DIRECTIONS = 16      # candidate directions around a point
 NEAR = (0.8, 1.5, 3.0, 4.5)               # mm from the point to the box: beside it
 FAR = (5.0, 6.0, 7.0, 8.0, 9.5, 11.0, 12.5, 16.0, 20.0, 25.0, 32.0)   # … farther out, with a leader
