@@ -112,8 +112,9 @@ def test_table_3_gives_an_inclined_guides_angle(lang):
 
 def _row_gap(a, b) -> float | None:
     """The gap across from box a's end to box b's start where b follows a on its line (their heights
-    overlapping), else None."""
-    if not (b[1] < a[3] and a[1] < b[3]) or b[0] <= a[0]:
+    within APART of each other), else None."""
+    from graphplan.drawing.labels import APART
+    if not (b[1] < a[3] + APART and a[1] < b[3] + APART) or b[0] <= a[0]:
         return None
     return b[0] - a[2]
 
@@ -123,7 +124,7 @@ def test_a_number_does_not_follow_an_indexed_label_on_its_line(first):
     """Issue 32 #4: the slotted lever's position plan read «S₃ 1» — position 1's number 5 mm after S₃
     on its line, as if S₃₁. A position's number and a label ending in an index (S₃, O₁) are kept
     ``SUFFIX_APART`` across where one follows the other on a line, whichever is placed first."""
-    from graphplan.drawing.labels import SUFFIX_APART, ends_indexed, place_labels
+    from graphplan.drawing.labels import APART, SUFFIX_APART, ends_indexed, place_labels
     from graphplan.graphic.record import LabelRequest, Record
     rec = Record()
     rec.point((0.0, 0.0), role="dot")
@@ -132,7 +133,7 @@ def test_a_number_does_not_follow_an_indexed_label_on_its_line(first):
     number = LabelRequest(8 + 0j, "1", toward=1 + 0j, size=2.5)
     place_labels(rec, [label, number] if first == "label" else [number, label])
     texts = {p.text: p.ink() for p in rec.items if p.kind == "text"}
-    assert ends_indexed("S_{3}") and ends_indexed("O_{1}, S_{1}") and not ends_indexed("1, 9") \
+    assert ends_indexed("S_{3}") and ends_indexed("S_3") and ends_indexed("O_{1}, S_{1}") and not ends_indexed("1, 9") \
         and not ends_indexed("A")
     gap = _row_gap(texts["S_{3}"], texts["1"])
     assert gap is None or gap >= SUFFIX_APART - 1e-6, (texts, gap)

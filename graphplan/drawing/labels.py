@@ -253,10 +253,10 @@ def is_number(text: str) -> bool:
 
 
 def ends_indexed(text: str) -> bool:
-    """Whether a label (not a number) ends in a numeric index — S_{3}, «O_{1}, S_{1}» — which a number
+    """Whether a label (not a number) ends in a numeric index — S_3, S_{3}, «O_{1}, S_{1}» — which a number
     set after it on its line continues (``SUFFIX_APART``)."""
     import re
-    return not is_number(text) and re.search(r"_\{\d+\}$", text) is not None
+    return not is_number(text) and re.search(r"_(\{\d+\}|\d+)$", text) is not None
 
 
 def _number(req: LabelRequest) -> float:
@@ -313,13 +313,13 @@ def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR, number: floa
     groups = [(ob.boxes, APART), (ob.solid, 0.0)]
     if number > 0:
         groups += [(ob.numbers, LINK_APART if number >= LINK_SIZE else NUMBERS_APART), (ob.big, LINK_APART)]
-    # a number after a label ending in an index, on its line (the boxes overlapping in height), reads
+    # a number after a label ending in an index, on its line (the boxes within APART in height), reads
     # as the index's next figure («S₃ 1»): kept SUFFIX_APART across — a position's number (small) after
     # an indexed label, or an indexed label placed before a number already there
     after = ob.indexed if number > 0 and number < LINK_SIZE else (ob.numbers if number < 0 else None)
     if after:
         q = np.asarray(after, dtype=float)
-        row = (by0 < q[None, :, 3]) & (q[None, :, 1] < by1)
+        row = (by0 < q[None, :, 3] + APART) & (q[None, :, 1] < by1 + APART)     # its line, or a hair off it
         if number > 0:       # the candidate number starts within SUFFIX_APART after the label's end
             beside = (bx0 > q[None, :, 0]) & (bx0 < q[None, :, 2] + SUFFIX_APART)
         else:                # the candidate label ends within SUFFIX_APART before the number's start
