@@ -137,3 +137,16 @@ def test_a_number_does_not_follow_an_indexed_label_on_its_line(first):
         and not ends_indexed("A")
     gap = _row_gap(texts["S_{3}"], texts["1"])
     assert gap is None or gap >= SUFFIX_APART - 1e-6, (texts, gap)
+
+
+def test_table_3_places_every_point_of_a_plate():
+    """Review 57 #3: a plate's point that is no joint (E carrying a force, its path drawn) had no row,
+    and a centre of mass off the joints' line had one distance (AS2 alone leaves it on a circle). Table
+    3 now gives each such point's distances from both joints — by hand from the scene's coordinates."""
+    from graphplan.sheets.kintables import link_lengths
+    text = review_scenes.LINK57.replace("points = { S2 = [0.14, 0.03] }", "points = { S2 = [0.14, 0.03], E = [0.2, 0.06] }")
+    rows = dict(link_lengths(scene_study(text)))
+    assert rows["AS_{2}"] == pytest.approx(math.hypot(0.14, 0.03)) and rows["BS_{2}"] == pytest.approx(math.hypot(0.14, 0.03))
+    assert rows["AE"] == pytest.approx(math.hypot(0.2, 0.06)) and rows["BE"] == pytest.approx(math.hypot(0.08, 0.06))
+    on_line = dict(link_lengths(scene_study(review_scenes.FRC56_PUSHER)))     # every centre on its link's line
+    assert not any(k.startswith("BS") or k.startswith("CS") for k in on_line), on_line
