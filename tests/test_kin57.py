@@ -7,7 +7,9 @@ rocker O3D through CD).
   a share of |max| — checked against an independent solution of the six-bar (circle intersections,
   no graphplan).
 - Table 2's title gives the sign's sense in the same short form as Table 1's (one form on one sheet).
-- Table 3 gives an inclined guide's angle (an input of the scheme) beside its distance."""
+- Table 3 gives an inclined guide's angle (an input of the scheme) beside its distance, and every point of
+  a plate that is no joint (and a centre of mass off its joints' line) by its distances from both joints.
+- Issue 32 #4: a position's number never follows a label ending in an index on its line («S₃ 1»)."""
 from __future__ import annotations
 
 import math

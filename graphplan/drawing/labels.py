@@ -136,7 +136,7 @@ class _Built:
     big: list[Box]
     leaders: list[tuple[complex, complex]]
     reach: tuple[np.ndarray, ...] = ()
-    indexed: list[Box] = None
+    indexed: list[Box] | None = None
 
 
 _BUILT: list[_Built] = []     # the last few lists of primitives ``obstacles`` was asked of, newest last
