@@ -174,7 +174,8 @@ def test_a_dimension_not_whole_millimetres_is_written_to_its_tenth():
     st = scene_study(INCLINED)
     rows = {r[0]: r[1:] for r in _grid(dimensions_table(st, build_plans(st, mu_l=0.001).mu_l, "uk"))[1:]}
     assert rows["e"] == ["0,0125", "12,5"], rows
-    assert {_decimals(v[0]) for v in rows.values()} == {4}
+    # the lengths (stop 57: the inclined guide's angle has its own row, in degrees: not a length)
+    assert {_decimals(v[0]) for v in rows.values() if not v[0].endswith("°")} == {4}
 
 
 def test_a_dimensions_name_sets_only_the_pivots_number_low(case):

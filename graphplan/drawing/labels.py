@@ -36,6 +36,8 @@ APART = 1.6          # mm between two labels' ink (closer than 1.5 mm two words 
 NUMBERS_APART = 3.0  # mm between two numbers' ink: closer, a link's "3" by a position's "1" reads "31"
 LINK_APART = 6.0     # … where one is a link's number (5 mm high: "2" 3 mm from "1" still reads "2 1")
 LINK_SIZE = 5.0      # mm: the height of a link's number (drawing.plans.link_numbers)
+SUFFIX_APART = 10.0  # mm across between a label ending in an index (S₃, O₁) and a number after it on its
+                     # line: closer, the lever's «S₃ 1» (position 1's number 6.7 mm on, its dot between) reads S₃₁ (issue 32 #4)
 DIRECTIONS = 16      # candidate directions around a point
 NEAR = (0.8, 1.5, 3.0, 4.5)               # mm from the point to the box: beside it
 FAR = (5.0, 6.0, 7.0, 8.0, 9.5, 11.0, 12.5, 16.0, 20.0, 25.0, 32.0)   # … farther out, with a leader
@@ -53,6 +55,7 @@ class Obstacles:
     big: list[Box] | None = None       # … of them, links' numbers
     leaders: list[tuple[complex, complex]] | None = None   # the leaders drawn: a new one crosses none
     reach: tuple[np.ndarray, ...] | None = None    # (lo_x, hi_x, lo_y, hi_y) where known (``_reach``)
+    indexed: list[Box] | None = None   # the boxes of labels ending in an index (S_{3}: ``ends_indexed``)
 
     def __post_init__(self) -> None:
         if self.reach is None:
@@ -79,7 +82,8 @@ class Obstacles:
         return Obstacles(self.segs[keep], self.half[keep], [b for b in self.boxes if close(b)],
                          [b for b in self.solid if close(b)], [b for b in self.numbers or [] if close(b)],
                          [b for b in self.big or [] if close(b)], self.leaders,
-                         (self.lo_x[keep], self.hi_x[keep], self.lo_y[keep], self.hi_y[keep]))
+                         (self.lo_x[keep], self.hi_x[keep], self.lo_y[keep], self.hi_y[keep]),
+                         [b for b in self.indexed or [] if close(b)])
 
     def add_segment(self, a, b, half: float) -> None:
         self.segs = np.vstack([self.segs, [[a[0], a[1], b[0], b[1]]]])
@@ -132,6 +136,7 @@ class _Built:
     big: list[Box]
     leaders: list[tuple[complex, complex]]
     reach: tuple[np.ndarray, ...] = ()
+    indexed: list[Box] | None = None
 
 
 _BUILT: list[_Built] = []     # the last few lists of primitives ``obstacles`` was asked of, newest last
@@ -147,6 +152,7 @@ def _built(items: list[Primitive], since: _Built | None) -> _Built:
     boxes, solid, numbers, big, leaders = ((list(since.boxes), list(since.solid), list(since.numbers),
                                             list(since.big), list(since.leaders)) if since is not None
                                            else ([], [], [], [], []))
+    indexed = list(since.indexed or []) if since is not None else []
     for p in items[start:]:
         if p.kind == "segment" and p.role == "label" and len(p.points) == 2:
             leaders.append((complex(*p.points[0]), complex(*p.points[1])))
@@ -156,6 +162,8 @@ def _built(items: list[Primitive], since: _Built | None) -> _Built:
                 numbers.append(boxes[-1])
                 if p.size >= LINK_SIZE:
                     big.append(boxes[-1])
+            elif ends_indexed(p.text or ""):
+                indexed.append(boxes[-1])
             continue
         for a, b, hw in strokes(p):
             segs.append((a[0], a[1], b[0], b[1]))
@@ -167,7 +175,7 @@ def _built(items: list[Primitive], since: _Built | None) -> _Built:
     if since is not None:
         new_segs = np.concatenate([since.segs, new_segs])
         new_half = np.concatenate([since.half, new_half])
-    return _Built(list(items), new_segs, new_half, boxes, solid, numbers, big, leaders)
+    return _Built(list(items), new_segs, new_half, boxes, solid, numbers, big, leaders, indexed=indexed)
 
 
 def obstacles(items: list[Primitive]) -> Obstacles:
@@ -186,7 +194,7 @@ def obstacles(items: list[Primitive]) -> Obstacles:
         _BUILT.append(built)
         del _BUILT[:-_BUILT_KEPT]
     ob = Obstacles(built.segs, built.half, list(built.boxes), list(built.solid), list(built.numbers),
-                   list(built.big), list(built.leaders), built.reach or None)
+                   list(built.big), list(built.leaders), built.reach or None, list(built.indexed or []))
     built.reach = (ob.lo_x, ob.hi_x, ob.lo_y, ob.hi_y)
     return ob
 
@@ -244,9 +252,18 @@ def is_number(text: str) -> bool:
     return all(part.rstrip("'").isdigit() for part in text.split(", "))
 
 
+def ends_indexed(text: str) -> bool:
+    """Whether a label (not a number) ends in a numeric index — S_3, S_{3}, «O_{1}, S_{1}» — which a number
+    set after it on its line continues (``SUFFIX_APART``)."""
+    import re
+    return not is_number(text) and re.search(r"_(\{\d+\}|\d+)$", text) is not None
+
+
 def _number(req: LabelRequest) -> float:
-    """A request's height where its text is a number (what ``_counts`` keeps numbers apart by), else 0."""
-    return req.size if is_number(req.text) else 0.0
+    """A request's height where its text is a number (what ``_counts`` keeps numbers apart by), −1
+    where it ends in an index (``ends_indexed``: kept ``SUFFIX_APART`` from a number after it on its
+    line), else 0."""
+    return req.size if is_number(req.text) else (-1.0 if ends_indexed(req.text) else 0.0)
 
 
 def _clip_all(sx, sy, ex, ey, x0, y0, x1, y1) -> np.ndarray:
@@ -294,8 +311,20 @@ def _counts(ob: Obstacles, boxes: np.ndarray, clear: float = CLEAR, number: floa
                 hit = _clip_all(sx, sy, ex, ey, c0.take(ci) - g, c1.take(ci) - g, c2.take(ci) + g, c3.take(ci) + g)
                 out += np.bincount(ci[hit], minlength=m)
     groups = [(ob.boxes, APART), (ob.solid, 0.0)]
-    if number:
+    if number > 0:
         groups += [(ob.numbers, LINK_APART if number >= LINK_SIZE else NUMBERS_APART), (ob.big, LINK_APART)]
+    # a number after a label ending in an index, on its line (the boxes within APART in height), reads
+    # as the index's next figure («S₃ 1»): kept SUFFIX_APART across — a position's number (small) after
+    # an indexed label, or an indexed label placed before a number already there
+    after = ob.indexed if number > 0 and number < LINK_SIZE else (ob.numbers if number < 0 else None)
+    if after:
+        q = np.asarray(after, dtype=float)
+        row = (by0 < q[None, :, 3] + APART) & (q[None, :, 1] < by1 + APART)     # its line, or a hair off it
+        if number > 0:       # the candidate number starts within SUFFIX_APART after the label's end
+            beside = (bx0 > q[None, :, 0]) & (bx0 < q[None, :, 2] + SUFFIX_APART)
+        else:                # the candidate label ends within SUFFIX_APART before the number's start
+            beside = (q[None, :, 0] > bx0) & (q[None, :, 0] < bx1 + SUFFIX_APART)
+        out += (row & beside).sum(axis=1)
     for group, apart in groups:
         if group:
             q = np.asarray(group, dtype=float)
@@ -463,6 +492,8 @@ def place_labels(record: Record, requests: list[LabelRequest], layer: str = "lab
             ob.numbers = (ob.numbers or []) + [box]
             if req.size >= LINK_SIZE:
                 ob.big = (ob.big or []) + [box]
+        elif ends_indexed(req.text):
+            ob.indexed = (ob.indexed or []) + [box]
     return record
 
 

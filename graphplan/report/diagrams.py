@@ -162,6 +162,20 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
         reading = (f"{name} у положенн{'і' if one else 'ях'} {where}" if uk
                    else f"{name} at position{'' if one else 's'} {where}")
         worst = bad[0]
+        small = [] if key == "s" else _small_near_extreme(d, key, [idx[i] for i in past])
+        if small:           # every reading past 5 % a small value beside an extreme position (issue 32 #2)
+            big = float(d.maxima[key[0]])
+            shares = _and([f"{100.0 * abs(d.truth[key][k]) / big:.0f}" for k in small], uk)
+            off = _and([_signed(_of_max(d, key, idx[i], float(errs[key][i])), lang, 1) for i in sorted(past)], uk)
+            # "on a sharp bend" where the chords miss there with an exact ruler too (their own error)
+            bend = all(abs(float(own[key][i])) > LAB_LIMIT for i in past)
+            many = len(small) > 1
+            reading += (f" (мал{'і' if many else 'е'} значенн{'я' if many else 'я'}"
+                        + (" на крутому згині" if bend else "") + f" біля крайн{'іх' if many else 'ього'} "
+                        f"положен{'ь' if many else 'ня'}: {shares} % від |{name}|max; від |max| {off} %)" if uk else
+                        f" (small value{'s' if many else ''}" + (" on a sharp bend" if bend else "")
+                        + f" by {'' if many else 'an '}extreme position{'s' if many else ''}: {shares} % of "
+                        f"|{name}|max; {off} % of |max|)")
         if key == "s":
             said.append((reading, "", None))
         elif abs(own[key][worst]) > LAB_LIMIT or on_s is None or key not in on_s:
@@ -214,6 +228,48 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
     tail = _finer_worse(d, trials, lang) + tail
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
              f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
+
+
+SMALL_SHARE = 0.25   # a reading's exact value under this share of the cycle's |max|: a small value
+
+
+def _small_near_extreme(d: Diagrams, key: str, ks: list[int]) -> list[int]:
+    """The division ordinates ``ks`` (the readings of ``key``, "v_at" or "a_at", past 5 %) where
+    each is a small value — its exact value under ``SMALL_SHARE`` of the cycle's |max| — within one
+    interval of an extreme position of the output (its velocity's zero: the curve runs steeply
+    through small values there, and a ruler's or a chord's fraction of a millimetre is a large share
+    of a short ordinate); empty unless every one of ``ks`` is such (then the note says so instead
+    of a cause the larger readings have)."""
+    big = float(d.maxima[key[0]])
+    if big <= 0 or not ks:
+        return []
+    turns = [float(d.study.from_position0(e)) % 360.0 for e in d.study.extremes]
+    step = 360.0 / max(d.divisions, 1)
+    out = []
+    for k in ks:
+        if abs(float(d.truth[key][k])) >= SMALL_SHARE * big:
+            return []
+        u = float(d.turn[k]) % 360.0
+        if not any(min(abs(u - t), 360.0 - abs(u - t)) <= step + 1e-9 for t in turns):
+            return []
+        out.append(k)
+    return sorted(out)
+
+
+def _of_max(d: Diagrams, key: str, k: int, pct_: float) -> float:
+    """δ, % (as the table prints it, in its frame — the diagrams' sense ``d.sign`` — of the exact
+    value, or of |max| below ``MEANINGFUL`` of it) at ordinate k as a share of the cycle's |max|:
+    100·(g − e)/|max| = δ·e/|max| with e signed in that frame."""
+    from graphplan.graphic.diagrams import MEANINGFUL
+    big, e = float(d.maxima[key[0]]), d.sign * float(d.truth[key][k])
+    return pct_ * e / big if abs(e) >= MEANINGFUL * big else pct_
+
+
+def _and(items: list[str], uk: bool) -> str:
+    """Items joined as a note lists them: "a і b", "a, b і c" (en: "and")."""
+    if len(items) <= 1:
+        return "".join(items)
+    return ", ".join(items[:-1]) + (" і " if uk else " and ") + items[-1]
 
 
 def _finer_worse(d: Diagrams, trials, lang: str) -> str:

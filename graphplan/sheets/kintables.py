@@ -296,12 +296,24 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
             d = abs(link.local[a] - link.local[b])
             if d > 0:
                 out.append((named(a, b), d))
+        ref = pivot if pivot is not None else (pts[0] if pts else None)
+        other = next((p for p in pts if p != ref), None)
         if link.com is not None and link.com in link.local:   # the centre of mass off its link's middle
-            ref = pivot if pivot is not None else (pts[0] if pts else None)
             d = abs(link.local[link.com] - link.local[ref]) if ref is not None else 0.0
             if d > 1e-12 and not any(abs(link.local[link.com] - (link.local[a] + link.local[b]) / 2) < 1e-12
                                      for a, b in pairs):
                 out.append((named(ref, link.com), d))
+                out += _second_side(link, ref, other, link.com, named)
+        # a point of the link that is neither a joint nor its centre of mass (a plate's vertex E carrying a
+        # force, its path drawn): its distances from the link's joints, two where it lies off their line —
+        # what a student constructs it from (review 57 #3: the conveyor's plate ABE gave no AE, BE)
+        for p in link.local:
+            if p in pts or p == link.com or p == end or ref is None:
+                continue
+            d = abs(link.local[p] - link.local[ref])
+            if d > 1e-12:
+                out.append((named(ref, p), d))
+                out += _second_side(link, ref, other, p, named)
     frame = [p for p in mech.frame if any(p in l.joints for l in mech.links.values())]
     for a, b in zip(frame, frame[1:]):
         d = abs(mech.frame[a] - mech.frame[b])
@@ -310,6 +322,18 @@ def link_lengths(st: Study) -> list[tuple[str, float]]:
     out.extend(frame_coordinates(st))
     out.extend((label, d) for label, d, _, _ in guide_distances(st))
     return out
+
+
+def _second_side(link, ref: str, other: str | None, p: str, named) -> list[tuple[str, float]]:
+    """The second distance that places point ``p`` of ``link`` where it lies off the line through its
+    joints ``ref`` and ``other`` (one distance leaves it on a circle: review 57 #3, AS2 = 0,153 alone
+    did not place S2 = (0,15; 0,03) off AB): [(other p, length)], else []."""
+    if other is None:
+        return []
+    a, b, z = link.local[ref], link.local[other], link.local[p]
+    if abs(b - a) < 1e-12 or abs(((z - a) * (b - a).conjugate()).imag) / abs(b - a) < 1e-9:
+        return []
+    return [(named(other, p), abs(z - b))]
 
 
 def free_end(link, pivot: str | None, pts: list[str]) -> str | None:
@@ -472,6 +496,8 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
             rows.append([label, deg, deg])
         else:
             rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
+    for point, deg in guide_angles(st):     # an inclined guide's angle: an input of the scheme as its distance is
+        rows.append([w('dims guide angle', point=_pivot_name(point)), f"{num(deg, lang)}°", f"{num(deg, lang)}°"])
     given = {label for label, _, _ in yoke_dimensions(st)}
     for yoke in {label.split("_")[-1] for label, _, kind in yoke_dimensions(st) if kind == "angle"}:
         k = yoke.strip("{}")     # e_k said only where its row is (a slot through D has none: kin51's own)
@@ -485,6 +511,26 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
         notes.append(w('dims middles' if len(middles) > 1 else 'dims middle', names=", ".join(middles)))
     rec = table(rows, [18.0, 18.0, 22.0], row_h=6.0, size=2.5, title=w('dims', n=n))
     return footnoted(rec, notes)
+
+
+def guide_angles(st: Study) -> list[tuple[str, float]]:
+    """Each fixed guide a slider's point slides on that is neither horizontal nor vertical: (that
+    point, the guide's angle to the x axis, deg in (0, 180), to 0.01°) — the scheme's input Table 3
+    gives beside the guide's distance (review of stop 56: LINK56's 30° guide of D given only by
+    its 0,057 m from O₂)."""
+    import math
+
+    from graphplan.model.mechanism import FRAME
+    out = []
+    for g in st.mech.guides.values():
+        if g.body != FRAME:
+            continue
+        point = _guide_point(st.mech, g)
+        deg = round(math.degrees(g.angle) % 180.0, 2)
+        if point is None or min(deg % 90.0, 90.0 - deg % 90.0) < 1e-6:
+            continue
+        out.append((point, deg))
+    return out
 
 
 def yoke_dimensions(st: Study) -> list[tuple[str, float, str]]:

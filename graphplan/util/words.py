@@ -291,6 +291,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin link": ('ланка', 'link'),
     "kin dims from": ('{symbol} від {pivot}', '{symbol} from {pivot}'),
     "kin dims from point": ('{symbol}: {pivot} — напрямна {point}', '{symbol}: {pivot} to guide {point}'),
+    "kin dims guide angle": ('напрямна {point} до осі x', 'guide {point} to the x axis'),
     "kin real": ('l, м', 'l, m'),
     "kin drawn": ('l, мм (μ_l)', 'l, mm (μ_l)'),
     "kin lab": ('Таблиця {n}. s, v, a у заданих положеннях', 'Table {n}. s, v, a at the given positions'),
@@ -687,7 +688,7 @@ WORDS: dict[str, tuple[str, str]] = {
     # the sign's parenthesis with no-break spaces: a title wraps before it, never inside it
     "kin vel_table_signed": ("Таблиця 1. Швидкості: |v|, м/с; ω, рад/с (+\u00a0проти\u00a0год.\u00a0стр.)",
                              "Table 1. Velocities: |v|, m/s; ω, rad/s (+\u00a0counter-clockwise)"),
-    "kin acc_table_signed": ("Таблиця {n}. Прискорення |a|, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стрілки), "
+    "kin acc_table_signed": ("Таблиця {n}. Прискорення |a|, м/с²; ε, рад/с² (+\u00a0проти\u00a0год.\u00a0стр.), "
                              "положення\u00a0{i}",
                              "Table {n}. Accelerations |a|, m/s²; ε, rad/s² (+\u00a0counter-clockwise), position\u00a0{i}"),
     "sheet phi": ("φ — поворот кривошипа від положення 0 у бік його обертання; положення 0: кут кривошипа {phi0}° "
