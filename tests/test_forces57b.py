@@ -41,6 +41,17 @@ def test_the_plans_detail_is_drawn_at_the_scale_the_reaction_was_read_at(pump):
     assert any("0,25" in t and t.startswith("I (") for t in texts)
 
 
+def test_where_no_corner_of_the_plan_is_free_the_detail_goes_under_it_with_its_mark_on_a_longer_leader():
+    # the English sheet draws II(4-5) at 20 N/mm: R05 0.075 mm, read at 1 N/mm; its spot is where P_D,
+    # R24, R45 and the closing lines meet at the plan's foot — the table's "1.5 (I)" needs the detail drawn
+    fp = scene_force_plans(FRC56_PUMP, group_mu_F={"II(4-5)": 20.0})
+    gp = group_of(fp, "II(4-5)")
+    m = gp.reactions["R05"]
+    assert m.detail_mu == 1.0 and m.mm == 1.5
+    for lang in ("uk", "en"):
+        assert polygon_record(fp, gp, lang).scales.get("mu_F detail") == m.detail_mu
+
+
 def test_a_detail_reads_the_drawn_side_to_its_own_ruler_and_a_zero_reaction_takes_none():
     # INCLINED_ROCKER53's R45 (3.76 N exact) is 0.4 mm at 20 N/mm: read off the detail, its value is the
     # drawn side to the detail's half-division — the knowns rounded to 0.5 mm on the plan (±5 N each)

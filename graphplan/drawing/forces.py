@@ -1506,7 +1506,7 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     from shapely.geometry import box as shapely_box
     from shapely.ops import unary_union
 
-    from graphplan.drawing.charts import _corner, _detail_mark, _ink_of
+    from graphplan.drawing.charts import SHELF_LEAD, _corner, _detail_mark, _ink_of
     x0, y0, x1, y1 = d.box
     c = complex(x0 + x1, y0 + y1) / 2
     r = abs(complex(x1 - x0, y1 - y0)) / 2
@@ -1531,7 +1531,11 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
         rec.extend(moved)
         # the ring's mark "I" on a shelf, within the plan's extent where it finds room there
         if not (_detail_mark(rec, c, r, f"{step}: detail mark")
-                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)):
+                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)
+                # a reaction's spot where the plan's closing lines meet (FRC56_PUMP's R05 at 20 N/mm):
+                # on a longer leader, out past them
+                or (out and _detail_mark(rec, c, r, f"{step}: detail mark", within=False,
+                                         leads=tuple(SHELF_LEAD * k for k in (2, 3, 4))))):
             del rec.items[n0:]
             continue
         rec.scales["mu_F detail"] = mu
