@@ -755,12 +755,15 @@ SHELF_LEAD = 4.0       # mm: the mark's leader from the ring to its shelf (GOST 
 SHELF_MM = 4.5         # mm: the shelf the mark's letter stands on
 
 
-def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = True) -> bool:
+def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = True,
+                 leads: tuple[float, ...] = (SHELF_LEAD,)) -> bool:
     """The ringed spot's mark as GOST 2.305 draws an extension element: a thin leader from the
     ring out to a shelf, the letter "I" standing on the shelf — not a bare stroke by the ring (the
     sieve's "I" read as a dash of the jump line). The first of the four diagonals (up-left first)
     whose leader, shelf and letter keep clear of the hodograph's lines, points and lettering; False
-    (nothing drawn) where none does; ``within``: only within the record's extent (a hodograph's room)."""
+    (nothing drawn) where none does; ``within``: only within the record's extent (a hodograph's room);
+    ``leads``: the leader's lengths past the ring tried, the shortest first (a force plan's spot where
+    its closing lines meet needs a longer one)."""
     from shapely.geometry import LineString, box
     prim = Primitive("text", ((0.0, 0.0),), text=DETAIL_NAME, size=3.5)
     i0, j0, i1, j1 = prim.ink()
@@ -771,9 +774,9 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = Tr
     tried = []
     rx0, ry0, rx1, ry1 = rec.bounds()
     field = box(rx0, ry0, rx1, ry1)
-    for d in (-1 + 1j, 1 + 1j, -1 - 1j, 1 - 1j):
+    for lead, d in ((lead, d) for lead in leads for d in (-1 + 1j, 1 + 1j, -1 - 1j, 1 - 1j)):
         u = d / abs(d)
-        a, b = c + r * u, c + (r + SHELF_LEAD) * u
+        a, b = c + r * u, c + (r + lead) * u
         e = b + (w if d.real > 0 else -w)
         x = min(b.real, e.real) + w / 2 - (i0 + i1) / 2       # the letter in the shelf's middle
         tb = box(x + i0, b.imag + 0.8 + j0, x + i1, b.imag + 0.8 + j1)

@@ -1287,13 +1287,19 @@ def polygon_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Record:
     composition's first measure) without it: the finished drawing is measured again."""
     from graphplan.drawing.labels import _SKETCH
     plain = _polygon(fp, gp, lang, detail=False)
-    if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp)) is None:
+    if _SKETCH[-1] or plan_detail([s for s in gp.sides if s.mm > 1e-9], _mu_F(fp, gp), _read_in_detail(gp)) is None:
         return plain
     # the detail in a free corner of the plan's room (``_polygon_detail``, within the plan's lettered
     # extent widened to its caption: the rocker six-bar's II(2-3) knot, whose room measured off the
     # unlettered plan refused it by a hair), or, the crank's, under its sliver
-    out = _polygon(fp, gp, lang, detail=True, beside=gp.kind == "crank")
+    out = _polygon(fp, gp, lang, detail=True, beside=gp.kind == "crank" or bool(_read_in_detail(gp)))
     return out if "mu_F detail" in out.scales else plain
+
+
+def _read_in_detail(gp: GroupPlan) -> dict[str, float]:
+    """The group's reactions the ruler reads 0 mm on its plan, read off its detail: side's name → μF_I
+    (``forceplans.detail_scale``)."""
+    return {m.name: m.detail_mu for m in gp.reactions.values() if m.detail_mu}
 
 
 def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: bool = False) -> Record:
@@ -1312,7 +1318,7 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
     same = _coinciding(sides)
-    detail = _detail_ring(rec, sides, mu_F, step) if detail else None
+    detail = _detail_ring(rec, sides, mu_F, step, _read_in_detail(gp)) if detail else None
     # a side wholly within the ring is named in the detail (the crank's G1 and Φ1 by R21's tail)
     lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same
                 and (detail is None or not _within(s, detail.box))]
@@ -1399,7 +1405,7 @@ class PlanDetail:
     choices: tuple[float, ...]
 
 
-def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
+def plan_detail(sides: list, mu_F: float, read: dict[str, float] | None = None) -> PlanDetail | None:
     """The detail of a force plan's short sides (those under ``DETAIL_SHORT_MM``, drawn with the
     sides they meet), GOST 2.305's extension element: the window round them and the μF_I to try —
     for each of ``DETAIL_LEAST_MM``'s lengths ℓ the largest value of the series (1, 1.5, 2, 2.5, 4,
@@ -1408,6 +1414,16 @@ def plan_detail(sides: list, mu_F: float) -> PlanDetail | None:
     ≤ μF/2); None where no side is too short to carry its name (``TINY_MM``: named only under the
     plan, "G1, Φ1 < 3 mm"), or no value is left."""
     from graphplan.drawing.charts import _series_below, hodograph_scale
+    for s in sides:
+        if read and s.name in read:
+            # a reaction the ruler reads 0 mm here (FRC56_PUMP's R05, 0.23 mm at 5 N/mm) is read off
+            # the detail at its μF_I (``forceplans.detail_scale``): the window round it no wider than
+            # ``DETAIL_MOST_MM`` at that μF_I
+            mu = read[s.name]
+            span = max(abs(s.end.real - s.start.real), abs(s.end.imag - s.start.imag))
+            pad = max(0.1, min(DETAIL_PAD, 0.5 * (DETAIL_MOST_MM * mu / mu_F - span)))
+            return PlanDetail((min(s.start.real, s.end.real) - pad, min(s.start.imag, s.end.imag) - pad,
+                               max(s.start.real, s.end.real) + pad, max(s.start.imag, s.end.imag) + pad), (mu,))
     short = _knot([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM])
     longest = max((s.mm for s in sides), default=0.0)
     # each side long enough to carry its name, and none a mere speck beside the plan's longest: none
@@ -1467,10 +1483,11 @@ def _within(s, box) -> bool:
     return all(x0 - 1e-9 <= z.real <= x1 + 1e-9 and y0 - 1e-9 <= z.imag <= y1 + 1e-9 for z in (s.start, s.end))
 
 
-def _detail_ring(rec: Record, sides: list, mu_F: float, step: str) -> PlanDetail | None:
+def _detail_ring(rec: Record, sides: list, mu_F: float, step: str,
+                 read: dict[str, float] | None = None) -> PlanDetail | None:
     """The short sides' spot ringed on the plan (GOST 2.305, as the hodographs' details) before the
     plan's letters are set, so that they keep clear of it; the detail (``plan_detail``), or None."""
-    d = plan_detail(sides, mu_F)
+    d = plan_detail(sides, mu_F, read)
     if d is None:
         return None
     x0, y0, x1, y1 = d.box
@@ -1489,7 +1506,7 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     from shapely.geometry import box as shapely_box
     from shapely.ops import unary_union
 
-    from graphplan.drawing.charts import _corner, _detail_mark, _ink_of
+    from graphplan.drawing.charts import SHELF_LEAD, _corner, _detail_mark, _ink_of
     x0, y0, x1, y1 = d.box
     c = complex(x0 + x1, y0 + y1) / 2
     r = abs(complex(x1 - x0, y1 - y0)) / 2
@@ -1514,7 +1531,11 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
         rec.extend(moved)
         # the ring's mark "I" on a shelf, within the plan's extent where it finds room there
         if not (_detail_mark(rec, c, r, f"{step}: detail mark")
-                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)):
+                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)
+                # a reaction's spot where the plan's closing lines meet (FRC56_PUMP's R05 at 20 N/mm):
+                # on a longer leader, out past them
+                or (out and _detail_mark(rec, c, r, f"{step}: detail mark", within=False,
+                                         leads=tuple(SHELF_LEAD * k for k in (2, 3, 4))))):
             del rec.items[n0:]
             continue
         rec.scales["mu_F detail"] = mu
@@ -2147,8 +2168,8 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
                 if c.name.endswith("n"):
                     mm = measure(c.mm, fp.precision)
                     cells.append((c.name, mm * _mu_F(fp, gp), mm))
-    for m in gp.reactions.values():
-        cells.append((m.name, m.value, m.mm))
+    for m in gp.reactions.values():     # one read off the plan's detail marked so: "4,5 (I)"
+        cells.append((m.name, m.value, _reading(m, lang)))
     widths = [max(14.0, text_width(force_symbol(c[0], lang), 2.5) + 4) for c in cells]
     tiers = [cells]
     if 30.0 + sum(widths) > TABLE_WIDEST_MM and len(cells) > 1:
@@ -2160,7 +2181,7 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
     for tier in tiers:
         head = [word("force", lang)] + [force_symbol(c[0], lang) for c in tier]
         rows = [[word("force value", lang)] + [num(c[1], lang).replace("-", "−") for c in tier],
-                [word("drawn mm", lang)] + [num(c[2], lang) for c in tier]]
+                [word("drawn mm", lang)] + [c[2] if isinstance(c[2], str) else num(c[2], lang) for c in tier]]
         y = _table(rec, 0.0, y, head, rows, [30.0] + [max(14.0, text_width(h, 2.5) + 4) for h in head[1:]],
                    step) - TIER_GAP_MM
     return rec
@@ -2168,6 +2189,13 @@ def group_table_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk") -> Recor
 
 TABLE_WIDEST_MM = 200.0   # a group's table wider than this is set in two tiers
 TIER_GAP_MM = 3.0         # between the tiers
+
+
+def _reading(m, lang: str) -> str:
+    """A reaction's drawn length as its tables print it; one read off the plan's detail at μF_I
+    (the ruler read its side 0 mm at the plan's μF) marked with the detail's name: "4,5 (I)"."""
+    from graphplan.drawing.charts import DETAIL_NAME
+    return f"{num(m.mm, lang)} ({DETAIL_NAME})" if m.detail_mu else num(m.mm, lang)
 
 
 LAB_LIMIT = 5.0    # the lab's limit of an error, % (REFERENCE §1.6): a result past it is marked
@@ -2187,6 +2215,12 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
     sym = force_symbol(key, lang)
     gp = next(g for g in fp.groups if key in g.reactions)
     m = gp.reactions[key]
+    from graphplan.graphic.draftsman import measure
+    if m.detail_mu:      # read off the detail: the plan's own side (its knowns laid off to the ruler) is what misses
+        side = next((s for s in gp.sides if s.name == m.name), None)
+        known = sum(1 for s in gp.sides if s.role == "known")
+        return word("fs why detail", lang, sym=sym, mm=num(measure(side.mm, fp.precision) if side else 0.0, lang),
+                    n=known, half=num(fp.precision / 2, lang))
     if m.mm < SHORT_MM:
         return word("fs why short", lang, sym=sym, mm=num(m.mm, lang))
     if len(gp.lines) >= 2:
@@ -2257,7 +2291,7 @@ def results_record(fp: ForcePlans, lang: str = "uk", number: int | None = None) 
         # the exact direction beside the drawn one, as ``forces`` prints it: a reaction's angle read
         # off its polygon is where an error of M_b by the plans starts (review 56 #1: R12 read 1.6°
         # off put M_b at +4.4 % while its magnitude was within 0.05 %)
-        rows.append([force_symbol(m.key, lang), num(m.mm, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
+        rows.append([force_symbol(m.key, lang), _reading(m, lang), num(m.value, lang), fixed(m.angle_deg, lang, 1),
                      num(m.analytic, lang), fixed(m.analytic_angle_deg, lang, 1), err])
     bottom = _table(rec, 0.0, top if number is not None else bottom - 8.0, ["R", unit("mm", lang), unit("N", lang), word("angle deg", lang),
                                              word("exact N", lang), word("exact deg", lang), "δ, %"], rows,

@@ -118,6 +118,7 @@ class Measured:
     name: str = ""       # R<from><to> as the group it was found in bears it: <to> in that group
     acting: complex = 0j  # the measured force on that group's link (``name``), N
     line: complex | None = None   # a sliding pair's reaction: a point of its line of action found by ΣM = 0 (m)
+    detail_mu: float = 0.0   # its side under the ruler's division on the plan: read off the plan's detail at this μF_I
 
 
 @dataclass
@@ -280,6 +281,22 @@ class _Draftsman:
 
 
 
+READ_LEAST_MM = 1.0     # a reaction the ruler reads shorter than this on its plan (0 mm or one division) …
+READ_DETAIL_MM = 4.0    # … is read off the plan's detail, where it is drawn at least this long …
+DETAIL_GAIN_MOST = 20.0  # … at most this many times larger (a side under 1/20 mm is 0 to any detail)
+
+
+def detail_scale(side_mm: float, mu_F: float) -> float:
+    """The detail's μF_I a side ``side_mm`` long on a plan at ``mu_F`` is read at: the largest value
+    of the series (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k) that draws it at least ``READ_DETAIL_MM`` long,
+    and at most half the plan's μF (the plan's ``plan_detail`` offers the same value)."""
+    from graphplan.graphic.scales import GOST_BETWEEN, series_value
+    x = max(min(mu_F * side_mm / READ_DETAIL_MM, mu_F / 2.0), mu_F / DETAIL_GAIN_MOST)
+    k0 = math.floor(math.log10(x))
+    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES + GOST_BETWEEN)
+               if m <= x * (1 + 1e-12))
+
+
 class _Polygon:
     """A force polygon: known forces head to tail, then the unknowns closing it."""
 
@@ -331,6 +348,7 @@ class _Plans:
         self.d = _Draftsman(ks, precision, mu_l, mu_F, loads)
         self.ks, self.mech = ks, ks.mech
         self.groups: list[GroupPlan] = []
+        self.detailed = False       # the group being drawn has a reaction read off its detail
 
     def measured(self, key: str, vec_mm: complex, frm: str, on: str, pair, at: complex,
                  couple_line: complex | None = None, tau: complex | None = None) -> Measured:
@@ -341,6 +359,16 @@ class _Plans:
         from a R^τ rounded to the drafting precision (a 51 N R^τ12 drawn 0.5 mm at 200 N/mm as
         100 N turned R12 by 1.6° and M_b by the plans 4.4 % off, review 56 #1)."""
         mm, force = self.d.read(vec_mm)
+        mu_I = 0.0
+        if (tau is None and mm < READ_LEAST_MM and abs(vec_mm) * DETAIL_GAIN_MOST >= 1.0 and self.p > 0
+                and not self.detailed):
+            # the ruler reads the side 0 mm or one division at μF (FRC56_PUMP's R05: 0.23 mm, 1.15 N,
+            # at 5 N/mm, printed 0): read off the plan's detail, the spot drawn again at a finer μF_I
+            # (drawing.forces.plan_detail) — one a plan, its first such reaction's
+            self.detailed = True
+            mu_I = detail_scale(abs(vec_mm), self.d.mu_F)
+            mm = measure(abs(vec_mm) * self.d.mu_F / mu_I, self.p)
+            force = mm * mu_I * vec_mm / abs(vec_mm)
         if tau is not None:
             force = force + tau
             mm = measure(abs(force) / self.d.mu_F, self.p)
@@ -355,7 +383,7 @@ class _Plans:
         v = _orient(self.mech, frm, on, force)
         return Measured(key, mm, abs(v), angle_deg(v), abs(t), angle_deg(t),
                         error_pct(abs(v), abs(t), self.d.scale), v, reaction_key(self.mech, frm, on), force,
-                        couple_line if pair is not None and pair.kind == "P" else None)
+                        couple_line if pair is not None and pair.kind == "P" else None, mu_I)
 
     def key_of(self, group: str, pair) -> str:
         for k, r in self.ks.reactions.items():
@@ -374,6 +402,7 @@ class _Plans:
     def group(self, gf) -> None:
         d = gf.dyad
         self.current = (d.a, d.b)
+        self.detailed = False
         kind = d.kind
         poly = _Polygon(self.d)
         eqs: list[MomentEquation] = []
@@ -540,6 +569,7 @@ class _Plans:
         mech = self.mech
         crank = mech.crank.link
         self.current = (crank,)
+        self.detailed = False
         o, a = self.d.at(mech.crank.pivot), self.d.at(mech.crank.pin)
         poly = _Polygon(self.d)
         poly.lay_all(self.d.known[crank])

@@ -160,8 +160,14 @@ def small_forces(fp, lang: str = "uk") -> list[str]:
         if not sides:
             continue
         big = max(s.mm for s in sides)
-        out += [f"{force_symbol(s.name, lang)} {num(measure(s.mm, fp.precision), lang, 2)} {unit('mm', lang)}, "
-                f"{fixed(100 * s.mm / big, lang, 1)} %" for s in sides if s.mm < SHORT_FORCE_MM]
+        # a reaction the ruler reads 0 mm, read off the plan's detail: its reading there too ("R05 0 мм
+        # (I: 4,5 мм)")
+        from graphplan.drawing.charts import DETAIL_NAME
+        detail = {m.name: f" ({DETAIL_NAME}:\u00a0{num(m.mm, lang, 2)}\u00a0{unit('mm', lang)})"
+                  for m in gp.reactions.values() if m.detail_mu}
+        out += [f"{force_symbol(s.name, lang)} {num(measure(s.mm, fp.precision), lang, 2)} {unit('mm', lang)}"
+                f"{detail.get(s.name, '')}, {fixed(100 * s.mm / big, lang, 1)} %"
+                for s in sides if s.mm < SHORT_FORCE_MM]
         # a load the ruler reads as 0 mm is no side of the plan (its table says 0): named with its bound
         drawn = {s.name for s in sides}
         out += [f"{force_symbol(f.name, lang)} < {num(fp.precision, lang, 2)} {unit('mm', lang)}"

@@ -722,6 +722,10 @@ WORDS: dict[str, tuple[str, str]] = {
                     "φ = {turn}° from position 0 (crank angle {phi}° from the x axis)"),
     "fs force position short": ("φ = {turn}° від положення 0 ({phi}° від осі x)",
                                 "φ = {turn}° from position 0 ({phi}° from the x axis)"),
+    "fs why detail": ("{sym}: на плані коротший за поділку ({mm} мм), прочитано на виносному елементі I; похибку дає "
+                      "округлення відомих сил на плані ({n} сил по ±{half} мм)",
+                      "{sym}: shorter than a division on its plan ({mm} mm), read off detail I; its error is the "
+                      "known forces rounded on the plan ({n} forces, ±{half} mm each)"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
