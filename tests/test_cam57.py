@@ -140,3 +140,74 @@ def test_the_phase_diagrams_caption_names_a_given_radius(small):
     assert _captions(small[2], small[0], "en")["phase"][0].endswith("smallest and given R_0")
     chosen = dataclasses.replace(small[0], base_radius=None)
     assert _captions(small[2], chosen, "uk")["phase"][0].endswith("), найменший R_0")
+
+
+# -- review 57 finding 6: the uk sheet of c_cam dropped «Таблиця 1. Вихідні дані» that its en sheet carried ------
+
+def _page_of(doc, lang: str, profile_foot: float):
+    """A page as c_cam's uk A1 sheet had it: the table of the divisions at 3.5-mm letters in 10-mm rows,
+    245.3 mm wide, its foot at y = 66 mm over the title block; the profile's ink from ``profile_foot`` up."""
+    from graphplan.drawing.layout import Placed
+    from graphplan.graphic.record import Record
+    from graphplan.sheets.cam import positions_table
+    tab = positions_table(doc, lang, 10.0, 3.5, span=245.3)
+    b = tab.bounds()
+    tab = tab.moved(585.7 - b[0], 66.0 - b[1])
+    prof = Record("profile")
+    prof.segment((598.5, profile_foot), (818.2, 584.0))
+    return [Placed("profile", prof, (585.7, tab.bounds()[3] + 6.0, 831.0, 584.0)),
+            Placed("table", tab, tab.bounds())]
+
+
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_given_data_kept_by_both_tables_at_smaller_letters(small, lang):
+    """c_cam's uk page (Table 2 at 3.5 mm, the profile's ink from y = 330.6 mm): at 3.5-mm letters the
+    closest rows that keep Table 2's lowered indices clear (7.5 mm) leave 91 mm for the given data's 96;
+    then both tables at 2.5 mm in rows alike (7 mm), the given data between them and as wide — not the
+    page without it (the en sheet, whose Table 2 was at 2.5 mm already, kept it)."""
+    from graphplan.drawing.labels import collisions
+    from graphplan.drawing.layout import GAP
+    from graphplan.sheets.cam import positions_table
+    from graphplan.sheets.camgiven import tab_size, with_given
+    doc = small[3]
+    page = _page_of(doc, lang, 330.6)
+    out = with_given(page, small[0], doc, lang, lambda row, size, span: positions_table(doc, lang, row, size, span=span))
+    names = {p.name: p for p in out}
+    assert set(names) == {"profile", "table", "given"}
+    gb, tb = names["given"].record.bounds(), names["table"].record.bounds()
+    assert tb[1] == pytest.approx(66.0, abs=1e-6)                              # its foot where it stood
+    assert gb[1] >= tb[3] + GAP - 1e-6 and gb[3] <= 330.6 - GAP + 1e-6          # between the table and the profile
+    assert gb[2] - gb[0] == pytest.approx(tb[2] - tb[0], abs=0.5)
+    assert tab_size(names["table"].record) == tab_size(names["given"].record) == 2.5
+    assert not collisions(names["table"].record) and not collisions(names["given"].record)
+    # the rows alike: the two tables' ruled rows the same height (21 rows of Table 2 over 13 of the given data)
+    h2 = (tb[3] - tb[1]) / 21
+    hg = (gb[3] - gb[1]) / 13
+    assert h2 == pytest.approx(hg, abs=0.6)
+    # where the room holds the given data at 3.5 mm, the larger lettering is kept
+    high = with_given(_page_of(doc, lang, 345.0), small[0], doc, lang,
+                      lambda row, size, span: positions_table(doc, lang, row, size, span=span))
+    assert tab_size(next(p for p in high if p.name == "given").record) == 3.5
+
+
+@pytest.mark.slow
+def test_c_cams_a1_sheets_carry_the_same_tables_in_both_languages():
+    """The reviewer's c_cam (CAM57_SMALL_R0) on A1 in uk and en: the same two tables, the given data
+    (with n = 150 rpm) and the divisions."""
+    import tomllib
+
+    from graphplan.model.cam import build
+    from graphplan.sheets.cam import build_cam_sheet
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    titles = {}
+    for lang in ("uk", "en"):
+        sheet = build_cam_sheet(build(tomllib.loads(CAM57_SMALL_R0), "<c_cam>"), form("A1"),
+                                SheetOptions(lang=lang, sheet="cam"))
+        assert not sheet.more
+        texts = [p.text for p in sheet.record.items if p.kind == "text"]
+        titles[lang] = sorted(t[:16] for t in texts if t.startswith(("Таблиця ", "Table ")))
+        assert ("Частота обертання кулачка" if lang == "uk" else "Cam speed") in texts
+        assert "150" in texts
+    assert titles["uk"] == ["Таблиця 1. Вихід", "Таблиця 2. Перем"]
+    assert titles["en"] == ["Table 1. Given d", "Table 2. Displac"]

@@ -19,7 +19,7 @@ WORDS = {
            "follower": "Штовхач", "kinds": {"translating": "поступальний", "rocking": "коромисловий"},
            "roller": "роликовий", "knife": "із вістрям", "stroke": "Хід штовхача", "swing": "Кут розмаху коромисла",
            "offset": "Ексцентриситет", "auto": "для найменшого R_0", "arm": "Довжина коромисла",
-           "centre": "Міжосьова відстань", "radius": "Радіус ролика", "base": "Радіус початкової шайби",
+           "centre": "Міжосьова відстань", "radius": "Радіус ролика", "base": "Радіус основної шайби",
            "phases": "Фазові кути",
            "law_rise": "Закон руху на підйомі", "law_return": "Закон руху на опусканні",
            "allowed": "Допустимі кути тиску", "rpm": "Частота обертання кулачка",
@@ -105,7 +105,9 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
     its title, lettered as the table of the divisions (then Table 2) is: where the room is too low,
     that table's rows made shorter (``rebuild(row_h, size, span)``: it again at those rows, its foot
     where it stood by the title block), both tables in rows alike (ROWS, down to 7 mm); else at the
-    largest smaller lettering of SIZES that fits; ``page`` as it is where none fits."""
+    largest smaller lettering of SIZES that fits; else both tables at that smaller lettering in rows
+    alike (Table 2 rebuilt: the uk sheet's Table 2 larger than the en one's must not drop the given
+    data); ``page`` as it is where none fits."""
     prof = next((p for p in page if p.name == "profile"), None)
     tab = next((p for p in page if p.name == "table"), None)
     if prof is None or tab is None:
@@ -115,10 +117,15 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
     size = tab_size(tab.record)
     tries = [(None, size, row) for row in ROWS] if rebuild is None else [(row, size, row) for row in ROWS]
     tries += [(None, s, r) for s, r in SIZES if s < size - 1e-9]
+    if rebuild is not None:     # then both tables at a smaller lettering, in rows alike (review 57 #6: the
+        # uk sheet's Table 2 at 3.5 mm in 7.5-mm rows left 91 mm for the given data's 96 and dropped it,
+        # where the en sheet's, at 2.5 mm, kept it: one scene's two languages carry the same tables)
+        for s in sorted({s for s, _ in SIZES if s < size - 1e-9}, reverse=True):
+            tries += [(row, s, row) for row in sorted(set(ROWS) | {r for t, r in SIZES if t == s}, reverse=True)]
     for row2, s, row in tries:
         table2 = tab.record
         if row2 is not None:
-            table2 = rebuild(row2, size, tb[2] - tb[0])
+            table2 = rebuild(row2, s, tb[2] - tb[0])
             b2 = table2.bounds()
             if b2[2] - b2[0] > x1 - x0 + 1e-9 or collisions(table2):     # a lowered index on a closer rule
                 continue
