@@ -170,3 +170,28 @@ def test_the_small_motors_estimated_rotor_is_said_to_be_an_estimate():
     assert "4AA63B6" in rotor_estimate_note(doc, "en")
     doc["motor"]["rotor_inertia_estimated"] = False
     assert rotor_estimate_note(doc, "uk") is None
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_no_point_number_stands_in_the_row_of_the_i_axis_values(lang):
+    """The saw's energy–mass diagram (SAW_DYN56 at its A1 sheet's scales: L 170 mm, size 0,55) read «0 5 11
+    10 15» along its I* axis: point 11's number between the values 5 and 10, point 0's before 5 — each read
+    as a value. No point's number may overlap the row of the values, from the ΔT axis to the last value."""
+    from graphplan.exact.dynamics import analyse
+    from graphplan.graphic.flywheel import construct
+    from graphplan.sheets.dynamics import band
+    from review_scenes import SAW_DYN56
+    f = construct(analyse(scene_study(SAW_DYN56)), L=170.0, size=0.55)
+    assert f.kl == pytest.approx(211.5)                  # the sheet's construction
+    witt = band(f, lang, 110.0)[0]["wittenbauer"]
+    values = [p.ink() for p in witt.items if p.kind == "text" and p.step == "I* graduation" and p.text.strip()]
+    assert len(values) >= 3
+    y0, y1 = min(b[1] for b in values), max(b[3] for b in values)
+    x1 = max(b[2] for b in values)
+    numbers = [p for p in witt.items if p.kind == "text" and (p.step.startswith("point ") or p.step == "added point number")]
+    assert len(numbers) == f.divisions
+    for p in numbers:
+        b = p.ink()
+        assert b[3] <= y0 or b[1] >= y1 or b[0] >= x1 or b[2] <= 0.0, p.text
+    assert not [p for p in witt.items if p.step == "values' row"]      # the fence is not drawn

@@ -849,12 +849,38 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
                                      across=False, rivals=others),
                         LabelRequest(z, f.added_label(j), toward, NUM, step="added point number", across=False,
                                      rivals=others)])
+    fence = _value_rows(rec)       # no number in the row of the I* values
     for asked in numbers:        # a point's number beside it with no line between them where it can be (a
         # number across a projection reads as that line's), else on a leader that crosses no branch of
         # the French curve where one can (it would read as a point of that branch): drawing.labels
         place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
+    if fence:                    # taken out again, pieces too (a number beside its point may break a thin line)
+        rec.items[:] = [p for p in rec.items if p.step != "values' row"]
     place_labels(rec, labels[1:], layer=LAYER)
     return rec
+
+
+def _value_rows(rec: Record) -> list[Primitive]:
+    """Fences, for as long as the points' numbers are placed, around each row of the I* axis's values: a
+    point's number set between two values read as one of them (the saw's «0 5 11 10 15», stop 56). Each
+    a closed outline 0.6 mm round the row, from the ΔT axis to its last value, added to ``rec`` and
+    returned (the caller takes them out again)."""
+    out = []
+    inks = [p.ink() for p in rec.items if p.kind == "text" and p.step == "I* graduation" and p.text.strip()]
+    rows: dict[float, list] = {}
+    for b in inks:                            # one row per line of values (above and below a scale line)
+        rows.setdefault(round(0.5 * (b[1] + b[3]), 1), []).append(b)
+    for row in rows.values():
+        if len(row) < 2:
+            continue
+        x0, y0 = min(min(b[0] for b in row) - 0.6, 0.0), min(b[1] for b in row) - 0.6   # from the ΔT axis: a
+        #                                  number before the first value read as the axis's 0 (the saw's «0 5 10»)
+        x1, y1 = max(b[2] for b in row) + 0.6, max(b[3] for b in row) + 0.6
+        p = Primitive("polyline", ((x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)), role="construction",
+                      layer=LAYER, step="values' row")
+        rec.items.append(p)
+        out.append(p)
+    return out
 
 
 KEEP_WHOLE = ("I* axis", "ΔT axis")    # lines no number breaks (the projections may be broken)
