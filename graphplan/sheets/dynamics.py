@@ -58,9 +58,7 @@ WORDS = {
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
            "turn": "dI^*_м/dφ — похідна за цим φ",
-           "added": "{one} {pts} додано між поділками там, де M^*_с стрибає чи ламається (навантаження "
-                    "вмикається чи вимикається в крайньому положенні вихідної ланки або на зламі профілю сили): "
-                    "ΔT(φ) там має злам, і його будують у {where}, а не вгадують лекалом",
+           "added": "{one} {pts} додано між поділками, де M^*_с стрибає чи ламається (ΔT(φ) там має злам)",
            "none": "Маховик не потрібен: ротор і редуктор (I_рот·i² + I^*_ред = {c} кг·м²) уже дають δ ≤ {d} "
                    "(потрібно J = {j} кг·м²), тому I_мах = 0",
            "weak": "Двигун {name}: P_н = {p} кВт менша за потрібну за правилом P = M^*_{{с max}}·ω_1/η = {need} кВт",
@@ -88,9 +86,7 @@ WORDS = {
            "n": "No.", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
-           "added": "{one} {pts} added between the divisions where M^*_c jumps or bends (a load switching at the "
-                    "output's extreme position or at a corner of a force profile): ΔT(φ) has a corner there, "
-                    "constructed at {where}, not guessed with the French curve",
+           "added": "{one} {pts} added between the divisions where M^*_c jumps or bends (ΔT(φ) has a corner there)",
            "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I^*_red = {c} kg·m²) already keep "
                    "δ ≤ {d} (J = {j} kg·m² is needed), so I_fl = 0",
            "weak": "Motor {name}: P_n = {p} kW is below the power rule P = M^*_{{c max}}·ω_1/η = {need} kW",
@@ -311,8 +307,7 @@ def added_note(f: Flywheel, lang: str) -> str:
     one = ("Точки" if many else "Точку") if uk else ("Points" if many else "Point")
     if not uk:
         pts += " are" if many else " is"
-    where = ("них" if many else "ній") if uk else ("them" if many else "it")
-    return WORDS[lang]["added"].format(one=one, pts=pts, where=where)
+    return WORDS[lang]["added"].format(one=one, pts=pts)
 
 
 def marked(f: Flywheel, doc: dict, lang: str) -> list[str]:
