@@ -7571,3 +7571,93 @@ synchronous_rpm = 1000
 # kin57 checked the same scene (the lead's link57.toml) on the kinematics sheet (issue 32 #2: ω5 small past 5 % at 1
 # and 7); LINK57 above is the text
 
+
+# dyn57: the lead's stop-57 six-bar (/work/lead/s57/link57.toml): an offset crank-slider whose triangular rod swings a
+# rocker through a link; 70 N·m on the rocker's working swing, 300 N on the slider; dynamics to a 1000-rpm motor
+LINK_DYN57 = '''# Stop 57 (the lead's check): an offset crank-slider O1AB whose triangular connecting rod ABC swings,
+# through the rod's point C, a link CD and a rocker O3D (a kneading machine's arm):
+# I(0-1) -> II(2-3) ВВП (offset) -> II(4-5) ВВВ; the crank turns counter-clockwise; a resistance
+# moment on the rocker over its working swing and a force on the slider.
+title = "Шестиланковий механізм місильної машини"
+title_en = "Six-bar drive of a kneading machine"
+designation = "ТММ.КП.57.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-57"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O3 = [0.26, 0.24]
+
+[frame.guides]
+x = { through = [0, -0.025], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 160
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+shape = { C = [0.14, 0.09] }
+points = { S2 = [0.14, 0.03] }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 4
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.17
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.13
+points = { S5 = 0.5 }
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 130
+output = "O3D"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = 5
+magnitude = 70
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "B"
+magnitude = 300
+stroke = "both"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000'''

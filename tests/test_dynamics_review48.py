@@ -48,11 +48,14 @@ def test_the_notes_say_the_flywheel_is_a_small_part_of_j_with_numbers_that_give_
     times J/I_fl, gives Table 2's δ of the graphical row as printed (so a reader sees where the −15 %
     comes from); the approximate and Mertsalov rows say their J errors too."""
     from graphplan.report.dynamics import dynamics_json, flywheel_errors
-    from graphplan.sheets.compose import lines_of
-    from graphplan.sheets.dynamics import notes
+    from graphplan.sheets.dynamics import flywheel_table, marked
     _, dyn, f = compressor
     doc = dynamics_json(f)
-    text = " ".join(lines_of(notes(f, doc, lang))).replace("\u00a0", " ")
+    # the marks' legend stands under Table 2, whose rows it explains (stop 57: not in the notes)
+    said = marked(f, doc, lang)
+    text = " ".join(said).replace("\u00a0", " ")
+    table = [p.text for p in flywheel_table(doc, lang, said).items if p.kind == "text" and p.step == "marks legend"]
+    assert table and " ".join(table).replace("\u00a0", " ").startswith(said[0][:40].replace("\u00a0", " "))
     n = r"([+−-]?\d+(?:[,.]\d+)?)"
     pat = (rf"{n} %: I_(?:мах|fl) = J − I_(?:рот|rotor)·i² (?:—|is) (?:лише|only) {n} % (?:від|of) J = {n} "
            rf"(?:кг|kg)·m?м?², (?:тож похибка J|so J's error) \({n} %; .*?\|kl\| = {n} (?:мм|mm) "

@@ -118,6 +118,20 @@ def _numbers(rec: Record, row: list[Primitive], away: tuple[float, float] = (0.0
     rec.items.extend(row_clear(rec, row, away))
 
 
+def _added_numbers(rec: Record, f: Flywheel, at: list[complex], rivals: list[complex],
+                   avoid: np.ndarray | None = None) -> None:
+    """The added points (where M*_c jumps or bends: graphic.flywheel ``division_points``) lettered as
+    the draftsman letters them, the division before primed (6′: Flywheel ``added_label``), each beside
+    its dot (``at``, in the order of ``f.added``) or on a leader, nearer it than any of ``rivals`` (the
+    divisions' points) — a dot between two divisions with no name was a point the teacher could not
+    name (stop 57)."""
+    for j, z in zip(f.added, at):
+        others = tuple(r for r in (*rivals, *at) if abs(r - z) > 1e-6)
+        text = f.added_label(j)
+        place_beside(rec, [LabelRequest(z, text, 1j, NUM, step="added point number", sight=True, across=False,
+                                        rivals=others)], layer=LAYER, avoid=avoid, keep_whole=KEEP_WHOLE)
+
+
 def _ordinates(rec: Record, f: Flywheel, lo: float, hi: float, numbers_at: float | None) -> list[Primitive]:
     """The division ordinates; the numbers under them at ``numbers_at`` (returned, for ``_numbers``)."""
     n = f.divisions
@@ -223,6 +237,8 @@ def moments_record(f: Flywheel, lang: str = "uk") -> Record:
     rec.segment((0.0, f.Md), (f.L, f.Md), role="result", layer=LAYER, step="M*_d = A_c/2π")
     _dimension(rec, -f.H, 0.0, lo - 10.0, "H")
     _numbers(rec, row)
+    _added_numbers(rec, f, [complex(float(xa[j]), float(f.M_all[j])) for j in f.added],
+                   [complex(float(xk), float(yk)) for xk, yk in zip(f.x, f.M)])
     place_labels(rec, [LabelRequest(complex(f.L, f.Md), w["Md"], 1 + 0.3j, TEXT, step="M*_d"),
                        LabelRequest(complex(f.L, float(f.M[-1])), w["Mc"], 1 - 0.3j, TEXT, step="M*_c")],
                  layer=LAYER)
@@ -403,6 +419,8 @@ def energy_projected(f: Flywheel, lang: str, length: float, reach: float) -> Rec
                     f"projection of ΔT at {j}")
     _numbers(rec, row)
     graduate_axis(rec, graduation(hi, f.mu_T, bottom_mm=lo), f.mu_T, lang, step="ΔT graduation")
+    _added_numbers(rec, f, [complex(float(xa[j]) * (length / f.L), float(ya[j])) for j in f.added],
+                   [complex(float(xk), float(yk)) for xk, yk in zip(xs, f.dT)])
     place_labels(rec, [LabelRequest(complex(length + 10.0, 0.0), "φ", 1 - 1j, TEXT, step="axes ΔT",
                                     breaks=True)], layer=LAYER)   # at its arrow, the projections broken under it
     return _cleared(rec, "axes ΔT", "φ")
@@ -463,12 +481,17 @@ def inertia_turned(f: Flywheel, lang: str, length: float, reach: float) -> Recor
     for yk, ik in zip(ys, f.I):
         rec.point((ik, yk), role="construction", layer=LAYER, step="I*_m read")
     rec.add("polyline", list(zip(curve, -fine * (length / f.L))), role="curve", layer=LAYER, step="I*_m(φ)")
+    xa, ia = f.points("I")
+    added = [complex(float(ia[j]), -float(xa[j]) * (length / f.L)) for j in f.added]
+    for z in added:                            # the added points (where M*_c bends), as on ΔT(φ)
+        rec.point((z.real, z.imag), role="construction", layer=LAYER, step="I*_m at an added point")
     short = crowded(f.I, projected(n))
     for j in projected(n):
         _projection(rec, (float(f.I[j]), float(ys[j])), (float(f.I[j]), reach), j in short,
                     f"projection of I* at {j}")
     _numbers(rec, row, away=(-1.0, 0.0))
     _graduate(rec, hi, f.mu_I, lang, float(ys[-1]))
+    _added_numbers(rec, f, added, [complex(float(ik), float(yk)) for yk, ik in zip(ys, f.I)])
     if constant_inertia(f):               # the line's meaning said beside it, right of the grid
         value = f"{num(float(f.I[0]) * f.mu_I, lang)} {w['kgm2']}"
         text = (f"{w['Im']} = {value} — стала" if lang == "uk" else f"{w['Im']} = {value}, constant")
@@ -747,6 +770,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         every *= 2
     dots = [complex(float(f.I[j]), float(f.dT[j])) for j in range(n)]
     middle = complex(float(np.mean(X)), float(np.mean(Y)))
+    added = [complex(float(f.I_all[j]), float(f.dT_all[j])) for j in f.added]
     for j in f.added:                          # the added points (where M*_c bends): on the curve, dotted
         rec.point((float(f.I_all[j]), float(f.dT_all[j])), role="construction", layer=LAYER, step="added point")
     for j in range(n):
@@ -755,7 +779,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
             at = dots[j]
             # every other division's point a rival (drawing.plans position_numbers): the number nearer
             # its own point than any other, else on a leader to it that passes none; outside the curve first
-            rivals = tuple(z for z in dots if abs(z - at) > 1e-6)
+            rivals = tuple(z for z in (*dots, *added) if abs(z - at) > 1e-6)   # the added points' dots too
             toward = at - middle if abs(at - middle) > 1e-6 else 1 + 1j
             asked = [LabelRequest(at, str(j), toward, NUM, step=f"point {j}", sight=True, across=False, rivals=rivals)]
             if j:                # point 0 lies on the I* axis, its own projection: its number never across it
@@ -818,12 +842,45 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         graduation(dt_hi, f.mu_T, bottom_mm=dt_lo))), f.mu_T, lang, sides=(-1.0, 1.0), step="ΔT graduation")
     place_labels(rec, labels[:1], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
+    for j, z in zip(f.added, added):   # the added points' numbers (6′) asked as the divisions' are
+        others = tuple(r for r in (*dots, *added) if abs(r - z) > 1e-6)
+        toward = z - middle if abs(z - middle) > 1e-6 else 1 + 1j
+        numbers.append([LabelRequest(z, f.added_label(j), toward, NUM, step="added point number", sight=True,
+                                     across=False, rivals=others),
+                        LabelRequest(z, f.added_label(j), toward, NUM, step="added point number", across=False,
+                                     rivals=others)])
+    fence = _value_rows(rec)       # no number in the row of the I* values
     for asked in numbers:        # a point's number beside it with no line between them where it can be (a
         # number across a projection reads as that line's), else on a leader that crosses no branch of
         # the French curve where one can (it would read as a point of that branch): drawing.labels
         place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
+    if fence:                    # taken out again, pieces too (a number beside its point may break a thin line)
+        rec.items[:] = [p for p in rec.items if p.step != "values' row"]
     place_labels(rec, labels[1:], layer=LAYER)
     return rec
+
+
+def _value_rows(rec: Record) -> list[Primitive]:
+    """Fences, for as long as the points' numbers are placed, around each row of the I* axis's values: a
+    point's number set between two values read as one of them (the saw's «0 5 11 10 15», stop 56). Each
+    a closed outline 0.6 mm round the row, from the ΔT axis to its last value, added to ``rec`` and
+    returned (the caller takes them out again)."""
+    out = []
+    inks = [p.ink() for p in rec.items if p.kind == "text" and p.step == "I* graduation" and p.text.strip()]
+    rows: dict[float, list] = {}
+    for b in inks:                            # one row per line of values (above and below a scale line)
+        rows.setdefault(round(0.5 * (b[1] + b[3]), 1), []).append(b)
+    for row in rows.values():
+        if len(row) < 2:
+            continue
+        x0, y0 = min(min(b[0] for b in row) - 0.6, 0.0), min(b[1] for b in row) - 0.6   # from the ΔT axis: a
+        #                                  number before the first value read as the axis's 0 (the saw's «0 5 10»)
+        x1, y1 = max(b[2] for b in row) + 0.6, max(b[3] for b in row) + 0.6
+        p = Primitive("polyline", ((x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)), role="construction",
+                      layer=LAYER, step="values' row")
+        rec.items.append(p)
+        out.append(p)
+    return out
 
 
 KEEP_WHOLE = ("I* axis", "ΔT axis")    # lines no number breaks (the projections may be broken)

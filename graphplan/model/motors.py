@@ -23,7 +23,8 @@ CATALOGUE = "motors.toml"
 @dataclass(frozen=True)
 class Motor:
     """An induction motor's data sheet: rated power (kW), synchronous and rated speed (rpm),
-    M_max/M_n, M_start/M_n and the rotor's moment of inertia (kg·m²)."""
+    M_max/M_n, M_start/M_n and the rotor's moment of inertia (kg·m²) — ``inertia_estimated`` where
+    the handbooks do not tabulate it (the 50–63 frames: estimated from the 71 frame's by M_n)."""
     name: str
     power_kW: float
     rpm_sync: float
@@ -31,6 +32,7 @@ class Motor:
     max_ratio: float = 2.2
     start_ratio: float = 2.0
     inertia: float = 0.0
+    inertia_estimated: bool = False     # the rotor's inertia not tabulated, estimated (data/motors.toml's header)
 
     @property
     def omega_sync(self) -> float:

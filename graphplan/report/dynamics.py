@@ -97,6 +97,7 @@ def dynamics_json(f) -> dict[str, Any]:
         "motor": {"name": m.name, "power_kW": m.power_kW, "rpm_sync": m.rpm_sync, "rpm_rated": m.rpm_rated,
                   "omega_sync": m.omega_sync, "omega_rated": m.omega_rated, "moment_rated": m.moment_rated,
                   "moment_max": m.moment_max, "A": a, "B": b, "rotor_inertia": m.inertia,
+                  "rotor_inertia_estimated": m.inertia_estimated,
                   "chosen": dr.chosen, "power_needed_kW": dr.power_needed_kW,
                   "smallest": dr.chosen and smallest_of_line(m),
                   "underpowered": dyn.underpowered,
@@ -316,6 +317,9 @@ def dynamics_table(f, lang: str = "uk") -> str:
             f"  P = max M*c·ω₁/η = {m['power_needed_kW']:.3f} {u['kW']}; {'i' if m['ratio_given'] else ratio} = {m['ratio']:.4g}, η = {m['efficiency']:g}, "
             f"{u['rotor']}·i² = {m['rotor_reduced']:.4g} {u['kgm2']}; {u['steady']}: {inline(motor_omega(lang))} = {m['motion']['omega_mean']:.4f} "
             f"{u['rad']}/{u['s']}, {inline(motor_delta(lang))} = {m['motion']['delta']:.5f}, {u['peak']} {m['moment_peak']:.3f} {u['Nm']}"]
+    said = rotor_estimate_note(doc, lang)
+    if said:                                                    # a small motor's rotor: not the handbook's
+        out.append(f"  {_term(said)}")
     note = _term(motor_speed_note(doc, lang))
     out.append(f"  {note[0].upper()}{note[1:]}")                # which ω_m serves what: the flywheel's above
     if f.dyn.warnings:
@@ -420,6 +424,23 @@ def redrawn_note(f, lang: str, sheet: bool = False) -> str | None:
             f"графічного маховика, {e0}, в межі 5{NB}% лабораторної — кількість поділок залишено ({rd.first})" if uk else
             f"No redrawing on more divisions (multiples of {rd.first}, up to 360) brings the graphical flywheel's "
             f"error, {e0}, within the 5{NB}% the lab accepts: the {rd.first} divisions stay")
+
+
+def rotor_estimate_note(doc: dict[str, Any], lang: str) -> str | None:
+    """Where the motor's rotor inertia is the catalogue's estimate (the 4А series' 50–63 frames, whose
+    rotors the handbooks do not tabulate: data/motors.toml), one sentence saying so where I_рот·i² is
+    used (markup); else None."""
+    m = doc["motor"]
+    if not m.get("rotor_inertia_estimated"):
+        return None
+    value = num(m["rotor_inertia"], lang, 2)
+    if lang == "uk":
+        return (f"I_рот = {value} кг·м² двигуна {m['name']} — оцінка: довідники серії 4А не наводять інерції "
+                f"роторів габаритів 50–63; її взято з ротора габариту 71 пропорційно M_н (ротор такого ж "
+                f"радіуса, об'єм ~ M_н)")
+    return (f"I_rotor = {value} kg·m² of the {latin(m['name'])} is an estimate: the 4A series' handbooks do not "
+            f"list the rotors of the 50–63 frames; it is the 71 frame's rotor scaled by M_n (a rotor of a similar "
+            f"radius, its volume ~ M_n)")
 
 
 def amplified(f) -> dict[str, float] | None:

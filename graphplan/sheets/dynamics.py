@@ -23,7 +23,7 @@ from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
 from graphplan.report.dynamics import (amplified, amplified_note, approximate_note, chords_note, design_note, motor_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
                                        flywheel_text, motor_delta, motor_omega, motor_speed_note, not_needed,
-                                       redrawn_note, reducer_note, sig, signed, table_columns, tangents_note, wittenbauer_note)
+                                       redrawn_note, reducer_note, rotor_estimate_note, sig, signed, table_columns, tangents_note, wittenbauer_note)
 from graphplan.sheets.compose import (CAPTION, CAPTION_GAP, Sheet, SheetOptions, captioned, compose, field_of, keep_out, lines_of,
                                       note_block, notes_height, wrap_markup)
 from graphplan.sheets.form import TABLES, Form, enlarged, form, table
@@ -58,6 +58,7 @@ WORDS = {
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
            "turn": "dI^*_м/dφ — похідна за цим φ",
+           "added": "{one} {pts} додано між поділками, де M^*_с стрибає чи ламається (ΔT(φ) там має злам)",
            "none": "Маховик не потрібен: ротор і редуктор (I_рот·i² + I^*_ред = {c} кг·м²) уже дають δ ≤ {d} "
                    "(потрібно J = {j} кг·м²), тому I_мах = 0",
            "weak": "Двигун {name}: P_н = {p} кВт менша за потрібну за правилом P = M^*_{{с max}}·ω_1/η = {need} кВт",
@@ -85,6 +86,7 @@ WORDS = {
            "n": "No.", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
            "turn": "dI^*_m/dφ: the derivative along this φ",
+           "added": "{one} {pts} added between the divisions where M^*_c jumps or bends (ΔT(φ) has a corner there)",
            "none": "No flywheel is needed: the rotor and the reducer (I_rotor·i² + I^*_red = {c} kg·m²) already keep "
                    "δ ≤ {d} (J = {j} kg·m² is needed), so I_fl = 0",
            "weak": "Motor {name}: P_n = {p} kW is below the power rule P = M^*_{{c max}}·ω_1/η = {need} kW",
@@ -109,7 +111,7 @@ WORDS = {
 ROW = 6.0     # mm: a row of the tables
 
 
-def positions_table(doc: dict, lang: str) -> Record:
+def positions_table(doc: dict, lang: str, extra: list[str] | tuple[str, ...] = ()) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
     crank's sense; one count of decimals a column, the terminal's cells (report.dynamics
@@ -129,15 +131,20 @@ def positions_table(doc: dict, lang: str) -> Record:
     rec = table(rows, [9.0, 13.0, 22.0, 26.0, 20.0, 20.0, 19.0, 19.0, 20.0, 18.0, 11.0], row_h=ROW, size=2.5,
                 title=w["positions"])
     x0, y0, x1, _ = rec.bounds()            # under the table: the chords' heights and what δ is of
-    for k, part in enumerate(wrap_markup(chords_note(doc, lang), x1 - x0 - 4.0, 2.5)):
-        rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                  step="chord heights")
+    top = y0 - 4.2
+    for line, step in ((chords_note(doc, lang), "chord heights"), *((t, "added points") for t in extra)):
+        parts = wrap_markup(line, x1 - x0 - 4.0, 2.5)
+        for k, part in enumerate(parts):
+            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                      step=step)
+        top -= len(parts) * line_pitch(2.5)
     return rec
 
 
-def flywheel_table(doc: dict, lang: str) -> Record:
+def flywheel_table(doc: dict, lang: str, why: list[str] | tuple[str, ...] = ()) -> Record:
     """The flywheel by each method beside the exact one; 0 (never negative) where no flywheel is
-    needed, the notes saying why."""
+    needed, the notes saying why. Under it the approximate row's arithmetic and ``why`` (``marked``:
+    the legend of the rows marked * past the lab's 5 %), then the project's answer."""
     w = WORDS[lang]
     fw = doc["flywheel"]
 
@@ -167,9 +174,15 @@ def flywheel_table(doc: dict, lang: str) -> Record:
     for k, part in enumerate(parts):
         rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
                   step="approximate arithmetic")
+    top = y0 - 4.2 - (len(parts) + 0.3) * line_pitch(2.5)
+    for line in why:                        # the marks' legend, each line indented where it wraps
+        lines = wrap_markup(line, x1 - x0 - 4.0, 2.5)
+        for k, part in enumerate(lines):
+            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
+                      step="marks legend")
+        top -= (len(lines) + 0.3) * line_pitch(2.5)
     said = design_note(doc, lang)           # which of the two answers the design fits (review 11)
     if said:
-        top = y0 - 4.2 - (len(parts) + 0.3) * line_pitch(2.5)
         for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
             rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
                       step="design answer")
@@ -206,12 +219,14 @@ def motor_table(doc: dict, lang: str) -> Record:
     # why a flywheel beside a motor sized by the peak (review 13 #18) is said in the notes where the
     # band's nook holds it (``with_motor``), not under this table: its 4–6 lines here cost the
     # shaper's A1 dynamics its one sheet
-    said = None
+    # a small motor's rotor inertia, not tabulated by the handbooks, is the catalogue's estimate: said under
+    # the table whose I_рот·i² row uses it (stop 57), in the table's width
+    said = rotor_estimate_note(doc, lang)
     if said:
         x0, y0, x1, _ = rec.bounds()
-        for k, part in enumerate(wrap_markup(said, MOTOR_NOTE_W, 2.5)):
+        for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
             rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                      step="motor and flywheel")
+                      step="rotor estimated")
     return rec
 
 
@@ -260,22 +275,9 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
-    errs = flywheel_errors(doc)              # Table 2's δ
-    amp = amplified(f)                       # the flywheel a small part of J: each error J's times J/I_fl
-    for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
-                     ("merkalov_error_pct", "why_merk")):
-        if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
-            e = error_text(errs[key], lang)
-            line = amplified_note(f, lang, e) if key == "error_pct" else None
-            if line is None:
-                line = w[why].format(e=e, n=doc["divisions"], p=num(doc["precision_mm"], lang))
-                j = None if amp is None else errs[key] * amp["share"] / 100.0    # J's error: I_fl's × I_fl/J
-                if amp is not None and key == "approximate_error_pct":
-                    # its J read off ΔT(φ) and I*(φ) by the same ruler: not the method's error alone
-                    line = w["why_approx_small"].format(e=e, j=signed(j, lang), x=num(100.0 / amp["share"], lang, 2))
-                elif amp is not None:        # the method's own error is J's: said beside I_fl's
-                    line = line.replace(" %:", f" % (J {signed(j, lang)} %):", 1)
-            said.append(w["mark"] + line)
+    # Table 2's rows marked * past the lab's 5 % are explained under Table 2 (``marked``), where the
+    # teacher reads the mark — not here, half a sheet away (stop 57: «наближено −9,82 %*» in the
+    # table's column, its reason at the foot of the notes under ΔT(φ))
     said += [line for line in (redrawn_note(f, lang, sheet=True),) if line]     # redrawn on more divisions, or why not
     if short is not None:
         said.append(short_note(short, lang))
@@ -294,6 +296,44 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     for k, line in enumerate(lines):
         rec.label((0.0, -6.5 * k), line, size=3.5, layer="labels")
     return rec
+
+
+def added_note(f: Flywheel, lang: str) -> str:
+    """The notes' line on the points added between the divisions (graphic.flywheel ``division_points``):
+    each by its name as drawn (6′) and its turn from position 0, and why the lab adds them."""
+    uk = lang == "uk"
+    pts = ", ".join(f"{f.added_label(j)} (φ = {num(math.degrees(float(f.turn_all[j])), lang, 4)}°)" for j in f.added)
+    many = len(f.added) > 1
+    one = ("Точки" if many else "Точку") if uk else ("Points" if many else "Point")
+    if not uk:
+        pts += " are" if many else " is"
+    return WORDS[lang]["added"].format(one=one, pts=pts)
+
+
+def marked(f: Flywheel, doc: dict, lang: str) -> list[str]:
+    """Why each of Table 2's rows past the lab's 5 % (marked *) is off (markup, «* — наближено
+    −9,82 %: метод нехтує …»): the construction's error, the method's, or — where the flywheel is a
+    small part of J — J's error times J/I_fl (report.dynamics ``amplified``). Printed under Table 2,
+    the marks' legend under the table that carries them."""
+    w = WORDS[lang]
+    out = []
+    errs = flywheel_errors(doc)              # Table 2's δ
+    amp = amplified(f)                       # the flywheel a small part of J: each error J's times J/I_fl
+    for key, why in (("error_pct", "why_graph"), ("approximate_error_pct", "why_approx"),
+                     ("merkalov_error_pct", "why_merk")):
+        if errs[key] is not None and abs(round(errs[key], 2)) > LAB_LIMIT:
+            e = error_text(errs[key], lang)
+            line = amplified_note(f, lang, e) if key == "error_pct" else None
+            if line is None:
+                line = w[why].format(e=e, n=doc["divisions"], p=num(doc["precision_mm"], lang))
+                j = None if amp is None else errs[key] * amp["share"] / 100.0    # J's error: I_fl's × I_fl/J
+                if amp is not None and key == "approximate_error_pct":
+                    # its J read off ΔT(φ) and I*(φ) by the same ruler: not the method's error alone
+                    line = w["why_approx_small"].format(e=e, j=signed(j, lang), x=num(100.0 / amp["share"], lang, 2))
+                elif amp is not None:        # the method's own error is J's: said beside I_fl's
+                    line = line.replace(" %:", f" % (J {signed(j, lang)} %):", 1)
+            out.append(w["mark"] + line)
+    return out
 
 
 def energy_scales_note(s: dict, lang: str) -> str:
@@ -566,9 +606,12 @@ def _band_size(boxes: dict[str, tuple]) -> tuple[float, float]:
             max(b[3] for b in boxes.values()) - min(b[1] for b in boxes.values()))
 
 
-def _tables(doc: dict, lang: str, factor: float) -> list[tuple[str, Record]]:
+def _tables(doc: dict, lang: str, factor: float, f: Flywheel) -> list[tuple[str, Record]]:
+    """The three tables (``enlarged`` by ``factor``): Table 1 with the points added between its positions
+    (``added_note``: not rows of it, so said under it), Table 2 with its marks' legend (``marked``)."""
     return [(name, enlarged(make(doc, lang), factor)) for name, make in
-            (("positions table", positions_table), ("flywheel table", flywheel_table), ("motor table", motor_table))]
+            (("positions table", lambda d, l: positions_table(d, l, [added_note(f, l)] if f.added else [])),
+             ("flywheel table", lambda d, l: flywheel_table(d, l, marked(f, d, l))), ("motor table", motor_table))]
 
 
 def _built(dyn, args, L: float, size: float) -> Flywheel:
@@ -782,7 +825,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         per = drawn_at[(L, size)]
         leaves = {name: Leaf(name, max(p[1][name][0] for p in per), max(p[1][name][1] for p in per))
                   for name in per[0][1]}
-        tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor)] for lang, _, doc, _, _ in per]
+        tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor, fw_)] for lang, _, doc, _, fw_ in per]
         tables = [Leaf(a[0], max(a[1], b[1]), max(a[2], b[2])) for a, b in zip(*tabs)]
         return leaves, tables, [p[3] for p in per], per
 
@@ -1041,7 +1084,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             leaves_ = {"moments": Leaf("moments", record=drawn["moments"]),
                        "band": Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw),
                                     record=_union(band(fw_, lang, g)[0]))}
-            tables_ = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, 1.0)]
+            tables_ = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, 1.0, fw_)]
             laid = _set_laid(f, fw_, doc, lang, leaves_, tables_, 1.0, g, lines_of(notes(fw_, doc, lang, short_)))[0]
             if laid is None:
                 return (10 ** 6, 10 ** 6)
@@ -1593,7 +1636,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     bw = [_band_size(boxes if other == lang else band(fw, other, length)[1]) for other in LANGS]   # the same
     # room in either language (this language's band drawn once)
     leaves["band"] = Leaf("band", max(a[0] for a in bw), max(a[1] for a in bw), record=_union(parts_))
-    tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor)]
+    tables = [Leaf(name, record=rec) for name, rec in _tables(doc, lang, factor, fw)]
     note_lines = lines_of(notes(fw, doc, lang, short))
     region = field_of(f)
     foot = keep_out(f)[3]
@@ -1618,7 +1661,7 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             lines_ = lines_of(notes(fw, doc_, other, short))
             zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
                            "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
-                          _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor)], parts,
+                          _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor, fw)], parts,
                                   None if in_nook or shape == "nook"
                                   else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
         got = widened(fw, length, zones, shape, foot - region[1], region)
