@@ -109,7 +109,10 @@ def test_the_six_bars_reduced_quantities_and_flywheel_agree_with_an_independent_
 
 @pytest.mark.slow
 @pytest.mark.parametrize("lang", ["uk", "en"])
-def test_table_2s_marks_are_explained_under_table_2_not_in_the_notes(link57, lang):
+def test_table_2s_marks_are_explained_in_the_notes(link57, lang):
+    """Each of Table 2's rows past the lab's 5 % carries * and the notes say why (the legend under Table 2
+    was tried this stop and left: wrapped to the table's width it cost the shaper's A1 its enlarged
+    tables)."""
     from graphplan.report.dynamics import dynamics_json, flywheel_errors
     from graphplan.sheets.compose import lines_of
     from graphplan.sheets.dynamics import flywheel_table, marked, notes
@@ -120,15 +123,11 @@ def test_table_2s_marks_are_explained_under_table_2_not_in_the_notes(link57, lan
                if errs[k] is not None and abs(round(errs[k], 2)) > 5.0]
     said = marked(f, doc, lang)
     assert len(said) == len(starred) >= 1                 # the approximate row: −9,8 %
-    table = flywheel_table(doc, lang, said)
-    legend = " ".join(p.text for p in table.items if p.kind == "text" and p.step == "marks legend")
+    table = flywheel_table(doc, lang)
     cells = [p.text for p in table.items if p.kind == "text" and p.text.endswith("*")]
-    assert len(cells) == len(starred) and legend.startswith("* — ")
-    # under the table's rows: below its lowest cell
-    low = min(p.points[0][1] for p in table.items if p.kind == "text" and p.text in cells)
-    assert all(p.points[0][1] < low for p in table.items if p.kind == "text" and p.step == "marks legend")
-    text = " ".join(lines_of(notes(f, doc, lang)))
-    assert not any(line[:30] in text for line in said)
+    assert len(cells) == len(starred)
+    text = " ".join(lines_of(notes(f, doc, lang))).replace("\u00a0", " ")
+    assert all(line[:30].replace("\u00a0", " ") in text for line in said)
 
 
 @pytest.mark.slow

@@ -275,9 +275,10 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
     if not fw["needed"]:
         said.append(w["none"].format(c=num(fw["rotor_reduced"] + fw["reducer_reduced"], lang, 4),
                                      d=num(doc["delta"], lang), j=num(fw["total_exact"], lang, 4)))
-    # Table 2's rows marked * past the lab's 5 % are explained under Table 2 (``marked``), where the
-    # teacher reads the mark — not here, half a sheet away (stop 57: «наближено −9,82 %*» in the
-    # table's column, its reason at the foot of the notes under ΔT(φ))
+    # Table 2's rows marked * past the lab's 5 % are explained here (``marked``). Under Table 2, where the
+    # teacher reads the mark, they were tried (stop 57): the legend wrapped to the table's width made the
+    # column so tall that the shaper's A1 lost its enlarged tables (3.5 → 2.5 mm, ~150 × 80 mm bare)
+    said += marked(f, doc, lang)
     said += [line for line in (redrawn_note(f, lang, sheet=True),) if line]     # redrawn on more divisions, or why not
     if short is not None:
         said.append(short_note(short, lang))
@@ -608,10 +609,10 @@ def _band_size(boxes: dict[str, tuple]) -> tuple[float, float]:
 
 def _tables(doc: dict, lang: str, factor: float, f: Flywheel) -> list[tuple[str, Record]]:
     """The three tables (``enlarged`` by ``factor``): Table 1 with the points added between its positions
-    (``added_note``: not rows of it, so said under it), Table 2 with its marks' legend (``marked``)."""
+    (``added_note``: not rows of it, so said under it), Table 2 (its marks' legend in the notes: ``marked``)."""
     return [(name, enlarged(make(doc, lang), factor)) for name, make in
             (("positions table", lambda d, l: positions_table(d, l, [added_note(f, l)] if f.added else [])),
-             ("flywheel table", lambda d, l: flywheel_table(d, l, marked(f, d, l))), ("motor table", motor_table))]
+             ("flywheel table", flywheel_table), ("motor table", motor_table))]
 
 
 def _built(dyn, args, L: float, size: float) -> Flywheel:
