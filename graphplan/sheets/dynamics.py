@@ -443,12 +443,18 @@ def _band(f: Flywheel, lang: str, length: float,
     foot = py0 - 2.0                                   # … and its foot
     el = length if energy_length is None else energy_length
     turned = _caption(inertia_turned(f, lang, length, 0.0), w["inertia"])
+    reached: dict[float, Record] = {}
+
+    def projected_to(reach_: float) -> Record:        # ΔT(φ) captioned, drawn once per reach (the
+        if reach_ not in reached:                      # attempts below ask for the same again)
+            reached[reach_] = _caption(energy_projected(f, lang, el, reach_), w["energy"], scale=band_scale(el, lang))
+        return reached[reach_]
     for attempt in range(6):                           # the lettering keeps off the lines: where it moves
         reach = el + 24.0                              # past the side or the foot, they go farther
-        energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
+        energy = projected_to(reach)
         if energy.bounds()[2] > reach:                 # ΔT(φ)'s lines run past its φ and its caption
             reach = energy.bounds()[2]
-            energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
+            energy = projected_to(reach)
         energy = energy.moved(side - reach, 0.0)
         if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
             foot = min(foot, energy.bounds()[1] - 2.0)
