@@ -445,8 +445,27 @@ def lettering_foot(witt: Record, side: float) -> float:
     return min((b[1] for b in inks if b[2] > side), default=float("inf"))
 
 
+_BANDS: dict[tuple, tuple] = {}
+
+
 def band(f: Flywheel, lang: str, length: float,
          energy_length: float | None = None) -> tuple[dict[str, Record], dict[str, tuple]]:
+    """``_band`` once per flywheel (the very object), language, φ axes and sketching (a copy each
+    time): the composition's search asks for the band at each φ axis in both languages, and the
+    sheet then draws one of them again."""
+    from graphplan.drawing import labels as lb
+    key = (id(f), lang, length, energy_length, lb._SKETCH[-1])
+    hit = _BANDS.get(key)
+    if hit is None or hit[0] is not f:
+        if len(_BANDS) >= 64:
+            _BANDS.pop(next(iter(_BANDS)))
+        hit = _BANDS[key] = (f, _band(f, lang, length, energy_length))
+    parts, boxes = hit[1]
+    return {name: Record(r.title, list(r.items), dict(r.scales)) for name, r in parts.items()}, dict(boxes)
+
+
+def _band(f: Flywheel, lang: str, length: float,
+          energy_length: float | None = None) -> tuple[dict[str, Record], dict[str, tuple]]:
     """The textbook's elimination of φ (REFERENCE §9): ΔT(φ) to the left of the energy–mass
     diagram, its ΔT zero line the diagram's I* axis (the same μ_T), I*(φ) turned by 90° under it,
     its I* axis the diagram's (the same μ_I), φ running down ``length`` mm; a thin horizontal
@@ -465,12 +484,18 @@ def band(f: Flywheel, lang: str, length: float,
     foot = py0 - 2.0                                   # … and its foot
     el = length if energy_length is None else energy_length
     turned = _caption(inertia_turned(f, lang, length, 0.0), w["inertia"])
+    reached: dict[float, Record] = {}
+
+    def projected_to(reach_: float) -> Record:        # ΔT(φ) captioned, drawn once per reach (the
+        if reach_ not in reached:                      # attempts below ask for the same again)
+            reached[reach_] = _caption(energy_projected(f, lang, el, reach_), w["energy"], scale=band_scale(el, lang))
+        return reached[reach_]
     for attempt in range(6):                           # the lettering keeps off the lines: where it moves
         reach = el + 24.0                              # past the side or the foot, they go farther
-        energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
+        energy = projected_to(reach)
         if energy.bounds()[2] > reach:                 # ΔT(φ)'s lines run past its φ and its caption
             reach = energy.bounds()[2]
-            energy = _caption(energy_projected(f, lang, el, reach), w["energy"], scale=band_scale(el, lang))
+            energy = projected_to(reach)
         energy = energy.moved(side - reach, 0.0)
         if turned.bounds()[0] < side:                  # the turned I*(φ) reaches under ΔT(φ) too
             foot = min(foot, energy.bounds()[1] - 2.0)
@@ -615,13 +640,24 @@ def _tables(doc: dict, lang: str, factor: float, f: Flywheel) -> list[tuple[str,
              ("flywheel table", flywheel_table), ("motor table", motor_table))]
 
 
+_BUILT: dict[tuple, tuple] = {}
+
+
 def _built(dyn, args, L: float, size: float) -> Flywheel:
     """The construction at (L, size): redrawn on more divisions where the first drawing's flywheel
     or M*_d is past the lab's 5 % (graphic.flywheel.redrawn; divisions the scene or the command
-    gives are kept)."""
+    gives are kept). Remembered per analysis (the very object), divisions, ruler and scales: the
+    sheet draws the construction its search (``construction``) built already — the same object, so
+    the drawings remembered per flywheel (``wittenbauer_record``, ``band``) are not drawn again."""
     divisions = getattr(args, "divisions", None)
-    return redrawn(dyn, divisions, args.precision, L=L, size=size,
-                   given="option" if divisions is not None else None)
+    key = (id(dyn), divisions, args.precision, L, size)
+    hit = _BUILT.get(key)
+    if hit is None or hit[0] is not dyn:
+        if len(_BUILT) >= 64:
+            _BUILT.pop(next(iter(_BUILT)))
+        hit = _BUILT[key] = (dyn, redrawn(dyn, divisions, args.precision, L=L, size=size,
+                                          given="option" if divisions is not None else None))
+    return hit[1]
 
 
 def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = None) -> tuple[Flywheel, dict[str, Record]]:
