@@ -198,7 +198,7 @@ THINNED = {
 # The tests measured costliest, left to the slow suite so that the default run keeps within the
 # brief's three minutes on two cores (``tests/costly.py`` picks them from a log of each test's cost;
 # every module keeps its cheapest test in the default run).
-COSTLY = frozenset((Path(__file__).with_name("costly.txt")).read_text(encoding="utf-8").split())
+COSTLY = frozenset((Path(__file__).with_name("costly.txt")).read_text(encoding="utf-8").splitlines()) - {""}   # a line an id (ids hold spaces)
 
 
 @pytest.hookimpl(tryfirst=True)

@@ -22,7 +22,7 @@ LIST = Path(__file__).with_name("costly.txt")
 # phase angles, the phases' largest pressure angles, form 2a on continuation sheets
 ALWAYS = ("test_the_phase_diagram_draws_the_printed_pressure_angles", "test_the_largest_pressure_angle_is_the_phases_maximum",
           "test_a_set_carries_form_1_then_form_2a")
-DURATION = re.compile(r"\s*([\d.]+)s (?:call|setup|teardown)\s+(\S+)")
+DURATION = re.compile(r"\s*([\d.]+)s (?:call|setup|teardown)\s+(\S.*?)\s*$")
 
 
 def costs(log: str) -> Counter:
@@ -56,7 +56,7 @@ def costly(cost: Counter, share: float) -> list[tuple[str, float]]:
 
 
 if __name__ == "__main__":
-    old = set(LIST.read_text(encoding="utf-8").split()) if LIST.exists() and "--add" in sys.argv else set()
+    old = set(LIST.read_text(encoding="utf-8").splitlines()) - {""} if LIST.exists() and "--add" in sys.argv else set()
     picked = costly(costs(sys.argv[1]), float(sys.argv[2]))
     names = sorted(t for t in old | {t for t, _ in picked}
                    if "/" not in t.split("::", 1)[-1] and not any(a in t for a in ALWAYS))   # ids that name no clone's path
