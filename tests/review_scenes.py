@@ -7575,3 +7575,149 @@ synchronous_rpm = 1000
 # dyn57: the lead's stop-57 six-bar (/work/lead/s57/link57.toml): an offset crank-slider whose triangular rod swings a
 # rocker through a link; 70 N·m on the rocker's working swing, 300 N on the slider; dynamics to a 1000-rpm motor
 LINK_DYN57 = LINK57   # the same scene (the lead's link57.toml), checked by dyn57
+
+
+# Stop 58: the lead's stop-58 V-twin compressor: one crank, two groups on the crank pin, pistons at 60° and 120° (/work/lead/s58/link58.toml)
+LINK58 = '''# Stop 58 (the lead's check): a V-twin compressor: one crank O1A drives two connecting rods AB and AC
+# (both pinned at the crank pin A) and two pistons B and C on guides through O1 at 60° and 120° (a 60° V):
+# I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП; the crank turns clockwise; the gas forces act on the pistons'
+# compression strokes (towards O1); masses by length; dynamics to a 1500-rpm motor, δ = 1/40.
+title = "V-подібний двоциліндровий компресор"
+title_en = "V-twin compressor"
+designation = "ТММ.КП.58.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 60, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
+y = { through = [0, 0], angle_deg = 120, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 720
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.2
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 2.5
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.2
+points = { S4 = 0.35 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "y"
+mass = 2.5
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 45
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "C"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.025
+efficiency = 0.8
+synchronous_rpm = 1500
+'''
+
+
+# Stop 58: the lead's stop-58 cam: a rocking roller follower, ccw, no far dwell (trapezoidal rise 150°, cycloidal return 150°) (/work/lead/s58/cam58.toml)
+CAM58 = '''# Stop 58 (the lead's check): a ROCKING roller follower, the cam counter-clockwise, NO far dwell: a
+# trapezoidal rise of 150° straight into a cycloidal return of 150°, a near dwell of 60°; a swing of 25°,
+# 10 divisions, [ϑ] 40°/45°.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 58)"
+title_en = "Cam with a rocking roller follower (check 58)"
+designation = "ТММ.КМ.58.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 25
+arm = 0.09
+centre_distance = 0.11
+roller_radius = 0.01
+phases_deg = { rise = 150, dwell_far = 0, return = 150, dwell_near = 60 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "ccw"
+divisions = 10
+'''
+
+
+# Stop 58: the lead's stop-58 gears: a pair 9/35 "auto", m = 4 mm, and a type-B train for u1H = 14, K = 3 (/work/lead/s58/gears58.toml)
+GEARS58 = '''# Stop 58 (the lead's check): a pair 9/35 "auto" (a 9-tooth pinion: a large shift against undercut, the
+# tip's thickness to check), m = 4 mm, and a two-row type-B train chosen for u1H = 14, K = 3, 1450 rpm.
+title = "Зубчаста передача 9/35 і дворядний планетарний редуктор (перевірка 58)"
+title_en = "A gear pair 9/35 and a two-row planetary reducer (check 58)"
+designation = "ТММ.ЗП.58.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[gears]
+z = [9, 35]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 14
+planets = 3
+module = 0.003
+rpm = 1450
+'''
