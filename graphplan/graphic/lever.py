@@ -5,7 +5,7 @@ force P_b at the crank pin's image: P_b·pa = ΣF·h, M_b = P_b·l_OA."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import replace, dataclass
 
 import numpy as np
 
@@ -84,9 +84,10 @@ def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None, loads:
         f, c = complex(ld.force[0]), float(ld.couple[0])
         if f != 0:
             add(ld.name, ld.link, ld.point, f)
-        if c != 0 and not _couple_pair(ld, c, ks, add, image, precision, terms):
-            # a link with a single point (a block on a turning guide): the couple's moment on the
-            # lever is −M·ω/μv, the moment of its force pair at the images of any two of its points
+        if c != 0 and not _couple_pair(ld, c, ks, add, image, precision, terms) \
+                and not _couple_pair(replace(ld, link=_guide(mech, ld.link)), c, ks, add, image, precision, terms):
+            # a link with a single point on no turning guide: the couple's moment on the lever is
+            # −M·ω/μv, the moment of its force pair at the images of any two of its points
             omega = float(ld.omega[0])
             terms.append(LeverTerm(ld.name, abs(c), 0.0, -c * omega / mu_v, ld.point or "", 0j))
     crank = mech.crank
@@ -101,6 +102,15 @@ def lever(ks: Kinetostatics, precision: float, mu_v: float | None = None, loads:
         pts = [p for p in link.local if p in images]
         segs += [(pts[i], pts[i + 1]) for i in range(len(pts) - 1)]
     return Lever(mu_v, images, segs, terms, pa, total, p_b, m_b)
+
+
+def _guide(mech, link: str) -> str:
+    """The link a block slides on, when that guide is a link (a coulisse's slotted lever): the block
+    turns with it (ω₄ = ω₅), so its couple is carried as a pair M/l at the guide's points — the
+    textbook's rule for a couple on the lever, with the guide's length (review 58: a row «M^Φ₄, F =
+    0,042, h = 0» gave the couple as a force). Else the link itself."""
+    guide = mech.links[link].slides_on
+    return guide if guide in mech.links and guide != link else link
 
 
 def _couple_pair(ld: Load, c: float, ks: Kinetostatics, add, image, precision: float,
