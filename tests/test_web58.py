@@ -77,3 +77,28 @@ def test_gear_tables_carry_no_float_noise(client):
     sliding = _table(client, GEARS58, "sliding.csv")
     pitch = next(r for r in sliding if r["point"] == "P")
     assert float(pitch["lambda1"]) == 0.0 and float(pitch["lambda2"]) == 0.0     # no sliding at the pitch point
+
+
+def test_the_preview_stacks_the_assemblies_for_a_phone(client):
+    """LINK58 leaves both groups open: the preview draws B = +1 and B = −1 side by side, and with
+    ?stack=1 (the page's one column) one above the other, the same drawings in the same order."""
+    from review_scenes import LINK58
+    import xml.etree.ElementTree as ET
+    wide = client.post("/api/scene/preview?phi=30&lang=en", content=LINK58.encode())
+    tall = client.post("/api/scene/preview?phi=30&lang=en&stack=1", content=LINK58.encode())
+    assert wide.status_code == tall.status_code == 200
+    assert wide.headers["x-assemblies"] == tall.headers["x-assemblies"]
+
+    def cells(svg: bytes):
+        root = ET.fromstring(svg)
+        w, h = (float(v) for v in root.get("viewBox").split()[2:])
+        moves = [tuple(float(v) for v in g.get("transform")[len("translate("):-1].split(","))
+                 for g in root.iter("{http://www.w3.org/2000/svg}g") if g.get("class") == "assembly"]
+        return w, h, moves
+    w1, h1, m1 = cells(wide.content)
+    w2, h2, m2 = cells(tall.content)
+    assert len(m1) == len(m2) == 2
+    assert m1[0] == m2[0] == (0.0, 0.0) and m1[1][1] == 0.0 and m1[1][0] > 0      # left to right
+    assert m2[1][0] == 0.0 and m2[1][1] > 0                                       # top to bottom
+    assert w2 == pytest.approx((w1 - 10) / 2, abs=0.01) and h2 == pytest.approx(2 * h1 + 10, abs=0.01)   # viewBox to 0.001
+    assert wide.content.replace(b"\n", b"").count(b"<text") == tall.content.replace(b"\n", b"").count(b"<text")

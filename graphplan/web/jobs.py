@@ -452,9 +452,11 @@ PREVIEW_WIDTH = 150.0        # mm the mechanism spans over its turn in the previ
 TURN = 36                    # crank angles the preview's extent is taken over
 
 
-def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
+def preview(folder: Path, text: str, phi: float, lang: str | None, stack: bool = False) -> Answer:
     """image/svg+xml: the mechanism at φ; two drawings side by side (the [branch] +1 and −1 of every
-    group the scene leaves open), each with its caption, or the cam's profile."""
+    group the scene leaves open), each with its caption — one above the other with ``stack`` (a
+    phone's column: side by side each got half of a 390 px screen, its letters unreadable) —, or the
+    cam's profile."""
     import dataclasses
     import itertools
     import json
@@ -494,7 +496,7 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
         defaults.append(default)
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
-    svg = _side_by_side(drawings, lang, defaults)
+    svg = _side_by_side(drawings, lang, defaults, stack)
     headers = {"X-Scene-Kind": "lever", "X-Sheet-Kinds": ",".join(sheet_kinds(mech)),
                "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
                "X-Assemblies": quote(json.dumps([{"branch": c, "error": e, "default": f}
@@ -556,9 +558,10 @@ def _at(st, phi: float, lang: str):
     return rec, (x0, y0, x1, y1)
 
 
-def _side_by_side(drawings, lang: str, defaults=()) -> str:
-    """One SVG: the drawings in equal cells left to right, each captioned with its [branch] values,
-    the scene's default (the one a sheet draws when [branch] leaves the group open) said so."""
+def _side_by_side(drawings, lang: str, defaults=(), stack: bool = False) -> str:
+    """One SVG: the drawings in equal cells left to right (top to bottom with ``stack``), each
+    captioned with its [branch] values, the scene's default (the one a sheet draws when [branch]
+    leaves the group open) said so."""
     from graphplan.drawing.svg import render
     from graphplan.util.markup import plain
     from xml.sax.saxutils import escape
@@ -568,12 +571,12 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
     h = max(b[3] - b[1] for b in boxes)
     cap = max(9.0, w / 30)
     for k, (chosen, drawn, error) in enumerate(drawings):
-        x = k * (w + 10)
+        x, y = (0.0, k * (h + cap + 10)) if stack else (k * (w + 10), 0.0)
         said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '−1'}" for n, v in chosen.items())
         default = k < len(defaults) and defaults[k]
         caption = (f"{word('wb assembly', lang)} {k + 1}: [branch] {said}"
                    + (f" ({word('wb default', lang)})" if default else "")) if said else ""
-        parts = [f'<g class="assembly" transform="translate({x:.3f},0)">',
+        parts = [f'<g class="assembly" transform="translate({x:.3f},{y:.3f})">',
                  f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
                  'stroke-width="0.3"/>']
         if caption:
@@ -598,9 +601,12 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
                              f'font-family="sans-serif">{escape(line)}</text>')
         parts.append("</g>")
         cells.append("".join(parts))
-    total_w = len(drawings) * (w + 10) - 10
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {h + cap:.3f}" '
-            f'width="{total_w:.3f}mm" height="{h + cap:.3f}mm">' + "".join(cells) + "</svg>")
+    if stack:
+        total_w, total_h = w, len(drawings) * (h + cap + 10) - 10
+    else:
+        total_w, total_h = len(drawings) * (w + 10) - 10, h + cap
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {total_h:.3f}" '
+            f'width="{total_w:.3f}mm" height="{total_h:.3f}mm">' + "".join(cells) + "</svg>")
 
 
 def _wrap(text: str, width: int) -> list[str]:
