@@ -313,8 +313,12 @@ def test_on_a_phone_the_two_assemblies_stand_one_above_the_other(driver, server,
                       {"width": 390, "height": 844, "deviceScaleFactor": 2, "mobile": True})
     try:
         d.get(server + "/?lang=en")
+        wait(d, lambda: preview_src(d), 300, "the template's preview")         # the page is ready
         d.find_element(By.ID, "upload").send_keys(str(scene))
-        wait(d, lambda: len(d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")) == 2, 300, "two assemblies")
+        wait(d, lambda: "V-twin" in d.find_element(By.ID, "toml").get_attribute("value"), 300, "the scene read")
+        wait(d, lambda: any("[branch] B = +1" in (b.get_attribute("aria-label") or "") for b in
+                            d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly"))
+             and not d.find_element(By.ID, "preview").get_attribute("data-busy"), 300, "the V-twin's assemblies")
         box = d.find_element(By.ID, "preview").rect
         img = d.find_element(By.ID, "preview-img")
         wait(d, lambda: img.size["height"] > 1.5 * img.size["width"], 300, "the drawings stacked")
