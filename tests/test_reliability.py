@@ -100,7 +100,7 @@ def test_extreme_options_are_refused_with_their_range(argv, words):
     ("l = 0.307", "l = \"l0 ** 2 ** 2 ** 2 ** 2 ** 2\"\nl0 = 10", ["params.l"]),
     ("l = 0.307", "l = \"(-8) ** 0.5\"", ["params.l", "not a real number"]),
     ("l = 0.307", "l = \"0.3_07\"", ["params.l", "'_'"]),
-    ("l = 0.307", "l = 1e-9", ["link AB.length", "from 1e-05 to 1000 m"]),
+    ("l = 0.307", "l = 1e-9", ["link AB.length", "from 0.01 mm to 1000 m"]),
     ("through = [0, \"e\"]", "through = [1.6e16, \"e\"]", ["frame.guides.x.through", "1000 m"]),
     ("O = [0, 0]", "O = [0, 0]\nS1 = [1, 1]", ["S1", "also a frame point"]),
     ("points = { S2 = 0.35 }", "points = { S2 = 0.35, S1 = 0.1 }", ["S1", "also a point of link"]),

@@ -26,18 +26,15 @@ def scene(tmp_path: Path, text: str, name: str = "scene.toml") -> Path:
     return path
 
 
-def ends(argv, code: int, *words) -> tuple[str, str, float]:
-    """The run's exit code is ``code`` within 30 s of this process's CPU time (the run is in this
-    process; wall time measured the machine's load: 57 s on two cores shared by a dozen runs, stop
-    47, where the same run takes a few seconds alone), a refusal is one line holding every word and the
-    file's name, an answer has no warning and (as JSON) no NaN or infinity."""
+def ends(argv, code: int, *words) -> tuple[str, str]:
+    """The run's exit code is ``code``, a refusal is one line holding every word and the file's name,
+    an answer has no warning and (as JSON) no NaN or infinity. (No bound in seconds: CPU or wall time
+    measured the machine's load — 57 s on two cores shared by a dozen runs, stop 47, where the same
+    run takes a few seconds alone; the speed goals are docs/benchmarks.md's.)"""
     argv = [str(a) for a in argv]
-    t = time.process_time()
     got, out, err = run(argv)
-    took = time.process_time() - t
     check_run(argv, got, out, err)
     assert got == code, (argv, got, err[-300:])
-    assert took < 30, (argv, took)
     if code == 2:
         assert len(err.strip().splitlines()) == 1 and "internal error" not in err, err
         scene_file = next((a for a in argv if a.endswith(".toml")), None)
@@ -45,7 +42,7 @@ def ends(argv, code: int, *words) -> tuple[str, str, float]:
             assert scene_file in err, err
     for w in words:
         assert w in (err if code == 2 else out), (w, err, out[:300])
-    return out, err, took
+    return out, err
 
 
 def with_motor(extra: str) -> str:
@@ -76,7 +73,7 @@ def test_an_oversized_motor_is_integrated_as_a_stiff_system(tmp_path):
     that the explicit integrator would take millions of steps; integrated as stiff, the crank then runs
     at the motor's own speed through the reducer, ω_m ≈ ω_rated/i (the motor holds it)."""
     text = with_motor("").replace("power_kW = 3", "power_kW = 99999")
-    out, _, _ = ends(["dynamics", scene(tmp_path, text), "--json"], 0)
+    out, _ = ends(["dynamics", scene(tmp_path, text), "--json"], 0)
     doc = json.loads(out)
     motion = doc["motor"]["motion"]
     i = doc["motor"]["ratio"]
@@ -88,17 +85,17 @@ def test_an_oversized_motor_is_integrated_as_a_stiff_system(tmp_path):
 @pytest.mark.parametrize("command", ["forces", "dynamics"])
 def test_a_subnormal_mass_is_refused(tmp_path, command):
     path = scene(tmp_path, SHAPER.replace("mass = 40", "mass = 5e-324"))
-    ends([command, path, "--lang", "en"], 2, "link C.mass", "0 or from 1e-06")
+    ends([command, path, "--lang", "en"], 2, "link C.mass", "0 or from 0.000001")
 
 
 def test_tangents_at_precision_0_give_null_not_infinity(tmp_path):
     """The tangents with the exact ruler: s is drawn exactly, so the first differentiation amplifies
     nothing — null in JSON, and the table says why."""
     path = ROOT / "examples" / "crank_slider.toml"
-    out, _, _ = ends(["diagrams", path, "--method", "tangents", "--precision", "0", "--json"], 0)
+    out, _ = ends(["diagrams", path, "--method", "tangents", "--precision", "0", "--json"], 0)
     ruler = json.loads(out)["ruler"]
     assert ruler["first"] is None and ruler["s_rms_pct"] == 0 and ruler["second"] > 0
-    out, _, _ = ends(["diagrams", path, "--method", "tangents", "--precision", "0", "--lang", "en"], 0)
+    out, _ = ends(["diagrams", path, "--method", "tangents", "--precision", "0", "--lang", "en"], 0)
     assert "starts from an exact curve" in out
 
 
@@ -111,8 +108,8 @@ def test_output_naming_the_slider_link_and_its_point_means_the_point(tmp_path):
     path = scene(tmp_path, CRANK_SLIDER.replace("accel = [1]", 'accel = [1]\noutput = "B"'))
     base = ROOT / "examples" / "crank_slider.toml"
     for command in ("analyze", "plans", "diagrams"):
-        out, _, _ = ends([command, path, "--json"], 0)
-        ref, _, _ = ends([command, base, "--json"], 0)
+        out, _ = ends([command, path, "--json"], 0)
+        ref, _ = ends([command, base, "--json"], 0)
         assert json.loads(out) == json.loads(ref), command
 
 
@@ -161,7 +158,7 @@ def test_a_slotted_link_whose_pivot_lies_on_the_crank_circle_is_refused(tmp_path
 def test_a_slotted_link_passing_near_its_pivot_is_answered_with_a_warning(tmp_path):
     """10 mm off the pivot the mechanism runs (ω of the slotted link ω1·r/(r − O1O)... = 190 rad/s):
     answered, and the study says where the block passes close."""
-    out, _, _ = ends(["analyze", scene(tmp_path, RPR.format(r="0.19")), "--lang", "en"], 0)
+    out, _ = ends(["analyze", scene(tmp_path, RPR.format(r="0.19")), "--lang", "en"], 0)
     assert "passes within 10 mm of the pivot O" in out
 
 
@@ -173,19 +170,25 @@ def lab_3600(tmp_path: Path, divisions: bool = True) -> Path:
 
 
 @pytest.mark.parametrize("command", ["plans", "sheet", "view"])
-def test_3600_positions_are_refused_before_the_sheets_work(tmp_path, command):
+def test_3600_positions_are_refused_before_the_sheets_work(tmp_path, command, monkeypatch):
+    """Refused before any plan is constructed (was: within 5 s of CPU, a bound that measured the
+    machine): a velocity plan finished before the refusal fails the test."""
+    from graphplan.graphic.velocity import VelocityPlan
+
+    def no_plan(self):
+        raise AssertionError("a velocity plan was constructed before the refusal")
+    monkeypatch.setattr(VelocityPlan, "finish", no_plan)
     path = lab_3600(tmp_path)
     argv = [command, path] + (["-o", tmp_path / ("x.svg" if command == "sheet" else "x.html")] if command != "plans" else [])
-    _, _, took = ends(argv, 2, "positions.count = 3600", "at most 40")
-    assert took < 5
+    ends(argv, 2, "positions.count = 3600", "at most 40")
     assert not list(tmp_path.glob("x.*"))
 
 
 def test_3600_positions_plans_at_their_own_scales_and_diagrams_of_12_divisions(tmp_path):
     path = lab_3600(tmp_path)
-    out, _, _ = ends(["plans", path, "--format", "none", "--json"], 0)
+    out, _ = ends(["plans", path, "--format", "none", "--json"], 0)
     assert len(json.loads(out)["positions"]) == 3600
-    out, _, _ = ends(["diagrams", path, "--json"], 0)
+    out, _ = ends(["diagrams", path, "--json"], 0)
     assert len(json.loads(out)["s"]) == 13 and json.loads(out)["divisions"] == 12
 
 

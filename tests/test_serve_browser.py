@@ -297,3 +297,41 @@ def test_on_a_phone_one_column_and_nothing_wider_than_the_screen(driver, server,
         shot(d, tmp_path, "serve_phone")
     finally:
         d.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+
+
+def test_on_a_phone_the_two_assemblies_stand_one_above_the_other(driver, server, tmp_path):
+    """web58: the V-twin compressor (LINK58, two groups on the crank pin) uploaded on a 390 px phone:
+    the two assemblies are drawn one above the other, each across the column (side by side each had
+    half the screen, its letters unreadable), each button over its own drawing; choosing the second
+    writes B = −1 and the second group (C) is offered the same way."""
+    from selenium.webdriver.common.by import By
+    from review_scenes import LINK58
+    d = driver
+    scene = tmp_path / "link58.toml"
+    scene.write_text(LINK58, encoding="utf-8")
+    d.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                      {"width": 390, "height": 844, "deviceScaleFactor": 2, "mobile": True})
+    try:
+        d.get(server + "/?lang=en")
+        wait(d, lambda: preview_src(d), 300, "the template's preview")         # the page is ready
+        d.find_element(By.ID, "upload").send_keys(str(scene))
+        wait(d, lambda: "V-twin" in d.find_element(By.ID, "toml").get_attribute("value"), 300, "the scene read")
+        wait(d, lambda: any("[branch] B = +1" in (b.get_attribute("aria-label") or "") for b in
+                            d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly"))
+             and not d.find_element(By.ID, "preview").get_attribute("data-busy"), 300, "the V-twin's assemblies")
+        box = d.find_element(By.ID, "preview").rect
+        img = d.find_element(By.ID, "preview-img")
+        wait(d, lambda: img.size["height"] > 1.5 * img.size["width"], 300, "the drawings stacked")
+        first, second = [b.rect for b in d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")]
+        for r in (first, second):
+            assert r["width"] >= 0.95 * box["width"], (r, box)
+        assert second["y"] >= first["y"] + first["height"] - 1 and abs(first["height"] - second["height"]) <= 1
+        shot(d, tmp_path, "serve_phone_assemblies")
+        d.execute_script("arguments[0].scrollIntoView()", d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1])
+        d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1].click()
+        wait(d, lambda: "B = −1" in d.find_element(By.ID, "branch-said").text, 300, "the choice said")
+        wait(d, lambda: any("C = −1" in (b.get_attribute("aria-label") or "")
+                            for b in d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")), 300, "C offered")
+        assert console_errors(d) == []
+    finally:
+        d.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})

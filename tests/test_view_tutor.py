@@ -313,7 +313,8 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
     planned = json.loads(graphplan("plans", str(scene), "--json").stdout)     # at the A1 sheet's scales
     data = page_data(page)
     open_page(d, page)
-    walked = d.execute_script(TUTOR_WALK)
+    d.set_script_timeout(900)      # a hang guard, not a speed bound: the walk of the shaper's plans took > 30 s
+    walked = d.execute_script(TUTOR_WALK)   # (selenium's default) at a load average of 33 on two cores, stop 58
     assert len(walked) == len(data["records"])
     st = study(load(scene))
     for rec, steps in zip(data["records"], walked):

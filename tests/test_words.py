@@ -123,8 +123,9 @@ def test_num_keeps_four_significant_figures(v):
 
 
 def test_said_formats_each_language():
-    s = said("grade near zero", tol=5.0, floor=0.0125)
-    assert s["uk"] == "майже нуль: у межах ±5 % від 0,0125" and s["en"] == "near zero: within ±5 % of 0.0125"
+    s = said("grade near zero", bound=0.000625, tol=5.0, floor=0.0125)
+    assert s["uk"] == "майже нуль: допуск ±0,000625 (5 % від 0,0125)"
+    assert s["en"] == "near zero: within ±0.000625 (5 % of 0.0125)"
 
 
 # -- markup ---------------------------------------------------------------------------------------------

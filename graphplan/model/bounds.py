@@ -46,14 +46,17 @@ class Range:
         unit = f" {_unit(self.unit, lang)}" if self.unit else ""
 
         def g(v: float) -> str:
-            return f"{v:g}".replace(".", ",") if uk else f"{v:g}"
+            return _plain(v, lang)
         if self.floor:
             zero = ("0 або " if uk else "0 or ") if not self.lo_open else ""
             return f"{zero}{'від' if uk else 'from'} {g(self.floor)} {'до' if uk else 'to'} {g(self.hi)}{unit}"
         if self.lo == -self.hi:
             return f"|{'значення' if uk else 'value'}| ≤ {g(self.hi)}{unit}"
         excl = (" (не включно)" if uk else " (exclusive)") if self.lo_open else ""
-        return f"{'від' if uk else 'from'} {g(self.lo)}{excl} {'до' if uk else 'to'} {g(self.hi)}{unit}"
+        low = g(self.lo)
+        if self.unit == "m" and 0 < self.lo < 1e-3:      # 10 µm as a draftsman writes it: 0,01 мм
+            low = f"{g(self.lo * 1e3)} {_unit('mm', lang)}"
+        return f"{'від' if uk else 'from'} {low}{excl} {'до' if uk else 'to'} {g(self.hi)}{unit}"
 
 
 def _unit(key: str, lang: str) -> str:
@@ -112,8 +115,30 @@ def to_float(value: int | float, key: str, where: str) -> float:
 
 
 def _g(value: float) -> object:
-    """A value for a refusal: written "%g" in each language (a decimal comma in Ukrainian)."""
-    return lambda lang: f"{value:g}".replace(".", ",") if lang == "uk" else f"{value:g}"
+    """A value for a refusal: written "%g" in each language (a decimal comma in Ukrainian), never in
+    e-notation (``_plain``)."""
+    return lambda lang: _plain(value, lang)
+
+
+def _plain(value: float, lang: str = "en") -> str:
+    """A number for a person: "%g" where that has no exponent (0,04; 2800), else the float's
+    shortest digits written out (0.00001 as the scene most likely wrote it, 1000000 for 1e6), and
+    the lab's ·10ⁿ only where that would run past 12 digits (1·10⁻¹²). A decimal comma in Ukrainian."""
+    text = f"{value:g}"
+    if "e" in text and math.isfinite(value):
+        from decimal import Decimal
+        out = format(Decimal(repr(float(value))), "f")
+        out = out.rstrip("0").rstrip(".") if "." in out else out
+        if len(out.lstrip("-").replace(".", "")) <= 12:
+            text = out
+        else:                                    # from the decimal digits: 5e-324 has no 10⁻³²⁴ float
+            from graphplan.util.words import SUPER
+            sign, digits, exp = Decimal(repr(float(value))).normalize().as_tuple()
+            figures = "".join(map(str, digits))
+            mantissa = figures[0] + ("." + figures[1:] if len(figures) > 1 else "")
+            power = str(len(figures) - 1 + exp).translate(SUPER)
+            text = f"{'-' if sign else ''}{mantissa}·10{power}"
+    return text.replace(".", ",") if lang == "uk" else text
 
 
 def short(text: str, limit: int = 40) -> str:

@@ -398,19 +398,52 @@ def _grade_row(var: _Variant, row: Row, signed: bool, pending: list | None = Non
     notes = [note] + ([said("grade computed")] if not in_key else [])
     compare_signed = signed and meta["signed"]
     got, want = (row.value, exact) if compare_signed else (abs(row.value), abs(exact))
-    floor = max(key["zero_fraction"] * meta["scale"], ABS_FLOOR)
+    floor, like = _zero_floor(key, name)
     error = got - want
     allowed = tol / 100.0 * max(abs(want), floor)
     passed = abs(error) <= allowed * (1 + 1e-9)
     error_pct = 100.0 * error / abs(want) if abs(want) >= floor else None
     if error_pct is None:
-        notes.append(said("grade near zero", tol=float(tol), floor=float(floor)))
+        notes.append(_zero_note(meta, float(tol), floor, like))
     graded = _noted(Graded(row, "pass" if passed else "fail", name, exact, error, error_pct, tol), *notes)
     if not passed and pending is not None:
         pending.append((var, graded, name, meta["family"], x, row.value, compare_signed))
     elif not passed:
         _explain_all([(var, graded, name, meta["family"], x, row.value, compare_signed)])
     return graded
+
+
+def _zero_floor(key: dict[str, Any], name: str) -> tuple[float, str | None]:
+    """The bound below which |exact| is "near zero" (a percent error means nothing there): the
+    key's zero fraction of the quantity's largest |value| over the turn. A quantity that is 0 at
+    every crank angle (v_S1 at the crank's pivot) has no largest value of its own: it takes the
+    bound of the largest quantity of its unit in the key (the crank pin's v for a velocity), the
+    name returned with it — a teacher reads a zero with the absolute accuracy of its plan."""
+    meta = key["quantities"][name]
+    if meta["scale"] > 0:
+        return key["zero_fraction"] * meta["scale"], None
+    peers = [(q["scale"], other) for other, q in key["quantities"].items()
+             if q.get("unit") == meta.get("unit") and q["scale"] > 0]
+    if not peers:
+        return ABS_FLOOR, None
+    scale, like = max(peers, key=lambda p: (p[0], p[1]))
+    return key["zero_fraction"] * scale, like
+
+
+def _zero_note(meta: dict[str, Any], tol: float, floor: float,
+               like: str | None) -> dict[str, str]:
+    """The near-zero row's tolerance as a teacher states it: an absolute bound in the quantity's
+    unit (±0,0125 м/с), not a percent of a number the student never saw."""
+    from graphplan.util.words import UNITS, unit as unit_in
+    u = meta.get("unit", "")
+
+    def with_unit(v: float):
+        return lambda lang: num(v, lang) + ("" if u in ("°", "") else "\u00a0") \
+            + (unit_in(u, lang) if u in UNITS else u)
+    bound = with_unit(tol / 100.0 * floor)
+    if like is not None:
+        return said("grade zero", bound=bound, like=like)
+    return said("grade near zero", bound=bound, tol=tol, floor=with_unit(floor))
 
 
 def _explain_all(pending: list) -> None:
@@ -429,6 +462,12 @@ def _explain_all(pending: list) -> None:
             st = var.study()
         except NoScene:
             if var.key.get("kind") == "gears":     # a gear's geometry has no crank angle to search
+                continue
+            if var.key.get("kind") == "cam":       # a cam's row is its division of the cam's turn
+                for _, g, _, _, x, *_ in items:
+                    at = var.key["positions"][int(x)]
+                    g.add(said("grade cam division", k=int(x), turn=Fixed(float(at.get("turn_deg", at["phi_deg"])), 1),
+                               phase=lambda lang, ph=at.get("phase", "rise"): word(f"grade cam {ph}", lang)))
                 continue
             for _, g, *_ in items:
                 g.add(said("grade key no scene"))

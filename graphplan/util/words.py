@@ -653,7 +653,15 @@ WORDS: dict[str, tuple[str, str]] = {
     "grade no value": ("немає значення", "no value"),
     "grade no scene": ("немає в ключі (і немає сцени, щоб обчислити)", "not in the key (and no scene to compute it)"),
     "grade computed": ("немає в ключі: обчислено", "not in the key: computed"),
-    "grade near zero": ("майже нуль: у межах ±{tol} % від {floor}", "near zero: within ±{tol} % of {floor}"),
+    "grade near zero": ("майже нуль: допуск ±{bound} ({tol} % від {floor})",
+                        "near zero: within ±{bound} ({tol} % of {floor})"),
+    "grade zero": ("нуль при кожному куті кривошипа: допуск ±{bound} (як для {like} поблизу нуля)",
+                   "zero at every crank angle: within ±{bound} (as {like} near zero)"),
+    "grade cam division": ("ключ кулачка порівнює значення лише в поділці {k} (кут повороту кулачка {turn}° "
+                           "від початку підйому, {phase})",
+                           "a cam key compares the value at division {k} only (the cam's angle {turn}° "
+                           "from the start of the rise, {phase})"),
+    "grade cam rise": ("фаза підйому", "the rise"), "grade cam return": ("фаза опускання", "the return"),
     "grade key no scene": ("у ключі немає сцени: інші кути кривошипа не перевірено",
                            "the key has no scene: other crank angles not searched"),
     "grade constant": ("{name} дорівнює {v} при кожному куті кривошипа", "{name} is {v} at every crank angle"),

@@ -228,7 +228,8 @@ async def preview(request: Request) -> Response:
     phi = number(request, "phi", 0.0, -1e6, 1e6, "deg")
     lang = lang_of(request)
     text = scene_text(await body(request, SCENE_LIMIT, "scene"))
-    answer = await in_worker(request, "preview", text, phi, lang)
+    stack = request.query_params.get("stack", "") == "1"       # a phone's column: the assemblies one above the other
+    answer = await in_worker(request, "preview", text, phi, lang, stack)
     from graphplan.web.jobs import file_stem
     answer.headers["X-File-Stem"] = file_stem(text)      # the page names the TOML it saves so
     return answer

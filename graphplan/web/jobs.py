@@ -247,10 +247,12 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(["phi_deg", "quantity", "exact", "graphical", "error_pct"])
+        unit = "deg" if doc["follower"] == "rocking" else "m"      # a rocking follower's s is its swing, °
         for p in doc["positions"]:
-            for q, e in (("s_m", "s"), ("ds_dphi_m", "ds_dphi"), ("pressure_angle_deg", "pressure_angle")):
+            for q, e in ((f"s_{unit}", "s"), (f"ds_dphi_{unit}", "ds_dphi"), ("pressure_angle_deg", "pressure_angle")):
                 err = p["error_pct"].get(e)
-                w.writerow([p["phi_deg"], q, p["exact"][q], p["graphical"][q], "" if err is None else err])
+                w.writerow([_clean(p["phi_deg"]), q, _clean(p["exact"][q]), _clean(p["graphical"][q]),
+                            "" if err is None else _fixed(float(err), 2)])
         files.append(("cam.csv", buf.getvalue().encode()))
         return Answer(body=zipped(files), media="application/zip",
                       headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-tables.zip"'})
@@ -270,26 +272,75 @@ def tables(folder: Path, text: str, lang: str | None) -> Answer:
                     w.writerow([p["index"], p["phi_deg"], group, name, q, v])
     files.append(("analyze.csv", buf.getvalue().encode()))
     try:
-        plans = api.plans(st, precision=0.5).to_json()        # at the A1 sheet's scales, as `plans` prints
+        plans = api.plans(st, precision=PLANS_PRECISION).to_json()   # at the A1 sheet's scales, as `plans` prints
     except GraphplanError:                                    # more positions than a sheet holds
-        plans = api.plans(st, precision=0.5, format=None).to_json()
+        plans = api.plans(st, precision=PLANS_PRECISION, format=None).to_json()
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["position", "phi_deg", "plan", "quantity", "mm", "value", "analytic", "error_pct"])
     for p in plans["positions"]:
         for plan in ("velocity", "acceleration"):
-            for q, e in p.get(plan, {}).items():
-                w.writerow([p["index"], p["phi_deg"], plan, q, e.get("mm", ""), e["value"], e["analytic"],
-                            "" if e.get("error_pct") is None else e["error_pct"]])
+            entries = p.get(plan, {})
+            size = max((abs(float(e["analytic"])) for e in entries.values() if e.get("analytic") is not None),
+                       default=0.0)
+            for q, e in entries.items():
+                w.writerow([p["index"], p["phi_deg"], plan, q, *plan_reading(e, PLANS_PRECISION, size)])
     files.append(("plans.csv", buf.getvalue().encode()))
     return Answer(body=zipped(files), media="application/zip",
                   headers={"Content-Disposition": f'attachment; filename="{file_stem(text)}-tables.zip"'})
 
 
+PLANS_PRECISION = 0.5      # mm: the ruler of the plans the tables read (`graphplan plans`' default)
+
+
+def _decimals(quantum: float) -> int:
+    """Decimals that resolve a tenth of ``quantum`` (one guard digit below the reading's step), never
+    fewer than none: a 0.5 mm ruler → 2 (58.25 mm), μv·0.5 mm = 0.17 m/s → 2, 21 m/s² → 0."""
+    return max(0, math.ceil(-math.log10(quantum)) + 1) if quantum > 0 and math.isfinite(quantum) else 0
+
+
+def _fixed(v: float, decimals: int) -> str:
+    text = f"{v:.{decimals}f}"
+    return "0" if float(text) == 0 else text                # no "-0.00"
+
+
+def plan_reading(e: dict[str, Any], precision: float, size: float = 0.0) -> list[str]:
+    """One plan entry of ``plans --json`` as plans.csv writes it: mm, value, analytic, error %, each
+    to the digits the drawing gives meaning to — the length to a tenth of the ruler's step, the value
+    to a tenth of the step times the plan's scale (ω, ε: of their length's reading), the exact value
+    to 12 significant figures (0 below 10⁻⁹ of ``size``, the plan's largest: a dead centre's
+    1,4·10⁻¹² m/s is round-off), the error to 0.01 % (the sheets' and the terminal's). mm × μ in
+    floats carried noise (1.1720000000000002); these are deterministic decimal strings."""
+    value = float(e["value"])
+    mm = e.get("mm", e.get("from_mm"))
+    if mm is not None and float(mm) > 0:
+        value_text = _fixed(value, _decimals(precision * abs(value) / float(mm)))
+    else:                                                   # 0 read as 0, or no length to read
+        value_text = "0" if value == 0 else repr(float(f"{value:.4g}"))
+    mm_text = _fixed(float(e["mm"]), _decimals(precision)) if "mm" in e else ""
+    analytic = e.get("analytic")
+    if analytic is None:
+        analytic_text = ""
+    elif abs(float(analytic)) <= 1e-9 * size:
+        analytic_text = "0"
+    else:
+        analytic_text = repr(float(f"{float(analytic):.12g}"))
+    err = e.get("error_pct")
+    return [mm_text, value_text, analytic_text, "" if err is None else _fixed(float(err), 2)]
+
+
+def _clean(v: Any) -> Any:
+    """A float for a CSV without the noise of its arithmetic: 12 significant figures (0.018, not
+    0.018000000000000002), and 0 for round-off below 10⁻¹³ (λ = 2.2·10⁻¹⁶ at the pitch point)."""
+    if isinstance(v, float) and math.isfinite(v):
+        return 0.0 if abs(v) < 1e-13 else float(f"{v:.12g}")
+    return v
+
+
 def _csv(rows: list[list[Any]]) -> bytes:
     import csv
     buf = io.StringIO()
-    csv.writer(buf, lineterminator="\n").writerows(rows)
+    csv.writer(buf, lineterminator="\n").writerows([[_clean(v) for v in row] for row in rows])
     return buf.getvalue().encode()
 
 
@@ -401,9 +452,11 @@ PREVIEW_WIDTH = 150.0        # mm the mechanism spans over its turn in the previ
 TURN = 36                    # crank angles the preview's extent is taken over
 
 
-def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
+def preview(folder: Path, text: str, phi: float, lang: str | None, stack: bool = False) -> Answer:
     """image/svg+xml: the mechanism at φ; two drawings side by side (the [branch] +1 and −1 of every
-    group the scene leaves open), each with its caption, or the cam's profile."""
+    group the scene leaves open), each with its caption — one above the other with ``stack`` (a
+    phone's column: side by side each got half of a 390 px screen, its letters unreadable) —, or the
+    cam's profile."""
     import dataclasses
     import itertools
     import json
@@ -443,7 +496,7 @@ def preview(folder: Path, text: str, phi: float, lang: str | None) -> Answer:
         defaults.append(default)
     if all(d[1] is None for d in drawings):
         raise first_error                                    # type: ignore[misc]
-    svg = _side_by_side(drawings, lang, defaults)
+    svg = _side_by_side(drawings, lang, defaults, stack)
     headers = {"X-Scene-Kind": "lever", "X-Sheet-Kinds": ",".join(sheet_kinds(mech)),
                "X-Branch-Keys": quote(json.dumps(open_keys, ensure_ascii=False)),
                "X-Assemblies": quote(json.dumps([{"branch": c, "error": e, "default": f}
@@ -505,9 +558,10 @@ def _at(st, phi: float, lang: str):
     return rec, (x0, y0, x1, y1)
 
 
-def _side_by_side(drawings, lang: str, defaults=()) -> str:
-    """One SVG: the drawings in equal cells left to right, each captioned with its [branch] values,
-    the scene's default (the one a sheet draws when [branch] leaves the group open) said so."""
+def _side_by_side(drawings, lang: str, defaults=(), stack: bool = False) -> str:
+    """One SVG: the drawings in equal cells left to right (top to bottom with ``stack``), each
+    captioned with its [branch] values, the scene's default (the one a sheet draws when [branch]
+    leaves the group open) said so."""
     from graphplan.drawing.svg import render
     from graphplan.util.markup import plain
     from xml.sax.saxutils import escape
@@ -517,12 +571,12 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
     h = max(b[3] - b[1] for b in boxes)
     cap = max(9.0, w / 30)
     for k, (chosen, drawn, error) in enumerate(drawings):
-        x = k * (w + 10)
+        x, y = (0.0, k * (h + cap + 10)) if stack else (k * (w + 10), 0.0)
         said = ", ".join(f"{plain(n)} = {'+1' if v > 0 else '−1'}" for n, v in chosen.items())
         default = k < len(defaults) and defaults[k]
         caption = (f"{word('wb assembly', lang)} {k + 1}: [branch] {said}"
                    + (f" ({word('wb default', lang)})" if default else "")) if said else ""
-        parts = [f'<g class="assembly" transform="translate({x:.3f},0)">',
+        parts = [f'<g class="assembly" transform="translate({x:.3f},{y:.3f})">',
                  f'<rect x="0" y="0" width="{w:.3f}" height="{h + cap:.3f}" fill="#fff" stroke="#bbb" '
                  'stroke-width="0.3"/>']
         if caption:
@@ -547,9 +601,12 @@ def _side_by_side(drawings, lang: str, defaults=()) -> str:
                              f'font-family="sans-serif">{escape(line)}</text>')
         parts.append("</g>")
         cells.append("".join(parts))
-    total_w = len(drawings) * (w + 10) - 10
-    return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {h + cap:.3f}" '
-            f'width="{total_w:.3f}mm" height="{h + cap:.3f}mm">' + "".join(cells) + "</svg>")
+    if stack:
+        total_w, total_h = w, len(drawings) * (h + cap + 10) - 10
+    else:
+        total_w, total_h = len(drawings) * (w + 10) - 10, h + cap
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {total_w:.3f} {total_h:.3f}" '
+            f'width="{total_w:.3f}mm" height="{total_h:.3f}mm">' + "".join(cells) + "</svg>")
 
 
 def _wrap(text: str, width: int) -> list[str]:

@@ -261,6 +261,9 @@ function withBranch(text) {
   return text.replace(/\s*$/, "\n") + "\n[branch]\n" + lines + "\n";
 }
 
+const NARROW = window.matchMedia("(max-width: 820px)");   // app.css's one column
+NARROW.addEventListener("change", () => changed());
+
 function changed() {
   clearTimeout(state.timer);
   state.pending = true;
@@ -286,7 +289,9 @@ async function draw(seq) {
     text = await sceneText();
     state.toml = text;
     const phi = $("phi").value;
-    const r = await post(`/api/scene/preview?phi=${encodeURIComponent(phi)}&lang=${state.lang}`, text, "text/plain; charset=utf-8");
+    const stack = NARROW.matches;     // one column (a phone): the two assemblies one above the other
+    const r = await post(`/api/scene/preview?phi=${encodeURIComponent(phi)}&lang=${state.lang}${stack ? "&stack=1" : ""}`,
+                         text, "text/plain; charset=utf-8");
     const blob = await r.blob();
     if (seq !== state.seq) return;
     state.stem = [text, r.headers.get("X-File-Stem")];   // the downloads' name: the scene's designation and its fingerprint
@@ -318,6 +323,7 @@ async function draw(seq) {
 
 function showAssemblies(keys, asm) {
   const box = $("assemblies");
+  $("preview").classList.toggle("stacked", NARROW.matches);   // the buttons over the drawings as drawn
   box.textContent = "";
   state.assemblies = asm;
   const two = asm.length === 2;
