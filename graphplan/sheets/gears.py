@@ -736,7 +736,7 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
         return best
     wide = room_w
     whole = None
-    for mu in scales:
+    for mu in (best[0].mu_l,):            # the half's scale alone (``_whole``)
         ring = r3 / mu * (1 + 1e-9)
         if 2.0 * top / mu + 13.0 + 20.0 > room_h:                # both halves of the scheme, its caption
             continue
@@ -745,8 +745,6 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
                        full=True)
             if d is not None and (whole is None or _rank(d[0]) < _rank(whole[0])):
                 whole = d
-        if whole is not None and whole[0].h >= H_MIN - 1e-9:
-            break                         # (the largest scale that holds it: a smaller one reads no better)
     return _whole(best, whole, tr.ratio)
 
 
@@ -755,10 +753,13 @@ def _whole(best, whole, u: float):
     carrier across them, the ring's frame on both sides, as the textbook draws a 2K-H train (stop 57: the
     lead found the half over the axis sparse), the plan of angular velocities under the velocity picture —
     where it keeps what ``_rank`` asks first (h, the carrier's segment) and reads u1H within a bound under
-    the lab's 5 % (a reading then within the lab's limit whatever the ruler does); else ``best``, the
-    half-section at its larger scale. The whole scheme is as tall again under the axis: the lead's 57
-    (ring 127,5 mm) is whole at 1:2, u1H within ±3,7 %, where its half stood at 1:1 within ±0,86 %."""
-    if whole is None or _rank(whole[0])[:2] > _rank(best[0])[:2] or 100.0 * whole[0].ratio_bound / u > LAB_LIMIT:
+    the lab's 5 % (a reading then within the lab's limit whatever the ruler does), drawn at the half's
+    scale; else ``best``, the half-section. The whole scheme is as tall again under the axis: the lead's
+    57 and review 10 (ring 127,5 mm) were whole at 1:2, u1H within ±3,7 % and ω1 read +2,2 %, where the
+    half stands at 1:1 within ±0,86 % and reads ω1 −0,16 % (stop 58: review 10 mark 19 had sent back ω1
+    read +2,5 % off a train at 1:2 where 1:1 fits; the whole is taken at the half's scale only: GEARS56)."""
+    if whole is None or _rank(whole[0])[:2] > _rank(best[0])[:2] or 100.0 * whole[0].ratio_bound / u > LAB_LIMIT \
+            or not math.isclose(whole[0].mu_l, best[0].mu_l, rel_tol=1e-9):
         return best
     return whole
 
