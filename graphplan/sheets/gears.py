@@ -1005,12 +1005,34 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             return m_, more_, lam_, _set(d_, t_, p_, f, more_, lang, lam_)
 
         mesh, more, lam, pages = cut(True)
+        o1 = True
         if mesh is not None and mesh.o1_shown and pages is not None:    # O1 drawn where it costs no sheet
             flat = cut(False)             # (stop 49: 9/40's en A3 set took a 4th sheet, 80 % empty, for it)
             if flat[3] is not None and len(flat[3]) < len(pages):
                 mesh, more, lam, pages = flat
+                o1 = False
         if pages is None:
             raise said_error(GraphplanError, "sh drawing larger", g.source, None, form=f.name, option="--format")
+        if vel is not None and len(pages) > 1 and {q.name for q in pages[-1]} <= TRAIN_ALONE:
+            # Table 3 and its notes alone on the last sheet: the set cut again from smaller first pictures
+            # (``FIRST_SMALLER``) where that saves the sheet — the pictures then grow back on their sheet
+            # (``_set_grown``) as far as the count allows, a sheet more where they read u1H past 5 % (below).
+            # Stop 58: the lead's 9/35 A3 set ended with Table 3 alone on a fourth sheet, as five before it.
+            kept_ = vel, plan, drawings, tables, parts
+            for k in FIRST_SMALLER:
+                try:
+                    v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
+                                        sun_segment_mm=100.0 * k)
+                except GraphplanError:
+                    continue
+                vel, plan = v, _plan(v, lang)
+                drawings, tables, parts = _blocks(g, sol, one, vel, plan, lang)
+                got = cut(o1)
+                if got[3] is not None and len(got[3]) < len(pages):
+                    mesh, more, lam, pages = got
+                    break
+            else:
+                vel, plan, drawings, tables, parts = kept_
         if vel is not None:
             first = pages
             vel0 = vel
@@ -1029,6 +1051,11 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
                 if off(v1) <= LAB_LIMIT:
                     vel, pages = v1, p1
     return mesh, vel, pages
+
+
+TRAIN_ALONE = {"train", "train notes"}    # a set's last sheet that holds Table 3 and its notes alone
+FIRST_SMALLER = (0.8, 0.64, 0.5)          # a set's first planetary pictures, × (80, 60, 100) mm, tried smaller
+#                                           where Table 3 stands alone on the last sheet
 
 
 def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k):
