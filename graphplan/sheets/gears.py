@@ -987,6 +987,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         pages = _lambda_filling(g, sol, mesh, vel, plan, f, lang, pages, k)
     if pages is None:                     # a set of sheets (sheets/gearset.py)
         one = mesh
+        kept_ = (vel,)
 
         def cut(o1: bool):
             """The set with the meshing drawn with O1 where in reach (``o1``) or its centre line broken."""
@@ -1019,6 +1020,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             # (``_set_grown``) as far as the count allows, a sheet more where they read u1H past 5 % (below).
             # Stop 58: the lead's 9/35 A3 set ended with Table 3 alone on a fourth sheet, as five before it.
             kept_ = vel, plan, drawings, tables, parts
+            undone = vel, mesh, more, lam, pages
             for k in FIRST_SMALLER:
                 try:
                     v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
@@ -1037,6 +1039,12 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             first = pages
             vel0 = vel
             vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
+            if vel0 is not kept_[0] and vel.h < min(H_MIN, kept_[0].h) - 1e-9:
+                # the sheet saved with the smaller first pictures only where they grow back to the pole distance
+                # the first would have had (h at least H_MIN, or theirs): GEARS_B47's pictures stood at 1:4 with
+                # h = 25 mm on three sheets, where four keep 1:2 and h = 62,5 mm (u1H within ±0,93 %)
+                vel0, mesh, more, lam, first = undone
+                vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
             short = abs(vel.segments["H"])
             if precision > 0 and 0 < short < SEGMENT_MIN / 2:      # one more sheet where it reads ωH
                 v1, p1 = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam, extra=1)
