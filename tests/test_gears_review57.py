@@ -99,18 +99,19 @@ def test_the_whole_scheme_mirrors_its_half_and_the_plan_stands_beside_it():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("scene, whole", [("57", False), ("56", True)])
+@pytest.mark.parametrize("scene, whole", [("57", False), ("56", True), ("58", False)])
 def test_the_a1_draws_the_whole_scheme_at_the_half_s_scale_only(scene, whole):
     """On the A1 sheet (what `graphplan gears` measures) the whole scheme is taken where it stands at the
-    half-section's scale: GEARS56's type-B train whole at 1:1. The lead's 57 (review 10's train, ring
+    half-section's scale: GEARS56's type-B train whole at 1:1; the lead's 58 (type B, 17/51/21/89) half at
+    1:1 (whole at 1:2 it read u1H −3,65 % within ±4,7 %, ω1 −2,5 %). The lead's 57 (review 10's train, ring
     127,5 mm) keeps the half at 1:1 — whole, it stood at 1:2 and read ω1 +2,2 % (stop 58: review 10 mark
     19 sent back ω1 read +2,5 % off a train at 1:2 where 1:1 fits) —; either reads u1H within a bound
     under 5 %, the reading within it; the 57's every ω within 1,5 % of Willis' (written here), as review
     10's test asks of its A1 sheet."""
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import construct_on
-    from review_scenes import GEARS56
-    _, sol = _scene(GEARS57 if scene == "57" else GEARS56, "s" + scene)
+    from review_scenes import GEARS56, GEARS58
+    _, sol = _scene({"57": GEARS57, "56": GEARS56, "58": GEARS58}[scene], "s" + scene)
     _, vel, _ = construct_on(sol, form("A1"), 0.5, "uk")
     assert vel.mu_l == pytest.approx(0.001)
     assert bool([q for q in _below(vel.record) if q.kind == "polygon"]) == whole   # the scheme under the axis
