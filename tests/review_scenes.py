@@ -7809,3 +7809,32 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# gears58's own (stop 58): a textbook pair 12/18 "auto" with a large module (10 mm) and the classic one-row
+# type-A reducer 24/24/72 given by its teeth (u1H = 4, K = 3; the ring under the lab's 85 teeth, flagged)
+GEARS_OWN58 = '''# gears58's own (stop 58): a textbook pair 12/18 with shifts "auto" and a large module (10 mm: a small
+# ratio 1,5 with a pinion under 17 teeth), and the classic one-row type-A reducer 24/24/72 (u1H = 4, K = 3)
+# given by its teeth, 1500 rpm.
+title = "Зубчаста передача 12/18 і однорядний планетарний редуктор 24/24/72"
+title_en = "A gear pair 12/18 and a one-row planetary reducer 24/24/72"
+designation = "ТММ.ЗП.58.100"
+
+[sheet]
+student = "Гелпер Г. Г."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[gears]
+z = [12, 18]
+module = 0.010
+shifts = "auto"
+
+[planetary]
+type = "A"
+z = [24, 24, 72]
+planets = 3
+module = 0.004
+rpm = 1500
+'''

@@ -99,18 +99,32 @@ def test_the_whole_scheme_mirrors_its_half_and_the_plan_stands_beside_it():
 
 
 @pytest.mark.slow
-def test_the_lead_s_57_a1_draws_the_whole_scheme_within_the_lab_s_limit():
-    """On the A1 sheet (what `graphplan gears` measures) the lead's 57 gets the whole scheme — its ring,
-    127,5 mm, at 1:2 — and reads u1H within a bound under 5 %, the reading within it."""
+@pytest.mark.parametrize("scene, whole", [("57", False), ("56", True), ("58", False)])
+def test_the_a1_draws_the_whole_scheme_at_the_half_s_scale_only(scene, whole):
+    """On the A1 sheet (what `graphplan gears` measures) the whole scheme is taken where it stands at the
+    half-section's scale: GEARS56's type-B train whole at 1:1; the lead's 58 (type B, 17/51/21/89) half at
+    1:1 (whole at 1:2 it read u1H −3,65 % within ±4,7 %, ω1 −2,5 %). The lead's 57 (review 10's train, ring
+    127,5 mm) keeps the half at 1:1 — whole, it stood at 1:2 and read ω1 +2,2 % (stop 58: review 10 mark
+    19 sent back ω1 read +2,5 % off a train at 1:2 where 1:1 fits) —; either reads u1H within a bound
+    under 5 %, the reading within it; the 57's every ω within 1,5 % of Willis' (written here), as review
+    10's test asks of its A1 sheet."""
     from graphplan.sheets.form import form
     from graphplan.sheets.gears import construct_on
-    _, sol = _scene(GEARS57)
+    from review_scenes import GEARS56, GEARS58
+    _, sol = _scene({"57": GEARS57, "56": GEARS56, "58": GEARS58}[scene], "s" + scene)
     _, vel, _ = construct_on(sol, form("A1"), 0.5, "uk")
-    assert vel.mu_l == pytest.approx(0.002)
-    assert [q for q in _below(vel.record) if q.kind == "polygon"]         # the scheme under the axis
-    u = sol.train.ratio
+    assert vel.mu_l == pytest.approx(0.001)
+    assert bool([q for q in _below(vel.record) if q.kind == "polygon"]) == whole   # the scheme under the axis
+    z = sol.train.z
+    u = 1 + 85 / 19 if scene == "57" else 1 + z[1] * z[3] / (z[0] * z[2])
+    assert (tuple(z) == (19, 33, 85)) == (scene == "57")
     assert vel.ratio_bound / u < 0.05
     assert abs(vel.ratio - u) <= vel.ratio_bound + 1e-9
+    w1 = sol.train.train.rpm * math.pi / 30
+    wh = w1 / u
+    if scene == "57":                     # review 10's train: its mark 19 was ω1 read off the drawing
+        assert vel.omega["1"] == pytest.approx(w1, rel=0.015) and vel.omega["H"] == pytest.approx(wh, rel=0.015)
+        assert vel.omega["2"] == pytest.approx(wh - (w1 - wh) * z[0] / z[1], rel=0.015)
 
 
 @pytest.mark.slow

@@ -736,7 +736,7 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
         return best
     wide = room_w
     whole = None
-    for mu in scales:
+    for mu in (best[0].mu_l,):            # the half's scale alone (``_whole``)
         ring = r3 / mu * (1 + 1e-9)
         if 2.0 * top / mu + 13.0 + 20.0 > room_h:                # both halves of the scheme, its caption
             continue
@@ -745,8 +745,6 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
                        full=True)
             if d is not None and (whole is None or _rank(d[0]) < _rank(whole[0])):
                 whole = d
-        if whole is not None and whole[0].h >= H_MIN - 1e-9:
-            break                         # (the largest scale that holds it: a smaller one reads no better)
     return _whole(best, whole, tr.ratio)
 
 
@@ -755,10 +753,13 @@ def _whole(best, whole, u: float):
     carrier across them, the ring's frame on both sides, as the textbook draws a 2K-H train (stop 57: the
     lead found the half over the axis sparse), the plan of angular velocities under the velocity picture —
     where it keeps what ``_rank`` asks first (h, the carrier's segment) and reads u1H within a bound under
-    the lab's 5 % (a reading then within the lab's limit whatever the ruler does); else ``best``, the
-    half-section at its larger scale. The whole scheme is as tall again under the axis: the lead's 57
-    (ring 127,5 mm) is whole at 1:2, u1H within ±3,7 %, where its half stood at 1:1 within ±0,86 %."""
-    if whole is None or _rank(whole[0])[:2] > _rank(best[0])[:2] or 100.0 * whole[0].ratio_bound / u > LAB_LIMIT:
+    the lab's 5 % (a reading then within the lab's limit whatever the ruler does), drawn at the half's
+    scale; else ``best``, the half-section. The whole scheme is as tall again under the axis: the lead's
+    57 and review 10 (ring 127,5 mm) were whole at 1:2, u1H within ±3,7 % and ω1 read +2,2 %, where the
+    half stands at 1:1 within ±0,86 % and reads ω1 −0,16 % (stop 58: review 10 mark 19 had sent back ω1
+    read +2,5 % off a train at 1:2 where 1:1 fits; the whole is taken at the half's scale only: GEARS56)."""
+    if whole is None or _rank(whole[0])[:2] > _rank(best[0])[:2] or 100.0 * whole[0].ratio_bound / u > LAB_LIMIT \
+            or not math.isclose(whole[0].mu_l, best[0].mu_l, rel_tol=1e-9):
         return best
     return whole
 
@@ -986,6 +987,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
         pages = _lambda_filling(g, sol, mesh, vel, plan, f, lang, pages, k)
     if pages is None:                     # a set of sheets (sheets/gearset.py)
         one = mesh
+        kept_ = (vel,)
 
         def cut(o1: bool):
             """The set with the meshing drawn with O1 where in reach (``o1``) or its centre line broken."""
@@ -1004,16 +1006,45 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
             return m_, more_, lam_, _set(d_, t_, p_, f, more_, lang, lam_)
 
         mesh, more, lam, pages = cut(True)
+        o1 = True
         if mesh is not None and mesh.o1_shown and pages is not None:    # O1 drawn where it costs no sheet
             flat = cut(False)             # (stop 49: 9/40's en A3 set took a 4th sheet, 80 % empty, for it)
             if flat[3] is not None and len(flat[3]) < len(pages):
                 mesh, more, lam, pages = flat
+                o1 = False
         if pages is None:
             raise said_error(GraphplanError, "sh drawing larger", g.source, None, form=f.name, option="--format")
+        if vel is not None and len(pages) > 1 and {q.name for q in pages[-1]} <= TRAIN_ALONE:
+            # Table 3 and its notes alone on the last sheet: the set cut again from smaller first pictures
+            # (``FIRST_SMALLER``) where that saves the sheet — the pictures then grow back on their sheet
+            # (``_set_grown``) as far as the count allows, a sheet more where they read u1H past 5 % (below).
+            # Stop 58: the lead's 9/35 A3 set ended with Table 3 alone on a fourth sheet, as five before it.
+            kept_ = vel, plan, drawings, tables, parts
+            undone = vel, mesh, more, lam, pages
+            for k in FIRST_SMALLER:
+                try:
+                    v = construct_train(sol.train, precision, lang, ring_mm=80.0 * k, va_mm=60.0 * k,
+                                        sun_segment_mm=100.0 * k)
+                except GraphplanError:
+                    continue
+                vel, plan = v, _plan(v, lang)
+                drawings, tables, parts = _blocks(g, sol, one, vel, plan, lang)
+                got = cut(o1)
+                if got[3] is not None and len(got[3]) < len(pages):
+                    mesh, more, lam, pages = got
+                    break
+            else:
+                vel, plan, drawings, tables, parts = kept_
         if vel is not None:
             first = pages
             vel0 = vel
             vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
+            if vel0 is not kept_[0] and vel.h < min(H_MIN, kept_[0].h) - 1e-9:
+                # the sheet saved with the smaller first pictures only where they grow back to the pole distance
+                # the first would have had (h at least H_MIN, or theirs): GEARS_B47's pictures stood at 1:4 with
+                # h = 25 mm on three sheets, where four keep 1:2 and h = 62,5 mm (u1H within ±0,93 %)
+                vel0, mesh, more, lam, first = undone
+                vel, pages = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam)
             short = abs(vel.segments["H"])
             if precision > 0 and 0 < short < SEGMENT_MIN / 2:      # one more sheet where it reads ωH
                 v1, p1 = _set_grown(g, sol, mesh, more, vel0, f, precision, lang, first, lam, extra=1)
@@ -1028,6 +1059,11 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
                 if off(v1) <= LAB_LIMIT:
                     vel, pages = v1, p1
     return mesh, vel, pages
+
+
+TRAIN_ALONE = {"train", "train notes"}    # a set's last sheet that holds Table 3 and its notes alone
+FIRST_SMALLER = (0.8, 0.64, 0.5)          # a set's first planetary pictures, × (80, 60, 100) mm, tried smaller
+#                                           where Table 3 stands alone on the last sheet
 
 
 def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k):
