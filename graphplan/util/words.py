@@ -248,6 +248,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs mechanism": ('Схема механізму з прикладеними силами', 'The mechanism with the applied forces'),
     "fs reaction": ('Реакція стояка на повзун', 'Reaction of the frame on the slider'),
     "fs resistance": ('Діаграма сили корисного опору за хід', 'Resistance force over the stroke'),
+    "fs resistance of": ('Діаграма сили корисного опору {p} за хід', 'Resistance force {p} over the stroke'),
     "fs resistance moment": ('Діаграма моменту корисного опору за хід', 'Resistance moment over the swing'),
     "fs jump": ("пунктир — стрибок від {what}", "dashed: the jump due to {what}"),
     "fs coincide": ("Годографи: номер «0–2» — точки, що збігаються з точністю лінійки 0,5 мм",
