@@ -1,61 +1,83 @@
 """Stop 58: the lead's V-twin compressor (LINK58): one crank, two groups II(2-3) and II(4-5) pinned
 at the crank pin A, pistons B and C on guides through O1 at 60° and 120°, 900 N gas forces on each
-piston's OWN working stroke. Checked against an independent numpy model of the mechanism (closed-form
-slider positions, central differences for velocities and accelerations, virtual power for M_b) —
-nothing of graphplan's but the scene's numbers."""
+piston's OWN working stroke — and frc58's opposed twin (BOXER_FRC58: guides at 0° and 180°, the
+pistons' dead centres at the same crank angles, 1200 N on each piston's compression stroke).
+Checked against an independent numpy model of the mechanism (closed-form slider positions, central
+differences for velocities and accelerations, virtual power for M_b) — nothing of graphplan's but
+the scene's numbers."""
+from dataclasses import dataclass
+
 import numpy as np
 import pytest
 
 from conftest import scene_study
 
-R, L, Q, K_I, G, P = 0.05, 0.2, 20.0, 0.1, 9.81, 900.0
-OMEGA = -720 * 2 * np.pi / 60                 # clockwise
-GUIDES = {"B": 60.0, "C": 120.0}
+G = 9.81
 
 
-def _pos(phi):
-    a = R * np.exp(1j * phi)
-    out = {"A": a}
-    for name, ang in GUIDES.items():
-        u = np.exp(1j * np.radians(ang))
-        rel = a * np.conj(u)
-        out[name] = (rel.real + np.sqrt(L * L - rel.imag ** 2)) * u
-        out["S" + name] = a + 0.35 * (out[name] - a)
-        out["th" + name] = np.angle(out[name] - a)
-    return out
+@dataclass
+class Twin:
+    r: float                 # crank, m
+    l: float                 # rods, m
+    s: float                 # the rods' centres of mass from A, share of l
+    rpm: float               # + counter-clockwise
+    piston: float            # kg
+    load: float              # N on each piston's working stroke
+    guides: dict             # piston → guide angle, deg
+    inwards: bool            # the working stroke: the piston moving towards O1 (else away)
+    q: float = 20.0          # kg/m
+    k_i: float = 0.1         # I_S = k·m·l²
 
+    @property
+    def omega(self):
+        return self.rpm * 2 * np.pi / 60
 
-def _motion(phi, h=1e-4):
-    p0, pp, pm = _pos(phi), _pos(phi + h), _pos(phi - h)
-    v = {k: (pp[k] - pm[k]) / (2 * h) * OMEGA for k in p0}
-    a = {k: (pp[k] - 2 * p0[k] + pm[k]) / h ** 2 * OMEGA ** 2 for k in p0}
-    return v, a
+    def pos(self, phi):
+        a = self.r * np.exp(1j * phi)
+        out = {"A": a}
+        for name, ang in self.guides.items():
+            u = np.exp(1j * np.radians(ang))
+            rel = a * np.conj(u)
+            out[name] = (rel.real + np.sqrt(self.l ** 2 - rel.imag ** 2)) * u
+            out["S" + name] = a + self.s * (out[name] - a)
+            out["th" + name] = np.angle(out[name] - a)
+        return out
+
+    def motion(self, phi, h=1e-4):
+        p0, pp, pm = self.pos(phi), self.pos(phi + h), self.pos(phi - h)
+        v = {k: (pp[k] - pm[k]) / (2 * h) * self.omega for k in p0}
+        a = {k: (pp[k] - 2 * p0[k] + pm[k]) / h ** 2 * self.omega ** 2 for k in p0}
+        return v, a
+
+    def working(self, name, phi_deg):
+        v, _ = self.motion(np.radians(phi_deg))
+        out = _dot(v[name], np.exp(1j * np.radians(self.guides[name])))
+        return out < 0 if self.inwards else out > 0
+
+    def balancing_moment(self, phi_deg):
+        """M_b (+ counter-clockwise) from M_b·ω1 + Σ F·v + Σ M·ω = 0."""
+        v, a = self.motion(np.radians(phi_deg))
+        m_rod = self.q * self.l
+        i_rod = self.k_i * m_rod * self.l ** 2
+        power = 0.0
+        for name in self.guides:
+            for s, m in ("S" + name, m_rod), (name, self.piston):
+                power += _dot(-1j * m * G - m * a[s], v[s])
+            power += -i_rod * a["th" + name] * v["th" + name]
+            if self.working(name, phi_deg):
+                power += -self.load * abs(v[name])
+        return -power / self.omega
 
 
 def _dot(a, b):
     return (a * np.conj(b)).real
 
 
-def _on_working_stroke(name, v):
-    """The scene's default "slow" stroke of a centred slider is a tie (180° each); the program takes
-    the one from the outer dead centre, the piston moving in towards O1 — each piston on its own."""
-    return _dot(v[name], np.exp(1j * np.radians(GUIDES[name]))) < 0
-
-
-def _balancing_moment(phi_deg):
-    """M_b (+ counter-clockwise) from M_b·ω1 + Σ F·v + Σ M·ω = 0."""
-    v, a = _motion(np.radians(phi_deg))
-    m_rod, m_piston = Q * L, 2.5
-    i_rod = K_I * m_rod * L * L
-    power = 0.0
-    for s, m in (("SB", m_rod), ("SC", m_rod), ("B", m_piston), ("C", m_piston)):
-        power += _dot(-1j * m * G - m * a[s], v[s])
-    for th in ("thB", "thC"):
-        power += -i_rod * a[th] * v[th]
-    for name in GUIDES:
-        if _on_working_stroke(name, v):
-            power += -P * abs(v[name])
-    return -power / OMEGA
+# the scene's default "slow" stroke of a centred slider is a tie (180° each); the program takes the one
+# from the outer dead centre, the piston moving in towards O1 — each piston on its own
+VTWIN = Twin(r=0.05, l=0.2, s=0.35, rpm=-720, piston=2.5, load=900.0, guides={"B": 60.0, "C": 120.0}, inwards=True)
+BOXER = Twin(r=0.06, l=0.24, s=0.3, rpm=600, piston=3.0, load=1200.0, guides={"B": 0.0, "C": 180.0}, inwards=False)
+P, R = VTWIN.load, VTWIN.r
 
 
 @pytest.fixture(scope="module")
@@ -64,27 +86,39 @@ def link58():
     return scene_study(LINK58)
 
 
-def test_each_piston_takes_its_gas_force_on_its_own_working_stroke(link58):
-    """P_C followed B's strokes (on from B's dead centre at crank 60°, not C's at 120°): over the
-    turn each force is 900 N exactly where its own piston moves in, nil elsewhere."""
+@pytest.fixture(scope="module")
+def boxer():
+    from review_scenes import BOXER_FRC58
+    return scene_study(BOXER_FRC58)
+
+
+@pytest.mark.parametrize("which", ["link58", "boxer"])
+def test_each_piston_takes_its_gas_force_on_its_own_working_stroke(which, request):
+    """LINK58's P_C followed B's strokes (on from B's dead centre at crank 60°, not C's at 120°): over
+    the turn each force acts exactly where its own piston is on its working stroke, nil elsewhere. The
+    opposed twin's pistons stop at the same crank angles, and C compresses while B draws in."""
     from graphplan.exact.kinetostatics import analyse
-    phi = np.arange(0.0, 360.0, 5.0) + 2.5          # off the dead centres (60°, 120°, 240°, 300°)
-    ks = analyse(link58, phi)
-    for name in GUIDES:
+    st, twin = request.getfixturevalue(which), {"link58": VTWIN, "boxer": BOXER}[which]
+    phi = np.arange(0.0, 360.0, 5.0) + 2.5          # off the dead centres
+    ks = analyse(st, phi)
+    for name in twin.guides:
         got = np.abs(next(ld.force for ld in ks.loads if ld.name == f"P_{name}"))
-        want = np.array([P if _on_working_stroke(name, _motion(np.radians(f))[0]) else 0.0 for f in phi])
+        want = np.array([twin.load if twin.working(name, f) else 0.0 for f in phi])
         assert np.allclose(got, want), (name, phi[~np.isclose(got, want)])
+        assert 0 < np.count_nonzero(got) < len(phi)
 
 
-def test_the_balancing_moment_agrees_with_virtual_power_over_the_turn(link58):
-    """M_b at the force position (crank 15°: both pistons loaded, −83.32 N·m) and round the turn."""
+@pytest.mark.parametrize("which", ["link58", "boxer"])
+def test_the_balancing_moment_agrees_with_virtual_power_over_the_turn(which, request):
+    """M_b at the force position (LINK58: crank 15°, both pistons loaded, −83.32 N·m) and round the turn."""
     from graphplan.exact.kinetostatics import analyse, at_scene_angle
-    phi0 = at_scene_angle(link58)
-    assert abs(phi0 - 15.0) < 1e-9
+    st, twin = request.getfixturevalue(which), {"link58": VTWIN, "boxer": BOXER}[which]
+    phi0 = at_scene_angle(st)
+    if which == "link58":
+        assert abs(phi0 - 15.0) < 1e-9 and abs(twin.balancing_moment(phi0) - (-83.32)) < 0.01
     phi = np.r_[phi0, np.arange(0.0, 360.0, 10.0) + 2.5]
-    got = analyse(link58, phi).balancing
-    want = np.array([_balancing_moment(f) for f in phi])
-    assert abs(want[0] - (-83.32)) < 0.01
+    got = analyse(st, phi).balancing
+    want = np.array([twin.balancing_moment(f) for f in phi])
     assert np.allclose(got, want, rtol=1e-5, atol=1e-4), np.c_[phi, got, want]
 
 
@@ -96,7 +130,7 @@ def test_the_crank_group_carries_both_rods_reactions(link58):
     r = {k: complex(np.atleast_1d(v.force)[0]) for k, v in ks.reactions.items()}
     assert crank.reactions == ("R01",)
     # action and reaction at A: R21 = −R12, R41 = −R14; the crank's balance with its weight
-    total = -r["R12"] - r["R14"] + r["R01"] - 1j * Q * R * G
+    total = -r["R12"] - r["R14"] + r["R01"] - 1j * VTWIN.q * R * G
     assert abs(total) < 1e-6 * abs(r["R01"])
 
 

@@ -195,7 +195,8 @@ def own_stroke(st: Study, point: str) -> tuple[float, float] | None:
     from B's, has its dead centres 60° of crank turn from B's — its gas force on B's working stroke
     acted over C's suction half and back). The scene's ``positions.working_stroke`` rule read on that
     slide's own coordinate. None where the force takes the output's stroke: the output's own point,
-    a point that slides on no frame guide, or a slide that stops where the output stops."""
+    a point that slides on no frame guide, or a slide whose working stroke is the output's (an
+    opposed twin's second piston, its dead centres the first's, works while the first is idle: its own)."""
     from graphplan.exact.positions import Output, find_extremes, point_slider
     mech = st.mech
     if st.output.kind == "slide" and st.output.name == point:
@@ -208,10 +209,13 @@ def own_stroke(st: Study, point: str) -> tuple[float, float] | None:
     if slider is not None and mech.guides[mech.links[slider].slides_on].body == FRAME:
         own = Output("slide", point)
         ext = find_extremes(mech, st.structure, own)
-        near = lambda a, b: abs((a - b + 180.0) % 360.0 - 180.0) < 1e-6  # noqa: E731
-        same = len(ext) == len(st.extremes) and all(any(near(e, x) for x in st.extremes) for e in ext)
-        if len(ext) >= 2 and not same:
+        if len(ext) >= 2:
             out = working_start(mech, ext, own.value(solve(mech, st.structure, list(ext))))
+            if len(st.extremes) >= 2:       # the very stroke the output's is: the output's
+                start, length = working_start(mech, st.extremes, st.output.value(solve(mech, st.structure,
+                                                                                      list(st.extremes))))
+                if abs((out[0] - start + 180.0) % 360.0 - 180.0) < 1e-6 and abs(out[1] - length) < 1e-6:
+                    out = None
     st.memo[key] = out
     return out
 
